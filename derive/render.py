@@ -1,0 +1,340 @@
+"""Render a derived model into files: CasADi-building Python, CasADi's C, and a manifest.
+
+Steps, each its own function (as in acados' templates): derive -> render Python (Jinja2)
+-> build the CasADi functions from that Python -> emit C (CasADi's code generator plus the
+batched drivers) -> manifest with hashes -> write the folder atomically.
+Nothing written carries a timestamp: rendering is reproducible byte for byte.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import os
+import shutil
+import tempfile
+import types
+from dataclasses import dataclass
+from importlib import metadata
+from pathlib import Path
+
+import jinja2
+
+from .model import derive_model
+from .printer import function_body
+from .spec import ModelSpec
+from .symbols import MAX_SYMBOLIC_JOINTS
+
+__all__ = [
+    "RenderedModel",
+    "render_model",
+    "write_model",
+    "write_index",
+    "model_dirname",
+    "build_hash",
+    "MANIFEST_FORMAT",
+    "CHECKED_IN_JOINTS",
+]
+
+MANIFEST_FORMAT = 1
+#: Joint counts whose generated files are checked in under ``generated/``.
+CHECKED_IN_JOINTS = (1, 2, 3, 4, 5, 6)
+_TEMPLATES = Path(__file__).parent / "templates"
+
+
+def model_dirname(n_joints: int) -> str:
+    return f"na{n_joints}"
+
+
+def _env() -> jinja2.Environment:
+    return jinja2.Environment(
+        loader=jinja2.FileSystemLoader(str(_TEMPLATES)),
+        undefined=jinja2.StrictUndefined,
+        keep_trailing_newline=True,
+        trim_blocks=True,
+        lstrip_blocks=True,
+    )
+
+
+def tool_versions() -> dict[str, str]:
+    out = {}
+    for dist in ("sympy", "casadi", "jinja2"):
+        try:
+            out[dist] = metadata.version(dist)
+        except metadata.PackageNotFoundError:  # pragma: no cover - core dependencies
+            out[dist] = "unknown"
+    return out
+
+
+def _template_digest() -> str:
+    h = hashlib.sha256()
+    for p in sorted(_TEMPLATES.glob("*.j2")):
+        h.update(p.name.encode())
+        h.update(p.read_bytes())
+    return h.hexdigest()
+
+
+def build_hash(spec: ModelSpec) -> str:
+    """Cache key of a model: spec, templates and tool versions."""
+    h = hashlib.sha256()
+    h.update(spec.digest().encode())
+    h.update(_template_digest().encode())
+    h.update(json.dumps(tool_versions(), sort_keys=True).encode())
+    h.update(str(MANIFEST_FORMAT).encode())
+    return h.hexdigest()
+
+
+@dataclass(frozen=True)
+class RenderedModel:
+    n_joints: int
+    files: dict[str, str]
+    """Relative file name -> text: ``model.py``, ``c/<function>.c``, ``manifest.json``
+    (the manifest is written last)."""
+    manifest: dict
+
+
+def _function_context(spec: ModelSpec) -> list[dict]:
+    ctx = []
+    for f in spec.functions:
+        lines, outs = function_body(f)
+        ctx.append(
+            {
+                "name": f.name,
+                "doc": f.doc,
+                "equation": f.equation,
+                "inputs": [
+                    {"name": n, "size": len(syms), "doc": d, "symbols": [str(s) for s in syms]}
+                    for n, syms, d in f.inputs
+                ],
+                "input_names": [n for n, _, _ in f.inputs],
+                "outputs": [
+                    {"name": n, "rows": r, "cols": c, "doc": d, "elements": el}
+                    for (n, r, c, el), (_, _, d) in zip(outs, f.outputs)
+                ],
+                "output_names": [n for n, _, _ in f.outputs],
+                "lines": lines,
+            }
+        )
+    return ctx
+
+
+_COMPOSED = [
+    {"name": "constrained_dynamics",
+     "input_names": ["q", "v", "tau", "q_obj", "v_obj", "f_obj", "K", "contact_link", "side",
+                     "object_mass", "object_inertia", "rho", "wheel_offset", "free", "lam_fixed",
+                     "regularization"],
+     "output_names": ["qdd", "a_obj", "lam", "w", "gap", "s", "norm_lambda", "norm_a_obj",
+                      "norm_qdd", "sr", "pivot_ratio", "delassus", "b"]},
+    {"name": "interaction_maps",
+     "input_names": ["q", "K", "contact_link", "side", "object_mass", "object_inertia", "q_obj",
+                     "rho", "wheel_offset", "free", "lam_fixed", "regularization"],
+     "output_names": ["lam_from_tau", "...", "delassus", "pivot_ratio"]},
+    {"name": "place_object",
+     "input_names": ["q", "K", "contact_link", "contact_offset", "object_distance", "side"],
+     "output_names": ["q_obj", "rho", "contact_point"]},
+]
+
+
+def render_python(spec: ModelSpec, *, regen_out: str = "generated") -> str:
+    """Jinja2 step: the Python module that builds the CasADi functions."""
+    versions = tool_versions()
+    return _env().get_template("model.py.j2").render(
+        n_joints=spec.n_joints,
+        n_links=spec.meta["n_links"],
+        n_coordinates=spec.meta["n_coordinates"],
+        n_parameters=spec.meta["n_parameters"],
+        prefix=spec.prefix,
+        spec_hash=spec.digest(),
+        tools=", ".join(f"{k} {v}" for k, v in versions.items()),
+        regen_out=regen_out,
+        functions=_function_context(spec),
+        composed=_COMPOSED,
+    )
+
+
+def load_python(source: str, name: str) -> types.ModuleType:
+    """Execute freshly rendered model source into a module (generation time only)."""
+    module = types.ModuleType(name)
+    code = compile(source, f"<{name}>", "exec")
+    exec(code, module.__dict__)  # noqa: S102 - our own just-rendered code, never a cache
+    return module
+
+
+def operation_count(fn) -> int:
+    """Arithmetic operations of a CasADi SX function (inputs, outputs, constants excluded)."""
+    import casadi as ca
+
+    skip = {ca.OP_INPUT, ca.OP_OUTPUT, ca.OP_CONST, ca.OP_PARAMETER}
+    return sum(1 for k in range(fn.n_instructions()) if fn.instruction_id(k) not in skip)
+
+
+#: Functions with more operations than this are compiled with GCC's partial-redundancy
+#: elimination and code hoisting off: on straight-line code of that size those two passes are
+#: superlinear (33 s instead of 8 s for ``interaction_maps`` at n_a = 10, docs/performance.md).
+LARGE_FUNCTION_OPERATIONS = 5000
+
+
+def _signature(f, prefix: str) -> dict:
+    ops = operation_count(f)
+    return {
+        "name": f.name()[len(prefix):],
+        "symbol": f.name(),
+        "inputs": [
+            {"name": f.name_in(k), "rows": f.size1_in(k), "cols": f.size2_in(k)}
+            for k in range(f.n_in())
+        ],
+        "outputs": [
+            {"name": f.name_out(k), "rows": f.size1_out(k), "cols": f.size2_out(k)}
+            for k in range(f.n_out())
+        ],
+        "n_in": f.n_in(),
+        "n_out": f.n_out(),
+        "nnz_out": [f.nnz_out(k) for k in range(f.n_out())],
+        "sz_arg": f.sz_arg(),
+        "sz_res": f.sz_res(),
+        "sz_iw": f.sz_iw(),
+        "sz_w": f.sz_w(),
+        "operations": ops,
+        "large": ops > LARGE_FUNCTION_OPERATIONS,
+    }
+
+
+def render_c(spec: ModelSpec, functions) -> tuple[dict[str, str], list[dict]]:
+    """CasADi's C, one translation unit per function (compiled in parallel), each with its
+    batched driver; returns ``({file name: text}, signatures)``."""
+    import casadi as ca
+
+    versions = tool_versions()
+    files = {}
+    sigs = []
+    for f in functions:
+        sig = _signature(f, spec.prefix)
+        sigs.append(sig)
+        cg = ca.CodeGenerator(f.name(), {"with_header": False})
+        cg.add(f)
+        header = (
+            "/* GENERATED FILE - DO NOT EDIT. C code emitted by CasADi for "
+            f"{sig['name']}() of\n * generated/{model_dirname(spec.n_joints)}/model.py, plus its "
+            "batched driver.\n"
+            f" * Regenerate with: snakecg generate --joints {spec.n_joints}\n"
+            f" * spec sha256: {spec.digest()}\n"
+            f" * tools: {', '.join(f'{k} {v}' for k, v in versions.items())}\n */\n"
+        )
+        batch = _env().get_template("batch.c.j2").render(prefix=spec.prefix, functions=[sig])
+        files[f"c/{sig['name']}.c"] = header + cg.dump() + batch
+    return files, sigs
+
+
+def _sha(text: str) -> str:
+    return hashlib.sha256(text.encode()).hexdigest()
+
+
+def render_model(n_joints: int, *, regen_out: str = "generated", progress=None,
+                 max_joints: int = MAX_SYMBOLIC_JOINTS) -> RenderedModel:
+    """Derive, render and emit C for one joint count (nothing written)."""
+    step = progress or (lambda msg: None)
+    step(f"deriving the model of a {n_joints}-joint snake (SymPy)")
+    spec = derive_model(n_joints, max_joints=max_joints).spec
+    step("rendering the CasADi builder (Jinja2)")
+    py = render_python(spec, regen_out=regen_out)
+    step("building the CasADi functions")
+    module = load_python(py, f"snakecg_generated_na{n_joints}")
+    functions = module.all_functions()
+    step("emitting C (CasADi code generator)")
+    c_files, sigs = render_c(spec, functions)
+    manifest = {
+        "format": MANIFEST_FORMAT,
+        "generated_by": "snakecg_derive (derive/render.py); do not edit",
+        "n_joints": n_joints,
+        "n_links": spec.meta["n_links"],
+        "n_coordinates": spec.meta["n_coordinates"],
+        "n_parameters": spec.meta["n_parameters"],
+        "n_constraints": spec.meta["n_links"] + 1,
+        "prefix": spec.prefix,
+        "spec_hash": spec.digest(),
+        "build_hash": build_hash(spec),
+        "tools": tool_versions(),
+        "mass_matrix_form": spec.meta["mass_matrix_form"],
+        "mass_matrix_operation_counts_sympy": spec.meta["mass_matrix_operation_counts"],
+        "files": {name: _sha(text) for name, text in [("model.py", py), *sorted(c_files.items())]},
+        "functions": sigs,
+    }
+    text = json.dumps(manifest, indent=2, sort_keys=False) + "\n"
+    return RenderedModel(n_joints, {"model.py": py, **c_files, "manifest.json": text}, manifest)
+
+
+def _fsync_dir(path: Path) -> None:
+    try:
+        fd = os.open(path, os.O_RDONLY)
+    except OSError:  # pragma: no cover - platforms without directory fds
+        return
+    try:
+        os.fsync(fd)
+    finally:
+        os.close(fd)
+
+
+def write_model(rendered: RenderedModel, out_dir: Path | str) -> Path:
+    """Write ``out_dir/na<N>/`` atomically and return it.
+
+    The files go to a temporary sibling folder first (manifest last), which is then renamed
+    into place. If another process got there first with the same build, its folder is kept.
+    """
+    out_dir = Path(out_dir)
+    out_dir.mkdir(parents=True, exist_ok=True)
+    final = out_dir / model_dirname(rendered.n_joints)
+    tmp = Path(tempfile.mkdtemp(prefix=f".{final.name}.tmp-", dir=out_dir))
+    try:
+        names = [n for n in rendered.files if n != "manifest.json"] + ["manifest.json"]
+        for name in names:
+            p = tmp / name
+            p.parent.mkdir(parents=True, exist_ok=True)
+            with open(p, "w", encoding="utf-8", newline="\n") as fh:
+                fh.write(rendered.files[name])
+                fh.flush()
+                os.fsync(fh.fileno())
+        os.chmod(tmp, 0o755)
+        _fsync_dir(tmp)
+        if final.exists():
+            try:
+                old = json.loads((final / "manifest.json").read_text())
+            except (OSError, ValueError):
+                old = None
+            same = (
+                old is not None
+                and old.get("build_hash") == rendered.manifest["build_hash"]
+                and all(
+                    (final / n).is_file() and (final / n).read_text() == rendered.files[n]
+                    for n in rendered.files
+                )
+            )
+            if same:
+                shutil.rmtree(tmp, ignore_errors=True)
+                return final
+            trash = Path(tempfile.mkdtemp(prefix=f".{final.name}.old-", dir=out_dir))
+            try:
+                os.replace(final, trash / "old")
+            except FileNotFoundError:
+                pass
+            shutil.rmtree(trash, ignore_errors=True)
+        try:
+            os.replace(tmp, final)
+        except OSError:
+            # a concurrent writer won the rename: keep its (identical or newer) folder
+            shutil.rmtree(tmp, ignore_errors=True)
+        _fsync_dir(out_dir)
+        return final
+    finally:
+        if tmp.exists():
+            shutil.rmtree(tmp, ignore_errors=True)
+
+
+def write_index(out_dir: Path | str, joint_counts=CHECKED_IN_JOINTS) -> Path:
+    """``generated/__init__.py``: the package index of the checked-in models."""
+    out_dir = Path(out_dir)
+    text = _env().get_template("index.py.j2").render(joint_counts=list(joint_counts))
+    p = out_dir / "__init__.py"
+    tmp = p.with_name(f".__init__.py.tmp-{os.getpid()}")
+    tmp.write_text(text, encoding="utf-8")
+    os.replace(tmp, p)
+    return p

@@ -1,0 +1,267 @@
+/* GENERATED FILE - DO NOT EDIT. C code emitted by CasADi for bias_forces() of
+ * generated/na2/model.py, plus its batched driver.
+ * Regenerate with: snakecg generate --joints 2
+ * spec sha256: 92aa81f73b9d7ff69afc31c561cda203208b6d2de4fc2c5b6871a20f60622a96
+ * tools: sympy 1.14.0, casadi 3.8.2, jinja2 3.1.6
+ */
+/* How to prefix internal symbols */
+#ifdef CASADI_CODEGEN_PREFIX
+  #define CASADI_NAMESPACE_CONCAT(NS, ID) _CASADI_NAMESPACE_CONCAT(NS, ID)
+  #define _CASADI_NAMESPACE_CONCAT(NS, ID) NS ## ID
+  #define CASADI_PREFIX(ID) CASADI_NAMESPACE_CONCAT(CODEGEN_PREFIX, ID)
+#else
+  #define CASADI_PREFIX(ID) snakecg_na2_bias_forces_ ## ID
+#endif
+
+#include <math.h>
+
+#ifndef casadi_real
+#define casadi_real double
+#endif
+
+#ifndef casadi_int
+#define casadi_int long long int
+#endif
+
+/* Add prefix to internal symbols */
+#define casadi_f0 CASADI_PREFIX(f0)
+#define casadi_s0 CASADI_PREFIX(s0)
+#define casadi_s1 CASADI_PREFIX(s1)
+#define casadi_sq CASADI_PREFIX(sq)
+
+/* Symbol visibility in DLLs */
+#ifndef CASADI_SYMBOL_EXPORT
+  #if defined(_WIN32) || defined(__WIN32__) || defined(__CYGWIN__)
+    #if defined(STATIC_LINKED)
+      #define CASADI_SYMBOL_EXPORT
+    #else
+      #define CASADI_SYMBOL_EXPORT __declspec(dllexport)
+    #endif
+  #elif defined(__GNUC__) && defined(GCC_HASCLASSVISIBILITY)
+    #define CASADI_SYMBOL_EXPORT __attribute__ ((visibility ("default")))
+  #else
+    #define CASADI_SYMBOL_EXPORT
+  #endif
+#endif
+
+casadi_real casadi_sq(casadi_real x) { return x*x;}
+
+/* Configuration this file was compiled with */
+CASADI_SYMBOL_EXPORT void snakecg_na2_bias_forces_casadi_version(int* major, int* minor, int* patch) {
+  *major = 3;
+  *minor = 8;
+  *patch = 2;
+}
+CASADI_SYMBOL_EXPORT int snakecg_na2_bias_forces_casadi_int_size(void) { return (int) sizeof(casadi_int); }
+CASADI_SYMBOL_EXPORT int snakecg_na2_bias_forces_casadi_real_size(void) { return (int) sizeof(casadi_real); }
+
+static const casadi_int casadi_s0[3] = {5, 1, 1};
+static const casadi_int casadi_s1[3] = {25, 1, 1};
+
+/* snakecg_na2_bias_forces:(q[5],v[5],K[25])->(h[5]) */
+static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19;
+  a00=arg[1]? arg[1][2] : 0;
+  a01=casadi_sq(a00);
+  a02=arg[0]? arg[0][2] : 0;
+  a03=cos(a02);
+  a04=arg[2]? arg[2][3] : 0;
+  a05=arg[2]? arg[2][9] : 0;
+  a04=(a04-a05);
+  a03=(a03*a04);
+  a05=(a01*a03);
+  a06=arg[1]? arg[1][3] : 0;
+  a06=(a06+a00);
+  a00=casadi_sq(a06);
+  a07=arg[2]? arg[2][10] : 0;
+  a08=arg[0]? arg[0][3] : 0;
+  a08=(a08+a02);
+  a09=cos(a08);
+  a10=(a07*a09);
+  a11=(a00*a10);
+  a05=(a05+a11);
+  a11=arg[2]? arg[2][1] : 0;
+  a12=(a05*a11);
+  a13=arg[2]? arg[2][11] : 0;
+  a14=arg[0]? arg[0][4] : 0;
+  a14=(a08+a14);
+  a15=cos(a14);
+  a15=(a13*a15);
+  a16=arg[1]? arg[1][4] : 0;
+  a06=(a06+a16);
+  a06=casadi_sq(a06);
+  a16=(a15*a06);
+  a05=(a05+a16);
+  a16=arg[2]? arg[2][4] : 0;
+  a16=(a16-a07);
+  a09=(a09*a16);
+  a17=(a00*a09);
+  a05=(a05+a17);
+  a17=arg[2]? arg[2][2] : 0;
+  a05=(a05*a17);
+  a18=(a12+a05);
+  a19=(-a18);
+  if (res[0]!=0) res[0][0]=a19;
+  a02=sin(a02);
+  a04=(a04*a02);
+  a01=(a01*a04);
+  a08=sin(a08);
+  a07=(a07*a08);
+  a02=(a00*a07);
+  a01=(a01+a02);
+  a11=(a01*a11);
+  a16=(a16*a08);
+  a00=(a16*a00);
+  a01=(a01+a00);
+  a14=sin(a14);
+  a13=(a13*a14);
+  a06=(a13*a06);
+  a01=(a01+a06);
+  a01=(a01*a17);
+  a17=(a11+a01);
+  a06=(-a17);
+  if (res[0]!=0) res[0][1]=a06;
+  a06=arg[0]? arg[0][0] : 0;
+  a14=(a17*a06);
+  a00=arg[0]? arg[0][1] : 0;
+  a08=(a18*a00);
+  a14=(a14-a08);
+  a04=(a04+a00);
+  a07=(a07+a04);
+  a12=(a12*a07);
+  a03=(a03+a06);
+  a10=(a10+a03);
+  a11=(a11*a10);
+  a12=(a12-a11);
+  a16=(a16+a07);
+  a13=(a13+a16);
+  a13=(a05*a13);
+  a09=(a09+a10);
+  a15=(a15+a09);
+  a15=(a01*a15);
+  a13=(a13-a15);
+  a12=(a12+a13);
+  a14=(a14+a12);
+  if (res[0]!=0) res[0][2]=a14;
+  a17=(a17*a03);
+  a18=(a18*a04);
+  a17=(a17-a18);
+  a17=(a17+a12);
+  if (res[0]!=0) res[0][3]=a17;
+  a01=(a01*a09);
+  a05=(a05*a16);
+  a01=(a01-a05);
+  a01=(a01+a13);
+  if (res[0]!=0) res[0][4]=a01;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int snakecg_na2_bias_forces(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f0(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int snakecg_na2_bias_forces_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void snakecg_na2_bias_forces_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void snakecg_na2_bias_forces_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void snakecg_na2_bias_forces_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int snakecg_na2_bias_forces_n_in(void) { return 3;}
+
+CASADI_SYMBOL_EXPORT casadi_int snakecg_na2_bias_forces_n_out(void) { return 1;}
+
+CASADI_SYMBOL_EXPORT casadi_real snakecg_na2_bias_forces_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* snakecg_na2_bias_forces_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "q";
+    case 1: return "v";
+    case 2: return "K";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* snakecg_na2_bias_forces_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "h";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* snakecg_na2_bias_forces_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s0;
+    case 2: return casadi_s1;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* snakecg_na2_bias_forces_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int snakecg_na2_bias_forces_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 3;
+  if (sz_res) *sz_res = 1;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int snakecg_na2_bias_forces_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 3*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 1*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+
+
+/* ------------------------------------------------------------------------------------------
+ * GENERATED FILE - DO NOT EDIT. Batched drivers rendered from derive/templates/batch.c.j2.
+ * snakecg's counterpart of CasADi's Function.map(n, "serial"): one loop in C over n samples,
+ * reading inputs in place (input k of sample i at arg[k] + i * stride[k]; stride 0 broadcasts)
+ * and writing dense column-major outputs contiguously (output k of sample i at
+ * res[k] + i * nnz_out(k)). Returns 0 on success, the failing sample + 1 otherwise, -1 when out of memory.
+ * ---------------------------------------------------------------------------------------- */
+#include <stdlib.h>
+
+CASADI_SYMBOL_EXPORT int snakecg_na2_batch_bias_forces(casadi_int n, const casadi_real** arg,
+    const casadi_int* stride, casadi_real** res) {
+  const casadi_real* a[3];
+  casadi_real* r[1];
+  casadi_int* iw = (casadi_int*) malloc(sizeof(casadi_int) * 1);
+  casadi_real* w = (casadi_real*) malloc(sizeof(casadi_real) * 21);
+  casadi_int i, k;
+  int status = 0;
+  if (!iw || !w) { free(iw); free(w); return -1; }
+  for (k = 0; k < 3; ++k) a[k] = 0;
+  for (k = 0; k < 1; ++k) r[k] = 0;
+  for (i = 0; i < n; ++i) {
+    a[0] = arg[0] + i * stride[0];
+    a[1] = arg[1] + i * stride[1];
+    a[2] = arg[2] + i * stride[2];
+    r[0] = res[0] + i * 5;
+    if (snakecg_na2_bias_forces(a, r, iw, w, 0)) { status = (int) (i + 1); break; }
+  }
+  free(iw);
+  free(w);
+  return status;
+}

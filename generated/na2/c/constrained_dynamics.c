@@ -1,0 +1,1492 @@
+/* GENERATED FILE - DO NOT EDIT. C code emitted by CasADi for constrained_dynamics() of
+ * generated/na2/model.py, plus its batched driver.
+ * Regenerate with: snakecg generate --joints 2
+ * spec sha256: 92aa81f73b9d7ff69afc31c561cda203208b6d2de4fc2c5b6871a20f60622a96
+ * tools: sympy 1.14.0, casadi 3.8.2, jinja2 3.1.6
+ */
+/* How to prefix internal symbols */
+#ifdef CASADI_CODEGEN_PREFIX
+  #define CASADI_NAMESPACE_CONCAT(NS, ID) _CASADI_NAMESPACE_CONCAT(NS, ID)
+  #define _CASADI_NAMESPACE_CONCAT(NS, ID) NS ## ID
+  #define CASADI_PREFIX(ID) CASADI_NAMESPACE_CONCAT(CODEGEN_PREFIX, ID)
+#else
+  #define CASADI_PREFIX(ID) snakecg_na2_constrained_dynamics_ ## ID
+#endif
+
+#include <math.h>
+
+#ifndef casadi_real
+#define casadi_real double
+#endif
+
+#ifndef casadi_int
+#define casadi_int long long int
+#endif
+
+/* Add prefix to internal symbols */
+#define casadi_f0 CASADI_PREFIX(f0)
+#define casadi_fmax CASADI_PREFIX(fmax)
+#define casadi_fmin CASADI_PREFIX(fmin)
+#define casadi_s0 CASADI_PREFIX(s0)
+#define casadi_s1 CASADI_PREFIX(s1)
+#define casadi_s2 CASADI_PREFIX(s2)
+#define casadi_s3 CASADI_PREFIX(s3)
+#define casadi_s4 CASADI_PREFIX(s4)
+#define casadi_s5 CASADI_PREFIX(s5)
+#define casadi_s6 CASADI_PREFIX(s6)
+#define casadi_sq CASADI_PREFIX(sq)
+
+/* Symbol visibility in DLLs */
+#ifndef CASADI_SYMBOL_EXPORT
+  #if defined(_WIN32) || defined(__WIN32__) || defined(__CYGWIN__)
+    #if defined(STATIC_LINKED)
+      #define CASADI_SYMBOL_EXPORT
+    #else
+      #define CASADI_SYMBOL_EXPORT __declspec(dllexport)
+    #endif
+  #elif defined(__GNUC__) && defined(GCC_HASCLASSVISIBILITY)
+    #define CASADI_SYMBOL_EXPORT __attribute__ ((visibility ("default")))
+  #else
+    #define CASADI_SYMBOL_EXPORT
+  #endif
+#endif
+
+casadi_real casadi_sq(casadi_real x) { return x*x;}
+
+casadi_real casadi_fmax(casadi_real x, casadi_real y) {
+/* Pre-c99 compatibility */
+#if __STDC_VERSION__ < 199901L
+  return x>y ? x : y;
+#else
+  return fmax(x, y);
+#endif
+}
+
+casadi_real casadi_fmin(casadi_real x, casadi_real y) {
+/* Pre-c99 compatibility */
+#if __STDC_VERSION__ < 199901L
+  return x<y ? x : y;
+#else
+  return fmin(x, y);
+#endif
+}
+
+/* Configuration this file was compiled with */
+CASADI_SYMBOL_EXPORT void snakecg_na2_constrained_dynamics_casadi_version(int* major, int* minor, int* patch) {
+  *major = 3;
+  *minor = 8;
+  *patch = 2;
+}
+CASADI_SYMBOL_EXPORT int snakecg_na2_constrained_dynamics_casadi_int_size(void) { return (int) sizeof(casadi_int); }
+CASADI_SYMBOL_EXPORT int snakecg_na2_constrained_dynamics_casadi_real_size(void) { return (int) sizeof(casadi_real); }
+
+static const casadi_int casadi_s0[3] = {5, 1, 1};
+static const casadi_int casadi_s1[3] = {2, 1, 1};
+static const casadi_int casadi_s2[3] = {3, 1, 1};
+static const casadi_int casadi_s3[3] = {25, 1, 1};
+static const casadi_int casadi_s4[3] = {1, 1, 1};
+static const casadi_int casadi_s5[3] = {4, 1, 1};
+static const casadi_int casadi_s6[3] = {4, 4, 1};
+
+/* snakecg_na2_constrained_dynamics:(q[5],v[5],tau[2],q_obj[3],v_obj[3],f_obj[3],K[25],contact_link[3],side,object_mass,object_inertia,rho[2],wheel_offset[3],free[4],lam_fixed[4],regularization)->(qdd[5],a_obj[3],lam[4],w[4],gap,s,norm_lambda,norm_a_obj,norm_qdd,sr,pivot_ratio,delassus[4x4],b[4]) */
+static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a000, a001, a002, a003, a004, a005, a006, a007, a008, a009, a010, a011;
+  casadi_real a012, a013, a014, a015, a016, a017, a018, a019, a020, a021, a022, a023;
+  casadi_real a024, a025, a026, a027, a028, a029, a030, a031, a032, a033, a034, a035;
+  casadi_real a036, a037, a038, a039, a040, a041, a042, a043, a044, a045, a046, a047;
+  casadi_real a048, a049, a050, a051, a052, a053, a054, a055, a056, a057, a058, a059;
+  casadi_real a060, a061, a062, a063, a064, a065, a066, a067, a068, a069, a070, a071;
+  casadi_real a072, a073, a074, a075, a076, a077, a078, a079, a080, a081, a082, a083;
+  casadi_real a084, a085, a086, a087, a088, a089, a090, a091, a092, a093, a094, a095;
+  casadi_real a096, a097, a098, a099, a100, a101, a102, a103, a104, a105, a106, a107;
+  casadi_real a108, a109, a110, a111, a112, a113, a114, a115;
+  a000=arg[1]? arg[1][2] : 0;
+  a001=casadi_sq(a000);
+  a002=arg[0]? arg[0][2] : 0;
+  a003=cos(a002);
+  a004=arg[6]? arg[6][3] : 0;
+  a005=arg[6]? arg[6][9] : 0;
+  a004=(a004-a005);
+  a006=(a003*a004);
+  a007=(a001*a006);
+  a008=arg[1]? arg[1][3] : 0;
+  a009=(a008+a000);
+  a010=casadi_sq(a009);
+  a011=arg[6]? arg[6][10] : 0;
+  a012=arg[0]? arg[0][3] : 0;
+  a012=(a012+a002);
+  a013=cos(a012);
+  a014=(a011*a013);
+  a015=(a010*a014);
+  a007=(a007+a015);
+  a015=arg[6]? arg[6][1] : 0;
+  a016=(a007*a015);
+  a017=arg[6]? arg[6][11] : 0;
+  a018=arg[0]? arg[0][4] : 0;
+  a018=(a012+a018);
+  a019=cos(a018);
+  a020=(a017*a019);
+  a021=arg[1]? arg[1][4] : 0;
+  a009=(a009+a021);
+  a009=casadi_sq(a009);
+  a022=(a020*a009);
+  a007=(a007+a022);
+  a022=arg[6]? arg[6][4] : 0;
+  a022=(a022-a011);
+  a023=(a013*a022);
+  a024=(a010*a023);
+  a007=(a007+a024);
+  a024=arg[6]? arg[6][2] : 0;
+  a007=(a007*a024);
+  a025=(a016+a007);
+  a026=arg[6]? arg[6][12] : 0;
+  a027=(a025/a026);
+  a028=arg[6]? arg[6][15] : 0;
+  a029=sin(a018);
+  a030=(a028*a029);
+  a031=arg[6]? arg[6][14] : 0;
+  a032=sin(a012);
+  a033=(a031*a032);
+  a033=(a030+a033);
+  a034=arg[6]? arg[6][13] : 0;
+  a035=sin(a002);
+  a036=(a034*a035);
+  a036=(a033+a036);
+  a037=(a036/a026);
+  a038=(a037*a025);
+  a039=(a004*a035);
+  a040=(a001*a039);
+  a041=(a011*a032);
+  a042=(a010*a041);
+  a040=(a040+a042);
+  a015=(a040*a015);
+  a042=(a022*a032);
+  a043=(a042*a010);
+  a040=(a040+a043);
+  a043=(a017*a029);
+  a044=(a043*a009);
+  a040=(a040+a044);
+  a040=(a040*a024);
+  a024=(a015+a040);
+  a044=arg[0]? arg[0][0] : 0;
+  a045=(a024*a044);
+  a046=arg[0]? arg[0][1] : 0;
+  a047=(a025*a046);
+  a045=(a045-a047);
+  a039=(a039+a046);
+  a047=(a041+a039);
+  a016=(a016*a047);
+  a006=(a006+a044);
+  a048=(a014+a006);
+  a015=(a015*a048);
+  a016=(a016-a015);
+  a042=(a042+a047);
+  a015=(a043+a042);
+  a049=(a007*a015);
+  a023=(a023+a048);
+  a050=(a020+a023);
+  a051=(a040*a050);
+  a049=(a049-a051);
+  a016=(a016+a049);
+  a045=(a045+a016);
+  a038=(a038-a045);
+  a028=(a028*a019);
+  a031=(a031*a013);
+  a031=(a028+a031);
+  a034=(a034*a003);
+  a034=(a031+a034);
+  a045=(a034/a026);
+  a051=(a045*a024);
+  a038=(a038-a051);
+  a051=(a003*a013);
+  a052=(a035*a032);
+  a051=(a051+a052);
+  a052=arg[6]? arg[6][17] : 0;
+  a051=(a051*a052);
+  a052=arg[6]? arg[6][23] : 0;
+  a053=(a013*a019);
+  a054=(a032*a029);
+  a053=(a053+a054);
+  a054=arg[6]? arg[6][20] : 0;
+  a053=(a053*a054);
+  a052=(a052+a053);
+  a054=(a051+a052);
+  a055=(a003*a019);
+  a056=(a035*a029);
+  a055=(a055+a056);
+  a056=arg[6]? arg[6][18] : 0;
+  a055=(a055*a056);
+  a056=arg[6]? arg[6][24] : 0;
+  a053=(a056+a053);
+  a057=(a055+a053);
+  a054=(a054+a057);
+  a058=arg[6]? arg[6][22] : 0;
+  a051=(a051+a055);
+  a058=(a058+a051);
+  a054=(a054+a058);
+  a058=casadi_sq(a037);
+  a058=(a058*a026);
+  a058=(a054-a058);
+  a055=casadi_sq(a045);
+  a055=(a055*a026);
+  a058=(a058-a055);
+  a055=(a038/a058);
+  a052=(a052+a053);
+  a051=(a052+a051);
+  a059=(a033/a026);
+  a060=(a059*a037);
+  a060=(a060*a026);
+  a060=(a051-a060);
+  a061=(a031/a026);
+  a062=(a061*a045);
+  a062=(a062*a026);
+  a060=(a060-a062);
+  a060=(a060/a058);
+  a062=arg[2]? arg[2][0] : 0;
+  a063=(a024*a006);
+  a064=(a025*a039);
+  a063=(a063-a064);
+  a063=(a063+a016);
+  a062=(a062-a063);
+  a063=(a059*a025);
+  a062=(a062+a063);
+  a063=(a061*a024);
+  a062=(a062-a063);
+  a063=(a060*a038);
+  a062=(a062-a063);
+  a063=casadi_sq(a059);
+  a063=(a063*a026);
+  a063=(a052-a063);
+  a016=casadi_sq(a061);
+  a016=(a016*a026);
+  a063=(a063-a016);
+  a016=casadi_sq(a060);
+  a016=(a016*a058);
+  a063=(a063-a016);
+  a016=(a062/a063);
+  a064=(a030/a026);
+  a065=(a064*a059);
+  a065=(a065*a026);
+  a065=(a053-a065);
+  a066=(a028/a026);
+  a067=(a066*a061);
+  a067=(a067*a026);
+  a065=(a065-a067);
+  a067=(a064*a037);
+  a067=(a067*a026);
+  a067=(a057-a067);
+  a068=(a066*a045);
+  a068=(a068*a026);
+  a067=(a067-a068);
+  a067=(a067/a058);
+  a068=(a067*a060);
+  a068=(a068*a058);
+  a065=(a065-a068);
+  a065=(a065/a063);
+  a068=arg[2]? arg[2][1] : 0;
+  a040=(a040*a023);
+  a007=(a007*a042);
+  a040=(a040-a007);
+  a040=(a040+a049);
+  a068=(a068-a040);
+  a025=(a064*a025);
+  a068=(a068+a025);
+  a025=(a066*a024);
+  a068=(a068-a025);
+  a038=(a067*a038);
+  a068=(a068-a038);
+  a062=(a065*a062);
+  a068=(a068-a062);
+  a062=casadi_sq(a064);
+  a062=(a062*a026);
+  a062=(a056-a062);
+  a038=casadi_sq(a066);
+  a038=(a038*a026);
+  a062=(a062-a038);
+  a038=casadi_sq(a067);
+  a038=(a038*a058);
+  a062=(a062-a038);
+  a038=casadi_sq(a065);
+  a038=(a038*a063);
+  a062=(a062-a038);
+  a068=(a068/a062);
+  a038=(a065*a068);
+  a016=(a016-a038);
+  a038=(a060*a016);
+  a055=(a055-a038);
+  a038=(a067*a068);
+  a055=(a055-a038);
+  a038=(a037*a055);
+  a027=(a027+a038);
+  a038=(a059*a016);
+  a027=(a027+a038);
+  a038=(a064*a068);
+  a027=(a027+a038);
+  a038=arg[7]? arg[7][0] : 0;
+  a002=(a002*a038);
+  a025=arg[7]? arg[7][1] : 0;
+  a012=(a012*a025);
+  a002=(a002+a012);
+  a012=arg[7]? arg[7][2] : 0;
+  a018=(a018*a012);
+  a002=(a002+a018);
+  a018=sin(a002);
+  a040=arg[8]? arg[8][0] : 0;
+  a049=(a018*a040);
+  a007=(a038+a025);
+  a007=(a007+a012);
+  a042=(a049*a007);
+  a023=(a042/a026);
+  a069=(a046-a047);
+  a070=(a025*a069);
+  a071=(a046-a015);
+  a072=(a012*a071);
+  a070=(a070+a072);
+  a072=(a049*a070);
+  a002=cos(a002);
+  a073=(a002*a040);
+  a074=(a048-a044);
+  a075=(a025*a074);
+  a076=(a050-a044);
+  a077=(a012*a076);
+  a075=(a075+a077);
+  a077=(a073*a075);
+  a072=(a072-a077);
+  a077=casadi_sq(a018);
+  a005=(a005*a038);
+  a078=(a011*a025);
+  a005=(a005+a078);
+  a078=(a017*a012);
+  a005=(a005+a078);
+  a078=(a005*a040);
+  a077=(a077*a078);
+  a079=(a018*a005);
+  a080=arg[3]? arg[3][2] : 0;
+  a081=cos(a080);
+  a082=arg[11]? arg[11][1] : 0;
+  a083=(a081*a082);
+  a080=sin(a080);
+  a084=arg[11]? arg[11][0] : 0;
+  a085=(a080*a084);
+  a083=(a083+a085);
+  a079=(a079+a083);
+  a046=(a046*a038);
+  a047=(a047*a025);
+  a046=(a046+a047);
+  a047=(a015*a012);
+  a046=(a046+a047);
+  a079=(a079-a046);
+  a046=arg[3]? arg[3][1] : 0;
+  a079=(a079+a046);
+  a046=(a049*a079);
+  a077=(a077-a046);
+  a046=casadi_sq(a002);
+  a046=(a046*a078);
+  a077=(a077+a046);
+  a005=(a002*a005);
+  a081=(a081*a084);
+  a080=(a080*a082);
+  a081=(a081-a080);
+  a005=(a005+a081);
+  a044=(a044*a038);
+  a048=(a048*a025);
+  a044=(a044+a048);
+  a048=(a050*a012);
+  a044=(a044+a048);
+  a005=(a005-a044);
+  a044=arg[3]? arg[3][0] : 0;
+  a005=(a005+a044);
+  a044=(a073*a005);
+  a077=(a077-a044);
+  a044=(a077*a007);
+  a072=(a072+a044);
+  a044=(a037*a042);
+  a044=(a072+a044);
+  a048=(a073*a007);
+  a038=(a045*a048);
+  a044=(a044+a038);
+  a038=(a044/a058);
+  a039=(a039-a015);
+  a015=(a012*a039);
+  a080=(a025*a041);
+  a015=(a015-a080);
+  a080=(a049*a015);
+  a082=(a025*a014);
+  a050=(a050-a006);
+  a006=(a012*a050);
+  a082=(a082+a006);
+  a006=(a073*a082);
+  a080=(a080-a006);
+  a006=(a025+a012);
+  a084=(a077*a006);
+  a080=(a080+a084);
+  a084=(a059*a042);
+  a084=(a080+a084);
+  a046=(a061*a048);
+  a084=(a084+a046);
+  a046=(a060*a044);
+  a084=(a084-a046);
+  a046=(a084/a063);
+  a077=(a077*a012);
+  a078=(a012*a043);
+  a047=(a049*a078);
+  a085=(a012*a020);
+  a086=(a073*a085);
+  a047=(a047+a086);
+  a077=(a077-a047);
+  a047=(a064*a042);
+  a047=(a077+a047);
+  a086=(a066*a048);
+  a047=(a047+a086);
+  a044=(a067*a044);
+  a047=(a047-a044);
+  a084=(a065*a084);
+  a047=(a047-a084);
+  a047=(a047/a062);
+  a084=(a065*a047);
+  a046=(a046-a084);
+  a084=(a060*a046);
+  a038=(a038-a084);
+  a084=(a067*a047);
+  a038=(a038-a084);
+  a084=(a037*a038);
+  a023=(a023+a084);
+  a084=(a059*a046);
+  a023=(a023+a084);
+  a084=(a064*a047);
+  a023=(a023+a084);
+  a084=1.;
+  a044=arg[13]? arg[13][0] : 0;
+  a086=(a084-a044);
+  a087=arg[14]? arg[14][0] : 0;
+  a087=(a086*a087);
+  a088=(a042*a027);
+  a024=(a024/a026);
+  a089=(a045*a055);
+  a024=(a024-a089);
+  a089=(a061*a016);
+  a024=(a024-a089);
+  a089=(a066*a068);
+  a024=(a024-a089);
+  a089=(a048*a024);
+  a088=(a088-a089);
+  a089=(a072*a055);
+  a088=(a088+a089);
+  a089=(a080*a016);
+  a088=(a088+a089);
+  a089=(a077*a068);
+  a088=(a088+a089);
+  a089=arg[5]? arg[5][1] : 0;
+  a090=arg[9]? arg[9][0] : 0;
+  a089=(a089/a090);
+  a091=(a073*a089);
+  a092=arg[5]? arg[5][0] : 0;
+  a092=(a092/a090);
+  a093=(a049*a092);
+  a091=(a091-a093);
+  a093=(a049*a083);
+  a094=(a002*a081);
+  a094=(a094*a040);
+  a093=(a093+a094);
+  a094=arg[5]? arg[5][2] : 0;
+  a095=arg[10]? arg[10][0] : 0;
+  a094=(a094/a095);
+  a096=(a093*a094);
+  a091=(a091+a096);
+  a088=(a088+a091);
+  a091=arg[1]? arg[1][0] : 0;
+  a096=(a007*a091);
+  a070=(a070*a000);
+  a096=(a096+a070);
+  a015=(a015*a008);
+  a096=(a096+a015);
+  a078=(a078*a021);
+  a096=(a096-a078);
+  a096=(a073*a096);
+  a078=(a007*a000);
+  a006=(a006*a008);
+  a078=(a078+a006);
+  a006=(a012*a021);
+  a078=(a078+a006);
+  a006=(a096*a078);
+  a001=(a001*a004);
+  a004=(a003*a001);
+  a011=(a011*a010);
+  a015=(a013*a011);
+  a004=(a004+a015);
+  a015=(a004*a025);
+  a010=(a010*a022);
+  a022=(a013*a010);
+  a022=(a004+a022);
+  a017=(a017*a009);
+  a009=(a019*a017);
+  a022=(a022+a009);
+  a009=(a022*a012);
+  a015=(a015+a009);
+  a015=(a049*a015);
+  a006=(a006-a015);
+  a015=arg[1]? arg[1][1] : 0;
+  a007=(a007*a015);
+  a075=(a075*a000);
+  a007=(a007+a075);
+  a082=(a082*a008);
+  a007=(a007+a082);
+  a085=(a085*a021);
+  a007=(a007+a085);
+  a007=(a049*a007);
+  a085=(a007*a078);
+  a006=(a006+a085);
+  a085=arg[4]? arg[4][0] : 0;
+  a085=(a073*a085);
+  a082=(a085*a078);
+  a006=(a006-a082);
+  a082=arg[4]? arg[4][1] : 0;
+  a082=(a049*a082);
+  a075=(a082*a078);
+  a006=(a006-a075);
+  a001=(a001*a035);
+  a011=(a011*a032);
+  a001=(a001+a011);
+  a025=(a001*a025);
+  a010=(a010*a032);
+  a010=(a001+a010);
+  a017=(a017*a029);
+  a010=(a010+a017);
+  a012=(a010*a012);
+  a025=(a025+a012);
+  a025=(a073*a025);
+  a006=(a006+a025);
+  a083=(a083*a073);
+  a081=(a049*a081);
+  a025=(a083-a081);
+  a012=arg[4]? arg[4][2] : 0;
+  a017=(a025*a012);
+  a011=(a079*a073);
+  a075=(a018*a005);
+  a075=(a075*a040);
+  a011=(a011-a075);
+  a075=(a011*a078);
+  a017=(a017-a075);
+  a017=(a017+a096);
+  a017=(a017+a007);
+  a017=(a017-a085);
+  a017=(a017-a082);
+  a017=(a078*a017);
+  a006=(a006+a017);
+  a025=(a025*a078);
+  a081=(a081-a083);
+  a081=(a012*a081);
+  a025=(a025+a081);
+  a012=(a012*a025);
+  a006=(a006+a012);
+  a088=(a088+a006);
+  a006=(a042*a023);
+  a012=(a048/a026);
+  a025=(a045*a038);
+  a012=(a012+a025);
+  a025=(a061*a046);
+  a012=(a012+a025);
+  a025=(a066*a047);
+  a012=(a012+a025);
+  a025=(a048*a012);
+  a006=(a006+a025);
+  a025=(a072*a038);
+  a006=(a006+a025);
+  a025=(a080*a046);
+  a006=(a006+a025);
+  a025=(a077*a047);
+  a006=(a006+a025);
+  a025=(a049/a090);
+  a049=(a049*a025);
+  a081=(a073/a090);
+  a073=(a073*a081);
+  a049=(a049+a073);
+  a073=(a093/a095);
+  a093=(a093*a073);
+  a049=(a049+a093);
+  a006=(a006+a049);
+  a049=(a006*a087);
+  a093=arg[12]? arg[12][0] : 0;
+  a083=(a037*a035);
+  a083=(a093-a083);
+  a078=(a045*a003);
+  a083=(a083-a078);
+  a078=(a083/a058);
+  a017=(a059*a035);
+  a082=(a061*a003);
+  a017=(a017+a082);
+  a082=(a060*a083);
+  a017=(a017+a082);
+  a082=(a017/a063);
+  a017=(a065*a017);
+  a085=(a064*a035);
+  a007=(a066*a003);
+  a085=(a085+a007);
+  a083=(a067*a083);
+  a085=(a085+a083);
+  a017=(a017-a085);
+  a017=(a017/a062);
+  a085=(a065*a017);
+  a082=(a082+a085);
+  a085=(a060*a082);
+  a078=(a078+a085);
+  a085=(a067*a017);
+  a078=(a078-a085);
+  a085=(a037*a078);
+  a083=(a035/a026);
+  a085=(a085-a083);
+  a083=(a059*a082);
+  a085=(a085-a083);
+  a083=(a064*a017);
+  a085=(a085+a083);
+  a083=(a042*a085);
+  a007=(a003/a026);
+  a096=(a045*a078);
+  a007=(a007-a096);
+  a096=(a061*a082);
+  a007=(a007+a096);
+  a096=(a066*a017);
+  a007=(a007-a096);
+  a096=(a048*a007);
+  a083=(a083-a096);
+  a096=(a072*a078);
+  a083=(a083+a096);
+  a096=(a080*a082);
+  a083=(a083-a096);
+  a096=(a077*a017);
+  a083=(a083+a096);
+  a096=arg[13]? arg[13][1] : 0;
+  a075=(a084-a096);
+  a040=arg[14]? arg[14][1] : 0;
+  a040=(a075*a040);
+  a009=(a083*a040);
+  a049=(a049+a009);
+  a009=(a013*a074);
+  a070=(a032*a069);
+  a009=(a009-a070);
+  a070=arg[12]? arg[12][1] : 0;
+  a009=(a009+a070);
+  a097=(a037*a032);
+  a097=(a009-a097);
+  a098=(a045*a013);
+  a097=(a097-a098);
+  a098=(a097/a058);
+  a099=(a032*a041);
+  a100=(a013*a014);
+  a099=(a099+a100);
+  a099=(a099+a070);
+  a070=(a059*a032);
+  a070=(a099-a070);
+  a100=(a061*a013);
+  a070=(a070-a100);
+  a100=(a060*a097);
+  a070=(a070-a100);
+  a100=(a070/a063);
+  a101=(a064*a032);
+  a102=(a066*a013);
+  a101=(a101+a102);
+  a097=(a067*a097);
+  a101=(a101+a097);
+  a070=(a065*a070);
+  a101=(a101+a070);
+  a101=(a101/a062);
+  a070=(a065*a101);
+  a100=(a100+a070);
+  a070=(a060*a100);
+  a098=(a098-a070);
+  a070=(a067*a101);
+  a098=(a098+a070);
+  a070=(a037*a098);
+  a097=(a032/a026);
+  a070=(a070-a097);
+  a097=(a059*a100);
+  a070=(a070+a097);
+  a097=(a064*a101);
+  a070=(a070-a097);
+  a097=(a042*a070);
+  a102=(a013/a026);
+  a103=(a045*a098);
+  a102=(a102-a103);
+  a103=(a061*a100);
+  a102=(a102-a103);
+  a103=(a066*a101);
+  a102=(a102+a103);
+  a103=(a048*a102);
+  a097=(a097-a103);
+  a103=(a072*a098);
+  a097=(a097+a103);
+  a103=(a080*a100);
+  a097=(a097+a103);
+  a103=(a077*a101);
+  a097=(a097-a103);
+  a103=arg[13]? arg[13][2] : 0;
+  a104=(a084-a103);
+  a105=arg[14]? arg[14][2] : 0;
+  a105=(a104*a105);
+  a106=(a097*a105);
+  a049=(a049+a106);
+  a106=(a019*a076);
+  a107=(a029*a071);
+  a106=(a106-a107);
+  a107=arg[12]? arg[12][2] : 0;
+  a106=(a106+a107);
+  a108=(a037*a029);
+  a108=(a106-a108);
+  a109=(a045*a019);
+  a108=(a108-a109);
+  a058=(a108/a058);
+  a109=(a019*a050);
+  a110=(a029*a039);
+  a109=(a109-a110);
+  a109=(a109+a107);
+  a110=(a059*a029);
+  a110=(a109-a110);
+  a111=(a061*a019);
+  a110=(a110-a111);
+  a111=(a060*a108);
+  a110=(a110-a111);
+  a063=(a110/a063);
+  a111=(a029*a043);
+  a112=(a019*a020);
+  a111=(a111+a112);
+  a111=(a111+a107);
+  a107=(a064*a029);
+  a107=(a111-a107);
+  a112=(a066*a019);
+  a107=(a107-a112);
+  a108=(a067*a108);
+  a107=(a107-a108);
+  a110=(a065*a110);
+  a107=(a107-a110);
+  a107=(a107/a062);
+  a065=(a065*a107);
+  a063=(a063-a065);
+  a060=(a060*a063);
+  a058=(a058-a060);
+  a067=(a067*a107);
+  a058=(a058-a067);
+  a037=(a037*a058);
+  a067=(a029/a026);
+  a037=(a037-a067);
+  a059=(a059*a063);
+  a037=(a037+a059);
+  a064=(a064*a107);
+  a037=(a037+a064);
+  a042=(a042*a037);
+  a064=(a019/a026);
+  a045=(a045*a058);
+  a064=(a064-a045);
+  a061=(a061*a063);
+  a064=(a064-a061);
+  a066=(a066*a107);
+  a064=(a064-a066);
+  a048=(a048*a064);
+  a042=(a042-a048);
+  a072=(a072*a058);
+  a042=(a042+a072);
+  a080=(a080*a063);
+  a042=(a042+a080);
+  a077=(a077*a107);
+  a042=(a042+a077);
+  a077=arg[13]? arg[13][3] : 0;
+  a080=(a084-a077);
+  a072=arg[14]? arg[14][3] : 0;
+  a072=(a080*a072);
+  a048=(a042*a072);
+  a049=(a049+a048);
+  a049=(a088+a049);
+  a049=(a044*a049);
+  a048=(a044*a006);
+  a048=(a048*a044);
+  a048=(a048+a086);
+  a086=arg[15]? arg[15][0] : 0;
+  a066=(a086*a044);
+  a048=(a048+a066);
+  a066=(a049/a048);
+  a061=(a093*a038);
+  a045=(a035*a023);
+  a059=(a003*a012);
+  a045=(a045+a059);
+  a061=(a061-a045);
+  a045=(a096*a061);
+  a045=(a045*a044);
+  a045=(a045/a048);
+  a059=(a045*a049);
+  a067=(a003*a024);
+  a060=(a035*a027);
+  a067=(a067-a060);
+  a060=(a093*a055);
+  a067=(a067+a060);
+  a060=(a035*a015);
+  a060=(a060*a000);
+  a065=(a003*a091);
+  a065=(a065*a000);
+  a060=(a060+a065);
+  a067=(a067-a060);
+  a060=(a061*a087);
+  a065=(a003*a007);
+  a062=(a035*a085);
+  a065=(a065-a062);
+  a062=(a093*a078);
+  a065=(a065+a062);
+  a062=(a065*a040);
+  a060=(a060+a062);
+  a062=(a003*a102);
+  a110=(a035*a070);
+  a062=(a062-a110);
+  a110=(a093*a098);
+  a062=(a062+a110);
+  a110=(a062*a105);
+  a060=(a060+a110);
+  a003=(a003*a064);
+  a035=(a035*a037);
+  a003=(a003-a035);
+  a093=(a093*a058);
+  a003=(a003+a093);
+  a093=(a003*a072);
+  a060=(a060+a093);
+  a060=(a067+a060);
+  a060=(a096*a060);
+  a059=(a059-a060);
+  a060=(a096*a065);
+  a060=(a060*a096);
+  a060=(a060+a075);
+  a075=(a086*a096);
+  a060=(a060+a075);
+  a075=casadi_sq(a045);
+  a075=(a075*a048);
+  a075=(a060-a075);
+  a093=(a059/a075);
+  a035=(a013*a007);
+  a110=(a032*a085);
+  a035=(a035-a110);
+  a110=(a009*a078);
+  a035=(a035+a110);
+  a110=(a099*a082);
+  a035=(a035-a110);
+  a110=(a103*a035);
+  a110=(a110*a096);
+  a108=(a009*a038);
+  a112=(a032*a023);
+  a113=(a013*a012);
+  a112=(a112+a113);
+  a108=(a108-a112);
+  a112=(a099*a046);
+  a108=(a108+a112);
+  a112=(a103*a108);
+  a112=(a112*a044);
+  a112=(a112/a048);
+  a113=(a112*a045);
+  a113=(a113*a048);
+  a110=(a110-a113);
+  a110=(a110/a075);
+  a113=(a112*a049);
+  a114=(a013*a024);
+  a115=(a032*a027);
+  a114=(a114-a115);
+  a115=(a009*a055);
+  a114=(a114+a115);
+  a115=(a099*a016);
+  a114=(a114+a115);
+  a001=(a013*a001);
+  a074=(a074*a000);
+  a074=(a015+a074);
+  a014=(a014*a008);
+  a074=(a074+a014);
+  a074=(a032*a074);
+  a014=(a000+a008);
+  a074=(a074*a014);
+  a004=(a032*a004);
+  a074=(a074-a004);
+  a001=(a001+a074);
+  a069=(a069*a000);
+  a069=(a091+a069);
+  a041=(a041*a008);
+  a069=(a069-a041);
+  a069=(a013*a069);
+  a069=(a069*a014);
+  a001=(a001+a069);
+  a114=(a114-a001);
+  a001=(a108*a087);
+  a069=(a035*a040);
+  a001=(a001+a069);
+  a069=(a013*a102);
+  a041=(a032*a070);
+  a069=(a069-a041);
+  a041=(a009*a098);
+  a069=(a069+a041);
+  a041=(a099*a100);
+  a069=(a069+a041);
+  a041=(a069*a105);
+  a001=(a001+a041);
+  a013=(a013*a064);
+  a032=(a032*a037);
+  a013=(a013-a032);
+  a009=(a009*a058);
+  a013=(a013+a009);
+  a099=(a099*a063);
+  a013=(a013+a099);
+  a099=(a013*a072);
+  a001=(a001+a099);
+  a001=(a114+a001);
+  a001=(a103*a001);
+  a113=(a113-a001);
+  a001=(a110*a059);
+  a113=(a113-a001);
+  a001=(a103*a069);
+  a001=(a001*a103);
+  a001=(a001+a104);
+  a104=(a086*a103);
+  a001=(a001+a104);
+  a104=casadi_sq(a112);
+  a104=(a104*a048);
+  a104=(a001-a104);
+  a099=casadi_sq(a110);
+  a099=(a099*a075);
+  a104=(a104-a099);
+  a099=(a113/a104);
+  a009=(a019*a102);
+  a032=(a029*a070);
+  a009=(a009-a032);
+  a032=(a106*a098);
+  a009=(a009+a032);
+  a032=(a109*a100);
+  a009=(a009+a032);
+  a032=(a111*a101);
+  a009=(a009-a032);
+  a032=(a077*a009);
+  a032=(a032*a103);
+  a103=(a106*a038);
+  a041=(a029*a023);
+  a074=(a019*a012);
+  a041=(a041+a074);
+  a103=(a103-a041);
+  a041=(a109*a046);
+  a103=(a103+a041);
+  a041=(a111*a047);
+  a103=(a103+a041);
+  a041=(a077*a103);
+  a041=(a041*a044);
+  a041=(a041/a048);
+  a044=(a041*a112);
+  a044=(a044*a048);
+  a032=(a032-a044);
+  a044=(a019*a007);
+  a074=(a029*a085);
+  a044=(a044-a074);
+  a074=(a106*a078);
+  a044=(a044+a074);
+  a074=(a109*a082);
+  a044=(a044-a074);
+  a074=(a111*a017);
+  a044=(a044+a074);
+  a074=(a077*a044);
+  a074=(a074*a096);
+  a096=(a041*a045);
+  a096=(a096*a048);
+  a074=(a074-a096);
+  a074=(a074/a075);
+  a096=(a074*a110);
+  a096=(a096*a075);
+  a032=(a032-a096);
+  a032=(a032/a104);
+  a049=(a041*a049);
+  a096=(a019*a024);
+  a004=(a029*a027);
+  a096=(a096-a004);
+  a004=(a106*a055);
+  a096=(a096+a004);
+  a004=(a109*a016);
+  a096=(a096+a004);
+  a004=(a111*a068);
+  a096=(a096+a004);
+  a010=(a019*a010);
+  a076=(a076*a000);
+  a015=(a015+a076);
+  a050=(a050*a008);
+  a015=(a015+a050);
+  a020=(a020*a021);
+  a015=(a015+a020);
+  a015=(a029*a015);
+  a014=(a014+a021);
+  a015=(a015*a014);
+  a022=(a029*a022);
+  a015=(a015-a022);
+  a010=(a010+a015);
+  a071=(a071*a000);
+  a091=(a091+a071);
+  a039=(a039*a008);
+  a091=(a091+a039);
+  a043=(a043*a021);
+  a091=(a091-a043);
+  a091=(a019*a091);
+  a091=(a091*a014);
+  a010=(a010+a091);
+  a096=(a096-a010);
+  a010=(a103*a087);
+  a091=(a044*a040);
+  a010=(a010+a091);
+  a091=(a009*a105);
+  a010=(a010+a091);
+  a019=(a019*a064);
+  a029=(a029*a037);
+  a019=(a019-a029);
+  a106=(a106*a058);
+  a019=(a019+a106);
+  a109=(a109*a063);
+  a019=(a019+a109);
+  a111=(a111*a107);
+  a019=(a019+a111);
+  a111=(a019*a072);
+  a010=(a010+a111);
+  a010=(a096+a010);
+  a010=(a077*a010);
+  a049=(a049-a010);
+  a059=(a074*a059);
+  a049=(a049-a059);
+  a113=(a032*a113);
+  a049=(a049-a113);
+  a113=(a077*a019);
+  a113=(a113*a077);
+  a113=(a113+a080);
+  a086=(a086*a077);
+  a113=(a113+a086);
+  a086=casadi_sq(a041);
+  a086=(a086*a048);
+  a086=(a113-a086);
+  a048=casadi_sq(a074);
+  a048=(a048*a075);
+  a086=(a086-a048);
+  a048=casadi_sq(a032);
+  a048=(a048*a104);
+  a086=(a086-a048);
+  a049=(a049/a086);
+  a032=(a032*a049);
+  a099=(a099-a032);
+  a110=(a110*a099);
+  a093=(a093-a110);
+  a074=(a074*a049);
+  a093=(a093-a074);
+  a045=(a045*a093);
+  a066=(a066+a045);
+  a112=(a112*a099);
+  a066=(a066+a112);
+  a041=(a041*a049);
+  a066=(a066+a041);
+  a087=(a087-a066);
+  a023=(a023*a087);
+  a093=(a093+a040);
+  a085=(a085*a093);
+  a023=(a023+a085);
+  a099=(a099+a105);
+  a070=(a070*a099);
+  a023=(a023+a070);
+  a049=(a049+a072);
+  a037=(a037*a049);
+  a023=(a023+a037);
+  a027=(a027+a023);
+  if (res[0]!=0) res[0][0]=a027;
+  a007=(a007*a093);
+  a012=(a012*a087);
+  a007=(a007-a012);
+  a102=(a102*a099);
+  a007=(a007+a102);
+  a064=(a064*a049);
+  a007=(a007+a064);
+  a024=(a024+a007);
+  if (res[0]!=0) res[0][1]=a024;
+  a038=(a038*a087);
+  a078=(a078*a093);
+  a038=(a038+a078);
+  a098=(a098*a099);
+  a038=(a038+a098);
+  a058=(a058*a049);
+  a038=(a038+a058);
+  a055=(a055+a038);
+  if (res[0]!=0) res[0][2]=a055;
+  a046=(a046*a087);
+  a082=(a082*a093);
+  a046=(a046-a082);
+  a100=(a100*a099);
+  a046=(a046+a100);
+  a063=(a063*a049);
+  a046=(a046+a063);
+  a016=(a016+a046);
+  if (res[0]!=0) res[0][3]=a016;
+  a047=(a047*a087);
+  a017=(a017*a093);
+  a047=(a047+a017);
+  a101=(a101*a099);
+  a047=(a047-a101);
+  a107=(a107*a049);
+  a047=(a047+a107);
+  a068=(a068+a047);
+  if (res[0]!=0) res[0][4]=a068;
+  a025=(a025*a087);
+  a092=(a092-a025);
+  if (res[1]!=0) res[1][0]=a092;
+  a081=(a081*a087);
+  a089=(a089+a081);
+  if (res[1]!=0) res[1][1]=a089;
+  a073=(a073*a087);
+  a094=(a094+a073);
+  if (res[1]!=0) res[1][2]=a094;
+  if (res[2]!=0) res[2][0]=a087;
+  if (res[2]!=0) res[2][1]=a093;
+  if (res[2]!=0) res[2][2]=a099;
+  if (res[2]!=0) res[2][3]=a049;
+  a073=(a006*a087);
+  a081=(a083*a093);
+  a073=(a073+a081);
+  a081=(a097*a099);
+  a073=(a073+a081);
+  a081=(a042*a049);
+  a073=(a073+a081);
+  a073=(a073+a088);
+  if (res[3]!=0) res[3][0]=a073;
+  a073=(a061*a087);
+  a081=(a065*a093);
+  a073=(a073+a081);
+  a081=(a062*a099);
+  a073=(a073+a081);
+  a081=(a003*a049);
+  a073=(a073+a081);
+  a073=(a073+a067);
+  if (res[3]!=0) res[3][1]=a073;
+  a073=(a108*a087);
+  a081=(a035*a093);
+  a073=(a073+a081);
+  a081=(a069*a099);
+  a073=(a073+a081);
+  a081=(a013*a049);
+  a073=(a073+a081);
+  a073=(a073+a114);
+  if (res[3]!=0) res[3][2]=a073;
+  a073=(a103*a087);
+  a081=(a044*a093);
+  a073=(a073+a081);
+  a081=(a009*a099);
+  a073=(a073+a081);
+  a081=(a019*a049);
+  a073=(a073+a081);
+  a073=(a073+a096);
+  if (res[3]!=0) res[3][3]=a073;
+  if (res[4]!=0) res[4][0]=a011;
+  a018=(a018*a079);
+  a002=(a002*a005);
+  a018=(a018+a002);
+  if (res[5]!=0) res[5][0]=a018;
+  a018=(a087*a006);
+  a002=(a093*a061);
+  a018=(a018+a002);
+  a002=(a099*a108);
+  a018=(a018+a002);
+  a002=(a049*a103);
+  a018=(a018+a002);
+  a018=(a018*a087);
+  a002=(a087*a083);
+  a005=(a093*a065);
+  a002=(a002+a005);
+  a005=(a099*a035);
+  a002=(a002+a005);
+  a005=(a049*a044);
+  a002=(a002+a005);
+  a002=(a002*a093);
+  a018=(a018+a002);
+  a002=(a087*a097);
+  a005=(a093*a062);
+  a002=(a002+a005);
+  a005=(a099*a069);
+  a002=(a002+a005);
+  a005=(a049*a009);
+  a002=(a002+a005);
+  a002=(a002*a099);
+  a018=(a018+a002);
+  a087=(a087*a042);
+  a093=(a093*a003);
+  a087=(a087+a093);
+  a099=(a099*a013);
+  a087=(a087+a099);
+  a099=(a049*a019);
+  a087=(a087+a099);
+  a087=(a087*a049);
+  a018=(a018+a087);
+  if (res[6]!=0) res[6][0]=a018;
+  a018=(a090*a092);
+  a092=(a092*a018);
+  a090=(a090*a089);
+  a089=(a089*a090);
+  a092=(a092+a089);
+  a095=(a095*a094);
+  a094=(a094*a095);
+  a092=(a092+a094);
+  if (res[7]!=0) res[7][0]=a092;
+  a094=(a027*a026);
+  a095=(a055*a036);
+  a094=(a094-a095);
+  a095=(a016*a033);
+  a094=(a094-a095);
+  a095=(a068*a030);
+  a094=(a094-a095);
+  a094=(a094*a027);
+  a026=(a024*a026);
+  a095=(a055*a034);
+  a026=(a026+a095);
+  a095=(a016*a031);
+  a026=(a026+a095);
+  a095=(a068*a028);
+  a026=(a026+a095);
+  a026=(a026*a024);
+  a094=(a094+a026);
+  a034=(a024*a034);
+  a036=(a027*a036);
+  a034=(a034-a036);
+  a054=(a055*a054);
+  a034=(a034+a054);
+  a054=(a016*a051);
+  a034=(a034+a054);
+  a054=(a068*a057);
+  a034=(a034+a054);
+  a034=(a034*a055);
+  a094=(a094+a034);
+  a031=(a024*a031);
+  a033=(a027*a033);
+  a031=(a031-a033);
+  a051=(a055*a051);
+  a031=(a031+a051);
+  a052=(a016*a052);
+  a031=(a031+a052);
+  a052=(a068*a053);
+  a031=(a031+a052);
+  a031=(a031*a016);
+  a094=(a094+a031);
+  a024=(a024*a028);
+  a027=(a027*a030);
+  a024=(a024-a027);
+  a055=(a055*a057);
+  a024=(a024+a055);
+  a016=(a016*a053);
+  a024=(a024+a016);
+  a056=(a068*a056);
+  a024=(a024+a056);
+  a024=(a024*a068);
+  a094=(a094+a024);
+  if (res[8]!=0) res[8][0]=a094;
+  a094=(a092+a094);
+  a024=1.0000000000000000e-300;
+  a094=casadi_fmax(a094,a024);
+  a092=(a092/a094);
+  if (res[9]!=0) res[9][0]=a092;
+  a075=(a075/a060);
+  a084=casadi_fmin(a084,a075);
+  a104=(a104/a001);
+  a084=casadi_fmin(a084,a104);
+  a086=(a086/a113);
+  a084=casadi_fmin(a084,a086);
+  if (res[10]!=0) res[10][0]=a084;
+  if (res[11]!=0) res[11][0]=a006;
+  if (res[11]!=0) res[11][1]=a061;
+  if (res[11]!=0) res[11][2]=a108;
+  if (res[11]!=0) res[11][3]=a103;
+  if (res[11]!=0) res[11][4]=a083;
+  if (res[11]!=0) res[11][5]=a065;
+  if (res[11]!=0) res[11][6]=a035;
+  if (res[11]!=0) res[11][7]=a044;
+  if (res[11]!=0) res[11][8]=a097;
+  if (res[11]!=0) res[11][9]=a062;
+  if (res[11]!=0) res[11][10]=a069;
+  if (res[11]!=0) res[11][11]=a009;
+  if (res[11]!=0) res[11][12]=a042;
+  if (res[11]!=0) res[11][13]=a003;
+  if (res[11]!=0) res[11][14]=a013;
+  if (res[11]!=0) res[11][15]=a019;
+  if (res[12]!=0) res[12][0]=a088;
+  if (res[12]!=0) res[12][1]=a067;
+  if (res[12]!=0) res[12][2]=a114;
+  if (res[12]!=0) res[12][3]=a096;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int snakecg_na2_constrained_dynamics(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f0(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int snakecg_na2_constrained_dynamics_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void snakecg_na2_constrained_dynamics_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void snakecg_na2_constrained_dynamics_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void snakecg_na2_constrained_dynamics_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int snakecg_na2_constrained_dynamics_n_in(void) { return 16;}
+
+CASADI_SYMBOL_EXPORT casadi_int snakecg_na2_constrained_dynamics_n_out(void) { return 13;}
+
+CASADI_SYMBOL_EXPORT casadi_real snakecg_na2_constrained_dynamics_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* snakecg_na2_constrained_dynamics_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "q";
+    case 1: return "v";
+    case 2: return "tau";
+    case 3: return "q_obj";
+    case 4: return "v_obj";
+    case 5: return "f_obj";
+    case 6: return "K";
+    case 7: return "contact_link";
+    case 8: return "side";
+    case 9: return "object_mass";
+    case 10: return "object_inertia";
+    case 11: return "rho";
+    case 12: return "wheel_offset";
+    case 13: return "free";
+    case 14: return "lam_fixed";
+    case 15: return "regularization";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* snakecg_na2_constrained_dynamics_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "qdd";
+    case 1: return "a_obj";
+    case 2: return "lam";
+    case 3: return "w";
+    case 4: return "gap";
+    case 5: return "s";
+    case 6: return "norm_lambda";
+    case 7: return "norm_a_obj";
+    case 8: return "norm_qdd";
+    case 9: return "sr";
+    case 10: return "pivot_ratio";
+    case 11: return "delassus";
+    case 12: return "b";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* snakecg_na2_constrained_dynamics_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s0;
+    case 2: return casadi_s1;
+    case 3: return casadi_s2;
+    case 4: return casadi_s2;
+    case 5: return casadi_s2;
+    case 6: return casadi_s3;
+    case 7: return casadi_s2;
+    case 8: return casadi_s4;
+    case 9: return casadi_s4;
+    case 10: return casadi_s4;
+    case 11: return casadi_s1;
+    case 12: return casadi_s2;
+    case 13: return casadi_s5;
+    case 14: return casadi_s5;
+    case 15: return casadi_s4;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* snakecg_na2_constrained_dynamics_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s2;
+    case 2: return casadi_s5;
+    case 3: return casadi_s5;
+    case 4: return casadi_s4;
+    case 5: return casadi_s4;
+    case 6: return casadi_s4;
+    case 7: return casadi_s4;
+    case 8: return casadi_s4;
+    case 9: return casadi_s4;
+    case 10: return casadi_s4;
+    case 11: return casadi_s6;
+    case 12: return casadi_s5;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int snakecg_na2_constrained_dynamics_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 16;
+  if (sz_res) *sz_res = 13;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int snakecg_na2_constrained_dynamics_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 16*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 13*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+
+
+/* ------------------------------------------------------------------------------------------
+ * GENERATED FILE - DO NOT EDIT. Batched drivers rendered from derive/templates/batch.c.j2.
+ * snakecg's counterpart of CasADi's Function.map(n, "serial"): one loop in C over n samples,
+ * reading inputs in place (input k of sample i at arg[k] + i * stride[k]; stride 0 broadcasts)
+ * and writing dense column-major outputs contiguously (output k of sample i at
+ * res[k] + i * nnz_out(k)). Returns 0 on success, the failing sample + 1 otherwise, -1 when out of memory.
+ * ---------------------------------------------------------------------------------------- */
+#include <stdlib.h>
+
+CASADI_SYMBOL_EXPORT int snakecg_na2_batch_constrained_dynamics(casadi_int n, const casadi_real** arg,
+    const casadi_int* stride, casadi_real** res) {
+  const casadi_real* a[16];
+  casadi_real* r[13];
+  casadi_int* iw = (casadi_int*) malloc(sizeof(casadi_int) * 1);
+  casadi_real* w = (casadi_real*) malloc(sizeof(casadi_real) * 117);
+  casadi_int i, k;
+  int status = 0;
+  if (!iw || !w) { free(iw); free(w); return -1; }
+  for (k = 0; k < 16; ++k) a[k] = 0;
+  for (k = 0; k < 13; ++k) r[k] = 0;
+  for (i = 0; i < n; ++i) {
+    a[0] = arg[0] + i * stride[0];
+    a[1] = arg[1] + i * stride[1];
+    a[2] = arg[2] + i * stride[2];
+    a[3] = arg[3] + i * stride[3];
+    a[4] = arg[4] + i * stride[4];
+    a[5] = arg[5] + i * stride[5];
+    a[6] = arg[6] + i * stride[6];
+    a[7] = arg[7] + i * stride[7];
+    a[8] = arg[8] + i * stride[8];
+    a[9] = arg[9] + i * stride[9];
+    a[10] = arg[10] + i * stride[10];
+    a[11] = arg[11] + i * stride[11];
+    a[12] = arg[12] + i * stride[12];
+    a[13] = arg[13] + i * stride[13];
+    a[14] = arg[14] + i * stride[14];
+    a[15] = arg[15] + i * stride[15];
+    r[0] = res[0] + i * 5;
+    r[1] = res[1] + i * 3;
+    r[2] = res[2] + i * 4;
+    r[3] = res[3] + i * 4;
+    r[4] = res[4] + i * 1;
+    r[5] = res[5] + i * 1;
+    r[6] = res[6] + i * 1;
+    r[7] = res[7] + i * 1;
+    r[8] = res[8] + i * 1;
+    r[9] = res[9] + i * 1;
+    r[10] = res[10] + i * 1;
+    r[11] = res[11] + i * 16;
+    r[12] = res[12] + i * 4;
+    if (snakecg_na2_constrained_dynamics(a, r, iw, w, 0)) { status = (int) (i + 1); break; }
+  }
+  free(iw);
+  free(w);
+  return status;
+}

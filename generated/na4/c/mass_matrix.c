@@ -1,0 +1,361 @@
+/* GENERATED FILE - DO NOT EDIT. C code emitted by CasADi for mass_matrix() of
+ * generated/na4/model.py, plus its batched driver.
+ * Regenerate with: snakecg generate --joints 4
+ * spec sha256: 6d3cf60c2e6a2bf3e65c7081e859d5528051df9e704c67e6cb3fdb0b6abc56ce
+ * tools: sympy 1.14.0, casadi 3.8.2, jinja2 3.1.6
+ */
+/* How to prefix internal symbols */
+#ifdef CASADI_CODEGEN_PREFIX
+  #define CASADI_NAMESPACE_CONCAT(NS, ID) _CASADI_NAMESPACE_CONCAT(NS, ID)
+  #define _CASADI_NAMESPACE_CONCAT(NS, ID) NS ## ID
+  #define CASADI_PREFIX(ID) CASADI_NAMESPACE_CONCAT(CODEGEN_PREFIX, ID)
+#else
+  #define CASADI_PREFIX(ID) snakecg_na4_mass_matrix_ ## ID
+#endif
+
+#include <math.h>
+
+#ifndef casadi_real
+#define casadi_real double
+#endif
+
+#ifndef casadi_int
+#define casadi_int long long int
+#endif
+
+/* Add prefix to internal symbols */
+#define casadi_f0 CASADI_PREFIX(f0)
+#define casadi_s0 CASADI_PREFIX(s0)
+#define casadi_s1 CASADI_PREFIX(s1)
+#define casadi_s2 CASADI_PREFIX(s2)
+
+/* Symbol visibility in DLLs */
+#ifndef CASADI_SYMBOL_EXPORT
+  #if defined(_WIN32) || defined(__WIN32__) || defined(__CYGWIN__)
+    #if defined(STATIC_LINKED)
+      #define CASADI_SYMBOL_EXPORT
+    #else
+      #define CASADI_SYMBOL_EXPORT __declspec(dllexport)
+    #endif
+  #elif defined(__GNUC__) && defined(GCC_HASCLASSVISIBILITY)
+    #define CASADI_SYMBOL_EXPORT __attribute__ ((visibility ("default")))
+  #else
+    #define CASADI_SYMBOL_EXPORT
+  #endif
+#endif
+
+/* Configuration this file was compiled with */
+CASADI_SYMBOL_EXPORT void snakecg_na4_mass_matrix_casadi_version(int* major, int* minor, int* patch) {
+  *major = 3;
+  *minor = 8;
+  *patch = 2;
+}
+CASADI_SYMBOL_EXPORT int snakecg_na4_mass_matrix_casadi_int_size(void) { return (int) sizeof(casadi_int); }
+CASADI_SYMBOL_EXPORT int snakecg_na4_mass_matrix_casadi_real_size(void) { return (int) sizeof(casadi_real); }
+
+static const casadi_int casadi_s0[3] = {7, 1, 1};
+static const casadi_int casadi_s1[3] = {46, 1, 1};
+static const casadi_int casadi_s2[3] = {7, 7, 1};
+
+/* snakecg_na4_mass_matrix:(q[7],K[46])->(M[7x7]) */
+static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28, a29, a30;
+  a00=arg[1]? arg[1][20] : 0;
+  if (res[0]!=0) res[0][0]=a00;
+  a01=0.;
+  if (res[0]!=0) res[0][1]=a01;
+  a02=arg[1]? arg[1][25] : 0;
+  a03=arg[0]? arg[0][3] : 0;
+  a04=arg[0]? arg[0][2] : 0;
+  a03=(a03+a04);
+  a05=arg[0]? arg[0][4] : 0;
+  a05=(a03+a05);
+  a06=arg[0]? arg[0][5] : 0;
+  a06=(a05+a06);
+  a07=arg[0]? arg[0][6] : 0;
+  a07=(a06+a07);
+  a08=sin(a07);
+  a09=(a02*a08);
+  a10=arg[1]? arg[1][24] : 0;
+  a11=sin(a06);
+  a12=(a10*a11);
+  a12=(a09+a12);
+  a13=arg[1]? arg[1][23] : 0;
+  a14=sin(a05);
+  a15=(a13*a14);
+  a15=(a12+a15);
+  a16=arg[1]? arg[1][22] : 0;
+  a17=sin(a03);
+  a18=(a16*a17);
+  a18=(a15+a18);
+  a19=arg[1]? arg[1][21] : 0;
+  a20=sin(a04);
+  a21=(a19*a20);
+  a21=(a18+a21);
+  a21=(-a21);
+  if (res[0]!=0) res[0][2]=a21;
+  a18=(-a18);
+  if (res[0]!=0) res[0][3]=a18;
+  a15=(-a15);
+  if (res[0]!=0) res[0][4]=a15;
+  a12=(-a12);
+  if (res[0]!=0) res[0][5]=a12;
+  a09=(-a09);
+  if (res[0]!=0) res[0][6]=a09;
+  if (res[0]!=0) res[0][7]=a01;
+  if (res[0]!=0) res[0][8]=a00;
+  a07=cos(a07);
+  a02=(a02*a07);
+  a06=cos(a06);
+  a10=(a10*a06);
+  a10=(a02+a10);
+  a05=cos(a05);
+  a13=(a13*a05);
+  a13=(a10+a13);
+  a03=cos(a03);
+  a16=(a16*a03);
+  a16=(a13+a16);
+  a04=cos(a04);
+  a19=(a19*a04);
+  a19=(a16+a19);
+  if (res[0]!=0) res[0][9]=a19;
+  if (res[0]!=0) res[0][10]=a16;
+  if (res[0]!=0) res[0][11]=a13;
+  if (res[0]!=0) res[0][12]=a10;
+  if (res[0]!=0) res[0][13]=a02;
+  if (res[0]!=0) res[0][14]=a21;
+  if (res[0]!=0) res[0][15]=a19;
+  a19=(a04*a06);
+  a21=(a20*a11);
+  a19=(a19+a21);
+  a21=arg[1]? arg[1][29] : 0;
+  a19=(a19*a21);
+  a21=(a03*a06);
+  a00=(a17*a11);
+  a21=(a21+a00);
+  a00=arg[1]? arg[1][33] : 0;
+  a21=(a21*a00);
+  a00=(a05*a06);
+  a01=(a14*a11);
+  a00=(a00+a01);
+  a01=arg[1]? arg[1][36] : 0;
+  a00=(a00*a01);
+  a01=arg[1]? arg[1][44] : 0;
+  a06=(a06*a07);
+  a11=(a11*a08);
+  a06=(a06+a11);
+  a11=arg[1]? arg[1][39] : 0;
+  a06=(a06*a11);
+  a01=(a01+a06);
+  a11=(a00+a01);
+  a22=(a21+a11);
+  a23=(a19+a22);
+  a24=(a04*a07);
+  a25=(a20*a08);
+  a24=(a24+a25);
+  a25=arg[1]? arg[1][30] : 0;
+  a24=(a24*a25);
+  a25=(a03*a07);
+  a26=(a17*a08);
+  a25=(a25+a26);
+  a26=arg[1]? arg[1][34] : 0;
+  a25=(a25*a26);
+  a07=(a05*a07);
+  a08=(a14*a08);
+  a07=(a07+a08);
+  a08=arg[1]? arg[1][37] : 0;
+  a07=(a07*a08);
+  a08=arg[1]? arg[1][45] : 0;
+  a06=(a08+a06);
+  a26=(a07+a06);
+  a27=(a25+a26);
+  a28=(a24+a27);
+  a23=(a23+a28);
+  a29=(a04*a05);
+  a30=(a20*a14);
+  a29=(a29+a30);
+  a30=arg[1]? arg[1][28] : 0;
+  a29=(a29*a30);
+  a05=(a03*a05);
+  a14=(a17*a14);
+  a05=(a05+a14);
+  a14=arg[1]? arg[1][32] : 0;
+  a05=(a05*a14);
+  a14=arg[1]? arg[1][43] : 0;
+  a00=(a00+a07);
+  a14=(a14+a00);
+  a07=(a05+a14);
+  a30=(a29+a07);
+  a23=(a23+a30);
+  a04=(a04*a03);
+  a20=(a20*a17);
+  a04=(a04+a20);
+  a20=arg[1]? arg[1][27] : 0;
+  a04=(a04*a20);
+  a20=arg[1]? arg[1][42] : 0;
+  a21=(a21+a25);
+  a05=(a05+a21);
+  a20=(a20+a05);
+  a25=(a04+a20);
+  a23=(a23+a25);
+  a25=arg[1]? arg[1][41] : 0;
+  a19=(a19+a24);
+  a29=(a29+a19);
+  a04=(a04+a29);
+  a25=(a25+a04);
+  a23=(a23+a25);
+  if (res[0]!=0) res[0][16]=a23;
+  a22=(a22+a27);
+  a22=(a22+a07);
+  a22=(a22+a20);
+  a04=(a22+a04);
+  if (res[0]!=0) res[0][17]=a04;
+  a11=(a11+a26);
+  a11=(a11+a14);
+  a05=(a11+a05);
+  a29=(a05+a29);
+  if (res[0]!=0) res[0][18]=a29;
+  a01=(a01+a06);
+  a00=(a01+a00);
+  a21=(a00+a21);
+  a19=(a21+a19);
+  if (res[0]!=0) res[0][19]=a19;
+  if (res[0]!=0) res[0][20]=a28;
+  if (res[0]!=0) res[0][21]=a18;
+  if (res[0]!=0) res[0][22]=a16;
+  if (res[0]!=0) res[0][23]=a04;
+  if (res[0]!=0) res[0][24]=a22;
+  if (res[0]!=0) res[0][25]=a05;
+  if (res[0]!=0) res[0][26]=a21;
+  if (res[0]!=0) res[0][27]=a27;
+  if (res[0]!=0) res[0][28]=a15;
+  if (res[0]!=0) res[0][29]=a13;
+  if (res[0]!=0) res[0][30]=a29;
+  if (res[0]!=0) res[0][31]=a05;
+  if (res[0]!=0) res[0][32]=a11;
+  if (res[0]!=0) res[0][33]=a00;
+  if (res[0]!=0) res[0][34]=a26;
+  if (res[0]!=0) res[0][35]=a12;
+  if (res[0]!=0) res[0][36]=a10;
+  if (res[0]!=0) res[0][37]=a19;
+  if (res[0]!=0) res[0][38]=a21;
+  if (res[0]!=0) res[0][39]=a00;
+  if (res[0]!=0) res[0][40]=a01;
+  if (res[0]!=0) res[0][41]=a06;
+  if (res[0]!=0) res[0][42]=a09;
+  if (res[0]!=0) res[0][43]=a02;
+  if (res[0]!=0) res[0][44]=a28;
+  if (res[0]!=0) res[0][45]=a27;
+  if (res[0]!=0) res[0][46]=a26;
+  if (res[0]!=0) res[0][47]=a06;
+  if (res[0]!=0) res[0][48]=a08;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int snakecg_na4_mass_matrix(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f0(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int snakecg_na4_mass_matrix_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void snakecg_na4_mass_matrix_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void snakecg_na4_mass_matrix_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void snakecg_na4_mass_matrix_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int snakecg_na4_mass_matrix_n_in(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_int snakecg_na4_mass_matrix_n_out(void) { return 1;}
+
+CASADI_SYMBOL_EXPORT casadi_real snakecg_na4_mass_matrix_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* snakecg_na4_mass_matrix_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "q";
+    case 1: return "K";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* snakecg_na4_mass_matrix_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "M";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* snakecg_na4_mass_matrix_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s1;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* snakecg_na4_mass_matrix_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s2;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int snakecg_na4_mass_matrix_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 2;
+  if (sz_res) *sz_res = 1;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int snakecg_na4_mass_matrix_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 2*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 1*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+
+
+/* ------------------------------------------------------------------------------------------
+ * GENERATED FILE - DO NOT EDIT. Batched drivers rendered from derive/templates/batch.c.j2.
+ * snakecg's counterpart of CasADi's Function.map(n, "serial"): one loop in C over n samples,
+ * reading inputs in place (input k of sample i at arg[k] + i * stride[k]; stride 0 broadcasts)
+ * and writing dense column-major outputs contiguously (output k of sample i at
+ * res[k] + i * nnz_out(k)). Returns 0 on success, the failing sample + 1 otherwise, -1 when out of memory.
+ * ---------------------------------------------------------------------------------------- */
+#include <stdlib.h>
+
+CASADI_SYMBOL_EXPORT int snakecg_na4_batch_mass_matrix(casadi_int n, const casadi_real** arg,
+    const casadi_int* stride, casadi_real** res) {
+  const casadi_real* a[2];
+  casadi_real* r[1];
+  casadi_int* iw = (casadi_int*) malloc(sizeof(casadi_int) * 1);
+  casadi_real* w = (casadi_real*) malloc(sizeof(casadi_real) * 32);
+  casadi_int i, k;
+  int status = 0;
+  if (!iw || !w) { free(iw); free(w); return -1; }
+  for (k = 0; k < 2; ++k) a[k] = 0;
+  for (k = 0; k < 1; ++k) r[k] = 0;
+  for (i = 0; i < n; ++i) {
+    a[0] = arg[0] + i * stride[0];
+    a[1] = arg[1] + i * stride[1];
+    r[0] = res[0] + i * 49;
+    if (snakecg_na4_mass_matrix(a, r, iw, w, 0)) { status = (int) (i + 1); break; }
+  }
+  free(iw);
+  free(w);
+  return status;
+}

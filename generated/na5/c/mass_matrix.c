@@ -1,0 +1,432 @@
+/* GENERATED FILE - DO NOT EDIT. C code emitted by CasADi for mass_matrix() of
+ * generated/na5/model.py, plus its batched driver.
+ * Regenerate with: snakecg generate --joints 5
+ * spec sha256: 1460327b5bcebd354746349675e3369d37c437b9be0451e2a5175b43e20c9c22
+ * tools: sympy 1.14.0, casadi 3.8.2, jinja2 3.1.6
+ */
+/* How to prefix internal symbols */
+#ifdef CASADI_CODEGEN_PREFIX
+  #define CASADI_NAMESPACE_CONCAT(NS, ID) _CASADI_NAMESPACE_CONCAT(NS, ID)
+  #define _CASADI_NAMESPACE_CONCAT(NS, ID) NS ## ID
+  #define CASADI_PREFIX(ID) CASADI_NAMESPACE_CONCAT(CODEGEN_PREFIX, ID)
+#else
+  #define CASADI_PREFIX(ID) snakecg_na5_mass_matrix_ ## ID
+#endif
+
+#include <math.h>
+
+#ifndef casadi_real
+#define casadi_real double
+#endif
+
+#ifndef casadi_int
+#define casadi_int long long int
+#endif
+
+/* Add prefix to internal symbols */
+#define casadi_f0 CASADI_PREFIX(f0)
+#define casadi_s0 CASADI_PREFIX(s0)
+#define casadi_s1 CASADI_PREFIX(s1)
+#define casadi_s2 CASADI_PREFIX(s2)
+
+/* Symbol visibility in DLLs */
+#ifndef CASADI_SYMBOL_EXPORT
+  #if defined(_WIN32) || defined(__WIN32__) || defined(__CYGWIN__)
+    #if defined(STATIC_LINKED)
+      #define CASADI_SYMBOL_EXPORT
+    #else
+      #define CASADI_SYMBOL_EXPORT __declspec(dllexport)
+    #endif
+  #elif defined(__GNUC__) && defined(GCC_HASCLASSVISIBILITY)
+    #define CASADI_SYMBOL_EXPORT __attribute__ ((visibility ("default")))
+  #else
+    #define CASADI_SYMBOL_EXPORT
+  #endif
+#endif
+
+/* Configuration this file was compiled with */
+CASADI_SYMBOL_EXPORT void snakecg_na5_mass_matrix_casadi_version(int* major, int* minor, int* patch) {
+  *major = 3;
+  *minor = 8;
+  *patch = 2;
+}
+CASADI_SYMBOL_EXPORT int snakecg_na5_mass_matrix_casadi_int_size(void) { return (int) sizeof(casadi_int); }
+CASADI_SYMBOL_EXPORT int snakecg_na5_mass_matrix_casadi_real_size(void) { return (int) sizeof(casadi_real); }
+
+static const casadi_int casadi_s0[3] = {8, 1, 1};
+static const casadi_int casadi_s1[3] = {58, 1, 1};
+static const casadi_int casadi_s2[3] = {8, 8, 1};
+
+/* snakecg_na5_mass_matrix:(q[8],K[58])->(M[8x8]) */
+static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
+  casadi_real a36, a37, a38, a39, a40, a41;
+  a00=arg[1]? arg[1][24] : 0;
+  if (res[0]!=0) res[0][0]=a00;
+  a01=0.;
+  if (res[0]!=0) res[0][1]=a01;
+  a02=arg[1]? arg[1][30] : 0;
+  a03=arg[0]? arg[0][3] : 0;
+  a04=arg[0]? arg[0][2] : 0;
+  a03=(a03+a04);
+  a05=arg[0]? arg[0][4] : 0;
+  a05=(a03+a05);
+  a06=arg[0]? arg[0][5] : 0;
+  a06=(a05+a06);
+  a07=arg[0]? arg[0][6] : 0;
+  a07=(a06+a07);
+  a08=arg[0]? arg[0][7] : 0;
+  a08=(a07+a08);
+  a09=sin(a08);
+  a10=(a02*a09);
+  a11=arg[1]? arg[1][29] : 0;
+  a12=sin(a07);
+  a13=(a11*a12);
+  a13=(a10+a13);
+  a14=arg[1]? arg[1][28] : 0;
+  a15=sin(a06);
+  a16=(a14*a15);
+  a16=(a13+a16);
+  a17=arg[1]? arg[1][27] : 0;
+  a18=sin(a05);
+  a19=(a17*a18);
+  a19=(a16+a19);
+  a20=arg[1]? arg[1][26] : 0;
+  a21=sin(a03);
+  a22=(a20*a21);
+  a22=(a19+a22);
+  a23=arg[1]? arg[1][25] : 0;
+  a24=sin(a04);
+  a25=(a23*a24);
+  a25=(a22+a25);
+  a25=(-a25);
+  if (res[0]!=0) res[0][2]=a25;
+  a22=(-a22);
+  if (res[0]!=0) res[0][3]=a22;
+  a19=(-a19);
+  if (res[0]!=0) res[0][4]=a19;
+  a16=(-a16);
+  if (res[0]!=0) res[0][5]=a16;
+  a13=(-a13);
+  if (res[0]!=0) res[0][6]=a13;
+  a10=(-a10);
+  if (res[0]!=0) res[0][7]=a10;
+  if (res[0]!=0) res[0][8]=a01;
+  if (res[0]!=0) res[0][9]=a00;
+  a08=cos(a08);
+  a02=(a02*a08);
+  a07=cos(a07);
+  a11=(a11*a07);
+  a11=(a02+a11);
+  a06=cos(a06);
+  a14=(a14*a06);
+  a14=(a11+a14);
+  a05=cos(a05);
+  a17=(a17*a05);
+  a17=(a14+a17);
+  a03=cos(a03);
+  a20=(a20*a03);
+  a20=(a17+a20);
+  a04=cos(a04);
+  a23=(a23*a04);
+  a23=(a20+a23);
+  if (res[0]!=0) res[0][10]=a23;
+  if (res[0]!=0) res[0][11]=a20;
+  if (res[0]!=0) res[0][12]=a17;
+  if (res[0]!=0) res[0][13]=a14;
+  if (res[0]!=0) res[0][14]=a11;
+  if (res[0]!=0) res[0][15]=a02;
+  if (res[0]!=0) res[0][16]=a25;
+  if (res[0]!=0) res[0][17]=a23;
+  a23=(a04*a07);
+  a25=(a24*a12);
+  a23=(a23+a25);
+  a25=arg[1]? arg[1][35] : 0;
+  a23=(a23*a25);
+  a25=(a03*a07);
+  a00=(a21*a12);
+  a25=(a25+a00);
+  a00=arg[1]? arg[1][40] : 0;
+  a25=(a25*a00);
+  a00=(a05*a07);
+  a01=(a18*a12);
+  a00=(a00+a01);
+  a01=arg[1]? arg[1][44] : 0;
+  a00=(a00*a01);
+  a01=(a06*a07);
+  a26=(a15*a12);
+  a01=(a01+a26);
+  a26=arg[1]? arg[1][47] : 0;
+  a01=(a01*a26);
+  a26=arg[1]? arg[1][56] : 0;
+  a07=(a07*a08);
+  a12=(a12*a09);
+  a07=(a07+a12);
+  a12=arg[1]? arg[1][50] : 0;
+  a07=(a07*a12);
+  a26=(a26+a07);
+  a12=(a01+a26);
+  a27=(a00+a12);
+  a28=(a25+a27);
+  a29=(a23+a28);
+  a30=(a04*a08);
+  a31=(a24*a09);
+  a30=(a30+a31);
+  a31=arg[1]? arg[1][36] : 0;
+  a30=(a30*a31);
+  a31=(a03*a08);
+  a32=(a21*a09);
+  a31=(a31+a32);
+  a32=arg[1]? arg[1][41] : 0;
+  a31=(a31*a32);
+  a32=(a05*a08);
+  a33=(a18*a09);
+  a32=(a32+a33);
+  a33=arg[1]? arg[1][45] : 0;
+  a32=(a32*a33);
+  a08=(a06*a08);
+  a09=(a15*a09);
+  a08=(a08+a09);
+  a09=arg[1]? arg[1][48] : 0;
+  a08=(a08*a09);
+  a09=arg[1]? arg[1][57] : 0;
+  a07=(a09+a07);
+  a33=(a08+a07);
+  a34=(a32+a33);
+  a35=(a31+a34);
+  a36=(a30+a35);
+  a29=(a29+a36);
+  a37=(a04*a06);
+  a38=(a24*a15);
+  a37=(a37+a38);
+  a38=arg[1]? arg[1][34] : 0;
+  a37=(a37*a38);
+  a38=(a03*a06);
+  a39=(a21*a15);
+  a38=(a38+a39);
+  a39=arg[1]? arg[1][39] : 0;
+  a38=(a38*a39);
+  a06=(a05*a06);
+  a15=(a18*a15);
+  a06=(a06+a15);
+  a15=arg[1]? arg[1][43] : 0;
+  a06=(a06*a15);
+  a15=arg[1]? arg[1][55] : 0;
+  a01=(a01+a08);
+  a15=(a15+a01);
+  a08=(a06+a15);
+  a39=(a38+a08);
+  a40=(a37+a39);
+  a29=(a29+a40);
+  a40=(a04*a05);
+  a41=(a24*a18);
+  a40=(a40+a41);
+  a41=arg[1]? arg[1][33] : 0;
+  a40=(a40*a41);
+  a05=(a03*a05);
+  a18=(a21*a18);
+  a05=(a05+a18);
+  a18=arg[1]? arg[1][38] : 0;
+  a05=(a05*a18);
+  a18=arg[1]? arg[1][54] : 0;
+  a00=(a00+a32);
+  a06=(a06+a00);
+  a18=(a18+a06);
+  a32=(a05+a18);
+  a41=(a40+a32);
+  a29=(a29+a41);
+  a04=(a04*a03);
+  a24=(a24*a21);
+  a04=(a04+a24);
+  a24=arg[1]? arg[1][32] : 0;
+  a04=(a04*a24);
+  a24=arg[1]? arg[1][53] : 0;
+  a25=(a25+a31);
+  a38=(a38+a25);
+  a05=(a05+a38);
+  a24=(a24+a05);
+  a31=(a04+a24);
+  a29=(a29+a31);
+  a31=arg[1]? arg[1][52] : 0;
+  a23=(a23+a30);
+  a37=(a37+a23);
+  a40=(a40+a37);
+  a04=(a04+a40);
+  a31=(a31+a04);
+  a29=(a29+a31);
+  if (res[0]!=0) res[0][18]=a29;
+  a28=(a28+a35);
+  a28=(a28+a39);
+  a28=(a28+a32);
+  a28=(a28+a24);
+  a04=(a28+a04);
+  if (res[0]!=0) res[0][19]=a04;
+  a27=(a27+a34);
+  a27=(a27+a08);
+  a27=(a27+a18);
+  a05=(a27+a05);
+  a40=(a05+a40);
+  if (res[0]!=0) res[0][20]=a40;
+  a12=(a12+a33);
+  a12=(a12+a15);
+  a06=(a12+a06);
+  a38=(a06+a38);
+  a37=(a38+a37);
+  if (res[0]!=0) res[0][21]=a37;
+  a26=(a26+a07);
+  a01=(a26+a01);
+  a00=(a01+a00);
+  a25=(a00+a25);
+  a23=(a25+a23);
+  if (res[0]!=0) res[0][22]=a23;
+  if (res[0]!=0) res[0][23]=a36;
+  if (res[0]!=0) res[0][24]=a22;
+  if (res[0]!=0) res[0][25]=a20;
+  if (res[0]!=0) res[0][26]=a04;
+  if (res[0]!=0) res[0][27]=a28;
+  if (res[0]!=0) res[0][28]=a05;
+  if (res[0]!=0) res[0][29]=a38;
+  if (res[0]!=0) res[0][30]=a25;
+  if (res[0]!=0) res[0][31]=a35;
+  if (res[0]!=0) res[0][32]=a19;
+  if (res[0]!=0) res[0][33]=a17;
+  if (res[0]!=0) res[0][34]=a40;
+  if (res[0]!=0) res[0][35]=a05;
+  if (res[0]!=0) res[0][36]=a27;
+  if (res[0]!=0) res[0][37]=a06;
+  if (res[0]!=0) res[0][38]=a00;
+  if (res[0]!=0) res[0][39]=a34;
+  if (res[0]!=0) res[0][40]=a16;
+  if (res[0]!=0) res[0][41]=a14;
+  if (res[0]!=0) res[0][42]=a37;
+  if (res[0]!=0) res[0][43]=a38;
+  if (res[0]!=0) res[0][44]=a06;
+  if (res[0]!=0) res[0][45]=a12;
+  if (res[0]!=0) res[0][46]=a01;
+  if (res[0]!=0) res[0][47]=a33;
+  if (res[0]!=0) res[0][48]=a13;
+  if (res[0]!=0) res[0][49]=a11;
+  if (res[0]!=0) res[0][50]=a23;
+  if (res[0]!=0) res[0][51]=a25;
+  if (res[0]!=0) res[0][52]=a00;
+  if (res[0]!=0) res[0][53]=a01;
+  if (res[0]!=0) res[0][54]=a26;
+  if (res[0]!=0) res[0][55]=a07;
+  if (res[0]!=0) res[0][56]=a10;
+  if (res[0]!=0) res[0][57]=a02;
+  if (res[0]!=0) res[0][58]=a36;
+  if (res[0]!=0) res[0][59]=a35;
+  if (res[0]!=0) res[0][60]=a34;
+  if (res[0]!=0) res[0][61]=a33;
+  if (res[0]!=0) res[0][62]=a07;
+  if (res[0]!=0) res[0][63]=a09;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int snakecg_na5_mass_matrix(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f0(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int snakecg_na5_mass_matrix_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void snakecg_na5_mass_matrix_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void snakecg_na5_mass_matrix_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void snakecg_na5_mass_matrix_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int snakecg_na5_mass_matrix_n_in(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_int snakecg_na5_mass_matrix_n_out(void) { return 1;}
+
+CASADI_SYMBOL_EXPORT casadi_real snakecg_na5_mass_matrix_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* snakecg_na5_mass_matrix_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "q";
+    case 1: return "K";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* snakecg_na5_mass_matrix_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "M";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* snakecg_na5_mass_matrix_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s1;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* snakecg_na5_mass_matrix_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s2;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int snakecg_na5_mass_matrix_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 2;
+  if (sz_res) *sz_res = 1;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int snakecg_na5_mass_matrix_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 2*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 1*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+
+
+/* ------------------------------------------------------------------------------------------
+ * GENERATED FILE - DO NOT EDIT. Batched drivers rendered from derive/templates/batch.c.j2.
+ * snakecg's counterpart of CasADi's Function.map(n, "serial"): one loop in C over n samples,
+ * reading inputs in place (input k of sample i at arg[k] + i * stride[k]; stride 0 broadcasts)
+ * and writing dense column-major outputs contiguously (output k of sample i at
+ * res[k] + i * nnz_out(k)). Returns 0 on success, the failing sample + 1 otherwise, -1 when out of memory.
+ * ---------------------------------------------------------------------------------------- */
+#include <stdlib.h>
+
+CASADI_SYMBOL_EXPORT int snakecg_na5_batch_mass_matrix(casadi_int n, const casadi_real** arg,
+    const casadi_int* stride, casadi_real** res) {
+  const casadi_real* a[2];
+  casadi_real* r[1];
+  casadi_int* iw = (casadi_int*) malloc(sizeof(casadi_int) * 1);
+  casadi_real* w = (casadi_real*) malloc(sizeof(casadi_real) * 43);
+  casadi_int i, k;
+  int status = 0;
+  if (!iw || !w) { free(iw); free(w); return -1; }
+  for (k = 0; k < 2; ++k) a[k] = 0;
+  for (k = 0; k < 1; ++k) r[k] = 0;
+  for (i = 0; i < n; ++i) {
+    a[0] = arg[0] + i * stride[0];
+    a[1] = arg[1] + i * stride[1];
+    r[0] = res[0] + i * 64;
+    if (snakecg_na5_mass_matrix(a, r, iw, w, 0)) { status = (int) (i + 1); break; }
+  }
+  free(iw);
+  free(w);
+  return status;
+}

@@ -1,0 +1,430 @@
+/* GENERATED FILE - DO NOT EDIT. C code emitted by CasADi for bias_forces() of
+ * generated/na6/model.py, plus its batched driver.
+ * Regenerate with: snakecg generate --joints 6
+ * spec sha256: e232b212df24684700216b0534f9f644d3ad97ef2a2b5061af17e689371e995b
+ * tools: sympy 1.14.0, casadi 3.8.2, jinja2 3.1.6
+ */
+/* How to prefix internal symbols */
+#ifdef CASADI_CODEGEN_PREFIX
+  #define CASADI_NAMESPACE_CONCAT(NS, ID) _CASADI_NAMESPACE_CONCAT(NS, ID)
+  #define _CASADI_NAMESPACE_CONCAT(NS, ID) NS ## ID
+  #define CASADI_PREFIX(ID) CASADI_NAMESPACE_CONCAT(CODEGEN_PREFIX, ID)
+#else
+  #define CASADI_PREFIX(ID) snakecg_na6_bias_forces_ ## ID
+#endif
+
+#include <math.h>
+
+#ifndef casadi_real
+#define casadi_real double
+#endif
+
+#ifndef casadi_int
+#define casadi_int long long int
+#endif
+
+/* Add prefix to internal symbols */
+#define casadi_f0 CASADI_PREFIX(f0)
+#define casadi_s0 CASADI_PREFIX(s0)
+#define casadi_s1 CASADI_PREFIX(s1)
+#define casadi_sq CASADI_PREFIX(sq)
+
+/* Symbol visibility in DLLs */
+#ifndef CASADI_SYMBOL_EXPORT
+  #if defined(_WIN32) || defined(__WIN32__) || defined(__CYGWIN__)
+    #if defined(STATIC_LINKED)
+      #define CASADI_SYMBOL_EXPORT
+    #else
+      #define CASADI_SYMBOL_EXPORT __declspec(dllexport)
+    #endif
+  #elif defined(__GNUC__) && defined(GCC_HASCLASSVISIBILITY)
+    #define CASADI_SYMBOL_EXPORT __attribute__ ((visibility ("default")))
+  #else
+    #define CASADI_SYMBOL_EXPORT
+  #endif
+#endif
+
+casadi_real casadi_sq(casadi_real x) { return x*x;}
+
+/* Configuration this file was compiled with */
+CASADI_SYMBOL_EXPORT void snakecg_na6_bias_forces_casadi_version(int* major, int* minor, int* patch) {
+  *major = 3;
+  *minor = 8;
+  *patch = 2;
+}
+CASADI_SYMBOL_EXPORT int snakecg_na6_bias_forces_casadi_int_size(void) { return (int) sizeof(casadi_int); }
+CASADI_SYMBOL_EXPORT int snakecg_na6_bias_forces_casadi_real_size(void) { return (int) sizeof(casadi_real); }
+
+static const casadi_int casadi_s0[3] = {9, 1, 1};
+static const casadi_int casadi_s1[3] = {71, 1, 1};
+
+/* snakecg_na6_bias_forces:(q[9],v[9],K[71])->(h[9]) */
+static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
+  casadi_real a36, a37, a38, a39, a40, a41, a42, a43, a44, a45, a46, a47;
+  casadi_real a48, a49, a50, a51, a52, a53, a54, a55;
+  a00=arg[1]? arg[1][2] : 0;
+  a01=casadi_sq(a00);
+  a02=arg[0]? arg[0][2] : 0;
+  a03=cos(a02);
+  a04=arg[2]? arg[2][7] : 0;
+  a05=arg[2]? arg[2][21] : 0;
+  a04=(a04-a05);
+  a03=(a03*a04);
+  a05=(a01*a03);
+  a06=arg[1]? arg[1][3] : 0;
+  a06=(a06+a00);
+  a00=casadi_sq(a06);
+  a07=arg[2]? arg[2][22] : 0;
+  a08=arg[0]? arg[0][3] : 0;
+  a08=(a08+a02);
+  a09=cos(a08);
+  a10=(a07*a09);
+  a11=(a00*a10);
+  a05=(a05+a11);
+  a11=arg[2]? arg[2][1] : 0;
+  a12=(a05*a11);
+  a13=arg[2]? arg[2][23] : 0;
+  a14=arg[0]? arg[0][4] : 0;
+  a14=(a08+a14);
+  a15=cos(a14);
+  a16=(a13*a15);
+  a17=arg[1]? arg[1][4] : 0;
+  a06=(a06+a17);
+  a17=casadi_sq(a06);
+  a18=(a16*a17);
+  a05=(a05+a18);
+  a18=arg[2]? arg[2][8] : 0;
+  a18=(a18-a07);
+  a09=(a09*a18);
+  a19=(a00*a09);
+  a05=(a05+a19);
+  a19=arg[2]? arg[2][2] : 0;
+  a20=(a05*a19);
+  a21=arg[2]? arg[2][9] : 0;
+  a21=(a21-a13);
+  a15=(a15*a21);
+  a22=(a15*a17);
+  a05=(a05+a22);
+  a22=arg[1]? arg[1][5] : 0;
+  a06=(a06+a22);
+  a22=casadi_sq(a06);
+  a23=arg[2]? arg[2][24] : 0;
+  a24=arg[0]? arg[0][5] : 0;
+  a24=(a14+a24);
+  a25=cos(a24);
+  a26=(a23*a25);
+  a27=(a22*a26);
+  a05=(a05+a27);
+  a27=arg[2]? arg[2][3] : 0;
+  a28=(a05*a27);
+  a29=arg[2]? arg[2][10] : 0;
+  a29=(a29-a23);
+  a25=(a25*a29);
+  a30=(a22*a25);
+  a05=(a05+a30);
+  a30=arg[1]? arg[1][6] : 0;
+  a06=(a06+a30);
+  a30=casadi_sq(a06);
+  a31=arg[2]? arg[2][25] : 0;
+  a32=arg[0]? arg[0][6] : 0;
+  a32=(a24+a32);
+  a33=cos(a32);
+  a34=(a31*a33);
+  a35=(a30*a34);
+  a05=(a05+a35);
+  a35=arg[2]? arg[2][4] : 0;
+  a36=(a05*a35);
+  a37=arg[2]? arg[2][11] : 0;
+  a37=(a37-a31);
+  a33=(a33*a37);
+  a38=(a30*a33);
+  a05=(a05+a38);
+  a38=arg[1]? arg[1][7] : 0;
+  a06=(a06+a38);
+  a38=casadi_sq(a06);
+  a39=arg[2]? arg[2][26] : 0;
+  a40=arg[0]? arg[0][7] : 0;
+  a40=(a32+a40);
+  a41=cos(a40);
+  a42=(a39*a41);
+  a43=(a38*a42);
+  a05=(a05+a43);
+  a43=arg[2]? arg[2][5] : 0;
+  a44=(a05*a43);
+  a45=arg[2]? arg[2][12] : 0;
+  a45=(a45-a39);
+  a41=(a41*a45);
+  a46=(a38*a41);
+  a05=(a05+a46);
+  a46=arg[1]? arg[1][8] : 0;
+  a06=(a06+a46);
+  a06=casadi_sq(a06);
+  a46=arg[2]? arg[2][27] : 0;
+  a47=arg[0]? arg[0][8] : 0;
+  a47=(a40+a47);
+  a48=cos(a47);
+  a48=(a46*a48);
+  a49=(a06*a48);
+  a05=(a05+a49);
+  a49=arg[2]? arg[2][6] : 0;
+  a05=(a05*a49);
+  a50=(a44+a05);
+  a51=(a36+a50);
+  a52=(a28+a51);
+  a53=(a20+a52);
+  a54=(a12+a53);
+  a55=(-a54);
+  if (res[0]!=0) res[0][0]=a55;
+  a02=sin(a02);
+  a04=(a04*a02);
+  a01=(a01*a04);
+  a08=sin(a08);
+  a07=(a07*a08);
+  a02=(a00*a07);
+  a01=(a01+a02);
+  a11=(a01*a11);
+  a18=(a18*a08);
+  a00=(a18*a00);
+  a01=(a01+a00);
+  a14=sin(a14);
+  a13=(a13*a14);
+  a00=(a13*a17);
+  a01=(a01+a00);
+  a19=(a01*a19);
+  a24=sin(a24);
+  a23=(a23*a24);
+  a00=(a22*a23);
+  a01=(a01+a00);
+  a21=(a21*a14);
+  a17=(a21*a17);
+  a01=(a01+a17);
+  a27=(a01*a27);
+  a29=(a29*a24);
+  a22=(a22*a29);
+  a01=(a01+a22);
+  a32=sin(a32);
+  a31=(a31*a32);
+  a22=(a30*a31);
+  a01=(a01+a22);
+  a35=(a01*a35);
+  a37=(a37*a32);
+  a30=(a30*a37);
+  a01=(a01+a30);
+  a40=sin(a40);
+  a39=(a39*a40);
+  a30=(a38*a39);
+  a01=(a01+a30);
+  a43=(a01*a43);
+  a45=(a45*a40);
+  a38=(a38*a45);
+  a01=(a01+a38);
+  a47=sin(a47);
+  a46=(a46*a47);
+  a06=(a06*a46);
+  a01=(a01+a06);
+  a01=(a01*a49);
+  a49=(a43+a01);
+  a06=(a35+a49);
+  a47=(a27+a06);
+  a38=(a19+a47);
+  a40=(a11+a38);
+  a30=(-a40);
+  if (res[0]!=0) res[0][1]=a30;
+  a30=arg[0]? arg[0][0] : 0;
+  a32=(a40*a30);
+  a22=arg[0]? arg[0][1] : 0;
+  a24=(a54*a22);
+  a32=(a32-a24);
+  a04=(a04+a22);
+  a07=(a07+a04);
+  a12=(a12*a07);
+  a03=(a03+a30);
+  a10=(a10+a03);
+  a11=(a11*a10);
+  a12=(a12-a11);
+  a18=(a18+a07);
+  a13=(a13+a18);
+  a20=(a20*a13);
+  a09=(a09+a10);
+  a16=(a16+a09);
+  a19=(a19*a16);
+  a20=(a20-a19);
+  a21=(a21+a13);
+  a23=(a23+a21);
+  a28=(a28*a23);
+  a15=(a15+a16);
+  a26=(a26+a15);
+  a27=(a27*a26);
+  a28=(a28-a27);
+  a29=(a29+a23);
+  a31=(a31+a29);
+  a36=(a36*a31);
+  a25=(a25+a26);
+  a34=(a34+a25);
+  a35=(a35*a34);
+  a36=(a36-a35);
+  a37=(a37+a31);
+  a39=(a39+a37);
+  a44=(a44*a39);
+  a33=(a33+a34);
+  a42=(a42+a33);
+  a43=(a43*a42);
+  a44=(a44-a43);
+  a45=(a45+a39);
+  a46=(a46+a45);
+  a46=(a05*a46);
+  a41=(a41+a42);
+  a48=(a48+a41);
+  a48=(a01*a48);
+  a46=(a46-a48);
+  a44=(a44+a46);
+  a36=(a36+a44);
+  a28=(a28+a36);
+  a20=(a20+a28);
+  a12=(a12+a20);
+  a32=(a32+a12);
+  if (res[0]!=0) res[0][2]=a32;
+  a40=(a40*a03);
+  a54=(a54*a04);
+  a40=(a40-a54);
+  a40=(a40+a12);
+  if (res[0]!=0) res[0][3]=a40;
+  a38=(a38*a09);
+  a53=(a53*a18);
+  a38=(a38-a53);
+  a38=(a38+a20);
+  if (res[0]!=0) res[0][4]=a38;
+  a47=(a47*a15);
+  a52=(a52*a21);
+  a47=(a47-a52);
+  a47=(a47+a28);
+  if (res[0]!=0) res[0][5]=a47;
+  a06=(a06*a25);
+  a51=(a51*a29);
+  a06=(a06-a51);
+  a06=(a06+a36);
+  if (res[0]!=0) res[0][6]=a06;
+  a49=(a49*a33);
+  a50=(a50*a37);
+  a49=(a49-a50);
+  a49=(a49+a44);
+  if (res[0]!=0) res[0][7]=a49;
+  a01=(a01*a41);
+  a05=(a05*a45);
+  a01=(a01-a05);
+  a01=(a01+a46);
+  if (res[0]!=0) res[0][8]=a01;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int snakecg_na6_bias_forces(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f0(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int snakecg_na6_bias_forces_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void snakecg_na6_bias_forces_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void snakecg_na6_bias_forces_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void snakecg_na6_bias_forces_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int snakecg_na6_bias_forces_n_in(void) { return 3;}
+
+CASADI_SYMBOL_EXPORT casadi_int snakecg_na6_bias_forces_n_out(void) { return 1;}
+
+CASADI_SYMBOL_EXPORT casadi_real snakecg_na6_bias_forces_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* snakecg_na6_bias_forces_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "q";
+    case 1: return "v";
+    case 2: return "K";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* snakecg_na6_bias_forces_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "h";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* snakecg_na6_bias_forces_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s0;
+    case 2: return casadi_s1;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* snakecg_na6_bias_forces_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int snakecg_na6_bias_forces_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 3;
+  if (sz_res) *sz_res = 1;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int snakecg_na6_bias_forces_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 3*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 1*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+
+
+/* ------------------------------------------------------------------------------------------
+ * GENERATED FILE - DO NOT EDIT. Batched drivers rendered from derive/templates/batch.c.j2.
+ * snakecg's counterpart of CasADi's Function.map(n, "serial"): one loop in C over n samples,
+ * reading inputs in place (input k of sample i at arg[k] + i * stride[k]; stride 0 broadcasts)
+ * and writing dense column-major outputs contiguously (output k of sample i at
+ * res[k] + i * nnz_out(k)). Returns 0 on success, the failing sample + 1 otherwise, -1 when out of memory.
+ * ---------------------------------------------------------------------------------------- */
+#include <stdlib.h>
+
+CASADI_SYMBOL_EXPORT int snakecg_na6_batch_bias_forces(casadi_int n, const casadi_real** arg,
+    const casadi_int* stride, casadi_real** res) {
+  const casadi_real* a[3];
+  casadi_real* r[1];
+  casadi_int* iw = (casadi_int*) malloc(sizeof(casadi_int) * 1);
+  casadi_real* w = (casadi_real*) malloc(sizeof(casadi_real) * 57);
+  casadi_int i, k;
+  int status = 0;
+  if (!iw || !w) { free(iw); free(w); return -1; }
+  for (k = 0; k < 3; ++k) a[k] = 0;
+  for (k = 0; k < 1; ++k) r[k] = 0;
+  for (i = 0; i < n; ++i) {
+    a[0] = arg[0] + i * stride[0];
+    a[1] = arg[1] + i * stride[1];
+    a[2] = arg[2] + i * stride[2];
+    r[0] = res[0] + i * 9;
+    if (snakecg_na6_bias_forces(a, r, iw, w, 0)) { status = (int) (i + 1); break; }
+  }
+  free(iw);
+  free(w);
+  return status;
+}

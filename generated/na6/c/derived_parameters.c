@@ -1,0 +1,490 @@
+/* GENERATED FILE - DO NOT EDIT. C code emitted by CasADi for derived_parameters() of
+ * generated/na6/model.py, plus its batched driver.
+ * Regenerate with: snakecg generate --joints 6
+ * spec sha256: e232b212df24684700216b0534f9f644d3ad97ef2a2b5061af17e689371e995b
+ * tools: sympy 1.14.0, casadi 3.8.2, jinja2 3.1.6
+ */
+/* How to prefix internal symbols */
+#ifdef CASADI_CODEGEN_PREFIX
+  #define CASADI_NAMESPACE_CONCAT(NS, ID) _CASADI_NAMESPACE_CONCAT(NS, ID)
+  #define _CASADI_NAMESPACE_CONCAT(NS, ID) NS ## ID
+  #define CASADI_PREFIX(ID) CASADI_NAMESPACE_CONCAT(CODEGEN_PREFIX, ID)
+#else
+  #define CASADI_PREFIX(ID) snakecg_na6_derived_parameters_ ## ID
+#endif
+
+#include <math.h>
+
+#ifndef casadi_real
+#define casadi_real double
+#endif
+
+#ifndef casadi_int
+#define casadi_int long long int
+#endif
+
+/* Add prefix to internal symbols */
+#define casadi_f0 CASADI_PREFIX(f0)
+#define casadi_s0 CASADI_PREFIX(s0)
+#define casadi_s1 CASADI_PREFIX(s1)
+#define casadi_sq CASADI_PREFIX(sq)
+
+/* Symbol visibility in DLLs */
+#ifndef CASADI_SYMBOL_EXPORT
+  #if defined(_WIN32) || defined(__WIN32__) || defined(__CYGWIN__)
+    #if defined(STATIC_LINKED)
+      #define CASADI_SYMBOL_EXPORT
+    #else
+      #define CASADI_SYMBOL_EXPORT __declspec(dllexport)
+    #endif
+  #elif defined(__GNUC__) && defined(GCC_HASCLASSVISIBILITY)
+    #define CASADI_SYMBOL_EXPORT __attribute__ ((visibility ("default")))
+  #else
+    #define CASADI_SYMBOL_EXPORT
+  #endif
+#endif
+
+casadi_real casadi_sq(casadi_real x) { return x*x;}
+
+/* Configuration this file was compiled with */
+CASADI_SYMBOL_EXPORT void snakecg_na6_derived_parameters_casadi_version(int* major, int* minor, int* patch) {
+  *major = 3;
+  *minor = 8;
+  *patch = 2;
+}
+CASADI_SYMBOL_EXPORT int snakecg_na6_derived_parameters_casadi_int_size(void) { return (int) sizeof(casadi_int); }
+CASADI_SYMBOL_EXPORT int snakecg_na6_derived_parameters_casadi_real_size(void) { return (int) sizeof(casadi_real); }
+
+static const casadi_int casadi_s0[3] = {7, 1, 1};
+static const casadi_int casadi_s1[3] = {71, 1, 1};
+
+/* snakecg_na6_derived_parameters:(link_mass[7],link_length[7],link_inertia[7],link_com[7])->(K[71]) */
+static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
+  casadi_real a36, a37, a38, a39, a40, a41, a42, a43, a44, a45, a46, a47;
+  a00=arg[0]? arg[0][0] : 0;
+  if (res[0]!=0) res[0][0]=a00;
+  a01=arg[0]? arg[0][1] : 0;
+  if (res[0]!=0) res[0][1]=a01;
+  a02=arg[0]? arg[0][2] : 0;
+  if (res[0]!=0) res[0][2]=a02;
+  a03=arg[0]? arg[0][3] : 0;
+  if (res[0]!=0) res[0][3]=a03;
+  a04=arg[0]? arg[0][4] : 0;
+  if (res[0]!=0) res[0][4]=a04;
+  a05=arg[0]? arg[0][5] : 0;
+  if (res[0]!=0) res[0][5]=a05;
+  a06=arg[0]? arg[0][6] : 0;
+  if (res[0]!=0) res[0][6]=a06;
+  a07=arg[1]? arg[1][0] : 0;
+  if (res[0]!=0) res[0][7]=a07;
+  a08=arg[1]? arg[1][1] : 0;
+  if (res[0]!=0) res[0][8]=a08;
+  a09=arg[1]? arg[1][2] : 0;
+  if (res[0]!=0) res[0][9]=a09;
+  a10=arg[1]? arg[1][3] : 0;
+  if (res[0]!=0) res[0][10]=a10;
+  a11=arg[1]? arg[1][4] : 0;
+  if (res[0]!=0) res[0][11]=a11;
+  a12=arg[1]? arg[1][5] : 0;
+  if (res[0]!=0) res[0][12]=a12;
+  a13=arg[1]? arg[1][6] : 0;
+  if (res[0]!=0) res[0][13]=a13;
+  a13=arg[2]? arg[2][0] : 0;
+  if (res[0]!=0) res[0][14]=a13;
+  a14=arg[2]? arg[2][1] : 0;
+  if (res[0]!=0) res[0][15]=a14;
+  a15=arg[2]? arg[2][2] : 0;
+  if (res[0]!=0) res[0][16]=a15;
+  a16=arg[2]? arg[2][3] : 0;
+  if (res[0]!=0) res[0][17]=a16;
+  a17=arg[2]? arg[2][4] : 0;
+  if (res[0]!=0) res[0][18]=a17;
+  a18=arg[2]? arg[2][5] : 0;
+  if (res[0]!=0) res[0][19]=a18;
+  a19=arg[2]? arg[2][6] : 0;
+  if (res[0]!=0) res[0][20]=a19;
+  a20=arg[3]? arg[3][0] : 0;
+  if (res[0]!=0) res[0][21]=a20;
+  a21=arg[3]? arg[3][1] : 0;
+  if (res[0]!=0) res[0][22]=a21;
+  a22=arg[3]? arg[3][2] : 0;
+  if (res[0]!=0) res[0][23]=a22;
+  a23=arg[3]? arg[3][3] : 0;
+  if (res[0]!=0) res[0][24]=a23;
+  a24=arg[3]? arg[3][4] : 0;
+  if (res[0]!=0) res[0][25]=a24;
+  a25=arg[3]? arg[3][5] : 0;
+  if (res[0]!=0) res[0][26]=a25;
+  a26=arg[3]? arg[3][6] : 0;
+  if (res[0]!=0) res[0][27]=a26;
+  a00=(a00+a01);
+  a00=(a00+a02);
+  a00=(a00+a03);
+  a00=(a00+a04);
+  a00=(a00+a05);
+  a00=(a00+a06);
+  if (res[0]!=0) res[0][28]=a00;
+  a07=(a07-a20);
+  a20=(a07*a01);
+  a00=(a07*a02);
+  a27=(a20+a00);
+  a28=(a07*a03);
+  a27=(a27+a28);
+  a29=(a07*a04);
+  a27=(a27+a29);
+  a30=(a07*a05);
+  a27=(a27+a30);
+  a31=(a07*a06);
+  a27=(a27+a31);
+  if (res[0]!=0) res[0][29]=a27;
+  a27=(a21*a01);
+  a32=(a08*a05);
+  a27=(a27+a32);
+  a33=(a08*a06);
+  a27=(a27+a33);
+  a34=(a08*a02);
+  a27=(a27+a34);
+  a35=(a08*a03);
+  a27=(a27+a35);
+  a36=(a08*a04);
+  a27=(a27+a36);
+  if (res[0]!=0) res[0][30]=a27;
+  a27=(a22*a02);
+  a37=(a09*a03);
+  a27=(a27+a37);
+  a38=(a09*a04);
+  a27=(a27+a38);
+  a39=(a09*a05);
+  a27=(a27+a39);
+  a40=(a09*a06);
+  a27=(a27+a40);
+  if (res[0]!=0) res[0][31]=a27;
+  a27=(a23*a03);
+  a41=(a10*a04);
+  a27=(a27+a41);
+  a42=(a10*a05);
+  a27=(a27+a42);
+  a43=(a10*a06);
+  a27=(a27+a43);
+  if (res[0]!=0) res[0][32]=a27;
+  a27=(a24*a04);
+  a44=(a11*a05);
+  a27=(a27+a44);
+  a45=(a11*a06);
+  a27=(a27+a45);
+  if (res[0]!=0) res[0][33]=a27;
+  a27=(a25*a05);
+  a46=(a12*a06);
+  a27=(a27+a46);
+  if (res[0]!=0) res[0][34]=a27;
+  a27=(a26*a06);
+  if (res[0]!=0) res[0][35]=a27;
+  a07=casadi_sq(a07);
+  a27=(a07*a01);
+  a47=(a07*a02);
+  a27=(a27+a47);
+  a47=(a07*a03);
+  a27=(a27+a47);
+  a47=(a07*a04);
+  a27=(a27+a47);
+  a47=(a07*a05);
+  a27=(a27+a47);
+  a07=(a07*a06);
+  a27=(a27+a07);
+  if (res[0]!=0) res[0][36]=a27;
+  a20=(a21*a20);
+  a07=(a00*a08);
+  a20=(a20+a07);
+  a07=(a28*a08);
+  a20=(a20+a07);
+  a07=(a29*a08);
+  a20=(a20+a07);
+  a07=(a30*a08);
+  a20=(a20+a07);
+  a07=(a31*a08);
+  a20=(a20+a07);
+  if (res[0]!=0) res[0][37]=a20;
+  a00=(a22*a00);
+  a20=(a28*a09);
+  a00=(a00+a20);
+  a20=(a29*a09);
+  a00=(a00+a20);
+  a20=(a30*a09);
+  a00=(a00+a20);
+  a20=(a31*a09);
+  a00=(a00+a20);
+  if (res[0]!=0) res[0][38]=a00;
+  a28=(a23*a28);
+  a00=(a29*a10);
+  a28=(a28+a00);
+  a00=(a30*a10);
+  a28=(a28+a00);
+  a00=(a31*a10);
+  a28=(a28+a00);
+  if (res[0]!=0) res[0][39]=a28;
+  a29=(a24*a29);
+  a28=(a30*a11);
+  a29=(a29+a28);
+  a28=(a31*a11);
+  a29=(a29+a28);
+  if (res[0]!=0) res[0][40]=a29;
+  a30=(a25*a30);
+  a29=(a31*a12);
+  a30=(a30+a29);
+  if (res[0]!=0) res[0][41]=a30;
+  a31=(a26*a31);
+  if (res[0]!=0) res[0][42]=a31;
+  a21=casadi_sq(a21);
+  a21=(a21*a01);
+  a08=casadi_sq(a08);
+  a01=(a08*a02);
+  a21=(a21+a01);
+  a01=(a08*a03);
+  a21=(a21+a01);
+  a01=(a08*a04);
+  a21=(a21+a01);
+  a01=(a08*a05);
+  a21=(a21+a01);
+  a08=(a08*a06);
+  a21=(a21+a08);
+  if (res[0]!=0) res[0][43]=a21;
+  a34=(a22*a34);
+  a08=(a32*a09);
+  a34=(a34+a08);
+  a08=(a33*a09);
+  a34=(a34+a08);
+  a08=(a35*a09);
+  a34=(a34+a08);
+  a08=(a36*a09);
+  a34=(a34+a08);
+  if (res[0]!=0) res[0][44]=a34;
+  a35=(a23*a35);
+  a34=(a32*a10);
+  a35=(a35+a34);
+  a34=(a33*a10);
+  a35=(a35+a34);
+  a34=(a36*a10);
+  a35=(a35+a34);
+  if (res[0]!=0) res[0][45]=a35;
+  a36=(a24*a36);
+  a35=(a32*a11);
+  a36=(a36+a35);
+  a35=(a33*a11);
+  a36=(a36+a35);
+  if (res[0]!=0) res[0][46]=a36;
+  a32=(a25*a32);
+  a36=(a33*a12);
+  a32=(a32+a36);
+  if (res[0]!=0) res[0][47]=a32;
+  a33=(a26*a33);
+  if (res[0]!=0) res[0][48]=a33;
+  a22=casadi_sq(a22);
+  a22=(a22*a02);
+  a09=casadi_sq(a09);
+  a02=(a09*a03);
+  a22=(a22+a02);
+  a02=(a09*a04);
+  a22=(a22+a02);
+  a02=(a09*a05);
+  a22=(a22+a02);
+  a09=(a09*a06);
+  a22=(a22+a09);
+  if (res[0]!=0) res[0][49]=a22;
+  a37=(a23*a37);
+  a09=(a38*a10);
+  a37=(a37+a09);
+  a09=(a39*a10);
+  a37=(a37+a09);
+  a09=(a40*a10);
+  a37=(a37+a09);
+  if (res[0]!=0) res[0][50]=a37;
+  a38=(a24*a38);
+  a37=(a39*a11);
+  a38=(a38+a37);
+  a37=(a40*a11);
+  a38=(a38+a37);
+  if (res[0]!=0) res[0][51]=a38;
+  a39=(a25*a39);
+  a38=(a40*a12);
+  a39=(a39+a38);
+  if (res[0]!=0) res[0][52]=a39;
+  a40=(a26*a40);
+  if (res[0]!=0) res[0][53]=a40;
+  a23=casadi_sq(a23);
+  a23=(a23*a03);
+  a10=casadi_sq(a10);
+  a03=(a10*a04);
+  a23=(a23+a03);
+  a03=(a10*a05);
+  a23=(a23+a03);
+  a10=(a10*a06);
+  a23=(a23+a10);
+  if (res[0]!=0) res[0][54]=a23;
+  a41=(a24*a41);
+  a10=(a42*a11);
+  a41=(a41+a10);
+  a10=(a43*a11);
+  a41=(a41+a10);
+  if (res[0]!=0) res[0][55]=a41;
+  a42=(a25*a42);
+  a41=(a43*a12);
+  a42=(a42+a41);
+  if (res[0]!=0) res[0][56]=a42;
+  a43=(a26*a43);
+  if (res[0]!=0) res[0][57]=a43;
+  a24=casadi_sq(a24);
+  a24=(a24*a04);
+  a11=casadi_sq(a11);
+  a04=(a11*a05);
+  a24=(a24+a04);
+  a11=(a11*a06);
+  a24=(a24+a11);
+  if (res[0]!=0) res[0][58]=a24;
+  a44=(a25*a44);
+  a11=(a45*a12);
+  a44=(a44+a11);
+  if (res[0]!=0) res[0][59]=a44;
+  a45=(a26*a45);
+  if (res[0]!=0) res[0][60]=a45;
+  a25=casadi_sq(a25);
+  a25=(a25*a05);
+  a12=casadi_sq(a12);
+  a12=(a12*a06);
+  a25=(a25+a12);
+  if (res[0]!=0) res[0][61]=a25;
+  a46=(a26*a46);
+  if (res[0]!=0) res[0][62]=a46;
+  a26=casadi_sq(a26);
+  a26=(a26*a06);
+  if (res[0]!=0) res[0][63]=a26;
+  a13=(a13+a27);
+  if (res[0]!=0) res[0][64]=a13;
+  a14=(a14+a21);
+  if (res[0]!=0) res[0][65]=a14;
+  a15=(a15+a22);
+  if (res[0]!=0) res[0][66]=a15;
+  a16=(a16+a23);
+  if (res[0]!=0) res[0][67]=a16;
+  a17=(a17+a24);
+  if (res[0]!=0) res[0][68]=a17;
+  a18=(a18+a25);
+  if (res[0]!=0) res[0][69]=a18;
+  a19=(a19+a26);
+  if (res[0]!=0) res[0][70]=a19;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int snakecg_na6_derived_parameters(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f0(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int snakecg_na6_derived_parameters_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void snakecg_na6_derived_parameters_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void snakecg_na6_derived_parameters_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void snakecg_na6_derived_parameters_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int snakecg_na6_derived_parameters_n_in(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_int snakecg_na6_derived_parameters_n_out(void) { return 1;}
+
+CASADI_SYMBOL_EXPORT casadi_real snakecg_na6_derived_parameters_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* snakecg_na6_derived_parameters_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "link_mass";
+    case 1: return "link_length";
+    case 2: return "link_inertia";
+    case 3: return "link_com";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* snakecg_na6_derived_parameters_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "K";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* snakecg_na6_derived_parameters_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s0;
+    case 2: return casadi_s0;
+    case 3: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* snakecg_na6_derived_parameters_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s1;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int snakecg_na6_derived_parameters_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 4;
+  if (sz_res) *sz_res = 1;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int snakecg_na6_derived_parameters_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 4*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 1*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+
+
+/* ------------------------------------------------------------------------------------------
+ * GENERATED FILE - DO NOT EDIT. Batched drivers rendered from derive/templates/batch.c.j2.
+ * snakecg's counterpart of CasADi's Function.map(n, "serial"): one loop in C over n samples,
+ * reading inputs in place (input k of sample i at arg[k] + i * stride[k]; stride 0 broadcasts)
+ * and writing dense column-major outputs contiguously (output k of sample i at
+ * res[k] + i * nnz_out(k)). Returns 0 on success, the failing sample + 1 otherwise, -1 when out of memory.
+ * ---------------------------------------------------------------------------------------- */
+#include <stdlib.h>
+
+CASADI_SYMBOL_EXPORT int snakecg_na6_batch_derived_parameters(casadi_int n, const casadi_real** arg,
+    const casadi_int* stride, casadi_real** res) {
+  const casadi_real* a[4];
+  casadi_real* r[1];
+  casadi_int* iw = (casadi_int*) malloc(sizeof(casadi_int) * 1);
+  casadi_real* w = (casadi_real*) malloc(sizeof(casadi_real) * 49);
+  casadi_int i, k;
+  int status = 0;
+  if (!iw || !w) { free(iw); free(w); return -1; }
+  for (k = 0; k < 4; ++k) a[k] = 0;
+  for (k = 0; k < 1; ++k) r[k] = 0;
+  for (i = 0; i < n; ++i) {
+    a[0] = arg[0] + i * stride[0];
+    a[1] = arg[1] + i * stride[1];
+    a[2] = arg[2] + i * stride[2];
+    a[3] = arg[3] + i * stride[3];
+    r[0] = res[0] + i * 71;
+    if (snakecg_na6_derived_parameters(a, r, iw, w, 0)) { status = (int) (i + 1); break; }
+  }
+  free(iw);
+  free(w);
+  return status;
+}

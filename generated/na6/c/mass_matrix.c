@@ -1,0 +1,514 @@
+/* GENERATED FILE - DO NOT EDIT. C code emitted by CasADi for mass_matrix() of
+ * generated/na6/model.py, plus its batched driver.
+ * Regenerate with: snakecg generate --joints 6
+ * spec sha256: e232b212df24684700216b0534f9f644d3ad97ef2a2b5061af17e689371e995b
+ * tools: sympy 1.14.0, casadi 3.8.2, jinja2 3.1.6
+ */
+/* How to prefix internal symbols */
+#ifdef CASADI_CODEGEN_PREFIX
+  #define CASADI_NAMESPACE_CONCAT(NS, ID) _CASADI_NAMESPACE_CONCAT(NS, ID)
+  #define _CASADI_NAMESPACE_CONCAT(NS, ID) NS ## ID
+  #define CASADI_PREFIX(ID) CASADI_NAMESPACE_CONCAT(CODEGEN_PREFIX, ID)
+#else
+  #define CASADI_PREFIX(ID) snakecg_na6_mass_matrix_ ## ID
+#endif
+
+#include <math.h>
+
+#ifndef casadi_real
+#define casadi_real double
+#endif
+
+#ifndef casadi_int
+#define casadi_int long long int
+#endif
+
+/* Add prefix to internal symbols */
+#define casadi_f0 CASADI_PREFIX(f0)
+#define casadi_s0 CASADI_PREFIX(s0)
+#define casadi_s1 CASADI_PREFIX(s1)
+#define casadi_s2 CASADI_PREFIX(s2)
+
+/* Symbol visibility in DLLs */
+#ifndef CASADI_SYMBOL_EXPORT
+  #if defined(_WIN32) || defined(__WIN32__) || defined(__CYGWIN__)
+    #if defined(STATIC_LINKED)
+      #define CASADI_SYMBOL_EXPORT
+    #else
+      #define CASADI_SYMBOL_EXPORT __declspec(dllexport)
+    #endif
+  #elif defined(__GNUC__) && defined(GCC_HASCLASSVISIBILITY)
+    #define CASADI_SYMBOL_EXPORT __attribute__ ((visibility ("default")))
+  #else
+    #define CASADI_SYMBOL_EXPORT
+  #endif
+#endif
+
+/* Configuration this file was compiled with */
+CASADI_SYMBOL_EXPORT void snakecg_na6_mass_matrix_casadi_version(int* major, int* minor, int* patch) {
+  *major = 3;
+  *minor = 8;
+  *patch = 2;
+}
+CASADI_SYMBOL_EXPORT int snakecg_na6_mass_matrix_casadi_int_size(void) { return (int) sizeof(casadi_int); }
+CASADI_SYMBOL_EXPORT int snakecg_na6_mass_matrix_casadi_real_size(void) { return (int) sizeof(casadi_real); }
+
+static const casadi_int casadi_s0[3] = {9, 1, 1};
+static const casadi_int casadi_s1[3] = {71, 1, 1};
+static const casadi_int casadi_s2[3] = {9, 9, 1};
+
+/* snakecg_na6_mass_matrix:(q[9],K[71])->(M[9x9]) */
+static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
+  casadi_real a36, a37, a38, a39, a40, a41, a42, a43, a44, a45, a46, a47;
+  casadi_real a48, a49, a50, a51, a52, a53, a54;
+  a00=arg[1]? arg[1][28] : 0;
+  if (res[0]!=0) res[0][0]=a00;
+  a01=0.;
+  if (res[0]!=0) res[0][1]=a01;
+  a02=arg[1]? arg[1][35] : 0;
+  a03=arg[0]? arg[0][3] : 0;
+  a04=arg[0]? arg[0][2] : 0;
+  a03=(a03+a04);
+  a05=arg[0]? arg[0][4] : 0;
+  a05=(a03+a05);
+  a06=arg[0]? arg[0][5] : 0;
+  a06=(a05+a06);
+  a07=arg[0]? arg[0][6] : 0;
+  a07=(a06+a07);
+  a08=arg[0]? arg[0][7] : 0;
+  a08=(a07+a08);
+  a09=arg[0]? arg[0][8] : 0;
+  a09=(a08+a09);
+  a10=sin(a09);
+  a11=(a02*a10);
+  a12=arg[1]? arg[1][34] : 0;
+  a13=sin(a08);
+  a14=(a12*a13);
+  a14=(a11+a14);
+  a15=arg[1]? arg[1][33] : 0;
+  a16=sin(a07);
+  a17=(a15*a16);
+  a17=(a14+a17);
+  a18=arg[1]? arg[1][32] : 0;
+  a19=sin(a06);
+  a20=(a18*a19);
+  a20=(a17+a20);
+  a21=arg[1]? arg[1][31] : 0;
+  a22=sin(a05);
+  a23=(a21*a22);
+  a23=(a20+a23);
+  a24=arg[1]? arg[1][30] : 0;
+  a25=sin(a03);
+  a26=(a24*a25);
+  a26=(a23+a26);
+  a27=arg[1]? arg[1][29] : 0;
+  a28=sin(a04);
+  a29=(a27*a28);
+  a29=(a26+a29);
+  a29=(-a29);
+  if (res[0]!=0) res[0][2]=a29;
+  a26=(-a26);
+  if (res[0]!=0) res[0][3]=a26;
+  a23=(-a23);
+  if (res[0]!=0) res[0][4]=a23;
+  a20=(-a20);
+  if (res[0]!=0) res[0][5]=a20;
+  a17=(-a17);
+  if (res[0]!=0) res[0][6]=a17;
+  a14=(-a14);
+  if (res[0]!=0) res[0][7]=a14;
+  a11=(-a11);
+  if (res[0]!=0) res[0][8]=a11;
+  if (res[0]!=0) res[0][9]=a01;
+  if (res[0]!=0) res[0][10]=a00;
+  a09=cos(a09);
+  a02=(a02*a09);
+  a08=cos(a08);
+  a12=(a12*a08);
+  a12=(a02+a12);
+  a07=cos(a07);
+  a15=(a15*a07);
+  a15=(a12+a15);
+  a06=cos(a06);
+  a18=(a18*a06);
+  a18=(a15+a18);
+  a05=cos(a05);
+  a21=(a21*a05);
+  a21=(a18+a21);
+  a03=cos(a03);
+  a24=(a24*a03);
+  a24=(a21+a24);
+  a04=cos(a04);
+  a27=(a27*a04);
+  a27=(a24+a27);
+  if (res[0]!=0) res[0][11]=a27;
+  if (res[0]!=0) res[0][12]=a24;
+  if (res[0]!=0) res[0][13]=a21;
+  if (res[0]!=0) res[0][14]=a18;
+  if (res[0]!=0) res[0][15]=a15;
+  if (res[0]!=0) res[0][16]=a12;
+  if (res[0]!=0) res[0][17]=a02;
+  if (res[0]!=0) res[0][18]=a29;
+  if (res[0]!=0) res[0][19]=a27;
+  a27=(a04*a08);
+  a29=(a28*a13);
+  a27=(a27+a29);
+  a29=arg[1]? arg[1][41] : 0;
+  a27=(a27*a29);
+  a29=(a03*a08);
+  a00=(a25*a13);
+  a29=(a29+a00);
+  a00=arg[1]? arg[1][47] : 0;
+  a29=(a29*a00);
+  a00=(a05*a08);
+  a01=(a22*a13);
+  a00=(a00+a01);
+  a01=arg[1]? arg[1][52] : 0;
+  a00=(a00*a01);
+  a01=(a06*a08);
+  a30=(a19*a13);
+  a01=(a01+a30);
+  a30=arg[1]? arg[1][56] : 0;
+  a01=(a01*a30);
+  a30=(a07*a08);
+  a31=(a16*a13);
+  a30=(a30+a31);
+  a31=arg[1]? arg[1][59] : 0;
+  a30=(a30*a31);
+  a31=arg[1]? arg[1][69] : 0;
+  a08=(a08*a09);
+  a13=(a13*a10);
+  a08=(a08+a13);
+  a13=arg[1]? arg[1][62] : 0;
+  a08=(a08*a13);
+  a31=(a31+a08);
+  a13=(a30+a31);
+  a32=(a01+a13);
+  a33=(a00+a32);
+  a34=(a29+a33);
+  a35=(a27+a34);
+  a36=(a04*a09);
+  a37=(a28*a10);
+  a36=(a36+a37);
+  a37=arg[1]? arg[1][42] : 0;
+  a36=(a36*a37);
+  a37=(a03*a09);
+  a38=(a25*a10);
+  a37=(a37+a38);
+  a38=arg[1]? arg[1][48] : 0;
+  a37=(a37*a38);
+  a38=(a05*a09);
+  a39=(a22*a10);
+  a38=(a38+a39);
+  a39=arg[1]? arg[1][53] : 0;
+  a38=(a38*a39);
+  a39=(a06*a09);
+  a40=(a19*a10);
+  a39=(a39+a40);
+  a40=arg[1]? arg[1][57] : 0;
+  a39=(a39*a40);
+  a09=(a07*a09);
+  a10=(a16*a10);
+  a09=(a09+a10);
+  a10=arg[1]? arg[1][60] : 0;
+  a09=(a09*a10);
+  a10=arg[1]? arg[1][70] : 0;
+  a08=(a10+a08);
+  a40=(a09+a08);
+  a41=(a39+a40);
+  a42=(a38+a41);
+  a43=(a37+a42);
+  a44=(a36+a43);
+  a35=(a35+a44);
+  a45=(a04*a07);
+  a46=(a28*a16);
+  a45=(a45+a46);
+  a46=arg[1]? arg[1][40] : 0;
+  a45=(a45*a46);
+  a46=(a03*a07);
+  a47=(a25*a16);
+  a46=(a46+a47);
+  a47=arg[1]? arg[1][46] : 0;
+  a46=(a46*a47);
+  a47=(a05*a07);
+  a48=(a22*a16);
+  a47=(a47+a48);
+  a48=arg[1]? arg[1][51] : 0;
+  a47=(a47*a48);
+  a07=(a06*a07);
+  a16=(a19*a16);
+  a07=(a07+a16);
+  a16=arg[1]? arg[1][55] : 0;
+  a07=(a07*a16);
+  a16=arg[1]? arg[1][68] : 0;
+  a30=(a30+a09);
+  a16=(a16+a30);
+  a09=(a07+a16);
+  a48=(a47+a09);
+  a49=(a46+a48);
+  a50=(a45+a49);
+  a35=(a35+a50);
+  a50=(a04*a06);
+  a51=(a28*a19);
+  a50=(a50+a51);
+  a51=arg[1]? arg[1][39] : 0;
+  a50=(a50*a51);
+  a51=(a03*a06);
+  a52=(a25*a19);
+  a51=(a51+a52);
+  a52=arg[1]? arg[1][45] : 0;
+  a51=(a51*a52);
+  a06=(a05*a06);
+  a19=(a22*a19);
+  a06=(a06+a19);
+  a19=arg[1]? arg[1][50] : 0;
+  a06=(a06*a19);
+  a19=arg[1]? arg[1][67] : 0;
+  a01=(a01+a39);
+  a07=(a07+a01);
+  a19=(a19+a07);
+  a39=(a06+a19);
+  a52=(a51+a39);
+  a53=(a50+a52);
+  a35=(a35+a53);
+  a53=(a04*a05);
+  a54=(a28*a22);
+  a53=(a53+a54);
+  a54=arg[1]? arg[1][38] : 0;
+  a53=(a53*a54);
+  a05=(a03*a05);
+  a22=(a25*a22);
+  a05=(a05+a22);
+  a22=arg[1]? arg[1][44] : 0;
+  a05=(a05*a22);
+  a22=arg[1]? arg[1][66] : 0;
+  a00=(a00+a38);
+  a47=(a47+a00);
+  a06=(a06+a47);
+  a22=(a22+a06);
+  a38=(a05+a22);
+  a54=(a53+a38);
+  a35=(a35+a54);
+  a04=(a04*a03);
+  a28=(a28*a25);
+  a04=(a04+a28);
+  a28=arg[1]? arg[1][37] : 0;
+  a04=(a04*a28);
+  a28=arg[1]? arg[1][65] : 0;
+  a29=(a29+a37);
+  a46=(a46+a29);
+  a51=(a51+a46);
+  a05=(a05+a51);
+  a28=(a28+a05);
+  a37=(a04+a28);
+  a35=(a35+a37);
+  a37=arg[1]? arg[1][64] : 0;
+  a27=(a27+a36);
+  a45=(a45+a27);
+  a50=(a50+a45);
+  a53=(a53+a50);
+  a04=(a04+a53);
+  a37=(a37+a04);
+  a35=(a35+a37);
+  if (res[0]!=0) res[0][20]=a35;
+  a34=(a34+a43);
+  a34=(a34+a49);
+  a34=(a34+a52);
+  a34=(a34+a38);
+  a34=(a34+a28);
+  a04=(a34+a04);
+  if (res[0]!=0) res[0][21]=a04;
+  a33=(a33+a42);
+  a33=(a33+a48);
+  a33=(a33+a39);
+  a33=(a33+a22);
+  a05=(a33+a05);
+  a53=(a05+a53);
+  if (res[0]!=0) res[0][22]=a53;
+  a32=(a32+a41);
+  a32=(a32+a09);
+  a32=(a32+a19);
+  a06=(a32+a06);
+  a51=(a06+a51);
+  a50=(a51+a50);
+  if (res[0]!=0) res[0][23]=a50;
+  a13=(a13+a40);
+  a13=(a13+a16);
+  a07=(a13+a07);
+  a47=(a07+a47);
+  a46=(a47+a46);
+  a45=(a46+a45);
+  if (res[0]!=0) res[0][24]=a45;
+  a31=(a31+a08);
+  a30=(a31+a30);
+  a01=(a30+a01);
+  a00=(a01+a00);
+  a29=(a00+a29);
+  a27=(a29+a27);
+  if (res[0]!=0) res[0][25]=a27;
+  if (res[0]!=0) res[0][26]=a44;
+  if (res[0]!=0) res[0][27]=a26;
+  if (res[0]!=0) res[0][28]=a24;
+  if (res[0]!=0) res[0][29]=a04;
+  if (res[0]!=0) res[0][30]=a34;
+  if (res[0]!=0) res[0][31]=a05;
+  if (res[0]!=0) res[0][32]=a51;
+  if (res[0]!=0) res[0][33]=a46;
+  if (res[0]!=0) res[0][34]=a29;
+  if (res[0]!=0) res[0][35]=a43;
+  if (res[0]!=0) res[0][36]=a23;
+  if (res[0]!=0) res[0][37]=a21;
+  if (res[0]!=0) res[0][38]=a53;
+  if (res[0]!=0) res[0][39]=a05;
+  if (res[0]!=0) res[0][40]=a33;
+  if (res[0]!=0) res[0][41]=a06;
+  if (res[0]!=0) res[0][42]=a47;
+  if (res[0]!=0) res[0][43]=a00;
+  if (res[0]!=0) res[0][44]=a42;
+  if (res[0]!=0) res[0][45]=a20;
+  if (res[0]!=0) res[0][46]=a18;
+  if (res[0]!=0) res[0][47]=a50;
+  if (res[0]!=0) res[0][48]=a51;
+  if (res[0]!=0) res[0][49]=a06;
+  if (res[0]!=0) res[0][50]=a32;
+  if (res[0]!=0) res[0][51]=a07;
+  if (res[0]!=0) res[0][52]=a01;
+  if (res[0]!=0) res[0][53]=a41;
+  if (res[0]!=0) res[0][54]=a17;
+  if (res[0]!=0) res[0][55]=a15;
+  if (res[0]!=0) res[0][56]=a45;
+  if (res[0]!=0) res[0][57]=a46;
+  if (res[0]!=0) res[0][58]=a47;
+  if (res[0]!=0) res[0][59]=a07;
+  if (res[0]!=0) res[0][60]=a13;
+  if (res[0]!=0) res[0][61]=a30;
+  if (res[0]!=0) res[0][62]=a40;
+  if (res[0]!=0) res[0][63]=a14;
+  if (res[0]!=0) res[0][64]=a12;
+  if (res[0]!=0) res[0][65]=a27;
+  if (res[0]!=0) res[0][66]=a29;
+  if (res[0]!=0) res[0][67]=a00;
+  if (res[0]!=0) res[0][68]=a01;
+  if (res[0]!=0) res[0][69]=a30;
+  if (res[0]!=0) res[0][70]=a31;
+  if (res[0]!=0) res[0][71]=a08;
+  if (res[0]!=0) res[0][72]=a11;
+  if (res[0]!=0) res[0][73]=a02;
+  if (res[0]!=0) res[0][74]=a44;
+  if (res[0]!=0) res[0][75]=a43;
+  if (res[0]!=0) res[0][76]=a42;
+  if (res[0]!=0) res[0][77]=a41;
+  if (res[0]!=0) res[0][78]=a40;
+  if (res[0]!=0) res[0][79]=a08;
+  if (res[0]!=0) res[0][80]=a10;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int snakecg_na6_mass_matrix(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f0(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int snakecg_na6_mass_matrix_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void snakecg_na6_mass_matrix_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void snakecg_na6_mass_matrix_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void snakecg_na6_mass_matrix_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int snakecg_na6_mass_matrix_n_in(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_int snakecg_na6_mass_matrix_n_out(void) { return 1;}
+
+CASADI_SYMBOL_EXPORT casadi_real snakecg_na6_mass_matrix_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* snakecg_na6_mass_matrix_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "q";
+    case 1: return "K";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* snakecg_na6_mass_matrix_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "M";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* snakecg_na6_mass_matrix_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s1;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* snakecg_na6_mass_matrix_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s2;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int snakecg_na6_mass_matrix_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 2;
+  if (sz_res) *sz_res = 1;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int snakecg_na6_mass_matrix_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 2*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 1*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+
+
+/* ------------------------------------------------------------------------------------------
+ * GENERATED FILE - DO NOT EDIT. Batched drivers rendered from derive/templates/batch.c.j2.
+ * snakecg's counterpart of CasADi's Function.map(n, "serial"): one loop in C over n samples,
+ * reading inputs in place (input k of sample i at arg[k] + i * stride[k]; stride 0 broadcasts)
+ * and writing dense column-major outputs contiguously (output k of sample i at
+ * res[k] + i * nnz_out(k)). Returns 0 on success, the failing sample + 1 otherwise, -1 when out of memory.
+ * ---------------------------------------------------------------------------------------- */
+#include <stdlib.h>
+
+CASADI_SYMBOL_EXPORT int snakecg_na6_batch_mass_matrix(casadi_int n, const casadi_real** arg,
+    const casadi_int* stride, casadi_real** res) {
+  const casadi_real* a[2];
+  casadi_real* r[1];
+  casadi_int* iw = (casadi_int*) malloc(sizeof(casadi_int) * 1);
+  casadi_real* w = (casadi_real*) malloc(sizeof(casadi_real) * 56);
+  casadi_int i, k;
+  int status = 0;
+  if (!iw || !w) { free(iw); free(w); return -1; }
+  for (k = 0; k < 2; ++k) a[k] = 0;
+  for (k = 0; k < 1; ++k) r[k] = 0;
+  for (i = 0; i < n; ++i) {
+    a[0] = arg[0] + i * stride[0];
+    a[1] = arg[1] + i * stride[1];
+    r[0] = res[0] + i * 81;
+    if (snakecg_na6_mass_matrix(a, r, iw, w, 0)) { status = (int) (i + 1); break; }
+  }
+  free(iw);
+  free(w);
+  return status;
+}

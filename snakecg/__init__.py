@@ -1,0 +1,33 @@
+"""snakecg: contact models of planar snake robots that push objects (Reyes & Ma 2017).
+
+Pipeline: ``snakecg_derive`` (SymPy, folder ``derive/``) -> ``snakecg_generated`` (CasADi
+builders and C, folder ``generated/``) -> ``snakecg`` (this runtime: numbers in, numbers out).
+
+>>> import snakecg
+>>> robot = snakecg.Robot(joints=2)
+>>> model = snakecg.load(robot)
+>>> model.mass_matrix([0, 0, 0, 0.3, -0.2]).shape
+(5, 5)
+"""
+
+from .errors import ArtifactError, BuildError, InputError, SingularConstraintsError, SnakecgError
+from .model import ForwardResult, RobotModel, SceneModel, load
+from .robot import SCENARIOS, Robot, Scene
+
+__version__ = "0.1.0"
+
+__all__ = [
+    "Robot",
+    "Scene",
+    "SCENARIOS",
+    "load",
+    "RobotModel",
+    "SceneModel",
+    "ForwardResult",
+    "SnakecgError",
+    "InputError",
+    "BuildError",
+    "ArtifactError",
+    "SingularConstraintsError",
+    "__version__",
+]

@@ -1,0 +1,30 @@
+"""One exception hierarchy for the package."""
+
+from __future__ import annotations
+
+__all__ = ["SnakecgError", "InputError", "BuildError", "ArtifactError", "SingularConstraintsError"]
+
+
+class SnakecgError(Exception):
+    """Base class of every error snakecg raises on purpose."""
+
+
+class InputError(SnakecgError, ValueError):
+    """Bad input: the message names the argument and the expected form."""
+
+
+class BuildError(SnakecgError, RuntimeError):
+    """Generating or compiling a model failed; carries the command and its output."""
+
+    def __init__(self, message: str, *, command: list[str] | None = None, stderr: str = ""):
+        super().__init__(message)
+        self.command = command
+        self.stderr = stderr
+
+
+class ArtifactError(SnakecgError, RuntimeError):
+    """A generated or cached artefact is missing, truncated or does not match its manifest."""
+
+
+class SingularConstraintsError(SnakecgError, ArithmeticError):
+    """The held constraint rows are linearly dependent (singular Delassus matrix)."""
