@@ -17,6 +17,7 @@ from .symbols import SnakeSymbols
 
 __all__ = [
     "derived_parameter_values",
+    "readable_mass_matrix",
     "StructuredChain",
     "closed_form_poses",
     "closed_form_jacobians",
@@ -282,3 +283,39 @@ def closed_form_mass_matrix(s: SnakeSymbols) -> sp.Matrix:
         D = sp.diag(s.link_mass[i], s.link_mass[i], s.link_inertia[i])
         M += J.T * D * J
     return M.applyfunc(lambda e: sp.expand(e))
+
+
+def readable_mass_matrix(s: SnakeSymbols, *, substitute: bool = True) -> sp.Matrix:
+    """``M_s`` written in absolute link angles, for reading (``snakecg show``, the docs).
+
+    ``M_pp = mtot 1``, ``M_p,r = sum_{j>r} beta_j (-sin phi_j, cos phi_j)`` and
+    ``M_rs = sum_{j>r} sum_{k>s} gamma_jk cos(phi_j - phi_k)`` (``Jrot_j`` for ``j = k``),
+    with ``phi_j = theta + q_1 + ... + q_{j-1}``. With ``substitute`` the constants
+    ``mtot, beta, gamma, Jrot`` are replaced by their expressions in the link parameters
+    (factored per constant, no global simplification).
+    """
+    n = s.n_links
+    q = s.q
+    phi = [q[2]]
+    for j in range(1, s.n_joints + 1):
+        phi.append(phi[-1] + q[2 + j])
+    M = sp.zeros(s.n_coordinates, s.n_coordinates)
+    M[0, 0] = M[1, 1] = s.total_mass
+    for r in range(n):
+        M[0, 2 + r] = M[2 + r, 0] = sp.Add(*(-s.first_moments[j] * sp.sin(phi[j])
+                                             for j in range(r, n)))
+        M[1, 2 + r] = M[2 + r, 1] = sp.Add(*(s.first_moments[j] * sp.cos(phi[j])
+                                             for j in range(r, n)))
+        for t in range(r, n):
+            terms = []
+            for j in range(r, n):
+                for k in range(t, n):
+                    if j == k:
+                        terms.append(s.rotational_diagonal[j])
+                    else:
+                        terms.append(s.second_moment(j + 1, k + 1) * sp.cos(phi[j] - phi[k]))
+            M[2 + r, 2 + t] = M[2 + t, 2 + r] = sp.Add(*terms)
+    if substitute:
+        values = {k: sp.factor_terms(v) for k, v in derived_parameter_values(s).items()}
+        M = M.xreplace(values)
+    return M

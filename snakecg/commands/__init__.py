@@ -1,0 +1,1 @@
+"""Sub-commands of the ``snakecg`` CLI; each module has ``register(subparsers)``."""
