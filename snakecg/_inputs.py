@@ -28,8 +28,8 @@ def as_batch(name: str, value, size: int, *, what: str = "") -> tuple[np.ndarray
             f"{name} has shape {arr.shape}, expected ({size},) or (N, {size}){what}"
         )
     if not np.all(np.isfinite(arr)):
-        bad = np.argwhere(~np.isfinite(arr))[0]
-        raise InputError(f"{name} must be finite, found {arr[tuple(bad)]} at index {tuple(bad)}")
+        bad = tuple(int(i) for i in np.argwhere(~np.isfinite(arr))[0])
+        raise InputError(f"{name} must be finite, found {arr[bad]} at index {bad}")
     return np.ascontiguousarray(arr), batched
 
 

@@ -241,8 +241,9 @@ class CasadiBackend:
             res = self._maps[key].call(args)
         outs = []
         for r, (rows, cols) in zip(res, sig.out_shapes):
-            arr = np.asarray(r.full()).reshape(rows, n, cols, order="F")
-            outs.append(np.ascontiguousarray(arr.transpose(1, 0, 2)))
+            # map() concatenates the samples' (rows, cols) blocks horizontally
+            arr = np.asarray(r.full()).reshape(rows, cols, n, order="F")
+            outs.append(np.ascontiguousarray(arr.transpose(2, 0, 1)))
         return outs
 
 
