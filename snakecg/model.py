@@ -19,7 +19,8 @@ from ._inputs import as_batch, broadcast_batches, expand
 from .errors import InputError
 from .native import load_backend
 from .robot import Robot, Scene
-from .solver import ABSENT, HELD, LOST, SLIDE_NEG, SLIDE_POS, solve_active_set
+from .solver import (ABSENT, HELD, LOST, PIVOT_TOL, REGULARIZATION, SLIDE_NEG, SLIDE_POS,
+                     solve_active_set)
 
 __all__ = ["load", "RobotModel", "SceneModel", "ForwardResult"]
 
@@ -241,6 +242,11 @@ class SceneModel(RobotModel):
         touching the contact link at ``contact_offset``).
         """
         na = self.n_joints
+        if max_iter is not None and (isinstance(max_iter, bool)
+                                     or not isinstance(max_iter, (int, np.integer))
+                                     or max_iter < 1):
+            raise InputError(f"max_iter must be an integer >= 1 (active-set iterations before"
+                             f" enumerating), or None for the default; got {max_iter!r}")
         qa, bq = self._q(q)
         ta, bt = as_batch("tau", tau, na, what=f" (one torque per joint, n_a = {na})")
         parts = {"q": (qa, bq), "tau": (ta, bt)}
@@ -305,7 +311,8 @@ class SceneModel(RobotModel):
         r = ForwardResult(
             qdd=o["qdd"], a_obj=o["a_obj"], lam=o["lam"], w=o["w"], contact=contact,
             wheel_state=wheel_state, norm_lambda=o["norm_lambda"], norm_a_obj=o["norm_a_obj"],
-            norm_qdd=o["norm_qdd"], sr=o["sr"], gap=o["gap"], singular=sol.singular, tau=tau,
+            norm_qdd=o["norm_qdd"], gap=o["gap"], singular=sol.singular, tau=tau,
+            sr=np.where(contact, o["sr"], 0.0),  # eq. 30; no interaction without contact
         )
         if not batched:
             for k in r.__dataclass_fields__:
@@ -325,7 +332,9 @@ class SceneModel(RobotModel):
         ``input_metric`` (``B^T M_s^-1 B``, eq. 31 corrected), ``projector_constrained``
         (eq. 14), ``projector_orthogonal`` (eq. 19), ``delassus`` (``G_c``), plus the
         ``*_offset`` vectors produced by sliding wheels' fixed forces and ``w_*`` maps of the
-        rows' accelerations.
+        rows' accelerations. ``pivot_ratio`` and ``singular``: the held rows were dependent;
+        such samples are re-evaluated with a tiny Tikhonov term (least-norm forces, as in
+        ``forward``).
         """
         qa, batched = self._q(q)
         n = qa.shape[0]
@@ -351,7 +360,8 @@ class SceneModel(RobotModel):
         args = [self._arg(qa, n), self.parameters, self._contact_link, self._side,
                 self._object_mass, self._object_inertia, self._arg(q_obj, n),
                 self._arg(rho, n), self._wheel_offset, free[0], lam_fixed[0], np.zeros(1)]
-        outs = self._call("interaction_maps", n, [np.ascontiguousarray(a) for a in args])
+        args = [np.ascontiguousarray(a) for a in args]
+        outs = self._call("interaction_maps", n, args)
         names = self.backend.signatures["interaction_maps"].out_names
         res = {}
         for name_, o in zip(names, outs):
@@ -361,6 +371,19 @@ class SceneModel(RobotModel):
                 res[name_] = np.ascontiguousarray(o[:, :, 0])
             else:
                 res[name_] = np.ascontiguousarray(o)
+        # dependent held rows: re-solve those samples with the solver's Tikhonov term
+        finite = np.all(np.isfinite(res["lam_from_tau"].reshape(n, -1)), axis=1)
+        singular = ~(res["pivot_ratio"] > PIVOT_TOL) | ~finite
+        if np.any(singular):
+            sub = np.flatnonzero(singular)
+            scale = np.abs(np.diagonal(res["delassus"][sub], axis1=1, axis2=2)).max(axis=1)
+            reg = (REGULARIZATION * np.maximum(scale, 1e-300)).reshape(-1, 1)
+            sub_args = [a[sub] if a.ndim == 2 else a for a in args[:-1]] + [reg]
+            again = self._call("interaction_maps", len(sub), sub_args)
+            for name_, o in zip(names, again):
+                if name_ != "pivot_ratio":
+                    res[name_][sub] = o.reshape(res[name_][sub].shape)
+        res["singular"] = singular
         return res
 
     # analysis (snakecg.analysis) -------------------------------------------------------------
