@@ -22,6 +22,7 @@ Every problem in a file is collected and reported at once.
 from __future__ import annotations
 
 import math
+import numbers
 from collections.abc import Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -35,31 +36,118 @@ SCENARIOS = ("frictionless", "wheels", "ideal_wheels")
 DEFAULT_GRAVITY = 9.81
 
 
-def _per_link(name: str, value, n_links: int, problems: list[str], *, positive=True):
-    if isinstance(value, (int, float)) and not isinstance(value, bool):
-        values = [float(value)] * n_links
-    elif isinstance(value, Sequence) and not isinstance(value, (str, bytes)):
-        values = []
-        for v in value:
-            if isinstance(v, bool) or not isinstance(v, (int, float)):
-                problems.append(f"{name} must hold numbers, got {v!r}")
-                return None
-            values.append(float(v))
-        if len(values) != n_links:
+_MISSING = object()
+#: At most this many offending values are quoted per parameter (the count of the rest follows).
+_MAX_QUOTED = 4
+
+
+def _is_number(v) -> bool:
+    return isinstance(v, numbers.Real) and not isinstance(v, bool)
+
+
+def _is_sequence(v) -> bool:
+    return (isinstance(v, Sequence) and not isinstance(v, (str, bytes))) or (
+        type(v).__module__ == "numpy" and getattr(v, "ndim", None) == 1
+    )
+
+
+def _quote(items: list[str]) -> str:
+    shown = ", ".join(items[:_MAX_QUOTED])
+    more = len(items) - _MAX_QUOTED
+    return shown + (f" and {more} more" if more > 0 else "")
+
+
+def _per_link(name: str, value, n_links: int | None, problems: list[str], *, positive=True):
+    """One number per link (a scalar is repeated); every problem is appended to ``problems``.
+
+    ``n_links`` is None when the joint count itself is invalid: the values are still checked,
+    their count is not. Returns the tuple of floats, or None if anything was wrong.
+    """
+    if _is_number(value):
+        values = [(float(value), None)]
+    elif _is_sequence(value):
+        values, wrong = [], []
+        for i, v in enumerate(value, start=1):
+            if _is_number(v):
+                values.append((float(v), i))
+            else:
+                wrong.append(f"{v!r} (link {i})")
+        if wrong:
+            problems.append(f"{name} must hold numbers, got {_quote(wrong)}")
+        if n_links is not None and len(value) != n_links:
             problems.append(
-                f"{name} has {len(values)} values, expected one number or {n_links}"
+                f"{name} has {len(value)} values, expected one number or {n_links}"
                 f" (= joints + 1, one per link)"
             )
+            wrong.append("count")
+        if wrong:
+            values = [v for v in values if v[1] is not None]
+            _check_values(name, values, positive, problems)
             return None
     else:
-        problems.append(f"{name} must be a number or a list of {n_links} numbers, got {value!r}")
+        expected = f"a list of {n_links} numbers" if n_links is not None else "a list of numbers"
+        problems.append(f"{name} must be a number or {expected}, got {value!r}")
         return None
-    bad = [v for v in values if not math.isfinite(v) or (positive and v <= 0)]
+    if not _check_values(name, values, positive, problems):
+        return None
+    if n_links is None:
+        return None
+    if len(values) == 1 and values[0][1] is None:
+        return (values[0][0],) * n_links
+    return tuple(v for v, _ in values)
+
+
+def _check_values(name, values, positive, problems) -> bool:
+    bad = [(v, i) for v, i in values if not math.isfinite(v) or (positive and v <= 0)]
     if bad:
         kind = "positive finite" if positive else "finite"
-        problems.append(f"{name} must be {kind}, got {bad[0]!r}")
+        quoted = [f"{v!r}" if i is None else f"{v!r} (link {i})" for v, i in bad]
+        problems.append(f"{name} must be {kind}, got {_quote(quoted)}")
+    return not bad
+
+
+def _joint_count(joints, problems: list[str]) -> int | None:
+    """The number of links for a valid ``joints`` (within the generation limit), else None."""
+    if isinstance(joints, bool) or not isinstance(joints, numbers.Integral) or joints < 1:
+        problems.append(f"joints must be an integer >= 1, got {joints!r}")
         return None
-    return tuple(values)
+    from .artifacts import max_joints
+
+    try:
+        limit = max_joints()
+    except InputError as exc:
+        problems.append(str(exc))
+        return None
+    if joints > limit:
+        # refused here, before any per-link tuple of that length is built
+        problems.append(
+            f"joints={joints} exceeds the generation limit of {limit} joints"
+            " (raise it with SNAKECG_MAX_JOINTS if you accept the derivation and compile time)"
+        )
+        return None
+    return int(joints) + 1
+
+
+def _robot_problems(joints, mass, length, inertia, com, name) -> tuple[list[str], dict]:
+    """Every problem of a robot's fields, and the normalized fields (valid only if none)."""
+    problems: list[str] = []
+    n = None if joints is _MISSING else _joint_count(joints, problems)
+    mass = _per_link("mass", mass, n, problems)
+    length = _per_link("length", length, n, problems)
+    inertia = _per_link("inertia", inertia, n, problems)
+    if com is not None:
+        com = _per_link("com", com, n, problems)
+        if com is not None and length is not None:
+            for i, (c, l_) in enumerate(zip(com, length), start=1):
+                if c > l_:
+                    problems.append(f"com of link {i} is {c} m, beyond its length {l_} m")
+    elif length is not None:
+        com = tuple(l_ / 2 for l_ in length)
+    if not isinstance(name, str):
+        problems.append(f"name must be a string, got {name!r}")
+    fields = {"joints": None if n is None else n - 1, "mass": mass, "length": length,
+              "inertia": inertia, "com": com}
+    return problems, fields
 
 
 @dataclass(frozen=True)
@@ -80,29 +168,12 @@ class Robot:
     name: str = field(default="snake", compare=False)
 
     def __post_init__(self):
-        problems: list[str] = []
-        j = self.joints
-        if isinstance(j, bool) or not isinstance(j, int) or j < 1:
-            raise InputError(f"joints must be an integer >= 1, got {j!r}")
-        n = j + 1
-        mass = _per_link("mass", self.mass, n, problems)
-        length = _per_link("length", self.length, n, problems)
-        inertia = _per_link("inertia", self.inertia, n, problems)
-        com = None
-        if self.com is not None:
-            com = _per_link("com", self.com, n, problems)
-            if com is not None and length is not None:
-                for i, (c, l_) in enumerate(zip(com, length), start=1):
-                    if c > l_:
-                        problems.append(f"com of link {i} is {c} m, beyond its length {l_} m")
+        problems, fields = _robot_problems(self.joints, self.mass, self.length, self.inertia,
+                                           self.com, self.name)
         if problems:
             raise InputError("invalid robot: " + "; ".join(problems))
-        if com is None:
-            com = tuple(l_ / 2 for l_ in length)
-        object.__setattr__(self, "mass", mass)
-        object.__setattr__(self, "length", length)
-        object.__setattr__(self, "inertia", inertia)
-        object.__setattr__(self, "com", com)
+        for key, value in fields.items():
+            object.__setattr__(self, key, value)
 
     @property
     def n_links(self) -> int:
@@ -118,9 +189,16 @@ class Robot:
 
     @classmethod
     def from_toml(cls, path: str | Path) -> Robot:
-        """Read the ``[robot]`` table of a robot description file (format in the module doc)."""
+        """Read the ``[robot]`` table of a robot description file (format in the module doc).
+
+        Every problem of the file is reported at once, in one :class:`~snakecg.InputError`.
+        """
         data = _read_toml(path)
-        return _robot_from_table(data, path)
+        robot, problems = _robot_from_table(data)
+        _unknown_tables(data, problems)
+        if problems:
+            raise _file_error(path, problems)
+        return robot
 
 
 _ROBOT_KEYS = {"joints", "mass", "length", "inertia", "com", "name"}
@@ -145,40 +223,44 @@ def _read_toml(path) -> dict:
         raise InputError(f"robot file {str(p)!r} is a directory, expected a TOML file") from None
     except tomllib.TOMLDecodeError as exc:
         raise InputError(f"robot file {str(p)!r} is not valid TOML: {exc}") from None
+    except RecursionError:
+        raise InputError(f"robot file {str(p)!r} is not valid TOML: nested too deeply") from None
     except (OSError, UnicodeDecodeError) as exc:
         raise InputError(f"robot file {str(p)!r} cannot be read: {exc}") from None
 
 
-def _robot_from_table(data: dict, path) -> Robot:
-    problems = []
+def _file_error(path, problems: list[str]) -> InputError:
+    return InputError(f"robot file {str(path)!r}: " + "; ".join(problems))
+
+
+def _unknown_tables(data: dict, problems: list[str]) -> None:
     unknown_top = set(data) - {"robot", "scene"}
     if unknown_top:
-        problems.append(f"unknown tables {sorted(unknown_top)} (expected [robot] and [scene])")
-    table = data.get("robot")
+        problems.append(f"unknown tables or keys {sorted(unknown_top)} at the top level"
+                        " (expected the tables [robot] and [scene])")
+
+
+def _robot_from_table(data: dict) -> tuple[Robot | None, list[str]]:
+    """The ``[robot]`` table as a Robot (None if invalid) and every problem found in it."""
+    problems: list[str] = []
+    table = data.get("robot", _MISSING)
+    if table is _MISSING:
+        return None, ["missing [robot] table"]
     if not isinstance(table, dict):
-        problems.append("missing [robot] table")
-        raise InputError(f"robot file {str(path)!r}: " + "; ".join(problems))
+        return None, [f"[robot] must be a table, got {table!r}"]
     unknown = set(table) - _ROBOT_KEYS
     if unknown:
         problems.append(f"unknown keys in [robot]: {sorted(unknown)} (allowed: "
                         f"{sorted(_ROBOT_KEYS)})")
     if "joints" not in table:
         problems.append("missing key joints in [robot]")
-    kwargs = {k: table[k] for k in _ROBOT_KEYS & set(table)}
+    defaults = {f.name: f.default for f in Robot.__dataclass_fields__.values()}
+    kw = {k: table.get(k, defaults[k]) for k in ("mass", "length", "inertia", "com", "name")}
+    more, _ = _robot_problems(table.get("joints", _MISSING), **kw)
+    problems += more
     if problems:
-        # still validate the values we have to report everything at once
-        try:
-            if "joints" in kwargs:
-                Robot(**kwargs)
-        except InputError as exc:
-            problems.append(str(exc))
-        raise InputError(f"robot file {str(path)!r}: " + "; ".join(problems))
-    try:
-        return Robot(**kwargs)
-    except InputError as exc:
-        raise InputError(f"robot file {str(path)!r}: {exc}") from None
-    except TypeError as exc:  # pragma: no cover
-        raise InputError(f"robot file {str(path)!r}: {exc}") from None
+        return None, problems
+    return Robot(joints=table["joints"], **kw), []
 
 
 @dataclass(frozen=True)
@@ -213,84 +295,13 @@ class Scene:
     wheel_offset: float | tuple = 0.0
 
     def __post_init__(self):
-        problems: list[str] = []
         if not isinstance(self.robot, Robot):
             raise InputError(f"robot must be a snakecg.Robot, got {type(self.robot).__name__}")
-        r = self.robot
-        if self.scenario not in SCENARIOS:
-            problems.append(f"scenario must be one of {', '.join(SCENARIOS)}; got {self.scenario!r}")
-
-        def num(name, value, *, positive=False, nonneg=False):
-            if isinstance(value, bool) or not isinstance(value, (int, float)):
-                problems.append(f"{name} must be a number, got {value!r}")
-                return None
-            v = float(value)
-            if not math.isfinite(v):
-                problems.append(f"{name} must be finite, got {value!r}")
-            elif positive and v <= 0:
-                problems.append(f"{name} must be > 0, got {value!r}")
-            elif nonneg and v < 0:
-                problems.append(f"{name} must be >= 0, got {value!r}")
-            return v
-
-        kappa = num("kappa", self.kappa, positive=True)
-        mu = num("mu", self.mu, nonneg=True)
-        gravity = num("gravity", self.gravity, nonneg=True)
-        dist = num("object_distance", self.object_distance, positive=True)
-        k = self.contact_link
-        if isinstance(k, bool) or not isinstance(k, int) or not 1 <= k <= r.n_links:
-            problems.append(f"contact_link must be a link number 1..{r.n_links}, got {k!r}")
-            k = None
-        offset = self.contact_offset
-        if offset is not None:
-            offset = num("contact_offset", offset)
-            if offset is not None and k is not None and not 0 <= offset <= r.length[k - 1]:
-                problems.append(
-                    f"contact_offset must lie on link {k}: 0..{r.length[k - 1]} m from its rear"
-                    f" end, got {offset}"
-                )
-        side = self.side
-        if side in ("left", 1, +1):
-            side = "left"
-        elif side in ("right", -1):
-            side = "right"
-        else:
-            problems.append(f"side must be 'left' or 'right', got {self.side!r}")
-        inertia = self.object_inertia
-        if inertia is not None:
-            inertia = num("object_inertia", inertia, positive=True)
-        wheels = self.wheel_links
-        if wheels is not None:
-            if isinstance(wheels, (str, bytes)) or not isinstance(wheels, Sequence):
-                problems.append(f"wheel_links must be a list of link numbers, got {wheels!r}")
-                wheels = None
-            else:
-                bad = [w for w in wheels if isinstance(w, bool) or not isinstance(w, int)
-                       or not 1 <= w <= r.n_links]
-                if bad:
-                    problems.append(f"wheel_links must be link numbers 1..{r.n_links}, got {bad[0]!r}")
-                    wheels = None
-                elif k is not None and k in wheels:
-                    problems.append(
-                        f"link {k} touches the object and cannot carry a wheel (assumption 4);"
-                        f" remove it from wheel_links"
-                    )
-                    wheels = None
-                else:
-                    wheels = tuple(sorted(set(wheels)))
-        woff = _per_link("wheel_offset", self.wheel_offset, r.n_links, problems, positive=False)
+        values = {f: getattr(self, f) for f in self.__dataclass_fields__ if f != "robot"}
+        problems, fields = _scene_problems(self.robot, values)
         if problems:
             raise InputError("invalid scene: " + "; ".join(problems))
-        if offset is None:
-            offset = r.length[k - 1] / 2
-        if inertia is None:
-            inertia = kappa * self.link_mass_scale_of(r) * (0.1**2 + 0.1**2) / 12
-        if wheels is None:
-            wheels = tuple(i for i in range(1, r.n_links + 1) if i != k)
-        for name, value in (("kappa", kappa), ("mu", mu), ("gravity", gravity),
-                            ("contact_offset", offset), ("side", side),
-                            ("object_distance", dist), ("object_inertia", inertia),
-                            ("wheel_links", wheels), ("wheel_offset", woff)):
+        for name, value in fields.items():
             object.__setattr__(self, name, value)
 
     @staticmethod
@@ -331,23 +342,125 @@ class Scene:
 
     @classmethod
     def from_toml(cls, path: str | Path, **overrides) -> Scene:
-        """Robot and ``[scene]`` table of a description file; keyword overrides win."""
+        """Robot and ``[scene]`` table of a description file; keyword overrides win.
+
+        Every problem of the file (robot and scene) is reported at once.
+        """
         data = _read_toml(path)
-        robot = _robot_from_table(data, path)
+        robot, problems = _robot_from_table(data)
+        _unknown_tables(data, problems)
         table = data.get("scene", {})
         if not isinstance(table, dict):
-            raise InputError(f"robot file {str(path)!r}: [scene] must be a table")
+            problems.append(f"[scene] must be a table, got {table!r}")
+            table = {}
         unknown = set(table) - _SCENE_KEYS
         if unknown:
-            raise InputError(
-                f"robot file {str(path)!r}: unknown keys in [scene]: {sorted(unknown)}"
-                f" (allowed: {sorted(_SCENE_KEYS)})"
-            )
-        kwargs = dict(table)
+            problems.append(f"unknown keys in [scene]: {sorted(unknown)}"
+                            f" (allowed: {sorted(_SCENE_KEYS)})")
+        kwargs = {k: v for k, v in table.items() if k in _SCENE_KEYS}
         if "wheel_links" in kwargs and isinstance(kwargs["wheel_links"], list):
             kwargs["wheel_links"] = tuple(kwargs["wheel_links"])
         kwargs.update({k: v for k, v in overrides.items() if v is not None})
-        try:
-            return cls(robot, **kwargs)
-        except InputError as exc:
-            raise InputError(f"robot file {str(path)!r}: {exc}") from None
+        values = {f: fld.default for f, fld in cls.__dataclass_fields__.items() if f != "robot"}
+        values.update(kwargs)
+        problems += _scene_problems(robot, values)[0]
+        if problems:
+            raise _file_error(path, problems)
+        return cls(robot, **kwargs)
+
+
+def _scene_problems(r: Robot | None, f: dict) -> tuple[list[str], dict]:
+    """Every problem of a scene's fields (``r`` None: the robot itself is invalid, so only
+    what does not depend on it is checked), and the normalized fields (valid only if none)."""
+    problems: list[str] = []
+    n_links = r.n_links if r is not None else None
+    links = f"1..{n_links}" if n_links is not None else ">= 1"
+    if not isinstance(f["scenario"], str) or f["scenario"] not in SCENARIOS:
+        problems.append(f"scenario must be one of {', '.join(SCENARIOS)}; got {f['scenario']!r}")
+
+    def num(name, value, *, positive=False, nonneg=False):
+        if not _is_number(value):
+            problems.append(f"{name} must be a number, got {value!r}")
+            return None
+        v = float(value)
+        if not math.isfinite(v):
+            problems.append(f"{name} must be finite, got {value!r}")
+            return None
+        if positive and v <= 0:
+            problems.append(f"{name} must be > 0, got {value!r}")
+            return None
+        if nonneg and v < 0:
+            problems.append(f"{name} must be >= 0, got {value!r}")
+            return None
+        return v
+
+    kappa = num("kappa", f["kappa"], positive=True)
+    mu = num("mu", f["mu"], nonneg=True)
+    gravity = num("gravity", f["gravity"], nonneg=True)
+    dist = num("object_distance", f["object_distance"], positive=True)
+    k = f["contact_link"]
+    if (isinstance(k, bool) or not isinstance(k, numbers.Integral) or k < 1
+            or (n_links is not None and k > n_links)):
+        problems.append(f"contact_link must be a link number {links}, got {k!r}")
+        k = None
+    else:
+        k = int(k)
+    offset = f["contact_offset"]
+    if offset is not None:
+        offset = num("contact_offset", offset)
+        if offset is not None and k is not None and not 0 <= offset <= r.length[k - 1]:
+            problems.append(
+                f"contact_offset must lie on link {k}: 0..{r.length[k - 1]} m from its rear"
+                f" end, got {offset}"
+            )
+    side = f["side"]
+    if isinstance(side, str) and side == "left" or _is_number(side) and side == 1:
+        side = "left"
+    elif isinstance(side, str) and side == "right" or _is_number(side) and side == -1:
+        side = "right"
+    else:
+        problems.append(f"side must be 'left' or 'right', got {f['side']!r}")
+    inertia = f["object_inertia"]
+    if inertia is not None:
+        inertia = num("object_inertia", inertia, positive=True)
+    wheels = f["wheel_links"]
+    if wheels is not None:
+        if not _is_sequence(wheels):
+            problems.append(f"wheel_links must be a list of link numbers, got {wheels!r}")
+            wheels = None
+        else:
+            bad = [w for w in wheels if isinstance(w, bool) or not isinstance(w, numbers.Integral)
+                   or w < 1 or (n_links is not None and w > n_links)]
+            if bad:
+                problems.append(f"wheel_links must be link numbers {links}, got "
+                                f"{_quote([repr(w) for w in bad])}")
+                wheels = None
+            elif k is not None and k in wheels:
+                problems.append(
+                    f"link {k} touches the object and cannot carry a wheel (assumption 4);"
+                    f" remove it from wheel_links"
+                )
+                wheels = None
+            else:
+                wheels = tuple(sorted({int(w) for w in wheels}))
+    woff = _per_link("wheel_offset", f["wheel_offset"], n_links, problems, positive=False)
+    if r is not None and kappa is not None:
+        m_obj = kappa * Scene.link_mass_scale_of(r)
+        if not math.isfinite(m_obj):
+            problems.append(f"kappa * mean link mass = {m_obj} (object mass) is not finite")
+        elif inertia is None and not math.isfinite(m_obj * (0.1**2 + 0.1**2) / 12):
+            problems.append("the default object inertia (kappa * mean link mass * 0.02 / 12)"
+                            " is not finite; give object_inertia")
+    if problems or r is None:
+        return problems, {}
+    if offset is None:
+        offset = r.length[k - 1] / 2
+    if inertia is None:
+        inertia = kappa * Scene.link_mass_scale_of(r) * (0.1**2 + 0.1**2) / 12
+    if wheels is None:
+        wheels = tuple(i for i in range(1, r.n_links + 1) if i != k)
+    return problems, {
+        "scenario": f["scenario"], "kappa": kappa, "mu": mu, "gravity": gravity,
+        "contact_link": k, "contact_offset": offset, "side": side, "object_distance": dist,
+        "object_inertia": inertia, "wheel_links": wheels, "wheel_offset": woff,
+    }
