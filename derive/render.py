@@ -335,6 +335,13 @@ def write_index(out_dir: Path | str, joint_counts=CHECKED_IN_JOINTS) -> Path:
     text = _env().get_template("index.py.j2").render(joint_counts=list(joint_counts))
     p = out_dir / "__init__.py"
     tmp = p.with_name(f".__init__.py.tmp-{os.getpid()}")
-    tmp.write_text(text, encoding="utf-8")
-    os.replace(tmp, p)
+    try:
+        with open(tmp, "w", encoding="utf-8", newline="\n") as fh:
+            fh.write(text)
+            fh.flush()
+            os.fsync(fh.fileno())
+        os.replace(tmp, p)  # atomic: a reader sees the old index or the new one
+    finally:
+        tmp.unlink(missing_ok=True)
+    _fsync_dir(out_dir)
     return p

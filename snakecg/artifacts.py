@@ -9,27 +9,34 @@ Where a model folder ``na<N>/`` comes from, in order:
 3. otherwise the generator is asked once (SymPy is imported only then) and the result is
    written atomically into the cache under a file lock.
 
-The cache folder is ``$SNAKECG_CACHE_DIR`` if set, else the platform's user cache folder
-(``~/.cache/snakecg`` on Linux), created with user-only permissions. A folder is loaded only
-after every file's SHA-256 matches its manifest; a corrupted cache entry is reported once
-and rebuilt. Nothing is read from the working directory.
+The cache folder is ``$SNAKECG_CACHE_DIR`` if set (an absolute path), else the platform's
+user cache folder (``~/.cache/snakecg`` on Linux), created with user-only permissions (0700);
+an existing cache folder that belongs to another user or that other users may write is
+refused. A folder is loaded only after every file's SHA-256 matches its manifest; a corrupted
+cache entry is reported once and rebuilt. Nothing is read from the working directory: a
+``snakecg_generated`` package that is found there (``''`` or the current folder on
+``sys.path``) is ignored unless ``snakecg`` itself was imported from there.
 """
 
 from __future__ import annotations
 
 import hashlib
+import importlib.machinery
+import importlib.util
 import json
 import os
 import shutil
+import stat
+import sys
 import warnings
-import importlib.util
 from importlib import metadata
-from pathlib import Path
+from pathlib import Path, PurePosixPath
 
 from .errors import ArtifactError, BuildError, InputError
 
 __all__ = [
     "cache_dir",
+    "make_private_dir",
     "derive_fingerprint",
     "model_dir",
     "verify_model_dir",
@@ -57,7 +64,7 @@ def max_joints() -> int:
 
 
 def cache_dir() -> Path:
-    """The user's snakecg cache folder (created, mode 0700)."""
+    """The user's snakecg cache folder (created with mode 0700; refused if others may write it)."""
     raw = os.environ.get("SNAKECG_CACHE_DIR")
     if raw:
         path = Path(raw).expanduser()
@@ -66,16 +73,97 @@ def cache_dir() -> Path:
                 f"SNAKECG_CACHE_DIR must be an absolute path, got {raw!r}"
                 " (a relative path would make the cache depend on the working directory)"
             )
+        error = InputError
     else:
         import platformdirs
 
         path = Path(platformdirs.user_cache_dir("snakecg", appauthor=False))
-    path.mkdir(parents=True, exist_ok=True, mode=0o700)
+        error = ArtifactError
+    make_private_dir(path, error=error)
     return path
 
 
+def make_private_dir(path: Path, *, error=ArtifactError) -> Path:
+    """Create ``path`` and its missing parents with mode 0700 and check that it is private.
+
+    A folder that already exists is accepted if it belongs to the current user and neither
+    its group nor other users may write it (a folder others can write could be made to hold
+    a library or model that snakecg would then load).
+    """
+    missing = []
+    p = path
+    while not p.exists() and p != p.parent:
+        missing.append(p)
+        p = p.parent
+    for d in reversed(missing):
+        try:
+            d.mkdir(mode=0o700)
+        except FileExistsError:
+            continue
+        os.chmod(d, 0o700)  # independent of the umask
+    try:
+        st = path.stat()
+    except OSError as exc:
+        raise error(f"cannot create the cache folder {path}: {exc}") from None
+    if not stat.S_ISDIR(st.st_mode):
+        raise error(f"cache folder {path} exists and is not a directory")
+    if hasattr(os, "getuid") and st.st_uid != os.getuid():
+        raise error(
+            f"cache folder {path} belongs to another user (uid {st.st_uid}); set"
+            " SNAKECG_CACHE_DIR to a folder of your own"
+        )
+    if st.st_mode & (stat.S_IWGRP | stat.S_IWOTH):
+        raise error(
+            f"cache folder {path} is writable by other users (mode {stat.S_IMODE(st.st_mode):o});"
+            " make it private (chmod go-w) or point SNAKECG_CACHE_DIR at a folder only you can"
+            " write"
+        )
+    return path
+
+
+def _working_dir_entries() -> set[str]:
+    """``sys.path`` entries that stand for the working directory (unless snakecg lives there)."""
+    try:
+        cwd = Path.cwd().resolve()
+    except OSError:  # the working directory was removed
+        return set()
+    home = Path(__file__).resolve().parent.parent  # the sys.path entry snakecg came from
+    if home == cwd:
+        return set()
+    out = set()
+    for entry in sys.path:
+        try:
+            if entry in ("", ".") or Path(entry).resolve() == cwd:
+                out.add(entry)
+        except (OSError, TypeError, ValueError):
+            continue
+    return out
+
+
+def _find_spec(name: str):
+    """``importlib.util.find_spec(name)``, skipping packages found in the working directory."""
+    skip = _working_dir_entries()
+    if not skip:
+        return importlib.util.find_spec(name)
+    path = [e for e in sys.path if e not in skip]
+    for finder in sys.meta_path:
+        if finder is importlib.machinery.PathFinder:
+            spec = importlib.machinery.PathFinder.find_spec(name, path)
+        else:
+            find = getattr(finder, "find_spec", None)
+            if find is None:
+                continue
+            try:
+                spec = find(name, None)
+            except (ImportError, AttributeError, TypeError, ValueError):
+                continue
+        if spec is not None:
+            return spec
+    return None
+
+
 def _package_dir(name: str) -> Path | None:
-    spec = importlib.util.find_spec(name)
+    spec = _find_spec(name)
     if spec is None or not spec.origin or spec.origin in ("namespace", "built-in"):
         return None
     return Path(spec.origin).parent
@@ -108,8 +196,21 @@ def _sha_file(path: Path) -> str:
     return hashlib.sha256(path.read_bytes()).hexdigest()
 
 
+def _safe_relative(name) -> bool:
+    """A manifest file name: a plain relative path inside the folder (no ``..``, no root)."""
+    if not isinstance(name, str) or not name or "\\" in name or "\0" in name:
+        return False
+    pp = PurePosixPath(name)
+    return not pp.is_absolute() and all(part not in ("", ".", "..") for part in pp.parts)
+
+
 def verify_model_dir(path: Path, n_joints: int | None = None) -> dict:
-    """Read ``manifest.json`` and check every listed file's SHA-256; return the manifest."""
+    """Read ``manifest.json`` and check every listed file's SHA-256; return the manifest.
+
+    Raises :class:`ArtifactError` (naming the folder and the problem) for a missing or
+    unreadable manifest, a manifest of another format or joint count, a file name that leaves
+    the folder, or a file that is missing or does not match its hash.
+    """
     mpath = path / "manifest.json"
     try:
         manifest = json.loads(mpath.read_text(encoding="utf-8"))
@@ -123,10 +224,16 @@ def verify_model_dir(path: Path, n_joints: int | None = None) -> dict:
         raise ArtifactError(
             f"{path}: manifest is for n_joints={manifest.get('n_joints')}, expected {n_joints}"
         )
+    for key, kind in (("prefix", str), ("build_hash", str), ("functions", list),
+                      ("n_joints", int)):
+        if not isinstance(manifest.get(key), kind):
+            raise ArtifactError(f"{path}: manifest has no valid {key!r}")
     files = manifest.get("files")
     if not isinstance(files, dict) or "model.py" not in files:
         raise ArtifactError(f"{path}: manifest lists no files")
     for name, digest in files.items():
+        if not _safe_relative(name) or not isinstance(digest, str):
+            raise ArtifactError(f"{path}: manifest lists an invalid file entry {name!r}")
         p = path / name
         if not p.is_file():
             raise ArtifactError(f"{path}: {name} is missing")
@@ -180,7 +287,7 @@ def model_dir(n_joints: int, *, generate: bool = True, progress=None) -> tuple[P
 def _generate(n_joints: int, root: Path, progress) -> tuple[Path, dict]:
     from filelock import FileLock
 
-    root.mkdir(parents=True, exist_ok=True, mode=0o700)
+    make_private_dir(root)
     folder = root / f"na{n_joints}"
     with FileLock(str(root / f"na{n_joints}.lock")):
         if folder.exists():  # another process finished while we waited
@@ -188,6 +295,10 @@ def _generate(n_joints: int, root: Path, progress) -> tuple[Path, dict]:
                 return folder, verify_model_dir(folder, n_joints)
             except ArtifactError:
                 shutil.rmtree(folder, ignore_errors=True)
+        # Leftovers of writers that were killed: only a lock holder writes here, so every
+        # temporary folder of this joint count belongs to a dead process.
+        for stale in list(root.glob(f".na{n_joints}.tmp-*")) + list(root.glob(f".na{n_joints}.old-*")):
+            shutil.rmtree(stale, ignore_errors=True)
         try:
             from snakecg_derive.render import render_model, write_model
         except ImportError as exc:  # pragma: no cover - broken install
@@ -195,4 +306,4 @@ def _generate(n_joints: int, root: Path, progress) -> tuple[Path, dict]:
         rendered = render_model(n_joints, regen_out=str(root), progress=progress,
                                 max_joints=max_joints())
         write_model(rendered, root)
-    return folder, verify_model_dir(folder, n_joints)
+        return folder, verify_model_dir(folder, n_joints)

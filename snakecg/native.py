@@ -28,7 +28,7 @@ from pathlib import Path
 
 import numpy as np
 
-from .artifacts import cache_dir
+from .artifacts import cache_dir, make_private_dir
 from .errors import BuildError
 
 __all__ = ["CompiledBackend", "CasadiBackend", "load_backend", "compile_model", "find_compiler"]
@@ -36,6 +36,8 @@ __all__ = ["CompiledBackend", "CasadiBackend", "load_backend", "compile_model", 
 OPT_FLAGS = ["-O2", "-fPIC"]
 LARGE_FLAGS = ["-fno-tree-pre", "-fno-code-hoisting"]
 _warned: set[str] = set()
+#: Up to this batch size the outputs of a compiled call share one buffer (see CompiledBackend).
+_SMALL_BATCH = 64
 
 
 def find_compiler() -> str | None:
@@ -66,17 +68,35 @@ def _build_key(manifest: dict, cc: str) -> str:
     return h.hexdigest()[:24]
 
 
+#: Lines of the compiler's stderr quoted in an error message (all of it is in ``.stderr``).
+_STDERR_LINES = 40
+
+
 def _run(cmd: list[str]) -> None:
     try:
-        res = subprocess.run(cmd, capture_output=True, text=True)
+        res = subprocess.run(cmd, capture_output=True, text=True, errors="replace")
     except OSError as exc:
-        raise BuildError(f"could not run the C compiler: {exc}", command=cmd) from exc
+        raise BuildError(f"could not run the C compiler: {exc}; command: {' '.join(cmd)}",
+                         command=cmd) from exc
     if res.returncode != 0:
+        lines = res.stderr.strip().splitlines()
+        shown = "\n".join(lines[-_STDERR_LINES:])
+        if len(lines) > _STDERR_LINES:
+            shown = f"[... {len(lines) - _STDERR_LINES} earlier lines]\n{shown}"
         raise BuildError(
-            f"C compiler failed (exit {res.returncode}): {' '.join(cmd)}\n{res.stderr.strip()}",
+            f"C compiler failed (exit {res.returncode}): {' '.join(cmd)}\n{shown}",
             command=cmd,
             stderr=res.stderr,
         )
+
+
+def _no_compiler() -> BuildError:
+    cc = os.environ.get("CC")
+    if cc:
+        return BuildError(f"the C compiler CC={cc!r} was not found or is not executable"
+                          " (set CC to a working compiler, or unset it to use cc/gcc/clang)",
+                          command=[cc])
+    return BuildError("no C compiler found (set CC or install gcc)")
 
 
 def compile_model(folder: Path, manifest: dict, *, progress=None) -> Path:
@@ -90,17 +110,23 @@ def compile_model(folder: Path, manifest: dict, *, progress=None) -> Path:
 
     cc = find_compiler()
     if cc is None:
-        raise BuildError("no C compiler found (set CC or install gcc)")
+        raise _no_compiler()
     key = _build_key(manifest, cc)
     out_dir = cache_dir() / "build" / f"na{manifest['n_joints']}-{key}"
     lib = out_dir / "model.so"
     stamp = out_dir / "model.so.sha256"
     if _library_ok(lib, stamp):
         return lib
-    out_dir.mkdir(parents=True, exist_ok=True, mode=0o700)
+    make_private_dir(out_dir)
     with FileLock(str(out_dir / "build.lock")):
         if _library_ok(lib, stamp):
             return lib
+        if lib.exists() or stamp.exists():
+            _report_once(str(lib), f"snakecg: the cached library {lib} is corrupted or"
+                         " incomplete (it does not match its checksum); rebuilding it")
+        # Leftovers of builds that were killed: only the lock holder builds here.
+        for stale in out_dir.glob("build-*"):
+            shutil.rmtree(stale, ignore_errors=True)
         step = progress or (lambda msg: None)
         sources = sorted(n for n in manifest["files"] if n.endswith(".c"))
         large = {f"c/{f['name']}.c" for f in manifest["functions"] if f.get("large")}
@@ -117,8 +143,14 @@ def compile_model(folder: Path, manifest: dict, *, progress=None) -> Path:
             with ThreadPoolExecutor(max_workers=max(1, os.cpu_count() or 1)) as pool:
                 objs = list(pool.map(one, sources))
             tmp_lib = tmp / "model.so"
-            _run([cc, "-shared", *[str(o) for o in objs], "-o", str(tmp_lib), "-lm"])
+            link = [cc, "-shared", *[str(o) for o in objs], "-o", str(tmp_lib), "-lm"]
+            _run(link)
+            if not tmp_lib.is_file():
+                raise BuildError(f"the C compiler wrote no library: {' '.join(link)}",
+                                 command=link)
             digest = hashlib.sha256(tmp_lib.read_bytes()).hexdigest()
+            # the stamp goes first and comes back last: a library is trusted only with it
+            stamp.unlink(missing_ok=True)
             os.replace(tmp_lib, lib)
             tmp_stamp = tmp / "stamp"
             tmp_stamp.write_text(digest)
@@ -126,6 +158,12 @@ def compile_model(folder: Path, manifest: dict, *, progress=None) -> Path:
         finally:
             shutil.rmtree(tmp, ignore_errors=True)
     return lib
+
+
+def _report_once(key: str, message: str) -> None:
+    if key not in _warned:
+        _warned.add(key)
+        warnings.warn(message, RuntimeWarning, stacklevel=4)
 
 
 def _library_ok(lib: Path, stamp: Path) -> bool:
@@ -145,6 +183,9 @@ class _Signature:
         self.in_sizes = [i["rows"] * i["cols"] for i in sig["inputs"]]
         self.out_names = [o["name"] for o in sig["outputs"]]
         self.out_shapes = [(o["rows"], o["cols"]) for o in sig["outputs"]]
+        self.out_offsets = [0]
+        for r, c in self.out_shapes:
+            self.out_offsets.append(self.out_offsets[-1] + r * c)
 
 
 def _check_input(sig: _Signature, k: int, a: np.ndarray, n: int, size: int) -> None:
@@ -191,12 +232,33 @@ class CompiledBackend:
         n_in = len(sig.in_sizes)
         argp = (ctypes.c_void_p * n_in)()
         strides = (ctypes.c_longlong * n_in)()
+        # Reading an array's address (``a.ctypes.data``) costs about 1 us, as much as the C call
+        # for one sample, so broadcast (1-D) inputs are packed into one buffer and small
+        # batches get one output buffer: one address lookup each instead of one per array.
+        shared = []
         for k, (a, size) in enumerate(zip(inputs, sig.in_sizes)):
             _check_input(sig, k, a, n, size)
-            argp[k] = a.ctypes.data
-            strides[k] = 0 if a.ndim == 1 else size
-        outs = [np.empty((n, c, r)) for (r, c) in sig.out_shapes]
-        resp = (ctypes.c_void_p * len(outs))(*[o.ctypes.data for o in outs])
+            if a.ndim == 1:
+                shared.append(k)
+            else:
+                argp[k] = a.ctypes.data
+                strides[k] = size
+        if shared:
+            packed = np.concatenate([inputs[k] for k in shared])  # alive until the call returns
+            base, off = packed.ctypes.data, 0
+            for k in shared:
+                argp[k] = base + 8 * off
+                off += sig.in_sizes[k]
+        if n <= _SMALL_BATCH:
+            buf = np.empty(n * sig.out_offsets[-1])
+            base = buf.ctypes.data
+            resp = (ctypes.c_void_p * len(sig.out_shapes))(
+                *[base + 8 * n * o for o in sig.out_offsets[:-1]])
+            outs = [buf[n * o: n * (o + r * c)].reshape(n, c, r)
+                    for o, (r, c) in zip(sig.out_offsets, sig.out_shapes)]
+        else:
+            outs = [np.empty((n, c, r)) for (r, c) in sig.out_shapes]
+            resp = (ctypes.c_void_p * len(outs))(*[o.ctypes.data for o in outs])
         status = self._fns[name](n, argp, strides, resp)
         if status != 0:
             raise BuildError(f"{name}: evaluation failed at sample {status - 1} (status {status})")
@@ -255,17 +317,16 @@ def load_backend(folder: Path, manifest: dict, *, prefer: str = "compiled", prog
         try:
             return CompiledBackend(compile_model(folder, manifest, progress=progress), manifest)
         except BuildError as exc:
-            key = f"{manifest['n_joints']}:{exc}"
-            if key not in _warned:
-                _warned.add(key)
-                warnings.warn(
-                    "snakecg: using CasADi's in-process evaluation (slower) because the C build "
-                    f"failed: {exc}",
-                    RuntimeWarning,
-                    stacklevel=3,
-                )
-        except OSError as exc:
-            warnings.warn(f"snakecg: cannot load the compiled model ({exc}); using CasADi",
-                          RuntimeWarning, stacklevel=3)
+            _report_once(
+                f"{manifest['n_joints']}:{exc}",
+                "snakecg: using CasADi's in-process evaluation (slower) because the C build "
+                f"failed: {exc}",
+            )
+        except (OSError, AttributeError) as exc:  # dlopen failed, or a symbol is missing
+            _report_once(
+                f"{manifest['n_joints']}:load:{exc}",
+                f"snakecg: using CasADi's in-process evaluation (slower) because the compiled "
+                f"model cannot be loaded: {exc}",
+            )
     return CasadiBackend(folder, manifest)
 
