@@ -179,7 +179,7 @@ def _quadratic_extremes(model, qa):
     return ex
 
 
-def _wheels_extremes(model, qa, samples: int, refine: int):
+def _wheels_extremes(model, qa, samples: int, refine: int, starts: int = 2):
     """Extremes for bounded wheels: exact candidates + dense boundary sampling + refinement."""
     n, na = qa.shape[0], model.n_joints
     ideal = _quadratic_extremes_for(model, qa, scenario="ideal_wheels")
@@ -193,70 +193,70 @@ def _wheels_extremes(model, qa, samples: int, refine: int):
         cand.append(ideal.tau_min_kept[m][:, None, :])
     taus = np.concatenate(cand, axis=1)  # (n, K, na)
     K = taus.shape[1]
-    qrep = np.repeat(qa, K, axis=0)
-    res = model.forward(qrep, taus.reshape(n * K, na))
+    res = model.forward(np.repeat(qa, K, axis=0), taus.reshape(n * K, na))
     vals = {m: getattr(res, m).reshape(n, K) for m in METRICS}
     kept = res.contact.reshape(n, K)
     ex = Extremes(method=f"wheels: ideal-wheel eigenvectors + {samples} boundary directions, "
-                         f"exact forward solve, {refine} refinement rounds of the maxima")
+                         f"exact forward solve, pattern search from the {starts} best of them "
+                         f"({refine} rounds) for the maxima")
+    rows = np.arange(n)
     for m in METRICS:
-        imax = np.argmax(vals[m], axis=1)
         imin = np.argmin(vals[m], axis=1)
-        ex.max[m] = vals[m][np.arange(n), imax]
-        ex.tau_max[m] = taus[np.arange(n), imax]
-        ex.min[m] = vals[m][np.arange(n), imin]
-        ex.tau_min[m] = taus[np.arange(n), imin]
+        ex.min[m] = vals[m][rows, imin]
+        ex.tau_min[m] = taus[rows, imin]
         vk = np.where(kept, vals[m], np.inf)
         ik = np.argmin(vk, axis=1)
-        ex.min_kept[m] = vals[m][np.arange(n), ik]
-        ex.tau_min_kept[m] = taus[np.arange(n), ik]
-    if refine:
-        _refine(model, qa, N, L, ex, rounds=refine)
+        ex.min_kept[m] = vals[m][rows, ik]
+        ex.tau_min_kept[m] = taus[rows, ik]
+        k = min(starts, K)
+        top = np.argsort(-vals[m], axis=1)[:, :k]  # (n, k) best starting points
+        t0 = taus[rows[:, None], top]  # (n, k, na)
+        v0 = vals[m][rows[:, None], top]
+        if refine and na >= 2:
+            t0, v0 = _pattern_search(model, qa, L, Linv_T, m, t0, v0, refine)
+        j = np.argmax(v0, axis=1)
+        ex.max[m] = v0[rows, j]
+        ex.tau_max[m] = t0[rows, j]
     return ex
 
 
-def _refine(model, qa, N, L, ex, rounds: int, kinds=("max",)):
-    """Local search on the ellipsoid boundary around each extreme (pattern search with a
-    shrinking step along the tangent directions)."""
-    n, na = qa.shape[0], model.n_joints
-    if na < 2:
-        return
+def _pattern_search(model, qa, L, Linv_T, metric, t0, v0, rounds: int):
+    """Maximise ``metric`` on the ellipsoid boundary from ``k`` starts per configuration.
+
+    Coordinates on the unit sphere ``u = L^T tau``; each round tries ``2 n_a`` moves along
+    the tangent projections of the axes with a shrinking step, keeping improvements.
+    """
+    n, k, na = t0.shape
     LT = np.swapaxes(L, -1, -2)
-    Linv_T = np.swapaxes(np.linalg.inv(L), -1, -2)
-    for m in METRICS:
-        for kind in kinds:
-            store, tstore = (ex.max, ex.tau_max) if kind == "max" else (ex.min_kept,
-                                                                         ex.tau_min_kept)
-            sign = 1.0 if kind == "max" else -1.0
-            u = np.einsum("bij,bj->bi", LT, tstore[m])  # unit-sphere coordinates
-            best = store[m].copy()
-            step = 0.05
-            for _ in range(rounds):
-                # 2 (na - 1) tangent moves per configuration
-                moves = []
-                for k in range(na):
-                    e = np.zeros(na)
-                    e[k] = 1.0
-                    t = e[None, :] - np.sum(u * e, axis=1, keepdims=True) * u
-                    nt = np.linalg.norm(t, axis=1, keepdims=True)
-                    t = np.where(nt > 1e-12, t / np.maximum(nt, 1e-12), 0.0)
-                    moves += [u + step * t, u - step * t]
-                cand = np.stack(moves, axis=1)
-                cand /= np.linalg.norm(cand, axis=2, keepdims=True)
-                taus = np.einsum("bij,bkj->bki", Linv_T, cand)
-                K = cand.shape[1]
-                res = model.forward(np.repeat(qa, K, axis=0), taus.reshape(n * K, na))
-                v = getattr(res, m).reshape(n, K)
-                if kind == "min_kept":
-                    v = np.where(res.contact.reshape(n, K), v, np.inf)
-                j = np.argmax(sign * v, axis=1)
-                vj = v[np.arange(n), j]
-                better = sign * vj > sign * best + 1e-15
-                best = np.where(better, vj, best)
-                u = np.where(better[:, None], cand[np.arange(n), j], u)
-                tstore[m] = np.where(better[:, None], taus[np.arange(n), j], tstore[m])
-                step *= 0.6
-            store[m] = best
+    u = np.einsum("bij,bkj->bki", LT, t0)
+    best = v0.copy()
+    tau = t0.copy()
+    step = 0.2
+    qrep = np.repeat(qa, k * 2 * na, axis=0)
+    for _ in range(rounds):
+        moves = []
+        for a in range(na):
+            e = np.zeros(na)
+            e[a] = 1.0
+            t = e - np.sum(u * e, axis=2, keepdims=True) * u
+            nt = np.linalg.norm(t, axis=2, keepdims=True)
+            t = np.where(nt > 1e-12, t / np.maximum(nt, 1e-12), 0.0)
+            moves += [u + step * t, u - step * t]
+        cand = np.stack(moves, axis=2)  # (n, k, 2 na, na)
+        cand /= np.linalg.norm(cand, axis=3, keepdims=True)
+        taus = np.einsum("bij,bkmj->bkmi", Linv_T, cand)
+        res = model.forward(qrep, taus.reshape(-1, na))
+        v = getattr(res, metric).reshape(n, k, 2 * na)
+        j = np.argmax(v, axis=2)
+        vj = np.take_along_axis(v, j[..., None], axis=2)[..., 0]
+        better = vj > best + 1e-15 * np.abs(best)
+        best = np.where(better, vj, best)
+        pick_u = np.take_along_axis(cand, j[..., None, None], axis=2)[:, :, 0]
+        pick_t = np.take_along_axis(taus, j[..., None, None], axis=2)[:, :, 0]
+        u = np.where(better[..., None], pick_u, u)
+        tau = np.where(better[..., None], pick_t, tau)
+        step *= 0.6
+    return tau, best
 
 
 def _quadratic_extremes_for(model, qa, scenario: str):
@@ -270,13 +270,15 @@ def _quadratic_extremes_for(model, qa, scenario: str):
     return _quadratic_extremes(other, qa)
 
 
-def extremes(model, q, *, samples: int | None = None, refine: int = 6) -> Extremes:
+def extremes(model, q, *, samples: int | None = None, refine: int = 6,
+             starts: int = 2) -> Extremes:
     """Best and worst ``norm_a_obj``, ``norm_qdd``, ``norm_lambda`` and ``sr`` over the
     input ellipsoid of eq. (31), with the torques attaining them (see the module docstring).
 
     ``q``: ``(n_s,)`` or ``(N, n_s)``. For ``wheels``, ``samples`` boundary directions
-    (default 64 for 2 joints, 120 for 3, 600 above) and ``refine`` local-search rounds of the
-    maxima (the minima are taken over the candidates).
+    (default 64 for 2 joints, 120 for 3, 600 above), then ``refine`` rounds of pattern search
+    from the ``starts`` best candidates of each maximum (the minima are taken over the
+    candidates).
     """
     qa, batched = model._q(q)
     if model.scene.scenario == "wheels":
@@ -284,7 +286,7 @@ def extremes(model, q, *, samples: int | None = None, refine: int = 6) -> Extrem
             samples = {1: 2, 2: 64, 3: 120}.get(model.n_joints, 600)
         if not isinstance(samples, int) or samples < 2:
             raise InputError(f"samples must be an integer >= 2, got {samples!r}")
-        ex = _wheels_extremes(model, qa, samples, refine)
+        ex = _wheels_extremes(model, qa, samples, refine, starts)
     else:
         ex = _quadratic_extremes(model, qa)
     return ex if batched else ex._squeeze()
