@@ -10,6 +10,7 @@ Generalized coordinates ``q = (x, y, theta, q1..q4)`` (n_s = 7).
 Functions (inputs -> outputs, in argument order):
 * ``derived_parameters(link_mass, link_length, link_inertia, link_com) -> K``* ``link_poses(q, K) -> poses``* ``link_jacobians(q, K) -> J`` (eq. (3))* ``link_bias_accelerations(q, v, K) -> bias``* ``mass_matrix(q, K) -> M`` (eq. (4))* ``bias_forces(q, v, K) -> h`` (eq. (4))* ``contact_row_local(link_pose, link_twist, link_bias, link_com, object_pose, object_twist, rho, side) -> a_link, g_obj, adot_v, gap, s`` (eq. (8)-(13))* ``wheel_row_local(link_pose, link_twist, link_bias, wheel_offset) -> a_w, adot_v`` (eq. (8)-(13))* ``constrained_dynamics(q, v, tau, q_obj, v_obj, f_obj, K, contact_link, side, object_mass, object_inertia, rho, wheel_offset, free, lam_fixed, regularization) -> qdd, a_obj, lam, w, gap, s, norm_lambda, norm_a_obj, norm_qdd, sr, pivot_ratio, delassus, b``
 * ``interaction_maps(q, K, contact_link, side, object_mass, object_inertia, q_obj, rho, wheel_offset, free, lam_fixed, regularization) -> lam_from_tau, ..., delassus, pivot_ratio``
+* ``metric_forms(q, K, contact_link, side, object_mass, object_inertia, q_obj, rho, wheel_offset, free, regularization) -> omega_tau, xi_tau, lambda_form_tau, input_metric, contact_from_tau, pivot_ratio``
 * ``place_object(q, K, contact_link, contact_offset, object_distance, side) -> q_obj, rho, contact_point``
 """
 
@@ -1134,6 +1135,51 @@ def interaction_maps():
                        [ca.densify(o) for o in ca.cse(outs)], names, onames)
 
 
+def metric_forms():
+    """The quadratic forms of the metrics in ``tau`` at rest, for a given active set.
+
+    A lean subset of ``interaction_maps`` for the extremes over the input ellipsoid:
+    ``omega_tau`` (eq. 29), ``xi_tau`` (eq. 28), ``lambda_form_tau`` (``lam^T G_c lam``), the
+    input metric ``B^T M_s^-1 B`` (eq. 31, corrected) and the contact row of
+    ``lam_from_tau`` (its sign tells whether a torque keeps the contact).
+    """
+    ns, na = N_COORDINATES, N_JOINTS
+    fn = _model_functions()
+    q = SX.sym("q", ns)
+    K = SX.sym("K", N_PARAMETERS)
+    sc = _scene_inputs()
+    A, _, _, _ = _rows(fn, q, SX(ns, 1), K, sc["contact_link"], sc["side"], sc["q_obj"],
+                       SX(3, 1), sc["rho"], sc["wheel_offset"])
+    M = fn["mass_matrix"](q, K)
+    L, d = _ldl(M)
+    As, Ao = A[:, :ns], A[:, ns:]
+    Bm = _actuation()
+    X = _ldl_solve(L, d, ca.horzcat(Bm, As.T))
+    MinvB, MinvAsT = X[:, :na], X[:, na:]
+    mo = _col(sc["object_mass"], sc["object_mass"], sc["object_inertia"])
+    IoinvAoT = ca.mtimes(ca.diag(1 / mo), Ao.T)
+    Gc = ca.mtimes(As, MinvAsT) + ca.mtimes(Ao, IoinvAoT)
+    free = sc["free"]
+    Lg, dg, ratio = _masked_delassus(Gc, free, sc["regularization"])
+    # lam_tau = -G'^-1 D A_s M^-1 B
+    lam_tau = -_ldl_solve(Lg, dg, ca.mtimes(ca.diag(free), ca.mtimes(As, MinvB)))
+    qdd_tau = MinvB + ca.mtimes(MinvAsT, lam_tau)
+    a_tau = ca.mtimes(IoinvAoT, lam_tau)
+    xi = ca.mtimes([qdd_tau.T, M, qdd_tau])
+    omega = ca.mtimes([a_tau.T, ca.diag(mo), a_tau])
+    lam_form = ca.mtimes([lam_tau.T, Gc, lam_tau])
+    metric = ca.mtimes(Bm.T, MinvB)
+    ins = [q, K, sc["contact_link"], sc["side"], sc["object_mass"], sc["object_inertia"],
+           sc["q_obj"], sc["rho"], sc["wheel_offset"], free, sc["regularization"]]
+    names = ["q", "K", "contact_link", "side", "object_mass", "object_inertia", "q_obj", "rho",
+             "wheel_offset", "free", "regularization"]
+    outs = [omega, xi, lam_form, metric, lam_tau[0, :], ratio]
+    onames = ["omega_tau", "xi_tau", "lambda_form_tau", "input_metric", "contact_from_tau",
+              "pivot_ratio"]
+    return ca.Function(PREFIX + "metric_forms", ins,
+                       [ca.densify(o) for o in ca.cse(outs)], names, onames)
+
+
 def place_object():
     """Pose of the object and its contact point for a contact at ``contact_offset``.
 
@@ -1178,5 +1224,6 @@ def all_functions():
         wheel_row_local(),
         constrained_dynamics(),
         interaction_maps(),
+        metric_forms(),
         place_object(),
     ]
