@@ -1,0 +1,151 @@
+"""``snakecg simulate``: pushing over time, with contact and wheel transitions as events."""
+
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+from pathlib import Path
+
+import numpy as np
+
+from ..errors import InputError
+from ._common import add_robot_args, parse_vector, print_json, progress_reporter, scene_from_args
+
+EXAMPLES = """\
+examples:
+  snakecg simulate --joints 3 --q 0,0,0,30deg,-35deg,25deg --tau 0.035,0,-0.014 --duration 0.5
+  snakecg simulate --joints 3 --scenario wheels --kappa 10 --q 0,0,0,30deg,-35deg,25deg \\
+      --controller least-slip-push --a-min 0.02 --control-period 0.01 --out run1
+  snakecg simulate --joints 2 --q 0,0,0,30deg,-35deg --tau 0.05,-0.02 --json --no-figures
+"""
+
+
+def register(sub) -> None:
+    p = sub.add_parser(
+        "simulate",
+        help="integrate the snake + object over time (contact loss, impacts, wheel slip)",
+        description="Integrate the coupled snake + object dynamics from configuration --q "
+        "(and velocities --v, --v-obj) for --duration seconds with constant joint torques "
+        "--tau, or with the least-slippage push query as a feedback law (--controller). "
+        "Contact separation, impacts and wheels breaking away or sticking again are events. "
+        "Writes the trajectory (trajectory.npz), the summary (summary.json), figures (PNG) and "
+        "an animation (GIF) to --out; --json prints the summary (docs/simulate.md).",
+        epilog=EXAMPLES,
+        formatter_class=argparse.RawDescriptionHelpFormatter,
+    )
+    add_robot_args(p)
+    p.add_argument("--q", required=True, metavar="Q",
+                   help="initial configuration x,y,theta,q1..qn (m and rad; NNdeg for degrees; "
+                   "--q=-1,... when the first value is negative)")
+    p.add_argument("--tau", metavar="TAU",
+                   help="constant joint torques tau1..tau_n (N m); or use --controller")
+    p.add_argument("--v", metavar="V", help="initial snake velocities (default: rest)")
+    p.add_argument("--v-obj", metavar="VO", help="initial object twist vx,vy,omega (default 0)")
+    p.add_argument("--duration", type=float, default=0.5, help="seconds (default 0.5)")
+    p.add_argument("--controller", choices=("least-slip-push",),
+                   help="feedback law instead of --tau: the least-slippage push query "
+                   "(snakecg optimize) answered every --control-period")
+    p.add_argument("--a-min", type=float,
+                   help="controller task: object acceleration along the contact normal (m/s^2)")
+    p.add_argument("--tau-max", type=float, help="controller: torque limit |tau_j| (N m)")
+    p.add_argument("--control-period", type=float,
+                   help="zero-order hold of the controller (s, default 0.01)")
+    p.add_argument("--method", default="DOP853",
+                   help="scipy solve_ivp method (default DOP853)")
+    p.add_argument("--rtol", type=float, default=1e-9, help="relative tolerance (default 1e-9)")
+    p.add_argument("--atol", type=float, default=1e-11, help="absolute tolerance (default 1e-11)")
+    p.add_argument("--stabilization", type=float, default=20.0,
+                   help="Baumgarte rate of the held rows, 1/s (default 20; 0: off)")
+    p.add_argument("--output-dt", type=float, help="output sample spacing (default duration/400)")
+    p.add_argument("--out", default="snakecg-output/simulate", metavar="DIR",
+                   help="output folder (default snakecg-output/simulate)")
+    p.add_argument("--no-figures", action="store_true", help="write no PNG and no GIF")
+    p.add_argument("--no-animation", action="store_true", help="write the PNGs but no GIF")
+    p.add_argument("--frames", type=int, default=100, help="animation frames (default 100)")
+    p.add_argument("--json", action="store_true",
+                   help="print the summary as JSON (schema snakecg.simulate/1)")
+    p.set_defaults(run=run)
+
+
+def run(args) -> int:
+    from .. import load
+    from ..simulate import least_slip_push_controller, save_figures, simulate
+
+    scene = scene_from_args(args)
+    q = parse_vector("--q", args.q)
+    v = parse_vector("--v", args.v) if args.v else None
+    v_obj = parse_vector("--v-obj", args.v_obj) if args.v_obj else None
+    if args.frames < 2:
+        raise InputError(f"--frames must be at least 2, got {args.frames}")
+    model = load(scene, progress=progress_reporter())
+    control_period = args.control_period
+    if args.controller:
+        if args.tau:
+            raise InputError("give either --tau or --controller, not both")
+        if args.a_min is None:
+            raise InputError("--controller least-slip-push needs --a-min (m/s^2 along the "
+                             "contact normal)")
+        tau = least_slip_push_controller(model, a_min=args.a_min, tau_max=args.tau_max)
+        if control_period is None:
+            control_period = 0.01
+    else:
+        if not args.tau:
+            raise InputError("give the joint torques --tau (or --controller least-slip-push)")
+        tau = parse_vector("--tau", args.tau)
+    traj = simulate(model, q, tau, args.duration, v0=v, v_obj0=v_obj,
+                    control_period=control_period, method=args.method, rtol=args.rtol,
+                    atol=args.atol, stabilization=args.stabilization,
+                    output_dt=args.output_dt)
+    out = Path(args.out)
+    try:
+        out.mkdir(parents=True, exist_ok=True)
+        traj.save(out / "trajectory.npz")
+        (out / "summary.json").write_text(json.dumps(traj.summary, indent=2) + "\n")
+        files = {"trajectory": str(out / "trajectory.npz"), "summary": str(out / "summary.json")}
+        if not args.no_figures:
+            files.update(save_figures(traj, out, animation=not args.no_animation,
+                                      frames=args.frames))
+    except OSError as exc:
+        raise InputError(f"cannot write to --out {str(out)!r}: {exc}") from None
+    s = traj.summary
+    if args.json:
+        print_json({**s, "files": files})
+    else:
+        _print_text(s, files)
+    if s["status"] != "completed":
+        sys.stderr.write(f"snakecg simulate: failed: {s['status']}\n")
+        return 1
+    return 0
+
+
+def _print_text(s: dict, files: dict) -> None:
+    np.set_printoptions(precision=6, suppress=True)
+    print(f"{s['joints']} joints, {s['scenario']}, kappa {s['kappa']:g}, {s['duration']:g} s, "
+          f"torque {s['torque']}: {s['status']}")
+    print(f"  start: {s['initial_mode']}")
+    for e in s["events"]:
+        extra = ""
+        if "energy_loss" in e:
+            extra = f" (energy lost {e['energy_loss']:.3g} J)"
+        print(f"  t = {e['t']:.6f} s  {e['kind']:<10} row {e['row']}{extra} -> {e['after']}")
+    print(f"  end:   {s['final_mode']}")
+    do, dc = s["object_displacement"], s["snake_com_displacement"]
+    print(f"  object moved {do['distance'] * 1e3:.4g} mm (x {do['x'] * 1e3:.4g}, "
+          f"y {do['y'] * 1e3:.4g} mm, psi {np.degrees(do['psi']):.3g} deg); snake COM "
+          f"{dc['distance'] * 1e3:.4g} mm")
+    srd = s["sr_displacement_final"]
+    print(f"  sr: initial {s['sr_initial']:.4g}, time mean {s['sr_mean']:.4g}, "
+          f"from displacements {'n/a' if srd is None else format(srd, '.4g')}")
+    e = s["energy"]
+    print(f"  energy (J): kinetic {e['kinetic_initial']:.4g} -> {e['kinetic_final']:.4g}, "
+          f"torques {e['work_tau']:.4g}, friction {e['work_friction']:.4g}, impacts "
+          f"-{e['impact_loss']:.4g}, balance residual {e['balance_residual']:.2g}")
+    r = s["constraint_residual"]
+    print(f"  constraint residual: gap {r['gap']:.2g} m, gap rate {r['gap_rate']:.2g} m/s, "
+          f"wheel lateral velocity {r['wheel_lateral_velocity']:.2g} m/s")
+    i = s["integrator"]
+    print(f"  integrator {i['method']}: {i['rhs_evaluations']} evaluations, "
+          f"{i['segments']} segments, {i['wall_time_s']:.3g} s")
+    for k, path in files.items():
+        print(f"  wrote {path}")
