@@ -64,19 +64,74 @@ class Extremes:
         return self
 
 
+def _tri_inv(L: np.ndarray) -> np.ndarray:
+    """Inverse of batched lower-triangular matrices (explicit for n <= 4, else numpy)."""
+    n = L.shape[-1]
+    if n > 4:
+        return np.linalg.inv(L)
+    Li = np.zeros_like(L)
+    d = 1.0 / np.diagonal(L, axis1=-2, axis2=-1)
+    for i in range(n):
+        Li[:, i, i] = d[:, i]
+        for j in range(i):
+            s = np.zeros(L.shape[0])
+            for k in range(j, i):
+                s += L[:, i, k] * Li[:, k, j]
+            Li[:, i, j] = -s * d[:, i]
+    return Li
+
+
+def _unit(v: np.ndarray) -> np.ndarray:
+    return v / np.maximum(np.linalg.norm(v, axis=-1, keepdims=True), 1e-300)
+
+
+def _eigh_small(C: np.ndarray, vectors: bool = True):
+    """Batched symmetric eigendecomposition, ascending: closed form for n <= 2 (vectorized,
+    faster than ``numpy.linalg.eigh`` on many tiny matrices), numpy otherwise."""
+    n = C.shape[-1]
+    if not vectors and n > 2:
+        return np.linalg.eigvalsh(C), None
+    if n == 1:
+        return C[:, :, 0].copy(), np.ones_like(C)
+    if n == 2:
+        a, b, c = C[:, 0, 0], C[:, 0, 1], C[:, 1, 1]
+        mean, r = 0.5 * (a + c), np.hypot(0.5 * (a - c), b)
+        vals = np.stack([mean - r, mean + r], axis=1)
+        lam = vals[:, 1]
+        v1 = np.stack([b, lam - a], axis=1)
+        v2 = np.stack([lam - c, b], axis=1)
+        use2 = np.linalg.norm(v2, axis=1) > np.linalg.norm(v1, axis=1)
+        vmax = _unit(np.where(use2[:, None], v2, v1))
+        vmax = np.where((r > 0)[:, None], vmax, np.array([1.0, 0.0]))
+        vmin = np.stack([-vmax[:, 1], vmax[:, 0]], axis=1)
+        return vals, np.stack([vmin, vmax], axis=2)
+    return np.linalg.eigh(C)
+
+
+class _Whitening:
+    """``N = L L^T``: maps forms to ``L^-1 X L^-T`` and eigenvectors back (``v^T N v = 1``)."""
+
+    def __init__(self, N: np.ndarray):
+        self.N = N
+        self.Linv = _tri_inv(np.linalg.cholesky(N))
+        self.LinvT = np.swapaxes(self.Linv, -1, -2)
+
+    def form(self, X: np.ndarray) -> np.ndarray:
+        C = self.Linv @ X @ self.LinvT
+        return 0.5 * (C + np.swapaxes(C, -1, -2))
+
+    def geig(self, X: np.ndarray):
+        vals, W = _eigh_small(self.form(X))
+        return vals, self.LinvT @ W
+
+
 def _geig(X: np.ndarray, N: np.ndarray):
     """Generalized eigen-decomposition of symmetric ``X`` w.r.t. SPD ``N``, batched.
 
     Returns eigenvalues ``(B, n)`` ascending and eigenvectors ``(B, n, n)`` (columns),
     normalised so that ``v^T N v = 1``.
     """
-    L = np.linalg.cholesky(N)
-    Linv = np.linalg.inv(L)
-    C = Linv @ X @ np.swapaxes(Linv, -1, -2)
-    C = 0.5 * (C + np.swapaxes(C, -1, -2))
-    vals, W = np.linalg.eigh(C)
-    V = np.swapaxes(Linv, -1, -2) @ W
-    return vals, V
+    return _Whitening(N).geig(X)
 
 
 def _signed(V: np.ndarray, c: np.ndarray, keep: bool) -> np.ndarray:
@@ -106,20 +161,21 @@ def sphere_directions(dim: int, count: int) -> np.ndarray:
 
 
 def _forms(model, qa, *, contact: bool):
-    """Quadratic forms of the metrics for every configuration with the contact kept/lost."""
+    """Quadratic forms of the metrics for every configuration with the contact kept/lost
+    (the generated ``metric_forms``; eqs. 28, 29 and 31)."""
+    from .solver import HELD, LOST
+
     n = qa.shape[0]
-    state = np.where(model.present, 1, 0).astype(np.int8)
+    state = np.where(model.present, HELD, 0).astype(np.int8)
     if not contact:
-        state[0] = 2
-    maps = model._maps(qa, n, state)
-    N = maps["input_metric"]
+        state[0] = LOST
+    out = model._metric_forms(qa, n, state)
     forms = {
-        "norm_a_obj": maps["omega_tau"],
-        "norm_qdd": maps["xi_tau"],
-        "norm_lambda": maps["lambda_form_tau"],
+        "norm_a_obj": out["omega_tau"],
+        "norm_qdd": out["xi_tau"],
+        "norm_lambda": out["lambda_form_tau"],
     }
-    c = maps["lam_from_tau"][:, 0, :]
-    return forms, N, c, maps
+    return forms, out["input_metric"], out["contact_from_tau"], out
 
 
 def _quadratic_extremes(model, qa):
@@ -127,10 +183,11 @@ def _quadratic_extremes(model, qa):
     n, na = qa.shape[0], model.n_joints
     kept, N, c, _ = _forms(model, qa, contact=True)
     lost, _, _, _ = _forms(model, qa, contact=False)
+    W = _Whitening(N)
     ex = Extremes(method="generalized eigenproblem per contact state (exact)")
     for m in ("norm_a_obj", "norm_qdd", "norm_lambda"):
-        vk, Vk = _geig(kept[m], N)
-        vl, Vl = _geig(lost[m], N) if m != "norm_a_obj" else (np.zeros((n, na)), None)
+        vk, Vk = W.geig(kept[m])
+        vl, Vl = W.geig(lost[m]) if m != "norm_a_obj" else (np.zeros((n, na)), None)
         Vk_keep = _signed(Vk, c, keep=True)
         # max
         kmax, lmax = vk[:, -1], vl[:, -1]
@@ -156,24 +213,20 @@ def _quadratic_extremes(model, qa):
         ex.min_kept[m] = kmin
         ex.tau_min_kept[m] = Vk_keep[:, :, 0]
     # slippage ratio: Rayleigh quotient of (Omega, Omega + Xi) on the kept half, 0 when lost.
-    # Whiten with N first; Omega + Xi is only semidefinite where the wheels brace the snake
-    # (a torque direction that moves nothing), so regularise relative to its largest eigenvalue.
-    Om, Xi = kept["norm_a_obj"], kept["norm_qdd"]
-    Linv = np.linalg.inv(np.linalg.cholesky(N))
-    LinvT = np.swapaxes(Linv, -1, -2)
-    Omw = Linv @ Om @ LinvT
-    Dw = Linv @ (Om + Xi) @ LinvT
-    Dw = 0.5 * (Dw + np.swapaxes(Dw, -1, -2))
-    top = np.linalg.eigvalsh(Dw)[:, -1]
+    # Whitened with N; Omega + Xi is only semidefinite where the wheels brace the snake (a
+    # torque direction that moves nothing), so it is regularised relative to its largest
+    # eigenvalue before the second whitening.
+    Omw = W.form(kept["norm_a_obj"])
+    Dw = W.form(kept["norm_a_obj"] + kept["norm_qdd"])
+    top = _eigh_small(Dw, vectors=False)[0][:, -1]
     Dw = Dw + (1e-12 * np.maximum(top, 1e-300))[:, None, None] * np.eye(na)
-    vs, Us = _geig(Omw, Dw)
-    Vs = _signed(LinvT @ Us, c, keep=True)
-    norm = np.sqrt(np.einsum("bi,bij,bj->b", Vs[:, :, -1], N, Vs[:, :, -1]))
-    ex.max["sr"] = np.clip(vs[:, -1], 0.0, 1.0)
-    ex.tau_max["sr"] = Vs[:, :, -1] / norm[:, None]
-    normin = np.sqrt(np.einsum("bi,bij,bj->b", Vs[:, :, 0], N, Vs[:, :, 0]))
-    ex.min_kept["sr"] = np.clip(vs[:, 0], 0.0, 1.0)
-    ex.tau_min_kept["sr"] = Vs[:, :, 0] / normin[:, None]
+    vs, Us = _Whitening(Dw).geig(Omw)
+    Vs = _signed(W.LinvT @ Us, c, keep=True)
+    for col, store_v, store_t in ((-1, ex.max, ex.tau_max), (0, ex.min_kept, ex.tau_min_kept)):
+        v = Vs[:, :, col]
+        norm = np.sqrt(np.einsum("bi,bij,bj->b", v, N, v))
+        store_v["sr"] = np.clip(vs[:, col], 0.0, 1.0)
+        store_t["sr"] = v / norm[:, None]
     ex.min["sr"] = np.zeros(n)
     ex.tau_min["sr"] = -ex.tau_max["sr"]
     return ex

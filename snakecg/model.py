@@ -277,8 +277,16 @@ class SceneModel(RobotModel):
     def _solve(self, base: dict, n: int, *, max_iter=None):
         order = ["q", "v", "tau", "q_obj", "v_obj", "f_obj"]
 
+        names = self.backend.signatures["constrained_dynamics"].out_names
+
         def pick(arr, idx):
-            return arr[0] if arr.shape[0] == 1 else np.ascontiguousarray(arr[idx])
+            # every input is float64 and C-contiguous (as_batch, _free_and_fixed, __init__)
+            if arr.shape[0] == 1:
+                return arr[0]
+            m = len(idx)
+            if m == arr.shape[0] and idx[0] == 0 and idx[-1] == m - 1:  # sorted: all samples
+                return arr
+            return np.ascontiguousarray(arr[idx])
 
         def call(idx, free, lam_fixed, reg):
             m = len(idx)
@@ -287,17 +295,15 @@ class SceneModel(RobotModel):
                 self._object_inertia, pick(base["rho"], idx), self._wheel_offset,
                 free, lam_fixed, np.asarray(reg, dtype=float).reshape(m, 1),
             ]
-            args = [np.ascontiguousarray(a, dtype=float) for a in args]
             outs = self._call("constrained_dynamics", m, args)
-            names = self.backend.signatures["constrained_dynamics"].out_names
             res = {}
-            for name_, o in zip(names, outs):
+            for name_, o in zip(names, outs):  # views, no copies
                 if o.shape[1:] == (1, 1):
-                    res[name_] = o[:, 0, 0].copy()
+                    res[name_] = o[:, 0, 0]
                 elif o.shape[2] == 1:
-                    res[name_] = np.ascontiguousarray(o[:, :, 0])
+                    res[name_] = o[:, :, 0]
                 else:
-                    res[name_] = np.ascontiguousarray(o)
+                    res[name_] = o
             return res
 
         return solve_active_set(call, n, self.present, self.bounds, max_iter=max_iter)
@@ -386,6 +392,40 @@ class SceneModel(RobotModel):
         res["singular"] = singular
         return res
 
+    def _metric_forms(self, qa, n, state):
+        """Quadratic forms of the metrics at rest (generated ``metric_forms``), batched.
+
+        Samples whose held rows are dependent fall back to :meth:`_maps` (regularised).
+        """
+        from .solver import _free_and_fixed
+
+        q_obj, rho, _ = self._place(qa, n)
+        free, _ = _free_and_fixed(state[None, :], self.bounds)
+        args = [self._arg(qa, n), self.parameters, self._contact_link, self._side,
+                self._object_mass, self._object_inertia, self._arg(q_obj, n),
+                self._arg(rho, n), self._wheel_offset, free[0], np.zeros(1)]
+        outs = self._call("metric_forms", n, [np.ascontiguousarray(a) for a in args])
+        names = self.backend.signatures["metric_forms"].out_names
+        res = {}
+        for name_, o in zip(names, outs):
+            if o.shape[1:] == (1, 1):
+                res[name_] = o[:, 0, 0].copy()
+            elif o.shape[1] == 1:
+                res[name_] = np.ascontiguousarray(o[:, 0, :])
+            else:
+                res[name_] = np.ascontiguousarray(o)
+        finite = np.all(np.isfinite(res["omega_tau"].reshape(n, -1)), axis=1)
+        singular = ~(res["pivot_ratio"] > PIVOT_TOL) | ~finite
+        if np.any(singular):
+            sub = np.flatnonzero(singular)
+            again = self._maps(np.ascontiguousarray(qa[sub] if qa.shape[0] > 1 else qa),
+                               len(sub), state)
+            for k in ("omega_tau", "xi_tau", "lambda_form_tau", "input_metric"):
+                res[k][sub] = again[k]
+            res["contact_from_tau"][sub] = again["lam_from_tau"][:, 0, :]
+        res["singular"] = singular
+        return res
+
     # analysis (snakecg.analysis) -------------------------------------------------------------
     def extremes(self, q, **kwargs):
         """Best and worst ``norm_a_obj``, ``norm_qdd``, ``norm_lambda`` and ``sr`` over the
@@ -401,3 +441,34 @@ class SceneModel(RobotModel):
         from .analysis import com_polar
 
         return com_polar(self, q)
+
+    # optimal torques (snakecg.optimize) --------------------------------------------------------
+    def optimize(self, q, objective="max_sr", **kwargs):
+        """The optimal joint torque for a task at configuration ``q`` (at rest).
+
+        ``objective``: ``"max_sr"`` (largest slippage ratio, eq. 30), ``"least_slip_push"``
+        (a requested object acceleration with the least ``||qdd_s||^2``, eq. 26) or
+        ``"strongest_push"`` (largest object acceleration along a direction with no wheel
+        sliding). Keywords: ``tau_max``, ``radius`` (input region: box and/or ellipsoid of
+        eq. 31, default ``radius=1``), ``direction``, ``a_min``, ``a_obj``, ``allow_slide``.
+        Returns an :class:`~snakecg.optimize.OptimizeResult` (``tau``, ``status`` with
+        ``reason``, ``analysis`` = the forward result at ``tau``); see
+        :func:`snakecg.optimize.optimize` and docs/optimize.md.
+        """
+        from .optimize import optimize
+
+        return optimize(self, q, objective=objective, **kwargs)
+
+    # simulation (snakecg.simulate) -------------------------------------------------------------
+    def simulate(self, q0, tau, duration, v0=None, **kwargs):
+        """Integrate snake + object from ``q0`` (and velocities ``v0``, default rest) for
+        ``duration`` seconds under joint torques ``tau``: a constant ``(n_a,)``, a function
+        ``tau(t)`` or a feedback law ``tau(t, state)``. Contact separation and impacts, wheels
+        breaking away and sticking again are events. Returns a
+        :class:`~snakecg.simulate.Trajectory` (``t``, ``q``, ``v``, ``q_obj``, ``v_obj``,
+        ``lam``, ``contact``, ``wheel_state``, ... and ``summary``); keywords and details in
+        :func:`snakecg.simulate.simulate` and docs/simulate.md.
+        """
+        from .simulate import simulate
+
+        return simulate(self, q0, tau, duration, v0=v0, **kwargs)
