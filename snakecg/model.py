@@ -179,6 +179,8 @@ class ForwardResult:
 
 
 _STATE_NAMES = np.array(["none", "stick", "lost", "slide+", "slide-"])
+#: Names of the wheel rows' states (a wheel row is never "lost"; read as "none").
+_WHEEL_STATE_NAMES = np.where(_STATE_NAMES == "lost", "none", _STATE_NAMES)
 
 
 class SceneModel(RobotModel):
@@ -312,8 +314,7 @@ class SceneModel(RobotModel):
         o = sol.outputs
         state = sol.state
         contact = state[:, 0] == HELD
-        wheel_state = _STATE_NAMES[state[:, 1:]]
-        wheel_state = np.where(wheel_state == "lost", "none", wheel_state)
+        wheel_state = _WHEEL_STATE_NAMES[state[:, 1:]]
         r = ForwardResult(
             qdd=o["qdd"], a_obj=o["a_obj"], lam=o["lam"], w=o["w"], contact=contact,
             wheel_state=wheel_state, norm_lambda=o["norm_lambda"], norm_a_obj=o["norm_a_obj"],

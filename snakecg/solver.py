@@ -128,11 +128,12 @@ def solve_active_set(call, n: int, present: np.ndarray, bounds: np.ndarray, *,
     while active.size and iterations < max_iter:
         iterations += 1
         out, sing = _evaluate(call, active, state[active], bounds)
-        if outputs is None:
-            outputs = {k: np.empty((n,) + v.shape[1:]) for k, v in out.items()}
-        for k, v in out.items():
-            outputs[k][active] = v
-        singular[active] = sing
+        if outputs is None:  # the first pass covers every sample, in order: keep its arrays
+            outputs, singular = out, sing
+        else:
+            for k, v in out.items():
+                outputs[k][active] = v
+            singular[active] = sing
         tol_lam, tol_w = _tolerances(out)
         new = _violations(state[active], out["lam"], out["w"], bounds, tol_lam, tol_w)
         changed = np.any(new != state[active], axis=1)

@@ -186,20 +186,28 @@ def test_place_object_matches_reference(models, rng):
             close(ref.gap(np.concatenate([q[i], q_obj[i]]), rho[i]), 0.0, 1e-12, "gap")
 
 
-def test_batched_equals_single_calls(models, rng):
-    """One configuration broadcast against a batch of torques, and sample by sample."""
-    scene, sm, ref = models(3, "wheels")
+@pytest.mark.parametrize("scenario", SCENARIOS)
+def test_batched_equals_single_calls(models, rng, scenario):
+    """One configuration broadcast against a batch of torques (small batch: one shared output
+    buffer; large: one array per output), and sample by sample."""
+    scene, sm, ref = models(3, scenario)
     q = random_q(rng, 3, 1)[0]
-    tau = random_tau(rng, 3, 8)
-    batch = sm.forward(q, tau)
-    for i in range(8):
-        one = sm.forward(q, tau[i])
-        for k in ("qdd", "a_obj", "lam", "w", "norm_qdd", "norm_a_obj", "sr"):
-            close(getattr(one, k), getattr(batch, k)[i], 1e-12, k)
-        assert one.contact == batch.contact[i]
-        assert list(one.wheel_state) == list(batch.wheel_state[i])
-    assert batch.qdd.shape == (8, 6) and np.shape(batch.contact) == (8,)
-    assert one.qdd.shape == (6,) and np.ndim(one.sr) == 0
+    tau = random_tau(rng, 3, 100)
+    v, v_obj, f_obj = random_motion(rng, 3, 1)
+    for kw in ({}, dict(v=v[0], v_obj=v_obj[0], f_obj=f_obj[0])):
+        big = sm.forward(q, tau, **kw)
+        small = sm.forward(q, tau[:10], **kw)
+        for i in range(10):
+            one = sm.forward(q, tau[i], **kw)
+            for k in ("qdd", "a_obj", "lam", "w", "norm_qdd", "norm_a_obj", "norm_lambda", "sr"):
+                close(getattr(one, k), getattr(big, k)[i], 1e-12, k)
+                close(getattr(small, k)[i], getattr(big, k)[i], 1e-12, k)
+            assert one.contact == big.contact[i] == small.contact[i]
+            assert list(one.wheel_state) == list(big.wheel_state[i]) == list(small.wheel_state[i])
+        assert 0 < big.contact.sum() < 100
+    assert big.qdd.shape == (100, 6) and np.shape(big.contact) == (100,)
+    assert big.wheel_state.shape == (100, 4)
+    assert one.qdd.shape == (6,) and np.ndim(one.sr) == 0 and np.ndim(one.contact) == 0
 
 
 # ------------------------------------------------------------------------------------------
