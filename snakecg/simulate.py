@@ -802,7 +802,8 @@ class _Simulator:
             segments += 1
             if sol.status < 0:
                 raise SimulationError(f"integration failed at t = {t:.6g} s: {sol.message}")
-            for tt, yy in zip(sol.t, sol.y.T):
+            ys = np.asarray(sol.y).reshape(self.ny, -1) if len(sol.t) else np.zeros((self.ny, 0))
+            for tt, yy in zip(sol.t, ys.T):
                 if tt > t:
                     samples.append((float(tt), yy.copy(), mode, tau_fn, impact_loss))
             if sol.status == 1:
