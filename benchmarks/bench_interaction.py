@@ -161,6 +161,24 @@ def samples(rng, n):
     return q, tau
 
 
+def one_pass(sm, q, tau):
+    """The generated functions alone: object placement and one ``constrained_dynamics`` pass
+    with every row held (what the runtime costs without its active-set glue)."""
+    n = len(q)
+    q_obj, rho, _ = sm.backend("place_object", n, [
+        q, sm.parameters, sm._contact_link, np.array([sm.scene.contact_offset]),
+        np.array([sm.scene.object_distance]), sm._side])
+    q_obj = np.ascontiguousarray(q_obj[:, :, 0])
+    rho = np.ascontiguousarray(rho[:, :, 0])
+    free = sm.present.astype(float)
+    if n == 1:
+        q, tau, q_obj, rho = q[0], tau[0], q_obj[0], rho[0]
+    return sm.backend("constrained_dynamics", n, [
+        q, np.zeros(sm.n_coordinates), tau, q_obj, np.zeros(3), np.zeros(3), sm.parameters,
+        sm._contact_link, sm._side, sm._object_mass, sm._object_inertia, rho,
+        sm._wheel_offset, free, np.zeros(sm.n_constraints), np.zeros(1)])
+
+
 def best_of(fn, repeat):
     times = []
     for _ in range(repeat):
@@ -206,6 +224,10 @@ def main(argv=None) -> int:
             float(np.abs(out[k] - getattr(res, k)).max() / max(1.0, np.abs(getattr(res, k)).max()))
             for k in ("qdd", "a_obj", "lam", "norm_qdd", "norm_a_obj", "norm_lambda", "sr"))
         assert np.array_equal(out["contact"], res.contact), "numpy and runtime disagree on contact"
+        # the generated C alone: placement + one all-held constrained_dynamics pass
+        t_c, _ = best_of(lambda: one_pass(sm, q, tau), args.repeat)
+        one = (q[:1], tau[:1])
+        t_c1 = min(best_of(lambda: one_pass(sm, *one), 1)[0] for _ in range(200))
         # single calls
         lat = []
         m = min(args.single, args.n)
@@ -221,19 +243,22 @@ def main(argv=None) -> int:
             ratio=t_np / t_rt,
             single_med=statistics.median(lat) * 1e6,
             single_p90=lat_sorted[int(0.9 * (m - 1))] * 1e6,
+            c_pass=t_c / args.n * 1e6,
+            c_single=t_c1 * 1e6,
             lost=100 * (1 - res.contact.mean()),
             sliding=100 * np.mean(np.any(res.sliding, axis=1)),
             dev=dev,
             backend=sm.backend.kind,
         ))
-    head = ("scenario", "batched us/pair", "numpy us/pair", "numpy/runtime", "single median us",
-            "single p90 us", "lost %", "sliding %", "max rel dev")
+    head = ("scenario", "batched us/pair", "C one pass us/pair", "numpy us/pair",
+            "numpy/runtime", "single median us", "single p90 us", "C one pass single us",
+            "lost %", "sliding %", "max rel dev")
     print("| " + " | ".join(head) + " |")
     print("|" + "---|" * len(head))
     for r in rows:
-        print(f"| {r['scenario']} | {r['batched']:.2f} | {r['numpy']:.2f} | {r['ratio']:.1f}x | "
-              f"{r['single_med']:.1f} | {r['single_p90']:.1f} | {r['lost']:.0f} | "
-              f"{r['sliding']:.0f} | {r['dev']:.1e} |")
+        print(f"| {r['scenario']} | {r['batched']:.2f} | {r['c_pass']:.2f} | {r['numpy']:.2f} | "
+              f"{r['ratio']:.1f}x | {r['single_med']:.1f} | {r['single_p90']:.1f} | "
+              f"{r['c_single']:.1f} | {r['lost']:.0f} | {r['sliding']:.0f} | {r['dev']:.1e} |")
     print(f"# backend: {rows[0]['backend']}; targets: batched < 2 us/pair (ideal_wheels), "
           f"single < 50 us")
     ok = rows[0]["batched"] < 2.0 and all(r["single_med"] < 50.0 for r in rows)

@@ -349,13 +349,22 @@ class SceneModel(RobotModel):
         if not contact:
             state[0] = LOST
         if wheel_state is not None:
-            ws = list(wheel_state)
+            ws = [wheel_state] if isinstance(wheel_state, str) else list(wheel_state)
             if len(ws) != self.n_links:
-                raise InputError(f"wheel_state must list {self.n_links} link states")
+                raise InputError(f"wheel_state must list {self.n_links} link states (one per"
+                                 f" link: 'stick', 'slide+', 'slide-', or 'none' without a"
+                                 f" wheel), got {wheel_state!r}")
+            codes = {"stick": HELD, "slide+": SLIDE_POS, "slide-": SLIDE_NEG}
             for i, s in enumerate(ws):
+                if self.present[i + 1] and s not in codes:
+                    raise InputError(f"wheel_state[{i}] must be 'stick', 'slide+' or 'slide-'"
+                                     f" (link {i + 1} has a wheel), got {s!r}")
                 if not self.present[i + 1]:
+                    if s not in ("none", *codes):
+                        raise InputError(f"wheel_state[{i}] must be a wheel state ('none' for"
+                                         f" link {i + 1}, which has no wheel), got {s!r}")
                     continue
-                state[i + 1] = {"stick": HELD, "slide+": SLIDE_POS, "slide-": SLIDE_NEG}[s]
+                state[i + 1] = codes[s]
         out = self._maps(qa, n, state)
         return out if batched else {k: v[0] for k, v in out.items()}
 

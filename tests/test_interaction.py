@@ -581,6 +581,24 @@ def test_all_held_forward_equals_closed_forms(models, rng, joints, scenario):
         close(a18, np.concatenate([res.qdd, res.a_obj]), what="eq. 18")
 
 
+@pytest.mark.parametrize("joints", (2, 5))
+def test_maps_at_forward_active_set(models, rng, joints):
+    """At rest, with the active set forward found (contact lost, wheels sliding), the affine maps
+    reproduce forward: ``x = x_from_tau tau + x_offset`` for qdd, a_obj, lam and w (the offsets
+    come from the sliding wheels' fixed forces, eq. 17)."""
+    scene, sm, ref = models(joints, "wheels")
+    n = 40
+    q, tau = random_q(rng, joints, n), random_tau(rng, joints, n)
+    res = sm.forward(q, tau)
+    assert res.sliding.any() and (~res.contact).any()
+    for i in range(n):
+        maps = sm.maps(q[i], contact=bool(res.contact[i]), wheel_state=res.wheel_state[i])
+        for key, got in (("qdd", res.qdd[i]), ("a_obj", res.a_obj[i]), ("lam", res.lam[i]),
+                         ("w", res.w[i])):
+            close(maps[f"{key}_from_tau"] @ tau[i] + maps[f"{key}_offset"], got, 1e-9,
+                  f"{key} from maps, sample {i}")
+
+
 # ------------------------------------------------------------------------------------------
 # 6. dependent constraint rows
 # ------------------------------------------------------------------------------------------
@@ -676,8 +694,13 @@ def test_scene_bad_input():
         with pytest.raises(snakecg.InputError, match=pattern):
             snakecg.Scene(robot, scenario=kw.pop("scenario", "wheels"), **kw)
     sm = snakecg.load(snakecg.Scene(robot, scenario="wheels"))
-    with pytest.raises(snakecg.InputError, match="wheel_state must list 4"):
-        sm.maps(np.zeros(6), wheel_state=["stick"] * 3)
+    for ws, pattern in ((["stick"] * 3, "wheel_state must list 4"),
+                        ("abcd", "wheel_state must list 4"),
+                        (["none", "slide", "stick", "stick"], r"wheel_state\[1\] must be 'stick'"),
+                        (["none", "none", "stick", "stick"], r"wheel_state\[1\].*has a wheel"),
+                        (["held", "stick", "stick", "stick"], r"wheel_state\[0\].*no wheel")):
+        with pytest.raises(snakecg.InputError, match=pattern):
+            sm.maps(np.zeros(6), wheel_state=ws)
 
 
 # ------------------------------------------------------------------------------------------
