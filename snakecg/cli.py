@@ -1,12 +1,16 @@
 """The ``snakecg`` command line: one sub-command per module in :mod:`snakecg.commands`.
 
-Exit status: 0 success, 2 usage or input errors, 1 failures (a build that failed, ...).
-Errors are printed on one line, without a traceback.
+Exit status: 0 success, 2 usage or input errors, 1 failures (a build that failed, a file
+that cannot be written, ...). Errors are printed on one line of standard error, with a hint,
+never with a traceback; warnings likewise. Progress (derivation, compilation, sweeps) goes to
+standard error only when it is a terminal. The reference in docs/cli.md is generated from
+:func:`build_parser`.
 """
 
 from __future__ import annotations
 
 import argparse
+import os
 import sys
 import warnings
 
@@ -25,17 +29,18 @@ class _Parser(argparse.ArgumentParser):
 
 
 def build_parser() -> argparse.ArgumentParser:
+    """The parser of ``snakecg`` with every sub-command that is installed."""
     import importlib
 
     p = _Parser(
         prog="snakecg",
         description="Derive, generate and run the contact models of planar snake robots that "
         "push objects (Reyes & Ma 2017).",
-        epilog="example: snakecg reproduce --out snakecg-output",
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
     p.add_argument("--version", action="version", version=f"snakecg {__version__}")
     sub = p.add_subparsers(dest="command", metavar="COMMAND", parser_class=_Parser)
+    examples = []
     for name in COMMANDS:
         try:
             mod = importlib.import_module(f"snakecg.commands.{name}")
@@ -44,28 +49,61 @@ def build_parser() -> argparse.ArgumentParser:
                 continue  # command not built yet
             raise
         mod.register(sub)
+        examples.append(_first_example(sub.choices[name]))
+    p.epilog = ("examples:\n" + "".join(f"  {e}\n" for e in examples if e)
+                + "\nRun 'snakecg COMMAND --help' for a command's options and examples.\n"
+                "Exit status: 0 success, 2 usage or input error, 1 failure.")
     return p
+
+
+def _first_example(parser: argparse.ArgumentParser) -> str:
+    """The first example line of a sub-command's epilog (``example: ...`` or a list)."""
+    for line in (parser.epilog or "").splitlines():
+        line = line.strip()
+        if line.startswith("example:"):
+            line = line[len("example:"):].strip()
+        if line.startswith("snakecg "):
+            return line.split("  #")[0].rstrip()
+    return ""
+
+
+def _format_warning(message, category, filename, lineno, line=None):
+    return f"snakecg: warning: {' '.join(str(message).split())}\n"
 
 
 def main(argv=None) -> int:
     parser = build_parser()
     args = parser.parse_args(argv)
     if not getattr(args, "command", None):
-        parser.print_help()
+        parser.print_help(sys.stderr)
         return 2
+    command = f"snakecg {args.command}"
+    hint = f"(see {command} --help)"
+    saved_format = warnings.formatwarning
     with warnings.catch_warnings():
         warnings.simplefilter("default")
+        warnings.formatwarning = _format_warning
         try:
             return int(args.run(args) or 0)
         except InputError as exc:
-            sys.stderr.write(f"snakecg {args.command}: error: {_one_line(exc)}\n")
+            sys.stderr.write(f"{command}: error: {_one_line(exc)} {hint}\n")
             return 2
         except SnakecgError as exc:
-            sys.stderr.write(f"snakecg {args.command}: failed: {_one_line(exc)}\n")
+            sys.stderr.write(f"{command}: failed: {_one_line(exc)}\n")
+            return 1
+        except BrokenPipeError:
+            # the reader went away (e.g. `snakecg show --c ... | head`): stop quietly
+            devnull = os.open(os.devnull, os.O_WRONLY)
+            os.dup2(devnull, sys.stdout.fileno())
+            return 1
+        except OSError as exc:
+            sys.stderr.write(f"{command}: failed: {_one_line(exc)}\n")
             return 1
         except KeyboardInterrupt:
-            sys.stderr.write(f"snakecg {args.command}: interrupted\n")
+            sys.stderr.write(f"{command}: interrupted\n")
             return 130
+        finally:
+            warnings.formatwarning = saved_format
 
 
 def _one_line(exc: BaseException) -> str:

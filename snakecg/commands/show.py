@@ -1,24 +1,60 @@
-"""``snakecg show``: print a symbolic expression (or the generated C) of the model."""
+"""``snakecg show``: print a closed form of the model (or the generated C of a function).
+
+The expressions come from :mod:`snakecg_derive.inspect`, i.e. from the same derivation that
+the generated code is printed from. On a terminal, a matrix too wide for the window is
+printed entry by entry; ``--latex`` prints LaTeX (the symbol names that the documentation
+uses, see :func:`latex_symbol_names`), ``--json`` both forms, ``--c`` the C that the compiled
+backend runs.
+"""
 
 from __future__ import annotations
 
+import argparse
+import re
+import shutil
+import sys
+import textwrap
+
 from ..errors import InputError
+from ._common import print_json, progress_reporter
+
+#: Version of the JSON printed by ``snakecg show --json`` (docs/cli.md).
+SCHEMA = "snakecg.show/1"
+#: Largest joint count for symbolic inspection (the closed forms grow as n^3).
+MAX_SHOW_JOINTS = 8
+
+EXAMPLES = """\
+examples:
+  snakecg show --joints 1 M                # M_s of a one-joint snake, pretty-printed
+  snakecg show --joints 2                  # list the expressions and functions
+  snakecg show --joints 2 M --latex        # the same for two joints, as LaTeX
+  snakecg show --joints 2 wheel3 --json    # wheel row of link 3 as text and LaTeX
+  snakecg show --joints 2 mass_matrix --c  # the generated C of mass_matrix()
+"""
 
 
 def register(sub) -> None:
     p = sub.add_parser(
         "show",
-        help="inspect a closed-form expression (M, J_i, h, contact and wheel rows)",
-        description="Print the closed form that the generated code evaluates: M (eq. 4), "
-        "J1..Jn (eq. 3), h, K (derived parameters), contact (link-level row), contact<k>, "
-        "wheel<i>; or, with --c, the generated C of a function.",
-        epilog="example: snakecg show --joints 2 M --latex",
+        help="inspect a closed form (M, J_i, h, contact and wheel rows) or the generated C",
+        description="Print the closed form that the generated code evaluates: M (eq. 4, in "
+        "absolute link angles), M_expanded (sum J_i^T D_i J_i), h (eq. 4), K (derived "
+        "parameters), J1..J<n+1> (eq. 3), contact (link-level contact row), contact<k> "
+        "(contact row on link k, eq. 10) and wheel<i> (wheel row of link i); or, with --c, "
+        "the generated C of a function. Without NAME, list what there is.",
+        epilog=EXAMPLES,
+        formatter_class=argparse.RawDescriptionHelpFormatter,
     )
-    p.add_argument("--joints", type=int, required=True, help="number of joints n_a >= 1")
-    p.add_argument("what", help="expression name (M, h, K, J1, contact, contact1, wheel2, ...) "
-                   "or, with --c, a function name (mass_matrix, constrained_dynamics, ...)")
+    p.add_argument("--joints", type=int, default=2, metavar="N",
+                   help="number of joints n_a >= 1 (default 2)")
+    p.add_argument("what", nargs="?", metavar="NAME",
+                   help="expression name (M, M_expanded, h, K, J1, contact, contact1, wheel2, "
+                   "...) or, with --c, a function name (mass_matrix, constrained_dynamics, ...)")
     fmt = p.add_mutually_exclusive_group()
     fmt.add_argument("--latex", action="store_true", help="print LaTeX")
+    fmt.add_argument("--json", action="store_true",
+                     help=f"print JSON: text and LaTeX of each expression (schema {SCHEMA}, "
+                     "docs/cli.md)")
     fmt.add_argument("--c", action="store_true", help="print the generated C of a function")
     p.set_defaults(run=run)
 
@@ -27,30 +63,157 @@ def run(args) -> int:
     if args.joints < 1:
         raise InputError(f"--joints must be >= 1, got {args.joints}")
     if args.c:
-        from ..artifacts import model_dir
+        return _show_c(args)
+    if args.joints > MAX_SHOW_JOINTS:
+        raise InputError(
+            f"symbolic inspection is limited to --joints <= {MAX_SHOW_JOINTS} (closed forms "
+            "grow as n^3); use --c to read the generated code of larger models"
+        )
+    from snakecg_derive.inspect import expression, names
 
-        folder, manifest = model_dir(args.joints)
-        fns = [f["name"] for f in manifest["functions"]]
-        if args.what not in fns:
-            raise InputError(f"unknown function {args.what!r}; choose one of: {', '.join(fns)}")
-        print((folder / "c" / f"{args.what}.c").read_text(), end="")
-        return 0
-    if args.joints > 8:
-        raise InputError("symbolic inspection is limited to --joints <= 8 (closed forms grow "
-                         "as n^3); use --c to read the generated code of larger models")
-    import sympy as sp
-    from snakecg_derive.inspect import expression
-
+    if args.what is None:
+        return _list(args.joints, names(args.joints))
     try:
         exprs = expression(args.joints, args.what)
     except ValueError as exc:
         raise InputError(str(exc)) from None
+    if args.json:
+        import sympy as sp
+
+        print_json({
+            "schema": SCHEMA,
+            "joints": args.joints,
+            "what": args.what,
+            "expressions": [
+                {"label": label, "text": str(e),
+                 "latex": sp.latex(e, symbol_names=latex_symbol_names(e))}
+                for label, e in exprs.items()
+            ],
+        })
+        return 0
     for label, e in exprs.items():
         if args.latex:
+            import sympy as sp
+
             print(f"% {label}")
-            print(sp.latex(e))
+            print(sp.latex(e, symbol_names=latex_symbol_names(e)))
         else:
-            print(f"{label} =")
-            print(sp.pretty(e, use_unicode=True, wrap_line=False))
+            print(_pretty(label, e))
         print()
     return 0
+
+
+def _list(joints: int, expression_names: list[str]) -> int:
+    from ..artifacts import model_dir
+
+    # every joint count has the same functions: name them from the packaged one-joint model
+    _, manifest = model_dir(1, generate=False)
+    print(f"expressions for {joints} joints (snakecg show --joints {joints} NAME):")
+    print("  " + " ".join(expression_names))
+    print(f"generated functions (snakecg show --joints {joints} NAME --c):")
+    print("  " + " ".join(f["name"] for f in manifest["functions"]))
+    return 0
+
+
+def _show_c(args) -> int:
+    from ..artifacts import model_dir
+
+    folder, manifest = model_dir(args.joints, progress=progress_reporter())
+    fns = [f["name"] for f in manifest["functions"]]
+    if args.what is None:
+        print(f"generated functions for {args.joints} joints ({folder / 'c'}):")
+        print("  " + " ".join(fns))
+        return 0
+    if args.what not in fns:
+        raise InputError(f"unknown function {args.what!r}; choose one of: {', '.join(fns)}")
+    sys.stdout.write((folder / "c" / f"{args.what}.c").read_text())
+    return 0
+
+
+# ------------------------------------------------------------------------------------------
+# printing
+# ------------------------------------------------------------------------------------------
+def _unicode_ok() -> bool:
+    enc = getattr(sys.stdout, "encoding", None) or "ascii"
+    try:
+        "⎡θ₁".encode(enc)
+    except (UnicodeEncodeError, LookupError):
+        return False
+    return True
+
+
+def _pretty(label: str, e) -> str:
+    """Pretty form of ``e``; a matrix too wide for the terminal is listed entry by entry."""
+    import sympy as sp
+
+    width = shutil.get_terminal_size((100, 24)).columns
+    uni = _unicode_ok()
+    text = sp.pretty(e, use_unicode=uni, wrap_line=False)
+    if not isinstance(e, sp.MatrixBase) or max(map(len, text.splitlines())) <= width:
+        return f"{label} =\n{text}"
+    rows, cols = e.shape
+    symmetric = rows == cols and e == e.T
+    lines = [f"{label}: {rows} x {cols} matrix"
+             + (", symmetric: upper triangle" if symmetric else "")
+             + ", zero entries omitted (1-based indices)"]
+    for i in range(rows):
+        for j in range(i if symmetric else 0, cols):
+            if e[i, j] == 0:
+                continue
+            head = f"[{i + 1},{j + 1}] = "
+            body = sp.pretty(e[i, j], use_unicode=uni, wrap_line=False)
+            if len(body.splitlines()) == 1 and len(head) + len(body) <= width:
+                lines.append(head + body)
+                continue
+            # too wide (or several lines): plain one-line text, wrapped between terms
+            lines.extend(textwrap.wrap(sp.sstr(e[i, j]), width=max(40, width),
+                                       initial_indent=head,
+                                       subsequent_indent=" " * len(head),
+                                       break_on_hyphens=False))
+    return "\n".join(lines)
+
+
+_LATEX_PATTERNS = [
+    (re.compile(r"mtot"), lambda m: r"m_{\mathrm{tot}}"),
+    (re.compile(r"beta(\d+)"), lambda m: rf"\beta_{{{m[1]}}}"),
+    (re.compile(r"gamma(\d+)_(\d+)"), lambda m: rf"\gamma_{{{m[1]}{m[2]}}}"),
+    (re.compile(r"Jrot(\d+)"), lambda m: rf"J^{{\mathrm{{rot}}}}_{{{m[1]}}}"),
+    (re.compile(r"(x|y)d"), lambda m: rf"\dot{{{m[1]}}}"),
+    (re.compile(r"thetad"), lambda m: r"\dot{\theta}"),
+    (re.compile(r"qd(\d+)"), lambda m: rf"\dot{{q}}_{{{m[1]}}}"),
+    (re.compile(r"l(x|y)"), lambda m: rf"{m[1]}_{{\ell}}"),
+    (re.compile(r"lphi"), lambda m: r"\phi_{\ell}"),
+    (re.compile(r"lv(x|y)"), lambda m: rf"v_{{\ell {m[1]}}}"),
+    (re.compile(r"lw"), lambda m: r"\omega_{\ell}"),
+    (re.compile(r"lb(x|y)"), lambda m: rf"b_{{\ell {m[1]}}}"),
+    (re.compile(r"lbw"), lambda m: r"b_{\ell \omega}"),
+    (re.compile(r"lc"), lambda m: r"c_{\ell}"),
+    (re.compile(r"o(x|y)"), lambda m: rf"{m[1]}_{{o}}"),
+    (re.compile(r"opsi"), lambda m: r"\psi"),
+    (re.compile(r"ov(x|y)"), lambda m: rf"v_{{o {m[1]}}}"),
+    (re.compile(r"ow"), lambda m: r"\omega_{o}"),
+    (re.compile(r"rho(x|y)"), lambda m: rf"\rho_{{{m[1]}}}"),
+    (re.compile(r"woff"), lambda m: r"w_{\mathrm{off}}"),
+]
+
+
+def latex_symbol_names(*exprs) -> dict:
+    """LaTeX names of the derivation's symbols in ``exprs`` (for ``sympy.latex``).
+
+    ``mtot -> m_tot``, ``beta1 -> beta_1``, ``gamma1_2 -> gamma_12``, ``Jrot1 -> J^rot_1``,
+    velocities ``thetad -> dot theta``, link-level symbols ``lx, lphi, lvx, lw, lbx, lc -> x_l,
+    phi_l, v_lx, omega_l, b_lx, c_l``, object ``ox, opsi, ovx, ow -> x_o, psi, v_ox,
+    omega_o``, ``rhox -> rho_x``, ``woff -> w_off``. Other symbols keep SymPy's names.
+    """
+    import sympy as sp
+
+    out = {}
+    for e in exprs:
+        syms = e.free_symbols if isinstance(e, (sp.Basic, sp.MatrixBase)) else set()
+        for s in syms:
+            for pat, fmt in _LATEX_PATTERNS:
+                m = pat.fullmatch(s.name)
+                if m:
+                    out[s] = fmt(m)
+                    break
+    return out

@@ -1,0 +1,364 @@
+"""The documentation cannot rot: its examples run, its promises about the CLI hold, it builds.
+
+* Every fenced ```` ```python ```` block of ``docs/*.md`` and ``README.md`` is executed; the
+  blocks of one page run in order in one namespace (a page reads like one session), with the
+  repository root as working directory (examples use ``examples/robot.toml``).
+* Every ```` ```console ```` block is executed: each ``$ snakecg ...`` line runs the CLI in
+  process and must exit 0; when the block shows output after a command, the actual output
+  must match it — text token by token, numbers to a relative 1e-6. (``bash`` blocks are
+  install commands and long runs, shown but not executed; the reproduction itself has its own
+  tests.)
+* The doctests of the modules that the API reference renders run too.
+* The CLI behaviour that docs/cli.md documents: exit statuses, one-line errors with a hint,
+  ``--version``, an example in every command's help, the JSON schemas' fields, quiet progress
+  when standard error is not a terminal.
+* ``mkdocs build --strict`` succeeds (when MkDocs is installed; otherwise skipped, saying so),
+  and the generated pages contain what the hooks promise.
+"""
+
+from __future__ import annotations
+
+import doctest
+import importlib
+import io
+import json
+import math
+import re
+import shlex
+import subprocess
+import sys
+from contextlib import redirect_stdout
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parents[1]
+DOCS = ROOT / "docs"
+PAGES = sorted(DOCS.glob("*.md")) + [ROOT / "README.md"]
+
+FENCE = re.compile(r"^(?P<indent>[ ]*)```(?P<info>[^\n`]*)\n(?P<body>.*?)^(?P=indent)```[ ]*$",
+                   re.MULTILINE | re.DOTALL)
+
+
+def fenced_blocks(path: Path, language: str) -> list[tuple[int, str]]:
+    """``(line number, code)`` of every fenced block whose info string starts with
+    ``language``."""
+    text = path.read_text(encoding="utf-8")
+    out = []
+    for m in FENCE.finditer(text):
+        info = m.group("info").strip().split()
+        if info and info[0] == language:
+            indent = len(m.group("indent"))
+            body = "\n".join(line[indent:] for line in m.group("body").splitlines())
+            out.append((text.count("\n", 0, m.start()) + 1, body))
+    return out
+
+
+def _rel(path: Path) -> str:
+    return str(path.relative_to(ROOT))
+
+
+# ------------------------------------------------------------------------------------------
+# 1. python blocks
+# ------------------------------------------------------------------------------------------
+PYTHON_PAGES = [p for p in PAGES if fenced_blocks(p, "python")]
+
+
+@pytest.mark.parametrize("page", PYTHON_PAGES, ids=_rel)
+def test_python_blocks_run(page, monkeypatch):
+    monkeypatch.chdir(ROOT)
+    namespace = {"__name__": f"docs_{page.stem.replace('-', '_')}"}
+    for line, code in fenced_blocks(page, "python"):
+        try:
+            exec(compile(code, f"{_rel(page)}:{line}", "exec"), namespace)  # noqa: S102
+        except Exception as exc:
+            raise AssertionError(
+                f"the python block at {_rel(page)}:{line} failed: {type(exc).__name__}: {exc}"
+            ) from exc
+
+
+def test_the_docs_have_examples():
+    """Guards the extraction itself: the pages that must carry runnable examples do."""
+    names = {p.name for p in PYTHON_PAGES}
+    for required in ("README.md", "getting-started.md", "model.md", "scenarios.md",
+                     "metrics.md", "generated-code.md", "symbolic.md"):
+        assert required in names, f"no ```python block found in {required}"
+
+
+# ------------------------------------------------------------------------------------------
+# 2. console blocks: `$ snakecg ...` lines run and, where output is shown, match it
+# ------------------------------------------------------------------------------------------
+def console_commands(page: Path) -> list[tuple[int, list[str], list[str]]]:
+    """``(line, argv, expected output lines)`` of every ``$ snakecg`` command of a page."""
+    out = []
+    for line, body in fenced_blocks(page, "console"):
+        current = None
+        for k, text in enumerate(body.splitlines()):
+            if text.startswith("$ "):
+                argv = shlex.split(text[2:])
+                assert argv[0] == "snakecg", f"{_rel(page)}:{line + k + 1}: not a snakecg command"
+                current = (line + k + 1, argv[1:], [])
+                out.append(current)
+            elif current is not None:
+                current[2].append(text)
+    return out
+
+
+CONSOLE = [(page, *cmd) for page in PAGES for cmd in console_commands(page)]
+
+_NUMBER = re.compile(r"^[-+]?(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?%?$")
+
+
+def _tokens(text: str) -> list[str]:
+    return re.sub(r"[\[\](),=]", " ", text).split()
+
+
+def assert_output_matches(actual: str, expected: list[str], where: str) -> None:
+    got, want = _tokens(actual), _tokens("\n".join(expected))
+    assert len(got) == len(want), f"{where}: output differs from the docs:\n{actual}"
+    for g, w in zip(got, want):
+        if _NUMBER.match(w) and _NUMBER.match(g):
+            gv, wv = float(g.rstrip("%")), float(w.rstrip("%"))
+            ok = math.isclose(gv, wv, rel_tol=1e-6, abs_tol=1e-9 + 0.5 * 10 ** -_decimals(w))
+            assert ok, f"{where}: {g} != {w} (documented)\n{actual}"
+        else:
+            assert g == w, f"{where}: {g!r} != {w!r} (documented)\n{actual}"
+
+
+def _decimals(number: str) -> int:
+    mantissa = re.split(r"[eE]", number.rstrip("%"))[0]
+    return len(mantissa.split(".")[1]) if "." in mantissa else 0
+
+
+@pytest.mark.parametrize("page, line, argv, expected", CONSOLE,
+                         ids=[f"{_rel(p)}:{ln}" for p, ln, _, _ in CONSOLE])
+def test_console_commands_run(page, line, argv, expected, monkeypatch, capsys):
+    from snakecg.cli import main
+
+    monkeypatch.chdir(ROOT)
+    try:
+        status = main(argv)
+    except SystemExit as exc:  # --version and --help exit through argparse
+        status = exc.code
+    captured = capsys.readouterr()
+    where = f"{_rel(page)}:{line}: snakecg {' '.join(argv)}"
+    assert status == 0, f"{where}: exit {status}\n{captured.err}"
+    if "--json" in argv:
+        json.loads(captured.out)
+    if expected:
+        assert_output_matches(captured.out, expected, where)
+
+
+# ------------------------------------------------------------------------------------------
+# 3. doctests of the modules the API reference renders
+# ------------------------------------------------------------------------------------------
+API_NAMES = re.findall(r"^::: (snakecg[\w.]*)", (DOCS / "api.md").read_text(encoding="utf-8"),
+                       re.MULTILINE)
+
+
+def _module_of(name: str) -> str:
+    """The module part of a dotted API name (``snakecg.model.RobotModel`` -> ``snakecg.model``)."""
+    parts = name.split(".")
+    while parts:
+        try:
+            importlib.import_module(".".join(parts))
+            return ".".join(parts)
+        except ModuleNotFoundError:
+            parts.pop()
+    raise AssertionError(f"no module in {name}")
+
+
+DOCTEST_MODULES = sorted({_module_of(n) for n in API_NAMES} | {"snakecg"})
+
+
+@pytest.mark.parametrize("module", DOCTEST_MODULES)
+def test_api_doctests(module, monkeypatch):
+    monkeypatch.chdir(ROOT)
+    mod = importlib.import_module(module)
+    result = doctest.testmod(mod, optionflags=doctest.ELLIPSIS | doctest.NORMALIZE_WHITESPACE,
+                             verbose=False)
+    assert result.failed == 0, f"{result.failed} doctest(s) of {module} failed"
+
+
+# ------------------------------------------------------------------------------------------
+# 4. the CLI promises of docs/cli.md
+# ------------------------------------------------------------------------------------------
+def _subparsers():
+    import argparse
+
+    from snakecg.cli import build_parser
+
+    parser = build_parser()
+    (action,) = [a for a in parser._actions if isinstance(a, argparse._SubParsersAction)]
+    return parser, action.choices
+
+
+def test_every_command_help_has_an_example():
+    parser, subs = _subparsers()
+    assert "examples:" in parser.format_help()
+    assert {"generate", "show", "forward"} <= set(subs)
+    for name, sub in subs.items():
+        text = sub.format_help()
+        assert re.search(rf"^\s*(example:\s*)?snakecg {name}\b", text, re.MULTILINE), (
+            f"snakecg {name} --help shows no example line"
+        )
+        for action in sub._actions:
+            if action.option_strings and action.dest != "help":
+                assert action.help, f"snakecg {name} {action.option_strings[0]} has no help"
+
+
+def test_version_and_usage_errors(capsys):
+    import snakecg
+    from snakecg.cli import main
+
+    with pytest.raises(SystemExit) as exc:
+        main(["--version"])
+    assert exc.value.code == 0
+    assert capsys.readouterr().out.strip() == f"snakecg {snakecg.__version__}"
+    for argv in (["no-such-command"], ["show", "--joints", "two"], ["forward", "--q", "0"]):
+        with pytest.raises(SystemExit) as exc:
+            main(argv)
+        assert exc.value.code == 2
+        err = capsys.readouterr().err
+        assert len(err.splitlines()) == 1 and "--help" in err, err
+    assert main([]) == 2 and "usage:" in capsys.readouterr().err
+
+
+def test_input_errors_are_one_line_with_a_hint_exit_2(capsys):
+    from snakecg.cli import main
+
+    assert main(["show", "--joints", "1", "nothing"]) == 2
+    err = capsys.readouterr().err
+    assert len(err.splitlines()) == 1
+    assert err.startswith("snakecg show: error: unknown expression 'nothing'")
+    assert "choose one of: M, M_expanded" in err and "(see snakecg show --help)" in err
+
+
+def test_failures_exit_1(tmp_path, capsys):
+    """A failure that is not the user's input (here: a file in the way of the output) exits 1
+    with one line."""
+    from snakecg.cli import main
+
+    blocker = tmp_path / "file"
+    blocker.write_text("")
+    status = main(["generate", "--joints", "1", "--out", str(blocker / "sub")])
+    err = capsys.readouterr().err
+    assert status == 1, err
+    assert len(err.splitlines()) == 1 and err.startswith("snakecg generate: failed:"), err
+
+
+def _documented_fields(section: str) -> set[str]:
+    """Field names in the first column of the table under ``section`` in docs/cli.md."""
+    text = (DOCS / "cli.md").read_text(encoding="utf-8")
+    start = text.index(section)
+    table = text[start:].split("\n\n", 3)
+    rows = [r for block in table[1:3] for r in block.splitlines() if r.startswith("| `")]
+    return {re.match(r"\| `([^`]+)`", r).group(1) for r in rows}
+
+
+def test_forward_json_fields_are_documented(capsys):
+    from snakecg.cli import main
+
+    assert main(["forward", "--joints", "2", "--q", "0,0,0,-135deg,-135deg", "--tau", "0.1,0",
+                 "--scenario", "wheels", "--json"]) == 0
+    out = json.loads(capsys.readouterr().out)
+    assert out["schema"] == "snakecg.forward/1"
+    assert set(out) == _documented_fields("### `snakecg forward --json`")
+
+
+def test_show_json_fields_are_documented(capsys):
+    from snakecg.cli import main
+
+    assert main(["show", "--joints", "1", "J2", "--json"]) == 0
+    out = json.loads(capsys.readouterr().out)
+    assert out["schema"] == "snakecg.show/1"
+    assert set(out) | set(out["expressions"][0]) == _documented_fields(
+        "### `snakecg show --json`")
+
+
+def test_generate_json_fields_are_documented(capsys):
+    from snakecg.cli import main
+
+    assert main(["generate", "--joints", "1", "--json"]) == 0
+    out = json.loads(capsys.readouterr().out)
+    assert out["schema"] == "snakecg.generate/1" and out["backend"] in ("compiled", "casadi")
+    assert set(out) == _documented_fields("### `snakecg generate --json`")
+
+
+def test_progress_is_quiet_off_a_terminal_and_shown_on_one(monkeypatch):
+    from snakecg.commands._common import ProgressCounter, progress_reporter
+
+    class Tty(io.StringIO):
+        def isatty(self):
+            return True
+
+    monkeypatch.delenv("SNAKECG_PROGRESS", raising=False)
+    assert progress_reporter(io.StringIO()) is None
+    tty = Tty()
+    step = progress_reporter(tty)
+    step("compiling")
+    assert tty.getvalue().endswith("compiling\n")
+    with ProgressCounter("sweep", 4, io.StringIO()) as pc:
+        pc.advance(4)
+    quiet = io.StringIO()
+    with ProgressCounter("sweep", 4, quiet) as pc:
+        pc.advance(4)
+    assert quiet.getvalue() == ""
+    tty = Tty()
+    with ProgressCounter("sweep", 4, tty, min_interval=0.0) as pc:
+        pc.advance(2)
+        pc.advance(2)
+    assert "sweep: 4/4" in tty.getvalue() and tty.getvalue().endswith("\n")
+    monkeypatch.setenv("SNAKECG_PROGRESS", "0")
+    assert progress_reporter(Tty()) is None
+
+
+def test_cli_subprocess_stderr_is_clean():
+    """In a pipe, a query prints its result and nothing on stderr (no progress, no noise)."""
+    proc = subprocess.run(
+        [sys.executable, "-m", "snakecg.cli", "show", "--joints", "1", "J1"],
+        capture_output=True, text=True, timeout=120, cwd=ROOT,
+    )
+    assert proc.returncode == 0 and proc.stderr == "", proc.stderr
+    assert proc.stdout.startswith("J_1 (eq. 3) =")
+
+
+def test_show_lists_wide_matrices_entry_by_entry(monkeypatch, capsys):
+    from snakecg.cli import main
+
+    monkeypatch.setenv("COLUMNS", "60")
+    assert main(["show", "--joints", "2", "M"]) == 0
+    out = capsys.readouterr().out
+    assert "5 x 5 matrix, symmetric" in out
+    assert max(len(line) for line in out.splitlines()) <= 100
+    assert re.search(r"^\[5,5\] = I.?3.? \+ c.?3", out, re.MULTILINE), out
+
+
+# ------------------------------------------------------------------------------------------
+# 5. the site builds, strictly, with the generated content
+# ------------------------------------------------------------------------------------------
+def test_mkdocs_build_strict(tmp_path):
+    try:
+        import mkdocs  # noqa: F401
+        import mkdocstrings  # noqa: F401
+        import material  # noqa: F401
+    except ImportError as exc:
+        pytest.skip(f"the docs extra is not installed ({exc.name}); pip install '.[docs]'")
+    site = tmp_path / "site"
+    proc = subprocess.run(
+        [sys.executable, "-m", "mkdocs", "build", "--strict", "--site-dir", str(site)],
+        capture_output=True, text=True, timeout=600, cwd=ROOT,
+    )
+    assert proc.returncode == 0, proc.stderr[-4000:]
+    symbolic = (site / "symbolic" / "index.html").read_text(encoding="utf-8")
+    assert "snakecg-symbolic" not in symbolic, "a symbolic directive was not replaced"
+    assert symbolic.count('class="arithmatex"') >= 10
+    assert r"\beta_{1}" in symbolic and r"m_{\mathrm{tot}}" in symbolic
+    # the operation-count table carries the manifests' numbers
+    manifest = json.loads((ROOT / "generated" / "na2" / "manifest.json").read_text())
+    ops = {f["name"]: f["operations"] for f in manifest["functions"]}
+    assert f"{ops['constrained_dynamics']:,}" in symbolic
+    cli = (site / "cli" / "index.html").read_text(encoding="utf-8")
+    assert "snakecg-cli" not in cli and "usage: snakecg forward" in cli
+    api = (site / "api" / "index.html").read_text(encoding="utf-8")
+    assert 'id="snakecg.model.SceneModel.forward"' in api
