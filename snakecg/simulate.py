@@ -78,7 +78,7 @@ SCHEMA = "snakecg.simulate/1"
 
 _STATE_NAMES = {ABSENT: "none", HELD: "stick", LOST: "lost", SLIDE_POS: "slide+",
                 SLIDE_NEG: "slide-"}
-_N_WORK = 4  # work integrals: joint torques, kinetic friction, object wrench, constraints
+_N_WORK = 3  # work integrals: joint torques, kinetic friction, object wrench
 
 
 class SimulationError(SnakecgError, RuntimeError):
@@ -145,7 +145,7 @@ class Trajectory:
     * constraint rows: ``gap`` (N,), ``s`` (N,) (contact position along the link),
       ``row_velocity`` (N, n_c) (``gdot``, lateral wheel velocities ``u_i``);
     * energy: ``kinetic_energy`` (N,), ``power_tau``, ``power_friction`` (N,), cumulative
-      ``work_tau``, ``work_friction``, ``work_object``, ``work_constraint``, ``impact_loss``
+      ``work_tau``, ``work_friction``, ``work_object``, ``impact_loss``
       (N,) and ``energy_residual`` = kinetic energy gained minus all of those;
     * ``summary``: a JSON-ready dictionary (schema ``snakecg.simulate/1``, docs/simulate.md).
     """
@@ -177,7 +177,7 @@ class Trajectory:
     work_tau: np.ndarray
     work_friction: np.ndarray
     work_object: np.ndarray
-    work_constraint: np.ndarray
+    power_constraint: np.ndarray
     impact_loss: np.ndarray
     energy_residual: np.ndarray
     events: list
@@ -448,6 +448,7 @@ class _Simulator:
         self._cache_val = None
         self.nfev = 0
         self.njev = 0
+        self.drift_corrected = 0.0  # largest |A V| of a held row projected away at an event
         self.singular = 0
         length = max(scene.robot.length)
         self.gtol = 1e-9 * length
@@ -559,10 +560,12 @@ class _Simulator:
         sl = mode.slide_idx
         p_fric = float(lam[sl] @ AV[sl]) if sl.size else 0.0
         p_obj = float(self.f_obj @ vo)
+        ydot[2 * nx:] = (p_tau, p_fric, p_obj)
+        # power of the held rows' forces: zero on the constraints (a drift diagnostic; not
+        # integrated: off the constraints, at the integrator's stages, it is noise)
         p_cons = float(lam[F] @ AV[F]) if F.size else 0.0
-        ydot[2 * nx:] = (p_tau, p_fric, p_obj, p_cons)
         extras = (np.array(tau, dtype=float), float(out[9][0]), float(out[7][0]),
-                  float(out[8][0]))
+                  float(out[8][0]), p_cons)
         val = (ydot, lam, gap, s, AV, extras)
         self._cache_key = (key, yb)
         self._cache_val = val
@@ -662,9 +665,13 @@ class _Simulator:
         bounded = bounded[bounded > 0]
         forced = dict(forced)
         records = []
-        # contact: impact when closing
+        # rows held before the event carry only integration drift in A V (projected below);
+        # a row that was not held is classified by its velocity
+        held_before = (prev.state == HELD) if prev is not None else np.zeros(nc, dtype=bool)
+        impact = False
+        # contact: plastic impact when closing
         contact_in = bool(contact_candidate) and 0 not in forced
-        if contact_in and AV[0] < -vtol:
+        if contact_in and not held_before[0] and AV[0] < -vtol:
             rows = np.concatenate(([0], ideal)).astype(int)
             ke0 = self.kinetic_energy(y)
             y, Lam, dE = self.project(y, tau, rows, positions=True)
@@ -673,13 +680,15 @@ class _Simulator:
                 "wheel_impulses": Lam[1:].tolist(), "energy_loss": float(-dE),
                 "kinetic_energy_before": ke0}))
             Q, G, gap, s, AV = self.linear_maps(y, tau)
-        elif contact_in and AV[0] > vtol:
+            impact = True
+        elif contact_in and not held_before[0] and AV[0] > vtol:
             forced[0] = LOST  # already moving apart
         elif not contact_in and 0 not in forced:
             forced[0] = LOST
-        # bounded wheels: sliding when their lateral velocity is not zero
+        # bounded wheels: sliding when their lateral velocity is not zero (at the start, after
+        # an impact, which they cannot resist with a finite force, or when not sticking before)
         for r in bounded:
-            if r in forced:
+            if r in forced or (held_before[r] and not impact):
                 continue
             if abs(AV[r]) > vtol:
                 forced[int(r)] = SLIDE_POS if AV[r] < 0 else SLIDE_NEG
@@ -692,10 +701,14 @@ class _Simulator:
         if rows.size:
             ke0 = self.kinetic_energy(y)
             y2, Lam, dE = self.project(y, tau, rows, positions=bool(candidates[0]))
-            if np.abs(Lam).max() * np.abs(G[np.ix_(rows, rows)]).max() > vtol:
-                records.append(("projection", int(rows[np.argmax(np.abs(Lam))]), {
+            drift = float(np.abs(AV[rows]).max())
+            if prev is None and drift > vtol:
+                # initial velocities against the held rows (e.g. ideal wheels): an impulse
+                records.append(("projection", int(rows[np.argmax(np.abs(AV[rows]))]), {
                     "impulses": Lam.tolist(), "energy_loss": float(-dE),
                     "kinetic_energy_before": ke0}))
+            elif prev is not None:
+                self.drift_corrected = max(self.drift_corrected, drift)
             y = y2
         state = self.decide(y, tau, candidates, forced)
         mode = _Mode(state, self.bounds, off_link)
@@ -920,17 +933,19 @@ class _Simulator:
         AVs = np.zeros((N, nc))
         p_tau = np.zeros(N)
         p_fric = np.zeros(N)
+        p_cons = np.zeros(N)
         contact = np.zeros(N, dtype=bool)
         wheel_state = np.empty((N, nl), dtype="<U6")
         impact = np.array([s[4] for s in samples])
         for i, (ti, yi, mode, tau_fn, _) in enumerate(samples):
-            ydot, li, gi, si, AV, (taui, sri, nai, nqi) = self.dynamics(ti, yi, mode, tau_fn)
+            ydot, li, gi, si, AV, (taui, sri, nai, nqi, pci) = self.dynamics(ti, yi, mode,
+                                                                          tau_fn)
             tau[i], lam[i], gap[i], s_[i], AVs[i] = taui, li, gi, si, AV
             nx = self.nx
             qdd[i] = ydot[nx:nx + ns]
             a_obj[i] = ydot[nx + ns:2 * nx]
             sr[i], nao[i], nqdd[i] = sri, nai, nqi
-            p_tau[i], p_fric[i] = ydot[2 * nx], ydot[2 * nx + 1]
+            p_tau[i], p_fric[i], p_cons[i] = ydot[2 * nx], ydot[2 * nx + 1], pci
             contact[i] = mode.contact_held
             wheel_state[i] = mode.wheel_names
         nx = self.nx
@@ -950,7 +965,7 @@ class _Simulator:
         with np.errstate(invalid="ignore", divide="ignore"):
             sr_d = np.where(den > 0, num / np.where(den > 0, den, 1.0), np.nan)
         loss = impact  # cumulative kinetic energy removed by impacts / projections
-        residual = (ke - self.ke_initial) - (W[:, 0] + W[:, 1] + W[:, 2] + W[:, 3] - loss)
+        residual = (ke - self.ke_initial) - (W[:, 0] + W[:, 1] + W[:, 2] - loss)
         geometry = {
             "length": np.asarray(self.scene.robot.length, float),
             "com": np.asarray(self.scene.robot.com, float),
@@ -967,7 +982,7 @@ class _Simulator:
             norm_a_obj=nao, norm_qdd=nqdd, sr_displacement=sr_d, com=com, link_poses=poses,
             gap=gap, s=s_, row_velocity=AVs, kinetic_energy=ke, power_tau=p_tau,
             power_friction=p_fric, work_tau=W[:, 0].copy(), work_friction=W[:, 1].copy(),
-            work_object=W[:, 2].copy(), work_constraint=W[:, 3].copy(), impact_loss=loss,
+            work_object=W[:, 2].copy(), power_constraint=p_cons, impact_loss=loss,
             energy_residual=residual, events=events, summary={}, geometry=geometry)
         traj.summary = self.summary(traj, status)
         return traj
@@ -1028,11 +1043,13 @@ class _Simulator:
             "energy": {
                 "kinetic_initial": ke0, "kinetic_final": ke1,
                 "work_tau": tr.work_tau[-1], "work_friction": tr.work_friction[-1],
-                "work_object": tr.work_object[-1], "work_constraint": tr.work_constraint[-1],
+                "work_object": tr.work_object[-1],
                 "impact_loss": tr.impact_loss[-1], "balance_residual": tr.energy_residual[-1],
             },
             "constraint_residual": {"gap": gap_res, "gap_rate": gdot_res,
-                                    "wheel_lateral_velocity": u_res},
+                                    "wheel_lateral_velocity": u_res,
+                                    "constraint_power": float(np.abs(tr.power_constraint).max()),
+                                    "velocity_projected_at_events": self.drift_corrected},
             "integrator": {
                 "method": self.method if self.fixed_step is None
                 else f"{self.method}, fixed step {self.fixed_step:g} s",
@@ -1048,7 +1065,7 @@ class _Simulator:
 # ------------------------------------------------------------------------------------------
 def simulate(model, q0, tau, duration, v0=None, *, v_obj0=None, q_obj0=None, rho=None,
              f_obj=None, control_period=None, method="DOP853", rtol=1e-9, atol=1e-11,
-             max_step=None, fixed_step=None, stabilization=20.0, output_dt=None,
+             max_step=None, fixed_step=None, stabilization=10.0, output_dt=None,
              max_events=1000) -> Trajectory:
     """Integrate the snake + object of ``model`` (a :class:`~snakecg.SceneModel`) from ``q0``.
 

@@ -171,6 +171,28 @@ def test_impact_with_ideal_wheels_takes_wheel_impulses(models):
     assert np.abs(row_velocities(ref, traj, i[-1])[F]).max() < 1e-12
 
 
+def test_initial_velocity_against_ideal_wheels_is_projected(models):
+    """Initial snake velocities that violate ideal wheels: the wheels take an impulse at
+    t = 0 (mass-weighted projection, a plastic impact of the wheels), reported as an event
+    with the loss 1/2 (A V)_F^T G_FF^-1 (A V)_F of the reference model."""
+    sm, ref = models(3, "ideal_wheels", 10.0)
+    v0 = np.array([0.1, 0.05, 0.0, 0.0, 0.2, 0.0])
+    traj = sm.simulate(Q3, TAU3, 0.05, v0=v0)
+    at0 = [e for e in traj.events if e.t == 0.0]
+    q_obj, rho, _ = sm.place_object(Q3)
+    sys_ = ref.system(Q3, TAU3, v0, np.zeros(3), None, q_obj, rho)
+    AV_all = sys_["A"] @ sys_["V"]
+    # the contact takes part if it is closing (then it is a plastic impact at t = 0)
+    F = np.flatnonzero(ref.present & ((np.arange(ref.nc) > 0) | (AV_all[0] < 0)))
+    assert [e.kind for e in at0] == (["impact"] if AV_all[0] < 0 else ["projection"])
+    AV = AV_all[F]
+    assert np.abs(AV_all[2:]).max() > 1e-2  # really inconsistent with the wheels
+    loss = 0.5 * AV @ np.linalg.solve(sys_["Gc"][np.ix_(F, F)], AV)
+    assert sum(e.data["energy_loss"] for e in at0) == pytest.approx(loss, rel=1e-9)
+    assert np.abs(row_velocities(ref, traj, 0)[F]).max() < 1e-12
+    assert abs(traj.summary["energy"]["balance_residual"]) < 1e-10
+
+
 # ------------------------------------------------------------------------------------------
 # constraints
 # ------------------------------------------------------------------------------------------

@@ -55,8 +55,8 @@ def register(sub) -> None:
                    help="scipy solve_ivp method (default DOP853)")
     p.add_argument("--rtol", type=float, default=1e-9, help="relative tolerance (default 1e-9)")
     p.add_argument("--atol", type=float, default=1e-11, help="absolute tolerance (default 1e-11)")
-    p.add_argument("--stabilization", type=float, default=20.0,
-                   help="Baumgarte rate of the held rows, 1/s (default 20; 0: off)")
+    p.add_argument("--stabilization", type=float, default=10.0,
+                   help="Baumgarte rate of the held rows, 1/s (default 10; 0: off)")
     p.add_argument("--output-dt", type=float, help="output sample spacing (default duration/400)")
     p.add_argument("--out", default="snakecg-output/simulate", metavar="DIR",
                    help="output folder (default snakecg-output/simulate)")
