@@ -7,7 +7,8 @@
 * Placeholder pages for chapters written by other contributors that do not exist yet
   (``EXPECTED_PAGES``): a page listed in the nav but missing would fail ``mkdocs build
   --strict``. The placeholder lives only in the built site, never in ``docs/``, and says who
-  writes the chapter; as soon as the real page exists it wins. Each placeholder is reported
+  writes the chapter, with the sections that written pages already link to (so that those
+  anchors resolve); as soon as the real page exists it wins. Each placeholder is reported
   at INFO level (``mkdocs build`` shows it), so it is visible without failing the build.
 """
 
@@ -79,6 +80,12 @@ def on_files(files, config):
             f"    This chapter is written by {who}. It is a placeholder that the site build "
             f"adds while `docs/{name}` does not exist.\n"
         )
+        # sections that written pages already link to get their anchors, so those links hold
+        anchors = sorted({a for page in docs.glob("*.md")
+                          for a in re.findall(rf"\({re.escape(name)}#([\w-]+)\)",
+                                              page.read_text(encoding="utf-8"))})
+        for anchor in anchors:
+            text += f"\n## {anchor.replace('-', ' ').capitalize()} {{#{anchor}}}\n\nTo come.\n"
         files.append(File.generated(config, name, content=text))
     return files
 
