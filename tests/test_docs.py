@@ -23,6 +23,7 @@ import importlib
 import io
 import json
 import math
+import os
 import re
 import shlex
 import subprocess
@@ -349,9 +350,10 @@ def test_mkdocs_build_strict(tmp_path):
     except ImportError as exc:
         pytest.skip(f"the docs extra is not installed ({exc.name}); pip install '.[docs]'")
     site = tmp_path / "site"
+    env = {**os.environ, "NO_MKDOCS_2_WARNING": "1"}
     proc = subprocess.run(
         [sys.executable, "-m", "mkdocs", "build", "--strict", "--site-dir", str(site)],
-        capture_output=True, text=True, timeout=600, cwd=ROOT,
+        capture_output=True, text=True, timeout=600, cwd=ROOT, env=env,
     )
     assert proc.returncode == 0, proc.stderr[-4000:]
     symbolic = (site / "symbolic" / "index.html").read_text(encoding="utf-8")
