@@ -305,7 +305,7 @@ class _Mode:
     """An active set: row states (solver codes) and whether the contact point left the link."""
 
     __slots__ = ("state", "off_link", "free", "lam_fixed", "free_idx", "slide_idx",
-                 "contact_held", "wheel_names", "events")
+                 "contact_held", "wheel_names", "ff")
 
     def __init__(self, state: np.ndarray, bounds: np.ndarray, off_link: bool):
         self.state = np.asarray(state, dtype=np.int8).copy()
@@ -316,11 +316,11 @@ class _Mode:
         lf[self.state == SLIDE_NEG] = -bounds[self.state == SLIDE_NEG]
         self.lam_fixed = lf
         self.free_idx = np.flatnonzero(self.state == HELD)
+        self.ff = np.ix_(self.free_idx, self.free_idx)
         self.slide_idx = np.flatnonzero((self.state == SLIDE_POS) | (self.state == SLIDE_NEG))
         self.contact_held = bool(self.state[0] == HELD)
         self.wheel_names = tuple("none" if s in (ABSENT, LOST) else _STATE_NAMES[int(s)]
                                  for s in self.state[1:])
-        self.events = []
 
     def describe(self) -> str:
         c = "held" if self.contact_held else ("off link" if self.off_link else "separated")
@@ -446,6 +446,10 @@ class _Simulator:
         self._mass = _Kernel(be, "mass_matrix", {"K": model.parameters})
         self._cache_key = None
         self._cache_val = None
+        self._zeros_nc = np.zeros(nc)
+        from scipy.linalg.lapack import dposv
+
+        self._posv = dposv
         self.nfev = 0
         self.njev = 0
         self.drift_corrected = 0.0  # largest |A V| of a held row projected away at an event
@@ -501,7 +505,7 @@ class _Simulator:
         self.njev += 1
         J = self._jac.one(q=q)[0]
         tw = (J @ v).reshape(self.nl, 3)
-        phi = q[2] + np.concatenate(([0.0], np.cumsum(q[3:])))
+        phi = np.cumsum(q[2:])  # phi_1 = theta, phi_{j+1} = phi_j + q_j
         sp, cp = np.sin(phi), np.cos(phi)
         out = np.empty(self.nc)
         out[1:] = -sp * tw[:, 0] + cp * tw[:, 1] + self.woff * tw[:, 2]
@@ -546,10 +550,12 @@ class _Simulator:
             c = 2.0 * a * AV[F]
             if mode.contact_held:
                 c[0] += a * a * gap
-            G = out[11][np.ix_(F, F)]
-            lam[F] -= np.linalg.solve(G, c)
-            free0 = np.zeros(self.nc)
-            out = cd.one(free=free0, lam_fixed=lam)
+            G = out[11][mode.ff]
+            x, info = self._posv(G, c)[1:]  # Cholesky solve of G_FF x = c (SPD)
+            if info != 0:
+                x = np.linalg.lstsq(G, c, rcond=None)[0]
+            lam[F] -= x
+            out = cd.one(free=self._zeros_nc, lam_fixed=lam)
         ydot = np.empty(self.ny)
         nx = self.nx
         ydot[:self.ns] = v
@@ -752,7 +758,11 @@ class _Simulator:
 
     # --- main loop ----------------------------------------------------------------------
     def run(self):
-        from scipy.integrate import solve_ivp
+        try:
+            from scipy.integrate import solve_ivp
+        except ImportError:  # pragma: no cover - scipy is a dependency of the simulation
+            raise SnakecgError("snakecg.simulate needs SciPy (its solve_ivp integrates the "
+                               "dynamics): pip install scipy") from None
 
         wall0 = time.perf_counter()
         T = self.duration
