@@ -309,6 +309,34 @@ class _Solvers:
                                {"h": ca.Sparsity(n1, n1), "a": ca.Sparsity.dense(R, n1)},
                                _QPOASES)
         self._nlp = None
+        self._packed = None
+
+    @property
+    def packed(self):
+        """The QP solver behind one flat input and one flat output,
+        ``[vec(H), g, vec(A), lba, uba, lbx, ubx] -> [x, lam_a]``: a call converts two arrays
+        instead of seventeen (about half the cost of a small QP). A failed solve (an
+        infeasible problem) raises instead of returning a status."""
+        if self._packed is None:
+            import casadi as ca
+
+            n1, R = self.n1, self.R
+            sizes = (n1 * n1, n1, R * n1, R, R, n1, n1)
+            P = ca.MX.sym("P", sum(sizes))
+            parts = ca.vertsplit(P, list(np.cumsum((0,) + sizes)))
+            res = self.qp(h=ca.reshape(parts[0], n1, n1), g=parts[1],
+                          a=ca.reshape(parts[2], R, n1), lba=parts[3], uba=parts[4],
+                          lbx=parts[5], ubx=parts[6])
+            packed = ca.Function("snakecg_optimize_qp_packed", [P],
+                                 [ca.vertcat(res["x"], res["lam_a"])])
+            # the first evaluation creates qpOASES's workspace, which prints a banner
+            trivial = np.concatenate([np.eye(n1).ravel(), np.zeros(n1 + R * n1),
+                                      np.full(R, -np.inf), np.full(R, np.inf),
+                                      np.full(n1, -np.inf), np.full(n1, np.inf)])
+            with contextlib.redirect_stdout(io.StringIO()):
+                packed(trivial)
+            self._packed = packed
+        return self._packed
 
     @property
     def nlp(self):
@@ -419,6 +447,24 @@ def _binding(prob, zs, A, lba, uba, lam_a, extra=()):
     return tuple(dict.fromkeys(out)), rows
 
 
+def _solve_conic_fast(prob: _Problem) -> _Solution:
+    """A QP through the packed solver (no warm start, no status string): for the many small
+    QPs of the wheel-state search. ``ok`` is False for an infeasible (or failed) problem."""
+    n1, R = prob.A.shape[1], prob.A.shape[0]
+    sv = _solvers(n1, R)
+    H, g, A, lba, uba, lbx, ubx = _scaled(prob)
+    P = np.concatenate([H.ravel("F"), g, A.ravel("F"), lba, uba, lbx, ubx])
+    try:
+        out = sv.packed(P).full().ravel()
+    except RuntimeError:
+        return _Solution(False, np.zeros(n1), "qpOASES: infeasible or failed", 1, "qpoases")
+    zs, lam_a = out[:n1], out[n1:]
+    if not np.all(np.isfinite(zs)):
+        return _Solution(False, np.zeros(n1), "qpOASES: not finite", 1, "qpoases")
+    binding, _ = _binding(prob, zs, A, lba, uba, lam_a)
+    return _Solution(True, zs * prob.scale, "Successful return.", 1, "qpoases", binding)
+
+
 def _solve_conic(model, prob: _Problem, key: str) -> _Solution:
     """qpOASES (QP, or LP when ``prob.H`` is None), warm-started from the previous query."""
     n1, R = prob.A.shape[1], prob.A.shape[0]
@@ -444,10 +490,12 @@ def _solve_conic(model, prob: _Problem, key: str) -> _Solution:
         lam_a = res["lam_a"].full().ravel()
         warm[key] = (zs, lam_a, res["lam_x"].full().ravel())
         binding, rows = _binding(prob, zs, A, lba, uba, lam_a)
-        # n independent rows active with non-zero multipliers (t is fixed): a unique vertex
+        # an LP vertex with n independent rows active, all with non-zero multipliers
+        # (t fixed): no other point reaches the optimum
         n = n1 - 1
         fixed_t = prob.lbx[n] == prob.ubx[n]
-        if fixed_t and len(rows) >= n and np.linalg.matrix_rank(A[rows, :n], 1e-9) == n:
+        if (H is None and fixed_t and len(rows) >= n
+                and np.linalg.matrix_rank(A[rows, :n], 1e-9) == n):
             unique = True
     return _Solution(ok, zs * prob.scale, str(st.get("return_status", "")),
                      int(st.get("iter_count", 0) or 0), name, binding, unique)
@@ -500,6 +548,7 @@ class _Config:
     a_dir: np.ndarray  # (3,) a_obj = a_dir * lam_c
     k: float  # ||a_dir||^2 in the object's metric
     singular: bool
+    widths: np.ndarray | None = None  # half-widths of the box rows (set per query)
 
 
 def _configs(model, qa: np.ndarray) -> list[_Config]:
@@ -525,11 +574,14 @@ def _configs(model, qa: np.ndarray) -> list[_Config]:
 
 def _region_box(query: _Query, cfg: _Config) -> np.ndarray:
     """Half-widths of the box rows: the box limits, or the ellipsoid's bounding box, or both."""
+    if cfg.widths is not None:
+        return cfg.widths
     widths = np.full(cfg.N.shape[0], np.inf)
     if query.radius is not None:
         widths = query.radius * np.sqrt(np.diag(np.linalg.inv(cfg.N)))
     if query.tau_max is not None:
         widths = np.minimum(widths, query.tau_max)
+    cfg.widths = widths
     return widths
 
 
@@ -729,7 +781,7 @@ def _max_sr_sliding(model, query, cfg, stick: _Answer) -> _Answer:
         lbx[n] = 0.0
         prob = _Problem(H=2 * Xih[s], g=np.zeros(n + 1), A=A, lba=lba, uba=uba, lbx=lbx,
                         ubx=np.full(n + 1, np.inf), names=names, scale=_scale_of(query, cfg))
-        sol = _solve_conic(model, prob, "max_sr_state")
+        sol = _solve_conic_fast(prob)
         solved += 1
         iters += sol.iterations
         if not sol.ok or sol.z[n] <= 0:
@@ -741,11 +793,30 @@ def _max_sr_sliding(model, query, cfg, stick: _Answer) -> _Answer:
         elif val > stick.expected + SR_TIE:
             best_val = max(best_val, val)
             cands.append((val, z[:n] / z[n], sol.binding, states[s]))
-    # phase 2: IPOPT with the exact ellipsoid, where the relaxation still beats the best
+    # phase 2: tighten the relaxation with tangent planes of the ellipsoid at the relaxed
+    # optimum (Kelley's cutting planes, each a valid outer bound): most states then fall
+    # below the best answer; IPOPT with the exact ellipsoid where the relaxation still beats it
     n_ipopt = 0
     for val, s, prob, z in sorted(outside, key=lambda o: -o[0]):
         if val <= best_val + SR_TIE:
             break
+        cut = prob
+        for _ in range(CUTS):
+            cut = _with_tangent_cut(cut, cfg, query.radius, z)
+            sol = _solve_conic_fast(cut)
+            solved += 1
+            if not sol.ok or sol.z[n] <= 0:
+                break
+            z = sol.z
+            val = _state_sr(cfg, Xih[s], ell[s], z)
+            if val <= best_val + SR_TIE or _inside(query, cfg, z[:n] / z[n]):
+                break
+        if not sol.ok or sol.z[n] <= 0 or val <= best_val + SR_TIE:
+            continue
+        if _inside(query, cfg, z[:n] / z[n]):  # the cut relaxation's optimum is feasible
+            best_val = max(best_val, val)
+            cands.append((val, z[:n] / z[n], sol.binding, states[s]))
+            continue
         prob.N, prob.r2 = cfg.N, query.radius**2
         tau = z[:n] / z[n]
         z0 = np.append(tau * query.radius / np.sqrt(tau @ cfg.N @ tau) * (1 - 1e-6), 1.0)
@@ -774,6 +845,24 @@ def _max_sr_sliding(model, query, cfg, stick: _Answer) -> _Answer:
                    f"QPs (qpoases), {n_ipopt} convex NLPs (ipopt)")
     best.iterations = iters
     return best
+
+
+#: Tangent-plane cuts of the ellipsoid tried per wheel state before IPOPT.
+CUTS = 4
+
+
+def _with_tangent_cut(prob: _Problem, cfg, radius: float, z: np.ndarray) -> _Problem:
+    """``prob`` plus the ellipsoid's tangent plane at the radial projection of ``tau / t``:
+    ``g . tau <= g . p t`` with ``p`` on the ellipsoid and ``g = N p`` (homogeneous)."""
+    n = cfg.N.shape[0]
+    tau = z[:n] / z[n]
+    p = tau * radius / np.sqrt(tau @ cfg.N @ tau)
+    g = cfg.N @ p
+    row = np.append(-g, g @ p)
+    return _Problem(H=prob.H, g=prob.g, A=np.vstack([prob.A, row]),
+                    lba=np.append(prob.lba, 0.0), uba=np.append(prob.uba, np.inf),
+                    lbx=prob.lbx, ubx=prob.ubx, names=prob.names + [ELLIPSOID],
+                    scale=prob.scale)
 
 
 def _state_sr(cfg, Xih, ell, z):
