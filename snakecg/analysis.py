@@ -232,7 +232,7 @@ def _quadratic_extremes(model, qa):
     return ex
 
 
-def _wheels_extremes(model, qa, samples: int, refine: int, starts: int = 2):
+def _wheels_extremes(model, qa, samples: int, refine: int, starts: int = 4):
     """Extremes for bounded wheels: exact candidates + dense boundary sampling + refinement."""
     n, na = qa.shape[0], model.n_joints
     ideal = _quadratic_extremes_for(model, qa, scenario="ideal_wheels")
@@ -323,20 +323,20 @@ def _quadratic_extremes_for(model, qa, scenario: str):
     return _quadratic_extremes(other, qa)
 
 
-def extremes(model, q, *, samples: int | None = None, refine: int = 6,
-             starts: int = 2) -> Extremes:
+def extremes(model, q, *, samples: int | None = None, refine: int = 10,
+             starts: int = 4) -> Extremes:
     """Best and worst ``norm_a_obj``, ``norm_qdd``, ``norm_lambda`` and ``sr`` over the
     input ellipsoid of eq. (31), with the torques attaining them (see the module docstring).
 
     ``q``: ``(n_s,)`` or ``(N, n_s)``. For ``wheels``, ``samples`` boundary directions
-    (default 64 for 2 joints, 120 for 3, 600 above), then ``refine`` rounds of pattern search
+    (default 64 for 2 joints, 160 for 3, 600 above), then ``refine`` rounds of pattern search
     from the ``starts`` best candidates of each maximum (the minima are taken over the
     candidates).
     """
     qa, batched = model._q(q)
     if model.scene.scenario == "wheels":
         if samples is None:
-            samples = {1: 2, 2: 64, 3: 120}.get(model.n_joints, 600)
+            samples = {1: 2, 2: 64, 3: 160}.get(model.n_joints, 600)
         if not isinstance(samples, int) or samples < 2:
             raise InputError(f"samples must be an integer >= 2, got {samples!r}")
         ex = _wheels_extremes(model, qa, samples, refine, starts)

@@ -8,7 +8,15 @@ Builds named CasADi functions from the closed forms derived by ``snakecg_derive`
 Generalized coordinates ``q = (x, y, theta, q1..q6)`` (n_s = 9).
 
 Functions (inputs -> outputs, in argument order):
-* ``derived_parameters(link_mass, link_length, link_inertia, link_com) -> K``* ``link_poses(q, K) -> poses``* ``link_jacobians(q, K) -> J`` (eq. (3))* ``link_bias_accelerations(q, v, K) -> bias``* ``mass_matrix(q, K) -> M`` (eq. (4))* ``bias_forces(q, v, K) -> h`` (eq. (4))* ``contact_row_local(link_pose, link_twist, link_bias, link_com, object_pose, object_twist, rho, side) -> a_link, g_obj, adot_v, gap, s`` (eq. (8)-(13))* ``wheel_row_local(link_pose, link_twist, link_bias, wheel_offset) -> a_w, adot_v`` (eq. (8)-(13))* ``constrained_dynamics(q, v, tau, q_obj, v_obj, f_obj, K, contact_link, side, object_mass, object_inertia, rho, wheel_offset, free, lam_fixed, regularization) -> qdd, a_obj, lam, w, gap, s, norm_lambda, norm_a_obj, norm_qdd, sr, pivot_ratio, delassus, b``
+* ``derived_parameters(link_mass, link_length, link_inertia, link_com) -> K``
+* ``link_poses(q, K) -> poses``
+* ``link_jacobians(q, K) -> J``, eq. (3)
+* ``link_bias_accelerations(q, v, K) -> bias``
+* ``mass_matrix(q, K) -> M``, eq. (4)
+* ``bias_forces(q, v, K) -> h``, eq. (4)
+* ``contact_row_local(link_pose, link_twist, link_bias, link_com, object_pose, object_twist, rho, side) -> a_link, g_obj, adot_v, gap, s``, eq. (8)-(13)
+* ``wheel_row_local(link_pose, link_twist, link_bias, wheel_offset) -> a_w, adot_v``, eq. (8)-(13)
+* ``constrained_dynamics(q, v, tau, q_obj, v_obj, f_obj, K, contact_link, side, object_mass, object_inertia, rho, wheel_offset, free, lam_fixed, regularization) -> qdd, a_obj, lam, w, gap, s, norm_lambda, norm_a_obj, norm_qdd, sr, pivot_ratio, delassus, b``
 * ``interaction_maps(q, K, contact_link, side, object_mass, object_inertia, q_obj, rho, wheel_offset, free, lam_fixed, regularization) -> lam_from_tau, ..., delassus, pivot_ratio``
 * ``metric_forms(q, K, contact_link, side, object_mass, object_inertia, q_obj, rho, wheel_offset, free, regularization) -> omega_tau, xi_tau, lambda_form_tau, input_metric, contact_from_tau, pivot_ratio``
 * ``place_object(q, K, contact_link, contact_offset, object_distance, side) -> q_obj, rho, contact_point``
