@@ -1,0 +1,159 @@
+"""Benchmark of the optimal torque queries (issue #5): ``SceneModel.optimize``.
+
+Warm query latency (one configuration per call, the whole public call: validation, maps,
+solve, forward check), at random configurations, for every kind of query, at n_a = 3 and 6 in
+the ``wheels`` scenario (the one with friction bounds, the hardest); then a sweep over the 784
+configurations of the paper's case study 1 (n_a = 2, joints on -135..135 deg every 10 deg) in
+one batched call per kind.
+
+Push tasks are feasible by construction: the direction is the contact normal, and
+``least_slip_push`` asks for half of the strongest push the limits allow (computed before
+timing). Wall-clock and process CPU time are both reported: on a shared machine the wall
+clock includes time the process waited for a core.
+
+Targets (n_a = 3): under 1 ms for the QP kinds, under 20 ms for max-sr with sliding wheels
+(the per-wheel-state QPs / NLP); the 784-configuration sweep under 2 s.
+
+    /work/venv/bin/python benchmarks/bench_optimize.py [--n 200] [--joints 3 6]
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import platform
+import statistics
+import time
+
+import numpy as np
+
+import snakecg
+from snakecg.analysis import joint_grid
+
+KINDS = {
+    "max-sr, ellipsoid": dict(objective="max_sr"),
+    "max-sr, box": dict(objective="max_sr", tau_max=0.2),
+    "max-sr, sliding allowed, ellipsoid": dict(objective="max_sr", allow_slide=True),
+    "max-sr, sliding allowed, box": dict(objective="max_sr", allow_slide=True, tau_max=0.2),
+    "least-slip-push, box": dict(objective="least_slip_push", tau_max=0.3),
+    "least-slip-push, ellipsoid": dict(objective="least_slip_push"),
+    "strongest-push, box": dict(objective="strongest_push", tau_max=0.3),
+    "strongest-push, ellipsoid": dict(objective="strongest_push"),
+}
+QP_KINDS = ("least-slip-push, box", "strongest-push, box")
+NLP_KIND = "max-sr, sliding allowed, ellipsoid"
+
+
+def machine() -> str:
+    cpu = platform.processor() or platform.machine()
+    try:
+        with open("/proc/cpuinfo") as fh:
+            for line in fh:
+                if line.startswith("model name"):
+                    cpu = line.split(":", 1)[1].strip()
+                    break
+    except OSError:
+        pass
+    load = os.getloadavg() if hasattr(os, "getloadavg") else ("?",)
+    return (f"{cpu}, {os.cpu_count()} cores, Python {platform.python_version()}, "
+            f"load average {' '.join(f'{x:.2f}' for x in load)}")
+
+
+def random_q(rng, na, n):
+    return np.column_stack([rng.normal(size=(n, 2)), rng.uniform(-np.pi, np.pi, n),
+                            rng.uniform(-2.35, 2.35, (n, na))])
+
+
+def tasks(sm, Q, kw):
+    """Per-configuration keyword arguments: the contact normal as direction and, for
+    least-slip-push, half of the strongest push the same limits allow."""
+    out = []
+    limits = {k: v for k, v in kw.items() if k in ("tau_max", "radius")}
+    for q in Q:
+        if kw["objective"] == "max_sr":
+            out.append(dict(kw))
+            continue
+        strong = sm.optimize(q, "strongest_push", **limits)
+        d = strong.analysis.a_obj[:2] / np.linalg.norm(strong.analysis.a_obj[:2])
+        k = dict(kw, direction=d)
+        if kw["objective"] == "least_slip_push":
+            k["a_min"] = 0.5 * strong.objective_value
+        out.append(k)
+    return out
+
+
+def latency(sm, Q, kwargs):
+    wall, cpu, status = [], [], {}
+    for q, kw in zip(Q, kwargs):
+        kw = dict(kw)
+        objective = kw.pop("objective")
+        t0, c0 = time.perf_counter(), time.process_time()
+        res = sm.optimize(q, objective, **kw)
+        wall.append(time.perf_counter() - t0)
+        cpu.append(time.process_time() - c0)
+        status[res.status] = status.get(res.status, 0) + 1
+    ws = sorted(wall)
+    return dict(median=statistics.median(wall) * 1e3, p90=ws[int(0.9 * (len(ws) - 1))] * 1e3,
+                cpu=statistics.median(cpu) * 1e3, status=status)
+
+
+def main(argv=None) -> int:
+    p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    p.add_argument("--n", type=int, default=200, help="configurations per kind and joint count")
+    p.add_argument("--joints", type=int, nargs="+", default=[3, 6])
+    p.add_argument("--scenario", default="wheels", choices=snakecg.SCENARIOS)
+    args = p.parse_args(argv)
+    rng = np.random.default_rng(20171102)
+    print(f"# bench_optimize: scenario {args.scenario}, {args.n} random configurations per "
+          f"kind, warm queries")
+    print(f"# machine: {machine()}")
+    head = ("n_a", "query", "median ms", "p90 ms", "median CPU ms", "statuses")
+    print("| " + " | ".join(head) + " |")
+    print("|" + "---|" * len(head))
+    results = {}
+    for na in args.joints:
+        sm = snakecg.load(snakecg.Scene(snakecg.Robot(joints=na), scenario=args.scenario))
+        Q = random_q(rng, na, args.n)
+        for name, kw in KINDS.items():
+            n = args.n if "sliding" not in name or na <= 3 else max(20, args.n // 5)
+            kws = tasks(sm, Q[:n], kw)
+            latency(sm, Q[:3], kws[:3])  # warm up: solvers built, caches filled
+            r = latency(sm, Q[:n], kws)
+            results[(na, name)] = r
+            st = ", ".join(f"{k} {v}" for k, v in sorted(r["status"].items()))
+            print(f"| {na} | {name} | {r['median']:.3f} | {r['p90']:.3f} | {r['cpu']:.3f} | "
+                  f"{st} |", flush=True)
+    # sweep over the paper's case study 1 grid
+    sm2 = snakecg.load(snakecg.Scene(snakecg.Robot(joints=2), scenario=args.scenario))
+    grid = joint_grid(2)
+    print(f"\n# sweep: {len(grid)} configurations of case study 1 (n_a = 2), one batched call")
+    print("| query | wall s | CPU s | statuses |")
+    print("|---|---|---|---|")
+    sweeps = {}
+    for name, kw in KINDS.items():
+        kw = dict(kw)
+        objective = kw.pop("objective")
+        if objective != "max_sr":
+            kw["direction"] = [0.0, 1.0]  # the contact normal at theta = 0, contact link 1
+        if objective == "least_slip_push":
+            kw["a_min"] = 0.002
+        sm2.optimize(grid[:2], objective, **kw)  # warm up
+        t0, c0 = time.perf_counter(), time.process_time()
+        res = sm2.optimize(grid, objective, **kw)
+        wall, cpu = time.perf_counter() - t0, time.process_time() - c0
+        sweeps[name] = wall
+        st = ", ".join(f"{k} {int(np.sum(res.status == k))}" for k in sorted(set(res.status)))
+        print(f"| {name} | {wall:.3f} | {cpu:.3f} | {st} |", flush=True)
+    print(f"# machine at the end: {machine()}")
+    if 3 in args.joints:
+        ok_qp = all(results[(3, k)]["median"] < 1.0 for k in QP_KINDS)
+        ok_nlp = results[(3, NLP_KIND)]["median"] < 20.0
+        ok_sweep = all(v < 2.0 for v in sweeps.values())
+        print(f"# targets (n_a = 3, medians): QP kinds < 1 ms {'met' if ok_qp else 'MISSED'}; "
+              f"max-sr with sliding < 20 ms {'met' if ok_nlp else 'MISSED'}; "
+              f"784-configuration sweeps < 2 s {'met' if ok_sweep else 'MISSED'}")
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
