@@ -1448,7 +1448,7 @@ def save_animation(traj: Trajectory, path, *, fps: int = 20, frames: int = 100,
             ax.draw_artist(a)
         rgba = np.asarray(canvas.buffer_rgba())
         images.append(Image.fromarray(rgba[..., :3].copy()).quantize(
-            colors=64, method=Image.Quantize.FASTOCTREE))
+            colors=32, method=Image.Quantize.FASTOCTREE, dither=Image.Dither.NONE))
     images[0].save(str(path), save_all=True, append_images=images[1:],
                    duration=int(round(1000 / fps)), loop=0, optimize=False)
     plt.close(fig)

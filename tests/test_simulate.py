@@ -493,3 +493,38 @@ def test_figures_and_animation(models, tmp_path):
             assert im.format == "PNG" and min(im.size) > 150
     with Image.open(paths["animation"]) as im:
         assert im.format == "GIF" and im.n_frames == 6
+
+
+def test_max_events_stops_the_run_and_says_so(models):
+    sm, _ = models(3, "wheels", 10.0)
+    L = sm.maps(Q3)["lam_from_tau"] @ TAU3
+    tau = 4 * TAU3 / np.max(np.abs(L[2:]) / sm.bounds[2:])
+    full = sm.simulate(Q3, tau, 0.6, output_dt=0.05)
+    assert len(full.events) >= 2 and full.summary["status"] == "completed"
+    cut = sm.simulate(Q3, tau, 0.6, output_dt=0.05, max_events=1)
+    assert cut.summary["status"].startswith("stopped at t = ")
+    assert cut.t[-1] < 0.6 and len(cut.events) >= 1
+
+
+@pytest.mark.slow
+def test_long_run_with_many_transitions(models):
+    """Five seconds of a hard push (wheels breaking away, sticking, sliding back; the contact
+    point leaving the link): the energy balance closes, friction only dissipates, and the
+    constraint residuals stay at integration-error level."""
+    sm, ref = models(3, "wheels", 10.0)
+    N = sm.maps(Q3)["input_metric"]
+    tau = 4 * TAU3 / np.sqrt(TAU3 @ N @ TAU3)
+    traj = sm.simulate(Q3, tau, 5.0, output_dt=0.01)
+    s = traj.summary
+    assert s["status"] == "completed"
+    kinds = set(s["event_counts"])
+    assert {"breakaway", "stick"} <= kinds
+    # the run is long and chaotic (many friction reversals): the budget closes relative to the
+    # energies involved (about 20 J of work), not absolutely
+    assert abs(s["energy"]["balance_residual"]) < 1e-8 * s["energy"]["work_tau"]
+    assert np.all(np.diff(traj.work_friction) <= 1e-15)
+    assert s["constraint_residual"]["wheel_lateral_velocity"] < 1e-7
+    assert s["constraint_residual"]["gap"] < 1e-9
+    for i in range(0, traj.n_samples, 50):
+        ke = kinetic_energy(ref, traj.q[i], traj.v[i], traj.v_obj[i])
+        assert ke == pytest.approx(traj.kinetic_energy[i], rel=1e-9, abs=1e-15)
