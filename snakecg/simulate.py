@@ -8,8 +8,8 @@ State and equations
 -------------------
 ``y = (q, q_obj, v, v_obj, W)``: the snake's coordinates ``q`` (n_s) and velocities ``v``, the
 object's pose ``q_obj = (x_o, y_o, psi)`` and twist ``v_obj`` (COM velocity and angular rate,
-world frame, so ``d q_obj / dt = v_obj``), and four work integrals ``W`` (joint torques,
-kinetic friction, the external wrench on the object, constraint forces). The contact point is
+world frame, so ``d q_obj / dt = v_obj``), and three work integrals ``W`` (joint torques,
+kinetic friction of sliding wheels, the external wrench on the object). The contact point is
 fixed in the object frame (``rho``, from the scene's placement at ``t = 0``); it slides along
 the contact link without friction (assumption 2).
 
@@ -79,6 +79,7 @@ SCHEMA = "snakecg.simulate/1"
 _STATE_NAMES = {ABSENT: "none", HELD: "stick", LOST: "lost", SLIDE_POS: "slide+",
                 SLIDE_NEG: "slide-"}
 _N_WORK = 3  # work integrals: joint torques, kinetic friction, object wrench
+_METHODS = ("DOP853", "RK45", "RK23", "Radau", "BDF", "LSODA")  # scipy.integrate.solve_ivp
 
 
 class SimulationError(SnakecgError, RuntimeError):
@@ -384,6 +385,12 @@ class _Simulator:
                  output_dt, max_events):
         from .model import SceneModel
 
+        try:
+            from scipy.integrate import OdeSolver
+            from scipy.linalg.lapack import dposv
+        except ImportError:  # pragma: no cover - scipy is a dependency of the simulation
+            raise SnakecgError("snakecg.simulate needs SciPy (its solve_ivp integrates the "
+                               "dynamics): pip install scipy") from None
         if not isinstance(model, SceneModel):
             raise InputError("simulate needs a model loaded from a snakecg.Scene "
                              "(snakecg.load(scene)), got " + type(model).__name__)
@@ -412,6 +419,10 @@ class _Simulator:
         self.control_period = _positive("control_period", control_period, allow_none=True)
         if self.control_period is not None and self.kind == "constant":
             self.control_period = None
+        if not (method in _METHODS or (isinstance(method, type)
+                                       and issubclass(method, OdeSolver))):
+            raise InputError(f"method must be one of {', '.join(_METHODS)} (scipy solve_ivp) "
+                             f"or an OdeSolver class, got {method!r}")
         self.method = method
         self.rtol = _positive("rtol", rtol)
         self.atol = _positive("atol", atol)
@@ -447,8 +458,6 @@ class _Simulator:
         self._cache_key = None
         self._cache_val = None
         self._zeros_nc = np.zeros(nc)
-        from scipy.linalg.lapack import dposv
-
         self._posv = dposv
         self.nfev = 0
         self.njev = 0
@@ -758,11 +767,7 @@ class _Simulator:
 
     # --- main loop ----------------------------------------------------------------------
     def run(self):
-        try:
-            from scipy.integrate import solve_ivp
-        except ImportError:  # pragma: no cover - scipy is a dependency of the simulation
-            raise SnakecgError("snakecg.simulate needs SciPy (its solve_ivp integrates the "
-                               "dynamics): pip install scipy") from None
+        from scipy.integrate import solve_ivp
 
         wall0 = time.perf_counter()
         T = self.duration

@@ -457,6 +457,8 @@ def test_bad_input(models):
     with pytest.raises(snakecg.InputError, match="penetrates"):
         q_obj, rho, _ = sm.place_object(Q3)
         simulate(sm, Q3, TAU3, 0.1, q_obj0=q_obj - [0, 0.01, 0], rho=rho)
+    with pytest.raises(snakecg.InputError, match="method must be one of DOP853"):
+        simulate(sm, Q3, TAU3, 0.1, method="Euler")
     with pytest.raises(SimulationError, match="torque law returned"):
         simulate(sm, Q3, lambda t: [1.0, 2.0], 0.1)
     robot_model = snakecg.load(snakecg.Robot(joints=3))
