@@ -23,9 +23,10 @@ Structure used (see docs/optimize.md for the derivations):
    linear in ``tau`` (eqs. 17, 22, 24): ``lam = L tau``, ``a_obj = A tau``,
    ``qdd = Q tau``; "contact kept" is ``L_c tau >= 0`` and "no wheel slides" is
    ``|L_i tau| <= mu m_i g``: linear inequalities. ``least_slip_push`` is then a convex QP
-   and ``strongest_push`` an LP (qpOASES through ``casadi.conic``); with the ellipsoid they
-   are convex QCQPs, solved exactly by IPOPT when the linear relaxation (the ellipsoid's
-   bounding box) does not already give a point of the ellipsoid.
+   and ``strongest_push`` an LP (qpOASES through ``casadi.conic``). With the ellipsoid they
+   are convex QCQPs: the linear relaxation (the ellipsoid's bounding box) is solved first;
+   if its answer leaves the ellipsoid, the ellipsoid's multiplier ``mu`` is found by root
+   finding on ``tau(mu)^T N tau(mu) = r^2``, each step a QP (exact to solver precision).
 2. One frictionless point contact (assumptions 2 and 6) pushes the object only along its
    normal: ``a_obj = a_dir * lam_c`` for a fixed ``a_dir``, so every push task is a bound on
    the contact force ``lam_c = L_c tau``, and a requested acceleration off ``a_dir`` is
@@ -39,9 +40,10 @@ Structure used (see docs/optimize.md for the derivations):
    slide-) has its own affine map, valid on a polyhedral cone of ``z = (tau, 1)``. With the
    rank-one numerator ``||a_obj||^2 = k lam_c^2``, ``max sr`` on one state is the convex
    problem ``min z^T Xi_h z`` subject to ``lam_c(z) = 1``, the state's validity cone and the
-   region in homogeneous form (Charnes-Cooper): a QP per state, IPOPT when the ellipsoid
-   binds. States are pruned by an exact upper bound (the problem without the cone) before any
-   solve; the best valid state wins.
+   region in homogeneous form (Charnes-Cooper): a QP per state; where the ellipsoid cuts
+   the state's optimum, tangent-plane cuts, then a convex NLP (IPOPT) if the state can still
+   win. States are pruned by an exact upper bound (the problem without the cone) before any
+   solve; the candidates are ranked by the exact forward solve.
 
 Every answer is checked with :meth:`SceneModel.forward`; a disagreement (a wheel that slides
 although it was kept, a different objective value, a violated limit) turns the status into
@@ -111,8 +113,13 @@ class OptimizeResult:
       ``"torque limit on joint 2"``, ``"friction bound of the wheel on link 3"``,
       ``"input ellipsoid (eq. 31)"``, ``"contact would separate"``.
     * ``analysis``: :class:`~snakecg.ForwardResult` at ``tau`` (the exact forward solve).
-    * ``solver``: what produced ``tau``; ``iterations``: solver iterations; ``time``:
-      wall-clock seconds of the query (batched: the batch's time divided evenly).
+    * ``solver``: what produced ``tau``; ``iterations``: solver iterations (for max_sr with
+      sliding wheels: QPs solved plus IPOPT iterations); ``time``: wall-clock seconds of the
+      query (batched: the batch's time divided evenly).
+    * ``wheel_states_assumed``: max_sr with sliding wheels, when a wheel state other than
+      "every wheel sticks" won: that state per link (``"none"``, ``"stick"``, ``"slide+"``,
+      ``"slide-"``); else ``None``. ``analysis.wheel_state`` is what the forward solve found
+      (the same, or a neighbouring state on their common boundary).
     """
 
     objective: str
@@ -1199,7 +1206,7 @@ def optimize(model, q, objective: str = "max_sr", *, tau_max=None, radius=None,
         solver=np.array([a.solver for a in answers], dtype=object),
         iterations=np.array([a.iterations for a in answers]),
         time=np.full(len(answers), elapsed),
-        wheel_states_assumed=[a.states for a in answers],
+        wheel_states_assumed=[_state_names(a.states) for a in answers],
     )
     if not batched:
         res.tau = res.tau[0]
@@ -1209,12 +1216,19 @@ def optimize(model, q, objective: str = "max_sr", *, tau_max=None, radius=None,
         res.binding = answers[0].binding
         res.iterations = int(res.iterations[0])
         res.time = float(res.time[0])
-        res.wheel_states_assumed = answers[0].states
+        res.wheel_states_assumed = res.wheel_states_assumed[0]
         for k in res.analysis.__dataclass_fields__:
             v = getattr(res.analysis, k)
             if isinstance(v, np.ndarray):
                 setattr(res.analysis, k, v[0])
     return res
+
+
+def _state_names(states):
+    if states is None:
+        return None
+    table = {ABSENT: "none", HELD: "stick", SLIDE_POS: "slide+", SLIDE_NEG: "slide-"}
+    return np.array([table[int(s)] for s in states[1:]])
 
 
 def _objective_values(query, cfgs, an) -> np.ndarray:

@@ -236,8 +236,7 @@ def test_max_sr_with_sliding_wheels_beats_a_dense_sample(models, rng):
         res = sm.optimize(q, "max_sr", tau_max=tau_max, allow_slide=True)
         stuck = sm.optimize(q, "max_sr", tau_max=tau_max)
         assert res.status == "optimal" and stuck.status == "optimal"
-        assert res.objective_value >= stuck.objective_value - 1e-12, (
-            res.wheel_states_assumed, res.analysis.wheel_state, res.tau, stuck.tau, res.binding, res.solver, stuck.binding)
+        assert res.objective_value >= stuck.objective_value - 1e-12, (res.solver, res.tau)
         assert res.analysis.contact
         if not np.any(np.isin(res.analysis.wheel_state, ("slide+", "slide-"))):
             if trial >= 3:
@@ -345,14 +344,11 @@ def test_infeasible_push_names_the_friction_bound_that_binds(models, rng):
     wheels = {int(m) for m in re.findall(r"friction bound of the wheel on link (\d)", res.reason)}
     assert wheels, res.reason
     assert not any("torque limit" in b for b in res.binding)
-    from scipy.optimize import linprog
-
     for i in range(2, joints + 2):  # relax one wheel's bound at a time
         bounds = ref["bounds"].copy()
         bounds[i] *= 2
         gain = lp_max_contact_force(dict(ref, bounds=bounds), tau_max) / lam_max - 1
         assert (gain > 1e-6) == (i in wheels), (i, gain, res.binding)
-    assert linprog  # imported for the helper above
 
 
 def test_infeasible_push_names_the_ellipsoid(models, rng):
