@@ -224,6 +224,46 @@ def test_optimum_beats_a_dense_sample(models, rng, scenario, query):
                 np.testing.assert_allclose(res.objective_value, an.a_obj @ dd, rtol=1e-12)
 
 
+@pytest.mark.parametrize("scenario", SCENARIOS)
+def test_random_robots_contacts_and_sides(rng, random_robot, scenario):
+    """Per-link parameters over decades, any contact link, either side: the eigen-answer
+    against scipy on the reference maps, and a push with the least slip against a sample."""
+    from scipy.linalg import eigh
+
+    for trial in range(2):
+        joints = int(rng.integers(2, 4))  # models the suite compiles anyway
+        robot = random_robot(joints)
+        scene = snakecg.Scene(robot, scenario=scenario, mu=0.3, side=("left", "right")[trial],
+                              contact_link=int(rng.integers(1, joints + 2)))
+        sm = snakecg.load(scene)
+        q = random_q(rng, joints)
+        ref = reference_maps(scene, q)
+        # Omega + Xi is only semidefinite when wheels brace the snake (torques that move
+        # nothing): the Rayleigh quotient lives on its range
+        w, V = eigh(ref["Omega"] + ref["Xi"])
+        Vr = V[:, w > 1e-10 * w[-1]] / np.sqrt(w[w > 1e-10 * w[-1]])
+        top = eigh(Vr.T @ ref["Omega"] @ Vr, eigvals_only=True)[-1]
+        res = sm.optimize(q, "max_sr", tau_max=1.0)
+        assert res.status == "optimal", res.reason
+        np.testing.assert_allclose(res.objective_value, top, rtol=1e-7, atol=1e-12)
+        strong = sm.optimize(q, "strongest_push", tau_max=1.0)
+        assert strong.status == "optimal", strong.reason
+        d = strong.analysis.a_obj[:2] / np.linalg.norm(strong.analysis.a_obj[:2])
+        a_min = 0.5 * strong.objective_value
+        push = sm.optimize(q, "least_slip_push", direction=d, a_min=a_min, tau_max=1.0)
+        assert push.status == "optimal", push.reason
+        T = np.vstack([region_samples(rng, sm, q, 8000, tau_max=np.ones(joints)),
+                       perturbations(rng, sm, q, push.tau, 3000, tau_max=np.ones(joints)),
+                       perturbations(rng, sm, q, strong.tau, 3000, tau_max=np.ones(joints))])
+        fw = sm.forward(np.repeat(q[None], len(T), axis=0), T)
+        ok = feasible(fw)
+        along = fw.a_obj[:, :2] @ d
+        assert strong.objective_value >= along[ok].max() * (1 - 1e-6)
+        ok &= along >= a_min
+        if ok.any():
+            assert push.objective_value <= fw.norm_qdd[ok].min() * (1 + 1e-6)
+
+
 def test_max_sr_with_sliding_wheels_beats_a_dense_sample(models, rng):
     """Wheels allowed to slide (piecewise-affine map, one convex problem per wheel state):
     never worse than keeping them stuck, never worse than any sampled torque, and sliding

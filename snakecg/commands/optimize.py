@@ -71,11 +71,15 @@ def _allow_slide(text):
         return False
     if text.strip().lower() == "all":
         return True
-    vals = parse_vector("--allow-slide", text)
-    if any(v != int(v) for v in vals):
-        from ..errors import InputError
+    from ..errors import InputError
 
-        raise InputError(f"--allow-slide takes link numbers (e.g. 2,3) or nothing, got {text!r}")
+    try:
+        vals = parse_vector("--allow-slide", text)
+    except InputError:
+        vals = [0.5]
+    if any(v != int(v) for v in vals):
+        raise InputError(f"--allow-slide takes link numbers (e.g. 2,3), 'all' or nothing, "
+                         f"got {text!r}")
     return [int(v) for v in vals]
 
 
