@@ -48,8 +48,8 @@ Structure used (see docs/optimize.md for the derivations):
 Every answer is checked with :meth:`SceneModel.forward`; a disagreement (a wheel that slides
 although it was kept, a different objective value, a violated limit) turns the status into
 ``"failed"`` with the reason. Solvers are built once per problem size and shared by every model
-with that joint count; the conic solver is warm-started with the previous query's primal-dual
-solution, IPOPT from the relaxation's solution.
+with that joint count; qpOASES is hot-started from the previous query's working set (CasADi
+keeps it between calls), IPOPT starts from the relaxation's solution.
 """
 
 from __future__ import annotations
@@ -58,7 +58,6 @@ import contextlib
 import io
 import itertools
 import time
-import weakref
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -307,7 +306,9 @@ class _Solvers:
         import casadi as ca
 
         self.n1, self.R = n1, R
-        # qpOASES prints its banner through CasADi's output stream when constructed
+        # qpOASES prints its banner through CasADi's output stream when constructed. CasADi
+        # initialises qpOASES on a solver's first call and hot-starts it from the previous
+        # call's working set afterwards.
         with contextlib.redirect_stdout(io.StringIO()):
             self.qp = ca.conic("snakecg_optimize_qp", "qpoases",
                                {"h": ca.Sparsity.dense(n1, n1), "a": ca.Sparsity.dense(R, n1)},
@@ -375,7 +376,6 @@ class _Solvers:
 
 
 _SOLVERS: dict[tuple[int, int], _Solvers] = {}
-_WARM: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
 
 
 def _solvers(n1: int, R: int) -> _Solvers:
@@ -455,7 +455,7 @@ def _binding(prob, zs, A, lba, uba, lam_a, extra=()):
 
 
 def _solve_conic_fast(prob: _Problem) -> _Solution:
-    """A QP through the packed solver (no warm start, no status string): for the many small
+    """A QP through the packed solver (its own hot start, no status string): for the many small
     QPs of the wheel-state search. ``ok`` is False for an infeasible (or failed) problem."""
     n1, R = prob.A.shape[1], prob.A.shape[0]
     sv = _solvers(n1, R)
@@ -473,15 +473,12 @@ def _solve_conic_fast(prob: _Problem) -> _Solution:
 
 
 def _solve_conic(model, prob: _Problem, key: str) -> _Solution:
-    """qpOASES (QP, or LP when ``prob.H`` is None), warm-started from the previous query."""
+    """qpOASES (QP, or LP when ``prob.H`` is None), hot-started from the previous solve's
+    working set (CasADi's qpOASES interface does this itself; it takes no initial guess)."""
     n1, R = prob.A.shape[1], prob.A.shape[0]
     sv = _solvers(n1, R)
     H, g, A, lba, uba, lbx, ubx = _scaled(prob)
-    warm = _WARM.setdefault(model, {})
     args = dict(g=g, a=A, lba=lba, uba=uba, lbx=lbx, ubx=ubx)
-    if key in warm:
-        x0, la, lx = warm[key]
-        args.update(x0=x0, lam_a0=la, lam_x0=lx)
     if H is None:
         res = sv.lp(**args)
         st = sv.lp.stats()
@@ -495,7 +492,6 @@ def _solve_conic(model, prob: _Problem, key: str) -> _Solution:
     binding, rows, unique = (), [], False
     if ok:
         lam_a = res["lam_a"].full().ravel()
-        warm[key] = (zs, lam_a, res["lam_x"].full().ravel())
         binding, rows = _binding(prob, zs, A, lba, uba, lam_a)
         # an LP vertex with n independent rows active, all with non-zero multipliers
         # (t fixed): no other point reaches the optimum
