@@ -472,7 +472,7 @@ def _solve_conic_fast(prob: _Problem) -> _Solution:
     return _Solution(True, zs * prob.scale, "Successful return.", 1, "qpoases", binding)
 
 
-def _solve_conic(model, prob: _Problem, key: str) -> _Solution:
+def _solve_conic(prob: _Problem) -> _Solution:
     """qpOASES (QP, or LP when ``prob.H`` is None), hot-started from the previous solve's
     working set (CasADi's qpOASES interface does this itself; it takes no initial guess)."""
     n1, R = prob.A.shape[1], prob.A.shape[0]
@@ -504,7 +504,7 @@ def _solve_conic(model, prob: _Problem, key: str) -> _Solution:
                      int(st.get("iter_count", 0) or 0), name, binding, unique)
 
 
-def _solve_ipopt(model, prob: _Problem, z0: np.ndarray) -> _Solution:
+def _solve_ipopt(prob: _Problem, z0: np.ndarray) -> _Solution:
     """IPOPT on the problem with the ellipsoid constraint (convex), started at ``z0``."""
     n1, R = prob.A.shape[1], prob.A.shape[0]
     n = n1 - 1
@@ -823,7 +823,7 @@ def _max_sr_sliding(model, query, cfg, stick: _Answer) -> _Answer:
         prob.N, prob.r2 = cfg.N, query.radius**2
         tau = z[:n] / z[n]
         z0 = np.append(tau * query.radius / np.sqrt(tau @ cfg.N @ tau) * (1 - 1e-6), 1.0)
-        sol = _solve_ipopt(model, prob, z0 / (ell[s] @ z0) if ell[s] @ z0 > 0 else z0)
+        sol = _solve_ipopt(prob, z0 / (ell[s] @ z0) if ell[s] @ z0 > 0 else z0)
         n_ipopt += 1
         iters += sol.iterations
         if not sol.ok or sol.z[n] <= 0:
@@ -945,7 +945,7 @@ def _inside(query, cfg, tau):
     return query.radius is None or tau @ cfg.N @ tau <= query.radius**2 * (1 + 1e-9)
 
 
-def _solve_ellipsoid(model, query, cfg, prob: _Problem, key: str, phi0: float) -> _Solution:
+def _solve_ellipsoid(query, cfg, prob: _Problem, phi0: float) -> _Solution:
     """Exact solve of a convex push problem (``t`` fixed to 1) with the ellipsoid
     ``tau^T N tau <= r^2`` when the linear relaxation's optimum (``phi0 = tau^T N tau`` there)
     lies outside it.
@@ -973,7 +973,7 @@ def _solve_ellipsoid(model, query, cfg, prob: _Problem, key: str, phi0: float) -
         nonlocal iters
         trial = _Problem(H=H0 + 2 * m * Nz, g=prob.g, A=prob.A, lba=prob.lba, uba=prob.uba,
                          lbx=prob.lbx, ubx=prob.ubx, names=prob.names, scale=prob.scale)
-        sol = _solve_conic(model, trial, key + "_mu")
+        sol = _solve_conic(trial)
         iters += 1
         return (sol.z[:n] @ cfg.N @ sol.z[:n] if sol.ok else np.nan), sol
 
@@ -1043,10 +1043,10 @@ def _strongest_lam(model, query, cfg) -> _Strongest:
             return _Strongest(True, float(ell @ tau), tau, (ELLIPSOID,),
                               "closed form (ellipsoid)", 0, "", True)
     prob = _push_problem(model, query, cfg, lp=True)
-    sol = _solve_conic(model, prob, "lp")
+    sol = _solve_conic(prob)
     iters, solver, unique = sol.iterations, sol.solver, sol.unique
     if query.radius is not None and sol.ok and not _inside(query, cfg, sol.z[:n]):
-        sol = _solve_ellipsoid(model, query, cfg, prob, "lp", sol.z[:n] @ cfg.N @ sol.z[:n])
+        sol = _solve_ellipsoid(query, cfg, prob, sol.z[:n] @ cfg.N @ sol.z[:n])
         iters += sol.iterations
         solver = sol.solver
         # a linear objective on a strictly convex active constraint: a single maximiser
@@ -1058,14 +1058,14 @@ def _strongest_lam(model, query, cfg) -> _Strongest:
                       unique)
 
 
-def _least_slip(model, query, cfg, lam_lo, equal, *, key="qp"):
+def _least_slip(model, query, cfg, lam_lo, equal):
     """min tau^T Xi tau s.t. lam_c >= lam_lo (== if equal), limits, wheels sticking."""
     n = cfg.N.shape[0]
     prob = _push_problem(model, query, cfg, lam_lo=lam_lo, equal=equal)
-    sol = _solve_conic(model, prob, key)
+    sol = _solve_conic(prob)
     solver, iters = sol.solver, sol.iterations
     if sol.ok and not _inside(query, cfg, sol.z[:n]):
-        sol = _solve_ellipsoid(model, query, cfg, prob, key, sol.z[:n] @ cfg.N @ sol.z[:n])
+        sol = _solve_ellipsoid(query, cfg, prob, sol.z[:n] @ cfg.N @ sol.z[:n])
         solver = sol.solver
         iters += sol.iterations
     return sol, solver, iters
@@ -1123,8 +1123,7 @@ def _strongest_push(model, query, cfg) -> _Answer:
                        solver, iters, 0.0)
     # ties (a degenerate LP optimum): among the strongest pushes, the least snake motion
     if not st.unique:
-        sol, s2, it2 = _least_slip(model, query, cfg, lam_max * (1 - 1e-9), False,
-                                   key="qp_tiebreak")
+        sol, s2, it2 = _least_slip(model, query, cfg, lam_max * (1 - 1e-9), False)
         iters += it2
         if sol.ok:
             tau = sol.z[:n]
