@@ -9,6 +9,8 @@ SymPy or Jinja2.
 
 from __future__ import annotations
 
+import math
+import threading
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -20,7 +22,7 @@ from .errors import InputError
 from .native import load_backend
 from .robot import Robot, Scene
 from .solver import (ABSENT, HELD, LOST, PIVOT_TOL, REGULARIZATION, SLIDE_NEG, SLIDE_POS,
-                     solve_active_set)
+                     _violations_one, default_max_iter, solve_active_set)
 
 __all__ = ["load", "RobotModel", "SceneModel", "ForwardResult"]
 
@@ -210,6 +212,11 @@ class SceneModel(RobotModel):
         if scene.scenario == "wheels":
             bounds[1:] = np.asarray(scene.wheel_bounds())
         self.bounds = bounds
+        # one-sample path of forward: initial row states, bounds as floats, per-thread buffers
+        self._state0 = [int(s) for s in np.where(present, HELD, ABSENT)]
+        self._bounds_list = [float(b) for b in bounds]
+        self._zeros_one = (np.zeros(self.n_coordinates), np.zeros(3))
+        self._local = threading.local()
 
     # placement ----------------------------------------------------------------------------
     def place_object(self, q):
@@ -263,6 +270,10 @@ class SceneModel(RobotModel):
         batched = any(b for _, b in parts.values())
         if ("q_obj" in extra) != ("rho" in extra):
             raise InputError("q_obj and rho go together: give both or neither")
+        if not batched and self.backend.kind == "compiled":
+            res = self._forward_one(qa[0], ta[0], extra, max_iter)
+            if res is not None:
+                return res
         if "q_obj" not in extra:
             q_obj_a, rho_a = self._place(qa, qa.shape[0])[:2]
         else:
@@ -275,6 +286,63 @@ class SceneModel(RobotModel):
         }
         sol = self._solve(base, n, max_iter=max_iter)
         return self._result(sol, expand(ta, n), batched)
+
+    def _forward_one(self, q, tau, extra, max_iter):
+        """``forward`` for one sample through preallocated one-sample buffers of the compiled
+        functions (the general path's per-call numpy and ctypes overhead is ~10x the C time).
+        The same active-set passes as :func:`~snakecg.solver.solve_active_set`; returns None to
+        leave the rare cases to the general path: dependent held rows (regularised re-solve)
+        and no convergence within ``max_iter`` passes (enumeration)."""
+        ks = getattr(self._local, "kernels", None)
+        if ks is None:
+            from .simulate import _Kernel  # one-sample buffers (thread-local here)
+
+            be, K = self.backend, self.parameters
+            place = _Kernel(be, "place_object", {
+                "K": K, "contact_link": self._contact_link,
+                "contact_offset": [self.scene.contact_offset],
+                "object_distance": [self.scene.object_distance], "side": self._side})
+            cd = _Kernel(be, "constrained_dynamics", {
+                "K": K, "contact_link": self._contact_link, "side": self._side,
+                "object_mass": self._object_mass, "object_inertia": self._object_inertia,
+                "wheel_offset": self._wheel_offset, "regularization": [0.0]})
+            ks = self._local.kernels = (place, cd, *(cd.out_names.index(k) for k in
+                                                     ("lam", "w", "pivot_ratio")))
+        place, cd, i_lam, i_w, i_pivot = ks
+        if "q_obj" in extra:
+            q_obj, rho = extra["q_obj"][0], extra["rho"][0]
+        else:
+            q_obj, rho, _ = place.one(q=q)
+        zeros = self._zeros_one
+        cd.set(q=q, tau=tau, q_obj=q_obj, rho=rho,
+               v=extra["v"][0] if "v" in extra else zeros[0],
+               v_obj=extra["v_obj"][0] if "v_obj" in extra else zeros[1],
+               f_obj=extra["f_obj"][0] if "f_obj" in extra else zeros[1])
+        state, bounds = list(self._state0), self._bounds_list
+        for _ in range(default_max_iter(len(state)) if max_iter is None else max_iter):
+            outs = cd.one(free=[float(s == HELD) for s in state],
+                          lam_fixed=[u if s == SLIDE_POS else -u if s == SLIDE_NEG else 0.0
+                                     for s, u in zip(state, bounds)])
+            lam, w = outs[i_lam].tolist(), outs[i_w].tolist()
+            if not (outs[i_pivot][0] > PIVOT_TOL and all(map(math.isfinite, lam))):
+                return None
+            new = _violations_one(state, lam, w, bounds)
+            if new == state:
+                break
+            state = new
+        else:
+            return None
+        o = dict(zip(cd.out_names, outs))
+        contact = state[0] == HELD
+        return ForwardResult(
+            qdd=o["qdd"].copy(), a_obj=o["a_obj"].copy(), lam=o["lam"].copy(),
+            w=o["w"].copy(), contact=np.bool_(contact),
+            wheel_state=_WHEEL_STATE_NAMES[state[1:]],
+            norm_lambda=np.float64(o["norm_lambda"][0]),
+            norm_a_obj=np.float64(o["norm_a_obj"][0]), norm_qdd=np.float64(o["norm_qdd"][0]),
+            sr=np.float64(o["sr"][0] if contact else 0.0), gap=np.float64(o["gap"][0]),
+            singular=np.bool_(False), tau=tau,
+        )
 
     def _solve(self, base: dict, n: int, *, max_iter=None):
         order = ["q", "v", "tau", "q_obj", "v_obj", "f_obj"]

@@ -82,6 +82,36 @@ def _violations(state, lam, w, bounds, tol_lam, tol_w):
     return new
 
 
+def _violations_one(state: list, lam: list, w: list, bounds: list) -> list:
+    """:func:`_violations` (with :func:`_tolerances`) for one sample on Python lists: the same
+    rules, for the one-sample path of ``SceneModel.forward`` where numpy's per-call overhead
+    on 5-element arrays would dominate."""
+    tol_lam = 1e-9 * max(1.0, max(abs(x) for x in lam))
+    tol_w = 1e-9 * max(1.0, max(abs(x) for x in w))
+    new = list(state)
+    if state[0] == HELD and lam[0] < -tol_lam:
+        new[0] = LOST
+    elif state[0] == LOST and w[0] < -tol_w:
+        new[0] = HELD
+    for r in range(1, len(state)):
+        s, u = state[r], bounds[r]
+        if s == HELD:
+            if lam[r] > u + tol_lam:
+                new[r] = SLIDE_POS
+            elif lam[r] < -u - tol_lam:
+                new[r] = SLIDE_NEG
+        elif s == SLIDE_POS and w[r] > tol_w:
+            new[r] = HELD
+        elif s == SLIDE_NEG and w[r] < -tol_w:
+            new[r] = HELD
+    return new
+
+
+def default_max_iter(nc: int) -> int:
+    """Active-set passes before the remaining samples are enumerated."""
+    return 4 * nc + 4
+
+
 def _tolerances(out):
     lam, w = out["lam"], out["w"]
     tol_lam = 1e-9 * np.maximum(1.0, np.abs(lam).max(axis=1, keepdims=True))
@@ -117,7 +147,7 @@ def solve_active_set(call, n: int, present: np.ndarray, bounds: np.ndarray, *,
     """
     nc = len(present)
     if max_iter is None:
-        max_iter = 4 * nc + 4
+        max_iter = default_max_iter(nc)
     state = np.where(present, HELD, ABSENT).astype(np.int8)
     state = np.repeat(state[None, :], n, axis=0)
     idx_all = np.arange(n)

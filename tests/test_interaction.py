@@ -210,6 +210,67 @@ def test_batched_equals_single_calls(models, rng, scenario):
     assert one.qdd.shape == (6,) and np.ndim(one.sr) == 0 and np.ndim(one.contact) == 0
 
 
+@pytest.mark.parametrize("scenario", SCENARIOS)
+def test_single_call_path_equals_general_path(models, rng, scenario):
+    """A single sample takes forward's one-sample path (preallocated buffers, scalar active-set
+    passes); the CasADi backend and batches take the general one. Both agree to rounding, with
+    a given object placement, motion and wrench, and with ``max_iter=1`` (enumeration)."""
+    scene, sm, ref = models(2, scenario)
+    casadi = snakecg.load(scene, backend="casadi")
+    n = 12
+    q, tau = random_q(rng, 2, n), random_tau(rng, 2, n)
+    v, v_obj, f_obj = random_motion(rng, 2, n)
+    q_obj, rho = sm.place_object(q)[:2]
+    rho = rho + rng.uniform(-0.03, 0.03, rho.shape)  # off the normal: the object turns
+    for kw in ({}, {"max_iter": 1}, {"v": v, "v_obj": v_obj, "f_obj": f_obj},
+               {"q_obj": q_obj, "rho": rho, "f_obj": f_obj}):
+        batch = sm.forward(q, tau, **kw)
+        for i in range(n):
+            one_kw = {k: (x[i] if isinstance(x, np.ndarray) else x) for k, x in kw.items()}
+            for model in (sm, casadi):
+                one = model.forward(q[i], tau[i], **one_kw)
+                for k in ("qdd", "a_obj", "lam", "w", "norm_qdd", "norm_a_obj", "norm_lambda",
+                          "sr", "gap"):
+                    close(getattr(one, k), getattr(batch, k)[i], 1e-11, f"{k} {kw.keys()}")
+                    assert np.shape(getattr(one, k)) == np.shape(getattr(batch, k))[1:]
+                assert one.contact == batch.contact[i] and not one.singular
+                assert type(one.contact) is np.bool_ and type(one.sr) is np.float64
+                assert list(one.wheel_state) == list(batch.wheel_state[i])
+                close(one.tau, tau[i], 0.0, "tau")
+
+
+def test_violations_one_equals_violations(rng):
+    """The scalar state update of the one-sample path and the vectorized one of the batch path
+    (solver._violations_one / _violations with _tolerances) give the same next states, on random
+    states, forces and accelerations placed at and around the bounds and the tolerances."""
+    from snakecg import solver
+
+    nc = 6
+    bounds = np.array([np.inf, np.inf, 0.5, 0.5, 2.0, 1.0])
+    n = 4000
+    state = np.empty((n, nc), np.int8)
+    state[:, 0] = rng.choice([solver.HELD, solver.LOST], n)
+    state[:, 1] = solver.ABSENT
+    state[:, 2:5] = rng.choice([solver.HELD, solver.SLIDE_POS, solver.SLIDE_NEG], (n, 3))
+    state[:, 5] = solver.HELD
+    scale = np.exp(rng.uniform(-3, 3, (n, 1)))
+    lam = rng.normal(size=(n, nc)) * scale
+    w = rng.normal(size=(n, nc)) * scale
+    # values right at the bounds and within a few tolerances of them or of zero
+    near = rng.random((n, nc)) < 0.4
+    tol = 1e-9 * np.maximum(1.0, np.abs(lam).max(axis=1, keepdims=True))
+    edge = np.where(np.isfinite(bounds), bounds, 0.0) * rng.choice([-1, 1], (n, nc))
+    lam = np.where(near, edge + rng.integers(-2, 3, (n, nc)) * tol, lam)
+    w = np.where(rng.random((n, nc)) < 0.3, rng.integers(-2, 3, (n, nc)) * 1e-9, w)
+    tl, tw = solver._tolerances({"lam": lam, "w": w})
+    vec = solver._violations(state, lam, w, bounds, tl, tw)
+    for i in range(n):
+        one = solver._violations_one(state[i].tolist(), lam[i].tolist(), w[i].tolist(),
+                                     bounds.tolist())
+        assert one == vec[i].tolist(), f"sample {i}"
+    assert np.any(vec != state)
+
+
 # ------------------------------------------------------------------------------------------
 # 2. the KKT system and the complementarity conditions
 # ------------------------------------------------------------------------------------------
@@ -636,6 +697,11 @@ def test_dependent_rows_are_flagged_and_least_norm(models, rng, joints, scenario
     pair = res.lam[:, j] + res.lam[:, j + 1]
     close(pair[stuck], one.lam[stuck, j], 1e-6, "sum of the twin forces")
     close(res.lam[stuck, j], res.lam[stuck, j + 1], 1e-4, "least-norm split")
+    # one sample at a time (the one-sample path leaves dependent rows to the general path)
+    for i in range(3):
+        one = sm.forward(q[i], tau[i], v=v[i], v_obj=v_obj[i], f_obj=f_obj[i])
+        assert one.singular == res.singular[i]
+        close(one.lam, res.lam[i], 1e-12, "single-sample singular lam")
     # maps at such a configuration: finite and flagged
     maps = sm.maps(q[:3])
     for k, val in maps.items():
