@@ -178,8 +178,8 @@ def _forms(model, qa, *, contact: bool):
     return forms, out["input_metric"], out["contact_from_tau"], out
 
 
-def _quadratic_extremes(model, qa):
-    """Exact extremes for linear scenarios (frictionless, ideal_wheels)."""
+def _quadratic_extremes_numpy(model, qa):
+    """Exact extremes for linear scenarios (frictionless, ideal_wheels), numpy eigensolver."""
     n, na = qa.shape[0], model.n_joints
     kept, N, c, _ = _forms(model, qa, contact=True)
     lost, _, _, _ = _forms(model, qa, contact=False)
@@ -229,6 +229,80 @@ def _quadratic_extremes(model, qa):
         store_t["sr"] = v / norm[:, None]
     ex.min["sr"] = np.zeros(n)
     ex.tau_min["sr"] = -ex.tau_max["sr"]
+    return ex
+
+
+def _quadratic_extremes(model, qa):
+    """Exact extremes for linear scenarios (frictionless, ideal_wheels).
+
+    Uses the generated closed-form ``metric_extremes`` where the model has it (n_a <= 3) and
+    numpy's batched eigensolver otherwise (and for samples with dependent rows).
+    """
+    if "metric_extremes" not in model.backend.signatures:
+        return _quadratic_extremes_numpy(model, qa)
+    from .solver import HELD, LOST, PIVOT_TOL, _free_and_fixed
+
+    n, na = qa.shape[0], model.n_joints
+    state = np.where(model.present, HELD, 0).astype(np.int8)
+    free_kept, _ = _free_and_fixed(state[None, :], model.bounds)
+    state[0] = LOST
+    free_lost, _ = _free_and_fixed(state[None, :], model.bounds)
+    q_obj, rho, _ = model._place(qa, n)
+    args = [model._arg(qa, n), model.parameters, model._contact_link, model._side,
+            model._object_mass, model._object_inertia, model._arg(q_obj, n),
+            model._arg(rho, n), model._wheel_offset, free_kept[0], free_lost[0], np.zeros(1)]
+    outs = model._call("metric_extremes", n, [np.ascontiguousarray(a) for a in args])
+    o = dict(zip(model.backend.signatures["metric_extremes"].out_names, outs))
+    c = o["contact_from_tau"][:, 0, :]
+
+    def signed(t, keep):  # t: (n, na), flip so that c . t >= 0 (keep) or <= 0 (lose)
+        s = np.einsum("bi,bi->b", c, t)
+        flip = (s < 0) if keep else (s > 0)
+        return np.where(flip[:, None], -t, t)
+
+    ex = Extremes(method="generalized eigenproblem per contact state (exact, closed form)")
+    # The forms are positive semidefinite; the closed form's smallest eigenvalue of a
+    # rank-deficient form (one contact: Omega has rank 1) is exact only to ~1e-8 of the
+    # largest (a double root of the cubic), so it is clipped at 0.
+    for m in ("norm_a_obj", "norm_qdd", "norm_lambda"):
+        vk, tk = np.maximum(o[f"{m}_kept"][:, :, 0], 0.0), o[f"tau_{m}_kept"]
+        kmin, kmax = vk[:, 0], vk[:, 1]
+        tk_min, tk_max = signed(tk[:, :, 0], True), signed(tk[:, :, 1], True)
+        if m == "norm_a_obj":  # no contact, no push: the lost half gives exactly 0
+            lmin = lmax = np.zeros(n)
+            tl_min = tl_max = -tk_max
+        else:
+            vl, tl = np.maximum(o[f"{m}_lost"][:, :, 0], 0.0), o[f"tau_{m}_lost"]
+            lmin, lmax = vl[:, 0], vl[:, 1]
+            tl_min, tl_max = signed(tl[:, :, 0], False), signed(tl[:, :, 1], False)
+        use_k = kmax >= lmax
+        ex.max[m] = np.where(use_k, kmax, lmax)
+        ex.tau_max[m] = np.where(use_k[:, None], tk_max, tl_max)
+        use_k = kmin <= lmin
+        ex.min[m] = np.where(use_k, kmin, lmin)
+        ex.tau_min[m] = np.where(use_k[:, None], tk_min, tl_min if m != "norm_a_obj"
+                                 else -tk_min)
+        ex.min_kept[m] = kmin
+        ex.tau_min_kept[m] = tk_min
+    vs, ts = o["sr_kept"][:, :, 0], o["tau_sr_kept"]
+    ex.max["sr"] = np.clip(vs[:, 1], 0.0, 1.0)
+    ex.tau_max["sr"] = signed(ts[:, :, 1], True)
+    ex.min_kept["sr"] = np.clip(vs[:, 0], 0.0, 1.0)
+    ex.tau_min_kept["sr"] = signed(ts[:, :, 0], True)
+    ex.min["sr"] = np.zeros(n)
+    ex.tau_min["sr"] = -ex.tau_max["sr"]
+    bad = ~(o["pivot_ratio_kept"][:, 0, 0] > PIVOT_TOL) | ~(o["pivot_ratio_lost"][:, 0, 0] >
+                                                             PIVOT_TOL)
+    for d in (ex.max, ex.min, ex.min_kept, ex.tau_max, ex.tau_min, ex.tau_min_kept):
+        for k in d:
+            bad |= ~np.all(np.isfinite(d[k].reshape(n, -1)), axis=1)
+    if np.any(bad):  # dependent rows or a degenerate closed form: the regularised numpy path
+        sub = np.flatnonzero(bad)
+        again = _quadratic_extremes_numpy(model, np.ascontiguousarray(qa[sub]))
+        for attr in ("max", "min", "min_kept", "tau_max", "tau_min", "tau_min_kept"):
+            d, e = getattr(ex, attr), getattr(again, attr)
+            for k in d:
+                d[k][sub] = e[k]
     return ex
 
 

@@ -994,19 +994,9 @@ def interaction_maps():
                        [ca.densify(o) for o in ca.cse(outs)], names, onames)
 
 
-def metric_forms():
-    """The quadratic forms of the metrics in ``tau`` at rest, for a given active set.
-
-    A lean subset of ``interaction_maps`` for the extremes over the input ellipsoid:
-    ``omega_tau`` (eq. 29), ``xi_tau`` (eq. 28), ``lambda_form_tau`` (``lam^T G_c lam``), the
-    input metric ``B^T M_s^-1 B`` (eq. 31, corrected) and the contact row of
-    ``lam_from_tau`` (its sign tells whether a torque keeps the contact).
-    """
+def _metric_forms_sx(fn, q, K, sc, free):
+    """Forms of the metrics in ``tau`` at rest for the held rows ``free`` (eqs. 28, 29, 31)."""
     ns, na = N_COORDINATES, N_JOINTS
-    fn = _model_functions()
-    q = SX.sym("q", ns)
-    K = SX.sym("K", N_PARAMETERS)
-    sc = _scene_inputs()
     A, _, _, _ = _rows(fn, q, SX(ns, 1), K, sc["contact_link"], sc["side"], sc["q_obj"],
                        SX(3, 1), sc["rho"], sc["wheel_offset"])
     M = fn["mass_matrix"](q, K)
@@ -1018,24 +1008,193 @@ def metric_forms():
     mo = _col(sc["object_mass"], sc["object_mass"], sc["object_inertia"])
     IoinvAoT = ca.mtimes(ca.diag(1 / mo), Ao.T)
     Gc = ca.mtimes(As, MinvAsT) + ca.mtimes(Ao, IoinvAoT)
-    free = sc["free"]
     Lg, dg, ratio = _masked_delassus(Gc, free, sc["regularization"])
     # lam_tau = -G'^-1 D A_s M^-1 B
     lam_tau = -_ldl_solve(Lg, dg, ca.mtimes(ca.diag(free), ca.mtimes(As, MinvB)))
     qdd_tau = MinvB + ca.mtimes(MinvAsT, lam_tau)
     a_tau = ca.mtimes(IoinvAoT, lam_tau)
-    xi = ca.mtimes([qdd_tau.T, M, qdd_tau])
-    omega = ca.mtimes([a_tau.T, ca.diag(mo), a_tau])
-    lam_form = ca.mtimes([lam_tau.T, Gc, lam_tau])
-    metric = ca.mtimes(Bm.T, MinvB)
+    return {
+        "omega_tau": ca.mtimes([a_tau.T, ca.diag(mo), a_tau]),
+        "xi_tau": ca.mtimes([qdd_tau.T, M, qdd_tau]),
+        "lambda_form_tau": ca.mtimes([lam_tau.T, Gc, lam_tau]),
+        "input_metric": ca.mtimes(Bm.T, MinvB),
+        "contact_from_tau": lam_tau[0, :],
+        "pivot_ratio": ratio,
+    }
+
+
+def metric_forms():
+    """The quadratic forms of the metrics in ``tau`` at rest, for a given active set.
+
+    A lean subset of ``interaction_maps`` for the extremes over the input ellipsoid:
+    ``omega_tau`` (eq. 29), ``xi_tau`` (eq. 28), ``lambda_form_tau`` (``lam^T G_c lam``), the
+    input metric ``B^T M_s^-1 B`` (eq. 31, corrected) and the contact row of
+    ``lam_from_tau`` (its sign tells whether a torque keeps the contact).
+    """
+    fn = _model_functions()
+    q = SX.sym("q", N_COORDINATES)
+    K = SX.sym("K", N_PARAMETERS)
+    sc = _scene_inputs()
+    forms = _metric_forms_sx(fn, q, K, sc, sc["free"])
     ins = [q, K, sc["contact_link"], sc["side"], sc["object_mass"], sc["object_inertia"],
-           sc["q_obj"], sc["rho"], sc["wheel_offset"], free, sc["regularization"]]
+           sc["q_obj"], sc["rho"], sc["wheel_offset"], sc["free"], sc["regularization"]]
     names = ["q", "K", "contact_link", "side", "object_mass", "object_inertia", "q_obj", "rho",
              "wheel_offset", "free", "regularization"]
-    outs = [omega, xi, lam_form, metric, lam_tau[0, :], ratio]
-    onames = ["omega_tau", "xi_tau", "lambda_form_tau", "input_metric", "contact_from_tau",
-              "pivot_ratio"]
+    onames = list(forms)
     return ca.Function(PREFIX + "metric_forms", ins,
+                       [ca.densify(o) for o in ca.cse([forms[k] for k in onames])], names,
+                       onames)
+
+
+def _chol_small(A):
+    """Cholesky factor (lower) of a small SPD matrix, as an SX matrix."""
+    n = A.shape[0]
+    L = SX(n, n)
+    for j in range(n):
+        s = A[j, j]
+        for k in range(j):
+            s = s - L[j, k] * L[j, k]
+        L[j, j] = sqrt(s)
+        for i in range(j + 1, n):
+            t = A[i, j]
+            for k in range(j):
+                t = t - L[i, k] * L[j, k]
+            L[i, j] = t / L[j, j]
+    return L
+
+
+def _lower_inv(L):
+    n = L.shape[0]
+    Li = SX(n, n)
+    for i in range(n):
+        Li[i, i] = 1 / L[i, i]
+        for j in range(i):
+            s = SX(0)
+            for k in range(j, i):
+                s = s + L[i, k] * Li[k, j]
+            Li[i, j] = -s / L[i, i]
+    return Li
+
+
+def _unit_or(v, fallback, scale):
+    nv = ca.dot(v, v)
+    return ca.if_else(nv > 1e-28 * scale, v / sqrt(ca.fmax(nv, 1e-300)), fallback)
+
+
+def _cross3(a, b):
+    return ca.vertcat(a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2],
+                      a[0] * b[1] - a[1] * b[0])
+
+
+def _sym_eig_extremes(C):
+    """Smallest and largest eigenpairs of a symmetric 1x1, 2x2 or 3x3 SX matrix, in closed form
+    (trigonometric solution of the characteristic cubic for 3x3). Returns
+    ``(l_min, l_max, v_min, v_max)`` with unit eigenvectors; a repeated eigenvalue gets any
+    unit vector of its eigenspace."""
+    n = C.shape[0]
+    if n == 1:
+        return C[0, 0], C[0, 0], SX(1), SX(1)
+    scale = ca.sumsqr(C) + 1e-300
+    if n == 2:
+        a, b, c = C[0, 0], C[0, 1], C[1, 1]
+        mean = (a + c) / 2
+        r = sqrt(sq((a - c) / 2) + sq(b))
+        lmax = mean + r
+        v1 = ca.vertcat(b, lmax - a)
+        v2 = ca.vertcat(lmax - c, b)
+        v = ca.if_else(ca.dot(v2, v2) > ca.dot(v1, v1), v2, v1)
+        vmax = _unit_or(v, ca.vertcat(1, 0), scale)
+        return mean - r, lmax, ca.vertcat(-vmax[1], vmax[0]), vmax
+    q = ca.trace(C) / 3
+    p1 = sq(C[0, 1]) + sq(C[0, 2]) + sq(C[1, 2])
+    p2 = sq(C[0, 0] - q) + sq(C[1, 1] - q) + sq(C[2, 2] - q) + 2 * p1
+    p = sqrt(p2 / 6)
+    Bm = (C - q * SX.eye(3)) / ca.fmax(p, 1e-300)
+    r = ca.fmin(ca.fmax(ca.det(Bm) / 2, -1), 1)
+    phi = ca.acos(r) / 3
+    lmax = q + 2 * p * cos(phi)
+    lmin = q + 2 * p * cos(phi + 2 * 3.141592653589793 / 3)
+
+    def eigvec(lam, fallback):
+        R = C - lam * SX.eye(3)
+        rows = [R[0, :].T, R[1, :].T, R[2, :].T]
+        c01, c02, c12 = _cross3(rows[0], rows[1]), _cross3(rows[0], rows[2]), _cross3(rows[1], rows[2])
+        n01, n02, n12 = ca.dot(c01, c01), ca.dot(c02, c02), ca.dot(c12, c12)
+        v = ca.if_else(n01 >= n02, c01, c02)
+        nv = ca.fmax(n01, n02)
+        v = ca.if_else(n12 > nv, c12, v)
+        return _unit_or(v, fallback, sq(scale))
+
+    # a vector orthogonal to the dominant row of C - lmax 1 (used when lmax is repeated)
+    R = C - lmax * SX.eye(3)
+    r0 = R[0, :].T
+    alt = _unit_or(_cross3(r0, ca.vertcat(0, 0, 1)),
+                   _unit_or(_cross3(r0, ca.vertcat(0, 1, 0)), ca.vertcat(1, 0, 0), scale), scale)
+    vmax = eigvec(lmax, alt)
+    e = ca.if_else(ca.fabs(vmax[0]) < 0.5, ca.vertcat(1, 0, 0), ca.vertcat(0, 1, 0))
+    perp = _unit_or(_cross3(vmax, e), ca.vertcat(0, 0, 1), 1)
+    vmin = eigvec(lmin, perp)
+    vmin = _unit_or(vmin - ca.dot(vmin, vmax) * vmax, perp, 1)
+    return lmin, lmax, vmin, vmax
+
+
+def metric_extremes():
+    """Extreme values of the metrics over the boundary of the input ellipsoid (eq. 31), and the
+    torques attaining them, for both contact states, in closed form (n_a <= 3).
+
+    For a form ``X`` in ``tau`` and ``N = B^T M_s^-1 B = L L^T``, the extremes of
+    ``tau^T X tau`` on ``tau^T N tau = 1`` are the extreme eigenvalues of ``L^-1 X L^-T``,
+    attained at ``tau = L^-T u``. For sr, the generalized problem ``(Omega, Omega + Xi)``
+    (eq. 30) is whitened twice. Eigenpairs come from the trigonometric solution of the
+    characteristic cubic. Outputs ``<metric>_<state>`` hold ``(l_min, l_max)`` and
+    ``tau_<metric>_<state>`` the two torques as columns; the runtime signs them with
+    ``contact_from_tau`` (the contact force per torque).
+    """
+    na = N_JOINTS
+    fn = _model_functions()
+    q = SX.sym("q", N_COORDINATES)
+    K = SX.sym("K", N_PARAMETERS)
+    sc = _scene_inputs()
+    free_lost = SX.sym("free_lost", N_CONSTRAINTS)
+    kept = _metric_forms_sx(fn, q, K, sc, sc["free"])
+    lost = _metric_forms_sx(fn, q, K, sc, free_lost)
+    N = kept["input_metric"]
+    Linv = _lower_inv(_chol_small(N))
+    outs, onames = [], []
+
+    def extremes_of(X, label, back=None):
+        C = ca.mtimes([Linv, X, Linv.T])
+        C = (C + C.T) / 2
+        lmin, lmax, vmin, vmax = _sym_eig_extremes(C)
+        tmin, tmax = ca.mtimes(Linv.T, vmin), ca.mtimes(Linv.T, vmax)
+        outs.extend([ca.vertcat(lmin, lmax), ca.horzcat(tmin, tmax)])
+        onames.extend([label, "tau_" + label])
+
+    for state, forms in (("kept", kept), ("lost", lost)):
+        for m, key in (("norm_a_obj", "omega_tau"), ("norm_qdd", "xi_tau"),
+                       ("norm_lambda", "lambda_form_tau")):
+            extremes_of(forms[key], f"{m}_{state}")
+    # sr on the kept half: (Omega, Omega + Xi), regularised where the wheels brace the snake
+    Om = ca.mtimes([Linv, kept["omega_tau"], Linv.T])
+    D = ca.mtimes([Linv, kept["omega_tau"] + kept["xi_tau"], Linv.T])
+    D = (D + D.T) / 2 + 1e-12 * ca.trace(D) * SX.eye(na)
+    LDinv = _lower_inv(_chol_small(D))
+    C = ca.mtimes([LDinv, Om, LDinv.T])
+    lmin, lmax, vmin, vmax = _sym_eig_extremes((C + C.T) / 2)
+    taus = []
+    for u in (vmin, vmax):
+        t = ca.mtimes([Linv.T, LDinv.T, u])
+        taus.append(t / sqrt(ca.mtimes([t.T, N, t])))
+    outs.extend([ca.vertcat(lmin, lmax), ca.horzcat(*taus)])
+    onames.extend(["sr_kept", "tau_sr_kept"])
+    outs.extend([kept["contact_from_tau"], kept["pivot_ratio"], lost["pivot_ratio"]])
+    onames.extend(["contact_from_tau", "pivot_ratio_kept", "pivot_ratio_lost"])
+    ins = [q, K, sc["contact_link"], sc["side"], sc["object_mass"], sc["object_inertia"],
+           sc["q_obj"], sc["rho"], sc["wheel_offset"], sc["free"], free_lost,
+           sc["regularization"]]
+    names = ["q", "K", "contact_link", "side", "object_mass", "object_inertia", "q_obj", "rho",
+             "wheel_offset", "free", "free_lost", "regularization"]
+    return ca.Function(PREFIX + "metric_extremes", ins,
                        [ca.densify(o) for o in ca.cse(outs)], names, onames)
 
 
@@ -1085,4 +1244,4 @@ def all_functions():
         interaction_maps(),
         metric_forms(),
         place_object(),
-    ]
+    ] + ([metric_extremes()] if N_JOINTS <= 3 else [])
