@@ -449,7 +449,7 @@ class SceneModel(RobotModel):
         names = self.backend.signatures["interaction_maps"].out_names
         res = {}
         for name_, o in zip(names, outs):
-            if o.shape[1:] == (1, 1):
+            if name_ == "pivot_ratio":  # the only scalar (a 1x1 map is still a matrix)
                 res[name_] = o[:, 0, 0].copy()
             elif o.shape[2] == 1 and name_.endswith("offset"):
                 res[name_] = np.ascontiguousarray(o[:, :, 0])
@@ -486,9 +486,9 @@ class SceneModel(RobotModel):
         names = self.backend.signatures["metric_forms"].out_names
         res = {}
         for name_, o in zip(names, outs):
-            if o.shape[1:] == (1, 1):
+            if name_ == "pivot_ratio":  # the only scalar (a 1x1 form is still a matrix)
                 res[name_] = o[:, 0, 0].copy()
-            elif o.shape[1] == 1:
+            elif name_ == "contact_from_tau":
                 res[name_] = np.ascontiguousarray(o[:, 0, :])
             else:
                 res[name_] = np.ascontiguousarray(o)
