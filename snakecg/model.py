@@ -295,14 +295,14 @@ class SceneModel(RobotModel):
         and no convergence within ``max_iter`` passes (enumeration)."""
         ks = getattr(self._local, "kernels", None)
         if ks is None:
-            from .simulate import _Kernel  # one-sample buffers (thread-local here)
+            from .native import BoundFunction  # one-sample buffers
 
             be, K = self.backend, self.parameters
-            place = _Kernel(be, "place_object", {
+            place = BoundFunction(be, "place_object", {
                 "K": K, "contact_link": self._contact_link,
                 "contact_offset": [self.scene.contact_offset],
                 "object_distance": [self.scene.object_distance], "side": self._side})
-            cd = _Kernel(be, "constrained_dynamics", {
+            cd = BoundFunction(be, "constrained_dynamics", {
                 "K": K, "contact_link": self._contact_link, "side": self._side,
                 "object_mass": self._object_mass, "object_inertia": self._object_inertia,
                 "wheel_offset": self._wheel_offset, "regularization": [0.0]})
