@@ -306,7 +306,8 @@ def _quadratic_extremes(model, qa):
     return ex
 
 
-def _wheels_extremes(model, qa, samples: int, refine: int, starts: int = 4):
+def _wheels_extremes(model, qa, samples: int, refine: int, starts: int = 4,
+                     refined=METRICS):
     """Extremes for bounded wheels: exact candidates + dense boundary sampling + refinement."""
     n, na = qa.shape[0], model.n_joints
     ideal = _quadratic_extremes_for(model, qa, scenario="ideal_wheels")
@@ -339,7 +340,7 @@ def _wheels_extremes(model, qa, samples: int, refine: int, starts: int = 4):
         top = np.argsort(-vals[m], axis=1)[:, :k]  # (n, k) best starting points
         t0 = taus[rows[:, None], top]  # (n, k, na)
         v0 = vals[m][rows[:, None], top]
-        if refine and na >= 2:
+        if refine and na >= 2 and m in refined:
             t0, v0 = _pattern_search(model, qa, L, Linv_T, m, t0, v0, refine)
         j = np.argmax(v0, axis=1)
         ex.max[m] = v0[rows, j]
@@ -398,14 +399,14 @@ def _quadratic_extremes_for(model, qa, scenario: str):
 
 
 def extremes(model, q, *, samples: int | None = None, refine: int = 10,
-             starts: int = 4) -> Extremes:
+             starts: int = 4, refined=METRICS) -> Extremes:
     """Best and worst ``norm_a_obj``, ``norm_qdd``, ``norm_lambda`` and ``sr`` over the
     input ellipsoid of eq. (31), with the torques attaining them (see the module docstring).
 
     ``q``: ``(n_s,)`` or ``(N, n_s)``. For ``wheels``, ``samples`` boundary directions
     (default 64 for 2 joints, 160 for 3, 600 above), then ``refine`` rounds of pattern search
-    from the ``starts`` best candidates of each maximum (the minima are taken over the
-    candidates).
+    from the ``starts`` best candidates of each maximum in ``refined`` (the other maxima and
+    the minima are taken over the candidates).
     """
     qa, batched = model._q(q)
     if model.scene.scenario == "wheels":
@@ -413,7 +414,10 @@ def extremes(model, q, *, samples: int | None = None, refine: int = 10,
             samples = {1: 2, 2: 64, 3: 160}.get(model.n_joints, 600)
         if not isinstance(samples, int) or samples < 2:
             raise InputError(f"samples must be an integer >= 2, got {samples!r}")
-        ex = _wheels_extremes(model, qa, samples, refine, starts)
+        bad = [m for m in refined if m not in METRICS]
+        if bad:
+            raise InputError(f"refined takes metric names from {METRICS}, got {bad[0]!r}")
+        ex = _wheels_extremes(model, qa, samples, refine, starts, tuple(refined))
     else:
         ex = _quadratic_extremes(model, qa)
     return ex if batched else ex._squeeze()
