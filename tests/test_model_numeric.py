@@ -260,6 +260,7 @@ def _inputs_for(sig, model, rng, n):
     robot = model.robot
     per_link = {"link_mass": robot.mass, "link_length": robot.length,
                 "link_inertia": robot.inertia, "link_com": robot.com}
+    free = np.concatenate([[1.0], (rng.uniform(size=model.n_constraints - 1) < 0.7)])
     out = []
     for name, size in zip(sig.in_names, sig.in_sizes):
         if name == "K":
@@ -272,8 +273,10 @@ def _inputs_for(sig, model, rng, n):
             a = np.array([rng.choice([-1.0, 1.0])])
         elif name in ("object_mass", "object_inertia", "link_com", "object_distance"):
             a = rng.uniform(0.05, 5.0, size)
-        elif name == "free":
-            a = (rng.uniform(size=size) < 0.7).astype(float)
+        elif name == "free":  # held rows: the contact and some wheels
+            a = free
+        elif name == "free_lost":  # the same rows with the contact lost
+            a = np.concatenate([[0.0], free[1:]])
         elif name == "regularization":
             a = np.zeros(1)
         elif name in ("q", "v", "tau", "q_obj", "v_obj", "f_obj", "link_pose", "link_twist",
