@@ -50,7 +50,7 @@ TARGETS = {
 }
 
 _COLD = r"""
-import json, sys, tempfile, time
+import json, shutil, sys, tempfile, time
 t0 = time.perf_counter()
 from snakecg_derive.render import render_model, write_model
 from snakecg import artifacts
@@ -64,13 +64,16 @@ t1 = time.perf_counter()
 if n <= checked_in_max:
     # forced generation: the packaged model would otherwise be used
     rendered = render_model(n, progress=progress)
-    folder = write_model(rendered, tempfile.mkdtemp(prefix="bench-model-"))
+    scratch = tempfile.mkdtemp(prefix="bench-model-")
+    folder = write_model(rendered, scratch)
     manifest = artifacts.verify_model_dir(folder, n)
 else:
     folder, manifest = artifacts.model_dir(n, progress=progress)
 t2 = time.perf_counter()
 compile_model(folder, manifest)
 t3 = time.perf_counter()
+if n <= checked_in_max:
+    shutil.rmtree(scratch, ignore_errors=True)
 ops = {f["name"]: f["operations"] for f in manifest["functions"]}
 print(json.dumps({
     "import": t_import, "derive": marks["rendering"] - t1, "render": t2 - marks["rendering"],
