@@ -195,6 +195,28 @@ class _Signature:
             self.out_offsets.append(self.out_offsets[-1] + r * c)
 
 
+#: Batches at least this large are split across threads.
+_PARALLEL_MIN = 2048
+_POOL = None
+
+
+def _threads() -> int:
+    raw = os.environ.get("SNAKECG_THREADS")
+    if raw:
+        try:
+            return max(1, int(raw))
+        except ValueError:
+            return 1
+    return max(1, min(os.cpu_count() or 1, 8))
+
+
+def _pool() -> ThreadPoolExecutor:
+    global _POOL
+    if _POOL is None:
+        _POOL = ThreadPoolExecutor(max_workers=_threads(), thread_name_prefix="snakecg")
+    return _POOL
+
+
 def _check_input(sig: _Signature, k: int, a: np.ndarray, n: int, size: int) -> None:
     """Internal contract: 1-D of ``size`` (broadcast) or C-contiguous ``(n, size)`` float64."""
     ok = a.dtype == np.float64 and a.flags.c_contiguous and (
@@ -266,10 +288,39 @@ class CompiledBackend:
         else:
             outs = [np.empty((n, c, r)) for (r, c) in sig.out_shapes]
             resp = (ctypes.c_void_p * len(outs))(*[o.ctypes.data for o in outs])
-        status = self._fns[name](n, argp, strides, resp)
+        if n >= _PARALLEL_MIN and _threads() > 1:
+            status = self._parallel(name, n, argp, strides, resp, sig)
+        else:
+            status = self._fns[name](n, argp, strides, resp)
         if status != 0:
             raise BuildError(f"{name}: evaluation failed at sample {status - 1} (status {status})")
         return [o.transpose(0, 2, 1) for o in outs]
+
+    def _parallel(self, name, n, argp, strides, resp, sig) -> int:
+        """Split a large batch into contiguous chunks evaluated on several threads.
+
+        ctypes releases the GIL during the call and every driver call allocates its own work
+        arrays, so the chunks run truly in parallel (``SNAKECG_THREADS``, default: the cores).
+        """
+        workers = _threads()
+        bounds = np.linspace(0, n, workers + 1).astype(np.int64)
+        n_in, n_out = len(sig.in_sizes), len(sig.out_shapes)
+        nnz = [r * c for r, c in sig.out_shapes]
+        jobs = []
+        for lo, hi in zip(bounds[:-1], bounds[1:]):
+            if hi <= lo:
+                continue
+            a = (ctypes.c_void_p * n_in)(*[(argp[k] or 0) + 8 * int(lo) * strides[k]
+                                           for k in range(n_in)])
+            r = (ctypes.c_void_p * n_out)(*[resp[k] + 8 * int(lo) * nnz[k]
+                                            for k in range(n_out)])
+            jobs.append((int(lo), int(hi - lo), a, r))
+        fn = self._fns[name]
+        results = list(_pool().map(lambda j: (j[0], fn(j[1], j[2], strides, j[3])), jobs))
+        for lo, status in results:
+            if status != 0:
+                return status + lo if status > 0 else status
+        return 0
 
 
 class CasadiBackend:
