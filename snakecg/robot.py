@@ -194,7 +194,7 @@ class Robot:
         Every problem of the file is reported at once, in one :class:`~snakecg.InputError`.
         """
         data = _read_toml(path)
-        robot, problems = _robot_from_table(data)
+        robot, problems, _ = _robot_from_table(data)
         _unknown_tables(data, problems)
         if problems:
             raise _file_error(path, problems)
@@ -240,14 +240,15 @@ def _unknown_tables(data: dict, problems: list[str]) -> None:
                         " (expected the tables [robot] and [scene])")
 
 
-def _robot_from_table(data: dict) -> tuple[Robot | None, list[str]]:
-    """The ``[robot]`` table as a Robot (None if invalid) and every problem found in it."""
+def _robot_from_table(data: dict) -> tuple[Robot | None, list[str], int | None]:
+    """The ``[robot]`` table as a Robot (None if invalid), every problem found in it, and the
+    number of links if at least the joint count is valid (to check the scene's lists)."""
     problems: list[str] = []
     table = data.get("robot", _MISSING)
     if table is _MISSING:
-        return None, ["missing [robot] table"]
+        return None, ["missing [robot] table"], None
     if not isinstance(table, dict):
-        return None, [f"[robot] must be a table, got {table!r}"]
+        return None, [f"[robot] must be a table, got {table!r}"], None
     unknown = set(table) - _ROBOT_KEYS
     if unknown:
         problems.append(f"unknown keys in [robot]: {sorted(unknown)} (allowed: "
@@ -256,11 +257,12 @@ def _robot_from_table(data: dict) -> tuple[Robot | None, list[str]]:
         problems.append("missing key joints in [robot]")
     defaults = {f.name: f.default for f in Robot.__dataclass_fields__.values()}
     kw = {k: table.get(k, defaults[k]) for k in ("mass", "length", "inertia", "com", "name")}
-    more, _ = _robot_problems(table.get("joints", _MISSING), **kw)
+    more, fields = _robot_problems(table.get("joints", _MISSING), **kw)
     problems += more
+    n_links = None if fields["joints"] is None else fields["joints"] + 1
     if problems:
-        return None, problems
-    return Robot(joints=table["joints"], **kw), []
+        return None, problems, n_links
+    return Robot(joints=table["joints"], **kw), [], n_links
 
 
 @dataclass(frozen=True)
@@ -347,7 +349,7 @@ class Scene:
         Every problem of the file (robot and scene) is reported at once.
         """
         data = _read_toml(path)
-        robot, problems = _robot_from_table(data)
+        robot, problems, n_links = _robot_from_table(data)
         _unknown_tables(data, problems)
         table = data.get("scene", {})
         if not isinstance(table, dict):
@@ -363,17 +365,21 @@ class Scene:
         kwargs.update({k: v for k, v in overrides.items() if v is not None})
         values = {f: fld.default for f, fld in cls.__dataclass_fields__.items() if f != "robot"}
         values.update(kwargs)
-        problems += _scene_problems(robot, values)[0]
+        problems += _scene_problems(robot, values, n_links=n_links)[0]
         if problems:
             raise _file_error(path, problems)
         return cls(robot, **kwargs)
 
 
-def _scene_problems(r: Robot | None, f: dict) -> tuple[list[str], dict]:
-    """Every problem of a scene's fields (``r`` None: the robot itself is invalid, so only
-    what does not depend on it is checked), and the normalized fields (valid only if none)."""
+def _scene_problems(r: Robot | None, f: dict, *, n_links: int | None = None
+                    ) -> tuple[list[str], dict]:
+    """Every problem of a scene's fields, and the normalized fields (valid only if none).
+
+    ``r`` None: the robot itself is invalid, so only what does not depend on it is checked
+    (with ``n_links``, if the joint count alone is known, the link numbers and list lengths).
+    """
     problems: list[str] = []
-    n_links = r.n_links if r is not None else None
+    n_links = r.n_links if r is not None else n_links
     links = f"1..{n_links}" if n_links is not None else ">= 1"
     if not isinstance(f["scenario"], str) or f["scenario"] not in SCENARIOS:
         problems.append(f"scenario must be one of {', '.join(SCENARIOS)}; got {f['scenario']!r}")
@@ -408,7 +414,8 @@ def _scene_problems(r: Robot | None, f: dict) -> tuple[list[str], dict]:
     offset = f["contact_offset"]
     if offset is not None:
         offset = num("contact_offset", offset)
-        if offset is not None and k is not None and not 0 <= offset <= r.length[k - 1]:
+        if (offset is not None and k is not None and r is not None
+                and not 0 <= offset <= r.length[k - 1]):
             problems.append(
                 f"contact_offset must lie on link {k}: 0..{r.length[k - 1]} m from its rear"
                 f" end, got {offset}"
