@@ -382,7 +382,7 @@ def _scene_problems(r: Robot | None, f: dict, *, n_links: int | None = None
     n_links = r.n_links if r is not None else n_links
     links = f"1..{n_links}" if n_links is not None else ">= 1"
     if not isinstance(f["scenario"], str) or f["scenario"] not in SCENARIOS:
-        problems.append(f"scenario must be one of {', '.join(SCENARIOS)}; got {f['scenario']!r}")
+        problems.append(f"scenario must be one of {', '.join(SCENARIOS)} (got {f['scenario']!r})")
 
     def num(name, value, *, positive=False, nonneg=False):
         if not _is_number(value):
