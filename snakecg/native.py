@@ -29,7 +29,7 @@ from pathlib import Path
 import numpy as np
 
 from .artifacts import cache_dir, make_private_dir
-from .errors import BuildError
+from .errors import ArtifactError, BuildError
 
 __all__ = [
     "CompiledBackend",
@@ -195,6 +195,64 @@ class _Signature:
             self.out_offsets.append(self.out_offsets[-1] + r * c)
 
 
+def _signature_problems(sig: dict, n_in: int, n_out: int, size_in, size_out) -> list[str]:
+    """Where a manifest signature disagrees with the code's own (n_in, n_out, shapes)."""
+    out = []
+    if n_in != len(sig["inputs"]) or n_out != len(sig["outputs"]):
+        return [f"{sig['name']} has {n_in} inputs and {n_out} outputs, the manifest says "
+                f"{len(sig['inputs'])} and {len(sig['outputs'])}"]
+    for kind, items, size in (("input", sig["inputs"], size_in),
+                              ("output", sig["outputs"], size_out)):
+        for k, item in enumerate(items):
+            actual = size(k)
+            if actual != (item["rows"], item["cols"]):
+                out.append(f"{sig['name']} {kind} {item['name']!r} is {actual[0]}x{actual[1]}, "
+                           f"the manifest says {item['rows']}x{item['cols']}")
+    return out
+
+
+def _check_signatures(where, manifest: dict, problems: list[str]) -> None:
+    """The buffers are sized from the manifest: refuse code whose functions have other shapes
+    (a manifest edited or damaged without breaking its JSON would otherwise make the compiled
+    drivers write past the ends of the output arrays)."""
+    if problems:
+        shown = "; ".join(problems[:3]) + (f" (and {len(problems) - 3} more)"
+                                           if len(problems) > 3 else "")
+        raise ArtifactError(
+            f"{where}: the generated functions do not match manifest.json of the model for "
+            f"joints={manifest.get('n_joints')}: {shown}. The model folder is damaged: "
+            "reinstall snakecg, or delete the snakecg cache folder (SNAKECG_CACHE_DIR)"
+        )
+
+
+def _library_problems(lib, manifest: dict) -> list[str]:
+    """Compare the manifest with CasADi's own signature functions in the compiled library."""
+    ci = ctypes.c_longlong
+    problems = []
+    for sig in manifest["functions"]:
+        sym = sig["symbol"]
+        try:
+            f_in, f_out = getattr(lib, f"{sym}_n_in"), getattr(lib, f"{sym}_n_out")
+            sp_in, sp_out = getattr(lib, f"{sym}_sparsity_in"), getattr(lib, f"{sym}_sparsity_out")
+        except AttributeError:
+            problems.append(f"{sym} is not in the library")
+            continue
+        for f in (f_in, f_out):
+            f.restype, f.argtypes = ci, []
+        for f in (sp_in, sp_out):
+            f.restype, f.argtypes = ctypes.POINTER(ci), [ci]
+
+        def size(fn):
+            def get(k):
+                p = fn(k)
+                return (int(p[0]), int(p[1])) if p else (-1, -1)
+            return get
+
+        problems += _signature_problems(sig, int(f_in()), int(f_out()), size(sp_in),
+                                        size(sp_out))
+    return problems
+
+
 #: Batches at least this large are split across threads.
 _PARALLEL_MIN = 2048
 _POOL = None
@@ -250,6 +308,7 @@ class CompiledBackend:
             ]
             fn.restype = ctypes.c_int
             self._fns[name] = fn
+        _check_signatures(lib_path, manifest, _library_problems(self._lib, manifest))
 
     def __call__(self, name: str, n: int, inputs: list[np.ndarray]) -> list[np.ndarray]:
         """Evaluate ``name`` on ``n`` samples.
@@ -337,6 +396,16 @@ class CasadiBackend:
         self.signatures = {s["name"]: _Signature(s) for s in manifest["functions"]}
         self._fns = {f.name()[len(manifest["prefix"]):]: f for f in module.all_functions()}
         self._maps: dict[tuple[str, int], object] = {}
+        problems = []
+        for sig in manifest["functions"]:
+            f = self._fns.get(sig["name"])
+            if f is None:
+                problems.append(f"{sig['name']} is not built by model.py")
+                continue
+            problems += _signature_problems(
+                sig, f.n_in(), f.n_out(), lambda k, f=f: (f.size1_in(k), f.size2_in(k)),
+                lambda k, f=f: (f.size1_out(k), f.size2_out(k)))
+        _check_signatures(folder / "model.py", manifest, problems)
 
     def casadi_function(self, name: str):
         return self._fns[name]

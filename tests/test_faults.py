@@ -501,6 +501,29 @@ def test_tampered_model_py_is_never_executed(fresh_cache, monkeypatch, tmp_path)
     assert not marker.exists()
 
 
+@pytest.mark.parametrize("backend", ["compiled", "casadi"])
+def test_manifest_signature_that_disagrees_with_the_code_is_refused(backend, fresh_cache,
+                                                                    monkeypatch):
+    """The manifest is JSON, not hashed itself: an edit that keeps it valid JSON and leaves
+    the files' hashes alone must not size the output buffers of the compiled drivers (they
+    would write past their ends); the functions' own signatures are compared on loading."""
+    if backend == "compiled" and native.find_compiler() is None:
+        pytest.skip("no C compiler on this machine")
+    folder = _cached_copy_of_package(1, monkeypatch)
+
+    def shrink(m):
+        (sig,) = [f for f in m["functions"] if f["name"] == "mass_matrix"]
+        sig["outputs"][0]["rows"] -= 1
+    _edit_manifest(folder, shrink)
+    artifacts.verify_model_dir(folder, 1)  # the files still match their hashes
+    monkeypatch.setattr(snakecg.model, "_BACKENDS", {})
+    with pytest.raises(ArtifactError, match=r"the generated functions do not match "
+                                            r"manifest\.json of the model for joints=1: "
+                                            r"mass_matrix output '\w+' is 4x4, the manifest "
+                                            r"says 3x4\. The model folder is damaged"):
+        snakecg.load(snakecg.Robot(joints=1), backend=backend)
+
+
 @pytest.fixture(scope="module")
 def compiled_cache(tmp_path_factory):
     """A cache holding the compiled 1-joint model (built once for the module)."""
