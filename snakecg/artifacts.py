@@ -100,6 +100,9 @@ def make_private_dir(path: Path, *, error=ArtifactError) -> Path:
             d.mkdir(mode=0o700)
         except FileExistsError:
             continue
+        except OSError as exc:
+            raise error(f"cannot create the cache folder {path}: {exc}"
+                        " (set SNAKECG_CACHE_DIR to a folder you can write)") from None
         os.chmod(d, 0o700)  # independent of the umask
     try:
         st = path.stat()

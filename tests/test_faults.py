@@ -633,6 +633,15 @@ def test_cache_dir_of_another_user_refused(tmp_path, monkeypatch):
         artifacts.cache_dir()
 
 
+def test_cache_dir_that_cannot_be_created(tmp_path, monkeypatch):
+    blocker = tmp_path / "file"
+    blocker.write_text("")
+    monkeypatch.setenv("SNAKECG_CACHE_DIR", str(blocker / "cache"))
+    with pytest.raises(InputError, match=r"cannot create the cache folder .*file/cache: .*"
+                                         r"set SNAKECG_CACHE_DIR to a folder you can write"):
+        artifacts.cache_dir()
+
+
 def test_cache_dir_that_is_a_file_refused(tmp_path, monkeypatch):
     p = tmp_path / "file"
     p.write_text("")
