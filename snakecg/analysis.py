@@ -247,12 +247,7 @@ def _quadratic_extremes(model, qa):
     free_kept, _ = _free_and_fixed(state[None, :], model.bounds)
     state[0] = LOST
     free_lost, _ = _free_and_fixed(state[None, :], model.bounds)
-    q_obj, rho, _ = model._place(qa, n)
-    args = [model._arg(qa, n), model.parameters, model._contact_link, model._side,
-            model._object_mass, model._object_inertia, model._arg(q_obj, n),
-            model._arg(rho, n), model._wheel_offset, free_kept[0], free_lost[0], np.zeros(1)]
-    outs = model._call("metric_extremes", n, [np.ascontiguousarray(a) for a in args])
-    o = dict(zip(model.backend.signatures["metric_extremes"].out_names, outs))
+    _, o = model._at_rest("metric_extremes", qa, n, free_kept[0], free_lost[0])
     c = o["contact_from_tau"][:, 0, :]
 
     def signed(t, keep):  # t: (n, na), flip so that c . t >= 0 (keep) or <= 0 (lose)

@@ -439,16 +439,11 @@ class SceneModel(RobotModel):
     def _maps(self, qa, n, state):
         from .solver import _free_and_fixed
 
-        q_obj, rho, _ = self._place(qa, n)
         free, lam_fixed = _free_and_fixed(state[None, :], self.bounds)
-        args = [self._arg(qa, n), self.parameters, self._contact_link, self._side,
-                self._object_mass, self._object_inertia, self._arg(q_obj, n),
-                self._arg(rho, n), self._wheel_offset, free[0], lam_fixed[0], np.zeros(1)]
-        args = [np.ascontiguousarray(a) for a in args]
-        outs = self._call("interaction_maps", n, args)
-        names = self.backend.signatures["interaction_maps"].out_names
+        args, raw = self._at_rest("interaction_maps", qa, n, free[0], lam_fixed[0])
+        names = list(raw)
         res = {}
-        for name_, o in zip(names, outs):
+        for name_, o in raw.items():
             if name_ == "pivot_ratio":  # the only scalar (a 1x1 map is still a matrix)
                 res[name_] = o[:, 0, 0].copy()
             elif o.shape[2] == 1 and name_.endswith("offset"):
@@ -470,6 +465,22 @@ class SceneModel(RobotModel):
         res["singular"] = singular
         return res
 
+    def _at_rest(self, fname: str, qa, n: int, *free_args):
+        """Evaluate a generated at-rest function (``interaction_maps``, ``metric_forms``,
+        ``metric_extremes``) at the scene's placement of the object.
+
+        ``free_args`` are the inputs that follow ``wheel_offset`` up to ``regularization``
+        (the held-row masks, fixed forces); ``regularization`` is 0. Returns the argument list
+        and ``{output name: (n, rows, cols) array}``.
+        """
+        q_obj, rho, _ = self._place(qa, n)
+        args = [self._arg(qa, n), self.parameters, self._contact_link, self._side,
+                self._object_mass, self._object_inertia, self._arg(q_obj, n),
+                self._arg(rho, n), self._wheel_offset, *free_args, np.zeros(1)]
+        args = [np.ascontiguousarray(a, dtype=float) for a in args]
+        outs = self._call(fname, n, args)
+        return args, dict(zip(self.backend.signatures[fname].out_names, outs))
+
     def _metric_forms(self, qa, n, state):
         """Quadratic forms of the metrics at rest (generated ``metric_forms``), batched.
 
@@ -477,15 +488,10 @@ class SceneModel(RobotModel):
         """
         from .solver import _free_and_fixed
 
-        q_obj, rho, _ = self._place(qa, n)
         free, _ = _free_and_fixed(state[None, :], self.bounds)
-        args = [self._arg(qa, n), self.parameters, self._contact_link, self._side,
-                self._object_mass, self._object_inertia, self._arg(q_obj, n),
-                self._arg(rho, n), self._wheel_offset, free[0], np.zeros(1)]
-        outs = self._call("metric_forms", n, [np.ascontiguousarray(a) for a in args])
-        names = self.backend.signatures["metric_forms"].out_names
+        _, raw = self._at_rest("metric_forms", qa, n, free[0])
         res = {}
-        for name_, o in zip(names, outs):
+        for name_, o in raw.items():
             if name_ == "pivot_ratio":  # the only scalar (a 1x1 form is still a matrix)
                 res[name_] = o[:, 0, 0].copy()
             elif name_ == "contact_from_tau":
