@@ -300,8 +300,9 @@ def _generate(n_joints: int, root: Path, progress) -> tuple[Path, dict]:
                 shutil.rmtree(folder, ignore_errors=True)
         # Leftovers of writers that were killed: only a lock holder writes here, so every
         # temporary folder of this joint count belongs to a dead process.
-        for stale in list(root.glob(f".na{n_joints}.tmp-*")) + list(root.glob(f".na{n_joints}.old-*")):
-            shutil.rmtree(stale, ignore_errors=True)
+        for pattern in (f".na{n_joints}.tmp-*", f".na{n_joints}.old-*"):
+            for stale in root.glob(pattern):
+                shutil.rmtree(stale, ignore_errors=True)
         try:
             from snakecg_derive.render import render_model, write_model
         except ImportError as exc:  # pragma: no cover - broken install
