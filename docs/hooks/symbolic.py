@@ -193,14 +193,20 @@ def _operation_counts() -> str:
         raise PluginError(f"no generated/na*/manifest.json under {root}")
     counts = sorted(manifests)
     first = manifests[counts[0]]
-    names = [f["name"] for f in first["functions"]]
+    names = []  # every function of any joint count, in manifest order (some exist only for
+    for n in counts:  # small n_a, e.g. the closed-form metric_extremes for n_a <= 3)
+        names += [f["name"] for f in manifests[n]["functions"] if f["name"] not in names]
+    del first
     head = "| function | " + " | ".join(f"$n_a = {n}$" for n in counts) + " |"
     sep = "|---|" + "---:|" * len(counts)
     rows = []
     for name in names:
         cells = []
         for n in counts:
-            fn = {f["name"]: f for f in manifests[n]["functions"]}[name]
+            fn = {f["name"]: f for f in manifests[n]["functions"]}.get(name)
+            if fn is None:
+                cells.append("–")
+                continue
             cell = f"{fn['operations']:,}"
             cells.append(f"**{cell}**" if fn.get("large") else cell)
         rows.append(f"| `{name}` | " + " | ".join(cells) + " |")
