@@ -149,7 +149,11 @@ class ForwardResult:
     * norms: ``norm_lambda = lam^T G_c lam``, ``norm_a_obj = a_obj^T I_obj a_obj`` (eq. 27),
       ``norm_qdd = qdd^T M_s qdd`` (eq. 26), slippage ratio ``sr`` (eq. 30, 0 when the
       contact is lost);
-    * ``singular``: the held rows were dependent (least-norm forces, see ``snakecg.solver``).
+    * ``singular``: the held rows were dependent (least-norm forces, see ``snakecg.solver``);
+      ``conditioning``: the smallest pivot of the held rows' Delassus matrix relative to its
+      diagonal (1: independent rows; the forces carry a relative error of about
+      ``1e-16 / conditioning``; below ``1e-10`` the sample is treated as ``singular`` and
+      reported with ``conditioning = 0``).
     """
 
     qdd: np.ndarray
@@ -164,6 +168,7 @@ class ForwardResult:
     sr: np.ndarray
     gap: np.ndarray
     singular: np.ndarray
+    conditioning: np.ndarray = None
     tau: np.ndarray = field(repr=False, default=None)
 
     @property
@@ -174,7 +179,7 @@ class ForwardResult:
         """JSON-ready dictionary (schema in docs/cli.md)."""
         out = {}
         for k in ("tau", "qdd", "a_obj", "lam", "w", "contact", "wheel_state", "norm_lambda",
-                  "norm_a_obj", "norm_qdd", "sr", "singular"):
+                  "norm_a_obj", "norm_qdd", "sr", "singular", "conditioning"):
             v = getattr(self, k)
             out[k] = np.asarray(v).tolist()
         return out
@@ -341,7 +346,7 @@ class SceneModel(RobotModel):
             norm_lambda=np.float64(o["norm_lambda"][0]),
             norm_a_obj=np.float64(o["norm_a_obj"][0]), norm_qdd=np.float64(o["norm_qdd"][0]),
             sr=np.float64(o["sr"][0] if contact else 0.0), gap=np.float64(o["gap"][0]),
-            singular=np.bool_(False), tau=tau,
+            singular=np.bool_(False), conditioning=np.float64(outs[i_pivot][0]), tau=tau,
         )
 
     def _solve(self, base: dict, n: int, *, max_iter=None):
@@ -386,7 +391,9 @@ class SceneModel(RobotModel):
         r = ForwardResult(
             qdd=o["qdd"], a_obj=o["a_obj"], lam=o["lam"], w=o["w"], contact=contact,
             wheel_state=wheel_state, norm_lambda=o["norm_lambda"], norm_a_obj=o["norm_a_obj"],
-            norm_qdd=o["norm_qdd"], gap=o["gap"], singular=sol.singular, tau=tau,
+            norm_qdd=o["norm_qdd"], gap=o["gap"], singular=sol.singular,
+            conditioning=np.where(sol.singular, 0.0, np.minimum(o["pivot_ratio"], 1.0)),
+            tau=tau,
             sr=np.where(contact, o["sr"], 0.0),  # eq. 30; no interaction without contact
         )
         if not batched:
