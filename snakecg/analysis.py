@@ -125,15 +125,6 @@ class _Whitening:
         return vals, self.LinvT @ W
 
 
-def _geig(X: np.ndarray, N: np.ndarray):
-    """Generalized eigen-decomposition of symmetric ``X`` w.r.t. SPD ``N``, batched.
-
-    Returns eigenvalues ``(B, n)`` ascending and eigenvectors ``(B, n, n)`` (columns),
-    normalised so that ``v^T N v = 1``.
-    """
-    return _Whitening(N).geig(X)
-
-
 def _signed(V: np.ndarray, c: np.ndarray, keep: bool) -> np.ndarray:
     """Flip columns of V so that ``c . v >= 0`` (keep) or ``<= 0`` (lose)."""
     s = np.einsum("bi,bij->bj", c, V)
