@@ -512,7 +512,7 @@ class BoundFunction:
                 bufs[k][:] = val
             status = self._fast(1, self._argp, self._strides, self._resp)
             if status != 0:
-                raise SimulationError(f"{self.name}: evaluation failed (status {status})")
+                raise BuildError(f"{self.name}: evaluation failed (status {status})")
             return self._views
         self._last.update(var)
         outs = self.many(1, **self._last)
