@@ -20,7 +20,6 @@ import csv
 import io
 import json
 import os
-import sys
 import time
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -29,6 +28,7 @@ import numpy as np
 
 from .analysis import com_polar, joint_grid
 from .errors import InputError
+from .progress import progress_bar
 from .robot import SCENARIOS, Robot, Scene
 
 __all__ = ["PAPER_TABLE2", "ReproduceOptions", "reproduce", "table2", "TABLE2_ROWS"]
@@ -89,27 +89,6 @@ class ReproduceReport:
     timings: dict = field(default_factory=dict)
 
 
-def _progress(enabled: bool, total: int, desc: str):
-    try:
-        from tqdm import tqdm
-    except ImportError:  # pragma: no cover - tqdm is a dependency
-        tqdm = None
-    quiet = not enabled or not sys.stderr.isatty() or tqdm is None
-    if quiet:
-        class _Null:
-            def update(self, n=1):
-                pass
-
-            def close(self):
-                pass
-
-            def set_postfix_str(self, s):
-                pass
-
-        return _Null()
-    return tqdm(total=total, desc=desc, unit="step", leave=False)
-
-
 def _scene(joints: int, scenario: str, kappa: float, opts: ReproduceOptions) -> Scene:
     return Scene(Robot(joints=joints), scenario=scenario, kappa=kappa, mu=opts.mu,
                  side=opts.side, object_distance=opts.object_distance)
@@ -163,7 +142,7 @@ def case_study_1(opts: ReproduceOptions, report: ReproduceReport, load):
 
     out = opts.out
     q = np.array([0.0, 0.0, 0.0, *np.deg2rad(opts.fig4_joints_deg)])
-    bar = _progress(opts.progress, len(opts.kappas_case1) * 3 + 3, "case study 1")
+    bar = progress_bar(len(opts.kappas_case1) * 3 + 3, "case study 1", enabled=opts.progress)
     for kappa in opts.kappas_case1:
         fig, axes = plt.subplots(3, 3, figsize=(13, 11.5), constrained_layout=True)
         for j, scenario in enumerate(SCENARIOS):
@@ -231,7 +210,7 @@ def _extremes_csv(Q, radius, angle, ex, na) -> str:
 def case_study_2(opts: ReproduceOptions, report: ReproduceReport, load):
     Q = joint_grid(3, opts.grid_lo_deg, opts.grid_hi_deg, opts.grid_step_deg)
     results = {}
-    bar = _progress(opts.progress, 3, "case study 2 (21,952 configurations)")
+    bar = progress_bar(3, "case study 2 (21,952 configurations)", enabled=opts.progress)
     for scenario in SCENARIOS:
         model = load(_scene(3, scenario, opts.kappa_case2, opts))
         chunks = []

@@ -291,7 +291,8 @@ def test_generate_json_fields_are_documented(capsys):
 
 
 def test_progress_is_quiet_off_a_terminal_and_shown_on_one(monkeypatch):
-    from snakecg.commands._common import ProgressCounter, progress_reporter
+    from snakecg.commands._common import progress_reporter
+    from snakecg.progress import progress_bar
 
     class Tty(io.StringIO):
         def isatty(self):
@@ -303,17 +304,23 @@ def test_progress_is_quiet_off_a_terminal_and_shown_on_one(monkeypatch):
     step = progress_reporter(tty)
     step("compiling")
     assert tty.getvalue().endswith("compiling\n")
-    with ProgressCounter("sweep", 4, io.StringIO()) as pc:
-        pc.advance(4)
     quiet = io.StringIO()
-    with ProgressCounter("sweep", 4, quiet) as pc:
-        pc.advance(4)
+    bar = progress_bar(4, "sweep", stream=quiet)
+    bar.update(4)
+    bar.close()
     assert quiet.getvalue() == ""
     tty = Tty()
-    with ProgressCounter("sweep", 4, tty, min_interval=0.0) as pc:
-        pc.advance(2)
-        pc.advance(2)
-    assert "sweep: 4/4" in tty.getvalue() and tty.getvalue().endswith("\n")
+    bar = progress_bar(4, "sweep", stream=tty)
+    bar.update(2)
+    bar.update(2)
+    bar.refresh()  # tqdm redraws at most every 0.1 s on its own
+    bar.close()
+    assert "sweep" in tty.getvalue() and "4/4" in tty.getvalue()
+    off = Tty()
+    bar = progress_bar(4, "sweep", stream=off, enabled=False)
+    bar.update(4)
+    bar.close()
+    assert off.getvalue() == ""
     monkeypatch.setenv("SNAKECG_PROGRESS", "0")
     assert progress_reporter(Tty()) is None
 

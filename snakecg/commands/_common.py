@@ -2,20 +2,19 @@
 
 Progress goes to standard error and only when it is a terminal, so pipes, files and CI logs
 stay clean (``SNAKECG_PROGRESS=1`` forces it on, ``SNAKECG_PROGRESS=0`` off). Commands that
-derive, compile or sweep pass :func:`progress_reporter` to the library's ``progress``
-argument, or count work with :class:`ProgressCounter`.
+derive or compile pass :func:`~snakecg.progress.progress_reporter` to the library's
+``progress`` argument; sweeps use :func:`~snakecg.progress.progress_bar` (tqdm).
 """
 
 from __future__ import annotations
 
 import json
-import os
 import sys
-import time
 
 import numpy as np
 
 from ..errors import InputError
+from ..progress import progress_enabled, progress_reporter
 from ..robot import SCENARIOS, Robot, Scene
 
 __all__ = [
@@ -26,7 +25,6 @@ __all__ = [
     "print_json",
     "progress_enabled",
     "progress_reporter",
-    "ProgressCounter",
 ]
 
 
@@ -98,73 +96,3 @@ def print_json(obj) -> None:
     json.dump(obj, sys.stdout, indent=2, sort_keys=False)
     sys.stdout.write("\n")
 
-
-# ------------------------------------------------------------------------------------------
-# progress
-# ------------------------------------------------------------------------------------------
-def progress_enabled(stream=None) -> bool:
-    """Whether to show progress on ``stream`` (default stderr): a terminal, unless
-    ``SNAKECG_PROGRESS`` says otherwise (``1`` on, ``0`` off)."""
-    forced = os.environ.get("SNAKECG_PROGRESS", "").strip()
-    if forced in ("0", "1"):
-        return forced == "1"
-    stream = sys.stderr if stream is None else stream
-    try:
-        return bool(stream.isatty())
-    except (AttributeError, ValueError):
-        return False
-
-
-def progress_reporter(stream=None):
-    """A ``progress(message)`` callable for the library's long steps (derivation, rendering,
-    compilation), printing ``  [  3.2 s] message`` lines; ``None`` when progress is off."""
-    stream = sys.stderr if stream is None else stream
-    if not progress_enabled(stream):
-        return None
-    t0 = time.perf_counter()
-
-    def step(message: str) -> None:
-        stream.write(f"  [{time.perf_counter() - t0:6.1f} s] {message}\n")
-        stream.flush()
-
-    return step
-
-
-class ProgressCounter:
-    """``done / total`` of a sweep on one terminal line (rewritten in place), silent when
-    progress is off. Use as a context manager and call :meth:`advance` per finished chunk."""
-
-    def __init__(self, label: str, total: int, stream=None, *, min_interval: float = 0.2):
-        self.label = label
-        self.total = max(int(total), 0)
-        self.done = 0
-        self.stream = sys.stderr if stream is None else stream
-        self.enabled = progress_enabled(self.stream)
-        self._t0 = time.perf_counter()
-        self._last = -1.0
-        self._min_interval = min_interval
-
-    def advance(self, n: int = 1) -> None:
-        self.done += n
-        if not self.enabled:
-            return
-        now = time.perf_counter()
-        if now - self._last < self._min_interval and self.done < self.total:
-            return
-        self._last = now
-        pct = 100.0 * self.done / self.total if self.total else 100.0
-        self.stream.write(f"\r  {self.label}: {self.done}/{self.total} ({pct:5.1f} %)"
-                          f" {now - self._t0:6.1f} s")
-        self.stream.flush()
-
-    def close(self) -> None:
-        if self.enabled and self._last >= 0:
-            self.stream.write("\n")
-            self.stream.flush()
-
-    def __enter__(self):
-        return self
-
-    def __exit__(self, *exc):
-        self.close()
-        return False
