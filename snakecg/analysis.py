@@ -233,7 +233,7 @@ def _quadratic_extremes(model, qa):
         return _quadratic_extremes_numpy(model, qa)
     from .solver import HELD, LOST, PIVOT_TOL, _free_and_fixed
 
-    n, na = qa.shape[0], model.n_joints
+    n = qa.shape[0]
     state = np.where(model.present, HELD, 0).astype(np.int8)
     free_kept, _ = _free_and_fixed(state[None, :], model.bounds)
     state[0] = LOST
