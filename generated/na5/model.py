@@ -1234,6 +1234,27 @@ def constrained_dynamics():
                        [ca.densify(o) for o in ca.cse(outs)], names, onames)
 
 
+def _at_rest_system(fn, q, K, sc):
+    """The pieces every at-rest function shares (``v = 0``, so ``h`` and ``Adot v`` vanish):
+    ``A = [A_s, A_o]`` (eq. 9), ``M_s`` and its LDL factors, ``M_s^-1 B`` and
+    ``M_s^-1 A_s^T``, the object's inertia diagonal ``mo``, ``I_o^-1 A_o^T`` and the Delassus
+    matrix ``G_c = A I^-1 A^T`` (eq. 14)."""
+    ns, na = N_COORDINATES, N_JOINTS
+    A, _, _, _ = _rows(fn, q, SX(ns, 1), K, sc["contact_link"], sc["side"], sc["q_obj"],
+                       SX(3, 1), sc["rho"], sc["wheel_offset"])
+    M = fn["mass_matrix"](q, K)
+    L, d = _ldl(M)
+    As, Ao = A[:, :ns], A[:, ns:]
+    Bm = _actuation()
+    X = _ldl_solve(L, d, ca.horzcat(Bm, As.T))
+    MinvB, MinvAsT = X[:, :na], X[:, na:]
+    mo = _col(sc["object_mass"], sc["object_mass"], sc["object_inertia"])
+    IoinvAoT = ca.mtimes(ca.diag(1 / mo), Ao.T)
+    Gc = ca.mtimes(As, MinvAsT) + ca.mtimes(Ao, IoinvAoT)
+    return {"A": A, "As": As, "Ao": Ao, "M": M, "Bm": Bm, "MinvB": MinvB,
+            "MinvAsT": MinvAsT, "mo": mo, "IoinvAoT": IoinvAoT, "Gc": Gc}
+
+
 def interaction_maps():
     """The linear maps of the system at rest for a given active set.
 
@@ -1249,20 +1270,11 @@ def interaction_maps():
     q = SX.sym("q", ns)
     K = SX.sym("K", N_PARAMETERS)
     sc = _scene_inputs()
-    zero = SX(ns, 1)
-    A, _, _, _ = _rows(fn, q, zero, K, sc["contact_link"], sc["side"], sc["q_obj"], SX(3, 1),
-                       sc["rho"], sc["wheel_offset"])
-    M = fn["mass_matrix"](q, K)
-    L, d = _ldl(M)
-    As, Ao = A[:, :ns], A[:, ns:]
-    Bm = _actuation()
-    X = _ldl_solve(L, d, ca.horzcat(Bm, As.T))
-    MinvB, MinvAsT = X[:, :na], X[:, na:]
-    mo = _col(sc["object_mass"], sc["object_mass"], sc["object_inertia"])
+    S = _at_rest_system(fn, q, K, sc)
+    A, As, Ao, M, Bm = S["A"], S["As"], S["Ao"], S["M"], S["Bm"]
+    MinvB, MinvAsT, mo, IoinvAoT, Gc = S["MinvB"], S["MinvAsT"], S["mo"], S["IoinvAoT"], S["Gc"]
     Io = ca.diag(mo)
     Ioinv = ca.diag(1 / mo)
-    IoinvAoT = ca.mtimes(Ioinv, Ao.T)
-    Gc = ca.mtimes(As, MinvAsT) + ca.mtimes(Ao, IoinvAoT)
     free = sc["free"]
     D = ca.diag(free)
     lf = (1 - free) * sc["lam_fixed"]
@@ -1306,18 +1318,9 @@ def interaction_maps():
 
 def _metric_forms_sx(fn, q, K, sc, free):
     """Forms of the metrics in ``tau`` at rest for the held rows ``free`` (eqs. 28, 29, 31)."""
-    ns, na = N_COORDINATES, N_JOINTS
-    A, _, _, _ = _rows(fn, q, SX(ns, 1), K, sc["contact_link"], sc["side"], sc["q_obj"],
-                       SX(3, 1), sc["rho"], sc["wheel_offset"])
-    M = fn["mass_matrix"](q, K)
-    L, d = _ldl(M)
-    As, Ao = A[:, :ns], A[:, ns:]
-    Bm = _actuation()
-    X = _ldl_solve(L, d, ca.horzcat(Bm, As.T))
-    MinvB, MinvAsT = X[:, :na], X[:, na:]
-    mo = _col(sc["object_mass"], sc["object_mass"], sc["object_inertia"])
-    IoinvAoT = ca.mtimes(ca.diag(1 / mo), Ao.T)
-    Gc = ca.mtimes(As, MinvAsT) + ca.mtimes(Ao, IoinvAoT)
+    S = _at_rest_system(fn, q, K, sc)
+    As, M, Bm, MinvB, MinvAsT = S["As"], S["M"], S["Bm"], S["MinvB"], S["MinvAsT"]
+    mo, IoinvAoT, Gc = S["mo"], S["IoinvAoT"], S["Gc"]
     Lg, dg, ratio = _masked_delassus(Gc, free, sc["regularization"])
     # lam_tau = -G'^-1 D A_s M^-1 B
     lam_tau = -_ldl_solve(Lg, dg, ca.mtimes(ca.diag(free), ca.mtimes(As, MinvB)))
