@@ -47,13 +47,16 @@ def model_dirname(n_joints: int) -> str:
 
 
 def _env() -> jinja2.Environment:
-    return jinja2.Environment(
+    env = jinja2.Environment(
         loader=jinja2.FileSystemLoader(str(_TEMPLATES)),
         undefined=jinja2.StrictUndefined,
         keep_trailing_newline=True,
         trim_blocks=True,
         lstrip_blocks=True,
     )
+    env.filters["comment"] = comment_text
+    env.filters["pystr"] = repr
+    return env
 
 
 def tool_versions() -> dict[str, str]:
@@ -140,7 +143,19 @@ _COMPOSED = [
 ]
 
 
-def render_python(spec: ModelSpec, *, regen_out: str = "generated") -> str:
+#: The one regenerate command printed in every generated header. It names no path: user-derived
+#: text (an output folder, the cache folder) never enters a generated file.
+REGENERATE = "python -m snakecg_derive --checked-in"
+
+
+def comment_text(value) -> str:
+    """Text safe inside a ``#`` or ``/* */`` comment: printable characters only, no comment
+    terminator. Anything interpolated into a generated file goes through this or ``repr``."""
+    text = "".join(ch if ch.isprintable() else "?" for ch in str(value))
+    return text.replace("*/", "*?")
+
+
+def render_python(spec: ModelSpec) -> str:
     """Jinja2 step: the Python module that builds the CasADi functions."""
     versions = tool_versions()
     return _env().get_template("model.py.j2").render(
@@ -151,7 +166,7 @@ def render_python(spec: ModelSpec, *, regen_out: str = "generated") -> str:
         prefix=spec.prefix,
         spec_hash=spec.digest(),
         tools=", ".join(f"{k} {v}" for k, v in versions.items()),
-        regen_out=regen_out,
+        regenerate=REGENERATE,
         functions=_function_context(spec),
         composed=_COMPOSED,
     )
@@ -221,32 +236,42 @@ def render_c(spec: ModelSpec, functions) -> tuple[dict[str, str], list[dict]]:
             "/* GENERATED FILE - DO NOT EDIT. C code emitted by CasADi for "
             f"{sig['name']}() of\n * generated/{model_dirname(spec.n_joints)}/model.py, plus its "
             "batched driver.\n"
-            f" * Regenerate with: snakecg generate --joints {spec.n_joints}\n"
+            f" * Regenerate with: {REGENERATE}\n"
             f" * spec sha256: {spec.digest()}\n"
-            f" * tools: {', '.join(f'{k} {v}' for k, v in versions.items())}\n */\n"
+            f" * tools: {comment_text(', '.join(f'{k} {v}' for k, v in versions.items()))}\n"
+            " */\n"
         )
         batch = _env().get_template("batch.c.j2").render(prefix=spec.prefix, functions=[sig])
         files[f"c/{sig['name']}.c"] = header + cg.dump() + batch
     return files, sigs
 
 
+def serialize_functions(spec: ModelSpec, functions) -> dict[str, str]:
+    """``casadi/<function>.casadi``: ``Function.serialize()`` text, deterministic and data only
+    (loaded with ``casadi.Function.deserialize``, never executed)."""
+    return {f"casadi/{f.name()[len(spec.prefix):]}.casadi": f.serialize() for f in functions}
+
+
 def _sha(text: str) -> str:
     return hashlib.sha256(text.encode()).hexdigest()
 
 
-def render_model(n_joints: int, *, regen_out: str = "generated", progress=None,
+def render_model(n_joints: int, *, progress=None,
                  max_joints: int = MAX_SYMBOLIC_JOINTS) -> RenderedModel:
     """Derive, render and emit C for one joint count (nothing written)."""
     step = progress or (lambda msg: None)
     step(f"deriving the model of a {n_joints}-joint snake (SymPy)")
     spec = derive_model(n_joints, max_joints=max_joints).spec
     step("rendering the CasADi builder (Jinja2)")
-    py = render_python(spec, regen_out=regen_out)
+    py = render_python(spec)
     step("building the CasADi functions")
     module = load_python(py, f"snakecg_generated_na{n_joints}")
     functions = module.all_functions()
     step("emitting C (CasADi code generator)")
     c_files, sigs = render_c(spec, functions)
+    # CasADi's own serialization of every function: what the no-compiler fallback loads, so
+    # that nothing generated is ever executed at run time.
+    c_files.update(serialize_functions(spec, functions))
     manifest = {
         "format": MANIFEST_FORMAT,
         "generated_by": "snakecg_derive (derive/render.py); do not edit",

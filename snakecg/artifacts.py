@@ -307,7 +307,7 @@ def _generate(n_joints: int, root: Path, progress) -> tuple[Path, dict]:
             from snakecg_derive.render import render_model, write_model
         except ImportError as exc:  # pragma: no cover - broken install
             raise BuildError(f"cannot import the generator snakecg_derive: {exc}") from exc
-        rendered = render_model(n_joints, regen_out=str(root), progress=progress,
+        rendered = render_model(n_joints, progress=progress,
                                 max_joints=max_joints())
         write_model(rendered, root)
         return folder, verify_model_dir(folder, n_joints)

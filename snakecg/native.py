@@ -5,8 +5,9 @@ Two interchangeable backends evaluate the generated functions:
 * :class:`CompiledBackend`: the C that CasADi emitted, compiled with the system C compiler
   (``$CC``, else ``cc``/``gcc``) at ``-O2`` into ``<cache>/build/<key>/model.so``, then
   called through ``ctypes`` on numpy buffers in place (no copies; one C loop over the batch);
-* :class:`CasadiBackend`: CasADi's in-process virtual machine on the functions built by the
-  generated ``model.py``, batched with ``Function.map``. Used when no compiler is present or
+* :class:`CasadiBackend`: CasADi's in-process virtual machine on the functions deserialized
+  from CasADi's own serialization (``casadi/*.casadi``, hash-checked; nothing generated is
+  executed), batched with ``Function.map``. Used when no compiler is present or
   compiling fails; the runtime says so once.
 
 Both return, for a batch of ``n``, arrays of shape ``(n, rows, cols)`` per output.
@@ -16,7 +17,6 @@ from __future__ import annotations
 
 import ctypes
 import hashlib
-import importlib.util
 import json
 import os
 import shutil
@@ -383,29 +383,39 @@ class CompiledBackend:
 
 
 class CasadiBackend:
-    """CasADi's in-process evaluation of the functions built by the generated ``model.py``."""
+    """CasADi's in-process evaluation of the generated functions, deserialized from
+    ``casadi/<name>.casadi`` (CasADi's data format, hash-checked; never executed)."""
 
     kind = "casadi"
 
     def __init__(self, folder: Path, manifest: dict):
-        spec = importlib.util.spec_from_file_location(
-            f"snakecg_model_na{manifest['n_joints']}", folder / "model.py"
-        )
-        module = importlib.util.module_from_spec(spec)
-        spec.loader.exec_module(module)  # verified against the manifest hash before loading
+        import casadi as ca
+
         self.signatures = {s["name"]: _Signature(s) for s in manifest["functions"]}
-        self._fns = {f.name()[len(manifest["prefix"]):]: f for f in module.all_functions()}
+        self._fns = {}
+        problems = []
+        for sig in manifest["functions"]:
+            # CasADi's serialization, hash-checked by verify_model_dir; data, never executed.
+            rel = f"casadi/{sig['name']}.casadi"
+            if rel not in manifest["files"]:
+                problems.append(f"{sig['name']} has no serialized CasADi function")
+                continue
+            try:
+                f = ca.Function.deserialize((folder / rel).read_text(encoding="utf-8"))
+            except (OSError, RuntimeError, UnicodeDecodeError) as exc:
+                problems.append(f"{rel} cannot be deserialized ({exc})")
+                continue
+            self._fns[sig["name"]] = f
         self._maps: dict[tuple[str, int], object] = {}
         problems = []
         for sig in manifest["functions"]:
             f = self._fns.get(sig["name"])
             if f is None:
-                problems.append(f"{sig['name']} is not built by model.py")
                 continue
             problems += _signature_problems(
                 sig, f.n_in(), f.n_out(), lambda k, f=f: (f.size1_in(k), f.size2_in(k)),
                 lambda k, f=f: (f.size1_out(k), f.size2_out(k)))
-        _check_signatures(folder / "model.py", manifest, problems)
+        _check_signatures(folder / "casadi", manifest, problems)
 
     def casadi_function(self, name: str):
         return self._fns[name]

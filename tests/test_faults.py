@@ -487,9 +487,27 @@ def test_corrupted_model_entry_is_rebuilt(fresh_cache, monkeypatch):
         (packaged(1) / "c" / "mass_matrix.c").read_text()
 
 
+def test_model_py_with_a_recomputed_hash_is_never_executed(fresh_cache, monkeypatch, tmp_path):
+    """Even a model.py whose manifest hash was recomputed to match is never run: CasADi's
+    in-process backend loads the serialized functions, not the rendered Python."""
+    folder = _cached_copy_of_package(1, monkeypatch)
+    marker = tmp_path / "executed"
+    (folder / "model.py").write_text(f"open({str(marker)!r}, 'w').write('ran')\n")
+
+    def rehash(m):
+        m["files"]["model.py"] = artifacts._sha_file(folder / "model.py")
+    _edit_manifest(folder, rehash)
+    monkeypatch.setattr(snakecg.model, "_BACKENDS", {})
+    model = snakecg.load(snakecg.Robot(joints=1), backend="casadi")
+    q = np.array([0.1, -0.2, 0.3, 0.7])
+    M = model.mass_matrix(q)
+    assert np.allclose(M, reference_mass_matrix(snakecg.Robot(joints=1), q), atol=1e-12)
+    assert not marker.exists()
+
+
 def test_tampered_model_py_is_never_executed(fresh_cache, monkeypatch, tmp_path):
-    """A model.py that does not match its manifest is refused before anything imports it
-    (CasADi's in-process backend imports model.py: only ever a verified one)."""
+    """A model.py that does not match its manifest is refused before anything loads the
+    folder."""
     folder = _cached_copy_of_package(1, monkeypatch)
     marker = tmp_path / "executed"
     (folder / "model.py").write_text(f"open({str(marker)!r}, 'w').write('ran')\n")
@@ -792,4 +810,6 @@ def test_no_pickle_or_eval_in_the_runtime():
     body = src[src.index("def load_python"):src.index("def operation_count")]
     assert "exec(code, module.__dict__)" in body
     loader = (ROOT / "snakecg" / "native.py").read_text()
-    assert "verified against the manifest hash before loading" in loader
+    # the no-compiler fallback deserializes CasADi's data format; it imports no generated code
+    assert "exec_module" not in loader and "importlib" not in loader
+    assert "Function.deserialize" in loader

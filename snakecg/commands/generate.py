@@ -56,7 +56,7 @@ def run(args) -> int:
             raise InputError(f"--out {args.out!r} exists and is not a directory")
         from snakecg_derive.render import render_model, write_model
 
-        folder = write_model(render_model(args.joints, regen_out=str(out), progress=progress,
+        folder = write_model(render_model(args.joints, progress=progress,
                                           max_joints=max_joints()), out)
         seconds = time.perf_counter() - t0
         if args.json:

@@ -1,6 +1,6 @@
 /* GENERATED FILE - DO NOT EDIT. C code emitted by CasADi for metric_extremes() of
  * generated/na2/model.py, plus its batched driver.
- * Regenerate with: snakecg generate --joints 2
+ * Regenerate with: python -m snakecg_derive --checked-in
  * spec sha256: 92aa81f73b9d7ff69afc31c561cda203208b6d2de4fc2c5b6871a20f60622a96
  * tools: sympy 1.14.0, casadi 3.8.2, jinja2 3.1.6
  */

@@ -1,6 +1,6 @@
 /* GENERATED FILE - DO NOT EDIT. C code emitted by CasADi for metric_forms() of
  * generated/na3/model.py, plus its batched driver.
- * Regenerate with: snakecg generate --joints 3
+ * Regenerate with: python -m snakecg_derive --checked-in
  * spec sha256: 69afcae47b2eaa6ce5aa482e0c177afbb935d52c01aa7750c6d88b22d6df6370
  * tools: sympy 1.14.0, casadi 3.8.2, jinja2 3.1.6
  */

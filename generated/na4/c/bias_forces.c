@@ -1,6 +1,6 @@
 /* GENERATED FILE - DO NOT EDIT. C code emitted by CasADi for bias_forces() of
  * generated/na4/model.py, plus its batched driver.
- * Regenerate with: snakecg generate --joints 4
+ * Regenerate with: python -m snakecg_derive --checked-in
  * spec sha256: 6d3cf60c2e6a2bf3e65c7081e859d5528051df9e704c67e6cb3fdb0b6abc56ce
  * tools: sympy 1.14.0, casadi 3.8.2, jinja2 3.1.6
  */

@@ -1,6 +1,6 @@
 /* GENERATED FILE - DO NOT EDIT. C code emitted by CasADi for link_poses() of
  * generated/na5/model.py, plus its batched driver.
- * Regenerate with: snakecg generate --joints 5
+ * Regenerate with: python -m snakecg_derive --checked-in
  * spec sha256: 1460327b5bcebd354746349675e3369d37c437b9be0451e2a5175b43e20c9c22
  * tools: sympy 1.14.0, casadi 3.8.2, jinja2 3.1.6
  */

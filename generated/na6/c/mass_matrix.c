@@ -1,6 +1,6 @@
 /* GENERATED FILE - DO NOT EDIT. C code emitted by CasADi for mass_matrix() of
  * generated/na6/model.py, plus its batched driver.
- * Regenerate with: snakecg generate --joints 6
+ * Regenerate with: python -m snakecg_derive --checked-in
  * spec sha256: e232b212df24684700216b0534f9f644d3ad97ef2a2b5061af17e689371e995b
  * tools: sympy 1.14.0, casadi 3.8.2, jinja2 3.1.6
  */
