@@ -22,7 +22,7 @@ from .errors import InputError
 from .native import load_backend
 from .robot import Robot, Scene
 from .solver import (ABSENT, HELD, LOST, PIVOT_TOL, REGULARIZATION, SLIDE_NEG, SLIDE_POS,
-                     _violations_one, default_max_iter, solve_active_set)
+                     _violations_one, check_input_range, default_max_iter, solve_active_set)
 
 __all__ = ["load", "RobotModel", "SceneModel", "ForwardResult"]
 
@@ -273,6 +273,7 @@ class SceneModel(RobotModel):
                 extra[name] = arr[0]
         n = broadcast_batches(**parts)
         batched = any(b for _, b in parts.values())
+        check_input_range(parts)
         if ("q_obj" in extra) != ("rho" in extra):
             raise InputError("q_obj and rho go together: give both or neither")
         if not batched and self.backend.kind == "compiled":
@@ -312,8 +313,8 @@ class SceneModel(RobotModel):
                 "object_mass": self._object_mass, "object_inertia": self._object_inertia,
                 "wheel_offset": self._wheel_offset, "regularization": [0.0]})
             ks = self._local.kernels = (place, cd, *(cd.out_names.index(k) for k in
-                                                     ("lam", "w", "pivot_ratio")))
-        place, cd, i_lam, i_w, i_pivot = ks
+                                                     ("lam", "w", "pivot_ratio", "delassus")))
+        place, cd, i_lam, i_w, i_pivot, i_G = ks
         if "q_obj" in extra:
             q_obj, rho = extra["q_obj"][0], extra["rho"][0]
         else:
@@ -331,7 +332,8 @@ class SceneModel(RobotModel):
             lam, w = outs[i_lam].tolist(), outs[i_w].tolist()
             if not (outs[i_pivot][0] > PIVOT_TOL and all(map(math.isfinite, lam))):
                 return None
-            new = _violations_one(state, lam, w, bounds)
+            g_scale = float(np.abs(np.diagonal(outs[i_G].reshape(len(state), -1))).max())
+            new = _violations_one(state, lam, w, bounds, g_scale)
             if new == state:
                 break
             state = new

@@ -29,16 +29,19 @@ flagged ``singular``.
 from __future__ import annotations
 
 import itertools
+import math
 from dataclasses import dataclass
 
 import numpy as np
 
-__all__ = ["ActiveSetSolution", "solve_active_set", "PIVOT_TOL"]
+__all__ = ["ActiveSetSolution", "solve_active_set", "PIVOT_TOL", "check_input_range"]
 
 #: Pivot ratio below which the held rows are treated as linearly dependent.
 PIVOT_TOL = 1e-10
 #: Relative regularization used for a singular sample (times the largest G_c diagonal).
 REGULARIZATION = 1e-10
+#: Relative tolerance of the active-set decisions (times the sample's own force scale).
+REL_TOL = 1e-9
 
 # row states
 ABSENT, HELD, LOST, SLIDE_POS, SLIDE_NEG = 0, 1, 2, 3, 4
@@ -82,12 +85,11 @@ def _violations(state, lam, w, bounds, tol_lam, tol_w):
     return new
 
 
-def _violations_one(state: list, lam: list, w: list, bounds: list) -> list:
+def _violations_one(state: list, lam: list, w: list, bounds: list, g_scale: float) -> list:
     """:func:`_violations` (with :func:`_tolerances`) for one sample on Python lists: the same
     rules, for the one-sample path of ``SceneModel.forward`` where numpy's per-call overhead
-    on 5-element arrays would dominate."""
-    tol_lam = 1e-9 * max(1.0, max(abs(x) for x in lam))
-    tol_w = 1e-9 * max(1.0, max(abs(x) for x in w))
+    on 5-element arrays would dominate. ``g_scale``: the largest diagonal of ``G_c``."""
+    tol_lam, tol_w = _tolerances_one(lam, w, g_scale)
     new = list(state)
     if state[0] == HELD and lam[0] < -tol_lam:
         new[0] = LOST
@@ -107,16 +109,61 @@ def _violations_one(state: list, lam: list, w: list, bounds: list) -> list:
     return new
 
 
+def _tolerances_one(lam, w, g_scale: float):
+    """The tolerances of :func:`_tolerances` for one sample (Python floats)."""
+    g = g_scale if g_scale > 0 and math.isfinite(g_scale) else 1.0
+    s_lam = max(max(abs(x) for x in lam), max(abs(x) for x in w) / g)
+    return REL_TOL * s_lam, REL_TOL * g * s_lam
+
+
+#: Largest magnitude accepted for the forces (``tau``, ``f_obj``) and, square-rooted, for the
+#: velocities: the norms are quadratic in them and must stay inside float64's range.
+FORCE_LIMIT = 1e150
+_LIMITS = {"tau": FORCE_LIMIT, "f_obj": FORCE_LIMIT, "v": FORCE_LIMIT ** 0.5,
+           "v_obj": FORCE_LIMIT ** 0.5}
+
+
+def check_input_range(parts: dict) -> None:
+    """Refuse finite inputs whose results would overflow float64 (the norms are quadratic in
+    the forces and quartic in the velocities): ``|tau|, |f_obj| <= 1e150``,
+    ``|v|, |v_obj| <= 1e75``. ``parts``: ``{name: (array, batched)}``."""
+    from .errors import InputError
+
+    for name, limit in _LIMITS.items():
+        if name in parts:
+            arr = parts[name][0]
+            big = np.abs(arr) > limit
+            if np.any(big):
+                idx = tuple(int(i) for i in np.argwhere(big)[0])
+                raise InputError(f"{name} must have every entry within +-{limit:.0e} (the norms"
+                                 f" are quadratic in the forces and would overflow float64),"
+                                 f" found {arr[idx]:.3e} at index {idx}")
+
+
 def default_max_iter(nc: int) -> int:
     """Active-set passes before the remaining samples are enumerated."""
     return 4 * nc + 4
 
 
 def _tolerances(out):
+    """Decision tolerances relative to the problem's own scale (no absolute floor).
+
+    The force scale is ``s = max(max |lam|, max |w| / g)`` with ``g`` the largest diagonal of
+    the Delassus matrix (N per m/s^2 of the rows): forces and accelerations of the sample in
+    one unit. ``tol_lam = REL_TOL s`` and ``tol_w = REL_TOL g s``. Scaling every input force
+    (torque, external wrench, wheel bounds) by ``s`` scales ``lam`` and ``w`` by ``s``: the
+    decisions do not depend on the units or the magnitude of the torque.
+    """
     lam, w = out["lam"], out["w"]
-    tol_lam = 1e-9 * np.maximum(1.0, np.abs(lam).max(axis=1, keepdims=True))
-    tol_w = 1e-9 * np.maximum(1.0, np.abs(w).max(axis=1, keepdims=True))
-    return tol_lam, tol_w
+    g = _g_scale(out["delassus"])
+    s_lam = np.maximum(np.abs(lam).max(axis=1), np.abs(w).max(axis=1) / g)[:, None]
+    return REL_TOL * s_lam, REL_TOL * g[:, None] * s_lam
+
+
+def _g_scale(G):
+    """Largest diagonal of each Delassus matrix (1 where it is not positive and finite)."""
+    g = np.abs(np.diagonal(G, axis1=1, axis2=2)).max(axis=1)
+    return np.where((g > 0) & np.isfinite(g), g, 1.0)
 
 
 def _evaluate(call, idx, state, bounds):
