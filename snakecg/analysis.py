@@ -55,12 +55,19 @@ class Extremes:
     min_kept: dict = field(default_factory=dict)
     tau_min_kept: dict = field(default_factory=dict)
     method: str = ""
+    #: Per configuration: the values are certified exact (bounded wheels, n_a <= 4: every
+    #: piece searched and the forward solver agrees at the returned torques); True for the
+    #: exact linear scenarios.
+    certified: object = None
+    pieces: int = 0
 
     def _squeeze(self):
         for d in (self.max, self.min, self.tau_max, self.tau_min, self.min_kept,
                   self.tau_min_kept):
             for k in d:
                 d[k] = d[k][0]
+        if self.certified is not None:
+            self.certified = self.certified[0]
         return self
 
 
@@ -384,18 +391,33 @@ def _quadratic_extremes_for(model, qa, scenario: str):
     return _quadratic_extremes(other, qa)
 
 
+#: Largest joint count for which bounded-wheel extremes are solved exactly by default.
+EXACT_WHEELS_MAX_JOINTS = 4
+
+
 def extremes(model, q, *, samples: int | None = None, refine: int = 10,
-             starts: int = 4, refined=METRICS) -> Extremes:
+             starts: int = 4, refined=METRICS, exact: bool | None = None) -> Extremes:
     """Best and worst ``norm_a_obj``, ``norm_qdd``, ``norm_lambda`` and ``sr`` over the
     input ellipsoid of eq. (31), with the torques attaining them (see the module docstring).
 
-    ``q``: ``(n_s,)`` or ``(N, n_s)``. For ``wheels``, ``samples`` boundary directions
-    (default 64 for 2 joints, 160 for 3, 600 above), then ``refine`` rounds of pattern search
-    from the ``starts`` best candidates of each maximum in ``refined`` (the other maxima and
-    the minima are taken over the candidates).
+    ``q``: ``(n_s,)`` or ``(N, n_s)``. For ``wheels``: ``exact`` (default: ``n_a <= 4``)
+    solves every piece of the piecewise-affine map exactly (:mod:`snakecg.piecewise`,
+    certified per configuration in ``Extremes.certified``); otherwise ``samples`` boundary
+    directions (default 64 for 2 joints, 160 for 3, 600 above), then ``refine`` rounds of
+    pattern search from the ``starts`` best candidates of each maximum in ``refined`` (the
+    other maxima and the minima are taken over the candidates): lower bounds of the maxima
+    and upper bounds of the minima, not certified.
     """
     qa, batched = model._q(q)
-    if model.scene.scenario == "wheels":
+    if exact is None:
+        exact = model.n_joints <= EXACT_WHEELS_MAX_JOINTS
+    if not isinstance(exact, (bool, np.bool_)):
+        raise InputError(f"exact must be True, False or None (default), got {exact!r}")
+    if model.scene.scenario == "wheels" and exact:
+        from .piecewise import wheel_extremes
+
+        ex = wheel_extremes(model, qa)
+    elif model.scene.scenario == "wheels":
         if samples is None:
             samples = {1: 2, 2: 64, 3: 160}.get(model.n_joints, 600)
         if not isinstance(samples, int) or samples < 2:
@@ -404,8 +426,10 @@ def extremes(model, q, *, samples: int | None = None, refine: int = 10,
         if bad:
             raise InputError(f"refined takes metric names from {METRICS}, got {bad[0]!r}")
         ex = _wheels_extremes(model, qa, samples, refine, starts, tuple(refined))
+        ex.certified = np.zeros(qa.shape[0], bool)
     else:
         ex = _quadratic_extremes(model, qa)
+        ex.certified = np.ones(qa.shape[0], bool)
     return ex if batched else ex._squeeze()
 
 

@@ -258,15 +258,18 @@ def test_violations_one_equals_violations(rng):
     w = rng.normal(size=(n, nc)) * scale
     # values right at the bounds and within a few tolerances of them or of zero
     near = rng.random((n, nc)) < 0.4
-    tol = 1e-9 * np.maximum(1.0, np.abs(lam).max(axis=1, keepdims=True))
+    G = rng.normal(size=(n, nc, nc)) * np.exp(rng.uniform(-3, 3, (n, 1, 1)))
+    G = G @ np.swapaxes(G, 1, 2)
+    g = np.abs(np.diagonal(G, axis1=1, axis2=2)).max(axis=1)
+    tol = 1e-9 * np.abs(lam).max(axis=1, keepdims=True)
     edge = np.where(np.isfinite(bounds), bounds, 0.0) * rng.choice([-1, 1], (n, nc))
     lam = np.where(near, edge + rng.integers(-2, 3, (n, nc)) * tol, lam)
     w = np.where(rng.random((n, nc)) < 0.3, rng.integers(-2, 3, (n, nc)) * 1e-9, w)
-    tl, tw = solver._tolerances({"lam": lam, "w": w})
+    tl, tw = solver._tolerances({"lam": lam, "w": w, "delassus": G})
     vec = solver._violations(state, lam, w, bounds, tl, tw)
     for i in range(n):
         one = solver._violations_one(state[i].tolist(), lam[i].tolist(), w[i].tolist(),
-                                     bounds.tolist())
+                                     bounds.tolist(), float(g[i]))
         assert one == vec[i].tolist(), f"sample {i}"
     assert np.any(vec != state)
 
