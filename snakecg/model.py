@@ -21,6 +21,7 @@ from ._inputs import as_batch, broadcast_batches, expand
 from .errors import InputError
 from .native import load_backend
 from .robot import Robot, Scene
+from .rows import WEAK, finish as finish_rows, mass_pivot_ratio
 from .solver import (ABSENT, HELD, LOST, PIVOT_TOL, REGULARIZATION, SLIDE_NEG, SLIDE_POS,
                      _violations_one, check_input_range, default_max_iter, solve_active_set)
 
@@ -330,8 +331,8 @@ class SceneModel(RobotModel):
                           lam_fixed=[u if s == SLIDE_POS else -u if s == SLIDE_NEG else 0.0
                                      for s, u in zip(state, bounds)])
             lam, w = outs[i_lam].tolist(), outs[i_w].tolist()
-            if not (outs[i_pivot][0] > PIVOT_TOL and all(map(math.isfinite, lam))):
-                return None
+            if not (outs[i_pivot][0] > WEAK and all(map(math.isfinite, lam))):
+                return None  # weak or dependent rows: solved from the rows (snakecg.rows)
             g_scale = float(np.abs(np.diagonal(outs[i_G].reshape(len(state), -1))).max())
             new = _violations_one(state, lam, w, bounds, g_scale)
             if new == state:
@@ -341,6 +342,14 @@ class SceneModel(RobotModel):
             return None
         o = dict(zip(cd.out_names, outs))
         contact = state[0] == HELD
+        (M,) = self.backend("mass_matrix", 1, [q, self.parameters])
+        mass = float(mass_pivot_ratio(M)[0])
+        nq, na_, nl_, sr_ = (float(o[k][0]) for k in ("norm_qdd", "norm_a_obj", "norm_lambda",
+                                                        "sr"))
+        big = max(abs(nq), abs(na_), abs(nl_))
+        if not (mass > 1e-13 and min(nq, na_, nl_) >= -1e-12 * big
+                and -1e-12 <= sr_ <= 1 + 1e-12 and math.isfinite(big)):
+            return None  # ill-conditioned mass matrix or an impossible result: flagged there
         return ForwardResult(
             qdd=o["qdd"].copy(), a_obj=o["a_obj"].copy(), lam=o["lam"].copy(),
             w=o["w"].copy(), contact=np.bool_(contact),
@@ -348,7 +357,8 @@ class SceneModel(RobotModel):
             norm_lambda=np.float64(o["norm_lambda"][0]),
             norm_a_obj=np.float64(o["norm_a_obj"][0]), norm_qdd=np.float64(o["norm_qdd"][0]),
             sr=np.float64(o["sr"][0] if contact else 0.0), gap=np.float64(o["gap"][0]),
-            singular=np.bool_(False), conditioning=np.float64(outs[i_pivot][0]), tau=tau,
+            singular=np.bool_(False),
+            conditioning=np.float64(min(outs[i_pivot][0], mass, 1.0)), tau=tau,
         )
 
     def _solve(self, base: dict, n: int, *, max_iter=None):
@@ -383,7 +393,8 @@ class SceneModel(RobotModel):
                     res[name_] = o
             return res
 
-        return solve_active_set(call, n, self.present, self.bounds, max_iter=max_iter)
+        sol = solve_active_set(call, n, self.present, self.bounds, max_iter=max_iter)
+        return finish_rows(self, base, n, sol, max_iter)  # weak rows, mass matrix, sanity
 
     def _result(self, sol, tau, batched) -> ForwardResult:
         o = sol.outputs
@@ -394,7 +405,7 @@ class SceneModel(RobotModel):
             qdd=o["qdd"], a_obj=o["a_obj"], lam=o["lam"], w=o["w"], contact=contact,
             wheel_state=wheel_state, norm_lambda=o["norm_lambda"], norm_a_obj=o["norm_a_obj"],
             norm_qdd=o["norm_qdd"], gap=o["gap"], singular=sol.singular,
-            conditioning=np.where(sol.singular, 0.0, np.minimum(o["pivot_ratio"], 1.0)),
+            conditioning=sol.conditioning,
             tau=tau,
             sr=np.where(contact, o["sr"], 0.0),  # eq. 30; no interaction without contact
         )

@@ -204,6 +204,37 @@ def faces(cond, na):
             continue
         a = cond[:, S, :na]  # (P, s, na)
         b = cond[:, S, na]
+        if len(S) == 1:  # closed form: u0 = -b a / |a|^2, Z from a Householder reflection
+            a1, b1 = a[:, 0], b[:, 0]
+            na2 = np.sum(a1 * a1, axis=1)
+            valid = na2 > 1e-24
+            na2 = np.where(valid, na2, 1.0)
+            u0 = -(b1 / na2)[:, None] * a1
+            ah = a1 / np.sqrt(na2)[:, None]
+            sgn = np.where(ah[:, 0] >= 0, 1.0, -1.0)
+            v = ah.copy()
+            v[:, 0] += sgn
+            H = np.eye(na) - 2 * v[:, :, None] * v[:, None, :] / np.sum(v * v, axis=1)[:, None, None]
+            r2 = 1.0 - np.sum(u0 * u0, axis=1)
+            valid &= r2 >= 0
+            out.append((S, u0, np.ascontiguousarray(H[:, :, 1:]),
+                        np.sqrt(np.maximum(r2, 0.0)), valid))
+            continue
+        if len(S) == 2 and na == 3:  # closed form: Z = a1 x a2, u0 = a^T (a a^T)^-1 (-b)
+            a1, a2 = a[:, 0], a[:, 1]
+            z = np.cross(a1, a2)
+            nz = np.linalg.norm(z, axis=1)
+            valid = nz > 1e-12
+            g11, g12, g22 = (np.sum(a1 * a1, 1), np.sum(a1 * a2, 1), np.sum(a2 * a2, 1))
+            det = np.where(valid, g11 * g22 - g12 * g12, 1.0)
+            x1 = (-b[:, 0] * g22 + b[:, 1] * g12) / det
+            x2 = (-b[:, 1] * g11 + b[:, 0] * g12) / det
+            u0 = x1[:, None] * a1 + x2[:, None] * a2
+            r2 = 1.0 - np.sum(u0 * u0, axis=1)
+            valid &= r2 >= 0
+            Z = (z / np.where(valid, nz, 1.0)[:, None])[:, :, None]
+            out.append((S, u0, Z, np.sqrt(np.maximum(r2, 0.0)), valid))
+            continue
         Q, R = np.linalg.qr(np.swapaxes(a, 1, 2), mode="complete")  # a^T = Q R
         Rs = R[:, :len(S), :]
         d = np.abs(np.diagonal(Rs, axis1=1, axis2=2))
@@ -258,25 +289,18 @@ def quadratic_candidates(fc, A, g):
     E[:, k:, :k] = -gr[:, :, None] * gr[:, None, :] / (r_safe ** 2)[:, None, None]
     E[:, k:, k:] = Ar
     mus = np.linalg.eigvals(E).real  # (P, 2k)
-    cands = []
-    eye = np.eye(k)
-    for j in range(2 * k):
-        H = Ar - mus[:, j, None, None] * eye
-        # a tiny shift keeps the solve defined at an eigenvalue of A_r (the hard case below)
-        shift = 1e-13 * (np.abs(Ar).max(axis=(1, 2)) + 1e-300)
-        y = -np.linalg.solve(H + shift[:, None, None] * eye, gr[:, :, None])[:, :, 0]
-        cands.append(y)
-    # hard case: y = y_p + t v_i with y_p the least-norm part orthogonal to v_i
     ev, V = np.linalg.eigh(Ar)
     gv = np.einsum("pki,pk->pi", V, gr)
-    for i in range(k):
-        den = ev - ev[:, i:i + 1]
-        coef = np.where(np.arange(k) == i, 0.0, -gv / np.where(den == 0, 1.0, den))
-        coef = np.where((np.arange(k) != i) & (den == 0), 0.0, coef)
-        yp = np.einsum("pki,pi->pk", V, coef)
-        t = np.sqrt(np.maximum(r ** 2 - np.sum(yp * yp, axis=1), 0.0))
-        cands.append(yp + t[:, None] * V[:, :, i])
-        cands.append(yp - t[:, None] * V[:, :, i])
+    cands = []
+    eye = np.eye(k)
+    tiny = 1e-13 * (np.abs(ev).max(axis=1, keepdims=True) + 1e-300)
+    for j in range(2 * k):
+        # y = -(A_r - mu I)^-1 g_r in A_r's eigenbasis (a tiny shift at an eigenvalue of A_r:
+        # the hard case, covered below)
+        den = ev - mus[:, j:j + 1]
+        den = np.where(np.abs(den) < tiny, tiny, den)
+        cands.append(-np.einsum("pki,pi->pk", V, gv / den))
+    # hard case: y = y_p + t v_i with y_p the least-norm part orthogonal to v_i
     y = np.stack(cands, axis=1)  # (P, C, k)
     ny = np.linalg.norm(y, axis=2, keepdims=True)
     y = np.where(ny > 0, y / np.maximum(ny, 1e-300), eye[0]) * r[:, None, None]

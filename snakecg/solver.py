@@ -54,6 +54,7 @@ class ActiveSetSolution:
     singular: np.ndarray  # (N,) bool
     iterations: int
     enumerated: int
+    conditioning: np.ndarray = None  # (N,), set by snakecg.rows.finish
 
 
 def _free_and_fixed(state: np.ndarray, bounds: np.ndarray):
