@@ -413,18 +413,18 @@ def extremes(model, q, *, samples: int | None = None, refine: int = 10,
         exact = model.n_joints <= EXACT_WHEELS_MAX_JOINTS
     if not isinstance(exact, (bool, np.bool_)):
         raise InputError(f"exact must be True, False or None (default), got {exact!r}")
+    if samples is None:
+        samples = {1: 2, 2: 64, 3: 160}.get(model.n_joints, 600)
+    if not isinstance(samples, int) or samples < 2:
+        raise InputError(f"samples must be an integer >= 2, got {samples!r}")
+    bad = [m for m in refined if m not in METRICS]
+    if bad:
+        raise InputError(f"refined takes metric names from {METRICS}, got {bad[0]!r}")
     if model.scene.scenario == "wheels" and exact:
         from .piecewise import wheel_extremes
 
         ex = wheel_extremes(model, qa)
     elif model.scene.scenario == "wheels":
-        if samples is None:
-            samples = {1: 2, 2: 64, 3: 160}.get(model.n_joints, 600)
-        if not isinstance(samples, int) or samples < 2:
-            raise InputError(f"samples must be an integer >= 2, got {samples!r}")
-        bad = [m for m in refined if m not in METRICS]
-        if bad:
-            raise InputError(f"refined takes metric names from {METRICS}, got {bad[0]!r}")
         ex = _wheels_extremes(model, qa, samples, refine, starts, tuple(refined))
         ex.certified = np.zeros(qa.shape[0], bool)
     else:

@@ -300,7 +300,18 @@ def quadratic_candidates(fc, A, g):
         den = ev - mus[:, j:j + 1]
         den = np.where(np.abs(den) < tiny, tiny, den)
         cands.append(-np.einsum("pki,pi->pk", V, gv / den))
-    # hard case: y = y_p + t v_i with y_p the least-norm part orthogonal to v_i
+    # hard case (g_r orthogonal to an eigenvector v_i of A_r, mu = its eigenvalue):
+    # y = y_p + t v_i with y_p the least-norm part orthogonal to v_i, |y| = r
+    idx = np.arange(k)
+    for i in range(k):
+        den = ev - ev[:, i:i + 1]
+        off = idx != i
+        coef = np.where(off & (np.abs(den) > tiny), -gv / np.where(np.abs(den) > tiny, den, 1.0),
+                        0.0)
+        yp = np.einsum("pki,pi->pk", V, coef)
+        t = np.sqrt(np.maximum(r ** 2 - np.sum(yp * yp, axis=1), 0.0))
+        cands.append(yp + t[:, None] * V[:, :, i])
+        cands.append(yp - t[:, None] * V[:, :, i])
     y = np.stack(cands, axis=1)  # (P, C, k)
     ny = np.linalg.norm(y, axis=2, keepdims=True)
     y = np.where(ny > 0, y / np.maximum(ny, 1e-300), eye[0]) * r[:, None, None]

@@ -315,3 +315,67 @@ class Reference:
         if not out["contact"]:
             out["sr"] = 0.0  # convention: no interaction, no slippage ratio (eq. 30)
         return out
+
+
+# --- at rest, many torques at once (for dense sampling of the input boundary) ---------------
+def rest_maps(ref, q):
+    """The reference's system at rest as maps of ``tau``: ``b = Bmap tau`` (the rows' free
+    accelerations), ``G_c``, ``I^-1 A^T``, ``I^-1 B``, ``M``, ``I_obj`` and ``N = B^T M^-1 B``."""
+    s0 = ref.system(q, np.zeros(ref.na))
+    Iinv = np.linalg.inv(s0["I"])
+    B = np.vstack([s0["B"], np.zeros((3, ref.na))])
+    return dict(G=s0["Gc"], Bmap=s0["A"] @ Iinv @ B, IAt=Iinv @ s0["A"].T, IB=Iinv @ B,
+                M=s0["M"], I_obj=s0["I_obj"], N=s0["B"].T @ np.linalg.solve(s0["M"], s0["B"]),
+                ns=ref.ns)
+
+
+def solve_rest_batch(ref, maps, taus):
+    """Exact contact/wheel solution at rest for many torques ``(K, n_a)``: every active set
+    of the reference (dense solves, vectorized), keeping the one that satisfies the KKT
+    conditions (relative tolerance). Returns norms, ``sr`` (0 when lost), ``contact``."""
+    G, Bm = maps["G"], maps["Bmap"]
+    b = taus @ Bm.T  # (K, nc)
+    K, nc = b.shape
+    best_v = np.full(K, np.inf)
+    lam_best = np.zeros((K, nc))
+    kept = np.zeros(K, bool)
+    for states in itertools.product(*ref.choices()):
+        lam = np.zeros((K, nc))
+        for r, s in enumerate(states):
+            if s == "slide+":
+                lam[:, r] = ref.bounds[r]
+            elif s == "slide-":
+                lam[:, r] = -ref.bounds[r]
+        H = np.array([s == "held" for s in states])
+        if H.any():
+            rhs = -(b[:, H] + lam[:, ~H] @ G[np.ix_(H, ~H)].T)
+            lam[:, H] = np.linalg.solve(G[np.ix_(H, H)], rhs.T).T
+        w = lam @ G.T + b
+        scale = np.maximum(np.abs(lam).max(axis=1), 1e-300)
+        wscale = np.maximum(np.abs(w).max(axis=1), 1e-300)
+        v = np.zeros(K)
+        for r, s in enumerate(states):
+            u = ref.bounds[r]
+            if s == "held" and r == 0:
+                v += np.maximum(-lam[:, 0], 0) / scale
+            elif s == "lost":
+                v += np.maximum(-w[:, 0], 0) / wscale
+            elif s == "held" and np.isfinite(u):
+                v += np.maximum(np.abs(lam[:, r]) - u, 0) / scale
+            elif s == "slide+":
+                v += np.maximum(w[:, r], 0) / wscale
+            elif s == "slide-":
+                v += np.maximum(-w[:, r], 0) / wscale
+        better = v < best_v
+        best_v = np.where(better, v, best_v)
+        lam_best[better] = lam[better]
+        kept = np.where(better, states[0] == "held", kept)
+    acc = taus @ maps["IB"].T + lam_best @ maps["IAt"].T
+    ns = maps["ns"]
+    qdd, a_obj = acc[:, :ns], acc[:, ns:]
+    nq = np.einsum("ki,ij,kj->k", qdd, maps["M"], qdd)
+    na = np.einsum("ki,ij,kj->k", a_obj, maps["I_obj"], a_obj)
+    nl = np.einsum("ki,ij,kj->k", lam_best, G, lam_best)
+    sr = np.where(kept, na / np.maximum(na + nq, 1e-300), 0.0)
+    return dict(norm_qdd=nq, norm_a_obj=na, norm_lambda=nl, sr=sr, contact=kept,
+                lam=lam_best, kkt=best_v)

@@ -33,7 +33,19 @@ def test_conditioning_falls_as_two_wheel_rows_become_dependent():
     np.testing.assert_allclose(batch.conditioning, conds, rtol=1e-9)
 
 
-def test_conditioning_is_one_for_a_single_contact_row():
-    model = snakecg.load(snakecg.Scene(snakecg.Robot(joints=2), scenario="frictionless"))
-    res = model.forward(np.array([0.0, 0.0, 0.0, -1.0, 1.0]), np.array([0.05, 0.0]))
-    assert res.contact and res.conditioning == 1.0
+def test_conditioning_of_a_single_contact_row_is_the_mass_matrix_pivot_ratio():
+    """One row is independent (pivot ratio 1): the conditioning is then the mass matrix's,
+    the smallest Cholesky pivot of the Jacobi-scaled M_s, computed here from the independent
+    dense reference."""
+    from reference import Reference
+
+    scene = snakecg.Scene(snakecg.Robot(joints=2), scenario="frictionless")
+    model = snakecg.load(scene)
+    q = np.array([0.0, 0.0, 0.0, -1.0, 1.0])
+    res = model.forward(q, np.array([0.05, 0.0]))
+    M = Reference(scene).mass_matrix(q)
+    d = np.sqrt(np.diag(M))
+    expected = np.min(np.diag(np.linalg.cholesky(M / np.outer(d, d)))) ** 2
+    assert res.contact and not res.singular
+    assert abs(res.conditioning - expected) < 1e-12 * expected
+    assert 1e-3 < res.conditioning < 1
