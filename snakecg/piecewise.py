@@ -253,7 +253,7 @@ def faces(cond, na):
 def _feasible(cond, u):
     """``(P, C)`` bool: candidate points ``u`` (P, C, na) satisfy every condition."""
     na = u.shape[2]
-    val = np.einsum("pmi,pci->pcm", cond[:, :, :na], u) + cond[:, None, :, na]
+    val = u @ np.swapaxes(cond[:, :, :na], 1, 2) + cond[:, None, :, na]
     return np.all(val >= -FEAS_TOL, axis=2)
 
 
@@ -268,7 +268,7 @@ def linear_candidates(fc, direction):
         nz = np.linalg.norm(gz, axis=1, keepdims=True)
         gz = np.where(nz > 1e-14, gz / np.maximum(nz, 1e-300), np.eye(k)[0])
         y = np.stack([gz, -gz], axis=1) * r[:, None, None]
-    return u0[:, None, :] + np.einsum("pik,pck->pci", Z, y)
+    return u0[:, None, :] + y @ np.swapaxes(Z, 1, 2)
 
 
 def quadratic_candidates(fc, A, g):
@@ -278,7 +278,7 @@ def quadratic_candidates(fc, A, g):
     r_safe = np.maximum(r, 1e-100)  # a smaller circle is a point for every candidate
     if k == 1:
         y = np.stack([r, -r], axis=1)[:, :, None]
-        return u0[:, None, :] + np.einsum("pik,pck->pci", Z, y)
+        return u0[:, None, :] + y @ np.swapaxes(Z, 1, 2)
     Ar = np.swapaxes(Z, 1, 2) @ A @ Z
     Ar = 0.5 * (Ar + np.swapaxes(Ar, 1, 2))
     gr = np.einsum("pik,pi->pk", Z, np.einsum("pij,pj->pi", A, u0) + g)
@@ -299,7 +299,7 @@ def quadratic_candidates(fc, A, g):
         # the hard case, covered below)
         den = ev - mus[:, j:j + 1]
         den = np.where(np.abs(den) < tiny, tiny, den)
-        cands.append(-np.einsum("pki,pi->pk", V, gv / den))
+        cands.append(-(V @ (gv / den)[:, :, None])[:, :, 0])
     # hard case (g_r orthogonal to an eigenvector v_i of A_r, mu = its eigenvalue):
     # y = y_p + t v_i with y_p the least-norm part orthogonal to v_i, |y| = r
     idx = np.arange(k)
@@ -308,18 +308,18 @@ def quadratic_candidates(fc, A, g):
         off = idx != i
         coef = np.where(off & (np.abs(den) > tiny), -gv / np.where(np.abs(den) > tiny, den, 1.0),
                         0.0)
-        yp = np.einsum("pki,pi->pk", V, coef)
+        yp = (V @ coef[:, :, None])[:, :, 0]
         t = np.sqrt(np.maximum(r ** 2 - np.sum(yp * yp, axis=1), 0.0))
         cands.append(yp + t[:, None] * V[:, :, i])
         cands.append(yp - t[:, None] * V[:, :, i])
     y = np.stack(cands, axis=1)  # (P, C, k)
     ny = np.linalg.norm(y, axis=2, keepdims=True)
     y = np.where(ny > 0, y / np.maximum(ny, 1e-300), eye[0]) * r[:, None, None]
-    return u0[:, None, :] + np.einsum("pik,pck->pci", Z, y)
+    return u0[:, None, :] + y @ np.swapaxes(Z, 1, 2)
 
 
 def _quad(A, g, c, u):
-    return np.einsum("pci,pij,pcj->pc", u, A, u) + 2 * np.einsum("pi,pci->pc", g, u) + c[:, None]
+    return (np.sum((u @ A) * u, axis=2) + 2 * (u @ g[:, :, None])[:, :, 0]) + c[:, None]
 
 
 # ------------------------------------------------------------------------------------------
