@@ -334,6 +334,7 @@ def solve_rest_batch(ref, maps, taus):
     of the reference (dense solves, vectorized), keeping the one that satisfies the KKT
     conditions (relative tolerance). Returns norms, ``sr`` (0 when lost), ``contact``."""
     G, Bm = maps["G"], maps["Bmap"]
+    taus = np.atleast_2d(taus)
     b = taus @ Bm.T  # (K, nc)
     K, nc = b.shape
     best_v = np.full(K, np.inf)

@@ -843,3 +843,102 @@ def test_cli_forward_bad_input(capsys):
     assert cli.main(["forward", "--joints", "3", "--q", "0,0,0,0,0,0", "--tau", "1,2"]) == 2
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and "tau has shape (2,)" in err
+
+
+# ------------------------------------------------------------------------------------------
+# 6. decisions independent of the torque's scale; the finite range
+# ------------------------------------------------------------------------------------------
+SCALES = np.logspace(-12, 6, 10)
+
+
+@pytest.mark.parametrize("scenario", ["frictionless", "ideal_wheels"])
+@pytest.mark.parametrize("joints", [2, 3])
+def test_homogeneous_scenarios_are_scale_free(models, rng, joints, scenario):
+    """Frictionless and ideal wheels at rest are homogeneous in tau: forward(q, s tau) has
+    the same contact state, the norms s^2 times those at s = 1 and the same sr (1e-9), for
+    s from 1e-12 to 1e6, on both code paths; the state is the independent reference's."""
+    from reference import rest_maps, solve_rest_batch
+
+    _, model, ref = models(joints, scenario)
+    q = random_q(rng, joints, 6)
+    tau = rng.normal(0, 0.3, (6, joints))
+    base = model.forward(q, tau)
+    for i in range(len(q)):
+        r = solve_rest_batch(ref, rest_maps(ref, q[i]), tau[i])
+        assert bool(base.contact[i]) == bool(r["contact"][0])
+    for s in SCALES:
+        res = model.forward(q, s * tau)
+        assert np.array_equal(res.contact, base.contact), s
+        assert np.array_equal(res.wheel_state, base.wheel_state), s
+        for m in ("norm_qdd", "norm_a_obj", "norm_lambda"):
+            np.testing.assert_allclose(getattr(res, m) / s**2, getattr(base, m), rtol=1e-9,
+                                       atol=1e-12 * np.abs(getattr(base, m)).max(), err_msg=m)
+        np.testing.assert_allclose(res.sr, base.sr, rtol=1e-9, atol=1e-15)
+        for i in (0, 3):
+            one = model.forward(q[i], s * tau[i])
+            assert bool(one.contact) == bool(base.contact[i])
+            assert one.sr == pytest.approx(base.sr[i], rel=1e-9, abs=1e-15)
+
+
+@pytest.mark.parametrize("joints", [2, 3])
+def test_bounded_wheels_agree_with_an_exact_solve_at_every_scale(models, rng, joints):
+    """Bounded wheels are not homogeneous (the bounds mu m g fix a force scale): at every
+    scale of the torque the forces, hence the contact and wheel states, are those of the
+    reference's brute-force solve with relative KKT tolerances."""
+    from reference import rest_maps, solve_rest_batch
+
+    _, model, ref = models(joints, "wheels")
+    q = random_q(rng, joints, 4)
+    tau = rng.normal(0, 1.0, (4, joints))
+    for i in range(len(q)):
+        maps = rest_maps(ref, q[i])
+        taus = SCALES[:, None] * tau[i]
+        r = solve_rest_batch(ref, maps, taus)
+        res = model.forward(q[i], taus)
+        assert np.array_equal(res.contact, r["contact"])
+        scale = np.abs(r["lam"]).max(axis=1, keepdims=True)
+        assert np.all(np.abs(res.lam - r["lam"]) <= 1e-7 * scale)
+        u = model.bounds[1:]
+        at_bound = np.isclose(np.abs(r["lam"][:, 1:]), u, rtol=1e-9, atol=0)
+        sliding = np.isin(res.wheel_state, ("slide+", "slide-"))
+        present = model.present[1:]
+        # a sliding wheel is at its bound (sticking at exactly the bound is allowed)
+        assert np.all(~sliding[:, present] | at_bound[:, present])
+
+
+def test_tiny_pulling_torque_loses_the_contact(capsys):
+    """A pulling torque of 5e-11 N m loses the contact exactly as one of 0.05 N m does (the
+    contact tolerance used to be 1e-9 N absolute, which kept it with lam_c = -2e-10 N)."""
+    model = snakecg.load(snakecg.Scene(snakecg.Robot(joints=2)))
+    q = np.array([0.0, 0.0, 0.0, 0.4, -0.7])
+    for tau in ([-5e-11, 0.0], [-0.05, 0.0]):
+        for res in (model.forward(q, tau), model.forward(q[None], np.array([tau]))):
+            assert not np.any(res.contact) and np.all(res.sr == 0.0)
+            assert np.all(res.lam == 0.0)
+    assert cli.main(["forward", "--joints", "2", "--q", "0,0,0,0.4,-0.7", "--tau=-5e-11,0",
+                     "--json"]) == 0
+    out = json.loads(capsys.readouterr().out)
+    assert out["contact"] is False and out["sr"] == 0.0
+
+
+def test_finite_range_of_the_inputs(capsys):
+    """Finite inputs give finite outputs or an InputError: tau = 1e150 is answered (norms
+    near 1e300), tau = 1e200 is refused, naming tau and the range, also by the CLI (one
+    line, exit 2)."""
+    model = snakecg.load(snakecg.Scene(snakecg.Robot(joints=2)))
+    q = np.array([0.0, 0.0, 0.0, 0.4, -0.7])
+    big = model.forward(q, [1e150, 0.0])
+    small = model.forward(q, [1.0, 0.0])
+    assert not big.singular and np.isfinite(big.norm_qdd)
+    assert big.norm_qdd == pytest.approx(1e300 * small.norm_qdd, rel=1e-9)
+    assert big.sr == pytest.approx(small.sr, rel=1e-9)
+    with pytest.raises(snakecg.InputError, match=r"tau .*1e\+150"):
+        model.forward(q, [1e200, 0.0])
+    with pytest.raises(snakecg.InputError, match="f_obj"):
+        model.forward(q, [1.0, 0.0], f_obj=[1e160, 0.0, 0.0])
+    with pytest.raises(snakecg.InputError, match="v must"):
+        model.forward(q, [1.0, 0.0], v=[0.0, 0.0, 0.0, 1e80, 0.0])
+    assert cli.main(["forward", "--joints", "2", "--q", "0,0,0,0.4,-0.7", "--tau=1e200,0",
+                     "--json"]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "tau" in err
