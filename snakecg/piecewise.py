@@ -288,30 +288,38 @@ def quadratic_candidates(fc, A, g):
     E[:, :k, k:] = -np.eye(k)
     E[:, k:, :k] = -gr[:, :, None] * gr[:, None, :] / (r_safe ** 2)[:, None, None]
     E[:, k:, k:] = Ar
-    mus = np.linalg.eigvals(E).real  # (P, 2k)
+    mus = np.sort(np.linalg.eigvals(E).real, axis=1)  # (P, 2k); a double root adjacent
     ev, V = np.linalg.eigh(Ar)
     gv = np.einsum("pki,pk->pi", V, gr)
     cands = []
     eye = np.eye(k)
-    tiny = 1e-13 * (np.abs(ev).max(axis=1, keepdims=True) + 1e-300)
-    for j in range(2 * k):
-        # y = -(A_r - mu I)^-1 g_r in A_r's eigenbasis (a tiny shift at an eigenvalue of A_r:
-        # the hard case, covered below)
-        den = ev - mus[:, j:j + 1]
-        den = np.where(np.abs(den) < tiny, tiny, den)
-        cands.append(-(V @ (gv / den)[:, :, None])[:, :, 0])
+    escale = np.abs(ev).max(axis=1, keepdims=True) + np.abs(gr).max(axis=1, keepdims=True) / \
+        r_safe[:, None] + 1e-300
+    tiny = 1e-13 * escale
+    near_tol = 1e-7 * escale
+    idx = np.arange(k)
     # hard case (g_r orthogonal to an eigenvector v_i of A_r, mu = its eigenvalue):
     # y = y_p + t v_i with y_p the least-norm part orthogonal to v_i, |y| = r
-    idx = np.arange(k)
+    hard = []
     for i in range(k):
         den = ev - ev[:, i:i + 1]
-        off = idx != i
-        coef = np.where(off & (np.abs(den) > tiny), -gv / np.where(np.abs(den) > tiny, den, 1.0),
-                        0.0)
+        ok = (idx != i) & (np.abs(den) > tiny)
+        coef = np.where(ok, -gv / np.where(ok, den, 1.0), 0.0)
         yp = (V @ coef[:, :, None])[:, :, 0]
         t = np.sqrt(np.maximum(r ** 2 - np.sum(yp * yp, axis=1), 0.0))
-        cands.append(yp + t[:, None] * V[:, :, i])
-        cands.append(yp - t[:, None] * V[:, :, i])
+        hard.append((yp, t[:, None] * V[:, :, i]))
+    for j in range(2 * k):
+        # y = -(A_r - mu I)^-1 g_r in A_r's eigenbasis; where mu is (numerically) an
+        # eigenvalue of A_r, the hard-case point of that eigenvector instead (one sign per
+        # root of the pair the linearization then has)
+        den = ev - mus[:, j:j + 1]
+        y = -(V @ (gv / np.where(np.abs(den) < tiny, tiny, den))[:, :, None])[:, :, 0]
+        near = np.abs(den) < near_tol
+        for i in range(k):
+            yp, tv = hard[i]
+            yh = yp + tv if j % 2 == 0 else yp - tv
+            y = np.where(near[:, i:i + 1], yh, y)
+        cands.append(y)
     y = np.stack(cands, axis=1)  # (P, C, k)
     ny = np.linalg.norm(y, axis=2, keepdims=True)
     y = np.where(ny > 0, y / np.maximum(ny, 1e-300), eye[0]) * r[:, None, None]
@@ -342,7 +350,7 @@ def explore(model, prim, qa, states):
     # seeds: the states of a few directions, from the package's forward solver
     from .analysis import sphere_directions
 
-    dirs = sphere_directions(na, {1: 2, 2: 8, 3: 14}.get(na, 24))
+    dirs = sphere_directions(na, {1: 2, 2: 4, 3: 6}.get(na, 12))
     taus = np.einsum("bij,kj->bki", prim["T"], dirs).reshape(-1, na)
     res = model.forward(np.repeat(qa, len(dirs), axis=0), taus)
     st = _forward_states(model, res)

@@ -217,7 +217,7 @@ def case_study_2(opts: ReproduceOptions, report: ReproduceReport, load):
         step = 2048
         for s in range(0, Q.shape[0], step):
             chunks.append(model.extremes(Q[s:s + step], samples=opts.wheel_samples,
-                                         refined=REFINED))
+                                         refined=REFINED, exact=True))  # wheels: exact
         ex = _concat_extremes(chunks)
         radius, angle = com_polar(model, Q)
         results[scenario] = (model, ex, radius, angle)
