@@ -461,6 +461,12 @@ def piece_extremes(cond, fcs, A, g, c, na, p, n, kept):
             sel = np.flatnonzero(want)
             if sel.size == 0:
                 continue
+            if Z.shape[2] >= 2:  # a smaller sphere: bound the quadratic on it first
+                hi, lo = _face_bounds(A[sel], g[sel], c[sel], u0[sel], Z[sel], r[sel])
+                keep = (hi > thr_max[sel] + slack[sel]) | (lo < thr_min[sel] - slack[sel])
+                sel = sel[keep]
+                if sel.size == 0:
+                    continue
         sub = (S, u0[sel], np.ascontiguousarray(Z[sel]), r[sel], valid[sel])
         u = quadratic_candidates(sub, A[sel], g[sel])
         v = _quad(A[sel], g[sel], c[sel], u)
@@ -481,6 +487,26 @@ def piece_extremes(cond, fcs, A, g, c, na, p, n, kept):
         vmin[sel[better]] = best[better]
         umin[sel[better]] = u[rows[better], j[better]]
     return vmax, umax, vmin, umin
+
+
+def _face_bounds(A, g, c, u0, Z, r):
+    """Upper and lower bounds of ``u^T A u + 2 g^T u + c`` on ``u = u0 + Z y, |y| = r``:
+    ``f(u0) +- 2 |g_r| r + lambda_max/min(A_r) r^2`` (exact eigenvalues for a circle,
+    the Frobenius norm otherwise)."""
+    Ar = np.swapaxes(Z, 1, 2) @ A @ Z
+    gr = (np.swapaxes(Z, 1, 2) @ ((A @ u0[:, :, None])[:, :, 0] + g)[:, :, None])[:, :, 0]
+    f0 = _quad(A, g, c, u0[:, None])[:, 0]
+    lin = 2 * np.linalg.norm(gr, axis=1) * r
+    if Ar.shape[1] == 2:
+        a, b, d = Ar[:, 0, 0], 0.5 * (Ar[:, 0, 1] + Ar[:, 1, 0]), Ar[:, 1, 1]
+        rad = np.hypot(0.5 * (a - d), b)
+        lmax, lmin = 0.5 * (a + d) + rad, 0.5 * (a + d) - rad
+    else:
+        fro = np.linalg.norm(Ar, axis=(1, 2))
+        lmax, lmin = fro, -fro
+    r2 = r * r
+    pad = 1e-12 * (np.abs(f0) + lin + np.abs(lmax) * r2 + np.abs(lmin) * r2)
+    return f0 + lin + lmax * r2 + pad, f0 - lin + lmin * r2 - pad  # |y| = r exactly
 
 
 def _per_config(n, p, vals, us, mask, largest):
