@@ -16,12 +16,15 @@ Method, per scenario:
   the half of the ellipsoid as on the whole, so the extremes are the extreme generalized
   eigenvalues of ``(X, N)`` in each half (``(Omega, Omega + Xi)`` for ``sr``), with the
   eigenvector's sign chosen to keep (or lose) the contact. Exact.
-* ``wheels``: the map is piecewise affine (a wheel at its friction bound contributes a fixed
-  force), so the metrics are not homogeneous. Candidates: the ideal-wheels eigenvectors
-  (exact whenever no wheel reaches its bound there) and a dense set of boundary directions,
-  all evaluated with the exact forward solver, then the best candidates refined by a local
-  search on the boundary. The tolerance is measured in the tests against much denser sampling
-  and stated in docs/metrics.md.
+* ``wheels``, up to 4 joints: exact, piece by piece (:mod:`snakecg.piecewise`): every wheel
+  state meeting the boundary, the KKT points of each piece, Dinkelbach's iteration for ``sr``,
+  certified per configuration (``Extremes.certified``).
+* ``wheels``, 5 joints and more (or ``exact=False``): the map is piecewise affine (a wheel at
+  its friction bound contributes a fixed force), so the metrics are not homogeneous.
+  Candidates: the ideal-wheels eigenvectors (exact whenever no wheel reaches its bound there)
+  and a dense set of boundary directions, all evaluated with the exact forward solver, then
+  the best candidates refined by a local search on the boundary: lower bounds of the maxima,
+  not certified.
 """
 
 from __future__ import annotations

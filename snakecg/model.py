@@ -150,11 +150,12 @@ class ForwardResult:
     * norms: ``norm_lambda = lam^T G_c lam``, ``norm_a_obj = a_obj^T I_obj a_obj`` (eq. 27),
       ``norm_qdd = qdd^T M_s qdd`` (eq. 26), slippage ratio ``sr`` (eq. 30, 0 when the
       contact is lost);
-    * ``singular``: the held rows were dependent (least-norm forces, see ``snakecg.solver``);
-      ``conditioning``: the smallest pivot of the held rows' Delassus matrix relative to its
-      diagonal (1: independent rows; the forces carry a relative error of about
-      ``1e-16 / conditioning``; below ``1e-10`` the sample is treated as ``singular`` and
-      reported with ``conditioning = 0``).
+    * ``conditioning``: the estimated accuracy, results carry a relative error of about
+      ``1e-16 / conditioning``: the smallest of the held rows' pivot ratio (its square root
+      where weakly independent rows are solved from the rows themselves, ``snakecg.rows``) and
+      the mass matrix's; ``singular``: not an exact answer (conditioning 0): rows dependent even
+      when factored directly (least-norm forces), a numerically singular mass matrix, or a
+      physically impossible result (docs/scenarios.md).
     """
 
     qdd: np.ndarray
