@@ -21,7 +21,7 @@ from ._inputs import as_batch, broadcast_batches, expand
 from .errors import InputError
 from .native import load_backend
 from .robot import Robot, Scene
-from .rows import WEAK, finish as finish_rows, mass_pivot_ratio
+from .rows import WEAK, finish as finish_rows
 from .solver import (ABSENT, HELD, LOST, PIVOT_TOL, REGULARIZATION, SLIDE_NEG, SLIDE_POS,
                      _violations_one, check_input_range, default_max_iter, solve_active_set)
 
@@ -192,6 +192,16 @@ _STATE_NAMES = np.array(["none", "stick", "lost", "slide+", "slide-"])
 _WHEEL_STATE_NAMES = np.where(_STATE_NAMES == "lost", "none", _STATE_NAMES)
 
 
+def _mass_ratio_one(M) -> float:
+    """:func:`snakecg.rows.mass_pivot_ratio` of one mass matrix (the one-sample path)."""
+    M = np.asarray(M).reshape(int(round(math.sqrt(np.size(M)))), -1)
+    d = np.sqrt(np.diag(M))
+    try:
+        return float(np.min(np.diag(np.linalg.cholesky(M / np.outer(d, d)))) ** 2)
+    except (np.linalg.LinAlgError, FloatingPointError):
+        return 0.0
+
+
 class SceneModel(RobotModel):
     """The coupled snake + object of a :class:`~snakecg.Scene`: forward analysis, maps,
     extremes over the input region, torque optimisation and simulation."""
@@ -314,9 +324,10 @@ class SceneModel(RobotModel):
                 "K": K, "contact_link": self._contact_link, "side": self._side,
                 "object_mass": self._object_mass, "object_inertia": self._object_inertia,
                 "wheel_offset": self._wheel_offset, "regularization": [0.0]})
-            ks = self._local.kernels = (place, cd, *(cd.out_names.index(k) for k in
-                                                     ("lam", "w", "pivot_ratio", "delassus")))
-        place, cd, i_lam, i_w, i_pivot, i_G = ks
+            mm = BoundFunction(be, "mass_matrix", {"K": K})
+            ks = self._local.kernels = (place, cd, mm, *(cd.out_names.index(k) for k in
+                                                         ("lam", "w", "pivot_ratio", "delassus")))
+        place, cd, mm, i_lam, i_w, i_pivot, i_G = ks
         if "q_obj" in extra:
             q_obj, rho = extra["q_obj"][0], extra["rho"][0]
         else:
@@ -343,8 +354,7 @@ class SceneModel(RobotModel):
             return None
         o = dict(zip(cd.out_names, outs))
         contact = state[0] == HELD
-        (M,) = self.backend("mass_matrix", 1, [q, self.parameters])
-        mass = float(mass_pivot_ratio(M)[0])
+        mass = _mass_ratio_one(mm.one(q=q)[0])
         nq, na_, nl_, sr_ = (float(o[k][0]) for k in ("norm_qdd", "norm_a_obj", "norm_lambda",
                                                         "sr"))
         big = max(abs(nq), abs(na_), abs(nl_))

@@ -197,7 +197,6 @@ def faces(cond, na):
     P, m, _ = cond.shape
     out = []
     for S in _subsets(m, na):
-        k = na - len(S)
         if not S:
             out.append((S, np.zeros((P, na)), np.broadcast_to(np.eye(na), (P, na, na)),
                         np.ones(P), np.ones(P, bool)))
@@ -214,7 +213,8 @@ def faces(cond, na):
             sgn = np.where(ah[:, 0] >= 0, 1.0, -1.0)
             v = ah.copy()
             v[:, 0] += sgn
-            H = np.eye(na) - 2 * v[:, :, None] * v[:, None, :] / np.sum(v * v, axis=1)[:, None, None]
+            vv = np.sum(v * v, axis=1)[:, None, None]
+            H = np.eye(na) - 2 * v[:, :, None] * v[:, None, :] / vv
             r2 = 1.0 - np.sum(u0 * u0, axis=1)
             valid &= r2 >= 0
             out.append((S, u0, np.ascontiguousarray(H[:, :, 1:]),
@@ -246,7 +246,6 @@ def faces(cond, na):
         r2 = 1.0 - np.sum(u0 * u0, axis=1)
         valid &= r2 >= 0
         out.append((S, u0, Q[:, :, len(S):], np.sqrt(np.maximum(r2, 0.0)), valid))
-        del k
     return out
 
 
@@ -522,8 +521,6 @@ def _per_config(n, p, vals, us, mask, largest):
 
 
 def _chunk(model, qa):
-    from .analysis import METRICS
-
     n, na = qa.shape[0], model.n_joints
     prim = primitives(model, qa)
     states = all_states(model)
