@@ -297,7 +297,7 @@ def test_max_sr_sliding_with_the_ellipsoid_binding(models, monkeypatch, cuts):
     sliding and the ellipsoid cuts it, solved by the tangent-plane relaxation (default) and,
     with the cuts switched off, by the convex NLP (IPOPT): both against a dense polar grid of
     the 2-D ellipsoid and local perturbations."""
-    import snakecg.optimize as opt
+    import snakecg.optimize.max_sr as opt
 
     if cuts is not None:
         monkeypatch.setattr(opt, "CUTS", cuts)

@@ -1,0 +1,232 @@
+"""Optimality certificates, checked on the original problem after the solve.
+
+The solvers work on a scaled, regularised, homogenised copy of each problem (``z = (tau, t)``,
+rows normalised, a Tikhonov term on semidefinite Hessians). The certificate forgets all of
+that: it rebuilds the problem in the torque itself from the configuration's maps and the query
+(every limit as the optimiser poses it: the box, the ellipsoid of eq. 31, the contact kept,
+every wheel within its friction bound backed off by ``FRICTION_MARGIN``), then
+
+1. measures the largest constraint violation at ``tau`` (primal feasibility);
+2. takes the constraints active at ``tau`` (relative slack below :data:`ACTIVE`) and
+   recomputes their multipliers from the stationarity condition
+   ``grad f(tau) = sum_i lam_i grad g_i(tau)`` by non-negative least squares (so the
+   multipliers are dual feasible by construction), and reports the relative residual;
+3. complementarity ``sum_i lam_i |slack_i|`` relative to the objective's size;
+4. for the convex kinds (the least-slip QP, the strongest-push LP, either with the
+   ellipsoid), the duality gap ``f(tau) - d(lam)`` with ``d`` the Lagrange dual function,
+   evaluated exactly by minimising the Lagrangian (weak duality: a small gap proves global
+   optimality, not only a KKT point).
+
+``max_sr`` with every row held is not convex, but homogeneous of degree 0: its certificate is
+the generalized eigenproblem itself (the residual of ``Omega v = sr (Omega + Xi) v`` at ``tau``
+and the gap between ``sr(tau)`` and the top eigenvalue, recomputed here with SciPy), plus
+primal feasibility. With sliding wheels the winning wheel state's problem (the Charnes-Cooper
+form in ``z``) is certified by its KKT conditions (no gap: the homogeneous ellipsoid is not a
+convex quadratic form); the choice between states rests on the exact enumeration.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from .result import ELLIPSOID, FRICTION_MARGIN, Certificate
+
+#: A constraint whose slack is below this (relative to the row's size) is active.
+ACTIVE = 1e-7
+#: Relative tolerances of the certificate.
+TOLERANCE = {"stationarity": 1e-7, "primal_feasibility": 1e-9, "complementarity": 1e-8,
+             "duality_gap": 1e-8}
+
+
+def _rows_of(G, lo, hi):
+    return np.atleast_2d(np.asarray(G, float)), np.asarray(lo, float), np.asarray(hi, float)
+
+
+def kkt(x, H, c, G, lo, hi, quad=None, *, convex: bool, kind: str) -> Certificate:
+    """Certificate of ``x`` for ``min 1/2 x^T H x + c^T x`` (``H`` None: linear) subject to
+    ``lo <= G x <= hi`` and, when ``quad = (Q, r2)``, ``x^T Q x <= r2``."""
+    x = np.asarray(x, float)
+    n = x.size
+    Hx = np.zeros(n) if H is None else H @ x
+    f = 0.5 * x @ Hx + c @ x
+    grad = Hx + c
+    G, lo, hi = _rows_of(G, lo, hi)
+    Gx = G @ x
+    bnd = np.where(np.isfinite(lo), np.abs(lo), 0.0)
+    bnd = np.maximum(bnd, np.where(np.isfinite(hi), np.abs(hi), 0.0))
+    rs = np.abs(G) @ np.abs(x) + bnd
+    rs = np.where(rs > 0, rs, 1.0)
+    low = np.isfinite(lo)
+    upp = np.isfinite(hi)
+    viol = np.zeros(len(lo))
+    viol[low] = np.maximum(lo[low] - Gx[low], 0.0)
+    viol[upp] = np.maximum(viol[upp], Gx[upp] - hi[upp])
+    primal = float(np.max(viol / rs, initial=0.0))
+    cols, slacks, dvals = [], [], []
+    for r in range(len(lo)):
+        if low[r] and (Gx[r] - lo[r]) <= ACTIVE * rs[r]:
+            cols.append(G[r])
+            slacks.append(Gx[r] - lo[r])
+            dvals.append(lo[r])
+        if upp[r] and (hi[r] - Gx[r]) <= ACTIVE * rs[r]:
+            cols.append(-G[r])
+            slacks.append(hi[r] - Gx[r])
+            dvals.append(-hi[r])
+    q_col = None
+    if quad is not None:
+        Q, r2 = quad
+        qx = Q @ x
+        qs = abs(x) @ np.abs(Q) @ abs(x) + abs(r2)
+        qs = qs if qs > 0 else 1.0
+        qv = x @ qx - r2
+        primal = max(primal, max(qv, 0.0) / qs)
+        if -qv <= ACTIVE * qs:
+            q_col = len(cols)
+            cols.append(-2.0 * qx)
+            slacks.append(-qv)
+            dvals.append(np.nan)
+    fscale = max(abs(f), abs(grad @ x), 1e-300)
+    if cols:
+        from scipy.optimize import nnls
+
+        C = np.array(cols).T
+        norms = np.linalg.norm(C, axis=0)
+        norms = np.where(norms > 0, norms, 1.0)
+        lam_s, _ = nnls(C / norms, grad, maxiter=50 * C.shape[1])
+        lam = lam_s / norms
+        resid = np.linalg.norm(C @ lam - grad)
+        size = max(np.linalg.norm(grad), float(np.sum(lam * np.linalg.norm(C, axis=0))))
+    else:
+        lam = np.zeros(0)
+        resid = np.linalg.norm(grad)
+        size = 0.0
+    # the size of the gradient's terms (its value can be much smaller, by cancellation)
+    ref = (0.0 if H is None else np.linalg.norm(H, 2) * np.linalg.norm(x)) + np.linalg.norm(c)
+    stationarity = float(resid / max(size, ref, 1e-300)) if resid > 0 else 0.0
+    complementarity = float(np.sum(lam * np.abs(np.array(slacks))) / fscale) if cols else 0.0
+    gap = None
+    if convex:
+        # Lagrangian L(y) = f(y) - sum_lin lam_i (C_i . y - d_i) + mu (y^T Q y - r2)
+        lin = [i for i in range(len(cols)) if i != q_col]
+        mu = lam[q_col] if q_col is not None else 0.0
+        K = (np.zeros((n, n)) if H is None else H.copy())
+        if q_col is not None:
+            K = K + 2.0 * mu * quad[0]
+        rhs = -c + (np.array(cols)[lin].T @ lam[lin] if lin else 0.0)
+        y = np.linalg.lstsq(K, rhs, rcond=1e-13)[0] if np.any(K) else np.zeros(n)
+        Ly = 0.5 * y @ (np.zeros(n) if H is None else H @ y) + c @ y
+        if lin:
+            Ly -= float(lam[lin] @ (np.array(cols)[lin] @ y - np.array(dvals)[lin]))
+        if q_col is not None:
+            Ly += mu * (y @ quad[0] @ y - quad[1])
+        gap = float((f - Ly) / fscale)
+    values = {"stationarity": stationarity, "primal_feasibility": primal,
+              "complementarity": complementarity, "duality_gap": gap}
+    return _verdict(kind, values)
+
+
+def _verdict(kind, values) -> Certificate:
+    bad = [f"{k} {v:.3g} > {TOLERANCE[k]:.0e}" for k, v in values.items()
+           if v is not None and not (abs(v) <= TOLERANCE[k])]
+    return Certificate(kind, not bad, values["stationarity"], values["primal_feasibility"],
+                       values["complementarity"], values["duality_gap"],
+                       TOLERANCE["stationarity"], False, "; ".join(bad))
+
+
+# ------------------------------------------------------------------------------------------
+# the original problems, in tau
+def _limits(model, query, cfg):
+    """Rows ``lo <= G tau <= hi`` of the wheels (sticking, backed off) and the box, and the
+    ellipsoid ``(N, r^2)`` or None."""
+    n = cfg.N.shape[0]
+    G, lo, hi = [], [], []
+    for i in range(1, model.n_constraints):
+        u = model.bounds[i]
+        if model.present[i] and np.isfinite(u):
+            G.append(cfg.L[i])
+            lo.append(-u * (1 - FRICTION_MARGIN))
+            hi.append(u * (1 - FRICTION_MARGIN))
+    if query.tau_max is not None:
+        G.extend(np.eye(n))
+        lo.extend(-query.tau_max)
+        hi.extend(query.tau_max)
+    quad = None if query.radius is None else (cfg.N, query.radius**2)
+    return G, lo, hi, quad
+
+
+def _push(model, query, cfg, lam_lo, equal, lp):
+    n = cfg.N.shape[0]
+    G, lo, hi, quad = _limits(model, query, cfg)
+    ell = cfg.L[0]
+    G.append(ell)  # the contact is kept
+    lo.append(0.0)
+    hi.append(np.inf)
+    if lam_lo is not None:  # the task, as a bound on the contact force
+        G.append(ell)
+        lo.append(lam_lo)
+        hi.append(lam_lo if equal else np.inf)
+    if lp:
+        H, c = None, -ell
+    else:
+        H, c = 2.0 * cfg.Xi, np.zeros(n)
+    kind = ("kkt (LP)" if lp else "kkt (convex QP)") if quad is None else "kkt (convex QCQP)"
+    return dict(H=H, c=c, G=np.array(G), lo=np.array(lo), hi=np.array(hi), quad=quad,
+                convex=True, kind=kind)
+
+
+def _eigen(model, query, cfg, tau) -> Certificate:
+    """The generalized eigenproblem of eqs. (28)-(30) at ``tau``, and primal feasibility."""
+    from scipy.linalg import eigh
+
+    Om, D = cfg.Om, cfg.Om + cfg.Xi
+    w, V = eigh(0.5 * (D + D.T))
+    keep = w > 1e-12 * max(w[-1], 1e-300)
+    Vr = V[:, keep] / np.sqrt(w[keep])
+    top = float(eigh(Vr.T @ Om @ Vr, eigvals_only=True)[-1])
+    den = tau @ D @ tau
+    sr = float(tau @ Om @ tau / den) if den > 0 else 0.0
+    scale = (np.linalg.norm(Om) + np.linalg.norm(D)) * np.linalg.norm(tau)
+    resid = np.linalg.norm(Om @ tau - sr * (D @ tau))
+    G, lo, hi, quad = _limits(model, query, cfg)
+    G.append(cfg.L[0])
+    lo.append(0.0)
+    hi.append(np.inf)
+    prim = kkt(tau, None, np.zeros_like(tau), np.array(G), np.array(lo), np.array(hi), quad,
+               convex=False, kind="").primal_feasibility
+    values = {"stationarity": float(resid / scale) if scale > 0 else 0.0,
+              "primal_feasibility": prim, "complementarity": 0.0,
+              "duality_gap": (top - sr) / max(abs(top), 1e-300)}
+    return _verdict("generalized eigenproblem", values)
+
+
+def certify(model, query, cfg, answer) -> Certificate:
+    """The certificate of an answer that claims optimality (``answer.claim``)."""
+    claim = answer.claim
+    if claim is None:
+        return Certificate("none", False, reason="the answer carries no optimality claim")
+    if claim[0] == "eigen":
+        return _eigen(model, query, cfg, answer.tau)
+    if claim[0] == "push":
+        _, lam_lo, equal, lp = claim
+        return kkt(answer.tau, **_push(model, query, cfg, lam_lo, equal, lp))
+    if claim[0] == "state":
+        _, prob, z = claim
+        n1 = z.size
+        G = np.vstack([prob.A, np.eye(n1)])
+        lo = np.concatenate([prob.lba, prob.lbx])
+        hi = np.concatenate([prob.uba, prob.ubx])
+        quad = None
+        if prob.N is not None:
+            n = n1 - 1
+            Q = np.zeros((n1, n1))
+            Q[:n, :n] = prob.N
+            Q[n, n] = -prob.r2
+            quad = (Q, 0.0)
+        # rows named after the ellipsoid (its bounding box) only relax it: left out
+        keep = np.array([nm != ELLIPSOID or prob.N is None for nm in prob.names] + [True] * n1)
+        return kkt(z, prob.H, prob.g, G[keep], lo[keep], hi[keep], quad, convex=False,
+                   kind="kkt of the winning wheel state")
+    raise ValueError(f"unknown claim {claim[0]!r}")
+
+
+__all__ = ["certify", "kkt", "ACTIVE", "TOLERANCE"]
