@@ -543,7 +543,9 @@ def test_cli_json_is_the_documented_schema(capsys):
     assert data["objective"] == "least_slip_push" and len(data["tau"]) == 3
     assert data["limits"] == {"tau_max": [0.3, 0.3, 0.3], "radius": None}
     fields = _documented_fields()
-    assert set(data) | set(data["analysis"]) == fields, set(data) ^ fields
+    got = set(data) | set(data["analysis"]) | set(data["certificate"])
+    assert got == fields, got ^ fields
+    assert data["certificate"]["ok"] is True
     # the same numbers as the Python API
     scene = snakecg.Scene(snakecg.Robot(joints=3), scenario="wheels")
     q_rad = np.array([0, 0, 0, np.deg2rad(30), np.deg2rad(-45), np.deg2rad(60)])
