@@ -17,12 +17,13 @@ every wheel within its friction bound backed off by ``FRICTION_MARGIN``), then
    evaluated exactly by minimising the Lagrangian (weak duality: a small gap proves global
    optimality, not only a KKT point).
 
-``max_sr`` with every row held is not convex, but homogeneous of degree 0: its certificate is
-the generalized eigenproblem itself (the residual of ``Omega v = sr (Omega + Xi) v`` at ``tau``
-and the gap between ``sr(tau)`` and the top eigenvalue, recomputed here with SciPy), plus
-primal feasibility. With sliding wheels the winning wheel state's problem (the Charnes-Cooper
-form in ``z``) is certified by its KKT conditions (no gap: the homogeneous ellipsoid is not a
-convex quadratic form); the choice between states rests on the exact enumeration.
+``max_sr`` with every row held is not convex, but homogeneous of degree 0: ``tau`` is a
+global maximiser iff ``Omega - sr(tau) (Omega + Xi)`` is negative semidefinite; the certificate
+is its largest eigenvalue (relative, the "gap"), the residual of ``Omega v = sr (Omega + Xi) v``
+at ``tau``, and primal feasibility. With sliding wheels the winning wheel state's problem
+(the Charnes-Cooper form in ``z``) is certified by its KKT conditions (no gap: the homogeneous
+ellipsoid is not a convex quadratic form); the choice between states rests on the exact
+enumeration.
 """
 
 from __future__ import annotations
@@ -58,41 +59,41 @@ def kkt(x, H, c, G, lo, hi, quad=None, *, convex: bool, kind: str) -> Certificat
     rs = np.where(rs > 0, rs, 1.0)
     low = np.isfinite(lo)
     upp = np.isfinite(hi)
-    viol = np.zeros(len(lo))
-    viol[low] = np.maximum(lo[low] - Gx[low], 0.0)
-    viol[upp] = np.maximum(viol[upp], Gx[upp] - hi[upp])
-    primal = float(np.max(viol / rs, initial=0.0))
-    cols, slacks, dvals = [], [], []
-    for r in range(len(lo)):
-        if low[r] and (Gx[r] - lo[r]) <= ACTIVE * rs[r]:
-            cols.append(G[r])
-            slacks.append(Gx[r] - lo[r])
-            dvals.append(lo[r])
-        if upp[r] and (hi[r] - Gx[r]) <= ACTIVE * rs[r]:
-            cols.append(-G[r])
-            slacks.append(hi[r] - Gx[r])
-            dvals.append(-hi[r])
+    s_lo = np.where(low, Gx - lo, np.inf)
+    s_hi = np.where(upp, hi - Gx, np.inf)
+    primal = float(np.max(np.maximum(np.maximum(-s_lo, -s_hi), 0.0) / rs, initial=0.0))
+    a_lo = s_lo <= ACTIVE * rs
+    a_hi = s_hi <= ACTIVE * rs
+    cols = [G[a_lo], -G[a_hi]]
+    slacks = [s_lo[a_lo], s_hi[a_hi]]
+    dvals = [lo[a_lo], -hi[a_hi]]
     q_col = None
     if quad is not None:
         Q, r2 = quad
         qx = Q @ x
-        qs = abs(x) @ np.abs(Q) @ abs(x) + abs(r2)
+        qs = np.abs(x) @ np.abs(Q) @ np.abs(x) + abs(r2)
         qs = qs if qs > 0 else 1.0
         qv = x @ qx - r2
         primal = max(primal, max(qv, 0.0) / qs)
         if -qv <= ACTIVE * qs:
-            q_col = len(cols)
-            cols.append(-2.0 * qx)
-            slacks.append(-qv)
-            dvals.append(np.nan)
+            q_col = int(a_lo.sum() + a_hi.sum())
+            cols.append(-2.0 * qx[None, :])
+            slacks.append(np.array([-qv]))
+            dvals.append(np.array([np.nan]))
+    C = np.concatenate(cols, axis=0).T  # (n, k): one column per active constraint
+    slacks = np.concatenate(slacks)
+    dvals = np.concatenate(dvals)
     fscale = max(abs(f), abs(grad @ x), 1e-300)
-    if cols:
-        from scipy.optimize import nnls
-
-        C = np.array(cols).T
+    k = C.shape[1]
+    if k:
         norms = np.linalg.norm(C, axis=0)
         norms = np.where(norms > 0, norms, 1.0)
-        lam_s, _ = nnls(C / norms, grad, maxiter=50 * C.shape[1])
+        Cn = C / norms
+        lam_s = np.linalg.lstsq(Cn, grad, rcond=None)[0]
+        if np.any(lam_s < 0):  # the sign constraints bind: non-negative least squares
+            from scipy.optimize import nnls
+
+            lam_s = nnls(Cn, grad, maxiter=50 * k)[0]
         lam = lam_s / norms
         resid = np.linalg.norm(C @ lam - grad)
         size = max(np.linalg.norm(grad), float(np.sum(lam * np.linalg.norm(C, axis=0))))
@@ -100,23 +101,23 @@ def kkt(x, H, c, G, lo, hi, quad=None, *, convex: bool, kind: str) -> Certificat
         lam = np.zeros(0)
         resid = np.linalg.norm(grad)
         size = 0.0
-    # the size of the gradient's terms (its value can be much smaller, by cancellation)
     ref = (0.0 if H is None else np.linalg.norm(H, 2) * np.linalg.norm(x)) + np.linalg.norm(c)
     stationarity = float(resid / max(size, ref, 1e-300)) if resid > 0 else 0.0
-    complementarity = float(np.sum(lam * np.abs(np.array(slacks))) / fscale) if cols else 0.0
+    complementarity = float(lam @ np.abs(slacks) / fscale) if k else 0.0
     gap = None
     if convex:
         # Lagrangian L(y) = f(y) - sum_lin lam_i (C_i . y - d_i) + mu (y^T Q y - r2)
-        lin = [i for i in range(len(cols)) if i != q_col]
-        mu = lam[q_col] if q_col is not None else 0.0
-        K = (np.zeros((n, n)) if H is None else H.copy())
+        lin = np.ones(k, bool)
+        mu = 0.0
+        K = np.zeros((n, n)) if H is None else H.copy()
         if q_col is not None:
+            lin[q_col] = False
+            mu = lam[q_col]
             K = K + 2.0 * mu * quad[0]
-        rhs = -c + (np.array(cols)[lin].T @ lam[lin] if lin else 0.0)
+        rhs = C[:, lin] @ lam[lin] - c
         y = np.linalg.lstsq(K, rhs, rcond=1e-13)[0] if np.any(K) else np.zeros(n)
-        Ly = 0.5 * y @ (np.zeros(n) if H is None else H @ y) + c @ y
-        if lin:
-            Ly -= float(lam[lin] @ (np.array(cols)[lin] @ y - np.array(dvals)[lin]))
+        Ly = (0.0 if H is None else 0.5 * y @ H @ y) + c @ y
+        Ly -= float(lam[lin] @ (C[:, lin].T @ y - dvals[lin]))
         if q_col is not None:
             Ly += mu * (y @ quad[0] @ y - quad[1])
         gap = float((f - Ly) / fscale)
@@ -175,18 +176,18 @@ def _push(model, query, cfg, lam_lo, equal, lp):
 
 
 def _eigen(model, query, cfg, tau) -> Certificate:
-    """The generalized eigenproblem of eqs. (28)-(30) at ``tau``, and primal feasibility."""
-    from scipy.linalg import eigh
-
+    """``tau`` maximises the Rayleigh quotient of eqs. (28)-(30) iff ``Omega - sr(tau) D`` is
+    negative semidefinite (``D = Omega + Xi``; on the null space of ``D`` both vanish): its
+    largest eigenvalue, relative to ``||D||``, is the gap; the residual of ``Omega tau =
+    sr (D tau)`` the stationarity. Plus primal feasibility of ``tau``."""
     Om, D = cfg.Om, cfg.Om + cfg.Xi
-    w, V = eigh(0.5 * (D + D.T))
-    keep = w > 1e-12 * max(w[-1], 1e-300)
-    Vr = V[:, keep] / np.sqrt(w[keep])
-    top = float(eigh(Vr.T @ Om @ Vr, eigvals_only=True)[-1])
-    den = tau @ D @ tau
+    Dt = D @ tau
+    den = tau @ Dt
     sr = float(tau @ Om @ tau / den) if den > 0 else 0.0
-    scale = (np.linalg.norm(Om) + np.linalg.norm(D)) * np.linalg.norm(tau)
-    resid = np.linalg.norm(Om @ tau - sr * (D @ tau))
+    nD = np.linalg.norm(D, 2)
+    top = float(np.linalg.eigvalsh(0.5 * ((Om - sr * D) + (Om - sr * D).T))[-1])
+    scale = (np.linalg.norm(Om, 2) + nD) * np.linalg.norm(tau)
+    resid = np.linalg.norm(Om @ tau - sr * Dt)
     G, lo, hi, quad = _limits(model, query, cfg)
     G.append(cfg.L[0])
     lo.append(0.0)
@@ -195,7 +196,7 @@ def _eigen(model, query, cfg, tau) -> Certificate:
                convex=False, kind="").primal_feasibility
     values = {"stationarity": float(resid / scale) if scale > 0 else 0.0,
               "primal_feasibility": prim, "complementarity": 0.0,
-              "duality_gap": (top - sr) / max(abs(top), 1e-300)}
+              "duality_gap": max(top, 0.0) / max(nD, 1e-300)}
     return _verdict("generalized eigenproblem", values)
 
 
