@@ -187,6 +187,18 @@ def test_random_sequences_give_the_answers_of_the_queries_alone(alone):
             _same(_answer(cases[name]), ref[name], f"{name} in a random sequence")
 
 
+@pytest.mark.slow
+def test_many_random_queries_alone_and_in_sequence():
+    """60 random queries (every kind, limits and scenario), each alone in a fresh process, then
+    all of them in one process in two random orders."""
+    cases = _random_cases(2026, 60)
+    ref = {name: _alone(case) for name, case in cases.items()}
+    rng = np.random.default_rng(8)
+    for _ in range(2):
+        for name in rng.permutation(list(cases)):
+            _same(_answer(cases[name]), ref[name], f"{name} in a random sequence")
+
+
 def test_threads_give_the_answers_of_the_queries_alone(alone):
     cases, ref = alone
     names = list(cases)

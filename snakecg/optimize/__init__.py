@@ -55,8 +55,9 @@ into ``"failed"`` with the reason.
 
 No answer depends on what ran before, in any order and from any thread: the solvers are built
 once per problem size and shared, but every solve starts from the same solver state (qpOASES
-is reset to one fixed trivial problem before each solve, under a lock; IPOPT starts from the
-given point), see :mod:`snakecg.optimize.solvers`.
+is reset by a problem of the same constraint pattern with a known answer before each solve,
+under a lock, and its active set is solved exactly; IPOPT starts from the given point), see
+:mod:`snakecg.optimize.solvers`.
 
 Modules: :mod:`~snakecg.optimize.query` (input validation), :mod:`~snakecg.optimize.problems`
 (the maps and constraint rows), :mod:`~snakecg.optimize.solvers` (qpOASES, IPOPT, the

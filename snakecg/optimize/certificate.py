@@ -64,9 +64,12 @@ def kkt(x, H, c, G, lo, hi, quad=None, *, convex: bool, kind: str) -> Certificat
     primal = float(np.max(np.maximum(np.maximum(-s_lo, -s_hi), 0.0) / rs, initial=0.0))
     a_lo = s_lo <= ACTIVE * rs
     a_hi = s_hi <= ACTIVE * rs
+    eq = a_lo & a_hi & (lo == hi)  # an equality: one column, a multiplier of either sign
+    a_hi &= ~eq
     cols = [G[a_lo], -G[a_hi]]
-    slacks = [s_lo[a_lo], s_hi[a_hi]]
+    slacks = [np.where(eq[a_lo], 0.0, s_lo[a_lo]), s_hi[a_hi]]
     dvals = [lo[a_lo], -hi[a_hi]]
+    free = [eq[a_lo], np.zeros(int(a_hi.sum()), bool)]
     q_col = None
     if quad is not None:
         Q, r2 = quad
@@ -80,30 +83,43 @@ def kkt(x, H, c, G, lo, hi, quad=None, *, convex: bool, kind: str) -> Certificat
             cols.append(-2.0 * qx[None, :])
             slacks.append(np.array([-qv]))
             dvals.append(np.array([np.nan]))
+            free.append(np.zeros(1, bool))
     C = np.concatenate(cols, axis=0).T  # (n, k): one column per active constraint
     slacks = np.concatenate(slacks)
     dvals = np.concatenate(dvals)
+    free = np.concatenate(free)
     fscale = max(abs(f), abs(grad @ x), 1e-300)
     k = C.shape[1]
+    # the size of the gradient's terms (its value can be much smaller, by cancellation)
+    ref = (0.0 if H is None else np.linalg.norm(H) * np.linalg.norm(x)) + np.linalg.norm(c)
     if k:
         norms = np.linalg.norm(C, axis=0)
         norms = np.where(norms > 0, norms, 1.0)
         Cn = C / norms
-        lam_s = np.linalg.lstsq(Cn, grad, rcond=None)[0]
-        if np.any(lam_s < 0):  # the sign constraints bind: non-negative least squares
+        try:  # the normal equations (a handful of unit columns)
+            lam_s = np.linalg.solve(Cn.T @ Cn, Cn.T @ grad)
+        except np.linalg.LinAlgError:
+            lam_s = np.full(k, np.nan)
+        ok = bool(np.all(np.isfinite(lam_s)) and np.all(lam_s[~free] >= 0))
+        if ok:
+            r = np.linalg.norm(Cn @ lam_s - grad)
+            ok = r <= 0.1 * TOLERANCE["stationarity"] * max(np.linalg.norm(grad), ref, 1e-300)
+        if not ok:  # signs bind or the columns are dependent: non-negative least squares
             from scipy.optimize import nnls
 
-            lam_s = nnls(Cn, grad, maxiter=50 * k)[0]
+            split = np.hstack([Cn, -Cn[:, free]])  # a free multiplier as a difference
+            both = nnls(split, grad, maxiter=50 * split.shape[1])[0]
+            lam_s = both[:k]
+            lam_s[free] -= both[k:]
         lam = lam_s / norms
         resid = np.linalg.norm(C @ lam - grad)
-        size = max(np.linalg.norm(grad), float(np.sum(lam * np.linalg.norm(C, axis=0))))
+        size = max(np.linalg.norm(grad), float(np.abs(lam) @ np.linalg.norm(C, axis=0)))
     else:
         lam = np.zeros(0)
         resid = np.linalg.norm(grad)
         size = 0.0
-    ref = (0.0 if H is None else np.linalg.norm(H, 2) * np.linalg.norm(x)) + np.linalg.norm(c)
     stationarity = float(resid / max(size, ref, 1e-300)) if resid > 0 else 0.0
-    complementarity = float(lam @ np.abs(slacks) / fscale) if k else 0.0
+    complementarity = float(np.abs(lam) @ np.abs(slacks) / fscale) if k else 0.0
     gap = None
     if convex:
         # Lagrangian L(y) = f(y) - sum_lin lam_i (C_i . y - d_i) + mu (y^T Q y - r2)
@@ -184,9 +200,9 @@ def _eigen(model, query, cfg, tau) -> Certificate:
     Dt = D @ tau
     den = tau @ Dt
     sr = float(tau @ Om @ tau / den) if den > 0 else 0.0
-    nD = np.linalg.norm(D, 2)
+    nD = np.linalg.norm(D)
     top = float(np.linalg.eigvalsh(0.5 * ((Om - sr * D) + (Om - sr * D).T))[-1])
-    scale = (np.linalg.norm(Om, 2) + nD) * np.linalg.norm(tau)
+    scale = (np.linalg.norm(Om) + nD) * np.linalg.norm(tau)
     resid = np.linalg.norm(Om @ tau - sr * Dt)
     G, lo, hi, quad = _limits(model, query, cfg)
     G.append(cfg.L[0])

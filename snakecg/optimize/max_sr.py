@@ -137,7 +137,7 @@ def _max_sr_sliding(model, query, cfg, stick: Answer) -> Answer:
         lbx[n] = 0.0
         prob = Problem(H=2 * Xih[s], g=np.zeros(n + 1), A=A, lba=lba, uba=uba, lbx=lbx,
                         ubx=np.full(n + 1, np.inf), names=names, scale=scale_of(query, cfg))
-        sol = solve_conic(prob)
+        sol = _solve_state(prob, cfg, best_val)
         solved += 1
         iters += sol.iterations
         if not sol.ok or sol.z[n] <= 0:
@@ -159,7 +159,7 @@ def _max_sr_sliding(model, query, cfg, stick: Answer) -> Answer:
         cut = prob
         for _ in range(CUTS):
             cut = _with_tangent_cut(cut, cfg, query.radius, z)
-            sol = solve_conic(cut)
+            sol = _solve_state(cut, cfg, best_val)
             solved += 1
             if not sol.ok or sol.z[n] <= 0:
                 break
@@ -204,6 +204,29 @@ def _max_sr_sliding(model, query, cfg, stick: Answer) -> Answer:
                    f"QPs (qpoases), {n_ipopt} convex NLPs (ipopt)")
     best.iterations = iters
     return best
+
+
+def _solve_state(prob: Problem, cfg, best_val: float):
+    """A wheel state's QP ``min z^T Xi_h z`` s.t. ``l . z = 1`` and the state's cone (every
+    other row is homogeneous), solved as the always-feasible ``min z^T Xi_h z - M l . z`` s.t.
+    ``l . z <= 1`` and the cone: its solution is ``s z*`` with ``s = min(1, M / (2 m*))``
+    (``m*`` the state's optimum), so ``z* = z / (l . z)`` exactly, and a state whose cone
+    misses ``l . z > 0`` gives ``l . z = 0`` instead of an infeasible QP (a failed solve would
+    cost a fresh solver). ``M`` is twice the value a state needs to beat ``best_val``."""
+    ell = prob.A[0]
+    m_ref = cfg.k * (1.0 / min(max(best_val, 1e-12), 1.0) - 1.0)
+    M = 2.0 * min(max(m_ref, 1e-12), 1e12)
+    relaxed = Problem(H=prob.H, g=prob.g - M * ell, A=prob.A, lba=np.r_[-np.inf, prob.lba[1:]],
+                      uba=prob.uba, lbx=prob.lbx, ubx=prob.ubx, names=prob.names,
+                      scale=prob.scale)
+    sol = solve_conic(relaxed)
+    if sol.ok:
+        lz = ell @ sol.z
+        if lz > 1e-9 * np.linalg.norm(ell) * np.linalg.norm(sol.z) and lz > 0:
+            sol.z = sol.z / lz
+        else:
+            sol.ok = False
+    return sol
 
 
 #: Tangent-plane cuts of the ellipsoid tried per wheel state before IPOPT.

@@ -5,9 +5,13 @@ History independence. CasADi's qpOASES interface hot-starts every call from the 
 call's working set, and that homotopy can stop at a point that is not the optimum of the new
 problem while reporting success. Here no answer depends on what ran before:
 
-* every hot solve is preceded by the solve of one fixed, trivial QP (``H = I``, no active
-  constraint), so each problem starts from the same solver state whatever was solved before;
-  the pair runs under a lock, so concurrent threads cannot interleave;
+* every hot solve is preceded by the solve of a reset QP with the same constraint pattern
+  (``H = I``, its minimiser strictly inside every inequality), so each problem starts from
+  the same solver state whatever was solved before; the pair runs under a lock, so
+  concurrent threads cannot interleave; a reset that misses its known answer replaces the
+  solver by a new one;
+* the solver's active set is then solved exactly (:func:`_polish`), so the answer is a
+  function of the active set alone;
 * :func:`cold` opens a context in which every QP is solved by a freshly built qpOASES that
   starts from scratch (its ``init``, no hot start at all): used to re-solve a query whose
   answer failed its optimality certificate (:mod:`snakecg.optimize.certificate`);
@@ -49,15 +53,15 @@ def _conic(name: str, n1: int, R: int, lp: bool):
 
 class Solvers:
     """qpOASES and IPOPT for ``n1`` variables ``z = (tau, t)`` and ``R`` rows,
-    shared by every model and query of that size. Every use goes through :meth:`conic` or
-    :meth:`ipopt`, which hold ``lock`` and reset the hot start first."""
+    shared by every model and query of that size. Every use goes through :meth:`conic` (which
+    holds ``lock`` and resets the hot start first) or :meth:`ipopt` (under ``lock``)."""
 
     def __init__(self, n1: int, R: int):
         self.n1, self.R = n1, R
         self.lock = threading.Lock()
         self.qp = _conic("snakecg_optimize_qp", n1, R, lp=False)
         self._packed = None
-        self._trivial = None
+        self.rebuilds = 0  # solvers replaced after a failed reset (diagnostics)
         self._nlp = None
 
     def _build_packed(self):
@@ -75,32 +79,54 @@ class Solvers:
                       lbx=parts[5], ubx=parts[6])
         self._packed = ca.Function("snakecg_optimize_qp_packed", [P],
                                    [ca.vertcat(res["x"], res["lam_a"])])
-        # the fixed state every hot solve starts from: the solution of H = I, g = 0, every
-        # row and bound inactive (x = 0)
-        self._trivial = np.concatenate([np.eye(n1).ravel(), np.zeros(n1 + R * n1),
-                                        np.full(R, -1.0), np.full(R, 1.0),
-                                        np.full(n1, -1.0), np.full(n1, 1.0)])
-        with contextlib.redirect_stdout(io.StringIO()):
-            self._packed(self._trivial)
 
-    def conic(self, P: np.ndarray) -> np.ndarray | None:
-        """``[x, lam_a]`` of the packed QP ``P`` solved from the fixed state, or None when the
-        solve fails."""
+    def conic(self, H, g, A, lba, uba, lbx, ubx) -> np.ndarray | None:
+        """``[x, lam_a]`` of the QP solved from the fixed state of its constraint pattern, or
+        None when the solve fails.
+
+        The reset problem has the same rows and bounds as the QP (finite, infinite, or
+        equalities: qpOASES keeps a constraint's type between hot starts) around a point
+        ``x0`` strictly inside them, ``H = I`` and ``g = -x0``: its solution is ``x0`` with no
+        inequality active. When the reset does not return ``x0`` the solver is replaced."""
+        n1 = g.size
+        with np.errstate(invalid="ignore"):
+            x0 = np.where(np.isfinite(lbx) & np.isfinite(ubx), 0.5 * (lbx + ubx),
+                          np.where(np.isfinite(lbx), lbx + 1.0,
+                                   np.where(np.isfinite(ubx), ubx - 1.0, 0.0)))
+        x0 = np.where(lbx == ubx, lbx, x0)
+        eq = lba == uba
+        # every row through x0 with unit slack on its finite sides, equalities held at x0
+        Ax0 = A @ x0
+        lo = np.where(eq, Ax0, np.where(np.isfinite(lba), Ax0 - 1.0, -np.inf))
+        hi = np.where(eq, Ax0, np.where(np.isfinite(uba), Ax0 + 1.0, np.inf))
+        trivial = np.concatenate([np.eye(n1).ravel(), -x0, A.ravel("F"), lo, hi, lbx, ubx])
         with self.lock:
-            if self._packed is None:
+            fresh = self._packed is None
+            if fresh:
                 self._build_packed()
-            try:
-                reset = self._packed(self._trivial).full().ravel()
-            except RuntimeError:
-                reset = None
-            if reset is None or not np.all(np.abs(reset) <= 1e-12):
-                # the reset did not reach the fixed state: start over with a new solver
+            if not self._reset(trivial, x0, quiet=fresh):
+                # the reset did not reach the fixed state: start over with a new solver, whose
+                # first solve (qpOASES's init, no hot start) is the reset problem
                 self.qp = _conic("snakecg_optimize_qp", self.n1, self.R, lp=False)
                 self._build_packed()
+                self.rebuilds += 1
+                self._reset(trivial, x0, quiet=True)
             try:
-                return self._packed(P).full().ravel()
+                return self._packed(_pack(H, g, A, lba, uba, lbx, ubx)).full().ravel()
             except RuntimeError:
                 return None
+
+    def _reset(self, trivial, x0, quiet: bool) -> bool:
+        try:
+            if quiet:  # a fresh qpOASES prints its banner on its first solve
+                with contextlib.redirect_stdout(io.StringIO()):
+                    out = self._packed(trivial)
+            else:
+                out = self._packed(trivial)
+        except RuntimeError:
+            return False
+        x = out.full().ravel()[: x0.size]
+        return bool(np.all(np.abs(x - x0) <= 1e-12 * (1 + np.abs(x0))))
 
     def ipopt(self, **kwargs):
         with self.lock:
@@ -248,11 +274,15 @@ def _polish(H, g, A, lba, uba, lbx, ubx, zs, lam_a):
     E = np.vstack([A[act], np.eye(n1)[fixed]])
     e = np.concatenate([target[act], lbx[fixed]])
     k = E.shape[0]
-    K = np.block([[H, E.T], [E, np.zeros((k, k))]])
+    K = np.zeros((n1 + k, n1 + k))
+    K[:n1, :n1] = H
+    K[:n1, n1:] = E.T
+    K[n1:, :n1] = E
+    rhs = np.concatenate([-g, e])
     try:
-        sol = np.linalg.lstsq(K, np.concatenate([-g, e]), rcond=1e-14)[0]
-    except np.linalg.LinAlgError:
-        return zs
+        sol = np.linalg.solve(K, rhs)
+    except np.linalg.LinAlgError:  # dependent active rows: the least-squares solution
+        sol = np.linalg.lstsq(K, rhs, rcond=1e-14)[0]
     z = sol[:n1]
     if not np.all(np.isfinite(z)):
         return zs
@@ -287,7 +317,7 @@ def solve_conic(prob: Problem) -> Solution:
         H = LP_REG * np.eye(n1)
     fresh = _COLD.get()
     if fresh is None:
-        out = solvers(n1, R).conic(_pack(H, g, A, lba, uba, lbx, ubx))
+        out = solvers(n1, R).conic(H, g, A, lba, uba, lbx, ubx)
         status = "Successful return." if out is not None else "qpOASES: infeasible or failed"
     else:
         name += ", cold re-solve"
