@@ -13,9 +13,10 @@ every wheel within its friction bound backed off by ``FRICTION_MARGIN``), then
    multipliers are dual feasible by construction), and reports the relative residual;
 3. complementarity ``sum_i lam_i |slack_i|`` relative to the objective's size;
 4. for the convex kinds (the least-slip QP, the strongest-push LP, either with the
-   ellipsoid), the duality gap ``f(tau) - d(lam)`` with ``d`` the Lagrange dual function,
-   evaluated exactly by minimising the Lagrangian (weak duality: a small gap proves global
-   optimality, not only a KKT point).
+   ellipsoid), the duality gap ``f(tau) - d(lam)`` with ``d`` the Lagrange dual function at
+   those multipliers, ``sum_i lam_i slack_i + 1/2 r^T K^+ r`` (``r`` the Lagrangian's
+   gradient at ``tau``, ``K`` its Hessian): by weak duality ``f(tau) - f* <= gap``, a proof
+   of global optimality, not only of a KKT point.
 
 ``max_sr`` with every row held is not convex, but homogeneous of degree 0: ``tau`` is a
 global maximiser iff ``Omega - sr(tau) (Omega + Xi)`` is negative semidefinite; the certificate
@@ -68,7 +69,6 @@ def kkt(x, H, c, G, lo, hi, quad=None, *, convex: bool, kind: str) -> Certificat
     a_hi &= ~eq
     cols = [G[a_lo], -G[a_hi]]
     slacks = [np.where(eq[a_lo], 0.0, s_lo[a_lo]), s_hi[a_hi]]
-    dvals = [lo[a_lo], -hi[a_hi]]
     free = [eq[a_lo], np.zeros(int(a_hi.sum()), bool)]
     q_col = None
     if quad is not None:
@@ -82,11 +82,9 @@ def kkt(x, H, c, G, lo, hi, quad=None, *, convex: bool, kind: str) -> Certificat
             q_col = int(a_lo.sum() + a_hi.sum())
             cols.append(-2.0 * qx[None, :])
             slacks.append(np.array([-qv]))
-            dvals.append(np.array([np.nan]))
             free.append(np.zeros(1, bool))
     C = np.concatenate(cols, axis=0).T  # (n, k): one column per active constraint
     slacks = np.concatenate(slacks)
-    dvals = np.concatenate(dvals)
     free = np.concatenate(free)
     fscale = max(abs(f), abs(grad @ x), 1e-300)
     k = C.shape[1]
@@ -122,21 +120,20 @@ def kkt(x, H, c, G, lo, hi, quad=None, *, convex: bool, kind: str) -> Certificat
     complementarity = float(np.abs(lam) @ np.abs(slacks) / fscale) if k else 0.0
     gap = None
     if convex:
-        # Lagrangian L(y) = f(y) - sum_lin lam_i (C_i . y - d_i) + mu (y^T Q y - r2)
-        lin = np.ones(k, bool)
-        mu = 0.0
+        # d(lam) = min_y L(y) with L(y) = f(y) - sum_i lam_i slack_i(y) (the ellipsoid's slack
+        # r2 - y^T Q y among them): L is quadratic with Hessian K = H + 2 mu Q, so
+        # d = L(x) - 1/2 r^T K^+ r with r = grad L(x) = grad - C lam, and the gap f(x) - d is
+        # sum_i lam_i slack_i(x) + 1/2 r^T K^+ r, every term small at a KKT point (evaluating
+        # L at a computed minimiser instead loses the gap to K's conditioning)
         K = np.zeros((n, n)) if H is None else H.copy()
         if q_col is not None:
-            lin[q_col] = False
-            mu = lam[q_col]
-            K = K + 2.0 * mu * quad[0]
-        rhs = C[:, lin] @ lam[lin] - c
-        y = np.linalg.lstsq(K, rhs, rcond=1e-13)[0] if np.any(K) else np.zeros(n)
-        Ly = (0.0 if H is None else 0.5 * y @ H @ y) + c @ y
-        Ly -= float(lam[lin] @ (C[:, lin].T @ y - dvals[lin]))
-        if q_col is not None:
-            Ly += mu * (y @ quad[0] @ y - quad[1])
-        gap = float((f - Ly) / fscale)
+            K = K + 2.0 * lam[q_col] * quad[0]
+        r = grad - C @ lam if k else grad
+        corr = 0.0
+        if np.any(K) and np.any(r):
+            y = np.linalg.lstsq(K, r, rcond=1e-12)[0]
+            corr = 0.5 * float(r @ y)
+        gap = float((float(np.abs(lam) @ np.abs(slacks)) + corr) / fscale) if k else corr / fscale
     values = {"stationarity": stationarity, "primal_feasibility": primal,
               "complementarity": complementarity, "duality_gap": gap}
     return _verdict(kind, values)

@@ -148,7 +148,7 @@ def _max_sr_sliding(model, query, cfg, stick: Answer) -> Answer:
             outside.append((val, s, prob, z))
         elif val > stick.expected + SR_TIE:
             best_val = max(best_val, val)
-            cands.append((val, z[:n] / z[n], sol.binding, states[s], prob, z))
+            cands.append((val, z[:n] / z[n], sol.binding, states[s], prob, z, prob))
     # phase 2: tighten the relaxation with tangent planes of the ellipsoid at the relaxed
     # optimum (Kelley's cutting planes, each a valid outer bound): most states then fall
     # below the best answer; IPOPT with the exact ellipsoid where the relaxation still beats it
@@ -171,7 +171,7 @@ def _max_sr_sliding(model, query, cfg, stick: Answer) -> Answer:
             continue
         if inside(query, cfg, z[:n] / z[n]):  # the cut relaxation's optimum is feasible
             best_val = max(best_val, val)
-            cands.append((val, z[:n] / z[n], sol.binding, states[s], prob, z))
+            cands.append((val, z[:n] / z[n], sol.binding, states[s], prob, z, cut))
             continue
         prob.N, prob.r2 = cfg.N, query.radius**2
         tau = z[:n] / z[n]
@@ -185,7 +185,7 @@ def _max_sr_sliding(model, query, cfg, stick: Answer) -> Answer:
         val = _state_sr(cfg, Xih[s], ell[s], z)
         if val > stick.expected + SR_TIE:
             best_val = max(best_val, val)
-            cands.append((val, z[:n] / z[n], sol.binding, states[s], prob, z))
+            cands.append((val, z[:n] / z[n], sol.binding, states[s], prob, z, None))
     best = stick
     if cands:
         taus = np.array([c[1] for c in cands])
@@ -195,7 +195,12 @@ def _max_sr_sliding(model, query, cfg, stick: Answer) -> Answer:
         sr = np.where(fw.contact & allowed, fw.sr, -1.0)
         k = int(np.argmax(sr))
         if sr[k] > stick.expected + SR_TIE:
-            _, tau, binding, state, prob, z = cands[k]
+            _, tau, binding, state, prob, z, solved_prob = cands[k]
+            if solved_prob is not None:  # the winner's QP again, its active set solved exactly
+                sol = _solve_state(solved_prob, cfg, stick.expected, polish=True)
+                solved += 1
+                if sol.ok and sol.z[n] > 0:
+                    z, tau, binding = sol.z, sol.z[:n] / sol.z[n], sol.binding
             if query.radius is not None:  # the exact region, for the certificate
                 prob.N, prob.r2 = cfg.N, query.radius**2
             best = Answer(tau, "optimal", "", binding, "", 0, float(sr[k]), states=state,
@@ -206,20 +211,23 @@ def _max_sr_sliding(model, query, cfg, stick: Answer) -> Answer:
     return best
 
 
-def _solve_state(prob: Problem, cfg, best_val: float):
+def _solve_state(prob: Problem, cfg, best_val: float, polish: bool = False):
     """A wheel state's QP ``min z^T Xi_h z`` s.t. ``l . z = 1`` and the state's cone (every
     other row is homogeneous), solved as the always-feasible ``min z^T Xi_h z - M l . z`` s.t.
     ``l . z <= 1`` and the cone: its solution is ``s z*`` with ``s = min(1, M / (2 m*))``
     (``m*`` the state's optimum), so ``z* = z / (l . z)`` exactly, and a state whose cone
     misses ``l . z > 0`` gives ``l . z = 0`` instead of an infeasible QP (a failed solve would
-    cost a fresh solver). ``M`` is twice the value a state needs to beat ``best_val``."""
+    cost a fresh solver). ``M`` is twice the value a state needs to beat ``best_val``. The
+    states are compared on the solver's own answers; the winner is solved again with its
+    active set polished (``polish``)."""
     ell = prob.A[0]
     m_ref = cfg.k * (1.0 / min(max(best_val, 1e-12), 1.0) - 1.0)
     M = 2.0 * min(max(m_ref, 1e-12), 1e12)
-    relaxed = Problem(H=prob.H, g=prob.g - M * ell, A=prob.A, lba=np.r_[-np.inf, prob.lba[1:]],
-                      uba=prob.uba, lbx=prob.lbx, ubx=prob.ubx, names=prob.names,
-                      scale=prob.scale)
-    sol = solve_conic(relaxed)
+    lba = prob.lba.copy()
+    lba[0] = -np.inf
+    relaxed = Problem(H=prob.H, g=prob.g - M * ell, A=prob.A, lba=lba, uba=prob.uba,
+                      lbx=prob.lbx, ubx=prob.ubx, names=prob.names, scale=prob.scale)
+    sol = solve_conic(relaxed, polish=polish)
     if sol.ok:
         lz = ell @ sol.z
         if lz > 1e-9 * np.linalg.norm(ell) * np.linalg.norm(sol.z) and lz > 0:

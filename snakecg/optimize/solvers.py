@@ -299,9 +299,10 @@ def _polish(H, g, A, lba, uba, lbx, ubx, zs, lam_a):
     return z
 
 
-def solve_conic(prob: Problem) -> Solution:
+def solve_conic(prob: Problem, polish: bool = True) -> Solution:
     """qpOASES on ``prob`` from the fixed reset state; inside :func:`cold`, by a fresh qpOASES
-    from scratch. ``ok`` is False when the solver fails.
+    from scratch. ``ok`` is False when the solver fails. ``polish``: solve the active set
+    exactly (:func:`_polish`; every final answer is polished).
 
     An LP (``prob.H`` None) is solved as the QP with the curvature ``LP_REG`` (scaled
     variables, objective of size 1): at a vertex whose multipliers exceed ``LP_REG`` times the
@@ -331,7 +332,8 @@ def solve_conic(prob: Problem) -> Solution:
     if out is None or not np.all(np.isfinite(out)):
         return Solution(False, np.zeros(n1), status, 1, name)
     zs, lam_a = out[:n1], out[n1:]
-    zs = _polish(H, g, A, lba, uba, lbx, ubx, zs, lam_a)
+    if polish:
+        zs = _polish(H, g, A, lba, uba, lbx, ubx, zs, lam_a)
     binding, rows = _binding(prob, zs, A, lba, uba, lam_a)
     unique = False
     # an LP vertex with n independent rows active, all with non-zero multipliers (t fixed):
