@@ -294,25 +294,27 @@ def test_a_failed_certificate_triggers_a_cold_re_solve(monkeypatch):
     assert not res.certificate.ok and res.certificate.resolved
 
 
-@pytest.mark.parametrize("scenario", ("frictionless", "wheels", "ideal_wheels"))
-def test_certified_answers_against_highs_and_slsqp_on_the_reference_maps(scenario):
+@pytest.mark.parametrize("joints, scenario", [(3, "frictionless"), (3, "wheels"),
+                                              (3, "ideal_wheels"), (6, "wheels")])
+def test_certified_answers_against_highs_and_slsqp_on_the_reference_maps(joints, scenario):
     """strongest_push (box) against HiGHS, least_slip_push (box and ellipsoid) against SLSQP,
     both on the dense reference's maps; every answer carries a passing certificate."""
     from scipy.optimize import linprog, minimize
 
-    scene = snakecg.Scene(snakecg.Robot(joints=3), scenario=scenario, mu=0.3)
+    scene = snakecg.Scene(snakecg.Robot(joints=joints), scenario=scenario, mu=0.3)
     sm = snakecg.load(scene)
-    rng = np.random.default_rng(11)
+    rng = np.random.default_rng(11 + joints)
     for _ in range(3):
         q = np.concatenate([rng.normal(size=2), rng.uniform(-np.pi, np.pi, 1),
-                            rng.uniform(-2.3, 2.3, 3)])
+                            rng.uniform(-2.3, 2.3, joints)])
         mp = reference_maps(scene, q)
-        wheels = [i for i in range(1, 5) if mp["present"][i] and np.isfinite(mp["bounds"][i])]
+        wheels = [i for i in range(1, joints + 2)
+                  if mp["present"][i] and np.isfinite(mp["bounds"][i])]
         u = {i: mp["bounds"][i] * (1 - FRICTION_MARGIN) for i in wheels}
         A_ub = [mp["L"][i] for i in wheels] + [-mp["L"][i] for i in wheels] + [-mp["L"][0]]
         b_ub = [u[i] for i in wheels] * 2 + [0.0]
         lp = linprog(-mp["L"][0], A_ub=np.array(A_ub), b_ub=np.array(b_ub),
-                     bounds=[(-0.3, 0.3)] * 3, method="highs")
+                     bounds=[(-0.3, 0.3)] * joints, method="highs")
         assert lp.status == 0
         strong = sm.optimize(q, "strongest_push", tau_max=0.3)
         assert strong.status == "optimal" and strong.certificate.ok, strong.reason
@@ -334,9 +336,9 @@ def test_certified_answers_against_highs_and_slsqp_on_the_reference_maps(scenari
             if radius is not None:
                 cons.append({"type": "ineq", "fun": lambda t: 1.0 - t @ mp["N"] @ t})
             best = np.inf
-            for start in [res.tau * 0.9, *rng.uniform(-0.3, 0.3, (8, 3))]:
+            for start in [res.tau * 0.9, *rng.uniform(-0.3, 0.3, (8, joints))]:
                 r = minimize(lambda t: t @ mp["Xi"] @ t, start, jac=lambda t: 2 * mp["Xi"] @ t,
-                             bounds=[(-0.3, 0.3)] * 3, constraints=cons, method="SLSQP",
+                             bounds=[(-0.3, 0.3)] * joints, constraints=cons, method="SLSQP",
                              options={"ftol": 1e-16, "maxiter": 1000})
                 if r.success and min(c["fun"](r.x) for c in cons) >= -1e-12:
                     best = min(best, r.fun)
