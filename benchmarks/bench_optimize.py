@@ -1,4 +1,4 @@
-"""Benchmark of the optimal torque queries (issue #5): ``SceneModel.optimize``.
+"""Benchmark of the optimal torque queries: ``SceneModel.optimize``.
 
 Warm query latency (one configuration per call, the whole public call: validation, maps,
 solve, forward check), at random configurations, for every kind of query, at n_a = 3 and 6 in
@@ -11,10 +11,21 @@ Push tasks are feasible by construction: the direction is the contact normal, an
 timing). Wall-clock and process CPU time are both reported: on a shared machine the wall
 clock includes time the process waited for a core.
 
-Targets (n_a = 3): under 1 ms for the QP kinds, under 20 ms for max-sr with sliding wheels
-(the per-wheel-state QPs / NLP); the 784-configuration sweep under 2 s.
+First, side by side in one run (n_a = 3, ``wheels``, warm, one configuration per call,
+calls interleaved so that both see the same load), each public query against the direct solve
+of the same problem on ``SceneModel.maps`` from Python (the anchor, maps call included):
 
-    /work/venv/bin/python benchmarks/bench_optimize.py [--n 200] [--joints 3 6]
+* ``max_sr`` (ellipsoid) against ``scipy.linalg.eigh`` of ``(Omega, Omega + Xi)``;
+* ``least_slip_push`` (box) against one qpOASES QP (``casadi.conic``, built once, hot-started
+  as CasADi does by default) on the maps' rows;
+* ``strongest_push`` (box) against HiGHS (``scipy.optimize.linprog``) on the maps' rows.
+
+Targets of that comparison (medians): max_sr <= 0.1 ms, least_slip_push <= 0.25 ms,
+strongest_push <= 0.3 ms, each faster than its anchor. Then the latency of every kind at
+n_a = 3 and 6 (targets: under 1 ms for the QP kinds, under 20 ms for max-sr with sliding
+wheels), and a sweep over the 784 configurations of case study 1 (under 2 s).
+
+    python benchmarks/bench_optimize.py [--n 200] [--joints 3 6] [--anchors-only]
 """
 
 from __future__ import annotations
@@ -97,12 +108,128 @@ def latency(sm, Q, kwargs):
                 cpu=statistics.median(cpu) * 1e3, status=status)
 
 
+def _anchor_solvers(sm):
+    """The direct solves on ``maps`` (built once)."""
+    import contextlib
+    import io
+
+    import casadi as ca
+    from scipy.linalg import eigh
+    from scipy.optimize import linprog
+
+    n = sm.n_joints
+    wheels = [i for i in range(1, sm.n_constraints)
+              if sm.present[i] and np.isfinite(sm.bounds[i])]
+    R = 1 + len(wheels)
+    with contextlib.redirect_stdout(io.StringIO()):
+        qp = ca.conic("anchor_qp", "qpoases", {"h": ca.Sparsity.dense(n, n),
+                                               "a": ca.Sparsity.dense(R, n)},
+                      {"printLevel": "none", "error_on_fail": False})
+    u = np.array([sm.bounds[i] for i in wheels])
+
+    def max_sr(q):
+        mp = sm.maps(q)
+        om = mp["omega_tau"]
+        w, v = eigh(om, om + mp["xi_tau"])
+        t = v[:, -1] * np.sign(mp["lam_from_tau"][0] @ v[:, -1])
+        return w[-1], t / np.sqrt(t @ mp["input_metric"] @ t)
+
+    def least_slip(q, d, a_min, tau_max):
+        mp = sm.maps(q)
+        L = mp["lam_from_tau"]
+        A = np.vstack([np.append(d, 0.0) @ mp["a_obj_from_tau"], L[wheels]])
+        lba = np.concatenate([[a_min], -u])
+        uba = np.concatenate([[np.inf], u])
+        r = qp(h=2 * mp["xi_tau"], g=np.zeros(n), a=A, lba=lba, uba=uba,
+               lbx=-tau_max * np.ones(n), ubx=tau_max * np.ones(n))
+        return np.array(r["x"]).ravel()
+
+    def strongest(q, tau_max):
+        mp = sm.maps(q)
+        L = mp["lam_from_tau"]
+        A = np.vstack([L[wheels], -L[wheels]])
+        r = linprog(-L[0], A_ub=A, b_ub=np.concatenate([u, u]),
+                    bounds=[(-tau_max, tau_max)] * n, method="highs")
+        return r.x
+
+    return max_sr, least_slip, strongest
+
+
+def anchors(n: int) -> dict:
+    """Median wall-clock time (ms) of each query and its anchor, interleaved call by call."""
+    sm = snakecg.load(snakecg.Scene(snakecg.Robot(joints=3), scenario="wheels"))
+    rng = np.random.default_rng(20171102)
+    Q = random_q(rng, 3, n)
+    a_max_sr, a_least, a_strong = _anchor_solvers(sm)
+    tau_max = 0.3
+    pushes = []
+    for q in Q:  # the contact normal and half of the strongest push (not timed)
+        st = sm.optimize(q, "strongest_push", tau_max=tau_max)
+        d = st.analysis.a_obj[:2] / np.linalg.norm(st.analysis.a_obj[:2])
+        pushes.append((d, 0.5 * float(d @ st.analysis.a_obj[:2])))
+    pairs = {
+        "max_sr (ellipsoid) | scipy eigh on maps":
+            (lambda k: sm.optimize(Q[k], "max_sr"), lambda k: a_max_sr(Q[k])),
+        "least_slip_push (box) | qpOASES on maps":
+            (lambda k: sm.optimize(Q[k], "least_slip_push", direction=pushes[k][0],
+                                   a_min=pushes[k][1], tau_max=tau_max),
+             lambda k: a_least(Q[k], pushes[k][0], pushes[k][1], tau_max)),
+        "strongest_push (box) | HiGHS on maps":
+            (lambda k: sm.optimize(Q[k], "strongest_push", tau_max=tau_max),
+             lambda k: a_strong(Q[k], tau_max)),
+    }
+    out = {}
+    for name, (ours, theirs) in pairs.items():
+        for k in range(min(5, n)):  # warm up
+            ours(k)
+            theirs(k)
+        t_ours, t_theirs, c_ours, c_theirs, ok = [], [], [], [], 0
+        for k in range(n):
+            t0, c0 = time.perf_counter(), time.thread_time()
+            res = ours(k)
+            t1, c1 = time.perf_counter(), time.thread_time()
+            theirs(k)
+            t2, c2 = time.perf_counter(), time.thread_time()
+            t_ours.append(t1 - t0)
+            t_theirs.append(t2 - t1)
+            c_ours.append(c1 - c0)
+            c_theirs.append(c2 - c1)
+            ok += res.status == "optimal" and bool(res.certificate.ok)
+        med = [statistics.median(v) * 1e3 for v in (t_ours, t_theirs, c_ours, c_theirs)]
+        out[name] = (*med, ok)
+    return out
+
+
+TARGETS = {"max_sr": 0.1, "least_slip_push": 0.25, "strongest_push": 0.3}
+
+
+def print_anchors(n: int) -> None:
+    print(f"# side by side: n_a = 3, wheels, {n} random configurations, interleaved")
+    print(f"# machine: {machine()}")
+    print("| query | anchor | query ms (CPU) | anchor ms (CPU) | ratio (CPU) | target ms | "
+          "certified |")
+    print("|---|---|---|---|---|---|---|")
+    for name, (ours, theirs, c_ours, c_theirs, ok) in anchors(n).items():
+        query, anchor = name.split(" | ")
+        target = TARGETS[query.split()[0]]
+        verdict = "met" if ours <= target and ours < theirs else "MISSED"
+        print(f"| {query} | {anchor} | {ours:.3f} ({c_ours:.3f}) | {theirs:.3f} "
+              f"({c_theirs:.3f}) | {ours / theirs:.2f} ({c_ours / c_theirs:.2f}) | "
+              f"{target} ({verdict}) | {ok}/{n} |", flush=True)
+    print(f"# machine at the end: {machine()}")
+
+
 def main(argv=None) -> int:
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     p.add_argument("--n", type=int, default=200, help="configurations per kind and joint count")
     p.add_argument("--joints", type=int, nargs="+", default=[3, 6])
     p.add_argument("--scenario", default="wheels", choices=snakecg.SCENARIOS)
+    p.add_argument("--anchors-only", action="store_true",
+                   help="only the side-by-side comparison with the direct solves on maps")
     args = p.parse_args(argv)
+    print_anchors(args.n)
+    if args.anchors_only:
+        return 0
     rng = np.random.default_rng(20171102)
     print(f"# bench_optimize: scenario {args.scenario}, {args.n} random configurations per "
           f"kind, warm queries")

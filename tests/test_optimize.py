@@ -297,7 +297,7 @@ def test_max_sr_sliding_with_the_ellipsoid_binding(models, monkeypatch, cuts):
     sliding and the ellipsoid cuts it, solved by the tangent-plane relaxation (default) and,
     with the cuts switched off, by the convex NLP (IPOPT): both against a dense polar grid of
     the 2-D ellipsoid and local perturbations."""
-    import snakecg.optimize as opt
+    import snakecg.optimize.max_sr as opt
 
     if cuts is not None:
         monkeypatch.setattr(opt, "CUTS", cuts)
@@ -543,7 +543,9 @@ def test_cli_json_is_the_documented_schema(capsys):
     assert data["objective"] == "least_slip_push" and len(data["tau"]) == 3
     assert data["limits"] == {"tau_max": [0.3, 0.3, 0.3], "radius": None}
     fields = _documented_fields()
-    assert set(data) | set(data["analysis"]) == fields, set(data) ^ fields
+    got = set(data) | set(data["analysis"]) | set(data["certificate"])
+    assert got == fields, got ^ fields
+    assert data["certificate"]["ok"] is True
     # the same numbers as the Python API
     scene = snakecg.Scene(snakecg.Robot(joints=3), scenario="wheels")
     q_rad = np.array([0, 0, 0, np.deg2rad(30), np.deg2rad(-45), np.deg2rad(60)])

@@ -124,6 +124,11 @@ def run(args) -> int:
     print(f"{args.objective}: {res.status} ({res.solver}; {res.time * 1e3:.2f} ms)")
     if res.reason:
         print(f"  reason: {res.reason}")
+    c = res.certificate
+    if c is not None and c.kind != "none":
+        print(f"  certificate: {c.kind}, {'ok' if c.ok else 'failed'} (stationarity "
+              f"{c.stationarity:.1e}, feasibility {c.primal_feasibility:.1e}"
+              + (f", gap {c.duality_gap:.1e})" if c.duality_gap is not None else ")"))
     print(f"  tau    = {res.tau}  (N m)")
     print(f"  {name} = {res.objective_value:.9g}")
     if res.binding:

@@ -1,0 +1,186 @@
+"""The entry point :func:`optimize`: validate, build the maps, solve each configuration,
+certify the answer on the original problem, check it with the exact forward solve."""
+
+from __future__ import annotations
+
+import time
+
+import numpy as np
+
+from ..solver import ABSENT, HELD, SLIDE_NEG, SLIDE_POS
+from .certificate import certify
+from .max_sr import max_sr
+from .problems import Answer, configs
+from .push import least_slip_push, strongest_push
+from .query import validate
+from .result import CHECK_TOL, Certificate, OptimizeResult
+from .solvers import cold
+
+def optimize(model, q, objective: str = "max_sr", *, tau_max=None, radius=None,
+             direction=None, a_min=None, a_obj=None, allow_slide=False) -> OptimizeResult:
+    """The optimal joint torque for a task at configuration ``q`` (at rest).
+
+    Parameters
+    ----------
+    model : SceneModel
+        ``snakecg.load(scene)``.
+    q : array (n_s,) or (N, n_s)
+        Configuration(s) ``(x, y, theta, q_1..q_na)``.
+    objective : "max_sr" | "least_slip_push" | "strongest_push"
+        See the module documentation.
+    tau_max : float or array (n_a,), optional
+        Box limits ``|tau_j| <= tau_max_j`` (N m).
+    radius : float, optional
+        Ellipsoid ``tau^T B^T M_s^-1 B tau <= radius^2`` (eq. 31). With neither ``tau_max``
+        nor ``radius`` the region is the paper's ellipsoid (``radius = 1``); with both, their
+        intersection.
+    direction : (2,) or (3,), optional
+        Push direction of the object's acceleration (world frame; a 2-vector is linear only).
+        ``least_slip_push``: with ``a_min``; ``strongest_push``: default the contact normal.
+    a_min : float, optional
+        ``least_slip_push``: required ``d . a_obj >= a_min`` (m/s^2).
+    a_obj : (3,), optional
+        ``least_slip_push``: the full planar acceleration ``(a_x, a_y, alpha)`` to give the
+        object instead of ``direction``/``a_min``.
+    allow_slide : bool or list of link numbers
+        ``max_sr`` in the ``wheels`` scenario: wheels that may slide (``True``: all).
+        Otherwise every wheel stays within its friction bound.
+
+    Returns
+    -------
+    OptimizeResult
+        ``tau``, ``status`` (``"optimal"``/``"infeasible"``/``"failed"``) with ``reason``,
+        ``objective_value``, ``binding``, ``analysis`` (the forward result at ``tau``),
+        ``solver``, ``iterations``, ``time``.
+    """
+    t0 = time.perf_counter()
+    query = validate(model, objective, tau_max, radius, direction, a_min, a_obj, allow_slide)
+    qa, batched = model._q(q)
+    cfgs = configs(model, qa)
+    run = {"max_sr": max_sr, "least_slip_push": least_slip_push,
+           "strongest_push": strongest_push}[query.objective]
+    answers, certs = [], []
+    for cfg in cfgs:
+        if cfg.singular:
+            answers.append(Answer(np.zeros(model.n_joints), "failed",
+                                  "dependent constraint rows at this configuration (singular "
+                                  "Delassus matrix); the maps are not defined", (), "none", 0,
+                                  None))
+            certs.append(Certificate("none", False, reason="singular configuration"))
+            continue
+        a, cert = _certified(model, query, cfg, run)
+        answers.append(a)
+        certs.append(cert)
+    taus = np.array([a.tau for a in answers])
+    analysis = model.forward(qa, taus)
+    values = _objective_values(query, cfgs, analysis)
+    for b, (a, cfg) in enumerate(zip(answers, cfgs)):
+        if a.status == "optimal":
+            problem = _check(model, query, cfg, a, analysis, b, values[b])
+            if problem:
+                a.status, a.reason = "failed", f"forward check: {problem}"
+    elapsed = (time.perf_counter() - t0) / len(answers)
+    res = OptimizeResult(
+        objective=query.objective, tau=taus,
+        status=np.array([a.status for a in answers], dtype=object),
+        reason=np.array([a.reason for a in answers], dtype=object),
+        objective_value=values, binding=[a.binding for a in answers], analysis=analysis,
+        solver=np.array([a.solver for a in answers], dtype=object),
+        iterations=np.array([a.iterations for a in answers]),
+        time=np.full(len(answers), elapsed),
+        wheel_states_assumed=[_state_names(a.states) for a in answers],
+        certificate=certs,
+    )
+    if not batched:
+        res.tau = res.tau[0]
+        for k in ("status", "reason", "solver"):
+            setattr(res, k, str(getattr(res, k)[0]))
+        res.objective_value = float(values[0])
+        res.binding = answers[0].binding
+        res.iterations = int(res.iterations[0])
+        res.time = float(res.time[0])
+        res.wheel_states_assumed = res.wheel_states_assumed[0]
+        res.certificate = certs[0]
+        for k in res.analysis.__dataclass_fields__:
+            v = getattr(res.analysis, k)
+            if isinstance(v, np.ndarray):
+                setattr(res.analysis, k, v[0])
+    return res
+
+
+def _certified(model, query, cfg, run):
+    """Solve, then certify the answer on the original problem; when the certificate fails,
+    re-solve from scratch (a fresh solver, no hot start) and certify again; an answer whose
+    certificate still fails is returned as ``"failed"`` with the reason."""
+    a = run(model, query, cfg)
+    if a.status != "optimal":
+        return a, Certificate("none", False, reason=f"no optimality claim: {a.status}")
+    cert = certify(model, query, cfg, a)
+    if cert.ok:
+        return a, cert
+    with cold():
+        b = run(model, query, cfg)
+    cert_b = certify(model, query, cfg, b) if b.status == "optimal" else cert
+    cert_b.resolved = True
+    if b.status == "optimal" and cert_b.ok:
+        return b, cert_b
+    b = a if b.status == "optimal" else b
+    b.status = "failed"
+    b.reason = (f"optimality certificate ({cert_b.kind}) fails after a cold re-solve: "
+                f"{cert_b.reason or b.reason}")
+    return b, cert_b
+
+
+def _state_names(states):
+    if states is None:
+        return None
+    table = {ABSENT: "none", HELD: "stick", SLIDE_POS: "slide+", SLIDE_NEG: "slide-"}
+    return np.array([table[int(s)] for s in states[1:]])
+
+
+def _objective_values(query, cfgs, an) -> np.ndarray:
+    if query.objective == "max_sr":
+        return np.asarray(an.sr, dtype=float)
+    if query.objective == "least_slip_push":
+        return np.asarray(an.norm_qdd, dtype=float)
+    out = np.empty(len(cfgs))
+    for b, cfg in enumerate(cfgs):
+        d = query.direction
+        if d is None:
+            d = cfg.a_dir / max(np.linalg.norm(cfg.a_dir), 1e-300)
+        out[b] = d @ an.a_obj[b]
+    return out
+
+
+def _check(model, query, cfg, a: Answer, an, b, value) -> str:
+    """Compare the answer with the exact forward solve; '' when everything holds."""
+    tau = a.tau
+    if query.tau_max is not None and np.any(np.abs(tau) > query.tau_max * (1 + 1e-9)):
+        j = int(np.argmax(np.abs(tau) / query.tau_max))
+        return f"|tau_{j + 1}| = {abs(tau[j]):.6g} exceeds tau_max = {query.tau_max[j]:.6g}"
+    if query.radius is not None:
+        e = tau @ cfg.N @ tau
+        if e > query.radius**2 * (1 + 1e-7):
+            return f"tau^T N tau = {e:.6g} exceeds radius^2 = {query.radius**2:.6g}"
+    if not an.contact[b]:
+        return "the contact separates at tau"
+    ws = an.wheel_state[b]
+    for i in range(1, model.n_constraints):
+        if ws[i - 1] in ("slide+", "slide-") and not query.slide[i]:
+            return (f"the wheel on link {i} slides ({ws[i - 1]}) although the optimiser kept it"
+                    f" within its friction bound")
+    if a.expected is not None:
+        scale = max(abs(a.expected), 1.0 if query.objective == "max_sr" else abs(value), 1e-300)
+        if abs(value - a.expected) > CHECK_TOL * scale:
+            return (f"objective {value:.9g} from the forward solve differs from the optimiser's "
+                    f"{a.expected:.9g}")
+    if query.objective == "least_slip_push":
+        if query.a_obj is not None:
+            err = np.linalg.norm(an.a_obj[b] - query.a_obj)
+            if err > 1e-6 * max(np.linalg.norm(query.a_obj), 1e-12):
+                return f"a_obj = {an.a_obj[b].tolist()} misses the requested {query.a_obj.tolist()}"
+        else:
+            got = query.direction @ an.a_obj[b]
+            if got < query.a_min * (1 - 1e-6):
+                return f"d . a_obj = {got:.6g} < a_min = {query.a_min:.6g}"
+    return ""

@@ -1,0 +1,129 @@
+"""Input validation of :func:`snakecg.optimize.optimize`: one frozen :class:`Query` per call."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..errors import InputError
+from .result import OBJECTIVES
+
+
+@dataclass(frozen=True)
+class Query:
+    objective: str
+    tau_max: np.ndarray | None  # (n,) or None
+    radius: float | None
+    direction: np.ndarray | None  # unit (3,) or None
+    a_min: float | None
+    a_obj: np.ndarray | None  # (3,)
+    slide: np.ndarray  # (n_c,) bool: rows allowed to slide
+
+
+def _finite_vector(name, value, sizes, what):
+    try:
+        arr = np.asarray(value, dtype=float)
+    except (TypeError, ValueError):
+        raise InputError(f"{name} must be {what}, got {value!r}") from None
+    if arr.ndim != 1 or arr.shape[0] not in sizes:
+        raise InputError(f"{name} has shape {arr.shape}, expected {what}")
+    if not np.all(np.isfinite(arr)):
+        raise InputError(f"{name} must be finite, got {arr.tolist()}")
+    return arr
+
+
+def validate(model, objective, tau_max, radius, direction, a_min, a_obj, allow_slide):
+    from ..model import SceneModel
+
+    if not isinstance(model, SceneModel):
+        raise InputError(
+            f"model must be a snakecg.SceneModel (snakecg.load(scene)), got {type(model).__name__}"
+        )
+    if not isinstance(objective, str) or objective.replace("-", "_") not in OBJECTIVES:
+        raise InputError(
+            f"objective must be one of {', '.join(OBJECTIVES)} (dashes allowed), got {objective!r}"
+        )
+    objective = objective.replace("-", "_")
+    na = model.n_joints
+    if tau_max is not None:
+        if np.ndim(tau_max) == 0:
+            tau_max = np.full(na, tau_max, dtype=float) if _is_number(tau_max) else tau_max
+        tm = _finite_vector("tau_max", tau_max, (na,),
+                            f"a positive number or {na} positive numbers (N m), one per joint")
+        if np.any(tm <= 0):
+            raise InputError(f"tau_max must be positive (N m), got {tm.tolist()}")
+        tau_max = tm
+    if radius is not None:
+        if not _is_number(radius) or not np.isfinite(radius) or radius <= 0:
+            raise InputError(f"radius must be a positive number (the ellipsoid "
+                             f"tau^T B^T M_s^-1 B tau <= radius^2 of eq. 31), got {radius!r}")
+        radius = float(radius)
+    if tau_max is None and radius is None:
+        radius = 1.0  # the paper's input region, eq. (31)
+    # task arguments
+    given = {k for k, v in (("direction", direction), ("a_min", a_min), ("a_obj", a_obj))
+             if v is not None}
+    allowed = {"max_sr": set(), "least_slip_push": {"direction", "a_min", "a_obj"},
+               "strongest_push": {"direction"}}[objective]
+    extra = given - allowed
+    if extra:
+        raise InputError(f"{', '.join(sorted(extra))} do(es) not apply to objective "
+                         f"{objective!r} (it takes: {', '.join(sorted(allowed)) or 'no task'})")
+    d = None
+    if direction is not None:
+        d = _finite_vector("direction", direction, (2, 3),
+                           "(dx, dy) or (dx, dy, dalpha): the direction of the object's "
+                           "acceleration, world frame")
+        if np.linalg.norm(d) == 0:
+            raise InputError("direction must be non-zero")
+        d = np.r_[d, 0.0] if d.shape[0] == 2 else d
+        d = d / np.linalg.norm(d)
+    if a_min is not None:
+        if not _is_number(a_min) or not np.isfinite(a_min) or a_min < 0:
+            raise InputError(f"a_min must be a number >= 0 (m/s^2), got {a_min!r}")
+        a_min = float(a_min)
+    ao = None
+    if a_obj is not None:
+        ao = _finite_vector("a_obj", a_obj, (3,),
+                            "(a_x, a_y, alpha): the object's planar acceleration (m/s^2, rad/s^2)")
+    if objective == "least_slip_push":
+        if ao is not None and (d is not None or a_min is not None):
+            raise InputError("least_slip_push takes either a_obj (a full planar acceleration) "
+                             "or direction and a_min, not both")
+        if ao is None and (d is None or a_min is None):
+            raise InputError("least_slip_push needs a task: direction=(dx, dy) and a_min "
+                             "(m/s^2), or a_obj=(a_x, a_y, alpha)")
+    # wheels allowed to slide
+    bounded = model.present & np.isfinite(model.bounds)
+    bounded[0] = False
+    slide = np.zeros(model.n_constraints, dtype=bool)
+    if allow_slide is True:
+        slide = bounded.copy()
+    elif allow_slide is False or allow_slide is None:
+        pass
+    else:
+        try:
+            links = [int(x) for x in allow_slide]
+            if any(int(x) != x for x in allow_slide):
+                raise ValueError
+        except (TypeError, ValueError):
+            raise InputError(f"allow_slide must be True, False or a list of link numbers, "
+                             f"got {allow_slide!r}") from None
+        for i in links:
+            if not 1 <= i <= model.n_links or not bounded[i]:
+                have = [int(r) for r in np.flatnonzero(bounded)]
+                raise InputError(
+                    f"allow_slide: link {i} has no wheel with a friction bound (links with one:"
+                    f" {have or 'none'}; only the 'wheels' scenario bounds wheel forces)")
+            slide[i] = True
+    if slide.any() and objective != "max_sr":
+        raise InputError("allow_slide applies to objective 'max_sr' only; push tasks keep "
+                         "every wheel within its friction bound")
+    return Query(objective, tau_max, radius, d, a_min, ao, slide)
+
+
+def _is_number(x) -> bool:
+    return isinstance(x, (int, float, np.integer, np.floating)) and not isinstance(x, bool)
+
+

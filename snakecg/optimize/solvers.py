@@ -1,0 +1,457 @@
+"""The numerical solvers of :mod:`snakecg.optimize`: qpOASES (QPs and LPs) and IPOPT
+(the convex NLPs of the sliding-wheel search), through CasADi.
+
+History independence. CasADi's qpOASES interface hot-starts every call from the previous
+call's working set, and that homotopy can stop at a point that is not the optimum of the new
+problem while reporting success. Here no answer depends on what ran before:
+
+* every hot solve is preceded by the solve of a reset QP with the same constraint pattern
+  (``H = I``, its minimiser strictly inside every inequality), so each problem starts from
+  the same solver state whatever was solved before; the pair runs under a lock, so
+  concurrent threads cannot interleave; a reset that misses its known answer replaces the
+  solver by a new one;
+* the solver's active set is then solved exactly (:func:`_polish`), so the answer is a
+  function of the active set alone;
+* :func:`cold` opens a context in which every QP is solved by a freshly built qpOASES that
+  starts from scratch (its ``init``, no hot start at all): used to re-solve a query whose
+  answer failed its optimality certificate (:mod:`snakecg.optimize.certificate`);
+* IPOPT starts from the given point every call (no warm start).
+"""
+
+from __future__ import annotations
+
+import contextlib
+import contextvars
+import io
+import threading
+from dataclasses import dataclass
+
+import numpy as np
+
+from .result import ELLIPSOID, HESSIAN_REG
+
+#: Curvature of the QP that stands for an LP (scaled variables, objective of size 1).
+LP_REG = 1e-9
+
+_QPOASES = {"printLevel": "none", "error_on_fail": False}
+_IPOPT = {
+    "print_time": False, "error_on_fail": False,
+    "ipopt.print_level": 0, "ipopt.sb": "yes", "ipopt.tol": 1e-10,
+    "ipopt.acceptable_tol": 1e-8, "ipopt.max_iter": 300, "ipopt.mu_strategy": "adaptive",
+    "ipopt.bound_relax_factor": 0.0,
+}
+
+
+def _conic(name: str, n1: int, R: int, lp: bool):
+    import casadi as ca
+
+    h = ca.Sparsity(n1, n1) if lp else ca.Sparsity.dense(n1, n1)
+    # qpOASES prints its banner through CasADi's output stream when first used
+    with contextlib.redirect_stdout(io.StringIO()):
+        return ca.conic(name, "qpoases", {"h": h, "a": ca.Sparsity.dense(R, n1)}, _QPOASES)
+
+
+class Solvers:
+    """qpOASES and IPOPT for ``n1`` variables ``z = (tau, t)`` and ``R`` rows,
+    shared by every model and query of that size. Every use goes through :meth:`conic` (which
+    holds ``lock`` and resets the hot start first) or :meth:`ipopt` (under ``lock``)."""
+
+    def __init__(self, n1: int, R: int):
+        self.n1, self.R = n1, R
+        self.lock = threading.Lock()
+        self.qp = _conic("snakecg_optimize_qp", n1, R, lp=False)
+        self._packed = None
+        self.rebuilds = 0  # solvers replaced after a failed reset (diagnostics)
+        self._nlp = None
+
+    def _build_packed(self):
+        """The QP solver behind one flat input and one flat output,
+        ``[vec(H), g, vec(A), lba, uba, lbx, ubx] -> [x, lam_a]``: a call converts two arrays
+        instead of seventeen. A failed solve raises."""
+        import casadi as ca
+
+        n1, R = self.n1, self.R
+        sizes = (n1 * n1, n1, R * n1, R, R, n1, n1)
+        P = ca.MX.sym("P", sum(sizes))
+        parts = ca.vertsplit(P, list(np.cumsum((0,) + sizes)))
+        res = self.qp(h=ca.reshape(parts[0], n1, n1), g=parts[1],
+                      a=ca.reshape(parts[2], R, n1), lba=parts[3], uba=parts[4],
+                      lbx=parts[5], ubx=parts[6])
+        self._packed = ca.Function("snakecg_optimize_qp_packed", [P],
+                                   [ca.vertcat(res["x"], res["lam_a"])])
+
+    def conic(self, H, g, A, lba, uba, lbx, ubx) -> np.ndarray | None:
+        """``[x, lam_a]`` of the QP solved from the fixed state of its constraint pattern, or
+        None when the solve fails.
+
+        The reset problem has the same rows and bounds as the QP (finite, infinite, or
+        equalities: qpOASES keeps a constraint's type between hot starts) around a point
+        ``x0`` strictly inside them, ``H = I`` and ``g = -x0``: its solution is ``x0`` with no
+        inequality active. When the reset does not return ``x0`` the solver is replaced."""
+        n1 = g.size
+        with np.errstate(invalid="ignore"):
+            x0 = np.where(np.isfinite(lbx) & np.isfinite(ubx), 0.5 * (lbx + ubx),
+                          np.where(np.isfinite(lbx), lbx + 1.0,
+                                   np.where(np.isfinite(ubx), ubx - 1.0, 0.0)))
+        x0 = np.where(lbx == ubx, lbx, x0)
+        eq = lba == uba
+        # every row through x0 with unit slack on its finite sides, equalities held at x0
+        Ax0 = A @ x0
+        lo = np.where(eq, Ax0, np.where(np.isfinite(lba), Ax0 - 1.0, -np.inf))
+        hi = np.where(eq, Ax0, np.where(np.isfinite(uba), Ax0 + 1.0, np.inf))
+        trivial = np.concatenate([np.eye(n1).ravel(), -x0, A.ravel("F"), lo, hi, lbx, ubx])
+        with self.lock:
+            fresh = self._packed is None
+            if fresh:
+                self._build_packed()
+            if not self._reset(trivial, x0, quiet=fresh):
+                # the reset did not reach the fixed state: start over with a new solver, whose
+                # first solve (qpOASES's init, no hot start) is the reset problem
+                self.qp = _conic("snakecg_optimize_qp", self.n1, self.R, lp=False)
+                self._build_packed()
+                self.rebuilds += 1
+                self._reset(trivial, x0, quiet=True)
+            try:
+                return self._packed(_pack(H, g, A, lba, uba, lbx, ubx)).full().ravel()
+            except RuntimeError:
+                return None
+
+    def _reset(self, trivial, x0, quiet: bool) -> bool:
+        try:
+            if quiet:  # a fresh qpOASES prints its banner on its first solve
+                with contextlib.redirect_stdout(io.StringIO()):
+                    out = self._packed(trivial)
+            else:
+                out = self._packed(trivial)
+        except RuntimeError:
+            return False
+        x = out.full().ravel()[: x0.size]
+        return bool(np.all(np.abs(x - x0) <= 1e-12 * (1 + np.abs(x0))))
+
+    def ipopt(self, **kwargs):
+        with self.lock:
+            res = self.nlp(**kwargs)
+            return res, self.nlp.stats()
+
+    @property
+    def nlp(self):
+        """IPOPT on ``min 1/2 z^T H z + g^T z`` s.t. ``lba <= A z <= uba`` and the ellipsoid in
+        homogeneous form ``tau^T N tau / t - r2 t <= 0`` (``z = (tau, t)``, ``t > 0``).
+
+        The constraint function is convex (a quadratic-over-linear minus a linear term), so
+        every problem posed here is convex; with ``t`` fixed to 1 it is ``tau^T N tau <= r2``.
+        Parametric in ``(H, g, A, N, r2)``; built on first use."""
+        if self._nlp is None:
+            import casadi as ca
+
+            n1, R = self.n1, self.R
+            n = n1 - 1
+            z = ca.SX.sym("z", n1)
+            H = ca.SX.sym("H", n1, n1)
+            g = ca.SX.sym("g", n1)
+            A = ca.SX.sym("A", R, n1)
+            N = ca.SX.sym("N", n, n)
+            r2 = ca.SX.sym("r2", 1)
+            tau, t = z[:n], z[n]
+            f = 0.5 * ca.mtimes([z.T, H, z]) + ca.dot(g, z)
+            cons = ca.vertcat(ca.mtimes(A, z), ca.mtimes([tau.T, N, tau]) / t - r2 * t)
+            p = ca.vertcat(ca.vec(H), g, ca.vec(A), ca.vec(N), r2)
+            with contextlib.redirect_stdout(io.StringIO()):
+                self._nlp = ca.nlpsol("snakecg_optimize_nlp", "ipopt",
+                                      {"x": z, "p": p, "f": f, "g": cons}, _IPOPT)
+        return self._nlp
+
+_SOLVERS: dict[tuple[int, int], Solvers] = {}
+_SOLVERS_LOCK = threading.Lock()
+#: Inside :func:`cold`: the solvers built for it (a dict), else None.
+_COLD: contextvars.ContextVar = contextvars.ContextVar("snakecg_optimize_cold", default=None)
+
+
+def solvers(n1: int, R: int) -> Solvers:
+    key = (n1, R)
+    with _SOLVERS_LOCK:
+        if key not in _SOLVERS:
+            _SOLVERS[key] = Solvers(n1, R)
+        return _SOLVERS[key]
+
+
+@contextlib.contextmanager
+def cold():
+    """Every QP inside is solved by a freshly built qpOASES from scratch (no hot start)."""
+    token = _COLD.set({})
+    try:
+        yield
+    finally:
+        _COLD.reset(token)
+
+
+# one problem in z = (tau, t), with named rows
+@dataclass
+class Problem:
+    """``min 1/2 z^T H z + g^T z`` (``H`` None: an LP) s.t. ``lba <= A z <= uba``,
+    ``lbx <= z <= ubx`` and, for IPOPT, the ellipsoid ``tau^T N tau <= r^2 t^2`` (``N``,
+    ``r2``). ``names[r]`` names row ``r`` ("" = unused or not a limit); ``scale`` are the
+    variables' natural sizes (the solvers see ``z / scale``)."""
+
+    H: np.ndarray | None
+    g: np.ndarray
+    A: np.ndarray
+    lba: np.ndarray
+    uba: np.ndarray
+    lbx: np.ndarray
+    ubx: np.ndarray
+    names: list
+    scale: np.ndarray
+    N: np.ndarray | None = None
+    r2: float = 0.0
+
+
+@dataclass
+class Solution:
+    ok: bool
+    z: np.ndarray
+    status: str
+    iterations: int
+    solver: str
+    binding: tuple = ()
+    unique: bool = False  # a non-degenerate vertex: the LP optimum is the only one
+
+
+def _scaled(prob: Problem):
+    s = prob.scale
+    A = prob.A * s[None, :]
+    rn = np.abs(A).max(axis=1)
+    used = rn > 0
+    rn = np.where(used, rn, 1.0)
+    A = A / rn[:, None]
+    lba = np.where(used, prob.lba / rn, -np.inf)
+    uba = np.where(used, prob.uba / rn, np.inf)
+    H = None if prob.H is None else prob.H * np.outer(s, s)
+    g = prob.g * s
+    fs = max(np.abs(g).max(), 0.0 if H is None else np.abs(H).max())
+    fs = fs if fs > 0 else 1.0
+    g = g / fs
+    if H is not None:
+        H = H / fs
+        H = H + HESSIAN_REG * max(np.abs(np.diag(H)).max(), 1e-300) * np.eye(len(s))
+    return H, g, A, lba, uba, prob.lbx / s, prob.ubx / s
+
+
+def _binding(prob, zs, A, lba, uba, lam_a, extra=()):
+    """Rows active at ``zs`` (scaled) with a non-zero multiplier: their names (deduplicated)
+    and their indices."""
+    lam_a = np.asarray(lam_a).ravel()
+    big = max(np.abs(lam_a).max(initial=0.0), max((abs(v) for _, v in extra), default=0.0))
+    if big <= 0:
+        return (), []
+    Az = A @ zs
+    slack = np.minimum(np.abs(Az - lba), np.abs(Az - uba))
+    rows = [r for r in range(len(lam_a))
+            if abs(lam_a[r]) > 1e-7 * big and slack[r] <= 1e-6]
+    out = [prob.names[r] for r in rows if prob.names[r]]
+    out += [name for name, v in extra if abs(v) > 1e-7 * big]
+    return tuple(dict.fromkeys(out)), rows
+
+
+def _pack(H, g, A, lba, uba, lbx, ubx) -> np.ndarray:
+    return np.concatenate([H.ravel("F"), g, A.ravel("F"), lba, uba, lbx, ubx])
+
+
+def _polish(H, g, A, lba, uba, lbx, ubx, zs, lam_a):
+    """The exact optimum on the solver's active set: the equality-constrained QP with the rows
+    that carry a multiplier held at their active bound (and the fixed variables), solved
+    directly (one dense KKT system). Taken when it keeps every row and bound (to 1e-12) and
+    its objective is no worse; the solver's point otherwise. A homotopy (qpOASES) stops within
+    about 1e-7 of the optimum on ill-conditioned Hessians; this makes the answer a function of
+    the active set alone, exact to rounding."""
+    n1 = zs.size
+    Az = A @ zs
+    act = np.abs(lam_a) > 0
+    at_lo = np.abs(Az - lba) <= np.abs(Az - uba)
+    target = np.where(at_lo, lba, uba)
+    act &= np.isfinite(target)
+    fixed = np.isfinite(lbx) & ((lbx == ubx) | (np.abs(zs - lbx) <= 1e-12 * (1 + abs(lbx))))
+    E = np.vstack([A[act], np.eye(n1)[fixed]])
+    e = np.concatenate([target[act], lbx[fixed]])
+    k = E.shape[0]
+    K = np.zeros((n1 + k, n1 + k))
+    K[:n1, :n1] = H
+    K[:n1, n1:] = E.T
+    K[n1:, :n1] = E
+    rhs = np.concatenate([-g, e])
+    try:
+        sol = np.linalg.solve(K, rhs)
+    except np.linalg.LinAlgError:  # dependent active rows: the least-squares solution
+        sol = np.linalg.lstsq(K, rhs, rcond=1e-14)[0]
+    z = sol[:n1]
+    if not np.all(np.isfinite(z)):
+        return zs
+    Az2 = A @ z
+    tol = 1e-12 * (1.0 + np.abs(Az2))
+    if np.any(Az2 < lba - tol) or np.any(Az2 > uba + tol):
+        return zs
+    if np.any(z < lbx - 1e-12 * (1 + np.abs(z))) or np.any(z > ubx + 1e-12 * (1 + np.abs(z))):
+        return zs
+    f_old = 0.5 * zs @ H @ zs + g @ zs
+    f_new = 0.5 * z @ H @ z + g @ z
+    if f_new > f_old + 1e-12 * max(abs(f_old), 1e-300):
+        return zs
+    return z
+
+
+def solve_conic(prob: Problem, polish: bool = True) -> Solution:
+    """qpOASES on ``prob`` from the fixed reset state; inside :func:`cold`, by a fresh qpOASES
+    from scratch. ``ok`` is False when the solver fails. ``polish``: solve the active set
+    exactly (:func:`_polish`; every final answer is polished).
+
+    An LP (``prob.H`` None) is solved as the QP with the curvature ``LP_REG`` (scaled
+    variables, objective of size 1): at a vertex whose multipliers exceed ``LP_REG`` times the
+    torque's size (every non-degenerate LP optimum here) its solution is that vertex exactly
+    (the KKT conditions of the vertex hold for both); on a degenerate optimal face it is the
+    face's point nearest the origin. qpOASES's own LP mode cannot start from the reset state
+    (its homotopy needs a curvature)."""
+    n1, R = prob.A.shape[1], prob.A.shape[0]
+    H, g, A, lba, uba, lbx, ubx = _scaled(prob)
+    lp = H is None
+    name = "qpoases (LP)" if lp else "qpoases"
+    if lp:
+        H = LP_REG * np.eye(n1)
+    fresh = _COLD.get()
+    if fresh is None:
+        out = solvers(n1, R).conic(H, g, A, lba, uba, lbx, ubx)
+        status = "Successful return." if out is not None else "qpOASES: infeasible or failed"
+    else:
+        name += ", cold re-solve"
+        f = _conic("snakecg_optimize_cold", n1, R, lp=False)
+        with contextlib.redirect_stdout(io.StringIO()):
+            res = f(h=H, g=g, a=A, lba=lba, uba=uba, lbx=lbx, ubx=ubx)
+        st = f.stats()
+        status = str(st.get("return_status", ""))
+        out = (np.concatenate([res["x"].full().ravel(), res["lam_a"].full().ravel()])
+               if st.get("success", False) else None)
+    if out is None or not np.all(np.isfinite(out)):
+        return Solution(False, np.zeros(n1), status, 1, name)
+    zs, lam_a = out[:n1], out[n1:]
+    if polish:
+        zs = _polish(H, g, A, lba, uba, lbx, ubx, zs, lam_a)
+    binding, rows = _binding(prob, zs, A, lba, uba, lam_a)
+    unique = False
+    # an LP vertex with n independent rows active, all with non-zero multipliers (t fixed):
+    # no other point reaches the optimum
+    n = n1 - 1
+    if (lp and prob.lbx[n] == prob.ubx[n] and len(rows) >= n
+            and np.linalg.matrix_rank(A[rows, :n], 1e-9) == n):
+        unique = True
+    return Solution(True, zs * prob.scale, status, 1, name, binding, unique)
+
+
+def solve_ipopt(prob: Problem, z0: np.ndarray) -> Solution:
+    """IPOPT on the problem with the ellipsoid constraint (convex), started at ``z0``."""
+    n1, R = prob.A.shape[1], prob.A.shape[0]
+    n = n1 - 1
+    sv = solvers(n1, R)
+    H, g, A, lba, uba, lbx, ubx = _scaled(prob)
+    if H is None:
+        H = np.zeros((n1, n1))
+    # rows that only relax the ellipsoid (its bounding box) would make the active set
+    # degenerate at the solution: drop them
+    drop = np.array([nm == ELLIPSOID for nm in prob.names])
+    A = np.where(drop[:, None], 0.0, A)
+    lba = np.where(drop, -np.inf, lba)
+    uba = np.where(drop, np.inf, uba)
+    s = prob.scale
+    Ns = prob.N * np.outer(s[:n], s[:n])
+    lbx = lbx.copy()
+    lbx[n] = max(lbx[n], 1e-9 * max(z0[n] / s[n], 1e-300))  # t > 0
+    p = np.concatenate([H.ravel("F"), g, A.ravel("F"), Ns.ravel("F"), [prob.r2]])
+    res, st = sv.ipopt(x0=z0 / s, p=p, lbx=lbx, ubx=ubx,
+                       lbg=np.concatenate([lba, [-np.inf]]), ubg=np.concatenate([uba, [0.0]]))
+    zs = res["x"].full().ravel()
+    status = str(st.get("return_status", ""))
+    ok = status in ("Solve_Succeeded", "Solved_To_Acceptable_Level") and bool(
+        np.all(np.isfinite(zs)))
+    lam_g = res["lam_g"].full().ravel()
+    t = zs[n]
+    e = zs[:n] @ Ns @ zs[:n]
+    q_active = abs(e - prob.r2 * t * t) <= 1e-6 * prob.r2 * t * t
+    extra = ((ELLIPSOID, lam_g[-1]),) if q_active else ()
+    binding = _binding(prob, zs, A, lba, uba, lam_g[:-1], extra)[0] if ok else ()
+    return Solution(ok, zs * s, status, int(st.get("iter_count", 0) or 0), "ipopt", binding)
+
+
+def inside(query, cfg, tau):
+    """``tau`` within the ellipsoid (or no ellipsoid), to 1e-9 relative."""
+    return query.radius is None or tau @ cfg.N @ tau <= query.radius**2 * (1 + 1e-9)
+
+
+def solve_ellipsoid(query, cfg, prob: Problem, phi0: float) -> Solution:
+    """Exact solve of a convex push problem (``t`` fixed to 1) with the ellipsoid
+    ``tau^T N tau <= r^2`` when the linear relaxation's optimum (``phi0 = tau^T N tau`` there)
+    lies outside it.
+
+    The ellipsoid is then active; its multiplier ``mu > 0`` solves ``phi(mu) = r^2``, where
+    ``phi(mu) = tau(mu)^T N tau(mu)`` and ``tau(mu)`` minimises the Lagrangian
+    ``1/2 z^T (H + 2 mu N) z + g^T z`` over the linear constraints: a QP (qpOASES). ``phi``
+    decreases with ``mu``; the root is bracketed by growing ``mu`` tenfold, then found by
+    regula falsi (Illinois) on ``1/sqrt(phi)``, nearly linear in ``mu``. Converges to
+    ``|phi / r^2 - 1| <= 1e-11``, i.e. the optimum to solver precision (IPOPT's interior
+    point stops near 1e-6 relative on these ill-conditioned forms)."""
+    n = cfg.N.shape[0]
+    r2 = query.radius**2
+    H0 = np.zeros((n + 1, n + 1)) if prob.H is None else prob.H
+    Nz = np.zeros((n + 1, n + 1))
+    Nz[:n, :n] = cfg.N
+    gt = prob.g[:n]
+    # natural size of mu: balance the objective's curvature (or the linear term alone,
+    # tau = N^-1 g / (2 mu)) against N
+    mu = max(np.trace(H0[:n, :n]) / np.trace(cfg.N),
+             np.sqrt(max(gt @ np.linalg.solve(cfg.N, gt), 0.0) / (4 * r2)), 1e-300)
+    iters = 0
+
+    def phi(m):
+        nonlocal iters
+        trial = Problem(H=H0 + 2 * m * Nz, g=prob.g, A=prob.A, lba=prob.lba, uba=prob.uba,
+                         lbx=prob.lbx, ubx=prob.ubx, names=prob.names, scale=prob.scale)
+        sol = solve_conic(trial)
+        iters += 1
+        return (sol.z[:n] @ cfg.N @ sol.z[:n] if sol.ok else np.nan), sol
+
+    lo, f_lo = 0.0, 1.0 / np.sqrt(phi0) - 1.0 / np.sqrt(r2)  # < 0
+    hi = mu
+    for _ in range(60):
+        p_hi, sol = phi(hi)
+        if not np.isfinite(p_hi):
+            return Solution(False, sol.z, sol.status, iters, "qpoases (ellipsoid multiplier)")
+        f_hi = 1.0 / np.sqrt(max(p_hi, 1e-300)) - 1.0 / np.sqrt(r2)
+        if f_hi >= 0:
+            break
+        lo, f_lo, hi = hi, f_hi, hi * 10.0
+    else:  # even the least-effort point of the linear constraints is outside: infeasible
+        return Solution(False, sol.z, "the ellipsoid and the linear limits do not intersect",
+                         iters, "qpoases (ellipsoid multiplier)", (ELLIPSOID,))
+    best = sol
+    side = 0
+    for _ in range(100):
+        if abs(p_hi / r2 - 1.0) <= 1e-11 or hi - lo <= 1e-15 * hi:
+            break
+        m = hi - f_hi * (hi - lo) / (f_hi - f_lo)
+        if not lo < m < hi:
+            m = 0.5 * (lo + hi)
+        p_m, sol = phi(m)
+        if not np.isfinite(p_m):
+            break
+        f_m = 1.0 / np.sqrt(max(p_m, 1e-300)) - 1.0 / np.sqrt(r2)
+        if f_m >= 0:
+            hi, f_hi, p_hi, best = m, f_m, p_m, sol
+            if side == 1:
+                f_lo *= 0.5
+            side = 1
+        else:
+            lo, f_lo = m, f_m
+            if side == -1:
+                f_hi *= 0.5
+            side = -1
+    # ``best`` is the feasible side (phi <= r^2) of the bracket
+    return Solution(True, best.z, best.status, iters, "qpoases (ellipsoid multiplier)",
+                     tuple(dict.fromkeys(best.binding + (ELLIPSOID,))))
+
