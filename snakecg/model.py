@@ -134,6 +134,32 @@ class RobotModel:
         m = np.asarray(self.robot.mass)
         return np.einsum("...ik,i->...k", P[..., :2], m) / m.sum()
 
+    # CasADi functions as public API (snakecg.casadi_api, docs/casadi.md) -------------------
+    def casadi_function(self, name: str, *, bind: bool = False, **inputs):
+        """The generated :class:`casadi.Function` ``name`` (e.g. ``"constrained_dynamics"``).
+
+        ``bind=True``: the function of ``q``, ``tau``, ... only, with
+        :meth:`function_inputs` embedded and the object placed from ``q``; keyword
+        ``inputs`` override embedded values (``None`` keeps one an input). See
+        :func:`snakecg.casadi_api.casadi_function`.
+        """
+        from .casadi_api import casadi_function
+
+        return casadi_function(self, name, bind=bind, **inputs)
+
+    def function_inputs(self, name: str, q=None) -> dict:
+        """Every input of the generated function ``name`` that the robot or scene fixes
+        (``K``, contact link, side, object mass, ..., the at-rest state and the first active
+        set), by name; with ``q`` also the object's placement ``q_obj``, ``rho``. See
+        :func:`snakecg.casadi_api.function_inputs`."""
+        from .casadi_api import function_inputs
+
+        return function_inputs(self, name, q)
+
+    def __repr__(self) -> str:
+        what = getattr(self, "scene", None) or self.robot
+        return f"<{type(self).__name__} of {what!r}, backend {self.backend_kind!r}>"
+
 
 # ------------------------------------------------------------------------------------------
 @dataclass
