@@ -68,6 +68,12 @@ def _mass(link) -> float:
     return 0.0 if inertial is None or inertial.mass is None else float(inertial.mass)
 
 
+def _round(x: float) -> float:
+    """15 significant digits: the frames' matrix products add rounding errors of ~1e-16, which
+    would turn the file's ``0.15`` into ``0.14999999999999997``."""
+    return float(f"{x:.15g}")
+
+
 def robot_from_urdf(path, *, tol: float = 1e-6, name: str | None = None):
     """The :class:`~snakecg.Robot` of the planar chain in the URDF file ``path`` (see the
     module doc); ``tol``: metres a COM may lie off its link's axis, and the tolerance of
@@ -192,9 +198,9 @@ def robot_from_urdf(path, *, tol: float = 1e-6, name: str | None = None):
             raise InputError(f"{where}: the COM of link {link_name!r} lies outside the link "
                              f"({c:.6g} m from its rear end, length {length:.6g} m)")
         masses.append(m)
-        lengths.append(length)
-        inertias.append(inertia)
-        coms.append(min(max(c, 0.0), length))
+        lengths.append(_round(length))
+        inertias.append(_round(inertia))
+        coms.append(_round(min(max(c, 0.0), length)))
     try:
         return Robot(joints=nl - 1, mass=tuple(masses), length=tuple(lengths),
                      inertia=tuple(inertias), com=tuple(coms),

@@ -224,3 +224,12 @@ def test_cli_takes_a_urdf_robot(rng, tmp_path, capsys):
                  "--tau", "0.01,0"]) == 2
     err = capsys.readouterr().err
     assert "joint 'joint2' is prismatic" in err and len(err.strip().splitlines()) == 1
+
+
+def test_the_example_urdf_is_the_example_toml_robot():
+    from pathlib import Path
+
+    root = Path(__file__).resolve().parents[1] / "examples"
+    a = snakecg.Robot.from_urdf(root / "snake3.urdf")
+    b = snakecg.Robot.from_toml(root / "robot.toml")
+    assert a == b and a.name == b.name  # Table 1, exactly (the lengths rounded from 1e-17)
