@@ -11,6 +11,8 @@ from ..errors import InputError
 from ._common import add_robot_args, parse_vector, progress_reporter, scene_from_args
 
 FORMATS = ("png", "pdf", "svg")
+#: Version of the JSON printed by ``snakecg plot --json``.
+SCHEMA = "snakecg.plot/1"
 
 EXAMPLES = """\
 examples:
@@ -38,6 +40,8 @@ def register(sub) -> None:
     p.add_argument("--out", required=True, metavar="FILE",
                    help=f"figure file ({', '.join(FORMATS)})")
     p.add_argument("--dpi", type=int, default=150, help="resolution of a PNG (default 150)")
+    p.add_argument("--json", action="store_true",
+                   help=f"print what was drawn as JSON (schema {SCHEMA})")
     p.set_defaults(run=run)
 
 
@@ -62,7 +66,7 @@ def run(args) -> int:
 
     model = load(scene, progress=progress_reporter())
     fig = Figure(figsize=(6.4, 5.2), constrained_layout=True)
-    plot(model, q, tau, ax=fig.add_subplot())
+    ax = plot(model, q, tau, ax=fig.add_subplot())
     fd, tmp = tempfile.mkstemp(prefix=f".{out.name}.", suffix=f".{fmt}", dir=out.parent)
     os.close(fd)
     try:
@@ -72,5 +76,12 @@ def run(args) -> int:
     except BaseException:
         Path(tmp).unlink(missing_ok=True)
         raise
+    if args.json:
+        from ._common import print_json
+
+        print_json({"schema": SCHEMA, "file": str(out), "format": fmt, "joints":
+                    scene.robot.joints, "scenario": scene.scenario, "q": q, "tau": tau,
+                    "title": ax.get_title()})
+        return 0
     print(f"wrote {out}")
     return 0
