@@ -43,7 +43,7 @@ def configuration_geometry(model, q, tau=None) -> dict:
     normal_dirs = np.stack([-np.sin(phi), np.cos(phi)], axis=1)
     rear = poses[:, :2] - np.asarray(robot.com)[:, None] * e
     front = rear + np.asarray(robot.length)[:, None] * e
-    q_obj, rho, P = model.place_object(q1)
+    q_obj, _, P = model.place_object(q1)
     k = scene.contact_link - 1
     normal = scene.side_sign * normal_dirs[k]
     half = scene.object_distance

@@ -44,8 +44,14 @@ def load(obj, *, backend: str = "compiled", progress=None):
     The generated model for the joint count is taken from the package or the user cache
     (generated once if missing), compiled once into a cached shared library and shared by
     every robot with that joint count. ``backend="casadi"`` evaluates with CasADi's
-    in-process virtual machine instead of the compiled C.
+    in-process virtual machine instead of the compiled C. ``progress``: ``None`` reports
+    the generation and compilation steps on a terminal or in a Jupyter notebook (quiet
+    elsewhere, see :mod:`snakecg.progress`), ``False`` never, or a callable taking each
+    step's message.
     """
+    from .progress import resolve  # None: model builds reported on a terminal or notebook
+
+    progress = resolve(progress)
     if isinstance(obj, Scene):
         return SceneModel(obj, backend=backend, progress=progress)
     if isinstance(obj, Robot):
@@ -548,8 +554,13 @@ class SceneModel(RobotModel):
         """Best and worst ``norm_a_obj``, ``norm_qdd``, ``norm_lambda`` and ``sr`` over the
         input ellipsoid of eq. (31); see :func:`snakecg.analysis.extremes`."""
         from .analysis import extremes
+        from .progress import in_chunks
 
-        return extremes(self, q, **kwargs)
+        qa, batched = self._q(q)
+        if not batched:
+            return extremes(self, q, **kwargs)
+        chunk = 256 if self.scene.scenario == "wheels" else 8192  # a bar on long batches
+        return in_chunks(lambda part: extremes(self, part, **kwargs), qa, chunk, "extremes")
 
     def com_polar(self, q):
         """Polar coordinates ``(|COM|, angle COM)`` of the snake's COM w.r.t. the contact point,

@@ -54,7 +54,7 @@ def _load(path: Path):
         return yourdfpy.URDF.load(str(path), build_scene_graph=False, load_meshes=False,
                                   build_collision_scene_graph=False,
                                   load_collision_meshes=False)
-    except Exception as exc:  # yourdfpy/lxml raise many kinds for a malformed file
+    except Exception as exc:  # noqa: BLE001 - yourdfpy raises many kinds for a bad file
         raise InputError(f"URDF file {str(path)!r} cannot be read: "
                          f"{' '.join(str(exc).split()) or type(exc).__name__}") from None
 
@@ -167,7 +167,7 @@ def robot_from_urdf(path, *, tol: float = 1e-6, name: str | None = None):
         inertia = float(n @ T[:3, :3] @ Ic @ T[:3, :3].T @ n)
         tip = None
         if link_name in tips:
-            tj, tl = tips[link_name]
+            tj, _ = tips[link_name]
             tip = planar((frame[link_name] @ _origin(tj.origin))[:3, 3])
         if 0 < k < nl - 1:
             rear, front = joint_pos[k - 1], joint_pos[k]

@@ -60,7 +60,7 @@ def test_exported_library_builds_with_make_and_matches_the_runtime(tmp_path, rng
     if shutil.which("make") is None:
         pytest.skip("make is not installed")
     res = subprocess.run(["make", "-C", str(out), f"CC={CC}", "CFLAGS=" + " ".join(FLAGS)],
-                         capture_output=True, text=True)
+                         capture_output=True, text=True, check=False)
     assert res.returncode == 0, res.stderr[-3000:]
     assert _own_warnings(res.stderr) == []
     scene = snakecg.Scene.from_toml(toml)
@@ -84,7 +84,7 @@ def test_exported_library_builds_with_make_and_matches_the_runtime(tmp_path, rng
             scale = max(1.0, np.abs(getattr(fw, k)).max())
             np.testing.assert_allclose(got[k], getattr(fw, k), rtol=0, atol=1e-11 * scale)
         assert got["sr"][0] == pytest.approx(float(fw.sr), rel=1e-11)
-        q_obj, rho, P = model.place_object(q)
+        q_obj, _, P = model.place_object(q)
         np.testing.assert_allclose(got["q_obj"], q_obj, atol=1e-14)
         np.testing.assert_allclose(got["contact_point"], P, atol=1e-14)
 
@@ -120,7 +120,7 @@ def test_header_sizes_and_baked_parameters_follow_the_manifest(tmp_path, random_
     srcs = [str(f) for f in files if f.suffix == ".c"]
     exe = tmp_path / "example"
     res = subprocess.run([CC, *FLAGS, "-I", str(tmp_path / "x"), *srcs, "-o", str(exe), "-lm"],
-                         capture_output=True, text=True, cwd=tmp_path / "x")
+                         capture_output=True, text=True, cwd=tmp_path / "x", check=False)
     assert res.returncode == 0, res.stderr[-3000:]
     assert _own_warnings(res.stderr) == []
     got = subprocess.run([str(exe)], capture_output=True, text=True, check=True).stdout

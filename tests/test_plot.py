@@ -88,7 +88,7 @@ def test_figure_coordinates_match_independent_kinematics_and_forces(contact_link
     np.testing.assert_allclose(at_o[0], P + scene.object_distance * n, atol=1e-12)
     if np.hypot(*sol["a_obj"][:2]) > 1e-9:
         assert _parallel(a_o[0], sol["a_obj"][:2], tol=1e-7)
-    at_l, a_l = _arrows(ax, "acc_links")
+    _, a_l = _arrows(ax, "acc_links")
     J = ref.jacobians(q)
     acc = np.einsum("iak,k->ia", J[:, :2], sol["qdd"])
     s = np.hypot(*a_l[0]) / np.hypot(*acc[0])

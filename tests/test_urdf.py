@@ -160,9 +160,10 @@ BAD = {
                   'type="prismatic"><parent link="link3"/><child link="slider"/>'
                   '<axis xyz="1 0 0"/><limit lower="-1" upper="1" effort="1" velocity="1"/>'
                   '</joint>', r"joint 'slide' is prismatic"),
-    "fixed_mass": ('<link name="camera"><inertial><mass value="0.2"/><inertia ixx="1" ixy="0" '
-                   'ixz="0" iyy="1" iyz="0" izz="1"/></inertial></link><joint name="cam_mount"'
-                   ' type="fixed"><parent link="link1"/><child link="camera"/></joint>',
+    "fixed_mass": (('<link name="camera"><inertial><mass value="0.2"/><inertia ixx="1" '
+                    'ixy="0" ixz="0" iyy="1" iyz="0" izz="1"/></inertial></link><joint '
+                    'name="cam_mount" type="fixed"><parent link="link1"/><child '
+                    'link="camera"/></joint>'),
                    r"fixed joint 'cam_mount' attaches link 'camera', which has mass"),
 }
 
