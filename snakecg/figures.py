@@ -101,11 +101,14 @@ def plot(scene, q, tau=None, ax=None, *, title: str | None = None):
     L0 = 0.6 * float(np.mean(model.robot.length))
     ax.add_patch(Polygon(g["corners"], closed=True, fc=COLORS["object"], ec="k", lw=1,
                          gid="object", label="object", zorder=1))
+    first_other = 1 if sc.contact_link == 1 else 0
     for i in range(model.n_links):
-        colour = COLORS["contact_link"] if i == sc.contact_link - 1 else COLORS["snake"]
-        ax.plot(*np.stack([g["rear"][i], g["front"][i]]).T, "-", lw=6, color=colour,
-                solid_capstyle="round", gid=f"link{i + 1}", zorder=2,
-                label="snake" if i == 0 else None)
+        contact = i == sc.contact_link - 1
+        label = (f"contact link ({sc.contact_link})" if contact else
+                 "snake (link 1 = tail)" if i == first_other else None)
+        ax.plot(*np.stack([g["rear"][i], g["front"][i]]).T, "-", lw=6, solid_capstyle="round",
+                color=COLORS["contact_link"] if contact else COLORS["snake"],
+                gid=f"link{i + 1}", zorder=2, label=label)
     joints = g["front"][:-1]
     ax.plot(joints[:, 0], joints[:, 1], "o", color="k", ms=4, gid="joints", zorder=3)
     ax.plot(g["poses"][:, 0], g["poses"][:, 1], "+", color="w", ms=6, mew=1.5, gid="coms",
