@@ -29,5 +29,14 @@ __all__ = [
     "BuildError",
     "ArtifactError",
     "SingularConstraintsError",
+    "plot",
     "__version__",
 ]
+
+
+def __getattr__(name):  # snakecg.plot, imported on first use (matplotlib is only needed then)
+    if name == "plot":
+        from .figures import plot
+
+        return plot
+    raise AttributeError(f"module 'snakecg' has no attribute {name!r}")

@@ -18,6 +18,8 @@ from . import __version__
 from .errors import InputError, SnakecgError
 
 COMMANDS = ("generate", "show", "forward", "reproduce", "optimize", "simulate")
+#: Toolkit commands (C export, configuration plots).
+COMMANDS += ("export", "plot")
 
 
 class _Parser(argparse.ArgumentParser):

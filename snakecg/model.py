@@ -45,8 +45,14 @@ def load(obj, *, backend: str = "compiled", progress=None):
     The generated model for the joint count is taken from the package or the user cache
     (generated once if missing), compiled once into a cached shared library and shared by
     every robot with that joint count. ``backend="casadi"`` evaluates with CasADi's
-    in-process virtual machine instead of the compiled C.
+    in-process virtual machine instead of the compiled C. ``progress``: ``None`` reports
+    the generation and compilation steps on a terminal or in a Jupyter notebook (quiet
+    elsewhere, see :mod:`snakecg.progress`), ``False`` never, or a callable taking each
+    step's message.
     """
+    from .progress import resolve  # None: model builds reported on a terminal or notebook
+
+    progress = resolve(progress)
     if isinstance(obj, Scene):
         return SceneModel(obj, backend=backend, progress=progress)
     if isinstance(obj, Robot):
@@ -134,6 +140,32 @@ class RobotModel:
         P = self.link_poses(q)
         m = np.asarray(self.robot.mass)
         return np.einsum("...ik,i->...k", P[..., :2], m) / m.sum()
+
+    # CasADi functions as public API (snakecg.casadi_api, docs/casadi.md) -------------------
+    def casadi_function(self, name: str, *, bind: bool = False, **inputs):
+        """The generated :class:`casadi.Function` ``name`` (e.g. ``"constrained_dynamics"``).
+
+        ``bind=True``: the function of ``q``, ``tau``, ... only, with
+        :meth:`function_inputs` embedded and the object placed from ``q``; keyword
+        ``inputs`` override embedded values (``None`` keeps one an input). See
+        :func:`snakecg.casadi_api.casadi_function`.
+        """
+        from .casadi_api import casadi_function
+
+        return casadi_function(self, name, bind=bind, **inputs)
+
+    def function_inputs(self, name: str, q=None) -> dict:
+        """Every input of the generated function ``name`` that the robot or scene fixes
+        (``K``, contact link, side, object mass, ..., the at-rest state and the first active
+        set), by name; with ``q`` also the object's placement ``q_obj``, ``rho``. See
+        :func:`snakecg.casadi_api.function_inputs`."""
+        from .casadi_api import function_inputs
+
+        return function_inputs(self, name, q)
+
+    def __repr__(self) -> str:
+        what = getattr(self, "scene", None) or self.robot
+        return f"<{type(self).__name__} of {what!r}, backend {self.backend_kind!r}>"
 
 
 # ------------------------------------------------------------------------------------------
@@ -546,8 +578,13 @@ class SceneModel(RobotModel):
         """Best and worst ``norm_a_obj``, ``norm_qdd``, ``norm_lambda`` and ``sr`` over the
         input ellipsoid of eq. (31); see :func:`snakecg.analysis.extremes`."""
         from .analysis import extremes
+        from .progress import in_chunks
 
-        return extremes(self, q, **kwargs)
+        qa, batched = self._q(q)
+        if not batched:
+            return extremes(self, q, **kwargs)
+        chunk = 256 if self.scene.scenario == "wheels" else 8192  # a bar on long batches
+        return in_chunks(lambda part: extremes(self, part, **kwargs), qa, chunk, "extremes")
 
     def com_polar(self, q):
         """Polar coordinates ``(|COM|, angle COM)`` of the snake's COM w.r.t. the contact point,

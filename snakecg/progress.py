@@ -1,8 +1,12 @@
-"""Progress display for long work: quiet unless standard error is a terminal.
+"""Progress display for long work: shown on a terminal and in a Jupyter notebook, quiet
+otherwise.
 
 ``SNAKECG_PROGRESS=1`` forces it on and ``SNAKECG_PROGRESS=0`` off, so pipes, files and CI
 logs stay clean. Steps (derivation, compilation) print one line each through
-:func:`progress_reporter`; sweeps use tqdm through :func:`progress_bar`.
+:func:`progress_reporter`; sweeps use tqdm through :func:`progress_bar` (in a notebook,
+tqdm's widget when ipywidgets is installed, else its text bar); long batches of
+``model.extremes`` go in chunks through :func:`in_chunks`. ``snakecg.load`` reports model
+builds by default (:func:`resolve`).
 """
 
 from __future__ import annotations
@@ -11,7 +15,24 @@ import os
 import sys
 import time
 
-__all__ = ["progress_enabled", "progress_reporter", "progress_bar"]
+__all__ = ["progress_enabled", "progress_reporter", "progress_bar", "in_notebook", "resolve",
+           "in_chunks"]
+
+
+def in_notebook() -> bool:
+    """Whether this runs in a Jupyter kernel (where standard error is no terminal, but the
+    notebook shows what is written to it)."""
+    ipython = sys.modules.get("IPython")
+    if ipython is None:
+        return False
+    try:
+        shell = ipython.get_ipython()
+    except Exception:  # noqa: BLE001 - any IPython oddity means "not a notebook"
+        return False
+    if shell is None:
+        return False
+    return getattr(shell, "kernel", None) is not None or "IPKernelApp" in getattr(
+        shell, "config", {})
 
 
 def progress_enabled(stream=None) -> bool:
@@ -22,9 +43,11 @@ def progress_enabled(stream=None) -> bool:
         return forced == "1"
     stream = sys.stderr if stream is None else stream
     try:
-        return bool(stream.isatty())
+        if stream.isatty():
+            return True
     except (AttributeError, ValueError):
         return False
+    return stream is sys.stderr and in_notebook()
 
 
 def progress_reporter(stream=None):
@@ -48,5 +71,57 @@ def progress_bar(total: int, desc: str, *, enabled: bool = True, stream=None):
     from tqdm import tqdm
 
     stream = sys.stderr if stream is None else stream
-    return tqdm(total=total, desc=desc, unit="step", leave=False, file=stream,
-                disable=not (enabled and progress_enabled(stream)))
+    on = enabled and progress_enabled(stream)
+    if on and stream is sys.stderr and in_notebook():
+        try:
+            from tqdm.notebook import IProgress
+            from tqdm.notebook import tqdm as notebook_tqdm
+        except ImportError:
+            IProgress = None
+        if IProgress is not None:  # ipywidgets is installed: tqdm's notebook widget
+            return notebook_tqdm(total=total, desc=desc, unit="step", leave=False)
+    return tqdm(total=total, desc=desc, unit="step", leave=False, file=stream, disable=not on)
+
+
+def resolve(progress):
+    """The ``progress`` argument of ``snakecg.load``: ``None`` (default) reports on a terminal
+    or in a notebook (:func:`progress_reporter`), ``False`` never, a callable is used."""
+    if progress is None:
+        return progress_reporter()
+    if progress is False:
+        return None
+    return progress
+
+
+def in_chunks(fn, qa, chunk: int, desc: str, *, stream=None):
+    """``fn(qa)`` for a batch ``qa`` (N, n_s), evaluated ``chunk`` rows at a time with a
+    progress bar when progress is shown and N > chunk (else in one call); the chunks'
+    results (dataclasses whose fields are dictionaries of arrays, arrays or other values) are
+    joined along the batch axis."""
+    import dataclasses
+
+    import numpy as np
+
+    n = qa.shape[0]
+    if n <= chunk or not progress_enabled(stream):
+        return fn(qa)
+    parts = []
+    bar = progress_bar(n, desc, stream=stream)
+    try:
+        for lo in range(0, n, chunk):
+            parts.append(fn(qa[lo:lo + chunk]))
+            bar.update(min(chunk, n - lo))
+    finally:
+        bar.close()
+    first = parts[0]
+    joined = {}
+    for f in dataclasses.fields(first):
+        v = getattr(first, f.name)
+        if isinstance(v, dict):
+            joined[f.name] = {k: np.concatenate([getattr(p, f.name)[k] for p in parts])
+                              for k in v}
+        elif isinstance(v, np.ndarray) and v.ndim >= 1 and v.shape[0] == len(qa[:chunk]):
+            joined[f.name] = np.concatenate([getattr(p, f.name) for p in parts])
+        else:
+            joined[f.name] = v
+    return dataclasses.replace(first, **joined)

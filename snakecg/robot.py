@@ -200,6 +200,19 @@ class Robot:
             raise _file_error(path, problems)
         return robot
 
+    @classmethod
+    def from_urdf(cls, path: str | Path, *, tol: float = 1e-6, name: str | None = None) -> Robot:
+        """Read a planar serial chain of revolute joints with parallel axes from a URDF file
+        (masses, joint-to-joint lengths, COM offsets along the links, inertias about the
+        joint axis); anything else is refused naming the element. Needs the ``urdf`` extra;
+        see :mod:`snakecg.urdf` and docs/urdf.md."""
+        from .urdf import robot_from_urdf
+
+        return robot_from_urdf(path, tol=tol, name=name)
+
+    def __repr__(self) -> str:
+        return f"Robot({_fields_repr(self, ('joints', 'mass', 'length', 'inertia', 'com'))})"
+
 
 _ROBOT_KEYS = {"joints", "mass", "length", "inertia", "com", "name"}
 _SCENE_KEYS = {
@@ -342,6 +355,10 @@ class Scene:
         fields.update(changes)
         return Scene(**fields)
 
+    def __repr__(self) -> str:
+        fields = _fields_repr(self, _SCENE_REPR)
+        return f"Scene({self.robot!r}{', ' if fields else ''}{fields})"
+
     @classmethod
     def from_toml(cls, path: str | Path, **overrides) -> Scene:
         """Robot and ``[scene]`` table of a description file; keyword overrides win.
@@ -471,3 +488,33 @@ def _scene_problems(r: Robot | None, f: dict, *, n_links: int | None = None
         "contact_link": k, "contact_offset": offset, "side": side, "object_distance": dist,
         "object_inertia": inertia, "wheel_links": wheels, "wheel_offset": woff,
     }
+
+
+_SCENE_REPR = ("scenario", "kappa", "mu", "gravity", "contact_link", "contact_offset", "side",
+               "object_distance", "object_inertia", "wheel_links", "wheel_offset")
+
+
+def _fields_repr(obj, names) -> str:
+    """``name=value`` for the fields that differ from their defaults (what ``Robot(...)`` or
+    ``Scene(...)`` would fill in itself), one number for a per-link tuple of equal values;
+    the text evaluates back to an equal object."""
+    if isinstance(obj, Robot):
+        base = Robot(joints=obj.joints, length=obj.length)  # com defaults to length / 2
+        defaults = {k: getattr(Robot(joints=obj.joints), k) for k in names}
+        defaults["com"] = base.com
+    else:
+        defaults = {k: getattr(Scene(obj.robot), k) for k in names}
+        linked = Scene(obj.robot, contact_link=obj.contact_link, kappa=obj.kappa)
+        for k in ("contact_offset", "wheel_links", "object_inertia"):
+            defaults[k] = getattr(linked, k)
+    parts = []
+    for k in names:
+        v = getattr(obj, k)
+        if k != "joints" and v == defaults[k]:
+            continue
+        if isinstance(v, tuple) and v and k != "wheel_links" and len(set(v)) == 1:
+            v = v[0]
+        parts.append(f"{k}={v!r}")
+    if isinstance(obj, Robot) and obj.name != "snake":
+        parts.append(f"name={obj.name!r}")
+    return ", ".join(parts)

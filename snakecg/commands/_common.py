@@ -65,9 +65,13 @@ def add_robot_args(p, *, scene: bool = True) -> None:
                        help="object side of the contact link (default left)")
 
 
+def _is_urdf(path) -> bool:
+    return str(path).lower().endswith(".urdf")
+
+
 def robot_from_args(args) -> Robot:
     if args.robot:
-        robot = Robot.from_toml(args.robot)
+        robot = (Robot.from_urdf if _is_urdf(args.robot) else Robot.from_toml)(args.robot)
         if args.joints is not None and args.joints != robot.joints:
             raise InputError(
                 f"--joints {args.joints} contradicts the robot file ({robot.joints} joints)"
@@ -82,7 +86,10 @@ def scene_from_args(args) -> Scene:
         "scenario": args.scenario, "kappa": args.kappa, "mu": args.mu,
         "contact_link": args.contact_link, "side": args.side,
     }
-    if args.robot:
+    if args.robot and _is_urdf(args.robot):  # a URDF has no [scene]: the options alone
+        scene = Scene(robot_from_args(args), **{k: v for k, v in overrides.items()
+                                                if v is not None})
+    elif args.robot:
         scene = Scene.from_toml(args.robot, **overrides)
         if args.joints is not None and args.joints != scene.robot.joints:
             raise InputError(

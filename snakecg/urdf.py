@@ -1,0 +1,209 @@
+"""Robots from URDF: a planar serial chain of revolute joints with parallel axes.
+
+:func:`robot_from_urdf` reads a URDF file with yourdfpy (the ``urdf`` extra) and returns the
+:class:`~snakecg.Robot` it describes:
+
+* the chain: the root link is link 1 (the tail); each link has at most one child through a
+  ``revolute`` or ``continuous`` joint; every joint axis is parallel to the first one (the
+  plane's normal ``n``; positions are projected onto the plane);
+* ``length``: for a link between two joints, the distance between them; for the two end
+  links, the distance from the joint to the link's *tip*: a massless child link attached by
+  a ``fixed`` joint (a tip frame); without a tip, twice the distance from the joint to the
+  COM (the COM in the middle);
+* ``com``: the COM's distance from the link's rear end along the link, which must lie on the
+  link's axis (the line through its joints) within ``tol`` metres;
+* ``mass`` and ``inertia``: the ``<inertial>`` mass and the inertia about the COM about the
+  plane's normal, ``n^T R I R^T n`` with ``R`` the inertial frame's orientation.
+
+Anything else (a branch, a prismatic, floating or planar joint, a joint axis not parallel to
+the first, a COM off the link axis, a link without mass, a fixed joint to a link with mass)
+is refused with an :class:`~snakecg.InputError` naming the element. Joint angles: snakecg's
+``q_j`` is measured about ``n`` from the previous link's axis; the URDF's zero configuration
+may be bent (``q_urdf = q_snakecg - offset``).
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+
+from .errors import InputError
+
+__all__ = ["robot_from_urdf"]
+
+_REVOLUTE = ("revolute", "continuous")
+
+
+def _load(path: Path):
+    try:
+        import yourdfpy
+    except ImportError:
+        raise InputError("reading URDF needs the yourdfpy package: pip install "
+                         "'snakecg[urdf]'") from None
+    if not path.is_file():
+        raise InputError(f"URDF file {str(path)!r} does not exist or is not a file")
+    from lxml import etree  # yourdfpy's XML library
+
+    try:  # yourdfpy recovers from malformed XML silently: refuse it first
+        etree.parse(str(path), etree.XMLParser(resolve_entities=False, no_network=True))
+    except (etree.XMLSyntaxError, OSError) as exc:
+        raise InputError(f"URDF file {str(path)!r} cannot be read: not well-formed XML "
+                         f"({' '.join(str(exc).split())})") from None
+    try:
+        return yourdfpy.URDF.load(str(path), build_scene_graph=False, load_meshes=False,
+                                  build_collision_scene_graph=False,
+                                  load_collision_meshes=False)
+    except Exception as exc:  # noqa: BLE001 - yourdfpy raises many kinds for a bad file
+        raise InputError(f"URDF file {str(path)!r} cannot be read: "
+                         f"{' '.join(str(exc).split()) or type(exc).__name__}") from None
+
+
+def _origin(T) -> np.ndarray:
+    return np.eye(4) if T is None else np.asarray(T, dtype=float)
+
+
+def _mass(link) -> float:
+    inertial = link.inertial
+    return 0.0 if inertial is None or inertial.mass is None else float(inertial.mass)
+
+
+def _round(x: float) -> float:
+    """15 significant digits: the frames' matrix products add rounding errors of ~1e-16, which
+    would turn the file's ``0.15`` into ``0.14999999999999997``."""
+    return float(f"{x:.15g}")
+
+
+def robot_from_urdf(path, *, tol: float = 1e-6, name: str | None = None):
+    """The :class:`~snakecg.Robot` of the planar chain in the URDF file ``path`` (see the
+    module doc); ``tol``: metres a COM may lie off its link's axis, and the tolerance of
+    the parallel-axes test (radians)."""
+    from .robot import Robot
+
+    p = Path(path)
+    urdf = _load(p)
+    where = f"URDF file {str(p)!r}"
+    robot = urdf.robot
+    links = {ln.name: ln for ln in robot.links}
+    joints = list(robot.joints)
+    children: dict[str, list] = {n: [] for n in links}
+    parents = {}
+    for j in joints:
+        if j.parent not in links or j.child not in links:
+            raise InputError(f"{where}: joint {j.name!r} connects unknown links "
+                             f"{j.parent!r} -> {j.child!r}")
+        children[j.parent].append(j)
+        parents[j.child] = j
+    roots = [n for n in links if n not in parents]
+    if len(roots) != 1:
+        raise InputError(f"{where}: expected one root link, found {len(roots)}: "
+                         f"{', '.join(roots) or 'none (the joints form a loop)'}")
+    # walk the chain: one revolute child per link; massless fixed leaves are tip frames
+    chain, chain_joints, tips = [roots[0]], [], {}
+    while True:
+        here = chain[-1]
+        moving = []
+        for j in children[here]:
+            if j.type in _REVOLUTE:
+                moving.append(j)
+            elif j.type == "fixed":
+                child = links[j.child]
+                if _mass(child) > 0 or children[j.child]:
+                    raise InputError(
+                        f"{where}: fixed joint {j.name!r} attaches link {j.child!r}, which "
+                        "has mass or children; merge it into link "
+                        f"{here!r} (only massless tip frames may be fixed)")
+                if here in tips:
+                    raise InputError(f"{where}: link {here!r} has two tip frames "
+                                     f"({tips[here][0].name!r} and {j.name!r})")
+                tips[here] = (j, j.child)
+            else:
+                raise InputError(f"{where}: joint {j.name!r} is {j.type}; a snake is a planar "
+                                 "chain of revolute joints")
+        if len(moving) > 1:
+            raise InputError(f"{where}: the chain branches at link {here!r} (joints "
+                             f"{', '.join(repr(j.name) for j in moving)}); a snake is a "
+                             "serial chain")
+        if not moving:
+            break
+        chain_joints.append(moving[0])
+        chain.append(moving[0].child)
+    if not chain_joints:
+        raise InputError(f"{where}: no revolute joint; a snake has at least one")
+    # frames at the zero configuration, in the root link's frame
+    frame = {chain[0]: np.eye(4)}
+    for j in chain_joints:
+        frame[j.child] = frame[j.parent] @ _origin(j.origin)
+    axes = []
+    for j in chain_joints:
+        a = np.asarray(j.axis if j.axis is not None else (1.0, 0.0, 0.0), dtype=float)
+        norm = np.linalg.norm(a)
+        if not norm > 0:
+            raise InputError(f"{where}: joint {j.name!r} has a zero axis")
+        axes.append(frame[j.child][:3, :3] @ (a / norm))
+    n = axes[0]
+    for j, a in zip(chain_joints[1:], axes[1:]):
+        if np.linalg.norm(np.cross(n, a)) > tol:
+            angle = np.degrees(np.arcsin(min(1.0, np.linalg.norm(np.cross(n, a)))))
+            raise InputError(f"{where}: the axis of joint {j.name!r} is {angle:.3g} deg off "
+                             f"the axis of joint {chain_joints[0].name!r}; a planar snake "
+                             "needs parallel joint axes")
+
+    def planar(x):  # a point projected onto the plane through joint 1, normal n
+        return x - n * (n @ x)
+
+    joint_pos = [planar(frame[j.child][:3, 3]) for j in chain_joints]
+    masses, lengths, inertias, coms = [], [], [], []
+    nl = len(chain)
+    for k, link_name in enumerate(chain):
+        link = links[link_name]
+        m = _mass(link)
+        if not m > 0:
+            raise InputError(f"{where}: link {link_name!r} has no positive <inertial> mass")
+        T = frame[link_name] @ _origin(link.inertial.origin)
+        com = planar(T[:3, 3])
+        Ic = np.zeros((3, 3)) if link.inertial.inertia is None else np.asarray(
+            link.inertial.inertia, dtype=float)
+        inertia = float(n @ T[:3, :3] @ Ic @ T[:3, :3].T @ n)
+        tip = None
+        if link_name in tips:
+            tj, _ = tips[link_name]
+            tip = planar((frame[link_name] @ _origin(tj.origin))[:3, 3])
+        if 0 < k < nl - 1:
+            rear, front = joint_pos[k - 1], joint_pos[k]
+            if tip is not None:
+                raise InputError(f"{where}: link {link_name!r} lies between two joints and "
+                                 f"cannot have a tip frame ({tips[link_name][0].name!r})")
+        elif k == 0:
+            front = joint_pos[0]
+            rear = tip if tip is not None else 2 * com - front
+        else:
+            rear = joint_pos[-1]
+            front = tip if tip is not None else 2 * com - rear
+        axis = front - rear
+        length = float(np.linalg.norm(axis))
+        if not length > tol:
+            what = ("joints" if 0 < k < nl - 1 else
+                    "joint and tip frame" if tip is not None else "joint and COM")
+            raise InputError(f"{where}: link {link_name!r} has zero length (its {what} "
+                             "coincide); give its end as a massless tip frame")
+        e = axis / length
+        c = float(e @ (com - rear))
+        off = float(np.linalg.norm(com - rear - c * e))
+        if off > tol:
+            raise InputError(f"{where}: the COM of link {link_name!r} lies {off:.3g} m off "
+                             f"the link's axis (tolerance {tol:g} m); snakecg's links carry "
+                             "their COM on the line through their joints")
+        if not -tol <= c <= length + tol:
+            raise InputError(f"{where}: the COM of link {link_name!r} lies outside the link "
+                             f"({c:.6g} m from its rear end, length {length:.6g} m)")
+        masses.append(m)
+        lengths.append(_round(length))
+        inertias.append(_round(inertia))
+        coms.append(_round(min(max(c, 0.0), length)))
+    try:
+        return Robot(joints=nl - 1, mass=tuple(masses), length=tuple(lengths),
+                     inertia=tuple(inertias), com=tuple(coms),
+                     name=name or robot.name or p.stem)
+    except InputError as exc:
+        raise InputError(f"{where}: {exc}") from None
