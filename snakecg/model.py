@@ -17,7 +17,8 @@ from pathlib import Path
 import numpy as np
 
 from . import artifacts
-from ._inputs import as_batch, broadcast_batches, expand
+from ._inputs import (CHUNK_ROWS, MAX_MAGNITUDE, as_batch, broadcast_batches, check_batch_memory,
+                      expand)
 from .errors import InputError
 from .native import load_backend
 from .robot import Robot, Scene
@@ -25,6 +26,9 @@ from .solver import (ABSENT, HELD, LOST, PIVOT_TOL, REGULARIZATION, SLIDE_NEG, S
                      _violations_one, default_max_iter, solve_active_set)
 
 __all__ = ["load", "RobotModel", "SceneModel", "ForwardResult"]
+
+#: Rows of one ``extremes`` call on a large batch (each row needs tens of kB while it runs).
+EXTREMES_CHUNK_ROWS = 2048
 
 _BACKENDS: dict[tuple[int, str], tuple[object, dict, Path]] = {}
 
@@ -46,11 +50,21 @@ def load(obj, *, backend: str = "compiled", progress=None):
     every robot with that joint count. ``backend="casadi"`` evaluates with CasADi's
     in-process virtual machine instead of the compiled C.
     """
+    _check_load_args(backend, progress)
     if isinstance(obj, Scene):
         return SceneModel(obj, backend=backend, progress=progress)
     if isinstance(obj, Robot):
         return RobotModel(obj, backend=backend, progress=progress)
     raise InputError(f"load() takes a snakecg.Robot or snakecg.Scene, got {type(obj).__name__}")
+
+
+def _check_load_args(backend, progress) -> None:
+    """``backend`` and ``progress`` of :func:`load`, checked before any generation."""
+    if not isinstance(backend, str) or backend not in ("compiled", "casadi"):
+        raise InputError(f"backend must be 'compiled' or 'casadi', got {backend!r:.60}")
+    if progress is not None and not callable(progress):
+        raise InputError(f"progress must be None or a callable taking a message, got "
+                         f"{type(progress).__name__}")
 
 
 class RobotModel:
@@ -59,6 +73,7 @@ class RobotModel:
     def __init__(self, robot: Robot, *, backend: str = "compiled", progress=None):
         if not isinstance(robot, Robot):
             raise InputError(f"robot must be a snakecg.Robot, got {type(robot).__name__}")
+        _check_load_args(backend, progress)
         self.robot = robot
         self.backend, self.manifest, self.folder = _backend(robot.joints, backend, progress)
         self.n_joints = robot.joints
@@ -275,6 +290,8 @@ class SceneModel(RobotModel):
         batched = any(b for _, b in parts.values())
         if ("q_obj" in extra) != ("rho" in extra):
             raise InputError("q_obj and rho go together: give both or neither")
+        if n > CHUNK_ROWS:
+            return self._forward_chunked(parts, n, max_iter)
         if not batched and self.backend.kind == "compiled":
             res = self._forward_one(qa[0], ta[0], extra, max_iter)
             if res is not None:
@@ -291,6 +308,24 @@ class SceneModel(RobotModel):
         }
         sol = self._solve(base, n, max_iter=max_iter)
         return self._result(sol, expand(ta, n), batched)
+
+    def _forward_chunked(self, parts: dict, n: int, max_iter) -> ForwardResult:
+        """A large batch in chunks of CHUNK_ROWS rows, written into the result arrays: the
+        working memory stays that of one chunk; a result that would not fit is refused."""
+        ns, nc, nl, na = self.n_coordinates, self.n_constraints, self.n_links, self.n_joints
+        per_row = 8 * (ns + 3 + 2 * nc + 6 + na) + 24 * nl + 2
+        check_batch_memory("forward", n, per_row, what="results")
+        out = None
+        for start in range(0, n, CHUNK_ROWS):
+            stop = min(n, start + CHUNK_ROWS)
+            args = {k: (a[start:stop] if a.shape[0] == n else a) for k, (a, _) in parts.items()}
+            chunk = self.forward(args.pop("q"), args.pop("tau"), max_iter=max_iter, **args)
+            if out is None:
+                out = {k: np.empty((n,) + np.shape(v)[1:], dtype=np.asarray(v).dtype)
+                       for k, v in vars(chunk).items() if v is not None}
+            for k in out:
+                out[k][start:stop] = getattr(chunk, k)
+        return ForwardResult(**out)
 
     def _forward_one(self, q, tau, extra, max_iter):
         """``forward`` for one sample through preallocated one-sample buffers of the compiled
@@ -523,7 +558,20 @@ class SceneModel(RobotModel):
         input ellipsoid of eq. (31); see :func:`snakecg.analysis.extremes`."""
         from .analysis import extremes
 
-        return extremes(self, q, **kwargs)
+        qa, batched = self._q(q)
+        n = qa.shape[0]
+        if n <= EXTREMES_CHUNK_ROWS:
+            return extremes(self, q, **kwargs)
+        # bounded working memory (tens of kB per row inside one call): chunks of rows
+        check_batch_memory("extremes", n, 8 * (24 + 24 * self.n_joints), what="results")
+        parts = [extremes(self, qa[i:i + EXTREMES_CHUNK_ROWS], **kwargs)
+                 for i in range(0, n, EXTREMES_CHUNK_ROWS)]
+        ex = parts[0]
+        for attr in ("max", "min", "tau_max", "tau_min", "min_kept", "tau_min_kept"):
+            d = getattr(ex, attr)
+            for k in d:
+                d[k] = np.concatenate([getattr(p, attr)[k] for p in parts], axis=0)
+        return ex
 
     def com_polar(self, q):
         """Polar coordinates ``(|COM|, angle COM)`` of the snake's COM w.r.t. the contact point,
@@ -548,6 +596,26 @@ class SceneModel(RobotModel):
         """
         from .optimize import optimize
 
+        for k in ("tau_max", "radius", "direction", "a_min", "a_obj"):
+            if np.iscomplexobj(kwargs.get(k)):
+                raise InputError(f"{k} must be real, got a complex value")
+        for k in ("tau_max", "radius", "a_min", "a_obj"):
+            try:
+                big = np.max(np.abs(np.asarray(kwargs.get(k, 0.0), dtype=float)), initial=0.0)
+            except (TypeError, ValueError, OverflowError):
+                continue  # optimize() names the problem
+            if np.isfinite(big) and big > MAX_MAGNITUDE:
+                raise InputError(f"{k} must be at most {MAX_MAGNITUDE:g} in magnitude (the "
+                                 f"limit: it enters squares and products), got {big:g}")
+        d = kwargs.get("direction")
+        if d is not None:
+            try:
+                arr = np.asarray(d, dtype=float)
+            except (TypeError, ValueError, OverflowError):
+                arr = None
+            if arr is not None and arr.ndim == 1 and np.all(np.isfinite(arr)) and arr.any():
+                # only the direction matters: scaled so that its length cannot overflow
+                kwargs["direction"] = arr / np.max(np.abs(arr))
         return optimize(self, q, objective=objective, **kwargs)
 
     # simulation (snakecg.simulate) -------------------------------------------------------------

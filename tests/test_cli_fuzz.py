@@ -403,7 +403,7 @@ OTHER_COMMANDS = [
     (["optimize", "nope", "--joints", "2", "--q=0,0,0,0,0"], "snakecg optimize: error: ",
      "invalid choice: 'nope'"),
     (["simulate", "--joints", "2", "--q=0,0,0,0,0", "--tau=0,0", "--duration=-1"],
-     "snakecg simulate: error: ", "duration must be a finite number > 0"),
+     "snakecg simulate: error: ", "argument --duration: must be > 0 (s), got '-1'"),
     (["frobnicate"], "snakecg: error: ", "invalid choice: 'frobnicate'"),
     (["forward", "--robot", "examples/robot.toml", "--joints", "2", "--q=0,0,0,0,0",
       "--tau=0,0"], "snakecg forward: error: ", "--joints 2 contradicts the robot file (3 joints)"),
