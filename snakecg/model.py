@@ -67,6 +67,30 @@ def _check_load_args(backend, progress) -> None:
                          f"{type(progress).__name__}")
 
 
+#: Keywords of :meth:`SceneModel.extremes` and their limits (larger values would take hours).
+_EXTREMES_LIMITS = {"samples": (2, 100_000), "refine": (0, 1000), "starts": (1, 1000)}
+
+
+def _check_extremes_options(kwargs: dict) -> None:
+    from ._inputs import integer
+
+    allowed = {*_EXTREMES_LIMITS, "refined"}
+    unknown = set(kwargs) - allowed
+    if unknown:
+        raise InputError(f"extremes() takes no keyword {sorted(unknown)[0]!r:.60} (it takes: "
+                         f"{', '.join(sorted(allowed))})")
+    for k, (lo, hi) in _EXTREMES_LIMITS.items():
+        if k in kwargs:
+            integer(k, kwargs[k], lo=lo, hi=hi, allow_none=(k == "samples"),
+                    why=" (the limit)")
+    refined = kwargs.get("refined")
+    if "refined" in kwargs and (isinstance(refined, str) or not isinstance(
+            refined, (list, tuple, set, frozenset)) or not all(isinstance(m, str)
+                                                               for m in refined)):
+        raise InputError(f"refined must be a list of metric names (norm_a_obj, norm_qdd, "
+                         f"norm_lambda, sr), got {refined!r:.60}")
+
+
 class RobotModel:
     """A snake robot's compiled model: ``mass_matrix``, ``link_jacobians``, ``link_poses``..."""
 
@@ -453,6 +477,13 @@ class SceneModel(RobotModel):
         such samples are re-evaluated with a tiny Tikhonov term (least-norm forces, as in
         ``forward``).
         """
+        if not isinstance(contact, (bool, np.bool_)):
+            raise InputError(f"contact must be True or False, got {contact!r:.60}")
+        if wheel_state is not None and not isinstance(wheel_state, str) and not (
+                isinstance(wheel_state, (list, tuple, np.ndarray))
+                and all(isinstance(w, (str, np.str_)) for w in wheel_state)):
+            raise InputError(f"wheel_state must be None, a state name or a list of "
+                             f"{self.n_links} of them, got {wheel_state!r:.60}")
         qa, batched = self._q(q)
         n = qa.shape[0]
         state = np.where(self.present, HELD, ABSENT).astype(np.int8)
@@ -558,6 +589,7 @@ class SceneModel(RobotModel):
         input ellipsoid of eq. (31); see :func:`snakecg.analysis.extremes`."""
         from .analysis import extremes
 
+        _check_extremes_options(kwargs)
         qa, batched = self._q(q)
         n = qa.shape[0]
         if n <= EXTREMES_CHUNK_ROWS:
@@ -599,11 +631,16 @@ class SceneModel(RobotModel):
         for k in ("tau_max", "radius", "direction", "a_min", "a_obj"):
             if np.iscomplexobj(kwargs.get(k)):
                 raise InputError(f"{k} must be real, got a complex value")
-        for k in ("tau_max", "radius", "a_min", "a_obj"):
+        for k in ("tau_max", "radius", "direction", "a_min", "a_obj"):
             try:
                 big = np.max(np.abs(np.asarray(kwargs.get(k, 0.0), dtype=float)), initial=0.0)
-            except (TypeError, ValueError, OverflowError):
+            except OverflowError:
+                raise InputError(f"{k} holds an integer beyond float range; expected finite "
+                                 f"numbers") from None
+            except (TypeError, ValueError):
                 continue  # optimize() names the problem
+            if k == "direction":
+                continue
             if np.isfinite(big) and big > MAX_MAGNITUDE:
                 raise InputError(f"{k} must be at most {MAX_MAGNITUDE:g} in magnitude (the "
                                  f"limit: it enters squares and products), got {big:g}")

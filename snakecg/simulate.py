@@ -368,10 +368,10 @@ class _Simulator:
         self.control_period = _positive("control_period", control_period, allow_none=True)
         if self.control_period is not None and self.kind == "constant":
             self.control_period = None
-        if not (method in _METHODS or (isinstance(method, type)
-                                       and issubclass(method, OdeSolver))):
+        if not ((isinstance(method, str) and method in _METHODS)
+                or (isinstance(method, type) and issubclass(method, OdeSolver))):
             raise InputError(f"method must be one of {', '.join(_METHODS)} (scipy solve_ivp) "
-                             f"or an OdeSolver class, got {method!r}")
+                             f"or an OdeSolver class, got {method!r:.60}")
         self.method = method
         self.rtol = _positive("rtol", rtol)
         if not RTOL_MIN <= self.rtol <= 1:
