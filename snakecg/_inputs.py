@@ -99,12 +99,14 @@ def as_batch(name: str, value, size: int, *, what: str = "") -> tuple[np.ndarray
                          f"got {short_repr(value)}")
     try:
         raw = np.asarray(value)
-        if np.iscomplexobj(raw):
-            raise InputError(f"{name} must be real, got a complex array (dtype {raw.dtype}); "
-                             f"pass the real part explicitly if that is what you mean")
-        if raw.dtype == object and any(isinstance(x, complex) for x in raw.ravel()[:10**6]):
-            raise InputError(f"{name} must be real, got complex numbers")
-        if raw.dtype.kind in "USV":
+    except (TypeError, ValueError, OverflowError):
+        raw = None
+    if raw is not None and (np.iscomplexobj(raw) or (raw.dtype == object and any(
+            isinstance(x, (complex, np.complexfloating)) for x in raw.ravel()[:10**6]))):
+        raise InputError(f"{name} must be real, got a complex array; pass the real part "
+                         f"explicitly if that is what you mean")
+    try:
+        if raw is None or raw.dtype.kind in "USV":
             raise TypeError
         arr = np.asarray(raw, dtype=float)
     except OverflowError:

@@ -342,7 +342,7 @@ class SceneModel(RobotModel):
         out = None
         for start in range(0, n, CHUNK_ROWS):
             stop = min(n, start + CHUNK_ROWS)
-            args = {k: (a[start:stop] if a.shape[0] == n else a) for k, (a, _) in parts.items()}
+            args = {k: (a[start:stop] if a.shape[0] == n else a[0]) for k, (a, _) in parts.items()}
             chunk = self.forward(args.pop("q"), args.pop("tau"), max_iter=max_iter, **args)
             if out is None:
                 out = {k: np.empty((n,) + np.shape(v)[1:], dtype=np.asarray(v).dtype)
