@@ -628,7 +628,7 @@ class SceneModel(RobotModel):
         """
         from .optimize import optimize
 
-        for k in ("tau_max", "radius", "direction", "a_min", "a_obj"):
+        for k in ("tau_max", "radius", "direction", "a_min", "a_obj", "allow_slide"):
             if np.iscomplexobj(kwargs.get(k)):
                 raise InputError(f"{k} must be real, got a complex value")
         for k in ("tau_max", "radius", "direction", "a_min", "a_obj"):

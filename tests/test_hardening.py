@@ -332,6 +332,14 @@ def test_reproduce_json_schema(tmp_path, monkeypatch):
     assert "table2.best_sr[2]" in data["nonfinite"] and "timings_s.total" in data["nonfinite"]
     assert data["options"] == {"kappa": 100.0, "torque_grid": 181,
                                "formats": ["png", "svg"], "alternatives": False}
+    # every field is documented in docs/cli.md (nonfinite is the common convention)
+    text = (ROOT / "docs" / "cli.md").read_text(encoding="utf-8")
+    section = text[text.index("### `snakecg reproduce --json`"):]
+    section = section[:section.index("\n## ") if "\n## " in section else None]
+    import re
+
+    documented = set(re.findall(r"^\| `([a-z_0-9]+)` \|", section, re.MULTILINE))
+    assert set(data) - {"nonfinite"} == documented
 
 
 # ------------------------------------------------------------------------------------------
@@ -540,3 +548,102 @@ def test_large_forward_batch_peak_memory_is_bounded(monkeypatch):
     result_bytes = sum(np.asarray(v).nbytes for v in vars(res).values() if v is not None)
     assert peak < result_bytes + 150 * 2**20, (peak / 2**20, result_bytes / 2**20)
     assert np.allclose(res.qdd, res.qdd[0])  # every row the same configuration
+
+
+# ------------------------------------------------------------------------------------------
+# the Python API: every public function and argument against a list of bad values
+BAD_VALUES = [None, "x", "", 10**400, -10**400, math.nan, math.inf, 1e308, 1 + 2j,
+              np.complex128(1 + 1j), [1, 2], [[1]], {}, True, object(),
+              np.array([1 + 1j] * 5), [10**400] * 5, np.zeros((0, 5)), np.zeros((2, 2, 5)),
+              -1, 0, 2.5]
+
+
+def _api_calls(sc, m, rm):
+    q, tau = np.zeros(5), np.zeros(2)
+    calls = {
+        "Robot(joints)": lambda b: Robot(joints=b),
+        "Robot(mass)": lambda b: Robot(joints=2, mass=b),
+        "Robot(com)": lambda b: Robot(joints=2, com=b),
+        "Robot(name)": lambda b: Robot(joints=2, name=b),
+        "Scene(robot)": lambda b: Scene(b),
+        "Scene.from_toml": lambda b: Scene.from_toml(b),
+        "Robot.from_toml": lambda b: Robot.from_toml(b),
+        "Scene.replace": lambda b: sc.replace(kappa=b),
+        "load": lambda b: snakecg.load(b),
+        "load(backend)": lambda b: snakecg.load(sc, backend=b),
+        "load(progress)": lambda b: snakecg.load(sc, progress=b),
+        "mass_matrix": lambda b: rm.mass_matrix(b),
+        "link_jacobians": lambda b: rm.link_jacobians(b),
+        "link_poses": lambda b: rm.link_poses(b),
+        "bias_forces(q)": lambda b: rm.bias_forces(b, q),
+        "bias_forces(v)": lambda b: rm.bias_forces(q, b),
+        "com": lambda b: rm.com(b),
+        "place_object": lambda b: m.place_object(b),
+        "forward(q)": lambda b: m.forward(b, tau),
+        "forward(tau)": lambda b: m.forward(q, b),
+        "maps(q)": lambda b: m.maps(b),
+        "maps(contact)": lambda b: m.maps(q, contact=b),
+        "maps(wheel_state)": lambda b: m.maps(q, wheel_state=b),
+        "extremes(q)": lambda b: m.extremes(b),
+        "com_polar": lambda b: m.com_polar(b),
+        "optimize(q)": lambda b: m.optimize(b),
+        "optimize(objective)": lambda b: m.optimize(q, b),
+        "optimize(tau_max)": lambda b: m.optimize(q, tau_max=b),
+        "optimize(radius)": lambda b: m.optimize(q, radius=b),
+        "optimize(direction)": lambda b: m.optimize(q, "strongest_push", direction=b),
+        "optimize(a_min)": lambda b: m.optimize(q, "least_slip_push", direction=[0, 1], a_min=b),
+        "optimize(a_obj)": lambda b: m.optimize(q, "least_slip_push", a_obj=b),
+        "optimize(allow_slide)": lambda b: m.optimize(q, allow_slide=b),
+        "simulate(q0)": lambda b: m.simulate(b, tau, 0.01),
+        "simulate(tau)": lambda b: m.simulate(q, b, 0.01),
+        "simulate(duration)": lambda b: m.simulate(q, tau, b),
+        "simulate(v0)": lambda b: m.simulate(q, tau, 0.01, v0=b),
+    }
+    for k in ("scenario", "kappa", "mu", "gravity", "contact_link", "contact_offset", "side",
+              "object_distance", "object_inertia", "wheel_links", "wheel_offset"):
+        calls[f"Scene({k})"] = (lambda k: lambda b: Scene(Robot(joints=2), **{k: b}))(k)
+    for k in ("v", "v_obj", "f_obj", "max_iter"):
+        calls[f"forward({k})"] = (lambda k: lambda b: m.forward(q, tau, **{k: b}))(k)
+    for k in ("samples", "refine", "starts", "refined"):
+        calls[f"extremes({k})"] = (lambda k: lambda b: m.extremes(q, **{k: b}))(k)
+    for k in ("v_obj0", "f_obj", "control_period", "method", "rtol", "atol", "max_step",
+              "fixed_step", "stabilization", "output_dt", "max_events"):
+        calls[f"simulate({k})"] = (lambda k: lambda b: m.simulate(q, tau, 0.01, **{k: b}))(k)
+    return calls
+
+
+def test_public_functions_refuse_bad_values_with_input_error(tmp_path, monkeypatch):
+    """Each public function and argument gets 22 bad values (None, text, integers beyond
+    float range, NaN, infinity, 1e308, complex numbers and arrays, wrong shapes, booleans,
+    other objects...): each call succeeds (a value that is valid there) or raises InputError;
+    any other exception is a failure."""
+    import signal
+
+    monkeypatch.chdir(tmp_path)  # string values must not name files of the repository
+    sc = Scene(Robot(joints=2), scenario="wheels")
+    m, rm = snakecg.load(sc), snakecg.load(Robot(joints=2))
+    calls = _api_calls(sc, m, rm)
+
+    def slow(*args):
+        raise TimeoutError("took more than 20 s")
+
+    failures, refused_count, cases = [], 0, 0
+    old = signal.signal(signal.SIGALRM, slow)
+    try:
+        for name, call in calls.items():
+            for bad in BAD_VALUES:
+                cases += 1
+                signal.alarm(20)
+                try:
+                    call(bad)
+                except InputError:
+                    refused_count += 1
+                except Exception as exc:  # noqa: BLE001 - what the test looks for
+                    failures.append(f"{name} <- {bad!r:.40}: {type(exc).__name__}: {exc!s:.80}")
+                finally:
+                    signal.alarm(0)
+    finally:
+        signal.signal(signal.SIGALRM, old)
+    assert cases == len(calls) * len(BAD_VALUES) and len(calls) >= 65
+    assert not failures, f"{len(failures)} of {cases} cases:\n" + "\n".join(failures)
+    assert refused_count > 0.8 * cases  # nearly all of them are bad everywhere
