@@ -344,9 +344,9 @@ def bad_argvs(draw):
         size = na + 3 if which == "q" else na
         bad = draw(st.sampled_from(["short", "long", "nan", "inf", "text", "empty"]))
         if bad == "short":
-            text, frag = ",".join(["0"] * (size - 1)) or "", None
+            text = ",".join(["0"] * (size - 1))
             frag = (f"{which} has shape ({size - 1},), expected ({size},)" if size > 1
-                    else f"--{which} is empty")
+                    else f"argument --{which}: empty value")
         elif bad == "long":
             text = ",".join(["0"] * (size + 2))
             frag = f"{which} has shape ({size + 2},), expected ({size},)"
@@ -492,7 +492,9 @@ SCENE_OPTION_FAULTS = {
     "--contact-link": ["0", "99", "-1", "1.5", ""],
     "--side": ["up", "", "LEFT"],
 }
-VECTOR_FAULTS = ["", " , ", "nan", "x", "1e400", "0,0", "1,2,3,4,5,6,7,8,9,10,11,12", "-inf"]
+# wrong lengths: longer than any vector of the robots drawn (1-3 joints: at most 6 values)
+VECTOR_FAULTS = ["", " , ", "nan", "x", "1e400", "0,0,0,0,0,0,0", "1,2,3,4,5,6,7,8,9,10,11,12",
+                 "-inf"]
 COMMAND_FAULTS = {
     "forward": {**SCENE_OPTION_FAULTS, "--q": VECTOR_FAULTS, "--tau": VECTOR_FAULTS,
                 "--v": VECTOR_FAULTS},

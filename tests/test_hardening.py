@@ -647,3 +647,41 @@ def test_public_functions_refuse_bad_values_with_input_error(tmp_path, monkeypat
     assert cases == len(calls) * len(BAD_VALUES) and len(calls) >= 65
     assert not failures, f"{len(failures)} of {cases} cases:\n" + "\n".join(failures)
     assert refused_count > 0.8 * cases  # nearly all of them are bad everywhere
+
+
+# ------------------------------------------------------------------------------------------
+# a full disk: a small file system mounted for the test (root with mount rights only)
+@pytest.fixture
+def small_fs(tmp_path):
+    mnt = tmp_path / "small"
+    mnt.mkdir()
+    try:
+        proc = subprocess.run(["mount", "-t", "tmpfs", "-o", "size=96k", "tmpfs", str(mnt)],
+                              capture_output=True, text=True, timeout=30)
+    except (OSError, subprocess.TimeoutExpired) as exc:
+        pytest.skip(f"cannot mount a small file system here: {exc}")
+    if proc.returncode != 0:
+        pytest.skip(f"cannot mount a small file system here: {proc.stderr.strip()}")
+    try:
+        yield mnt
+    finally:
+        subprocess.run(["umount", str(mnt)], capture_output=True, timeout=30)
+
+
+def test_disk_full_is_a_clean_failure_without_partial_files(small_fs):
+    out = small_fs / "run"
+    code, stdout, err = run_cli(["simulate", "--joints", "2", "--q=0,0,0,0.5,-0.6",
+                                 "--tau=0.05,-0.02", "--duration", "0.05", "--frames", "20",
+                                 "--out", str(out)])
+    assert code == 1 and "Traceback" not in err, err
+    (line,) = err.splitlines()
+    assert line.startswith("snakecg simulate: failed: cannot write to --out") and \
+        "No space left on device" in line, line
+    # whatever was written is whole; no temporary file is left behind
+    names = sorted(p.name for p in out.iterdir())
+    assert not [n for n in names if ".tmp" in n], names
+    if "summary.json" in names:
+        strict_loads((out / "summary.json").read_text())
+    if "trajectory.npz" in names:
+        assert np.load(out / "trajectory.npz")["t"][-1] == pytest.approx(0.05)
+    assert "animation.gif" not in names or (out / "animation.gif").stat().st_size > 0

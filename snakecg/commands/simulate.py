@@ -10,7 +10,7 @@ from pathlib import Path
 import numpy as np
 
 from .._inputs import MAX_MAGNITUDE
-from ..errors import InputError
+from ..errors import InputError, SnakecgError
 from ..simulate import (_METHODS, MAX_FRAMES, MAX_OUTPUT_SAMPLES, MAX_PERIODS, RTOL_MIN,
                         STABILIZATION_MAX)
 from ._common import (add_robot_args, check_vector, count, out_dir, parse_vector, print_json,
@@ -146,8 +146,8 @@ def run(args) -> int:
         if not args.no_figures:
             files.update(save_figures(traj, out, animation=not args.no_animation,
                                       frames=args.frames))
-    except OSError as exc:
-        raise InputError(f"cannot write to --out {str(out)!r}: {exc}") from None
+    except OSError as exc:  # not the input's fault (disk full, permissions): exit status 1
+        raise SnakecgError(f"cannot write to --out {str(out)!r}: {exc}") from None
     s = traj.summary
     if args.json:
         print_json({**s, "files": files})
