@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import argparse
 import os
+import re
 import sys
 import warnings
 
@@ -22,8 +23,18 @@ COMMANDS = ("generate", "show", "forward", "reproduce", "optimize", "simulate")
 COMMANDS += ("export", "plot")
 
 
+#: What argparse must read as a value, not an option: negative numbers and number lists
+#: (``--tau -0.1,0``, ``--q -1,0,0,-135deg``, ``--a-min -inf`` to be refused as a value).
+_NEGATIVE_VALUE = re.compile(r"^-(?:\d|\.\d|inf|nan)", re.IGNORECASE)
+
+
 class _Parser(argparse.ArgumentParser):
-    """argparse, but usage errors are one line and exit with status 2."""
+    """argparse, but usage errors are one line and exit with status 2, and values that
+    start with a minus sign (``--tau -0.1,0``) are values, not unknown options."""
+
+    def __init__(self, *args, **kwargs):
+        super().__init__(*args, **kwargs)
+        self._negative_number_matcher = _NEGATIVE_VALUE
 
     def error(self, message):  # noqa: D401 - argparse API
         sys.stderr.write(f"{self.prog}: error: {message} (see {self.prog} --help)\n")

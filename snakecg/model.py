@@ -17,7 +17,8 @@ from pathlib import Path
 import numpy as np
 
 from . import artifacts
-from ._inputs import as_batch, broadcast_batches, expand
+from ._inputs import (CHUNK_ROWS, MAX_MAGNITUDE, as_batch, broadcast_batches, check_batch_memory,
+                      expand)
 from .errors import InputError
 from .native import load_backend
 from .robot import Robot, Scene
@@ -26,6 +27,9 @@ from .solver import (ABSENT, HELD, LOST, PIVOT_TOL, REGULARIZATION, SLIDE_NEG, S
                      _violations_one, check_input_range, default_max_iter, solve_active_set)
 
 __all__ = ["load", "RobotModel", "SceneModel", "ForwardResult"]
+
+#: Rows of one ``extremes`` call on a large batch (each row needs tens of kB while it runs).
+EXTREMES_CHUNK_ROWS = 2048
 
 _BACKENDS: dict[tuple[int, str], tuple[object, dict, Path]] = {}
 
@@ -50,6 +54,7 @@ def load(obj, *, backend: str = "compiled", progress=None):
     elsewhere, see :mod:`snakecg.progress`), ``False`` never, or a callable taking each
     step's message.
     """
+    _check_load_args(backend, progress)
     from .progress import resolve  # None: model builds reported on a terminal or notebook
 
     progress = resolve(progress)
@@ -60,12 +65,46 @@ def load(obj, *, backend: str = "compiled", progress=None):
     raise InputError(f"load() takes a snakecg.Robot or snakecg.Scene, got {type(obj).__name__}")
 
 
+def _check_load_args(backend, progress) -> None:
+    """``backend`` and ``progress`` of :func:`load`, checked before any generation."""
+    if not isinstance(backend, str) or backend not in ("compiled", "casadi"):
+        raise InputError(f"backend must be 'compiled' or 'casadi', got {backend!r:.60}")
+    if progress is not None and progress is not False and not callable(progress):
+        raise InputError(f"progress must be None, False or a callable taking a message, got "
+                         f"{type(progress).__name__}")
+
+
+#: Keywords of :meth:`SceneModel.extremes` and their limits (larger values would take hours).
+_EXTREMES_LIMITS = {"samples": (2, 100_000), "refine": (0, 1000), "starts": (1, 1000)}
+
+
+def _check_extremes_options(kwargs: dict) -> None:
+    from ._inputs import integer
+
+    allowed = {*_EXTREMES_LIMITS, "refined"}
+    unknown = set(kwargs) - allowed
+    if unknown:
+        raise InputError(f"extremes() takes no keyword {sorted(unknown)[0]!r:.60} (it takes: "
+                         f"{', '.join(sorted(allowed))})")
+    for k, (lo, hi) in _EXTREMES_LIMITS.items():
+        if k in kwargs:
+            integer(k, kwargs[k], lo=lo, hi=hi, allow_none=(k == "samples"),
+                    why=" (the limit)")
+    refined = kwargs.get("refined")
+    if "refined" in kwargs and (isinstance(refined, str) or not isinstance(
+            refined, (list, tuple, set, frozenset)) or not all(isinstance(m, str)
+                                                               for m in refined)):
+        raise InputError(f"refined must be a list of metric names (norm_a_obj, norm_qdd, "
+                         f"norm_lambda, sr), got {refined!r:.60}")
+
+
 class RobotModel:
     """A snake robot's compiled model: ``mass_matrix``, ``link_jacobians``, ``link_poses``..."""
 
     def __init__(self, robot: Robot, *, backend: str = "compiled", progress=None):
         if not isinstance(robot, Robot):
             raise InputError(f"robot must be a snakecg.Robot, got {type(robot).__name__}")
+        _check_load_args(backend, progress)
         self.robot = robot
         self.backend, self.manifest, self.folder = _backend(robot.joints, backend, progress)
         self.n_joints = robot.joints
@@ -320,6 +359,8 @@ class SceneModel(RobotModel):
         check_input_range(parts)
         if ("q_obj" in extra) != ("rho" in extra):
             raise InputError("q_obj and rho go together: give both or neither")
+        if n > CHUNK_ROWS:
+            return self._forward_chunked(parts, n, max_iter)
         if not batched and self.backend.kind == "compiled":
             res = self._forward_one(qa[0], ta[0], extra, max_iter)
             if res is not None:
@@ -336,6 +377,24 @@ class SceneModel(RobotModel):
         }
         sol = self._solve(base, n, max_iter=max_iter)
         return self._result(sol, expand(ta, n), batched)
+
+    def _forward_chunked(self, parts: dict, n: int, max_iter) -> ForwardResult:
+        """A large batch in chunks of CHUNK_ROWS rows, written into the result arrays: the
+        working memory stays that of one chunk; a result that would not fit is refused."""
+        ns, nc, nl, na = self.n_coordinates, self.n_constraints, self.n_links, self.n_joints
+        per_row = 8 * (ns + 3 + 2 * nc + 6 + na) + 24 * nl + 2
+        check_batch_memory("forward", n, per_row, what="results")
+        out = None
+        for start in range(0, n, CHUNK_ROWS):
+            stop = min(n, start + CHUNK_ROWS)
+            args = {k: (a[start:stop] if a.shape[0] == n else a[0]) for k, (a, _) in parts.items()}
+            chunk = self.forward(args.pop("q"), args.pop("tau"), max_iter=max_iter, **args)
+            if out is None:
+                out = {k: np.empty((n,) + np.shape(v)[1:], dtype=np.asarray(v).dtype)
+                       for k, v in vars(chunk).items() if v is not None}
+            for k in out:
+                out[k][start:stop] = getattr(chunk, k)
+        return ForwardResult(**out)
 
     def _forward_one(self, q, tau, extra, max_iter):
         """``forward`` for one sample through preallocated one-sample buffers of the compiled
@@ -474,6 +533,13 @@ class SceneModel(RobotModel):
         such samples are re-evaluated with a tiny Tikhonov term (least-norm forces, as in
         ``forward``).
         """
+        if not isinstance(contact, (bool, np.bool_)):
+            raise InputError(f"contact must be True or False, got {contact!r:.60}")
+        if wheel_state is not None and not isinstance(wheel_state, str) and not (
+                isinstance(wheel_state, (list, tuple, np.ndarray))
+                and all(isinstance(w, (str, np.str_)) for w in wheel_state)):
+            raise InputError(f"wheel_state must be None, a state name or a list of "
+                             f"{self.n_links} of them, got {wheel_state!r:.60}")
         qa, batched = self._q(q)
         n = qa.shape[0]
         state = np.where(self.present, HELD, ABSENT).astype(np.int8)
@@ -580,11 +646,17 @@ class SceneModel(RobotModel):
         from .analysis import extremes
         from .progress import in_chunks
 
+        _check_extremes_options(kwargs)
         qa, batched = self._q(q)
         if not batched:
             return extremes(self, q, **kwargs)
-        chunk = 256 if self.scene.scenario == "wheels" else 8192  # a bar on long batches
-        return in_chunks(lambda part: extremes(self, part, **kwargs), qa, chunk, "extremes")
+        n = qa.shape[0]
+        if n > EXTREMES_CHUNK_ROWS:
+            # bounded working memory (tens of kB per row inside one call): chunks of rows
+            check_batch_memory("extremes", n, 8 * (24 + 24 * self.n_joints), what="results")
+        chunk = min(EXTREMES_CHUNK_ROWS, 256 if self.scene.scenario == "wheels" else 8192)
+        return in_chunks(lambda part: extremes(self, part, **kwargs), qa, chunk, "extremes",
+                         always=n > EXTREMES_CHUNK_ROWS)
 
     def com_polar(self, q):
         """Polar coordinates ``(|COM|, angle COM)`` of the snake's COM w.r.t. the contact point,
@@ -609,6 +681,31 @@ class SceneModel(RobotModel):
         """
         from .optimize import optimize
 
+        for k in ("tau_max", "radius", "direction", "a_min", "a_obj", "allow_slide"):
+            if np.iscomplexobj(kwargs.get(k)):
+                raise InputError(f"{k} must be real, got a complex value")
+        for k in ("tau_max", "radius", "direction", "a_min", "a_obj"):
+            try:
+                big = np.max(np.abs(np.asarray(kwargs.get(k, 0.0), dtype=float)), initial=0.0)
+            except OverflowError:
+                raise InputError(f"{k} holds an integer beyond float range; expected finite "
+                                 f"numbers") from None
+            except (TypeError, ValueError):
+                continue  # optimize() names the problem
+            if k == "direction":
+                continue
+            if np.isfinite(big) and big > MAX_MAGNITUDE:
+                raise InputError(f"{k} must be at most {MAX_MAGNITUDE:g} in magnitude (the "
+                                 f"limit: it enters squares and products), got {big:g}")
+        d = kwargs.get("direction")
+        if d is not None:
+            try:
+                arr = np.asarray(d, dtype=float)
+            except (TypeError, ValueError, OverflowError):
+                arr = None
+            if arr is not None and arr.ndim == 1 and np.all(np.isfinite(arr)) and arr.any():
+                # only the direction matters: scaled so that its length cannot overflow
+                kwargs["direction"] = arr / np.max(np.abs(arr))
         return optimize(self, q, objective=objective, **kwargs)
 
     # simulation (snakecg.simulate) -------------------------------------------------------------

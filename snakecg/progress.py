@@ -93,26 +93,30 @@ def resolve(progress):
     return progress
 
 
-def in_chunks(fn, qa, chunk: int, desc: str, *, stream=None):
+def in_chunks(fn, qa, chunk: int, desc: str, *, stream=None, always: bool = False):
     """``fn(qa)`` for a batch ``qa`` (N, n_s), evaluated ``chunk`` rows at a time with a
-    progress bar when progress is shown and N > chunk (else in one call); the chunks'
-    results (dataclasses whose fields are dictionaries of arrays, arrays or other values) are
+    progress bar when progress is shown and N > chunk (else in one call, unless ``always``:
+    then in chunks, to bound the working memory, with a bar only where progress is shown);
+    the chunks' results (dataclasses whose fields are dictionaries of arrays, arrays or other values) are
     joined along the batch axis."""
     import dataclasses
 
     import numpy as np
 
     n = qa.shape[0]
-    if n <= chunk or not progress_enabled(stream):
+    shown = progress_enabled(stream)
+    if n <= chunk or not (shown or always):
         return fn(qa)
     parts = []
-    bar = progress_bar(n, desc, stream=stream)
+    bar = progress_bar(n, desc, stream=stream) if shown else None
     try:
         for lo in range(0, n, chunk):
             parts.append(fn(qa[lo:lo + chunk]))
-            bar.update(min(chunk, n - lo))
+            if bar is not None:
+                bar.update(min(chunk, n - lo))
     finally:
-        bar.close()
+        if bar is not None:
+            bar.close()
     first = parts[0]
     joined = {}
     for f in dataclasses.fields(first):

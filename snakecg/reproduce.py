@@ -19,13 +19,13 @@ from __future__ import annotations
 import csv
 import io
 import json
-import os
 import time
 from dataclasses import dataclass, field
 from pathlib import Path
 
 import numpy as np
 
+from ._files import atomic_path, write_text
 from .analysis import com_polar, joint_grid
 from .errors import InputError
 from .progress import progress_bar
@@ -82,6 +82,25 @@ class ReproduceOptions:
     progress: bool = True
 
 
+#: Largest torque grid of Fig. 4 (points per axis; the maps hold grid^2 forward results).
+MAX_TORQUE_GRID = 1001
+FORMATS = ("png", "svg", "pdf")
+
+
+def check_options(opts: ReproduceOptions) -> None:
+    """The options a user sets, checked before any computation or file (InputError)."""
+    from ._inputs import integer, number
+
+    number("kappa_case2", opts.kappa_case2, lo=0, lo_open=True)
+    for k in opts.kappas_case1:
+        number("kappas_case1", k, lo=0, lo_open=True)
+    integer("torque_grid", opts.torque_grid, lo=11, hi=MAX_TORQUE_GRID,
+            why=" points per axis (the limit: the Fig. 4 maps hold grid^2 results)")
+    formats = opts.formats
+    if isinstance(formats, str) or not formats or any(f not in FORMATS for f in formats):
+        raise InputError(f"formats takes png, svg or pdf, got {formats!r:.60}")
+
+
 @dataclass
 class ReproduceReport:
     table2: dict = field(default_factory=dict)
@@ -97,16 +116,14 @@ def _scene(joints: int, scenario: str, kappa: float, opts: ReproduceOptions) -> 
 def _save(fig, out: Path, stem: str, opts: ReproduceOptions, report: ReproduceReport):
     for fmt in opts.formats:
         path = out / f"{stem}.{fmt}"
-        tmp = path.with_name(f".{path.name}.tmp")
-        fig.savefig(tmp, format=fmt, dpi=130 if fmt == "png" else None, bbox_inches="tight")
-        os.replace(tmp, path)
+        with atomic_path(path) as tmp:  # unique temporary name, then os.replace
+            fig.savefig(tmp, format=fmt, dpi=130 if fmt == "png" else None,
+                        bbox_inches="tight")
         report.files.append(path)
 
 
 def _write_text(path: Path, text: str, report: ReproduceReport):
-    tmp = path.with_name(f".{path.name}.tmp")
-    tmp.write_text(text, encoding="utf-8")
-    os.replace(tmp, path)
+    write_text(path, text)  # unique temporary name, then os.replace
     report.files.append(path)
 
 
@@ -472,6 +489,7 @@ def reproduce(opts: ReproduceOptions | None = None, *, load=None, echo=print) ->
     from .model import load as default_load
 
     opts = opts or ReproduceOptions()
+    check_options(opts)
     load = load or default_load
     out = Path(opts.out)
     if out.exists() and not out.is_dir():

@@ -27,6 +27,8 @@ from collections.abc import Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from ._inputs import short_repr as _r
+from ._inputs import to_float as _to_float
 from .errors import InputError
 
 __all__ = ["Robot", "Scene", "SCENARIOS", "DEFAULT_GRAVITY"]
@@ -39,6 +41,10 @@ DEFAULT_GRAVITY = 9.81
 _MISSING = object()
 #: At most this many offending values are quoted per parameter (the count of the rest follows).
 _MAX_QUOTED = 4
+#: At most this many problems are listed in one message (the count of the rest follows).
+_MAX_PROBLEMS = 20
+#: Largest robot description file read (bytes): a description is a few hundred bytes.
+MAX_FILE_BYTES = 1 << 20
 
 
 def _is_number(v) -> bool:
@@ -57,6 +63,21 @@ def _quote(items: list[str]) -> str:
     return shown + (f" and {more} more" if more > 0 else "")
 
 
+def _keys(keys) -> str:
+    """``['a', 'b']`` for a few keys; the first few and the count of the rest for many."""
+    keys = sorted(keys, key=str)
+    shown = "[" + ", ".join(_r(k) for k in keys[:_MAX_QUOTED]) + "]"
+    more = len(keys) - _MAX_QUOTED
+    return shown + (f" and {more} more" if more > 0 else "")
+
+
+def _joined(problems: list[str]) -> str:
+    """The problems separated by ``; ``: the first few, then how many more there are."""
+    text = "; ".join(problems[:_MAX_PROBLEMS])
+    more = len(problems) - _MAX_PROBLEMS
+    return text + (f"; and {more} more problems" if more > 0 else "")
+
+
 def _per_link(name: str, value, n_links: int | None, problems: list[str], *, positive=True):
     """One number per link (a scalar is repeated); every problem is appended to ``problems``.
 
@@ -64,14 +85,14 @@ def _per_link(name: str, value, n_links: int | None, problems: list[str], *, pos
     their count is not. Returns the tuple of floats, or None if anything was wrong.
     """
     if _is_number(value):
-        values = [(float(value), None)]
+        values = [(_to_float(value), None, value)]
     elif _is_sequence(value):
         values, wrong = [], []
         for i, v in enumerate(value, start=1):
             if _is_number(v):
-                values.append((float(v), i))
+                values.append((_to_float(v), i, v))
             else:
-                wrong.append(f"{v!r} (link {i})")
+                wrong.append(f"{_r(v)} (link {i})")
         if wrong:
             problems.append(f"{name} must hold numbers, got {_quote(wrong)}")
         if n_links is not None and len(value) != n_links:
@@ -86,7 +107,7 @@ def _per_link(name: str, value, n_links: int | None, problems: list[str], *, pos
             return None
     else:
         expected = f"a list of {n_links} numbers" if n_links is not None else "a list of numbers"
-        problems.append(f"{name} must be a number or {expected}, got {value!r}")
+        problems.append(f"{name} must be a number or {expected}, got {_r(value)}")
         return None
     if not _check_values(name, values, positive, problems):
         return None
@@ -94,14 +115,16 @@ def _per_link(name: str, value, n_links: int | None, problems: list[str], *, pos
         return None
     if len(values) == 1 and values[0][1] is None:
         return (values[0][0],) * n_links
-    return tuple(v for v, _ in values)
+    return tuple(v[0] for v in values)
 
 
 def _check_values(name, values, positive, problems) -> bool:
-    bad = [(v, i) for v, i in values if not math.isfinite(v) or (positive and v <= 0)]
+    # quoted as floats, but an integer beyond float range as itself (cut), not as inf
+    bad = [(orig if isinstance(orig, numbers.Integral) and math.isinf(v) else v, i)
+           for v, i, orig in values if not math.isfinite(v) or (positive and v <= 0)]
     if bad:
         kind = "positive finite" if positive else "finite"
-        quoted = [f"{v!r}" if i is None else f"{v!r} (link {i})" for v, i in bad]
+        quoted = [f"{_r(v)}" if i is None else f"{_r(v)} (link {i})" for v, i in bad]
         problems.append(f"{name} must be {kind}, got {_quote(quoted)}")
     return not bad
 
@@ -109,7 +132,7 @@ def _check_values(name, values, positive, problems) -> bool:
 def _joint_count(joints, problems: list[str]) -> int | None:
     """The number of links for a valid ``joints`` (within the generation limit), else None."""
     if isinstance(joints, bool) or not isinstance(joints, numbers.Integral) or joints < 1:
-        problems.append(f"joints must be an integer >= 1, got {joints!r}")
+        problems.append(f"joints must be an integer >= 1, got {_r(joints)}")
         return None
     from .artifacts import max_joints
 
@@ -121,7 +144,7 @@ def _joint_count(joints, problems: list[str]) -> int | None:
     if joints > limit:
         # refused here, before any per-link tuple of that length is built
         problems.append(
-            f"joints={joints} exceeds the generation limit of {limit} joints"
+            f"joints={_r(joints)} exceeds the generation limit of {limit} joints"
             " (raise it with SNAKECG_MAX_JOINTS if you accept the derivation and compile time)"
         )
         return None
@@ -144,7 +167,7 @@ def _robot_problems(joints, mass, length, inertia, com, name) -> tuple[list[str]
     elif length is not None:
         com = tuple(l_ / 2 for l_ in length)
     if not isinstance(name, str):
-        problems.append(f"name must be a string, got {name!r}")
+        problems.append(f"name must be a string, got {_r(name)}")
     fields = {"joints": None if n is None else n - 1, "mass": mass, "length": length,
               "inertia": inertia, "com": com}
     return problems, fields
@@ -171,7 +194,7 @@ class Robot:
         problems, fields = _robot_problems(self.joints, self.mass, self.length, self.inertia,
                                            self.com, self.name)
         if problems:
-            raise InputError("invalid robot: " + "; ".join(problems))
+            raise InputError("invalid robot: " + _joined(problems))
         for key, value in fields.items():
             object.__setattr__(self, key, value)
 
@@ -221,35 +244,85 @@ _SCENE_KEYS = {
 }
 
 
+def _path(path) -> Path:
+    """``path`` as a Path; anything but a non-empty str or os.PathLike is refused."""
+    import os
+
+    if isinstance(path, bytes) or not isinstance(path, (str, os.PathLike)):
+        raise InputError(f"path must be the path of a robot description file (str or "
+                         f"os.PathLike), got {_r(path)}")
+    p = Path(path)
+    if str(path) == "":
+        raise InputError("path is empty; give the path of a robot description file")
+    return p
+
+
 def _read_toml(path) -> dict:
+    """The parsed file: a regular file of at most MAX_FILE_BYTES, UTF-8 (a BOM is allowed).
+
+    Devices (``/dev/zero``), FIFOs and sockets are refused before they are opened, so a read
+    can neither run out of memory nor block.
+    """
+    import os
+    import stat
+
     try:
         import tomllib
     except ModuleNotFoundError:  # pragma: no cover - Python 3.10
         import tomli as tomllib
-    p = Path(path)
+    p = _path(path)
+    where = f"robot file {str(p)!r}"
     try:
-        with open(p, "rb") as fh:
-            return tomllib.load(fh)
+        st = os.stat(p)
     except FileNotFoundError:
-        raise InputError(f"robot file {str(p)!r} does not exist") from None
-    except IsADirectoryError:
-        raise InputError(f"robot file {str(p)!r} is a directory, expected a TOML file") from None
+        raise InputError(f"{where} does not exist") from None
+    except (OSError, ValueError) as exc:
+        raise InputError(f"{where} cannot be read: {exc}") from None
+    if stat.S_ISDIR(st.st_mode):
+        raise InputError(f"{where} is a directory, expected a TOML file")
+    if not stat.S_ISREG(st.st_mode):
+        kind = ("a FIFO" if stat.S_ISFIFO(st.st_mode) else
+                "a device" if stat.S_ISCHR(st.st_mode) or stat.S_ISBLK(st.st_mode) else
+                "a socket" if stat.S_ISSOCK(st.st_mode) else "not a regular file")
+        raise InputError(f"{where} is {kind}; expected a regular TOML file")
+    if st.st_size > MAX_FILE_BYTES:
+        raise InputError(f"{where} has {st.st_size} bytes, above the limit of "
+                         f"{MAX_FILE_BYTES} bytes for a robot description")
+    try:
+        flags = os.O_RDONLY | getattr(os, "O_NONBLOCK", 0) | getattr(os, "O_NOCTTY", 0)
+        fd = os.open(p, flags)
+        with os.fdopen(fd, "rb") as fh:
+            if not stat.S_ISREG(os.fstat(fh.fileno()).st_mode):  # replaced meanwhile
+                raise InputError(f"{where} is not a regular file; expected a TOML file")
+            data = fh.read(MAX_FILE_BYTES + 1)
+    except OSError as exc:
+        raise InputError(f"{where} cannot be read: {exc}") from None
+    if len(data) > MAX_FILE_BYTES:
+        raise InputError(f"{where} has more than {MAX_FILE_BYTES} bytes, the limit for a "
+                         f"robot description")
+    if data.startswith(b"\xef\xbb\xbf"):
+        data = data[3:]  # a UTF-8 byte order mark, as some editors write
+    try:
+        text = data.decode("utf-8")
+    except UnicodeDecodeError as exc:
+        raise InputError(f"{where} cannot be read: it is not UTF-8 text ({exc.reason} at "
+                         f"byte {exc.start})") from None
+    try:
+        return tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
-        raise InputError(f"robot file {str(p)!r} is not valid TOML: {exc}") from None
+        raise InputError(f"{where} is not valid TOML: {exc}") from None
     except RecursionError:
-        raise InputError(f"robot file {str(p)!r} is not valid TOML: nested too deeply") from None
-    except (OSError, UnicodeDecodeError) as exc:
-        raise InputError(f"robot file {str(p)!r} cannot be read: {exc}") from None
+        raise InputError(f"{where} is not valid TOML: nested too deeply") from None
 
 
 def _file_error(path, problems: list[str]) -> InputError:
-    return InputError(f"robot file {str(path)!r}: " + "; ".join(problems))
+    return InputError(f"robot file {str(path)!r}: " + _joined(problems))
 
 
 def _unknown_tables(data: dict, problems: list[str]) -> None:
     unknown_top = set(data) - {"robot", "scene"}
     if unknown_top:
-        problems.append(f"unknown tables or keys {sorted(unknown_top)} at the top level"
+        problems.append(f"unknown tables or keys {_keys(unknown_top)} at the top level"
                         " (expected the tables [robot] and [scene])")
 
 
@@ -261,10 +334,10 @@ def _robot_from_table(data: dict) -> tuple[Robot | None, list[str], int | None]:
     if table is _MISSING:
         return None, ["missing [robot] table"], None
     if not isinstance(table, dict):
-        return None, [f"[robot] must be a table, got {table!r}"], None
+        return None, [f"[robot] must be a table, got {_r(table)}"], None
     unknown = set(table) - _ROBOT_KEYS
     if unknown:
-        problems.append(f"unknown keys in [robot]: {sorted(unknown)} (allowed: "
+        problems.append(f"unknown keys in [robot]: {_keys(unknown)} (allowed: "
                         f"{sorted(_ROBOT_KEYS)})")
     if "joints" not in table:
         problems.append("missing key joints in [robot]")
@@ -315,7 +388,7 @@ class Scene:
         values = {f: getattr(self, f) for f in self.__dataclass_fields__ if f != "robot"}
         problems, fields = _scene_problems(self.robot, values)
         if problems:
-            raise InputError("invalid scene: " + "; ".join(problems))
+            raise InputError("invalid scene: " + _joined(problems))
         for name, value in fields.items():
             object.__setattr__(self, name, value)
 
@@ -345,6 +418,10 @@ class Scene:
     def replace(self, **changes) -> Scene:
         """A copy with some fields changed (validated again)."""
         fields = {f: getattr(self, f) for f in self.__dataclass_fields__}
+        unknown = set(changes) - set(fields)
+        if unknown:
+            raise InputError(f"Scene.replace: unknown fields {_keys(unknown)} (allowed: "
+                             f"{', '.join(sorted(fields))})")
         if "robot" in changes or "contact_link" in changes:
             # offsets and wheel sets follow the new robot/contact unless given
             for f in ("contact_offset", "wheel_links"):
@@ -365,16 +442,20 @@ class Scene:
 
         Every problem of the file (robot and scene) is reported at once.
         """
+        unknown = set(overrides) - _SCENE_KEYS
+        if unknown:
+            raise InputError(f"Scene.from_toml: unknown keyword overrides {_keys(unknown)}"
+                             f" (allowed: {', '.join(sorted(_SCENE_KEYS))})")
         data = _read_toml(path)
         robot, problems, n_links = _robot_from_table(data)
         _unknown_tables(data, problems)
         table = data.get("scene", {})
         if not isinstance(table, dict):
-            problems.append(f"[scene] must be a table, got {table!r}")
+            problems.append(f"[scene] must be a table, got {_r(table)}")
             table = {}
         unknown = set(table) - _SCENE_KEYS
         if unknown:
-            problems.append(f"unknown keys in [scene]: {sorted(unknown)}"
+            problems.append(f"unknown keys in [scene]: {_keys(unknown)}"
                             f" (allowed: {sorted(_SCENE_KEYS)})")
         kwargs = {k: v for k, v in table.items() if k in _SCENE_KEYS}
         if "wheel_links" in kwargs and isinstance(kwargs["wheel_links"], list):
@@ -399,21 +480,21 @@ def _scene_problems(r: Robot | None, f: dict, *, n_links: int | None = None
     n_links = r.n_links if r is not None else n_links
     links = f"1..{n_links}" if n_links is not None else ">= 1"
     if not isinstance(f["scenario"], str) or f["scenario"] not in SCENARIOS:
-        problems.append(f"scenario must be one of {', '.join(SCENARIOS)} (got {f['scenario']!r})")
+        problems.append(f"scenario must be one of {', '.join(SCENARIOS)} (got {_r(f['scenario'])})")
 
     def num(name, value, *, positive=False, nonneg=False):
         if not _is_number(value):
-            problems.append(f"{name} must be a number, got {value!r}")
+            problems.append(f"{name} must be a number, got {_r(value)}")
             return None
-        v = float(value)
+        v = _to_float(value)
         if not math.isfinite(v):
-            problems.append(f"{name} must be finite, got {value!r}")
+            problems.append(f"{name} must be finite, got {_r(value)}")
             return None
         if positive and v <= 0:
-            problems.append(f"{name} must be > 0, got {value!r}")
+            problems.append(f"{name} must be > 0, got {_r(value)}")
             return None
         if nonneg and v < 0:
-            problems.append(f"{name} must be >= 0, got {value!r}")
+            problems.append(f"{name} must be >= 0, got {_r(value)}")
             return None
         return v
 
@@ -424,7 +505,7 @@ def _scene_problems(r: Robot | None, f: dict, *, n_links: int | None = None
     k = f["contact_link"]
     if (isinstance(k, bool) or not isinstance(k, numbers.Integral) or k < 1
             or (n_links is not None and k > n_links)):
-        problems.append(f"contact_link must be a link number {links}, got {k!r}")
+        problems.append(f"contact_link must be a link number {links}, got {_r(k)}")
         k = None
     else:
         k = int(k)
@@ -443,14 +524,14 @@ def _scene_problems(r: Robot | None, f: dict, *, n_links: int | None = None
     elif isinstance(side, str) and side == "right" or _is_number(side) and side == -1:
         side = "right"
     else:
-        problems.append(f"side must be 'left' or 'right', got {f['side']!r}")
+        problems.append(f"side must be 'left' or 'right', got {_r(f['side'])}")
     inertia = f["object_inertia"]
     if inertia is not None:
         inertia = num("object_inertia", inertia, positive=True)
     wheels = f["wheel_links"]
     if wheels is not None:
         if not _is_sequence(wheels):
-            problems.append(f"wheel_links must be a list of link numbers, got {wheels!r}")
+            problems.append(f"wheel_links must be a list of link numbers, got {_r(wheels)}")
             wheels = None
         else:
             bad = [w for w in wheels if isinstance(w, bool) or not isinstance(w, numbers.Integral)

@@ -54,7 +54,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ._inputs import as_batch
+from ._inputs import as_batch, to_float
 from .errors import InputError, SnakecgError
 from .solver import ABSENT, HELD, LOST, PIVOT_TOL, REGULARIZATION, SLIDE_NEG, SLIDE_POS
 from .native import BoundFunction
@@ -80,6 +80,19 @@ _STATE_NAMES = {ABSENT: "none", HELD: "stick", LOST: "lost", SLIDE_POS: "slide+"
                 SLIDE_NEG: "slide-"}
 _N_WORK = 3  # work integrals: joint torques, kinetic friction, object wrench
 _METHODS = ("DOP853", "RK45", "RK23", "Radau", "BDF", "LSODA")  # scipy.integrate.solve_ivp
+#: Most output samples of one run (duration / output_dt; each sample holds ~1 kB of arrays).
+MAX_OUTPUT_SAMPLES = 10**6
+#: Most controller periods (duration / control_period; each one solves a torque query) and
+#: most steps of the integrator allowed by max_step or fixed_step (duration / step).
+MAX_PERIODS = 10**6
+MAX_STEPS = 10**7
+#: Most frames of an animation (each one is an image of ~100 kB held until the GIF is written).
+MAX_FRAMES = 2000
+#: Smallest relative tolerance solve_ivp can honour (100 machine epsilons; it raises smaller
+#: ones to this with a warning) and largest Baumgarte rate (1/s: beyond it the correction
+#: makes the equations stiff and the explicit integrators crawl).
+RTOL_MIN = 100 * float(np.finfo(float).eps)
+STABILIZATION_MAX = 1e6
 
 
 class SimulationError(SnakecgError, RuntimeError):
@@ -200,8 +213,12 @@ class Trajectory:
                 if k not in skip}
 
     def save(self, path) -> None:
-        """Write the arrays to a ``.npz`` file (the summary goes to JSON separately)."""
-        np.savez_compressed(path, **self.arrays())
+        """Write the arrays to a ``.npz`` file (the summary goes to JSON separately),
+        atomically: a unique temporary name in the same folder, then ``os.replace``."""
+        from ._files import atomic_path
+
+        with atomic_path(path) as tmp, open(tmp, "wb") as fh:
+            np.savez_compressed(fh, **self.arrays())
 
 
 def _jsonable(x):
@@ -291,11 +308,21 @@ def _positive(name, value, *, allow_none=False, allow_zero=False):
         return None
     if isinstance(value, bool) or not isinstance(value, (int, float, np.floating, np.integer)):
         raise InputError(f"{name} must be a number, got {value!r}")
-    v = float(value)
+    v = to_float(value)
     if not math.isfinite(v) or v < 0 or (v == 0 and not allow_zero):
         raise InputError(f"{name} must be a finite number {'>= 0' if allow_zero else '> 0'},"
                          f" got {value!r}")
     return v
+
+
+def _check_count(name, duration, step, limit, what):
+    """``duration / step`` (a number of samples, periods or steps) within ``limit``."""
+    if step is None:
+        return
+    count = duration / step
+    if not count <= limit:
+        raise InputError(f"{name} = {step:g} s gives {count:.3g} {what} over {duration:g} s, "
+                         f"above the limit of {limit:g}; give {name} >= {duration / limit:.3g} s")
 
 
 # ------------------------------------------------------------------------------------------
@@ -341,19 +368,32 @@ class _Simulator:
         self.control_period = _positive("control_period", control_period, allow_none=True)
         if self.control_period is not None and self.kind == "constant":
             self.control_period = None
-        if not (method in _METHODS or (isinstance(method, type)
-                                       and issubclass(method, OdeSolver))):
+        if not ((isinstance(method, str) and method in _METHODS)
+                or (isinstance(method, type) and issubclass(method, OdeSolver))):
             raise InputError(f"method must be one of {', '.join(_METHODS)} (scipy solve_ivp) "
-                             f"or an OdeSolver class, got {method!r}")
+                             f"or an OdeSolver class, got {method!r:.60}")
         self.method = method
         self.rtol = _positive("rtol", rtol)
+        if not RTOL_MIN <= self.rtol <= 1:
+            raise InputError(f"rtol must be from {RTOL_MIN:.3g} (100 machine epsilons, what "
+                             f"solve_ivp can honour) to 1, got {rtol!r}")
         self.atol = _positive("atol", atol)
         self.max_step = _positive("max_step", max_step, allow_none=True)
         self.fixed_step = _positive("fixed_step", fixed_step, allow_none=True)
         self.alpha = _positive("stabilization", stabilization, allow_zero=True)
+        if self.alpha > STABILIZATION_MAX:
+            raise InputError(f"stabilization must be at most {STABILIZATION_MAX:g} 1/s (the "
+                             f"limit: a larger rate makes the equations stiff), got "
+                             f"{stabilization!r}")
         if output_dt is None:
             output_dt = self.duration / 400
         self.output_dt = _positive("output_dt", output_dt)
+        _check_count("output_dt", self.duration, self.output_dt, MAX_OUTPUT_SAMPLES,
+                     "output samples")
+        _check_count("control_period", self.duration, self.control_period, MAX_PERIODS,
+                     "controller periods (one torque query each)")
+        _check_count("max_step", self.duration, self.max_step, MAX_STEPS, "integrator steps")
+        _check_count("fixed_step", self.duration, self.fixed_step, MAX_STEPS, "integrator steps")
         if isinstance(max_events, bool) or not isinstance(max_events, (int, np.integer)) \
                 or max_events < 0:
             raise InputError(f"max_events must be an integer >= 0, got {max_events!r}")
@@ -1140,6 +1180,13 @@ def _shade_lost(ax, traj: Trajectory):
             start = None
 
 
+def _savefig(fig, path, dpi) -> None:
+    from ._files import atomic_path
+
+    with atomic_path(path) as tmp:  # unique temporary name, then os.replace
+        fig.savefig(tmp, dpi=dpi, format="png")
+
+
 def save_figures(traj: Trajectory, folder, *, animation: bool = True, fps: int = 20,
                  frames: int = 100, dpi: int = 110) -> dict[str, str]:
     """Write the summary figures (PNG) and the animation (GIF) of ``traj`` into ``folder``.
@@ -1185,7 +1232,7 @@ def save_figures(traj: Trajectory, folder, *, animation: bool = True, fps: int =
     ax.legend(loc="upper left", fontsize=8)
     fig.tight_layout()
     paths["displacement"] = str(out / "displacement.png")
-    fig.savefig(paths["displacement"], dpi=dpi)
+    _savefig(fig, paths["displacement"], dpi)
     plt.close(fig)
 
     # slippage ratio -----------------------------------------------------------------------
@@ -1201,7 +1248,7 @@ def save_figures(traj: Trajectory, folder, *, animation: bool = True, fps: int =
     ax.set_title("slippage ratio, " + title, fontsize=10)
     fig.tight_layout()
     paths["slippage"] = str(out / "slippage.png")
-    fig.savefig(paths["slippage"], dpi=dpi)
+    _savefig(fig, paths["slippage"], dpi)
     plt.close(fig)
 
     # power and energy ---------------------------------------------------------------------
@@ -1228,7 +1275,7 @@ def save_figures(traj: Trajectory, folder, *, animation: bool = True, fps: int =
     ax.legend(fontsize=8)
     fig.tight_layout()
     paths["energy"] = str(out / "energy.png")
-    fig.savefig(paths["energy"], dpi=dpi)
+    _savefig(fig, paths["energy"], dpi)
     plt.close(fig)
 
     # forces and active set -----------------------------------------------------------------
@@ -1269,7 +1316,7 @@ def save_figures(traj: Trajectory, folder, *, animation: bool = True, fps: int =
     ax.set_xlim(t[0], t[-1])
     fig.tight_layout()
     paths["forces"] = str(out / "forces.png")
-    fig.savefig(paths["forces"], dpi=dpi)
+    _savefig(fig, paths["forces"], dpi)
     plt.close(fig)
 
     if animation:
@@ -1291,6 +1338,11 @@ def save_animation(traj: Trajectory, path, *, fps: int = 20, frames: int = 100,
     object and of the snake's COM) and written by Pillow at ``fps`` frames per second."""
     from matplotlib.patches import Polygon
     from PIL import Image
+
+    if isinstance(frames, bool) or not isinstance(frames, (int, np.integer)) \
+            or not 2 <= frames <= MAX_FRAMES:
+        raise InputError(f"frames must be an integer from 2 to {MAX_FRAMES} (the limit: every "
+                         f"frame is held in memory until the GIF is written), got {frames!r:.60}")
 
     plt = _pyplot()
     g = traj.geometry
@@ -1376,7 +1428,10 @@ def save_animation(traj: Trajectory, path, *, fps: int = 20, frames: int = 100,
         rgba = np.asarray(canvas.buffer_rgba())
         images.append(Image.fromarray(rgba[..., :3].copy()).quantize(
             colors=32, method=Image.Quantize.FASTOCTREE, dither=Image.Dither.NONE))
-    images[0].save(str(path), save_all=True, append_images=images[1:],
-                   duration=int(round(1000 / fps)), loop=0, optimize=False)
+    from ._files import atomic_path
+
+    with atomic_path(path) as tmp:  # unique temporary name, then os.replace
+        images[0].save(str(tmp), format="GIF", save_all=True, append_images=images[1:],
+                       duration=int(round(1000 / fps)), loop=0, optimize=False)
     plt.close(fig)
     return str(path)

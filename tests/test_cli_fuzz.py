@@ -344,9 +344,9 @@ def bad_argvs(draw):
         size = na + 3 if which == "q" else na
         bad = draw(st.sampled_from(["short", "long", "nan", "inf", "text", "empty"]))
         if bad == "short":
-            text, frag = ",".join(["0"] * (size - 1)) or "", None
+            text = ",".join(["0"] * (size - 1))
             frag = (f"{which} has shape ({size - 1},), expected ({size},)" if size > 1
-                    else f"--{which} is empty")
+                    else f"argument --{which}: empty value")
         elif bad == "long":
             text = ",".join(["0"] * (size + 2))
             frag = f"{which} has shape ({size + 2},), expected ({size},)"
@@ -403,7 +403,7 @@ OTHER_COMMANDS = [
     (["optimize", "nope", "--joints", "2", "--q=0,0,0,0,0"], "snakecg optimize: error: ",
      "invalid choice: 'nope'"),
     (["simulate", "--joints", "2", "--q=0,0,0,0,0", "--tau=0,0", "--duration=-1"],
-     "snakecg simulate: error: ", "duration must be a finite number > 0"),
+     "snakecg simulate: error: ", "argument --duration: must be > 0 (s), got '-1'"),
     (["frobnicate"], "snakecg: error: ", "invalid choice: 'frobnicate'"),
     (["forward", "--robot", "examples/robot.toml", "--joints", "2", "--q=0,0,0,0,0",
       "--tau=0,0"], "snakecg forward: error: ", "--joints 2 contradicts the robot file (3 joints)"),
@@ -477,3 +477,145 @@ def test_real_process_malformed_file(tmp_path):
                  "side must be 'left' or 'right', got 'up'"):
         assert frag in line, (frag, line)
     assert re.match(r"snakecg forward: error: robot file '.*robot\.toml': ", line)
+
+
+# ------------------------------------------------------------------------------------------
+# every sub-command and every option: each draw breaks one to three options of a valid
+# command line; the command must refuse it in one line, exit 2, before any model is
+# generated or loaded and before anything is written
+SCENE_OPTION_FAULTS = {
+    "--joints": ["0", "-3", "x", "", "2.5", "31", str(2**70)],
+    "--robot": ["", "/nonexistent/robot.toml", "/", "/dev/zero", "/dev/null"],
+    "--scenario": ["muddy", "", "Wheels"],
+    "--kappa": ["nan", "inf", "-1", "0", "1e400", "", "heavy", "-inf"],
+    "--mu": ["nan", "-1", "inf", "", "x"],
+    "--contact-link": ["0", "99", "-1", "1.5", ""],
+    "--side": ["up", "", "LEFT"],
+}
+# wrong lengths: longer than any vector of the robots drawn (1-3 joints: at most 6 values)
+VECTOR_FAULTS = ["", " , ", "nan", "x", "1e400", "0,0,0,0,0,0,0", "1,2,3,4,5,6,7,8,9,10,11,12",
+                 "-inf"]
+COMMAND_FAULTS = {
+    "forward": {**SCENE_OPTION_FAULTS, "--q": VECTOR_FAULTS, "--tau": VECTOR_FAULTS,
+                "--v": VECTOR_FAULTS},
+    "optimize": {**SCENE_OPTION_FAULTS, "--q": VECTOR_FAULTS,
+                 "--tau-max": ["", "-1", "0", "nan", "1e101", "1,2,3,4,5,6", "x"],
+                 "--radius": ["0", "-1", "nan", "inf", "1e308", "", "x"],
+                 "--direction": ["0,0", "1", "1,2,3,4", "nan,1", "", "1e400,0"],
+                 "--a-min": ["-1", "nan", "1e308", "", "inf"],
+                 "--a-obj": ["1,2", "nan,0,0", "1e101,0,0", ""],
+                 "--allow-slide": ["nan", "inf", "0", "99", "1.5", "", "1e400", "-2"]},
+    "simulate": {**SCENE_OPTION_FAULTS, "--q": VECTOR_FAULTS, "--tau": VECTOR_FAULTS,
+                 "--v": VECTOR_FAULTS, "--v-obj": ["1,2", "nan,0,0", "", "1,2,3,4"],
+                 "--duration": ["0", "-1", "nan", "inf", "", "1e400"],
+                 "--controller": ["pid", ""],
+                 "--a-min": ["-1", "nan", "1e308", "1"],
+                 "--tau-max": ["0", "-1", "nan", "1e101", "0.1"],
+                 "--control-period": ["0", "-1", "nan", "1e-12", "0.01"],
+                 "--method": ["Euler", "", "rk45"],
+                 "--rtol": ["0", "1e-20", "2", "nan", ""],
+                 "--atol": ["0", "-1", "nan", ""],
+                 "--stabilization": ["-1", "nan", "1e7", ""],
+                 "--output-dt": ["0", "5e-324", "1e-9", "nan", "-1", ""],
+                 "--out": [""], "--frames": ["0", "1", "1000000000", "x", ""]},
+    "reproduce": {"--out": [""], "--kappa": ["nan", "0", "-1", "inf", "x", ""],
+                  "--torque-grid": ["10", "0", "100000000", "x", "", "-5"],
+                  "--formats": ["", "gif", "png,jpg", " , "]},
+    "generate": {"--joints": ["0", "-1", "31", "x", "", str(10**15)], "--out": [""]},
+    "show": {"--joints": ["0", "-1", "x", ""]},
+}
+# options that are faults only in some combinations (the rest of the line is valid)
+_CONDITIONAL = {("simulate", "--a-min", "1"), ("simulate", "--tau-max", "0.1"),
+                ("simulate", "--control-period", "0.01")}
+
+
+def _base(command, na, out):
+    q = ",".join(["0"] * 3 + ["0.3"] * na)
+    tau = ",".join(["0.01"] * na)
+    return {
+        "forward": ["forward", "--joints", str(na), f"--q={q}", f"--tau={tau}"],
+        "optimize": ["optimize", "max-sr", "--joints", str(na), f"--q={q}"],
+        "simulate": ["simulate", "--joints", str(na), f"--q={q}", f"--tau={tau}",
+                     "--duration", "0.01", "--no-figures", "--out", out],
+        "reproduce": ["reproduce", "--out", out],
+        "generate": ["generate", "--joints", str(na), "--out", out],
+        "show": ["show", "--joints", str(na), "M"],
+    }[command]
+
+
+@st.composite
+def broken_command_lines(draw):
+    command = draw(st.sampled_from(sorted(COMMAND_FAULTS)))
+    faults = COMMAND_FAULTS[command]
+    na = draw(st.integers(1, 3))
+    opts = draw(st.lists(st.sampled_from(sorted(faults)), min_size=1, max_size=3, unique=True))
+    chosen = {o: draw(st.sampled_from(faults[o])) for o in opts}
+    # keep at least one unconditional fault
+    if all((command, o, v) in _CONDITIONAL for o, v in chosen.items()):
+        o = draw(st.sampled_from([o for o in sorted(faults) if o not in chosen]))
+        chosen[o] = draw(st.sampled_from(
+            [v for v in faults[o] if (command, o, v) not in _CONDITIONAL]))
+    return command, na, chosen
+
+
+def _apply(base, chosen):
+    argv = list(base)
+    for opt, value in chosen.items():
+        # drop the option from the base (with its value)
+        out, skip = [], False
+        for i, a in enumerate(argv):
+            if skip:
+                skip = False
+                continue
+            if a == opt:
+                skip = True
+                continue
+            if a.startswith(opt + "="):
+                continue
+            out.append(a)
+        argv = out + [f"{opt}={value}"]
+    return argv
+
+
+@contextlib.contextmanager
+def no_model_loaded():
+    """Any generation, rendering, loading or study fails the test (the bad input must be
+    refused before)."""
+    import snakecg.model as model_mod
+    import snakecg.reproduce as rep
+    import snakecg_derive.inspect as inspect_mod
+    import snakecg_derive.render as render
+
+    def boom(*args, **kwargs):
+        raise AssertionError("work started before the bad input was refused")
+
+    with pytest.MonkeyPatch.context() as mp:
+        mp.setattr(model_mod, "_backend", boom)
+        mp.setattr(model_mod.artifacts, "model_dir", boom)
+        mp.setattr(render, "render_model", boom)
+        mp.setattr(rep, "case_study_1", boom)
+        mp.setattr(inspect_mod, "expression", boom)
+        yield
+
+
+@PROFILE
+@given(case=broken_command_lines())
+def test_every_command_and_option_refuses_bad_values(case, workdir):
+    command, na, chosen = case
+    event(command)
+    out = workdir / f"out-{next(_counter)}"
+    argv = _apply(_base(command, na, str(out)), chosen)
+    with no_model_loaded():
+        code, stdout, err = run_cli(argv)
+    assert code == 2, (argv, code, err)
+    assert "Traceback" not in err and stdout == "", (argv, err)
+    lines = err.splitlines()
+    assert len(lines) == 1, (argv, err)
+    assert lines[0].startswith((f"snakecg {command}: error: ", "snakecg: error: ")), lines[0]
+    assert not out.exists(), argv  # nothing written
+    # the message names one of the broken options (or the library name of its value)
+    names = set()
+    for opt in chosen:
+        names |= {opt, opt.lstrip("-").replace("-", "_"), opt.lstrip("-") + "0"}
+    names |= {"robot file", "joints", "q0", "v0", "v_obj0"}
+    assert any(n in lines[0] for n in names), (argv, lines[0])

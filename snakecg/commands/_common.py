@@ -1,5 +1,13 @@
 """Shared pieces of the sub-commands: argument parsing, JSON output and progress display.
 
+Every option is checked when the command line is parsed or, where the check needs the robot
+(vector lengths, link numbers), right after the robot and scene are built: always before a
+model is generated, loaded or evaluated and before anything is written. Option values are
+never empty; numbers are finite and within the limits each option states.
+
+``--json`` output is strict JSON (RFC 8259): a value that is not finite (an overflowing
+result) is printed as ``null`` and its path listed under ``"nonfinite"`` (docs/cli.md).
+
 Progress goes to standard error and only when it is a terminal, so pipes, files and CI logs
 stay clean (``SNAKECG_PROGRESS=1`` forces it on, ``SNAKECG_PROGRESS=0`` off). Commands that
 derive or compile pass :func:`~snakecg.progress.progress_reporter` to the library's
@@ -8,17 +16,26 @@ derive or compile pass :func:`~snakecg.progress.progress_reporter` to the librar
 
 from __future__ import annotations
 
+import argparse
 import json
+import math
 import sys
 
 import numpy as np
 
+from .._inputs import short_repr
 from ..errors import InputError
 from ..progress import progress_enabled, progress_reporter
 from ..robot import SCENARIOS, Robot, Scene
 
 __all__ = [
     "parse_vector",
+    "vector",
+    "real",
+    "count",
+    "text",
+    "out_dir",
+    "strict_json",
     "add_robot_args",
     "robot_from_args",
     "scene_from_args",
@@ -47,10 +64,109 @@ def parse_vector(name: str, text: str) -> list[float]:
     return out
 
 
+def vector(name: str, text: str | None, size: int | None = None, *, what: str = "",
+           sizes: tuple[int, ...] | None = None, positive: bool = False) -> list[float] | None:
+    """A list option parsed and checked: ``size`` (or one of ``sizes``) finite numbers.
+
+    ``None`` (option not given) stays None. The message names the option, the expected
+    count and what the values mean.
+    """
+    if text is None:
+        return None
+    values = parse_vector(name, text)
+    allowed = sizes if sizes is not None else ((size,) if size is not None else None)
+    if allowed is not None and len(values) not in allowed:
+        want = " or ".join(str(k) for k in allowed)
+        raise InputError(f"{name} has {len(values)} values, expected {want}{what}")
+    bad = [v for v in values if not math.isfinite(v)]
+    if bad:
+        raise InputError(f"{name} must be finite numbers{what}, got {text!r:.80}")
+    if positive and any(v <= 0 for v in values):
+        raise InputError(f"{name} must be positive numbers{what}, got {text!r:.80}")
+    return values
+
+
+def _type_error(message: str):
+    return argparse.ArgumentTypeError(message)
+
+
+def real(lo=None, hi=None, *, lo_open=False, unit: str = "", name: str = "number"):
+    """argparse ``type``: a finite float within ``[lo, hi]`` (``lo_open``: ``> lo``)."""
+    u = f" ({unit})" if unit else ""
+
+    def convert(text: str) -> float:
+        if not text.strip():
+            raise _type_error(f"empty value; expected a {name}{u}")
+        try:
+            v = float(text)
+        except ValueError:
+            raise _type_error(f"expected a {name}{u}, got {text!r:.60}") from None
+        if not math.isfinite(v):
+            raise _type_error(f"expected a finite {name}{u}, got {text!r:.60}")
+        if lo is not None and (v < lo or (lo_open and v == lo)):
+            raise _type_error(f"must be {'>' if lo_open else '>='} {lo:g}{u}, got {text!r:.60}")
+        if hi is not None and v > hi:
+            raise _type_error(f"must be <= {hi:g}{u} (the limit), got {text!r:.60}")
+        return v
+
+    convert.__name__ = name
+    return convert
+
+
+def count(lo: int, hi: int | None = None, *, why: str = "", name: str = "integer"):
+    """argparse ``type``: an integer within ``[lo, hi]`` (``why`` explains the limit)."""
+
+    def convert(text: str) -> int:
+        t = text.strip()
+        if not t:
+            raise _type_error(f"empty value; expected an {name} >= {lo}")
+        try:
+            v = int(t)
+        except ValueError:
+            raise _type_error(f"invalid int value: {text!r:.60}") from None
+        if v < lo:
+            raise _type_error(f"must be an integer >= {lo}, got {short_repr(v)}")
+        if hi is not None and v > hi:
+            raise _type_error(f"must be at most {hi}{why}, got {short_repr(v)}")
+        return v
+
+    convert.__name__ = name
+    return convert
+
+
+def text(what: str):
+    """argparse ``type``: a non-empty string (an empty value is refused, not ignored)."""
+
+    def convert(value: str) -> str:
+        if not value.strip():
+            raise _type_error(f"empty value; expected {what}")
+        if "\0" in value:
+            raise _type_error(f"contains a NUL character; expected {what}")
+        return value
+
+    convert.__name__ = "text"
+    return convert
+
+
+def out_dir(name: str, value: str):
+    """The output folder ``value`` as a Path: refused if it exists and is not a folder."""
+    from pathlib import Path
+
+    out = Path(value)
+    if out.exists() and not out.is_dir():
+        raise InputError(f"{name} {value!r} exists and is not a directory")
+    for parent in out.parents:
+        if parent.exists():
+            if not parent.is_dir():
+                raise InputError(f"{name} {value!r}: {str(parent)!r} is not a directory")
+            break
+    return out
+
+
 def add_robot_args(p, *, scene: bool = True) -> None:
     p.add_argument("--joints", type=int, metavar="N",
                    help="number of joints n_a (default 2, or the robot file's)")
-    p.add_argument("--robot", metavar="FILE",
+    p.add_argument("--robot", metavar="FILE", type=text("a robot description file"),
                    help="robot description file (TOML, see docs/model.md); the options below "
                    "override its [scene] table")
     if scene:
@@ -67,6 +183,17 @@ def add_robot_args(p, *, scene: bool = True) -> None:
 
 def _is_urdf(path) -> bool:
     return str(path).lower().endswith(".urdf")
+
+
+def check_vector(name: str, values, size: int, what: str = ""):
+    """A parsed vector option checked against the robot's sizes, as the library checks it
+    (``q has shape (4,), expected (5,) ...``), before any model is loaded."""
+    from .._inputs import as_batch
+
+    if values is None:
+        return None
+    as_batch(name, values, size, what=what)
+    return values
 
 
 def robot_from_args(args) -> Robot:
@@ -99,7 +226,39 @@ def scene_from_args(args) -> Scene:
     return Scene(robot_from_args(args), **{k: v for k, v in overrides.items() if v is not None})
 
 
-def print_json(obj) -> None:
-    json.dump(obj, sys.stdout, indent=2, sort_keys=False)
+def strict_json(obj, path: str = "", found: list | None = None):
+    """``obj`` with every non-finite float replaced by None; the paths replaced are appended
+    to ``found`` (``"lam[2]"``, ``"analysis.qdd[0]"``)."""
+    if found is None:
+        found = []
+    if isinstance(obj, dict):
+        return {k: strict_json(v, f"{path}.{k}" if path else str(k), found)
+                for k, v in obj.items()}
+    if isinstance(obj, (list, tuple)):
+        return [strict_json(v, f"{path}[{i}]", found) for i, v in enumerate(obj)]
+    if isinstance(obj, np.ndarray):
+        return strict_json(obj.tolist(), path, found)
+    if isinstance(obj, (np.bool_,)):
+        return bool(obj)
+    if isinstance(obj, np.integer):
+        return int(obj)
+    if isinstance(obj, (float, np.floating)):
+        x = float(obj)
+        if math.isfinite(x):
+            return x
+        found.append(path)
+        return None
+    return obj
+
+
+def print_json(obj) -> list[str]:
+    """Print ``obj`` as strict JSON; returns the paths of non-finite values (printed as null,
+    listed under ``"nonfinite"`` when there are any)."""
+    found: list[str] = []
+    clean = strict_json(obj, found=found)
+    if found and isinstance(clean, dict):
+        clean["nonfinite"] = found
+    json.dump(clean, sys.stdout, indent=2, sort_keys=False, allow_nan=False)
     sys.stdout.write("\n")
+    return found
 

@@ -6,7 +6,10 @@ import argparse
 
 import numpy as np
 
-from ._common import add_robot_args, parse_vector, print_json, progress_reporter, scene_from_args
+import sys
+
+from ._common import (add_robot_args, check_vector, parse_vector, print_json, progress_reporter,
+                      scene_from_args, text)
 
 #: Version of the JSON printed by ``snakecg forward --json`` (docs/cli.md).
 SCHEMA = "snakecg.forward/1"
@@ -31,12 +34,12 @@ def register(sub) -> None:
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
     add_robot_args(p)
-    p.add_argument("--q", required=True, metavar="Q",
-                   help="configuration x,y,theta,q1..qn (m and rad; NNdeg for degrees; write "
-                   "--q=-1,... when the first value is negative)")
-    p.add_argument("--tau", required=True, metavar="TAU",
-                   help="joint torques tau1..tau_n (N m; --tau=-0.1,0 when the first is negative)")
-    p.add_argument("--v", metavar="V", help="snake velocities, same order as --q (default: rest)")
+    p.add_argument("--q", required=True, metavar="Q", type=text("numbers x,y,theta,q1..qn"),
+                   help="configuration x,y,theta,q1..qn (m and rad; NNdeg for degrees)")
+    p.add_argument("--tau", required=True, metavar="TAU", type=text("numbers tau1..tau_n"),
+                   help="joint torques tau1..tau_n (N m)")
+    p.add_argument("--v", metavar="V", type=text("numbers, same order as --q"),
+                   help="snake velocities, same order as --q (default: rest)")
     p.add_argument("--json", action="store_true",
                    help=f"print JSON (schema {SCHEMA}, docs/cli.md)")
     p.set_defaults(run=run)
@@ -46,11 +49,18 @@ def run(args) -> int:
     from .. import load
 
     scene = scene_from_args(args)
-    q = parse_vector("--q", args.q)
-    tau = parse_vector("--tau", args.tau)
-    v = parse_vector("--v", args.v) if args.v else None
+    na = scene.robot.joints
+    what = f" = (n_joints + 3,) for a {na}-joint robot"
+    # every vector checked against the robot before the model is generated or loaded
+    q = check_vector("q", parse_vector("--q", args.q), na + 3, what)
+    tau = check_vector("tau", parse_vector("--tau", args.tau), na,
+                       f" (one torque per joint, n_a = {na})")
+    v = check_vector("v", parse_vector("--v", args.v), na + 3, what) if args.v else None
     model = load(scene, progress=progress_reporter())
     res = model.forward(q, tau, v=v)
+    finite = all(np.all(np.isfinite(np.asarray(x, dtype=float))) for x in
+                 (res.qdd, res.a_obj, res.lam, res.w, res.norm_lambda, res.norm_a_obj,
+                  res.norm_qdd, res.sr))
     if args.json:
         out = {"schema": SCHEMA, "joints": scene.robot.joints, "scenario": scene.scenario,
                "kappa": scene.kappa, "mu": scene.mu, "contact_link": scene.contact_link,
@@ -58,8 +68,11 @@ def run(args) -> int:
         out.update(res.to_dict())
         out["contact"] = bool(res.contact)
         out["singular"] = bool(res.singular)
+        out["finite"] = finite
         print_json(out)
-        return 0
+        if not finite:
+            _overflow_message()
+        return 0 if finite else 1
     np.set_printoptions(precision=6, suppress=True)
     print(f"scenario {scene.scenario}, kappa {scene.kappa:g}, {scene.robot.joints} joints, "
           f"contact on link {scene.contact_link} ({scene.side})")
@@ -71,4 +84,12 @@ def run(args) -> int:
           f"|qdd|^2 = {res.norm_qdd:.6g}  sr = {res.sr:.6g}")
     if res.singular:
         print("  warning: dependent constraint rows; least-norm forces")
+    if not finite:
+        _overflow_message()
+        return 1
     return 0
+
+
+def _overflow_message() -> None:
+    sys.stderr.write("snakecg forward: failed: the result is not finite (it overflows double "
+                     "precision): reduce the torques or velocities\n")

@@ -7,7 +7,7 @@ import time
 from pathlib import Path
 
 from ..errors import InputError
-from ._common import print_json, progress_reporter
+from ._common import print_json, progress_reporter, text
 
 #: Version of the JSON printed by ``snakecg generate --json`` (docs/cli.md).
 SCHEMA = "snakecg.generate/1"
@@ -33,7 +33,7 @@ def register(sub) -> None:
     )
     p.add_argument("--joints", type=int, required=True, metavar="N",
                    help="number of joints n_a >= 1 (at most SNAKECG_MAX_JOINTS, default 30)")
-    p.add_argument("--out", metavar="DIR",
+    p.add_argument("--out", metavar="DIR", type=text("an output folder"),
                    help="write na<N>/ into DIR instead of the cache (not compiled)")
     p.add_argument("--json", action="store_true",
                    help=f"print the result as JSON (schema {SCHEMA}, docs/cli.md)")
@@ -45,7 +45,7 @@ def run(args) -> int:
         raise InputError(f"--joints must be >= 1, got {args.joints}")
     progress = progress_reporter()
     t0 = time.perf_counter()
-    if args.out:
+    if args.out is not None:
         from ..artifacts import max_joints
 
         if args.joints > max_joints():

@@ -6,7 +6,9 @@ import argparse
 
 import numpy as np
 
-from ._common import add_robot_args, parse_vector, print_json, scene_from_args
+from .._inputs import MAX_MAGNITUDE
+from ._common import (add_robot_args, check_vector, parse_vector, print_json, real,
+                      scene_from_args, text, vector)
 
 EXAMPLES = """\
 examples:
@@ -42,23 +44,23 @@ def register(sub) -> None:
     p.add_argument("objective", choices=CLI_OBJECTIVES, metavar="OBJECTIVE",
                    help="max-sr | least-slip-push | strongest-push")
     add_robot_args(p)
-    p.add_argument("--q", required=True, metavar="Q",
-                   help="configuration x,y,theta,q1..qn (m and rad; NNdeg for degrees; write "
-                   "--q=-1,... when the first value is negative)")
-    p.add_argument("--tau-max", metavar="T",
+    p.add_argument("--q", required=True, metavar="Q", type=text("numbers x,y,theta,q1..qn"),
+                   help="configuration x,y,theta,q1..qn (m and rad; NNdeg for degrees)")
+    p.add_argument("--tau-max", metavar="T", type=text("one positive number or one per joint"),
                    help="box limits |tau_j| <= T_j (N m): one number or one per joint")
-    p.add_argument("--radius", type=float, metavar="R",
+    p.add_argument("--radius", type=real(0, MAX_MAGNITUDE, lo_open=True), metavar="R",
                    help="ellipsoid tau^T B^T M_s^-1 B tau <= R^2 (eq. 31); default 1 when "
                    "--tau-max is not given")
-    p.add_argument("--direction", metavar="D",
+    p.add_argument("--direction", metavar="D", type=text("numbers dx,dy or dx,dy,dalpha"),
                    help="push direction dx,dy (or dx,dy,dalpha), world frame; strongest-push "
                    "defaults to the contact normal")
-    p.add_argument("--a-min", type=float, metavar="A",
+    p.add_argument("--a-min", type=real(0, MAX_MAGNITUDE, unit="m/s^2"), metavar="A",
                    help="least-slip-push: required acceleration along --direction (m/s^2)")
-    p.add_argument("--a-obj", metavar="A",
+    p.add_argument("--a-obj", metavar="A", type=text("numbers a_x,a_y,alpha"),
                    help="least-slip-push: full object acceleration a_x,a_y,alpha instead of "
                    "--direction/--a-min")
     p.add_argument("--allow-slide", nargs="?", const="all", metavar="LINKS",
+                   type=text("'all' or link numbers such as 2,3"),
                    help="max-sr, scenario wheels: let wheels slide (all, or the listed links, "
                    "e.g. 2,3)")
     p.add_argument("--json", action="store_true",
@@ -66,39 +68,83 @@ def register(sub) -> None:
     p.set_defaults(run=run)
 
 
-def _allow_slide(text):
+def _allow_slide(text, n_links=None):
     if text is None:
         return False
     if text.strip().lower() == "all":
         return True
     from ..errors import InputError
 
-    try:
-        vals = parse_vector("--allow-slide", text)
-    except InputError:
-        vals = [0.5]
-    if any(v != int(v) for v in vals):
-        raise InputError(f"--allow-slide takes link numbers (e.g. 2,3), 'all' or nothing, "
-                         f"got {text!r}")
-    return [int(v) for v in vals]
+    tokens = text.replace(",", " ").split()
+    if not tokens or not all(t.isdigit() and t.isascii() for t in tokens) or (
+            n_links is not None and not all(1 <= int(t) <= n_links for t in tokens)):
+        links = f"1..{n_links}" if n_links is not None else ">= 1"
+        raise InputError(f"--allow-slide takes link numbers {links} (e.g. 2,3), 'all' or "
+                         f"nothing, got {text!r:.80}")
+    return [int(t) for t in tokens]
+
+
+_TASKS = {"max-sr": set(), "least-slip-push": {"--direction", "--a-min", "--a-obj"},
+          "strongest-push": {"--direction"}}
+
+
+def _check_task(args, n_links):
+    """The task options against the objective, as snakecg.optimize checks them, but before
+    any model is loaded."""
+    from ..errors import InputError
+
+    given = {k for k, v in (("--direction", args.direction), ("--a-min", args.a_min),
+                            ("--a-obj", args.a_obj)) if v is not None}
+    extra = given - _TASKS[args.objective]
+    if extra:
+        takes = ", ".join(sorted(_TASKS[args.objective])) or "no task option"
+        raise InputError(f"{', '.join(sorted(extra))} do(es) not apply to {args.objective} "
+                         f"(it takes: {takes})")
+    if args.objective == "least-slip-push":
+        if args.a_obj is not None and given & {"--direction", "--a-min"}:
+            raise InputError("least-slip-push takes either --a-obj or --direction and "
+                             "--a-min, not both")
+        if args.a_obj is None and not {"--direction", "--a-min"} <= given:
+            raise InputError("least-slip-push needs a task: --direction and --a-min, or "
+                             "--a-obj")
+    if args.allow_slide is not None and args.objective != "max-sr":
+        raise InputError("--allow-slide applies to max-sr only")
 
 
 def run(args) -> int:
     from .. import load
     from ..optimize import SCHEMA
 
+    from ..errors import InputError
+
     scene = scene_from_args(args)
-    q = parse_vector("--q", args.q)
+    na = scene.robot.joints
+    # every option checked against the robot and the objective before the model is loaded
+    q = check_vector("q", parse_vector("--q", args.q), na + 3,
+                     f" = (n_joints + 3,) for a {na}-joint robot")
     tau_max = None
     if args.tau_max is not None:
-        tm = parse_vector("--tau-max", args.tau_max)
+        tm = vector("--tau-max", args.tau_max, positive=True,
+                    what=f" (N m: one number or one per joint, {na} joints)")
+        if len(tm) not in (1, na):
+            raise InputError(f"tau_max has shape ({len(tm)},), expected one number or ({na},)"
+                             f" (N m, one per joint)")
+        if max(tm) > MAX_MAGNITUDE:
+            raise InputError(f"--tau-max must be at most {MAX_MAGNITUDE:g} N m (the limit), "
+                             f"got {max(tm):g}")
         tau_max = tm[0] if len(tm) == 1 else tm
+    direction = vector("--direction", args.direction, sizes=(2, 3),
+                       what=" (dx,dy or dx,dy,dalpha)")
+    if direction is not None and not any(direction):
+        raise InputError("--direction must be non-zero")
+    a_obj = vector("--a-obj", args.a_obj, 3, what=" (a_x,a_y,alpha)")
+    if a_obj is not None and max(map(abs, a_obj)) > MAX_MAGNITUDE:
+        raise InputError(f"--a-obj must be at most {MAX_MAGNITUDE:g} in magnitude (the "
+                         f"limit), got {args.a_obj!r:.80}")
+    _check_task(args, scene.robot.n_links)
     kwargs = dict(
-        tau_max=tau_max, radius=args.radius,
-        direction=parse_vector("--direction", args.direction) if args.direction else None,
-        a_min=args.a_min,
-        a_obj=parse_vector("--a-obj", args.a_obj) if args.a_obj else None,
-        allow_slide=_allow_slide(args.allow_slide),
+        tau_max=tau_max, radius=args.radius, direction=direction, a_min=args.a_min,
+        a_obj=a_obj, allow_slide=_allow_slide(args.allow_slide, scene.robot.n_links),
     )
     objective = args.objective.replace("-", "_")
     model = load(scene)

@@ -2,7 +2,13 @@
 
 from __future__ import annotations
 
-from pathlib import Path
+import argparse
+
+from ..reproduce import FORMATS, MAX_TORQUE_GRID
+from ._common import count, out_dir, print_json, real, text
+
+#: Version of the JSON printed by ``snakecg reproduce --json`` (docs/cli.md).
+SCHEMA = "snakecg.reproduce/1"
 
 
 def register(sub) -> None:
@@ -13,39 +19,65 @@ def register(sub) -> None:
         "and the 784-configuration sweep; case study 2 (3 joints): Fig. 5 polar maps, Fig. 6 "
         "best/worst shapes and Table 2 beside the paper's values. Choices the paper leaves "
         "open are documented in docs/reproduction.md.",
-        epilog="example: snakecg reproduce --out snakecg-output",
+        epilog="examples:\n  snakecg reproduce --out snakecg-output\n"
+        "  snakecg reproduce --out snakecg-output --json > summary.json",
+        formatter_class=argparse.RawDescriptionHelpFormatter,
     )
-    p.add_argument("--out", default="snakecg-output", metavar="DIR",
+    p.add_argument("--out", default="snakecg-output", metavar="DIR", type=text("an output folder"),
                    help="output folder (default: snakecg-output)")
-    p.add_argument("--kappa", type=float, default=100.0,
+    p.add_argument("--kappa", type=real(0, lo_open=True), default=100.0,
                    help="object/link mass ratio for case study 2 and the sweep (default 100)")
-    p.add_argument("--torque-grid", type=int, default=181,
-                   help="points per axis of the Fig. 4 torque grid (default 181)")
-    p.add_argument("--formats", default="png,svg", help="figure formats (default png,svg)")
+    p.add_argument("--torque-grid", type=count(11, MAX_TORQUE_GRID, why=" (the limit: the "
+                                               "Fig. 4 maps hold grid^2 results)"), default=181,
+                   help=f"points per axis of the Fig. 4 torque grid, 11 to {MAX_TORQUE_GRID} "
+                   "(default 181)")
+    p.add_argument("--formats", default="png,svg", type=text("png, svg or pdf"),
+                   help="figure formats (default png,svg)")
     p.add_argument("--alternatives", action="store_true",
                    help="also write alternatives.md: Table 2 under alternative readings")
+    p.add_argument("--json", action="store_true",
+                   help=f"print the summary as JSON (schema {SCHEMA}, docs/cli.md); the "
+                   "human-readable report goes to standard error")
     p.set_defaults(run=run)
 
 
 def run(args) -> int:
+    import sys
+
+    from .._files import write_text
     from ..errors import InputError
     from ..reproduce import ReproduceOptions, reproduce
 
-    if args.kappa <= 0:
-        raise InputError(f"--kappa must be > 0, got {args.kappa}")
-    if args.torque_grid < 11:
-        raise InputError(f"--torque-grid must be >= 11, got {args.torque_grid}")
     formats = tuple(f.strip() for f in args.formats.split(",") if f.strip())
-    bad = [f for f in formats if f not in ("png", "svg", "pdf")]
+    bad = [f for f in formats if f not in FORMATS]
     if bad or not formats:
-        raise InputError(f"--formats takes png, svg or pdf separated by commas, got {args.formats!r}")
-    opts = ReproduceOptions(out=Path(args.out), kappa_case2=args.kappa,
+        raise InputError(f"--formats takes png, svg or pdf separated by commas, got "
+                         f"{args.formats!r:.80}")
+    out = out_dir("--out", args.out)
+    opts = ReproduceOptions(out=out, kappa_case2=args.kappa,
                             torque_grid=args.torque_grid, formats=formats)
-    reproduce(opts)
+    echo = (lambda text: print(text, file=sys.stderr)) if args.json else print
+    report = reproduce(opts, echo=echo)
+    files = [str(f) for f in report.files]
+    alternatives = None
     if args.alternatives:
         from ..reproduce import alternative_readings
 
-        text = alternative_readings(opts)
-        (opts.out / "alternatives.md").write_text(text, encoding="utf-8")
-        print(text)
+        alternatives = alternative_readings(opts)
+        write_text(opts.out / "alternatives.md", alternatives)
+        files.append(str(opts.out / "alternatives.md"))
+        echo(alternatives)
+    if args.json:
+        from ..reproduce import PAPER_TABLE2
+
+        print_json({
+            "schema": SCHEMA,
+            "out": str(opts.out),
+            "table2": {k: list(v) for k, v in report.table2.items()},
+            "paper_table2": {k: list(v) for k, v in PAPER_TABLE2.items()},
+            "options": {"kappa": args.kappa, "torque_grid": args.torque_grid,
+                        "formats": list(formats), "alternatives": bool(args.alternatives)},
+            "timings_s": dict(report.timings),
+            "files": files,
+        })
     return 0

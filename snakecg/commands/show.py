@@ -156,20 +156,17 @@ def _pretty(label: str, e) -> str:
     lines = [f"{label}: {rows} x {cols} matrix"
              + (", symmetric: upper triangle" if symmetric else "")
              + ", zero entries omitted (1-based indices)"]
-    for i in range(rows):
-        for j in range(i if symmetric else 0, cols):
-            if e[i, j] == 0:
-                continue
-            head = f"[{i + 1},{j + 1}] = "
-            body = sp.pretty(e[i, j], use_unicode=uni, wrap_line=False)
-            if len(body.splitlines()) == 1 and len(head) + len(body) <= width:
-                lines.append(head + body)
-                continue
-            # too wide (or several lines): plain one-line text, wrapped between terms
-            lines.extend(textwrap.wrap(sp.sstr(e[i, j]), width=max(40, width),
-                                       initial_indent=head,
-                                       subsequent_indent=" " * len(head),
-                                       break_on_hyphens=False))
+    entries = [(f"[{i + 1},{j + 1}] = ", e[i, j]) for i in range(rows)
+               for j in range(i if symmetric else 0, cols) if e[i, j] != 0]
+    bodies = [sp.pretty(x, use_unicode=uni, wrap_line=False) for _, x in entries]
+    if all(len(b.splitlines()) == 1 and len(h) + len(b) <= width
+           for (h, _), b in zip(entries, bodies)):
+        return "\n".join(lines + [h + b for (h, _), b in zip(entries, bodies)])
+    # one entry too wide (or on several lines): every entry in one style, plain one-line
+    # text wrapped between terms (not pretty symbols for some and m2**2 for others)
+    for head, x in entries:
+        lines.extend(textwrap.wrap(sp.sstr(x), width=max(40, width), initial_indent=head,
+                                   subsequent_indent=" " * len(head), break_on_hyphens=False))
     return "\n".join(lines)
 
 

@@ -9,8 +9,12 @@ from pathlib import Path
 
 import numpy as np
 
-from ..errors import InputError
-from ._common import add_robot_args, parse_vector, print_json, progress_reporter, scene_from_args
+from .._inputs import MAX_MAGNITUDE
+from ..errors import InputError, SnakecgError
+from ..simulate import (_METHODS, MAX_FRAMES, MAX_OUTPUT_SAMPLES, MAX_PERIODS, RTOL_MIN,
+                        STABILIZATION_MAX)
+from ._common import (add_robot_args, check_vector, count, out_dir, parse_vector, print_json,
+                      progress_reporter, real, scene_from_args, strict_json, text)
 
 EXAMPLES = """\
 examples:
@@ -35,79 +39,115 @@ def register(sub) -> None:
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
     add_robot_args(p)
-    p.add_argument("--q", required=True, metavar="Q",
-                   help="initial configuration x,y,theta,q1..qn (m and rad; NNdeg for degrees; "
-                   "--q=-1,... when the first value is negative)")
-    p.add_argument("--tau", metavar="TAU",
+    p.add_argument("--q", required=True, metavar="Q", type=text("numbers x,y,theta,q1..qn"),
+                   help="initial configuration x,y,theta,q1..qn (m and rad; NNdeg for degrees)")
+    p.add_argument("--tau", metavar="TAU", type=text("numbers tau1..tau_n"),
                    help="constant joint torques tau1..tau_n (N m); or use --controller")
-    p.add_argument("--v", metavar="V", help="initial snake velocities (default: rest)")
-    p.add_argument("--v-obj", metavar="VO", help="initial object twist vx,vy,omega (default 0)")
-    p.add_argument("--duration", type=float, default=0.5, help="seconds (default 0.5)")
+    p.add_argument("--v", metavar="V", type=text("numbers, same order as --q"),
+                   help="initial snake velocities (default: rest)")
+    p.add_argument("--v-obj", metavar="VO", type=text("numbers vx,vy,omega"),
+                   help="initial object twist vx,vy,omega (default 0)")
+    p.add_argument("--duration", type=real(0, lo_open=True, unit="s"), default=0.5,
+                   help="seconds (default 0.5)")
     p.add_argument("--controller", choices=("least-slip-push",),
                    help="feedback law instead of --tau: the least-slippage push query "
                    "(snakecg optimize) answered every --control-period")
-    p.add_argument("--a-min", type=float,
+    p.add_argument("--a-min", type=real(0, MAX_MAGNITUDE, unit="m/s^2"),
                    help="controller task: object acceleration along the contact normal (m/s^2)")
-    p.add_argument("--tau-max", type=float, help="controller: torque limit |tau_j| (N m)")
-    p.add_argument("--control-period", type=float,
+    p.add_argument("--tau-max", type=real(0, MAX_MAGNITUDE, lo_open=True, unit="N m"),
+                   help="controller: torque limit |tau_j| (N m)")
+    p.add_argument("--control-period", type=real(0, lo_open=True, unit="s"),
                    help="zero-order hold of the controller (s, default 0.01)")
-    p.add_argument("--method", default="DOP853",
+    p.add_argument("--method", default="DOP853", choices=_METHODS,
                    help="scipy solve_ivp method (default DOP853)")
-    p.add_argument("--rtol", type=float, default=1e-9, help="relative tolerance (default 1e-9)")
-    p.add_argument("--atol", type=float, default=1e-11, help="absolute tolerance (default 1e-11)")
-    p.add_argument("--stabilization", type=float, default=10.0,
-                   help="Baumgarte rate of the held rows, 1/s (default 10; 0: off)")
-    p.add_argument("--output-dt", type=float, help="output sample spacing (default duration/400)")
+    p.add_argument("--rtol", type=real(RTOL_MIN, 1.0), default=1e-9,
+                   help=f"relative tolerance, {RTOL_MIN:.3g} to 1 (default 1e-9)")
+    p.add_argument("--atol", type=real(0, lo_open=True), default=1e-11,
+                   help="absolute tolerance (default 1e-11)")
+    p.add_argument("--stabilization", type=real(0, STABILIZATION_MAX, unit="1/s"), default=10.0,
+                   help=f"Baumgarte rate of the held rows, 1/s, at most {STABILIZATION_MAX:g} "
+                   "(default 10; 0: off)")
+    p.add_argument("--output-dt", type=real(0, lo_open=True, unit="s"),
+                   help="output sample spacing (default duration/400; at most "
+                   f"{MAX_OUTPUT_SAMPLES:g} samples)")
     p.add_argument("--out", default="snakecg-output/simulate", metavar="DIR",
+                   type=text("an output folder"),
                    help="output folder (default snakecg-output/simulate)")
     p.add_argument("--no-figures", action="store_true", help="write no PNG and no GIF")
     p.add_argument("--no-animation", action="store_true", help="write the PNGs but no GIF")
-    p.add_argument("--frames", type=int, default=100, help="animation frames (default 100)")
+    p.add_argument("--frames", type=count(2, MAX_FRAMES, why=" (the limit: frames are held in "
+                                           "memory until the GIF is written)"), default=100,
+                   help=f"animation frames, 2 to {MAX_FRAMES} (default 100)")
     p.add_argument("--json", action="store_true",
                    help="print the summary as JSON (schema snakecg.simulate/1)")
     p.set_defaults(run=run)
 
 
+def _check_counts(args) -> None:
+    """Output samples and controller periods within their limits (before any work)."""
+    from ..simulate import _check_count
+
+    output_dt = args.output_dt if args.output_dt is not None else args.duration / 400
+    _check_count("--output-dt", args.duration, output_dt, MAX_OUTPUT_SAMPLES, "output samples")
+    if args.controller:
+        _check_count("--control-period", args.duration, args.control_period or 0.01,
+                     MAX_PERIODS, "controller periods (one torque query each)")
+
+
 def run(args) -> int:
     from .. import load
+    from .._files import write_text
     from ..simulate import least_slip_push_controller, save_figures, simulate
 
+    # every option checked against the robot and each other before the model is loaded
     scene = scene_from_args(args)
-    q = parse_vector("--q", args.q)
-    v = parse_vector("--v", args.v) if args.v else None
-    v_obj = parse_vector("--v-obj", args.v_obj) if args.v_obj else None
-    if args.frames < 2:
-        raise InputError(f"--frames must be at least 2, got {args.frames}")
-    model = load(scene, progress=progress_reporter())
-    control_period = args.control_period
+    na = scene.robot.joints
+    what = f" = (n_joints + 3,) for a {na}-joint robot"
+    q = check_vector("q0", parse_vector("--q", args.q), na + 3, what)
+    v = check_vector("v0", parse_vector("--v", args.v), na + 3, what) if args.v else None
+    v_obj = check_vector("v_obj0", parse_vector("--v-obj", args.v_obj), 3) \
+        if args.v_obj else None
     if args.controller:
         if args.tau:
             raise InputError("give either --tau or --controller, not both")
         if args.a_min is None:
             raise InputError("--controller least-slip-push needs --a-min (m/s^2 along the "
                              "contact normal)")
-        tau = least_slip_push_controller(model, a_min=args.a_min, tau_max=args.tau_max)
-        if control_period is None:
-            control_period = 0.01
+        tau = None
     else:
         if not args.tau:
             raise InputError("give the joint torques --tau (or --controller least-slip-push)")
-        tau = parse_vector("--tau", args.tau)
+        for opt, val in (("--a-min", args.a_min), ("--tau-max", args.tau_max),
+                         ("--control-period", args.control_period)):
+            if val is not None:
+                raise InputError(f"{opt} applies to --controller least-slip-push only")
+        tau = check_vector("tau", parse_vector("--tau", args.tau), na,
+                           f" (one torque per joint, n_a = {na})")
+    _check_counts(args)
+    out = out_dir("--out", args.out)
+    model = load(scene, progress=progress_reporter())
+    control_period = args.control_period
+    if args.controller:
+        tau = least_slip_push_controller(model, a_min=args.a_min, tau_max=args.tau_max)
+        if control_period is None:
+            control_period = 0.01
     traj = simulate(model, q, tau, args.duration, v0=v, v_obj0=v_obj,
                     control_period=control_period, method=args.method, rtol=args.rtol,
                     atol=args.atol, stabilization=args.stabilization,
                     output_dt=args.output_dt)
-    out = Path(args.out)
     try:
         out.mkdir(parents=True, exist_ok=True)
+        # every file under a unique temporary name, then renamed: two runs into one folder
+        # both succeed (the later one's files win), a reader never sees half a file
         traj.save(out / "trajectory.npz")
-        (out / "summary.json").write_text(json.dumps(traj.summary, indent=2) + "\n")
+        write_text(out / "summary.json", json.dumps(strict_json(traj.summary), indent=2,
+                                                    allow_nan=False) + "\n")
         files = {"trajectory": str(out / "trajectory.npz"), "summary": str(out / "summary.json")}
         if not args.no_figures:
             files.update(save_figures(traj, out, animation=not args.no_animation,
                                       frames=args.frames))
-    except OSError as exc:
-        raise InputError(f"cannot write to --out {str(out)!r}: {exc}") from None
+    except OSError as exc:  # not the input's fault (disk full, permissions): exit status 1
+        raise SnakecgError(f"cannot write to --out {str(out)!r}: {exc}") from None
     s = traj.summary
     if args.json:
         print_json({**s, "files": files})
