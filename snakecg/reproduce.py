@@ -90,6 +90,7 @@ class ReproduceReport:
     table2: dict = field(default_factory=dict)
     files: list = field(default_factory=list)
     feasible_count: int | None = None
+    grid_count: int | None = None
     timings: dict = field(default_factory=dict)
 
 
@@ -440,6 +441,9 @@ def reproduce(opts: ReproduceOptions | None = None, *, load=None, echo=print) ->
                "timings_s": report.timings}
     _write_text(out / "summary.json", json.dumps(summary, indent=2) + "\n", report)
     echo(table2_text(report.table2)[0])
+    if opts.feasible_only:
+        echo(f"(over the {report.feasible_count} physically feasible shapes of the "
+             f"{report.grid_count} in the grid)")
     echo(f"\nwrote {len(report.files)} files to {out}/: case study 1 in "
          f"{report.timings['case_study_1']:.1f} s, case study 2 in "
          f"{report.timings['case_study_2']:.1f} s (models ready in "
@@ -457,7 +461,7 @@ def _studies(opts: ReproduceOptions, report: ReproduceReport, load, drawer) -> N
     feas = feasibility(results[SCENARIOS[0]][0], Q, clearance=opts.clearance)
     t = table2(results, feas.feasible if opts.feasible_only else None)
     report.table2 = t
-    report.feasible_count = int(feas.feasible.sum())
+    report.feasible_count, report.grid_count = int(feas.feasible.sum()), len(Q)
     _, md, csv_text = table2_text(t)
     _write_text(out / "table2.md", md, report)
     _write_text(out / "table2.csv", csv_text, report)

@@ -22,6 +22,10 @@ def register(sub) -> None:
     p.add_argument("--torque-grid", type=int, default=181,
                    help="points per axis of the Fig. 4 torque grid (default 181)")
     p.add_argument("--formats", default="png,svg", help="figure formats (default png,svg)")
+    p.add_argument("--feasible-only", action="store_true",
+                   help="Table 2 and Figs. 5-6 over physically possible shapes only (no links "
+                   "crossing or closer than 1 cm, none inside the object); default: every shape "
+                   "of the grid, as in the paper, with the infeasible ones marked in the figures")
     p.add_argument("--alternatives", action="store_true",
                    help="also write alternatives.md: Table 2 under alternative readings")
     p.set_defaults(run=run)
@@ -40,7 +44,8 @@ def run(args) -> int:
     if bad or not formats:
         raise InputError(f"--formats takes png, svg or pdf separated by commas, got {args.formats!r}")
     opts = ReproduceOptions(out=Path(args.out), kappa_case2=args.kappa,
-                            torque_grid=args.torque_grid, formats=formats)
+                            torque_grid=args.torque_grid, formats=formats,
+                            feasible_only=args.feasible_only)
     reproduce(opts)
     if args.alternatives:
         from ..reproduce import alternative_readings
