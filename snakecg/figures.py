@@ -24,7 +24,8 @@ from pathlib import Path
 
 import numpy as np
 
-__all__ = ["Fig4Panel", "Shape", "figure4", "figure5", "figure6", "write_figure"]
+__all__ = ["Drawer", "Fig4Panel", "Shape", "figure4", "figure5", "figure6", "make_figure4",
+           "make_figure5", "make_figure6", "write_figure"]
 
 SCENARIO_LABEL = {"frictionless": "Scenario 1 (frictionless)",
                   "wheels": "Scenario 2 (wheels, μ = 0.1)",
@@ -91,8 +92,12 @@ class Fig4Panel:
     ellipse: np.ndarray
 
 
-def figure4(panels: list[Fig4Panel], *, kappa: float, joints_deg, stem: Path, formats,
-            infeasible: str = "") -> list[Path]:
+def figure4(panels, *, stem: Path, formats, **kw) -> list[Path]:
+    """Draw :func:`make_figure4` and write it as ``stem.<fmt>``."""
+    return write_figure(make_figure4(panels, **kw), stem, formats)
+
+
+def make_figure4(panels: list[Fig4Panel], *, kappa: float, joints_deg, infeasible: str = ""):
     """Fig. 4 for one kappa: rows ``norm_a_obj``, ``norm_qdd``, ``sr``; one column per
     scenario. ``infeasible`` names why the configuration is not physically possible ("" when
     it is)."""
@@ -135,7 +140,7 @@ def figure4(panels: list[Fig4Panel], *, kappa: float, joints_deg, stem: Path, fo
         fig.text(0.5, 0.915, f"This configuration is not physically feasible ({infeasible}); "
                  "the paper uses it, and so does this figure.", ha="center", color="firebrick",
                  fontsize=FONT + 1)
-    return write_figure(fig, stem, formats)
+    return fig
 
 
 # ------------------------------------------------------------------------------------------
@@ -160,8 +165,13 @@ def _binned_max(angle, radius, values, infeasible, r_max):
     return z.reshape(ANGLE_BINS, RADIUS_BINS), bad.reshape(ANGLE_BINS, RADIUS_BINS)
 
 
-def figure5(angle, radius, maxima: dict, *, infeasible, kappa: float, stem: Path, formats,
-            feasible_only: bool = False) -> list[Path]:
+def figure5(angle, radius, maxima, *, stem: Path, formats, **kw) -> list[Path]:
+    """Draw :func:`make_figure5` and write it as ``stem.<fmt>``."""
+    return write_figure(make_figure5(angle, radius, maxima, **kw), stem, formats)
+
+
+def make_figure5(angle, radius, maxima: dict, *, infeasible, kappa: float,
+                 feasible_only: bool = False):
     """Fig. 5: ``maxima[scenario][metric]`` (per configuration) against the COM's polar
     coordinates ``angle``, ``radius``; ``infeasible`` marks the shapes that are not physically
     possible (left out when ``feasible_only``)."""
@@ -213,7 +223,7 @@ def figure5(angle, radius, maxima: dict, *, infeasible, kappa: float, stem: Path
         "the contact point, angle from the contacting link's axis); each cell shows the largest "
         f"value of the configurations whose COM lies in it ({ANGLE_BINS} × {RADIUS_BINS} cells)"
         f"\n{shown}", fontsize=FONT + 1)
-    return write_figure(fig, stem, formats)
+    return fig
 
 
 # ------------------------------------------------------------------------------------------
@@ -259,7 +269,12 @@ def draw_shape(ax, shape: Shape, *, lw=4.0):
     ax.plot(*shape.com, "x", color="black", ms=8, mew=2, zorder=4)
 
 
-def figure6(rows: dict, *, stem: Path, formats, feasible_only: bool = False) -> list[Path]:
+def figure6(rows, *, stem: Path, formats, **kw) -> list[Path]:
+    """Draw :func:`make_figure6` and write it as ``stem.<fmt>``."""
+    return write_figure(make_figure6(rows, **kw), stem, formats)
+
+
+def make_figure6(rows: dict, *, feasible_only: bool = False):
     """Fig. 6: ``rows[scenario]`` is a list of :class:`Shape` (worst/best ``norm_a_obj``,
     worst/best ``sr``), drawn to one common scale."""
     scenarios = list(rows)
@@ -301,7 +316,7 @@ def figure6(rows: dict, *, stem: Path, formats, feasible_only: bool = False) -> 
     fig.suptitle("Fig. 6 (case study 2): worst and best configurations of Table 2, " + which +
                  "\ntail link orange, joints black, contact red star, snake COM black cross, "
                  "object grey", fontsize=FONT + 1)
-    return write_figure(fig, stem, formats)
+    return fig
 
 
 # ------------------------------------------------------------------------------------------
