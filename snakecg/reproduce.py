@@ -271,7 +271,8 @@ def table2_text(t: dict) -> tuple[str, str, str]:
             cells.append(f"{ours:.6g} | {paper:.6g} | {rel:+.1%}")
             tline += f"{ours:>12.6g}{paper:>12.6g}{rel:>+12.1%}"
             rows_csv.append([key, s, f"{ours:.9g}", f"{paper:.9g}", f"{rel:.6f}"])
-        md.append(f"| {label} | " + " | ".join(cells) + " |")
+        md_label = label.replace("||", "‖").replace("^2", "²")  # no "|" inside a table cell
+        md.append(f"| {md_label} | " + " | ".join(cells) + " |")
         term.append(tline)
     buf = io.StringIO()
     csv.writer(buf, lineterminator="\n").writerows(rows_csv)
@@ -372,7 +373,8 @@ def alternative_readings(opts: ReproduceOptions | None = None, *, load=None) -> 
         ("kappa = 50", {"kappa": 50.0}, None),
         ("kappa = 150", {"kappa": 150.0}, None),
         ("object on the right of link 1", {"side": "right"}, None),
-        ("only shapes without self-crossing or object penetration", {}, "feasible"),
+        ("only shapes whose links neither cross nor enter the object (clearance 0)", {},
+         "feasible"),
         ("max over 12 sampled torque directions instead of the exact max", {}, "sampled"),
     ]
     lines = ["| reading | S1 worst a_obj | S1 best a_obj | S1 worst sr | S1 best sr | "

@@ -81,8 +81,8 @@ def test_python_blocks_run(page, monkeypatch):
 def test_the_docs_have_examples():
     """Guards the extraction itself: the pages that must carry runnable examples do."""
     names = {p.name for p in PYTHON_PAGES}
-    for required in ("README.md", "getting-started.md", "model.md", "scenarios.md",
-                     "metrics.md", "generated-code.md", "symbolic.md"):
+    for required in ("README.md", "getting-started.md", "tutorial.md", "model.md",
+                     "scenarios.md", "metrics.md", "generated-code.md", "symbolic.md"):
         assert required in names, f"no ```python block found in {required}"
 
 
