@@ -1,4 +1,4 @@
-"""Benchmark of the optimal torque queries (issue #5): ``SceneModel.optimize``.
+"""Benchmark of the optimal torque queries: ``SceneModel.optimize``.
 
 Warm query latency (one configuration per call, the whole public call: validation, maps,
 solve, forward check), at random configurations, for every kind of query, at n_a = 3 and 6 in
@@ -14,7 +14,7 @@ clock includes time the process waited for a core.
 Targets (n_a = 3): under 1 ms for the QP kinds, under 20 ms for max-sr with sliding wheels
 (the per-wheel-state QPs / NLP); the 784-configuration sweep under 2 s.
 
-    /work/venv/bin/python benchmarks/bench_optimize.py [--n 200] [--joints 3 6]
+    python benchmarks/bench_optimize.py [--n 200] [--joints 3 6]
 """
 
 from __future__ import annotations
