@@ -436,7 +436,7 @@ _PROBE = r"""
   }
   MathJax.startup.promise.then(function () {
     var items = [];
-    MathJax.startup.document.math.forEach(function (m) {
+    Array.from(MathJax.startup.document.math).forEach(function (m) {
       var r = m.typesetRoot ? m.typesetRoot.getBoundingClientRect() : null;
       var block = m.typesetRoot ? m.typesetRoot.closest("div.arithmatex") : null;
       items.push({tex: m.math, display: m.display, rendered: !!(m.typesetRoot &&
@@ -522,11 +522,14 @@ def test_formulas_render_in_a_browser_offline(built_site, site_server, tmp_path)
     shot = tmp_path / "model.png"
     _browser(["--window-size=1280,4000", f"--screenshot={shot}",
               f"{site_server}/model/probe.html"], tmp_path)
+    import numpy as np
+
     with Image.open(shot) as im:
         x, y, w, h = (int(round(v)) for v in tallest["box"])
-        crop = im.convert("L").crop((x, y, x + w, y + h))
-        dark = sum(1 for p in crop.getdata() if p < 110) / (w * h)
-    assert dark > 0.02, f"the matrix's box is blank on the screenshot ({dark:.3%} ink)"
+        ink = np.asarray(im.convert("L").crop((x, y, x + w, y + h))) < 110
+    assert ink.mean() > 0.002, f"the matrix's box is blank on the screenshot ({ink.mean():.3%})"
+    rows = np.flatnonzero(ink.any(axis=1))
+    assert rows[-1] - rows[0] > 1.5 * probe["line"], "the drawn matrix is not taller than a line"
     # the symbolic page's wide matrices scroll in their block; the page itself does not
     sym = _probe(built_site, site_server, "symbolic", 900, tmp_path)
     assert any(i["scrolls"] for i in sym["items"])
