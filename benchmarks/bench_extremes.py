@@ -1,4 +1,4 @@
-"""Benchmark: extremes over the input ellipsoid and `snakecg reproduce` (issues #3 and #4).
+"""Benchmark: extremes over the input ellipsoid and `snakecg reproduce`.
 
     python benchmarks/bench_extremes.py [--repeat 7] [--reproduce] [--exact-wheels [N]]
 
@@ -6,7 +6,7 @@ Prints, per scenario, the time of `model.extremes` over the 784 configurations o
 (2 joints) and the 21,952 of case study 2 (3 joints), the best of `--repeat` runs after a warm
 call, both through the compiled closed form (`metric_extremes`) and numpy's eigensolver; with
 `--reproduce`, the wall time of the whole `snakecg reproduce` after the models are built.
-Targets (issue #3): 784 configurations under 5 ms, 21,952 under 60 ms (exact scenarios).
+Targets: 784 configurations under 5 ms, 21,952 under 60 ms (exact scenarios).
 
 With `--exact-wheels`, the exact bounded-wheel extremes (`snakecg.piecewise`) of case study 2
 (3 joints, kappa = 100, mu = 0.1; the first N of the 21,952 configurations, default all) on one

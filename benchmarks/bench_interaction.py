@@ -1,4 +1,4 @@
-"""Benchmark of the interaction analysis (issue #3): ``SceneModel.forward`` batched and single.
+"""Benchmark of the interaction analysis: ``SceneModel.forward`` batched and single.
 
 For a 3-joint snake in the ``ideal_wheels`` and ``wheels`` scenarios, at rest:
 
@@ -11,7 +11,7 @@ For a 3-joint snake in the ``ideal_wheels`` and ``wheels`` scenarios, at rest:
 
 Targets: batched < 2 us per pair (ideal_wheels), single call < 50 us.
 
-    /work/venv/bin/python benchmarks/bench_interaction.py [--n 100000] [--repeat 3]
+    python benchmarks/bench_interaction.py [--n 100000] [--repeat 3]
 """
 
 from __future__ import annotations

@@ -1,5 +1,5 @@
 #!/usr/bin/env python
-"""Benchmark of the derive -> generated -> snakecg pipeline (issue #2); prints a table.
+"""Benchmark of the derive -> generated -> snakecg pipeline; prints a table.
 
 For each joint count ``n_a`` (default 2, 3, 6, 10, 20):
 
@@ -286,7 +286,7 @@ def _print_table(rows) -> None:
 
 def _print_targets(rows) -> None:
     by = {r["joints"]: r for r in rows}
-    print("\ntargets (issue #2):")
+    print("\ntargets:")
 
     def say(ok, text):
         print(f"  [{'met' if ok else 'NOT met'}] {text}")

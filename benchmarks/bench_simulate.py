@@ -1,4 +1,4 @@
-"""Benchmark of the simulation (issue #8): a 0.5 s push with a constant torque.
+"""Benchmark of the simulation: a 0.5 s push with a constant torque.
 
 For each joint count (3, 6, 10) and scenario: the snake starts at rest in a bent shape
 (joint angles cycling through 30, -35, 25 degrees), touching the object (kappa = 10) with
@@ -11,10 +11,10 @@ Accuracy is the largest position error (m) of every link COM and of the object a
 against a reference run at rtol = 1e-13, atol = 1e-15. For each tolerance the table gives the
 wall-clock time of ``model.simulate`` (median of ``--repeat`` runs, output at the end only,
 model already loaded and compiled), the error and the number of right-hand-side evaluations;
-``target`` marks the loosest tolerance that reaches 1e-6 m (the issue's target: under 0.2 s
+``target`` marks the loosest tolerance that reaches 1e-6 m (the target: under 0.2 s
 at n_a = 3), ``default`` the default settings (rtol 1e-9, atol 1e-11, Baumgarte 10 1/s).
 
-    /work/venv/bin/python benchmarks/bench_simulate.py [--joints 3 6 10] [--radius 1 4]
+    python benchmarks/bench_simulate.py [--joints 3 6 10] [--radius 1 4]
         [--repeat 5]
 """
 

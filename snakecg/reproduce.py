@@ -20,14 +20,17 @@ import csv
 import io
 import json
 import time
+from contextlib import contextmanager
 from dataclasses import dataclass, field
 from pathlib import Path
 
 import numpy as np
 
-from ._files import atomic_path, write_text
+from ._files import write_text
+from .figures import paper as figures
 from .analysis import com_polar, joint_grid
 from .errors import InputError
+from .geometry import SELF_CLEARANCE, feasibility, link_segments
 from .progress import progress_bar
 from .robot import SCENARIOS, Robot, Scene
 
@@ -49,17 +52,9 @@ TABLE2_ROWS = {
 SCENARIO_LABEL = {"frictionless": "Scenario 1 (frictionless)",
                   "wheels": "Scenario 2 (wheels, mu = 0.1)",
                   "ideal_wheels": "Scenario 3 (ideal wheels)"}
-METRIC_LABEL = {
-    "norm_a_obj": r"$\|\vec a_{obj}\|^2$",
-    "norm_qdd": r"$\|\vec{\ddot q}_s\|^2$",
-    "norm_lambda": r"$\|\vec\lambda\|^2$",
-    "sr": "sr",
-}
 #: Maxima the figures and Table 2 use; with bounded wheels only these are refined by the local
 #: search (the maximum of norm_qdd, in the CSV files, is the best of the sampled candidates).
 REFINED = ("norm_a_obj", "sr", "norm_lambda")
-METRIC_UNIT = {"norm_a_obj": r"kg m$^2$/s$^4$", "norm_qdd": r"kg m$^2$/s$^4$",
-               "norm_lambda": r"N$^2$/kg", "sr": "-"}
 
 
 @dataclass(frozen=True)
@@ -80,6 +75,14 @@ class ReproduceOptions:
     wheel_samples: int | None = None
     formats: tuple = ("png", "svg")
     progress: bool = True
+    #: Table 2, Fig. 5 and Fig. 6 over physically feasible shapes only (links neither closer
+    #: than ``clearance`` to each other nor inside the object). Off by default: the paper's grid
+    #: includes every shape; the figures mark the infeasible ones either way.
+    feasible_only: bool = False
+    clearance: float = SELF_CLEARANCE
+    #: Processes that draw the figures while the studies compute (None: up to 2, one per
+    #: core; 1: draw in this process).
+    jobs: int | None = None
 
 
 #: Largest torque grid of Fig. 4 (points per axis; the maps hold grid^2 forward results).
@@ -105,6 +108,8 @@ def check_options(opts: ReproduceOptions) -> None:
 class ReproduceReport:
     table2: dict = field(default_factory=dict)
     files: list = field(default_factory=list)
+    feasible_count: int | None = None
+    grid_count: int | None = None
     timings: dict = field(default_factory=dict)
 
 
@@ -113,13 +118,15 @@ def _scene(joints: int, scenario: str, kappa: float, opts: ReproduceOptions) -> 
                  side=opts.side, object_distance=opts.object_distance)
 
 
-def _save(fig, out: Path, stem: str, opts: ReproduceOptions, report: ReproduceReport):
-    for fmt in opts.formats:
-        path = out / f"{stem}.{fmt}"
-        with atomic_path(path) as tmp:  # unique temporary name, then os.replace
-            fig.savefig(tmp, format=fmt, dpi=130 if fmt == "png" else None,
-                        bbox_inches="tight")
-        report.files.append(path)
+@contextmanager
+def _timed(report: ReproduceReport, key: str):
+    """Add the wall and CPU time of the block to ``report.timings[key]`` / ``[key + "_cpu"]``."""
+    wall, cpu = time.perf_counter(), time.process_time()
+    try:
+        yield
+    finally:
+        for k, v in ((key, time.perf_counter() - wall), (f"{key}_cpu", time.process_time() - cpu)):
+            report.timings[k] = report.timings.get(k, 0.0) + v
 
 
 def _write_text(path: Path, text: str, report: ReproduceReport):
@@ -151,46 +158,31 @@ def _ellipse(N, n=400):
     return np.linalg.solve(L.T, u)
 
 
-def case_study_1(opts: ReproduceOptions, report: ReproduceReport, load):
-    import matplotlib
+def _infeasible_reason(f, k=None) -> str:
+    """Why configuration ``k`` of a :class:`~snakecg.geometry.Feasibility` is not physically
+    possible ("" when it is)."""
+    cross = bool(np.asarray(f.self_intersecting)[() if k is None else k])
+    enter = bool(np.asarray(f.penetrates_object)[() if k is None else k])
+    reasons = (["links cross"] if cross else []) + (["a link enters the object"] if enter else [])
+    return " and ".join(reasons)
 
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
 
+def case_study_1(opts: ReproduceOptions, report: ReproduceReport, load, drawer=None):
     out = opts.out
     q = np.array([0.0, 0.0, 0.0, *np.deg2rad(opts.fig4_joints_deg)])
     bar = progress_bar(len(opts.kappas_case1) * 3 + 3, "case study 1", enabled=opts.progress)
     for kappa in opts.kappas_case1:
-        fig, axes = plt.subplots(3, 3, figsize=(13, 11.5), constrained_layout=True)
-        for j, scenario in enumerate(SCENARIOS):
+        panels = []
+        for scenario in SCENARIOS:
             model = load(_scene(2, scenario, kappa, opts))
             t1, t2, grids, N = torque_plane(model, q, opts.torque_grid)
-            ell = _ellipse(N)
-            for i, metric in enumerate(("norm_a_obj", "norm_qdd", "sr")):
-                ax = axes[i, j]
-                im = ax.imshow(grids[metric], origin="lower", aspect="auto", cmap="viridis",
-                               extent=(t1[0], t1[-1], t2[0], t2[-1]),
-                               vmin=0.0, vmax=1.0 if metric == "sr" else None)
-                ax.plot(ell[0], ell[1], color="white", lw=1.2, ls="--",
-                        label="input ellipsoid (31)")
-                ax.contour(t1, t2, grids["contact"].astype(float), levels=[0.5], colors="red",
-                           linewidths=0.8)
-                ax.set_xlabel(r"$\tau_1$ [N m]")
-                ax.set_ylabel(r"$\tau_2$ [N m]")
-                ax.set_title(f"{METRIC_LABEL[metric]} — {SCENARIO_LABEL[scenario]}, "
-                             f"$\\kappa$ = {kappa:g}", fontsize=9)
-                cb = fig.colorbar(im, ax=ax, shrink=0.85)
-                cb.set_label(f"{METRIC_LABEL[metric]} [{METRIC_UNIT[metric]}]")
+            panels.append(figures.Fig4Panel(scenario, t1, t2, grids, _ellipse(N)))
             bar.update()
-        axes[0, 0].legend(loc="upper right", fontsize=7)
-        fig.suptitle(
-            "Fig. 4 (case study 1): norms over the torque plane at q = (0, 0, 0, "
-            f"{opts.fig4_joints_deg[0]:g}°, {opts.fig4_joints_deg[1]:g}°), "
-            f"$\\kappa$ = {kappa:g}; dashed: input ellipsoid, red: contact lost/kept boundary",
-            fontsize=11,
-        )
-        _save(fig, out, f"fig4_kappa{kappa:g}", opts, report)
-        plt.close(fig)
+        why = _infeasible_reason(feasibility(model, q, clearance=opts.clearance))
+        with _timed(report, "figures"):
+            drawer.submit("figure4", panels=panels, kappa=kappa,
+                          joints_deg=opts.fig4_joints_deg, stem=out / f"fig4_kappa{kappa:g}",
+                          formats=opts.formats, infeasible=why)
     # sweep over the 784 configurations
     Q = joint_grid(2, opts.grid_lo_deg, opts.grid_hi_deg, opts.grid_step_deg)
     for scenario in SCENARIOS:
@@ -204,21 +196,19 @@ def case_study_1(opts: ReproduceOptions, report: ReproduceReport, load):
 
 
 def _extremes_csv(Q, radius, angle, ex, na) -> str:
-    buf = io.StringIO()
-    w = csv.writer(buf, lineterminator="\n")
+    """The sweep's CSV text: one row per configuration (joint angles, polar COM, and per
+    metric its maximum and least kept value with the attaining torques)."""
     head = [f"q{j + 1}_deg" for j in range(na)] + ["com_radius_m", "com_angle_deg"]
+    cols = [np.rad2deg(Q[:, 3:]), np.asarray(radius)[:, None], np.rad2deg(angle)[:, None]]
+    fmt = ["%.1f"] * na + ["%.6g", "%.4f"]
     for m in ("norm_a_obj", "norm_qdd", "norm_lambda", "sr"):
         head += [f"max_{m}"] + [f"tau{j + 1}_at_max_{m}" for j in range(na)]
         head += [f"min_kept_{m}"] + [f"tau{j + 1}_at_min_kept_{m}" for j in range(na)]
-    w.writerow(head)
-    for k in range(Q.shape[0]):
-        row = [f"{v:.1f}" for v in np.rad2deg(Q[k, 3:])]
-        row += [f"{radius[k]:.6g}", f"{np.rad2deg(angle[k]):.4f}"]
-        for m in ("norm_a_obj", "norm_qdd", "norm_lambda", "sr"):
-            row += [f"{ex.max[m][k]:.9g}"] + [f"{t:.6g}" for t in ex.tau_max[m][k]]
-            row += [f"{ex.min_kept[m][k]:.9g}"] + [f"{t:.6g}" for t in ex.tau_min_kept[m][k]]
-        w.writerow(row)
-    return buf.getvalue()
+        cols += [ex.max[m][:, None], ex.tau_max[m], ex.min_kept[m][:, None], ex.tau_min_kept[m]]
+        fmt += (["%.9g"] + ["%.6g"] * na) * 2
+    table = np.concatenate([np.asarray(c, float).reshape(len(Q), -1) for c in cols], axis=1)
+    row = ",".join(fmt)  # one %-format per row: the numbers contain no separator to quote
+    return ",".join(head) + "\n" + "".join(row % tuple(r) + "\n" for r in table.tolist())
 
 
 # ------------------------------------------------------------------------------------------
@@ -256,30 +246,28 @@ def _concat_extremes(chunks):
     return out
 
 
-def table2(results) -> dict:
-    """Table 2 from per-configuration maxima: worst = min over configurations, best = max."""
-    t = {}
-    for key in PAPER_TABLE2:
-        kind, metric = key.split("_", 1)
-        vals = []
-        for scenario in SCENARIOS:
-            ex = results[scenario][1]
-            v = ex.max[metric]
-            vals.append(float(v.min() if kind == "worst" else v.max()))
-        t[key] = tuple(vals)
-    return t
+def table2(results, mask=None) -> dict:
+    """Table 2 from per-configuration maxima: worst = min over configurations, best = max
+    (over the configurations where ``mask`` is true, when given)."""
+    idx = table2_index(results, mask)
+    return {key: tuple(float(results[s][1].max[key.split("_", 1)[1]][idx[key][j]])
+                       for j, s in enumerate(SCENARIOS))
+            for key in PAPER_TABLE2}
 
 
-def table2_index(results) -> dict:
-    """Index of the configuration attaining each Table 2 entry, per scenario."""
+def table2_index(results, mask=None) -> dict:
+    """Index of the configuration attaining each Table 2 entry, per scenario (among those
+    where ``mask`` is true, when given)."""
     idx = {}
     for key in PAPER_TABLE2:
         kind, metric = key.split("_", 1)
-        idx[key] = tuple(
-            int(np.argmin(results[s][1].max[metric]) if kind == "worst"
-                else np.argmax(results[s][1].max[metric]))
-            for s in SCENARIOS
-        )
+        per = []
+        for s in SCENARIOS:
+            v = np.asarray(results[s][1].max[metric], float)
+            if mask is not None:
+                v = np.where(mask, v, np.inf if kind == "worst" else -np.inf)
+            per.append(int(np.argmin(v) if kind == "worst" else np.argmax(v)))
+        idx[key] = tuple(per)
     return idx
 
 
@@ -300,43 +288,29 @@ def table2_text(t: dict) -> tuple[str, str, str]:
             cells.append(f"{ours:.6g} | {paper:.6g} | {rel:+.1%}")
             tline += f"{ours:>12.6g}{paper:>12.6g}{rel:>+12.1%}"
             rows_csv.append([key, s, f"{ours:.9g}", f"{paper:.9g}", f"{rel:.6f}"])
-        md.append(f"| {label} | " + " | ".join(cells) + " |")
+        md_label = label.replace("||", "‖").replace("^2", "²")  # no "|" inside a table cell
+        md.append(f"| {md_label} | " + " | ".join(cells) + " |")
         term.append(tline)
     buf = io.StringIO()
     csv.writer(buf, lineterminator="\n").writerows(rows_csv)
     return "\n".join(term), "\n".join(md) + "\n", buf.getvalue()
 
 
-def figure5(Q, results, opts, report):
-    import matplotlib
+def _formats_per_task(opts, drawer):
+    """Each format in its own task when drawing in parallel (the last figures are on the
+    critical path), all formats in one figure otherwise."""
+    return [(f,) for f in opts.formats] if drawer.parallel else [tuple(opts.formats)]
 
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
 
-    fig, axes = plt.subplots(3, 3, figsize=(13, 13), subplot_kw={"projection": "polar"},
-                             constrained_layout=True)
-    for j, s in enumerate(SCENARIOS):
-        _, ex, radius, angle = results[s]
-        order = np.argsort(ex.max["sr"])
-        for i, m in enumerate(("norm_lambda", "norm_a_obj", "sr")):
-            ax = axes[i, j]
-            vals = ex.max[m]
-            o = np.argsort(vals)
-            sc = ax.scatter(angle[o], radius[o], c=vals[o], s=3, cmap="viridis", linewidths=0,
-                            rasterized=True)
-            ax.set_title(f"max {METRIC_LABEL[m]} over (31)\n{SCENARIO_LABEL[s]}", fontsize=9)
-            ax.set_rlabel_position(135)
-            ax.tick_params(labelsize=7)
-            cb = fig.colorbar(sc, ax=ax, shrink=0.7, pad=0.08)
-            cb.set_label(f"{METRIC_LABEL[m]} [{METRIC_UNIT[m]}]", fontsize=8)
-        del order
-    fig.suptitle(
-        "Fig. 5 (case study 2, 3 joints, "
-        f"$\\kappa$ = {opts.kappa_case2:g}): per-configuration maxima over the input ellipsoid "
-        "vs. polar coordinates of the snake's COM\n(radius |COM| [m] from the contact point, "
-        "angle ∠COM from the contacting link's axis)", fontsize=11)
-    _save(fig, opts.out, "fig5_polar", opts, report)
-    plt.close(fig)
+def figure5(Q, results, opts, drawer, feas):
+    model, _, radius, angle = results[SCENARIOS[0]]
+    maxima = {s: {m: results[s][1].max[m] for m in ("norm_lambda", "norm_a_obj", "sr")}
+              for s in SCENARIOS}
+    for formats in _formats_per_task(opts, drawer):
+        drawer.submit("figure5", angle=angle, radius=radius, maxima=maxima,
+                      infeasible=~feas.feasible, kappa=opts.kappa_case2,
+                      stem=opts.out / "fig5_polar", formats=formats,
+                      feasible_only=opts.feasible_only)
 
 
 def draw_robot(ax, model, q, *, title="", tau=None):
@@ -369,66 +343,36 @@ def draw_robot(ax, model, q, *, title="", tau=None):
     ax.set_ylabel("y [m]", fontsize=7)
 
 
-def figure6(Q, results, opts, report):
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    idx = table2_index(results)
-    fig, axes = plt.subplots(2, 6, figsize=(18, 6.5), constrained_layout=True)
-    for i, metric in enumerate(("norm_a_obj", "sr")):
-        for j, s in enumerate(SCENARIOS):
-            model = results[s][0]
-            for k, kind in enumerate(("worst", "best")):
-                ci = idx[f"{kind}_{metric}"][j]
-                q = Q[ci]
-                val = results[s][1].max[metric][ci]
-                deg = ", ".join(f"{d:.0f}°" for d in np.rad2deg(q[3:]))
-                draw_robot(axes[i, 2 * j + k], model, q,
-                           title=f"{kind} {METRIC_LABEL[metric]} = {val:.4g}\n"
-                                 f"{SCENARIO_LABEL[s]}\nq = ({deg})")
-    fig.suptitle("Fig. 6 (case study 2): worst and best configurations for the object's "
-                 "acceleration (top) and the slippage ratio (bottom); tail link orange, "
-                 "contact *, snake COM x, object grey", fontsize=11)
-    _save(fig, opts.out, "fig6_configurations", opts, report)
-    plt.close(fig)
+def figure6(Q, results, opts, drawer, feas):
+    idx = table2_index(results, feas.feasible if opts.feasible_only else None)
+    rows = {}
+    for j, s in enumerate(SCENARIOS):
+        model, ex = results[s][0], results[s][1]
+        picks = [(kind, metric, idx[f"{kind}_{metric}"][j])
+                 for metric in ("norm_a_obj", "sr") for kind in ("worst", "best")]
+        Qp = Q[[ci for _, _, ci in picks]]
+        rear, front = link_segments(model.robot, model.link_poses(Qp))
+        q_obj, _, contact = model.place_object(Qp)
+        com = model.com(Qp)
+        rows[s] = []
+        for k, (kind, metric, ci) in enumerate(picks):
+            deg = ", ".join(f"{d:.0f}°" for d in np.rad2deg(Q[ci, 3:]))
+            rows[s].append(figures.Shape(
+                rear[k], front[k], q_obj[k], contact[k], com[k],
+                title=f"{kind} {figures.METRIC_LABEL[metric]} = {ex.max[metric][ci]:.4g}\n"
+                      f"q = ({deg})",
+                infeasible=_infeasible_reason(feas, ci)))
+    for formats in _formats_per_task(opts, drawer):
+        drawer.submit("figure6", rows=rows, stem=opts.out / "fig6_configurations",
+                      formats=formats, feasible_only=opts.feasible_only)
 
 
-def _segments(model, Q):
-    P = model.link_poses(Q)
-    r = model.robot
-    e = np.stack([np.cos(P[..., 2]), np.sin(P[..., 2])], -1)
-    rear = P[..., :2] - np.asarray(r.com)[None, :, None] * e
-    return rear, rear + np.asarray(r.length)[None, :, None] * e
-
-
-def physically_feasible(model, Q) -> np.ndarray:
+def physically_feasible(model, Q, clearance: float = 0.0) -> np.ndarray:
     """Configurations whose links neither cross each other nor enter the object (the paper's
-    grid keeps all of them; this filter is one of the alternative readings)."""
-
-    def cross(a, b):
-        return a[..., 0] * b[..., 1] - a[..., 1] * b[..., 0]
-
-    rear, front = _segments(model, Q)
-    nl = rear.shape[1]
-    ok = np.ones(len(Q), bool)
-    for i in range(nl):
-        for j in range(i + 2, nl):
-            p1, p2, p3, p4 = rear[:, i], front[:, i], rear[:, j], front[:, j]
-            d1, d2 = cross(p4 - p3, p1 - p3), cross(p4 - p3, p2 - p3)
-            d3, d4 = cross(p2 - p1, p3 - p1), cross(p2 - p1, p4 - p1)
-            ok &= ~((d1 * d2 < 0) & (d3 * d4 < 0))
-    q_obj, _, _ = model.place_object(Q)
-    c, psi = q_obj[:, :2], q_obj[:, 2]
-    h = 0.05
-    for i in range(1, nl):
-        for t in np.linspace(0.0, 1.0, 41):
-            d = rear[:, i] * (1 - t) + front[:, i] * t - c
-            lx = np.cos(psi) * d[:, 0] + np.sin(psi) * d[:, 1]
-            ly = -np.sin(psi) * d[:, 0] + np.cos(psi) * d[:, 1]
-            ok &= ~((np.abs(lx) < h - 1e-9) & (np.abs(ly) < h - 1e-9))
-    return ok
+    grid keeps all of them; this filter is one of the alternative readings). See
+    :mod:`snakecg.geometry`; ``clearance = 0`` counts only links that actually cross."""
+    f = feasibility(model, Q, clearance=clearance)
+    return ~(f.penetrates_object | (f.self_distance <= clearance))
 
 
 def alternative_readings(opts: ReproduceOptions | None = None, *, load=None) -> str:
@@ -446,7 +390,8 @@ def alternative_readings(opts: ReproduceOptions | None = None, *, load=None) -> 
         ("kappa = 50", {"kappa": 50.0}, None),
         ("kappa = 150", {"kappa": 150.0}, None),
         ("object on the right of link 1", {"side": "right"}, None),
-        ("only shapes without self-crossing or object penetration", {}, "feasible"),
+        ("only shapes whose links neither cross nor enter the object (clearance 0)", {},
+         "feasible"),
         ("max over 12 sampled torque directions instead of the exact max", {}, "sampled"),
     ]
     lines = ["| reading | S1 worst a_obj | S1 best a_obj | S1 worst sr | S1 best sr | "
@@ -501,29 +446,48 @@ def reproduce(opts: ReproduceOptions | None = None, *, load=None, echo=print) ->
     for j in (2, 3):  # build/compile first so the timings below are the study itself
         load(Robot(joints=j))
     report.timings["models"] = time.perf_counter() - t0
-    t1 = time.perf_counter()
-    case_study_1(opts, report, load)
-    report.timings["case_study_1"] = time.perf_counter() - t1
-    t2 = time.perf_counter()
-    Q, results = case_study_2(opts, report, load)
-    t = table2(results)
-    report.table2 = t
-    term, md, csv_text = table2_text(t)
-    _write_text(out / "table2.md", md, report)
-    _write_text(out / "table2.csv", csv_text, report)
-    figure5(Q, results, opts, report)
-    figure6(Q, results, opts, report)
-    report.timings["case_study_2"] = time.perf_counter() - t2
+    jobs = opts.jobs if opts.jobs is not None else min(2, os.cpu_count() or 1)
+    drawer = figures.Drawer(jobs)
+    try:
+        _studies(opts, report, load, drawer)
+    finally:
+        drawer.close()
     report.timings["total"] = time.perf_counter() - t0
-    summary = {"table2": {k: list(v) for k, v in t.items()},
+    summary = {"table2": {k: list(v) for k, v in report.table2.items()},
                "paper_table2": {k: list(v) for k, v in PAPER_TABLE2.items()},
+               "feasible_shapes": report.feasible_count,
                "options": {k: (str(v) if isinstance(v, Path) else v)
                            for k, v in opts.__dict__.items()},
                "timings_s": report.timings}
     _write_text(out / "summary.json", json.dumps(summary, indent=2) + "\n", report)
-    echo(term)
+    echo(table2_text(report.table2)[0])
+    if opts.feasible_only:
+        echo(f"(over the {report.feasible_count} physically feasible shapes of the "
+             f"{report.grid_count} in the grid)")
     echo(f"\nwrote {len(report.files)} files to {out}/: case study 1 in "
          f"{report.timings['case_study_1']:.1f} s, case study 2 in "
          f"{report.timings['case_study_2']:.1f} s (models ready in "
          f"{report.timings['models']:.1f} s)")
     return report
+
+
+def _studies(opts: ReproduceOptions, report: ReproduceReport, load, drawer) -> None:
+    out = opts.out
+    t1 = time.perf_counter()
+    case_study_1(opts, report, load, drawer)
+    report.timings["case_study_1"] = time.perf_counter() - t1
+    t2 = time.perf_counter()
+    Q, results = case_study_2(opts, report, load)
+    feas = feasibility(results[SCENARIOS[0]][0], Q, clearance=opts.clearance)
+    t = table2(results, feas.feasible if opts.feasible_only else None)
+    report.table2 = t
+    report.feasible_count, report.grid_count = int(feas.feasible.sum()), len(Q)
+    _, md, csv_text = table2_text(t)
+    _write_text(out / "table2.md", md, report)
+    _write_text(out / "table2.csv", csv_text, report)
+    with _timed(report, "figures"):
+        figure5(Q, results, opts, drawer, feas)
+        figure6(Q, results, opts, drawer, feas)
+        report.files += drawer.finish()
+    report.timings["figures_drawing_cpu"] = drawer.cpu
+    report.timings["case_study_2"] = time.perf_counter() - t2

@@ -28,7 +28,6 @@ import re
 import shlex
 import subprocess
 import sys
-from contextlib import redirect_stdout
 from pathlib import Path
 
 import pytest
@@ -81,8 +80,8 @@ def test_python_blocks_run(page, monkeypatch):
 def test_the_docs_have_examples():
     """Guards the extraction itself: the pages that must carry runnable examples do."""
     names = {p.name for p in PYTHON_PAGES}
-    for required in ("README.md", "getting-started.md", "model.md", "scenarios.md",
-                     "metrics.md", "generated-code.md", "symbolic.md"):
+    for required in ("README.md", "getting-started.md", "tutorial.md", "model.md",
+                     "scenarios.md", "metrics.md", "generated-code.md", "symbolic.md"):
         assert required in names, f"no ```python block found in {required}"
 
 
@@ -158,6 +157,7 @@ API_NAMES = re.findall(r"^::: (snakecg[\w.]*)", _API_TEXT, re.MULTILINE) + [
     # entries the site hook renders once the module exists (docs/hooks/site.py)
     m for m in re.findall(r"<!--\s*snakecg-api:\s*([\w.]+)\s*-->", _API_TEXT)
     if (ROOT / Path(*m.split("."))).with_suffix(".py").is_file()
+    or (ROOT / Path(*m.split(".")) / "__init__.py").is_file()
 ]
 
 
@@ -349,20 +349,27 @@ def test_show_lists_wide_matrices_entry_by_entry(monkeypatch, capsys):
 # ------------------------------------------------------------------------------------------
 # 5. the site builds, strictly, with the generated content
 # ------------------------------------------------------------------------------------------
-def test_mkdocs_build_strict(tmp_path):
+@pytest.fixture(scope="module")
+def built_site(tmp_path_factory):
+    """The site built once, strictly, for the tests below (skipped without the docs extra)."""
     try:
         import mkdocs  # noqa: F401
         import mkdocstrings  # noqa: F401
         import material  # noqa: F401
     except ImportError as exc:
         pytest.skip(f"the docs extra is not installed ({exc.name}); pip install '.[docs]'")
-    site = tmp_path / "site"
+    site = tmp_path_factory.mktemp("site") / "site"
     env = {**os.environ, "NO_MKDOCS_2_WARNING": "1"}
     proc = subprocess.run(
         [sys.executable, "-m", "mkdocs", "build", "--strict", "--site-dir", str(site)],
-        capture_output=True, text=True, timeout=600, cwd=ROOT, env=env,
+        capture_output=True, text=True, timeout=900, cwd=ROOT, env=env,
     )
     assert proc.returncode == 0, proc.stderr[-4000:]
+    return site
+
+
+def test_mkdocs_build_strict(built_site):
+    site = built_site
     symbolic = (site / "symbolic" / "index.html").read_text(encoding="utf-8")
     assert "snakecg-symbolic" not in symbolic, "a symbolic directive was not replaced"
     assert symbolic.count('class="arithmatex"') >= 10
@@ -375,3 +382,156 @@ def test_mkdocs_build_strict(tmp_path):
     assert "snakecg-cli" not in cli and "usage: snakecg forward" in cli
     api = (site / "api" / "index.html").read_text(encoding="utf-8")
     assert 'id="snakecg.model.SceneModel.forward"' in api
+    # the figures computed at build time are in the site and on their pages
+    for rel in ("figures/reproduce/fig4_kappa100.png", "figures/reproduce/fig5_polar.png",
+                "figures/reproduce/fig6_configurations.png", "figures/simulate/displacement.png",
+                "figures/simulate/animation.gif"):
+        assert (site / rel).stat().st_size > 10_000, rel
+    reproduction = (site / "reproduction" / "index.html").read_text(encoding="utf-8")
+    assert reproduction.count('src="../figures/reproduce/') == 3
+    assert 'src="../figures/simulate/' in (site / "simulate" / "index.html").read_text("utf-8")
+
+
+# ------------------------------------------------------------------------------------------
+# 6. the site works offline: nothing loaded from elsewhere, formulas rendered in a browser
+# ------------------------------------------------------------------------------------------
+_LOADED = re.compile(  # what a browser fetches by itself: scripts, styles, fonts, images, frames
+    r"<(?:script|img|iframe|source|embed)\b[^>]*\bsrc\s*=\s*[\"']?(?P<a>[^\"'\s>]+)"
+    r"|<link\b[^>]*\bhref\s*=\s*[\"']?(?P<b>[^\"'\s>]+)"
+    r"|url\(\s*[\"']?(?P<c>[^\"')\s]+)|@import\s+[\"'](?P<d>[^\"']+)", re.IGNORECASE)
+
+
+def _external(ref: str) -> bool:
+    return bool(re.match(r"^(https?:)?//", ref.strip(), re.IGNORECASE))
+
+
+def test_site_loads_nothing_from_elsewhere(built_site):
+    found = []
+    for path in sorted(built_site.rglob("*")):
+        if path.suffix not in (".html", ".css", ".js") or not path.is_file():
+            continue
+        text = path.read_text(encoding="utf-8", errors="replace")
+        if path.suffix == ".js":  # a script may name URLs in strings; only its CSS-like loads
+            refs = [m.group("c") or m.group("d") for m in _LOADED.finditer(text)
+                    if m.group("c") or m.group("d")]
+            refs = [r for r in refs if r.startswith(("http:", "https:"))]
+        else:
+            refs = [next(g for g in m.groups() if g) for m in _LOADED.finditer(text)]
+        found += [f"{path.relative_to(built_site)}: {r}" for r in refs if _external(r)]
+    link_tags = [m for m in re.findall(r"<link\b[^>]*>", (built_site / "index.html")
+                 .read_text(encoding="utf-8"))]
+    assert link_tags, "the pattern found no <link> at all: the check would be vacuous"
+    assert not found, "the site loads files from elsewhere:\n" + "\n".join(found[:20])
+    # the renderer is served with the site, with its licence
+    assert (built_site / "assets" / "mathjax" / "tex-svg.js").stat().st_size > 1_000_000
+    assert "Apache License" in (built_site / "assets" / "mathjax" / "LICENSE").read_text()
+    assert 'src="../assets/mathjax/tex-svg.js"' in (built_site / "model" / "index.html") \
+        .read_text(encoding="utf-8")
+
+
+_PROBE = r"""
+<script>
+(function wait() {
+  if (!(window.MathJax && MathJax.startup && MathJax.startup.promise)) {
+    return setTimeout(wait, 50);
+  }
+  MathJax.startup.promise.then(function () {
+    var items = [];
+    Array.from(MathJax.startup.document.math).forEach(function (m) {
+      var r = m.typesetRoot ? m.typesetRoot.getBoundingClientRect() : null;
+      var block = m.typesetRoot ? m.typesetRoot.closest("div.arithmatex") : null;
+      items.push({tex: m.math, display: m.display, rendered: !!(m.typesetRoot &&
+                  m.typesetRoot.querySelector("svg")),
+                  box: r ? [r.left + scrollX, r.top + scrollY, r.width, r.height] : null,
+                  scrolls: block ? block.scrollWidth > block.clientWidth + 1 : false});
+    });
+    var raw = Array.prototype.some.call(document.querySelectorAll(".arithmatex"), function (e) {
+      return /\\begin\{|\\\(|\\\[/.test(e.innerText);
+    });
+    var line = parseFloat(getComputedStyle(document.querySelector(".md-typeset p")).lineHeight);
+    var out = document.createElement("pre");
+    out.id = "snakecg-probe";
+    out.textContent = JSON.stringify({items: items, raw: raw, line: line,
+      pageWidth: document.documentElement.scrollWidth, viewport: innerWidth});
+    document.body.appendChild(out);
+  });
+})();
+</script>
+"""
+
+
+def _chromium():
+    import shutil
+
+    for name in ("chromium", "chromium-browser", "google-chrome"):
+        path = shutil.which(name)
+        if path:
+            return path
+    pytest.skip("no Chromium on this machine (Debian: apt-get install chromium; .ci/run "
+                "installs it)")
+
+
+@pytest.fixture(scope="module")
+def site_server(built_site):
+    import functools
+    import http.server
+    import threading
+
+    handler = functools.partial(http.server.SimpleHTTPRequestHandler, directory=str(built_site))
+    handler.log_message = lambda *a, **k: None
+    server = http.server.ThreadingHTTPServer(("127.0.0.1", 0), handler)
+    thread = threading.Thread(target=server.serve_forever, daemon=True)
+    thread.start()
+    yield f"http://127.0.0.1:{server.server_address[1]}"
+    server.shutdown()
+    server.server_close()
+
+
+def _browser(args, tmp_path):
+    cmd = [_chromium(), "--headless", "--no-sandbox", "--disable-gpu", "--hide-scrollbars",
+           f"--user-data-dir={tmp_path / 'profile'}", "--virtual-time-budget=20000", *args]
+    return subprocess.run(cmd, capture_output=True, text=True, timeout=180)
+
+
+def _probe(built_site, site_server, page, width, tmp_path):
+    """Load ``page`` (a copy with the probe script) in headless Chromium; the probe's JSON."""
+    html = (built_site / page / "index.html").read_text(encoding="utf-8")
+    (built_site / page / "probe.html").write_text(html.replace("</body>", _PROBE + "</body>"),
+                                                  encoding="utf-8")
+    proc = _browser([f"--window-size={width},4000", "--dump-dom",
+                     f"{site_server}/{page}/probe.html"], tmp_path)
+    m = re.search(r'<pre id="snakecg-probe">(.*?)</pre>', proc.stdout, re.DOTALL)
+    assert m, f"the page never finished typesetting:\n{proc.stderr[-2000:]}"
+    import html as html_mod
+
+    return json.loads(html_mod.unescape(m.group(1)))
+
+
+def test_formulas_render_in_a_browser_offline(built_site, site_server, tmp_path):
+    """Headless Chromium, no network but this machine: every formula of the model page is
+    typeset, a matrix is drawn as a matrix (taller than a line, ink in its box on the
+    screenshot), no raw TeX is left, and wide formulas scroll inside the page."""
+    Image = pytest.importorskip("PIL.Image", reason="pillow (test extra) reads the screenshot")
+    probe = _probe(built_site, site_server, "model", 1280, tmp_path)
+    items = probe["items"]
+    assert len(items) >= 30 and all(i["rendered"] for i in items)
+    assert not probe["raw"], "raw TeX is visible"
+    matrices = [i for i in items if "bmatrix" in i["tex"] and i["display"]]
+    assert matrices
+    tallest = max(matrices, key=lambda i: i["box"][3])
+    assert tallest["box"][3] > 1.8 * probe["line"], tallest   # two rows, not one line of text
+    shot = tmp_path / "model.png"
+    _browser(["--window-size=1280,4000", f"--screenshot={shot}",
+              f"{site_server}/model/probe.html"], tmp_path)
+    import numpy as np
+
+    with Image.open(shot) as im:
+        x, y, w, h = (int(round(v)) for v in tallest["box"])
+        ink = np.asarray(im.convert("L").crop((x, y, x + w, y + h))) < 110
+    assert ink.mean() > 0.002, f"the matrix's box is blank on the screenshot ({ink.mean():.3%})"
+    rows = np.flatnonzero(ink.any(axis=1))
+    assert rows[-1] - rows[0] > 1.5 * probe["line"], "the drawn matrix is not taller than a line"
+    # the symbolic page's wide matrices scroll in their block; the page itself does not
+    sym = _probe(built_site, site_server, "symbolic", 900, tmp_path)
+    assert any(i["scrolls"] for i in sym["items"])
+    assert sym["pageWidth"] <= sym["viewport"]

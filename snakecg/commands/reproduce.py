@@ -33,6 +33,10 @@ def register(sub) -> None:
                    "(default 181)")
     p.add_argument("--formats", default="png,svg", type=text("png, svg or pdf"),
                    help="figure formats (default png,svg)")
+    p.add_argument("--feasible-only", action="store_true",
+                   help="Table 2 and Figs. 5-6 over physically possible shapes only (no links "
+                   "crossing or closer than 1 cm, none inside the object); default: every shape "
+                   "of the grid, as in the paper, with the infeasible ones marked in the figures")
     p.add_argument("--alternatives", action="store_true",
                    help="also write alternatives.md: Table 2 under alternative readings")
     p.add_argument("--json", action="store_true",
@@ -55,7 +59,8 @@ def run(args) -> int:
                          f"{args.formats!r:.80}")
     out = out_dir("--out", args.out)
     opts = ReproduceOptions(out=out, kappa_case2=args.kappa,
-                            torque_grid=args.torque_grid, formats=formats)
+                            torque_grid=args.torque_grid, formats=formats,
+                            feasible_only=args.feasible_only)
     echo = (lambda text: print(text, file=sys.stderr)) if args.json else print
     report = reproduce(opts, echo=echo)
     files = [str(f) for f in report.files]

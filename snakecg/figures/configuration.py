@@ -18,7 +18,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .errors import InputError
+from ..errors import InputError
 
 __all__ = ["plot", "configuration_geometry"]
 
@@ -80,8 +80,8 @@ def plot(scene, q, tau=None, ax=None, *, title: str | None = None):
     """Draw the configuration ``q`` of ``scene`` (a :class:`~snakecg.Scene` or its loaded
     model) on ``ax`` (a new figure if None); with ``tau``, the constraint forces and the
     accelerations of the forward solve at rest. Returns the axes. See the module doc."""
-    from .model import SceneModel, load
-    from .robot import Scene
+    from ..model import SceneModel, load
+    from ..robot import Scene
 
     if isinstance(scene, SceneModel):
         model = scene
