@@ -19,6 +19,7 @@ from __future__ import annotations
 import csv
 import io
 import json
+import os
 import time
 from contextlib import contextmanager
 from dataclasses import dataclass, field
@@ -27,9 +28,9 @@ from pathlib import Path
 import numpy as np
 
 from ._files import write_text
-from .figures import paper as figures
 from .analysis import com_polar, joint_grid
 from .errors import InputError
+from .figures import paper as figures
 from .geometry import SELF_CLEARANCE, feasibility, link_segments
 from .progress import progress_bar
 from .robot import SCENARIOS, Robot, Scene

@@ -353,9 +353,9 @@ def test_show_lists_wide_matrices_entry_by_entry(monkeypatch, capsys):
 def built_site(tmp_path_factory):
     """The site built once, strictly, for the tests below (skipped without the docs extra)."""
     try:
+        import material  # noqa: F401
         import mkdocs  # noqa: F401
         import mkdocstrings  # noqa: F401
-        import material  # noqa: F401
     except ImportError as exc:
         pytest.skip(f"the docs extra is not installed ({exc.name}); pip install '.[docs]'")
     site = tmp_path_factory.mktemp("site") / "site"

@@ -110,7 +110,7 @@ def test_wrong_types_at_the_python_boundary(tmp_path):
         Scene(Robot(joints=2)).replace(kapa=3)
     with pytest.raises(InputError, match="backend must be 'compiled' or 'casadi', got 'x'"):
         snakecg.load(Robot(joints=2), backend="x")
-    with pytest.raises(InputError, match="progress must be None or a callable"):
+    with pytest.raises(InputError, match="progress must be None, False or a callable"):
         snakecg.load(Robot(joints=2), progress=3)
 
 
@@ -269,19 +269,18 @@ def test_negative_values_after_a_space(capsys):
 
 # ------------------------------------------------------------------------------------------
 # strict JSON
-def test_forward_json_overflow_is_null_with_a_flag():
+def test_forward_json_overflow_is_refused_and_nonfinite_values_are_null_with_a_flag(capsys):
+    # a torque whose norms would overflow is refused up front (one line, exit 2, no JSON)
     code, out, err = run_cli(["forward", "--joints", "2", "--q", "0,0,0,0.5,-0.8",
                               "--tau=1e200,0", "--scenario", "wheels", "--json"])
-    data = strict_loads(out)  # NaN/Infinity would raise
-    assert code == 1 and "not finite" in err and len(err.splitlines()) == 1
-    assert data["finite"] is False
-    assert "norm_qdd" in data["nonfinite"] and data["norm_qdd"] is None
-    for path in data["nonfinite"]:
-        head = path.split("[")[0]
-        value = data[head]
-        if "[" in path:
-            value = value[int(path.split("[")[1].rstrip("]"))]
-        assert value is None
+    assert code == 2 and out == "" and len(err.splitlines()) == 1 and "tau" in err
+    # whatever non-finite number reaches the JSON writer is printed as null and listed
+    from snakecg.commands._common import print_json
+
+    found = print_json({"norm_qdd": float("inf"), "lam": [1.0, float("nan")], "ok": 2.0})
+    data = strict_loads(capsys.readouterr().out)  # NaN/Infinity would raise
+    assert sorted(found) == ["lam[1]", "norm_qdd"] == sorted(data["nonfinite"])
+    assert data["norm_qdd"] is None and data["lam"] == [1.0, None] and data["ok"] == 2.0
     # a finite result has the flag set and no list
     code, out, _ = run_cli(["forward", "--joints", "2", "--q", "0,0,0,0.5,-0.8",
                             "--tau=0.1,0", "--scenario", "wheels", "--json"])
@@ -411,15 +410,15 @@ def _writer(args):
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    from snakecg.reproduce import ReproduceOptions, ReproduceReport, _save, _write_text
+    from snakecg.figures import write_figure
+    from snakecg.reproduce import ReproduceReport, _write_text
 
-    opts = ReproduceOptions(out=Path(folder), formats=("png", "svg"))
     report = ReproduceReport()
     fig, ax = plt.subplots()
     ax.plot([0, 1], [0, int(tag)])
     for i in range(rounds):
         _write_text(Path(folder) / "table2.md", f"run {tag} round {i}\n" * 200, report)
-        _save(fig, Path(folder), "fig", opts, report)
+        report.files += write_figure(fig, Path(folder) / "fig", ("png", "svg"))
     return len(report.files)
 
 

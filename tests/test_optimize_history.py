@@ -349,8 +349,8 @@ def test_certified_answers_against_highs_and_slsqp_on_the_reference_maps(joints,
 
 
 def test_certificate_in_the_json_output():
-    from io import StringIO
     from contextlib import redirect_stdout
+    from io import StringIO
 
     from snakecg.cli import main
 

@@ -8,8 +8,18 @@
 """
 
 from .configuration import configuration_geometry, plot
-from .paper import (Drawer, Fig4Panel, Shape, figure4, figure5, figure6, make_figure4,
-                    make_figure5, make_figure6, write_figure)
+from .paper import (
+                    Drawer,
+                    Fig4Panel,
+                    Shape,
+                    figure4,
+                    figure5,
+                    figure6,
+                    make_figure4,
+                    make_figure5,
+                    make_figure6,
+                    write_figure,
+)
 
 __all__ = ["plot", "configuration_geometry", "Drawer", "Fig4Panel", "Shape", "figure4",
            "figure5", "figure6", "make_figure4", "make_figure5", "make_figure6", "write_figure"]

@@ -17,8 +17,6 @@ engine, images and meshes rasterized, one draw per format.
 
 from __future__ import annotations
 
-import os
-import tempfile
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -55,17 +53,13 @@ def _figure(width, height):
 def write_figure(fig, stem: Path, formats) -> list[Path]:
     """Write ``fig`` as ``stem.<fmt>`` for each format, each file atomically (a uniquely
     named temporary file in the same folder, then ``os.replace``)."""
+    from .._files import atomic_path
+
     written = []
     for fmt in formats:
         path = Path(f"{stem}.{fmt}")
-        fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
-        try:
-            with os.fdopen(fd, "wb") as fh:
-                fig.savefig(fh, format=fmt, dpi=PNG_DPI if fmt == "png" else 100)
-            os.replace(tmp, path)
-        except BaseException:
-            Path(tmp).unlink(missing_ok=True)
-            raise
+        with atomic_path(path) as tmp:
+            fig.savefig(tmp, format=fmt, dpi=PNG_DPI if fmt == "png" else 100)
         written.append(path)
     return written
 
@@ -175,9 +169,9 @@ def make_figure5(angle, radius, maxima: dict, *, infeasible, kappa: float,
     """Fig. 5: ``maxima[scenario][metric]`` (per configuration) against the COM's polar
     coordinates ``angle``, ``radius``; ``infeasible`` marks the shapes that are not physically
     possible (left out when ``feasible_only``)."""
+    import matplotlib
     from matplotlib.colors import BoundaryNorm
     from matplotlib.ticker import MaxNLocator
-    import matplotlib
 
     angle, radius = np.asarray(angle), np.asarray(radius)
     infeasible = np.asarray(infeasible, bool)
