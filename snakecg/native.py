@@ -30,6 +30,7 @@ import numpy as np
 
 from .artifacts import cache_dir, make_private_dir
 from .errors import ArtifactError, BuildError
+from .kernels import outputs_type
 
 __all__ = [
     "CompiledBackend",
@@ -474,7 +475,8 @@ class BoundFunction:
     for the general-purpose path), or on ``n`` samples (``many``) through the backend.
 
     Outputs are given in their logical shapes: ``(rows,)`` for a column, ``(rows, cols)``
-    otherwise (``many``: with a leading ``n``).
+    otherwise (``many``: with a leading ``n``), as :class:`~snakecg.kernels.Outputs`
+    (``out["lam"]``; positional indexing still works).
     """
 
     def __init__(self, backend, name: str, constants: dict[str, np.ndarray]):
@@ -485,6 +487,7 @@ class BoundFunction:
         self.in_sizes = dict(zip(sig.in_names, sig.in_sizes))
         self.out_shapes = list(sig.out_shapes)
         self.out_names = list(sig.out_names)
+        self._outputs = outputs_type(name, sig.out_names)
         self.const = {k: np.ascontiguousarray(np.ravel(np.asarray(v, dtype=float)))
                       for k, v in constants.items()}
         fns = getattr(backend, "_fns", None)
@@ -502,8 +505,8 @@ class BoundFunction:
             self._strides = (ctypes.c_longlong * len(bufs))()  # all zero: one sample
             self._resp = (ctypes.c_void_p * len(outs))(*[o.ctypes.data for o in outs])
             self._outs = outs
-            self._views = [o if c == 1 else o.reshape(c, r).T
-                           for (r, c), o in zip(self.out_shapes, outs)]
+            self._views = self._outputs([o if c == 1 else o.reshape(c, r).T
+                                         for (r, c), o in zip(self.out_shapes, outs)])
             self._fast = fns[name]
 
     def set(self, **var) -> None:
@@ -514,7 +517,7 @@ class BoundFunction:
             else:
                 self.const[k] = np.ascontiguousarray(np.ravel(np.asarray(val, dtype=float)))
 
-    def one(self, **var) -> list[np.ndarray]:
+    def one(self, **var):
         """Evaluate on one sample; the returned arrays are overwritten by the next call."""
         if self._fast is not None:
             bufs = self._bufs
@@ -526,9 +529,9 @@ class BoundFunction:
             return self._views
         self._last.update(var)
         outs = self.many(1, **self._last)
-        return [o[0] for o in outs]
+        return self._outputs([o[0] for o in outs])
 
-    def many(self, n: int, **var) -> list[np.ndarray]:
+    def many(self, n: int, **var):
         args = []
         for k in self.in_names:
             a = var[k] if k in var else self.const[k]
@@ -540,7 +543,7 @@ class BoundFunction:
         res = []
         for (r, c), o in zip(self.out_shapes, outs):
             res.append(np.ascontiguousarray(o[:, :, 0]) if c == 1 else np.ascontiguousarray(o))
-        return res
+        return self._outputs(res)
 
 
 # ------------------------------------------------------------------------------------------

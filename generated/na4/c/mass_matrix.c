@@ -1,5 +1,5 @@
 /* GENERATED FILE - DO NOT EDIT. C code emitted by CasADi for mass_matrix() of
- * generated/na4/model.py, plus its batched driver.
+ * generated/na4/ (see its model.py), plus its batched driver.
  * Regenerate with: python -m snakecg_derive --checked-in
  * spec sha256: 6d3cf60c2e6a2bf3e65c7081e859d5528051df9e704c67e6cb3fdb0b6abc56ce
  * tools: sympy 1.14.0, casadi 3.8.2, jinja2 3.1.6
@@ -142,15 +142,15 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a00=(a00+a01);
   a01=arg[1]? arg[1][36] : 0;
   a00=(a00*a01);
-  a01=arg[1]? arg[1][44] : 0;
   a06=(a06*a07);
   a11=(a11*a08);
   a06=(a06+a11);
   a11=arg[1]? arg[1][39] : 0;
   a06=(a06*a11);
-  a01=(a01+a06);
-  a11=(a00+a01);
-  a22=(a21+a11);
+  a11=arg[1]? arg[1][44] : 0;
+  a11=(a06+a11);
+  a01=(a00+a11);
+  a22=(a21+a01);
   a23=(a19+a22);
   a24=(a04*a07);
   a25=(a20*a08);
@@ -168,7 +168,7 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a08=arg[1]? arg[1][37] : 0;
   a07=(a07*a08);
   a08=arg[1]? arg[1][45] : 0;
-  a06=(a08+a06);
+  a06=(a06+a08);
   a26=(a07+a06);
   a27=(a25+a26);
   a28=(a24+a27);
@@ -183,42 +183,42 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a05=(a05+a14);
   a14=arg[1]? arg[1][32] : 0;
   a05=(a05*a14);
-  a14=arg[1]? arg[1][43] : 0;
   a00=(a00+a07);
-  a14=(a14+a00);
-  a07=(a05+a14);
-  a30=(a29+a07);
+  a07=arg[1]? arg[1][43] : 0;
+  a07=(a00+a07);
+  a14=(a05+a07);
+  a30=(a29+a14);
   a23=(a23+a30);
   a04=(a04*a03);
   a20=(a20*a17);
   a04=(a04+a20);
   a20=arg[1]? arg[1][27] : 0;
   a04=(a04*a20);
-  a20=arg[1]? arg[1][42] : 0;
   a21=(a21+a25);
   a05=(a05+a21);
-  a20=(a20+a05);
-  a25=(a04+a20);
-  a23=(a23+a25);
-  a25=arg[1]? arg[1][41] : 0;
+  a25=arg[1]? arg[1][42] : 0;
+  a25=(a05+a25);
+  a20=(a04+a25);
+  a23=(a23+a20);
   a19=(a19+a24);
   a29=(a29+a19);
   a04=(a04+a29);
-  a25=(a25+a04);
-  a23=(a23+a25);
+  a24=arg[1]? arg[1][41] : 0;
+  a24=(a04+a24);
+  a23=(a23+a24);
   if (res[0]!=0) res[0][16]=a23;
   a22=(a22+a27);
-  a22=(a22+a07);
-  a22=(a22+a20);
+  a22=(a22+a14);
+  a22=(a22+a25);
   a04=(a22+a04);
   if (res[0]!=0) res[0][17]=a04;
-  a11=(a11+a26);
-  a11=(a11+a14);
-  a05=(a11+a05);
+  a01=(a01+a26);
+  a01=(a01+a07);
+  a05=(a01+a05);
   a29=(a05+a29);
   if (res[0]!=0) res[0][18]=a29;
-  a01=(a01+a06);
-  a00=(a01+a00);
+  a11=(a11+a06);
+  a00=(a11+a00);
   a21=(a00+a21);
   a19=(a21+a19);
   if (res[0]!=0) res[0][19]=a19;
@@ -234,7 +234,7 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   if (res[0]!=0) res[0][29]=a13;
   if (res[0]!=0) res[0][30]=a29;
   if (res[0]!=0) res[0][31]=a05;
-  if (res[0]!=0) res[0][32]=a11;
+  if (res[0]!=0) res[0][32]=a01;
   if (res[0]!=0) res[0][33]=a00;
   if (res[0]!=0) res[0][34]=a26;
   if (res[0]!=0) res[0][35]=a12;
@@ -242,7 +242,7 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   if (res[0]!=0) res[0][37]=a19;
   if (res[0]!=0) res[0][38]=a21;
   if (res[0]!=0) res[0][39]=a00;
-  if (res[0]!=0) res[0][40]=a01;
+  if (res[0]!=0) res[0][40]=a11;
   if (res[0]!=0) res[0][41]=a06;
   if (res[0]!=0) res[0][42]=a09;
   if (res[0]!=0) res[0][43]=a02;
