@@ -23,7 +23,11 @@ _UNARY = {"sin": ca.sin, "cos": ca.cos, "tan": ca.tan, "sqrt": ca.sqrt, "exp": c
 def cse_program(f: FunctionSpec):
     """``(assignments, outputs)`` of ``f`` after SymPy's CSE over assignments and outputs
     together, assignments in topological order; ``outputs`` holds
-    ``(name, rows, cols, column-major expressions)``."""
+    ``(name, rows, cols, column-major expressions)``. Computed once per routine (building
+    and printing share it)."""
+    cached = f.__dict__.get("_cse_program")
+    if cached is not None:
+        return cached
     inputs = set(f.input_symbols())
     rhs = [e for _, e in f.assignments]
     flat = []
@@ -39,6 +43,7 @@ def cse_program(f: FunctionSpec):
         n = mat.rows * mat.cols
         outs.append((name, mat.rows, mat.cols, list(reduced[k: k + n])))
         k += n
+    object.__setattr__(f, "_cse_program", (ordered, outs))
     return ordered, outs
 
 
@@ -50,15 +55,26 @@ def to_sx(expr: sp.Expr, env: dict):
         return hit
     if expr.is_Symbol:
         raise KeyError(f"symbol {expr} is neither an input nor an assignment")
-    if expr.is_Integer or expr.is_Float:
+    if expr.is_Integer:
+        out = ca.SX(int(expr))
+    elif expr.is_Float:
         out = ca.SX(float(expr))
     elif expr.is_Rational:
         out = ca.SX(expr.p) / expr.q
     elif expr.is_Add:
-        args = [to_sx(a, env) for a in expr.args]
-        out = args[0]
-        for a in args[1:]:
-            out = out + a
+        # a term -x is subtracted (one operation, not a negation and an addition)
+        terms = []
+        for a in expr.args:
+            coeff, rest = a.as_coeff_Mul()
+            terms.append((True, rest) if coeff == -1 else (False, a))
+        terms.sort(key=lambda t: t[0])  # stable: positive terms first, order kept
+        out = None
+        for negative, a in terms:
+            x = to_sx(a, env)
+            if out is None:
+                out = -x if negative else x
+            else:
+                out = out - x if negative else out + x
     elif expr.is_Mul:
         coeff, rest = expr.as_coeff_Mul()
         if coeff == -1:

@@ -604,6 +604,8 @@ def coupled_functions(link_functions: dict, n_joints: int, n_parameters: int, *,
     fn = {**link_functions, "K": alg.sym("K", n_parameters)}
     out = [constrained_dynamics(fn, alg, sz), interaction_maps(fn, alg, sz),
            metric_forms(fn, alg, sz), place_object(fn, alg, sz)]
-    if algebra == "sx" and n_joints <= EXTREMES_MAX_JOINTS:
-        out.append(metric_extremes(fn, alg, sz))
+    if n_joints <= EXTREMES_MAX_JOINTS:
+        # closed-form eigenproblems: scalar code whatever the algebra of the others
+        sx = Algebra("sx", prefix)
+        out.append(metric_extremes({**link_functions, "K": sx.sym("K", n_parameters)}, sx, sz))
     return out

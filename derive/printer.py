@@ -24,7 +24,10 @@ class CasadiPrinter(PythonCodePrinter):
     _kf = {"sin": "sin", "cos": "cos", "tan": "tan", "sqrt": "sqrt", "exp": "exp", "log": "log"}
 
     def __init__(self):
-        super().__init__({"standard": "python3", "fully_qualified_modules": False})
+        # order="none": terms in SymPy's own argument order (sorting them for print costs more
+        # than the whole derivation at 20 joints)
+        super().__init__({"standard": "python3", "fully_qualified_modules": False,
+                          "order": "none"})
 
     def _print_Function(self, expr):
         name = expr.func.__name__

@@ -258,14 +258,30 @@ def _sha(text: str) -> str:
     return hashlib.sha256(text.encode()).hexdigest()
 
 
-def render_model(n_joints: int, *, progress=None,
-                 max_joints: int = MAX_SYMBOLIC_JOINTS) -> RenderedModel:
-    """Derive, render and emit C for one joint count (nothing written)."""
+#: Up to this joint count the composed functions are unrolled scalar (SX) code, above it they
+#: keep their matrices (MX, linear-solve nodes and loops). Chosen by measurement
+#: (benchmarks/bench_pipeline.py --algebra, docs/performance.md): at n_a = 8 the two
+#: evaluate equally fast, at 10 the MX form is faster and compiles several times faster.
+SX_MAX_JOINTS = 8
+
+
+def choose_algebra(n_joints: int) -> str:
+    """``"sx"`` (unrolled) or ``"mx"`` (matrix structure) for the composed functions."""
+    return "sx" if n_joints <= SX_MAX_JOINTS else "mx"
+
+
+def render_model(n_joints: int, *, progress=None, max_joints: int = MAX_SYMBOLIC_JOINTS,
+                 algebra: str | None = None) -> RenderedModel:
+    """Derive, render and emit C for one joint count (nothing written). ``algebra``
+    overrides :func:`choose_algebra` (for measurements)."""
     step = progress or (lambda msg: None)
+    algebra = algebra or choose_algebra(n_joints)
+    if algebra not in ("sx", "mx"):
+        raise ValueError(f"algebra must be 'sx' or 'mx', got {algebra!r}")
     step(f"deriving the model of a {n_joints}-joint snake (SymPy)")
     spec = derive_model(n_joints, max_joints=max_joints).spec
-    step("building the CasADi functions")
-    link_functions, coupled_fns = build_functions(spec)
+    step(f"building the CasADi functions ({algebra.upper()} composition)")
+    link_functions, coupled_fns = build_functions(spec, algebra)
     functions = link_functions + [fn for fn, _ in coupled_fns]
     built = tuple(fn.name()[len(spec.prefix):] for fn in functions)
     if built != function_names(n_joints):
@@ -291,6 +307,9 @@ def render_model(n_joints: int, *, progress=None,
         "spec_hash": spec.digest(),
         "build_hash": build_hash(spec),
         "tools": tool_versions(),
+        "algebra": {"composed": algebra, "sx_max_joints": SX_MAX_JOINTS,
+                    "rule": "composed functions unrolled (sx) up to sx_max_joints, matrix "
+                            "structure (mx) above; measured in benchmarks/bench_pipeline.py"},
         "mass_matrix_form": spec.meta["mass_matrix_form"],
         "mass_matrix_operation_counts_sympy": spec.meta["mass_matrix_operation_counts"],
         "files": {name: _sha(text) for name, text in [("model.py", py), *sorted(c_files.items())]},

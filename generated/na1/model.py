@@ -68,11 +68,11 @@ def derived_parameters():
     I2 = link_inertia[1]
     c1 = link_com[0]
     c2 = link_com[1]
-    cse0 = -c1 + l1
+    cse0 = l1 - c1
     cse1 = cse0*m2
-    cse2 = sq(cse0)*m2
-    cse3 = sq(c2)*m2
-    out_K = ca.reshape(ca.vertcat(m1, m2, l1, l2, I1, I2, c1, c2, m1 + m2, cse1, c2*m2, cse2, c2*cse1, cse3, I1 + cse2, I2 + cse3), 16, 1)
+    cse2 = m2*sq(cse0)
+    cse3 = m2*sq(c2)
+    out_K = ca.reshape(ca.vertcat(m1, m2, l1, l2, I1, I2, c1, c2, m1 + m2, cse1, c2*m2, cse2, cse1*c2, cse3, cse2 + I1, cse3 + I2), 16, 1)
     return ca.Function(
         PREFIX + 'derived_parameters',
         [link_mass, link_length, link_inertia, link_com],
@@ -113,16 +113,16 @@ def link_poses():
     gamma2_2 = K[13]
     Jrot1 = K[14]
     Jrot2 = K[15]
-    cse0 = -c1 + l1
+    cse0 = l1 - c1
     cphi1 = cos(theta)
-    jx1 = cphi1*cse0 + x
+    jx1 = x + cphi1*cse0
     sphi1 = sin(theta)
-    jy1 = cse0*sphi1 + y
+    jy1 = y + cse0*sphi1
     phi2 = q1 + theta
     cphi2 = cos(phi2)
-    px2 = c2*cphi2 + jx1
+    px2 = jx1 + cphi2*c2
     sphi2 = sin(phi2)
-    py2 = c2*sphi2 + jy1
+    py2 = jy1 + sphi2*c2
     out_poses = ca.reshape(ca.vertcat(x, y, theta, px2, py2, phi2), 3, 2)
     return ca.Function(
         PREFIX + 'link_poses',
@@ -164,17 +164,17 @@ def link_jacobians():
     gamma2_2 = K[13]
     Jrot1 = K[14]
     Jrot2 = K[15]
-    cse0 = -c1 + l1
+    cse0 = l1 - c1
     cphi1 = cos(theta)
-    jx1 = cphi1*cse0 + x
+    jx1 = x + cphi1*cse0
     sphi1 = sin(theta)
-    jy1 = cse0*sphi1 + y
+    jy1 = y + cse0*sphi1
     phi2 = q1 + theta
     cphi2 = cos(phi2)
-    px2 = c2*cphi2 + jx1
+    px2 = jx1 + cphi2*c2
     sphi2 = sin(phi2)
-    py2 = c2*sphi2 + jy1
-    out_J = ca.reshape(ca.vertcat(1, 0, 0, 1, 0, 0, 0, 1, 0, 0, 1, 0, 0, 0, 1, -py2 + y, px2 - x, 1, 0, 0, 0, jy1 - py2, -jx1 + px2, 1), 6, 4)
+    py2 = jy1 + sphi2*c2
+    out_J = ca.reshape(ca.vertcat(1, 0, 0, 1, 0, 0, 0, 1, 0, 0, 1, 0, 0, 0, 1, y - py2, px2 - x, 1, 0, 0, 0, jy1 - py2, px2 - jx1, 1), 6, 4)
     return ca.Function(
         PREFIX + 'link_jacobians',
         [q, K],
@@ -221,7 +221,7 @@ def link_bias_accelerations():
     gamma2_2 = K[13]
     Jrot1 = K[14]
     Jrot2 = K[15]
-    cse0 = sq(thetad)*(-c1 + l1)
+    cse0 = sq(thetad)*(l1 - c1)
     omega2 = qd1 + thetad
     cse1 = c2*sq(omega2)
     cphi1 = cos(theta)
@@ -279,8 +279,8 @@ def mass_matrix():
     sphi2 = sin(phi2)
     cdphi1_2 = cphi1*cphi2 + sphi1*sphi2
     Mphi1_2 = cdphi1_2*gamma1_2
-    cse0 = Jrot2 + Mphi1_2
-    R1_0 = Jrot1 + Mphi1_2
+    cse0 = Mphi1_2 + Jrot2
+    R1_0 = Mphi1_2 + Jrot1
     R2_0 = cse0
     Mrot0_0 = R1_0 + R2_0
     Mrot0_1 = cse0
@@ -336,18 +336,18 @@ def bias_forces():
     Jrot1 = K[14]
     Jrot2 = K[15]
     cse0 = sq(thetad)
-    cse1 = -c1 + l1
+    cse1 = l1 - c1
     cphi1 = cos(theta)
     cse2 = cphi1*cse1
     omega2 = qd1 + thetad
     cse3 = sq(omega2)
     phi2 = q1 + theta
     cphi2 = cos(phi2)
-    cse4 = c2*cphi2
+    cse4 = cphi2*c2
     sphi1 = sin(theta)
     cse5 = cse1*sphi1
     sphi2 = sin(phi2)
-    cse6 = c2*sphi2
+    cse6 = sphi2*c2
     bx2 = -cse0*cse2 - cse3*cse4
     cse7 = bx2*m2
     by2 = -cse0*cse5 - cse3*cse6
@@ -357,11 +357,11 @@ def bias_forces():
     py2 = cse6 + jy1
     hFx2 = cse7
     hFy2 = by2*m2
-    hMz2 = by2*m2*px2 - cse7*py2
+    hMz2 = -cse7*py2 + by2*px2*m2
     hFx1 = hFx2
     hFy1 = hFy2
     hMz1 = hMz2
-    out_h = ca.reshape(ca.vertcat(hFx1, hFy1, hFx1*y - hFy1*x + hMz1, hFx2*jy1 - hFy2*jx1 + hMz2), 4, 1)
+    out_h = ca.reshape(ca.vertcat(hFx1, hFy1, hMz1 + hFx1*y - hFy1*x, hMz2 + hFx2*jy1 - hFy2*jx1), 4, 1)
     return ca.Function(
         PREFIX + 'bias_forces',
         [q, v, K],
@@ -421,25 +421,25 @@ def contact_row_local():
     cse1 = cse0*sigma
     cse2 = cos(lphi)
     cse3 = cse2*sigma
-    cse4 = lc*sigma
+    cse4 = sigma*lc
     cse5 = cos(opsi)
     cse6 = sin(opsi)
     cse7 = cse5*rhox - cse6*rhoy
-    cse8 = cse2*lc + cse7 - lx + ox
+    cse8 = cse7 + ox - lx + cse2*lc
     cse9 = cse5*rhoy + cse6*rhox
-    cse10 = cse0*lc + cse9 - ly + oy
-    cse11 = sq(cse0)*cse4 - cse1*cse10 + sq(cse2)*cse4 - cse3*cse8
+    cse10 = cse9 + oy - ly + cse0*lc
+    cse11 = cse4*sq(cse0) + cse4*sq(cse2) - cse1*cse10 - cse3*cse8
     cse12 = -cse9
-    cse13 = -cse0*cse8*sigma + cse10*cse3
+    cse13 = cse10*cse3 - cse0*cse8*sigma
     cse14 = cse12*cse3
-    cse15 = -cse1*cse7 - cse14
+    cse15 = -cse14 - cse1*cse7
     cse16 = cse3*lvx
     cse17 = cse1*lvy
     cse18 = cse3*ovx
     cse19 = cse1*ovy
     out_a_link = ca.reshape(ca.vertcat(cse1, -cse3, cse11), 1, 3)
     out_g_obj = ca.reshape(ca.vertcat(-cse1, cse3, -cse1*cse12 + cse2*cse7*sigma), 1, 3)
-    out_adot_v = ca.reshape(ca.vertcat(cse1*lbx + cse11*lbw + cse16*lw + cse17*lw - cse18*lw - cse19*lw - cse3*lby + lw*(-cse13*lw + cse15*ow + cse16 + cse17 - cse18 - cse19) + ow*(cse15*lw + ow*(cse1*cse7 + cse14))), 1, 1)
+    out_adot_v = ca.reshape(ca.vertcat(cse1*lbx + cse11*lbw + cse16*lw + cse17*lw + lw*(cse16 + cse17 - cse18 - cse19 + cse15*ow - cse13*lw) + ow*(cse15*lw + ow*(cse14 + cse1*cse7)) - cse18*lw - cse19*lw - cse3*lby), 1, 1)
     out_gap = ca.reshape(ca.vertcat(cse13), 1, 1)
     out_s = ca.reshape(ca.vertcat(cse0*cse10 + cse2*cse8), 1, 1)
     return ca.Function(
@@ -480,7 +480,7 @@ def wheel_row_local():
     cse0 = sin(lphi)
     cse1 = cos(lphi)
     out_a_w = ca.reshape(ca.vertcat(-cse0, cse1, woff), 1, 3)
-    out_adot_v = ca.reshape(ca.vertcat(-cse0*lbx - cse0*lvy*lw + cse1*lby - cse1*lvx*lw + lbw*woff), 1, 1)
+    out_adot_v = ca.reshape(ca.vertcat(cse1*lby + lbw*woff - cse0*lbx - cse0*lvy*lw - cse1*lvx*lw), 1, 1)
     return ca.Function(
         PREFIX + 'wheel_row_local',
         [link_pose, link_twist, link_bias, wheel_offset],

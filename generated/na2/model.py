@@ -72,15 +72,15 @@ def derived_parameters():
     c1 = link_com[0]
     c2 = link_com[1]
     c3 = link_com[2]
-    cse0 = -c1 + l1
+    cse0 = l1 - c1
     cse1 = cse0*m2
     cse2 = cse0*m3
     cse3 = l2*m3
     cse4 = sq(cse0)
     cse5 = cse4*m2 + cse4*m3
-    cse6 = sq(c2)*m2 + sq(l2)*m3
-    cse7 = sq(c3)*m3
-    out_K = ca.reshape(ca.vertcat(m1, m2, m3, l1, l2, l3, I1, I2, I3, c1, c2, c3, m1 + m2 + m3, cse1 + cse2, c2*m2 + cse3, c3*m3, cse5, c2*cse1 + cse2*l2, c3*cse2, cse6, c3*cse3, cse7, I1 + cse5, I2 + cse6, I3 + cse7), 25, 1)
+    cse6 = m2*sq(c2) + m3*sq(l2)
+    cse7 = m3*sq(c3)
+    out_K = ca.reshape(ca.vertcat(m1, m2, m3, l1, l2, l3, I1, I2, I3, c1, c2, c3, m1 + m2 + m3, cse1 + cse2, cse3 + c2*m2, c3*m3, cse5, cse1*c2 + cse2*l2, cse2*c3, cse6, cse3*c3, cse7, cse5 + I1, cse6 + I2, cse7 + I3), 25, 1)
     return ca.Function(
         PREFIX + 'derived_parameters',
         [link_mass, link_length, link_inertia, link_com],
@@ -131,24 +131,24 @@ def link_poses():
     Jrot1 = K[22]
     Jrot2 = K[23]
     Jrot3 = K[24]
-    cse0 = -c1 + l1
-    cse1 = -c2 + l2
+    cse0 = l1 - c1
+    cse1 = l2 - c2
     cphi1 = cos(theta)
-    jx1 = cphi1*cse0 + x
+    jx1 = x + cphi1*cse0
     sphi1 = sin(theta)
-    jy1 = cse0*sphi1 + y
+    jy1 = y + cse0*sphi1
     phi2 = q1 + theta
     cphi2 = cos(phi2)
-    px2 = c2*cphi2 + jx1
+    px2 = jx1 + cphi2*c2
     sphi2 = sin(phi2)
-    py2 = c2*sphi2 + jy1
-    jx2 = cphi2*cse1 + px2
-    jy2 = cse1*sphi2 + py2
+    py2 = jy1 + sphi2*c2
+    jx2 = px2 + cphi2*cse1
+    jy2 = py2 + cse1*sphi2
     phi3 = phi2 + q2
     cphi3 = cos(phi3)
-    px3 = c3*cphi3 + jx2
+    px3 = jx2 + cphi3*c3
     sphi3 = sin(phi3)
-    py3 = c3*sphi3 + jy2
+    py3 = jy2 + sphi3*c3
     out_poses = ca.reshape(ca.vertcat(x, y, theta, px2, py2, phi2, px3, py3, phi3), 3, 3)
     return ca.Function(
         PREFIX + 'link_poses',
@@ -200,29 +200,29 @@ def link_jacobians():
     Jrot1 = K[22]
     Jrot2 = K[23]
     Jrot3 = K[24]
-    cse0 = -c1 + l1
-    cse1 = -c2 + l2
+    cse0 = l1 - c1
+    cse1 = l2 - c2
     cse2 = -y
     cse3 = -x
     sphi1 = sin(theta)
-    jy1 = cse0*sphi1 + y
+    jy1 = y + cse0*sphi1
     phi2 = q1 + theta
     sphi2 = sin(phi2)
-    py2 = c2*sphi2 + jy1
-    jy2 = cse1*sphi2 + py2
+    py2 = jy1 + sphi2*c2
+    jy2 = py2 + cse1*sphi2
     phi3 = phi2 + q2
     sphi3 = sin(phi3)
-    py3 = c3*sphi3 + jy2
+    py3 = jy2 + sphi3*c3
     cse4 = -py3
     cphi3 = cos(phi3)
     cphi2 = cos(phi2)
     cphi1 = cos(theta)
-    jx1 = cphi1*cse0 + x
-    px2 = c2*cphi2 + jx1
-    jx2 = cphi2*cse1 + px2
-    px3 = c3*cphi3 + jx2
+    jx1 = x + cphi1*cse0
+    px2 = jx1 + cphi2*c2
+    jx2 = px2 + cphi2*cse1
+    px3 = jx2 + cphi3*c3
     cse5 = -px3
-    out_J = ca.reshape(ca.vertcat(1, 0, 0, 1, 0, 0, 1, 0, 0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 0, 1, -cse2 - py2, cse3 + px2, 1, -cse2 - py3, cse3 + px3, 1, 0, 0, 0, jy1 - py2, -jx1 + px2, 1, cse4 + jy1, -cse5 - jx1, 1, 0, 0, 0, 0, 0, 0, cse4 + jy2, -cse5 - jx2, 1), 9, 5)
+    out_J = ca.reshape(ca.vertcat(1, 0, 0, 1, 0, 0, 1, 0, 0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 0, 1, -cse2 - py2, cse3 + px2, 1, -cse2 - py3, cse3 + px3, 1, 0, 0, 0, jy1 - py2, px2 - jx1, 1, cse4 + jy1, -cse5 - jx1, 1, 0, 0, 0, 0, 0, 0, cse4 + jy2, -cse5 - jx2, 1), 9, 5)
     return ca.Function(
         PREFIX + 'link_jacobians',
         [q, K],
@@ -280,11 +280,11 @@ def link_bias_accelerations():
     Jrot1 = K[22]
     Jrot2 = K[23]
     Jrot3 = K[24]
-    cse0 = sq(thetad)*(-c1 + l1)
+    cse0 = sq(thetad)*(l1 - c1)
     omega2 = qd1 + thetad
     cse1 = sq(omega2)
-    cse2 = c2*cse1
-    cse3 = cse1*(-c2 + l2)
+    cse2 = cse1*c2
+    cse3 = cse1*(l2 - c2)
     omega3 = omega2 + qd2
     cse4 = c3*sq(omega3)
     cphi1 = cos(theta)
@@ -358,7 +358,7 @@ def mass_matrix():
     sphi3 = sin(phi3)
     cdphi2_3 = cphi2*cphi3 + sphi2*sphi3
     Mphi2_3 = cdphi2_3*gamma2_3
-    cse0 = Jrot3 + Mphi2_3
+    cse0 = Mphi2_3 + Jrot3
     cphi1 = cos(theta)
     sphi1 = sin(theta)
     cdphi1_3 = cphi1*cphi3 + sphi1*sphi3
@@ -366,8 +366,8 @@ def mass_matrix():
     cdphi1_2 = cphi1*cphi2 + sphi1*sphi2
     Mphi1_2 = cdphi1_2*gamma1_2
     R1_1 = Mphi1_2 + Mphi1_3
-    R1_0 = Jrot1 + R1_1
-    R2_1 = Jrot2 + Mphi2_3
+    R1_0 = R1_1 + Jrot1
+    R2_1 = Mphi2_3 + Jrot2
     R2_0 = Mphi1_2 + R2_1
     R3_1 = cse0
     R3_0 = Mphi1_3 + R3_1
@@ -442,28 +442,28 @@ def bias_forces():
     Jrot2 = K[23]
     Jrot3 = K[24]
     cse0 = sq(thetad)
-    cse1 = -c1 + l1
+    cse1 = l1 - c1
     cphi1 = cos(theta)
     cse2 = cphi1*cse1
     omega2 = qd1 + thetad
     cse3 = sq(omega2)
     phi2 = q1 + theta
     cphi2 = cos(phi2)
-    cse4 = c2*cphi2
+    cse4 = cphi2*c2
     sphi1 = sin(theta)
     cse5 = cse1*sphi1
     sphi2 = sin(phi2)
-    cse6 = c2*sphi2
-    cse7 = -c2 + l2
+    cse6 = sphi2*c2
+    cse7 = l2 - c2
     cse8 = cphi2*cse7
     omega3 = omega2 + qd2
     cse9 = sq(omega3)
     phi3 = phi2 + q2
     cphi3 = cos(phi3)
-    cse10 = c3*cphi3
+    cse10 = cphi3*c3
     cse11 = cse7*sphi2
     sphi3 = sin(phi3)
-    cse12 = c3*sphi3
+    cse12 = sphi3*c3
     bx2 = -cse0*cse2 - cse3*cse4
     bx3 = bx2 - cse10*cse9 - cse3*cse8
     cse13 = bx3*m3
@@ -481,14 +481,14 @@ def bias_forces():
     py3 = cse12 + jy2
     hFx3 = cse13
     hFy3 = by3*m3
-    hMz3 = by3*m3*px3 - cse13*py3
+    hMz3 = -cse13*py3 + by3*px3*m3
     hFx2 = cse14 + hFx3
     hFy2 = cse15 + hFy3
-    hMz2 = -cse14*py2 + cse15*px2 + hMz3
+    hMz2 = hMz3 + cse15*px2 - cse14*py2
     hFx1 = hFx2
     hFy1 = hFy2
     hMz1 = hMz2
-    out_h = ca.reshape(ca.vertcat(hFx1, hFy1, hFx1*y - hFy1*x + hMz1, hFx2*jy1 - hFy2*jx1 + hMz2, hFx3*jy2 - hFy3*jx2 + hMz3), 5, 1)
+    out_h = ca.reshape(ca.vertcat(hFx1, hFy1, hMz1 + hFx1*y - hFy1*x, hMz2 + hFx2*jy1 - hFy2*jx1, hMz3 + hFx3*jy2 - hFy3*jx2), 5, 1)
     return ca.Function(
         PREFIX + 'bias_forces',
         [q, v, K],
@@ -548,25 +548,25 @@ def contact_row_local():
     cse1 = cse0*sigma
     cse2 = cos(lphi)
     cse3 = cse2*sigma
-    cse4 = lc*sigma
+    cse4 = sigma*lc
     cse5 = cos(opsi)
     cse6 = sin(opsi)
     cse7 = cse5*rhox - cse6*rhoy
-    cse8 = cse2*lc + cse7 - lx + ox
+    cse8 = cse7 + ox - lx + cse2*lc
     cse9 = cse5*rhoy + cse6*rhox
-    cse10 = cse0*lc + cse9 - ly + oy
-    cse11 = sq(cse0)*cse4 - cse1*cse10 + sq(cse2)*cse4 - cse3*cse8
+    cse10 = cse9 + oy - ly + cse0*lc
+    cse11 = cse4*sq(cse0) + cse4*sq(cse2) - cse1*cse10 - cse3*cse8
     cse12 = -cse9
-    cse13 = -cse0*cse8*sigma + cse10*cse3
+    cse13 = cse10*cse3 - cse0*cse8*sigma
     cse14 = cse12*cse3
-    cse15 = -cse1*cse7 - cse14
+    cse15 = -cse14 - cse1*cse7
     cse16 = cse3*lvx
     cse17 = cse1*lvy
     cse18 = cse3*ovx
     cse19 = cse1*ovy
     out_a_link = ca.reshape(ca.vertcat(cse1, -cse3, cse11), 1, 3)
     out_g_obj = ca.reshape(ca.vertcat(-cse1, cse3, -cse1*cse12 + cse2*cse7*sigma), 1, 3)
-    out_adot_v = ca.reshape(ca.vertcat(cse1*lbx + cse11*lbw + cse16*lw + cse17*lw - cse18*lw - cse19*lw - cse3*lby + lw*(-cse13*lw + cse15*ow + cse16 + cse17 - cse18 - cse19) + ow*(cse15*lw + ow*(cse1*cse7 + cse14))), 1, 1)
+    out_adot_v = ca.reshape(ca.vertcat(cse1*lbx + cse11*lbw + cse16*lw + cse17*lw + lw*(cse16 + cse17 - cse18 - cse19 + cse15*ow - cse13*lw) + ow*(cse15*lw + ow*(cse14 + cse1*cse7)) - cse18*lw - cse19*lw - cse3*lby), 1, 1)
     out_gap = ca.reshape(ca.vertcat(cse13), 1, 1)
     out_s = ca.reshape(ca.vertcat(cse0*cse10 + cse2*cse8), 1, 1)
     return ca.Function(
@@ -607,7 +607,7 @@ def wheel_row_local():
     cse0 = sin(lphi)
     cse1 = cos(lphi)
     out_a_w = ca.reshape(ca.vertcat(-cse0, cse1, woff), 1, 3)
-    out_adot_v = ca.reshape(ca.vertcat(-cse0*lbx - cse0*lvy*lw + cse1*lby - cse1*lvx*lw + lbw*woff), 1, 1)
+    out_adot_v = ca.reshape(ca.vertcat(cse1*lby + lbw*woff - cse0*lbx - cse0*lvy*lw - cse1*lvx*lw), 1, 1)
     return ca.Function(
         PREFIX + 'wheel_row_local',
         [link_pose, link_twist, link_bias, wheel_offset],

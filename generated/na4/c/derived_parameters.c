@@ -1,7 +1,7 @@
 /* GENERATED FILE - DO NOT EDIT. C code emitted by CasADi for derived_parameters() of
  * generated/na4/ (see its model.py), plus its batched driver.
  * Regenerate with: python -m snakecg_derive --checked-in
- * spec sha256: 6d3cf60c2e6a2bf3e65c7081e859d5528051df9e704c67e6cb3fdb0b6abc56ce
+ * spec sha256: c17be30c8ed658f5fdab620648da74befd8183e9bc07b031fe66b9545c3db6bc
  * tools: sympy 1.14.0, casadi 3.8.2, jinja2 3.1.6
  */
 /* How to prefix internal symbols */

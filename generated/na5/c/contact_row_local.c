@@ -1,7 +1,7 @@
 /* GENERATED FILE - DO NOT EDIT. C code emitted by CasADi for contact_row_local() of
  * generated/na5/ (see its model.py), plus its batched driver.
  * Regenerate with: python -m snakecg_derive --checked-in
- * spec sha256: 1460327b5bcebd354746349675e3369d37c437b9be0451e2a5175b43e20c9c22
+ * spec sha256: 081c0266481fbdc381d2ced6d344ec44d67e55b289aebfd120e3059972e91f55
  * tools: sympy 1.14.0, casadi 3.8.2, jinja2 3.1.6
  */
 /* How to prefix internal symbols */
@@ -84,10 +84,10 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a10=(a10+a12);
   a12=arg[4]? arg[4][1] : 0;
   a12=(a10+a12);
-  a13=arg[0]? arg[0][1] : 0;
-  a12=(a12-a13);
   a13=(a01*a05);
   a12=(a12+a13);
+  a13=arg[0]? arg[0][1] : 0;
+  a12=(a12-a13);
   a13=(a03*a12);
   a06=(a06-a13);
   a08=(a08*a11);
@@ -95,19 +95,19 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a08=(a08-a07);
   a07=arg[4]? arg[4][0] : 0;
   a07=(a08+a07);
-  a09=arg[0]? arg[0][0] : 0;
-  a07=(a07-a09);
   a05=(a00*a05);
   a07=(a07+a05);
+  a05=arg[0]? arg[0][0] : 0;
+  a07=(a07-a05);
   a05=(a04*a07);
   a06=(a06-a05);
   if (res[0]!=0) res[0][2]=a06;
   a05=(-a03);
   if (res[1]!=0) res[1][0]=a05;
   if (res[1]!=0) res[1][1]=a04;
-  a05=(a03*a10);
-  a09=(a00*a08);
-  a09=(a09*a02);
+  a05=(a00*a08);
+  a05=(a05*a02);
+  a09=(a03*a10);
   a05=(a05+a09);
   if (res[1]!=0) res[1][2]=a05;
   a05=arg[2]? arg[2][0] : 0;
@@ -125,18 +125,18 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a13=(a11*a09);
   a05=(a05+a13);
   a06=(a06+a11);
-  a11=arg[5]? arg[5][0] : 0;
-  a11=(a04*a11);
-  a06=(a06-a11);
-  a13=arg[5]? arg[5][1] : 0;
-  a13=(a03*a13);
-  a06=(a06-a13);
   a10=(a10*a04);
-  a03=(a03*a08);
-  a08=(a10-a03);
-  a14=arg[5]? arg[5][2] : 0;
-  a15=(a08*a14);
-  a06=(a06+a15);
+  a08=(a03*a08);
+  a11=(a10-a08);
+  a13=arg[5]? arg[5][2] : 0;
+  a14=(a11*a13);
+  a06=(a06+a14);
+  a14=arg[5]? arg[5][0] : 0;
+  a14=(a04*a14);
+  a06=(a06-a14);
+  a15=arg[5]? arg[5][1] : 0;
+  a03=(a03*a15);
+  a06=(a06-a03);
   a15=(a12*a04);
   a16=(a01*a07);
   a16=(a16*a02);
@@ -145,18 +145,18 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a06=(a06-a16);
   a06=(a09*a06);
   a05=(a05+a06);
-  a08=(a08*a09);
-  a03=(a03-a10);
-  a03=(a14*a03);
-  a08=(a08+a03);
-  a14=(a14*a08);
-  a05=(a05+a14);
   a11=(a11*a09);
-  a05=(a05-a11);
-  a13=(a13*a09);
-  a05=(a05-a13);
-  a13=arg[2]? arg[2][1] : 0;
-  a04=(a04*a13);
+  a08=(a08-a10);
+  a08=(a13*a08);
+  a11=(a11+a08);
+  a13=(a13*a11);
+  a05=(a05+a13);
+  a14=(a14*a09);
+  a05=(a05-a14);
+  a03=(a03*a09);
+  a05=(a05-a03);
+  a03=arg[2]? arg[2][1] : 0;
+  a04=(a04*a03);
   a05=(a05-a04);
   if (res[2]!=0) res[2][0]=a05;
   if (res[3]!=0) res[3][0]=a15;

@@ -1,7 +1,7 @@
 /* GENERATED FILE - DO NOT EDIT. C code emitted by CasADi for derived_parameters() of
  * generated/na5/ (see its model.py), plus its batched driver.
  * Regenerate with: python -m snakecg_derive --checked-in
- * spec sha256: 1460327b5bcebd354746349675e3369d37c437b9be0451e2a5175b43e20c9c22
+ * spec sha256: 081c0266481fbdc381d2ced6d344ec44d67e55b289aebfd120e3059972e91f55
  * tools: sympy 1.14.0, casadi 3.8.2, jinja2 3.1.6
  */
 /* How to prefix internal symbols */

@@ -1,7 +1,7 @@
 /* GENERATED FILE - DO NOT EDIT. C code emitted by CasADi for link_jacobians() of
  * generated/na6/ (see its model.py), plus its batched driver.
  * Regenerate with: python -m snakecg_derive --checked-in
- * spec sha256: e232b212df24684700216b0534f9f644d3ad97ef2a2b5061af17e689371e995b
+ * spec sha256: 2c0ad20bb4ded5fc9766e68b43437e777eab3d91647cb3794987705bfc799017
  * tools: sympy 1.14.0, casadi 3.8.2, jinja2 3.1.6
  */
 /* How to prefix internal symbols */
