@@ -164,8 +164,8 @@ def malformed_files(draw):
                 del robot["joints"]
                 expect.append("missing key joints in [robot]")
             elif kind == "huge":
-                robot["joints"] = draw(st.integers(31, 10**18))
-                expect.append(f"joints={robot['joints']} exceeds the generation limit of 30")
+                robot["joints"] = draw(st.integers(51, 10**18))
+                expect.append(f"joints={robot['joints']} exceeds the generation limit of 50")
             else:
                 robot["joints"] = draw(st.sampled_from(["3", 2.5, True, [3], {"n": 3}])
                                        if kind == "type" else st.integers(-10**6, 0))
