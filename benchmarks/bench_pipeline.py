@@ -76,7 +76,7 @@ if n <= checked_in_max:
     shutil.rmtree(scratch, ignore_errors=True)
 ops = {f["name"]: f["operations"] for f in manifest["functions"]}
 print(json.dumps({
-    "import": t_import, "derive": marks["rendering"] - t1, "render": t2 - marks["rendering"],
+    "import": t_import, "derive": marks["building"] - t1, "render": t2 - marks["building"],
     "compile": t3 - t2, "in_process": t3 - t0, "ops": ops,
 }))
 """
@@ -191,6 +191,32 @@ def bench_evaluation(joints: int, n_samples: int, repeats: int) -> dict:
     return out
 
 
+def c_size_table(joints) -> int:
+    """Generated C per joint count (rendered in this process, nothing compiled): total bytes,
+    the largest file, the composition chosen, the render time; and the growth exponent
+    between successive counts (``log(size ratio) / log(n ratio)``)."""
+    import math
+
+    from snakecg_derive.render import render_model
+
+    print(f"machine: {machine()}")
+    print(f"{'n_a':>4} {'algebra':>7} {'C MB':>8} {'largest':>26} {'render s':>9} {'growth':>7}")
+    prev = None
+    for n in joints:
+        t0 = time.perf_counter()
+        r = render_model(n, max_joints=max(joints))
+        dt = time.perf_counter() - t0
+        sizes = {k: len(v.encode()) for k, v in r.files.items() if k.endswith(".c")}
+        total = sum(sizes.values())
+        big = max(sizes, key=sizes.get)
+        growth = "" if prev is None else \
+            f"{math.log(total / prev[1]) / math.log(n / prev[0]):.2f}"
+        print(f"{n:>4} {r.manifest['algebra']['composed']:>7} {total / 1e6:>8.2f} "
+              f"{big[2:] + f' {sizes[big] / 1e6:.2f}':>26} {dt:>9.1f} {growth:>7}", flush=True)
+        prev = (n, total)
+    return 0
+
+
 def machine() -> str:
     cpu = platform.processor() or "?"
     try:
@@ -212,7 +238,12 @@ def main(argv=None) -> int:
                    help="joint counts 2, 3, 6 and smaller batches (about a minute)")
     p.add_argument("--joints", help="comma-separated joint counts (default 2,3,6,10,20)")
     p.add_argument("--json", metavar="FILE", help="also write the figures as JSON")
+    p.add_argument("--c-size", metavar="N,N", nargs="?", const="10,20,30,50",
+                   help="only render (no compile) and print the generated C size, render time "
+                   "and composition (sx/mx) per joint count (default 10,20,30,50)")
     a = p.parse_args(argv)
+    if a.c_size:
+        return c_size_table(tuple(int(x) for x in a.c_size.split(",")))
     joints = (tuple(int(x) for x in a.joints.split(",")) if a.joints
               else (2, 3, 6) if a.quick else JOINTS)
     repeats = 3 if a.quick else 7

@@ -205,7 +205,75 @@ class StructuredChain:
         return h
 
     def mass_matrix(self) -> sp.Matrix:
-        """``M_s`` of eq. (4) in ``O(n^2)``.
+        """``M_s`` of eq. (4) in about ``2 n^2`` operations (composite bodies about pivots).
+
+        Coordinate ``t`` (``theta`` for ``t = 0``, joint ``t`` after) turns links
+        ``t+1 .. n`` about its pivot ``o_t`` (``o_0`` the COM of link 1, ``o_t`` joint ``t``;
+        positions taken from ``o_0``, so ``M`` does not depend on ``x, y``). With the first
+        moment of those links about ``o_t``, ``S_t = sum_{k>t} beta_k e_k``, and their
+        rotational inertia about it, ``H_t``:
+
+        * ``M_pp = mtot 1`` and ``M_p,t = k x S_t = (-S_t.y, S_t.x)``;
+        * ``M_tt = H_t``, ``H_t = H_{t+1} + Jrot_{t+1} + 2 u_{t+1}.S_{t+1}`` with
+          ``u_k = o_k - o_{k-1} = d_k e_k`` (parallel-axis theorem, ``d_1 = l_1 - c_1``,
+          ``d_k = l_k``);
+        * ``M_rt = H_t + (o_t - o_r).S_t = C_t - o_r.S_t`` for ``r < t``, with
+          ``C_t = H_t + o_t.S_t`` (a composite body turned about another pivot).
+
+        Four operations per entry of the rotational block, ``O(n)`` for the rest.
+        """
+        s = self.s
+        n = s.n_links
+        ns = s.n_coordinates
+        c = [None] + [self.cos_phi(i) for i in range(1, n + 1)]
+        sn = [None] + [self.sin_phi(i) for i in range(1, n + 1)]
+        beta = s.first_moments
+        M = sp.zeros(ns, ns)
+        M[0, 0] = M[1, 1] = s.total_mass
+        # S_t as (My_t, -Mx_t): the coupling block M[(x, y), 2 + t] = (Mx_t, My_t)
+        Mx: list = [None] * n
+        My: list = [None] * n
+        accx = accy = sp.Integer(0)
+        for t in range(n - 1, -1, -1):
+            accx = self._let(f"Mx{t}", accx - beta[t] * sn[t + 1])
+            accy = self._let(f"My{t}", accy + beta[t] * c[t + 1])
+            Mx[t], My[t] = accx, accy
+            M[0, 2 + t] = M[2 + t, 0] = accx
+            M[1, 2 + t] = M[2 + t, 1] = accy
+        # pivot steps u_k = d_k e_k and pivots o_t (o_0 = 0)
+        d = [None] + [s.link_length[0] - s.link_com[0]] + list(s.link_length[1:])
+        ux: list = [None] * (n + 1)
+        uy: list = [None] * (n + 1)
+        for k in range(1, n):
+            ux[k] = self._let(f"ux{k}", d[k] * c[k])
+            uy[k] = self._let(f"uy{k}", d[k] * sn[k])
+        ox: list = [sp.Integer(0)] + [None] * (n - 1)
+        oy: list = [sp.Integer(0)] + [None] * (n - 1)
+        for t in range(1, n):
+            ox[t] = ux[1] if t == 1 else self._let(f"ox{t}", ox[t - 1] + ux[t])
+            oy[t] = uy[1] if t == 1 else self._let(f"oy{t}", oy[t - 1] + uy[t])
+        # H_t, suffix recurrence (parallel-axis theorem)
+        H: list = [None] * n
+        H[n - 1] = s.rotational_diagonal[n - 1]
+        for t in range(n - 2, -1, -1):
+            uS = self._let(f"uS{t + 1}", ux[t + 1] * My[t + 1] - uy[t + 1] * Mx[t + 1])
+            H[t] = self._let(f"H{t}", H[t + 1] + s.rotational_diagonal[t] + 2 * uS)
+        # C_t = H_t + o_t.S_t, then M_rt = C_t - o_r.S_t
+        for t in range(n):
+            M[2 + t, 2 + t] = H[t]
+            if t == 0:
+                continue
+            Ct = self._let(f"C{t}", H[t] + (ox[t] * My[t] - oy[t] * Mx[t]))
+            M[2, 2 + t] = M[2 + t, 2] = Ct
+            for r in range(1, t):
+                P = self._let(f"P{r}_{t}", ox[r] * My[t] - oy[r] * Mx[t])
+                M[2 + r, 2 + t] = M[2 + t, 2 + r] = self._let(f"Mrot{r}_{t}", Ct - P)
+        return M
+
+
+    def mass_matrix_suffix_sums(self) -> sp.Matrix:
+        """``M_s`` of eq. (4) in ``O(n^2)`` as suffix sums of ``gamma_jk cos(phi_j - phi_k)``
+        (about ``3.5 n^2`` operations; fewer than :meth:`mass_matrix` up to a few joints).
 
         In absolute angles ``phi`` the inertia is ``M_pp = mtot 1``,
         ``M_p,phi_j = beta_j e_j^perp`` and ``M_phi_j phi_k = gamma_jk cos(phi_j - phi_k)``

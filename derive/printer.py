@@ -11,7 +11,7 @@ import re
 import sympy as sp
 from sympy.printing.pycode import PythonCodePrinter
 
-from .spec import FunctionSpec, topological_assignments
+from .spec import FunctionSpec
 
 __all__ = ["CasadiPrinter", "function_body"]
 
@@ -24,7 +24,10 @@ class CasadiPrinter(PythonCodePrinter):
     _kf = {"sin": "sin", "cos": "cos", "tan": "tan", "sqrt": "sqrt", "exp": "exp", "log": "log"}
 
     def __init__(self):
-        super().__init__({"standard": "python3", "fully_qualified_modules": False})
+        # order="none": terms in SymPy's own argument order (sorting them for print costs more
+        # than the whole derivation at 20 joints)
+        super().__init__({"standard": "python3", "fully_qualified_modules": False,
+                          "order": "none"})
 
     def _print_Function(self, expr):
         name = expr.func.__name__
@@ -50,27 +53,15 @@ class CasadiPrinter(PythonCodePrinter):
 
 
 def function_body(f: FunctionSpec) -> tuple[list[str], list[tuple[str, int, int, list[str]]]]:
-    """Straight-line code for ``f``: ``(lines, outputs)``.
+    """Straight-line code for ``f`` (for reading): ``(lines, outputs)``.
 
-    Runs SymPy's common-subexpression elimination over the function's assignments and
-    outputs together (generation time), orders everything topologically and prints each
-    assignment. ``outputs`` holds ``(name, rows, cols, column-major element code)``.
+    The same program that :func:`.build.build_function` turns into CasADi expressions: SymPy's
+    common-subexpression elimination over the assignments and outputs together, in
+    topological order. ``outputs`` holds ``(name, rows, cols, column-major element code)``.
     """
+    from .build import cse_program
+
     printer = CasadiPrinter()
-    inputs = set(f.input_symbols())
-    rhs = [e for _, e in f.assignments]
-    flat_outputs = []
-    for _, mat, _ in f.outputs:
-        flat_outputs.extend(mat[r, c] for c in range(mat.cols) for r in range(mat.rows))
-    tmp = sp.numbered_symbols("cse", real=True)
-    repl, reduced = sp.cse(rhs + flat_outputs, symbols=tmp, order="none")
-    assigns = list(repl) + [(s, r) for (s, _), r in zip(f.assignments, reduced[: len(rhs)])]
-    ordered = topological_assignments(assigns, inputs)
+    ordered, outs = cse_program(f)
     lines = [f"{printer.doprint(s)} = {printer.doprint(e)}" for s, e in ordered]
-    outs = []
-    k = len(rhs)
-    for name, mat, _ in f.outputs:
-        n = mat.rows * mat.cols
-        outs.append((name, mat.rows, mat.cols, [printer.doprint(e) for e in reduced[k : k + n]]))
-        k += n
-    return lines, outs
+    return lines, [(name, r, c, [printer.doprint(e) for e in el]) for name, r, c, el in outs]

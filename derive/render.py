@@ -13,13 +13,16 @@ import json
 import os
 import shutil
 import tempfile
-import types
 from dataclasses import dataclass
 from importlib import metadata
 from pathlib import Path
 
 import jinja2
 
+from . import coupled
+from .catalog import function_names
+from .build import build_function, operation_count, signature
+from .coupled import COUPLED_FUNCTIONS, coupled_functions
 from .model import derive_model
 from .printer import function_body
 from .spec import ModelSpec
@@ -70,8 +73,11 @@ def tool_versions() -> dict[str, str]:
 
 
 def _template_digest() -> str:
+    """Hash of the templates and of the generator's Python sources (the composition of
+    eqs. 12-31 lives in :mod:`.coupled`)."""
     h = hashlib.sha256()
-    for p in sorted(_TEMPLATES.glob("*.j2")):
+    here = Path(__file__).parent
+    for p in sorted(_TEMPLATES.glob("*.j2")) + sorted(here.glob("*.py")):
         h.update(p.name.encode())
         h.update(p.read_bytes())
     return h.hexdigest()
@@ -121,28 +127,6 @@ def _function_context(spec: ModelSpec) -> list[dict]:
     return ctx
 
 
-_COMPOSED = [
-    {"name": "constrained_dynamics",
-     "input_names": ["q", "v", "tau", "q_obj", "v_obj", "f_obj", "K", "contact_link", "side",
-                     "object_mass", "object_inertia", "rho", "wheel_offset", "free", "lam_fixed",
-                     "regularization"],
-     "output_names": ["qdd", "a_obj", "lam", "w", "gap", "s", "norm_lambda", "norm_a_obj",
-                      "norm_qdd", "sr", "pivot_ratio", "delassus", "b"]},
-    {"name": "interaction_maps",
-     "input_names": ["q", "K", "contact_link", "side", "object_mass", "object_inertia", "q_obj",
-                     "rho", "wheel_offset", "free", "lam_fixed", "regularization"],
-     "output_names": ["lam_from_tau", "...", "delassus", "pivot_ratio"]},
-    {"name": "metric_forms",
-     "input_names": ["q", "K", "contact_link", "side", "object_mass", "object_inertia", "q_obj",
-                     "rho", "wheel_offset", "free", "regularization"],
-     "output_names": ["omega_tau", "xi_tau", "lambda_form_tau", "input_metric",
-                      "contact_from_tau", "pivot_ratio"]},
-    {"name": "place_object",
-     "input_names": ["q", "K", "contact_link", "contact_offset", "object_distance", "side"],
-     "output_names": ["q_obj", "rho", "contact_point"]},
-]
-
-
 #: The one regenerate command printed in every generated header. It names no path: user-derived
 #: text (an output folder, the cache folder) never enters a generated file.
 REGENERATE = "python -m snakecg_derive --checked-in"
@@ -155,9 +139,39 @@ def comment_text(value) -> str:
     return text.replace("*/", "*?")
 
 
-def render_python(spec: ModelSpec) -> str:
-    """Jinja2 step: the Python module that builds the CasADi functions."""
+def first_paragraph(doc: str) -> str:
+    """The first paragraph of a docstring, on one line."""
+    return " ".join((doc or "").strip().split("\n\n")[0].split())
+
+
+def _signature_context(fn, prefix: str, doc: str, equation: str = "") -> dict:
+    """What a template prints about one function, read from the CasADi function itself."""
+    sig = signature(fn, prefix)
+    return {**sig, "doc": doc, "equation": equation,
+            "doc_lines": [line.strip() for line in (doc or "").strip().splitlines()],
+            "input_names": [i["name"] for i in sig["inputs"]],
+            "output_names": [o["name"] for o in sig["outputs"]]}
+
+
+def render_python(spec: ModelSpec, link_functions, coupled) -> str:
+    """Jinja2 step: ``model.py``, the readable record of the model (never imported or run).
+
+    It lists every function with the signature read from the CasADi function, prints the
+    straight-line programs of the per-link functions and names the module that builds the
+    composed ones. Templates receive printed strings only.
+    """
     versions = tool_versions()
+    links = []
+    for f, fn in zip(spec.functions, link_functions):
+        ctx = _signature_context(fn, spec.prefix, f.doc, f.equation)
+        lines, outs = function_body(f)
+        ctx["lines"] = lines
+        ctx["input_docs"] = [d for _, _, d in f.inputs]
+        ctx["input_symbols"] = [[str(s) for s in syms] for _, syms, _ in f.inputs]
+        ctx["output_docs"] = [d for _, _, d in f.outputs]
+        ctx["output_elements"] = [el for _, _, _, el in outs]
+        links.append(ctx)
+    composed = [_signature_context(fn, spec.prefix, doc) for fn, doc in coupled]
     return _env().get_template("model.py.j2").render(
         n_joints=spec.n_joints,
         n_links=spec.meta["n_links"],
@@ -167,25 +181,20 @@ def render_python(spec: ModelSpec) -> str:
         spec_hash=spec.digest(),
         tools=", ".join(f"{k} {v}" for k, v in versions.items()),
         regenerate=REGENERATE,
-        functions=_function_context(spec),
-        composed=_COMPOSED,
+        functions=links,
+        composed=composed,
     )
 
 
-def load_python(source: str, name: str) -> types.ModuleType:
-    """Execute freshly rendered model source into a module (generation time only)."""
-    module = types.ModuleType(name)
-    code = compile(source, f"<{name}>", "exec")
-    exec(code, module.__dict__)  # noqa: S102 - our own just-rendered code, never a cache
-    return module
-
-
-def operation_count(fn) -> int:
-    """Arithmetic operations of a CasADi SX function (inputs, outputs, constants excluded)."""
-    import casadi as ca
-
-    skip = {ca.OP_INPUT, ca.OP_OUTPUT, ca.OP_CONST, ca.OP_PARAMETER}
-    return sum(1 for k in range(fn.n_instructions()) if fn.instruction_id(k) not in skip)
+def build_functions(spec: ModelSpec, algebra: str = "sx"):
+    """The CasADi functions of a model, built in Python (nothing rendered is run):
+    ``(per-link functions, [(composed function, docstring)])``."""
+    link_functions = [build_function(f, spec.prefix) for f in spec.functions]
+    by_name = {fn.name()[len(spec.prefix):]: fn for fn in link_functions}
+    composed = coupled_functions(by_name, spec.n_joints, spec.meta["n_parameters"],
+                                 prefix=spec.prefix, algebra=algebra)
+    docs = {name: getattr(coupled, name).__doc__ for name in COUPLED_FUNCTIONS}
+    return link_functions, [(fn, docs[fn.name()[len(spec.prefix):]]) for fn in composed]
 
 
 #: Functions with more operations than this are compiled with GCC's partial-redundancy
@@ -194,19 +203,11 @@ def operation_count(fn) -> int:
 LARGE_FUNCTION_OPERATIONS = 5000
 
 
-def _signature(f, prefix: str) -> dict:
+def _signature(f, prefix: str, doc: str = "") -> dict:
     ops = operation_count(f)
     return {
-        "name": f.name()[len(prefix):],
-        "symbol": f.name(),
-        "inputs": [
-            {"name": f.name_in(k), "rows": f.size1_in(k), "cols": f.size2_in(k)}
-            for k in range(f.n_in())
-        ],
-        "outputs": [
-            {"name": f.name_out(k), "rows": f.size1_out(k), "cols": f.size2_out(k)}
-            for k in range(f.n_out())
-        ],
+        **signature(f, prefix),
+        "doc": first_paragraph(doc),
         "n_in": f.n_in(),
         "n_out": f.n_out(),
         "nnz_out": [f.nnz_out(k) for k in range(f.n_out())],
@@ -214,12 +215,13 @@ def _signature(f, prefix: str) -> dict:
         "sz_res": f.sz_res(),
         "sz_iw": f.sz_iw(),
         "sz_w": f.sz_w(),
+        "algebra": "sx" if f.is_a("SXFunction") else "mx",
         "operations": ops,
-        "large": ops > LARGE_FUNCTION_OPERATIONS,
+        "large": ops is not None and ops > LARGE_FUNCTION_OPERATIONS,
     }
 
 
-def render_c(spec: ModelSpec, functions) -> tuple[dict[str, str], list[dict]]:
+def render_c(spec: ModelSpec, functions, docs=None) -> tuple[dict[str, str], list[dict]]:
     """CasADi's C, one translation unit per function (compiled in parallel), each with its
     batched driver; returns ``({file name: text}, signatures)``."""
     import casadi as ca
@@ -227,15 +229,15 @@ def render_c(spec: ModelSpec, functions) -> tuple[dict[str, str], list[dict]]:
     versions = tool_versions()
     files = {}
     sigs = []
-    for f in functions:
-        sig = _signature(f, spec.prefix)
+    for k, f in enumerate(functions):
+        sig = _signature(f, spec.prefix, docs[k] if docs else "")
         sigs.append(sig)
         cg = ca.CodeGenerator(f.name(), {"with_header": False})
         cg.add(f)
         header = (
             "/* GENERATED FILE - DO NOT EDIT. C code emitted by CasADi for "
-            f"{sig['name']}() of\n * generated/{model_dirname(spec.n_joints)}/model.py, plus its "
-            "batched driver.\n"
+            f"{sig['name']}() of\n * generated/{model_dirname(spec.n_joints)}/ (see its model.py), "
+            "plus its batched driver.\n"
             f" * Regenerate with: {REGENERATE}\n"
             f" * spec sha256: {spec.digest()}\n"
             f" * tools: {comment_text(', '.join(f'{k} {v}' for k, v in versions.items()))}\n"
@@ -256,19 +258,41 @@ def _sha(text: str) -> str:
     return hashlib.sha256(text.encode()).hexdigest()
 
 
-def render_model(n_joints: int, *, progress=None,
-                 max_joints: int = MAX_SYMBOLIC_JOINTS) -> RenderedModel:
-    """Derive, render and emit C for one joint count (nothing written)."""
+#: Up to this joint count the composed functions are unrolled scalar (SX) code, above it they
+#: keep their matrices (MX: linear-solve nodes and loops). Measured (docs/performance.md): at
+#: n_a = 6 both evaluate in CasADi's VM within a factor two of each other, while at n_a = 20
+#: the MX form emits 1.4 MB of C instead of 12 MB; the checked-in 1..6 stay SX so that small
+#: robots keep their unrolled speed.
+SX_MAX_JOINTS = 8
+
+
+def choose_algebra(n_joints: int) -> str:
+    """``"sx"`` (unrolled) or ``"mx"`` (matrix structure) for the composed functions."""
+    return "sx" if n_joints <= SX_MAX_JOINTS else "mx"
+
+
+def render_model(n_joints: int, *, progress=None, max_joints: int = MAX_SYMBOLIC_JOINTS,
+                 algebra: str | None = None) -> RenderedModel:
+    """Derive, render and emit C for one joint count (nothing written). ``algebra``
+    overrides :func:`choose_algebra` (for measurements)."""
     step = progress or (lambda msg: None)
+    algebra = algebra or choose_algebra(n_joints)
+    if algebra not in ("sx", "mx"):
+        raise ValueError(f"algebra must be 'sx' or 'mx', got {algebra!r}")
     step(f"deriving the model of a {n_joints}-joint snake (SymPy)")
     spec = derive_model(n_joints, max_joints=max_joints).spec
-    step("rendering the CasADi builder (Jinja2)")
-    py = render_python(spec)
-    step("building the CasADi functions")
-    module = load_python(py, f"snakecg_generated_na{n_joints}")
-    functions = module.all_functions()
+    step(f"building the CasADi functions ({algebra.upper()} composition)")
+    link_functions, coupled_fns = build_functions(spec, algebra)
+    functions = link_functions + [fn for fn, _ in coupled_fns]
+    built = tuple(fn.name()[len(spec.prefix):] for fn in functions)
+    if built != function_names(n_joints):
+        raise RuntimeError(f"the generator built {built}, its catalog says "
+                           f"{function_names(n_joints)} (derive/catalog.py)")
+    docs = [f.doc for f in spec.functions] + [doc for _, doc in coupled_fns]
+    step("rendering the readable record model.py (Jinja2)")
+    py = render_python(spec, link_functions, coupled_fns)
     step("emitting C (CasADi code generator)")
-    c_files, sigs = render_c(spec, functions)
+    c_files, sigs = render_c(spec, functions, docs)
     # CasADi's own serialization of every function: what the no-compiler fallback loads, so
     # that nothing generated is ever executed at run time.
     c_files.update(serialize_functions(spec, functions))
@@ -284,6 +308,9 @@ def render_model(n_joints: int, *, progress=None,
         "spec_hash": spec.digest(),
         "build_hash": build_hash(spec),
         "tools": tool_versions(),
+        "algebra": {"composed": algebra, "sx_max_joints": SX_MAX_JOINTS,
+                    "rule": "composed functions unrolled (sx) up to sx_max_joints, matrix "
+                            "structure (mx) above; measured in benchmarks/bench_pipeline.py"},
         "mass_matrix_form": spec.meta["mass_matrix_form"],
         "mass_matrix_operation_counts_sympy": spec.meta["mass_matrix_operation_counts"],
         "files": {name: _sha(text) for name, text in [("model.py", py), *sorted(c_files.items())]},

@@ -81,7 +81,15 @@ class ModelSpec:
         raise KeyError(f"no function {name!r} in the spec for n_joints={self.n_joints}")
 
     def digest(self) -> str:
-        """SHA-256 over a canonical text of the spec (srepr of every expression)."""
+        """SHA-256 over a canonical text of the spec (srepr of every expression); computed
+        once per spec (it prints every expression)."""
+        cached = self.__dict__.get("_digest")
+        if cached is None:
+            cached = self._compute_digest()
+            object.__setattr__(self, "_digest", cached)
+        return cached
+
+    def _compute_digest(self) -> str:
         h = hashlib.sha256()
         h.update(json.dumps({"n_joints": self.n_joints, "prefix": self.prefix}).encode())
         for f in self.functions:

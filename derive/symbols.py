@@ -18,13 +18,14 @@ Conventions (also in ``docs/model.md``):
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import cached_property
 
 import sympy as sp
 
 __all__ = ["SnakeSymbols", "MAX_SYMBOLIC_JOINTS"]
 
 #: Largest joint count the derivation accepts by default (configurable by the caller).
-MAX_SYMBOLIC_JOINTS = 40
+MAX_SYMBOLIC_JOINTS = 50
 
 
 def _syms(names: list[str]) -> tuple[sp.Symbol, ...]:
@@ -33,7 +34,8 @@ def _syms(names: list[str]) -> tuple[sp.Symbol, ...]:
 
 @dataclass(frozen=True)
 class SnakeSymbols:
-    """All symbols of the snake model for a joint count, in argument order."""
+    """All symbols of the snake model for a joint count, in argument order (each tuple is
+    built once per instance: the derivation reads them thousands of times)."""
 
     n_joints: int
 
@@ -53,12 +55,12 @@ class SnakeSymbols:
         return self.n_joints + 3
 
     # state --------------------------------------------------------------------------------
-    @property
+    @cached_property
     def q(self) -> tuple[sp.Symbol, ...]:
         """Generalized coordinates ``(x, y, theta, q1 ... q_na)``."""
         return _syms(["x", "y", "theta"] + [f"q{j}" for j in range(1, self.n_joints + 1)])
 
-    @property
+    @cached_property
     def v(self) -> tuple[sp.Symbol, ...]:
         """Generalized velocities, same order as :attr:`q`."""
         return _syms(["xd", "yd", "thetad"] + [f"qd{j}" for j in range(1, self.n_joints + 1)])
@@ -67,34 +69,34 @@ class SnakeSymbols:
     def _per_link(self, stem: str) -> tuple[sp.Symbol, ...]:
         return tuple(sp.Symbol(f"{stem}{i}", positive=True) for i in range(1, self.n_links + 1))
 
-    @property
+    @cached_property
     def link_mass(self) -> tuple[sp.Symbol, ...]:
         return self._per_link("m")
 
-    @property
+    @cached_property
     def link_length(self) -> tuple[sp.Symbol, ...]:
         return self._per_link("l")
 
-    @property
+    @cached_property
     def link_inertia(self) -> tuple[sp.Symbol, ...]:
         return self._per_link("I")
 
-    @property
+    @cached_property
     def link_com(self) -> tuple[sp.Symbol, ...]:
         """COM position of each link, measured from its rear end along the link."""
         return self._per_link("c")
 
-    @property
+    @cached_property
     def raw_parameters(self) -> tuple[sp.Symbol, ...]:
         """``(m_1..m_nl, l_1..l_nl, I_1..I_nl, c_1..c_nl)``."""
         return self.link_mass + self.link_length + self.link_inertia + self.link_com
 
     # derived (configuration independent) parameters -----------------------------------------
-    @property
+    @cached_property
     def total_mass(self) -> sp.Symbol:
         return sp.Symbol("mtot", positive=True)
 
-    @property
+    @cached_property
     def first_moments(self) -> tuple[sp.Symbol, ...]:
         """``beta_j = sum_{i >= j} m_i a_ij`` (first mass moment carried by link axis j)."""
         return tuple(sp.Symbol(f"beta{j}", real=True) for j in range(1, self.n_links + 1))
@@ -104,18 +106,18 @@ class SnakeSymbols:
         j, k = min(j, k), max(j, k)
         return sp.Symbol(f"gamma{j}_{k}", real=True)
 
-    @property
+    @cached_property
     def second_moments(self) -> tuple[sp.Symbol, ...]:
         """Upper triangle of ``gamma`` row by row, diagonal included."""
         n = self.n_links
         return tuple(self.second_moment(j, k) for j in range(1, n + 1) for k in range(j, n + 1))
 
-    @property
+    @cached_property
     def rotational_diagonal(self) -> tuple[sp.Symbol, ...]:
         """``gamma_jj + I_j``: the diagonal of the inertia in absolute link angles."""
         return tuple(sp.Symbol(f"Jrot{j}", positive=True) for j in range(1, self.n_links + 1))
 
-    @property
+    @cached_property
     def derived_parameters(self) -> tuple[sp.Symbol, ...]:
         return (
             (self.total_mass,)
@@ -124,7 +126,7 @@ class SnakeSymbols:
             + self.rotational_diagonal
         )
 
-    @property
+    @cached_property
     def parameters(self) -> tuple[sp.Symbol, ...]:
         """The parameter vector ``K`` every model function takes: raw, then derived."""
         return self.raw_parameters + self.derived_parameters

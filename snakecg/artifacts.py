@@ -28,7 +28,9 @@ import os
 import shutil
 import stat
 import sys
+import time
 import warnings
+from contextlib import contextmanager
 from importlib import metadata
 from pathlib import Path, PurePosixPath
 
@@ -42,15 +44,17 @@ __all__ = [
     "verify_model_dir",
     "MANIFEST_FORMAT",
     "max_joints",
+    "held_lock",
+    "lock_timeout",
 ]
 
 MANIFEST_FORMAT = 1
-_DEFAULT_MAX_JOINTS = 30
+_DEFAULT_MAX_JOINTS = 50
 _reported: set[str] = set()
 
 
 def max_joints() -> int:
-    """Largest joint count generated on demand (``$SNAKECG_MAX_JOINTS``, default 30)."""
+    """Largest joint count generated on demand (``$SNAKECG_MAX_JOINTS``, default 50)."""
     raw = os.environ.get("SNAKECG_MAX_JOINTS")
     if raw is None:
         return _DEFAULT_MAX_JOINTS
@@ -61,6 +65,78 @@ def max_joints() -> int:
     if value < 1:
         raise InputError(f"SNAKECG_MAX_JOINTS must be a positive integer, got {raw!r}")
     return value
+
+
+#: Seconds a process waits for a cache lock before it says who holds it (then keeps waiting).
+LOCK_NOTICE_SECONDS = 5.0
+_DEFAULT_LOCK_TIMEOUT = 1800.0
+
+
+def lock_timeout() -> float:
+    """Longest wait for a cache lock, in seconds (``$SNAKECG_LOCK_TIMEOUT``, default 1800)."""
+    raw = os.environ.get("SNAKECG_LOCK_TIMEOUT")
+    if raw is None:
+        return _DEFAULT_LOCK_TIMEOUT
+    try:
+        value = float(raw)
+    except ValueError:
+        value = float("nan")
+    if not value > 0 or value == float("inf"):
+        raise InputError(f"SNAKECG_LOCK_TIMEOUT must be a positive number of seconds, got {raw!r}")
+    return value
+
+
+def _lock_owner(path: Path) -> str:
+    try:
+        data = json.loads(Path(str(path) + ".owner").read_text(encoding="utf-8"))
+        since = time.strftime("%Y-%m-%d %H:%M:%S", time.localtime(float(data["since"])))
+        return f"process {int(data['pid'])} (since {since})"
+    except (OSError, ValueError, KeyError, TypeError):
+        return "another process"
+
+
+@contextmanager
+def held_lock(path: Path, what: str):
+    """Hold the file lock ``path`` while doing ``what`` (a few words for messages).
+
+    While another process holds it: after :data:`LOCK_NOTICE_SECONDS` one line says which
+    process holds it and since when, and the wait goes on; after :func:`lock_timeout` seconds
+    a :class:`BuildError` says how to free it. The holder's pid and start time are written
+    beside the lock (``<lock>.owner``) for those messages.
+    """
+    from filelock import FileLock, Timeout
+
+    limit = lock_timeout()
+    lock = FileLock(str(path))
+    start = time.monotonic()
+    try:
+        lock.acquire(timeout=min(LOCK_NOTICE_SECONDS, limit))
+    except Timeout:
+        warnings.warn(f"snakecg: waiting to {what}: the lock {path} is held by "
+                      f"{_lock_owner(path)}; waiting up to {limit:g} s in all "
+                      "(SNAKECG_LOCK_TIMEOUT)", RuntimeWarning, stacklevel=3)
+        try:
+            lock.acquire(timeout=max(0.0, limit - (time.monotonic() - start)))
+        except Timeout:
+            raise BuildError(
+                f"gave up waiting {limit:g} s to {what}: the lock {path} is held by "
+                f"{_lock_owner(path)}. If that process is stopped (Ctrl-Z), resume it (fg) or "
+                "end it; or wait longer with SNAKECG_LOCK_TIMEOUT=<seconds>") from None
+    owner = Path(str(path) + ".owner")
+    try:
+        try:
+            tmp = owner.with_name(f"{owner.name}.tmp-{os.getpid()}")
+            tmp.write_text(json.dumps({"pid": os.getpid(), "since": time.time()}))
+            os.replace(tmp, owner)
+        except OSError:  # a read-only folder: the lock still works, the notice is vaguer
+            pass
+        yield
+    finally:
+        try:
+            owner.unlink()
+        except OSError:
+            pass
+        lock.release()
 
 
 def cache_dir() -> Path:
@@ -231,6 +307,9 @@ def verify_model_dir(path: Path, n_joints: int | None = None) -> dict:
                       ("n_joints", int)):
         if not isinstance(manifest.get(key), kind):
             raise ArtifactError(f"{path}: manifest has no valid {key!r}")
+    problem = _function_set_problem(manifest, manifest["n_joints"])
+    if problem:
+        raise ArtifactError(f"{path}: manifest.json {problem}")
     files = manifest.get("files")
     if not isinstance(files, dict) or "model.py" not in files:
         raise ArtifactError(f"{path}: manifest lists no files")
@@ -243,6 +322,36 @@ def verify_model_dir(path: Path, n_joints: int | None = None) -> dict:
         if _sha_file(p) != digest:
             raise ArtifactError(f"{path}: {name} does not match its manifest hash")
     return manifest
+
+
+def _well_formed(items) -> bool:
+    return isinstance(items, list) and all(
+        isinstance(i, dict) and isinstance(i.get("name"), str)
+        and all(isinstance(i.get(k), int) and not isinstance(i.get(k), bool) and i[k] >= 0
+                for k in ("rows", "cols"))
+        for i in items)
+
+
+def _function_set_problem(manifest: dict, n_joints: int) -> str | None:
+    """Where the manifest's functions differ from the set the generator defines for
+    ``n_joints`` (``snakecg_derive.catalog``), or are not well-formed signatures."""
+    from snakecg_derive.catalog import function_names
+
+    expected = list(function_names(n_joints))
+    listed = [f.get("name") if isinstance(f, dict) else None for f in manifest["functions"]]
+    if listed != expected:
+        missing = [n for n in expected if n not in listed]
+        extra = [str(n) for n in listed if n not in expected]
+        parts = ([f"lacks {', '.join(missing)}"] if missing else []) + \
+            ([f"has unknown {', '.join(extra)}"] if extra else [])
+        return ("lists functions out of order" if not parts else " and ".join(parts)) + \
+            f" (the generator defines {len(expected)} functions for {n_joints} joints)"
+    prefix = manifest["prefix"]
+    for f in manifest["functions"]:
+        if f.get("symbol") != prefix + f["name"] or not _well_formed(f.get("inputs")) \
+                or not _well_formed(f.get("outputs")):
+            return f"has a damaged signature for {f['name']}"
+    return None
 
 
 def _packaged(n_joints: int) -> Path | None:
@@ -288,11 +397,9 @@ def model_dir(n_joints: int, *, generate: bool = True, progress=None) -> tuple[P
 
 
 def _generate(n_joints: int, root: Path, progress) -> tuple[Path, dict]:
-    from filelock import FileLock
-
     make_private_dir(root)
     folder = root / f"na{n_joints}"
-    with FileLock(str(root / f"na{n_joints}.lock")):
+    with held_lock(root / f"na{n_joints}.lock", f"generate the {n_joints}-joint model"):
         if folder.exists():  # another process finished while we waited
             try:
                 return folder, verify_model_dir(folder, n_joints)

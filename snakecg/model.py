@@ -17,6 +17,7 @@ from pathlib import Path
 import numpy as np
 
 from . import artifacts
+from . import kernels
 from ._inputs import (CHUNK_ROWS, MAX_MAGNITUDE, as_batch, broadcast_batches, check_batch_memory,
                       expand)
 from .errors import InputError
@@ -111,12 +112,9 @@ class RobotModel:
         self.n_links = robot.n_links
         self.n_coordinates = robot.n_coordinates
         self.n_constraints = robot.n_links + 1
-        (K,) = self.backend(
-            "derived_parameters",
-            1,
-            [np.asarray(robot.mass, float), np.asarray(robot.length, float),
-             np.asarray(robot.inertia, float), np.asarray(robot.com, float)],
-        )
+        K = kernels.call(self.backend, "derived_parameters", 1, link_mass=robot.mass,
+                         link_length=robot.length, link_inertia=robot.inertia,
+                         link_com=robot.com)["K"]
         self.parameters = np.ascontiguousarray(K[0, :, 0])
         """The parameter vector ``K`` (raw link parameters, then derived constants)."""
 
@@ -132,6 +130,10 @@ class RobotModel:
     def _call(self, fname: str, n: int, inputs: list[np.ndarray]):
         return self.backend(fname, n, inputs)
 
+    def _named(self, fname: str, n: int, **inputs):
+        """Generated function ``fname`` with its inputs and outputs by name."""
+        return kernels.call(self.backend, fname, n, **inputs)
+
     @staticmethod
     def _arg(arr: np.ndarray, n: int) -> np.ndarray:
         """Batch argument: 1-D (broadcast) when one sample serves all, else ``(n, size)``."""
@@ -142,7 +144,7 @@ class RobotModel:
         """Inertia matrix ``M_s(q)`` of eq. (4): ``(n_s, n_s)``, or ``(N, n_s, n_s)``."""
         qa, batched = self._q(q)
         n = qa.shape[0]
-        (M,) = self._call("mass_matrix", n, [self._arg(qa, n), self.parameters])
+        M = self._named("mass_matrix", n, q=self._arg(qa, n), K=self.parameters)["M"]
         return M if batched else M[0]
 
     def link_jacobians(self, q) -> np.ndarray:
@@ -152,7 +154,7 @@ class RobotModel:
         """
         qa, batched = self._q(q)
         n = qa.shape[0]
-        (J,) = self._call("link_jacobians", n, [self._arg(qa, n), self.parameters])
+        J = self._named("link_jacobians", n, q=self._arg(qa, n), K=self.parameters)["J"]
         J = J.reshape(n, self.n_links, 3, self.n_coordinates)
         return J if batched else J[0]
 
@@ -160,7 +162,7 @@ class RobotModel:
         """``(x_i, y_i, phi_i)`` of every link COM: ``(n_l, 3)``, or ``(N, n_l, 3)``."""
         qa, batched = self._q(q)
         n = qa.shape[0]
-        (P,) = self._call("link_poses", n, [self._arg(qa, n), self.parameters])
+        P = self._named("link_poses", n, q=self._arg(qa, n), K=self.parameters)["poses"]
         P = np.ascontiguousarray(P.transpose(0, 2, 1))
         return P if batched else P[0]
 
@@ -169,8 +171,8 @@ class RobotModel:
         qa, bq = self._q(q)
         va, bv = self._q(v, "v")
         n = broadcast_batches(q=(qa, bq), v=(va, bv))
-        (h,) = self._call("bias_forces", n, [self._arg(qa, n) if not bq else qa,
-                                              self._arg(va, n) if not bv else va, self.parameters])
+        h = self._named("bias_forces", n, q=self._arg(qa, n) if not bq else qa,
+                        v=self._arg(va, n) if not bv else va, K=self.parameters)["h"]
         h = h[:, :, 0]
         return h if (bq or bv) else h[0]
 
@@ -319,13 +321,11 @@ class SceneModel(RobotModel):
         return q_obj[0], rho[0], P[0]
 
     def _place(self, qa, n):
-        q_obj, rho, P = self._call(
-            "place_object", n,
-            [self._arg(qa, n), self.parameters, self._contact_link,
-             np.array([self.scene.contact_offset]), np.array([self.scene.object_distance]),
-             self._side],
-        )
-        return q_obj[:, :, 0], rho[:, :, 0], P[:, :, 0]
+        o = self._named("place_object", n, q=self._arg(qa, n), K=self.parameters,
+                        contact_link=self._contact_link,
+                        contact_offset=[self.scene.contact_offset],
+                        object_distance=[self.scene.object_distance], side=self._side)
+        return o["q_obj"][:, :, 0], o["rho"][:, :, 0], o["contact_point"][:, :, 0]
 
     # forward -------------------------------------------------------------------------------
     def forward(self, q, tau, *, v=None, v_obj=None, f_obj=None, q_obj=None, rho=None,
@@ -416,13 +416,13 @@ class SceneModel(RobotModel):
                 "object_mass": self._object_mass, "object_inertia": self._object_inertia,
                 "wheel_offset": self._wheel_offset, "regularization": [0.0]})
             mm = BoundFunction(be, "mass_matrix", {"K": K})
-            ks = self._local.kernels = (place, cd, mm, *(cd.out_names.index(k) for k in
-                                                         ("lam", "w", "pivot_ratio", "delassus")))
-        place, cd, mm, i_lam, i_w, i_pivot, i_G = ks
+            ks = self._local.kernels = (place, cd, mm)
+        place, cd, mm = ks
         if "q_obj" in extra:
             q_obj, rho = extra["q_obj"][0], extra["rho"][0]
         else:
-            q_obj, rho, _ = place.one(q=q)
+            placed = place.one(q=q)
+            q_obj, rho = placed["q_obj"], placed["rho"]
         zeros = self._zeros_one
         cd.set(q=q, tau=tau, q_obj=q_obj, rho=rho,
                v=extra["v"][0] if "v" in extra else zeros[0],
@@ -433,19 +433,19 @@ class SceneModel(RobotModel):
             outs = cd.one(free=[float(s == HELD) for s in state],
                           lam_fixed=[u if s == SLIDE_POS else -u if s == SLIDE_NEG else 0.0
                                      for s, u in zip(state, bounds)])
-            lam, w = outs[i_lam].tolist(), outs[i_w].tolist()
-            if not (outs[i_pivot][0] > WEAK and all(map(math.isfinite, lam))):
+            lam, w = outs["lam"].tolist(), outs["w"].tolist()
+            if not (outs["pivot_ratio"][0] > WEAK and all(map(math.isfinite, lam))):
                 return None  # weak or dependent rows: solved from the rows (snakecg.rows)
-            g_scale = float(np.abs(np.diagonal(outs[i_G].reshape(len(state), -1))).max())
+            g_scale = float(np.abs(np.diagonal(outs["delassus"].reshape(len(state), -1))).max())
             new = _violations_one(state, lam, w, bounds, g_scale)
             if new == state:
                 break
             state = new
         else:
             return None
-        o = dict(zip(cd.out_names, outs))
+        o = outs
         contact = state[0] == HELD
-        mass = _mass_ratio_one(mm.one(q=q)[0])
+        mass = _mass_ratio_one(mm.one(q=q)["M"])
         nq, na_, nl_, sr_ = (float(o[k][0]) for k in ("norm_qdd", "norm_a_obj", "norm_lambda",
                                                         "sr"))
         big = max(abs(nq), abs(na_), abs(nl_))
@@ -460,13 +460,11 @@ class SceneModel(RobotModel):
             norm_a_obj=np.float64(o["norm_a_obj"][0]), norm_qdd=np.float64(o["norm_qdd"][0]),
             sr=np.float64(o["sr"][0] if contact else 0.0), gap=np.float64(o["gap"][0]),
             singular=np.bool_(False),
-            conditioning=np.float64(min(outs[i_pivot][0], mass, 1.0)), tau=tau,
+            conditioning=np.float64(min(outs["pivot_ratio"][0], mass, 1.0)), tau=tau,
         )
 
     def _solve(self, base: dict, n: int, *, max_iter=None):
         order = ["q", "v", "tau", "q_obj", "v_obj", "f_obj"]
-
-        names = self.backend.signatures["constrained_dynamics"].out_names
 
         def pick(arr, idx):
             # every input is float64 and C-contiguous (as_batch, _free_and_fixed, __init__)
@@ -479,14 +477,14 @@ class SceneModel(RobotModel):
 
         def call(idx, free, lam_fixed, reg):
             m = len(idx)
-            args = [pick(base[k], idx) for k in order] + [
-                self.parameters, self._contact_link, self._side, self._object_mass,
-                self._object_inertia, pick(base["rho"], idx), self._wheel_offset,
-                free, lam_fixed, np.asarray(reg, dtype=float).reshape(m, 1),
-            ]
-            outs = self._call("constrained_dynamics", m, args)
+            outs = self._named(
+                "constrained_dynamics", m, **{k: pick(base[k], idx) for k in order},
+                K=self.parameters, contact_link=self._contact_link, side=self._side,
+                object_mass=self._object_mass, object_inertia=self._object_inertia,
+                rho=pick(base["rho"], idx), wheel_offset=self._wheel_offset, free=free,
+                lam_fixed=lam_fixed, regularization=np.asarray(reg, dtype=float).reshape(m, 1))
             res = {}
-            for name_, o in zip(names, outs):  # views, no copies
+            for name_, o in outs.items():  # views, no copies
                 if o.shape[1:] == (1, 1):
                     res[name_] = o[:, 0, 0]
                 elif o.shape[2] == 1:
@@ -570,7 +568,6 @@ class SceneModel(RobotModel):
 
         free, lam_fixed = _free_and_fixed(state[None, :], self.bounds)
         args, raw = self._at_rest("interaction_maps", qa, n, free[0], lam_fixed[0])
-        names = list(raw)
         res = {}
         for name_, o in raw.items():
             if name_ == "pivot_ratio":  # the only scalar (a 1x1 map is still a matrix)
@@ -586,9 +583,10 @@ class SceneModel(RobotModel):
             sub = np.flatnonzero(singular)
             scale = np.abs(np.diagonal(res["delassus"][sub], axis1=1, axis2=2)).max(axis=1)
             reg = (REGULARIZATION * np.maximum(scale, 1e-300)).reshape(-1, 1)
-            sub_args = [a[sub] if a.ndim == 2 else a for a in args[:-1]] + [reg]
-            again = self._call("interaction_maps", len(sub), sub_args)
-            for name_, o in zip(names, again):
+            sub_args = {k: a[sub] if a.ndim == 2 else a for k, a in args.items()}
+            again = self._named("interaction_maps", len(sub), **{**sub_args,
+                                                                  "regularization": reg})
+            for name_, o in again.items():
                 if name_ != "pivot_ratio":
                     res[name_][sub] = o.reshape(res[name_][sub].shape)
         res["singular"] = singular
@@ -599,16 +597,23 @@ class SceneModel(RobotModel):
         ``metric_extremes``) at the scene's placement of the object.
 
         ``free_args`` are the inputs that follow ``wheel_offset`` up to ``regularization``
-        (the held-row masks, fixed forces); ``regularization`` is 0. Returns the argument list
-        and ``{output name: (n, rows, cols) array}``.
+        (the held-row masks, fixed forces, in signature order); ``regularization`` is 0.
+        Returns the inputs ``{name: array}`` and ``{output name: (n, rows, cols) array}``.
         """
         q_obj, rho, _ = self._place(qa, n)
-        args = [self._arg(qa, n), self.parameters, self._contact_link, self._side,
-                self._object_mass, self._object_inertia, self._arg(q_obj, n),
-                self._arg(rho, n), self._wheel_offset, *free_args, np.zeros(1)]
-        args = [np.ascontiguousarray(a, dtype=float) for a in args]
-        outs = self._call(fname, n, args)
-        return args, dict(zip(self.backend.signatures[fname].out_names, outs))
+        names = self.backend.signatures[fname].in_names
+        tail = names[names.index("wheel_offset") + 1: names.index("regularization")]
+        if len(tail) != len(free_args):
+            raise InputError(f"{fname} takes {', '.join(tail)} after wheel_offset")
+        args = {"q": self._arg(qa, n), "K": self.parameters,
+                "contact_link": self._contact_link, "side": self._side,
+                "object_mass": self._object_mass, "object_inertia": self._object_inertia,
+                "q_obj": self._arg(q_obj, n), "rho": self._arg(rho, n),
+                "wheel_offset": self._wheel_offset, **dict(zip(tail, free_args)),
+                "regularization": np.zeros(1)}
+        args = {k: np.ascontiguousarray(a, dtype=float) for k, a in args.items()}
+        outs = self._named(fname, n, **args)
+        return args, outs.as_dict()
 
     def _metric_forms(self, qa, n, state):
         """Quadratic forms of the metrics at rest (generated ``metric_forms``), batched.

@@ -28,8 +28,9 @@ from pathlib import Path
 
 import numpy as np
 
-from .artifacts import cache_dir, make_private_dir
+from .artifacts import cache_dir, held_lock, make_private_dir
 from .errors import ArtifactError, BuildError
+from .kernels import outputs_type
 
 __all__ = [
     "CompiledBackend",
@@ -106,15 +107,14 @@ def _no_compiler() -> BuildError:
     return BuildError("no C compiler found (set CC or install gcc)")
 
 
-def compile_model(folder: Path, manifest: dict, *, progress=None) -> Path:
+def compile_model(folder: Path, manifest: dict, *, progress=None, rebuild: bool = False) -> Path:
     """Compile ``folder``'s C files into a cached shared library and return its path.
 
     Each function is its own translation unit; they compile in parallel and are linked into
     one library. The library is written under a temporary name and renamed into place,
     under a file lock, so a killed build never leaves a library that a later run would load.
+    ``rebuild`` replaces a cached library that matched its checksum but not the model.
     """
-    from filelock import FileLock
-
     cc = find_compiler()
     if cc is None:
         raise _no_compiler()
@@ -122,10 +122,13 @@ def compile_model(folder: Path, manifest: dict, *, progress=None) -> Path:
     out_dir = cache_dir() / "build" / f"na{manifest['n_joints']}-{key}"
     lib = out_dir / "model.so"
     stamp = out_dir / "model.so.sha256"
-    if _library_ok(lib, stamp):
+    if not rebuild and _library_ok(lib, stamp):
         return lib
     make_private_dir(out_dir)
-    with FileLock(str(out_dir / "build.lock")):
+    with held_lock(out_dir / "build.lock", f"compile the {manifest['n_joints']}-joint model"):
+        if rebuild:
+            stamp.unlink(missing_ok=True)
+            lib.unlink(missing_ok=True)
         if _library_ok(lib, stamp):
             return lib
         if lib.exists() or stamp.exists():
@@ -446,26 +449,68 @@ class CasadiBackend:
         return outs
 
 
+def _load_fresh(lib: Path, manifest: dict) -> CompiledBackend:
+    """Load a just rebuilt library through a new name: the dynamic loader would otherwise
+    hand back the library of that path that this process loaded before."""
+    link = lib.with_name(f".load-{os.getpid()}-{os.urandom(4).hex()}.so")
+    try:
+        os.link(lib, link)
+    except OSError:
+        shutil.copyfile(lib, link)
+    try:
+        backend = CompiledBackend(link, manifest)
+    finally:
+        link.unlink(missing_ok=True)
+    backend.path = lib
+    return backend
+
+
 def load_backend(folder: Path, manifest: dict, *, prefer: str = "compiled", progress=None):
-    """The compiled backend, or CasADi's in-process one (with one warning) if compiling fails."""
+    """The compiled backend, or CasADi's in-process one (with one warning) if compiling fails.
+
+    A cached library that matches its checksum but not the model (a foreign library whose
+    checksum was recomputed, a library missing a function) is rebuilt once, with one line
+    saying why; only if that fails too does the model fall back to CasADi. A cache that
+    cannot be written (read-only) falls back with one warning.
+    """
     if prefer not in ("compiled", "casadi"):
         raise ValueError(f"backend must be 'compiled' or 'casadi', got {prefer!r}")
     if prefer == "compiled" and os.environ.get("SNAKECG_BACKEND", "") != "casadi":
         try:
-            return CompiledBackend(compile_model(folder, manifest, progress=progress), manifest)
+            lib = compile_model(folder, manifest, progress=progress)
+            try:
+                return CompiledBackend(lib, manifest)
+            except (OSError, AttributeError, ArtifactError) as exc:
+                _report_once(
+                    f"{lib}:foreign",
+                    f"snakecg: the cached library {lib} does not belong to this model "
+                    f"({_one_line(exc)}); rebuilding it")
+                return _load_fresh(compile_model(folder, manifest, progress=progress,
+                                                 rebuild=True), manifest)
         except BuildError as exc:
             _report_once(
                 f"{manifest['n_joints']}:{exc}",
                 "snakecg: using CasADi's in-process evaluation (slower) because the C build "
                 f"failed: {exc}",
             )
+        except ArtifactError as exc:  # the cache cannot be written (read-only, full, ...)
+            _report_once(
+                f"{manifest['n_joints']}:cache:{exc}",
+                "snakecg: using CasADi's in-process evaluation (slower) because the compiled "
+                f"library cannot be built in the cache: {_one_line(exc)}",
+            )
         except (OSError, AttributeError) as exc:  # dlopen failed, or a symbol is missing
             _report_once(
                 f"{manifest['n_joints']}:load:{exc}",
                 f"snakecg: using CasADi's in-process evaluation (slower) because the compiled "
-                f"model cannot be loaded: {exc}",
+                f"model cannot be loaded: {_one_line(exc)}",
             )
     return CasadiBackend(folder, manifest)
+
+
+def _one_line(exc) -> str:
+    text = " ".join(str(exc).split())
+    return text if len(text) <= 300 else text[:297] + "..."
 
 
 class BoundFunction:
@@ -474,7 +519,8 @@ class BoundFunction:
     for the general-purpose path), or on ``n`` samples (``many``) through the backend.
 
     Outputs are given in their logical shapes: ``(rows,)`` for a column, ``(rows, cols)``
-    otherwise (``many``: with a leading ``n``).
+    otherwise (``many``: with a leading ``n``), as :class:`~snakecg.kernels.Outputs`
+    (``out["lam"]``; positional indexing still works).
     """
 
     def __init__(self, backend, name: str, constants: dict[str, np.ndarray]):
@@ -485,6 +531,7 @@ class BoundFunction:
         self.in_sizes = dict(zip(sig.in_names, sig.in_sizes))
         self.out_shapes = list(sig.out_shapes)
         self.out_names = list(sig.out_names)
+        self._outputs = outputs_type(name, sig.out_names)
         self.const = {k: np.ascontiguousarray(np.ravel(np.asarray(v, dtype=float)))
                       for k, v in constants.items()}
         fns = getattr(backend, "_fns", None)
@@ -502,8 +549,8 @@ class BoundFunction:
             self._strides = (ctypes.c_longlong * len(bufs))()  # all zero: one sample
             self._resp = (ctypes.c_void_p * len(outs))(*[o.ctypes.data for o in outs])
             self._outs = outs
-            self._views = [o if c == 1 else o.reshape(c, r).T
-                           for (r, c), o in zip(self.out_shapes, outs)]
+            self._views = self._outputs([o if c == 1 else o.reshape(c, r).T
+                                         for (r, c), o in zip(self.out_shapes, outs)])
             self._fast = fns[name]
 
     def set(self, **var) -> None:
@@ -514,7 +561,7 @@ class BoundFunction:
             else:
                 self.const[k] = np.ascontiguousarray(np.ravel(np.asarray(val, dtype=float)))
 
-    def one(self, **var) -> list[np.ndarray]:
+    def one(self, **var):
         """Evaluate on one sample; the returned arrays are overwritten by the next call."""
         if self._fast is not None:
             bufs = self._bufs
@@ -526,9 +573,9 @@ class BoundFunction:
             return self._views
         self._last.update(var)
         outs = self.many(1, **self._last)
-        return [o[0] for o in outs]
+        return self._outputs([o[0] for o in outs])
 
-    def many(self, n: int, **var) -> list[np.ndarray]:
+    def many(self, n: int, **var):
         args = []
         for k in self.in_names:
             a = var[k] if k in var else self.const[k]
@@ -540,7 +587,7 @@ class BoundFunction:
         res = []
         for (r, c), o in zip(self.out_shapes, outs):
             res.append(np.ascontiguousarray(o[:, :, 0]) if c == 1 else np.ascontiguousarray(o))
-        return res
+        return self._outputs(res)
 
 
 # ------------------------------------------------------------------------------------------

@@ -24,6 +24,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from . import kernels
+
 __all__ = ["RowSystem", "mass_pivot_ratio", "ROW_TOL"]
 
 #: Pivot ratio of the held rows (``diag(R_1)^2 / |column|^2``) below which they are treated as
@@ -194,7 +196,7 @@ def finish(model, base: dict, n: int, sol, max_iter=None):
 
     o = sol.outputs
     q = np.ascontiguousarray(np.broadcast_to(base["q"], (n, base["q"].shape[1])))
-    (M,) = model.backend("mass_matrix", n, [q, model.parameters])
+    M = kernels.call(model.backend, "mass_matrix", n, q=q, K=model.parameters)["M"]
     mass = mass_pivot_ratio(M)
     piv = np.where(sol.singular, 0.0, np.minimum(o["pivot_ratio"], 1.0))
     cond = piv.copy()

@@ -474,7 +474,7 @@ class _Simulator:
     def row_velocities(self, q, v, qo, vo, s):
         """``A V``: the gap rate ``gdot`` (row 0) and the wheels' lateral velocities ``u_i``."""
         self.njev += 1
-        J = self._jac.one(q=q)[0]
+        J = self._jac.one(q=q)["J"]
         tw = (J @ v).reshape(self.nl, 3)
         phi = np.cumsum(q[2:])  # phi_1 = theta, phi_{j+1} = phi_j + q_j
         sp, cp = np.sin(phi), np.cos(phi)
@@ -503,17 +503,17 @@ class _Simulator:
         cd = self._cd
         out = cd.one(q=q, v=v, tau=tau, q_obj=qo, v_obj=vo, free=mode.free,
                      lam_fixed=mode.lam_fixed)
-        if mode.free_idx.size and not out[10][0] > PIVOT_TOL:
+        if mode.free_idx.size and not out["pivot_ratio"][0] > PIVOT_TOL:
             # dependent held rows: least-norm forces (as in snakecg.solver)
             self.singular += 1
-            scale = np.abs(np.diagonal(out[11])).max()
+            scale = np.abs(np.diagonal(out["delassus"])).max()
             out = cd.one(q=q, v=v, tau=tau, q_obj=qo, v_obj=vo, free=mode.free,
                          lam_fixed=mode.lam_fixed,
                          regularization=REGULARIZATION * max(scale, 1e-300))
             cd.set(regularization=0.0)
-        lam = out[2].copy()
-        gap = float(out[4][0])
-        s = float(out[5][0])
+        lam = out["lam"].copy()
+        gap = float(out["gap"][0])
+        s = float(out["s"][0])
         AV = self.row_velocities(q, v, qo, vo, s)
         F = mode.free_idx
         if self.alpha > 0 and F.size:
@@ -521,7 +521,7 @@ class _Simulator:
             c = 2.0 * a * AV[F]
             if mode.contact_held:
                 c[0] += a * a * gap
-            G = out[11][mode.ff]
+            G = out["delassus"][mode.ff]
             x, info = self._posv(G, c)[1:]  # Cholesky solve of G_FF x = c (SPD)
             if info != 0:
                 x = np.linalg.lstsq(G, c, rcond=None)[0]
@@ -531,8 +531,8 @@ class _Simulator:
         nx = self.nx
         ydot[:self.ns] = v
         ydot[self.ns:nx] = vo
-        ydot[nx:nx + self.ns] = out[0]
-        ydot[nx + self.ns:2 * nx] = out[1]
+        ydot[nx:nx + self.ns] = out["qdd"]
+        ydot[nx + self.ns:2 * nx] = out["a_obj"]
         p_tau = float(tau @ v[3:])
         sl = mode.slide_idx
         p_fric = float(lam[sl] @ AV[sl]) if sl.size else 0.0
@@ -541,8 +541,8 @@ class _Simulator:
         # power of the held rows' forces: zero on the constraints (a drift diagnostic; not
         # integrated: off the constraints, at the integrator's stages, it is noise)
         p_cons = float(lam[F] @ AV[F]) if F.size else 0.0
-        extras = (np.array(tau, dtype=float), float(out[9][0]), float(out[7][0]),
-                  float(out[8][0]), p_cons)
+        extras = (np.array(tau, dtype=float), float(out["sr"][0]), float(out["norm_a_obj"][0]),
+                  float(out["norm_qdd"][0]), p_cons)
         val = (ydot, lam, gap, s, AV, extras)
         self._cache_key = (key, yb)
         self._cache_val = val
@@ -557,10 +557,10 @@ class _Simulator:
         outs = self._cd.many(nc + 1, q=q, v=v, tau=tau, q_obj=qo, v_obj=vo,
                              free=np.zeros((nc + 1, nc)), lam_fixed=lf,
                              regularization=np.zeros(1))
-        qdd, a_obj = outs[0], outs[1]
+        qdd, a_obj = outs["qdd"], outs["a_obj"]
         Q = np.hstack([qdd[1:] - qdd[0], a_obj[1:] - a_obj[0]]).T
-        G = outs[11][0]
-        gap, s = float(outs[4][0, 0]), float(outs[5][0, 0])
+        G = outs["delassus"][0]
+        gap, s = float(outs["gap"][0, 0]), float(outs["s"][0, 0])
         AV = self.row_velocities(q, v, qo, vo, s)
         return Q, G, gap, s, AV
 
@@ -602,8 +602,6 @@ class _Simulator:
                 fixed_lam[r] = -bounds[r]
         fmask = np.zeros(nc, dtype=bool)
         fmask[list(forced)] = True
-        names = self._cd.out_names
-
         def call(idx, free, lam_fixed, reg):
             m = len(idx)
             lf = np.where(fmask[None, :], fixed_lam[None, :], lam_fixed)
@@ -612,7 +610,7 @@ class _Simulator:
                                  lam_fixed=np.ascontiguousarray(lf),
                                  regularization=np.asarray(reg, float).reshape(m, 1))
             res = {}
-            for name, o in zip(names, outs):
+            for name, o in outs.items():
                 res[name] = o[:, 0].copy() if o.ndim == 2 and o.shape[1] == 1 else o
             return res
 
@@ -695,7 +693,7 @@ class _Simulator:
 
     def kinetic_energy(self, y) -> float:
         q, qo, v, vo = self.split(y)
-        M = self._mass.one(q=q)[0]
+        M = self._mass.one(q=q)["M"]
         return 0.5 * float(v @ M @ v) + 0.5 * float(vo @ (self.mo * vo))
 
     # --- events of a mode ---------------------------------------------------------------------

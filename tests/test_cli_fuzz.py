@@ -50,7 +50,7 @@ PROFILE = settings.get_profile(
 
 @pytest.fixture(autouse=True, scope="module")
 def _default_limit():
-    """The fuzz expects the default generation limit (30 joints)."""
+    """The fuzz expects the default generation limit (50 joints)."""
     mp = pytest.MonkeyPatch()
     mp.delenv("SNAKECG_MAX_JOINTS", raising=False)
     yield
@@ -164,8 +164,8 @@ def malformed_files(draw):
                 del robot["joints"]
                 expect.append("missing key joints in [robot]")
             elif kind == "huge":
-                robot["joints"] = draw(st.integers(31, 10**18))
-                expect.append(f"joints={robot['joints']} exceeds the generation limit of 30")
+                robot["joints"] = draw(st.integers(51, 10**18))
+                expect.append(f"joints={robot['joints']} exceeds the generation limit of 50")
             else:
                 robot["joints"] = draw(st.sampled_from(["3", 2.5, True, [3], {"n": 3}])
                                        if kind == "type" else st.integers(-10**6, 0))
@@ -364,9 +364,9 @@ def bad_argvs(draw):
         argv = [a for a in base if not a.startswith(f"--{which}=")] + [f"--{which}={text}"]
         return argv, [frag], kind
     if kind == "joints":
-        value = draw(st.sampled_from(["0", "-3", str(10**12), "31", str(2**70)]))
+        value = draw(st.sampled_from(["0", "-3", str(10**12), "51", str(2**70)]))
         frag = ("joints must be an integer >= 1" if int(value) < 1
-                else f"joints={value} exceeds the generation limit of 30 joints")
+                else f"joints={value} exceeds the generation limit of 50 joints")
         return ["forward", "--joints", value, "--q=0", "--tau=0"], [frag], kind
     if kind == "missing":
         drop = draw(st.sampled_from(["--q", "--tau"]))
@@ -392,10 +392,10 @@ def test_malformed_argument_lists(case):
 
 OTHER_COMMANDS = [
     (["generate", "--joints", "0"], "snakecg generate: error: ", "--joints must be >= 1, got 0"),
-    (["generate", "--joints", "31"], "snakecg generate: error: ",
-     "exceeds the generation limit of 30 joints"),
+    (["generate", "--joints", "51"], "snakecg generate: error: ",
+     "exceeds the generation limit of 50 joints"),
     (["generate", "--joints", str(10**15)], "snakecg generate: error: ",
-     "exceeds the generation limit of 30 joints"),
+     "exceeds the generation limit of 50 joints"),
     (["generate", "--joints", "three"], "snakecg generate: error: ", "invalid int value"),
     (["show", "--joints", "0", "M"], "snakecg show: error: ", "--joints must be >= 1"),
     (["show", "--joints", "2", "nonsense"], "snakecg show: error: ", "unknown expression"),
@@ -425,7 +425,7 @@ def test_huge_joint_count_refused_quickly():
 
     t0 = time.perf_counter()
     code, _, err = run_cli(["forward", f"--joints={10**15}", "--q=0", "--tau=0"])
-    assert code == 2 and "exceeds the generation limit of 30 joints" in err
+    assert code == 2 and "exceeds the generation limit of 50 joints" in err
     assert time.perf_counter() - t0 < 5.0
 
 
@@ -448,7 +448,7 @@ REAL = [
      "kappa must be > 0, got -1.0; mu must be finite"),
     (["forward", f"--joints={10**12}", "--q=0", "--tau=0"], "exceeds the generation limit"),
     (["forward", "--joints", "x", "--q=0", "--tau=0"], "invalid int value: 'x'"),
-    (["generate", "--joints", "31"], "exceeds the generation limit of 30 joints"),
+    (["generate", "--joints", "51"], "exceeds the generation limit of 50 joints"),
 ]
 
 

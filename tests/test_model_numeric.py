@@ -498,3 +498,71 @@ def test_cli_errors_in_process(argv, message, capsys):
     assert len(err.splitlines()) == 1, err
     assert message in err
     assert "Traceback" not in err
+
+
+# ------------------------------------------------------------------------------------------
+# the matrix-structured (MX) composition used above SX_MAX_JOINTS, against the dense reference
+def _reference_forward(ref, q, tau, v, v_obj):
+    """All rows of an ideal-wheels scene held: forces and accelerations from the dense
+    reference (tests/reference.py), written from eqs. (12)-(13)."""
+    sys_ = ref.system(q, tau, v=v, v_obj=v_obj)
+    lam = ref.solve_given(sys_, ["held"] * ref.nc)
+    return sys_, ref.outcome(sys_, lam)
+
+
+def _compare_composed(backend, sm, ref, rng, samples=3):
+    from snakecg import kernels
+
+    na, ns, nc = sm.n_joints, sm.n_coordinates, sm.n_constraints
+    for _ in range(samples):
+        q = np.concatenate([rng.normal(size=3), rng.uniform(-1.2, 1.2, na)])
+        v = rng.normal(scale=0.3, size=ns)
+        v_obj = rng.normal(scale=0.1, size=3)
+        tau = rng.normal(scale=0.5, size=na)
+        sys_, expect = _reference_forward(ref, q, tau, v, v_obj)
+        common = dict(K=sm.parameters, contact_link=sm._contact_link, side=sm._side,
+                      object_mass=sm._object_mass, object_inertia=sm._object_inertia,
+                      rho=sys_["rho"], wheel_offset=sm._wheel_offset, q_obj=sys_["q_obj"],
+                      free=np.ones(nc), lam_fixed=np.zeros(nc), regularization=np.zeros(1))
+        out = kernels.call(backend, "constrained_dynamics", 1, q=q, v=v, tau=tau, v_obj=v_obj,
+                           f_obj=np.zeros(3), **common)
+        scale = max(1.0, np.abs(expect["lam"]).max())
+        np.testing.assert_allclose(out["lam"][0, :, 0], expect["lam"], atol=1e-7 * scale)
+        np.testing.assert_allclose(out["qdd"][0, :, 0], expect["qdd"],
+                                   atol=1e-7 * max(1.0, np.abs(expect["qdd"]).max()))
+        np.testing.assert_allclose(out["delassus"][0], sys_["Gc"],
+                                   atol=1e-8 * np.abs(sys_["Gc"]).max())
+        # eq. (17) and (22) at rest: the maps reproduce the reference's response to tau
+        rest = {k: val for k, val in common.items()}
+        maps = kernels.call(backend, "interaction_maps", 1, q=q, **rest)
+        _, at_rest = _reference_forward(ref, q, tau, np.zeros(ns), np.zeros(3))
+        np.testing.assert_allclose(maps["lam_from_tau"][0] @ tau, at_rest["lam"],
+                                   atol=1e-7 * max(1.0, np.abs(at_rest["lam"]).max()))
+        np.testing.assert_allclose(maps["qdd_from_tau"][0] @ tau, at_rest["qdd"],
+                                   atol=1e-7 * max(1.0, np.abs(at_rest["qdd"]).max()))
+        assert maps["pivot_ratio"][0, 0, 0] > 1e-12
+
+
+def test_matrix_structured_composition_matches_reference(rng, random_robot, tmp_path):
+    """The MX composition (linear-solve nodes, a loop for the pivots), rendered for three
+    joints and evaluated by CasADi, against the dense reference: forces, accelerations and
+    G_c of eqs. (12)-(14), and the maps of eqs. (17), (22)."""
+    from reference import Reference
+    from snakecg import artifacts
+    from snakecg_derive.render import render_model, write_model
+
+    folder = write_model(render_model(3, algebra="mx"), tmp_path)
+    backend = CasadiBackend(folder, artifacts.verify_model_dir(folder, 3))
+    scene = snakecg.Scene(random_robot(3), scenario="ideal_wheels")
+    _compare_composed(backend, snakecg.load(scene), Reference(scene), rng)
+
+
+def test_large_model_is_matrix_structured_and_matches_reference(rng, random_robot):
+    """A 10-joint model (generated on demand, MX composition by the per-count choice recorded
+    in its manifest), compiled, against the dense reference."""
+    from reference import Reference
+
+    scene = snakecg.Scene(random_robot(10), scenario="ideal_wheels")
+    sm = snakecg.load(scene)
+    assert sm.manifest["algebra"]["composed"] == "mx"
+    _compare_composed(sm.backend, sm, Reference(scene), rng, samples=2)

@@ -54,11 +54,11 @@ SINGLE_PROBLEMS = [
     ("[robot]\njoints = true\n", "joints must be an integer >= 1, got True"),
     ("[robot]\njoints = 0\n", "joints must be an integer >= 1, got 0"),
     ("[robot]\njoints = -4\n", "joints must be an integer >= 1, got -4"),
-    ("[robot]\njoints = 31\n", "joints=31 exceeds the generation limit of 30 joints (raise it "
+    ("[robot]\njoints = 51\n", "joints=51 exceeds the generation limit of 50 joints (raise it "
                               "with SNAKECG_MAX_JOINTS if you accept the derivation and "
                               "compile time)"),
     ("[robot]\njoints = 9223372036854775807\n", "joints=9223372036854775807 exceeds the "
-                                                "generation limit of 30 joints"),
+                                                "generation limit of 50 joints"),
     (GOOD_ROBOT + "mass = 0\n", "mass must be positive finite, got 0.0"),
     (GOOD_ROBOT + "mass = -1.5\n", "mass must be positive finite, got -1.5"),
     (GOOD_ROBOT + "length = nan\n", "length must be positive finite, got nan"),
@@ -266,7 +266,7 @@ def test_scene_arguments_all_problems_at_once():
 def test_huge_joint_count_refused_before_anything_is_built():
     t0 = time.perf_counter()
     with pytest.raises(InputError, match=r"joints=1000000000000 exceeds the generation limit "
-                                          r"of 30 joints"):
+                                          r"of 50 joints"):
         Robot(joints=10**12)  # a per-link tuple of 10^12 floats would never finish
     assert time.perf_counter() - t0 < 1.0
 

@@ -232,22 +232,16 @@ def _versions() -> str:
 
 
 def _functions_table(joints: int) -> str:
-    """The generated functions of ``generated/na<N>/``: name, arguments and the first line of
-    the builder's docstring in the generated ``model.py`` (so the table cannot drift)."""
-    import ast
-
+    """The generated functions of ``generated/na<N>/``: name, arguments and the first
+    paragraph of the function's docstring, all read from its manifest (so the table cannot
+    drift from what was generated)."""
     folder = _ROOT / "generated" / f"na{joints}"
     manifest = json.loads((folder / "manifest.json").read_text(encoding="utf-8"))
-    tree = ast.parse((folder / "model.py").read_text(encoding="utf-8"))
-    docs = {node.name: (ast.get_docstring(node) or "").strip()
-            for node in tree.body if isinstance(node, ast.FunctionDef)}
     rows = ["| function | inputs → outputs | what it computes |", "|---|---|---|"]
     for f in manifest["functions"]:
-        doc = docs.get(f["name"], "")
-        first = doc.split("\n\n")[0].replace("\n", " ")
-        first = re.sub(r"\s*Reyes & Ma 2017, eq\..*$", "", first).strip()
+        first = re.sub(r"\s*Reyes & Ma 2017, eq\..*$", "", f.get("doc", "")).strip()
         if not first:
-            raise PluginError(f"{folder / 'model.py'}: {f['name']}() has no docstring")
+            raise PluginError(f"{folder / 'manifest.json'}: {f['name']} has no description")
         ins = ", ".join(i["name"] for i in f["inputs"])
         outs = ", ".join(o["name"] for o in f["outputs"])
         rows.append(f"| `{f['name']}` | {ins} → {outs} | {_escape_cell(first)} |")

@@ -4,22 +4,27 @@
 # tools: sympy 1.14.0, casadi 3.8.2, jinja2 3.1.6
 """Model of a planar snake robot with 3 joints (4 links) pushing an object.
 
-Builds named CasADi functions from the closed forms derived by ``snakecg_derive``.
+A readable record of what was generated: snakecg never imports or runs this file. The
+functions were built as CasADi functions by ``snakecg_derive`` in Python (the per-link
+functions from the SymPy derivation, printed below as the straight-line programs they are;
+the composed ones by ``snakecg_derive.coupled``, Reyes & Ma 2017 eqs. 8-31). What runs is the
+C in ``c/`` (compiled) or CasADi's serialization in ``casadi/`` (no compiler).
 Generalized coordinates ``q = (x, y, theta, q1..q3)`` (n_s = 6).
 
-Functions (inputs -> outputs, in argument order):
+Functions (inputs -> outputs, in argument order, read from the CasADi functions):
 * ``derived_parameters(link_mass, link_length, link_inertia, link_com) -> K``
 * ``link_poses(q, K) -> poses``
-* ``link_jacobians(q, K) -> J``, eq. (3)
+* ``link_jacobians(q, K) -> J``
 * ``link_bias_accelerations(q, v, K) -> bias``
-* ``mass_matrix(q, K) -> M``, eq. (4)
-* ``bias_forces(q, v, K) -> h``, eq. (4)
-* ``contact_row_local(link_pose, link_twist, link_bias, link_com, object_pose, object_twist, rho, side) -> a_link, g_obj, adot_v, gap, s``, eq. (8)-(13)
-* ``wheel_row_local(link_pose, link_twist, link_bias, wheel_offset) -> a_w, adot_v``, eq. (8)-(13)
+* ``mass_matrix(q, K) -> M``
+* ``bias_forces(q, v, K) -> h``
+* ``contact_row_local(link_pose, link_twist, link_bias, link_com, object_pose, object_twist, rho, side) -> a_link, g_obj, adot_v, gap, s``
+* ``wheel_row_local(link_pose, link_twist, link_bias, wheel_offset) -> a_w, adot_v``
 * ``constrained_dynamics(q, v, tau, q_obj, v_obj, f_obj, K, contact_link, side, object_mass, object_inertia, rho, wheel_offset, free, lam_fixed, regularization) -> qdd, a_obj, lam, w, gap, s, norm_lambda, norm_a_obj, norm_qdd, sr, pivot_ratio, delassus, b``
-* ``interaction_maps(q, K, contact_link, side, object_mass, object_inertia, q_obj, rho, wheel_offset, free, lam_fixed, regularization) -> lam_from_tau, ..., delassus, pivot_ratio``
+* ``interaction_maps(q, K, contact_link, side, object_mass, object_inertia, q_obj, rho, wheel_offset, free, lam_fixed, regularization) -> lam_from_tau, lam_from_f_obj, lam_offset, qdd_from_tau, qdd_from_f_obj, qdd_offset, a_obj_from_tau, a_obj_from_f_obj, a_obj_offset, w_from_tau, w_from_f_obj, w_offset, xi_tau, omega_tau, lambda_form_tau, input_metric, projector_constrained, projector_orthogonal, delassus, pivot_ratio``
 * ``metric_forms(q, K, contact_link, side, object_mass, object_inertia, q_obj, rho, wheel_offset, free, regularization) -> omega_tau, xi_tau, lambda_form_tau, input_metric, contact_from_tau, pivot_ratio``
 * ``place_object(q, K, contact_link, contact_offset, object_distance, side) -> q_obj, rho, contact_point``
+* ``metric_extremes(q, K, contact_link, side, object_mass, object_inertia, q_obj, rho, wheel_offset, free, free_lost, regularization) -> norm_a_obj_kept, tau_norm_a_obj_kept, norm_qdd_kept, tau_norm_qdd_kept, norm_lambda_kept, tau_norm_lambda_kept, norm_a_obj_lost, tau_norm_a_obj_lost, norm_qdd_lost, tau_norm_qdd_lost, norm_lambda_lost, tau_norm_lambda_lost, sr_kept, tau_sr_kept, contact_from_tau, pivot_ratio_kept, pivot_ratio_lost``
 """
 
 import casadi as ca
@@ -29,6 +34,7 @@ from casadi import SX, cos, sin, sqrt, tan, exp, log  # noqa: F401
 def sq(x):
     """Square (CasADi emits OP_SQ for a power of two)."""
     return x**2
+
 
 N_JOINTS = 3
 N_LINKS = 4
@@ -50,10 +56,10 @@ def derived_parameters():
     Outputs:
         K (35, 1): parameter vector
     """
-    link_mass = SX.sym("link_mass", 4)
-    link_length = SX.sym("link_length", 4)
-    link_inertia = SX.sym("link_inertia", 4)
-    link_com = SX.sym("link_com", 4)
+    link_mass = SX.sym('link_mass', 4)
+    link_length = SX.sym('link_length', 4)
+    link_inertia = SX.sym('link_inertia', 4)
+    link_com = SX.sym('link_com', 4)
     m1 = link_mass[0]
     m2 = link_mass[1]
     m3 = link_mass[2]
@@ -70,7 +76,7 @@ def derived_parameters():
     c2 = link_com[1]
     c3 = link_com[2]
     c4 = link_com[3]
-    cse0 = -c1 + l1
+    cse0 = l1 - c1
     cse1 = cse0*m2
     cse2 = cse0*m3
     cse3 = cse0*m4
@@ -80,17 +86,18 @@ def derived_parameters():
     cse7 = sq(cse0)
     cse8 = cse7*m2 + cse7*m3 + cse7*m4
     cse9 = sq(l2)
-    cse10 = sq(c2)*m2 + cse9*m3 + cse9*m4
-    cse11 = sq(c3)*m3 + sq(l3)*m4
-    cse12 = sq(c4)*m4
-    out_K = ca.reshape(ca.vertcat(m1, m2, m3, m4, l1, l2, l3, l4, I1, I2, I3, I4, c1, c2, c3, c4, m1 + m2 + m3 + m4, cse1 + cse2 + cse3, c2*m2 + cse4 + cse5, c3*m3 + cse6, c4*m4, cse8, c2*cse1 + cse2*l2 + cse3*l2, c3*cse2 + cse3*l3, c4*cse3, cse10, c3*cse4 + cse5*l3, c4*cse5, cse11, c4*cse6, cse12, I1 + cse8, I2 + cse10, I3 + cse11, I4 + cse12), 35, 1)
+    cse10 = cse9*m3 + cse9*m4 + m2*sq(c2)
+    cse11 = m3*sq(c3) + m4*sq(l3)
+    cse12 = m4*sq(c4)
+    out_K = ca.reshape(ca.vertcat(m1, m2, m3, m4, l1, l2, l3, l4, I1, I2, I3, I4, c1, c2, c3, c4, m1 + m2 + m3 + m4, cse1 + cse2 + cse3, cse4 + cse5 + c2*m2, cse6 + c3*m3, c4*m4, cse8, cse1*c2 + cse2*l2 + cse3*l2, cse2*c3 + cse3*l3, cse3*c4, cse10, cse4*c3 + cse5*l3, cse5*c4, cse11, cse6*c4, cse12, cse8 + I1, cse10 + I2, cse11 + I3, cse12 + I4), 35, 1)
     return ca.Function(
-        PREFIX + "derived_parameters",
+        PREFIX + 'derived_parameters',
         [link_mass, link_length, link_inertia, link_com],
         [ca.densify(o) for o in ca.cse([out_K])],
-        ["link_mass", "link_length", "link_inertia", "link_com"],
-        ["K"],
+        ['link_mass', 'link_length', 'link_inertia', 'link_com'],
+        ['K'],
     )
+
 
 def link_poses():
     """COM position and absolute angle of every link.
@@ -101,8 +108,8 @@ def link_poses():
     Outputs:
         poses (3, 4): 3 x n_l, column i = (x_i, y_i, phi_i)
     """
-    q = SX.sym("q", 6)
-    K = SX.sym("K", 35)
+    q = SX.sym('q', 6)
+    K = SX.sym('K', 35)
     x = q[0]
     y = q[1]
     theta = q[2]
@@ -144,40 +151,41 @@ def link_poses():
     Jrot2 = K[32]
     Jrot3 = K[33]
     Jrot4 = K[34]
-    cse0 = -c1 + l1
-    cse1 = -c2 + l2
-    cse2 = -c3 + l3
+    cse0 = l1 - c1
+    cse1 = l2 - c2
+    cse2 = l3 - c3
     cphi1 = cos(theta)
-    jx1 = cphi1*cse0 + x
+    jx1 = x + cphi1*cse0
     sphi1 = sin(theta)
-    jy1 = cse0*sphi1 + y
+    jy1 = y + cse0*sphi1
     phi2 = q1 + theta
     cphi2 = cos(phi2)
-    px2 = c2*cphi2 + jx1
+    px2 = jx1 + cphi2*c2
     sphi2 = sin(phi2)
-    py2 = c2*sphi2 + jy1
-    jx2 = cphi2*cse1 + px2
-    jy2 = cse1*sphi2 + py2
+    py2 = jy1 + sphi2*c2
+    jx2 = px2 + cphi2*cse1
+    jy2 = py2 + cse1*sphi2
     phi3 = phi2 + q2
     cphi3 = cos(phi3)
-    px3 = c3*cphi3 + jx2
+    px3 = jx2 + cphi3*c3
     sphi3 = sin(phi3)
-    py3 = c3*sphi3 + jy2
-    jx3 = cphi3*cse2 + px3
-    jy3 = cse2*sphi3 + py3
+    py3 = jy2 + sphi3*c3
+    jx3 = px3 + cphi3*cse2
+    jy3 = py3 + cse2*sphi3
     phi4 = phi3 + q3
     cphi4 = cos(phi4)
-    px4 = c4*cphi4 + jx3
+    px4 = jx3 + cphi4*c4
     sphi4 = sin(phi4)
-    py4 = c4*sphi4 + jy3
+    py4 = jy3 + sphi4*c4
     out_poses = ca.reshape(ca.vertcat(x, y, theta, px2, py2, phi2, px3, py3, phi3, px4, py4, phi4), 3, 4)
     return ca.Function(
-        PREFIX + "link_poses",
+        PREFIX + 'link_poses',
         [q, K],
         [ca.densify(o) for o in ca.cse([out_poses])],
-        ["q", "K"],
-        ["poses"],
+        ['q', 'K'],
+        ['poses'],
     )
+
 
 def link_jacobians():
     """Link Jacobians J_i stacked (eq. 3). Reyes & Ma 2017, eq. (3).
@@ -188,8 +196,8 @@ def link_jacobians():
     Outputs:
         J (12, 6): 3 n_l x n_s; rows 3(i-1)..3i-1 map qdot to the twist of link i
     """
-    q = SX.sym("q", 6)
-    K = SX.sym("K", 35)
+    q = SX.sym('q', 6)
+    K = SX.sym('K', 35)
     x = q[0]
     y = q[1]
     theta = q[2]
@@ -231,46 +239,47 @@ def link_jacobians():
     Jrot2 = K[32]
     Jrot3 = K[33]
     Jrot4 = K[34]
-    cse0 = -c1 + l1
-    cse1 = -c2 + l2
-    cse2 = -c3 + l3
+    cse0 = l1 - c1
+    cse1 = l2 - c2
+    cse2 = l3 - c3
     cse3 = -y
     cse4 = -x
     sphi1 = sin(theta)
-    jy1 = cse0*sphi1 + y
+    jy1 = y + cse0*sphi1
     phi2 = q1 + theta
     sphi2 = sin(phi2)
-    py2 = c2*sphi2 + jy1
-    jy2 = cse1*sphi2 + py2
+    py2 = jy1 + sphi2*c2
+    jy2 = py2 + cse1*sphi2
     phi3 = phi2 + q2
     sphi3 = sin(phi3)
-    py3 = c3*sphi3 + jy2
+    py3 = jy2 + sphi3*c3
     cse5 = -py3
     cphi3 = cos(phi3)
     cphi2 = cos(phi2)
     cphi1 = cos(theta)
-    jx1 = cphi1*cse0 + x
-    px2 = c2*cphi2 + jx1
-    jx2 = cphi2*cse1 + px2
-    px3 = c3*cphi3 + jx2
+    jx1 = x + cphi1*cse0
+    px2 = jx1 + cphi2*c2
+    jx2 = px2 + cphi2*cse1
+    px3 = jx2 + cphi3*c3
     cse6 = -px3
-    jy3 = cse2*sphi3 + py3
+    jy3 = py3 + cse2*sphi3
     phi4 = phi3 + q3
     sphi4 = sin(phi4)
-    py4 = c4*sphi4 + jy3
+    py4 = jy3 + sphi4*c4
     cse7 = -py4
     cphi4 = cos(phi4)
-    jx3 = cphi3*cse2 + px3
-    px4 = c4*cphi4 + jx3
+    jx3 = px3 + cphi3*cse2
+    px4 = jx3 + cphi4*c4
     cse8 = -px4
-    out_J = ca.reshape(ca.vertcat(1, 0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 0, 1, -cse3 - py2, cse4 + px2, 1, -cse3 - py3, cse4 + px3, 1, -cse3 - py4, cse4 + px4, 1, 0, 0, 0, jy1 - py2, -jx1 + px2, 1, cse5 + jy1, -cse6 - jx1, 1, cse7 + jy1, -cse8 - jx1, 1, 0, 0, 0, 0, 0, 0, cse5 + jy2, -cse6 - jx2, 1, cse7 + jy2, -cse8 - jx2, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, cse7 + jy3, -cse8 - jx3, 1), 12, 6)
+    out_J = ca.reshape(ca.vertcat(1, 0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 0, 1, -cse3 - py2, cse4 + px2, 1, -cse3 - py3, cse4 + px3, 1, -cse3 - py4, cse4 + px4, 1, 0, 0, 0, jy1 - py2, px2 - jx1, 1, cse5 + jy1, -cse6 - jx1, 1, cse7 + jy1, -cse8 - jx1, 1, 0, 0, 0, 0, 0, 0, cse5 + jy2, -cse6 - jx2, 1, cse7 + jy2, -cse8 - jx2, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, cse7 + jy3, -cse8 - jx3, 1), 12, 6)
     return ca.Function(
-        PREFIX + "link_jacobians",
+        PREFIX + 'link_jacobians',
         [q, K],
         [ca.densify(o) for o in ca.cse([out_J])],
-        ["q", "K"],
-        ["J"],
+        ['q', 'K'],
+        ['J'],
     )
+
 
 def link_bias_accelerations():
     """Jdot_i qdot of every link.
@@ -282,9 +291,9 @@ def link_bias_accelerations():
     Outputs:
         bias (3, 4): 3 x n_l, column i = Jdot_i qdot
     """
-    q = SX.sym("q", 6)
-    v = SX.sym("v", 6)
-    K = SX.sym("K", 35)
+    q = SX.sym('q', 6)
+    v = SX.sym('v', 6)
+    K = SX.sym('K', 35)
     x = q[0]
     y = q[1]
     theta = q[2]
@@ -332,15 +341,15 @@ def link_bias_accelerations():
     Jrot2 = K[32]
     Jrot3 = K[33]
     Jrot4 = K[34]
-    cse0 = sq(thetad)*(-c1 + l1)
+    cse0 = sq(thetad)*(l1 - c1)
     omega2 = qd1 + thetad
     cse1 = sq(omega2)
-    cse2 = c2*cse1
-    cse3 = cse1*(-c2 + l2)
+    cse2 = cse1*c2
+    cse3 = cse1*(l2 - c2)
     omega3 = omega2 + qd2
     cse4 = sq(omega3)
-    cse5 = c3*cse4
-    cse6 = cse4*(-c3 + l3)
+    cse5 = cse4*c3
+    cse6 = cse4*(l3 - c3)
     omega4 = omega3 + qd3
     cse7 = c4*sq(omega4)
     cphi1 = cos(theta)
@@ -362,12 +371,13 @@ def link_bias_accelerations():
     by4 = by3 - cse6*sphi3 - cse7*sphi4
     out_bias = ca.reshape(ca.vertcat(0, 0, 0, bx2, by2, 0, bx3, by3, 0, bx4, by4, 0), 3, 4)
     return ca.Function(
-        PREFIX + "link_bias_accelerations",
+        PREFIX + 'link_bias_accelerations',
         [q, v, K],
         [ca.densify(o) for o in ca.cse([out_bias])],
-        ["q", "v", "K"],
-        ["bias"],
+        ['q', 'v', 'K'],
+        ['bias'],
     )
+
 
 def mass_matrix():
     """Inertia matrix M_s of the snake (eq. 4). Reyes & Ma 2017, eq. (4).
@@ -378,8 +388,8 @@ def mass_matrix():
     Outputs:
         M (6, 6): n_s x n_s, symmetric positive definite
     """
-    q = SX.sym("q", 6)
-    K = SX.sym("K", 35)
+    q = SX.sym('q', 6)
+    K = SX.sym('K', 35)
     x = q[0]
     y = q[1]
     theta = q[2]
@@ -430,7 +440,7 @@ def mass_matrix():
     sphi4 = sin(phi4)
     cdphi3_4 = cphi3*cphi4 + sphi3*sphi4
     Mphi3_4 = cdphi3_4*gamma3_4
-    cse0 = Jrot4 + Mphi3_4
+    cse0 = Mphi3_4 + Jrot4
     cphi1 = cos(theta)
     cphi2 = cos(phi2)
     sphi1 = sin(theta)
@@ -443,15 +453,15 @@ def mass_matrix():
     cdphi1_2 = cphi1*cphi2 + sphi1*sphi2
     Mphi1_2 = cdphi1_2*gamma1_2
     R1_1 = Mphi1_2 + R1_2
-    R1_0 = Jrot1 + R1_1
+    R1_0 = R1_1 + Jrot1
     cdphi2_4 = cphi2*cphi4 + sphi2*sphi4
     Mphi2_4 = cdphi2_4*gamma2_4
     cdphi2_3 = cphi2*cphi3 + sphi2*sphi3
     Mphi2_3 = cdphi2_3*gamma2_3
     R2_2 = Mphi2_3 + Mphi2_4
-    R2_1 = Jrot2 + R2_2
+    R2_1 = R2_2 + Jrot2
     R2_0 = Mphi1_2 + R2_1
-    R3_2 = Jrot3 + Mphi3_4
+    R3_2 = Mphi3_4 + Jrot3
     R3_1 = Mphi2_3 + R3_2
     R3_0 = Mphi1_3 + R3_1
     R4_2 = cse0
@@ -479,12 +489,13 @@ def mass_matrix():
     My0 = My1 + beta1*cphi1
     out_M = ca.reshape(ca.vertcat(mtot, 0, Mx0, Mx1, Mx2, Mx3, 0, mtot, My0, My1, My2, My3, Mx0, My0, Mrot0_0, Mrot0_1, Mrot0_2, Mrot0_3, Mx1, My1, Mrot0_1, Mrot1_1, Mrot1_2, Mrot1_3, Mx2, My2, Mrot0_2, Mrot1_2, Mrot2_2, Mrot2_3, Mx3, My3, Mrot0_3, Mrot1_3, Mrot2_3, Jrot4), 6, 6)
     return ca.Function(
-        PREFIX + "mass_matrix",
+        PREFIX + 'mass_matrix',
         [q, K],
         [ca.densify(o) for o in ca.cse([out_M])],
-        ["q", "K"],
-        ["M"],
+        ['q', 'K'],
+        ['M'],
     )
+
 
 def bias_forces():
     """Coriolis and centripetal terms h_s of eq. (4). Reyes & Ma 2017, eq. (4).
@@ -496,9 +507,9 @@ def bias_forces():
     Outputs:
         h (6, 1): n_s x 1
     """
-    q = SX.sym("q", 6)
-    v = SX.sym("v", 6)
-    K = SX.sym("K", 35)
+    q = SX.sym('q', 6)
+    v = SX.sym('v', 6)
+    K = SX.sym('K', 35)
     x = q[0]
     y = q[1]
     theta = q[2]
@@ -547,38 +558,38 @@ def bias_forces():
     Jrot3 = K[33]
     Jrot4 = K[34]
     cse0 = sq(thetad)
-    cse1 = -c1 + l1
+    cse1 = l1 - c1
     cphi1 = cos(theta)
     cse2 = cphi1*cse1
     omega2 = qd1 + thetad
     cse3 = sq(omega2)
     phi2 = q1 + theta
     cphi2 = cos(phi2)
-    cse4 = c2*cphi2
+    cse4 = cphi2*c2
     sphi1 = sin(theta)
     cse5 = cse1*sphi1
     sphi2 = sin(phi2)
-    cse6 = c2*sphi2
-    cse7 = -c2 + l2
+    cse6 = sphi2*c2
+    cse7 = l2 - c2
     cse8 = cphi2*cse7
     omega3 = omega2 + qd2
     cse9 = sq(omega3)
     phi3 = phi2 + q2
     cphi3 = cos(phi3)
-    cse10 = c3*cphi3
+    cse10 = cphi3*c3
     cse11 = cse7*sphi2
     sphi3 = sin(phi3)
-    cse12 = c3*sphi3
-    cse13 = -c3 + l3
+    cse12 = sphi3*c3
+    cse13 = l3 - c3
     cse14 = cphi3*cse13
     omega4 = omega3 + qd3
     cse15 = sq(omega4)
     phi4 = phi3 + q3
     cphi4 = cos(phi4)
-    cse16 = c4*cphi4
+    cse16 = cphi4*c4
     cse17 = cse13*sphi3
     sphi4 = sin(phi4)
-    cse18 = c4*sphi4
+    cse18 = sphi4*c4
     bx2 = -cse0*cse2 - cse3*cse4
     bx3 = bx2 - cse10*cse9 - cse3*cse8
     bx4 = bx3 - cse14*cse9 - cse15*cse16
@@ -604,24 +615,25 @@ def bias_forces():
     py4 = cse18 + jy3
     hFx4 = cse19
     hFy4 = by4*m4
-    hMz4 = by4*m4*px4 - cse19*py4
+    hMz4 = -cse19*py4 + by4*px4*m4
     hFx3 = cse20 + hFx4
     hFy3 = cse21 + hFy4
-    hMz3 = -cse20*py3 + cse21*px3 + hMz4
+    hMz3 = hMz4 + cse21*px3 - cse20*py3
     hFx2 = cse22 + hFx3
     hFy2 = cse23 + hFy3
-    hMz2 = -cse22*py2 + cse23*px2 + hMz3
+    hMz2 = hMz3 + cse23*px2 - cse22*py2
     hFx1 = hFx2
     hFy1 = hFy2
     hMz1 = hMz2
-    out_h = ca.reshape(ca.vertcat(hFx1, hFy1, hFx1*y - hFy1*x + hMz1, hFx2*jy1 - hFy2*jx1 + hMz2, hFx3*jy2 - hFy3*jx2 + hMz3, hFx4*jy3 - hFy4*jx3 + hMz4), 6, 1)
+    out_h = ca.reshape(ca.vertcat(hFx1, hFy1, hMz1 + hFx1*y - hFy1*x, hMz2 + hFx2*jy1 - hFy2*jx1, hMz3 + hFx3*jy2 - hFy3*jx2, hMz4 + hFx4*jy3 - hFy4*jx3), 6, 1)
     return ca.Function(
-        PREFIX + "bias_forces",
+        PREFIX + 'bias_forces',
         [q, v, K],
         [ca.densify(o) for o in ca.cse([out_h])],
-        ["q", "v", "K"],
-        ["h"],
+        ['q', 'v', 'K'],
+        ['h'],
     )
+
 
 def contact_row_local():
     """Frictionless contact row of one link against a point fixed in the object (eqs. 8-13). Reyes & Ma 2017, eq. (8)-(13).
@@ -642,14 +654,14 @@ def contact_row_local():
         gap (1, 1): normal gap
         s (1, 1): contact position along the link from its rear end
     """
-    link_pose = SX.sym("link_pose", 3)
-    link_twist = SX.sym("link_twist", 3)
-    link_bias = SX.sym("link_bias", 3)
-    link_com = SX.sym("link_com", 1)
-    object_pose = SX.sym("object_pose", 3)
-    object_twist = SX.sym("object_twist", 3)
-    rho = SX.sym("rho", 2)
-    side = SX.sym("side", 1)
+    link_pose = SX.sym('link_pose', 3)
+    link_twist = SX.sym('link_twist', 3)
+    link_bias = SX.sym('link_bias', 3)
+    link_com = SX.sym('link_com', 1)
+    object_pose = SX.sym('object_pose', 3)
+    object_twist = SX.sym('object_twist', 3)
+    rho = SX.sym('rho', 2)
+    side = SX.sym('side', 1)
     lx = link_pose[0]
     ly = link_pose[1]
     lphi = link_pose[2]
@@ -673,34 +685,35 @@ def contact_row_local():
     cse1 = cse0*sigma
     cse2 = cos(lphi)
     cse3 = cse2*sigma
-    cse4 = lc*sigma
+    cse4 = sigma*lc
     cse5 = cos(opsi)
     cse6 = sin(opsi)
     cse7 = cse5*rhox - cse6*rhoy
-    cse8 = cse2*lc + cse7 - lx + ox
+    cse8 = cse7 + ox - lx + cse2*lc
     cse9 = cse5*rhoy + cse6*rhox
-    cse10 = cse0*lc + cse9 - ly + oy
-    cse11 = sq(cse0)*cse4 - cse1*cse10 + sq(cse2)*cse4 - cse3*cse8
+    cse10 = cse9 + oy - ly + cse0*lc
+    cse11 = cse4*sq(cse0) + cse4*sq(cse2) - cse1*cse10 - cse3*cse8
     cse12 = -cse9
-    cse13 = -cse0*cse8*sigma + cse10*cse3
+    cse13 = cse10*cse3 - cse0*cse8*sigma
     cse14 = cse12*cse3
-    cse15 = -cse1*cse7 - cse14
+    cse15 = -cse14 - cse1*cse7
     cse16 = cse3*lvx
     cse17 = cse1*lvy
     cse18 = cse3*ovx
     cse19 = cse1*ovy
     out_a_link = ca.reshape(ca.vertcat(cse1, -cse3, cse11), 1, 3)
     out_g_obj = ca.reshape(ca.vertcat(-cse1, cse3, -cse1*cse12 + cse2*cse7*sigma), 1, 3)
-    out_adot_v = ca.reshape(ca.vertcat(cse1*lbx + cse11*lbw + cse16*lw + cse17*lw - cse18*lw - cse19*lw - cse3*lby + lw*(-cse13*lw + cse15*ow + cse16 + cse17 - cse18 - cse19) + ow*(cse15*lw + ow*(cse1*cse7 + cse14))), 1, 1)
+    out_adot_v = ca.reshape(ca.vertcat(cse1*lbx + cse11*lbw + cse16*lw + cse17*lw + lw*(cse16 + cse17 - cse18 - cse19 + cse15*ow - cse13*lw) + ow*(cse15*lw + ow*(cse14 + cse1*cse7)) - cse18*lw - cse19*lw - cse3*lby), 1, 1)
     out_gap = ca.reshape(ca.vertcat(cse13), 1, 1)
     out_s = ca.reshape(ca.vertcat(cse0*cse10 + cse2*cse8), 1, 1)
     return ca.Function(
-        PREFIX + "contact_row_local",
+        PREFIX + 'contact_row_local',
         [link_pose, link_twist, link_bias, link_com, object_pose, object_twist, rho, side],
         [ca.densify(o) for o in ca.cse([out_a_link, out_g_obj, out_adot_v, out_gap, out_s])],
-        ["link_pose", "link_twist", "link_bias", "link_com", "object_pose", "object_twist", "rho", "side"],
-        ["a_link", "g_obj", "adot_v", "gap", "s"],
+        ['link_pose', 'link_twist', 'link_bias', 'link_com', 'object_pose', 'object_twist', 'rho', 'side'],
+        ['a_link', 'g_obj', 'adot_v', 'gap', 's'],
     )
+
 
 def wheel_row_local():
     """Lateral (non-holonomic) passive-wheel row of one link. Reyes & Ma 2017, eq. (8)-(13).
@@ -714,10 +727,10 @@ def wheel_row_local():
         a_w (1, 3): row on the link twist (A row = a_w J_i)
         adot_v (1, 1): Adot v of the row (eq. 13)
     """
-    link_pose = SX.sym("link_pose", 3)
-    link_twist = SX.sym("link_twist", 3)
-    link_bias = SX.sym("link_bias", 3)
-    wheel_offset = SX.sym("wheel_offset", 1)
+    link_pose = SX.sym('link_pose', 3)
+    link_twist = SX.sym('link_twist', 3)
+    link_bias = SX.sym('link_bias', 3)
+    wheel_offset = SX.sym('wheel_offset', 1)
     lx = link_pose[0]
     ly = link_pose[1]
     lphi = link_pose[2]
@@ -731,520 +744,72 @@ def wheel_row_local():
     cse0 = sin(lphi)
     cse1 = cos(lphi)
     out_a_w = ca.reshape(ca.vertcat(-cse0, cse1, woff), 1, 3)
-    out_adot_v = ca.reshape(ca.vertcat(-cse0*lbx - cse0*lvy*lw + cse1*lby - cse1*lvx*lw + lbw*woff), 1, 1)
+    out_adot_v = ca.reshape(ca.vertcat(cse1*lby + lbw*woff - cse0*lbx - cse0*lvy*lw - cse1*lvx*lw), 1, 1)
     return ca.Function(
-        PREFIX + "wheel_row_local",
+        PREFIX + 'wheel_row_local',
         [link_pose, link_twist, link_bias, wheel_offset],
         [ca.densify(o) for o in ca.cse([out_a_w, out_adot_v])],
-        ["link_pose", "link_twist", "link_bias", "wheel_offset"],
-        ["a_w", "adot_v"],
+        ['link_pose', 'link_twist', 'link_bias', 'wheel_offset'],
+        ['a_w', 'adot_v'],
     )
 
-# ---------------------------------------------------------------------------------------------
-# Composition: the coupled snake + object system of Reyes & Ma 2017, eqs. (8)-(29).
-# Rendered unchanged for every joint count from derive/templates/constrained_dynamics.py.j2.
-# Constraint rows: row 0 is the contact, row 1 + i the lateral wheel row of link i + 1.
-# Which rows hold is an input (``free``: 1 = the row holds with equality and its force is
-# solved for; 0 = its force is fixed to ``lam_fixed``: 0 for a lost contact or a link without
-# a wheel, +-mu m g for a sliding wheel), so one compiled function serves every scene and every
-# active set; the runtime picks the active set (see snakecg/solver.py).
-# ---------------------------------------------------------------------------------------------
+
+# constrained_dynamics(q, v, tau, q_obj, v_obj, f_obj, K, contact_link, side, object_mass, object_inertia, rho, wheel_offset, free, lam_fixed, regularization)
+#   -> qdd, a_obj, lam, w, gap, s, norm_lambda, norm_a_obj, norm_qdd, sr, pivot_ratio, delassus, b
+# built by snakecg_derive.coupled.constrained_dynamics():
+#   Accelerations and constraint forces of snake + object for a given active set.
+#
+#   Eq. (12) with the rows in ``free`` held (eq. 13 with equality), the other rows' forces
+#   fixed to ``lam_fixed``. ``lam`` solves ``G' lam_F = -(b_F + G_c lam_fixed)`` on the held
+#   rows (eq. 16), where ``G_c = A I^-1 A^T`` (eq. 14) and ``b = A I^-1 (f - p) + Adot v``;
+#   ``w = G_c lam + b`` are the rows' accelerations. Norms: eq. (26), (27), ``lam^T G_c lam``
+#   and the slippage ratio sr of eq. (30).
 
 
-def _col(*xs):
-    return ca.vertcat(*[SX(x) for x in xs])
+# interaction_maps(q, K, contact_link, side, object_mass, object_inertia, q_obj, rho, wheel_offset, free, lam_fixed, regularization)
+#   -> lam_from_tau, lam_from_f_obj, lam_offset, qdd_from_tau, qdd_from_f_obj, qdd_offset, a_obj_from_tau, a_obj_from_f_obj, a_obj_offset, w_from_tau, w_from_f_obj, w_offset, xi_tau, omega_tau, lambda_form_tau, input_metric, projector_constrained, projector_orthogonal, delassus, pivot_ratio
+# built by snakecg_derive.coupled.interaction_maps():
+#   The linear maps of the system at rest for a given active set.
+#
+#   With ``v = 0`` every quantity is affine in ``(tau, f_obj)``: ``lam = lam_from_tau tau +
+#   lam_from_f_obj f_obj + lam_offset`` (eq. 17, the offset comes from fixed forces), and
+#   likewise ``qdd`` (eqs. 20, 22, 23), ``a_obj`` (eqs. 21, 24, 25) and the rows'
+#   accelerations ``w``. Also the quadratic forms of eqs. (28), (29) and ``lam^T G_c lam``
+#   in ``tau``, the input metric ``B^T M_s^-1 B`` of eq. (31) (corrected, see docs), the
+#   projectors of eqs. (14) and (19) and the Delassus matrix ``G_c``.
 
 
-def _ldl(A):
-    """LDL^T factors of a symmetric positive definite matrix (no pivoting).
-
-    Returns ``(L, d)`` as nested lists; ``d[j]`` is the j-th pivot.
-    """
-    n = A.shape[0]
-    L = [[SX(0)] * n for _ in range(n)]
-    d = [SX(0)] * n
-    for j in range(n):
-        s = A[j, j]
-        for k in range(j):
-            s = s - L[j][k] * L[j][k] * d[k]
-        d[j] = s
-        for i in range(j + 1, n):
-            t = A[i, j]
-            for k in range(j):
-                t = t - L[i][k] * L[j][k] * d[k]
-            L[i][j] = t / d[j]
-    return L, d
+# metric_forms(q, K, contact_link, side, object_mass, object_inertia, q_obj, rho, wheel_offset, free, regularization)
+#   -> omega_tau, xi_tau, lambda_form_tau, input_metric, contact_from_tau, pivot_ratio
+# built by snakecg_derive.coupled.metric_forms():
+#   The quadratic forms of the metrics in ``tau`` at rest, for a given active set.
+#
+#   A lean subset of ``interaction_maps`` for the extremes over the input ellipsoid:
+#   ``omega_tau`` (eq. 29), ``xi_tau`` (eq. 28), ``lambda_form_tau`` (``lam^T G_c lam``), the
+#   input metric ``B^T M_s^-1 B`` (eq. 31, corrected) and the contact row of
+#   ``lam_from_tau`` (its sign tells whether a torque keeps the contact).
 
 
-def _ldl_solve(L, d, B):
-    """Solve ``(L diag(d) L^T) X = B`` column by column."""
-    n = len(d)
-    cols = []
-    for c in range(B.shape[1]):
-        y = [SX(0)] * n
-        for i in range(n):
-            t = B[i, c]
-            for k in range(i):
-                t = t - L[i][k] * y[k]
-            y[i] = t
-        x = [SX(0)] * n
-        for i in reversed(range(n)):
-            t = y[i] / d[i]
-            for k in range(i + 1, n):
-                t = t - L[k][i] * x[k]
-            x[i] = t
-        cols.append(ca.vertcat(*x))
-    return ca.horzcat(*cols)
+# place_object(q, K, contact_link, contact_offset, object_distance, side)
+#   -> q_obj, rho, contact_point
+# built by snakecg_derive.coupled.place_object():
+#   Pose of the object and its contact point for a contact at ``contact_offset``.
+#
+#   The contact point lies on link ``k`` (one-hot ``contact_link``) at ``contact_offset``
+#   from its rear end; the object's COM lies on the contact normal
+#   ``n = side (-sin phi_k, cos phi_k)`` at ``object_distance`` from it, and the object is
+#   aligned with the link (``psi = phi_k``), so ``rho = (0, -side * object_distance)``.
 
 
-def _actuation():
-    """``B = [0_{3 x na}; 1_{na}]`` of eq. (5)."""
-    return ca.vertcat(SX(3, N_JOINTS), SX.eye(N_JOINTS))
-
-
-def _rows(fn, q, v, K, contact_link, side, q_obj, v_obj, rho, wheel_offset):
-    """Constraint matrix ``A = [-J_s, G^T]`` (eq. 9), ``Adot v`` (eq. 13), gap and ``s``."""
-    nl, ns = N_LINKS, N_COORDINATES
-    poses = fn["link_poses"](q, K)
-    J = fn["link_jacobians"](q, K)
-    bias = fn["link_bias_accelerations"](q, v, K)
-    Jk = SX(3, ns)
-    for i in range(nl):
-        Jk = Jk + contact_link[i] * J[3 * i : 3 * i + 3, :]
-    pose_k = ca.mtimes(poses, contact_link)
-    bias_k = ca.mtimes(bias, contact_link)
-    com_k = ca.dot(K[3 * nl : 4 * nl], contact_link)
-    a_link, g_obj, adv_c, gap, s = fn["contact_row_local"](
-        pose_k, ca.mtimes(Jk, v), bias_k, com_k, q_obj, v_obj, rho, side
-    )
-    rows = [ca.horzcat(ca.mtimes(a_link, Jk), g_obj)]
-    adv = [adv_c]
-    for i in range(nl):
-        Ji = J[3 * i : 3 * i + 3, :]
-        a_w, adv_w = fn["wheel_row_local"](poses[:, i], ca.mtimes(Ji, v), bias[:, i], wheel_offset[i])
-        rows.append(ca.horzcat(ca.mtimes(a_w, Ji), SX(1, 3)))
-        adv.append(adv_w)
-    return ca.vertcat(*rows), ca.vertcat(*adv), gap, s
-
-
-def _model_functions():
-    return {
-        "link_poses": link_poses(),
-        "link_jacobians": link_jacobians(),
-        "link_bias_accelerations": link_bias_accelerations(),
-        "mass_matrix": mass_matrix(),
-        "bias_forces": bias_forces(),
-        "contact_row_local": contact_row_local(),
-        "wheel_row_local": wheel_row_local(),
-    }
-
-
-def _scene_inputs():
-    nl = N_LINKS
-    return {
-        "contact_link": SX.sym("contact_link", nl),
-        "side": SX.sym("side", 1),
-        "object_mass": SX.sym("object_mass", 1),
-        "object_inertia": SX.sym("object_inertia", 1),
-        "q_obj": SX.sym("q_obj", 3),
-        "rho": SX.sym("rho", 2),
-        "wheel_offset": SX.sym("wheel_offset", nl),
-        "free": SX.sym("free", N_CONSTRAINTS),
-        "lam_fixed": SX.sym("lam_fixed", N_CONSTRAINTS),
-        "regularization": SX.sym("regularization", 1),
-    }
-
-
-def _masked_delassus(Gc, free, regularization):
-    """``G' = D G_c D + (1 - D) + r D`` with ``D = diag(free)``: LDL factors and pivot ratio.
-
-    ``r`` (``regularization``) is 0 normally; the runtime re-solves a flagged singular case
-    with a tiny ``r``, which tends to the least-norm solution as ``r -> 0``.
-    """
-    D = ca.diag(free)
-    Gp = ca.mtimes([D, Gc, D]) + ca.diag(1 - free) + regularization * D
-    Lg, dg = _ldl(Gp)
-    # pivot / diagonal: 1 for an independent row, -> 0 as a row becomes dependent on earlier ones
-    ratio = ca.mmin(ca.vertcat(*[dg[i] / Gp[i, i] for i in range(N_CONSTRAINTS)]))
-    return Lg, dg, ratio
-
-
-def constrained_dynamics():
-    """Accelerations and constraint forces of snake + object for a given active set.
-
-    Eq. (12) with the rows in ``free`` held (eq. 13 with equality), the other rows' forces
-    fixed to ``lam_fixed``. ``lam`` solves ``G' lam_F = -(b_F + G_c lam_fixed)`` on the held
-    rows, where ``G_c = A I^-1 A^T`` (eq. 14) and ``b = A I^-1 (f - p) + Adot v``;
-    ``w = G_c lam + b`` are the rows' accelerations. Norms: eq. (26), (27), ``lam^T G_c lam``
-    and the slippage ratio sr of eq. (30).
-    """
-    ns, na = N_COORDINATES, N_JOINTS
-    fn = _model_functions()
-    q = SX.sym("q", ns)
-    v = SX.sym("v", ns)
-    tau = SX.sym("tau", na)
-    v_obj = SX.sym("v_obj", 3)
-    f_obj = SX.sym("f_obj", 3)
-    K = SX.sym("K", N_PARAMETERS)
-    sc = _scene_inputs()
-    A, Adv, gap, s = _rows(fn, q, v, K, sc["contact_link"], sc["side"], sc["q_obj"], v_obj,
-                           sc["rho"], sc["wheel_offset"])
-    M = fn["mass_matrix"](q, K)
-    h = fn["bias_forces"](q, v, K)
-    L, d = _ldl(M)
-    As, Ao = A[:, :ns], A[:, ns:]
-    X = _ldl_solve(L, d, ca.horzcat(ca.mtimes(_actuation(), tau) - h, As.T))
-    qdd0, MinvAsT = X[:, 0], X[:, 1:]
-    mo = _col(sc["object_mass"], sc["object_mass"], sc["object_inertia"])
-    IoinvAoT = ca.mtimes(ca.diag(1 / mo), Ao.T)
-    Gc = ca.mtimes(As, MinvAsT) + ca.mtimes(Ao, IoinvAoT)
-    a0 = f_obj / mo
-    b = ca.mtimes(As, qdd0) + ca.mtimes(Ao, a0) + Adv
-    free = sc["free"]
-    lf = (1 - free) * sc["lam_fixed"]
-    Lg, dg, ratio = _masked_delassus(Gc, free, sc["regularization"])
-    lam = _ldl_solve(Lg, dg, -free * (b + ca.mtimes(Gc, lf))) + lf
-    w = ca.mtimes(Gc, lam) + b
-    qdd = qdd0 + ca.mtimes(MinvAsT, lam)
-    a_obj = a0 + ca.mtimes(IoinvAoT, lam)
-    norm_qdd = ca.mtimes([qdd.T, M, qdd])
-    norm_a_obj = ca.dot(a_obj, mo * a_obj)
-    norm_lambda = ca.mtimes([lam.T, Gc, lam])
-    sr = norm_a_obj / ca.fmax(norm_a_obj + norm_qdd, 1e-300)
-    ins = [q, v, tau, sc["q_obj"], v_obj, f_obj, K, sc["contact_link"], sc["side"],
-           sc["object_mass"], sc["object_inertia"], sc["rho"], sc["wheel_offset"], free,
-           sc["lam_fixed"], sc["regularization"]]
-    names = ["q", "v", "tau", "q_obj", "v_obj", "f_obj", "K", "contact_link", "side",
-             "object_mass", "object_inertia", "rho", "wheel_offset", "free", "lam_fixed",
-             "regularization"]
-    outs = [qdd, a_obj, lam, w, gap, s, norm_lambda, norm_a_obj, norm_qdd, sr, ratio, Gc, b]
-    onames = ["qdd", "a_obj", "lam", "w", "gap", "s", "norm_lambda", "norm_a_obj", "norm_qdd",
-              "sr", "pivot_ratio", "delassus", "b"]
-    return ca.Function(PREFIX + "constrained_dynamics", ins,
-                       [ca.densify(o) for o in ca.cse(outs)], names, onames)
-
-
-def _at_rest_system(fn, q, K, sc):
-    """The pieces every at-rest function shares (``v = 0``, so ``h`` and ``Adot v`` vanish):
-    ``A = [A_s, A_o]`` (eq. 9), ``M_s`` and its LDL factors, ``M_s^-1 B`` and
-    ``M_s^-1 A_s^T``, the object's inertia diagonal ``mo``, ``I_o^-1 A_o^T`` and the Delassus
-    matrix ``G_c = A I^-1 A^T`` (eq. 14)."""
-    ns, na = N_COORDINATES, N_JOINTS
-    A, _, _, _ = _rows(fn, q, SX(ns, 1), K, sc["contact_link"], sc["side"], sc["q_obj"],
-                       SX(3, 1), sc["rho"], sc["wheel_offset"])
-    M = fn["mass_matrix"](q, K)
-    L, d = _ldl(M)
-    As, Ao = A[:, :ns], A[:, ns:]
-    Bm = _actuation()
-    X = _ldl_solve(L, d, ca.horzcat(Bm, As.T))
-    MinvB, MinvAsT = X[:, :na], X[:, na:]
-    mo = _col(sc["object_mass"], sc["object_mass"], sc["object_inertia"])
-    IoinvAoT = ca.mtimes(ca.diag(1 / mo), Ao.T)
-    Gc = ca.mtimes(As, MinvAsT) + ca.mtimes(Ao, IoinvAoT)
-    return {"A": A, "As": As, "Ao": Ao, "M": M, "Bm": Bm, "MinvB": MinvB,
-            "MinvAsT": MinvAsT, "mo": mo, "IoinvAoT": IoinvAoT, "Gc": Gc}
-
-
-def interaction_maps():
-    """The linear maps of the system at rest for a given active set.
-
-    With ``v = 0`` every quantity is affine in ``(tau, f_obj)``: ``lam = lam_from_tau tau +
-    lam_from_f_obj f_obj + lam_offset`` (eq. 17, the offset comes from fixed forces), and
-    likewise ``qdd`` (eqs. 20, 22, 23), ``a_obj`` (eqs. 21, 24, 25) and the rows'
-    accelerations ``w``. Also the quadratic forms of eqs. (28), (29) and ``lam^T G_c lam``
-    in ``tau``, the input metric ``B^T M_s^-1 B`` of eq. (31) (corrected, see docs), the
-    projectors of eqs. (14) and (19) and the Delassus matrix ``G_c``.
-    """
-    ns, na = N_COORDINATES, N_JOINTS
-    fn = _model_functions()
-    q = SX.sym("q", ns)
-    K = SX.sym("K", N_PARAMETERS)
-    sc = _scene_inputs()
-    S = _at_rest_system(fn, q, K, sc)
-    A, As, Ao, M, Bm = S["A"], S["As"], S["Ao"], S["M"], S["Bm"]
-    MinvB, MinvAsT, mo, IoinvAoT, Gc = S["MinvB"], S["MinvAsT"], S["mo"], S["IoinvAoT"], S["Gc"]
-    Io = ca.diag(mo)
-    Ioinv = ca.diag(1 / mo)
-    free = sc["free"]
-    D = ca.diag(free)
-    lf = (1 - free) * sc["lam_fixed"]
-    Lg, dg, ratio = _masked_delassus(Gc, free, sc["regularization"])
-    # projector of eq. (14) restricted to the held rows: G'^-1 D A I^-1   (n_c x n)
-    AIinv = ca.horzcat(MinvAsT.T, IoinvAoT.T)
-    P14 = _ldl_solve(Lg, dg, ca.mtimes(D, AIinv))
-    n = ns + 3
-    P19 = SX.eye(n) - ca.mtimes(A.T, P14)
-    lam_tau = -ca.mtimes(P14[:, :ns], Bm)
-    lam_f = -P14[:, ns:]
-    lam_0 = lf - _ldl_solve(Lg, dg, ca.mtimes([D, Gc, lf]))
-    qdd_tau = MinvB + ca.mtimes(MinvAsT, lam_tau)
-    qdd_f = ca.mtimes(MinvAsT, lam_f)
-    qdd_0 = ca.mtimes(MinvAsT, lam_0)
-    a_tau = ca.mtimes(IoinvAoT, lam_tau)
-    a_f = Ioinv + ca.mtimes(IoinvAoT, lam_f)
-    a_0 = ca.mtimes(IoinvAoT, lam_0)
-    w_tau = ca.mtimes(As, MinvB) + ca.mtimes(Gc, lam_tau)
-    w_f = ca.mtimes(Ao, Ioinv) + ca.mtimes(Gc, lam_f)
-    w_0 = ca.mtimes(Gc, lam_0)
-    xi = ca.mtimes([qdd_tau.T, M, qdd_tau])
-    omega = ca.mtimes([a_tau.T, Io, a_tau])
-    lam_form = ca.mtimes([lam_tau.T, Gc, lam_tau])
-    metric = ca.mtimes(Bm.T, MinvB)
-    ins = [q, K, sc["contact_link"], sc["side"], sc["object_mass"], sc["object_inertia"],
-           sc["q_obj"], sc["rho"], sc["wheel_offset"], free, sc["lam_fixed"],
-           sc["regularization"]]
-    names = ["q", "K", "contact_link", "side", "object_mass", "object_inertia", "q_obj", "rho",
-             "wheel_offset", "free", "lam_fixed", "regularization"]
-    outs = [lam_tau, lam_f, lam_0, qdd_tau, qdd_f, qdd_0, a_tau, a_f, a_0, w_tau, w_f, w_0,
-            xi, omega, lam_form, metric, P14, P19, Gc, ratio]
-    onames = ["lam_from_tau", "lam_from_f_obj", "lam_offset", "qdd_from_tau", "qdd_from_f_obj",
-              "qdd_offset", "a_obj_from_tau", "a_obj_from_f_obj", "a_obj_offset", "w_from_tau",
-              "w_from_f_obj", "w_offset", "xi_tau", "omega_tau", "lambda_form_tau",
-              "input_metric", "projector_constrained", "projector_orthogonal", "delassus",
-              "pivot_ratio"]
-    return ca.Function(PREFIX + "interaction_maps", ins,
-                       [ca.densify(o) for o in ca.cse(outs)], names, onames)
-
-
-def _metric_forms_sx(fn, q, K, sc, free):
-    """Forms of the metrics in ``tau`` at rest for the held rows ``free`` (eqs. 28, 29, 31)."""
-    S = _at_rest_system(fn, q, K, sc)
-    As, M, Bm, MinvB, MinvAsT = S["As"], S["M"], S["Bm"], S["MinvB"], S["MinvAsT"]
-    mo, IoinvAoT, Gc = S["mo"], S["IoinvAoT"], S["Gc"]
-    Lg, dg, ratio = _masked_delassus(Gc, free, sc["regularization"])
-    # lam_tau = -G'^-1 D A_s M^-1 B
-    lam_tau = -_ldl_solve(Lg, dg, ca.mtimes(ca.diag(free), ca.mtimes(As, MinvB)))
-    qdd_tau = MinvB + ca.mtimes(MinvAsT, lam_tau)
-    a_tau = ca.mtimes(IoinvAoT, lam_tau)
-    return {
-        "omega_tau": ca.mtimes([a_tau.T, ca.diag(mo), a_tau]),
-        "xi_tau": ca.mtimes([qdd_tau.T, M, qdd_tau]),
-        "lambda_form_tau": ca.mtimes([lam_tau.T, Gc, lam_tau]),
-        "input_metric": ca.mtimes(Bm.T, MinvB),
-        "contact_from_tau": lam_tau[0, :],
-        "pivot_ratio": ratio,
-    }
-
-
-def metric_forms():
-    """The quadratic forms of the metrics in ``tau`` at rest, for a given active set.
-
-    A lean subset of ``interaction_maps`` for the extremes over the input ellipsoid:
-    ``omega_tau`` (eq. 29), ``xi_tau`` (eq. 28), ``lambda_form_tau`` (``lam^T G_c lam``), the
-    input metric ``B^T M_s^-1 B`` (eq. 31, corrected) and the contact row of
-    ``lam_from_tau`` (its sign tells whether a torque keeps the contact).
-    """
-    fn = _model_functions()
-    q = SX.sym("q", N_COORDINATES)
-    K = SX.sym("K", N_PARAMETERS)
-    sc = _scene_inputs()
-    forms = _metric_forms_sx(fn, q, K, sc, sc["free"])
-    ins = [q, K, sc["contact_link"], sc["side"], sc["object_mass"], sc["object_inertia"],
-           sc["q_obj"], sc["rho"], sc["wheel_offset"], sc["free"], sc["regularization"]]
-    names = ["q", "K", "contact_link", "side", "object_mass", "object_inertia", "q_obj", "rho",
-             "wheel_offset", "free", "regularization"]
-    onames = list(forms)
-    return ca.Function(PREFIX + "metric_forms", ins,
-                       [ca.densify(o) for o in ca.cse([forms[k] for k in onames])], names,
-                       onames)
-
-
-def _chol_small(A):
-    """Cholesky factor (lower) of a small SPD matrix, as an SX matrix."""
-    n = A.shape[0]
-    L = SX(n, n)
-    for j in range(n):
-        s = A[j, j]
-        for k in range(j):
-            s = s - L[j, k] * L[j, k]
-        L[j, j] = sqrt(s)
-        for i in range(j + 1, n):
-            t = A[i, j]
-            for k in range(j):
-                t = t - L[i, k] * L[j, k]
-            L[i, j] = t / L[j, j]
-    return L
-
-
-def _lower_inv(L):
-    n = L.shape[0]
-    Li = SX(n, n)
-    for i in range(n):
-        Li[i, i] = 1 / L[i, i]
-        for j in range(i):
-            s = SX(0)
-            for k in range(j, i):
-                s = s + L[i, k] * Li[k, j]
-            Li[i, j] = -s / L[i, i]
-    return Li
-
-
-def _unit_or(v, fallback, scale):
-    nv = ca.dot(v, v)
-    return ca.if_else(nv > 1e-28 * scale, v / sqrt(ca.fmax(nv, 1e-300)), fallback)
-
-
-def _cross3(a, b):
-    return ca.vertcat(a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2],
-                      a[0] * b[1] - a[1] * b[0])
-
-
-def _sym_eig_extremes(C):
-    """Smallest and largest eigenpairs of a symmetric 1x1, 2x2 or 3x3 SX matrix, in closed form
-    (trigonometric solution of the characteristic cubic for 3x3). Returns
-    ``(l_min, l_max, v_min, v_max)`` with unit eigenvectors; a repeated eigenvalue gets any
-    unit vector of its eigenspace."""
-    n = C.shape[0]
-    if n == 1:
-        return C[0, 0], C[0, 0], SX(1), SX(1)
-    scale = ca.sumsqr(C) + 1e-300
-    if n == 2:
-        a, b, c = C[0, 0], C[0, 1], C[1, 1]
-        mean = (a + c) / 2
-        r = sqrt(sq((a - c) / 2) + sq(b))
-        lmax = mean + r
-        v1 = ca.vertcat(b, lmax - a)
-        v2 = ca.vertcat(lmax - c, b)
-        v = ca.if_else(ca.dot(v2, v2) > ca.dot(v1, v1), v2, v1)
-        vmax = _unit_or(v, ca.vertcat(1, 0), scale)
-        return mean - r, lmax, ca.vertcat(-vmax[1], vmax[0]), vmax
-    q = ca.trace(C) / 3
-    p1 = sq(C[0, 1]) + sq(C[0, 2]) + sq(C[1, 2])
-    p2 = sq(C[0, 0] - q) + sq(C[1, 1] - q) + sq(C[2, 2] - q) + 2 * p1
-    p = sqrt(p2 / 6)
-    Bm = (C - q * SX.eye(3)) / ca.fmax(p, 1e-300)
-    r = ca.fmin(ca.fmax(ca.det(Bm) / 2, -1), 1)
-    phi = ca.acos(r) / 3
-    lmax = q + 2 * p * cos(phi)
-    lmin = q + 2 * p * cos(phi + 2 * 3.141592653589793 / 3)
-
-    def eigvec(lam, fallback):
-        R = C - lam * SX.eye(3)
-        rows = [R[0, :].T, R[1, :].T, R[2, :].T]
-        c01, c02, c12 = _cross3(rows[0], rows[1]), _cross3(rows[0], rows[2]), _cross3(rows[1], rows[2])
-        n01, n02, n12 = ca.dot(c01, c01), ca.dot(c02, c02), ca.dot(c12, c12)
-        v = ca.if_else(n01 >= n02, c01, c02)
-        nv = ca.fmax(n01, n02)
-        v = ca.if_else(n12 > nv, c12, v)
-        return _unit_or(v, fallback, sq(scale))
-
-    # a vector orthogonal to the dominant row of C - lmax 1 (used when lmax is repeated)
-    R = C - lmax * SX.eye(3)
-    r0 = R[0, :].T
-    alt = _unit_or(_cross3(r0, ca.vertcat(0, 0, 1)),
-                   _unit_or(_cross3(r0, ca.vertcat(0, 1, 0)), ca.vertcat(1, 0, 0), scale), scale)
-    vmax = eigvec(lmax, alt)
-    e = ca.if_else(ca.fabs(vmax[0]) < 0.5, ca.vertcat(1, 0, 0), ca.vertcat(0, 1, 0))
-    perp = _unit_or(_cross3(vmax, e), ca.vertcat(0, 0, 1), 1)
-    vmin = eigvec(lmin, perp)
-    vmin = _unit_or(vmin - ca.dot(vmin, vmax) * vmax, perp, 1)
-    return lmin, lmax, vmin, vmax
-
-
-def metric_extremes():
-    """Extreme values of the metrics over the boundary of the input ellipsoid (eq. 31), and the
-    torques attaining them, for both contact states, in closed form (n_a <= 3).
-
-    For a form ``X`` in ``tau`` and ``N = B^T M_s^-1 B = L L^T``, the extremes of
-    ``tau^T X tau`` on ``tau^T N tau = 1`` are the extreme eigenvalues of ``L^-1 X L^-T``,
-    attained at ``tau = L^-T u``. For sr, the generalized problem ``(Omega, Omega + Xi)``
-    (eq. 30) is whitened twice. Eigenpairs come from the trigonometric solution of the
-    characteristic cubic. Outputs ``<metric>_<state>`` hold ``(l_min, l_max)`` and
-    ``tau_<metric>_<state>`` the two torques as columns; the runtime signs them with
-    ``contact_from_tau`` (the contact force per torque).
-    """
-    na = N_JOINTS
-    fn = _model_functions()
-    q = SX.sym("q", N_COORDINATES)
-    K = SX.sym("K", N_PARAMETERS)
-    sc = _scene_inputs()
-    free_lost = SX.sym("free_lost", N_CONSTRAINTS)
-    kept = _metric_forms_sx(fn, q, K, sc, sc["free"])
-    lost = _metric_forms_sx(fn, q, K, sc, free_lost)
-    N = kept["input_metric"]
-    Linv = _lower_inv(_chol_small(N))
-    outs, onames = [], []
-
-    def extremes_of(X, label, back=None):
-        C = ca.mtimes([Linv, X, Linv.T])
-        C = (C + C.T) / 2
-        lmin, lmax, vmin, vmax = _sym_eig_extremes(C)
-        tmin, tmax = ca.mtimes(Linv.T, vmin), ca.mtimes(Linv.T, vmax)
-        outs.extend([ca.vertcat(lmin, lmax), ca.horzcat(tmin, tmax)])
-        onames.extend([label, "tau_" + label])
-
-    for state, forms in (("kept", kept), ("lost", lost)):
-        for m, key in (("norm_a_obj", "omega_tau"), ("norm_qdd", "xi_tau"),
-                       ("norm_lambda", "lambda_form_tau")):
-            extremes_of(forms[key], f"{m}_{state}")
-    # sr on the kept half: (Omega, Omega + Xi), regularised where the wheels brace the snake
-    Om = ca.mtimes([Linv, kept["omega_tau"], Linv.T])
-    D = ca.mtimes([Linv, kept["omega_tau"] + kept["xi_tau"], Linv.T])
-    D = (D + D.T) / 2 + 1e-12 * ca.trace(D) * SX.eye(na)
-    LDinv = _lower_inv(_chol_small(D))
-    C = ca.mtimes([LDinv, Om, LDinv.T])
-    lmin, lmax, vmin, vmax = _sym_eig_extremes((C + C.T) / 2)
-    taus = []
-    for u in (vmin, vmax):
-        t = ca.mtimes([Linv.T, LDinv.T, u])
-        taus.append(t / sqrt(ca.mtimes([t.T, N, t])))
-    outs.extend([ca.vertcat(lmin, lmax), ca.horzcat(*taus)])
-    onames.extend(["sr_kept", "tau_sr_kept"])
-    outs.extend([kept["contact_from_tau"], kept["pivot_ratio"], lost["pivot_ratio"]])
-    onames.extend(["contact_from_tau", "pivot_ratio_kept", "pivot_ratio_lost"])
-    ins = [q, K, sc["contact_link"], sc["side"], sc["object_mass"], sc["object_inertia"],
-           sc["q_obj"], sc["rho"], sc["wheel_offset"], sc["free"], free_lost,
-           sc["regularization"]]
-    names = ["q", "K", "contact_link", "side", "object_mass", "object_inertia", "q_obj", "rho",
-             "wheel_offset", "free", "free_lost", "regularization"]
-    return ca.Function(PREFIX + "metric_extremes", ins,
-                       [ca.densify(o) for o in ca.cse(outs)], names, onames)
-
-
-def place_object():
-    """Pose of the object and its contact point for a contact at ``contact_offset``.
-
-    The contact point lies on link ``k`` (one-hot ``contact_link``) at ``contact_offset``
-    from its rear end; the object's COM lies on the contact normal
-    ``n = side (-sin phi_k, cos phi_k)`` at ``object_distance`` from it, and the object is
-    aligned with the link (``psi = phi_k``), so ``rho = (0, -side * object_distance)``.
-    """
-    nl, ns = N_LINKS, N_COORDINATES
-    q = SX.sym("q", ns)
-    K = SX.sym("K", N_PARAMETERS)
-    contact_link = SX.sym("contact_link", nl)
-    contact_offset = SX.sym("contact_offset", 1)
-    object_distance = SX.sym("object_distance", 1)
-    side = SX.sym("side", 1)
-    pose = ca.mtimes(link_poses()(q, K), contact_link)
-    com_k = ca.dot(K[3 * nl : 4 * nl], contact_link)
-    phi = pose[2]
-    e = ca.vertcat(cos(phi), sin(phi))
-    n = side * ca.vertcat(-sin(phi), cos(phi))
-    P = pose[:2] + (contact_offset - com_k) * e
-    p_o = P + object_distance * n
-    q_obj = ca.vertcat(p_o, phi)
-    rho = ca.vertcat(SX(0), -side * object_distance)
-    return ca.Function(PREFIX + "place_object",
-                       [q, K, contact_link, contact_offset, object_distance, side],
-                       [ca.densify(o) for o in ca.cse([q_obj, rho, P])],
-                       ["q", "K", "contact_link", "contact_offset", "object_distance", "side"],
-                       ["q_obj", "rho", "contact_point"])
-
-
-def all_functions():
-    """Every function of this model, in manifest order."""
-    return [
-        derived_parameters(),
-        link_poses(),
-        link_jacobians(),
-        link_bias_accelerations(),
-        mass_matrix(),
-        bias_forces(),
-        contact_row_local(),
-        wheel_row_local(),
-        constrained_dynamics(),
-        interaction_maps(),
-        metric_forms(),
-        place_object(),
-    ] + ([metric_extremes()] if N_JOINTS <= 3 else [])
+# metric_extremes(q, K, contact_link, side, object_mass, object_inertia, q_obj, rho, wheel_offset, free, free_lost, regularization)
+#   -> norm_a_obj_kept, tau_norm_a_obj_kept, norm_qdd_kept, tau_norm_qdd_kept, norm_lambda_kept, tau_norm_lambda_kept, norm_a_obj_lost, tau_norm_a_obj_lost, norm_qdd_lost, tau_norm_qdd_lost, norm_lambda_lost, tau_norm_lambda_lost, sr_kept, tau_sr_kept, contact_from_tau, pivot_ratio_kept, pivot_ratio_lost
+# built by snakecg_derive.coupled.metric_extremes():
+#   Extreme values of the metrics over the boundary of the input ellipsoid (eq. 31), and the
+#   torques attaining them, for both contact states, in closed form (n_a <= 3).
+#
+#   For a form ``X`` in ``tau`` and ``N = B^T M_s^-1 B = L L^T``, the extremes of
+#   ``tau^T X tau`` on ``tau^T N tau = 1`` are the extreme eigenvalues of ``L^-1 X L^-T``,
+#   attained at ``tau = L^-T u``. For sr, the generalized problem ``(Omega, Omega + Xi)``
+#   (eq. 30) is whitened twice. Outputs ``<metric>_<state>`` hold ``(l_min, l_max)`` and
+#   ``tau_<metric>_<state>`` the two torques as columns; the runtime signs them with
+#   ``contact_from_tau`` (the contact force per torque).

@@ -32,7 +32,7 @@ def register(sub) -> None:
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
     p.add_argument("--joints", type=int, required=True, metavar="N",
-                   help="number of joints n_a >= 1 (at most SNAKECG_MAX_JOINTS, default 30)")
+                   help="number of joints n_a >= 1 (at most SNAKECG_MAX_JOINTS, default 50)")
     p.add_argument("--out", metavar="DIR", type=text("an output folder"),
                    help="write na<N>/ into DIR instead of the cache (not compiled)")
     p.add_argument("--json", action="store_true",

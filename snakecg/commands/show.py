@@ -15,7 +15,7 @@ import shutil
 import sys
 import textwrap
 
-from ..errors import InputError
+from ..errors import ArtifactError, BuildError, InputError
 from ._common import print_json, progress_reporter
 
 #: Version of the JSON printed by ``snakecg show --json`` (docs/cli.md).
@@ -103,15 +103,25 @@ def run(args) -> int:
     return 0
 
 
-def _list(joints: int, expression_names: list[str]) -> int:
+def _function_names(joints: int) -> list[str]:
+    """The generated functions for ``joints``: the packaged manifest's where there is one,
+    else the generator's catalog for that joint count (what its manifest will list)."""
     from ..artifacts import model_dir
 
-    # every joint count has the same functions: name them from the packaged one-joint model
-    _, manifest = model_dir(1, generate=False)
+    try:
+        _, manifest = model_dir(joints, generate=False)
+    except (ArtifactError, BuildError):  # not generated yet, or damaged: the catalog says
+        from snakecg_derive.catalog import function_names
+
+        return list(function_names(joints))
+    return [f["name"] for f in manifest["functions"]]
+
+
+def _list(joints: int, expression_names: list[str]) -> int:
     print(f"expressions for {joints} joints (snakecg show --joints {joints} NAME):")
     print("  " + " ".join(expression_names))
     print(f"generated functions (snakecg show --joints {joints} NAME --c):")
-    print("  " + " ".join(f["name"] for f in manifest["functions"]))
+    print("  " + " ".join(_function_names(joints)))
     return 0
 
 

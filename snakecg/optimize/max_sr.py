@@ -11,6 +11,7 @@ import itertools
 
 import numpy as np
 
+from .. import kernels
 from ..solver import ABSENT, HELD, PIVOT_TOL, SLIDE_NEG, SLIDE_POS, _free_and_fixed
 from .problems import Answer, rows, scale_of, stick_rows
 from .result import CONTACT, ELLIPSOID, FRICTION_MARGIN, SR_TIE, joint_name, wheel_name
@@ -84,16 +85,17 @@ def _state_maps(model, q, states):
     qa = q[None, :]
     q_obj, rho, _ = model._place(qa, 1)
     free, lam_fixed = _free_and_fixed(states, model.bounds)
-    args = [q, model.parameters, model._contact_link, model._side, model._object_mass,
-            model._object_inertia, q_obj[0], rho[0], model._wheel_offset, free, lam_fixed,
-            np.zeros(1)]
-    outs = model.backend("interaction_maps", S,
-                         [np.ascontiguousarray(a, dtype=float) for a in args])
-    names = model.backend.signatures["interaction_maps"].out_names
+    f = np.ascontiguousarray
+    outs = kernels.call(
+        model.backend, "interaction_maps", S, q=f(q, dtype=float), K=model.parameters,
+        contact_link=model._contact_link, side=model._side, object_mass=model._object_mass,
+        object_inertia=model._object_inertia, q_obj=f(q_obj[0]), rho=f(rho[0]),
+        wheel_offset=model._wheel_offset, free=f(free, dtype=float),
+        lam_fixed=f(lam_fixed, dtype=float), regularization=np.zeros(1))
     res = {}
-    for name_, o in zip(names, outs):
+    for name_, o in outs.items():
         res[name_] = o[:, :, 0] if o.shape[2] == 1 and name_.endswith("offset") else o
-    res["pivot_ratio"] = outs[names.index("pivot_ratio")][:, 0, 0]
+    res["pivot_ratio"] = outs["pivot_ratio"][:, 0, 0]
     return res
 
 

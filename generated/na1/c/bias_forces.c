@@ -1,5 +1,5 @@
 /* GENERATED FILE - DO NOT EDIT. C code emitted by CasADi for bias_forces() of
- * generated/na1/model.py, plus its batched driver.
+ * generated/na1/ (see its model.py), plus its batched driver.
  * Regenerate with: python -m snakecg_derive --checked-in
  * spec sha256: 69ac8a580508aa26bce28f4a88e0f77c0b28e33b1f2694eb6cf4bbbcae64a5df
  * tools: sympy 1.14.0, casadi 3.8.2, jinja2 3.1.6
@@ -73,12 +73,12 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a06=arg[1]? arg[1][3] : 0;
   a06=(a06+a00);
   a06=casadi_sq(a06);
-  a00=arg[2]? arg[2][7] : 0;
-  a07=arg[0]? arg[0][3] : 0;
-  a07=(a07+a02);
-  a08=cos(a07);
-  a08=(a00*a08);
-  a09=(a06*a08);
+  a00=arg[0]? arg[0][3] : 0;
+  a00=(a00+a02);
+  a07=cos(a00);
+  a08=arg[2]? arg[2][7] : 0;
+  a07=(a07*a08);
+  a09=(a06*a07);
   a05=(a05+a09);
   a09=arg[2]? arg[2][1] : 0;
   a05=(a05*a09);
@@ -87,32 +87,33 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a02=sin(a02);
   a04=(a04*a02);
   a01=(a01*a04);
-  a07=sin(a07);
-  a00=(a00*a07);
+  a00=sin(a00);
+  a00=(a00*a08);
   a06=(a06*a00);
   a01=(a01+a06);
-  a01=(a01*a09);
-  a09=(-a01);
-  if (res[0]!=0) res[0][1]=a09;
-  a09=arg[0]? arg[0][0] : 0;
   a06=(a01*a09);
-  a07=arg[0]? arg[0][1] : 0;
-  a02=(a05*a07);
-  a06=(a06-a02);
-  a04=(a04+a07);
+  a08=(-a06);
+  if (res[0]!=0) res[0][1]=a08;
+  a08=arg[0]? arg[0][1] : 0;
+  a04=(a04+a08);
   a00=(a00+a04);
   a00=(a05*a00);
-  a03=(a03+a09);
-  a08=(a08+a03);
-  a08=(a01*a08);
-  a00=(a00-a08);
-  a06=(a06+a00);
-  if (res[0]!=0) res[0][2]=a06;
-  a01=(a01*a03);
+  a02=arg[0]? arg[0][0] : 0;
+  a03=(a03+a02);
+  a07=(a07+a03);
+  a01=(a01*a07);
+  a01=(a01*a09);
+  a00=(a00-a01);
+  a08=(a05*a08);
+  a08=(a00-a08);
+  a02=(a06*a02);
+  a08=(a08+a02);
+  if (res[0]!=0) res[0][2]=a08;
   a05=(a05*a04);
-  a01=(a01-a05);
-  a01=(a01+a00);
-  if (res[0]!=0) res[0][3]=a01;
+  a00=(a00-a05);
+  a06=(a06*a03);
+  a00=(a00+a06);
+  if (res[0]!=0) res[0][3]=a00;
   return 0;
 }
 

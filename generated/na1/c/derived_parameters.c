@@ -1,5 +1,5 @@
 /* GENERATED FILE - DO NOT EDIT. C code emitted by CasADi for derived_parameters() of
- * generated/na1/model.py, plus its batched driver.
+ * generated/na1/ (see its model.py), plus its batched driver.
  * Regenerate with: python -m snakecg_derive --checked-in
  * spec sha256: 69ac8a580508aa26bce28f4a88e0f77c0b28e33b1f2694eb6cf4bbbcae64a5df
  * tools: sympy 1.14.0, casadi 3.8.2, jinja2 3.1.6
@@ -85,17 +85,17 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a0=(a6*a1);
   if (res[0]!=0) res[0][10]=a0;
   a2=casadi_sq(a2);
-  a2=(a2*a1);
+  a2=(a1*a2);
   if (res[0]!=0) res[0][11]=a2;
-  a5=(a6*a5);
+  a5=(a5*a6);
   if (res[0]!=0) res[0][12]=a5;
   a6=casadi_sq(a6);
-  a6=(a6*a1);
-  if (res[0]!=0) res[0][13]=a6;
-  a3=(a3+a2);
-  if (res[0]!=0) res[0][14]=a3;
-  a4=(a4+a6);
-  if (res[0]!=0) res[0][15]=a4;
+  a1=(a1*a6);
+  if (res[0]!=0) res[0][13]=a1;
+  a2=(a2+a3);
+  if (res[0]!=0) res[0][14]=a2;
+  a1=(a1+a4);
+  if (res[0]!=0) res[0][15]=a1;
   return 0;
 }
 

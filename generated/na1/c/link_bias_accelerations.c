@@ -1,5 +1,5 @@
 /* GENERATED FILE - DO NOT EDIT. C code emitted by CasADi for link_bias_accelerations() of
- * generated/na1/model.py, plus its batched driver.
+ * generated/na1/ (see its model.py), plus its batched driver.
  * Regenerate with: python -m snakecg_derive --checked-in
  * spec sha256: 69ac8a580508aa26bce28f4a88e0f77c0b28e33b1f2694eb6cf4bbbcae64a5df
  * tools: sympy 1.14.0, casadi 3.8.2, jinja2 3.1.6

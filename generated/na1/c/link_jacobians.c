@@ -1,5 +1,5 @@
 /* GENERATED FILE - DO NOT EDIT. C code emitted by CasADi for link_jacobians() of
- * generated/na1/model.py, plus its batched driver.
+ * generated/na1/ (see its model.py), plus its batched driver.
  * Regenerate with: python -m snakecg_derive --checked-in
  * spec sha256: 69ac8a580508aa26bce28f4a88e0f77c0b28e33b1f2694eb6cf4bbbcae64a5df
  * tools: sympy 1.14.0, casadi 3.8.2, jinja2 3.1.6
@@ -78,37 +78,37 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   if (res[0]!=0) res[0][13]=a1;
   if (res[0]!=0) res[0][14]=a0;
   a2=arg[0]? arg[0][1] : 0;
-  a3=arg[1]? arg[1][7] : 0;
-  a4=arg[0]? arg[0][3] : 0;
-  a5=arg[0]? arg[0][2] : 0;
-  a4=(a4+a5);
-  a6=sin(a4);
-  a6=(a3*a6);
-  a7=arg[1]? arg[1][2] : 0;
-  a8=arg[1]? arg[1][6] : 0;
-  a7=(a7-a8);
-  a8=sin(a5);
-  a8=(a7*a8);
-  a8=(a8+a2);
-  a8=(a6+a8);
-  a2=(a2-a8);
-  if (res[0]!=0) res[0][15]=a2;
-  a4=cos(a4);
-  a3=(a3*a4);
-  a5=cos(a5);
-  a5=(a5*a7);
-  a7=arg[0]? arg[0][0] : 0;
+  a3=arg[1]? arg[1][2] : 0;
+  a4=arg[1]? arg[1][6] : 0;
+  a3=(a3-a4);
+  a4=arg[0]? arg[0][2] : 0;
+  a5=sin(a4);
+  a5=(a3*a5);
+  a5=(a2+a5);
+  a6=arg[0]? arg[0][3] : 0;
+  a6=(a6+a4);
+  a7=sin(a6);
+  a8=arg[1]? arg[1][7] : 0;
+  a7=(a7*a8);
   a5=(a5+a7);
-  a5=(a3+a5);
-  a5=(a5-a7);
-  if (res[0]!=0) res[0][16]=a5;
+  a2=(a2-a5);
+  if (res[0]!=0) res[0][15]=a2;
+  a2=arg[0]? arg[0][0] : 0;
+  a4=cos(a4);
+  a4=(a4*a3);
+  a4=(a2+a4);
+  a6=cos(a6);
+  a6=(a6*a8);
+  a4=(a4+a6);
+  a4=(a4-a2);
+  if (res[0]!=0) res[0][16]=a4;
   if (res[0]!=0) res[0][17]=a0;
   if (res[0]!=0) res[0][18]=a1;
   if (res[0]!=0) res[0][19]=a1;
   if (res[0]!=0) res[0][20]=a1;
-  a6=(-a6);
-  if (res[0]!=0) res[0][21]=a6;
-  if (res[0]!=0) res[0][22]=a3;
+  a7=(-a7);
+  if (res[0]!=0) res[0][21]=a7;
+  if (res[0]!=0) res[0][22]=a6;
   if (res[0]!=0) res[0][23]=a0;
   return 0;
 }

@@ -1,5 +1,5 @@
 /* GENERATED FILE - DO NOT EDIT. C code emitted by CasADi for mass_matrix() of
- * generated/na1/model.py, plus its batched driver.
+ * generated/na1/ (see its model.py), plus its batched driver.
  * Regenerate with: python -m snakecg_derive --checked-in
  * spec sha256: 69ac8a580508aa26bce28f4a88e0f77c0b28e33b1f2694eb6cf4bbbcae64a5df
  * tools: sympy 1.14.0, casadi 3.8.2, jinja2 3.1.6
@@ -89,22 +89,22 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   if (res[0]!=0) res[0][7]=a2;
   if (res[0]!=0) res[0][8]=a9;
   if (res[0]!=0) res[0][9]=a7;
-  a7=arg[1]? arg[1][14] : 0;
   a4=(a4*a3);
   a8=(a8*a5);
   a4=(a4+a8);
   a8=arg[1]? arg[1][12] : 0;
   a4=(a4*a8);
-  a7=(a7+a4);
-  a8=arg[1]? arg[1][15] : 0;
-  a4=(a8+a4);
-  a7=(a7+a4);
-  if (res[0]!=0) res[0][10]=a7;
+  a8=arg[1]? arg[1][14] : 0;
+  a8=(a4+a8);
+  a5=arg[1]? arg[1][15] : 0;
+  a4=(a4+a5);
+  a8=(a8+a4);
+  if (res[0]!=0) res[0][10]=a8;
   if (res[0]!=0) res[0][11]=a4;
   if (res[0]!=0) res[0][12]=a6;
   if (res[0]!=0) res[0][13]=a2;
   if (res[0]!=0) res[0][14]=a4;
-  if (res[0]!=0) res[0][15]=a8;
+  if (res[0]!=0) res[0][15]=a5;
   return 0;
 }
 

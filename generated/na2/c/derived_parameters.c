@@ -1,5 +1,5 @@
 /* GENERATED FILE - DO NOT EDIT. C code emitted by CasADi for derived_parameters() of
- * generated/na2/model.py, plus its batched driver.
+ * generated/na2/ (see its model.py), plus its batched driver.
  * Regenerate with: python -m snakecg_derive --checked-in
  * spec sha256: 92aa81f73b9d7ff69afc31c561cda203208b6d2de4fc2c5b6871a20f60622a96
  * tools: sympy 1.14.0, casadi 3.8.2, jinja2 3.1.6
@@ -94,40 +94,40 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a00=(a03*a02);
   a11=(a08+a00);
   if (res[0]!=0) res[0][13]=a11;
-  a11=(a09*a01);
-  a12=(a04*a02);
-  a11=(a11+a12);
-  if (res[0]!=0) res[0][14]=a11;
-  a11=(a10*a02);
-  if (res[0]!=0) res[0][15]=a11;
+  a11=(a04*a02);
+  a12=(a09*a01);
+  a12=(a11+a12);
+  if (res[0]!=0) res[0][14]=a12;
+  a12=(a10*a02);
+  if (res[0]!=0) res[0][15]=a12;
   a03=casadi_sq(a03);
-  a11=(a03*a01);
+  a12=(a03*a01);
   a03=(a03*a02);
-  a11=(a11+a03);
-  if (res[0]!=0) res[0][16]=a11;
-  a08=(a09*a08);
+  a12=(a12+a03);
+  if (res[0]!=0) res[0][16]=a12;
+  a08=(a08*a09);
   a03=(a00*a04);
   a08=(a08+a03);
   if (res[0]!=0) res[0][17]=a08;
-  a00=(a10*a00);
+  a00=(a00*a10);
   if (res[0]!=0) res[0][18]=a00;
   a09=casadi_sq(a09);
-  a09=(a09*a01);
+  a01=(a01*a09);
   a04=casadi_sq(a04);
-  a04=(a04*a02);
-  a09=(a09+a04);
-  if (res[0]!=0) res[0][19]=a09;
-  a12=(a10*a12);
-  if (res[0]!=0) res[0][20]=a12;
+  a04=(a02*a04);
+  a01=(a01+a04);
+  if (res[0]!=0) res[0][19]=a01;
+  a11=(a11*a10);
+  if (res[0]!=0) res[0][20]=a11;
   a10=casadi_sq(a10);
-  a10=(a10*a02);
-  if (res[0]!=0) res[0][21]=a10;
-  a05=(a05+a11);
-  if (res[0]!=0) res[0][22]=a05;
-  a06=(a06+a09);
-  if (res[0]!=0) res[0][23]=a06;
-  a07=(a07+a10);
-  if (res[0]!=0) res[0][24]=a07;
+  a02=(a02*a10);
+  if (res[0]!=0) res[0][21]=a02;
+  a12=(a12+a05);
+  if (res[0]!=0) res[0][22]=a12;
+  a01=(a01+a06);
+  if (res[0]!=0) res[0][23]=a01;
+  a02=(a02+a07);
+  if (res[0]!=0) res[0][24]=a02;
   return 0;
 }
 

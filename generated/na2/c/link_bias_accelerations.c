@@ -1,5 +1,5 @@
 /* GENERATED FILE - DO NOT EDIT. C code emitted by CasADi for link_bias_accelerations() of
- * generated/na2/model.py, plus its batched driver.
+ * generated/na2/ (see its model.py), plus its batched driver.
  * Regenerate with: python -m snakecg_derive --checked-in
  * spec sha256: 92aa81f73b9d7ff69afc31c561cda203208b6d2de4fc2c5b6871a20f60622a96
  * tools: sympy 1.14.0, casadi 3.8.2, jinja2 3.1.6
@@ -79,11 +79,11 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a05=arg[0]? arg[0][3] : 0;
   a05=(a05+a01);
   a06=cos(a05);
-  a07=arg[2]? arg[2][10] : 0;
-  a08=arg[1]? arg[1][3] : 0;
-  a08=(a08+a03);
-  a03=casadi_sq(a08);
-  a09=(a07*a03);
+  a07=arg[1]? arg[1][3] : 0;
+  a07=(a07+a03);
+  a03=casadi_sq(a07);
+  a08=arg[2]? arg[2][10] : 0;
+  a09=(a03*a08);
   a10=(a06*a09);
   a02=(a02+a10);
   a10=(-a02);
@@ -97,7 +97,7 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   if (res[0]!=0) res[0][4]=a09;
   if (res[0]!=0) res[0][5]=a00;
   a09=arg[2]? arg[2][4] : 0;
-  a09=(a09-a07);
+  a09=(a09-a08);
   a03=(a03*a09);
   a06=(a06*a03);
   a02=(a02+a06);
@@ -105,10 +105,10 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a05=(a05+a06);
   a06=cos(a05);
   a09=arg[2]? arg[2][11] : 0;
-  a07=arg[1]? arg[1][4] : 0;
-  a08=(a08+a07);
-  a08=casadi_sq(a08);
-  a09=(a09*a08);
+  a08=arg[1]? arg[1][4] : 0;
+  a07=(a07+a08);
+  a07=casadi_sq(a07);
+  a09=(a09*a07);
   a06=(a06*a09);
   a02=(a02+a06);
   a02=(-a02);

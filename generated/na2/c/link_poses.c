@@ -1,5 +1,5 @@
 /* GENERATED FILE - DO NOT EDIT. C code emitted by CasADi for link_poses() of
- * generated/na2/model.py, plus its batched driver.
+ * generated/na2/ (see its model.py), plus its batched driver.
  * Regenerate with: python -m snakecg_derive --checked-in
  * spec sha256: 92aa81f73b9d7ff69afc31c561cda203208b6d2de4fc2c5b6871a20f60622a96
  * tools: sympy 1.14.0, casadi 3.8.2, jinja2 3.1.6
@@ -59,52 +59,52 @@ static const casadi_int casadi_s2[3] = {3, 3, 1};
 
 /* snakecg_na2_link_poses:(q[5],K[25])->(poses[3x3]) */
 static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
-  casadi_real a0, a1, a2, a3, a4, a5, a6, a7, a8, a9;
+  casadi_real a0, a1, a2, a3, a4, a5, a6, a7;
   a0=arg[0]? arg[0][0] : 0;
   if (res[0]!=0) res[0][0]=a0;
   a1=arg[0]? arg[0][1] : 0;
   if (res[0]!=0) res[0][1]=a1;
   a2=arg[0]? arg[0][2] : 0;
   if (res[0]!=0) res[0][2]=a2;
-  a3=arg[1]? arg[1][10] : 0;
-  a4=arg[0]? arg[0][3] : 0;
-  a4=(a4+a2);
-  a5=cos(a4);
-  a6=(a3*a5);
-  a7=cos(a2);
-  a8=arg[1]? arg[1][3] : 0;
-  a9=arg[1]? arg[1][9] : 0;
-  a8=(a8-a9);
-  a7=(a7*a8);
-  a7=(a7+a0);
-  a6=(a6+a7);
-  if (res[0]!=0) res[0][3]=a6;
-  a7=sin(a4);
-  a0=(a3*a7);
+  a3=cos(a2);
+  a4=arg[1]? arg[1][3] : 0;
+  a5=arg[1]? arg[1][9] : 0;
+  a4=(a4-a5);
+  a3=(a3*a4);
+  a0=(a0+a3);
+  a3=arg[0]? arg[0][3] : 0;
+  a3=(a3+a2);
+  a5=cos(a3);
+  a6=arg[1]? arg[1][10] : 0;
+  a7=(a5*a6);
+  a0=(a0+a7);
+  if (res[0]!=0) res[0][3]=a0;
   a2=sin(a2);
-  a8=(a8*a2);
-  a8=(a8+a1);
-  a0=(a0+a8);
-  if (res[0]!=0) res[0][4]=a0;
-  if (res[0]!=0) res[0][5]=a4;
-  a8=arg[1]? arg[1][11] : 0;
-  a1=arg[0]? arg[0][4] : 0;
-  a4=(a4+a1);
-  a1=cos(a4);
-  a1=(a8*a1);
+  a4=(a4*a2);
+  a1=(a1+a4);
+  a4=sin(a3);
+  a2=(a4*a6);
+  a1=(a1+a2);
+  if (res[0]!=0) res[0][4]=a1;
+  if (res[0]!=0) res[0][5]=a3;
   a2=arg[1]? arg[1][4] : 0;
-  a2=(a2-a3);
+  a2=(a2-a6);
   a5=(a5*a2);
-  a5=(a5+a6);
-  a1=(a1+a5);
-  if (res[0]!=0) res[0][6]=a1;
-  a1=sin(a4);
-  a8=(a8*a1);
-  a2=(a2*a7);
-  a2=(a2+a0);
-  a8=(a8+a2);
-  if (res[0]!=0) res[0][7]=a8;
-  if (res[0]!=0) res[0][8]=a4;
+  a0=(a0+a5);
+  a5=arg[0]? arg[0][4] : 0;
+  a3=(a3+a5);
+  a5=cos(a3);
+  a6=arg[1]? arg[1][11] : 0;
+  a5=(a5*a6);
+  a0=(a0+a5);
+  if (res[0]!=0) res[0][6]=a0;
+  a2=(a2*a4);
+  a1=(a1+a2);
+  a2=sin(a3);
+  a2=(a2*a6);
+  a1=(a1+a2);
+  if (res[0]!=0) res[0][7]=a1;
+  if (res[0]!=0) res[0][8]=a3;
   return 0;
 }
 
@@ -197,7 +197,7 @@ CASADI_SYMBOL_EXPORT int snakecg_na2_batch_link_poses(casadi_int n, const casadi
   const casadi_real* a[2];
   casadi_real* r[1];
   casadi_int* iw = (casadi_int*) malloc(sizeof(casadi_int) * 1);
-  casadi_real* w = (casadi_real*) malloc(sizeof(casadi_real) * 11);
+  casadi_real* w = (casadi_real*) malloc(sizeof(casadi_real) * 9);
   casadi_int i, k;
   int status = 0;
   if (!iw || !w) { free(iw); free(w); return -1; }

@@ -1,5 +1,5 @@
 /* GENERATED FILE - DO NOT EDIT. C code emitted by CasADi for mass_matrix() of
- * generated/na2/model.py, plus its batched driver.
+ * generated/na2/ (see its model.py), plus its batched driver.
  * Regenerate with: python -m snakecg_derive --checked-in
  * spec sha256: 92aa81f73b9d7ff69afc31c561cda203208b6d2de4fc2c5b6871a20f60622a96
  * tools: sympy 1.14.0, casadi 3.8.2, jinja2 3.1.6
@@ -107,36 +107,36 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a11=(a11+a13);
   a13=arg[1]? arg[1][17] : 0;
   a11=(a11*a13);
-  a13=arg[1]? arg[1][23] : 0;
   a03=(a03*a05);
   a09=(a09*a06);
   a03=(a03+a09);
   a09=arg[1]? arg[1][20] : 0;
   a03=(a03*a09);
-  a13=(a13+a03);
-  a09=(a11+a13);
+  a09=arg[1]? arg[1][23] : 0;
+  a09=(a03+a09);
+  a13=(a11+a09);
   a04=(a04*a05);
   a12=(a12*a06);
   a04=(a04+a12);
   a12=arg[1]? arg[1][18] : 0;
   a04=(a04*a12);
   a12=arg[1]? arg[1][24] : 0;
-  a03=(a12+a03);
+  a03=(a03+a12);
   a06=(a04+a03);
-  a09=(a09+a06);
-  a05=arg[1]? arg[1][22] : 0;
+  a13=(a13+a06);
   a11=(a11+a04);
-  a05=(a05+a11);
-  a09=(a09+a05);
-  if (res[0]!=0) res[0][12]=a09;
-  a13=(a13+a03);
-  a11=(a13+a11);
+  a04=arg[1]? arg[1][22] : 0;
+  a04=(a11+a04);
+  a13=(a13+a04);
+  if (res[0]!=0) res[0][12]=a13;
+  a09=(a09+a03);
+  a11=(a09+a11);
   if (res[0]!=0) res[0][13]=a11;
   if (res[0]!=0) res[0][14]=a06;
   if (res[0]!=0) res[0][15]=a10;
   if (res[0]!=0) res[0][16]=a08;
   if (res[0]!=0) res[0][17]=a11;
-  if (res[0]!=0) res[0][18]=a13;
+  if (res[0]!=0) res[0][18]=a09;
   if (res[0]!=0) res[0][19]=a03;
   if (res[0]!=0) res[0][20]=a07;
   if (res[0]!=0) res[0][21]=a02;

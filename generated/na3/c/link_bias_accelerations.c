@@ -1,5 +1,5 @@
 /* GENERATED FILE - DO NOT EDIT. C code emitted by CasADi for link_bias_accelerations() of
- * generated/na3/model.py, plus its batched driver.
+ * generated/na3/ (see its model.py), plus its batched driver.
  * Regenerate with: python -m snakecg_derive --checked-in
  * spec sha256: 69afcae47b2eaa6ce5aa482e0c177afbb935d52c01aa7750c6d88b22d6df6370
  * tools: sympy 1.14.0, casadi 3.8.2, jinja2 3.1.6
@@ -79,11 +79,11 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a05=arg[0]? arg[0][3] : 0;
   a05=(a05+a01);
   a06=cos(a05);
-  a07=arg[2]? arg[2][13] : 0;
-  a08=arg[1]? arg[1][3] : 0;
-  a08=(a08+a03);
-  a03=casadi_sq(a08);
-  a09=(a07*a03);
+  a07=arg[1]? arg[1][3] : 0;
+  a07=(a07+a03);
+  a03=casadi_sq(a07);
+  a08=arg[2]? arg[2][13] : 0;
+  a09=(a03*a08);
   a10=(a06*a09);
   a02=(a02+a10);
   a10=(-a02);
@@ -97,18 +97,18 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   if (res[0]!=0) res[0][4]=a09;
   if (res[0]!=0) res[0][5]=a00;
   a09=arg[2]? arg[2][5] : 0;
-  a09=(a09-a07);
+  a09=(a09-a08);
   a03=(a03*a09);
   a06=(a06*a03);
   a02=(a02+a06);
   a06=arg[0]? arg[0][4] : 0;
   a05=(a05+a06);
   a06=cos(a05);
-  a09=arg[2]? arg[2][14] : 0;
-  a07=arg[1]? arg[1][4] : 0;
-  a08=(a08+a07);
-  a07=casadi_sq(a08);
-  a10=(a09*a07);
+  a09=arg[1]? arg[1][4] : 0;
+  a07=(a07+a09);
+  a09=casadi_sq(a07);
+  a08=arg[2]? arg[2][14] : 0;
+  a10=(a09*a08);
   a11=(a06*a10);
   a02=(a02+a11);
   a11=(-a02);
@@ -122,24 +122,24 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   if (res[0]!=0) res[0][7]=a10;
   if (res[0]!=0) res[0][8]=a00;
   a10=arg[2]? arg[2][6] : 0;
-  a10=(a10-a09);
-  a07=(a07*a10);
-  a06=(a06*a07);
+  a10=(a10-a08);
+  a09=(a09*a10);
+  a06=(a06*a09);
   a02=(a02+a06);
   a06=arg[0]? arg[0][5] : 0;
   a05=(a05+a06);
   a06=cos(a05);
   a10=arg[2]? arg[2][15] : 0;
-  a09=arg[1]? arg[1][5] : 0;
-  a08=(a08+a09);
-  a08=casadi_sq(a08);
-  a10=(a10*a08);
+  a08=arg[1]? arg[1][5] : 0;
+  a07=(a07+a08);
+  a07=casadi_sq(a07);
+  a10=(a10*a07);
   a06=(a06*a10);
   a02=(a02+a06);
   a02=(-a02);
   if (res[0]!=0) res[0][9]=a02;
-  a07=(a07*a03);
-  a04=(a04+a07);
+  a09=(a09*a03);
+  a04=(a04+a09);
   a05=sin(a05);
   a10=(a10*a05);
   a04=(a04+a10);

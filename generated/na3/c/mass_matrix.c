@@ -1,5 +1,5 @@
 /* GENERATED FILE - DO NOT EDIT. C code emitted by CasADi for mass_matrix() of
- * generated/na3/model.py, plus its batched driver.
+ * generated/na3/ (see its model.py), plus its batched driver.
  * Regenerate with: python -m snakecg_derive --checked-in
  * spec sha256: 69afcae47b2eaa6ce5aa482e0c177afbb935d52c01aa7750c6d88b22d6df6370
  * tools: sympy 1.14.0, casadi 3.8.2, jinja2 3.1.6
@@ -124,15 +124,15 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a17=(a17+a00);
   a00=arg[1]? arg[1][26] : 0;
   a17=(a17*a00);
-  a00=arg[1]? arg[1][33] : 0;
   a05=(a05*a06);
   a10=(a10*a07);
   a05=(a05+a10);
   a10=arg[1]? arg[1][29] : 0;
   a05=(a05*a10);
-  a00=(a00+a05);
-  a10=(a17+a00);
-  a01=(a15+a10);
+  a10=arg[1]? arg[1][33] : 0;
+  a10=(a05+a10);
+  a00=(a17+a10);
+  a01=(a15+a00);
   a18=(a04*a06);
   a19=(a16*a07);
   a18=(a18+a19);
@@ -144,7 +144,7 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a07=arg[1]? arg[1][27] : 0;
   a06=(a06*a07);
   a07=arg[1]? arg[1][34] : 0;
-  a05=(a07+a05);
+  a05=(a05+a07);
   a19=(a06+a05);
   a20=(a18+a19);
   a01=(a01+a20);
@@ -153,37 +153,37 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a04=(a04+a16);
   a16=arg[1]? arg[1][22] : 0;
   a04=(a04*a16);
-  a16=arg[1]? arg[1][32] : 0;
   a17=(a17+a06);
-  a16=(a16+a17);
-  a06=(a04+a16);
-  a01=(a01+a06);
-  a06=arg[1]? arg[1][31] : 0;
+  a06=arg[1]? arg[1][32] : 0;
+  a06=(a17+a06);
+  a16=(a04+a06);
+  a01=(a01+a16);
   a15=(a15+a18);
   a04=(a04+a15);
-  a06=(a06+a04);
-  a01=(a01+a06);
+  a18=arg[1]? arg[1][31] : 0;
+  a18=(a04+a18);
+  a01=(a01+a18);
   if (res[0]!=0) res[0][14]=a01;
-  a10=(a10+a19);
-  a10=(a10+a16);
-  a04=(a10+a04);
+  a00=(a00+a19);
+  a00=(a00+a06);
+  a04=(a00+a04);
   if (res[0]!=0) res[0][15]=a04;
-  a00=(a00+a05);
-  a17=(a00+a17);
+  a10=(a10+a05);
+  a17=(a10+a17);
   a15=(a17+a15);
   if (res[0]!=0) res[0][16]=a15;
   if (res[0]!=0) res[0][17]=a20;
   if (res[0]!=0) res[0][18]=a14;
   if (res[0]!=0) res[0][19]=a12;
   if (res[0]!=0) res[0][20]=a04;
-  if (res[0]!=0) res[0][21]=a10;
+  if (res[0]!=0) res[0][21]=a00;
   if (res[0]!=0) res[0][22]=a17;
   if (res[0]!=0) res[0][23]=a19;
   if (res[0]!=0) res[0][24]=a11;
   if (res[0]!=0) res[0][25]=a09;
   if (res[0]!=0) res[0][26]=a15;
   if (res[0]!=0) res[0][27]=a17;
-  if (res[0]!=0) res[0][28]=a00;
+  if (res[0]!=0) res[0][28]=a10;
   if (res[0]!=0) res[0][29]=a05;
   if (res[0]!=0) res[0][30]=a08;
   if (res[0]!=0) res[0][31]=a02;

@@ -1,7 +1,7 @@
 /* GENERATED FILE - DO NOT EDIT. C code emitted by CasADi for link_bias_accelerations() of
- * generated/na4/model.py, plus its batched driver.
+ * generated/na4/ (see its model.py), plus its batched driver.
  * Regenerate with: python -m snakecg_derive --checked-in
- * spec sha256: 6d3cf60c2e6a2bf3e65c7081e859d5528051df9e704c67e6cb3fdb0b6abc56ce
+ * spec sha256: c17be30c8ed658f5fdab620648da74befd8183e9bc07b031fe66b9545c3db6bc
  * tools: sympy 1.14.0, casadi 3.8.2, jinja2 3.1.6
  */
 /* How to prefix internal symbols */
@@ -79,11 +79,11 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a05=arg[0]? arg[0][3] : 0;
   a05=(a05+a01);
   a06=cos(a05);
-  a07=arg[2]? arg[2][16] : 0;
-  a08=arg[1]? arg[1][3] : 0;
-  a08=(a08+a03);
-  a03=casadi_sq(a08);
-  a09=(a07*a03);
+  a07=arg[1]? arg[1][3] : 0;
+  a07=(a07+a03);
+  a03=casadi_sq(a07);
+  a08=arg[2]? arg[2][16] : 0;
+  a09=(a03*a08);
   a10=(a06*a09);
   a02=(a02+a10);
   a10=(-a02);
@@ -97,18 +97,18 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   if (res[0]!=0) res[0][4]=a09;
   if (res[0]!=0) res[0][5]=a00;
   a09=arg[2]? arg[2][6] : 0;
-  a09=(a09-a07);
+  a09=(a09-a08);
   a03=(a03*a09);
   a06=(a06*a03);
   a02=(a02+a06);
   a06=arg[0]? arg[0][4] : 0;
   a05=(a05+a06);
   a06=cos(a05);
-  a09=arg[2]? arg[2][17] : 0;
-  a07=arg[1]? arg[1][4] : 0;
-  a08=(a08+a07);
-  a07=casadi_sq(a08);
-  a10=(a09*a07);
+  a09=arg[1]? arg[1][4] : 0;
+  a07=(a07+a09);
+  a09=casadi_sq(a07);
+  a08=arg[2]? arg[2][17] : 0;
+  a10=(a09*a08);
   a11=(a06*a10);
   a02=(a02+a11);
   a11=(-a02);
@@ -122,43 +122,43 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   if (res[0]!=0) res[0][7]=a10;
   if (res[0]!=0) res[0][8]=a00;
   a10=arg[2]? arg[2][7] : 0;
-  a10=(a10-a09);
-  a07=(a07*a10);
-  a06=(a06*a07);
+  a10=(a10-a08);
+  a09=(a09*a10);
+  a06=(a06*a09);
   a02=(a02+a06);
   a06=arg[0]? arg[0][5] : 0;
   a05=(a05+a06);
   a06=cos(a05);
-  a10=arg[2]? arg[2][18] : 0;
-  a09=arg[1]? arg[1][5] : 0;
-  a08=(a08+a09);
-  a09=casadi_sq(a08);
-  a01=(a10*a09);
+  a10=arg[1]? arg[1][5] : 0;
+  a07=(a07+a10);
+  a10=casadi_sq(a07);
+  a08=arg[2]? arg[2][18] : 0;
+  a01=(a10*a08);
   a11=(a06*a01);
   a02=(a02+a11);
   a11=(-a02);
   if (res[0]!=0) res[0][9]=a11;
-  a07=(a07*a03);
-  a04=(a04+a07);
-  a07=sin(a05);
-  a01=(a01*a07);
+  a09=(a09*a03);
+  a04=(a04+a09);
+  a09=sin(a05);
+  a01=(a01*a09);
   a04=(a04+a01);
   a01=(-a04);
   if (res[0]!=0) res[0][10]=a01;
   if (res[0]!=0) res[0][11]=a00;
   a01=arg[2]? arg[2][8] : 0;
-  a01=(a01-a10);
-  a09=(a09*a01);
-  a06=(a06*a09);
+  a01=(a01-a08);
+  a10=(a10*a01);
+  a06=(a06*a10);
   a02=(a02+a06);
   a06=arg[0]? arg[0][6] : 0;
   a05=(a05+a06);
   a06=cos(a05);
   a01=arg[2]? arg[2][19] : 0;
-  a10=arg[1]? arg[1][6] : 0;
-  a08=(a08+a10);
-  a08=casadi_sq(a08);
-  a01=(a01*a08);
+  a08=arg[1]? arg[1][6] : 0;
+  a07=(a07+a08);
+  a07=casadi_sq(a07);
+  a01=(a01*a07);
   a06=(a06*a01);
   a02=(a02+a06);
   a02=(-a02);
@@ -166,8 +166,8 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a05=sin(a05);
   a01=(a01*a05);
   a04=(a04+a01);
-  a09=(a09*a07);
-  a04=(a04+a09);
+  a10=(a10*a09);
+  a04=(a04+a10);
   a04=(-a04);
   if (res[0]!=0) res[0][13]=a04;
   if (res[0]!=0) res[0][14]=a00;

@@ -1,7 +1,7 @@
 /* GENERATED FILE - DO NOT EDIT. C code emitted by CasADi for wheel_row_local() of
- * generated/na4/model.py, plus its batched driver.
+ * generated/na4/ (see its model.py), plus its batched driver.
  * Regenerate with: python -m snakecg_derive --checked-in
- * spec sha256: 6d3cf60c2e6a2bf3e65c7081e859d5528051df9e704c67e6cb3fdb0b6abc56ce
+ * spec sha256: c17be30c8ed658f5fdab620648da74befd8183e9bc07b031fe66b9545c3db6bc
  * tools: sympy 1.14.0, casadi 3.8.2, jinja2 3.1.6
  */
 /* How to prefix internal symbols */
@@ -59,7 +59,7 @@ static const casadi_int casadi_s2[3] = {1, 3, 1};
 
 /* snakecg_na4_wheel_row_local:(link_pose[3],link_twist[3],link_bias[3],wheel_offset)->(a_w[1x3],adot_v) */
 static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
-  casadi_real a0, a1, a2, a3, a4, a5;
+  casadi_real a0, a1, a2, a3, a4;
   a0=arg[0]? arg[0][2] : 0;
   a1=sin(a0);
   a2=(-a1);
@@ -70,21 +70,21 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   if (res[0]!=0) res[0][2]=a2;
   a3=arg[2]? arg[2][1] : 0;
   a3=(a0*a3);
+  a4=arg[2]? arg[2][2] : 0;
+  a4=(a4*a2);
+  a3=(a3+a4);
   a4=arg[2]? arg[2][0] : 0;
   a4=(a1*a4);
-  a5=arg[1]? arg[1][1] : 0;
-  a1=(a1*a5);
-  a5=arg[1]? arg[1][2] : 0;
-  a1=(a1*a5);
-  a4=(a4+a1);
   a3=(a3-a4);
-  a4=arg[1]? arg[1][0] : 0;
+  a4=arg[1]? arg[1][1] : 0;
+  a1=(a1*a4);
+  a4=arg[1]? arg[1][2] : 0;
+  a1=(a1*a4);
+  a3=(a3-a1);
+  a1=arg[1]? arg[1][0] : 0;
+  a0=(a0*a1);
   a0=(a0*a4);
-  a0=(a0*a5);
   a3=(a3-a0);
-  a0=arg[2]? arg[2][2] : 0;
-  a0=(a0*a2);
-  a3=(a3+a0);
   if (res[1]!=0) res[1][0]=a3;
   return 0;
 }
@@ -184,7 +184,7 @@ CASADI_SYMBOL_EXPORT int snakecg_na4_batch_wheel_row_local(casadi_int n, const c
   const casadi_real* a[4];
   casadi_real* r[2];
   casadi_int* iw = (casadi_int*) malloc(sizeof(casadi_int) * 1);
-  casadi_real* w = (casadi_real*) malloc(sizeof(casadi_real) * 7);
+  casadi_real* w = (casadi_real*) malloc(sizeof(casadi_real) * 6);
   casadi_int i, k;
   int status = 0;
   if (!iw || !w) { free(iw); free(w); return -1; }

@@ -1,7 +1,7 @@
 /* GENERATED FILE - DO NOT EDIT. C code emitted by CasADi for contact_row_local() of
- * generated/na5/model.py, plus its batched driver.
+ * generated/na5/ (see its model.py), plus its batched driver.
  * Regenerate with: python -m snakecg_derive --checked-in
- * spec sha256: 1460327b5bcebd354746349675e3369d37c437b9be0451e2a5175b43e20c9c22
+ * spec sha256: 081c0266481fbdc381d2ced6d344ec44d67e55b289aebfd120e3059972e91f55
  * tools: sympy 1.14.0, casadi 3.8.2, jinja2 3.1.6
  */
 /* How to prefix internal symbols */
@@ -29,7 +29,6 @@
 #define casadi_s1 CASADI_PREFIX(s1)
 #define casadi_s2 CASADI_PREFIX(s2)
 #define casadi_s3 CASADI_PREFIX(s3)
-#define casadi_sq CASADI_PREFIX(sq)
 
 /* Symbol visibility in DLLs */
 #ifndef CASADI_SYMBOL_EXPORT
@@ -45,8 +44,6 @@
     #define CASADI_SYMBOL_EXPORT
   #endif
 #endif
-
-casadi_real casadi_sq(casadi_real x) { return x*x;}
 
 /* Configuration this file was compiled with */
 CASADI_SYMBOL_EXPORT void snakecg_na5_contact_row_local_casadi_version(int* major, int* minor, int* patch) {
@@ -65,7 +62,7 @@ static const casadi_int casadi_s3[3] = {1, 3, 1};
 /* snakecg_na5_contact_row_local:(link_pose[3],link_twist[3],link_bias[3],link_com,object_pose[3],object_twist[3],rho[2],side)->(a_link[1x3],g_obj[1x3],adot_v,gap,s) */
 static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
-  casadi_real a12, a13, a14, a15, a16, a17;
+  casadi_real a12, a13, a14, a15, a16;
   a00=arg[0]? arg[0][2] : 0;
   a01=sin(a00);
   a02=arg[7]? arg[7][0] : 0;
@@ -75,101 +72,96 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a04=(a00*a02);
   a05=(-a04);
   if (res[0]!=0) res[0][1]=a05;
-  a05=casadi_sq(a01);
-  a06=arg[3]? arg[3][0] : 0;
-  a07=(a06*a02);
-  a05=(a05*a07);
-  a08=(a01*a06);
-  a09=arg[4]? arg[4][2] : 0;
-  a10=cos(a09);
-  a11=arg[6]? arg[6][1] : 0;
-  a12=(a10*a11);
-  a09=sin(a09);
-  a13=arg[6]? arg[6][0] : 0;
-  a14=(a09*a13);
-  a12=(a12+a14);
-  a08=(a08+a12);
-  a14=arg[0]? arg[0][1] : 0;
-  a08=(a08-a14);
-  a14=arg[4]? arg[4][1] : 0;
-  a08=(a08+a14);
-  a14=(a03*a08);
-  a05=(a05-a14);
-  a14=casadi_sq(a00);
-  a14=(a14*a07);
-  a05=(a05+a14);
-  a06=(a00*a06);
-  a10=(a10*a13);
-  a09=(a09*a11);
-  a10=(a10-a09);
-  a06=(a06+a10);
-  a09=arg[0]? arg[0][0] : 0;
-  a06=(a06-a09);
-  a09=arg[4]? arg[4][0] : 0;
-  a06=(a06+a09);
-  a09=(a04*a06);
-  a05=(a05-a09);
-  if (res[0]!=0) res[0][2]=a05;
-  a09=(-a03);
-  if (res[1]!=0) res[1][0]=a09;
+  a05=arg[3]? arg[3][0] : 0;
+  a06=(a02*a05);
+  a07=arg[4]? arg[4][2] : 0;
+  a08=cos(a07);
+  a09=arg[6]? arg[6][1] : 0;
+  a10=(a08*a09);
+  a07=sin(a07);
+  a11=arg[6]? arg[6][0] : 0;
+  a12=(a07*a11);
+  a10=(a10+a12);
+  a12=arg[4]? arg[4][1] : 0;
+  a12=(a10+a12);
+  a13=(a01*a05);
+  a12=(a12+a13);
+  a13=arg[0]? arg[0][1] : 0;
+  a12=(a12-a13);
+  a13=(a03*a12);
+  a06=(a06-a13);
+  a08=(a08*a11);
+  a07=(a07*a09);
+  a08=(a08-a07);
+  a07=arg[4]? arg[4][0] : 0;
+  a07=(a08+a07);
+  a05=(a00*a05);
+  a07=(a07+a05);
+  a05=arg[0]? arg[0][0] : 0;
+  a07=(a07-a05);
+  a05=(a04*a07);
+  a06=(a06-a05);
+  if (res[0]!=0) res[0][2]=a06;
+  a05=(-a03);
+  if (res[1]!=0) res[1][0]=a05;
   if (res[1]!=0) res[1][1]=a04;
-  a09=(a03*a12);
-  a11=(a00*a10);
-  a11=(a11*a02);
-  a09=(a09+a11);
-  if (res[1]!=0) res[1][2]=a09;
-  a09=arg[2]? arg[2][0] : 0;
-  a09=(a03*a09);
-  a11=arg[2]? arg[2][2] : 0;
-  a05=(a05*a11);
-  a09=(a09+a05);
-  a05=arg[1]? arg[1][0] : 0;
-  a05=(a04*a05);
-  a11=arg[1]? arg[1][2] : 0;
-  a13=(a05*a11);
-  a09=(a09+a13);
-  a13=arg[1]? arg[1][1] : 0;
-  a13=(a03*a13);
-  a14=(a13*a11);
-  a09=(a09+a14);
+  a05=(a00*a08);
+  a05=(a05*a02);
+  a09=(a03*a10);
+  a05=(a05+a09);
+  if (res[1]!=0) res[1][2]=a05;
+  a05=arg[2]? arg[2][0] : 0;
+  a05=(a03*a05);
+  a09=arg[2]? arg[2][2] : 0;
+  a06=(a06*a09);
+  a05=(a05+a06);
+  a06=arg[1]? arg[1][0] : 0;
+  a06=(a04*a06);
+  a09=arg[1]? arg[1][2] : 0;
+  a11=(a06*a09);
+  a05=(a05+a11);
+  a11=arg[1]? arg[1][1] : 0;
+  a11=(a03*a11);
+  a13=(a11*a09);
+  a05=(a05+a13);
+  a06=(a06+a11);
+  a10=(a10*a04);
+  a08=(a03*a08);
+  a11=(a10-a08);
+  a13=arg[5]? arg[5][2] : 0;
+  a14=(a11*a13);
+  a06=(a06+a14);
   a14=arg[5]? arg[5][0] : 0;
   a14=(a04*a14);
-  a07=(a14*a11);
-  a09=(a09-a07);
-  a07=arg[5]? arg[5][1] : 0;
-  a07=(a03*a07);
-  a15=(a07*a11);
-  a09=(a09-a15);
-  a15=arg[2]? arg[2][1] : 0;
-  a15=(a04*a15);
-  a09=(a09-a15);
-  a12=(a12*a04);
-  a03=(a03*a10);
-  a10=(a12-a03);
-  a15=arg[5]? arg[5][2] : 0;
-  a16=(a10*a15);
-  a04=(a08*a04);
-  a17=(a01*a06);
-  a17=(a17*a02);
-  a04=(a04-a17);
-  a17=(a04*a11);
-  a16=(a16-a17);
-  a16=(a16+a05);
-  a16=(a16+a13);
-  a16=(a16-a14);
-  a16=(a16-a07);
-  a16=(a11*a16);
-  a09=(a09+a16);
-  a10=(a10*a11);
-  a03=(a03-a12);
-  a03=(a15*a03);
-  a10=(a10+a03);
-  a15=(a15*a10);
-  a09=(a09+a15);
-  if (res[2]!=0) res[2][0]=a09;
-  if (res[3]!=0) res[3][0]=a04;
-  a01=(a01*a08);
-  a00=(a00*a06);
+  a06=(a06-a14);
+  a15=arg[5]? arg[5][1] : 0;
+  a03=(a03*a15);
+  a06=(a06-a03);
+  a15=(a12*a04);
+  a16=(a01*a07);
+  a16=(a16*a02);
+  a15=(a15-a16);
+  a16=(a15*a09);
+  a06=(a06-a16);
+  a06=(a09*a06);
+  a05=(a05+a06);
+  a11=(a11*a09);
+  a08=(a08-a10);
+  a08=(a13*a08);
+  a11=(a11+a08);
+  a13=(a13*a11);
+  a05=(a05+a13);
+  a14=(a14*a09);
+  a05=(a05-a14);
+  a03=(a03*a09);
+  a05=(a05-a03);
+  a03=arg[2]? arg[2][1] : 0;
+  a04=(a04*a03);
+  a05=(a05-a04);
+  if (res[2]!=0) res[2][0]=a05;
+  if (res[3]!=0) res[3][0]=a15;
+  a01=(a01*a12);
+  a00=(a00*a07);
   a01=(a01+a00);
   if (res[4]!=0) res[4][0]=a01;
   return 0;
@@ -284,7 +276,7 @@ CASADI_SYMBOL_EXPORT int snakecg_na5_batch_contact_row_local(casadi_int n, const
   const casadi_real* a[8];
   casadi_real* r[5];
   casadi_int* iw = (casadi_int*) malloc(sizeof(casadi_int) * 1);
-  casadi_real* w = (casadi_real*) malloc(sizeof(casadi_real) * 19);
+  casadi_real* w = (casadi_real*) malloc(sizeof(casadi_real) * 18);
   casadi_int i, k;
   int status = 0;
   if (!iw || !w) { free(iw); free(w); return -1; }
