@@ -1,0 +1,199 @@
+"""Geometric feasibility of a snake's shape: segment distances, self-intersection and
+penetration of the pushed object.
+
+The paper's joint grid (case study 2) keeps every shape, including ones whose links cross
+each other or pass through the object; this module tells which ones are physically possible,
+so that figures can mark them and Table 2 or a sweep can leave them out.
+
+The geometry is the model's: every link is the segment from its rear end to its front end
+(links are lines, their width is the ``clearance``), the object is the Scene's square plate
+of side :data:`OBJECT_SIDE` (0.1 m) centred at the object's COM and turned by its angle
+``psi``, touched at the middle of a face. All functions are vectorised NumPy: leading axes
+are batch axes.
+
+* :func:`point_segment_distance`, :func:`segment_distance`: Euclidean distances in the plane.
+* :func:`link_segments`: rear and front ends of every link from the link poses.
+* :func:`self_distance`, :func:`self_intersecting`: closest approach of non-adjacent links.
+* :func:`object_penetration`: how deep a link segment enters the plate.
+* :func:`feasibility`: both checks for configurations of a :class:`~snakecg.SceneModel`.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+__all__ = [
+    "OBJECT_SIDE",
+    "SELF_CLEARANCE",
+    "PENETRATION_TOLERANCE",
+    "Feasibility",
+    "feasibility",
+    "link_segments",
+    "object_penetration",
+    "point_segment_distance",
+    "segment_distance",
+    "self_distance",
+    "self_intersecting",
+]
+
+#: Side of the Scene's square plate [m] (the object of the paper's case studies).
+OBJECT_SIDE = 0.1
+#: Default clearance [m]: non-adjacent links closer than this count as intersecting (the
+#: paper's links are lines; 1 cm stands for the width of a real link's body).
+SELF_CLEARANCE = 0.01
+#: A link entering the plate by less than this [m] only touches it (the contacting link lies
+#: on the plate's face; rounding puts it a few ulp inside).
+PENETRATION_TOLERANCE = 1e-9
+
+
+def _cross(a, b):
+    return a[..., 0] * b[..., 1] - a[..., 1] * b[..., 0]
+
+
+def point_segment_distance(p, a, b) -> np.ndarray:
+    """Distance from points ``p`` to segments ``a``-``b`` (arrays ``(..., 2)``, broadcast)."""
+    p, a, b = (np.asarray(x, float) for x in (p, a, b))
+    d = b - a
+    dd = np.einsum("...k,...k->...", d, d)
+    t = np.einsum("...k,...k->...", p - a, d) / np.where(dd > 0, dd, 1.0)
+    t = np.clip(np.where(dd > 0, t, 0.0), 0.0, 1.0)
+    closest = a + t[..., None] * d
+    return np.linalg.norm(p - closest, axis=-1)
+
+
+def segment_distance(a0, a1, b0, b1) -> np.ndarray:
+    """Distance between segments ``a0``-``a1`` and ``b0``-``b1`` (arrays ``(..., 2)``).
+
+    Zero when they cross; otherwise the closest pair involves an end point of one of them,
+    so the distance is the least of the four end-point-to-segment distances.
+    """
+    a0, a1, b0, b1 = (np.asarray(x, float) for x in (a0, a1, b0, b1))
+    da, db = a1 - a0, b1 - b0
+    s1, s2 = _cross(db, a0 - b0), _cross(db, a1 - b0)
+    s3, s4 = _cross(da, b0 - a0), _cross(da, b1 - a0)
+    crossing = (s1 * s2 < 0) & (s3 * s4 < 0)
+    d = np.minimum(
+        np.minimum(point_segment_distance(a0, b0, b1), point_segment_distance(a1, b0, b1)),
+        np.minimum(point_segment_distance(b0, a0, a1), point_segment_distance(b1, a0, a1)),
+    )
+    return np.where(crossing, 0.0, d)
+
+
+def link_segments(robot, poses) -> tuple[np.ndarray, np.ndarray]:
+    """Rear and front ends ``(..., n_l, 2)`` of every link from the poses ``(..., n_l, 3)``
+    (``x, y, phi`` of each link's COM, as :meth:`SceneModel.link_poses` returns them)."""
+    poses = np.asarray(poses, float)
+    e = np.stack([np.cos(poses[..., 2]), np.sin(poses[..., 2])], axis=-1)
+    com = np.asarray(robot.com, float)[:, None]
+    length = np.asarray(robot.length, float)[:, None]
+    rear = poses[..., :2] - com * e
+    return rear, rear + length * e
+
+
+def self_distance(rear, front) -> np.ndarray:
+    """Least distance between non-adjacent links (``|i - j| >= 2``): shape ``(...)``.
+
+    ``inf`` for robots with fewer than three links (adjacent links share a joint and are not
+    compared).
+    """
+    rear, front = np.asarray(rear, float), np.asarray(front, float)
+    n_l = rear.shape[-2]
+    d = np.full(rear.shape[:-2], np.inf)
+    for i in range(n_l):
+        for j in range(i + 2, n_l):
+            d = np.minimum(d, segment_distance(rear[..., i, :], front[..., i, :],
+                                               rear[..., j, :], front[..., j, :]))
+    return d
+
+
+def self_intersecting(rear, front, clearance: float = SELF_CLEARANCE) -> np.ndarray:
+    """Shapes whose non-adjacent links come closer than ``clearance`` [m]."""
+    return self_distance(rear, front) < clearance
+
+
+def object_penetration(a, b, q_obj, side: float = OBJECT_SIDE) -> np.ndarray:
+    """How deep the segment ``a``-``b`` enters the square plate: shape ``(...)``.
+
+    ``q_obj`` ``(..., 3)`` is the plate's pose ``(x, y, psi)``. The depth is the largest, over
+    the segment's points, of the distance from the point to the plate's boundary when the
+    point is inside (0 when the segment stays outside or on the boundary).
+    """
+    a, b, q_obj = (np.asarray(x, float) for x in (a, b, q_obj))
+    c, psi = q_obj[..., :2], q_obj[..., 2]
+    cs, sn = np.cos(psi), np.sin(psi)
+
+    def local(p):
+        d = p - c
+        return np.stack([cs * d[..., 0] + sn * d[..., 1], -sn * d[..., 0] + cs * d[..., 1]], -1)
+
+    la, lb = local(a), local(b)
+    h = side / 2
+    # depth(p) = h - max(|x|, |y|) is concave along the segment; its maximum over t in [0, 1]
+    # is at an end or where two of the four linear pieces h -+ x, h -+ y meet.
+    ts = [np.zeros(la.shape[:-1]), np.ones(la.shape[:-1])]
+    d = lb - la
+    for k in (0, 1):  # x = 0 or y = 0 crossings (where |x| or |y| turns)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            ts.append(-la[..., k] / d[..., k])
+    for s in (1.0, -1.0):  # |x| = |y| crossings: x = s y
+        num = la[..., 0] - s * la[..., 1]
+        den = d[..., 0] - s * d[..., 1]
+        with np.errstate(divide="ignore", invalid="ignore"):
+            ts.append(-num / den)
+    best = np.zeros(la.shape[:-1])
+    for t in ts:
+        t = np.clip(np.nan_to_num(t, nan=0.0, posinf=0.0, neginf=0.0), 0.0, 1.0)
+        p = la + t[..., None] * d
+        best = np.maximum(best, h - np.max(np.abs(p), axis=-1))
+    return best
+
+
+@dataclass(frozen=True)
+class Feasibility:
+    """Outcome of :func:`feasibility` for a batch of configurations (arrays of shape ``(N,)``).
+
+    * ``self_distance``: least distance between non-adjacent links [m];
+    * ``self_intersecting``: ``self_distance < clearance``;
+    * ``penetration``: deepest entry of a link (other than the contacting one) into the plate;
+    * ``penetrates_object``: ``penetration > PENETRATION_TOLERANCE``;
+    * ``feasible``: neither.
+    """
+
+    self_distance: np.ndarray
+    self_intersecting: np.ndarray
+    penetration: np.ndarray
+    penetrates_object: np.ndarray
+    clearance: float
+
+    @property
+    def feasible(self) -> np.ndarray:
+        return ~(self.self_intersecting | self.penetrates_object)
+
+
+def feasibility(model, q, *, clearance: float = SELF_CLEARANCE,
+                side: float = OBJECT_SIDE) -> Feasibility:
+    """Self-intersection and object penetration of configurations ``q`` ``(n_s,)`` or
+    ``(N, n_s)`` of a :class:`~snakecg.SceneModel` (its robot, contact link and side).
+
+    The contacting link touches the plate along a face and is not tested against it; every
+    other link is.
+    """
+    q = np.asarray(q, float)
+    batched = q.ndim == 2
+    Q = q if batched else q[None]
+    rear, front = link_segments(model.robot, model.link_poses(Q))
+    q_obj, _, _ = model.place_object(Q)
+    k = model.scene.contact_link - 1
+    pen = np.zeros(len(Q))
+    for i in range(rear.shape[1]):
+        if i != k:
+            pen = np.maximum(pen, object_penetration(rear[:, i], front[:, i], q_obj, side))
+    dist = self_distance(rear, front)
+    out = Feasibility(self_distance=dist, self_intersecting=dist < clearance, penetration=pen,
+                      penetrates_object=pen > PENETRATION_TOLERANCE, clearance=clearance)
+    if batched:
+        return out
+    return Feasibility(**{f: (np.asarray(getattr(out, f))[0] if f != "clearance" else clearance)
+                          for f in out.__dataclass_fields__})
