@@ -44,6 +44,10 @@ IPOPT_OPTIONS = {
     "ipopt.mu_strategy": "adaptive", "ipopt.bound_relax_factor": 0.0,
 }
 
+#: With the separating slabs: a monotone barrier from a small initial value (the adaptive
+#: strategy takes long steps in the slab angles and ends in local infeasibility).
+IPOPT_GEOMETRY_OPTIONS = {"ipopt.mu_strategy": "monotone", "ipopt.mu_init": 1e-3}
+
 _FUNCTION_CACHE: dict = {}
 
 
@@ -99,7 +103,10 @@ def chol_quad(A, b):
     n = A.shape[0]
     L = [[None] * n for _ in range(n)]
     for j in range(n):
-        L[j][j] = ca.sqrt(A[j, j] - sum((L[j][k] ** 2 for k in range(j)), ca.SX(0)))
+        # the floor only guards rounding at trial points far from the data (never active
+        # for a positive definite A in exact arithmetic)
+        d = A[j, j] - sum((L[j][k] ** 2 for k in range(j)), ca.SX(0))
+        L[j][j] = ca.sqrt(ca.fmax(d, 1e-300 + 1e-15 * ca.fabs(A[j, j])))
         for i in range(j + 1, n):
             L[i][j] = (A[i, j] - sum((L[i][k] * L[j][k] for k in range(j)), ca.SX(0))) / L[j][j]
     y = []
@@ -258,7 +265,8 @@ class Problem:
         self.nx = x.shape[0]
         self.lbg, self.ubg, self.names = np.array(lbg, float), np.array(ubg, float), names
         nlp = {"x": x, "p": p, "f": f, "g": G}
-        self.solver = ca.nlpsol(f"shape_{objective}_{form}", "ipopt", nlp, IPOPT_OPTIONS)
+        opts = dict(IPOPT_OPTIONS, **(IPOPT_GEOMETRY_OPTIONS if self.pairs else {}))
+        self.solver = ca.nlpsol(f"shape_{objective}_{form}", "ipopt", nlp, opts)
         lam_g = ca.SX.sym("lam_g", G.shape[0])
         grad = ca.gradient(f, x) + (ca.mtimes(ca.jacobian(G, x).T, lam_g) if g else 0)
         self.kkt = ca.Function("kkt", [x, p, lam_g], [grad, G, f])

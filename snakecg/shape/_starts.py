@@ -121,20 +121,20 @@ def pick_starts(points, score, step, n):
     the starts lie in different basins); ties broken by the coordinates (deterministic)."""
     order = np.lexsort(tuple(points[:, j] for j in range(points.shape[1] - 1, -1, -1))
                        + (-score,))
+    good = order[score[order] > -1e299]  # the task is possible and the shape feasible
     taken = []
-    for idx in order:
-        if not np.isfinite(score[idx]) and taken:
-            break
+    for idx in good:
         if all(np.max(np.abs((points[idx] - points[t]) / step)) > 1.01 for t in taken):
             taken.append(idx)
-        if len(taken) == n:
-            break
-    if len(taken) < n:  # fewer basins than starts: fill with the next best points
-        for idx in order:
-            if idx not in taken and np.isfinite(score[idx]):
-                taken.append(idx)
             if len(taken) == n:
                 break
+    for idx in good:  # fewer basins than starts: the next best points
+        if len(taken) == n:
+            break
+        if idx not in taken:
+            taken.append(idx)
+    if not taken:  # nowhere possible: the least violating points
+        taken = list(order[np.isfinite(score[order])][:n])
     return np.array(taken, dtype=int)
 
 
