@@ -17,7 +17,8 @@ import warnings
 from . import __version__
 from .errors import InputError, SnakecgError
 
-COMMANDS = ("generate", "show", "forward", "reproduce", "optimize", "simulate")
+COMMANDS = ("generate", "show", "forward", "reproduce", "optimize", "simulate",
+            "optimize_shape")
 
 
 class _Parser(argparse.ArgumentParser):
@@ -49,7 +50,7 @@ def build_parser() -> argparse.ArgumentParser:
                 continue  # command not built yet
             raise
         mod.register(sub)
-        examples.append(_first_example(sub.choices[name]))
+        examples.append(_first_example(sub.choices[name.replace("_", "-")]))
     p.epilog = ("examples:\n" + "".join(f"  {e}\n" for e in examples if e)
                 + "\nRun 'snakecg COMMAND --help' for a command's options and examples.\n"
                 "Exit status: 0 success, 2 usage or input error, 1 failure.")

@@ -299,10 +299,10 @@ def optimize_shape(model, objective: str = "max_sr", *, q0=None, starts: int = 8
         S, svals, staus = Q[idx], score[idx], taus[idx]
         best = int(idx[0])
         grid_best = Q[best]
-        grid_best_value = _to_objective(objective, form, score[best]) \
-            if score[best] > -1e300 else None
-        if objective == "least_slip_push" and grid_best_value is not None:
-            grid_best_value = -grid_best_value
+        if score[best] > -1e299:  # its exact value (the scores carry the Tikhonov term)
+            hint = np.concatenate([grid_best[3:], taus[best]])
+            grid_best_value = _answer(model, objective, "joint" if objective == "max_a_obj"
+                                      else form, query, grid_best, hint, None)[2]
     else:
         S = Q0
         svals, staus = _starts.inner_optimum(model, objective, model.maps(S), query)
