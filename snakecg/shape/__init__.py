@@ -342,7 +342,9 @@ def optimize_shape(model, objective: str = "max_sr", *, q0=None, starts: int = 8
     else:
         vbest = max(sign * sols[i][3] for i in good)
         near = [i for i in good if sign * sols[i][3] >= vbest - 1e-9 * max(1.0, abs(vbest))]
-        pick = min(near, key=lambda i: tuple(np.round(sols[i][0][:na], 6)))
+        # a total order on the solutions (not on the starts): the same pick for any order
+        pick = min(near, key=lambda i: (tuple(np.round(sols[i][0][:na], 6)),
+                                        -sign * sols[i][3], tuple(sols[i][0][:na])))
     x, p, cert, v_nlp, ok, status, iters, used = sols[pick]
     q = np.concatenate([S[pick][:3], x[:na]])
     cert = dict(cert, ipopt_status=status, iterations=iters)
