@@ -214,8 +214,10 @@ def _problem(model, objective, form, feasible, box, ellipsoid, task):
     return cache[key]
 
 
-def _to_objective(objective, form, v):
+def _to_objective(objective, form, v, a_min=None):
     """The NLP's ``value`` expressed as the objective (sr, ||a_obj||^2, ...)."""
+    if objective == "least_slip_push" and form == "reduced":
+        return a_min * a_min / (v * v) if v > 0 else math.inf
     if objective == "max_sr":
         return v / (1.0 + v)
     if objective == "max_a_obj":  # the NLP maximises sqrt(norm_a_obj)
@@ -317,19 +319,38 @@ def optimize_shape(model, objective: str = "max_sr", *, q0=None, starts: int = 8
     # the same start.
     free = _problem(model, objective, form, False, query.tau_max is not None,
                     query.radius is not None, task_kind) if feasible else prob
+    # least_slip_push with d . a_obj >= a_min: first the torque eliminated (closed form);
+    # kept where no limit binds at its answer (then it is a KKT point of the full problem)
+    pre = None
+    if objective == "least_slip_push" and task_kind == "a_min" and query.a_min > 0:
+        pre = _problem(model, objective, "reduced", False, False, False, task_kind)
+        pre_scale = query.a_min / math.sqrt(scale)
     runs, sols = [], []
     for s, (qs, ts) in enumerate(zip(S, staus)):
         p = _params(query, qs[:3], scale, clearance)
-        sol = _run(model, free, objective, form, query, qs, ts, p, lo, hi)
-        geometric = ""
-        if feasible and sol[4]:
+        sol = None
+        if pre is not None:
+            sol = _run(model, pre, objective, "reduced", query, qs, ts,
+                       _params(query, qs[:3], pre_scale, clearance), lo, hi)
+            qa = np.concatenate([qs[:3], sol[0][:na]])
+            if not (sol[4] and _starts.inner_optimum(model, objective, model.maps(qa[None]),
+                                                      query)[0][0] > -1e299
+                    and (not feasible or not _geometry_problem(model, qa, clearance))):
+                sol = None
+        if sol is not None:
+            geometric = ""
+        else:
+            sol = _run(model, free, objective, form, query, qs, ts, p, lo, hi)
+            geometric = ""
+        if feasible and sol[4] and sol[7] is not pre:
             geometric = _geometry_problem(model, np.concatenate([qs[:3], sol[0][:na]]),
                                           clearance)
         if feasible and (not sol[4] or geometric):
             sol = _run(model, prob, objective, form, query, qs, ts, p, lo, hi)
             geometric = "constrained"
         x, _, cert, v, ok, status, iters, _ = sol
-        runs.append({"start": s, "ipopt_status": status, "iterations": iters,
+        runs.append({"start": s, "form": "reduced" if sol[7] is pre else form,
+                     "ipopt_status": status, "iterations": iters,
                      "value": _f(v), "ok": bool(ok),
                      "geometry": ("imposed" if geometric else "inactive") if feasible
                      else "not imposed"})
@@ -394,7 +415,7 @@ def _run(model, prob, objective, form, query, qs, ts, p, lo, hi):
         parts.append(_starts.initial_slabs(model, qs))
     x, lam_g, lam_x, status, iters = prob.solve(np.concatenate(parts), p, lbx, ubx)
     cert = prob.certificate(x, p, lam_g, lam_x, lbx, ubx)
-    v = _to_objective(objective, form, prob.value(x, p))
+    v = _to_objective(objective, form, prob.value(x, p), query.a_min)
     ok = status in _SUCCESS and cert["primal_infeasibility"] <= 1e-8 and math.isfinite(v)
     return x, p, cert, v, ok, status, iters, prob
 

@@ -11,6 +11,8 @@ Decision variables ``x = (q_1..q_na [, tau] [, slabs])``; parameters ``p`` (see
   ``sigma_eps = c (Xi + eps N)^-1 c^T`` is maximised (``eps`` relative, :data:`SR_EPS`) and
   the value is re-evaluated exactly at the answer. ``max_a_obj`` and ``strongest_push`` on
   the ellipsoid alone: ``r^2 k c N^-1 c^T`` and ``r gamma sqrt(c N^-1 c^T)``.
+  ``least_slip_push`` (``d . a_obj >= a_min``) when no limit binds: ``a_min^2 / (gamma^2
+  sigma_eps)`` with ``gamma = d . a_dir``.
 * ``joint`` (torque variable): wheel friction bounds, torque boxes and ``least_slip_push``.
 
 Geometric constraints are exact smooth reformulations: two convex sets (two link segments, or
@@ -177,8 +179,10 @@ class Problem:
                 value = k * chol_quad(Xi + eps_xi * N, c)  # k sigma; sr = k sigma/(1+k sigma)
             elif objective == "max_a_obj":
                 value = r * ca.sqrt(k * chol_quad(N, c))  # sqrt(norm_a_obj)
-            else:  # strongest_push
+            elif objective == "strongest_push":
                 value = r * gamma * ca.sqrt(chol_quad(N, c))
+            else:  # least_slip_push, d . a_obj >= a_min: a_min^2 / value^2 is ||qdd||^2
+                value = gamma * ca.sqrt(chol_quad(Xi + eps_xi * N, c))
             f = -value / scale
         else:
             lam_c = ca.mtimes(c, tau)
