@@ -16,7 +16,7 @@ EXAMPLES = """\
 examples:
   snakecg optimize-shape max-sr --joints 3 --scenario wheels
   snakecg optimize-shape max-a-obj --joints 3 --scenario ideal_wheels --json
-  snakecg optimize-shape strongest-push --joints 3 --scenario wheels --direction 0,1 --figure best.png
+  snakecg optimize-shape strongest-push --joints 3 --scenario wheels --figure best.png
   snakecg optimize-shape max-sr --joints 3 --scenario frictionless --ignore-geometry --starts 16
 
 exit status: 0 optimal, 1 infeasible or failed (the result is still printed), 2 input error.
