@@ -20,7 +20,7 @@ from .errors import InputError, SnakecgError
 
 COMMANDS = ("generate", "show", "forward", "reproduce", "optimize", "simulate")
 #: Toolkit commands (C export, configuration plots).
-COMMANDS += ("export", "plot")
+COMMANDS += ("export", "plot", "optimize_shape")
 
 
 #: What argparse must read as a value, not an option: negative numbers and number lists
@@ -62,7 +62,7 @@ def build_parser() -> argparse.ArgumentParser:
                 continue  # command not built yet
             raise
         mod.register(sub)
-        examples.append(_first_example(sub.choices[name]))
+        examples.append(_first_example(sub.choices[name.replace("_", "-")]))
     p.epilog = ("examples:\n" + "".join(f"  {e}\n" for e in examples if e)
                 + "\nRun 'snakecg COMMAND --help' for a command's options and examples.\n"
                 "Exit status: 0 success, 2 usage or input error, 1 failure.")

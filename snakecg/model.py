@@ -726,3 +726,16 @@ class SceneModel(RobotModel):
         from .simulate import simulate
 
         return simulate(self, q0, tau, duration, v0=v0, **kwargs)
+
+    # optimal shapes (snakecg.shape) ------------------------------------------------------------
+    def optimize_shape(self, objective="max_sr", **kwargs):
+        """The best shape (joint angles) and torque for a task: ``"max_sr"``,
+        ``"strongest_push"``, ``"least_slip_push"`` or ``"max_a_obj"``, by IPOPT on the
+        generated functions, multi-started from a coarse grid, under joint limits and (with
+        ``feasible=True``) no self-intersection or object penetration. Returns an
+        :class:`~snakecg.shape.OptimizeShapeResult`; see :func:`snakecg.shape.optimize_shape`
+        and docs/shapes.md.
+        """
+        from .shape import optimize_shape
+
+        return optimize_shape(self, objective, **kwargs)
