@@ -30,4 +30,14 @@ __all__ = [
     "ArtifactError",
     "SingularConstraintsError",
     "__version__",
+    "sweep",
 ]
+
+
+def __getattr__(name):
+    # snakecg.sweep needs the sweep extra (Dask, Zarr): imported on first use only
+    if name == "sweep":
+        from .sweeps import sweep
+
+        return sweep
+    raise AttributeError(f"module 'snakecg' has no attribute {name!r}")

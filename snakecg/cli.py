@@ -17,7 +17,7 @@ import warnings
 from . import __version__
 from .errors import InputError, SnakecgError
 
-COMMANDS = ("generate", "show", "forward", "reproduce", "optimize", "simulate")
+COMMANDS = ("generate", "show", "forward", "reproduce", "optimize", "simulate", "sweep")
 
 
 class _Parser(argparse.ArgumentParser):
