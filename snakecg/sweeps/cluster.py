@@ -81,7 +81,6 @@ def connect(*, client=None, scheduler=None, workers=None):
         env={"SNAKECG_THREADS": os.environ.get("SNAKECG_THREADS", "1")},
     )
     c = distributed.Client(cluster)
-    c._snakecg_local = True
 
     def close():
         c.close()
@@ -90,16 +89,19 @@ def connect(*, client=None, scheduler=None, workers=None):
     return c, close
 
 
+def _has_bokeh() -> bool:
+    import importlib.util
+
+    return importlib.util.find_spec("bokeh") is not None
+
+
 def dashboard_of(client) -> str | None:
-    """The dashboard's address, when the scheduler serves one (a local cluster's needs
-    bokeh; Dask reserves the port without it)."""
-    if getattr(client, "_snakecg_local", False):
-        try:
-            import bokeh  # noqa: F401
-        except ModuleNotFoundError:
-            return None
+    """The dashboard's address, when the scheduler serves one (it needs bokeh on the
+    scheduler's machine; without it Dask only reserves the port)."""
     try:
         if "dashboard" not in client.scheduler_info().get("services", {}):
+            return None
+        if not client.run_on_scheduler(_has_bokeh):
             return None
         return client.dashboard_link
     except Exception:  # noqa: BLE001 - no dashboard is not an error
