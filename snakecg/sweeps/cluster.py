@@ -8,7 +8,7 @@ import os
 import sys
 import time
 
-from ..errors import InputError
+from ..errors import InputError, SnakecgError
 
 __all__ = ["connect", "ProgressLines", "start_bar", "progress_mode"]
 
@@ -74,12 +74,17 @@ def connect(*, client=None, scheduler=None, workers=None):
                              ) from None
         return c, c.close
     n = check_workers(workers)
-    cluster = distributed.LocalCluster(
-        n_workers=n, threads_per_worker=1, processes=True, host="127.0.0.1",
-        dashboard_address="127.0.0.1:0", silence_logs=logging.ERROR,
-        # one C thread per worker process: the processes are the parallelism
-        env={"SNAKECG_THREADS": os.environ.get("SNAKECG_THREADS", "1")},
-    )
+    try:
+        cluster = distributed.LocalCluster(
+            n_workers=n, threads_per_worker=1, processes=True, host="127.0.0.1",
+            dashboard_address="127.0.0.1:0", silence_logs=logging.ERROR,
+            # one C thread per worker process: the processes are the parallelism
+            env={"SNAKECG_THREADS": os.environ.get("SNAKECG_THREADS", "1")},
+        )
+    except Exception as exc:  # noqa: BLE001 - reported as a failure, exit 1
+        raise SnakecgError(f"could not start a local Dask cluster of {n} workers: "
+                           f"{type(exc).__name__}: {' '.join(str(exc).split())[:300]}"
+                           ) from None
     c = distributed.Client(cluster)
 
     def close():

@@ -134,7 +134,7 @@ def figure(store, out=None, *, radius_bins: int = 24, angle_bins: int = 36) -> P
     fmt = out.suffix.lower().lstrip(".")
     if fmt not in ("png", "svg", "pdf"):
         raise InputError(f"figure file {str(out)!r} must end in .png, .svg or .pdf")
-    if not out.parent.is_dir() if str(out.parent) else False:
+    if not out.parent.is_dir():
         raise InputError(f"figure file {str(out)!r}: its folder does not exist")
     chunks = _recorded(root, plan)
     if not chunks:

@@ -200,5 +200,8 @@ def _compute(client, scene, plan, root, todo, reused, mode) -> None:
             if completed % every == 0:
                 _mark(root, completed, plan.n_chunks)
     finally:
-        client.cancel([f for f in futures if not f.done()])
+        try:
+            client.cancel([f for f in futures if not f.done()])
+        except Exception:  # noqa: BLE001 - the cluster may be gone already
+            pass
         _mark(root, int(np.count_nonzero(root["chunk_digest"][:])), plan.n_chunks)

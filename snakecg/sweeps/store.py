@@ -100,9 +100,10 @@ def create(path: Path, meta: dict, n_configurations: int, chunk: int, joints: in
                           dtype="uint64", fill_value=0, compressors=None)
         root.attrs.update({"snakecg_sweep": meta, "completed_chunks": 0, "complete": False})
         os.rename(tmp, path)
-    except PermissionError as exc:
+    except OSError as exc:  # unwritable, read-only file system, no space, ...
         shutil.rmtree(tmp, ignore_errors=True)
-        raise InputError(f"--out {str(path)!r} cannot be written: {exc}") from None
+        raise InputError(f"--out {str(path)!r} cannot be written: "
+                         f"{' '.join(str(exc).split())}") from None
     except BaseException:
         shutil.rmtree(tmp, ignore_errors=True)
         raise
