@@ -81,24 +81,22 @@ def timed_sweep(sc, store, **kw) -> float:
     return time.perf_counter() - t
 
 
-def local_client(workers):
-    import logging
+class local_client:
+    """A local cluster as `snakecg.sweep` starts it (`workers=`), kept across calls."""
 
-    import distributed
+    def __init__(self, workers):
+        from snakecg.sweeps.cluster import connect
 
-    cluster = distributed.LocalCluster(
-        n_workers=workers, threads_per_worker=1, processes=True, host="127.0.0.1",
-        dashboard_address="127.0.0.1:0", silence_logs=logging.ERROR,
-        env={"SNAKECG_THREADS": "1"})
-    return distributed.Client(cluster), cluster
+        self.client, self.close = connect(workers=workers)
 
 
 def scaling(tmp: Path, quick: bool) -> dict:
-    joints, n = (3, 2048) if quick else (4, 4096)
+    joints, n = (3, 2048) if quick else (4, 6144)
     sc = scene(joints, "wheels")
     out = {}
     for workers in (1, 2):
-        client, cluster = local_client(workers)
+        lc = local_client(workers)
+        client = lc.client
         try:
             # warm: every worker loads the model before the clock starts
             timed_sweep(sc, tmp / f"warm{workers}.zarr", samples=4 * workers, seed=0, chunk=1,
@@ -110,8 +108,7 @@ def scaling(tmp: Path, quick: bool) -> dict:
             print(f"  {workers} worker(s): {n} configurations ({joints} joints, wheels) in "
                   f"{t:.1f} s, load {la} -> {load_avg()}", flush=True)
         finally:
-            client.close()
-            cluster.close()
+            lc.close()
     out["speedup"] = out[1]["seconds"] / out[2]["seconds"]
     print(f"  speed-up 2 workers / 1: {out['speedup']:.2f}x")
     return out
@@ -125,7 +122,8 @@ def overhead(tmp: Path, quick: bool) -> dict:
     from distributed import get_task_stream
 
     out = {}
-    client, cluster = local_client(1)
+    lc = local_client(1)
+    client = lc.client
     try:
         for sc_name, joints in (("wheels", 3), ("frictionless", 4), ("ideal_wheels", 4)):
             sc = scene(joints, sc_name)
@@ -155,8 +153,7 @@ def overhead(tmp: Path, quick: bool) -> dict:
                   f"{100 * frac:+.1f} %; in this process {inproc:.2f} s; load {la}",
                   flush=True)
     finally:
-        client.close()
-        cluster.close()
+        lc.close()
     return out
 
 
@@ -176,7 +173,8 @@ def grid4(tmp: Path, budget: float) -> dict:
             print(f"  28^4 {sc_name:>13}: {wall:.1f} s on 2 workers (cluster start and model "
                   f"loads included), load {la} -> {load_avg()}", flush=True)
             continue
-        client, cluster = local_client(2)
+        lc = local_client(2)
+        client = lc.client
         box = {}
 
         def run():
@@ -192,8 +190,7 @@ def grid4(tmp: Path, budget: float) -> dict:
 
         done = int(np.count_nonzero(zarr.open_group(str(store), mode="r")["chunk_digest"][:]))
         wall = time.perf_counter() - t
-        client.close()
-        cluster.close()
+        lc.close()
         th.join(timeout=60)
         configs = done * plan.chunk
         rate = configs / wall
