@@ -10,7 +10,6 @@ killed process or a killed worker must end bit for bit equal to an uninterrupted
 from __future__ import annotations
 
 import json
-import logging
 import os
 import signal
 import subprocess
@@ -37,16 +36,16 @@ DEG = np.pi / 180
 
 @pytest.fixture(scope="module")
 def client():
-    cluster = distributed.LocalCluster(
-        n_workers=2, threads_per_worker=1, processes=True, host="127.0.0.1",
-        dashboard_address="127.0.0.1:0", silence_logs=logging.ERROR,
-        env={"SNAKECG_THREADS": "1"})
-    c = distributed.Client(cluster)
+    """2 worker processes on 127.0.0.1, started as snakecg.sweep starts its own."""
+    from snakecg.sweeps.cluster import connect
+
+    c, close = connect(workers=2)
+    assert isinstance(c, distributed.Client)
+    assert all(a.startswith("tcp://127.0.0.1:") for a in c.scheduler_info()["workers"])
     try:
         yield c
     finally:
-        c.close()
-        cluster.close()
+        close()
 
 
 def scene(scenario, joints=2):
