@@ -31,12 +31,19 @@ __all__ = [
     "SingularConstraintsError",
     "plot",
     "__version__",
+    "sweep",
 ]
 
 
-def __getattr__(name):  # snakecg.plot, imported on first use (matplotlib is only needed then)
+def __getattr__(name):
+    # imported on first use: snakecg.plot needs matplotlib, snakecg.sweep the sweep extra
+    # (Dask, Zarr)
     if name == "plot":
         from .figures import plot
 
         return plot
+    if name == "sweep":
+        from .sweeps import sweep
+
+        return sweep
     raise AttributeError(f"module 'snakecg' has no attribute {name!r}")

@@ -19,8 +19,8 @@ from . import __version__
 from .errors import InputError, SnakecgError
 
 COMMANDS = ("generate", "show", "forward", "reproduce", "optimize", "simulate")
-#: Toolkit commands (C export, configuration plots).
-COMMANDS += ("export", "plot", "optimize_shape")
+#: Toolkit commands (C export, configuration plots, optimal shapes, sweeps on Dask).
+COMMANDS += ("export", "plot", "optimize_shape", "sweep")
 
 
 #: What argparse must read as a value, not an option: negative numbers and number lists

@@ -1,0 +1,240 @@
+"""Benchmark: sweeps on Dask into Zarr (`snakecg.sweep`).
+
+    python benchmarks/bench_sweep.py [--part cost,scaling,overhead,grid4] [--quick]
+                                     [--budget SECONDS] [--json FILE]
+
+* cost: per-configuration CPU cost of `model.extremes` + `com_polar` in one process (one C
+  thread), per scenario and joint count 2..6 (the bounded-wheels scenario on a small batch),
+  and from it core-hours of the 28^4, 28^5 and 28^6 grids;
+* scaling: the same bounded-wheels sweep on a local cluster of 1 worker and of 2 workers,
+  side by side (4 joints, 4096 seeded samples: about a minute on one worker when idle);
+* overhead: at the default chunk size, a warm 1-worker cluster's `sweep` against the same
+  chunks evaluated in this process one after the other (scheduling, serialization, Zarr
+  writes and the digests are the difference);
+* grid4: the 28^4 = 614,656 grid of each scenario on 2 workers; the bounded-wheels one
+  stops after `--budget` seconds (default 300) and is extrapolated from the chunks written
+  (the store is resumable: rerun to finish it).
+
+Every figure comes with the load average it was measured under.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import platform
+import shutil
+import tempfile
+import threading
+import time
+from pathlib import Path
+
+os.environ.setdefault("SNAKECG_THREADS", "1")  # one C thread per process: compare like with like
+
+import numpy as np  # noqa: E402
+
+import snakecg  # noqa: E402
+from snakecg.sweeps.plan import DEFAULT_CHUNK, grid_plan, joint_values, samples_plan  # noqa: E402
+from snakecg.sweeps.work import evaluate  # noqa: E402
+
+
+def load_avg() -> float:
+    return round(os.getloadavg()[0], 2)
+
+
+def scene(joints, scenario):
+    return snakecg.Scene(snakecg.Robot(joints=joints), scenario=scenario)
+
+
+def cost(quick: bool) -> dict:
+    """Seconds of CPU per configuration, in one process."""
+    out = {}
+    print(f"{'joints':>6} {'scenario':>13} {'configs':>8} {'us/config':>10} {'load':>5}")
+    for joints in (2, 3, 4) if quick else (2, 3, 4, 5, 6):
+        for sc in snakecg.SCENARIOS:
+            model = snakecg.load(scene(joints, sc))
+            n = (64 if joints <= 4 else 32) if sc == "wheels" else 8192
+            plan = samples_plan(joints, n, 1, sc, chunk=n)
+            q = plan.configurations(0)
+            evaluate(model, q[:8])  # warm
+            t0, c0 = time.perf_counter(), time.process_time()
+            evaluate(model, q)
+            cpu = (time.process_time() - c0) / n
+            wall = (time.perf_counter() - t0) / n
+            out[f"{joints}/{sc}"] = {"cpu_s": cpu, "wall_s": wall, "n": n, "load": load_avg()}
+            print(f"{joints:>6} {sc:>13} {n:>8} {cpu * 1e6:>10.1f} {load_avg():>5}", flush=True)
+    print("\ncore-hours of a 28^n grid at these costs (per scenario and kappa):")
+    for sc in snakecg.SCENARIOS:
+        for joints in (4, 5, 6):
+            key = f"{joints}/{sc}"
+            if key in out:
+                ch = 28 ** joints * out[key]["cpu_s"] / 3600
+                out[key]["grid28_core_hours"] = ch
+                print(f"  28^{joints} {sc:>13}: {ch:12.4g} core-hours")
+    return out
+
+
+def timed_sweep(sc, store, **kw) -> float:
+    t = time.perf_counter()
+    snakecg.sweep(sc, store=store, progress=False, **kw)
+    return time.perf_counter() - t
+
+
+class local_client:
+    """A local cluster as `snakecg.sweep` starts it (`workers=`), kept across calls."""
+
+    def __init__(self, workers):
+        from snakecg.sweeps.cluster import connect
+
+        self.client, self.close = connect(workers=workers)
+
+
+def scaling(tmp: Path, quick: bool) -> dict:
+    joints, n = (3, 2048) if quick else (4, 6144)
+    sc = scene(joints, "wheels")
+    out = {}
+    for workers in (1, 2):
+        lc = local_client(workers)
+        client = lc.client
+        try:
+            # warm: every worker loads the model before the clock starts
+            timed_sweep(sc, tmp / f"warm{workers}.zarr", samples=4 * workers, seed=0, chunk=1,
+                        client=client)
+            la = load_avg()
+            t = timed_sweep(sc, tmp / f"scale{workers}.zarr", samples=n, seed=1, chunk=128,
+                            client=client)
+            out[workers] = {"seconds": t, "load_before": la, "load_after": load_avg()}
+            print(f"  {workers} worker(s): {n} configurations ({joints} joints, wheels) in "
+                  f"{t:.1f} s, load {la} -> {load_avg()}", flush=True)
+        finally:
+            lc.close()
+    out["speedup"] = out[1]["seconds"] / out[2]["seconds"]
+    print(f"  speed-up 2 workers / 1: {out['speedup']:.2f}x")
+    return out
+
+
+def overhead(tmp: Path, quick: bool) -> dict:
+    """Wall time of a warm 1-worker sweep against the compute time of its tasks, measured in
+    the same run (Dask's task stream: the time each task spent in ``evaluate_chunk``), so the
+    load of the machine weighs on both alike; the same chunks evaluated in this process one
+    after the other are shown too (a separate run, so more exposed to the load)."""
+    from distributed import get_task_stream
+
+    out = {}
+    lc = local_client(1)
+    client = lc.client
+    try:
+        for sc_name, joints in (("wheels", 3), ("frictionless", 4), ("ideal_wheels", 4)):
+            sc = scene(joints, sc_name)
+            chunk = DEFAULT_CHUNK[sc_name]
+            chunks = 4 if quick else 8
+            n = chunk * chunks
+            timed_sweep(sc, tmp / f"warm-{sc_name}.zarr", samples=2, seed=0, chunk=1,
+                        client=client)
+            plan = samples_plan(joints, n, 2, sc_name, chunk=chunk)
+            la = load_avg()
+            with get_task_stream(client) as ts:
+                dask = timed_sweep(sc, tmp / f"ovh-{sc_name}.zarr", samples=n, seed=2,
+                                   chunk=chunk, client=client)
+            compute = sum(s["stop"] - s["start"] for t in ts.data for s in t["startstops"]
+                          if s["action"] == "compute")
+            model = snakecg.load(sc)
+            t = time.perf_counter()
+            for i in range(plan.n_chunks):
+                evaluate(model, plan.configurations(i))
+            inproc = time.perf_counter() - t
+            frac = dask / compute - 1
+            out[sc_name] = {"joints": joints, "chunk": chunk, "configurations": n,
+                            "task_compute_s": compute, "dask_s": dask, "overhead": frac,
+                            "in_process_s": inproc, "load": la}
+            print(f"  {sc_name:>13} ({joints} joints, chunk {chunk}, {n} configurations): "
+                  f"sweep {dask:.2f} s, of which tasks computing {compute:.2f} s: overhead "
+                  f"{100 * frac:+.1f} %; in this process {inproc:.2f} s; load {la}",
+                  flush=True)
+    finally:
+        lc.close()
+    return out
+
+
+def grid4(tmp: Path, budget: float) -> dict:
+    out = {}
+    grid = joint_values(-135, 135, 10)
+    for sc_name in ("frictionless", "ideal_wheels", "wheels"):
+        sc = scene(4, sc_name)
+        store = tmp / f"grid4-{sc_name}.zarr"
+        plan = grid_plan(4, grid, sc_name)
+        la = load_avg()
+        t = time.perf_counter()
+        if sc_name != "wheels":
+            snakecg.sweep(sc, grid=grid, store=store, workers=2, progress=False)
+            wall = time.perf_counter() - t
+            out[sc_name] = {"seconds": wall, "load": la, "complete": True}
+            print(f"  28^4 {sc_name:>13}: {wall:.1f} s on 2 workers (cluster start and model "
+                  f"loads included), load {la} -> {load_avg()}", flush=True)
+            continue
+        lc = local_client(2)
+        client = lc.client
+        box = {}
+
+        def run():
+            try:
+                snakecg.sweep(sc, grid=grid, store=store, client=client, progress=False)
+            except Exception as exc:  # noqa: BLE001 - cancelled at the budget
+                box["err"] = exc
+
+        th = threading.Thread(target=run, daemon=True)
+        th.start()
+        th.join(timeout=budget)
+        import zarr
+
+        done = int(np.count_nonzero(zarr.open_group(str(store), mode="r")["chunk_digest"][:]))
+        wall = time.perf_counter() - t
+        lc.close()
+        th.join(timeout=60)
+        configs = done * plan.chunk
+        rate = configs / wall
+        est = plan.size / rate if rate else float("inf")
+        out[sc_name] = {"seconds": wall, "chunks_done": done, "chunks": plan.n_chunks,
+                        "configurations_done": configs, "rate_per_s": rate,
+                        "estimated_seconds": est, "load": la, "complete": done == plan.n_chunks}
+        print(f"  28^4 {sc_name:>13}: {done} of {plan.n_chunks} chunks ({configs:,} "
+              f"configurations) in {wall:.0f} s on 2 workers: {rate:.0f} configurations/s, "
+              f"the whole grid in about {est / 3600:.2f} h; load {la} -> {load_avg()}",
+              flush=True)
+    return out
+
+
+def main() -> None:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--part", default="cost,scaling,overhead,grid4")
+    ap.add_argument("--quick", action="store_true", help="smaller runs (3-joint scaling, ...)")
+    ap.add_argument("--budget", type=float, default=300.0,
+                    help="seconds for the bounded-wheels 28^4 sweep (default 300)")
+    ap.add_argument("--json", metavar="FILE", help="also write the figures as JSON")
+    args = ap.parse_args()
+    print(f"machine: {platform.machine()}, {os.cpu_count()} cores, Python "
+          f"{platform.python_version()}, load average {load_avg()}")
+    results = {"cores": os.cpu_count()}
+    tmp = Path(tempfile.mkdtemp(prefix="bench-sweep-"))
+    try:
+        for part in args.part.split(","):
+            print(f"\n== {part}")
+            if part == "cost":
+                results[part] = cost(args.quick)
+            elif part == "scaling":
+                results[part] = scaling(tmp, args.quick)
+            elif part == "overhead":
+                results[part] = overhead(tmp, args.quick)
+            elif part == "grid4":
+                results[part] = grid4(tmp, args.budget)
+            else:
+                raise SystemExit(f"unknown part {part!r}")
+    finally:
+        shutil.rmtree(tmp, ignore_errors=True)
+    if args.json:
+        Path(args.json).write_text(json.dumps(results, indent=2) + "\n", encoding="utf-8")
+
+
+if __name__ == "__main__":
+    main()

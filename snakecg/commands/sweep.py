@@ -1,0 +1,193 @@
+"""``snakecg sweep``: per-configuration extremes over a grid or samples on Dask, into Zarr;
+``--summary`` and ``--figure`` reduce a store chunk by chunk."""
+
+from __future__ import annotations
+
+import argparse
+import sys
+
+from ..errors import InputError
+from ._common import add_robot_args, print_json, scene_from_args
+
+#: Version of the JSON printed by ``snakecg sweep --json`` (docs/sweep.md).
+SCHEMA = "snakecg.sweep/1"
+
+EXAMPLES = """\
+examples:
+  snakecg sweep --joints 3 --scenario wheels --range 135 --step 10 --out wheels3.zarr
+  snakecg sweep --joints 4 --scenario frictionless --samples 100000 --seed 1 --out s4.zarr --workers 2
+  snakecg sweep --joints 3 --range=-90:90,-45:45,0:90 --step 5,5,10 --out part.zarr --scheduler tcp://scheduler-host:8786
+  snakecg sweep --summary wheels3.zarr --json
+  snakecg sweep --figure wheels3.zarr --out wheels3-polar.svg
+"""
+
+
+def register(sub) -> None:
+    from ..sweeps.run import LIMIT
+
+    p = sub.add_parser(
+        "sweep",
+        help="extremes of every configuration of a grid or of samples, on Dask, into Zarr",
+        description="Evaluate the best and worst |a_obj|^2, |qdd|^2, |lambda|^2 and sr over "
+        "the input ellipsoid (eq. 31) with the torques attaining them, and the COM's polar "
+        "coordinates, for every configuration of a joint grid (--range/--step) or of seeded "
+        "random samples (--samples/--seed), chunk by chunk on Dask (a local cluster of "
+        "--workers processes, or a running one at --scheduler) into the Zarr store --out. "
+        "Rerun the same command after an interruption: only the missing chunks are computed. "
+        "--summary and --figure read a store chunk by chunk. Needs the sweep extra "
+        "(pip install 'snakecg[sweep]'). Reference: docs/sweep.md.",
+        epilog=EXAMPLES,
+        formatter_class=argparse.RawDescriptionHelpFormatter,
+    )
+    add_robot_args(p)
+    g = p.add_argument_group("configurations (default: the paper's grid, -135..135 deg every 10)")
+    g.add_argument("--range", metavar="DEG",
+                   help="joint range in degrees: R (for -R:R), LO:HI, or one per joint "
+                   "separated by commas (write --range=-90:90 when it starts with '-'); "
+                   "the sampling box with --samples")
+    g.add_argument("--step", metavar="DEG",
+                   help="grid step in degrees, one for every joint or one per joint (default 10)")
+    g.add_argument("--samples", type=int, metavar="N",
+                   help="N random configurations, uniform in --range, instead of a grid")
+    g.add_argument("--seed", type=int, metavar="S", help="seed of --samples (required with it)")
+    r = p.add_argument_group("where and how")
+    r.add_argument("--out", metavar="STORE",
+                   help="Zarr store to write (a folder, e.g. sweep.zarr); resumed if it exists; "
+                   "with --figure, the image file (default STORE-polar.png)")
+    w = r.add_mutually_exclusive_group()
+    w.add_argument("--scheduler", metavar="ADDRESS",
+                   help="run on the Dask cluster whose scheduler is at tcp://HOST:PORT")
+    w.add_argument("--workers", type=int, metavar="K",
+                   help="worker processes of the local cluster (default: one per core)")
+    r.add_argument("--chunk", type=int, metavar="N",
+                   help="configurations per chunk (default 1024 for wheels, 32768 otherwise)")
+    r.add_argument("--limit", type=int, default=LIMIT, metavar="N",
+                   help=f"refuse sweeps of more than N configurations (default {LIMIT:,})")
+    r.add_argument("--force", action="store_true", help="run a sweep above --limit")
+    r.add_argument("--json", action="store_true",
+                   help=f"print JSON (schema {SCHEMA}, or the summary's with --summary)")
+    m = p.add_mutually_exclusive_group()
+    m.add_argument("--summary", metavar="STORE",
+                   help="print the worst and best per-configuration maxima of a store "
+                   "(Table 2 style) and the configurations attaining them")
+    m.add_argument("--figure", metavar="STORE",
+                   help="draw a store's maxima binned over |COM| and angle of COM (Fig. 5 style)")
+    p.set_defaults(run=run)
+
+
+def _split(name: str, text: str) -> list[str]:
+    parts = [t.strip() for t in text.split(",")]
+    if not text.strip() or any(not t for t in parts):
+        raise InputError(f"{name} must be one value or values separated by commas, got {text!r}")
+    return parts
+
+
+def _number(name: str, text: str) -> float:
+    try:
+        return float(text)
+    except ValueError:
+        raise InputError(f"{name} takes numbers of degrees, got {text!r}") from None
+
+
+def _per_joint(name: str, items: list, joints: int) -> list:
+    if len(items) == 1:
+        return items * joints
+    if len(items) != joints:
+        raise InputError(f"{name} has {len(items)} entries, expected one or {joints} "
+                         f"(one per joint)")
+    return items
+
+
+def _ranges(text: str | None, joints: int) -> list[tuple[float, float]]:
+    from ..sweeps.plan import PAPER_RANGE_DEG
+
+    if text is None:
+        return [PAPER_RANGE_DEG] * joints
+    out = []
+    for tok in _split("--range", text):
+        if ":" in tok:
+            lo, _, hi = tok.partition(":")
+            out.append((_number("--range", lo), _number("--range", hi)))
+        else:
+            r = _number("--range", tok)
+            if r < 0:
+                raise InputError(f"--range R means -R:R and needs R >= 0, got {tok!r}; "
+                                 f"give LO:HI otherwise")
+            out.append((-r, r))
+    return _per_joint("--range", out, joints)
+
+
+def run(args) -> int:
+    if args.summary is not None or args.figure is not None:
+        return _reduce(args)
+    import math
+
+    from ..sweeps.plan import PAPER_STEP_DEG, joint_values
+    from ..sweeps.run import sweep
+
+    if not args.out:
+        raise InputError("--out STORE is required: the Zarr store to write (e.g. sweep.zarr)")
+    scene = scene_from_args(args)
+    joints = scene.robot.joints
+    ranges = _ranges(args.range, joints)
+    for lo, hi in ranges:
+        if not (math.isfinite(lo) and math.isfinite(hi)):
+            raise InputError(f"--range must be finite degrees, got {args.range!r}")
+    if args.samples is not None:
+        if args.step is not None:
+            raise InputError("--step makes a grid; --samples draws random configurations: "
+                             "give one of them")
+        if args.seed is None:
+            raise InputError("--samples N needs --seed S (the random stream to draw from)")
+        for lo, hi in ranges:
+            if hi < lo:
+                raise InputError(f"--range {lo:g}:{hi:g} is empty (LO > HI)")
+        kw = {"samples": args.samples, "seed": args.seed,
+              "bounds": [(math.radians(lo), math.radians(hi)) for lo, hi in ranges]}
+    else:
+        if args.seed is not None:
+            raise InputError("--seed goes with --samples N; a grid has no seed")
+        steps = _per_joint("--step", [_number("--step", s) for s in
+                                      _split("--step", args.step)], joints) \
+            if args.step is not None else [PAPER_STEP_DEG] * joints
+        kw = {"grid": [joint_values(lo, hi, st) for (lo, hi), st in zip(ranges, steps)]}
+    res = sweep(scene, store=args.out, chunk=args.chunk, scheduler=args.scheduler,
+                workers=args.workers, limit=None if args.force else args.limit, **kw)
+    if args.json:
+        out = {"schema": SCHEMA, **res.to_dict(), "joints": joints,
+               "scenario": scene.scenario, "kappa": scene.kappa, "mu": scene.mu}
+        print_json(out)
+    else:
+        print(f"{res.store}: {res.configurations:,} configurations in {res.chunks} chunks of "
+              f"{res.chunk}; computed {res.computed_chunks}, found complete "
+              f"{res.reused_chunks}; {res.seconds:.1f} s")
+    return 0
+
+
+def _reduce(args) -> int:
+    from ..sweeps.reduce import figure, summary, summary_text
+
+    for flag in ("range", "step", "samples", "seed", "scheduler", "workers", "chunk",
+                 "joints", "robot", "scenario", "kappa", "mu", "contact_link", "side"):
+        if getattr(args, flag) is not None:
+            raise InputError(f"--{flag.replace('_', '-')} describes a sweep to run; "
+                             f"--summary and --figure read everything from the store")
+    if args.summary is not None:
+        if args.out is not None:
+            raise InputError("--out goes with a sweep or --figure, not with --summary")
+        s = summary(args.summary)
+        if args.json:
+            print_json(s)
+        else:
+            print(summary_text(s))
+        if not s["complete"]:
+            sys.stderr.write(f"snakecg sweep: warning: {args.summary} is incomplete "
+                             f"({s['completed_chunks']} of {s['chunks']} chunks); rerun the "
+                             f"sweep to finish it\n")
+        return 0
+    path = figure(args.figure, args.out)
+    if args.json:
+        print_json({"figure": str(path)})
+    else:
+        print(path)
+    return 0

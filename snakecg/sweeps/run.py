@@ -1,0 +1,207 @@
+""":func:`sweep`: per-configuration extremes of a scene over a grid or samples, on Dask,
+chunk by chunk into a Zarr store, resumable."""
+
+from __future__ import annotations
+
+import dataclasses
+import sys
+import time
+import uuid
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from ..errors import InputError, SnakecgError
+from ..robot import Scene
+from . import store as _store
+from .cluster import ProgressLines, connect, dashboard_of, progress_mode, start_bar
+from .plan import Plan, grid_plan, samples_plan
+from .work import evaluate_chunk
+
+__all__ = ["sweep", "SweepResult", "LIMIT"]
+
+#: Sweeps of more configurations than this are refused unless the limit is lifted
+#: (``limit=None``, or ``--force`` on the command line).
+LIMIT = 10_000_000
+
+
+@dataclass
+class SweepResult:
+    """What a call of :func:`sweep` did: the store, its size, the chunks it computed now and
+    the ones it found complete from an earlier run."""
+
+    store: str
+    configurations: int
+    chunks: int
+    chunk: int
+    computed_chunks: int
+    reused_chunks: int
+    seconds: float
+    dashboard: str | None = None
+
+    def to_dict(self) -> dict:
+        return dataclasses.asdict(self)
+
+
+def _meta(scene: Scene, plan: Plan) -> dict:
+    from .. import __version__
+
+    robot = dataclasses.asdict(scene.robot)
+    fields = {f.name: getattr(scene, f.name) for f in dataclasses.fields(scene)
+              if f.name != "robot"}
+    meta = {
+        "format": _store.FORMAT, "version": __version__,
+        "robot": robot, "scene": fields,
+        "configurations": plan.describe(), "n_configurations": plan.size,
+        "chunk": plan.chunk, "n_chunks": plan.n_chunks,
+        "arrays": list(_store.array_names()),
+        "per_configuration": "SceneModel.extremes(q) with its defaults and "
+                             "SceneModel.com_polar(q), q = (0, 0, 0, joint angles)",
+    }
+    return _store._normalise(meta)
+
+
+def make_plan(scene: Scene, *, grid=None, samples=None, seed=None, bounds=None,
+              chunk=None) -> Plan:
+    """The :class:`~snakecg.sweeps.plan.Plan` of a sweep's arguments (validated)."""
+    joints = scene.robot.joints
+    if samples is not None:
+        if grid is not None:
+            raise InputError("give grid or samples, not both")
+        return samples_plan(joints, samples, seed, scene.scenario, bounds, chunk)
+    if seed is not None:
+        raise InputError("seed goes with samples (seeded random configurations); a grid "
+                         "has no seed")
+    if bounds is not None:
+        raise InputError("bounds go with samples; a grid gives its joint values itself")
+    return grid_plan(joints, grid, scene.scenario, chunk)
+
+
+def sweep(scene, *, grid=None, samples=None, seed=None, store, client=None, chunk=None,
+          progress=None, bounds=None, scheduler=None, workers=None, limit=LIMIT,
+          verify=True) -> SweepResult:
+    """Evaluate :meth:`~snakecg.SceneModel.extremes` and the COM's polar coordinates for
+    every configuration of a grid or of seeded samples, in chunks on Dask, into a Zarr store.
+
+    * ``scene``: a :class:`~snakecg.Scene` (it pickles; each worker loads the model from its
+      own cache).
+    * ``grid``: joint angles (rad), one 1-D sequence for every joint or one per joint;
+      default the paper's -135..135 degrees every 10 (28 values per joint). Or ``samples``
+      configurations uniform in ``bounds`` (default -135..135 degrees on every joint, one
+      ``(lo, hi)`` pair in rad or one per joint) from ``seed``.
+    * ``store``: path of the Zarr store (a folder, e.g. ``sweep.zarr``). If it exists and was
+      made with the same arguments, only the chunks missing from it are computed (each
+      recorded chunk is first checked against its digest when ``verify``); a store made with
+      other arguments is refused.
+    * Where it runs: ``client`` (a ``dask.distributed.Client``), or ``scheduler``
+      (``tcp://HOST:PORT`` of a running cluster), or else a local cluster of ``workers``
+      processes (default one per core) started and shut down by this call.
+    * ``chunk``: configurations per chunk (one Dask task, one Zarr chunk); default
+      :data:`~snakecg.sweeps.plan.DEFAULT_CHUNK` of the scenario.
+    * ``progress``: None (Dask's progress bar when standard error is a terminal, else one
+      line per tenth; ``SNAKECG_PROGRESS=0`` silences it), True, False, ``"bar"``,
+      ``"lines"``.
+    * ``limit``: refuse more configurations than this (None: no limit).
+
+    Returns a :class:`SweepResult`. Inputs are checked before any work; a bad one raises
+    :class:`~snakecg.InputError` and writes nothing.
+    """
+    t0 = time.perf_counter()
+    if not isinstance(scene, Scene):
+        raise InputError(f"scene must be a snakecg.Scene, got {type(scene).__name__}")
+    plan = make_plan(scene, grid=grid, samples=samples, seed=seed, bounds=bounds, chunk=chunk)
+    if limit is not None:
+        if isinstance(limit, bool) or not isinstance(limit, int) or limit < 1:
+            raise InputError(f"limit must be an integer >= 1 or None, got {limit!r}")
+        if plan.size > limit:
+            raise InputError(f"{plan.size:,} configurations exceed the limit of {limit:,}; "
+                             f"lift it (limit=None, or --force) to run them")
+    mode = progress_mode(progress)
+    if sum(x is not None for x in (client, scheduler, workers)) > 1:
+        raise InputError("give one of client, scheduler or workers")
+    if scheduler is not None:
+        from .cluster import check_scheduler
+
+        check_scheduler(scheduler)
+    elif workers is not None:
+        from .cluster import check_workers
+
+        check_workers(workers)
+    if not isinstance(store, (str, Path)) or not str(store).strip():
+        raise InputError(f"store must be a path (e.g. 'sweep.zarr'), got {store!r}")
+    path = Path(store)
+    meta = _meta(scene, plan)
+    state = _store.check_target(path)
+    root, done = None, np.zeros(plan.n_chunks, dtype=bool)
+    if state == "existing":
+        root = _store.open_existing(path, meta)
+        done = _store.completed(root, plan, verify=verify)
+    todo = [int(i) for i in np.flatnonzero(~done)]
+    reused = plan.n_chunks - len(todo)
+    if not todo:
+        _mark(root, plan.n_chunks, plan.n_chunks)
+        return SweepResult(str(path), plan.size, plan.n_chunks, plan.chunk, 0, reused,
+                           time.perf_counter() - t0)
+    c, close = connect(client=client, scheduler=scheduler, workers=workers)
+    try:
+        dashboard = dashboard_of(c)
+        if dashboard and mode != "off":
+            sys.stderr.write(f"snakecg sweep: Dask dashboard at {dashboard}\n")
+        if root is None:
+            root = _store.create(path, meta, plan.size, plan.chunk, plan.joints)
+        _compute(c, scene, plan, root, todo, reused, mode)
+    finally:
+        close()
+    return SweepResult(str(path), plan.size, plan.n_chunks, plan.chunk, len(todo), reused,
+                       time.perf_counter() - t0, dashboard)
+
+
+def _mark(root, completed: int, total: int) -> None:
+    root.attrs.update({"completed_chunks": int(completed), "complete": completed == total})
+
+
+def _compute(client, scene, plan, root, todo, reused, mode) -> None:
+    from distributed import as_completed
+    from distributed.client import FutureCancelledError
+
+    tag = uuid.uuid4().hex[:8]
+    futures = [client.submit(evaluate_chunk, scene, plan, i, key=f"snakecg-sweep-{tag}-{i}",
+                             pure=False) for i in todo]
+    index = {f.key: i for f, i in zip(futures, todo)}
+    lines = ProgressLines(plan.n_chunks, reused, plan.size) if mode == "lines" else None
+    if mode == "bar":
+        start_bar(client, futures)
+    completed = reused
+    pending = set(todo)
+    configurations_done = sum(plan.chunk_range(i)[1] - plan.chunk_range(i)[0]
+                              for i in range(plan.n_chunks) if i not in pending)
+    every = max(1, plan.n_chunks // 50)
+    try:
+        for fut in as_completed(futures):
+            i = index[fut.key]
+            try:
+                arrays = fut.result()
+            except FutureCancelledError:
+                raise SnakecgError(f"chunk {i} was cancelled (the cluster went away?)") \
+                    from None
+            except SnakecgError:
+                raise
+            except Exception as exc:  # noqa: BLE001 - KilledWorker, lost workers, ...
+                raise SnakecgError(f"chunk {i} failed on the cluster: {type(exc).__name__}: "
+                                   f"{' '.join(str(exc).split())[:300]}") from None
+            start, stop = plan.chunk_range(i)
+            _store.write_chunk(root, i, start, stop, arrays)
+            fut.release()
+            completed += 1
+            configurations_done += stop - start
+            if lines is not None:
+                lines.update(configurations_done)
+            if completed % every == 0:
+                _mark(root, completed, plan.n_chunks)
+    finally:
+        try:
+            client.cancel([f for f in futures if not f.done()])
+        except Exception:  # noqa: BLE001 - the cluster may be gone already
+            pass
+        _mark(root, int(np.count_nonzero(root["chunk_digest"][:])), plan.n_chunks)

@@ -1,0 +1,170 @@
+"""The Zarr store of a sweep: layout, creation, compatibility, chunk records.
+
+Layout (a Zarr v3 group, a folder ``STORE.zarr``), every array chunked like the computation
+(``chunk`` configurations per chunk, all joints of a configuration in one chunk):
+
+* ``q`` ``(N, n_a)``: joint angles (rad); ``com_radius``, ``com_angle`` ``(N,)``: polar
+  coordinates of the snake's COM w.r.t. the contact point (m, rad; see
+  :func:`snakecg.analysis.com_polar`);
+* for every metric ``m`` of :data:`snakecg.analysis.METRICS`: ``max_m`` / ``min_kept_m``
+  ``(N,)`` and the torques attaining them ``tau_max_m`` / ``tau_min_kept_m`` ``(N, n_a)``
+  (:class:`snakecg.analysis.Extremes` ``.max``, ``.min_kept`` and their ``tau_`` partners);
+* ``chunk_digest`` ``(n_chunks,)`` uint64: 0 for a chunk not written yet, else a BLAKE2b
+  digest of the chunk's data. It is written only after all of the chunk's data, so a chunk
+  counts as complete only when its data is all there; on resume every recorded chunk is
+  read back and checked against its digest (a mismatch is computed again).
+* attributes ``snakecg_sweep``: robot, scene, grid or sampling, chunk, package version,
+  array names (the fingerprint a resumed sweep must match); ``completed_chunks`` and
+  ``complete``, updated as the sweep goes.
+
+Zarr's local store writes each key through a temporary file and a rename, and the group is
+first built under a temporary name and renamed into place, so no file is ever half-written
+and a store that fails to be created leaves nothing behind.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import os
+import shutil
+import uuid
+from pathlib import Path
+
+import numpy as np
+
+from ..analysis import METRICS
+from ..errors import InputError
+
+__all__ = ["array_names", "create", "open_existing", "check_target", "digest", "write_chunk",
+           "completed", "FORMAT"]
+
+#: Layout version of the store (attribute ``snakecg_sweep.format``).
+FORMAT = "snakecg.sweep/1"
+_DIGEST_BLOCK = 4096  # chunk_digest entries per Zarr chunk
+
+
+def array_names() -> tuple[str, ...]:
+    """Names of the per-configuration arrays, in the order the digest reads them."""
+    names = ["q", "com_radius", "com_angle"]
+    for m in METRICS:
+        names += [f"max_{m}", f"tau_max_{m}", f"min_kept_{m}", f"tau_min_kept_{m}"]
+    return tuple(names)
+
+
+def _zarr():
+    try:
+        import zarr
+    except ModuleNotFoundError:
+        raise InputError("sweeps need the sweep extra (Dask and Zarr): "
+                         "pip install 'snakecg[sweep]'") from None
+    return zarr
+
+
+def check_target(path: Path) -> str:
+    """``"new"`` if a store can be created at ``path``, ``"existing"`` if one is there;
+    raises :class:`InputError` for anything else (before any work is done)."""
+    if path.exists():
+        if (path / "zarr.json").is_file():
+            return "existing"
+        what = "a file" if path.is_file() else "a folder that is not a Zarr store"
+        raise InputError(f"--out {str(path)!r} is {what}; give a new path or a sweep store "
+                         f"made by snakecg sweep")
+    parent = path.parent if str(path.parent) else Path(".")
+    if not parent.is_dir():
+        raise InputError(f"--out {str(path)!r}: the folder {str(parent)!r} does not exist")
+    if not os.access(parent, os.W_OK | os.X_OK):
+        raise InputError(f"--out {str(path)!r}: the folder {str(parent)!r} is not writable")
+    return "new"
+
+
+def _normalise(obj):
+    return json.loads(json.dumps(obj))
+
+
+def create(path: Path, meta: dict, n_configurations: int, chunk: int, joints: int):
+    """Create the store (under a temporary name, renamed into place) and open it."""
+    zarr = _zarr()
+    n_chunks = -(-n_configurations // chunk)
+    tmp = path.with_name(f".{path.name}.{uuid.uuid4().hex}.partial")
+    try:
+        root = zarr.open_group(str(tmp), mode="w-")
+        for name in array_names():
+            wide = name == "q" or name.startswith("tau_")
+            shape = (n_configurations, joints) if wide else (n_configurations,)
+            chunks = (chunk, joints) if wide else (chunk,)
+            root.create_array(name, shape=shape, chunks=chunks, dtype="float64",
+                              fill_value=np.nan, compressors=None)
+        root.create_array("chunk_digest", shape=(n_chunks,), chunks=(min(n_chunks,
+                                                                         _DIGEST_BLOCK),),
+                          dtype="uint64", fill_value=0, compressors=None)
+        root.attrs.update({"snakecg_sweep": meta, "completed_chunks": 0, "complete": False})
+        os.rename(tmp, path)
+    except OSError as exc:  # unwritable, read-only file system, no space, ...
+        shutil.rmtree(tmp, ignore_errors=True)
+        raise InputError(f"--out {str(path)!r} cannot be written: "
+                         f"{' '.join(str(exc).split())}") from None
+    except BaseException:
+        shutil.rmtree(tmp, ignore_errors=True)
+        raise
+    return zarr.open_group(str(path), mode="r+")
+
+
+def open_existing(path: Path, meta: dict | None = None, *, mode: str = "r+"):
+    """Open a sweep store; with ``meta``, refuse one made with other arguments."""
+    zarr = _zarr()
+    try:
+        root = zarr.open_group(str(path), mode=mode)
+        stored = dict(root.attrs).get("snakecg_sweep")
+    except Exception as exc:  # noqa: BLE001 - any unreadable store is the user's input
+        raise InputError(f"{str(path)!r} is not a readable sweep store: "
+                         f"{' '.join(str(exc).split()) or type(exc).__name__}") from None
+    if not isinstance(stored, dict) or stored.get("format") != FORMAT:
+        raise InputError(f"{str(path)!r} is a Zarr store but not a snakecg sweep store "
+                         f"(no attribute snakecg_sweep of format {FORMAT})")
+    if meta is not None:
+        want = _normalise(meta)
+        diff = sorted(k for k in set(want) | set(stored) if want.get(k) != stored.get(k))
+        if diff:
+            raise InputError(
+                f"the store {str(path)!r} was made with other arguments (they differ in: "
+                f"{', '.join(diff)}); rerun with the arguments that made it to resume, or "
+                f"give a new --out")
+    return root
+
+
+def digest(arrays: dict[str, np.ndarray]) -> int:
+    """Nonzero 64-bit BLAKE2b digest of a chunk's arrays (in :func:`array_names` order)."""
+    h = hashlib.blake2b(digest_size=8)
+    for name in array_names():
+        h.update(np.ascontiguousarray(arrays[name], dtype=np.float64).tobytes())
+    return int.from_bytes(h.digest(), "little") | 1
+
+
+def write_chunk(root, index: int, start: int, stop: int, arrays: dict[str, np.ndarray]) -> int:
+    """Write a chunk's data, then its digest (the record that the chunk is complete)."""
+    for name in array_names():
+        root[name][start:stop] = arrays[name]
+    d = digest(arrays)
+    root["chunk_digest"][index] = np.uint64(d)
+    return d
+
+
+def read_chunk(root, start: int, stop: int, names=None) -> dict[str, np.ndarray]:
+    return {name: root[name][start:stop] for name in (names or array_names())}
+
+
+def completed(root, plan, *, verify: bool = True) -> np.ndarray:
+    """Boolean ``(n_chunks,)``: which chunks are complete (digest recorded and, with
+    ``verify``, matching the data read back)."""
+    digests = root["chunk_digest"][:]
+    done = digests != 0
+    if verify:
+        for i in np.flatnonzero(done):
+            start, stop = plan.chunk_range(int(i))
+            try:
+                ok = digest(read_chunk(root, start, stop)) == int(digests[i])
+            except Exception:  # noqa: BLE001 - an unreadable chunk is computed again
+                ok = False
+            done[i] = ok
+    return done
