@@ -82,7 +82,7 @@ _EXTREMES_LIMITS = {"samples": (2, 100_000), "refine": (0, 1000), "starts": (1, 
 def _check_extremes_options(kwargs: dict) -> None:
     from ._inputs import integer
 
-    allowed = {*_EXTREMES_LIMITS, "refined"}
+    allowed = {*_EXTREMES_LIMITS, "refined", "exact"}
     unknown = set(kwargs) - allowed
     if unknown:
         raise InputError(f"extremes() takes no keyword {sorted(unknown)[0]!r:.60} (it takes: "
@@ -91,6 +91,9 @@ def _check_extremes_options(kwargs: dict) -> None:
         if k in kwargs:
             integer(k, kwargs[k], lo=lo, hi=hi, allow_none=(k == "samples"),
                     why=" (the limit)")
+    if "exact" in kwargs and kwargs["exact"] is not None and not isinstance(kwargs["exact"], bool):
+        raise InputError(f"exact must be True, False or None (exact bounded-wheel extremes, "
+                         f"the default for up to 4 joints), got {kwargs['exact']!r:.60}")
     refined = kwargs.get("refined")
     if "refined" in kwargs and (isinstance(refined, str) or not isinstance(
             refined, (list, tuple, set, frozenset)) or not all(isinstance(m, str)

@@ -484,7 +484,7 @@ def test_real_process_malformed_file(tmp_path):
 # command line; the command must refuse it in one line, exit 2, before any model is
 # generated or loaded and before anything is written
 SCENE_OPTION_FAULTS = {
-    "--joints": ["0", "-3", "x", "", "2.5", "31", str(2**70)],
+    "--joints": ["0", "-3", "x", "", "2.5", "51", str(2**70)],
     "--robot": ["", "/nonexistent/robot.toml", "/", "/dev/zero", "/dev/null"],
     "--scenario": ["muddy", "", "Wheels"],
     "--kappa": ["nan", "inf", "-1", "0", "1e400", "", "heavy", "-inf"],
@@ -521,7 +521,7 @@ COMMAND_FAULTS = {
     "reproduce": {"--out": [""], "--kappa": ["nan", "0", "-1", "inf", "x", ""],
                   "--torque-grid": ["10", "0", "100000000", "x", "", "-5"],
                   "--formats": ["", "gif", "png,jpg", " , "]},
-    "generate": {"--joints": ["0", "-1", "31", "x", "", str(10**15)], "--out": [""]},
+    "generate": {"--joints": ["0", "-1", "51", "x", "", str(10**15)], "--out": [""]},
     "show": {"--joints": ["0", "-1", "x", ""]},
 }
 # options that are faults only in some combinations (the rest of the line is valid)
