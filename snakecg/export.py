@@ -24,11 +24,10 @@ Every file is written atomically (a unique temporary name, then ``os.replace``).
 from __future__ import annotations
 
 import math
-import os
 import re
-import tempfile
 from pathlib import Path
 
+from ._files import write_bytes
 from .errors import InputError
 
 __all__ = ["export_library", "c_layout"]
@@ -155,19 +154,6 @@ def _render(layout: dict, source: str | None) -> dict[str, str]:
     return {names[t]: env.get_template(t).render(**ctx) for t in _TEMPLATES}
 
 
-def _write_atomic(path: Path, data: bytes) -> None:
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
-    try:
-        with os.fdopen(fd, "wb") as fh:
-            fh.write(data)
-        os.chmod(tmp, 0o644)
-        os.replace(tmp, path)
-    except BaseException:
-        Path(tmp).unlink(missing_ok=True)
-        raise
-
-
 def export_library(scene, out, *, source: str | None = None) -> list[Path]:
     """Write the C library of ``scene`` (a :class:`~snakecg.Scene`, its robot's parameters
     baked in) into the folder ``out``; returns the files written.
@@ -189,6 +175,7 @@ def export_library(scene, out, *, source: str | None = None) -> list[Path]:
     files.update({k: v.encode() for k, v in _render(layout, source).items()})
     written = []
     for rel, data in files.items():
-        _write_atomic(out / rel, data)
+        (out / rel).parent.mkdir(parents=True, exist_ok=True)
+        write_bytes(out / rel, data)  # unique temporary name, then os.replace
         written.append(out / rel)
     return written
