@@ -26,6 +26,8 @@ import numpy as np
 
 import snakecg
 
+from _machine import cpu_name  # benchmarks/_machine.py
+
 JOINTS = 3
 SCENARIOS = ("ideal_wheels", "wheels")
 
@@ -189,15 +191,7 @@ def best_of(fn, repeat):
 
 
 def machine() -> str:
-    cpu = platform.processor() or "?"
-    try:
-        with open("/proc/cpuinfo") as fh:
-            for line in fh:
-                if line.startswith("model name"):
-                    cpu = line.split(":", 1)[1].strip()
-                    break
-    except OSError:
-        pass
+    cpu = cpu_name()
     return f"{cpu}, {os.cpu_count()} cores, Python {platform.python_version()}, numpy {np.__version__}"
 
 

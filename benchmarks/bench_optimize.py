@@ -41,6 +41,8 @@ import numpy as np
 import snakecg
 from snakecg.analysis import joint_grid
 
+from _machine import cpu_name  # benchmarks/_machine.py
+
 KINDS = {
     "max-sr, ellipsoid": dict(objective="max_sr"),
     "max-sr, box": dict(objective="max_sr", tau_max=0.2),
@@ -56,15 +58,7 @@ NLP_KIND = "max-sr, sliding allowed, ellipsoid"
 
 
 def machine() -> str:
-    cpu = platform.processor() or platform.machine()
-    try:
-        with open("/proc/cpuinfo") as fh:
-            for line in fh:
-                if line.startswith("model name"):
-                    cpu = line.split(":", 1)[1].strip()
-                    break
-    except OSError:
-        pass
+    cpu = cpu_name()
     load = os.getloadavg() if hasattr(os, "getloadavg") else ("?",)
     return (f"{cpu}, {os.cpu_count()} cores, Python {platform.python_version()}, "
             f"load average {' '.join(f'{x:.2f}' for x in load)}")

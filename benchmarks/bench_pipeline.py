@@ -39,6 +39,8 @@ import time
 
 import numpy as np
 
+from _machine import cpu_name  # benchmarks/_machine.py
+
 JOINTS = (2, 3, 6, 10, 20)
 CHECKED_IN_MAX = 6
 
@@ -218,15 +220,7 @@ def c_size_table(joints) -> int:
 
 
 def machine() -> str:
-    cpu = platform.processor() or "?"
-    try:
-        with open("/proc/cpuinfo") as fh:
-            for line in fh:
-                if line.startswith("model name"):
-                    cpu = line.split(":", 1)[1].strip()
-                    break
-    except OSError:
-        pass
+    cpu = cpu_name()
     load = os.getloadavg() if hasattr(os, "getloadavg") else ("?",)
     return (f"{os.cpu_count()} CPUs, {cpu}; Python {platform.python_version()}; "
             f"load average {', '.join(f'{x:.2f}' for x in load)}")

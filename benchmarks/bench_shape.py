@@ -27,6 +27,8 @@ import time
 import snakecg
 from snakecg.analysis import joint_grid
 
+from _machine import cpu_name  # benchmarks/_machine.py
+
 KINDS = [
     ("max-sr", "frictionless", dict(objective="max_sr")),
     ("max-sr", "wheels", dict(objective="max_sr")),
@@ -39,15 +41,7 @@ KINDS = [
 
 
 def machine() -> str:
-    cpu = platform.processor() or platform.machine()
-    try:
-        with open("/proc/cpuinfo") as fh:
-            for line in fh:
-                if line.startswith("model name"):
-                    cpu = line.split(":", 1)[1].strip()
-                    break
-    except OSError:
-        pass
+    cpu = cpu_name()
     return f"{cpu}, {os.cpu_count()} cores, Python {platform.python_version()}"
 
 
