@@ -29,6 +29,7 @@ import snakecg
 from snakecg import artifacts, native
 from snakecg.errors import ArtifactError, InputError
 from snakecg_derive.catalog import function_names
+from test_faults import child_env
 
 PY = sys.executable
 TIMEOUT = 900
@@ -45,13 +46,6 @@ def fresh_cache(tmp_path, monkeypatch):
     monkeypatch.setattr(snakecg.model, "_BACKENDS", {})
     return cache
 
-
-def child_env(cache: Path, **extra) -> dict:
-    env = dict(os.environ)
-    env["SNAKECG_CACHE_DIR"] = str(cache)
-    env.pop("SNAKECG_BACKEND", None)
-    env.update({k: str(v) for k, v in extra.items()})
-    return env
 
 
 def _edit_manifest(folder: Path, edit) -> None:
