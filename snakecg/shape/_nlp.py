@@ -60,27 +60,12 @@ def generated_function(model, name: str):
     ``fixed`` maps the names of the inputs that are not configuration-dependent to the values
     :class:`~snakecg.SceneModel` passes (parameter vector ``K``, contact link one-hot, side,
     object mass and inertia, wheel offsets, contact offset and object distance, the held-row
-    mask ``free`` of "every row held", no fixed forces, no regularization). The function is
-    the public :meth:`~snakecg.SceneModel.casadi_function`.
+    mask ``free`` of "every row held", no fixed forces, no regularization, at rest): the
+    public :meth:`~snakecg.SceneModel.casadi_function` and
+    :meth:`~snakecg.SceneModel.function_inputs`.
     """
     fn = model.casadi_function(name)
-    scene = model.scene
-    values = {
-        "K": model.parameters,
-        "contact_link": model._contact_link,
-        "side": model._side,
-        "object_mass": model._object_mass,
-        "object_inertia": model._object_inertia,
-        "wheel_offset": model._wheel_offset,
-        "contact_offset": np.array([scene.contact_offset]),
-        "object_distance": np.array([scene.object_distance]),
-        "free": model.present.astype(float),
-        "free_lost": np.where(np.arange(model.n_constraints) == 0, 0.0,
-                              model.present.astype(float)),
-        "lam_fixed": np.zeros(model.n_constraints),
-        "regularization": np.zeros(1),
-    }
-    fixed = {k: values[k] for k in fn.name_in() if k in values}
+    fixed = model.function_inputs(name)  # the values the runtime passes, by input name
     return fn, fixed
 
 
