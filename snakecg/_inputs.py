@@ -87,12 +87,14 @@ def integer(name: str, value, *, lo=None, hi=None, allow_none: bool = False, why
     return v
 
 
-def as_batch(name: str, value, size: int, *, what: str = "") -> tuple[np.ndarray, bool]:
+def as_batch(name: str, value, size: int, *, what: str = "",
+             check_finite: bool = True) -> tuple[np.ndarray, bool]:
     """``value`` as a C-contiguous float64 ``(N, size)`` array, and whether it was batched.
 
     Accepts shape ``(size,)`` (one sample) or ``(N, size)``. Raises :class:`InputError`
     naming the argument and the expected form, on complex or non-numeric values, on
-    integers beyond float range, and on NaN or infinity.
+    integers beyond float range, and on NaN or infinity (``check_finite=False``: left to a
+    caller that checks them in its own pass and calls again with the check for the message).
     """
     if isinstance(value, (str, bytes)):
         raise InputError(f"{name} must be numeric with shape ({size},) or (N, {size}){what}, "
@@ -124,7 +126,7 @@ def as_batch(name: str, value, size: int, *, what: str = "") -> tuple[np.ndarray
         raise InputError(
             f"{name} has shape {arr.shape}, expected ({size},) or (N, {size}){what}"
         )
-    if not np.all(np.isfinite(arr)):
+    if check_finite and not np.all(np.isfinite(arr)):
         bad = tuple(int(i) for i in np.argwhere(~np.isfinite(arr))[0])
         raise InputError(f"{name} must be finite, found {arr[bad]} at index {bad}")
     return np.ascontiguousarray(arr), batched

@@ -9,23 +9,32 @@ SymPy or Jinja2.
 
 from __future__ import annotations
 
-import math
-import threading
-from dataclasses import dataclass, field
 from pathlib import Path
 
 import numpy as np
 
-from . import artifacts
-from . import kernels
-from ._inputs import (CHUNK_ROWS, MAX_MAGNITUDE, as_batch, broadcast_batches, check_batch_memory,
-                      expand)
+from . import artifacts, kernels
+from ._inputs import (
+    MAX_MAGNITUDE,
+    as_batch,
+    broadcast_batches,
+    check_batch_memory,
+)
+from .core import Data, Layout
 from .errors import InputError
+from .forward import ForwardResult, _Columns, forward, forward_one
 from .native import load_backend
 from .robot import Robot, Scene
-from .rows import WEAK, finish as finish_rows
-from .solver import (ABSENT, HELD, LOST, PIVOT_TOL, REGULARIZATION, SLIDE_NEG, SLIDE_POS,
-                     _violations_one, check_input_range, default_max_iter, solve_active_set)
+from .solver import (
+    ABSENT,
+    HELD,
+    LOST,
+    PIVOT_TOL,
+    REGULARIZATION,
+    SLIDE_NEG,
+    SLIDE_POS,
+    default_max_iter,
+)
 
 __all__ = ["load", "RobotModel", "SceneModel", "ForwardResult"]
 
@@ -212,70 +221,15 @@ class RobotModel:
         return f"<{type(self).__name__} of {what!r}, backend {self.backend_kind!r}>"
 
 
-# ------------------------------------------------------------------------------------------
-@dataclass
-class ForwardResult:
-    """Outcome of :meth:`SceneModel.forward` for one sample or a batch (leading axis N).
-
-    * ``qdd`` (n_s): snake accelerations; ``a_obj`` (3): object acceleration (x, y, psi);
-    * ``lam`` (n_c): constraint forces, row 0 the contact (N, pushes the object along the
-      normal), row ``i`` the lateral force of the wheel of link ``i`` (N, along
-      ``(-sin phi_i, cos phi_i)``); ``w`` (n_c): the rows' accelerations;
-    * ``contact``: the contact is kept (``lam_c >= 0``) or lost; ``wheel_state`` (n_l):
-      ``"none"``, ``"stick"``, ``"slide+"`` / ``"slide-"`` (force at ``+-mu m g``);
-    * norms: ``norm_lambda = lam^T G_c lam``, ``norm_a_obj = a_obj^T I_obj a_obj`` (eq. 27),
-      ``norm_qdd = qdd^T M_s qdd`` (eq. 26), slippage ratio ``sr`` (eq. 30, 0 when the
-      contact is lost);
-    * ``conditioning``: the estimated accuracy, results carry a relative error of about
-      ``1e-16 / conditioning``: the smallest of the held rows' pivot ratio (its square root
-      where weakly independent rows are solved from the rows themselves, ``snakecg.rows``) and
-      the mass matrix's; ``singular``: not an exact answer (conditioning 0): rows dependent even
-      when factored directly (least-norm forces), a numerically singular mass matrix, or a
-      physically impossible result (docs/scenarios.md).
-    """
-
-    qdd: np.ndarray
-    a_obj: np.ndarray
-    lam: np.ndarray
-    w: np.ndarray
-    contact: np.ndarray
-    wheel_state: np.ndarray
-    norm_lambda: np.ndarray
-    norm_a_obj: np.ndarray
-    norm_qdd: np.ndarray
-    sr: np.ndarray
-    gap: np.ndarray
-    singular: np.ndarray
-    conditioning: np.ndarray = None
-    tau: np.ndarray = field(repr=False, default=None)
-
-    @property
-    def sliding(self) -> np.ndarray:
-        return np.isin(self.wheel_state, ("slide+", "slide-"))
-
-    def to_dict(self) -> dict:
-        """JSON-ready dictionary (schema in docs/cli.md)."""
-        out = {}
-        for k in ("tau", "qdd", "a_obj", "lam", "w", "contact", "wheel_state", "norm_lambda",
-                  "norm_a_obj", "norm_qdd", "sr", "singular", "conditioning"):
-            v = getattr(self, k)
-            out[k] = np.asarray(v).tolist()
-        return out
-
-
-_STATE_NAMES = np.array(["none", "stick", "lost", "slide+", "slide-"])
-#: Names of the wheel rows' states (a wheel row is never "lost"; read as "none").
-_WHEEL_STATE_NAMES = np.where(_STATE_NAMES == "lost", "none", _STATE_NAMES)
-
-
-def _mass_ratio_one(M) -> float:
-    """:func:`snakecg.rows.mass_pivot_ratio` of one mass matrix (the one-sample path)."""
-    M = np.asarray(M).reshape(int(round(math.sqrt(np.size(M)))), -1)
-    d = np.sqrt(np.diag(M))
-    try:
-        return float(np.min(np.diag(np.linalg.cholesky(M / np.outer(d, d)))) ** 2)
-    except (np.linalg.LinAlgError, FloatingPointError):
-        return 0.0
+def _plain(x, size: int) -> bool:
+    """A list or tuple of ``size`` Python floats or ints (the one-sample fast path)."""
+    if len(x) != size:
+        return False
+    for e in x:
+        t = type(e)
+        if t is not float and t is not int:
+            return False
+    return True
 
 
 class SceneModel(RobotModel):
@@ -305,11 +259,25 @@ class SceneModel(RobotModel):
         if scene.scenario == "wheels":
             bounds[1:] = np.asarray(scene.wheel_bounds())
         self.bounds = bounds
-        # one-sample path of forward: initial row states, bounds as floats, per-thread buffers
-        self._state0 = [int(s) for s in np.where(present, HELD, ABSENT)]
-        self._bounds_list = [float(b) for b in bounds]
-        self._zeros_one = (np.zeros(self.n_coordinates), np.zeros(3))
-        self._local = threading.local()
+        # the runtime core: the scene's constants in one vector, the output columns, a
+        # default workspace (snakecg.core.Data)
+        self.core = getattr(self.backend, "core", None)
+        layout = self.core.layout if self.core is not None else Layout.of(self.manifest)
+        self.columns = _Columns(layout)
+        parts = {"K": self.parameters, "contact_link": onehot, "side": self._side,
+                 "object_mass": self._object_mass, "object_inertia": self._object_inertia,
+                 "wheel_offset": self._wheel_offset, "contact_offset": [scene.contact_offset],
+                 "object_distance": [scene.object_distance],
+                 "present": present.astype(float), "bounds": bounds}
+        self._scene_vector = np.concatenate([np.ravel(np.asarray(parts[k], dtype=float))
+                                             for k, _ in layout.scene_fields()])
+        self.scene_address = self._scene_vector.ctypes.data
+        self.max_iter = default_max_iter(self.n_constraints)
+        self.zero_inputs = {"v": np.zeros((1, self.n_coordinates)), "v_obj": np.zeros((1, 3)),
+                            "f_obj": np.zeros((1, 3))}
+        self._shape_q, self._shape_tau = (self.n_coordinates,), (self.n_joints,)
+        self.data = self.create_data().bind(self)
+        """The default workspace (used by one caller at a time; others get a fresh one)."""
 
     # placement ----------------------------------------------------------------------------
     def place_object(self, q):
@@ -331,193 +299,44 @@ class SceneModel(RobotModel):
         return o["q_obj"][:, :, 0], o["rho"][:, :, 0], o["contact_point"][:, :, 0]
 
     # forward -------------------------------------------------------------------------------
+    def create_data(self) -> Data:
+        """A new workspace for this model (:class:`snakecg.core.Data`): give one to each
+        thread that calls :meth:`forward` on one sample at a high rate (``data=``)."""
+        return Data(self.core.layout if self.core is not None else Layout.of(self.manifest))
+
+    def __getstate__(self):
+        raise TypeError("a loaded model holds compiled code and cannot be pickled; pickle its "
+                        "Scene and call snakecg.load(scene) where it is needed")
+
     def forward(self, q, tau, *, v=None, v_obj=None, f_obj=None, q_obj=None, rho=None,
-                max_iter: int | None = None) -> ForwardResult:
+                max_iter: int | None = None, data: Data | None = None,
+                out: ForwardResult | None = None) -> ForwardResult:
         """Accelerations, constraint forces, active set and norms (eqs. 12-30).
 
         ``q`` ``(n_s,)`` or ``(N, n_s)``; ``tau`` ``(n_a,)`` or ``(N, n_a)`` (one broadcasts
         against the other). Optional: snake velocities ``v``, object twist ``v_obj``, external
         wrench on the object ``f_obj`` (F_x, F_y, torque). The object's pose ``q_obj`` and the
         contact point in its frame ``rho`` default to the scene's placement (the object
-        touching the contact link at ``contact_offset``).
+        touching the contact link at ``contact_offset``). ``data``: a workspace from
+        :meth:`create_data` (one per thread); ``out``: an earlier result of the same shape
+        whose array is overwritten (no allocation). Solved in compiled code per sample
+        (:mod:`snakecg.core`); see :mod:`snakecg.forward`.
         """
-        na = self.n_joints
-        if max_iter is not None and (isinstance(max_iter, bool)
-                                     or not isinstance(max_iter, (int, np.integer))
-                                     or max_iter < 1):
-            raise InputError(f"max_iter must be an integer >= 1 (active-set iterations before"
-                             f" enumerating), or None for the default; got {max_iter!r}")
-        qa, bq = self._q(q)
-        ta, bt = as_batch("tau", tau, na, what=f" (one torque per joint, n_a = {na})")
-        parts = {"q": (qa, bq), "tau": (ta, bt)}
-        extra = {}
-        for name, val, size in (("v", v, self.n_coordinates), ("v_obj", v_obj, 3),
-                                ("f_obj", f_obj, 3), ("q_obj", q_obj, 3), ("rho", rho, 2)):
-            if val is not None:
-                arr = as_batch(name, val, size)
-                parts[name] = arr
-                extra[name] = arr[0]
-        n = broadcast_batches(**parts)
-        batched = any(b for _, b in parts.values())
-        check_input_range(parts)
-        if ("q_obj" in extra) != ("rho" in extra):
-            raise InputError("q_obj and rho go together: give both or neither")
-        if n > CHUNK_ROWS:
-            return self._forward_chunked(parts, n, max_iter)
-        if not batched and self.backend.kind == "compiled":
-            res = self._forward_one(qa[0], ta[0], extra, max_iter)
-            if res is not None:
-                return res
-        if "q_obj" not in extra:
-            q_obj_a, rho_a = self._place(qa, qa.shape[0])[:2]
-        else:
-            q_obj_a, rho_a = extra["q_obj"], extra["rho"]
-        zeros_ns = np.zeros(self.n_coordinates)
-        base = {
-            "q": qa, "v": extra.get("v", zeros_ns[None, :]), "tau": ta,
-            "q_obj": q_obj_a, "v_obj": extra.get("v_obj", np.zeros((1, 3))),
-            "f_obj": extra.get("f_obj", np.zeros((1, 3))), "rho": rho_a,
-        }
-        sol = self._solve(base, n, max_iter=max_iter)
-        return self._result(sol, expand(ta, n), batched)
-
-    def _forward_chunked(self, parts: dict, n: int, max_iter) -> ForwardResult:
-        """A large batch in chunks of CHUNK_ROWS rows, written into the result arrays: the
-        working memory stays that of one chunk; a result that would not fit is refused."""
-        ns, nc, nl, na = self.n_coordinates, self.n_constraints, self.n_links, self.n_joints
-        per_row = 8 * (ns + 3 + 2 * nc + 6 + na) + 24 * nl + 2
-        check_batch_memory("forward", n, per_row, what="results")
-        out = None
-        for start in range(0, n, CHUNK_ROWS):
-            stop = min(n, start + CHUNK_ROWS)
-            args = {k: (a[start:stop] if a.shape[0] == n else a[0]) for k, (a, _) in parts.items()}
-            chunk = self.forward(args.pop("q"), args.pop("tau"), max_iter=max_iter, **args)
-            if out is None:
-                out = {k: np.empty((n,) + np.shape(v)[1:], dtype=np.asarray(v).dtype)
-                       for k, v in vars(chunk).items() if v is not None}
-            for k in out:
-                out[k][start:stop] = getattr(chunk, k)
-        return ForwardResult(**out)
-
-    def _forward_one(self, q, tau, extra, max_iter):
-        """``forward`` for one sample through preallocated one-sample buffers of the compiled
-        functions (the general path's per-call numpy and ctypes overhead is ~10x the C time).
-        The same active-set passes as :func:`~snakecg.solver.solve_active_set`; returns None to
-        leave the rare cases to the general path: dependent held rows (regularised re-solve)
-        and no convergence within ``max_iter`` passes (enumeration)."""
-        ks = getattr(self._local, "kernels", None)
-        if ks is None:
-            from .native import BoundFunction  # one-sample buffers
-
-            be, K = self.backend, self.parameters
-            place = BoundFunction(be, "place_object", {
-                "K": K, "contact_link": self._contact_link,
-                "contact_offset": [self.scene.contact_offset],
-                "object_distance": [self.scene.object_distance], "side": self._side})
-            cd = BoundFunction(be, "constrained_dynamics", {
-                "K": K, "contact_link": self._contact_link, "side": self._side,
-                "object_mass": self._object_mass, "object_inertia": self._object_inertia,
-                "wheel_offset": self._wheel_offset, "regularization": [0.0]})
-            mm = BoundFunction(be, "mass_matrix", {"K": K})
-            ks = self._local.kernels = (place, cd, mm)
-        place, cd, mm = ks
-        if "q_obj" in extra:
-            q_obj, rho = extra["q_obj"][0], extra["rho"][0]
-        else:
-            placed = place.one(q=q)
-            q_obj, rho = placed["q_obj"], placed["rho"]
-        zeros = self._zeros_one
-        cd.set(q=q, tau=tau, q_obj=q_obj, rho=rho,
-               v=extra["v"][0] if "v" in extra else zeros[0],
-               v_obj=extra["v_obj"][0] if "v_obj" in extra else zeros[1],
-               f_obj=extra["f_obj"][0] if "f_obj" in extra else zeros[1])
-        state, bounds = list(self._state0), self._bounds_list
-        for _ in range(default_max_iter(len(state)) if max_iter is None else max_iter):
-            outs = cd.one(free=[float(s == HELD) for s in state],
-                          lam_fixed=[u if s == SLIDE_POS else -u if s == SLIDE_NEG else 0.0
-                                     for s, u in zip(state, bounds)])
-            lam, w = outs["lam"].tolist(), outs["w"].tolist()
-            if not (outs["pivot_ratio"][0] > WEAK and all(map(math.isfinite, lam))):
-                return None  # weak or dependent rows: solved from the rows (snakecg.rows)
-            g_scale = float(np.abs(np.diagonal(outs["delassus"].reshape(len(state), -1))).max())
-            new = _violations_one(state, lam, w, bounds, g_scale)
-            if new == state:
-                break
-            state = new
-        else:
-            return None
-        o = outs
-        contact = state[0] == HELD
-        mass = _mass_ratio_one(mm.one(q=q)["M"])
-        nq, na_, nl_, sr_ = (float(o[k][0]) for k in ("norm_qdd", "norm_a_obj", "norm_lambda",
-                                                        "sr"))
-        big = max(abs(nq), abs(na_), abs(nl_))
-        if not (mass > 1e-13 and min(nq, na_, nl_) >= -1e-12 * big
-                and -1e-12 <= sr_ <= 1 + 1e-12 and math.isfinite(big)):
-            return None  # ill-conditioned mass matrix or an impossible result: flagged there
-        return ForwardResult(
-            qdd=o["qdd"].copy(), a_obj=o["a_obj"].copy(), lam=o["lam"].copy(),
-            w=o["w"].copy(), contact=np.bool_(contact),
-            wheel_state=_WHEEL_STATE_NAMES[state[1:]],
-            norm_lambda=np.float64(o["norm_lambda"][0]),
-            norm_a_obj=np.float64(o["norm_a_obj"][0]), norm_qdd=np.float64(o["norm_qdd"][0]),
-            sr=np.float64(o["sr"][0] if contact else 0.0), gap=np.float64(o["gap"][0]),
-            singular=np.bool_(False),
-            conditioning=np.float64(min(outs["pivot_ratio"][0], mass, 1.0)), tau=tau,
-        )
-
-    def _solve(self, base: dict, n: int, *, max_iter=None):
-        order = ["q", "v", "tau", "q_obj", "v_obj", "f_obj"]
-
-        def pick(arr, idx):
-            # every input is float64 and C-contiguous (as_batch, _free_and_fixed, __init__)
-            if arr.shape[0] == 1:
-                return arr[0]
-            m = len(idx)
-            if m == arr.shape[0] and idx[0] == 0 and idx[-1] == m - 1:  # sorted: all samples
-                return arr
-            return np.ascontiguousarray(arr[idx])
-
-        def call(idx, free, lam_fixed, reg):
-            m = len(idx)
-            outs = self._named(
-                "constrained_dynamics", m, **{k: pick(base[k], idx) for k in order},
-                K=self.parameters, contact_link=self._contact_link, side=self._side,
-                object_mass=self._object_mass, object_inertia=self._object_inertia,
-                rho=pick(base["rho"], idx), wheel_offset=self._wheel_offset, free=free,
-                lam_fixed=lam_fixed, regularization=np.asarray(reg, dtype=float).reshape(m, 1))
-            res = {}
-            for name_, o in outs.items():  # views, no copies
-                if o.shape[1:] == (1, 1):
-                    res[name_] = o[:, 0, 0]
-                elif o.shape[2] == 1:
-                    res[name_] = o[:, :, 0]
-                else:
-                    res[name_] = o
-            return res
-
-        sol = solve_active_set(call, n, self.present, self.bounds, max_iter=max_iter)
-        return finish_rows(self, base, n, sol, max_iter)  # weak rows, mass matrix, sanity
-
-    def _result(self, sol, tau, batched) -> ForwardResult:
-        o = sol.outputs
-        state = sol.state
-        contact = state[:, 0] == HELD
-        wheel_state = _WHEEL_STATE_NAMES[state[:, 1:]]
-        r = ForwardResult(
-            qdd=o["qdd"], a_obj=o["a_obj"], lam=o["lam"], w=o["w"], contact=contact,
-            wheel_state=wheel_state, norm_lambda=o["norm_lambda"], norm_a_obj=o["norm_a_obj"],
-            norm_qdd=o["norm_qdd"], gap=o["gap"], singular=sol.singular,
-            conditioning=sol.conditioning,
-            tau=tau,
-            sr=np.where(contact, o["sr"], 0.0),  # eq. 30; no interaction without contact
-        )
-        if not batched:
-            for k in r.__dataclass_fields__:
-                val = getattr(r, k)
-                if isinstance(val, np.ndarray):
-                    setattr(r, k, val[0])
-        return r
+        core = self.core
+        if (core is not None and v is None and v_obj is None and f_obj is None and q_obj is None
+                and rho is None and max_iter is None and out is None):
+            # one sample: straight into the workspace's buffers, one C call (snakecg.forward)
+            tq, tt = type(q), type(tau)
+            if ((tq is np.ndarray and q.shape == self._shape_q and q.dtype.kind in "fiub"
+                 or (tq is list or tq is tuple) and _plain(q, self.n_coordinates))
+                    and (tt is np.ndarray and tau.shape == self._shape_tau
+                         and tau.dtype.kind in "fiub"
+                         or (tt is list or tt is tuple) and _plain(tau, self.n_joints))):
+                res = forward_one(self, core, q, tau, data)
+                if res is not None:
+                    return res
+        return forward(self, q, tau, v=v, v_obj=v_obj, f_obj=f_obj, q_obj=q_obj, rho=rho,
+                       max_iter=max_iter, data=data, out=out)
 
     # linear maps ---------------------------------------------------------------------------
     def maps(self, q, *, contact: bool = True, wheel_state=None) -> dict[str, np.ndarray]:

@@ -44,6 +44,8 @@ __all__ = [
 OPT_FLAGS = ["-O2", "-fPIC"]
 LARGE_FLAGS = ["-fno-tree-pre", "-fno-code-hoisting"]
 _warned: set[str] = set()
+#: The runtime core compiled into every model's library (one fixed C file of the runtime).
+CORE_SOURCE = Path(__file__).resolve().parent / "core" / "forward.c"
 #: Up to this batch size the outputs of a compiled call share one buffer (see CompiledBackend).
 _SMALL_BATCH = 64
 
@@ -67,9 +69,19 @@ def _compiler_id(cc: str) -> str:
         return cc
 
 
+def _core_sources(manifest: dict) -> tuple[bytes, str]:
+    """The runtime core's C (snakecg/core/forward.c) and its layout header for this model."""
+    from .core.layout import header
+
+    return CORE_SOURCE.read_bytes(), header(manifest)
+
+
 def _build_key(manifest: dict, cc: str) -> str:
     h = hashlib.sha256()
     h.update(manifest["build_hash"].encode())
+    core, layout = _core_sources(manifest)
+    h.update(hashlib.sha256(core).digest())
+    h.update(layout.encode())
     h.update(json.dumps(manifest["files"], sort_keys=True).encode())
     h.update(_compiler_id(cc).encode())
     h.update(" ".join(OPT_FLAGS + LARGE_FLAGS).encode())
@@ -150,8 +162,19 @@ def compile_model(folder: Path, manifest: dict, *, progress=None, rebuild: bool 
                 _run([cc, *flags, "-c", str(folder / name), "-o", str(obj)])
                 return obj
 
+            core, layout = _core_sources(manifest)
+            (tmp / "snakecg_layout.h").write_text(layout, encoding="utf-8")
+            (tmp / "snakecg_core.c").write_bytes(core)
+
+            def one_core() -> Path:
+                obj = tmp / "snakecg_core.o"
+                _run([cc, *OPT_FLAGS, "-I", str(tmp), "-c", str(tmp / "snakecg_core.c"),
+                      "-o", str(obj)])
+                return obj
+
             with ThreadPoolExecutor(max_workers=max(1, os.cpu_count() or 1)) as pool:
-                objs = list(pool.map(one, sources))
+                core_obj = pool.submit(one_core)
+                objs = list(pool.map(one, sources)) + [core_obj.result()]
             tmp_lib = tmp / "model.so"
             link = [cc, "-shared", *[str(o) for o in objs], "-o", str(tmp_lib), "-lm"]
             _run(link)
@@ -271,11 +294,21 @@ def _threads() -> int:
     return max(1, min(os.cpu_count() or 1, 8))
 
 
-def _pool() -> ThreadPoolExecutor:
+def threads(n: int, parallel_min: int) -> int:
+    """Threads for a batch of ``n``: ``SNAKECG_THREADS`` (default: the cores, at most 8) when
+    ``n`` reaches ``parallel_min`` samples per thread, else fewer (at least 1)."""
+    return max(1, min(_threads(), n // max(1, parallel_min)))
+
+
+def pool() -> ThreadPoolExecutor:
+    """The shared worker threads of batched calls (ctypes releases the GIL in C)."""
     global _POOL
     if _POOL is None:
         _POOL = ThreadPoolExecutor(max_workers=_threads(), thread_name_prefix="snakecg")
     return _POOL
+
+
+_pool = pool
 
 
 def _check_input(sig: _Signature, k: int, a: np.ndarray, n: int, size: int) -> None:
@@ -312,6 +345,10 @@ class CompiledBackend:
             fn.restype = ctypes.c_int
             self._fns[name] = fn
         _check_signatures(lib_path, manifest, _library_problems(self._lib, manifest))
+        from .core import Core
+
+        self.core = Core(self._lib, manifest)
+        """The runtime core's ``core_forward`` (snakecg.core), compiled into the library."""
 
     def __call__(self, name: str, n: int, inputs: list[np.ndarray]) -> list[np.ndarray]:
         """Evaluate ``name`` on ``n`` samples.
@@ -390,6 +427,7 @@ class CasadiBackend:
     ``casadi/<name>.casadi`` (CasADi's data format, hash-checked; never executed)."""
 
     kind = "casadi"
+    core = None  # no compiled runtime core: forward takes the reference path
 
     def __init__(self, folder: Path, manifest: dict):
         import casadi as ca

@@ -1,0 +1,121 @@
+"""The runtime core: the per-sample contact/wheel solve in compiled code.
+
+``forward.c`` (one fixed C file of the runtime) is compiled into every model's library beside
+the generated functions (:func:`snakecg.native.compile_model`); :class:`Core` calls its
+``core_forward`` through ctypes. One call evaluates a whole batch: placement, the active-set
+iteration of :mod:`snakecg.solver`'s rules, the conditioning and the physical checks, per
+sample, with the loop in C. Samples it cannot answer exactly come back marked for the
+reference path (:mod:`snakecg.rows`, :mod:`snakecg.solver`).
+
+:class:`Data` is the workspace of one caller, in the manner of Pinocchio's ``Data``: the
+one-sample input and output buffers with their addresses, built once. A model holds a default
+one, used under a non-blocking lock (a second thread that finds it busy gets a fresh one), so
+models are safe to share between threads without hidden thread-local state.
+"""
+
+from __future__ import annotations
+
+import ctypes
+import threading
+
+import numpy as np
+
+from ..rows import WEAK
+from ..solver import FORCE_LIMIT, PIVOT_TOL, REL_TOL
+from .layout import INPUTS, Layout
+
+__all__ = ["Core", "Data", "Layout", "CONSTANTS", "STATUS_EXACT", "STATUS_FALLBACK"]
+
+#: Pivot ratio below which the mass matrix counts as numerically singular (snakecg.rows.finish).
+MASS_TOL = 1e-13
+#: Rounding allowed in the physical checks (norms >= 0, 0 <= sr <= 1; snakecg.rows._sane).
+SANE_TOL = 1e-12
+#: The solver constants passed to the C, in the order of its ``sc_constants``.
+CONSTANTS = np.array([PIVOT_TOL, WEAK, REL_TOL, MASS_TOL, SANE_TOL, FORCE_LIMIT])
+STATUS_EXACT, STATUS_FALLBACK = 0, 1
+
+_P = ctypes.c_void_p
+_I = ctypes.c_longlong
+
+
+class Core:
+    """``core_forward`` of one compiled model library."""
+
+    def __init__(self, lib: ctypes.CDLL, manifest: dict):
+        self.layout = Layout.of(manifest)
+        fn = getattr(lib, f"{manifest['prefix']}core_forward")
+        fn.argtypes = [_I, _P, _P, _I, _P, _P, _P]
+        fn.restype = ctypes.c_int
+        self._fn = fn
+        packed = getattr(lib, f"{manifest['prefix']}core_forward_call")
+        packed.argtypes = [_P]
+        packed.restype = ctypes.c_int
+        self.call_packed = packed
+        """``core_forward_call(&call)``: the same with the arguments in a :class:`Call`."""
+        self._constants = CONSTANTS.copy()
+        self.constants_address = self._constants.ctypes.data
+
+    def __call__(self, n: int, scene_address: int, max_iter: int, inputs_address: int,
+                 strides_address: int, out_address: int) -> int:
+        """One C call over ``n`` samples (releases the GIL); the C's status (0, -1 out of
+        memory, ``-(2 + i)`` bad input at sample ``i``)."""
+        return self._fn(n, scene_address, self.constants_address, max_iter, inputs_address,
+                        strides_address, out_address)
+
+
+class Call(ctypes.Structure):
+    """The arguments of one ``core_forward`` call, for ``core_forward_call``."""
+
+    _fields_ = [("n", _I), ("scene", _P), ("constants", _P), ("max_iter", _I), ("inputs", _P),
+                ("strides", _P), ("out", _P)]
+
+
+class Data:
+    """The workspace of one caller of a :class:`~snakecg.SceneModel` (Pinocchio's ``Data``):
+    the one-sample input buffer (``q, v, tau, q_obj, v_obj, f_obj, rho``), the output row and
+    the pointer arrays the C reads, built once. Create one per thread with
+    ``model.create_data()`` and pass it as ``data=``; a model used without one takes its
+    default workspace when free and a fresh one otherwise."""
+
+    __slots__ = ("n_coordinates", "n_joints", "inputs", "views", "out", "out_address",
+                 "pointers", "pointers_address", "placed_pointers", "placed_address", "strides",
+                 "strides_address", "call", "call_address", "lock", "owner")
+
+    def __init__(self, layout: Layout):
+        ns, na = layout.n_coordinates, layout.n_joints
+        sizes = {"q": ns, "v": ns, "tau": na, "q_obj": 3, "v_obj": 3, "f_obj": 3, "rho": 2}
+        self.n_coordinates, self.n_joints = ns, na
+        self.inputs = np.zeros(sum(sizes.values()))
+        base = self.inputs.ctypes.data
+        offsets, k = {}, 0
+        for name in INPUTS:
+            offsets[name] = k
+            k += sizes[name]
+        self.views = {name: self.inputs[offsets[name]: offsets[name] + sizes[name]]
+                      for name in INPUTS}
+        addresses = [base + 8 * offsets[name] for name in INPUTS]
+        # q_obj NULL: the C places the object from q (the common case)
+        placed = [0 if name in ("q_obj", "rho") else a for name, a in zip(INPUTS, addresses)]
+        self.placed_pointers = (_P * len(INPUTS))(*placed)
+        self.placed_address = ctypes.addressof(self.placed_pointers)
+        self.pointers = (_P * len(INPUTS))(*addresses)
+        self.pointers_address = ctypes.addressof(self.pointers)
+        self.strides = (_I * len(INPUTS))()  # zero: one sample
+        self.strides_address = ctypes.addressof(self.strides)
+        self.out = np.zeros(layout.out_width)
+        self.out_address = self.out.ctypes.data
+        self.call = Call(1, 0, 0, 0, self.placed_address, self.strides_address, self.out_address)
+        self.call_address = ctypes.addressof(self.call)
+        self.lock = threading.Lock()
+
+        self.owner = None
+
+    def bind(self, model) -> Data:
+        """Point the one-sample call at ``model``'s scene vector and solver constants."""
+        self.call.scene, self.call.max_iter = model.scene_address, model.max_iter
+        self.call.constants = model.core.constants_address if model.core is not None else 0
+        self.owner = model
+        return self
+
+    def __repr__(self) -> str:
+        return f"<snakecg.Data for n_s = {self.n_coordinates}, n_a = {self.n_joints}>"

@@ -1,0 +1,339 @@
+/* snakecg's runtime core: the exact contact/wheel complementarity solve of one sample, and the
+ * batch loop over samples, in C.
+ *
+ * This file is part of the runtime (not generated). It is compiled once per model into the
+ * model's shared library, beside CasADi's C of the generated functions, with a header
+ * `snakecg_layout.h` that the runtime writes from the model's manifest
+ * (snakecg/core/layout.py): the sizes, the generated functions' symbols and the index of every
+ * input and output by name. Nothing here knows an argument's position.
+ *
+ * Per sample (eqs. 12-30 of Reyes & Ma 2017; the rules of snakecg/solver.py):
+ *   1. the object's placement (generated `place_object`) unless given;
+ *   2. the primal-dual active-set iteration: from "every present row held", evaluate the
+ *      generated `constrained_dynamics` for the held rows (sliding wheels at their bound),
+ *      move every row that violates its complementarity condition, repeat until no row moves
+ *      (the KKT conditions hold to the sample's own relative tolerance);
+ *   3. the conditioning: the held rows' pivot ratio and the mass matrix's (a scaled
+ *      Cholesky factorization of the generated `mass_matrix`), and a check that the result is
+ *      physically possible (finite, norms >= 0, 0 <= sr <= 1).
+ * A sample that this path does not answer exactly (dependent or weakly independent held rows,
+ * no convergence within max_iter passes, an ill-conditioned mass matrix, an impossible result)
+ * is returned with status FALLBACK: the runtime solves it with its reference path (rows
+ * factored directly, enumeration of active sets; snakecg/rows.py, snakecg/solver.py).
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "snakecg_layout.h"
+
+#define SNAKECG_CAT_(a, b) a##b
+#define SNAKECG_CAT(a, b) SNAKECG_CAT_(a, b)
+#define SNAKECG_EXPORT(name) SNAKECG_CAT(SNAKECG_PREFIX, name)
+
+typedef long long int sc_int;
+typedef int (*sc_fn)(const double **arg, double **res, sc_int *iw, double *w, int mem);
+typedef int (*sc_work)(sc_int *sz_arg, sc_int *sz_res, sc_int *sz_iw, sc_int *sz_w);
+
+int SNAKECG_CD(const double **arg, double **res, sc_int *iw, double *w, int mem);
+int SNAKECG_CD_WORK(sc_int *sz_arg, sc_int *sz_res, sc_int *sz_iw, sc_int *sz_w);
+int SNAKECG_PO(const double **arg, double **res, sc_int *iw, double *w, int mem);
+int SNAKECG_PO_WORK(sc_int *sz_arg, sc_int *sz_res, sc_int *sz_iw, sc_int *sz_w);
+int SNAKECG_MM(const double **arg, double **res, sc_int *iw, double *w, int mem);
+int SNAKECG_MM_WORK(sc_int *sz_arg, sc_int *sz_res, sc_int *sz_iw, sc_int *sz_w);
+
+/* row states (snakecg/solver.py) */
+enum { ABSENT = 0, HELD = 1, LOST = 2, SLIDE_POS = 3, SLIDE_NEG = 4 };
+/* sample status */
+enum { STATUS_EXACT = 0, STATUS_FALLBACK = 1 };
+
+/* The solver's constants (snakecg/solver.py, snakecg/rows.py): passed in by the runtime. */
+typedef struct {
+  double pivot_tol;   /* held rows dependent below this pivot ratio */
+  double weak;        /* solved from the rows themselves below this pivot ratio */
+  double rel_tol;     /* decision tolerance, relative to the sample's force scale */
+  double mass_tol;    /* mass matrix numerically singular below this pivot ratio */
+  double sane_tol;    /* rounding allowed in the physical checks */
+  double force_limit; /* |tau|, |f_obj| at most this; |v|, |v_obj| at most its square root */
+} sc_constants;
+
+/* One workspace: argument and result pointer arrays and work vectors, sized for the largest
+ * of the three generated functions. */
+typedef struct {
+  const double **arg;
+  double **res;
+  sc_int *iw;
+  double *w;
+} sc_work_t;
+
+static int work_alloc(sc_work_t *ws) {
+  sc_int a, r, i, w, ma = 0, mr = 0, mi = 0, mw = 0;
+  sc_work fns[3];
+  int k;
+  fns[0] = SNAKECG_CD_WORK;
+  fns[1] = SNAKECG_PO_WORK;
+  fns[2] = SNAKECG_MM_WORK;
+  for (k = 0; k < 3; ++k) {
+    a = r = i = w = 0;
+    if (fns[k](&a, &r, &i, &w)) return -1;
+    if (a > ma) ma = a;
+    if (r > mr) mr = r;
+    if (i > mi) mi = i;
+    if (w > mw) mw = w;
+  }
+  ws->arg = (const double **)calloc((size_t)(ma + 1), sizeof(double *));
+  ws->res = (double **)calloc((size_t)(mr + 1), sizeof(double *));
+  ws->iw = (sc_int *)malloc(sizeof(sc_int) * (size_t)(mi + 1));
+  ws->w = (double *)malloc(sizeof(double) * (size_t)(mw + 1));
+  if (!ws->arg || !ws->res || !ws->iw || !ws->w) return -1;
+  return 0;
+}
+
+static void work_free(sc_work_t *ws) {
+  free((void *)ws->arg);
+  free(ws->res);
+  free(ws->iw);
+  free(ws->w);
+}
+
+static int all_finite(const double *x, int n, double limit) {
+  int k;
+  for (k = 0; k < n; ++k)
+    if (!(fabs(x[k]) <= limit)) return 0; /* also false for NaN */
+  return 1;
+}
+
+/* Smallest pivot of the Cholesky factorization of M scaled to a unit diagonal, squared
+ * (snakecg.rows.mass_pivot_ratio); 0 where M is not numerically positive definite. */
+static double mass_pivot_ratio(const double *M, double *S) {
+  const int n = SNAKECG_NS;
+  double d[SNAKECG_NS], best = INFINITY, s;
+  int i, j, k;
+  for (i = 0; i < n; ++i) {
+    d[i] = sqrt(fabs(M[i + n * i]));
+    if (!(d[i] > 0)) d[i] = 1.0;
+  }
+  for (j = 0; j < n; ++j)
+    for (i = 0; i < n; ++i) S[i + n * j] = M[i + n * j] / d[i] / d[j];
+  for (j = 0; j < n; ++j) { /* lower Cholesky factor in place, column by column */
+    s = S[j + n * j];
+    for (k = 0; k < j; ++k) s -= S[j + n * k] * S[j + n * k];
+    if (!(s > 0)) return 0.0;
+    s = sqrt(s);
+    S[j + n * j] = s;
+    if (s < best) best = s;
+    for (i = j + 1; i < n; ++i) {
+      double t = S[i + n * j];
+      for (k = 0; k < j; ++k) t -= S[i + n * k] * S[j + n * k];
+      S[i + n * j] = t / s;
+    }
+  }
+  best = best * best;
+  return isfinite(best) ? best : 0.0;
+}
+
+/* The next row states (snakecg.solver._violations with _tolerances): returns 1 if any moved. */
+static int next_states(signed char *state, const double *lam, const double *w,
+                       const double *G, const double *bounds, double rel_tol) {
+  const int nc = SNAKECG_NC;
+  double g = 0.0, s_lam = 0.0, s_w = 0.0, tol_lam, tol_w;
+  signed char next[SNAKECG_NC];
+  int r, moved = 0;
+  for (r = 0; r < nc; ++r) {
+    double d = fabs(G[r + nc * r]);
+    if (d > g) g = d; /* NaN never wins */
+    if (fabs(lam[r]) > s_lam) s_lam = fabs(lam[r]);
+    if (fabs(w[r]) > s_w) s_w = fabs(w[r]);
+  }
+  if (!(g > 0) || !isfinite(g)) g = 1.0;
+  if (s_w / g > s_lam) s_lam = s_w / g;
+  tol_lam = rel_tol * s_lam;
+  tol_w = rel_tol * g * s_lam;
+  memcpy(next, state, sizeof(next));
+  if (state[0] == HELD && lam[0] < -tol_lam) next[0] = LOST;
+  else if (state[0] == LOST && w[0] < -tol_w) next[0] = HELD;
+  for (r = 1; r < nc; ++r) {
+    const double u = bounds[r];
+    if (state[r] == HELD && isfinite(u)) {
+      if (lam[r] > u + tol_lam) next[r] = SLIDE_POS;
+      else if (lam[r] < -u - tol_lam) next[r] = SLIDE_NEG;
+    } else if (state[r] == SLIDE_POS && w[r] > tol_w) {
+      next[r] = HELD;
+    } else if (state[r] == SLIDE_NEG && w[r] < -tol_w) {
+      next[r] = HELD;
+    }
+  }
+  for (r = 0; r < nc; ++r) {
+    if (next[r] != state[r]) moved = 1;
+    state[r] = next[r];
+  }
+  return moved;
+}
+
+/* One sample. `scene` holds the scene's constant inputs (layout in snakecg_layout.h); `out`
+ * one output row (OUT_* offsets). Returns the status. */
+static int solve_one(sc_work_t *ws, const double *scene, const sc_constants *c, long max_iter,
+                     const double *q, const double *v, const double *tau, const double *q_obj_in,
+                     const double *v_obj, const double *f_obj, const double *rho_in,
+                     double *out) {
+  const int nc = SNAKECG_NC, ns = SNAKECG_NS;
+  double q_obj[3], rho[2], contact_point[2];
+  double free_rows[SNAKECG_NC], lam_fixed[SNAKECG_NC], zero = 0.0;
+  double gap, s, pivot = 0.0, G[SNAKECG_NC * SNAKECG_NC], b[SNAKECG_NC];
+  double M[SNAKECG_NS * SNAKECG_NS], S[SNAKECG_NS * SNAKECG_NS], mass, scale;
+  const double *bounds = scene + SCENE_bounds, *present = scene + SCENE_present;
+  signed char state[SNAKECG_NC];
+  long it;
+  int r, moved = 1;
+  double *lam = out + OUT_lam, *w = out + OUT_w;
+
+  memcpy(out + OUT_tau, tau, sizeof(double) * SNAKECG_NA);
+  if (q_obj_in) {
+    memcpy(q_obj, q_obj_in, sizeof(q_obj));
+    memcpy(rho, rho_in, sizeof(rho));
+  } else { /* place the object at the scene's contact */
+    ws->arg[PO_IN_q] = q;
+    ws->arg[PO_IN_K] = scene + SCENE_K;
+    ws->arg[PO_IN_contact_link] = scene + SCENE_contact_link;
+    ws->arg[PO_IN_contact_offset] = scene + SCENE_contact_offset;
+    ws->arg[PO_IN_object_distance] = scene + SCENE_object_distance;
+    ws->arg[PO_IN_side] = scene + SCENE_side;
+    ws->res[PO_OUT_q_obj] = q_obj;
+    ws->res[PO_OUT_rho] = rho;
+    ws->res[PO_OUT_contact_point] = contact_point;
+    if (SNAKECG_PO(ws->arg, ws->res, ws->iw, ws->w, 0)) return STATUS_FALLBACK;
+  }
+  ws->arg[CD_IN_q] = q;
+  ws->arg[CD_IN_v] = v;
+  ws->arg[CD_IN_tau] = tau;
+  ws->arg[CD_IN_q_obj] = q_obj;
+  ws->arg[CD_IN_v_obj] = v_obj;
+  ws->arg[CD_IN_f_obj] = f_obj;
+  ws->arg[CD_IN_K] = scene + SCENE_K;
+  ws->arg[CD_IN_contact_link] = scene + SCENE_contact_link;
+  ws->arg[CD_IN_side] = scene + SCENE_side;
+  ws->arg[CD_IN_object_mass] = scene + SCENE_object_mass;
+  ws->arg[CD_IN_object_inertia] = scene + SCENE_object_inertia;
+  ws->arg[CD_IN_rho] = rho;
+  ws->arg[CD_IN_wheel_offset] = scene + SCENE_wheel_offset;
+  ws->arg[CD_IN_free] = free_rows;
+  ws->arg[CD_IN_lam_fixed] = lam_fixed;
+  ws->arg[CD_IN_regularization] = &zero;
+  ws->res[CD_OUT_qdd] = out + OUT_qdd;
+  ws->res[CD_OUT_a_obj] = out + OUT_a_obj;
+  ws->res[CD_OUT_lam] = lam;
+  ws->res[CD_OUT_w] = w;
+  ws->res[CD_OUT_gap] = &gap;
+  ws->res[CD_OUT_s] = &s;
+  ws->res[CD_OUT_norm_lambda] = out + OUT_norm_lambda;
+  ws->res[CD_OUT_norm_a_obj] = out + OUT_norm_a_obj;
+  ws->res[CD_OUT_norm_qdd] = out + OUT_norm_qdd;
+  ws->res[CD_OUT_sr] = out + OUT_sr;
+  ws->res[CD_OUT_pivot_ratio] = &pivot;
+  ws->res[CD_OUT_delassus] = G;
+  ws->res[CD_OUT_b] = b;
+  for (r = 0; r < nc; ++r) state[r] = present[r] != 0.0 ? HELD : ABSENT;
+  for (it = 0; it < max_iter && moved; ++it) {
+    for (r = 0; r < nc; ++r) {
+      free_rows[r] = state[r] == HELD ? 1.0 : 0.0;
+      lam_fixed[r] = state[r] == SLIDE_POS ? bounds[r] : state[r] == SLIDE_NEG ? -bounds[r] : 0.0;
+      if (!isfinite(lam_fixed[r])) lam_fixed[r] = 0.0;
+    }
+    if (SNAKECG_CD(ws->arg, ws->res, ws->iw, ws->w, 0)) return STATUS_FALLBACK;
+    if (!(pivot > c->pivot_tol) || !all_finite(lam, nc, INFINITY)) return STATUS_FALLBACK;
+    moved = next_states(state, lam, w, G, bounds, c->rel_tol);
+  }
+  if (moved) return STATUS_FALLBACK; /* not settled: enumeration, in the reference path */
+  if (!(pivot > c->weak)) return STATUS_FALLBACK; /* weak rows: factored directly there */
+  ws->arg[MM_IN_q] = q;
+  ws->arg[MM_IN_K] = scene + SCENE_K;
+  ws->res[MM_OUT_M] = M;
+  if (SNAKECG_MM(ws->arg, ws->res, ws->iw, ws->w, 0)) return STATUS_FALLBACK;
+  mass = mass_pivot_ratio(M, S);
+  if (!(mass > c->mass_tol)) return STATUS_FALLBACK;
+  /* physically possible (snakecg.rows._sane) */
+  scale = fabs(out[OUT_norm_qdd]);
+  if (fabs(out[OUT_norm_a_obj]) > scale) scale = fabs(out[OUT_norm_a_obj]);
+  if (fabs(out[OUT_norm_lambda]) > scale) scale = fabs(out[OUT_norm_lambda]);
+  if (!isfinite(scale) || !isfinite(out[OUT_sr]) || !all_finite(out + OUT_qdd, ns, INFINITY))
+    return STATUS_FALLBACK;
+  if (out[OUT_norm_qdd] < -c->sane_tol * scale || out[OUT_norm_a_obj] < -c->sane_tol * scale ||
+      out[OUT_norm_lambda] < -c->sane_tol * scale || out[OUT_sr] < -c->sane_tol ||
+      out[OUT_sr] > 1.0 + c->sane_tol)
+    return STATUS_FALLBACK;
+  if (state[0] != HELD) out[OUT_sr] = 0.0; /* eq. 30: no interaction without contact */
+  out[OUT_gap] = gap;
+  out[OUT_conditioning] = pivot < mass ? (pivot < 1.0 ? pivot : 1.0) : (mass < 1.0 ? mass : 1.0);
+  out[OUT_singular] = 0.0;
+  for (r = 0; r < nc; ++r) out[OUT_state + r] = (double)state[r];
+  return STATUS_EXACT;
+}
+
+/* The forward analysis of n samples.
+ *
+ * in[k] (k = IN_q, IN_v, IN_tau, IN_q_obj, IN_v_obj, IN_f_obj, IN_rho): sample i at
+ * in[k] + i * stride[k] (stride 0 broadcasts); in[IN_q_obj] == NULL places the object from q
+ * (then in[IN_rho] is ignored). out: row i at out + i * OUT_WIDTH.
+ *
+ * Returns 0 when every sample was evaluated (out[OUT_status] of each row tells whether the
+ * reference path must redo it), -1 when out of memory, and -(2 + i) when an input of sample i
+ * is not finite or beyond the force limit (nothing is worth keeping then: the runtime raises
+ * before any result is used). */
+int SNAKECG_EXPORT(core_forward)(sc_int n, const double *scene, const double *constants,
+                                 sc_int max_iter, const double *const *in, const sc_int *stride,
+                                 double *out) {
+  sc_work_t ws;
+  sc_constants c;
+  sc_int i;
+  double vlim;
+  c.pivot_tol = constants[0];
+  c.weak = constants[1];
+  c.rel_tol = constants[2];
+  c.mass_tol = constants[3];
+  c.sane_tol = constants[4];
+  c.force_limit = constants[5];
+  vlim = sqrt(c.force_limit);
+  /* inputs first: bad input refuses the whole call before any work */
+  for (i = 0; i < n; ++i) {
+    if (!all_finite(in[IN_q] + i * stride[IN_q], SNAKECG_NS, INFINITY) ||
+        !all_finite(in[IN_v] + i * stride[IN_v], SNAKECG_NS, vlim) ||
+        !all_finite(in[IN_tau] + i * stride[IN_tau], SNAKECG_NA, c.force_limit) ||
+        !all_finite(in[IN_v_obj] + i * stride[IN_v_obj], 3, vlim) ||
+        !all_finite(in[IN_f_obj] + i * stride[IN_f_obj], 3, c.force_limit) ||
+        (in[IN_q_obj] && (!all_finite(in[IN_q_obj] + i * stride[IN_q_obj], 3, INFINITY) ||
+                          !all_finite(in[IN_rho] + i * stride[IN_rho], 2, INFINITY))))
+      return (int)(-2 - (i < 2000000000 ? i : 2000000000));
+  }
+  if (work_alloc(&ws)) {
+    work_free(&ws);
+    return -1;
+  }
+  for (i = 0; i < n; ++i) {
+    double *row = out + i * OUT_WIDTH;
+    const double *qo = in[IN_q_obj] ? in[IN_q_obj] + i * stride[IN_q_obj] : 0;
+    const double *rh = in[IN_q_obj] ? in[IN_rho] + i * stride[IN_rho] : 0;
+    row[OUT_status] = (double)solve_one(
+        &ws, scene, &c, (long)max_iter, in[IN_q] + i * stride[IN_q], in[IN_v] + i * stride[IN_v],
+        in[IN_tau] + i * stride[IN_tau], qo, in[IN_v_obj] + i * stride[IN_v_obj],
+        in[IN_f_obj] + i * stride[IN_f_obj], rh, row);
+  }
+  work_free(&ws);
+  return 0;
+}
+
+/* core_forward with its arguments in one struct: the runtime's one-sample calls pass a single
+ * pointer (a foreign call's cost grows with its argument count). */
+typedef struct {
+  sc_int n;
+  const double *scene;
+  const double *constants;
+  sc_int max_iter;
+  const double *const *in;
+  const sc_int *stride;
+  double *out;
+} sc_call;
+
+int SNAKECG_EXPORT(core_forward_call)(const sc_call *call) {
+  return SNAKECG_EXPORT(core_forward)(call->n, call->scene, call->constants, call->max_iter,
+                                      call->in, call->stride, call->out);
+}

@@ -1,0 +1,133 @@
+"""The layout shared by the runtime core's C (``forward.c``) and its Python side.
+
+Everything the C reads or writes by position is named here once: the scene's constant
+inputs (one flat vector per scene), the per-sample inputs, and the columns of one output row.
+:func:`header` writes them, with the generated functions' symbols and the index of each of
+their inputs and outputs (read from the model's manifest), as ``snakecg_layout.h``; the C uses
+only these names.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+
+from ..errors import ArtifactError
+
+__all__ = ["Layout", "header", "INPUTS", "FUNCTIONS"]
+
+#: Per-sample inputs of ``core_forward``, in the order of its ``in`` pointer array.
+INPUTS = ("q", "v", "tau", "q_obj", "v_obj", "f_obj", "rho")
+
+#: The generated functions the core calls, with the short name of their macros, and the
+#: inputs and outputs it passes by name (checked against the manifest before compiling).
+FUNCTIONS = {
+    "constrained_dynamics": ("CD", (
+        "q", "v", "tau", "q_obj", "v_obj", "f_obj", "K", "contact_link", "side", "object_mass",
+        "object_inertia", "rho", "wheel_offset", "free", "lam_fixed", "regularization"), (
+        "qdd", "a_obj", "lam", "w", "gap", "s", "norm_lambda", "norm_a_obj", "norm_qdd", "sr",
+        "pivot_ratio", "delassus", "b")),
+    "place_object": ("PO", ("q", "K", "contact_link", "contact_offset", "object_distance",
+                            "side"), ("q_obj", "rho", "contact_point")),
+    "mass_matrix": ("MM", ("q", "K"), ("M",)),
+}
+
+_IDENT = re.compile(r"[A-Za-z_][A-Za-z0-9_]*\Z")
+
+
+@dataclass(frozen=True)
+class Layout:
+    """Offsets of the scene vector and of an output row for one model's sizes."""
+
+    n_joints: int
+    n_coordinates: int
+    n_links: int
+    n_constraints: int
+    n_parameters: int
+
+    def scene_fields(self) -> tuple[tuple[str, int], ...]:
+        nl, nc = self.n_links, self.n_constraints
+        return (("K", self.n_parameters), ("contact_link", nl), ("side", 1),
+                ("object_mass", 1), ("object_inertia", 1), ("wheel_offset", nl),
+                ("contact_offset", 1), ("object_distance", 1), ("present", nc),
+                ("bounds", nc))
+
+    def out_fields(self) -> tuple[tuple[str, int], ...]:
+        """Columns of one output row: the :class:`~snakecg.ForwardResult` fields, the row
+        states (solver codes) and the sample's status (0 exact, 1 for the reference path)."""
+        nc = self.n_constraints
+        return (("tau", self.n_joints), ("qdd", self.n_coordinates), ("a_obj", 3), ("lam", nc),
+                ("w", nc), ("norm_lambda", 1), ("norm_a_obj", 1), ("norm_qdd", 1), ("sr", 1),
+                ("gap", 1), ("conditioning", 1), ("singular", 1), ("state", nc), ("status", 1))
+
+    @staticmethod
+    def _offsets(fields):
+        out, k = {}, 0
+        for name, size in fields:
+            out[name] = (k, size)
+            k += size
+        return out, k
+
+    @property
+    def scene(self) -> dict[str, tuple[int, int]]:
+        return self._offsets(self.scene_fields())[0]
+
+    @property
+    def scene_width(self) -> int:
+        return self._offsets(self.scene_fields())[1]
+
+    @property
+    def out(self) -> dict[str, tuple[int, int]]:
+        return self._offsets(self.out_fields())[0]
+
+    @property
+    def out_width(self) -> int:
+        return self._offsets(self.out_fields())[1]
+
+    @classmethod
+    def of(cls, manifest: dict) -> "Layout":
+        return cls(int(manifest["n_joints"]), int(manifest["n_coordinates"]),
+                   int(manifest["n_links"]), int(manifest["n_constraints"]),
+                   int(manifest["n_parameters"]))
+
+
+def _ident(what: str, name) -> str:
+    if not isinstance(name, str) or not _IDENT.match(name):
+        raise ArtifactError(f"the model's manifest names {what} {name!r:.80}, which is not a C "
+                            "identifier; the model folder is damaged (reinstall snakecg or "
+                            "delete the snakecg cache folder)")
+    return name
+
+
+def header(manifest: dict) -> str:
+    """``snakecg_layout.h`` for a model: sizes, symbols, and every index by name."""
+    lay = Layout.of(manifest)
+    sigs = {s["name"]: s for s in manifest["functions"]}
+    lines = ["/* snakecg_layout.h: written by the snakecg runtime from the model's manifest",
+             " * (snakecg/core/layout.py) for snakecg/core/forward.c. */",
+             "#ifndef SNAKECG_LAYOUT_H", "#define SNAKECG_LAYOUT_H",
+             f"#define SNAKECG_PREFIX {_ident('the prefix', manifest['prefix'])}",
+             f"#define SNAKECG_NA {lay.n_joints}", f"#define SNAKECG_NS {lay.n_coordinates}",
+             f"#define SNAKECG_NL {lay.n_links}", f"#define SNAKECG_NC {lay.n_constraints}"]
+    for fname, (short, ins, outs) in FUNCTIONS.items():
+        sig = sigs.get(fname)
+        if sig is None:
+            raise ArtifactError(f"the model has no generated function {fname!r}, which the "
+                                "runtime core needs; the model folder is damaged")
+        symbol = _ident(f"the symbol of {fname}", sig["symbol"])
+        lines += [f"#define SNAKECG_{short} {symbol}", f"#define SNAKECG_{short}_WORK {symbol}_work"]
+        for kind, wanted, items in (("IN", ins, sig["inputs"]), ("OUT", outs, sig["outputs"])):
+            index = {_ident(f"an argument of {fname}", it["name"]): k for k, it in enumerate(items)}
+            missing = [w for w in wanted if w not in index]
+            if missing:
+                raise ArtifactError(f"{fname} of the model has no {kind.lower()}put "
+                                    f"{', '.join(missing)}, which the runtime core needs")
+            lines += [f"#define {short}_{kind}_{name} {index[name]}" for name in wanted]
+    for k, name in enumerate(INPUTS):
+        lines.append(f"#define IN_{name} {k}")
+    for name, (off, _) in lay.scene.items():
+        lines.append(f"#define SCENE_{name} {off}")
+    for name, (off, _) in lay.out.items():
+        lines.append(f"#define OUT_{name} {off}")
+    lines += [f"#define OUT_WIDTH {lay.out_width}", "#endif", ""]
+    return "\n".join(lines)
