@@ -61,7 +61,8 @@ def _vector(name):
 
 def _scalar(name):
     def get(self):
-        return self._raw[..., self._cols.index[name]]
+        r = self._raw
+        return r[self._cols.index[name]] if r.ndim == 1 else r[:, self._cols.index[name]]
 
     def put(self, value):
         self._raw[..., self._cols.index[name]] = value
@@ -119,7 +120,8 @@ class ForwardResult:
 
     @property
     def contact(self):
-        return self._raw[..., self._cols.state] == HELD
+        r = self._raw
+        return (r[self._cols.state] if r.ndim == 1 else r[:, self._cols.state]) == HELD
 
     @property
     def wheel_state(self) -> np.ndarray:
@@ -127,7 +129,8 @@ class ForwardResult:
 
     @property
     def singular(self):
-        return self._raw[..., self._cols.singular] != 0.0
+        r = self._raw
+        return (r[self._cols.singular] if r.ndim == 1 else r[:, self._cols.singular]) != 0.0
 
     @property
     def sliding(self) -> np.ndarray:

@@ -482,15 +482,23 @@ def test_two_simulations_into_one_folder(tmp_path):
 # ------------------------------------------------------------------------------------------
 # bounded memory: large batches in chunks, or refused with the memory needed
 def test_forward_in_chunks_equals_one_call(monkeypatch, rng):
-    import snakecg.model as model_mod
+    """The reference path (the CasADi backend, and the samples the compiled core marks) works
+    in chunks of CHUNK_ROWS rows; chunks give the same answers as the compiled core's one
+    call. The compiled core also splits a batch over threads (PARALLEL_MIN rows each)."""
+    import snakecg.forward as forward_mod
 
-    model = snakecg.load(Scene(Robot(joints=2), scenario="wheels"))
+    scene = Scene(Robot(joints=2), scenario="wheels")
+    model = snakecg.load(scene)
     n = 53
     q = np.column_stack([np.zeros((n, 3)), rng.uniform(-2.5, 2.5, (n, 2))])
     tau = rng.uniform(-0.2, 0.2, (n, 2))
     whole = model.forward(q, tau)
-    monkeypatch.setattr(model_mod, "CHUNK_ROWS", 7)
-    chunked = model.forward(q, tau)
+    monkeypatch.setattr(forward_mod, "CHUNK_ROWS", 7)
+    monkeypatch.setattr(forward_mod, "PARALLEL_MIN", 5)
+    monkeypatch.setenv("SNAKECG_THREADS", "3")
+    threaded = model.forward(q, tau)
+    np.testing.assert_array_equal(threaded.raw, whole.raw)
+    chunked = snakecg.load(scene, backend="casadi").forward(q, tau)
     for k in ("qdd", "a_obj", "lam", "w", "norm_lambda", "norm_a_obj", "norm_qdd", "sr",
               "conditioning", "tau"):
         np.testing.assert_allclose(getattr(chunked, k), getattr(whole, k), rtol=1e-12,
@@ -544,7 +552,7 @@ def test_large_forward_batch_peak_memory_is_bounded(monkeypatch):
     res = model.forward(q, tau)
     _, peak = tracemalloc.get_traced_memory()
     tracemalloc.stop()
-    result_bytes = sum(np.asarray(v).nbytes for v in vars(res).values() if v is not None)
+    result_bytes = res.raw.nbytes
     assert peak < result_bytes + 150 * 2**20, (peak / 2**20, result_bytes / 2**20)
     assert np.allclose(res.qdd, res.qdd[0])  # every row the same configuration
 

@@ -798,19 +798,26 @@ def test_active_set_against_enumeration(models, rng, joints, monkeypatch):
         lam_b = ref.solve_bvls(r["system"])
         close(lam_b, r["lam"], 1e-8, f"reference BVLS vs enumeration sample {i}")
 
-    import snakecg.model as model_mod
+    import snakecg.forward as forward_mod
 
     seen = []
-    original = model_mod.solve_active_set
+    original = forward_mod.solve_active_set
 
     def spy(*args, **kwargs):
         out = original(*args, **kwargs)
         seen.append(out)
         return out
 
-    monkeypatch.setattr(model_mod, "solve_active_set", spy)
+    monkeypatch.setattr(forward_mod, "solve_active_set", spy)
     res = sm.forward(q, tau, v=v, v_obj=v_obj, f_obj=f_obj)
     assert_matches_reference(res, refs, ref, "active set")
+    if sm.core is not None:  # every sample answered by the compiled core's iteration
+        assert not seen and np.all(res.raw[:, sm.columns.status] == 0)
+    # the reference path's iteration on its own (the one used for the samples the core marks)
+    seen.clear()
+    res_ref = forward_mod.forward(snakecg.load(sm.scene, backend="casadi"), q, tau, v=v,
+                                  v_obj=v_obj, f_obj=f_obj)
+    assert_matches_reference(res_ref, refs, ref, "reference active set")
     assert seen[-1].enumerated == 0 and seen[-1].iterations >= 2
     res1 = sm.forward(q, tau, v=v, v_obj=v_obj, f_obj=f_obj, max_iter=1)
     assert seen[-1].enumerated > n // 4, "max_iter=1 should leave samples to the enumeration"

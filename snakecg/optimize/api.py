@@ -101,10 +101,7 @@ def optimize(model, q, objective: str = "max_sr", *, tau_max=None, radius=None,
         res.time = float(res.time[0])
         res.wheel_states_assumed = res.wheel_states_assumed[0]
         res.certificate = certs[0]
-        for k in res.analysis.__dataclass_fields__:
-            v = getattr(res.analysis, k)
-            if isinstance(v, np.ndarray):
-                setattr(res.analysis, k, v[0])
+        res.analysis = res.analysis[0]
     return res
 
 
