@@ -29,7 +29,6 @@ flagged ``singular``.
 from __future__ import annotations
 
 import itertools
-import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -84,37 +83,6 @@ def _violations(state, lam, w, bounds, tol_lam, tol_w):
     n1[(s == SLIDE_NEG) & (ww < -tol_w)] = HELD
     new[:, 1:] = n1
     return new
-
-
-def _violations_one(state: list, lam: list, w: list, bounds: list, g_scale: float) -> list:
-    """:func:`_violations` (with :func:`_tolerances`) for one sample on Python lists: the same
-    rules, for the one-sample path of ``SceneModel.forward`` where numpy's per-call overhead
-    on 5-element arrays would dominate. ``g_scale``: the largest diagonal of ``G_c``."""
-    tol_lam, tol_w = _tolerances_one(lam, w, g_scale)
-    new = list(state)
-    if state[0] == HELD and lam[0] < -tol_lam:
-        new[0] = LOST
-    elif state[0] == LOST and w[0] < -tol_w:
-        new[0] = HELD
-    for r in range(1, len(state)):
-        s, u = state[r], bounds[r]
-        if s == HELD:
-            if lam[r] > u + tol_lam:
-                new[r] = SLIDE_POS
-            elif lam[r] < -u - tol_lam:
-                new[r] = SLIDE_NEG
-        elif s == SLIDE_POS and w[r] > tol_w:
-            new[r] = HELD
-        elif s == SLIDE_NEG and w[r] < -tol_w:
-            new[r] = HELD
-    return new
-
-
-def _tolerances_one(lam, w, g_scale: float):
-    """The tolerances of :func:`_tolerances` for one sample (Python floats)."""
-    g = g_scale if g_scale > 0 and math.isfinite(g_scale) else 1.0
-    s_lam = max(max(abs(x) for x in lam), max(abs(x) for x in w) / g)
-    return REL_TOL * s_lam, REL_TOL * g * s_lam
 
 
 #: Largest magnitude accepted for the forces (``tau``, ``f_obj``) and, square-rooted, for the

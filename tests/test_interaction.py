@@ -239,11 +239,16 @@ def test_single_call_path_equals_general_path(models, rng, scenario):
                 close(one.tau, tau[i], 0.0, "tau")
 
 
-def test_violations_one_equals_violations(rng):
-    """The scalar state update of the one-sample path and the vectorized one of the batch path
-    (solver._violations_one / _violations with _tolerances) give the same next states, on random
-    states, forces and accelerations placed at and around the bounds and the tolerances."""
+def test_compiled_state_update_equals_the_reference_rules(rng):
+    """The row-state update of the compiled core (snakecg/core/forward.c) and the vectorized
+    one of the reference path (solver._violations with _tolerances) give the same next states,
+    on random states, forces and accelerations placed at and around the bounds and the
+    tolerances."""
     from snakecg import solver
+
+    core = snakecg.load(snakecg.Robot(joints=4)).backend.core
+    if core is None:
+        pytest.fail("the compiled backend is needed: the C compiler failed")
 
     nc = 6
     bounds = np.array([np.inf, np.inf, 0.5, 0.5, 2.0, 1.0])
@@ -267,10 +272,11 @@ def test_violations_one_equals_violations(rng):
     w = np.where(rng.random((n, nc)) < 0.3, rng.integers(-2, 3, (n, nc)) * 1e-9, w)
     tl, tw = solver._tolerances({"lam": lam, "w": w, "delassus": G})
     vec = solver._violations(state, lam, w, bounds, tl, tw)
+    assert g.shape == (n,)
     for i in range(n):
-        one = solver._violations_one(state[i].tolist(), lam[i].tolist(), w[i].tolist(),
-                                     bounds.tolist(), float(g[i]))
-        assert one == vec[i].tolist(), f"sample {i}"
+        one, moved = core.next_states(state[i], lam[i], w[i], G[i], bounds)
+        assert one.tolist() == vec[i].tolist(), f"sample {i}"
+        assert moved == bool(np.any(vec[i] != state[i]))
     assert np.any(vec != state)
 
 

@@ -52,8 +52,26 @@ class Core:
         packed.restype = ctypes.c_int
         self.call_packed = packed
         """``core_forward_call(&call)``: the same with the arguments in a :class:`Call`."""
+        rules = getattr(lib, f"{manifest['prefix']}core_next_states")
+        rules.argtypes = [_P, _P, _P, _P, _P, ctypes.c_double]
+        rules.restype = ctypes.c_int
+        self._rules = rules
         self._constants = CONSTANTS.copy()
         self.constants_address = self._constants.ctypes.data
+
+    def next_states(self, state, lam, w, G, bounds) -> tuple[np.ndarray, bool]:
+        """The C's row-state update for one sample (the rules of
+        :func:`snakecg.solver._violations` with its tolerances): the next states and whether
+        a row moved. For tests; the solve itself runs inside :meth:`__call__`."""
+        nc = self.layout.n_constraints
+        st = np.array(state, dtype=float).reshape(nc)
+        arrays = [np.ascontiguousarray(x, dtype=float) for x in (lam, w, G, bounds)]
+        if [a.size for a in arrays] != [nc, nc, nc * nc, nc]:
+            raise ValueError(f"next_states takes n_c = {nc} rows")
+        G_col = np.asfortranarray(arrays[2].reshape(nc, nc))  # column-major, as generated
+        moved = self._rules(st.ctypes.data, arrays[0].ctypes.data, arrays[1].ctypes.data,
+                            G_col.ctypes.data, arrays[3].ctypes.data, REL_TOL)
+        return st.astype(np.int8), bool(moved)
 
     def __call__(self, n: int, scene_address: int, max_iter: int, inputs_address: int,
                  strides_address: int, out_address: int) -> int:

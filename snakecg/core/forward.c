@@ -337,3 +337,16 @@ int SNAKECG_EXPORT(core_forward_call)(const sc_call *call) {
   return SNAKECG_EXPORT(core_forward)(call->n, call->scene, call->constants, call->max_iter,
                                       call->in, call->stride, call->out);
 }
+
+/* The state update alone, for the tests that hold it against snakecg/solver.py's rules at the
+ * tolerance edges: state (SNAKECG_NC codes, as doubles) is updated in place; returns 1 if a row
+ * moved. */
+int SNAKECG_EXPORT(core_next_states)(double *state, const double *lam, const double *w,
+                                     const double *G, const double *bounds, double rel_tol) {
+  signed char s[SNAKECG_NC];
+  int r, moved;
+  for (r = 0; r < SNAKECG_NC; ++r) s[r] = (signed char)state[r];
+  moved = next_states(s, lam, w, G, bounds, rel_tol);
+  for (r = 0; r < SNAKECG_NC; ++r) state[r] = (double)s[r];
+  return moved;
+}

@@ -1,0 +1,161 @@
+"""Benchmark of the runtime core: one ``forward`` call from Python and batched ``forward``,
+side by side with MuJoCo's ``mj_forward`` on an equivalent model, in one run.
+
+For a 3-joint snake (the paper's Table 1 robot, kappa = 100) at rest, in each scenario:
+
+* **single**: ``model.forward(q, tau)`` from Python on one sample (validation, the compiled
+  per-sample solve, the result object), best of ``--repeat`` rounds of ``--single`` calls,
+  cycling through 64 random (configuration, torque) pairs;
+* **batched**: ``model.forward(Q, T)`` on ``--n`` pairs with ``SNAKECG_THREADS=1``, time per
+  pair (best of ``--repeat``);
+* **mj_forward**: MuJoCo's whole forward dynamics on the same bodies and joints (the snake's
+  four capsule links on a planar base, the 5 kg object as a planar box touching link 2,
+  actuated joints, no gravity), from Python: set ``qpos`` and ``ctrl``, ``mj_forward``, copy
+  ``qacc``; and the bare ``mj_forward`` call. MuJoCo has no lateral-only wheel constraint, so
+  its model has the contact and the bodies but not the wheels: it does less than the
+  ``wheels`` scenarios.
+
+    python benchmarks/bench_core.py [--n 100000] [--single 20000] [--repeat 5]
+
+Prints a table and the machine's load average before and after.
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import platform
+import time
+
+import numpy as np
+
+from _machine import cpu_name  # benchmarks/_machine.py
+
+os.environ.setdefault("SNAKECG_THREADS", "1")
+
+import snakecg  # noqa: E402  (after SNAKECG_THREADS)
+
+SCENARIOS = ("frictionless", "wheels", "ideal_wheels")
+
+MJCF = """
+<mujoco model="snake3">
+  <option timestep="0.001" gravity="0 0 0"/>
+  <default><geom contype="1" conaffinity="1" friction="0.5 0.005 0.0001"/></default>
+  <worldbody>
+    <body name="link1" pos="0 0 0.02">
+      <joint name="x" type="slide" axis="1 0 0"/>
+      <joint name="y" type="slide" axis="0 1 0"/>
+      <joint name="theta" type="hinge" axis="0 0 1"/>
+      <geom type="capsule" fromto="0.01 0 0 0.14 0 0" size="0.01" mass="1"/>
+      <body name="link2" pos="0.15 0 0">
+        <joint name="q1" type="hinge" axis="0 0 1"/>
+        <geom type="capsule" fromto="0.01 0 0 0.14 0 0" size="0.01" mass="1"/>
+        <body name="link3" pos="0.15 0 0">
+          <joint name="q2" type="hinge" axis="0 0 1"/>
+          <geom type="capsule" fromto="0.01 0 0 0.14 0 0" size="0.01" mass="1"/>
+          <body name="link4" pos="0.15 0 0">
+            <joint name="q3" type="hinge" axis="0 0 1"/>
+            <geom type="capsule" fromto="0.01 0 0 0.14 0 0" size="0.01" mass="1"/>
+          </body>
+        </body>
+      </body>
+    </body>
+    <body name="object" pos="0.225 0.06 0.02">
+      <joint name="ox" type="slide" axis="1 0 0"/>
+      <joint name="oy" type="slide" axis="0 1 0"/>
+      <joint name="opsi" type="hinge" axis="0 0 1"/>
+      <geom type="box" size="0.05 0.05 0.01" mass="5"/>
+    </body>
+  </worldbody>
+  <actuator>
+    <motor joint="q1"/><motor joint="q2"/><motor joint="q3"/>
+  </actuator>
+</mujoco>
+"""
+
+
+def best_of(fn, repeat: int) -> float:
+    best = float("inf")
+    for _ in range(repeat):
+        t0 = time.perf_counter()
+        fn()
+        best = min(best, time.perf_counter() - t0)
+    return best
+
+
+def bench_snakecg(scenario, n, single, repeat, rng):
+    scene = snakecg.Scene(snakecg.Robot(joints=3), scenario=scenario, kappa=100)
+    model = snakecg.load(scene)
+    Q = np.zeros((n, 6))
+    Q[:, 3:] = rng.uniform(-2.3, 2.3, (n, 3))
+    T = rng.normal(0.0, 0.05, (n, 3))
+    qs, ts = [Q[i].copy() for i in range(64)], [T[i].copy() for i in range(64)]
+    fwd = model.forward
+    res = fwd(Q, T)
+    marked = int(np.count_nonzero(res.raw[:, model.columns.status]))
+
+    def singles():
+        for k in range(single):
+            fwd(qs[k & 63], ts[k & 63])
+
+    t_single = best_of(singles, repeat) / single
+    t_batch = best_of(lambda: fwd(Q, T, out=res), repeat) / n
+    return t_single, t_batch, marked
+
+
+def bench_mujoco(single, repeat):
+    try:
+        import mujoco
+    except ImportError:
+        return None
+    m = mujoco.MjModel.from_xml_string(MJCF)
+    d = mujoco.MjData(m)
+    q = np.array([0.0, 0.0, 0.0, 0.3, -0.5, 0.4, 0.0, 0.0, 0.0])
+    tau = np.array([0.05, 0.0, -0.02])
+    d.qpos[:] = q
+    d.ctrl[:] = tau
+    mujoco.mj_forward(m, d)
+    ncon = int(d.ncon)
+
+    def io():
+        for _ in range(single):
+            d.qpos[:] = q
+            d.ctrl[:] = tau
+            mujoco.mj_forward(m, d)
+            d.qacc.copy()
+
+    def bare():
+        for _ in range(single):
+            mujoco.mj_forward(m, d)
+
+    return best_of(io, repeat) / single, best_of(bare, repeat) / single, ncon, mujoco.__version__
+
+
+def main(argv=None) -> int:
+    p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    p.add_argument("--n", type=int, default=100_000, help="batch size (pairs)")
+    p.add_argument("--single", type=int, default=20_000, help="single calls per round")
+    p.add_argument("--repeat", type=int, default=5, help="best of this many rounds")
+    a = p.parse_args(argv)
+    rng = np.random.default_rng(0)
+    load0 = os.getloadavg()
+    print(f"machine: {cpu_name()}, {os.cpu_count()} cores, Python {platform.python_version()},"
+          f" numpy {np.__version__}, SNAKECG_THREADS={os.environ['SNAKECG_THREADS']}")
+    print(f"load average before: {load0[0]:.2f} {load0[1]:.2f} {load0[2]:.2f}")
+    mj = bench_mujoco(a.single, a.repeat)
+    print("| scenario | single forward µs | batched µs/pair | marked for the reference path |"
+          " mj_forward + I/O µs | bare mj_forward µs |")
+    print("|---|---:|---:|---:|---:|---:|")
+    for sc in SCENARIOS:
+        t1, tb, marked = bench_snakecg(sc, a.n, a.single, a.repeat, rng)
+        mjs = (f"{mj[0] * 1e6:.2f} | {mj[1] * 1e6:.2f}" if mj else "n/a | n/a")
+        print(f"| {sc} | {t1 * 1e6:.2f} | {tb * 1e6:.3f} | {marked} of {a.n} | {mjs} |")
+    if mj:
+        print(f"MuJoCo {mj[3]}, {mj[2]} contact(s) in the model's configuration")
+    load1 = os.getloadavg()
+    print(f"load average after: {load1[0]:.2f} {load1[1]:.2f} {load1[2]:.2f}")
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
