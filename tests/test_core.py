@@ -25,7 +25,8 @@ FIELDS = ("tau", "qdd", "a_obj", "lam", "w", "norm_lambda", "norm_a_obj", "norm_
 
 
 def _pair(joints, scenario, **kw):
-    scene = snakecg.Scene(snakecg.Robot(joints=joints), scenario=scenario, kappa=100, **kw)
+    scene = snakecg.Scene(snakecg.Robot(joints=joints), scenario=scenario,
+                          **{"kappa": 100, **kw})
     compiled = snakecg.load(scene)
     if compiled.core is None:
         pytest.fail("the compiled backend is needed here: the C build failed")
@@ -82,7 +83,8 @@ def test_core_equals_reference_path(rng, joints, scenario):
 def test_marked_samples_take_the_reference_path():
     """Two ideal wheels 1e-7 rad from coinciding: the core marks the sample (weakly
     independent rows) and the answer is the reference path's (rows factored directly)."""
-    compiled, reference = _pair(3, "ideal_wheels", wheel_offset=(0, 0.075, -0.075, 0))
+    compiled, reference = _pair(3, "ideal_wheels", kappa=10,
+                                wheel_offset=(0, 0.075, -0.075, 0))
     q = np.array([0.0, 0.0, 0.0, 0.5, 1e-7, -0.8])
     tau = np.array([0.1, -0.05, 0.08])
     res = compiled.forward(q, tau)
