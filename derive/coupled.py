@@ -303,6 +303,45 @@ def constrained_dynamics(fn, alg: Algebra, sz: _Sizes) -> ca.Function:
     return _function(alg, "constrained_dynamics", inputs, outputs)
 
 
+def contact_system(fn, alg: Algebra, sz: _Sizes) -> ca.Function:
+    """The contact/wheel problem of one sample before any active set is chosen.
+
+    Everything the complementarity solve needs, independent of which rows hold: the Delassus
+    matrix ``G_c = A I^-1 A^T`` (eq. 14), the rows' accelerations at zero constraint force
+    ``b = A I^-1 (f - p) + Adot v`` (eq. 13), the accelerations without constraint forces
+    (eq. 12) and the maps of the constraint forces into them, ``M_s^-1 A_s^T`` and
+    ``I_obj^-1 A_o^T`` (eq. 18), the mass matrix ``M_s`` (eq. 4, for the norm of eq. 26 and the
+    conditioning), the gap and the contact coordinate ``s``. With these, every active set
+    costs one small solve (``G_HH lam_H = -(b_H + G_HF lam_F)``, eq. 16): the runtime core
+    (snakecg/core/forward.c) iterates the active set on them and evaluates nothing twice.
+    """
+    ns = sz.n_coordinates
+    q, v = alg.sym("q", ns), alg.sym("v", ns)
+    tau = alg.sym("tau", sz.n_joints)
+    v_obj, f_obj = alg.sym("v_obj", 3), alg.sym("f_obj", 3)
+    K = fn["K"]
+    sc = _scene_inputs(alg, sz)
+    A, Adot_v, gap, s = _constraint_rows(fn, alg, sz, q, v, K, sc, v_obj)
+    M_s = fn["mass_matrix"](q, K)
+    h_s = fn["bias_forces"](q, v, K)
+    A_s, A_o = A[:, :ns], A[:, ns:]
+    # eq. (12) without constraint forces, and M_s^-1 A_s^T, with one factorization
+    M_factors, _ = alg.ldl(M_s)
+    X = alg.solve(M_factors, ca.horzcat(ca.mtimes(_actuation(alg, sz), tau) - h_s, A_s.T))
+    qdd_free, Minv_AsT = X[:, 0], X[:, 1:]
+    I_obj = ca.vertcat(sc["object_mass"], sc["object_mass"], sc["object_inertia"])
+    Iinv_AoT = ca.mtimes(ca.diag(1 / I_obj), A_o.T)
+    Gc = ca.mtimes(A_s, Minv_AsT) + ca.mtimes(A_o, Iinv_AoT)       # eq. (14)
+    a_free = f_obj / I_obj
+    b = ca.mtimes(A_s, qdd_free) + ca.mtimes(A_o, a_free) + Adot_v  # eq. (13), lam = 0
+    inputs = {"q": q, "v": v, "tau": tau, "q_obj": sc["q_obj"], "v_obj": v_obj, "f_obj": f_obj,
+              "K": K, **{k: sc[k] for k in ("contact_link", "side", "object_mass",
+                                            "object_inertia", "rho", "wheel_offset")}}
+    outputs = {"M": M_s, "delassus": Gc, "b": b, "qdd_free": qdd_free, "a_obj_free": a_free,
+               "qdd_from_lam": Minv_AsT, "a_obj_from_lam": Iinv_AoT, "gap": gap, "s": s}
+    return _function(alg, "contact_system", inputs, outputs)
+
+
 def _at_rest_system(fn, alg, sz, q, K, sc):
     """What every at-rest function shares (``v = 0``: ``h_s`` and ``Adot v`` vanish):
     ``A = [A_s, A_o]`` (eq. 9), ``M_s``, ``M_s^-1 B`` and ``M_s^-1 A_s^T``, the object's
@@ -603,7 +642,7 @@ def coupled_functions(link_functions: dict, n_joints: int, n_parameters: int, *,
     sz = _Sizes(n_joints)
     fn = {**link_functions, "K": alg.sym("K", n_parameters)}
     out = [constrained_dynamics(fn, alg, sz), interaction_maps(fn, alg, sz),
-           metric_forms(fn, alg, sz), place_object(fn, alg, sz)]
+           metric_forms(fn, alg, sz), place_object(fn, alg, sz), contact_system(fn, alg, sz)]
     if n_joints <= EXTREMES_MAX_JOINTS:
         # closed-form eigenproblems: scalar code whatever the algebra of the others
         sx = Algebra("sx", prefix)

@@ -24,6 +24,7 @@ Functions (inputs -> outputs, in argument order, read from the CasADi functions)
 * ``interaction_maps(q, K, contact_link, side, object_mass, object_inertia, q_obj, rho, wheel_offset, free, lam_fixed, regularization) -> lam_from_tau, lam_from_f_obj, lam_offset, qdd_from_tau, qdd_from_f_obj, qdd_offset, a_obj_from_tau, a_obj_from_f_obj, a_obj_offset, w_from_tau, w_from_f_obj, w_offset, xi_tau, omega_tau, lambda_form_tau, input_metric, projector_constrained, projector_orthogonal, delassus, pivot_ratio``
 * ``metric_forms(q, K, contact_link, side, object_mass, object_inertia, q_obj, rho, wheel_offset, free, regularization) -> omega_tau, xi_tau, lambda_form_tau, input_metric, contact_from_tau, pivot_ratio``
 * ``place_object(q, K, contact_link, contact_offset, object_distance, side) -> q_obj, rho, contact_point``
+* ``contact_system(q, v, tau, q_obj, v_obj, f_obj, K, contact_link, side, object_mass, object_inertia, rho, wheel_offset) -> M, delassus, b, qdd_free, a_obj_free, qdd_from_lam, a_obj_from_lam, gap, s``
 """
 
 import casadi as ca
@@ -926,3 +927,18 @@ def wheel_row_local():
 #   from its rear end; the object's COM lies on the contact normal
 #   ``n = side (-sin phi_k, cos phi_k)`` at ``object_distance`` from it, and the object is
 #   aligned with the link (``psi = phi_k``), so ``rho = (0, -side * object_distance)``.
+
+
+# contact_system(q, v, tau, q_obj, v_obj, f_obj, K, contact_link, side, object_mass, object_inertia, rho, wheel_offset)
+#   -> M, delassus, b, qdd_free, a_obj_free, qdd_from_lam, a_obj_from_lam, gap, s
+# built by snakecg_derive.coupled.contact_system():
+#   The contact/wheel problem of one sample before any active set is chosen.
+#
+#   Everything the complementarity solve needs, independent of which rows hold: the Delassus
+#   matrix ``G_c = A I^-1 A^T`` (eq. 14), the rows' accelerations at zero constraint force
+#   ``b = A I^-1 (f - p) + Adot v`` (eq. 13), the accelerations without constraint forces
+#   (eq. 12) and the maps of the constraint forces into them, ``M_s^-1 A_s^T`` and
+#   ``I_obj^-1 A_o^T`` (eq. 18), the mass matrix ``M_s`` (eq. 4, for the norm of eq. 26 and the
+#   conditioning), the gap and the contact coordinate ``s``. With these, every active set
+#   costs one small solve (``G_HH lam_H = -(b_H + G_HF lam_F)``, eq. 16): the runtime core
+#   (snakecg/core/forward.c) iterates the active set on them and evaluates nothing twice.

@@ -9,13 +9,19 @@
  *
  * Per sample (eqs. 12-30 of Reyes & Ma 2017; the rules of snakecg/solver.py):
  *   1. the object's placement (generated `place_object`) unless given;
- *   2. the primal-dual active-set iteration: from "every present row held", evaluate the
- *      generated `constrained_dynamics` for the held rows (sliding wheels at their bound),
- *      move every row that violates its complementarity condition, repeat until no row moves
- *      (the KKT conditions hold to the sample's own relative tolerance);
- *   3. the conditioning: the held rows' pivot ratio and the mass matrix's (a scaled
- *      Cholesky factorization of the generated `mass_matrix`), and a check that the result is
- *      physically possible (finite, norms >= 0, 0 <= sr <= 1).
+ *   2. the problem before any active set (generated `contact_system`): the Delassus matrix
+ *      G_c (eq. 14), the rows' accelerations at zero force b (eq. 13), the accelerations
+ *      without constraint forces and the maps of the forces into them (eqs. 12, 18), M_s;
+ *   3. the primal-dual active-set iteration: from "every present row held", solve the held
+ *      rows G_HH lam_H = -(b_H + G_HF lam_F) (eq. 16; sliding wheels at their bound) by an
+ *      LDL^T factorization in row order (the masked factorization of the generated
+ *      `constrained_dynamics`), w = G_c lam + b, move every row that violates its
+ *      complementarity condition, repeat until no row moves (the KKT conditions hold to the
+ *      sample's own relative tolerance);
+ *   4. the accelerations (eq. 18), the norms (eqs. 26, 27, lam^T G_c lam) and sr (eq. 30);
+ *      the conditioning: the held rows' pivot ratio and the mass matrix's (a scaled Cholesky
+ *      factorization), and a check that the result is physically possible (finite,
+ *      norms >= 0, 0 <= sr <= 1).
  * A sample that this path does not answer exactly (dependent or weakly independent held rows,
  * no convergence within max_iter passes, an ill-conditioned mass matrix, an impossible result)
  * is returned with status FALLBACK: the runtime solves it with its reference path (rows
@@ -35,12 +41,10 @@ typedef long long int sc_int;
 typedef int (*sc_fn)(const double **arg, double **res, sc_int *iw, double *w, int mem);
 typedef int (*sc_work)(sc_int *sz_arg, sc_int *sz_res, sc_int *sz_iw, sc_int *sz_w);
 
-int SNAKECG_CD(const double **arg, double **res, sc_int *iw, double *w, int mem);
-int SNAKECG_CD_WORK(sc_int *sz_arg, sc_int *sz_res, sc_int *sz_iw, sc_int *sz_w);
+int SNAKECG_CS(const double **arg, double **res, sc_int *iw, double *w, int mem);
+int SNAKECG_CS_WORK(sc_int *sz_arg, sc_int *sz_res, sc_int *sz_iw, sc_int *sz_w);
 int SNAKECG_PO(const double **arg, double **res, sc_int *iw, double *w, int mem);
 int SNAKECG_PO_WORK(sc_int *sz_arg, sc_int *sz_res, sc_int *sz_iw, sc_int *sz_w);
-int SNAKECG_MM(const double **arg, double **res, sc_int *iw, double *w, int mem);
-int SNAKECG_MM_WORK(sc_int *sz_arg, sc_int *sz_res, sc_int *sz_iw, sc_int *sz_w);
 
 /* row states (snakecg/solver.py) */
 enum { ABSENT = 0, HELD = 1, LOST = 2, SLIDE_POS = 3, SLIDE_NEG = 4 };
@@ -68,12 +72,11 @@ typedef struct {
 
 static int work_alloc(sc_work_t *ws) {
   sc_int a, r, i, w, ma = 0, mr = 0, mi = 0, mw = 0;
-  sc_work fns[3];
+  sc_work fns[2];
   int k;
-  fns[0] = SNAKECG_CD_WORK;
+  fns[0] = SNAKECG_CS_WORK;
   fns[1] = SNAKECG_PO_WORK;
-  fns[2] = SNAKECG_MM_WORK;
-  for (k = 0; k < 3; ++k) {
+  for (k = 0; k < 2; ++k) {
     a = r = i = w = 0;
     if (fns[k](&a, &r, &i, &w)) return -1;
     if (a > ma) ma = a;
@@ -170,6 +173,48 @@ static int next_states(signed char *state, const double *lam, const double *w,
   return moved;
 }
 
+/* The held rows' forces for row states `state` (eq. 16): lam_F fixed (0, or +-bound for a
+ * sliding wheel), lam_H solving G_HH lam_H = -(b_H + G_HF lam_F) by LDL^T in row order.
+ * Returns the pivot ratio min_j d_j / G_jj over the held rows (1 when none holds), the
+ * quantity the generated functions call pivot_ratio. */
+static double held_forces(const signed char *state, const double *G, const double *b,
+                          const double *bounds, double *lam) {
+  const int nc = SNAKECG_NC;
+  int held[SNAKECG_NC], m = 0, i, j, k;
+  double L[SNAKECG_NC * SNAKECG_NC], d[SNAKECG_NC], y[SNAKECG_NC], ratio = 1.0;
+  for (i = 0; i < nc; ++i) {
+    lam[i] = state[i] == SLIDE_POS ? bounds[i] : state[i] == SLIDE_NEG ? -bounds[i] : 0.0;
+    if (!isfinite(lam[i])) lam[i] = 0.0;
+    if (state[i] == HELD) held[m++] = i;
+  }
+  for (i = 0; i < m; ++i) { /* right-hand side -(b_H + G_HF lam_F) */
+    double t = b[held[i]];
+    for (j = 0; j < nc; ++j)
+      if (state[j] != HELD) t += G[held[i] + nc * j] * lam[j];
+    y[i] = -t;
+  }
+  for (j = 0; j < m; ++j) { /* L D L^T of G_HH, no pivoting */
+    double s = G[held[j] + nc * held[j]], r;
+    for (k = 0; k < j; ++k) s -= L[j + nc * k] * L[j + nc * k] * d[k];
+    d[j] = s;
+    r = s / G[held[j] + nc * held[j]];
+    if (!(r >= ratio)) ratio = r; /* NaN propagates */
+    for (i = j + 1; i < m; ++i) {
+      double t = G[held[i] + nc * held[j]];
+      for (k = 0; k < j; ++k) t -= L[i + nc * k] * L[j + nc * k] * d[k];
+      L[i + nc * j] = t / s;
+    }
+  }
+  for (i = 0; i < m; ++i) /* forward, diagonal and back substitution */
+    for (k = 0; k < i; ++k) y[i] -= L[i + nc * k] * y[k];
+  for (i = m - 1; i >= 0; --i) {
+    y[i] /= d[i];
+    for (k = i + 1; k < m; ++k) y[i] -= L[k + nc * i] * y[k];
+  }
+  for (i = 0; i < m; ++i) lam[held[i]] = y[i];
+  return ratio;
+}
+
 /* One sample. `scene` holds the scene's constant inputs (layout in snakecg_layout.h); `out`
  * one output row (OUT_* offsets). Returns the status. */
 static int solve_one(sc_work_t *ws, const double *scene, const sc_constants *c, long max_iter,
@@ -178,14 +223,14 @@ static int solve_one(sc_work_t *ws, const double *scene, const sc_constants *c, 
                      double *out) {
   const int nc = SNAKECG_NC, ns = SNAKECG_NS;
   double q_obj[3], rho[2], contact_point[2];
-  double free_rows[SNAKECG_NC], lam_fixed[SNAKECG_NC], zero = 0.0;
-  double gap, s, pivot = 0.0, G[SNAKECG_NC * SNAKECG_NC], b[SNAKECG_NC];
-  double M[SNAKECG_NS * SNAKECG_NS], S[SNAKECG_NS * SNAKECG_NS], mass, scale;
+  double M[SNAKECG_NS * SNAKECG_NS], S[SNAKECG_NS * SNAKECG_NS], G[SNAKECG_NC * SNAKECG_NC];
+  double b[SNAKECG_NC], qdd_free[SNAKECG_NS], a_free[3], Kq[SNAKECG_NS * SNAKECG_NC];
+  double Ka[3 * SNAKECG_NC], gap, s, pivot = 0.0, mass, scale, nq, na, nl, I_obj[3];
   const double *bounds = scene + SCENE_bounds, *present = scene + SCENE_present;
   signed char state[SNAKECG_NC];
   long it;
-  int r, moved = 1;
-  double *lam = out + OUT_lam, *w = out + OUT_w;
+  int r, i, moved = 1;
+  double *lam = out + OUT_lam, *w = out + OUT_w, *qdd = out + OUT_qdd, *a = out + OUT_a_obj;
 
   memcpy(out + OUT_tau, tau, sizeof(double) * SNAKECG_NA);
   if (q_obj_in) {
@@ -203,63 +248,83 @@ static int solve_one(sc_work_t *ws, const double *scene, const sc_constants *c, 
     ws->res[PO_OUT_contact_point] = contact_point;
     if (SNAKECG_PO(ws->arg, ws->res, ws->iw, ws->w, 0)) return STATUS_FALLBACK;
   }
-  ws->arg[CD_IN_q] = q;
-  ws->arg[CD_IN_v] = v;
-  ws->arg[CD_IN_tau] = tau;
-  ws->arg[CD_IN_q_obj] = q_obj;
-  ws->arg[CD_IN_v_obj] = v_obj;
-  ws->arg[CD_IN_f_obj] = f_obj;
-  ws->arg[CD_IN_K] = scene + SCENE_K;
-  ws->arg[CD_IN_contact_link] = scene + SCENE_contact_link;
-  ws->arg[CD_IN_side] = scene + SCENE_side;
-  ws->arg[CD_IN_object_mass] = scene + SCENE_object_mass;
-  ws->arg[CD_IN_object_inertia] = scene + SCENE_object_inertia;
-  ws->arg[CD_IN_rho] = rho;
-  ws->arg[CD_IN_wheel_offset] = scene + SCENE_wheel_offset;
-  ws->arg[CD_IN_free] = free_rows;
-  ws->arg[CD_IN_lam_fixed] = lam_fixed;
-  ws->arg[CD_IN_regularization] = &zero;
-  ws->res[CD_OUT_qdd] = out + OUT_qdd;
-  ws->res[CD_OUT_a_obj] = out + OUT_a_obj;
-  ws->res[CD_OUT_lam] = lam;
-  ws->res[CD_OUT_w] = w;
-  ws->res[CD_OUT_gap] = &gap;
-  ws->res[CD_OUT_s] = &s;
-  ws->res[CD_OUT_norm_lambda] = out + OUT_norm_lambda;
-  ws->res[CD_OUT_norm_a_obj] = out + OUT_norm_a_obj;
-  ws->res[CD_OUT_norm_qdd] = out + OUT_norm_qdd;
-  ws->res[CD_OUT_sr] = out + OUT_sr;
-  ws->res[CD_OUT_pivot_ratio] = &pivot;
-  ws->res[CD_OUT_delassus] = G;
-  ws->res[CD_OUT_b] = b;
+  ws->arg[CS_IN_q] = q;
+  ws->arg[CS_IN_v] = v;
+  ws->arg[CS_IN_tau] = tau;
+  ws->arg[CS_IN_q_obj] = q_obj;
+  ws->arg[CS_IN_v_obj] = v_obj;
+  ws->arg[CS_IN_f_obj] = f_obj;
+  ws->arg[CS_IN_K] = scene + SCENE_K;
+  ws->arg[CS_IN_contact_link] = scene + SCENE_contact_link;
+  ws->arg[CS_IN_side] = scene + SCENE_side;
+  ws->arg[CS_IN_object_mass] = scene + SCENE_object_mass;
+  ws->arg[CS_IN_object_inertia] = scene + SCENE_object_inertia;
+  ws->arg[CS_IN_rho] = rho;
+  ws->arg[CS_IN_wheel_offset] = scene + SCENE_wheel_offset;
+  ws->res[CS_OUT_M] = M;
+  ws->res[CS_OUT_delassus] = G;
+  ws->res[CS_OUT_b] = b;
+  ws->res[CS_OUT_qdd_free] = qdd_free;
+  ws->res[CS_OUT_a_obj_free] = a_free;
+  ws->res[CS_OUT_qdd_from_lam] = Kq;
+  ws->res[CS_OUT_a_obj_from_lam] = Ka;
+  ws->res[CS_OUT_gap] = &gap;
+  ws->res[CS_OUT_s] = &s;
+  if (SNAKECG_CS(ws->arg, ws->res, ws->iw, ws->w, 0)) return STATUS_FALLBACK;
   for (r = 0; r < nc; ++r) state[r] = present[r] != 0.0 ? HELD : ABSENT;
   for (it = 0; it < max_iter && moved; ++it) {
-    for (r = 0; r < nc; ++r) {
-      free_rows[r] = state[r] == HELD ? 1.0 : 0.0;
-      lam_fixed[r] = state[r] == SLIDE_POS ? bounds[r] : state[r] == SLIDE_NEG ? -bounds[r] : 0.0;
-      if (!isfinite(lam_fixed[r])) lam_fixed[r] = 0.0;
-    }
-    if (SNAKECG_CD(ws->arg, ws->res, ws->iw, ws->w, 0)) return STATUS_FALLBACK;
+    pivot = held_forces(state, G, b, bounds, lam);
     if (!(pivot > c->pivot_tol) || !all_finite(lam, nc, INFINITY)) return STATUS_FALLBACK;
+    for (r = 0; r < nc; ++r) { /* w = G_c lam + b (eq. 13) */
+      double t = b[r];
+      for (i = 0; i < nc; ++i) t += G[r + nc * i] * lam[i];
+      w[r] = t;
+    }
     moved = next_states(state, lam, w, G, bounds, c->rel_tol);
   }
   if (moved) return STATUS_FALLBACK; /* not settled: enumeration, in the reference path */
   if (!(pivot > c->weak)) return STATUS_FALLBACK; /* weak rows: factored directly there */
-  ws->arg[MM_IN_q] = q;
-  ws->arg[MM_IN_K] = scene + SCENE_K;
-  ws->res[MM_OUT_M] = M;
-  if (SNAKECG_MM(ws->arg, ws->res, ws->iw, ws->w, 0)) return STATUS_FALLBACK;
   mass = mass_pivot_ratio(M, S);
   if (!(mass > c->mass_tol)) return STATUS_FALLBACK;
+  /* eq. (18): the forces back into the accelerations */
+  for (i = 0; i < ns; ++i) {
+    double t = qdd_free[i];
+    for (r = 0; r < nc; ++r) t += Kq[i + ns * r] * lam[r];
+    qdd[i] = t;
+  }
+  for (i = 0; i < 3; ++i) {
+    double t = a_free[i];
+    for (r = 0; r < nc; ++r) t += Ka[i + 3 * r] * lam[r];
+    a[i] = t;
+  }
+  I_obj[0] = I_obj[1] = scene[SCENE_object_mass];
+  I_obj[2] = scene[SCENE_object_inertia];
+  nq = 0.0; /* eq. (26) */
+  for (i = 0; i < ns; ++i) {
+    double t = 0.0;
+    for (r = 0; r < ns; ++r) t += M[i + ns * r] * qdd[r];
+    nq += qdd[i] * t;
+  }
+  na = I_obj[0] * a[0] * a[0] + I_obj[1] * a[1] * a[1] + I_obj[2] * a[2] * a[2]; /* eq. (27) */
+  nl = 0.0;
+  for (i = 0; i < nc; ++i) {
+    double t = 0.0;
+    for (r = 0; r < nc; ++r) t += G[i + nc * r] * lam[r];
+    nl += lam[i] * t;
+  }
+  out[OUT_norm_qdd] = nq;
+  out[OUT_norm_a_obj] = na;
+  out[OUT_norm_lambda] = nl;
+  out[OUT_sr] = na / (na + nq > 1e-300 ? na + nq : 1e-300); /* eq. (30) */
   /* physically possible (snakecg.rows._sane) */
-  scale = fabs(out[OUT_norm_qdd]);
-  if (fabs(out[OUT_norm_a_obj]) > scale) scale = fabs(out[OUT_norm_a_obj]);
-  if (fabs(out[OUT_norm_lambda]) > scale) scale = fabs(out[OUT_norm_lambda]);
-  if (!isfinite(scale) || !isfinite(out[OUT_sr]) || !all_finite(out + OUT_qdd, ns, INFINITY))
+  scale = fabs(nq);
+  if (fabs(na) > scale) scale = fabs(na);
+  if (fabs(nl) > scale) scale = fabs(nl);
+  if (!isfinite(scale) || !isfinite(out[OUT_sr]) || !all_finite(qdd, ns, INFINITY) ||
+      !all_finite(a, 3, INFINITY))
     return STATUS_FALLBACK;
-  if (out[OUT_norm_qdd] < -c->sane_tol * scale || out[OUT_norm_a_obj] < -c->sane_tol * scale ||
-      out[OUT_norm_lambda] < -c->sane_tol * scale || out[OUT_sr] < -c->sane_tol ||
-      out[OUT_sr] > 1.0 + c->sane_tol)
+  if (nq < -c->sane_tol * scale || na < -c->sane_tol * scale || nl < -c->sane_tol * scale ||
+      out[OUT_sr] < -c->sane_tol || out[OUT_sr] > 1.0 + c->sane_tol)
     return STATUS_FALLBACK;
   if (state[0] != HELD) out[OUT_sr] = 0.0; /* eq. 30: no interaction without contact */
   out[OUT_gap] = gap;

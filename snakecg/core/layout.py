@@ -22,14 +22,13 @@ INPUTS = ("q", "v", "tau", "q_obj", "v_obj", "f_obj", "rho")
 #: The generated functions the core calls, with the short name of their macros, and the
 #: inputs and outputs it passes by name (checked against the manifest before compiling).
 FUNCTIONS = {
-    "constrained_dynamics": ("CD", (
+    "contact_system": ("CS", (
         "q", "v", "tau", "q_obj", "v_obj", "f_obj", "K", "contact_link", "side", "object_mass",
-        "object_inertia", "rho", "wheel_offset", "free", "lam_fixed", "regularization"), (
-        "qdd", "a_obj", "lam", "w", "gap", "s", "norm_lambda", "norm_a_obj", "norm_qdd", "sr",
-        "pivot_ratio", "delassus", "b")),
+        "object_inertia", "rho", "wheel_offset"), (
+        "M", "delassus", "b", "qdd_free", "a_obj_free", "qdd_from_lam", "a_obj_from_lam", "gap",
+        "s")),
     "place_object": ("PO", ("q", "K", "contact_link", "contact_offset", "object_distance",
                             "side"), ("q_obj", "rho", "contact_point")),
-    "mass_matrix": ("MM", ("q", "K"), ("M",)),
 }
 
 _IDENT = re.compile(r"[A-Za-z_][A-Za-z0-9_]*\Z")
