@@ -140,10 +140,26 @@ def test_matrix_structured_c_is_strict_c99(tmp_path):
     assert rendered.manifest["algebra"]["composed"] == "mx"
     composed = [f for f in rendered.manifest["functions"] if f["algebra"] == "mx"]
     assert [f["name"] for f in composed] == ["constrained_dynamics", "interaction_maps",
-                                             "metric_forms", "place_object"]
-    for name in ("constrained_dynamics", "interaction_maps", "metric_forms"):
+                                             "metric_forms", "place_object", "contact_system"]
+    for name in ("constrained_dynamics", "interaction_maps", "metric_forms", "contact_system"):
         src = tmp_path / f"{name}.c"
         src.write_text(rendered.files[f"c/{name}.c"])
         res = subprocess.run([cc, *STRICT, "-c", str(src), "-o", str(tmp_path / "x.o")],
                              capture_output=True, text=True, timeout=600)
         assert res.returncode == 0, f"{name}.c:\n{res.stderr[-3000:]}"
+
+
+@pytest.mark.parametrize("joints", [1, 3, 6])
+def test_runtime_core_is_strict_c99(joints, tmp_path):
+    """The runtime core (snakecg/core/forward.c) with the layout header written from a model's
+    manifest compiles with the strict flags and -Wextra."""
+    from snakecg.core.layout import header
+    from snakecg.native import CORE_SOURCE
+
+    cc = _compiler()
+    manifest = json.loads((GENERATED / f"na{joints}" / "manifest.json").read_text())
+    (tmp_path / "snakecg_layout.h").write_text(header(manifest))
+    res = subprocess.run([cc, *STRICT, "-Wextra", "-I", str(tmp_path), "-c", str(CORE_SOURCE),
+                          "-o", str(tmp_path / "core.o")], capture_output=True, text=True,
+                         timeout=600)
+    assert res.returncode == 0, res.stderr[-3000:]

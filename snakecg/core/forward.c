@@ -74,6 +74,10 @@ static int work_alloc(sc_work_t *ws) {
   sc_int a, r, i, w, ma = 0, mr = 0, mi = 0, mw = 0;
   sc_work fns[2];
   int k;
+  ws->arg = 0;
+  ws->res = 0;
+  ws->iw = 0;
+  ws->w = 0;
   fns[0] = SNAKECG_CS_WORK;
   fns[1] = SNAKECG_PO_WORK;
   for (k = 0; k < 2; ++k) {
