@@ -25,6 +25,9 @@ from .records import State
 __all__ = ["Dynamics", "N_WORK"]
 
 N_WORK = 3  # work integrals: joint torques, kinetic friction, object wrench
+# outputs of constrained_dynamics read by the right-hand side, in this order
+_RHS_OUTPUTS = ("qdd", "a_obj", "lam", "gap", "s", "sr", "norm_a_obj", "norm_qdd",
+                "pivot_ratio", "delassus")
 
 
 class Dynamics:
@@ -52,6 +55,8 @@ class Dynamics:
         self.c_k = float(scene.robot.com[self.k])
         self.l_k = float(scene.robot.length[self.k])
         self.woff = np.asarray(scene.wheel_offset, dtype=float)
+        self._woff = self.woff.tolist()
+        self._rho = tuple(rho.tolist())
         self.mo = np.array([scene.object_mass, scene.object_mass, scene.object_inertia])
         be = model.backend
         self.cd = BoundFunction(be, "constrained_dynamics", {
@@ -61,8 +66,9 @@ class Dynamics:
             "regularization": np.zeros(1)})
         self._jac = BoundFunction(be, "link_jacobians", {"K": model.parameters})
         self._mass = BoundFunction(be, "mass_matrix", {"K": model.parameters})
-        self._cache_key = None
-        self._cache_val = None
+        self._out_index = tuple(self.cd.out_names.index(n) for n in _RHS_OUTPUTS)
+        self._jac_index = self._jac.out_names.index("J")
+        self._cache = None  # (t, mode, tau_fn, y bytes, rates) of the last evaluation
         self._zeros_nc = np.zeros(nc)
         self._posv = dposv
         self.nfev = 0
@@ -88,84 +94,97 @@ class Dynamics:
 
     # --- kinematics of the rows -----------------------------------------------------------
     def row_velocities(self, q, v, qo, vo, s) -> np.ndarray:
-        """``A V``: the gap rate ``gdot`` (row 0) and the wheels' lateral velocities ``u_i``."""
+        """``A V``: the gap rate ``gdot`` (row 0) and the wheels' lateral velocities ``u_i``.
+
+        The link twists ``J v`` (world frame) from the compiled Jacobians; the wheel row of
+        link ``i`` is ``(-sin phi_i, cos phi_i, wheel_offset_i)`` on its twist, the contact
+        row the normal ``n = side (-sin phi_k, cos phi_k)`` on the velocity of the object's
+        contact point relative to the link's, less the sliding term ``side omega_k (s -
+        c_k)``. On Python floats: for a handful of links, faster than NumPy's small-array
+        calls (and the same operations in the same order)."""
         self.njev += 1
-        J = self._jac.one(q=q)["J"]
-        tw = (J @ v).reshape(self.nl, 3)
-        phi = np.cumsum(q[2:])  # phi_1 = theta, phi_{j+1} = phi_j + q_j
-        sp, cp = np.sin(phi), np.cos(phi)
-        out = np.empty(self.nc)
-        out[1:] = -sp * tw[:, 0] + cp * tw[:, 1] + self.woff * tw[:, 2]
-        k, sig = self.k, self.sigma
-        n = sig * np.array([-sp[k], cp[k]])
+        J = self._jac.one(q=q)[self._jac_index]
+        tw = (J @ v).tolist()  # (vx, vy, omega) of each link, flat
+        qs = q.tolist()
+        woff = self._woff
+        k = self.k
+        sin, cos = math.sin, math.cos
+        out = [0.0]
+        phi = qs[2]  # phi_1 = theta, phi_{j+1} = phi_j + q_j
+        spk = cpk = 0.0
+        for i in range(self.nl):
+            if i:
+                phi += qs[2 + i]
+            sp, cp = sin(phi), cos(phi)
+            if i == k:
+                spk, cpk = sp, cp
+            out.append(-sp * tw[3 * i] + cp * tw[3 * i + 1] + woff[i] * tw[3 * i + 2])
+        sig = self.sigma
+        n0, n1 = sig * -spk, sig * cpk
         c, sn = math.cos(qo[2]), math.sin(qo[2])
-        rx, ry = self.rho
+        rx, ry = self._rho
         Rr = (c * rx - sn * ry, sn * rx + c * ry)
-        pdot = (vo[0] - vo[2] * Rr[1], vo[1] + vo[2] * Rr[0])
-        out[0] = (n[0] * (pdot[0] - tw[k, 0]) + n[1] * (pdot[1] - tw[k, 1])
-                  - sig * tw[k, 2] * (s - self.c_k))
-        return out
+        vo0, vo1, vo2 = vo.tolist()
+        pdot = (vo0 - vo2 * Rr[1], vo1 + vo2 * Rr[0])
+        out[0] = (n0 * (pdot[0] - tw[3 * k]) + n1 * (pdot[1] - tw[3 * k + 1])
+                  - sig * tw[3 * k + 2] * (s - self.c_k))
+        return np.array(out)
 
     # --- right-hand side within a mode ----------------------------------------------------
     def rates(self, t, y, mode, tau_fn):
         """Everything at ``(t, y)`` in ``mode`` with the torques ``tau_fn(t, y, mode)``: the
-        tuple ``(ydot, lam, gap, s, AV, (tau, sr, norm_a_obj, norm_qdd, p_cons))``.
+        tuple ``(ydot, lam, gap, s, AV, (tau, sr, norm_a_obj, norm_qdd))``.
 
-        The last evaluation is cached: the integrator's event functions ask again at the same
-        point."""
-        key = (t, mode, tau_fn)
+        ``ydot``, ``lam`` and ``AV`` are new arrays; ``tau`` is what the torque function
+        returned. The last evaluation is cached: the integrator's event functions ask again
+        at the same point."""
         yb = y.tobytes()
-        if self._cache_key is not None and self._cache_key[0] == key and self._cache_key[1] == yb:
-            return self._cache_val
+        c = self._cache
+        if c is not None and c[0] == t and c[1] is mode and c[2] is tau_fn and c[3] == yb:
+            return c[4]
         self.nfev += 1
-        q, qo, v, vo = self.split(y)
+        ns, nx = self.ns, self.nx
+        q, qo, v, vo = y[:ns], y[ns:nx], y[nx:nx + ns], y[nx + ns:2 * nx]
         tau = tau_fn(t, y, mode)
         cd = self.cd
-        out = cd.one(q=q, v=v, tau=tau, q_obj=qo, v_obj=vo, free=mode.free,
-                     lam_fixed=mode.lam_fixed)
-        if mode.free_idx.size and not out["pivot_ratio"][0] > PIVOT_TOL:
+        iqdd, iaobj, ilam, igap, is_, isr, inao, inqdd, ipiv, idel = self._out_index
+        o = tuple(cd.one(q=q, v=v, tau=tau, q_obj=qo, v_obj=vo, free=mode.free,
+                         lam_fixed=mode.lam_fixed))
+        F = mode.free_idx
+        if F.size and not o[ipiv][0] > PIVOT_TOL:
             # dependent held rows: least-norm forces (as in snakecg.solver)
             self.singular += 1
-            scale = np.abs(np.diagonal(out["delassus"])).max()
-            out = cd.one(q=q, v=v, tau=tau, q_obj=qo, v_obj=vo, free=mode.free,
-                         lam_fixed=mode.lam_fixed,
-                         regularization=REGULARIZATION * max(scale, 1e-300))
+            scale = np.abs(np.diagonal(o[idel])).max()
+            o = tuple(cd.one(q=q, v=v, tau=tau, q_obj=qo, v_obj=vo, free=mode.free,
+                             lam_fixed=mode.lam_fixed,
+                             regularization=REGULARIZATION * max(scale, 1e-300)))
             cd.set(regularization=0.0)
-        lam = out["lam"].copy()
-        gap = float(out["gap"][0])
-        s = float(out["s"][0])
+        lam = o[ilam].copy()
+        gap = float(o[igap][0])
+        s = float(o[is_][0])
         AV = self.row_velocities(q, v, qo, vo, s)
-        F = mode.free_idx
         if self.alpha > 0 and F.size:
+            # Baumgarte: the held rows' accelerations are -2 alpha A_F V (- alpha^2 g for the
+            # contact) instead of 0; the forces change by -G_FF^-1 of that, then the
+            # accelerations are evaluated again with every force given
             a = self.alpha
-            c = 2.0 * a * AV[F]
+            rhs = 2.0 * a * AV[F]
             if mode.contact_held:
-                c[0] += a * a * gap
-            G = out["delassus"][mode.ff]
-            x, info = self._posv(G, c)[1:]  # Cholesky solve of G_FF x = c (SPD)
+                rhs[0] += a * a * gap
+            G = o[idel][mode.ff]
+            x, info = self._posv(G, rhs)[1:]  # Cholesky solve of G_FF x = rhs (SPD)
             if info != 0:
-                x = np.linalg.lstsq(G, c, rcond=None)[0]
+                x = np.linalg.lstsq(G, rhs, rcond=None)[0]
             lam[F] -= x
-            out = cd.one(free=self._zeros_nc, lam_fixed=lam)
-        ydot = np.empty(self.ny)
-        nx = self.nx
-        ydot[:self.ns] = v
-        ydot[self.ns:nx] = vo
-        ydot[nx:nx + self.ns] = out["qdd"]
-        ydot[nx + self.ns:2 * nx] = out["a_obj"]
+            o = tuple(cd.one(free=self._zeros_nc, lam_fixed=lam))
         p_tau = float(tau @ v[3:])
         sl = mode.slide_idx
         p_fric = float(lam[sl] @ AV[sl]) if sl.size else 0.0
         p_obj = float(self.f_obj @ vo)
-        ydot[2 * nx:] = (p_tau, p_fric, p_obj)
-        # power of the held rows' forces: zero on the constraints (a drift diagnostic; not
-        # integrated: off the constraints, at the integrator's stages, it is noise)
-        p_cons = float(lam[F] @ AV[F]) if F.size else 0.0
-        extras = (np.array(tau, dtype=float), float(out["sr"][0]), float(out["norm_a_obj"][0]),
-                  float(out["norm_qdd"][0]), p_cons)
+        ydot = np.concatenate((v, vo, o[iqdd], o[iaobj], (p_tau, p_fric, p_obj)))
+        extras = (tau, float(o[isr][0]), float(o[inao][0]), float(o[inqdd][0]))
         val = (ydot, lam, gap, s, AV, extras)
-        self._cache_key = (key, yb)
-        self._cache_val = val
+        self._cache = (t, mode, tau_fn, yb, val)
         return val
 
     # --- linear maps at a state (events only) ---------------------------------------------
