@@ -11,8 +11,8 @@ import numpy as np
 
 from .._inputs import MAX_MAGNITUDE
 from ..errors import InputError, SnakecgError
-from ..simulate import (_METHODS, MAX_FRAMES, MAX_OUTPUT_SAMPLES, MAX_PERIODS, RTOL_MIN,
-                        STABILIZATION_MAX)
+from ..simulate.inputs import (MAX_FRAMES, MAX_OUTPUT_SAMPLES, MAX_PERIODS, METHODS, RTOL_MIN,
+                               STABILIZATION_MAX, check_count)
 from ._common import (add_robot_args, check_vector, count, out_dir, parse_vector, print_json,
                       progress_reporter, real, scene_from_args, strict_json, text)
 
@@ -58,7 +58,7 @@ def register(sub) -> None:
                    help="controller: torque limit |tau_j| (N m)")
     p.add_argument("--control-period", type=real(0, lo_open=True, unit="s"),
                    help="zero-order hold of the controller (s, default 0.01)")
-    p.add_argument("--method", default="DOP853", choices=_METHODS,
+    p.add_argument("--method", default="DOP853", choices=METHODS,
                    help="scipy solve_ivp method (default DOP853)")
     p.add_argument("--rtol", type=real(RTOL_MIN, 1.0), default=1e-9,
                    help=f"relative tolerance, {RTOL_MIN:.3g} to 1 (default 1e-9)")
@@ -85,19 +85,18 @@ def register(sub) -> None:
 
 def _check_counts(args) -> None:
     """Output samples and controller periods within their limits (before any work)."""
-    from ..simulate import _check_count
-
     output_dt = args.output_dt if args.output_dt is not None else args.duration / 400
-    _check_count("--output-dt", args.duration, output_dt, MAX_OUTPUT_SAMPLES, "output samples")
+    check_count("--output-dt", args.duration, output_dt, MAX_OUTPUT_SAMPLES, "output samples")
     if args.controller:
-        _check_count("--control-period", args.duration, args.control_period or 0.01,
-                     MAX_PERIODS, "controller periods (one torque query each)")
+        check_count("--control-period", args.duration, args.control_period or 0.01,
+                    MAX_PERIODS, "controller periods (one torque query each)")
 
 
 def run(args) -> int:
     from .. import load
     from .._files import write_text
-    from ..simulate import least_slip_push_controller, save_figures, simulate
+    from ..figures.simulation import save_figures
+    from ..simulate import least_slip_push_controller, simulate
 
     # every option checked against the robot and each other before the model is loaded
     scene = scene_from_args(args)

@@ -1,0 +1,220 @@
+"""Events: what ends an integration segment in a mode, and what happens at its end.
+
+* contact held: ``lam_c`` crossing zero downwards -> the contact separates; the contact point
+  leaving the link (``s`` outside ``[0, l_k]``) -> the contact is lost for good;
+* contact separated: the gap reaching zero with the point on the link -> plastic impact
+  (:meth:`Events.settle`);
+* wheel sticking: ``|lam_i|`` reaching ``mu m_i g`` -> it breaks away;
+* wheel sliding: ``u_i`` returning to zero -> it sticks again, or slides the other way.
+
+At an event the new active set is the solution of the acceleration-level complementarity
+problem (:func:`snakecg.solver.solve_active_set`) over the rows whose status is not fixed by
+the velocities.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ..solver import ABSENT, HELD, LOST, SLIDE_NEG, SLIDE_POS, solve_active_set
+from .modes import Mode, transitions
+from .records import SimEvent
+
+__all__ = ["Events"]
+
+
+class Events:
+    """The event functions of a mode and the handling of events, on the equations ``dyn``
+    (:class:`~snakecg.simulate.dynamics.Dynamics`) with the torques ``torques``
+    (:class:`~snakecg.simulate.torques.Torques`). ``gtol`` (m): the gap and the contact
+    position along the link within which the contact counts as touching / on the link.
+
+    ``drift_corrected``: the largest ``|A V|`` of a held row projected away at an event.
+    """
+
+    def __init__(self, dyn, torques, gtol: float):
+        self.dyn = dyn
+        self.torques = torques
+        self.gtol = gtol
+        self.drift_corrected = 0.0
+
+    # --- events of a mode -------------------------------------------------------------------
+    def functions(self, mode: Mode, tau_fn) -> list:
+        """The terminal event functions of ``mode`` for :func:`scipy.integrate.solve_ivp`,
+        each with ``kind`` and ``row`` attributes."""
+        evs = []
+
+        def make(fn, direction, kind, row):
+            fn.terminal = True
+            fn.direction = direction
+            fn.kind = kind
+            fn.row = row
+            evs.append(fn)
+
+        rates = self.dyn.rates
+        l_k = self.dyn.l_k
+        if mode.contact_held:
+            make(lambda t, y: rates(t, y, mode, tau_fn)[1][0], -1, "separation", 0)
+            make(lambda t, y: rates(t, y, mode, tau_fn)[3], -1, "off_link", 0)
+            make(lambda t, y: l_k - rates(t, y, mode, tau_fn)[3], -1, "off_link", 0)
+        elif not mode.off_link:
+            make(lambda t, y: rates(t, y, mode, tau_fn)[2], -1, "gap", 0)
+        bounds = self.dyn.bounds
+        for r in range(1, self.dyn.nc):
+            st = mode.state[r]
+            b = bounds[r]
+            if st == HELD and np.isfinite(b):
+                make(lambda t, y, r=r, b=b: b - abs(rates(t, y, mode, tau_fn)[1][r]), -1,
+                     "breakaway", r)
+            elif st in (SLIDE_POS, SLIDE_NEG):
+                d = -1.0 if st == SLIDE_POS else 1.0  # direction of the sliding velocity
+                make(lambda t, y, r=r, d=d: d * rates(t, y, mode, tau_fn)[4][r], -1,
+                     "slide_stop", r)
+        return evs
+
+    # --- at an event ------------------------------------------------------------------------
+    def handle(self, t, y, mode: Mode, fired, events: list):
+        """Apply the events ``fired`` at ``(t, y)``; return the new state and mode."""
+        dyn = self.dyn
+        forced: dict[int, int] = {}
+        off_link = mode.off_link
+        contact_candidate = mode.contact_held
+        for ev in fired:
+            if ev.kind == "separation":
+                forced[0] = LOST
+                contact_candidate = False
+            elif ev.kind == "off_link":
+                forced[0] = LOST
+                contact_candidate = False
+                off_link = True
+            elif ev.kind == "gap":
+                s = dyn.rates(t, y, mode, self.torques.function())[3]
+                if -self.gtol <= s <= dyn.l_k + self.gtol:
+                    contact_candidate = True
+                else:
+                    forced[0] = LOST
+            elif ev.kind == "breakaway":
+                lam = dyn.rates(t, y, mode, self.torques.function())[1]
+                forced[ev.row] = SLIDE_POS if lam[ev.row] > 0 else SLIDE_NEG
+        stopped = {ev.row for ev in fired if ev.kind == "slide_stop"}
+        # sliding wheels that did not stop keep sliding
+        for r in mode.slide_idx:
+            if r not in forced and r not in stopped:
+                forced[int(r)] = int(mode.state[r])
+        n0 = len(events)
+        y, new = self.settle(t, y, mode, forced, contact_candidate=contact_candidate,
+                             off_link=off_link, events=events)
+        events[n0:n0] = transitions(t, mode, new, impact=len(events) > n0)
+        return y, new
+
+    def settle(self, t, y, prev: Mode | None, forced: dict[int, int], *, contact_candidate,
+               off_link, events: list, impact_kind="impact"):
+        """Impacts, projections and the new mode at an event (or at the start).
+
+        A contact that closes with a normal velocity takes a plastic impact: the impulse that
+        removes it conserves momentum (ideal wheels take impulses too; wheels with bounded
+        friction cannot, their force being finite), and the kinetic energy lost
+        ``1/2 Lam^T G_FF Lam`` is recorded."""
+        dyn = self.dyn
+        nc = dyn.nc
+        present, bounds = dyn.present, dyn.bounds
+        before = prev.describe() if prev is not None else "start"
+        probe = Mode(np.where(present, HELD, ABSENT), bounds, off_link)
+        tau = np.asarray(self.torques.function()(t, y, prev or probe), dtype=float)
+        Q, G, gap, s, AV = dyn.linear_maps(y, tau)
+        V = y[dyn.nx:2 * dyn.nx]
+        vtol = 1e-8 * max(1.0, float(np.abs(V).max()))
+        ideal = np.flatnonzero(present & ~np.isfinite(bounds))
+        ideal = ideal[ideal > 0]
+        bounded = np.flatnonzero(present & np.isfinite(bounds))
+        bounded = bounded[bounded > 0]
+        forced = dict(forced)
+        records = []
+        # rows held before the event carry only integration drift in A V (projected below);
+        # a row that was not held is classified by its velocity
+        held_before = (prev.state == HELD) if prev is not None else np.zeros(nc, dtype=bool)
+        impact = False
+        # contact: plastic impact when closing
+        contact_in = bool(contact_candidate) and 0 not in forced
+        if contact_in and not held_before[0] and AV[0] < -vtol:
+            rows = np.concatenate(([0], ideal)).astype(int)
+            ke0 = dyn.kinetic_energy(y)
+            y, Lam, dE = dyn.project(y, tau, rows, positions=True)
+            records.append((impact_kind, 0, {
+                "closing_velocity": float(AV[0]), "impulse": float(Lam[0]),
+                "wheel_impulses": Lam[1:].tolist(), "energy_loss": float(-dE),
+                "kinetic_energy_before": ke0}))
+            Q, G, gap, s, AV = dyn.linear_maps(y, tau)
+            impact = True
+        elif contact_in and not held_before[0] and AV[0] > vtol:
+            forced[0] = LOST  # already moving apart
+        elif not contact_in and 0 not in forced:
+            forced[0] = LOST
+        # bounded wheels: sliding when their lateral velocity is not zero (at the start, after
+        # an impact, which they cannot resist with a finite force, or when not sticking before)
+        for r in bounded:
+            if r in forced or (held_before[r] and not impact):
+                continue
+            if abs(AV[r]) > vtol:
+                forced[int(r)] = SLIDE_POS if AV[r] < 0 else SLIDE_NEG
+        candidates = present.copy()
+        for r in forced:
+            candidates[r] = False
+        # drift-level projection of every candidate row (and the initial velocities of
+        # ideal wheels, which may take an impulse)
+        rows = np.flatnonzero(candidates)
+        if rows.size:
+            ke0 = dyn.kinetic_energy(y)
+            y2, Lam, dE = dyn.project(y, tau, rows, positions=bool(candidates[0]))
+            drift = float(np.abs(AV[rows]).max())
+            if prev is None and drift > vtol:
+                # initial velocities against the held rows (e.g. ideal wheels): an impulse
+                records.append(("projection", int(rows[np.argmax(np.abs(AV[rows]))]), {
+                    "impulses": Lam.tolist(), "energy_loss": float(-dE),
+                    "kinetic_energy_before": ke0}))
+            elif prev is not None:
+                self.drift_corrected = max(self.drift_corrected, drift)
+            y = y2
+        state = self.decide(y, tau, candidates, forced)
+        mode = Mode(state, bounds, off_link)
+        for kind, row, data in records:
+            events.append(SimEvent(float(t), kind, row, before, mode.describe(), data))
+        return y, mode
+
+    def decide(self, y, tau, candidates: np.ndarray, forced: dict[int, int]) -> np.ndarray:
+        """Row states: the complementarity problem over ``candidates`` at acceleration level,
+        the ``forced`` rows fixed (a sliding wheel's force, a separated contact)."""
+        dyn = self.dyn
+        q, qo, v, vo = dyn.split(y)
+        nc = dyn.nc
+        bounds = dyn.bounds
+        fixed_lam = np.zeros(nc)
+        for r, st in forced.items():
+            if st == SLIDE_POS:
+                fixed_lam[r] = bounds[r]
+            elif st == SLIDE_NEG:
+                fixed_lam[r] = -bounds[r]
+        fmask = np.zeros(nc, dtype=bool)
+        fmask[list(forced)] = True
+
+        def call(idx, free, lam_fixed, reg):
+            m = len(idx)
+            lf = np.where(fmask[None, :], fixed_lam[None, :], lam_fixed)
+            outs = dyn.cd.many(m, q=q, v=v, tau=tau, q_obj=qo, v_obj=vo,
+                               free=np.ascontiguousarray(free),
+                               lam_fixed=np.ascontiguousarray(lf),
+                               regularization=np.asarray(reg, float).reshape(m, 1))
+            res = {}
+            for name, o in outs.items():
+                res[name] = o[:, 0].copy() if o.ndim == 2 and o.shape[1] == 1 else o
+            return res
+
+        state = np.full(nc, ABSENT, dtype=np.int8)
+        if candidates.any():
+            sol = solve_active_set(call, 1, candidates, bounds)
+            state = sol.state[0].astype(np.int8)
+            if sol.singular[0]:
+                dyn.singular += 1
+        for r, st in forced.items():
+            state[r] = st
+        return state

@@ -1,0 +1,159 @@
+"""What a simulation gives back: :class:`Trajectory`, its :class:`SimEvent` records, the
+:class:`State` a feedback law sees, :class:`SimulationError`, and the JSON form of the summary
+(schema :data:`SCHEMA`)."""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from ..errors import SnakecgError
+
+__all__ = ["SCHEMA", "SimEvent", "SimulationError", "State", "Trajectory", "jsonable"]
+
+#: Version of the summary dictionary (``Trajectory.summary``, ``snakecg simulate --json``).
+SCHEMA = "snakecg.simulate/1"
+
+
+class SimulationError(SnakecgError, RuntimeError):
+    """The integration failed (integrator error, a torque law that returned bad values...)."""
+
+
+@dataclass(frozen=True)
+class State:
+    """What a feedback law ``tau(t, state)`` sees.
+
+    ``q`` (n_s), ``v`` (n_s), ``q_obj`` (3), ``v_obj`` (3), ``rho`` (2, the contact point in
+    the object frame), ``contact`` (the contact is held in the current mode) and
+    ``wheel_state`` (n_l strings, as in :class:`snakecg.ForwardResult`).
+    """
+
+    t: float
+    q: np.ndarray
+    v: np.ndarray
+    q_obj: np.ndarray
+    v_obj: np.ndarray
+    rho: np.ndarray
+    contact: bool
+    wheel_state: tuple
+
+
+@dataclass
+class SimEvent:
+    """A transition: ``kind`` is ``"impact"`` (the contact closes with a plastic impact),
+    ``"touch"`` (it closes with no normal velocity), ``"separation"``, ``"off_link"`` (the
+    contact point left the link), ``"breakaway"``, ``"stick"``, ``"reverse"`` (a sliding
+    wheel that stops and slides back) or ``"projection"`` (velocities made consistent with
+    the held rows by an impulse, e.g. initial velocities against ideal wheels); ``row`` is
+    the constraint row (0 the contact, ``i`` the wheel of link ``i``); ``before``/``after``
+    describe the modes; ``data`` holds numbers such as the impulse and the energy lost."""
+
+    t: float
+    kind: str
+    row: int
+    before: str
+    after: str
+    data: dict = field(default_factory=dict)
+
+    def to_dict(self) -> dict:
+        return {"t": self.t, "kind": self.kind, "row": self.row, "before": self.before,
+                "after": self.after, **{k: jsonable(v) for k, v in self.data.items()}}
+
+
+@dataclass
+class Trajectory:
+    """A simulated trajectory, sampled at ``t`` (N,) (uniform output times plus both sides of
+    every event, so a time may repeat).
+
+    * state: ``q`` (N, n_s), ``v`` (N, n_s), ``q_obj`` (N, 3), ``v_obj`` (N, 3); ``rho`` (2,);
+    * input and forces: ``tau`` (N, n_a), ``lam`` (N, n_c) (row 0 the contact, row ``i`` the
+      wheel of link ``i``), accelerations ``qdd`` (N, n_s), ``a_obj`` (N, 3);
+    * flags: ``contact`` (N,) bool (held), ``wheel_state`` (N, n_l) (``"none"``, ``"stick"``,
+      ``"slide+"``, ``"slide-"``: force at ``+-mu m g``), ``events`` (list of :class:`SimEvent`);
+    * metrics: instantaneous ``sr`` (eq. 30), ``norm_a_obj``, ``norm_qdd``; the
+      displacement-based slippage ratio ``sr_displacement`` (see docs/simulate.md); the
+      snake's COM ``com`` (N, 2); ``link_poses`` (N, n_l, 3);
+    * constraint rows: ``gap`` (N,), ``s`` (N,) (contact position along the link),
+      ``row_velocity`` (N, n_c) (``gdot``, lateral wheel velocities ``u_i``);
+    * energy: ``kinetic_energy`` (N,), ``power_tau``, ``power_friction`` (N,), cumulative
+      ``work_tau``, ``work_friction``, ``work_object``, ``impact_loss``
+      (N,) and ``energy_residual`` = kinetic energy gained minus all of those;
+    * ``summary``: a JSON-ready dictionary (schema ``snakecg.simulate/1``, docs/simulate.md).
+    """
+
+    t: np.ndarray
+    q: np.ndarray
+    v: np.ndarray
+    q_obj: np.ndarray
+    v_obj: np.ndarray
+    rho: np.ndarray
+    tau: np.ndarray
+    lam: np.ndarray
+    qdd: np.ndarray
+    a_obj: np.ndarray
+    contact: np.ndarray
+    wheel_state: np.ndarray
+    sr: np.ndarray
+    norm_a_obj: np.ndarray
+    norm_qdd: np.ndarray
+    sr_displacement: np.ndarray
+    com: np.ndarray
+    link_poses: np.ndarray
+    gap: np.ndarray
+    s: np.ndarray
+    row_velocity: np.ndarray
+    kinetic_energy: np.ndarray
+    power_tau: np.ndarray
+    power_friction: np.ndarray
+    work_tau: np.ndarray
+    work_friction: np.ndarray
+    work_object: np.ndarray
+    power_constraint: np.ndarray
+    impact_loss: np.ndarray
+    energy_residual: np.ndarray
+    events: list
+    summary: dict
+    geometry: dict = field(repr=False, default_factory=dict)
+
+    @property
+    def n_samples(self) -> int:
+        return int(self.t.shape[0])
+
+    def at(self, t: float) -> int:
+        """Index of the last sample at or before time ``t``."""
+        return int(max(0, np.searchsorted(self.t, t, side="right") - 1))
+
+    def arrays(self) -> dict[str, np.ndarray]:
+        """Every per-sample array by name (for ``numpy.savez``)."""
+        skip = {"events", "summary", "geometry"}
+        return {k: np.asarray(getattr(self, k)) for k in self.__dataclass_fields__
+                if k not in skip}
+
+    def save(self, path) -> None:
+        """Write the arrays to a ``.npz`` file (the summary goes to JSON separately),
+        atomically: a unique temporary name in the same folder, then ``os.replace``."""
+        from .._files import atomic_path
+
+        with atomic_path(path) as tmp, open(tmp, "wb") as fh:
+            np.savez_compressed(fh, **self.arrays())
+
+
+def jsonable(x):
+    """``x`` with NumPy scalars and arrays turned into Python numbers and lists, and
+    non-finite floats into ``None`` (strict JSON)."""
+    if isinstance(x, dict):
+        return {k: jsonable(v) for k, v in x.items()}
+    if isinstance(x, (list, tuple)):
+        return [jsonable(v) for v in x]
+    if isinstance(x, np.ndarray):
+        return jsonable(x.tolist())
+    if isinstance(x, (np.bool_, bool)):
+        return bool(x)
+    if isinstance(x, (np.integer,)):
+        return int(x)
+    if isinstance(x, (float, np.floating)):
+        x = float(x)
+        return x if math.isfinite(x) else None
+    return x

@@ -1,0 +1,203 @@
+"""The integration: :func:`simulate` checks its arguments, then :class:`Simulator` integrates
+mode by mode with :func:`scipy.integrate.solve_ivp` (terminal events, the mode re-solved at
+each event, the held torque re-sampled at each control instant) and hands the samples to
+:func:`~snakecg.simulate.assembly.assemble`."""
+
+from __future__ import annotations
+
+import math
+import time
+
+import numpy as np
+
+from ..errors import InputError, SnakecgError
+from ..solver import ABSENT, HELD, LOST
+from .assembly import assemble
+from .dynamics import N_WORK, Dynamics
+from .events import Events
+from .inputs import Settings, check_arguments
+from .modes import Mode
+from .records import SimEvent, SimulationError, Trajectory
+from .torques import Torques
+
+__all__ = ["Simulator", "simulate"]
+
+
+class Simulator:
+    """One run: the equations (:class:`~snakecg.simulate.dynamics.Dynamics`), the torques
+    (:class:`~snakecg.simulate.torques.Torques`) and the event handling
+    (:class:`~snakecg.simulate.events.Events`) of the checked ``settings``."""
+
+    def __init__(self, settings: Settings):
+        self.settings = settings
+        self.model = settings.model
+        self.dyn = Dynamics(settings.model, settings.rho, settings.f_obj, settings.alpha)
+        self.torques = Torques(settings.kind, settings.law, self.dyn.na,
+                               settings.control_period, self.dyn.state)
+        gtol = 1e-9 * max(self.dyn.scene.robot.length)
+        self.events = Events(self.dyn, self.torques, gtol)
+        # filled in by run()
+        self.ke_initial = math.nan
+        self.initial_mode = self.final_mode = ""
+        self.segments = 0
+        self.wall = 0.0
+
+    def _solver_options(self) -> dict:
+        cfg = self.settings
+        opts = dict(method=cfg.method, rtol=cfg.rtol, atol=cfg.atol)
+        if cfg.fixed_step is not None:
+            opts.update(rtol=1e30, atol=1e30, first_step=cfg.fixed_step,
+                        max_step=cfg.fixed_step)
+        elif cfg.max_step is not None:
+            opts.update(max_step=cfg.max_step)
+        return opts
+
+    def _output_times(self) -> np.ndarray:
+        T, dt = self.settings.duration, self.settings.output_dt
+        grid = np.arange(1, int(math.floor(T / dt + 1e-9)) + 1) * dt
+        grid = grid[grid < T - 1e-12 * T]
+        return np.append(grid, T)
+
+    def run(self) -> Trajectory:
+        from scipy.integrate import solve_ivp
+
+        cfg, dyn, torques, handler = self.settings, self.dyn, self.torques, self.events
+        wall0 = time.perf_counter()
+        T = cfg.duration
+        y = np.concatenate([cfg.q0, cfg.q_obj0, cfg.v0, cfg.v_obj0, np.zeros(N_WORK)])
+        self.ke_initial = dyn.kinetic_energy(y)
+        events: list[SimEvent] = []
+        # initial mode: the contact is a candidate when the object touches the link face
+        Q, G, gap, s, AV = dyn.linear_maps(y, np.zeros(dyn.na))
+        gtol = handler.gtol
+        on_link = -gtol <= s <= dyn.l_k + gtol
+        if gap < -gtol and on_link:
+            raise InputError(f"the object penetrates the contact link at t = 0 (gap = {gap:.3g}"
+                             " m); move it out along the contact normal")
+        touching = abs(gap) <= gtol and on_link
+        if cfg.control_period is not None:
+            st = np.where(dyn.present, HELD, ABSENT)
+            if not touching:
+                st[0] = LOST
+            torques.sample(0.0, y, Mode(st, dyn.bounds, not on_link))
+        impact_loss = 0.0
+        y, mode = handler.settle(0.0, y, None, {}, contact_candidate=touching,
+                                 off_link=not on_link and abs(gap) <= gtol,
+                                 events=events, impact_kind="impact")
+        for e in events:
+            impact_loss += e.data.get("energy_loss", 0.0)
+        samples = []  # (t, y, mode, tau_fn, impact_loss)
+        grid = self._output_times()
+        t = 0.0
+        self.initial_mode = mode.describe()
+        samples.append((t, y.copy(), mode, torques.function(), impact_loss))
+        status = "completed"
+        n_events = 0
+        segments = 0
+        stuck = 0
+        next_control = (cfg.control_period if cfg.control_period is not None else math.inf)
+        opts = self._solver_options()
+        while t < T * (1 - 1e-13):
+            t_end = min(T, next_control)
+            if t_end - t <= 1e-12 * T:
+                t_end = T if next_control >= T else t_end
+            tau_fn = torques.function()
+            evs = handler.functions(mode, tau_fn)
+            t_eval = grid[(grid > t) & (grid < t_end)]
+            t_eval = np.append(t_eval, t_end)
+
+            def fun(tt, yy, m=mode, f=tau_fn):
+                return dyn.rates(tt, yy, m, f)[0]
+
+            if cfg.fixed_step is not None:
+                opts["first_step"] = min(cfg.fixed_step, t_end - t)
+            try:
+                sol = solve_ivp(fun, (t, t_end), y, t_eval=t_eval, events=evs or None, **opts)
+            except SnakecgError:
+                raise
+            except (ValueError, np.linalg.LinAlgError, ArithmeticError) as exc:
+                raise SimulationError(f"integration failed at t = {t:.6g} s: {exc}") from exc
+            segments += 1
+            if sol.status < 0:
+                raise SimulationError(f"integration failed at t = {t:.6g} s: {sol.message}")
+            ys = np.asarray(sol.y).reshape(dyn.ny, -1) if len(sol.t) else np.zeros((dyn.ny, 0))
+            for tt, yy in zip(sol.t, ys.T):
+                if tt > t:
+                    samples.append((float(tt), yy.copy(), mode, tau_fn, impact_loss))
+            if sol.status == 1:
+                fired = [(i, float(te[0]), np.asarray(ye[0])) for i, (te, ye) in
+                         enumerate(zip(sol.t_events, sol.y_events)) if len(te)]
+                t_e = min(f[1] for f in fired)
+                fired = [f for f in fired if f[1] <= t_e + 1e-12 * max(1.0, T)]
+                y_e = fired[0][2].copy()
+                stuck = stuck + 1 if t_e - t <= 1e-12 * max(1.0, T) else 0
+                if samples[-1][0] < t_e:
+                    samples.append((t_e, y_e.copy(), mode, tau_fn, impact_loss))
+                n_before = len(events)
+                y, mode = handler.handle(t_e, y_e, mode, [evs[i] for i, _, _ in fired], events)
+                for e in events[n_before:]:
+                    impact_loss += e.data.get("energy_loss", 0.0)
+                n_events += 1
+                t = t_e
+                samples.append((t, y.copy(), mode, torques.function(), impact_loss))
+                if n_events >= cfg.max_events or stuck > 20:
+                    status = (f"stopped at t = {t:.6g} s after {n_events} events"
+                              + (" (no progress between events)" if stuck > 20 else ""))
+                    break
+            else:
+                t = t_end
+                y = sol.y[:, -1].copy()
+                if t >= next_control * (1 - 1e-13):
+                    next_control += cfg.control_period
+                    if t < T * (1 - 1e-13):
+                        # the held torque jumps: the active set is solved again
+                        torques.sample(t, y, mode)
+                        n_before = len(events)
+                        y, mode = handler.handle(t, y, mode, [], events)
+                        for e in events[n_before:]:
+                            impact_loss += e.data.get("energy_loss", 0.0)
+                        if len(events) > n_before:
+                            samples.append((t, y.copy(), mode, torques.function(),
+                                            impact_loss))
+        self.wall = time.perf_counter() - wall0
+        self.segments = segments
+        self.final_mode = mode.describe()
+        return assemble(self, samples, events, status)
+
+
+def simulate(model, q0, tau, duration, v0=None, *, v_obj0=None, q_obj0=None, rho=None,
+             f_obj=None, control_period=None, method="DOP853", rtol=1e-9, atol=1e-11,
+             max_step=None, fixed_step=None, stabilization=10.0, output_dt=None,
+             max_events=1000) -> Trajectory:
+    """Integrate the snake + object of ``model`` (a :class:`~snakecg.SceneModel`) from ``q0``.
+
+    Parameters
+    ----------
+    q0, v0 : (n_s,) initial coordinates and velocities (``v0`` default: at rest).
+    tau : the joint torques: a constant ``(n_a,)``, a function of time ``tau(t)``, or a
+        feedback law ``tau(t, state)`` (:class:`State`), e.g.
+        :func:`least_slip_push_controller`.
+    duration : seconds to simulate.
+    v_obj0 : the object's initial twist (default 0). ``q_obj0`` and ``rho`` (together): the
+        object's pose and the contact point in its frame (default: the scene's placement,
+        touching the contact link).
+    f_obj : constant external wrench on the object (F_x, F_y, torque), default 0.
+    control_period : hold a time function or feedback law constant over this period
+        (zero-order hold, evaluated at the start of each period); default: evaluated
+        continuously.
+    method, rtol, atol, max_step : :func:`scipy.integrate.solve_ivp` settings.
+    fixed_step : take steps of exactly this size (convergence studies); overrides the
+        tolerances.
+    stabilization : Baumgarte rate ``alpha`` (1/s) of the held rows; 0 switches it off.
+    output_dt : spacing of the output samples (default ``duration / 400``); events add
+        samples on both sides.
+    max_events : stop (``summary["status"]`` says so) after this many events.
+
+    Returns a :class:`Trajectory` with the per-sample arrays, the events and ``summary``.
+    """
+    settings = check_arguments(
+        model, q0, tau, duration, v0, v_obj0=v_obj0, q_obj0=q_obj0, rho=rho, f_obj=f_obj,
+        control_period=control_period, method=method, rtol=rtol, atol=atol,
+        max_step=max_step, fixed_step=fixed_step, stabilization=stabilization,
+        output_dt=output_dt, max_events=max_events)
+    return Simulator(settings).run()
