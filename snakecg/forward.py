@@ -197,10 +197,9 @@ def forward_one(model, core, q, tau, data):
     try:
         if d.owner is not model:
             d.bind(model)
-        views = d.views
         try:
-            views["q"][:] = q
-            views["tau"][:] = tau
+            d.q[:] = q
+            d.tau[:] = tau
         except (TypeError, ValueError, OverflowError):
             return None
         if core.call_packed(d.call_address) != 0:

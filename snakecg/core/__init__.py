@@ -97,7 +97,7 @@ class Data:
 
     __slots__ = ("n_coordinates", "n_joints", "inputs", "views", "out", "out_address",
                  "pointers", "pointers_address", "placed_pointers", "placed_address", "strides",
-                 "strides_address", "call", "call_address", "lock", "owner")
+                 "strides_address", "call", "call_address", "lock", "owner", "q", "tau")
 
     def __init__(self, layout: Layout):
         ns, na = layout.n_coordinates, layout.n_joints
@@ -111,6 +111,7 @@ class Data:
             k += sizes[name]
         self.views = {name: self.inputs[offsets[name]: offsets[name] + sizes[name]]
                       for name in INPUTS}
+        self.q, self.tau = self.views["q"], self.views["tau"]
         addresses = [base + 8 * offsets[name] for name in INPUTS]
         # q_obj NULL: the C places the object from q (the common case)
         placed = [0 if name in ("q_obj", "rho") else a for name, a in zip(INPUTS, addresses)]
