@@ -15,7 +15,11 @@ For a 3-joint snake (the paper's Table 1 robot, kappa = 100) at rest, in each sc
   its model has the contact and the bodies but not the wheels: it does less than the
   ``wheels`` scenarios.
 
-    python benchmarks/bench_core.py [--n 100000] [--single 20000] [--repeat 5]
+* **threads** (``--threads``): batched ``forward`` per pair on 1 and on 2 threads for batch
+  sizes from 128 to 65,536 (``wheels``), the data behind the default of ``SNAKECG_THREADS``
+  (threads only from ``PARALLEL_MIN`` samples per thread on).
+
+    python benchmarks/bench_core.py [--n 100000] [--single 20000] [--repeat 5] [--threads]
 
 Prints a table and the machine's load average before and after.
 """
@@ -131,11 +135,40 @@ def bench_mujoco(single, repeat):
     return best_of(io, repeat) / single, best_of(bare, repeat) / single, ncon, mujoco.__version__
 
 
+def bench_threads(repeat, rng):
+    from snakecg import forward as forward_mod
+
+    model = snakecg.load(snakecg.Scene(snakecg.Robot(joints=3), scenario="wheels", kappa=100))
+    print(f"\nthreads (wheels; PARALLEL_MIN = {forward_mod.PARALLEL_MIN} samples per thread)")
+    print("| batch | 1 thread µs/pair | 2 threads µs/pair | speed-up |")
+    print("|---:|---:|---:|---:|")
+    saved = forward_mod.PARALLEL_MIN
+    forward_mod.PARALLEL_MIN = 1  # measure both at every size
+    try:
+        for n in (128, 512, 2048, 8192, 65536):
+            Q = np.zeros((n, 6))
+            Q[:, 3:] = rng.uniform(-2.3, 2.3, (n, 3))
+            T = rng.normal(0.0, 0.05, (n, 3))
+            res = model.forward(Q, T)
+            times = []
+            for k in ("1", "2"):
+                os.environ["SNAKECG_THREADS"] = k
+                rounds = max(1, 20000 // n)
+                times.append(best_of(lambda: [model.forward(Q, T, out=res)
+                                              for _ in range(rounds)], repeat) / (rounds * n))
+            print(f"| {n} | {times[0] * 1e6:.3f} | {times[1] * 1e6:.3f} |"
+                  f" {times[0] / times[1]:.2f} |")
+    finally:
+        forward_mod.PARALLEL_MIN = saved
+        os.environ["SNAKECG_THREADS"] = "1"
+
+
 def main(argv=None) -> int:
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     p.add_argument("--n", type=int, default=100_000, help="batch size (pairs)")
     p.add_argument("--single", type=int, default=20_000, help="single calls per round")
     p.add_argument("--repeat", type=int, default=5, help="best of this many rounds")
+    p.add_argument("--threads", action="store_true", help="also 1 vs 2 threads per batch size")
     a = p.parse_args(argv)
     rng = np.random.default_rng(0)
     load0 = os.getloadavg()
@@ -152,6 +185,8 @@ def main(argv=None) -> int:
         print(f"| {sc} | {t1 * 1e6:.2f} | {tb * 1e6:.3f} | {marked} of {a.n} | {mjs} |")
     if mj:
         print(f"MuJoCo {mj[3]}, {mj[2]} contact(s) in the model's configuration")
+    if a.threads:
+        bench_threads(a.repeat, rng)
     load1 = os.getloadavg()
     print(f"load average after: {load1[0]:.2f} {load1[1]:.2f} {load1[2]:.2f}")
     return 0

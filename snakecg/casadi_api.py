@@ -161,7 +161,7 @@ def function_inputs(model, name: str, q=None) -> dict[str, np.ndarray]:
         lost = present.copy()
         lost[0] = 0.0
         values.update({
-            "contact_link": np.asarray(model._contact_link, dtype=float).copy(),
+            "contact_link": np.asarray(model.scene_inputs["contact_link"], dtype=float).copy(),
             "side": np.array([scene.side_sign]),
             "object_mass": np.array([scene.object_mass]),
             "object_inertia": np.array([scene.object_inertia]),

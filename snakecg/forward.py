@@ -337,7 +337,7 @@ def _reference_into(model, raw: np.ndarray, idx: np.ndarray, parts: dict, max_it
     m = idx.size
     sub = {k: (a if a.shape[0] == 1 else np.ascontiguousarray(a[idx])) for k, a in parts.items()}
     if "q_obj" not in sub:
-        q_obj, rho = model._place(sub["q"], sub["q"].shape[0])[:2]
+        q_obj, rho = model.place(sub["q"])[:2]
         sub["q_obj"], sub["rho"] = q_obj, rho
     base = {"q": sub["q"], "v": sub.get("v", np.zeros((1, model.n_coordinates))),
             "tau": sub["tau"], "q_obj": sub["q_obj"], "v_obj": sub.get("v_obj", np.zeros((1, 3))),
@@ -370,14 +370,15 @@ def _reference_solve(model, base: dict, n: int, max_iter):
             return arr
         return np.ascontiguousarray(arr[idx])
 
+    fixed = {k: model.scene_inputs[k] for k in ("K", "contact_link", "side", "object_mass",
+                                                "object_inertia", "wheel_offset")}
+
     def call(idx, free, lam_fixed, reg):
         m = len(idx)
         outs = kernels.call(
             model.backend, "constrained_dynamics", m, **{k: pick(base[k], idx) for k in order},
-            K=model.parameters, contact_link=model._contact_link, side=model._side,
-            object_mass=model._object_mass, object_inertia=model._object_inertia,
-            rho=pick(base["rho"], idx), wheel_offset=model._wheel_offset, free=free,
-            lam_fixed=lam_fixed, regularization=np.asarray(reg, dtype=float).reshape(m, 1))
+            **fixed, rho=pick(base["rho"], idx), free=free, lam_fixed=lam_fixed,
+            regularization=np.asarray(reg, dtype=float).reshape(m, 1))
         res = {}
         for name_, o in outs.items():  # views, no copies
             if o.shape[1:] == (1, 1):

@@ -10,6 +10,7 @@ SymPy or Jinja2.
 from __future__ import annotations
 
 from pathlib import Path
+from types import MappingProxyType
 
 import numpy as np
 
@@ -135,9 +136,13 @@ class RobotModel:
         return self.backend.kind
 
     # helpers ---------------------------------------------------------------------------
-    def _q(self, q, name="q"):
+    def configurations(self, q, name: str = "q") -> tuple[np.ndarray, bool]:
+        """``q`` checked (:class:`InputError` naming ``name`` otherwise) as a C-contiguous
+        float64 ``(N, n_s)`` batch, and whether it was one (``(n_s,)`` gives ``N = 1``)."""
         return as_batch(name, q, self.n_coordinates,
                         what=f" = (n_joints + 3,) for a {self.n_joints}-joint robot")
+
+    _q = configurations
 
     def _call(self, fname: str, n: int, inputs: list[np.ndarray]):
         return self.backend(fname, n, inputs)
@@ -282,6 +287,15 @@ class SceneModel(RobotModel):
         self._status_column = self.columns.status
         self.data = self.create_data().bind(self)
         """The default workspace (used by one caller at a time; others get a fresh one)."""
+        self.scene_inputs = MappingProxyType({
+            "K": self.parameters, "contact_link": onehot, "side": self._side,
+            "object_mass": self._object_mass, "object_inertia": self._object_inertia,
+            "wheel_offset": self._wheel_offset,
+            "contact_offset": np.array([float(scene.contact_offset)]),
+            "object_distance": np.array([float(scene.object_distance)])})
+        """The inputs of the generated functions that the scene fixes, by name (read-only):
+        ``K``, ``contact_link`` (one-hot), ``side``, ``object_mass``, ``object_inertia``,
+        ``wheel_offset``, ``contact_offset``, ``object_distance``."""
 
     # placement ----------------------------------------------------------------------------
     def place_object(self, q):
@@ -294,6 +308,12 @@ class SceneModel(RobotModel):
         if batched:
             return q_obj, rho, P
         return q_obj[0], rho[0], P[0]
+
+    def place(self, qa, n: int | None = None):
+        """:meth:`place_object` of a checked batch ``qa`` (``(N, n_s)``, from
+        :meth:`configurations`): ``(q_obj, rho, contact_point)`` of shapes ``(N, 3)``,
+        ``(N, 2)``, ``(N, 2)``."""
+        return self._place(qa, qa.shape[0] if n is None else n)
 
     def _place(self, qa, n):
         o = self._named("place_object", n, q=self._arg(qa, n), K=self.parameters,
@@ -406,6 +426,23 @@ class SceneModel(RobotModel):
                 state[i + 1] = codes[s]
         out = self._maps(qa, n, state)
         return out if batched else {k: v[0] for k, v in out.items()}
+
+    def state_maps(self, qa, state) -> dict[str, np.ndarray]:
+        """:meth:`maps` of a checked batch ``qa`` for the row states ``state`` (``(n_c,)``
+        solver codes, :mod:`snakecg.solver`), every sample batched."""
+        return self._maps(qa, qa.shape[0], np.asarray(state, dtype=np.int8))
+
+    def state_forms(self, qa, state) -> dict[str, np.ndarray]:
+        """The metrics' quadratic forms in ``tau`` at rest (generated ``metric_forms``) of a
+        checked batch ``qa`` for the row states ``state``; dependent held rows regularised."""
+        return self._metric_forms(qa, qa.shape[0], np.asarray(state, dtype=np.int8))
+
+    def at_rest(self, fname: str, qa, *free_args):
+        """Evaluate a generated at-rest function (``interaction_maps``, ``metric_forms``,
+        ``metric_extremes``) on a checked batch ``qa`` at the scene's placement: ``free_args``
+        are its inputs after ``wheel_offset`` up to ``regularization`` (0). Returns the inputs
+        and the outputs by name."""
+        return self._at_rest(fname, qa, qa.shape[0], *free_args)
 
     def _maps(self, qa, n, state):
         from .solver import _free_and_fixed

@@ -86,7 +86,7 @@ class RowSystem:
         outs = be("contact_row_local", n, [
             np.ascontiguousarray(poses[:, :, k]), np.ascontiguousarray(twist[:, k]),
             np.ascontiguousarray(bias[:, :, k]), np.array([model.robot.com[k]]), q_obj,
-            v_obj, rho, model._side])
+            v_obj, rho, model.scene_inputs["side"]])
         o = dict(zip(be.signatures["contact_row_local"].out_names, outs))
         A[:, 0, :ns] = np.einsum("ni,nij->nj", o["a_link"][:, 0, :], J[:, k])
         A[:, 0, ns:] = o["g_obj"][:, 0, :]
@@ -97,7 +97,7 @@ class RowSystem:
                 continue
             phi = poses[:, 2, i]
             a_w = np.stack([-np.sin(phi), np.cos(phi),
-                            np.full(n, model._wheel_offset[i])], axis=1)
+                            np.full(n, model.scene_inputs["wheel_offset"][i])], axis=1)
             om = twist[:, i, 2]
             a_w_dot = np.stack([-np.cos(phi) * om, -np.sin(phi) * om, np.zeros(n)], axis=1)
             A[:, i + 1, :ns] = np.einsum("ni,nij->nj", a_w, J[:, i])

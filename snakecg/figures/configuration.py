@@ -31,7 +31,7 @@ def configuration_geometry(model, q, tau=None) -> dict:
     """The numbers the figure draws, for one configuration (and torque): link ends, COMs,
     wheel points and directions, object pose and corners, contact point and normal; with
     ``tau`` the forward result (``forward``), the wheel-force and link-acceleration vectors."""
-    qa, batched = model._q(q)
+    qa, batched = model.configurations(q)
     if batched:
         raise InputError(f"q must be one configuration of shape ({model.n_coordinates},), "
                          f"got a batch of {qa.shape[0]}")
