@@ -151,9 +151,10 @@ def quadratic_candidates(u0, Z, r, A, g):
     if k == 1:
         y = np.stack([r, -r], axis=1)[:, :, None]
         return u0[:, None, :] + y @ np.swapaxes(Z, 1, 2)
-    Ar = np.swapaxes(Z, 1, 2) @ A @ Z
+    Zt = np.swapaxes(Z, 1, 2)
+    Ar = Zt @ A @ Z
     Ar = 0.5 * (Ar + np.swapaxes(Ar, 1, 2))
-    gr = np.einsum("pik,pi->pk", Z, np.einsum("pij,pj->pi", A, u0) + g)
+    gr = (Zt @ ((A @ u0[:, :, None])[:, :, 0] + g)[:, :, None])[:, :, 0]
     # easy case: the 2k x 2k linearization of the secular equation
     E = np.zeros((P, 2 * k, 2 * k))
     E[:, :k, :k] = Ar
@@ -161,36 +162,54 @@ def quadratic_candidates(u0, Z, r, A, g):
     E[:, k:, :k] = -gr[:, :, None] * gr[:, None, :] / (r_safe ** 2)[:, None, None]
     E[:, k:, k:] = Ar
     mus = np.sort(np.linalg.eigvals(E).real, axis=1)  # (P, 2k); a double root adjacent
-    ev, V = np.linalg.eigh(Ar)
-    gv = np.einsum("pki,pk->pi", V, gr)
+    ev, V = _eigh(Ar)
+    Vt = np.swapaxes(V, 1, 2)
+    gv = (gr[:, None, :] @ V)[:, 0]
     eye = np.eye(k)
     escale = np.abs(ev).max(axis=1, keepdims=True) + np.abs(gr).max(axis=1, keepdims=True) / \
         r_safe[:, None] + 1e-300
     tiny = 1e-13 * escale[:, :, None]
     near_tol = 1e-7 * escale[:, :, None]
-    # hard case (g_r orthogonal to an eigenvector v_i of A_r, mu = its eigenvalue):
-    # y = y_p + t v_i with y_p the least-norm part orthogonal to v_i, |y| = r  [(P, i, k)]
-    den = ev[:, None, :] - ev[:, :, None]
-    ok = ~eye.astype(bool) & (np.abs(den) > tiny)
-    coef = np.where(ok, -gv[:, None, :] / np.where(ok, den, 1.0), 0.0)
-    yp = np.einsum("pal,pil->pia", V, coef)
-    t = np.sqrt(np.maximum(r[:, None] ** 2 - np.sum(yp * yp, axis=2), 0.0))
-    tv = t[:, :, None] * np.swapaxes(V, 1, 2)
-    # y = -(A_r - mu I)^-1 g_r in A_r's eigenbasis, for every root mu_j [(P, j, k)]; where
-    # mu_j is (numerically) an eigenvalue of A_r, the hard-case point of that eigenvector
-    # instead (one sign per root of the pair the linearization then has; the last such
-    # eigenvector where several are near)
+    # y = -(A_r - mu I)^-1 g_r in A_r's eigenbasis, for every root mu_j [(P, j, k)]
     den = ev[:, None, :] - mus[:, :, None]
-    y = -np.einsum("pal,pjl->pja", V, gv[:, None, :] / np.where(np.abs(den) < tiny, tiny, den))
+    y = -((gv[:, None, :] / np.where(np.abs(den) < tiny, tiny, den)) @ Vt)
     near = np.abs(den) < near_tol
-    last = k - 1 - np.argmax(near[:, :, ::-1], axis=2)  # (P, 2k)
-    rows = np.arange(P)[:, None]
-    sgn = np.where(np.arange(2 * k) % 2 == 0, 1.0, -1.0)[None, :, None]
-    yh = yp[rows, last] + sgn * tv[rows, last]
-    y = np.where(near.any(axis=2)[:, :, None], yh, y)
+    hit = np.flatnonzero(near.any(axis=(1, 2)))
+    if hit.size:
+        # where mu_j is (numerically) an eigenvalue of A_r, the "hard case" (g_r orthogonal
+        # to an eigenvector v_i of A_r, mu = its eigenvalue): y = y_p +- t v_i with y_p the
+        # least-norm part orthogonal to v_i, |y| = r (one sign per root of the pair the
+        # linearization then has; the last such eigenvector where several are near)
+        evh, gvh, Vth, tinyh = ev[hit], gv[hit], Vt[hit], tiny[hit]
+        den = evh[:, None, :] - evh[:, :, None]  # (H, i, l)
+        ok = ~eye.astype(bool) & (np.abs(den) > tinyh)
+        coef = np.where(ok, -gvh[:, None, :] / np.where(ok, den, 1.0), 0.0)
+        yp = coef @ Vth  # (H, i, k)
+        t = np.sqrt(np.maximum(r[hit, None] ** 2 - np.sum(yp * yp, axis=2), 0.0))
+        tv = t[:, :, None] * Vth
+        nh = near[hit]
+        last = k - 1 - np.argmax(nh[:, :, ::-1], axis=2)  # (H, 2k)
+        rows = np.arange(len(hit))[:, None]
+        sgn = np.where(np.arange(2 * k) % 2 == 0, 1.0, -1.0)[None, :, None]
+        yh = yp[rows, last] + sgn * tv[rows, last]
+        y[hit] = np.where(nh.any(axis=2)[:, :, None], yh, y[hit])
     ny = np.linalg.norm(y, axis=2, keepdims=True)
     y = np.where(ny > 0, y / np.maximum(ny, 1e-300), eye[0]) * r[:, None, None]
     return u0[:, None, :] + y @ np.swapaxes(Z, 1, 2)
+
+
+def _eigh(S):
+    """``np.linalg.eigh`` of symmetric ``S`` (P, k, k); closed form for k = 2."""
+    if S.shape[1] != 2:
+        return np.linalg.eigh(S)
+    a, b, d = S[:, 0, 0], S[:, 0, 1], S[:, 1, 1]
+    half = 0.5 * (a - d)
+    rad = np.hypot(half, b)
+    phi = 0.5 * np.arctan2(b, half)  # the top eigenvector (cos phi, sin phi)
+    c, s = np.cos(phi), np.sin(phi)
+    ev = np.stack([0.5 * (a + d) - rad, 0.5 * (a + d) + rad], axis=1)
+    V = np.stack([np.stack([-s, c], axis=1), np.stack([c, s], axis=1)], axis=2)
+    return ev, V
 
 
 def quad(A, g, c, u):
