@@ -155,7 +155,7 @@ def _chunk(model, qa):
     return res, tau, closed, dict(pieces=len(p), rounds=rounds)
 
 
-def wheel_extremes(model, qa, chunk: int = 1024):
+def wheel_extremes(model, qa, chunk: int = 2048):
     """Exact extremes of every metric for bounded wheels (see the module docstring).
 
     Returns an :class:`~snakecg.analysis.Extremes` with ``certified`` (N,) and ``pieces``
