@@ -1,6 +1,7 @@
 """Benchmark: extremes over the input ellipsoid and `snakecg reproduce`.
 
     python benchmarks/bench_extremes.py [--repeat 7] [--reproduce] [--exact-wheels [N]]
+                                        [--no-sampled]
 
 Prints, per scenario, the time of `model.extremes` over the 784 configurations of case study 1
 (2 joints) and the 21,952 of case study 2 (3 joints), the best of `--repeat` runs after a warm
@@ -12,7 +13,9 @@ With `--exact-wheels`, the exact bounded-wheel extremes (`snakecg.piecewise`) of
 (3 joints, kappa = 100, mu = 0.1; the first N of the 21,952 configurations, default all) on one
 core, wall and CPU time, side by side in the same run with the anchor: a vectorized NumPy
 evaluation of the same grid (numpy's batched eigensolver extremes of the ideal-wheel scene),
-and the sampled method it replaced (`exact=False`). Target: all 21,952 in 10 s on an idle core.
+and the sampled method it replaced (`exact=False`; skipped with `--no-sampled`). One thread
+(`SNAKECG_THREADS=1`, `OMP_NUM_THREADS=1`, `OPENBLAS_NUM_THREADS=1` unless set). Target: all
+21,952 in 10 s on an idle core.
 """
 
 from __future__ import annotations
@@ -46,9 +49,11 @@ def main() -> None:
     ap.add_argument("--reproduce", action="store_true", help="also time snakecg reproduce")
     ap.add_argument("--exact-wheels", type=int, nargs="?", const=21952, default=None,
                     metavar="N", help="time the exact bounded-wheel extremes on N configurations")
+    ap.add_argument("--no-sampled", action="store_true",
+                    help="with --exact-wheels: do not time the sampled method (exact=False)")
     args = ap.parse_args()
     if args.exact_wheels is not None:
-        exact_wheels(args.exact_wheels)
+        exact_wheels(args.exact_wheels, sampled=not args.no_sampled)
         return
     print(f"machine: {platform.machine()}, {os.cpu_count()} cores, {platform.processor() or ''}"
           f" load average {os.getloadavg()[0]:.2f}; numpy {np.__version__}")
@@ -79,9 +84,11 @@ def main() -> None:
               f"{t['case_study_1'] + t['case_study_2']:.1f} s (models ready in {t['models']:.1f} s)")
 
 
-def exact_wheels(count: int) -> None:
+def exact_wheels(count: int, sampled: bool = True) -> None:
     """Exact bounded-wheel extremes of case study 2 beside the NumPy anchor (one run)."""
-    os.environ.setdefault("OMP_NUM_THREADS", "1")
+    # one thread: the package's forward solver (read per call) and, if not yet loaded, BLAS
+    for var in ("SNAKECG_THREADS", "OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS"):
+        os.environ.setdefault(var, "1")
     Q = joint_grid(3)[:count]
     scene = snakecg.Scene(snakecg.Robot(joints=3), scenario="wheels", kappa=100.0, mu=0.1)
     wheels = snakecg.load(scene)
@@ -97,14 +104,15 @@ def exact_wheels(count: int) -> None:
     load0 = os.getloadavg()[0]
     _, aw, ac = timed(lambda: _quadratic_extremes_numpy(ideal, Q))
     ex, ew, ec = timed(lambda: wheels.extremes(Q))
-    _, sw, sc = timed(lambda: wheels.extremes(Q, exact=False))
+    rows = [("anchor: NumPy eigensolver (ideal)", aw, ac), ("exact bounded wheels", ew, ec)]
+    if sampled:
+        _, sw, sc = timed(lambda: wheels.extremes(Q, exact=False))
+        rows.append(("sampled bounded wheels (exact=False)", sw, sc))
     print(f"load average {load0:.2f} -> {os.getloadavg()[0]:.2f}; {len(Q)} configurations, "
           f"{ex.pieces} pieces ({ex.pieces / len(Q):.1f} per configuration), "
           f"certified {np.mean(ex.certified):.4f}")
     print(f"{'':36} {'wall s':>8} {'CPU s':>8} {'CPU / anchor':>13}")
-    for name, w, c in (("anchor: NumPy eigensolver (ideal)", aw, ac),
-                       ("exact bounded wheels", ew, ec),
-                       ("sampled bounded wheels (exact=False)", sw, sc)):
+    for name, w, c in rows:
         print(f"{name:36} {w:8.2f} {c:8.2f} {c / ac:13.1f}")
 
 

@@ -540,7 +540,16 @@ class SceneModel(RobotModel):
         if n > EXTREMES_CHUNK_ROWS:
             # bounded working memory (tens of kB per row inside one call): chunks of rows
             check_batch_memory("extremes", n, 8 * (24 + 24 * self.n_joints), what="results")
+        # bounded wheels: chunks of 256 rows keep the progress bar alive; large batches solved
+        # exactly go in chunks of EXTREMES_CHUNK_ROWS (vectorized over a chunk: faster)
+        from .analysis import EXACT_WHEELS_MAX_JOINTS
+
         chunk = min(EXTREMES_CHUNK_ROWS, 256 if self.scene.scenario == "wheels" else 8192)
+        exact = kwargs.get("exact")
+        if exact is None:
+            exact = self.n_joints <= EXACT_WHEELS_MAX_JOINTS
+        if self.scene.scenario == "wheels" and exact is True and n > EXTREMES_CHUNK_ROWS:
+            chunk = EXTREMES_CHUNK_ROWS
         return in_chunks(lambda part: extremes(self, part, **kwargs), qa, chunk, "extremes",
                          always=n > EXTREMES_CHUNK_ROWS)
 

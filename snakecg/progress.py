@@ -97,8 +97,9 @@ def in_chunks(fn, qa, chunk: int, desc: str, *, stream=None, always: bool = Fals
     """``fn(qa)`` for a batch ``qa`` (N, n_s), evaluated ``chunk`` rows at a time with a
     progress bar when progress is shown and N > chunk (else in one call, unless ``always``:
     then in chunks, to bound the working memory, with a bar only where progress is shown);
-    the chunks' results (dataclasses whose fields are dictionaries of arrays, arrays or other values) are
-    joined along the batch axis."""
+    the chunks' results (dataclasses whose fields are dictionaries of arrays, arrays, counts or
+    other values) are joined along the batch axis (counts summed, other values the first
+    chunk's)."""
     import dataclasses
 
     import numpy as np
@@ -126,6 +127,8 @@ def in_chunks(fn, qa, chunk: int, desc: str, *, stream=None, always: bool = Fals
                               for k in v}
         elif isinstance(v, np.ndarray) and v.ndim >= 1 and v.shape[0] == len(qa[:chunk]):
             joined[f.name] = np.concatenate([getattr(p, f.name) for p in parts])
+        elif isinstance(v, int) and not isinstance(v, bool):  # a count: the chunks' total
+            joined[f.name] = sum(getattr(p, f.name) for p in parts)
         else:
             joined[f.name] = v
     return dataclasses.replace(first, **joined)
