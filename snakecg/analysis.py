@@ -166,11 +166,10 @@ def _forms(model, qa, *, contact: bool):
     (the generated ``metric_forms``; eqs. 28, 29 and 31)."""
     from .solver import HELD, LOST
 
-    n = qa.shape[0]
     state = np.where(model.present, HELD, 0).astype(np.int8)
     if not contact:
         state[0] = LOST
-    out = model._metric_forms(qa, n, state)
+    out = model.state_forms(qa, state)
     forms = {
         "norm_a_obj": out["omega_tau"],
         "norm_qdd": out["xi_tau"],
@@ -248,7 +247,7 @@ def _quadratic_extremes(model, qa):
     free_kept, _ = _free_and_fixed(state[None, :], model.bounds)
     state[0] = LOST
     free_lost, _ = _free_and_fixed(state[None, :], model.bounds)
-    _, o = model._at_rest("metric_extremes", qa, n, free_kept[0], free_lost[0])
+    _, o = model.at_rest("metric_extremes", qa, free_kept[0], free_lost[0])
     c = o["contact_from_tau"][:, 0, :]
 
     def signed(t, keep):  # t: (n, na), flip so that c . t >= 0 (keep) or <= 0 (lose)
@@ -411,7 +410,7 @@ def extremes(model, q, *, samples: int | None = None, refine: int = 10,
     other maxima and the minima are taken over the candidates): lower bounds of the maxima
     and upper bounds of the minima, not certified.
     """
-    qa, batched = model._q(q)
+    qa, batched = model.configurations(q)
     if exact is None:
         exact = model.n_joints <= EXACT_WHEELS_MAX_JOINTS
     if not isinstance(exact, (bool, np.bool_)):
@@ -443,12 +442,12 @@ def com_polar(model, q):
     ``(-pi, pi]``) between the contacting link's axis ``e_k`` (pointing from its rear end to
     its front end) and ``COM - P``, positive counter-clockwise. Shapes ``()`` or ``(N,)``.
     """
-    qa, batched = model._q(q)
+    qa, batched = model.configurations(q)
     n = qa.shape[0]
     poses = model.link_poses(qa)
     m = np.asarray(model.robot.mass)
     com = np.einsum("bik,i->bk", poses[:, :, :2], m) / m.sum()
-    _, _, P = model._place(qa, n)
+    _, _, P = model.place(qa, n)
     phi = poses[:, model.scene.contact_link - 1, 2]
     d = com - P
     e = np.stack([np.cos(phi), np.sin(phi)], axis=1)

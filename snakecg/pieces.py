@@ -15,6 +15,7 @@ import itertools
 
 import numpy as np
 
+from . import kernels
 from .solver import ABSENT, HELD, LOST, SLIDE_NEG, SLIDE_POS
 from .sphere_kkt import Faces, faces, feasible, linear_candidates
 
@@ -27,20 +28,25 @@ def primitives(model, qa):
     ``N`` and the whitening ``T = L^-T`` (tau = T u)."""
     n, nc = qa.shape[0], model.n_constraints
     zeros = np.zeros(nc)
-    _, raw = model._at_rest("interaction_maps", qa, n, zeros, zeros)
+    _, raw = model.at_rest("interaction_maps", qa, zeros, zeros)
     G = np.array(raw["delassus"])
     Bt = np.array(raw["w_from_tau"])
     Q0 = np.array(raw["qdd_from_tau"])
     A0 = np.array(raw["a_obj_from_tau"])
     N = np.array(raw["input_metric"])
-    Kq = np.zeros((n, model.n_coordinates, nc))
-    Ka = np.zeros((n, 3, nc))
-    for j in np.flatnonzero(model.present):
-        e = np.zeros(nc)
-        e[j] = 1.0
-        _, r = model._at_rest("interaction_maps", qa, n, zeros, e)
-        Kq[:, :, j] = r["qdd_offset"][:, :, 0]
-        Ka[:, :, j] = r["a_obj_offset"][:, :, 0]
+    # qdd and a_obj per unit row force (eq. 18), every row at once (generated contact_system)
+    q_obj, rho, _ = model.place(qa)
+    ns, zero = model.n_coordinates, np.zeros(3)
+    inputs = model.scene_inputs
+    cs = kernels.call(model.backend, "contact_system", n, q=qa, v=np.zeros(ns),
+                      tau=np.zeros(model.n_joints), q_obj=q_obj, v_obj=zero, f_obj=zero, rho=rho,
+                      **{k: inputs[k] for k in ("K", "contact_link", "side", "object_mass",
+                                                "object_inertia", "wheel_offset")})
+    absent = ~np.asarray(model.present, dtype=bool)
+    Kq = np.array(cs["qdd_from_lam"])
+    Ka = np.array(cs["a_obj_from_lam"])
+    Kq[:, :, absent] = 0.0
+    Ka[:, :, absent] = 0.0
     M = model.mass_matrix(qa)
     if M.ndim == 2:
         M = M[None]
