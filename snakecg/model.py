@@ -509,9 +509,15 @@ class SceneModel(RobotModel):
         from .optimize import optimize
 
         for k in ("tau_max", "radius", "direction", "a_min", "a_obj", "allow_slide"):
-            if np.iscomplexobj(kwargs.get(k)):
+            v = kwargs.get(k)
+            if v is not None and type(v) is not bool and np.iscomplexobj(v):
                 raise InputError(f"{k} must be real, got a complex value")
         for k in ("tau_max", "radius", "direction", "a_min", "a_obj"):
+            v = kwargs.get(k)
+            if v is None:
+                continue
+            if type(v) is float and (not abs(v) > MAX_MAGNITUDE or k == "direction"):
+                continue  # a plain number within range
             try:
                 big = np.max(np.abs(np.asarray(kwargs.get(k, 0.0), dtype=float)), initial=0.0)
             except OverflowError:

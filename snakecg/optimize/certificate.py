@@ -31,6 +31,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from .fast import dot, ellipsoid_violation, frob, matvec, norm, primal_violation
+from .problems import floats
 from .result import ELLIPSOID, FRICTION_MARGIN, Certificate
 
 #: A constraint whose slack is below this (relative to the row's size) is active.
@@ -192,21 +194,24 @@ def _eigen(model, query, cfg, tau) -> Certificate:
     """``tau`` maximises the Rayleigh quotient of eqs. (28)-(30) iff ``Omega - sr(tau) D`` is
     negative semidefinite (``D = Omega + Xi``; on the null space of ``D`` both vanish): its
     largest eigenvalue, relative to ``||D||``, is the gap; the residual of ``Omega tau =
-    sr (D tau)`` the stationarity. Plus primal feasibility of ``tau``."""
-    Om, D = cfg.Om, cfg.Om + cfg.Xi
-    Dt = D @ tau
-    den = tau @ Dt
-    sr = float(tau @ Om @ tau / den) if den > 0 else 0.0
-    nD = np.linalg.norm(D)
-    top = float(np.linalg.eigvalsh(0.5 * ((Om - sr * D) + (Om - sr * D).T))[-1])
-    scale = (np.linalg.norm(Om) + nD) * np.linalg.norm(tau)
-    resid = np.linalg.norm(Om @ tau - sr * Dt)
-    G, lo, hi, quad = _limits(model, query, cfg)
-    G.append(cfg.L[0])
-    lo.append(0.0)
-    hi.append(np.inf)
-    prim = kkt(tau, None, np.zeros_like(tau), np.array(G), np.array(lo), np.array(hi), quad,
-               convex=False, kind="").primal_feasibility
+    sr (D tau)`` the stationarity. Plus primal feasibility of ``tau``. (Small dense
+    arithmetic on floats, one eigenvalue solve.)"""
+    fl = floats(cfg)
+    Om = fl["Om"]
+    D = [[a + b for a, b in zip(r1, r2)] for r1, r2 in zip(Om, fl["Xi"])]
+    tau = tau.tolist()
+    Dt = matvec(D, tau)
+    Ot = matvec(Om, tau)
+    den = dot(tau, Dt)
+    sr = dot(tau, Ot) / den if den > 0 else 0.0
+    nD = frob(D)
+    S = np.array([[a - sr * b for a, b in zip(r1, r2)] for r1, r2 in zip(Om, D)])
+    top = float(np.linalg.eigvalsh(0.5 * (S + S.T))[-1])
+    scale = (frob(Om) + nD) * norm(tau)
+    resid = norm([a - sr * b for a, b in zip(Ot, Dt)])
+    prim = primal_violation(model, query, fl["L"], tau)
+    if query.radius is not None:
+        prim = max(prim, ellipsoid_violation(fl["N"], query.radius**2, tau))
     values = {"stationarity": float(resid / scale) if scale > 0 else 0.0,
               "primal_feasibility": prim, "complementarity": 0.0,
               "duality_gap": max(top, 0.0) / max(nD, 1e-300)}

@@ -9,6 +9,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..solver import ABSENT, HELD, PIVOT_TOL, SLIDE_NEG, SLIDE_POS
+from .fast import dot, matvec, one_sample_maps
 from .query import Query
 from .result import CONTACT, ELLIPSOID, FRICTION_MARGIN, NORMAL, joint_name, wheel_name
 from .solvers import Problem
@@ -24,10 +25,31 @@ class Config:
     k: float  # ||a_dir||^2 in the object's metric
     singular: bool
     widths: np.ndarray | None = None  # half-widths of the box rows (set per query)
+    fl: dict | None = None  # the maps as lists of floats (:func:`floats`)
+
+
+def floats(cfg: Config) -> dict:
+    """The maps as lists of floats (for :mod:`snakecg.optimize.fast`), made once."""
+    if cfg.fl is None:
+        cfg.fl = {"L": cfg.L.tolist(), "Xi": cfg.Xi.tolist(), "Om": cfg.Om.tolist(),
+                  "N": cfg.N.tolist()}
+    return cfg.fl
 
 
 def configs(model, qa: np.ndarray) -> list[Config]:
     n = qa.shape[0]
+    if n == 1:  # one sample: the maps through preallocated buffers
+        maps = one_sample_maps(model, qa[0])
+        if maps is not None:
+            L, A, Xi, Om, N = maps
+            fl = {"L": L.tolist(), "Xi": Xi.tolist(), "Om": Om.tolist(), "N": N.tolist()}
+            ell = fl["L"][0]
+            ll = dot(ell, ell)
+            Io = (model.scene.object_mass, model.scene.object_mass, model.scene.object_inertia)
+            a_dir = [x / ll for x in matvec(A.tolist(), ell)] if ll > 0 else [0.0] * 3
+            k = sum(i * a * a for i, a in zip(Io, a_dir))
+            return [Config(q=qa[0], L=L, Xi=Xi, Om=Om, N=N, a_dir=np.array(a_dir), k=k,
+                           singular=False, fl=fl)]
     state = np.where(model.present, HELD, ABSENT).astype(np.int8)
     mp = model._maps(qa, n, state)
     Io = np.array([model.scene.object_mass, model.scene.object_mass, model.scene.object_inertia])
