@@ -234,7 +234,7 @@ def _max_sr_sliding(model, query, cfg, stick: Answer) -> Answer:
             best = Answer(tau, "optimal", "", binding, "", 0, float(sr[k]), states=state,
                           claim=("state", prob, z))
     best.solver = (f"generalized eigenproblem; {len(states)} sliding wheel states: {solved} "
-                   f"QPs (qpoases), {n_ipopt} convex NLPs (ipopt)")
+                   f"QPs, {n_ipopt} convex NLPs (ipopt)")
     best.iterations = iters
     return best
 

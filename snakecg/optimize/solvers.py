@@ -5,6 +5,9 @@ History independence. CasADi's qpOASES interface hot-starts every call from the 
 call's working set, and that homotopy can stop at a point that is not the optimum of the new
 problem while reporting success. Here no answer depends on what ran before:
 
+* every QP and LP is first solved by :mod:`snakecg.optimize.active_set` (a dense dual active
+  set from the unconstrained minimiser, no state between calls); qpOASES, as below, only when
+  that gives up;
 * every hot solve is preceded by the solve of a reset QP with the same constraint pattern
   (``H = I``, its minimiser strictly inside every inequality), so each problem starts from
   the same solver state whatever was solved before; the pair runs under a lock, so
@@ -28,6 +31,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from . import active_set
 from .result import ELLIPSOID, HESSIAN_REG
 
 #: Curvature of the QP that stands for an LP (scaled variables, objective of size 1).
@@ -317,10 +321,17 @@ def solve_conic(prob: Problem, polish: bool = True) -> Solution:
     if lp:
         H = LP_REG * np.eye(n1)
     fresh = _COLD.get()
-    if fresh is None:
+    out = None
+    if fresh is None:  # the dense dual active set from scratch; qpOASES when it gives up
+        dense = active_set.solve(H, g, A, lba, uba, lbx, ubx)
+        if dense is not None:
+            out = np.concatenate(dense)
+            name = "dual active set (LP)" if lp else "dual active set"
+            status = "Successful return."
+    if fresh is None and out is None:
         out = solvers(n1, R).conic(H, g, A, lba, uba, lbx, ubx)
         status = "Successful return." if out is not None else "qpOASES: infeasible or failed"
-    else:
+    elif fresh is not None:
         name += ", cold re-solve"
         f = _conic("snakecg_optimize_cold", n1, R, lp=False)
         with contextlib.redirect_stdout(io.StringIO()):
