@@ -205,8 +205,10 @@ def _eigen(model, query, cfg, tau) -> Certificate:
     den = dot(tau, Dt)
     sr = dot(tau, Ot) / den if den > 0 else 0.0
     nD = frob(D)
-    S = np.array([[a - sr * b for a, b in zip(r1, r2)] for r1, r2 in zip(Om, D)])
-    top = float(np.linalg.eigvalsh(0.5 * (S + S.T))[-1])
+    n = len(tau)
+    S = [[a - sr * b for a, b in zip(r1, r2)] for r1, r2 in zip(Om, D)]
+    S = np.array([[0.5 * (S[i][j] + S[j][i]) for j in range(n)] for i in range(n)])
+    top = float(np.linalg.eigvalsh(S)[-1])
     scale = (frob(Om) + nD) * norm(tau)
     resid = norm([a - sr * b for a, b in zip(Ot, Dt)])
     prim = primal_violation(model, query, fl["L"], tau)

@@ -11,10 +11,12 @@ from __future__ import annotations
 
 import math
 import threading
+from operator import mul
 
 import numpy as np
 
 from ..solver import ABSENT, HELD, PIVOT_TOL, _free_and_fixed
+from .result import FRICTION_MARGIN, wheel_name
 
 __all__ = ["one_sample_maps", "chol_solve", "matvec", "dot", "quad"]
 
@@ -39,15 +41,16 @@ class _Workspace:
             "wheel_offset": model._wheel_offset, "free": free[0], "lam_fixed": lam_fixed[0],
             "regularization": [0.0]})
         self.lock = threading.Lock()
+        self.Io = (sc.object_mass, sc.object_mass, sc.object_inertia)
 
 
 _KEY = "_snakecg_optimize_workspace"
 
 
 def one_sample_maps(model, q: np.ndarray):
-    """``(L, A, Xi, Om, N)`` (fresh arrays) of the all-held maps at ``q``, or None when the
-    held rows are dependent or the maps are not finite (the caller then takes the batched,
-    regularised path)."""
+    """``(L, A, Xi, Om, N, Io)`` (fresh arrays; ``Io`` the object's inertia diagonal) of the
+    all-held maps at ``q``, or None when the held rows are dependent or the maps are not
+    finite (the caller then takes the batched, regularised path)."""
     ws = model.__dict__.get(_KEY)
     if ws is None:
         ws = model.__dict__[_KEY] = _Workspace(model)
@@ -60,7 +63,7 @@ def one_sample_maps(model, q: np.ndarray):
         if not m["pivot_ratio"][0] > PIVOT_TOL:
             return None
         out = (m["lam_from_tau"].copy(), m["a_obj_from_tau"].copy(), m["xi_tau"].copy(),
-               m["omega_tau"].copy(), m["input_metric"].copy())
+               m["omega_tau"].copy(), m["input_metric"].copy(), ws.Io)
     finally:
         if own:
             ws.lock.release()
@@ -72,57 +75,59 @@ def one_sample_maps(model, q: np.ndarray):
 # ------------------------------------------------------------------------------------------
 # small dense algebra on lists of floats
 def dot(x, y) -> float:
-    return sum(a * b for a, b in zip(x, y))
+    return sum(map(mul, x, y))
 
 
 def matvec(M, x) -> list:
-    return [sum(a * b for a, b in zip(row, x)) for row in M]
+    return [sum(map(mul, row, x)) for row in M]
 
 
 def quad(M, x) -> float:
-    return sum(xi * sum(a * b for a, b in zip(row, x)) for xi, row in zip(x, M))
+    return sum(map(mul, x, [sum(map(mul, row, x)) for row in M]))
 
 
 def chol_solve(M, b, rel: float = 1e-12):
     """``M^-1 b`` for a symmetric positive definite ``M`` (lists) by Cholesky, or None when a
     pivot falls below ``rel`` times the largest diagonal (not safely definite)."""
     n = len(b)
-    big = max(abs(M[i][i]) for i in range(n))
+    big = max([M[i][i] for i in range(n)])
     if not big > 0:
         return None
-    Lc = [[0.0] * n for _ in range(n)]
+    Lc = []
+    for i in range(n):
+        Mi = M[i]
+        Li = []
+        for j in range(i):
+            Lj = Lc[j]
+            Li.append((Mi[j] - sum(map(mul, Li, Lj))) / Lj[j])
+        d = Mi[i] - sum(map(mul, Li, Li))
+        if not d > rel * big:
+            return None
+        Li.append(math.sqrt(d))
+        Lc.append(Li)
+    y = []
     for i in range(n):
         Li = Lc[i]
-        for j in range(i + 1):
-            Lj = Lc[j]
-            s = M[i][j] - sum(Li[k] * Lj[k] for k in range(j))
-            if i == j:
-                if not s > rel * big:
-                    return None
-                Li[i] = math.sqrt(s)
-            else:
-                Li[j] = s / Lj[j]
-    y = [0.0] * n
-    for i in range(n):
-        y[i] = (b[i] - sum(Lc[i][k] * y[k] for k in range(i))) / Lc[i][i]
+        y.append((b[i] - sum(map(mul, Li, y))) / Li[i])
     x = [0.0] * n
     for i in range(n - 1, -1, -1):
-        x[i] = (y[i] - sum(Lc[k][i] * x[k] for k in range(i + 1, n))) / Lc[i][i]
+        s = y[i]
+        for k in range(i + 1, n):
+            s -= Lc[k][i] * x[k]
+        x[i] = s / Lc[i][i]
     return x
 
 
 def norm(x) -> float:
-    return math.sqrt(sum(a * a for a in x))
+    return math.sqrt(sum(map(mul, x, x)))
 
 
 def frob(M) -> float:
-    return math.sqrt(sum(a * a for row in M for a in row))
+    return math.sqrt(sum([sum(map(mul, row, row)) for row in M]))
 
 
 def wheels(model) -> list:
     """``(row, bound backed off by FRICTION_MARGIN, name)`` of every bounded wheel (cached)."""
-    from .result import FRICTION_MARGIN, wheel_name
-
     out = model.__dict__.get("_snakecg_optimize_wheels")
     if out is None:
         out = [(i, float(model.bounds[i]) * (1 - FRICTION_MARGIN), wheel_name(i))
@@ -134,29 +139,34 @@ def wheels(model) -> list:
 
 def primal_violation(model, query, L, tau) -> float:
     """Largest relative violation at ``tau`` of the all-held limits (wheels within their
-    backed-off bounds, the box, the ellipsoid, the contact kept), measured as
+    backed-off bounds, the box, the contact kept), measured as
     :func:`snakecg.optimize.certificate.kkt` does (relative to ``|G| |tau| + |bound|``)."""
     worst = 0.0
-    at = [abs(t) for t in tau]
+    at = None
     for i, ub, _ in wheels(model):
         row = L[i]
-        g = dot(row, tau)
-        rs = sum(abs(a) * b for a, b in zip(row, at)) + ub
-        v = max(abs(g) - ub, 0.0) / (rs if rs > 0 else 1.0)
-        worst = v if v > worst else worst
+        g = abs(sum(map(mul, row, tau)))
+        if g > ub:  # only a violated row needs its size
+            at = [abs(t) for t in tau]
+            rs = sum(map(mul, map(abs, row), at)) + ub
+            worst = max(worst, (g - ub) / (rs if rs > 0 else 1.0))
     if query.tau_max is not None:
-        for t, m in zip(at, query.tau_max.tolist()):
-            v = max(t - m, 0.0) / (t + m)
-            worst = v if v > worst else worst
+        for t, m in zip(tau, query.tau_max.tolist()):
+            t = abs(t)
+            if t > m:
+                worst = max(worst, (t - m) / (t + m))
     ell = L[0]
-    g = dot(ell, tau)
+    g = sum(map(mul, ell, tau))
     if g < 0:
-        rs = sum(abs(a) * b for a, b in zip(ell, at))
+        rs = sum(map(mul, map(abs, ell), map(abs, tau)))
         worst = max(worst, -g / (rs if rs > 0 else 1.0))
     return worst
 
 
 def ellipsoid_violation(N, r2, tau) -> float:
+    e = quad(N, tau)
+    if not e > r2:
+        return 0.0
     at = [abs(t) for t in tau]
-    qs = quad([[abs(a) for a in row] for row in N], at) + abs(r2)
-    return max(quad(N, tau) - r2, 0.0) / (qs if qs > 0 else 1.0)
+    qs = quad([list(map(abs, row)) for row in N], at) + abs(r2)
+    return (e - r2) / (qs if qs > 0 else 1.0)

@@ -70,23 +70,24 @@ def _top_rayleigh(Om, D):
 def max_sr(model, query, cfg) -> Answer:
     n = cfg.N.shape[0]
     ell = cfg.L[0]
-    if cfg.k <= 0 or not np.any(ell):
+    if cfg.k <= 0 or not any(floats(cfg)["L"][0]):
         return Answer(np.zeros(n), "infeasible",
                       "no torque accelerates the object at this configuration (sr = 0 for "
                       "every torque)", (CONTACT,), "generalized eigenproblem", 0, None)
     # closed form (the cold re-solve of a failed certificate takes the general eigensolve)
     top = _rank_one(cfg) if _COLD.get() is None else None
+    how = "generalized eigenproblem"
     if top is not None:
         lam, v = top
+        how += " (rank-one closed form)"
     else:
         lam, v = _top_rayleigh(cfg.Om, cfg.Om + cfg.Xi)
         if ell @ v < 0:
             v = -v  # keep the contact: lam_c = L_c tau >= 0
         v = v.tolist()
     s, binding = _max_scale(model, query, cfg, v)
-    best = Answer(np.array([s * x for x in v]), "optimal", "", binding,
-                  "generalized eigenproblem", 0,
-                  float(np.clip(lam, 0.0, 1.0)), claim=("eigen",))
+    best = Answer(np.array([s * x for x in v]), "optimal", "", binding, how, 0,
+                  min(max(float(lam), 0.0), 1.0), claim=("eigen",))
     if query.slide.any():
         best = _max_sr_sliding(model, query, cfg, best)
     return best

@@ -41,11 +41,10 @@ def configs(model, qa: np.ndarray) -> list[Config]:
     if n == 1:  # one sample: the maps through preallocated buffers
         maps = one_sample_maps(model, qa[0])
         if maps is not None:
-            L, A, Xi, Om, N = maps
+            L, A, Xi, Om, N, Io = maps
             fl = {"L": L.tolist(), "Xi": Xi.tolist(), "Om": Om.tolist(), "N": N.tolist()}
             ell = fl["L"][0]
             ll = dot(ell, ell)
-            Io = (model.scene.object_mass, model.scene.object_mass, model.scene.object_inertia)
             a_dir = [x / ll for x in matvec(A.tolist(), ell)] if ll > 0 else [0.0] * 3
             k = sum(i * a * a for i, a in zip(Io, a_dir))
             return [Config(q=qa[0], L=L, Xi=Xi, Om=Om, N=N, a_dir=np.array(a_dir), k=k,
