@@ -1,16 +1,19 @@
 """A dense dual active-set QP solver (Goldfarb & Idnani 1983) for the small strictly convex
-QPs of :mod:`snakecg.optimize` (a handful of variables and rows).
+QPs of :mod:`snakecg.optimize` (a handful of variables and rows), on plain floats.
 
 It starts every solve from the unconstrained minimiser with no constraint active, so its
 answer depends on the problem alone (no hot start, no state between calls), and it costs a
 few small dense solves instead of a solver call through CasADi. After each constraint is
-added the point and the multipliers are recomputed from the active set's KKT system, so the
-rounding of long steps (the LP's tiny curvature gives a far-away unconstrained minimiser) does
-not accumulate. Returns None when the problem is infeasible or the iteration does not settle:
-the caller then falls back to qpOASES.
+added the point and the multipliers are recomputed from the active set (exactly from its rows
+when they fix the point), so the rounding of long steps (the LP's tiny curvature gives a
+far-away unconstrained minimiser) does not accumulate. Returns None when the problem is
+infeasible or the iteration does not settle: the caller then falls back to qpOASES.
 """
 
 from __future__ import annotations
+
+import math
+from operator import mul
 
 import numpy as np
 
@@ -18,129 +21,235 @@ import numpy as np
 FEAS_TOL = 1e-12
 
 
+def _dot(x, y):
+    return sum(map(mul, x, y))
+
+
+def _lin_solve(M, b):
+    """``M^-1 b`` by Gaussian elimination with partial pivoting (lists), None if singular."""
+    n = len(b)
+    A = [list(row) + [bi] for row, bi in zip(M, b)]
+    for c in range(n):
+        p, big = c, abs(A[c][c])
+        for i in range(c + 1, n):
+            v = abs(A[i][c])
+            if v > big:
+                p, big = i, v
+        if big == 0.0:
+            return None
+        A[c], A[p] = A[p], A[c]
+        Ac = A[c]
+        piv = Ac[c]
+        for i in range(c + 1, n):
+            Ai = A[i]
+            f = Ai[c] / piv
+            if f:
+                for j in range(c, n + 1):
+                    Ai[j] -= f * Ac[j]
+    x = [0.0] * n
+    for i in range(n - 1, -1, -1):
+        Ai = A[i]
+        x[i] = (Ai[n] - sum(map(mul, Ai[i + 1:n], x[i + 1:]))) / Ai[i]
+    if not all(map(math.isfinite, x)):
+        return None
+    return x
+
+
 def solve(H, g, A, lba, uba, lbx, ubx):
     """``min 1/2 z^T H z + g^T z`` s.t. ``lba <= A z <= uba``, ``lbx <= z <= ubx`` (``H``
-    positive definite): ``(z, lam_a)`` with ``lam_a`` the rows' multipliers (non-zero on the
-    active rows only), or None."""
-    n1 = g.size
-    fixed = lbx == ubx
-    keep = ~fixed
-    zf = np.where(fixed, lbx, 0.0)
-    # eliminate the fixed variables
-    Hk = H[np.ix_(keep, keep)]
-    gk = g[keep] + H[np.ix_(keep, fixed)] @ zf[fixed]
-    Ak = A[:, keep]
-    off = A[:, fixed] @ zf[fixed]
-    n = int(keep.sum())
-    R = A.shape[0]
+    positive definite; numpy arrays): ``(z, lam_a)`` with ``lam_a`` the rows' multipliers
+    (non-zero on the active rows only), or None."""
+    H, g, A = H.tolist(), g.tolist(), A.tolist()
+    lba, uba, lbx, ubx = lba.tolist(), uba.tolist(), lbx.tolist(), ubx.tolist()
+    n1, R = len(g), len(A)
+    keep = [j for j in range(n1) if lbx[j] != ubx[j]]
+    fixed = [j for j in range(n1) if lbx[j] == ubx[j]]
+    zf = [lbx[j] if lbx[j] == ubx[j] else 0.0 for j in range(n1)]
+    n = len(keep)
+    Hk = [[H[i][j] for j in keep] for i in keep]
+    gk = [g[i] + sum(H[i][f] * zf[f] for f in fixed) for i in keep]
     # one-sided rows c . x >= b (equalities first), then the finite variable bounds
-    lo, hi = lba - off, uba - off
-    nz = np.any(Ak != 0.0, axis=1)
-    with np.errstate(invalid="ignore"):
-        stuck = (lo > FEAS_TOL * (1 + np.abs(lo))) | (hi < -FEAS_TOL * (1 + np.abs(hi)))
-    if np.any(~nz & stuck):
-        return None  # a row without variables that cannot hold
-    eqm = nz & (lo == hi)
-    lom = nz & ~eqm & np.isfinite(lo)
-    him = nz & ~eqm & np.isfinite(hi)
-    lbk, ubk = lbx[keep], ubx[keep]
-    eye = np.eye(n)
-    fl, fu = np.isfinite(lbk), np.isfinite(ubk)
-    C = np.vstack([Ak[eqm], Ak[lom], -Ak[him], eye[fl], -eye[fu]])
-    b = np.concatenate([lo[eqm], lo[lom], -hi[him], lbk[fl], -ubk[fu]])
-    idx = np.arange(R)
-    origin = np.concatenate([idx[eqm], idx[lom], idx[him],
-                             np.full(int(fl.sum() + fu.sum()), -1)]).tolist()
-    m = C.shape[0]
-    neq = int(eqm.sum())
-    eq = np.zeros(m, dtype=bool)
-    eq[:neq] = True
-    cn = np.sqrt((C * C).sum(axis=1))
-    try:
-        Hinv = np.linalg.inv(Hk)
-    except np.linalg.LinAlgError:
+    eqs, ins = [], []
+    for r in range(R):
+        row = A[r]
+        c = [row[j] for j in keep]
+        off = sum(row[f] * zf[f] for f in fixed)
+        lo, hi = lba[r] - off, uba[r] - off
+        if not any(c):
+            if lo > FEAS_TOL * (1 + abs(lo)) or hi < -FEAS_TOL * (1 + abs(hi)):
+                return None  # a row without variables that cannot hold
+            continue
+        if lo == hi:
+            eqs.append((c, lo, r))
+            continue
+        if lo > -math.inf:
+            ins.append((c, lo, r))
+        if hi < math.inf:
+            ins.append(([-a for a in c], -hi, r))
+    for k, j in enumerate(keep):
+        if lbx[j] > -math.inf:
+            e = [0.0] * n
+            e[k] = 1.0
+            ins.append((e, lbx[j], -1))
+        if ubx[j] < math.inf:
+            e = [0.0] * n
+            e[k] = -1.0
+            ins.append((e, -ubx[j], -1))
+    cons = eqs + ins
+    neq = len(eqs)
+    m = len(cons)
+    C = [c for c, _, _ in cons]
+    b = [v for _, v, _ in cons]
+    origin = [r for _, _, r in cons]
+    cn = [math.sqrt(_dot(c, c)) for c in C]
+    Hinv = _inverse(Hk)
+    if Hinv is None:
         return None
-    x = -Hinv @ gk
+    x0 = [-_dot(row, gk) for row in Hinv]
+    x = list(x0)
+    h: dict[int, list] = {}  # Hinv c_i, per constraint
+
+    def hv(i):
+        v = h.get(i)
+        if v is None:
+            v = h[i] = [_dot(row, C[i]) for row in Hinv]
+        return v
+
     act: list[int] = []
-    u = np.zeros(0)
-    pending = list(range(neq))
-    for _ in range(4 * (m + n) + 10):
-        if pending:
-            p = pending.pop(0)
-            if C[p] @ x - b[p] > 0:  # enter the equality from its violated side
-                C[p], b[p] = -C[p], -b[p]
+    u: list[float] = []
+    if not neq and all(Hk[i][j] == 0.0 for i in range(n) for j in range(n) if i != j):
+        x, act, u = _bounds_first(Hk, gk, C, b, x0, m)
+    for it in range(4 * (m + n) + 10):
+        if it < neq:
+            p = it
+            if _dot(C[p], x) - b[p] > 0:  # enter the equality from its violated side
+                C[p] = [-a for a in C[p]]
+                b[p] = -b[p]
+                h.pop(p, None)
         else:
-            s = (C @ x - b) / cn
-            if act:
-                s[act] = np.inf
-            s[eq] = np.inf
-            p = int(np.argmin(s)) if m else -1
-            if p < 0 or not s[p] < -FEAS_TOL * (1.0 + abs(b[p]) / cn[p]):
-                if np.any(C @ x - b < -1e-9 * (1.0 + np.abs(b))):
+            p, worst = -1, 0.0
+            for i in range(neq, m):
+                if i in act:
+                    continue
+                s = (_dot(C[i], x) - b[i]) / cn[i]
+                if s < worst and s < -FEAS_TOL * (1.0 + abs(b[i]) / cn[i]):
+                    p, worst = i, s
+            if p < 0:
+                if any(_dot(C[i], x) - b[i] < -1e-9 * (1.0 + abs(b[i])) for i in range(m)):
                     return None  # not settled on a feasible point (rounding)
                 return _result(x, act, u, origin, keep, zf, R)
         npv, bp = C[p], b[p]
+        hp = hv(p)
         up = 0.0
         while True:
             if act:
-                Nt = C[act]
-                HN = Hinv @ Nt.T
-                try:
-                    r = np.linalg.solve(Nt @ HN, HN.T @ npv)
-                except np.linalg.LinAlgError:
+                hs = [hv(a) for a in act]
+                M = [[_dot(C[a], hj) for hj in hs] for a in act]
+                r = _lin_solve(M, [_dot(hj, npv) for hj in hs])
+                if r is None:
                     return None
-                z = Hinv @ npv - HN @ r
+                z = [hp[i] - sum(rj * hj[i] for rj, hj in zip(r, hs)) for i in range(n)]
             else:
-                r = np.zeros(0)
-                z = Hinv @ npv
-            t1, l = np.inf, -1
+                r, z = [], hp
+            t1, l = math.inf, -1
             for j, a in enumerate(act):
-                if not eq[a] and r[j] > 0 and u[j] / r[j] < t1:
+                if a >= neq and r[j] > 0 and u[j] / r[j] < t1:
                     t1, l = u[j] / r[j], j
-            zn = z @ npv
-            sp = npv @ x - bp
+            zn = _dot(z, npv)
+            sp = _dot(npv, x) - bp
             # z of the size of rounding: p depends on the active rows (no primal step)
-            small = np.linalg.norm(z) <= 1e-9 * np.linalg.norm(Hinv @ npv)
-            t2 = -sp / zn if not small and zn > 0 else np.inf
+            small = math.sqrt(_dot(z, z)) <= 1e-9 * math.sqrt(_dot(hp, hp))
+            t2 = -sp / zn if not small and zn > 0 else math.inf
             if sp >= 0:
                 t2 = 0.0
             t = min(t1, t2)
-            if not np.isfinite(t):
+            if not math.isfinite(t):
                 return None  # infeasible
-            x = x + t * z
-            u = u - t * r
-            up += t
+            if t:
+                x = [a + t * c for a, c in zip(x, z)]
+                u = [a - t * c for a, c in zip(u, r)]
+                up += t
             if t == t2:
                 act.append(p)
-                u = np.append(u, up)
-                x, u = _recompute(Hk, gk, C, b, act, eq, x, u)
+                u.append(up)
+                x, u = _recompute(C, b, act, neq, x0, hv, x, u, n)
                 break
             del act[l]
-            u = np.delete(u, l)
+            del u[l]
     return None
 
 
-def _recompute(H, g, C, b, act, eq, x, u):
-    """The point and multipliers of the active set, from its KKT system."""
-    n, k = H.shape[0], len(act)
-    N = C[act]
-    K = np.zeros((n + k, n + k))
-    K[:n, :n] = H
-    K[:n, n:] = -N.T
-    K[n:, :n] = N
+def _bounds_first(H, g, C, b, x0, m):
+    """With a diagonal ``H`` (the LP's curvature): the minimiser over the rows that bound one
+    variable each, i.e. ``x0`` clipped to the tightest such bounds, with those rows active
+    (their multipliers are ``(H x + g)_j / c_j >= 0``). The dual active-set iteration may start
+    from any such pair; this one depends on the problem alone, and saves the long path from
+    the LP's far-away unconstrained minimiser."""
+    n = len(x0)
+    x = list(x0)
+    best: dict[int, tuple] = {}  # variable -> (row, bound value) of the violated tightest bound
+    for i in range(m):
+        nz = [j for j in range(n) if C[i][j] != 0.0]
+        if len(nz) != 1:
+            continue
+        j = nz[0]
+        c = C[i][j]
+        v = b[i] / c
+        lower = c > 0
+        if (lower and x0[j] < v) or (not lower and x0[j] > v):
+            old = best.get(j)
+            if old is None or (lower and v > old[1]) or (not lower and v < old[1]):
+                best[j] = (i, v)
+    act, u = [], []
+    for j, (i, v) in sorted(best.items()):
+        x[j] = v
+        lam = (H[j][j] * v + g[j]) / C[i][j]
+        if not lam >= 0:
+            return list(x0), [], []
+        act.append(i)
+        u.append(lam)
+    # the other bound rows must hold, else start from nothing
+    for j, (i, v) in best.items():
+        for k in range(m):
+            if k != i and C[k][j] != 0.0 and all(C[k][jj] == 0.0 for jj in range(n) if jj != j):
+                if C[k][j] * v - b[k] < -FEAS_TOL * (1 + abs(b[k])):
+                    return list(x0), [], []
+    return x, act, u
+
+
+def _inverse(M):
+    n = len(M)
+    if all(M[i][j] == 0.0 for i in range(n) for j in range(n) if i != j):
+        if not all(M[i][i] != 0.0 for i in range(n)):
+            return None
+        return [[1.0 / M[i][i] if i == j else 0.0 for j in range(n)] for i in range(n)]
     try:
-        sol = np.linalg.solve(K, np.concatenate([-g, b[act]]))
+        inv = np.linalg.inv(np.array(M))
     except np.linalg.LinAlgError:
+        return None
+    return inv.tolist() if np.all(np.isfinite(inv)) else None
+
+
+def _recompute(C, b, act, neq, x0, hv, x, u, n):
+    """The point and multipliers of the active set: ``N Hinv N^T u = b - N x0`` and
+    ``x = x0 + Hinv N^T u``; the point from the rows alone when they fix it."""
+    hs = [hv(a) for a in act]
+    M = [[_dot(C[a], hj) for hj in hs] for a in act]
+    un = _lin_solve(M, [b[a] - _dot(C[a], x0) for a in act])
+    if un is None:
         return x, u
-    if not np.all(np.isfinite(sol)):
+    if len(act) == n:
+        xn = _lin_solve([C[a] for a in act], [b[a] for a in act])
+    else:
+        xn = [x0[i] + sum(uj * hj[i] for uj, hj in zip(un, hs)) for i in range(n)]
+    if xn is None:
         return x, u
-    un = sol[n:]
-    un = np.where(eq[act], un, np.maximum(un, 0.0))
-    return sol[:n], un
+    un = [v if a < neq else max(v, 0.0) for v, a in zip(un, act)]
+    return xn, un
 
 
 def _result(x, act, u, origin, keep, zf, R):
-    z = zf.copy()
+    z = np.array(zf)
     z[keep] = x
     lam = np.zeros(R)
     for j, a in enumerate(act):

@@ -26,12 +26,15 @@ from __future__ import annotations
 import contextlib
 import contextvars
 import io
+import math
 import threading
+from operator import mul
 from dataclasses import dataclass
 
 import numpy as np
 
 from . import active_set
+from .active_set import _lin_solve
 from .result import ELLIPSOID, HESSIAN_REG
 
 #: Curvature of the QP that stands for an LP (scaled variables, objective of size 1).
@@ -244,14 +247,18 @@ def _scaled(prob: Problem):
 def _binding(prob, zs, A, lba, uba, lam_a, extra=()):
     """Rows active at ``zs`` (scaled) with a non-zero multiplier: their names (deduplicated)
     and their indices."""
-    lam_a = np.asarray(lam_a).ravel()
-    big = max(np.abs(lam_a).max(initial=0.0), max((abs(v) for _, v in extra), default=0.0))
+    lam_a = np.asarray(lam_a).ravel().tolist()
+    big = max(max(map(abs, lam_a), default=0.0), max((abs(v) for _, v in extra), default=0.0))
     if big <= 0:
         return (), []
-    Az = A @ zs
-    slack = np.minimum(np.abs(Az - lba), np.abs(Az - uba))
-    rows = [r for r in range(len(lam_a))
-            if abs(lam_a[r]) > 1e-7 * big and slack[r] <= 1e-6]
+    zl = np.asarray(zs).tolist()
+    Al, lo, hi = A.tolist(), np.asarray(lba).tolist(), np.asarray(uba).tolist()
+    rows = []
+    for r, lam in enumerate(lam_a):
+        if abs(lam) > 1e-7 * big:
+            az = sum(map(mul, Al[r], zl))
+            if min(abs(az - lo[r]), abs(az - hi[r])) <= 1e-6:
+                rows.append(r)
     out = [prob.names[r] for r in rows if prob.names[r]]
     out += [name for name, v in extra if abs(v) > 1e-7 * big]
     return tuple(dict.fromkeys(out)), rows
@@ -263,6 +270,57 @@ def _pack(H, g, A, lba, uba, lbx, ubx) -> np.ndarray:
 
 def _polish(H, g, A, lba, uba, lbx, ubx, zs, lam_a):
     """The exact optimum on the solver's active set: the equality-constrained QP with the rows
+    that carry a multiplier held at their active bound (and the fixed variables), solved
+    directly (one dense KKT system, on plain floats; :func:`_polish_dense` when it is
+    singular). Taken when it keeps every row and bound (to 1e-12) and its objective is no
+    worse; the solver's point otherwise. A homotopy (qpOASES) stops within about 1e-7 of the
+    optimum on ill-conditioned Hessians; this makes the answer a function of the active set
+    alone, exact to rounding."""
+    Hl, gl, Al = H.tolist(), g.tolist(), A.tolist()
+    lo, hi, xl, xu = lba.tolist(), uba.tolist(), lbx.tolist(), ubx.tolist()
+    z0, la = zs.tolist(), lam_a.tolist()
+    n1 = len(gl)
+    E, e = [], []
+    for r, row in enumerate(Al):
+        if la[r] != 0.0:
+            az = sum(map(mul, row, z0))
+            target = lo[r] if abs(az - lo[r]) <= abs(az - hi[r]) else hi[r]
+            if math.isfinite(target):
+                E.append(row)
+                e.append(target)
+    for j in range(n1):
+        at_lo = xl[j] == xu[j] or abs(z0[j] - xl[j]) <= 1e-12 * (1 + abs(xl[j]))
+        if math.isfinite(xl[j]) and at_lo:
+            E.append([1.0 if i == j else 0.0 for i in range(n1)])
+            e.append(xl[j])
+    K = [Hl[i] + [row[i] for row in E] for i in range(n1)]
+    K += [row + [0.0] * len(E) for row in E]
+    sol = _lin_solve(K, [-v for v in gl] + e)
+    if sol is None:
+        return _polish_dense(H, g, A, lba, uba, lbx, ubx, zs, lam_a)
+    z = sol[:n1]
+    for row, a, b in zip(Al, lo, hi):
+        az = sum(map(mul, row, z))
+        tol = 1e-12 * (1.0 + abs(az))
+        if az < a - tol or az > b + tol:
+            return zs
+    for v, a, b in zip(z, xl, xu):
+        if v < a - 1e-12 * (1 + abs(v)) or v > b + 1e-12 * (1 + abs(v)):
+            return zs
+
+    def obj(x):
+        return 0.5 * sum(map(mul, x, [sum(map(mul, row, x)) for row in Hl])) + sum(map(mul, gl, x))
+
+    f_old, f_new = obj(z0), obj(z)
+    if f_new > f_old + 1e-12 * max(abs(f_old), 1e-300):
+        return zs
+    return np.array(z)
+
+
+def _polish_dense(H, g, A, lba, uba, lbx, ubx, zs, lam_a):
+    """:func:`_polish` with dense numpy (least squares when the active rows are dependent).
+
+    The exact optimum on the solver's active set: the equality-constrained QP with the rows
     that carry a multiplier held at their active bound (and the fixed variables), solved
     directly (one dense KKT system). Taken when it keeps every row and bound (to 1e-12) and
     its objective is no worse; the solver's point otherwise. A homotopy (qpOASES) stops within
