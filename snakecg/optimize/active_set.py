@@ -28,6 +28,8 @@ def _dot(x, y):
 def _lin_solve(M, b):
     """``M^-1 b`` by Gaussian elimination with partial pivoting (lists), None if singular."""
     n = len(b)
+    if n == 1:
+        return [b[0] / M[0][0]] if M[0][0] != 0.0 and math.isfinite(b[0] / M[0][0]) else None
     A = [list(row) + [bi] for row, bi in zip(M, b)]
     for c in range(n):
         p, big = c, abs(A[c][c])
@@ -223,6 +225,14 @@ def _inverse(M):
         if not all(M[i][i] != 0.0 for i in range(n)):
             return None
         return [[1.0 / M[i][i] if i == j else 0.0 for j in range(n)] for i in range(n)]
+    if n == 3:  # the adjugate (no pivoting needed for a positive definite matrix)
+        (a, b, c), (d, e, f), (g, h, i) = M
+        A, B, C = e * i - f * h, f * g - d * i, d * h - e * g
+        det = a * A + b * B + c * C
+        if det > 0 and math.isfinite(det):
+            return [[A / det, (c * h - b * i) / det, (b * f - c * e) / det],
+                    [B / det, (a * i - c * g) / det, (c * d - a * f) / det],
+                    [C / det, (b * g - a * h) / det, (a * e - b * d) / det]]
     try:
         inv = np.linalg.inv(np.array(M))
     except np.linalg.LinAlgError:
