@@ -59,10 +59,10 @@ def _lin_solve(M, b):
 
 def solve(H, g, A, lba, uba, lbx, ubx):
     """``min 1/2 z^T H z + g^T z`` s.t. ``lba <= A z <= uba``, ``lbx <= z <= ubx`` (``H``
-    positive definite; numpy arrays): ``(z, lam_a)`` with ``lam_a`` the rows' multipliers
+    positive definite; numpy arrays or lists): ``(z, lam_a)`` with ``lam_a`` the rows' multipliers
     (non-zero on the active rows only), or None."""
-    H, g, A = H.tolist(), g.tolist(), A.tolist()
-    lba, uba, lbx, ubx = lba.tolist(), uba.tolist(), lbx.tolist(), ubx.tolist()
+    H, g, A, lba, uba, lbx, ubx = (x.tolist() if isinstance(x, np.ndarray) else x
+                                   for x in (H, g, A, lba, uba, lbx, ubx))
     n1, R = len(g), len(A)
     keep = [j for j in range(n1) if lbx[j] != ubx[j]]
     fixed = [j for j in range(n1) if lbx[j] == ubx[j]]
@@ -129,15 +129,14 @@ def solve(H, g, A, lba, uba, lbx, ubx):
                 b[p] = -b[p]
                 h.pop(p, None)
         else:
+            res = [_dot(c, x) - bi for c, bi in zip(C, b)]
             p, worst = -1, 0.0
             for i in range(neq, m):
-                if i in act:
-                    continue
-                s = (_dot(C[i], x) - b[i]) / cn[i]
-                if s < worst and s < -FEAS_TOL * (1.0 + abs(b[i]) / cn[i]):
+                s = res[i] / cn[i]
+                if s < worst and s < -FEAS_TOL * (1.0 + abs(b[i]) / cn[i]) and i not in act:
                     p, worst = i, s
             if p < 0:
-                if any(_dot(C[i], x) - b[i] < -1e-9 * (1.0 + abs(b[i])) for i in range(m)):
+                if any(r < -1e-9 * (1.0 + abs(bi)) for r, bi in zip(res, b)):
                     return None  # not settled on a feasible point (rounding)
                 return _result(x, act, u, origin, keep, zf, R)
         npv, bp = C[p], b[p]

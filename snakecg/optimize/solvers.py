@@ -244,6 +244,45 @@ def _scaled(prob: Problem):
     return H, g, A, lba, uba, prob.lbx / s, prob.ubx / s
 
 
+def _scaled_lists(prob: Problem):
+    """:func:`_scaled` on plain floats (the same operations in the same order, so the same
+    numbers), with the LP's curvature ``LP_REG`` in place of ``H``: lists for
+    :func:`snakecg.optimize.active_set.solve`."""
+    s = prob.scale.tolist()
+    n1 = len(s)
+    A, lo, hi = [], [], []
+    for row, a, b in zip(prob.A.tolist(), prob.lba.tolist(), prob.uba.tolist()):
+        row = [x * y for x, y in zip(row, s)]
+        rn = max(map(abs, row))
+        if rn > 0:
+            A.append([x / rn for x in row])
+            lo.append(a / rn)
+            hi.append(b / rn)
+        else:
+            A.append(row)
+            lo.append(-math.inf)
+            hi.append(math.inf)
+    g = [x * y for x, y in zip(prob.g.tolist(), s)]
+    if prob.H is None:
+        H = None
+        fs = max(map(abs, g))
+    else:
+        H = [[h * (si * sj) for h, sj in zip(row, s)] for row, si in zip(prob.H.tolist(), s)]
+        fs = max(max(map(abs, g)), max(abs(h) for row in H for h in row))
+    fs = fs if fs > 0 else 1.0
+    g = [x / fs for x in g]
+    if H is None:
+        H = [[LP_REG if i == j else 0.0 for j in range(n1)] for i in range(n1)]
+    else:
+        H = [[h / fs for h in row] for row in H]
+        reg = HESSIAN_REG * max(max(abs(H[i][i]) for i in range(n1)), 1e-300)
+        for i in range(n1):
+            H[i][i] += reg
+    lbx = [a / b for a, b in zip(prob.lbx.tolist(), s)]
+    ubx = [a / b for a, b in zip(prob.ubx.tolist(), s)]
+    return H, g, A, lo, hi, lbx, ubx
+
+
 def _binding(prob, zs, A, lba, uba, lam_a, extra=()):
     """Rows active at ``zs`` (scaled) with a non-zero multiplier: their names (deduplicated)
     and their indices."""
@@ -252,7 +291,7 @@ def _binding(prob, zs, A, lba, uba, lam_a, extra=()):
     if big <= 0:
         return (), []
     zl = np.asarray(zs).tolist()
-    Al, lo, hi = A.tolist(), np.asarray(lba).tolist(), np.asarray(uba).tolist()
+    Al, lo, hi = _plain(A), _plain(lba), _plain(uba)
     rows = []
     for r, lam in enumerate(lam_a):
         if abs(lam) > 1e-7 * big:
@@ -268,6 +307,10 @@ def _pack(H, g, A, lba, uba, lbx, ubx) -> np.ndarray:
     return np.concatenate([H.ravel("F"), g, A.ravel("F"), lba, uba, lbx, ubx])
 
 
+def _plain(x):
+    return x.tolist() if isinstance(x, np.ndarray) else x
+
+
 def _polish(H, g, A, lba, uba, lbx, ubx, zs, lam_a):
     """The exact optimum on the solver's active set: the equality-constrained QP with the rows
     that carry a multiplier held at their active bound (and the fixed variables), solved
@@ -276,8 +319,8 @@ def _polish(H, g, A, lba, uba, lbx, ubx, zs, lam_a):
     worse; the solver's point otherwise. A homotopy (qpOASES) stops within about 1e-7 of the
     optimum on ill-conditioned Hessians; this makes the answer a function of the active set
     alone, exact to rounding."""
-    Hl, gl, Al = H.tolist(), g.tolist(), A.tolist()
-    lo, hi, xl, xu = lba.tolist(), uba.tolist(), lbx.tolist(), ubx.tolist()
+    Hl, gl, Al = _plain(H), _plain(g), _plain(A)
+    lo, hi, xl, xu = _plain(lba), _plain(uba), _plain(lbx), _plain(ubx)
     z0, la = zs.tolist(), lam_a.tolist()
     n1 = len(gl)
     E, e = [], []
@@ -295,9 +338,19 @@ def _polish(H, g, A, lba, uba, lbx, ubx, zs, lam_a):
             e.append(xl[j])
     K = [Hl[i] + [row[i] for row in E] for i in range(n1)]
     K += [row + [0.0] * len(E) for row in E]
-    sol = _lin_solve(K, [-v for v in gl] + e)
+    rhs = [-v for v in gl] + e
+    if len(rhs) <= 4:
+        sol = _lin_solve(K, rhs)
+    else:  # one LAPACK call beats Python elimination from here on
+        try:
+            sol = np.linalg.solve(np.array(K), np.array(rhs)).tolist()
+        except np.linalg.LinAlgError:
+            sol = None
+        if sol is not None and not all(map(math.isfinite, sol)):
+            sol = None
     if sol is None:
-        return _polish_dense(H, g, A, lba, uba, lbx, ubx, zs, lam_a)
+        return _polish_dense(*(np.asarray(x, dtype=float) for x in (H, g, A, lba, uba, lbx, ubx)),
+                             zs, lam_a)
     z = sol[:n1]
     for row, a, b in zip(Al, lo, hi):
         az = sum(map(mul, row, z))
@@ -373,23 +426,23 @@ def solve_conic(prob: Problem, polish: bool = True) -> Solution:
     face's point nearest the origin. qpOASES's own LP mode cannot start from the reset state
     (its homotopy needs a curvature)."""
     n1, R = prob.A.shape[1], prob.A.shape[0]
+    lp = prob.H is None
+    fresh = _COLD.get()
+    if fresh is None:  # the dense dual active set from scratch; qpOASES when it gives up
+        S = _scaled_lists(prob)
+        dense = active_set.solve(*S)
+        if dense is not None:
+            return _finish(prob, S, dense[0], dense[1], lp, polish,
+                           "dual active set (LP)" if lp else "dual active set",
+                           "Successful return.")
     H, g, A, lba, uba, lbx, ubx = _scaled(prob)
-    lp = H is None
     name = "qpoases (LP)" if lp else "qpoases"
     if lp:
         H = LP_REG * np.eye(n1)
-    fresh = _COLD.get()
-    out = None
-    if fresh is None:  # the dense dual active set from scratch; qpOASES when it gives up
-        dense = active_set.solve(H, g, A, lba, uba, lbx, ubx)
-        if dense is not None:
-            out = np.concatenate(dense)
-            name = "dual active set (LP)" if lp else "dual active set"
-            status = "Successful return."
-    if fresh is None and out is None:
+    if fresh is None:
         out = solvers(n1, R).conic(H, g, A, lba, uba, lbx, ubx)
         status = "Successful return." if out is not None else "qpOASES: infeasible or failed"
-    elif fresh is not None:
+    else:
         name += ", cold re-solve"
         f = _conic("snakecg_optimize_cold", n1, R, lp=False)
         with contextlib.redirect_stdout(io.StringIO()):
@@ -400,16 +453,24 @@ def solve_conic(prob: Problem, polish: bool = True) -> Solution:
                if st.get("success", False) else None)
     if out is None or not np.all(np.isfinite(out)):
         return Solution(False, np.zeros(n1), status, 1, name)
-    zs, lam_a = out[:n1], out[n1:]
+    return _finish(prob, (H, g, A, lba, uba, lbx, ubx), out[:n1], out[n1:], lp, polish, name,
+                   status)
+
+
+def _finish(prob, scaled, zs, lam_a, lp, polish, name, status) -> Solution:
+    """Polish the solver's point on its active set, name the binding rows, and tell whether
+    an LP vertex is the only optimum."""
+    n1 = zs.size
     if polish:
-        zs = _polish(H, g, A, lba, uba, lbx, ubx, zs, lam_a)
+        zs = _polish(*scaled, zs, lam_a)
+    A, lba, uba = scaled[2], scaled[3], scaled[4]
     binding, rows = _binding(prob, zs, A, lba, uba, lam_a)
     unique = False
     # an LP vertex with n independent rows active, all with non-zero multipliers (t fixed):
     # no other point reaches the optimum
     n = n1 - 1
     if (lp and prob.lbx[n] == prob.ubx[n] and len(rows) >= n
-            and np.linalg.matrix_rank(A[rows, :n], 1e-9) == n):
+            and np.linalg.matrix_rank(np.asarray(A)[rows, :n], 1e-9) == n):
         unique = True
     return Solution(True, zs * prob.scale, status, 1, name, binding, unique)
 
