@@ -21,10 +21,6 @@ import numpy as np
 FEAS_TOL = 1e-12
 
 
-def _dot(x, y):
-    return sum(map(mul, x, y))
-
-
 def _lin_solve(M, b):
     """``M^-1 b`` by Gaussian elimination with partial pivoting (lists), None if singular."""
     n = len(b)
@@ -103,18 +99,18 @@ def solve(H, g, A, lba, uba, lbx, ubx):
     C = [c for c, _, _ in cons]
     b = [v for _, v, _ in cons]
     origin = [r for _, _, r in cons]
-    cn = [math.sqrt(_dot(c, c)) for c in C]
+    cn = [math.sqrt(sum(map(mul, c, c))) for c in C]
     Hinv = _inverse(Hk)
     if Hinv is None:
         return None
-    x0 = [-_dot(row, gk) for row in Hinv]
+    x0 = [-sum(map(mul, row, gk)) for row in Hinv]
     x = list(x0)
     h: dict[int, list] = {}  # Hinv c_i, per constraint
 
     def hv(i):
         v = h.get(i)
         if v is None:
-            v = h[i] = [_dot(row, C[i]) for row in Hinv]
+            v = h[i] = [sum(map(mul, row, C[i])) for row in Hinv]
         return v
 
     act: list[int] = []
@@ -124,12 +120,12 @@ def solve(H, g, A, lba, uba, lbx, ubx):
     for it in range(4 * (m + n) + 10):
         if it < neq:
             p = it
-            if _dot(C[p], x) - b[p] > 0:  # enter the equality from its violated side
+            if sum(map(mul, C[p], x)) - b[p] > 0:  # enter the equality from its violated side
                 C[p] = [-a for a in C[p]]
                 b[p] = -b[p]
                 h.pop(p, None)
         else:
-            res = [_dot(c, x) - bi for c, bi in zip(C, b)]
+            res = [sum(map(mul, c, x)) - bi for c, bi in zip(C, b)]
             p, worst = -1, 0.0
             for i in range(neq, m):
                 s = res[i] / cn[i]
@@ -145,8 +141,8 @@ def solve(H, g, A, lba, uba, lbx, ubx):
         while True:
             if act:
                 hs = [hv(a) for a in act]
-                M = [[_dot(C[a], hj) for hj in hs] for a in act]
-                r = _lin_solve(M, [_dot(hj, npv) for hj in hs])
+                M = [[sum(map(mul, C[a], hj)) for hj in hs] for a in act]
+                r = _lin_solve(M, [sum(map(mul, hj, npv)) for hj in hs])
                 if r is None:
                     return None
                 z = [hp[i] - sum(rj * hj[i] for rj, hj in zip(r, hs)) for i in range(n)]
@@ -156,10 +152,10 @@ def solve(H, g, A, lba, uba, lbx, ubx):
             for j, a in enumerate(act):
                 if a >= neq and r[j] > 0 and u[j] / r[j] < t1:
                     t1, l = u[j] / r[j], j
-            zn = _dot(z, npv)
-            sp = _dot(npv, x) - bp
+            zn = sum(map(mul, z, npv))
+            sp = sum(map(mul, npv, x)) - bp
             # z of the size of rounding: p depends on the active rows (no primal step)
-            small = math.sqrt(_dot(z, z)) <= 1e-9 * math.sqrt(_dot(hp, hp))
+            small = math.sqrt(sum(map(mul, z, z))) <= 1e-9 * math.sqrt(sum(map(mul, hp, hp)))
             t2 = -sp / zn if not small and zn > 0 else math.inf
             if sp >= 0:
                 t2 = 0.0
@@ -243,8 +239,8 @@ def _recompute(C, b, act, neq, x0, hv, x, u, n):
     """The point and multipliers of the active set: ``N Hinv N^T u = b - N x0`` and
     ``x = x0 + Hinv N^T u``; the point from the rows alone when they fix it."""
     hs = [hv(a) for a in act]
-    M = [[_dot(C[a], hj) for hj in hs] for a in act]
-    un = _lin_solve(M, [b[a] - _dot(C[a], x0) for a in act])
+    M = [[sum(map(mul, C[a], hj)) for hj in hs] for a in act]
+    un = _lin_solve(M, [b[a] - sum(map(mul, C[a], x0)) for a in act])
     if un is None:
         return x, u
     if len(act) == n:

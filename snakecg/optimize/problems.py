@@ -4,6 +4,7 @@ wheels, the input region), and the task as a bound on the contact force."""
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -169,11 +170,12 @@ def push_target(query, cfg):
     or ``|a_obj|`` for a full acceleration); ``structural`` is ``(reason, binding)`` when no
     torque whatsoever can do the task."""
     a_dir = cfg.a_dir
-    na = np.linalg.norm(a_dir)
+    ax, ay, aa = a_dir.tolist()
+    na = math.sqrt(ax * ax + ay * ay + aa * aa)
     if na == 0 or cfg.k <= 0:
         return None, False, 0.0, ("no torque accelerates the object at this configuration",
                                   (CONTACT,))
-    nrm = a_dir[:2] / max(np.linalg.norm(a_dir[:2]), 1e-300)
+    nrm = [v / max(math.hypot(ax, ay), 1e-300) for v in (ax, ay)]
     if query.a_obj is not None:
         a = query.a_obj
         s0 = float(a_dir @ a) / (na * na)
@@ -190,7 +192,7 @@ def push_target(query, cfg):
                 f"would need a pulling contact force; {CONTACT}", (CONTACT,))
         return s0, True, na, None
     d = query.direction
-    gamma = float(d @ a_dir)
+    gamma = dot(d.tolist(), (ax, ay, aa))
     if gamma <= 1e-9 * na:
         return None, False, gamma, (
             f"no torque accelerates the object along d = ({d[0]:.4g}, {d[1]:.4g}, {d[2]:.4g}): "

@@ -105,6 +105,13 @@ def validate(model, objective, tau_max, radius, direction, a_min, a_obj, allow_s
             raise InputError("least_slip_push needs a task: direction=(dx, dy) and a_min "
                              "(m/s^2), or a_obj=(a_x, a_y, alpha)")
     # wheels allowed to slide
+    if allow_slide is False or allow_slide is None:  # the common case: nothing slides
+        none = model.__dict__.get("_snakecg_optimize_no_slide")
+        if none is None:
+            none = np.zeros(model.n_constraints, dtype=bool)
+            none.setflags(write=False)
+            model.__dict__["_snakecg_optimize_no_slide"] = none
+        return Query(objective, tau_max, radius, d, a_min, ao, none)
     bounded = model.present & np.isfinite(model.bounds)
     bounded[0] = False
     slide = np.zeros(model.n_constraints, dtype=bool)
