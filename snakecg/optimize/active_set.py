@@ -19,6 +19,9 @@ import numpy as np
 
 #: Relative violation below which a row counts as satisfied.
 FEAS_TOL = 1e-12
+#: Most free variables this Python solver takes; larger problems go to qpOASES, whose
+#: compiled iterations win there.
+DENSE_MAX = 4
 
 
 def _lin_solve(M, b):

@@ -25,11 +25,13 @@ from .solvers import LP_REG, Solution
 def solve_box_push(model, query, cfg, *, lam_lo=None, equal=False, lp=False):
     """:class:`~snakecg.optimize.solvers.Solution` (``z`` = ``(tau, 1)``) of the least-slip
     QP (``lp`` False) or the strongest-push LP with box limits only, or None."""
+    s = query.tau_max.tolist()
+    n = len(s)
+    if n > active_set.DENSE_MAX:
+        return None
     fl = floats(cfg)
     L = fl["L"]
     ell = L[0]
-    s = query.tau_max.tolist()
-    n = len(s)
     rows, lo, hi, names = [], [], [], []
 
     def add(c, a, b, name):

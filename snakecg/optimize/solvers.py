@@ -5,9 +5,10 @@ History independence. CasADi's qpOASES interface hot-starts every call from the 
 call's working set, and that homotopy can stop at a point that is not the optimum of the new
 problem while reporting success. Here no answer depends on what ran before:
 
-* every QP and LP is first solved by :mod:`snakecg.optimize.active_set` (a dense dual active
-  set from the unconstrained minimiser, no state between calls); qpOASES, as below, only when
-  that gives up;
+* every small QP and LP (``active_set.DENSE_MAX`` free variables at most) is first solved by
+  :mod:`snakecg.optimize.active_set` (a dense dual active set from the unconstrained
+  minimiser, no state between calls); qpOASES, as below, when that gives up and for the
+  larger problems;
 * every hot solve is preceded by the solve of a reset QP with the same constraint pattern
   (``H = I``, its minimiser strictly inside every inequality), so each problem starts from
   the same solver state whatever was solved before; the pair runs under a lock, so
@@ -428,7 +429,8 @@ def solve_conic(prob: Problem, polish: bool = True) -> Solution:
     n1, R = prob.A.shape[1], prob.A.shape[0]
     lp = prob.H is None
     fresh = _COLD.get()
-    if fresh is None:  # the dense dual active set from scratch; qpOASES when it gives up
+    small = int(np.count_nonzero(prob.lbx != prob.ubx)) <= active_set.DENSE_MAX
+    if fresh is None and small:  # the dense dual active set from scratch; else qpOASES
         S = _scaled_lists(prob)
         dense = active_set.solve(*S)
         if dense is not None:
