@@ -9,6 +9,7 @@ SymPy or Jinja2.
 
 from __future__ import annotations
 
+import math
 from pathlib import Path
 from types import MappingProxyType
 
@@ -577,9 +578,19 @@ class SceneModel(RobotModel):
         from .optimize import optimize
 
         for k in ("tau_max", "radius", "direction", "a_min", "a_obj", "allow_slide"):
-            if np.iscomplexobj(kwargs.get(k)):
+            v = kwargs.get(k)
+            if (v is not None and type(v) is not bool and type(v) is not float
+                    and not (type(v) is np.ndarray and v.dtype == np.float64)
+                    and np.iscomplexobj(v)):
                 raise InputError(f"{k} must be real, got a complex value")
         for k in ("tau_max", "radius", "direction", "a_min", "a_obj"):
+            v = kwargs.get(k)
+            if v is None:
+                continue
+            if type(v) is float and (not abs(v) > MAX_MAGNITUDE or k == "direction"):
+                continue  # a plain number within range
+            if k == "direction" and type(v) is np.ndarray and v.dtype == np.float64:
+                continue  # scaled below
             try:
                 big = np.max(np.abs(np.asarray(kwargs.get(k, 0.0), dtype=float)), initial=0.0)
             except OverflowError:
@@ -593,6 +604,11 @@ class SceneModel(RobotModel):
                 raise InputError(f"{k} must be at most {MAX_MAGNITUDE:g} in magnitude (the "
                                  f"limit: it enters squares and products), got {big:g}")
         d = kwargs.get("direction")
+        if type(d) is np.ndarray and d.dtype == np.float64 and d.ndim == 1:  # on floats
+            big = max(map(abs, d.tolist()), default=0.0)
+            if math.isfinite(big) and big > 0:
+                kwargs["direction"] = d / big
+            d = None
         if d is not None:
             try:
                 arr = np.asarray(d, dtype=float)

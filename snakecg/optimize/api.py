@@ -3,14 +3,17 @@ certify the answer on the original problem, check it with the exact forward solv
 
 from __future__ import annotations
 
+import math
 import time
+from operator import mul
 
 import numpy as np
 
 from ..solver import ABSENT, HELD, SLIDE_NEG, SLIDE_POS
 from .certificate import certify
 from .max_sr import max_sr
-from .problems import Answer, configs
+from .fast import quad
+from .problems import Answer, configs, floats
 from .push import least_slip_push, strongest_push
 from .query import validate
 from .result import CHECK_TOL, Certificate, OptimizeResult
@@ -55,7 +58,7 @@ def optimize(model, q, objective: str = "max_sr", *, tau_max=None, radius=None,
     """
     t0 = time.perf_counter()
     query = validate(model, objective, tau_max, radius, direction, a_min, a_obj, allow_slide)
-    qa, batched = model._q(q)
+    qa, batched = _configurations(model, q)
     cfgs = configs(model, qa)
     run = {"max_sr": max_sr, "least_slip_push": least_slip_push,
            "strongest_push": strongest_push}[query.objective]
@@ -71,16 +74,31 @@ def optimize(model, q, objective: str = "max_sr", *, tau_max=None, radius=None,
         a, cert = _certified(model, query, cfg, run)
         answers.append(a)
         certs.append(cert)
+    if not batched:  # one configuration: the one-sample forward solve, plain fields
+        a, cfg = answers[0], cfgs[0]
+        analysis = model.forward(cfg.q, np.ascontiguousarray(a.tau, dtype=float))
+        value = _objective_value(model, query, cfg, analysis.raw)
+        if a.status == "optimal":
+            problem = _check(model, query, cfg, a, analysis.raw, value)
+            if problem:
+                a.status, a.reason = "failed", f"forward check: {problem}"
+        return OptimizeResult(
+            objective=query.objective, tau=analysis.tau.copy(), status=a.status,
+            reason=a.reason, objective_value=value, binding=a.binding, analysis=analysis,
+            solver=a.solver, iterations=int(a.iterations), time=time.perf_counter() - t0,
+            wheel_states_assumed=_state_names(a.states), certificate=certs[0])
     taus = np.array([a.tau for a in answers])
     analysis = model.forward(qa, taus)
-    values = _objective_values(query, cfgs, analysis)
+    raw = analysis.raw
+    values = np.array([_objective_value(model, query, cfg, raw[b])
+                       for b, cfg in enumerate(cfgs)])
     for b, (a, cfg) in enumerate(zip(answers, cfgs)):
         if a.status == "optimal":
-            problem = _check(model, query, cfg, a, analysis, b, values[b])
+            problem = _check(model, query, cfg, a, raw[b], values[b])
             if problem:
                 a.status, a.reason = "failed", f"forward check: {problem}"
     elapsed = (time.perf_counter() - t0) / len(answers)
-    res = OptimizeResult(
+    return OptimizeResult(
         objective=query.objective, tau=taus,
         status=np.array([a.status for a in answers], dtype=object),
         reason=np.array([a.reason for a in answers], dtype=object),
@@ -91,18 +109,14 @@ def optimize(model, q, objective: str = "max_sr", *, tau_max=None, radius=None,
         wheel_states_assumed=[_state_names(a.states) for a in answers],
         certificate=certs,
     )
-    if not batched:
-        res.tau = res.tau[0]
-        for k in ("status", "reason", "solver"):
-            setattr(res, k, str(getattr(res, k)[0]))
-        res.objective_value = float(values[0])
-        res.binding = answers[0].binding
-        res.iterations = int(res.iterations[0])
-        res.time = float(res.time[0])
-        res.wheel_states_assumed = res.wheel_states_assumed[0]
-        res.certificate = certs[0]
-        res.analysis = res.analysis[0]
-    return res
+
+
+def _configurations(model, q):
+    """``(qa, batched)``: a plain 1-D float configuration as is, anything else validated."""
+    if (type(q) is np.ndarray and q.dtype == np.float64 and q.shape == model._shape_q
+            and q.flags.c_contiguous and math.isfinite(float(q.sum()))):
+        return q[None, :], False
+    return model._q(q)
 
 
 def _certified(model, query, cfg, run):
@@ -135,36 +149,42 @@ def _state_names(states):
     return np.array([table[int(s)] for s in states[1:]])
 
 
-def _objective_values(query, cfgs, an) -> np.ndarray:
+def _objective_value(model, query, cfg, row) -> float:
+    """The query's objective read from the forward result's row."""
+    cols = model.columns
     if query.objective == "max_sr":
-        return np.asarray(an.sr, dtype=float)
+        return float(row[cols.index["sr"]])
     if query.objective == "least_slip_push":
-        return np.asarray(an.norm_qdd, dtype=float)
-    out = np.empty(len(cfgs))
-    for b, cfg in enumerate(cfgs):
-        d = query.direction
-        if d is None:
-            d = cfg.a_dir / max(np.linalg.norm(cfg.a_dir), 1e-300)
-        out[b] = d @ an.a_obj[b]
-    return out
+        return float(row[cols.index["norm_qdd"]])
+    d = query.direction
+    if d is None:
+        d = cfg.a_dir / max(np.linalg.norm(cfg.a_dir), 1e-300)
+    return float(d @ row[cols.slices["a_obj"]])
 
 
-def _check(model, query, cfg, a: Answer, an, b, value) -> str:
-    """Compare the answer with the exact forward solve; '' when everything holds."""
+def _check(model, query, cfg, a: Answer, row, value) -> str:
+    """Compare the answer with the exact forward solve (its result row); '' when everything
+    holds."""
     tau = a.tau
-    if query.tau_max is not None and np.any(np.abs(tau) > query.tau_max * (1 + 1e-9)):
-        j = int(np.argmax(np.abs(tau) / query.tau_max))
-        return f"|tau_{j + 1}| = {abs(tau[j]):.6g} exceeds tau_max = {query.tau_max[j]:.6g}"
+    tl = tau.tolist()
+    if query.tau_max is not None:
+        over = [abs(t) / m for t, m in zip(tl, query.tau_max.tolist())]
+        if max(over) > 1 + 1e-9:
+            j = over.index(max(over))
+            return f"|tau_{j + 1}| = {abs(tl[j]):.6g} exceeds tau_max = {query.tau_max[j]:.6g}"
     if query.radius is not None:
-        e = tau @ cfg.N @ tau
+        e = quad(floats(cfg)["N"], tl)
         if e > query.radius**2 * (1 + 1e-7):
             return f"tau^T N tau = {e:.6g} exceeds radius^2 = {query.radius**2:.6g}"
-    if not an.contact[b]:
+    cols = model.columns
+    if row[cols.state] != HELD:
         return "the contact separates at tau"
-    ws = an.wheel_state[b]
+    states = row[cols.wheels].tolist()
     for i in range(1, model.n_constraints):
-        if ws[i - 1] in ("slide+", "slide-") and not query.slide[i]:
-            return (f"the wheel on link {i} slides ({ws[i - 1]}) although the optimiser kept it"
+        s = states[i - 1]
+        if (s == SLIDE_POS or s == SLIDE_NEG) and not query.slide[i]:
+            name = "slide+" if s == SLIDE_POS else "slide-"
+            return (f"the wheel on link {i} slides ({name}) although the optimiser kept it"
                     f" within its friction bound")
     if a.expected is not None:
         scale = max(abs(a.expected), 1.0 if query.objective == "max_sr" else abs(value), 1e-300)
@@ -172,12 +192,13 @@ def _check(model, query, cfg, a: Answer, an, b, value) -> str:
             return (f"objective {value:.9g} from the forward solve differs from the optimiser's "
                     f"{a.expected:.9g}")
     if query.objective == "least_slip_push":
+        a_obj = row[cols.slices["a_obj"]]
         if query.a_obj is not None:
-            err = np.linalg.norm(an.a_obj[b] - query.a_obj)
+            err = np.linalg.norm(a_obj - query.a_obj)
             if err > 1e-6 * max(np.linalg.norm(query.a_obj), 1e-12):
-                return f"a_obj = {an.a_obj[b].tolist()} misses the requested {query.a_obj.tolist()}"
+                return f"a_obj = {a_obj.tolist()} misses the requested {query.a_obj.tolist()}"
         else:
-            got = query.direction @ an.a_obj[b]
+            got = sum(map(mul, query.direction.tolist(), a_obj.tolist()))
             if got < query.a_min * (1 - 1e-6):
                 return f"d . a_obj = {got:.6g} < a_min = {query.a_min:.6g}"
     return ""

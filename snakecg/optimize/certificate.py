@@ -29,8 +29,14 @@ enumeration.
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
+from .active_set import _lin_solve
+from .fast import (chol_solve, dot, ellipsoid_violation, frob, matvec, norm, primal_violation,
+                   wheels)
+from .problems import floats
 from .result import ELLIPSOID, FRICTION_MARGIN, Certificate
 
 #: A constraint whose slack is below this (relative to the row's size) is active.
@@ -192,25 +198,122 @@ def _eigen(model, query, cfg, tau) -> Certificate:
     """``tau`` maximises the Rayleigh quotient of eqs. (28)-(30) iff ``Omega - sr(tau) D`` is
     negative semidefinite (``D = Omega + Xi``; on the null space of ``D`` both vanish): its
     largest eigenvalue, relative to ``||D||``, is the gap; the residual of ``Omega tau =
-    sr (D tau)`` the stationarity. Plus primal feasibility of ``tau``."""
-    Om, D = cfg.Om, cfg.Om + cfg.Xi
-    Dt = D @ tau
-    den = tau @ Dt
-    sr = float(tau @ Om @ tau / den) if den > 0 else 0.0
-    nD = np.linalg.norm(D)
-    top = float(np.linalg.eigvalsh(0.5 * ((Om - sr * D) + (Om - sr * D).T))[-1])
-    scale = (np.linalg.norm(Om) + nD) * np.linalg.norm(tau)
-    resid = np.linalg.norm(Om @ tau - sr * Dt)
-    G, lo, hi, quad = _limits(model, query, cfg)
-    G.append(cfg.L[0])
-    lo.append(0.0)
-    hi.append(np.inf)
-    prim = kkt(tau, None, np.zeros_like(tau), np.array(G), np.array(lo), np.array(hi), quad,
-               convex=False, kind="").primal_feasibility
+    sr (D tau)`` the stationarity. Plus primal feasibility of ``tau``. (Small dense
+    arithmetic on floats, one eigenvalue solve.)"""
+    fl = floats(cfg)
+    Om = fl["Om"]
+    D = [[a + b for a, b in zip(r1, r2)] for r1, r2 in zip(Om, fl["Xi"])]
+    tau = tau.tolist()
+    Dt = matvec(D, tau)
+    Ot = matvec(Om, tau)
+    den = dot(tau, Dt)
+    sr = dot(tau, Ot) / den if den > 0 else 0.0
+    nD = frob(D)
+    n = len(tau)
+    S = [[a - sr * b for a, b in zip(r1, r2)] for r1, r2 in zip(Om, D)]
+    S = np.array([[0.5 * (S[i][j] + S[j][i]) for j in range(n)] for i in range(n)])
+    top = float(np.linalg.eigvalsh(S)[-1])
+    scale = (frob(Om) + nD) * norm(tau)
+    resid = norm([a - sr * b for a, b in zip(Ot, Dt)])
+    prim = primal_violation(model, query, fl["L"], tau)
+    if query.radius is not None:
+        prim = max(prim, ellipsoid_violation(fl["N"], query.radius**2, tau))
     values = {"stationarity": float(resid / scale) if scale > 0 else 0.0,
               "primal_feasibility": prim, "complementarity": 0.0,
               "duality_gap": max(top, 0.0) / max(nD, 1e-300)}
     return _verdict("generalized eigenproblem", values)
+
+
+def _push_floats(model, query, cfg, tau, lam_lo, equal, lp):
+    """:func:`kkt` of a push answer without the ellipsoid, on plain floats; None when the
+    multipliers need more than the normal equations (the general :func:`kkt` then)."""
+    L = floats(cfg)["L"]
+    n = len(L[0])
+    G, lo, hi = [], [], []
+    for i, ub, _ in wheels(model):
+        G.append(L[i])
+        lo.append(-ub)
+        hi.append(ub)
+    if query.tau_max is not None:
+        for j, m in enumerate(query.tau_max.tolist()):
+            G.append([1.0 if k == j else 0.0 for k in range(n)])
+            lo.append(-m)
+            hi.append(m)
+    ell = L[0]
+    G.append(ell)
+    lo.append(0.0)
+    hi.append(math.inf)
+    if lam_lo is not None:
+        G.append(ell)
+        lo.append(lam_lo)
+        hi.append(lam_lo if equal else math.inf)
+    x = tau.tolist()
+    if lp:
+        H, c, Hx = None, [-a for a in ell], [0.0] * n
+    else:
+        H = [[2.0 * a for a in row] for row in floats(cfg)["Xi"]]
+        c, Hx = [0.0] * n, None
+        Hx = matvec(H, x)
+    f = 0.5 * dot(x, Hx) + dot(c, x)
+    grad = [a + b for a, b in zip(Hx, c)]
+    ax = [abs(a) for a in x]
+    primal = 0.0
+    cols, slacks, free = [], [], []
+    his = []
+    for row, lo_i, hi_i in zip(G, lo, hi):
+        gx = dot(row, x)
+        bnd = max(abs(lo_i) if lo_i > -math.inf else 0.0, abs(hi_i) if hi_i < math.inf else 0.0)
+        rs = dot([abs(a) for a in row], ax) + bnd
+        rs = rs if rs > 0 else 1.0
+        s_lo = gx - lo_i if lo_i > -math.inf else math.inf
+        s_hi = hi_i - gx if hi_i < math.inf else math.inf
+        primal = max(primal, max(-s_lo, -s_hi, 0.0) / rs)
+        a_lo, a_hi = s_lo <= ACTIVE * rs, s_hi <= ACTIVE * rs
+        eq = a_lo and a_hi and lo_i == hi_i
+        if a_lo:
+            cols.append(row)
+            slacks.append(0.0 if eq else s_lo)
+            free.append(eq)
+        if a_hi and not eq:
+            his.append(([-a for a in row], s_hi))
+    for row, sl in his:  # the upper sides after the lower ones, as kkt orders them
+        cols.append(row)
+        slacks.append(sl)
+        free.append(False)
+    fscale = max(abs(f), abs(dot(grad, x)), 1e-300)
+    ref = (0.0 if H is None else frob(H) * norm(x)) + norm(c)
+    k = len(cols)
+    ng = norm(grad)
+    lam = []
+    if k:
+        norms = [norm(col) or 1.0 for col in cols]
+        Cn = [[a / nv for a in col] for col, nv in zip(cols, norms)]
+        lam_s = _lin_solve([[dot(ci, cj) for cj in Cn] for ci in Cn], [dot(ci, grad) for ci in Cn])
+        if lam_s is None or any(v < 0 for v, fr in zip(lam_s, free) if not fr):
+            return None
+        fit = [sum(lv * ci[j] for lv, ci in zip(lam_s, Cn)) - grad[j] for j in range(n)]
+        if not norm(fit) <= 0.1 * TOLERANCE["stationarity"] * max(ng, ref, 1e-300):
+            return None
+        lam = [lv / nv for lv, nv in zip(lam_s, norms)]
+        res = [sum(lv * ci[j] for lv, ci in zip(lam, cols)) - grad[j] for j in range(n)]
+        resid = norm(res)
+        size = max(ng, sum(abs(lv) * nv for lv, nv in zip(lam, norms)))
+    else:
+        res = [-a for a in grad]
+        resid, size = ng, 0.0
+    stationarity = resid / max(size, ref, 1e-300) if resid > 0 else 0.0
+    comp = sum(abs(lv) * abs(sl) for lv, sl in zip(lam, slacks))
+    corr = 0.0
+    r = [-a for a in res]  # grad - C lam
+    if H is not None and any(r):
+        y = chol_solve(H, r, rel=1e-9)
+        if y is None:
+            return None  # nearly singular: the general kkt (least squares)
+        corr = 0.5 * dot(r, y)
+    gap = (comp + corr) / fscale if k else corr / fscale
+    values = {"stationarity": stationarity, "primal_feasibility": primal,
+              "complementarity": comp / fscale if k else 0.0, "duality_gap": gap}
+    return _verdict("kkt (LP)" if lp else "kkt (convex QP)", values)
 
 
 def certify(model, query, cfg, answer) -> Certificate:
@@ -222,6 +325,10 @@ def certify(model, query, cfg, answer) -> Certificate:
         return _eigen(model, query, cfg, answer.tau)
     if claim[0] == "push":
         _, lam_lo, equal, lp = claim
+        if query.radius is None:
+            cert = _push_floats(model, query, cfg, answer.tau, lam_lo, equal, lp)
+            if cert is not None:
+                return cert
         return kkt(answer.tau, **_push(model, query, cfg, lam_lo, equal, lp))
     if claim[0] == "state":
         _, prob, z = claim

@@ -8,33 +8,52 @@ pruned by an exact upper bound, ranked by the exact forward solve (docs/optimize
 from __future__ import annotations
 
 import itertools
+import math
 
 import numpy as np
 
 from .. import kernels
 from ..solver import ABSENT, HELD, PIVOT_TOL, SLIDE_NEG, SLIDE_POS, _free_and_fixed
-from .problems import Answer, rows, scale_of, stick_rows
-from .result import CONTACT, ELLIPSOID, FRICTION_MARGIN, SR_TIE, joint_name, wheel_name
-from .solvers import Problem, inside, solve_conic, solve_ipopt
+from .fast import chol_solve, dot, quad, wheels
+from .problems import Answer, floats, rows, scale_of, stick_rows
+from .result import CONTACT, ELLIPSOID, SR_TIE, joint_name
+from .solvers import _COLD, Problem, inside, solve_conic, solve_ipopt
 
 def _max_scale(model, query, cfg, v):
     """Largest ``s > 0`` with ``s v`` inside every limit; and the limits that set it."""
+    fl = floats(cfg)
+    v = list(v)
     cands = []
     if query.radius is not None:
-        cands.append((query.radius / np.sqrt(max(v @ cfg.N @ v, 1e-300)), ELLIPSOID))
+        cands.append((query.radius / math.sqrt(max(quad(fl["N"], v), 1e-300)), ELLIPSOID))
     if query.tau_max is not None:
-        for j in range(len(v)):
+        for j, m in enumerate(query.tau_max.tolist()):
             if abs(v[j]) > 0:
-                cands.append((query.tau_max[j] / abs(v[j]), joint_name(j + 1)))
-    for i in range(1, model.n_constraints):
-        u = model.bounds[i]
-        if model.present[i] and np.isfinite(u):
-            li = cfg.L[i] @ v
-            if abs(li) > 0:
-                cands.append((u * (1 - FRICTION_MARGIN) / abs(li), wheel_name(i)))
+                cands.append((m / abs(v[j]), joint_name(j + 1)))
+    L = fl["L"]
+    for i, ub, name in wheels(model):
+        li = dot(L[i], v)
+        if abs(li) > 0:
+            cands.append((ub / abs(li), name))
     s = min(c for c, _ in cands)
     binding = tuple(dict.fromkeys(nm for c, nm in cands if c <= s * (1 + 1e-9)))
     return s, binding
+
+
+def _rank_one(cfg):
+    """Top of the Rayleigh quotient when ``Omega = k l l^T`` (one frictionless contact,
+    ``a_obj = a_dir lam_c``): ``sr = k c / (k c + 1)`` at ``v = Xi^-1 l``, ``c = l^T Xi^-1 l``
+    (eqs. 28-30); None when ``Xi`` is not safely definite (the general eigensolve then)."""
+    fl = floats(cfg)
+    ell = fl["L"][0]
+    v = chol_solve(fl["Xi"], ell)
+    if v is None:
+        return None
+    c = dot(ell, v)
+    if not c > 0:
+        return None
+    kc = cfg.k * c
+    return kc / (kc + 1.0), v
 
 
 def _top_rayleigh(Om, D):
@@ -51,16 +70,24 @@ def _top_rayleigh(Om, D):
 def max_sr(model, query, cfg) -> Answer:
     n = cfg.N.shape[0]
     ell = cfg.L[0]
-    if cfg.k <= 0 or not np.any(ell):
+    if cfg.k <= 0 or not any(floats(cfg)["L"][0]):
         return Answer(np.zeros(n), "infeasible",
                       "no torque accelerates the object at this configuration (sr = 0 for "
                       "every torque)", (CONTACT,), "generalized eigenproblem", 0, None)
-    lam, v = _top_rayleigh(cfg.Om, cfg.Om + cfg.Xi)
-    if ell @ v < 0:
-        v = -v  # keep the contact: lam_c = L_c tau >= 0
+    # closed form (the cold re-solve of a failed certificate takes the general eigensolve)
+    top = _rank_one(cfg) if _COLD.get() is None else None
+    how = "generalized eigenproblem"
+    if top is not None:
+        lam, v = top
+        how += " (rank-one closed form)"
+    else:
+        lam, v = _top_rayleigh(cfg.Om, cfg.Om + cfg.Xi)
+        if ell @ v < 0:
+            v = -v  # keep the contact: lam_c = L_c tau >= 0
+        v = v.tolist()
     s, binding = _max_scale(model, query, cfg, v)
-    best = Answer(s * v, "optimal", "", binding, "generalized eigenproblem", 0,
-                  float(np.clip(lam, 0.0, 1.0)), claim=("eigen",))
+    best = Answer(np.array([s * x for x in v]), "optimal", "", binding, how, 0,
+                  min(max(float(lam), 0.0), 1.0), claim=("eigen",))
     if query.slide.any():
         best = _max_sr_sliding(model, query, cfg, best)
     return best
@@ -208,7 +235,7 @@ def _max_sr_sliding(model, query, cfg, stick: Answer) -> Answer:
             best = Answer(tau, "optimal", "", binding, "", 0, float(sr[k]), states=state,
                           claim=("state", prob, z))
     best.solver = (f"generalized eigenproblem; {len(states)} sliding wheel states: {solved} "
-                   f"QPs (qpoases), {n_ipopt} convex NLPs (ipopt)")
+                   f"QPs, {n_ipopt} convex NLPs (ipopt)")
     best.iterations = iters
     return best
 

@@ -4,11 +4,13 @@ wheels, the input region), and the task as a bound on the contact force."""
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
 
 from ..solver import ABSENT, HELD, PIVOT_TOL, SLIDE_NEG, SLIDE_POS
+from .fast import dot, matvec, one_sample_maps
 from .query import Query
 from .result import CONTACT, ELLIPSOID, FRICTION_MARGIN, NORMAL, joint_name, wheel_name
 from .solvers import Problem
@@ -24,10 +26,30 @@ class Config:
     k: float  # ||a_dir||^2 in the object's metric
     singular: bool
     widths: np.ndarray | None = None  # half-widths of the box rows (set per query)
+    fl: dict | None = None  # the maps as lists of floats (:func:`floats`)
+
+
+def floats(cfg: Config) -> dict:
+    """The maps as lists of floats (for :mod:`snakecg.optimize.fast`), made once."""
+    if cfg.fl is None:
+        cfg.fl = {"L": cfg.L.tolist(), "Xi": cfg.Xi.tolist(), "Om": cfg.Om.tolist(),
+                  "N": cfg.N.tolist()}
+    return cfg.fl
 
 
 def configs(model, qa: np.ndarray) -> list[Config]:
     n = qa.shape[0]
+    if n == 1:  # one sample: the maps through preallocated buffers
+        maps = one_sample_maps(model, qa[0])
+        if maps is not None:
+            L, A, Xi, Om, N, Io = maps
+            fl = {"L": L.tolist(), "Xi": Xi.tolist(), "Om": Om.tolist(), "N": N.tolist()}
+            ell = fl["L"][0]
+            ll = dot(ell, ell)
+            a_dir = [x / ll for x in matvec(A.tolist(), ell)] if ll > 0 else [0.0] * 3
+            k = sum(i * a * a for i, a in zip(Io, a_dir))
+            return [Config(q=qa[0], L=L, Xi=Xi, Om=Om, N=N, a_dir=np.array(a_dir), k=k,
+                           singular=False, fl=fl)]
     state = np.where(model.present, HELD, ABSENT).astype(np.int8)
     mp = model._maps(qa, n, state)
     Io = np.array([model.scene.object_mass, model.scene.object_mass, model.scene.object_inertia])
@@ -148,11 +170,12 @@ def push_target(query, cfg):
     or ``|a_obj|`` for a full acceleration); ``structural`` is ``(reason, binding)`` when no
     torque whatsoever can do the task."""
     a_dir = cfg.a_dir
-    na = np.linalg.norm(a_dir)
+    ax, ay, aa = a_dir.tolist()
+    na = math.sqrt(ax * ax + ay * ay + aa * aa)
     if na == 0 or cfg.k <= 0:
         return None, False, 0.0, ("no torque accelerates the object at this configuration",
                                   (CONTACT,))
-    nrm = a_dir[:2] / max(np.linalg.norm(a_dir[:2]), 1e-300)
+    nrm = [v / max(math.hypot(ax, ay), 1e-300) for v in (ax, ay)]
     if query.a_obj is not None:
         a = query.a_obj
         s0 = float(a_dir @ a) / (na * na)
@@ -169,7 +192,7 @@ def push_target(query, cfg):
                 f"would need a pulling contact force; {CONTACT}", (CONTACT,))
         return s0, True, na, None
     d = query.direction
-    gamma = float(d @ a_dir)
+    gamma = dot(d.tolist(), (ax, ay, aa))
     if gamma <= 1e-9 * na:
         return None, False, gamma, (
             f"no torque accelerates the object along d = ({d[0]:.4g}, {d[1]:.4g}, {d[2]:.4g}): "

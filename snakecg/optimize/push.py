@@ -8,10 +8,11 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .box_push import solve_box_push
 from .problems import Answer, push_problem, push_target
 from .query import Query
 from .result import ELLIPSOID, FRICTION_MARGIN
-from .solvers import inside, solve_conic, solve_ellipsoid
+from .solvers import _COLD, inside, solve_conic, solve_ellipsoid
 
 @dataclass
 class _Strongest:
@@ -38,6 +39,12 @@ def _strongest_lam(model, query, cfg) -> _Strongest:
         if np.all(~np.isfinite(u) | (np.abs(Lw) <= u * (1 - FRICTION_MARGIN))):
             return _Strongest(True, float(ell @ tau), tau, (ELLIPSOID,),
                              "closed form (ellipsoid)", 0, "", True)
+    if query.radius is None and _COLD.get() is None:  # box only: posed directly in tau
+        sol = solve_box_push(model, query, cfg, lp=True)
+        if sol is not None:
+            tau = sol.z[:n]
+            return _Strongest(True, float(ell @ tau), tau, sol.binding, sol.solver,
+                              sol.iterations, sol.status, sol.unique)
     prob = push_problem(model, query, cfg, lp=True)
     sol = solve_conic(prob)
     iters, solver, unique = sol.iterations, sol.solver, sol.unique
@@ -57,6 +64,10 @@ def _strongest_lam(model, query, cfg) -> _Strongest:
 def _least_slip(model, query, cfg, lam_lo, equal):
     """min tau^T Xi tau s.t. lam_c >= lam_lo (== if equal), limits, wheels sticking."""
     n = cfg.N.shape[0]
+    if query.radius is None and _COLD.get() is None:  # box only: posed directly in tau
+        sol = solve_box_push(model, query, cfg, lam_lo=lam_lo, equal=equal)
+        if sol is not None:
+            return sol, sol.solver, sol.iterations
     prob = push_problem(model, query, cfg, lam_lo=lam_lo, equal=equal)
     sol = solve_conic(prob)
     solver, iters = sol.solver, sol.iterations

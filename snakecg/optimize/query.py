@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -46,7 +47,9 @@ def validate(model, objective, tau_max, radius, direction, a_min, a_obj, allow_s
         )
     objective = objective.replace("-", "_")
     na = model.n_joints
-    if tau_max is not None:
+    if type(tau_max) is float and math.isfinite(tau_max) and tau_max > 0:
+        tau_max = np.full(na, tau_max)  # the common case, checked
+    elif tau_max is not None:
         if np.ndim(tau_max) == 0:
             tau_max = np.full(na, tau_max, dtype=float) if _is_number(tau_max) else tau_max
         tm = _finite_vector("tau_max", tau_max, (na,),
@@ -71,6 +74,13 @@ def validate(model, objective, tau_max, radius, direction, a_min, a_obj, allow_s
         raise InputError(f"{', '.join(sorted(extra))} do(es) not apply to objective "
                          f"{objective!r} (it takes: {', '.join(sorted(allowed)) or 'no task'})")
     d = None
+    if (type(direction) is np.ndarray and direction.dtype == np.float64
+            and direction.shape in ((2,), (3,))):  # the common case, on floats
+        dl = direction.tolist()
+        nd = math.sqrt(sum(x * x for x in dl))
+        if math.isfinite(nd) and nd > 0:
+            d = np.array(dl + [0.0] * (3 - len(dl))) / nd
+            direction = None
     if direction is not None:
         d = _finite_vector("direction", direction, (2, 3),
                            "(dx, dy) or (dx, dy, dalpha): the direction of the object's "
@@ -95,6 +105,13 @@ def validate(model, objective, tau_max, radius, direction, a_min, a_obj, allow_s
             raise InputError("least_slip_push needs a task: direction=(dx, dy) and a_min "
                              "(m/s^2), or a_obj=(a_x, a_y, alpha)")
     # wheels allowed to slide
+    if allow_slide is False or allow_slide is None:  # the common case: nothing slides
+        none = model.__dict__.get("_snakecg_optimize_no_slide")
+        if none is None:
+            none = np.zeros(model.n_constraints, dtype=bool)
+            none.setflags(write=False)
+            model.__dict__["_snakecg_optimize_no_slide"] = none
+        return Query(objective, tau_max, radius, d, a_min, ao, none)
     bounded = model.present & np.isfinite(model.bounds)
     bounded[0] = False
     slide = np.zeros(model.n_constraints, dtype=bool)

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -28,6 +29,7 @@ CONTACT = "contact would separate"
 NORMAL = "contact normal (the frictionless contact pushes along its normal only)"
 
 
+@functools.lru_cache(maxsize=None)
 def joint_name(j: int) -> str:
     return f"torque limit on joint {j}"
 

@@ -5,6 +5,10 @@ History independence. CasADi's qpOASES interface hot-starts every call from the 
 call's working set, and that homotopy can stop at a point that is not the optimum of the new
 problem while reporting success. Here no answer depends on what ran before:
 
+* every small QP and LP (``active_set.DENSE_MAX`` free variables at most) is first solved by
+  :mod:`snakecg.optimize.active_set` (a dense dual active set from the unconstrained
+  minimiser, no state between calls); qpOASES, as below, when that gives up and for the
+  larger problems;
 * every hot solve is preceded by the solve of a reset QP with the same constraint pattern
   (``H = I``, its minimiser strictly inside every inequality), so each problem starts from
   the same solver state whatever was solved before; the pair runs under a lock, so
@@ -28,10 +32,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .result import ELLIPSOID, HESSIAN_REG
-
-#: Curvature of the QP that stands for an LP (scaled variables, objective of size 1).
-LP_REG = 1e-9
+from . import active_set
+from .polish import LP_REG, binding as _binding, polish as _polish, scaled as _scaled
+from .polish import scaled_lists as _scaled_lists
+from .result import ELLIPSOID
 
 _QPOASES = {"printLevel": "none", "error_on_fail": False}
 _IPOPT = {
@@ -217,86 +221,8 @@ class Solution:
     unique: bool = False  # a non-degenerate vertex: the LP optimum is the only one
 
 
-def _scaled(prob: Problem):
-    s = prob.scale
-    A = prob.A * s[None, :]
-    rn = np.abs(A).max(axis=1)
-    used = rn > 0
-    rn = np.where(used, rn, 1.0)
-    A = A / rn[:, None]
-    lba = np.where(used, prob.lba / rn, -np.inf)
-    uba = np.where(used, prob.uba / rn, np.inf)
-    H = None if prob.H is None else prob.H * np.outer(s, s)
-    g = prob.g * s
-    fs = max(np.abs(g).max(), 0.0 if H is None else np.abs(H).max())
-    fs = fs if fs > 0 else 1.0
-    g = g / fs
-    if H is not None:
-        H = H / fs
-        H = H + HESSIAN_REG * max(np.abs(np.diag(H)).max(), 1e-300) * np.eye(len(s))
-    return H, g, A, lba, uba, prob.lbx / s, prob.ubx / s
-
-
-def _binding(prob, zs, A, lba, uba, lam_a, extra=()):
-    """Rows active at ``zs`` (scaled) with a non-zero multiplier: their names (deduplicated)
-    and their indices."""
-    lam_a = np.asarray(lam_a).ravel()
-    big = max(np.abs(lam_a).max(initial=0.0), max((abs(v) for _, v in extra), default=0.0))
-    if big <= 0:
-        return (), []
-    Az = A @ zs
-    slack = np.minimum(np.abs(Az - lba), np.abs(Az - uba))
-    rows = [r for r in range(len(lam_a))
-            if abs(lam_a[r]) > 1e-7 * big and slack[r] <= 1e-6]
-    out = [prob.names[r] for r in rows if prob.names[r]]
-    out += [name for name, v in extra if abs(v) > 1e-7 * big]
-    return tuple(dict.fromkeys(out)), rows
-
-
 def _pack(H, g, A, lba, uba, lbx, ubx) -> np.ndarray:
     return np.concatenate([H.ravel("F"), g, A.ravel("F"), lba, uba, lbx, ubx])
-
-
-def _polish(H, g, A, lba, uba, lbx, ubx, zs, lam_a):
-    """The exact optimum on the solver's active set: the equality-constrained QP with the rows
-    that carry a multiplier held at their active bound (and the fixed variables), solved
-    directly (one dense KKT system). Taken when it keeps every row and bound (to 1e-12) and
-    its objective is no worse; the solver's point otherwise. A homotopy (qpOASES) stops within
-    about 1e-7 of the optimum on ill-conditioned Hessians; this makes the answer a function of
-    the active set alone, exact to rounding."""
-    n1 = zs.size
-    Az = A @ zs
-    act = np.abs(lam_a) > 0
-    at_lo = np.abs(Az - lba) <= np.abs(Az - uba)
-    target = np.where(at_lo, lba, uba)
-    act &= np.isfinite(target)
-    fixed = np.isfinite(lbx) & ((lbx == ubx) | (np.abs(zs - lbx) <= 1e-12 * (1 + abs(lbx))))
-    E = np.vstack([A[act], np.eye(n1)[fixed]])
-    e = np.concatenate([target[act], lbx[fixed]])
-    k = E.shape[0]
-    K = np.zeros((n1 + k, n1 + k))
-    K[:n1, :n1] = H
-    K[:n1, n1:] = E.T
-    K[n1:, :n1] = E
-    rhs = np.concatenate([-g, e])
-    try:
-        sol = np.linalg.solve(K, rhs)
-    except np.linalg.LinAlgError:  # dependent active rows: the least-squares solution
-        sol = np.linalg.lstsq(K, rhs, rcond=1e-14)[0]
-    z = sol[:n1]
-    if not np.all(np.isfinite(z)):
-        return zs
-    Az2 = A @ z
-    tol = 1e-12 * (1.0 + np.abs(Az2))
-    if np.any(Az2 < lba - tol) or np.any(Az2 > uba + tol):
-        return zs
-    if np.any(z < lbx - 1e-12 * (1 + np.abs(z))) or np.any(z > ubx + 1e-12 * (1 + np.abs(z))):
-        return zs
-    f_old = 0.5 * zs @ H @ zs + g @ zs
-    f_new = 0.5 * z @ H @ z + g @ z
-    if f_new > f_old + 1e-12 * max(abs(f_old), 1e-300):
-        return zs
-    return z
 
 
 def solve_conic(prob: Problem, polish: bool = True) -> Solution:
@@ -311,12 +237,20 @@ def solve_conic(prob: Problem, polish: bool = True) -> Solution:
     face's point nearest the origin. qpOASES's own LP mode cannot start from the reset state
     (its homotopy needs a curvature)."""
     n1, R = prob.A.shape[1], prob.A.shape[0]
+    lp = prob.H is None
+    fresh = _COLD.get()
+    small = int(np.count_nonzero(prob.lbx != prob.ubx)) <= active_set.DENSE_MAX
+    if fresh is None and small:  # the dense dual active set from scratch; else qpOASES
+        S = _scaled_lists(prob)
+        dense = active_set.solve(*S)
+        if dense is not None:
+            return _finish(prob, S, dense[0], dense[1], lp, polish,
+                           "dual active set (LP)" if lp else "dual active set",
+                           "Successful return.")
     H, g, A, lba, uba, lbx, ubx = _scaled(prob)
-    lp = H is None
     name = "qpoases (LP)" if lp else "qpoases"
     if lp:
         H = LP_REG * np.eye(n1)
-    fresh = _COLD.get()
     if fresh is None:
         out = solvers(n1, R).conic(H, g, A, lba, uba, lbx, ubx)
         status = "Successful return." if out is not None else "qpOASES: infeasible or failed"
@@ -331,16 +265,24 @@ def solve_conic(prob: Problem, polish: bool = True) -> Solution:
                if st.get("success", False) else None)
     if out is None or not np.all(np.isfinite(out)):
         return Solution(False, np.zeros(n1), status, 1, name)
-    zs, lam_a = out[:n1], out[n1:]
+    return _finish(prob, (H, g, A, lba, uba, lbx, ubx), out[:n1], out[n1:], lp, polish, name,
+                   status)
+
+
+def _finish(prob, scaled, zs, lam_a, lp, polish, name, status) -> Solution:
+    """Polish the solver's point on its active set, name the binding rows, and tell whether
+    an LP vertex is the only optimum."""
+    n1 = zs.size
     if polish:
-        zs = _polish(H, g, A, lba, uba, lbx, ubx, zs, lam_a)
+        zs = _polish(*scaled, zs, lam_a)
+    A, lba, uba = scaled[2], scaled[3], scaled[4]
     binding, rows = _binding(prob, zs, A, lba, uba, lam_a)
     unique = False
     # an LP vertex with n independent rows active, all with non-zero multipliers (t fixed):
     # no other point reaches the optimum
     n = n1 - 1
     if (lp and prob.lbx[n] == prob.ubx[n] and len(rows) >= n
-            and np.linalg.matrix_rank(A[rows, :n], 1e-9) == n):
+            and np.linalg.matrix_rank(np.asarray(A)[rows, :n], 1e-9) == n):
         unique = True
     return Solution(True, zs * prob.scale, status, 1, name, binding, unique)
 
