@@ -412,7 +412,7 @@ def alternative_readings(opts: ReproduceOptions | None = None, *, load=None) -> 
             if mode == "feasible":
                 mask = physically_feasible(model, Q)
             if mode == "sampled":
-                maps = model._maps(Q, len(Q), np.where(model.present, 1, 0).astype(np.int8))
+                maps = model.state_maps(Q, np.where(model.present, 1, 0).astype(np.int8))
                 L = np.linalg.cholesky(maps["input_metric"])
                 from .analysis import sphere_directions
 

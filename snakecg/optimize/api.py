@@ -113,10 +113,10 @@ def optimize(model, q, objective: str = "max_sr", *, tau_max=None, radius=None,
 
 def _configurations(model, q):
     """``(qa, batched)``: a plain 1-D float configuration as is, anything else validated."""
-    if (type(q) is np.ndarray and q.dtype == np.float64 and q.shape == model._shape_q
+    if (type(q) is np.ndarray and q.dtype == np.float64 and q.shape == (model.n_coordinates,)
             and q.flags.c_contiguous and math.isfinite(float(q.sum()))):
         return q[None, :], False
-    return model._q(q)
+    return model.configurations(q)
 
 
 def _certified(model, query, cfg, run):

@@ -29,17 +29,15 @@ class _Workspace:
 
         be = model.backend
         sc = model.scene
+        si = model.scene_inputs
         self.place = BoundFunction(be, "place_object", {
-            "K": model.parameters, "contact_link": model._contact_link,
-            "contact_offset": [sc.contact_offset], "object_distance": [sc.object_distance],
-            "side": model._side})
+            k: si[k] for k in ("K", "contact_link", "contact_offset", "object_distance", "side")})
         state = np.where(model.present, HELD, ABSENT).astype(np.int8)
         free, lam_fixed = _free_and_fixed(state[None, :], model.bounds)
         self.maps = BoundFunction(be, "interaction_maps", {
-            "K": model.parameters, "contact_link": model._contact_link, "side": model._side,
-            "object_mass": model._object_mass, "object_inertia": model._object_inertia,
-            "wheel_offset": model._wheel_offset, "free": free[0], "lam_fixed": lam_fixed[0],
-            "regularization": [0.0]})
+            **{k: si[k] for k in ("K", "contact_link", "side", "object_mass", "object_inertia",
+                                  "wheel_offset")},
+            "free": free[0], "lam_fixed": lam_fixed[0], "regularization": [0.0]})
         self.lock = threading.Lock()
         self.Io = (sc.object_mass, sc.object_mass, sc.object_inertia)
 

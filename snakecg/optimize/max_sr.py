@@ -110,14 +110,14 @@ def _state_maps(model, q, states):
     """Interaction maps of one configuration for many active sets, one compiled call."""
     S = states.shape[0]
     qa = q[None, :]
-    q_obj, rho, _ = model._place(qa, 1)
+    q_obj, rho, _ = model.place(qa)
     free, lam_fixed = _free_and_fixed(states, model.bounds)
     f = np.ascontiguousarray
     outs = kernels.call(
-        model.backend, "interaction_maps", S, q=f(q, dtype=float), K=model.parameters,
-        contact_link=model._contact_link, side=model._side, object_mass=model._object_mass,
-        object_inertia=model._object_inertia, q_obj=f(q_obj[0]), rho=f(rho[0]),
-        wheel_offset=model._wheel_offset, free=f(free, dtype=float),
+        model.backend, "interaction_maps", S, q=f(q, dtype=float),
+        **{k: model.scene_inputs[k] for k in ("K", "contact_link", "side", "object_mass",
+                                              "object_inertia", "wheel_offset")},
+        q_obj=f(q_obj[0]), rho=f(rho[0]), free=f(free, dtype=float),
         lam_fixed=f(lam_fixed, dtype=float), regularization=np.zeros(1))
     res = {}
     for name_, o in outs.items():

@@ -51,7 +51,7 @@ def configs(model, qa: np.ndarray) -> list[Config]:
             return [Config(q=qa[0], L=L, Xi=Xi, Om=Om, N=N, a_dir=np.array(a_dir), k=k,
                            singular=False, fl=fl)]
     state = np.where(model.present, HELD, ABSENT).astype(np.int8)
-    mp = model._maps(qa, n, state)
+    mp = model.state_maps(qa, state)
     Io = np.array([model.scene.object_mass, model.scene.object_mass, model.scene.object_inertia])
     out = []
     for b in range(n):
