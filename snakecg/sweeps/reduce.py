@@ -272,8 +272,8 @@ def _draw(grid, rmax, meta, which: str, out: Path, fmt: str) -> None:
         fig.colorbar(mesh, ax=ax, shrink=0.7, pad=0.08)
     scene = meta["scene"]
     fig.suptitle(f"{which}, {meta['robot']['joints']} joints, "
-                 f"{scene['scenario']}, kappa = {scene['kappa']:g}: per-configuration maxima "
-                 f"over the input ellipsoid,\nbinned over |COM| [m] from the contact point and "
+                 f"{scene['scenario']}, kappa = {scene['kappa']:g}:\nper-configuration maxima "
+                 f"over the input ellipsoid, binned over |COM| [m] from the contact point\nand "
                  f"the angle of COM from the contacting link's axis", fontsize=10)
     tmp = out.with_name(f".{out.name}.{uuid.uuid4().hex}.partial")
     try:
