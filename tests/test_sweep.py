@@ -510,6 +510,8 @@ def test_feasible_only_summary_equals_numpy_over_the_feasible_subset(feasible_st
 
     text = summary_text(s)
     assert ("* a shape that is not physically possible" in text) == marked
+    assert main(["sweep", "--summary", str(feasible_store), "--every-shape", "--json"]) == 0
+    assert json.loads(capsys.readouterr().out, parse_constant=pytest.fail) == s
     assert main(["sweep", "--summary", str(feasible_store)]) == 0
     assert "feasible shapes only, clearance 0.02 m" in capsys.readouterr().out
 
@@ -596,7 +598,10 @@ def test_bad_feasibility_arguments_are_one_line_errors(client, tmp_path, capsys,
             (out + ["--clearance", "0.02"], "goes with --feasible-only"),
             (["--summary", str(feasible_store), "--clearance", "0.02"], "the store's"),
             (["--figure", str(feasible_store), "--feasible-only", "--clearance", "0"],
-             "the store's")):
+             "the store's"),
+            (out + ["--every-shape"], "--every-shape goes with --summary or --figure"),
+            (["--summary", str(feasible_store), "--every-shape", "--feasible-only"],
+             "not allowed with")):
         _one_line_error(capsys, ["sweep"] + argv, fragment)
     assert list(tmp_path.iterdir()) == []
     sc = scene("wheels")

@@ -19,6 +19,7 @@ examples:
   snakecg sweep --joints 3 --range=-90:90,-45:45,0:90 --step 5,5,10 --out part.zarr --scheduler tcp://scheduler-host:8786
   snakecg sweep --summary wheels3.zarr --json
   snakecg sweep --summary wheels3.zarr --feasible-only
+  snakecg sweep --figure wheels3.zarr --every-shape
   snakecg sweep --figure wheels3.zarr --out wheels3-polar.svg
 """
 
@@ -52,11 +53,15 @@ def register(sub) -> None:
                    help="N random configurations, uniform in --range, instead of a grid")
     g.add_argument("--seed", type=int, metavar="S", help="seed of --samples (required with it)")
     f = p.add_argument_group("feasible shapes (default: every shape, as the paper's grid)")
-    f.add_argument("--feasible-only", action="store_true",
+    fx = f.add_mutually_exclusive_group()
+    fx.add_argument("--feasible-only", action="store_true",
                    help="leave out the shapes that are not physically possible (non-adjacent "
                    "links closer than --clearance, or a link inside the object): with a sweep, "
                    "the default of its --summary and --figure (every shape is still computed "
                    "and stored); with --summary or --figure, for that reduction")
+    fx.add_argument("--every-shape", action="store_true",
+                    help="with --summary or --figure: every shape, also of a store made with "
+                    "--feasible-only")
     f.add_argument("--clearance", type=real(0, unit="m", name="distance"), metavar="M",
                    help="with --feasible-only when sweeping: least distance between "
                    "non-adjacent links of a feasible shape, in metres (default 0.01, as "
@@ -138,6 +143,9 @@ def run(args) -> int:
 
     if not args.out:
         raise InputError("--out STORE is required: the Zarr store to write (e.g. sweep.zarr)")
+    if args.every_shape:
+        raise InputError("--every-shape goes with --summary or --figure; a sweep keeps every "
+                         "shape unless --feasible-only is given")
     if args.clearance is not None and not args.feasible_only:
         raise InputError("--clearance M goes with --feasible-only (the least distance between "
                          "non-adjacent links of a feasible shape); without it every shape is "
@@ -194,7 +202,7 @@ def _reduce(args) -> int:
         raise InputError("--clearance is the store's, recorded when the sweep was made; "
                          "--summary and --figure --feasible-only use it (sweep into a new "
                          "store for another clearance)")
-    feasible = True if args.feasible_only else None
+    feasible = True if args.feasible_only else False if args.every_shape else None
     if args.summary is not None:
         if args.out is not None:
             raise InputError("--out goes with a sweep or --figure, not with --summary")
