@@ -55,12 +55,15 @@ def _cross(a, b):
 def point_segment_distance(p, a, b) -> np.ndarray:
     """Distance from points ``p`` to segments ``a``-``b`` (arrays ``(..., 2)``, broadcast)."""
     p, a, b = (np.asarray(x, float) for x in (p, a, b))
-    d = b - a
-    dd = np.einsum("...k,...k->...", d, d)
-    t = np.einsum("...k,...k->...", p - a, d) / np.where(dd > 0, dd, 1.0)
+    # component by component (the same operations, in the same order, as the dot products
+    # and the norm of the vectors; several times faster on large batches)
+    ax, ay = a[..., 0], a[..., 1]
+    dx, dy = b[..., 0] - ax, b[..., 1] - ay
+    dd = dx * dx + dy * dy
+    t = ((p[..., 0] - ax) * dx + (p[..., 1] - ay) * dy) / np.where(dd > 0, dd, 1.0)
     t = np.clip(np.where(dd > 0, t, 0.0), 0.0, 1.0)
-    closest = a + t[..., None] * d
-    return np.linalg.norm(p - closest, axis=-1)
+    ex, ey = p[..., 0] - (ax + t * dx), p[..., 1] - (ay + t * dy)
+    return np.sqrt(ex * ex + ey * ey)
 
 
 def segment_distance(a0, a1, b0, b1) -> np.ndarray:
@@ -124,29 +127,25 @@ def object_penetration(a, b, q_obj, side: float = OBJECT_SIDE) -> np.ndarray:
     c, psi = q_obj[..., :2], q_obj[..., 2]
     cs, sn = np.cos(psi), np.sin(psi)
 
-    def local(p):
-        d = p - c
-        return np.stack([cs * d[..., 0] + sn * d[..., 1], -sn * d[..., 0] + cs * d[..., 1]], -1)
+    def local(p):  # the point in the plate's frame, (x, y) component by component
+        dx, dy = p[..., 0] - c[..., 0], p[..., 1] - c[..., 1]
+        return cs * dx + sn * dy, -sn * dx + cs * dy
 
-    la, lb = local(a), local(b)
+    (ax, ay), (bx, by) = local(a), local(b)
     h = side / 2
     # depth(p) = h - max(|x|, |y|) is concave along the segment; its maximum over t in [0, 1]
     # is at an end or where two of the four linear pieces h -+ x, h -+ y meet.
-    ts = [np.zeros(la.shape[:-1]), np.ones(la.shape[:-1])]
-    d = lb - la
-    for k in (0, 1):  # x = 0 or y = 0 crossings (where |x| or |y| turns)
-        with np.errstate(divide="ignore", invalid="ignore"):
-            ts.append(-la[..., k] / d[..., k])
-    for s in (1.0, -1.0):  # |x| = |y| crossings: x = s y
-        num = la[..., 0] - s * la[..., 1]
-        den = d[..., 0] - s * d[..., 1]
-        with np.errstate(divide="ignore", invalid="ignore"):
-            ts.append(-num / den)
-    best = np.zeros(la.shape[:-1])
+    ts = [np.zeros(ax.shape), np.ones(ax.shape)]
+    dx, dy = bx - ax, by - ay
+    with np.errstate(divide="ignore", invalid="ignore"):
+        ts.append(-ax / dx)  # x = 0 or y = 0 crossings (where |x| or |y| turns)
+        ts.append(-ay / dy)
+        for s in (1.0, -1.0):  # |x| = |y| crossings: x = s y
+            ts.append(-(ax - s * ay) / (dx - s * dy))
+    best = np.zeros(ax.shape)
     for t in ts:
         t = np.clip(np.nan_to_num(t, nan=0.0, posinf=0.0, neginf=0.0), 0.0, 1.0)
-        p = la + t[..., None] * d
-        best = np.maximum(best, h - np.max(np.abs(p), axis=-1))
+        best = np.maximum(best, h - np.maximum(np.abs(ax + t * dx), np.abs(ay + t * dy)))
     return best
 
 

@@ -251,7 +251,10 @@ def test_mismatched_store_is_refused_and_left_untouched(client, tmp_path, capsys
 
 
 def _one_line_error(capsys, argv, fragment):
-    code = main(argv)
+    try:
+        code = main(argv)
+    except SystemExit as exc:  # refused while the command line is parsed
+        code = exc.code
     out, err = capsys.readouterr()
     assert code == 2, (argv, err)
     assert err.count("\n") == 1 and "Traceback" not in err, err
@@ -358,3 +361,272 @@ def test_import_snakecg_does_not_import_dask():
     code = ("import sys, snakecg; assert 'distributed' not in sys.modules and 'zarr' not in "
             "sys.modules; snakecg.sweep; assert 'distributed' not in sys.modules")
     subprocess.run([sys.executable, "-c", code], check=True, cwd=ROOT)
+
+
+# ------------------------------------------------------------------------------------------
+# Feasible shapes: every store holds a boolean `feasible` per configuration; the reductions
+# leave the infeasible ones out when asked. 3 joints, every 45 degrees: 343 shapes.
+FEAS_VALUES = np.arange(-135, 136, 45) * DEG
+FEAS_CLEARANCE = 0.02
+
+
+@pytest.fixture(scope="module")
+def feasible_store(client, tmp_path_factory):
+    path = tmp_path_factory.mktemp("feasible") / "f.zarr"
+    res = snakecg.sweep(scene("ideal_wheels", joints=3), grid=FEAS_VALUES, store=path,
+                        client=client, chunk=100, progress=False, feasible=True,
+                        clearance=FEAS_CLEARANCE)
+    assert (res.configurations, res.chunks, res.feasible_only, res.clearance) == (
+        343, 4, True, FEAS_CLEARANCE)
+    return path
+
+
+def test_feasible_array_equals_geometry_per_configuration(feasible_store):
+    """Each configuration's stored flag is snakecg.geometry.feasibility of that one shape at
+    the store's clearance (computed here one configuration at a time), and the clearance is
+    recorded in the attributes."""
+    from snakecg.geometry import feasibility
+
+    model = snakecg.load(scene("ideal_wheels", joints=3))
+    data = read(feasible_store)
+    Q = mesh(FEAS_VALUES, FEAS_VALUES, FEAS_VALUES)
+    one_by_one = np.array([bool(feasibility(model, q, clearance=FEAS_CLEARANCE).feasible)
+                           for q in Q])
+    assert data["feasible"].dtype == bool
+    np.testing.assert_array_equal(data["feasible"], one_by_one)
+    assert 0 < one_by_one.sum() < len(Q)  # both kinds on this grid
+    np.testing.assert_array_equal(data["q"], Q[:, 3:])
+    meta = dict(zarr.open_group(str(feasible_store), mode="r").attrs)["snakecg_sweep"]
+    assert meta["feasibility"]["clearance"] == FEAS_CLEARANCE
+    assert meta["feasible_only"] is True and "feasible" in meta["arrays"]
+
+
+def _sampled_segments_check(model, q, points=1001):
+    """Feasibility by brute force, independent of snakecg.geometry: every link sampled at
+    `points` points; the least distance between the samples of non-adjacent links, and the
+    deepest sample of a non-contacting link inside the 0.1 m square plate (object frame).
+    Returns (least distance, deepest entry)."""
+    poses = model.link_poses(q)
+    r = model.robot
+    e = np.stack([np.cos(poses[:, 2]), np.sin(poses[:, 2])], axis=1)
+    rear = poses[:, :2] - np.asarray(r.com)[:, None] * e
+    front = rear + np.asarray(r.length)[:, None] * e
+    # the links form a chain: each joint is shared by two links
+    for i in range(len(rear) - 1):
+        shared = min(np.linalg.norm(a - b) for a in (rear[i], front[i])
+                     for b in (rear[i + 1], front[i + 1]))
+        assert shared < 1e-12, shared
+    t = np.linspace(0.0, 1.0, points)[:, None]
+    pts = [rear[i] + t * (front[i] - rear[i]) for i in range(len(rear))]
+    least = np.inf
+    for i in range(len(pts)):
+        for j in range(i + 2, len(pts)):
+            d = np.sqrt(((pts[i][:, None, :] - pts[j][None, :, :]) ** 2).sum(-1))
+            least = min(least, float(d.min()))
+    q_obj, _, _ = model.place_object(q)
+    c, s = np.cos(q_obj[2]), np.sin(q_obj[2])
+    deepest = 0.0
+    for i, p in enumerate(pts):
+        if i == model.scene.contact_link - 1:
+            continue
+        d = p - q_obj[:2]
+        local = np.stack([c * d[:, 0] + s * d[:, 1], -s * d[:, 0] + c * d[:, 1]], axis=1)
+        deepest = max(deepest, float(np.max(0.05 - np.max(np.abs(local), axis=1))))
+    return least, deepest
+
+
+def test_feasible_array_against_sampled_segments(feasible_store):
+    """A handful of shapes, classified by a brute-force sampling of the links (no formula of
+    snakecg.geometry): the stored flag agrees wherever the sampled margins are clear of the
+    sampling error (link length / 1000)."""
+    model = snakecg.load(scene("ideal_wheels", joints=3))
+    data = read(feasible_store)
+    Q = mesh(FEAS_VALUES, FEAS_VALUES, FEAS_VALUES)
+    tol = 2 * max(model.robot.length) / 1000
+    rng = np.random.default_rng(5)
+    seen = {"crossing": 0, "inside": 0, "feasible": 0}
+    for k in rng.permutation(len(Q)):
+        if min(seen.values()) >= 3:
+            break
+        least, deepest = _sampled_segments_check(model, Q[k])
+        if abs(least - FEAS_CLEARANCE) < tol or 0 < deepest < tol:
+            continue  # too close to call by sampling
+        feasible = least >= FEAS_CLEARANCE and deepest <= 0
+        assert bool(data["feasible"][k]) == feasible, (np.rad2deg(Q[k, 3:]), least, deepest)
+        kind = "feasible" if feasible else "crossing" if least < FEAS_CLEARANCE else "inside"
+        seen[kind] += 1
+    assert min(seen.values()) >= 3, seen
+
+
+def _numpy_summary(ref, keep):
+    """Worst and best per-configuration maxima over the configurations `keep`, by NumPy."""
+    out = {}
+    idx = np.flatnonzero(keep)
+    for m in METRICS:
+        v = ref[f"max_{m}"][idx]
+        out[m] = {"worst": int(idx[np.argmin(v)]), "best": int(idx[np.argmax(v)])}
+    return out
+
+
+def _assert_summary(s, ref, expected, feasible):
+    for m in METRICS:
+        for kind in ("worst", "best"):
+            i = expected[m][kind]
+            e = s["metrics"][m][kind]
+            assert e["index"] == i, (m, kind)
+            assert e["value"] == pytest.approx(ref[f"max_{m}"][i], rel=1e-12)
+            np.testing.assert_allclose(e["q_deg"], np.rad2deg(ref["q"][i]), atol=1e-9)
+            np.testing.assert_allclose(e["tau"], ref[f"tau_max_{m}"][i], atol=1e-12)
+            assert e["feasible"] is bool(feasible[i])
+
+
+def test_feasible_only_summary_equals_numpy_over_the_feasible_subset(feasible_store, capsys):
+    """The summary over feasible shapes is NumPy's argmin/argmax over the feasible subset of
+    model.extremes(Q).max on the same grid (feasibility from snakecg.geometry in process);
+    the store made with feasible=True filters by default, feasible=False gives every shape."""
+    from snakecg.geometry import feasibility
+    from snakecg.sweeps import summary
+
+    sc = scene("ideal_wheels", joints=3)
+    Q = mesh(FEAS_VALUES, FEAS_VALUES, FEAS_VALUES)
+    ref = reference(sc, Q)
+    ok = feasibility(snakecg.load(sc), Q, clearance=FEAS_CLEARANCE).feasible
+    filtered, every = _numpy_summary(ref, ok), _numpy_summary(ref, np.ones(len(Q), bool))
+    assert filtered != every  # the filter changes some entry on this grid
+
+    s = summary(feasible_store)
+    assert s["feasible_only"] is True and s["clearance"] == FEAS_CLEARANCE
+    assert s["summarized_configurations"] == s["feasible_configurations"] == int(ok.sum())
+    _assert_summary(s, ref, filtered, ok)
+    assert main(["sweep", "--summary", str(feasible_store), "--feasible-only", "--json"]) == 0
+    assert json.loads(capsys.readouterr().out, parse_constant=pytest.fail) == s
+
+    s = summary(feasible_store, feasible=False)
+    assert s["feasible_only"] is False and s["summarized_configurations"] == len(Q)
+    assert s["feasible_configurations"] == int(ok.sum())
+    _assert_summary(s, ref, every, ok)
+    marked = any(not ok[every[m][k]] for m in METRICS for k in ("worst", "best"))
+    from snakecg.sweeps.reduce import summary_text
+
+    text = summary_text(s)
+    assert ("* a shape that is not physically possible" in text) == marked
+    assert main(["sweep", "--summary", str(feasible_store), "--every-shape", "--json"]) == 0
+    assert json.loads(capsys.readouterr().out, parse_constant=pytest.fail) == s
+    assert main(["sweep", "--summary", str(feasible_store)]) == 0
+    assert "feasible shapes only, clearance 0.02 m" in capsys.readouterr().out
+
+
+def test_feasible_only_figure_bins_the_feasible_subset(feasible_store, tmp_path):
+    """The polar figure's bins over feasible shapes equal NumPy's binning of the feasible
+    subset of the in-process reference; the figure is written."""
+    from snakecg.geometry import feasibility
+    from snakecg.sweeps import figure
+    from snakecg.sweeps.reduce import binned_maxima
+
+    sc = scene("ideal_wheels", joints=3)
+    Q = mesh(FEAS_VALUES, FEAS_VALUES, FEAS_VALUES)
+    ref = reference(sc, Q)
+    ok = feasibility(snakecg.load(sc), Q, clearance=FEAS_CLEARANCE).feasible
+    for only, keep in ((True, ok), (False, np.ones(len(Q), bool))):
+        b = binned_maxima(feasible_store, radius_bins=6, angle_bins=8, feasible=only)
+        assert b["binned_configurations"] == int(keep.sum())
+        r, a = ref["com_radius"][keep], ref["com_angle"][keep]
+        rmax = r.max()
+        assert b["radius_max"] == pytest.approx(rmax, rel=1e-8)
+        for m in METRICS:
+            v = ref[f"max_{m}"][keep]
+            want = np.full((8, 6), -np.inf)
+            for k in range(len(v)):
+                ri = min(int(r[k] / b["radius_max"] * 6), 5)
+                ai = min(int((a[k] + np.pi) / (2 * np.pi) * 8), 7)
+                want[ai, ri] = max(want[ai, ri], v[k])
+            np.testing.assert_allclose(b["maxima"][m], want, rtol=1e-12, err_msg=m)
+    png = figure(feasible_store, tmp_path / "f.png", feasible=True)
+    assert png.stat().st_size > 10_000
+
+
+def test_feasibility_of_a_plain_store_fingerprint_and_digest(client, tmp_path, capsys):
+    """A store made without feasible=True keeps every shape by default, still holds the flag
+    (at the default clearance, as `snakecg reproduce --feasible-only`) and filters when
+    asked; resuming it with another feasibility choice is refused; a damaged flag is caught
+    by the chunk's digest and computed again."""
+    from snakecg.geometry import SELF_CLEARANCE, feasibility
+    from snakecg.reproduce import ReproduceOptions
+    from snakecg.sweeps import summary
+
+    assert ReproduceOptions().clearance == SELF_CLEARANCE == 0.01
+    store = tmp_path / "p.zarr"
+    grid = joint_values(-135, 135, 30)
+    sc = scene("frictionless")
+    res = snakecg.sweep(sc, grid=grid, store=store, client=client, chunk=30, progress=False)
+    assert (res.feasible_only, res.clearance) == (False, SELF_CLEARANCE)
+    Q = mesh(grid, grid)
+    ref = reference(sc, Q)
+    ok = feasibility(snakecg.load(sc), Q).feasible
+    assert 0 < ok.sum() < len(Q)
+    whole = read(store)
+    np.testing.assert_array_equal(whole["feasible"], ok)
+    s = summary(store)
+    assert s["feasible_only"] is False and s["summarized_configurations"] == len(Q)
+    _assert_summary(s, ref, _numpy_summary(ref, np.ones(len(Q), bool)), ok)
+    assert main(["sweep", "--summary", str(store), "--feasible-only", "--json"]) == 0
+    s = json.loads(capsys.readouterr().out)
+    assert s["feasible_only"] is True and s["clearance"] == SELF_CLEARANCE
+    _assert_summary(s, ref, _numpy_summary(ref, ok), ok)
+
+    for kwargs, key in (({"feasible": True}, "feasible_only"),
+                        ({"feasible": True, "clearance": 0.02}, "feasibility")):
+        with pytest.raises(snakecg.InputError, match="made with other arguments") as e:
+            snakecg.sweep(sc, grid=grid, store=store, client=client, chunk=30,
+                          progress=False, **kwargs)
+        assert key in str(e.value)
+    root = zarr.open_group(str(store), mode="r+")
+    root["feasible"][30:60] = ~root["feasible"][30:60]
+    res = snakecg.sweep(sc, grid=grid, store=store, client=client, chunk=30, progress=False)
+    assert (res.computed_chunks, res.reused_chunks) == (1, 3)
+    assert_identical(read(store), whole)
+
+
+def test_bad_feasibility_arguments_are_one_line_errors(client, tmp_path, capsys,
+                                                      monkeypatch, feasible_store):
+    monkeypatch.chdir(tmp_path)
+    out = ["--joints", "2", "--out", "new.zarr"]
+    for argv, fragment in (
+            (out + ["--feasible-only", "--clearance=-0.01"], "--clearance: must be >= 0"),
+            (out + ["--feasible-only", "--clearance", "nan"], "finite"),
+            (out + ["--feasible-only", "--clearance", "1cm"], "expected a distance"),
+            (out + ["--clearance", "0.02"], "goes with --feasible-only"),
+            (["--summary", str(feasible_store), "--clearance", "0.02"], "the store's"),
+            (["--figure", str(feasible_store), "--feasible-only", "--clearance", "0"],
+             "the store's"),
+            (out + ["--every-shape"], "--every-shape goes with --summary or --figure"),
+            (["--summary", str(feasible_store), "--every-shape", "--feasible-only"],
+             "not allowed with")):
+        _one_line_error(capsys, ["sweep"] + argv, fragment)
+    assert list(tmp_path.iterdir()) == []
+    sc = scene("wheels")
+    for kwargs, fragment in (({"clearance": 0.02}, "clearance goes with feasible=True"),
+                             ({"feasible": True, "clearance": -1.0}, "clearance must be"),
+                             ({"feasible": True, "clearance": float("inf")}, "clearance must"),
+                             ({"feasible": True, "clearance": True}, "clearance must"),
+                             ({"feasible": "yes"}, "feasible must be True or False")):
+        with pytest.raises(snakecg.InputError, match=fragment):
+            snakecg.sweep(sc, grid=[0.0], store=tmp_path / "g.zarr", **kwargs)
+    assert list(tmp_path.iterdir()) == []
+    from snakecg.sweeps import summary
+
+    with pytest.raises(snakecg.InputError, match="feasible must be True, False or None"):
+        summary(feasible_store, feasible="yes")
+    # a store of an earlier snakecg (no feasible array) cannot be filtered
+    old = tmp_path / "old.zarr"
+    snakecg.sweep(scene("frictionless"), grid=[0.0, 0.5], store=old, client=client,
+                  progress=False)
+    root = zarr.open_group(str(old), mode="r+")
+    meta = dict(root.attrs)["snakecg_sweep"]
+    meta["arrays"].remove("feasible")
+    for k in ("feasibility", "feasible_only"):
+        meta.pop(k)
+    root.attrs["snakecg_sweep"] = meta
+    assert summary(old)["feasible_configurations"] is None
+    _one_line_error(capsys, ["sweep", "--summary", str(old), "--feasible-only"],
+                    "no feasible array")

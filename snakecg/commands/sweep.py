@@ -7,7 +7,7 @@ import argparse
 import sys
 
 from ..errors import InputError
-from ._common import add_robot_args, print_json, scene_from_args
+from ._common import add_robot_args, print_json, real, scene_from_args
 
 #: Version of the JSON printed by ``snakecg sweep --json`` (docs/sweep.md).
 SCHEMA = "snakecg.sweep/1"
@@ -18,6 +18,8 @@ examples:
   snakecg sweep --joints 4 --scenario frictionless --samples 100000 --seed 1 --out s4.zarr --workers 2
   snakecg sweep --joints 3 --range=-90:90,-45:45,0:90 --step 5,5,10 --out part.zarr --scheduler tcp://scheduler-host:8786
   snakecg sweep --summary wheels3.zarr --json
+  snakecg sweep --summary wheels3.zarr --feasible-only
+  snakecg sweep --figure wheels3.zarr --every-shape
   snakecg sweep --figure wheels3.zarr --out wheels3-polar.svg
 """
 
@@ -50,6 +52,20 @@ def register(sub) -> None:
     g.add_argument("--samples", type=int, metavar="N",
                    help="N random configurations, uniform in --range, instead of a grid")
     g.add_argument("--seed", type=int, metavar="S", help="seed of --samples (required with it)")
+    f = p.add_argument_group("feasible shapes (default: every shape, as the paper's grid)")
+    fx = f.add_mutually_exclusive_group()
+    fx.add_argument("--feasible-only", action="store_true",
+                   help="leave out the shapes that are not physically possible (non-adjacent "
+                   "links closer than --clearance, or a link inside the object): with a sweep, "
+                   "the default of its --summary and --figure (every shape is still computed "
+                   "and stored); with --summary or --figure, for that reduction")
+    fx.add_argument("--every-shape", action="store_true",
+                    help="with --summary or --figure: every shape, also of a store made with "
+                    "--feasible-only")
+    f.add_argument("--clearance", type=real(0, unit="m", name="distance"), metavar="M",
+                   help="with --feasible-only when sweeping: least distance between "
+                   "non-adjacent links of a feasible shape, in metres (default 0.01, as "
+                   "snakecg reproduce --feasible-only)")
     r = p.add_argument_group("where and how")
     r.add_argument("--out", metavar="STORE",
                    help="Zarr store to write (a folder, e.g. sweep.zarr); resumed if it exists; "
@@ -127,6 +143,13 @@ def run(args) -> int:
 
     if not args.out:
         raise InputError("--out STORE is required: the Zarr store to write (e.g. sweep.zarr)")
+    if args.every_shape:
+        raise InputError("--every-shape goes with --summary or --figure; a sweep keeps every "
+                         "shape unless --feasible-only is given")
+    if args.clearance is not None and not args.feasible_only:
+        raise InputError("--clearance M goes with --feasible-only (the least distance between "
+                         "non-adjacent links of a feasible shape); without it every shape is "
+                         "kept")
     scene = scene_from_args(args)
     joints = scene.robot.joints
     ranges = _ranges(args.range, joints)
@@ -152,7 +175,8 @@ def run(args) -> int:
             if args.step is not None else [PAPER_STEP_DEG] * joints
         kw = {"grid": [joint_values(lo, hi, st) for (lo, hi), st in zip(ranges, steps)]}
     res = sweep(scene, store=args.out, chunk=args.chunk, scheduler=args.scheduler,
-                workers=args.workers, limit=None if args.force else args.limit, **kw)
+                workers=args.workers, limit=None if args.force else args.limit,
+                feasible=args.feasible_only, clearance=args.clearance, **kw)
     if args.json:
         out = {"schema": SCHEMA, **res.to_dict(), "joints": joints,
                "scenario": scene.scenario, "kappa": scene.kappa, "mu": scene.mu}
@@ -160,7 +184,9 @@ def run(args) -> int:
     else:
         print(f"{res.store}: {res.configurations:,} configurations in {res.chunks} chunks of "
               f"{res.chunk}; computed {res.computed_chunks}, found complete "
-              f"{res.reused_chunks}; {res.seconds:.1f} s")
+              f"{res.reused_chunks}; {res.seconds:.1f} s"
+              + (f"; feasible shapes only (clearance {res.clearance:g} m)"
+                 if res.feasible_only else ""))
     return 0
 
 
@@ -172,10 +198,15 @@ def _reduce(args) -> int:
         if getattr(args, flag) is not None:
             raise InputError(f"--{flag.replace('_', '-')} describes a sweep to run; "
                              f"--summary and --figure read everything from the store")
+    if args.clearance is not None:
+        raise InputError("--clearance is the store's, recorded when the sweep was made; "
+                         "--summary and --figure --feasible-only use it (sweep into a new "
+                         "store for another clearance)")
+    feasible = True if args.feasible_only else False if args.every_shape else None
     if args.summary is not None:
         if args.out is not None:
             raise InputError("--out goes with a sweep or --figure, not with --summary")
-        s = summary(args.summary)
+        s = summary(args.summary, feasible=feasible)
         if args.json:
             print_json(s)
         else:
@@ -185,7 +216,7 @@ def _reduce(args) -> int:
                              f"({s['completed_chunks']} of {s['chunks']} chunks); rerun the "
                              f"sweep to finish it\n")
         return 0
-    path = figure(args.figure, args.out)
+    path = figure(args.figure, args.out, feasible=feasible)
     if args.json:
         print_json({"figure": str(path)})
     else:

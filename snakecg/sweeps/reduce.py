@@ -1,5 +1,6 @@
 """Reductions of a sweep store, chunk by chunk (never the whole store in memory):
-a Table-2-style summary and a Fig.-5-style polar figure of binned maxima."""
+a Table-2-style summary and a Fig.-5-style polar figure of binned maxima, over every shape
+or over the physically feasible ones (the store's ``feasible`` array)."""
 
 from __future__ import annotations
 
@@ -15,21 +16,47 @@ from ..errors import InputError
 from . import store as _store
 from .plan import plan_from_meta
 
-__all__ = ["summary", "figure", "read", "SUMMARY_SCHEMA"]
+__all__ = ["summary", "figure", "binned_maxima", "read", "SUMMARY_SCHEMA"]
 
 #: Version of the summary's JSON (``snakecg sweep --summary STORE --json``).
 SUMMARY_SCHEMA = "snakecg.sweep.summary/1"
 
 
-def _open(store):
+def _path(store) -> Path:
     if not isinstance(store, (str, Path)) or not str(store).strip():
         raise InputError(f"store must be the path of a sweep store, got {store!r}")
-    path = Path(store)
+    return Path(store)
+
+
+def _open(store):
+    path = _path(store)
     if not (path / "zarr.json").is_file():
         raise InputError(f"{str(path)!r} is not a sweep store (no Zarr group there)")
     root = _store.open_existing(path, mode="r")
     meta = dict(root.attrs)["snakecg_sweep"]
     return root, meta, plan_from_meta(meta)
+
+
+def _has_feasible(meta) -> bool:
+    return "feasible" in meta.get("arrays", ())
+
+
+def _feasible_only(store, meta, feasible) -> bool:
+    """Whether a reduction leaves infeasible shapes out: ``feasible`` if given, else the
+    store's choice (``snakecg.sweep(feasible=...)``)."""
+    if feasible is None:
+        return bool(meta.get("feasible_only", False))
+    if not isinstance(feasible, bool):
+        raise InputError(f"feasible must be True, False or None (the store's choice), "
+                         f"got {feasible!r}")
+    if feasible and not _has_feasible(meta):
+        raise InputError(f"{str(store)!r} has no feasible array (it was made by an older "
+                         f"snakecg); sweep into a new store to leave infeasible shapes out")
+    return feasible
+
+
+def _clearance(meta):
+    return meta.get("feasibility", {}).get("clearance")
 
 
 def _recorded(root, plan):
@@ -41,7 +68,7 @@ def read(store) -> dict[str, np.ndarray]:
     """Every array of a (small) store in memory; configurations of chunks not computed yet
     are NaN. Also ``complete``: a boolean per configuration."""
     root, meta, plan = _open(store)
-    out = {name: root[name][:] for name in _store.array_names()}
+    out = {name: root[name][:] for name in meta["arrays"]}
     complete = np.zeros(plan.size, dtype=bool)
     for i in _recorded(root, plan):
         start, stop = plan.chunk_range(i)
@@ -51,6 +78,7 @@ def read(store) -> dict[str, np.ndarray]:
 
 
 def _entry(chunk, j, metric, start):
+    feasible = chunk.get("feasible")
     return {
         "value": float(chunk[f"max_{metric}"][j]),
         "index": int(start + j),
@@ -58,27 +86,39 @@ def _entry(chunk, j, metric, start):
         "tau": [float(x) for x in chunk[f"tau_max_{metric}"][j]],
         "com_radius": float(chunk["com_radius"][j]),
         "com_angle_deg": float(np.rad2deg(chunk["com_angle"][j])),
+        "feasible": None if feasible is None else bool(feasible[j]),
     }
 
 
-def summary(store) -> dict:
+def summary(store, *, feasible=None) -> dict:
     """Table 2 of the sweep: for every metric, the worst (smallest) and the best (largest)
     per-configuration maximum over the input ellipsoid, with the configuration attaining it
-    (index, joint angles in degrees, torque, COM's polar coordinates). Computed chunk by
-    chunk over the chunks written so far (``complete`` says whether that is all of them)."""
+    (index, joint angles in degrees, torque, COM's polar coordinates, whether the shape is
+    feasible). Computed chunk by chunk over the chunks written so far (``complete`` says
+    whether that is all of them).
+
+    ``feasible``: True leaves out the shapes that are not physically possible (the store's
+    ``feasible`` array, at the clearance recorded when it was made), False keeps every shape
+    (the paper's reading), None (default) follows the store (``snakecg.sweep(feasible=...)``).
+    """
     root, meta, plan = _open(store)
+    only = _feasible_only(store, meta, feasible)
+    has = _has_feasible(meta)
     names = ["q", "com_radius", "com_angle"] + [f"{p}{m}" for m in METRICS
                                                   for p in ("max_", "tau_max_")]
+    names += ["feasible"] if has else []
     best: dict = {m: None for m in METRICS}
     worst: dict = {m: None for m in METRICS}
     chunks = _recorded(root, plan)
-    counted = 0
+    counted = n_feasible = 0
     for i in chunks:
         start, stop = plan.chunk_range(i)
         data = _store.read_chunk(root, start, stop, names)
-        counted += stop - start
+        keep = data["feasible"] if has else np.ones(stop - start, dtype=bool)
+        n_feasible += int(np.count_nonzero(keep))
+        counted += int(np.count_nonzero(keep)) if only else stop - start
         for m in METRICS:
-            v = data[f"max_{m}"]
+            v = np.where(keep, data[f"max_{m}"], np.nan) if only else data[f"max_{m}"]
             if not np.any(np.isfinite(v)):
                 continue
             hi, lo = int(np.nanargmax(v)), int(np.nanargmin(v))
@@ -94,6 +134,9 @@ def summary(store) -> dict:
         "scenario": scene["scenario"], "kappa": scene["kappa"], "mu": scene["mu"],
         "configurations": plan.size,
         "summarized_configurations": counted,
+        "feasible_only": only,
+        "clearance": _clearance(meta),
+        "feasible_configurations": n_feasible if has else None,
         "chunks": plan.n_chunks, "completed_chunks": len(chunks),
         "complete": len(chunks) == plan.n_chunks,
         "metrics": {m: {"worst": worst[m], "best": best[m]} for m in METRICS},
@@ -102,33 +145,49 @@ def summary(store) -> dict:
 
 def summary_text(s: dict) -> str:
     """The summary as a terminal table."""
+    which = ""
+    if s.get("feasible_only"):
+        which = f" (feasible shapes only, clearance {s['clearance']:g} m)"
+    elif s.get("feasible_configurations") is not None:
+        which = f" ({s['feasible_configurations']:,} of them feasible)"
     lines = [f"{s['store']}: {s['joints']} joints, {s['scenario']}, kappa {s['kappa']:g}, "
              f"{s['summarized_configurations']:,} of {s['configurations']:,} configurations"
+             + which
              + ("" if s["complete"] else f" (incomplete: {s['completed_chunks']} of "
                                          f"{s['chunks']} chunks)"),
              f"{'per-configuration max of':<26}{'worst':>14}  {'at q (deg)':<28}"
              f"{'best':>14}  at q (deg)"]
+    marked = False
+
+    def at(e):
+        nonlocal marked
+        q = ",".join(f"{x:g}" for x in e["q_deg"])
+        if e.get("feasible") is False:
+            marked = True
+            return q + " *"
+        return q
+
     for m, d in s["metrics"].items():
         if d["worst"] is None:
             lines.append(f"{m:<26}{'-':>14}")
             continue
-        qw = ",".join(f"{x:g}" for x in d["worst"]["q_deg"])
-        qb = ",".join(f"{x:g}" for x in d["best"]["q_deg"])
-        lines.append(f"{m:<26}{d['worst']['value']:>14.6g}  {qw:<28}"
-                     f"{d['best']['value']:>14.6g}  {qb}")
+        lines.append(f"{m:<26}{d['worst']['value']:>14.6g}  {at(d['worst']):<28}"
+                     f"{d['best']['value']:>14.6g}  {at(d['best'])}")
+    if marked:
+        lines.append(f"* a shape that is not physically possible (links closer than "
+                     f"{s['clearance']:g} m or inside the object); --feasible-only leaves "
+                     f"them out")
     return "\n".join(lines)
 
 
-def figure(store, out=None, *, radius_bins: int = 24, angle_bins: int = 36) -> Path:
+def figure(store, out=None, *, radius_bins: int = 24, angle_bins: int = 36,
+           feasible=None) -> Path:
     """Fig. 5 of the sweep: for each metric, the largest per-configuration maximum in each
     bin of the COM's polar coordinates (|COM| from the contact point, angle from the
     contacting link's axis), drawn on polar axes. Written (atomically) to ``out``, default
-    ``STORE-polar.png`` beside the store; the format follows the suffix (png, svg, pdf)."""
-    root, meta, plan = _open(store)
-    for name, v in (("radius_bins", radius_bins), ("angle_bins", angle_bins)):
-        if isinstance(v, bool) or not isinstance(v, int) or v < 2:
-            raise InputError(f"{name} must be an integer >= 2, got {v!r}")
-    path = Path(store)
+    ``STORE-polar.png`` beside the store; the format follows the suffix (png, svg, pdf).
+    ``feasible``: as in :func:`summary` (True: feasible shapes only)."""
+    path = _path(store)
     out = Path(out) if out is not None else path.with_name(path.name.removesuffix(".zarr")
                                                             + "-polar.png")
     fmt = out.suffix.lower().lstrip(".")
@@ -136,31 +195,63 @@ def figure(store, out=None, *, radius_bins: int = 24, angle_bins: int = 36) -> P
         raise InputError(f"figure file {str(out)!r} must end in .png, .svg or .pdf")
     if not out.parent.is_dir():
         raise InputError(f"figure file {str(out)!r}: its folder does not exist")
+    b = binned_maxima(store, radius_bins=radius_bins, angle_bins=angle_bins,
+                      feasible=feasible)
+    size = b["configurations"]
+    which = (f"{b['binned_configurations']:,} feasible configurations (clearance "
+             f"{b['clearance']:g} m) of {size:,}" if b["feasible_only"]
+             else f"{size:,} configurations")
+    _draw(b["maxima"], b["radius_max"], b["meta"], which, out, fmt)
+    return out
+
+
+def binned_maxima(store, *, radius_bins: int = 24, angle_bins: int = 36,
+                  feasible=None) -> dict:
+    """What :func:`figure` draws: ``maxima[m]`` ``(angle_bins, radius_bins)``, the largest
+    per-configuration maximum of metric ``m`` in each bin (``-inf`` for an empty bin); the
+    angle bins split -pi..pi evenly, the radius bins 0..``radius_max`` (just above the
+    largest |COM| of the configurations binned). Also ``binned_configurations``,
+    ``configurations``, ``feasible_only``, ``clearance`` and the store's ``meta``."""
+    root, meta, plan = _open(store)
+    only = _feasible_only(store, meta, feasible)
+    for name, v in (("radius_bins", radius_bins), ("angle_bins", angle_bins)):
+        if isinstance(v, bool) or not isinstance(v, int) or v < 2:
+            raise InputError(f"{name} must be an integer >= 2, got {v!r}")
     chunks = _recorded(root, plan)
     if not chunks:
         raise InputError(f"{str(store)!r} has no completed chunk yet; nothing to draw")
-    rmax = 0.0
+    rmax, shown = 0.0, 0
     for i in chunks:  # pass 1: the radius range
         start, stop = plan.chunk_range(i)
-        rmax = max(rmax, float(np.nanmax(root["com_radius"][start:stop])))
+        r = root["com_radius"][start:stop]
+        if only:
+            r = r[root["feasible"][start:stop]]
+        shown += r.size
+        if r.size:
+            rmax = max(rmax, float(np.nanmax(r)))
+    if not shown:
+        raise InputError(f"{str(store)!r} has no feasible configuration in its completed "
+                         f"chunks; nothing to draw with feasible shapes only")
     rmax = rmax * (1 + 1e-9) or 1.0
     grid = {m: np.full((angle_bins, radius_bins), -np.inf) for m in METRICS}
     for i in chunks:  # pass 2: binned maxima
         start, stop = plan.chunk_range(i)
         data = _store.read_chunk(root, start, stop,
-                                 ["com_radius", "com_angle"] + [f"max_{m}" for m in METRICS])
+                                 ["com_radius", "com_angle"] + [f"max_{m}" for m in METRICS]
+                                 + (["feasible"] if only else []))
         ri = np.clip((data["com_radius"] / rmax * radius_bins).astype(int), 0, radius_bins - 1)
         ai = np.clip(((data["com_angle"] + math.pi) / (2 * math.pi) * angle_bins).astype(int),
                      0, angle_bins - 1)
         for m in METRICS:
             v = data[f"max_{m}"]
-            ok = np.isfinite(v)
+            ok = np.isfinite(v) & data["feasible"] if only else np.isfinite(v)
             np.maximum.at(grid[m], (ai[ok], ri[ok]), v[ok])
-    _draw(grid, rmax, meta, plan, out, fmt)
-    return out
+    return {"maxima": grid, "radius_max": rmax, "binned_configurations": shown,
+            "configurations": plan.size, "feasible_only": only, "clearance": _clearance(meta),
+            "meta": meta}
 
 
-def _draw(grid, rmax, meta, plan, out: Path, fmt: str) -> None:
+def _draw(grid, rmax, meta, which: str, out: Path, fmt: str) -> None:
     import matplotlib
 
     matplotlib.use("Agg")
@@ -180,9 +271,9 @@ def _draw(grid, rmax, meta, plan, out: Path, fmt: str) -> None:
         ax.tick_params(labelsize=7)
         fig.colorbar(mesh, ax=ax, shrink=0.7, pad=0.08)
     scene = meta["scene"]
-    fig.suptitle(f"{plan.size:,} configurations, {meta['robot']['joints']} joints, "
-                 f"{scene['scenario']}, kappa = {scene['kappa']:g}: per-configuration maxima "
-                 f"over the input ellipsoid,\nbinned over |COM| [m] from the contact point and "
+    fig.suptitle(f"{which}, {meta['robot']['joints']} joints, "
+                 f"{scene['scenario']}, kappa = {scene['kappa']:g}:\nper-configuration maxima "
+                 f"over the input ellipsoid, binned over |COM| [m] from the contact point\nand "
                  f"the angle of COM from the contacting link's axis", fontsize=10)
     tmp = out.with_name(f".{out.name}.{uuid.uuid4().hex}.partial")
     try:

@@ -4,6 +4,7 @@ chunk by chunk into a Zarr store, resumable."""
 from __future__ import annotations
 
 import dataclasses
+import math
 import sys
 import time
 import uuid
@@ -13,6 +14,7 @@ from pathlib import Path
 import numpy as np
 
 from ..errors import InputError, SnakecgError
+from ..geometry import OBJECT_SIDE, PENETRATION_TOLERANCE, SELF_CLEARANCE
 from ..robot import Scene
 from . import store as _store
 from .cluster import ProgressLines, connect, dashboard_of, progress_mode, start_bar
@@ -39,12 +41,16 @@ class SweepResult:
     reused_chunks: int
     seconds: float
     dashboard: str | None = None
+    #: Whether the store's reductions leave infeasible shapes out by default, and the
+    #: clearance (m) of its ``feasible`` array.
+    feasible_only: bool = False
+    clearance: float = SELF_CLEARANCE
 
     def to_dict(self) -> dict:
         return dataclasses.asdict(self)
 
 
-def _meta(scene: Scene, plan: Plan) -> dict:
+def _meta(scene: Scene, plan: Plan, feasible: bool, clearance: float) -> dict:
     from .. import __version__
 
     robot = dataclasses.asdict(scene.robot)
@@ -56,8 +62,14 @@ def _meta(scene: Scene, plan: Plan) -> dict:
         "configurations": plan.describe(), "n_configurations": plan.size,
         "chunk": plan.chunk, "n_chunks": plan.n_chunks,
         "arrays": list(_store.array_names()),
-        "per_configuration": "SceneModel.extremes(q) with its defaults and "
-                             "SceneModel.com_polar(q), q = (0, 0, 0, joint angles)",
+        "per_configuration": "SceneModel.extremes(q) with its defaults, "
+                             "SceneModel.com_polar(q) and snakecg.geometry.feasibility(model, "
+                             "q, clearance=clearance).feasible, q = (0, 0, 0, joint angles)",
+        # what the feasible array means (it is computed for every store) and whether the
+        # reductions leave the infeasible configurations out by default
+        "feasibility": {"clearance": clearance, "object_side": OBJECT_SIDE,
+                        "penetration_tolerance": PENETRATION_TOLERANCE},
+        "feasible_only": feasible,
     }
     return _store._normalise(meta)
 
@@ -78,9 +90,27 @@ def make_plan(scene: Scene, *, grid=None, samples=None, seed=None, bounds=None,
     return grid_plan(joints, grid, scene.scenario, chunk)
 
 
+def check_feasible(feasible, clearance) -> float:
+    """The clearance (m) of a sweep's feasibility check, validated: ``clearance`` goes with
+    ``feasible=True``; default :data:`snakecg.geometry.SELF_CLEARANCE`."""
+    if not isinstance(feasible, bool):
+        raise InputError(f"feasible must be True or False, got {feasible!r}")
+    if clearance is None:
+        return SELF_CLEARANCE
+    if not feasible:
+        raise InputError("clearance goes with feasible=True (the least distance between "
+                         "non-adjacent links of a feasible shape); without it every shape "
+                         "is kept")
+    if (isinstance(clearance, bool) or not isinstance(clearance, (int, float, np.floating))
+            or not math.isfinite(clearance) or clearance < 0):
+        raise InputError(f"clearance must be a finite number >= 0 (m, least distance between "
+                         f"non-adjacent links), got {clearance!r}")
+    return float(clearance)
+
+
 def sweep(scene, *, grid=None, samples=None, seed=None, store, client=None, chunk=None,
           progress=None, bounds=None, scheduler=None, workers=None, limit=LIMIT,
-          verify=True) -> SweepResult:
+          verify=True, feasible=False, clearance=None) -> SweepResult:
     """Evaluate :meth:`~snakecg.SceneModel.extremes` and the COM's polar coordinates for
     every configuration of a grid or of seeded samples, in chunks on Dask, into a Zarr store.
 
@@ -103,6 +133,15 @@ def sweep(scene, *, grid=None, samples=None, seed=None, store, client=None, chun
       line per tenth; ``SNAKECG_PROGRESS=0`` silences it), True, False, ``"bar"``,
       ``"lines"``.
     * ``limit``: refuse more configurations than this (None: no limit).
+    * ``feasible``: False (default) keeps every shape, as the paper's grid does; True makes
+      the store's reductions (:func:`~snakecg.sweeps.summary`,
+      :func:`~snakecg.sweeps.figure`) leave out by default the shapes that are not physically
+      possible. Every configuration is evaluated either way, and the store always holds a
+      boolean ``feasible`` array (:func:`snakecg.geometry.feasibility`): non-adjacent links
+      at least ``clearance`` apart and no link inside the object.
+    * ``clearance``: that least distance [m], with ``feasible=True`` only; default
+      :data:`snakecg.geometry.SELF_CLEARANCE` (1 cm, the default of
+      ``snakecg reproduce --feasible-only`` too). Recorded in the store's attributes.
 
     Returns a :class:`SweepResult`. Inputs are checked before any work; a bad one raises
     :class:`~snakecg.InputError` and writes nothing.
@@ -111,6 +150,7 @@ def sweep(scene, *, grid=None, samples=None, seed=None, store, client=None, chun
     if not isinstance(scene, Scene):
         raise InputError(f"scene must be a snakecg.Scene, got {type(scene).__name__}")
     plan = make_plan(scene, grid=grid, samples=samples, seed=seed, bounds=bounds, chunk=chunk)
+    clearance = check_feasible(feasible, clearance)
     if limit is not None:
         if isinstance(limit, bool) or not isinstance(limit, int) or limit < 1:
             raise InputError(f"limit must be an integer >= 1 or None, got {limit!r}")
@@ -131,7 +171,7 @@ def sweep(scene, *, grid=None, samples=None, seed=None, store, client=None, chun
     if not isinstance(store, (str, Path)) or not str(store).strip():
         raise InputError(f"store must be a path (e.g. 'sweep.zarr'), got {store!r}")
     path = Path(store)
-    meta = _meta(scene, plan)
+    meta = _meta(scene, plan, feasible, clearance)
     state = _store.check_target(path)
     root, done = None, np.zeros(plan.n_chunks, dtype=bool)
     if state == "existing":
@@ -142,7 +182,7 @@ def sweep(scene, *, grid=None, samples=None, seed=None, store, client=None, chun
     if not todo:
         _mark(root, plan.n_chunks, plan.n_chunks)
         return SweepResult(str(path), plan.size, plan.n_chunks, plan.chunk, 0, reused,
-                           time.perf_counter() - t0)
+                           time.perf_counter() - t0, None, feasible, clearance)
     c, close = connect(client=client, scheduler=scheduler, workers=workers)
     try:
         dashboard = dashboard_of(c)
@@ -150,24 +190,24 @@ def sweep(scene, *, grid=None, samples=None, seed=None, store, client=None, chun
             sys.stderr.write(f"snakecg sweep: Dask dashboard at {dashboard}\n")
         if root is None:
             root = _store.create(path, meta, plan.size, plan.chunk, plan.joints)
-        _compute(c, scene, plan, root, todo, reused, mode)
+        _compute(c, scene, plan, root, todo, reused, mode, clearance)
     finally:
         close()
     return SweepResult(str(path), plan.size, plan.n_chunks, plan.chunk, len(todo), reused,
-                       time.perf_counter() - t0, dashboard)
+                       time.perf_counter() - t0, dashboard, feasible, clearance)
 
 
 def _mark(root, completed: int, total: int) -> None:
     root.attrs.update({"completed_chunks": int(completed), "complete": completed == total})
 
 
-def _compute(client, scene, plan, root, todo, reused, mode) -> None:
+def _compute(client, scene, plan, root, todo, reused, mode, clearance) -> None:
     from distributed import as_completed
     from distributed.client import FutureCancelledError
 
     tag = uuid.uuid4().hex[:8]
-    futures = [client.submit(evaluate_chunk, scene, plan, i, key=f"snakecg-sweep-{tag}-{i}",
-                             pure=False) for i in todo]
+    futures = [client.submit(evaluate_chunk, scene, plan, i, clearance,
+                             key=f"snakecg-sweep-{tag}-{i}", pure=False) for i in todo]
     index = {f.key: i for f, i in zip(futures, todo)}
     lines = ProgressLines(plan.n_chunks, reused, plan.size) if mode == "lines" else None
     if mode == "bar":

@@ -9,12 +9,16 @@ Layout (a Zarr v3 group, a folder ``STORE.zarr``), every array chunked like the 
 * for every metric ``m`` of :data:`snakecg.analysis.METRICS`: ``max_m`` / ``min_kept_m``
   ``(N,)`` and the torques attaining them ``tau_max_m`` / ``tau_min_kept_m`` ``(N, n_a)``
   (:class:`snakecg.analysis.Extremes` ``.max``, ``.min_kept`` and their ``tau_`` partners);
+* ``feasible`` ``(N,)`` bool: the shape is physically possible
+  (:func:`snakecg.geometry.feasibility` at the clearance recorded in the attributes); every
+  configuration is evaluated either way, reductions may leave the infeasible ones out;
 * ``chunk_digest`` ``(n_chunks,)`` uint64: 0 for a chunk not written yet, else a BLAKE2b
   digest of the chunk's data. It is written only after all of the chunk's data, so a chunk
   counts as complete only when its data is all there; on resume every recorded chunk is
   read back and checked against its digest (a mismatch is computed again).
 * attributes ``snakecg_sweep``: robot, scene, grid or sampling, chunk, package version,
-  array names (the fingerprint a resumed sweep must match); ``completed_chunks`` and
+  array names, the feasibility check's clearance and whether the reductions default to
+  feasible shapes only (the fingerprint a resumed sweep must match); ``completed_chunks`` and
   ``complete``, updated as the sweep goes.
 
 Zarr's local store writes each key through a temporary file and a rename, and the group is
@@ -49,7 +53,7 @@ def array_names() -> tuple[str, ...]:
     names = ["q", "com_radius", "com_angle"]
     for m in METRICS:
         names += [f"max_{m}", f"tau_max_{m}", f"min_kept_{m}", f"tau_min_kept_{m}"]
-    return tuple(names)
+    return tuple(names + ["feasible"])
 
 
 def _zarr():
@@ -93,8 +97,10 @@ def create(path: Path, meta: dict, n_configurations: int, chunk: int, joints: in
             wide = name == "q" or name.startswith("tau_")
             shape = (n_configurations, joints) if wide else (n_configurations,)
             chunks = (chunk, joints) if wide else (chunk,)
-            root.create_array(name, shape=shape, chunks=chunks, dtype="float64",
-                              fill_value=np.nan, compressors=None)
+            flag = name == "feasible"
+            root.create_array(name, shape=shape, chunks=chunks,
+                              dtype="bool" if flag else "float64",
+                              fill_value=False if flag else np.nan, compressors=None)
         root.create_array("chunk_digest", shape=(n_chunks,), chunks=(min(n_chunks,
                                                                          _DIGEST_BLOCK),),
                           dtype="uint64", fill_value=0, compressors=None)
@@ -134,10 +140,12 @@ def open_existing(path: Path, meta: dict | None = None, *, mode: str = "r+"):
 
 
 def digest(arrays: dict[str, np.ndarray]) -> int:
-    """Nonzero 64-bit BLAKE2b digest of a chunk's arrays (in :func:`array_names` order)."""
+    """Nonzero 64-bit BLAKE2b digest of a chunk's arrays (in :func:`array_names` order;
+    ``feasible`` as one byte per configuration)."""
     h = hashlib.blake2b(digest_size=8)
     for name in array_names():
-        h.update(np.ascontiguousarray(arrays[name], dtype=np.float64).tobytes())
+        dtype = np.uint8 if name == "feasible" else np.float64
+        h.update(np.ascontiguousarray(arrays[name], dtype=dtype).tobytes())
     return int.from_bytes(h.digest(), "little") | 1
 
 

@@ -12,6 +12,7 @@ import threading
 import numpy as np
 
 from ..analysis import METRICS
+from ..geometry import SELF_CLEARANCE, feasibility
 
 __all__ = ["evaluate_chunk", "evaluate"]
 
@@ -29,9 +30,10 @@ def _model(scene):
         return model
 
 
-def evaluate(model, q: np.ndarray) -> dict[str, np.ndarray]:
+def evaluate(model, q: np.ndarray, clearance: float = SELF_CLEARANCE) -> dict[str, np.ndarray]:
     """Per-configuration arrays of the store for configurations ``q`` ``(n, n_a + 3)``:
-    :meth:`~snakecg.SceneModel.extremes` and :meth:`~snakecg.SceneModel.com_polar`."""
+    :meth:`~snakecg.SceneModel.extremes`, :meth:`~snakecg.SceneModel.com_polar` and
+    :func:`~snakecg.geometry.feasibility` at ``clearance`` (m)."""
     ex = model.extremes(q)
     radius, angle = model.com_polar(q)
     out = {"q": q[:, 3:], "com_radius": radius, "com_angle": angle}
@@ -40,9 +42,13 @@ def evaluate(model, q: np.ndarray) -> dict[str, np.ndarray]:
         out[f"tau_max_{m}"] = ex.tau_max[m]
         out[f"min_kept_{m}"] = ex.min_kept[m]
         out[f"tau_min_kept_{m}"] = ex.tau_min_kept[m]
-    return {k: np.ascontiguousarray(v, dtype=np.float64) for k, v in out.items()}
+    out = {k: np.ascontiguousarray(v, dtype=np.float64) for k, v in out.items()}
+    out["feasible"] = np.ascontiguousarray(feasibility(model, q, clearance=clearance).feasible,
+                                           dtype=bool)
+    return out
 
 
-def evaluate_chunk(scene, plan, index: int) -> dict[str, np.ndarray]:
+def evaluate_chunk(scene, plan, index: int, clearance: float = SELF_CLEARANCE
+                   ) -> dict[str, np.ndarray]:
     """The store's arrays for chunk ``index`` of ``plan`` (runs on a worker)."""
-    return evaluate(_model(scene), plan.configurations(index))
+    return evaluate(_model(scene), plan.configurations(index), clearance)
