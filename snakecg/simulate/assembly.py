@@ -161,6 +161,7 @@ def summary(sim, tr: Trajectory, status: str) -> dict:
             "atol": None if cfg.fixed_step is not None else cfg.atol,
             "stabilization": cfg.alpha, "segments": sim.segments,
             "rhs_evaluations": dyn.nfev, "singular_samples": dyn.singular,
+            "compiled_segments": sim.compiled is not None,
             "wall_time_s": sim.wall,
         },
     })
