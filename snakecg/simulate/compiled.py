@@ -115,3 +115,19 @@ class CompiledSegments:
             status={SEG_END: 0, SEG_EVENT: 1, SEG_TOO_SMALL: -1}[status],
             message=_TOO_SMALL if status == SEG_TOO_SMALL else "",
             t_events=t_events, y_events=y_events)
+
+    def rates(self, y, mode, tau):
+        """The C right-hand side alone at ``y`` in ``mode`` with the torque ``tau`` (for
+        tests): ``(ydot, lam, A V, gap, s)``, or ``None`` where it hands the state back."""
+        dyn, seg = self.dyn, self.seg
+        self.tau[:] = tau
+        self.state[:] = mode.state
+        yy = np.ascontiguousarray(y, dtype=float)
+        ydot = np.zeros(dyn.ny)
+        extra = np.zeros(2 * dyn.nc + 2)
+        status = self._model.core.mode_rates(self._address, yy.ctypes.data, ydot.ctypes.data,
+                                             extra.ctypes.data)
+        if status != 0:
+            return None
+        nc = dyn.nc
+        return ydot, extra[:nc], extra[nc:2 * nc], float(extra[2 * nc]), float(extra[-1])
