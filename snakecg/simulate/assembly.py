@@ -162,6 +162,7 @@ def summary(sim, tr: Trajectory, status: str) -> dict:
             "stabilization": cfg.alpha, "segments": sim.segments,
             "rhs_evaluations": dyn.nfev, "singular_samples": dyn.singular,
             "compiled_segments": sim.compiled is not None,
+            "segment_cpu_s": sim.segment_cpu,
             "wall_time_s": sim.wall,
         },
     })

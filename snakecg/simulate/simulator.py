@@ -44,6 +44,7 @@ class Simulator:
         self.initial_mode = self.final_mode = ""
         self.segments = 0
         self.wall = 0.0
+        self.segment_cpu = 0.0  # CPU seconds inside the segment integrations
         reason = compiled_reason(settings) if settings.integrator != "scipy" else "asked for"
         if settings.integrator == "compiled" and reason is not None:
             raise InputError(f"integrator='compiled' is not available for this run: {reason};"
@@ -120,6 +121,7 @@ class Simulator:
             if cfg.fixed_step is not None:
                 opts["first_step"] = min(cfg.fixed_step, t_end - t)
             sol = None
+            cpu0 = time.process_time()
             if self.compiled is not None:
                 sol = self.compiled.run(t, t_end, y, mode, tau_fn(t, y, mode), evs, t_eval)
             try:
@@ -130,6 +132,7 @@ class Simulator:
                 raise
             except (ValueError, np.linalg.LinAlgError, ArithmeticError) as exc:
                 raise SimulationError(f"integration failed at t = {t:.6g} s: {exc}") from exc
+            self.segment_cpu += time.process_time() - cpu0
             segments += 1
             if sol.status < 0:
                 raise SimulationError(f"integration failed at t = {t:.6g} s: {sol.message}")
