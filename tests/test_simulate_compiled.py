@@ -103,9 +103,10 @@ def test_right_hand_side_against_dense_reference(models, scenario):
             qo = qo + rng.normal(0, 1e-3, 3)
             y = np.concatenate([q, qo, rng.normal(0, 0.1, 6), rng.normal(0, 0.05, 3),
                                 np.zeros(3)])
-            got = sim.compiled.rates(y, mode, TAU3)
-            assert got is not None
-            ydot, lam, AV, gap, s = got
+            got = sim.compiled.samples(y[None, :], mode, TAU3)
+            assert got["ok"].all()
+            ydot, lam, AV = got["ydot"][0], got["lam"][0], got["AV"][0]
+            gap, s = got["gap"][0], got["s"][0]
             r_ydot, r_lam, r_AV, r_gap = _reference_rates(ref, y, state, TAU3, sim.dyn.rho,
                                                           10.0)
             scale = np.abs(r_ydot).max()
@@ -114,10 +115,19 @@ def test_right_hand_side_against_dense_reference(models, scenario):
             np.testing.assert_allclose(AV, r_AV, rtol=0, atol=1e-12)
             assert gap == pytest.approx(r_gap, abs=1e-13)
             # the Python right-hand side (solve_ivp's path): same equations, to rounding
-            p_ydot, p_lam, p_gap, p_s, p_AV, _ = dyn.rates(0.0, y, mode, lambda t, y, m: TAU3)
+            p_ydot, p_lam, p_gap, p_s, p_AV, extras = dyn.rates(0.0, y, mode,
+                                                                lambda t, y, m: TAU3)
             np.testing.assert_allclose(ydot, p_ydot, rtol=0, atol=1e-11 * scale)
             np.testing.assert_allclose(AV, p_AV, rtol=0, atol=1e-14)
             assert s == p_s and gap == p_gap
+            # eqs. (26), (27), (30) from the reference's mass matrix and object inertia
+            qdd, a_obj = r_ydot[9:15], r_ydot[15:18]
+            nq = qdd @ ref.mass_matrix(y[:6]) @ qdd
+            na = a_obj @ (np.array([ref.m_obj, ref.m_obj, ref.I_obj_rot]) * a_obj)
+            assert got["norm_qdd"][0] == pytest.approx(nq, rel=1e-7)
+            assert got["norm_a_obj"][0] == pytest.approx(na, rel=1e-7, abs=1e-14)
+            assert got["sr"][0] == pytest.approx(na / (na + nq), rel=1e-7, abs=1e-14)
+            assert got["sr"][0] == pytest.approx(extras[1], rel=1e-9, abs=1e-15)
 
 
 def _thrown(sm, speed=0.2, gap0=0.01):

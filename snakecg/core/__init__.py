@@ -59,8 +59,8 @@ class Core:
         self._rules = rules
         self._constants = CONSTANTS.copy()
         self.constants_address = self._constants.ctypes.data
-        self.integrate_segment, self.mode_rates = segment_functions(lib, manifest["prefix"])
-        """integrate.c's ``core_integrate_segment`` and ``core_mode_rates``
+        self.integrate_segment, self.mode_samples = segment_functions(lib, manifest["prefix"])
+        """integrate.c's ``core_integrate_segment`` and ``core_mode_samples``
         (:mod:`snakecg.core.segment`)."""
 
     def next_states(self, state, lam, w, G, bounds) -> tuple[np.ndarray, bool]:

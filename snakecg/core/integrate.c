@@ -130,8 +130,8 @@ typedef struct {
   signed char state[NC];
   double bounds[NC];
   sc_int nfev;
-  /* the last evaluation's quantities (for the event functions) */
-  double lam[NC], av[NC], gap, s;
+  /* the last evaluation's quantities (for the event functions and the samples) */
+  double lam[NC], av[NC], gap, s, M[NS * NS];
 } sc_ctx;
 
 static int ctx_alloc(sc_ctx *c) {
@@ -210,7 +210,7 @@ static void row_velocities(const sc_ctx *c, const double *J, const double *q, co
 static int rhs(sc_ctx *c, const double *y, double *ydot) {
   const sc_segment *sg = c->sg;
   const double *q = y, *qo = y + NS, *v = y + NX, *vo = y + NX + NS;
-  double M[NS * NS], G[NC * NC], b[NC], qdd_free[NS], a_free[3], Kq[NS * NC], Ka[3 * NC];
+  double G[NC * NC], b[NC], qdd_free[NS], a_free[3], Kq[NS * NC], Ka[3 * NC];
   double J[3 * NL * NS], L[NC * NC], d[NC], z[NC], *lam = c->lam, *av = c->av, ratio = 1.0;
   double p_tau = 0.0, p_fric = 0.0, p_obj = 0.0;
   int held[NC], m = 0, i, j, r;
@@ -228,7 +228,7 @@ static int rhs(sc_ctx *c, const double *y, double *ydot) {
   c->arg[CS_IN_object_inertia] = sg->scene + SCENE_object_inertia;
   c->arg[CS_IN_rho] = sg->rho;
   c->arg[CS_IN_wheel_offset] = sg->scene + SCENE_wheel_offset;
-  c->res[CS_OUT_M] = M;
+  c->res[CS_OUT_M] = c->M;
   c->res[CS_OUT_delassus] = G;
   c->res[CS_OUT_b] = b;
   c->res[CS_OUT_qdd_free] = qdd_free;
@@ -639,12 +639,16 @@ int SNAKECG_EXPORT(core_integrate_segment)(sc_segment *sg) {
   return st;
 }
 
-/* The right-hand side alone at y (for the tests against snakecg/simulate/dynamics.py):
- * ydot (NY), then lam (NC), A V (NC), gap, s into extra. Returns 0 or SEG_PYTHON. */
-int SNAKECG_EXPORT(core_mode_rates)(sc_segment *sg, const double *y, double *ydot,
-                                    double *extra) {
+/* The trajectory's quantities at n states Y (n x NY, row-major) in the segment's mode: row i
+ * of out (SAMPLE_WIDTH = NY + 2 NC + 6 columns) is ydot (NY), lam (NC), A V (NC), gap, s, sr,
+ * norm_a_obj, norm_qdd (eqs. 30, 27, 26) and the sample's status (0, or SEG_PYTHON where the
+ * Python path must evaluate it). Returns 0, or SEG_MEMORY. */
+int SNAKECG_EXPORT(core_mode_samples)(sc_segment *sg, sc_int n, const double *Y, double *out) {
+  const int width = NY + 2 * NC + 6;
+  const double *I_obj = sg->scene + SCENE_object_mass;
   sc_ctx c;
-  int i, st;
+  sc_int k;
+  int i, j;
   if (ctx_alloc(&c)) {
     ctx_free(&c);
     return SEG_MEMORY;
@@ -655,11 +659,26 @@ int SNAKECG_EXPORT(core_mode_rates)(sc_segment *sg, const double *y, double *ydo
     c.state[i] = (signed char)sg->state[i];
     c.bounds[i] = sg->scene[SCENE_bounds + i];
   }
-  st = rhs(&c, y, ydot);
-  memcpy(extra, c.lam, sizeof(double) * NC);
-  memcpy(extra + NC, c.av, sizeof(double) * NC);
-  extra[2 * NC] = c.gap;
-  extra[2 * NC + 1] = c.s;
+  for (k = 0; k < n; ++k) {
+    double *row = out + k * width, *extra = row + NY, nq = 0.0, na;
+    const double *qdd = row + NX, *a = row + NX + NS;
+    const int st = rhs(&c, Y + k * NY, row);
+    memcpy(extra, c.lam, sizeof(double) * NC);
+    memcpy(extra + NC, c.av, sizeof(double) * NC);
+    extra[2 * NC] = c.gap;
+    extra[2 * NC + 1] = c.s;
+    for (i = 0; i < NS; ++i) {
+      double t = 0.0;
+      for (j = 0; j < NS; ++j) t += c.M[i + NS * j] * qdd[j];
+      nq += qdd[i] * t;
+    }
+    na = I_obj[0] * a[0] * a[0] + I_obj[0] * a[1] * a[1] +
+         sg->scene[SCENE_object_inertia] * a[2] * a[2];
+    extra[2 * NC + 2] = na / fmax(na + nq, 1e-300);
+    extra[2 * NC + 3] = na;
+    extra[2 * NC + 4] = nq;
+    extra[2 * NC + 5] = (double)st;
+  }
   ctx_free(&c);
-  return st;
+  return 0;
 }

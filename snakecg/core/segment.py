@@ -1,7 +1,7 @@
 """The Python side of ``integrate.c``: one integration segment of a simulation in C.
 
 :class:`Segment` mirrors the C struct ``sc_segment`` field by field (inputs, then outputs);
-:func:`segment_functions` binds ``core_integrate_segment`` and ``core_mode_rates`` of a
+:func:`segment_functions` binds ``core_integrate_segment`` and ``core_mode_samples`` of a
 compiled model library. The caller (:mod:`snakecg.simulate.compiled`) owns the arrays whose
 addresses it stores in a :class:`Segment`.
 """
@@ -38,16 +38,16 @@ class Segment(ctypes.Structure):
 
 
 def segment_functions(lib: ctypes.CDLL, prefix: str):
-    """``(integrate, rates)``: ``core_integrate_segment(&segment)`` and
-    ``core_mode_rates(&segment, y, ydot, extra)`` of ``lib``, or ``(None, None)`` for a
+    """``(integrate, samples)``: ``core_integrate_segment(&segment)`` and
+    ``core_mode_samples(&segment, n, Y, out)`` of ``lib``, or ``(None, None)`` for a
     library built without them."""
     try:
         integrate = getattr(lib, f"{prefix}core_integrate_segment")
-        rates = getattr(lib, f"{prefix}core_mode_rates")
+        samples = getattr(lib, f"{prefix}core_mode_samples")
     except AttributeError:
         return None, None
     integrate.argtypes = [_P]
     integrate.restype = ctypes.c_int
-    rates.argtypes = [_P, _P, _P, _P]
-    rates.restype = ctypes.c_int
-    return integrate, rates
+    samples.argtypes = [_P, _I, _P, _P]
+    samples.restype = ctypes.c_int
+    return integrate, samples

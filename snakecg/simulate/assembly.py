@@ -36,8 +36,12 @@ def assemble(sim, samples, events, status) -> Trajectory:
     contact = np.zeros(N, dtype=bool)
     wheel_state = np.empty((N, nl), dtype="<U6")
     impact = np.array([s[4] for s in samples])
+    compiled = _compiled_samples(sim, samples, Y)
     for i, (ti, yi, mode, tau_fn, _) in enumerate(samples):
-        ydot, li, gi, si, AV, (taui, sri, nai, nqi) = dyn.rates(ti, yi, mode, tau_fn)
+        if compiled is not None and compiled[i] is not None:
+            ydot, li, gi, si, AV, (taui, sri, nai, nqi) = compiled[i]
+        else:
+            ydot, li, gi, si, AV, (taui, sri, nai, nqi) = dyn.rates(ti, yi, mode, tau_fn)
         tau[i], lam[i], gap[i], s_[i], AVs[i] = taui, li, gi, si, AV
         qdd[i] = ydot[nx:nx + ns]
         a_obj[i] = ydot[nx + ns:2 * nx]
@@ -87,6 +91,32 @@ def assemble(sim, samples, events, status) -> Trajectory:
         energy_residual=residual, events=events, summary={}, geometry=geometry)
     traj.summary = summary(sim, traj, status)
     return traj
+
+
+def _compiled_samples(sim, samples, Y):
+    """What :meth:`~snakecg.simulate.dynamics.Dynamics.rates` gives at each sample, from the
+    compiled core in one call per run of samples in the same mode and torque (``None`` for the
+    run without compiled segments, and for a sample the C hands back)."""
+    if sim.compiled is None:
+        return None
+    out = [None] * len(samples)
+    start = 0
+    while start < len(samples):
+        _, y0, mode, tau_fn, _ = samples[start]
+        end = start + 1
+        while end < len(samples) and samples[end][2] is mode and samples[end][3] is tau_fn:
+            end += 1
+        tau = np.asarray(tau_fn(samples[start][0], y0, mode), dtype=float)
+        r = sim.compiled.samples(Y[start:end], mode, tau)
+        sim.dyn.nfev += end - start
+        for k in range(end - start):
+            if r["ok"][k]:
+                out[start + k] = (r["ydot"][k], r["lam"][k], float(r["gap"][k]),
+                                  float(r["s"][k]), r["AV"][k],
+                                  (tau, float(r["sr"][k]), float(r["norm_a_obj"][k]),
+                                   float(r["norm_qdd"][k])))
+        start = end
+    return out
 
 
 def summary(sim, tr: Trajectory, status: str) -> dict:

@@ -50,6 +50,7 @@ class CompiledSegments:
         model = settings.model
         self.dyn = dyn
         self._fn = model.core.integrate_segment
+        self._samples = model.core.mode_samples
         self._model = model  # keeps the scene vector alive
         ny, na, nc = dyn.ny, dyn.na, dyn.nc
         self.y0 = np.zeros(ny)
@@ -116,18 +117,22 @@ class CompiledSegments:
             message=_TOO_SMALL if status == SEG_TOO_SMALL else "",
             t_events=t_events, y_events=y_events)
 
-    def rates(self, y, mode, tau):
-        """The C right-hand side alone at ``y`` in ``mode`` with the torque ``tau`` (for
-        tests): ``(ydot, lam, A V, gap, s)``, or ``None`` where it hands the state back."""
-        dyn, seg = self.dyn, self.seg
+    def samples(self, Y, mode, tau):
+        """The trajectory's quantities at the states ``Y`` (n, n_y) in ``mode`` with the torque
+        ``tau``, evaluated by the C: a dict of ``ydot`` (n, n_y), ``lam``, ``AV`` (n, n_c),
+        ``gap``, ``s``, ``sr``, ``norm_a_obj``, ``norm_qdd`` (n,) and ``ok`` (n,) (False where
+        the Python right-hand side must evaluate the sample: dependent held rows)."""
+        dyn = self.dyn
+        ny, nc = dyn.ny, dyn.nc
+        Y = np.ascontiguousarray(Y, dtype=float).reshape(-1, ny)
+        n = len(Y)
         self.tau[:] = tau
         self.state[:] = mode.state
-        yy = np.ascontiguousarray(y, dtype=float)
-        ydot = np.zeros(dyn.ny)
-        extra = np.zeros(2 * dyn.nc + 2)
-        status = self._model.core.mode_rates(self._address, yy.ctypes.data, ydot.ctypes.data,
-                                             extra.ctypes.data)
-        if status != 0:
-            return None
-        nc = dyn.nc
-        return ydot, extra[:nc], extra[nc:2 * nc], float(extra[2 * nc]), float(extra[-1])
+        out = np.zeros((n, ny + 2 * nc + 6))
+        if n and self._samples(self._address, n, Y.ctypes.data, out.ctypes.data) != 0:
+            raise MemoryError("the compiled samples could not allocate their workspace")
+        e = out[:, ny:]
+        return {"ydot": out[:, :ny], "lam": e[:, :nc], "AV": e[:, nc:2 * nc],
+                "gap": e[:, 2 * nc], "s": e[:, 2 * nc + 1], "sr": e[:, 2 * nc + 2],
+                "norm_a_obj": e[:, 2 * nc + 3], "norm_qdd": e[:, 2 * nc + 4],
+                "ok": e[:, 2 * nc + 5] == 0}
