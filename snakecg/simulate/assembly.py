@@ -36,23 +36,33 @@ def assemble(sim, samples, events, status) -> Trajectory:
     contact = np.zeros(N, dtype=bool)
     wheel_state = np.empty((N, nl), dtype="<U6")
     impact = np.array([s[4] for s in samples])
-    compiled = _compiled_samples(sim, samples, Y)
-    for i, (ti, yi, mode, tau_fn, _) in enumerate(samples):
-        if compiled is not None and compiled[i] is not None:
-            ydot, li, gi, si, AV, (taui, sri, nai, nqi) = compiled[i]
-        else:
-            ydot, li, gi, si, AV, (taui, sri, nai, nqi) = dyn.rates(ti, yi, mode, tau_fn)
-        tau[i], lam[i], gap[i], s_[i], AVs[i] = taui, li, gi, si, AV
-        qdd[i] = ydot[nx:nx + ns]
-        a_obj[i] = ydot[nx + ns:2 * nx]
-        sr[i], nao[i], nqdd[i] = sri, nai, nqi
-        p_tau[i], p_fric[i] = ydot[2 * nx], ydot[2 * nx + 1]
+    for start, end, mode, tau_fn in _runs(samples):
+        done = np.zeros(end - start, dtype=bool)
+        if sim.compiled is not None:
+            # one compiled call for the run of samples (the torque is constant over it)
+            taui = np.asarray(tau_fn(t[start], Y[start], mode), dtype=float)
+            r = sim.compiled.samples(Y[start:end], mode, taui)
+            dyn.nfev += end - start
+            done = r["ok"]
+            sl = slice(start, end)
+            tau[sl], lam[sl], gap[sl], s_[sl], AVs[sl] = taui, r["lam"], r["gap"], r["s"], r["AV"]
+            qdd[sl], a_obj[sl] = r["ydot"][:, nx:nx + ns], r["ydot"][:, nx + ns:2 * nx]
+            sr[sl], nao[sl], nqdd[sl] = r["sr"], r["norm_a_obj"], r["norm_qdd"]
+            p_tau[sl], p_fric[sl] = r["ydot"][:, 2 * nx], r["ydot"][:, 2 * nx + 1]
+        for i in start + np.flatnonzero(~done):
+            ydot, li, gi, si, AV, (taui, sri, nai, nqi) = dyn.rates(t[i], Y[i], mode, tau_fn)
+            tau[i], lam[i], gap[i], s_[i], AVs[i] = taui, li, gi, si, AV
+            qdd[i] = ydot[nx:nx + ns]
+            a_obj[i] = ydot[nx + ns:2 * nx]
+            sr[i], nao[i], nqdd[i] = sri, nai, nqi
+            p_tau[i], p_fric[i] = ydot[2 * nx], ydot[2 * nx + 1]
         # power of the held rows' forces: zero on the constraints (a drift diagnostic; not
         # integrated: off the constraints, at the integrator's stages, it is noise)
         F = mode.free_idx
-        p_cons[i] = float(li[F] @ AV[F]) if F.size else 0.0
-        contact[i] = mode.contact_held
-        wheel_state[i] = mode.wheel_names
+        if F.size:
+            p_cons[start:end] = np.einsum("ij,ij->i", lam[start:end, F], AVs[start:end, F])
+        contact[start:end] = mode.contact_held
+        wheel_state[start:end] = mode.wheel_names
     q, q_obj = Y[:, :ns], Y[:, ns:nx]
     v, v_obj = Y[:, nx:nx + ns], Y[:, nx + ns:2 * nx]
     W = Y[:, 2 * nx:]
@@ -93,30 +103,17 @@ def assemble(sim, samples, events, status) -> Trajectory:
     return traj
 
 
-def _compiled_samples(sim, samples, Y):
-    """What :meth:`~snakecg.simulate.dynamics.Dynamics.rates` gives at each sample, from the
-    compiled core in one call per run of samples in the same mode and torque (``None`` for the
-    run without compiled segments, and for a sample the C hands back)."""
-    if sim.compiled is None:
-        return None
-    out = [None] * len(samples)
+def _runs(samples):
+    """``(start, end, mode, tau_fn)`` of each run of consecutive samples that share their
+    mode and torque function."""
     start = 0
     while start < len(samples):
-        _, y0, mode, tau_fn, _ = samples[start]
+        mode, tau_fn = samples[start][2], samples[start][3]
         end = start + 1
         while end < len(samples) and samples[end][2] is mode and samples[end][3] is tau_fn:
             end += 1
-        tau = np.asarray(tau_fn(samples[start][0], y0, mode), dtype=float)
-        r = sim.compiled.samples(Y[start:end], mode, tau)
-        sim.dyn.nfev += end - start
-        for k in range(end - start):
-            if r["ok"][k]:
-                out[start + k] = (r["ydot"][k], r["lam"][k], float(r["gap"][k]),
-                                  float(r["s"][k]), r["AV"][k],
-                                  (tau, float(r["sr"][k]), float(r["norm_a_obj"][k]),
-                                   float(r["norm_qdd"][k])))
+        yield start, end, mode, tau_fn
         start = end
-    return out
 
 
 def summary(sim, tr: Trajectory, status: str) -> dict:
