@@ -21,7 +21,8 @@ at n_a = 3), ``default`` the default settings (rtol 1e-9, atol 1e-11, Baumgarte 
 the compiled segments against solve_ivp in the same run: simulated seconds per CPU second
 (``time.process_time``, median of ``--repeat`` runs) of the whole ``model.simulate`` call and
 of its segment integrations alone (``summary["integrator"]["segment_cpu_s"]``; the rest is
-the Python event handling, the setup and the assembly of the trajectory), the largest
+the Python event handling, the setup and the assembly of the trajectory), of the whole call
+with the default 400 output samples, the largest
 position difference between the two and the compiled run's error against the reference.
 
     python benchmarks/bench_simulate.py --compare --joints 3 [--repeat 20]
@@ -122,16 +123,20 @@ def compare(joints: int, radius: float, scenario: str, repeat: int) -> None:
     ref = sm.simulate(q0, tau, DURATION, rtol=1e-13, atol=1e-15, output_dt=DURATION,
                       integrator="scipy")
     p_ref = positions(sm, ref)
-    res = {}
+    res, full = {}, {}
     for integrator in ("scipy", "compiled"):
         res[integrator] = cpu_timed(lambda: sm.simulate(q0, tau, DURATION, output_dt=DURATION,
                                                         integrator=integrator), repeat)
+        full[integrator] = cpu_timed(lambda: sm.simulate(q0, tau, DURATION,
+                                                         integrator=integrator), repeat)[0]
     (ts, ss, a), (tc, sc, b) = res["scipy"], res["compiled"]
+    fs, fc = full["scipy"], full["compiled"]
     diff = np.abs(positions(sm, a) - positions(sm, b)).max()
     err = np.abs(positions(sm, b) - p_ref).max()
     print(f"{joints:>3} {radius:>2g} {scenario:<13} {len(b.events):>6}"
           f" {DURATION / ts:>9.0f} {DURATION / tc:>9.0f} {ts / tc:>6.1f}"
           f" {DURATION / ss:>9.0f} {DURATION / sc:>9.0f} {ss / sc:>6.1f}"
+          f" {DURATION / fs:>9.0f} {DURATION / fc:>9.0f} {fs / fc:>6.1f}"
           f" {diff:>9.1e} {err:>9.1e}")
 
 
@@ -140,12 +145,14 @@ def main_compare(args) -> None:
         load = " ".join(f.read().split()[:3])
     print(f"machine: {platform.processor() or platform.machine()}, {os.cpu_count()} cores, "
           f"Python {platform.python_version()}; load average before: {load}")
-    print(f"{DURATION} s push, default settings (DOP853, rtol 1e-9, atol 1e-11), output at the"
-          f" end; simulated s per CPU s (median of {args.repeat}); diff = compiled vs scipy,"
-          " error = compiled vs rtol 1e-13 (largest link/object position, m)\n")
+    print(f"{DURATION} s push, default settings (DOP853, rtol 1e-9, atol 1e-11); simulated s per"
+          f" CPU s (median of {args.repeat}): call = whole simulate call, output at the end; seg"
+          " = its segment integrations alone; 400 = whole call with the default 400 output"
+          " samples; diff = compiled vs scipy, error = compiled vs rtol 1e-13 (largest"
+          " link/object position at the end, m)\n")
     header = (f"{'n_a':>3} {'r':>2} {'scenario':<13} {'events':>6} {'call:scipy':>9}"
               f" {'compiled':>9} {'x':>6} {'seg:scipy':>9} {'compiled':>9} {'x':>6}"
-              f" {'diff':>9} {'error':>9}")
+              f" {'400:scipy':>9} {'compiled':>9} {'x':>6} {'diff':>9} {'error':>9}")
     print(header)
     print("-" * len(header))
     for joints in args.joints:
