@@ -174,6 +174,10 @@ def _cases(models):
         return 1.5 * scale * TAU3 if t < 0.05 else np.zeros(3)
 
     out.append(("stick", sm, Q3, pulse, 0.2, {"control_period": 0.05}, {"stick"}))
+    sm, _ = models(3, "wheels")
+    q0, tau = _hard_push(sm, 2.0)
+    out.append(("wrench on the object, max_step", sm, q0, tau, 0.3,
+                {"f_obj": np.array([0.05, -0.08, 0.002]), "max_step": 0.01}, set()))
     return out
 
 
@@ -201,6 +205,13 @@ def test_compiled_runs_match_solve_ivp(models):
         err = np.abs(_positions(sm, a) - _positions(sm, b)).max()
         assert err <= 1e-9, (name, err)
         assert np.abs(a.q_obj - b.q_obj).max() <= 1e-9, name
+        # velocities, work integrals and the per-sample forces and metrics (assembled from
+        # the compiled samples against the Python right-hand side)
+        for field in ("v", "v_obj", "work_tau", "work_friction", "work_object", "lam", "qdd",
+                      "sr", "row_velocity", "gap", "kinetic_energy"):
+            x, z = getattr(a, field), getattr(b, field)
+            assert np.abs(x - z).max() <= 1e-7 * max(1.0, np.abs(x).max()), (name, field)
+        assert (a.contact == b.contact).all() and (a.wheel_state == b.wheel_state).all()
         na, nb = (x.summary["integrator"]["rhs_evaluations"] for x in (a, b))
         assert abs(na - nb) <= 0.1 * na, (name, na, nb)
 
