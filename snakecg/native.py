@@ -44,8 +44,7 @@ __all__ = [
 OPT_FLAGS = ["-O2", "-fPIC"]
 LARGE_FLAGS = ["-fno-tree-pre", "-fno-code-hoisting"]
 _warned: set[str] = set()
-#: The runtime core compiled into every model's library (fixed C files of the runtime): the
-#: per-sample solve, and the simulation's segment integrator.
+#: The runtime core compiled into every model's library (fixed C files of the runtime).
 CORE_SOURCE = Path(__file__).resolve().parent / "core" / "forward.c"
 CORE_SOURCES = (CORE_SOURCE, CORE_SOURCE.with_name("integrate.c"))
 #: Up to this batch size the outputs of a compiled call share one buffer (see CompiledBackend).
@@ -72,8 +71,7 @@ def _compiler_id(cc: str) -> str:
 
 
 def _core_sources(manifest: dict) -> tuple[dict[str, bytes], str]:
-    """The runtime core's C files (snakecg/core/*.c) by name and its layout header for this
-    model."""
+    """The runtime core's C files (snakecg/core/*.c) by name and its layout header."""
     from .core.layout import header
 
     return {p.name: p.read_bytes() for p in CORE_SOURCES}, header(manifest)
@@ -84,8 +82,7 @@ def _build_key(manifest: dict, cc: str) -> str:
     h.update(manifest["build_hash"].encode())
     core, layout = _core_sources(manifest)
     for name, text in core.items():
-        h.update(name.encode())
-        h.update(hashlib.sha256(text).digest())
+        h.update(name.encode() + hashlib.sha256(text).digest())
     h.update(layout.encode())
     h.update(json.dumps(manifest["files"], sort_keys=True).encode())
     h.update(_compiler_id(cc).encode())
