@@ -71,7 +71,7 @@ def assemble(sim, samples, events, status) -> Trajectory:
     com = model.com(q)
     poses = model.link_poses(q)
     # displacement-based slippage ratio (metric of the initial configuration)
-    M0 = model.mass_matrix(sim.settings.q0)
+    M0 = dyn.mass_matrix(sim.settings.q0)
     dq = q - q[0]
     do = q_obj - q_obj[0]
     num = np.einsum("ni,i,ni->n", do, dyn.mo, do)

@@ -92,6 +92,10 @@ class Dynamics:
         return State(float(t), q.copy(), v.copy(), qo.copy(), vo.copy(), self.rho.copy(),
                      mode.contact_held, mode.wheel_names)
 
+    def mass_matrix(self, q) -> np.ndarray:
+        """``M_s(q)`` (a new array) through the one-sample buffers."""
+        return np.array(self._mass.one(q=q)["M"])
+
     def kinetic_energy(self, y) -> float:
         q, qo, v, vo = self.split(y)
         M = self._mass.one(q=q)["M"]

@@ -203,10 +203,16 @@ class Events:
         def call(idx, free, lam_fixed, reg):
             m = len(idx)
             lf = np.where(fmask[None, :], fixed_lam[None, :], lam_fixed)
-            outs = dyn.cd.many(m, q=q, v=v, tau=tau, q_obj=qo, v_obj=vo,
-                               free=np.ascontiguousarray(free),
-                               lam_fixed=np.ascontiguousarray(lf),
-                               regularization=np.asarray(reg, float).reshape(m, 1))
+            if m == 1:  # the one-sample buffers (the same compiled function, less Python)
+                one = dyn.cd.one(q=q, v=v, tau=tau, q_obj=qo, v_obj=vo, free=free[0],
+                                 lam_fixed=lf[0], regularization=float(reg[0]))
+                outs = {name: np.array(o)[None] for name, o in zip(dyn.cd.out_names, one)}
+                dyn.cd.set(regularization=0.0)
+            else:
+                outs = dyn.cd.many(m, q=q, v=v, tau=tau, q_obj=qo, v_obj=vo,
+                                   free=np.ascontiguousarray(free),
+                                   lam_fixed=np.ascontiguousarray(lf),
+                                   regularization=np.asarray(reg, float).reshape(m, 1))
             res = {}
             for name, o in outs.items():
                 res[name] = o[:, 0].copy() if o.ndim == 2 and o.shape[1] == 1 else o
