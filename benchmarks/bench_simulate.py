@@ -125,10 +125,10 @@ def compare(joints: int, radius: float, scenario: str, repeat: int) -> None:
     p_ref = positions(sm, ref)
     res, full = {}, {}
     for integrator in ("scipy", "compiled"):
-        res[integrator] = cpu_timed(lambda: sm.simulate(q0, tau, DURATION, output_dt=DURATION,
-                                                        integrator=integrator), repeat)
-        full[integrator] = cpu_timed(lambda: sm.simulate(q0, tau, DURATION,
-                                                         integrator=integrator), repeat)[0]
+        res[integrator] = cpu_timed(lambda i=integrator: sm.simulate(
+            q0, tau, DURATION, output_dt=DURATION, integrator=i), repeat)
+        full[integrator] = cpu_timed(lambda i=integrator: sm.simulate(
+            q0, tau, DURATION, integrator=i), repeat)[0]
     (ts, ss, a), (tc, sc, b) = res["scipy"], res["compiled"]
     fs, fc = full["scipy"], full["compiled"]
     diff = np.abs(positions(sm, a) - positions(sm, b)).max()

@@ -45,9 +45,10 @@ def models():
 
 
 def _simulator(sm, q0, tau, **kw):
-    args = dict(v_obj0=None, q_obj0=None, rho=None, f_obj=None, control_period=None,
-                method="DOP853", rtol=1e-9, atol=1e-11, max_step=None, fixed_step=None,
-                stabilization=10.0, output_dt=None, max_events=1000)
+    args = {"v_obj0": None, "q_obj0": None, "rho": None, "f_obj": None,
+            "control_period": None, "method": "DOP853", "rtol": 1e-9, "atol": 1e-11,
+            "max_step": None, "fixed_step": None, "stabilization": 10.0, "output_dt": None,
+            "max_events": 1000}
     args.update(kw)
     return Simulator(check_arguments(sm, q0, tau, 0.1, None, **args))
 
@@ -99,7 +100,7 @@ def test_right_hand_side_against_dense_reference(models, scenario):
         mode = Mode(state, sm.bounds, False)
         for _ in range(3):
             q = Q3 + rng.normal(0, 0.05, 6)
-            qo, rho, _ = sm.place_object(q)
+            qo, _, _ = sm.place_object(q)
             qo = qo + rng.normal(0, 1e-3, 3)
             y = np.concatenate([q, qo, rng.normal(0, 0.1, 6), rng.normal(0, 0.05, 3),
                                 np.zeros(3)])
@@ -115,8 +116,8 @@ def test_right_hand_side_against_dense_reference(models, scenario):
             np.testing.assert_allclose(AV, r_AV, rtol=0, atol=1e-12)
             assert gap == pytest.approx(r_gap, abs=1e-13)
             # the Python right-hand side (solve_ivp's path): same equations, to rounding
-            p_ydot, p_lam, p_gap, p_s, p_AV, extras = dyn.rates(0.0, y, mode,
-                                                                lambda t, y, m: TAU3)
+            p_ydot, _, p_gap, p_s, p_AV, extras = dyn.rates(0.0, y, mode,
+                                                            lambda t, y, m: TAU3)
             np.testing.assert_allclose(ydot, p_ydot, rtol=0, atol=1e-11 * scale)
             np.testing.assert_allclose(AV, p_AV, rtol=0, atol=1e-14)
             assert s == p_s and gap == p_gap
@@ -132,8 +133,8 @@ def test_right_hand_side_against_dense_reference(models, scenario):
 
 def _thrown(sm, speed=0.2, gap0=0.01):
     q_obj, rho, _ = sm.place_object(Q3)
-    return dict(q_obj0=q_obj + np.r_[gap0 * NORMAL, 0], rho=rho,
-                v_obj0=np.r_[-speed * NORMAL, 0])
+    return {"q_obj0": q_obj + np.r_[gap0 * NORMAL, 0], "rho": rho,
+            "v_obj0": np.r_[-speed * NORMAL, 0]}
 
 
 def _hard_push(sm, radius=4.0):

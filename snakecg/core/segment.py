@@ -10,8 +10,17 @@ from __future__ import annotations
 
 import ctypes
 
-__all__ = ["Segment", "segment_functions", "EVENT_CODES", "SEG_END", "SEG_EVENT",
-           "SEG_TOO_SMALL", "SEG_PYTHON", "SEG_MEMORY", "SEG_BAD_INPUT"]
+__all__ = [
+    "EVENT_CODES",
+    "SEG_BAD_INPUT",
+    "SEG_END",
+    "SEG_EVENT",
+    "SEG_MEMORY",
+    "SEG_PYTHON",
+    "SEG_TOO_SMALL",
+    "Segment",
+    "segment_functions",
+]
 
 _P = ctypes.c_void_p
 _I = ctypes.c_longlong
