@@ -16,6 +16,16 @@ at n_a = 3), ``default`` the default settings (rtol 1e-9, atol 1e-11, Baumgarte 
 
     python benchmarks/bench_simulate.py [--joints 3 6 10] [--radius 1 4]
         [--repeat 5]
+
+``--compare`` prints instead, for each case at the default settings (output at the end),
+the compiled segments against solve_ivp in the same run: simulated seconds per CPU second
+(``time.process_time``, median of ``--repeat`` runs) of the whole ``model.simulate`` call and
+of its segment integrations alone (``summary["integrator"]["segment_cpu_s"]``; the rest is
+the Python event handling, the setup and the assembly of the trajectory), of the whole call
+with the default 400 output samples, the largest
+position difference between the two and the compiled run's error against the reference.
+
+    python benchmarks/bench_simulate.py --compare --joints 3 [--repeat 20]
 """
 
 from __future__ import annotations
@@ -94,13 +104,77 @@ def case(joints: int, radius: float, scenario: str, repeat: int) -> None:
           f"{', '.join(kinds) or 'none'} ({len(ref.events)})\n")
 
 
+def cpu_timed(fn, repeat: int):
+    """Median CPU seconds of ``fn()`` over ``repeat`` runs, with the median of its segment
+    integrations' CPU seconds, and the last result."""
+    times, seg, out = [], [], None
+    for _ in range(repeat):
+        t0 = time.process_time()
+        out = fn()
+        times.append(time.process_time() - t0)
+        seg.append(out.summary["integrator"]["segment_cpu_s"])
+    return statistics.median(times), statistics.median(seg), out
+
+
+def compare(joints: int, radius: float, scenario: str, repeat: int) -> None:
+    sm, q0, tau = setup(joints, scenario, radius)
+    for integrator in ("scipy", "compiled"):
+        sm.simulate(q0, tau, 0.01, integrator=integrator)  # warm up
+    ref = sm.simulate(q0, tau, DURATION, rtol=1e-13, atol=1e-15, output_dt=DURATION,
+                      integrator="scipy")
+    p_ref = positions(sm, ref)
+    res, full = {}, {}
+    for integrator in ("scipy", "compiled"):
+        res[integrator] = cpu_timed(lambda i=integrator: sm.simulate(
+            q0, tau, DURATION, output_dt=DURATION, integrator=i), repeat)
+        full[integrator] = cpu_timed(lambda i=integrator: sm.simulate(
+            q0, tau, DURATION, integrator=i), repeat)[0]
+    (ts, ss, a), (tc, sc, b) = res["scipy"], res["compiled"]
+    fs, fc = full["scipy"], full["compiled"]
+    diff = np.abs(positions(sm, a) - positions(sm, b)).max()
+    err = np.abs(positions(sm, b) - p_ref).max()
+    print(f"{joints:>3} {radius:>2g} {scenario:<13} {len(b.events):>6}"
+          f" {DURATION / ts:>9.0f} {DURATION / tc:>9.0f} {ts / tc:>6.1f}"
+          f" {DURATION / ss:>9.0f} {DURATION / sc:>9.0f} {ss / sc:>6.1f}"
+          f" {DURATION / fs:>9.0f} {DURATION / fc:>9.0f} {fs / fc:>6.1f}"
+          f" {diff:>9.1e} {err:>9.1e}")
+
+
+def main_compare(args) -> None:
+    with open("/proc/loadavg") as f:
+        load = " ".join(f.read().split()[:3])
+    print(f"machine: {platform.processor() or platform.machine()}, {os.cpu_count()} cores, "
+          f"Python {platform.python_version()}; load average before: {load}")
+    print(f"{DURATION} s push, default settings (DOP853, rtol 1e-9, atol 1e-11); simulated s per"
+          f" CPU s (median of {args.repeat}): call = whole simulate call, output at the end; seg"
+          " = its segment integrations alone; 400 = whole call with the default 400 output"
+          " samples; diff = compiled vs scipy, error = compiled vs rtol 1e-13 (largest"
+          " link/object position at the end, m)\n")
+    header = (f"{'n_a':>3} {'r':>2} {'scenario':<13} {'events':>6} {'call:scipy':>9}"
+              f" {'compiled':>9} {'x':>6} {'seg:scipy':>9} {'compiled':>9} {'x':>6}"
+              f" {'400:scipy':>9} {'compiled':>9} {'x':>6} {'diff':>9} {'error':>9}")
+    print(header)
+    print("-" * len(header))
+    for joints in args.joints:
+        for radius in args.radius:
+            for scenario in args.scenarios:
+                compare(joints, radius, scenario, args.repeat)
+    with open("/proc/loadavg") as f:
+        print(f"\nload average after: {' '.join(f.read().split()[:3])}")
+
+
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--joints", type=int, nargs="+", default=[3, 6, 10])
     ap.add_argument("--scenarios", nargs="+", default=list(SCENARIOS), choices=SCENARIOS)
     ap.add_argument("--radius", type=float, nargs="+", default=[1.0, 4.0])
     ap.add_argument("--repeat", type=int, default=5)
+    ap.add_argument("--compare", action="store_true",
+                    help="compiled segments vs solve_ivp, simulated s per CPU s")
     args = ap.parse_args()
+    if args.compare:
+        main_compare(args)
+        return
     print(f"machine: {platform.processor() or platform.machine()}, {os.cpu_count()} cores, "
           f"Python {platform.python_version()}")
     print(f"{DURATION} s push, constant torque on the input ellipsoid x radius r, kappa = 10; "

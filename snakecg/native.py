@@ -44,8 +44,9 @@ __all__ = [
 OPT_FLAGS = ["-O2", "-fPIC"]
 LARGE_FLAGS = ["-fno-tree-pre", "-fno-code-hoisting"]
 _warned: set[str] = set()
-#: The runtime core compiled into every model's library (one fixed C file of the runtime).
+#: The runtime core compiled into every model's library (fixed C files of the runtime).
 CORE_SOURCE = Path(__file__).resolve().parent / "core" / "forward.c"
+CORE_SOURCES = (CORE_SOURCE, CORE_SOURCE.with_name("integrate.c"))
 #: Up to this batch size the outputs of a compiled call share one buffer (see CompiledBackend).
 _SMALL_BATCH = 64
 
@@ -69,18 +70,19 @@ def _compiler_id(cc: str) -> str:
         return cc
 
 
-def _core_sources(manifest: dict) -> tuple[bytes, str]:
-    """The runtime core's C (snakecg/core/forward.c) and its layout header for this model."""
+def _core_sources(manifest: dict) -> tuple[dict[str, bytes], str]:
+    """The runtime core's C files (snakecg/core/*.c) by name and its layout header."""
     from .core.layout import header
 
-    return CORE_SOURCE.read_bytes(), header(manifest)
+    return {p.name: p.read_bytes() for p in CORE_SOURCES}, header(manifest)
 
 
 def _build_key(manifest: dict, cc: str) -> str:
     h = hashlib.sha256()
     h.update(manifest["build_hash"].encode())
     core, layout = _core_sources(manifest)
-    h.update(hashlib.sha256(core).digest())
+    for name, text in core.items():
+        h.update(name.encode() + hashlib.sha256(text).digest())
     h.update(layout.encode())
     h.update(json.dumps(manifest["files"], sort_keys=True).encode())
     h.update(_compiler_id(cc).encode())
@@ -164,17 +166,18 @@ def compile_model(folder: Path, manifest: dict, *, progress=None, rebuild: bool 
 
             core, layout = _core_sources(manifest)
             (tmp / "snakecg_layout.h").write_text(layout, encoding="utf-8")
-            (tmp / "snakecg_core.c").write_bytes(core)
+            for name, text in core.items():
+                (tmp / f"snakecg_core_{name}").write_bytes(text)
 
-            def one_core() -> Path:
-                obj = tmp / "snakecg_core.o"
-                _run([cc, *OPT_FLAGS, "-I", str(tmp), "-c", str(tmp / "snakecg_core.c"),
+            def one_core(name: str) -> Path:
+                obj = tmp / f"snakecg_core_{Path(name).stem}.o"
+                _run([cc, *OPT_FLAGS, "-I", str(tmp), "-c", str(tmp / f"snakecg_core_{name}"),
                       "-o", str(obj)])
                 return obj
 
             with ThreadPoolExecutor(max_workers=max(1, os.cpu_count() or 1)) as pool:
-                core_obj = pool.submit(one_core)
-                objs = list(pool.map(one, sources)) + [core_obj.result()]
+                core_objs = [pool.submit(one_core, name) for name in core]
+                objs = list(pool.map(one, sources)) + [f.result() for f in core_objs]
             tmp_lib = tmp / "model.so"
             link = [cc, "-shared", *[str(o) for o in objs], "-o", str(tmp_lib), "-lm"]
             _run(link)

@@ -59,6 +59,9 @@ def register(sub) -> None:
                    help="zero-order hold of the controller (s, default 0.01)")
     p.add_argument("--method", default="DOP853", choices=METHODS,
                    help="scipy solve_ivp method (default DOP853)")
+    p.add_argument("--integrator", default="auto", choices=("auto", "compiled", "scipy"),
+                   help="auto (default): DOP853 segments in compiled code when the torque is "
+                   "held over each segment, solve_ivp otherwise; compiled or scipy to insist")
     p.add_argument("--rtol", type=real(RTOL_MIN, 1.0), default=1e-9,
                    help=f"relative tolerance, {RTOL_MIN:.3g} to 1 (default 1e-9)")
     p.add_argument("--atol", type=real(0, lo_open=True), default=1e-11,
@@ -132,7 +135,7 @@ def run(args) -> int:
     traj = simulate(model, q, tau, args.duration, v0=v, v_obj0=v_obj,
                     control_period=control_period, method=args.method, rtol=args.rtol,
                     atol=args.atol, stabilization=args.stabilization,
-                    output_dt=args.output_dt)
+                    output_dt=args.output_dt, integrator=args.integrator)
     try:
         out.mkdir(parents=True, exist_ok=True)
         # every file under a unique temporary name, then renamed: two runs into one folder
@@ -183,7 +186,9 @@ def _print_text(s: dict, files: dict) -> None:
     print(f"  constraint residual: gap {r['gap']:.2g} m, gap rate {r['gap_rate']:.2g} m/s, "
           f"wheel lateral velocity {r['wheel_lateral_velocity']:.2g} m/s")
     i = s["integrator"]
-    print(f"  integrator {i['method']}: {i['rhs_evaluations']} evaluations, "
+    print(f"  integrator {i['method']}"
+          f"{' (compiled segments)' if i.get('compiled_segments') else ''}: "
+          f"{i['rhs_evaluations']} evaluations, "
           f"{i['segments']} segments, {i['wall_time_s']:.3g} s")
     for k, path in files.items():
         print(f"  wrote {path}")

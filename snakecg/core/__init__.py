@@ -23,6 +23,7 @@ import numpy as np
 from ..rows import WEAK
 from ..solver import FORCE_LIMIT, PIVOT_TOL, REL_TOL
 from .layout import INPUTS, Layout
+from .segment import segment_functions
 
 __all__ = ["Core", "Data", "Layout", "CONSTANTS", "STATUS_EXACT", "STATUS_FALLBACK"]
 
@@ -58,6 +59,9 @@ class Core:
         self._rules = rules
         self._constants = CONSTANTS.copy()
         self.constants_address = self._constants.ctypes.data
+        self.integrate_segment, self.mode_samples = segment_functions(lib, manifest["prefix"])
+        """integrate.c's ``core_integrate_segment`` and ``core_mode_samples``
+        (:mod:`snakecg.core.segment`)."""
 
     def next_states(self, state, lam, w, G, bounds) -> tuple[np.ndarray, bool]:
         """The C's row-state update for one sample (the rules of

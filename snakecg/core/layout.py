@@ -1,4 +1,5 @@
-"""The layout shared by the runtime core's C (``forward.c``) and its Python side.
+"""The layout shared by the runtime core's C (``forward.c``, ``integrate.c``) and its Python
+side.
 
 Everything the C reads or writes by position is named here once: the scene's constant
 inputs (one flat vector per scene), the per-sample inputs, and the columns of one output row.
@@ -29,6 +30,8 @@ FUNCTIONS = {
         "s")),
     "place_object": ("PO", ("q", "K", "contact_link", "contact_offset", "object_distance",
                             "side"), ("q_obj", "rho", "contact_point")),
+    # integrate.c: the rows' velocities A V of the simulation's right-hand side
+    "link_jacobians": ("LJ", ("q", "K"), ("J",)),
 }
 
 _IDENT = re.compile(r"[A-Za-z_][A-Za-z0-9_]*\Z")
@@ -103,7 +106,7 @@ def header(manifest: dict) -> str:
     lay = Layout.of(manifest)
     sigs = {s["name"]: s for s in manifest["functions"]}
     lines = ["/* snakecg_layout.h: written by the snakecg runtime from the model's manifest",
-             " * (snakecg/core/layout.py) for snakecg/core/forward.c. */",
+             " * (snakecg/core/layout.py) for snakecg/core/forward.c and integrate.c. */",
              "#ifndef SNAKECG_LAYOUT_H", "#define SNAKECG_LAYOUT_H",
              f"#define SNAKECG_PREFIX {_ident('the prefix', manifest['prefix'])}",
              f"#define SNAKECG_NA {lay.n_joints}", f"#define SNAKECG_NS {lay.n_coordinates}",

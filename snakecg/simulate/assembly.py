@@ -36,19 +36,33 @@ def assemble(sim, samples, events, status) -> Trajectory:
     contact = np.zeros(N, dtype=bool)
     wheel_state = np.empty((N, nl), dtype="<U6")
     impact = np.array([s[4] for s in samples])
-    for i, (ti, yi, mode, tau_fn, _) in enumerate(samples):
-        ydot, li, gi, si, AV, (taui, sri, nai, nqi) = dyn.rates(ti, yi, mode, tau_fn)
-        tau[i], lam[i], gap[i], s_[i], AVs[i] = taui, li, gi, si, AV
-        qdd[i] = ydot[nx:nx + ns]
-        a_obj[i] = ydot[nx + ns:2 * nx]
-        sr[i], nao[i], nqdd[i] = sri, nai, nqi
-        p_tau[i], p_fric[i] = ydot[2 * nx], ydot[2 * nx + 1]
+    for start, end, mode, tau_fn in _runs(samples):
+        done = np.zeros(end - start, dtype=bool)
+        if sim.compiled is not None:
+            # one compiled call for the run of samples (the torque is constant over it)
+            taui = np.asarray(tau_fn(t[start], Y[start], mode), dtype=float)
+            r = sim.compiled.samples(Y[start:end], mode, taui)
+            dyn.nfev += end - start
+            done = r["ok"]
+            sl = slice(start, end)
+            tau[sl], lam[sl], gap[sl], s_[sl], AVs[sl] = taui, r["lam"], r["gap"], r["s"], r["AV"]
+            qdd[sl], a_obj[sl] = r["ydot"][:, nx:nx + ns], r["ydot"][:, nx + ns:2 * nx]
+            sr[sl], nao[sl], nqdd[sl] = r["sr"], r["norm_a_obj"], r["norm_qdd"]
+            p_tau[sl], p_fric[sl] = r["ydot"][:, 2 * nx], r["ydot"][:, 2 * nx + 1]
+        for i in start + np.flatnonzero(~done):
+            ydot, li, gi, si, AV, (taui, sri, nai, nqi) = dyn.rates(t[i], Y[i], mode, tau_fn)
+            tau[i], lam[i], gap[i], s_[i], AVs[i] = taui, li, gi, si, AV
+            qdd[i] = ydot[nx:nx + ns]
+            a_obj[i] = ydot[nx + ns:2 * nx]
+            sr[i], nao[i], nqdd[i] = sri, nai, nqi
+            p_tau[i], p_fric[i] = ydot[2 * nx], ydot[2 * nx + 1]
         # power of the held rows' forces: zero on the constraints (a drift diagnostic; not
         # integrated: off the constraints, at the integrator's stages, it is noise)
         F = mode.free_idx
-        p_cons[i] = float(li[F] @ AV[F]) if F.size else 0.0
-        contact[i] = mode.contact_held
-        wheel_state[i] = mode.wheel_names
+        if F.size:
+            p_cons[start:end] = np.einsum("ij,ij->i", lam[start:end, F], AVs[start:end, F])
+        contact[start:end] = mode.contact_held
+        wheel_state[start:end] = mode.wheel_names
     q, q_obj = Y[:, :ns], Y[:, ns:nx]
     v, v_obj = Y[:, nx:nx + ns], Y[:, nx + ns:2 * nx]
     W = Y[:, 2 * nx:]
@@ -57,7 +71,7 @@ def assemble(sim, samples, events, status) -> Trajectory:
     com = model.com(q)
     poses = model.link_poses(q)
     # displacement-based slippage ratio (metric of the initial configuration)
-    M0 = model.mass_matrix(sim.settings.q0)
+    M0 = dyn.mass_matrix(sim.settings.q0)
     dq = q - q[0]
     do = q_obj - q_obj[0]
     num = np.einsum("ni,i,ni->n", do, dyn.mo, do)
@@ -87,6 +101,19 @@ def assemble(sim, samples, events, status) -> Trajectory:
         energy_residual=residual, events=events, summary={}, geometry=geometry)
     traj.summary = summary(sim, traj, status)
     return traj
+
+
+def _runs(samples):
+    """``(start, end, mode, tau_fn)`` of each run of consecutive samples that share their
+    mode and torque function."""
+    start = 0
+    while start < len(samples):
+        mode, tau_fn = samples[start][2], samples[start][3]
+        end = start + 1
+        while end < len(samples) and samples[end][2] is mode and samples[end][3] is tau_fn:
+            end += 1
+        yield start, end, mode, tau_fn
+        start = end
 
 
 def summary(sim, tr: Trajectory, status: str) -> dict:
@@ -161,6 +188,8 @@ def summary(sim, tr: Trajectory, status: str) -> dict:
             "atol": None if cfg.fixed_step is not None else cfg.atol,
             "stabilization": cfg.alpha, "segments": sim.segments,
             "rhs_evaluations": dyn.nfev, "singular_samples": dyn.singular,
+            "compiled_segments": sim.compiled is not None,
+            "segment_cpu_s": sim.segment_cpu,
             "wall_time_s": sim.wall,
         },
     })

@@ -64,6 +64,11 @@ class Dynamics:
             "object_mass": model._object_mass, "object_inertia": model._object_inertia,
             "rho": rho, "wheel_offset": model._wheel_offset, "f_obj": f_obj,
             "regularization": np.zeros(1)})
+        # the problem before any active set (G_c, the force maps): the linear maps at events
+        self._cs = BoundFunction(be, "contact_system", {
+            "K": model.parameters, "contact_link": model._contact_link, "side": model._side,
+            "object_mass": model._object_mass, "object_inertia": model._object_inertia,
+            "rho": rho, "wheel_offset": model._wheel_offset, "f_obj": f_obj})
         self._jac = BoundFunction(be, "link_jacobians", {"K": model.parameters})
         self._mass = BoundFunction(be, "mass_matrix", {"K": model.parameters})
         self._out_index = tuple(self.cd.out_names.index(n) for n in _RHS_OUTPUTS)
@@ -86,6 +91,10 @@ class Dynamics:
         q, qo, v, vo = self.split(y)
         return State(float(t), q.copy(), v.copy(), qo.copy(), vo.copy(), self.rho.copy(),
                      mode.contact_held, mode.wheel_names)
+
+    def mass_matrix(self, q) -> np.ndarray:
+        """``M_s(q)`` (a new array) through the one-sample buffers."""
+        return np.array(self._mass.one(q=q)["M"])
 
     def kinetic_energy(self, y) -> float:
         q, qo, v, vo = self.split(y)
@@ -189,17 +198,13 @@ class Dynamics:
 
     # --- linear maps at a state (events only) ---------------------------------------------
     def linear_maps(self, y, tau):
-        """``Q = I^-1 A^T`` (nx, n_c), ``G_c``, gap, s and ``A V`` at ``y``."""
+        """``Q = I^-1 A^T`` (nx, n_c), ``G_c``, gap, s and ``A V`` at ``y`` (one evaluation
+        of the generated ``contact_system``: ``M_s^-1 A_s^T`` over ``I_obj^-1 A_o^T``)."""
         q, qo, v, vo = self.split(y)
-        nc = self.nc
-        lf = np.vstack([np.zeros(nc), np.eye(nc)])
-        outs = self.cd.many(nc + 1, q=q, v=v, tau=tau, q_obj=qo, v_obj=vo,
-                            free=np.zeros((nc + 1, nc)), lam_fixed=lf,
-                            regularization=np.zeros(1))
-        qdd, a_obj = outs["qdd"], outs["a_obj"]
-        Q = np.hstack([qdd[1:] - qdd[0], a_obj[1:] - a_obj[0]]).T
-        G = outs["delassus"][0]
-        gap, s = float(outs["gap"][0, 0]), float(outs["s"][0, 0])
+        o = self._cs.one(q=q, v=v, tau=tau, q_obj=qo, v_obj=vo)
+        Q = np.vstack([o["qdd_from_lam"], o["a_obj_from_lam"]])
+        G = np.array(o["delassus"])
+        gap, s = float(o["gap"][0]), float(o["s"][0])
         AV = self.row_velocities(q, v, qo, vo, s)
         return Q, G, gap, s, AV
 

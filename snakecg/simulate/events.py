@@ -41,35 +41,38 @@ class Events:
     # --- events of a mode -------------------------------------------------------------------
     def functions(self, mode: Mode, tau_fn) -> list:
         """The terminal event functions of ``mode`` for :func:`scipy.integrate.solve_ivp`,
-        each with ``kind`` and ``row`` attributes."""
+        each with ``kind``, ``row`` and ``quantity`` (what it evaluates, for the compiled
+        segments: :data:`snakecg.core.segment.EVENT_CODES`) attributes."""
         evs = []
 
-        def make(fn, direction, kind, row):
+        def make(fn, direction, kind, row, quantity):
             fn.terminal = True
             fn.direction = direction
             fn.kind = kind
             fn.row = row
+            fn.quantity = quantity
             evs.append(fn)
 
         rates = self.dyn.rates
         l_k = self.dyn.l_k
         if mode.contact_held:
-            make(lambda t, y: rates(t, y, mode, tau_fn)[1][0], -1, "separation", 0)
-            make(lambda t, y: rates(t, y, mode, tau_fn)[3], -1, "off_link", 0)
-            make(lambda t, y: l_k - rates(t, y, mode, tau_fn)[3], -1, "off_link", 0)
+            make(lambda t, y: rates(t, y, mode, tau_fn)[1][0], -1, "separation", 0,
+                 "lam_contact")
+            make(lambda t, y: rates(t, y, mode, tau_fn)[3], -1, "off_link", 0, "s")
+            make(lambda t, y: l_k - rates(t, y, mode, tau_fn)[3], -1, "off_link", 0, "l_k - s")
         elif not mode.off_link:
-            make(lambda t, y: rates(t, y, mode, tau_fn)[2], -1, "gap", 0)
+            make(lambda t, y: rates(t, y, mode, tau_fn)[2], -1, "gap", 0, "gap")
         bounds = self.dyn.bounds
         for r in range(1, self.dyn.nc):
             st = mode.state[r]
             b = bounds[r]
             if st == HELD and np.isfinite(b):
                 make(lambda t, y, r=r, b=b: b - abs(rates(t, y, mode, tau_fn)[1][r]), -1,
-                     "breakaway", r)
+                     "breakaway", r, "bound - |lam|")
             elif st in (SLIDE_POS, SLIDE_NEG):
                 d = -1.0 if st == SLIDE_POS else 1.0  # direction of the sliding velocity
                 make(lambda t, y, r=r, d=d: d * rates(t, y, mode, tau_fn)[4][r], -1,
-                     "slide_stop", r)
+                     "slide_stop", r, "sliding velocity")
         return evs
 
     # --- at an event ------------------------------------------------------------------------
@@ -200,10 +203,16 @@ class Events:
         def call(idx, free, lam_fixed, reg):
             m = len(idx)
             lf = np.where(fmask[None, :], fixed_lam[None, :], lam_fixed)
-            outs = dyn.cd.many(m, q=q, v=v, tau=tau, q_obj=qo, v_obj=vo,
-                               free=np.ascontiguousarray(free),
-                               lam_fixed=np.ascontiguousarray(lf),
-                               regularization=np.asarray(reg, float).reshape(m, 1))
+            if m == 1:  # the one-sample buffers (the same compiled function, less Python)
+                one = dyn.cd.one(q=q, v=v, tau=tau, q_obj=qo, v_obj=vo, free=free[0],
+                                 lam_fixed=lf[0], regularization=float(reg[0]))
+                outs = {name: np.array(o)[None] for name, o in zip(dyn.cd.out_names, one)}
+                dyn.cd.set(regularization=0.0)
+            else:
+                outs = dyn.cd.many(m, q=q, v=v, tau=tau, q_obj=qo, v_obj=vo,
+                                   free=np.ascontiguousarray(free),
+                                   lam_fixed=np.ascontiguousarray(lf),
+                                   regularization=np.asarray(reg, float).reshape(m, 1))
             res = {}
             for name, o in outs.items():
                 res[name] = o[:, 0].copy() if o.ndim == 2 and o.shape[1] == 1 else o

@@ -92,11 +92,12 @@ class Settings:
     alpha: float  # Baumgarte rate (1/s)
     output_dt: float
     max_events: int
+    integrator: str = "auto"  # "auto", "compiled" or "scipy" (snakecg.simulate.compiled)
 
 
 def check_arguments(model, q0, tau, duration, v0, *, v_obj0, q_obj0, rho, f_obj,
                     control_period, method, rtol, atol, max_step, fixed_step, stabilization,
-                    output_dt, max_events) -> Settings:
+                    output_dt, max_events, integrator="auto") -> Settings:
     """The arguments of :func:`~snakecg.simulate.simulate` checked, in order, with the
     defaults filled in (the object's placement from the scene when ``q_obj0`` and ``rho``
     are not given)."""
@@ -155,8 +156,11 @@ def check_arguments(model, q0, tau, duration, v0, *, v_obj0, q_obj0, rho, f_obj,
     if isinstance(max_events, bool) or not isinstance(max_events, (int, np.integer)) \
             or max_events < 0:
         raise InputError(f"max_events must be an integer >= 0, got {max_events!r}")
+    if not (isinstance(integrator, str) and integrator in ("auto", "compiled", "scipy")):
+        raise InputError(f"integrator must be 'auto', 'compiled' or 'scipy', got "
+                         f"{integrator!r:.60}")
     return Settings(model=model, q0=q0, v0=v0, q_obj0=q_obj0, v_obj0=v_obj0, rho=rho,
                     f_obj=f_obj, duration=duration, kind=kind, law=law, control_period=period,
                     method=method, rtol=rtol_, atol=atol, max_step=max_step,
                     fixed_step=fixed_step, alpha=alpha, output_dt=output_dt,
-                    max_events=int(max_events))
+                    max_events=int(max_events), integrator=integrator)

@@ -1,6 +1,8 @@
 """The integration: :func:`simulate` checks its arguments, then :class:`Simulator` integrates
-mode by mode with :func:`scipy.integrate.solve_ivp` (terminal events, the mode re-solved at
-each event, the held torque re-sampled at each control instant) and hands the samples to
+mode by mode (terminal events, the mode re-solved at each event, the held torque re-sampled at
+each control instant), each segment in compiled code
+(:class:`~snakecg.simulate.compiled.CompiledSegments`) where it can and with
+:func:`scipy.integrate.solve_ivp` otherwise, and hands the samples to
 :func:`~snakecg.simulate.assembly.assemble`."""
 
 from __future__ import annotations
@@ -13,6 +15,7 @@ import numpy as np
 from ..errors import InputError, SnakecgError
 from ..solver import ABSENT, HELD, LOST
 from .assembly import assemble
+from .compiled import CompiledSegments, compiled_reason
 from .dynamics import N_WORK, Dynamics
 from .events import Events
 from .inputs import Settings, check_arguments
@@ -41,6 +44,12 @@ class Simulator:
         self.initial_mode = self.final_mode = ""
         self.segments = 0
         self.wall = 0.0
+        self.segment_cpu = 0.0  # CPU seconds inside the segment integrations
+        reason = compiled_reason(settings) if settings.integrator != "scipy" else "asked for"
+        if settings.integrator == "compiled" and reason is not None:
+            raise InputError(f"integrator='compiled' is not available for this run: {reason};"
+                             " use integrator='auto' or 'scipy'")
+        self.compiled = CompiledSegments(self.dyn, settings) if reason is None else None
 
     def _solver_options(self) -> dict:
         cfg = self.settings
@@ -111,12 +120,19 @@ class Simulator:
 
             if cfg.fixed_step is not None:
                 opts["first_step"] = min(cfg.fixed_step, t_end - t)
+            sol = None
+            cpu0 = time.process_time()
+            if self.compiled is not None:
+                sol = self.compiled.run(t, t_end, y, mode, tau_fn(t, y, mode), evs, t_eval)
             try:
-                sol = solve_ivp(fun, (t, t_end), y, t_eval=t_eval, events=evs or None, **opts)
+                if sol is None:
+                    sol = solve_ivp(fun, (t, t_end), y, t_eval=t_eval, events=evs or None,
+                                    **opts)
             except SnakecgError:
                 raise
             except (ValueError, np.linalg.LinAlgError, ArithmeticError) as exc:
                 raise SimulationError(f"integration failed at t = {t:.6g} s: {exc}") from exc
+            self.segment_cpu += time.process_time() - cpu0
             segments += 1
             if sol.status < 0:
                 raise SimulationError(f"integration failed at t = {t:.6g} s: {sol.message}")
@@ -168,7 +184,7 @@ class Simulator:
 def simulate(model, q0, tau, duration, v0=None, *, v_obj0=None, q_obj0=None, rho=None,
              f_obj=None, control_period=None, method="DOP853", rtol=1e-9, atol=1e-11,
              max_step=None, fixed_step=None, stabilization=10.0, output_dt=None,
-             max_events=1000) -> Trajectory:
+             max_events=1000, integrator="auto") -> Trajectory:
     """Integrate the snake + object of ``model`` (a :class:`~snakecg.SceneModel`) from ``q0``.
 
     Parameters
@@ -192,6 +208,11 @@ def simulate(model, q0, tau, duration, v0=None, *, v_obj0=None, q_obj0=None, rho
     output_dt : spacing of the output samples (default ``duration / 400``); events add
         samples on both sides.
     max_events : stop (``summary["status"]`` says so) after this many events.
+    integrator : ``"auto"`` (default): each segment in compiled code when the run allows it
+        (``method="DOP853"``, no ``fixed_step``, a torque constant over each segment: a
+        constant or a law with ``control_period``; the same steps, error norm, dense output
+        and event location as solve_ivp's DOP853), solve_ivp otherwise; ``"compiled"``
+        requires the compiled segments, ``"scipy"`` always uses solve_ivp.
 
     Returns a :class:`Trajectory` with the per-sample arrays, the events and ``summary``.
     """
@@ -199,5 +220,5 @@ def simulate(model, q0, tau, duration, v0=None, *, v_obj0=None, q_obj0=None, rho
         model, q0, tau, duration, v0, v_obj0=v_obj0, q_obj0=q_obj0, rho=rho, f_obj=f_obj,
         control_period=control_period, method=method, rtol=rtol, atol=atol,
         max_step=max_step, fixed_step=fixed_step, stabilization=stabilization,
-        output_dt=output_dt, max_events=max_events)
+        output_dt=output_dt, max_events=max_events, integrator=integrator)
     return Simulator(settings).run()

@@ -1,0 +1,684 @@
+/* snakecg's runtime core, part 2: one integration segment of a simulation within a mode, in C.
+ *
+ * This file is part of the runtime (not generated). Like forward.c it is compiled once per
+ * model into the model's shared library, beside CasADi's C of the generated functions, with
+ * the header `snakecg_layout.h` written from the model's manifest (snakecg/core/layout.py):
+ * sizes, symbols and every input/output index by name.
+ *
+ * What it computes is what snakecg/simulate does with scipy.integrate.solve_ivp, for a mode
+ * (an active set) and a torque held constant over the segment:
+ *   - the right-hand side of snakecg/simulate/dynamics.py (Dynamics.rates): the generated
+ *     `contact_system` at (q, v, tau, q_obj, v_obj, f_obj) (G_c, eq. 14; b, eq. 13; the free
+ *     accelerations and the force maps, eqs. 12, 18), the held rows' forces with the mode's
+ *     fixed forces (eq. 16, LDL^T in row order as forward.c's held_forces) and the Baumgarte
+ *     terms (held rows accelerate at -2 alpha A_F V, - alpha^2 g for the contact), the rows'
+ *     velocities A V from the generated `link_jacobians` (Dynamics.row_velocities), and the
+ *     rates of the three work integrals;
+ *   - Dormand-Prince 8(5,3) (DOP853) with the tableau, error norm, step-size control, initial
+ *     step and dense output of scipy.integrate.DOP853 (Hairer, Norsett & Wanner, Solving ODE
+ *     I, sec. II.10), output at requested times from the dense output;
+ *   - the mode's terminal event functions (snakecg/simulate/events.py, all with direction
+ *     -1), detected as solve_ivp does (g >= 0 before a step, <= 0 after) and located on the
+ *     dense output by Brent's method with xtol = rtol = 4 EPS (scipy.optimize.brentq).
+ * A segment that this path cannot answer as the Python one would (dependent held rows, which
+ * the Python right-hand side regularizes; a failed evaluation) returns a status that sends it
+ * to the Python path.
+ */
+#include <float.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "snakecg_layout.h"
+
+#define SNAKECG_CAT_(a, b) a##b
+#define SNAKECG_CAT(a, b) SNAKECG_CAT_(a, b)
+#define SNAKECG_EXPORT(name) SNAKECG_CAT(SNAKECG_PREFIX, name)
+
+typedef long long int sc_int;
+
+int SNAKECG_CS(const double **arg, double **res, sc_int *iw, double *w, int mem);
+int SNAKECG_CS_WORK(sc_int *sz_arg, sc_int *sz_res, sc_int *sz_iw, sc_int *sz_w);
+int SNAKECG_LJ(const double **arg, double **res, sc_int *iw, double *w, int mem);
+int SNAKECG_LJ_WORK(sc_int *sz_arg, sc_int *sz_res, sc_int *sz_iw, sc_int *sz_w);
+
+#define NS SNAKECG_NS
+#define NA SNAKECG_NA
+#define NL SNAKECG_NL
+#define NC SNAKECG_NC
+#define NX (NS + 3)
+#define NY (2 * NX + 3)
+#define MAX_EVENTS (3 + NC)
+
+/* row states (snakecg/solver.py) */
+enum { ABSENT = 0, HELD = 1, LOST = 2, SLIDE_POS = 3, SLIDE_NEG = 4 };
+/* event functions (snakecg/simulate/events.py, Events.functions) */
+enum { EV_SEPARATION = 0, EV_S_LOW = 1, EV_S_HIGH = 2, EV_GAP = 3, EV_BREAKAWAY = 4,
+       EV_SLIDE_STOP = 5 };
+/* segment status */
+enum { SEG_END = 0, SEG_EVENT = 1, SEG_TOO_SMALL = -1, SEG_PYTHON = -2, SEG_MEMORY = -3,
+       SEG_BAD_INPUT = -4 };
+
+/* DOP853: 12 stages, 16 with the dense output's, interpolant of 7 terms (scipy's
+ * dop853_coefficients: N_STAGES, N_STAGES_EXTENDED, INTERPOLATOR_POWER) */
+#define DP_NS 12
+#define DP_NX 16
+#define DP_NP 7
+static const double DP_A[DP_NX][DP_NX] = {
+    {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0},
+    {0.05260015195876773, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0},
+    {0.0197250569845379, 0.0591751709536137, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0},
+    {0.02958758547680685, 0.0, 0.08876275643042054, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0},
+    {0.2413651341592667, 0.0, -0.8845494793282861, 0.924834003261792, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0},
+    {0.037037037037037035, 0.0, 0.0, 0.17082860872947386, 0.12546768756682242, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0},
+    {0.037109375, 0.0, 0.0, 0.17025221101954405, 0.06021653898045596, -0.017578125, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0},
+    {0.03709200011850479, 0.0, 0.0, 0.17038392571223998, 0.10726203044637328, -0.015319437748624402, 0.008273789163814023, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0},
+    {0.6241109587160757, 0.0, 0.0, -3.3608926294469414, -0.868219346841726, 27.59209969944671, 20.154067550477894, -43.48988418106996, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0},
+    {0.47766253643826434, 0.0, 0.0, -2.4881146199716677, -0.590290826836843, 21.230051448181193, 15.279233632882423, -33.28821096898486, -0.020331201708508627, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0},
+    {-0.9371424300859873, 0.0, 0.0, 5.186372428844064, 1.0914373489967295, -8.149787010746927, -18.52006565999696, 22.739487099350505, 2.4936055526796523, -3.0467644718982196, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0},
+    {2.273310147516538, 0.0, 0.0, -10.53449546673725, -2.0008720582248625, -17.9589318631188, 27.94888452941996, -2.8589982771350235, -8.87285693353063, 12.360567175794303, 0.6433927460157636, 0.0, 0.0, 0.0, 0.0, 0.0},
+    {0.054293734116568765, 0.0, 0.0, 0.0, 0.0, 4.450312892752409, 1.8915178993145003, -5.801203960010585, 0.3111643669578199, -0.1521609496625161, 0.20136540080403034, 0.04471061572777259, 0.0, 0.0, 0.0, 0.0},
+    {0.056167502283047954, 0.0, 0.0, 0.0, 0.0, 0.0, 0.25350021021662483, -0.2462390374708025, -0.12419142326381637, 0.15329179827876568, 0.00820105229563469, 0.007567897660545699, -0.008298, 0.0, 0.0, 0.0},
+    {0.03183464816350214, 0.0, 0.0, 0.0, 0.0, 0.028300909672366776, 0.053541988307438566, -0.05492374857139099, 0.0, 0.0, -0.00010834732869724932, 0.0003825710908356584, -0.00034046500868740456, 0.1413124436746325, 0.0, 0.0},
+    {-0.42889630158379194, 0.0, 0.0, 0.0, 0.0, -4.697621415361164, 7.683421196062599, 4.06898981839711, 0.3567271874552811, 0.0, 0.0, 0.0, -0.0013990241651590145, 2.9475147891527724, -9.15095847217987, 0.0}};
+static const double DP_B[DP_NS] = {0.054293734116568765, 0.0, 0.0, 0.0, 0.0, 4.450312892752409, 1.8915178993145003, -5.801203960010585, 0.3111643669578199, -0.1521609496625161, 0.20136540080403034, 0.04471061572777259};
+/* (the stages' times C are not needed: the right-hand side does not depend on t) */
+static const double DP_E3[DP_NS + 1] = {-0.18980075407240762, 0.0, 0.0, 0.0, 0.0, 4.450312892752409, 1.8915178993145003, -5.801203960010585, -0.4226823213237919, -0.1521609496625161, 0.20136540080403034, 0.02265179219836082, 0.0};
+static const double DP_E5[DP_NS + 1] = {0.01312004499419488, 0.0, 0.0, 0.0, 0.0, -1.2251564463762044, -0.4957589496572502, 1.6643771824549864, -0.35032884874997366, 0.3341791187130175, 0.08192320648511571, -0.022355307863886294, 0.0};
+static const double DP_D[DP_NP - 3][DP_NX] = {
+    {-8.428938276109013, 0.0, 0.0, 0.0, 0.0, 0.5667149535193777, -3.0689499459498917, 2.38466765651207, 2.117034582445028, -0.871391583777973, 2.2404374302607883, 0.6315787787694688, -0.08899033645133331, 18.148505520854727, -9.194632392478356, -4.436036387594894},
+    {10.427508642579134, 0.0, 0.0, 0.0, 0.0, 242.28349177525817, 165.20045171727028, -374.5467547226902, -22.113666853125306, 7.733432668472264, -30.674084731089398, -9.332130526430229, 15.697238121770845, -31.139403219565178, -9.35292435884448, 35.81684148639408},
+    {19.985053242002433, 0.0, 0.0, 0.0, 0.0, -387.0373087493518, -189.17813819516758, 527.8081592054236, -11.57390253995963, 6.8812326946963, -1.0006050966910838, 0.7777137798053443, -2.778205752353508, -60.19669523126412, 84.32040550667716, 11.99229113618279},
+    {-25.69393346270375, 0.0, 0.0, 0.0, 0.0, -154.18974869023643, -231.5293791760455, 357.6391179106141, 93.40532418362432, -37.45832313645163, 104.0996495089623, 29.8402934266605, -43.53345659001114, 96.32455395918828, -39.17726167561544, -149.72683625798564}};
+
+/* One segment: inputs, then outputs (filled by core_integrate_segment). */
+typedef struct {
+  /* the model and the run */
+  const double *scene;   /* the scene vector (layout: SCENE_*) */
+  const double *tau;     /* NA, held over the segment */
+  const double *f_obj;   /* 3 */
+  const double *rho;     /* 2, contact point in the object frame */
+  const double *state;   /* NC row states (solver codes, as doubles) */
+  const sc_int *ev_kind; /* n_ev event kinds (EV_*) */
+  const sc_int *ev_row;  /* their rows */
+  sc_int n_ev;
+  sc_int contact_index;  /* k: the contact link, from 0 */
+  double c_k, l_k;       /* the contact link's COM offset and length */
+  double alpha;          /* Baumgarte rate (1/s) */
+  double pivot_tol;      /* held rows dependent at or below this pivot ratio */
+  double rtol, atol, max_step;
+  double t0, t1;
+  const double *y0;      /* NY */
+  const double *t_eval;  /* n_eval increasing times in (t0, t1] */
+  sc_int n_eval;
+  /* outputs */
+  double *y_eval;        /* n_eval x NY, row-major */
+  sc_int n_out;          /* output times reached */
+  double t_end;          /* where the segment ended (t1 or the event) */
+  double *y_end;         /* NY: the state there */
+  sc_int event;          /* the event that fired (index into ev_*), -1 if none */
+  sc_int nfev, nsteps, nrejected;
+  sc_int status;         /* SEG_* */
+} sc_segment;
+
+typedef struct {
+  const double **arg;
+  double **res;
+  sc_int *iw;
+  double *w;
+  const sc_segment *sg;
+  signed char state[NC];
+  double bounds[NC];
+  sc_int nfev;
+  /* the last evaluation's quantities (for the event functions and the samples) */
+  double lam[NC], av[NC], gap, s, M[NS * NS];
+} sc_ctx;
+
+static int ctx_alloc(sc_ctx *c) {
+  sc_int a, r, i, w, ma = 0, mr = 0, mi = 0, mw = 0;
+  int k;
+  int (*fns[2])(sc_int *, sc_int *, sc_int *, sc_int *);
+  c->arg = 0;
+  c->res = 0;
+  c->iw = 0;
+  c->w = 0;
+  fns[0] = SNAKECG_CS_WORK;
+  fns[1] = SNAKECG_LJ_WORK;
+  for (k = 0; k < 2; ++k) {
+    a = r = i = w = 0;
+    if (fns[k](&a, &r, &i, &w)) return -1;
+    if (a > ma) ma = a;
+    if (r > mr) mr = r;
+    if (i > mi) mi = i;
+    if (w > mw) mw = w;
+  }
+  c->arg = (const double **)calloc((size_t)(ma + 1), sizeof(double *));
+  c->res = (double **)calloc((size_t)(mr + 1), sizeof(double *));
+  c->iw = (sc_int *)malloc(sizeof(sc_int) * (size_t)(mi + 1));
+  c->w = (double *)malloc(sizeof(double) * (size_t)(mw + 1));
+  if (!c->arg || !c->res || !c->iw || !c->w) return -1;
+  return 0;
+}
+
+static void ctx_free(sc_ctx *c) {
+  free((void *)c->arg);
+  free(c->res);
+  free(c->iw);
+  free(c->w);
+}
+
+/* A V (Dynamics.row_velocities): the gap rate (row 0) and the wheels' lateral velocities.
+ * J: 3 NL x NS, column-major (rows 3i..3i+2 the twist (vx, vy, omega) of link i). */
+static void row_velocities(const sc_ctx *c, const double *J, const double *q, const double *v,
+                           const double *qo, const double *vo, double s, double *av) {
+  const sc_segment *sg = c->sg;
+  const double *woff = sg->scene + SCENE_wheel_offset;
+  const double sig = sg->scene[SCENE_side];
+  const int k = (int)sg->contact_index;
+  double tw[3 * NL], phi = q[2], spk = 0.0, cpk = 0.0, n0, n1, cs, sn, rx, ry, p0, p1;
+  int i, j;
+  for (i = 0; i < 3 * NL; ++i) {
+    double t = 0.0;
+    for (j = 0; j < NS; ++j) t += J[i + 3 * NL * j] * v[j];
+    tw[i] = t;
+  }
+  for (i = 0; i < NL; ++i) { /* phi_1 = theta, phi_{i+1} = phi_i + q_i */
+    double sp, cp;
+    if (i) phi += q[2 + i];
+    sp = sin(phi);
+    cp = cos(phi);
+    if (i == k) {
+      spk = sp;
+      cpk = cp;
+    }
+    av[1 + i] = -sp * tw[3 * i] + cp * tw[3 * i + 1] + woff[i] * tw[3 * i + 2];
+  }
+  n0 = sig * -spk;
+  n1 = sig * cpk;
+  cs = cos(qo[2]);
+  sn = sin(qo[2]);
+  rx = sg->rho[0];
+  ry = sg->rho[1];
+  p0 = vo[0] - vo[2] * (sn * rx + cs * ry);
+  p1 = vo[1] + vo[2] * (cs * rx - sn * ry);
+  av[0] = n0 * (p0 - tw[3 * k]) + n1 * (p1 - tw[3 * k + 1]) - sig * tw[3 * k + 2] * (s - sg->c_k);
+}
+
+/* The right-hand side in the mode at y (Dynamics.rates); keeps lam, A V, gap and s in c.
+ * Returns 0, or SEG_PYTHON where the Python path must do it (dependent held rows, a failed
+ * evaluation). */
+static int rhs(sc_ctx *c, const double *y, double *ydot) {
+  const sc_segment *sg = c->sg;
+  const double *q = y, *qo = y + NS, *v = y + NX, *vo = y + NX + NS;
+  double G[NC * NC], b[NC], qdd_free[NS], a_free[3], Kq[NS * NC], Ka[3 * NC];
+  double J[3 * NL * NS], L[NC * NC], d[NC], z[NC], *lam = c->lam, *av = c->av, ratio = 1.0;
+  double p_tau = 0.0, p_fric = 0.0, p_obj = 0.0;
+  int held[NC], m = 0, i, j, r;
+  c->nfev++;
+  c->arg[CS_IN_q] = q;
+  c->arg[CS_IN_v] = v;
+  c->arg[CS_IN_tau] = sg->tau;
+  c->arg[CS_IN_q_obj] = qo;
+  c->arg[CS_IN_v_obj] = vo;
+  c->arg[CS_IN_f_obj] = sg->f_obj;
+  c->arg[CS_IN_K] = sg->scene + SCENE_K;
+  c->arg[CS_IN_contact_link] = sg->scene + SCENE_contact_link;
+  c->arg[CS_IN_side] = sg->scene + SCENE_side;
+  c->arg[CS_IN_object_mass] = sg->scene + SCENE_object_mass;
+  c->arg[CS_IN_object_inertia] = sg->scene + SCENE_object_inertia;
+  c->arg[CS_IN_rho] = sg->rho;
+  c->arg[CS_IN_wheel_offset] = sg->scene + SCENE_wheel_offset;
+  c->res[CS_OUT_M] = c->M;
+  c->res[CS_OUT_delassus] = G;
+  c->res[CS_OUT_b] = b;
+  c->res[CS_OUT_qdd_free] = qdd_free;
+  c->res[CS_OUT_a_obj_free] = a_free;
+  c->res[CS_OUT_qdd_from_lam] = Kq;
+  c->res[CS_OUT_a_obj_from_lam] = Ka;
+  c->res[CS_OUT_gap] = &c->gap;
+  c->res[CS_OUT_s] = &c->s;
+  if (SNAKECG_CS(c->arg, c->res, c->iw, c->w, 0)) return SEG_PYTHON;
+  c->arg[LJ_IN_q] = q;
+  c->arg[LJ_IN_K] = sg->scene + SCENE_K;
+  c->res[LJ_OUT_J] = J;
+  if (SNAKECG_LJ(c->arg, c->res, c->iw, c->w, 0)) return SEG_PYTHON;
+  row_velocities(c, J, q, v, qo, vo, c->s, av);
+  /* eq. (16) with the mode's fixed forces, the held rows Baumgarte-stabilised:
+   * G_HH lam_H = -(b_H + G_HF lam_F) - 2 alpha (A V)_H [- alpha^2 g for the contact] */
+  for (i = 0; i < NC; ++i) {
+    const signed char st = c->state[i];
+    lam[i] = st == SLIDE_POS ? c->bounds[i] : st == SLIDE_NEG ? -c->bounds[i] : 0.0;
+    if (!isfinite(lam[i])) lam[i] = 0.0;
+    if (st == HELD) held[m++] = i;
+  }
+  for (i = 0; i < m; ++i) {
+    const int h = held[i];
+    double t = b[h];
+    for (j = 0; j < NC; ++j)
+      if (c->state[j] != HELD) t += G[h + NC * j] * lam[j];
+    z[i] = -t;
+    if (sg->alpha > 0) {
+      z[i] -= 2.0 * sg->alpha * av[h];
+      if (h == 0) z[i] -= sg->alpha * sg->alpha * c->gap;
+    }
+  }
+  for (j = 0; j < m; ++j) { /* L D L^T of G_HH in row order, no pivoting */
+    double s = G[held[j] + NC * held[j]], rr;
+    int k;
+    for (k = 0; k < j; ++k) s -= L[j + NC * k] * L[j + NC * k] * d[k];
+    d[j] = s;
+    rr = s / G[held[j] + NC * held[j]];
+    if (!(rr >= ratio)) ratio = rr;
+    for (i = j + 1; i < m; ++i) {
+      double t = G[held[i] + NC * held[j]];
+      for (k = 0; k < j; ++k) t -= L[i + NC * k] * L[j + NC * k] * d[k];
+      L[i + NC * j] = t / s;
+    }
+  }
+  if (m && !(ratio > sg->pivot_tol)) return SEG_PYTHON; /* regularized there */
+  for (i = 0; i < m; ++i)
+    for (j = 0; j < i; ++j) z[i] -= L[i + NC * j] * z[j];
+  for (i = m - 1; i >= 0; --i) {
+    z[i] /= d[i];
+    for (j = i + 1; j < m; ++j) z[i] -= L[j + NC * i] * z[j];
+  }
+  for (i = 0; i < m; ++i) lam[held[i]] = z[i];
+  /* eq. (18) and the state's rates */
+  memcpy(ydot, v, sizeof(double) * NS);
+  memcpy(ydot + NS, vo, sizeof(double) * 3);
+  for (i = 0; i < NS; ++i) {
+    double t = qdd_free[i];
+    for (r = 0; r < NC; ++r) t += Kq[i + NS * r] * lam[r];
+    ydot[NX + i] = t;
+  }
+  for (i = 0; i < 3; ++i) {
+    double t = a_free[i];
+    for (r = 0; r < NC; ++r) t += Ka[i + 3 * r] * lam[r];
+    ydot[NX + NS + i] = t;
+  }
+  for (i = 0; i < NA; ++i) p_tau += sg->tau[i] * v[3 + i];
+  for (r = 0; r < NC; ++r)
+    if (c->state[r] == SLIDE_POS || c->state[r] == SLIDE_NEG) p_fric += lam[r] * av[r];
+  for (i = 0; i < 3; ++i) p_obj += sg->f_obj[i] * vo[i];
+  ydot[2 * NX] = p_tau;
+  ydot[2 * NX + 1] = p_fric;
+  ydot[2 * NX + 2] = p_obj;
+  for (i = 0; i < NY; ++i)
+    if (!isfinite(ydot[i])) return SEG_PYTHON;
+  return 0;
+}
+
+/* The event functions at the last evaluation (Events.functions). */
+static double event_value(const sc_ctx *c, int e) {
+  const sc_segment *sg = c->sg;
+  const int r = (int)sg->ev_row[e];
+  switch ((int)sg->ev_kind[e]) {
+    case EV_SEPARATION: return c->lam[0];
+    case EV_S_LOW: return c->s;
+    case EV_S_HIGH: return sg->l_k - c->s;
+    case EV_GAP: return c->gap;
+    case EV_BREAKAWAY: return c->bounds[r] - fabs(c->lam[r]);
+    default: /* EV_SLIDE_STOP: the sliding velocity's sign returning to zero */
+      return (c->state[r] == SLIDE_POS ? -1.0 : 1.0) * c->av[r];
+  }
+}
+
+static double rms(const double *x, const double *scale, int n) {
+  double s = 0.0;
+  int i;
+  for (i = 0; i < n; ++i) s += (x[i] / scale[i]) * (x[i] / scale[i]);
+  return sqrt(s) / sqrt((double)n);
+}
+
+/* The dense output of the last step (scipy's Dop853DenseOutput). */
+typedef struct {
+  double t_old, h, y_old[NY], F[DP_NP][NY];
+} sc_dense;
+
+static void dense_eval(const sc_dense *D, double t, double *y) {
+  const double x = (t - D->t_old) / D->h;
+  int i, k;
+  for (k = 0; k < NY; ++k) y[k] = 0.0;
+  for (i = 0; i < DP_NP; ++i) { /* reversed(F): F[6], F[5], ..., F[0] */
+    const double *f = D->F[DP_NP - 1 - i];
+    const double m = (i % 2 == 0) ? x : 1.0 - x;
+    for (k = 0; k < NY; ++k) y[k] = (y[k] + f[k]) * m;
+  }
+  for (k = 0; k < NY; ++k) y[k] += D->y_old[k];
+}
+
+/* The event function e at time t on the dense output: 0 or SEG_PYTHON. */
+static int event_at(sc_ctx *c, const sc_dense *D, int e, double t, double *g) {
+  double y[NY], f[NY];
+  int st;
+  dense_eval(D, t, y);
+  st = rhs(c, y, f);
+  *g = event_value(c, e);
+  return st;
+}
+
+/* scipy.optimize.brentq (scipy/optimize/Zeros/brentq.c) on event e over [xa, xb]. */
+static int brentq(sc_ctx *c, const sc_dense *D, int e, double xa, double xb, double *root) {
+  const double xtol = 4 * DBL_EPSILON, rtol = 4 * DBL_EPSILON;
+  double xpre = xa, xcur = xb, xblk = 0.0, fpre, fcur, fblk = 0.0, spre = 0.0, scur = 0.0;
+  double sbis, delta, stry, dpre, dblk;
+  int i, st;
+  if ((st = event_at(c, D, e, xpre, &fpre))) return st;
+  if ((st = event_at(c, D, e, xcur, &fcur))) return st;
+  *root = xpre;
+  if (fpre == 0) return 0;
+  *root = xcur;
+  if (fcur == 0) return 0;
+  if (signbit(fpre) == signbit(fcur)) return 0; /* not bracketed: solve_ivp would raise */
+  for (i = 0; i < 100; ++i) {
+    if (fpre != 0 && fcur != 0 && signbit(fpre) != signbit(fcur)) {
+      xblk = xpre;
+      fblk = fpre;
+      spre = scur = xcur - xpre;
+    }
+    if (fabs(fblk) < fabs(fcur)) {
+      xpre = xcur;
+      xcur = xblk;
+      xblk = xpre;
+      fpre = fcur;
+      fcur = fblk;
+      fblk = fpre;
+    }
+    delta = (xtol + rtol * fabs(xcur)) / 2;
+    sbis = (xblk - xcur) / 2;
+    if (fcur == 0 || fabs(sbis) < delta) break;
+    if (fabs(spre) > delta && fabs(fcur) < fabs(fpre)) {
+      if (xpre == xblk) { /* interpolate */
+        stry = -fcur * (xcur - xpre) / (fcur - fpre);
+      } else { /* extrapolate */
+        dpre = (fpre - fcur) / (xpre - xcur);
+        dblk = (fblk - fcur) / (xblk - xcur);
+        stry = -fcur * (fblk * dblk - fpre * dpre) / (dblk * dpre * (fblk - fpre));
+      }
+      if (2 * fabs(stry) < fmin(fabs(spre), 3 * fabs(sbis) - delta)) {
+        spre = scur;
+        scur = stry;
+      } else {
+        spre = sbis;
+        scur = sbis;
+      }
+    } else {
+      spre = sbis;
+      scur = sbis;
+    }
+    xpre = xcur;
+    fpre = fcur;
+    if (fabs(scur) > delta) xcur += scur;
+    else xcur += (sbis > 0 ? delta : -delta);
+    if ((st = event_at(c, D, e, xcur, &fcur))) return st;
+  }
+  *root = xcur;
+  return 0;
+}
+
+/* One DOP853 step of size h from (t, y) with f = f(t, y): K (DP_NX x NY) filled up to stage
+ * DP_NS (f_new), y_new. Returns 0 or SEG_PYTHON. */
+static int rk_step(sc_ctx *c, double t, const double *y, const double *f, double h,
+                   double (*K)[NY], double *y_new) {
+  double yy[NY];
+  int s, j, k, st;
+  (void)t;
+  memcpy(K[0], f, sizeof(double) * NY);
+  for (s = 1; s < DP_NS; ++s) {
+    for (k = 0; k < NY; ++k) {
+      double dy = 0.0;
+      for (j = 0; j < s; ++j) dy += K[j][k] * DP_A[s][j];
+      yy[k] = y[k] + dy * h;
+    }
+    if ((st = rhs(c, yy, K[s]))) return st;
+  }
+  for (k = 0; k < NY; ++k) {
+    double dy = 0.0;
+    for (j = 0; j < DP_NS; ++j) dy += K[j][k] * DP_B[j];
+    y_new[k] = y[k] + h * dy;
+  }
+  return rhs(c, y_new, K[DP_NS]);
+}
+
+static double error_norm(double (*K)[NY], double h, const double *scale) {
+  double e5 = 0.0, e3 = 0.0;
+  int j, k;
+  for (k = 0; k < NY; ++k) {
+    double a = 0.0, b = 0.0;
+    for (j = 0; j <= DP_NS; ++j) {
+      a += K[j][k] * DP_E5[j];
+      b += K[j][k] * DP_E3[j];
+    }
+    a /= scale[k];
+    b /= scale[k];
+    e5 += a * a;
+    e3 += b * b;
+  }
+  if (e5 == 0 && e3 == 0) return 0.0;
+  return fabs(h) * e5 / sqrt((e5 + 0.01 * e3) * NY);
+}
+
+/* The dense output of the step (t_old, y_old) -> (t_old + h, y_new) with its stages K. */
+static int dense_build(sc_ctx *c, double t_old, double h, const double *y_old,
+                       const double *y_new, const double *f_new, double (*K)[NY],
+                       sc_dense *D) {
+  double yy[NY];
+  int s, j, k, i, st;
+  for (s = DP_NS + 1; s < DP_NX; ++s) {
+    for (k = 0; k < NY; ++k) {
+      double dy = 0.0;
+      for (j = 0; j < s; ++j) dy += K[j][k] * DP_A[s][j];
+      yy[k] = y_old[k] + dy * h;
+    }
+    if ((st = rhs(c, yy, K[s]))) return st;
+  }
+  D->t_old = t_old;
+  D->h = h;
+  memcpy(D->y_old, y_old, sizeof(double) * NY);
+  for (k = 0; k < NY; ++k) {
+    const double dy = y_new[k] - y_old[k];
+    D->F[0][k] = dy;
+    D->F[1][k] = h * K[0][k] - dy;
+    D->F[2][k] = 2 * dy - h * (f_new[k] + K[0][k]);
+    for (i = 0; i < DP_NP - 3; ++i) {
+      double t = 0.0;
+      for (j = 0; j < DP_NX; ++j) t += DP_D[i][j] * K[j][k];
+      D->F[3 + i][k] = h * t;
+    }
+  }
+  return 0;
+}
+
+/* scipy's select_initial_step for an error estimator of order 7. */
+static int initial_step(sc_ctx *c, const sc_segment *sg, const double *y0, const double *f0,
+                        double *h_out) {
+  double scale[NY], y1[NY], f1[NY], diff[NY], d0, d1, d2, h0, h1, len = fabs(sg->t1 - sg->t0);
+  int k, st;
+  if (len == 0.0) {
+    *h_out = 0.0;
+    return 0;
+  }
+  for (k = 0; k < NY; ++k) scale[k] = sg->atol + fabs(y0[k]) * sg->rtol;
+  d0 = rms(y0, scale, NY);
+  d1 = rms(f0, scale, NY);
+  h0 = (d0 < 1e-5 || d1 < 1e-5) ? 1e-6 : 0.01 * d0 / d1;
+  if (h0 > len) h0 = len;
+  for (k = 0; k < NY; ++k) y1[k] = y0[k] + h0 * f0[k];
+  if ((st = rhs(c, y1, f1))) return st;
+  for (k = 0; k < NY; ++k) diff[k] = f1[k] - f0[k];
+  d2 = rms(diff, scale, NY) / h0;
+  if (d1 <= 1e-15 && d2 <= 1e-15) h1 = fmax(1e-6, h0 * 1e-3);
+  else h1 = pow(0.01 / fmax(d1, d2), 1.0 / 8.0);
+  *h_out = fmin(fmin(100 * h0, h1), fmin(len, sg->max_step));
+  return 0;
+}
+
+static int segment(sc_ctx *c, sc_segment *sg) {
+  double K[DP_NX][NY], y[NY], f[NY], y_new[NY], f_new[NY], scale[NY];
+  double g_old[MAX_EVENTS], g_new[MAX_EVENTS];
+  double t = sg->t0, h_abs, h, t_new, err, factor;
+  sc_dense D;
+  const int n_ev = (int)sg->n_ev;
+  sc_int ie = 0;
+  int st, e, k, accepted, rejected, have_dense;
+  memcpy(y, sg->y0, sizeof(double) * NY);
+  if ((st = rhs(c, y, f))) return st;
+  for (e = 0; e < n_ev; ++e) g_old[e] = event_value(c, e);
+  if ((st = initial_step(c, sg, y, f, &h_abs))) return st;
+  while (!(t == sg->t1)) {
+    const double min_step = 10 * fabs(nextafter(t, INFINITY) - t);
+    if (h_abs > sg->max_step) h_abs = sg->max_step;
+    else if (h_abs < min_step) h_abs = min_step;
+    accepted = rejected = 0;
+    while (!accepted) {
+      if (h_abs < min_step) {
+        sg->t_end = t;
+        memcpy(sg->y_end, y, sizeof(double) * NY);
+        return SEG_TOO_SMALL;
+      }
+      h = h_abs;
+      t_new = t + h;
+      if (t_new - sg->t1 > 0) t_new = sg->t1;
+      h = t_new - t;
+      h_abs = fabs(h);
+      if ((st = rk_step(c, t, y, f, h, K, y_new))) return st;
+      for (k = 0; k < NY; ++k) scale[k] = sg->atol + fmax(fabs(y[k]), fabs(y_new[k])) * sg->rtol;
+      err = error_norm(K, h, scale);
+      if (err < 1) {
+        factor = err == 0 ? 10.0 : fmin(10.0, 0.9 * pow(err, -1.0 / 8.0));
+        if (rejected) factor = fmin(1.0, factor);
+        h_abs *= factor;
+        accepted = 1;
+      } else {
+        h_abs *= fmax(0.2, 0.9 * pow(err, -1.0 / 8.0));
+        rejected = 1;
+        sg->nrejected++;
+      }
+    }
+    sg->nsteps++;
+    memcpy(f_new, K[DP_NS], sizeof(double) * NY);
+    /* the event functions at the step's end: the last evaluation was there */
+    for (e = 0; e < n_ev; ++e) g_new[e] = event_value(c, e);
+    have_dense = 0;
+    {
+      int first = -1;
+      double t_stop = t_new, root;
+      for (e = 0; e < n_ev; ++e) {
+        if (!(g_old[e] >= 0 && g_new[e] <= 0)) continue; /* direction -1 */
+        if (!have_dense) {
+          if ((st = dense_build(c, t, h, y, y_new, f_new, K, &D))) return st;
+          have_dense = 1;
+        }
+        if ((st = brentq(c, &D, e, t, t_new, &root))) return st;
+        if (first < 0 || root < t_stop) {
+          first = e;
+          t_stop = root;
+        }
+      }
+      /* output times up to the step's end (or the event), from the dense output */
+      if (ie < sg->n_eval && sg->t_eval[ie] <= t_stop && !have_dense) {
+        if ((st = dense_build(c, t, h, y, y_new, f_new, K, &D))) return st;
+        have_dense = 1;
+      }
+      while (ie < sg->n_eval && sg->t_eval[ie] <= t_stop) {
+        dense_eval(&D, sg->t_eval[ie], sg->y_eval + ie * NY);
+        ++ie;
+        sg->n_out = ie;
+      }
+      if (first >= 0) {
+        sg->event = first;
+        sg->t_end = t_stop;
+        dense_eval(&D, t_stop, sg->y_end);
+        return SEG_EVENT;
+      }
+    }
+    for (e = 0; e < n_ev; ++e) g_old[e] = g_new[e];
+    t = t_new;
+    memcpy(y, y_new, sizeof(double) * NY);
+    memcpy(f, f_new, sizeof(double) * NY);
+  }
+  sg->t_end = t;
+  memcpy(sg->y_end, y, sizeof(double) * NY);
+  return SEG_END;
+}
+
+/* Integrate one segment (see sc_segment); returns and stores the status (SEG_*). */
+int SNAKECG_EXPORT(core_integrate_segment)(sc_segment *sg) {
+  sc_ctx c;
+  int i, st;
+  sg->n_out = 0;
+  sg->event = -1;
+  sg->nfev = sg->nsteps = sg->nrejected = 0;
+  sg->t_end = sg->t0;
+  if (sg->n_ev < 0 || sg->n_ev > MAX_EVENTS || !(sg->t1 > sg->t0) || !(sg->rtol > 0) ||
+      !(sg->atol >= 0) || !(sg->max_step > 0) || sg->contact_index < 0 ||
+      sg->contact_index >= NL) {
+    sg->status = SEG_BAD_INPUT;
+    return SEG_BAD_INPUT;
+  }
+  for (i = 0; i < NY; ++i)
+    if (!isfinite(sg->y0[i])) {
+      sg->status = SEG_BAD_INPUT;
+      return SEG_BAD_INPUT;
+    }
+  if (ctx_alloc(&c)) {
+    ctx_free(&c);
+    sg->status = SEG_MEMORY;
+    return SEG_MEMORY;
+  }
+  c.sg = sg;
+  c.nfev = 0;
+  for (i = 0; i < NC; ++i) {
+    c.state[i] = (signed char)sg->state[i];
+    c.bounds[i] = sg->scene[SCENE_bounds + i];
+  }
+  st = segment(&c, sg);
+  sg->nfev = c.nfev;
+  ctx_free(&c);
+  sg->status = st;
+  return st;
+}
+
+/* The trajectory's quantities at n states Y (n x NY, row-major) in the segment's mode: row i
+ * of out (SAMPLE_WIDTH = NY + 2 NC + 6 columns) is ydot (NY), lam (NC), A V (NC), gap, s, sr,
+ * norm_a_obj, norm_qdd (eqs. 30, 27, 26) and the sample's status (0, or SEG_PYTHON where the
+ * Python path must evaluate it). Returns 0, or SEG_MEMORY. */
+int SNAKECG_EXPORT(core_mode_samples)(sc_segment *sg, sc_int n, const double *Y, double *out) {
+  const int width = NY + 2 * NC + 6;
+  const double *I_obj = sg->scene + SCENE_object_mass;
+  sc_ctx c;
+  sc_int k;
+  int i, j;
+  if (ctx_alloc(&c)) {
+    ctx_free(&c);
+    return SEG_MEMORY;
+  }
+  c.sg = sg;
+  c.nfev = 0;
+  for (i = 0; i < NC; ++i) {
+    c.state[i] = (signed char)sg->state[i];
+    c.bounds[i] = sg->scene[SCENE_bounds + i];
+  }
+  for (k = 0; k < n; ++k) {
+    double *row = out + k * width, *extra = row + NY, nq = 0.0, na;
+    const double *qdd = row + NX, *a = row + NX + NS;
+    const int st = rhs(&c, Y + k * NY, row);
+    memcpy(extra, c.lam, sizeof(double) * NC);
+    memcpy(extra + NC, c.av, sizeof(double) * NC);
+    extra[2 * NC] = c.gap;
+    extra[2 * NC + 1] = c.s;
+    for (i = 0; i < NS; ++i) {
+      double t = 0.0;
+      for (j = 0; j < NS; ++j) t += c.M[i + NS * j] * qdd[j];
+      nq += qdd[i] * t;
+    }
+    na = I_obj[0] * a[0] * a[0] + I_obj[0] * a[1] * a[1] +
+         sg->scene[SCENE_object_inertia] * a[2] * a[2];
+    extra[2 * NC + 2] = na / fmax(na + nq, 1e-300);
+    extra[2 * NC + 3] = na;
+    extra[2 * NC + 4] = nq;
+    extra[2 * NC + 5] = (double)st;
+  }
+  ctx_free(&c);
+  return 0;
+}

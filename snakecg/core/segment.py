@@ -1,0 +1,62 @@
+"""The Python side of ``integrate.c``: one integration segment of a simulation in C.
+
+:class:`Segment` mirrors the C struct ``sc_segment`` field by field (inputs, then outputs);
+:func:`segment_functions` binds ``core_integrate_segment`` and ``core_mode_samples`` of a
+compiled model library. The caller (:mod:`snakecg.simulate.compiled`) owns the arrays whose
+addresses it stores in a :class:`Segment`.
+"""
+
+from __future__ import annotations
+
+import ctypes
+
+__all__ = [
+    "EVENT_CODES",
+    "SEG_BAD_INPUT",
+    "SEG_END",
+    "SEG_EVENT",
+    "SEG_MEMORY",
+    "SEG_PYTHON",
+    "SEG_TOO_SMALL",
+    "Segment",
+    "segment_functions",
+]
+
+_P = ctypes.c_void_p
+_I = ctypes.c_longlong
+_D = ctypes.c_double
+
+#: The event functions the C evaluates (``EV_*`` of integrate.c), by the ``quantity`` that
+#: :meth:`snakecg.simulate.events.Events.functions` gives each of its functions.
+EVENT_CODES = {"lam_contact": 0, "s": 1, "l_k - s": 2, "gap": 3, "bound - |lam|": 4,
+               "sliding velocity": 5}
+#: Segment status (``SEG_*`` of integrate.c).
+SEG_END, SEG_EVENT, SEG_TOO_SMALL, SEG_PYTHON, SEG_MEMORY, SEG_BAD_INPUT = 0, 1, -1, -2, -3, -4
+
+
+class Segment(ctypes.Structure):
+    """``sc_segment`` of integrate.c."""
+
+    _fields_ = [("scene", _P), ("tau", _P), ("f_obj", _P), ("rho", _P), ("state", _P),
+                ("ev_kind", _P), ("ev_row", _P), ("n_ev", _I), ("contact_index", _I),
+                ("c_k", _D), ("l_k", _D), ("alpha", _D), ("pivot_tol", _D), ("rtol", _D),
+                ("atol", _D), ("max_step", _D), ("t0", _D), ("t1", _D), ("y0", _P),
+                ("t_eval", _P), ("n_eval", _I), ("y_eval", _P), ("n_out", _I), ("t_end", _D),
+                ("y_end", _P), ("event", _I), ("nfev", _I), ("nsteps", _I), ("nrejected", _I),
+                ("status", _I)]
+
+
+def segment_functions(lib: ctypes.CDLL, prefix: str):
+    """``(integrate, samples)``: ``core_integrate_segment(&segment)`` and
+    ``core_mode_samples(&segment, n, Y, out)`` of ``lib``, or ``(None, None)`` for a
+    library built without them."""
+    try:
+        integrate = getattr(lib, f"{prefix}core_integrate_segment")
+        samples = getattr(lib, f"{prefix}core_mode_samples")
+    except AttributeError:
+        return None, None
+    integrate.argtypes = [_P]
+    integrate.restype = ctypes.c_int
+    samples.argtypes = [_P, _I, _P, _P]
+    samples.restype = ctypes.c_int
+    return integrate, samples

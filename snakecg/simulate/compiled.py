@@ -1,0 +1,138 @@
+"""Integration segments in compiled code: the right-hand side of a mode, the DOP853 steps,
+the output times and the event functions of a segment in one C call
+(``core_integrate_segment`` of the model library's ``integrate.c``), answering what
+:func:`scipy.integrate.solve_ivp` answers to :class:`~snakecg.simulate.simulator.Simulator`.
+
+Used for ``method="DOP853"`` without ``fixed_step`` when the torque is constant over each
+segment (a constant, or a law held over ``control_period``) and the model has a compiled
+library; the rest goes through solve_ivp. A segment the C hands back (dependent held rows,
+which the Python right-hand side regularizes; a failed evaluation) is integrated again by
+solve_ivp.
+"""
+
+from __future__ import annotations
+
+import ctypes
+import math
+from types import SimpleNamespace
+
+import numpy as np
+
+from ..core.segment import EVENT_CODES, SEG_END, SEG_EVENT, SEG_TOO_SMALL, Segment
+from ..solver import PIVOT_TOL
+
+__all__ = ["CompiledSegments", "compiled_reason"]
+
+INTEGRATORS = ("auto", "compiled", "scipy")
+_TOO_SMALL = "Required step size is less than spacing between numbers."  # solve_ivp's words
+
+
+def compiled_reason(settings) -> str | None:
+    """Why the run ``settings`` cannot use the compiled segments (``None`` when it can)."""
+    core = getattr(settings.model, "core", None)
+    if core is None or getattr(core, "integrate_segment", None) is None:
+        return "the model has no compiled library (backend other than the compiled one)"
+    if settings.method != "DOP853":
+        return f"method {settings.method!r} (the compiled segments are DOP853)"
+    if settings.fixed_step is not None:
+        return "fixed_step (the compiled segments take adaptive steps)"
+    if settings.kind != "constant" and settings.control_period is None:
+        return ("a torque law evaluated continuously (the compiled segments need a torque "
+                "constant over each segment: a constant, or control_period)")
+    return None
+
+
+class CompiledSegments:
+    """The compiled segment integrator of one run on the equations ``dyn``
+    (:class:`~snakecg.simulate.dynamics.Dynamics`) with the checked ``settings``."""
+
+    def __init__(self, dyn, settings):
+        model = settings.model
+        self.dyn = dyn
+        self._fn = model.core.integrate_segment
+        self._samples = model.core.mode_samples
+        self._model = model  # keeps the scene vector alive
+        ny, na, nc = dyn.ny, dyn.na, dyn.nc
+        self.y0 = np.zeros(ny)
+        self.y_end = np.zeros(ny)
+        self.tau = np.zeros(na)
+        self.state = np.zeros(nc)
+        self.ev_kind = np.zeros(nc + 3, dtype=np.int64)
+        self.ev_row = np.zeros(nc + 3, dtype=np.int64)
+        self.f_obj = np.ascontiguousarray(dyn.f_obj, dtype=float)
+        self.rho = np.ascontiguousarray(dyn.rho, dtype=float)
+        self.t_eval = np.zeros(0)
+        self.y_eval = np.zeros((0, ny))
+        seg = Segment()
+        seg.scene = model.scene_address
+        seg.tau, seg.f_obj, seg.rho = (self.tau.ctypes.data, self.f_obj.ctypes.data,
+                                       self.rho.ctypes.data)
+        seg.state = self.state.ctypes.data
+        seg.ev_kind, seg.ev_row = self.ev_kind.ctypes.data, self.ev_row.ctypes.data
+        seg.contact_index, seg.c_k, seg.l_k = dyn.k, dyn.c_k, dyn.l_k
+        seg.alpha, seg.pivot_tol = dyn.alpha, PIVOT_TOL
+        seg.rtol, seg.atol = settings.rtol, settings.atol
+        seg.max_step = math.inf if settings.max_step is None else settings.max_step
+        seg.y0, seg.y_end = self.y0.ctypes.data, self.y_end.ctypes.data
+        self.seg = seg
+        self._address = ctypes.addressof(seg)
+        self.steps = 0
+        self.handed_back = 0
+
+    def run(self, t0, t1, y, mode, tau, evs, t_eval):
+        """One segment from ``(t0, y)`` to ``t1`` in ``mode`` with the torque ``tau`` and the
+        event functions ``evs`` (:meth:`~snakecg.simulate.events.Events.functions`), output
+        at ``t_eval``: an object with solve_ivp's ``t``, ``y``, ``status``, ``message``,
+        ``t_events`` and ``y_events``, or ``None`` when solve_ivp must do this segment."""
+        seg, dyn = self.seg, self.dyn
+        n_ev = len(evs)
+        for i, ev in enumerate(evs):
+            self.ev_kind[i] = EVENT_CODES[ev.quantity]
+            self.ev_row[i] = ev.row
+        self.y0[:] = y
+        self.tau[:] = tau
+        self.state[:] = mode.state
+        n = len(t_eval)
+        if n != len(self.t_eval):
+            self.y_eval = np.zeros((n, dyn.ny))
+        self.t_eval = np.ascontiguousarray(t_eval, dtype=float)
+        seg.t_eval, seg.n_eval, seg.y_eval = (self.t_eval.ctypes.data, n,
+                                              self.y_eval.ctypes.data)
+        seg.n_ev, seg.t0, seg.t1 = n_ev, t0, t1
+        status = self._fn(self._address)
+        dyn.nfev += seg.nfev
+        self.steps += seg.nsteps
+        if status not in (SEG_END, SEG_EVENT, SEG_TOO_SMALL):
+            self.handed_back += 1
+            return None
+        m = seg.n_out
+        t_events = [np.zeros(0) for _ in evs]
+        y_events = [np.zeros((0, dyn.ny)) for _ in evs]
+        if status == SEG_EVENT:
+            t_events[seg.event] = np.array([seg.t_end])
+            y_events[seg.event] = self.y_end.copy()[None, :]
+        return SimpleNamespace(
+            t=self.t_eval[:m].copy(), y=self.y_eval[:m].T.copy(),
+            status={SEG_END: 0, SEG_EVENT: 1, SEG_TOO_SMALL: -1}[status],
+            message=_TOO_SMALL if status == SEG_TOO_SMALL else "",
+            t_events=t_events, y_events=y_events)
+
+    def samples(self, Y, mode, tau):
+        """The trajectory's quantities at the states ``Y`` (n, n_y) in ``mode`` with the torque
+        ``tau``, evaluated by the C: a dict of ``ydot`` (n, n_y), ``lam``, ``AV`` (n, n_c),
+        ``gap``, ``s``, ``sr``, ``norm_a_obj``, ``norm_qdd`` (n,) and ``ok`` (n,) (False where
+        the Python right-hand side must evaluate the sample: dependent held rows)."""
+        dyn = self.dyn
+        ny, nc = dyn.ny, dyn.nc
+        Y = np.ascontiguousarray(Y, dtype=float).reshape(-1, ny)
+        n = len(Y)
+        self.tau[:] = tau
+        self.state[:] = mode.state
+        out = np.zeros((n, ny + 2 * nc + 6))
+        if n and self._samples(self._address, n, Y.ctypes.data, out.ctypes.data) != 0:
+            raise MemoryError("the compiled samples could not allocate their workspace")
+        e = out[:, ny:]
+        return {"ydot": out[:, :ny], "lam": e[:, :nc], "AV": e[:, nc:2 * nc],
+                "gap": e[:, 2 * nc], "s": e[:, 2 * nc + 1], "sr": e[:, 2 * nc + 2],
+                "norm_a_obj": e[:, 2 * nc + 3], "norm_qdd": e[:, 2 * nc + 4],
+                "ok": e[:, 2 * nc + 5] == 0}
