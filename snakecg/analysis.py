@@ -33,6 +33,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from ._inputs import integer
 from .errors import InputError
 
 __all__ = ["Extremes", "extremes", "com_polar", "joint_grid", "METRICS", "sphere_directions"]
@@ -72,6 +73,32 @@ class Extremes:
         if self.certified is not None:
             self.certified = self.certified[0]
         return self
+
+
+#: Keywords of :meth:`SceneModel.extremes` and their limits (larger values would take hours).
+_EXTREMES_LIMITS = {"samples": (2, 100_000), "refine": (0, 1000), "starts": (1, 1000)}
+
+
+def check_extremes_options(kwargs: dict) -> None:
+    """The keywords of :meth:`SceneModel.extremes`, checked before any work."""
+    allowed = {*_EXTREMES_LIMITS, "refined", "exact"}
+    unknown = set(kwargs) - allowed
+    if unknown:
+        raise InputError(f"extremes() takes no keyword {sorted(unknown)[0]!r:.60} (it takes: "
+                         f"{', '.join(sorted(allowed))})")
+    for k, (lo, hi) in _EXTREMES_LIMITS.items():
+        if k in kwargs:
+            integer(k, kwargs[k], lo=lo, hi=hi, allow_none=(k == "samples"),
+                    why=" (the limit)")
+    if "exact" in kwargs and kwargs["exact"] is not None and not isinstance(kwargs["exact"], bool):
+        raise InputError(f"exact must be True, False or None (exact bounded-wheel extremes, "
+                         f"the default for up to 4 joints), got {kwargs['exact']!r:.60}")
+    refined = kwargs.get("refined")
+    if "refined" in kwargs and (isinstance(refined, str) or not isinstance(
+            refined, (list, tuple, set, frozenset)) or not all(isinstance(m, str)
+                                                               for m in refined)):
+        raise InputError(f"refined must be a list of metric names (norm_a_obj, norm_qdd, "
+                         f"norm_lambda, sr), got {refined!r:.60}")
 
 
 def _tri_inv(L: np.ndarray) -> np.ndarray:

@@ -9,7 +9,6 @@ SymPy or Jinja2.
 
 from __future__ import annotations
 
-import math
 from pathlib import Path
 from types import MappingProxyType
 
@@ -17,7 +16,6 @@ import numpy as np
 
 from . import artifacts, kernels
 from ._inputs import (
-    MAX_MAGNITUDE,
     as_batch,
     broadcast_batches,
     check_batch_memory,
@@ -84,33 +82,6 @@ def _check_load_args(backend, progress) -> None:
     if progress is not None and progress is not False and not callable(progress):
         raise InputError(f"progress must be None, False or a callable taking a message, got "
                          f"{type(progress).__name__}")
-
-
-#: Keywords of :meth:`SceneModel.extremes` and their limits (larger values would take hours).
-_EXTREMES_LIMITS = {"samples": (2, 100_000), "refine": (0, 1000), "starts": (1, 1000)}
-
-
-def _check_extremes_options(kwargs: dict) -> None:
-    from ._inputs import integer
-
-    allowed = {*_EXTREMES_LIMITS, "refined", "exact"}
-    unknown = set(kwargs) - allowed
-    if unknown:
-        raise InputError(f"extremes() takes no keyword {sorted(unknown)[0]!r:.60} (it takes: "
-                         f"{', '.join(sorted(allowed))})")
-    for k, (lo, hi) in _EXTREMES_LIMITS.items():
-        if k in kwargs:
-            integer(k, kwargs[k], lo=lo, hi=hi, allow_none=(k == "samples"),
-                    why=" (the limit)")
-    if "exact" in kwargs and kwargs["exact"] is not None and not isinstance(kwargs["exact"], bool):
-        raise InputError(f"exact must be True, False or None (exact bounded-wheel extremes, "
-                         f"the default for up to 4 joints), got {kwargs['exact']!r:.60}")
-    refined = kwargs.get("refined")
-    if "refined" in kwargs and (isinstance(refined, str) or not isinstance(
-            refined, (list, tuple, set, frozenset)) or not all(isinstance(m, str)
-                                                               for m in refined)):
-        raise InputError(f"refined must be a list of metric names (norm_a_obj, norm_qdd, "
-                         f"norm_lambda, sr), got {refined!r:.60}")
 
 
 class RobotModel:
@@ -530,10 +501,10 @@ class SceneModel(RobotModel):
     def extremes(self, q, **kwargs):
         """Best and worst ``norm_a_obj``, ``norm_qdd``, ``norm_lambda`` and ``sr`` over the
         input ellipsoid of eq. (31); see :func:`snakecg.analysis.extremes`."""
-        from .analysis import extremes
+        from .analysis import check_extremes_options, extremes
         from .progress import in_chunks
 
-        _check_extremes_options(kwargs)
+        check_extremes_options(kwargs)
         qa, batched = self._q(q)
         if not batched:
             return extremes(self, q, **kwargs)
@@ -576,48 +547,9 @@ class SceneModel(RobotModel):
         :func:`snakecg.optimize.optimize` and docs/optimize.md.
         """
         from .optimize import optimize
+        from .optimize.arguments import screen
 
-        for k in ("tau_max", "radius", "direction", "a_min", "a_obj", "allow_slide"):
-            v = kwargs.get(k)
-            if (v is not None and type(v) is not bool and type(v) is not float
-                    and not (type(v) is np.ndarray and v.dtype == np.float64)
-                    and np.iscomplexobj(v)):
-                raise InputError(f"{k} must be real, got a complex value")
-        for k in ("tau_max", "radius", "direction", "a_min", "a_obj"):
-            v = kwargs.get(k)
-            if v is None:
-                continue
-            if type(v) is float and (not abs(v) > MAX_MAGNITUDE or k == "direction"):
-                continue  # a plain number within range
-            if k == "direction" and type(v) is np.ndarray and v.dtype == np.float64:
-                continue  # scaled below
-            try:
-                big = np.max(np.abs(np.asarray(kwargs.get(k, 0.0), dtype=float)), initial=0.0)
-            except OverflowError:
-                raise InputError(f"{k} holds an integer beyond float range; expected finite "
-                                 f"numbers") from None
-            except (TypeError, ValueError):
-                continue  # optimize() names the problem
-            if k == "direction":
-                continue
-            if np.isfinite(big) and big > MAX_MAGNITUDE:
-                raise InputError(f"{k} must be at most {MAX_MAGNITUDE:g} in magnitude (the "
-                                 f"limit: it enters squares and products), got {big:g}")
-        d = kwargs.get("direction")
-        if type(d) is np.ndarray and d.dtype == np.float64 and d.ndim == 1:  # on floats
-            big = max(map(abs, d.tolist()), default=0.0)
-            if math.isfinite(big) and big > 0:
-                kwargs["direction"] = d / big
-            d = None
-        if d is not None:
-            try:
-                arr = np.asarray(d, dtype=float)
-            except (TypeError, ValueError, OverflowError):
-                arr = None
-            if arr is not None and arr.ndim == 1 and np.all(np.isfinite(arr)) and arr.any():
-                # only the direction matters: scaled so that its length cannot overflow
-                kwargs["direction"] = arr / np.max(np.abs(arr))
-        return optimize(self, q, objective=objective, **kwargs)
+        return optimize(self, q, objective=objective, **screen(kwargs))
 
     # simulation (snakecg.simulate) -------------------------------------------------------------
     def simulate(self, q0, tau, duration, v0=None, **kwargs):
