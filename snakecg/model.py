@@ -341,6 +341,8 @@ class SceneModel(RobotModel):
                             d.tau[:] = tau
                             status = core.call_packed(d.call_address)
                             raw = d.out.copy()
+                        except (TypeError, ValueError, OverflowError):
+                            status = -1  # an integer beyond float range...: named below
                         finally:
                             d.lock.release()
                         if status == 0 and raw[self._status_column] == 0.0:

@@ -115,8 +115,9 @@ class Solvers:
                 self._build_packed()
                 self.rebuilds += 1
                 self._reset(trivial, x0, quiet=True)
-            try:
-                return self._packed(_pack(H, g, A, lba, uba, lbx, ubx)).full().ravel()
+            try:  # qpOASES reports an infeasible QP on stdout: kept off it (--json)
+                with contextlib.redirect_stdout(io.StringIO()):
+                    return self._packed(_pack(H, g, A, lba, uba, lbx, ubx)).full().ravel()
             except RuntimeError:
                 return None
 
