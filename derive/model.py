@@ -6,6 +6,7 @@ from dataclasses import dataclass
 
 import sympy as sp
 
+from .build import build_function, operation_count as casadi_operation_count
 from .constraints import ContactSymbols, contact_row_local, wheel_row_local
 from .kinematics import StructuredChain, closed_form_mass_matrix, derived_parameter_values
 from .spec import FunctionSpec, ModelSpec, topological_assignments
@@ -78,6 +79,7 @@ def derive_model(n_joints: int, *, max_joints: int = MAX_SYMBOLIC_JOINTS) -> Mod
         )
     s = SnakeSymbols(n_joints)
     nl = s.n_links
+    spec_prefix = f"snakecg_na{n_joints}_"
     q_in = ("q", s.q, f"generalized coordinates (x, y, theta, q1..q{n_joints})")
     v_in = ("v", s.v, "generalized velocities, same order as q")
     K_in = ("K", s.parameters, "model parameters: raw link parameters, then derived constants")
@@ -123,33 +125,31 @@ def derive_model(n_joints: int, *, max_joints: int = MAX_SYMBOLIC_JOINTS) -> Mod
     )
 
     # inertia ----------------------------------------------------------------------------
+    # Candidate forms of M_s; the one generated is the one whose CasADi function (what the C
+    # computes) has the fewest operations. SymPy's count after CSE is recorded beside it.
+    def mass_fn(M, assignments) -> FunctionSpec:
+        return _fn("mass_matrix", "Inertia matrix M_s of the snake (eq. 4).", [q_in, K_in],
+                    [("M", M, "n_s x n_s, symmetric positive definite")], assignments,
+                    equation="(4)")
+
+    candidates: dict[str, FunctionSpec] = {}
     ch = StructuredChain(s)
-    M_struct = ch.mass_matrix()
-    struct_fn = _fn("mass_matrix", "Inertia matrix M_s of the snake (eq. 4).", [q_in, K_in],
-                    [("M", M_struct, "n_s x n_s, symmetric positive definite")],
-                    ch.assignments, equation="(4)")
-    upper = [struct_fn.outputs[0][1][a, b] for a in range(s.n_coordinates)
-             for b in range(a, s.n_coordinates)]
-    counts = {"structured": operation_count(struct_fn.assignments, upper)}
-    chosen = struct_fn
-    # the suffix-sum form (3.5 n^2) beats the pivot form (2 n^2 + O(n)) for a few joints
+    candidates["structured"] = mass_fn(ch.mass_matrix(), ch.assignments)
+    # the suffix-sum form (about 3.5 n^2) can win for one joint
     ch = StructuredChain(s)
-    sums_fn = _fn("mass_matrix", struct_fn.doc, [q_in, K_in],
-                  [("M", ch.mass_matrix_suffix_sums(), struct_fn.outputs[0][2])],
-                  ch.assignments, equation="(4)")
-    upper_s = [sums_fn.outputs[0][1][a, b] for a in range(s.n_coordinates)
-               for b in range(a, s.n_coordinates)]
-    counts["suffix_sums"] = operation_count(sums_fn.assignments, upper_s)
-    if counts["suffix_sums"] < counts["structured"]:
-        chosen = sums_fn
+    candidates["suffix_sums"] = mass_fn(ch.mass_matrix_suffix_sums(), ch.assignments)
     if n_joints <= CLOSED_FORM_MAX_JOINTS:
-        M_closed = closed_form_mass_matrix(s)
-        upper_c = [M_closed[a, b] for a in range(s.n_coordinates) for b in range(a, s.n_coordinates)]
-        counts["closed"] = operation_count((), upper_c)
-        if counts["closed"] < min(counts["structured"], counts["suffix_sums"]):
-            chosen = _fn("mass_matrix", struct_fn.doc, [q_in, K_in],
-                         [("M", M_closed, struct_fn.outputs[0][2])], (), equation="(4)")
-    functions.append(chosen)
+        candidates["closed"] = mass_fn(closed_form_mass_matrix(s), ())
+    ns = s.n_coordinates
+    counts = {}
+    counts_casadi = {}
+    for name, f in candidates.items():
+        M = f.outputs[0][1]
+        counts[name] = operation_count(f.assignments,
+                                       [M[a, b] for a in range(ns) for b in range(a, ns)])
+        counts_casadi[name] = casadi_operation_count(build_function(f, spec_prefix))
+    form = min(candidates, key=counts_casadi.get)  # ties: the first listed
+    functions.append(candidates[form])
 
     ch = StructuredChain(s)
     h = ch.bias_forces()
@@ -207,15 +207,15 @@ def derive_model(n_joints: int, *, max_joints: int = MAX_SYMBOLIC_JOINTS) -> Mod
 
     spec = ModelSpec(
         n_joints=n_joints,
-        prefix=f"snakecg_na{n_joints}_",
+        prefix=spec_prefix,
         functions=tuple(functions),
         meta={
             "n_links": nl,
             "n_coordinates": s.n_coordinates,
             "n_parameters": len(s.parameters),
-            "mass_matrix_form": ("structured" if chosen is struct_fn else
-                                 "suffix_sums" if chosen is sums_fn else "closed"),
+            "mass_matrix_form": form,
             "mass_matrix_operation_counts": counts,
+            "mass_matrix_operation_counts_casadi": counts_casadi,
         },
     )
     return ModelDerivation(symbols=s, spec=spec)
