@@ -6,17 +6,18 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from .build import build_function, operation_count as casadi_operation_count
+from .build import build_function, cse_program, operation_count as casadi_operation_count
 from .constraints import ContactSymbols, contact_row_local, wheel_row_local
 from .kinematics import StructuredChain, closed_form_mass_matrix, derived_parameter_values
 from .spec import FunctionSpec, ModelSpec, topological_assignments
 from .symbols import MAX_SYMBOLIC_JOINTS, SnakeSymbols
 
-__all__ = ["derive_model", "ModelDerivation", "operation_count", "CLOSED_FORM_MAX_JOINTS"]
+__all__ = ["derive_model", "ModelDerivation", "operation_count", "program_operation_count",
+           "CLOSED_FORM_MAX_JOINTS"]
 
-#: Beyond this joint count the ``O(n^3)`` closed form of ``M_s`` is not derived for the
-#: operation-count comparison (it grows too slowly to derive and never wins; see
-#: docs/performance.md for the measured counts).
+#: Beyond this joint count the ``O(n^3)`` closed form and the suffix-sum form of ``M_s`` are not
+#: derived for the operation-count comparison (they lose by more at every joint count above
+#: one, and cost derivation time; see docs/performance.md for the measured counts).
 CLOSED_FORM_MAX_JOINTS = 8
 
 
@@ -29,6 +30,14 @@ def operation_count(assignments, outputs) -> int:
     exprs = [e for _, e in assignments] + list(outputs)
     repl, reduced = sp.cse(exprs, order="none")
     return sum(sp.count_ops(e) for _, e in repl) + sum(sp.count_ops(e) for e in reduced)
+
+
+def program_operation_count(f: FunctionSpec) -> int:
+    """SymPy ``count_ops`` of the straight-line program of ``f`` that the CasADi function is
+    built from (:func:`.build.cse_program`: CSE over assignments and outputs together)."""
+    ordered, outs = cse_program(f)
+    return (sum(sp.count_ops(e) for _, e in ordered)
+            + sum(sp.count_ops(e) for _, _, _, elements in outs for e in elements))
 
 
 @dataclass(frozen=True)
@@ -135,18 +144,16 @@ def derive_model(n_joints: int, *, max_joints: int = MAX_SYMBOLIC_JOINTS) -> Mod
     candidates: dict[str, FunctionSpec] = {}
     ch = StructuredChain(s)
     candidates["structured"] = mass_fn(ch.mass_matrix(), ch.assignments)
-    # the suffix-sum form (about 3.5 n^2) can win for one joint
-    ch = StructuredChain(s)
-    candidates["suffix_sums"] = mass_fn(ch.mass_matrix_suffix_sums(), ch.assignments)
     if n_joints <= CLOSED_FORM_MAX_JOINTS:
+        # the suffix-sum form (about 3.5 n^2) wins for one joint; both it and the closed form
+        # lose by more at every further joint count measured
+        ch = StructuredChain(s)
+        candidates["suffix_sums"] = mass_fn(ch.mass_matrix_suffix_sums(), ch.assignments)
         candidates["closed"] = mass_fn(closed_form_mass_matrix(s), ())
-    ns = s.n_coordinates
     counts = {}
     counts_casadi = {}
     for name, f in candidates.items():
-        M = f.outputs[0][1]
-        counts[name] = operation_count(f.assignments,
-                                       [M[a, b] for a in range(ns) for b in range(a, ns)])
+        counts[name] = program_operation_count(f)
         counts_casadi[name] = casadi_operation_count(build_function(f, spec_prefix))
     form = min(candidates, key=counts_casadi.get)  # ties: the first listed
     functions.append(candidates[form])
