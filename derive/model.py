@@ -12,24 +12,12 @@ from .kinematics import StructuredChain, closed_form_mass_matrix, derived_parame
 from .spec import FunctionSpec, ModelSpec, topological_assignments
 from .symbols import MAX_SYMBOLIC_JOINTS, SnakeSymbols
 
-__all__ = ["derive_model", "ModelDerivation", "operation_count", "program_operation_count",
-           "CLOSED_FORM_MAX_JOINTS"]
+__all__ = ["derive_model", "ModelDerivation", "program_operation_count", "CLOSED_FORM_MAX_JOINTS"]
 
 #: Beyond this joint count the ``O(n^3)`` closed form and the suffix-sum form of ``M_s`` are not
 #: derived for the operation-count comparison (they lose by more at every joint count above
 #: one, and cost derivation time; see docs/performance.md for the measured counts).
 CLOSED_FORM_MAX_JOINTS = 8
-
-
-def operation_count(assignments, outputs) -> int:
-    """Operations after common-subexpression elimination (SymPy ``count_ops``, visual=False).
-
-    ``assignments`` are ``(symbol, expr)`` pairs, ``outputs`` a list of expressions. Each
-    assignment and each cse replacement counts its own operations once.
-    """
-    exprs = [e for _, e in assignments] + list(outputs)
-    repl, reduced = sp.cse(exprs, order="none")
-    return sum(sp.count_ops(e) for _, e in repl) + sum(sp.count_ops(e) for e in reduced)
 
 
 def program_operation_count(f: FunctionSpec) -> int:
