@@ -1,7 +1,8 @@
 """Planar chain kinematics and inertia, in two independent forms.
 
-* The **structured** form keeps the chain's structure as intermediate assignments (cumulative
-  angles, joint positions, suffix sums over the chain): ``O(n^2)`` operations for the inertia
+* The **structured** form keeps the chain's structure as intermediate assignments (link
+  orientations as rotation products of one sine and cosine per angle, joint positions, suffix
+  sums over the chain): ``O(n^2)`` operations for the inertia
   matrix, like a composite-rigid-body algorithm.
 * The **closed** form is eq. (4) of Reyes & Ma 2017 written out,
   ``M_s = sum_i J_i^T diag(m_i, m_i, I_i) J_i``, with each ``J_i`` obtained by differentiating
@@ -75,11 +76,32 @@ class StructuredChain:
             return q[2]
         return self._let(f"phi{i}", self.phi(i - 1) + q[2 + i - 1])
 
+    def _cos_sin_coordinate(self, r: int) -> tuple[sp.Symbol, sp.Symbol]:
+        """``cos``, ``sin`` of rotational coordinate ``r`` (``theta`` for ``r = 0``, joint
+        ``r`` after): the only trigonometric calls of the chain, one pair per angle."""
+        a = self.s.q[2 + r]
+        return self._let(f"cq{r}", sp.cos(a)), self._let(f"sq{r}", sp.sin(a))
+
     def cos_phi(self, i: int) -> sp.Symbol:
-        return self._let(f"cphi{i}", sp.cos(self.phi(i)))
+        """``cos(phi_i)`` as a rotation product: ``cos(phi_{i-1} + q_{i-1})`` =
+        ``c_{i-1} cos q_{i-1} - s_{i-1} sin q_{i-1}`` (no trigonometric call of a cumulative
+        angle: the arguments stay as small as the joint angles, and the compiler turns each
+        pair into one ``sincos`` call)."""
+        if i == 1:
+            return self._cos_sin_coordinate(0)[0]
+        if f"cphi{i}" in self._names:
+            return self._names[f"cphi{i}"]
+        cq, sq = self._cos_sin_coordinate(i - 1)
+        return self._let(f"cphi{i}", self.cos_phi(i - 1) * cq - self.sin_phi(i - 1) * sq)
 
     def sin_phi(self, i: int) -> sp.Symbol:
-        return self._let(f"sphi{i}", sp.sin(self.phi(i)))
+        """``sin(phi_i) = s_{i-1} cos q_{i-1} + c_{i-1} sin q_{i-1}`` (see :meth:`cos_phi`)."""
+        if i == 1:
+            return self._cos_sin_coordinate(0)[1]
+        if f"sphi{i}" in self._names:
+            return self._names[f"sphi{i}"]
+        cq, sq = self._cos_sin_coordinate(i - 1)
+        return self._let(f"sphi{i}", self.sin_phi(i - 1) * cq + self.cos_phi(i - 1) * sq)
 
     def omega(self, i: int) -> sp.Symbol:
         """Absolute angular velocity of link ``i`` (cumulative joint rates)."""
@@ -208,19 +230,20 @@ class StructuredChain:
         """``M_s`` of eq. (4) in about ``2 n^2`` operations (composite bodies about pivots).
 
         Coordinate ``t`` (``theta`` for ``t = 0``, joint ``t`` after) turns links
-        ``t+1 .. n`` about its pivot ``o_t`` (``o_0`` the COM of link 1, ``o_t`` joint ``t``;
-        positions taken from ``o_0``, so ``M`` does not depend on ``x, y``). With the first
-        moment of those links about ``o_t``, ``S_t = sum_{k>t} beta_k e_k``, and their
-        rotational inertia about it, ``H_t``:
+        ``t+1 .. n`` about its pivot ``o_t`` (``o_0`` the COM of link 1, ``o_t`` joint ``t``).
+        With the first moment of those links about ``o_t``, ``S_t = sum_{k>t} beta_k e_k``, and
+        their rotational inertia about it, ``H_t``:
 
         * ``M_pp = mtot 1`` and ``M_p,t = k x S_t = (-S_t.y, S_t.x)``;
-        * ``M_tt = H_t``, ``H_t = H_{t+1} + Jrot_{t+1} + 2 u_{t+1}.S_{t+1}`` with
-          ``u_k = o_k - o_{k-1} = d_k e_k`` (parallel-axis theorem, ``d_1 = l_1 - c_1``,
-          ``d_k = l_k``);
-        * ``M_rt = H_t + (o_t - o_r).S_t = C_t - o_r.S_t`` for ``r < t``, with
-          ``C_t = H_t + o_t.S_t`` (a composite body turned about another pivot).
+        * ``M_tt = H_t`` and, for ``r < t``, ``M_rt = H_t + (o_t - o_r).S_t`` (the composite
+          body beyond ``t`` turned about pivot ``r``), summed one pivot step at a time:
+          ``M_rt = M_{r+1,t} + u_{r+1}.S_t`` with ``u_k = o_k - o_{k-1} = d_k e_k``
+          (``d_1 = l_1 - c_1``, ``d_k = l_k``);
+        * ``H_{t-1} = H_t + Jrot_t + 2 u_t.S_t`` (parallel-axis theorem) ``= M_{t-1,t} +
+          u_t.S_t + Jrot_t``, reusing the step ``u_t.S_t`` of ``M_{t-1,t}``.
 
-        Four operations per entry of the rotational block, ``O(n)`` for the rest.
+        Four operations per entry of the rotational block, ``O(n)`` for the rest; no pivot
+        position is formed.
         """
         s = self.s
         n = s.n_links
@@ -240,36 +263,27 @@ class StructuredChain:
             Mx[t], My[t] = accx, accy
             M[0, 2 + t] = M[2 + t, 0] = accx
             M[1, 2 + t] = M[2 + t, 1] = accy
-        # pivot steps u_k = d_k e_k and pivots o_t (o_0 = 0)
+        # pivot steps u_k = d_k e_k
         d = [None] + [s.link_length[0] - s.link_com[0]] + list(s.link_length[1:])
-        ux: list = [None] * (n + 1)
-        uy: list = [None] * (n + 1)
+        ux: list = [None] * n
+        uy: list = [None] * n
         for k in range(1, n):
             ux[k] = self._let(f"ux{k}", d[k] * c[k])
             uy[k] = self._let(f"uy{k}", d[k] * sn[k])
-        ox: list = [sp.Integer(0)] + [None] * (n - 1)
-        oy: list = [sp.Integer(0)] + [None] * (n - 1)
-        for t in range(1, n):
-            ox[t] = ux[1] if t == 1 else self._let(f"ox{t}", ox[t - 1] + ux[t])
-            oy[t] = uy[1] if t == 1 else self._let(f"oy{t}", oy[t - 1] + uy[t])
-        # H_t, suffix recurrence (parallel-axis theorem)
-        H: list = [None] * n
-        H[n - 1] = s.rotational_diagonal[n - 1]
-        for t in range(n - 2, -1, -1):
-            uS = self._let(f"uS{t + 1}", ux[t + 1] * My[t + 1] - uy[t + 1] * Mx[t + 1])
-            H[t] = self._let(f"H{t}", H[t + 1] + s.rotational_diagonal[t] + 2 * uS)
-        # C_t = H_t + o_t.S_t, then M_rt = C_t - o_r.S_t
-        for t in range(n):
-            M[2 + t, 2 + t] = H[t]
-            if t == 0:
-                continue
-            Ct = self._let(f"C{t}", H[t] + (ox[t] * My[t] - oy[t] * Mx[t]))
-            M[2, 2 + t] = M[2 + t, 2] = Ct
-            for r in range(1, t):
-                P = self._let(f"P{r}_{t}", ox[r] * My[t] - oy[r] * Mx[t])
-                M[2 + r, 2 + t] = M[2 + t, 2 + r] = self._let(f"Mrot{r}_{t}", Ct - P)
+        # columns t = n-1 .. 0: diagonal H_t, then M_rt = M_{r+1,t} + u_{r+1}.S_t upwards
+        H = s.rotational_diagonal[n - 1]
+        for t in range(n - 1, -1, -1):
+            M[2 + t, 2 + t] = H
+            acc = H
+            for r in range(t - 1, -1, -1):
+                step = self._let(f"uS{r + 1}_{t}", ux[r + 1] * My[t] - uy[r + 1] * Mx[t])
+                acc = self._let(f"Mrot{r}_{t}", acc + step)
+                M[2 + r, 2 + t] = M[2 + t, 2 + r] = acc
+                if r == t - 1:
+                    H_next = self._let(f"H{t - 1}", acc + step + s.rotational_diagonal[t - 1])
+            if t > 0:
+                H = H_next
         return M
-
 
     def mass_matrix_suffix_sums(self) -> sp.Matrix:
         """``M_s`` of eq. (4) in ``O(n^2)`` as suffix sums of ``gamma_jk cos(phi_j - phi_k)``

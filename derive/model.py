@@ -6,28 +6,26 @@ from dataclasses import dataclass
 
 import sympy as sp
 
+from .build import build_function, cse_program, operation_count as casadi_operation_count
 from .constraints import ContactSymbols, contact_row_local, wheel_row_local
 from .kinematics import StructuredChain, closed_form_mass_matrix, derived_parameter_values
 from .spec import FunctionSpec, ModelSpec, topological_assignments
 from .symbols import MAX_SYMBOLIC_JOINTS, SnakeSymbols
 
-__all__ = ["derive_model", "ModelDerivation", "operation_count", "CLOSED_FORM_MAX_JOINTS"]
+__all__ = ["derive_model", "ModelDerivation", "program_operation_count", "CLOSED_FORM_MAX_JOINTS"]
 
-#: Beyond this joint count the ``O(n^3)`` closed form of ``M_s`` is not derived for the
-#: operation-count comparison (it grows too slowly to derive and never wins; see
-#: docs/performance.md for the measured counts).
+#: Beyond this joint count the ``O(n^3)`` closed form and the suffix-sum form of ``M_s`` are not
+#: derived for the operation-count comparison (they lose by more at every joint count above
+#: one, and cost derivation time; see docs/performance.md for the measured counts).
 CLOSED_FORM_MAX_JOINTS = 8
 
 
-def operation_count(assignments, outputs) -> int:
-    """Operations after common-subexpression elimination (SymPy ``count_ops``, visual=False).
-
-    ``assignments`` are ``(symbol, expr)`` pairs, ``outputs`` a list of expressions. Each
-    assignment and each cse replacement counts its own operations once.
-    """
-    exprs = [e for _, e in assignments] + list(outputs)
-    repl, reduced = sp.cse(exprs, order="none")
-    return sum(sp.count_ops(e) for _, e in repl) + sum(sp.count_ops(e) for e in reduced)
+def program_operation_count(f: FunctionSpec) -> int:
+    """SymPy ``count_ops`` of the straight-line program of ``f`` that the CasADi function is
+    built from (:func:`.build.cse_program`: CSE over assignments and outputs together)."""
+    ordered, outs = cse_program(f)
+    return (sum(sp.count_ops(e) for _, e in ordered)
+            + sum(sp.count_ops(e) for _, _, _, elements in outs for e in elements))
 
 
 @dataclass(frozen=True)
@@ -78,6 +76,7 @@ def derive_model(n_joints: int, *, max_joints: int = MAX_SYMBOLIC_JOINTS) -> Mod
         )
     s = SnakeSymbols(n_joints)
     nl = s.n_links
+    spec_prefix = f"snakecg_na{n_joints}_"
     q_in = ("q", s.q, f"generalized coordinates (x, y, theta, q1..q{n_joints})")
     v_in = ("v", s.v, "generalized velocities, same order as q")
     K_in = ("K", s.parameters, "model parameters: raw link parameters, then derived constants")
@@ -123,33 +122,29 @@ def derive_model(n_joints: int, *, max_joints: int = MAX_SYMBOLIC_JOINTS) -> Mod
     )
 
     # inertia ----------------------------------------------------------------------------
+    # Candidate forms of M_s; the one generated is the one whose CasADi function (what the C
+    # computes) has the fewest operations. SymPy's count after CSE is recorded beside it.
+    def mass_fn(M, assignments) -> FunctionSpec:
+        return _fn("mass_matrix", "Inertia matrix M_s of the snake (eq. 4).", [q_in, K_in],
+                    [("M", M, "n_s x n_s, symmetric positive definite")], assignments,
+                    equation="(4)")
+
+    candidates: dict[str, FunctionSpec] = {}
     ch = StructuredChain(s)
-    M_struct = ch.mass_matrix()
-    struct_fn = _fn("mass_matrix", "Inertia matrix M_s of the snake (eq. 4).", [q_in, K_in],
-                    [("M", M_struct, "n_s x n_s, symmetric positive definite")],
-                    ch.assignments, equation="(4)")
-    upper = [struct_fn.outputs[0][1][a, b] for a in range(s.n_coordinates)
-             for b in range(a, s.n_coordinates)]
-    counts = {"structured": operation_count(struct_fn.assignments, upper)}
-    chosen = struct_fn
-    # the suffix-sum form (3.5 n^2) beats the pivot form (2 n^2 + O(n)) for a few joints
-    ch = StructuredChain(s)
-    sums_fn = _fn("mass_matrix", struct_fn.doc, [q_in, K_in],
-                  [("M", ch.mass_matrix_suffix_sums(), struct_fn.outputs[0][2])],
-                  ch.assignments, equation="(4)")
-    upper_s = [sums_fn.outputs[0][1][a, b] for a in range(s.n_coordinates)
-               for b in range(a, s.n_coordinates)]
-    counts["suffix_sums"] = operation_count(sums_fn.assignments, upper_s)
-    if counts["suffix_sums"] < counts["structured"]:
-        chosen = sums_fn
+    candidates["structured"] = mass_fn(ch.mass_matrix(), ch.assignments)
     if n_joints <= CLOSED_FORM_MAX_JOINTS:
-        M_closed = closed_form_mass_matrix(s)
-        upper_c = [M_closed[a, b] for a in range(s.n_coordinates) for b in range(a, s.n_coordinates)]
-        counts["closed"] = operation_count((), upper_c)
-        if counts["closed"] < min(counts["structured"], counts["suffix_sums"]):
-            chosen = _fn("mass_matrix", struct_fn.doc, [q_in, K_in],
-                         [("M", M_closed, struct_fn.outputs[0][2])], (), equation="(4)")
-    functions.append(chosen)
+        # the suffix-sum form (about 3.5 n^2) wins for one joint; both it and the closed form
+        # lose by more at every further joint count measured
+        ch = StructuredChain(s)
+        candidates["suffix_sums"] = mass_fn(ch.mass_matrix_suffix_sums(), ch.assignments)
+        candidates["closed"] = mass_fn(closed_form_mass_matrix(s), ())
+    counts = {}
+    counts_casadi = {}
+    for name, f in candidates.items():
+        counts[name] = program_operation_count(f)
+        counts_casadi[name] = casadi_operation_count(build_function(f, spec_prefix))
+    form = min(candidates, key=counts_casadi.get)  # ties: the first listed
+    functions.append(candidates[form])
 
     ch = StructuredChain(s)
     h = ch.bias_forces()
@@ -207,15 +202,15 @@ def derive_model(n_joints: int, *, max_joints: int = MAX_SYMBOLIC_JOINTS) -> Mod
 
     spec = ModelSpec(
         n_joints=n_joints,
-        prefix=f"snakecg_na{n_joints}_",
+        prefix=spec_prefix,
         functions=tuple(functions),
         meta={
             "n_links": nl,
             "n_coordinates": s.n_coordinates,
             "n_parameters": len(s.parameters),
-            "mass_matrix_form": ("structured" if chosen is struct_fn else
-                                 "suffix_sums" if chosen is sums_fn else "closed"),
+            "mass_matrix_form": form,
             "mass_matrix_operation_counts": counts,
+            "mass_matrix_operation_counts_casadi": counts_casadi,
         },
     )
     return ModelDerivation(symbols=s, spec=spec)

@@ -313,6 +313,7 @@ def render_model(n_joints: int, *, progress=None, max_joints: int = MAX_SYMBOLIC
                             "structure (mx) above; measured in benchmarks/bench_pipeline.py"},
         "mass_matrix_form": spec.meta["mass_matrix_form"],
         "mass_matrix_operation_counts_sympy": spec.meta["mass_matrix_operation_counts"],
+        "mass_matrix_operation_counts_casadi": spec.meta["mass_matrix_operation_counts_casadi"],
         "files": {name: _sha(text) for name, text in [("model.py", py), *sorted(c_files.items())]},
         "functions": sigs,
     }

@@ -1,7 +1,7 @@
 /* GENERATED FILE - DO NOT EDIT. C code emitted by CasADi for bias_forces() of
  * generated/na1/ (see its model.py), plus its batched driver.
  * Regenerate with: python -m snakecg_derive --checked-in
- * spec sha256: 69ac8a580508aa26bce28f4a88e0f77c0b28e33b1f2694eb6cf4bbbcae64a5df
+ * spec sha256: cf8b78e4ac8543d3c9937e833ddcc109ad8d455bb5995199ae5dfb19801e274c
  * tools: sympy 1.14.0, casadi 3.8.2, jinja2 3.1.6
  */
 /* How to prefix internal symbols */
@@ -60,60 +60,66 @@ static const casadi_int casadi_s1[3] = {16, 1, 1};
 
 /* snakecg_na1_bias_forces:(q[4],v[4],K[16])->(h[4]) */
 static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
-  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10;
-  a00=arg[1]? arg[1][2] : 0;
-  a01=casadi_sq(a00);
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12;
+  a00=arg[1]? arg[1][3] : 0;
+  a01=arg[1]? arg[1][2] : 0;
+  a00=(a00+a01);
+  a00=casadi_sq(a00);
   a02=arg[0]? arg[0][2] : 0;
   a03=cos(a02);
-  a04=arg[2]? arg[2][2] : 0;
-  a05=arg[2]? arg[2][6] : 0;
-  a04=(a04-a05);
-  a03=(a03*a04);
-  a05=(a01*a03);
-  a06=arg[1]? arg[1][3] : 0;
-  a06=(a06+a00);
-  a06=casadi_sq(a06);
-  a00=arg[0]? arg[0][3] : 0;
-  a00=(a00+a02);
-  a07=cos(a00);
-  a08=arg[2]? arg[2][7] : 0;
-  a07=(a07*a08);
-  a09=(a06*a07);
-  a05=(a05+a09);
-  a09=arg[2]? arg[2][1] : 0;
-  a05=(a05*a09);
-  a10=(-a05);
-  if (res[0]!=0) res[0][0]=a10;
+  a04=arg[0]? arg[0][3] : 0;
+  a05=cos(a04);
+  a06=(a03*a05);
   a02=sin(a02);
-  a04=(a04*a02);
-  a01=(a01*a04);
-  a00=sin(a00);
-  a00=(a00*a08);
-  a06=(a06*a00);
-  a01=(a01+a06);
-  a06=(a01*a09);
-  a08=(-a06);
-  if (res[0]!=0) res[0][1]=a08;
-  a08=arg[0]? arg[0][1] : 0;
-  a04=(a04+a08);
-  a00=(a00+a04);
-  a00=(a05*a00);
-  a02=arg[0]? arg[0][0] : 0;
-  a03=(a03+a02);
-  a07=(a07+a03);
-  a01=(a01*a07);
+  a04=sin(a04);
+  a07=(a02*a04);
+  a06=(a06-a07);
+  a07=arg[2]? arg[2][7] : 0;
+  a06=(a06*a07);
+  a08=(a00*a06);
+  a01=casadi_sq(a01);
+  a09=arg[2]? arg[2][2] : 0;
+  a10=arg[2]? arg[2][6] : 0;
+  a09=(a09-a10);
+  a10=(a03*a09);
+  a11=(a01*a10);
+  a08=(a08+a11);
+  a11=arg[2]? arg[2][1] : 0;
+  a08=(a08*a11);
+  a12=(-a08);
+  if (res[0]!=0) res[0][0]=a12;
+  a03=(a03*a04);
+  a05=(a05*a02);
+  a03=(a03+a05);
+  a03=(a03*a07);
+  a00=(a00*a03);
+  a09=(a09*a02);
   a01=(a01*a09);
-  a00=(a00-a01);
-  a08=(a05*a08);
-  a08=(a00-a08);
-  a02=(a06*a02);
-  a08=(a08+a02);
-  if (res[0]!=0) res[0][2]=a08;
-  a05=(a05*a04);
-  a00=(a00-a05);
-  a06=(a06*a03);
-  a00=(a00+a06);
-  if (res[0]!=0) res[0][3]=a00;
+  a00=(a00+a01);
+  a01=(a00*a11);
+  a02=(-a01);
+  if (res[0]!=0) res[0][1]=a02;
+  a02=arg[0]? arg[0][1] : 0;
+  a09=(a09+a02);
+  a03=(a03+a09);
+  a03=(a08*a03);
+  a07=arg[0]? arg[0][0] : 0;
+  a10=(a10+a07);
+  a06=(a06+a10);
+  a00=(a00*a06);
+  a00=(a00*a11);
+  a03=(a03-a00);
+  a02=(a08*a02);
+  a02=(a03-a02);
+  a07=(a01*a07);
+  a02=(a02+a07);
+  if (res[0]!=0) res[0][2]=a02;
+  a08=(a08*a09);
+  a03=(a03-a08);
+  a01=(a01*a10);
+  a03=(a03+a01);
+  if (res[0]!=0) res[0][3]=a03;
   return 0;
 }
 
@@ -208,7 +214,7 @@ CASADI_SYMBOL_EXPORT int snakecg_na1_batch_bias_forces(casadi_int n, const casad
   const casadi_real* a[3];
   casadi_real* r[1];
   casadi_int* iw = (casadi_int*) malloc(sizeof(casadi_int) * 1);
-  casadi_real* w = (casadi_real*) malloc(sizeof(casadi_real) * 12);
+  casadi_real* w = (casadi_real*) malloc(sizeof(casadi_real) * 14);
   casadi_int i, k;
   int status = 0;
   if (!iw || !w) { free(iw); free(w); return -1; }

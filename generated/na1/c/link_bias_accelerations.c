@@ -1,7 +1,7 @@
 /* GENERATED FILE - DO NOT EDIT. C code emitted by CasADi for link_bias_accelerations() of
  * generated/na1/ (see its model.py), plus its batched driver.
  * Regenerate with: python -m snakecg_derive --checked-in
- * spec sha256: 69ac8a580508aa26bce28f4a88e0f77c0b28e33b1f2694eb6cf4bbbcae64a5df
+ * spec sha256: cf8b78e4ac8543d3c9937e833ddcc109ad8d455bb5995199ae5dfb19801e274c
  * tools: sympy 1.14.0, casadi 3.8.2, jinja2 3.1.6
  */
 /* How to prefix internal symbols */
@@ -62,39 +62,44 @@ static const casadi_int casadi_s2[3] = {3, 2, 1};
 
 /* snakecg_na1_link_bias_accelerations:(q[4],v[4],K[16])->(bias[3x2]) */
 static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
-  casadi_real a0, a1, a2, a3, a4, a5, a6, a7, a8;
+  casadi_real a0, a1, a2, a3, a4, a5, a6, a7, a8, a9;
   a0=0.;
   if (res[0]!=0) res[0][0]=a0;
   if (res[0]!=0) res[0][1]=a0;
   if (res[0]!=0) res[0][2]=a0;
   a1=arg[0]? arg[0][2] : 0;
   a2=cos(a1);
-  a3=arg[1]? arg[1][2] : 0;
-  a4=casadi_sq(a3);
-  a5=arg[2]? arg[2][2] : 0;
-  a6=arg[2]? arg[2][6] : 0;
-  a5=(a5-a6);
-  a4=(a4*a5);
-  a2=(a2*a4);
-  a5=arg[0]? arg[0][3] : 0;
-  a5=(a5+a1);
-  a6=cos(a5);
-  a7=arg[2]? arg[2][7] : 0;
-  a8=arg[1]? arg[1][3] : 0;
-  a8=(a8+a3);
-  a8=casadi_sq(a8);
-  a7=(a7*a8);
-  a6=(a6*a7);
-  a2=(a2+a6);
-  a2=(-a2);
-  if (res[0]!=0) res[0][3]=a2;
+  a3=arg[0]? arg[0][3] : 0;
+  a4=cos(a3);
+  a5=(a2*a4);
   a1=sin(a1);
+  a3=sin(a3);
+  a6=(a1*a3);
+  a5=(a5-a6);
+  a6=arg[2]? arg[2][7] : 0;
+  a7=arg[1]? arg[1][3] : 0;
+  a8=arg[1]? arg[1][2] : 0;
+  a7=(a7+a8);
+  a7=casadi_sq(a7);
+  a6=(a6*a7);
+  a5=(a5*a6);
+  a8=casadi_sq(a8);
+  a7=arg[2]? arg[2][2] : 0;
+  a9=arg[2]? arg[2][6] : 0;
+  a7=(a7-a9);
+  a8=(a8*a7);
+  a7=(a2*a8);
+  a5=(a5+a7);
+  a5=(-a5);
+  if (res[0]!=0) res[0][3]=a5;
+  a2=(a2*a3);
   a4=(a4*a1);
-  a5=sin(a5);
-  a7=(a7*a5);
-  a4=(a4+a7);
-  a4=(-a4);
-  if (res[0]!=0) res[0][4]=a4;
+  a2=(a2+a4);
+  a6=(a6*a2);
+  a8=(a8*a1);
+  a6=(a6+a8);
+  a6=(-a6);
+  if (res[0]!=0) res[0][4]=a6;
   if (res[0]!=0) res[0][5]=a0;
   return 0;
 }
@@ -190,7 +195,7 @@ CASADI_SYMBOL_EXPORT int snakecg_na1_batch_link_bias_accelerations(casadi_int n,
   const casadi_real* a[3];
   casadi_real* r[1];
   casadi_int* iw = (casadi_int*) malloc(sizeof(casadi_int) * 1);
-  casadi_real* w = (casadi_real*) malloc(sizeof(casadi_real) * 10);
+  casadi_real* w = (casadi_real*) malloc(sizeof(casadi_real) * 11);
   casadi_int i, k;
   int status = 0;
   if (!iw || !w) { free(iw); free(w); return -1; }

@@ -1,7 +1,7 @@
 /* GENERATED FILE - DO NOT EDIT. C code emitted by CasADi for link_jacobians() of
  * generated/na1/ (see its model.py), plus its batched driver.
  * Regenerate with: python -m snakecg_derive --checked-in
- * spec sha256: 69ac8a580508aa26bce28f4a88e0f77c0b28e33b1f2694eb6cf4bbbcae64a5df
+ * spec sha256: cf8b78e4ac8543d3c9937e833ddcc109ad8d455bb5995199ae5dfb19801e274c
  * tools: sympy 1.14.0, casadi 3.8.2, jinja2 3.1.6
  */
 /* How to prefix internal symbols */
@@ -59,57 +59,62 @@ static const casadi_int casadi_s2[3] = {6, 4, 1};
 
 /* snakecg_na1_link_jacobians:(q[4],K[16])->(J[6x4]) */
 static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
-  casadi_real a0, a1, a2, a3, a4, a5, a6, a7, a8;
-  a0=1.;
-  if (res[0]!=0) res[0][0]=a0;
-  a1=0.;
-  if (res[0]!=0) res[0][1]=a1;
-  if (res[0]!=0) res[0][2]=a1;
-  if (res[0]!=0) res[0][3]=a0;
-  if (res[0]!=0) res[0][4]=a1;
-  if (res[0]!=0) res[0][5]=a1;
-  if (res[0]!=0) res[0][6]=a1;
-  if (res[0]!=0) res[0][7]=a0;
-  if (res[0]!=0) res[0][8]=a1;
-  if (res[0]!=0) res[0][9]=a1;
-  if (res[0]!=0) res[0][10]=a0;
-  if (res[0]!=0) res[0][11]=a1;
-  if (res[0]!=0) res[0][12]=a1;
-  if (res[0]!=0) res[0][13]=a1;
-  if (res[0]!=0) res[0][14]=a0;
-  a2=arg[0]? arg[0][1] : 0;
-  a3=arg[1]? arg[1][2] : 0;
-  a4=arg[1]? arg[1][6] : 0;
-  a3=(a3-a4);
-  a4=arg[0]? arg[0][2] : 0;
-  a5=sin(a4);
-  a5=(a3*a5);
-  a5=(a2+a5);
-  a6=arg[0]? arg[0][3] : 0;
-  a6=(a6+a4);
-  a7=sin(a6);
-  a8=arg[1]? arg[1][7] : 0;
-  a7=(a7*a8);
-  a5=(a5+a7);
-  a2=(a2-a5);
-  if (res[0]!=0) res[0][15]=a2;
-  a2=arg[0]? arg[0][0] : 0;
-  a4=cos(a4);
-  a4=(a4*a3);
-  a4=(a2+a4);
-  a6=cos(a6);
-  a6=(a6*a8);
-  a4=(a4+a6);
-  a4=(a4-a2);
-  if (res[0]!=0) res[0][16]=a4;
-  if (res[0]!=0) res[0][17]=a0;
-  if (res[0]!=0) res[0][18]=a1;
-  if (res[0]!=0) res[0][19]=a1;
-  if (res[0]!=0) res[0][20]=a1;
-  a7=(-a7);
-  if (res[0]!=0) res[0][21]=a7;
-  if (res[0]!=0) res[0][22]=a6;
-  if (res[0]!=0) res[0][23]=a0;
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10;
+  a00=1.;
+  if (res[0]!=0) res[0][0]=a00;
+  a01=0.;
+  if (res[0]!=0) res[0][1]=a01;
+  if (res[0]!=0) res[0][2]=a01;
+  if (res[0]!=0) res[0][3]=a00;
+  if (res[0]!=0) res[0][4]=a01;
+  if (res[0]!=0) res[0][5]=a01;
+  if (res[0]!=0) res[0][6]=a01;
+  if (res[0]!=0) res[0][7]=a00;
+  if (res[0]!=0) res[0][8]=a01;
+  if (res[0]!=0) res[0][9]=a01;
+  if (res[0]!=0) res[0][10]=a00;
+  if (res[0]!=0) res[0][11]=a01;
+  if (res[0]!=0) res[0][12]=a01;
+  if (res[0]!=0) res[0][13]=a01;
+  if (res[0]!=0) res[0][14]=a00;
+  a02=arg[0]? arg[0][1] : 0;
+  a03=arg[1]? arg[1][2] : 0;
+  a04=arg[1]? arg[1][6] : 0;
+  a03=(a03-a04);
+  a04=arg[0]? arg[0][2] : 0;
+  a05=sin(a04);
+  a06=(a03*a05);
+  a06=(a02+a06);
+  a04=cos(a04);
+  a07=arg[0]? arg[0][3] : 0;
+  a08=sin(a07);
+  a09=(a04*a08);
+  a07=cos(a07);
+  a10=(a07*a05);
+  a09=(a09+a10);
+  a10=arg[1]? arg[1][7] : 0;
+  a09=(a09*a10);
+  a06=(a06+a09);
+  a02=(a02-a06);
+  if (res[0]!=0) res[0][15]=a02;
+  a02=arg[0]? arg[0][0] : 0;
+  a03=(a04*a03);
+  a03=(a02+a03);
+  a04=(a04*a07);
+  a05=(a05*a08);
+  a04=(a04-a05);
+  a04=(a04*a10);
+  a03=(a03+a04);
+  a03=(a03-a02);
+  if (res[0]!=0) res[0][16]=a03;
+  if (res[0]!=0) res[0][17]=a00;
+  if (res[0]!=0) res[0][18]=a01;
+  if (res[0]!=0) res[0][19]=a01;
+  if (res[0]!=0) res[0][20]=a01;
+  a09=(-a09);
+  if (res[0]!=0) res[0][21]=a09;
+  if (res[0]!=0) res[0][22]=a04;
+  if (res[0]!=0) res[0][23]=a00;
   return 0;
 }
 
@@ -202,7 +207,7 @@ CASADI_SYMBOL_EXPORT int snakecg_na1_batch_link_jacobians(casadi_int n, const ca
   const casadi_real* a[2];
   casadi_real* r[1];
   casadi_int* iw = (casadi_int*) malloc(sizeof(casadi_int) * 1);
-  casadi_real* w = (casadi_real*) malloc(sizeof(casadi_real) * 10);
+  casadi_real* w = (casadi_real*) malloc(sizeof(casadi_real) * 12);
   casadi_int i, k;
   int status = 0;
   if (!iw || !w) { free(iw); free(w); return -1; }

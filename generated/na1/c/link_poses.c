@@ -1,7 +1,7 @@
 /* GENERATED FILE - DO NOT EDIT. C code emitted by CasADi for link_poses() of
  * generated/na1/ (see its model.py), plus its batched driver.
  * Regenerate with: python -m snakecg_derive --checked-in
- * spec sha256: 69ac8a580508aa26bce28f4a88e0f77c0b28e33b1f2694eb6cf4bbbcae64a5df
+ * spec sha256: cf8b78e4ac8543d3c9937e833ddcc109ad8d455bb5995199ae5dfb19801e274c
  * tools: sympy 1.14.0, casadi 3.8.2, jinja2 3.1.6
  */
 /* How to prefix internal symbols */
@@ -59,34 +59,40 @@ static const casadi_int casadi_s2[3] = {3, 2, 1};
 
 /* snakecg_na1_link_poses:(q[4],K[16])->(poses[3x2]) */
 static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
-  casadi_real a0, a1, a2, a3, a4, a5, a6;
-  a0=arg[0]? arg[0][0] : 0;
-  if (res[0]!=0) res[0][0]=a0;
-  a1=arg[0]? arg[0][1] : 0;
-  if (res[0]!=0) res[0][1]=a1;
-  a2=arg[0]? arg[0][2] : 0;
-  if (res[0]!=0) res[0][2]=a2;
-  a3=cos(a2);
-  a4=arg[1]? arg[1][2] : 0;
-  a5=arg[1]? arg[1][6] : 0;
-  a4=(a4-a5);
-  a3=(a3*a4);
-  a0=(a0+a3);
-  a3=arg[0]? arg[0][3] : 0;
-  a3=(a3+a2);
-  a5=cos(a3);
-  a6=arg[1]? arg[1][7] : 0;
-  a5=(a5*a6);
-  a0=(a0+a5);
-  if (res[0]!=0) res[0][3]=a0;
-  a2=sin(a2);
-  a4=(a4*a2);
-  a1=(a1+a4);
-  a4=sin(a3);
-  a4=(a4*a6);
-  a1=(a1+a4);
-  if (res[0]!=0) res[0][4]=a1;
-  if (res[0]!=0) res[0][5]=a3;
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10;
+  a00=arg[0]? arg[0][0] : 0;
+  if (res[0]!=0) res[0][0]=a00;
+  a01=arg[0]? arg[0][1] : 0;
+  if (res[0]!=0) res[0][1]=a01;
+  a02=arg[0]? arg[0][2] : 0;
+  if (res[0]!=0) res[0][2]=a02;
+  a03=cos(a02);
+  a04=arg[1]? arg[1][2] : 0;
+  a05=arg[1]? arg[1][6] : 0;
+  a04=(a04-a05);
+  a05=(a03*a04);
+  a00=(a00+a05);
+  a05=arg[0]? arg[0][3] : 0;
+  a06=cos(a05);
+  a07=(a03*a06);
+  a08=sin(a02);
+  a09=sin(a05);
+  a10=(a08*a09);
+  a07=(a07-a10);
+  a10=arg[1]? arg[1][7] : 0;
+  a07=(a07*a10);
+  a00=(a00+a07);
+  if (res[0]!=0) res[0][3]=a00;
+  a04=(a04*a08);
+  a01=(a01+a04);
+  a03=(a03*a09);
+  a06=(a06*a08);
+  a03=(a03+a06);
+  a03=(a03*a10);
+  a01=(a01+a03);
+  if (res[0]!=0) res[0][4]=a01;
+  a05=(a05+a02);
+  if (res[0]!=0) res[0][5]=a05;
   return 0;
 }
 
@@ -179,7 +185,7 @@ CASADI_SYMBOL_EXPORT int snakecg_na1_batch_link_poses(casadi_int n, const casadi
   const casadi_real* a[2];
   casadi_real* r[1];
   casadi_int* iw = (casadi_int*) malloc(sizeof(casadi_int) * 1);
-  casadi_real* w = (casadi_real*) malloc(sizeof(casadi_real) * 8);
+  casadi_real* w = (casadi_real*) malloc(sizeof(casadi_real) * 12);
   casadi_int i, k;
   int status = 0;
   if (!iw || !w) { free(iw); free(w); return -1; }

@@ -1,7 +1,7 @@
 /* GENERATED FILE - DO NOT EDIT. C code emitted by CasADi for mass_matrix() of
  * generated/na1/ (see its model.py), plus its batched driver.
  * Regenerate with: python -m snakecg_derive --checked-in
- * spec sha256: 69ac8a580508aa26bce28f4a88e0f77c0b28e33b1f2694eb6cf4bbbcae64a5df
+ * spec sha256: cf8b78e4ac8543d3c9937e833ddcc109ad8d455bb5995199ae5dfb19801e274c
  * tools: sympy 1.14.0, casadi 3.8.2, jinja2 3.1.6
  */
 /* How to prefix internal symbols */
@@ -59,52 +59,57 @@ static const casadi_int casadi_s2[3] = {4, 4, 1};
 
 /* snakecg_na1_mass_matrix:(q[4],K[16])->(M[4x4]) */
 static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
-  casadi_real a0, a1, a2, a3, a4, a5, a6, a7, a8, a9;
-  a0=arg[1]? arg[1][8] : 0;
-  if (res[0]!=0) res[0][0]=a0;
-  a1=0.;
-  if (res[0]!=0) res[0][1]=a1;
-  a2=arg[1]? arg[1][10] : 0;
-  a3=arg[0]? arg[0][3] : 0;
-  a4=arg[0]? arg[0][2] : 0;
-  a3=(a3+a4);
-  a5=sin(a3);
-  a6=(a2*a5);
-  a7=arg[1]? arg[1][9] : 0;
-  a8=sin(a4);
-  a9=(a7*a8);
-  a9=(a6+a9);
-  a9=(-a9);
-  if (res[0]!=0) res[0][2]=a9;
-  a6=(-a6);
-  if (res[0]!=0) res[0][3]=a6;
-  if (res[0]!=0) res[0][4]=a1;
-  if (res[0]!=0) res[0][5]=a0;
-  a3=cos(a3);
-  a2=(a2*a3);
-  a4=cos(a4);
-  a7=(a7*a4);
-  a7=(a2+a7);
-  if (res[0]!=0) res[0][6]=a7;
-  if (res[0]!=0) res[0][7]=a2;
-  if (res[0]!=0) res[0][8]=a9;
-  if (res[0]!=0) res[0][9]=a7;
-  a4=(a4*a3);
-  a8=(a8*a5);
-  a4=(a4+a8);
-  a8=arg[1]? arg[1][12] : 0;
-  a4=(a4*a8);
-  a8=arg[1]? arg[1][14] : 0;
-  a8=(a4+a8);
-  a5=arg[1]? arg[1][15] : 0;
-  a4=(a4+a5);
-  a8=(a8+a4);
-  if (res[0]!=0) res[0][10]=a8;
-  if (res[0]!=0) res[0][11]=a4;
-  if (res[0]!=0) res[0][12]=a6;
-  if (res[0]!=0) res[0][13]=a2;
-  if (res[0]!=0) res[0][14]=a4;
-  if (res[0]!=0) res[0][15]=a5;
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10;
+  a00=arg[1]? arg[1][8] : 0;
+  if (res[0]!=0) res[0][0]=a00;
+  a01=0.;
+  if (res[0]!=0) res[0][1]=a01;
+  a02=arg[1]? arg[1][10] : 0;
+  a03=arg[0]? arg[0][2] : 0;
+  a04=cos(a03);
+  a05=arg[0]? arg[0][3] : 0;
+  a06=sin(a05);
+  a07=(a04*a06);
+  a05=cos(a05);
+  a03=sin(a03);
+  a08=(a05*a03);
+  a07=(a07+a08);
+  a08=(a02*a07);
+  a09=arg[1]? arg[1][9] : 0;
+  a10=(a09*a03);
+  a10=(a08+a10);
+  a10=(-a10);
+  if (res[0]!=0) res[0][2]=a10;
+  a08=(-a08);
+  if (res[0]!=0) res[0][3]=a08;
+  if (res[0]!=0) res[0][4]=a01;
+  if (res[0]!=0) res[0][5]=a00;
+  a05=(a04*a05);
+  a06=(a03*a06);
+  a05=(a05-a06);
+  a02=(a02*a05);
+  a09=(a09*a04);
+  a09=(a02+a09);
+  if (res[0]!=0) res[0][6]=a09;
+  if (res[0]!=0) res[0][7]=a02;
+  if (res[0]!=0) res[0][8]=a10;
+  if (res[0]!=0) res[0][9]=a09;
+  a05=(a05*a04);
+  a07=(a07*a03);
+  a05=(a05+a07);
+  a07=arg[1]? arg[1][12] : 0;
+  a05=(a05*a07);
+  a07=arg[1]? arg[1][14] : 0;
+  a07=(a05+a07);
+  a03=arg[1]? arg[1][15] : 0;
+  a05=(a05+a03);
+  a07=(a07+a05);
+  if (res[0]!=0) res[0][10]=a07;
+  if (res[0]!=0) res[0][11]=a05;
+  if (res[0]!=0) res[0][12]=a08;
+  if (res[0]!=0) res[0][13]=a02;
+  if (res[0]!=0) res[0][14]=a05;
+  if (res[0]!=0) res[0][15]=a03;
   return 0;
 }
 
@@ -197,7 +202,7 @@ CASADI_SYMBOL_EXPORT int snakecg_na1_batch_mass_matrix(casadi_int n, const casad
   const casadi_real* a[2];
   casadi_real* r[1];
   casadi_int* iw = (casadi_int*) malloc(sizeof(casadi_int) * 1);
-  casadi_real* w = (casadi_real*) malloc(sizeof(casadi_real) * 11);
+  casadi_real* w = (casadi_real*) malloc(sizeof(casadi_real) * 12);
   casadi_int i, k;
   int status = 0;
   if (!iw || !w) { free(iw); free(w); return -1; }

@@ -1,7 +1,7 @@
 /* GENERATED FILE - DO NOT EDIT. C code emitted by CasADi for place_object() of
  * generated/na1/ (see its model.py), plus its batched driver.
  * Regenerate with: python -m snakecg_derive --checked-in
- * spec sha256: 69ac8a580508aa26bce28f4a88e0f77c0b28e33b1f2694eb6cf4bbbcae64a5df
+ * spec sha256: cf8b78e4ac8543d3c9937e833ddcc109ad8d455bb5995199ae5dfb19801e274c
  * tools: sympy 1.14.0, casadi 3.8.2, jinja2 3.1.6
  */
 /* How to prefix internal symbols */
@@ -64,7 +64,7 @@ static const casadi_int casadi_s4[3] = {3, 1, 1};
 /* snakecg_na1_place_object:(q[4],K[16],contact_link[2],contact_offset,object_distance,side)->(q_obj[3],rho[2],contact_point[2]) */
 static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
-  casadi_real a12, a13;
+  casadi_real a12, a13, a14, a15;
   a00=arg[0]? arg[0][0] : 0;
   a01=arg[2]? arg[2][0] : 0;
   a02=(a00*a01);
@@ -73,57 +73,63 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a05=arg[1]? arg[1][2] : 0;
   a06=arg[1]? arg[1][6] : 0;
   a05=(a05-a06);
-  a04=(a04*a05);
-  a00=(a00+a04);
-  a04=arg[0]? arg[0][3] : 0;
-  a04=(a04+a03);
-  a07=cos(a04);
-  a08=arg[1]? arg[1][7] : 0;
-  a07=(a07*a08);
+  a07=(a04*a05);
   a00=(a00+a07);
-  a07=arg[2]? arg[2][1] : 0;
-  a00=(a00*a07);
+  a07=arg[0]? arg[0][3] : 0;
+  a08=cos(a07);
+  a09=(a04*a08);
+  a10=sin(a03);
+  a11=sin(a07);
+  a12=(a10*a11);
+  a09=(a09-a12);
+  a12=arg[1]? arg[1][7] : 0;
+  a09=(a09*a12);
+  a00=(a00+a09);
+  a09=arg[2]? arg[2][1] : 0;
+  a00=(a00*a09);
   a02=(a02+a00);
   a00=arg[3]? arg[3][0] : 0;
   a06=(a06*a01);
-  a09=(a08*a07);
-  a06=(a06+a09);
+  a13=(a12*a09);
+  a06=(a06+a13);
   a00=(a00-a06);
   a06=(a03*a01);
-  a09=(a04*a07);
-  a06=(a06+a09);
-  a09=cos(a06);
-  a10=(a00*a09);
-  a02=(a02+a10);
-  a10=arg[4]? arg[4][0] : 0;
-  a11=arg[5]? arg[5][0] : 0;
-  a12=sin(a06);
-  a13=(a11*a12);
-  a13=(a10*a13);
-  a13=(a02-a13);
-  if (res[0]!=0) res[0][0]=a13;
-  a13=arg[0]? arg[0][1] : 0;
-  a01=(a13*a01);
-  a03=sin(a03);
-  a05=(a05*a03);
-  a13=(a13+a05);
-  a04=sin(a04);
-  a04=(a04*a08);
-  a13=(a13+a04);
-  a13=(a13*a07);
-  a01=(a01+a13);
-  a00=(a00*a12);
+  a07=(a07+a03);
+  a07=(a07*a09);
+  a06=(a06+a07);
+  a07=cos(a06);
+  a03=(a00*a07);
+  a02=(a02+a03);
+  a03=arg[4]? arg[4][0] : 0;
+  a13=arg[5]? arg[5][0] : 0;
+  a14=sin(a06);
+  a15=(a13*a14);
+  a15=(a03*a15);
+  a15=(a02-a15);
+  if (res[0]!=0) res[0][0]=a15;
+  a15=arg[0]? arg[0][1] : 0;
+  a01=(a15*a01);
+  a05=(a05*a10);
+  a15=(a15+a05);
+  a04=(a04*a11);
+  a08=(a08*a10);
+  a04=(a04+a08);
+  a04=(a04*a12);
+  a15=(a15+a04);
+  a15=(a15*a09);
+  a01=(a01+a15);
+  a00=(a00*a14);
   a01=(a01+a00);
-  a09=(a11*a09);
-  a09=(a10*a09);
-  a09=(a01+a09);
-  if (res[0]!=0) res[0][1]=a09;
+  a07=(a13*a07);
+  a07=(a03*a07);
+  a07=(a01+a07);
+  if (res[0]!=0) res[0][1]=a07;
   if (res[0]!=0) res[0][2]=a06;
   a06=0.;
   if (res[1]!=0) res[1][0]=a06;
-  a11=(a11*a10);
-  a11=(-a11);
-  if (res[1]!=0) res[1][1]=a11;
+  a13=(a13*a03);
+  a13=(-a13);
+  if (res[1]!=0) res[1][1]=a13;
   if (res[2]!=0) res[2][0]=a02;
   if (res[2]!=0) res[2][1]=a01;
   return 0;
@@ -230,7 +236,7 @@ CASADI_SYMBOL_EXPORT int snakecg_na1_batch_place_object(casadi_int n, const casa
   const casadi_real* a[6];
   casadi_real* r[3];
   casadi_int* iw = (casadi_int*) malloc(sizeof(casadi_int) * 1);
-  casadi_real* w = (casadi_real*) malloc(sizeof(casadi_real) * 15);
+  casadi_real* w = (casadi_real*) malloc(sizeof(casadi_real) * 17);
   casadi_int i, k;
   int status = 0;
   if (!iw || !w) { free(iw); free(w); return -1; }

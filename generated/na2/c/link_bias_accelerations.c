@@ -1,7 +1,7 @@
 /* GENERATED FILE - DO NOT EDIT. C code emitted by CasADi for link_bias_accelerations() of
  * generated/na2/ (see its model.py), plus its batched driver.
  * Regenerate with: python -m snakecg_derive --checked-in
- * spec sha256: 92aa81f73b9d7ff69afc31c561cda203208b6d2de4fc2c5b6871a20f60622a96
+ * spec sha256: 4e89dd687d4cbc8709e9cfd98d262e9a276cb64607f251a625473028d4ba2314
  * tools: sympy 1.14.0, casadi 3.8.2, jinja2 3.1.6
  */
 /* How to prefix internal symbols */
@@ -62,64 +62,75 @@ static const casadi_int casadi_s2[3] = {3, 3, 1};
 
 /* snakecg_na2_link_bias_accelerations:(q[5],v[5],K[25])->(bias[3x3]) */
 static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
-  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10;
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13;
   a00=0.;
   if (res[0]!=0) res[0][0]=a00;
   if (res[0]!=0) res[0][1]=a00;
   if (res[0]!=0) res[0][2]=a00;
   a01=arg[0]? arg[0][2] : 0;
   a02=cos(a01);
-  a03=arg[1]? arg[1][2] : 0;
-  a04=casadi_sq(a03);
-  a05=arg[2]? arg[2][3] : 0;
-  a06=arg[2]? arg[2][9] : 0;
-  a05=(a05-a06);
-  a04=(a04*a05);
-  a02=(a02*a04);
-  a05=arg[0]? arg[0][3] : 0;
-  a05=(a05+a01);
-  a06=cos(a05);
-  a07=arg[1]? arg[1][3] : 0;
-  a07=(a07+a03);
-  a03=casadi_sq(a07);
-  a08=arg[2]? arg[2][10] : 0;
-  a09=(a03*a08);
-  a10=(a06*a09);
-  a02=(a02+a10);
-  a10=(-a02);
-  if (res[0]!=0) res[0][3]=a10;
+  a03=arg[0]? arg[0][3] : 0;
+  a04=cos(a03);
+  a05=(a02*a04);
   a01=sin(a01);
-  a04=(a04*a01);
-  a01=sin(a05);
-  a09=(a09*a01);
-  a04=(a04+a09);
-  a09=(-a04);
-  if (res[0]!=0) res[0][4]=a09;
-  if (res[0]!=0) res[0][5]=a00;
-  a09=arg[2]? arg[2][4] : 0;
-  a09=(a09-a08);
-  a03=(a03*a09);
-  a06=(a06*a03);
-  a02=(a02+a06);
-  a06=arg[0]? arg[0][4] : 0;
-  a05=(a05+a06);
-  a06=cos(a05);
-  a09=arg[2]? arg[2][11] : 0;
-  a08=arg[1]? arg[1][4] : 0;
-  a07=(a07+a08);
+  a03=sin(a03);
+  a06=(a01*a03);
+  a05=(a05-a06);
+  a06=arg[1]? arg[1][3] : 0;
+  a07=arg[1]? arg[1][2] : 0;
+  a06=(a06+a07);
+  a08=casadi_sq(a06);
+  a09=arg[2]? arg[2][10] : 0;
+  a10=(a08*a09);
+  a11=(a05*a10);
   a07=casadi_sq(a07);
-  a09=(a09*a07);
-  a06=(a06*a09);
-  a02=(a02+a06);
-  a02=(-a02);
-  if (res[0]!=0) res[0][6]=a02;
-  a03=(a03*a01);
-  a04=(a04+a03);
-  a05=sin(a05);
-  a09=(a09*a05);
-  a04=(a04+a09);
-  a04=(-a04);
-  if (res[0]!=0) res[0][7]=a04;
+  a12=arg[2]? arg[2][3] : 0;
+  a13=arg[2]? arg[2][9] : 0;
+  a12=(a12-a13);
+  a07=(a07*a12);
+  a12=(a02*a07);
+  a11=(a11+a12);
+  a12=(-a11);
+  if (res[0]!=0) res[0][3]=a12;
+  a02=(a02*a03);
+  a04=(a04*a01);
+  a02=(a02+a04);
+  a10=(a10*a02);
+  a07=(a07*a01);
+  a10=(a10+a07);
+  a07=(-a10);
+  if (res[0]!=0) res[0][4]=a07;
+  if (res[0]!=0) res[0][5]=a00;
+  a07=arg[2]? arg[2][4] : 0;
+  a07=(a07-a09);
+  a08=(a08*a07);
+  a07=(a05*a08);
+  a11=(a11+a07);
+  a07=arg[0]? arg[0][4] : 0;
+  a09=cos(a07);
+  a01=(a05*a09);
+  a07=sin(a07);
+  a04=(a02*a07);
+  a01=(a01-a04);
+  a04=arg[2]? arg[2][11] : 0;
+  a03=arg[1]? arg[1][4] : 0;
+  a06=(a06+a03);
+  a06=casadi_sq(a06);
+  a04=(a04*a06);
+  a01=(a01*a04);
+  a11=(a11+a01);
+  a11=(-a11);
+  if (res[0]!=0) res[0][6]=a11;
+  a08=(a08*a02);
+  a10=(a10+a08);
+  a05=(a05*a07);
+  a09=(a09*a02);
+  a05=(a05+a09);
+  a04=(a04*a05);
+  a10=(a10+a04);
+  a10=(-a10);
+  if (res[0]!=0) res[0][7]=a10;
   if (res[0]!=0) res[0][8]=a00;
   return 0;
 }
@@ -215,7 +226,7 @@ CASADI_SYMBOL_EXPORT int snakecg_na2_batch_link_bias_accelerations(casadi_int n,
   const casadi_real* a[3];
   casadi_real* r[1];
   casadi_int* iw = (casadi_int*) malloc(sizeof(casadi_int) * 1);
-  casadi_real* w = (casadi_real*) malloc(sizeof(casadi_real) * 12);
+  casadi_real* w = (casadi_real*) malloc(sizeof(casadi_real) * 15);
   casadi_int i, k;
   int status = 0;
   if (!iw || !w) { free(iw); free(w); return -1; }

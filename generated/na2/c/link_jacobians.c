@@ -1,7 +1,7 @@
 /* GENERATED FILE - DO NOT EDIT. C code emitted by CasADi for link_jacobians() of
  * generated/na2/ (see its model.py), plus its batched driver.
  * Regenerate with: python -m snakecg_derive --checked-in
- * spec sha256: 92aa81f73b9d7ff69afc31c561cda203208b6d2de4fc2c5b6871a20f60622a96
+ * spec sha256: 4e89dd687d4cbc8709e9cfd98d262e9a276cb64607f251a625473028d4ba2314
  * tools: sympy 1.14.0, casadi 3.8.2, jinja2 3.1.6
  */
 /* How to prefix internal symbols */
@@ -60,7 +60,7 @@ static const casadi_int casadi_s2[3] = {9, 5, 1};
 /* snakecg_na2_link_jacobians:(q[5],K[25])->(J[9x5]) */
 static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
-  casadi_real a12, a13, a14;
+  casadi_real a12, a13, a14, a15, a16;
   a00=1.;
   if (res[0]!=0) res[0][0]=a00;
   a01=0.;
@@ -90,57 +90,67 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a03=(a03-a04);
   a04=arg[0]? arg[0][2] : 0;
   a05=sin(a04);
-  a05=(a03*a05);
-  a05=(a02+a05);
-  a06=arg[0]? arg[0][3] : 0;
-  a06=(a06+a04);
-  a07=sin(a06);
-  a08=arg[1]? arg[1][10] : 0;
-  a09=(a07*a08);
-  a10=(a05+a09);
-  a11=(a02-a10);
-  if (res[0]!=0) res[0][21]=a11;
-  a11=arg[0]? arg[0][0] : 0;
+  a06=(a03*a05);
+  a06=(a02+a06);
   a04=cos(a04);
-  a04=(a04*a03);
-  a04=(a11+a04);
-  a03=cos(a06);
-  a12=(a03*a08);
-  a13=(a04+a12);
-  a14=(a13-a11);
-  if (res[0]!=0) res[0][22]=a14;
+  a07=arg[0]? arg[0][3] : 0;
+  a08=sin(a07);
+  a09=(a04*a08);
+  a07=cos(a07);
+  a10=(a07*a05);
+  a09=(a09+a10);
+  a10=arg[1]? arg[1][10] : 0;
+  a11=(a09*a10);
+  a12=(a06+a11);
+  a13=(a02-a12);
+  if (res[0]!=0) res[0][21]=a13;
+  a13=arg[0]? arg[0][0] : 0;
+  a03=(a04*a03);
+  a03=(a13+a03);
+  a04=(a04*a07);
+  a05=(a05*a08);
+  a04=(a04-a05);
+  a05=(a04*a10);
+  a08=(a03+a05);
+  a07=(a08-a13);
+  if (res[0]!=0) res[0][22]=a07;
   if (res[0]!=0) res[0][23]=a00;
-  a14=arg[1]? arg[1][4] : 0;
-  a14=(a14-a08);
-  a07=(a14*a07);
-  a10=(a10+a07);
-  a07=arg[0]? arg[0][4] : 0;
-  a06=(a06+a07);
-  a07=sin(a06);
-  a08=arg[1]? arg[1][11] : 0;
-  a07=(a07*a08);
-  a10=(a10+a07);
-  a02=(a02-a10);
+  a07=arg[1]? arg[1][4] : 0;
+  a07=(a07-a10);
+  a10=(a07*a09);
+  a12=(a12+a10);
+  a10=arg[0]? arg[0][4] : 0;
+  a14=sin(a10);
+  a15=(a04*a14);
+  a10=cos(a10);
+  a16=(a10*a09);
+  a15=(a15+a16);
+  a16=arg[1]? arg[1][11] : 0;
+  a15=(a15*a16);
+  a12=(a12+a15);
+  a02=(a02-a12);
   if (res[0]!=0) res[0][24]=a02;
-  a03=(a03*a14);
-  a13=(a13+a03);
-  a06=cos(a06);
-  a06=(a06*a08);
-  a13=(a13+a06);
-  a11=(a13-a11);
-  if (res[0]!=0) res[0][25]=a11;
+  a07=(a04*a07);
+  a08=(a08+a07);
+  a04=(a04*a10);
+  a09=(a09*a14);
+  a04=(a04-a09);
+  a04=(a04*a16);
+  a08=(a08+a04);
+  a13=(a08-a13);
+  if (res[0]!=0) res[0][25]=a13;
   if (res[0]!=0) res[0][26]=a00;
   if (res[0]!=0) res[0][27]=a01;
   if (res[0]!=0) res[0][28]=a01;
   if (res[0]!=0) res[0][29]=a01;
-  a09=(-a09);
-  if (res[0]!=0) res[0][30]=a09;
-  if (res[0]!=0) res[0][31]=a12;
+  a11=(-a11);
+  if (res[0]!=0) res[0][30]=a11;
+  if (res[0]!=0) res[0][31]=a05;
   if (res[0]!=0) res[0][32]=a00;
-  a05=(a05-a10);
-  if (res[0]!=0) res[0][33]=a05;
-  a13=(a13-a04);
-  if (res[0]!=0) res[0][34]=a13;
+  a06=(a06-a12);
+  if (res[0]!=0) res[0][33]=a06;
+  a08=(a08-a03);
+  if (res[0]!=0) res[0][34]=a08;
   if (res[0]!=0) res[0][35]=a00;
   if (res[0]!=0) res[0][36]=a01;
   if (res[0]!=0) res[0][37]=a01;
@@ -148,9 +158,9 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   if (res[0]!=0) res[0][39]=a01;
   if (res[0]!=0) res[0][40]=a01;
   if (res[0]!=0) res[0][41]=a01;
-  a07=(-a07);
-  if (res[0]!=0) res[0][42]=a07;
-  if (res[0]!=0) res[0][43]=a06;
+  a15=(-a15);
+  if (res[0]!=0) res[0][42]=a15;
+  if (res[0]!=0) res[0][43]=a04;
   if (res[0]!=0) res[0][44]=a00;
   return 0;
 }
@@ -244,7 +254,7 @@ CASADI_SYMBOL_EXPORT int snakecg_na2_batch_link_jacobians(casadi_int n, const ca
   const casadi_real* a[2];
   casadi_real* r[1];
   casadi_int* iw = (casadi_int*) malloc(sizeof(casadi_int) * 1);
-  casadi_real* w = (casadi_real*) malloc(sizeof(casadi_real) * 16);
+  casadi_real* w = (casadi_real*) malloc(sizeof(casadi_real) * 18);
   casadi_int i, k;
   int status = 0;
   if (!iw || !w) { free(iw); free(w); return -1; }

@@ -1,7 +1,7 @@
 /* GENERATED FILE - DO NOT EDIT. C code emitted by CasADi for link_poses() of
  * generated/na2/ (see its model.py), plus its batched driver.
  * Regenerate with: python -m snakecg_derive --checked-in
- * spec sha256: 92aa81f73b9d7ff69afc31c561cda203208b6d2de4fc2c5b6871a20f60622a96
+ * spec sha256: 4e89dd687d4cbc8709e9cfd98d262e9a276cb64607f251a625473028d4ba2314
  * tools: sympy 1.14.0, casadi 3.8.2, jinja2 3.1.6
  */
 /* How to prefix internal symbols */
@@ -59,52 +59,64 @@ static const casadi_int casadi_s2[3] = {3, 3, 1};
 
 /* snakecg_na2_link_poses:(q[5],K[25])->(poses[3x3]) */
 static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
-  casadi_real a0, a1, a2, a3, a4, a5, a6, a7;
-  a0=arg[0]? arg[0][0] : 0;
-  if (res[0]!=0) res[0][0]=a0;
-  a1=arg[0]? arg[0][1] : 0;
-  if (res[0]!=0) res[0][1]=a1;
-  a2=arg[0]? arg[0][2] : 0;
-  if (res[0]!=0) res[0][2]=a2;
-  a3=cos(a2);
-  a4=arg[1]? arg[1][3] : 0;
-  a5=arg[1]? arg[1][9] : 0;
-  a4=(a4-a5);
-  a3=(a3*a4);
-  a0=(a0+a3);
-  a3=arg[0]? arg[0][3] : 0;
-  a3=(a3+a2);
-  a5=cos(a3);
-  a6=arg[1]? arg[1][10] : 0;
-  a7=(a5*a6);
-  a0=(a0+a7);
-  if (res[0]!=0) res[0][3]=a0;
-  a2=sin(a2);
-  a4=(a4*a2);
-  a1=(a1+a4);
-  a4=sin(a3);
-  a2=(a4*a6);
-  a1=(a1+a2);
-  if (res[0]!=0) res[0][4]=a1;
-  if (res[0]!=0) res[0][5]=a3;
-  a2=arg[1]? arg[1][4] : 0;
-  a2=(a2-a6);
-  a5=(a5*a2);
-  a0=(a0+a5);
-  a5=arg[0]? arg[0][4] : 0;
-  a3=(a3+a5);
-  a5=cos(a3);
-  a6=arg[1]? arg[1][11] : 0;
-  a5=(a5*a6);
-  a0=(a0+a5);
-  if (res[0]!=0) res[0][6]=a0;
-  a2=(a2*a4);
-  a1=(a1+a2);
-  a2=sin(a3);
-  a2=(a2*a6);
-  a1=(a1+a2);
-  if (res[0]!=0) res[0][7]=a1;
-  if (res[0]!=0) res[0][8]=a3;
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  a00=arg[0]? arg[0][0] : 0;
+  if (res[0]!=0) res[0][0]=a00;
+  a01=arg[0]? arg[0][1] : 0;
+  if (res[0]!=0) res[0][1]=a01;
+  a02=arg[0]? arg[0][2] : 0;
+  if (res[0]!=0) res[0][2]=a02;
+  a03=cos(a02);
+  a04=arg[1]? arg[1][3] : 0;
+  a05=arg[1]? arg[1][9] : 0;
+  a04=(a04-a05);
+  a05=(a03*a04);
+  a00=(a00+a05);
+  a05=arg[0]? arg[0][3] : 0;
+  a06=cos(a05);
+  a07=(a03*a06);
+  a08=sin(a02);
+  a09=sin(a05);
+  a10=(a08*a09);
+  a07=(a07-a10);
+  a10=arg[1]? arg[1][10] : 0;
+  a11=(a07*a10);
+  a00=(a00+a11);
+  if (res[0]!=0) res[0][3]=a00;
+  a04=(a04*a08);
+  a01=(a01+a04);
+  a03=(a03*a09);
+  a06=(a06*a08);
+  a03=(a03+a06);
+  a06=(a03*a10);
+  a01=(a01+a06);
+  if (res[0]!=0) res[0][4]=a01;
+  a05=(a05+a02);
+  if (res[0]!=0) res[0][5]=a05;
+  a02=arg[1]? arg[1][4] : 0;
+  a02=(a02-a10);
+  a10=(a07*a02);
+  a00=(a00+a10);
+  a10=arg[0]? arg[0][4] : 0;
+  a06=cos(a10);
+  a08=(a07*a06);
+  a09=sin(a10);
+  a04=(a03*a09);
+  a08=(a08-a04);
+  a04=arg[1]? arg[1][11] : 0;
+  a08=(a08*a04);
+  a00=(a00+a08);
+  if (res[0]!=0) res[0][6]=a00;
+  a02=(a02*a03);
+  a01=(a01+a02);
+  a07=(a07*a09);
+  a06=(a06*a03);
+  a07=(a07+a06);
+  a07=(a07*a04);
+  a01=(a01+a07);
+  if (res[0]!=0) res[0][7]=a01;
+  a05=(a05+a10);
+  if (res[0]!=0) res[0][8]=a05;
   return 0;
 }
 
@@ -197,7 +209,7 @@ CASADI_SYMBOL_EXPORT int snakecg_na2_batch_link_poses(casadi_int n, const casadi
   const casadi_real* a[2];
   casadi_real* r[1];
   casadi_int* iw = (casadi_int*) malloc(sizeof(casadi_int) * 1);
-  casadi_real* w = (casadi_real*) malloc(sizeof(casadi_real) * 9);
+  casadi_real* w = (casadi_real*) malloc(sizeof(casadi_real) * 13);
   casadi_int i, k;
   int status = 0;
   if (!iw || !w) { free(iw); free(w); return -1; }

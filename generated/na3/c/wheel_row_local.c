@@ -1,7 +1,7 @@
 /* GENERATED FILE - DO NOT EDIT. C code emitted by CasADi for wheel_row_local() of
  * generated/na3/ (see its model.py), plus its batched driver.
  * Regenerate with: python -m snakecg_derive --checked-in
- * spec sha256: 69afcae47b2eaa6ce5aa482e0c177afbb935d52c01aa7750c6d88b22d6df6370
+ * spec sha256: 3c75675586cbb18c18b0081852c5ffec6f5c7950260709aa31731b6dde9e81ec
  * tools: sympy 1.14.0, casadi 3.8.2, jinja2 3.1.6
  */
 /* How to prefix internal symbols */

@@ -1,7 +1,7 @@
 /* GENERATED FILE - DO NOT EDIT. C code emitted by CasADi for contact_row_local() of
  * generated/na4/ (see its model.py), plus its batched driver.
  * Regenerate with: python -m snakecg_derive --checked-in
- * spec sha256: c17be30c8ed658f5fdab620648da74befd8183e9bc07b031fe66b9545c3db6bc
+ * spec sha256: 6c4026fa5ecb8d23c43983793addde84d9142ffbea962d43534c40b6999d0390
  * tools: sympy 1.14.0, casadi 3.8.2, jinja2 3.1.6
  */
 /* How to prefix internal symbols */

@@ -1,7 +1,7 @@
 /* GENERATED FILE - DO NOT EDIT. C code emitted by CasADi for wheel_row_local() of
  * generated/na5/ (see its model.py), plus its batched driver.
  * Regenerate with: python -m snakecg_derive --checked-in
- * spec sha256: 081c0266481fbdc381d2ced6d344ec44d67e55b289aebfd120e3059972e91f55
+ * spec sha256: 9f3807667a8b6853bb31e3e06a1b6e612300a8ff3b142d0ce2ff10ee68615c20
  * tools: sympy 1.14.0, casadi 3.8.2, jinja2 3.1.6
  */
 /* How to prefix internal symbols */

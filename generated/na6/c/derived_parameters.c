@@ -1,7 +1,7 @@
 /* GENERATED FILE - DO NOT EDIT. C code emitted by CasADi for derived_parameters() of
  * generated/na6/ (see its model.py), plus its batched driver.
  * Regenerate with: python -m snakecg_derive --checked-in
- * spec sha256: 2c0ad20bb4ded5fc9766e68b43437e777eab3d91647cb3794987705bfc799017
+ * spec sha256: 7d93219a711a38df30401c314e7bcdee5e7a3f4624365a96487963c4667ff715
  * tools: sympy 1.14.0, casadi 3.8.2, jinja2 3.1.6
  */
 /* How to prefix internal symbols */
