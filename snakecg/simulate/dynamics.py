@@ -59,16 +59,12 @@ class Dynamics:
         self._rho = tuple(rho.tolist())
         self.mo = np.array([scene.object_mass, scene.object_mass, scene.object_inertia])
         be = model.backend
+        fixed = {k: model.scene_inputs[k] for k in ("K", "contact_link", "side", "object_mass",
+                                                    "object_inertia", "wheel_offset")}
         self.cd = BoundFunction(be, "constrained_dynamics", {
-            "K": model.parameters, "contact_link": model._contact_link, "side": model._side,
-            "object_mass": model._object_mass, "object_inertia": model._object_inertia,
-            "rho": rho, "wheel_offset": model._wheel_offset, "f_obj": f_obj,
-            "regularization": np.zeros(1)})
+            **fixed, "rho": rho, "f_obj": f_obj, "regularization": np.zeros(1)})
         # the problem before any active set (G_c, the force maps): the linear maps at events
-        self._cs = BoundFunction(be, "contact_system", {
-            "K": model.parameters, "contact_link": model._contact_link, "side": model._side,
-            "object_mass": model._object_mass, "object_inertia": model._object_inertia,
-            "rho": rho, "wheel_offset": model._wheel_offset, "f_obj": f_obj})
+        self._cs = BoundFunction(be, "contact_system", {**fixed, "rho": rho, "f_obj": f_obj})
         self._jac = BoundFunction(be, "link_jacobians", {"K": model.parameters})
         self._mass = BoundFunction(be, "mass_matrix", {"K": model.parameters})
         self._out_index = tuple(self.cd.out_names.index(n) for n in _RHS_OUTPUTS)
