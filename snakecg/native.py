@@ -46,6 +46,8 @@ _warned: set[str] = set()
 #: The runtime core compiled into every model's library (fixed C files of the runtime).
 CORE_SOURCE = Path(__file__).resolve().parent / "core" / "forward.c"
 CORE_SOURCES = (CORE_SOURCE, CORE_SOURCE.with_name("integrate.c"))
+#: The header both include (work arrays, contact_system, the held rows' forces).
+CORE_HEADER = CORE_SOURCE.with_name("common.h")
 #: Up to this batch size the outputs of a compiled call share one buffer (see CompiledBackend).
 _SMALL_BATCH = 64
 
@@ -73,7 +75,8 @@ def _core_sources(manifest: dict) -> tuple[dict[str, bytes], str]:
     """The runtime core's C files (snakecg/core/*.c) by name and its layout header."""
     from .core.layout import header
 
-    return {p.name: p.read_bytes() for p in CORE_SOURCES}, header(manifest)
+    return ({p.name: p.read_bytes() for p in (*CORE_SOURCES, CORE_HEADER)},
+            header(manifest))
 
 
 def _build_key(manifest: dict, cc: str) -> str:
@@ -165,8 +168,9 @@ def compile_model(folder: Path, manifest: dict, *, progress=None, rebuild: bool 
 
             core, layout = _core_sources(manifest)
             (tmp / "snakecg_layout.h").write_text(layout, encoding="utf-8")
-            for name, text in core.items():
-                (tmp / f"snakecg_core_{name}").write_bytes(text)
+            for name, text in core.items():  # the header under its own name (#include)
+                target = name if name.endswith(".h") else f"snakecg_core_{name}"
+                (tmp / target).write_bytes(text)
 
             def one_core(name: str) -> Path:
                 obj = tmp / f"snakecg_core_{Path(name).stem}.o"
@@ -175,7 +179,8 @@ def compile_model(folder: Path, manifest: dict, *, progress=None, rebuild: bool 
                 return obj
 
             with ThreadPoolExecutor(max_workers=max(1, os.cpu_count() or 1)) as pool:
-                core_objs = [pool.submit(one_core, name) for name in core]
+                core_objs = [pool.submit(one_core, name) for name in core
+                             if name.endswith(".c")]
                 objs = list(pool.map(one, sources)) + [f.result() for f in core_objs]
             tmp_lib = tmp / "model.so"
             link = [cc, "-shared", *[str(o) for o in objs], "-o", str(tmp_lib), "-lm"]

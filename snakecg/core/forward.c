@@ -32,22 +32,15 @@
 #include <string.h>
 
 #include "snakecg_layout.h"
+#include "common.h"
 
 #define SNAKECG_CAT_(a, b) a##b
 #define SNAKECG_CAT(a, b) SNAKECG_CAT_(a, b)
 #define SNAKECG_EXPORT(name) SNAKECG_CAT(SNAKECG_PREFIX, name)
 
-typedef long long int sc_int;
-typedef int (*sc_fn)(const double **arg, double **res, sc_int *iw, double *w, int mem);
-typedef int (*sc_work)(sc_int *sz_arg, sc_int *sz_res, sc_int *sz_iw, sc_int *sz_w);
-
-int SNAKECG_CS(const double **arg, double **res, sc_int *iw, double *w, int mem);
-int SNAKECG_CS_WORK(sc_int *sz_arg, sc_int *sz_res, sc_int *sz_iw, sc_int *sz_w);
 int SNAKECG_PO(const double **arg, double **res, sc_int *iw, double *w, int mem);
 int SNAKECG_PO_WORK(sc_int *sz_arg, sc_int *sz_res, sc_int *sz_iw, sc_int *sz_w);
 
-/* row states (snakecg/solver.py) */
-enum { ABSENT = 0, HELD = 1, LOST = 2, SLIDE_POS = 3, SLIDE_NEG = 4 };
 /* sample status */
 enum { STATUS_EXACT = 0, STATUS_FALLBACK = 1 };
 
@@ -60,48 +53,6 @@ typedef struct {
   double sane_tol;    /* rounding allowed in the physical checks */
   double force_limit; /* |tau|, |f_obj| at most this; |v|, |v_obj| at most its square root */
 } sc_constants;
-
-/* One workspace: argument and result pointer arrays and work vectors, sized for the largest
- * of the three generated functions. */
-typedef struct {
-  const double **arg;
-  double **res;
-  sc_int *iw;
-  double *w;
-} sc_work_t;
-
-static int work_alloc(sc_work_t *ws) {
-  sc_int a, r, i, w, ma = 0, mr = 0, mi = 0, mw = 0;
-  sc_work fns[2];
-  int k;
-  ws->arg = 0;
-  ws->res = 0;
-  ws->iw = 0;
-  ws->w = 0;
-  fns[0] = SNAKECG_CS_WORK;
-  fns[1] = SNAKECG_PO_WORK;
-  for (k = 0; k < 2; ++k) {
-    a = r = i = w = 0;
-    if (fns[k](&a, &r, &i, &w)) return -1;
-    if (a > ma) ma = a;
-    if (r > mr) mr = r;
-    if (i > mi) mi = i;
-    if (w > mw) mw = w;
-  }
-  ws->arg = (const double **)calloc((size_t)(ma + 1), sizeof(double *));
-  ws->res = (double **)calloc((size_t)(mr + 1), sizeof(double *));
-  ws->iw = (sc_int *)malloc(sizeof(sc_int) * (size_t)(mi + 1));
-  ws->w = (double *)malloc(sizeof(double) * (size_t)(mw + 1));
-  if (!ws->arg || !ws->res || !ws->iw || !ws->w) return -1;
-  return 0;
-}
-
-static void work_free(sc_work_t *ws) {
-  free((void *)ws->arg);
-  free(ws->res);
-  free(ws->iw);
-  free(ws->w);
-}
 
 static int all_finite(const double *x, int n, double limit) {
   int k;
@@ -177,48 +128,6 @@ static int next_states(signed char *state, const double *lam, const double *w,
   return moved;
 }
 
-/* The held rows' forces for row states `state` (eq. 16): lam_F fixed (0, or +-bound for a
- * sliding wheel), lam_H solving G_HH lam_H = -(b_H + G_HF lam_F) by LDL^T in row order.
- * Returns the pivot ratio min_j d_j / G_jj over the held rows (1 when none holds), the
- * quantity the generated functions call pivot_ratio. */
-static double held_forces(const signed char *state, const double *G, const double *b,
-                          const double *bounds, double *lam) {
-  const int nc = SNAKECG_NC;
-  int held[SNAKECG_NC], m = 0, i, j, k;
-  double L[SNAKECG_NC * SNAKECG_NC], d[SNAKECG_NC], y[SNAKECG_NC], ratio = 1.0;
-  for (i = 0; i < nc; ++i) {
-    lam[i] = state[i] == SLIDE_POS ? bounds[i] : state[i] == SLIDE_NEG ? -bounds[i] : 0.0;
-    if (!isfinite(lam[i])) lam[i] = 0.0;
-    if (state[i] == HELD) held[m++] = i;
-  }
-  for (i = 0; i < m; ++i) { /* right-hand side -(b_H + G_HF lam_F) */
-    double t = b[held[i]];
-    for (j = 0; j < nc; ++j)
-      if (state[j] != HELD) t += G[held[i] + nc * j] * lam[j];
-    y[i] = -t;
-  }
-  for (j = 0; j < m; ++j) { /* L D L^T of G_HH, no pivoting */
-    double s = G[held[j] + nc * held[j]], r;
-    for (k = 0; k < j; ++k) s -= L[j + nc * k] * L[j + nc * k] * d[k];
-    d[j] = s;
-    r = s / G[held[j] + nc * held[j]];
-    if (!(r >= ratio)) ratio = r; /* NaN propagates */
-    for (i = j + 1; i < m; ++i) {
-      double t = G[held[i] + nc * held[j]];
-      for (k = 0; k < j; ++k) t -= L[i + nc * k] * L[j + nc * k] * d[k];
-      L[i + nc * j] = t / s;
-    }
-  }
-  for (i = 0; i < m; ++i) /* forward, diagonal and back substitution */
-    for (k = 0; k < i; ++k) y[i] -= L[i + nc * k] * y[k];
-  for (i = m - 1; i >= 0; --i) {
-    y[i] /= d[i];
-    for (k = i + 1; k < m; ++k) y[i] -= L[k + nc * i] * y[k];
-  }
-  for (i = 0; i < m; ++i) lam[held[i]] = y[i];
-  return ratio;
-}
-
 /* One sample. `scene` holds the scene's constant inputs (layout in snakecg_layout.h); `out`
  * one output row (OUT_* offsets). Returns the status. */
 static int solve_one(sc_work_t *ws, const double *scene, const sc_constants *c, long max_iter,
@@ -227,9 +136,9 @@ static int solve_one(sc_work_t *ws, const double *scene, const sc_constants *c, 
                      double *out) {
   const int nc = SNAKECG_NC, ns = SNAKECG_NS;
   double q_obj[3], rho[2], contact_point[2];
-  double M[SNAKECG_NS * SNAKECG_NS], S[SNAKECG_NS * SNAKECG_NS], G[SNAKECG_NC * SNAKECG_NC];
-  double b[SNAKECG_NC], qdd_free[SNAKECG_NS], a_free[3], Kq[SNAKECG_NS * SNAKECG_NC];
-  double Ka[3 * SNAKECG_NC], gap, s, pivot = 0.0, mass, scale, nq, na, nl, I_obj[3];
+  sc_system sys;
+  double S[SNAKECG_NS * SNAKECG_NS], pivot = 0.0, mass, scale, nq, na, nl, I_obj[3];
+  const double *M = sys.M, *G = sys.G, *b = sys.b, *Kq = sys.Kq, *Ka = sys.Ka;
   const double *bounds = scene + SCENE_bounds, *present = scene + SCENE_present;
   signed char state[SNAKECG_NC];
   long it;
@@ -252,32 +161,11 @@ static int solve_one(sc_work_t *ws, const double *scene, const sc_constants *c, 
     ws->res[PO_OUT_contact_point] = contact_point;
     if (SNAKECG_PO(ws->arg, ws->res, ws->iw, ws->w, 0)) return STATUS_FALLBACK;
   }
-  ws->arg[CS_IN_q] = q;
-  ws->arg[CS_IN_v] = v;
-  ws->arg[CS_IN_tau] = tau;
-  ws->arg[CS_IN_q_obj] = q_obj;
-  ws->arg[CS_IN_v_obj] = v_obj;
-  ws->arg[CS_IN_f_obj] = f_obj;
-  ws->arg[CS_IN_K] = scene + SCENE_K;
-  ws->arg[CS_IN_contact_link] = scene + SCENE_contact_link;
-  ws->arg[CS_IN_side] = scene + SCENE_side;
-  ws->arg[CS_IN_object_mass] = scene + SCENE_object_mass;
-  ws->arg[CS_IN_object_inertia] = scene + SCENE_object_inertia;
-  ws->arg[CS_IN_rho] = rho;
-  ws->arg[CS_IN_wheel_offset] = scene + SCENE_wheel_offset;
-  ws->res[CS_OUT_M] = M;
-  ws->res[CS_OUT_delassus] = G;
-  ws->res[CS_OUT_b] = b;
-  ws->res[CS_OUT_qdd_free] = qdd_free;
-  ws->res[CS_OUT_a_obj_free] = a_free;
-  ws->res[CS_OUT_qdd_from_lam] = Kq;
-  ws->res[CS_OUT_a_obj_from_lam] = Ka;
-  ws->res[CS_OUT_gap] = &gap;
-  ws->res[CS_OUT_s] = &s;
-  if (SNAKECG_CS(ws->arg, ws->res, ws->iw, ws->w, 0)) return STATUS_FALLBACK;
+  if (sc_contact_system(ws, scene, q, v, tau, q_obj, v_obj, f_obj, rho, &sys))
+    return STATUS_FALLBACK;
   for (r = 0; r < nc; ++r) state[r] = present[r] != 0.0 ? HELD : ABSENT;
   for (it = 0; it < max_iter && moved; ++it) {
-    pivot = held_forces(state, G, b, bounds, lam);
+    pivot = sc_held_forces(state, G, b, bounds, 0, lam);
     if (!(pivot > c->pivot_tol) || !all_finite(lam, nc, INFINITY)) return STATUS_FALLBACK;
     for (r = 0; r < nc; ++r) { /* w = G_c lam + b (eq. 13) */
       double t = b[r];
@@ -292,12 +180,12 @@ static int solve_one(sc_work_t *ws, const double *scene, const sc_constants *c, 
   if (!(mass > c->mass_tol)) return STATUS_FALLBACK;
   /* eq. (18): the forces back into the accelerations */
   for (i = 0; i < ns; ++i) {
-    double t = qdd_free[i];
+    double t = sys.qdd_free[i];
     for (r = 0; r < nc; ++r) t += Kq[i + ns * r] * lam[r];
     qdd[i] = t;
   }
   for (i = 0; i < 3; ++i) {
-    double t = a_free[i];
+    double t = sys.a_free[i];
     for (r = 0; r < nc; ++r) t += Ka[i + 3 * r] * lam[r];
     a[i] = t;
   }
@@ -331,7 +219,7 @@ static int solve_one(sc_work_t *ws, const double *scene, const sc_constants *c, 
       out[OUT_sr] < -c->sane_tol || out[OUT_sr] > 1.0 + c->sane_tol)
     return STATUS_FALLBACK;
   if (state[0] != HELD) out[OUT_sr] = 0.0; /* eq. 30: no interaction without contact */
-  out[OUT_gap] = gap;
+  out[OUT_gap] = sys.gap;
   out[OUT_conditioning] = pivot < mass ? (pivot < 1.0 ? pivot : 1.0) : (mass < 1.0 ? mass : 1.0);
   out[OUT_singular] = 0.0;
   for (r = 0; r < nc; ++r) out[OUT_state + r] = (double)state[r];
@@ -352,6 +240,7 @@ int SNAKECG_EXPORT(core_forward)(sc_int n, const double *scene, const double *co
                                  sc_int max_iter, const double *const *in, const sc_int *stride,
                                  double *out) {
   sc_work_t ws;
+  const sc_work_fn fns[2] = {SNAKECG_CS_WORK, SNAKECG_PO_WORK};
   sc_constants c;
   sc_int i;
   double vlim;
@@ -373,10 +262,7 @@ int SNAKECG_EXPORT(core_forward)(sc_int n, const double *scene, const double *co
                           !all_finite(in[IN_rho] + i * stride[IN_rho], 2, INFINITY))))
       return (int)(-2 - (i < 2000000000 ? i : 2000000000));
   }
-  if (work_alloc(&ws)) {
-    work_free(&ws);
-    return -1;
-  }
+  if (sc_work_alloc(&ws, fns, 2)) return -1;
   for (i = 0; i < n; ++i) {
     double *row = out + i * OUT_WIDTH;
     const double *qo = in[IN_q_obj] ? in[IN_q_obj] + i * stride[IN_q_obj] : 0;
@@ -386,7 +272,7 @@ int SNAKECG_EXPORT(core_forward)(sc_int n, const double *scene, const double *co
         in[IN_tau] + i * stride[IN_tau], qo, in[IN_v_obj] + i * stride[IN_v_obj],
         in[IN_f_obj] + i * stride[IN_f_obj], rh, row);
   }
-  work_free(&ws);
+  sc_work_free(&ws);
   return 0;
 }
 

@@ -30,15 +30,12 @@
 #include <string.h>
 
 #include "snakecg_layout.h"
+#include "common.h"
 
 #define SNAKECG_CAT_(a, b) a##b
 #define SNAKECG_CAT(a, b) SNAKECG_CAT_(a, b)
 #define SNAKECG_EXPORT(name) SNAKECG_CAT(SNAKECG_PREFIX, name)
 
-typedef long long int sc_int;
-
-int SNAKECG_CS(const double **arg, double **res, sc_int *iw, double *w, int mem);
-int SNAKECG_CS_WORK(sc_int *sz_arg, sc_int *sz_res, sc_int *sz_iw, sc_int *sz_w);
 int SNAKECG_LJ(const double **arg, double **res, sc_int *iw, double *w, int mem);
 int SNAKECG_LJ_WORK(sc_int *sz_arg, sc_int *sz_res, sc_int *sz_iw, sc_int *sz_w);
 
@@ -50,8 +47,6 @@ int SNAKECG_LJ_WORK(sc_int *sz_arg, sc_int *sz_res, sc_int *sz_iw, sc_int *sz_w)
 #define NY (2 * NX + 3)
 #define MAX_EVENTS (3 + NC)
 
-/* row states (snakecg/solver.py) */
-enum { ABSENT = 0, HELD = 1, LOST = 2, SLIDE_POS = 3, SLIDE_NEG = 4 };
 /* event functions (snakecg/simulate/events.py, Events.functions) */
 enum { EV_SEPARATION = 0, EV_S_LOW = 1, EV_S_HIGH = 2, EV_GAP = 3, EV_BREAKAWAY = 4,
        EV_SLIDE_STOP = 5 };
@@ -122,49 +117,19 @@ typedef struct {
 } sc_segment;
 
 typedef struct {
-  const double **arg;
-  double **res;
-  sc_int *iw;
-  double *w;
+  sc_work_t ws;
   const sc_segment *sg;
   signed char state[NC];
   double bounds[NC];
   sc_int nfev;
   /* the last evaluation's quantities (for the event functions and the samples) */
-  double lam[NC], av[NC], gap, s, M[NS * NS];
+  double lam[NC], av[NC];
+  sc_system sys; /* contact_system at the last state: gap, s and M_s among it */
 } sc_ctx;
 
 static int ctx_alloc(sc_ctx *c) {
-  sc_int a, r, i, w, ma = 0, mr = 0, mi = 0, mw = 0;
-  int k;
-  int (*fns[2])(sc_int *, sc_int *, sc_int *, sc_int *);
-  c->arg = 0;
-  c->res = 0;
-  c->iw = 0;
-  c->w = 0;
-  fns[0] = SNAKECG_CS_WORK;
-  fns[1] = SNAKECG_LJ_WORK;
-  for (k = 0; k < 2; ++k) {
-    a = r = i = w = 0;
-    if (fns[k](&a, &r, &i, &w)) return -1;
-    if (a > ma) ma = a;
-    if (r > mr) mr = r;
-    if (i > mi) mi = i;
-    if (w > mw) mw = w;
-  }
-  c->arg = (const double **)calloc((size_t)(ma + 1), sizeof(double *));
-  c->res = (double **)calloc((size_t)(mr + 1), sizeof(double *));
-  c->iw = (sc_int *)malloc(sizeof(sc_int) * (size_t)(mi + 1));
-  c->w = (double *)malloc(sizeof(double) * (size_t)(mw + 1));
-  if (!c->arg || !c->res || !c->iw || !c->w) return -1;
-  return 0;
-}
-
-static void ctx_free(sc_ctx *c) {
-  free((void *)c->arg);
-  free(c->res);
-  free(c->iw);
-  free(c->w);
+  const sc_work_fn fns[2] = {SNAKECG_CS_WORK, SNAKECG_LJ_WORK};
+  return sc_work_alloc(&c->ws, fns, 2);
 }
 
 /* A V (Dynamics.row_velocities): the gap rate (row 0) and the wheels' lateral velocities.
@@ -210,79 +175,28 @@ static void row_velocities(const sc_ctx *c, const double *J, const double *q, co
 static int rhs(sc_ctx *c, const double *y, double *ydot) {
   const sc_segment *sg = c->sg;
   const double *q = y, *qo = y + NS, *v = y + NX, *vo = y + NX + NS;
-  double G[NC * NC], b[NC], qdd_free[NS], a_free[3], Kq[NS * NC], Ka[3 * NC];
-  double J[3 * NL * NS], L[NC * NC], d[NC], z[NC], *lam = c->lam, *av = c->av, ratio = 1.0;
+  const sc_system *sys = &c->sys;
+  const double *qdd_free = sys->qdd_free, *a_free = sys->a_free, *Kq = sys->Kq, *Ka = sys->Ka;
+  double J[3 * NL * NS], baumgarte[NC], *lam = c->lam, *av = c->av, ratio;
   double p_tau = 0.0, p_fric = 0.0, p_obj = 0.0;
-  int held[NC], m = 0, i, j, r;
+  int held = 0, i, r;
   c->nfev++;
-  c->arg[CS_IN_q] = q;
-  c->arg[CS_IN_v] = v;
-  c->arg[CS_IN_tau] = sg->tau;
-  c->arg[CS_IN_q_obj] = qo;
-  c->arg[CS_IN_v_obj] = vo;
-  c->arg[CS_IN_f_obj] = sg->f_obj;
-  c->arg[CS_IN_K] = sg->scene + SCENE_K;
-  c->arg[CS_IN_contact_link] = sg->scene + SCENE_contact_link;
-  c->arg[CS_IN_side] = sg->scene + SCENE_side;
-  c->arg[CS_IN_object_mass] = sg->scene + SCENE_object_mass;
-  c->arg[CS_IN_object_inertia] = sg->scene + SCENE_object_inertia;
-  c->arg[CS_IN_rho] = sg->rho;
-  c->arg[CS_IN_wheel_offset] = sg->scene + SCENE_wheel_offset;
-  c->res[CS_OUT_M] = c->M;
-  c->res[CS_OUT_delassus] = G;
-  c->res[CS_OUT_b] = b;
-  c->res[CS_OUT_qdd_free] = qdd_free;
-  c->res[CS_OUT_a_obj_free] = a_free;
-  c->res[CS_OUT_qdd_from_lam] = Kq;
-  c->res[CS_OUT_a_obj_from_lam] = Ka;
-  c->res[CS_OUT_gap] = &c->gap;
-  c->res[CS_OUT_s] = &c->s;
-  if (SNAKECG_CS(c->arg, c->res, c->iw, c->w, 0)) return SEG_PYTHON;
-  c->arg[LJ_IN_q] = q;
-  c->arg[LJ_IN_K] = sg->scene + SCENE_K;
-  c->res[LJ_OUT_J] = J;
-  if (SNAKECG_LJ(c->arg, c->res, c->iw, c->w, 0)) return SEG_PYTHON;
-  row_velocities(c, J, q, v, qo, vo, c->s, av);
+  if (sc_contact_system(&c->ws, sg->scene, q, v, sg->tau, qo, vo, sg->f_obj, sg->rho, &c->sys))
+    return SEG_PYTHON;
+  c->ws.arg[LJ_IN_q] = q;
+  c->ws.arg[LJ_IN_K] = sg->scene + SCENE_K;
+  c->ws.res[LJ_OUT_J] = J;
+  if (SNAKECG_LJ(c->ws.arg, c->ws.res, c->ws.iw, c->ws.w, 0)) return SEG_PYTHON;
+  row_velocities(c, J, q, v, qo, vo, sys->s, av);
   /* eq. (16) with the mode's fixed forces, the held rows Baumgarte-stabilised:
    * G_HH lam_H = -(b_H + G_HF lam_F) - 2 alpha (A V)_H [- alpha^2 g for the contact] */
-  for (i = 0; i < NC; ++i) {
-    const signed char st = c->state[i];
-    lam[i] = st == SLIDE_POS ? c->bounds[i] : st == SLIDE_NEG ? -c->bounds[i] : 0.0;
-    if (!isfinite(lam[i])) lam[i] = 0.0;
-    if (st == HELD) held[m++] = i;
+  for (r = 0; r < NC; ++r) {
+    baumgarte[r] = sg->alpha > 0 ? 2.0 * sg->alpha * av[r] : 0.0;
+    if (c->state[r] == HELD) held = 1;
   }
-  for (i = 0; i < m; ++i) {
-    const int h = held[i];
-    double t = b[h];
-    for (j = 0; j < NC; ++j)
-      if (c->state[j] != HELD) t += G[h + NC * j] * lam[j];
-    z[i] = -t;
-    if (sg->alpha > 0) {
-      z[i] -= 2.0 * sg->alpha * av[h];
-      if (h == 0) z[i] -= sg->alpha * sg->alpha * c->gap;
-    }
-  }
-  for (j = 0; j < m; ++j) { /* L D L^T of G_HH in row order, no pivoting */
-    double s = G[held[j] + NC * held[j]], rr;
-    int k;
-    for (k = 0; k < j; ++k) s -= L[j + NC * k] * L[j + NC * k] * d[k];
-    d[j] = s;
-    rr = s / G[held[j] + NC * held[j]];
-    if (!(rr >= ratio)) ratio = rr;
-    for (i = j + 1; i < m; ++i) {
-      double t = G[held[i] + NC * held[j]];
-      for (k = 0; k < j; ++k) t -= L[i + NC * k] * L[j + NC * k] * d[k];
-      L[i + NC * j] = t / s;
-    }
-  }
-  if (m && !(ratio > sg->pivot_tol)) return SEG_PYTHON; /* regularized there */
-  for (i = 0; i < m; ++i)
-    for (j = 0; j < i; ++j) z[i] -= L[i + NC * j] * z[j];
-  for (i = m - 1; i >= 0; --i) {
-    z[i] /= d[i];
-    for (j = i + 1; j < m; ++j) z[i] -= L[j + NC * i] * z[j];
-  }
-  for (i = 0; i < m; ++i) lam[held[i]] = z[i];
+  if (sg->alpha > 0) baumgarte[0] += sg->alpha * sg->alpha * sys->gap;
+  ratio = sc_held_forces(c->state, sys->G, sys->b, c->bounds, baumgarte, lam);
+  if (held && !(ratio > sg->pivot_tol)) return SEG_PYTHON; /* regularized there */
   /* eq. (18) and the state's rates */
   memcpy(ydot, v, sizeof(double) * NS);
   memcpy(ydot + NS, vo, sizeof(double) * 3);
@@ -314,9 +228,9 @@ static double event_value(const sc_ctx *c, int e) {
   const int r = (int)sg->ev_row[e];
   switch ((int)sg->ev_kind[e]) {
     case EV_SEPARATION: return c->lam[0];
-    case EV_S_LOW: return c->s;
-    case EV_S_HIGH: return sg->l_k - c->s;
-    case EV_GAP: return c->gap;
+    case EV_S_LOW: return c->sys.s;
+    case EV_S_HIGH: return sg->l_k - c->sys.s;
+    case EV_GAP: return c->sys.gap;
     case EV_BREAKAWAY: return c->bounds[r] - fabs(c->lam[r]);
     default: /* EV_SLIDE_STOP: the sliding velocity's sign returning to zero */
       return (c->state[r] == SLIDE_POS ? -1.0 : 1.0) * c->av[r];
@@ -622,7 +536,6 @@ int SNAKECG_EXPORT(core_integrate_segment)(sc_segment *sg) {
       return SEG_BAD_INPUT;
     }
   if (ctx_alloc(&c)) {
-    ctx_free(&c);
     sg->status = SEG_MEMORY;
     return SEG_MEMORY;
   }
@@ -634,7 +547,7 @@ int SNAKECG_EXPORT(core_integrate_segment)(sc_segment *sg) {
   }
   st = segment(&c, sg);
   sg->nfev = c.nfev;
-  ctx_free(&c);
+  sc_work_free(&c.ws);
   sg->status = st;
   return st;
 }
@@ -650,7 +563,6 @@ int SNAKECG_EXPORT(core_mode_samples)(sc_segment *sg, sc_int n, const double *Y,
   sc_int k;
   int i, j;
   if (ctx_alloc(&c)) {
-    ctx_free(&c);
     return SEG_MEMORY;
   }
   c.sg = sg;
@@ -665,11 +577,11 @@ int SNAKECG_EXPORT(core_mode_samples)(sc_segment *sg, sc_int n, const double *Y,
     const int st = rhs(&c, Y + k * NY, row);
     memcpy(extra, c.lam, sizeof(double) * NC);
     memcpy(extra + NC, c.av, sizeof(double) * NC);
-    extra[2 * NC] = c.gap;
-    extra[2 * NC + 1] = c.s;
+    extra[2 * NC] = c.sys.gap;
+    extra[2 * NC + 1] = c.sys.s;
     for (i = 0; i < NS; ++i) {
       double t = 0.0;
-      for (j = 0; j < NS; ++j) t += c.M[i + NS * j] * qdd[j];
+      for (j = 0; j < NS; ++j) t += c.sys.M[i + NS * j] * qdd[j];
       nq += qdd[i] * t;
     }
     na = I_obj[0] * a[0] * a[0] + I_obj[0] * a[1] * a[1] +
@@ -679,6 +591,6 @@ int SNAKECG_EXPORT(core_mode_samples)(sc_segment *sg, sc_int n, const double *Y,
     extra[2 * NC + 4] = nq;
     extra[2 * NC + 5] = (double)st;
   }
-  ctx_free(&c);
+  sc_work_free(&c.ws);
   return 0;
 }

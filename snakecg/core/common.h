@@ -1,0 +1,153 @@
+/* What the runtime core's C files share (snakecg/core/forward.c, integrate.c): the row states,
+ * the generated functions' work arrays, one evaluation of the generated `contact_system`, and
+ * the held rows' forces of eq. (16). Included after snakecg_layout.h; everything here is
+ * static, so each file gets its own copy and the library exports nothing more. */
+#ifndef SNAKECG_CORE_COMMON_H
+#define SNAKECG_CORE_COMMON_H
+
+#include <math.h>
+#include <stdlib.h>
+
+typedef long long int sc_int;
+typedef int (*sc_work_fn)(sc_int *sz_arg, sc_int *sz_res, sc_int *sz_iw, sc_int *sz_w);
+
+int SNAKECG_CS(const double **arg, double **res, sc_int *iw, double *w, int mem);
+int SNAKECG_CS_WORK(sc_int *sz_arg, sc_int *sz_res, sc_int *sz_iw, sc_int *sz_w);
+
+/* row states (snakecg/solver.py) */
+enum { ABSENT = 0, HELD = 1, LOST = 2, SLIDE_POS = 3, SLIDE_NEG = 4 };
+
+/* Argument and result pointer arrays and work vectors of generated functions, sized for the
+ * largest of `n` of them (their `_work` functions). */
+typedef struct {
+  const double **arg;
+  double **res;
+  sc_int *iw;
+  double *w;
+} sc_work_t;
+
+static void sc_work_free(sc_work_t *ws) {
+  free((void *)ws->arg);
+  free(ws->res);
+  free(ws->iw);
+  free(ws->w);
+  ws->arg = 0;
+  ws->res = 0;
+  ws->iw = 0;
+  ws->w = 0;
+}
+
+/* 0, or -1 when a size query or an allocation failed (then nothing is left allocated). */
+static int sc_work_alloc(sc_work_t *ws, const sc_work_fn *fns, int n) {
+  sc_int a, r, i, w, ma = 0, mr = 0, mi = 0, mw = 0;
+  int k;
+  ws->arg = 0;
+  ws->res = 0;
+  ws->iw = 0;
+  ws->w = 0;
+  for (k = 0; k < n; ++k) {
+    a = r = i = w = 0;
+    if (fns[k](&a, &r, &i, &w)) return -1;
+    if (a > ma) ma = a;
+    if (r > mr) mr = r;
+    if (i > mi) mi = i;
+    if (w > mw) mw = w;
+  }
+  ws->arg = (const double **)calloc((size_t)(ma + 1), sizeof(double *));
+  ws->res = (double **)calloc((size_t)(mr + 1), sizeof(double *));
+  ws->iw = (sc_int *)malloc(sizeof(sc_int) * (size_t)(mi + 1));
+  ws->w = (double *)malloc(sizeof(double) * (size_t)(mw + 1));
+  if (!ws->arg || !ws->res || !ws->iw || !ws->w) {
+    sc_work_free(ws);
+    return -1;
+  }
+  return 0;
+}
+
+/* The outputs of `contact_system`: the problem of one state before any active set. */
+typedef struct {
+  double M[SNAKECG_NS * SNAKECG_NS];          /* M_s (eq. 4), column-major */
+  double G[SNAKECG_NC * SNAKECG_NC];          /* G_c (eq. 14) */
+  double b[SNAKECG_NC];                       /* the rows' accelerations at lam = 0 (eq. 13) */
+  double qdd_free[SNAKECG_NS], a_free[3];     /* eq. (12) without constraint forces */
+  double Kq[SNAKECG_NS * SNAKECG_NC];         /* M_s^-1 A_s^T (eq. 18) */
+  double Ka[3 * SNAKECG_NC];                  /* I_obj^-1 A_o^T (eq. 18) */
+  double gap, s;
+} sc_system;
+
+/* `contact_system` at (q, v, tau, q_obj, v_obj, f_obj, rho) with the scene's constants of
+ * `scene` (SCENE_* offsets); its status (0 on success). */
+static int sc_contact_system(sc_work_t *ws, const double *scene, const double *q,
+                             const double *v, const double *tau, const double *q_obj,
+                             const double *v_obj, const double *f_obj, const double *rho,
+                             sc_system *out) {
+  ws->arg[CS_IN_q] = q;
+  ws->arg[CS_IN_v] = v;
+  ws->arg[CS_IN_tau] = tau;
+  ws->arg[CS_IN_q_obj] = q_obj;
+  ws->arg[CS_IN_v_obj] = v_obj;
+  ws->arg[CS_IN_f_obj] = f_obj;
+  ws->arg[CS_IN_K] = scene + SCENE_K;
+  ws->arg[CS_IN_contact_link] = scene + SCENE_contact_link;
+  ws->arg[CS_IN_side] = scene + SCENE_side;
+  ws->arg[CS_IN_object_mass] = scene + SCENE_object_mass;
+  ws->arg[CS_IN_object_inertia] = scene + SCENE_object_inertia;
+  ws->arg[CS_IN_rho] = rho;
+  ws->arg[CS_IN_wheel_offset] = scene + SCENE_wheel_offset;
+  ws->res[CS_OUT_M] = out->M;
+  ws->res[CS_OUT_delassus] = out->G;
+  ws->res[CS_OUT_b] = out->b;
+  ws->res[CS_OUT_qdd_free] = out->qdd_free;
+  ws->res[CS_OUT_a_obj_free] = out->a_free;
+  ws->res[CS_OUT_qdd_from_lam] = out->Kq;
+  ws->res[CS_OUT_a_obj_from_lam] = out->Ka;
+  ws->res[CS_OUT_gap] = &out->gap;
+  ws->res[CS_OUT_s] = &out->s;
+  return SNAKECG_CS(ws->arg, ws->res, ws->iw, ws->w, 0);
+}
+
+/* The constraint forces for row states `state` (eq. 16): lam_F fixed (0, or +-bound for a
+ * sliding wheel), lam_H solving G_HH lam_H = -(b_H + G_HF lam_F) - extra_H by LDL^T in row
+ * order (the masked factorization of the generated `constrained_dynamics`); `extra` (may be
+ * null) adds to the right-hand side per row (the simulator's Baumgarte terms). Returns the
+ * pivot ratio min_j d_j / G_jj over the held rows (1 when none holds). */
+static double sc_held_forces(const signed char *state, const double *G, const double *b,
+                             const double *bounds, const double *extra, double *lam) {
+  const int nc = SNAKECG_NC;
+  int held[SNAKECG_NC], m = 0, i, j, k;
+  double L[SNAKECG_NC * SNAKECG_NC], d[SNAKECG_NC], y[SNAKECG_NC], ratio = 1.0;
+  for (i = 0; i < nc; ++i) {
+    lam[i] = state[i] == SLIDE_POS ? bounds[i] : state[i] == SLIDE_NEG ? -bounds[i] : 0.0;
+    if (!isfinite(lam[i])) lam[i] = 0.0;
+    if (state[i] == HELD) held[m++] = i;
+  }
+  for (i = 0; i < m; ++i) { /* right-hand side -(b_H + G_HF lam_F) - extra_H */
+    double t = b[held[i]];
+    for (j = 0; j < nc; ++j)
+      if (state[j] != HELD) t += G[held[i] + nc * j] * lam[j];
+    y[i] = -t;
+    if (extra) y[i] -= extra[held[i]];
+  }
+  for (j = 0; j < m; ++j) { /* L D L^T of G_HH, no pivoting */
+    double s = G[held[j] + nc * held[j]], r;
+    for (k = 0; k < j; ++k) s -= L[j + nc * k] * L[j + nc * k] * d[k];
+    d[j] = s;
+    r = s / G[held[j] + nc * held[j]];
+    if (!(r >= ratio)) ratio = r; /* NaN propagates */
+    for (i = j + 1; i < m; ++i) {
+      double t = G[held[i] + nc * held[j]];
+      for (k = 0; k < j; ++k) t -= L[i + nc * k] * L[j + nc * k] * d[k];
+      L[i + nc * j] = t / s;
+    }
+  }
+  for (i = 0; i < m; ++i) /* forward, diagonal and back substitution */
+    for (k = 0; k < i; ++k) y[i] -= L[i + nc * k] * y[k];
+  for (i = m - 1; i >= 0; --i) {
+    y[i] /= d[i];
+    for (k = i + 1; k < m; ++k) y[i] -= L[k + nc * i] * y[k];
+  }
+  for (i = 0; i < m; ++i) lam[held[i]] = y[i];
+  return ratio;
+}
+
+#endif
