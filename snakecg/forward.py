@@ -179,9 +179,34 @@ def forward(model, q, tau, *, v=None, v_obj=None, f_obj=None, q_obj=None, rho=No
             max_iter=None, data: Data | None = None, out: ForwardResult | None = None):
     """:meth:`SceneModel.forward` (see there) on its general path: every input validated and
     converted, one C call for the batch (split over threads when large), the marked samples
-    and every sample of the CasADi backend on the reference path."""
-    return _forward_general(model, q, tau, v=v, v_obj=v_obj, f_obj=f_obj, q_obj=q_obj, rho=rho,
-                            max_iter=max_iter, data=data, out=out)
+    and every sample of the CasADi backend on the reference path. (``data`` serves the
+    one-sample path only: a batch needs no workspace.)"""
+    extras = {"v": v, "v_obj": v_obj, "f_obj": f_obj, "q_obj": q_obj, "rho": rho}
+    core = model.core
+    parts, n, batched = _validate(model, q, tau, extras, max_iter,
+                                  check_finite=core is None)
+    iters = default_max_iter(model.n_constraints) if max_iter is None else int(max_iter)
+    cols = model.columns
+    check_batch_memory("forward", n, 8 * cols.width, what="results")
+    raw = _output(out, n, batched, cols)
+    raw2 = raw.reshape(n, cols.width)
+    if core is None:  # CasADi backend: the reference path for every sample
+        for lo in range(0, n, CHUNK_ROWS):
+            hi = min(n, lo + CHUNK_ROWS)
+            idx = np.arange(lo, hi)
+            _reference_into(model, raw2, idx, parts, max_iter)
+        return ForwardResult(raw, cols)
+    status = _core_batch(model, core, parts, n, iters, raw2)
+    if status != 0:
+        if status == -1:
+            raise MemoryError("snakecg: the runtime core could not allocate its work arrays")
+        _validate(model, q, tau, extras, max_iter)  # raises, naming the input
+        raise InputError(f"forward: an input of sample {-2 - status} is not finite or beyond "
+                         f"the force limit")
+    redo = np.flatnonzero(raw2[:, cols.status] != STATUS_EXACT)
+    for lo in range(0, redo.size, CHUNK_ROWS):
+        _reference_into(model, raw2, redo[lo:lo + CHUNK_ROWS], parts, max_iter)
+    return ForwardResult(raw, cols)
 
 
 def forward_one(model, core, q, tau, data):
@@ -240,34 +265,6 @@ def _validate(model, q, tau, extras: dict, max_iter, *, check_finite=True):
     if ("q_obj" in parts) != ("rho" in parts):
         raise InputError("q_obj and rho go together: give both or neither")
     return {k: a for k, (a, _) in parts.items()}, n, batched
-
-
-def _forward_general(model, q, tau, *, max_iter, data, out, **extras):
-    core = model.core
-    parts, n, batched = _validate(model, q, tau, extras, max_iter,
-                                  check_finite=core is None)
-    iters = default_max_iter(model.n_constraints) if max_iter is None else int(max_iter)
-    cols = model.columns
-    check_batch_memory("forward", n, 8 * cols.width, what="results")
-    raw = _output(out, n, batched, cols)
-    raw2 = raw.reshape(n, cols.width)
-    if core is None:  # CasADi backend: the reference path for every sample
-        for lo in range(0, n, CHUNK_ROWS):
-            hi = min(n, lo + CHUNK_ROWS)
-            idx = np.arange(lo, hi)
-            _reference_into(model, raw2, idx, parts, max_iter)
-        return ForwardResult(raw, cols)
-    status = _core_batch(model, core, parts, n, iters, raw2)
-    if status != 0:
-        if status == -1:
-            raise MemoryError("snakecg: the runtime core could not allocate its work arrays")
-        _validate(model, q, tau, extras, max_iter)  # raises, naming the input
-        raise InputError(f"forward: an input of sample {-2 - status} is not finite or beyond "
-                         f"the force limit")
-    redo = np.flatnonzero(raw2[:, cols.status] != STATUS_EXACT)
-    for lo in range(0, redo.size, CHUNK_ROWS):
-        _reference_into(model, raw2, redo[lo:lo + CHUNK_ROWS], parts, max_iter)
-    return ForwardResult(raw, cols)
 
 
 def _output(out, n, batched, cols) -> np.ndarray:

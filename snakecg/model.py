@@ -256,7 +256,6 @@ class SceneModel(RobotModel):
         self.zero_inputs = {"v": np.zeros((1, self.n_coordinates)), "v_obj": np.zeros((1, 3)),
                             "f_obj": np.zeros((1, 3))}
         self._shape_q, self._shape_tau = (self.n_coordinates,), (self.n_joints,)
-        self._status_column = self.columns.status
         self.data = self.create_data().bind(self)
         """The default workspace (used by one caller at a time; others get a fresh one)."""
         self.scene_inputs = MappingProxyType({
@@ -322,33 +321,14 @@ class SceneModel(RobotModel):
         if (core is not None and v is None and v_obj is None and f_obj is None and q_obj is None
                 and rho is None and max_iter is None and out is None):
             # one sample of float64 arrays or plain lists: straight into a workspace's buffers,
-            # one C call, one copy of the result row (the C checks finiteness and range)
+            # one C call, one copy of the result row (the C checks finiteness and range;
+            # snakecg.forward.forward_one)
             tq, tt = type(q), type(tau)
             if ((tq is np.ndarray and q.dtype is _F64 and q.shape == self._shape_q
                  or (tq is list or tq is tuple) and _plain(q, self.n_coordinates))
                     and (tt is np.ndarray and tau.dtype is _F64 and tau.shape == self._shape_tau
                          or (tt is list or tt is tuple) and _plain(tau, self.n_joints))):
-                d = data
-                if d is None:
-                    d = self.data
-                    if not d.lock.acquire(False):  # in use by another thread: a fresh one
-                        d = self.create_data()
-                    else:
-                        try:
-                            if d.owner is not self:
-                                d.bind(self)
-                            d.q[:] = q
-                            d.tau[:] = tau
-                            status = core.call_packed(d.call_address)
-                            raw = d.out.copy()
-                        except (TypeError, ValueError, OverflowError):
-                            status = -1  # an integer beyond float range...: named below
-                        finally:
-                            d.lock.release()
-                        if status == 0 and raw[self._status_column] == 0.0:
-                            return ForwardResult(raw, self.columns)
-                        d = self.create_data()  # the rare cases below, in a workspace of our own
-                res = forward_one(self, core, q, tau, d)
+                res = forward_one(self, core, q, tau, data)
                 if res is not None:
                     return res
         return forward(self, q, tau, v=v, v_obj=v_obj, f_obj=f_obj, q_obj=q_obj, rho=rho,

@@ -315,8 +315,6 @@ def pool() -> ThreadPoolExecutor:
     return _POOL
 
 
-_pool = pool
-
 
 def _check_input(sig: _Signature, k: int, a: np.ndarray, n: int, size: int) -> None:
     """Internal contract: 1-D of ``size`` (broadcast) or C-contiguous ``(n, size)`` float64."""
@@ -422,7 +420,7 @@ class CompiledBackend:
                                             for k in range(n_out)])
             jobs.append((int(lo), int(hi - lo), a, r))
         fn = self._fns[name]
-        results = list(_pool().map(lambda j: (j[0], fn(j[1], j[2], strides, j[3])), jobs))
+        results = list(pool().map(lambda j: (j[0], fn(j[1], j[2], strides, j[3])), jobs))
         for lo, status in results:
             if status != 0:
                 return status + lo if status > 0 else status

@@ -99,38 +99,30 @@ class Data:
     ``model.create_data()`` and pass it as ``data=``; a model used without one takes its
     default workspace when free and a fresh one otherwise."""
 
-    __slots__ = ("n_coordinates", "n_joints", "inputs", "views", "out", "out_address",
-                 "pointers", "pointers_address", "placed_pointers", "placed_address", "strides",
-                 "strides_address", "call", "call_address", "lock", "owner", "q", "tau")
+    __slots__ = ("n_coordinates", "n_joints", "inputs", "q", "tau", "out", "call",
+                 "call_address", "lock", "owner", "_pointers", "_strides")
 
     def __init__(self, layout: Layout):
         ns, na = layout.n_coordinates, layout.n_joints
         sizes = {"q": ns, "v": ns, "tau": na, "q_obj": 3, "v_obj": 3, "f_obj": 3, "rho": 2}
         self.n_coordinates, self.n_joints = ns, na
-        self.inputs = np.zeros(sum(sizes.values()))
-        base = self.inputs.ctypes.data
+        self.inputs = np.zeros(sum(sizes.values()))  # v, v_obj, f_obj stay 0 (at rest)
         offsets, k = {}, 0
         for name in INPUTS:
             offsets[name] = k
             k += sizes[name]
-        self.views = {name: self.inputs[offsets[name]: offsets[name] + sizes[name]]
-                      for name in INPUTS}
-        self.q, self.tau = self.views["q"], self.views["tau"]
-        addresses = [base + 8 * offsets[name] for name in INPUTS]
-        # q_obj NULL: the C places the object from q (the common case)
-        placed = [0 if name in ("q_obj", "rho") else a for name, a in zip(INPUTS, addresses)]
-        self.placed_pointers = (_P * len(INPUTS))(*placed)
-        self.placed_address = ctypes.addressof(self.placed_pointers)
-        self.pointers = (_P * len(INPUTS))(*addresses)
-        self.pointers_address = ctypes.addressof(self.pointers)
-        self.strides = (_I * len(INPUTS))()  # zero: one sample
-        self.strides_address = ctypes.addressof(self.strides)
+        self.q = self.inputs[offsets["q"]: offsets["q"] + ns]
+        self.tau = self.inputs[offsets["tau"]: offsets["tau"] + na]
+        base = self.inputs.ctypes.data
+        # q_obj NULL: the C places the object from q
+        self._pointers = (_P * len(INPUTS))(*[0 if name in ("q_obj", "rho")
+                                              else base + 8 * offsets[name] for name in INPUTS])
+        self._strides = (_I * len(INPUTS))()  # zero: one sample
         self.out = np.zeros(layout.out_width)
-        self.out_address = self.out.ctypes.data
-        self.call = Call(1, 0, 0, 0, self.placed_address, self.strides_address, self.out_address)
+        self.call = Call(1, 0, 0, 0, ctypes.addressof(self._pointers),
+                         ctypes.addressof(self._strides), self.out.ctypes.data)
         self.call_address = ctypes.addressof(self.call)
         self.lock = threading.Lock()
-
         self.owner = None
 
     def bind(self, model) -> Data:

@@ -117,7 +117,8 @@ def header(manifest: dict) -> str:
             raise ArtifactError(f"the model has no generated function {fname!r}, which the "
                                 "runtime core needs; the model folder is damaged")
         symbol = _ident(f"the symbol of {fname}", sig["symbol"])
-        lines += [f"#define SNAKECG_{short} {symbol}", f"#define SNAKECG_{short}_WORK {symbol}_work"]
+        lines += [f"#define SNAKECG_{short} {symbol}",
+                  f"#define SNAKECG_{short}_WORK {symbol}_work"]
         for kind, wanted, items in (("IN", ins, sig["inputs"]), ("OUT", outs, sig["outputs"])):
             index = {_ident(f"an argument of {fname}", it["name"]): k for k, it in enumerate(items)}
             missing = [w for w in wanted if w not in index]
