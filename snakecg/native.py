@@ -29,6 +29,7 @@ from pathlib import Path
 import numpy as np
 
 from .artifacts import cache_dir, held_lock, make_private_dir
+from .bound import BoundFunction
 from .errors import ArtifactError, BuildError
 
 __all__ = [
@@ -555,5 +556,3 @@ def _one_line(exc) -> str:
     text = " ".join(str(exc).split())
     return text if len(text) <= 300 else text[:297] + "..."
 
-
-from .bound import BoundFunction  # noqa: E402  (re-exported; it builds on the backends)
