@@ -17,7 +17,7 @@ import numpy as np
 
 from . import kernels
 from .solver import ABSENT, HELD, LOST, SLIDE_NEG, SLIDE_POS
-from .sphere_kkt import Faces, faces, feasible, linear_candidates
+from .sphere_kkt import Faces, faces, meets
 
 __all__ = ["all_states", "explore", "forms", "piece", "primitives"]
 
@@ -170,10 +170,11 @@ def _state_lookup(states):
     return lookup, base
 
 
-def explore(model, prim, qa, states):
+def explore(model, prim, qa, states, kernel=None):
     """Pieces meeting the sphere: ``(pairs_p, pairs_s)`` index arrays (configuration, state),
     the number of rounds, and the pieces' maps (:func:`piece`) and faces
-    (:func:`~snakecg.sphere_kkt.faces`) built on the way, for those pairs in that order."""
+    (:func:`~snakecg.sphere_kkt.faces`) built on the way, for those pairs in that order.
+    ``kernel``: the compiled faces (:class:`snakecg.core.sphere.SphereKernel`) or None."""
     n, na = qa.shape[0], model.n_joints
     S = len(states)
     lookup, base = _state_lookup(states)
@@ -196,13 +197,13 @@ def explore(model, prim, qa, states):
         p, s = np.nonzero(frontier)
         pc = piece(prim, model.bounds, p, states[s])
         flip, row = pc["flip"], pc["row"]
-        fcs = faces(pc["cond"], flip >= 0, na)
+        fcs = faces(pc["cond"], flip >= 0, na, kernel)
         built.append((p, s, pc, fcs))
         new = np.zeros((n, S), bool)
         for fc in fcs[1:]:
             # a facet meets the sphere inside the piece: a stationary point of a linear
             # function on the face is feasible
-            ok = feasible(pc["cond"][fc.pair], linear_candidates(fc, direction)).any(axis=1)
+            ok = meets(pc["cond"], fc, direction, kernel)
             q, slots = fc.pair[ok], fc.slots[ok]
             if not q.size:
                 continue
@@ -221,7 +222,7 @@ def explore(model, prim, qa, states):
     if frontier.any():  # the walk stopped early: the last ones found are pieces too
         p, s = np.nonzero(frontier)
         pc = piece(prim, model.bounds, p, states[s])
-        built.append((p, s, pc, faces(pc["cond"], pc["flip"] >= 0, na)))
+        built.append((p, s, pc, faces(pc["cond"], pc["flip"] >= 0, na, kernel)))
     return _concat(built) + (rounds,)
 
 

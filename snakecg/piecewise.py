@@ -46,18 +46,23 @@ from __future__ import annotations
 
 import numpy as np
 
+from .core.sphere import MAX_DIM
+from .native import pool, threads
 from .pieces import all_states, explore, forms, primitives
 from .solver import HELD
 from .sphere_kkt import per_config, piece_extremes, quad, take_faces
 
-__all__ = ["wheel_extremes"]
+__all__ = ["face_kernel", "wheel_extremes"]
+
+#: Faces per thread of one compiled call (a face costs about a microsecond).
+FACES_PER_THREAD = 2048
 
 
-def _chunk(model, qa):
+def _chunk(model, qa, kernel):
     n = qa.shape[0]
     prim = primitives(model, qa)
     states = all_states(model)
-    p, s, pc, fcs, rounds = explore(model, prim, qa, states)
+    p, s, pc, fcs, rounds = explore(model, prim, qa, states, kernel)
     kept = states[s, 0] == HELD
     every = np.ones(len(p), bool)
     T = prim["T"]
@@ -66,7 +71,7 @@ def _chunk(model, qa):
     cond = pc["cond"]
     pair_u, pair_ok = {}, {}
     for m, (A, g, c) in fm.items():
-        vmax, umax, vmin, umin = piece_extremes(cond, fcs, A, g, c, p, n, kept)
+        vmax, umax, vmin, umin = piece_extremes(cond, fcs, A, g, c, p, n, kept, kernel=kernel)
         pair_u[m + "_max"], pair_ok[m + "_max"] = umax, np.isfinite(vmax)
         pair_u[m + "_min"], pair_ok[m + "_min"] = umin, np.isfinite(vmin)
         res["max"][m], res["u_max"][m] = per_config(n, p, vmax, umax, every, True)
@@ -118,7 +123,7 @@ def _chunk(model, qa):
             c = sign * (co[sel] - ts * cd[sel])
             vmax, umax, _, _ = piece_extremes(
                 cond[sel], take_faces(fcs, sel, len(p)), A, g, c, ps, n,
-                np.ones(len(sel), bool), floor=np.zeros(n))
+                np.ones(len(sel), bool), floor=np.zeros(n), kernel=kernel)
             vals, us = sign * vmax, umax
             h, u = per_config(n, ps, vals, us, np.ones(len(sel), bool), largest)
             # the ratio at the maximiser (minimiser) of Omega - t D, from its own piece
@@ -155,9 +160,33 @@ def _chunk(model, qa):
     return res, tau, closed, dict(pieces=len(p), rounds=rounds)
 
 
-def wheel_extremes(model, qa, chunk: int = 2048):
+class _Kernel:
+    """A model's :class:`~snakecg.core.sphere.SphereKernel` with the candidates split over the
+    package's threads."""
+
+    def __init__(self, sphere):
+        self._sphere = sphere
+        self.cut, self.meets = sphere.cut, sphere.meets
+
+    def candidates(self, pair, *args, **kwargs):
+        return self._sphere.candidates(pair, *args, pool=pool(),
+                                       workers=threads(len(pair), FACES_PER_THREAD), **kwargs)
+
+
+def face_kernel(model):
+    """The compiled faces and KKT candidates of ``model``'s library
+    (:mod:`snakecg.core.sphere`); None without a compiled core (NumPy's path then)."""
+    core = getattr(model, "core", None)
+    if core is None or model.n_joints > MAX_DIM:
+        return None
+    return _Kernel(core.sphere)
+
+
+def wheel_extremes(model, qa, chunk: int = 2048, compiled: bool = True):
     """Exact extremes of every metric for bounded wheels (see the module docstring).
 
+    ``compiled``: the KKT candidates in the model's compiled core where it has one (else,
+    and with False, NumPy's eigensolvers; both find the same points).
     Returns an :class:`~snakecg.analysis.Extremes` with ``certified`` (N,) and ``pieces``
     (the number of (configuration, state) pieces meeting the sphere).
     """
@@ -167,9 +196,10 @@ def wheel_extremes(model, qa, chunk: int = 2048):
     ex = Extremes(method="wheels: exact piecewise solve (every wheel state meeting the input "
                          "boundary, KKT points of each piece, Dinkelbach for sr), certified "
                          "by the forward solver")
+    kernel = face_kernel(model) if compiled else None
     parts = []
     for s0 in range(0, n, chunk):
-        parts.append(_chunk(model, np.ascontiguousarray(qa[s0:s0 + chunk])))
+        parts.append(_chunk(model, np.ascontiguousarray(qa[s0:s0 + chunk]), kernel))
     cert = np.concatenate([c for _, _, c, _ in parts])
     for key, tkey in (("max", "tau_max"), ("min", "tau_min"), ("min_kept", "tau_min_kept")):
         for m in METRICS:

@@ -25,6 +25,7 @@ __all__ = [
     "faces",
     "feasible",
     "linear_candidates",
+    "meets",
     "per_config",
     "piece_extremes",
     "quad",
@@ -93,14 +94,18 @@ def _cut(a, b, na):
     return u0, np.ascontiguousarray(Q[:, :, s:]), np.sqrt(np.maximum(r2, 0.0)), valid
 
 
-def faces(cond, used, na):
+def faces(cond, used, na, kernel=None):
     """Every face (``|S| < na``) of every pair that meets the sphere, as one :class:`Faces`
     batch per ``|S|`` (index 0: the whole sphere). ``used`` (P, m): the pair's real conditions
-    (unused slots ``0 . u + 1`` are never at equality)."""
+    (unused slots ``0 . u + 1`` are never at equality). ``kernel``: the compiled path
+    (:class:`snakecg.core.sphere.SphereKernel`), else NumPy's."""
     P, m, _ = cond.shape
     out = [Faces(np.arange(P), np.zeros((P, 0), np.intp), np.zeros((P, na)),
                  np.broadcast_to(np.eye(na), (P, na, na)), np.ones(P))]
     for s in range(1, min(m, na - 1) + 1):
+        if kernel is not None:
+            out.append(Faces(*kernel.cut(cond, used, s)))
+            continue
         combos = np.array(list(itertools.combinations(range(m), s)), dtype=np.intp)
         pi, ci = np.nonzero(np.all(used[:, combos], axis=2))
         slots = combos[ci]
@@ -127,6 +132,14 @@ def feasible(cond, u):
     na = u.shape[2]
     val = u @ np.swapaxes(cond[:, :, :na], 1, 2) + cond[:, None, :, na]
     return np.all(val >= -FEAS_TOL, axis=2)
+
+
+def meets(cond, fc, direction, kernel=None):
+    """(F,) bool: each face's sphere meets its piece (``cond`` per pair): a stationary point of
+    ``direction . u`` on it is feasible."""
+    if kernel is not None:
+        return kernel.meets(fc.pair, fc.u0, fc.Z, fc.r, cond, direction, FEAS_TOL)
+    return feasible(cond[fc.pair], linear_candidates(fc, direction)).any(axis=1)
 
 
 def linear_candidates(fc, direction):
@@ -249,10 +262,21 @@ def _merge(vbest, ubest, q, vals, us, sign):
     vbest[better] = sign * new[better]
 
 
-def _evaluate(cond, fc, rows, A, g, c, out, both=True):
+def _evaluate(cond, fc, rows, A, g, c, out, both=True, kernel=None):
     """KKT candidates of the faces ``rows`` of ``fc``, merged into ``out`` (vmax, umax, vmin,
-    umin per pair; the min only if ``both``); returns the values at the candidates (rows, C)."""
+    umin per pair; the min only if ``both``); returns the largest and smallest value over each
+    face's candidates (feasible or not). ``kernel``: the compiled path
+    (:class:`snakecg.core.sphere.SphereKernel`), else NumPy's."""
     q = fc.pair[rows]
+    if kernel is not None:
+        whole = fc.slots.shape[1] == 0  # the whole unit sphere
+        vmax, umax, vmin, umin, hi, lo = kernel.candidates(
+            q, None if whole else fc.u0[rows], None if whole else fc.Z[rows],
+            None if whole else fc.r[rows], A, g, c, cond, FEAS_TOL, identity=whole)
+        _merge(out[0], out[1], q, vmax, umax, 1.0)
+        if both:
+            _merge(out[2], out[3], q, vmin, umin, -1.0)
+        return hi, lo
     u = quadratic_candidates(fc.u0[rows], fc.Z[rows], fc.r[rows], A[q], g[q])
     v = quad(A[q], g[q], c[q], u)
     feas = feasible(cond[q], u)
@@ -264,10 +288,10 @@ def _evaluate(cond, fc, rows, A, g, c, out, both=True):
         vn = np.where(feas, v, np.inf)
         j = np.argmin(vn, axis=1)
         _merge(out[2], out[3], q, vn[idx, j], u[idx, j], -1.0)
-    return v
+    return v.max(axis=1), v.min(axis=1)
 
 
-def piece_extremes(cond, fcs, A, g, c, p, n, kept, floor=None):
+def piece_extremes(cond, fcs, A, g, c, p, n, kept, floor=None, kernel=None):
     """Max and min of ``u^T A u + 2 g^T u + c`` on ``sphere ∩ piece`` for every pair.
 
     The whole sphere is searched first: its stationary values bound the piece's quadratic.
@@ -280,6 +304,7 @@ def piece_extremes(cond, fcs, A, g, c, p, n, kept, floor=None):
     With ``floor`` (n,), only the max is sought and only where it exceeds ``floor`` (per
     configuration): pairs and faces whose bound stays below it are skipped, the whole sphere
     too where the bound ``c + 2 |g| + lambda_max(A)`` does (vmin is then not computed).
+    ``kernel``: the compiled candidates (:class:`snakecg.core.sphere.SphereKernel`) or None.
     """
     P, na = A.shape[0], A.shape[1]
     both = floor is None
@@ -292,8 +317,8 @@ def piece_extremes(cond, fcs, A, g, c, p, n, kept, floor=None):
         hi = c + lin + lmax
         rows = np.flatnonzero(hi > floor[p] - 1e-12 * (np.abs(c) + lin + np.abs(lmax)))
     if rows.size:
-        v = _evaluate(cond, fcs[0], rows, A, g, c, out, both)
-        up_max[rows], lo_min[rows] = v.max(axis=1), v.min(axis=1)  # bounds on the sphere
+        # the extremes over the whole sphere bound the piece's quadratic
+        up_max[rows], lo_min[rows] = _evaluate(cond, fcs[0], rows, A, g, c, out, both, kernel)
     slack = 1e-12 * (np.abs(up_max) + np.abs(lo_min))
     slack = np.where(np.isfinite(slack), slack, 0.0)
     for fc in fcs[:0:-1]:
@@ -313,7 +338,7 @@ def piece_extremes(cond, fcs, A, g, c, p, n, kept, floor=None):
         else:
             want = (up_max > thr_max + slack) & (up_max > floor[p] - slack)
         rows = np.flatnonzero(want[fc.pair])
-        if rows.size and fc.Z.shape[2] >= 2:  # a smaller sphere: bound the quadratic first
+        if rows.size and fc.Z.shape[2] >= 2 and kernel is None:  # bound the quadratic first
             q = fc.pair[rows]
             hi, lo = _face_bounds(A[q], g[q], c[q], fc.u0[rows], fc.Z[rows], fc.r[rows])
             if both:
@@ -322,7 +347,7 @@ def piece_extremes(cond, fcs, A, g, c, p, n, kept, floor=None):
                 keep = (hi > thr_max[q] + slack[q]) & (hi > floor[p[q]] - slack[q])
             rows = rows[keep]
         if rows.size:
-            _evaluate(cond, fc, rows, A, g, c, out, both)
+            _evaluate(cond, fc, rows, A, g, c, out, both, kernel)
     return out
 
 

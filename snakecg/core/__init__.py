@@ -24,6 +24,7 @@ from ..rows import WEAK
 from ..solver import FORCE_LIMIT, PIVOT_TOL, REL_TOL
 from .layout import INPUTS, Layout
 from .segment import segment_functions
+from .sphere import SphereKernel
 
 __all__ = ["Core", "Data", "Layout", "CONSTANTS", "STATUS_EXACT", "STATUS_FALLBACK"]
 
@@ -62,6 +63,8 @@ class Core:
         self.integrate_segment, self.mode_samples = segment_functions(lib, manifest["prefix"])
         """integrate.c's ``core_integrate_segment`` and ``core_mode_samples``
         (:mod:`snakecg.core.segment`)."""
+        self.sphere = SphereKernel(lib, manifest["prefix"])
+        """sphere.c's faces and KKT candidates (:mod:`snakecg.core.sphere`)."""
 
     def next_states(self, state, lam, w, G, bounds) -> tuple[np.ndarray, bool]:
         """The C's row-state update for one sample (the rules of

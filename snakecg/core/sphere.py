@@ -1,0 +1,145 @@
+"""The Python side of ``sphere.c``: the faces of the pieces and the KKT candidates on them.
+
+:class:`SphereKernel` binds the three functions of ``sphere.c`` in a compiled model library,
+the compiled path of :mod:`snakecg.sphere_kkt` (the exact bounded-wheel extremes):
+
+- :meth:`~SphereKernel.cut`: the faces of ``|S|`` conditions held at equality that meet the
+  unit sphere, each as the smaller sphere ``u = u0 + Z y, |y| = r``;
+- :meth:`~SphereKernel.meets`: whether a face's sphere meets its piece (the stationary points
+  of a linear function on it);
+- :meth:`~SphereKernel.candidates`: per face, the best feasible maximum and minimum of
+  ``u^T A u + 2 g^T u + c`` over its stationary points, and the largest and smallest value over
+  all of them.
+
+NumPy's functions of :mod:`snakecg.sphere_kkt` compute the same and stay the reference and the
+path of models without a C compiler.
+"""
+
+from __future__ import annotations
+
+import ctypes
+
+import numpy as np
+
+__all__ = ["MAX_DIM", "SphereKernel"]
+
+#: Largest ``n_a`` the C handles (``SK_MAX`` of sphere.c); larger models stay on NumPy.
+MAX_DIM = 16
+
+_P = ctypes.c_void_p
+_I = ctypes.c_longlong
+
+
+def _c(a, dtype=np.float64):
+    return np.ascontiguousarray(a, dtype=dtype)
+
+
+def _row(a, row) -> int:
+    """Address of row ``row`` of ``a`` (0 for None)."""
+    return 0 if a is None else a.ctypes.data + a.strides[0] * int(row)
+
+
+def _per_pair(A, g, c, cond):
+    A, g, c, cond = _c(A), _c(g), _c(c), _c(cond)
+    P, na = A.shape[0], A.shape[1]
+    if A.shape != (P, na, na) or g.shape != (P, na) or c.shape != (P,) \
+            or cond.ndim != 3 or cond.shape[0] != P or cond.shape[2] != na + 1:
+        raise ValueError("sphere kernel: inconsistent per-pair shapes")
+    return A, g, c, cond
+
+
+class SphereKernel:
+    """``core_sphere_cut``, ``core_sphere_meets`` and ``core_sphere_faces`` of one compiled
+    model library."""
+
+    def __init__(self, lib: ctypes.CDLL, prefix: str):
+        fn = getattr(lib, f"{prefix}core_sphere_faces")
+        fn.argtypes = [_I, _I, _I, _I] + [_P] * 8 + [ctypes.c_double] + [_P] * 6
+        fn.restype = ctypes.c_int
+        self._faces = fn
+        fn = getattr(lib, f"{prefix}core_sphere_cut")
+        fn.argtypes = [_I, _I, _I, _I, _I] + [_P] * 8
+        fn.restype = _I
+        self._cut = fn
+        fn = getattr(lib, f"{prefix}core_sphere_meets")
+        fn.argtypes = [_I, _I, _I, _I] + [_P] * 6 + [ctypes.c_double, _P]
+        fn.restype = ctypes.c_int
+        self._meets = fn
+
+    def cut(self, cond, used, s):
+        """The faces of ``s`` conditions at equality (every combination of each pair's
+        ``used`` conditions, in NumPy's order) that meet the unit sphere: ``pair`` (F,),
+        ``slots`` (F, s), ``u0`` (F, na), ``Z`` (F, na, na - s), ``r`` (F,)."""
+        import itertools
+
+        cond = _c(cond)
+        P, m, na = cond.shape[0], cond.shape[1], cond.shape[2] - 1
+        used = _c(used, np.uint8)
+        if used.shape != (P, m) or not 1 <= s < na or na > MAX_DIM:
+            raise ValueError("sphere kernel: bad face batch")
+        combos = np.array(list(itertools.combinations(range(m), s)), dtype=np.int64)
+        cap = P * len(combos)
+        pair, combo = np.empty(cap, np.int64), np.empty(cap, np.int64)
+        u0, Z, r = np.empty((cap, na)), np.empty((cap, na, na - s)), np.empty(cap)
+        F = self._cut(P, na, m, s, len(combos), combos.ctypes.data, cond.ctypes.data,
+                      used.ctypes.data, pair.ctypes.data, combo.ctypes.data, u0.ctypes.data,
+                      Z.ctypes.data, r.ctypes.data)
+        if F < 0:
+            raise ValueError(f"sphere kernel: n_a = {na} above {MAX_DIM}")
+        return pair[:F], combos[combo[:F]].astype(np.intp), u0[:F], Z[:F], r[:F]
+
+    def meets(self, pair, u0, Z, r, cond, direction, feas_tol):
+        """(F,) bool: a stationary point of ``direction . u`` on each face is feasible."""
+        pair, u0, Z, r, cond = _c(pair, np.int64), _c(u0), _c(Z), _c(r), _c(cond)
+        direction = _c(direction)
+        F, na, k = Z.shape
+        out = np.zeros(F, np.uint8)
+        if F and self._meets(F, na, k, cond.shape[1], pair.ctypes.data, u0.ctypes.data,
+                             Z.ctypes.data, r.ctypes.data, cond.ctypes.data,
+                             direction.ctypes.data, float(feas_tol), out.ctypes.data):
+            raise ValueError(f"sphere kernel: n_a = {na} above {MAX_DIM}")
+        return out.view(bool)
+
+    def candidates(self, pair, u0, Z, r, A, g, c, cond, feas_tol, *, identity=False,
+                   pool=None, workers=1):
+        """Per face: ``vmax, umax, vmin, umin, vhi, vlo`` (see sphere.c), split over
+        ``workers`` threads of ``pool``. ``A`` (P, na, na), ``g`` (P, na), ``c`` (P,),
+        ``cond`` (P, m, na + 1) are per pair and ``pair`` (F,) indexes them; ``u0`` (F, na),
+        ``Z`` (F, na, k), ``r`` (F,) are the faces, ignored with ``identity`` (the whole unit
+        sphere)."""
+        pair = _c(pair, np.int64)
+        F = len(pair)
+        A, g, c, cond = _per_pair(A, g, c, cond)
+        P, na, m = A.shape[0], A.shape[1], cond.shape[1]
+        if F and (pair.min() < 0 or pair.max() >= P):
+            raise ValueError("sphere kernel: pair index out of range")
+        if identity:
+            k = na
+            u0 = Z = r = None
+        else:
+            u0, Z, r = _c(u0), _c(Z), _c(r)
+            k = Z.shape[2]
+            if u0.shape != (F, na) or Z.shape != (F, na, k) or r.shape != (F,):
+                raise ValueError("sphere kernel: inconsistent face shapes")
+        vmax, vmin, vhi, vlo = (np.empty(F) for _ in range(4))
+        umax, umin = np.empty((F, na)), np.empty((F, na))
+        if F == 0:
+            return vmax, umax, vmin, umin, vhi, vlo
+
+        def run(lo, hi):
+            return self._faces(
+                int(hi - lo), na, k, m, _row(pair, lo), _row(u0, lo), _row(Z, lo),
+                _row(r, lo), A.ctypes.data, g.ctypes.data, c.ctypes.data, cond.ctypes.data,
+                float(feas_tol), _row(vmax, lo), _row(umax, lo), _row(vmin, lo),
+                _row(umin, lo), _row(vhi, lo), _row(vlo, lo))
+
+        n_threads = max(1, min(workers, F)) if pool is not None else 1
+        if n_threads == 1:
+            status = [run(0, F)]
+        else:
+            edges = np.linspace(0, F, n_threads + 1).astype(int)
+            status = list(pool.map(run, edges[:-1], edges[1:]))
+        if any(s != 0 for s in status):
+            raise ValueError(f"sphere kernel: n_a = {na} or face dimension {k} above "
+                             f"{MAX_DIM}")
+        return vmax, umax, vmin, umin, vhi, vlo
