@@ -262,17 +262,18 @@ def _merge(vbest, ubest, q, vals, us, sign):
     vbest[better] = sign * new[better]
 
 
-def _evaluate(cond, fc, rows, A, g, c, out, both=True, kernel=None):
+def _evaluate(cond, fc, rows, A, g, c, out, both=True, kernel=None, skip=None):
     """KKT candidates of the faces ``rows`` of ``fc``, merged into ``out`` (vmax, umax, vmin,
     umin per pair; the min only if ``both``); returns the largest and smallest value over each
     face's candidates (feasible or not). ``kernel``: the compiled path
-    (:class:`snakecg.core.sphere.SphereKernel`), else NumPy's."""
+    (:class:`snakecg.core.sphere.SphereKernel`, which skips the faces whose bounds stay within
+    ``skip``, then returning those bounds), else NumPy's."""
     q = fc.pair[rows]
     if kernel is not None:
         whole = fc.slots.shape[1] == 0  # the whole unit sphere
         vmax, umax, vmin, umin, hi, lo = kernel.candidates(
             q, None if whole else fc.u0[rows], None if whole else fc.Z[rows],
-            None if whole else fc.r[rows], A, g, c, cond, FEAS_TOL, identity=whole)
+            None if whole else fc.r[rows], A, g, c, cond, FEAS_TOL, identity=whole, skip=skip)
         _merge(out[0], out[1], q, vmax, umax, 1.0)
         if both:
             _merge(out[2], out[3], q, vmin, umin, -1.0)
@@ -311,14 +312,18 @@ def piece_extremes(cond, fcs, A, g, c, p, n, kept, floor=None, kernel=None):
     out = (np.full(P, -np.inf), np.zeros((P, na)), np.full(P, np.inf), np.zeros((P, na)))
     up_max, lo_min = np.full(P, -np.inf), np.full(P, np.inf)
     rows = np.arange(P)
-    if not both:  # |u| = 1: u^T A u <= lambda_max(A), 2 g^T u <= 2 |g|
+    skip = None
+    if not both and kernel is not None:  # the C bounds the quadratic on the sphere itself
+        skip = (floor[p], -np.inf)
+    elif not both:  # |u| = 1: u^T A u <= lambda_max(A), 2 g^T u <= 2 |g|
         lin = 2 * np.linalg.norm(g, axis=1)
         lmax = np.linalg.eigvalsh(A)[:, -1]
         hi = c + lin + lmax
         rows = np.flatnonzero(hi > floor[p] - 1e-12 * (np.abs(c) + lin + np.abs(lmax)))
     if rows.size:
         # the extremes over the whole sphere bound the piece's quadratic
-        up_max[rows], lo_min[rows] = _evaluate(cond, fcs[0], rows, A, g, c, out, both, kernel)
+        up_max[rows], lo_min[rows] = _evaluate(cond, fcs[0], rows, A, g, c, out, both, kernel,
+                                               skip)
     slack = 1e-12 * (np.abs(up_max) + np.abs(lo_min))
     slack = np.where(np.isfinite(slack), slack, 0.0)
     for fc in fcs[:0:-1]:
@@ -338,7 +343,14 @@ def piece_extremes(cond, fcs, A, g, c, p, n, kept, floor=None, kernel=None):
         else:
             want = (up_max > thr_max + slack) & (up_max > floor[p] - slack)
         rows = np.flatnonzero(want[fc.pair])
-        if rows.size and fc.Z.shape[2] >= 2 and kernel is None:  # bound the quadratic first
+        skip = None
+        if rows.size and kernel is not None:  # the C bounds the quadratic on each face
+            q = fc.pair[rows]
+            if both:
+                skip = (thr_max[q] + slack[q], thr_min[q] - slack[q])
+            else:
+                skip = (np.maximum(thr_max[q] + slack[q], floor[p[q]] - slack[q]), -np.inf)
+        elif rows.size and fc.Z.shape[2] >= 2:  # bound the quadratic first
             q = fc.pair[rows]
             hi, lo = _face_bounds(A[q], g[q], c[q], fc.u0[rows], fc.Z[rows], fc.r[rows])
             if both:
@@ -347,7 +359,7 @@ def piece_extremes(cond, fcs, A, g, c, p, n, kept, floor=None, kernel=None):
                 keep = (hi > thr_max[q] + slack[q]) & (hi > floor[p[q]] - slack[q])
             rows = rows[keep]
         if rows.size:
-            _evaluate(cond, fc, rows, A, g, c, out, both, kernel)
+            _evaluate(cond, fc, rows, A, g, c, out, both, kernel, skip)
     return out
 
 

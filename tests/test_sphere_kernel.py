@@ -147,6 +147,17 @@ def test_candidates_match_numpy_and_dense_sampling(kernel, na):
         assert has.any()
         np.testing.assert_allclose(vmax[has], ref_max[has], atol=1e-9 * scale.max())
         np.testing.assert_allclose(vmin[has], ref_min[has], atol=1e-9 * scale.max())
+        # skipped faces (bounds within skip) return bounds enclosing the extremes; a skip
+        # window no bound fits in changes nothing
+        args = (q, None if whole else fc.u0, None if whole else fc.Z,
+                None if whole else fc.r, A, g, c, cond, sk.FEAS_TOL)
+        bmax, _, bmin, _, bhi, blo = kernel.candidates(*args, identity=whole,
+                                                       skip=(np.inf, -np.inf))
+        assert np.all(np.isneginf(bmax)) and np.all(np.isposinf(bmin))
+        assert np.all(bhi >= hi) and np.all(blo <= lo)
+        same = kernel.candidates(*args, identity=whole, skip=(-np.inf, np.inf))
+        for x, y in zip(same, (vmax, umax, vmin, umin, hi, lo)):
+            np.testing.assert_array_equal(x, y)
         for val, pt in ((vmax, umax), (vmin, umin)):
             ok = np.isfinite(val)
             np.testing.assert_allclose(sk.quad(A[q[ok]], g[q[ok]], c[q[ok]], pt[ok, None])[:, 0],

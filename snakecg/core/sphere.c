@@ -192,9 +192,11 @@ static void sk_point(int k, const double *e, const double *gv, const double *V, 
   }
 }
 
-/* The stationary points y (n x k, returned count) of y^T Ar y + 2 gr^T y on |y| = r. */
-static int sk_candidates(int k, double *Ar, const double *gr, double r, double *Y) {
-  double e[SK_MAX], V[SK_MAX * SK_MAX], gv[SK_MAX], P[SK_MAX], W[SK_MAX];
+/* The stationary points y (n x k, returned count) of y^T Ar y + 2 gr^T y on |y| = r, with
+ * Ar = V diag(e) V^T (e ascending). */
+static int sk_candidates(int k, const double *e, const double *V, const double *gr, double r,
+                         double *Y) {
+  double gv[SK_MAX], P[SK_MAX], W[SK_MAX];
   double emax = 0.0, gmax = 0.0, escale, tiny, near, r_safe = r > 1e-100 ? r : 1e-100;
   double r2 = r_safe * r_safe, wsum = 0.0, atol;
   int i, j, l, n = 0, J = 0;
@@ -203,7 +205,6 @@ static int sk_candidates(int k, double *Ar, const double *gr, double r, double *
     Y[1] = -r;
     return 2;
   }
-  sk_eigh(k, Ar, e, V);
   for (i = 0; i < k; ++i) {
     double s = 0.0;
     for (l = 0; l < k; ++l) s += V[l * k + i] * gr[l];
@@ -235,7 +236,7 @@ static int sk_candidates(int k, double *Ar, const double *gr, double r, double *
     }
   J = j;
   if (J > 0) {
-    double s = sqrt(wsum) / r_safe;
+    double s = 2.0 * sqrt(wsum) / r_safe; /* phi < 0 at P_0 - s and P_J-1 + s, strictly */
     /* first guesses: the root of the nearest pole's term alone */
     double mu = sk_root(0, 1, J, P, W, r_safe, P[0] - s, P[0], P[0] - sqrt(W[0]) / r_safe, atol);
     sk_point(k, e, gv, V, mu, tiny, r, Y + k * n++);
@@ -297,6 +298,9 @@ static int sk_candidates(int k, double *Ar, const double *gr, double r, double *
 /* For faces f < F of pairs pair[f]: the extremes of h over the KKT candidates.
  *   u0 (F, na), Z (F, na, k) or NULL for the whole sphere (Z = I, k = na, u0 = 0), r (F);
  *   A (P, na, na), g (P, na), c (P), cond (P, m, na + 1) per pair;
+ *   skip_hi, skip_lo (F) or NULL: a face whose bounds (f(u0) +- 2 |g_r| r + the extreme
+ *        eigenvalues of A_r times r^2, padded by 1e-12 of their terms) stay within
+ *        [skip_lo, skip_hi] is not searched: vmax/vmin -inf/+inf, vhi/vlo those bounds;
  *   out: vmax/umax, vmin/umin (feasible candidates; -inf/+inf where none),
  *        vhi/vlo (all candidates).
  * Returns 0, or -1 when na or k exceeds SK_MAX (nothing written). */
@@ -304,6 +308,7 @@ int SNAKECG_EXPORT(core_sphere_faces)(sk_int F, sk_int na_, sk_int k_, sk_int m_
                                       const sk_int *pair, const double *u0, const double *Z,
                                       const double *r, const double *A, const double *g,
                                       const double *c, const double *cond, double feas_tol,
+                                      const double *skip_hi, const double *skip_lo,
                                       double *vmax, double *umax, double *vmin, double *umin,
                                       double *vhi, double *vlo) {
   int na = (int)na_, k = (int)k_, m = (int)m_;
@@ -315,7 +320,7 @@ int SNAKECG_EXPORT(core_sphere_faces)(sk_int F, sk_int na_, sk_int k_, sk_int m_
     const double *Zf = Z ? Z + f * na * k : 0, *u0f = Z ? u0 + f * na : 0;
     const double rf = Z ? r[f] : 1.0;
     double Ar[SK_MAX * SK_MAX], gr[SK_MAX], h[SK_MAX], AZ[SK_MAX * SK_MAX];
-    double Y[SK_CAND * SK_MAX], u[SK_MAX];
+    double e[SK_MAX], V[SK_MAX * SK_MAX], Y[SK_CAND * SK_MAX], u[SK_MAX];
     double bmax = -INFINITY, bmin = INFINITY, hi = -INFINITY, lo = INFINITY;
     int i, j, l, nc, ci, imax = -1, imin = -1;
     /* h = A u0 + g, gr = Z^T h, Ar = Z^T A Z */
@@ -351,7 +356,37 @@ int SNAKECG_EXPORT(core_sphere_faces)(sk_int F, sk_int na_, sk_int k_, sk_int m_
         for (j = 0; j < na; ++j) Ar[i * na + j] = 0.5 * (Ap[i * na + j] + Ap[j * na + i]);
       }
     }
-    nc = sk_candidates(k, Ar, gr, rf, Y);
+    {
+      /* the value at u0 and the bounds f(u0) +- 2 |gr| r + e_max/min r^2 on the face: where
+       * they cannot beat skip_hi/skip_lo, no candidate is sought */
+      double f0 = c[p], ng = 0.0, bh, bl, pad;
+      for (i = 0; i < na; ++i) {
+        double s = Z ? u0f[i] : 0.0, t = 0.0;
+        for (j = 0; j < na; ++j) t += Ap[i * na + j] * (Z ? u0f[j] : 0.0);
+        f0 += s * t + 2.0 * gp[i] * s;
+      }
+      if (k == 1) {
+        e[0] = Ar[0];
+        V[0] = 1.0;
+      } else {
+        sk_eigh(k, Ar, e, V);
+      }
+      for (l = 0; l < k; ++l) ng += gr[l] * gr[l];
+      ng = 2.0 * sqrt(ng) * rf;
+      bh = f0 + ng + e[k - 1] * rf * rf;
+      bl = f0 - ng + e[0] * rf * rf;
+      pad = 1e-12 * (fabs(f0) + ng + (fabs(e[0]) + fabs(e[k - 1])) * rf * rf);
+      if (skip_hi && bh + pad <= skip_hi[f] && bl - pad >= skip_lo[f]) {
+        vmax[f] = -INFINITY;
+        vmin[f] = INFINITY;
+        vhi[f] = bh + pad;
+        vlo[f] = bl - pad;
+        memset(umax + f * na, 0, sizeof(double) * (size_t)na);
+        memset(umin + f * na, 0, sizeof(double) * (size_t)na);
+        continue;
+      }
+    }
+    nc = sk_candidates(k, e, V, gr, rf, Y);
     for (ci = 0; ci < nc; ++ci) {
       const double *y = Y + ci * k;
       double v = c[p], au;

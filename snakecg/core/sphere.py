@@ -54,7 +54,7 @@ class SphereKernel:
 
     def __init__(self, lib: ctypes.CDLL, prefix: str):
         fn = getattr(lib, f"{prefix}core_sphere_faces")
-        fn.argtypes = [_I, _I, _I, _I] + [_P] * 8 + [ctypes.c_double] + [_P] * 6
+        fn.argtypes = [_I, _I, _I, _I] + [_P] * 8 + [ctypes.c_double] + [_P] * 8
         fn.restype = ctypes.c_int
         self._faces = fn
         fn = getattr(lib, f"{prefix}core_sphere_cut")
@@ -101,12 +101,14 @@ class SphereKernel:
         return out.view(bool)
 
     def candidates(self, pair, u0, Z, r, A, g, c, cond, feas_tol, *, identity=False,
-                   pool=None, workers=1):
+                   skip=None, pool=None, workers=1):
         """Per face: ``vmax, umax, vmin, umin, vhi, vlo`` (see sphere.c), split over
         ``workers`` threads of ``pool``. ``A`` (P, na, na), ``g`` (P, na), ``c`` (P,),
         ``cond`` (P, m, na + 1) are per pair and ``pair`` (F,) indexes them; ``u0`` (F, na),
         ``Z`` (F, na, k), ``r`` (F,) are the faces, ignored with ``identity`` (the whole unit
-        sphere)."""
+        sphere). ``skip``: ``(hi, lo)`` (F,) each, or None: a face whose bounds cannot
+        exceed ``hi`` nor fall below ``lo`` is not searched (``vmax``/``vmin`` infinite,
+        ``vhi``/``vlo`` the bounds)."""
         pair = _c(pair, np.int64)
         F = len(pair)
         A, g, c, cond = _per_pair(A, g, c, cond)
@@ -121,6 +123,9 @@ class SphereKernel:
             k = Z.shape[2]
             if u0.shape != (F, na) or Z.shape != (F, na, k) or r.shape != (F,):
                 raise ValueError("sphere kernel: inconsistent face shapes")
+        skip_hi = skip_lo = None
+        if skip is not None:
+            skip_hi, skip_lo = (_c(np.broadcast_to(x, (F,))) for x in skip)
         vmax, vmin, vhi, vlo = (np.empty(F) for _ in range(4))
         umax, umin = np.empty((F, na)), np.empty((F, na))
         if F == 0:
@@ -130,7 +135,8 @@ class SphereKernel:
             return self._faces(
                 int(hi - lo), na, k, m, _row(pair, lo), _row(u0, lo), _row(Z, lo),
                 _row(r, lo), A.ctypes.data, g.ctypes.data, c.ctypes.data, cond.ctypes.data,
-                float(feas_tol), _row(vmax, lo), _row(umax, lo), _row(vmin, lo),
+                float(feas_tol), _row(skip_hi, lo), _row(skip_lo, lo), _row(vmax, lo),
+                _row(umax, lo), _row(vmin, lo),
                 _row(umin, lo), _row(vhi, lo), _row(vlo, lo))
 
         n_threads = max(1, min(workers, F)) if pool is not None else 1

@@ -122,7 +122,7 @@ def make_figure4(panels: list[Fig4Panel], *, kappa: float, joints_deg, infeasibl
             ax.xaxis.set_major_locator(MaxNLocator(5))
             ax.label_outer()
             ax.set_title(f"{METRIC_LABEL[metric]}, {SCENARIO_LABEL[panel.scenario]}",
-                         fontsize=FONT)
+                         fontsize=FONT, y=1.0)  # a fixed place: no layout pass per draw
             _colorbar(fig, im, ax, f"{METRIC_LABEL[metric]} [{METRIC_UNIT[metric]}]",
                       fraction=0.08, pad=0.03)
     q = ", ".join(f"{d:g}°" for d in joints_deg)
@@ -292,7 +292,7 @@ def make_figure6(rows: dict, *, feasible_only: bool = False):
             ax.set_ylim(lo[1], hi[1])
             ax.set_aspect("equal")
             ax.tick_params(labelsize=FONT - 1)
-            ax.set_title(shape.title, fontsize=FONT)
+            ax.set_title(shape.title, fontsize=FONT, y=1.0)
             if shape.infeasible:
                 for spine in ax.spines.values():
                     spine.set_edgecolor("firebrick")
