@@ -95,7 +95,7 @@ def test_meets_matches_numpy(kernel, na):
 
 def _dense_face(fc, rows, A, g, c, count, rng):
     """The quadratic at ``count`` random points of each face sphere (F, count)."""
-    F, na, k = len(rows), fc.u0.shape[1], fc.Z.shape[2]
+    F, k = len(rows), fc.Z.shape[2]
     y = rng.normal(size=(F, count, k))
     y *= fc.r[rows, None, None] / np.linalg.norm(y, axis=2, keepdims=True)
     u = fc.u0[rows, None, :] + y @ np.swapaxes(fc.Z[rows], 1, 2)
