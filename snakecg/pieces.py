@@ -75,15 +75,23 @@ def all_states(model):
 # ------------------------------------------------------------------------------------------
 # one piece: affine maps and its conditions
 # ------------------------------------------------------------------------------------------
-def piece(prim, bounds, p, states):
+def piece(prim, bounds, p, states, kernel=None):
     """Affine maps ``x = X u + x0`` of a batch of (configuration ``p``, state) pairs and the
     piece's conditions ``a_k . u + b_k >= 0`` (normalized; unused slots ``0 . u + 1``).
 
     Returns a dict with ``lam``, ``w``, ``qdd``, ``a_obj`` as ``(X, x0)`` and ``cond``
     ``(P, m, na + 1)``, ``flip`` ``(P, m)`` (the state code a row moves to across that facet,
     -1 for an unused slot; each pair's conditions come first) and ``row`` ``(P, m)`` (which
-    row).
+    row). ``kernel``: the compiled path (:class:`snakecg.core.sphere.SphereKernel`), else
+    NumPy's.
     """
+    if kernel is not None:
+        got = kernel.pieces(p, states, bounds, prim["G"], prim["Bt"], prim["Q0"], prim["A0"],
+                            prim["Kq"], prim["Ka"])
+        if got is not None:
+            Lam, lam0, W, w0, Q, q0, Aa, a0, cond, flip, row = got
+            return dict(lam=(Lam, lam0), w=(W, w0), qdd=(Q, q0), a_obj=(Aa, a0), cond=cond,
+                        flip=flip, row=row, G=prim["G"][p], M=prim["M"][p])
     G, Bt = prim["G"][p], prim["Bt"][p]
     P, nc, na = Bt.shape
     ub = np.where(np.isfinite(bounds), bounds, 0.0)
@@ -195,7 +203,7 @@ def explore(model, prim, qa, states, kernel=None):
     while frontier.any() and rounds < 4 * S:
         rounds += 1
         p, s = np.nonzero(frontier)
-        pc = piece(prim, model.bounds, p, states[s])
+        pc = piece(prim, model.bounds, p, states[s], kernel)
         flip, row = pc["flip"], pc["row"]
         fcs = faces(pc["cond"], flip >= 0, na, kernel)
         built.append((p, s, pc, fcs))
@@ -221,7 +229,7 @@ def explore(model, prim, qa, states, kernel=None):
         visited |= new
     if frontier.any():  # the walk stopped early: the last ones found are pieces too
         p, s = np.nonzero(frontier)
-        pc = piece(prim, model.bounds, p, states[s])
+        pc = piece(prim, model.bounds, p, states[s], kernel)
         built.append((p, s, pc, faces(pc["cond"], pc["flip"] >= 0, na, kernel)))
     return _concat(built) + (rounds,)
 

@@ -166,7 +166,7 @@ class _Kernel:
 
     def __init__(self, sphere):
         self._sphere = sphere
-        self.cut, self.meets = sphere.cut, sphere.meets
+        self.cut, self.meets, self.pieces = sphere.cut, sphere.meets, sphere.pieces
 
     def candidates(self, pair, *args, **kwargs):
         return self._sphere.candidates(pair, *args, pool=pool(),

@@ -1,7 +1,10 @@
-"""The Python side of ``sphere.c``: the faces of the pieces and the KKT candidates on them.
+"""The Python side of ``sphere.c`` and ``pieces.c``: the exact bounded-wheel extremes' pieces,
+their faces and the KKT candidates on them.
 
-:class:`SphereKernel` binds the three functions of ``sphere.c`` in a compiled model library,
-the compiled path of :mod:`snakecg.sphere_kkt` (the exact bounded-wheel extremes):
+:class:`SphereKernel` binds the functions of ``sphere.c`` and ``pieces.c`` in a compiled model
+library, the compiled path of :mod:`snakecg.pieces` and :mod:`snakecg.sphere_kkt`:
+
+- :meth:`~SphereKernel.pieces`: each (configuration, state) pair's affine maps and conditions;
 
 - :meth:`~SphereKernel.cut`: the faces of ``|S|`` conditions held at equality that meet the
   unit sphere, each as the smaller sphere ``u = u0 + Z y, |y| = r``;
@@ -11,8 +14,8 @@ the compiled path of :mod:`snakecg.sphere_kkt` (the exact bounded-wheel extremes
   ``u^T A u + 2 g^T u + c`` over its stationary points, and the largest and smallest value over
   all of them.
 
-NumPy's functions of :mod:`snakecg.sphere_kkt` compute the same and stay the reference and the
-path of models without a C compiler.
+NumPy's functions of :mod:`snakecg.pieces` and :mod:`snakecg.sphere_kkt` compute the same and
+stay the reference and the path of models without a C compiler.
 """
 
 from __future__ import annotations
@@ -49,10 +52,14 @@ def _per_pair(A, g, c, cond):
 
 
 class SphereKernel:
-    """``core_sphere_cut``, ``core_sphere_meets`` and ``core_sphere_faces`` of one compiled
-    model library."""
+    """``core_pieces``, ``core_sphere_cut``, ``core_sphere_meets`` and ``core_sphere_faces``
+    of one compiled model library."""
 
     def __init__(self, lib: ctypes.CDLL, prefix: str):
+        fn = getattr(lib, f"{prefix}core_pieces")
+        fn.argtypes = [_I] * 5 + [_P] * 20
+        fn.restype = _I
+        self._pieces = fn
         fn = getattr(lib, f"{prefix}core_sphere_faces")
         fn.argtypes = [_I, _I, _I, _I] + [_P] * 8 + [ctypes.c_double] + [_P] * 8
         fn.restype = ctypes.c_int
@@ -65,6 +72,41 @@ class SphereKernel:
         fn.argtypes = [_I, _I, _I, _I] + [_P] * 6 + [ctypes.c_double, _P]
         fn.restype = ctypes.c_int
         self._meets = fn
+
+    def pieces(self, cfg, states, bounds, G, Bt, Q0, A0, Kq, Ka):
+        """The pairs' affine maps and conditions (:func:`snakecg.pieces.piece`): ``cfg``
+        (P,) indexes the per-configuration arrays ``G`` (n, nc, nc), ``Bt`` (n, nc, na),
+        ``Q0`` (n, ns, na), ``A0`` (n, 3, na), ``Kq`` (n, ns, nc), ``Ka`` (n, 3, nc);
+        ``states`` (P, nc) the row states. Returns ``Lam, lam0, W, w0, Q, q0, Aa, a0, cond,
+        flip, row`` (conditions up to the most any pair uses), or None where a pair's held
+        rows are singular (NumPy's path then decides)."""
+        cfg, states = _c(cfg, np.int64), _c(states, np.int8)
+        G, Bt, Q0, A0, Kq, Ka = (_c(x) for x in (G, Bt, Q0, A0, Kq, Ka))
+        bounds = _c(bounds)
+        n, nc, na = Bt.shape
+        ns = Q0.shape[1]
+        P = len(cfg)
+        if (G.shape != (n, nc, nc) or Q0.shape != (n, ns, na) or A0.shape != (n, 3, na)
+                or Kq.shape != (n, ns, nc) or Ka.shape != (n, 3, nc)
+                or states.shape != (P, nc) or bounds.shape != (nc,) or na > MAX_DIM
+                or nc > MAX_DIM or (P and (cfg.min() < 0 or cfg.max() >= n))):
+            raise ValueError("sphere kernel: inconsistent piece inputs")
+        mfull = 2 + 4 * int(np.sum(np.isfinite(bounds[1:])))
+        out = [np.empty((P, nc, na)), np.empty((P, nc)), np.empty((P, nc, na)),
+               np.empty((P, nc)), np.empty((P, ns, na)), np.empty((P, ns)),
+               np.empty((P, 3, na)), np.empty((P, 3)), np.empty((P, mfull, na + 1)),
+               np.empty((P, mfull), np.int64), np.empty((P, mfull), np.int64)]
+        m = self._pieces(P, na, nc, ns, mfull, cfg.ctypes.data, states.ctypes.data,
+                         bounds.ctypes.data, G.ctypes.data, Bt.ctypes.data, Q0.ctypes.data,
+                         A0.ctypes.data, Kq.ctypes.data, Ka.ctypes.data,
+                         *(a.ctypes.data for a in out))
+        if m == -1:
+            raise ValueError("sphere kernel: sizes above the compiled limits")
+        if m < -1:
+            return None
+        cond, flip, row = out[8][:, :m], out[9][:, :m], out[10][:, :m]
+        return (*out[:8], np.ascontiguousarray(cond), flip.astype(np.intp),
+                row.astype(np.intp))
 
     def cut(self, cond, used, s):
         """The faces of ``s`` conditions at equality (every combination of each pair's
