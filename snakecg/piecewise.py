@@ -50,7 +50,7 @@ from .core.sphere import MAX_DIM
 from .native import pool, threads
 from .pieces import all_states, explore, forms, primitives
 from .solver import HELD
-from .sphere_kkt import per_config, piece_extremes, quad, take_faces
+from .sphere_kkt import per_config, piece_extremes, quad
 
 __all__ = ["face_kernel", "wheel_extremes"]
 
@@ -114,17 +114,18 @@ def _chunk(model, qa, kernel):
             if sel.size == 0:
                 break
             ps = p[sel]
-            ts = t[ps]
+            active = np.zeros(len(p), bool)
+            active[sel] = True
+            tp = t[p]
             # the max of sign * (Omega - t D): only where it can exceed 0, the value at the
-            # current point
+            # current point (every pair's form, only the active pairs searched)
             sign = 1.0 if largest else -1.0
-            A = sign * (Ao[sel] - ts[:, None, None] * Ad[sel])
-            g = sign * (go[sel] - ts[:, None] * gd[sel])
-            c = sign * (co[sel] - ts * cd[sel])
-            vmax, umax, _, _ = piece_extremes(
-                cond[sel], take_faces(fcs, sel, len(p)), A, g, c, ps, n,
-                np.ones(len(sel), bool), floor=np.zeros(n), kernel=kernel)
-            vals, us = sign * vmax, umax
+            A = sign * (Ao - tp[:, None, None] * Ad)
+            g = sign * (go - tp[:, None] * gd)
+            c = sign * (co - tp * cd)
+            vmax, umax, _, _ = piece_extremes(cond, fcs, A, g, c, p, n, every,
+                                              floor=np.zeros(n), kernel=kernel, active=active)
+            vals, us = sign * vmax[sel], umax[sel]
             h, u = per_config(n, ps, vals, us, np.ones(len(sel), bool), largest)
             # the ratio at the maximiser (minimiser) of Omega - t D, from its own piece
             sv = vals if largest else -vals

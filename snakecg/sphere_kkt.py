@@ -30,7 +30,6 @@ __all__ = [
     "piece_extremes",
     "quad",
     "quadratic_candidates",
-    "take_faces",
 ]
 
 #: Feasibility tolerance of a candidate point (normalized conditions).
@@ -112,18 +111,6 @@ def faces(cond, used, na, kernel=None):
         sub = cond[pi[:, None], slots]
         u0, Z, r, valid = _cut(sub[:, :, :na], sub[:, :, na], na)
         out.append(Faces(pi[valid], slots[valid], u0[valid], Z[valid], r[valid]))
-    return out
-
-
-def take_faces(fcs, sel, P):
-    """The faces of the pairs ``sel`` (indices into ``P`` pairs), renumbered ``0..len(sel)``."""
-    pos = np.full(P, -1)
-    pos[sel] = np.arange(len(sel))
-    out = []
-    for fc in fcs:
-        k = pos[fc.pair]
-        keep = k >= 0
-        out.append(Faces(k[keep], fc.slots[keep], fc.u0[keep], fc.Z[keep], fc.r[keep]))
     return out
 
 
@@ -292,7 +279,7 @@ def _evaluate(cond, fc, rows, A, g, c, out, both=True, kernel=None, skip=None):
     return v.max(axis=1), v.min(axis=1)
 
 
-def piece_extremes(cond, fcs, A, g, c, p, n, kept, floor=None, kernel=None):
+def piece_extremes(cond, fcs, A, g, c, p, n, kept, floor=None, kernel=None, active=None):
     """Max and min of ``u^T A u + 2 g^T u + c`` on ``sphere ∩ piece`` for every pair.
 
     The whole sphere is searched first: its stationary values bound the piece's quadratic.
@@ -306,20 +293,21 @@ def piece_extremes(cond, fcs, A, g, c, p, n, kept, floor=None, kernel=None):
     configuration): pairs and faces whose bound stays below it are skipped, the whole sphere
     too where the bound ``c + 2 |g| + lambda_max(A)`` does (vmin is then not computed).
     ``kernel``: the compiled candidates (:class:`snakecg.core.sphere.SphereKernel`) or None.
+    ``active`` (P,) bool: search only these pairs (the others come back infinite).
     """
     P, na = A.shape[0], A.shape[1]
     both = floor is None
     out = (np.full(P, -np.inf), np.zeros((P, na)), np.full(P, np.inf), np.zeros((P, na)))
     up_max, lo_min = np.full(P, -np.inf), np.full(P, np.inf)
-    rows = np.arange(P)
+    rows = np.arange(P) if active is None else np.flatnonzero(active)
     skip = None
     if not both and kernel is not None:  # the C bounds the quadratic on the sphere itself
-        skip = (floor[p], -np.inf)
+        skip = (floor[p[rows]], -np.inf)
     elif not both:  # |u| = 1: u^T A u <= lambda_max(A), 2 g^T u <= 2 |g|
-        lin = 2 * np.linalg.norm(g, axis=1)
-        lmax = np.linalg.eigvalsh(A)[:, -1]
-        hi = c + lin + lmax
-        rows = np.flatnonzero(hi > floor[p] - 1e-12 * (np.abs(c) + lin + np.abs(lmax)))
+        lin = 2 * np.linalg.norm(g[rows], axis=1)
+        lmax = np.linalg.eigvalsh(A[rows])[:, -1]
+        hi = c[rows] + lin + lmax
+        rows = rows[hi > floor[p[rows]] - 1e-12 * (np.abs(c[rows]) + lin + np.abs(lmax))]
     if rows.size:
         # the extremes over the whole sphere bound the piece's quadratic
         up_max[rows], lo_min[rows] = _evaluate(cond, fcs[0], rows, A, g, c, out, both, kernel,
