@@ -25,9 +25,11 @@
 
 /* Add prefix to internal symbols */
 #define casadi_f0 CASADI_PREFIX(f0)
+#define casadi_f1 CASADI_PREFIX(f1)
 #define casadi_s0 CASADI_PREFIX(s0)
 #define casadi_s1 CASADI_PREFIX(s1)
 #define casadi_s2 CASADI_PREFIX(s2)
+#define casadi_s3 CASADI_PREFIX(s3)
 
 /* Symbol visibility in DLLs */
 #ifndef CASADI_SYMBOL_EXPORT
@@ -56,6 +58,7 @@ CASADI_SYMBOL_EXPORT int snakecg_na2_mass_matrix_casadi_real_size(void) { return
 static const casadi_int casadi_s0[3] = {5, 1, 1};
 static const casadi_int casadi_s1[3] = {25, 1, 1};
 static const casadi_int casadi_s2[3] = {5, 5, 1};
+static const casadi_int casadi_s3[3] = {3, 1, 1};
 
 /* snakecg_na2_mass_matrix:(q[5],K[25])->(M[5x5]) */
 static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
@@ -228,6 +231,178 @@ CASADI_SYMBOL_EXPORT int snakecg_na2_mass_matrix_work_bytes(casadi_int *sz_arg, 
   return 0;
 }
 
+/* snakecg_na2_mass_matrix_sincos:(q[5],K[25],cos_q[3],sin_q[3])->(M[5x5]) */
+static int casadi_f1(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15;
+  a00=arg[1]? arg[1][12] : 0;
+  if (res[0]!=0) res[0][0]=a00;
+  a01=0.;
+  if (res[0]!=0) res[0][1]=a01;
+  a02=arg[1]? arg[1][15] : 0;
+  a03=arg[2]? arg[2][0] : 0;
+  a04=arg[2]? arg[2][1] : 0;
+  a05=(a03*a04);
+  a06=arg[3]? arg[3][0] : 0;
+  a07=arg[3]? arg[3][1] : 0;
+  a08=(a06*a07);
+  a05=(a05-a08);
+  a08=arg[3]? arg[3][2] : 0;
+  a09=(a05*a08);
+  a10=arg[2]? arg[2][2] : 0;
+  a07=(a03*a07);
+  a04=(a04*a06);
+  a07=(a07+a04);
+  a04=(a10*a07);
+  a09=(a09+a04);
+  a09=(a02*a09);
+  a04=arg[1]? arg[1][14] : 0;
+  a11=(a04*a07);
+  a11=(a09+a11);
+  a12=arg[1]? arg[1][13] : 0;
+  a13=(a12*a06);
+  a13=(a11+a13);
+  a13=(-a13);
+  if (res[0]!=0) res[0][2]=a13;
+  a14=(-a11);
+  if (res[0]!=0) res[0][3]=a14;
+  a15=(-a09);
+  if (res[0]!=0) res[0][4]=a15;
+  if (res[0]!=0) res[0][5]=a01;
+  if (res[0]!=0) res[0][6]=a00;
+  a10=(a05*a10);
+  a08=(a07*a08);
+  a10=(a10-a08);
+  a02=(a02*a10);
+  a04=(a04*a05);
+  a04=(a02+a04);
+  a12=(a12*a03);
+  a12=(a04+a12);
+  if (res[0]!=0) res[0][7]=a12;
+  if (res[0]!=0) res[0][8]=a04;
+  if (res[0]!=0) res[0][9]=a02;
+  if (res[0]!=0) res[0][10]=a13;
+  if (res[0]!=0) res[0][11]=a12;
+  a12=arg[1]? arg[1][4] : 0;
+  a05=(a05*a12);
+  a05=(a02*a05);
+  a07=(a07*a12);
+  a07=(a09*a07);
+  a05=(a05+a07);
+  a07=arg[1]? arg[1][24] : 0;
+  a12=(a05+a07);
+  a05=(a12+a05);
+  a13=arg[1]? arg[1][23] : 0;
+  a05=(a05+a13);
+  a13=arg[1]? arg[1][3] : 0;
+  a10=arg[1]? arg[1][9] : 0;
+  a13=(a13-a10);
+  a03=(a03*a13);
+  a10=(a04*a03);
+  a13=(a13*a06);
+  a11=(a11*a13);
+  a10=(a10+a11);
+  a11=(a05+a10);
+  a10=(a11+a10);
+  a06=arg[1]? arg[1][22] : 0;
+  a10=(a10+a06);
+  if (res[0]!=0) res[0][12]=a10;
+  if (res[0]!=0) res[0][13]=a11;
+  a03=(a02*a03);
+  a09=(a09*a13);
+  a03=(a03+a09);
+  a03=(a12+a03);
+  if (res[0]!=0) res[0][14]=a03;
+  if (res[0]!=0) res[0][15]=a14;
+  if (res[0]!=0) res[0][16]=a04;
+  if (res[0]!=0) res[0][17]=a11;
+  if (res[0]!=0) res[0][18]=a05;
+  if (res[0]!=0) res[0][19]=a12;
+  if (res[0]!=0) res[0][20]=a15;
+  if (res[0]!=0) res[0][21]=a02;
+  if (res[0]!=0) res[0][22]=a03;
+  if (res[0]!=0) res[0][23]=a12;
+  if (res[0]!=0) res[0][24]=a07;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int snakecg_na2_mass_matrix_sincos(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f1(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int snakecg_na2_mass_matrix_sincos_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void snakecg_na2_mass_matrix_sincos_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void snakecg_na2_mass_matrix_sincos_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void snakecg_na2_mass_matrix_sincos_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int snakecg_na2_mass_matrix_sincos_n_in(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_int snakecg_na2_mass_matrix_sincos_n_out(void) { return 1;}
+
+CASADI_SYMBOL_EXPORT casadi_real snakecg_na2_mass_matrix_sincos_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* snakecg_na2_mass_matrix_sincos_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "q";
+    case 1: return "K";
+    case 2: return "cos_q";
+    case 3: return "sin_q";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* snakecg_na2_mass_matrix_sincos_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "M";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* snakecg_na2_mass_matrix_sincos_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s1;
+    case 2: return casadi_s3;
+    case 3: return casadi_s3;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* snakecg_na2_mass_matrix_sincos_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s2;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int snakecg_na2_mass_matrix_sincos_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 4;
+  if (sz_res) *sz_res = 1;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int snakecg_na2_mass_matrix_sincos_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 4*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 1*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
 
 
 /* ------------------------------------------------------------------------------------------
@@ -239,22 +414,87 @@ CASADI_SYMBOL_EXPORT int snakecg_na2_mass_matrix_work_bytes(casadi_int *sz_arg, 
  * ---------------------------------------------------------------------------------------- */
 #include <stdlib.h>
 
+/* Cosines and sines of a block of angles in one loop without calls or branches, which the
+ * compiler turns into vector instructions: the sines and cosines of all the samples' angles
+ * of a block are computed at once, then the function without its own calls runs per sample.
+ * Reduction by pi/2 in three parts (Cody and Waite, exact products for |x| < 2^20 pi/2) and
+ * fdlibm's polynomials of sin and cos on [-pi/4, pi/4] (errors below one unit in the last
+ * place there); the quadrant turns the pair by n pi/2 with factors 0, +1, -1 (exact). An
+ * angle with |x| above SNAKECG_SINCOS_MAX, or not a number, is left to the C library. */
+#define SNAKECG_SINCOS_BLOCK 64
+#define SNAKECG_SINCOS_MAX 8.0e5
+
+#if defined(__GNUC__) && !defined(__clang__) && __GNUC__ >= 6 && defined(__x86_64__) \
+    && defined(__linux__)
+/* a second copy for processors with AVX2 (four angles per instruction), chosen at load time */
+__attribute__((target_clones("avx2", "default")))
+#endif
+static void snakecg_sincos_block(const casadi_real* restrict x, casadi_real* restrict c,
+                                 casadi_real* restrict s) {
+  const casadi_real round = 6755399441055744.0; /* 1.5 * 2^52: adding it rounds to integers */
+  const casadi_real two_over_pi = 6.36619772367581382433e-01;
+  const casadi_real pio2_1 = 1.57079632673412561417e+00; /* pi/2: first 33 bits */
+  const casadi_real pio2_2 = 6.07710050630396597660e-11; /* next 33 bits */
+  const casadi_real pio2_3 = 2.02226624871116645580e-21; /* the rest */
+  const casadi_real S1 = -1.66666666666666324348e-01, S2 = 8.33333333332248946124e-03,
+      S3 = -1.98412698298579493134e-04, S4 = 2.75573137070700676789e-06,
+      S5 = -2.50507602534068634195e-08, S6 = 1.58969099521155010221e-10;
+  const casadi_real C1 = 4.16666666666666019037e-02, C2 = -1.38888888888741095749e-03,
+      C3 = 2.48015872894767294178e-05, C4 = -2.75573143513906633035e-07,
+      C5 = 2.08757232129817482790e-09, C6 = -1.13596475577881948265e-11;
+  int i;
+  for (i = 0; i < SNAKECG_SINCOS_BLOCK; ++i) {
+    casadi_real n = (x[i] * two_over_pi + round) - round;  /* nearest multiple of pi/2 */
+    casadi_real m = n - 4.0 * ((0.25 * n + round) - round); /* n mod 4 in -2..2 */
+    casadi_real am = fabs(m);
+    casadi_real cq = 1.0 - am, sq = m * (2.0 - am);          /* cos, sin of n pi/2 */
+    casadi_real y = ((x[i] - n * pio2_1) - n * pio2_2) - n * pio2_3;
+    casadi_real z = y * y;
+    casadi_real sy = y + z * y * (S1 + z * (S2 + z * (S3 + z * (S4 + z * (S5 + z * S6)))));
+    casadi_real hz = 0.5 * z, w = 1.0 - hz;
+    casadi_real cy = w + (((1.0 - w) - hz)
+                          + z * z * (C1 + z * (C2 + z * (C3 + z * (C4 + z * (C5 + z * C6))))));
+    c[i] = cy * cq - sy * sq;
+    s[i] = sy * cq + cy * sq;
+  }
+  for (i = 0; i < SNAKECG_SINCOS_BLOCK; ++i) {
+    if (!(fabs(x[i]) <= SNAKECG_SINCOS_MAX)) {
+      c[i] = cos(x[i]);
+      s[i] = sin(x[i]);
+    }
+  }
+}
+
 CASADI_SYMBOL_EXPORT int snakecg_na2_batch_mass_matrix(casadi_int n, const casadi_real** arg,
     const casadi_int* stride, casadi_real** res) {
-  const casadi_real* a[2];
+  /* sines and cosines of q[2..4] by blocks of samples, then snakecg_na2_mass_matrix_sincos per sample */
+  const casadi_int na = 3, per = SNAKECG_SINCOS_BLOCK / 3;
+  casadi_real ang[SNAKECG_SINCOS_BLOCK], ca[SNAKECG_SINCOS_BLOCK], sa[SNAKECG_SINCOS_BLOCK];
+  const casadi_real* a[4];
   casadi_real* r[1];
   casadi_int* iw = (casadi_int*) malloc(sizeof(casadi_int) * 1);
   casadi_real* w = (casadi_real*) malloc(sizeof(casadi_real) * 17);
-  casadi_int i, k;
+  casadi_int i, i0, m, k;
   int status = 0;
   if (!iw || !w) { free(iw); free(w); return -1; }
-  for (k = 0; k < 2; ++k) a[k] = 0;
+  for (k = 0; k < 4; ++k) a[k] = 0;
   for (k = 0; k < 1; ++k) r[k] = 0;
-  for (i = 0; i < n; ++i) {
-    a[0] = arg[0] + i * stride[0];
-    a[1] = arg[1] + i * stride[1];
-    r[0] = res[0] + i * 25;
-    if (snakecg_na2_mass_matrix(a, r, iw, w, 0)) { status = (int) (i + 1); break; }
+  for (k = 0; k < SNAKECG_SINCOS_BLOCK; ++k) ang[k] = 0;
+  for (i0 = 0; i0 < n && status == 0; i0 += per) {
+    m = n - i0 < per ? n - i0 : per;
+    for (i = 0; i < m; ++i) {
+      const casadi_real* q = arg[0] + (i0 + i) * stride[0] + 2;
+      for (k = 0; k < na; ++k) ang[i * na + k] = arg[0] ? q[k] : 0;
+    }
+    snakecg_sincos_block(ang, ca, sa);
+    for (i = 0; i < m; ++i) {
+      a[0] = arg[0] + (i0 + i) * stride[0];
+      a[1] = arg[1] + (i0 + i) * stride[1];
+      a[2] = ca + i * na;
+      a[3] = sa + i * na;
+      r[0] = res[0] + (i0 + i) * 25;
+      if (snakecg_na2_mass_matrix_sincos(a, r, iw, w, 0)) { status = (int) (i0 + i + 1); break; }
+    }
   }
   free(iw);
   free(w);
