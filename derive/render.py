@@ -233,7 +233,6 @@ def _sincos_context(g, f_public) -> dict:
     names = [f_public.name_in(k) for k in range(f_public.n_in())]
     n = g.size1_in(g.n_in() - 1)
     return {"symbol": g.name(), "q": names.index("q"), "offset": 2, "n": n,
-            "block": max(64, -(-n // 8) * 8),
             "sz_arg": g.sz_arg(), "sz_res": g.sz_res(), "sz_iw": g.sz_iw(), "sz_w": g.sz_w()}
 
 

@@ -415,13 +415,14 @@ CASADI_SYMBOL_EXPORT int snakecg_na2_mass_matrix_sincos_work_bytes(casadi_int *s
 #include <stdlib.h>
 
 /* Cosines and sines of a block of angles in one loop without calls or branches, which the
- * compiler turns into vector instructions: the sines and cosines of all the samples' angles
- * of a block are computed at once, then the function without its own calls runs per sample.
+ * compiler turns into vector instructions (16 angles per call): the sines and cosines of
+ * the angles of 16 samples are computed at once, then the function without its own calls
+ * runs per sample.
  * Reduction by pi/2 in three parts (Cody and Waite, exact products for |x| < 2^20 pi/2) and
  * fdlibm's polynomials of sin and cos on [-pi/4, pi/4] (errors below one unit in the last
  * place there); the quadrant turns the pair by n pi/2 with factors 0, +1, -1 (exact). An
  * angle with |x| above SNAKECG_SINCOS_MAX, or not a number, is left to the C library. */
-#define SNAKECG_SINCOS_BLOCK 64
+#define SNAKECG_SINCOS_BLOCK 16
 #define SNAKECG_SINCOS_MAX 8.0e5
 
 #if defined(__GNUC__) && !defined(__clang__) && __GNUC__ >= 6 && defined(__x86_64__) \
@@ -467,33 +468,39 @@ static void snakecg_sincos_block(const casadi_real* restrict x, casadi_real* res
 
 CASADI_SYMBOL_EXPORT int snakecg_na2_batch_mass_matrix(casadi_int n, const casadi_real** arg,
     const casadi_int* stride, casadi_real** res) {
-  /* sines and cosines of q[2..4] by blocks of samples, then snakecg_na2_mass_matrix_sincos per sample */
-  const casadi_int na = 3, per = SNAKECG_SINCOS_BLOCK / 3;
-  casadi_real ang[SNAKECG_SINCOS_BLOCK], ca[SNAKECG_SINCOS_BLOCK], sa[SNAKECG_SINCOS_BLOCK];
   const casadi_real* a[4];
   casadi_real* r[1];
   casadi_int* iw = (casadi_int*) malloc(sizeof(casadi_int) * 1);
   casadi_real* w = (casadi_real*) malloc(sizeof(casadi_real) * 17);
-  casadi_int i, i0, m, k;
+  casadi_int i, k;
   int status = 0;
   if (!iw || !w) { free(iw); free(w); return -1; }
   for (k = 0; k < 4; ++k) a[k] = 0;
   for (k = 0; k < 1; ++k) r[k] = 0;
-  for (k = 0; k < SNAKECG_SINCOS_BLOCK; ++k) ang[k] = 0;
-  for (i0 = 0; i0 < n && status == 0; i0 += per) {
-    m = n - i0 < per ? n - i0 : per;
-    for (i = 0; i < m; ++i) {
-      const casadi_real* q = arg[0] + (i0 + i) * stride[0] + 2;
-      for (k = 0; k < na; ++k) ang[i * na + k] = arg[0] ? q[k] : 0;
-    }
-    snakecg_sincos_block(ang, ca, sa);
-    for (i = 0; i < m; ++i) {
-      a[0] = arg[0] + (i0 + i) * stride[0];
-      a[1] = arg[1] + (i0 + i) * stride[1];
-      a[2] = ca + i * na;
-      a[3] = sa + i * na;
-      r[0] = res[0] + (i0 + i) * 25;
-      if (snakecg_na2_mass_matrix_sincos(a, r, iw, w, 0)) { status = (int) (i0 + i + 1); break; }
+  {
+    /* cos and sin of q[2..4] of 16 samples at a time, then snakecg_na2_mass_matrix_sincos
+     * per sample (a batch of one too, so that a batch equals its samples one by one) */
+    const casadi_int na = 3, per = 16;
+    casadi_real ang[48], ca[48], sa[48];
+    casadi_int i0, m;
+    for (k = 0; k < 48; ++k) ang[k] = 0;
+    for (i0 = 0; i0 < n && status == 0; i0 += per) {
+      m = n - i0 < per ? n - i0 : per;
+      for (i = 0; i < m; ++i) {
+        const casadi_real* q = arg[0] + (i0 + i) * stride[0] + 2;
+        for (k = 0; k < na; ++k) ang[i * na + k] = arg[0] ? q[k] : 0;
+      }
+      for (k = 0; k < m * na; k += SNAKECG_SINCOS_BLOCK) {
+        snakecg_sincos_block(ang + k, ca + k, sa + k);
+      }
+      for (i = 0; i < m; ++i) {
+        a[0] = arg[0] + (i0 + i) * stride[0];
+        a[1] = arg[1] + (i0 + i) * stride[1];
+        a[2] = ca + i * na;
+        a[3] = sa + i * na;
+        r[0] = res[0] + (i0 + i) * 25;
+        if (snakecg_na2_mass_matrix_sincos(a, r, iw, w, 0)) { status = (int) (i0 + i + 1); break; }
+      }
     }
   }
   free(iw);
