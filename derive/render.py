@@ -22,6 +22,7 @@ import jinja2
 from . import coupled
 from .catalog import function_names
 from .build import build_function, build_sincos_function, operation_count, signature
+from .sample_c import sample_function_c
 from .coupled import COUPLED_FUNCTIONS, coupled_functions
 from .model import derive_model
 from .printer import function_body
@@ -229,18 +230,20 @@ SINCOS_BATCHED = ("mass_matrix",)
 
 
 def _sincos_context(g, f_public) -> dict:
-    """What the batch template needs of a ``_sincos`` variant ``g`` of ``f_public``."""
+    """What the batch template needs of a ``_sincos`` variant ``g`` of ``f_public``: its C
+    (:func:`.sample_c.sample_function_c`, a static function of the file) and where the
+    angles are."""
     names = [f_public.name_in(k) for k in range(f_public.n_in())]
     n = g.size1_in(g.n_in() - 1)
     return {"symbol": g.name(), "q": names.index("q"), "offset": 2, "n": n,
-            "sz_arg": g.sz_arg(), "sz_res": g.sz_res(), "sz_iw": g.sz_iw(), "sz_w": g.sz_w()}
+            "code": sample_function_c(g, g.name())}
 
 
 def render_c(spec: ModelSpec, functions, docs=None, sincos=None
              ) -> tuple[dict[str, str], list[dict]]:
     """CasADi's C, one translation unit per function (compiled in parallel), each with its
     batched driver; returns ``({file name: text}, signatures)``. ``sincos`` maps a function's
-    name to its ``_sincos`` variant, emitted in the same file and called by its driver."""
+    name to its ``_sincos`` variant, printed in the same file and called by its driver."""
     import casadi as ca
 
     versions = tool_versions()
@@ -253,8 +256,6 @@ def render_c(spec: ModelSpec, functions, docs=None, sincos=None
         cg = ca.CodeGenerator(f.name(), {"with_header": False})
         cg.add(f)
         variant = sincos.get(sig["name"])
-        if variant is not None:
-            cg.add(variant)
         header = (
             "/* GENERATED FILE - DO NOT EDIT. C code emitted by CasADi for "
             f"{sig['name']}() of\n * generated/{model_dirname(spec.n_joints)}/ (see its model.py), "

@@ -25,11 +25,9 @@
 
 /* Add prefix to internal symbols */
 #define casadi_f0 CASADI_PREFIX(f0)
-#define casadi_f1 CASADI_PREFIX(f1)
 #define casadi_s0 CASADI_PREFIX(s0)
 #define casadi_s1 CASADI_PREFIX(s1)
 #define casadi_s2 CASADI_PREFIX(s2)
-#define casadi_s3 CASADI_PREFIX(s3)
 
 /* Symbol visibility in DLLs */
 #ifndef CASADI_SYMBOL_EXPORT
@@ -58,7 +56,6 @@ CASADI_SYMBOL_EXPORT int snakecg_na1_mass_matrix_casadi_real_size(void) { return
 static const casadi_int casadi_s0[3] = {4, 1, 1};
 static const casadi_int casadi_s1[3] = {16, 1, 1};
 static const casadi_int casadi_s2[3] = {4, 4, 1};
-static const casadi_int casadi_s3[3] = {2, 1, 1};
 
 /* snakecg_na1_mass_matrix:(q[4],K[16])->(M[4x4]) */
 static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
@@ -189,137 +186,6 @@ CASADI_SYMBOL_EXPORT int snakecg_na1_mass_matrix_work_bytes(casadi_int *sz_arg, 
   return 0;
 }
 
-/* snakecg_na1_mass_matrix_sincos:(q[4],K[16],cos_q[2],sin_q[2])->(M[4x4]) */
-static int casadi_f1(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
-  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10;
-  a00=arg[1]? arg[1][8] : 0;
-  if (res[0]!=0) res[0][0]=a00;
-  a01=0.;
-  if (res[0]!=0) res[0][1]=a01;
-  a02=arg[1]? arg[1][10] : 0;
-  a03=arg[2]? arg[2][0] : 0;
-  a04=arg[3]? arg[3][1] : 0;
-  a05=(a03*a04);
-  a06=arg[2]? arg[2][1] : 0;
-  a07=arg[3]? arg[3][0] : 0;
-  a08=(a06*a07);
-  a05=(a05+a08);
-  a08=(a02*a05);
-  a09=arg[1]? arg[1][9] : 0;
-  a10=(a09*a07);
-  a10=(a08+a10);
-  a10=(-a10);
-  if (res[0]!=0) res[0][2]=a10;
-  a08=(-a08);
-  if (res[0]!=0) res[0][3]=a08;
-  if (res[0]!=0) res[0][4]=a01;
-  if (res[0]!=0) res[0][5]=a00;
-  a06=(a03*a06);
-  a04=(a07*a04);
-  a06=(a06-a04);
-  a02=(a02*a06);
-  a09=(a09*a03);
-  a09=(a02+a09);
-  if (res[0]!=0) res[0][6]=a09;
-  if (res[0]!=0) res[0][7]=a02;
-  if (res[0]!=0) res[0][8]=a10;
-  if (res[0]!=0) res[0][9]=a09;
-  a06=(a06*a03);
-  a05=(a05*a07);
-  a06=(a06+a05);
-  a05=arg[1]? arg[1][12] : 0;
-  a06=(a06*a05);
-  a05=arg[1]? arg[1][14] : 0;
-  a05=(a06+a05);
-  a07=arg[1]? arg[1][15] : 0;
-  a06=(a06+a07);
-  a05=(a05+a06);
-  if (res[0]!=0) res[0][10]=a05;
-  if (res[0]!=0) res[0][11]=a06;
-  if (res[0]!=0) res[0][12]=a08;
-  if (res[0]!=0) res[0][13]=a02;
-  if (res[0]!=0) res[0][14]=a06;
-  if (res[0]!=0) res[0][15]=a07;
-  return 0;
-}
-
-CASADI_SYMBOL_EXPORT int snakecg_na1_mass_matrix_sincos(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f1(arg, res, iw, w, mem);
-}
-
-CASADI_SYMBOL_EXPORT int snakecg_na1_mass_matrix_sincos_checkout(void) {
-  return 0;
-}
-
-CASADI_SYMBOL_EXPORT void snakecg_na1_mass_matrix_sincos_release(int mem) {
-}
-
-CASADI_SYMBOL_EXPORT void snakecg_na1_mass_matrix_sincos_incref(void) {
-}
-
-CASADI_SYMBOL_EXPORT void snakecg_na1_mass_matrix_sincos_decref(void) {
-}
-
-CASADI_SYMBOL_EXPORT casadi_int snakecg_na1_mass_matrix_sincos_n_in(void) { return 4;}
-
-CASADI_SYMBOL_EXPORT casadi_int snakecg_na1_mass_matrix_sincos_n_out(void) { return 1;}
-
-CASADI_SYMBOL_EXPORT casadi_real snakecg_na1_mass_matrix_sincos_default_in(casadi_int i) {
-  switch (i) {
-    default: return 0;
-  }
-}
-
-CASADI_SYMBOL_EXPORT const char* snakecg_na1_mass_matrix_sincos_name_in(casadi_int i) {
-  switch (i) {
-    case 0: return "q";
-    case 1: return "K";
-    case 2: return "cos_q";
-    case 3: return "sin_q";
-    default: return 0;
-  }
-}
-
-CASADI_SYMBOL_EXPORT const char* snakecg_na1_mass_matrix_sincos_name_out(casadi_int i) {
-  switch (i) {
-    case 0: return "M";
-    default: return 0;
-  }
-}
-
-CASADI_SYMBOL_EXPORT const casadi_int* snakecg_na1_mass_matrix_sincos_sparsity_in(casadi_int i) {
-  switch (i) {
-    case 0: return casadi_s0;
-    case 1: return casadi_s1;
-    case 2: return casadi_s3;
-    case 3: return casadi_s3;
-    default: return 0;
-  }
-}
-
-CASADI_SYMBOL_EXPORT const casadi_int* snakecg_na1_mass_matrix_sincos_sparsity_out(casadi_int i) {
-  switch (i) {
-    case 0: return casadi_s2;
-    default: return 0;
-  }
-}
-
-CASADI_SYMBOL_EXPORT int snakecg_na1_mass_matrix_sincos_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
-  if (sz_arg) *sz_arg = 4;
-  if (sz_res) *sz_res = 1;
-  if (sz_iw) *sz_iw = 0;
-  if (sz_w) *sz_w = 0;
-  return 0;
-}
-
-CASADI_SYMBOL_EXPORT int snakecg_na1_mass_matrix_sincos_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
-  if (sz_arg) *sz_arg = 4*sizeof(const casadi_real*);
-  if (sz_res) *sz_res = 1*sizeof(casadi_real*);
-  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
-  if (sz_w) *sz_w = 0*sizeof(casadi_real);
-  return 0;
-}
-
 
 
 /* ------------------------------------------------------------------------------------------
@@ -383,41 +249,104 @@ static void snakecg_sincos_block(const casadi_real* restrict x, casadi_real* res
   }
 }
 
+/* snakecg_na1_mass_matrix_sincos: 48 CasADi instructions, printed one per line */
+static void snakecg_na1_mass_matrix_sincos(
+    const casadi_real* restrict arg0,
+    const casadi_real* restrict arg1,
+    const casadi_real* restrict arg2,
+    const casadi_real* restrict arg3,
+    casadi_real* restrict res0) {
+  casadi_real w0, w1, w2, w3, w4, w5, w6, w7, w8, w9;
+  casadi_real w10;
+  w0 = arg1[8];
+  res0[0] = w0;
+  w1 = 0.0;
+  res0[1] = w1;
+  w2 = arg1[10];
+  w3 = arg2[0];
+  w4 = arg3[1];
+  w5 = w3 * w4;
+  w6 = arg2[1];
+  w7 = arg3[0];
+  w8 = w6 * w7;
+  w5 = w5 + w8;
+  w8 = w2 * w5;
+  w9 = arg1[9];
+  w10 = w9 * w7;
+  w10 = w8 + w10;
+  w10 = -w10;
+  res0[2] = w10;
+  w8 = -w8;
+  res0[3] = w8;
+  res0[4] = w1;
+  res0[5] = w0;
+  w6 = w3 * w6;
+  w4 = w7 * w4;
+  w6 = w6 - w4;
+  w2 = w2 * w6;
+  w9 = w9 * w3;
+  w9 = w2 + w9;
+  res0[6] = w9;
+  res0[7] = w2;
+  res0[8] = w10;
+  res0[9] = w9;
+  w6 = w6 * w3;
+  w5 = w5 * w7;
+  w6 = w6 + w5;
+  w5 = arg1[12];
+  w6 = w6 * w5;
+  w5 = arg1[14];
+  w5 = w6 + w5;
+  w7 = arg1[15];
+  w6 = w6 + w7;
+  w5 = w5 + w6;
+  res0[10] = w5;
+  res0[11] = w6;
+  res0[12] = w8;
+  res0[13] = w2;
+  res0[14] = w6;
+  res0[15] = w7;
+}
+
+
 CASADI_SYMBOL_EXPORT int snakecg_na1_batch_mass_matrix(casadi_int n, const casadi_real** arg,
     const casadi_int* stride, casadi_real** res) {
-  const casadi_real* a[4];
+  const casadi_real* a[2];
   casadi_real* r[1];
   casadi_int* iw = (casadi_int*) malloc(sizeof(casadi_int) * 1);
   casadi_real* w = (casadi_real*) malloc(sizeof(casadi_real) * 12);
   casadi_int i, k;
   int status = 0;
   if (!iw || !w) { free(iw); free(w); return -1; }
-  for (k = 0; k < 4; ++k) a[k] = 0;
+  for (k = 0; k < 2; ++k) a[k] = 0;
   for (k = 0; k < 1; ++k) r[k] = 0;
-  {
+  if (arg[0] && arg[1] && res[0]) {
     /* cos and sin of q[2..3] of 16 samples at a time, then snakecg_na1_mass_matrix_sincos
      * per sample (a batch of one too, so that a batch equals its samples one by one) */
     const casadi_int na = 2, per = 16;
     casadi_real ang[32], ca[32], sa[32];
     casadi_int i0, m;
     for (k = 0; k < 32; ++k) ang[k] = 0;
-    for (i0 = 0; i0 < n && status == 0; i0 += per) {
+    for (i0 = 0; i0 < n; i0 += per) {
       m = n - i0 < per ? n - i0 : per;
       for (i = 0; i < m; ++i) {
         const casadi_real* q = arg[0] + (i0 + i) * stride[0] + 2;
-        for (k = 0; k < na; ++k) ang[i * na + k] = arg[0] ? q[k] : 0;
+        for (k = 0; k < na; ++k) ang[i * na + k] = q[k];
       }
       for (k = 0; k < m * na; k += SNAKECG_SINCOS_BLOCK) {
         snakecg_sincos_block(ang + k, ca + k, sa + k);
       }
       for (i = 0; i < m; ++i) {
-        a[0] = arg[0] + (i0 + i) * stride[0];
-        a[1] = arg[1] + (i0 + i) * stride[1];
-        a[2] = ca + i * na;
-        a[3] = sa + i * na;
-        r[0] = res[0] + (i0 + i) * 16;
-        if (snakecg_na1_mass_matrix_sincos(a, r, iw, w, 0)) { status = (int) (i0 + i + 1); break; }
+        snakecg_na1_mass_matrix_sincos(arg[0] + (i0 + i) * stride[0], arg[1] + (i0 + i) * stride[1], ca + i * na, sa + i * na, res[0] + (i0 + i) * 16);
       }
+    }
+  } else {
+    /* a null input or output (CasADi's convention: zeros in, nothing out): per sample */
+    for (i = 0; i < n; ++i) {
+      a[0] = arg[0] + i * stride[0];
+      a[1] = arg[1] + i * stride[1];
+      r[0] = res[0] + i * 16;
+      if (snakecg_na1_mass_matrix(a, r, iw, w, 0)) { status = (int) (i + 1); break; }
     }
   }
   free(iw);

@@ -25,11 +25,9 @@
 
 /* Add prefix to internal symbols */
 #define casadi_f0 CASADI_PREFIX(f0)
-#define casadi_f1 CASADI_PREFIX(f1)
 #define casadi_s0 CASADI_PREFIX(s0)
 #define casadi_s1 CASADI_PREFIX(s1)
 #define casadi_s2 CASADI_PREFIX(s2)
-#define casadi_s3 CASADI_PREFIX(s3)
 
 /* Symbol visibility in DLLs */
 #ifndef CASADI_SYMBOL_EXPORT
@@ -58,7 +56,6 @@ CASADI_SYMBOL_EXPORT int snakecg_na2_mass_matrix_casadi_real_size(void) { return
 static const casadi_int casadi_s0[3] = {5, 1, 1};
 static const casadi_int casadi_s1[3] = {25, 1, 1};
 static const casadi_int casadi_s2[3] = {5, 5, 1};
-static const casadi_int casadi_s3[3] = {3, 1, 1};
 
 /* snakecg_na2_mass_matrix:(q[5],K[25])->(M[5x5]) */
 static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
@@ -231,178 +228,6 @@ CASADI_SYMBOL_EXPORT int snakecg_na2_mass_matrix_work_bytes(casadi_int *sz_arg, 
   return 0;
 }
 
-/* snakecg_na2_mass_matrix_sincos:(q[5],K[25],cos_q[3],sin_q[3])->(M[5x5]) */
-static int casadi_f1(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
-  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
-  casadi_real a12, a13, a14, a15;
-  a00=arg[1]? arg[1][12] : 0;
-  if (res[0]!=0) res[0][0]=a00;
-  a01=0.;
-  if (res[0]!=0) res[0][1]=a01;
-  a02=arg[1]? arg[1][15] : 0;
-  a03=arg[2]? arg[2][0] : 0;
-  a04=arg[2]? arg[2][1] : 0;
-  a05=(a03*a04);
-  a06=arg[3]? arg[3][0] : 0;
-  a07=arg[3]? arg[3][1] : 0;
-  a08=(a06*a07);
-  a05=(a05-a08);
-  a08=arg[3]? arg[3][2] : 0;
-  a09=(a05*a08);
-  a10=arg[2]? arg[2][2] : 0;
-  a07=(a03*a07);
-  a04=(a04*a06);
-  a07=(a07+a04);
-  a04=(a10*a07);
-  a09=(a09+a04);
-  a09=(a02*a09);
-  a04=arg[1]? arg[1][14] : 0;
-  a11=(a04*a07);
-  a11=(a09+a11);
-  a12=arg[1]? arg[1][13] : 0;
-  a13=(a12*a06);
-  a13=(a11+a13);
-  a13=(-a13);
-  if (res[0]!=0) res[0][2]=a13;
-  a14=(-a11);
-  if (res[0]!=0) res[0][3]=a14;
-  a15=(-a09);
-  if (res[0]!=0) res[0][4]=a15;
-  if (res[0]!=0) res[0][5]=a01;
-  if (res[0]!=0) res[0][6]=a00;
-  a10=(a05*a10);
-  a08=(a07*a08);
-  a10=(a10-a08);
-  a02=(a02*a10);
-  a04=(a04*a05);
-  a04=(a02+a04);
-  a12=(a12*a03);
-  a12=(a04+a12);
-  if (res[0]!=0) res[0][7]=a12;
-  if (res[0]!=0) res[0][8]=a04;
-  if (res[0]!=0) res[0][9]=a02;
-  if (res[0]!=0) res[0][10]=a13;
-  if (res[0]!=0) res[0][11]=a12;
-  a12=arg[1]? arg[1][4] : 0;
-  a05=(a05*a12);
-  a05=(a02*a05);
-  a07=(a07*a12);
-  a07=(a09*a07);
-  a05=(a05+a07);
-  a07=arg[1]? arg[1][24] : 0;
-  a12=(a05+a07);
-  a05=(a12+a05);
-  a13=arg[1]? arg[1][23] : 0;
-  a05=(a05+a13);
-  a13=arg[1]? arg[1][3] : 0;
-  a10=arg[1]? arg[1][9] : 0;
-  a13=(a13-a10);
-  a03=(a03*a13);
-  a10=(a04*a03);
-  a13=(a13*a06);
-  a11=(a11*a13);
-  a10=(a10+a11);
-  a11=(a05+a10);
-  a10=(a11+a10);
-  a06=arg[1]? arg[1][22] : 0;
-  a10=(a10+a06);
-  if (res[0]!=0) res[0][12]=a10;
-  if (res[0]!=0) res[0][13]=a11;
-  a03=(a02*a03);
-  a09=(a09*a13);
-  a03=(a03+a09);
-  a03=(a12+a03);
-  if (res[0]!=0) res[0][14]=a03;
-  if (res[0]!=0) res[0][15]=a14;
-  if (res[0]!=0) res[0][16]=a04;
-  if (res[0]!=0) res[0][17]=a11;
-  if (res[0]!=0) res[0][18]=a05;
-  if (res[0]!=0) res[0][19]=a12;
-  if (res[0]!=0) res[0][20]=a15;
-  if (res[0]!=0) res[0][21]=a02;
-  if (res[0]!=0) res[0][22]=a03;
-  if (res[0]!=0) res[0][23]=a12;
-  if (res[0]!=0) res[0][24]=a07;
-  return 0;
-}
-
-CASADI_SYMBOL_EXPORT int snakecg_na2_mass_matrix_sincos(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f1(arg, res, iw, w, mem);
-}
-
-CASADI_SYMBOL_EXPORT int snakecg_na2_mass_matrix_sincos_checkout(void) {
-  return 0;
-}
-
-CASADI_SYMBOL_EXPORT void snakecg_na2_mass_matrix_sincos_release(int mem) {
-}
-
-CASADI_SYMBOL_EXPORT void snakecg_na2_mass_matrix_sincos_incref(void) {
-}
-
-CASADI_SYMBOL_EXPORT void snakecg_na2_mass_matrix_sincos_decref(void) {
-}
-
-CASADI_SYMBOL_EXPORT casadi_int snakecg_na2_mass_matrix_sincos_n_in(void) { return 4;}
-
-CASADI_SYMBOL_EXPORT casadi_int snakecg_na2_mass_matrix_sincos_n_out(void) { return 1;}
-
-CASADI_SYMBOL_EXPORT casadi_real snakecg_na2_mass_matrix_sincos_default_in(casadi_int i) {
-  switch (i) {
-    default: return 0;
-  }
-}
-
-CASADI_SYMBOL_EXPORT const char* snakecg_na2_mass_matrix_sincos_name_in(casadi_int i) {
-  switch (i) {
-    case 0: return "q";
-    case 1: return "K";
-    case 2: return "cos_q";
-    case 3: return "sin_q";
-    default: return 0;
-  }
-}
-
-CASADI_SYMBOL_EXPORT const char* snakecg_na2_mass_matrix_sincos_name_out(casadi_int i) {
-  switch (i) {
-    case 0: return "M";
-    default: return 0;
-  }
-}
-
-CASADI_SYMBOL_EXPORT const casadi_int* snakecg_na2_mass_matrix_sincos_sparsity_in(casadi_int i) {
-  switch (i) {
-    case 0: return casadi_s0;
-    case 1: return casadi_s1;
-    case 2: return casadi_s3;
-    case 3: return casadi_s3;
-    default: return 0;
-  }
-}
-
-CASADI_SYMBOL_EXPORT const casadi_int* snakecg_na2_mass_matrix_sincos_sparsity_out(casadi_int i) {
-  switch (i) {
-    case 0: return casadi_s2;
-    default: return 0;
-  }
-}
-
-CASADI_SYMBOL_EXPORT int snakecg_na2_mass_matrix_sincos_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
-  if (sz_arg) *sz_arg = 4;
-  if (sz_res) *sz_res = 1;
-  if (sz_iw) *sz_iw = 0;
-  if (sz_w) *sz_w = 0;
-  return 0;
-}
-
-CASADI_SYMBOL_EXPORT int snakecg_na2_mass_matrix_sincos_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
-  if (sz_arg) *sz_arg = 4*sizeof(const casadi_real*);
-  if (sz_res) *sz_res = 1*sizeof(casadi_real*);
-  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
-  if (sz_w) *sz_w = 0*sizeof(casadi_real);
-  return 0;
-}
-
 
 
 /* ------------------------------------------------------------------------------------------
@@ -466,41 +291,144 @@ static void snakecg_sincos_block(const casadi_real* restrict x, casadi_real* res
   }
 }
 
+/* snakecg_na2_mass_matrix_sincos: 88 CasADi instructions, printed one per line */
+static void snakecg_na2_mass_matrix_sincos(
+    const casadi_real* restrict arg0,
+    const casadi_real* restrict arg1,
+    const casadi_real* restrict arg2,
+    const casadi_real* restrict arg3,
+    casadi_real* restrict res0) {
+  casadi_real w0, w1, w2, w3, w4, w5, w6, w7, w8, w9;
+  casadi_real w10, w11, w12, w13, w14, w15;
+  w0 = arg1[12];
+  res0[0] = w0;
+  w1 = 0.0;
+  res0[1] = w1;
+  w2 = arg1[15];
+  w3 = arg2[0];
+  w4 = arg2[1];
+  w5 = w3 * w4;
+  w6 = arg3[0];
+  w7 = arg3[1];
+  w8 = w6 * w7;
+  w5 = w5 - w8;
+  w8 = arg3[2];
+  w9 = w5 * w8;
+  w10 = arg2[2];
+  w7 = w3 * w7;
+  w4 = w4 * w6;
+  w7 = w7 + w4;
+  w4 = w10 * w7;
+  w9 = w9 + w4;
+  w9 = w2 * w9;
+  w4 = arg1[14];
+  w11 = w4 * w7;
+  w11 = w9 + w11;
+  w12 = arg1[13];
+  w13 = w12 * w6;
+  w13 = w11 + w13;
+  w13 = -w13;
+  res0[2] = w13;
+  w14 = -w11;
+  res0[3] = w14;
+  w15 = -w9;
+  res0[4] = w15;
+  res0[5] = w1;
+  res0[6] = w0;
+  w10 = w5 * w10;
+  w8 = w7 * w8;
+  w10 = w10 - w8;
+  w2 = w2 * w10;
+  w4 = w4 * w5;
+  w4 = w2 + w4;
+  w12 = w12 * w3;
+  w12 = w4 + w12;
+  res0[7] = w12;
+  res0[8] = w4;
+  res0[9] = w2;
+  res0[10] = w13;
+  res0[11] = w12;
+  w12 = arg1[4];
+  w5 = w5 * w12;
+  w5 = w2 * w5;
+  w7 = w7 * w12;
+  w7 = w9 * w7;
+  w5 = w5 + w7;
+  w7 = arg1[24];
+  w12 = w5 + w7;
+  w5 = w12 + w5;
+  w13 = arg1[23];
+  w5 = w5 + w13;
+  w13 = arg1[3];
+  w10 = arg1[9];
+  w13 = w13 - w10;
+  w3 = w3 * w13;
+  w10 = w4 * w3;
+  w13 = w13 * w6;
+  w11 = w11 * w13;
+  w10 = w10 + w11;
+  w11 = w5 + w10;
+  w10 = w11 + w10;
+  w6 = arg1[22];
+  w10 = w10 + w6;
+  res0[12] = w10;
+  res0[13] = w11;
+  w3 = w2 * w3;
+  w9 = w9 * w13;
+  w3 = w3 + w9;
+  w3 = w12 + w3;
+  res0[14] = w3;
+  res0[15] = w14;
+  res0[16] = w4;
+  res0[17] = w11;
+  res0[18] = w5;
+  res0[19] = w12;
+  res0[20] = w15;
+  res0[21] = w2;
+  res0[22] = w3;
+  res0[23] = w12;
+  res0[24] = w7;
+}
+
+
 CASADI_SYMBOL_EXPORT int snakecg_na2_batch_mass_matrix(casadi_int n, const casadi_real** arg,
     const casadi_int* stride, casadi_real** res) {
-  const casadi_real* a[4];
+  const casadi_real* a[2];
   casadi_real* r[1];
   casadi_int* iw = (casadi_int*) malloc(sizeof(casadi_int) * 1);
   casadi_real* w = (casadi_real*) malloc(sizeof(casadi_real) * 17);
   casadi_int i, k;
   int status = 0;
   if (!iw || !w) { free(iw); free(w); return -1; }
-  for (k = 0; k < 4; ++k) a[k] = 0;
+  for (k = 0; k < 2; ++k) a[k] = 0;
   for (k = 0; k < 1; ++k) r[k] = 0;
-  {
+  if (arg[0] && arg[1] && res[0]) {
     /* cos and sin of q[2..4] of 16 samples at a time, then snakecg_na2_mass_matrix_sincos
      * per sample (a batch of one too, so that a batch equals its samples one by one) */
     const casadi_int na = 3, per = 16;
     casadi_real ang[48], ca[48], sa[48];
     casadi_int i0, m;
     for (k = 0; k < 48; ++k) ang[k] = 0;
-    for (i0 = 0; i0 < n && status == 0; i0 += per) {
+    for (i0 = 0; i0 < n; i0 += per) {
       m = n - i0 < per ? n - i0 : per;
       for (i = 0; i < m; ++i) {
         const casadi_real* q = arg[0] + (i0 + i) * stride[0] + 2;
-        for (k = 0; k < na; ++k) ang[i * na + k] = arg[0] ? q[k] : 0;
+        for (k = 0; k < na; ++k) ang[i * na + k] = q[k];
       }
       for (k = 0; k < m * na; k += SNAKECG_SINCOS_BLOCK) {
         snakecg_sincos_block(ang + k, ca + k, sa + k);
       }
       for (i = 0; i < m; ++i) {
-        a[0] = arg[0] + (i0 + i) * stride[0];
-        a[1] = arg[1] + (i0 + i) * stride[1];
-        a[2] = ca + i * na;
-        a[3] = sa + i * na;
-        r[0] = res[0] + (i0 + i) * 25;
-        if (snakecg_na2_mass_matrix_sincos(a, r, iw, w, 0)) { status = (int) (i0 + i + 1); break; }
+        snakecg_na2_mass_matrix_sincos(arg[0] + (i0 + i) * stride[0], arg[1] + (i0 + i) * stride[1], ca + i * na, sa + i * na, res[0] + (i0 + i) * 25);
       }
+    }
+  } else {
+    /* a null input or output (CasADi's convention: zeros in, nothing out): per sample */
+    for (i = 0; i < n; ++i) {
+      a[0] = arg[0] + i * stride[0];
+      a[1] = arg[1] + i * stride[1];
+      r[0] = res[0] + i * 25;
+      if (snakecg_na2_mass_matrix(a, r, iw, w, 0)) { status = (int) (i + 1); break; }
     }
   }
   free(iw);

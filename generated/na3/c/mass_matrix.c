@@ -25,11 +25,9 @@
 
 /* Add prefix to internal symbols */
 #define casadi_f0 CASADI_PREFIX(f0)
-#define casadi_f1 CASADI_PREFIX(f1)
 #define casadi_s0 CASADI_PREFIX(s0)
 #define casadi_s1 CASADI_PREFIX(s1)
 #define casadi_s2 CASADI_PREFIX(s2)
-#define casadi_s3 CASADI_PREFIX(s3)
 
 /* Symbol visibility in DLLs */
 #ifndef CASADI_SYMBOL_EXPORT
@@ -58,7 +56,6 @@ CASADI_SYMBOL_EXPORT int snakecg_na3_mass_matrix_casadi_real_size(void) { return
 static const casadi_int casadi_s0[3] = {6, 1, 1};
 static const casadi_int casadi_s1[3] = {35, 1, 1};
 static const casadi_int casadi_s2[3] = {6, 6, 1};
-static const casadi_int casadi_s3[3] = {4, 1, 1};
 
 /* snakecg_na3_mass_matrix:(q[6],K[35])->(M[6x6]) */
 static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
@@ -275,221 +272,6 @@ CASADI_SYMBOL_EXPORT int snakecg_na3_mass_matrix_work_bytes(casadi_int *sz_arg, 
   return 0;
 }
 
-/* snakecg_na3_mass_matrix_sincos:(q[6],K[35],cos_q[4],sin_q[4])->(M[6x6]) */
-static int casadi_f1(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
-  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
-  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20;
-  a00=arg[1]? arg[1][16] : 0;
-  if (res[0]!=0) res[0][0]=a00;
-  a01=0.;
-  if (res[0]!=0) res[0][1]=a01;
-  a02=arg[1]? arg[1][20] : 0;
-  a03=arg[2]? arg[2][0] : 0;
-  a04=arg[2]? arg[2][1] : 0;
-  a05=(a03*a04);
-  a06=arg[3]? arg[3][0] : 0;
-  a07=arg[3]? arg[3][1] : 0;
-  a08=(a06*a07);
-  a05=(a05-a08);
-  a08=arg[2]? arg[2][2] : 0;
-  a09=(a05*a08);
-  a07=(a03*a07);
-  a04=(a04*a06);
-  a07=(a07+a04);
-  a04=arg[3]? arg[3][2] : 0;
-  a10=(a07*a04);
-  a09=(a09-a10);
-  a10=arg[3]? arg[3][3] : 0;
-  a11=(a09*a10);
-  a12=arg[2]? arg[2][3] : 0;
-  a04=(a05*a04);
-  a08=(a08*a07);
-  a04=(a04+a08);
-  a08=(a12*a04);
-  a11=(a11+a08);
-  a11=(a02*a11);
-  a08=arg[1]? arg[1][19] : 0;
-  a13=(a08*a04);
-  a13=(a11+a13);
-  a14=arg[1]? arg[1][18] : 0;
-  a15=(a14*a07);
-  a15=(a13+a15);
-  a16=arg[1]? arg[1][17] : 0;
-  a17=(a16*a06);
-  a17=(a15+a17);
-  a17=(-a17);
-  if (res[0]!=0) res[0][2]=a17;
-  a18=(-a15);
-  if (res[0]!=0) res[0][3]=a18;
-  a19=(-a13);
-  if (res[0]!=0) res[0][4]=a19;
-  a20=(-a11);
-  if (res[0]!=0) res[0][5]=a20;
-  if (res[0]!=0) res[0][6]=a01;
-  if (res[0]!=0) res[0][7]=a00;
-  a12=(a09*a12);
-  a10=(a04*a10);
-  a12=(a12-a10);
-  a02=(a02*a12);
-  a08=(a08*a09);
-  a08=(a02+a08);
-  a14=(a14*a05);
-  a14=(a08+a14);
-  a16=(a16*a03);
-  a16=(a14+a16);
-  if (res[0]!=0) res[0][8]=a16;
-  if (res[0]!=0) res[0][9]=a14;
-  if (res[0]!=0) res[0][10]=a08;
-  if (res[0]!=0) res[0][11]=a02;
-  if (res[0]!=0) res[0][12]=a17;
-  if (res[0]!=0) res[0][13]=a16;
-  a16=arg[1]? arg[1][6] : 0;
-  a09=(a09*a16);
-  a09=(a02*a09);
-  a04=(a04*a16);
-  a04=(a11*a04);
-  a09=(a09+a04);
-  a04=arg[1]? arg[1][34] : 0;
-  a16=(a09+a04);
-  a09=(a16+a09);
-  a17=arg[1]? arg[1][33] : 0;
-  a09=(a09+a17);
-  a17=arg[1]? arg[1][5] : 0;
-  a05=(a05*a17);
-  a12=(a08*a05);
-  a07=(a07*a17);
-  a17=(a13*a07);
-  a12=(a12+a17);
-  a17=(a09+a12);
-  a12=(a17+a12);
-  a10=arg[1]? arg[1][32] : 0;
-  a12=(a12+a10);
-  a10=arg[1]? arg[1][4] : 0;
-  a00=arg[1]? arg[1][12] : 0;
-  a10=(a10-a00);
-  a03=(a03*a10);
-  a00=(a14*a03);
-  a10=(a10*a06);
-  a15=(a15*a10);
-  a00=(a00+a15);
-  a15=(a12+a00);
-  a00=(a15+a00);
-  a06=arg[1]? arg[1][31] : 0;
-  a00=(a00+a06);
-  if (res[0]!=0) res[0][14]=a00;
-  if (res[0]!=0) res[0][15]=a15;
-  a00=(a08*a03);
-  a13=(a13*a10);
-  a00=(a00+a13);
-  a00=(a17+a00);
-  if (res[0]!=0) res[0][16]=a00;
-  a05=(a02*a05);
-  a07=(a11*a07);
-  a05=(a05+a07);
-  a05=(a16+a05);
-  a03=(a02*a03);
-  a11=(a11*a10);
-  a03=(a03+a11);
-  a03=(a05+a03);
-  if (res[0]!=0) res[0][17]=a03;
-  if (res[0]!=0) res[0][18]=a18;
-  if (res[0]!=0) res[0][19]=a14;
-  if (res[0]!=0) res[0][20]=a15;
-  if (res[0]!=0) res[0][21]=a12;
-  if (res[0]!=0) res[0][22]=a17;
-  if (res[0]!=0) res[0][23]=a05;
-  if (res[0]!=0) res[0][24]=a19;
-  if (res[0]!=0) res[0][25]=a08;
-  if (res[0]!=0) res[0][26]=a00;
-  if (res[0]!=0) res[0][27]=a17;
-  if (res[0]!=0) res[0][28]=a09;
-  if (res[0]!=0) res[0][29]=a16;
-  if (res[0]!=0) res[0][30]=a20;
-  if (res[0]!=0) res[0][31]=a02;
-  if (res[0]!=0) res[0][32]=a03;
-  if (res[0]!=0) res[0][33]=a05;
-  if (res[0]!=0) res[0][34]=a16;
-  if (res[0]!=0) res[0][35]=a04;
-  return 0;
-}
-
-CASADI_SYMBOL_EXPORT int snakecg_na3_mass_matrix_sincos(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f1(arg, res, iw, w, mem);
-}
-
-CASADI_SYMBOL_EXPORT int snakecg_na3_mass_matrix_sincos_checkout(void) {
-  return 0;
-}
-
-CASADI_SYMBOL_EXPORT void snakecg_na3_mass_matrix_sincos_release(int mem) {
-}
-
-CASADI_SYMBOL_EXPORT void snakecg_na3_mass_matrix_sincos_incref(void) {
-}
-
-CASADI_SYMBOL_EXPORT void snakecg_na3_mass_matrix_sincos_decref(void) {
-}
-
-CASADI_SYMBOL_EXPORT casadi_int snakecg_na3_mass_matrix_sincos_n_in(void) { return 4;}
-
-CASADI_SYMBOL_EXPORT casadi_int snakecg_na3_mass_matrix_sincos_n_out(void) { return 1;}
-
-CASADI_SYMBOL_EXPORT casadi_real snakecg_na3_mass_matrix_sincos_default_in(casadi_int i) {
-  switch (i) {
-    default: return 0;
-  }
-}
-
-CASADI_SYMBOL_EXPORT const char* snakecg_na3_mass_matrix_sincos_name_in(casadi_int i) {
-  switch (i) {
-    case 0: return "q";
-    case 1: return "K";
-    case 2: return "cos_q";
-    case 3: return "sin_q";
-    default: return 0;
-  }
-}
-
-CASADI_SYMBOL_EXPORT const char* snakecg_na3_mass_matrix_sincos_name_out(casadi_int i) {
-  switch (i) {
-    case 0: return "M";
-    default: return 0;
-  }
-}
-
-CASADI_SYMBOL_EXPORT const casadi_int* snakecg_na3_mass_matrix_sincos_sparsity_in(casadi_int i) {
-  switch (i) {
-    case 0: return casadi_s0;
-    case 1: return casadi_s1;
-    case 2: return casadi_s3;
-    case 3: return casadi_s3;
-    default: return 0;
-  }
-}
-
-CASADI_SYMBOL_EXPORT const casadi_int* snakecg_na3_mass_matrix_sincos_sparsity_out(casadi_int i) {
-  switch (i) {
-    case 0: return casadi_s2;
-    default: return 0;
-  }
-}
-
-CASADI_SYMBOL_EXPORT int snakecg_na3_mass_matrix_sincos_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
-  if (sz_arg) *sz_arg = 4;
-  if (sz_res) *sz_res = 1;
-  if (sz_iw) *sz_iw = 0;
-  if (sz_w) *sz_w = 0;
-  return 0;
-}
-
-CASADI_SYMBOL_EXPORT int snakecg_na3_mass_matrix_sincos_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
-  if (sz_arg) *sz_arg = 4*sizeof(const casadi_real*);
-  if (sz_res) *sz_res = 1*sizeof(casadi_real*);
-  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
-  if (sz_w) *sz_w = 0*sizeof(casadi_real);
-  return 0;
-}
-
 
 
 /* ------------------------------------------------------------------------------------------
@@ -553,41 +335,188 @@ static void snakecg_sincos_block(const casadi_real* restrict x, casadi_real* res
   }
 }
 
+/* snakecg_na3_mass_matrix_sincos: 131 CasADi instructions, printed one per line */
+static void snakecg_na3_mass_matrix_sincos(
+    const casadi_real* restrict arg0,
+    const casadi_real* restrict arg1,
+    const casadi_real* restrict arg2,
+    const casadi_real* restrict arg3,
+    casadi_real* restrict res0) {
+  casadi_real w0, w1, w2, w3, w4, w5, w6, w7, w8, w9;
+  casadi_real w10, w11, w12, w13, w14, w15, w16, w17, w18, w19;
+  casadi_real w20;
+  w0 = arg1[16];
+  res0[0] = w0;
+  w1 = 0.0;
+  res0[1] = w1;
+  w2 = arg1[20];
+  w3 = arg2[0];
+  w4 = arg2[1];
+  w5 = w3 * w4;
+  w6 = arg3[0];
+  w7 = arg3[1];
+  w8 = w6 * w7;
+  w5 = w5 - w8;
+  w8 = arg2[2];
+  w9 = w5 * w8;
+  w7 = w3 * w7;
+  w4 = w4 * w6;
+  w7 = w7 + w4;
+  w4 = arg3[2];
+  w10 = w7 * w4;
+  w9 = w9 - w10;
+  w10 = arg3[3];
+  w11 = w9 * w10;
+  w12 = arg2[3];
+  w4 = w5 * w4;
+  w8 = w8 * w7;
+  w4 = w4 + w8;
+  w8 = w12 * w4;
+  w11 = w11 + w8;
+  w11 = w2 * w11;
+  w8 = arg1[19];
+  w13 = w8 * w4;
+  w13 = w11 + w13;
+  w14 = arg1[18];
+  w15 = w14 * w7;
+  w15 = w13 + w15;
+  w16 = arg1[17];
+  w17 = w16 * w6;
+  w17 = w15 + w17;
+  w17 = -w17;
+  res0[2] = w17;
+  w18 = -w15;
+  res0[3] = w18;
+  w19 = -w13;
+  res0[4] = w19;
+  w20 = -w11;
+  res0[5] = w20;
+  res0[6] = w1;
+  res0[7] = w0;
+  w12 = w9 * w12;
+  w10 = w4 * w10;
+  w12 = w12 - w10;
+  w2 = w2 * w12;
+  w8 = w8 * w9;
+  w8 = w2 + w8;
+  w14 = w14 * w5;
+  w14 = w8 + w14;
+  w16 = w16 * w3;
+  w16 = w14 + w16;
+  res0[8] = w16;
+  res0[9] = w14;
+  res0[10] = w8;
+  res0[11] = w2;
+  res0[12] = w17;
+  res0[13] = w16;
+  w16 = arg1[6];
+  w9 = w9 * w16;
+  w9 = w2 * w9;
+  w4 = w4 * w16;
+  w4 = w11 * w4;
+  w9 = w9 + w4;
+  w4 = arg1[34];
+  w16 = w9 + w4;
+  w9 = w16 + w9;
+  w17 = arg1[33];
+  w9 = w9 + w17;
+  w17 = arg1[5];
+  w5 = w5 * w17;
+  w12 = w8 * w5;
+  w7 = w7 * w17;
+  w17 = w13 * w7;
+  w12 = w12 + w17;
+  w17 = w9 + w12;
+  w12 = w17 + w12;
+  w10 = arg1[32];
+  w12 = w12 + w10;
+  w10 = arg1[4];
+  w0 = arg1[12];
+  w10 = w10 - w0;
+  w3 = w3 * w10;
+  w0 = w14 * w3;
+  w10 = w10 * w6;
+  w15 = w15 * w10;
+  w0 = w0 + w15;
+  w15 = w12 + w0;
+  w0 = w15 + w0;
+  w6 = arg1[31];
+  w0 = w0 + w6;
+  res0[14] = w0;
+  res0[15] = w15;
+  w0 = w8 * w3;
+  w13 = w13 * w10;
+  w0 = w0 + w13;
+  w0 = w17 + w0;
+  res0[16] = w0;
+  w5 = w2 * w5;
+  w7 = w11 * w7;
+  w5 = w5 + w7;
+  w5 = w16 + w5;
+  w3 = w2 * w3;
+  w11 = w11 * w10;
+  w3 = w3 + w11;
+  w3 = w5 + w3;
+  res0[17] = w3;
+  res0[18] = w18;
+  res0[19] = w14;
+  res0[20] = w15;
+  res0[21] = w12;
+  res0[22] = w17;
+  res0[23] = w5;
+  res0[24] = w19;
+  res0[25] = w8;
+  res0[26] = w0;
+  res0[27] = w17;
+  res0[28] = w9;
+  res0[29] = w16;
+  res0[30] = w20;
+  res0[31] = w2;
+  res0[32] = w3;
+  res0[33] = w5;
+  res0[34] = w16;
+  res0[35] = w4;
+}
+
+
 CASADI_SYMBOL_EXPORT int snakecg_na3_batch_mass_matrix(casadi_int n, const casadi_real** arg,
     const casadi_int* stride, casadi_real** res) {
-  const casadi_real* a[4];
+  const casadi_real* a[2];
   casadi_real* r[1];
   casadi_int* iw = (casadi_int*) malloc(sizeof(casadi_int) * 1);
   casadi_real* w = (casadi_real*) malloc(sizeof(casadi_real) * 22);
   casadi_int i, k;
   int status = 0;
   if (!iw || !w) { free(iw); free(w); return -1; }
-  for (k = 0; k < 4; ++k) a[k] = 0;
+  for (k = 0; k < 2; ++k) a[k] = 0;
   for (k = 0; k < 1; ++k) r[k] = 0;
-  {
+  if (arg[0] && arg[1] && res[0]) {
     /* cos and sin of q[2..5] of 16 samples at a time, then snakecg_na3_mass_matrix_sincos
      * per sample (a batch of one too, so that a batch equals its samples one by one) */
     const casadi_int na = 4, per = 16;
     casadi_real ang[64], ca[64], sa[64];
     casadi_int i0, m;
     for (k = 0; k < 64; ++k) ang[k] = 0;
-    for (i0 = 0; i0 < n && status == 0; i0 += per) {
+    for (i0 = 0; i0 < n; i0 += per) {
       m = n - i0 < per ? n - i0 : per;
       for (i = 0; i < m; ++i) {
         const casadi_real* q = arg[0] + (i0 + i) * stride[0] + 2;
-        for (k = 0; k < na; ++k) ang[i * na + k] = arg[0] ? q[k] : 0;
+        for (k = 0; k < na; ++k) ang[i * na + k] = q[k];
       }
       for (k = 0; k < m * na; k += SNAKECG_SINCOS_BLOCK) {
         snakecg_sincos_block(ang + k, ca + k, sa + k);
       }
       for (i = 0; i < m; ++i) {
-        a[0] = arg[0] + (i0 + i) * stride[0];
-        a[1] = arg[1] + (i0 + i) * stride[1];
-        a[2] = ca + i * na;
-        a[3] = sa + i * na;
-        r[0] = res[0] + (i0 + i) * 36;
-        if (snakecg_na3_mass_matrix_sincos(a, r, iw, w, 0)) { status = (int) (i0 + i + 1); break; }
+        snakecg_na3_mass_matrix_sincos(arg[0] + (i0 + i) * stride[0], arg[1] + (i0 + i) * stride[1], ca + i * na, sa + i * na, res[0] + (i0 + i) * 36);
       }
+    }
+  } else {
+    /* a null input or output (CasADi's convention: zeros in, nothing out): per sample */
+    for (i = 0; i < n; ++i) {
+      a[0] = arg[0] + i * stride[0];
+      a[1] = arg[1] + i * stride[1];
+      r[0] = res[0] + i * 36;
+      if (snakecg_na3_mass_matrix(a, r, iw, w, 0)) { status = (int) (i + 1); break; }
     }
   }
   free(iw);

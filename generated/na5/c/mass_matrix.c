@@ -25,11 +25,9 @@
 
 /* Add prefix to internal symbols */
 #define casadi_f0 CASADI_PREFIX(f0)
-#define casadi_f1 CASADI_PREFIX(f1)
 #define casadi_s0 CASADI_PREFIX(s0)
 #define casadi_s1 CASADI_PREFIX(s1)
 #define casadi_s2 CASADI_PREFIX(s2)
-#define casadi_s3 CASADI_PREFIX(s3)
 
 /* Symbol visibility in DLLs */
 #ifndef CASADI_SYMBOL_EXPORT
@@ -58,7 +56,6 @@ CASADI_SYMBOL_EXPORT int snakecg_na5_mass_matrix_casadi_real_size(void) { return
 static const casadi_int casadi_s0[3] = {8, 1, 1};
 static const casadi_int casadi_s1[3] = {58, 1, 1};
 static const casadi_int casadi_s2[3] = {8, 8, 1};
-static const casadi_int casadi_s3[3] = {6, 1, 1};
 
 /* snakecg_na5_mass_matrix:(q[8],K[58])->(M[8x8]) */
 static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
@@ -382,326 +379,6 @@ CASADI_SYMBOL_EXPORT int snakecg_na5_mass_matrix_work_bytes(casadi_int *sz_arg, 
   return 0;
 }
 
-/* snakecg_na5_mass_matrix_sincos:(q[8],K[58],cos_q[6],sin_q[6])->(M[8x8]) */
-static int casadi_f1(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
-  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
-  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
-  casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
-  a00=arg[1]? arg[1][24] : 0;
-  if (res[0]!=0) res[0][0]=a00;
-  a01=0.;
-  if (res[0]!=0) res[0][1]=a01;
-  a02=arg[1]? arg[1][30] : 0;
-  a03=arg[2]? arg[2][0] : 0;
-  a04=arg[2]? arg[2][1] : 0;
-  a05=(a03*a04);
-  a06=arg[3]? arg[3][0] : 0;
-  a07=arg[3]? arg[3][1] : 0;
-  a08=(a06*a07);
-  a05=(a05-a08);
-  a08=arg[2]? arg[2][2] : 0;
-  a09=(a05*a08);
-  a07=(a03*a07);
-  a04=(a04*a06);
-  a07=(a07+a04);
-  a04=arg[3]? arg[3][2] : 0;
-  a10=(a07*a04);
-  a09=(a09-a10);
-  a10=arg[2]? arg[2][3] : 0;
-  a11=(a09*a10);
-  a04=(a05*a04);
-  a08=(a08*a07);
-  a04=(a04+a08);
-  a08=arg[3]? arg[3][3] : 0;
-  a12=(a04*a08);
-  a11=(a11-a12);
-  a12=arg[2]? arg[2][4] : 0;
-  a13=(a11*a12);
-  a08=(a09*a08);
-  a10=(a10*a04);
-  a08=(a08+a10);
-  a10=arg[3]? arg[3][4] : 0;
-  a14=(a08*a10);
-  a13=(a13-a14);
-  a14=arg[3]? arg[3][5] : 0;
-  a15=(a13*a14);
-  a16=arg[2]? arg[2][5] : 0;
-  a10=(a11*a10);
-  a12=(a12*a08);
-  a10=(a10+a12);
-  a12=(a16*a10);
-  a15=(a15+a12);
-  a15=(a02*a15);
-  a12=arg[1]? arg[1][29] : 0;
-  a17=(a12*a10);
-  a17=(a15+a17);
-  a18=arg[1]? arg[1][28] : 0;
-  a19=(a18*a08);
-  a19=(a17+a19);
-  a20=arg[1]? arg[1][27] : 0;
-  a21=(a20*a04);
-  a21=(a19+a21);
-  a22=arg[1]? arg[1][26] : 0;
-  a23=(a22*a07);
-  a23=(a21+a23);
-  a24=arg[1]? arg[1][25] : 0;
-  a25=(a24*a06);
-  a25=(a23+a25);
-  a25=(-a25);
-  if (res[0]!=0) res[0][2]=a25;
-  a26=(-a23);
-  if (res[0]!=0) res[0][3]=a26;
-  a27=(-a21);
-  if (res[0]!=0) res[0][4]=a27;
-  a28=(-a19);
-  if (res[0]!=0) res[0][5]=a28;
-  a29=(-a17);
-  if (res[0]!=0) res[0][6]=a29;
-  a30=(-a15);
-  if (res[0]!=0) res[0][7]=a30;
-  if (res[0]!=0) res[0][8]=a01;
-  if (res[0]!=0) res[0][9]=a00;
-  a16=(a13*a16);
-  a14=(a10*a14);
-  a16=(a16-a14);
-  a02=(a02*a16);
-  a12=(a12*a13);
-  a12=(a02+a12);
-  a18=(a18*a11);
-  a18=(a12+a18);
-  a20=(a20*a09);
-  a20=(a18+a20);
-  a22=(a22*a05);
-  a22=(a20+a22);
-  a24=(a24*a03);
-  a24=(a22+a24);
-  if (res[0]!=0) res[0][10]=a24;
-  if (res[0]!=0) res[0][11]=a22;
-  if (res[0]!=0) res[0][12]=a20;
-  if (res[0]!=0) res[0][13]=a18;
-  if (res[0]!=0) res[0][14]=a12;
-  if (res[0]!=0) res[0][15]=a02;
-  if (res[0]!=0) res[0][16]=a25;
-  if (res[0]!=0) res[0][17]=a24;
-  a24=arg[1]? arg[1][10] : 0;
-  a13=(a13*a24);
-  a13=(a02*a13);
-  a10=(a10*a24);
-  a10=(a15*a10);
-  a13=(a13+a10);
-  a10=arg[1]? arg[1][57] : 0;
-  a24=(a13+a10);
-  a13=(a24+a13);
-  a25=arg[1]? arg[1][56] : 0;
-  a13=(a13+a25);
-  a25=arg[1]? arg[1][9] : 0;
-  a11=(a11*a25);
-  a16=(a12*a11);
-  a08=(a08*a25);
-  a25=(a17*a08);
-  a16=(a16+a25);
-  a25=(a13+a16);
-  a16=(a25+a16);
-  a14=arg[1]? arg[1][55] : 0;
-  a16=(a16+a14);
-  a14=arg[1]? arg[1][8] : 0;
-  a09=(a09*a14);
-  a00=(a18*a09);
-  a04=(a04*a14);
-  a14=(a19*a04);
-  a00=(a00+a14);
-  a14=(a16+a00);
-  a00=(a14+a00);
-  a01=arg[1]? arg[1][54] : 0;
-  a00=(a00+a01);
-  a01=arg[1]? arg[1][7] : 0;
-  a05=(a05*a01);
-  a31=(a20*a05);
-  a07=(a07*a01);
-  a01=(a21*a07);
-  a31=(a31+a01);
-  a01=(a00+a31);
-  a31=(a01+a31);
-  a32=arg[1]? arg[1][53] : 0;
-  a31=(a31+a32);
-  a32=arg[1]? arg[1][6] : 0;
-  a33=arg[1]? arg[1][18] : 0;
-  a32=(a32-a33);
-  a03=(a03*a32);
-  a33=(a22*a03);
-  a32=(a32*a06);
-  a23=(a23*a32);
-  a33=(a33+a23);
-  a23=(a31+a33);
-  a33=(a23+a33);
-  a06=arg[1]? arg[1][52] : 0;
-  a33=(a33+a06);
-  if (res[0]!=0) res[0][18]=a33;
-  if (res[0]!=0) res[0][19]=a23;
-  a33=(a20*a03);
-  a21=(a21*a32);
-  a33=(a33+a21);
-  a33=(a01+a33);
-  if (res[0]!=0) res[0][20]=a33;
-  a21=(a18*a05);
-  a06=(a19*a07);
-  a21=(a21+a06);
-  a21=(a14+a21);
-  a06=(a18*a03);
-  a19=(a19*a32);
-  a06=(a06+a19);
-  a06=(a21+a06);
-  if (res[0]!=0) res[0][21]=a06;
-  a19=(a12*a09);
-  a34=(a17*a04);
-  a19=(a19+a34);
-  a19=(a25+a19);
-  a34=(a12*a05);
-  a35=(a17*a07);
-  a34=(a34+a35);
-  a34=(a19+a34);
-  a35=(a12*a03);
-  a17=(a17*a32);
-  a35=(a35+a17);
-  a35=(a34+a35);
-  if (res[0]!=0) res[0][22]=a35;
-  a11=(a02*a11);
-  a08=(a15*a08);
-  a11=(a11+a08);
-  a11=(a24+a11);
-  a09=(a02*a09);
-  a04=(a15*a04);
-  a09=(a09+a04);
-  a09=(a11+a09);
-  a05=(a02*a05);
-  a07=(a15*a07);
-  a05=(a05+a07);
-  a05=(a09+a05);
-  a03=(a02*a03);
-  a15=(a15*a32);
-  a03=(a03+a15);
-  a03=(a05+a03);
-  if (res[0]!=0) res[0][23]=a03;
-  if (res[0]!=0) res[0][24]=a26;
-  if (res[0]!=0) res[0][25]=a22;
-  if (res[0]!=0) res[0][26]=a23;
-  if (res[0]!=0) res[0][27]=a31;
-  if (res[0]!=0) res[0][28]=a01;
-  if (res[0]!=0) res[0][29]=a21;
-  if (res[0]!=0) res[0][30]=a34;
-  if (res[0]!=0) res[0][31]=a05;
-  if (res[0]!=0) res[0][32]=a27;
-  if (res[0]!=0) res[0][33]=a20;
-  if (res[0]!=0) res[0][34]=a33;
-  if (res[0]!=0) res[0][35]=a01;
-  if (res[0]!=0) res[0][36]=a00;
-  if (res[0]!=0) res[0][37]=a14;
-  if (res[0]!=0) res[0][38]=a19;
-  if (res[0]!=0) res[0][39]=a09;
-  if (res[0]!=0) res[0][40]=a28;
-  if (res[0]!=0) res[0][41]=a18;
-  if (res[0]!=0) res[0][42]=a06;
-  if (res[0]!=0) res[0][43]=a21;
-  if (res[0]!=0) res[0][44]=a14;
-  if (res[0]!=0) res[0][45]=a16;
-  if (res[0]!=0) res[0][46]=a25;
-  if (res[0]!=0) res[0][47]=a11;
-  if (res[0]!=0) res[0][48]=a29;
-  if (res[0]!=0) res[0][49]=a12;
-  if (res[0]!=0) res[0][50]=a35;
-  if (res[0]!=0) res[0][51]=a34;
-  if (res[0]!=0) res[0][52]=a19;
-  if (res[0]!=0) res[0][53]=a25;
-  if (res[0]!=0) res[0][54]=a13;
-  if (res[0]!=0) res[0][55]=a24;
-  if (res[0]!=0) res[0][56]=a30;
-  if (res[0]!=0) res[0][57]=a02;
-  if (res[0]!=0) res[0][58]=a03;
-  if (res[0]!=0) res[0][59]=a05;
-  if (res[0]!=0) res[0][60]=a09;
-  if (res[0]!=0) res[0][61]=a11;
-  if (res[0]!=0) res[0][62]=a24;
-  if (res[0]!=0) res[0][63]=a10;
-  return 0;
-}
-
-CASADI_SYMBOL_EXPORT int snakecg_na5_mass_matrix_sincos(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f1(arg, res, iw, w, mem);
-}
-
-CASADI_SYMBOL_EXPORT int snakecg_na5_mass_matrix_sincos_checkout(void) {
-  return 0;
-}
-
-CASADI_SYMBOL_EXPORT void snakecg_na5_mass_matrix_sincos_release(int mem) {
-}
-
-CASADI_SYMBOL_EXPORT void snakecg_na5_mass_matrix_sincos_incref(void) {
-}
-
-CASADI_SYMBOL_EXPORT void snakecg_na5_mass_matrix_sincos_decref(void) {
-}
-
-CASADI_SYMBOL_EXPORT casadi_int snakecg_na5_mass_matrix_sincos_n_in(void) { return 4;}
-
-CASADI_SYMBOL_EXPORT casadi_int snakecg_na5_mass_matrix_sincos_n_out(void) { return 1;}
-
-CASADI_SYMBOL_EXPORT casadi_real snakecg_na5_mass_matrix_sincos_default_in(casadi_int i) {
-  switch (i) {
-    default: return 0;
-  }
-}
-
-CASADI_SYMBOL_EXPORT const char* snakecg_na5_mass_matrix_sincos_name_in(casadi_int i) {
-  switch (i) {
-    case 0: return "q";
-    case 1: return "K";
-    case 2: return "cos_q";
-    case 3: return "sin_q";
-    default: return 0;
-  }
-}
-
-CASADI_SYMBOL_EXPORT const char* snakecg_na5_mass_matrix_sincos_name_out(casadi_int i) {
-  switch (i) {
-    case 0: return "M";
-    default: return 0;
-  }
-}
-
-CASADI_SYMBOL_EXPORT const casadi_int* snakecg_na5_mass_matrix_sincos_sparsity_in(casadi_int i) {
-  switch (i) {
-    case 0: return casadi_s0;
-    case 1: return casadi_s1;
-    case 2: return casadi_s3;
-    case 3: return casadi_s3;
-    default: return 0;
-  }
-}
-
-CASADI_SYMBOL_EXPORT const casadi_int* snakecg_na5_mass_matrix_sincos_sparsity_out(casadi_int i) {
-  switch (i) {
-    case 0: return casadi_s2;
-    default: return 0;
-  }
-}
-
-CASADI_SYMBOL_EXPORT int snakecg_na5_mass_matrix_sincos_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
-  if (sz_arg) *sz_arg = 4;
-  if (sz_res) *sz_res = 1;
-  if (sz_iw) *sz_iw = 0;
-  if (sz_w) *sz_w = 0;
-  return 0;
-}
-
-CASADI_SYMBOL_EXPORT int snakecg_na5_mass_matrix_sincos_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
-  if (sz_arg) *sz_arg = 4*sizeof(const casadi_real*);
-  if (sz_res) *sz_res = 1*sizeof(casadi_real*);
-  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
-  if (sz_w) *sz_w = 0*sizeof(casadi_real);
-  return 0;
-}
-
 
 
 /* ------------------------------------------------------------------------------------------
@@ -765,41 +442,293 @@ static void snakecg_sincos_block(const casadi_real* restrict x, casadi_real* res
   }
 }
 
+/* snakecg_na5_mass_matrix_sincos: 235 CasADi instructions, printed one per line */
+static void snakecg_na5_mass_matrix_sincos(
+    const casadi_real* restrict arg0,
+    const casadi_real* restrict arg1,
+    const casadi_real* restrict arg2,
+    const casadi_real* restrict arg3,
+    casadi_real* restrict res0) {
+  casadi_real w0, w1, w2, w3, w4, w5, w6, w7, w8, w9;
+  casadi_real w10, w11, w12, w13, w14, w15, w16, w17, w18, w19;
+  casadi_real w20, w21, w22, w23, w24, w25, w26, w27, w28, w29;
+  casadi_real w30, w31, w32, w33, w34, w35;
+  w0 = arg1[24];
+  res0[0] = w0;
+  w1 = 0.0;
+  res0[1] = w1;
+  w2 = arg1[30];
+  w3 = arg2[0];
+  w4 = arg2[1];
+  w5 = w3 * w4;
+  w6 = arg3[0];
+  w7 = arg3[1];
+  w8 = w6 * w7;
+  w5 = w5 - w8;
+  w8 = arg2[2];
+  w9 = w5 * w8;
+  w7 = w3 * w7;
+  w4 = w4 * w6;
+  w7 = w7 + w4;
+  w4 = arg3[2];
+  w10 = w7 * w4;
+  w9 = w9 - w10;
+  w10 = arg2[3];
+  w11 = w9 * w10;
+  w4 = w5 * w4;
+  w8 = w8 * w7;
+  w4 = w4 + w8;
+  w8 = arg3[3];
+  w12 = w4 * w8;
+  w11 = w11 - w12;
+  w12 = arg2[4];
+  w13 = w11 * w12;
+  w8 = w9 * w8;
+  w10 = w10 * w4;
+  w8 = w8 + w10;
+  w10 = arg3[4];
+  w14 = w8 * w10;
+  w13 = w13 - w14;
+  w14 = arg3[5];
+  w15 = w13 * w14;
+  w16 = arg2[5];
+  w10 = w11 * w10;
+  w12 = w12 * w8;
+  w10 = w10 + w12;
+  w12 = w16 * w10;
+  w15 = w15 + w12;
+  w15 = w2 * w15;
+  w12 = arg1[29];
+  w17 = w12 * w10;
+  w17 = w15 + w17;
+  w18 = arg1[28];
+  w19 = w18 * w8;
+  w19 = w17 + w19;
+  w20 = arg1[27];
+  w21 = w20 * w4;
+  w21 = w19 + w21;
+  w22 = arg1[26];
+  w23 = w22 * w7;
+  w23 = w21 + w23;
+  w24 = arg1[25];
+  w25 = w24 * w6;
+  w25 = w23 + w25;
+  w25 = -w25;
+  res0[2] = w25;
+  w26 = -w23;
+  res0[3] = w26;
+  w27 = -w21;
+  res0[4] = w27;
+  w28 = -w19;
+  res0[5] = w28;
+  w29 = -w17;
+  res0[6] = w29;
+  w30 = -w15;
+  res0[7] = w30;
+  res0[8] = w1;
+  res0[9] = w0;
+  w16 = w13 * w16;
+  w14 = w10 * w14;
+  w16 = w16 - w14;
+  w2 = w2 * w16;
+  w12 = w12 * w13;
+  w12 = w2 + w12;
+  w18 = w18 * w11;
+  w18 = w12 + w18;
+  w20 = w20 * w9;
+  w20 = w18 + w20;
+  w22 = w22 * w5;
+  w22 = w20 + w22;
+  w24 = w24 * w3;
+  w24 = w22 + w24;
+  res0[10] = w24;
+  res0[11] = w22;
+  res0[12] = w20;
+  res0[13] = w18;
+  res0[14] = w12;
+  res0[15] = w2;
+  res0[16] = w25;
+  res0[17] = w24;
+  w24 = arg1[10];
+  w13 = w13 * w24;
+  w13 = w2 * w13;
+  w10 = w10 * w24;
+  w10 = w15 * w10;
+  w13 = w13 + w10;
+  w10 = arg1[57];
+  w24 = w13 + w10;
+  w13 = w24 + w13;
+  w25 = arg1[56];
+  w13 = w13 + w25;
+  w25 = arg1[9];
+  w11 = w11 * w25;
+  w16 = w12 * w11;
+  w8 = w8 * w25;
+  w25 = w17 * w8;
+  w16 = w16 + w25;
+  w25 = w13 + w16;
+  w16 = w25 + w16;
+  w14 = arg1[55];
+  w16 = w16 + w14;
+  w14 = arg1[8];
+  w9 = w9 * w14;
+  w0 = w18 * w9;
+  w4 = w4 * w14;
+  w14 = w19 * w4;
+  w0 = w0 + w14;
+  w14 = w16 + w0;
+  w0 = w14 + w0;
+  w1 = arg1[54];
+  w0 = w0 + w1;
+  w1 = arg1[7];
+  w5 = w5 * w1;
+  w31 = w20 * w5;
+  w7 = w7 * w1;
+  w1 = w21 * w7;
+  w31 = w31 + w1;
+  w1 = w0 + w31;
+  w31 = w1 + w31;
+  w32 = arg1[53];
+  w31 = w31 + w32;
+  w32 = arg1[6];
+  w33 = arg1[18];
+  w32 = w32 - w33;
+  w3 = w3 * w32;
+  w33 = w22 * w3;
+  w32 = w32 * w6;
+  w23 = w23 * w32;
+  w33 = w33 + w23;
+  w23 = w31 + w33;
+  w33 = w23 + w33;
+  w6 = arg1[52];
+  w33 = w33 + w6;
+  res0[18] = w33;
+  res0[19] = w23;
+  w33 = w20 * w3;
+  w21 = w21 * w32;
+  w33 = w33 + w21;
+  w33 = w1 + w33;
+  res0[20] = w33;
+  w21 = w18 * w5;
+  w6 = w19 * w7;
+  w21 = w21 + w6;
+  w21 = w14 + w21;
+  w6 = w18 * w3;
+  w19 = w19 * w32;
+  w6 = w6 + w19;
+  w6 = w21 + w6;
+  res0[21] = w6;
+  w19 = w12 * w9;
+  w34 = w17 * w4;
+  w19 = w19 + w34;
+  w19 = w25 + w19;
+  w34 = w12 * w5;
+  w35 = w17 * w7;
+  w34 = w34 + w35;
+  w34 = w19 + w34;
+  w35 = w12 * w3;
+  w17 = w17 * w32;
+  w35 = w35 + w17;
+  w35 = w34 + w35;
+  res0[22] = w35;
+  w11 = w2 * w11;
+  w8 = w15 * w8;
+  w11 = w11 + w8;
+  w11 = w24 + w11;
+  w9 = w2 * w9;
+  w4 = w15 * w4;
+  w9 = w9 + w4;
+  w9 = w11 + w9;
+  w5 = w2 * w5;
+  w7 = w15 * w7;
+  w5 = w5 + w7;
+  w5 = w9 + w5;
+  w3 = w2 * w3;
+  w15 = w15 * w32;
+  w3 = w3 + w15;
+  w3 = w5 + w3;
+  res0[23] = w3;
+  res0[24] = w26;
+  res0[25] = w22;
+  res0[26] = w23;
+  res0[27] = w31;
+  res0[28] = w1;
+  res0[29] = w21;
+  res0[30] = w34;
+  res0[31] = w5;
+  res0[32] = w27;
+  res0[33] = w20;
+  res0[34] = w33;
+  res0[35] = w1;
+  res0[36] = w0;
+  res0[37] = w14;
+  res0[38] = w19;
+  res0[39] = w9;
+  res0[40] = w28;
+  res0[41] = w18;
+  res0[42] = w6;
+  res0[43] = w21;
+  res0[44] = w14;
+  res0[45] = w16;
+  res0[46] = w25;
+  res0[47] = w11;
+  res0[48] = w29;
+  res0[49] = w12;
+  res0[50] = w35;
+  res0[51] = w34;
+  res0[52] = w19;
+  res0[53] = w25;
+  res0[54] = w13;
+  res0[55] = w24;
+  res0[56] = w30;
+  res0[57] = w2;
+  res0[58] = w3;
+  res0[59] = w5;
+  res0[60] = w9;
+  res0[61] = w11;
+  res0[62] = w24;
+  res0[63] = w10;
+}
+
+
 CASADI_SYMBOL_EXPORT int snakecg_na5_batch_mass_matrix(casadi_int n, const casadi_real** arg,
     const casadi_int* stride, casadi_real** res) {
-  const casadi_real* a[4];
+  const casadi_real* a[2];
   casadi_real* r[1];
   casadi_int* iw = (casadi_int*) malloc(sizeof(casadi_int) * 1);
   casadi_real* w = (casadi_real*) malloc(sizeof(casadi_real) * 37);
   casadi_int i, k;
   int status = 0;
   if (!iw || !w) { free(iw); free(w); return -1; }
-  for (k = 0; k < 4; ++k) a[k] = 0;
+  for (k = 0; k < 2; ++k) a[k] = 0;
   for (k = 0; k < 1; ++k) r[k] = 0;
-  {
+  if (arg[0] && arg[1] && res[0]) {
     /* cos and sin of q[2..7] of 16 samples at a time, then snakecg_na5_mass_matrix_sincos
      * per sample (a batch of one too, so that a batch equals its samples one by one) */
     const casadi_int na = 6, per = 16;
     casadi_real ang[96], ca[96], sa[96];
     casadi_int i0, m;
     for (k = 0; k < 96; ++k) ang[k] = 0;
-    for (i0 = 0; i0 < n && status == 0; i0 += per) {
+    for (i0 = 0; i0 < n; i0 += per) {
       m = n - i0 < per ? n - i0 : per;
       for (i = 0; i < m; ++i) {
         const casadi_real* q = arg[0] + (i0 + i) * stride[0] + 2;
-        for (k = 0; k < na; ++k) ang[i * na + k] = arg[0] ? q[k] : 0;
+        for (k = 0; k < na; ++k) ang[i * na + k] = q[k];
       }
       for (k = 0; k < m * na; k += SNAKECG_SINCOS_BLOCK) {
         snakecg_sincos_block(ang + k, ca + k, sa + k);
       }
       for (i = 0; i < m; ++i) {
-        a[0] = arg[0] + (i0 + i) * stride[0];
-        a[1] = arg[1] + (i0 + i) * stride[1];
-        a[2] = ca + i * na;
-        a[3] = sa + i * na;
-        r[0] = res[0] + (i0 + i) * 64;
-        if (snakecg_na5_mass_matrix_sincos(a, r, iw, w, 0)) { status = (int) (i0 + i + 1); break; }
+        snakecg_na5_mass_matrix_sincos(arg[0] + (i0 + i) * stride[0], arg[1] + (i0 + i) * stride[1], ca + i * na, sa + i * na, res[0] + (i0 + i) * 64);
       }
+    }
+  } else {
+    /* a null input or output (CasADi's convention: zeros in, nothing out): per sample */
+    for (i = 0; i < n; ++i) {
+      a[0] = arg[0] + i * stride[0];
+      a[1] = arg[1] + i * stride[1];
+      r[0] = res[0] + i * 64;
+      if (snakecg_na5_mass_matrix(a, r, iw, w, 0)) { status = (int) (i + 1); break; }
     }
   }
   free(iw);

@@ -25,11 +25,9 @@
 
 /* Add prefix to internal symbols */
 #define casadi_f0 CASADI_PREFIX(f0)
-#define casadi_f1 CASADI_PREFIX(f1)
 #define casadi_s0 CASADI_PREFIX(s0)
 #define casadi_s1 CASADI_PREFIX(s1)
 #define casadi_s2 CASADI_PREFIX(s2)
-#define casadi_s3 CASADI_PREFIX(s3)
 
 /* Symbol visibility in DLLs */
 #ifndef CASADI_SYMBOL_EXPORT
@@ -58,7 +56,6 @@ CASADI_SYMBOL_EXPORT int snakecg_na6_mass_matrix_casadi_real_size(void) { return
 static const casadi_int casadi_s0[3] = {9, 1, 1};
 static const casadi_int casadi_s1[3] = {71, 1, 1};
 static const casadi_int casadi_s2[3] = {9, 9, 1};
-static const casadi_int casadi_s3[3] = {7, 1, 1};
 
 /* snakecg_na6_mass_matrix:(q[9],K[71])->(M[9x9]) */
 static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
@@ -445,388 +442,6 @@ CASADI_SYMBOL_EXPORT int snakecg_na6_mass_matrix_work_bytes(casadi_int *sz_arg, 
   return 0;
 }
 
-/* snakecg_na6_mass_matrix_sincos:(q[9],K[71],cos_q[7],sin_q[7])->(M[9x9]) */
-static int casadi_f1(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
-  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
-  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
-  casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
-  casadi_real a36, a37, a38, a39, a40, a41, a42, a43, a44, a45;
-  a00=arg[1]? arg[1][28] : 0;
-  if (res[0]!=0) res[0][0]=a00;
-  a01=0.;
-  if (res[0]!=0) res[0][1]=a01;
-  a02=arg[1]? arg[1][35] : 0;
-  a03=arg[2]? arg[2][0] : 0;
-  a04=arg[2]? arg[2][1] : 0;
-  a05=(a03*a04);
-  a06=arg[3]? arg[3][0] : 0;
-  a07=arg[3]? arg[3][1] : 0;
-  a08=(a06*a07);
-  a05=(a05-a08);
-  a08=arg[2]? arg[2][2] : 0;
-  a09=(a05*a08);
-  a07=(a03*a07);
-  a04=(a04*a06);
-  a07=(a07+a04);
-  a04=arg[3]? arg[3][2] : 0;
-  a10=(a07*a04);
-  a09=(a09-a10);
-  a10=arg[2]? arg[2][3] : 0;
-  a11=(a09*a10);
-  a04=(a05*a04);
-  a08=(a08*a07);
-  a04=(a04+a08);
-  a08=arg[3]? arg[3][3] : 0;
-  a12=(a04*a08);
-  a11=(a11-a12);
-  a12=arg[2]? arg[2][4] : 0;
-  a13=(a11*a12);
-  a08=(a09*a08);
-  a10=(a10*a04);
-  a08=(a08+a10);
-  a10=arg[3]? arg[3][4] : 0;
-  a14=(a08*a10);
-  a13=(a13-a14);
-  a14=arg[2]? arg[2][5] : 0;
-  a15=(a13*a14);
-  a10=(a11*a10);
-  a12=(a12*a08);
-  a10=(a10+a12);
-  a12=arg[3]? arg[3][5] : 0;
-  a16=(a10*a12);
-  a15=(a15-a16);
-  a16=arg[3]? arg[3][6] : 0;
-  a17=(a15*a16);
-  a18=arg[2]? arg[2][6] : 0;
-  a12=(a13*a12);
-  a14=(a14*a10);
-  a12=(a12+a14);
-  a14=(a18*a12);
-  a17=(a17+a14);
-  a17=(a02*a17);
-  a14=arg[1]? arg[1][34] : 0;
-  a19=(a14*a12);
-  a19=(a17+a19);
-  a20=arg[1]? arg[1][33] : 0;
-  a21=(a20*a10);
-  a21=(a19+a21);
-  a22=arg[1]? arg[1][32] : 0;
-  a23=(a22*a08);
-  a23=(a21+a23);
-  a24=arg[1]? arg[1][31] : 0;
-  a25=(a24*a04);
-  a25=(a23+a25);
-  a26=arg[1]? arg[1][30] : 0;
-  a27=(a26*a07);
-  a27=(a25+a27);
-  a28=arg[1]? arg[1][29] : 0;
-  a29=(a28*a06);
-  a29=(a27+a29);
-  a29=(-a29);
-  if (res[0]!=0) res[0][2]=a29;
-  a30=(-a27);
-  if (res[0]!=0) res[0][3]=a30;
-  a31=(-a25);
-  if (res[0]!=0) res[0][4]=a31;
-  a32=(-a23);
-  if (res[0]!=0) res[0][5]=a32;
-  a33=(-a21);
-  if (res[0]!=0) res[0][6]=a33;
-  a34=(-a19);
-  if (res[0]!=0) res[0][7]=a34;
-  a35=(-a17);
-  if (res[0]!=0) res[0][8]=a35;
-  if (res[0]!=0) res[0][9]=a01;
-  if (res[0]!=0) res[0][10]=a00;
-  a18=(a15*a18);
-  a16=(a12*a16);
-  a18=(a18-a16);
-  a02=(a02*a18);
-  a14=(a14*a15);
-  a14=(a02+a14);
-  a20=(a20*a13);
-  a20=(a14+a20);
-  a22=(a22*a11);
-  a22=(a20+a22);
-  a24=(a24*a09);
-  a24=(a22+a24);
-  a26=(a26*a05);
-  a26=(a24+a26);
-  a28=(a28*a03);
-  a28=(a26+a28);
-  if (res[0]!=0) res[0][11]=a28;
-  if (res[0]!=0) res[0][12]=a26;
-  if (res[0]!=0) res[0][13]=a24;
-  if (res[0]!=0) res[0][14]=a22;
-  if (res[0]!=0) res[0][15]=a20;
-  if (res[0]!=0) res[0][16]=a14;
-  if (res[0]!=0) res[0][17]=a02;
-  if (res[0]!=0) res[0][18]=a29;
-  if (res[0]!=0) res[0][19]=a28;
-  a28=arg[1]? arg[1][12] : 0;
-  a15=(a15*a28);
-  a15=(a02*a15);
-  a12=(a12*a28);
-  a12=(a17*a12);
-  a15=(a15+a12);
-  a12=arg[1]? arg[1][70] : 0;
-  a28=(a15+a12);
-  a15=(a28+a15);
-  a29=arg[1]? arg[1][69] : 0;
-  a15=(a15+a29);
-  a29=arg[1]? arg[1][11] : 0;
-  a13=(a13*a29);
-  a18=(a14*a13);
-  a10=(a10*a29);
-  a29=(a19*a10);
-  a18=(a18+a29);
-  a29=(a15+a18);
-  a18=(a29+a18);
-  a16=arg[1]? arg[1][68] : 0;
-  a18=(a18+a16);
-  a16=arg[1]? arg[1][10] : 0;
-  a11=(a11*a16);
-  a00=(a20*a11);
-  a08=(a08*a16);
-  a16=(a21*a08);
-  a00=(a00+a16);
-  a16=(a18+a00);
-  a00=(a16+a00);
-  a01=arg[1]? arg[1][67] : 0;
-  a00=(a00+a01);
-  a01=arg[1]? arg[1][9] : 0;
-  a09=(a09*a01);
-  a36=(a22*a09);
-  a04=(a04*a01);
-  a01=(a23*a04);
-  a36=(a36+a01);
-  a01=(a00+a36);
-  a36=(a01+a36);
-  a37=arg[1]? arg[1][66] : 0;
-  a36=(a36+a37);
-  a37=arg[1]? arg[1][8] : 0;
-  a05=(a05*a37);
-  a38=(a24*a05);
-  a07=(a07*a37);
-  a37=(a25*a07);
-  a38=(a38+a37);
-  a37=(a36+a38);
-  a38=(a37+a38);
-  a39=arg[1]? arg[1][65] : 0;
-  a38=(a38+a39);
-  a39=arg[1]? arg[1][7] : 0;
-  a40=arg[1]? arg[1][21] : 0;
-  a39=(a39-a40);
-  a03=(a03*a39);
-  a40=(a26*a03);
-  a39=(a39*a06);
-  a27=(a27*a39);
-  a40=(a40+a27);
-  a27=(a38+a40);
-  a40=(a27+a40);
-  a06=arg[1]? arg[1][64] : 0;
-  a40=(a40+a06);
-  if (res[0]!=0) res[0][20]=a40;
-  if (res[0]!=0) res[0][21]=a27;
-  a40=(a24*a03);
-  a25=(a25*a39);
-  a40=(a40+a25);
-  a40=(a37+a40);
-  if (res[0]!=0) res[0][22]=a40;
-  a25=(a22*a05);
-  a06=(a23*a07);
-  a25=(a25+a06);
-  a25=(a01+a25);
-  a06=(a22*a03);
-  a23=(a23*a39);
-  a06=(a06+a23);
-  a06=(a25+a06);
-  if (res[0]!=0) res[0][23]=a06;
-  a23=(a20*a09);
-  a41=(a21*a04);
-  a23=(a23+a41);
-  a23=(a16+a23);
-  a41=(a20*a05);
-  a42=(a21*a07);
-  a41=(a41+a42);
-  a41=(a23+a41);
-  a42=(a20*a03);
-  a21=(a21*a39);
-  a42=(a42+a21);
-  a42=(a41+a42);
-  if (res[0]!=0) res[0][24]=a42;
-  a21=(a14*a11);
-  a43=(a19*a08);
-  a21=(a21+a43);
-  a21=(a29+a21);
-  a43=(a14*a09);
-  a44=(a19*a04);
-  a43=(a43+a44);
-  a43=(a21+a43);
-  a44=(a14*a05);
-  a45=(a19*a07);
-  a44=(a44+a45);
-  a44=(a43+a44);
-  a45=(a14*a03);
-  a19=(a19*a39);
-  a45=(a45+a19);
-  a45=(a44+a45);
-  if (res[0]!=0) res[0][25]=a45;
-  a13=(a02*a13);
-  a10=(a17*a10);
-  a13=(a13+a10);
-  a13=(a28+a13);
-  a11=(a02*a11);
-  a08=(a17*a08);
-  a11=(a11+a08);
-  a11=(a13+a11);
-  a09=(a02*a09);
-  a04=(a17*a04);
-  a09=(a09+a04);
-  a09=(a11+a09);
-  a05=(a02*a05);
-  a07=(a17*a07);
-  a05=(a05+a07);
-  a05=(a09+a05);
-  a03=(a02*a03);
-  a17=(a17*a39);
-  a03=(a03+a17);
-  a03=(a05+a03);
-  if (res[0]!=0) res[0][26]=a03;
-  if (res[0]!=0) res[0][27]=a30;
-  if (res[0]!=0) res[0][28]=a26;
-  if (res[0]!=0) res[0][29]=a27;
-  if (res[0]!=0) res[0][30]=a38;
-  if (res[0]!=0) res[0][31]=a37;
-  if (res[0]!=0) res[0][32]=a25;
-  if (res[0]!=0) res[0][33]=a41;
-  if (res[0]!=0) res[0][34]=a44;
-  if (res[0]!=0) res[0][35]=a05;
-  if (res[0]!=0) res[0][36]=a31;
-  if (res[0]!=0) res[0][37]=a24;
-  if (res[0]!=0) res[0][38]=a40;
-  if (res[0]!=0) res[0][39]=a37;
-  if (res[0]!=0) res[0][40]=a36;
-  if (res[0]!=0) res[0][41]=a01;
-  if (res[0]!=0) res[0][42]=a23;
-  if (res[0]!=0) res[0][43]=a43;
-  if (res[0]!=0) res[0][44]=a09;
-  if (res[0]!=0) res[0][45]=a32;
-  if (res[0]!=0) res[0][46]=a22;
-  if (res[0]!=0) res[0][47]=a06;
-  if (res[0]!=0) res[0][48]=a25;
-  if (res[0]!=0) res[0][49]=a01;
-  if (res[0]!=0) res[0][50]=a00;
-  if (res[0]!=0) res[0][51]=a16;
-  if (res[0]!=0) res[0][52]=a21;
-  if (res[0]!=0) res[0][53]=a11;
-  if (res[0]!=0) res[0][54]=a33;
-  if (res[0]!=0) res[0][55]=a20;
-  if (res[0]!=0) res[0][56]=a42;
-  if (res[0]!=0) res[0][57]=a41;
-  if (res[0]!=0) res[0][58]=a23;
-  if (res[0]!=0) res[0][59]=a16;
-  if (res[0]!=0) res[0][60]=a18;
-  if (res[0]!=0) res[0][61]=a29;
-  if (res[0]!=0) res[0][62]=a13;
-  if (res[0]!=0) res[0][63]=a34;
-  if (res[0]!=0) res[0][64]=a14;
-  if (res[0]!=0) res[0][65]=a45;
-  if (res[0]!=0) res[0][66]=a44;
-  if (res[0]!=0) res[0][67]=a43;
-  if (res[0]!=0) res[0][68]=a21;
-  if (res[0]!=0) res[0][69]=a29;
-  if (res[0]!=0) res[0][70]=a15;
-  if (res[0]!=0) res[0][71]=a28;
-  if (res[0]!=0) res[0][72]=a35;
-  if (res[0]!=0) res[0][73]=a02;
-  if (res[0]!=0) res[0][74]=a03;
-  if (res[0]!=0) res[0][75]=a05;
-  if (res[0]!=0) res[0][76]=a09;
-  if (res[0]!=0) res[0][77]=a11;
-  if (res[0]!=0) res[0][78]=a13;
-  if (res[0]!=0) res[0][79]=a28;
-  if (res[0]!=0) res[0][80]=a12;
-  return 0;
-}
-
-CASADI_SYMBOL_EXPORT int snakecg_na6_mass_matrix_sincos(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f1(arg, res, iw, w, mem);
-}
-
-CASADI_SYMBOL_EXPORT int snakecg_na6_mass_matrix_sincos_checkout(void) {
-  return 0;
-}
-
-CASADI_SYMBOL_EXPORT void snakecg_na6_mass_matrix_sincos_release(int mem) {
-}
-
-CASADI_SYMBOL_EXPORT void snakecg_na6_mass_matrix_sincos_incref(void) {
-}
-
-CASADI_SYMBOL_EXPORT void snakecg_na6_mass_matrix_sincos_decref(void) {
-}
-
-CASADI_SYMBOL_EXPORT casadi_int snakecg_na6_mass_matrix_sincos_n_in(void) { return 4;}
-
-CASADI_SYMBOL_EXPORT casadi_int snakecg_na6_mass_matrix_sincos_n_out(void) { return 1;}
-
-CASADI_SYMBOL_EXPORT casadi_real snakecg_na6_mass_matrix_sincos_default_in(casadi_int i) {
-  switch (i) {
-    default: return 0;
-  }
-}
-
-CASADI_SYMBOL_EXPORT const char* snakecg_na6_mass_matrix_sincos_name_in(casadi_int i) {
-  switch (i) {
-    case 0: return "q";
-    case 1: return "K";
-    case 2: return "cos_q";
-    case 3: return "sin_q";
-    default: return 0;
-  }
-}
-
-CASADI_SYMBOL_EXPORT const char* snakecg_na6_mass_matrix_sincos_name_out(casadi_int i) {
-  switch (i) {
-    case 0: return "M";
-    default: return 0;
-  }
-}
-
-CASADI_SYMBOL_EXPORT const casadi_int* snakecg_na6_mass_matrix_sincos_sparsity_in(casadi_int i) {
-  switch (i) {
-    case 0: return casadi_s0;
-    case 1: return casadi_s1;
-    case 2: return casadi_s3;
-    case 3: return casadi_s3;
-    default: return 0;
-  }
-}
-
-CASADI_SYMBOL_EXPORT const casadi_int* snakecg_na6_mass_matrix_sincos_sparsity_out(casadi_int i) {
-  switch (i) {
-    case 0: return casadi_s2;
-    default: return 0;
-  }
-}
-
-CASADI_SYMBOL_EXPORT int snakecg_na6_mass_matrix_sincos_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
-  if (sz_arg) *sz_arg = 4;
-  if (sz_res) *sz_res = 1;
-  if (sz_iw) *sz_iw = 0;
-  if (sz_w) *sz_w = 0;
-  return 0;
-}
-
-CASADI_SYMBOL_EXPORT int snakecg_na6_mass_matrix_sincos_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
-  if (sz_arg) *sz_arg = 4*sizeof(const casadi_real*);
-  if (sz_res) *sz_res = 1*sizeof(casadi_real*);
-  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
-  if (sz_w) *sz_w = 0*sizeof(casadi_real);
-  return 0;
-}
-
 
 
 /* ------------------------------------------------------------------------------------------
@@ -890,41 +505,355 @@ static void snakecg_sincos_block(const casadi_real* restrict x, casadi_real* res
   }
 }
 
+/* snakecg_na6_mass_matrix_sincos: 296 CasADi instructions, printed one per line */
+static void snakecg_na6_mass_matrix_sincos(
+    const casadi_real* restrict arg0,
+    const casadi_real* restrict arg1,
+    const casadi_real* restrict arg2,
+    const casadi_real* restrict arg3,
+    casadi_real* restrict res0) {
+  casadi_real w0, w1, w2, w3, w4, w5, w6, w7, w8, w9;
+  casadi_real w10, w11, w12, w13, w14, w15, w16, w17, w18, w19;
+  casadi_real w20, w21, w22, w23, w24, w25, w26, w27, w28, w29;
+  casadi_real w30, w31, w32, w33, w34, w35, w36, w37, w38, w39;
+  casadi_real w40, w41, w42, w43, w44, w45;
+  w0 = arg1[28];
+  res0[0] = w0;
+  w1 = 0.0;
+  res0[1] = w1;
+  w2 = arg1[35];
+  w3 = arg2[0];
+  w4 = arg2[1];
+  w5 = w3 * w4;
+  w6 = arg3[0];
+  w7 = arg3[1];
+  w8 = w6 * w7;
+  w5 = w5 - w8;
+  w8 = arg2[2];
+  w9 = w5 * w8;
+  w7 = w3 * w7;
+  w4 = w4 * w6;
+  w7 = w7 + w4;
+  w4 = arg3[2];
+  w10 = w7 * w4;
+  w9 = w9 - w10;
+  w10 = arg2[3];
+  w11 = w9 * w10;
+  w4 = w5 * w4;
+  w8 = w8 * w7;
+  w4 = w4 + w8;
+  w8 = arg3[3];
+  w12 = w4 * w8;
+  w11 = w11 - w12;
+  w12 = arg2[4];
+  w13 = w11 * w12;
+  w8 = w9 * w8;
+  w10 = w10 * w4;
+  w8 = w8 + w10;
+  w10 = arg3[4];
+  w14 = w8 * w10;
+  w13 = w13 - w14;
+  w14 = arg2[5];
+  w15 = w13 * w14;
+  w10 = w11 * w10;
+  w12 = w12 * w8;
+  w10 = w10 + w12;
+  w12 = arg3[5];
+  w16 = w10 * w12;
+  w15 = w15 - w16;
+  w16 = arg3[6];
+  w17 = w15 * w16;
+  w18 = arg2[6];
+  w12 = w13 * w12;
+  w14 = w14 * w10;
+  w12 = w12 + w14;
+  w14 = w18 * w12;
+  w17 = w17 + w14;
+  w17 = w2 * w17;
+  w14 = arg1[34];
+  w19 = w14 * w12;
+  w19 = w17 + w19;
+  w20 = arg1[33];
+  w21 = w20 * w10;
+  w21 = w19 + w21;
+  w22 = arg1[32];
+  w23 = w22 * w8;
+  w23 = w21 + w23;
+  w24 = arg1[31];
+  w25 = w24 * w4;
+  w25 = w23 + w25;
+  w26 = arg1[30];
+  w27 = w26 * w7;
+  w27 = w25 + w27;
+  w28 = arg1[29];
+  w29 = w28 * w6;
+  w29 = w27 + w29;
+  w29 = -w29;
+  res0[2] = w29;
+  w30 = -w27;
+  res0[3] = w30;
+  w31 = -w25;
+  res0[4] = w31;
+  w32 = -w23;
+  res0[5] = w32;
+  w33 = -w21;
+  res0[6] = w33;
+  w34 = -w19;
+  res0[7] = w34;
+  w35 = -w17;
+  res0[8] = w35;
+  res0[9] = w1;
+  res0[10] = w0;
+  w18 = w15 * w18;
+  w16 = w12 * w16;
+  w18 = w18 - w16;
+  w2 = w2 * w18;
+  w14 = w14 * w15;
+  w14 = w2 + w14;
+  w20 = w20 * w13;
+  w20 = w14 + w20;
+  w22 = w22 * w11;
+  w22 = w20 + w22;
+  w24 = w24 * w9;
+  w24 = w22 + w24;
+  w26 = w26 * w5;
+  w26 = w24 + w26;
+  w28 = w28 * w3;
+  w28 = w26 + w28;
+  res0[11] = w28;
+  res0[12] = w26;
+  res0[13] = w24;
+  res0[14] = w22;
+  res0[15] = w20;
+  res0[16] = w14;
+  res0[17] = w2;
+  res0[18] = w29;
+  res0[19] = w28;
+  w28 = arg1[12];
+  w15 = w15 * w28;
+  w15 = w2 * w15;
+  w12 = w12 * w28;
+  w12 = w17 * w12;
+  w15 = w15 + w12;
+  w12 = arg1[70];
+  w28 = w15 + w12;
+  w15 = w28 + w15;
+  w29 = arg1[69];
+  w15 = w15 + w29;
+  w29 = arg1[11];
+  w13 = w13 * w29;
+  w18 = w14 * w13;
+  w10 = w10 * w29;
+  w29 = w19 * w10;
+  w18 = w18 + w29;
+  w29 = w15 + w18;
+  w18 = w29 + w18;
+  w16 = arg1[68];
+  w18 = w18 + w16;
+  w16 = arg1[10];
+  w11 = w11 * w16;
+  w0 = w20 * w11;
+  w8 = w8 * w16;
+  w16 = w21 * w8;
+  w0 = w0 + w16;
+  w16 = w18 + w0;
+  w0 = w16 + w0;
+  w1 = arg1[67];
+  w0 = w0 + w1;
+  w1 = arg1[9];
+  w9 = w9 * w1;
+  w36 = w22 * w9;
+  w4 = w4 * w1;
+  w1 = w23 * w4;
+  w36 = w36 + w1;
+  w1 = w0 + w36;
+  w36 = w1 + w36;
+  w37 = arg1[66];
+  w36 = w36 + w37;
+  w37 = arg1[8];
+  w5 = w5 * w37;
+  w38 = w24 * w5;
+  w7 = w7 * w37;
+  w37 = w25 * w7;
+  w38 = w38 + w37;
+  w37 = w36 + w38;
+  w38 = w37 + w38;
+  w39 = arg1[65];
+  w38 = w38 + w39;
+  w39 = arg1[7];
+  w40 = arg1[21];
+  w39 = w39 - w40;
+  w3 = w3 * w39;
+  w40 = w26 * w3;
+  w39 = w39 * w6;
+  w27 = w27 * w39;
+  w40 = w40 + w27;
+  w27 = w38 + w40;
+  w40 = w27 + w40;
+  w6 = arg1[64];
+  w40 = w40 + w6;
+  res0[20] = w40;
+  res0[21] = w27;
+  w40 = w24 * w3;
+  w25 = w25 * w39;
+  w40 = w40 + w25;
+  w40 = w37 + w40;
+  res0[22] = w40;
+  w25 = w22 * w5;
+  w6 = w23 * w7;
+  w25 = w25 + w6;
+  w25 = w1 + w25;
+  w6 = w22 * w3;
+  w23 = w23 * w39;
+  w6 = w6 + w23;
+  w6 = w25 + w6;
+  res0[23] = w6;
+  w23 = w20 * w9;
+  w41 = w21 * w4;
+  w23 = w23 + w41;
+  w23 = w16 + w23;
+  w41 = w20 * w5;
+  w42 = w21 * w7;
+  w41 = w41 + w42;
+  w41 = w23 + w41;
+  w42 = w20 * w3;
+  w21 = w21 * w39;
+  w42 = w42 + w21;
+  w42 = w41 + w42;
+  res0[24] = w42;
+  w21 = w14 * w11;
+  w43 = w19 * w8;
+  w21 = w21 + w43;
+  w21 = w29 + w21;
+  w43 = w14 * w9;
+  w44 = w19 * w4;
+  w43 = w43 + w44;
+  w43 = w21 + w43;
+  w44 = w14 * w5;
+  w45 = w19 * w7;
+  w44 = w44 + w45;
+  w44 = w43 + w44;
+  w45 = w14 * w3;
+  w19 = w19 * w39;
+  w45 = w45 + w19;
+  w45 = w44 + w45;
+  res0[25] = w45;
+  w13 = w2 * w13;
+  w10 = w17 * w10;
+  w13 = w13 + w10;
+  w13 = w28 + w13;
+  w11 = w2 * w11;
+  w8 = w17 * w8;
+  w11 = w11 + w8;
+  w11 = w13 + w11;
+  w9 = w2 * w9;
+  w4 = w17 * w4;
+  w9 = w9 + w4;
+  w9 = w11 + w9;
+  w5 = w2 * w5;
+  w7 = w17 * w7;
+  w5 = w5 + w7;
+  w5 = w9 + w5;
+  w3 = w2 * w3;
+  w17 = w17 * w39;
+  w3 = w3 + w17;
+  w3 = w5 + w3;
+  res0[26] = w3;
+  res0[27] = w30;
+  res0[28] = w26;
+  res0[29] = w27;
+  res0[30] = w38;
+  res0[31] = w37;
+  res0[32] = w25;
+  res0[33] = w41;
+  res0[34] = w44;
+  res0[35] = w5;
+  res0[36] = w31;
+  res0[37] = w24;
+  res0[38] = w40;
+  res0[39] = w37;
+  res0[40] = w36;
+  res0[41] = w1;
+  res0[42] = w23;
+  res0[43] = w43;
+  res0[44] = w9;
+  res0[45] = w32;
+  res0[46] = w22;
+  res0[47] = w6;
+  res0[48] = w25;
+  res0[49] = w1;
+  res0[50] = w0;
+  res0[51] = w16;
+  res0[52] = w21;
+  res0[53] = w11;
+  res0[54] = w33;
+  res0[55] = w20;
+  res0[56] = w42;
+  res0[57] = w41;
+  res0[58] = w23;
+  res0[59] = w16;
+  res0[60] = w18;
+  res0[61] = w29;
+  res0[62] = w13;
+  res0[63] = w34;
+  res0[64] = w14;
+  res0[65] = w45;
+  res0[66] = w44;
+  res0[67] = w43;
+  res0[68] = w21;
+  res0[69] = w29;
+  res0[70] = w15;
+  res0[71] = w28;
+  res0[72] = w35;
+  res0[73] = w2;
+  res0[74] = w3;
+  res0[75] = w5;
+  res0[76] = w9;
+  res0[77] = w11;
+  res0[78] = w13;
+  res0[79] = w28;
+  res0[80] = w12;
+}
+
+
 CASADI_SYMBOL_EXPORT int snakecg_na6_batch_mass_matrix(casadi_int n, const casadi_real** arg,
     const casadi_int* stride, casadi_real** res) {
-  const casadi_real* a[4];
+  const casadi_real* a[2];
   casadi_real* r[1];
   casadi_int* iw = (casadi_int*) malloc(sizeof(casadi_int) * 1);
   casadi_real* w = (casadi_real*) malloc(sizeof(casadi_real) * 47);
   casadi_int i, k;
   int status = 0;
   if (!iw || !w) { free(iw); free(w); return -1; }
-  for (k = 0; k < 4; ++k) a[k] = 0;
+  for (k = 0; k < 2; ++k) a[k] = 0;
   for (k = 0; k < 1; ++k) r[k] = 0;
-  {
+  if (arg[0] && arg[1] && res[0]) {
     /* cos and sin of q[2..8] of 16 samples at a time, then snakecg_na6_mass_matrix_sincos
      * per sample (a batch of one too, so that a batch equals its samples one by one) */
     const casadi_int na = 7, per = 16;
     casadi_real ang[112], ca[112], sa[112];
     casadi_int i0, m;
     for (k = 0; k < 112; ++k) ang[k] = 0;
-    for (i0 = 0; i0 < n && status == 0; i0 += per) {
+    for (i0 = 0; i0 < n; i0 += per) {
       m = n - i0 < per ? n - i0 : per;
       for (i = 0; i < m; ++i) {
         const casadi_real* q = arg[0] + (i0 + i) * stride[0] + 2;
-        for (k = 0; k < na; ++k) ang[i * na + k] = arg[0] ? q[k] : 0;
+        for (k = 0; k < na; ++k) ang[i * na + k] = q[k];
       }
       for (k = 0; k < m * na; k += SNAKECG_SINCOS_BLOCK) {
         snakecg_sincos_block(ang + k, ca + k, sa + k);
       }
       for (i = 0; i < m; ++i) {
-        a[0] = arg[0] + (i0 + i) * stride[0];
-        a[1] = arg[1] + (i0 + i) * stride[1];
-        a[2] = ca + i * na;
-        a[3] = sa + i * na;
-        r[0] = res[0] + (i0 + i) * 81;
-        if (snakecg_na6_mass_matrix_sincos(a, r, iw, w, 0)) { status = (int) (i0 + i + 1); break; }
+        snakecg_na6_mass_matrix_sincos(arg[0] + (i0 + i) * stride[0], arg[1] + (i0 + i) * stride[1], ca + i * na, sa + i * na, res[0] + (i0 + i) * 81);
       }
+    }
+  } else {
+    /* a null input or output (CasADi's convention: zeros in, nothing out): per sample */
+    for (i = 0; i < n; ++i) {
+      a[0] = arg[0] + i * stride[0];
+      a[1] = arg[1] + i * stride[1];
+      r[0] = res[0] + i * 81;
+      if (snakecg_na6_mass_matrix(a, r, iw, w, 0)) { status = (int) (i + 1); break; }
     }
   }
   free(iw);
