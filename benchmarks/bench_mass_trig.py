@@ -14,7 +14,9 @@ load:
   sample);
 * **sincos**: the ``n_a + 1`` calls ``sincos(theta)``, ``sincos(q_i)`` alone;
 * **writing M**: storing the ``n_s^2`` doubles of every configuration's M and nothing else,
-  the memory traffic that no evaluation of a batch avoids.
+  the memory traffic that no evaluation of a batch avoids;
+* **instructions** per configuration of the first two (``valgrind --tool=callgrind`` on one
+  pass over 10,000 configurations, when valgrind is installed): independent of the load.
 
 **Python table** (``--python``, one joint count): ``model.mass_matrix(Q)`` of the compiled
 model with ``SNAKECG_THREADS=1`` for batches of 1,000 to 100,000 configurations, beside two
@@ -32,6 +34,7 @@ from __future__ import annotations
 import argparse
 import os
 import platform
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -55,8 +58,24 @@ int %(batch)s(casadi_int n, const double** arg, const casadi_int* stride, double
 static double now(void) {
   struct timespec t; clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t); return t.tv_sec + 1e-9 * t.tv_nsec;
 }
-int main(void) {
-  const int N = 100000, nq = %(nq)d, nK = %(nK)d, nM = nq * nq, na = %(na)d;
+/* one pass of each path in a function of its own, for counting instructions (callgrind) */
+__attribute__((noinline)) void per_sample(int N, const double* Q, const double* K, double* out,
+                                          int nq, int nM) {
+  int i;
+  for (i = 0; i < N; ++i) {
+    const double* a[2]; double* r[1]; double w[%(nw)d]; casadi_int iw[%(niw)d];
+    a[0] = Q + i * nq; a[1] = K; r[0] = out + i * nM;
+    %(symbol)s(a, r, iw, w, 0);
+  }
+}
+__attribute__((noinline)) void batched(int N, const double* Q, const double* K, double* out,
+                                       int nq) {
+  const double* a[2]; double* r[1]; casadi_int stride[2];
+  a[0] = Q; a[1] = K; r[0] = out; stride[0] = nq; stride[1] = 0;
+  %(batch)s(N, a, stride, r);
+}
+int main(int argc, char** argv) {
+  const int N = argc > 1 ? 10000 : 100000, nq = %(nq)d, nK = %(nK)d, nM = nq * nq, na = %(na)d;
   double *Q = malloc(sizeof(double) * N * nq), *out = malloc(sizeof(double) * N * nM);
   double *cs = malloc(sizeof(double) * N * 2 * (na + 1)), K[%(nK)d], w[%(nw)d];
   casadi_int iw[%(niw)d];
@@ -66,6 +85,12 @@ int main(void) {
   srand(1);
   for (i = 0; i < N * nq; ++i) Q[i] = M_PI * (2.0 * rand() / RAND_MAX - 1.0);
   for (i = 0; i < nK; ++i) K[i] = 0.1 + 0.01 * i;
+  if (argc > 1) {  /* "count": each path once, nothing timed */
+    per_sample(N, Q, K, out, nq, nM);
+    batched(N, Q, K, out2, nq);
+    printf("%%g\n", out[N * nM - 1] + out2[N * nM - 1]);
+    return 0;
+  }
   for (rep = 0; rep < 15; ++rep) {
     double t = now();
     for (i = 0; i < N; ++i) {
@@ -108,7 +133,7 @@ int main(void) {
 """
 
 
-def measure(joints: int, cc: str) -> tuple[float, float, float, float, float]:
+def measure(joints: int, cc: str) -> tuple[float, float, float, float, float, dict]:
     import json
 
     folder = ROOT / "generated" / f"na{joints}"
@@ -124,8 +149,17 @@ def measure(joints: int, cc: str) -> tuple[float, float, float, float, float]:
         subprocess.run([cc, "-O2", "-fPIC", "-o", str(exe), str(harness),
                         str(folder / "c" / "mass_matrix.c"), "-lm"], check=True)
         out = subprocess.run([str(exe)], check=True, capture_output=True, text=True).stdout
+        counts = {}
+        if shutil.which("valgrind"):  # instructions per configuration: the load does not matter
+            for fn in ("per_sample", "batched"):
+                log = Path(tmp) / f"callgrind.{fn}"
+                subprocess.run(["valgrind", "--tool=callgrind", f"--callgrind-out-file={log}",
+                                f"--toggle-collect={fn}", str(exe), "count"], check=True,
+                               capture_output=True)
+                summary = [x for x in log.read_text().splitlines() if x.startswith("summary:")]
+                counts[fn] = int(summary[0].split()[1]) / 10_000
     m_us, t_us, b_us, w_us, diff, _ = (float(x) for x in out.split())
-    return m_us, t_us, b_us, w_us, diff
+    return m_us, t_us, b_us, w_us, diff, counts
 
 
 def dense_mass_matrix(robot, Q: np.ndarray) -> np.ndarray:
@@ -217,15 +251,17 @@ def main(argv=None) -> int:
     print(f"machine: {os.cpu_count()} CPUs, {cpu_name()}; Python {platform.python_version()};"
           f" {cc} -O2; load average {load}")
     print("| n_a | M per sample µs/cfg | batched M µs/cfg | sincos µs/cfg | writing M µs/cfg |"
-          " sincos / M per sample | per sample / batched |")
-    print("|---:|---:|---:|---:|---:|---:|---:|")
+          " sincos / M per sample | per sample / batched | instructions/cfg per sample |"
+          " instructions/cfg batched |")
+    print("|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
     joints = [int(x) for x in a.joints.split(",")]
     for n in joints:
-        m_us, t_us, b_us, w_us, diff = measure(n, cc)
+        m_us, t_us, b_us, w_us, diff, counts = measure(n, cc)
         if diff > 1e-12:
             raise SystemExit(f"batched and per-sample M differ by {diff:g} at n_a = {n}")
+        ins = [f"{counts[k]:.0f}" if k in counts else "–" for k in ("per_sample", "batched")]
         print(f"| {n} | {m_us:.4f} | {b_us:.4f} | {t_us:.4f} | {w_us:.4f} | {t_us / m_us:.0%} |"
-              f" {m_us / b_us:.2f} |", flush=True)
+              f" {m_us / b_us:.2f} | {ins[0]} | {ins[1]} |", flush=True)
     if a.python:
         python_table(joints[0])
     print(f"load average at the end: {', '.join(f'{x:.2f}' for x in os.getloadavg())}")
