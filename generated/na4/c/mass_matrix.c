@@ -341,7 +341,8 @@ CASADI_SYMBOL_EXPORT int snakecg_na4_mass_matrix_work_bytes(casadi_int *sz_arg, 
  * Reduction by pi/2 in three parts (Cody and Waite, exact products for |x| < 2^20 pi/2) and
  * fdlibm's polynomials of sin and cos on [-pi/4, pi/4] (errors below one unit in the last
  * place there); the quadrant turns the pair by n pi/2 with factors 0, +1, -1 (exact). An
- * angle with |x| above SNAKECG_SINCOS_MAX, or not a number, is left to the C library. */
+ * angle with |x| above SNAKECG_SINCOS_MAX, or not a number, is left to the C library
+ * (snakecg_sincos_large). */
 #define SNAKECG_SINCOS_BLOCK 16
 #define SNAKECG_SINCOS_MAX 8.0e5
 
@@ -378,7 +379,14 @@ static void snakecg_sincos_block(const casadi_real* restrict x, casadi_real* res
     c[i] = cy * cq - sy * sq;
     s[i] = sy * cq + cy * sq;
   }
-  for (i = 0; i < SNAKECG_SINCOS_BLOCK; ++i) {
+}
+
+/* the C library's cos and sin where |x| > SNAKECG_SINCOS_MAX or x is not a number (the
+ * driver calls this only when it met such an angle while gathering them) */
+static void snakecg_sincos_large(const casadi_real* x, casadi_real* c, casadi_real* s,
+                                 casadi_int n) {
+  casadi_int i;
+  for (i = 0; i < n; ++i) {
     if (!(fabs(x[i]) <= SNAKECG_SINCOS_MAX)) {
       c[i] = cos(x[i]);
       s[i] = sin(x[i]);
@@ -596,16 +604,22 @@ CASADI_SYMBOL_EXPORT int snakecg_na4_batch_mass_matrix(casadi_int n, const casad
     const casadi_int na = 5, per = 16;
     casadi_real ang[80], ca[80], sa[80];
     casadi_int i0, m;
+    int large;
     for (k = 0; k < 80; ++k) ang[k] = 0;
     for (i0 = 0; i0 < n; i0 += per) {
       m = n - i0 < per ? n - i0 : per;
+      large = 0;
       for (i = 0; i < m; ++i) {
         const casadi_real* q = arg[0] + (i0 + i) * stride[0] + 2;
-        for (k = 0; k < na; ++k) ang[i * na + k] = q[k];
+        for (k = 0; k < na; ++k) {
+          ang[i * na + k] = q[k];
+          large |= !(fabs(q[k]) <= SNAKECG_SINCOS_MAX);
+        }
       }
       for (k = 0; k < m * na; k += SNAKECG_SINCOS_BLOCK) {
         snakecg_sincos_block(ang + k, ca + k, sa + k);
       }
+      if (large) snakecg_sincos_large(ang, ca, sa, m * na);
       for (i = 0; i < m; ++i) {
         snakecg_na4_mass_matrix_sincos(arg[0] + (i0 + i) * stride[0], arg[1] + (i0 + i) * stride[1], ca + i * na, sa + i * na, res[0] + (i0 + i) * 49);
       }
