@@ -14,7 +14,8 @@ import sympy as sp
 
 from .spec import FunctionSpec, topological_assignments
 
-__all__ = ["cse_program", "build_function", "to_sx", "signature", "operation_count"]
+__all__ = ["cse_program", "build_function", "build_sincos_function", "to_sx", "signature",
+           "operation_count"]
 
 _UNARY = {"sin": ca.sin, "cos": ca.cos, "tan": ca.tan, "sqrt": ca.sqrt, "exp": ca.exp,
           "log": ca.log}
@@ -124,6 +125,56 @@ def build_function(f: FunctionSpec, prefix: str) -> ca.Function:
         results.append(ca.reshape(col, rows, cols))
     return ca.Function(prefix + f.name, args, [ca.densify(o) for o in ca.cse(results)],
                        [n for n, _, _ in f.inputs], [n for n, _, _ in f.outputs])
+
+
+def build_sincos_function(f: FunctionSpec, prefix: str) -> ca.Function | None:
+    """``<prefix><f.name>_sincos``: the program of :func:`build_function` with the cosines and
+    sines of the rotational coordinates given as two more inputs, ``cos_q`` and ``sin_q``
+    (``cos``/``sin`` of ``q[2:]``), instead of computed; ``None`` when ``f`` has no input ``q``
+    or computes another trigonometric function.
+
+    The batched driver computes those for a whole block of samples at once (vectorized, see
+    ``derive/templates/batch.c.j2``) and calls this per sample: same arithmetic otherwise.
+    """
+    names = [name for name, _, _ in f.inputs]
+    if "q" not in names:
+        return None
+    q_syms = f.inputs[names.index("q")][1]
+    angles = list(q_syms[2:])
+    env: dict = {}
+    args = []
+    for name, syms, _ in f.inputs:
+        x = ca.SX.sym(name, len(syms))
+        args.append(x)
+        for k, s in enumerate(syms):
+            env[s] = x[k]
+    cos_q = ca.SX.sym("cos_q", len(angles))
+    sin_q = ca.SX.sym("sin_q", len(angles))
+    given = {}
+    for k, a in enumerate(angles):
+        given[sp.cos(a)] = cos_q[k]
+        given[sp.sin(a)] = sin_q[k]
+    ordered, outs = cse_program(f)
+    used = False
+    for sym, expr in ordered:
+        if expr in given:
+            env[sym] = given[expr]
+            used = True
+        else:
+            env[sym] = to_sx(expr, env)
+    if not used:
+        return None
+    results = []
+    for _, rows, cols, elements in outs:
+        col = ca.vertcat(*[to_sx(e, env) for e in elements]) if elements else ca.SX(0, 1)
+        results.append(ca.reshape(col, rows, cols))
+    fn = ca.Function(prefix + f.name + "_sincos", args + [cos_q, sin_q],
+                     [ca.densify(o) for o in ca.cse(results)],
+                     names + ["cos_q", "sin_q"], [n for n, _, _ in f.outputs])
+    trig = {ca.OP_SIN, ca.OP_COS, ca.OP_TAN}
+    if any(fn.instruction_id(k) in trig for k in range(fn.n_instructions())):
+        return None
+    return fn
 
 
 def operation_count(fn: ca.Function) -> int | None:

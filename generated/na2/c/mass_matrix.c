@@ -239,6 +239,166 @@ CASADI_SYMBOL_EXPORT int snakecg_na2_mass_matrix_work_bytes(casadi_int *sz_arg, 
  * ---------------------------------------------------------------------------------------- */
 #include <stdlib.h>
 
+/* Cosines and sines of a block of angles in one loop without calls or branches, which the
+ * compiler turns into vector instructions (16 angles per call): the sines and cosines of
+ * the angles of 16 samples are computed at once, then the function without its own calls
+ * runs per sample.
+ * Reduction by pi/2 in three parts (Cody and Waite, exact products for |x| < 2^20 pi/2) and
+ * fdlibm's polynomials of sin and cos on [-pi/4, pi/4] (errors below one unit in the last
+ * place there); the quadrant turns the pair by n pi/2 with factors 0, +1, -1 (exact). An
+ * angle with |x| above SNAKECG_SINCOS_MAX, or not a number, is left to the C library
+ * (snakecg_sincos_large). */
+#define SNAKECG_SINCOS_BLOCK 16
+#define SNAKECG_SINCOS_MAX 8.0e5
+
+#if defined(__GNUC__) && !defined(__clang__) && __GNUC__ >= 6 && defined(__x86_64__) \
+    && defined(__linux__)
+/* a second copy for processors with AVX2 (four angles per instruction), chosen at load time */
+__attribute__((target_clones("avx2", "default")))
+#endif
+static void snakecg_sincos_block(const casadi_real* restrict x, casadi_real* restrict c,
+                                 casadi_real* restrict s) {
+  const casadi_real round = 6755399441055744.0; /* 1.5 * 2^52: adding it rounds to integers */
+  const casadi_real two_over_pi = 6.36619772367581382433e-01;
+  const casadi_real pio2_1 = 1.57079632673412561417e+00; /* pi/2: first 33 bits */
+  const casadi_real pio2_2 = 6.07710050630396597660e-11; /* next 33 bits */
+  const casadi_real pio2_3 = 2.02226624871116645580e-21; /* the rest */
+  const casadi_real S1 = -1.66666666666666324348e-01, S2 = 8.33333333332248946124e-03,
+      S3 = -1.98412698298579493134e-04, S4 = 2.75573137070700676789e-06,
+      S5 = -2.50507602534068634195e-08, S6 = 1.58969099521155010221e-10;
+  const casadi_real C1 = 4.16666666666666019037e-02, C2 = -1.38888888888741095749e-03,
+      C3 = 2.48015872894767294178e-05, C4 = -2.75573143513906633035e-07,
+      C5 = 2.08757232129817482790e-09, C6 = -1.13596475577881948265e-11;
+  int i;
+  for (i = 0; i < SNAKECG_SINCOS_BLOCK; ++i) {
+    casadi_real n = (x[i] * two_over_pi + round) - round;  /* nearest multiple of pi/2 */
+    casadi_real m = n - 4.0 * ((0.25 * n + round) - round); /* n mod 4 in -2..2 */
+    casadi_real am = fabs(m);
+    casadi_real cq = 1.0 - am, sq = m * (2.0 - am);          /* cos, sin of n pi/2 */
+    casadi_real y = ((x[i] - n * pio2_1) - n * pio2_2) - n * pio2_3;
+    casadi_real z = y * y;
+    casadi_real sy = y + z * y * (S1 + z * (S2 + z * (S3 + z * (S4 + z * (S5 + z * S6)))));
+    casadi_real hz = 0.5 * z, w = 1.0 - hz;
+    casadi_real cy = w + (((1.0 - w) - hz)
+                          + z * z * (C1 + z * (C2 + z * (C3 + z * (C4 + z * (C5 + z * C6))))));
+    c[i] = cy * cq - sy * sq;
+    s[i] = sy * cq + cy * sq;
+  }
+}
+
+/* the C library's cos and sin where |x| > SNAKECG_SINCOS_MAX or x is not a number (the
+ * driver calls this only when it met such an angle while gathering them) */
+static void snakecg_sincos_large(const casadi_real* x, casadi_real* c, casadi_real* s,
+                                 casadi_int n) {
+  casadi_int i;
+  for (i = 0; i < n; ++i) {
+    if (!(fabs(x[i]) <= SNAKECG_SINCOS_MAX)) {
+      c[i] = cos(x[i]);
+      s[i] = sin(x[i]);
+    }
+  }
+}
+
+/* snakecg_na2_mass_matrix_sincos: 88 CasADi instructions, printed one per line */
+static void snakecg_na2_mass_matrix_sincos(
+    const casadi_real* restrict arg0,
+    const casadi_real* restrict arg1,
+    const casadi_real* restrict arg2,
+    const casadi_real* restrict arg3,
+    casadi_real* restrict res0) {
+  casadi_real w0, w1, w2, w3, w4, w5, w6, w7, w8, w9;
+  casadi_real w10, w11, w12, w13, w14, w15;
+  w0 = arg1[12];
+  res0[0] = w0;
+  w1 = 0.0;
+  res0[1] = w1;
+  w2 = arg1[15];
+  w3 = arg2[0];
+  w4 = arg2[1];
+  w5 = w3 * w4;
+  w6 = arg3[0];
+  w7 = arg3[1];
+  w8 = w6 * w7;
+  w5 = w5 - w8;
+  w8 = arg3[2];
+  w9 = w5 * w8;
+  w10 = arg2[2];
+  w7 = w3 * w7;
+  w4 = w4 * w6;
+  w7 = w7 + w4;
+  w4 = w10 * w7;
+  w9 = w9 + w4;
+  w9 = w2 * w9;
+  w4 = arg1[14];
+  w11 = w4 * w7;
+  w11 = w9 + w11;
+  w12 = arg1[13];
+  w13 = w12 * w6;
+  w13 = w11 + w13;
+  w13 = -w13;
+  res0[2] = w13;
+  w14 = -w11;
+  res0[3] = w14;
+  w15 = -w9;
+  res0[4] = w15;
+  res0[5] = w1;
+  res0[6] = w0;
+  w10 = w5 * w10;
+  w8 = w7 * w8;
+  w10 = w10 - w8;
+  w2 = w2 * w10;
+  w4 = w4 * w5;
+  w4 = w2 + w4;
+  w12 = w12 * w3;
+  w12 = w4 + w12;
+  res0[7] = w12;
+  res0[8] = w4;
+  res0[9] = w2;
+  res0[10] = w13;
+  res0[11] = w12;
+  w12 = arg1[4];
+  w5 = w5 * w12;
+  w5 = w2 * w5;
+  w7 = w7 * w12;
+  w7 = w9 * w7;
+  w5 = w5 + w7;
+  w7 = arg1[24];
+  w12 = w5 + w7;
+  w5 = w12 + w5;
+  w13 = arg1[23];
+  w5 = w5 + w13;
+  w13 = arg1[3];
+  w10 = arg1[9];
+  w13 = w13 - w10;
+  w3 = w3 * w13;
+  w10 = w4 * w3;
+  w13 = w13 * w6;
+  w11 = w11 * w13;
+  w10 = w10 + w11;
+  w11 = w5 + w10;
+  w10 = w11 + w10;
+  w6 = arg1[22];
+  w10 = w10 + w6;
+  res0[12] = w10;
+  res0[13] = w11;
+  w3 = w2 * w3;
+  w9 = w9 * w13;
+  w3 = w3 + w9;
+  w3 = w12 + w3;
+  res0[14] = w3;
+  res0[15] = w14;
+  res0[16] = w4;
+  res0[17] = w11;
+  res0[18] = w5;
+  res0[19] = w12;
+  res0[20] = w15;
+  res0[21] = w2;
+  res0[22] = w3;
+  res0[23] = w12;
+  res0[24] = w7;
+}
+
+
 CASADI_SYMBOL_EXPORT int snakecg_na2_batch_mass_matrix(casadi_int n, const casadi_real** arg,
     const casadi_int* stride, casadi_real** res) {
   const casadi_real* a[2];
@@ -250,11 +410,40 @@ CASADI_SYMBOL_EXPORT int snakecg_na2_batch_mass_matrix(casadi_int n, const casad
   if (!iw || !w) { free(iw); free(w); return -1; }
   for (k = 0; k < 2; ++k) a[k] = 0;
   for (k = 0; k < 1; ++k) r[k] = 0;
-  for (i = 0; i < n; ++i) {
-    a[0] = arg[0] + i * stride[0];
-    a[1] = arg[1] + i * stride[1];
-    r[0] = res[0] + i * 25;
-    if (snakecg_na2_mass_matrix(a, r, iw, w, 0)) { status = (int) (i + 1); break; }
+  if (arg[0] && arg[1] && res[0]) {
+    /* cos and sin of q[2..4] of 16 samples at a time, then snakecg_na2_mass_matrix_sincos
+     * per sample (a batch of one too, so that a batch equals its samples one by one) */
+    const casadi_int na = 3, per = 16;
+    casadi_real ang[48], ca[48], sa[48];
+    casadi_int i0, m;
+    int large;
+    for (k = 0; k < 48; ++k) ang[k] = 0;
+    for (i0 = 0; i0 < n; i0 += per) {
+      m = n - i0 < per ? n - i0 : per;
+      large = 0;
+      for (i = 0; i < m; ++i) {
+        const casadi_real* q = arg[0] + (i0 + i) * stride[0] + 2;
+        for (k = 0; k < na; ++k) {
+          ang[i * na + k] = q[k];
+          large |= !(fabs(q[k]) <= SNAKECG_SINCOS_MAX);
+        }
+      }
+      for (k = 0; k < m * na; k += SNAKECG_SINCOS_BLOCK) {
+        snakecg_sincos_block(ang + k, ca + k, sa + k);
+      }
+      if (large) snakecg_sincos_large(ang, ca, sa, m * na);
+      for (i = 0; i < m; ++i) {
+        snakecg_na2_mass_matrix_sincos(arg[0] + (i0 + i) * stride[0], arg[1] + (i0 + i) * stride[1], ca + i * na, sa + i * na, res[0] + (i0 + i) * 25);
+      }
+    }
+  } else {
+    /* a null input or output (CasADi's convention: zeros in, nothing out): per sample */
+    for (i = 0; i < n; ++i) {
+      a[0] = arg[0] + i * stride[0];
+      a[1] = arg[1] + i * stride[1];
+      r[0] = res[0] + i * 25;
+      if (snakecg_na2_mass_matrix(a, r, iw, w, 0)) { status = (int) (i + 1); break; }
+    }
   }
   free(iw);
   free(w);

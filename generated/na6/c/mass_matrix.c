@@ -453,6 +453,377 @@ CASADI_SYMBOL_EXPORT int snakecg_na6_mass_matrix_work_bytes(casadi_int *sz_arg, 
  * ---------------------------------------------------------------------------------------- */
 #include <stdlib.h>
 
+/* Cosines and sines of a block of angles in one loop without calls or branches, which the
+ * compiler turns into vector instructions (16 angles per call): the sines and cosines of
+ * the angles of 16 samples are computed at once, then the function without its own calls
+ * runs per sample.
+ * Reduction by pi/2 in three parts (Cody and Waite, exact products for |x| < 2^20 pi/2) and
+ * fdlibm's polynomials of sin and cos on [-pi/4, pi/4] (errors below one unit in the last
+ * place there); the quadrant turns the pair by n pi/2 with factors 0, +1, -1 (exact). An
+ * angle with |x| above SNAKECG_SINCOS_MAX, or not a number, is left to the C library
+ * (snakecg_sincos_large). */
+#define SNAKECG_SINCOS_BLOCK 16
+#define SNAKECG_SINCOS_MAX 8.0e5
+
+#if defined(__GNUC__) && !defined(__clang__) && __GNUC__ >= 6 && defined(__x86_64__) \
+    && defined(__linux__)
+/* a second copy for processors with AVX2 (four angles per instruction), chosen at load time */
+__attribute__((target_clones("avx2", "default")))
+#endif
+static void snakecg_sincos_block(const casadi_real* restrict x, casadi_real* restrict c,
+                                 casadi_real* restrict s) {
+  const casadi_real round = 6755399441055744.0; /* 1.5 * 2^52: adding it rounds to integers */
+  const casadi_real two_over_pi = 6.36619772367581382433e-01;
+  const casadi_real pio2_1 = 1.57079632673412561417e+00; /* pi/2: first 33 bits */
+  const casadi_real pio2_2 = 6.07710050630396597660e-11; /* next 33 bits */
+  const casadi_real pio2_3 = 2.02226624871116645580e-21; /* the rest */
+  const casadi_real S1 = -1.66666666666666324348e-01, S2 = 8.33333333332248946124e-03,
+      S3 = -1.98412698298579493134e-04, S4 = 2.75573137070700676789e-06,
+      S5 = -2.50507602534068634195e-08, S6 = 1.58969099521155010221e-10;
+  const casadi_real C1 = 4.16666666666666019037e-02, C2 = -1.38888888888741095749e-03,
+      C3 = 2.48015872894767294178e-05, C4 = -2.75573143513906633035e-07,
+      C5 = 2.08757232129817482790e-09, C6 = -1.13596475577881948265e-11;
+  int i;
+  for (i = 0; i < SNAKECG_SINCOS_BLOCK; ++i) {
+    casadi_real n = (x[i] * two_over_pi + round) - round;  /* nearest multiple of pi/2 */
+    casadi_real m = n - 4.0 * ((0.25 * n + round) - round); /* n mod 4 in -2..2 */
+    casadi_real am = fabs(m);
+    casadi_real cq = 1.0 - am, sq = m * (2.0 - am);          /* cos, sin of n pi/2 */
+    casadi_real y = ((x[i] - n * pio2_1) - n * pio2_2) - n * pio2_3;
+    casadi_real z = y * y;
+    casadi_real sy = y + z * y * (S1 + z * (S2 + z * (S3 + z * (S4 + z * (S5 + z * S6)))));
+    casadi_real hz = 0.5 * z, w = 1.0 - hz;
+    casadi_real cy = w + (((1.0 - w) - hz)
+                          + z * z * (C1 + z * (C2 + z * (C3 + z * (C4 + z * (C5 + z * C6))))));
+    c[i] = cy * cq - sy * sq;
+    s[i] = sy * cq + cy * sq;
+  }
+}
+
+/* the C library's cos and sin where |x| > SNAKECG_SINCOS_MAX or x is not a number (the
+ * driver calls this only when it met such an angle while gathering them) */
+static void snakecg_sincos_large(const casadi_real* x, casadi_real* c, casadi_real* s,
+                                 casadi_int n) {
+  casadi_int i;
+  for (i = 0; i < n; ++i) {
+    if (!(fabs(x[i]) <= SNAKECG_SINCOS_MAX)) {
+      c[i] = cos(x[i]);
+      s[i] = sin(x[i]);
+    }
+  }
+}
+
+/* snakecg_na6_mass_matrix_sincos: 296 CasADi instructions, printed one per line */
+static void snakecg_na6_mass_matrix_sincos(
+    const casadi_real* restrict arg0,
+    const casadi_real* restrict arg1,
+    const casadi_real* restrict arg2,
+    const casadi_real* restrict arg3,
+    casadi_real* restrict res0) {
+  casadi_real w0, w1, w2, w3, w4, w5, w6, w7, w8, w9;
+  casadi_real w10, w11, w12, w13, w14, w15, w16, w17, w18, w19;
+  casadi_real w20, w21, w22, w23, w24, w25, w26, w27, w28, w29;
+  casadi_real w30, w31, w32, w33, w34, w35, w36, w37, w38, w39;
+  casadi_real w40, w41, w42, w43, w44, w45;
+  w0 = arg1[28];
+  res0[0] = w0;
+  w1 = 0.0;
+  res0[1] = w1;
+  w2 = arg1[35];
+  w3 = arg2[0];
+  w4 = arg2[1];
+  w5 = w3 * w4;
+  w6 = arg3[0];
+  w7 = arg3[1];
+  w8 = w6 * w7;
+  w5 = w5 - w8;
+  w8 = arg2[2];
+  w9 = w5 * w8;
+  w7 = w3 * w7;
+  w4 = w4 * w6;
+  w7 = w7 + w4;
+  w4 = arg3[2];
+  w10 = w7 * w4;
+  w9 = w9 - w10;
+  w10 = arg2[3];
+  w11 = w9 * w10;
+  w4 = w5 * w4;
+  w8 = w8 * w7;
+  w4 = w4 + w8;
+  w8 = arg3[3];
+  w12 = w4 * w8;
+  w11 = w11 - w12;
+  w12 = arg2[4];
+  w13 = w11 * w12;
+  w8 = w9 * w8;
+  w10 = w10 * w4;
+  w8 = w8 + w10;
+  w10 = arg3[4];
+  w14 = w8 * w10;
+  w13 = w13 - w14;
+  w14 = arg2[5];
+  w15 = w13 * w14;
+  w10 = w11 * w10;
+  w12 = w12 * w8;
+  w10 = w10 + w12;
+  w12 = arg3[5];
+  w16 = w10 * w12;
+  w15 = w15 - w16;
+  w16 = arg3[6];
+  w17 = w15 * w16;
+  w18 = arg2[6];
+  w12 = w13 * w12;
+  w14 = w14 * w10;
+  w12 = w12 + w14;
+  w14 = w18 * w12;
+  w17 = w17 + w14;
+  w17 = w2 * w17;
+  w14 = arg1[34];
+  w19 = w14 * w12;
+  w19 = w17 + w19;
+  w20 = arg1[33];
+  w21 = w20 * w10;
+  w21 = w19 + w21;
+  w22 = arg1[32];
+  w23 = w22 * w8;
+  w23 = w21 + w23;
+  w24 = arg1[31];
+  w25 = w24 * w4;
+  w25 = w23 + w25;
+  w26 = arg1[30];
+  w27 = w26 * w7;
+  w27 = w25 + w27;
+  w28 = arg1[29];
+  w29 = w28 * w6;
+  w29 = w27 + w29;
+  w29 = -w29;
+  res0[2] = w29;
+  w30 = -w27;
+  res0[3] = w30;
+  w31 = -w25;
+  res0[4] = w31;
+  w32 = -w23;
+  res0[5] = w32;
+  w33 = -w21;
+  res0[6] = w33;
+  w34 = -w19;
+  res0[7] = w34;
+  w35 = -w17;
+  res0[8] = w35;
+  res0[9] = w1;
+  res0[10] = w0;
+  w18 = w15 * w18;
+  w16 = w12 * w16;
+  w18 = w18 - w16;
+  w2 = w2 * w18;
+  w14 = w14 * w15;
+  w14 = w2 + w14;
+  w20 = w20 * w13;
+  w20 = w14 + w20;
+  w22 = w22 * w11;
+  w22 = w20 + w22;
+  w24 = w24 * w9;
+  w24 = w22 + w24;
+  w26 = w26 * w5;
+  w26 = w24 + w26;
+  w28 = w28 * w3;
+  w28 = w26 + w28;
+  res0[11] = w28;
+  res0[12] = w26;
+  res0[13] = w24;
+  res0[14] = w22;
+  res0[15] = w20;
+  res0[16] = w14;
+  res0[17] = w2;
+  res0[18] = w29;
+  res0[19] = w28;
+  w28 = arg1[12];
+  w15 = w15 * w28;
+  w15 = w2 * w15;
+  w12 = w12 * w28;
+  w12 = w17 * w12;
+  w15 = w15 + w12;
+  w12 = arg1[70];
+  w28 = w15 + w12;
+  w15 = w28 + w15;
+  w29 = arg1[69];
+  w15 = w15 + w29;
+  w29 = arg1[11];
+  w13 = w13 * w29;
+  w18 = w14 * w13;
+  w10 = w10 * w29;
+  w29 = w19 * w10;
+  w18 = w18 + w29;
+  w29 = w15 + w18;
+  w18 = w29 + w18;
+  w16 = arg1[68];
+  w18 = w18 + w16;
+  w16 = arg1[10];
+  w11 = w11 * w16;
+  w0 = w20 * w11;
+  w8 = w8 * w16;
+  w16 = w21 * w8;
+  w0 = w0 + w16;
+  w16 = w18 + w0;
+  w0 = w16 + w0;
+  w1 = arg1[67];
+  w0 = w0 + w1;
+  w1 = arg1[9];
+  w9 = w9 * w1;
+  w36 = w22 * w9;
+  w4 = w4 * w1;
+  w1 = w23 * w4;
+  w36 = w36 + w1;
+  w1 = w0 + w36;
+  w36 = w1 + w36;
+  w37 = arg1[66];
+  w36 = w36 + w37;
+  w37 = arg1[8];
+  w5 = w5 * w37;
+  w38 = w24 * w5;
+  w7 = w7 * w37;
+  w37 = w25 * w7;
+  w38 = w38 + w37;
+  w37 = w36 + w38;
+  w38 = w37 + w38;
+  w39 = arg1[65];
+  w38 = w38 + w39;
+  w39 = arg1[7];
+  w40 = arg1[21];
+  w39 = w39 - w40;
+  w3 = w3 * w39;
+  w40 = w26 * w3;
+  w39 = w39 * w6;
+  w27 = w27 * w39;
+  w40 = w40 + w27;
+  w27 = w38 + w40;
+  w40 = w27 + w40;
+  w6 = arg1[64];
+  w40 = w40 + w6;
+  res0[20] = w40;
+  res0[21] = w27;
+  w40 = w24 * w3;
+  w25 = w25 * w39;
+  w40 = w40 + w25;
+  w40 = w37 + w40;
+  res0[22] = w40;
+  w25 = w22 * w5;
+  w6 = w23 * w7;
+  w25 = w25 + w6;
+  w25 = w1 + w25;
+  w6 = w22 * w3;
+  w23 = w23 * w39;
+  w6 = w6 + w23;
+  w6 = w25 + w6;
+  res0[23] = w6;
+  w23 = w20 * w9;
+  w41 = w21 * w4;
+  w23 = w23 + w41;
+  w23 = w16 + w23;
+  w41 = w20 * w5;
+  w42 = w21 * w7;
+  w41 = w41 + w42;
+  w41 = w23 + w41;
+  w42 = w20 * w3;
+  w21 = w21 * w39;
+  w42 = w42 + w21;
+  w42 = w41 + w42;
+  res0[24] = w42;
+  w21 = w14 * w11;
+  w43 = w19 * w8;
+  w21 = w21 + w43;
+  w21 = w29 + w21;
+  w43 = w14 * w9;
+  w44 = w19 * w4;
+  w43 = w43 + w44;
+  w43 = w21 + w43;
+  w44 = w14 * w5;
+  w45 = w19 * w7;
+  w44 = w44 + w45;
+  w44 = w43 + w44;
+  w45 = w14 * w3;
+  w19 = w19 * w39;
+  w45 = w45 + w19;
+  w45 = w44 + w45;
+  res0[25] = w45;
+  w13 = w2 * w13;
+  w10 = w17 * w10;
+  w13 = w13 + w10;
+  w13 = w28 + w13;
+  w11 = w2 * w11;
+  w8 = w17 * w8;
+  w11 = w11 + w8;
+  w11 = w13 + w11;
+  w9 = w2 * w9;
+  w4 = w17 * w4;
+  w9 = w9 + w4;
+  w9 = w11 + w9;
+  w5 = w2 * w5;
+  w7 = w17 * w7;
+  w5 = w5 + w7;
+  w5 = w9 + w5;
+  w3 = w2 * w3;
+  w17 = w17 * w39;
+  w3 = w3 + w17;
+  w3 = w5 + w3;
+  res0[26] = w3;
+  res0[27] = w30;
+  res0[28] = w26;
+  res0[29] = w27;
+  res0[30] = w38;
+  res0[31] = w37;
+  res0[32] = w25;
+  res0[33] = w41;
+  res0[34] = w44;
+  res0[35] = w5;
+  res0[36] = w31;
+  res0[37] = w24;
+  res0[38] = w40;
+  res0[39] = w37;
+  res0[40] = w36;
+  res0[41] = w1;
+  res0[42] = w23;
+  res0[43] = w43;
+  res0[44] = w9;
+  res0[45] = w32;
+  res0[46] = w22;
+  res0[47] = w6;
+  res0[48] = w25;
+  res0[49] = w1;
+  res0[50] = w0;
+  res0[51] = w16;
+  res0[52] = w21;
+  res0[53] = w11;
+  res0[54] = w33;
+  res0[55] = w20;
+  res0[56] = w42;
+  res0[57] = w41;
+  res0[58] = w23;
+  res0[59] = w16;
+  res0[60] = w18;
+  res0[61] = w29;
+  res0[62] = w13;
+  res0[63] = w34;
+  res0[64] = w14;
+  res0[65] = w45;
+  res0[66] = w44;
+  res0[67] = w43;
+  res0[68] = w21;
+  res0[69] = w29;
+  res0[70] = w15;
+  res0[71] = w28;
+  res0[72] = w35;
+  res0[73] = w2;
+  res0[74] = w3;
+  res0[75] = w5;
+  res0[76] = w9;
+  res0[77] = w11;
+  res0[78] = w13;
+  res0[79] = w28;
+  res0[80] = w12;
+}
+
+
 CASADI_SYMBOL_EXPORT int snakecg_na6_batch_mass_matrix(casadi_int n, const casadi_real** arg,
     const casadi_int* stride, casadi_real** res) {
   const casadi_real* a[2];
@@ -464,11 +835,40 @@ CASADI_SYMBOL_EXPORT int snakecg_na6_batch_mass_matrix(casadi_int n, const casad
   if (!iw || !w) { free(iw); free(w); return -1; }
   for (k = 0; k < 2; ++k) a[k] = 0;
   for (k = 0; k < 1; ++k) r[k] = 0;
-  for (i = 0; i < n; ++i) {
-    a[0] = arg[0] + i * stride[0];
-    a[1] = arg[1] + i * stride[1];
-    r[0] = res[0] + i * 81;
-    if (snakecg_na6_mass_matrix(a, r, iw, w, 0)) { status = (int) (i + 1); break; }
+  if (arg[0] && arg[1] && res[0]) {
+    /* cos and sin of q[2..8] of 16 samples at a time, then snakecg_na6_mass_matrix_sincos
+     * per sample (a batch of one too, so that a batch equals its samples one by one) */
+    const casadi_int na = 7, per = 16;
+    casadi_real ang[112], ca[112], sa[112];
+    casadi_int i0, m;
+    int large;
+    for (k = 0; k < 112; ++k) ang[k] = 0;
+    for (i0 = 0; i0 < n; i0 += per) {
+      m = n - i0 < per ? n - i0 : per;
+      large = 0;
+      for (i = 0; i < m; ++i) {
+        const casadi_real* q = arg[0] + (i0 + i) * stride[0] + 2;
+        for (k = 0; k < na; ++k) {
+          ang[i * na + k] = q[k];
+          large |= !(fabs(q[k]) <= SNAKECG_SINCOS_MAX);
+        }
+      }
+      for (k = 0; k < m * na; k += SNAKECG_SINCOS_BLOCK) {
+        snakecg_sincos_block(ang + k, ca + k, sa + k);
+      }
+      if (large) snakecg_sincos_large(ang, ca, sa, m * na);
+      for (i = 0; i < m; ++i) {
+        snakecg_na6_mass_matrix_sincos(arg[0] + (i0 + i) * stride[0], arg[1] + (i0 + i) * stride[1], ca + i * na, sa + i * na, res[0] + (i0 + i) * 81);
+      }
+    }
+  } else {
+    /* a null input or output (CasADi's convention: zeros in, nothing out): per sample */
+    for (i = 0; i < n; ++i) {
+      a[0] = arg[0] + i * stride[0];
+      a[1] = arg[1] + i * stride[1];
+      r[0] = res[0] + i * 81;
+      if (snakecg_na6_mass_matrix(a, r, iw, w, 0)) { status = (int) (i + 1); break; }
+    }
   }
   free(iw);
   free(w);
