@@ -30,14 +30,12 @@
 #include <string.h>
 
 #include "snakecg_layout.h"
+#define SC_ROW_VELOCITIES
 #include "common.h"
 
 #define SNAKECG_CAT_(a, b) a##b
 #define SNAKECG_CAT(a, b) SNAKECG_CAT_(a, b)
 #define SNAKECG_EXPORT(name) SNAKECG_CAT(SNAKECG_PREFIX, name)
-
-int SNAKECG_LJ(const double **arg, double **res, sc_int *iw, double *w, int mem);
-int SNAKECG_LJ_WORK(sc_int *sz_arg, sc_int *sz_res, sc_int *sz_iw, sc_int *sz_w);
 
 #define NS SNAKECG_NS
 #define NA SNAKECG_NA
@@ -132,43 +130,6 @@ static int ctx_alloc(sc_ctx *c) {
   return sc_work_alloc(&c->ws, fns, 2);
 }
 
-/* A V (Dynamics.row_velocities): the gap rate (row 0) and the wheels' lateral velocities.
- * J: 3 NL x NS, column-major (rows 3i..3i+2 the twist (vx, vy, omega) of link i). */
-static void row_velocities(const sc_ctx *c, const double *J, const double *q, const double *v,
-                           const double *qo, const double *vo, double s, double *av) {
-  const sc_segment *sg = c->sg;
-  const double *woff = sg->scene + SCENE_wheel_offset;
-  const double sig = sg->scene[SCENE_side];
-  const int k = (int)sg->contact_index;
-  double tw[3 * NL], phi = q[2], spk = 0.0, cpk = 0.0, n0, n1, cs, sn, rx, ry, p0, p1;
-  int i, j;
-  for (i = 0; i < 3 * NL; ++i) {
-    double t = 0.0;
-    for (j = 0; j < NS; ++j) t += J[i + 3 * NL * j] * v[j];
-    tw[i] = t;
-  }
-  for (i = 0; i < NL; ++i) { /* phi_1 = theta, phi_{i+1} = phi_i + q_i */
-    double sp, cp;
-    if (i) phi += q[2 + i];
-    sp = sin(phi);
-    cp = cos(phi);
-    if (i == k) {
-      spk = sp;
-      cpk = cp;
-    }
-    av[1 + i] = -sp * tw[3 * i] + cp * tw[3 * i + 1] + woff[i] * tw[3 * i + 2];
-  }
-  n0 = sig * -spk;
-  n1 = sig * cpk;
-  cs = cos(qo[2]);
-  sn = sin(qo[2]);
-  rx = sg->rho[0];
-  ry = sg->rho[1];
-  p0 = vo[0] - vo[2] * (sn * rx + cs * ry);
-  p1 = vo[1] + vo[2] * (cs * rx - sn * ry);
-  av[0] = n0 * (p0 - tw[3 * k]) + n1 * (p1 - tw[3 * k + 1]) - sig * tw[3 * k + 2] * (s - sg->c_k);
-}
-
 /* The right-hand side in the mode at y (Dynamics.rates); keeps lam, A V, gap and s in c.
  * Returns 0, or SEG_PYTHON where the Python path must do it (dependent held rows, a failed
  * evaluation). */
@@ -177,17 +138,15 @@ static int rhs(sc_ctx *c, const double *y, double *ydot) {
   const double *q = y, *qo = y + NS, *v = y + NX, *vo = y + NX + NS;
   const sc_system *sys = &c->sys;
   const double *qdd_free = sys->qdd_free, *a_free = sys->a_free, *Kq = sys->Kq, *Ka = sys->Ka;
-  double J[3 * NL * NS], baumgarte[NC], *lam = c->lam, *av = c->av, ratio;
+  double baumgarte[NC], *lam = c->lam, *av = c->av, ratio;
   double p_tau = 0.0, p_fric = 0.0, p_obj = 0.0;
   int held = 0, i, r;
   c->nfev++;
   if (sc_contact_system(&c->ws, sg->scene, q, v, sg->tau, qo, vo, sg->f_obj, sg->rho, &c->sys))
     return SEG_PYTHON;
-  c->ws.arg[LJ_IN_q] = q;
-  c->ws.arg[LJ_IN_K] = sg->scene + SCENE_K;
-  c->ws.res[LJ_OUT_J] = J;
-  if (SNAKECG_LJ(c->ws.arg, c->ws.res, c->ws.iw, c->ws.w, 0)) return SEG_PYTHON;
-  row_velocities(c, J, q, v, qo, vo, sys->s, av);
+  if (sc_row_velocities(&c->ws, sg->scene, sg->rho, (int)sg->contact_index, sg->c_k, q, v, qo,
+                        vo, sys->s, av))
+    return SEG_PYTHON;
   /* eq. (16) with the mode's fixed forces, the held rows Baumgarte-stabilised:
    * G_HH lam_H = -(b_H + G_HF lam_F) - 2 alpha (A V)_H [- alpha^2 g for the contact] */
   for (r = 0; r < NC; ++r) {

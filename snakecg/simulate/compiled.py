@@ -1,7 +1,10 @@
 """Integration segments in compiled code: the right-hand side of a mode, the DOP853 steps,
 the output times and the event functions of a segment in one C call
 (``core_integrate_segment`` of the model library's ``integrate.c``), answering what
-:func:`scipy.integrate.solve_ivp` answers to :class:`~snakecg.simulate.simulator.Simulator`.
+:func:`scipy.integrate.solve_ivp` answers to :class:`~snakecg.simulate.simulator.Simulator`;
+and what happens at an event (impacts, projections, the new active set) in one C call
+(``core_settle`` of ``settle.c``), answering what
+:meth:`~snakecg.simulate.events.Events.settle` computes in Python.
 
 Used for ``method="DOP853"`` without ``fixed_step`` when the torque is constant over each
 segment (a constant, or a law held over ``control_period``) and the model has a compiled
@@ -18,8 +21,9 @@ from types import SimpleNamespace
 
 import numpy as np
 
-from ..core.segment import EVENT_CODES, SEG_END, SEG_EVENT, SEG_TOO_SMALL, Segment
-from ..solver import PIVOT_TOL
+from ..core.segment import (EVENT_CODES, SEG_END, SEG_EVENT, SEG_TOO_SMALL, SETTLE_DONE,
+                            Segment, Settle)
+from ..solver import PIVOT_TOL, REL_TOL, default_max_iter
 
 __all__ = ["CompiledSegments", "compiled_reason"]
 
@@ -78,6 +82,25 @@ class CompiledSegments:
         self._address = ctypes.addressof(seg)
         self.steps = 0
         self.handed_back = 0
+        # core_settle: its own arrays (the torque is the segments')
+        ny, nc = dyn.ny, dyn.nc
+        self._settle = model.core.settle
+        self.s_y, self.s_y_out = np.zeros(ny), np.zeros(ny)
+        self.s_prev, self.s_forced = np.zeros(nc), np.zeros(nc)
+        self.s_state, self.s_forced_out = np.zeros(nc), np.zeros(nc)
+        self.s_impact_lam, self.s_projection_lam = np.zeros(nc), np.zeros(nc)
+        st = Settle()
+        st.scene, st.tau, st.f_obj, st.rho = (model.scene_address, self.tau.ctypes.data,
+                                              self.f_obj.ctypes.data, self.rho.ctypes.data)
+        st.contact_index, st.c_k, st.l_k = dyn.k, dyn.c_k, dyn.l_k
+        st.pivot_tol, st.rel_tol, st.max_iter = PIVOT_TOL, REL_TOL, default_max_iter(nc)
+        st.y, st.forced = self.s_y.ctypes.data, self.s_forced.ctypes.data
+        st.y_out, st.state = self.s_y_out.ctypes.data, self.s_state.ctypes.data
+        st.forced_out = self.s_forced_out.ctypes.data
+        st.impact_lam = self.s_impact_lam.ctypes.data
+        st.projection_lam = self.s_projection_lam.ctypes.data
+        self.st = st
+        self._settle_address = ctypes.addressof(st)
 
     def run(self, t0, t1, y, mode, tau, evs, t_eval):
         """One segment from ``(t0, y)`` to ``t1`` in ``mode`` with the torque ``tau`` and the
@@ -116,6 +139,38 @@ class CompiledSegments:
             status={SEG_END: 0, SEG_EVENT: 1, SEG_TOO_SMALL: -1}[status],
             message=_TOO_SMALL if status == SEG_TOO_SMALL else "",
             t_events=t_events, y_events=y_events)
+
+    def settle(self, y, prev, forced: dict, contact_candidate: bool, tau):
+        """``core_settle`` at the state ``y`` after the mode ``prev`` (``None`` at the start)
+        with the rows ``forced`` (row: state code) and the torque ``tau``: the
+        :class:`~snakecg.core.segment.Settle` it filled (outputs in ``s_y_out``,
+        ``s_state``, ``s_impact_lam``, ``s_projection_lam``), or ``None`` when the Python
+        path must do it (see settle.c)."""
+        st = self.st
+        self.s_y[:] = y
+        self.tau[:] = tau
+        if prev is None:
+            st.prev = None
+        else:
+            self.s_prev[:] = prev.state
+            st.prev = self.s_prev.ctypes.data
+        self.s_forced.fill(-1.0)
+        for r, code in forced.items():
+            self.s_forced[r] = code
+        st.contact_candidate = 1 if contact_candidate else 0
+        if self._settle(self._settle_address) != SETTLE_DONE:
+            self.handed_back += 1
+            return None
+        return st
+
+    def point(self, y, mode, tau):
+        """``(lam, s)`` at the state ``y`` in ``mode`` with the torque ``tau`` (as the
+        right-hand side evaluates them), or ``None`` where the Python right-hand side must
+        evaluate it."""
+        r = self.samples(y, mode, tau)
+        if not r["ok"][0]:
+            return None
+        return r["lam"][0].copy(), float(r["s"][0])
 
     def samples(self, Y, mode, tau):
         """The trajectory's quantities at the states ``Y`` (n, n_y) in ``mode`` with the torque

@@ -9,7 +9,9 @@
 
 At an event the new active set is the solution of the acceleration-level complementarity
 problem (:func:`snakecg.solver.solve_active_set`) over the rows whose status is not fixed by
-the velocities.
+the velocities. With a compiled ``kernel`` (:class:`~snakecg.simulate.compiled.CompiledSegments`)
+the same computation runs in C (``core_settle``), the Python here being its reference and its
+fallback.
 """
 
 from __future__ import annotations
@@ -30,13 +32,37 @@ class Events:
     position along the link within which the contact counts as touching / on the link.
 
     ``drift_corrected``: the largest ``|A V|`` of a held row projected away at an event.
+    ``kernel``: the compiled segments of the run, or ``None`` (Python only).
     """
 
-    def __init__(self, dyn, torques, gtol: float):
+    def __init__(self, dyn, torques, gtol: float, kernel=None):
         self.dyn = dyn
         self.torques = torques
         self.gtol = gtol
+        self.kernel = kernel
         self.drift_corrected = 0.0
+        self._modes: dict = {}
+
+    def mode(self, state, off_link: bool) -> Mode:
+        """The :class:`Mode` of the row states ``state`` (one object per distinct mode of
+        the run: a mode is never changed once built)."""
+        state = np.asarray(state, dtype=np.int8)
+        key = (state.tobytes(), bool(off_link))
+        m = self._modes.get(key)
+        if m is None:
+            m = self._modes[key] = Mode(state, self.dyn.bounds, off_link)
+        return m
+
+    def _point(self, t, y, mode):
+        """``(lam, s)`` at ``(t, y)`` in ``mode``."""
+        tau_fn = self.torques.function()
+        if self.kernel is not None:
+            r = self.kernel.point(y, mode, tau_fn(t, y, mode))
+            if r is not None:
+                self.dyn.nfev += 1
+                return r
+        out = self.dyn.rates(t, y, mode, tau_fn)
+        return out[1], out[3]
 
     # --- events of a mode -------------------------------------------------------------------
     def functions(self, mode: Mode, tau_fn) -> list:
@@ -91,13 +117,13 @@ class Events:
                 contact_candidate = False
                 off_link = True
             elif ev.kind == "gap":
-                s = dyn.rates(t, y, mode, self.torques.function())[3]
+                s = self._point(t, y, mode)[1]
                 if -self.gtol <= s <= dyn.l_k + self.gtol:
                     contact_candidate = True
                 else:
                     forced[0] = LOST
             elif ev.kind == "breakaway":
-                lam = dyn.rates(t, y, mode, self.torques.function())[1]
+                lam = self._point(t, y, mode)[0]
                 forced[ev.row] = SLIDE_POS if lam[ev.row] > 0 else SLIDE_NEG
         stopped = {ev.row for ev in fired if ev.kind == "slide_stop"}
         # sliding wheels that did not stop keep sliding
@@ -122,8 +148,12 @@ class Events:
         nc = dyn.nc
         present, bounds = dyn.present, dyn.bounds
         before = prev.describe() if prev is not None else "start"
-        probe = Mode(np.where(present, HELD, ABSENT), bounds, off_link)
-        tau = np.asarray(self.torques.function()(t, y, prev or probe), dtype=float)
+        probe = prev or self.mode(np.where(present, HELD, ABSENT), off_link)
+        tau = np.asarray(self.torques.function()(t, y, probe), dtype=float)
+        if self.kernel is not None:
+            done = self.kernel.settle(y, prev, forced, contact_candidate, tau)
+            if done is not None:
+                return self._settled(t, done, prev, before, off_link, events, impact_kind)
         Q, G, gap, s, AV = dyn.linear_maps(y, tau)
         V = y[dyn.nx:2 * dyn.nx]
         vtol = 1e-8 * max(1.0, float(np.abs(V).max()))
@@ -179,10 +209,34 @@ class Events:
                 self.drift_corrected = max(self.drift_corrected, drift)
             y = y2
         state = self.decide(y, tau, candidates, forced)
-        mode = Mode(state, bounds, off_link)
+        mode = self.mode(state, off_link)
         for kind, row, data in records:
             events.append(SimEvent(float(t), kind, row, before, mode.describe(), data))
         return y, mode
+
+    def _settled(self, t, st, prev, before, off_link, events, impact_kind):
+        """:meth:`settle`'s records, state and mode from the compiled ``core_settle``'s
+        answer ``st`` (a :class:`~snakecg.core.segment.Settle`)."""
+        k = self.kernel
+        records = []
+        if st.impact:
+            lam = k.s_impact_lam[:st.n_impact]
+            records.append((impact_kind, 0, {
+                "closing_velocity": st.impact_velocity, "impulse": float(lam[0]),
+                "wheel_impulses": lam[1:].tolist(), "energy_loss": -st.impact_de,
+                "kinetic_energy_before": st.impact_ke}))
+        if st.n_projected:
+            if prev is None and st.drift > st.vtol:
+                records.append(("projection", st.drift_row, {
+                    "impulses": k.s_projection_lam[:st.n_projected].tolist(),
+                    "energy_loss": -st.projection_de,
+                    "kinetic_energy_before": st.projection_ke}))
+            elif prev is not None:
+                self.drift_corrected = max(self.drift_corrected, st.drift)
+        mode = self.mode(k.s_state, off_link)
+        for kind, row, data in records:
+            events.append(SimEvent(float(t), kind, row, before, mode.describe(), data))
+        return k.s_y_out.copy(), mode
 
     def decide(self, y, tau, candidates: np.ndarray, forced: dict[int, int]) -> np.ndarray:
         """Row states: the complementarity problem over ``candidates`` at acceleration level,

@@ -19,7 +19,6 @@ from .compiled import CompiledSegments, compiled_reason
 from .dynamics import N_WORK, Dynamics
 from .events import Events
 from .inputs import Settings, check_arguments
-from .modes import Mode
 from .records import SimEvent, SimulationError, Trajectory
 from .torques import Torques
 
@@ -50,6 +49,7 @@ class Simulator:
             raise InputError(f"integrator='compiled' is not available for this run: {reason};"
                              " use integrator='auto' or 'scipy'")
         self.compiled = CompiledSegments(self.dyn, settings) if reason is None else None
+        self.events.kernel = self.compiled
 
     def _solver_options(self) -> dict:
         cfg = self.settings
@@ -88,7 +88,7 @@ class Simulator:
             st = np.where(dyn.present, HELD, ABSENT)
             if not touching:
                 st[0] = LOST
-            torques.sample(0.0, y, Mode(st, dyn.bounds, not on_link))
+            torques.sample(0.0, y, handler.mode(st, not on_link))
         impact_loss = 0.0
         y, mode = handler.settle(0.0, y, None, {}, contact_candidate=touching,
                                  off_link=not on_link and abs(gap) <= gtol,
