@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from .. import kernels
 from .records import SCHEMA, Trajectory, jsonable
 
 __all__ = ["assemble", "summary"]
@@ -14,64 +15,59 @@ __all__ = ["assemble", "summary"]
 def assemble(sim, samples, events, status) -> Trajectory:
     """The trajectory of the run ``sim`` (a :class:`~snakecg.simulate.simulator.Simulator`)
     from its ``samples`` ``(t, y, mode, tau_fn, impact_loss)``, every quantity evaluated again
-    at each sample in the sample's mode."""
-    model, dyn = sim.model, sim.dyn
+    at each sample in the sample's mode (the summary on first access)."""
+    model, dyn, cfg = sim.model, sim.dyn, sim.settings
     N = len(samples)
-    ns, na, nc, nl, nx = dyn.ns, dyn.na, dyn.nc, dyn.nl, dyn.nx
-    t = np.array([s[0] for s in samples])
+    ns, na, nc, nl, nx, ny = dyn.ns, dyn.na, dyn.nc, dyn.nl, dyn.nx, dyn.ny
+    t = np.fromiter((s[0] for s in samples), float, N)
     Y = np.array([s[1] for s in samples])
-    tau = np.zeros((N, na))
-    lam = np.zeros((N, nc))
-    qdd = np.zeros((N, ns))
-    a_obj = np.zeros((N, 3))
-    sr = np.zeros(N)
-    nao = np.zeros(N)
-    nqdd = np.zeros(N)
-    gap = np.zeros(N)
-    s_ = np.zeros(N)
-    AVs = np.zeros((N, nc))
-    p_tau = np.zeros(N)
-    p_fric = np.zeros(N)
+    impact = np.fromiter((s[4] for s in samples), float, N)
+    # per sample, as the compiled samples lay it out: ydot (n_y), lam, A V (n_c), gap, s, sr,
+    # norm_a_obj, norm_qdd and the sample's status
+    R = np.empty((N, ny + 2 * nc + 6))
+    tau = np.empty((N, na))
     p_cons = np.zeros(N)
-    contact = np.zeros(N, dtype=bool)
+    contact = np.empty(N, dtype=bool)
     wheel_state = np.empty((N, nl), dtype="<U6")
-    impact = np.array([s[4] for s in samples])
     for start, end, mode, tau_fn in _runs(samples):
-        done = np.zeros(end - start, dtype=bool)
+        sl = slice(start, end)
+        todo = range(start, end)
         if sim.compiled is not None:
             # one compiled call for the run of samples (the torque is constant over it)
             taui = np.asarray(tau_fn(t[start], Y[start], mode), dtype=float)
-            r = sim.compiled.samples(Y[start:end], mode, taui)
+            sim.compiled.samples_into(Y[sl], mode, taui, R[sl])
             dyn.nfev += end - start
-            done = r["ok"]
-            sl = slice(start, end)
-            tau[sl], lam[sl], gap[sl], s_[sl], AVs[sl] = taui, r["lam"], r["gap"], r["s"], r["AV"]
-            qdd[sl], a_obj[sl] = r["ydot"][:, nx:nx + ns], r["ydot"][:, nx + ns:2 * nx]
-            sr[sl], nao[sl], nqdd[sl] = r["sr"], r["norm_a_obj"], r["norm_qdd"]
-            p_tau[sl], p_fric[sl] = r["ydot"][:, 2 * nx], r["ydot"][:, 2 * nx + 1]
-        for i in start + np.flatnonzero(~done):
-            ydot, li, gi, si, AV, (taui, sri, nai, nqi) = dyn.rates(t[i], Y[i], mode, tau_fn)
-            tau[i], lam[i], gap[i], s_[i], AVs[i] = taui, li, gi, si, AV
-            qdd[i] = ydot[nx:nx + ns]
-            a_obj[i] = ydot[nx + ns:2 * nx]
-            sr[i], nao[i], nqdd[i] = sri, nai, nqi
-            p_tau[i], p_fric[i] = ydot[2 * nx], ydot[2 * nx + 1]
+            tau[sl] = taui
+            todo = start + np.flatnonzero(R[sl, -1] != 0)
+        for i in todo:
+            ydot, li, gi, si, AV, (ti, sri, nai, nqi) = dyn.rates(t[i], Y[i], mode, tau_fn)
+            R[i, :ny], R[i, ny:ny + nc], R[i, ny + nc:ny + 2 * nc] = ydot, li, AV
+            R[i, ny + 2 * nc:] = (gi, si, sri, nai, nqi, 0.0)
+            tau[i] = ti
         # power of the held rows' forces: zero on the constraints (a drift diagnostic; not
         # integrated: off the constraints, at the integrator's stages, it is noise)
         F = mode.free_idx
         if F.size:
-            p_cons[start:end] = np.einsum("ij,ij->i", lam[start:end, F], AVs[start:end, F])
-        contact[start:end] = mode.contact_held
-        wheel_state[start:end] = mode.wheel_names
+            p_cons[sl] = np.einsum("ij,ij->i", R[sl, ny + F], R[sl, ny + nc + F])
+        contact[sl] = mode.contact_held
+        wheel_state[sl] = mode.wheel_names
+    e = ny + 2 * nc
     q, q_obj = Y[:, :ns], Y[:, ns:nx]
     v, v_obj = Y[:, nx:nx + ns], Y[:, nx + ns:2 * nx]
     W = Y[:, 2 * nx:]
-    M = model.mass_matrix(q)
+    # M_s at the initial configuration and at every sample, in one call
+    # (the generated functions on the run's own arrays: SceneModel.mass_matrix, link_poses)
+    M = kernels.call(model.backend, "mass_matrix", N + 1, q=np.vstack((cfg.q0, q)),
+                     K=model.parameters)["M"]
+    M0, M = M[0], M[1:]
     ke = 0.5 * np.einsum("ni,nij,nj->n", v, M, v) + 0.5 * (v_obj**2 @ dyn.mo)
-    com = model.com(q)
-    poses = model.link_poses(q)
+    sim.ke_initial = 0.5 * float(cfg.v0 @ M0 @ cfg.v0) + 0.5 * float(
+        cfg.v_obj0 @ (dyn.mo * cfg.v_obj0))
+    poses = np.ascontiguousarray(kernels.call(model.backend, "link_poses", N, q=q,
+                                              K=model.parameters)["poses"].transpose(0, 2, 1))
+    m = np.asarray(model.robot.mass)
+    com = np.einsum("...ik,i->...k", poses[..., :2], m) / m.sum()  # SceneModel.com
     # displacement-based slippage ratio (metric of the initial configuration)
-    M0 = dyn.mass_matrix(sim.settings.q0)
     dq = q - q[0]
     do = q_obj - q_obj[0]
     num = np.einsum("ni,i,ni->n", do, dyn.mo, do)
@@ -91,16 +87,17 @@ def assemble(sim, samples, events, status) -> Trajectory:
         "object_distance": float(scene.object_distance),
         "wheel_bounds": dyn.bounds[1:].copy(),
     }
-    traj = Trajectory(
-        t=t, q=q, v=v, q_obj=q_obj, v_obj=v_obj, rho=dyn.rho.copy(), tau=tau, lam=lam,
-        qdd=qdd, a_obj=a_obj, contact=contact, wheel_state=wheel_state, sr=sr,
-        norm_a_obj=nao, norm_qdd=nqdd, sr_displacement=sr_d, com=com, link_poses=poses,
-        gap=gap, s=s_, row_velocity=AVs, kinetic_energy=ke, power_tau=p_tau,
-        power_friction=p_fric, work_tau=W[:, 0].copy(), work_friction=W[:, 1].copy(),
-        work_object=W[:, 2].copy(), power_constraint=p_cons, impact_loss=loss,
-        energy_residual=residual, events=events, summary={}, geometry=geometry)
-    traj.summary = summary(sim, traj, status)
-    return traj
+    return Trajectory(
+        t=t, q=q, v=v, q_obj=q_obj, v_obj=v_obj, rho=dyn.rho.copy(), tau=tau,
+        lam=R[:, ny:ny + nc].copy(), qdd=R[:, nx:nx + ns].copy(),
+        a_obj=R[:, nx + ns:2 * nx].copy(), contact=contact, wheel_state=wheel_state,
+        sr=R[:, e + 2].copy(), norm_a_obj=R[:, e + 3].copy(), norm_qdd=R[:, e + 4].copy(),
+        sr_displacement=sr_d, com=com, link_poses=poses, gap=R[:, e].copy(),
+        s=R[:, e + 1].copy(), row_velocity=R[:, ny + nc:e].copy(), kinetic_energy=ke,
+        power_tau=R[:, 2 * nx].copy(), power_friction=R[:, 2 * nx + 1].copy(),
+        work_tau=W[:, 0].copy(), work_friction=W[:, 1].copy(), work_object=W[:, 2].copy(),
+        power_constraint=p_cons, impact_loss=loss, energy_residual=residual, events=events,
+        summary=lambda traj: summary(sim, traj, status), geometry=geometry)
 
 
 def _runs(samples):

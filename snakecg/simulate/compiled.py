@@ -57,50 +57,51 @@ class CompiledSegments:
         self._samples = model.core.mode_samples
         self._model = model  # keeps the scene vector alive
         ny, na, nc = dyn.ny, dyn.na, dyn.nc
-        self.y0 = np.zeros(ny)
-        self.y_end = np.zeros(ny)
-        self.tau = np.zeros(na)
-        self.state = np.zeros(nc)
-        self.ev_kind = np.zeros(nc + 3, dtype=np.int64)
-        self.ev_row = np.zeros(nc + 3, dtype=np.int64)
-        self.f_obj = np.ascontiguousarray(dyn.f_obj, dtype=float)
-        self.rho = np.ascontiguousarray(dyn.rho, dtype=float)
+        # every array the C reads or writes, as views of one buffer (one address lookup)
+        sizes = {"y0": ny, "y_end": ny, "tau": na, "state": nc, "f_obj": 3, "rho": 2,
+                 "s_y": ny, "s_y_out": ny, "s_prev": nc, "s_forced": nc, "s_state": nc,
+                 "s_forced_out": nc, "s_impact_lam": nc, "s_projection_lam": nc}
+        buf = np.zeros(sum(sizes.values()))
+        base, addr, off = buf.ctypes.data, {}, 0
+        for name, size in sizes.items():
+            setattr(self, name, buf[off:off + size])
+            addr[name] = base + 8 * off
+            off += size
+        self.f_obj[:] = dyn.f_obj
+        self.rho[:] = dyn.rho
+        events = np.zeros((2, nc + 3), dtype=np.int64)
+        self.ev_kind, self.ev_row = events
         self.t_eval = np.zeros(0)
         self.y_eval = np.zeros((0, ny))
         seg = Segment()
         seg.scene = model.scene_address
-        seg.tau, seg.f_obj, seg.rho = (self.tau.ctypes.data, self.f_obj.ctypes.data,
-                                       self.rho.ctypes.data)
-        seg.state = self.state.ctypes.data
-        seg.ev_kind, seg.ev_row = self.ev_kind.ctypes.data, self.ev_row.ctypes.data
+        seg.tau, seg.f_obj, seg.rho = addr["tau"], addr["f_obj"], addr["rho"]
+        seg.state = addr["state"]
+        seg.ev_kind = events.ctypes.data
+        seg.ev_row = seg.ev_kind + 8 * (nc + 3)
         seg.contact_index, seg.c_k, seg.l_k = dyn.k, dyn.c_k, dyn.l_k
         seg.alpha, seg.pivot_tol = dyn.alpha, PIVOT_TOL
         seg.rtol, seg.atol = settings.rtol, settings.atol
         seg.max_step = math.inf if settings.max_step is None else settings.max_step
-        seg.y0, seg.y_end = self.y0.ctypes.data, self.y_end.ctypes.data
+        seg.y0, seg.y_end = addr["y0"], addr["y_end"]
         self.seg = seg
         self._address = ctypes.addressof(seg)
         self.steps = 0
         self.handed_back = 0
-        # core_settle: its own arrays (the torque is the segments')
-        ny, nc = dyn.ny, dyn.nc
+        # core_settle (the torque is the segments')
         self._settle = model.core.settle
-        self.s_y, self.s_y_out = np.zeros(ny), np.zeros(ny)
-        self.s_prev, self.s_forced = np.zeros(nc), np.zeros(nc)
-        self.s_state, self.s_forced_out = np.zeros(nc), np.zeros(nc)
-        self.s_impact_lam, self.s_projection_lam = np.zeros(nc), np.zeros(nc)
         st = Settle()
-        st.scene, st.tau, st.f_obj, st.rho = (model.scene_address, self.tau.ctypes.data,
-                                              self.f_obj.ctypes.data, self.rho.ctypes.data)
+        st.scene, st.tau, st.f_obj, st.rho = (model.scene_address, addr["tau"], addr["f_obj"],
+                                              addr["rho"])
         st.contact_index, st.c_k, st.l_k = dyn.k, dyn.c_k, dyn.l_k
         st.pivot_tol, st.rel_tol, st.max_iter = PIVOT_TOL, REL_TOL, default_max_iter(nc)
-        st.y, st.forced = self.s_y.ctypes.data, self.s_forced.ctypes.data
-        st.y_out, st.state = self.s_y_out.ctypes.data, self.s_state.ctypes.data
-        st.forced_out = self.s_forced_out.ctypes.data
-        st.impact_lam = self.s_impact_lam.ctypes.data
-        st.projection_lam = self.s_projection_lam.ctypes.data
+        st.y, st.forced = addr["s_y"], addr["s_forced"]
+        st.y_out, st.state, st.forced_out = addr["s_y_out"], addr["s_state"], addr["s_forced_out"]
+        st.impact_lam, st.projection_lam = addr["s_impact_lam"], addr["s_projection_lam"]
+        self._prev_address = addr["s_prev"]
         self.st = st
         self._settle_address = ctypes.addressof(st)
+        self._buf = buf, events  # keeps the arrays alive
 
     def run(self, t0, t1, y, mode, tau, evs, t_eval):
         """One segment from ``(t0, y)`` to ``t1`` in ``mode`` with the torque ``tau`` and the
@@ -153,7 +154,7 @@ class CompiledSegments:
             st.prev = None
         else:
             self.s_prev[:] = prev.state
-            st.prev = self.s_prev.ctypes.data
+            st.prev = self._prev_address
         self.s_forced.fill(-1.0)
         for r, code in forced.items():
             self.s_forced[r] = code
@@ -162,6 +163,20 @@ class CompiledSegments:
             self.handed_back += 1
             return None
         return st
+
+    def gap_and_s(self, y):
+        """The contact's ``gap`` and position ``s`` along the link at the state ``y`` (of
+        ``contact_system``: the same in every mode), or ``None`` when the C could not
+        evaluate them."""
+        nc = self.dyn.nc
+        out = np.zeros((1, self.dyn.ny + 2 * nc + 6))
+        self.tau.fill(0.0)
+        self.state.fill(0.0)  # no row held: nothing to factor
+        y = np.ascontiguousarray(y, dtype=float)
+        if self._samples(self._address, 1, y.ctypes.data, out.ctypes.data) != 0 \
+                or out[0, -1] != 0:
+            return None
+        return float(out[0, -6]), float(out[0, -5])
 
     def point(self, y, mode, tau):
         """``(lam, s)`` at the state ``y`` in ``mode`` with the torque ``tau`` (as the
@@ -172,20 +187,28 @@ class CompiledSegments:
             return None
         return r["lam"][0].copy(), float(r["s"][0])
 
-    def samples(self, Y, mode, tau):
+    def samples_into(self, Y, mode, tau, out) -> None:
         """The trajectory's quantities at the states ``Y`` (n, n_y) in ``mode`` with the torque
-        ``tau``, evaluated by the C: a dict of ``ydot`` (n, n_y), ``lam``, ``AV`` (n, n_c),
-        ``gap``, ``s``, ``sr``, ``norm_a_obj``, ``norm_qdd`` (n,) and ``ok`` (n,) (False where
-        the Python right-hand side must evaluate the sample: dependent held rows)."""
-        dyn = self.dyn
-        ny, nc = dyn.ny, dyn.nc
-        Y = np.ascontiguousarray(Y, dtype=float).reshape(-1, ny)
+        ``tau``, evaluated by the C into ``out`` (n, n_y + 2 n_c + 6), C-contiguous rows:
+        ``ydot`` (n_y), ``lam``, ``A V`` (n_c), ``gap``, ``s``, ``sr``, ``norm_a_obj``,
+        ``norm_qdd`` and the status (not 0 where the Python right-hand side must evaluate
+        the sample: dependent held rows)."""
+        Y = np.ascontiguousarray(Y, dtype=float)
         n = len(Y)
         self.tau[:] = tau
         self.state[:] = mode.state
-        out = np.zeros((n, ny + 2 * nc + 6))
         if n and self._samples(self._address, n, Y.ctypes.data, out.ctypes.data) != 0:
             raise MemoryError("the compiled samples could not allocate their workspace")
+
+    def samples(self, Y, mode, tau):
+        """:meth:`samples_into` as a dict of ``ydot`` (n, n_y), ``lam``, ``AV`` (n, n_c),
+        ``gap``, ``s``, ``sr``, ``norm_a_obj``, ``norm_qdd`` (n,) and ``ok`` (n,) (False
+        where the Python right-hand side must evaluate the sample)."""
+        dyn = self.dyn
+        ny, nc = dyn.ny, dyn.nc
+        Y = np.ascontiguousarray(Y, dtype=float).reshape(-1, ny)
+        out = np.zeros((len(Y), ny + 2 * nc + 6))
+        self.samples_into(Y, mode, tau, out)
         e = out[:, ny:]
         return {"ydot": out[:, :ny], "lam": e[:, :nc], "AV": e[:, nc:2 * nc],
                 "gap": e[:, 2 * nc], "s": e[:, 2 * nc + 1], "sr": e[:, 2 * nc + 2],

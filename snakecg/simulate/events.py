@@ -41,17 +41,10 @@ class Events:
         self.gtol = gtol
         self.kernel = kernel
         self.drift_corrected = 0.0
-        self._modes: dict = {}
 
     def mode(self, state, off_link: bool) -> Mode:
-        """The :class:`Mode` of the row states ``state`` (one object per distinct mode of
-        the run: a mode is never changed once built)."""
-        state = np.asarray(state, dtype=np.int8)
-        key = (state.tobytes(), bool(off_link))
-        m = self._modes.get(key)
-        if m is None:
-            m = self._modes[key] = Mode(state, self.dyn.bounds, off_link)
-        return m
+        """The :class:`Mode` of the row states ``state`` (:meth:`Mode.of`: built once)."""
+        return Mode.of(state, self.dyn.bounds, off_link)
 
     def _point(self, t, y, mode):
         """``(lam, s)`` at ``(t, y)`` in ``mode``."""

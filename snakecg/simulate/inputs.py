@@ -119,10 +119,12 @@ def check_arguments(model, q0, tau, duration, v0, *, v_obj0, q_obj0, rho, f_obj,
     if (q_obj0 is None) != (rho is None):
         raise InputError("q_obj0 and rho go together: give both or neither (default: the "
                          "scene's placement of the object against the contact link)")
-    if q_obj0 is None:
-        q_obj0, rho, _ = model.place_object(q0)
-    q_obj0 = single("q_obj0", q_obj0, 3, "")
-    rho = single("rho", rho, 2, "")
+    if q_obj0 is None:  # the scene's placement at the checked q0
+        q_obj0, rho, _ = model.place(q0[None, :], 1)
+        q_obj0, rho = q_obj0[0].copy(), rho[0].copy()
+    else:
+        q_obj0 = single("q_obj0", q_obj0, 3, "")
+        rho = single("rho", rho, 2, "")
     f_obj = np.zeros(3) if f_obj is None else single("f_obj", f_obj, 3, "")
     duration = positive("duration", duration)
     kind, law = torque_law(tau, na)

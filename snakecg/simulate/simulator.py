@@ -39,7 +39,7 @@ class Simulator:
         gtol = 1e-9 * max(self.dyn.scene.robot.length)
         self.events = Events(self.dyn, self.torques, gtol)
         # filled in by run()
-        self.ke_initial = math.nan
+        self.ke_initial = math.nan  # set by assemble()
         self.initial_mode = self.final_mode = ""
         self.segments = 0
         self.wall = 0.0
@@ -74,10 +74,10 @@ class Simulator:
         wall0 = time.perf_counter()
         T = cfg.duration
         y = np.concatenate([cfg.q0, cfg.q_obj0, cfg.v0, cfg.v_obj0, np.zeros(N_WORK)])
-        self.ke_initial = dyn.kinetic_energy(y)
         events: list[SimEvent] = []
         # initial mode: the contact is a candidate when the object touches the link face
-        Q, G, gap, s, AV = dyn.linear_maps(y, np.zeros(dyn.na))
+        geo = self.compiled.gap_and_s(y) if self.compiled is not None else None
+        gap, s = geo if geo is not None else dyn.linear_maps(y, np.zeros(dyn.na))[2:4]
         gtol = handler.gtol
         on_link = -gtol <= s <= dyn.l_k + gtol
         if gap < -gtol and on_link:
