@@ -21,7 +21,7 @@ from types import SimpleNamespace
 
 import numpy as np
 
-from ..core.segment import (EVENT_CODES, SEG_END, SEG_EVENT, SEG_TOO_SMALL, SETTLE_DONE,
+from ..core.segment import (SEG_END, SEG_EVENT, SEG_TOO_SMALL, SETTLE_DONE,
                             Segment, Settle)
 from ..solver import PIVOT_TOL, REL_TOL, default_max_iter
 
@@ -103,26 +103,25 @@ class CompiledSegments:
         self._settle_address = ctypes.addressof(st)
         self._buf = buf, events  # keeps the arrays alive
 
-    def run(self, t0, t1, y, mode, tau, evs, t_eval):
+    def run(self, t0, t1, y, mode, tau, specs, t_eval):
         """One segment from ``(t0, y)`` to ``t1`` in ``mode`` with the torque ``tau`` and the
-        event functions ``evs`` (:meth:`~snakecg.simulate.events.Events.functions`), output
-        at ``t_eval``: an object with solve_ivp's ``t``, ``y``, ``status``, ``message``,
-        ``t_events`` and ``y_events``, or ``None`` when solve_ivp must do this segment."""
+        terminal events ``specs`` (:meth:`~snakecg.simulate.events.Events.specs`), output
+        at ``t_eval``: an object with ``status`` (solve_ivp's: 0, 1 at an event, -1),
+        ``message``, the output ``t`` (m,) and ``y`` (m, n_y) and ``fired`` (``[(spec, t_e,
+        y_e)]`` of the event), or ``None`` when solve_ivp must do this segment."""
         seg, dyn = self.seg, self.dyn
-        n_ev = len(evs)
-        for i, ev in enumerate(evs):
-            self.ev_kind[i] = EVENT_CODES[ev.quantity]
-            self.ev_row[i] = ev.row
+        self.ev_kind[:len(specs)] = specs.codes
+        self.ev_row[:len(specs)] = specs.rows
         self.y0[:] = y
         self.tau[:] = tau
         self.state[:] = mode.state
         n = len(t_eval)
-        if n != len(self.t_eval):
+        if n > len(self.y_eval):
             self.y_eval = np.zeros((n, dyn.ny))
+            seg.y_eval = self.y_eval.ctypes.data
         self.t_eval = np.ascontiguousarray(t_eval, dtype=float)
-        seg.t_eval, seg.n_eval, seg.y_eval = (self.t_eval.ctypes.data, n,
-                                              self.y_eval.ctypes.data)
-        seg.n_ev, seg.t0, seg.t1 = n_ev, t0, t1
+        seg.t_eval, seg.n_eval = self.t_eval.ctypes.data, n
+        seg.n_ev, seg.t0, seg.t1 = len(specs), t0, t1
         status = self._fn(self._address)
         dyn.nfev += seg.nfev
         self.steps += seg.nsteps
@@ -130,16 +129,13 @@ class CompiledSegments:
             self.handed_back += 1
             return None
         m = seg.n_out
-        t_events = [np.zeros(0) for _ in evs]
-        y_events = [np.zeros((0, dyn.ny)) for _ in evs]
+        fired = []
         if status == SEG_EVENT:
-            t_events[seg.event] = np.array([seg.t_end])
-            y_events[seg.event] = self.y_end.copy()[None, :]
+            fired = [(specs[seg.event], seg.t_end, self.y_end.copy())]
         return SimpleNamespace(
-            t=self.t_eval[:m].copy(), y=self.y_eval[:m].T.copy(),
+            t=self.t_eval[:m], y=self.y_eval[:m].copy(),
             status={SEG_END: 0, SEG_EVENT: 1, SEG_TOO_SMALL: -1}[status],
-            message=_TOO_SMALL if status == SEG_TOO_SMALL else "",
-            t_events=t_events, y_events=y_events)
+            message=_TOO_SMALL if status == SEG_TOO_SMALL else "", fired=fired)
 
     def settle(self, y, prev, forced: dict, contact_candidate: bool, tau):
         """``core_settle`` at the state ``y`` after the mode ``prev`` (``None`` at the start)

@@ -16,13 +16,34 @@ fallback.
 
 from __future__ import annotations
 
+from typing import NamedTuple
+
 import numpy as np
 
+from ..core.segment import EVENT_CODES
 from ..solver import ABSENT, HELD, LOST, SLIDE_NEG, SLIDE_POS, solve_active_set
 from .modes import Mode, transitions
 from .records import SimEvent
 
-__all__ = ["Events"]
+__all__ = ["EventSpec", "EventSpecs", "Events"]
+
+
+class EventSpec(NamedTuple):
+    """A terminal event of a mode: its ``kind`` (what happens when it fires), the constraint
+    ``row`` and the ``quantity`` that crosses zero downwards (the compiled segments' code of
+    it: :data:`snakecg.core.segment.EVENT_CODES`)."""
+
+    kind: str
+    row: int
+    quantity: str
+
+
+class EventSpecs(list):
+    """The :class:`EventSpec` of a mode, with their ``codes`` and ``rows`` as int64 arrays
+    (what the compiled segments read)."""
+
+    codes: np.ndarray
+    rows: np.ndarray
 
 
 class Events:
@@ -58,40 +79,57 @@ class Events:
         return out[1], out[3]
 
     # --- events of a mode -------------------------------------------------------------------
-    def functions(self, mode: Mode, tau_fn) -> list:
-        """The terminal event functions of ``mode`` for :func:`scipy.integrate.solve_ivp`,
-        each with ``kind``, ``row`` and ``quantity`` (what it evaluates, for the compiled
-        segments: :data:`snakecg.core.segment.EVENT_CODES`) attributes."""
-        evs = []
-
-        def make(fn, direction, kind, row, quantity):
-            fn.terminal = True
-            fn.direction = direction
-            fn.kind = kind
-            fn.row = row
-            fn.quantity = quantity
-            evs.append(fn)
-
-        rates = self.dyn.rates
-        l_k = self.dyn.l_k
+    def specs(self, mode: Mode) -> EventSpecs:
+        """The terminal events of ``mode`` (all with direction -1): what ends a segment in
+        it, as :class:`EventSpec` ``(kind, row, quantity)`` (kept on the mode)."""
+        if mode.specs is not None:
+            return mode.specs
+        out = EventSpecs()
         if mode.contact_held:
-            make(lambda t, y: rates(t, y, mode, tau_fn)[1][0], -1, "separation", 0,
-                 "lam_contact")
-            make(lambda t, y: rates(t, y, mode, tau_fn)[3], -1, "off_link", 0, "s")
-            make(lambda t, y: l_k - rates(t, y, mode, tau_fn)[3], -1, "off_link", 0, "l_k - s")
+            out += [EventSpec("separation", 0, "lam_contact"), EventSpec("off_link", 0, "s"),
+                    EventSpec("off_link", 0, "l_k - s")]
         elif not mode.off_link:
-            make(lambda t, y: rates(t, y, mode, tau_fn)[2], -1, "gap", 0, "gap")
+            out.append(EventSpec("gap", 0, "gap"))
         bounds = self.dyn.bounds
         for r in range(1, self.dyn.nc):
             st = mode.state[r]
-            b = bounds[r]
-            if st == HELD and np.isfinite(b):
-                make(lambda t, y, r=r, b=b: b - abs(rates(t, y, mode, tau_fn)[1][r]), -1,
-                     "breakaway", r, "bound - |lam|")
+            if st == HELD and np.isfinite(bounds[r]):
+                out.append(EventSpec("breakaway", r, "bound - |lam|"))
             elif st in (SLIDE_POS, SLIDE_NEG):
-                d = -1.0 if st == SLIDE_POS else 1.0  # direction of the sliding velocity
-                make(lambda t, y, r=r, d=d: d * rates(t, y, mode, tau_fn)[4][r], -1,
-                     "slide_stop", r, "sliding velocity")
+                out.append(EventSpec("slide_stop", r, "sliding velocity"))
+        out.codes = np.array([EVENT_CODES[e.quantity] for e in out], dtype=np.int64)
+        out.rows = np.array([e.row for e in out], dtype=np.int64)
+        mode.specs = out
+        return out
+
+    def functions(self, mode: Mode, tau_fn) -> list:
+        """The terminal event functions of ``mode`` (:meth:`specs`) for
+        :func:`scipy.integrate.solve_ivp`, each with the ``kind``, ``row`` and ``quantity``
+        of its spec."""
+        rates = self.dyn.rates
+        l_k = self.dyn.l_k
+        bounds = self.dyn.bounds
+        evs = []
+        for spec in self.specs(mode):
+            q, r = spec.quantity, spec.row
+            if q == "lam_contact":
+                fn = lambda t, y: rates(t, y, mode, tau_fn)[1][0]  # noqa: E731
+            elif q == "s":
+                fn = lambda t, y: rates(t, y, mode, tau_fn)[3]  # noqa: E731
+            elif q == "l_k - s":
+                fn = lambda t, y: l_k - rates(t, y, mode, tau_fn)[3]  # noqa: E731
+            elif q == "gap":
+                fn = lambda t, y: rates(t, y, mode, tau_fn)[2]  # noqa: E731
+            elif q == "bound - |lam|":
+                fn = (lambda t, y, r=r, b=bounds[r]:  # noqa: E731
+                      b - abs(rates(t, y, mode, tau_fn)[1][r]))
+            else:  # the sliding velocity's sign returning to zero
+                d = -1.0 if mode.state[r] == SLIDE_POS else 1.0
+                fn = lambda t, y, r=r, d=d: d * rates(t, y, mode, tau_fn)[4][r]  # noqa: E731
+            fn.terminal = True
+            fn.direction = -1
+            fn.kind, fn.row, fn.quantity = spec
+            evs.append(fn)
         return evs
 
     # --- at an event ------------------------------------------------------------------------

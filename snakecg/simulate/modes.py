@@ -21,7 +21,7 @@ class Mode:
     ``lam_fixed``: the forces of sliding wheels, ``+-`` their ``bounds``)."""
 
     __slots__ = ("state", "off_link", "free", "lam_fixed", "free_idx", "slide_idx",
-                 "contact_held", "wheel_names", "ff")
+                 "contact_held", "wheel_names", "ff", "specs")
 
     _cache: dict = {}  # (state, bounds, off_link) -> Mode, for Mode.of
 
@@ -54,6 +54,7 @@ class Mode:
                                  for s in self.state[1:])
         for a in (self.state, self.free, self.lam_fixed, self.free_idx, self.slide_idx):
             a.flags.writeable = False
+        self.specs = None  # its terminal events (snakecg.simulate.events.Events.specs)
 
     def describe(self) -> str:
         c = "held" if self.contact_held else ("off link" if self.off_link else "separated")

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import math
 import time
+from types import SimpleNamespace
 
 import numpy as np
 
@@ -67,6 +68,32 @@ class Simulator:
         grid = grid[grid < T - 1e-12 * T]
         return np.append(grid, T)
 
+    def _solve_ivp(self, solve_ivp, opts, t, t_end, y, mode, tau_fn, t_eval):
+        """One segment by :func:`scipy.integrate.solve_ivp`: an object with ``status``,
+        ``message``, the output ``t`` (m,) and ``y`` (m, n_y), and ``fired``: ``(event
+        function, t_e, y_e)`` of each terminal event that fired."""
+        dyn, cfg = self.dyn, self.settings
+        evs = self.events.functions(mode, tau_fn)
+
+        def fun(tt, yy, m=mode, f=tau_fn):
+            return dyn.rates(tt, yy, m, f)[0]
+
+        if cfg.fixed_step is not None:
+            opts["first_step"] = min(cfg.fixed_step, t_end - t)
+        try:
+            sol = solve_ivp(fun, (t, t_end), y, t_eval=t_eval, events=evs or None, **opts)
+        except SnakecgError:
+            raise
+        except (ValueError, np.linalg.LinAlgError, ArithmeticError) as exc:
+            raise SimulationError(f"integration failed at t = {t:.6g} s: {exc}") from exc
+        ys = np.asarray(sol.y).reshape(dyn.ny, -1).T if len(sol.t) else np.zeros((0, dyn.ny))
+        fired = []
+        if sol.status == 1:
+            fired = [(evs[i], float(te[0]), np.asarray(ye[0])) for i, (te, ye) in
+                     enumerate(zip(sol.t_events, sol.y_events)) if len(te)]
+        return SimpleNamespace(status=sol.status, message=sol.message, t=sol.t, y=ys,
+                               fired=fired)
+
     def run(self) -> Trajectory:
         from scipy.integrate import solve_ivp
 
@@ -111,38 +138,25 @@ class Simulator:
             if t_end - t <= 1e-12 * T:
                 t_end = T if next_control >= T else t_end
             tau_fn = torques.function()
-            evs = handler.functions(mode, tau_fn)
-            t_eval = grid[(grid > t) & (grid < t_end)]
-            t_eval = np.append(t_eval, t_end)
-
-            def fun(tt, yy, m=mode, f=tau_fn):
-                return dyn.rates(tt, yy, m, f)[0]
-
-            if cfg.fixed_step is not None:
-                opts["first_step"] = min(cfg.fixed_step, t_end - t)
-            sol = None
+            # output times in (t, t_end), then t_end
+            t_eval = np.append(grid[np.searchsorted(grid, t, "right"):
+                                    np.searchsorted(grid, t_end, "left")], t_end)
             cpu0 = time.process_time()
+            sol = None
             if self.compiled is not None:
-                sol = self.compiled.run(t, t_end, y, mode, tau_fn(t, y, mode), evs, t_eval)
-            try:
-                if sol is None:
-                    sol = solve_ivp(fun, (t, t_end), y, t_eval=t_eval, events=evs or None,
-                                    **opts)
-            except SnakecgError:
-                raise
-            except (ValueError, np.linalg.LinAlgError, ArithmeticError) as exc:
-                raise SimulationError(f"integration failed at t = {t:.6g} s: {exc}") from exc
+                sol = self.compiled.run(t, t_end, y, mode, tau_fn(t, y, mode),
+                                        handler.specs(mode), t_eval)
+            if sol is None:
+                sol = self._solve_ivp(solve_ivp, opts, t, t_end, y, mode, tau_fn, t_eval)
             self.segment_cpu += time.process_time() - cpu0
             segments += 1
             if sol.status < 0:
                 raise SimulationError(f"integration failed at t = {t:.6g} s: {sol.message}")
-            ys = np.asarray(sol.y).reshape(dyn.ny, -1) if len(sol.t) else np.zeros((dyn.ny, 0))
-            for tt, yy in zip(sol.t, ys.T):
+            for tt, yy in zip(sol.t, sol.y):
                 if tt > t:
                     samples.append((float(tt), yy.copy(), mode, tau_fn, impact_loss))
             if sol.status == 1:
-                fired = [(i, float(te[0]), np.asarray(ye[0])) for i, (te, ye) in
-                         enumerate(zip(sol.t_events, sol.y_events)) if len(te)]
+                fired = sol.fired
                 t_e = min(f[1] for f in fired)
                 fired = [f for f in fired if f[1] <= t_e + 1e-12 * max(1.0, T)]
                 y_e = fired[0][2].copy()
@@ -150,7 +164,7 @@ class Simulator:
                 if samples[-1][0] < t_e:
                     samples.append((t_e, y_e.copy(), mode, tau_fn, impact_loss))
                 n_before = len(events)
-                y, mode = handler.handle(t_e, y_e, mode, [evs[i] for i, _, _ in fired], events)
+                y, mode = handler.handle(t_e, y_e, mode, [ev for ev, _, _ in fired], events)
                 for e in events[n_before:]:
                     impact_loss += e.data.get("energy_loss", 0.0)
                 n_events += 1
@@ -162,7 +176,7 @@ class Simulator:
                     break
             else:
                 t = t_end
-                y = sol.y[:, -1].copy()
+                y = sol.y[-1].copy()
                 if t >= next_control * (1 - 1e-13):
                     next_control += cfg.control_period
                     if t < T * (1 - 1e-13):
