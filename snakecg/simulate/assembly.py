@@ -38,7 +38,8 @@ def assemble(sim, samples, events, status) -> Trajectory:
             sim.compiled.samples_into(Y[sl], mode, taui, R[sl])
             dyn.nfev += end - start
             tau[sl] = taui
-            todo = start + np.flatnonzero(R[sl, -1] != 0)
+            handed = R[sl, -1]
+            todo = start + np.flatnonzero(handed) if handed.any() else ()
         for i in todo:
             ydot, li, gi, si, AV, (ti, sri, nai, nqi) = dyn.rates(t[i], Y[i], mode, tau_fn)
             R[i, :ny], R[i, ny:ny + nc], R[i, ny + nc:ny + 2 * nc] = ydot, li, AV
@@ -48,7 +49,7 @@ def assemble(sim, samples, events, status) -> Trajectory:
         # integrated: off the constraints, at the integrator's stages, it is noise)
         F = mode.free_idx
         if F.size:
-            p_cons[sl] = np.einsum("ij,ij->i", R[sl, ny + F], R[sl, ny + nc + F])
+            p_cons[sl] = (R[sl, ny + F] * R[sl, ny + nc + F]).sum(axis=1)
         contact[sl] = mode.contact_held
         wheel_state[sl] = mode.wheel_names
     e = ny + 2 * nc

@@ -68,10 +68,12 @@ class Simulator:
         grid = grid[grid < T - 1e-12 * T]
         return np.append(grid, T)
 
-    def _solve_ivp(self, solve_ivp, opts, t, t_end, y, mode, tau_fn, t_eval):
+    def _solve_ivp(self, opts, t, t_end, y, mode, tau_fn, t_eval):
         """One segment by :func:`scipy.integrate.solve_ivp`: an object with ``status``,
         ``message``, the output ``t`` (m,) and ``y`` (m, n_y), and ``fired``: ``(event
         function, t_e, y_e)`` of each terminal event that fired."""
+        from scipy.integrate import solve_ivp
+
         dyn, cfg = self.dyn, self.settings
         evs = self.events.functions(mode, tau_fn)
 
@@ -95,8 +97,6 @@ class Simulator:
                                fired=fired)
 
     def run(self) -> Trajectory:
-        from scipy.integrate import solve_ivp
-
         cfg, dyn, torques, handler = self.settings, self.dyn, self.torques, self.events
         wall0 = time.perf_counter()
         T = cfg.duration
@@ -147,7 +147,7 @@ class Simulator:
                 sol = self.compiled.run(t, t_end, y, mode, tau_fn(t, y, mode),
                                         handler.specs(mode), t_eval)
             if sol is None:
-                sol = self._solve_ivp(solve_ivp, opts, t, t_end, y, mode, tau_fn, t_eval)
+                sol = self._solve_ivp(opts, t, t_end, y, mode, tau_fn, t_eval)
             self.segment_cpu += time.process_time() - cpu0
             segments += 1
             if sol.status < 0:
