@@ -49,23 +49,26 @@ def assemble(sim, samples, events, status) -> Trajectory:
         # integrated: off the constraints, at the integrator's stages, it is noise)
         F = mode.free_idx
         if F.size:
-            p_cons[sl] = (R[sl, ny + F] * R[sl, ny + nc + F]).sum(axis=1)
+            p_cons[sl] = (R[sl, ny:ny + nc] * R[sl, ny + nc:ny + 2 * nc]) @ mode.free
         contact[sl] = mode.contact_held
         wheel_state[sl] = mode.wheel_names
     e = ny + 2 * nc
     q, q_obj = Y[:, :ns], Y[:, ns:nx]
     v, v_obj = Y[:, nx:nx + ns], Y[:, nx + ns:2 * nx]
     W = Y[:, 2 * nx:]
-    # M_s at the initial configuration and at every sample, in one call
-    # (the generated functions on the run's own arrays: SceneModel.mass_matrix, link_poses)
-    M = kernels.call(model.backend, "mass_matrix", N + 1, q=np.vstack((cfg.q0, q)),
-                     K=model.parameters)["M"]
-    M0, M = M[0], M[1:]
+    # M_s and the link poses at the initial configuration and at every sample, in one call
+    Q = np.vstack((cfg.q0, q))
+    kin = sim.compiled.kinematics(Q) if sim.compiled is not None \
+        and sim.compiled.has_kinematics else None
+    if kin is None:  # SceneModel.mass_matrix, link_poses on the run's own arrays
+        kin = (kernels.call(model.backend, "mass_matrix", N + 1, q=Q, K=model.parameters)["M"],
+               kernels.call(model.backend, "link_poses", N + 1, q=Q,
+                            K=model.parameters)["poses"].transpose(0, 2, 1))
+    M0, M = kin[0][0], kin[0][1:]
+    poses = np.ascontiguousarray(kin[1][1:])
     ke = 0.5 * np.einsum("ni,nij,nj->n", v, M, v) + 0.5 * (v_obj**2 @ dyn.mo)
     sim.ke_initial = 0.5 * float(cfg.v0 @ M0 @ cfg.v0) + 0.5 * float(
         cfg.v_obj0 @ (dyn.mo * cfg.v_obj0))
-    poses = np.ascontiguousarray(kernels.call(model.backend, "link_poses", N, q=q,
-                                              K=model.parameters)["poses"].transpose(0, 2, 1))
     m = np.asarray(model.robot.mass)
     com = np.einsum("...ik,i->...k", poses[..., :2], m) / m.sum()  # SceneModel.com
     # displacement-based slippage ratio (metric of the initial configuration)
@@ -73,8 +76,8 @@ def assemble(sim, samples, events, status) -> Trajectory:
     do = q_obj - q_obj[0]
     num = np.einsum("ni,i,ni->n", do, dyn.mo, do)
     den = num + np.einsum("ni,ij,nj->n", dq, M0, dq)
-    with np.errstate(invalid="ignore", divide="ignore"):
-        sr_d = np.where(den > 0, num / np.where(den > 0, den, 1.0), np.nan)
+    sr_d = np.full(N, np.nan)
+    np.divide(num, den, out=sr_d, where=den > 0)
     loss = impact  # cumulative kinetic energy removed by impacts / projections
     residual = (ke - sim.ke_initial) - (W[:, 0] + W[:, 1] + W[:, 2] - loss)
     scene = dyn.scene

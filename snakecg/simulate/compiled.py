@@ -56,6 +56,12 @@ class CompiledSegments:
         self._fn = model.core.integrate_segment
         self._samples = model.core.mode_samples
         self._model = model  # keeps the scene vector alive
+        self._K = np.ascontiguousarray(model.parameters, dtype=float)
+        be = model.backend
+        self.has_kinematics = all(
+            name in getattr(be, "_fns", {}) and len(be.signatures[name].out_shapes) == 1
+            and set(be.signatures[name].in_names) == {"q", "K"}
+            for name in ("mass_matrix", "link_poses"))
         ny, na, nc = dyn.ny, dyn.na, dyn.nc
         # every array the C reads or writes, as views of one buffer (one address lookup)
         sizes = {"y0": ny, "y_end": ny, "tau": na, "state": nc, "f_obj": 3, "rho": 2,
@@ -182,6 +188,34 @@ class CompiledSegments:
         if not r["ok"][0]:
             return None
         return r["lam"][0].copy(), float(r["s"][0])
+
+    def kinematics(self, Q):
+        """``M_s`` (n, n_s, n_s) and the link poses (n, n_l, 3) at the configurations ``Q``
+        (n, n_s): the generated ``mass_matrix`` and ``link_poses`` through their compiled
+        batch drivers on the run's own arrays (what :meth:`snakecg.SceneModel.mass_matrix`
+        and :meth:`~snakecg.SceneModel.link_poses` give, without their checks)."""
+        model = self._model
+        be = model.backend
+        Q = np.ascontiguousarray(Q, dtype=float)
+        n, ns = Q.shape
+        out = []
+        for name in ("mass_matrix", "link_poses"):
+            sig = be.signatures[name]
+            (rows, cols), = sig.out_shapes
+            argp = (ctypes.c_void_p * 2)()
+            strides = (ctypes.c_longlong * 2)()
+            for k, arg in enumerate(sig.in_names):  # q and K
+                if arg == "q":
+                    argp[k], strides[k] = Q.ctypes.data, ns
+                else:
+                    argp[k] = self._K.ctypes.data
+            o = np.empty((n, cols, rows))
+            resp = (ctypes.c_void_p * 1)(o.ctypes.data)
+            if be._fns[name](n, argp, strides, resp) != 0:
+                return None
+            out.append(o)
+        M, P = out
+        return M.transpose(0, 2, 1), P
 
     def samples_into(self, Y, mode, tau, out) -> None:
         """The trajectory's quantities at the states ``Y`` (n, n_y) in ``mode`` with the torque
