@@ -10,7 +10,9 @@ solve) and the dense numpy model of ``tests/reference.py``:
   ``I (V+ - V-) = A_R^T Lam`` (the impulse through the rows), the energy lost is
   ``1/2 (V-^T I V- - V+^T I V+)``;
 * at rest the new active set is the one that satisfies the complementarity conditions by
-  enumeration of the dense model.
+  enumeration of the dense model;
+* the trajectory's summary, computed on first access, against its arrays and the dense model
+  (also in a copy and after pickling).
 """
 
 from __future__ import annotations
@@ -178,3 +180,34 @@ def test_compiled_active_set_at_rest_against_enumeration(models, scenario):
         assert [NAMES[int(s)] for s in mode.state] == sol["states"]
         seen.add(tuple(sol["states"]))
     assert len(seen) >= 2, seen
+
+
+def test_summary_on_first_access(models):
+    """The summary is computed when first read, from the trajectory's own arrays: the same
+    numbers as the arrays give (object displacement, final kinetic energy, event counts), in
+    a copy and after a pickle round trip as well."""
+    import copy
+    import json
+    import pickle
+
+    sm, ref = models("wheels")
+    q0 = Q3
+    tau = np.array([0.4, 0.0, -0.2])
+    traj = sm.simulate(q0, tau, 0.2, output_dt=0.05)
+    assert "summary" not in traj.__dict__  # not computed yet
+    clone = pickle.loads(pickle.dumps(traj))
+    assert "summary" in traj.__dict__  # pickling computed it first
+    s = traj.summary
+    assert clone.summary == s and copy.deepcopy(traj).summary == s
+    json.dumps(s)
+    d = traj.q_obj[-1] - traj.q_obj[0]
+    assert s["object_displacement"]["x"] == d[0] and s["object_displacement"]["y"] == d[1]
+    # final kinetic energy from the dense model's mass matrix
+    M = ref.mass_matrix(traj.q[-1])
+    ke = 0.5 * traj.v[-1] @ M @ traj.v[-1] + 0.5 * traj.v_obj[-1] @ (
+        np.array([ref.m_obj, ref.m_obj, ref.I_obj_rot]) * traj.v_obj[-1])
+    assert abs(s["energy"]["kinetic_final"] - ke) <= 1e-12 * max(1.0, ke)
+    counts = {}
+    for e in traj.events:
+        counts[e.kind] = counts.get(e.kind, 0) + 1
+    assert s["event_counts"] == counts

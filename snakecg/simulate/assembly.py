@@ -4,6 +4,8 @@ the JSON-ready summary (schema :data:`~snakecg.simulate.records.SCHEMA`)."""
 
 from __future__ import annotations
 
+import weakref
+
 import numpy as np
 
 from .. import kernels
@@ -80,17 +82,8 @@ def assemble(sim, samples, events, status) -> Trajectory:
     np.divide(num, den, out=sr_d, where=den > 0)
     loss = impact  # cumulative kinetic energy removed by impacts / projections
     residual = (ke - sim.ke_initial) - (W[:, 0] + W[:, 1] + W[:, 2] - loss)
-    scene = dyn.scene
-    geometry = {
-        "length": np.asarray(scene.robot.length, float),
-        "com": np.asarray(scene.robot.com, float),
-        "wheel_offset": dyn.woff.copy(),
-        "wheel_links": np.flatnonzero(dyn.present[1:]) + 1,
-        "contact_link": dyn.k + 1,
-        "side": dyn.sigma,
-        "object_distance": float(scene.object_distance),
-        "wheel_bounds": dyn.bounds[1:].copy(),
-    }
+    geometry = {k: v.copy() if isinstance(v, np.ndarray) else v
+                for k, v in _geometry(model, dyn).items()}
     return Trajectory(
         t=t, q=q, v=v, q_obj=q_obj, v_obj=v_obj, rho=dyn.rho.copy(), tau=tau,
         lam=R[:, ny:ny + nc].copy(), qdd=R[:, nx:nx + ns].copy(),
@@ -102,6 +95,28 @@ def assemble(sim, samples, events, status) -> Trajectory:
         work_tau=W[:, 0].copy(), work_friction=W[:, 1].copy(), work_object=W[:, 2].copy(),
         power_constraint=p_cons, impact_loss=loss, energy_residual=residual, events=events,
         summary=lambda traj: summary(sim, traj, status), geometry=geometry)
+
+
+_GEOMETRY: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
+
+
+def _geometry(model, dyn) -> dict:
+    """The trajectory's ``geometry`` (constants of the model, for drawing), built once per
+    model; the caller copies the arrays."""
+    g = _GEOMETRY.get(model)
+    if g is None:
+        scene = dyn.scene
+        g = _GEOMETRY[model] = {
+            "length": np.asarray(scene.robot.length, float),
+            "com": np.asarray(scene.robot.com, float),
+            "wheel_offset": dyn.woff.copy(),
+            "wheel_links": np.flatnonzero(dyn.present[1:]) + 1,
+            "contact_link": dyn.k + 1,
+            "side": dyn.sigma,
+            "object_distance": float(scene.object_distance),
+            "wheel_bounds": dyn.bounds[1:].copy(),
+        }
+    return g
 
 
 def _runs(samples):

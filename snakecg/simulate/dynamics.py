@@ -58,7 +58,8 @@ class Dynamics:
         self.woff = np.asarray(scene.wheel_offset, dtype=float)
         self._woff = self.woff.tolist()
         self._rho = tuple(rho.tolist())
-        self.mo = np.array([scene.object_mass, scene.object_mass, scene.object_inertia])
+        m_obj = scene.object_mass
+        self.mo = np.array([m_obj, m_obj, scene.object_inertia])
         self._model = model
         self._cache = None  # (t, mode, tau_fn, y bytes, rates) of the last evaluation
         self._zeros_nc = np.zeros(nc)

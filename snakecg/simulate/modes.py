@@ -21,7 +21,7 @@ class Mode:
     ``lam_fixed``: the forces of sliding wheels, ``+-`` their ``bounds``)."""
 
     __slots__ = ("state", "off_link", "free", "lam_fixed", "free_idx", "slide_idx",
-                 "contact_held", "wheel_names", "ff", "specs")
+                 "contact_held", "wheel_names", "ff", "specs", "description")
 
     _cache: dict = {}  # (state, bounds, off_link) -> Mode, for Mode.of
 
@@ -55,10 +55,11 @@ class Mode:
         for a in (self.state, self.free, self.lam_fixed, self.free_idx, self.slide_idx):
             a.flags.writeable = False
         self.specs = None  # its terminal events (snakecg.simulate.events.Events.specs)
+        c = "held" if self.contact_held else ("off link" if self.off_link else "separated")
+        self.description = f"contact {c}; wheels " + " ".join(self.wheel_names)
 
     def describe(self) -> str:
-        c = "held" if self.contact_held else ("off link" if self.off_link else "separated")
-        return f"contact {c}; wheels " + " ".join(self.wheel_names)
+        return self.description
 
 
 def transitions(t, old: Mode, new: Mode, *, impact: bool) -> list[SimEvent]:

@@ -64,6 +64,8 @@ class Simulator:
 
     def _output_times(self) -> np.ndarray:
         T, dt = self.settings.duration, self.settings.output_dt
+        if dt >= T:
+            return np.array([T])
         grid = np.arange(1, int(math.floor(T / dt + 1e-9)) + 1) * dt
         grid = grid[grid < T - 1e-12 * T]
         return np.append(grid, T)
