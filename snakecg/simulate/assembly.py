@@ -14,16 +14,17 @@ from .records import SCHEMA, Trajectory, jsonable
 __all__ = ["assemble", "summary"]
 
 
-def assemble(sim, samples, events, status) -> Trajectory:
+def assemble(sim, blocks, events, status) -> Trajectory:
     """The trajectory of the run ``sim`` (a :class:`~snakecg.simulate.simulator.Simulator`)
-    from its ``samples`` ``(t, y, mode, tau_fn, impact_loss)``, every quantity evaluated again
-    at each sample in the sample's mode (the summary on first access)."""
+    from its samples in ``blocks`` ``(t (k,), y (k, n_y), mode, tau_fn, impact_loss)``, every
+    quantity evaluated again at each sample in the sample's mode (the summary on first
+    access)."""
     model, dyn, cfg = sim.model, sim.dyn, sim.settings
-    N = len(samples)
+    t = np.concatenate([b[0] for b in blocks])
+    N = len(t)
     ns, na, nc, nl, nx, ny = dyn.ns, dyn.na, dyn.nc, dyn.nl, dyn.nx, dyn.ny
-    t = np.fromiter((s[0] for s in samples), float, N)
-    Y = np.array([s[1] for s in samples])
-    impact = np.fromiter((s[4] for s in samples), float, N)
+    Y = np.concatenate([b[1] for b in blocks])
+    impact = np.repeat([b[4] for b in blocks], [len(b[0]) for b in blocks])
     # per sample, as the compiled samples lay it out: ydot (n_y), lam, A V (n_c), gap, s, sr,
     # norm_a_obj, norm_qdd and the sample's status
     R = np.empty((N, ny + 2 * nc + 6))
@@ -31,7 +32,7 @@ def assemble(sim, samples, events, status) -> Trajectory:
     p_cons = np.zeros(N)
     contact = np.empty(N, dtype=bool)
     wheel_state = np.empty((N, nl), dtype="<U6")
-    for start, end, mode, tau_fn in _runs(samples):
+    for start, end, mode, tau_fn in _runs(blocks):
         sl = slice(start, end)
         todo = range(start, end)
         if sim.compiled is not None:
@@ -119,17 +120,19 @@ def _geometry(model, dyn) -> dict:
     return g
 
 
-def _runs(samples):
-    """``(start, end, mode, tau_fn)`` of each run of consecutive samples that share their
-    mode and torque function."""
-    start = 0
-    while start < len(samples):
-        mode, tau_fn = samples[start][2], samples[start][3]
-        end = start + 1
-        while end < len(samples) and samples[end][2] is mode and samples[end][3] is tau_fn:
-            end += 1
-        yield start, end, mode, tau_fn
-        start = end
+def _runs(blocks):
+    """``(start, end, mode, tau_fn)`` of each run of consecutive samples (over the blocks)
+    that share their mode and torque function."""
+    start = end = 0
+    key = None
+    for b in blocks:
+        if key is not None and (b[2] is not key[0] or b[3] is not key[1]):
+            yield start, end, key[0], key[1]
+            start = end
+        key = (b[2], b[3])
+        end += len(b[0])
+    if key is not None:
+        yield start, end, key[0], key[1]
 
 
 def summary(sim, tr: Trajectory, status: str) -> dict:

@@ -124,11 +124,11 @@ class Simulator:
                                  events=events, impact_kind="impact")
         for e in events:
             impact_loss += e.data.get("energy_loss", 0.0)
-        samples = []  # (t, y, mode, tau_fn, impact_loss)
+        blocks = []  # samples in blocks (t (k,), y (k, n_y), mode, tau_fn, impact_loss)
         grid = self._output_times()
         t = 0.0
         self.initial_mode = mode.describe()
-        samples.append((t, y.copy(), mode, torques.function(), impact_loss))
+        blocks.append((np.array([t]), y[None, :].copy(), mode, torques.function(), impact_loss))
         status = "completed"
         n_events = 0
         segments = 0
@@ -154,24 +154,27 @@ class Simulator:
             segments += 1
             if sol.status < 0:
                 raise SimulationError(f"integration failed at t = {t:.6g} s: {sol.message}")
-            for tt, yy in zip(sol.t, sol.y):
-                if tt > t:
-                    samples.append((float(tt), yy.copy(), mode, tau_fn, impact_loss))
+            keep = np.asarray(sol.t) > t
+            if keep.any():
+                blocks.append((np.asarray(sol.t, dtype=float)[keep], sol.y[keep], mode, tau_fn,
+                               impact_loss))
             if sol.status == 1:
                 fired = sol.fired
                 t_e = min(f[1] for f in fired)
                 fired = [f for f in fired if f[1] <= t_e + 1e-12 * max(1.0, T)]
                 y_e = fired[0][2].copy()
                 stuck = stuck + 1 if t_e - t <= 1e-12 * max(1.0, T) else 0
-                if samples[-1][0] < t_e:
-                    samples.append((t_e, y_e.copy(), mode, tau_fn, impact_loss))
+                if blocks[-1][0][-1] < t_e:
+                    blocks.append((np.array([t_e]), y_e[None, :].copy(), mode, tau_fn,
+                                   impact_loss))
                 n_before = len(events)
                 y, mode = handler.handle(t_e, y_e, mode, [ev for ev, _, _ in fired], events)
                 for e in events[n_before:]:
                     impact_loss += e.data.get("energy_loss", 0.0)
                 n_events += 1
                 t = t_e
-                samples.append((t, y.copy(), mode, torques.function(), impact_loss))
+                blocks.append((np.array([t]), y[None, :].copy(), mode, torques.function(),
+                               impact_loss))
                 if n_events >= cfg.max_events or stuck > 20:
                     status = (f"stopped at t = {t:.6g} s after {n_events} events"
                               + (" (no progress between events)" if stuck > 20 else ""))
@@ -189,12 +192,12 @@ class Simulator:
                         for e in events[n_before:]:
                             impact_loss += e.data.get("energy_loss", 0.0)
                         if len(events) > n_before:
-                            samples.append((t, y.copy(), mode, torques.function(),
-                                            impact_loss))
+                            blocks.append((np.array([t]), y[None, :].copy(), mode,
+                                           torques.function(), impact_loss))
         self.wall = time.perf_counter() - wall0
         self.segments = segments
         self.final_mode = mode.describe()
-        return assemble(self, samples, events, status)
+        return assemble(self, blocks, events, status)
 
 
 def simulate(model, q0, tau, duration, v0=None, *, v_obj0=None, q_obj0=None, rho=None,
