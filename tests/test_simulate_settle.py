@@ -211,3 +211,15 @@ def test_summary_on_first_access(models):
     for e in traj.events:
         counts[e.kind] = counts.get(e.kind, 0) + 1
     assert s["event_counts"] == counts
+
+
+def test_compiled_kinematics_against_dense_reference(models):
+    """The assembly's batch evaluation of M_s and the link poses on the run's arrays
+    (``CompiledSegments.kinematics``) against the dense model at random configurations."""
+    sm, ref = models("wheels")
+    sim, _, _ = _pair(sm, np.zeros(3))
+    Q = np.random.default_rng(5).normal(size=(7, 6))
+    M, P = sim.compiled.kinematics(Q)
+    for q, Mi, Pi in zip(Q, M, P):
+        assert np.abs(Mi - ref.mass_matrix(q)).max() <= 1e-12 * np.abs(Mi).max()
+        assert np.abs(Pi - ref.link_poses(q)).max() <= 1e-12

@@ -56,12 +56,25 @@ class CompiledSegments:
         self._fn = model.core.integrate_segment
         self._samples = model.core.mode_samples
         self._model = model  # keeps the scene vector alive
-        self._K = np.ascontiguousarray(model.parameters, dtype=float)
+        # the batch drivers of mass_matrix and link_poses (inputs q, K): their pointer arrays
         be = model.backend
+        fns = getattr(be, "_fns", {})
         self.has_kinematics = all(
-            name in getattr(be, "_fns", {}) and len(be.signatures[name].out_shapes) == 1
-            and set(be.signatures[name].in_names) == {"q", "K"}
+            name in fns and be.signatures[name].in_names in (["q", "K"], ["K", "q"])
             for name in ("mass_matrix", "link_poses"))
+        if self.has_kinematics:
+            self._K = np.ascontiguousarray(model.parameters, dtype=float)
+            self._kin = []
+            for name in ("mass_matrix", "link_poses"):
+                k = be.signatures[name].in_names.index("q")
+                argp = (ctypes.c_void_p * 2)()
+                argp[1 - k] = self._K.ctypes.data
+                self._kin.append((fns[name], argp, k, (ctypes.c_void_p * 1)()))
+            self._kin_strides = []  # q's stride n_s (at its index), K broadcast
+            for k in (0, 1):
+                st = (ctypes.c_longlong * 2)()
+                st[k] = dyn.ns
+                self._kin_strides.append(st)
         ny, na, nc = dyn.ny, dyn.na, dyn.nc
         # every array the C reads or writes, as views of one buffer (one address lookup)
         sizes = {"y0": ny, "y_end": ny, "tau": na, "state": nc, "f_obj": 3, "rho": 2,
@@ -193,29 +206,21 @@ class CompiledSegments:
         """``M_s`` (n, n_s, n_s) and the link poses (n, n_l, 3) at the configurations ``Q``
         (n, n_s): the generated ``mass_matrix`` and ``link_poses`` through their compiled
         batch drivers on the run's own arrays (what :meth:`snakecg.SceneModel.mass_matrix`
-        and :meth:`~snakecg.SceneModel.link_poses` give, without their checks)."""
-        model = self._model
-        be = model.backend
+        and :meth:`~snakecg.SceneModel.link_poses` give, without their checks), or ``None``
+        when an evaluation failed."""
         Q = np.ascontiguousarray(Q, dtype=float)
-        n, ns = Q.shape
-        out = []
-        for name in ("mass_matrix", "link_poses"):
-            sig = be.signatures[name]
-            (rows, cols), = sig.out_shapes
-            argp = (ctypes.c_void_p * 2)()
-            strides = (ctypes.c_longlong * 2)()
-            for k, arg in enumerate(sig.in_names):  # q and K
-                if arg == "q":
-                    argp[k], strides[k] = Q.ctypes.data, ns
-                else:
-                    argp[k] = self._K.ctypes.data
-            o = np.empty((n, cols, rows))
-            resp = (ctypes.c_void_p * 1)(o.ctypes.data)
-            if be._fns[name](n, argp, strides, resp) != 0:
+        n = len(Q)
+        ns, nl = self.dyn.ns, self.dyn.nl
+        buf = np.empty(n * (ns * ns + 3 * nl))
+        q, base = Q.ctypes.data, buf.ctypes.data
+        outs = (base, base + 8 * n * ns * ns)
+        for (fn, argp, k, resp), out in zip(self._kin, outs):
+            argp[k] = q
+            resp[0] = out
+            if fn(n, argp, self._kin_strides[k], resp) != 0:
                 return None
-            out.append(o)
-        M, P = out
-        return M.transpose(0, 2, 1), P
+        M = buf[:n * ns * ns].reshape(n, ns, ns).transpose(0, 2, 1)
+        return M, buf[n * ns * ns:].reshape(n, nl, 3)
 
     def samples_into(self, Y, mode, tau, out) -> None:
         """The trajectory's quantities at the states ``Y`` (n, n_y) in ``mode`` with the torque
