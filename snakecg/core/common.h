@@ -1,9 +1,10 @@
-/* What the runtime core's C files share (snakecg/core/forward.c, integrate.c, settle.c): the
- * row states, the generated functions' work arrays, one evaluation of the generated
+/* What the runtime core's C files share (snakecg/core/forward.c, integrate.c, settle.c,
+ * run.c): the row states, the simulation's structs, the generated functions' work arrays, one evaluation of the generated
  * `contact_system`, the rows' velocities A V, the held rows' forces of eq. (16) and the
  * active-set rule. Included after snakecg_layout.h; everything here is static, so each file
  * gets its own copy and the library exports nothing more; a file asks for the parts that not
- * every file uses (SC_ROW_VELOCITIES, SC_NEXT_STATES) before including it. */
+ * every file uses (SC_ROW_VELOCITIES, SC_NEXT_STATES), or the types alone (SC_TYPES_ONLY),
+ * before including it. */
 #ifndef SNAKECG_CORE_COMMON_H
 #define SNAKECG_CORE_COMMON_H
 
@@ -21,6 +22,78 @@ int SNAKECG_LJ_WORK(sc_int *sz_arg, sc_int *sz_res, sc_int *sz_iw, sc_int *sz_w)
 /* row states (snakecg/solver.py) */
 enum { ABSENT = 0, HELD = 1, LOST = 2, SLIDE_POS = 3, SLIDE_NEG = 4 };
 
+/* The simulation's structs, shared by integrate.c, settle.c and run.c (mirrored field by
+ * field in snakecg/core/segment.py). */
+/* event functions (snakecg/simulate/events.py, Events.functions) */
+enum { EV_SEPARATION = 0, EV_S_LOW = 1, EV_S_HIGH = 2, EV_GAP = 3, EV_BREAKAWAY = 4,
+       EV_SLIDE_STOP = 5 };
+/* segment status */
+enum { SEG_END = 0, SEG_EVENT = 1, SEG_TOO_SMALL = -1, SEG_PYTHON = -2, SEG_MEMORY = -3,
+       SEG_BAD_INPUT = -4 };
+enum { SETTLE_DONE = 0, SETTLE_PYTHON = 1, SETTLE_MEMORY = 2 };
+
+/* One segment: inputs, then outputs (filled by core_integrate_segment). */
+typedef struct {
+  /* the model and the run */
+  const double *scene;   /* the scene vector (layout: SCENE_*) */
+  const double *tau;     /* NA, held over the segment */
+  const double *f_obj;   /* 3 */
+  const double *rho;     /* 2, contact point in the object frame */
+  const double *state;   /* NC row states (solver codes, as doubles) */
+  const sc_int *ev_kind; /* n_ev event kinds (EV_*) */
+  const sc_int *ev_row;  /* their rows */
+  sc_int n_ev;
+  sc_int contact_index;  /* k: the contact link, from 0 */
+  double c_k, l_k;       /* the contact link's COM offset and length */
+  double alpha;          /* Baumgarte rate (1/s) */
+  double pivot_tol;      /* held rows dependent at or below this pivot ratio */
+  double rtol, atol, max_step;
+  double t0, t1;
+  const double *y0;      /* NY */
+  const double *t_eval;  /* n_eval increasing times in (t0, t1] */
+  sc_int n_eval;
+  /* outputs */
+  double *y_eval;        /* n_eval x NY, row-major */
+  sc_int n_out;          /* output times reached */
+  double t_end;          /* where the segment ended (t1 or the event) */
+  double *y_end;         /* NY: the state there */
+  sc_int event;          /* the event that fired (index into ev_*), -1 if none */
+  sc_int nfev, nsteps, nrejected;
+  sc_int status;         /* SEG_* */
+} sc_segment;
+
+/* One settle: inputs, then outputs (filled by core_settle). */
+typedef struct {
+  const double *scene;  /* the scene vector (layout: SCENE_*) */
+  const double *tau;    /* NA */
+  const double *f_obj;  /* 3 */
+  const double *rho;    /* 2 */
+  sc_int contact_index; /* k, from 0 */
+  double c_k, l_k;
+  double pivot_tol, rel_tol;
+  sc_int max_iter;      /* active-set passes */
+  const double *y;      /* NY: the state at the event */
+  const double *prev;   /* NC row states of the mode before (null at the start) */
+  const double *forced; /* NC: a row's forced state, or -1 */
+  sc_int contact_candidate;
+  /* outputs */
+  double vtol;          /* 1e-8 max(1, max |V|) at y */
+  double *y_out;        /* NY */
+  double *state;        /* NC: the new row states */
+  double *forced_out;   /* NC: the forced rows after the velocity checks (-1: free) */
+  sc_int impact;        /* 1 when the contact closed with an impact */
+  double impact_velocity, impact_ke, impact_de; /* gdot before, energy before, change */
+  double *impact_lam;   /* NC: impulses of the contact and the ideal wheels, in row order */
+  sc_int n_impact;
+  sc_int n_projected;   /* rows projected in step 4 (0: none) */
+  double drift;         /* their largest |A V| before the projection */
+  sc_int drift_row;     /* where it is (the first such row) */
+  double projection_ke, projection_de;
+  double *projection_lam; /* NC: their impulses, in row order */
+  sc_int status;        /* SETTLE_* */
+} sc_settle;
+
+#ifndef SC_TYPES_ONLY /* run.c: the types alone */
 /* Argument and result pointer arrays and work vectors of generated functions, sized for the
  * largest of `n` of them (their `_work` functions). */
 typedef struct {
@@ -241,6 +314,7 @@ static int sc_next_states(signed char *state, const double *lam, const double *w
   }
   return moved;
 }
+#endif
 #endif
 
 #endif

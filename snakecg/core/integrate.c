@@ -45,12 +45,6 @@
 #define NY (2 * NX + 3)
 #define MAX_EVENTS (3 + NC)
 
-/* event functions (snakecg/simulate/events.py, Events.functions) */
-enum { EV_SEPARATION = 0, EV_S_LOW = 1, EV_S_HIGH = 2, EV_GAP = 3, EV_BREAKAWAY = 4,
-       EV_SLIDE_STOP = 5 };
-/* segment status */
-enum { SEG_END = 0, SEG_EVENT = 1, SEG_TOO_SMALL = -1, SEG_PYTHON = -2, SEG_MEMORY = -3,
-       SEG_BAD_INPUT = -4 };
 
 /* DOP853: 12 stages, 16 with the dense output's, interpolant of 7 terms (scipy's
  * dop853_coefficients: N_STAGES, N_STAGES_EXTENDED, INTERPOLATOR_POWER) */
@@ -84,35 +78,6 @@ static const double DP_D[DP_NP - 3][DP_NX] = {
     {19.985053242002433, 0.0, 0.0, 0.0, 0.0, -387.0373087493518, -189.17813819516758, 527.8081592054236, -11.57390253995963, 6.8812326946963, -1.0006050966910838, 0.7777137798053443, -2.778205752353508, -60.19669523126412, 84.32040550667716, 11.99229113618279},
     {-25.69393346270375, 0.0, 0.0, 0.0, 0.0, -154.18974869023643, -231.5293791760455, 357.6391179106141, 93.40532418362432, -37.45832313645163, 104.0996495089623, 29.8402934266605, -43.53345659001114, 96.32455395918828, -39.17726167561544, -149.72683625798564}};
 
-/* One segment: inputs, then outputs (filled by core_integrate_segment). */
-typedef struct {
-  /* the model and the run */
-  const double *scene;   /* the scene vector (layout: SCENE_*) */
-  const double *tau;     /* NA, held over the segment */
-  const double *f_obj;   /* 3 */
-  const double *rho;     /* 2, contact point in the object frame */
-  const double *state;   /* NC row states (solver codes, as doubles) */
-  const sc_int *ev_kind; /* n_ev event kinds (EV_*) */
-  const sc_int *ev_row;  /* their rows */
-  sc_int n_ev;
-  sc_int contact_index;  /* k: the contact link, from 0 */
-  double c_k, l_k;       /* the contact link's COM offset and length */
-  double alpha;          /* Baumgarte rate (1/s) */
-  double pivot_tol;      /* held rows dependent at or below this pivot ratio */
-  double rtol, atol, max_step;
-  double t0, t1;
-  const double *y0;      /* NY */
-  const double *t_eval;  /* n_eval increasing times in (t0, t1] */
-  sc_int n_eval;
-  /* outputs */
-  double *y_eval;        /* n_eval x NY, row-major */
-  sc_int n_out;          /* output times reached */
-  double t_end;          /* where the segment ended (t1 or the event) */
-  double *y_end;         /* NY: the state there */
-  sc_int event;          /* the event that fired (index into ev_*), -1 if none */
-  sc_int nfev, nsteps, nrejected;
-  sc_int status;         /* SEG_* */
-} sc_segment;
 
 typedef struct {
   sc_work_t ws;

@@ -40,38 +40,6 @@
 #define NX (NS + 3)
 #define NY (2 * NX + 3)
 
-enum { SETTLE_DONE = 0, SETTLE_PYTHON = 1, SETTLE_MEMORY = 2 };
-
-/* One settle: inputs, then outputs (filled by core_settle). */
-typedef struct {
-  const double *scene;  /* the scene vector (layout: SCENE_*) */
-  const double *tau;    /* NA */
-  const double *f_obj;  /* 3 */
-  const double *rho;    /* 2 */
-  sc_int contact_index; /* k, from 0 */
-  double c_k, l_k;
-  double pivot_tol, rel_tol;
-  sc_int max_iter;      /* active-set passes */
-  const double *y;      /* NY: the state at the event */
-  const double *prev;   /* NC row states of the mode before (null at the start) */
-  const double *forced; /* NC: a row's forced state, or -1 */
-  sc_int contact_candidate;
-  /* outputs */
-  double vtol;          /* 1e-8 max(1, max |V|) at y */
-  double *y_out;        /* NY */
-  double *state;        /* NC: the new row states */
-  double *forced_out;   /* NC: the forced rows after the velocity checks (-1: free) */
-  sc_int impact;        /* 1 when the contact closed with an impact */
-  double impact_velocity, impact_ke, impact_de; /* gdot before, energy before, change */
-  double *impact_lam;   /* NC: impulses of the contact and the ideal wheels, in row order */
-  sc_int n_impact;
-  sc_int n_projected;   /* rows projected in step 4 (0: none) */
-  double drift;         /* their largest |A V| before the projection */
-  sc_int drift_row;     /* where it is (the first such row) */
-  double projection_ke, projection_de;
-  double *projection_lam; /* NC: their impulses, in row order */
-  sc_int status;        /* SETTLE_* */
-} sc_settle;
 
 /* G, Q = [Kq; Ka], gap, s and A V at y. */
 static int maps(sc_work_t *ws, const sc_settle *st, const double *y, sc_system *sys,

@@ -21,8 +21,8 @@ from types import SimpleNamespace
 
 import numpy as np
 
-from ..core.segment import (SEG_END, SEG_EVENT, SEG_TOO_SMALL, SETTLE_DONE,
-                            Segment, Settle)
+from ..core.segment import (RUN_COMPLETED, RUN_STOPPED, SEG_END, SEG_EVENT, SEG_TOO_SMALL,
+                            SETTLE_DONE, Run, Segment, Settle)
 from ..solver import PIVOT_TOL, REL_TOL, default_max_iter
 
 __all__ = ["CompiledSegments", "compiled_reason"]
@@ -106,7 +106,10 @@ class CompiledSegments:
         self.seg = seg
         self._address = ctypes.addressof(seg)
         self.steps = 0
-        self.handed_back = 0
+        self.handed_back = 0  # segments and settles done in Python instead
+        self.runs_handed_back = 0  # whole runs (core_run) done by the Python loop instead
+        self._run = model.core.run
+        self.y_start = np.zeros(ny)
         # core_settle (the torque is the segments')
         self._settle = model.core.settle
         st = Settle()
@@ -155,6 +158,50 @@ class CompiledSegments:
             t=self.t_eval[:m], y=self.y_eval[:m].copy(),
             status={SEG_END: 0, SEG_EVENT: 1, SEG_TOO_SMALL: -1}[status],
             message=_TOO_SMALL if status == SEG_TOO_SMALL else "", fired=fired)
+
+    def run_all(self, y, mode, loss, tau, grid, T, gtol, max_events):
+        """The whole run from the state ``y`` in ``mode`` (after the start's settle, the
+        energy ``loss`` removed there) with the constant torque ``tau`` to ``T``, output at
+        ``grid`` (increasing, the last is ``T``), in one C call (``core_run``): the filled
+        :class:`~snakecg.core.segment.Run` with its arrays (``t``, ``y``, ``mode`` and
+        ``loss`` of each sample, the ``modes`` and the ``events``, see run.c), or ``None``
+        when the Python loop must do the run."""
+        dyn = self.dyn
+        ny, nc = dyn.ny, dyn.nc
+        grid = np.ascontiguousarray(grid, dtype=float)
+        cap_events = min(int(max_events), 256) + 1
+        cap = len(grid) + 2 * cap_events + 2
+        sizes = {"t": cap, "y": cap * ny, "mode": cap, "loss": cap,
+                 "modes": (cap_events + 1) * (nc + 1), "events": cap_events * (11 + nc)}
+        buf = np.empty(sum(sizes.values()))
+        base, out, addr, off = buf.ctypes.data, {}, {}, 0
+        for name, size in sizes.items():
+            out[name], addr[name] = buf[off:off + size], base + 8 * off
+            off += size
+        self.tau[:] = tau
+        self.state[:] = mode.state  # the start's mode, then the current one
+        self.y_start[:] = y
+        R = Run()
+        R.sg, R.st = self._address, self._settle_address
+        R.T, R.gtol, R.grid, R.n_grid = T, gtol, grid.ctypes.data, len(grid)
+        R.max_events, R.t, R.off_link, R.loss = int(max_events), 0.0, int(mode.off_link), loss
+        R.y = self.y_start.ctypes.data
+        R.cap, R.t_out, R.y_out = cap, addr["t"], addr["y"]
+        R.mode_out, R.loss_out = addr["mode"], addr["loss"]
+        R.cap_modes, R.modes = cap_events + 1, addr["modes"]
+        R.cap_events, R.events = cap_events, addr["events"]
+        status = self._run(ctypes.addressof(R))
+        if status not in (RUN_COMPLETED, RUN_STOPPED):
+            self.runs_handed_back += 1
+            return None
+        n = R.n_out
+        R.arrays = SimpleNamespace(
+            t=out["t"][:n], y=out["y"][:n * ny].reshape(n, ny), mode=out["mode"][:n],
+            loss=out["loss"][:n], modes=out["modes"][:R.n_modes * (nc + 1)].reshape(-1, nc + 1),
+            events=out["events"][:R.n_events * (11 + nc)].reshape(-1, 11 + nc))
+        self.steps += R.nsteps
+        dyn.nfev += R.nfev
+        return R
 
     def settle(self, y, prev, forced: dict, contact_candidate: bool, tau):
         """``core_settle`` at the state ``y`` after the mode ``prev`` (``None`` at the start)

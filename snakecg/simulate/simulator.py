@@ -13,6 +13,7 @@ from types import SimpleNamespace
 
 import numpy as np
 
+from ..core.segment import RUN_STOPPED
 from ..errors import InputError, SnakecgError
 from ..solver import ABSENT, HELD, LOST
 from .assembly import assemble
@@ -20,6 +21,7 @@ from .compiled import CompiledSegments, compiled_reason
 from .dynamics import N_WORK, Dynamics
 from .events import Events
 from .inputs import Settings, check_arguments
+from .modes import transitions
 from .records import SimEvent, SimulationError, Trajectory
 from .torques import Torques
 
@@ -98,6 +100,46 @@ class Simulator:
         return SimpleNamespace(status=sol.status, message=sol.message, t=sol.t, y=ys,
                                fired=fired)
 
+    def _run_compiled(self, y, mode, loss, grid, events, wall0):
+        """The loop of :meth:`run` for a constant torque in C (``core_run``, see
+        :meth:`CompiledSegments.run_all`): its trajectory, or ``None`` when the Python loop
+        must do the run (nothing of the run's state was changed then)."""
+        cfg, handler = self.settings, self.events
+        T = cfg.duration
+        tau_fn = self.torques.function()
+        R = self.compiled.run_all(y, mode, loss, tau_fn(0.0, y, mode), grid, T, handler.gtol,
+                                  cfg.max_events)
+        if R is None:
+            return None
+        a = R.arrays
+        nc = self.dyn.nc
+        modes = [handler.mode(m[:nc], bool(m[nc])) for m in a.modes]
+        for ev in a.events:  # Events.handle's records: the transitions, then the impact
+            t_e, before, after = float(ev[0]), modes[int(ev[3])], modes[int(ev[4])]
+            events.extend(transitions(t_e, before, after, impact=bool(ev[5])))
+            if ev[5]:
+                lam = ev[11:11 + int(ev[10])]
+                events.append(SimEvent(t_e, "impact", 0, before.describe(), after.describe(), {
+                    "closing_velocity": float(ev[6]), "impulse": float(lam[0]),
+                    "wheel_impulses": lam[1:].tolist(), "energy_loss": -float(ev[8]),
+                    "kinetic_energy_before": float(ev[7])}))
+            if ev[9] >= 0:
+                handler.drift_corrected = max(handler.drift_corrected, float(ev[9]))
+        # the samples in blocks of one mode and one energy loss
+        cut = np.flatnonzero((np.diff(a.mode) != 0) | (np.diff(a.loss) != 0)) + 1
+        edges = [0, *cut.tolist(), len(a.t)]
+        blocks = [(a.t[i:j], a.y[i:j], modes[int(a.mode[i])], tau_fn, float(a.loss[i]))
+                  for i, j in zip(edges[:-1], edges[1:])]
+        status = "completed"
+        if R.status == RUN_STOPPED:
+            status = (f"stopped at t = {R.t:.6g} s after {R.n_events} events"
+                      + (" (no progress between events)" if R.stuck > 20 else ""))
+        self.segment_cpu += R.segment_cpu
+        self.segments = R.segments
+        self.final_mode = blocks[-1][2].describe()
+        self.wall = time.perf_counter() - wall0
+        return assemble(self, blocks, events, status)
+
     def run(self) -> Trajectory:
         cfg, dyn, torques, handler = self.settings, self.dyn, self.torques, self.events
         wall0 = time.perf_counter()
@@ -128,6 +170,11 @@ class Simulator:
         grid = self._output_times()
         t = 0.0
         self.initial_mode = mode.describe()
+        if self.compiled is not None and cfg.kind == "constant":
+            # the whole loop in one C call (the Python loop below when it hands it back)
+            done = self._run_compiled(y, mode, impact_loss, grid, events, wall0)
+            if done is not None:
+                return done
         blocks.append((np.array([t]), y[None, :].copy(), mode, torques.function(), impact_loss))
         status = "completed"
         n_events = 0
