@@ -64,6 +64,7 @@ typedef struct {
                          (-1: none), the impulses' count, then the impulses (NC) */
   sc_int n_events;
   sc_int stuck;       /* events in a row without progress in time (at a stop) */
+  double *samples;    /* cap x (NY + 2 NC + 6): core_mode_samples of every sample in its mode */
   sc_int segments, nfev, nsteps;
   double segment_cpu; /* CPU seconds inside the segment integrations */
   sc_int status;      /* RUN_* */
@@ -227,12 +228,33 @@ static int run(sc_run *R) {
   return RUN_COMPLETED;
 }
 
-/* Run the loop (see sc_run); returns and stores the status (RUN_*). */
+/* The trajectory's quantities at every sample, in its mode (core_mode_samples on each run of
+ * samples that share their mode): 0, or 1. */
+static int samples(sc_run *R) {
+  const int width = NY + 2 * NC + 6;
+  double *state = (double *)R->sg->state;
+  sc_int start = 0, end;
+  while (start < R->n_out) {
+    const sc_int mode = (sc_int)R->mode_out[start];
+    for (end = start + 1; end < R->n_out && (sc_int)R->mode_out[end] == mode; ++end) {
+    }
+    memcpy(state, R->modes + mode * MODE_WIDTH, sizeof(double) * NC);
+    if (SNAKECG_EXPORT(core_mode_samples)(R->sg, end - start, R->y_out + start * NY,
+                                          R->samples + start * width))
+      return 1;
+    start = end;
+  }
+  return 0;
+}
+
+/* Run the loop (see sc_run), then evaluate the samples; returns and stores the status
+ * (RUN_*). */
 int SNAKECG_EXPORT(core_run)(sc_run *R) {
   R->n_out = R->n_modes = R->n_events = 0;
   R->segments = R->nfev = R->nsteps = 0;
   R->segment_cpu = 0.0;
   R->stuck = 0;
   R->status = run(R);
+  if (R->status != RUN_PYTHON && samples(R)) R->status = RUN_PYTHON;
   return (int)R->status;
 }

@@ -79,7 +79,7 @@ class Run(ctypes.Structure):
                 ("loss", _D), ("cap", _I), ("t_out", _P), ("y_out", _P), ("mode_out", _P),
                 ("loss_out", _P), ("n_out", _I), ("cap_modes", _I), ("modes", _P),
                 ("n_modes", _I), ("cap_events", _I), ("events", _P), ("n_events", _I),
-                ("stuck", _I), ("segments", _I), ("nfev", _I), ("nsteps", _I),
+                ("stuck", _I), ("samples", _P), ("segments", _I), ("nfev", _I), ("nsteps", _I),
                 ("segment_cpu", _D), ("status", _I)]
 
 

@@ -55,6 +55,37 @@ def assemble(sim, blocks, events, status) -> Trajectory:
             p_cons[sl] = (R[sl, ny:ny + nc] * R[sl, ny + nc:ny + 2 * nc]) @ mode.free
         contact[sl] = mode.contact_held
         wheel_state[sl] = mode.wheel_names
+    return trajectory(sim, t, Y, impact, R, tau, p_cons, contact, wheel_state, events, status)
+
+
+def assemble_arrays(sim, t, Y, impact, R, tau, mode_index, modes, events, status):
+    """:func:`assemble` of a run done in C (``core_run``): the samples ``t``, ``Y`` with
+    their energy removed ``impact``, their quantities ``R`` (rows as the compiled samples'
+    where the C evaluated them, else a non-zero status), the constant torque ``tau`` and each
+    sample's mode (an index into ``modes``)."""
+    dyn = sim.dyn
+    nc, ny = dyn.nc, dyn.ny
+    dyn.nfev += len(t)
+    for i in np.flatnonzero(R[:, -1]):  # handed back: the Python right-hand side
+        mode = modes[int(mode_index[i])]
+        ydot, li, gi, si, AV, (_, sri, nai, nqi) = dyn.rates(t[i], Y[i], mode,
+                                                              lambda *_: tau)
+        R[i, :ny], R[i, ny:ny + nc], R[i, ny + nc:ny + 2 * nc] = ydot, li, AV
+        R[i, ny + 2 * nc:] = (gi, si, sri, nai, nqi, 0.0)
+    idx = mode_index.astype(np.intp)
+    free = np.array([m.free for m in modes])[idx]
+    p_cons = np.einsum("ij,ij->i", R[:, ny:ny + nc] * R[:, ny + nc:ny + 2 * nc], free)
+    contact = np.array([m.contact_held for m in modes])[idx]
+    wheel_state = np.array([m.wheel_names for m in modes], dtype="<U6")[idx]
+    return trajectory(sim, t, Y, impact, R, np.tile(tau, (len(t), 1)), p_cons, contact,
+                      wheel_state, events, status)
+
+
+def trajectory(sim, t, Y, impact, R, tau, p_cons, contact, wheel_state, events, status):
+    """The :class:`Trajectory` of the samples ``t``, ``Y`` and their quantities."""
+    model, dyn, cfg = sim.model, sim.dyn, sim.settings
+    N = len(t)
+    ns, nc, nx, ny = dyn.ns, dyn.nc, dyn.nx, dyn.ny
     e = ny + 2 * nc
     q, q_obj = Y[:, :ns], Y[:, ns:nx]
     v, v_obj = Y[:, nx:nx + ns], Y[:, nx + ns:2 * nx]

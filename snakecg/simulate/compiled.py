@@ -163,15 +163,17 @@ class CompiledSegments:
         """The whole run from the state ``y`` in ``mode`` (after the start's settle, the
         energy ``loss`` removed there) with the constant torque ``tau`` to ``T``, output at
         ``grid`` (increasing, the last is ``T``), in one C call (``core_run``): the filled
-        :class:`~snakecg.core.segment.Run` with its arrays (``t``, ``y``, ``mode`` and
-        ``loss`` of each sample, the ``modes`` and the ``events``, see run.c), or ``None``
-        when the Python loop must do the run."""
+        :class:`~snakecg.core.segment.Run` with its arrays (``t``, ``y``, ``mode``,
+        ``loss`` and the quantities ``samples`` (as :meth:`samples_into`) of each sample,
+        the ``modes`` and the ``events``, see run.c), or ``None`` when the Python loop must
+        do the run."""
         dyn = self.dyn
         ny, nc = dyn.ny, dyn.nc
         grid = np.ascontiguousarray(grid, dtype=float)
         cap_events = min(int(max_events), 256) + 1
         cap = len(grid) + 2 * cap_events + 2
-        sizes = {"t": cap, "y": cap * ny, "mode": cap, "loss": cap,
+        width = ny + 2 * nc + 6
+        sizes = {"t": cap, "y": cap * ny, "mode": cap, "loss": cap, "samples": cap * width,
                  "modes": (cap_events + 1) * (nc + 1), "events": cap_events * (11 + nc)}
         buf = np.empty(sum(sizes.values()))
         base, out, addr, off = buf.ctypes.data, {}, {}, 0
@@ -190,6 +192,7 @@ class CompiledSegments:
         R.mode_out, R.loss_out = addr["mode"], addr["loss"]
         R.cap_modes, R.modes = cap_events + 1, addr["modes"]
         R.cap_events, R.events = cap_events, addr["events"]
+        R.samples = addr["samples"]
         status = self._run(ctypes.addressof(R))
         if status not in (RUN_COMPLETED, RUN_STOPPED):
             self.runs_handed_back += 1
@@ -198,7 +201,8 @@ class CompiledSegments:
         R.arrays = SimpleNamespace(
             t=out["t"][:n], y=out["y"][:n * ny].reshape(n, ny), mode=out["mode"][:n],
             loss=out["loss"][:n], modes=out["modes"][:R.n_modes * (nc + 1)].reshape(-1, nc + 1),
-            events=out["events"][:R.n_events * (11 + nc)].reshape(-1, 11 + nc))
+            events=out["events"][:R.n_events * (11 + nc)].reshape(-1, 11 + nc),
+            samples=out["samples"][:n * width].reshape(n, width))
         self.steps += R.nsteps
         dyn.nfev += R.nfev
         return R

@@ -16,7 +16,7 @@ import numpy as np
 from ..core.segment import RUN_STOPPED
 from ..errors import InputError, SnakecgError
 from ..solver import ABSENT, HELD, LOST
-from .assembly import assemble
+from .assembly import assemble, assemble_arrays
 from .compiled import CompiledSegments, compiled_reason
 from .dynamics import N_WORK, Dynamics
 from .events import Events
@@ -106,9 +106,8 @@ class Simulator:
         must do the run (nothing of the run's state was changed then)."""
         cfg, handler = self.settings, self.events
         T = cfg.duration
-        tau_fn = self.torques.function()
-        R = self.compiled.run_all(y, mode, loss, tau_fn(0.0, y, mode), grid, T, handler.gtol,
-                                  cfg.max_events)
+        tau = np.asarray(self.torques.function()(0.0, y, mode), dtype=float)
+        R = self.compiled.run_all(y, mode, loss, tau, grid, T, handler.gtol, cfg.max_events)
         if R is None:
             return None
         a = R.arrays
@@ -125,20 +124,16 @@ class Simulator:
                     "kinetic_energy_before": float(ev[7])}))
             if ev[9] >= 0:
                 handler.drift_corrected = max(handler.drift_corrected, float(ev[9]))
-        # the samples in blocks of one mode and one energy loss
-        cut = np.flatnonzero((np.diff(a.mode) != 0) | (np.diff(a.loss) != 0)) + 1
-        edges = [0, *cut.tolist(), len(a.t)]
-        blocks = [(a.t[i:j], a.y[i:j], modes[int(a.mode[i])], tau_fn, float(a.loss[i]))
-                  for i, j in zip(edges[:-1], edges[1:])]
         status = "completed"
         if R.status == RUN_STOPPED:
             status = (f"stopped at t = {R.t:.6g} s after {R.n_events} events"
                       + (" (no progress between events)" if R.stuck > 20 else ""))
         self.segment_cpu += R.segment_cpu
         self.segments = R.segments
-        self.final_mode = blocks[-1][2].describe()
+        self.final_mode = modes[int(a.mode[-1])].describe()
         self.wall = time.perf_counter() - wall0
-        return assemble(self, blocks, events, status)
+        return assemble_arrays(self, a.t, a.y, a.loss, a.samples, tau, a.mode, modes, events,
+                               status)
 
     def run(self) -> Trajectory:
         cfg, dyn, torques, handler = self.settings, self.dyn, self.torques, self.events
