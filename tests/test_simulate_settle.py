@@ -276,3 +276,17 @@ def test_compiled_run_matches_python_loop(models, scenario, monkeypatch):
         if kw.get("max_events") == 1:
             assert sa["status"].startswith("stopped at t = ") or not a.events
     assert len(kinds) >= 3, kinds
+
+
+def test_placement_against_dense_reference(models):
+    """The checks' placement of the object (``placement``: the compiled ``place_object`` with
+    its constants packed once) against the dense model's placement, at random shapes."""
+    from snakecg.simulate.compiled import placement
+
+    sm, ref = models("ideal_wheels")
+    rng = np.random.default_rng(9)
+    for _ in range(10):
+        q = np.concatenate([rng.normal(size=3), rng.uniform(-1.5, 1.5, size=3)])
+        q_obj, rho = placement(sm, q)
+        q_ref, rho_ref, _ = ref.place_object(q)
+        assert np.abs(q_obj - q_ref).max() <= 1e-12 and np.abs(rho - rho_ref).max() <= 1e-12

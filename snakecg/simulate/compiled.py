@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import ctypes
 import math
+import weakref
 from types import SimpleNamespace
 
 import numpy as np
@@ -44,6 +45,49 @@ def compiled_reason(settings) -> str | None:
         return ("a torque law evaluated continuously (the compiled segments need a torque "
                 "constant over each segment: a constant, or control_period)")
     return None
+
+
+_PLACE: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
+
+
+def placement(model, q0):
+    """The scene's placement of the object at the checked ``q0`` (n_s,): ``(q_obj0, rho)``,
+    new arrays, as :meth:`snakecg.SceneModel.place` gives them, through the compiled batch
+    driver of ``place_object`` with its constant inputs packed once per model."""
+    be = model.backend
+    fn = getattr(be, "_fns", {}).get("place_object")
+    if fn is None:
+        q_obj0, rho, _ = model.place(q0[None, :], 1)
+        return q_obj0[0].copy(), rho[0].copy()
+    fixed = _PLACE.get(model)
+    if fixed is None:
+        sig = be.signatures["place_object"]
+        values = {"K": model.parameters, "contact_link": model._contact_link,
+                  "contact_offset": [model.scene.contact_offset],
+                  "object_distance": [model.scene.object_distance], "side": model._side}
+        packed = np.concatenate([np.ravel(np.asarray(values[k], dtype=float))
+                                 for k in sig.in_names if k != "q"])
+        addresses, off = [], 0
+        for k, size in zip(sig.in_names, sig.in_sizes):
+            if k == "q":
+                addresses.append(None)
+            else:
+                addresses.append(packed.ctypes.data + 8 * off)
+                off += size
+        sizes = [r * c for r, c in sig.out_shapes]  # q_obj (3), rho (2), contact point (2)
+        fixed = _PLACE[model] = (packed, addresses, sig.in_names.index("q"), sizes,
+                                 np.cumsum([0, *sizes[:-1]]).tolist())
+    packed, addresses, k, sizes, offsets = fixed
+    q0 = np.ascontiguousarray(q0, dtype=float)
+    argp = (ctypes.c_void_p * len(addresses))(*addresses)
+    argp[k] = q0.ctypes.data
+    out = np.empty(sum(sizes))
+    base = out.ctypes.data
+    resp = (ctypes.c_void_p * len(sizes))(*(base + 8 * o for o in offsets))
+    if fn(1, argp, (ctypes.c_longlong * len(addresses))(), resp) != 0:
+        q_obj0, rho, _ = model.place(q0[None, :], 1)
+        return q_obj0[0].copy(), rho[0].copy()
+    return out[:3].copy(), out[3:5].copy()
 
 
 class CompiledSegments:

@@ -11,6 +11,7 @@ import numpy as np
 
 from .._inputs import as_batch, to_float
 from ..errors import InputError, SnakecgError
+from .compiled import placement
 from .torques import torque_law
 
 __all__ = ["METHODS", "MAX_OUTPUT_SAMPLES", "MAX_PERIODS", "MAX_STEPS", "MAX_FRAMES", "RTOL_MIN",
@@ -136,8 +137,7 @@ def check_arguments(model, q0, tau, duration, v0, *, v_obj0, q_obj0, rho, f_obj,
         raise InputError("q_obj0 and rho go together: give both or neither (default: the "
                          "scene's placement of the object against the contact link)")
     if q_obj0 is None:  # the scene's placement at the checked q0
-        q_obj0, rho, _ = model.place(q0[None, :], 1)
-        q_obj0, rho = q_obj0[0].copy(), rho[0].copy()
+        q_obj0, rho = placement(model, q0)
     else:
         q_obj0 = single("q_obj0", q_obj0, 3, "")
         rho = single("rho", rho, 2, "")
