@@ -290,3 +290,24 @@ def test_placement_against_dense_reference(models):
         q_obj, rho = placement(sm, q)
         q_ref, rho_ref, _ = ref.place_object(q)
         assert np.abs(q_obj - q_ref).max() <= 1e-12 and np.abs(rho - rho_ref).max() <= 1e-12
+
+
+def test_compiled_run_handed_back_midway(models, monkeypatch):
+    """A whole run in C that runs out of room for its events midway is done again by the
+    Python loop from the start (with the same compiled segments): the same trajectory as the
+    Python loop alone."""
+    import snakecg.simulate.compiled as compiled
+
+    sm, ref = models("wheels")
+    tau = _push(sm, ref, 8.0)
+    a = sm.simulate(Q3, tau, 0.5, integrator="compiled")
+    assert len(a.events) >= 2
+    monkeypatch.setattr(compiled, "RUN_EVENTS", 0)  # room for one event
+    b = sm.simulate(Q3, tau, 0.5, integrator="compiled")
+    with monkeypatch.context() as m:
+        m.setattr(Simulator, "_run_compiled", lambda self, *args: None)
+        c = sm.simulate(Q3, tau, 0.5, integrator="compiled")
+    for x in (a, b):
+        assert [(e.kind, e.row, e.t) for e in x.events] == [(e.kind, e.row, e.t) for e in c.events]
+        assert np.allclose(x.q, c.q, rtol=0, atol=1e-12) and np.allclose(x.lam, c.lam, rtol=1e-12,
+                                                                          atol=1e-12)

@@ -29,6 +29,8 @@ from ..solver import PIVOT_TOL, REL_TOL, default_max_iter
 __all__ = ["CompiledSegments", "compiled_reason"]
 
 INTEGRATORS = ("auto", "compiled", "scipy")
+#: Events a whole run in C (core_run) has room for; a run with more is done by the Python loop.
+RUN_EVENTS = 256
 _TOO_SMALL = "Required step size is less than spacing between numbers."  # solve_ivp's words
 
 
@@ -184,9 +186,10 @@ class CompiledSegments:
         n = len(t_eval)
         if n > len(self.y_eval):
             self.y_eval = np.zeros((n, dyn.ny))
-            seg.y_eval = self.y_eval.ctypes.data
         self.t_eval = np.ascontiguousarray(t_eval, dtype=float)
-        seg.t_eval, seg.n_eval = self.t_eval.ctypes.data, n
+        # (set at every call: core_run points them at its own arrays)
+        seg.t_eval, seg.n_eval, seg.y_eval = (self.t_eval.ctypes.data, n,
+                                              self.y_eval.ctypes.data)
         seg.n_ev, seg.t0, seg.t1 = len(specs), t0, t1
         status = self._fn(self._address)
         dyn.nfev += seg.nfev
@@ -214,7 +217,7 @@ class CompiledSegments:
         dyn = self.dyn
         ny, nc = dyn.ny, dyn.nc
         grid = np.ascontiguousarray(grid, dtype=float)
-        cap_events = min(int(max_events), 256) + 1
+        cap_events = min(int(max_events), RUN_EVENTS) + 1
         cap = len(grid) + 2 * cap_events + 2
         width = ny + 2 * nc + 6
         sizes = {"t": cap, "y": cap * ny, "mode": cap, "loss": cap, "samples": cap * width,
