@@ -256,9 +256,11 @@ def test_segment_handed_back_goes_through_solve_ivp(models):
     q0, tau = _hard_push(sm)
     sim = _simulator(sm, q0, tau, output_dt=0.01)
     sim.settings.duration = 0.3
+    sim.compiled._run = lambda address: 2  # RUN_PYTHON: the run goes through the Python loop
     sim.compiled._fn = lambda address: -2  # SEG_PYTHON
     handed = sim.run()
     ref = sm.simulate(q0, tau, 0.3, output_dt=0.01, integrator="scipy")
     assert sim.compiled.handed_back == handed.summary["integrator"]["segments"] > 0
+    assert sim.compiled.runs_handed_back == 1
     np.testing.assert_array_equal(handed.q, ref.q)
     assert [(e.kind, e.t) for e in handed.events] == [(e.kind, e.t) for e in ref.events]

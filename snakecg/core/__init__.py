@@ -60,9 +60,10 @@ class Core:
         self._rules = rules
         self._constants = CONSTANTS.copy()
         self.constants_address = self._constants.ctypes.data
-        self.integrate_segment, self.mode_samples = segment_functions(lib, manifest["prefix"])
-        """integrate.c's ``core_integrate_segment`` and ``core_mode_samples``
-        (:mod:`snakecg.core.segment`)."""
+        (self.integrate_segment, self.mode_samples, self.settle,
+         self.run) = segment_functions(lib, manifest["prefix"])
+        """integrate.c's ``core_integrate_segment`` and ``core_mode_samples``, settle.c's
+        ``core_settle``, run.c's ``core_run`` (:mod:`snakecg.core.segment`)."""
         self.sphere = SphereKernel(lib, manifest["prefix"])
         """sphere.c's faces and KKT candidates (:mod:`snakecg.core.sphere`)."""
 

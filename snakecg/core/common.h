@@ -1,7 +1,10 @@
-/* What the runtime core's C files share (snakecg/core/forward.c, integrate.c): the row states,
- * the generated functions' work arrays, one evaluation of the generated `contact_system`, and
- * the held rows' forces of eq. (16). Included after snakecg_layout.h; everything here is
- * static, so each file gets its own copy and the library exports nothing more. */
+/* What the runtime core's C files share (snakecg/core/forward.c, integrate.c, settle.c,
+ * run.c): the row states, the simulation's structs, the generated functions' work arrays, one evaluation of the generated
+ * `contact_system`, the rows' velocities A V, the held rows' forces of eq. (16) and the
+ * active-set rule. Included after snakecg_layout.h; everything here is static, so each file
+ * gets its own copy and the library exports nothing more; a file asks for the parts that not
+ * every file uses (SC_ROW_VELOCITIES, SC_NEXT_STATES), or the types alone (SC_TYPES_ONLY),
+ * before including it. */
 #ifndef SNAKECG_CORE_COMMON_H
 #define SNAKECG_CORE_COMMON_H
 
@@ -13,10 +16,84 @@ typedef int (*sc_work_fn)(sc_int *sz_arg, sc_int *sz_res, sc_int *sz_iw, sc_int 
 
 int SNAKECG_CS(const double **arg, double **res, sc_int *iw, double *w, int mem);
 int SNAKECG_CS_WORK(sc_int *sz_arg, sc_int *sz_res, sc_int *sz_iw, sc_int *sz_w);
+int SNAKECG_LJ(const double **arg, double **res, sc_int *iw, double *w, int mem);
+int SNAKECG_LJ_WORK(sc_int *sz_arg, sc_int *sz_res, sc_int *sz_iw, sc_int *sz_w);
 
 /* row states (snakecg/solver.py) */
 enum { ABSENT = 0, HELD = 1, LOST = 2, SLIDE_POS = 3, SLIDE_NEG = 4 };
 
+/* The simulation's structs, shared by integrate.c, settle.c and run.c (mirrored field by
+ * field in snakecg/core/segment.py). */
+/* event functions (snakecg/simulate/events.py, Events.functions) */
+enum { EV_SEPARATION = 0, EV_S_LOW = 1, EV_S_HIGH = 2, EV_GAP = 3, EV_BREAKAWAY = 4,
+       EV_SLIDE_STOP = 5 };
+/* segment status */
+enum { SEG_END = 0, SEG_EVENT = 1, SEG_TOO_SMALL = -1, SEG_PYTHON = -2, SEG_MEMORY = -3,
+       SEG_BAD_INPUT = -4 };
+enum { SETTLE_DONE = 0, SETTLE_PYTHON = 1, SETTLE_MEMORY = 2 };
+
+/* One segment: inputs, then outputs (filled by core_integrate_segment). */
+typedef struct {
+  /* the model and the run */
+  const double *scene;   /* the scene vector (layout: SCENE_*) */
+  const double *tau;     /* NA, held over the segment */
+  const double *f_obj;   /* 3 */
+  const double *rho;     /* 2, contact point in the object frame */
+  const double *state;   /* NC row states (solver codes, as doubles) */
+  const sc_int *ev_kind; /* n_ev event kinds (EV_*) */
+  const sc_int *ev_row;  /* their rows */
+  sc_int n_ev;
+  sc_int contact_index;  /* k: the contact link, from 0 */
+  double c_k, l_k;       /* the contact link's COM offset and length */
+  double alpha;          /* Baumgarte rate (1/s) */
+  double pivot_tol;      /* held rows dependent at or below this pivot ratio */
+  double rtol, atol, max_step;
+  double t0, t1;
+  const double *y0;      /* NY */
+  const double *t_eval;  /* n_eval increasing times in (t0, t1] */
+  sc_int n_eval;
+  /* outputs */
+  double *y_eval;        /* n_eval x NY, row-major */
+  sc_int n_out;          /* output times reached */
+  double t_end;          /* where the segment ended (t1 or the event) */
+  double *y_end;         /* NY: the state there */
+  sc_int event;          /* the event that fired (index into ev_*), -1 if none */
+  sc_int nfev, nsteps, nrejected;
+  sc_int status;         /* SEG_* */
+} sc_segment;
+
+/* One settle: inputs, then outputs (filled by core_settle). */
+typedef struct {
+  const double *scene;  /* the scene vector (layout: SCENE_*) */
+  const double *tau;    /* NA */
+  const double *f_obj;  /* 3 */
+  const double *rho;    /* 2 */
+  sc_int contact_index; /* k, from 0 */
+  double c_k, l_k;
+  double pivot_tol, rel_tol;
+  sc_int max_iter;      /* active-set passes */
+  const double *y;      /* NY: the state at the event */
+  const double *prev;   /* NC row states of the mode before (null at the start) */
+  const double *forced; /* NC: a row's forced state, or -1 */
+  sc_int contact_candidate;
+  /* outputs */
+  double vtol;          /* 1e-8 max(1, max |V|) at y */
+  double *y_out;        /* NY */
+  double *state;        /* NC: the new row states */
+  double *forced_out;   /* NC: the forced rows after the velocity checks (-1: free) */
+  sc_int impact;        /* 1 when the contact closed with an impact */
+  double impact_velocity, impact_ke, impact_de; /* gdot before, energy before, change */
+  double *impact_lam;   /* NC: impulses of the contact and the ideal wheels, in row order */
+  sc_int n_impact;
+  sc_int n_projected;   /* rows projected in step 4 (0: none) */
+  double drift;         /* their largest |A V| before the projection */
+  sc_int drift_row;     /* where it is (the first such row) */
+  double projection_ke, projection_de;
+  double *projection_lam; /* NC: their impulses, in row order */
+  sc_int status;        /* SETTLE_* */
+} sc_settle;
+
+#ifndef SC_TYPES_ONLY /* run.c: the types alone */
 /* Argument and result pointer arrays and work vectors of generated functions, sized for the
  * largest of `n` of them (their `_work` functions). */
 typedef struct {
@@ -106,6 +183,55 @@ static int sc_contact_system(sc_work_t *ws, const double *scene, const double *q
   return SNAKECG_CS(ws->arg, ws->res, ws->iw, ws->w, 0);
 }
 
+#ifdef SC_ROW_VELOCITIES /* integrate.c, settle.c */
+/* A V (snakecg.simulate.dynamics.Dynamics.row_velocities): the gap rate (row 0) and the
+ * wheels' lateral velocities, from the generated `link_jacobians` at q (its status, 0 on
+ * success). The link twists J v; the wheel row of link i is (-sin phi_i, cos phi_i,
+ * wheel_offset_i) on its twist, the contact row the normal n = side (-sin phi_k, cos phi_k)
+ * on the velocity of the object's contact point (rho in the object frame) relative to the
+ * link's, less the sliding term side omega_k (s - c_k). */
+static int sc_row_velocities(sc_work_t *ws, const double *scene, const double *rho, int k,
+                             double c_k, const double *q, const double *v, const double *qo,
+                             const double *vo, double s, double *av) {
+  enum { ns = SNAKECG_NS, nl = SNAKECG_NL };
+  const double *woff = scene + SCENE_wheel_offset;
+  const double sig = scene[SCENE_side];
+  double J[3 * SNAKECG_NL * SNAKECG_NS], tw[3 * SNAKECG_NL], phi = q[2], spk = 0.0, cpk = 0.0;
+  double n0, n1, cs, sn, rx, ry, p0, p1;
+  int i, j;
+  ws->arg[LJ_IN_q] = q;
+  ws->arg[LJ_IN_K] = scene + SCENE_K;
+  ws->res[LJ_OUT_J] = J;
+  if (SNAKECG_LJ(ws->arg, ws->res, ws->iw, ws->w, 0)) return 1;
+  for (i = 0; i < 3 * nl; ++i) {
+    double t = 0.0;
+    for (j = 0; j < ns; ++j) t += J[i + 3 * nl * j] * v[j];
+    tw[i] = t;
+  }
+  for (i = 0; i < nl; ++i) { /* phi_1 = theta, phi_{i+1} = phi_i + q_i */
+    double sp, cp;
+    if (i) phi += q[2 + i];
+    sp = sin(phi);
+    cp = cos(phi);
+    if (i == k) {
+      spk = sp;
+      cpk = cp;
+    }
+    av[1 + i] = -sp * tw[3 * i] + cp * tw[3 * i + 1] + woff[i] * tw[3 * i + 2];
+  }
+  n0 = sig * -spk;
+  n1 = sig * cpk;
+  cs = cos(qo[2]);
+  sn = sin(qo[2]);
+  rx = rho[0];
+  ry = rho[1];
+  p0 = vo[0] - vo[2] * (sn * rx + cs * ry);
+  p1 = vo[1] + vo[2] * (cs * rx - sn * ry);
+  av[0] = n0 * (p0 - tw[3 * k]) + n1 * (p1 - tw[3 * k + 1]) - sig * tw[3 * k + 2] * (s - c_k);
+  return 0;
+}
+#endif
+
 /* The constraint forces for row states `state` (eq. 16): lam_F fixed (0, or +-bound for a
  * sliding wheel), lam_H solving G_HH lam_H = -(b_H + G_HF lam_F) - extra_H by LDL^T in row
  * order (the masked factorization of the generated `constrained_dynamics`); `extra` (may be
@@ -149,5 +275,46 @@ static double sc_held_forces(const signed char *state, const double *G, const do
   for (i = 0; i < m; ++i) lam[held[i]] = y[i];
   return ratio;
 }
+
+#ifdef SC_NEXT_STATES /* forward.c, settle.c */
+/* The next row states (snakecg.solver._violations with _tolerances): returns 1 if any moved. */
+static int sc_next_states(signed char *state, const double *lam, const double *w,
+                          const double *G, const double *bounds, double rel_tol) {
+  const int nc = SNAKECG_NC;
+  double g = 0.0, s_lam = 0.0, s_w = 0.0, tol_lam, tol_w;
+  signed char next[SNAKECG_NC];
+  int r, moved = 0;
+  for (r = 0; r < nc; ++r) {
+    double d = fabs(G[r + nc * r]);
+    if (d > g) g = d; /* NaN never wins */
+    if (fabs(lam[r]) > s_lam) s_lam = fabs(lam[r]);
+    if (fabs(w[r]) > s_w) s_w = fabs(w[r]);
+  }
+  if (!(g > 0) || !isfinite(g)) g = 1.0;
+  if (s_w / g > s_lam) s_lam = s_w / g;
+  tol_lam = rel_tol * s_lam;
+  tol_w = rel_tol * g * s_lam;
+  memcpy(next, state, sizeof(next));
+  if (state[0] == HELD && lam[0] < -tol_lam) next[0] = LOST;
+  else if (state[0] == LOST && w[0] < -tol_w) next[0] = HELD;
+  for (r = 1; r < nc; ++r) {
+    const double u = bounds[r];
+    if (state[r] == HELD && isfinite(u)) {
+      if (lam[r] > u + tol_lam) next[r] = SLIDE_POS;
+      else if (lam[r] < -u - tol_lam) next[r] = SLIDE_NEG;
+    } else if (state[r] == SLIDE_POS && w[r] > tol_w) {
+      next[r] = HELD;
+    } else if (state[r] == SLIDE_NEG && w[r] < -tol_w) {
+      next[r] = HELD;
+    }
+  }
+  for (r = 0; r < nc; ++r) {
+    if (next[r] != state[r]) moved = 1;
+    state[r] = next[r];
+  }
+  return moved;
+}
+#endif
+#endif
 
 #endif

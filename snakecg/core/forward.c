@@ -32,6 +32,7 @@
 #include <string.h>
 
 #include "snakecg_layout.h"
+#define SC_NEXT_STATES
 #include "common.h"
 
 #define SNAKECG_CAT_(a, b) a##b
@@ -90,44 +91,6 @@ static double mass_pivot_ratio(const double *M, double *S) {
   return isfinite(best) ? best : 0.0;
 }
 
-/* The next row states (snakecg.solver._violations with _tolerances): returns 1 if any moved. */
-static int next_states(signed char *state, const double *lam, const double *w,
-                       const double *G, const double *bounds, double rel_tol) {
-  const int nc = SNAKECG_NC;
-  double g = 0.0, s_lam = 0.0, s_w = 0.0, tol_lam, tol_w;
-  signed char next[SNAKECG_NC];
-  int r, moved = 0;
-  for (r = 0; r < nc; ++r) {
-    double d = fabs(G[r + nc * r]);
-    if (d > g) g = d; /* NaN never wins */
-    if (fabs(lam[r]) > s_lam) s_lam = fabs(lam[r]);
-    if (fabs(w[r]) > s_w) s_w = fabs(w[r]);
-  }
-  if (!(g > 0) || !isfinite(g)) g = 1.0;
-  if (s_w / g > s_lam) s_lam = s_w / g;
-  tol_lam = rel_tol * s_lam;
-  tol_w = rel_tol * g * s_lam;
-  memcpy(next, state, sizeof(next));
-  if (state[0] == HELD && lam[0] < -tol_lam) next[0] = LOST;
-  else if (state[0] == LOST && w[0] < -tol_w) next[0] = HELD;
-  for (r = 1; r < nc; ++r) {
-    const double u = bounds[r];
-    if (state[r] == HELD && isfinite(u)) {
-      if (lam[r] > u + tol_lam) next[r] = SLIDE_POS;
-      else if (lam[r] < -u - tol_lam) next[r] = SLIDE_NEG;
-    } else if (state[r] == SLIDE_POS && w[r] > tol_w) {
-      next[r] = HELD;
-    } else if (state[r] == SLIDE_NEG && w[r] < -tol_w) {
-      next[r] = HELD;
-    }
-  }
-  for (r = 0; r < nc; ++r) {
-    if (next[r] != state[r]) moved = 1;
-    state[r] = next[r];
-  }
-  return moved;
-}
-
 /* One sample. `scene` holds the scene's constant inputs (layout in snakecg_layout.h); `out`
  * one output row (OUT_* offsets). Returns the status. */
 static int solve_one(sc_work_t *ws, const double *scene, const sc_constants *c, long max_iter,
@@ -172,7 +135,7 @@ static int solve_one(sc_work_t *ws, const double *scene, const sc_constants *c, 
       for (i = 0; i < nc; ++i) t += G[r + nc * i] * lam[i];
       w[r] = t;
     }
-    moved = next_states(state, lam, w, G, bounds, c->rel_tol);
+    moved = sc_next_states(state, lam, w, G, bounds, c->rel_tol);
   }
   if (moved) return STATUS_FALLBACK; /* not settled: enumeration, in the reference path */
   if (!(pivot > c->weak)) return STATUS_FALLBACK; /* weak rows: factored directly there */
@@ -301,7 +264,7 @@ int SNAKECG_EXPORT(core_next_states)(double *state, const double *lam, const dou
   signed char s[SNAKECG_NC];
   int r, moved;
   for (r = 0; r < SNAKECG_NC; ++r) s[r] = (signed char)state[r];
-  moved = next_states(s, lam, w, G, bounds, rel_tol);
+  moved = sc_next_states(s, lam, w, G, bounds, rel_tol);
   for (r = 0; r < SNAKECG_NC; ++r) state[r] = (double)s[r];
   return moved;
 }

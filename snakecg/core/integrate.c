@@ -30,14 +30,12 @@
 #include <string.h>
 
 #include "snakecg_layout.h"
+#define SC_ROW_VELOCITIES
 #include "common.h"
 
 #define SNAKECG_CAT_(a, b) a##b
 #define SNAKECG_CAT(a, b) SNAKECG_CAT_(a, b)
 #define SNAKECG_EXPORT(name) SNAKECG_CAT(SNAKECG_PREFIX, name)
-
-int SNAKECG_LJ(const double **arg, double **res, sc_int *iw, double *w, int mem);
-int SNAKECG_LJ_WORK(sc_int *sz_arg, sc_int *sz_res, sc_int *sz_iw, sc_int *sz_w);
 
 #define NS SNAKECG_NS
 #define NA SNAKECG_NA
@@ -47,12 +45,6 @@ int SNAKECG_LJ_WORK(sc_int *sz_arg, sc_int *sz_res, sc_int *sz_iw, sc_int *sz_w)
 #define NY (2 * NX + 3)
 #define MAX_EVENTS (3 + NC)
 
-/* event functions (snakecg/simulate/events.py, Events.functions) */
-enum { EV_SEPARATION = 0, EV_S_LOW = 1, EV_S_HIGH = 2, EV_GAP = 3, EV_BREAKAWAY = 4,
-       EV_SLIDE_STOP = 5 };
-/* segment status */
-enum { SEG_END = 0, SEG_EVENT = 1, SEG_TOO_SMALL = -1, SEG_PYTHON = -2, SEG_MEMORY = -3,
-       SEG_BAD_INPUT = -4 };
 
 /* DOP853: 12 stages, 16 with the dense output's, interpolant of 7 terms (scipy's
  * dop853_coefficients: N_STAGES, N_STAGES_EXTENDED, INTERPOLATOR_POWER) */
@@ -86,35 +78,6 @@ static const double DP_D[DP_NP - 3][DP_NX] = {
     {19.985053242002433, 0.0, 0.0, 0.0, 0.0, -387.0373087493518, -189.17813819516758, 527.8081592054236, -11.57390253995963, 6.8812326946963, -1.0006050966910838, 0.7777137798053443, -2.778205752353508, -60.19669523126412, 84.32040550667716, 11.99229113618279},
     {-25.69393346270375, 0.0, 0.0, 0.0, 0.0, -154.18974869023643, -231.5293791760455, 357.6391179106141, 93.40532418362432, -37.45832313645163, 104.0996495089623, 29.8402934266605, -43.53345659001114, 96.32455395918828, -39.17726167561544, -149.72683625798564}};
 
-/* One segment: inputs, then outputs (filled by core_integrate_segment). */
-typedef struct {
-  /* the model and the run */
-  const double *scene;   /* the scene vector (layout: SCENE_*) */
-  const double *tau;     /* NA, held over the segment */
-  const double *f_obj;   /* 3 */
-  const double *rho;     /* 2, contact point in the object frame */
-  const double *state;   /* NC row states (solver codes, as doubles) */
-  const sc_int *ev_kind; /* n_ev event kinds (EV_*) */
-  const sc_int *ev_row;  /* their rows */
-  sc_int n_ev;
-  sc_int contact_index;  /* k: the contact link, from 0 */
-  double c_k, l_k;       /* the contact link's COM offset and length */
-  double alpha;          /* Baumgarte rate (1/s) */
-  double pivot_tol;      /* held rows dependent at or below this pivot ratio */
-  double rtol, atol, max_step;
-  double t0, t1;
-  const double *y0;      /* NY */
-  const double *t_eval;  /* n_eval increasing times in (t0, t1] */
-  sc_int n_eval;
-  /* outputs */
-  double *y_eval;        /* n_eval x NY, row-major */
-  sc_int n_out;          /* output times reached */
-  double t_end;          /* where the segment ended (t1 or the event) */
-  double *y_end;         /* NY: the state there */
-  sc_int event;          /* the event that fired (index into ev_*), -1 if none */
-  sc_int nfev, nsteps, nrejected;
-  sc_int status;         /* SEG_* */
-} sc_segment;
 
 typedef struct {
   sc_work_t ws;
@@ -132,43 +95,6 @@ static int ctx_alloc(sc_ctx *c) {
   return sc_work_alloc(&c->ws, fns, 2);
 }
 
-/* A V (Dynamics.row_velocities): the gap rate (row 0) and the wheels' lateral velocities.
- * J: 3 NL x NS, column-major (rows 3i..3i+2 the twist (vx, vy, omega) of link i). */
-static void row_velocities(const sc_ctx *c, const double *J, const double *q, const double *v,
-                           const double *qo, const double *vo, double s, double *av) {
-  const sc_segment *sg = c->sg;
-  const double *woff = sg->scene + SCENE_wheel_offset;
-  const double sig = sg->scene[SCENE_side];
-  const int k = (int)sg->contact_index;
-  double tw[3 * NL], phi = q[2], spk = 0.0, cpk = 0.0, n0, n1, cs, sn, rx, ry, p0, p1;
-  int i, j;
-  for (i = 0; i < 3 * NL; ++i) {
-    double t = 0.0;
-    for (j = 0; j < NS; ++j) t += J[i + 3 * NL * j] * v[j];
-    tw[i] = t;
-  }
-  for (i = 0; i < NL; ++i) { /* phi_1 = theta, phi_{i+1} = phi_i + q_i */
-    double sp, cp;
-    if (i) phi += q[2 + i];
-    sp = sin(phi);
-    cp = cos(phi);
-    if (i == k) {
-      spk = sp;
-      cpk = cp;
-    }
-    av[1 + i] = -sp * tw[3 * i] + cp * tw[3 * i + 1] + woff[i] * tw[3 * i + 2];
-  }
-  n0 = sig * -spk;
-  n1 = sig * cpk;
-  cs = cos(qo[2]);
-  sn = sin(qo[2]);
-  rx = sg->rho[0];
-  ry = sg->rho[1];
-  p0 = vo[0] - vo[2] * (sn * rx + cs * ry);
-  p1 = vo[1] + vo[2] * (cs * rx - sn * ry);
-  av[0] = n0 * (p0 - tw[3 * k]) + n1 * (p1 - tw[3 * k + 1]) - sig * tw[3 * k + 2] * (s - sg->c_k);
-}
-
 /* The right-hand side in the mode at y (Dynamics.rates); keeps lam, A V, gap and s in c.
  * Returns 0, or SEG_PYTHON where the Python path must do it (dependent held rows, a failed
  * evaluation). */
@@ -177,17 +103,15 @@ static int rhs(sc_ctx *c, const double *y, double *ydot) {
   const double *q = y, *qo = y + NS, *v = y + NX, *vo = y + NX + NS;
   const sc_system *sys = &c->sys;
   const double *qdd_free = sys->qdd_free, *a_free = sys->a_free, *Kq = sys->Kq, *Ka = sys->Ka;
-  double J[3 * NL * NS], baumgarte[NC], *lam = c->lam, *av = c->av, ratio;
+  double baumgarte[NC], *lam = c->lam, *av = c->av, ratio;
   double p_tau = 0.0, p_fric = 0.0, p_obj = 0.0;
   int held = 0, i, r;
   c->nfev++;
   if (sc_contact_system(&c->ws, sg->scene, q, v, sg->tau, qo, vo, sg->f_obj, sg->rho, &c->sys))
     return SEG_PYTHON;
-  c->ws.arg[LJ_IN_q] = q;
-  c->ws.arg[LJ_IN_K] = sg->scene + SCENE_K;
-  c->ws.res[LJ_OUT_J] = J;
-  if (SNAKECG_LJ(c->ws.arg, c->ws.res, c->ws.iw, c->ws.w, 0)) return SEG_PYTHON;
-  row_velocities(c, J, q, v, qo, vo, sys->s, av);
+  if (sc_row_velocities(&c->ws, sg->scene, sg->rho, (int)sg->contact_index, sg->c_k, q, v, qo,
+                        vo, sys->s, av))
+    return SEG_PYTHON;
   /* eq. (16) with the mode's fixed forces, the held rows Baumgarte-stabilised:
    * G_HH lam_H = -(b_H + G_HF lam_F) - 2 alpha (A V)_H [- alpha^2 g for the contact] */
   for (r = 0; r < NC; ++r) {

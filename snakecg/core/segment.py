@@ -1,9 +1,11 @@
-"""The Python side of ``integrate.c``: one integration segment of a simulation in C.
+"""The Python side of ``integrate.c``, ``settle.c`` and ``run.c``: one integration segment
+of a simulation, what happens at an event, and a whole run with a constant torque, in C.
 
-:class:`Segment` mirrors the C struct ``sc_segment`` field by field (inputs, then outputs);
-:func:`segment_functions` binds ``core_integrate_segment`` and ``core_mode_samples`` of a
+:class:`Segment` mirrors the C struct ``sc_segment`` field by field (inputs, then outputs),
+:class:`Settle` ``sc_settle``, :class:`Run` ``sc_run``; :func:`segment_functions` binds
+``core_integrate_segment``, ``core_mode_samples``, ``core_settle`` and ``core_run`` of a
 compiled model library. The caller (:mod:`snakecg.simulate.compiled`) owns the arrays whose
-addresses it stores in a :class:`Segment`.
+addresses it stores in them.
 """
 
 from __future__ import annotations
@@ -18,7 +20,12 @@ __all__ = [
     "SEG_MEMORY",
     "SEG_PYTHON",
     "SEG_TOO_SMALL",
+    "RUN_COMPLETED",
+    "RUN_STOPPED",
+    "Run",
+    "SETTLE_DONE",
     "Segment",
+    "Settle",
     "segment_functions",
 ]
 
@@ -32,6 +39,10 @@ EVENT_CODES = {"lam_contact": 0, "s": 1, "l_k - s": 2, "gap": 3, "bound - |lam|"
                "sliding velocity": 5}
 #: Segment status (``SEG_*`` of integrate.c).
 SEG_END, SEG_EVENT, SEG_TOO_SMALL, SEG_PYTHON, SEG_MEMORY, SEG_BAD_INPUT = 0, 1, -1, -2, -3, -4
+#: Settle status (``SETTLE_*`` of settle.c): done; anything else hands it to Python.
+SETTLE_DONE = 0
+#: Run status (``RUN_*`` of run.c): completed, stopped (events); anything else: Python.
+RUN_COMPLETED, RUN_STOPPED = 0, 1
 
 
 class Segment(ctypes.Structure):
@@ -46,17 +57,49 @@ class Segment(ctypes.Structure):
                 ("status", _I)]
 
 
+class Settle(ctypes.Structure):
+    """``sc_settle`` of settle.c."""
+
+    _fields_ = [("scene", _P), ("tau", _P), ("f_obj", _P), ("rho", _P), ("contact_index", _I),
+                ("c_k", _D), ("l_k", _D), ("pivot_tol", _D), ("rel_tol", _D),
+                ("max_iter", _I), ("y", _P), ("prev", _P), ("forced", _P),
+                ("contact_candidate", _I), ("vtol", _D), ("y_out", _P), ("state", _P),
+                ("forced_out", _P), ("impact", _I), ("impact_velocity", _D),
+                ("impact_ke", _D), ("impact_de", _D), ("impact_lam", _P), ("n_impact", _I),
+                ("n_projected", _I), ("drift", _D), ("drift_row", _I),
+                ("projection_ke", _D), ("projection_de", _D), ("projection_lam", _P),
+                ("status", _I)]
+
+
+class Run(ctypes.Structure):
+    """``sc_run`` of run.c."""
+
+    _fields_ = [("sg", _P), ("st", _P), ("T", _D), ("gtol", _D), ("grid", _P),
+                ("n_grid", _I), ("max_events", _I), ("t", _D), ("y", _P), ("off_link", _I),
+                ("loss", _D), ("cap", _I), ("t_out", _P), ("y_out", _P), ("mode_out", _P),
+                ("loss_out", _P), ("n_out", _I), ("cap_modes", _I), ("modes", _P),
+                ("n_modes", _I), ("cap_events", _I), ("events", _P), ("n_events", _I),
+                ("stuck", _I), ("samples", _P), ("segments", _I), ("nfev", _I), ("nsteps", _I),
+                ("segment_cpu", _D), ("status", _I)]
+
+
 def segment_functions(lib: ctypes.CDLL, prefix: str):
-    """``(integrate, samples)``: ``core_integrate_segment(&segment)`` and
-    ``core_mode_samples(&segment, n, Y, out)`` of ``lib``, or ``(None, None)`` for a
-    library built without them."""
+    """``(integrate, samples, settle, run)``: ``core_integrate_segment(&segment)``,
+    ``core_mode_samples(&segment, n, Y, out)``, ``core_settle(&settle)`` and
+    ``core_run(&run)`` of ``lib``, or ``None`` each for a library built without them."""
     try:
         integrate = getattr(lib, f"{prefix}core_integrate_segment")
         samples = getattr(lib, f"{prefix}core_mode_samples")
+        settle = getattr(lib, f"{prefix}core_settle")
+        run = getattr(lib, f"{prefix}core_run")
     except AttributeError:
-        return None, None
+        return None, None, None, None
     integrate.argtypes = [_P]
     integrate.restype = ctypes.c_int
     samples.argtypes = [_P, _I, _P, _P]
     samples.restype = ctypes.c_int
-    return integrate, samples
+    settle.argtypes = [_P]
+    settle.restype = ctypes.c_int
+    run.argtypes = [_P]
+    run.restype = ctypes.c_int
+    return integrate, samples, settle, run

@@ -4,116 +4,166 @@ the JSON-ready summary (schema :data:`~snakecg.simulate.records.SCHEMA`)."""
 
 from __future__ import annotations
 
+import weakref
+
 import numpy as np
 
+from .. import kernels
 from .records import SCHEMA, Trajectory, jsonable
 
 __all__ = ["assemble", "summary"]
 
 
-def assemble(sim, samples, events, status) -> Trajectory:
+def assemble(sim, blocks, events, status) -> Trajectory:
     """The trajectory of the run ``sim`` (a :class:`~snakecg.simulate.simulator.Simulator`)
-    from its ``samples`` ``(t, y, mode, tau_fn, impact_loss)``, every quantity evaluated again
-    at each sample in the sample's mode."""
-    model, dyn = sim.model, sim.dyn
-    N = len(samples)
-    ns, na, nc, nl, nx = dyn.ns, dyn.na, dyn.nc, dyn.nl, dyn.nx
-    t = np.array([s[0] for s in samples])
-    Y = np.array([s[1] for s in samples])
-    tau = np.zeros((N, na))
-    lam = np.zeros((N, nc))
-    qdd = np.zeros((N, ns))
-    a_obj = np.zeros((N, 3))
-    sr = np.zeros(N)
-    nao = np.zeros(N)
-    nqdd = np.zeros(N)
-    gap = np.zeros(N)
-    s_ = np.zeros(N)
-    AVs = np.zeros((N, nc))
-    p_tau = np.zeros(N)
-    p_fric = np.zeros(N)
+    from its samples in ``blocks`` ``(t (k,), y (k, n_y), mode, tau_fn, impact_loss)``, every
+    quantity evaluated again at each sample in the sample's mode (the summary on first
+    access)."""
+    model, dyn, cfg = sim.model, sim.dyn, sim.settings
+    t = np.concatenate([b[0] for b in blocks])
+    N = len(t)
+    ns, na, nc, nl, nx, ny = dyn.ns, dyn.na, dyn.nc, dyn.nl, dyn.nx, dyn.ny
+    Y = np.concatenate([b[1] for b in blocks])
+    impact = np.repeat([b[4] for b in blocks], [len(b[0]) for b in blocks])
+    # per sample, as the compiled samples lay it out: ydot (n_y), lam, A V (n_c), gap, s, sr,
+    # norm_a_obj, norm_qdd and the sample's status
+    R = np.empty((N, ny + 2 * nc + 6))
+    tau = np.empty((N, na))
     p_cons = np.zeros(N)
-    contact = np.zeros(N, dtype=bool)
+    contact = np.empty(N, dtype=bool)
     wheel_state = np.empty((N, nl), dtype="<U6")
-    impact = np.array([s[4] for s in samples])
-    for start, end, mode, tau_fn in _runs(samples):
-        done = np.zeros(end - start, dtype=bool)
+    for start, end, mode, tau_fn in _runs(blocks):
+        sl = slice(start, end)
+        todo = range(start, end)
         if sim.compiled is not None:
             # one compiled call for the run of samples (the torque is constant over it)
             taui = np.asarray(tau_fn(t[start], Y[start], mode), dtype=float)
-            r = sim.compiled.samples(Y[start:end], mode, taui)
+            sim.compiled.samples_into(Y[sl], mode, taui, R[sl])
             dyn.nfev += end - start
-            done = r["ok"]
-            sl = slice(start, end)
-            tau[sl], lam[sl], gap[sl], s_[sl], AVs[sl] = taui, r["lam"], r["gap"], r["s"], r["AV"]
-            qdd[sl], a_obj[sl] = r["ydot"][:, nx:nx + ns], r["ydot"][:, nx + ns:2 * nx]
-            sr[sl], nao[sl], nqdd[sl] = r["sr"], r["norm_a_obj"], r["norm_qdd"]
-            p_tau[sl], p_fric[sl] = r["ydot"][:, 2 * nx], r["ydot"][:, 2 * nx + 1]
-        for i in start + np.flatnonzero(~done):
-            ydot, li, gi, si, AV, (taui, sri, nai, nqi) = dyn.rates(t[i], Y[i], mode, tau_fn)
-            tau[i], lam[i], gap[i], s_[i], AVs[i] = taui, li, gi, si, AV
-            qdd[i] = ydot[nx:nx + ns]
-            a_obj[i] = ydot[nx + ns:2 * nx]
-            sr[i], nao[i], nqdd[i] = sri, nai, nqi
-            p_tau[i], p_fric[i] = ydot[2 * nx], ydot[2 * nx + 1]
+            tau[sl] = taui
+            handed = R[sl, -1]
+            todo = start + np.flatnonzero(handed) if handed.any() else ()
+        for i in todo:
+            ydot, li, gi, si, AV, (ti, sri, nai, nqi) = dyn.rates(t[i], Y[i], mode, tau_fn)
+            R[i, :ny], R[i, ny:ny + nc], R[i, ny + nc:ny + 2 * nc] = ydot, li, AV
+            R[i, ny + 2 * nc:] = (gi, si, sri, nai, nqi, 0.0)
+            tau[i] = ti
         # power of the held rows' forces: zero on the constraints (a drift diagnostic; not
         # integrated: off the constraints, at the integrator's stages, it is noise)
         F = mode.free_idx
         if F.size:
-            p_cons[start:end] = np.einsum("ij,ij->i", lam[start:end, F], AVs[start:end, F])
-        contact[start:end] = mode.contact_held
-        wheel_state[start:end] = mode.wheel_names
+            p_cons[sl] = (R[sl, ny:ny + nc] * R[sl, ny + nc:ny + 2 * nc]) @ mode.free
+        contact[sl] = mode.contact_held
+        wheel_state[sl] = mode.wheel_names
+    return trajectory(sim, t, Y, impact, R, tau, p_cons, contact, wheel_state, events, status)
+
+
+def assemble_arrays(sim, t, Y, impact, R, tau, mode_index, modes, events, status):
+    """:func:`assemble` of a run done in C (``core_run``): the samples ``t``, ``Y`` with
+    their energy removed ``impact``, their quantities ``R`` (rows as the compiled samples'
+    where the C evaluated them, else a non-zero status), the constant torque ``tau`` and each
+    sample's mode (an index into ``modes``)."""
+    dyn = sim.dyn
+    nc, ny = dyn.nc, dyn.ny
+    dyn.nfev += len(t)
+    for i in np.flatnonzero(R[:, -1]):  # handed back: the Python right-hand side
+        mode = modes[int(mode_index[i])]
+        ydot, li, gi, si, AV, (_, sri, nai, nqi) = dyn.rates(t[i], Y[i], mode,
+                                                              lambda *_: tau)
+        R[i, :ny], R[i, ny:ny + nc], R[i, ny + nc:ny + 2 * nc] = ydot, li, AV
+        R[i, ny + 2 * nc:] = (gi, si, sri, nai, nqi, 0.0)
+    idx = mode_index.astype(np.intp)
+    free = np.array([m.free for m in modes])[idx]
+    p_cons = np.einsum("ij,ij->i", R[:, ny:ny + nc] * R[:, ny + nc:ny + 2 * nc], free)
+    contact = np.array([m.contact_held for m in modes])[idx]
+    wheel_state = np.array([m.wheel_names for m in modes], dtype="<U6")[idx]
+    return trajectory(sim, t, Y, impact, R, np.tile(tau, (len(t), 1)), p_cons, contact,
+                      wheel_state, events, status)
+
+
+def trajectory(sim, t, Y, impact, R, tau, p_cons, contact, wheel_state, events, status):
+    """The :class:`Trajectory` of the samples ``t``, ``Y`` and their quantities."""
+    model, dyn, cfg = sim.model, sim.dyn, sim.settings
+    N = len(t)
+    ns, nc, nx, ny = dyn.ns, dyn.nc, dyn.nx, dyn.ny
+    e = ny + 2 * nc
     q, q_obj = Y[:, :ns], Y[:, ns:nx]
     v, v_obj = Y[:, nx:nx + ns], Y[:, nx + ns:2 * nx]
     W = Y[:, 2 * nx:]
-    M = model.mass_matrix(q)
+    # M_s and the link poses at the initial configuration and at every sample, in one call
+    Q = np.vstack((cfg.q0, q))
+    kin = sim.compiled.kinematics(Q) if sim.compiled is not None \
+        and sim.compiled.has_kinematics else None
+    if kin is None:  # SceneModel.mass_matrix, link_poses on the run's own arrays
+        kin = (kernels.call(model.backend, "mass_matrix", N + 1, q=Q, K=model.parameters)["M"],
+               kernels.call(model.backend, "link_poses", N + 1, q=Q,
+                            K=model.parameters)["poses"].transpose(0, 2, 1))
+    M0, M = kin[0][0], kin[0][1:]
+    poses = np.ascontiguousarray(kin[1][1:])
     ke = 0.5 * np.einsum("ni,nij,nj->n", v, M, v) + 0.5 * (v_obj**2 @ dyn.mo)
-    com = model.com(q)
-    poses = model.link_poses(q)
+    sim.ke_initial = 0.5 * float(cfg.v0 @ M0 @ cfg.v0) + 0.5 * float(
+        cfg.v_obj0 @ (dyn.mo * cfg.v_obj0))
+    m = np.asarray(model.robot.mass)
+    com = np.einsum("...ik,i->...k", poses[..., :2], m) / m.sum()  # SceneModel.com
     # displacement-based slippage ratio (metric of the initial configuration)
-    M0 = dyn.mass_matrix(sim.settings.q0)
     dq = q - q[0]
     do = q_obj - q_obj[0]
     num = np.einsum("ni,i,ni->n", do, dyn.mo, do)
     den = num + np.einsum("ni,ij,nj->n", dq, M0, dq)
-    with np.errstate(invalid="ignore", divide="ignore"):
-        sr_d = np.where(den > 0, num / np.where(den > 0, den, 1.0), np.nan)
+    sr_d = np.full(N, np.nan)
+    np.divide(num, den, out=sr_d, where=den > 0)
     loss = impact  # cumulative kinetic energy removed by impacts / projections
     residual = (ke - sim.ke_initial) - (W[:, 0] + W[:, 1] + W[:, 2] - loss)
-    scene = dyn.scene
-    geometry = {
-        "length": np.asarray(scene.robot.length, float),
-        "com": np.asarray(scene.robot.com, float),
-        "wheel_offset": dyn.woff.copy(),
-        "wheel_links": np.flatnonzero(dyn.present[1:]) + 1,
-        "contact_link": dyn.k + 1,
-        "side": dyn.sigma,
-        "object_distance": float(scene.object_distance),
-        "wheel_bounds": dyn.bounds[1:].copy(),
-    }
-    traj = Trajectory(
-        t=t, q=q, v=v, q_obj=q_obj, v_obj=v_obj, rho=dyn.rho.copy(), tau=tau, lam=lam,
-        qdd=qdd, a_obj=a_obj, contact=contact, wheel_state=wheel_state, sr=sr,
-        norm_a_obj=nao, norm_qdd=nqdd, sr_displacement=sr_d, com=com, link_poses=poses,
-        gap=gap, s=s_, row_velocity=AVs, kinetic_energy=ke, power_tau=p_tau,
-        power_friction=p_fric, work_tau=W[:, 0].copy(), work_friction=W[:, 1].copy(),
-        work_object=W[:, 2].copy(), power_constraint=p_cons, impact_loss=loss,
-        energy_residual=residual, events=events, summary={}, geometry=geometry)
-    traj.summary = summary(sim, traj, status)
-    return traj
+    geometry = {k: v.copy() if isinstance(v, np.ndarray) else v
+                for k, v in _geometry(model, dyn).items()}
+    return Trajectory(
+        t=t, q=q, v=v, q_obj=q_obj, v_obj=v_obj, rho=dyn.rho.copy(), tau=tau,
+        lam=R[:, ny:ny + nc].copy(), qdd=R[:, nx:nx + ns].copy(),
+        a_obj=R[:, nx + ns:2 * nx].copy(), contact=contact, wheel_state=wheel_state,
+        sr=R[:, e + 2].copy(), norm_a_obj=R[:, e + 3].copy(), norm_qdd=R[:, e + 4].copy(),
+        sr_displacement=sr_d, com=com, link_poses=poses, gap=R[:, e].copy(),
+        s=R[:, e + 1].copy(), row_velocity=R[:, ny + nc:e].copy(), kinetic_energy=ke,
+        power_tau=R[:, 2 * nx].copy(), power_friction=R[:, 2 * nx + 1].copy(),
+        work_tau=W[:, 0].copy(), work_friction=W[:, 1].copy(), work_object=W[:, 2].copy(),
+        power_constraint=p_cons, impact_loss=loss, energy_residual=residual, events=events,
+        summary=lambda traj: summary(sim, traj, status), geometry=geometry)
 
 
-def _runs(samples):
-    """``(start, end, mode, tau_fn)`` of each run of consecutive samples that share their
-    mode and torque function."""
-    start = 0
-    while start < len(samples):
-        mode, tau_fn = samples[start][2], samples[start][3]
-        end = start + 1
-        while end < len(samples) and samples[end][2] is mode and samples[end][3] is tau_fn:
-            end += 1
-        yield start, end, mode, tau_fn
-        start = end
+_GEOMETRY: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
+
+
+def _geometry(model, dyn) -> dict:
+    """The trajectory's ``geometry`` (constants of the model, for drawing), built once per
+    model; the caller copies the arrays."""
+    g = _GEOMETRY.get(model)
+    if g is None:
+        scene = dyn.scene
+        g = _GEOMETRY[model] = {
+            "length": np.asarray(scene.robot.length, float),
+            "com": np.asarray(scene.robot.com, float),
+            "wheel_offset": dyn.woff.copy(),
+            "wheel_links": np.flatnonzero(dyn.present[1:]) + 1,
+            "contact_link": dyn.k + 1,
+            "side": dyn.sigma,
+            "object_distance": float(scene.object_distance),
+            "wheel_bounds": dyn.bounds[1:].copy(),
+        }
+    return g
+
+
+def _runs(blocks):
+    """``(start, end, mode, tau_fn)`` of each run of consecutive samples (over the blocks)
+    that share their mode and torque function."""
+    start = end = 0
+    key = None
+    for b in blocks:
+        if key is not None and (b[2] is not key[0] or b[3] is not key[1]):
+            yield start, end, key[0], key[1]
+            start = end
+        key = (b[2], b[3])
+        end += len(b[0])
+    if key is not None:
+        yield start, end, key[0], key[1]
 
 
 def summary(sim, tr: Trajectory, status: str) -> dict:

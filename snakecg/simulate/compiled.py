@@ -1,7 +1,10 @@
 """Integration segments in compiled code: the right-hand side of a mode, the DOP853 steps,
 the output times and the event functions of a segment in one C call
 (``core_integrate_segment`` of the model library's ``integrate.c``), answering what
-:func:`scipy.integrate.solve_ivp` answers to :class:`~snakecg.simulate.simulator.Simulator`.
+:func:`scipy.integrate.solve_ivp` answers to :class:`~snakecg.simulate.simulator.Simulator`;
+and what happens at an event (impacts, projections, the new active set) in one C call
+(``core_settle`` of ``settle.c``), answering what
+:meth:`~snakecg.simulate.events.Events.settle` computes in Python.
 
 Used for ``method="DOP853"`` without ``fixed_step`` when the torque is constant over each
 segment (a constant, or a law held over ``control_period``) and the model has a compiled
@@ -14,16 +17,20 @@ from __future__ import annotations
 
 import ctypes
 import math
+import weakref
 from types import SimpleNamespace
 
 import numpy as np
 
-from ..core.segment import EVENT_CODES, SEG_END, SEG_EVENT, SEG_TOO_SMALL, Segment
-from ..solver import PIVOT_TOL
+from ..core.segment import (RUN_COMPLETED, RUN_STOPPED, SEG_END, SEG_EVENT, SEG_TOO_SMALL,
+                            SETTLE_DONE, Run, Segment, Settle)
+from ..solver import PIVOT_TOL, REL_TOL, default_max_iter
 
 __all__ = ["CompiledSegments", "compiled_reason"]
 
 INTEGRATORS = ("auto", "compiled", "scipy")
+#: Events a whole run in C (core_run) has room for; a run with more is done by the Python loop.
+RUN_EVENTS = 256
 _TOO_SMALL = "Required step size is less than spacing between numbers."  # solve_ivp's words
 
 
@@ -42,6 +49,49 @@ def compiled_reason(settings) -> str | None:
     return None
 
 
+_PLACE: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
+
+
+def placement(model, q0):
+    """The scene's placement of the object at the checked ``q0`` (n_s,): ``(q_obj0, rho)``,
+    new arrays, as :meth:`snakecg.SceneModel.place` gives them, through the compiled batch
+    driver of ``place_object`` with its constant inputs packed once per model."""
+    be = model.backend
+    fn = getattr(be, "_fns", {}).get("place_object")
+    if fn is None:
+        q_obj0, rho, _ = model.place(q0[None, :], 1)
+        return q_obj0[0].copy(), rho[0].copy()
+    fixed = _PLACE.get(model)
+    if fixed is None:
+        sig = be.signatures["place_object"]
+        values = {"K": model.parameters, "contact_link": model._contact_link,
+                  "contact_offset": [model.scene.contact_offset],
+                  "object_distance": [model.scene.object_distance], "side": model._side}
+        packed = np.concatenate([np.ravel(np.asarray(values[k], dtype=float))
+                                 for k in sig.in_names if k != "q"])
+        addresses, off = [], 0
+        for k, size in zip(sig.in_names, sig.in_sizes):
+            if k == "q":
+                addresses.append(None)
+            else:
+                addresses.append(packed.ctypes.data + 8 * off)
+                off += size
+        sizes = [r * c for r, c in sig.out_shapes]  # q_obj (3), rho (2), contact point (2)
+        fixed = _PLACE[model] = (packed, addresses, sig.in_names.index("q"), sizes,
+                                 np.cumsum([0, *sizes[:-1]]).tolist())
+    packed, addresses, k, sizes, offsets = fixed
+    q0 = np.ascontiguousarray(q0, dtype=float)
+    argp = (ctypes.c_void_p * len(addresses))(*addresses)
+    argp[k] = q0.ctypes.data
+    out = np.empty(sum(sizes))
+    base = out.ctypes.data
+    resp = (ctypes.c_void_p * len(sizes))(*(base + 8 * o for o in offsets))
+    if fn(1, argp, (ctypes.c_longlong * len(addresses))(), resp) != 0:
+        q_obj0, rho, _ = model.place(q0[None, :], 1)
+        return q_obj0[0].copy(), rho[0].copy()
+    return out[:3].copy(), out[3:5].copy()
+
+
 class CompiledSegments:
     """The compiled segment integrator of one run on the equations ``dyn``
     (:class:`~snakecg.simulate.dynamics.Dynamics`) with the checked ``settings``."""
@@ -52,53 +102,95 @@ class CompiledSegments:
         self._fn = model.core.integrate_segment
         self._samples = model.core.mode_samples
         self._model = model  # keeps the scene vector alive
+        # the batch drivers of mass_matrix and link_poses (inputs q, K): their pointer arrays
+        be = model.backend
+        fns = getattr(be, "_fns", {})
+        self.has_kinematics = all(
+            name in fns and be.signatures[name].in_names in (["q", "K"], ["K", "q"])
+            for name in ("mass_matrix", "link_poses"))
+        if self.has_kinematics:
+            self._K = np.ascontiguousarray(model.parameters, dtype=float)
+            self._kin = []
+            for name in ("mass_matrix", "link_poses"):
+                k = be.signatures[name].in_names.index("q")
+                argp = (ctypes.c_void_p * 2)()
+                argp[1 - k] = self._K.ctypes.data
+                self._kin.append((fns[name], argp, k, (ctypes.c_void_p * 1)()))
+            self._kin_strides = []  # q's stride n_s (at its index), K broadcast
+            for k in (0, 1):
+                st = (ctypes.c_longlong * 2)()
+                st[k] = dyn.ns
+                self._kin_strides.append(st)
         ny, na, nc = dyn.ny, dyn.na, dyn.nc
-        self.y0 = np.zeros(ny)
-        self.y_end = np.zeros(ny)
-        self.tau = np.zeros(na)
-        self.state = np.zeros(nc)
-        self.ev_kind = np.zeros(nc + 3, dtype=np.int64)
-        self.ev_row = np.zeros(nc + 3, dtype=np.int64)
-        self.f_obj = np.ascontiguousarray(dyn.f_obj, dtype=float)
-        self.rho = np.ascontiguousarray(dyn.rho, dtype=float)
+        # every array the C reads or writes, as views of one buffer (one address lookup)
+        sizes = {"y0": ny, "y_end": ny, "tau": na, "state": nc, "f_obj": 3, "rho": 2,
+                 "s_y": ny, "s_y_out": ny, "s_prev": nc, "s_forced": nc, "s_state": nc,
+                 "s_forced_out": nc, "s_impact_lam": nc, "s_projection_lam": nc}
+        buf = np.zeros(sum(sizes.values()))
+        base, addr, off = buf.ctypes.data, {}, 0
+        for name, size in sizes.items():
+            setattr(self, name, buf[off:off + size])
+            addr[name] = base + 8 * off
+            off += size
+        self.f_obj[:] = dyn.f_obj
+        self.rho[:] = dyn.rho
+        events = np.zeros((2, nc + 3), dtype=np.int64)
+        self.ev_kind, self.ev_row = events
         self.t_eval = np.zeros(0)
         self.y_eval = np.zeros((0, ny))
         seg = Segment()
         seg.scene = model.scene_address
-        seg.tau, seg.f_obj, seg.rho = (self.tau.ctypes.data, self.f_obj.ctypes.data,
-                                       self.rho.ctypes.data)
-        seg.state = self.state.ctypes.data
-        seg.ev_kind, seg.ev_row = self.ev_kind.ctypes.data, self.ev_row.ctypes.data
+        seg.tau, seg.f_obj, seg.rho = addr["tau"], addr["f_obj"], addr["rho"]
+        seg.state = addr["state"]
+        seg.ev_kind = events.ctypes.data
+        seg.ev_row = seg.ev_kind + 8 * (nc + 3)
         seg.contact_index, seg.c_k, seg.l_k = dyn.k, dyn.c_k, dyn.l_k
         seg.alpha, seg.pivot_tol = dyn.alpha, PIVOT_TOL
         seg.rtol, seg.atol = settings.rtol, settings.atol
         seg.max_step = math.inf if settings.max_step is None else settings.max_step
-        seg.y0, seg.y_end = self.y0.ctypes.data, self.y_end.ctypes.data
+        seg.y0, seg.y_end = addr["y0"], addr["y_end"]
         self.seg = seg
         self._address = ctypes.addressof(seg)
         self.steps = 0
-        self.handed_back = 0
+        self.handed_back = 0  # segments and settles done in Python instead
+        self.runs_handed_back = 0  # whole runs (core_run) done by the Python loop instead
+        self._run = model.core.run
+        self.y_start = np.zeros(ny)
+        # core_settle (the torque is the segments')
+        self._settle = model.core.settle
+        st = Settle()
+        st.scene, st.tau, st.f_obj, st.rho = (model.scene_address, addr["tau"], addr["f_obj"],
+                                              addr["rho"])
+        st.contact_index, st.c_k, st.l_k = dyn.k, dyn.c_k, dyn.l_k
+        st.pivot_tol, st.rel_tol, st.max_iter = PIVOT_TOL, REL_TOL, default_max_iter(nc)
+        st.y, st.forced = addr["s_y"], addr["s_forced"]
+        st.y_out, st.state, st.forced_out = addr["s_y_out"], addr["s_state"], addr["s_forced_out"]
+        st.impact_lam, st.projection_lam = addr["s_impact_lam"], addr["s_projection_lam"]
+        self._prev_address = addr["s_prev"]
+        self.st = st
+        self._settle_address = ctypes.addressof(st)
+        self._buf = buf, events  # keeps the arrays alive
 
-    def run(self, t0, t1, y, mode, tau, evs, t_eval):
+    def run(self, t0, t1, y, mode, tau, specs, t_eval):
         """One segment from ``(t0, y)`` to ``t1`` in ``mode`` with the torque ``tau`` and the
-        event functions ``evs`` (:meth:`~snakecg.simulate.events.Events.functions`), output
-        at ``t_eval``: an object with solve_ivp's ``t``, ``y``, ``status``, ``message``,
-        ``t_events`` and ``y_events``, or ``None`` when solve_ivp must do this segment."""
+        terminal events ``specs`` (:meth:`~snakecg.simulate.events.Events.specs`), output
+        at ``t_eval``: an object with ``status`` (solve_ivp's: 0, 1 at an event, -1),
+        ``message``, the output ``t`` (m,) and ``y`` (m, n_y) and ``fired`` (``[(spec, t_e,
+        y_e)]`` of the event), or ``None`` when solve_ivp must do this segment."""
         seg, dyn = self.seg, self.dyn
-        n_ev = len(evs)
-        for i, ev in enumerate(evs):
-            self.ev_kind[i] = EVENT_CODES[ev.quantity]
-            self.ev_row[i] = ev.row
+        self.ev_kind[:len(specs)] = specs.codes
+        self.ev_row[:len(specs)] = specs.rows
         self.y0[:] = y
         self.tau[:] = tau
         self.state[:] = mode.state
         n = len(t_eval)
-        if n != len(self.t_eval):
+        if n > len(self.y_eval):
             self.y_eval = np.zeros((n, dyn.ny))
         self.t_eval = np.ascontiguousarray(t_eval, dtype=float)
+        # (set at every call: core_run points them at its own arrays)
         seg.t_eval, seg.n_eval, seg.y_eval = (self.t_eval.ctypes.data, n,
                                               self.y_eval.ctypes.data)
-        seg.n_ev, seg.t0, seg.t1 = n_ev, t0, t1
+        seg.n_ev, seg.t0, seg.t1 = len(specs), t0, t1
         status = self._fn(self._address)
         dyn.nfev += seg.nfev
         self.steps += seg.nsteps
@@ -106,31 +198,150 @@ class CompiledSegments:
             self.handed_back += 1
             return None
         m = seg.n_out
-        t_events = [np.zeros(0) for _ in evs]
-        y_events = [np.zeros((0, dyn.ny)) for _ in evs]
+        fired = []
         if status == SEG_EVENT:
-            t_events[seg.event] = np.array([seg.t_end])
-            y_events[seg.event] = self.y_end.copy()[None, :]
+            fired = [(specs[seg.event], seg.t_end, self.y_end.copy())]
         return SimpleNamespace(
-            t=self.t_eval[:m].copy(), y=self.y_eval[:m].T.copy(),
+            t=self.t_eval[:m], y=self.y_eval[:m].copy(),
             status={SEG_END: 0, SEG_EVENT: 1, SEG_TOO_SMALL: -1}[status],
-            message=_TOO_SMALL if status == SEG_TOO_SMALL else "",
-            t_events=t_events, y_events=y_events)
+            message=_TOO_SMALL if status == SEG_TOO_SMALL else "", fired=fired)
 
-    def samples(self, Y, mode, tau):
-        """The trajectory's quantities at the states ``Y`` (n, n_y) in ``mode`` with the torque
-        ``tau``, evaluated by the C: a dict of ``ydot`` (n, n_y), ``lam``, ``AV`` (n, n_c),
-        ``gap``, ``s``, ``sr``, ``norm_a_obj``, ``norm_qdd`` (n,) and ``ok`` (n,) (False where
-        the Python right-hand side must evaluate the sample: dependent held rows)."""
+    def run_all(self, y, mode, loss, tau, grid, T, gtol, max_events):
+        """The whole run from the state ``y`` in ``mode`` (after the start's settle, the
+        energy ``loss`` removed there) with the constant torque ``tau`` to ``T``, output at
+        ``grid`` (increasing, the last is ``T``), in one C call (``core_run``): the filled
+        :class:`~snakecg.core.segment.Run` with its arrays (``t``, ``y``, ``mode``,
+        ``loss`` and the quantities ``samples`` (as :meth:`samples_into`) of each sample,
+        the ``modes`` and the ``events``, see run.c), or ``None`` when the Python loop must
+        do the run."""
         dyn = self.dyn
         ny, nc = dyn.ny, dyn.nc
-        Y = np.ascontiguousarray(Y, dtype=float).reshape(-1, ny)
+        grid = np.ascontiguousarray(grid, dtype=float)
+        cap_events = min(int(max_events), RUN_EVENTS) + 1
+        cap = len(grid) + 2 * cap_events + 2
+        width = ny + 2 * nc + 6
+        sizes = {"t": cap, "y": cap * ny, "mode": cap, "loss": cap, "samples": cap * width,
+                 "modes": (cap_events + 1) * (nc + 1), "events": cap_events * (11 + nc)}
+        buf = np.empty(sum(sizes.values()))
+        base, out, addr, off = buf.ctypes.data, {}, {}, 0
+        for name, size in sizes.items():
+            out[name], addr[name] = buf[off:off + size], base + 8 * off
+            off += size
+        self.tau[:] = tau
+        self.state[:] = mode.state  # the start's mode, then the current one
+        self.y_start[:] = y
+        R = Run()
+        R.sg, R.st = self._address, self._settle_address
+        R.T, R.gtol, R.grid, R.n_grid = T, gtol, grid.ctypes.data, len(grid)
+        R.max_events, R.t, R.off_link, R.loss = int(max_events), 0.0, int(mode.off_link), loss
+        R.y = self.y_start.ctypes.data
+        R.cap, R.t_out, R.y_out = cap, addr["t"], addr["y"]
+        R.mode_out, R.loss_out = addr["mode"], addr["loss"]
+        R.cap_modes, R.modes = cap_events + 1, addr["modes"]
+        R.cap_events, R.events = cap_events, addr["events"]
+        R.samples = addr["samples"]
+        status = self._run(ctypes.addressof(R))
+        if status not in (RUN_COMPLETED, RUN_STOPPED):
+            self.runs_handed_back += 1
+            return None
+        n = R.n_out
+        R.arrays = SimpleNamespace(
+            t=out["t"][:n], y=out["y"][:n * ny].reshape(n, ny), mode=out["mode"][:n],
+            loss=out["loss"][:n], modes=out["modes"][:R.n_modes * (nc + 1)].reshape(-1, nc + 1),
+            events=out["events"][:R.n_events * (11 + nc)].reshape(-1, 11 + nc),
+            samples=out["samples"][:n * width].reshape(n, width))
+        self.steps += R.nsteps
+        dyn.nfev += R.nfev
+        return R
+
+    def settle(self, y, prev, forced: dict, contact_candidate: bool, tau):
+        """``core_settle`` at the state ``y`` after the mode ``prev`` (``None`` at the start)
+        with the rows ``forced`` (row: state code) and the torque ``tau``: the
+        :class:`~snakecg.core.segment.Settle` it filled (outputs in ``s_y_out``,
+        ``s_state``, ``s_impact_lam``, ``s_projection_lam``), or ``None`` when the Python
+        path must do it (see settle.c)."""
+        st = self.st
+        self.s_y[:] = y
+        self.tau[:] = tau
+        if prev is None:
+            st.prev = None
+        else:
+            self.s_prev[:] = prev.state
+            st.prev = self._prev_address
+        self.s_forced.fill(-1.0)
+        for r, code in forced.items():
+            self.s_forced[r] = code
+        st.contact_candidate = 1 if contact_candidate else 0
+        if self._settle(self._settle_address) != SETTLE_DONE:
+            self.handed_back += 1
+            return None
+        return st
+
+    def gap_and_s(self, y):
+        """The contact's ``gap`` and position ``s`` along the link at the state ``y`` (of
+        ``contact_system``: the same in every mode), or ``None`` when the C could not
+        evaluate them."""
+        nc = self.dyn.nc
+        out = np.zeros((1, self.dyn.ny + 2 * nc + 6))
+        self.tau.fill(0.0)
+        self.state.fill(0.0)  # no row held: nothing to factor
+        y = np.ascontiguousarray(y, dtype=float)
+        if self._samples(self._address, 1, y.ctypes.data, out.ctypes.data) != 0 \
+                or out[0, -1] != 0:
+            return None
+        return float(out[0, -6]), float(out[0, -5])
+
+    def point(self, y, mode, tau):
+        """``(lam, s)`` at the state ``y`` in ``mode`` with the torque ``tau`` (as the
+        right-hand side evaluates them), or ``None`` where the Python right-hand side must
+        evaluate it."""
+        r = self.samples(y, mode, tau)
+        if not r["ok"][0]:
+            return None
+        return r["lam"][0].copy(), float(r["s"][0])
+
+    def kinematics(self, Q):
+        """``M_s`` (n, n_s, n_s) and the link poses (n, n_l, 3) at the configurations ``Q``
+        (n, n_s): the generated ``mass_matrix`` and ``link_poses`` through their compiled
+        batch drivers on the run's own arrays (what :meth:`snakecg.SceneModel.mass_matrix`
+        and :meth:`~snakecg.SceneModel.link_poses` give, without their checks), or ``None``
+        when an evaluation failed."""
+        Q = np.ascontiguousarray(Q, dtype=float)
+        n = len(Q)
+        ns, nl = self.dyn.ns, self.dyn.nl
+        buf = np.empty(n * (ns * ns + 3 * nl))
+        q, base = Q.ctypes.data, buf.ctypes.data
+        outs = (base, base + 8 * n * ns * ns)
+        for (fn, argp, k, resp), out in zip(self._kin, outs):
+            argp[k] = q
+            resp[0] = out
+            if fn(n, argp, self._kin_strides[k], resp) != 0:
+                return None
+        M = buf[:n * ns * ns].reshape(n, ns, ns).transpose(0, 2, 1)
+        return M, buf[n * ns * ns:].reshape(n, nl, 3)
+
+    def samples_into(self, Y, mode, tau, out) -> None:
+        """The trajectory's quantities at the states ``Y`` (n, n_y) in ``mode`` with the torque
+        ``tau``, evaluated by the C into ``out`` (n, n_y + 2 n_c + 6), C-contiguous rows:
+        ``ydot`` (n_y), ``lam``, ``A V`` (n_c), ``gap``, ``s``, ``sr``, ``norm_a_obj``,
+        ``norm_qdd`` and the status (not 0 where the Python right-hand side must evaluate
+        the sample: dependent held rows)."""
+        Y = np.ascontiguousarray(Y, dtype=float)
         n = len(Y)
         self.tau[:] = tau
         self.state[:] = mode.state
-        out = np.zeros((n, ny + 2 * nc + 6))
         if n and self._samples(self._address, n, Y.ctypes.data, out.ctypes.data) != 0:
             raise MemoryError("the compiled samples could not allocate their workspace")
+
+    def samples(self, Y, mode, tau):
+        """:meth:`samples_into` as a dict of ``ydot`` (n, n_y), ``lam``, ``AV`` (n, n_c),
+        ``gap``, ``s``, ``sr``, ``norm_a_obj``, ``norm_qdd`` (n,) and ``ok`` (n,) (False
+        where the Python right-hand side must evaluate the sample)."""
+        dyn = self.dyn
+        ny, nc = dyn.ny, dyn.nc
+        Y = np.ascontiguousarray(Y, dtype=float).reshape(-1, ny)
+        out = np.zeros((len(Y), ny + 2 * nc + 6))
+        self.samples_into(Y, mode, tau, out)
         e = out[:, ny:]
         return {"ydot": out[:, :ny], "lam": e[:, :nc], "AV": e[:, nc:2 * nc],
                 "gap": e[:, 2 * nc], "s": e[:, 2 * nc + 1], "sr": e[:, 2 * nc + 2],

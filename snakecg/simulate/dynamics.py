@@ -15,6 +15,7 @@ contact, ``udot = -2 alpha u`` for a sticking wheel).
 from __future__ import annotations
 
 import math
+from functools import cached_property
 
 import numpy as np
 
@@ -57,24 +58,54 @@ class Dynamics:
         self.woff = np.asarray(scene.wheel_offset, dtype=float)
         self._woff = self.woff.tolist()
         self._rho = tuple(rho.tolist())
-        self.mo = np.array([scene.object_mass, scene.object_mass, scene.object_inertia])
-        be = model.backend
-        fixed = {k: model.scene_inputs[k] for k in ("K", "contact_link", "side", "object_mass",
-                                                    "object_inertia", "wheel_offset")}
-        self.cd = BoundFunction(be, "constrained_dynamics", {
-            **fixed, "rho": rho, "f_obj": f_obj, "regularization": np.zeros(1)})
-        # the problem before any active set (G_c, the force maps): the linear maps at events
-        self._cs = BoundFunction(be, "contact_system", {**fixed, "rho": rho, "f_obj": f_obj})
-        self._jac = BoundFunction(be, "link_jacobians", {"K": model.parameters})
-        self._mass = BoundFunction(be, "mass_matrix", {"K": model.parameters})
-        self._out_index = tuple(self.cd.out_names.index(n) for n in _RHS_OUTPUTS)
-        self._jac_index = self._jac.out_names.index("J")
+        m_obj = scene.object_mass
+        self.mo = np.array([m_obj, m_obj, scene.object_inertia])
+        self._model = model
         self._cache = None  # (t, mode, tau_fn, y bytes, rates) of the last evaluation
         self._zeros_nc = np.zeros(nc)
         self._posv = dposv
         self.nfev = 0
         self.njev = 0
         self.singular = 0
+
+    # --- the generated functions, bound on first use (a run in compiled code may need none)
+    def _bound(self, name, constants):
+        return BoundFunction(self._model.backend, name, constants)
+
+    def _fixed(self):
+        inputs = self._model.scene_inputs
+        return {k: inputs[k] for k in ("K", "contact_link", "side", "object_mass",
+                                       "object_inertia", "wheel_offset")}
+
+    @cached_property
+    def cd(self) -> BoundFunction:
+        """``constrained_dynamics`` with the run's constants (the right-hand side)."""
+        return self._bound("constrained_dynamics", {
+            **self._fixed(), "rho": self.rho, "f_obj": self.f_obj,
+            "regularization": np.zeros(1)})
+
+    @cached_property
+    def _cs(self) -> BoundFunction:
+        """``contact_system``: the problem before any active set (the linear maps at
+        events)."""
+        return self._bound("contact_system", {**self._fixed(), "rho": self.rho,
+                                              "f_obj": self.f_obj})
+
+    @cached_property
+    def _jac(self) -> BoundFunction:
+        return self._bound("link_jacobians", {"K": self._model.parameters})
+
+    @cached_property
+    def _mass(self) -> BoundFunction:
+        return self._bound("mass_matrix", {"K": self._model.parameters})
+
+    @cached_property
+    def _out_index(self) -> tuple:
+        return tuple(self.cd.out_names.index(n) for n in _RHS_OUTPUTS)
+
+    @cached_property
+    def _jac_index(self) -> int:
+        return self._jac.out_names.index("J")
 
     # --- state helpers --------------------------------------------------------------------
     def split(self, y):

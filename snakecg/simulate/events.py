@@ -9,18 +9,41 @@
 
 At an event the new active set is the solution of the acceleration-level complementarity
 problem (:func:`snakecg.solver.solve_active_set`) over the rows whose status is not fixed by
-the velocities.
+the velocities. With a compiled ``kernel`` (:class:`~snakecg.simulate.compiled.CompiledSegments`)
+the same computation runs in C (``core_settle``), the Python here being its reference and its
+fallback.
 """
 
 from __future__ import annotations
 
+from typing import NamedTuple
+
 import numpy as np
 
+from ..core.segment import EVENT_CODES
 from ..solver import ABSENT, HELD, LOST, SLIDE_NEG, SLIDE_POS, solve_active_set
 from .modes import Mode, transitions
 from .records import SimEvent
 
-__all__ = ["Events"]
+__all__ = ["EventSpec", "EventSpecs", "Events"]
+
+
+class EventSpec(NamedTuple):
+    """A terminal event of a mode: its ``kind`` (what happens when it fires), the constraint
+    ``row`` and the ``quantity`` that crosses zero downwards (the compiled segments' code of
+    it: :data:`snakecg.core.segment.EVENT_CODES`)."""
+
+    kind: str
+    row: int
+    quantity: str
+
+
+class EventSpecs(list):
+    """The :class:`EventSpec` of a mode, with their ``codes`` and ``rows`` as int64 arrays
+    (what the compiled segments read)."""
+
+    codes: np.ndarray
+    rows: np.ndarray
 
 
 class Events:
@@ -30,49 +53,83 @@ class Events:
     position along the link within which the contact counts as touching / on the link.
 
     ``drift_corrected``: the largest ``|A V|`` of a held row projected away at an event.
+    ``kernel``: the compiled segments of the run, or ``None`` (Python only).
     """
 
-    def __init__(self, dyn, torques, gtol: float):
+    def __init__(self, dyn, torques, gtol: float, kernel=None):
         self.dyn = dyn
         self.torques = torques
         self.gtol = gtol
+        self.kernel = kernel
         self.drift_corrected = 0.0
 
+    def mode(self, state, off_link: bool) -> Mode:
+        """The :class:`Mode` of the row states ``state`` (:meth:`Mode.of`: built once)."""
+        return Mode.of(state, self.dyn.bounds, off_link)
+
+    def _point(self, t, y, mode):
+        """``(lam, s)`` at ``(t, y)`` in ``mode``."""
+        tau_fn = self.torques.function()
+        if self.kernel is not None:
+            r = self.kernel.point(y, mode, tau_fn(t, y, mode))
+            if r is not None:
+                self.dyn.nfev += 1
+                return r
+        out = self.dyn.rates(t, y, mode, tau_fn)
+        return out[1], out[3]
+
     # --- events of a mode -------------------------------------------------------------------
-    def functions(self, mode: Mode, tau_fn) -> list:
-        """The terminal event functions of ``mode`` for :func:`scipy.integrate.solve_ivp`,
-        each with ``kind``, ``row`` and ``quantity`` (what it evaluates, for the compiled
-        segments: :data:`snakecg.core.segment.EVENT_CODES`) attributes."""
-        evs = []
-
-        def make(fn, direction, kind, row, quantity):
-            fn.terminal = True
-            fn.direction = direction
-            fn.kind = kind
-            fn.row = row
-            fn.quantity = quantity
-            evs.append(fn)
-
-        rates = self.dyn.rates
-        l_k = self.dyn.l_k
+    def specs(self, mode: Mode) -> EventSpecs:
+        """The terminal events of ``mode`` (all with direction -1): what ends a segment in
+        it, as :class:`EventSpec` ``(kind, row, quantity)`` (kept on the mode)."""
+        if mode.specs is not None:
+            return mode.specs
+        out = EventSpecs()
         if mode.contact_held:
-            make(lambda t, y: rates(t, y, mode, tau_fn)[1][0], -1, "separation", 0,
-                 "lam_contact")
-            make(lambda t, y: rates(t, y, mode, tau_fn)[3], -1, "off_link", 0, "s")
-            make(lambda t, y: l_k - rates(t, y, mode, tau_fn)[3], -1, "off_link", 0, "l_k - s")
+            out += [EventSpec("separation", 0, "lam_contact"), EventSpec("off_link", 0, "s"),
+                    EventSpec("off_link", 0, "l_k - s")]
         elif not mode.off_link:
-            make(lambda t, y: rates(t, y, mode, tau_fn)[2], -1, "gap", 0, "gap")
+            out.append(EventSpec("gap", 0, "gap"))
         bounds = self.dyn.bounds
         for r in range(1, self.dyn.nc):
             st = mode.state[r]
-            b = bounds[r]
-            if st == HELD and np.isfinite(b):
-                make(lambda t, y, r=r, b=b: b - abs(rates(t, y, mode, tau_fn)[1][r]), -1,
-                     "breakaway", r, "bound - |lam|")
+            if st == HELD and np.isfinite(bounds[r]):
+                out.append(EventSpec("breakaway", r, "bound - |lam|"))
             elif st in (SLIDE_POS, SLIDE_NEG):
-                d = -1.0 if st == SLIDE_POS else 1.0  # direction of the sliding velocity
-                make(lambda t, y, r=r, d=d: d * rates(t, y, mode, tau_fn)[4][r], -1,
-                     "slide_stop", r, "sliding velocity")
+                out.append(EventSpec("slide_stop", r, "sliding velocity"))
+        out.codes = np.array([EVENT_CODES[e.quantity] for e in out], dtype=np.int64)
+        out.rows = np.array([e.row for e in out], dtype=np.int64)
+        mode.specs = out
+        return out
+
+    def functions(self, mode: Mode, tau_fn) -> list:
+        """The terminal event functions of ``mode`` (:meth:`specs`) for
+        :func:`scipy.integrate.solve_ivp`, each with the ``kind``, ``row`` and ``quantity``
+        of its spec."""
+        rates = self.dyn.rates
+        l_k = self.dyn.l_k
+        bounds = self.dyn.bounds
+        evs = []
+        for spec in self.specs(mode):
+            q, r = spec.quantity, spec.row
+            if q == "lam_contact":
+                fn = lambda t, y: rates(t, y, mode, tau_fn)[1][0]  # noqa: E731
+            elif q == "s":
+                fn = lambda t, y: rates(t, y, mode, tau_fn)[3]  # noqa: E731
+            elif q == "l_k - s":
+                fn = lambda t, y: l_k - rates(t, y, mode, tau_fn)[3]  # noqa: E731
+            elif q == "gap":
+                fn = lambda t, y: rates(t, y, mode, tau_fn)[2]  # noqa: E731
+            elif q == "bound - |lam|":
+                fn = (lambda t, y, r=r, b=bounds[r]:  # noqa: E731
+                      b - abs(rates(t, y, mode, tau_fn)[1][r]))
+            else:  # the sliding velocity's sign returning to zero
+                d = -1.0 if mode.state[r] == SLIDE_POS else 1.0
+                fn = lambda t, y, r=r, d=d: d * rates(t, y, mode, tau_fn)[4][r]  # noqa: E731
+            fn.terminal = True
+            fn.direction = -1
+            fn.kind, fn.row, fn.quantity = spec
+            evs.append(fn)
         return evs
 
     # --- at an event ------------------------------------------------------------------------
@@ -91,13 +148,13 @@ class Events:
                 contact_candidate = False
                 off_link = True
             elif ev.kind == "gap":
-                s = dyn.rates(t, y, mode, self.torques.function())[3]
+                s = self._point(t, y, mode)[1]
                 if -self.gtol <= s <= dyn.l_k + self.gtol:
                     contact_candidate = True
                 else:
                     forced[0] = LOST
             elif ev.kind == "breakaway":
-                lam = dyn.rates(t, y, mode, self.torques.function())[1]
+                lam = self._point(t, y, mode)[0]
                 forced[ev.row] = SLIDE_POS if lam[ev.row] > 0 else SLIDE_NEG
         stopped = {ev.row for ev in fired if ev.kind == "slide_stop"}
         # sliding wheels that did not stop keep sliding
@@ -122,8 +179,12 @@ class Events:
         nc = dyn.nc
         present, bounds = dyn.present, dyn.bounds
         before = prev.describe() if prev is not None else "start"
-        probe = Mode(np.where(present, HELD, ABSENT), bounds, off_link)
-        tau = np.asarray(self.torques.function()(t, y, prev or probe), dtype=float)
+        probe = prev or self.mode(np.where(present, HELD, ABSENT), off_link)
+        tau = np.asarray(self.torques.function()(t, y, probe), dtype=float)
+        if self.kernel is not None:
+            done = self.kernel.settle(y, prev, forced, contact_candidate, tau)
+            if done is not None:
+                return self._settled(t, done, prev, before, off_link, events, impact_kind)
         Q, G, gap, s, AV = dyn.linear_maps(y, tau)
         V = y[dyn.nx:2 * dyn.nx]
         vtol = 1e-8 * max(1.0, float(np.abs(V).max()))
@@ -179,10 +240,34 @@ class Events:
                 self.drift_corrected = max(self.drift_corrected, drift)
             y = y2
         state = self.decide(y, tau, candidates, forced)
-        mode = Mode(state, bounds, off_link)
+        mode = self.mode(state, off_link)
         for kind, row, data in records:
             events.append(SimEvent(float(t), kind, row, before, mode.describe(), data))
         return y, mode
+
+    def _settled(self, t, st, prev, before, off_link, events, impact_kind):
+        """:meth:`settle`'s records, state and mode from the compiled ``core_settle``'s
+        answer ``st`` (a :class:`~snakecg.core.segment.Settle`)."""
+        k = self.kernel
+        records = []
+        if st.impact:
+            lam = k.s_impact_lam[:st.n_impact]
+            records.append((impact_kind, 0, {
+                "closing_velocity": st.impact_velocity, "impulse": float(lam[0]),
+                "wheel_impulses": lam[1:].tolist(), "energy_loss": -st.impact_de,
+                "kinetic_energy_before": st.impact_ke}))
+        if st.n_projected:
+            if prev is None and st.drift > st.vtol:
+                records.append(("projection", st.drift_row, {
+                    "impulses": k.s_projection_lam[:st.n_projected].tolist(),
+                    "energy_loss": -st.projection_de,
+                    "kinetic_energy_before": st.projection_ke}))
+            elif prev is not None:
+                self.drift_corrected = max(self.drift_corrected, st.drift)
+        mode = self.mode(k.s_state, off_link)
+        for kind, row, data in records:
+            events.append(SimEvent(float(t), kind, row, before, mode.describe(), data))
+        return k.s_y_out.copy(), mode
 
     def decide(self, y, tau, candidates: np.ndarray, forced: dict[int, int]) -> np.ndarray:
         """Row states: the complementarity problem over ``candidates`` at acceleration level,

@@ -11,6 +11,7 @@ import numpy as np
 
 from .._inputs import as_batch, to_float
 from ..errors import InputError, SnakecgError
+from .compiled import placement
 from .torques import torque_law
 
 __all__ = ["METHODS", "MAX_OUTPUT_SAMPLES", "MAX_PERIODS", "MAX_STEPS", "MAX_FRAMES", "RTOL_MIN",
@@ -59,6 +60,9 @@ def check_count(name, duration, step, limit, what):
 
 def single(name, value, size, what):
     """One vector of ``size`` finite numbers (a copy)."""
+    if type(value) is np.ndarray and value.dtype == np.float64 and value.shape == (size,) \
+            and np.isfinite(value).all():
+        return value.copy()  # already what the checks below would give
     try:
         shape = np.shape(value)
     except (TypeError, ValueError):
@@ -95,19 +99,32 @@ class Settings:
     integrator: str = "auto"  # "auto", "compiled" or "scipy" (snakecg.simulate.compiled)
 
 
+def _classes():
+    """:class:`~snakecg.SceneModel` and SciPy's ``OdeSolver`` (imported on first use: the
+    model module imports this package)."""
+    global _CLASSES
+    if _CLASSES is None:
+        from ..model import SceneModel
+
+        try:
+            from scipy.integrate import OdeSolver
+        except ImportError:  # pragma: no cover - scipy is a dependency of the simulation
+            raise SnakecgError("snakecg.simulate needs SciPy (its solve_ivp integrates the "
+                               "dynamics): pip install scipy") from None
+        _CLASSES = SceneModel, OdeSolver
+    return _CLASSES
+
+
+_CLASSES = None
+
+
 def check_arguments(model, q0, tau, duration, v0, *, v_obj0, q_obj0, rho, f_obj,
                     control_period, method, rtol, atol, max_step, fixed_step, stabilization,
                     output_dt, max_events, integrator="auto") -> Settings:
     """The arguments of :func:`~snakecg.simulate.simulate` checked, in order, with the
     defaults filled in (the object's placement from the scene when ``q_obj0`` and ``rho``
     are not given)."""
-    from ..model import SceneModel
-
-    try:
-        from scipy.integrate import OdeSolver
-    except ImportError:  # pragma: no cover - scipy is a dependency of the simulation
-        raise SnakecgError("snakecg.simulate needs SciPy (its solve_ivp integrates the "
-                           "dynamics): pip install scipy") from None
+    SceneModel, OdeSolver = _classes()
     if not isinstance(model, SceneModel):
         raise InputError("simulate needs a model loaded from a snakecg.Scene "
                          "(snakecg.load(scene)), got " + type(model).__name__)
@@ -119,10 +136,11 @@ def check_arguments(model, q0, tau, duration, v0, *, v_obj0, q_obj0, rho, f_obj,
     if (q_obj0 is None) != (rho is None):
         raise InputError("q_obj0 and rho go together: give both or neither (default: the "
                          "scene's placement of the object against the contact link)")
-    if q_obj0 is None:
-        q_obj0, rho, _ = model.place_object(q0)
-    q_obj0 = single("q_obj0", q_obj0, 3, "")
-    rho = single("rho", rho, 2, "")
+    if q_obj0 is None:  # the scene's placement at the checked q0
+        q_obj0, rho = placement(model, q0)
+    else:
+        q_obj0 = single("q_obj0", q_obj0, 3, "")
+        rho = single("rho", rho, 2, "")
     f_obj = np.zeros(3) if f_obj is None else single("f_obj", f_obj, 3, "")
     duration = positive("duration", duration)
     kind, law = torque_law(tau, na)

@@ -21,7 +21,22 @@ class Mode:
     ``lam_fixed``: the forces of sliding wheels, ``+-`` their ``bounds``)."""
 
     __slots__ = ("state", "off_link", "free", "lam_fixed", "free_idx", "slide_idx",
-                 "contact_held", "wheel_names", "ff")
+                 "contact_held", "wheel_names", "ff", "specs", "description")
+
+    _cache: dict = {}  # (state, bounds, off_link) -> Mode, for Mode.of
+
+    @classmethod
+    def of(cls, state: np.ndarray, bounds: np.ndarray, off_link: bool) -> Mode:
+        """The mode ``Mode(state, bounds, off_link)``, built once per distinct mode and
+        shared (its arrays are read-only); a bounded cache."""
+        state = np.asarray(state, dtype=np.int8)
+        key = (state.tobytes(), bounds.tobytes(), bool(off_link))
+        mode = cls._cache.get(key)
+        if mode is None:
+            if len(cls._cache) >= 4096:
+                cls._cache.clear()
+            mode = cls._cache[key] = cls(state, bounds, off_link)
+        return mode
 
     def __init__(self, state: np.ndarray, bounds: np.ndarray, off_link: bool):
         self.state = np.asarray(state, dtype=np.int8).copy()
@@ -37,10 +52,14 @@ class Mode:
         self.contact_held = bool(self.state[0] == HELD)
         self.wheel_names = tuple("none" if s in (ABSENT, LOST) else STATE_NAMES[int(s)]
                                  for s in self.state[1:])
+        for a in (self.state, self.free, self.lam_fixed, self.free_idx, self.slide_idx):
+            a.flags.writeable = False
+        self.specs = None  # its terminal events (snakecg.simulate.events.Events.specs)
+        c = "held" if self.contact_held else ("off link" if self.off_link else "separated")
+        self.description = f"contact {c}; wheels " + " ".join(self.wheel_names)
 
     def describe(self) -> str:
-        c = "held" if self.contact_held else ("off link" if self.off_link else "separated")
-        return f"contact {c}; wheels " + " ".join(self.wheel_names)
+        return self.description
 
 
 def transitions(t, old: Mode, new: Mode, *, impact: bool) -> list[SimEvent]:

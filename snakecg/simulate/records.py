@@ -80,7 +80,9 @@ class Trajectory:
     * energy: ``kinetic_energy`` (N,), ``power_tau``, ``power_friction`` (N,), cumulative
       ``work_tau``, ``work_friction``, ``work_object``, ``impact_loss``
       (N,) and ``energy_residual`` = kinetic energy gained minus all of those;
-    * ``summary``: a JSON-ready dictionary (schema ``snakecg.simulate/1``, docs/simulate.md).
+    * ``summary``: a JSON-ready dictionary (schema ``snakecg.simulate/1``, docs/simulate.md),
+      computed from the arrays above on first access (given as a function of the trajectory,
+      it is called then; a run that never reads it does not pay for it).
     """
 
     t: np.ndarray
@@ -116,6 +118,23 @@ class Trajectory:
     events: list
     summary: dict
     geometry: dict = field(repr=False, default_factory=dict)
+
+    def __post_init__(self):
+        if callable(self.summary):  # computed on first access (__getattr__)
+            self.__dict__["_summarize"] = self.__dict__.pop("summary")
+
+    def __getattr__(self, name):
+        # only reached when ``summary`` is not computed yet
+        summarize = self.__dict__.get("_summarize")
+        if name != "summary" or summarize is None:
+            raise AttributeError(f"{type(self).__name__!r} object has no attribute {name!r}")
+        self.summary = summarize(self)
+        del self.__dict__["_summarize"]
+        return self.summary
+
+    def __getstate__(self):
+        self.summary  # noqa: B018 - computed before a copy or a pickle
+        return self.__dict__
 
     @property
     def n_samples(self) -> int:

@@ -9,17 +9,19 @@ from __future__ import annotations
 
 import math
 import time
+from types import SimpleNamespace
 
 import numpy as np
 
+from ..core.segment import RUN_STOPPED
 from ..errors import InputError, SnakecgError
 from ..solver import ABSENT, HELD, LOST
-from .assembly import assemble
+from .assembly import assemble, assemble_arrays
 from .compiled import CompiledSegments, compiled_reason
 from .dynamics import N_WORK, Dynamics
 from .events import Events
 from .inputs import Settings, check_arguments
-from .modes import Mode
+from .modes import transitions
 from .records import SimEvent, SimulationError, Trajectory
 from .torques import Torques
 
@@ -40,7 +42,7 @@ class Simulator:
         gtol = 1e-9 * max(self.dyn.scene.robot.length)
         self.events = Events(self.dyn, self.torques, gtol)
         # filled in by run()
-        self.ke_initial = math.nan
+        self.ke_initial = math.nan  # set by assemble()
         self.initial_mode = self.final_mode = ""
         self.segments = 0
         self.wall = 0.0
@@ -50,6 +52,7 @@ class Simulator:
             raise InputError(f"integrator='compiled' is not available for this run: {reason};"
                              " use integrator='auto' or 'scipy'")
         self.compiled = CompiledSegments(self.dyn, settings) if reason is None else None
+        self.events.kernel = self.compiled
 
     def _solver_options(self) -> dict:
         cfg = self.settings
@@ -63,21 +66,84 @@ class Simulator:
 
     def _output_times(self) -> np.ndarray:
         T, dt = self.settings.duration, self.settings.output_dt
+        if dt >= T:
+            return np.array([T])
         grid = np.arange(1, int(math.floor(T / dt + 1e-9)) + 1) * dt
         grid = grid[grid < T - 1e-12 * T]
         return np.append(grid, T)
 
-    def run(self) -> Trajectory:
+    def _solve_ivp(self, opts, t, t_end, y, mode, tau_fn, t_eval):
+        """One segment by :func:`scipy.integrate.solve_ivp`: an object with ``status``,
+        ``message``, the output ``t`` (m,) and ``y`` (m, n_y), and ``fired``: ``(event
+        function, t_e, y_e)`` of each terminal event that fired."""
         from scipy.integrate import solve_ivp
 
+        dyn, cfg = self.dyn, self.settings
+        evs = self.events.functions(mode, tau_fn)
+
+        def fun(tt, yy, m=mode, f=tau_fn):
+            return dyn.rates(tt, yy, m, f)[0]
+
+        if cfg.fixed_step is not None:
+            opts["first_step"] = min(cfg.fixed_step, t_end - t)
+        try:
+            sol = solve_ivp(fun, (t, t_end), y, t_eval=t_eval, events=evs or None, **opts)
+        except SnakecgError:
+            raise
+        except (ValueError, np.linalg.LinAlgError, ArithmeticError) as exc:
+            raise SimulationError(f"integration failed at t = {t:.6g} s: {exc}") from exc
+        ys = np.asarray(sol.y).reshape(dyn.ny, -1).T if len(sol.t) else np.zeros((0, dyn.ny))
+        fired = []
+        if sol.status == 1:
+            fired = [(evs[i], float(te[0]), np.asarray(ye[0])) for i, (te, ye) in
+                     enumerate(zip(sol.t_events, sol.y_events)) if len(te)]
+        return SimpleNamespace(status=sol.status, message=sol.message, t=sol.t, y=ys,
+                               fired=fired)
+
+    def _run_compiled(self, y, mode, loss, grid, events, wall0):
+        """The loop of :meth:`run` for a constant torque in C (``core_run``, see
+        :meth:`CompiledSegments.run_all`): its trajectory, or ``None`` when the Python loop
+        must do the run (nothing of the run's state was changed then)."""
+        cfg, handler = self.settings, self.events
+        T = cfg.duration
+        tau = np.asarray(self.torques.function()(0.0, y, mode), dtype=float)
+        R = self.compiled.run_all(y, mode, loss, tau, grid, T, handler.gtol, cfg.max_events)
+        if R is None:
+            return None
+        a = R.arrays
+        nc = self.dyn.nc
+        modes = [handler.mode(m[:nc], bool(m[nc])) for m in a.modes]
+        for ev in a.events:  # Events.handle's records: the transitions, then the impact
+            t_e, before, after = float(ev[0]), modes[int(ev[3])], modes[int(ev[4])]
+            events.extend(transitions(t_e, before, after, impact=bool(ev[5])))
+            if ev[5]:
+                lam = ev[11:11 + int(ev[10])]
+                events.append(SimEvent(t_e, "impact", 0, before.describe(), after.describe(), {
+                    "closing_velocity": float(ev[6]), "impulse": float(lam[0]),
+                    "wheel_impulses": lam[1:].tolist(), "energy_loss": -float(ev[8]),
+                    "kinetic_energy_before": float(ev[7])}))
+            if ev[9] >= 0:
+                handler.drift_corrected = max(handler.drift_corrected, float(ev[9]))
+        status = "completed"
+        if R.status == RUN_STOPPED:
+            status = (f"stopped at t = {R.t:.6g} s after {R.n_events} events"
+                      + (" (no progress between events)" if R.stuck > 20 else ""))
+        self.segment_cpu += R.segment_cpu
+        self.segments = R.segments
+        self.final_mode = modes[int(a.mode[-1])].describe()
+        self.wall = time.perf_counter() - wall0
+        return assemble_arrays(self, a.t, a.y, a.loss, a.samples, tau, a.mode, modes, events,
+                               status)
+
+    def run(self) -> Trajectory:
         cfg, dyn, torques, handler = self.settings, self.dyn, self.torques, self.events
         wall0 = time.perf_counter()
         T = cfg.duration
         y = np.concatenate([cfg.q0, cfg.q_obj0, cfg.v0, cfg.v_obj0, np.zeros(N_WORK)])
-        self.ke_initial = dyn.kinetic_energy(y)
         events: list[SimEvent] = []
         # initial mode: the contact is a candidate when the object touches the link face
-        Q, G, gap, s, AV = dyn.linear_maps(y, np.zeros(dyn.na))
+        geo = self.compiled.gap_and_s(y) if self.compiled is not None else None
+        gap, s = geo if geo is not None else dyn.linear_maps(y, np.zeros(dyn.na))[2:4]
         gtol = handler.gtol
         on_link = -gtol <= s <= dyn.l_k + gtol
         if gap < -gtol and on_link:
@@ -88,18 +154,23 @@ class Simulator:
             st = np.where(dyn.present, HELD, ABSENT)
             if not touching:
                 st[0] = LOST
-            torques.sample(0.0, y, Mode(st, dyn.bounds, not on_link))
+            torques.sample(0.0, y, handler.mode(st, not on_link))
         impact_loss = 0.0
         y, mode = handler.settle(0.0, y, None, {}, contact_candidate=touching,
                                  off_link=not on_link and abs(gap) <= gtol,
                                  events=events, impact_kind="impact")
         for e in events:
             impact_loss += e.data.get("energy_loss", 0.0)
-        samples = []  # (t, y, mode, tau_fn, impact_loss)
+        blocks = []  # samples in blocks (t (k,), y (k, n_y), mode, tau_fn, impact_loss)
         grid = self._output_times()
         t = 0.0
         self.initial_mode = mode.describe()
-        samples.append((t, y.copy(), mode, torques.function(), impact_loss))
+        if self.compiled is not None and cfg.kind == "constant":
+            # the whole loop in one C call (the Python loop below when it hands it back)
+            done = self._run_compiled(y, mode, impact_loss, grid, events, wall0)
+            if done is not None:
+                return done
+        blocks.append((np.array([t]), y[None, :].copy(), mode, torques.function(), impact_loss))
         status = "completed"
         n_events = 0
         segments = 0
@@ -111,58 +182,48 @@ class Simulator:
             if t_end - t <= 1e-12 * T:
                 t_end = T if next_control >= T else t_end
             tau_fn = torques.function()
-            evs = handler.functions(mode, tau_fn)
-            t_eval = grid[(grid > t) & (grid < t_end)]
-            t_eval = np.append(t_eval, t_end)
-
-            def fun(tt, yy, m=mode, f=tau_fn):
-                return dyn.rates(tt, yy, m, f)[0]
-
-            if cfg.fixed_step is not None:
-                opts["first_step"] = min(cfg.fixed_step, t_end - t)
-            sol = None
+            # output times in (t, t_end), then t_end
+            t_eval = np.append(grid[np.searchsorted(grid, t, "right"):
+                                    np.searchsorted(grid, t_end, "left")], t_end)
             cpu0 = time.process_time()
+            sol = None
             if self.compiled is not None:
-                sol = self.compiled.run(t, t_end, y, mode, tau_fn(t, y, mode), evs, t_eval)
-            try:
-                if sol is None:
-                    sol = solve_ivp(fun, (t, t_end), y, t_eval=t_eval, events=evs or None,
-                                    **opts)
-            except SnakecgError:
-                raise
-            except (ValueError, np.linalg.LinAlgError, ArithmeticError) as exc:
-                raise SimulationError(f"integration failed at t = {t:.6g} s: {exc}") from exc
+                sol = self.compiled.run(t, t_end, y, mode, tau_fn(t, y, mode),
+                                        handler.specs(mode), t_eval)
+            if sol is None:
+                sol = self._solve_ivp(opts, t, t_end, y, mode, tau_fn, t_eval)
             self.segment_cpu += time.process_time() - cpu0
             segments += 1
             if sol.status < 0:
                 raise SimulationError(f"integration failed at t = {t:.6g} s: {sol.message}")
-            ys = np.asarray(sol.y).reshape(dyn.ny, -1) if len(sol.t) else np.zeros((dyn.ny, 0))
-            for tt, yy in zip(sol.t, ys.T):
-                if tt > t:
-                    samples.append((float(tt), yy.copy(), mode, tau_fn, impact_loss))
+            keep = np.asarray(sol.t) > t
+            if keep.any():
+                blocks.append((np.asarray(sol.t, dtype=float)[keep], sol.y[keep], mode, tau_fn,
+                               impact_loss))
             if sol.status == 1:
-                fired = [(i, float(te[0]), np.asarray(ye[0])) for i, (te, ye) in
-                         enumerate(zip(sol.t_events, sol.y_events)) if len(te)]
+                fired = sol.fired
                 t_e = min(f[1] for f in fired)
                 fired = [f for f in fired if f[1] <= t_e + 1e-12 * max(1.0, T)]
                 y_e = fired[0][2].copy()
                 stuck = stuck + 1 if t_e - t <= 1e-12 * max(1.0, T) else 0
-                if samples[-1][0] < t_e:
-                    samples.append((t_e, y_e.copy(), mode, tau_fn, impact_loss))
+                if blocks[-1][0][-1] < t_e:
+                    blocks.append((np.array([t_e]), y_e[None, :].copy(), mode, tau_fn,
+                                   impact_loss))
                 n_before = len(events)
-                y, mode = handler.handle(t_e, y_e, mode, [evs[i] for i, _, _ in fired], events)
+                y, mode = handler.handle(t_e, y_e, mode, [ev for ev, _, _ in fired], events)
                 for e in events[n_before:]:
                     impact_loss += e.data.get("energy_loss", 0.0)
                 n_events += 1
                 t = t_e
-                samples.append((t, y.copy(), mode, torques.function(), impact_loss))
+                blocks.append((np.array([t]), y[None, :].copy(), mode, torques.function(),
+                               impact_loss))
                 if n_events >= cfg.max_events or stuck > 20:
                     status = (f"stopped at t = {t:.6g} s after {n_events} events"
                               + (" (no progress between events)" if stuck > 20 else ""))
                     break
             else:
                 t = t_end
-                y = sol.y[:, -1].copy()
+                y = sol.y[-1].copy()
                 if t >= next_control * (1 - 1e-13):
                     next_control += cfg.control_period
                     if t < T * (1 - 1e-13):
@@ -173,12 +234,12 @@ class Simulator:
                         for e in events[n_before:]:
                             impact_loss += e.data.get("energy_loss", 0.0)
                         if len(events) > n_before:
-                            samples.append((t, y.copy(), mode, torques.function(),
-                                            impact_loss))
+                            blocks.append((np.array([t]), y[None, :].copy(), mode,
+                                           torques.function(), impact_loss))
         self.wall = time.perf_counter() - wall0
         self.segments = segments
         self.final_mode = mode.describe()
-        return assemble(self, samples, events, status)
+        return assemble(self, blocks, events, status)
 
 
 def simulate(model, q0, tau, duration, v0=None, *, v_obj0=None, q_obj0=None, rho=None,

@@ -1,0 +1,260 @@
+/* snakecg's runtime core, part 4: a whole simulation run with a constant torque, in C.
+ *
+ * This file is part of the runtime (not generated), compiled once per model into the model's
+ * shared library like forward.c, integrate.c and settle.c.
+ *
+ * It runs the loop of snakecg/simulate/simulator.py (Simulator.run) for a torque that is
+ * constant over the whole run, after the start's settle: segment after segment in the mode
+ * (core_integrate_segment, integrate.c), the mode's terminal events
+ * (snakecg/simulate/events.py, Events.specs), at an event what Events.handle does (the rows
+ * that the event fixes: a separated or lost contact, a wheel breaking away against its
+ * force, sliding wheels that keep sliding; the contact candidate of a closing gap on the link)
+ * and the settle (core_settle, settle.c). It records the samples (the output times, both
+ * sides of every event) with their mode, the modes, and the events with what Python needs to
+ * describe them. Anything the Python loop would do differently (a segment or a settle handed
+ * back to Python, a failed or too small step, more samples or modes than room) returns
+ * RUN_PYTHON: the caller then runs the whole loop in Python from the start.
+ */
+#include <math.h>
+#include <string.h>
+#include <time.h>
+
+#include "snakecg_layout.h"
+#define SC_TYPES_ONLY
+#include "common.h"
+
+#define SNAKECG_CAT_(a, b) a##b
+#define SNAKECG_CAT(a, b) SNAKECG_CAT_(a, b)
+#define SNAKECG_EXPORT(name) SNAKECG_CAT(SNAKECG_PREFIX, name)
+
+#define NS SNAKECG_NS
+#define NC SNAKECG_NC
+#define NX (NS + 3)
+#define NY (2 * NX + 3)
+#define MODE_WIDTH (NC + 1)  /* a mode: its row states, then off_link */
+#define EVENT_WIDTH (11 + NC) /* an event: see sc_run.events */
+
+int SNAKECG_EXPORT(core_integrate_segment)(sc_segment *sg);
+int SNAKECG_EXPORT(core_mode_samples)(sc_segment *sg, sc_int n, const double *Y, double *out);
+int SNAKECG_EXPORT(core_settle)(sc_settle *st);
+
+enum { RUN_COMPLETED = 0, RUN_STOPPED = 1, RUN_PYTHON = 2 };
+
+typedef struct {
+  sc_segment *sg;     /* the run's segment (tau, constants, its y0/state/ev_* arrays) */
+  sc_settle *st;      /* the run's settle (its arrays) */
+  double T, gtol;     /* duration; gap and link tolerance of the contact (m) */
+  const double *grid; /* the output times (increasing, the last is T) */
+  sc_int n_grid, max_events;
+  double t;           /* in: the start (after its settle) */
+  const double *y;    /* in: NY, the state there */
+  sc_int off_link;    /* in: the start mode's flag (its row states in sg->state) */
+  double loss;        /* in: the energy removed at the start; out: at the end */
+  /* outputs */
+  sc_int cap;         /* rows of t_out, y_out, mode_out, loss_out */
+  double *t_out, *y_out, *mode_out, *loss_out;
+  sc_int n_out;
+  sc_int cap_modes;
+  double *modes;      /* cap_modes x MODE_WIDTH */
+  sc_int n_modes;
+  sc_int cap_events;
+  double *events;     /* cap_events x EVENT_WIDTH: t, the event's kind (EV_*) and row, the
+                         modes before and after, impact (0/1), its closing velocity, the
+                         kinetic energy before it and its change, the drift projected away
+                         (-1: none), the impulses' count, then the impulses (NC) */
+  sc_int n_events;
+  sc_int stuck;       /* events in a row without progress in time (at a stop) */
+  double *samples;    /* cap x (NY + 2 NC + 6): core_mode_samples of every sample in its mode */
+  sc_int segments, nfev, nsteps;
+  double segment_cpu; /* CPU seconds inside the segment integrations */
+  sc_int status;      /* RUN_* */
+} sc_run;
+
+static sc_int add_mode(sc_run *R, const double *state, sc_int off_link) {
+  double *m;
+  if (R->n_modes >= R->cap_modes) return -1;
+  m = R->modes + R->n_modes * MODE_WIDTH;
+  memcpy(m, state, sizeof(double) * NC);
+  m[NC] = (double)off_link;
+  return R->n_modes++;
+}
+
+static int add_sample(sc_run *R, double t, const double *y, sc_int mode) {
+  if (R->n_out >= R->cap) return 1;
+  R->t_out[R->n_out] = t;
+  memcpy(R->y_out + R->n_out * NY, y, sizeof(double) * NY);
+  R->mode_out[R->n_out] = (double)mode;
+  R->loss_out[R->n_out] = R->loss;
+  R->n_out++;
+  return 0;
+}
+
+/* Events.specs: the terminal events of the mode (state, off_link) into sg; their count. */
+static sc_int specs(sc_segment *sg, const double *state, sc_int off_link) {
+  const double *bounds = sg->scene + SCENE_bounds;
+  sc_int *kind = (sc_int *)sg->ev_kind, *row = (sc_int *)sg->ev_row, n = 0;
+  int r;
+  if (state[0] == HELD) {
+    kind[n] = EV_SEPARATION, row[n++] = 0;
+    kind[n] = EV_S_LOW, row[n++] = 0;
+    kind[n] = EV_S_HIGH, row[n++] = 0;
+  } else if (!off_link) {
+    kind[n] = EV_GAP, row[n++] = 0;
+  }
+  for (r = 1; r < NC; ++r) {
+    if (state[r] == HELD && isfinite(bounds[r])) kind[n] = EV_BREAKAWAY, row[n++] = r;
+    else if (state[r] == SLIDE_POS || state[r] == SLIDE_NEG)
+      kind[n] = EV_SLIDE_STOP, row[n++] = r;
+  }
+  return n;
+}
+
+/* Events.handle of the event `e` of the segment at (t_e, y_e), then the settle: the new
+ * state in st->y_out, the new row states in st->state; *off_link updated. 0, or 1. */
+static int handle(sc_run *R, sc_int e, const double *y_e, sc_int *off_link) {
+  sc_segment *sg = R->sg;
+  sc_settle *st = R->st;
+  const sc_int kind = sg->ev_kind[e], row = sg->ev_row[e];
+  double *forced = (double *)st->forced, point[NY + 2 * NC + 6];
+  int r, candidate = sg->state[0] == HELD;
+  sc_int stopped = -1;
+  for (r = 0; r < NC; ++r) forced[r] = -1.0;
+  if (kind == EV_GAP || kind == EV_BREAKAWAY) { /* lam and s there, in the mode */
+    R->nfev++;
+    if (SNAKECG_EXPORT(core_mode_samples)(sg, 1, y_e, point) != 0) return 1;
+    if (point[NY + 2 * NC + 5] != 0.0) return 1;
+  }
+  if (kind == EV_SEPARATION) {
+    forced[0] = LOST;
+    candidate = 0;
+  } else if (kind == EV_S_LOW || kind == EV_S_HIGH) {
+    forced[0] = LOST;
+    candidate = 0;
+    *off_link = 1;
+  } else if (kind == EV_GAP) {
+    const double s = point[NY + 2 * NC + 1];
+    if (-R->gtol <= s && s <= sg->l_k + R->gtol) candidate = 1;
+    else forced[0] = LOST;
+  } else if (kind == EV_BREAKAWAY) {
+    forced[row] = point[NY + row] > 0 ? SLIDE_POS : SLIDE_NEG;
+  } else {
+    stopped = row;
+  }
+  for (r = 0; r < NC; ++r) /* sliding wheels that did not stop keep sliding */
+    if ((sg->state[r] == SLIDE_POS || sg->state[r] == SLIDE_NEG) && forced[r] < 0 &&
+        r != stopped)
+      forced[r] = sg->state[r];
+  memcpy((double *)st->y, y_e, sizeof(double) * NY);
+  st->prev = sg->state;
+  st->contact_candidate = candidate;
+  return SNAKECG_EXPORT(core_settle)(st) != SETTLE_DONE;
+}
+
+static int run(sc_run *R) {
+  sc_segment *sg = R->sg;
+  sc_settle *st = R->st;
+  const double T = R->T, tiny = 1e-12 * (T > 1.0 ? T : 1.0);
+  double t = R->t, y[NY], *state = (double *)sg->state;
+  sc_int off_link = R->off_link, mode, stuck = 0, i0 = 0, k;
+  int status;
+  clock_t c0;
+  memcpy(y, R->y, sizeof(y));
+  if ((mode = add_mode(R, state, off_link)) < 0 || add_sample(R, t, y, mode)) return RUN_PYTHON;
+  while (t < T * (1 - 1e-13)) {
+    /* output times after t: the grid's (its last is T, where the segment ends) */
+    while (i0 < R->n_grid && !(R->grid[i0] > t)) ++i0;
+    if (i0 >= R->n_grid || R->n_out + (R->n_grid - i0) + 2 > R->cap) return RUN_PYTHON;
+    sg->t_eval = R->grid + i0;
+    sg->n_eval = R->n_grid - i0;
+    sg->y_eval = R->y_out + R->n_out * NY;
+    sg->n_ev = specs(sg, state, off_link);
+    memcpy((double *)sg->y0, y, sizeof(y));
+    sg->t0 = t;
+    sg->t1 = T;
+    c0 = clock();
+    status = SNAKECG_EXPORT(core_integrate_segment)(sg);
+    R->segment_cpu += (double)(clock() - c0) / CLOCKS_PER_SEC;
+    R->segments++;
+    R->nfev += sg->nfev;
+    R->nsteps += sg->nsteps;
+    if (status != SEG_END && status != SEG_EVENT) return RUN_PYTHON;
+    for (k = 0; k < sg->n_out; ++k) { /* the outputs, written in place */
+      R->t_out[R->n_out] = sg->t_eval[k];
+      R->mode_out[R->n_out] = (double)mode;
+      R->loss_out[R->n_out] = R->loss;
+      R->n_out++;
+    }
+    if (status == SEG_END) {
+      t = T;
+      memcpy(y, R->y_out + (R->n_out - 1) * NY, sizeof(y));
+      break;
+    }
+    { /* an event */
+      const double t_e = sg->t_end;
+      const sc_int e = sg->event, before = mode;
+      double *ev;
+      stuck = t_e - t <= tiny ? stuck + 1 : 0;
+      if (R->t_out[R->n_out - 1] < t_e && add_sample(R, t_e, sg->y_end, mode)) return RUN_PYTHON;
+      if (R->n_events >= R->cap_events) return RUN_PYTHON;
+      if (handle(R, e, sg->y_end, &off_link)) return RUN_PYTHON;
+      memcpy(y, st->y_out, sizeof(y));
+      memcpy(state, st->state, sizeof(double) * NC);
+      if ((mode = add_mode(R, state, off_link)) < 0) return RUN_PYTHON;
+      ev = R->events + R->n_events * EVENT_WIDTH;
+      ev[0] = t_e;
+      ev[1] = (double)sg->ev_kind[e];
+      ev[2] = (double)sg->ev_row[e];
+      ev[3] = (double)before;
+      ev[4] = (double)mode;
+      ev[5] = (double)st->impact;
+      ev[6] = st->impact_velocity;
+      ev[7] = st->impact_ke;
+      ev[8] = st->impact_de;
+      ev[9] = st->n_projected ? st->drift : -1.0;
+      ev[10] = (double)(st->impact ? st->n_impact : 0);
+      for (k = 0; k < NC; ++k) ev[11 + k] = k < ev[10] ? st->impact_lam[k] : 0.0;
+      R->n_events++;
+      if (st->impact) R->loss += -st->impact_de;
+      t = t_e;
+      if (add_sample(R, t, y, mode)) return RUN_PYTHON;
+      if (R->n_events >= R->max_events || stuck > 20) {
+        R->t = t;
+        R->stuck = stuck;
+        return RUN_STOPPED;
+      }
+    }
+  }
+  R->t = t;
+  return RUN_COMPLETED;
+}
+
+/* The trajectory's quantities at every sample, in its mode (core_mode_samples on each run of
+ * samples that share their mode): 0, or 1. */
+static int samples(sc_run *R) {
+  const int width = NY + 2 * NC + 6;
+  double *state = (double *)R->sg->state;
+  sc_int start = 0, end;
+  while (start < R->n_out) {
+    const sc_int mode = (sc_int)R->mode_out[start];
+    for (end = start + 1; end < R->n_out && (sc_int)R->mode_out[end] == mode; ++end) {
+    }
+    memcpy(state, R->modes + mode * MODE_WIDTH, sizeof(double) * NC);
+    if (SNAKECG_EXPORT(core_mode_samples)(R->sg, end - start, R->y_out + start * NY,
+                                          R->samples + start * width))
+      return 1;
+    start = end;
+  }
+  return 0;
+}
+
+/* Run the loop (see sc_run), then evaluate the samples; returns and stores the status
+ * (RUN_*). */
+int SNAKECG_EXPORT(core_run)(sc_run *R) {
+  R->n_out = R->n_modes = R->n_events = 0;
+  R->segments = R->nfev = R->nsteps = 0;
+  R->segment_cpu = 0.0;
+  R->stuck = 0;
+  R->status = run(R);
+  if (R->status != RUN_PYTHON && samples(R)) R->status = RUN_PYTHON;
+  return (int)R->status;
+}
