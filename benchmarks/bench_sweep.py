@@ -90,8 +90,9 @@ class local_client:
         self.client, self.close = connect(workers=workers)
 
 
-def scaling(tmp: Path, quick: bool) -> dict:
+def scaling(tmp: Path, quick: bool, chunk: int | None = None) -> dict:
     joints, n = (3, 2048) if quick else (4, 16384)  # >= 30 s on one idle worker
+    chunk = chunk or DEFAULT_CHUNK["wheels"]
     sc = scene(joints, "wheels")
     out = {}
     for workers in (1, 2):
@@ -102,10 +103,11 @@ def scaling(tmp: Path, quick: bool) -> dict:
             timed_sweep(sc, tmp / f"warm{workers}.zarr", samples=4 * workers, seed=0, chunk=1,
                         client=client)
             la = load_avg()
-            t = timed_sweep(sc, tmp / f"scale{workers}.zarr", samples=n, seed=1, chunk=128,
+            t = timed_sweep(sc, tmp / f"scale{workers}.zarr", samples=n, seed=1, chunk=chunk,
                             client=client)
             out[workers] = {"seconds": t, "load_before": la, "load_after": load_avg()}
-            print(f"  {workers} worker(s): {n} configurations ({joints} joints, wheels) in "
+            print(f"  {workers} worker(s): {n} configurations ({joints} joints, wheels, chunks "
+                  f"of {chunk}) in "
                   f"{t:.1f} s, load {la} -> {load_avg()}", flush=True)
         finally:
             lc.close()
@@ -212,6 +214,8 @@ def main() -> None:
     ap.add_argument("--budget", type=float, default=300.0,
                     help="seconds for the bounded-wheels 28^4 sweep (default 300)")
     ap.add_argument("--json", metavar="FILE", help="also write the figures as JSON")
+    ap.add_argument("--chunk", type=int, default=None,
+                    help="scaling: configurations per chunk (default: the sweep's default)")
     args = ap.parse_args()
     print(f"machine: {platform.machine()}, {os.cpu_count()} cores, Python "
           f"{platform.python_version()}, load average {load_avg()}")
@@ -223,7 +227,7 @@ def main() -> None:
             if part == "cost":
                 results[part] = cost(args.quick)
             elif part == "scaling":
-                results[part] = scaling(tmp, args.quick)
+                results[part] = scaling(tmp, args.quick, args.chunk)
             elif part == "overhead":
                 results[part] = overhead(tmp, args.quick)
             elif part == "grid4":

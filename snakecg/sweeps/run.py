@@ -217,6 +217,7 @@ def _compute(client, scene, plan, root, todo, reused, mode, clearance) -> None:
     configurations_done = sum(plan.chunk_range(i)[1] - plan.chunk_range(i)[0]
                               for i in range(plan.n_chunks) if i not in pending)
     every = max(1, plan.n_chunks // 50)
+    opened = _store.handles(root)
     try:
         for fut in as_completed(futures):
             i = index[fut.key]
@@ -231,7 +232,7 @@ def _compute(client, scene, plan, root, todo, reused, mode, clearance) -> None:
                 raise SnakecgError(f"chunk {i} failed on the cluster: {type(exc).__name__}: "
                                    f"{' '.join(str(exc).split())[:300]}") from None
             start, stop = plan.chunk_range(i)
-            _store.write_chunk(root, i, start, stop, arrays)
+            _store.write_chunk(root, i, start, stop, arrays, opened)
             fut.release()
             completed += 1
             configurations_done += stop - start

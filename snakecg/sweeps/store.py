@@ -40,7 +40,7 @@ import numpy as np
 from ..analysis import METRICS
 from ..errors import InputError
 
-__all__ = ["array_names", "create", "open_existing", "check_target", "digest", "write_chunk",
+__all__ = ["array_names", "create", "open_existing", "check_target", "digest", "handles", "write_chunk",
            "completed", "FORMAT"]
 
 #: Layout version of the store (attribute ``snakecg_sweep.format``).
@@ -149,12 +149,20 @@ def digest(arrays: dict[str, np.ndarray]) -> int:
     return int.from_bytes(h.digest(), "little") | 1
 
 
-def write_chunk(root, index: int, start: int, stop: int, arrays: dict[str, np.ndarray]) -> int:
-    """Write a chunk's data, then its digest (the record that the chunk is complete)."""
+def handles(root) -> dict:
+    """The store's arrays opened once (opening one reads its metadata from the store)."""
+    return {name: root[name] for name in (*array_names(), "chunk_digest")}
+
+
+def write_chunk(root, index: int, start: int, stop: int, arrays: dict[str, np.ndarray],
+                opened: dict | None = None) -> int:
+    """Write a chunk's data, then its digest (the record that the chunk is complete).
+    ``opened``: the arrays of :func:`handles`, else each is opened here."""
+    opened = opened or handles(root)
     for name in array_names():
-        root[name][start:stop] = arrays[name]
+        opened[name][start:stop] = arrays[name]
     d = digest(arrays)
-    root["chunk_digest"][index] = np.uint64(d)
+    opened["chunk_digest"][index] = np.uint64(d)
     return d
 
 
