@@ -7,7 +7,8 @@
   thread), per scenario and joint count 2..6 (the bounded-wheels scenario on a small batch),
   and from it core-hours of the 28^4, 28^5 and 28^6 grids;
 * scaling: the same bounded-wheels sweep on a local cluster of 1 worker and of 2 workers,
-  side by side (4 joints, 16,384 seeded samples: about 40 s on one idle worker);
+  alternated `--repeat` times (4 joints, 24,576 seeded samples: about 40 s on one idle
+  worker), the ratio of the medians;
 * overhead: at the default chunk size, a warm 1-worker cluster's `sweep` against the same
   chunks evaluated in this process one after the other (scheduling, serialization, Zarr
   writes and the digests are the difference);
@@ -90,29 +91,34 @@ class local_client:
         self.client, self.close = connect(workers=workers)
 
 
-def scaling(tmp: Path, quick: bool, chunk: int | None = None) -> dict:
-    joints, n = (3, 2048) if quick else (4, 16384)  # >= 30 s on one idle worker
+def scaling(tmp: Path, quick: bool, chunk: int | None = None, repeat: int = 1) -> dict:
+    """1 worker against 2, ``repeat`` rounds alternating (the VM's speed drifts between runs:
+    the medians of alternated runs compare like with like)."""
+    joints, n = (3, 2048) if quick else (4, 24576)  # >= 30 s on one idle worker
     chunk = chunk or DEFAULT_CHUNK["wheels"]
     sc = scene(joints, "wheels")
-    out = {}
-    for workers in (1, 2):
-        lc = local_client(workers)
-        client = lc.client
-        try:
-            # warm: every worker loads the model before the clock starts
-            timed_sweep(sc, tmp / f"warm{workers}.zarr", samples=4 * workers, seed=0, chunk=1,
-                        client=client)
-            la = load_avg()
-            t = timed_sweep(sc, tmp / f"scale{workers}.zarr", samples=n, seed=1, chunk=chunk,
-                            client=client)
-            out[workers] = {"seconds": t, "load_before": la, "load_after": load_avg()}
-            print(f"  {workers} worker(s): {n} configurations ({joints} joints, wheels, chunks "
-                  f"of {chunk}) in "
-                  f"{t:.1f} s, load {la} -> {load_avg()}", flush=True)
-        finally:
-            lc.close()
-    out["speedup"] = out[1]["seconds"] / out[2]["seconds"]
-    print(f"  speed-up 2 workers / 1: {out['speedup']:.2f}x")
+    out = {1: [], 2: []}
+    for r in range(repeat):
+        for workers in (1, 2):
+            lc = local_client(workers)
+            client = lc.client
+            try:
+                # warm: every worker loads the model before the clock starts
+                timed_sweep(sc, tmp / f"warm{workers}-{r}.zarr", samples=4 * workers, seed=0,
+                            chunk=1, client=client)
+                la = load_avg()
+                t = timed_sweep(sc, tmp / f"scale{workers}-{r}.zarr", samples=n, seed=1,
+                                chunk=chunk, client=client)
+                out[workers].append({"seconds": t, "load_before": la,
+                                     "load_after": load_avg()})
+                print(f"  {workers} worker(s): {n} configurations ({joints} joints, wheels, "
+                      f"chunks of {chunk}) in {t:.1f} s, load {la} -> {load_avg()}",
+                      flush=True)
+            finally:
+                lc.close()
+    med = {w: float(np.median([x["seconds"] for x in out[w]])) for w in (1, 2)}
+    out["speedup"] = med[1] / med[2]
+    print(f"  speed-up 2 workers / 1 (medians of {repeat}): {out['speedup']:.2f}x")
     return out
 
 
@@ -216,6 +222,8 @@ def main() -> None:
     ap.add_argument("--json", metavar="FILE", help="also write the figures as JSON")
     ap.add_argument("--chunk", type=int, default=None,
                     help="scaling: configurations per chunk (default: the sweep's default)")
+    ap.add_argument("--repeat", type=int, default=3,
+                    help="scaling: alternated rounds of 1 and 2 workers (default 3)")
     args = ap.parse_args()
     print(f"machine: {platform.machine()}, {os.cpu_count()} cores, Python "
           f"{platform.python_version()}, load average {load_avg()}")
@@ -227,7 +235,7 @@ def main() -> None:
             if part == "cost":
                 results[part] = cost(args.quick)
             elif part == "scaling":
-                results[part] = scaling(tmp, args.quick, args.chunk)
+                results[part] = scaling(tmp, args.quick, args.chunk, args.repeat)
             elif part == "overhead":
                 results[part] = overhead(tmp, args.quick)
             elif part == "grid4":

@@ -102,13 +102,16 @@ def connect(*, client=None, scheduler=None, workers=None):
 
 
 #: Dask settings of the local clusters started here: no statistical profiler in the workers
-#: (it samples the computing thread every 10 ms and takes the GIL from it) and the system and
-#: memory monitors at a slower pace. With Dask's defaults an idle 2-worker cluster kept about
-#: 0.18 of a core busy (scheduler and client 0.07, each worker 0.05), measured, which the
-#: workers' computation then lacks on a machine with as many cores as workers.
+#: (it samples the computing thread every 10 ms and takes the GIL from it), and the system and
+#: memory monitors, the event loops' tick (a check for blocked loops, every 20 ms by default)
+#: and work stealing at a slower pace. With Dask's defaults an idle 2-worker cluster kept about
+#: 0.18 of a core busy (scheduler and client 0.07, each worker 0.05), with these 0.02,
+#: measured: time the workers' computation lacks on a machine with as many cores as workers.
 LOCAL_CONFIG = {"distributed.worker.profile.enabled": False,
                 "distributed.admin.system-monitor.interval": "5s",
-                "distributed.worker.memory.monitor-interval": "1s"}
+                "distributed.worker.memory.monitor-interval": "1s",
+                "distributed.admin.tick.interval": "1s",
+                "distributed.scheduler.work-stealing-interval": "1s"}
 
 
 def _local_cluster(distributed, n: int):
