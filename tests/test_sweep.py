@@ -197,10 +197,14 @@ def test_killed_worker_the_sweep_completes_identically(client, tmp_path, uninter
     before = client.run(os.getpid)
     box = {}
 
+    # chunks of 2 configurations: 392 tasks, so that the sweep lasts long enough to lose a
+    # worker midway (a chunk of 16 takes a few milliseconds); the data do not depend on it
+    grid = dict(WHEELS_GRID, chunk=2)
+
     def run():
         try:
             box["res"] = snakecg.sweep(scene("wheels"), store=store, client=client,
-                                       progress=False, **WHEELS_GRID)
+                                       progress=False, **grid)
         except BaseException as exc:  # noqa: BLE001 - reported below
             box["err"] = exc
 
@@ -220,7 +224,7 @@ def test_killed_worker_the_sweep_completes_identically(client, tmp_path, uninter
     t.join(timeout=300)
     assert victim is not None, "the sweep ended before a worker could be killed"
     assert "err" not in box, box.get("err")
-    assert box["res"].computed_chunks == 49
+    assert box["res"].computed_chunks == 392
     assert_identical(read(store), uninterrupted)
     after = client.run(os.getpid)
     assert before[victim] not in after.values()  # the worker was replaced by its nanny
