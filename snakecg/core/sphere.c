@@ -170,18 +170,10 @@ static double sk_root(int which, int sign, int J, const double *P, const double 
   return x;
 }
 
-/* y = -sum_i gv_i / (e_i - mu) V_i, scaled to |y| = r */
-static void sk_point(int k, const double *e, const double *gv, const double *V, double mu,
-                     double tiny, double r, double *y) {
-  int i, l;
+/* y scaled to |y| = r (r e_0 where y = 0) */
+static void sk_to_sphere(int k, double *y, double r) {
   double ny = 0.0;
-  for (l = 0; l < k; ++l) y[l] = 0.0;
-  for (i = 0; i < k; ++i) {
-    double den = e[i] - mu, a;
-    if (fabs(den) < tiny) den = tiny;
-    a = -gv[i] / den;
-    for (l = 0; l < k; ++l) y[l] += a * V[l * k + i];
-  }
+  int l;
   for (l = 0; l < k; ++l) ny += y[l] * y[l];
   ny = sqrt(ny);
   if (ny > 0) {
@@ -190,6 +182,20 @@ static void sk_point(int k, const double *e, const double *gv, const double *V, 
     for (l = 0; l < k; ++l) y[l] = 0.0;
     y[0] = r;
   }
+}
+
+/* y = -sum_i gv_i / (e_i - mu) V_i, scaled to |y| = r */
+static void sk_point(int k, const double *e, const double *gv, const double *V, double mu,
+                     double tiny, double r, double *y) {
+  int i, l;
+  for (l = 0; l < k; ++l) y[l] = 0.0;
+  for (i = 0; i < k; ++i) {
+    double den = e[i] - mu, a;
+    if (fabs(den) < tiny) den = tiny;
+    a = -gv[i] / den;
+    for (l = 0; l < k; ++l) y[l] += a * V[l * k + i];
+  }
+  sk_to_sphere(k, y, r);
 }
 
 /* The stationary points y (n x k, returned count) of y^T Ar y + 2 gr^T y on |y| = r, with
@@ -278,18 +284,9 @@ static int sk_candidates(int k, const double *e, const double *V, const double *
     for (l = 0; l < k; ++l) s2 += yp[l] * yp[l];
     t = sqrt(r * r - s2 > 0 ? r * r - s2 : 0.0);
     for (sgn = 1; sgn >= -1; sgn -= 2) {
-      double *y = Y + k * n++, ny = 0.0;
-      for (l = 0; l < k; ++l) {
-        y[l] = yp[l] + sgn * t * V[l * k + i];
-        ny += y[l] * y[l];
-      }
-      ny = sqrt(ny);
-      if (ny > 0) {
-        for (l = 0; l < k; ++l) y[l] *= r / ny;
-      } else {
-        for (l = 0; l < k; ++l) y[l] = 0.0;
-        y[0] = r;
-      }
+      double *y = Y + k * n++;
+      for (l = 0; l < k; ++l) y[l] = yp[l] + sgn * t * V[l * k + i];
+      sk_to_sphere(k, y, r);
     }
   }
   return n;
