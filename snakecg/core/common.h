@@ -1,6 +1,6 @@
 /* What the runtime core's C files share (snakecg/core/forward.c, integrate.c, settle.c,
- * run.c): the row states, the simulation's structs, the generated functions' work arrays, one evaluation of the generated
- * `contact_system`, the rows' velocities A V, the held rows' forces of eq. (16) and the
+ * run.c): the sizes, the row states, the simulation's structs, the generated functions' work
+ * arrays, one evaluation of the generated `contact_system`, the rows' velocities A V, the held rows' forces of eq. (16) and the
  * active-set rule. Included after snakecg_layout.h; everything here is static, so each file
  * gets its own copy and the library exports nothing more; a file asks for the parts that not
  * every file uses (SC_ROW_VELOCITIES, SC_NEXT_STATES), or the types alone (SC_TYPES_ONLY),
@@ -12,6 +12,14 @@
 #include <stdlib.h>
 
 typedef long long int sc_int;
+
+/* sizes: coordinates n_s, constraint rows n_c, a body state (q, q_obj), the integrated state
+ * (positions, velocities and three work integrals) */
+#define NS SNAKECG_NS
+#define NC SNAKECG_NC
+#define NX (NS + 3)
+#define NY (2 * NX + 3)
+
 typedef int (*sc_work_fn)(sc_int *sz_arg, sc_int *sz_res, sc_int *sz_iw, sc_int *sz_w);
 
 int SNAKECG_CS(const double **arg, double **res, sc_int *iw, double *w, int mem);

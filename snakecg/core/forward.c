@@ -35,10 +35,6 @@
 #define SC_NEXT_STATES
 #include "common.h"
 
-#define SNAKECG_CAT_(a, b) a##b
-#define SNAKECG_CAT(a, b) SNAKECG_CAT_(a, b)
-#define SNAKECG_EXPORT(name) SNAKECG_CAT(SNAKECG_PREFIX, name)
-
 int SNAKECG_PO(const double **arg, double **res, sc_int *iw, double *w, int mem);
 int SNAKECG_PO_WORK(sc_int *sz_arg, sc_int *sz_res, sc_int *sz_iw, sc_int *sz_w);
 

@@ -33,16 +33,8 @@
 #define SC_ROW_VELOCITIES
 #include "common.h"
 
-#define SNAKECG_CAT_(a, b) a##b
-#define SNAKECG_CAT(a, b) SNAKECG_CAT_(a, b)
-#define SNAKECG_EXPORT(name) SNAKECG_CAT(SNAKECG_PREFIX, name)
-
-#define NS SNAKECG_NS
 #define NA SNAKECG_NA
 #define NL SNAKECG_NL
-#define NC SNAKECG_NC
-#define NX (NS + 3)
-#define NY (2 * NX + 3)
 #define MAX_EVENTS (3 + NC)
 
 

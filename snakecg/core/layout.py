@@ -106,9 +106,12 @@ def header(manifest: dict) -> str:
     lay = Layout.of(manifest)
     sigs = {s["name"]: s for s in manifest["functions"]}
     lines = ["/* snakecg_layout.h: written by the snakecg runtime from the model's manifest",
-             " * (snakecg/core/layout.py) for snakecg/core/forward.c and integrate.c. */",
+             " * (snakecg/core/layout.py) for the runtime core's C files (snakecg/core). */",
              "#ifndef SNAKECG_LAYOUT_H", "#define SNAKECG_LAYOUT_H",
              f"#define SNAKECG_PREFIX {_ident('the prefix', manifest['prefix'])}",
+             "/* SNAKECG_EXPORT(name): the core's exported symbol, the model's prefix first */",
+             "#define SNAKECG_CAT_(a, b) a##b", "#define SNAKECG_CAT(a, b) SNAKECG_CAT_(a, b)",
+             "#define SNAKECG_EXPORT(name) SNAKECG_CAT(SNAKECG_PREFIX, name)",
              f"#define SNAKECG_NA {lay.n_joints}", f"#define SNAKECG_NS {lay.n_coordinates}",
              f"#define SNAKECG_NL {lay.n_links}", f"#define SNAKECG_NC {lay.n_constraints}"]
     for fname, (short, ins, outs) in FUNCTIONS.items():

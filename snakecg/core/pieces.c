@@ -20,10 +20,6 @@
 
 #include "snakecg_layout.h"
 
-#define SNAKECG_CAT_(a, b) a##b
-#define SNAKECG_CAT(a, b) SNAKECG_CAT_(a, b)
-#define SNAKECG_EXPORT(name) SNAKECG_CAT(SNAKECG_PREFIX, name)
-
 typedef long long int pc_int;
 
 /* row states (snakecg/solver.py) */

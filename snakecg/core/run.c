@@ -23,14 +23,6 @@
 #define SC_TYPES_ONLY
 #include "common.h"
 
-#define SNAKECG_CAT_(a, b) a##b
-#define SNAKECG_CAT(a, b) SNAKECG_CAT_(a, b)
-#define SNAKECG_EXPORT(name) SNAKECG_CAT(SNAKECG_PREFIX, name)
-
-#define NS SNAKECG_NS
-#define NC SNAKECG_NC
-#define NX (NS + 3)
-#define NY (2 * NX + 3)
 #define MODE_WIDTH (NC + 1)  /* a mode: its row states, then off_link */
 #define EVENT_WIDTH (11 + NC) /* an event: see sc_run.events */
 

@@ -31,14 +31,6 @@
 #define SC_NEXT_STATES
 #include "common.h"
 
-#define SNAKECG_CAT_(a, b) a##b
-#define SNAKECG_CAT(a, b) SNAKECG_CAT_(a, b)
-#define SNAKECG_EXPORT(name) SNAKECG_CAT(SNAKECG_PREFIX, name)
-
-#define NS SNAKECG_NS
-#define NC SNAKECG_NC
-#define NX (NS + 3)
-#define NY (2 * NX + 3)
 
 
 /* G, Q = [Kq; Ka], gap, s and A V at y. */

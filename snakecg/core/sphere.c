@@ -28,10 +28,6 @@
 
 #include "snakecg_layout.h"
 
-#define SNAKECG_CAT_(a, b) a##b
-#define SNAKECG_CAT(a, b) SNAKECG_CAT_(a, b)
-#define SNAKECG_EXPORT(name) SNAKECG_CAT(SNAKECG_PREFIX, name)
-
 typedef long long int sk_int;
 
 /* largest na (and face dimension k) handled here; larger ones stay on NumPy's path */
