@@ -107,8 +107,8 @@ def to_sx(expr: sp.Expr, env: dict):
     return out
 
 
-def build_function(f: FunctionSpec, prefix: str) -> ca.Function:
-    """The CasADi ``SX`` function ``<prefix><f.name>`` of a derived routine."""
+def _inputs(f: FunctionSpec):
+    """The ``SX`` inputs of ``f`` and the map from its SymPy symbols to their entries."""
     env: dict = {}
     args = []
     for name, syms, _ in f.inputs:
@@ -116,13 +116,32 @@ def build_function(f: FunctionSpec, prefix: str) -> ca.Function:
         args.append(x)
         for k, s in enumerate(syms):
             env[s] = x[k]
+    return args, env
+
+
+def _outputs(f: FunctionSpec, env: dict, given: dict) -> tuple[list, bool]:
+    """``f``'s outputs as ``SX`` matrices, its CSE program's assignments built in order, an
+    assignment whose expression is a key of ``given`` taken from there instead; and whether
+    one was."""
     ordered, outs = cse_program(f)
+    used = False
     for sym, expr in ordered:
-        env[sym] = to_sx(expr, env)
+        if expr in given:
+            env[sym] = given[expr]
+            used = True
+        else:
+            env[sym] = to_sx(expr, env)
     results = []
     for _, rows, cols, elements in outs:
         col = ca.vertcat(*[to_sx(e, env) for e in elements]) if elements else ca.SX(0, 1)
         results.append(ca.reshape(col, rows, cols))
+    return results, used
+
+
+def build_function(f: FunctionSpec, prefix: str) -> ca.Function:
+    """The CasADi ``SX`` function ``<prefix><f.name>`` of a derived routine."""
+    args, env = _inputs(f)
+    results, _ = _outputs(f, env, {})
     return ca.Function(prefix + f.name, args, [ca.densify(o) for o in ca.cse(results)],
                        [n for n, _, _ in f.inputs], [n for n, _, _ in f.outputs])
 
@@ -139,35 +158,17 @@ def build_sincos_function(f: FunctionSpec, prefix: str) -> ca.Function | None:
     names = [name for name, _, _ in f.inputs]
     if "q" not in names:
         return None
-    q_syms = f.inputs[names.index("q")][1]
-    angles = list(q_syms[2:])
-    env: dict = {}
-    args = []
-    for name, syms, _ in f.inputs:
-        x = ca.SX.sym(name, len(syms))
-        args.append(x)
-        for k, s in enumerate(syms):
-            env[s] = x[k]
+    angles = list(f.inputs[names.index("q")][1][2:])
+    args, env = _inputs(f)
     cos_q = ca.SX.sym("cos_q", len(angles))
     sin_q = ca.SX.sym("sin_q", len(angles))
     given = {}
     for k, a in enumerate(angles):
         given[sp.cos(a)] = cos_q[k]
         given[sp.sin(a)] = sin_q[k]
-    ordered, outs = cse_program(f)
-    used = False
-    for sym, expr in ordered:
-        if expr in given:
-            env[sym] = given[expr]
-            used = True
-        else:
-            env[sym] = to_sx(expr, env)
+    results, used = _outputs(f, env, given)
     if not used:
         return None
-    results = []
-    for _, rows, cols, elements in outs:
-        col = ca.vertcat(*[to_sx(e, env) for e in elements]) if elements else ca.SX(0, 1)
-        results.append(ca.reshape(col, rows, cols))
     fn = ca.Function(prefix + f.name + "_sincos", args + [cos_q, sin_q],
                      [ca.densify(o) for o in ca.cse(results)],
                      names + ["cos_q", "sin_q"], [n for n, _, _ in f.outputs])
