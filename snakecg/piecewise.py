@@ -186,8 +186,8 @@ def face_kernel(model):
 def wheel_extremes(model, qa, chunk: int = 2048, compiled: bool = True):
     """Exact extremes of every metric for bounded wheels (see the module docstring).
 
-    ``compiled``: the KKT candidates in the model's compiled core where it has one (else,
-    and with False, NumPy's eigensolvers; both find the same points).
+    ``compiled``: the pieces, their faces and the KKT candidates in the model's compiled core
+    where it has one (else, and with False, NumPy's; both find the same points).
     Returns an :class:`~snakecg.analysis.Extremes` with ``certified`` (N,) and ``pieces``
     (the number of (configuration, state) pieces meeting the sphere).
     """

@@ -21,6 +21,7 @@ stay the reference and the path of models without a C compiler.
 from __future__ import annotations
 
 import ctypes
+import itertools
 
 import numpy as np
 
@@ -112,8 +113,6 @@ class SphereKernel:
         """The faces of ``s`` conditions at equality (every combination of each pair's
         ``used`` conditions, in NumPy's order) that meet the unit sphere: ``pair`` (F,),
         ``slots`` (F, s), ``u0`` (F, na), ``Z`` (F, na, na - s), ``r`` (F,)."""
-        import itertools
-
         cond = _c(cond)
         P, m, na = cond.shape[0], cond.shape[1], cond.shape[2] - 1
         used = _c(used, np.uint8)
