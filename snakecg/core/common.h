@@ -249,7 +249,7 @@ static double sc_held_forces(const signed char *state, const double *G, const do
                              const double *bounds, const double *extra, double *lam) {
   const int nc = SNAKECG_NC;
   int held[SNAKECG_NC], m = 0, i, j, k;
-  double L[SNAKECG_NC * SNAKECG_NC], d[SNAKECG_NC], y[SNAKECG_NC], ratio = 1.0;
+  double L[SNAKECG_NC * SNAKECG_NC], d[SNAKECG_NC], dinv[SNAKECG_NC], y[SNAKECG_NC], ratio = 1.0;
   for (i = 0; i < nc; ++i) {
     lam[i] = state[i] == SLIDE_POS ? bounds[i] : state[i] == SLIDE_NEG ? -bounds[i] : 0.0;
     if (!isfinite(lam[i])) lam[i] = 0.0;
@@ -266,18 +266,19 @@ static double sc_held_forces(const signed char *state, const double *G, const do
     double s = G[held[j] + nc * held[j]], r;
     for (k = 0; k < j; ++k) s -= L[j + nc * k] * L[j + nc * k] * d[k];
     d[j] = s;
+    dinv[j] = 1.0 / s; /* one division per pivot */
     r = s / G[held[j] + nc * held[j]];
     if (!(r >= ratio)) ratio = r; /* NaN propagates */
     for (i = j + 1; i < m; ++i) {
       double t = G[held[i] + nc * held[j]];
       for (k = 0; k < j; ++k) t -= L[i + nc * k] * L[j + nc * k] * d[k];
-      L[i + nc * j] = t / s;
+      L[i + nc * j] = t * dinv[j];
     }
   }
   for (i = 0; i < m; ++i) /* forward, diagonal and back substitution */
     for (k = 0; k < i; ++k) y[i] -= L[i + nc * k] * y[k];
   for (i = m - 1; i >= 0; --i) {
-    y[i] /= d[i];
+    y[i] *= dinv[i];
     for (k = i + 1; k < m; ++k) y[i] -= L[k + nc * i] * y[k];
   }
   for (i = 0; i < m; ++i) lam[held[i]] = y[i];

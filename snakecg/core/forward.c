@@ -62,14 +62,14 @@ static int all_finite(const double *x, int n, double limit) {
  * (snakecg.rows.mass_pivot_ratio); 0 where M is not numerically positive definite. */
 static double mass_pivot_ratio(const double *M, double *S) {
   const int n = SNAKECG_NS;
-  double d[SNAKECG_NS], best = INFINITY, s;
+  double r[SNAKECG_NS], best = INFINITY, s, inv;
   int i, j, k;
-  for (i = 0; i < n; ++i) {
-    d[i] = sqrt(fabs(M[i + n * i]));
-    if (!(d[i] > 0)) d[i] = 1.0;
+  for (i = 0; i < n; ++i) { /* 1 / sqrt(M_ii): one division per row, not two per entry */
+    s = sqrt(fabs(M[i + n * i]));
+    r[i] = s > 0 ? 1.0 / s : 1.0;
   }
-  for (j = 0; j < n; ++j)
-    for (i = 0; i < n; ++i) S[i + n * j] = M[i + n * j] / d[i] / d[j];
+  for (j = 0; j < n; ++j) /* the lower triangle is all the factorization reads */
+    for (i = j; i < n; ++i) S[i + n * j] = M[i + n * j] * r[i] * r[j];
   for (j = 0; j < n; ++j) { /* lower Cholesky factor in place, column by column */
     s = S[j + n * j];
     for (k = 0; k < j; ++k) s -= S[j + n * k] * S[j + n * k];
@@ -77,10 +77,11 @@ static double mass_pivot_ratio(const double *M, double *S) {
     s = sqrt(s);
     S[j + n * j] = s;
     if (s < best) best = s;
+    inv = 1.0 / s;
     for (i = j + 1; i < n; ++i) {
       double t = S[i + n * j];
       for (k = 0; k < j; ++k) t -= S[i + n * k] * S[j + n * k];
-      S[i + n * j] = t / s;
+      S[i + n * j] = t * inv;
     }
   }
   best = best * best;
