@@ -23,8 +23,8 @@ from types import SimpleNamespace
 import numpy as np
 
 from ..core.segment import (RUN_COMPLETED, RUN_STOPPED, SEG_END, SEG_EVENT, SEG_TOO_SMALL,
-                            SETTLE_DONE, Run, Segment, Settle)
-from ..solver import PIVOT_TOL, REL_TOL, default_max_iter
+                            SETTLE_DONE)
+from .workspace import give, take
 
 __all__ = ["CompiledSegments", "compiled_reason"]
 
@@ -99,77 +99,29 @@ class CompiledSegments:
     def __init__(self, dyn, settings):
         model = settings.model
         self.dyn = dyn
-        self._fn = model.core.integrate_segment
-        self._samples = model.core.mode_samples
         self._model = model  # keeps the scene vector alive
-        # the batch drivers of mass_matrix and link_poses (inputs q, K): their pointer arrays
-        be = model.backend
-        fns = getattr(be, "_fns", {})
-        self.has_kinematics = all(
-            name in fns and be.signatures[name].in_names in (["q", "K"], ["K", "q"])
-            for name in ("mass_matrix", "link_poses"))
-        if self.has_kinematics:
-            self._K = np.ascontiguousarray(model.parameters, dtype=float)
-            self._kin = []
-            for name in ("mass_matrix", "link_poses"):
-                k = be.signatures[name].in_names.index("q")
-                argp = (ctypes.c_void_p * 2)()
-                argp[1 - k] = self._K.ctypes.data
-                self._kin.append((fns[name], argp, k, (ctypes.c_void_p * 1)()))
-            self._kin_strides = []  # q's stride n_s (at its index), K broadcast
-            for k in (0, 1):
-                st = (ctypes.c_longlong * 2)()
-                st[k] = dyn.ns
-                self._kin_strides.append(st)
-        ny, na, nc = dyn.ny, dyn.na, dyn.nc
-        # every array the C reads or writes, as views of one buffer (one address lookup)
-        sizes = {"y0": ny, "y_end": ny, "tau": na, "state": nc, "f_obj": 3, "rho": 2,
-                 "s_y": ny, "s_y_out": ny, "s_prev": nc, "s_forced": nc, "s_state": nc,
-                 "s_forced_out": nc, "s_impact_lam": nc, "s_projection_lam": nc}
-        buf = np.zeros(sum(sizes.values()))
-        base, addr, off = buf.ctypes.data, {}, 0
-        for name, size in sizes.items():
-            setattr(self, name, buf[off:off + size])
-            addr[name] = base + 8 * off
-            off += size
+        # the model's buffers and structs (a workspace of its pool, given back by release())
+        ws = self.ws = take(model)
+        self.__dict__.update(ws.shared)
         self.f_obj[:] = dyn.f_obj
         self.rho[:] = dyn.rho
-        events = np.zeros((2, nc + 3), dtype=np.int64)
-        self.ev_kind, self.ev_row = events
-        self.t_eval = np.zeros(0)
-        self.y_eval = np.zeros((0, ny))
-        seg = Segment()
-        seg.scene = model.scene_address
-        seg.tau, seg.f_obj, seg.rho = addr["tau"], addr["f_obj"], addr["rho"]
-        seg.state = addr["state"]
-        seg.ev_kind = events.ctypes.data
-        seg.ev_row = seg.ev_kind + 8 * (nc + 3)
-        seg.contact_index, seg.c_k, seg.l_k = dyn.k, dyn.c_k, dyn.l_k
-        seg.alpha, seg.pivot_tol = dyn.alpha, PIVOT_TOL
+        seg = self.seg
+        seg.alpha = dyn.alpha
         seg.rtol, seg.atol = settings.rtol, settings.atol
         seg.max_step = math.inf if settings.max_step is None else settings.max_step
-        seg.y0, seg.y_end = addr["y0"], addr["y_end"]
-        self.seg = seg
-        self._address = ctypes.addressof(seg)
+        self.t_eval = np.zeros(0)
+        self.y_eval = np.zeros((0, dyn.ny))
         self.steps = 0
         self.handed_back = 0  # segments and settles done in Python instead
         self.runs_handed_back = 0  # whole runs (core_run) done by the Python loop instead
-        self._run = model.core.run
-        self.y_start = np.zeros(ny)
-        # core_settle (the torque is the segments')
-        self._settle = model.core.settle
-        st = Settle()
-        st.scene, st.tau, st.f_obj, st.rho = (model.scene_address, addr["tau"], addr["f_obj"],
-                                              addr["rho"])
-        st.contact_index, st.c_k, st.l_k = dyn.k, dyn.c_k, dyn.l_k
-        st.pivot_tol, st.rel_tol, st.max_iter = PIVOT_TOL, REL_TOL, default_max_iter(nc)
-        st.y, st.forced = addr["s_y"], addr["s_forced"]
-        st.y_out, st.state, st.forced_out = addr["s_y_out"], addr["s_state"], addr["s_forced_out"]
-        st.impact_lam, st.projection_lam = addr["s_impact_lam"], addr["s_projection_lam"]
-        self._prev_address = addr["s_prev"]
-        self.st = st
-        self._settle_address = ctypes.addressof(st)
-        self._buf = buf, events  # keeps the arrays alive
+        self.started = False  # a run handed back after its start (run_all)
+
+    def release(self) -> None:
+        """Give the workspace back to the model's pool (at the end of the run: nothing may be
+        computed with this object afterwards)."""
+        ws, self.ws = self.ws, None
+        if ws is not None:
+            give(self._model, ws)
 
     def run(self, t0, t1, y, mode, tau, specs, t_eval):
         """One segment from ``(t0, y)`` to ``t1`` in ``mode`` with the torque ``tau`` and the
@@ -210,49 +162,60 @@ class CompiledSegments:
         """The whole run from the state ``y`` in ``mode`` (after the start's settle, the
         energy ``loss`` removed there) with the constant torque ``tau`` to ``T``, output at
         ``grid`` (increasing, the last is ``T``), in one C call (``core_run``): the filled
-        :class:`~snakecg.core.segment.Run` with its arrays (``t``, ``y``, ``mode``,
-        ``loss`` and the quantities ``samples`` (as :meth:`samples_into`) of each sample,
-        the ``modes`` and the ``events``, see run.c), or ``None`` when the Python loop must
-        do the run."""
-        dyn = self.dyn
-        ny, nc = dyn.ny, dyn.nc
-        grid = np.ascontiguousarray(grid, dtype=float)
+        :class:`~snakecg.core.segment.Run` (the workspace's: read it before the next run) and
+        its arrays (``t``, ``y``, ``mode``, ``loss`` and the quantities ``samples`` (as
+        :meth:`samples_into`) of each sample, the ``modes`` and the ``events``, see run.c),
+        or ``None`` when the Python loop must do the run.
+
+        With ``mode=None``, ``y`` is the initial state and the C does the start as well
+        (the contact's gap and position, the start's settle): ``arrays.start`` is then what it
+        recorded (:data:`~snakecg.simulate.workspace.START_WIDTH`), the first mode the start's
+        and ``loss`` is not read. ``started`` tells, after a run handed back, whether the C
+        got past the start (the Python loop would hand back the same run again)."""
+        ny, nc = self.dyn.ny, self.dyn.nc
+        n_grid = len(grid)
         cap_events = min(int(max_events), RUN_EVENTS) + 1
-        cap = len(grid) + 2 * cap_events + 2
+        cap = n_grid + 2 * cap_events + 2
         width = ny + 2 * nc + 6
-        sizes = {"t": cap, "y": cap * ny, "mode": cap, "loss": cap, "samples": cap * width,
-                 "modes": (cap_events + 1) * (nc + 1), "events": cap_events * (11 + nc)}
-        buf = np.empty(sum(sizes.values()))
-        base, out, addr, off = buf.ctypes.data, {}, {}, 0
-        for name, size in sizes.items():
-            out[name], addr[name] = buf[off:off + size], base + 8 * off
-            off += size
+        # the outputs, one after the other in the workspace's buffer: t, mode, loss (cap
+        # each), y (cap x ny), samples (cap x width), modes, events
+        o_y = 3 * cap
+        o_samples = o_y + cap * ny
+        o_modes = o_samples + cap * width
+        o_events = o_modes + (cap_events + 1) * (nc + 1)
+        buf = self.ws.run_buffer(o_events + cap_events * (11 + nc))
+        base = buf.ctypes.data
         self.tau[:] = tau
-        self.state[:] = mode.state  # the start's mode, then the current one
         self.y_start[:] = y
-        R = Run()
-        R.sg, R.st = self._address, self._settle_address
-        R.T, R.gtol, R.grid, R.n_grid = T, gtol, grid.ctypes.data, len(grid)
-        R.max_events, R.t, R.off_link, R.loss = int(max_events), 0.0, int(mode.off_link), loss
-        R.y = self.y_start.ctypes.data
-        R.cap, R.t_out, R.y_out = cap, addr["t"], addr["y"]
-        R.mode_out, R.loss_out = addr["mode"], addr["loss"]
-        R.cap_modes, R.modes = cap_events + 1, addr["modes"]
-        R.cap_events, R.events = cap_events, addr["events"]
-        R.samples = addr["samples"]
-        status = self._run(ctypes.addressof(R))
+        R = self.ws.run
+        if mode is not None:
+            self.state[:] = mode.state  # the start's mode, then the current one
+            R.off_link, R.loss, R.start = int(mode.off_link), loss, 0
+        else:
+            R.start = 1
+        R.T, R.gtol, R.grid, R.n_grid = T, gtol, grid.ctypes.data, n_grid
+        R.max_events, R.t = int(max_events), 0.0
+        R.cap, R.t_out, R.mode_out, R.loss_out = cap, base, base + 8 * cap, base + 16 * cap
+        R.y_out, R.samples = base + 8 * o_y, base + 8 * o_samples
+        R.cap_modes, R.modes = cap_events + 1, base + 8 * o_modes
+        R.cap_events, R.events = cap_events, base + 8 * o_events
+        R.n_modes = 0
+        status = self._run(self.ws.run_address)
         if status not in (RUN_COMPLETED, RUN_STOPPED):
-            self.runs_handed_back += 1
+            self.started = R.n_modes > 0
             return None
         n = R.n_out
-        R.arrays = SimpleNamespace(
-            t=out["t"][:n], y=out["y"][:n * ny].reshape(n, ny), mode=out["mode"][:n],
-            loss=out["loss"][:n], modes=out["modes"][:R.n_modes * (nc + 1)].reshape(-1, nc + 1),
-            events=out["events"][:R.n_events * (11 + nc)].reshape(-1, 11 + nc),
-            samples=out["samples"][:n * width].reshape(n, width))
+        # what the trajectory keeps is copied out of the workspace (t, y, loss)
+        arrays = SimpleNamespace(
+            t=buf[:n].copy(), y=buf[o_y:o_y + n * ny].reshape(n, ny).copy(),
+            mode=buf[cap:cap + n], loss=buf[2 * cap:2 * cap + n].copy(),
+            modes=buf[o_modes:o_modes + R.n_modes * (nc + 1)].reshape(-1, nc + 1),
+            events=buf[o_events:o_events + R.n_events * (11 + nc)].reshape(-1, 11 + nc),
+            samples=buf[o_samples:o_samples + n * width].reshape(n, width),
+            start=self.start_out if mode is None else None)
         self.steps += R.nsteps
-        dyn.nfev += R.nfev
-        return R
+        self.dyn.nfev += R.nfev
+        return R, arrays
 
     def settle(self, y, prev, forced: dict, contact_candidate: bool, tau):
         """``core_settle`` at the state ``y`` after the mode ``prev`` (``None`` at the start)
@@ -312,10 +275,10 @@ class CompiledSegments:
         buf = np.empty(n * (ns * ns + 3 * nl))
         q, base = Q.ctypes.data, buf.ctypes.data
         outs = (base, base + 8 * n * ns * ns)
-        for (fn, argp, k, resp), out in zip(self._kin, outs):
+        for (fn, argp, k, resp, strides), out in zip(self._kin, outs):
             argp[k] = q
             resp[0] = out
-            if fn(n, argp, self._kin_strides[k], resp) != 0:
+            if fn(n, argp, strides, resp) != 0:
                 return None
         M = buf[:n * ns * ns].reshape(n, ns, ns).transpose(0, 2, 1)
         return M, buf[n * ns * ns:].reshape(n, nl, 3)
