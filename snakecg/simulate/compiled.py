@@ -268,17 +268,18 @@ class CompiledSegments:
         (n, n_s): the generated ``mass_matrix`` and ``link_poses`` through their compiled
         batch drivers on the run's own arrays (what :meth:`snakecg.SceneModel.mass_matrix`
         and :meth:`~snakecg.SceneModel.link_poses` give, without their checks), or ``None``
-        when an evaluation failed."""
+        when an evaluation failed. Reads nothing of the workspace that a run writes (also
+        used after the run, when a deferred field of its trajectory is first read)."""
         Q = np.ascontiguousarray(Q, dtype=float)
         n = len(Q)
         ns, nl = self.dyn.ns, self.dyn.nl
         buf = np.empty(n * (ns * ns + 3 * nl))
         q, base = Q.ctypes.data, buf.ctypes.data
         outs = (base, base + 8 * n * ns * ns)
-        for (fn, argp, k, resp, strides), out in zip(self._kin, outs):
-            argp[k] = q
-            resp[0] = out
-            if fn(n, argp, strides, resp) != 0:
+        for (fn, K, k, strides), out in zip(self._kin, outs):
+            argp = (ctypes.c_void_p * 2)()
+            argp[k], argp[1 - k] = q, K
+            if fn(n, argp, strides, (ctypes.c_void_p * 1)(out)) != 0:
                 return None
         M = buf[:n * ns * ns].reshape(n, ns, ns).transpose(0, 2, 1)
         return M, buf[n * ns * ns:].reshape(n, nl, 3)

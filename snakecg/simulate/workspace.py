@@ -106,11 +106,9 @@ class Workspace:
             kin = []
             for name in ("mass_matrix", "link_poses"):
                 i = be.signatures[name].in_names.index("q")
-                argp = (ctypes.c_void_p * 2)()
-                argp[1 - i] = K.ctypes.data
                 strides = (ctypes.c_longlong * 2)()  # q's stride n_s, K broadcast
                 strides[i] = ns
-                kin.append((fns[name], argp, i, (ctypes.c_void_p * 1)(), strides))
+                kin.append((fns[name], K.ctypes.data, i, strides))
             shared["_K"], shared["_kin"] = K, kin
         self.shared = shared
         self._buf = buf, events  # keeps the arrays alive
