@@ -69,27 +69,29 @@ def placement(model, q0):
                   "object_distance": [model.scene.object_distance], "side": model._side}
         packed = np.concatenate([np.ravel(np.asarray(values[k], dtype=float))
                                  for k in sig.in_names if k != "q"])
-        addresses, off = [], 0
-        for k, size in zip(sig.in_names, sig.in_sizes):
-            if k == "q":
-                addresses.append(None)
-            else:
-                addresses.append(packed.ctypes.data + 8 * off)
+        argp, off = (ctypes.c_void_p * len(sig.in_names))(), 0
+        for i, (k, size) in enumerate(zip(sig.in_names, sig.in_sizes)):
+            if k != "q":
+                argp[i] = packed.ctypes.data + 8 * off
                 off += size
         sizes = [r * c for r, c in sig.out_shapes]  # q_obj (3), rho (2), contact point (2)
-        fixed = _PLACE[model] = (packed, addresses, sig.in_names.index("q"), sizes,
-                                 np.cumsum([0, *sizes[:-1]]).tolist())
-    packed, addresses, k, sizes, offsets = fixed
-    q0 = np.ascontiguousarray(q0, dtype=float)
-    argp = (ctypes.c_void_p * len(addresses))(*addresses)
-    argp[k] = q0.ctypes.data
-    out = np.empty(sum(sizes))
-    base = out.ctypes.data
-    resp = (ctypes.c_void_p * len(sizes))(*(base + 8 * o for o in offsets))
-    if fn(1, argp, (ctypes.c_longlong * len(addresses))(), resp) != 0:
+        # the template of the pointer arrays (copied at each call: the q and output pointers
+        # are the call's), the strides (all 0: one sample), where q and the outputs go
+        fixed = _PLACE[model] = (packed, argp, (ctypes.c_longlong * len(argp))(),
+                                 sig.in_names.index("q"), len(q0),
+                                 np.cumsum([len(q0), *sizes[:-1]]).tolist(), sum(sizes))
+    _, template, strides, k, ns, offsets, n_out = fixed
+    # q0 and the outputs in one new array
+    buf = np.empty(ns + n_out)
+    buf[:ns] = q0
+    base = buf.ctypes.data
+    argp = type(template).from_buffer_copy(template)
+    argp[k] = base
+    resp = (ctypes.c_void_p * len(offsets))(*[base + 8 * o for o in offsets])
+    if fn(1, argp, strides, resp) != 0:
         q_obj0, rho, _ = model.place(q0[None, :], 1)
         return q_obj0[0].copy(), rho[0].copy()
-    return out[:3].copy(), out[3:5].copy()
+    return buf[ns:ns + 3].copy(), buf[ns + 3:ns + 5].copy()
 
 
 class CompiledSegments:
@@ -177,14 +179,15 @@ class CompiledSegments:
         cap_events = min(int(max_events), RUN_EVENTS) + 1
         cap = n_grid + 2 * cap_events + 2
         width = ny + 2 * nc + 6
-        # the outputs, one after the other in the workspace's buffer: t, mode, loss (cap
-        # each), y (cap x ny), samples (cap x width), modes, events
+        # one after the other in the workspace's buffer: t, mode, loss (cap each), y (cap x
+        # ny), samples (cap x width), modes, events, then the grid
         o_y = 3 * cap
         o_samples = o_y + cap * ny
         o_modes = o_samples + cap * width
         o_events = o_modes + (cap_events + 1) * (nc + 1)
-        buf = self.ws.run_buffer(o_events + cap_events * (11 + nc))
-        base = buf.ctypes.data
+        o_grid = o_events + cap_events * (11 + nc)
+        buf, base = self.ws.run_buffer(o_grid + n_grid)
+        buf[o_grid:o_grid + n_grid] = grid
         self.tau[:] = tau
         self.y_start[:] = y
         R = self.ws.run
@@ -193,7 +196,7 @@ class CompiledSegments:
             R.off_link, R.loss, R.start = int(mode.off_link), loss, 0
         else:
             R.start = 1
-        R.T, R.gtol, R.grid, R.n_grid = T, gtol, grid.ctypes.data, n_grid
+        R.T, R.gtol, R.grid, R.n_grid = T, gtol, base + 8 * o_grid, n_grid
         R.max_events, R.t = int(max_events), 0.0
         R.cap, R.t_out, R.mode_out, R.loss_out = cap, base, base + 8 * cap, base + 16 * cap
         R.y_out, R.samples = base + 8 * o_y, base + 8 * o_samples
@@ -216,6 +219,21 @@ class CompiledSegments:
         self.steps += R.nsteps
         self.dyn.nfev += R.nfev
         return R, arrays
+
+    def modes_of(self, table, mode_of) -> list:
+        """The modes of the rows (row states, then off_link) of a whole run's ``table``:
+        ``mode_of(state, off_link)`` (:meth:`~snakecg.simulate.events.Events.mode`) of each,
+        remembered by the workspace (the model's bounds are its)."""
+        known, nc, out = self.ws.modes, self.dyn.nc, []
+        for row in table:
+            key = row.tobytes()
+            mode = known.get(key)
+            if mode is None:
+                if len(known) >= 4096:
+                    known.clear()
+                mode = known[key] = mode_of(row[:nc], bool(row[nc]))
+            out.append(mode)
+        return out
 
     def settle(self, y, prev, forced: dict, contact_candidate: bool, tau):
         """``core_settle`` at the state ``y`` after the mode ``prev`` (``None`` at the start)

@@ -115,7 +115,7 @@ class Simulator:
             return None
         R, a = done
         nc = self.dyn.nc
-        modes = [handler.mode(m[:nc], bool(m[nc])) for m in a.modes]
+        modes = self.compiled.modes_of(a.modes, handler.mode)
         if a.start is not None:  # Events.settle's records of the start
             self.initial_mode = after = modes[0].describe()
             o = a.start

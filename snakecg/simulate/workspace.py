@@ -112,13 +112,15 @@ class Workspace:
             shared["_K"], shared["_kin"] = K, kin
         self.shared = shared
         self._buf = buf, events  # keeps the arrays alive
-        self._out = np.empty(0)
+        self._out = np.empty(0), 0
+        self.modes = {}  # the Mode of a row of core_run's table of modes (its bytes)
 
-    def run_buffer(self, size: int) -> np.ndarray:
-        """At least ``size`` doubles for a whole run's outputs (kept for the next run; the
-        caller copies out what it returns)."""
-        if len(self._out) < size:
-            self._out = np.empty(size)
+    def run_buffer(self, size: int) -> tuple[np.ndarray, int]:
+        """At least ``size`` doubles for a whole run's inputs and outputs, and its address
+        (kept for the next run; the caller copies out what it returns)."""
+        if len(self._out[0]) < size:
+            out = np.empty(size)
+            self._out = out, out.ctypes.data
         return self._out
 
 
