@@ -195,7 +195,7 @@ def summary(sim, tr: Trajectory, status: str) -> dict:
     held = tr.contact
     # time fractions from the piecewise-constant flags of each interval
     held_frac = float(np.sum(dt * held[:-1]) / span) if dt.size else float(held[0])
-    sliding = np.isin(tr.wheel_state, ("slide+", "slide-"))
+    sliding = (tr.wheel_state == "slide+") | (tr.wheel_state == "slide-")
     slide_frac = (np.sum(dt[:, None] * sliding[:-1], axis=0) / span).tolist() \
         if dt.size else sliding[0].astype(float).tolist()
     sr_mean = float(np.sum(0.5 * dt * (tr.sr[1:] + tr.sr[:-1])) / span) if dt.size \
