@@ -22,8 +22,14 @@ from types import SimpleNamespace
 
 import numpy as np
 
-from ..core.segment import (RUN_COMPLETED, RUN_STOPPED, SEG_END, SEG_EVENT, SEG_TOO_SMALL,
-                            SETTLE_DONE)
+from ..core.segment import (
+    RUN_COMPLETED,
+    RUN_STOPPED,
+    SEG_END,
+    SEG_EVENT,
+    SEG_TOO_SMALL,
+    SETTLE_DONE,
+)
 from .workspace import give, take
 
 __all__ = ["CompiledSegments", "compiled_reason"]
