@@ -229,7 +229,8 @@ def test_start_impact_against_solve_ivp(models):
 
 def test_workspace_pool(models):
     """Two runs alive at once hold two workspaces; a finished run gives its workspace back
-    (the pool keeps at most POOL_SIZE); the pool does not keep the model alive."""
+    (the pool keeps at most POOL_SIZE, without an output buffer above KEEP_BYTES); the pool
+    does not keep the model alive."""
     import gc
     import weakref
 
@@ -245,6 +246,10 @@ def test_workspace_pool(models):
     for w in held * 2:
         workspace.give(sm, w)
     assert len(pool) == workspace.POOL_SIZE
+    # a run with many output samples does not leave its large buffer in the pool
+    pool.clear()
+    sm.simulate(q0, tau, 0.05, output_dt=0.05 / 20000)
+    assert len(pool) == 1 and pool[0]._out[0].nbytes <= workspace.KEEP_BYTES
     ref = weakref.ref(sm)
     del sm, pool, held, w
     gc.collect()

@@ -23,6 +23,9 @@ __all__ = ["START_IMPACT", "START_WIDTH", "Workspace", "give", "take"]
 
 #: Workspaces kept per model for later runs (more at once are made and dropped).
 POOL_SIZE = 4
+#: Largest output buffer a pooled workspace keeps (bytes; a run with more output samples
+#: allocates its own, dropped when the workspace goes back to the pool).
+KEEP_BYTES = 4 << 20
 #: The start as core_run records it (``sc_run.start_out``, ``START_*`` of run.c): gap, s,
 #: touching, off_link; impact (0/1), its closing velocity, the kinetic energy before it and
 #: its change, the impulses' count, then n_c impulses (from START_IMPACT); the rows
@@ -136,9 +139,12 @@ def take(model) -> Workspace:
 
 
 def give(model, ws: Workspace) -> None:
-    """Give ``ws`` back to the pool of ``model`` (dropped when the pool is full)."""
+    """Give ``ws`` back to the pool of ``model`` (dropped when the pool is full; its output
+    buffer dropped when above :data:`KEEP_BYTES`)."""
     pool = _POOLS.get(model)
     if pool is None:
         pool = _POOLS.setdefault(model, [])
     if len(pool) < POOL_SIZE:
+        if ws._out[0].nbytes > KEEP_BYTES:
+            ws._out = np.empty(0), 0
         pool.append(ws)
