@@ -4,7 +4,8 @@
  * shared library like forward.c, integrate.c and settle.c.
  *
  * It runs the loop of snakecg/simulate/simulator.py (Simulator.run) for a torque that is
- * constant over the whole run, after the start's settle: segment after segment in the mode
+ * constant over the whole run, from the start's settle (done here too with sc_run.start, or
+ * before by the caller): segment after segment in the mode
  * (core_integrate_segment, integrate.c), the mode's terminal events
  * (snakecg/simulate/events.py, Events.specs), at an event what Events.handle does (the rows
  * that the event fixes: a separated or lost contact, a wheel breaking away against its
@@ -38,10 +39,12 @@ typedef struct {
   double T, gtol;     /* duration; gap and link tolerance of the contact (m) */
   const double *grid; /* the output times (increasing, the last is T) */
   sc_int n_grid, max_events;
-  double t;           /* in: the start (after its settle) */
+  double t;           /* in: the start (after its settle, or before it with `start`) */
   const double *y;    /* in: NY, the state there */
-  sc_int off_link;    /* in: the start mode's flag (its row states in sg->state) */
-  double loss;        /* in: the energy removed at the start; out: at the end */
+  sc_int off_link;    /* in: the start mode's flag (its row states in sg->state); with
+                         `start`: set by the start's settle */
+  double loss;        /* in: the energy removed at the start (with `start`: set there); out:
+                         at the end */
   /* outputs */
   sc_int cap;         /* rows of t_out, y_out, mode_out, loss_out */
   double *t_out, *y_out, *mode_out, *loss_out;
@@ -59,8 +62,19 @@ typedef struct {
   double *samples;    /* cap x (NY + 2 NC + 6): core_mode_samples of every sample in its mode */
   sc_int segments, nfev, nsteps;
   double segment_cpu; /* CPU seconds inside the segment integrations */
+  sc_int start;       /* in: 1 when y is the initial state, before the start's settle (done
+                         here first, see start()), 0 when it is the state after it */
+  double *start_out;  /* out (start): START_WIDTH, see start() */
   sc_int status;      /* RUN_* */
 } sc_run;
+
+/* sc_run.start_out: gap, s, touching, off_link; impact (0/1), its closing velocity, the
+ * kinetic energy before it and its change, the impulses' count, the impulses (NC); the rows
+ * projected, their drift, vtol, the drift's row, the kinetic energy before the projection and
+ * its change, the impulses (NC) */
+#define START_IMPACT 4
+#define START_PROJECTION (9 + NC)
+#define START_WIDTH (15 + 2 * NC)
 
 static sc_int add_mode(sc_run *R, const double *state, sc_int off_link) {
   double *m;
@@ -142,6 +156,71 @@ static int handle(sc_run *R, sc_int e, const double *y_e, sc_int *off_link) {
   return SNAKECG_EXPORT(core_settle)(st) != SETTLE_DONE;
 }
 
+/* Simulator.run at the start, for R->y the initial state: the gap and the contact position s
+ * (contact_system's, in no mode and with no torque), the contact touching (|gap| <= gtol with
+ * s on the link, gtol about) or off the link, then the start's settle (Events.settle without
+ * a mode before, the contact a candidate when touching) with the run's torque. Its new state
+ * in y, its row states in the segment's state, *off_link set, its energy removed in R->loss;
+ * what Python records of it in R->start_out. 0, or 1: Python does the start (also when the
+ * object penetrates the link: Python raises). */
+static int start(sc_run *R, double *y, sc_int *off_link) {
+  sc_segment *sg = R->sg;
+  sc_settle *st = R->st;
+  const double *tau = sg->tau, *state = sg->state;
+  double point[NY + 2 * NC + 6], zero_tau[SNAKECG_NA], zero_state[NC], *o = R->start_out;
+  double gap, s, *forced = (double *)st->forced;
+  int on_link, touching, r, failed;
+  for (r = 0; r < SNAKECG_NA; ++r) zero_tau[r] = 0.0;
+  for (r = 0; r < NC; ++r) zero_state[r] = ABSENT;
+  sg->tau = zero_tau; /* CompiledSegments.gap_and_s: no torque, no row held */
+  sg->state = zero_state;
+  failed = SNAKECG_EXPORT(core_mode_samples)(sg, 1, y, point) != 0 ||
+           point[NY + 2 * NC + 5] != 0.0;
+  sg->tau = tau;
+  sg->state = state;
+  if (failed) return 1;
+  gap = point[NY + 2 * NC];
+  s = point[NY + 2 * NC + 1];
+  on_link = -R->gtol <= s && s <= sg->l_k + R->gtol;
+  if (gap < -R->gtol && on_link) return 1; /* penetrating: Python raises */
+  touching = fabs(gap) <= R->gtol && on_link;
+  *off_link = !on_link && fabs(gap) <= R->gtol;
+  for (r = 0; r < NC; ++r) forced[r] = -1.0;
+  memcpy((double *)st->y, y, sizeof(double) * NY);
+  st->prev = 0;
+  st->contact_candidate = touching;
+  if (SNAKECG_EXPORT(core_settle)(st) != SETTLE_DONE) return 1;
+  memcpy(y, st->y_out, sizeof(double) * NY);
+  memcpy((double *)sg->state, st->state, sizeof(double) * NC);
+  memset(o, 0, sizeof(double) * START_WIDTH);
+  o[0] = gap;
+  o[1] = s;
+  o[2] = touching;
+  o[3] = (double)*off_link;
+  R->loss = 0.0; /* the energy of the start's records, in their order */
+  if (st->impact) {
+    o[START_IMPACT] = 1.0;
+    o[START_IMPACT + 1] = st->impact_velocity;
+    o[START_IMPACT + 2] = st->impact_ke;
+    o[START_IMPACT + 3] = st->impact_de;
+    o[START_IMPACT + 4] = (double)st->n_impact;
+    memcpy(o + START_IMPACT + 5, st->impact_lam, sizeof(double) * (size_t)st->n_impact);
+    R->loss += -st->impact_de;
+  }
+  if (st->n_projected) {
+    o[START_PROJECTION] = (double)st->n_projected;
+    o[START_PROJECTION + 1] = st->drift;
+    o[START_PROJECTION + 2] = st->vtol;
+    o[START_PROJECTION + 3] = (double)st->drift_row;
+    o[START_PROJECTION + 4] = st->projection_ke;
+    o[START_PROJECTION + 5] = st->projection_de;
+    memcpy(o + START_PROJECTION + 6, st->projection_lam,
+           sizeof(double) * (size_t)st->n_projected);
+    if (st->drift > st->vtol) R->loss += -st->projection_de; /* recorded: an impulse */
+  }
+  return 0;
+}
+
 static int run(sc_run *R) {
   sc_segment *sg = R->sg;
   sc_settle *st = R->st;
@@ -151,6 +230,7 @@ static int run(sc_run *R) {
   int status;
   clock_t c0;
   memcpy(y, R->y, sizeof(y));
+  if (R->start && start(R, y, &off_link)) return RUN_PYTHON;
   if ((mode = add_mode(R, state, off_link)) < 0 || add_sample(R, t, y, mode)) return RUN_PYTHON;
   while (t < T * (1 - 1e-13)) {
     /* output times after t: the grid's (its last is T, where the segment ends) */

@@ -80,7 +80,7 @@ class Run(ctypes.Structure):
                 ("loss_out", _P), ("n_out", _I), ("cap_modes", _I), ("modes", _P),
                 ("n_modes", _I), ("cap_events", _I), ("events", _P), ("n_events", _I),
                 ("stuck", _I), ("samples", _P), ("segments", _I), ("nfev", _I), ("nsteps", _I),
-                ("segment_cpu", _D), ("status", _I)]
+                ("segment_cpu", _D), ("start", _I), ("start_out", _P), ("status", _I)]
 
 
 def segment_functions(lib: ctypes.CDLL, prefix: str):

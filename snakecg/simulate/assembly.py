@@ -4,12 +4,12 @@ the JSON-ready summary (schema :data:`~snakecg.simulate.records.SCHEMA`)."""
 
 from __future__ import annotations
 
-import weakref
+from functools import partial
 
 import numpy as np
 
 from .. import kernels
-from .records import SCHEMA, Trajectory, jsonable
+from .records import SCHEMA, Deferred, Trajectory, jsonable
 
 __all__ = ["assemble", "summary"]
 
@@ -62,36 +62,72 @@ def assemble_arrays(sim, t, Y, impact, R, tau, mode_index, modes, events, status
     """:func:`assemble` of a run done in C (``core_run``): the samples ``t``, ``Y`` with
     their energy removed ``impact``, their quantities ``R`` (rows as the compiled samples'
     where the C evaluated them, else a non-zero status), the constant torque ``tau`` and each
-    sample's mode (an index into ``modes``)."""
+    sample's mode (an index into ``modes``). The contact flags, wheel states and constraint
+    power come from the modes' table when first read."""
     dyn = sim.dyn
     nc, ny = dyn.nc, dyn.ny
-    dyn.nfev += len(t)
-    for i in np.flatnonzero(R[:, -1]):  # handed back: the Python right-hand side
-        mode = modes[int(mode_index[i])]
-        ydot, li, gi, si, AV, (_, sri, nai, nqi) = dyn.rates(t[i], Y[i], mode,
-                                                              lambda *_: tau)
-        R[i, :ny], R[i, ny:ny + nc], R[i, ny + nc:ny + 2 * nc] = ydot, li, AV
-        R[i, ny + 2 * nc:] = (gi, si, sri, nai, nqi, 0.0)
-    idx = mode_index.astype(np.intp)
-    free = np.array([m.free for m in modes])[idx]
-    p_cons = np.einsum("ij,ij->i", R[:, ny:ny + nc] * R[:, ny + nc:ny + 2 * nc], free)
-    contact = np.array([m.contact_held for m in modes])[idx]
-    wheel_state = np.array([m.wheel_names for m in modes], dtype="<U6")[idx]
-    return trajectory(sim, t, Y, impact, R, np.tile(tau, (len(t), 1)), p_cons, contact,
-                      wheel_state, events, status)
+    N = len(t)
+    dyn.nfev += N
+    if R[:, -1].any():
+        for i in np.flatnonzero(R[:, -1]):  # handed back: the Python right-hand side
+            mode = modes[int(mode_index[i])]
+            ydot, li, gi, si, AV, (_, sri, nai, nqi) = dyn.rates(t[i], Y[i], mode,
+                                                                  lambda *_: tau)
+            R[i, :ny], R[i, ny:ny + nc], R[i, ny + nc:ny + 2 * nc] = ydot, li, AV
+            R[i, ny + 2 * nc:] = (gi, si, sri, nai, nqi, 0.0)
+    idx = mode_index.astype(np.intp)  # (a new array: mode_index is the workspace's)
+    lam_av = R[:, ny:ny + nc] * R[:, ny + nc:ny + 2 * nc]
+
+    def of_modes():
+        free = np.array([m.free for m in modes])[idx]
+        return {"power_constraint": np.einsum("ij,ij->i", lam_av, free),
+                "contact": np.array([m.contact_held for m in modes])[idx],
+                "wheel_state": np.array([m.wheel_names for m in modes], dtype="<U6")[idx]}
+
+    later = Deferred(of_modes)
+    taus = np.empty((N, len(tau)))
+    taus[:] = tau
+    return trajectory(sim, t, Y, impact, R, taus, later, later, later, events, status)
 
 
 def trajectory(sim, t, Y, impact, R, tau, p_cons, contact, wheel_state, events, status):
-    """The :class:`Trajectory` of the samples ``t``, ``Y`` and their quantities."""
-    model, dyn, cfg = sim.model, sim.dyn, sim.settings
-    N = len(t)
+    """The :class:`Trajectory` of the samples ``t``, ``Y`` and their quantities (``p_cons``,
+    ``contact`` and ``wheel_state``: arrays, or :class:`Deferred`). What needs the mass
+    matrices and link poses of the samples (kinetic energy, COM, poses, the displacement-based
+    slippage ratio, the energy balance) and the geometry are computed when first read, from
+    copies of the samples."""
+    dyn = sim.dyn
     ns, nc, nx, ny = dyn.ns, dyn.nc, dyn.nx, dyn.ny
     e = ny + 2 * nc
+    W = Y[:, 2 * nx:]
+    kin = Deferred(partial(_kinematic, sim, Y.copy(), impact.copy()))
+    return Trajectory(
+        t=t, q=Y[:, :ns], v=Y[:, nx:nx + ns], q_obj=Y[:, ns:nx], v_obj=Y[:, nx + ns:2 * nx],
+        rho=dyn.rho.copy(), tau=tau, lam=R[:, ny:ny + nc].copy(), qdd=R[:, nx:nx + ns].copy(),
+        a_obj=R[:, nx + ns:2 * nx].copy(), contact=contact, wheel_state=wheel_state,
+        sr=R[:, e + 2].copy(), norm_a_obj=R[:, e + 3].copy(), norm_qdd=R[:, e + 4].copy(),
+        sr_displacement=kin, com=kin, link_poses=kin, gap=R[:, e].copy(),
+        s=R[:, e + 1].copy(), row_velocity=R[:, ny + nc:e].copy(), kinetic_energy=kin,
+        power_tau=R[:, 2 * nx].copy(), power_friction=R[:, 2 * nx + 1].copy(),
+        work_tau=W[:, 0].copy(), work_friction=W[:, 1].copy(), work_object=W[:, 2].copy(),
+        power_constraint=p_cons, impact_loss=impact, energy_residual=kin, events=events,
+        summary=lambda traj: summary(sim, traj, status),
+        geometry=Deferred(partial(_geometry, sim.model, dyn)))
+
+
+def _kinematic(sim, Y, loss) -> dict:
+    """The trajectory's fields that need ``M_s`` and the link poses of the samples ``Y``
+    (``loss``: the energy removed by impacts and projections up to each), and
+    ``sim.ke_initial``."""
+    model, dyn, cfg = sim.model, sim.dyn, sim.settings
+    N = len(Y)
+    ns, nx = dyn.ns, dyn.nx
     q, q_obj = Y[:, :ns], Y[:, ns:nx]
     v, v_obj = Y[:, nx:nx + ns], Y[:, nx + ns:2 * nx]
     W = Y[:, 2 * nx:]
     # M_s and the link poses at the initial configuration and at every sample, in one call
-    Q = np.vstack((cfg.q0, q))
+    Q = np.empty((N + 1, ns))
+    Q[0], Q[1:] = cfg.q0, q
     kin = sim.compiled.kinematics(Q) if sim.compiled is not None \
         and sim.compiled.has_kinematics else None
     if kin is None:  # SceneModel.mass_matrix, link_poses on the run's own arrays
@@ -100,55 +136,38 @@ def trajectory(sim, t, Y, impact, R, tau, p_cons, contact, wheel_state, events, 
                             K=model.parameters)["poses"].transpose(0, 2, 1))
     M0, M = kin[0][0], kin[0][1:]
     poses = np.ascontiguousarray(kin[1][1:])
-    ke = 0.5 * np.einsum("ni,nij,nj->n", v, M, v) + 0.5 * (v_obj**2 @ dyn.mo)
+    mo = dyn.mo
+    ke = 0.5 * np.einsum("ni,ni->n", np.einsum("nij,nj->ni", M, v), v) + 0.5 * (
+        v_obj**2 @ mo)
     sim.ke_initial = 0.5 * float(cfg.v0 @ M0 @ cfg.v0) + 0.5 * float(
-        cfg.v_obj0 @ (dyn.mo * cfg.v_obj0))
-    m = np.asarray(model.robot.mass)
-    com = np.einsum("...ik,i->...k", poses[..., :2], m) / m.sum()  # SceneModel.com
+        cfg.v_obj0 @ (mo * cfg.v_obj0))
+    m = np.asarray(model.robot.mass, dtype=float)
+    com = (m @ poses[..., :2]) / m.sum()  # SceneModel.com
     # displacement-based slippage ratio (metric of the initial configuration)
     dq = q - q[0]
     do = q_obj - q_obj[0]
-    num = np.einsum("ni,i,ni->n", do, dyn.mo, do)
+    num = (do * do) @ mo
     den = num + np.einsum("ni,ij,nj->n", dq, M0, dq)
     sr_d = np.full(N, np.nan)
     np.divide(num, den, out=sr_d, where=den > 0)
-    loss = impact  # cumulative kinetic energy removed by impacts / projections
     residual = (ke - sim.ke_initial) - (W[:, 0] + W[:, 1] + W[:, 2] - loss)
-    geometry = {k: v.copy() if isinstance(v, np.ndarray) else v
-                for k, v in _geometry(model, dyn).items()}
-    return Trajectory(
-        t=t, q=q, v=v, q_obj=q_obj, v_obj=v_obj, rho=dyn.rho.copy(), tau=tau,
-        lam=R[:, ny:ny + nc].copy(), qdd=R[:, nx:nx + ns].copy(),
-        a_obj=R[:, nx + ns:2 * nx].copy(), contact=contact, wheel_state=wheel_state,
-        sr=R[:, e + 2].copy(), norm_a_obj=R[:, e + 3].copy(), norm_qdd=R[:, e + 4].copy(),
-        sr_displacement=sr_d, com=com, link_poses=poses, gap=R[:, e].copy(),
-        s=R[:, e + 1].copy(), row_velocity=R[:, ny + nc:e].copy(), kinetic_energy=ke,
-        power_tau=R[:, 2 * nx].copy(), power_friction=R[:, 2 * nx + 1].copy(),
-        work_tau=W[:, 0].copy(), work_friction=W[:, 1].copy(), work_object=W[:, 2].copy(),
-        power_constraint=p_cons, impact_loss=loss, energy_residual=residual, events=events,
-        summary=lambda traj: summary(sim, traj, status), geometry=geometry)
-
-
-_GEOMETRY: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
+    return {"kinetic_energy": ke, "com": com, "link_poses": poses, "sr_displacement": sr_d,
+            "energy_residual": residual}
 
 
 def _geometry(model, dyn) -> dict:
-    """The trajectory's ``geometry`` (constants of the model, for drawing), built once per
-    model; the caller copies the arrays."""
-    g = _GEOMETRY.get(model)
-    if g is None:
-        scene = dyn.scene
-        g = _GEOMETRY[model] = {
-            "length": np.asarray(scene.robot.length, float),
-            "com": np.asarray(scene.robot.com, float),
-            "wheel_offset": dyn.woff.copy(),
-            "wheel_links": np.flatnonzero(dyn.present[1:]) + 1,
-            "contact_link": dyn.k + 1,
-            "side": dyn.sigma,
-            "object_distance": float(scene.object_distance),
-            "wheel_bounds": dyn.bounds[1:].copy(),
-        }
-    return g
+    """The trajectory's ``geometry``: constants of the model, for drawing."""
+    scene = dyn.scene
+    return {"geometry": {
+        "length": np.asarray(scene.robot.length, float),
+        "com": np.asarray(scene.robot.com, float),
+        "wheel_offset": dyn.woff.copy(),
+        "wheel_links": np.flatnonzero(dyn.present[1:]) + 1,
+        "contact_link": dyn.k + 1,
+        "side": dyn.sigma,
+        "object_distance": float(scene.object_distance),
+        "wheel_bounds": dyn.bounds[1:].copy(),
+    }}
 
 
 def _runs(blocks):
@@ -176,7 +195,7 @@ def summary(sim, tr: Trajectory, status: str) -> dict:
     held = tr.contact
     # time fractions from the piecewise-constant flags of each interval
     held_frac = float(np.sum(dt * held[:-1]) / span) if dt.size else float(held[0])
-    sliding = np.isin(tr.wheel_state, ("slide+", "slide-"))
+    sliding = (tr.wheel_state == "slide+") | (tr.wheel_state == "slide-")
     slide_frac = (np.sum(dt[:, None] * sliding[:-1], axis=0) / span).tolist() \
         if dt.size else sliding[0].astype(float).tolist()
     sr_mean = float(np.sum(0.5 * dt * (tr.sr[1:] + tr.sr[:-1])) / span) if dt.size \
@@ -196,7 +215,8 @@ def summary(sim, tr: Trajectory, status: str) -> dict:
         else 0.0
     do = tr.q_obj[-1] - tr.q_obj[0]
     dc = tr.com[-1] - tr.com[0]
-    ke0, ke1 = float(sim.ke_initial), float(tr.kinetic_energy[-1])
+    ke1 = float(tr.kinetic_energy[-1])  # (computed first if deferred: sim.ke_initial with it)
+    ke0 = float(sim.ke_initial)
     return jsonable({
         "schema": SCHEMA,
         "status": status,

@@ -22,9 +22,15 @@ from types import SimpleNamespace
 
 import numpy as np
 
-from ..core.segment import (RUN_COMPLETED, RUN_STOPPED, SEG_END, SEG_EVENT, SEG_TOO_SMALL,
-                            SETTLE_DONE, Run, Segment, Settle)
-from ..solver import PIVOT_TOL, REL_TOL, default_max_iter
+from ..core.segment import (
+    RUN_COMPLETED,
+    RUN_STOPPED,
+    SEG_END,
+    SEG_EVENT,
+    SEG_TOO_SMALL,
+    SETTLE_DONE,
+)
+from .workspace import give, take
 
 __all__ = ["CompiledSegments", "compiled_reason"]
 
@@ -69,27 +75,29 @@ def placement(model, q0):
                   "object_distance": [model.scene.object_distance], "side": model._side}
         packed = np.concatenate([np.ravel(np.asarray(values[k], dtype=float))
                                  for k in sig.in_names if k != "q"])
-        addresses, off = [], 0
-        for k, size in zip(sig.in_names, sig.in_sizes):
-            if k == "q":
-                addresses.append(None)
-            else:
-                addresses.append(packed.ctypes.data + 8 * off)
+        argp, off = (ctypes.c_void_p * len(sig.in_names))(), 0
+        for i, (k, size) in enumerate(zip(sig.in_names, sig.in_sizes)):
+            if k != "q":
+                argp[i] = packed.ctypes.data + 8 * off
                 off += size
         sizes = [r * c for r, c in sig.out_shapes]  # q_obj (3), rho (2), contact point (2)
-        fixed = _PLACE[model] = (packed, addresses, sig.in_names.index("q"), sizes,
-                                 np.cumsum([0, *sizes[:-1]]).tolist())
-    packed, addresses, k, sizes, offsets = fixed
-    q0 = np.ascontiguousarray(q0, dtype=float)
-    argp = (ctypes.c_void_p * len(addresses))(*addresses)
-    argp[k] = q0.ctypes.data
-    out = np.empty(sum(sizes))
-    base = out.ctypes.data
-    resp = (ctypes.c_void_p * len(sizes))(*(base + 8 * o for o in offsets))
-    if fn(1, argp, (ctypes.c_longlong * len(addresses))(), resp) != 0:
+        # the template of the pointer arrays (copied at each call: the q and output pointers
+        # are the call's), the strides (all 0: one sample), where q and the outputs go
+        fixed = _PLACE[model] = (packed, argp, (ctypes.c_longlong * len(argp))(),
+                                 sig.in_names.index("q"), len(q0),
+                                 np.cumsum([len(q0), *sizes[:-1]]).tolist(), sum(sizes))
+    _, template, strides, k, ns, offsets, n_out = fixed
+    # q0 and the outputs in one new array
+    buf = np.empty(ns + n_out)
+    buf[:ns] = q0
+    base = buf.ctypes.data
+    argp = type(template).from_buffer_copy(template)
+    argp[k] = base
+    resp = (ctypes.c_void_p * len(offsets))(*[base + 8 * o for o in offsets])
+    if fn(1, argp, strides, resp) != 0:
         q_obj0, rho, _ = model.place(q0[None, :], 1)
         return q_obj0[0].copy(), rho[0].copy()
-    return out[:3].copy(), out[3:5].copy()
+    return buf[ns:ns + 3].copy(), buf[ns + 3:ns + 5].copy()
 
 
 class CompiledSegments:
@@ -99,77 +107,29 @@ class CompiledSegments:
     def __init__(self, dyn, settings):
         model = settings.model
         self.dyn = dyn
-        self._fn = model.core.integrate_segment
-        self._samples = model.core.mode_samples
         self._model = model  # keeps the scene vector alive
-        # the batch drivers of mass_matrix and link_poses (inputs q, K): their pointer arrays
-        be = model.backend
-        fns = getattr(be, "_fns", {})
-        self.has_kinematics = all(
-            name in fns and be.signatures[name].in_names in (["q", "K"], ["K", "q"])
-            for name in ("mass_matrix", "link_poses"))
-        if self.has_kinematics:
-            self._K = np.ascontiguousarray(model.parameters, dtype=float)
-            self._kin = []
-            for name in ("mass_matrix", "link_poses"):
-                k = be.signatures[name].in_names.index("q")
-                argp = (ctypes.c_void_p * 2)()
-                argp[1 - k] = self._K.ctypes.data
-                self._kin.append((fns[name], argp, k, (ctypes.c_void_p * 1)()))
-            self._kin_strides = []  # q's stride n_s (at its index), K broadcast
-            for k in (0, 1):
-                st = (ctypes.c_longlong * 2)()
-                st[k] = dyn.ns
-                self._kin_strides.append(st)
-        ny, na, nc = dyn.ny, dyn.na, dyn.nc
-        # every array the C reads or writes, as views of one buffer (one address lookup)
-        sizes = {"y0": ny, "y_end": ny, "tau": na, "state": nc, "f_obj": 3, "rho": 2,
-                 "s_y": ny, "s_y_out": ny, "s_prev": nc, "s_forced": nc, "s_state": nc,
-                 "s_forced_out": nc, "s_impact_lam": nc, "s_projection_lam": nc}
-        buf = np.zeros(sum(sizes.values()))
-        base, addr, off = buf.ctypes.data, {}, 0
-        for name, size in sizes.items():
-            setattr(self, name, buf[off:off + size])
-            addr[name] = base + 8 * off
-            off += size
+        # the model's buffers and structs (a workspace of its pool, given back by release())
+        ws = self.ws = take(model)
+        self.__dict__.update(ws.shared)
         self.f_obj[:] = dyn.f_obj
         self.rho[:] = dyn.rho
-        events = np.zeros((2, nc + 3), dtype=np.int64)
-        self.ev_kind, self.ev_row = events
-        self.t_eval = np.zeros(0)
-        self.y_eval = np.zeros((0, ny))
-        seg = Segment()
-        seg.scene = model.scene_address
-        seg.tau, seg.f_obj, seg.rho = addr["tau"], addr["f_obj"], addr["rho"]
-        seg.state = addr["state"]
-        seg.ev_kind = events.ctypes.data
-        seg.ev_row = seg.ev_kind + 8 * (nc + 3)
-        seg.contact_index, seg.c_k, seg.l_k = dyn.k, dyn.c_k, dyn.l_k
-        seg.alpha, seg.pivot_tol = dyn.alpha, PIVOT_TOL
+        seg = self.seg
+        seg.alpha = dyn.alpha
         seg.rtol, seg.atol = settings.rtol, settings.atol
         seg.max_step = math.inf if settings.max_step is None else settings.max_step
-        seg.y0, seg.y_end = addr["y0"], addr["y_end"]
-        self.seg = seg
-        self._address = ctypes.addressof(seg)
+        self.t_eval = np.zeros(0)
+        self.y_eval = np.zeros((0, dyn.ny))
         self.steps = 0
         self.handed_back = 0  # segments and settles done in Python instead
         self.runs_handed_back = 0  # whole runs (core_run) done by the Python loop instead
-        self._run = model.core.run
-        self.y_start = np.zeros(ny)
-        # core_settle (the torque is the segments')
-        self._settle = model.core.settle
-        st = Settle()
-        st.scene, st.tau, st.f_obj, st.rho = (model.scene_address, addr["tau"], addr["f_obj"],
-                                              addr["rho"])
-        st.contact_index, st.c_k, st.l_k = dyn.k, dyn.c_k, dyn.l_k
-        st.pivot_tol, st.rel_tol, st.max_iter = PIVOT_TOL, REL_TOL, default_max_iter(nc)
-        st.y, st.forced = addr["s_y"], addr["s_forced"]
-        st.y_out, st.state, st.forced_out = addr["s_y_out"], addr["s_state"], addr["s_forced_out"]
-        st.impact_lam, st.projection_lam = addr["s_impact_lam"], addr["s_projection_lam"]
-        self._prev_address = addr["s_prev"]
-        self.st = st
-        self._settle_address = ctypes.addressof(st)
-        self._buf = buf, events  # keeps the arrays alive
+        self.started = False  # a run handed back after its start (run_all)
+
+    def release(self) -> None:
+        """Give the workspace back to the model's pool (at the end of the run: nothing may be
+        computed with this object afterwards)."""
+        ws, self.ws = self.ws, None
+        if ws is not None:
+            give(self._model, ws)
 
     def run(self, t0, t1, y, mode, tau, specs, t_eval):
         """One segment from ``(t0, y)`` to ``t1`` in ``mode`` with the torque ``tau`` and the
@@ -210,49 +170,76 @@ class CompiledSegments:
         """The whole run from the state ``y`` in ``mode`` (after the start's settle, the
         energy ``loss`` removed there) with the constant torque ``tau`` to ``T``, output at
         ``grid`` (increasing, the last is ``T``), in one C call (``core_run``): the filled
-        :class:`~snakecg.core.segment.Run` with its arrays (``t``, ``y``, ``mode``,
-        ``loss`` and the quantities ``samples`` (as :meth:`samples_into`) of each sample,
-        the ``modes`` and the ``events``, see run.c), or ``None`` when the Python loop must
-        do the run."""
-        dyn = self.dyn
-        ny, nc = dyn.ny, dyn.nc
-        grid = np.ascontiguousarray(grid, dtype=float)
+        :class:`~snakecg.core.segment.Run` (the workspace's: read it before the next run) and
+        its arrays (``t``, ``y``, ``mode``, ``loss`` and the quantities ``samples`` (as
+        :meth:`samples_into`) of each sample, the ``modes`` and the ``events``, see run.c),
+        or ``None`` when the Python loop must do the run.
+
+        With ``mode=None``, ``y`` is the initial state and the C does the start as well
+        (the contact's gap and position, the start's settle): ``arrays.start`` is then what it
+        recorded (:data:`~snakecg.simulate.workspace.START_WIDTH`), the first mode the start's
+        and ``loss`` is not read. ``started`` tells, after a run handed back, whether the C
+        got past the start (the Python loop would hand back the same run again)."""
+        ny, nc = self.dyn.ny, self.dyn.nc
+        n_grid = len(grid)
         cap_events = min(int(max_events), RUN_EVENTS) + 1
-        cap = len(grid) + 2 * cap_events + 2
+        cap = n_grid + 2 * cap_events + 2
         width = ny + 2 * nc + 6
-        sizes = {"t": cap, "y": cap * ny, "mode": cap, "loss": cap, "samples": cap * width,
-                 "modes": (cap_events + 1) * (nc + 1), "events": cap_events * (11 + nc)}
-        buf = np.empty(sum(sizes.values()))
-        base, out, addr, off = buf.ctypes.data, {}, {}, 0
-        for name, size in sizes.items():
-            out[name], addr[name] = buf[off:off + size], base + 8 * off
-            off += size
+        # one after the other in the workspace's buffer: t, mode, loss (cap each), y (cap x
+        # ny), samples (cap x width), modes, events, then the grid
+        o_y = 3 * cap
+        o_samples = o_y + cap * ny
+        o_modes = o_samples + cap * width
+        o_events = o_modes + (cap_events + 1) * (nc + 1)
+        o_grid = o_events + cap_events * (11 + nc)
+        buf, base = self.ws.run_buffer(o_grid + n_grid)
+        buf[o_grid:o_grid + n_grid] = grid
         self.tau[:] = tau
-        self.state[:] = mode.state  # the start's mode, then the current one
         self.y_start[:] = y
-        R = Run()
-        R.sg, R.st = self._address, self._settle_address
-        R.T, R.gtol, R.grid, R.n_grid = T, gtol, grid.ctypes.data, len(grid)
-        R.max_events, R.t, R.off_link, R.loss = int(max_events), 0.0, int(mode.off_link), loss
-        R.y = self.y_start.ctypes.data
-        R.cap, R.t_out, R.y_out = cap, addr["t"], addr["y"]
-        R.mode_out, R.loss_out = addr["mode"], addr["loss"]
-        R.cap_modes, R.modes = cap_events + 1, addr["modes"]
-        R.cap_events, R.events = cap_events, addr["events"]
-        R.samples = addr["samples"]
-        status = self._run(ctypes.addressof(R))
+        R = self.ws.run
+        if mode is not None:
+            self.state[:] = mode.state  # the start's mode, then the current one
+            R.off_link, R.loss, R.start = int(mode.off_link), loss, 0
+        else:
+            R.start = 1
+        R.T, R.gtol, R.grid, R.n_grid = T, gtol, base + 8 * o_grid, n_grid
+        R.max_events, R.t = int(max_events), 0.0
+        R.cap, R.t_out, R.mode_out, R.loss_out = cap, base, base + 8 * cap, base + 16 * cap
+        R.y_out, R.samples = base + 8 * o_y, base + 8 * o_samples
+        R.cap_modes, R.modes = cap_events + 1, base + 8 * o_modes
+        R.cap_events, R.events = cap_events, base + 8 * o_events
+        R.n_modes = 0
+        status = self._run(self.ws.run_address)
         if status not in (RUN_COMPLETED, RUN_STOPPED):
-            self.runs_handed_back += 1
+            self.started = R.n_modes > 0
             return None
         n = R.n_out
-        R.arrays = SimpleNamespace(
-            t=out["t"][:n], y=out["y"][:n * ny].reshape(n, ny), mode=out["mode"][:n],
-            loss=out["loss"][:n], modes=out["modes"][:R.n_modes * (nc + 1)].reshape(-1, nc + 1),
-            events=out["events"][:R.n_events * (11 + nc)].reshape(-1, 11 + nc),
-            samples=out["samples"][:n * width].reshape(n, width))
+        # what the trajectory keeps is copied out of the workspace (t, y, loss)
+        arrays = SimpleNamespace(
+            t=buf[:n].copy(), y=buf[o_y:o_y + n * ny].reshape(n, ny).copy(),
+            mode=buf[cap:cap + n], loss=buf[2 * cap:2 * cap + n].copy(),
+            modes=buf[o_modes:o_modes + R.n_modes * (nc + 1)].reshape(-1, nc + 1),
+            events=buf[o_events:o_events + R.n_events * (11 + nc)].reshape(-1, 11 + nc),
+            samples=buf[o_samples:o_samples + n * width].reshape(n, width),
+            start=self.start_out if mode is None else None)
         self.steps += R.nsteps
-        dyn.nfev += R.nfev
-        return R
+        self.dyn.nfev += R.nfev
+        return R, arrays
+
+    def modes_of(self, table, mode_of) -> list:
+        """The modes of the rows (row states, then off_link) of a whole run's ``table``:
+        ``mode_of(state, off_link)`` (:meth:`~snakecg.simulate.events.Events.mode`) of each,
+        remembered by the workspace (the model's bounds are its)."""
+        known, nc, out = self.ws.modes, self.dyn.nc, []
+        for row in table:
+            key = row.tobytes()
+            mode = known.get(key)
+            if mode is None:
+                if len(known) >= 4096:
+                    known.clear()
+                mode = known[key] = mode_of(row[:nc], bool(row[nc]))
+            out.append(mode)
+        return out
 
     def settle(self, y, prev, forced: dict, contact_candidate: bool, tau):
         """``core_settle`` at the state ``y`` after the mode ``prev`` (``None`` at the start)
@@ -305,17 +292,18 @@ class CompiledSegments:
         (n, n_s): the generated ``mass_matrix`` and ``link_poses`` through their compiled
         batch drivers on the run's own arrays (what :meth:`snakecg.SceneModel.mass_matrix`
         and :meth:`~snakecg.SceneModel.link_poses` give, without their checks), or ``None``
-        when an evaluation failed."""
+        when an evaluation failed. Reads nothing of the workspace that a run writes (also
+        used after the run, when a deferred field of its trajectory is first read)."""
         Q = np.ascontiguousarray(Q, dtype=float)
         n = len(Q)
         ns, nl = self.dyn.ns, self.dyn.nl
         buf = np.empty(n * (ns * ns + 3 * nl))
         q, base = Q.ctypes.data, buf.ctypes.data
         outs = (base, base + 8 * n * ns * ns)
-        for (fn, argp, k, resp), out in zip(self._kin, outs):
-            argp[k] = q
-            resp[0] = out
-            if fn(n, argp, self._kin_strides[k], resp) != 0:
+        for (fn, K, k, strides), out in zip(self._kin, outs):
+            argp = (ctypes.c_void_p * 2)()
+            argp[k], argp[1 - k] = q, K
+            if fn(n, argp, strides, (ctypes.c_void_p * 1)(out)) != 0:
                 return None
         M = buf[:n * ns * ns].reshape(n, ns, ns).transpose(0, 2, 1)
         return M, buf[n * ns * ns:].reshape(n, nl, 3)

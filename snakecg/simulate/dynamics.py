@@ -15,6 +15,7 @@ contact, ``udot = -2 alpha u`` for a sticking wheel).
 from __future__ import annotations
 
 import math
+import weakref
 from functools import cached_property
 
 import numpy as np
@@ -31,6 +32,34 @@ _RHS_OUTPUTS = ("qdd", "a_obj", "lam", "gap", "s", "sr", "norm_a_obj", "norm_qdd
                 "pivot_ratio", "delassus")
 
 
+_CONSTANTS: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
+
+
+def _constants(model) -> dict:
+    """What :class:`Dynamics` takes from the model and its scene, built once per model (the
+    arrays read-only: every run shares them)."""
+    c = _CONSTANTS.get(model)
+    if c is None:
+        scene = model.scene
+        ns, na, nl, nc = (model.n_coordinates, model.n_joints, model.n_links,
+                          model.n_constraints)
+        k = scene.contact_link - 1
+        woff = np.asarray(scene.wheel_offset, dtype=float).copy()
+        m_obj = scene.object_mass
+        c = {"scene": scene, "ns": ns, "na": na, "nl": nl, "nc": nc, "nx": ns + 3,
+             "ny": 2 * (ns + 3) + N_WORK, "present": model.present.copy(),
+             "bounds": model.bounds.copy(), "k": k, "sigma": scene.side_sign,
+             "c_k": float(scene.robot.com[k]), "l_k": float(scene.robot.length[k]),
+             "woff": woff, "_woff": woff.tolist(),
+             "mo": np.array([m_obj, m_obj, scene.object_inertia]),
+             "_zeros_nc": np.zeros(nc)}
+        for v in c.values():
+            if isinstance(v, np.ndarray):
+                v.flags.writeable = False
+        _CONSTANTS[model] = c
+    return c
+
+
 class Dynamics:
     """The equations of one run: the model's generated functions bound to the run's
     constants (parameters, object, contact point ``rho`` in the object frame, wrench
@@ -39,34 +68,20 @@ class Dynamics:
     """
 
     def __init__(self, model, rho: np.ndarray, f_obj: np.ndarray, alpha: float):
-        from scipy.linalg.lapack import dposv
-
-        scene = model.scene
-        self.scene = scene
-        ns, na, nl, nc = (model.n_coordinates, model.n_joints, model.n_links,
-                          model.n_constraints)
-        self.ns, self.na, self.nl, self.nc = ns, na, nl, nc
-        self.nx = ns + 3
-        self.ny = 2 * self.nx + N_WORK
+        self.__dict__.update(_constants(model))  # scene, sizes, rows, contact link, object
         self.rho, self.f_obj, self.alpha = rho, f_obj, alpha
-        self.present = model.present.copy()
-        self.bounds = model.bounds.copy()
-        self.k = scene.contact_link - 1
-        self.sigma = scene.side_sign
-        self.c_k = float(scene.robot.com[self.k])
-        self.l_k = float(scene.robot.length[self.k])
-        self.woff = np.asarray(scene.wheel_offset, dtype=float)
-        self._woff = self.woff.tolist()
         self._rho = tuple(rho.tolist())
-        m_obj = scene.object_mass
-        self.mo = np.array([m_obj, m_obj, scene.object_inertia])
         self._model = model
         self._cache = None  # (t, mode, tau_fn, y bytes, rates) of the last evaluation
-        self._zeros_nc = np.zeros(nc)
-        self._posv = dposv
         self.nfev = 0
         self.njev = 0
         self.singular = 0
+
+    @cached_property
+    def _posv(self):
+        from scipy.linalg.lapack import dposv
+
+        return dposv
 
     # --- the generated functions, bound on first use (a run in compiled code may need none)
     def _bound(self, name, constants):

@@ -37,6 +37,8 @@ STABILIZATION_MAX = 1e6
 def positive(name, value, *, allow_none=False, allow_zero=False):
     """``value`` as a finite float ``> 0`` (``>= 0`` with ``allow_zero``; ``None`` passes
     with ``allow_none``)."""
+    if type(value) is float and 0.0 < value < math.inf:
+        return value  # already what the checks below would give
     if value is None and allow_none:
         return None
     if isinstance(value, bool) or not isinstance(value, (int, float, np.floating, np.integer)):

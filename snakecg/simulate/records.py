@@ -11,7 +11,8 @@ import numpy as np
 
 from ..errors import SnakecgError
 
-__all__ = ["SCHEMA", "SimEvent", "SimulationError", "State", "Trajectory", "jsonable"]
+__all__ = ["SCHEMA", "Deferred", "SimEvent", "SimulationError", "State", "Trajectory",
+           "jsonable"]
 
 #: Version of the summary dictionary (``Trajectory.summary``, ``snakecg simulate --json``).
 SCHEMA = "snakecg.simulate/1"
@@ -83,6 +84,11 @@ class Trajectory:
     * ``summary``: a JSON-ready dictionary (schema ``snakecg.simulate/1``, docs/simulate.md),
       computed from the arrays above on first access (given as a function of the trajectory,
       it is called then; a run that never reads it does not pay for it).
+
+    Any other field may be given as a :class:`Deferred`: it is computed when first read
+    (``simulate`` defers the fields that need the mass matrices and link poses of the samples,
+    the ones from the modes' tables and ``geometry``); a copy, a pickle, ``arrays()`` and
+    ``save()`` compute them first.
     """
 
     t: np.ndarray
@@ -120,19 +126,38 @@ class Trajectory:
     geometry: dict = field(repr=False, default_factory=dict)
 
     def __post_init__(self):
+        d = self.__dict__
         if callable(self.summary):  # computed on first access (__getattr__)
-            self.__dict__["_summarize"] = self.__dict__.pop("summary")
+            d["_summarize"] = d.pop("summary")
+        deferred = {k: v for k, v in d.items() if type(v) is Deferred}
+        if deferred:  # computed on first access (__getattr__)
+            for k in deferred:
+                del d[k]
+            d["_deferred"] = deferred
 
     def __getattr__(self, name):
-        # only reached when ``summary`` is not computed yet
-        summarize = self.__dict__.get("_summarize")
+        # only reached for a field not computed yet (or a name that is no field)
+        d = self.__dict__
+        deferred = d.get("_deferred")
+        if deferred and name in deferred:
+            group = deferred[name]
+            for k, v in group.compute().items():
+                if deferred.get(k) is group:
+                    del deferred[k]
+                    d.setdefault(k, v)  # unless set meanwhile
+            if not deferred:
+                del d["_deferred"]
+            return d[name]
+        summarize = d.get("_summarize")
         if name != "summary" or summarize is None:
             raise AttributeError(f"{type(self).__name__!r} object has no attribute {name!r}")
         self.summary = summarize(self)
-        del self.__dict__["_summarize"]
+        del d["_summarize"]
         return self.summary
 
     def __getstate__(self):
+        for name in list(self.__dict__.get("_deferred", ())):
+            getattr(self, name)  # computed before a copy or a pickle
         self.summary  # noqa: B018 - computed before a copy or a pickle
         return self.__dict__
 
@@ -157,6 +182,16 @@ class Trajectory:
 
         with atomic_path(path) as tmp, open(tmp, "wb") as fh:
             np.savez_compressed(fh, **self.arrays())
+
+
+class Deferred:
+    """Fields of a :class:`Trajectory` computed together when one of them is first read:
+    ``compute()`` returns them by name (the same :class:`Deferred` is given for each)."""
+
+    __slots__ = ("compute",)
+
+    def __init__(self, compute):
+        self.compute = compute
 
 
 def jsonable(x):

@@ -24,6 +24,7 @@ from .inputs import Settings, check_arguments
 from .modes import transitions
 from .records import SimEvent, SimulationError, Trajectory
 from .torques import Torques
+from .workspace import START_IMPACT
 
 __all__ = ["Simulator", "simulate"]
 
@@ -102,17 +103,35 @@ class Simulator:
 
     def _run_compiled(self, y, mode, loss, grid, events, wall0):
         """The loop of :meth:`run` for a constant torque in C (``core_run``, see
-        :meth:`CompiledSegments.run_all`): its trajectory, or ``None`` when the Python loop
-        must do the run (nothing of the run's state was changed then)."""
+        :meth:`CompiledSegments.run_all`), from the state ``y`` after the start's settle in
+        ``mode``, or with ``mode=None`` from the initial state ``y``, the start included: its
+        trajectory, or ``None`` when the Python loop must do the run (nothing of the run's
+        state was changed then)."""
         cfg, handler = self.settings, self.events
         T = cfg.duration
-        tau = np.asarray(self.torques.function()(0.0, y, mode), dtype=float)
-        R = self.compiled.run_all(y, mode, loss, tau, grid, T, handler.gtol, cfg.max_events)
-        if R is None:
+        tau = self.settings.law  # the constant torque (Torques.function's)
+        done = self.compiled.run_all(y, mode, loss, tau, grid, T, handler.gtol, cfg.max_events)
+        if done is None:
             return None
-        a = R.arrays
+        R, a = done
         nc = self.dyn.nc
-        modes = [handler.mode(m[:nc], bool(m[nc])) for m in a.modes]
+        modes = self.compiled.modes_of(a.modes, handler.mode)
+        if a.start is not None:  # Events.settle's records of the start
+            self.initial_mode = after = modes[0].describe()
+            o = a.start
+            if o[START_IMPACT]:
+                lam = o[START_IMPACT + 5:START_IMPACT + 5 + int(o[START_IMPACT + 4])]
+                events.append(SimEvent(0.0, "impact", 0, "start", after, {
+                    "closing_velocity": float(o[START_IMPACT + 1]), "impulse": float(lam[0]),
+                    "wheel_impulses": lam[1:].tolist(),
+                    "energy_loss": -float(o[START_IMPACT + 3]),
+                    "kinetic_energy_before": float(o[START_IMPACT + 2])}))
+            p = START_IMPACT + 5 + nc  # the projection
+            if o[p] and o[p + 1] > o[p + 2]:  # drift above vtol: initial velocities
+                events.append(SimEvent(0.0, "projection", int(o[p + 3]), "start", after, {
+                    "impulses": o[p + 6:p + 6 + int(o[p])].tolist(),
+                    "energy_loss": -float(o[p + 5]),
+                    "kinetic_energy_before": float(o[p + 4])}))
         for ev in a.events:  # Events.handle's records: the transitions, then the impact
             t_e, before, after = float(ev[0]), modes[int(ev[3])], modes[int(ev[4])]
             events.extend(transitions(t_e, before, after, impact=bool(ev[5])))
@@ -136,11 +155,26 @@ class Simulator:
                                status)
 
     def run(self) -> Trajectory:
+        try:
+            return self._run()
+        finally:
+            if self.compiled is not None:
+                self.compiled.release()
+
+    def _run(self) -> Trajectory:
         cfg, dyn, torques, handler = self.settings, self.dyn, self.torques, self.events
         wall0 = time.perf_counter()
         T = cfg.duration
         y = np.concatenate([cfg.q0, cfg.q_obj0, cfg.v0, cfg.v_obj0, np.zeros(N_WORK)])
         events: list[SimEvent] = []
+        grid = self._output_times()
+        whole = self.compiled is not None and cfg.kind == "constant"
+        if whole:
+            # the whole run in one C call, the start included (else the Python below)
+            done = self._run_compiled(y, None, 0.0, grid, events, wall0)
+            if done is not None:
+                return done
+            whole = not self.compiled.started  # handed back after its start: Python's loop
         # initial mode: the contact is a candidate when the object touches the link face
         geo = self.compiled.gap_and_s(y) if self.compiled is not None else None
         gap, s = geo if geo is not None else dyn.linear_maps(y, np.zeros(dyn.na))[2:4]
@@ -162,14 +196,15 @@ class Simulator:
         for e in events:
             impact_loss += e.data.get("energy_loss", 0.0)
         blocks = []  # samples in blocks (t (k,), y (k, n_y), mode, tau_fn, impact_loss)
-        grid = self._output_times()
         t = 0.0
         self.initial_mode = mode.describe()
-        if self.compiled is not None and cfg.kind == "constant":
+        if whole:
             # the whole loop in one C call (the Python loop below when it hands it back)
             done = self._run_compiled(y, mode, impact_loss, grid, events, wall0)
             if done is not None:
                 return done
+        if self.compiled is not None and cfg.kind == "constant":
+            self.compiled.runs_handed_back += 1
         blocks.append((np.array([t]), y[None, :].copy(), mode, torques.function(), impact_loss))
         status = "completed"
         n_events = 0

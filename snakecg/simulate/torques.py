@@ -17,6 +17,9 @@ __all__ = ["Torques", "check_tau", "torque_law"]
 def torque_law(tau, n_a: int):
     """``(kind, law)``: kind ``"constant"`` (law the ``(n_a,)`` vector), ``"time"`` or
     ``"feedback"`` (law the callable), told apart by the callable's required arguments."""
+    if type(tau) is np.ndarray and tau.dtype == np.float64 and tau.shape == (n_a,) \
+            and np.isfinite(tau).all():
+        return "constant", tau.copy()  # already what the checks below would give
     if callable(tau):
         try:
             params = inspect.signature(tau).parameters.values()
