@@ -1,0 +1,1096 @@
+/* snakecg's runtime core, part 4: one optimal-torque query on the all-held maps of one
+ * configuration (snakecg/optimize/quick.py), in one call: the task, the solve and the
+ * optimality certificate on the original problem.
+ *
+ * This file is part of the runtime (not generated). Like forward.c it is compiled once per
+ * model into the model's shared library; it uses nothing of the model but the symbol prefix.
+ *
+ * It performs, operation for operation, what the Python path of snakecg.optimize does on plain
+ * floats for the same cases, so that both give the same answers to rounding:
+ *
+ * - max_sr, every row held: the rank-one closed form of the top of the Rayleigh quotient
+ *   (eqs. 28-30; snakecg/optimize/max_sr.py _rank_one), scaled onto the limits (_max_scale),
+ *   and its certificate (certificate.py _eigen: the residual of Omega v = sr (Omega + Xi) v,
+ *   the largest eigenvalue of Omega - sr (Omega + Xi) by cyclic Jacobi rotations, primal
+ *   feasibility);
+ * - least_slip_push and strongest_push with box limits only: the task as a bound on the
+ *   contact force (problems.py push_target), the QP or LP posed in the scaled torque
+ *   (box_push.py) and solved by the dense dual active set of Goldfarb and Idnani
+ *   (active_set.py), the strongest push's tie-break QP when its LP optimum is not unique, and
+ *   the KKT certificate with the duality gap (certificate.py _push_floats).
+ *
+ * Whatever the Python path would answer otherwise (a structural infeasibility, a closed form
+ * that does not apply, the active set giving up, a certificate that needs non-negative least
+ * squares) makes the call return a non-zero code: the caller then takes the Python path,
+ * which words the answer. Nothing here allocates.
+ */
+#include <math.h>
+#include <string.h>
+
+#include "snakecg_layout.h"
+
+typedef long long int op_int;
+
+/* largest n_a of a query here; the active set takes DENSE_MAX variables at most (the Python
+ * path hands larger problems to qpOASES) */
+#define OP_MAX 16
+#define DENSE_MAX 4
+#define OP_ROWS (2 * OP_MAX + 4)
+#define OP_CONS (2 * OP_ROWS)
+#define OP_LS (OP_ROWS + 1)
+
+/* tolerances of snakecg/optimize (active_set.FEAS_TOL, polish.LP_REG, result.HESSIAN_REG,
+ * certificate.ACTIVE, certificate.TOLERANCE["stationarity"]) */
+#define FEAS_TOL 1e-12
+#define LP_REG 1e-9
+#define HESSIAN_REG 1e-11
+#define ACTIVE 1e-7
+#define STATIONARITY_TOL 1e-7
+
+enum { OP_MAX_SR = 0, OP_LEAST_SLIP = 1, OP_STRONGEST = 2 };
+/* return codes: 0 answered; otherwise the Python path answers */
+enum { OP_OK = 0, OP_SIZE = 1, OP_MAPS = 2, OP_STRUCTURE = 3, OP_CLOSED_FORM = 4,
+       OP_ACTIVE_SET = 5, OP_CERTIFICATE = 6, OP_NOT_POSITIVE = 7 };
+/* binding codes: 0 the task row (no name), 1 the contact, 2 the ellipsoid, 3 + j joint j,
+ * 3 + n + w the w-th bounded wheel */
+enum { B_TASK = 0, B_CONTACT = 1, B_ELLIPSOID = 2, B_JOINT = 3 };
+/* the output vector */
+enum { O_STATUS = 0, O_EXPECTED = 1, O_K = 2, O_ADIR = 3, O_STAT = 6, O_PRIMAL = 7, O_COMP = 8,
+       O_GAP = 9, O_QUAD = 10, O_TIE = 11, O_NB = 12, O_LAM_LO = 13, O_GAIN = 14, O_TAU = 16 };
+
+/* One query (mirrored in snakecg/core/optimal.py). The maps are the generated
+ * interaction_maps' outputs, column-major. */
+typedef struct {
+  op_int kind, n, nc, nw;
+  const double *L, *A, *Xi, *Om, *N, *pivot;
+  const op_int *wheel_row; /* nw rows of L with a friction bound */
+  const double *wheel_ub;  /* their bounds, backed off by FRICTION_MARGIN */
+  const double *Io;        /* 3: the object's inertia diagonal */
+  double pivot_tol;
+  double radius;           /* <= 0: no ellipsoid */
+  const double *tau_max;   /* n, or null */
+  const double *direction; /* 3 (unit), or null */
+  double a_min;
+  const double *a_obj;     /* 3, or null */
+  double *out;
+} op_call;
+
+/* ---------------------------------------------------------------------------------------
+ * small dense algebra, summing left to right as Python's sum() does */
+static double op_dot(const double *a, const double *b, int n) {
+  double s = 0.0;
+  int i;
+  for (i = 0; i < n; ++i) s += a[i] * b[i];
+  return s;
+}
+
+static double op_norm(const double *a, int n) { return sqrt(op_dot(a, a, n)); }
+
+/* x^T M x with M n x n, row-major, leading dimension ld */
+static double op_quad(const double *M, int ld, const double *x, int n) {
+  double s = 0.0;
+  int i;
+  for (i = 0; i < n; ++i) s += x[i] * op_dot(M + i * ld, x, n);
+  return s;
+}
+
+static double op_frob(const double *M, int ld, int n) {
+  double s = 0.0;
+  int i;
+  for (i = 0; i < n; ++i) s += op_dot(M + i * ld, M + i * ld, n);
+  return sqrt(s);
+}
+
+/* M^-1 b by Gaussian elimination with partial pivoting (M n x n, row-major, leading dimension
+ * ld); 0 when singular or not finite (active_set._lin_solve) */
+static int op_lin_solve(int n, const double *M, int ld, const double *b, double *x) {
+  double A[OP_LS * (OP_LS + 1)];
+  int c, i, j, p, w = n + 1;
+  if (n < 1 || n > OP_LS) return 0;
+  if (n == 1) {
+    double v;
+    if (M[0] == 0.0) return 0;
+    v = b[0] / M[0];
+    if (!isfinite(v)) return 0;
+    x[0] = v;
+    return 1;
+  }
+  for (i = 0; i < n; ++i) {
+    for (j = 0; j < n; ++j) A[i * w + j] = M[i * ld + j];
+    A[i * w + n] = b[i];
+  }
+  for (c = 0; c < n; ++c) {
+    double big = fabs(A[c * w + c]), piv;
+    p = c;
+    for (i = c + 1; i < n; ++i) {
+      double v = fabs(A[i * w + c]);
+      if (v > big) {
+        p = i;
+        big = v;
+      }
+    }
+    if (big == 0.0) return 0;
+    if (p != c)
+      for (j = 0; j < w; ++j) {
+        double t = A[c * w + j];
+        A[c * w + j] = A[p * w + j];
+        A[p * w + j] = t;
+      }
+    piv = A[c * w + c];
+    for (i = c + 1; i < n; ++i) {
+      double f = A[i * w + c] / piv;
+      if (f != 0.0)
+        for (j = c; j < w; ++j) A[i * w + j] -= f * A[c * w + j];
+    }
+  }
+  for (i = n - 1; i >= 0; --i) {
+    double s = 0.0;
+    for (j = i + 1; j < n; ++j) s += A[i * w + j] * x[j];
+    x[i] = (A[i * w + n] - s) / A[i * w + i];
+  }
+  for (i = 0; i < n; ++i)
+    if (!isfinite(x[i])) return 0;
+  return 1;
+}
+
+/* M^-1 b for a symmetric positive definite M by Cholesky; 0 when a pivot falls below rel
+ * times the largest diagonal (fast.chol_solve) */
+static int op_chol_solve(int n, const double *M, int ld, const double *b, double rel, double *x) {
+  double Lc[OP_MAX * OP_MAX], y[OP_MAX], big;
+  int i, j, k;
+  if (n < 1 || n > OP_MAX) return 0;
+  big = M[0];
+  for (i = 1; i < n; ++i)
+    if (M[i * ld + i] > big) big = M[i * ld + i];
+  if (!(big > 0)) return 0;
+  for (i = 0; i < n; ++i) {
+    double d;
+    for (j = 0; j < i; ++j)
+      Lc[i * OP_MAX + j] = (M[i * ld + j] - op_dot(Lc + i * OP_MAX, Lc + j * OP_MAX, j)) /
+                           Lc[j * OP_MAX + j];
+    d = M[i * ld + i] - op_dot(Lc + i * OP_MAX, Lc + i * OP_MAX, i);
+    if (!(d > rel * big)) return 0;
+    Lc[i * OP_MAX + i] = sqrt(d);
+  }
+  for (i = 0; i < n; ++i) y[i] = (b[i] - op_dot(Lc + i * OP_MAX, y, i)) / Lc[i * OP_MAX + i];
+  for (i = n - 1; i >= 0; --i) {
+    double s = y[i];
+    for (k = i + 1; k < n; ++k) s -= Lc[k * OP_MAX + i] * x[k];
+    x[i] = s / Lc[i * OP_MAX + i];
+  }
+  return 1;
+}
+
+/* largest eigenvalue of the symmetric n x n S (row-major, overwritten), cyclic Jacobi */
+static double op_top_eigenvalue(int n, double *S) {
+  int i, j, l, sweep;
+  double top;
+  for (sweep = 0; sweep < 60; ++sweep) {
+    double off = 0.0, tot = 0.0;
+    for (i = 0; i < n; ++i)
+      for (j = 0; j < n; ++j) {
+        double s2 = S[i * n + j] * S[i * n + j];
+        tot += s2;
+        if (i != j) off += s2;
+      }
+    if (off <= 1e-32 * tot || off == 0.0) break;
+    for (i = 0; i < n - 1; ++i)
+      for (j = i + 1; j < n; ++j) {
+        double apq = S[i * n + j], theta, t, c, s;
+        if (apq == 0.0) continue;
+        theta = 0.5 * (S[j * n + j] - S[i * n + i]) / apq;
+        t = (theta >= 0 ? 1.0 : -1.0) / (fabs(theta) + sqrt(theta * theta + 1.0));
+        c = 1.0 / sqrt(t * t + 1.0);
+        s = t * c;
+        for (l = 0; l < n; ++l) {
+          double sli = S[l * n + i], slj = S[l * n + j];
+          S[l * n + i] = c * sli - s * slj;
+          S[l * n + j] = s * sli + c * slj;
+        }
+        for (l = 0; l < n; ++l) {
+          double sil = S[i * n + l], sjl = S[j * n + l];
+          S[i * n + l] = c * sil - s * sjl;
+          S[j * n + l] = s * sil + c * sjl;
+        }
+        S[i * n + j] = S[j * n + i] = 0.0;
+      }
+  }
+  top = S[0];
+  for (i = 1; i < n; ++i)
+    if (S[i * n + i] > top) top = S[i * n + i];
+  return top;
+}
+
+/* number of singular values of the k x n matrix B (row-major, leading dimension ld) above
+ * tol: one-sided Jacobi (Hestenes) rotations of its columns */
+static int op_rank(int k, int n, const double *B, int ld, double tol) {
+  double U[OP_CONS * DENSE_MAX];
+  int i, j, p, q, sweep, rank = 0;
+  for (i = 0; i < k; ++i)
+    for (j = 0; j < n; ++j) U[i * n + j] = B[i * ld + j];
+  for (sweep = 0; sweep < 60; ++sweep) {
+    int rotated = 0;
+    for (p = 0; p < n - 1; ++p)
+      for (q = p + 1; q < n; ++q) {
+        double a = 0.0, b = 0.0, g = 0.0, zeta, t, c, s;
+        for (i = 0; i < k; ++i) {
+          a += U[i * n + p] * U[i * n + p];
+          b += U[i * n + q] * U[i * n + q];
+          g += U[i * n + p] * U[i * n + q];
+        }
+        if (g == 0.0 || fabs(g) <= 1e-15 * sqrt(a * b)) continue;
+        rotated = 1;
+        zeta = (b - a) / (2.0 * g);
+        t = (zeta >= 0 ? 1.0 : -1.0) / (fabs(zeta) + sqrt(1.0 + zeta * zeta));
+        c = 1.0 / sqrt(1.0 + t * t);
+        s = c * t;
+        for (i = 0; i < k; ++i) {
+          double up = U[i * n + p], uq = U[i * n + q];
+          U[i * n + p] = c * up - s * uq;
+          U[i * n + q] = s * up + c * uq;
+        }
+      }
+    if (!rotated) break;
+  }
+  for (j = 0; j < n; ++j) {
+    double s = 0.0;
+    for (i = 0; i < k; ++i) s += U[i * n + j] * U[i * n + j];
+    if (sqrt(s) > tol) ++rank;
+  }
+  return rank;
+}
+
+/* ---------------------------------------------------------------------------------------
+ * the dense dual active set (snakecg/optimize/active_set.py solve, every variable free):
+ * min 1/2 x^T H x + g^T x s.t. lo <= A x <= hi, H n x n (DENSE_MAX), A R x n (leading
+ * dimension DENSE_MAX). Returns 1 with x and the rows' multipliers lam (R), 0 when it gives
+ * up (infeasible, or not settled). */
+typedef struct {
+  int n, m, neq;
+  double C[OP_CONS][DENSE_MAX], b[OP_CONS], cn[OP_CONS];
+  int origin[OP_CONS];
+  double Hinv[DENSE_MAX][DENSE_MAX], x0[DENSE_MAX], g[DENSE_MAX], Hd[DENSE_MAX];
+  double h[OP_CONS][DENSE_MAX];
+  int have[OP_CONS];
+} op_qp;
+
+static const double *op_hv(op_qp *Q, int i) {
+  if (!Q->have[i]) {
+    int r;
+    for (r = 0; r < Q->n; ++r) Q->h[i][r] = op_dot(Q->Hinv[r], Q->C[i], Q->n);
+    Q->have[i] = 1;
+  }
+  return Q->h[i];
+}
+
+static int op_inverse(int n, const double *H, double Hi[DENSE_MAX][DENSE_MAX]) {
+  int i, j, diag = 1;
+  for (i = 0; i < n; ++i)
+    for (j = 0; j < n; ++j)
+      if (i != j && H[i * DENSE_MAX + j] != 0.0) diag = 0;
+  if (diag) {
+    for (i = 0; i < n; ++i)
+      if (H[i * DENSE_MAX + i] == 0.0) return 0;
+    for (i = 0; i < n; ++i)
+      for (j = 0; j < n; ++j) Hi[i][j] = (i == j) ? 1.0 / H[i * DENSE_MAX + i] : 0.0;
+    return 1;
+  }
+  if (n == 3) { /* the adjugate */
+    double a = H[0], b = H[1], c = H[2], d = H[DENSE_MAX], e = H[DENSE_MAX + 1],
+           f = H[DENSE_MAX + 2], g = H[2 * DENSE_MAX], h = H[2 * DENSE_MAX + 1],
+           k = H[2 * DENSE_MAX + 2];
+    double A = e * k - f * h, B = f * g - d * k, C = d * h - e * g;
+    double det = a * A + b * B + c * C;
+    if (det > 0 && isfinite(det)) {
+      Hi[0][0] = A / det;
+      Hi[0][1] = (c * h - b * k) / det;
+      Hi[0][2] = (b * f - c * e) / det;
+      Hi[1][0] = B / det;
+      Hi[1][1] = (a * k - c * g) / det;
+      Hi[1][2] = (c * d - a * f) / det;
+      Hi[2][0] = C / det;
+      Hi[2][1] = (b * g - a * h) / det;
+      Hi[2][2] = (a * e - b * d) / det;
+      return 1;
+    }
+  }
+  { /* the general inverse, column by column */
+    double e[DENSE_MAX], col[DENSE_MAX];
+    for (j = 0; j < n; ++j) {
+      for (i = 0; i < n; ++i) e[i] = (i == j) ? 1.0 : 0.0;
+      if (!op_lin_solve(n, H, DENSE_MAX, e, col)) return 0;
+      for (i = 0; i < n; ++i) Hi[i][j] = col[i];
+    }
+  }
+  return 1;
+}
+
+/* active_set._bounds_first: with a diagonal H, x0 clipped to the tightest single-variable
+ * rows it violates, those rows active (multipliers (H x + g)_j / c_j >= 0); nothing active
+ * (x = x0) when that does not hold */
+static void op_bounds_first(op_qp *Q, double *x, int *act, double *u, int *na) {
+  int n = Q->n, m = Q->m, i, j, k, l;
+  int brow[DENSE_MAX];
+  double bval[DENSE_MAX];
+  for (j = 0; j < n; ++j) {
+    brow[j] = -1;
+    bval[j] = 0.0;
+    x[j] = Q->x0[j];
+  }
+  *na = 0;
+  for (i = 0; i < m; ++i) {
+    int nz = 0, lower;
+    double c, v;
+    j = -1;
+    for (k = 0; k < n; ++k)
+      if (Q->C[i][k] != 0.0) {
+        ++nz;
+        j = k;
+      }
+    if (nz != 1) continue;
+    c = Q->C[i][j];
+    v = Q->b[i] / c;
+    lower = c > 0;
+    if ((lower && Q->x0[j] < v) || (!lower && Q->x0[j] > v)) {
+      if (brow[j] < 0 || (lower && v > bval[j]) || (!lower && v < bval[j])) {
+        brow[j] = i;
+        bval[j] = v;
+      }
+    }
+  }
+  for (j = 0; j < n; ++j) {
+    double lam;
+    if (brow[j] < 0) continue;
+    i = brow[j];
+    x[j] = bval[j];
+    lam = (Q->Hd[j] * bval[j] + Q->g[j]) / Q->C[i][j];
+    if (!(lam >= 0)) goto none;
+    act[*na] = i;
+    u[*na] = lam;
+    ++*na;
+  }
+  /* the other single-variable rows must hold, else start from nothing */
+  for (j = 0; j < n; ++j) {
+    if (brow[j] < 0) continue;
+    i = brow[j];
+    for (k = 0; k < m; ++k) {
+      int single = 1;
+      if (k == i || Q->C[k][j] == 0.0) continue;
+      for (l = 0; l < n; ++l)
+        if (l != j && Q->C[k][l] != 0.0) single = 0;
+      if (single && Q->C[k][j] * bval[j] - Q->b[k] < -FEAS_TOL * (1 + fabs(Q->b[k]))) goto none;
+    }
+  }
+  return;
+none:
+  for (j = 0; j < n; ++j) x[j] = Q->x0[j];
+  *na = 0;
+}
+
+/* active_set._recompute: the point and multipliers of the active set */
+static void op_recompute(op_qp *Q, const int *act, int na, double *x, double *u) {
+  int n = Q->n, i, j;
+  double M[OP_LS * OP_LS], rhs[OP_CONS], un[OP_CONS], xn[DENSE_MAX];
+  const double *hs[OP_CONS];
+  if (na > OP_LS) return;
+  for (j = 0; j < na; ++j) hs[j] = op_hv(Q, act[j]);
+  for (i = 0; i < na; ++i) {
+    for (j = 0; j < na; ++j) M[i * na + j] = op_dot(Q->C[act[i]], hs[j], n);
+    rhs[i] = Q->b[act[i]] - op_dot(Q->C[act[i]], Q->x0, n);
+  }
+  if (!op_lin_solve(na, M, na, rhs, un)) return;
+  if (na == n) {
+    double R[DENSE_MAX * DENSE_MAX], bb[DENSE_MAX];
+    for (i = 0; i < n; ++i) {
+      for (j = 0; j < n; ++j) R[i * n + j] = Q->C[act[i]][j];
+      bb[i] = Q->b[act[i]];
+    }
+    if (!op_lin_solve(n, R, n, bb, xn)) return;
+  } else {
+    for (i = 0; i < n; ++i) {
+      double s = 0.0;
+      for (j = 0; j < na; ++j) s += un[j] * hs[j][i];
+      xn[i] = Q->x0[i] + s;
+    }
+  }
+  for (i = 0; i < n; ++i) x[i] = xn[i];
+  for (j = 0; j < na; ++j) u[j] = (act[j] < Q->neq || !(0.0 > un[j])) ? un[j] : 0.0;
+}
+
+static int op_dense_qp(op_qp *Q, int n, const double *H, const double *g, int R,
+                       const double *A, const double *lo, const double *hi, double *xo,
+                       double *lam) {
+  int r, i, j, it, m = 0, neq = 0, diag = 1, na = 0, iters;
+  int act[OP_CONS];
+  double x[DENSE_MAX], u[OP_CONS], res[OP_CONS];
+  if (n < 1 || n > DENSE_MAX || R > OP_ROWS) return 0;
+  Q->n = n;
+  for (i = 0; i < n; ++i) {
+    Q->g[i] = g[i];
+    Q->Hd[i] = H[i * DENSE_MAX + i];
+  }
+  /* one-sided rows c . x >= b: the equalities first, then the inequalities in row order */
+  for (r = 0; r < R; ++r) {
+    const double *c = A + r * DENSE_MAX;
+    int any = 0;
+    for (j = 0; j < n; ++j)
+      if (c[j] != 0.0) any = 1;
+    if (!any) {
+      if (lo[r] > FEAS_TOL * (1 + fabs(lo[r])) || hi[r] < -FEAS_TOL * (1 + fabs(hi[r])))
+        return 0;
+      continue;
+    }
+    if (lo[r] == hi[r]) {
+      for (j = 0; j < n; ++j) Q->C[m][j] = c[j];
+      Q->b[m] = lo[r];
+      Q->origin[m++] = r;
+    }
+  }
+  neq = m;
+  for (r = 0; r < R; ++r) {
+    const double *c = A + r * DENSE_MAX;
+    int any = 0;
+    for (j = 0; j < n; ++j)
+      if (c[j] != 0.0) any = 1;
+    if (!any || lo[r] == hi[r]) continue;
+    if (lo[r] > -INFINITY) {
+      for (j = 0; j < n; ++j) Q->C[m][j] = c[j];
+      Q->b[m] = lo[r];
+      Q->origin[m++] = r;
+    }
+    if (hi[r] < INFINITY) {
+      for (j = 0; j < n; ++j) Q->C[m][j] = -c[j];
+      Q->b[m] = -hi[r];
+      Q->origin[m++] = r;
+    }
+  }
+  Q->m = m;
+  Q->neq = neq;
+  for (i = 0; i < m; ++i) {
+    Q->cn[i] = op_norm(Q->C[i], n);
+    Q->have[i] = 0;
+  }
+  if (!op_inverse(n, H, Q->Hinv)) return 0;
+  for (i = 0; i < n; ++i) {
+    Q->x0[i] = -op_dot(Q->Hinv[i], g, n);
+    x[i] = Q->x0[i];
+  }
+  for (i = 0; i < n; ++i)
+    for (j = 0; j < n; ++j)
+      if (i != j && H[i * DENSE_MAX + j] != 0.0) diag = 0;
+  if (!neq && diag) op_bounds_first(Q, x, act, u, &na);
+  iters = 4 * (m + n) + 10;
+  for (it = 0; it < iters; ++it) {
+    int p, l;
+    const double *npv, *hp;
+    double bp, up = 0.0;
+    if (it < neq) {
+      p = it;
+      if (op_dot(Q->C[p], x, n) - Q->b[p] > 0) { /* enter the equality from its violated side */
+        for (j = 0; j < n; ++j) Q->C[p][j] = -Q->C[p][j];
+        Q->b[p] = -Q->b[p];
+        Q->have[p] = 0;
+      }
+    } else {
+      double worst = 0.0;
+      p = -1;
+      for (i = 0; i < m; ++i) res[i] = op_dot(Q->C[i], x, n) - Q->b[i];
+      for (i = neq; i < m; ++i) {
+        double s = res[i] / Q->cn[i];
+        int in = 0;
+        for (j = 0; j < na; ++j)
+          if (act[j] == i) in = 1;
+        if (s < worst && s < -FEAS_TOL * (1.0 + fabs(Q->b[i]) / Q->cn[i]) && !in) {
+          p = i;
+          worst = s;
+        }
+      }
+      if (p < 0) {
+        for (i = 0; i < m; ++i)
+          if (res[i] < -1e-9 * (1.0 + fabs(Q->b[i]))) return 0; /* not settled (rounding) */
+        for (i = 0; i < n; ++i) xo[i] = x[i];
+        for (r = 0; r < R; ++r) lam[r] = 0.0;
+        for (j = 0; j < na; ++j) lam[Q->origin[act[j]]] = fabs(u[j]);
+        return 1;
+      }
+    }
+    npv = Q->C[p];
+    bp = Q->b[p];
+    hp = op_hv(Q, p);
+    for (;;) {
+      double z[DENSE_MAX], rr[OP_CONS], t1 = INFINITY, t2, t, zn, sp;
+      int small;
+      if (na > 0) {
+        double M[OP_LS * OP_LS], rhs[OP_CONS];
+        const double *hs[OP_CONS];
+        if (na > OP_LS) return 0;
+        for (j = 0; j < na; ++j) hs[j] = op_hv(Q, act[j]);
+        for (i = 0; i < na; ++i)
+          for (j = 0; j < na; ++j) M[i * na + j] = op_dot(Q->C[act[i]], hs[j], n);
+        for (j = 0; j < na; ++j) rhs[j] = op_dot(hs[j], npv, n);
+        if (!op_lin_solve(na, M, na, rhs, rr)) return 0;
+        for (i = 0; i < n; ++i) {
+          double s = 0.0;
+          for (j = 0; j < na; ++j) s += rr[j] * hs[j][i];
+          z[i] = hp[i] - s;
+        }
+      } else {
+        for (i = 0; i < n; ++i) z[i] = hp[i];
+      }
+      l = -1;
+      for (j = 0; j < na; ++j)
+        if (act[j] >= neq && rr[j] > 0 && u[j] / rr[j] < t1) {
+          t1 = u[j] / rr[j];
+          l = j;
+        }
+      zn = op_dot(z, npv, n);
+      sp = op_dot(npv, x, n) - bp;
+      /* z of the size of rounding: p depends on the active rows (no primal step) */
+      small = op_norm(z, n) <= 1e-9 * op_norm(hp, n);
+      t2 = (!small && zn > 0) ? -sp / zn : INFINITY;
+      if (sp >= 0) t2 = 0.0;
+      t = (t2 < t1) ? t2 : t1;
+      if (!isfinite(t)) return 0; /* infeasible */
+      if (t != 0.0) {
+        for (i = 0; i < n; ++i) x[i] = x[i] + t * z[i];
+        for (j = 0; j < na; ++j) u[j] = u[j] - t * rr[j];
+        up += t;
+      }
+      if (t == t2) {
+        if (na >= OP_CONS) return 0;
+        act[na] = p;
+        u[na] = up;
+        ++na;
+        op_recompute(Q, act, na, x, u);
+        break;
+      }
+      for (j = l; j < na - 1; ++j) {
+        act[j] = act[j + 1];
+        u[j] = u[j + 1];
+      }
+      --na;
+    }
+  }
+  return 0;
+}
+
+/* ---------------------------------------------------------------------------------------
+ * the query */
+typedef struct {
+  int n, nc, nw;
+  double L[(OP_MAX + 2) * OP_MAX]; /* row-major, leading dimension OP_MAX */
+  double Xi[OP_MAX * OP_MAX], Om[OP_MAX * OP_MAX], N[OP_MAX * OP_MAX];
+  double a_dir[3], k;
+} op_maps;
+
+#define ROW(M, i) ((M) + (i) * OP_MAX)
+
+/* box_push.solve_box_push: the least-slip QP (lp 0, task lam_c >= lam_lo, == when equal) or
+ * the strongest-push LP (lp 1, no task) with box limits only, in y = tau / tau_max. Writes
+ * tau, the binding codes (nb of them) and, for the LP, whether its optimum is unique. */
+static int op_box_push(const op_call *c, const op_maps *mp, int lp, int has_lo, double lam_lo,
+                       int equal, double *tau, double *bind, int *nb, int *unique) {
+  int n = mp->n, R = 0, r, i, j, w, code[OP_ROWS], nact = 0, act[OP_ROWS];
+  double rows[OP_ROWS * DENSE_MAX], lo[OP_ROWS], hi[OP_ROWS], H[DENSE_MAX * DENSE_MAX];
+  double g[DENSE_MAX], y[DENSE_MAX], lam[OP_ROWS], big = 0.0, fs;
+  const double *s = c->tau_max, *ell = ROW(mp->L, 0);
+  op_qp Q;
+  if (n > DENSE_MAX || 2 + mp->nw + n > OP_ROWS) return 0;
+  memset(H, 0, sizeof H);
+  memset(g, 0, sizeof g);
+#define OP_ADD(vec, a, b, nm)                                   \
+  do {                                                          \
+    double rn_ = 0.0, cs_[DENSE_MAX];                           \
+    for (j = 0; j < n; ++j) {                                   \
+      cs_[j] = (vec)[j] * s[j];                                 \
+      if (fabs(cs_[j]) > rn_) rn_ = fabs(cs_[j]);               \
+    }                                                           \
+    if (rn_ > 0) {                                              \
+      for (j = 0; j < n; ++j) rows[R * DENSE_MAX + j] = cs_[j] / rn_; \
+      lo[R] = (a) / rn_;                                        \
+      hi[R] = (b) / rn_;                                        \
+      code[R++] = (nm);                                         \
+    }                                                           \
+  } while (0)
+  if (has_lo) OP_ADD(ell, lam_lo, equal ? lam_lo : INFINITY, B_TASK);
+  if (!has_lo || lam_lo < 0) OP_ADD(ell, 0.0, INFINITY, B_CONTACT);
+  for (w = 0; w < mp->nw; ++w) {
+    double ub = c->wheel_ub[w];
+    OP_ADD(ROW(mp->L, c->wheel_row[w]), -ub, ub, B_JOINT + n + w);
+  }
+#undef OP_ADD
+  for (i = 0; i < n; ++i) {
+    for (j = 0; j < n; ++j) rows[R * DENSE_MAX + j] = (i == j) ? 1.0 : 0.0;
+    lo[R] = -1.0;
+    hi[R] = 1.0;
+    code[R++] = B_JOINT + i;
+  }
+  if (lp) {
+    fs = 0.0;
+    for (j = 0; j < n; ++j) {
+      g[j] = -ell[j] * s[j];
+      if (fabs(g[j]) > fs) fs = fabs(g[j]);
+    }
+    fs = fs > 0 ? fs : 1.0;
+    for (j = 0; j < n; ++j) g[j] = g[j] / fs;
+    for (i = 0; i < n; ++i)
+      for (j = 0; j < n; ++j) H[i * DENSE_MAX + j] = (i == j) ? LP_REG : 0.0;
+  } else {
+    double reg = 0.0;
+    fs = 0.0;
+    for (i = 0; i < n; ++i)
+      for (j = 0; j < n; ++j) {
+        double h = 2.0 * ROW(mp->Xi, i)[j] * (s[i] * s[j]);
+        H[i * DENSE_MAX + j] = h;
+        if (fabs(h) > fs) fs = fabs(h);
+      }
+    fs = fs > 0 ? fs : 1.0;
+    for (i = 0; i < n; ++i)
+      for (j = 0; j < n; ++j) H[i * DENSE_MAX + j] = H[i * DENSE_MAX + j] / fs;
+    for (i = 0; i < n; ++i)
+      if (fabs(H[i * DENSE_MAX + i]) > reg) reg = fabs(H[i * DENSE_MAX + i]);
+    reg = HESSIAN_REG * (reg > 1e-300 ? reg : 1e-300);
+    for (i = 0; i < n; ++i) H[i * DENSE_MAX + i] += reg;
+    for (j = 0; j < n; ++j) g[j] = 0.0;
+  }
+  if (!op_dense_qp(&Q, n, H, g, R, rows, lo, hi, y, lam)) return 0;
+  for (r = 0; r < R; ++r)
+    if (fabs(lam[r]) > big) big = fabs(lam[r]);
+  if (big > 0)
+    for (r = 0; r < R; ++r)
+      if (fabs(lam[r]) > 1e-7 * big) {
+        double ry = op_dot(rows + r * DENSE_MAX, y, n);
+        double dl = fabs(ry - lo[r]), dh = fabs(ry - hi[r]);
+        if ((dl < dh ? dl : dh) <= 1e-6) act[nact++] = r;
+      }
+  *nb = 0;
+  for (i = 0; i < nact; ++i) {
+    int cd = code[act[i]], seen = 0;
+    if (cd == B_TASK) continue;
+    for (j = 0; j < *nb; ++j)
+      if ((int)bind[j] == cd) seen = 1;
+    if (!seen) bind[(*nb)++] = cd;
+  }
+  *unique = 0;
+  if (lp && nact >= n) {
+    double B[OP_ROWS * DENSE_MAX];
+    for (i = 0; i < nact; ++i)
+      for (j = 0; j < n; ++j) B[i * DENSE_MAX + j] = rows[act[i] * DENSE_MAX + j];
+    *unique = op_rank(nact, n, B, DENSE_MAX, 1e-9) == n;
+  }
+  for (j = 0; j < n; ++j) tau[j] = y[j] * s[j];
+  return 1;
+}
+
+/* certificate._push_floats: the KKT conditions and the duality gap of a push answer with box
+ * limits only; 0 when the multipliers need more than the normal equations */
+static int op_push_certificate(const op_call *c, const op_maps *mp, const double *x, int has_lo,
+                               double lam_lo, int equal, int lp, double *values) {
+  int n = mp->n, R = 0, i, j, w, k = 0, nh = 0;
+  double G[OP_ROWS * OP_MAX], lo[OP_ROWS], hi[OP_ROWS];
+  double H[OP_MAX * OP_MAX], cvec[OP_MAX], Hx[OP_MAX], grad[OP_MAX], ax[OP_MAX];
+  double cols[OP_CONS * OP_MAX], slacks[OP_CONS], his[OP_ROWS * OP_MAX], hisl[OP_ROWS];
+  double f, fscale, ref, ng, primal = 0.0, resid, size, comp = 0.0, corr = 0.0, stat;
+  double res[OP_MAX], norms[OP_CONS], lam[OP_CONS];
+  int freec[OP_CONS];
+  const double *ell = ROW(mp->L, 0);
+  if (mp->nw + n + 2 > OP_ROWS) return 0;
+  for (w = 0; w < mp->nw; ++w) {
+    memcpy(G + R * OP_MAX, ROW(mp->L, c->wheel_row[w]), sizeof(double) * n);
+    lo[R] = -c->wheel_ub[w];
+    hi[R++] = c->wheel_ub[w];
+  }
+  if (c->tau_max)
+    for (j = 0; j < n; ++j) {
+      for (i = 0; i < n; ++i) G[R * OP_MAX + i] = (i == j) ? 1.0 : 0.0;
+      lo[R] = -c->tau_max[j];
+      hi[R++] = c->tau_max[j];
+    }
+  memcpy(G + R * OP_MAX, ell, sizeof(double) * n);
+  lo[R] = 0.0;
+  hi[R++] = INFINITY;
+  if (has_lo) {
+    memcpy(G + R * OP_MAX, ell, sizeof(double) * n);
+    lo[R] = lam_lo;
+    hi[R++] = equal ? lam_lo : INFINITY;
+  }
+  if (lp) {
+    for (j = 0; j < n; ++j) {
+      cvec[j] = -ell[j];
+      Hx[j] = 0.0;
+    }
+  } else {
+    for (i = 0; i < n; ++i)
+      for (j = 0; j < n; ++j) H[i * OP_MAX + j] = 2.0 * ROW(mp->Xi, i)[j];
+    for (j = 0; j < n; ++j) cvec[j] = 0.0;
+    for (i = 0; i < n; ++i) Hx[i] = op_dot(H + i * OP_MAX, x, n);
+  }
+  f = 0.5 * op_dot(x, Hx, n) + op_dot(cvec, x, n);
+  for (j = 0; j < n; ++j) {
+    grad[j] = Hx[j] + cvec[j];
+    ax[j] = fabs(x[j]);
+  }
+  for (i = 0; i < R; ++i) {
+    const double *row = G + i * OP_MAX;
+    double gx = op_dot(row, x, n), bnd, rs = 0.0, s_lo, s_hi, v;
+    int a_lo, a_hi, eq;
+    double blo = lo[i] > -INFINITY ? fabs(lo[i]) : 0.0, bhi = hi[i] < INFINITY ? fabs(hi[i]) : 0.0;
+    bnd = bhi > blo ? bhi : blo;
+    for (j = 0; j < n; ++j) rs += fabs(row[j]) * ax[j];
+    rs += bnd;
+    rs = rs > 0 ? rs : 1.0;
+    s_lo = lo[i] > -INFINITY ? gx - lo[i] : INFINITY;
+    s_hi = hi[i] < INFINITY ? hi[i] - gx : INFINITY;
+    v = -s_lo;
+    if (-s_hi > v) v = -s_hi;
+    if (0.0 > v) v = 0.0;
+    v = v / rs;
+    if (v > primal) primal = v;
+    a_lo = s_lo <= ACTIVE * rs;
+    a_hi = s_hi <= ACTIVE * rs;
+    eq = a_lo && a_hi && lo[i] == hi[i];
+    if (a_lo) {
+      memcpy(cols + k * OP_MAX, row, sizeof(double) * n);
+      slacks[k] = eq ? 0.0 : s_lo;
+      freec[k++] = eq;
+    }
+    if (a_hi && !eq) {
+      for (j = 0; j < n; ++j) his[nh * OP_MAX + j] = -row[j];
+      hisl[nh++] = s_hi;
+    }
+  }
+  for (i = 0; i < nh; ++i) { /* the upper sides after the lower ones, as kkt orders them */
+    memcpy(cols + k * OP_MAX, his + i * OP_MAX, sizeof(double) * n);
+    slacks[k] = hisl[i];
+    freec[k++] = 0;
+  }
+  {
+    double a = fabs(f), b = fabs(op_dot(grad, x, n));
+    fscale = a;
+    if (b > fscale) fscale = b;
+    if (1e-300 > fscale) fscale = 1e-300;
+  }
+  ref = (lp ? 0.0 : op_frob(H, OP_MAX, n) * op_norm(x, n)) + op_norm(cvec, n);
+  ng = op_norm(grad, n);
+  if (k) {
+    double Cn[OP_CONS * OP_MAX], Mn[OP_LS * OP_LS], rhs[OP_LS], lam_s[OP_LS], fit[OP_MAX];
+    double tol;
+    if (k > OP_LS) return 0;
+    memset(Mn, 0, sizeof(double) * k * k);
+    memset(rhs, 0, sizeof(double) * k);
+    for (i = 0; i < k; ++i) {
+      double nv = op_norm(cols + i * OP_MAX, n);
+      norms[i] = nv != 0.0 ? nv : 1.0;
+      for (j = 0; j < n; ++j) Cn[i * OP_MAX + j] = cols[i * OP_MAX + j] / norms[i];
+    }
+    for (i = 0; i < k; ++i) {
+      for (j = 0; j < k; ++j) Mn[i * k + j] = op_dot(Cn + i * OP_MAX, Cn + j * OP_MAX, n);
+      rhs[i] = op_dot(Cn + i * OP_MAX, grad, n);
+    }
+    if (!op_lin_solve(k, Mn, k, rhs, lam_s)) return 0;
+    for (i = 0; i < k; ++i)
+      if (!freec[i] && lam_s[i] < 0) return 0;
+    for (j = 0; j < n; ++j) {
+      double s = 0.0;
+      for (i = 0; i < k; ++i) s += lam_s[i] * Cn[i * OP_MAX + j];
+      fit[j] = s - grad[j];
+    }
+    tol = ng;
+    if (ref > tol) tol = ref;
+    if (1e-300 > tol) tol = 1e-300;
+    if (!(op_norm(fit, n) <= 0.1 * STATIONARITY_TOL * tol)) return 0;
+    size = 0.0;
+    for (i = 0; i < k; ++i) {
+      lam[i] = lam_s[i] / norms[i];
+      size += fabs(lam[i]) * norms[i];
+    }
+    for (j = 0; j < n; ++j) {
+      double s = 0.0;
+      for (i = 0; i < k; ++i) s += lam[i] * cols[i * OP_MAX + j];
+      res[j] = s - grad[j];
+    }
+    resid = op_norm(res, n);
+    if (ng > size) size = ng;
+  } else {
+    for (j = 0; j < n; ++j) res[j] = -grad[j];
+    resid = ng;
+    size = 0.0;
+  }
+  {
+    double d = size;
+    if (ref > d) d = ref;
+    if (1e-300 > d) d = 1e-300;
+    stat = resid > 0 ? resid / d : 0.0;
+  }
+  for (i = 0; i < k; ++i) comp += fabs(lam[i]) * fabs(slacks[i]);
+  if (!lp) {
+    double r[OP_MAX], y[OP_MAX];
+    int any = 0;
+    for (j = 0; j < n; ++j) {
+      r[j] = -res[j];
+      if (r[j] != 0.0) any = 1;
+    }
+    if (any) {
+      if (!op_chol_solve(n, H, OP_MAX, r, 1e-9, y)) return 0;
+      corr = 0.5 * op_dot(r, y, n);
+    }
+  }
+  values[0] = stat;
+  values[1] = primal;
+  values[2] = k ? comp / fscale : 0.0;
+  values[3] = k ? (comp + corr) / fscale : corr / fscale;
+  return 1;
+}
+
+/* fast.primal_violation (and fast.ellipsoid_violation): the largest relative violation of the
+ * all-held limits at tau */
+static double op_primal(const op_call *c, const op_maps *mp, const double *tau) {
+  int n = mp->n, w, j;
+  double worst = 0.0, g, at[OP_MAX];
+  const double *ell = ROW(mp->L, 0);
+  for (j = 0; j < n; ++j) at[j] = fabs(tau[j]);
+  for (w = 0; w < mp->nw; ++w) {
+    const double *row = ROW(mp->L, c->wheel_row[w]);
+    double ub = c->wheel_ub[w];
+    g = fabs(op_dot(row, tau, n));
+    if (g > ub) {
+      double rs = 0.0, v;
+      for (j = 0; j < n; ++j) rs += fabs(row[j]) * at[j];
+      rs += ub;
+      v = (g - ub) / (rs > 0 ? rs : 1.0);
+      if (v > worst) worst = v;
+    }
+  }
+  if (c->tau_max)
+    for (j = 0; j < n; ++j) {
+      double t = fabs(tau[j]), m = c->tau_max[j];
+      if (t > m && (t - m) / (t + m) > worst) worst = (t - m) / (t + m);
+    }
+  g = op_dot(ell, tau, n);
+  if (g < 0) {
+    double rs = 0.0, v;
+    for (j = 0; j < n; ++j) rs += fabs(ell[j]) * at[j];
+    v = -g / (rs > 0 ? rs : 1.0);
+    if (v > worst) worst = v;
+  }
+  if (c->radius > 0) {
+    double r2 = c->radius * c->radius, e = op_quad(mp->N, OP_MAX, tau, n);
+    if (e > r2) {
+      double An[OP_MAX * OP_MAX], qs, v;
+      int i;
+      for (i = 0; i < n; ++i)
+        for (j = 0; j < n; ++j) An[i * OP_MAX + j] = fabs(ROW(mp->N, i)[j]);
+      qs = op_quad(An, OP_MAX, at, n) + fabs(r2);
+      v = (e - r2) / (qs > 0 ? qs : 1.0);
+      if (v > worst) worst = v;
+    }
+  }
+  return worst;
+}
+
+/* max_sr with every row held: the rank-one closed form, the scale onto the limits, the
+ * certificate of the generalized eigenproblem */
+static int op_max_sr(const op_call *c, const op_maps *mp, double *out) {
+  int n = mp->n, j, w, nb = 0, ncand = 0, code[OP_ROWS];
+  double v[OP_MAX], cc, kc, lam, s, cand[OP_ROWS], *tau = out + O_TAU, *bind = out + O_TAU + n;
+  const double *ell = ROW(mp->L, 0);
+  int any = 0;
+  for (j = 0; j < n; ++j)
+    if (ell[j] != 0.0) any = 1;
+  if (mp->k <= 0 || !any) return OP_STRUCTURE;
+  if (!op_chol_solve(n, mp->Xi, OP_MAX, ell, 1e-12, v)) return OP_CLOSED_FORM;
+  cc = op_dot(ell, v, n);
+  if (!(cc > 0)) return OP_CLOSED_FORM;
+  kc = mp->k * cc;
+  lam = kc / (kc + 1.0);
+  /* the largest s > 0 with s v inside every limit, and the limits that set it */
+  if (c->radius > 0) {
+    double qv = op_quad(mp->N, OP_MAX, v, n);
+    cand[ncand] = c->radius / sqrt(qv > 1e-300 ? qv : 1e-300);
+    code[ncand++] = B_ELLIPSOID;
+  }
+  if (c->tau_max)
+    for (j = 0; j < n; ++j)
+      if (fabs(v[j]) > 0) {
+        cand[ncand] = c->tau_max[j] / fabs(v[j]);
+        code[ncand++] = B_JOINT + j;
+      }
+  for (w = 0; w < mp->nw; ++w) {
+    double li = op_dot(ROW(mp->L, c->wheel_row[w]), v, n);
+    if (fabs(li) > 0) {
+      cand[ncand] = c->wheel_ub[w] / fabs(li);
+      code[ncand++] = B_JOINT + n + w;
+    }
+  }
+  if (!ncand) return OP_CLOSED_FORM;
+  s = cand[0];
+  for (j = 1; j < ncand; ++j)
+    if (cand[j] < s) s = cand[j];
+  for (j = 0; j < ncand; ++j)
+    if (cand[j] <= s * (1 + 1e-9)) bind[nb++] = code[j];
+  for (j = 0; j < n; ++j) tau[j] = s * v[j];
+  out[O_NB] = nb;
+  out[O_EXPECTED] = lam > 0.0 ? (lam < 1.0 ? lam : 1.0) : 0.0;
+  { /* the certificate (certificate._eigen) */
+    double D[OP_MAX * OP_MAX], S[OP_MAX * OP_MAX], Dt[OP_MAX], Ot[OP_MAX], rr[OP_MAX];
+    double den, sr, nD, top, scale;
+    int i;
+    for (i = 0; i < n; ++i)
+      for (j = 0; j < n; ++j) D[i * OP_MAX + j] = ROW(mp->Om, i)[j] + ROW(mp->Xi, i)[j];
+    for (i = 0; i < n; ++i) {
+      Dt[i] = op_dot(D + i * OP_MAX, tau, n);
+      Ot[i] = op_dot(ROW(mp->Om, i), tau, n);
+    }
+    den = op_dot(tau, Dt, n);
+    sr = den > 0 ? op_dot(tau, Ot, n) / den : 0.0;
+    nD = op_frob(D, OP_MAX, n);
+    for (i = 0; i < n; ++i)
+      for (j = 0; j < n; ++j) {
+        double sij = ROW(mp->Om, i)[j] - sr * D[i * OP_MAX + j];
+        double sji = ROW(mp->Om, j)[i] - sr * D[j * OP_MAX + i];
+        S[i * n + j] = 0.5 * (sij + sji);
+      }
+    top = op_top_eigenvalue(n, S);
+    scale = (op_frob(mp->Om, OP_MAX, n) + nD) * op_norm(tau, n);
+    for (i = 0; i < n; ++i) rr[i] = Ot[i] - sr * Dt[i];
+    out[O_STAT] = scale > 0 ? op_norm(rr, n) / scale : 0.0;
+    out[O_PRIMAL] = op_primal(c, mp, tau);
+    out[O_COMP] = 0.0;
+    out[O_GAP] = (top > 0.0 ? top : 0.0) / (nD > 1e-300 ? nD : 1e-300);
+  }
+  return OP_OK;
+}
+
+/* the push tasks with box limits only (push.least_slip_push, push.strongest_push) */
+static int op_push(const op_call *c, const op_maps *mp, double *out) {
+  int n = mp->n, nb = 0, unique = 0, j, has_lo = 0, equal = 0, lp;
+  double *tau = out + O_TAU, *bind = out + O_TAU + n, d[3], lam_lo = 0.0;
+  const double *a = mp->a_dir, *ell = ROW(mp->L, 0);
+  double na = sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+  if (!c->tau_max || c->radius > 0) return OP_SIZE;
+  if (na == 0 || mp->k <= 0) return OP_STRUCTURE;
+  lp = c->kind == OP_STRONGEST;
+  if (c->kind == OP_LEAST_SLIP && c->a_obj) { /* a full planar acceleration */
+    double s0 = (a[0] * c->a_obj[0] + a[1] * c->a_obj[1] + a[2] * c->a_obj[2]) / (na * na);
+    double e[3], an = sqrt(c->a_obj[0] * c->a_obj[0] + c->a_obj[1] * c->a_obj[1] +
+                           c->a_obj[2] * c->a_obj[2]);
+    for (j = 0; j < 3; ++j) e[j] = c->a_obj[j] - s0 * a[j];
+    if (sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]) > 1e-6 * (an > 1e-300 ? an : 1e-300))
+      return OP_STRUCTURE;
+    if (s0 < 0) return OP_STRUCTURE;
+    has_lo = equal = 1;
+    lam_lo = s0;
+  } else {
+    double gamma, dn;
+    if (c->direction) {
+      for (j = 0; j < 3; ++j) d[j] = c->direction[j];
+    } else { /* the strongest push along the contact normal */
+      dn = na > 1e-300 ? na : 1e-300;
+      for (j = 0; j < 3; ++j) d[j] = a[j] / dn;
+    }
+    gamma = d[0] * a[0] + d[1] * a[1] + d[2] * a[2];
+    if (gamma <= 1e-9 * na) return OP_STRUCTURE;
+    if (!lp) {
+      has_lo = 1;
+      lam_lo = c->a_min / gamma;
+    }
+    out[O_GAIN] = gamma;
+  }
+  out[O_TIE] = 0.0;
+  if (!op_box_push(c, mp, lp, has_lo, lam_lo, equal, tau, bind, &nb, &unique))
+    return OP_ACTIVE_SET;
+  out[O_NB] = nb;
+  if (lp) {
+    double lam_max = op_dot(ell, tau, n);
+    if (lam_max <= 0) return OP_NOT_POSITIVE;
+    if (!unique) { /* ties: among the strongest pushes, the least snake motion */
+      double t2[OP_MAX], b2[OP_ROWS];
+      int nb2, u2;
+      if (!op_box_push(c, mp, 0, 1, lam_max * (1 - 1e-9), 0, t2, b2, &nb2, &u2))
+        return OP_ACTIVE_SET;
+      for (j = 0; j < n; ++j) tau[j] = t2[j];
+      out[O_TIE] = 1.0;
+    }
+    out[O_EXPECTED] = out[O_GAIN] * op_dot(ell, tau, n);
+    if (!op_push_certificate(c, mp, tau, 0, 0.0, 0, 1, out + O_STAT)) return OP_CERTIFICATE;
+  } else {
+    double xt[OP_MAX];
+    for (j = 0; j < n; ++j) { /* (tau Xi)_j: the column j of Xi */
+      double s = 0.0;
+      int i;
+      for (i = 0; i < n; ++i) s += tau[i] * ROW(mp->Xi, i)[j];
+      xt[j] = s;
+    }
+    out[O_EXPECTED] = op_dot(xt, tau, n);
+    out[O_LAM_LO] = lam_lo;
+    if (!op_push_certificate(c, mp, tau, 1, lam_lo, equal, 0, out + O_STAT)) return OP_CERTIFICATE;
+  }
+  return OP_OK;
+}
+
+int SNAKECG_EXPORT(core_optimal)(const op_call *c) {
+  op_maps mp;
+  int n = (int)c->n, nc = (int)c->nc, i, j, st;
+  double *out = c->out, ll, sum = 0.0;
+  const double *ell;
+  out[O_STATUS] = OP_SIZE;
+  if (n < 1 || n > OP_MAX || nc < 1 || nc > OP_MAX + 2 || c->nw > nc) return OP_SIZE;
+  if (!(c->pivot[0] > c->pivot_tol)) return out[O_STATUS] = OP_MAPS;
+  mp.n = n;
+  mp.nc = nc;
+  mp.nw = (int)c->nw;
+  for (i = 0; i < nc; ++i) /* column-major to row-major */
+    for (j = 0; j < n; ++j) ROW(mp.L, i)[j] = c->L[j * nc + i];
+  for (i = 0; i < n; ++i)
+    for (j = 0; j < n; ++j) {
+      ROW(mp.Xi, i)[j] = c->Xi[j * n + i];
+      ROW(mp.Om, i)[j] = c->Om[j * n + i];
+      ROW(mp.N, i)[j] = c->N[j * n + i];
+    }
+  for (i = 0; i < nc * n; ++i) sum += c->L[i];
+  for (i = 0; i < n * n; ++i) sum += c->Xi[i] + c->N[i];
+  if (!isfinite(sum)) return out[O_STATUS] = OP_MAPS;
+  for (i = 0; i < mp.nw; ++i)
+    if (c->wheel_row[i] < 1 || c->wheel_row[i] >= nc) return OP_SIZE;
+  /* a_obj = a_dir lam_c, k = ||a_dir||^2 in the object's metric (problems.configs) */
+  ell = ROW(mp.L, 0);
+  ll = op_dot(ell, ell, n);
+  for (i = 0; i < 3; ++i) {
+    double s = 0.0;
+    for (j = 0; j < n; ++j) s += c->A[j * 3 + i] * ell[j];
+    mp.a_dir[i] = ll > 0 ? s / ll : 0.0;
+  }
+  mp.k = 0.0;
+  for (i = 0; i < 3; ++i) mp.k += c->Io[i] * mp.a_dir[i] * mp.a_dir[i];
+  out[O_K] = mp.k;
+  for (i = 0; i < 3; ++i) out[O_ADIR + i] = mp.a_dir[i];
+  st = c->kind == OP_MAX_SR ? op_max_sr(c, &mp, out) : op_push(c, &mp, out);
+  if (st == OP_OK) out[O_QUAD] = op_quad(mp.N, OP_MAX, out + O_TAU, n);
+  out[O_STATUS] = st;
+  return st;
+}
+
+/* The dense dual active set alone, for tests: min 1/2 x^T H x + g^T x s.t.
+ * lo <= A x <= hi (H n x n, A R x n, row-major); 1 with x and the rows' multipliers. */
+int SNAKECG_EXPORT(core_dense_qp)(op_int n, op_int R, const double *H, const double *g,
+                                  const double *A, const double *lo, const double *hi, double *x,
+                                  double *lam) {
+  double Hd[DENSE_MAX * DENSE_MAX], Ad[OP_ROWS * DENSE_MAX];
+  op_qp Q;
+  int i, j;
+  if (n < 1 || n > DENSE_MAX || R < 0 || R > OP_ROWS) return -1;
+  for (i = 0; i < n; ++i)
+    for (j = 0; j < n; ++j) Hd[i * DENSE_MAX + j] = H[i * n + j];
+  for (i = 0; i < R; ++i)
+    for (j = 0; j < n; ++j) Ad[i * DENSE_MAX + j] = A[i * n + j];
+  return op_dense_qp(&Q, (int)n, Hd, g, (int)R, Ad, lo, hi, x, lam);
+}
+
+/* The largest eigenvalue of a symmetric n x n matrix (row-major, copied), for tests. */
+double SNAKECG_EXPORT(core_top_eigenvalue)(op_int n, const double *S) {
+  double W[OP_MAX * OP_MAX];
+  int i;
+  if (n < 1 || n > OP_MAX) return NAN;
+  for (i = 0; i < n * n; ++i) W[i] = S[i];
+  return op_top_eigenvalue((int)n, W);
+}
