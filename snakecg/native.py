@@ -51,6 +51,8 @@ CORE_SOURCES = tuple(CORE_SOURCE.with_name(name)
                                   "pieces.c", "optimal.c"))
 #: The header they share (work arrays, contact_system, the held rows' forces).
 CORE_HEADER = CORE_SOURCE.with_name("common.h")
+#: Every header of the runtime core (dense.h: the small dense algebra of optimal.c).
+CORE_HEADERS = (CORE_HEADER, CORE_SOURCE.with_name("dense.h"))
 #: Up to this batch size the outputs of a compiled call share one buffer (see CompiledBackend).
 _SMALL_BATCH = 64
 
@@ -78,7 +80,7 @@ def _core_sources(manifest: dict) -> tuple[dict[str, bytes], str]:
     """The runtime core's C files (snakecg/core/*.c) by name and its layout header."""
     from .core.layout import header
 
-    return ({p.name: p.read_bytes() for p in (*CORE_SOURCES, CORE_HEADER)},
+    return ({p.name: p.read_bytes() for p in (*CORE_SOURCES, *CORE_HEADERS)},
             header(manifest))
 
 

@@ -20,16 +20,17 @@ import numpy as np
 
 from ..core.optimal import OUT
 from ..solver import PIVOT_TOL
-from .certificate import _verdict
+from .certificate import TOLERANCE
 from .fast import wheels
 from .finish import one_result
 from .problems import Answer
-from .result import CONTACT, ELLIPSOID, joint_name
+from .result import CONTACT, ELLIPSOID, Certificate, joint_name
 from .solvers import _COLD
 
 __all__ = ["quick"]
 
 _KEY = "_snakecg_optimize_quick"
+_NO_SLIDE = "_snakecg_optimize_no_slide"  # query.validate's shared "nothing slides"
 
 
 class _Workspace:
@@ -44,8 +45,20 @@ class _Workspace:
         maps = Maps(model)
         if maps.maps._fast is None or maps.place._fast is None or n > MAX_DIM:
             raise LookupError("no compiled one-sample maps")
-        self.place, self.maps = maps.place, maps.maps
-        out = dict(zip(self.maps.out_names, self.maps._outs))
+        # the two generated functions' one-sample calls, chained in place: one q buffer for
+        # both, the placement's outputs q_obj and rho read by the maps where they are written
+        pl, mp = maps.place, maps.maps
+        pout = dict(zip(pl.out_names, pl._outs))
+        out = dict(zip(mp.out_names, mp._outs))
+        self.qbuf = pl._bufs["q"]
+        shared = {"q": self.qbuf, "q_obj": pout["q_obj"], "rho": pout["rho"]}
+        if any(shared[k].size != mp.in_sizes[k] for k in shared):
+            raise LookupError("place_object's outputs do not fit interaction_maps' inputs")
+        self._inputs = [shared.get(k, mp._bufs[k]) for k in mp.in_names]  # kept alive
+        self.place_call = (pl._fast, pl._argp, pl._strides, pl._resp)
+        self.maps_call = (mp._fast, (ctypes.c_void_p * len(mp.in_names))(
+            *[a.ctypes.data for a in self._inputs]), mp._strides, mp._resp)
+        self._functions = maps  # kept alive: the buffers above are theirs
         wl = wheels(model)
         self.wheel_row = np.array([i for i, _, _ in wl], dtype=np.int64)
         self.wheel_ub = np.array([ub for _, ub, _ in wl], dtype=float)
@@ -73,6 +86,9 @@ class _Workspace:
         self.lock = threading.Lock()
 
 
+# certificate._verdict's tolerances (the C's residuals are >= 0 except the gap)
+_TOL_ST, _TOL_PF, _TOL_CO, _TOL_GAP = (TOLERANCE[k] for k in (
+    "stationarity", "primal_feasibility", "complementarity", "duality_gap"))
 _KINDS = {"max_sr": 0, "least_slip_push": 1, "strongest_push": 2}
 _T = OUT["tau"]
 
@@ -95,7 +111,7 @@ def quick(model, query, q, t0):
     the compiled query, or None (the Python path then answers)."""
     objective = query.objective
     if objective == "max_sr":
-        if query.slide.any():
+        if query.slide is not model.__dict__.get(_NO_SLIDE) and query.slide.any():
             return None
     elif query.tau_max is None or query.radius is not None:
         return None
@@ -105,8 +121,13 @@ def quick(model, query, q, t0):
     if not ws or not ws.lock.acquire(False):
         return None
     try:
-        p = ws.place.one(q=q)
-        ws.maps.one(q=q, q_obj=p["q_obj"], rho=p["rho"])
+        ws.qbuf[:] = q
+        fn, a, st, r = ws.place_call
+        if fn(1, a, st, r) != 0:
+            return None
+        fn, a, st, r = ws.maps_call
+        if fn(1, a, st, r) != 0:
+            return None
         c = ws.q
         c.kind = _KINDS[objective]
         c.radius = query.radius if query.radius is not None else 0.0
@@ -145,11 +166,11 @@ def quick(model, query, q, t0):
             solver += "; least-slip tie-break dual active set"
             iters += 1
         claim = ("push", None, False, True)
-    cert = _verdict(kind, {"stationarity": out[6], "primal_feasibility": out[7],
-                           "complementarity": out[8],
-                           "duality_gap": out[9]})
-    if not cert.ok:
-        return None  # the Python path: the same answer, then its cold re-solve
+    st, pf, co, gap = out[6:10]
+    if not (abs(st) <= _TOL_ST and abs(pf) <= _TOL_PF and abs(co) <= _TOL_CO
+            and abs(gap) <= _TOL_GAP):
+        return None  # the Python path: the same answer and certificate, then a cold re-solve
+    cert = Certificate(kind, True, st, pf, co, gap, _TOL_ST, False, "")
     names = ws.names
     nb = int(out[12])
     binding = tuple(dict.fromkeys(
