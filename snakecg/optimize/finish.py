@@ -3,6 +3,7 @@ objective read from it, the forward check of the answer (:func:`check`) and the 
 
 from __future__ import annotations
 
+import math
 import time
 from operator import mul
 
@@ -46,10 +47,13 @@ def objective_value(model, query, a_dir, row) -> float:
         return float(row[cols.index["sr"]])
     if query.objective == "least_slip_push":
         return float(row[cols.index["norm_qdd"]])
+    a_obj = row[cols.slices["a_obj"]].tolist()
     d = query.direction
-    if d is None:
-        d = a_dir / max(np.linalg.norm(a_dir), 1e-300)
-    return float(d @ row[cols.slices["a_obj"]])
+    if d is None:  # on floats (numpy's call overhead exceeds the arithmetic of 3-vectors)
+        ad = a_dir.tolist() if isinstance(a_dir, np.ndarray) else list(a_dir)
+        nrm = max(math.sqrt(sum(map(mul, ad, ad))), 1e-300)
+        return float(sum(map(mul, [x / nrm for x in ad], a_obj)))
+    return float(sum(map(mul, d.tolist(), a_obj)))
 
 
 def check(model, query, a, row, value, e) -> str:
@@ -69,7 +73,8 @@ def check(model, query, a, row, value, e) -> str:
     if row[cols.state] != HELD:
         return "the contact separates at tau"
     states = row[cols.wheels].tolist()
-    for i in range(1, model.n_constraints):
+    for i in (range(1, model.n_constraints)
+              if SLIDE_POS in states or SLIDE_NEG in states else ()):
         s = states[i - 1]
         if (s == SLIDE_POS or s == SLIDE_NEG) and not query.slide[i]:
             name = "slide+" if s == SLIDE_POS else "slide-"

@@ -178,4 +178,4 @@ def quick(model, query, q, t0):
     a = Answer(np.array(out[_T:_T + n]), "optimal", "", binding, solver, iters, out[1],
                claim=claim)
     e = out[10] if query.radius is not None else None
-    return one_result(model, query, q, a, cert, np.array(out[3:6]), e, t0)
+    return one_result(model, query, q, a, cert, out[3:6], e, t0)
