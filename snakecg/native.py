@@ -48,7 +48,7 @@ _warned: set[str] = set()
 CORE_SOURCE = Path(__file__).resolve().parent / "core" / "forward.c"
 CORE_SOURCES = tuple(CORE_SOURCE.with_name(name)
                      for name in ("forward.c", "integrate.c", "settle.c", "run.c", "sphere.c",
-                                  "pieces.c", "optimal.c"))
+                                  "pieces.c", "maps.c", "optimal.c"))
 #: The header they share (work arrays, contact_system, the held rows' forces).
 CORE_HEADER = CORE_SOURCE.with_name("common.h")
 #: Every header of the runtime core (dense.h: the small dense algebra of optimal.c).

@@ -337,3 +337,26 @@ def test_compiled_query_leaves_sliding_and_ellipsoid_pushes_to_python(model3):
         r = sm.optimize(q, objective, **kw)
         assert ws_out[0] == -1.0  # not called
         assert r.status in ("optimal", "infeasible")
+
+
+@pytest.mark.parametrize("joints,scenario", [(1, "wheels"), (3, "wheels"), (3, "frictionless"),
+                                             (6, "ideal_wheels")])
+def test_held_maps_match_interaction_maps(joints, scenario, rng):
+    """maps.c's all-held maps (from contact_system) against the generated interaction_maps
+    (``SceneModel.maps``), including the straight snake; dependent rows refused."""
+    from snakecg.solver import PIVOT_TOL
+
+    sm = snakecg.load(snakecg.Scene(snakecg.Robot(joints=joints), scenario=scenario))
+    kernel = sm.core.optimal
+    for q in _random_configurations(rng, joints, 12):
+        code, got = kernel.held_maps(sm, q, PIVOT_TOL)
+        ref = sm.maps(q)
+        if not ref["pivot_ratio"] > PIVOT_TOL:
+            assert code == 2
+            continue
+        assert code == 0
+        assert abs(got["pivot_ratio"] - ref["pivot_ratio"]) <= 1e-12
+        for name, key in (("L", "lam_from_tau"), ("A", "a_obj_from_tau"), ("Xi", "xi_tau"),
+                          ("Omega", "omega_tau"), ("N", "input_metric")):
+            scale = max(np.abs(ref[key]).max(), 1e-300)
+            assert np.abs(got[name] - ref[key]).max() <= 1e-11 * scale, name

@@ -48,11 +48,13 @@ enum { B_TASK = 0, B_CONTACT = 1, B_ELLIPSOID = 2, B_JOINT = 3 };
 enum { O_STATUS = 0, O_EXPECTED = 1, O_K = 2, O_ADIR = 3, O_STAT = 6, O_PRIMAL = 7, O_COMP = 8,
        O_GAP = 9, O_QUAD = 10, O_TIE = 11, O_NB = 12, O_LAM_LO = 13, O_GAIN = 14, O_TAU = 16 };
 
-/* One query (mirrored in snakecg/core/optimal.py). The maps are the generated
- * interaction_maps' outputs, column-major. */
+/* One query (mirrored in snakecg/core/optimal.py): the configuration, the model's bounded
+ * wheels, the query's limits and task, the outputs. */
 typedef struct {
   op_int kind, n, nc, nw;
-  const double *L, *A, *Xi, *Om, *N, *pivot;
+  const double *scene;     /* the model's scene vector (SCENE_* offsets) */
+  const double *q;         /* the configuration */
+  double *maps;            /* out: the maps (core_held_maps' layout) */
   const op_int *wheel_row; /* nw rows of L with a friction bound */
   const double *wheel_ub;  /* their bounds, backed off by FRICTION_MARGIN */
   const double *Io;        /* 3: the object's inertia diagonal */
@@ -519,28 +521,32 @@ static int op_push(const op_call *c, const op_maps *mp, double *out) {
   return OP_OK;
 }
 
+/* maps.c */
+int SNAKECG_EXPORT(core_held_maps)(const double *scene, const double *q, double pivot_tol,
+                                   double *maps);
+
 int SNAKECG_EXPORT(core_optimal)(const op_call *c) {
   op_maps mp;
   int n = (int)c->n, nc = (int)c->nc, i, j, st;
-  double *out = c->out, ll, sum = 0.0;
-  const double *ell;
+  double *out = c->out, ll;
+  const double *ell, *A = c->maps + SNAKECG_NC * SNAKECG_NA, *src;
   out[O_STATUS] = OP_SIZE;
-  if (n < 1 || n > OP_MAX || nc < 1 || nc > OP_MAX + 2 || c->nw > nc) return OP_SIZE;
-  if (!(c->pivot[0] > c->pivot_tol)) return out[O_STATUS] = OP_MAPS;
+  if (n != SNAKECG_NA || nc != SNAKECG_NC || n > OP_MAX || c->nw > nc) return OP_SIZE;
+  /* the all-held maps at q (maps.c), row-major */
+  if (SNAKECG_EXPORT(core_held_maps)(c->scene, c->q, c->pivot_tol, c->maps))
+    return out[O_STATUS] = OP_MAPS;
   mp.n = n;
   mp.nc = nc;
   mp.nw = (int)c->nw;
-  for (i = 0; i < nc; ++i) /* column-major to row-major */
-    for (j = 0; j < n; ++j) ROW(mp.L, i)[j] = c->L[j * nc + i];
+  for (i = 0; i < nc; ++i)
+    for (j = 0; j < n; ++j) ROW(mp.L, i)[j] = c->maps[i * n + j];
+  src = A + 3 * n;
   for (i = 0; i < n; ++i)
     for (j = 0; j < n; ++j) {
-      ROW(mp.Xi, i)[j] = c->Xi[j * n + i];
-      ROW(mp.Om, i)[j] = c->Om[j * n + i];
-      ROW(mp.N, i)[j] = c->N[j * n + i];
+      ROW(mp.Xi, i)[j] = src[i * n + j];
+      ROW(mp.Om, i)[j] = src[n * n + i * n + j];
+      ROW(mp.N, i)[j] = src[2 * n * n + i * n + j];
     }
-  for (i = 0; i < nc * n; ++i) sum += c->L[i];
-  for (i = 0; i < n * n; ++i) sum += c->Xi[i] + c->N[i];
-  if (!isfinite(sum)) return out[O_STATUS] = OP_MAPS;
   for (i = 0; i < mp.nw; ++i)
     if (c->wheel_row[i] < 1 || c->wheel_row[i] >= nc) return OP_SIZE;
   /* a_obj = a_dir lam_c, k = ||a_dir||^2 in the object's metric (problems.configs) */
@@ -548,7 +554,7 @@ int SNAKECG_EXPORT(core_optimal)(const op_call *c) {
   ll = op_dot(ell, ell, n);
   for (i = 0; i < 3; ++i) {
     double s = 0.0;
-    for (j = 0; j < n; ++j) s += c->A[j * 3 + i] * ell[j];
+    for (j = 0; j < n; ++j) s += A[i * n + j] * ell[j];
     mp.a_dir[i] = ll > 0 ? s / ll : 0.0;
   }
   mp.k = 0.0;

@@ -1,6 +1,7 @@
-"""The Python side of ``optimal.c``: one optimal-torque query on the all-held maps of one
-configuration in one compiled call (:mod:`snakecg.optimize.quick`), and the dense dual active
-set and the symmetric top eigenvalue alone (for tests against independent solvers).
+"""The Python side of ``optimal.c`` and ``maps.c``: one optimal-torque query on the all-held
+maps of one configuration in one compiled call (:mod:`snakecg.optimize.quick`); the maps, the
+dense dual active set and the symmetric top eigenvalue alone (for tests against independent
+references).
 
 :class:`Query` mirrors ``op_call`` field by field; :class:`OptimalKernel` binds the functions
 of one compiled model library.
@@ -12,7 +13,7 @@ import ctypes
 
 import numpy as np
 
-__all__ = ["OptimalKernel", "Query", "MAX_SR", "LEAST_SLIP", "STRONGEST", "MAX_DIM",
+__all__ = ["OptimalKernel", "Query", "maps_size", "MAX_SR", "LEAST_SLIP", "STRONGEST", "MAX_DIM",
            "DENSE_MAX", "OUT"]
 
 _P = ctypes.c_void_p
@@ -37,14 +38,20 @@ CODE_TASK, CODE_CONTACT, CODE_ELLIPSOID, CODE_JOINT = 0, 1, 2, 3
 
 
 class Query(ctypes.Structure):
-    """``op_call``: the maps (column-major outputs of ``interaction_maps``), the model's
-    bounded wheels, the query's limits and task, the output vector."""
+    """``op_call``: the model's scene vector and the configuration, the buffer of the maps,
+    the model's bounded wheels, the query's limits and task, the output vector."""
 
     _fields_ = [("kind", _I), ("n", _I), ("nc", _I), ("nw", _I),
-                ("L", _P), ("A", _P), ("Xi", _P), ("Om", _P), ("N", _P), ("pivot", _P),
+                ("scene", _P), ("q", _P), ("maps", _P),
                 ("wheel_row", _P), ("wheel_ub", _P), ("Io", _P),
                 ("pivot_tol", _D), ("radius", _D), ("tau_max", _P), ("direction", _P),
                 ("a_min", _D), ("a_obj", _P), ("out", _P)]
+
+
+def maps_size(n_joints: int, n_constraints: int) -> int:
+    """Length of the maps' buffer (``core_held_maps``): ``L`` (n_c x n_a), ``A`` (3 x n_a),
+    ``Xi``, ``Omega``, ``N`` (n_a x n_a each), row-major, then the pivot ratio."""
+    return n_constraints * n_joints + 3 * n_joints + 3 * n_joints * n_joints + 1
 
 
 class OptimalKernel:
@@ -62,6 +69,10 @@ class OptimalKernel:
         fn.argtypes = [_I, _I] + [_P] * 7
         fn.restype = ctypes.c_int
         self._qp = fn
+        fn = getattr(lib, f"{prefix}core_held_maps")
+        fn.argtypes = [_P, _P, _D, _P]
+        fn.restype = ctypes.c_int
+        self._maps = fn
         fn = getattr(lib, f"{prefix}core_top_eigenvalue")
         fn.argtypes = [_I, _P]
         fn.restype = _D
@@ -84,6 +95,27 @@ class OptimalKernel:
         ok = self._qp(n, R, H.ctypes.data, g.ctypes.data, A.ctypes.data, lo.ctypes.data,
                       hi.ctypes.data, x.ctypes.data, lam.ctypes.data)
         return (x, lam) if ok == 1 else None
+
+    def held_maps(self, model, q, pivot_tol: float):
+        """maps.c's all-held maps at ``q`` (a model of this library): ``(code, maps)`` with
+        ``maps`` a dict of ``L``, ``A``, ``Xi``, ``Omega``, ``N``, ``pivot_ratio`` and
+        ``code`` 0 when they are defined (1: a call failed, 2: dependent rows, 3: not
+        finite)."""
+        n, nc = model.n_joints, model.n_constraints
+        q = np.ascontiguousarray(q, dtype=float)
+        if q.shape != (model.n_coordinates,):
+            raise ValueError(f"held_maps takes one configuration of {model.n_coordinates}")
+        buf = np.zeros(maps_size(n, nc))
+        code = self._maps(model.scene_address, q.ctypes.data, pivot_tol, buf.ctypes.data)
+        k = 0
+        out = {}
+        for name, shape in (("L", (nc, n)), ("A", (3, n)), ("Xi", (n, n)), ("Omega", (n, n)),
+                            ("N", (n, n))):
+            size = shape[0] * shape[1]
+            out[name] = buf[k:k + size].reshape(shape)
+            k += size
+        out["pivot_ratio"] = float(buf[k])
+        return int(code), out
 
     def top_eigenvalue(self, S) -> float:
         """Largest eigenvalue of a symmetric matrix (cyclic Jacobi, at most ``MAX_DIM``)."""

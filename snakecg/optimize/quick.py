@@ -1,6 +1,7 @@
 """One configuration in one compiled call: the common queries answered by the runtime core's
-``optimal.c`` (:mod:`snakecg.core.optimal`) on the all-held maps, read in place from the
-one-sample buffers of ``interaction_maps``.
+``optimal.c`` (:mod:`snakecg.core.optimal`) on the all-held maps, which ``maps.c`` builds in
+the same call from the generated ``place_object`` and ``contact_system`` (the code the forward
+check runs next; the same maps as ``interaction_maps`` to rounding).
 
 The C performs what the Python path does for the same cases (``max_sr`` with every wheel
 sticking in its rank-one closed form; the push tasks with box limits only by the dense dual
@@ -34,44 +35,29 @@ _NO_SLIDE = "_snakecg_optimize_no_slide"  # query.validate's shared "nothing sli
 
 
 class _Workspace:
-    """``place_object`` and ``interaction_maps`` bound to the model's constants, the
-    ``op_call`` pointing at their output buffers, the query's buffers and the output vector."""
+    """The ``op_call`` of one model: its scene vector, the configuration's buffer, the maps'
+    buffer, the model's bounded wheels, the query's buffers and the output vector."""
 
     def __init__(self, model):
-        from ..core.optimal import MAX_DIM, Query
-        from .fast import _Workspace as Maps
+        from ..core.optimal import MAX_DIM, Query, maps_size
 
         n, nc = model.n_joints, model.n_constraints
-        maps = Maps(model)
-        if maps.maps._fast is None or maps.place._fast is None or n > MAX_DIM:
-            raise LookupError("no compiled one-sample maps")
-        # the two generated functions' one-sample calls, chained in place: one q buffer for
-        # both, the placement's outputs q_obj and rho read by the maps where they are written
-        pl, mp = maps.place, maps.maps
-        pout = dict(zip(pl.out_names, pl._outs))
-        out = dict(zip(mp.out_names, mp._outs))
-        self.qbuf = pl._bufs["q"]
-        shared = {"q": self.qbuf, "q_obj": pout["q_obj"], "rho": pout["rho"]}
-        if any(shared[k].size != mp.in_sizes[k] for k in shared):
-            raise LookupError("place_object's outputs do not fit interaction_maps' inputs")
-        self._inputs = [shared.get(k, mp._bufs[k]) for k in mp.in_names]  # kept alive
-        self.place_call = (pl._fast, pl._argp, pl._strides, pl._resp)
-        self.maps_call = (mp._fast, (ctypes.c_void_p * len(mp.in_names))(
-            *[a.ctypes.data for a in self._inputs]), mp._strides, mp._resp)
-        self._functions = maps  # kept alive: the buffers above are theirs
+        if n > MAX_DIM:
+            raise LookupError("too many joints for the compiled query")
         wl = wheels(model)
+        self.qbuf = np.zeros(model.n_coordinates)
+        self.maps = np.zeros(maps_size(n, nc))
         self.wheel_row = np.array([i for i, _, _ in wl], dtype=np.int64)
         self.wheel_ub = np.array([ub for _, ub, _ in wl], dtype=float)
-        self.Io = np.array(maps.Io, dtype=float)
+        sc = model.scene
+        self.Io = np.array([sc.object_mass, sc.object_mass, sc.object_inertia], dtype=float)
         self.tau_max = np.zeros(n)
         self.direction = np.zeros(3)
         self.a_obj = np.zeros(3)
         self.out = np.zeros(OUT["tau"] + 2 * n + 3 + len(wl) + 8)
-        self.maps_out = out  # kept alive: the C reads them
-        self.q = Query(0, n, nc, len(wl), out["lam_from_tau"].ctypes.data,
-                       out["a_obj_from_tau"].ctypes.data, out["xi_tau"].ctypes.data,
-                       out["omega_tau"].ctypes.data, out["input_metric"].ctypes.data,
-                       out["pivot_ratio"].ctypes.data, self.wheel_row.ctypes.data,
+        self.model = model  # its scene vector must outlive the call's pointer to it
+        self.q = Query(0, n, nc, len(wl), model.scene_address, self.qbuf.ctypes.data,
+                       self.maps.ctypes.data, self.wheel_row.ctypes.data,
                        self.wheel_ub.ctypes.data, self.Io.ctypes.data, PIVOT_TOL, 0.0, None,
                        None, 0.0, None, self.out.ctypes.data)
         self.address = ctypes.addressof(self.q)
@@ -122,12 +108,6 @@ def quick(model, query, q, t0):
         return None
     try:
         ws.qbuf[:] = q
-        fn, a, st, r = ws.place_call
-        if fn(1, a, st, r) != 0:
-            return None
-        fn, a, st, r = ws.maps_call
-        if fn(1, a, st, r) != 0:
-            return None
         c = ws.q
         c.kind = _KINDS[objective]
         c.radius = query.radius if query.radius is not None else 0.0
