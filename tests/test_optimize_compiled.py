@@ -319,6 +319,8 @@ def test_compiled_query_equals_python_path(joints, rng, monkeypatch):
                 _python_path(m)
                 r0 = sm.optimize(q, objective, **kw)
             _same(r0, r1)
+            # the forward solve the compiled call ran is SceneModel.forward's, bit for bit
+            np.testing.assert_array_equal(r1.analysis.raw, sm.forward(q, r1.tau).raw)
             if code == 0:
                 assert r1.status == "optimal" and r1.certificate.ok
     assert codes.get(0, 0) >= 0.5 * sum(codes.values())

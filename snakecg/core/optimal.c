@@ -46,7 +46,8 @@ enum { OP_OK = 0, OP_SIZE = 1, OP_MAPS = 2, OP_STRUCTURE = 3, OP_CLOSED_FORM = 4
 enum { B_TASK = 0, B_CONTACT = 1, B_ELLIPSOID = 2, B_JOINT = 3 };
 /* the output vector */
 enum { O_STATUS = 0, O_EXPECTED = 1, O_K = 2, O_ADIR = 3, O_STAT = 6, O_PRIMAL = 7, O_COMP = 8,
-       O_GAP = 9, O_QUAD = 10, O_TIE = 11, O_NB = 12, O_LAM_LO = 13, O_GAIN = 14, O_TAU = 16 };
+       O_GAP = 9, O_QUAD = 10, O_TIE = 11, O_NB = 12, O_LAM_LO = 13, O_GAIN = 14, O_FORWARD = 15,
+       O_TAU = 16 };
 
 /* One query (mirrored in snakecg/core/optimal.py): the configuration, the model's bounded
  * wheels, the query's limits and task, the outputs. */
@@ -65,6 +66,11 @@ typedef struct {
   double a_min;
   const double *a_obj;     /* 3, or null */
   double *out;
+  /* the exact forward solve at the answer (forward.c's core_forward, as SceneModel.forward
+   * calls it for one sample at rest): its solver constants, iteration limit, output row */
+  const double *constants;
+  op_int max_iter;
+  double *row;
 } op_call;
 
 /* ---------------------------------------------------------------------------------------
@@ -524,6 +530,10 @@ static int op_push(const op_call *c, const op_maps *mp, double *out) {
 /* maps.c */
 int SNAKECG_EXPORT(core_held_maps)(const double *scene, const double *q, double pivot_tol,
                                    double *maps);
+/* forward.c */
+int SNAKECG_EXPORT(core_forward)(op_int n, const double *scene, const double *constants,
+                                 op_int max_iter, const double *const *in, const op_int *stride,
+                                 double *out);
 
 int SNAKECG_EXPORT(core_optimal)(const op_call *c) {
   op_maps mp;
@@ -562,8 +572,23 @@ int SNAKECG_EXPORT(core_optimal)(const op_call *c) {
   out[O_K] = mp.k;
   for (i = 0; i < 3; ++i) out[O_ADIR + i] = mp.a_dir[i];
   st = c->kind == OP_MAX_SR ? op_max_sr(c, &mp, out) : op_push(c, &mp, out);
-  if (st == OP_OK) out[O_QUAD] = op_quad(mp.N, OP_MAX, out + O_TAU, n);
   out[O_STATUS] = st;
+  if (st != OP_OK) return st;
+  out[O_QUAD] = op_quad(mp.N, OP_MAX, out + O_TAU, n);
+  { /* the forward solve at the answer: q, v = 0, tau, the object placed, at rest */
+    static const double zero[SNAKECG_NS] = {0.0};
+    const double *in[7];
+    op_int stride[7] = {0, 0, 0, 0, 0, 0, 0};
+    in[IN_q] = c->q;
+    in[IN_v] = zero;
+    in[IN_tau] = out + O_TAU;
+    in[IN_q_obj] = 0;
+    in[IN_v_obj] = zero;
+    in[IN_f_obj] = zero;
+    in[IN_rho] = 0;
+    out[O_FORWARD] = SNAKECG_EXPORT(core_forward)(1, c->scene, c->constants, c->max_iter, in,
+                                                  stride, c->row);
+  }
   return st;
 }
 

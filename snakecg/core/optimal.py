@@ -31,7 +31,7 @@ MAX_ROWS = 2 * MAX_DIM + 4
 #: binding codes.
 OUT = {"status": 0, "expected": 1, "k": 2, "a_dir": 3, "stationarity": 6, "primal": 7,
        "complementarity": 8, "gap": 9, "quad": 10, "tie": 11, "nb": 12, "lam_lo": 13,
-       "gain": 14, "tau": 16}
+       "gain": 14, "forward": 15, "tau": 16}
 #: Binding codes: 0 the task row, 1 the contact, 2 the ellipsoid, 3 + j joint j (from 0),
 #: 3 + n_a + w the w-th bounded wheel.
 CODE_TASK, CODE_CONTACT, CODE_ELLIPSOID, CODE_JOINT = 0, 1, 2, 3
@@ -39,13 +39,16 @@ CODE_TASK, CODE_CONTACT, CODE_ELLIPSOID, CODE_JOINT = 0, 1, 2, 3
 
 class Query(ctypes.Structure):
     """``op_call``: the model's scene vector and the configuration, the buffer of the maps,
-    the model's bounded wheels, the query's limits and task, the output vector."""
+    the model's bounded wheels, the query's limits and task, the output vector, and what the
+    forward solve at the answer takes (``core_forward``'s constants and iteration limit, the
+    output row)."""
 
     _fields_ = [("kind", _I), ("n", _I), ("nc", _I), ("nw", _I),
                 ("scene", _P), ("q", _P), ("maps", _P),
                 ("wheel_row", _P), ("wheel_ub", _P), ("Io", _P),
                 ("pivot_tol", _D), ("radius", _D), ("tau_max", _P), ("direction", _P),
-                ("a_min", _D), ("a_obj", _P), ("out", _P)]
+                ("a_min", _D), ("a_obj", _P), ("out", _P),
+                ("constants", _P), ("max_iter", _I), ("row", _P)]
 
 
 def maps_size(n_joints: int, n_constraints: int) -> int:

@@ -9,17 +9,20 @@ from operator import mul
 
 import numpy as np
 
+from ..forward import ForwardResult
 from ..solver import ABSENT, HELD, SLIDE_NEG, SLIDE_POS
 from .result import CHECK_TOL, OptimizeResult
 
 __all__ = ["one_result", "check", "objective_value", "state_names"]
 
 
-def one_result(model, query, q, a, cert, a_dir, e, t0) -> OptimizeResult:
+def one_result(model, query, q, a, cert, a_dir, e, t0, raw=None) -> OptimizeResult:
     """The result of one configuration ``q`` for the answer ``a`` and its certificate: the
-    one-sample forward solve at ``a.tau``, the objective read from it, the forward check
-    (``e``: ``tau^T N tau`` of the answer when the query has an ellipsoid)."""
-    analysis = model.forward(q, np.ascontiguousarray(a.tau, dtype=float))
+    one-sample forward solve at ``a.tau`` (``raw``: its result row when the compiled query
+    has run it already), the objective read from it, the forward check (``e``:
+    ``tau^T N tau`` of the answer when the query has an ellipsoid)."""
+    analysis = (model.forward(q, np.ascontiguousarray(a.tau, dtype=float)) if raw is None
+                else ForwardResult(raw, model.columns))
     value = objective_value(model, query, a_dir, analysis.raw)
     if a.status == "optimal":
         problem = check(model, query, a, analysis.raw, value, e)

@@ -1,12 +1,13 @@
 """One configuration in one compiled call: the common queries answered by the runtime core's
 ``optimal.c`` (:mod:`snakecg.core.optimal`) on the all-held maps, which ``maps.c`` builds in
 the same call from the generated ``place_object`` and ``contact_system`` (the code the forward
-check runs next; the same maps as ``interaction_maps`` to rounding).
+check runs next; the same maps as ``interaction_maps`` to rounding), and that ends with the
+exact forward solve at the answer (``core_forward``, as :meth:`SceneModel.forward` runs it).
 
 The C performs what the Python path does for the same cases (``max_sr`` with every wheel
 sticking in its rank-one closed form; the push tasks with box limits only by the dense dual
 active set), with the same certificate on the original problem; the answer then goes through
-the same exact forward solve and forward check (:mod:`snakecg.optimize.finish`). Anything
+the same forward check (:mod:`snakecg.optimize.finish`). Anything
 else — a structural infeasibility, a closed form that does not apply, the active set giving
 up, a certificate that fails or needs non-negative least squares, a busy workspace, a model
 without compiled code — returns None, and the Python path answers the query from the start
@@ -19,6 +20,7 @@ import threading
 
 import numpy as np
 
+from ..core import STATUS_EXACT
 from ..core.optimal import OUT
 from ..solver import PIVOT_TOL
 from .certificate import TOLERANCE
@@ -55,11 +57,14 @@ class _Workspace:
         self.direction = np.zeros(3)
         self.a_obj = np.zeros(3)
         self.out = np.zeros(OUT["tau"] + 2 * n + 3 + len(wl) + 8)
+        self.row = np.zeros(model.columns.width)  # the forward solve's result row
         self.model = model  # its scene vector must outlive the call's pointer to it
         self.q = Query(0, n, nc, len(wl), model.scene_address, self.qbuf.ctypes.data,
                        self.maps.ctypes.data, self.wheel_row.ctypes.data,
                        self.wheel_ub.ctypes.data, self.Io.ctypes.data, PIVOT_TOL, 0.0, None,
-                       None, 0.0, None, self.out.ctypes.data)
+                       None, 0.0, None, self.out.ctypes.data, model.core.constants_address,
+                       model.max_iter, self.row.ctypes.data)
+        self.status = model.columns.status
         self.address = ctypes.addressof(self.q)
         self.call = model.core.optimal.call
         self.tau_max_address = self.tau_max.ctypes.data
@@ -77,6 +82,7 @@ _TOL_ST, _TOL_PF, _TOL_CO, _TOL_GAP = (TOLERANCE[k] for k in (
     "stationarity", "primal_feasibility", "complementarity", "duality_gap"))
 _KINDS = {"max_sr": 0, "least_slip_push": 1, "strongest_push": 2}
 _T = OUT["tau"]
+_FORWARD = OUT["forward"]
 
 
 def _workspace(model):
@@ -130,6 +136,10 @@ def quick(model, query, q, t0):
         if ws.call(ws.address) != 0:
             return None
         out = ws.out.tolist()
+        # the forward solve at the answer ran in the same call (core_forward, as
+        # SceneModel.forward runs it); a row it left to the reference path goes there
+        raw = (ws.row.copy() if out[_FORWARD] == 0 and ws.row[ws.status] == STATUS_EXACT
+               else None)
     finally:
         ws.lock.release()
     n = ws.n
@@ -158,4 +168,4 @@ def quick(model, query, q, t0):
     a = Answer(np.array(out[_T:_T + n]), "optimal", "", binding, solver, iters, out[1],
                claim=claim)
     e = out[10] if query.radius is not None else None
-    return one_result(model, query, q, a, cert, out[3:6], e, t0)
+    return one_result(model, query, q, a, cert, out[3:6], e, t0, raw)
