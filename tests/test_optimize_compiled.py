@@ -296,14 +296,15 @@ def test_compiled_query_matches_references(joints, rng):
     assert counts["least_slip_push"] >= 18
 
 
-@pytest.mark.parametrize("joints", [2, 3])
+@pytest.mark.parametrize("joints", [1, 2, 3])
 def test_compiled_query_equals_python_path(joints, rng, monkeypatch):
     """Every kind the compiled call takes, answered or not, feasible or not: the same result
     as the Python path."""
     sm = snakecg.load(snakecg.Scene(snakecg.Robot(joints=joints), scenario="wheels"))
     codes = {}
     for q in _random_configurations(rng, joints, 15):
-        cases = [("max_sr", {}), ("max_sr", dict(tau_max=0.2)),
+        cases = [("max_sr", {}), ("max_sr", dict(tau_max=0.2)),  # (one joint: the Python
+                 # path's one-sample maps were 1-D there and failed)
                  ("max_sr", dict(tau_max=0.2, radius=0.8)),
                  ("strongest_push", dict(tau_max=0.3)),
                  ("strongest_push", dict(tau_max=0.3, direction=np.array([1.0, 0.0]))),
@@ -321,8 +322,9 @@ def test_compiled_query_equals_python_path(joints, rng, monkeypatch):
             _same(r0, r1)
             # the forward solve the compiled call ran is SceneModel.forward's, bit for bit
             np.testing.assert_array_equal(r1.analysis.raw, sm.forward(q, r1.tau).raw)
-            if code == 0:
-                assert r1.status == "optimal" and r1.certificate.ok
+            if code == 0:  # answered and certified (the forward check may still refuse a
+                # degenerate answer, e.g. a push of 1e-16: then both paths say "failed")
+                assert r1.certificate.ok and r1.status in ("optimal", "failed")
     assert codes.get(0, 0) >= 0.5 * sum(codes.values())
     assert sum(v for k, v in codes.items() if k != 0) > 0  # the Python path was exercised
 

@@ -58,7 +58,7 @@ class _Workspace:
         self.a_obj = np.zeros(3)
         self.out = np.zeros(OUT["tau"] + 2 * n + 3 + len(wl) + 8)
         self.row = np.zeros(model.columns.width)  # the forward solve's result row
-        self.model = model  # its scene vector must outlive the call's pointer to it
+        # model.scene_address stays valid: this workspace lives in the model's __dict__
         self.q = Query(0, n, nc, len(wl), model.scene_address, self.qbuf.ctypes.data,
                        self.maps.ctypes.data, self.wheel_row.ctypes.data,
                        self.wheel_ub.ctypes.data, self.Io.ctypes.data, PIVOT_TOL, 0.0, None,
