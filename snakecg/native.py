@@ -51,8 +51,9 @@ CORE_SOURCES = tuple(CORE_SOURCE.with_name(name)
                                   "pieces.c", "maps.c", "optimal.c"))
 #: The header they share (work arrays, contact_system, the held rows' forces).
 CORE_HEADER = CORE_SOURCE.with_name("common.h")
-#: Every header of the runtime core (dense.h: the small dense algebra of optimal.c).
-CORE_HEADERS = (CORE_HEADER, CORE_SOURCE.with_name("dense.h"))
+#: Every header of the runtime core (dense.h, optimal.h: the small dense algebra, the query's
+#: types and the certificate of optimal.c).
+CORE_HEADERS = (CORE_HEADER, *(CORE_SOURCE.with_name(name) for name in ("dense.h", "optimal.h")))
 #: Up to this batch size the outputs of a compiled call share one buffer (see CompiledBackend).
 _SMALL_BATCH = 64
 

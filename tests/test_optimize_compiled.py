@@ -26,7 +26,7 @@ from scipy.linalg import eigh
 from scipy.optimize import linprog
 
 import snakecg
-import snakecg.optimize.api as api
+from snakecg.optimize import api
 from snakecg.optimize import FRICTION_MARGIN
 
 
@@ -115,7 +115,7 @@ def test_dense_qp_matches_qpoases(kernel, rng, degenerate):
     answered = 0
     trials = 150
     for _ in range(trials):
-        H, g, A, lo, hi, xf = _random_qp(rng, degenerate)
+        H, g, A, lo, hi, _ = _random_qp(rng, degenerate)
         got = kernel.dense_qp(H, g, A, lo, hi)
         # the Python method it transcribes gives up exactly when it does
         py = active_set.solve(H, g, A, lo, hi, -np.inf * np.ones(g.size),

@@ -19,6 +19,7 @@ from .quick import quick
 from .result import Certificate, OptimizeResult
 from .solvers import cold
 
+
 def optimize(model, q, objective: str = "max_sr", *, tau_max=None, radius=None,
              direction=None, a_min=None, a_obj=None, allow_slide=False) -> OptimizeResult:
     """The optimal joint torque for a task at configuration ``q`` (at rest).
