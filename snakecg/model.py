@@ -199,6 +199,8 @@ class RobotModel:
 
 
 _F64 = np.dtype(np.float64)
+#: snakecg.optimize's entry point and argument screen, imported on first use
+_LAZY: dict = {}
 
 
 def _plain(x, size: int) -> bool:
@@ -528,10 +530,13 @@ class SceneModel(RobotModel):
         ``reason``, ``analysis`` = the forward result at ``tau``); see
         :func:`snakecg.optimize.optimize` and docs/optimize.md.
         """
-        from .optimize import optimize
-        from .optimize.arguments import screen
+        run = _LAZY.get("optimize")
+        if run is None:  # imported once (an import inside every call costs microseconds)
+            from .optimize import optimize as run
+            from .optimize.arguments import screen
 
-        return optimize(self, q, objective=objective, **screen(kwargs))
+            _LAZY["optimize"], _LAZY["screen"] = run, screen
+        return run(self, q, objective=objective, **_LAZY["screen"](kwargs))
 
     # simulation (snakecg.simulate) -------------------------------------------------------------
     def simulate(self, q0, tau, duration, v0=None, **kwargs):

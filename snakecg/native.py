@@ -53,9 +53,12 @@ _warned: set[str] = set()
 CORE_SOURCE = Path(__file__).resolve().parent / "core" / "forward.c"
 CORE_SOURCES = tuple(CORE_SOURCE.with_name(name)
                      for name in ("forward.c", "integrate.c", "settle.c", "run.c", "sphere.c",
-                                  "pieces.c"))
+                                  "pieces.c", "maps.c", "optimal.c"))
 #: The header they share (work arrays, contact_system, the held rows' forces).
 CORE_HEADER = CORE_SOURCE.with_name("common.h")
+#: Every header of the runtime core (dense.h, optimal.h: the small dense algebra, the query's
+#: types and the certificate of optimal.c).
+CORE_HEADERS = (CORE_HEADER, *(CORE_SOURCE.with_name(name) for name in ("dense.h", "optimal.h")))
 #: Up to this batch size the outputs of a compiled call share one buffer (see CompiledBackend).
 _SMALL_BATCH = 64
 
@@ -83,7 +86,7 @@ def _core_sources(manifest: dict) -> tuple[dict[str, bytes], str]:
     """The runtime core's C files (snakecg/core/*.c) by name and its layout header."""
     from .core.layout import header
 
-    return ({p.name: p.read_bytes() for p in (*CORE_SOURCES, CORE_HEADER)},
+    return ({p.name: p.read_bytes() for p in (*CORE_SOURCES, *CORE_HEADERS)},
             header(manifest))
 
 

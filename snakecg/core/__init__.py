@@ -24,6 +24,7 @@ from ..rows import WEAK
 from ..solver import FORCE_LIMIT, PIVOT_TOL, REL_TOL
 from .layout import INPUTS, Layout
 from .segment import segment_functions
+from .optimal import OptimalKernel
 from .sphere import SphereKernel
 
 __all__ = ["Core", "Data", "Layout", "CONSTANTS", "STATUS_EXACT", "STATUS_FALLBACK"]
@@ -66,6 +67,8 @@ class Core:
         ``core_settle``, run.c's ``core_run`` (:mod:`snakecg.core.segment`)."""
         self.sphere = SphereKernel(lib, manifest["prefix"])
         """sphere.c's faces and KKT candidates (:mod:`snakecg.core.sphere`)."""
+        self.optimal = OptimalKernel(lib, manifest["prefix"])
+        """optimal.c's one-call optimal-torque query (:mod:`snakecg.core.optimal`)."""
 
     def next_states(self, state, lam, w, G, bounds) -> tuple[np.ndarray, bool]:
         """The C's row-state update for one sample (the rules of

@@ -5,19 +5,20 @@ from __future__ import annotations
 
 import math
 import time
-from operator import mul
 
 import numpy as np
 
-from ..solver import ABSENT, HELD, SLIDE_NEG, SLIDE_POS
 from .certificate import certify
-from .max_sr import max_sr
 from .fast import quad
+from .finish import check, objective_value, one_result, state_names
+from .max_sr import max_sr
 from .problems import Answer, configs, floats
 from .push import least_slip_push, strongest_push
 from .query import validate
-from .result import CHECK_TOL, Certificate, OptimizeResult
+from .quick import quick
+from .result import Certificate, OptimizeResult
 from .solvers import cold
+
 
 def optimize(model, q, objective: str = "max_sr", *, tau_max=None, radius=None,
              direction=None, a_min=None, a_obj=None, allow_slide=False) -> OptimizeResult:
@@ -59,6 +60,10 @@ def optimize(model, q, objective: str = "max_sr", *, tau_max=None, radius=None,
     t0 = time.perf_counter()
     query = validate(model, objective, tau_max, radius, direction, a_min, a_obj, allow_slide)
     qa, batched = _configurations(model, q)
+    if not batched:  # the common case in one compiled call, when it applies
+        res = quick(model, query, qa[0], t0)
+        if res is not None:
+            return res
     cfgs = configs(model, qa)
     run = {"max_sr": max_sr, "least_slip_push": least_slip_push,
            "strongest_push": strongest_push}[query.objective]
@@ -76,25 +81,19 @@ def optimize(model, q, objective: str = "max_sr", *, tau_max=None, radius=None,
         certs.append(cert)
     if not batched:  # one configuration: the one-sample forward solve, plain fields
         a, cfg = answers[0], cfgs[0]
-        analysis = model.forward(cfg.q, np.ascontiguousarray(a.tau, dtype=float))
-        value = _objective_value(model, query, cfg, analysis.raw)
-        if a.status == "optimal":
-            problem = _check(model, query, cfg, a, analysis.raw, value)
-            if problem:
-                a.status, a.reason = "failed", f"forward check: {problem}"
-        return OptimizeResult(
-            objective=query.objective, tau=analysis.tau.copy(), status=a.status,
-            reason=a.reason, objective_value=value, binding=a.binding, analysis=analysis,
-            solver=a.solver, iterations=int(a.iterations), time=time.perf_counter() - t0,
-            wheel_states_assumed=_state_names(a.states), certificate=certs[0])
+        e = (quad(floats(cfg)["N"], a.tau.tolist()) if query.radius is not None
+             and a.status == "optimal" else None)
+        return one_result(model, query, cfg.q, a, certs[0], cfg.a_dir, e, t0)
     taus = np.array([a.tau for a in answers])
     analysis = model.forward(qa, taus)
     raw = analysis.raw
-    values = np.array([_objective_value(model, query, cfg, raw[b])
+    values = np.array([objective_value(model, query, cfg.a_dir, raw[b])
                        for b, cfg in enumerate(cfgs)])
     for b, (a, cfg) in enumerate(zip(answers, cfgs)):
         if a.status == "optimal":
-            problem = _check(model, query, cfg, a, raw[b], values[b])
+            e = (quad(floats(cfg)["N"], a.tau.tolist()) if query.radius is not None
+                 else None)
+            problem = check(model, query, a, raw[b], values[b], e)
             if problem:
                 a.status, a.reason = "failed", f"forward check: {problem}"
     elapsed = (time.perf_counter() - t0) / len(answers)
@@ -106,7 +105,7 @@ def optimize(model, q, objective: str = "max_sr", *, tau_max=None, radius=None,
         solver=np.array([a.solver for a in answers], dtype=object),
         iterations=np.array([a.iterations for a in answers]),
         time=np.full(len(answers), elapsed),
-        wheel_states_assumed=[_state_names(a.states) for a in answers],
+        wheel_states_assumed=[state_names(a.states) for a in answers],
         certificate=certs,
     )
 
@@ -142,63 +141,3 @@ def _certified(model, query, cfg, run):
     return b, cert_b
 
 
-def _state_names(states):
-    if states is None:
-        return None
-    table = {ABSENT: "none", HELD: "stick", SLIDE_POS: "slide+", SLIDE_NEG: "slide-"}
-    return np.array([table[int(s)] for s in states[1:]])
-
-
-def _objective_value(model, query, cfg, row) -> float:
-    """The query's objective read from the forward result's row."""
-    cols = model.columns
-    if query.objective == "max_sr":
-        return float(row[cols.index["sr"]])
-    if query.objective == "least_slip_push":
-        return float(row[cols.index["norm_qdd"]])
-    d = query.direction
-    if d is None:
-        d = cfg.a_dir / max(np.linalg.norm(cfg.a_dir), 1e-300)
-    return float(d @ row[cols.slices["a_obj"]])
-
-
-def _check(model, query, cfg, a: Answer, row, value) -> str:
-    """Compare the answer with the exact forward solve (its result row); '' when everything
-    holds."""
-    tau = a.tau
-    tl = tau.tolist()
-    if query.tau_max is not None:
-        over = [abs(t) / m for t, m in zip(tl, query.tau_max.tolist())]
-        if max(over) > 1 + 1e-9:
-            j = over.index(max(over))
-            return f"|tau_{j + 1}| = {abs(tl[j]):.6g} exceeds tau_max = {query.tau_max[j]:.6g}"
-    if query.radius is not None:
-        e = quad(floats(cfg)["N"], tl)
-        if e > query.radius**2 * (1 + 1e-7):
-            return f"tau^T N tau = {e:.6g} exceeds radius^2 = {query.radius**2:.6g}"
-    cols = model.columns
-    if row[cols.state] != HELD:
-        return "the contact separates at tau"
-    states = row[cols.wheels].tolist()
-    for i in range(1, model.n_constraints):
-        s = states[i - 1]
-        if (s == SLIDE_POS or s == SLIDE_NEG) and not query.slide[i]:
-            name = "slide+" if s == SLIDE_POS else "slide-"
-            return (f"the wheel on link {i} slides ({name}) although the optimiser kept it"
-                    f" within its friction bound")
-    if a.expected is not None:
-        scale = max(abs(a.expected), 1.0 if query.objective == "max_sr" else abs(value), 1e-300)
-        if abs(value - a.expected) > CHECK_TOL * scale:
-            return (f"objective {value:.9g} from the forward solve differs from the optimiser's "
-                    f"{a.expected:.9g}")
-    if query.objective == "least_slip_push":
-        a_obj = row[cols.slices["a_obj"]]
-        if query.a_obj is not None:
-            err = np.linalg.norm(a_obj - query.a_obj)
-            if err > 1e-6 * max(np.linalg.norm(query.a_obj), 1e-12):
-                return f"a_obj = {a_obj.tolist()} misses the requested {query.a_obj.tolist()}"
-        else:
-            got = sum(map(mul, query.direction.tolist(), a_obj.tolist()))
-            if got < query.a_min * (1 - 1e-6):
-                return f"d . a_obj = {got:.6g} < a_min = {query.a_min:.6g}"
-    return ""

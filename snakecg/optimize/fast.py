@@ -60,8 +60,10 @@ def one_sample_maps(model, q: np.ndarray):
         m = ws.maps.one(q=q, q_obj=p["q_obj"], rho=p["rho"])
         if not m["pivot_ratio"][0] > PIVOT_TOL:
             return None
-        out = (m["lam_from_tau"].copy(), m["a_obj_from_tau"].copy(), m["xi_tau"].copy(),
-               m["omega_tau"].copy(), m["input_metric"].copy(), ws.Io)
+        n = q.shape[0] - 3  # (one joint: the buffers' views of one column are 1-D)
+        out = (m["lam_from_tau"].reshape(-1, n).copy(), m["a_obj_from_tau"].reshape(3, n).copy(),
+               m["xi_tau"].reshape(n, n).copy(), m["omega_tau"].reshape(n, n).copy(),
+               m["input_metric"].reshape(n, n).copy(), ws.Io)
     finally:
         if own:
             ws.lock.release()

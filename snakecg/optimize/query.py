@@ -34,10 +34,16 @@ def _finite_vector(name, value, sizes, what):
     return arr
 
 
-def validate(model, objective, tau_max, radius, direction, a_min, a_obj, allow_slide):
-    from ..model import SceneModel
+#: snakecg.model.SceneModel, imported on first use (an import inside every call costs
+#: microseconds)
+_SceneModel = None
 
-    if not isinstance(model, SceneModel):
+
+def validate(model, objective, tau_max, radius, direction, a_min, a_obj, allow_slide):
+    global _SceneModel
+    if _SceneModel is None:
+        from ..model import SceneModel as _SceneModel
+    if not isinstance(model, _SceneModel):
         raise InputError(
             f"model must be a snakecg.SceneModel (snakecg.load(scene)), got {type(model).__name__}"
         )
