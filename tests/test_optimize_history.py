@@ -222,6 +222,33 @@ def test_threads_give_the_answers_of_the_queries_alone(alone):
     assert not errors, errors[0]
 
 
+def test_six_joints_least_slip_alone_and_in_sequence():
+    """Six joints: the least-slip form has rank 3 < n_a, so the optimum is a face and a
+    hot-started qpOASES ended on a point of it that depended on the queries before (torques
+    2.5e-5 apart). Each query alone in a fresh process, then all in one process in two
+    orders with strongest pushes between them: the same torques."""
+    key = "6-wheels-100"
+    sm = _model(key)
+    rng = np.random.default_rng(3)
+    cases = {}
+    for k in range(8):
+        q = [0.0, 0.0, 0.0, *rng.uniform(-1.5, 1.5, 6)]
+        strong = sm.optimize(np.array(q), "strongest_push", tau_max=0.3)
+        if strong.status != "optimal":
+            continue
+        d = strong.analysis.a_obj[:2] / np.linalg.norm(strong.analysis.a_obj[:2])
+        kw = {"tau_max": 0.3, "direction": d.tolist(), "a_min": 0.5 * strong.objective_value}
+        cases[f"six-{k}"] = (key, q, "least_slip_push", kw)
+    assert len(cases) >= 5
+    ref = {name: _alone(case) for name, case in cases.items()}
+    assert all(r["status"] == "optimal" and r["certified"] for r in ref.values())
+    for order in (list(cases), list(rng.permutation(list(cases)))):
+        for name in order:
+            key_, q, _, kw = cases[name]
+            sm.optimize(np.array(q), "strongest_push", tau_max=0.3)  # a different problem first
+            _same(_answer(cases[name]), ref[name], f"{name} in a sequence")
+
+
 # ------------------------------------------------------------------------------------------
 # the certificate
 # ------------------------------------------------------------------------------------------

@@ -3,22 +3,22 @@
 
 History independence. CasADi's qpOASES interface hot-starts every call from the previous
 call's working set, and that homotopy can stop at a point that is not the optimum of the new
-problem while reporting success. Here no answer depends on what ran before:
+problem while reporting success; where the optimum is not unique (a least-slip QP with more
+than three joints: its form has rank 3) it ends on a point of the optimal face that depends
+on what ran before. Here no answer depends on what ran before:
 
 * every small QP and LP (``active_set.DENSE_MAX`` free variables at most) is first solved by
   :mod:`snakecg.optimize.active_set` (a dense dual active set from the unconstrained
   minimiser, no state between calls); qpOASES, as below, when that gives up and for the
   larger problems;
-* every hot solve is preceded by the solve of a reset QP with the same constraint pattern
-  (``H = I``, its minimiser strictly inside every inequality), so each problem starts from
-  the same solver state whatever was solved before; the pair runs under a lock, so
-  concurrent threads cannot interleave; a reset that misses its known answer replaces the
-  solver by a new one;
+* every qpOASES solve is the first solve of a freshly built solver (qpOASES's ``init``, no
+  hot start): building one costs tens of microseconds, less than the reset solve that a
+  shared, hot-started solver would need before each problem to forget the last one;
 * the solver's active set is then solved exactly (:func:`_polish`), so the answer is a
   function of the active set alone;
-* :func:`cold` opens a context in which every QP is solved by a freshly built qpOASES that
-  starts from scratch (its ``init``, no hot start at all): used to re-solve a query whose
-  answer failed its optimality certificate (:mod:`snakecg.optimize.certificate`);
+* :func:`cold` opens a context in which every QP goes to qpOASES, the small ones too: used to
+  re-solve a query whose answer failed its optimality certificate
+  (:mod:`snakecg.optimize.certificate`);
 * IPOPT starts from the given point every call (no warm start).
 """
 
@@ -56,82 +56,14 @@ def _conic(name: str, n1: int, R: int, lp: bool):
 
 
 class Solvers:
-    """qpOASES and IPOPT for ``n1`` variables ``z = (tau, t)`` and ``R`` rows,
-    shared by every model and query of that size. Every use goes through :meth:`conic` (which
-    holds ``lock`` and resets the hot start first) or :meth:`ipopt` (under ``lock``)."""
+    """IPOPT for ``n1`` variables ``z = (tau, t)`` and ``R`` rows, shared by every model and
+    query of that size; every use goes through :meth:`ipopt` (under ``lock``). (qpOASES is
+    built afresh for every solve: :func:`_qpoases`.)"""
 
     def __init__(self, n1: int, R: int):
         self.n1, self.R = n1, R
         self.lock = threading.Lock()
-        self.qp = _conic("snakecg_optimize_qp", n1, R, lp=False)
-        self._packed = None
-        self.rebuilds = 0  # solvers replaced after a failed reset (diagnostics)
         self._nlp = None
-
-    def _build_packed(self):
-        """The QP solver behind one flat input and one flat output,
-        ``[vec(H), g, vec(A), lba, uba, lbx, ubx] -> [x, lam_a]``: a call converts two arrays
-        instead of seventeen. A failed solve raises."""
-        import casadi as ca
-
-        n1, R = self.n1, self.R
-        sizes = (n1 * n1, n1, R * n1, R, R, n1, n1)
-        P = ca.MX.sym("P", sum(sizes))
-        parts = ca.vertsplit(P, list(np.cumsum((0,) + sizes)))
-        res = self.qp(h=ca.reshape(parts[0], n1, n1), g=parts[1],
-                      a=ca.reshape(parts[2], R, n1), lba=parts[3], uba=parts[4],
-                      lbx=parts[5], ubx=parts[6])
-        self._packed = ca.Function("snakecg_optimize_qp_packed", [P],
-                                   [ca.vertcat(res["x"], res["lam_a"])])
-
-    def conic(self, H, g, A, lba, uba, lbx, ubx) -> np.ndarray | None:
-        """``[x, lam_a]`` of the QP solved from the fixed state of its constraint pattern, or
-        None when the solve fails.
-
-        The reset problem has the same rows and bounds as the QP (finite, infinite, or
-        equalities: qpOASES keeps a constraint's type between hot starts) around a point
-        ``x0`` strictly inside them, ``H = I`` and ``g = -x0``: its solution is ``x0`` with no
-        inequality active. When the reset does not return ``x0`` the solver is replaced."""
-        n1 = g.size
-        with np.errstate(invalid="ignore"):
-            x0 = np.where(np.isfinite(lbx) & np.isfinite(ubx), 0.5 * (lbx + ubx),
-                          np.where(np.isfinite(lbx), lbx + 1.0,
-                                   np.where(np.isfinite(ubx), ubx - 1.0, 0.0)))
-        x0 = np.where(lbx == ubx, lbx, x0)
-        eq = lba == uba
-        # every row through x0 with unit slack on its finite sides, equalities held at x0
-        Ax0 = A @ x0
-        lo = np.where(eq, Ax0, np.where(np.isfinite(lba), Ax0 - 1.0, -np.inf))
-        hi = np.where(eq, Ax0, np.where(np.isfinite(uba), Ax0 + 1.0, np.inf))
-        trivial = np.concatenate([np.eye(n1).ravel(), -x0, A.ravel("F"), lo, hi, lbx, ubx])
-        with self.lock:
-            fresh = self._packed is None
-            if fresh:
-                self._build_packed()
-            if not self._reset(trivial, x0, quiet=fresh):
-                # the reset did not reach the fixed state: start over with a new solver, whose
-                # first solve (qpOASES's init, no hot start) is the reset problem
-                self.qp = _conic("snakecg_optimize_qp", self.n1, self.R, lp=False)
-                self._build_packed()
-                self.rebuilds += 1
-                self._reset(trivial, x0, quiet=True)
-            try:  # qpOASES reports an infeasible QP on stdout: kept off it (--json)
-                with contextlib.redirect_stdout(io.StringIO()):
-                    return self._packed(_pack(H, g, A, lba, uba, lbx, ubx)).full().ravel()
-            except RuntimeError:
-                return None
-
-    def _reset(self, trivial, x0, quiet: bool) -> bool:
-        try:
-            if quiet:  # a fresh qpOASES prints its banner on its first solve
-                with contextlib.redirect_stdout(io.StringIO()):
-                    out = self._packed(trivial)
-            else:
-                out = self._packed(trivial)
-        except RuntimeError:
-            return False
-        x = out.full().ravel()[: x0.size]
-        return bool(np.all(np.abs(x - x0) <= 1e-12 * (1 + np.abs(x0))))
 
     def ipopt(self, **kwargs):
         with self.lock:
@@ -222,22 +154,18 @@ class Solution:
     unique: bool = False  # a non-degenerate vertex: the LP optimum is the only one
 
 
-def _pack(H, g, A, lba, uba, lbx, ubx) -> np.ndarray:
-    return np.concatenate([H.ravel("F"), g, A.ravel("F"), lba, uba, lbx, ubx])
-
-
 def solve_conic(prob: Problem, polish: bool = True) -> Solution:
-    """qpOASES on ``prob`` from the fixed reset state; inside :func:`cold`, by a fresh qpOASES
-    from scratch. ``ok`` is False when the solver fails. ``polish``: solve the active set
-    exactly (:func:`_polish`; every final answer is polished).
+    """``prob`` by the dense dual active set when it is small, else (and inside :func:`cold`
+    always) by a freshly built qpOASES from scratch. ``ok`` is False when the solver fails.
+    ``polish``: solve the active set exactly (:func:`_polish`; every final answer is polished).
 
     An LP (``prob.H`` None) is solved as the QP with the curvature ``LP_REG`` (scaled
     variables, objective of size 1): at a vertex whose multipliers exceed ``LP_REG`` times the
     torque's size (every non-degenerate LP optimum here) its solution is that vertex exactly
     (the KKT conditions of the vertex hold for both); on a degenerate optimal face it is the
-    face's point nearest the origin. qpOASES's own LP mode cannot start from the reset state
-    (its homotopy needs a curvature)."""
-    n1, R = prob.A.shape[1], prob.A.shape[0]
+    face's point nearest the origin. (qpOASES's own LP mode is not used: the same solver
+    and polish serve both kinds.)"""
+    n1 = prob.A.shape[1]
     lp = prob.H is None
     fresh = _COLD.get()
     small = int(np.count_nonzero(prob.lbx != prob.ubx)) <= active_set.DENSE_MAX
@@ -252,22 +180,27 @@ def solve_conic(prob: Problem, polish: bool = True) -> Solution:
     name = "qpoases (LP)" if lp else "qpoases"
     if lp:
         H = LP_REG * np.eye(n1)
-    if fresh is None:
-        out = solvers(n1, R).conic(H, g, A, lba, uba, lbx, ubx)
-        status = "Successful return." if out is not None else "qpOASES: infeasible or failed"
-    else:
+    if fresh is not None:
         name += ", cold re-solve"
-        f = _conic("snakecg_optimize_cold", n1, R, lp=False)
-        with contextlib.redirect_stdout(io.StringIO()):
-            res = f(h=H, g=g, a=A, lba=lba, uba=uba, lbx=lbx, ubx=ubx)
-        st = f.stats()
-        status = str(st.get("return_status", ""))
-        out = (np.concatenate([res["x"].full().ravel(), res["lam_a"].full().ravel()])
-               if st.get("success", False) else None)
+    out, status = _qpoases(H, g, A, lba, uba, lbx, ubx)
     if out is None or not np.all(np.isfinite(out)):
         return Solution(False, np.zeros(n1), status, 1, name)
     return _finish(prob, (H, g, A, lba, uba, lbx, ubx), out[:n1], out[n1:], lp, polish, name,
                    status)
+
+
+def _qpoases(H, g, A, lba, uba, lbx, ubx):
+    """``([x, lam_a], status)`` of the QP solved by a freshly built qpOASES (its first solve:
+    no hot start, nothing shared between calls or threads); ``None`` for ``x`` when it fails.
+    qpOASES reports an infeasible QP on stdout: kept off it (``--json``)."""
+    f = _conic("snakecg_optimize_qp", g.size, A.shape[0], lp=False)
+    with contextlib.redirect_stdout(io.StringIO()):
+        res = f(h=H, g=g, a=A, lba=lba, uba=uba, lbx=lbx, ubx=ubx)
+    st = f.stats()
+    status = str(st.get("return_status", ""))
+    if not st.get("success", False):
+        return None, status or "qpOASES: infeasible or failed"
+    return np.concatenate([res["x"].full().ravel(), res["lam_a"].full().ravel()]), status
 
 
 def _finish(prob, scaled, zs, lam_a, lp, polish, name, status) -> Solution:
