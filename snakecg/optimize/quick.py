@@ -98,6 +98,15 @@ def _workspace(model):
     return ws
 
 
+def _vector(buf, address, value):
+    """The address of ``value`` copied into ``buf``; None (a null pointer) when the query has
+    no such value."""
+    if value is None:
+        return None
+    buf[:] = value
+    return address
+
+
 def quick(model, query, q, t0):
     """The :class:`~snakecg.optimize.OptimizeResult` of one configuration ``q`` answered by
     the compiled query, or None (the Python path then answers)."""
@@ -117,22 +126,10 @@ def quick(model, query, q, t0):
         c = ws.q
         c.kind = _KINDS[objective]
         c.radius = query.radius if query.radius is not None else 0.0
-        if query.tau_max is not None:
-            ws.tau_max[:] = query.tau_max
-            c.tau_max = ws.tau_max_address
-        else:
-            c.tau_max = None
-        if query.direction is not None:
-            ws.direction[:] = query.direction
-            c.direction = ws.direction_address
-        else:
-            c.direction = None
+        c.tau_max = _vector(ws.tau_max, ws.tau_max_address, query.tau_max)
+        c.direction = _vector(ws.direction, ws.direction_address, query.direction)
         c.a_min = query.a_min if query.a_min is not None else 0.0
-        if query.a_obj is not None:
-            ws.a_obj[:] = query.a_obj
-            c.a_obj = ws.a_obj_address
-        else:
-            c.a_obj = None
+        c.a_obj = _vector(ws.a_obj, ws.a_obj_address, query.a_obj)
         if ws.call(ws.address) != 0:
             return None
         out = ws.out.tolist()
