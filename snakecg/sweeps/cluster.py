@@ -10,7 +10,7 @@ import time
 
 from ..errors import InputError, SnakecgError
 
-__all__ = ["connect", "ProgressLines", "start_bar", "progress_mode"]
+__all__ = ["connect", "ProgressLines", "start_bar", "progress_mode", "is_local"]
 
 #: Seconds to wait for an existing scheduler before giving up.
 CONNECT_TIMEOUT = 10.0
@@ -99,6 +99,15 @@ def connect(*, client=None, scheduler=None, workers=None):
         cluster.close()
 
     return c, close
+
+
+def is_local(client) -> bool:
+    """Whether ``client``'s workers are processes (or threads) of this machine: its cluster is
+    a ``distributed.LocalCluster`` (as the ones :func:`connect` starts). A client connected
+    to a scheduler's address does not know its cluster, and counts as not local."""
+    from distributed import LocalCluster
+
+    return isinstance(getattr(client, "cluster", None), LocalCluster)
 
 
 #: Dask settings of the local clusters started here: no statistical profiler in the workers
