@@ -239,7 +239,8 @@ def _compute(client, scene, plan, root, todo, reused, mode, clearance, target) -
     configurations_done = sum(plan.chunk_range(i)[1] - plan.chunk_range(i)[0]
                               for i in range(plan.n_chunks) if i not in pending)
     next_mark = time.monotonic() + MARK_INTERVAL
-    opened = _store.handles(root)
+    # this process writes the digests, and the data only when the workers do not
+    opened = _store.handles(root) if target is None else {"chunk_digest": root["chunk_digest"]}
     try:
         for fut in as_completed(futures):
             i = index[fut.key]
