@@ -150,7 +150,7 @@ def test_killed_sweep_resumes_with_identical_results(client, tmp_path, uninterru
     store = tmp_path / "killed.zarr"
     argv = [sys.executable, "-m", "snakecg.cli", "sweep", "--joints", "2", "--scenario",
             "wheels", "--range", "135", "--step", "10", "--chunk", "16", "--workers", "2",
-            "--out", str(store)]
+            "--shared-store", "--out", str(store)]  # the workers write the data
     env = dict(os.environ, SNAKECG_PROGRESS="", PYTHONUNBUFFERED="1")
     proc = subprocess.Popen(argv, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE,
                             text=True, env=env, cwd=ROOT, start_new_session=True)
@@ -204,7 +204,7 @@ def test_killed_worker_the_sweep_completes_identically(client, tmp_path, uninter
     def run():
         try:
             box["res"] = snakecg.sweep(scene("wheels"), store=store, client=client,
-                                       progress=False, **grid)
+                                       progress=False, shared_store=True, **grid)
         except BaseException as exc:  # noqa: BLE001 - reported below
             box["err"] = exc
 
@@ -230,12 +230,12 @@ def test_killed_worker_the_sweep_completes_identically(client, tmp_path, uninter
     assert before[victim] not in after.values()  # the worker was replaced by its nanny
 
 
-def test_local_workers_write_the_data_and_the_client_only_the_digests(client, tmp_path,
-                                                                      monkeypatch,
-                                                                      uninterrupted):
-    """On a local cluster the workers write each chunk's data (this process never calls the
-    data writer, it records the digests); with shared_store=False this process writes
-    everything. Both stores equal the uninterrupted one bit for bit, hence model.extremes."""
+def test_workers_write_the_data_and_the_client_only_the_digests(client, tmp_path,
+                                                                monkeypatch, uninterrupted):
+    """shared_store=True: the workers write each chunk's data (this process never calls the
+    data writer, it records the digests); False: this process writes everything; default,
+    on this local cluster: the workers when they have a thread on every core. All stores
+    equal the uninterrupted one bit for bit, hence model.extremes."""
     from snakecg.sweeps import store as store_mod
 
     calls = []
@@ -243,13 +243,19 @@ def test_local_workers_write_the_data_and_the_client_only_the_digests(client, tm
     monkeypatch.setattr(store_mod, "write_data",
                         lambda *a, **k: calls.append(a[1]) or real(*a, **k))
     res = snakecg.sweep(scene("wheels"), store=tmp_path / "w.zarr", client=client,
-                        progress=False, **WHEELS_GRID)
+                        progress=False, shared_store=True, **WHEELS_GRID)
     assert res.computed_chunks == 49 and calls == []
     assert_identical(read(tmp_path / "w.zarr"), uninterrupted)
     res = snakecg.sweep(scene("wheels"), store=tmp_path / "c.zarr", client=client,
                         progress=False, shared_store=False, **WHEELS_GRID)
     assert res.computed_chunks == 49 and sorted(calls) == list(range(0, 784, 16))
     assert_identical(read(tmp_path / "c.zarr"), uninterrupted)
+    calls.clear()
+    snakecg.sweep(scene("wheels"), store=tmp_path / "d.zarr", client=client, progress=False,
+                  **WHEELS_GRID)
+    workers_write = sum(client.nthreads().values()) >= os.cpu_count()
+    assert len(calls) == (0 if workers_write else 49)
+    assert_identical(read(tmp_path / "d.zarr"), uninterrupted)
     # the digests recorded by this process are those of the data the workers wrote
     for name in ("w.zarr", "c.zarr"):
         root = zarr.open_group(str(tmp_path / name), mode="r")

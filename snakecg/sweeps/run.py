@@ -17,7 +17,8 @@ from ..errors import InputError, SnakecgError
 from ..geometry import OBJECT_SIDE, PENETRATION_TOLERANCE, SELF_CLEARANCE
 from ..robot import Scene
 from . import store as _store
-from .cluster import ProgressLines, connect, dashboard_of, is_local, progress_mode, start_bar
+from .cluster import (ProgressLines, connect, dashboard_of, fills_machine, is_local,
+                      progress_mode, start_bar)
 from .plan import Plan, grid_plan, samples_plan
 from .work import evaluate_and_write, evaluate_chunk
 
@@ -147,10 +148,12 @@ def sweep(scene, *, grid=None, samples=None, seed=None, store, client=None, chun
       ``snakecg reproduce --feasible-only`` too). Recorded in the store's attributes.
     * ``shared_store``: who writes the chunks' data. None (default): the workers, when they
       run on this machine (the local cluster this call starts, or a ``client`` of a
-      ``distributed.LocalCluster``), else this process. True: the workers (they reach the
-      store at its absolute path, e.g. on a shared file system; each checks it is the same
-      store). False: this process. Either way only this process records the chunks'
-      digests and the store's attributes.
+      ``distributed.LocalCluster``) and have a thread on every core of it (as the default
+      local cluster does); else this process (on a local cluster with cores to spare, its
+      writes overlap the workers' computing). True: the workers (they reach the store at
+      its absolute path, e.g. on a shared file system; each checks it is the same store).
+      False: this process. Either way only this process records the chunks' digests and
+      the store's attributes.
 
     Returns a :class:`SweepResult`. Inputs are checked before any work; a bad one raises
     :class:`~snakecg.InputError` and writes nothing.
@@ -203,7 +206,8 @@ def sweep(scene, *, grid=None, samples=None, seed=None, store, client=None, chun
         if root is None:
             root = _store.create(path, meta, plan.size, plan.chunk, plan.joints)
         if shared_store is None:
-            shared_store = (client is None and scheduler is None) or is_local(c)
+            shared_store = ((client is None and scheduler is None) or is_local(c)) \
+                and fills_machine(c)
         target = (str(path.resolve()), _store.store_id(root)) if shared_store else None
         _compute(c, scene, plan, root, todo, reused, mode, clearance, target)
     finally:
