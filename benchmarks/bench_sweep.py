@@ -155,7 +155,7 @@ def overhead(tmp: Path, quick: bool) -> dict:
             model = snakecg.load(sc)
             evaluate(model, plan.configurations(0)[:8])  # warm
 
-            def loop():
+            def loop(plan=plan, model=model):
                 t, c = time.perf_counter(), time.process_time()
                 for i in range(plan.n_chunks):
                     evaluate(model, plan.configurations(i))

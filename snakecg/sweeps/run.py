@@ -17,8 +17,15 @@ from ..errors import InputError, SnakecgError
 from ..geometry import OBJECT_SIDE, PENETRATION_TOLERANCE, SELF_CLEARANCE
 from ..robot import Scene
 from . import store as _store
-from .cluster import (ProgressLines, connect, dashboard_of, fills_machine, is_local,
-                      progress_mode, start_bar)
+from .cluster import (
+    ProgressLines,
+    connect,
+    dashboard_of,
+    fills_machine,
+    is_local,
+    progress_mode,
+    start_bar,
+)
 from .plan import Plan, grid_plan, samples_plan
 from .work import evaluate_and_write, evaluate_chunk
 
