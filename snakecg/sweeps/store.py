@@ -23,7 +23,8 @@ Layout (a Zarr v3 group, a folder ``STORE.zarr``), every array chunked like the 
   store (a worker that writes data checks it).
 
 Who writes: the chunks' data is written by the workers when they share the store's file
-system, else by the process that runs the sweep; the digests and the attributes only ever by
+system (by default: a local cluster with a thread on every core; see
+:func:`snakecg.sweeps.run.sweep`, ``shared_store``), else by the process that runs the sweep; the digests and the attributes only ever by
 the latter, so no two processes write the same file at once (a chunk's data files are
 written by the one task computing it; a task run again after a lost worker writes the same
 bytes).
