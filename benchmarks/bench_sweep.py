@@ -10,8 +10,8 @@
   alternated `--repeat` times (4 joints, 24,576 seeded samples: about 40 s on one idle
   worker), the ratio of the medians;
 * overhead: at the default chunk size, a warm 1-worker cluster's `sweep` against the same
-  chunks evaluated in this process one after the other (scheduling, serialization, Zarr
-  writes and the digests are the difference);
+  chunks evaluated in this process one after the other, right before and right after it
+  (scheduling, serialization, Zarr writes and the digests are the difference);
 * grid4: the 28^4 = 614,656 grid of each scenario on 2 workers; the bounded-wheels one
   stops after `--budget` seconds (default 300) and is extrapolated from the chunks written
   (the store is resumable: rerun to finish it).
@@ -107,12 +107,20 @@ def scaling(tmp: Path, quick: bool, chunk: int | None = None, repeat: int = 1) -
                 timed_sweep(sc, tmp / f"warm{workers}-{r}.zarr", samples=4 * workers, seed=0,
                             chunk=1, client=client)
                 la = load_avg()
+                w0, c0 = client.run(time.process_time), time.process_time()
                 t = timed_sweep(sc, tmp / f"scale{workers}-{r}.zarr", samples=n, seed=1,
                                 chunk=chunk, client=client)
+                # CPU seconds of this process (scheduler, client, nannies and whatever Zarr
+                # writes it does) and of the workers, during the sweep
+                cpu_here = time.process_time() - c0
+                w1 = client.run(time.process_time)
+                cpu_workers = sum(w1[a] - w0[a] for a in w1 if a in w0)
                 out[workers].append({"seconds": t, "load_before": la,
-                                     "load_after": load_avg()})
+                                     "load_after": load_avg(), "cpu_client_s": cpu_here,
+                                     "cpu_workers_s": cpu_workers})
                 print(f"  {workers} worker(s): {n} configurations ({joints} joints, wheels, "
-                      f"chunks of {chunk}) in {t:.1f} s, load {la} -> {load_avg()}",
+                      f"chunks of {chunk}) in {t:.1f} s, load {la} -> {load_avg()}; CPU: "
+                      f"workers {cpu_workers:.1f} s, this process {cpu_here:.2f} s",
                       flush=True)
             finally:
                 lc.close()
@@ -123,10 +131,13 @@ def scaling(tmp: Path, quick: bool, chunk: int | None = None, repeat: int = 1) -
 
 
 def overhead(tmp: Path, quick: bool) -> dict:
-    """Wall time of a warm 1-worker sweep against the compute time of its tasks, measured in
-    the same run (Dask's task stream: the time each task spent in ``evaluate_chunk``), so the
-    load of the machine weighs on both alike; the same chunks evaluated in this process one
-    after the other are shown too (a separate run, so more exposed to the load)."""
+    """Wall time of a warm 1-worker sweep against the same chunks evaluated in this process
+    one after the other (the plain loop, run right before and right after the sweep: their
+    mean is the anchor, so a drift of the machine's load weighs on both alike), and the CPU
+    time of the sweep's processes (worker and this one) against the loop's. The difference
+    is scheduling, serialization, the Zarr writes and the digests. Dask's task stream gives
+    the time the worker spent in its tasks too (the evaluation, and the Zarr writes when the
+    worker writes the data)."""
     from distributed import get_task_stream
 
     out = {}
@@ -141,25 +152,45 @@ def overhead(tmp: Path, quick: bool) -> dict:
             timed_sweep(sc, tmp / f"warm-{sc_name}.zarr", samples=2, seed=0, chunk=1,
                         client=client)
             plan = samples_plan(joints, n, 2, sc_name, chunk=chunk)
+            model = snakecg.load(sc)
+            evaluate(model, plan.configurations(0)[:8])  # warm
+
+            def loop(plan=plan, model=model):
+                t, c = time.perf_counter(), time.process_time()
+                for i in range(plan.n_chunks):
+                    evaluate(model, plan.configurations(i))
+                return time.perf_counter() - t, time.process_time() - c
+
             la = load_avg()
+            before, cpu_before = loop()
+            w0, c0 = client.run(time.process_time), time.process_time()
             with get_task_stream(client) as ts:
                 dask = timed_sweep(sc, tmp / f"ovh-{sc_name}.zarr", samples=n, seed=2,
                                    chunk=chunk, client=client)
-            compute = sum(s["stop"] - s["start"] for t in ts.data for s in t["startstops"]
-                          if s["action"] == "compute")
-            model = snakecg.load(sc)
-            t = time.perf_counter()
-            for i in range(plan.n_chunks):
-                evaluate(model, plan.configurations(i))
-            inproc = time.perf_counter() - t
-            frac = dask / compute - 1
+            cpu_here = time.process_time() - c0
+            w1 = client.run(time.process_time)
+            cpu_worker = sum(w1[a] - w0[a] for a in w1 if a in w0)
+            after, cpu_after = loop()
+            tasks = sum(s["stop"] - s["start"] for t in ts.data for s in t["startstops"]
+                        if s["action"] == "compute")
+            inproc, cpu_loop = (before + after) / 2, (cpu_before + cpu_after) / 2
+            frac = dask / inproc - 1
+            # CPU seconds: the worker and this process (scheduler, client, nanny, Zarr
+            # writes when it writes) against the plain loop's; the other jobs on the
+            # machine stretch wall times, much less CPU times
+            cpu_frac = (cpu_worker + cpu_here) / cpu_loop - 1
             out[sc_name] = {"joints": joints, "chunk": chunk, "configurations": n,
-                            "task_compute_s": compute, "dask_s": dask, "overhead": frac,
-                            "in_process_s": inproc, "load": la}
+                            "task_s": tasks, "dask_s": dask, "overhead": frac,
+                            "in_process_s": inproc, "in_process_runs_s": [before, after],
+                            "cpu_worker_s": cpu_worker, "cpu_client_s": cpu_here,
+                            "cpu_loop_s": cpu_loop, "cpu_overhead": cpu_frac,
+                            "load": la, "load_after": load_avg()}
             print(f"  {sc_name:>13} ({joints} joints, chunk {chunk}, {n} configurations): "
-                  f"sweep {dask:.2f} s, of which tasks computing {compute:.2f} s: overhead "
-                  f"{100 * frac:+.1f} %; in this process {inproc:.2f} s; load {la}",
-                  flush=True)
+                  f"sweep {dask:.2f} s (worker's tasks {tasks:.2f} s); plain loop in this "
+                  f"process {before:.2f} s before, {after:.2f} s after: overhead "
+                  f"{100 * frac:+.1f} %; CPU: worker {cpu_worker:.2f} s + this process "
+                  f"{cpu_here:.2f} s against the loop's {cpu_loop:.2f} s: "
+                  f"{100 * cpu_frac:+.1f} %; load {la} -> {load_avg()}", flush=True)
     finally:
         lc.close()
     return out

@@ -150,7 +150,7 @@ def test_killed_sweep_resumes_with_identical_results(client, tmp_path, uninterru
     store = tmp_path / "killed.zarr"
     argv = [sys.executable, "-m", "snakecg.cli", "sweep", "--joints", "2", "--scenario",
             "wheels", "--range", "135", "--step", "10", "--chunk", "16", "--workers", "2",
-            "--out", str(store)]
+            "--shared-store", "--out", str(store)]  # the workers write the data
     env = dict(os.environ, SNAKECG_PROGRESS="", PYTHONUNBUFFERED="1")
     proc = subprocess.Popen(argv, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE,
                             text=True, env=env, cwd=ROOT, start_new_session=True)
@@ -204,7 +204,7 @@ def test_killed_worker_the_sweep_completes_identically(client, tmp_path, uninter
     def run():
         try:
             box["res"] = snakecg.sweep(scene("wheels"), store=store, client=client,
-                                       progress=False, **grid)
+                                       progress=False, shared_store=True, **grid)
         except BaseException as exc:  # noqa: BLE001 - reported below
             box["err"] = exc
 
@@ -228,6 +228,83 @@ def test_killed_worker_the_sweep_completes_identically(client, tmp_path, uninter
     assert_identical(read(store), uninterrupted)
     after = client.run(os.getpid)
     assert before[victim] not in after.values()  # the worker was replaced by its nanny
+
+
+def test_workers_write_the_data_and_the_client_only_the_digests(client, tmp_path,
+                                                                monkeypatch, uninterrupted):
+    """shared_store=True: the workers write each chunk's data (this process never calls the
+    data writer, it records the digests); False: this process writes everything; default,
+    on this local cluster: the workers when they have a thread on every core. All stores
+    equal the uninterrupted one bit for bit, hence model.extremes."""
+    from snakecg.sweeps import store as store_mod
+
+    calls = []
+    real = store_mod.write_data
+    monkeypatch.setattr(store_mod, "write_data",
+                        lambda *a, **k: calls.append(a[1]) or real(*a, **k))
+    res = snakecg.sweep(scene("wheels"), store=tmp_path / "w.zarr", client=client,
+                        progress=False, shared_store=True, **WHEELS_GRID)
+    assert res.computed_chunks == 49 and calls == []
+    assert_identical(read(tmp_path / "w.zarr"), uninterrupted)
+    res = snakecg.sweep(scene("wheels"), store=tmp_path / "c.zarr", client=client,
+                        progress=False, shared_store=False, **WHEELS_GRID)
+    assert res.computed_chunks == 49 and sorted(calls) == list(range(0, 784, 16))
+    assert_identical(read(tmp_path / "c.zarr"), uninterrupted)
+    calls.clear()
+    snakecg.sweep(scene("wheels"), store=tmp_path / "d.zarr", client=client, progress=False,
+                  **WHEELS_GRID)
+    workers_write = sum(client.nthreads().values()) >= os.cpu_count()
+    assert len(calls) == (0 if workers_write else 49)
+    assert_identical(read(tmp_path / "d.zarr"), uninterrupted)
+    # the digests recorded by this process are those of the data the workers wrote
+    for name in ("w.zarr", "c.zarr"):
+        root = zarr.open_group(str(tmp_path / name), mode="r")
+        for i in (0, 48):
+            start, stop = 16 * i, min(16 * i + 16, 784)
+            assert int(root["chunk_digest"][i]) == store_mod.digest(
+                {k: uninterrupted[k][start:stop] for k in store_mod.array_names()})
+
+
+def test_data_written_without_its_digest_is_computed_again(client, tmp_path, uninterrupted):
+    """A sweep killed after a worker wrote a chunk's data but before the digest was recorded
+    leaves that chunk's files (here some of them half old: garbage in two arrays) and a zero
+    digest: resuming computes exactly those chunks again and ends identical."""
+    store = tmp_path / "nodigest.zarr"
+    snakecg.sweep(scene("wheels"), store=store, client=client, progress=False, **WHEELS_GRID)
+    root = zarr.open_group(str(store), mode="r+")
+    lost = [0, 7, 48]
+    for i in lost:
+        root["chunk_digest"][i] = 0
+    root["max_sr"][7 * 16:8 * 16] = -1.0
+    root["tau_max_sr"][0:16] = 3.0
+    res = snakecg.sweep(scene("wheels"), store=store, client=client, progress=False,
+                        verify=False, **WHEELS_GRID)
+    assert (res.computed_chunks, res.reused_chunks) == (3, 46)
+    assert_identical(read(store), uninterrupted)
+
+
+def test_a_worker_never_writes_into_another_store(client, tmp_path):
+    """shared_store=True on workers that see another store (or none) at the path: the
+    chunk fails with the reason and the way out, and nothing is written."""
+    from snakecg.sweeps import work
+    from snakecg.sweeps.plan import grid_plan
+
+    sc = scene("ideal_wheels")
+    plan = grid_plan(2, [0.0, 0.5], "ideal_wheels", 2)
+    snakecg.sweep(sc, grid=[0.0, 0.5], chunk=2, store=tmp_path / "a.zarr", client=client,
+                  progress=False)
+    before = read(tmp_path / "a.zarr")
+    for path in (tmp_path / "a.zarr", tmp_path / "missing.zarr"):
+        with pytest.raises(snakecg.SnakecgError, match="shared_store=False"):
+            work.evaluate_and_write(sc, plan, 0, 0.01, str(path), "not-this-store")
+    assert_identical(read(tmp_path / "a.zarr"), before)
+    sid = zarr.open_group(str(tmp_path / "a.zarr"), mode="r").attrs["store_id"]
+    d, n = work.evaluate_and_write(sc, plan, 1, 0.01, str(tmp_path / "a.zarr"), sid)
+    assert n == 2 and d == int(zarr.open_group(str(tmp_path / "a.zarr"),
+                                               mode="r")["chunk_digest"][1])
+    with pytest.raises(snakecg.InputError, match="shared_store must be None"):
+        snakecg.sweep(sc, store=tmp_path / "b.zarr", shared_store="yes")
+    assert not (tmp_path / "b.zarr").exists()
 
 
 # ------------------------------------------------------------------------------------------

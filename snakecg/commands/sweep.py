@@ -75,6 +75,11 @@ def register(sub) -> None:
                    help="run on the Dask cluster whose scheduler is at tcp://HOST:PORT")
     w.add_argument("--workers", type=int, metavar="K",
                    help="worker processes of the local cluster (default: one per core)")
+    r.add_argument("--shared-store", action="store_true",
+                   help="with --scheduler: the workers write the chunks into --out themselves "
+                   "(they reach it at the same absolute path, e.g. on a shared file system); "
+                   "by default a local cluster's workers do, a remote one's send their "
+                   "results to this process, which writes them")
     r.add_argument("--chunk", type=int, metavar="N",
                    help="configurations per chunk (default 1024 for wheels, 32768 otherwise)")
     r.add_argument("--limit", type=int, default=LIMIT, metavar="N",
@@ -176,7 +181,8 @@ def run(args) -> int:
         kw = {"grid": [joint_values(lo, hi, st) for (lo, hi), st in zip(ranges, steps)]}
     res = sweep(scene, store=args.out, chunk=args.chunk, scheduler=args.scheduler,
                 workers=args.workers, limit=None if args.force else args.limit,
-                feasible=args.feasible_only, clearance=args.clearance, **kw)
+                feasible=args.feasible_only, clearance=args.clearance,
+                shared_store=True if args.shared_store else None, **kw)
     if args.json:
         out = {"schema": SCHEMA, **res.to_dict(), "joints": joints,
                "scenario": scene.scenario, "kappa": scene.kappa, "mu": scene.mu}

@@ -10,7 +10,8 @@ import time
 
 from ..errors import InputError, SnakecgError
 
-__all__ = ["connect", "ProgressLines", "start_bar", "progress_mode"]
+__all__ = ["connect", "ProgressLines", "start_bar", "progress_mode", "is_local",
+           "fills_machine"]
 
 #: Seconds to wait for an existing scheduler before giving up.
 CONNECT_TIMEOUT = 10.0
@@ -99,6 +100,21 @@ def connect(*, client=None, scheduler=None, workers=None):
         cluster.close()
 
     return c, close
+
+
+def is_local(client) -> bool:
+    """Whether ``client``'s workers are processes (or threads) of this machine: its cluster is
+    a ``distributed.LocalCluster`` (as the ones :func:`connect` starts). A client connected
+    to a scheduler's address does not know its cluster, and counts as not local."""
+    from distributed import LocalCluster
+
+    return isinstance(getattr(client, "cluster", None), LocalCluster)
+
+
+def fills_machine(client) -> bool:
+    """Whether ``client``'s workers have at least one thread per core of this machine (then
+    this process has no core of its own to write the store on)."""
+    return sum(client.nthreads().values()) >= (os.cpu_count() or 1)
 
 
 #: Dask settings of the local clusters started here: no statistical profiler in the workers

@@ -17,15 +17,26 @@ from ..errors import InputError, SnakecgError
 from ..geometry import OBJECT_SIDE, PENETRATION_TOLERANCE, SELF_CLEARANCE
 from ..robot import Scene
 from . import store as _store
-from .cluster import ProgressLines, connect, dashboard_of, progress_mode, start_bar
+from .cluster import (
+    ProgressLines,
+    connect,
+    dashboard_of,
+    fills_machine,
+    is_local,
+    progress_mode,
+    start_bar,
+)
 from .plan import Plan, grid_plan, samples_plan
-from .work import evaluate_chunk
+from .work import evaluate_and_write, evaluate_chunk
 
 __all__ = ["sweep", "SweepResult", "LIMIT"]
 
 #: Sweeps of more configurations than this are refused unless the limit is lifted
 #: (``limit=None``, or ``--force`` on the command line).
 LIMIT = 10_000_000
+#: Seconds between updates of the store's ``completed_chunks`` attribute during a sweep
+#: (a rewrite of the group's metadata; the digests, not this count, say what is complete).
+MARK_INTERVAL = 1.0
 
 
 @dataclass
@@ -110,7 +121,7 @@ def check_feasible(feasible, clearance) -> float:
 
 def sweep(scene, *, grid=None, samples=None, seed=None, store, client=None, chunk=None,
           progress=None, bounds=None, scheduler=None, workers=None, limit=LIMIT,
-          verify=True, feasible=False, clearance=None) -> SweepResult:
+          verify=True, feasible=False, clearance=None, shared_store=None) -> SweepResult:
     """Evaluate :meth:`~snakecg.SceneModel.extremes` and the COM's polar coordinates for
     every configuration of a grid or of seeded samples, in chunks on Dask, into a Zarr store.
 
@@ -142,6 +153,14 @@ def sweep(scene, *, grid=None, samples=None, seed=None, store, client=None, chun
     * ``clearance``: that least distance [m], with ``feasible=True`` only; default
       :data:`snakecg.geometry.SELF_CLEARANCE` (1 cm, the default of
       ``snakecg reproduce --feasible-only`` too). Recorded in the store's attributes.
+    * ``shared_store``: who writes the chunks' data. None (default): the workers, when they
+      run on this machine (the local cluster this call starts, or a ``client`` of a
+      ``distributed.LocalCluster``) and have a thread on every core of it (as the default
+      local cluster does); else this process (on a local cluster with cores to spare, its
+      writes overlap the workers' computing). True: the workers (they reach the store at
+      its absolute path, e.g. on a shared file system; each checks it is the same store).
+      False: this process. Either way only this process records the chunks' digests and
+      the store's attributes.
 
     Returns a :class:`SweepResult`. Inputs are checked before any work; a bad one raises
     :class:`~snakecg.InputError` and writes nothing.
@@ -168,6 +187,9 @@ def sweep(scene, *, grid=None, samples=None, seed=None, store, client=None, chun
         from .cluster import check_workers
 
         check_workers(workers)
+    if shared_store is not None and not isinstance(shared_store, bool):
+        raise InputError(f"shared_store must be None (automatic), True or False, "
+                         f"got {shared_store!r}")
     if not isinstance(store, (str, Path)) or not str(store).strip():
         raise InputError(f"store must be a path (e.g. 'sweep.zarr'), got {store!r}")
     path = Path(store)
@@ -190,7 +212,11 @@ def sweep(scene, *, grid=None, samples=None, seed=None, store, client=None, chun
             sys.stderr.write(f"snakecg sweep: Dask dashboard at {dashboard}\n")
         if root is None:
             root = _store.create(path, meta, plan.size, plan.chunk, plan.joints)
-        _compute(c, scene, plan, root, todo, reused, mode, clearance)
+        if shared_store is None:
+            shared_store = ((client is None and scheduler is None) or is_local(c)) \
+                and fills_machine(c)
+        target = (str(path.resolve()), _store.store_id(root)) if shared_store else None
+        _compute(c, scene, plan, root, todo, reused, mode, clearance, target)
     finally:
         close()
     return SweepResult(str(path), plan.size, plan.n_chunks, plan.chunk, len(todo), reused,
@@ -201,13 +227,20 @@ def _mark(root, completed: int, total: int) -> None:
     root.attrs.update({"completed_chunks": int(completed), "complete": completed == total})
 
 
-def _compute(client, scene, plan, root, todo, reused, mode, clearance) -> None:
+def _compute(client, scene, plan, root, todo, reused, mode, clearance, target) -> None:
+    """Submit the chunks ``todo`` and record each as it completes. ``target``: ``(absolute
+    path, store id)`` when the workers write the data (they return the digest only), None
+    when this process writes it (they return the arrays)."""
     from distributed import as_completed
     from distributed.client import FutureCancelledError
 
     tag = uuid.uuid4().hex[:8]
-    futures = [client.submit(evaluate_chunk, scene, plan, i, clearance,
-                             key=f"snakecg-sweep-{tag}-{i}", pure=False) for i in todo]
+    if target is None:
+        futures = [client.submit(evaluate_chunk, scene, plan, i, clearance,
+                                 key=f"snakecg-sweep-{tag}-{i}", pure=False) for i in todo]
+    else:
+        futures = [client.submit(evaluate_and_write, scene, plan, i, clearance, *target,
+                                 key=f"snakecg-sweep-{tag}-{i}", pure=False) for i in todo]
     index = {f.key: i for f, i in zip(futures, todo)}
     lines = ProgressLines(plan.n_chunks, reused, plan.size) if mode == "lines" else None
     if mode == "bar":
@@ -216,13 +249,14 @@ def _compute(client, scene, plan, root, todo, reused, mode, clearance) -> None:
     pending = set(todo)
     configurations_done = sum(plan.chunk_range(i)[1] - plan.chunk_range(i)[0]
                               for i in range(plan.n_chunks) if i not in pending)
-    every = max(1, plan.n_chunks // 50)
-    opened = _store.handles(root)
+    next_mark = time.monotonic() + MARK_INTERVAL
+    # this process writes the digests, and the data only when the workers do not
+    opened = _store.handles(root) if target is None else {"chunk_digest": root["chunk_digest"]}
     try:
         for fut in as_completed(futures):
             i = index[fut.key]
             try:
-                arrays = fut.result()
+                result = fut.result()
             except FutureCancelledError:
                 raise SnakecgError(f"chunk {i} was cancelled (the cluster went away?)") \
                     from None
@@ -232,14 +266,18 @@ def _compute(client, scene, plan, root, todo, reused, mode, clearance) -> None:
                 raise SnakecgError(f"chunk {i} failed on the cluster: {type(exc).__name__}: "
                                    f"{' '.join(str(exc).split())[:300]}") from None
             start, stop = plan.chunk_range(i)
-            _store.write_chunk(root, i, start, stop, arrays, opened)
+            if target is None:
+                _store.write_chunk(root, i, start, stop, result, opened)
+            else:  # the worker wrote the data; its digest makes the chunk complete
+                _store.record(opened, i, result[0])
             fut.release()
             completed += 1
             configurations_done += stop - start
             if lines is not None:
                 lines.update(configurations_done)
-            if completed % every == 0:
+            if time.monotonic() >= next_mark:
                 _mark(root, completed, plan.n_chunks)
+                next_mark = time.monotonic() + MARK_INTERVAL
     finally:
         try:
             client.cancel([f for f in futures if not f.done()])

@@ -19,7 +19,15 @@ Layout (a Zarr v3 group, a folder ``STORE.zarr``), every array chunked like the 
 * attributes ``snakecg_sweep``: robot, scene, grid or sampling, chunk, package version,
   array names, the feasibility check's clearance and whether the reductions default to
   feasible shapes only (the fingerprint a resumed sweep must match); ``completed_chunks`` and
-  ``complete``, updated as the sweep goes.
+  ``complete``, updated as the sweep goes; ``store_id``, a random identity made with the
+  store (a worker that writes data checks it).
+
+Who writes: the chunks' data is written by the workers when they share the store's file
+system (by default: a local cluster with a thread on every core; see
+:func:`snakecg.sweeps.run.sweep`, ``shared_store``), else by the process that runs the sweep; the digests and the attributes only ever by
+the latter, so no two processes write the same file at once (a chunk's data files are
+written by the one task computing it; a task run again after a lost worker writes the same
+bytes).
 
 Zarr's local store writes each key through a temporary file and a rename, and the group is
 first built under a temporary name and renamed into place, so no file is ever half-written
@@ -40,8 +48,8 @@ import numpy as np
 from ..analysis import METRICS
 from ..errors import InputError
 
-__all__ = ["array_names", "create", "open_existing", "check_target", "digest", "handles", "write_chunk",
-           "completed", "FORMAT"]
+__all__ = ["array_names", "create", "open_existing", "check_target", "digest", "handles",
+           "write_data", "record", "write_chunk", "completed", "store_id", "FORMAT"]
 
 #: Layout version of the store (attribute ``snakecg_sweep.format``).
 FORMAT = "snakecg.sweep/1"
@@ -104,7 +112,8 @@ def create(path: Path, meta: dict, n_configurations: int, chunk: int, joints: in
         root.create_array("chunk_digest", shape=(n_chunks,), chunks=(min(n_chunks,
                                                                          _DIGEST_BLOCK),),
                           dtype="uint64", fill_value=0, compressors=None)
-        root.attrs.update({"snakecg_sweep": meta, "completed_chunks": 0, "complete": False})
+        root.attrs.update({"snakecg_sweep": meta, "completed_chunks": 0, "complete": False,
+                           "store_id": uuid.uuid4().hex})
         os.rename(tmp, path)
     except OSError as exc:  # unwritable, read-only file system, no space, ...
         shutil.rmtree(tmp, ignore_errors=True)
@@ -149,9 +158,44 @@ def digest(arrays: dict[str, np.ndarray]) -> int:
     return int.from_bytes(h.digest(), "little") | 1
 
 
-def handles(root) -> dict:
-    """The store's arrays opened once (opening one reads its metadata from the store)."""
-    return {name: root[name] for name in (*array_names(), "chunk_digest")}
+def handles(root, *, digests: bool = True) -> dict:
+    """The store's arrays opened once (opening one reads its metadata from the store);
+    ``digests=False`` leaves out ``chunk_digest`` (a worker writing data only)."""
+    names = (*array_names(), "chunk_digest") if digests else array_names()
+    return {name: root[name] for name in names}
+
+
+def store_id(root) -> str:
+    """The store's identity (attribute ``store_id``, made once): a worker that writes data
+    checks it, so that it never writes into another store at the same path."""
+    sid = root.attrs.get("store_id")
+    if not isinstance(sid, str):
+        sid = uuid.uuid4().hex
+        root.attrs["store_id"] = sid
+    return sid
+
+
+def write_data(opened: dict, start: int, stop: int, arrays: dict[str, np.ndarray]) -> int:
+    """Write a chunk's data (every array, in one round trip to Zarr's event loop: the
+    arrays are written concurrently, each chunk file through a temporary file and a rename)
+    and return its :func:`digest`; the digest is not recorded here (:func:`record`)."""
+    import asyncio
+
+    from zarr.core.sync import sync
+
+    async def _all():
+        await asyncio.gather(*(opened[name].async_array.setitem(slice(start, stop),
+                                                                arrays[name])
+                               for name in array_names()))
+
+    sync(_all())
+    return digest(arrays)
+
+
+def record(opened: dict, index: int, d: int) -> None:
+    """Record chunk ``index`` as complete with digest ``d``, after all of its data is
+    written. Only the process that called the sweep records digests (never two at once)."""
+    opened["chunk_digest"][index] = np.uint64(d)
 
 
 def write_chunk(root, index: int, start: int, stop: int, arrays: dict[str, np.ndarray],
@@ -159,10 +203,8 @@ def write_chunk(root, index: int, start: int, stop: int, arrays: dict[str, np.nd
     """Write a chunk's data, then its digest (the record that the chunk is complete).
     ``opened``: the arrays of :func:`handles`, else each is opened here."""
     opened = opened or handles(root)
-    for name in array_names():
-        opened[name][start:stop] = arrays[name]
-    d = digest(arrays)
-    opened["chunk_digest"][index] = np.uint64(d)
+    d = write_data(opened, start, stop, arrays)
+    record(opened, index, d)
     return d
 
 

@@ -1,8 +1,10 @@
-"""The work of one chunk, run on a Dask worker: load the model, evaluate the extremes.
+"""The work of one chunk, run on a Dask worker: load the model, evaluate the extremes, and
+(when the worker shares the store's file system) write the chunk's data into the store.
 
 A loaded model does not pickle; its :class:`~snakecg.Scene` does. Each worker process loads
 the model from its own cache with :func:`snakecg.load` (generating and compiling it once per
-machine, under the cache's lock) and keeps it for the chunks that follow.
+machine, under the cache's lock) and keeps it for the chunks that follow; likewise the
+store's arrays, opened once per store.
 """
 
 from __future__ import annotations
@@ -12,11 +14,15 @@ import threading
 import numpy as np
 
 from ..analysis import METRICS
+from ..errors import SnakecgError
 from ..geometry import SELF_CLEARANCE, feasibility
+from . import store as _store
 
-__all__ = ["evaluate_chunk", "evaluate"]
+__all__ = ["evaluate_chunk", "evaluate", "evaluate_and_write"]
 
 _MODELS: dict = {}
+_STORES: dict = {}   # (path, store id) -> the store's data arrays, opened
+_KEEP_STORES = 4
 _LOCK = threading.Lock()
 
 
@@ -52,3 +58,42 @@ def evaluate_chunk(scene, plan, index: int, clearance: float = SELF_CLEARANCE
                    ) -> dict[str, np.ndarray]:
     """The store's arrays for chunk ``index`` of ``plan`` (runs on a worker)."""
     return evaluate(_model(scene), plan.configurations(index), clearance)
+
+
+def _opened(path: str, sid: str) -> dict:
+    """The data arrays of the store at ``path``, opened once per worker process and checked
+    to be the store the sweep writes (its ``store_id``)."""
+    with _LOCK:
+        opened = _STORES.get((path, sid))
+        if opened is None:
+            import socket
+            from pathlib import Path
+
+            try:
+                root = _store.open_existing(Path(path))
+                found = root.attrs.get("store_id")
+            except Exception as exc:  # noqa: BLE001 - reported with the way out
+                found, why = None, " ".join(str(exc).split())[:200]
+            else:
+                why = f"its store_id is {found!r}, the sweep's {sid!r}"
+            if found != sid:
+                raise SnakecgError(
+                    f"the worker on {socket.gethostname()} cannot write the store {path!r} "
+                    f"({why}): it does not share the file system of the process that runs "
+                    f"the sweep; give shared_store=False (the client writes)")
+            opened = _store.handles(root, digests=False)
+            while len(_STORES) >= _KEEP_STORES:
+                _STORES.pop(next(iter(_STORES)))
+            _STORES[(path, sid)] = opened
+        return opened
+
+
+def evaluate_and_write(scene, plan, index: int, clearance: float, path: str, sid: str
+                       ) -> tuple[int, int]:
+    """Evaluate chunk ``index`` of ``plan`` and write its data into the store at ``path``
+    (absolute; ``sid`` its ``store_id``); return ``(digest, configurations)``. The digest is
+    recorded by the process that runs the sweep, after this returns: a chunk whose data is
+    written but whose digest is not counts as missing and is computed again."""
+    arrays = evaluate_chunk(scene, plan, index, clearance)
+    start, stop = plan.chunk_range(index)
+    return _store.write_data(_opened(path, sid), start, stop, arrays), stop - start
