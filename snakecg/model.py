@@ -38,8 +38,13 @@ from .solver import (
 
 __all__ = ["load", "RobotModel", "SceneModel", "ForwardResult"]
 
-#: Rows of one ``extremes`` call on a large batch (each row needs tens of kB while it runs).
+#: Rows of one ``extremes`` call on a large batch with bounded wheels (each row needs tens of
+#: kB while it runs).
 EXTREMES_CHUNK_ROWS = 2048
+#: Rows of one ``extremes`` call in the closed-form scenarios (frictionless, ideal wheels:
+#: about 1 kB per row at its peak), so that case study 2's 21,952 configurations are one
+#: call: each call has a fixed cost (the threads' dispatch, a few dozen NumPy operations).
+CLOSED_FORM_CHUNK_ROWS = 32768
 
 _BACKENDS: dict[tuple[int, str], tuple[object, dict, Path]] = {}
 
@@ -493,21 +498,23 @@ class SceneModel(RobotModel):
         if not batched:
             return extremes(self, q, **kwargs)
         n = qa.shape[0]
-        if n > EXTREMES_CHUNK_ROWS:
-            # bounded working memory (tens of kB per row inside one call): chunks of rows
+        wheels = self.scene.scenario == "wheels"
+        rows = EXTREMES_CHUNK_ROWS if wheels else CLOSED_FORM_CHUNK_ROWS
+        if n > rows:
+            # bounded working memory (kB per row inside one call): chunks of rows
             check_batch_memory("extremes", n, 8 * (24 + 24 * self.n_joints), what="results")
         # bounded wheels: chunks of 256 rows keep the progress bar alive; large batches solved
         # exactly go in chunks of EXTREMES_CHUNK_ROWS (vectorized over a chunk: faster)
         from .analysis import EXACT_WHEELS_MAX_JOINTS
 
-        chunk = min(EXTREMES_CHUNK_ROWS, 256 if self.scene.scenario == "wheels" else 8192)
+        chunk = min(rows, 256) if wheels else rows
         exact = kwargs.get("exact")
         if exact is None:
             exact = self.n_joints <= EXACT_WHEELS_MAX_JOINTS
-        if self.scene.scenario == "wheels" and exact is True and n > EXTREMES_CHUNK_ROWS:
-            chunk = EXTREMES_CHUNK_ROWS
+        if wheels and exact is True and n > rows:
+            chunk = rows
         return in_chunks(lambda part: extremes(self, part, **kwargs), qa, chunk, "extremes",
-                         always=n > EXTREMES_CHUNK_ROWS)
+                         always=n > rows)
 
     def com_polar(self, q):
         """Polar coordinates ``(|COM|, angle COM)`` of the snake's COM w.r.t. the contact point,

@@ -517,7 +517,7 @@ def test_extremes_in_chunks_equal_one_call(monkeypatch, rng):
     model = snakecg.load(Scene(Robot(joints=2), scenario="frictionless"))
     q = np.column_stack([np.zeros((12, 3)), rng.uniform(-2.5, 2.5, (12, 2))])
     whole = model.extremes(q)
-    monkeypatch.setattr(model_mod, "EXTREMES_CHUNK_ROWS", 5)
+    monkeypatch.setattr(model_mod, "CLOSED_FORM_CHUNK_ROWS", 5)
     chunked = model.extremes(q)
     for attr in ("max", "min", "tau_max", "tau_min"):
         for k, v in getattr(whole, attr).items():
