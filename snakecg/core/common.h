@@ -1,10 +1,11 @@
 /* What the runtime core's C files share (snakecg/core/forward.c, integrate.c, settle.c,
- * run.c): the sizes, the row states, the simulation's structs, the generated functions' work
- * arrays, one evaluation of the generated `contact_system`, the rows' velocities A V, the held rows' forces of eq. (16) and the
+ * run.c, maps.c): the sizes, the row states, the simulation's structs, the
+ * generated functions' work arrays, one evaluation of the generated `place_object` and
+ * `contact_system`, the rows' velocities A V, the held rows' forces of eq. (16) and the
  * active-set rule. Included after snakecg_layout.h; everything here is static, so each file
  * gets its own copy and the library exports nothing more; a file asks for the parts that not
- * every file uses (SC_ROW_VELOCITIES, SC_NEXT_STATES), or the types alone (SC_TYPES_ONLY),
- * before including it. */
+ * every file uses (SC_PLACE_OBJECT, SC_ROW_VELOCITIES, SC_NEXT_STATES), or the types alone
+ * (SC_TYPES_ONLY), before including it. */
 #ifndef SNAKECG_CORE_COMMON_H
 #define SNAKECG_CORE_COMMON_H
 
@@ -26,6 +27,8 @@ int SNAKECG_CS(const double **arg, double **res, sc_int *iw, double *w, int mem)
 int SNAKECG_CS_WORK(sc_int *sz_arg, sc_int *sz_res, sc_int *sz_iw, sc_int *sz_w);
 int SNAKECG_LJ(const double **arg, double **res, sc_int *iw, double *w, int mem);
 int SNAKECG_LJ_WORK(sc_int *sz_arg, sc_int *sz_res, sc_int *sz_iw, sc_int *sz_w);
+int SNAKECG_PO(const double **arg, double **res, sc_int *iw, double *w, int mem);
+int SNAKECG_PO_WORK(sc_int *sz_arg, sc_int *sz_res, sc_int *sz_iw, sc_int *sz_w);
 
 /* row states (snakecg/solver.py) */
 enum { ABSENT = 0, HELD = 1, LOST = 2, SLIDE_POS = 3, SLIDE_NEG = 4 };
@@ -190,6 +193,25 @@ static int sc_contact_system(sc_work_t *ws, const double *scene, const double *q
   ws->res[CS_OUT_s] = &out->s;
   return SNAKECG_CS(ws->arg, ws->res, ws->iw, ws->w, 0);
 }
+
+#ifdef SC_PLACE_OBJECT /* forward.c, maps.c */
+/* The object placed at the scene's contact (generated `place_object` at q): its pose q_obj
+ * (3), the contact point in its frame rho (2) and in the world (2); its status (0 on
+ * success). */
+static int sc_place_object(sc_work_t *ws, const double *scene, const double *q, double *q_obj,
+                           double *rho, double *contact_point) {
+  ws->arg[PO_IN_q] = q;
+  ws->arg[PO_IN_K] = scene + SCENE_K;
+  ws->arg[PO_IN_contact_link] = scene + SCENE_contact_link;
+  ws->arg[PO_IN_contact_offset] = scene + SCENE_contact_offset;
+  ws->arg[PO_IN_object_distance] = scene + SCENE_object_distance;
+  ws->arg[PO_IN_side] = scene + SCENE_side;
+  ws->res[PO_OUT_q_obj] = q_obj;
+  ws->res[PO_OUT_rho] = rho;
+  ws->res[PO_OUT_contact_point] = contact_point;
+  return SNAKECG_PO(ws->arg, ws->res, ws->iw, ws->w, 0);
+}
+#endif
 
 #ifdef SC_ROW_VELOCITIES /* integrate.c, settle.c */
 /* A V (snakecg.simulate.dynamics.Dynamics.row_velocities): the gap rate (row 0) and the

@@ -33,10 +33,8 @@
 
 #include "snakecg_layout.h"
 #define SC_NEXT_STATES
+#define SC_PLACE_OBJECT
 #include "common.h"
-
-int SNAKECG_PO(const double **arg, double **res, sc_int *iw, double *w, int mem);
-int SNAKECG_PO_WORK(sc_int *sz_arg, sc_int *sz_res, sc_int *sz_iw, sc_int *sz_w);
 
 /* sample status */
 enum { STATUS_EXACT = 0, STATUS_FALLBACK = 1 };
@@ -109,17 +107,8 @@ static int solve_one(sc_work_t *ws, const double *scene, const sc_constants *c, 
   if (q_obj_in) {
     memcpy(q_obj, q_obj_in, sizeof(q_obj));
     memcpy(rho, rho_in, sizeof(rho));
-  } else { /* place the object at the scene's contact */
-    ws->arg[PO_IN_q] = q;
-    ws->arg[PO_IN_K] = scene + SCENE_K;
-    ws->arg[PO_IN_contact_link] = scene + SCENE_contact_link;
-    ws->arg[PO_IN_contact_offset] = scene + SCENE_contact_offset;
-    ws->arg[PO_IN_object_distance] = scene + SCENE_object_distance;
-    ws->arg[PO_IN_side] = scene + SCENE_side;
-    ws->res[PO_OUT_q_obj] = q_obj;
-    ws->res[PO_OUT_rho] = rho;
-    ws->res[PO_OUT_contact_point] = contact_point;
-    if (SNAKECG_PO(ws->arg, ws->res, ws->iw, ws->w, 0)) return STATUS_FALLBACK;
+  } else if (sc_place_object(ws, scene, q, q_obj, rho, contact_point)) {
+    return STATUS_FALLBACK; /* the object could not be placed at the scene's contact */
   }
   if (sc_contact_system(ws, scene, q, v, tau, q_obj, v_obj, f_obj, rho, &sys))
     return STATUS_FALLBACK;

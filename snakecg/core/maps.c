@@ -19,10 +19,8 @@
 #include <string.h>
 
 #include "snakecg_layout.h"
+#define SC_PLACE_OBJECT
 #include "common.h"
-
-int SNAKECG_PO(const double **arg, double **res, sc_int *iw, double *w, int mem);
-int SNAKECG_PO_WORK(sc_int *sz_arg, sc_int *sz_res, sc_int *sz_iw, sc_int *sz_w);
 
 #define NA SNAKECG_NA
 
@@ -37,22 +35,13 @@ int SNAKECG_EXPORT(core_held_maps)(const double *scene, const double *q, double 
   sc_system sys;
   const double zero[NS] = {0.0};
   const double *present = scene + SCENE_present;
-  double q_obj[3], rho[2], contact_point[2], Mc[NS * NS], MB[NS * NA], Q[NS * NA];
+  double q_obj[3], rho[2], contact_point[2], Mc[NS * NS], MB[NS * NA], Q[NS * NA], MQ[NS * NA];
   double Lt[NC * NA], ratio = 1.0, Io[3];
   signed char state[NC];
   double *L = maps, *A = maps + NC * NA, *Xi = A + 3 * NA, *Om = Xi + NA * NA, *N = Om + NA * NA;
   int i, j, k, r, status;
   if (sc_work_alloc(&ws, fns, 2)) return 1;
-  ws.arg[PO_IN_q] = q;
-  ws.arg[PO_IN_K] = scene + SCENE_K;
-  ws.arg[PO_IN_contact_link] = scene + SCENE_contact_link;
-  ws.arg[PO_IN_contact_offset] = scene + SCENE_contact_offset;
-  ws.arg[PO_IN_object_distance] = scene + SCENE_object_distance;
-  ws.arg[PO_IN_side] = scene + SCENE_side;
-  ws.res[PO_OUT_q_obj] = q_obj;
-  ws.res[PO_OUT_rho] = rho;
-  ws.res[PO_OUT_contact_point] = contact_point;
-  status = SNAKECG_PO(ws.arg, ws.res, ws.iw, ws.w, 0);
+  status = sc_place_object(&ws, scene, q, q_obj, rho, contact_point);
   if (!status) status = sc_contact_system(&ws, scene, q, zero, zero, q_obj, zero, zero, rho, &sys);
   sc_work_free(&ws);
   if (status) return 1;
@@ -110,14 +99,16 @@ int SNAKECG_EXPORT(core_held_maps)(const double *scene, const double *q, double 
     }
   Io[0] = Io[1] = scene[SCENE_object_mass];
   Io[2] = scene[SCENE_object_inertia];
+  for (k = 0; k < NS; ++k) /* M_s Q, for Xi = Q^T (M_s Q) */
+    for (j = 0; j < NA; ++j) {
+      double t = 0.0;
+      for (r = 0; r < NS; ++r) t += sys.M[k + NS * r] * Q[r * NA + j];
+      MQ[k * NA + j] = t;
+    }
   for (i = 0; i < NA; ++i)
     for (j = 0; j < NA; ++j) {
       double x = 0.0, o = 0.0;
-      for (k = 0; k < NS; ++k) {
-        double t = 0.0;
-        for (r = 0; r < NS; ++r) t += sys.M[k + NS * r] * Q[r * NA + j];
-        x += Q[k * NA + i] * t;
-      }
+      for (k = 0; k < NS; ++k) x += Q[k * NA + i] * MQ[k * NA + j];
       for (k = 0; k < 3; ++k) o += A[k * NA + i] * Io[k] * A[k * NA + j];
       Xi[i * NA + j] = x;
       Om[i * NA + j] = o;
