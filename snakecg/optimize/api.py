@@ -81,8 +81,7 @@ def optimize(model, q, objective: str = "max_sr", *, tau_max=None, radius=None,
         certs.append(cert)
     if not batched:  # one configuration: the one-sample forward solve, plain fields
         a, cfg = answers[0], cfgs[0]
-        e = (quad(floats(cfg)["N"], a.tau.tolist()) if query.radius is not None
-             and a.status == "optimal" else None)
+        e = _form(query, cfg, a) if a.status == "optimal" else None
         return one_result(model, query, cfg.q, a, certs[0], cfg.a_dir, e, t0)
     taus = np.array([a.tau for a in answers])
     analysis = model.forward(qa, taus)
@@ -91,9 +90,7 @@ def optimize(model, q, objective: str = "max_sr", *, tau_max=None, radius=None,
                        for b, cfg in enumerate(cfgs)])
     for b, (a, cfg) in enumerate(zip(answers, cfgs)):
         if a.status == "optimal":
-            e = (quad(floats(cfg)["N"], a.tau.tolist()) if query.radius is not None
-                 else None)
-            problem = check(model, query, a, raw[b], values[b], e)
+            problem = check(model, query, a, raw[b], values[b], _form(query, cfg, a))
             if problem:
                 a.status, a.reason = "failed", f"forward check: {problem}"
     elapsed = (time.perf_counter() - t0) / len(answers)
@@ -141,3 +138,7 @@ def _certified(model, query, cfg, run):
     return b, cert_b
 
 
+def _form(query, cfg, a: Answer):
+    """``tau^T N tau`` of the answer when the query has an ellipsoid (the forward check
+    compares it with ``radius^2``), else None."""
+    return quad(floats(cfg)["N"], a.tau.tolist()) if query.radius is not None else None
