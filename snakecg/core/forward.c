@@ -57,32 +57,27 @@ static int all_finite(const double *x, int n, double limit) {
 }
 
 /* Smallest pivot of the Cholesky factorization of M scaled to a unit diagonal, squared
- * (snakecg.rows.mass_pivot_ratio); 0 where M is not numerically positive definite. */
-static double mass_pivot_ratio(const double *M, double *S) {
+ * (snakecg.rows.mass_pivot_ratio); 0 where M is not numerically positive definite. The
+ * scaled factor's squared pivots are the LDL^T pivots of M over its diagonal, d_j / M_jj
+ * (scaling by a diagonal leaves L unit and scales d), so no square root is taken. */
+static double mass_pivot_ratio(const double *M, double *L) {
   const int n = SNAKECG_NS;
-  double r[SNAKECG_NS], best = INFINITY, s, inv;
+  double d[SNAKECG_NS], dinv[SNAKECG_NS], best = INFINITY, s, r;
   int i, j, k;
-  for (i = 0; i < n; ++i) { /* 1 / sqrt(M_ii): one division per row, not two per entry */
-    s = sqrt(fabs(M[i + n * i]));
-    r[i] = s > 0 ? 1.0 / s : 1.0;
-  }
-  for (j = 0; j < n; ++j) /* the lower triangle is all the factorization reads */
-    for (i = j; i < n; ++i) S[i + n * j] = M[i + n * j] * r[i] * r[j];
-  for (j = 0; j < n; ++j) { /* lower Cholesky factor in place, column by column */
-    s = S[j + n * j];
-    for (k = 0; k < j; ++k) s -= S[j + n * k] * S[j + n * k];
-    if (!(s > 0)) return 0.0;
-    s = sqrt(s);
-    S[j + n * j] = s;
-    if (s < best) best = s;
-    inv = 1.0 / s;
+  for (j = 0; j < n; ++j) { /* unit lower L, column by column, in place of M's lower half */
+    s = M[j + n * j];
+    for (k = 0; k < j; ++k) s -= L[j + n * k] * L[j + n * k] * d[k];
+    if (!(s > 0) || !(M[j + n * j] > 0)) return 0.0;
+    d[j] = s;
+    dinv[j] = 1.0 / s;
+    r = s / M[j + n * j];
+    if (r < best) best = r;
     for (i = j + 1; i < n; ++i) {
-      double t = S[i + n * j];
-      for (k = 0; k < j; ++k) t -= S[i + n * k] * S[j + n * k];
-      S[i + n * j] = t * inv;
+      double t = M[i + n * j];
+      for (k = 0; k < j; ++k) t -= L[i + n * k] * L[j + n * k] * d[k];
+      L[i + n * j] = t * dinv[j];
     }
   }
-  best = best * best;
   return isfinite(best) ? best : 0.0;
 }
 
