@@ -14,8 +14,8 @@ import sympy as sp
 
 from .spec import FunctionSpec, topological_assignments
 
-__all__ = ["cse_program", "build_function", "build_sincos_function", "to_sx", "signature",
-           "operation_count"]
+__all__ = ["cse_program", "build_function", "build_sincos_function", "build_rotation_function",
+           "to_sx", "signature", "operation_count"]
 
 _UNARY = {"sin": ca.sin, "cos": ca.cos, "tan": ca.tan, "sqrt": ca.sqrt, "exp": ca.exp,
           "log": ca.log}
@@ -175,6 +175,32 @@ def build_sincos_function(f: FunctionSpec, prefix: str) -> ca.Function | None:
     trig = {ca.OP_SIN, ca.OP_COS, ca.OP_TAN}
     if any(fn.instruction_id(k) in trig for k in range(fn.n_instructions())):
         return None
+    return fn
+
+
+def build_rotation_function(f: FunctionSpec, prefix: str, angles) -> ca.Function:
+    """``<prefix><f.name>_rotation``: the program of :func:`build_function` with the cosine and
+    sine of each angle in ``angles`` (input symbols of ``f``) given as two more inputs,
+    ``cos_angles`` and ``sin_angles``, instead of computed.
+
+    For composition only (never emitted on its own): the composed functions give a link's
+    rotation as a product of its joints' rotations, so a row on that link needs no sine or
+    cosine of its own. Raises if ``f`` still computes a trigonometric function.
+    """
+    args, env = _inputs(f)
+    cos_a = ca.SX.sym("cos_angles", len(angles))
+    sin_a = ca.SX.sym("sin_angles", len(angles))
+    for k, a in enumerate(angles):
+        env[sp.cos(a)] = cos_a[k]
+        env[sp.sin(a)] = sin_a[k]
+    results, _ = _outputs(f, env, {})
+    fn = ca.Function(prefix + f.name + "_rotation", args + [cos_a, sin_a],
+                     [ca.densify(o) for o in ca.cse(results)],
+                     [n for n, _, _ in f.inputs] + ["cos_angles", "sin_angles"],
+                     [n for n, _, _ in f.outputs])
+    trig = {ca.OP_SIN, ca.OP_COS, ca.OP_TAN}
+    if any(fn.instruction_id(k) in trig for k in range(fn.n_instructions())):
+        raise ValueError(f"{f.name}: a sine or cosine of an angle other than {angles} is left")
     return fn
 
 

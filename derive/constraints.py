@@ -24,7 +24,7 @@ from __future__ import annotations
 
 import sympy as sp
 
-__all__ = ["ContactSymbols", "contact_row_local", "wheel_row_local"]
+__all__ = ["ContactSymbols", "contact_row_local", "wheel_row_local", "ROTATION_ANGLES"]
 
 
 class ContactSymbols:
@@ -39,6 +39,14 @@ class ContactSymbols:
     rho = sp.symbols("rhox rhoy", real=True)
     side = sp.Symbol("sigma", real=True)
     wheel_offset = sp.Symbol("woff", real=True)
+
+
+#: The angles of each row whose cosine and sine the composed functions give (see
+#: :func:`derive.build.build_rotation_function`): the link's and the object's orientation.
+ROTATION_ANGLES = {
+    "contact_row_local": (ContactSymbols.link_pose[2], ContactSymbols.object_pose[2]),
+    "wheel_row_local": (ContactSymbols.link_pose[2],),
+}
 
 
 def contact_row_local() -> dict[str, sp.Expr | sp.Matrix]:

@@ -199,6 +199,24 @@ def _actuation(alg: Algebra, sz: _Sizes):
     return ca.vertcat(alg.zeros(3, sz.n_joints), alg.eye(sz.n_joints))
 
 
+def _link_rotations(q, nl):
+    """``(cos phi_i, sin phi_i)`` of every link's absolute angle (``phi_1 = theta = q[2]``,
+    ``phi_{i+1} = phi_i + q_i``) as products of the joints' rotations: one sine and cosine per
+    coordinate, which the link functions compute too (shared after CSE), and none of a sum."""
+    c, s = [ca.cos(q[2])], [ca.sin(q[2])]
+    for i in range(1, nl):
+        cj, sj = ca.cos(q[2 + i]), ca.sin(q[2 + i])
+        c_prev, s_prev = c[-1], s[-1]
+        c.append(c_prev * cj - s_prev * sj)
+        s.append(s_prev * cj + c_prev * sj)
+    return c, s
+
+
+def _contact_rotation(c, s, contact_link):
+    """The contact link's rotation ``(cos phi_k, sin phi_k)`` (one-hot ``contact_link``)."""
+    return (ca.dot(contact_link, ca.vertcat(*c)), ca.dot(contact_link, ca.vertcat(*s)))
+
+
 def _constraint_rows(fn, alg, sz, q, v, K, sc, v_obj):
     """Constraint matrix ``A = [-J_s, G^T]`` (eq. 9), ``Adot v`` (eq. 13), gap and ``s``."""
     nl, ns = sz.n_links, sz.n_coordinates
@@ -206,6 +224,7 @@ def _constraint_rows(fn, alg, sz, q, v, K, sc, v_obj):
     poses = fn["link_poses"](q, K)
     J = fn["link_jacobians"](q, K)
     bias = fn["link_bias_accelerations"](q, v, K)
+    c, s_ = _link_rotations(q, nl)
     # eq. (10): the contact row uses the Jacobian J_* of the touching link (one-hot selection)
     J_k = alg.zeros(3, ns)
     for i in range(nl):
@@ -213,15 +232,18 @@ def _constraint_rows(fn, alg, sz, q, v, K, sc, v_obj):
     pose_k = ca.mtimes(poses, contact_link)
     bias_k = ca.mtimes(bias, contact_link)
     com_k = ca.dot(K[3 * nl: 4 * nl], contact_link)
-    a_link, g_obj, adv_c, gap, s = fn["contact_row_local"](
-        pose_k, ca.mtimes(J_k, v), bias_k, com_k, sc["q_obj"], v_obj, sc["rho"], sc["side"])
+    c_k, s_k = _contact_rotation(c, s_, contact_link)
+    psi = sc["q_obj"][2]
+    a_link, g_obj, adv_c, gap, s = fn["contact_row_local_rotation"](
+        pose_k, ca.mtimes(J_k, v), bias_k, com_k, sc["q_obj"], v_obj, sc["rho"], sc["side"],
+        ca.vertcat(c_k, ca.cos(psi)), ca.vertcat(s_k, ca.sin(psi)))
     rows = [ca.horzcat(ca.mtimes(a_link, J_k), g_obj)]
     Adot_v = [adv_c]
     # one lateral wheel row per link (non-holonomic, eq. 13 with equality where it holds)
     for i in range(nl):
         J_i = J[3 * i: 3 * i + 3, :]
-        a_w, adv_w = fn["wheel_row_local"](poses[:, i], ca.mtimes(J_i, v), bias[:, i],
-                                           sc["wheel_offset"][i])
+        a_w, adv_w = fn["wheel_row_local_rotation"](poses[:, i], ca.mtimes(J_i, v), bias[:, i],
+                                                    sc["wheel_offset"][i], c[i], s_[i])
         rows.append(ca.horzcat(ca.mtimes(a_w, J_i), alg.zeros(1, 3)))
         Adot_v.append(adv_w)
     return ca.vertcat(*rows), ca.vertcat(*Adot_v), gap, s
@@ -623,8 +645,9 @@ def place_object(fn, alg: Algebra, sz: _Sizes) -> ca.Function:
     pose = ca.mtimes(fn["link_poses"](q, K), contact_link)
     com_k = ca.dot(K[3 * nl: 4 * nl], contact_link)
     phi = pose[2]
-    e = ca.vertcat(ca.cos(phi), ca.sin(phi))
-    n = side * ca.vertcat(-ca.sin(phi), ca.cos(phi))
+    c_k, s_k = _contact_rotation(*_link_rotations(q, nl), contact_link)
+    e = ca.vertcat(c_k, s_k)
+    n = side * ca.vertcat(-s_k, c_k)
     P = pose[:2] + (contact_offset - com_k) * e
     inputs = {"q": q, "K": K, "contact_link": contact_link, "contact_offset": contact_offset,
               "object_distance": object_distance, "side": side}

@@ -21,7 +21,9 @@ import jinja2
 
 from . import coupled
 from .catalog import function_names
-from .build import build_function, build_sincos_function, operation_count, signature
+from .build import (build_function, build_rotation_function, build_sincos_function,
+                    operation_count, signature)
+from .constraints import ROTATION_ANGLES
 from .sample_c import sample_function_c
 from .coupled import COUPLED_FUNCTIONS, coupled_functions
 from .model import derive_model
@@ -192,6 +194,10 @@ def build_functions(spec: ModelSpec, algebra: str = "sx"):
     ``(per-link functions, [(composed function, docstring)])``."""
     link_functions = [build_function(f, spec.prefix) for f in spec.functions]
     by_name = {fn.name()[len(spec.prefix):]: fn for fn in link_functions}
+    # the rows with their angles' rotations given: composition blocks, not emitted themselves
+    by_name.update({f"{f.name}_rotation": build_rotation_function(f, spec.prefix,
+                                                                   ROTATION_ANGLES[f.name])
+                    for f in spec.functions if f.name in ROTATION_ANGLES})
     composed = coupled_functions(by_name, spec.n_joints, spec.meta["n_parameters"],
                                  prefix=spec.prefix, algebra=algebra)
     docs = {name: getattr(coupled, name).__doc__ for name in COUPLED_FUNCTIONS}
