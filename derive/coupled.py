@@ -217,11 +217,20 @@ def _contact_rotation(c, s, contact_link):
     return (ca.dot(contact_link, ca.vertcat(*c)), ca.dot(contact_link, ca.vertcat(*s)))
 
 
-def _constraint_rows(fn, alg, sz, q, v, K, sc, v_obj):
-    """Constraint matrix ``A = [-J_s, G^T]`` (eq. 9), ``Adot v`` (eq. 13), gap and ``s``."""
+def _constraint_rows(fn, alg, sz, q, v, K, sc, v_obj, obj=None, poses=None):
+    """Constraint matrix ``A = [-J_s, G^T]`` (eq. 9), ``Adot v`` (eq. 13), gap and ``s``.
+
+    ``obj``: the object's ``(q_obj, rho, cos psi, sin psi)``; by default ``sc["q_obj"]``,
+    ``sc["rho"]`` and the cosine and sine of ``q_obj[2]``. ``poses``: ``link_poses`` at ``q``
+    when the caller has it already."""
     nl, ns = sz.n_links, sz.n_coordinates
     contact_link = sc["contact_link"]
-    poses = fn["link_poses"](q, K)
+    if poses is None:
+        poses = fn["link_poses"](q, K)
+    if obj is None:
+        psi = sc["q_obj"][2]
+        obj = (sc["q_obj"], sc["rho"], ca.cos(psi), ca.sin(psi))
+    q_obj, rho, cos_psi, sin_psi = obj
     J = fn["link_jacobians"](q, K)
     bias = fn["link_bias_accelerations"](q, v, K)
     c, s_ = _link_rotations(q, nl)
@@ -233,10 +242,9 @@ def _constraint_rows(fn, alg, sz, q, v, K, sc, v_obj):
     bias_k = ca.mtimes(bias, contact_link)
     com_k = ca.dot(K[3 * nl: 4 * nl], contact_link)
     c_k, s_k = _contact_rotation(c, s_, contact_link)
-    psi = sc["q_obj"][2]
     a_link, g_obj, adv_c, gap, s = fn["contact_row_local_rotation"](
-        pose_k, ca.mtimes(J_k, v), bias_k, com_k, sc["q_obj"], v_obj, sc["rho"], sc["side"],
-        ca.vertcat(c_k, ca.cos(psi)), ca.vertcat(s_k, ca.sin(psi)))
+        pose_k, ca.mtimes(J_k, v), bias_k, com_k, q_obj, v_obj, rho, sc["side"],
+        ca.vertcat(c_k, cos_psi), ca.vertcat(s_k, sin_psi))
     rows = [ca.horzcat(ca.mtimes(a_link, J_k), g_obj)]
     Adot_v = [adv_c]
     # one lateral wheel row per link (non-holonomic, eq. 13 with equality where it holds)
@@ -343,7 +351,18 @@ def contact_system(fn, alg: Algebra, sz: _Sizes) -> ca.Function:
     v_obj, f_obj = alg.sym("v_obj", 3), alg.sym("f_obj", 3)
     K = fn["K"]
     sc = _scene_inputs(alg, sz)
-    A, Adot_v, gap, s = _constraint_rows(fn, alg, sz, q, v, K, sc, v_obj)
+    contact_offset, object_distance = alg.sym("contact_offset", 1), alg.sym("object_distance", 1)
+    placed = alg.sym("placed", 1)
+    # the object given (placed = 0) or placed at the scene's contact from q (placed = 1, as
+    # place_object; its orientation is then the contact link's, a product of rotations)
+    poses = fn["link_poses"](q, K)
+    p_obj, p_rho, _, (c_k, s_k) = _placement(fn, alg, sz, q, K, sc["contact_link"],
+                                             contact_offset, object_distance, sc["side"],
+                                             poses)
+    given, psi = 1 - placed, sc["q_obj"][2]
+    obj = (given * sc["q_obj"] + placed * p_obj, given * sc["rho"] + placed * p_rho,
+           given * ca.cos(psi) + placed * c_k, given * ca.sin(psi) + placed * s_k)
+    A, Adot_v, gap, s = _constraint_rows(fn, alg, sz, q, v, K, sc, v_obj, obj, poses)
     M_s = fn["mass_matrix"](q, K)
     h_s = fn["bias_forces"](q, v, K)
     A_s, A_o = A[:, :ns], A[:, ns:]
@@ -358,7 +377,9 @@ def contact_system(fn, alg: Algebra, sz: _Sizes) -> ca.Function:
     b = ca.mtimes(A_s, qdd_free) + ca.mtimes(A_o, a_free) + Adot_v  # eq. (13), lam = 0
     inputs = {"q": q, "v": v, "tau": tau, "q_obj": sc["q_obj"], "v_obj": v_obj, "f_obj": f_obj,
               "K": K, **{k: sc[k] for k in ("contact_link", "side", "object_mass",
-                                            "object_inertia", "rho", "wheel_offset")}}
+                                            "object_inertia", "rho", "wheel_offset")},
+              "contact_offset": contact_offset, "object_distance": object_distance,
+              "placed": placed}
     outputs = {"M": M_s, "delassus": Gc, "b": b, "qdd_free": qdd_free, "a_obj_free": a_free,
                "qdd_from_lam": Minv_AsT, "a_obj_from_lam": Iinv_AoT, "gap": gap, "s": s}
     return _function(alg, "contact_system", inputs, outputs)
@@ -628,6 +649,25 @@ def metric_extremes(fn, alg: Algebra, sz: _Sizes) -> ca.Function:
     return _function(alg, "metric_extremes", inputs, outputs)
 
 
+def _placement(fn, alg, sz, q, K, contact_link, contact_offset, object_distance, side,
+               poses=None):
+    """The object placed at the contact (see :func:`place_object`): ``q_obj``, ``rho``, the
+    contact point ``P`` and the contact link's rotation ``(cos phi_k, sin phi_k)``, which is
+    the object's orientation."""
+    nl = sz.n_links
+    if poses is None:
+        poses = fn["link_poses"](q, K)
+    pose = ca.mtimes(poses, contact_link)
+    com_k = ca.dot(K[3 * nl: 4 * nl], contact_link)
+    c_k, s_k = _contact_rotation(*_link_rotations(q, nl), contact_link)
+    e = ca.vertcat(c_k, s_k)
+    n = side * ca.vertcat(-s_k, c_k)
+    P = pose[:2] + (contact_offset - com_k) * e
+    q_obj = ca.vertcat(P + object_distance * n, pose[2])
+    rho = ca.vertcat(alg.zeros(1, 1), -side * object_distance)
+    return q_obj, rho, P, (c_k, s_k)
+
+
 def place_object(fn, alg: Algebra, sz: _Sizes) -> ca.Function:
     """Pose of the object and its contact point for a contact at ``contact_offset``.
 
@@ -642,18 +682,11 @@ def place_object(fn, alg: Algebra, sz: _Sizes) -> ca.Function:
     contact_offset = alg.sym("contact_offset", 1)
     object_distance = alg.sym("object_distance", 1)
     side = alg.sym("side", 1)
-    pose = ca.mtimes(fn["link_poses"](q, K), contact_link)
-    com_k = ca.dot(K[3 * nl: 4 * nl], contact_link)
-    phi = pose[2]
-    c_k, s_k = _contact_rotation(*_link_rotations(q, nl), contact_link)
-    e = ca.vertcat(c_k, s_k)
-    n = side * ca.vertcat(-s_k, c_k)
-    P = pose[:2] + (contact_offset - com_k) * e
+    q_obj, rho, P, _ = _placement(fn, alg, sz, q, K, contact_link, contact_offset,
+                                  object_distance, side)
     inputs = {"q": q, "K": K, "contact_link": contact_link, "contact_offset": contact_offset,
               "object_distance": object_distance, "side": side}
-    outputs = {"q_obj": ca.vertcat(P + object_distance * n, phi),
-               "rho": ca.vertcat(alg.zeros(1, 1), -side * object_distance),
-               "contact_point": P}
+    outputs = {"q_obj": q_obj, "rho": rho, "contact_point": P}
     return _function(alg, "place_object", inputs, outputs)
 
 

@@ -138,7 +138,9 @@ def function_inputs(model, name: str, q=None) -> dict[str, np.ndarray]:
     * ``K``: the robot's parameter vector (``model.parameters``, layout in docs/casadi.md);
     * scene inputs (a :class:`~snakecg.SceneModel` only): ``contact_link`` (one-hot over the
       links), ``side`` (+1 left, -1 right), ``object_mass``, ``object_inertia``,
-      ``wheel_offset`` (one per link), ``contact_offset``, ``object_distance``;
+      ``wheel_offset`` (one per link), ``contact_offset``, ``object_distance``, and
+      ``placed`` = 0 (``contact_system`` takes the object's pose as given; 1 places it from
+      ``q`` itself);
     * active set, as in the runtime's first pass: ``free`` = 1 on every row the scene has
       (contact and each wheel), 0 elsewhere; ``free_lost`` the same with the contact row 0;
       ``lam_fixed`` = 0; ``regularization`` = 0;
@@ -168,7 +170,7 @@ def function_inputs(model, name: str, q=None) -> dict[str, np.ndarray]:
             "wheel_offset": np.asarray(scene.wheel_offset, dtype=float).copy(),
             "contact_offset": np.array([scene.contact_offset]),
             "object_distance": np.array([scene.object_distance]),
-            "free": present, "free_lost": lost,
+            "free": present, "free_lost": lost, "placed": np.zeros(1),
         })
     in_names = [i["name"] for i in sig["inputs"]]
     need_scene = [k for k in in_names if k in SCENE_INPUTS + ("free", "free_lost")]

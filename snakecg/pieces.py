@@ -35,13 +35,14 @@ def primitives(model, qa):
     A0 = np.array(raw["a_obj_from_tau"])
     N = np.array(raw["input_metric"])
     # qdd and a_obj per unit row force (eq. 18), every row at once (generated contact_system)
-    q_obj, rho, _ = model.place(qa)
     ns, zero = model.n_coordinates, np.zeros(3)
     inputs = model.scene_inputs
     cs = kernels.call(model.backend, "contact_system", n, q=qa, v=np.zeros(ns),
-                      tau=np.zeros(model.n_joints), q_obj=q_obj, v_obj=zero, f_obj=zero, rho=rho,
+                      tau=np.zeros(model.n_joints), q_obj=zero, v_obj=zero, f_obj=zero,
+                      rho=np.zeros(2), placed=np.ones(1),  # the object placed from q
                       **{k: inputs[k] for k in ("K", "contact_link", "side", "object_mass",
-                                                "object_inertia", "wheel_offset")})
+                                                "object_inertia", "wheel_offset",
+                                                "contact_offset", "object_distance")})
     absent = ~np.asarray(model.present, dtype=bool)
     Kq = np.array(cs["qdd_from_lam"])
     Ka = np.array(cs["a_obj_from_lam"])

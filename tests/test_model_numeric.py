@@ -279,6 +279,8 @@ def _inputs_for(sig, model, rng, n):
             a = np.concatenate([[0.0], free[1:]])
         elif name == "regularization":
             a = np.zeros(1)
+        elif name == "placed":  # contact_system: the object given (0) or placed from q (1)
+            a = np.array([float(rng.integers(2))])
         elif name in ("q", "v", "tau", "q_obj", "v_obj", "f_obj", "link_pose", "link_twist",
                       "link_bias", "object_pose", "object_twist", "rho", "wheel_offset",
                       "lam_fixed", "contact_offset"):

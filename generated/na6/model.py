@@ -24,7 +24,7 @@ Functions (inputs -> outputs, in argument order, read from the CasADi functions)
 * ``interaction_maps(q, K, contact_link, side, object_mass, object_inertia, q_obj, rho, wheel_offset, free, lam_fixed, regularization) -> lam_from_tau, lam_from_f_obj, lam_offset, qdd_from_tau, qdd_from_f_obj, qdd_offset, a_obj_from_tau, a_obj_from_f_obj, a_obj_offset, w_from_tau, w_from_f_obj, w_offset, xi_tau, omega_tau, lambda_form_tau, input_metric, projector_constrained, projector_orthogonal, delassus, pivot_ratio``
 * ``metric_forms(q, K, contact_link, side, object_mass, object_inertia, q_obj, rho, wheel_offset, free, regularization) -> omega_tau, xi_tau, lambda_form_tau, input_metric, contact_from_tau, pivot_ratio``
 * ``place_object(q, K, contact_link, contact_offset, object_distance, side) -> q_obj, rho, contact_point``
-* ``contact_system(q, v, tau, q_obj, v_obj, f_obj, K, contact_link, side, object_mass, object_inertia, rho, wheel_offset) -> M, delassus, b, qdd_free, a_obj_free, qdd_from_lam, a_obj_from_lam, gap, s``
+* ``contact_system(q, v, tau, q_obj, v_obj, f_obj, K, contact_link, side, object_mass, object_inertia, rho, wheel_offset, contact_offset, object_distance, placed) -> M, delassus, b, qdd_free, a_obj_free, qdd_from_lam, a_obj_from_lam, gap, s``
 """
 
 import casadi as ca
@@ -1254,7 +1254,7 @@ def wheel_row_local():
 #   aligned with the link (``psi = phi_k``), so ``rho = (0, -side * object_distance)``.
 
 
-# contact_system(q, v, tau, q_obj, v_obj, f_obj, K, contact_link, side, object_mass, object_inertia, rho, wheel_offset)
+# contact_system(q, v, tau, q_obj, v_obj, f_obj, K, contact_link, side, object_mass, object_inertia, rho, wheel_offset, contact_offset, object_distance, placed)
 #   -> M, delassus, b, qdd_free, a_obj_free, qdd_from_lam, a_obj_from_lam, gap, s
 # built by snakecg_derive.coupled.contact_system():
 #   The contact/wheel problem of one sample before any active set is chosen.

@@ -1,10 +1,10 @@
 /* What the runtime core's C files share (snakecg/core/forward.c, integrate.c, settle.c,
  * run.c, maps.c): the sizes, the row states, the simulation's structs, the
- * generated functions' work arrays, one evaluation of the generated `place_object` and
- * `contact_system`, the rows' velocities A V, the held rows' forces of eq. (16) and the
+ * generated functions' work arrays, one evaluation of the generated `contact_system` (the
+ * object given or placed), the rows' velocities A V, the held rows' forces of eq. (16) and the
  * active-set rule. Included after snakecg_layout.h; everything here is static, so each file
  * gets its own copy and the library exports nothing more; a file asks for the parts that not
- * every file uses (SC_PLACE_OBJECT, SC_ROW_VELOCITIES, SC_NEXT_STATES), or the types alone
+ * every file uses (SC_ROW_VELOCITIES, SC_NEXT_STATES), or the types alone
  * (SC_TYPES_ONLY), before including it. */
 #ifndef SNAKECG_CORE_COMMON_H
 #define SNAKECG_CORE_COMMON_H
@@ -27,8 +27,6 @@ int SNAKECG_CS(const double **arg, double **res, sc_int *iw, double *w, int mem)
 int SNAKECG_CS_WORK(sc_int *sz_arg, sc_int *sz_res, sc_int *sz_iw, sc_int *sz_w);
 int SNAKECG_LJ(const double **arg, double **res, sc_int *iw, double *w, int mem);
 int SNAKECG_LJ_WORK(sc_int *sz_arg, sc_int *sz_res, sc_int *sz_iw, sc_int *sz_w);
-int SNAKECG_PO(const double **arg, double **res, sc_int *iw, double *w, int mem);
-int SNAKECG_PO_WORK(sc_int *sz_arg, sc_int *sz_res, sc_int *sz_iw, sc_int *sz_w);
 
 /* row states (snakecg/solver.py) */
 enum { ABSENT = 0, HELD = 1, LOST = 2, SLIDE_POS = 3, SLIDE_NEG = 4 };
@@ -164,15 +162,18 @@ typedef struct {
 } sc_system;
 
 /* `contact_system` at (q, v, tau, q_obj, v_obj, f_obj, rho) with the scene's constants of
- * `scene` (SCENE_* offsets); its status (0 on success). */
+ * `scene` (SCENE_* offsets); q_obj == NULL places the object at the scene's contact from q
+ * (the generated function's input `placed` = 1; rho is then ignored too). Its status (0 on
+ * success). */
 static int sc_contact_system(sc_work_t *ws, const double *scene, const double *q,
                              const double *v, const double *tau, const double *q_obj,
                              const double *v_obj, const double *f_obj, const double *rho,
                              sc_system *out) {
+  static const double zeros[3] = {0.0, 0.0, 0.0}, one = 1.0, zero = 0.0;
   ws->arg[CS_IN_q] = q;
   ws->arg[CS_IN_v] = v;
   ws->arg[CS_IN_tau] = tau;
-  ws->arg[CS_IN_q_obj] = q_obj;
+  ws->arg[CS_IN_q_obj] = q_obj ? q_obj : zeros;
   ws->arg[CS_IN_v_obj] = v_obj;
   ws->arg[CS_IN_f_obj] = f_obj;
   ws->arg[CS_IN_K] = scene + SCENE_K;
@@ -180,8 +181,11 @@ static int sc_contact_system(sc_work_t *ws, const double *scene, const double *q
   ws->arg[CS_IN_side] = scene + SCENE_side;
   ws->arg[CS_IN_object_mass] = scene + SCENE_object_mass;
   ws->arg[CS_IN_object_inertia] = scene + SCENE_object_inertia;
-  ws->arg[CS_IN_rho] = rho;
+  ws->arg[CS_IN_rho] = q_obj ? rho : zeros;
   ws->arg[CS_IN_wheel_offset] = scene + SCENE_wheel_offset;
+  ws->arg[CS_IN_contact_offset] = scene + SCENE_contact_offset;
+  ws->arg[CS_IN_object_distance] = scene + SCENE_object_distance;
+  ws->arg[CS_IN_placed] = q_obj ? &zero : &one;
   ws->res[CS_OUT_M] = out->M;
   ws->res[CS_OUT_delassus] = out->G;
   ws->res[CS_OUT_b] = out->b;
@@ -193,25 +197,6 @@ static int sc_contact_system(sc_work_t *ws, const double *scene, const double *q
   ws->res[CS_OUT_s] = &out->s;
   return SNAKECG_CS(ws->arg, ws->res, ws->iw, ws->w, 0);
 }
-
-#ifdef SC_PLACE_OBJECT /* forward.c, maps.c */
-/* The object placed at the scene's contact (generated `place_object` at q): its pose q_obj
- * (3), the contact point in its frame rho (2) and in the world (2); its status (0 on
- * success). */
-static int sc_place_object(sc_work_t *ws, const double *scene, const double *q, double *q_obj,
-                           double *rho, double *contact_point) {
-  ws->arg[PO_IN_q] = q;
-  ws->arg[PO_IN_K] = scene + SCENE_K;
-  ws->arg[PO_IN_contact_link] = scene + SCENE_contact_link;
-  ws->arg[PO_IN_contact_offset] = scene + SCENE_contact_offset;
-  ws->arg[PO_IN_object_distance] = scene + SCENE_object_distance;
-  ws->arg[PO_IN_side] = scene + SCENE_side;
-  ws->res[PO_OUT_q_obj] = q_obj;
-  ws->res[PO_OUT_rho] = rho;
-  ws->res[PO_OUT_contact_point] = contact_point;
-  return SNAKECG_PO(ws->arg, ws->res, ws->iw, ws->w, 0);
-}
-#endif
 
 #ifdef SC_ROW_VELOCITIES /* integrate.c, settle.c */
 /* A V (snakecg.simulate.dynamics.Dynamics.row_velocities): the gap rate (row 0) and the

@@ -8,8 +8,8 @@
  * input and output by name. Nothing here knows an argument's position.
  *
  * Per sample (eqs. 12-30 of Reyes & Ma 2017; the rules of snakecg/solver.py):
- *   1. the object's placement (generated `place_object`) unless given;
- *   2. the problem before any active set (generated `contact_system`): the Delassus matrix
+ *   1-2. the problem before any active set (generated `contact_system`, which also places
+ *      the object at the scene's contact from q unless its pose is given): the Delassus matrix
  *      G_c (eq. 14), the rows' accelerations at zero force b (eq. 13), the accelerations
  *      without constraint forces and the maps of the forces into them (eqs. 12, 18), M_s;
  *   3. the primal-dual active-set iteration: from "every present row held", solve the held
@@ -33,7 +33,6 @@
 
 #include "snakecg_layout.h"
 #define SC_NEXT_STATES
-#define SC_PLACE_OBJECT
 #include "common.h"
 
 /* sample status */
@@ -88,7 +87,6 @@ static int solve_one(sc_work_t *ws, const double *scene, const sc_constants *c, 
                      const double *v_obj, const double *f_obj, const double *rho_in,
                      double *out) {
   const int nc = SNAKECG_NC, ns = SNAKECG_NS;
-  double q_obj[3], rho[2], contact_point[2];
   sc_system sys;
   double S[SNAKECG_NS * SNAKECG_NS], pivot = 0.0, mass, scale, nq, na, nl, I_obj[3];
   const double *M = sys.M, *G = sys.G, *b = sys.b, *Kq = sys.Kq, *Ka = sys.Ka;
@@ -99,13 +97,8 @@ static int solve_one(sc_work_t *ws, const double *scene, const sc_constants *c, 
   double *lam = out + OUT_lam, *w = out + OUT_w, *qdd = out + OUT_qdd, *a = out + OUT_a_obj;
 
   memcpy(out + OUT_tau, tau, sizeof(double) * SNAKECG_NA);
-  if (q_obj_in) {
-    memcpy(q_obj, q_obj_in, sizeof(q_obj));
-    memcpy(rho, rho_in, sizeof(rho));
-  } else if (sc_place_object(ws, scene, q, q_obj, rho, contact_point)) {
-    return STATUS_FALLBACK; /* the object could not be placed at the scene's contact */
-  }
-  if (sc_contact_system(ws, scene, q, v, tau, q_obj, v_obj, f_obj, rho, &sys))
+  /* q_obj_in == NULL: the object placed at the scene's contact from q */
+  if (sc_contact_system(ws, scene, q, v, tau, q_obj_in, v_obj, f_obj, rho_in, &sys))
     return STATUS_FALLBACK;
   for (r = 0; r < nc; ++r) state[r] = present[r] != 0.0 ? HELD : ABSENT;
   for (it = 0; it < max_iter && moved; ++it) {
@@ -184,7 +177,7 @@ int SNAKECG_EXPORT(core_forward)(sc_int n, const double *scene, const double *co
                                  sc_int max_iter, const double *const *in, const sc_int *stride,
                                  double *out) {
   sc_work_t ws;
-  const sc_work_fn fns[2] = {SNAKECG_CS_WORK, SNAKECG_PO_WORK};
+  const sc_work_fn fns[1] = {SNAKECG_CS_WORK};
   sc_constants c;
   sc_int i;
   double vlim;
@@ -206,7 +199,7 @@ int SNAKECG_EXPORT(core_forward)(sc_int n, const double *scene, const double *co
                           !all_finite(in[IN_rho] + i * stride[IN_rho], 2, INFINITY))))
       return (int)(-2 - (i < 2000000000 ? i : 2000000000));
   }
-  if (sc_work_alloc(&ws, fns, 2)) return -1;
+  if (sc_work_alloc(&ws, fns, 1)) return -1;
   for (i = 0; i < n; ++i) {
     double *row = out + i * OUT_WIDTH;
     const double *qo = in[IN_q_obj] ? in[IN_q_obj] + i * stride[IN_q_obj] : 0;

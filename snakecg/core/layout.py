@@ -25,11 +25,9 @@ INPUTS = ("q", "v", "tau", "q_obj", "v_obj", "f_obj", "rho")
 FUNCTIONS = {
     "contact_system": ("CS", (
         "q", "v", "tau", "q_obj", "v_obj", "f_obj", "K", "contact_link", "side", "object_mass",
-        "object_inertia", "rho", "wheel_offset"), (
+        "object_inertia", "rho", "wheel_offset", "contact_offset", "object_distance", "placed"), (
         "M", "delassus", "b", "qdd_free", "a_obj_free", "qdd_from_lam", "a_obj_from_lam", "gap",
         "s")),
-    "place_object": ("PO", ("q", "K", "contact_link", "contact_offset", "object_distance",
-                            "side"), ("q_obj", "rho", "contact_point")),
     # integrate.c: the rows' velocities A V of the simulation's right-hand side
     "link_jacobians": ("LJ", ("q", "K"), ("J",)),
 }

@@ -1,5 +1,5 @@
 /* snakecg's runtime core, part 5: the all-held maps of one configuration at rest, from the
- * generated place_object and contact_system (the functions the forward solve calls), for the
+ * generated contact_system with the object placed (the function the forward solve calls), for the
  * optimal-torque query of optimal.c.
  *
  * This file is part of the runtime (not generated). Like forward.c it is compiled once per
@@ -19,7 +19,6 @@
 #include <string.h>
 
 #include "snakecg_layout.h"
-#define SC_PLACE_OBJECT
 #include "common.h"
 
 #define NA SNAKECG_NA
@@ -31,18 +30,17 @@
 int SNAKECG_EXPORT(core_held_maps)(const double *scene, const double *q, double pivot_tol,
                                    double *maps) {
   sc_work_t ws;
-  const sc_work_fn fns[2] = {SNAKECG_CS_WORK, SNAKECG_PO_WORK};
+  const sc_work_fn fns[1] = {SNAKECG_CS_WORK};
   sc_system sys;
   const double zero[NS] = {0.0};
   const double *present = scene + SCENE_present;
-  double q_obj[3], rho[2], contact_point[2], Mc[NS * NS], MB[NS * NA], Q[NS * NA], MQ[NS * NA];
+  double Mc[NS * NS], MB[NS * NA], Q[NS * NA], MQ[NS * NA];
   double Lt[NC * NA], ratio = 1.0, Io[3];
   signed char state[NC];
   double *L = maps, *A = maps + NC * NA, *Xi = A + 3 * NA, *Om = Xi + NA * NA, *N = Om + NA * NA;
   int i, j, k, r, status;
-  if (sc_work_alloc(&ws, fns, 2)) return 1;
-  status = sc_place_object(&ws, scene, q, q_obj, rho, contact_point);
-  if (!status) status = sc_contact_system(&ws, scene, q, zero, zero, q_obj, zero, zero, rho, &sys);
+  if (sc_work_alloc(&ws, fns, 1)) return 1;
+  status = sc_contact_system(&ws, scene, q, zero, zero, 0, zero, zero, 0, &sys); /* placed */
   sc_work_free(&ws);
   if (status) return 1;
   /* lam = L tau: G_HH L_H = -(Kq^T B)_H column by column, the other rows 0 (Kq column-major

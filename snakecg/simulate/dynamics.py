@@ -103,8 +103,11 @@ class Dynamics:
     def _cs(self) -> BoundFunction:
         """``contact_system``: the problem before any active set (the linear maps at
         events)."""
-        return self._bound("contact_system", {**self._fixed(), "rho": self.rho,
-                                              "f_obj": self.f_obj})
+        inputs = self._model.scene_inputs
+        return self._bound("contact_system", {
+            **self._fixed(), "rho": self.rho, "f_obj": self.f_obj,
+            "contact_offset": inputs["contact_offset"],
+            "object_distance": inputs["object_distance"], "placed": np.zeros(1)})
 
     @cached_property
     def _jac(self) -> BoundFunction:

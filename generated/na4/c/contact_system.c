@@ -78,7 +78,7 @@ static const casadi_int casadi_s9[3] = {6, 1, 1};
 static const casadi_int casadi_s10[3] = {7, 6, 1};
 static const casadi_int casadi_s11[3] = {3, 6, 1};
 
-/* snakecg_na4_contact_system:(q[7],v[7],tau[4],q_obj[3],v_obj[3],f_obj[3],K[46],contact_link[5],side,object_mass,object_inertia,rho[2],wheel_offset[5])->(M[7x7],delassus[6x6],b[6],qdd_free[7],a_obj_free[3],qdd_from_lam[7x6],a_obj_from_lam[3x6],gap,s) */
+/* snakecg_na4_contact_system:(q[7],v[7],tau[4],q_obj[3],v_obj[3],f_obj[3],K[46],contact_link[5],side,object_mass,object_inertia,rho[2],wheel_offset[5],contact_offset,object_distance,placed)->(M[7x7],delassus[6x6],b[6],qdd_free[7],a_obj_free[3],qdd_from_lam[7x6],a_obj_from_lam[3x6],gap,s) */
 static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a000, a001, a002, a003, a004, a005, a006, a007, a008, a009, a010, a011;
   casadi_real a012, a013, a014, a015, a016, a017, a018, a019, a020, a021, a022, a023;
@@ -414,37 +414,60 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a111=casadi_sq(a088);
   a109=(a109*a111);
   a110=(a110+a109);
-  a109=arg[3]? arg[3][2] : 0;
-  a111=cos(a109);
-  a112=arg[11]? arg[11][1] : 0;
-  a113=(a111*a112);
-  a109=sin(a109);
-  a114=arg[11]? arg[11][0] : 0;
-  a115=(a109*a114);
-  a113=(a113+a115);
-  a115=arg[3]? arg[3][1] : 0;
-  a115=(a113+a115);
-  a116=(a034*a051);
-  a115=(a115+a116);
-  a116=(a063*a035);
+  a109=1.;
+  a111=arg[15]? arg[15][0] : 0;
+  a109=(a109-a111);
+  a112=arg[3]? arg[3][2] : 0;
+  a113=cos(a112);
+  a113=(a109*a113);
+  a114=(a111*a088);
+  a113=(a113+a114);
+  a114=arg[11]? arg[11][1] : 0;
+  a114=(a109*a114);
+  a115=arg[14]? arg[14][0] : 0;
+  a116=(a013*a115);
+  a116=(a111*a116);
+  a114=(a114-a116);
+  a116=(a113*a114);
+  a112=sin(a112);
+  a112=(a109*a112);
+  a117=(a111*a034);
+  a112=(a112+a117);
+  a117=arg[11]? arg[11][0] : 0;
+  a117=(a109*a117);
+  a118=(a112*a117);
+  a116=(a116+a118);
+  a118=arg[3]? arg[3][1] : 0;
+  a118=(a109*a118);
+  a119=(a063*a035);
   a067=(a067*a033);
-  a116=(a116+a067);
+  a119=(a119+a067);
   a067=(a074*a005);
-  a116=(a116+a067);
+  a119=(a119+a067);
   a067=(a080*a016);
-  a116=(a116+a067);
+  a119=(a119+a067);
   a067=(a083*a008);
-  a116=(a116+a067);
-  a115=(a115-a116);
-  a116=(a059*a115);
-  a110=(a110-a116);
-  a111=(a111*a114);
+  a119=(a119+a067);
+  a067=arg[13]? arg[13][0] : 0;
+  a067=(a067-a051);
+  a120=(a067*a034);
+  a120=(a119+a120);
+  a121=(a013*a088);
+  a121=(a115*a121);
+  a120=(a120+a121);
+  a120=(a111*a120);
+  a118=(a118+a120);
+  a118=(a116+a118);
+  a120=(a034*a051);
+  a118=(a118+a120);
+  a118=(a118-a119);
+  a119=(a059*a118);
+  a110=(a110-a119);
+  a113=(a113*a117);
+  a112=(a112*a114);
+  a113=(a113-a112);
+  a112=arg[3]? arg[3][0] : 0;
   a109=(a109*a112);
-  a111=(a111-a109);
-  a109=arg[3]? arg[3][0] : 0;
-  a109=(a111+a109);
-  a051=(a088*a051);
-  a109=(a109+a051);
   a035=(a089*a035);
   a092=(a092*a033);
   a035=(a035+a092);
@@ -454,6 +477,16 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a035=(a035+a092);
   a092=(a106*a008);
   a035=(a035+a092);
+  a067=(a067*a088);
+  a067=(a035+a067);
+  a092=(a013*a034);
+  a115=(a115*a092);
+  a067=(a067-a115);
+  a111=(a111*a067);
+  a109=(a109+a111);
+  a109=(a113+a109);
+  a051=(a088*a051);
+  a109=(a109+a051);
   a109=(a109-a035);
   a035=(a019*a109);
   a110=(a110-a035);
@@ -462,56 +495,56 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a035=(a030*a061);
   a035=(a087+a035);
   a029=(a029/a000);
-  a092=(a019*a060);
-  a051=(a029*a092);
-  a035=(a035+a051);
-  a051=casadi_sq(a030);
-  a051=(a051*a000);
-  a053=(a053-a051);
-  a051=casadi_sq(a029);
-  a051=(a051*a000);
-  a053=(a053-a051);
-  a051=(a035/a053);
+  a051=(a019*a060);
+  a111=(a029*a051);
+  a035=(a035+a111);
+  a111=casadi_sq(a030);
+  a111=(a111*a000);
+  a053=(a053-a111);
+  a111=casadi_sq(a029);
+  a111=(a111*a000);
+  a053=(a053-a111);
+  a111=(a035/a053);
   a028=(a028/a000);
-  a112=(a028*a030);
-  a112=(a112*a000);
-  a055=(a055-a112);
+  a067=(a028*a030);
+  a067=(a067*a000);
+  a055=(a055-a067);
   a027=(a027/a000);
-  a112=(a027*a029);
-  a112=(a112*a000);
-  a055=(a055-a112);
+  a067=(a027*a029);
+  a067=(a067*a000);
+  a055=(a055-a067);
   a055=(a055/a053);
   a074=(a064-a074);
-  a112=(a005*a074);
-  a114=(a033*a066);
-  a112=(a112-a114);
-  a114=(a064-a080);
-  a116=(a016*a114);
-  a112=(a112+a116);
+  a067=(a005*a074);
+  a115=(a033*a066);
+  a067=(a067-a115);
+  a115=(a064-a080);
+  a092=(a016*a115);
+  a067=(a067+a092);
   a064=(a064-a083);
-  a116=(a008*a064);
-  a112=(a112+a116);
-  a116=(a059*a112);
-  a067=(a033*a091);
+  a092=(a008*a064);
+  a067=(a067+a092);
+  a092=(a059*a067);
+  a112=(a033*a091);
   a098=(a098-a090);
-  a117=(a005*a098);
-  a067=(a067+a117);
-  a117=(a103-a090);
-  a118=(a016*a117);
-  a067=(a067+a118);
+  a114=(a005*a098);
+  a112=(a112+a114);
+  a114=(a103-a090);
+  a117=(a016*a114);
+  a112=(a112+a117);
   a090=(a106-a090);
-  a118=(a008*a090);
-  a067=(a067+a118);
-  a118=(a019*a067);
-  a116=(a116-a118);
-  a118=(a033+a005);
-  a118=(a118+a016);
-  a118=(a118+a008);
-  a119=(a110*a118);
-  a116=(a116+a119);
+  a117=(a008*a090);
+  a112=(a112+a117);
+  a117=(a019*a112);
+  a092=(a092-a117);
+  a117=(a033+a005);
+  a117=(a117+a016);
+  a117=(a117+a008);
+  a119=(a110*a117);
+  a092=(a092+a119);
   a119=(a028*a061);
-  a119=(a116+a119);
-  a120=(a027*a092);
+  a119=(a092+a119);
+  a120=(a027*a051);
   a119=(a119+a120);
   a120=(a055*a035);
   a119=(a119-a120);
@@ -567,7 +600,7 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a122=(a122+a125);
   a125=(a026*a061);
   a125=(a122+a125);
-  a126=(a025*a092);
+  a126=(a025*a051);
   a125=(a125+a126);
   a126=(a056*a035);
   a125=(a125-a126);
@@ -634,7 +667,7 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a127=(a127+a129);
   a129=(a024*a061);
   a129=(a127+a129);
-  a130=(a023*a092);
+  a130=(a023*a051);
   a129=(a129+a130);
   a130=(a058*a035);
   a129=(a129-a130);
@@ -715,7 +748,7 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a110=(a110-a132);
   a132=(a022*a061);
   a132=(a110+a132);
-  a134=(a002*a092);
+  a134=(a002*a051);
   a132=(a132+a134);
   a035=(a048*a035);
   a132=(a132-a035);
@@ -757,14 +790,14 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a129=(a046*a132);
   a120=(a120-a129);
   a129=(a055*a120);
-  a051=(a051-a129);
+  a111=(a111-a129);
   a129=(a056*a126);
-  a051=(a051-a129);
+  a111=(a111-a129);
   a129=(a058*a130);
-  a051=(a051-a129);
+  a111=(a111-a129);
   a129=(a048*a132);
-  a051=(a051-a129);
-  a129=(a030*a051);
+  a111=(a111-a129);
+  a129=(a030*a111);
   a062=(a062+a129);
   a129=(a028*a120);
   a062=(a062+a129);
@@ -775,8 +808,8 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a129=(a022*a132);
   a062=(a062+a129);
   a129=(a061*a062);
-  a125=(a092/a000);
-  a119=(a029*a051);
+  a125=(a051/a000);
+  a119=(a029*a111);
   a125=(a125+a119);
   a119=(a027*a120);
   a125=(a125+a119);
@@ -786,11 +819,11 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a125=(a125+a119);
   a119=(a002*a132);
   a125=(a125+a119);
-  a119=(a092*a125);
+  a119=(a051*a125);
   a129=(a129+a119);
-  a119=(a087*a051);
+  a119=(a087*a111);
   a129=(a129+a119);
-  a119=(a116*a120);
+  a119=(a092*a120);
   a129=(a129+a119);
   a119=(a122*a126);
   a129=(a129+a119);
@@ -804,9 +837,9 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a135=(a019/a119);
   a136=(a019*a135);
   a134=(a134+a136);
-  a136=(a088*a111);
+  a136=(a088*a113);
   a136=(a136*a013);
-  a137=(a059*a113);
+  a137=(a059*a116);
   a136=(a136+a137);
   a137=arg[10]? arg[10][0] : 0;
   a138=(a136/a137);
@@ -815,7 +848,7 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a129=(a129+a134);
   if (res[1]!=0) res[1][0]=a129;
   a129=arg[12]? arg[12][0] : 0;
-  a134=(a129*a051);
+  a134=(a129*a111);
   a139=(a003*a062);
   a140=(a004*a125);
   a139=(a139+a140);
@@ -826,7 +859,7 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a134=(a134-a139);
   a139=arg[12]? arg[12][1] : 0;
   a134=(a134+a139);
-  a140=(a134*a051);
+  a140=(a134*a111);
   a141=(a006*a062);
   a142=(a007*a125);
   a141=(a141+a142);
@@ -843,7 +876,7 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a140=(a140-a139);
   a139=arg[12]? arg[12][2] : 0;
   a140=(a140+a139);
-  a142=(a140*a051);
+  a142=(a140*a111);
   a143=(a009*a062);
   a144=(a010*a125);
   a143=(a143+a144);
@@ -866,13 +899,13 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a142=(a142-a139);
   a139=arg[12]? arg[12][3] : 0;
   a142=(a142+a139);
-  a145=(a142*a051);
+  a145=(a142*a111);
   a146=(a032*a062);
   a147=(a014*a125);
   a146=(a146+a147);
   a145=(a145-a146);
-  a146=(a014*a117);
-  a147=(a032*a114);
+  a146=(a014*a114);
+  a147=(a032*a115);
   a146=(a146-a147);
   a146=(a146+a139);
   a147=(a146*a120);
@@ -895,7 +928,7 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a145=(a145-a139);
   a139=arg[12]? arg[12][4] : 0;
   a145=(a145+a139);
-  a149=(a145*a051);
+  a149=(a145*a111);
   a150=(a043*a062);
   a151=(a018*a125);
   a150=(a150+a151);
@@ -1009,11 +1042,11 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a160=(a160-a149);
   a149=(a002*a154);
   a160=(a160-a149);
-  a149=(a092*a160);
+  a149=(a051*a160);
   a156=(a156-a149);
   a149=(a087*a139);
   a156=(a156+a149);
-  a149=(a116*a155);
+  a149=(a092*a155);
   a156=(a156-a149);
   a149=(a122*a157);
   a156=(a156+a149);
@@ -1157,11 +1190,11 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a161=(a161-a156);
   a156=(a002*a163);
   a161=(a161-a156);
-  a156=(a092*a161);
+  a156=(a051*a161);
   a167=(a167-a156);
   a156=(a087*a149);
   a167=(a167+a156);
-  a156=(a116*a162);
+  a156=(a092*a162);
   a167=(a167+a156);
   a156=(a122*a164);
   a167=(a167-a156);
@@ -1306,11 +1339,11 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a168=(a168+a167);
   a167=(a002*a172);
   a168=(a168-a167);
-  a167=(a092*a168);
+  a167=(a051*a168);
   a170=(a170-a167);
   a167=(a087*a156);
   a170=(a170+a167);
-  a167=(a116*a169);
+  a167=(a092*a169);
   a170=(a170+a167);
   a167=(a122*a171);
   a170=(a170+a167);
@@ -1456,11 +1489,11 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a175=(a175-a170);
   a170=(a002*a181);
   a175=(a175+a170);
-  a170=(a092*a175);
+  a170=(a051*a175);
   a177=(a177-a170);
   a170=(a087*a167);
   a177=(a177+a170);
-  a170=(a116*a176);
+  a170=(a092*a176);
   a177=(a177+a170);
   a170=(a122*a178);
   a177=(a177+a170);
@@ -1607,11 +1640,11 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a182=(a182-a177);
   a177=(a002*a188);
   a182=(a182-a177);
-  a177=(a092*a182);
+  a177=(a051*a182);
   a184=(a184-a177);
   a177=(a087*a170);
   a184=(a184+a177);
-  a177=(a116*a183);
+  a177=(a092*a183);
   a184=(a184+a177);
   a177=(a122*a185);
   a184=(a184+a177);
@@ -1880,12 +1913,12 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a218=(a218-a023);
   a002=(a002*a220);
   a218=(a218-a002);
-  a092=(a092*a218);
-  a061=(a061-a092);
+  a051=(a051*a218);
+  a061=(a061-a051);
   a087=(a087*a053);
   a061=(a061+a087);
-  a116=(a116*a047);
-  a061=(a061+a116);
+  a092=(a092*a047);
+  a061=(a061+a092);
   a122=(a122*a042);
   a061=(a061+a122);
   a127=(a127*a037);
@@ -1908,8 +1941,8 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a136=(a060*a127);
   a069=(a069*a177);
   a136=(a136+a069);
-  a112=(a112*a184);
-  a136=(a136+a112);
+  a067=(a067*a184);
+  a136=(a136+a067);
   a121=(a121*a195);
   a136=(a136+a121);
   a083=(a083*a199);
@@ -1918,8 +1951,8 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a136=(a136-a131);
   a136=(a019*a136);
   a131=(a060*a177);
-  a118=(a118*a184);
-  a131=(a131+a118);
+  a117=(a117*a184);
+  a131=(a131+a117);
   a124=(a124*a195);
   a131=(a131+a124);
   a101=(a101*a199);
@@ -1937,10 +1970,10 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a045=(a007*a190);
   a045=(a124+a045);
   a072=(a196*a072);
-  a118=(a012*a072);
-  a045=(a045+a118);
-  a118=(a045*a005);
-  a050=(a050+a118);
+  a117=(a012*a072);
+  a045=(a045+a117);
+  a117=(a045*a005);
+  a050=(a050+a117);
   a196=(a196*a040);
   a012=(a012*a196);
   a012=(a045+a012);
@@ -1963,8 +1996,8 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a060=(a060*a050);
   a094=(a094*a177);
   a060=(a060+a094);
-  a067=(a067*a184);
-  a060=(a060+a067);
+  a112=(a112*a184);
+  a060=(a060+a112);
   a123=(a123*a195);
   a060=(a060+a123);
   a128=(a128*a199);
@@ -1975,9 +2008,9 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a133=(a060*a131);
   a101=(a101+a133);
   a136=(a136+a060);
-  a113=(a113*a019);
-  a111=(a059*a111);
-  a060=(a113-a111);
+  a116=(a116*a019);
+  a113=(a059*a113);
+  a060=(a116-a113);
   a133=arg[4]? arg[4][2] : 0;
   a128=(a060*a133);
   a136=(a136+a128);
@@ -1987,18 +2020,18 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a123=arg[4]? arg[4][1] : 0;
   a059=(a059*a123);
   a136=(a136-a059);
-  a123=(a115*a019);
-  a067=(a034*a109);
-  a067=(a067*a013);
-  a123=(a123-a067);
-  a067=(a123*a131);
-  a136=(a136-a067);
+  a123=(a118*a019);
+  a112=(a034*a109);
+  a112=(a112*a013);
+  a123=(a123-a112);
+  a112=(a123*a131);
+  a136=(a136-a112);
   a136=(a131*a136);
   a101=(a101+a136);
   a060=(a060*a131);
-  a111=(a111-a113);
-  a111=(a133*a111);
-  a060=(a060+a111);
+  a113=(a113-a116);
+  a113=(a133*a113);
+  a060=(a060+a113);
   a133=(a133*a060);
   a101=(a101+a133);
   a128=(a128*a131);
@@ -2119,8 +2152,8 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a012=(a012-a196);
   a104=(a104*a177);
   a104=(a050+a104);
-  a117=(a117*a184);
-  a104=(a104+a117);
+  a114=(a114*a184);
+  a104=(a104+a114);
   a103=(a103*a195);
   a104=(a104+a103);
   a102=(a102*a199);
@@ -2131,8 +2164,8 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a012=(a012-a032);
   a081=(a081*a177);
   a081=(a127+a081);
-  a114=(a114*a184);
-  a081=(a081+a114);
+  a115=(a115*a184);
+  a081=(a081+a115);
   a080=(a080*a195);
   a081=(a081+a080);
   a079=(a079*a199);
@@ -2200,7 +2233,7 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   if (res[5]!=0) res[5][0]=a062;
   a125=(-a125);
   if (res[5]!=0) res[5][1]=a125;
-  if (res[5]!=0) res[5][2]=a051;
+  if (res[5]!=0) res[5][2]=a111;
   if (res[5]!=0) res[5][3]=a120;
   if (res[5]!=0) res[5][4]=a126;
   if (res[5]!=0) res[5][5]=a130;
@@ -2264,7 +2297,7 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   if (res[6]!=0) res[6][16]=a001;
   if (res[6]!=0) res[6][17]=a001;
   if (res[7]!=0) res[7][0]=a123;
-  a034=(a034*a115);
+  a034=(a034*a118);
   a088=(a088*a109);
   a034=(a034+a088);
   if (res[8]!=0) res[8][0]=a034;
@@ -2288,7 +2321,7 @@ CASADI_SYMBOL_EXPORT void snakecg_na4_contact_system_incref(void) {
 CASADI_SYMBOL_EXPORT void snakecg_na4_contact_system_decref(void) {
 }
 
-CASADI_SYMBOL_EXPORT casadi_int snakecg_na4_contact_system_n_in(void) { return 13;}
+CASADI_SYMBOL_EXPORT casadi_int snakecg_na4_contact_system_n_in(void) { return 16;}
 
 CASADI_SYMBOL_EXPORT casadi_int snakecg_na4_contact_system_n_out(void) { return 9;}
 
@@ -2313,6 +2346,9 @@ CASADI_SYMBOL_EXPORT const char* snakecg_na4_contact_system_name_in(casadi_int i
     case 10: return "object_inertia";
     case 11: return "rho";
     case 12: return "wheel_offset";
+    case 13: return "contact_offset";
+    case 14: return "object_distance";
+    case 15: return "placed";
     default: return 0;
   }
 }
@@ -2347,6 +2383,9 @@ CASADI_SYMBOL_EXPORT const casadi_int* snakecg_na4_contact_system_sparsity_in(ca
     case 10: return casadi_s5;
     case 11: return casadi_s6;
     case 12: return casadi_s4;
+    case 13: return casadi_s5;
+    case 14: return casadi_s5;
+    case 15: return casadi_s5;
     default: return 0;
   }
 }
@@ -2367,7 +2406,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* snakecg_na4_contact_system_sparsity_out(c
 }
 
 CASADI_SYMBOL_EXPORT int snakecg_na4_contact_system_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
-  if (sz_arg) *sz_arg = 13;
+  if (sz_arg) *sz_arg = 16;
   if (sz_res) *sz_res = 9;
   if (sz_iw) *sz_iw = 0;
   if (sz_w) *sz_w = 0;
@@ -2375,7 +2414,7 @@ CASADI_SYMBOL_EXPORT int snakecg_na4_contact_system_work(casadi_int *sz_arg, cas
 }
 
 CASADI_SYMBOL_EXPORT int snakecg_na4_contact_system_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
-  if (sz_arg) *sz_arg = 13*sizeof(const casadi_real*);
+  if (sz_arg) *sz_arg = 16*sizeof(const casadi_real*);
   if (sz_res) *sz_res = 9*sizeof(casadi_real*);
   if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
   if (sz_w) *sz_w = 0*sizeof(casadi_real);
@@ -2395,14 +2434,14 @@ CASADI_SYMBOL_EXPORT int snakecg_na4_contact_system_work_bytes(casadi_int *sz_ar
 
 CASADI_SYMBOL_EXPORT int snakecg_na4_batch_contact_system(casadi_int n, const casadi_real** arg,
     const casadi_int* stride, casadi_real** res) {
-  const casadi_real* a[13];
+  const casadi_real* a[16];
   casadi_real* r[9];
   casadi_int* iw = (casadi_int*) malloc(sizeof(casadi_int) * 1);
   casadi_real* w = (casadi_real*) malloc(sizeof(casadi_real) * 223);
   casadi_int i, k;
   int status = 0;
   if (!iw || !w) { free(iw); free(w); return -1; }
-  for (k = 0; k < 13; ++k) a[k] = 0;
+  for (k = 0; k < 16; ++k) a[k] = 0;
   for (k = 0; k < 9; ++k) r[k] = 0;
   for (i = 0; i < n; ++i) {
     a[0] = arg[0] + i * stride[0];
@@ -2418,6 +2457,9 @@ CASADI_SYMBOL_EXPORT int snakecg_na4_batch_contact_system(casadi_int n, const ca
     a[10] = arg[10] + i * stride[10];
     a[11] = arg[11] + i * stride[11];
     a[12] = arg[12] + i * stride[12];
+    a[13] = arg[13] + i * stride[13];
+    a[14] = arg[14] + i * stride[14];
+    a[15] = arg[15] + i * stride[15];
     r[0] = res[0] + i * 49;
     r[1] = res[1] + i * 36;
     r[2] = res[2] + i * 6;

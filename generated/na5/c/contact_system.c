@@ -78,7 +78,7 @@ static const casadi_int casadi_s9[3] = {7, 1, 1};
 static const casadi_int casadi_s10[3] = {8, 7, 1};
 static const casadi_int casadi_s11[3] = {3, 7, 1};
 
-/* snakecg_na5_contact_system:(q[8],v[8],tau[5],q_obj[3],v_obj[3],f_obj[3],K[58],contact_link[6],side,object_mass,object_inertia,rho[2],wheel_offset[6])->(M[8x8],delassus[7x7],b[7],qdd_free[8],a_obj_free[3],qdd_from_lam[8x7],a_obj_from_lam[3x7],gap,s) */
+/* snakecg_na5_contact_system:(q[8],v[8],tau[5],q_obj[3],v_obj[3],f_obj[3],K[58],contact_link[6],side,object_mass,object_inertia,rho[2],wheel_offset[6],contact_offset,object_distance,placed)->(M[8x8],delassus[7x7],b[7],qdd_free[8],a_obj_free[3],qdd_from_lam[8x7],a_obj_from_lam[3x7],gap,s) */
 static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a000, a001, a002, a003, a004, a005, a006, a007, a008, a009, a010, a011;
   casadi_real a012, a013, a014, a015, a016, a017, a018, a019, a020, a021, a022, a023;
@@ -505,39 +505,62 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a136=casadi_sq(a108);
   a134=(a134*a136);
   a135=(a135+a134);
-  a134=arg[3]? arg[3][2] : 0;
-  a136=cos(a134);
-  a137=arg[11]? arg[11][1] : 0;
-  a138=(a136*a137);
-  a134=sin(a134);
-  a139=arg[11]? arg[11][0] : 0;
-  a140=(a134*a139);
-  a138=(a138+a140);
-  a140=arg[3]? arg[3][1] : 0;
-  a140=(a138+a140);
-  a141=(a041*a063);
-  a140=(a140+a141);
-  a141=(a077*a042);
+  a134=1.;
+  a136=arg[15]? arg[15][0] : 0;
+  a134=(a134-a136);
+  a137=arg[3]? arg[3][2] : 0;
+  a138=cos(a137);
+  a138=(a134*a138);
+  a139=(a136*a108);
+  a138=(a138+a139);
+  a139=arg[11]? arg[11][1] : 0;
+  a139=(a134*a139);
+  a140=arg[14]? arg[14][0] : 0;
+  a141=(a018*a140);
+  a141=(a136*a141);
+  a139=(a139-a141);
+  a141=(a138*a139);
+  a137=sin(a137);
+  a137=(a134*a137);
+  a142=(a136*a041);
+  a137=(a137+a142);
+  a142=arg[11]? arg[11][0] : 0;
+  a142=(a134*a142);
+  a143=(a137*a142);
+  a141=(a141+a143);
+  a143=arg[3]? arg[3][1] : 0;
+  a143=(a134*a143);
+  a144=(a077*a042);
   a081=(a081*a040);
-  a141=(a141+a081);
+  a144=(a144+a081);
   a081=(a088*a005);
-  a141=(a141+a081);
+  a144=(a144+a081);
   a081=(a094*a016);
-  a141=(a141+a081);
+  a144=(a144+a081);
   a081=(a100*a008);
-  a141=(a141+a081);
+  a144=(a144+a081);
   a081=(a103*a013);
-  a141=(a141+a081);
-  a140=(a140-a141);
-  a141=(a050*a140);
-  a135=(a135-a141);
-  a136=(a136*a139);
+  a144=(a144+a081);
+  a081=arg[13]? arg[13][0] : 0;
+  a081=(a081-a063);
+  a145=(a081*a041);
+  a145=(a144+a145);
+  a146=(a018*a108);
+  a146=(a140*a146);
+  a145=(a145+a146);
+  a145=(a136*a145);
+  a143=(a143+a145);
+  a143=(a141+a143);
+  a145=(a041*a063);
+  a143=(a143+a145);
+  a143=(a143-a144);
+  a144=(a050*a143);
+  a135=(a135-a144);
+  a138=(a138*a142);
+  a137=(a137*a139);
+  a138=(a138-a137);
+  a137=arg[3]? arg[3][0] : 0;
   a134=(a134*a137);
-  a136=(a136-a134);
-  a134=arg[3]? arg[3][0] : 0;
-  a134=(a136+a134);
-  a063=(a108*a063);
-  a134=(a134+a063);
   a042=(a109*a042);
   a112=(a112*a040);
   a042=(a042+a112);
@@ -549,6 +572,16 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a042=(a042+a112);
   a112=(a131*a013);
   a042=(a042+a112);
+  a081=(a081*a108);
+  a081=(a042+a081);
+  a112=(a018*a041);
+  a140=(a140*a112);
+  a081=(a081-a140);
+  a136=(a136*a081);
+  a134=(a134+a136);
+  a134=(a138+a134);
+  a063=(a108*a063);
+  a134=(a134+a063);
   a134=(a134-a042);
   a042=(a023*a134);
   a135=(a135-a042);
@@ -557,63 +590,63 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a042=(a036*a075);
   a042=(a107+a042);
   a035=(a035/a000);
-  a112=(a023*a074);
-  a063=(a035*a112);
-  a042=(a042+a063);
-  a063=casadi_sq(a036);
-  a063=(a063*a000);
-  a065=(a065-a063);
-  a063=casadi_sq(a035);
-  a063=(a063*a000);
-  a065=(a065-a063);
-  a063=(a042/a065);
+  a063=(a023*a074);
+  a136=(a035*a063);
+  a042=(a042+a136);
+  a136=casadi_sq(a036);
+  a136=(a136*a000);
+  a065=(a065-a136);
+  a136=casadi_sq(a035);
+  a136=(a136*a000);
+  a065=(a065-a136);
+  a136=(a042/a065);
   a034=(a034/a000);
-  a137=(a034*a036);
-  a137=(a137*a000);
-  a067=(a067-a137);
+  a081=(a034*a036);
+  a081=(a081*a000);
+  a067=(a067-a081);
   a033=(a033/a000);
-  a137=(a033*a035);
-  a137=(a137*a000);
-  a067=(a067-a137);
+  a081=(a033*a035);
+  a081=(a081*a000);
+  a067=(a067-a081);
   a067=(a067/a065);
   a088=(a078-a088);
-  a137=(a005*a088);
-  a139=(a040*a080);
-  a137=(a137-a139);
-  a139=(a078-a094);
-  a141=(a016*a139);
-  a137=(a137+a141);
-  a141=(a078-a100);
-  a081=(a008*a141);
-  a137=(a137+a081);
+  a081=(a005*a088);
+  a140=(a040*a080);
+  a081=(a081-a140);
+  a140=(a078-a094);
+  a112=(a016*a140);
+  a081=(a081+a112);
+  a112=(a078-a100);
+  a137=(a008*a112);
+  a081=(a081+a137);
   a078=(a078-a103);
-  a081=(a013*a078);
-  a137=(a137+a081);
-  a081=(a050*a137);
-  a142=(a040*a111);
+  a137=(a013*a078);
+  a081=(a081+a137);
+  a137=(a050*a081);
+  a139=(a040*a111);
   a118=(a118-a110);
-  a143=(a005*a118);
-  a142=(a142+a143);
-  a143=(a123-a110);
-  a144=(a016*a143);
-  a142=(a142+a144);
+  a142=(a005*a118);
+  a139=(a139+a142);
+  a142=(a123-a110);
+  a144=(a016*a142);
+  a139=(a139+a144);
   a144=(a128-a110);
   a145=(a008*a144);
-  a142=(a142+a145);
+  a139=(a139+a145);
   a110=(a131-a110);
   a145=(a013*a110);
-  a142=(a142+a145);
-  a145=(a023*a142);
-  a081=(a081-a145);
+  a139=(a139+a145);
+  a145=(a023*a139);
+  a137=(a137-a145);
   a145=(a040+a005);
   a145=(a145+a016);
   a145=(a145+a008);
   a145=(a145+a013);
   a146=(a135*a145);
-  a081=(a081+a146);
+  a137=(a137+a146);
   a146=(a034*a075);
-  a146=(a081+a146);
-  a147=(a033*a112);
+  a146=(a137+a146);
+  a147=(a033*a063);
   a146=(a146+a147);
   a147=(a067*a042);
   a146=(a146-a147);
@@ -676,7 +709,7 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a150=(a150+a154);
   a154=(a032*a075);
   a154=(a150+a154);
-  a155=(a031*a112);
+  a155=(a031*a063);
   a154=(a154+a155);
   a155=(a068*a042);
   a154=(a154-a155);
@@ -750,7 +783,7 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a157=(a157+a160);
   a160=(a030*a075);
   a160=(a157+a160);
-  a161=(a029*a112);
+  a161=(a029*a063);
   a160=(a160+a161);
   a161=(a070*a042);
   a160=(a160-a161);
@@ -838,7 +871,7 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a162=(a162+a164);
   a164=(a028*a075);
   a164=(a162+a164);
-  a165=(a027*a112);
+  a165=(a027*a063);
   a164=(a164+a165);
   a165=(a073*a042);
   a164=(a164-a165);
@@ -943,7 +976,7 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a135=(a135-a167);
   a167=(a026*a075);
   a167=(a135+a167);
-  a169=(a002*a112);
+  a169=(a002*a063);
   a167=(a167+a169);
   a042=(a060*a042);
   a167=(a167-a042);
@@ -998,16 +1031,16 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a164=(a058*a167);
   a147=(a147-a164);
   a164=(a067*a147);
-  a063=(a063-a164);
+  a136=(a136-a164);
   a164=(a068*a155);
-  a063=(a063-a164);
+  a136=(a136-a164);
   a164=(a070*a161);
-  a063=(a063-a164);
+  a136=(a136-a164);
   a164=(a073*a165);
-  a063=(a063-a164);
+  a136=(a136-a164);
   a164=(a060*a167);
-  a063=(a063-a164);
-  a164=(a036*a063);
+  a136=(a136-a164);
+  a164=(a036*a136);
   a076=(a076+a164);
   a164=(a034*a147);
   a076=(a076+a164);
@@ -1020,8 +1053,8 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a164=(a026*a167);
   a076=(a076+a164);
   a164=(a075*a076);
-  a160=(a112/a000);
-  a154=(a035*a063);
+  a160=(a063/a000);
+  a154=(a035*a136);
   a160=(a160+a154);
   a154=(a033*a147);
   a160=(a160+a154);
@@ -1033,11 +1066,11 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a160=(a160+a154);
   a154=(a002*a167);
   a160=(a160+a154);
-  a154=(a112*a160);
+  a154=(a063*a160);
   a164=(a164+a154);
-  a154=(a107*a063);
+  a154=(a107*a136);
   a164=(a164+a154);
-  a154=(a081*a147);
+  a154=(a137*a147);
   a164=(a164+a154);
   a154=(a150*a155);
   a164=(a164+a154);
@@ -1053,9 +1086,9 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a169=(a023/a154);
   a170=(a023*a169);
   a042=(a042+a170);
-  a170=(a108*a136);
+  a170=(a108*a138);
   a170=(a170*a018);
-  a171=(a050*a138);
+  a171=(a050*a141);
   a170=(a170+a171);
   a171=arg[10]? arg[10][0] : 0;
   a172=(a170/a171);
@@ -1064,7 +1097,7 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a164=(a164+a042);
   if (res[1]!=0) res[1][0]=a164;
   a164=arg[12]? arg[12][0] : 0;
-  a042=(a164*a063);
+  a042=(a164*a136);
   a173=(a003*a076);
   a174=(a004*a160);
   a173=(a173+a174);
@@ -1075,7 +1108,7 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a042=(a042-a173);
   a173=arg[12]? arg[12][1] : 0;
   a042=(a042+a173);
-  a174=(a042*a063);
+  a174=(a042*a136);
   a175=(a006*a076);
   a176=(a007*a160);
   a175=(a175+a176);
@@ -1092,7 +1125,7 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a174=(a174-a173);
   a173=arg[12]? arg[12][2] : 0;
   a174=(a174+a173);
-  a176=(a174*a063);
+  a176=(a174*a136);
   a177=(a009*a076);
   a178=(a010*a160);
   a177=(a177+a178);
@@ -1115,13 +1148,13 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a176=(a176-a173);
   a173=arg[12]? arg[12][3] : 0;
   a176=(a176+a173);
-  a179=(a176*a063);
+  a179=(a176*a136);
   a180=(a039*a076);
   a181=(a014*a160);
   a180=(a180+a181);
   a179=(a179-a180);
-  a180=(a014*a143);
-  a181=(a039*a139);
+  a180=(a014*a142);
+  a181=(a039*a140);
   a180=(a180-a181);
   a180=(a180+a173);
   a181=(a180*a147);
@@ -1144,13 +1177,13 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a179=(a179-a173);
   a173=arg[12]? arg[12][4] : 0;
   a179=(a179+a173);
-  a183=(a179*a063);
+  a183=(a179*a136);
   a184=(a038*a076);
   a185=(a019*a160);
   a184=(a184+a185);
   a183=(a183-a184);
   a184=(a019*a144);
-  a185=(a038*a141);
+  a185=(a038*a112);
   a184=(a184-a185);
   a184=(a184+a173);
   a185=(a184*a147);
@@ -1179,7 +1212,7 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a183=(a183-a173);
   a173=arg[12]? arg[12][5] : 0;
   a183=(a183+a173);
-  a188=(a183*a063);
+  a188=(a183*a136);
   a189=(a055*a076);
   a190=(a022*a160);
   a189=(a189+a190);
@@ -1327,11 +1360,11 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a196=(a196-a202);
   a202=(a002*a194);
   a196=(a196-a202);
-  a202=(a112*a196);
+  a202=(a063*a196);
   a198=(a198-a202);
   a202=(a107*a173);
   a198=(a198+a202);
-  a202=(a081*a195);
+  a202=(a137*a195);
   a198=(a198-a202);
   a202=(a150*a197);
   a198=(a198+a202);
@@ -1521,11 +1554,11 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a210=(a210-a188);
   a188=(a002*a204);
   a210=(a210-a188);
-  a188=(a112*a210);
+  a188=(a063*a210);
   a206=(a206-a188);
   a188=(a107*a202);
   a206=(a206+a188);
-  a188=(a081*a203);
+  a188=(a137*a203);
   a206=(a206+a188);
   a188=(a150*a205);
   a206=(a206-a188);
@@ -1716,11 +1749,11 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a212=(a212-a198);
   a198=(a002*a214);
   a212=(a212-a198);
-  a198=(a112*a212);
+  a198=(a063*a212);
   a218=(a218-a198);
   a198=(a107*a188);
   a218=(a218+a198);
-  a198=(a081*a211);
+  a198=(a137*a211);
   a218=(a218+a198);
   a198=(a150*a213);
   a218=(a218+a198);
@@ -1912,11 +1945,11 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a220=(a220+a206);
   a206=(a002*a224);
   a220=(a220-a206);
-  a206=(a112*a220);
+  a206=(a063*a220);
   a222=(a222-a206);
   a206=(a107*a198);
   a222=(a222+a206);
-  a206=(a081*a219);
+  a206=(a137*a219);
   a222=(a222+a206);
   a206=(a150*a221);
   a222=(a222+a206);
@@ -2109,11 +2142,11 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a228=(a228-a218);
   a218=(a002*a234);
   a228=(a228+a218);
-  a218=(a112*a228);
+  a218=(a063*a228);
   a230=(a230-a218);
   a218=(a107*a206);
   a230=(a230+a218);
-  a218=(a081*a227);
+  a218=(a137*a227);
   a230=(a230+a218);
   a218=(a150*a229);
   a230=(a230+a218);
@@ -2307,11 +2340,11 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a236=(a236-a222);
   a222=(a002*a242);
   a236=(a236-a222);
-  a222=(a112*a236);
+  a222=(a063*a236);
   a238=(a238-a222);
   a222=(a107*a218);
   a238=(a238+a222);
-  a222=(a081*a235);
+  a222=(a137*a235);
   a238=(a238+a222);
   a222=(a150*a237);
   a238=(a238+a222);
@@ -2657,12 +2690,12 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a278=(a278-a027);
   a002=(a002*a281);
   a278=(a278-a002);
-  a112=(a112*a278);
-  a075=(a075-a112);
+  a063=(a063*a278);
+  a075=(a075-a063);
   a107=(a107*a065);
   a075=(a075+a107);
-  a081=(a081*a059);
-  a075=(a075+a081);
+  a137=(a137*a059);
+  a075=(a075+a137);
   a150=(a150*a054);
   a075=(a075+a150);
   a157=(a157*a049);
@@ -2687,8 +2720,8 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a170=(a074*a162);
   a083=(a083*a222);
   a170=(a170+a083);
-  a137=(a137*a238);
-  a170=(a170+a137);
+  a081=(a081*a238);
+  a170=(a170+a081);
   a148=(a148*a248);
   a170=(a170+a148);
   a156=(a156*a252);
@@ -2754,8 +2787,8 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a074=(a074*a062);
   a114=(a114*a222);
   a074=(a074+a114);
-  a142=(a142*a238);
-  a074=(a074+a142);
+  a139=(a139*a238);
+  a074=(a074+a139);
   a151=(a151*a248);
   a074=(a074+a151);
   a158=(a158*a252);
@@ -2768,9 +2801,9 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a168=(a074*a166);
   a126=(a126+a168);
   a170=(a170+a074);
-  a138=(a138*a023);
-  a136=(a050*a136);
-  a074=(a138-a136);
+  a141=(a141*a023);
+  a138=(a050*a138);
+  a074=(a141-a138);
   a168=arg[4]? arg[4][2] : 0;
   a163=(a074*a168);
   a170=(a170+a163);
@@ -2780,7 +2813,7 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a158=arg[4]? arg[4][1] : 0;
   a050=(a050*a158);
   a170=(a170-a050);
-  a158=(a140*a023);
+  a158=(a143*a023);
   a151=(a041*a134);
   a151=(a151*a018);
   a158=(a158-a151);
@@ -2789,9 +2822,9 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a170=(a166*a170);
   a126=(a126+a170);
   a074=(a074*a166);
-  a136=(a136-a138);
-  a136=(a168*a136);
-  a074=(a074+a136);
+  a138=(a138-a141);
+  a138=(a168*a138);
+  a074=(a074+a138);
   a168=(a168*a074);
   a126=(a126+a168);
   a163=(a163*a166);
@@ -2918,8 +2951,8 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a012=(a012-a249);
   a124=(a124*a222);
   a124=(a062+a124);
-  a143=(a143*a238);
-  a124=(a124+a143);
+  a142=(a142*a238);
+  a124=(a124+a142);
   a123=(a123*a248);
   a124=(a124+a123);
   a122=(a122*a252);
@@ -2930,8 +2963,8 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a012=(a012-a039);
   a095=(a095*a222);
   a095=(a162+a095);
-  a139=(a139*a238);
-  a095=(a095+a139);
+  a140=(a140*a238);
+  a095=(a095+a140);
   a094=(a094*a248);
   a095=(a095+a094);
   a093=(a093*a252);
@@ -2973,8 +3006,8 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a015=(a015-a038);
   a101=(a101*a222);
   a101=(a162+a101);
-  a141=(a141*a238);
-  a101=(a101+a141);
+  a112=(a112*a238);
+  a101=(a101+a112);
   a149=(a149*a248);
   a101=(a101+a149);
   a100=(a100*a252);
@@ -3051,7 +3084,7 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   if (res[5]!=0) res[5][0]=a076;
   a160=(-a160);
   if (res[5]!=0) res[5][1]=a160;
-  if (res[5]!=0) res[5][2]=a063;
+  if (res[5]!=0) res[5][2]=a136;
   if (res[5]!=0) res[5][3]=a147;
   if (res[5]!=0) res[5][4]=a155;
   if (res[5]!=0) res[5][5]=a161;
@@ -3133,7 +3166,7 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   if (res[6]!=0) res[6][19]=a001;
   if (res[6]!=0) res[6][20]=a001;
   if (res[7]!=0) res[7][0]=a158;
-  a041=(a041*a140);
+  a041=(a041*a143);
   a108=(a108*a134);
   a041=(a041+a108);
   if (res[8]!=0) res[8][0]=a041;
@@ -3157,7 +3190,7 @@ CASADI_SYMBOL_EXPORT void snakecg_na5_contact_system_incref(void) {
 CASADI_SYMBOL_EXPORT void snakecg_na5_contact_system_decref(void) {
 }
 
-CASADI_SYMBOL_EXPORT casadi_int snakecg_na5_contact_system_n_in(void) { return 13;}
+CASADI_SYMBOL_EXPORT casadi_int snakecg_na5_contact_system_n_in(void) { return 16;}
 
 CASADI_SYMBOL_EXPORT casadi_int snakecg_na5_contact_system_n_out(void) { return 9;}
 
@@ -3182,6 +3215,9 @@ CASADI_SYMBOL_EXPORT const char* snakecg_na5_contact_system_name_in(casadi_int i
     case 10: return "object_inertia";
     case 11: return "rho";
     case 12: return "wheel_offset";
+    case 13: return "contact_offset";
+    case 14: return "object_distance";
+    case 15: return "placed";
     default: return 0;
   }
 }
@@ -3216,6 +3252,9 @@ CASADI_SYMBOL_EXPORT const casadi_int* snakecg_na5_contact_system_sparsity_in(ca
     case 10: return casadi_s5;
     case 11: return casadi_s6;
     case 12: return casadi_s4;
+    case 13: return casadi_s5;
+    case 14: return casadi_s5;
+    case 15: return casadi_s5;
     default: return 0;
   }
 }
@@ -3236,7 +3275,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* snakecg_na5_contact_system_sparsity_out(c
 }
 
 CASADI_SYMBOL_EXPORT int snakecg_na5_contact_system_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
-  if (sz_arg) *sz_arg = 13;
+  if (sz_arg) *sz_arg = 16;
   if (sz_res) *sz_res = 9;
   if (sz_iw) *sz_iw = 0;
   if (sz_w) *sz_w = 0;
@@ -3244,7 +3283,7 @@ CASADI_SYMBOL_EXPORT int snakecg_na5_contact_system_work(casadi_int *sz_arg, cas
 }
 
 CASADI_SYMBOL_EXPORT int snakecg_na5_contact_system_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
-  if (sz_arg) *sz_arg = 13*sizeof(const casadi_real*);
+  if (sz_arg) *sz_arg = 16*sizeof(const casadi_real*);
   if (sz_res) *sz_res = 9*sizeof(casadi_real*);
   if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
   if (sz_w) *sz_w = 0*sizeof(casadi_real);
@@ -3264,14 +3303,14 @@ CASADI_SYMBOL_EXPORT int snakecg_na5_contact_system_work_bytes(casadi_int *sz_ar
 
 CASADI_SYMBOL_EXPORT int snakecg_na5_batch_contact_system(casadi_int n, const casadi_real** arg,
     const casadi_int* stride, casadi_real** res) {
-  const casadi_real* a[13];
+  const casadi_real* a[16];
   casadi_real* r[9];
   casadi_int* iw = (casadi_int*) malloc(sizeof(casadi_int) * 1);
   casadi_real* w = (casadi_real*) malloc(sizeof(casadi_real) * 284);
   casadi_int i, k;
   int status = 0;
   if (!iw || !w) { free(iw); free(w); return -1; }
-  for (k = 0; k < 13; ++k) a[k] = 0;
+  for (k = 0; k < 16; ++k) a[k] = 0;
   for (k = 0; k < 9; ++k) r[k] = 0;
   for (i = 0; i < n; ++i) {
     a[0] = arg[0] + i * stride[0];
@@ -3287,6 +3326,9 @@ CASADI_SYMBOL_EXPORT int snakecg_na5_batch_contact_system(casadi_int n, const ca
     a[10] = arg[10] + i * stride[10];
     a[11] = arg[11] + i * stride[11];
     a[12] = arg[12] + i * stride[12];
+    a[13] = arg[13] + i * stride[13];
+    a[14] = arg[14] + i * stride[14];
+    a[15] = arg[15] + i * stride[15];
     r[0] = res[0] + i * 64;
     r[1] = res[1] + i * 49;
     r[2] = res[2] + i * 7;
