@@ -18,8 +18,12 @@ For a 3-joint snake (the paper's Table 1 robot, kappa = 100) at rest, in each sc
 * **threads** (``--threads``): batched ``forward`` per pair on 1 and on 2 threads for batch
   sizes from 128 to 65,536 (``wheels``), the data behind the default of ``SNAKECG_THREADS``
   (threads only from ``PARALLEL_MIN`` samples per thread on).
+* **instructions** (``--instructions``, needs valgrind): machine instructions per batched
+  pair inside the C core (callgrind's inclusive count of the per-sample solve over 20,000
+  pairs), a figure that does not depend on the machine's load or clock.
 
     python benchmarks/bench_core.py [--n 100000] [--single 20000] [--repeat 5] [--threads]
+                                    [--instructions]
 
 Prints a table and the machine's load average before and after.
 """
@@ -165,13 +169,57 @@ def bench_threads(repeat, rng):
         os.environ["SNAKECG_THREADS"] = "1"
 
 
+def _instructions_child(scenario: str, n: int) -> None:
+    """The work callgrind counts: one batched forward of ``n`` random pairs."""
+    scene = snakecg.Scene(snakecg.Robot(joints=3), scenario=scenario, kappa=100)
+    model = snakecg.load(scene)
+    rng = np.random.default_rng(0)
+    Q = np.zeros((n, 6))
+    Q[:, 3:] = rng.uniform(-2.3, 2.3, (n, 3))
+    T = rng.normal(0.0, 0.05, (n, 3))
+    model.forward(Q, T)
+
+
+def bench_instructions(n: int = 20000) -> None:
+    """Instructions per pair of the per-sample solve (callgrind, inclusive), per scenario."""
+    import re
+    import shutil
+    import subprocess
+    import sys
+    import tempfile
+
+    if not shutil.which("valgrind") or not shutil.which("callgrind_annotate"):
+        print("\ninstructions: valgrind is not installed (apt-get install valgrind)")
+        return
+    print(f"\ninstructions per pair in the C core (callgrind, {n} pairs, inclusive solve_one)")
+    print("| scenario | instructions per pair |")
+    print("|---|---:|")
+    for sc in SCENARIOS:
+        with tempfile.TemporaryDirectory() as tmp:
+            out = f"{tmp}/cg.out"
+            subprocess.run(["valgrind", "--tool=callgrind", f"--callgrind-out-file={out}",
+                            sys.executable, __file__, "--_child", sc, str(n)],
+                           check=True, capture_output=True)
+            text = subprocess.run(["callgrind_annotate", "--inclusive=yes", out], check=True,
+                                  capture_output=True, text=True).stdout
+        m = re.search(r"^\s*([\d,]+) .*:solve_one\b", text, re.M)
+        count = int(m.group(1).replace(",", "")) / n if m else float("nan")
+        print(f"| {sc} | {count:,.0f} |")
+
+
 def main(argv=None) -> int:
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     p.add_argument("--n", type=int, default=100_000, help="batch size (pairs)")
     p.add_argument("--single", type=int, default=20_000, help="single calls per round")
     p.add_argument("--repeat", type=int, default=5, help="best of this many rounds")
     p.add_argument("--threads", action="store_true", help="also 1 vs 2 threads per batch size")
+    p.add_argument("--instructions", action="store_true",
+                   help="also instructions per batched pair (valgrind's callgrind)")
+    p.add_argument("--_child", nargs=2, help=argparse.SUPPRESS)
     a = p.parse_args(argv)
+    if a._child:
+        _instructions_child(a._child[0], int(a._child[1]))
+        return 0
     rng = np.random.default_rng(0)
     load0 = os.getloadavg()
     print(f"machine: {cpu_name()}, {os.cpu_count()} cores, Python {platform.python_version()},"
@@ -189,6 +237,8 @@ def main(argv=None) -> int:
         print(f"MuJoCo {mj[3]}, {mj[2]} contact(s) in the model's configuration")
     if a.threads:
         bench_threads(a.repeat, rng)
+    if a.instructions:
+        bench_instructions()
     load1 = os.getloadavg()
     print(f"load average after: {load1[0]:.2f} {load1[1]:.2f} {load1[2]:.2f}")
     return 0
