@@ -236,8 +236,8 @@ def sweep(scene, *, grid=None, samples=None, seed=None, store, client=None, chun
 
 def _stored_chunk(path: Path, plan: Plan) -> Plan:
     """``plan`` with the chunk size recorded in the store at ``path`` (a store made with an
-    explicit chunk, or with the default of another release or worker count, resumes without
-    ``chunk``); unchanged if the store records none (then the comparison refuses it)."""
+    explicit chunk, or with the default spread over another number of workers, resumes
+    without ``chunk``); unchanged if the store records none (the comparison refuses it)."""
     stored = _store.open_existing(path, mode="r").attrs["snakecg_sweep"].get("chunk")
     if isinstance(stored, int) and not isinstance(stored, bool) and stored >= 1:
         return dataclasses.replace(plan, chunk=stored)
