@@ -8,7 +8,7 @@
   thread), per scenario and joint count 2..6 (the bounded-wheels scenario on a small batch),
   and from it core-hours of the 28^4, 28^5 and 28^6 grids;
 * scaling: the same bounded-wheels sweep on a local cluster of 1 worker and of 2 workers,
-  alternated `--repeat` times (4 joints, 24,576 seeded samples: 25-40 s on one idle
+  alternated `--repeat` times (4 joints, 32,768 seeded samples: 30-45 s on one idle
   worker), the ratio of the medians; the chunk is the sweep's default for the cluster
   (`--chunk` to fix it); the tail is the time from the first worker's last task's end to
   the last one's (one worker idle), from Dask's task stream;
@@ -111,7 +111,7 @@ def scaling(tmp: Path, quick: bool, chunk: int | None = None, repeat: int = 1) -
     the medians of alternated runs compare like with like)."""
     from distributed import get_task_stream
 
-    joints, n = (3, 2048) if quick else (4, 24576)  # >= 30 s on one idle worker
+    joints, n = (3, 2048) if quick else (4, 32768)  # >= 30 s on one idle worker (1 ms each)
     sc = scene(joints, "wheels")
     out = {1: [], 2: []}
     for r in range(repeat):
