@@ -96,10 +96,11 @@ def default_chunk(scenario: str, n_joints: int, configurations: int | None = Non
     :func:`configuration_seconds`, rounded to the nearest 2^k or 3 * 2^k, and at most
     :data:`MAX_CHUNK_BYTES` of results (then the largest such number below that). Bounded
     wheels: 196,608 configurations for 1 joint, 65,536 for 2, 12,288 for 3, 1,536 for 4,
-    512 for 5, 384 for 6, 128 for 8; the other two scenarios 65,536 to 196,608 up to 5
-    joints (the byte cap), 49,152 for 6. With ``configurations`` (the sweep's size), raised
-    to ``ceil(configurations / MAX_CHUNKS)`` if that is larger (at most :data:`MAX_CHUNKS`
-    chunks). Not capped at the sweep's size (a sweep smaller than a chunk is one chunk)."""
+    512 for 5, 384 for 6, 128 for 8; the other two scenarios 196,608 for 1 joint down to
+    65,536 for 4 and 5 (the byte cap binds up to 4 joints), 49,152 for 6. With
+    ``configurations`` (the sweep's size), raised to ``ceil(configurations / MAX_CHUNKS)`` if
+    that is larger (at most :data:`MAX_CHUNKS` chunks). Not capped at the sweep's size (a
+    sweep smaller than a chunk is one chunk)."""
     chunk = _nice(CHUNK_SECONDS / configuration_seconds(scenario, n_joints))
     cap = MAX_CHUNK_BYTES / result_bytes(n_joints)
     if chunk > cap:
