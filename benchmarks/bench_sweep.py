@@ -1,17 +1,21 @@
 """Benchmark: sweeps on Dask into Zarr (`snakecg.sweep`).
 
     python benchmarks/bench_sweep.py [--part cost,scaling,overhead,grid4] [--quick]
-                                     [--budget SECONDS] [--json FILE]
+                                     [--budget SECONDS] [--json FILE] [--chunk N]
+                                     [--repeat R] [--joints N]
 
 * cost: per-configuration CPU cost of `model.extremes` + `com_polar` in one process (one C
   thread), per scenario and joint count 2..6 (the bounded-wheels scenario on a small batch),
   and from it core-hours of the 28^4, 28^5 and 28^6 grids;
 * scaling: the same bounded-wheels sweep on a local cluster of 1 worker and of 2 workers,
-  alternated `--repeat` times (4 joints, 24,576 seeded samples: about 40 s on one idle
-  worker), the ratio of the medians;
-* overhead: at the default chunk size, a warm 1-worker cluster's `sweep` against the same
-  chunks evaluated in this process one after the other, right before and right after it
-  (scheduling, serialization, Zarr writes and the digests are the difference);
+  alternated `--repeat` times (4 joints, 32,768 seeded samples: 30-45 s on one idle
+  worker), the ratio of the medians; the chunk is the sweep's default for the cluster
+  (`--chunk` to fix it); the tail is the time from the first worker's last task's end to
+  the last one's (one worker idle), from Dask's task stream;
+* overhead: at the default chunk size (`snakecg.sweeps.default_chunk`), a warm 1-worker
+  cluster's `sweep` against the same chunks evaluated in this process one after the other,
+  right before and right after it (scheduling, serialization, Zarr writes and the digests
+  are the difference); 3 joints for bounded wheels and 4 for the others, or `--joints`;
 * grid4: the 28^4 = 614,656 grid of each scenario on 2 workers; the bounded-wheels one
   stops after `--budget` seconds (default 300) and is extrapolated from the chunks written
   (the store is resumable: rerun to finish it).
@@ -36,7 +40,7 @@ os.environ.setdefault("SNAKECG_THREADS", "1")  # one C thread per process: compa
 import numpy as np  # noqa: E402
 
 import snakecg  # noqa: E402
-from snakecg.sweeps.plan import DEFAULT_CHUNK, grid_plan, joint_values, samples_plan  # noqa: E402
+from snakecg.sweeps.plan import default_chunk, joint_values, samples_plan  # noqa: E402
 from snakecg.sweeps.work import evaluate  # noqa: E402
 
 
@@ -78,8 +82,19 @@ def cost(quick: bool) -> dict:
 
 def timed_sweep(sc, store, **kw) -> float:
     t = time.perf_counter()
-    snakecg.sweep(sc, store=store, progress=False, **kw)
+    timed_sweep.last = snakecg.sweep(sc, store=store, progress=False, **kw)
     return time.perf_counter() - t
+
+
+def tail_seconds(stream) -> float:
+    """From Dask's task stream: the last task's end minus the earliest of the workers' last
+    task ends (the time one worker sat idle at the end of the sweep)."""
+    last = {}
+    for t in stream:
+        for s in t["startstops"]:
+            if s["action"] == "compute":
+                last[t["worker"]] = max(last.get(t["worker"], 0.0), s["stop"])
+    return max(last.values()) - min(last.values()) if len(last) > 1 else 0.0
 
 
 class local_client:
@@ -94,8 +109,9 @@ class local_client:
 def scaling(tmp: Path, quick: bool, chunk: int | None = None, repeat: int = 1) -> dict:
     """1 worker against 2, ``repeat`` rounds alternating (the VM's speed drifts between runs:
     the medians of alternated runs compare like with like)."""
-    joints, n = (3, 2048) if quick else (4, 24576)  # >= 30 s on one idle worker
-    chunk = chunk or DEFAULT_CHUNK["wheels"]
+    from distributed import get_task_stream
+
+    joints, n = (3, 2048) if quick else (4, 32768)  # >= 30 s on one idle worker (1 ms each)
     sc = scene(joints, "wheels")
     out = {1: [], 2: []}
     for r in range(repeat):
@@ -108,8 +124,11 @@ def scaling(tmp: Path, quick: bool, chunk: int | None = None, repeat: int = 1) -
                             chunk=1, client=client)
                 la = load_avg()
                 w0, c0 = client.run(time.process_time), time.process_time()
-                t = timed_sweep(sc, tmp / f"scale{workers}-{r}.zarr", samples=n, seed=1,
-                                chunk=chunk, client=client)
+                with get_task_stream(client) as ts:
+                    t = timed_sweep(sc, tmp / f"scale{workers}-{r}.zarr", samples=n, seed=1,
+                                    chunk=chunk, client=client)
+                used = timed_sweep.last.chunk
+                tail = tail_seconds(ts.data)
                 # CPU seconds of this process (scheduler, client, nannies and whatever Zarr
                 # writes it does) and of the workers, during the sweep
                 cpu_here = time.process_time() - c0
@@ -117,11 +136,12 @@ def scaling(tmp: Path, quick: bool, chunk: int | None = None, repeat: int = 1) -
                 cpu_workers = sum(w1[a] - w0[a] for a in w1 if a in w0)
                 out[workers].append({"seconds": t, "load_before": la,
                                      "load_after": load_avg(), "cpu_client_s": cpu_here,
-                                     "cpu_workers_s": cpu_workers})
+                                     "cpu_workers_s": cpu_workers, "chunk": used,
+                                     "tail_s": tail})
                 print(f"  {workers} worker(s): {n} configurations ({joints} joints, wheels, "
-                      f"chunks of {chunk}) in {t:.1f} s, load {la} -> {load_avg()}; CPU: "
-                      f"workers {cpu_workers:.1f} s, this process {cpu_here:.2f} s",
-                      flush=True)
+                      f"chunks of {used}) in {t:.1f} s, load {la} -> {load_avg()}; CPU: "
+                      f"workers {cpu_workers:.1f} s, this process {cpu_here:.2f} s; "
+                      f"tail {tail:.2f} s", flush=True)
             finally:
                 lc.close()
     med = {w: float(np.median([x["seconds"] for x in out[w]])) for w in (1, 2)}
@@ -130,7 +150,7 @@ def scaling(tmp: Path, quick: bool, chunk: int | None = None, repeat: int = 1) -
     return out
 
 
-def overhead(tmp: Path, quick: bool) -> dict:
+def overhead(tmp: Path, quick: bool, joints: int | None = None) -> dict:
     """Wall time of a warm 1-worker sweep against the same chunks evaluated in this process
     one after the other (the plain loop, run right before and right after the sweep: their
     mean is the anchor, so a drift of the machine's load weighs on both alike), and the CPU
@@ -144,14 +164,15 @@ def overhead(tmp: Path, quick: bool) -> dict:
     lc = local_client(1)
     client = lc.client
     try:
-        for sc_name, joints in (("wheels", 3), ("frictionless", 4), ("ideal_wheels", 4)):
-            sc = scene(joints, sc_name)
-            chunk = DEFAULT_CHUNK[sc_name]
+        for sc_name, nj in (("wheels", 3), ("frictionless", 4), ("ideal_wheels", 4)):
+            nj = joints or nj
+            sc = scene(nj, sc_name)
+            chunk = default_chunk(sc_name, nj)
             chunks = 4 if quick else 8
             n = chunk * chunks
             timed_sweep(sc, tmp / f"warm-{sc_name}.zarr", samples=2, seed=0, chunk=1,
                         client=client)
-            plan = samples_plan(joints, n, 2, sc_name, chunk=chunk)
+            plan = samples_plan(nj, n, 2, sc_name, chunk=chunk)
             model = snakecg.load(sc)
             evaluate(model, plan.configurations(0)[:8])  # warm
 
@@ -179,13 +200,13 @@ def overhead(tmp: Path, quick: bool) -> dict:
             # writes when it writes) against the plain loop's; the other jobs on the
             # machine stretch wall times, much less CPU times
             cpu_frac = (cpu_worker + cpu_here) / cpu_loop - 1
-            out[sc_name] = {"joints": joints, "chunk": chunk, "configurations": n,
+            out[sc_name] = {"joints": nj, "chunk": chunk, "configurations": n,
                             "task_s": tasks, "dask_s": dask, "overhead": frac,
                             "in_process_s": inproc, "in_process_runs_s": [before, after],
                             "cpu_worker_s": cpu_worker, "cpu_client_s": cpu_here,
                             "cpu_loop_s": cpu_loop, "cpu_overhead": cpu_frac,
                             "load": la, "load_after": load_avg()}
-            print(f"  {sc_name:>13} ({joints} joints, chunk {chunk}, {n} configurations): "
+            print(f"  {sc_name:>13} ({nj} joints, chunk {chunk}, {n} configurations): "
                   f"sweep {dask:.2f} s (worker's tasks {tasks:.2f} s); plain loop in this "
                   f"process {before:.2f} s before, {after:.2f} s after: overhead "
                   f"{100 * frac:+.1f} %; CPU: worker {cpu_worker:.2f} s + this process "
@@ -202,7 +223,6 @@ def grid4(tmp: Path, budget: float) -> dict:
     for sc_name in ("frictionless", "ideal_wheels", "wheels"):
         sc = scene(4, sc_name)
         store = tmp / f"grid4-{sc_name}.zarr"
-        plan = grid_plan(4, grid, sc_name)
         la = load_avg()
         t = time.perf_counter()
         if sc_name != "wheels":
@@ -227,17 +247,20 @@ def grid4(tmp: Path, budget: float) -> dict:
         th.join(timeout=budget)
         import zarr
 
-        done = int(np.count_nonzero(zarr.open_group(str(store), mode="r")["chunk_digest"][:]))
+        root = zarr.open_group(str(store), mode="r")
+        done = int(np.count_nonzero(root["chunk_digest"][:]))
+        meta = root.attrs["snakecg_sweep"]
         wall = time.perf_counter() - t
         lc.close()
         th.join(timeout=60)
-        configs = done * plan.chunk
+        configs = done * meta["chunk"]
         rate = configs / wall
-        est = plan.size / rate if rate else float("inf")
-        out[sc_name] = {"seconds": wall, "chunks_done": done, "chunks": plan.n_chunks,
+        est = meta["n_configurations"] / rate if rate else float("inf")
+        out[sc_name] = {"seconds": wall, "chunks_done": done, "chunks": meta["n_chunks"],
                         "configurations_done": configs, "rate_per_s": rate,
-                        "estimated_seconds": est, "load": la, "complete": done == plan.n_chunks}
-        print(f"  28^4 {sc_name:>13}: {done} of {plan.n_chunks} chunks ({configs:,} "
+                        "estimated_seconds": est, "load": la,
+                        "complete": done == meta["n_chunks"]}
+        print(f"  28^4 {sc_name:>13}: {done} of {meta['n_chunks']} chunks ({configs:,} "
               f"configurations) in {wall:.0f} s on 2 workers: {rate:.0f} configurations/s, "
               f"the whole grid in about {est / 3600:.2f} h; load {la} -> {load_avg()}",
               flush=True)
@@ -253,6 +276,9 @@ def main() -> None:
     ap.add_argument("--json", metavar="FILE", help="also write the figures as JSON")
     ap.add_argument("--chunk", type=int, default=None,
                     help="scaling: configurations per chunk (default: the sweep's default)")
+    ap.add_argument("--joints", type=int, default=None,
+                    help="overhead: joints of all three scenarios (default 3 for bounded "
+                    "wheels, 4 for the others)")
     ap.add_argument("--repeat", type=int, default=3,
                     help="scaling: alternated rounds of 1 and 2 workers (default 3)")
     args = ap.parse_args()
@@ -268,7 +294,7 @@ def main() -> None:
             elif part == "scaling":
                 results[part] = scaling(tmp, args.quick, args.chunk, args.repeat)
             elif part == "overhead":
-                results[part] = overhead(tmp, args.quick)
+                results[part] = overhead(tmp, args.quick, args.joints)
             elif part == "grid4":
                 results[part] = grid4(tmp, args.budget)
             else:

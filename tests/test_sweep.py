@@ -9,6 +9,7 @@ killed process or a killed worker must end bit for bit equal to an uninterrupted
 
 from __future__ import annotations
 
+import hashlib
 import json
 import os
 import signal
@@ -126,6 +127,97 @@ def test_samples_are_seeded_and_independent_of_the_chunking(client, tmp_path):
 
 
 # ------------------------------------------------------------------------------------------
+# The default chunk: about CHUNK_SECONDS of single-core work at the documented per-configuration
+# costs, rounded to the nearest 2^k or 3 * 2^k, at most 32 MiB of results; expected values
+# worked out by hand from the documented table (e.g. 3-joint wheels: 1.5 s / 115 us = 13,043
+# -> 12,288; 4-joint frictionless: 1.5 s / 16 us = 93,750, cap 32 MiB / 369 B = 90,933 ->
+# 65,536).
+WHEELS_COST_US = {1: 7.2, 2: 20, 3: 115, 4: 960, 5: 2700, 6: 3700}
+
+
+@pytest.mark.parametrize("scenario,expected", [
+    ("wheels", {1: 196608, 2: 65536, 3: 12288, 4: 1536, 5: 512, 6: 384, 8: 128, 10: 48}),
+    ("frictionless", {1: 196608, 2: 131072, 3: 98304, 4: 65536, 5: 65536, 6: 49152}),
+    ("ideal_wheels", {1: 196608, 2: 131072, 3: 98304, 4: 65536, 5: 65536, 6: 49152})])
+def test_default_chunk_rule(scenario, expected):
+    from snakecg.sweeps import default_chunk
+    from snakecg.sweeps.plan import MAX_CHUNK_BYTES
+
+    assert {n: default_chunk(scenario, n) for n in expected} == expected
+    for n in range(1, 51):
+        c = default_chunk(scenario, n)
+        assert c >= 1 and c * (8 * (9 * n + 10) + 1) <= MAX_CHUNK_BYTES, n
+    if scenario == "wheels":  # 1 to 2 s of single-core work at the measured costs
+        for n, us in WHEELS_COST_US.items():
+            assert 1.0 <= default_chunk(scenario, n) * us * 1e-6 <= 2.0, n
+    # at most 65,536 chunks: the 28^6 grid of 6-joint wheels in chunks of
+    # ceil(481,890,304 / 65,536) = 7,354
+    assert default_chunk("wheels", 6, 28 ** 6) == 7354
+    assert default_chunk("wheels", 6, 10 ** 6) == 384
+    with pytest.raises(snakecg.InputError, match="scenario must be one of"):
+        default_chunk("wheel", 3)
+    with pytest.raises(snakecg.InputError, match="n_joints must be an integer"):
+        default_chunk("wheels", 0)
+
+
+@pytest.mark.parametrize("chunk,size,workers,expected,chunks", [
+    (1536, 24576, 2, 1536, 16),   # 16 chunks already: 8 per worker, a multiple of 2
+    (1536, 4608, 2, 576, 8),      # 3 chunks -> 4 per worker, 8 of 576
+    (1536, 10752, 4, 672, 16),    # 7 chunks -> 16 of 672
+    (12288, 21952, 2, 3659, 6),   # 8 would be below 12288 / 4 = 3072: 7 -> down to 6
+    (1536, 2000, 2, 500, 4),      # at most 2000 // 384 = 5 chunks -> 4
+    (65536, 784, 2, 784, 1),      # less than a quarter chunk: one chunk
+    (1536, 4608, 1, 1536, 3),     # one worker: the default as it is
+    (1536, 1000, 1, 1000, 1)])
+def test_spread_chunk(chunk, size, workers, expected, chunks):
+    from snakecg.sweeps.plan import spread_chunk
+
+    got = spread_chunk(chunk, size, workers)
+    assert (got, -(-size // got)) == (expected, chunks)
+
+
+def test_default_chunk_sweep_spreads_and_resumes_with_its_own_chunk(client, tmp_path,
+                                                                    monkeypatch,
+                                                                    uninterrupted):
+    """A new store without chunk: the default spread over the 2 workers; resumed without
+    chunk after the default changed (here: back to the real one), it keeps its own chunk and
+    computes only the missing chunks; the data equal model.extremes either way."""
+    from snakecg.sweeps import plan as plan_mod
+
+    # a default of 64 configurations for 2-joint wheels (64 * 20 us): the 784 grid is 13
+    # chunks, raised to a multiple of the 2 workers: 14 chunks of 784 / 14 = 56
+    monkeypatch.setattr(plan_mod, "CHUNK_SECONDS", 64 * 20e-6)
+    assert plan_mod.default_chunk("wheels", 2) == 64
+    store = tmp_path / "d.zarr"
+    grid = joint_values(-135, 135, 10)
+    res = snakecg.sweep(scene("wheels"), grid=grid, store=store, client=client,
+                        progress=False)
+    assert (res.chunk, res.chunks, res.computed_chunks) == (56, 14, 14)
+    root = zarr.open_group(str(store), mode="r+")
+    assert root["max_sr"].chunks == (56,) and root["tau_max_sr"].chunks == (56, 2)
+    assert root.attrs["snakecg_sweep"]["chunk"] == 56
+    data = read(store)
+    assert_identical(data, uninterrupted)
+    v = np.arange(-135, 136, 10) * DEG
+    assert_matches(data, reference(scene("wheels"), mesh(v, v)))
+    # the bytes of results per configuration of the rule's memory cap
+    per = sum(root[k].nbytes for k in root.array_keys() if k != "chunk_digest") / 784
+    assert per == plan_mod.result_bytes(2)
+    for i in (0, 5, 13):
+        root["chunk_digest"][i] = 0
+    monkeypatch.undo()
+    assert plan_mod.default_chunk("wheels", 2) == 65536
+    res = snakecg.sweep(scene("wheels"), grid=grid, store=store, client=client,
+                        progress=False)
+    assert (res.chunk, res.computed_chunks, res.reused_chunks) == (56, 3, 11)
+    assert_identical(read(store), uninterrupted)
+    # an explicit other chunk is still refused
+    with pytest.raises(snakecg.InputError, match="other arguments.*chunk"):
+        snakecg.sweep(scene("wheels"), grid=grid, store=store, client=client, chunk=64,
+                      progress=False)
+
+
+# ------------------------------------------------------------------------------------------
 # Interruptions: the wheels grid of the paper for 2 joints (784 configurations), 49 chunks.
 WHEELS_GRID = dict(grid=joint_values(-135, 135, 10), chunk=16)
 
@@ -178,6 +270,10 @@ def test_killed_sweep_resumes_with_identical_results(client, tmp_path, uninterru
     again = snakecg.sweep(scene("wheels"), store=store, client=client, progress=False,
                           **WHEELS_GRID)
     assert (again.computed_chunks, again.reused_chunks) == (0, 49)
+    # made with an explicit chunk, it resumes without one too (its own chunk size)
+    again = snakecg.sweep(scene("wheels"), store=store, client=client, progress=False,
+                          grid=WHEELS_GRID["grid"])
+    assert (again.chunk, again.computed_chunks, again.reused_chunks) == (16, 0, 49)
 
 
 def test_a_damaged_chunk_is_detected_and_computed_again(client, tmp_path, uninterrupted):
@@ -263,6 +359,12 @@ def test_workers_write_the_data_and_the_client_only_the_digests(client, tmp_path
             start, stop = 16 * i, min(16 * i + 16, 784)
             assert int(root["chunk_digest"][i]) == store_mod.digest(
                 {k: uninterrupted[k][start:stop] for k in store_mod.array_names()})
+            # and the documented digest: BLAKE2b-64 of the arrays' bytes in order, low bit set
+            h = hashlib.blake2b(digest_size=8)
+            for k in store_mod.array_names():
+                part = uninterrupted[k][start:stop]
+                h.update((part.astype(np.uint8) if k == "feasible" else part).tobytes())
+            assert int(root["chunk_digest"][i]) == int.from_bytes(h.digest(), "little") | 1
 
 
 def test_data_written_without_its_digest_is_computed_again(client, tmp_path, uninterrupted):

@@ -81,7 +81,10 @@ def register(sub) -> None:
                    "by default a local cluster's workers do, a remote one's send their "
                    "results to this process, which writes them")
     r.add_argument("--chunk", type=int, metavar="N",
-                   help="configurations per chunk (default 1024 for wheels, 32768 otherwise)")
+                   help="configurations per chunk (default for a new store: about 1.5 s of "
+                   "work, from the scenario and joint count, e.g. 12288 for 3-joint wheels, "
+                   "cut to give each worker at least 4 chunks; a resumed store keeps its "
+                   "own)")
     r.add_argument("--limit", type=int, default=LIMIT, metavar="N",
                    help=f"refuse sweeps of more than N configurations (default {LIMIT:,})")
     r.add_argument("--force", action="store_true", help="run a sweep above --limit")

@@ -7,9 +7,9 @@ one into memory. Needs the ``sweep`` extra (``pip install 'snakecg[sweep]'``: Da
 ``distributed`` and Zarr); importing this package does not import them.
 """
 
-from .plan import DEFAULT_CHUNK, Plan, joint_values
+from .plan import Plan, default_chunk, joint_values
 from .reduce import figure, read, summary
 from .run import LIMIT, SweepResult, sweep
 
 __all__ = ["sweep", "SweepResult", "summary", "figure", "read", "joint_values", "Plan",
-           "DEFAULT_CHUNK", "LIMIT"]
+           "default_chunk", "LIMIT"]

@@ -22,23 +22,127 @@ import numpy as np
 
 from ..errors import InputError
 
-__all__ = ["Plan", "grid_plan", "samples_plan", "joint_values", "DEFAULT_CHUNK",
-           "default_chunk", "plan_from_meta", "SAMPLE_BLOCK", "PAPER_RANGE_DEG", "PAPER_STEP_DEG"]
+__all__ = ["Plan", "grid_plan", "samples_plan", "joint_values", "default_chunk",
+           "spread_chunk", "configuration_seconds", "result_bytes", "plan_from_meta",
+           "SAMPLE_BLOCK", "PAPER_RANGE_DEG", "PAPER_STEP_DEG", "CHUNK_SECONDS",
+           "MAX_CHUNK_BYTES", "MAX_CHUNKS", "CHUNKS_PER_WORKER", "CONFIGURATION_SECONDS"]
 
 #: Samples are drawn in blocks of this many configurations (one random stream per block).
 SAMPLE_BLOCK = 4096
 #: The paper's joint range and step (degrees): 28 values per joint.
 PAPER_RANGE_DEG = (-135.0, 135.0)
 PAPER_STEP_DEG = 10.0
-#: Default configurations per chunk: a chunk is one Dask task and one Zarr chunk. Bounded
-#: wheels cost milliseconds per configuration (a chunk is seconds of work); the exact
-#: eigenproblem of the other two scenarios costs microseconds, so their chunks are larger.
-DEFAULT_CHUNK = {"wheels": 1024, "frictionless": 32768, "ideal_wheels": 32768}
+#: A default chunk is about this many seconds of single-core work (:func:`default_chunk`):
+#: long enough that a chunk's scheduling and Zarr write are a few percent of it, short
+#: enough that the last chunks of a sweep leave little idle time.
+CHUNK_SECONDS = 1.5
+#: ... and holds at most this many bytes of results (every array of the store).
+MAX_CHUNK_BYTES = 32 * 2**20
+#: A sweep of more configurations than ``MAX_CHUNKS`` default chunks gets larger chunks, so
+#: that it has at most this many (Dask tasks, and Zarr chunk files per array).
+MAX_CHUNKS = 65536
+#: With two or more workers a new store's default chunk is cut so that every worker gets at
+#: least this many chunks (and the chunk count is a multiple of the workers), but not below
+#: a quarter of :func:`default_chunk` (:func:`spread_chunk`).
+CHUNKS_PER_WORKER = 4
+#: Single-core CPU seconds per configuration of what a sweep computes (``extremes``,
+#: ``com_polar``, ``feasibility``), measured on 1 to 6 joints (one C thread, a 2-core Xeon VM);
+#: above 6 joints extrapolated as ``(n_a / 6) ** 4`` (bounded wheels, sampled extremes) and
+#: ``(n_a / 6) ** 3`` (the exact eigenproblem of the other two) times the 6-joint cost.
+CONFIGURATION_SECONDS = {
+    "wheels": {1: 7.2e-6, 2: 20e-6, 3: 115e-6, 4: 960e-6, 5: 2.7e-3, 6: 3.7e-3},
+    "frictionless": {1: 0.7e-6, 2: 2.1e-6, 3: 4.4e-6, 4: 16e-6, 5: 25e-6, 6: 34e-6},
+    "ideal_wheels": {1: 0.7e-6, 2: 2.1e-6, 3: 4.4e-6, 4: 16e-6, 5: 25e-6, 6: 34e-6},
+}
+_GROWTH = {"wheels": 4, "frictionless": 3, "ideal_wheels": 3}
 
 
-def default_chunk(scenario: str) -> int:
-    """The documented default chunk size (configurations) for a scenario."""
-    return DEFAULT_CHUNK[scenario]
+def configuration_seconds(scenario: str, n_joints: int) -> float:
+    """Estimated single-core seconds per configuration (:data:`CONFIGURATION_SECONDS`)."""
+    table = _scenario_table(scenario)
+    n = _joint_count(n_joints)
+    top = max(table)
+    if n <= top:
+        return table[n]
+    return table[top] * (n / top) ** _GROWTH[scenario]
+
+
+def result_bytes(n_joints: int) -> int:
+    """Bytes of the store's arrays per configuration: ``9 n_a + 10`` float64 values and one
+    boolean."""
+    return 8 * (9 * _joint_count(n_joints) + 10) + 1
+
+
+def _nice(x: float) -> int:
+    """The number of the form 2^k or 3 * 2^k nearest to ``x`` (ratio-wise), at least 1."""
+    if x <= 1:
+        return 1
+    k = math.floor(math.log2(x))
+    candidates = [2 ** k, 3 * 2 ** (k - 1) if k >= 1 else 1, 2 ** (k + 1)]
+    return min(candidates, key=lambda c: abs(math.log(c / x)))
+
+
+def _nice_below(x: float) -> int:
+    """The largest number of the form 2^k or 3 * 2^k at most ``x`` (at least 1)."""
+    if x < 2:
+        return 1
+    k = math.floor(math.log2(x))
+    return 3 * 2 ** (k - 1) if k >= 1 and 3 * 2 ** (k - 1) <= x else 2 ** k
+
+
+def default_chunk(scenario: str, n_joints: int, configurations: int | None = None) -> int:
+    """The default chunk size (configurations) of a sweep of ``scenario`` with ``n_joints``
+    joints: :data:`CHUNK_SECONDS` of single-core work at the cost of
+    :func:`configuration_seconds`, rounded to the nearest 2^k or 3 * 2^k, and at most
+    :data:`MAX_CHUNK_BYTES` of results (then the largest such number below that). Bounded
+    wheels: 196,608 configurations for 1 joint, 65,536 for 2, 12,288 for 3, 1,536 for 4,
+    512 for 5, 384 for 6, 128 for 8; the other two scenarios 196,608 for 1 joint down to
+    65,536 for 4 and 5 (the byte cap binds up to 4 joints), 49,152 for 6. With
+    ``configurations`` (the sweep's size), raised to ``ceil(configurations / MAX_CHUNKS)`` if
+    that is larger (at most :data:`MAX_CHUNKS` chunks). Not capped at the sweep's size (a
+    sweep smaller than a chunk is one chunk)."""
+    chunk = _nice(CHUNK_SECONDS / configuration_seconds(scenario, n_joints))
+    cap = MAX_CHUNK_BYTES / result_bytes(n_joints)
+    if chunk > cap:
+        chunk = _nice_below(cap)
+    if configurations is not None:
+        chunk = max(chunk, -(-int(configurations) // MAX_CHUNKS))
+    return chunk
+
+
+def spread_chunk(chunk: int, size: int, workers: int) -> int:
+    """The chunk size of a new sweep of ``size`` configurations on ``workers`` concurrent
+    workers (threads), from its :func:`default_chunk` ``chunk``: with two or more workers,
+    the chunk count is raised to :data:`CHUNKS_PER_WORKER` per worker, then to a multiple of
+    ``workers`` (down to one where up is not possible), as far as chunks stay at least a
+    quarter of ``chunk``: the last chunks then leave little idle time, and no chunk is so
+    small that its overhead outweighs that. The chunks are equal but for the last (a regular
+    Zarr chunking). Never more than ``size``."""
+    if workers < 2 or size <= 1:
+        return max(1, min(chunk, size))
+    floor = max(1, chunk // 4)
+    most = max(1, size // floor)               # chunks of at least `floor` configurations
+    n = max(-(-size // chunk), min(CHUNKS_PER_WORKER * workers, most))
+    up = -(-n // workers) * workers
+    if up <= most:
+        n = up
+    elif n > workers:                          # else round down to a multiple
+        n -= n % workers
+    return max(1, min(-(-size // n), size))
+
+
+def _scenario_table(scenario: str) -> dict:
+    try:
+        return CONFIGURATION_SECONDS[scenario]
+    except (KeyError, TypeError):
+        raise InputError(f"scenario must be one of {', '.join(CONFIGURATION_SECONDS)}, "
+                         f"got {scenario!r}") from None
+
+
+def _joint_count(n_joints) -> int:
+    if not _is_int(n_joints) or n_joints < 1:
+        raise InputError(f"n_joints must be an integer >= 1, got {n_joints!r}")
+    return int(n_joints)
 
 
 def joint_values(lo_deg: float, hi_deg: float, step_deg: float) -> np.ndarray:
@@ -126,9 +230,9 @@ class Plan:
                 "block": SAMPLE_BLOCK}
 
 
-def _chunk(chunk, scenario: str, size: int) -> int:
+def _chunk(chunk, scenario: str, joints: int, size: int) -> int:
     if chunk is None:
-        return max(1, min(default_chunk(scenario), size))
+        return max(1, min(default_chunk(scenario, joints, size), size))
     if not _is_int(chunk) or chunk < 1:
         raise InputError(f"chunk must be an integer >= 1 (configurations per chunk), "
                          f"got {chunk!r}")
@@ -161,7 +265,8 @@ def grid_plan(joints: int, grid, scenario: str, chunk=None) -> Plan:
             raise InputError(f"grid of joint {j} must hold finite angles (rad), got {v}")
     values = tuple(tuple(float(x) for x in v) for v in per_joint)
     size = math.prod(len(v) for v in values)
-    return Plan(joints=joints, kind="grid", chunk=_chunk(chunk, scenario, size), values=values)
+    return Plan(joints=joints, kind="grid", chunk=_chunk(chunk, scenario, joints, size),
+                values=values)
 
 
 def samples_plan(joints: int, count, seed, scenario: str, bounds=None, chunk=None) -> Plan:
@@ -186,7 +291,7 @@ def samples_plan(joints: int, count, seed, scenario: str, bounds=None, chunk=Non
             b[:, 1] < b[:, 0]):
         raise InputError(f"bounds must be one (lo, hi) pair of joint angles (rad, lo <= hi) "
                          f"for every joint or {joints} such pairs, got {bounds!r}")
-    return Plan(joints=joints, kind="samples", chunk=_chunk(chunk, scenario, int(count)),
+    return Plan(joints=joints, kind="samples", chunk=_chunk(chunk, scenario, joints, int(count)),
                 count=int(count), seed=int(seed),
                 bounds=tuple((float(lo), float(hi)) for lo, hi in b))
 
