@@ -210,6 +210,22 @@ def start_bar(client, futures):
     return bar
 
 
+def end_bar(bar, wait: float = 1.0) -> None:
+    """After the last chunk: let the bar draw its end, or draw it here. A sweep of a few fast
+    chunks can finish (and release its futures) before the bar's first report from the
+    scheduler; the bar then never hears of them, and would show nothing."""
+    deadline = time.monotonic() + wait
+    while getattr(bar, "status", None) not in ("finished", "error"):
+        if time.monotonic() >= deadline:
+            bar._draw_bar(remaining=0, all=len(bar.keys))
+            bar._draw_stop()
+            comm = getattr(bar, "comm", None)
+            if comm is not None:
+                comm.abort()
+            return
+        time.sleep(0.02)
+
+
 def _format_time(t: float) -> str:
     from distributed.diagnostics.progress import format_time
 

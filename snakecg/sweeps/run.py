@@ -21,6 +21,7 @@ from .cluster import (
     ProgressLines,
     connect,
     dashboard_of,
+    end_bar,
     fills_machine,
     is_local,
     progress_mode,
@@ -272,8 +273,7 @@ def _compute(client, scene, plan, root, todo, reused, mode, clearance, target) -
                                  key=f"snakecg-sweep-{tag}-{i}", pure=False) for i in todo]
     index = {f.key: i for f, i in zip(futures, todo)}
     lines = ProgressLines(plan.n_chunks, reused, plan.size) if mode == "lines" else None
-    if mode == "bar":
-        start_bar(client, futures)
+    bar = start_bar(client, futures) if mode == "bar" else None
     completed = reused
     pending = set(todo)
     configurations_done = sum(plan.chunk_range(i)[1] - plan.chunk_range(i)[0]
@@ -307,6 +307,8 @@ def _compute(client, scene, plan, root, todo, reused, mode, clearance, target) -
             if time.monotonic() >= next_mark:
                 _mark(root, completed, plan.n_chunks)
                 next_mark = time.monotonic() + MARK_INTERVAL
+        if bar is not None:
+            end_bar(bar)
     finally:
         try:
             client.cancel([f for f in futures if not f.done()])
