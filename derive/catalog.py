@@ -17,7 +17,7 @@ LINK_FUNCTIONS = ("derived_parameters", "link_poses", "link_jacobians",
                   "wheel_row_local")
 #: The coupled system of eqs. (8)-(31) (:mod:`snakecg_derive.coupled`).
 COUPLED_FUNCTIONS = ("constrained_dynamics", "interaction_maps", "metric_forms", "place_object",
-                     "contact_system", "metric_extremes")
+                     "contact_system", "contact_system_at_rest", "metric_extremes")
 #: ``metric_extremes`` solves the eigenproblems of eq. (31) in closed form, up to 3 x 3.
 EXTREMES_MAX_JOINTS = 3
 

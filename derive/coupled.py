@@ -217,12 +217,13 @@ def _contact_rotation(c, s, contact_link):
     return (ca.dot(contact_link, ca.vertcat(*c)), ca.dot(contact_link, ca.vertcat(*s)))
 
 
-def _constraint_rows(fn, alg, sz, q, v, K, sc, v_obj, obj=None, poses=None):
+def _constraint_rows(fn, alg, sz, q, v, K, sc, v_obj, obj=None, poses=None, at_rest=False):
     """Constraint matrix ``A = [-J_s, G^T]`` (eq. 9), ``Adot v`` (eq. 13), gap and ``s``.
 
     ``obj``: the object's ``(q_obj, rho, cos psi, sin psi)``; by default ``sc["q_obj"]``,
     ``sc["rho"]`` and the cosine and sine of ``q_obj[2]``. ``poses``: ``link_poses`` at ``q``
-    when the caller has it already."""
+    when the caller has it already. ``at_rest``: ``v`` and ``v_obj`` are zero (the links'
+    bias accelerations are not evaluated; ``Adot v`` is zero)."""
     nl, ns = sz.n_links, sz.n_coordinates
     contact_link = sc["contact_link"]
     if poses is None:
@@ -232,7 +233,7 @@ def _constraint_rows(fn, alg, sz, q, v, K, sc, v_obj, obj=None, poses=None):
         obj = (sc["q_obj"], sc["rho"], ca.cos(psi), ca.sin(psi))
     q_obj, rho, cos_psi, sin_psi = obj
     J = fn["link_jacobians"](q, K)
-    bias = fn["link_bias_accelerations"](q, v, K)
+    bias = alg.zeros(3, nl) if at_rest else fn["link_bias_accelerations"](q, v, K)
     c, s_ = _link_rotations(q, nl)
     # eq. (10): the contact row uses the Jacobian J_* of the touching link (one-hot selection)
     J_k = alg.zeros(3, ns)
@@ -345,10 +346,24 @@ def contact_system(fn, alg: Algebra, sz: _Sizes) -> ca.Function:
     costs one small solve (``G_HH lam_H = -(b_H + G_HF lam_F)``, eq. 16): the runtime core
     (snakecg/core/forward.c) iterates the active set on them and evaluates nothing twice.
     """
+    return _contact_system(fn, alg, sz, at_rest=False)
+
+
+def contact_system_at_rest(fn, alg: Algebra, sz: _Sizes) -> ca.Function:
+    """:func:`contact_system` at rest (``v = 0``, ``v_obj = 0``; no inputs ``v``, ``v_obj``):
+    ``h_s`` (eq. 4) and ``Adot v`` (eq. 13) vanish, about a fifth of its operations at
+    ``n_a = 3``. The paper's analysis is at rest, so the runtime core calls this for every
+    sample whose velocities are zero."""
+    return _contact_system(fn, alg, sz, at_rest=True)
+
+
+def _contact_system(fn, alg, sz, *, at_rest: bool) -> ca.Function:
     ns = sz.n_coordinates
-    q, v = alg.sym("q", ns), alg.sym("v", ns)
+    q = alg.sym("q", ns)
+    v = alg.zeros(ns, 1) if at_rest else alg.sym("v", ns)
     tau = alg.sym("tau", sz.n_joints)
-    v_obj, f_obj = alg.sym("v_obj", 3), alg.sym("f_obj", 3)
+    v_obj = alg.zeros(3, 1) if at_rest else alg.sym("v_obj", 3)
+    f_obj = alg.sym("f_obj", 3)
     K = fn["K"]
     sc = _scene_inputs(alg, sz)
     contact_offset, object_distance = alg.sym("contact_offset", 1), alg.sym("object_distance", 1)
@@ -362,9 +377,10 @@ def contact_system(fn, alg: Algebra, sz: _Sizes) -> ca.Function:
     given, psi = 1 - placed, sc["q_obj"][2]
     obj = (given * sc["q_obj"] + placed * p_obj, given * sc["rho"] + placed * p_rho,
            given * ca.cos(psi) + placed * c_k, given * ca.sin(psi) + placed * s_k)
-    A, Adot_v, gap, s = _constraint_rows(fn, alg, sz, q, v, K, sc, v_obj, obj, poses)
+    A, Adot_v, gap, s = _constraint_rows(fn, alg, sz, q, v, K, sc, v_obj, obj, poses,
+                                         at_rest=at_rest)
     M_s = fn["mass_matrix"](q, K)
-    h_s = fn["bias_forces"](q, v, K)
+    h_s = alg.zeros(ns, 1) if at_rest else fn["bias_forces"](q, v, K)
     A_s, A_o = A[:, :ns], A[:, ns:]
     # eq. (12) without constraint forces, and M_s^-1 A_s^T, with one factorization
     M_factors, _ = alg.ldl(M_s)
@@ -374,15 +390,20 @@ def contact_system(fn, alg: Algebra, sz: _Sizes) -> ca.Function:
     Iinv_AoT = ca.mtimes(ca.diag(1 / I_obj), A_o.T)
     Gc = ca.mtimes(A_s, Minv_AsT) + ca.mtimes(A_o, Iinv_AoT)       # eq. (14)
     a_free = f_obj / I_obj
-    b = ca.mtimes(A_s, qdd_free) + ca.mtimes(A_o, a_free) + Adot_v  # eq. (13), lam = 0
+    b = ca.mtimes(A_s, qdd_free) + ca.mtimes(A_o, a_free)           # eq. (13), lam = 0
+    if not at_rest:
+        b = b + Adot_v
     inputs = {"q": q, "v": v, "tau": tau, "q_obj": sc["q_obj"], "v_obj": v_obj, "f_obj": f_obj,
               "K": K, **{k: sc[k] for k in ("contact_link", "side", "object_mass",
                                             "object_inertia", "rho", "wheel_offset")},
               "contact_offset": contact_offset, "object_distance": object_distance,
               "placed": placed}
+    if at_rest:
+        del inputs["v"], inputs["v_obj"]
     outputs = {"M": M_s, "delassus": Gc, "b": b, "qdd_free": qdd_free, "a_obj_free": a_free,
                "qdd_from_lam": Minv_AsT, "a_obj_from_lam": Iinv_AoT, "gap": gap, "s": s}
-    return _function(alg, "contact_system", inputs, outputs)
+    name = "contact_system_at_rest" if at_rest else "contact_system"
+    return _function(alg, name, inputs, outputs)
 
 
 def _at_rest_system(fn, alg, sz, q, K, sc):
@@ -390,7 +411,8 @@ def _at_rest_system(fn, alg, sz, q, K, sc):
     ``A = [A_s, A_o]`` (eq. 9), ``M_s``, ``M_s^-1 B`` and ``M_s^-1 A_s^T``, the object's
     inertia diagonal ``I_obj``, ``I_obj^-1 A_o^T`` and ``G_c = A I^-1 A^T`` (eq. 14)."""
     ns, na = sz.n_coordinates, sz.n_joints
-    A, _, _, _ = _constraint_rows(fn, alg, sz, q, alg.zeros(ns, 1), K, sc, alg.zeros(3, 1))
+    A, _, _, _ = _constraint_rows(fn, alg, sz, q, alg.zeros(ns, 1), K, sc, alg.zeros(3, 1),
+                                  at_rest=True)
     M_s = fn["mass_matrix"](q, K)
     A_s, A_o = A[:, :ns], A[:, ns:]
     B = _actuation(alg, sz)
@@ -698,7 +720,8 @@ def coupled_functions(link_functions: dict, n_joints: int, n_parameters: int, *,
     sz = _Sizes(n_joints)
     fn = {**link_functions, "K": alg.sym("K", n_parameters)}
     out = [constrained_dynamics(fn, alg, sz), interaction_maps(fn, alg, sz),
-           metric_forms(fn, alg, sz), place_object(fn, alg, sz), contact_system(fn, alg, sz)]
+           metric_forms(fn, alg, sz), place_object(fn, alg, sz), contact_system(fn, alg, sz),
+           contact_system_at_rest(fn, alg, sz)]
     if n_joints <= EXTREMES_MAX_JOINTS:
         # closed-form eigenproblems: scalar code whatever the algebra of the others
         sx = Algebra("sx", prefix)

@@ -140,8 +140,10 @@ def test_matrix_structured_c_is_strict_c99(tmp_path):
     assert rendered.manifest["algebra"]["composed"] == "mx"
     composed = [f for f in rendered.manifest["functions"] if f["algebra"] == "mx"]
     assert [f["name"] for f in composed] == ["constrained_dynamics", "interaction_maps",
-                                             "metric_forms", "place_object", "contact_system"]
-    for name in ("constrained_dynamics", "interaction_maps", "metric_forms", "contact_system"):
+                                             "metric_forms", "place_object", "contact_system",
+                                             "contact_system_at_rest"]
+    for name in ("constrained_dynamics", "interaction_maps", "metric_forms", "contact_system",
+                 "contact_system_at_rest"):
         src = tmp_path / f"{name}.c"
         src.write_text(rendered.files[f"c/{name}.c"])
         res = subprocess.run([cc, *STRICT, "-c", str(src), "-o", str(tmp_path / "x.o")],

@@ -313,6 +313,39 @@ def test_compiled_agrees_with_casadi_in_process(joints, rng, random_robot):
                                            err_msg=f"{name}.{oname} (n={n})")
 
 
+@pytest.mark.parametrize("joints", SOME_JOINTS)
+def test_contact_system_at_rest_is_contact_system_without_velocities(joints, rng,
+                                                                     random_robot):
+    """The at-rest variant equals contact_system with v = 0 and v_obj = 0 (placed and given
+    objects), and forward gives the same answer through either: at rest, and with velocities
+    of 1e-200 (which the core sends through the full function)."""
+    robot = random_robot(joints)
+    scene = snakecg.Scene(robot, scenario="wheels", kappa=float(rng.uniform(1, 200)),
+                          contact_link=int(rng.integers(1, robot.n_links + 1)))
+    model = snakecg.load(scene)
+    full, rest = (model.backend.signatures[k] for k in ("contact_system",
+                                                        "contact_system_at_rest"))
+    n = 8
+    args = dict(zip(full.in_names, _inputs_for(full, model, rng, n)))
+    args["v"], args["v_obj"] = np.zeros(model.n_coordinates), np.zeros(3)
+    args["placed"] = np.array([1.0])
+    for placed in (0.0, 1.0):
+        args["placed"] = np.array([placed])
+        a = model.backend("contact_system", n, [args[k] for k in full.in_names])
+        b = model.backend("contact_system_at_rest", n, [args[k] for k in rest.in_names])
+        assert rest.out_names == full.out_names
+        for oname, x, y in zip(full.out_names, a, b):
+            np.testing.assert_allclose(y, x, rtol=0, atol=1e-13 * max(1.0, np.abs(x).max()),
+                                       err_msg=f"{oname}, placed = {placed}")
+    Q = random_q(rng, robot, 16)
+    T = rng.normal(scale=0.3, size=(16, joints))
+    at_rest = model.forward(Q, T)
+    moving = model.forward(Q, T, v=np.full(model.n_coordinates, 1e-200))
+    for field in ("qdd", "a_obj", "lam", "w", "norm_qdd", "norm_a_obj", "norm_lambda", "sr"):
+        x, y = getattr(at_rest, field), getattr(moving, field)
+        np.testing.assert_allclose(y, x, rtol=1e-12, atol=1e-15, err_msg=field)
+
+
 @pytest.mark.parametrize("joints", (2,))
 def test_load_with_casadi_backend_matches_compiled(joints, rng, random_robot):
     robot = random_robot(joints)

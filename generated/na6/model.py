@@ -25,6 +25,7 @@ Functions (inputs -> outputs, in argument order, read from the CasADi functions)
 * ``metric_forms(q, K, contact_link, side, object_mass, object_inertia, q_obj, rho, wheel_offset, free, regularization) -> omega_tau, xi_tau, lambda_form_tau, input_metric, contact_from_tau, pivot_ratio``
 * ``place_object(q, K, contact_link, contact_offset, object_distance, side) -> q_obj, rho, contact_point``
 * ``contact_system(q, v, tau, q_obj, v_obj, f_obj, K, contact_link, side, object_mass, object_inertia, rho, wheel_offset, contact_offset, object_distance, placed) -> M, delassus, b, qdd_free, a_obj_free, qdd_from_lam, a_obj_from_lam, gap, s``
+* ``contact_system_at_rest(q, tau, q_obj, f_obj, K, contact_link, side, object_mass, object_inertia, rho, wheel_offset, contact_offset, object_distance, placed) -> M, delassus, b, qdd_free, a_obj_free, qdd_from_lam, a_obj_from_lam, gap, s``
 """
 
 import casadi as ca
@@ -1267,3 +1268,12 @@ def wheel_row_local():
 #   conditioning), the gap and the contact coordinate ``s``. With these, every active set
 #   costs one small solve (``G_HH lam_H = -(b_H + G_HF lam_F)``, eq. 16): the runtime core
 #   (snakecg/core/forward.c) iterates the active set on them and evaluates nothing twice.
+
+
+# contact_system_at_rest(q, tau, q_obj, f_obj, K, contact_link, side, object_mass, object_inertia, rho, wheel_offset, contact_offset, object_distance, placed)
+#   -> M, delassus, b, qdd_free, a_obj_free, qdd_from_lam, a_obj_from_lam, gap, s
+# built by snakecg_derive.coupled.contact_system_at_rest():
+#   :func:`contact_system` at rest (``v = 0``, ``v_obj = 0``; no inputs ``v``, ``v_obj``):
+#   ``h_s`` (eq. 4) and ``Adot v`` (eq. 13) vanish, about a fifth of its operations at
+#   ``n_a = 3``. The paper's analysis is at rest, so the runtime core calls this for every
+#   sample whose velocities are zero.

@@ -25,6 +25,8 @@ typedef int (*sc_work_fn)(sc_int *sz_arg, sc_int *sz_res, sc_int *sz_iw, sc_int 
 
 int SNAKECG_CS(const double **arg, double **res, sc_int *iw, double *w, int mem);
 int SNAKECG_CS_WORK(sc_int *sz_arg, sc_int *sz_res, sc_int *sz_iw, sc_int *sz_w);
+int SNAKECG_CR(const double **arg, double **res, sc_int *iw, double *w, int mem);
+int SNAKECG_CR_WORK(sc_int *sz_arg, sc_int *sz_res, sc_int *sz_iw, sc_int *sz_w);
 int SNAKECG_LJ(const double **arg, double **res, sc_int *iw, double *w, int mem);
 int SNAKECG_LJ_WORK(sc_int *sz_arg, sc_int *sz_res, sc_int *sz_iw, sc_int *sz_w);
 
@@ -163,38 +165,52 @@ typedef struct {
 
 /* `contact_system` at (q, v, tau, q_obj, v_obj, f_obj, rho) with the scene's constants of
  * `scene` (SCENE_* offsets); q_obj == NULL places the object at the scene's contact from q
- * (the generated function's input `placed` = 1; rho is then ignored too). Its status (0 on
- * success). */
+ * (the generated function's input `placed` = 1; rho is then ignored too). When v and v_obj
+ * are zero, the generated `contact_system_at_rest` (the same without the velocity terms).
+ * The work arrays must fit both (SC_CS_WORKS). Its status (0 on success). */
+#define SC_CS_WORKS SNAKECG_CS_WORK, SNAKECG_CR_WORK
+#define SC_SET_SYSTEM_ARGS(F)                                           \
+  do {                                                                   \
+    ws->arg[F##_IN_q] = q;                                               \
+    ws->arg[F##_IN_tau] = tau;                                           \
+    ws->arg[F##_IN_q_obj] = q_obj ? q_obj : zeros;                       \
+    ws->arg[F##_IN_f_obj] = f_obj;                                       \
+    ws->arg[F##_IN_K] = scene + SCENE_K;                                 \
+    ws->arg[F##_IN_contact_link] = scene + SCENE_contact_link;           \
+    ws->arg[F##_IN_side] = scene + SCENE_side;                           \
+    ws->arg[F##_IN_object_mass] = scene + SCENE_object_mass;             \
+    ws->arg[F##_IN_object_inertia] = scene + SCENE_object_inertia;       \
+    ws->arg[F##_IN_rho] = q_obj ? rho : zeros;                           \
+    ws->arg[F##_IN_wheel_offset] = scene + SCENE_wheel_offset;           \
+    ws->arg[F##_IN_contact_offset] = scene + SCENE_contact_offset;       \
+    ws->arg[F##_IN_object_distance] = scene + SCENE_object_distance;     \
+    ws->arg[F##_IN_placed] = q_obj ? &zero : &one;                       \
+    ws->res[F##_OUT_M] = out->M;                                         \
+    ws->res[F##_OUT_delassus] = out->G;                                  \
+    ws->res[F##_OUT_b] = out->b;                                         \
+    ws->res[F##_OUT_qdd_free] = out->qdd_free;                           \
+    ws->res[F##_OUT_a_obj_free] = out->a_free;                           \
+    ws->res[F##_OUT_qdd_from_lam] = out->Kq;                             \
+    ws->res[F##_OUT_a_obj_from_lam] = out->Ka;                           \
+    ws->res[F##_OUT_gap] = &out->gap;                                    \
+    ws->res[F##_OUT_s] = &out->s;                                        \
+  } while (0)
+
 static int sc_contact_system(sc_work_t *ws, const double *scene, const double *q,
                              const double *v, const double *tau, const double *q_obj,
                              const double *v_obj, const double *f_obj, const double *rho,
                              sc_system *out) {
   static const double zeros[3] = {0.0, 0.0, 0.0}, one = 1.0, zero = 0.0;
-  ws->arg[CS_IN_q] = q;
+  int k, rest = 1;
+  for (k = 0; k < SNAKECG_NS; ++k) rest &= v[k] == 0.0;
+  for (k = 0; k < 3; ++k) rest &= v_obj[k] == 0.0;
+  if (rest) {
+    SC_SET_SYSTEM_ARGS(CR);
+    return SNAKECG_CR(ws->arg, ws->res, ws->iw, ws->w, 0);
+  }
+  SC_SET_SYSTEM_ARGS(CS);
   ws->arg[CS_IN_v] = v;
-  ws->arg[CS_IN_tau] = tau;
-  ws->arg[CS_IN_q_obj] = q_obj ? q_obj : zeros;
   ws->arg[CS_IN_v_obj] = v_obj;
-  ws->arg[CS_IN_f_obj] = f_obj;
-  ws->arg[CS_IN_K] = scene + SCENE_K;
-  ws->arg[CS_IN_contact_link] = scene + SCENE_contact_link;
-  ws->arg[CS_IN_side] = scene + SCENE_side;
-  ws->arg[CS_IN_object_mass] = scene + SCENE_object_mass;
-  ws->arg[CS_IN_object_inertia] = scene + SCENE_object_inertia;
-  ws->arg[CS_IN_rho] = q_obj ? rho : zeros;
-  ws->arg[CS_IN_wheel_offset] = scene + SCENE_wheel_offset;
-  ws->arg[CS_IN_contact_offset] = scene + SCENE_contact_offset;
-  ws->arg[CS_IN_object_distance] = scene + SCENE_object_distance;
-  ws->arg[CS_IN_placed] = q_obj ? &zero : &one;
-  ws->res[CS_OUT_M] = out->M;
-  ws->res[CS_OUT_delassus] = out->G;
-  ws->res[CS_OUT_b] = out->b;
-  ws->res[CS_OUT_qdd_free] = out->qdd_free;
-  ws->res[CS_OUT_a_obj_free] = out->a_free;
-  ws->res[CS_OUT_qdd_from_lam] = out->Kq;
-  ws->res[CS_OUT_a_obj_from_lam] = out->Ka;
-  ws->res[CS_OUT_gap] = &out->gap;
-  ws->res[CS_OUT_s] = &out->s;
   return SNAKECG_CS(ws->arg, ws->res, ws->iw, ws->w, 0);
 }
 

@@ -83,8 +83,8 @@ typedef struct {
 } sc_ctx;
 
 static int ctx_alloc(sc_ctx *c) {
-  const sc_work_fn fns[2] = {SNAKECG_CS_WORK, SNAKECG_LJ_WORK};
-  return sc_work_alloc(&c->ws, fns, 2);
+  const sc_work_fn fns[3] = {SC_CS_WORKS, SNAKECG_LJ_WORK};
+  return sc_work_alloc(&c->ws, fns, 3);
 }
 
 /* The right-hand side in the mode at y (Dynamics.rates); keeps lam, A V, gap and s in c.

@@ -28,6 +28,12 @@ FUNCTIONS = {
         "object_inertia", "rho", "wheel_offset", "contact_offset", "object_distance", "placed"), (
         "M", "delassus", "b", "qdd_free", "a_obj_free", "qdd_from_lam", "a_obj_from_lam", "gap",
         "s")),
+    # the same at rest (v = 0, v_obj = 0), for every sample whose velocities are zero
+    "contact_system_at_rest": ("CR", (
+        "q", "tau", "q_obj", "f_obj", "K", "contact_link", "side", "object_mass",
+        "object_inertia", "rho", "wheel_offset", "contact_offset", "object_distance", "placed"), (
+        "M", "delassus", "b", "qdd_free", "a_obj_free", "qdd_from_lam", "a_obj_from_lam", "gap",
+        "s")),
     # integrate.c: the rows' velocities A V of the simulation's right-hand side
     "link_jacobians": ("LJ", ("q", "K"), ("J",)),
 }
