@@ -14,6 +14,14 @@
 
 typedef long long int sc_int;
 
+/* Before a loop over one of the model's sizes (known when compiling): unroll it (GCC; other
+ * compilers go on without). */
+#if defined(__GNUC__) && !defined(__clang__)
+#define SC_UNROLL _Pragma("GCC unroll 16")
+#else
+#define SC_UNROLL
+#endif
+
 /* sizes: coordinates n_s, constraint rows n_c, a body state (q, q_obj), the integrated state
  * (positions, velocities and three work integrals) */
 #define NS SNAKECG_NS
@@ -285,16 +293,20 @@ static double sc_held_forces(const signed char *state, const double *G, const do
     y[i] = -t;
     if (extra) y[i] -= extra[held[i]];
   }
+  SC_UNROLL
   for (j = 0; j < m; ++j) { /* L D L^T of G_HH, no pivoting */
-    double s = G[held[j] + nc * held[j]], r;
-    for (k = 0; k < j; ++k) s -= L[j + nc * k] * L[j + nc * k] * d[k];
+    double s = G[held[j] + nc * held[j]], r, ld[SNAKECG_NC];
+    for (k = 0; k < j; ++k) { /* ld = row j of L D */
+      ld[k] = L[j + nc * k] * d[k];
+      s -= L[j + nc * k] * ld[k];
+    }
     d[j] = s;
     dinv[j] = 1.0 / s; /* one division per pivot */
     r = s / G[held[j] + nc * held[j]];
     if (!(r >= ratio)) ratio = r; /* NaN propagates */
     for (i = j + 1; i < m; ++i) {
       double t = G[held[i] + nc * held[j]];
-      for (k = 0; k < j; ++k) t -= L[i + nc * k] * L[j + nc * k] * d[k];
+      for (k = 0; k < j; ++k) t -= L[i + nc * k] * ld[k];
       L[i + nc * j] = t * dinv[j];
     }
   }
