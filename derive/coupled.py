@@ -91,24 +91,26 @@ def _contact_rotation(c, s, contact_link):
     return (ca.dot(contact_link, ca.vertcat(*c)), ca.dot(contact_link, ca.vertcat(*s)))
 
 
-def _constraint_rows(fn, alg, sz, q, v, K, sc, v_obj, obj=None, poses=None, at_rest=False):
+def _constraint_rows(fn, alg, sz, q, v, K, sc, v_obj, obj=None, poses=None, rotations=None,
+                     at_rest=False):
     """Constraint matrix ``A = [-J_s, G^T]`` (eq. 9), ``Adot v`` (eq. 13), gap and ``s``.
 
     ``obj``: the object's ``(q_obj, rho, cos psi, sin psi)``; by default ``sc["q_obj"]``,
-    ``sc["rho"]`` and the cosine and sine of ``q_obj[2]``. ``poses``: ``link_poses`` at ``q``
-    when the caller has it already. ``at_rest``: ``v`` and ``v_obj`` are zero (the links'
-    bias accelerations are not evaluated; ``Adot v`` is zero)."""
+    ``sc["rho"]`` and the cosine and sine of ``q_obj[2]``. ``poses`` (``link_poses`` at
+    ``q``) and ``rotations`` (:func:`_link_rotations`) when the caller has them already.
+    ``at_rest``: ``v`` and ``v_obj`` are zero (the links' bias accelerations are not
+    evaluated; ``Adot v`` is zero)."""
     nl, ns = sz.n_links, sz.n_coordinates
     contact_link = sc["contact_link"]
     if poses is None:
         poses = fn["link_poses"](q, K)
+    c, s_ = rotations if rotations is not None else _link_rotations(q, nl)
     if obj is None:
         psi = sc["q_obj"][2]
         obj = (sc["q_obj"], sc["rho"], ca.cos(psi), ca.sin(psi))
     q_obj, rho, cos_psi, sin_psi = obj
     J = fn["link_jacobians"](q, K)
     bias = alg.zeros(3, nl) if at_rest else fn["link_bias_accelerations"](q, v, K)
-    c, s_ = _link_rotations(q, nl)
     # eq. (10): the contact row uses the Jacobian J_* of the touching link (one-hot selection)
     J_k = alg.zeros(3, ns)
     for i in range(nl):
@@ -244,15 +246,15 @@ def _contact_system(fn, alg, sz, *, at_rest: bool) -> ca.Function:
     placed = alg.sym("placed", 1)
     # the object given (placed = 0) or placed at the scene's contact from q (placed = 1, as
     # place_object; its orientation is then the contact link's, a product of rotations)
-    poses = fn["link_poses"](q, K)
+    poses, rotations = fn["link_poses"](q, K), _link_rotations(q, sz.n_links)
     p_obj, p_rho, _, (c_k, s_k) = _placement(fn, alg, sz, q, K, sc["contact_link"],
                                              contact_offset, object_distance, sc["side"],
-                                             poses)
+                                             poses, rotations)
     given, psi = 1 - placed, sc["q_obj"][2]
     obj = (given * sc["q_obj"] + placed * p_obj, given * sc["rho"] + placed * p_rho,
            given * ca.cos(psi) + placed * c_k, given * ca.sin(psi) + placed * s_k)
     A, Adot_v, gap, s = _constraint_rows(fn, alg, sz, q, v, K, sc, v_obj, obj, poses,
-                                         at_rest=at_rest)
+                                         rotations, at_rest=at_rest)
     M_s = fn["mass_matrix"](q, K)
     h_s = alg.zeros(ns, 1) if at_rest else fn["bias_forces"](q, v, K)
     A_s, A_o = A[:, :ns], A[:, ns:]
@@ -546,16 +548,18 @@ def metric_extremes(fn, alg: Algebra, sz: _Sizes) -> ca.Function:
 
 
 def _placement(fn, alg, sz, q, K, contact_link, contact_offset, object_distance, side,
-               poses=None):
+               poses=None, rotations=None):
     """The object placed at the contact (see :func:`place_object`): ``q_obj``, ``rho``, the
     contact point ``P`` and the contact link's rotation ``(cos phi_k, sin phi_k)``, which is
-    the object's orientation."""
+    the object's orientation. ``poses`` and ``rotations`` as in :func:`_constraint_rows`."""
     nl = sz.n_links
     if poses is None:
         poses = fn["link_poses"](q, K)
+    if rotations is None:
+        rotations = _link_rotations(q, nl)
     pose = ca.mtimes(poses, contact_link)
     com_k = ca.dot(K[3 * nl: 4 * nl], contact_link)
-    c_k, s_k = _contact_rotation(*_link_rotations(q, nl), contact_link)
+    c_k, s_k = _contact_rotation(*rotations, contact_link)
     e = ca.vertcat(c_k, s_k)
     n = side * ca.vertcat(-s_k, c_k)
     P = pose[:2] + (contact_offset - com_k) * e
