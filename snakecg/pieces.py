@@ -34,12 +34,13 @@ def primitives(model, qa):
     Q0 = np.array(raw["qdd_from_tau"])
     A0 = np.array(raw["a_obj_from_tau"])
     N = np.array(raw["input_metric"])
-    # qdd and a_obj per unit row force (eq. 18), every row at once (generated contact_system)
-    ns, zero = model.n_coordinates, np.zeros(3)
+    # qdd and a_obj per unit row force (eq. 18), every row at once (generated
+    # contact_system_at_rest, the object placed from q)
+    zero = np.zeros(3)
     inputs = model.scene_inputs
-    cs = kernels.call(model.backend, "contact_system", n, q=qa, v=np.zeros(ns),
-                      tau=np.zeros(model.n_joints), q_obj=zero, v_obj=zero, f_obj=zero,
-                      rho=np.zeros(2), placed=np.ones(1),  # the object placed from q
+    cs = kernels.call(model.backend, "contact_system_at_rest", n, q=qa,
+                      tau=np.zeros(model.n_joints), q_obj=zero, f_obj=zero, rho=np.zeros(2),
+                      placed=np.ones(1),
                       **{k: inputs[k] for k in ("K", "contact_link", "side", "object_mass",
                                                 "object_inertia", "wheel_offset",
                                                 "contact_offset", "object_distance")})
