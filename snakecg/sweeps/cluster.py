@@ -10,8 +10,8 @@ import time
 
 from ..errors import InputError, SnakecgError
 
-__all__ = ["connect", "ProgressLines", "start_bar", "progress_mode", "is_local",
-           "fills_machine"]
+__all__ = ["connect", "ProgressLines", "start_bar", "end_bar", "progress_mode", "is_local",
+           "concurrency", "fills_machine"]
 
 #: Seconds to wait for an existing scheduler before giving up.
 CONNECT_TIMEOUT = 10.0
@@ -111,10 +111,18 @@ def is_local(client) -> bool:
     return isinstance(getattr(client, "cluster", None), LocalCluster)
 
 
+def concurrency(client) -> int:
+    """Tasks ``client``'s cluster runs at once (its workers' threads), at least 1."""
+    try:
+        return max(1, sum(client.nthreads().values()))
+    except Exception:  # noqa: BLE001 - a cluster that does not say: one at a time
+        return 1
+
+
 def fills_machine(client) -> bool:
     """Whether ``client``'s workers have at least one thread per core of this machine (then
     this process has no core of its own to write the store on)."""
-    return sum(client.nthreads().values()) >= (os.cpu_count() or 1)
+    return concurrency(client) >= (os.cpu_count() or 1)
 
 
 #: Dask settings of the local clusters started here: no statistical profiler in the workers

@@ -19,6 +19,7 @@ from ..robot import Scene
 from . import store as _store
 from .cluster import (
     ProgressLines,
+    concurrency,
     connect,
     dashboard_of,
     end_bar,
@@ -220,7 +221,7 @@ def sweep(scene, *, grid=None, samples=None, seed=None, store, client=None, chun
             if chunk is None:  # the default, spread over the workers there are
                 plan = dataclasses.replace(plan, chunk=spread_chunk(
                     default_chunk(scene.scenario, plan.joints, plan.size), plan.size,
-                    _concurrency(c)))
+                    concurrency(c)))
                 todo = list(range(plan.n_chunks))
             root = _store.create(path, _meta(scene, plan, feasible, clearance), plan.size,
                                  plan.chunk, plan.joints)
@@ -243,14 +244,6 @@ def _stored_chunk(path: Path, plan: Plan) -> Plan:
     if isinstance(stored, int) and not isinstance(stored, bool) and stored >= 1:
         return dataclasses.replace(plan, chunk=stored)
     return plan
-
-
-def _concurrency(client) -> int:
-    """Tasks the cluster runs at once (its workers' threads), at least 1."""
-    try:
-        return max(1, sum(client.nthreads().values()))
-    except Exception:  # noqa: BLE001 - a cluster that does not say: no spreading
-        return 1
 
 
 def _mark(root, completed: int, total: int) -> None:
