@@ -175,7 +175,9 @@ typedef struct {
  * `scene` (SCENE_* offsets); q_obj == NULL places the object at the scene's contact from q
  * (the generated function's input `placed` = 1; rho is then ignored too). When v and v_obj
  * are zero, the generated `contact_system_at_rest` (the same without the velocity terms).
- * The work arrays must fit both (SC_CS_WORKS). Its status (0 on success). */
+ * The work arrays must fit both (SC_CS_WORKS). Its status (0 on success).
+ * SC_SET_SYSTEM_ARGS(F) points the arguments and results of function F (CS or CR: the
+ * indices differ) at sc_contact_system's own parameters and locals, by their names. */
 #define SC_CS_WORKS SNAKECG_CS_WORK, SNAKECG_CR_WORK
 #define SC_SET_SYSTEM_ARGS(F)                                           \
   do {                                                                   \
