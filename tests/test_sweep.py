@@ -23,6 +23,7 @@ import numpy as np
 import pytest
 
 import distributed  # the sweep extra's dependencies are in the test extra too
+import xxhash
 import zarr
 
 import snakecg
@@ -126,19 +127,40 @@ def test_samples_are_seeded_and_independent_of_the_chunking(client, tmp_path):
     assert not np.array_equal(read(tmp_path / "c.zarr")["q"], a["q"])
 
 
+def test_a_chunk_larger_than_a_block_equals_the_whole_batch():
+    """A chunk is evaluated in blocks of BLOCK configurations (cache-sized): the arrays are
+    bit for bit those of one batch evaluation of the whole chunk (the last block partial)."""
+    from snakecg.geometry import feasibility
+    from snakecg.sweeps.work import BLOCK, evaluate
+
+    sc = scene("frictionless")
+    rng = np.random.default_rng(3)
+    n = 2 * BLOCK + 123
+    Q = np.hstack([np.zeros((n, 3)), rng.uniform(-2.3, 2.3, (n, 2))])
+    got = evaluate(snakecg.load(sc), Q)
+    ref = reference(sc, Q)
+    ref["feasible"] = feasibility(snakecg.load(sc), Q).feasible
+    assert set(got) == set(ref)
+    for k, v in ref.items():
+        assert got[k].shape == np.shape(v) and got[k].flags.c_contiguous
+        np.testing.assert_array_equal(got[k], v, err_msg=k)
+
+
 # ------------------------------------------------------------------------------------------
 # The default chunk: about CHUNK_SECONDS of single-core work at the documented per-configuration
-# costs, rounded to the nearest 2^k or 3 * 2^k, at most 32 MiB of results; expected values
+# costs, rounded to the nearest 2^k or 3 * 2^k, at most 16 MiB of results; expected values
 # worked out by hand from the documented table (e.g. 3-joint wheels: 1.5 s / 115 us = 13,043
-# -> 12,288; 4-joint frictionless: 1.5 s / 16 us = 93,750, cap 32 MiB / 369 B = 90,933 ->
-# 65,536).
+# -> 12,288; 4-joint frictionless: 1.5 s / 16 us = 93,750, cap 16 MiB / 369 B = 45,467 ->
+# 32,768; 1-joint wheels: 1.5 s / 7.2 us = 208,333, cap 16 MiB / 153 B = 109,655 -> 98,304).
 WHEELS_COST_US = {1: 7.2, 2: 20, 3: 115, 4: 960, 5: 2700, 6: 3700}
 
 
 @pytest.mark.parametrize("scenario,expected", [
-    ("wheels", {1: 196608, 2: 65536, 3: 12288, 4: 1536, 5: 512, 6: 384, 8: 128, 10: 48}),
-    ("frictionless", {1: 196608, 2: 131072, 3: 98304, 4: 65536, 5: 65536, 6: 49152}),
-    ("ideal_wheels", {1: 196608, 2: 131072, 3: 98304, 4: 65536, 5: 65536, 6: 49152})])
+    ("wheels", {1: 98304, 2: 65536, 3: 12288, 4: 1536, 5: 512, 6: 384, 8: 128, 10: 48}),
+    ("frictionless", {1: 98304, 2: 65536, 3: 49152, 4: 32768, 5: 32768, 6: 24576,
+                      8: 16384, 10: 8192}),
+    ("ideal_wheels", {1: 98304, 2: 65536, 3: 49152, 4: 32768, 5: 32768, 6: 24576,
+                      8: 16384, 10: 8192})])
 def test_default_chunk_rule(scenario, expected):
     from snakecg.sweeps import default_chunk
     from snakecg.sweeps.plan import MAX_CHUNK_BYTES
@@ -147,9 +169,10 @@ def test_default_chunk_rule(scenario, expected):
     for n in range(1, 51):
         c = default_chunk(scenario, n)
         assert c >= 1 and c * (8 * (9 * n + 10) + 1) <= MAX_CHUNK_BYTES, n
-    if scenario == "wheels":  # 1 to 2 s of single-core work at the measured costs
-        for n, us in WHEELS_COST_US.items():
-            assert 1.0 <= default_chunk(scenario, n) * us * 1e-6 <= 2.0, n
+    if scenario == "wheels":  # 1 to 2 s of single-core work at the measured costs, where
+        for n, us in WHEELS_COST_US.items():  # the byte cap does not bind (1 joint)
+            seconds = default_chunk(scenario, n) * us * 1e-6
+            assert 1.0 <= seconds <= 2.0 if n > 1 else seconds < 1.0, n
     # at most 65,536 chunks: the 28^6 grid of 6-joint wheels in chunks of
     # ceil(481,890,304 / 65,536) = 7,354
     assert default_chunk("wheels", 6, 28 ** 6) == 7354
@@ -359,12 +382,83 @@ def test_workers_write_the_data_and_the_client_only_the_digests(client, tmp_path
             start, stop = 16 * i, min(16 * i + 16, 784)
             assert int(root["chunk_digest"][i]) == store_mod.digest(
                 {k: uninterrupted[k][start:stop] for k in store_mod.array_names()})
-            # and the documented digest: BLAKE2b-64 of the arrays' bytes in order, low bit set
-            h = hashlib.blake2b(digest_size=8)
-            for k in store_mod.array_names():
-                part = uninterrupted[k][start:stop]
-                h.update((part.astype(np.uint8) if k == "feasible" else part).tobytes())
-            assert int(root["chunk_digest"][i]) == int.from_bytes(h.digest(), "little") | 1
+            # and the documented digest: XXH3-64 of the arrays' bytes in order, low bit set
+            assert int(root["chunk_digest"][i]) == _documented_digest(
+                uninterrupted, start, stop, xxhash.xxh3_64())
+
+
+def _documented_digest(arrays, start, stop, h) -> int:
+    """The digest docs/sweep.md defines, from the arrays' bytes (copied, in the documented
+    order) and the hash object ``h``."""
+    for k in ("q", "com_radius", "com_angle",
+              *(f"{p}{m}" for m in METRICS
+                for p in ("max_", "tau_max_", "min_kept_", "tau_min_kept_")), "feasible"):
+        part = arrays[k][start:stop]
+        h.update((part.astype(np.uint8) if k == "feasible" else part).tobytes())
+    return int.from_bytes(h.digest(), "little") | 1
+
+
+def test_chunks_written_as_raw_bytes_are_zarrs_own_encoding(tmp_path):
+    """A whole chunk goes to the store as its raw bytes, the last partial one through Zarr:
+    every chunk file is byte for byte the file Zarr itself writes for the same values, and
+    reads back equal (2-D float, 1-D float with NaN, bool)."""
+    from snakecg.sweeps import store as store_mod
+
+    rng = np.random.default_rng(5)
+    n, chunk, joints = 37, 16, 3
+    arrays = {k: rng.normal(size=(n, joints)) if k == "q" or k.startswith("tau_")
+              else rng.normal(size=n) for k in store_mod.array_names()}
+    arrays["max_sr"][[3, 20]] = np.nan
+    arrays["feasible"] = rng.random(n) < 0.5
+    ours = store_mod.create(tmp_path / "ours.zarr", {"format": store_mod.FORMAT}, n, chunk,
+                            joints)
+    opened = store_mod.handles(ours)
+    assert all(store_mod._raw_bytes(opened[k]) for k in store_mod.array_names())
+    theirs = store_mod.handles(store_mod.create(tmp_path / "theirs.zarr",
+                                                {"format": store_mod.FORMAT}, n, chunk, joints))
+    for i, (start, stop) in enumerate([(0, 16), (16, 32), (32, 37)]):
+        part = {k: v[start:stop] for k, v in arrays.items()}
+        assert store_mod.write_data(opened, start, stop, part) == store_mod.digest(part)
+        for k in store_mod.array_names():
+            theirs[k][start:stop] = part[k]
+    for k in store_mod.array_names():
+        files = sorted(p.relative_to(tmp_path / "ours.zarr" / k)
+                       for p in (tmp_path / "ours.zarr" / k).rglob("*") if p.is_file())
+        assert len(files) == 4, files  # zarr.json and three chunks
+        for f in files:
+            assert (tmp_path / "ours.zarr" / k / f).read_bytes() == \
+                (tmp_path / "theirs.zarr" / k / f).read_bytes(), (k, f)
+        np.testing.assert_array_equal(ours[k][:], arrays[k], err_msg=k)
+
+
+def test_a_format_1_store_resumes_with_its_blake2b_digests(client, tmp_path, uninterrupted):
+    """A store of the earlier format (BLAKE2b-64 digests) is verified and resumed with its own
+    digest: a chunk whose data no longer matches and one without a digest are computed
+    again, the others kept; the new digests are BLAKE2b's; the reductions read it."""
+    from snakecg.sweeps import summary
+
+    store = tmp_path / "old.zarr"
+    snakecg.sweep(scene("wheels"), store=store, client=client, progress=False, **WHEELS_GRID)
+    root = zarr.open_group(str(store), mode="r+")
+    meta = dict(root.attrs["snakecg_sweep"])
+    assert meta["format"] == "snakecg.sweep/2"
+    # made by an earlier version: another format and another identity (the workers keep
+    # the stores they wrote open, by identity)
+    root.attrs.update({"snakecg_sweep": {**meta, "format": "snakecg.sweep/1"},
+                       "store_id": "made-by-an-earlier-version"})
+    old = [_documented_digest(uninterrupted, 16 * i, min(16 * i + 16, 784),
+                              hashlib.blake2b(digest_size=8)) for i in range(49)]
+    root["chunk_digest"][:] = np.array(old, dtype=np.uint64)
+    root["chunk_digest"][5] = 0
+    root["max_sr"][16 * 9] = 1.0  # chunk 9 damaged
+    res = snakecg.sweep(scene("wheels"), store=store, client=client, progress=False,
+                        **WHEELS_GRID)
+    assert (res.computed_chunks, res.reused_chunks) == (2, 47)
+    assert_identical(read(store), uninterrupted)
+    root = zarr.open_group(str(store), mode="r")
+    assert root.attrs["snakecg_sweep"]["format"] == "snakecg.sweep/1"
+    np.testing.assert_array_equal(root["chunk_digest"][:], np.array(old, dtype=np.uint64))
+    assert summary(store)["summarized_configurations"] == 784
 
 
 def test_data_written_without_its_digest_is_computed_again(client, tmp_path, uninterrupted):

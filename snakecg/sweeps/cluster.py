@@ -21,7 +21,7 @@ def _distributed():
     try:
         import distributed
     except ModuleNotFoundError:
-        raise InputError("sweeps need the sweep extra (Dask and Zarr): "
+        raise InputError("sweeps need the sweep extra (Dask, Zarr and xxhash): "
                          "pip install 'snakecg[sweep]'") from None
     return distributed
 
@@ -250,6 +250,11 @@ class ProgressLines:
         self.t0 = time.perf_counter()
         self.start_done = already
         self.next_tenth = self.done * 10 // max(self.total, 1) + 1
+
+    def due(self) -> bool:
+        """Whether the next chunk's :meth:`update` prints a line (the caller records the
+        chunks first, so that a line counts only chunks recorded in the store)."""
+        return (self.done + 1) * 10 // max(self.total, 1) >= self.next_tenth
 
     def update(self, configurations_done: int) -> None:
         self.done += 1

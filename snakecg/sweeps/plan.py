@@ -36,8 +36,11 @@ PAPER_STEP_DEG = 10.0
 #: long enough that a chunk's scheduling and Zarr write are a few percent of it, short
 #: enough that the last chunks of a sweep leave little idle time.
 CHUNK_SECONDS = 1.5
-#: ... and holds at most this many bytes of results (every array of the store).
-MAX_CHUNK_BYTES = 32 * 2**20
+#: ... and holds at most this many bytes of results (every array of the store): the last
+#: chunk's transfer and write end the sweep after its computing is done, and the data path
+#: costs about 1-3 ms per MB (16 MiB: 49,152 configurations of 3 joints, 0.2 s of
+#: frictionless work).
+MAX_CHUNK_BYTES = 16 * 2**20
 #: A sweep of more configurations than ``MAX_CHUNKS`` default chunks gets larger chunks, so
 #: that it has at most this many (Dask tasks, and Zarr chunk files per array).
 MAX_CHUNKS = 65536
@@ -95,9 +98,10 @@ def default_chunk(scenario: str, n_joints: int, configurations: int | None = Non
     joints: :data:`CHUNK_SECONDS` of single-core work at the cost of
     :func:`configuration_seconds`, rounded to the nearest 2^k or 3 * 2^k, and at most
     :data:`MAX_CHUNK_BYTES` of results (then the largest such number below that). Bounded
-    wheels: 196,608 configurations for 1 joint, 65,536 for 2, 12,288 for 3, 1,536 for 4,
-    512 for 5, 384 for 6, 128 for 8; the other two scenarios 196,608 for 1 joint down to
-    65,536 for 4 and 5 (the byte cap binds up to 4 joints), 49,152 for 6. With
+    wheels: 98,304 configurations for 1 joint, 65,536 for 2, 12,288 for 3, 1,536 for 4,
+    512 for 5, 384 for 6, 128 for 8; the other two scenarios 98,304 for 1 joint, 65,536 for
+    2, 49,152 for 3, 32,768 for 4 and 5, 24,576 for 6, 16,384 for 8 (the byte cap binds up
+    to 7 joints), 8,192 for 10. With
     ``configurations`` (the sweep's size), raised to ``ceil(configurations / MAX_CHUNKS)`` if
     that is larger (at most :data:`MAX_CHUNKS` chunks). Not capped at the sweep's size (a
     sweep smaller than a chunk is one chunk)."""

@@ -36,8 +36,11 @@ __all__ = ["sweep", "SweepResult", "LIMIT"]
 #: Sweeps of more configurations than this are refused unless the limit is lifted
 #: (``limit=None``, or ``--force`` on the command line).
 LIMIT = 10_000_000
-#: Seconds between updates of the store's ``completed_chunks`` attribute during a sweep
-#: (a rewrite of the group's metadata; the digests, not this count, say what is complete).
+#: Seconds between writes of the digests of the chunks completed meanwhile, and updates of
+#: the store's ``completed_chunks`` attribute, during a sweep (a chunk's digest is the record
+#: that it is complete: one write of the digest array costs as much as the bookkeeping of a
+#: chunk in the calling process, so it is written for many chunks at once; a sweep killed
+#: in between computes at most this interval's chunks again on resume).
 MARK_INTERVAL = 1.0
 
 
@@ -63,14 +66,15 @@ class SweepResult:
         return dataclasses.asdict(self)
 
 
-def _meta(scene: Scene, plan: Plan, feasible: bool, clearance: float) -> dict:
+def _meta(scene: Scene, plan: Plan, feasible: bool, clearance: float,
+          fmt: str = _store.FORMAT) -> dict:
     from .. import __version__
 
     robot = dataclasses.asdict(scene.robot)
     fields = {f.name: getattr(scene, f.name) for f in dataclasses.fields(scene)
               if f.name != "robot"}
     meta = {
-        "format": _store.FORMAT, "version": __version__,
+        "format": fmt, "version": __version__,
         "robot": robot, "scene": fields,
         "configurations": plan.describe(), "n_configurations": plan.size,
         "chunk": plan.chunk, "n_chunks": plan.n_chunks,
@@ -142,7 +146,7 @@ def sweep(scene, *, grid=None, samples=None, seed=None, store, client=None, chun
       processes (default one per core) started and shut down by this call.
     * ``chunk``: configurations per chunk (one Dask task, one Zarr chunk). Default, for a
       new store: :func:`~snakecg.sweeps.plan.default_chunk` of the scenario and joint count
-      (about 1.5 s of single-core work, at most 32 MiB of results), cut so that each worker
+      (about 1.5 s of single-core work, at most 16 MiB of results), cut so that each worker
       gets at least 4 chunks and the chunk count is a multiple of the workers, as far as
       chunks stay at least a quarter of that (:func:`~snakecg.sweeps.plan.spread_chunk`);
       for an existing store: the chunk size it was made with.
@@ -202,9 +206,9 @@ def sweep(scene, *, grid=None, samples=None, seed=None, store, client=None, chun
     state = _store.check_target(path)
     root, done = None, np.zeros(plan.n_chunks, dtype=bool)
     if state == "existing":
-        if chunk is None:  # resume with the store's own chunk size (whatever made it)
-            plan = _stored_chunk(path, plan)
-        root = _store.open_existing(path, _meta(scene, plan, feasible, clearance))
+        # resume with the store's own format, and chunk size unless one is given
+        plan, fmt = _stored(path, plan, keep_chunk=chunk is None)
+        root = _store.open_existing(path, _meta(scene, plan, feasible, clearance, fmt))
         done = _store.completed(root, plan, verify=verify)
     todo = [int(i) for i in np.flatnonzero(~done)]
     reused = plan.n_chunks - len(todo)
@@ -236,14 +240,17 @@ def sweep(scene, *, grid=None, samples=None, seed=None, store, client=None, chun
                        time.perf_counter() - t0, dashboard, feasible, clearance)
 
 
-def _stored_chunk(path: Path, plan: Plan) -> Plan:
-    """``plan`` with the chunk size recorded in the store at ``path`` (a store made with an
-    explicit chunk, or with the default spread over another number of workers, resumes
-    without ``chunk``); unchanged if the store records none (the comparison refuses it)."""
-    stored = _store.open_existing(path, mode="r").attrs["snakecg_sweep"].get("chunk")
-    if isinstance(stored, int) and not isinstance(stored, bool) and stored >= 1:
-        return dataclasses.replace(plan, chunk=stored)
-    return plan
+def _stored(path: Path, plan: Plan, keep_chunk: bool) -> tuple[Plan, str]:
+    """The store's format (an older one resumes with the digests it has) and, with
+    ``keep_chunk``, ``plan`` with the chunk size recorded in the store at ``path`` (a store
+    made with an explicit chunk, or with the default spread over another number of workers,
+    resumes without ``chunk``); unchanged if the store records none (the comparison refuses
+    it)."""
+    stored = _store.open_existing(path, mode="r").attrs["snakecg_sweep"]
+    n = stored.get("chunk")
+    if keep_chunk and isinstance(n, int) and not isinstance(n, bool) and n >= 1:
+        plan = dataclasses.replace(plan, chunk=n)
+    return plan, stored["format"]
 
 
 def _mark(root, completed: int, total: int) -> None:
@@ -274,6 +281,8 @@ def _compute(client, scene, plan, root, todo, reused, mode, clearance, target) -
     next_mark = time.monotonic() + MARK_INTERVAL
     # this process writes the digests, and the data only when the workers do not
     opened = _store.handles(root) if target is None else {"chunk_digest": root["chunk_digest"]}
+    fmt = _store.format_of(root)
+    digests: dict[int, int] = {}  # completed chunks whose digests are not written yet
     try:
         for fut in as_completed(futures):
             i = index[fut.key]
@@ -289,17 +298,19 @@ def _compute(client, scene, plan, root, todo, reused, mode, clearance, target) -
                                    f"{' '.join(str(exc).split())[:300]}") from None
             start, stop = plan.chunk_range(i)
             if target is None:
-                _store.write_chunk(root, i, start, stop, result, opened)
+                digests[i] = _store.write_data(opened, start, stop, result, fmt)
             else:  # the worker wrote the data; its digest makes the chunk complete
-                _store.record(opened, i, result[0])
+                digests[i] = result[0]
             fut.release()
             completed += 1
             configurations_done += stop - start
-            if lines is not None:
-                lines.update(configurations_done)
-            if time.monotonic() >= next_mark:
+            if time.monotonic() >= next_mark or (lines is not None and lines.due()):
+                _store.record(opened, digests)
+                digests.clear()
                 _mark(root, completed, plan.n_chunks)
                 next_mark = time.monotonic() + MARK_INTERVAL
+            if lines is not None:
+                lines.update(configurations_done)
         if bar is not None:
             end_bar(bar)
     finally:
@@ -307,4 +318,5 @@ def _compute(client, scene, plan, root, todo, reused, mode, clearance, target) -
             client.cancel([f for f in futures if not f.done()])
         except Exception:  # noqa: BLE001 - the cluster may be gone already
             pass
+        _store.record(opened, digests)  # the chunks completed since the last write
         _mark(root, int(np.count_nonzero(root["chunk_digest"][:])), plan.n_chunks)
