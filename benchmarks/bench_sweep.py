@@ -2,7 +2,7 @@
 
     python benchmarks/bench_sweep.py [--part cost,scaling,overhead,grid4] [--quick]
                                      [--budget SECONDS] [--json FILE] [--chunk N]
-                                     [--repeat R] [--joints N]
+                                     [--repeat R] [--joints N] [--seconds S]
 
 * cost: per-configuration CPU cost of `model.extremes` + `com_polar` in one process (one C
   thread), per scenario and joint count 2..6 (the bounded-wheels scenario on a small batch),
@@ -13,9 +13,10 @@
   (`--chunk` to fix it); the tail is the time from the first worker's last task's end to
   the last one's (one worker idle), from Dask's task stream;
 * overhead: at the default chunk size (`snakecg.sweeps.default_chunk`), a warm 1-worker
-  cluster's `sweep` against the same chunks evaluated in this process one after the other,
-  right before and right after it (scheduling, serialization, Zarr writes and the digests
-  are the difference); 3 joints for bounded wheels and 4 for the others, or `--joints`;
+  cluster's `sweep` (at least 8 chunks, about `--seconds` of work) against the same chunks
+  evaluated in this process one after the other, right before and right after it
+  (scheduling, serialization, Zarr writes and the digests are the difference), `--repeat`
+  rounds and their median; 3 joints for bounded wheels and 4 for the others, or `--joints`;
 * grid4: the 28^4 = 614,656 grid of each scenario on 2 workers; the bounded-wheels one
   stops after `--budget` seconds (default 300) and is extrapolated from the chunks written
   (the store is resumable: rerun to finish it).
@@ -150,15 +151,22 @@ def scaling(tmp: Path, quick: bool, chunk: int | None = None, repeat: int = 1) -
     return out
 
 
-def overhead(tmp: Path, quick: bool, joints: int | None = None) -> dict:
+def overhead(tmp: Path, quick: bool, joints: int | None = None, repeat: int = 3,
+             seconds: float = 8.0) -> dict:
     """Wall time of a warm 1-worker sweep against the same chunks evaluated in this process
-    one after the other (the plain loop, run right before and right after the sweep: their
-    mean is the anchor, so a drift of the machine's load weighs on both alike), and the CPU
-    time of the sweep's processes (worker and this one) against the loop's. The difference
-    is scheduling, serialization, the Zarr writes and the digests. Dask's task stream gives
-    the time the worker spent in its tasks too (the evaluation, and the Zarr writes when the
-    worker writes the data)."""
+    one after the other (the plain loop, run right before and right after each sweep: their
+    mean is the anchor, so a drift of the machine's speed weighs on both alike), ``repeat``
+    rounds, the median of the rounds' ratios; and the CPU time of the sweep's processes
+    (worker and this one) against the loop's. The difference is scheduling, serialization,
+    the Zarr writes and the digests. The sweep has at least 8 default chunks and about
+    ``seconds`` of single-core work (at :func:`configuration_seconds`), so that what a sweep
+    costs once (creating the store, the last chunk's write) counts as in a sweep of that
+    length; that part is reported apart too: the sweep's wall time outside its tasks (one
+    worker runs them one after the other; from Dask's task stream), and the tasks' own
+    slowdown against the loop (the calling process writes the chunks on the other core)."""
     from distributed import get_task_stream
+
+    from snakecg.sweeps.plan import configuration_seconds
 
     out = {}
     lc = local_client(1)
@@ -168,7 +176,8 @@ def overhead(tmp: Path, quick: bool, joints: int | None = None) -> dict:
             nj = joints or nj
             sc = scene(nj, sc_name)
             chunk = default_chunk(sc_name, nj)
-            chunks = 4 if quick else 8
+            per_chunk = chunk * configuration_seconds(sc_name, nj)
+            chunks = 4 if quick else max(8, round(seconds / per_chunk))
             n = chunk * chunks
             timed_sweep(sc, tmp / f"warm-{sc_name}.zarr", samples=2, seed=0, chunk=1,
                         client=client)
@@ -182,36 +191,47 @@ def overhead(tmp: Path, quick: bool, joints: int | None = None) -> dict:
                     evaluate(model, plan.configurations(i))
                 return time.perf_counter() - t, time.process_time() - c
 
-            la = load_avg()
-            before, cpu_before = loop()
-            w0, c0 = client.run(time.process_time), time.process_time()
-            with get_task_stream(client) as ts:
-                dask = timed_sweep(sc, tmp / f"ovh-{sc_name}.zarr", samples=n, seed=2,
-                                   chunk=chunk, client=client)
-            cpu_here = time.process_time() - c0
-            w1 = client.run(time.process_time)
-            cpu_worker = sum(w1[a] - w0[a] for a in w1 if a in w0)
-            after, cpu_after = loop()
-            tasks = sum(s["stop"] - s["start"] for t in ts.data for s in t["startstops"]
-                        if s["action"] == "compute")
-            inproc, cpu_loop = (before + after) / 2, (cpu_before + cpu_after) / 2
-            frac = dask / inproc - 1
-            # CPU seconds: the worker and this process (scheduler, client, nanny, Zarr
-            # writes when it writes) against the plain loop's; the other jobs on the
-            # machine stretch wall times, much less CPU times
-            cpu_frac = (cpu_worker + cpu_here) / cpu_loop - 1
-            out[sc_name] = {"joints": nj, "chunk": chunk, "configurations": n,
-                            "task_s": tasks, "dask_s": dask, "overhead": frac,
-                            "in_process_s": inproc, "in_process_runs_s": [before, after],
-                            "cpu_worker_s": cpu_worker, "cpu_client_s": cpu_here,
-                            "cpu_loop_s": cpu_loop, "cpu_overhead": cpu_frac,
-                            "load": la, "load_after": load_avg()}
-            print(f"  {sc_name:>13} ({nj} joints, chunk {chunk}, {n} configurations): "
-                  f"sweep {dask:.2f} s (worker's tasks {tasks:.2f} s); plain loop in this "
-                  f"process {before:.2f} s before, {after:.2f} s after: overhead "
-                  f"{100 * frac:+.1f} %; CPU: worker {cpu_worker:.2f} s + this process "
-                  f"{cpu_here:.2f} s against the loop's {cpu_loop:.2f} s: "
-                  f"{100 * cpu_frac:+.1f} %; load {la} -> {load_avg()}", flush=True)
+            rounds = []
+            for r in range(repeat):
+                la = load_avg()
+                before, cpu_before = loop()
+                w0, c0 = client.run(time.process_time), time.process_time()
+                with get_task_stream(client) as ts:
+                    dask = timed_sweep(sc, tmp / f"ovh-{sc_name}-{r}.zarr", samples=n, seed=2,
+                                       chunk=chunk, client=client)
+                cpu_here = time.process_time() - c0
+                w1 = client.run(time.process_time)
+                cpu_worker = sum(w1[a] - w0[a] for a in w1 if a in w0)
+                after, cpu_after = loop()
+                tasks = sum(s["stop"] - s["start"] for t in ts.data for s in t["startstops"]
+                            if s["action"] == "compute")
+                inproc, cpu_loop = (before + after) / 2, (cpu_before + cpu_after) / 2
+                rounds.append({
+                    "dask_s": dask, "task_s": tasks, "in_process_runs_s": [before, after],
+                    "overhead": dask / inproc - 1,
+                    "outside_tasks_s": dask - tasks, "task_slowdown": tasks / inproc - 1,
+                    # CPU seconds: the worker and this process (scheduler, client, nanny,
+                    # Zarr writes when it writes) against the plain loop's
+                    "cpu_worker_s": cpu_worker, "cpu_client_s": cpu_here,
+                    "cpu_loop_s": cpu_loop,
+                    "cpu_overhead": (cpu_worker + cpu_here) / cpu_loop - 1,
+                    "load": la, "load_after": load_avg()})
+                x = rounds[-1]
+                print(f"  {sc_name:>13} ({nj} joints, {chunks} chunks of {chunk}): sweep "
+                      f"{dask:.2f} s, plain loop {before:.2f} s before and {after:.2f} s "
+                      f"after: overhead {100 * x['overhead']:+.1f} % (outside the tasks "
+                      f"{x['outside_tasks_s']:.2f} s, tasks {100 * x['task_slowdown']:+.1f} "
+                      f"%); CPU: worker {cpu_worker:.2f} s + this process {cpu_here:.2f} s "
+                      f"against {cpu_loop:.2f} s: {100 * x['cpu_overhead']:+.1f} %; load "
+                      f"{la} -> {load_avg()}", flush=True)
+            med = {k: float(np.median([x[k] for x in rounds]))
+                   for k in ("overhead", "outside_tasks_s", "task_slowdown", "cpu_overhead")}
+            out[sc_name] = {"joints": nj, "chunk": chunk, "chunks": chunks,
+                            "configurations": n, "rounds": rounds, "median": med}
+            print(f"  {sc_name:>13}: median of {repeat}: overhead {100 * med['overhead']:+.1f} "
+                  f"% (outside the tasks {med['outside_tasks_s']:.2f} s, tasks "
+                  f"{100 * med['task_slowdown']:+.1f} %), CPU {100 * med['cpu_overhead']:+.1f} "
+                  f"%", flush=True)
     finally:
         lc.close()
     return out
@@ -280,7 +300,11 @@ def main() -> None:
                     help="overhead: joints of all three scenarios (default 3 for bounded "
                     "wheels, 4 for the others)")
     ap.add_argument("--repeat", type=int, default=3,
-                    help="scaling: alternated rounds of 1 and 2 workers (default 3)")
+                    help="scaling: alternated rounds of 1 and 2 workers; overhead: rounds of "
+                    "loop, sweep, loop (default 3)")
+    ap.add_argument("--seconds", type=float, default=8.0,
+                    help="overhead: single-core seconds of work per sweep, at least 8 "
+                    "chunks (default 8)")
     args = ap.parse_args()
     print(f"machine: {platform.machine()}, {os.cpu_count()} cores, Python "
           f"{platform.python_version()}, load average {load_avg()}")
@@ -294,7 +318,8 @@ def main() -> None:
             elif part == "scaling":
                 results[part] = scaling(tmp, args.quick, args.chunk, args.repeat)
             elif part == "overhead":
-                results[part] = overhead(tmp, args.quick, args.joints)
+                results[part] = overhead(tmp, args.quick, args.joints, args.repeat,
+                                         args.seconds)
             elif part == "grid4":
                 results[part] = grid4(tmp, args.budget)
             else:
