@@ -81,6 +81,11 @@ def cost(quick: bool) -> dict:
     return out
 
 
+def kernel_seconds() -> float:
+    """System CPU seconds of this process so far (all its threads)."""
+    return os.times().system
+
+
 def timed_sweep(sc, store, **kw) -> float:
     t = time.perf_counter()
     timed_sweep.last = snakecg.sweep(sc, store=store, progress=False, **kw)
@@ -196,12 +201,16 @@ def overhead(tmp: Path, quick: bool, joints: int | None = None, repeat: int = 3,
                 la = load_avg()
                 before, cpu_before = loop()
                 w0, c0 = client.run(time.process_time), time.process_time()
+                k0 = client.run(kernel_seconds), kernel_seconds()
                 with get_task_stream(client) as ts:
                     dask = timed_sweep(sc, tmp / f"ovh-{sc_name}-{r}.zarr", samples=n, seed=2,
                                        chunk=chunk, client=client)
                 cpu_here = time.process_time() - c0
-                w1 = client.run(time.process_time)
+                w1, k1 = client.run(time.process_time), client.run(kernel_seconds)
                 cpu_worker = sum(w1[a] - w0[a] for a in w1 if a in w0)
+                # of which in the kernel (writing the files, moving the results)
+                kernel = kernel_seconds() - k0[1] + sum(k1[a] - k0[0][a] for a in k1
+                                                        if a in k0[0])
                 after, cpu_after = loop()
                 tasks = sum(s["stop"] - s["start"] for t in ts.data for s in t["startstops"]
                             if s["action"] == "compute")
@@ -215,6 +224,7 @@ def overhead(tmp: Path, quick: bool, joints: int | None = None, repeat: int = 3,
                     "cpu_worker_s": cpu_worker, "cpu_client_s": cpu_here,
                     "cpu_loop_s": cpu_loop,
                     "cpu_overhead": (cpu_worker + cpu_here) / cpu_loop - 1,
+                    "cpu_kernel_s": kernel,
                     "load": la, "load_after": load_avg()})
                 x = rounds[-1]
                 print(f"  {sc_name:>13} ({nj} joints, {chunks} chunks of {chunk}): sweep "
@@ -222,7 +232,8 @@ def overhead(tmp: Path, quick: bool, joints: int | None = None, repeat: int = 3,
                       f"after: overhead {100 * x['overhead']:+.1f} % (outside the tasks "
                       f"{x['outside_tasks_s']:.2f} s, tasks {100 * x['task_slowdown']:+.1f} "
                       f"%); CPU: worker {cpu_worker:.2f} s + this process {cpu_here:.2f} s "
-                      f"against {cpu_loop:.2f} s: {100 * x['cpu_overhead']:+.1f} %; load "
+                      f"against {cpu_loop:.2f} s: {100 * x['cpu_overhead']:+.1f} % (in the "
+                      f"kernel {kernel:.2f} s); load "
                       f"{la} -> {load_avg()}", flush=True)
             med = {k: float(np.median([x[k] for x in rounds]))
                    for k in ("overhead", "outside_tasks_s", "task_slowdown", "cpu_overhead")}
