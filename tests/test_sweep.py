@@ -431,6 +431,21 @@ def test_chunks_written_as_raw_bytes_are_zarrs_own_encoding(tmp_path):
         np.testing.assert_array_equal(ours[k][:], arrays[k], err_msg=k)
 
 
+def test_digests_recorded_together_across_blocks_of_the_digest_array(tmp_path):
+    """The digests of many chunks are written at once (one write per block of 4096 entries
+    of chunk_digest); the others stay 0."""
+    from snakecg.sweeps import store as store_mod
+
+    root = store_mod.create(tmp_path / "d.zarr", {"format": store_mod.FORMAT}, 9000, 1, 2)
+    opened = store_mod.handles(root)
+    recorded = {0: 3, 4095: 2**64 - 1, 4096: 7, 8191: 11, 8999: 13}
+    store_mod.record(opened, recorded)
+    store_mod.record(opened, {})
+    got = zarr.open_group(str(tmp_path / "d.zarr"), mode="r")["chunk_digest"][:]
+    assert got.dtype == np.uint64 and got.shape == (9000,)
+    assert {int(i): int(got[i]) for i in np.flatnonzero(got)} == recorded
+
+
 def test_a_format_1_store_resumes_with_its_blake2b_digests(client, tmp_path, uninterrupted):
     """A store of the earlier format (BLAKE2b-64 digests) is verified and resumed with its own
     digest: a chunk whose data no longer matches and one without a digest are computed

@@ -311,6 +311,8 @@ def _compute(client, scene, plan, root, todo, reused, mode, clearance, target) -
                 next_mark = time.monotonic() + MARK_INTERVAL
             if lines is not None:
                 lines.update(configurations_done)
+        _store.record(opened, digests)  # the chunks completed since the last write
+        digests.clear()
         if bar is not None:
             end_bar(bar)
     finally:
@@ -318,5 +320,8 @@ def _compute(client, scene, plan, root, todo, reused, mode, clearance, target) -
             client.cancel([f for f in futures if not f.done()])
         except Exception:  # noqa: BLE001 - the cluster may be gone already
             pass
-        _store.record(opened, digests)  # the chunks completed since the last write
+        try:  # after an error: keep the chunks completed before it, as far as possible
+            _store.record(opened, digests)
+        except Exception:  # noqa: BLE001 - the error that stopped the sweep is the one to see
+            pass
         _mark(root, int(np.count_nonzero(root["chunk_digest"][:])), plan.n_chunks)
