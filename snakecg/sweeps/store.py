@@ -42,7 +42,9 @@ import hashlib
 import json
 import os
 import shutil
+import threading
 import uuid
+from collections import deque
 from pathlib import Path
 
 import numpy as np
@@ -238,7 +240,58 @@ def write_data(opened: dict, start: int, stop: int, arrays: dict[str, np.ndarray
         await asyncio.gather(*(write(opened[name], arrays[name]) for name in array_names()))
 
     sync(_all())
+    _leave_page_cache(_chunk_files(opened, start))
     return digest(arrays, fmt)
+
+
+#: The files of the chunks this process wrote last, in the local file system: their pages
+#: are released from the page cache as the next chunks are written (:func:`_leave_page_cache`).
+_RECENT: deque = deque(maxlen=3)
+_RECENT_LOCK = threading.Lock()
+
+
+def _chunk_files(opened: dict, start: int) -> list[str]:
+    """Paths of the chunk files holding configuration ``start`` of every array, if the store
+    is a local folder (else none)."""
+    from zarr.storage import LocalStore
+
+    files = []
+    for name in array_names():
+        array = opened[name]
+        store = array.store_path.store
+        if not isinstance(store, LocalStore):
+            return []
+        key = array.metadata.encode_chunk_key((start // array.chunks[0],)
+                                              + (0,) * (array.ndim - 1))
+        files.append(os.path.join(store.root, array.store_path.path, key))
+    return files
+
+
+def _leave_page_cache(files: list[str]) -> None:
+    """Tell the kernel that the chunk files just written, and those of the last chunks
+    before them, will not be read soon (``POSIX_FADV_DONTNEED``): it starts writing the
+    new ones to disk and drops the pages of those already written. A sweep writes far more
+    than it reads back; without this its files fill the page cache with pages it must first
+    allocate, which on a VM that backs its memory lazily cost about ten times the write
+    itself (see the performance notes), and which crowd out other files' pages on any
+    machine. Reads are unchanged (from the disk instead of memory). A no-op where the
+    call does not exist or the files are not on a local disk (tmpfs ignores it)."""
+    if not files or not hasattr(os, "posix_fadvise"):
+        return
+    with _RECENT_LOCK:
+        _RECENT.append(files)
+        every = [f for chunk in _RECENT for f in chunk]
+    for path in every:
+        try:
+            fd = os.open(path, os.O_RDONLY)
+        except OSError:  # replaced meanwhile by a rerun of its task, or removed
+            continue
+        try:
+            os.posix_fadvise(fd, 0, 0, os.POSIX_FADV_DONTNEED)
+        except OSError:
+            pass
+        finally:
+            os.close(fd)
 
 
 def _raw_bytes(array) -> bool:
