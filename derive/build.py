@@ -146,6 +146,27 @@ def build_function(f: FunctionSpec, prefix: str) -> ca.Function:
                        [n for n, _, _ in f.inputs], [n for n, _, _ in f.outputs])
 
 
+def _trig_given_function(f: FunctionSpec, name: str, angles, cos_name: str, sin_name: str):
+    """The program of :func:`build_function` as the function ``name``, with the cosine and
+    sine of each angle in ``angles`` (input symbols of ``f``) given as two more inputs,
+    ``cos_name`` and ``sin_name``, instead of computed. Returns the function, whether one
+    was given, and whether it still computes a trigonometric function."""
+    args, env = _inputs(f)
+    cos_a = ca.SX.sym(cos_name, len(angles))
+    sin_a = ca.SX.sym(sin_name, len(angles))
+    given = {}
+    for k, a in enumerate(angles):
+        given[sp.cos(a)] = cos_a[k]
+        given[sp.sin(a)] = sin_a[k]
+    results, used = _outputs(f, env, given)
+    fn = ca.Function(name, args + [cos_a, sin_a], [ca.densify(o) for o in ca.cse(results)],
+                     [n for n, _, _ in f.inputs] + [cos_name, sin_name],
+                     [n for n, _, _ in f.outputs])
+    trig = {ca.OP_SIN, ca.OP_COS, ca.OP_TAN}
+    left = any(fn.instruction_id(k) in trig for k in range(fn.n_instructions()))
+    return fn, used, left
+
+
 def build_sincos_function(f: FunctionSpec, prefix: str) -> ca.Function | None:
     """``<prefix><f.name>_sincos``: the program of :func:`build_function` with the cosines and
     sines of the rotational coordinates given as two more inputs, ``cos_q`` and ``sin_q``
@@ -159,23 +180,9 @@ def build_sincos_function(f: FunctionSpec, prefix: str) -> ca.Function | None:
     if "q" not in names:
         return None
     angles = list(f.inputs[names.index("q")][1][2:])
-    args, env = _inputs(f)
-    cos_q = ca.SX.sym("cos_q", len(angles))
-    sin_q = ca.SX.sym("sin_q", len(angles))
-    given = {}
-    for k, a in enumerate(angles):
-        given[sp.cos(a)] = cos_q[k]
-        given[sp.sin(a)] = sin_q[k]
-    results, used = _outputs(f, env, given)
-    if not used:
-        return None
-    fn = ca.Function(prefix + f.name + "_sincos", args + [cos_q, sin_q],
-                     [ca.densify(o) for o in ca.cse(results)],
-                     names + ["cos_q", "sin_q"], [n for n, _, _ in f.outputs])
-    trig = {ca.OP_SIN, ca.OP_COS, ca.OP_TAN}
-    if any(fn.instruction_id(k) in trig for k in range(fn.n_instructions())):
-        return None
-    return fn
+    fn, used, left = _trig_given_function(f, prefix + f.name + "_sincos", angles, "cos_q",
+                                          "sin_q")
+    return fn if used and not left else None
 
 
 def build_rotation_function(f: FunctionSpec, prefix: str, angles) -> ca.Function:
@@ -187,19 +194,9 @@ def build_rotation_function(f: FunctionSpec, prefix: str, angles) -> ca.Function
     rotation as a product of its joints' rotations, so a row on that link needs no sine or
     cosine of its own. Raises if ``f`` still computes a trigonometric function.
     """
-    args, env = _inputs(f)
-    cos_a = ca.SX.sym("cos_angles", len(angles))
-    sin_a = ca.SX.sym("sin_angles", len(angles))
-    for k, a in enumerate(angles):
-        env[sp.cos(a)] = cos_a[k]
-        env[sp.sin(a)] = sin_a[k]
-    results, _ = _outputs(f, env, {})
-    fn = ca.Function(prefix + f.name + "_rotation", args + [cos_a, sin_a],
-                     [ca.densify(o) for o in ca.cse(results)],
-                     [n for n, _, _ in f.inputs] + ["cos_angles", "sin_angles"],
-                     [n for n, _, _ in f.outputs])
-    trig = {ca.OP_SIN, ca.OP_COS, ca.OP_TAN}
-    if any(fn.instruction_id(k) in trig for k in range(fn.n_instructions())):
+    fn, _, left = _trig_given_function(f, prefix + f.name + "_rotation", list(angles),
+                                       "cos_angles", "sin_angles")
+    if left:
         raise ValueError(f"{f.name}: a sine or cosine of an angle other than {angles} is left")
     return fn
 
