@@ -21,6 +21,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import InputError
+from .store import configuration_bytes
 
 __all__ = ["Plan", "grid_plan", "samples_plan", "joint_values", "default_chunk",
            "spread_chunk", "configuration_seconds", "result_bytes", "plan_from_meta",
@@ -71,9 +72,9 @@ def configuration_seconds(scenario: str, n_joints: int) -> float:
 
 
 def result_bytes(n_joints: int) -> int:
-    """Bytes of the store's arrays per configuration: ``9 n_a + 10`` float64 values and one
-    boolean."""
-    return 8 * (9 * _joint_count(n_joints) + 10) + 1
+    """Bytes of the store's arrays per configuration (:func:`.store.configuration_bytes`:
+    ``9 n_a + 10`` float64 values and one boolean)."""
+    return configuration_bytes(_joint_count(n_joints))
 
 
 def _nice(x: float) -> int:

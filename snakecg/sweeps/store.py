@@ -40,6 +40,7 @@ from __future__ import annotations
 
 import hashlib
 import json
+import math
 import os
 import shutil
 import threading
@@ -52,8 +53,8 @@ import numpy as np
 from ..analysis import METRICS
 from ..errors import InputError
 
-__all__ = ["array_names", "create", "open_existing", "check_target", "digest", "handles",
-           "write_data", "record", "completed", "store_id", "format_of",
+__all__ = ["array_names", "configuration_bytes", "create", "open_existing", "check_target",
+           "digest", "handles", "write_data", "record", "completed", "store_id", "format_of",
            "FORMAT", "DIGESTS"]
 
 #: Layout version of new stores (attribute ``snakecg_sweep.format``).
@@ -72,6 +73,18 @@ def array_names() -> tuple[str, ...]:
     for m in METRICS:
         names += [f"max_{m}", f"tau_max_{m}", f"min_kept_{m}", f"tau_min_kept_{m}"]
     return tuple(names + ["feasible"])
+
+
+def _per_configuration(name: str, joints: int) -> tuple[int, ...]:
+    """Shape of one configuration's entry of array ``name``: a row of the joints (``q`` and
+    the torques) or one value."""
+    return (joints,) if name == "q" or name.startswith("tau_") else ()
+
+
+def configuration_bytes(joints: int) -> int:
+    """Bytes of one configuration in all the store's arrays (float64; ``feasible`` bool)."""
+    return sum((1 if name == "feasible" else 8) * math.prod(_per_configuration(name, joints))
+               for name in array_names())
 
 
 def _zarr():
@@ -113,9 +126,8 @@ def create(path: Path, meta: dict, n_configurations: int, chunk: int, joints: in
     try:
         root = zarr.open_group(str(tmp), mode="w-")
         for name in array_names():
-            wide = name == "q" or name.startswith("tau_")
-            shape = (n_configurations, joints) if wide else (n_configurations,)
-            chunks = (chunk, joints) if wide else (chunk,)
+            row = _per_configuration(name, joints)
+            shape, chunks = (n_configurations, *row), (chunk, *row)
             flag = name == "feasible"
             root.create_array(name, shape=shape, chunks=chunks,
                               dtype="bool" if flag else "float64",
