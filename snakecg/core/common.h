@@ -133,6 +133,9 @@ static void sc_work_free(sc_work_t *ws) {
   ws->w = 0;
 }
 
+/* The entries of an array (of the work-size functions a file passes to sc_work_alloc). */
+#define SC_COUNT(a) ((int)(sizeof(a) / sizeof((a)[0])))
+
 /* 0, or -1 when a size query or an allocation failed (then nothing is left allocated). */
 static int sc_work_alloc(sc_work_t *ws, const sc_work_fn *fns, int n) {
   sc_int a, r, i, w, ma = 0, mr = 0, mi = 0, mw = 0;

@@ -180,7 +180,7 @@ int SNAKECG_EXPORT(core_forward)(sc_int n, const double *scene, const double *co
                                  sc_int max_iter, const double *const *in, const sc_int *stride,
                                  double *out) {
   sc_work_t ws;
-  const sc_work_fn fns[2] = {SC_CS_WORKS};
+  const sc_work_fn fns[] = {SC_CS_WORKS};
   sc_constants c;
   sc_int i;
   double vlim;
@@ -202,7 +202,7 @@ int SNAKECG_EXPORT(core_forward)(sc_int n, const double *scene, const double *co
                           !all_finite(in[IN_rho] + i * stride[IN_rho], 2, INFINITY))))
       return (int)(-2 - (i < 2000000000 ? i : 2000000000));
   }
-  if (sc_work_alloc(&ws, fns, 2)) return -1;
+  if (sc_work_alloc(&ws, fns, SC_COUNT(fns))) return -1;
   for (i = 0; i < n; ++i) {
     double *row = out + i * OUT_WIDTH;
     const double *qo = in[IN_q_obj] ? in[IN_q_obj] + i * stride[IN_q_obj] : 0;

@@ -83,8 +83,8 @@ typedef struct {
 } sc_ctx;
 
 static int ctx_alloc(sc_ctx *c) {
-  const sc_work_fn fns[3] = {SC_CS_WORKS, SNAKECG_LJ_WORK};
-  return sc_work_alloc(&c->ws, fns, 3);
+  const sc_work_fn fns[] = {SC_CS_WORKS, SNAKECG_LJ_WORK};
+  return sc_work_alloc(&c->ws, fns, SC_COUNT(fns));
 }
 
 /* The right-hand side in the mode at y (Dynamics.rates); keeps lam, A V, gap and s in c.

@@ -30,7 +30,7 @@
 int SNAKECG_EXPORT(core_held_maps)(const double *scene, const double *q, double pivot_tol,
                                    double *maps) {
   sc_work_t ws;
-  const sc_work_fn fns[2] = {SC_CS_WORKS};
+  const sc_work_fn fns[] = {SC_CS_WORKS};
   sc_system sys;
   const double zero[NS] = {0.0};
   const double *present = scene + SCENE_present;
@@ -39,7 +39,7 @@ int SNAKECG_EXPORT(core_held_maps)(const double *scene, const double *q, double 
   signed char state[NC];
   double *L = maps, *A = maps + NC * NA, *Xi = A + 3 * NA, *Om = Xi + NA * NA, *N = Om + NA * NA;
   int i, j, k, r, status;
-  if (sc_work_alloc(&ws, fns, 2)) return 1;
+  if (sc_work_alloc(&ws, fns, SC_COUNT(fns))) return 1;
   status = sc_contact_system(&ws, scene, q, zero, zero, 0, zero, zero, 0, &sys); /* placed */
   sc_work_free(&ws);
   if (status) return 1;

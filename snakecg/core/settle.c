@@ -249,13 +249,13 @@ static int settle(sc_work_t *ws, sc_settle *st) {
 
 /* Settle one event (see sc_settle); returns and stores the status (SETTLE_*). */
 int SNAKECG_EXPORT(core_settle)(sc_settle *st) {
-  const sc_work_fn fns[3] = {SC_CS_WORKS, SNAKECG_LJ_WORK};
+  const sc_work_fn fns[] = {SC_CS_WORKS, SNAKECG_LJ_WORK};
   sc_work_t ws;
   int status;
   st->impact = st->n_impact = st->n_projected = 0;
   st->drift = 0.0;
   st->drift_row = -1;
-  if (sc_work_alloc(&ws, fns, 3)) {
+  if (sc_work_alloc(&ws, fns, SC_COUNT(fns))) {
     st->status = SETTLE_MEMORY;
     return SETTLE_MEMORY;
   }
