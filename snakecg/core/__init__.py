@@ -67,8 +67,8 @@ class Core:
         ``core_settle``, run.c's ``core_run`` (:mod:`snakecg.core.segment`)."""
         self.sphere = SphereKernel(lib, manifest["prefix"])
         """sphere.c's faces and KKT candidates (:mod:`snakecg.core.sphere`)."""
-        self.optimal = OptimalKernel(lib, manifest["prefix"])
-        """optimal.c's one-call optimal-torque query (:mod:`snakecg.core.optimal`)."""
+        self.optimal = OptimalKernel(lib, manifest["prefix"], self.layout)
+        """The optimal-torque queries in one call per batch (:mod:`snakecg.core.optimal`)."""
 
     def next_states(self, state, lam, w, G, bounds) -> tuple[np.ndarray, bool]:
         """The C's row-state update for one sample (the rules of

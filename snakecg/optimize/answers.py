@@ -1,0 +1,201 @@
+"""The compiled query's answers as :class:`~snakecg.optimize.OptimizeResult`: codes to names,
+numbers to reasons. Nothing numeric happens here: the solve, the certificate, the forward
+solve at the answer and its check all ran in C (:mod:`snakecg.core.optimal`)."""
+
+from __future__ import annotations
+
+import functools
+import math
+
+import numpy as np
+
+from ..core.optimal import (CERTIFICATE, CHECK, INFEASIBLE, METHOD, OPTIMAL, QP_STATUS,
+                            REASON)
+from ..forward import ForwardResult
+from .result import (CONTACT, ELLIPSOID, NORMAL, TOLERANCE, Certificate, OptimizeResult,
+                     joint_name, wheel_name)
+
+__all__ = ["result"]
+
+_STATUS = {OPTIMAL: "optimal", INFEASIBLE: "infeasible"}
+_WHEEL = {0: "none", 1: "stick", 3: "slide+", 4: "slide-"}
+_R = {v: k for k, v in REASON.items()}
+_C = {v: k for k, v in CHECK.items()}
+_RESIDUALS = ("stationarity", "primal_feasibility", "complementarity", "duality_gap")
+
+
+@functools.lru_cache(maxsize=None)
+def _fields(kernel):
+    """Slices of the answer's fields and the binding names of this kernel's sizes."""
+    na, nc = kernel.layout.n_joints, kernel.layout.n_constraints
+    names = ([CONTACT, ELLIPSOID, NORMAL] + [joint_name(j + 1) for j in range(na)]
+             + [wheel_name(i) for i in range(1, nc)])
+    off = {k: (o, o + s) for k, (o, s) in kernel.OUT.items()}
+    return off, names
+
+
+def _g(x):
+    return f"{x:.4g}"
+
+
+def _reason(query, row, off, binding, tol) -> str:
+    code = _R[int(row[off["reason"][0]])]
+    det = row[off["detail"][0]:off["detail"][1]].tolist()
+    nrm = f"({_g(det[0])}, {_g(det[1])})"
+    names = ", ".join(binding) if binding else "the limits"
+    if code == "none":
+        return ""
+    if code == "singular":
+        return ("dependent constraint rows at this configuration (singular Delassus matrix); "
+                "the maps are not defined")
+    if code == "no_push":
+        return ("no torque accelerates the object at this configuration (sr = 0 for every "
+                "torque)" if query.objective == "max_sr"
+                else "no torque accelerates the object at this configuration")
+    if code == "off_normal":
+        a = query.a_obj
+        return (f"a_obj = ({_g(a[0])}, {_g(a[1])}, {_g(a[2])}) is not reachable: the object can "
+                f"only accelerate along the contact normal n = {nrm}, as a_obj = lam_c * "
+                f"({_g(det[2])}, {_g(det[3])}, {_g(det[4])}) with lam_c >= 0")
+    if code == "against_normal":
+        return (f"a_obj points against the contact normal n = {nrm}: it would need a pulling "
+                f"contact force; {CONTACT}")
+    if code == "direction":
+        d = query.direction if query.direction is not None else np.array(det[2:5])
+        return (f"no torque accelerates the object along d = ({_g(d[0])}, {_g(d[1])}, "
+                f"{_g(d[2])}): the contact pushes only along its normal n = {nrm} and "
+                f"d . n <= 0; {CONTACT}")
+    if code == "out_of_reach":
+        what = "|a_obj|" if query.a_obj is not None else "the acceleration along d"
+        return (f"{what} must reach {det[6]:.6g} m/s^2 but is at most {det[7]:.6g} m/s^2 "
+                f"within the limits with every wheel sticking; binding: {names}")
+    if code == "no_strong_push":
+        return ("no torque within the limits pushes the object along d without a wheel "
+                f"sliding; binding: {names}")
+    if code == "solver":
+        return f"solver failure: {QP_STATUS.get(int(det[5]), 'unknown')}"
+    if code == "within_reach":
+        return (f"solver failure ({QP_STATUS.get(int(det[5]), 'unknown')}) although the task "
+                f"is within reach")
+    if code == "certificate":
+        kind = CERTIFICATE[int(row[off["certificate"][0]])]
+        again = (" after the general eigenproblem" if row[off["resolved"][0]] else "")
+        return f"optimality certificate ({kind}) fails{again}: {_residuals(row, off, tol)}"
+    if code == "not_finite":
+        return "the solver's torque is not finite or beyond the force limit"
+    return f"forward check: {_check(query, row, off)}"
+
+
+def _residuals(row, off, tol) -> str:
+    """The residuals out of their tolerances (``tol``: the four, in the order of
+    ``_RESIDUALS``, as the compiled call used them)."""
+    bad = []
+    for name, t in zip(_RESIDUALS, tol):
+        v = float(row[off[name][0]])
+        if not math.isnan(v) and not abs(v) <= t:
+            bad.append(f"{name} {v:.3g} > {t:.0e}")
+    return "; ".join(bad)
+
+
+def _check(query, row, off) -> str:
+    code = _C[int(row[off["check"][0]])]
+    c = row[off["check_detail"][0]:off["check_detail"][1]].tolist()
+    if code == "tau_max":
+        return f"|tau_{int(c[0]) + 1}| = {c[1]:.6g} exceeds tau_max = {c[2]:.6g}"
+    if code == "ellipsoid":
+        return f"tau^T N tau = {c[0]:.6g} exceeds radius^2 = {c[1]:.6g}"
+    if code == "separates":
+        return "the contact separates at tau"
+    if code == "slides":
+        return (f"the wheel on link {int(c[0])} slides ({_WHEEL[int(c[1])]}) although the "
+                f"optimiser kept it within its friction bound")
+    if code == "objective":
+        return (f"objective {c[0]:.9g} from the forward solve differs from the optimiser's "
+                f"{c[1]:.9g}")
+    if code == "a_obj":
+        return f"a_obj misses the requested {query.a_obj.tolist()} by {c[0]:.3g}"
+    return f"d . a_obj = {c[0]:.6g} < a_min = {c[1]:.6g}"
+
+
+def _solver(row, off) -> str:
+    m = int(row[off["method"][0]])
+    if m & (METHOD["rank_one"] | METHOD["eigen"]):
+        text = ("generalized eigenproblem (rank-one closed form)" if m & METHOD["rank_one"]
+                else "generalized eigenproblem (Jacobi rotations)")
+        if m & METHOD["states"]:
+            text += (f"; {int(row[off['states'][0]])} sliding wheel states: "
+                     f"{int(row[off['states_solved'][0]])} solved, "
+                     f"{int(row[off['qp_solves'][0]])} QPs")
+            if m & METHOD["scale"]:
+                text += (f", the ellipsoid by its multiplier ({int(row[off['newton_steps'][0]])}"
+                         f" Newton steps)")
+        return text
+    parts = []
+    if m & METHOD["closed_ellipsoid"]:
+        parts.append("closed form (ellipsoid)")
+    if m & (METHOD["qp"] | METHOD["lp"]):
+        text = "dual active set" + (" (LP)" if m & METHOD["lp"] else "")
+        if m & METHOD["secular"]:
+            text += ", ellipsoid multiplier (secular equation)"
+        parts.append(text)
+    if m & METHOD["tie_break"]:
+        parts.append("least-slip tie-break")
+    if m & METHOD["diagnosis"]:
+        parts.append("diagnosis by the strongest push")
+    return "; ".join(parts) or "structure"
+
+
+def _certificate(row, off, status, tol) -> Certificate:
+    kind = CERTIFICATE[int(row[off["certificate"][0]])]
+    if kind == "none":
+        return Certificate("none", False, reason=f"no optimality claim: {status}")
+    ok = bool(row[off["certified"][0]])
+    gap = float(row[off["duality_gap"][0]])
+    return Certificate(kind, ok, float(row[off["stationarity"][0]]),
+                       float(row[off["primal_feasibility"][0]]),
+                       float(row[off["complementarity"][0]]),
+                       None if math.isnan(gap) else gap, tol[0],
+                       bool(row[off["resolved"][0]]), "" if ok else _residuals(row, off, tol))
+
+
+def _one(query, row, off, names, tol):
+    """status, reason, binding, solver, iterations, certificate, wheel states of one answer"""
+    status = _STATUS.get(int(row[off["status"][0]]), "failed")
+    b0 = off["binding"][0]
+    binding = tuple(names[int(c)] for c in row[b0:b0 + int(row[off["n_binding"][0]])])
+    states = row[off["wheel_states"][0]:off["wheel_states"][1]]
+    assumed = (None if states[0] < 0
+               else np.array([_WHEEL[int(s)] for s in states[1:].tolist()]))
+    return (status, _reason(query, row, off, binding, tol), binding, _solver(row, off),
+            int(row[off["qp_solves"][0]] + row[off["newton_steps"][0]]),
+            _certificate(row, off, status, tol), assumed)
+
+
+def result(model, query, kernel, out: np.ndarray, batched: bool, elapsed: float,
+           tol=tuple(TOLERANCE[k] for k in _RESIDUALS)):
+    """The :class:`OptimizeResult` of the answers ``out`` (one row per configuration);
+    ``tol``: the certificate's tolerances the compiled call used."""
+    off, names = _fields(kernel)
+    f0, f1 = off["forward"]
+    if not batched:
+        row = out[0]
+        status, reason, binding, solver, iters, cert, assumed = _one(query, row, off, names, tol)
+        analysis = ForwardResult(row[f0:f1].copy(), model.columns)
+        return OptimizeResult(
+            objective=query.objective, tau=analysis.tau.copy(), status=status, reason=reason,
+            objective_value=float(row[off["objective_value"][0]]), binding=binding,
+            analysis=analysis, solver=solver, iterations=iters, time=elapsed,
+            wheel_states_assumed=assumed, certificate=cert)
+    parts = [_one(query, row, off, names, tol) for row in out]
+    n = out.shape[0]
+    analysis = ForwardResult(np.ascontiguousarray(out[:, f0:f1]), model.columns)
+    return OptimizeResult(
+        objective=query.objective, tau=analysis.tau.copy(),
+        status=np.array([p[0] for p in parts], dtype=object),
+        reason=np.array([p[1] for p in parts], dtype=object),
+        objective_value=out[:, off["objective_value"][0]].copy(),
+        binding=[p[2] for p in parts], analysis=analysis,
+        solver=np.array([p[3] for p in parts], dtype=object),
+        iterations=np.array([p[4] for p in parts]),
+        time=np.full(n, elapsed / max(n, 1)),
+        wheel_states_assumed=[p[6] for p in parts], certificate=[p[5] for p in parts])
