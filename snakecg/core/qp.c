@@ -310,6 +310,20 @@ int sc_qp_solve(const sc_qp *qp, sc_qp_work *w, sc_qp_solution *sol) {
       u[q] = u_plus;
       ++q;
       ++sol->iterations;
+      /* the point and the multipliers of the new active set, solved directly: long steps
+       * (an LP's tiny curvature puts the unconstrained minimiser far away) would otherwise
+       * leave their rounding in x */
+      for (j = 0; j < q; ++j) {
+        rows_act[j] = row[act[j]];
+        hp[j] = sgn[act[j]] > 0 ? bnd[act[j]] : -bnd[act[j]];
+      }
+      if (active_set_optimum(n, qp->H, qp->g, A, q, rows_act, hp, xs, ls, K, rhs, piv)) {
+        for (i = 0; i < n; ++i) x[i] = xs[i];
+        for (j = 0; j < q; ++j) {
+          u[j] = sgn[act[j]] * ls[j];
+          if (act[j] >= neq && u[j] < 0) u[j] = 0.0;
+        }
+      }
       break;
     }
   }
@@ -324,8 +338,15 @@ done:
   for (i = 0; i < m; ++i) sol->lam[i] = 0.0;
   if (active_set_optimum(n, qp->H, qp->g, A, q, rows_act, hp, xs, ls, K, rhs, piv) &&
       rows_hold(n, m, A, qp->lo, qp->hi, xs, SC_QP_FEAS_TOL)) {
-    double f0 = objective(n, qp->H, qp->g, x), f1 = objective(n, qp->H, qp->g, xs);
-    if (f1 <= f0 + 1e-12 * fabs(f0)) {
+    /* taken when its multipliers have their signs (it is then the optimum: the KKT
+     * conditions hold) or it is no worse than the iteration's point */
+    double f0 = objective(n, qp->H, qp->g, x), f1 = objective(n, qp->H, qp->g, xs), big = 0.0;
+    int signs = 1;
+    for (j = 0; j < q; ++j)
+      if (fabs(ls[j]) > big) big = fabs(ls[j]);
+    for (j = 0; j < q; ++j)
+      if (act[j] >= neq && sgn[act[j]] * ls[j] < -1e-12 * big) signs = 0;
+    if (signs || f1 <= f0 + 1e-12 * fabs(f0)) {
       for (i = 0; i < n; ++i) x[i] = xs[i];
       for (j = 0; j < q; ++j) u[j] = sgn[act[j]] * ls[j]; /* back to one-sided below */
     }

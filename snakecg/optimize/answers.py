@@ -28,8 +28,8 @@ _RESIDUALS = ("stationarity", "primal_feasibility", "complementarity", "duality_
 def _fields(kernel):
     """Slices of the answer's fields and the binding names of this kernel's sizes."""
     na, nc = kernel.layout.n_joints, kernel.layout.n_constraints
-    names = ([CONTACT, ELLIPSOID, NORMAL] + [joint_name(j + 1) for j in range(na)]
-             + [wheel_name(i) for i in range(1, nc)])
+    names = tuple([CONTACT, ELLIPSOID, NORMAL] + [joint_name(j + 1) for j in range(na)]
+                  + [wheel_name(i) for i in range(1, nc)])
     off = {k: (o, o + s) for k, (o, s) in kernel.OUT.items()}
     return off, names
 
@@ -118,23 +118,29 @@ def _check(query, row, off) -> str:
 
 
 def _solver(row, off) -> str:
-    m = int(row[off["method"][0]])
+    return _describe(int(row[off["method"][0]]), int(row[off["states"][0]]),
+                     int(row[off["states_solved"][0]]), int(row[off["qp_solves"][0]]),
+                     int(row[off["newton_steps"][0]]))
+
+
+@functools.lru_cache(maxsize=4096)
+def _describe(m, states, solved, qps, newton) -> str:
+    """The methods of flags ``m`` (and the counts of the sliding-wheel search) in words."""
     if m & (METHOD["rank_one"] | METHOD["eigen"]):
         text = ("generalized eigenproblem (rank-one closed form)" if m & METHOD["rank_one"]
                 else "generalized eigenproblem (Jacobi rotations)")
         if m & METHOD["states"]:
-            text += (f"; {int(row[off['states'][0]])} sliding wheel states: "
-                     f"{int(row[off['states_solved'][0]])} solved, "
-                     f"{int(row[off['qp_solves'][0]])} QPs")
+            text += f"; {states} sliding wheel states: {solved} solved, {qps} QPs"
             if m & METHOD["scale"]:
-                text += (f", the ellipsoid by its multiplier ({int(row[off['newton_steps'][0]])}"
-                         f" Newton steps)")
+                text += f", the ellipsoid by its multiplier ({newton} Newton steps)"
         return text
     parts = []
     if m & METHOD["closed_ellipsoid"]:
         parts.append("closed form (ellipsoid)")
     if m & (METHOD["qp"] | METHOD["lp"]):
-        text = "dual active set" + (" (LP)" if m & METHOD["lp"] else "")
+        kinds = [k for k in ("qp", "lp") if m & METHOD[k]]
+        text = "dual active set" + (" (LP)" if kinds == ["lp"] else " (QP, LP)"
+                                    if len(kinds) == 2 else "")
         if m & METHOD["secular"]:
             text += ", ellipsoid multiplier (secular equation)"
         parts.append(text)
@@ -158,15 +164,21 @@ def _certificate(row, off, status, tol) -> Certificate:
                        bool(row[off["resolved"][0]]), "" if ok else _residuals(row, off, tol))
 
 
+@functools.lru_cache(maxsize=4096)
+def _names(names, codes) -> tuple:
+    return tuple(names[c] for c in codes)
+
+
 def _one(query, row, off, names, tol):
     """status, reason, binding, solver, iterations, certificate, wheel states of one answer"""
     status = _STATUS.get(int(row[off["status"][0]]), "failed")
     b0 = off["binding"][0]
-    binding = tuple(names[int(c)] for c in row[b0:b0 + int(row[off["n_binding"][0]])])
+    binding = _names(names, tuple(int(c) for c in row[b0:b0 + int(row[off["n_binding"][0]])]))
     states = row[off["wheel_states"][0]:off["wheel_states"][1]]
     assumed = (None if states[0] < 0
                else np.array([_WHEEL[int(s)] for s in states[1:].tolist()]))
-    return (status, _reason(query, row, off, binding, tol), binding, _solver(row, off),
+    return (status, _reason(query, row, off, binding, tol) if status != "optimal" else "",
+            binding, _solver(row, off),
             int(row[off["qp_solves"][0]] + row[off["newton_steps"][0]]),
             _certificate(row, off, status, tol), assumed)
 
@@ -186,16 +198,37 @@ def result(model, query, kernel, out: np.ndarray, batched: bool, elapsed: float,
             objective_value=float(row[off["objective_value"][0]]), binding=binding,
             analysis=analysis, solver=solver, iterations=iters, time=elapsed,
             wheel_states_assumed=assumed, certificate=cert)
-    parts = [_one(query, row, off, names, tol) for row in out]
+    # a batch: the same per row, with the repeated patterns (statuses, binding limits,
+    # methods) worded once each
     n = out.shape[0]
+    code = out[:, off["status"][0]].astype(np.intp)
+    status = np.array(["optimal", "infeasible", "failed"], dtype=object)[np.minimum(code, 2)]
+    b0 = off["binding"][0]
+    nb = out[:, off["n_binding"][0]].astype(np.intp)
+    width = int(nb.max(initial=0))
+    pattern = np.column_stack([nb, out[:, b0:b0 + width]]).astype(np.intp)
+    uniq, inv = np.unique(pattern, axis=0, return_inverse=True)
+    words = [_names(names, tuple(u[1:1 + u[0]].tolist())) for u in uniq]
+    binding = [words[i] for i in inv.ravel().tolist()]
+    how = out[:, [off[k][0] for k in ("method", "states", "states_solved", "qp_solves",
+                                      "newton_steps")]].astype(np.int64)
+    uniq, inv = np.unique(how, axis=0, return_inverse=True)
+    words = [_describe(*u.tolist()) for u in uniq]
+    solver = np.array(words, dtype=object)[inv.ravel()]
+    reason = np.full(n, "", dtype=object)
+    certificate, assumed = [], []
+    first_state = out[:, off["wheel_states"][0]]
+    for i in range(n):
+        row = out[i]
+        if code[i] != OPTIMAL:
+            reason[i] = _reason(query, row, off, binding[i], tol)
+        certificate.append(_certificate(row, off, status[i], tol))
+        assumed.append(None if first_state[i] < 0 else _one(query, row, off, names, tol)[6])
     analysis = ForwardResult(np.ascontiguousarray(out[:, f0:f1]), model.columns)
     return OptimizeResult(
-        objective=query.objective, tau=analysis.tau.copy(),
-        status=np.array([p[0] for p in parts], dtype=object),
-        reason=np.array([p[1] for p in parts], dtype=object),
-        objective_value=out[:, off["objective_value"][0]].copy(),
-        binding=[p[2] for p in parts], analysis=analysis,
-        solver=np.array([p[3] for p in parts], dtype=object),
-        iterations=np.array([p[4] for p in parts]),
-        time=np.full(n, elapsed / max(n, 1)),
-        wheel_states_assumed=[p[6] for p in parts], certificate=[p[5] for p in parts])
+        objective=query.objective, tau=analysis.tau.copy(), status=status, reason=reason,
+        objective_value=out[:, off["objective_value"][0]].copy(), binding=binding,
+        analysis=analysis, solver=solver,
+        iterations=(out[:, off["qp_solves"][0]] + out[:, off["newton_steps"][0]]).astype(int),
+        time=np.full(n, elapsed / max(n, 1)), wheel_states_assumed=assumed,
+        certificate=certificate)
