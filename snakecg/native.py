@@ -56,8 +56,8 @@ _warned: set[str] = set()
 CORE_SOURCE = Path(__file__).resolve().parent / "core" / "forward.c"
 CORE_SOURCES = tuple(CORE_SOURCE.with_name(name)
                      for name in ("forward.c", "integrate.c", "settle.c", "run.c", "sphere.c",
-                                  "pieces.c", "maps.c", "qp.c", "optimal.c",
-                                  "wheel_states.c"))
+                                  "pieces.c", "maps.c", "qp.c", "optimal.c", "max_sr.c",
+                                  "push.c", "wheel_states.c"))
 #: The header they share (work arrays, contact_system, the held rows' forces).
 CORE_HEADER = CORE_SOURCE.with_name("common.h")
 #: Every header of the runtime core (linalg.h: the small dense linear algebra; qp.h: the dense

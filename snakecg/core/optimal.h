@@ -1,9 +1,10 @@
-/* snakecg's runtime core: the optimal-torque queries (maps.c, optimal.c, wheel_states.c).
+/* snakecg's runtime core: the optimal-torque queries (maps.c, optimal.c, max_sr.c, push.c,
+ * wheel_states.c).
  *
  * One call answers a batch of configurations, each by the same steps (docs/optimize.md):
  * the system at rest with the object placed (the generated contact_system at rest), the
- * all-held maps of eqs. (17), (22), (24), (28), (29), (31), the query's solve (maps.c,
- * optimal.c, wheel_states.c on the QP block of qp.c), the optimality certificate on the
+ * all-held maps of eqs. (17), (22), (24), (28), (29), (31) (maps.c), the query's solve
+ * (max_sr.c, push.c, wheel_states.c on the QP block of qp.c), the optimality certificate on the
  * original problem, the exact forward solve at the answer (forward.c's core_forward) and the
  * forward check of the answer. The query and the answers are flat double vectors laid out in
  * snakecg_layout.h (OPT_IN_*, OPT_OUT_*; snakecg/core/layout.py), read by name in Python
@@ -134,15 +135,28 @@ typedef struct {
   double *out;                /* this configuration's answer (OPT_OUT_*) */
 } sc_optimal;
 
+/* a field of the configuration's answer (OPT_OUT_*), and setting one */
+#define SC_OUT(o, f) ((o)->out + OPT_OUT_##f)
+#define SC_SET(o, f, v) ((o)->out[OPT_OUT_##f] = (v))
+
 /* maps.c */
 SC_INTERNAL int sc_rest_system(sc_work_t *ws, const double *scene, const double *q,
                                sc_rest *rest);
 SC_INTERNAL double sc_state_maps(const sc_rest *rest, const double *scene,
                                  const signed char *state, int with_omega, sc_affine_maps *mp);
-/* optimal.c */
+/* optimal.c: what the kinds share */
 SC_INTERNAL void sc_optimal_bind(sc_optimal *o, int code);
 SC_INTERNAL int sc_optimal_forward(sc_optimal *o, const double *tau, double *row);
 SC_INTERNAL void sc_optimal_certify(sc_optimal *o, int kind, const double *values, int resolved);
+SC_INTERNAL int sc_optimal_certified(const sc_optimal *o);
+SC_INTERNAL void sc_optimal_status(sc_optimal *o, int status, int reason);
+SC_INTERNAL void sc_optimal_if_certified(sc_optimal *o);
+SC_INTERNAL void sc_optimal_count(sc_optimal *o, const sc_qp_solution *s, int qcqp);
+/* max_sr.c: max_sr with every row held (then the sliding states when allowed) */
+SC_INTERNAL void sc_max_sr(sc_optimal *o);
+/* push.c */
+SC_INTERNAL void sc_least_slip_push(sc_optimal *o);
+SC_INTERNAL void sc_strongest_push(sc_optimal *o);
 /* wheel_states.c: max_sr with sliding wheels, after the all-held answer is in o->out */
 SC_INTERNAL void sc_max_sr_sliding(sc_optimal *o);
 /* forward.c (exported) */
