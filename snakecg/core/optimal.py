@@ -102,14 +102,15 @@ class OptimalKernel:
         ``qa`` (C-contiguous float64 ``(N, n_s)``): one C call, split across the shared
         threads for large batches (each configuration is answered alone, so the split does
         not change a bit)."""
-        from ..native import pool, threads
-
         n = qa.shape[0]
         out = np.empty((n, self.out_width))
-        core = model.core
-        args = (model.scene_address, core.constants_address, model.max_iter,
+        args = (model.scene_address, model.core.constants_address, model.max_iter,
                 query_in.ctypes.data)
-        workers = threads(n, PARALLEL_MIN)
+        workers = 1
+        if n >= 2 * PARALLEL_MIN:  # (the thread count costs a system call: not for one)
+            from ..native import pool, threads
+
+            workers = threads(n, PARALLEL_MIN)
         if workers == 1:
             status = self._solve(n, *args, qa.ctypes.data, out.ctypes.data)
         else:

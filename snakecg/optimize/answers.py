@@ -152,16 +152,26 @@ def _describe(m, states, solved, qps, newton) -> str:
 
 
 def _certificate(row, off, status, tol) -> Certificate:
-    kind = CERTIFICATE[int(row[off["certificate"][0]])]
+    fields = row[[off[k][0] for k in ("certificate", "certified", "stationarity",
+                                      "primal_feasibility", "complementarity", "duality_gap",
+                                      "resolved")]].tolist()
+    return _certificate_of(fields, status, tol)
+
+
+def _certificate_of(fields, status, tol) -> Certificate:
+    """The certificate of the answer's fields (kind, certified, the four residuals,
+    resolved)."""
+    kind, ok, st, pf, co, gap, resolved = fields
+    kind = CERTIFICATE[int(kind)]
     if kind == "none":
         return Certificate("none", False, reason=f"no optimality claim: {status}")
-    ok = bool(row[off["certified"][0]])
-    gap = float(row[off["duality_gap"][0]])
-    return Certificate(kind, ok, float(row[off["stationarity"][0]]),
-                       float(row[off["primal_feasibility"][0]]),
-                       float(row[off["complementarity"][0]]),
-                       None if math.isnan(gap) else gap, tol[0],
-                       bool(row[off["resolved"][0]]), "" if ok else _residuals(row, off, tol))
+    ok = bool(ok)
+    gap = None if math.isnan(gap) else gap
+    reason = ""
+    if not ok:
+        reason = "; ".join(f"{name} {v:.3g} > {t:.0e}" for name, v, t in zip(
+            _RESIDUALS, (st, pf, co, gap), tol) if v is not None and not abs(v) <= t)
+    return Certificate(kind, ok, st, pf, co, gap, tol[0], bool(resolved), reason)
 
 
 @functools.lru_cache(maxsize=4096)
@@ -216,14 +226,16 @@ def result(model, query, kernel, out: np.ndarray, batched: bool, elapsed: float,
     words = [_describe(*u.tolist()) for u in uniq]
     solver = np.array(words, dtype=object)[inv.ravel()]
     reason = np.full(n, "", dtype=object)
-    certificate, assumed = [], []
+    for i in np.flatnonzero(code != OPTIMAL).tolist():
+        reason[i] = _reason(query, out[i], off, binding[i], tol)
+    fields = out[:, [off[k][0] for k in ("certificate", "certified", "stationarity",
+                                         "primal_feasibility", "complementarity",
+                                         "duality_gap", "resolved")]].tolist()
+    certificate = [_certificate_of(f, st, tol) for f, st in zip(fields, status.tolist())]
     first_state = out[:, off["wheel_states"][0]]
-    for i in range(n):
-        row = out[i]
-        if code[i] != OPTIMAL:
-            reason[i] = _reason(query, row, off, binding[i], tol)
-        certificate.append(_certificate(row, off, status[i], tol))
-        assumed.append(None if first_state[i] < 0 else _one(query, row, off, names, tol)[6])
+    assumed = [None] * n
+    for i in np.flatnonzero(first_state >= 0).tolist():
+        assumed[i] = _one(query, out[i], off, names, tol)[6]
     analysis = ForwardResult(np.ascontiguousarray(out[:, f0:f1]), model.columns)
     return OptimizeResult(
         objective=query.objective, tau=analysis.tau.copy(), status=status, reason=reason,
