@@ -301,14 +301,24 @@ int SNAKECG_EXPORT(core_optimal)(sc_int n, const double *scene, const double *fw
   sc_optimal o;
   const sc_work_fn fns[] = {SC_CS_WORKS};
   sc_int i;
+#if SC_QP_WORK_DOUBLES(NA1, SC_ROWS_MAX) <= 65536
+  /* the QP block's scratch on the stack (at most 512 kB): a large allocation per call costs
+   * more than the solve when the process's heap is busy (malloc consolidates its bins) */
+  double qd[SC_QP_WORK_DOUBLES(NA1, SC_ROWS_MAX)];
+  sc_int qi[SC_QP_WORK_INTS(NA1, SC_ROWS_MAX)];
+  sc_qp_work_init(&o.qw, NA1, SC_ROWS_MAX, qd, qi);
+#define SC_QP_WORK_FREE(w)
+#else
+  if (sc_qp_work_alloc(&o.qw, NA1, SC_ROWS_MAX)) return -1;
+#define SC_QP_WORK_FREE(w) sc_qp_work_free(w)
+#endif
   o.scene = scene;
   o.fw_constants = fw_constants;
   o.max_iter = max_iter;
   o.in = in;
   read_query(&o);
-  if (sc_work_alloc(&o.ws, fns, SC_COUNT(fns))) return -1;
-  if (sc_qp_work_alloc(&o.qw, NA1, SC_ROWS_MAX)) {
-    sc_work_free(&o.ws);
+  if (sc_work_alloc(&o.ws, fns, SC_COUNT(fns))) {
+    SC_QP_WORK_FREE(&o.qw);
     return -1;
   }
   for (i = 0; i < n; ++i) {
@@ -331,7 +341,8 @@ int SNAKECG_EXPORT(core_optimal)(sc_int n, const double *scene, const double *fw
     }
     objective_and_check(in, o.out);
   }
-  sc_qp_work_free(&o.qw);
+  SC_QP_WORK_FREE(&o.qw);
+#undef SC_QP_WORK_FREE
   sc_work_free(&o.ws);
   return 0;
 }

@@ -23,13 +23,18 @@
    12 * (n) + 4 * (m))
 #define CE_I(n, m) (9 * CE_K(n, m))
 
-int sc_qp_work_alloc(sc_qp_work *w, sc_int n_max, sc_int m_max) {
-  sc_int nd = GI_D(n_max, m_max) + QC_D(n_max, m_max) + CE_D(n_max, m_max) + 64;
-  sc_int ni = GI_I(n_max, m_max) + QC_I(n_max, m_max) + CE_I(n_max, m_max) + 64;
+void sc_qp_work_init(sc_qp_work *w, sc_int n_max, sc_int m_max, double *d, sc_int *i) {
   w->n_max = n_max;
   w->m_max = m_max;
-  w->d = (double *)malloc(sizeof(double) * (size_t)nd);
-  w->i = (sc_int *)malloc(sizeof(sc_int) * (size_t)ni);
+  w->d = d;
+  w->i = i;
+}
+
+int sc_qp_work_alloc(sc_qp_work *w, sc_int n_max, sc_int m_max) {
+  w->n_max = n_max;
+  w->m_max = m_max;
+  w->d = (double *)malloc(sizeof(double) * (size_t)SC_QP_WORK_DOUBLES(n_max, m_max));
+  w->i = (sc_int *)malloc(sizeof(sc_int) * (size_t)SC_QP_WORK_INTS(n_max, m_max));
   if (!w->d || !w->i) {
     sc_qp_work_free(w);
     return -1;

@@ -73,17 +73,27 @@ enum {
   SC_QP_SIZE = 5         /* larger than the workspace */
 };
 
-/* Scratch space for problems of up to n_max variables and m_max rows. */
+/* Scratch space for problems of up to n_max variables and m_max rows: allocated
+ * (sc_qp_work_alloc), or the caller's arrays of SC_QP_WORK_DOUBLES and SC_QP_WORK_INTS
+ * entries (sc_qp_work_init; a model's fixed sizes on the stack: no allocation per call). */
 typedef struct {
   sc_int n_max, m_max;
   double *d;
   sc_int *i;
 } sc_qp_work;
 
+#define SC_QP_WORK_DOUBLES(n, m)                                                         \
+  (6 * (n) * (n) + 10 * (n) + 4 * (m) + 6 + 5 * (n) * (n) + 10 * (n) +                  \
+   7 * (n) * (2 * (m) + 2) + 14 * (2 * (m) + 2) + (2 * (m) + 2) * (2 * (m) + 2) +       \
+   2 * (n) * (n) + 12 * (n) + 4 * (m) + 64)
+#define SC_QP_WORK_INTS(n, m) (4 * (m) + 4 + 4 * (n) + 2 + 3 * (n) + 9 * (2 * (m) + 2) + 64)
+
 /* Relative violation below which a row counts as satisfied (sc_qp_solve). */
 #define SC_QP_FEAS_TOL 1e-12
 
 SC_INTERNAL int sc_qp_work_alloc(sc_qp_work *w, sc_int n_max, sc_int m_max);
+SC_INTERNAL void sc_qp_work_init(sc_qp_work *w, sc_int n_max, sc_int m_max, double *d,
+                                 sc_int *i);
 SC_INTERNAL void sc_qp_work_free(sc_qp_work *w);
 SC_INTERNAL int sc_qp_solve(const sc_qp *qp, sc_qp_work *w, sc_qp_solution *sol);
 SC_INTERNAL int sc_qcqp_ellipsoid(const sc_qp *qp, const double *N, double rho2, double mu0,

@@ -40,7 +40,7 @@ def _g(x):
 
 def _reason(query, row, off, binding, tol) -> str:
     code = _R[int(row[off["reason"][0]])]
-    det = row[off["detail"][0]:off["detail"][1]].tolist()
+    det = list(row[off["detail"][0]:off["detail"][1]])
     nrm = f"({_g(det[0])}, {_g(det[1])})"
     names = ", ".join(binding) if binding else "the limits"
     if code == "none":
@@ -99,7 +99,7 @@ def _residuals(row, off, tol) -> str:
 
 def _check(query, row, off) -> str:
     code = _C[int(row[off["check"][0]])]
-    c = row[off["check_detail"][0]:off["check_detail"][1]].tolist()
+    c = list(row[off["check_detail"][0]:off["check_detail"][1]])
     if code == "tau_max":
         return f"|tau_{int(c[0]) + 1}| = {c[1]:.6g} exceeds tau_max = {c[2]:.6g}"
     if code == "ellipsoid":
@@ -151,11 +151,12 @@ def _describe(m, states, solved, qps, newton) -> str:
     return "; ".join(parts) or "structure"
 
 
+_CERT_FIELDS = ("certificate", "certified", "stationarity", "primal_feasibility",
+                "complementarity", "duality_gap", "resolved")
+
+
 def _certificate(row, off, status, tol) -> Certificate:
-    fields = row[[off[k][0] for k in ("certificate", "certified", "stationarity",
-                                      "primal_feasibility", "complementarity", "duality_gap",
-                                      "resolved")]].tolist()
-    return _certificate_of(fields, status, tol)
+    return _certificate_of([row[off[k][0]] for k in _CERT_FIELDS], status, tol)
 
 
 def _certificate_of(fields, status, tol) -> Certificate:
@@ -180,13 +181,14 @@ def _names(names, codes) -> tuple:
 
 
 def _one(query, row, off, names, tol):
-    """status, reason, binding, solver, iterations, certificate, wheel states of one answer"""
+    """status, reason, binding, solver, iterations, certificate, wheel states of one answer
+    (``row``: its fields before the forward row, as a list of floats)"""
     status = _STATUS.get(int(row[off["status"][0]]), "failed")
     b0 = off["binding"][0]
     binding = _names(names, tuple(int(c) for c in row[b0:b0 + int(row[off["n_binding"][0]])]))
     states = row[off["wheel_states"][0]:off["wheel_states"][1]]
     assumed = (None if states[0] < 0
-               else np.array([_WHEEL[int(s)] for s in states[1:].tolist()]))
+               else np.array([_WHEEL[int(s)] for s in states[1:]]))
     return (status, _reason(query, row, off, binding, tol) if status != "optimal" else "",
             binding, _solver(row, off),
             int(row[off["qp_solves"][0]] + row[off["newton_steps"][0]]),
@@ -200,12 +202,12 @@ def result(model, query, kernel, out: np.ndarray, batched: bool, elapsed: float,
     off, names = _fields(kernel)
     f0, f1 = off["forward"]
     if not batched:
-        row = out[0]
+        row = out[0, :f0].tolist()
         status, reason, binding, solver, iters, cert, assumed = _one(query, row, off, names, tol)
-        analysis = ForwardResult(row[f0:f1].copy(), model.columns)
+        analysis = ForwardResult(out[0, f0:f1].copy(), model.columns)
         return OptimizeResult(
             objective=query.objective, tau=analysis.tau.copy(), status=status, reason=reason,
-            objective_value=float(row[off["objective_value"][0]]), binding=binding,
+            objective_value=row[off["objective_value"][0]], binding=binding,
             analysis=analysis, solver=solver, iterations=iters, time=elapsed,
             wheel_states_assumed=assumed, certificate=cert)
     # a batch: the same per row, with the repeated patterns (statuses, binding limits,
@@ -227,7 +229,7 @@ def result(model, query, kernel, out: np.ndarray, batched: bool, elapsed: float,
     solver = np.array(words, dtype=object)[inv.ravel()]
     reason = np.full(n, "", dtype=object)
     for i in np.flatnonzero(code != OPTIMAL).tolist():
-        reason[i] = _reason(query, out[i], off, binding[i], tol)
+        reason[i] = _reason(query, out[i, :f0].tolist(), off, binding[i], tol)
     fields = out[:, [off[k][0] for k in ("certificate", "certified", "stationarity",
                                          "primal_feasibility", "complementarity",
                                          "duality_gap", "resolved")]].tolist()
@@ -235,7 +237,7 @@ def result(model, query, kernel, out: np.ndarray, batched: bool, elapsed: float,
     first_state = out[:, off["wheel_states"][0]]
     assumed = [None] * n
     for i in np.flatnonzero(first_state >= 0).tolist():
-        assumed[i] = _one(query, out[i], off, names, tol)[6]
+        assumed[i] = _one(query, out[i, :f0].tolist(), off, names, tol)[6]
     analysis = ForwardResult(np.ascontiguousarray(out[:, f0:f1]), model.columns)
     return OptimizeResult(
         objective=query.objective, tau=analysis.tau.copy(), status=status, reason=reason,
