@@ -257,7 +257,8 @@ static int strongest_lam(sc_optimal *o, double *tau, double *lam_max, int *uniqu
   const double *ell = o->held.L;
   int st, j, w;
   if (!o->tau_max) { /* the ellipsoid alone: tau = r N^-1 l / sqrt(l^T N^-1 l) */
-    double Lc[NA * NA], ni[NA], c, ok = 1;
+    double Lc[NA * NA], ni[NA], c;
+    int ok = 1;
     memcpy(Lc, o->rest.N, sizeof Lc);
     memcpy(ni, ell, sizeof ni);
     if (sc_cholesky(NA, Lc, NA, 0.0)) {

@@ -96,7 +96,7 @@ static double objective(sc_int n, const double *H, const double *g, const double
   return 0.5 * sc_quad(n, H, n, x) + sc_dot(g, x, n);
 }
 
-/* every row within its bounds to SC_QP_FEAS_TOL relative (the polish's acceptance test) */
+/* every row within its bounds, to `rel` relative (the active-set optimum's acceptance test) */
 static int rows_hold(sc_int n, sc_int m, const double *A, const double *lo, const double *hi,
                      const double *x, double rel) {
   sc_int r;

@@ -23,7 +23,8 @@
  * exactly (the least-N-norm point of the rows, one more QP), the answer comes with its active
  * set and multipliers, and on each piece of constant active set the solution is a rational
  * function of mu, so Newton's method converges quadratically to the root; an interior point
- * method stops near its barrier parameter's tolerance and needs an active-set polish anyway.
+ * method stops near its barrier parameter's tolerance and needs an exact active-set solve
+ * after it anyway.
  *
  * Matrices are row-major (element (i, j) of an m x n matrix at [i * n + j]). Nothing is
  * allocated but the workspace of sc_qp_work_alloc, which serves every problem up to its sizes.
