@@ -18,8 +18,10 @@
 
 #include <math.h>
 
-/* the core's one integer type (also common.h's; an identical typedef is valid C11) */
+/* the core's one integer type (common.h's, when it came first: C99 allows one typedef) */
+#ifndef SNAKECG_CORE_COMMON_H
 typedef long long int sc_int;
+#endif
 
 static inline double sc_dot(const double *a, const double *b, sc_int n) {
   double s = 0.0;

@@ -12,24 +12,52 @@
  * then w = G_c lam + b, qdd = (M_s^-1 B + Kq L) tau + Kq l0 (eq. 22), a_obj = Ka lam (eq. 24),
  * Xi = Q^T M_s Q as a form in z = (tau, 1) (eq. 28), Omega = A^T I_obj A (eq. 29) and the input
  * metric N = B^T M_s^-1 B (eq. 31). The same maps as the generated interaction_maps (to
- * rounding), from the code the forward check runs anyway. G_HH = L L^T by Cholesky in row
- * order, no pivoting (the forward solve's factorization); its pivot ratio min_j d_j / G_jj,
- * d_j = L_jj^2, is interaction_maps' pivot_ratio.
+ * rounding), from the code the forward check runs anyway. G_HH is factored by the forward
+ * solve's own sc_held_forces (L D L^T in row order, no pivoting); its pivot ratio
+ * min_j d_j / G_jj is interaction_maps' pivot_ratio.
  */
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "snakecg_layout.h"
+#include "common.h"
 #include "optimal.h"
+
+struct sc_rest_work {
+  sc_work_t ws;
+};
+
+/* the work arrays of contact_system (at rest or not), or null when out of memory */
+sc_rest_work *sc_rest_work_new(void) {
+  const sc_work_fn fns[] = {SC_CS_WORKS};
+  sc_rest_work *w = (sc_rest_work *)malloc(sizeof(sc_rest_work));
+  if (w && sc_work_alloc(&w->ws, fns, SC_COUNT(fns))) {
+    free(w);
+    w = 0;
+  }
+  return w;
+}
+
+void sc_rest_work_free(sc_rest_work *w) {
+  if (!w) return;
+  sc_work_free(&w->ws);
+  free(w);
+}
 
 /* contact_system at rest at q, the object placed, and M_s^-1 B, N. Returns 0; 1 when the
  * generated call fails; 2 when M_s is not positive definite. */
-int sc_rest_system(sc_work_t *ws, const double *scene, const double *q, sc_rest *rest) {
+int sc_rest_system(sc_rest_work *ws, const double *scene, const double *q, sc_rest *rest) {
   static const double zero[NS + 3] = {0.0};
+  sc_system sys;
   double Mc[NS * NS], e[NS];
   sc_int i, j;
-  if (sc_contact_system(ws, scene, q, zero, zero, 0, zero, zero, 0, &rest->sys)) return 1;
-  memcpy(Mc, rest->sys.M, sizeof Mc); /* symmetric: column-major is row-major */
+  if (sc_contact_system(&ws->ws, scene, q, zero, zero, 0, zero, zero, 0, &sys)) return 1;
+  memcpy(rest->M, sys.M, sizeof rest->M);
+  memcpy(rest->G, sys.G, sizeof rest->G);
+  memcpy(rest->Kq, sys.Kq, sizeof rest->Kq);
+  memcpy(rest->Ka, sys.Ka, sizeof rest->Ka);
+  memcpy(Mc, sys.M, sizeof Mc); /* symmetric: column-major is row-major */
   if (!sc_cholesky(NS, Mc, NS, 0.0)) return 2;
   for (j = 0; j < NA; ++j) {
     for (i = 0; i < NS; ++i) e[i] = (i == NS - NA + j) ? 1.0 : 0.0;
@@ -46,42 +74,25 @@ int sc_rest_system(sc_work_t *ws, const double *scene, const double *q, sc_rest 
  * definite: the maps are then not filled). */
 double sc_state_maps(const sc_rest *rest, const double *scene, const signed char *state,
                      int with_omega, sc_affine_maps *mp) {
-  const double *G = rest->sys.G, *Kq = rest->sys.Kq, *Ka = rest->sys.Ka, *M = rest->sys.M;
+  const double *G = rest->G, *Kq = rest->Kq, *Ka = rest->Ka, *M = rest->M;
   const double *bounds = scene + SCENE_bounds;
-  double Gh[NC * NC], fixed[NC], rhs[NC], MQ[NS * NA1], ratio = 1.0, Io[3];
-  sc_int held[NC], m = 0, i, j, r, c;
+  double b[NC], lam[NC], MQ[NS * NA1], ratio, Io[3];
+  signed char unforced[NC];
+  sc_int i, j, r, c;
+  /* lam = l0 at tau = 0 (b = 0: the sliding wheels' forces alone), then a column per joint
+   * (b_j = Kq^T e_j on the rows) with the sliding rows' forces at 0, by the forward solve's
+   * own factorization of the held rows (common.h sc_held_forces) */
   for (r = 0; r < NC; ++r) {
-    fixed[r] = state[r] == SLIDE_POS ? bounds[r] : state[r] == SLIDE_NEG ? -bounds[r] : 0.0;
-    if (!isfinite(fixed[r])) fixed[r] = 0.0;
-    if (state[r] == HELD) held[m++] = r;
+    b[r] = 0.0;
+    unforced[r] = (state[r] == SLIDE_POS || state[r] == SLIDE_NEG) ? LOST : state[r];
   }
-  for (i = 0; i < m; ++i)
-    for (j = 0; j < m; ++j) Gh[i * m + j] = G[held[i] + NC * held[j]];
-  if (m && !sc_cholesky(m, Gh, m, 0.0)) return mp->pivot_ratio = 0.0;
-  for (i = 0; i < m; ++i) {
-    double rt = Gh[i * m + i] * Gh[i * m + i] / G[held[i] + NC * held[i]];
-    if (rt < ratio) ratio = rt;
-  }
-  mp->pivot_ratio = ratio;
-  /* lam = L tau + l0: a column per joint (b_j = Kq^T e_j on the rows), then the offset */
-  for (j = 0; j <= NA; ++j) {
-    for (i = 0; i < m; ++i) {
-      double t = 0.0;
-      if (j < NA) t = Kq[(NS - NA + j) + NS * held[i]];
-      else
-        for (c = 0; c < NC; ++c) t += G[held[i] + NC * c] * fixed[c];
-      rhs[i] = -t;
-    }
-    sc_cholesky_solve(m, Gh, m, rhs);
-    for (r = 0; r < NC; ++r) {
-      double v = j < NA ? 0.0 : fixed[r];
-      if (j < NA) mp->L[r * NA + j] = v;
-      else mp->l0[r] = v;
-    }
-    for (i = 0; i < m; ++i) {
-      if (j < NA) mp->L[held[i] * NA + j] = rhs[i];
-      else mp->l0[held[i]] = rhs[i];
-    }
+  ratio = sc_held_forces(state, G, b, bounds, 0, mp->l0);
+  mp->pivot_ratio = ratio > 0 ? ratio : 0.0;
+  if (!(ratio > 0)) return mp->pivot_ratio;
+  for (j = 0; j < NA; ++j) {
+    for (r = 0; r < NC; ++r) b[r] = Kq[(NS - NA + j) + NS * r];
+    sc_held_forces(unforced, G, b, bounds, 0, lam);
+    for (r = 0; r < NC; ++r) mp->L[r * NA + j] = lam[r];
   }
   /* w = G lam + b, qdd = M^-1 B tau + Kq lam, a_obj = Ka lam */
   for (r = 0; r < NC; ++r) {
@@ -143,8 +154,7 @@ double sc_state_maps(const sc_rest *rest, const double *scene, const signed char
  * positive definite; 3 when G_HH is not; -1 when out of memory. */
 int SNAKECG_EXPORT(core_state_maps)(const double *scene, const double *q, const double *state,
                                     double *out) {
-  sc_work_t ws;
-  const sc_work_fn fns[] = {SC_CS_WORKS};
+  sc_rest_work *ws = sc_rest_work_new();
   sc_rest rest;
   sc_affine_maps mp;
   signed char st[NC];
@@ -152,9 +162,9 @@ int SNAKECG_EXPORT(core_state_maps)(const double *scene, const double *q, const 
   double *o = out;
   memset(&mp, 0, sizeof mp);
   for (r = 0; r < NC; ++r) st[r] = (signed char)state[r];
-  if (sc_work_alloc(&ws, fns, SC_COUNT(fns))) return -1;
-  status = sc_rest_system(&ws, scene, q, &rest);
-  sc_work_free(&ws);
+  if (!ws) return -1;
+  status = sc_rest_system(ws, scene, q, &rest);
+  sc_rest_work_free(ws);
   if (status) return status;
   if (!(sc_state_maps(&rest, scene, st, 1, &mp) > 0)) status = 3;
 #define SC_PUT(src, count) (memcpy(o, (src), sizeof(double) * (count)), o += (count))

@@ -75,7 +75,11 @@ static double top_rayleigh(const double *Om, const double *D, double *v) {
       C[i * NA + j] = s;
     }
   for (i = 0; i < r; ++i) /* symmetric part */
-    for (j = 0; j < i; ++j) C[i * NA + j] = C[j * NA + i] = 0.5 * (C[i * NA + j] + C[j * NA + i]);
+    for (j = 0; j < i; ++j) {
+      double h = 0.5 * (C[i * NA + j] + C[j * NA + i]);
+      C[i * NA + j] = h;
+      C[j * NA + i] = h;
+    }
   if (!r) {
     for (i = 0; i < NA; ++i) v[i] = 0.0;
     return 0.0;

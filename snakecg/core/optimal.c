@@ -246,7 +246,7 @@ static void configuration(sc_optimal *o) {
   clear_answer(o->out);
   /* 1. the system at rest and the all-held maps */
   for (r = 0; r < NC; ++r) state[r] = present[r] != 0.0 ? HELD : ABSENT;
-  ok = sc_rest_system(&o->ws, o->scene, o->q, &o->rest) == 0 &&
+  ok = sc_rest_system(o->ws, o->scene, o->q, &o->rest) == 0 &&
        sc_state_maps(&o->rest, o->scene, state, 1, &o->held) > o->fw_constants[0];
   for (i = 0; ok && i < NC * NA; ++i) ok = isfinite(o->held.L[i]);
   for (i = 0; ok && i < NA1 * NA1; ++i) ok = isfinite(o->held.Xih[i]);
@@ -299,7 +299,6 @@ int SNAKECG_EXPORT(core_optimal)(sc_int n, const double *scene, const double *fw
                                  sc_int max_iter, const double *in, const double *q,
                                  double *out) {
   sc_optimal o;
-  const sc_work_fn fns[] = {SC_CS_WORKS};
   sc_int i;
 #if SC_QP_WORK_DOUBLES(NA1, SC_ROWS_MAX) <= 65536
   /* the QP block's scratch on the stack (at most 512 kB): a large allocation per call costs
@@ -317,7 +316,8 @@ int SNAKECG_EXPORT(core_optimal)(sc_int n, const double *scene, const double *fw
   o.max_iter = max_iter;
   o.in = in;
   read_query(&o);
-  if (sc_work_alloc(&o.ws, fns, SC_COUNT(fns))) {
+  o.ws = sc_rest_work_new();
+  if (!o.ws) {
     SC_QP_WORK_FREE(&o.qw);
     return -1;
   }
@@ -343,7 +343,7 @@ int SNAKECG_EXPORT(core_optimal)(sc_int n, const double *scene, const double *fw
   }
   SC_QP_WORK_FREE(&o.qw);
 #undef SC_QP_WORK_FREE
-  sc_work_free(&o.ws);
+  sc_rest_work_free(o.ws);
   return 0;
 }
 

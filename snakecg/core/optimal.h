@@ -18,7 +18,13 @@
 
 #include <math.h>
 
+/* the sizes, the row states and the integer type of common.h (its types alone: the
+ * generated functions are called by maps.c only, which includes common.h whole first) */
+#ifndef SNAKECG_CORE_COMMON_H
+#define SC_TYPES_ONLY
 #include "common.h"
+#undef SC_TYPES_ONLY
+#endif
 #include "qp.h"
 
 #define NA SNAKECG_NA
@@ -86,12 +92,18 @@ enum {
   SC_METHOD_SCALE = 512        /* t-scale search of a state cut by the ellipsoid */
 };
 
-/* The system at rest at one configuration, the object placed. */
+/* The system at rest at one configuration, the object placed: from the generated
+ * contact_system (column-major as it writes them) M_s (eq. 4), G_c (eq. 14), Kq = M_s^-1 A_s^T
+ * and Ka = I_obj^-1 A_o^T (eq. 18); then M_s^-1 B and the input metric N = B^T M_s^-1 B
+ * (eq. 31), row-major (B selects the joints). */
 typedef struct {
-  sc_system sys;      /* the generated contact_system at rest (common.h) */
-  double MB[NS * NA]; /* M_s^-1 B (row-major; B selects the joints) */
-  double N[NA * NA];  /* the input metric B^T M_s^-1 B (eq. 31) */
+  double M[NS * NS], G[NC * NC], Kq[NS * NC], Ka[3 * NC];
+  double MB[NS * NA];
+  double N[NA * NA];
 } sc_rest;
+
+/* the generated functions' work arrays (maps.c) */
+typedef struct sc_rest_work sc_rest_work;
 
 /* The affine maps of one row state at rest: lam = L tau + l0 (eq. 17), w = W tau + w0 (the
  * rows' accelerations), qdd = Q tau + q0 (eq. 22), a_obj = A tau + a0 (eq. 24), Xi of eq. (28)
@@ -113,7 +125,7 @@ typedef struct {
   const double *fw_constants; /* core_forward's constants */
   sc_int max_iter;            /* core_forward's active-set passes */
   const double *in;           /* the query (OPT_IN_*) */
-  sc_work_t ws;               /* the generated functions' work arrays */
+  sc_rest_work *ws;           /* the generated functions' work arrays */
   sc_qp_work qw;              /* the QP block's */
   /* the query */
   int kind, any_slide;
@@ -140,7 +152,9 @@ typedef struct {
 #define SC_SET(o, f, v) ((o)->out[OPT_OUT_##f] = (v))
 
 /* maps.c */
-SC_INTERNAL int sc_rest_system(sc_work_t *ws, const double *scene, const double *q,
+SC_INTERNAL sc_rest_work *sc_rest_work_new(void);
+SC_INTERNAL void sc_rest_work_free(sc_rest_work *ws);
+SC_INTERNAL int sc_rest_system(sc_rest_work *ws, const double *scene, const double *q,
                                sc_rest *rest);
 SC_INTERNAL double sc_state_maps(const sc_rest *rest, const double *scene,
                                  const signed char *state, int with_omega, sc_affine_maps *mp);
