@@ -15,8 +15,8 @@
 /* doubles and sc_ints of each region, as carved by the function that uses it */
 #define GI_D(n, m) (6 * (n) * (n) + 10 * (n) + 2 + 2 * (2 * (m) + 2))
 #define GI_I(n, m) (2 * (2 * (m) + 2) + 2 * (n) + 2 * (n) + 2)
-#define QC_D(n, m) (5 * (n) * (n) + 10 * (n))
-#define QC_I(n, m) ((n) + 2 * (n))
+#define QC_D(n, m) (5 * (n) * (n) + 12 * (n))
+#define QC_I(n, m) (2 * (n) + 2 * (n))
 #define CE_K(n, m) (2 * (m) + 2)
 #define CE_D(n, m)                                                                  \
   (7 * (n) * CE_K(n, m) + 14 * CE_K(n, m) + CE_K(n, m) * CE_K(n, m) + 2 * (n) * (n) + \
@@ -220,22 +220,19 @@ int sc_qp_solve(const sc_qp *qp, sc_qp_work *w, sc_qp_solution *sol) {
     a = A + row[p] * n;
     sigma = (double)sgn[p];
     for (;;) { /* step 2: the primal and dual directions and the step length */
-      double t1 = INFINITY, t2 = INFINITY, t, zn, znorm = 0.0, hnorm = 0.0;
+      double t1 = INFINITY, t2 = INFINITY, t, zn = 0.0, dn = 0.0;
       sc_int dropped = -1;
       for (k = 0; k < n; ++k) { /* d = J^T n_p */
         double s = 0.0;
         for (i = 0; i < n; ++i) s += J[i * n + k] * a[i];
         d[k] = sigma * s;
+        dn += d[k] * d[k];
+        if (k >= q) zn += d[k] * d[k]; /* n_p . z = |d_2|^2 */
       }
-      for (i = 0; i < n; ++i) { /* z = J_2 d_2; H^-1 n_p = J d for its scale */
-        double s = 0.0, h = 0.0;
-        for (k = 0; k < n; ++k) {
-          h += J[i * n + k] * d[k];
-          if (k >= q) s += J[i * n + k] * d[k];
-        }
+      for (i = 0; i < n; ++i) { /* z = J_2 d_2 */
+        double s = 0.0;
+        for (k = q; k < n; ++k) s += J[i * n + k] * d[k];
         z[i] = s;
-        znorm += s * s;
-        hnorm += h * h;
       }
       for (j = q - 1; j >= 0; --j) { /* r = R^-1 d_1 */
         double s = d[j];
@@ -247,10 +244,10 @@ int sc_qp_solve(const sc_qp *qp, sc_qp_work *w, sc_qp_solution *sol) {
           t1 = u[j] / r[j];
           dropped = j;
         }
-      zn = sigma * sc_dot(z, a, n);
       sp = sigma * sc_dot(a, x, n) - bnd[p];
-      /* z of the size of rounding: n_p depends on the active normals (no primal step) */
-      if (znorm > 1e-18 * hnorm && zn > 0) t2 = sp >= 0 ? 0.0 : -sp / zn;
+      /* d_2 of the size of rounding: n_p depends on the active normals (no primal step; the
+       * test in J's coordinates, where H's conditioning has been taken out) */
+      if (zn > 1e-20 * dn) t2 = sp >= 0 ? 0.0 : -sp / zn;
       t = t2 < t1 ? t2 : t1;
       if (!isfinite(t)) {
         if (p < neq && fabs(sp) <= SC_QP_FEAS_TOL * (cn[p] + fabs(bnd[p]))) break; /* a
@@ -404,9 +401,10 @@ static void active_bounds(const sc_qp *qp, const sc_int *act, sc_int q, const do
 int sc_qcqp_ellipsoid(const sc_qp *qp, const double *N, double rho2, double mu0, sc_qp_work *w,
                       sc_qp_solution *sol) {
   const sc_int n = qp->n, m = qp->m;
-  double *D = qc_d(w), *Hm, *xp, *xn, *nx, *dx, *bact, *lamp, *lamd, *kr, *K;
-  double phi, psi, mu, lo = 0.0, hi = INFINITY, inv_rho = 1.0 / sqrt(rho2);
-  sc_int *I = qc_i(w), *act, *piv, q = 0, i, j, k, solves = 0, newton = 0;
+  double *D = qc_d(w), *Hm, *xp, *xn, *nx, *dx, *bact, *lamp, *lamd, *kr, *K, *x_in, *lam_in;
+  double phi = rho2, psi = 0.0, mu, lo = 0.0, hi = INFINITY, inv_rho = 1.0 / sqrt(rho2);
+  double mu_in = 0.0;
+  sc_int *I = qc_i(w), *act, *piv, *act_in, q = 0, q_in = -1, i, j, k, solves = 0, newton = 0;
   int st;
   sc_qp sub = *qp;
   if (n > w->n_max || m > w->m_max) return SC_QP_SIZE;
@@ -420,8 +418,11 @@ int sc_qcqp_ellipsoid(const sc_qp *qp, const double *N, double rho2, double mu0,
   lamd = lamp + n;
   kr = lamd + n; /* 2 n */
   K = kr + 2 * n; /* (2 n)^2 */
+  x_in = K + 4 * n * n;
+  lam_in = x_in + n;
   act = I;
   piv = act + n; /* 2 n */
+  act_in = piv + 2 * n;
   sub.H = Hm;
   /* phi(infinity): the least-N-norm point of the rows; outside the ellipsoid, no root */
   for (i = 0; i < n; ++i) nx[i] = 0.0;
@@ -454,8 +455,18 @@ int sc_qcqp_ellipsoid(const sc_qp *qp, const double *N, double rho2, double mu0,
       sc_matvec(n, n, N, n, xp, nx);
       phi = sc_dot(xp, nx, n);
       psi = 1.0 / sqrt(phi) - inv_rho;
-      if (psi < 0) lo = mu;
-      else hi = mu;
+      if (psi < 0) {
+        lo = mu;
+      } else { /* the latest point inside: the answer should the root fall between pieces */
+        hi = mu;
+        for (i = 0; i < n; ++i) x_in[i] = xp[i];
+        for (j = 0; j < q; ++j) {
+          act_in[j] = act[j];
+          lam_in[j] = lamp[j];
+        }
+        q_in = q;
+        mu_in = mu;
+      }
       if (fabs(phi / rho2 - 1.0) <= 4e-15 || (isfinite(hi) && hi - lo <= 4e-16 * hi))
         goto converged;
       /* inside for every mu down to rounding of its natural size: the root is mu = 0 (a
@@ -488,6 +499,17 @@ int sc_qcqp_ellipsoid(const sc_qp *qp, const double *N, double rho2, double mu0,
   sol->newton = newton;
   return SC_QP_ITERATIONS;
 converged:
+  if (psi < 0 && fabs(phi / rho2 - 1.0) > 4e-15 && q_in >= 0) {
+    /* the bracket closed on a point outside by more than rounding (phi jumps between two
+     * pieces there): the inside end of the bracket, as close to the root as mu's rounding */
+    for (i = 0; i < n; ++i) xp[i] = x_in[i];
+    for (j = 0; j < q_in; ++j) {
+      act[j] = act_in[j];
+      lamp[j] = lam_in[j];
+    }
+    q = q_in;
+    mu = mu_in;
+  }
   for (i = 0; i < n; ++i) sol->x[i] = xp[i];
   for (i = 0; i < m; ++i) sol->lam[i] = 0.0;
   for (j = 0; j < q; ++j) {

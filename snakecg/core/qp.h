@@ -84,10 +84,10 @@ typedef struct {
 } sc_qp_work;
 
 #define SC_QP_WORK_DOUBLES(n, m)                                                         \
-  (6 * (n) * (n) + 10 * (n) + 4 * (m) + 6 + 5 * (n) * (n) + 10 * (n) +                  \
+  (6 * (n) * (n) + 10 * (n) + 4 * (m) + 6 + 5 * (n) * (n) + 12 * (n) +                  \
    7 * (n) * (2 * (m) + 2) + 14 * (2 * (m) + 2) + (2 * (m) + 2) * (2 * (m) + 2) +       \
    2 * (n) * (n) + 12 * (n) + 4 * (m) + 64)
-#define SC_QP_WORK_INTS(n, m) (4 * (m) + 4 + 4 * (n) + 2 + 3 * (n) + 9 * (2 * (m) + 2) + 64)
+#define SC_QP_WORK_INTS(n, m) (4 * (m) + 4 + 4 * (n) + 2 + 4 * (n) + 9 * (2 * (m) + 2) + 64)
 
 /* Relative violation below which a row counts as satisfied (sc_qp_solve). */
 #define SC_QP_FEAS_TOL 1e-12
