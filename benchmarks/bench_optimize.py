@@ -23,8 +23,8 @@ Push tasks are feasible by construction: the direction is the contact normal, an
 before timing). Wall-clock and thread CPU time are both reported: on a shared machine the
 wall clock includes time the process waited for a core.
 
-    python benchmarks/bench_optimize.py [--n 200] [--joints 3 6] [--anchors-only]
-                                        [--batch-only] [--runs 5]
+    python benchmarks/bench_optimize.py [--n 200] [--joints 3 6] [--runs 5]
+                                        [--anchors-only | --batch-only | --kinds-only]
 """
 
 from __future__ import annotations
@@ -351,12 +351,15 @@ def main(argv=None) -> int:
     p.add_argument("--anchors-only", action="store_true",
                    help="only the side-by-side comparison with the direct solves on maps")
     p.add_argument("--batch-only", action="store_true", help="only the batches")
+    p.add_argument("--kinds-only", action="store_true",
+                   help="only every kind at each joint count and the sweep")
     args = p.parse_args(argv)
-    if not args.batch_only:
+    only = args.anchors_only or args.batch_only or args.kinds_only
+    if args.anchors_only or not only:
         print_anchors(args.n)
-    if not args.anchors_only:
+    if args.batch_only or not only:
         batches(args.batch, args.runs)
-    if not (args.anchors_only or args.batch_only):
+    if args.kinds_only or not only:
         every_kind(args)
     return 0
 

@@ -55,21 +55,25 @@ QP_STATUS = {0: "optimal", 1: "the linear limits have no common point",
              4: "the ellipsoid and the linear limits do not intersect",
              5: "the problem is too large"}
 
-#: Batches of at least this many configurations per thread may be split across threads (a
-#: configuration takes 3-10 us at n_a = 3: a thread's share is then worth its start).
-PARALLEL_MIN = 256
+#: Configurations per thread below which a batch is not split (SNAKECG_THREADS set above 1).
+PARALLEL_MIN = 1024
 
 
-def _idle_cores() -> int:
-    """Cores not busy with other work (one at least), from the load average: a batch split
-    across threads runs no faster than on one when the other cores are taken (measured:
-    1,000 configurations took 13 us per query on two threads against 9 us on one at a load
-    average of 10 on two cores), and faster when they are free."""
-    try:
-        load = os.getloadavg()[0]
-    except OSError:
+def _workers(n: int) -> int:
+    """Threads for a batch of ``n`` configurations: one, unless ``SNAKECG_THREADS`` asks for
+    more and each of them gets ``PARALLEL_MIN`` configurations at least. A configuration takes
+    a few microseconds, so the split pays only with cores to spare, which a shared machine
+    rarely has: on the 2-core machine of docs/performance.md, shared with other work, two
+    threads never ran faster than one (16,000 configurations: 4.6 us per configuration
+    either way; the second core was busy), so one thread is the default."""
+    raw = os.environ.get("SNAKECG_THREADS")
+    if not raw or n < 2 * PARALLEL_MIN:
         return 1
-    return max(1, int((os.cpu_count() or 1) - load + 1.5))  # (this thread's own share: + 1)
+    try:
+        asked = int(raw)
+    except ValueError:
+        return 1
+    return max(1, min(asked, n // PARALLEL_MIN))
 
 
 def _ptr(a):
@@ -114,20 +118,18 @@ class OptimalKernel:
     def solve(self, model, query_in: np.ndarray, qa: np.ndarray) -> np.ndarray:
         """The answers ``(N, width)`` of the query vector ``query_in`` at the configurations
         ``qa`` (C-contiguous float64 ``(N, n_s)``): one C call, split across the shared
-        threads for large batches (each configuration is answered alone, so the split does
-        not change a bit)."""
+        threads only when asked (:func:`_workers`; each configuration is answered alone, so
+        the split does not change a bit)."""
         n = qa.shape[0]
         out = np.empty((n, self.out_width))
         args = (model.scene_address, model.core.constants_address, model.max_iter,
                 query_in.ctypes.data)
-        workers = 1
-        if n >= 2 * PARALLEL_MIN:  # (the thread count costs a system call: not for one)
-            from ..native import pool, threads
-
-            workers = min(threads(n, PARALLEL_MIN), _idle_cores())
+        workers = _workers(n)
         if workers == 1:
             status = self._solve(n, *args, qa.ctypes.data, out.ctypes.data)
         else:
+            from ..native import pool
+
             bounds = np.linspace(0, n, workers + 1).astype(np.int64)
             qp, op = qa.ctypes.data, out.ctypes.data
             ns, w = qa.shape[1], self.out_width
