@@ -376,18 +376,8 @@ int SNAKECG_EXPORT(core_qp_solve)(sc_int n, sc_int m, const double *H, const dou
     sc_qp_work_free(&w);
     return -1;
   }
-  qp.n = n;
-  qp.m = m;
-  qp.H = H;
-  qp.g = g;
-  qp.A = A;
-  qp.lo = lo;
-  qp.hi = hi;
-  s.x = x;
-  s.lam = lam;
-  s.active = act;
-  s.mu = 0.0;
-  s.newton = 0;
+  sc_qp_define(&qp, n, m, H, g, A, lo, hi);
+  sc_qp_solution_define(&s, x, lam, act);
   st = N ? sc_qcqp_ellipsoid(&qp, N, rho2, mu0, &w, &s) : sc_qp_solve(&qp, &w, &s);
   info[0] = (double)s.n_active;
   info[1] = (double)s.iterations;

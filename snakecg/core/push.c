@@ -148,16 +148,8 @@ static int solve_push(sc_optimal *o, int lp, int has_lo, double lam_lo, int equa
     for (i = 0; i < NA; ++i) p.H[i * NA + i] += reg;
     for (j = 0; j < NA; ++j) p.g[j] = 0.0;
   }
-  qp.n = NA;
-  qp.m = p.m;
-  qp.H = p.H;
-  qp.g = p.g;
-  qp.A = p.A;
-  qp.lo = p.lo;
-  qp.hi = p.hi;
-  s.x = y;
-  s.lam = lam;
-  s.active = act;
+  sc_qp_define(&qp, NA, p.m, p.H, p.g, p.A, p.lo, p.hi);
+  sc_qp_solution_define(&s, y, lam, act);
   st = sc_qp_solve(&qp, &o->qw, &s);
   sc_optimal_count(o, &s, 0);
   o->out[OPT_OUT_method] = (int)o->out[OPT_OUT_method] | (lp ? SC_METHOD_LP : SC_METHOD_QP);

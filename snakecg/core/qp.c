@@ -398,6 +398,17 @@ static void active_bounds(const sc_qp *qp, const sc_int *act, sc_int q, const do
   }
 }
 
+/* a point of a piece with its active set and their multipliers, copied */
+static void copy_piece(sc_int n, sc_int q, const double *x, const sc_int *act, const double *lam,
+                       double *x_to, sc_int *act_to, double *lam_to) {
+  sc_int i;
+  for (i = 0; i < n; ++i) x_to[i] = x[i];
+  for (i = 0; i < q; ++i) {
+    act_to[i] = act[i];
+    lam_to[i] = lam[i];
+  }
+}
+
 int sc_qcqp_ellipsoid(const sc_qp *qp, const double *N, double rho2, double mu0, sc_qp_work *w,
                       sc_qp_solution *sol) {
   const sc_int n = qp->n, m = qp->m;
@@ -459,11 +470,7 @@ int sc_qcqp_ellipsoid(const sc_qp *qp, const double *N, double rho2, double mu0,
         lo = mu;
       } else { /* the latest point inside: the answer should the root fall between pieces */
         hi = mu;
-        for (i = 0; i < n; ++i) x_in[i] = xp[i];
-        for (j = 0; j < q; ++j) {
-          act_in[j] = act[j];
-          lam_in[j] = lamp[j];
-        }
+        copy_piece(n, q, xp, act, lamp, x_in, act_in, lam_in);
         q_in = q;
         mu_in = mu;
       }
@@ -502,11 +509,7 @@ converged:
   if (psi < 0 && fabs(phi / rho2 - 1.0) > 4e-15 && q_in >= 0) {
     /* the bracket closed on a point outside by more than rounding (phi jumps between two
      * pieces there): the inside end of the bracket, as close to the root as mu's rounding */
-    for (i = 0; i < n; ++i) xp[i] = x_in[i];
-    for (j = 0; j < q_in; ++j) {
-      act[j] = act_in[j];
-      lamp[j] = lam_in[j];
-    }
+    copy_piece(n, q_in, x_in, act_in, lam_in, xp, act, lamp);
     q = q_in;
     mu = mu_in;
   }

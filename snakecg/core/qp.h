@@ -65,6 +65,27 @@ typedef struct {
   double mu;         /* sc_qcqp_ellipsoid: the ellipsoid's multiplier (0: not active) */
 } sc_qp_solution;
 
+/* a problem's and a solution's fields at once */
+static inline void sc_qp_define(sc_qp *qp, sc_int n, sc_int m, const double *H, const double *g,
+                                const double *A, const double *lo, const double *hi) {
+  qp->n = n;
+  qp->m = m;
+  qp->H = H;
+  qp->g = g;
+  qp->A = A;
+  qp->lo = lo;
+  qp->hi = hi;
+}
+
+static inline void sc_qp_solution_define(sc_qp_solution *s, double *x, double *lam,
+                                         sc_int *active) {
+  s->x = x;
+  s->lam = lam;
+  s->active = active;
+  s->n_active = s->iterations = s->newton = 0;
+  s->mu = 0.0;
+}
+
 enum {
   SC_QP_OPTIMAL = 0,
   SC_QP_INFEASIBLE = 1,  /* the linear rows have no common point */

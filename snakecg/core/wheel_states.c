@@ -200,16 +200,8 @@ static int at_scale(sc_optimal *o, const state_problem *p, const double *Ns, dou
     lo[r] = p->lo[r] - p->A[r * NA1 + NA] * t;
     hi[r] = p->hi[r] - p->A[r * NA1 + NA] * t;
   }
-  qp.n = NA;
-  qp.m = p->m;
-  qp.H = H;
-  qp.g = g;
-  qp.A = A;
-  qp.lo = lo;
-  qp.hi = hi;
-  s.x = y;
-  s.lam = lam;
-  s.active = act;
+  sc_qp_define(&qp, NA, p->m, H, g, A, lo, hi);
+  sc_qp_solution_define(&s, y, lam, act);
   *mu = 0.0;
   st = sc_qp_solve(&qp, &o->qw, &s);
   o->out[OPT_OUT_qp_solves] += 1.0;
@@ -410,16 +402,8 @@ void sc_max_sr_sliding(sc_optimal *o) {
     decode(o, rows, nr, order[s].index, st);
     sc_state_maps(&o->rest, o->scene, st, 0, &mp);
     build(o, &mp, st, penalty(o, best), 1, &p);
-    qp.n = NA1;
-    qp.m = p.m;
-    qp.H = p.H;
-    qp.g = p.g;
-    qp.A = p.A;
-    qp.lo = p.lo;
-    qp.hi = p.hi;
-    sol.x = zs;
-    sol.lam = lam;
-    sol.active = act;
+    sc_qp_define(&qp, NA1, p.m, p.H, p.g, p.A, p.lo, p.hi);
+    sc_qp_solution_define(&sol, zs, lam, act);
     ++solved;
     o->out[OPT_OUT_qp_solves] += 1.0;
     if (sc_qp_solve(&qp, &o->qw, &sol) != SC_QP_OPTIMAL) continue;
