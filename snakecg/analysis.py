@@ -64,6 +64,9 @@ class Extremes:
     #: exact linear scenarios.
     certified: object = None
     pieces: int = 0
+    #: Per configuration: '' where answered, else why not, in one line (the values are NaN
+    #: and ``certified`` False there: e.g. a numerically singular mass matrix).
+    reason: object = None
 
     def _squeeze(self):
         for d in (self.max, self.min, self.tau_max, self.tau_min, self.min_kept,
@@ -72,6 +75,8 @@ class Extremes:
                 d[k] = d[k][0]
         if self.certified is not None:
             self.certified = self.certified[0]
+        if self.reason is not None:
+            self.reason = self.reason[0]
         return self
 
 
@@ -162,6 +167,42 @@ class _Whitening:
         return vals, self.LinvT @ W
 
 
+#: Eigenvalues of ``Omega + Xi`` (whitened) below this fraction of the largest are its null
+#: space (rounding: the forms carry an absolute error of about 1e-16 of the largest).
+RANK_TOL = 1e-12
+
+
+def _range_geig(Om: np.ndarray, D: np.ndarray):
+    """Largest and smallest Rayleigh quotient ``u^T Om u / u^T D u`` of batched symmetric
+    ``Om``, ``D`` (``D`` positive semidefinite, ``Om`` zero on its null space) over the
+    range of ``D``: ``((vmax, umax), (vmin, umin))`` with ``u^T D u = 1``.
+
+    Rank-revealing: ``D = U diag(d) U^T`` (eigh); the directions with ``d <= RANK_TOL
+    max d`` are ``D``'s null space, where the quotient is 0/0 and means nothing (a torque that
+    moves nothing). On the others, ``C = S^-1/2 U^T Om U S^-1/2``; the null directions get the
+    eigenvalue -1 in ``C`` (decoupled: below every quotient, which lies in [0, 1] for sr), so
+    the smallest real quotient is the first eigenvalue above -1/2."""
+    n, k = D.shape[0], D.shape[-1]
+    d, U = np.linalg.eigh(0.5 * (D + np.swapaxes(D, -1, -2)))
+    top = np.maximum(d[:, -1:], 1e-300)
+    keep = d > RANK_TOL * top
+    sinv = np.where(keep, 1.0 / np.sqrt(np.where(keep, d, 1.0)), 0.0)
+    P = U * sinv[:, None, :]  # (n, k, k): columns U_j / sqrt(d_j), 0 for the null space
+    C = np.swapaxes(P, -1, -2) @ Om @ P
+    C = 0.5 * (C + np.swapaxes(C, -1, -2))
+    C = C - np.where(keep, 0.0, 1.0)[:, :, None] * np.eye(k)  # -1 on the null directions
+    vals, Y = np.linalg.eigh(C)
+    V = P @ Y
+    rows = np.arange(n)
+    imax = np.full(n, k - 1)
+    imin = np.argmax(vals > -0.5, axis=1)
+    none = ~np.any(keep, axis=1)  # D = 0: nothing moves at all; no quotient
+    vmax, vmin = vals[rows, imax], vals[rows, imin]
+    vmax = np.where(none, np.nan, vmax)
+    vmin = np.where(none, np.nan, vmin)
+    return (vmax, V[rows, :, imax]), (vmin, V[rows, :, imin])
+
+
 def _signed(V: np.ndarray, c: np.ndarray, keep: bool) -> np.ndarray:
     """Flip columns of V so that ``c . v >= 0`` (keep) or ``<= 0`` (lose)."""
     s = np.einsum("bi,bij->bj", c, V)
@@ -240,20 +281,18 @@ def _quadratic_extremes_numpy(model, qa):
         ex.min_kept[m] = kmin
         ex.tau_min_kept[m] = Vk_keep[:, :, 0]
     # slippage ratio: Rayleigh quotient of (Omega, Omega + Xi) on the kept half, 0 when lost.
-    # Whitened with N; Omega + Xi is only semidefinite where the wheels brace the snake (a
-    # torque direction that moves nothing), so it is regularised relative to its largest
-    # eigenvalue before the second whitening.
+    # Omega + Xi is only semidefinite where the wheels brace the snake (a torque direction
+    # that moves nothing, and pushes nothing: Omega <= Omega + Xi), so the quotient is taken
+    # on the range of Omega + Xi (rank-revealing, _range_geig), where it is defined.
     Omw = W.form(kept["norm_a_obj"])
     Dw = W.form(kept["norm_a_obj"] + kept["norm_qdd"])
-    top = _eigh_small(Dw, vectors=False)[0][:, -1]
-    Dw = Dw + (1e-12 * np.maximum(top, 1e-300))[:, None, None] * np.eye(na)
-    vs, Us = _Whitening(Dw).geig(Omw)
-    Vs = _signed(W.LinvT @ Us, c, keep=True)
-    for col, store_v, store_t in ((-1, ex.max, ex.tau_max), (0, ex.min_kept, ex.tau_min_kept)):
-        v = Vs[:, :, col]
+    (vmax, Umax), (vmin, Umin) = _range_geig(Omw, Dw)
+    for v_, u_, store_v, store_t in ((vmax, Umax, ex.max, ex.tau_max),
+                                     (vmin, Umin, ex.min_kept, ex.tau_min_kept)):
+        v = _signed((W.LinvT @ u_[:, :, None]), c, keep=True)[:, :, 0]
         norm = np.sqrt(np.einsum("bi,bij,bj->b", v, N, v))
-        store_v["sr"] = np.clip(vs[:, col], 0.0, 1.0)
-        store_t["sr"] = v / norm[:, None]
+        store_v["sr"] = np.clip(v_, 0.0, 1.0)
+        store_t["sr"] = v / np.maximum(norm, 1e-300)[:, None]
     ex.min["sr"] = np.zeros(n)
     ex.tau_min["sr"] = -ex.tau_max["sr"]
     return ex
@@ -325,6 +364,12 @@ def _quadratic_extremes(model, qa):
             d, e = getattr(ex, attr), getattr(again, attr)
             for k in d:
                 d[k][sub] = e[k]
+    # The closed form's largest sr is a root of a cubic with a double root at 0 (Omega has
+    # rank one): good to ~1e-7 only, while its eigenvector is good to ~1e-8 and the quotient
+    # there to its square. The value reported is the exact forward solve's at that torque.
+    at = model.forward(qa, ex.tau_max["sr"])
+    ok = at.contact & ~at.singular & np.isfinite(at.sr)
+    ex.max["sr"] = np.where(ok, at.sr, ex.max["sr"])
     return ex
 
 
@@ -449,16 +494,88 @@ def extremes(model, q, *, samples: int | None = None, refine: int = 10,
     bad = [m for m in refined if m not in METRICS]
     if bad:
         raise InputError(f"refined takes metric names from {METRICS}, got {bad[0]!r}")
+    ex = _answered(model, qa, lambda sub: _solve(model, sub, exact, samples, refine, starts,
+                                                  tuple(refined)))
+    return ex if batched else ex._squeeze()
+
+
+def _solve(model, qa, exact, samples, refine, starts, refined):
     if model.scene.scenario == "wheels" and exact:
         from .piecewise import wheel_extremes
 
         ex = wheel_extremes(model, qa)
     elif model.scene.scenario == "wheels":
-        ex = _wheels_extremes(model, qa, samples, refine, starts, tuple(refined))
+        ex = _wheels_extremes(model, qa, samples, refine, starts, refined)
         ex.certified = np.zeros(qa.shape[0], bool)
     else:
         ex = _quadratic_extremes(model, qa)
         ex.certified = np.ones(qa.shape[0], bool)
+    return ex
+
+
+def _answered(model, qa, solve) -> Extremes:
+    """``solve(qa)`` on the configurations that can be answered; NaN, ``certified`` False and
+    the cause in ``reason`` for the others. A configuration is screened by the forward solve
+    at zero torque (a numerically singular mass matrix or a system that is not finite in
+    float64 has no answer at any torque), and a numerical failure of a batch is retried one
+    configuration at a time, so no LAPACK exception reaches the caller."""
+    from .rows import NO_ANSWER, reason_of
+
+    n = qa.shape[0]
+    res = model.forward(qa, np.zeros((n, model.n_joints)))
+    codes = res.raw[:, model.columns.status]
+    why = np.array([reason_of(c) if c in NO_ANSWER else "" for c in codes], dtype=object)
+    good = np.flatnonzero(why == "")
+    parts = []
+    if good.size:
+        try:
+            parts.append((good, solve(np.ascontiguousarray(qa[good]))))
+        except np.linalg.LinAlgError:
+            for i in good:
+                try:
+                    parts.append((np.array([i]), solve(np.ascontiguousarray(qa[i:i + 1]))))
+                except np.linalg.LinAlgError as err:
+                    why[i] = f"the linear algebra failed at this configuration ({err})"
+    return _merge(n, model.n_joints, parts, why)
+
+
+_FIELDS = ("max", "min", "min_kept", "tau_max", "tau_min", "tau_min_kept")
+
+
+def _merge(n: int, na: int, parts, why) -> Extremes:
+    """One :class:`Extremes` of ``n`` configurations from ``(indices, Extremes)`` parts; NaN
+    where none answers (``why`` says why)."""
+    ex = Extremes(method=parts[0][1].method if parts else "none (no configuration answered)")
+    for attr in _FIELDS:
+        d = getattr(ex, attr)
+        for m in METRICS:
+            d[m] = np.full((n, na) if attr.startswith("tau") else n, np.nan)
+        for idx, part in parts:
+            for m, v in getattr(part, attr).items():
+                d[m][idx] = v
+    ex.certified = np.zeros(n, bool)
+    for idx, part in parts:
+        ex.certified[idx] = part.certified
+        ex.pieces += part.pieces
+    # a value that is not finite, or a norm below 0 or sr outside [0, 1] (beyond rounding),
+    # is no answer (min_kept is NaN where no torque keeps the contact)
+    for attr in ("max", "min", "min_kept"):
+        for m, v in getattr(ex, attr).items():
+            tol = 1e-9 * np.abs(np.where(np.isfinite(ex.max[m]), ex.max[m], 0.0))
+            with np.errstate(invalid="ignore"):
+                impossible = (v < -tol) | (v > 1 + 1e-9 if m == "sr" else False)
+                impossible |= np.isinf(v) | (np.isnan(v) & (attr != "min_kept"))
+            for i in np.flatnonzero(impossible & (why == "")):
+                why[i] = (f"{attr} {m} is not a possible value in float64 ({v[i]:.3g}): "
+                          f"the configuration is too ill-conditioned to answer")
+    lost = why != ""
+    if np.any(lost):
+        for attr in _FIELDS:
+            for m in METRICS:
+                getattr(ex, attr)[m][lost] = np.nan
+        ex.certified[lost] = False
+    ex.reason = why
+    return ex
     return ex if batched else ex._squeeze()
 
 
