@@ -168,8 +168,10 @@ class _Whitening:
 
 
 #: Eigenvalues of ``Omega + Xi`` (whitened) below this fraction of the largest are its null
-#: space (rounding: the forms carry an absolute error of about 1e-16 of the largest).
-RANK_TOL = 1e-12
+#: space: the forms carry rounding of ~1e-13 of the largest at 30 joints (a quotient of two
+#: rounding errors would mean nothing), and a torque direction moving the snake this little
+#: carries no meaningful sr.
+RANK_TOL = 1e-10
 
 
 def _range_geig(Om: np.ndarray, D: np.ndarray):
@@ -280,6 +282,8 @@ def _quadratic_extremes_numpy(model, qa):
         ex.tau_min[m] = tmin
         ex.min_kept[m] = kmin
         ex.tau_min_kept[m] = Vk_keep[:, :, 0]
+        for d in (ex.max, ex.min, ex.min_kept):  # squared norms: rounding below 0 is clipped
+            d[m] = np.maximum(d[m], 0.0)
     # slippage ratio: Rayleigh quotient of (Omega, Omega + Xi) on the kept half, 0 when lost.
     # Omega + Xi is only semidefinite where the wheels brace the snake (a torque direction
     # that moves nothing, and pushes nothing: Omega <= Omega + Xi), so the quotient is taken
@@ -305,7 +309,7 @@ def _quadratic_extremes(model, qa):
     numpy's batched eigensolver otherwise (and for samples with dependent rows).
     """
     if "metric_extremes" not in model.backend.signatures:
-        return _quadratic_extremes_numpy(model, qa)
+        return _sr_at_torque(model, qa, _quadratic_extremes_numpy(model, qa))
     from .solver import HELD, LOST, PIVOT_TOL, _free_and_fixed
 
     n = qa.shape[0]
@@ -364,9 +368,14 @@ def _quadratic_extremes(model, qa):
             d, e = getattr(ex, attr), getattr(again, attr)
             for k in d:
                 d[k][sub] = e[k]
-    # The closed form's largest sr is a root of a cubic with a double root at 0 (Omega has
-    # rank one): good to ~1e-7 only, while its eigenvector is good to ~1e-8 and the quotient
-    # there to its square. The value reported is the exact forward solve's at that torque.
+    return _sr_at_torque(model, qa, ex)
+
+
+def _sr_at_torque(model, qa, ex):
+    """The largest sr reported is the exact forward solve's at the returned torque: the
+    closed form's eigenvalue is a root of a cubic with a double root at 0 (Omega has rank
+    one), good to ~1e-7 only, and the eigensolver's is near rounding-level directions of
+    Omega + Xi; their eigenvectors are good, and the quotient there to its square."""
     at = model.forward(qa, ex.tau_max["sr"])
     ok = at.contact & ~at.singular & np.isfinite(at.sr)
     ex.max["sr"] = np.where(ok, at.sr, ex.max["sr"])
