@@ -288,6 +288,7 @@ def optimize_shape(model, objective: str = "max_sr", *, q0=None, starts: int = 8
 
     # starting points ------------------------------------------------------------------
     grid_best = grid_best_value = None
+    symmetric = False
     if Q0 is None:
         pts, step = _starts.coarse_points(lo, hi, seed)
         Q = np.hstack([np.zeros((len(pts), 3)), pts])
@@ -297,7 +298,24 @@ def optimize_shape(model, objective: str = "max_sr", *, q0=None, starts: int = 8
 
             fz = feasibility(model, Q, clearance=clearance)
             score = np.where(fz.feasible, score, np.minimum(score, -1e300))
-        idx = _starts.pick_starts(pts, score, step, starts)
+        symmetric = _starts.mirrored(objective, query, lo, hi)
+
+        def rescore(p_):  # the grid's score at other joint angles
+            Qm = np.hstack([np.zeros((len(p_), 3)), p_])
+            sc = _starts.inner_optimum(model, objective, model.maps(Qm), query)[0]
+            if feasible:
+                from ..geometry import feasibility
+
+                fm = feasibility(model, Qm, clearance=clearance)
+                sc = np.where(fm.feasible, sc, np.minimum(sc, -1e300))
+            return sc
+
+        mirror = _starts.mirror_scores(pts, score, rescore) if symmetric else None
+
+        def basin(idx):
+            return _starts.ascend(pts[idx], score[idx], step, lo, hi, rescore)
+
+        idx = _starts.pick_starts(pts, score, step, starts, mirror, basin)
         S, svals, staus = Q[idx], score[idx], taus[idx]
         best = int(idx[0])
         grid_best = Q[best]
@@ -372,6 +390,21 @@ def optimize_shape(model, objective: str = "max_sr", *, q0=None, starts: int = 8
 
     # exact torque and forward check at the answer --------------------------------------
     tau, analysis, value, reason = _answer(model, objective, form, query, q, x, used)
+    if Q0 is None and symmetric and good:
+        # the starts skip mirror images: the answer is given as the mirror pair's first in
+        # the joint angles' order (the one a start in either basin would have reported)
+        xm = x.copy()
+        xm[:na] = -x[:na]
+        if used.has_tau:
+            xm[na:2 * na] = -x[na:2 * na]
+        qm = np.concatenate([q[:3], xm[:na]])
+        if (tuple(np.round(qm[3:], 6)) < tuple(np.round(q[3:], 6))
+                and not (feasible and _geometry_problem(model, qm, clearance))):
+            mirror_answer = _answer(model, objective, form, query, qm, xm, used)
+            if (mirror_answer[2] is not None and value is not None and not mirror_answer[3]
+                    and abs(mirror_answer[2] - value) <= 1e-9 * max(1.0, abs(value))):
+                x, q = xm, qm
+                tau, analysis, value, reason = mirror_answer
     cert["regularization_gap"] = float(v_nlp - value) if value is not None else None
     if not good:
         st = "infeasible" if all(sol[2]["primal_infeasibility"] > 1e-6 for sol in sols) \
