@@ -40,12 +40,12 @@ MASS_TOL = 1e-13
 REASONS = (
     "", "",
     "the held constraint rows are linearly dependent (the forces are the least-norm ones)",
-    "the mass matrix is numerically singular in float64 (masses, lengths or inertias too far "
-    "apart): no answer",
-    "the result is physically impossible in float64 (non-finite, a negative squared norm or "
-    "sr outside [0, 1]): no answer",
-    "the system is not finite in float64 (a scene parameter or an input too large or too "
-    "small, e.g. a subnormal mass or kappa, or a huge wheel offset): no answer",
+    ("the mass matrix is numerically singular in float64 (masses, lengths or inertias too "
+     "far apart): no answer"),
+    ("the result is physically impossible in float64 (non-finite, a negative squared norm or "
+     "sr outside [0, 1]): no answer"),
+    ("the system is not finite in float64 (a scene parameter or an input too large or too "
+     "small, e.g. a subnormal mass or kappa, or a huge wheel offset): no answer"),
 )
 DEPENDENT, MASS_SINGULAR, IMPOSSIBLE, NOT_FINITE = 2, 3, 4, 5
 #: Codes whose results are NaN (every code but DEPENDENT, whose accelerations are unique).

@@ -334,3 +334,36 @@ def test_optimize_shape_starts_skip_mirror_images():
     for i in range(len(S)):  # no start is another's mirror image
         for j in range(len(S)):
             assert not np.allclose(S[i], -S[j]) or np.allclose(S[i], 0)
+
+
+# ------------------------------------------------------------------------------------------
+# 2. optimize_shape with bounded wheels: sliding wheel states are searched
+# ------------------------------------------------------------------------------------------
+def test_optimal_shape_with_bounded_wheels_searches_sliding_states():
+    """Scenario 2 (mu 0.1, 3 joints, kappa 100): max_sr returned 0.98749177 'optimal' at the
+    straight shape, where sliding wheels reach 0.98784251. The answer is now at least that;
+    its value is the dense reference's (enumeration of wheel states) at the returned torque,
+    on the ellipsoid, and no torque of a dense sample of the ellipsoid at that shape (the
+    reference's vectorized enumeration) beats it."""
+    from reference import Reference, rest_maps, solve_rest_batch
+
+    scene = snakecg.Scene(snakecg.Robot(joints=3), scenario="wheels", kappa=100, mu=0.1)
+    model = snakecg.load(scene)
+    res = model.optimize_shape("max_sr")
+    assert res.status == "optimal", res.reason
+    assert res.value >= 0.98784251 - 1e-8
+    ref = Reference(scene)
+    exact = ref.solve(res.q, res.tau)
+    assert exact["contact"] and exact["sr"] == pytest.approx(res.value, abs=1e-9)
+    maps = rest_maps(ref, res.q)
+    assert res.tau @ maps["N"] @ res.tau == pytest.approx(1.0, abs=1e-9)
+    rng = np.random.default_rng(2)
+    u = rng.normal(size=(20000, 3))
+    u /= np.linalg.norm(u, axis=1, keepdims=True)
+    L = np.linalg.cholesky(maps["N"])
+    taus = np.linalg.solve(L.T, u.T).T  # tau^T N tau = 1
+    taus = np.vstack([taus, res.tau + 1e-4 * rng.normal(size=(2000, 3))])
+    taus[20000:] /= np.sqrt(np.einsum("ki,ij,kj->k", taus[20000:], maps["N"],
+                                      taus[20000:]))[:, None]
+    sampled = solve_rest_batch(ref, maps, taus)["sr"]
+    assert sampled.max() <= res.value + 1e-9
