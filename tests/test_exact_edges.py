@@ -485,3 +485,42 @@ def test_wheel_extremes_on_the_whole_30_degree_grid():
     for m in ("sr", "norm_a_obj", "norm_qdd", "norm_lambda"):
         at = getattr(model.forward(Q, ex.tau_max[m]), m)
         np.testing.assert_allclose(at, ex.max[m], rtol=1e-9, atol=1e-9 if m == "sr" else 0)
+
+
+def test_the_walk_reaches_every_piece_a_dense_sample_meets():
+    """The certificate covers the pieces the walk across facets reaches: every wheel state
+    that the dense reference finds on 12,000 boundary torques (its own enumeration) is one
+    of them, at the cited shapes and a sample of the 30-degree grid."""
+    from reference import Reference, rest_maps, solve_rest_batch
+
+    from snakecg.piecewise import face_kernel
+    from snakecg.pieces import all_states, explore, primitives
+    from snakecg.solver import HELD, LOST, SLIDE_NEG, SLIDE_POS
+
+    scene = snakecg.Scene(snakecg.Robot(joints=4), **_WHEELS4)
+    model = snakecg.load(scene)
+    ref = Reference(scene)
+    Q = _grid_30()
+    Q = np.vstack([Q[[2302, 2756]], Q[np.random.default_rng(7).choice(len(Q), 4)]])
+    states = all_states(model)
+    rng = np.random.default_rng(8)
+    for q in Q:
+        prim = primitives(model, q[None])
+        _, s, _, _, _ = explore(model, prim, q[None], states, face_kernel(model))
+        walked = {tuple(states[k]) for k in s}
+        maps = rest_maps(ref, q)
+        u = rng.normal(size=(12000, 4))
+        u /= np.linalg.norm(u, axis=1, keepdims=True)
+        taus = np.linalg.solve(np.linalg.cholesky(maps["N"]).T, u.T).T
+        out = solve_rest_batch(ref, maps, taus)
+        lam, ub = out["lam"], ref.bounds
+        seen = np.zeros((len(taus), ref.nc), np.int8)
+        seen[:, 0] = np.where(out["contact"], HELD, LOST)
+        for r in range(1, ref.nc):
+            if ref.present[r]:  # (absent rows: state 0)
+                seen[:, r] = np.select([lam[:, r] >= ub[r] * (1 - 1e-9),
+                                        lam[:, r] <= -ub[r] * (1 - 1e-9)],
+                                       [SLIDE_POS, SLIDE_NEG], HELD)
+        seen = seen[out["kkt"] < 1e-9]  # the torques whose state is clear
+        missing = {tuple(x) for x in seen} - walked
+        assert not missing, (np.rad2deg(q[3:]), missing)
