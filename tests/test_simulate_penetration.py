@@ -265,6 +265,31 @@ def test_paths_agree_on_the_violation(user):
         assert abs(r.violation.t - t0) < 1e-9 * (50 if r is runs[3] else 1)
 
 
+def test_violation_seen_only_at_a_sample(user, monkeypatch):
+    """solve_ivp evaluates the check at its steps' ends; an overlap seen first at an output
+    sample (the steps' ends made blind here) is located on the dense output of the segment
+    integrated again: at the same time."""
+    from snakecg.simulate.contact_check import RunCheck
+
+    sm, _, _ = user
+    for mode in ("stop", "report"):
+        kw = dict(integrator="scipy", output_dt=1e-4, geometry_check=mode)
+        seen = sm.simulate(Q_USER, TAU_USER, 0.01, **kw)
+        with monkeypatch.context() as m:
+            m.setattr(RunCheck, "event", lambda self: _blind)
+            blind = sm.simulate(Q_USER, TAU_USER, 0.01, **kw)
+        assert blind.violation.t == pytest.approx(seen.violation.t, rel=1e-12, abs=2e-15)
+        assert blind.violation.bodies == seen.violation.bodies == (1, "object")
+        assert blind.t[-1] == (blind.violation.t if mode == "stop" else 0.01)
+
+
+def _blind(t, y):
+    return 1.0
+
+
+_blind.terminal, _blind.direction = True, -1
+
+
 def test_report_integrates_on_unchanged(user):
     """``report``: the same trajectory as with the check off, array for array, and the same
     first violation as ``stop``, whose samples are the beginning of it."""

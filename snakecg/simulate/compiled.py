@@ -174,7 +174,7 @@ class CompiledSegments:
             t=self.t_eval[:m], y=self.y_eval[:m].copy(),
             status={SEG_END: 0, SEG_EVENT: 1, SEG_TOO_SMALL: -1, SEG_GEOMETRY: 0}[status],
             message=_TOO_SMALL if status == SEG_TOO_SMALL else "", fired=fired,
-            stopped=stopped, dense=None)
+            stopped=stopped)
 
     def run_all(self, y, mode, loss, tau, grid, T, gtol, max_events):
         """The whole run from the state ``y`` in ``mode`` (after the start's settle, the

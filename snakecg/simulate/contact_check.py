@@ -111,6 +111,7 @@ class RunCheck:
         if self._c is None:
             d, p = self.deepest(y)
             return float(d[0]), int(p[0])
+        y = np.ascontiguousarray(y, dtype=float)
         out = self._y[self.ny:]
         self._c(self.address, 1, y.ctypes.data, out.ctypes.data, out[1:].ctypes.data)
         return float(out[0]), int(out[1])
@@ -133,7 +134,7 @@ class RunCheck:
     def at(self, t, y) -> bool:
         """Check one state (after an event); whether the run stops there."""
         if self.active:
-            d, p = self._one(np.ascontiguousarray(y, dtype=float))
+            d, p = self._one(y)
             if d > self.tolerance:
                 self._record(t, y, d, p)
         return self.stops
@@ -165,6 +166,44 @@ class RunCheck:
         d, p = self.deepest(y)
         self._record(root, y, d[0], p[0])
         return float(root)
+
+    def event(self):
+        """The check as an event function of :func:`scipy.integrate.solve_ivp`: the
+        tolerance less the largest overlap, crossing zero downwards (terminal with
+        ``"stop"``), evaluated at every step's end and located on the dense output."""
+        tol, one = self.tolerance, self._one
+
+        def margin(t, y):
+            return tol - one(y)[0]
+
+        margin.terminal = self.struct.mode == GEO_STOP
+        margin.direction = -1
+        return margin
+
+    def solved(self, t0, y0, ts, Y, root, rerun) -> float | None:
+        """The check of a segment that solve_ivp integrated from ``(t0, y0)`` with
+        :meth:`event`: its output samples ``ts``, ``Y`` and ``root``, ``(t, y)`` of the
+        event's first root (or ``None``). A sample beyond the tolerance before that root
+        (between two steps' ends, where the event is not evaluated) is located on the dense
+        output of ``rerun()``, the same segment again with it. The time of the first
+        violation (recorded), or ``None``."""
+        if not self.active:
+            return None
+        end = root[0] if root is not None else np.inf
+        keep = (ts > t0) & (ts <= end)
+        beyond = np.flatnonzero(self.deepest(Y[keep])[0] > self.tolerance) if keep.any() \
+            else ()
+        if len(beyond):
+            dense = rerun().sol
+            tb = ts[keep][beyond[0]]
+            steps = np.asarray(dense.ts)
+            pts = np.union1d(steps[(steps > t0) & (steps <= tb)], ts[keep & (ts <= tb)])
+            return self.scan(t0, y0, pts, dense(pts).T, dense)
+        if root is not None:
+            d, p = self._one(root[1])
+            self._record(root[0], root[1], d, p)
+            return root[0]
+        return None
 
     @property
     def violation(self) -> Violation | None:

@@ -80,33 +80,45 @@ class Simulator:
 
     def _solve_ivp(self, opts, t, t_end, y, mode, tau_fn, t_eval):
         """One segment by :func:`scipy.integrate.solve_ivp`: an object with ``status``,
-        ``message``, the output ``t`` (m,) and ``y`` (m, n_y), and ``fired``: ``(event
-        function, t_e, y_e)`` of each terminal event that fired, ``stopped`` (``None``: the
-        contact check runs on ``dense``, the segment's dense output, when it is active)."""
+        ``message``, the output ``t`` (m,) and ``y`` (m, n_y), ``fired``: ``(event
+        function, t_e, y_e)`` of each terminal event that fired, and ``stopped``: ``(t, y)``
+        where the contact check ended the segment, else ``None``."""
         from scipy.integrate import solve_ivp
 
-        dyn, cfg = self.dyn, self.settings
+        dyn, cfg, check = self.dyn, self.settings, self.check
         evs = self.events.functions(mode, tau_fn)
+        geo = check.event() if check.active else None  # (evaluated at every step's end)
 
         def fun(tt, yy, m=mode, f=tau_fn):
             return dyn.rates(tt, yy, m, f)[0]
 
         if cfg.fixed_step is not None:
             opts["first_step"] = min(cfg.fixed_step, t_end - t)
+        all_evs = (evs + [geo] if geo is not None else evs) or None
+
+        def rerun():  # the same segment with its dense output
+            return solve_ivp(fun, (t, t_end), y, t_eval=t_eval, events=all_evs,
+                             dense_output=True, **opts)
+
         try:
-            sol = solve_ivp(fun, (t, t_end), y, t_eval=t_eval, events=evs or None,
-                            dense_output=self.check.active, **opts)
+            sol = solve_ivp(fun, (t, t_end), y, t_eval=t_eval, events=all_evs, **opts)
         except SnakecgError:
             raise
         except (ValueError, np.linalg.LinAlgError, ArithmeticError) as exc:
             raise SimulationError(f"integration failed at t = {t:.6g} s: {exc}") from exc
         ys = np.asarray(sol.y).reshape(dyn.ny, -1).T if len(sol.t) else np.zeros((0, dyn.ny))
-        fired = []
+        fired, stopped = [], None
         if sol.status == 1:
             fired = [(evs[i], float(te[0]), np.asarray(ye[0])) for i, (te, ye) in
-                     enumerate(zip(sol.t_events, sol.y_events)) if len(te)]
+                     enumerate(zip(sol.t_events[:len(evs)], sol.y_events)) if len(te)]
+        if geo is not None:
+            root = ((float(sol.t_events[-1][0]), np.asarray(sol.y_events[-1][0]))
+                    if len(sol.t_events[-1]) else None)
+            if check.solved(t, y, np.asarray(sol.t), ys, root, rerun) is not None \
+                    and check.stops:
+                stopped = (check.struct.t, check.violation.y)
         return SimpleNamespace(status=sol.status, message=sol.message, t=sol.t, y=ys,
-                               fired=fired, stopped=None, dense=sol.sol)
+                               fired=fired, stopped=stopped)
 
     def _run_compiled(self, y, mode, loss, grid, events, wall0):
         """The loop of :meth:`run` for a constant torque in C (``core_run``, see
@@ -242,8 +254,6 @@ class Simulator:
             if sol.status < 0:
                 raise SimulationError(f"integration failed at t = {t:.6g} s: {sol.message}")
             stop = sol.stopped
-            if stop is None and check.active and getattr(sol, "dense", None) is not None:
-                stop = self._scan(t, y, sol)
             keep = np.asarray(sol.t) > t
             if stop is not None:  # the contact check's first violation ends the run
                 keep &= np.asarray(sol.t) <= stop[0]
@@ -299,20 +309,6 @@ class Simulator:
         self.segments = segments
         self.final_mode = mode.describe()
         return assemble(self, blocks, events, check.status(status))
-
-    def _scan(self, t, y, sol):
-        """The contact check of a segment that solve_ivp integrated from ``(t, y)``: at its
-        steps' ends and output samples up to where it ended, the first violation located on
-        its dense output: ``(t, y)`` there when it stops the run, else ``None``."""
-        end = sol.dense.ts[-1]
-        ts = np.asarray(sol.dense.ts)
-        pts = np.union1d(ts[(ts > t) & (ts <= end)], np.asarray(sol.t)[np.asarray(sol.t) > t])
-        if not pts.size:
-            return None
-        root = self.check.scan(t, y, pts, sol.dense(pts).T, sol.dense)
-        if root is None or not self.check.stops:
-            return None
-        return root, self.check.violation.y
 
 
 def simulate(model, q0, tau, duration, v0=None, *, v_obj0=None, q_obj0=None, rho=None,
