@@ -37,6 +37,7 @@ __all__ = [
     "chain_segments",
     "contact_tolerance",
     "feasibility",
+    "link_radius",
     "link_segments",
     "object_depth",
     "segment_overlap",

@@ -56,11 +56,13 @@ def _urdf(joints: int) -> str:
                      f'<child link="link{i + 1}"/><origin xyz="0.15 0 0" rpy="0 0 0"/>'
                      '<axis xyz="0 0 1"/><limit lower="-3" upper="3" effort="5" velocity="5"/>'
                      "</joint>")
-    parts += ['<link name="tail_tip"/>', '<joint name="tail_tip_joint" type="fixed">'
-              '<parent link="link1"/><child link="tail_tip"/><origin xyz="0 0 0"/></joint>',
-              '<link name="head_tip"/>', '<joint name="head_tip_joint" type="fixed">'
-              f'<parent link="link{joints + 1}"/><child link="head_tip"/>'
-              '<origin xyz="0.15 0 0"/></joint>', "</robot>"]
+    parts += ['<link name="tail_tip"/>',
+              ('<joint name="tail_tip_joint" type="fixed"><parent link="link1"/>'
+               '<child link="tail_tip"/><origin xyz="0 0 0"/></joint>'),
+              '<link name="head_tip"/>',
+              (f'<joint name="head_tip_joint" type="fixed"><parent link="link{joints + 1}"/>'
+               '<child link="head_tip"/><origin xyz="0.15 0 0"/></joint>'),
+              "</robot>"]
     return "\n".join(parts)
 
 
@@ -119,7 +121,7 @@ def _brute_plate_depth(a, b, corners, n=20001):
 
 
 def test_reference_geometry_against_sampling(rng):
-    for _ in range(200):
+    for _ in range(100):
         q_obj = np.r_[rng.uniform(-0.05, 0.05, 2), rng.uniform(-np.pi, np.pi)]
         a, b = rng.uniform(-0.12, 0.12, (2, 2))
         corners = plate_corners(q_obj, 0.05)
@@ -127,22 +129,22 @@ def test_reference_geometry_against_sampling(rng):
         ref, spacing = _brute_plate_depth(a, b, corners[0])
         assert ref - 1e-15 <= got <= ref + spacing + 1e-15
     crossed = 0
-    for _ in range(200):  # crossing: an end's distance, by sampling the other segment
+    s = np.linspace(0, 1, 20001)[:, None]
+    for _ in range(100):  # crossing: an end's distance, by sampling the other segment
         a0, a1, b0, b1 = rng.uniform(-1, 1, (4, 2))
         got = crossing_depth(a0[None], a1[None], b0[None], b1[None])[0]
-        s = np.linspace(0, 1, 20001)[:, None]
         pa, pb = a0 + s * (a1 - a0), b0 + s * (b1 - b0)
-        gap = np.sqrt(((pa[::20, None] - pb[None, ::20]) ** 2).sum(-1)).min()
+        gap = np.sqrt(((pa[::40, None] - pb[None, ::40]) ** 2).sum(-1)).min()
         if got > 0:
             crossed += 1
-            assert gap < 4e-3  # they meet (to the coarse sampling's spacing)
+            assert gap < 8e-3  # they meet (to the coarse sampling's spacing)
             ends = min(min(np.linalg.norm(pb - p, axis=1).min() for p in (a0, a1)),
                        min(np.linalg.norm(pa - p, axis=1).min() for p in (b0, b1)))
             assert ends - 1e-4 <= got <= ends + 1e-12
         else:
             assert gap > 0 or min(np.linalg.norm(p - q) for p in (a0, a1)
                                   for q in (b0, b1)) == 0
-    assert crossed > 20
+    assert crossed > 10
     p, a, b = rng.uniform(-1, 1, (3, 5, 2))
     s = np.linspace(0, 1, 100001)[:, None, None]
     brute = np.linalg.norm(a + s * (b - a) - p, axis=-1).min(axis=0)
@@ -273,7 +275,7 @@ def test_violation_seen_only_at_a_sample(user, monkeypatch):
 
     sm, _, _ = user
     for mode in ("stop", "report"):
-        kw = dict(integrator="scipy", output_dt=1e-4, geometry_check=mode)
+        kw = {"integrator": "scipy", "output_dt": 1e-4, "geometry_check": mode}
         seen = sm.simulate(Q_USER, TAU_USER, 0.01, **kw)
         with monkeypatch.context() as m:
             m.setattr(RunCheck, "event", lambda self: _blind)
@@ -319,7 +321,7 @@ def test_self_contact_stops_the_run(models):
     sm, scene = models(3, "frictionless")
     q0 = np.r_[0.0, 0.0, 0.0, np.deg2rad([100.0, 100.0, 0.0])]
     q_obj, rho, _ = sm.place_object(q0)
-    far = dict(q_obj0=q_obj + [0.0, 1.0, 0.0], rho=rho)
+    far = {"q_obj0": q_obj + [0.0, 1.0, 0.0], "rho": rho}
     tau = np.array([0.05, 0.05, 0.0])
     for integrator in ("auto", "scipy"):
         traj = sm.simulate(q0, tau, 1.0, integrator=integrator, **far)

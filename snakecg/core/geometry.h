@@ -24,6 +24,9 @@
 #include <string.h>
 
 #define GEO_NL SNAKECG_NL
+/* the larger and smaller of two numbers (inlined: the library's fmax and fmin are calls) */
+static double geo_max(double a, double b) { return a > b ? a : b; }
+static double geo_min(double a, double b) { return a < b ? a : b; }
 
 /* The check of a run (mirrored in snakecg/core/segment.py): inputs, then outputs. */
 enum { GEO_OFF = 0, GEO_STOP = 1, GEO_RECORD = 2 };
@@ -66,9 +69,9 @@ static double geo_ends(const double *a0, const double *a1, const double *b0, con
   const double s3 = geo_cross(dax, day, b0[0] - a0[0], b0[1] - a0[1]);
   const double s4 = geo_cross(dax, day, b1[0] - a0[0], b1[1] - a0[1]);
   *crossing = s1 * s2 < 0 && s3 * s4 < 0;
-  return fmin(fmin(geo_point_segment(a0[0], a0[1], b0[0], b0[1], b1[0], b1[1]),
+  return geo_min(geo_min(geo_point_segment(a0[0], a0[1], b0[0], b0[1], b1[0], b1[1]),
                    geo_point_segment(a1[0], a1[1], b0[0], b0[1], b1[0], b1[1])),
-              fmin(geo_point_segment(b0[0], b0[1], a0[0], a0[1], a1[0], a1[1]),
+              geo_min(geo_point_segment(b0[0], b0[1], a0[0], a0[1], a1[0], a1[1]),
                    geo_point_segment(b1[0], b1[1], a0[0], a0[1], a1[0], a1[1])));
 }
 
@@ -83,7 +86,7 @@ static double geo_plate_depth(double ax, double ay, double bx, double by, double
   for (k = 0; k < 6; ++k) {
     double t = isfinite(ts[k]) ? ts[k] : 0.0;
     t = t < 0 ? 0.0 : (t > 1 ? 1.0 : t);
-    best = fmax(best, h - fmax(fabs(ax + t * dx), fabs(ay + t * dy)));
+    best = geo_max(best, h - geo_max(fabs(ax + t * dx), fabs(ay + t * dy)));
   }
   return best;
 }
@@ -99,9 +102,9 @@ static double geo_link_plate(double ax, double ay, double bx, double by, double 
   if (d > 0) return d + r;
   for (k = 0; k < 4; ++k) { /* outside: the distance to the plate's edges */
     const double e = geo_ends(a, b, c[k], c[k + 1], &crossing);
-    dist = fmin(dist, crossing ? 0.0 : e);
+    dist = geo_min(dist, crossing ? 0.0 : e);
   }
-  return fmax(0.0, r - dist);
+  return geo_max(0.0, r - dist);
 }
 
 /* The largest overlap at the state y and its pair (the first of equals). */
@@ -147,7 +150,7 @@ static double geo_depth(const sc_geometry *g, const double *y, sc_int *pair) {
       if (mx * mx + my * my <= far * far) {
         int crossing;
         const double e = geo_ends(rear[i], front[i], rear[j], front[j], &crossing);
-        const double d = fmax(0.0, 2 * r - (crossing ? -e : e));
+        const double d = geo_max(0.0, 2 * r - (crossing ? -e : e));
         if (d > best) best = d, *pair = p;
       }
     }
