@@ -488,15 +488,15 @@ static int segment(sc_ctx *c, sc_segment *sg) {
           geo_old = gb;
         }
         if (crossed) { /* located on the dense output */
-          sc_geo_arg arg;
+          sc_geo_arg garg;
           double d;
           if (!have_dense) {
             if ((st = dense_build(c, t, h, y, y_new, f_new, K, &D))) return st;
             have_dense = 1;
           }
-          arg.geo = geo;
-          arg.D = &D;
-          brentq(geo_fn, &arg, ta, tb, &root);
+          garg.geo = geo;
+          garg.D = &D;
+          brentq(geo_fn, &garg, ta, tb, &root);
           dense_eval(&D, root, yb);
           d = geo_depth(geo, yb, &pair);
           geo_record(geo, root, yb, d, pair);

@@ -66,7 +66,10 @@ class RunCheck:
         self.shape, self._length, com1 = _shape_of(model)
         self.tolerance = self.shape.tolerance
         self.ns, self.ny = ns, ny
-        self._y = np.zeros(ny + 2)  # the state of the first violation; a depth and pair
+        # the state of the first violation; then one state checked (_one), its depth and pair
+        self._y = np.zeros(2 * ny + 2)
+        base = self._y.ctypes.data
+        self._one_addresses = (base + 8 * ny, base + 16 * ny, base + 8 * (2 * ny + 1))
         g = self.struct = Geometry()
         g.mode = _CODES[mode]
         g.tol, g.half, g.radius = self.tolerance, self.shape.half, self.shape.radius
@@ -111,10 +114,10 @@ class RunCheck:
         if self._c is None:
             d, p = self.deepest(y)
             return float(d[0]), int(p[0])
-        y = np.ascontiguousarray(y, dtype=float)
-        out = self._y[self.ny:]
-        self._c(self.address, 1, y.ctypes.data, out.ctypes.data, out[1:].ctypes.data)
-        return float(out[0]), int(out[1])
+        ny = self.ny
+        self._y[ny:2 * ny] = y
+        self._c(self.address, 1, *self._one_addresses)
+        return float(self._y[2 * ny]), int(self._y[2 * ny + 1])
 
     def check_start(self, y) -> None:
         """The initial state: an :class:`~snakecg.InputError` naming the bodies when they
