@@ -160,11 +160,18 @@ def compare(joints: int, radius: float, scenario: str, repeat: int) -> None:
           f" {DURATION / tcs:>9.0f} {diff:>9.1e} {err:>9.1e}")
 
 
-def main_compare(args) -> None:
+def _load() -> str:
     with open("/proc/loadavg") as f:
-        load = " ".join(f.read().split()[:3])
+        return " ".join(f.read().split()[:3])
+
+
+def _machine() -> None:
     print(f"machine: {platform.processor() or platform.machine()}, {os.cpu_count()} cores, "
-          f"Python {platform.python_version()}; load average before: {load}")
+          f"Python {platform.python_version()}; load average before: {_load()}")
+
+
+def main_compare(args) -> None:
+    _machine()
     print(f"{DURATION} s push, default settings (DOP853, rtol 1e-9, atol 1e-11); simulated s per"
           f" CPU s (median of {args.repeat}): call = whole simulate call, output at the end; seg"
           " = its segment integrations alone; 400 = whole call with the default 400 output"
@@ -181,16 +188,12 @@ def main_compare(args) -> None:
         for radius in args.radius:
             for scenario in args.scenarios:
                 compare(joints, radius, scenario, args.repeat)
-    with open("/proc/loadavg") as f:
-        print(f"\nload average after: {' '.join(f.read().split()[:3])}")
+    print(f"\nload average after: {_load()}")
 
 
 def main_check(args) -> None:
     """The contact check's cost where it runs throughout (a push that stays physical)."""
-    with open("/proc/loadavg") as f:
-        load = " ".join(f.read().split()[:3])
-    print(f"machine: {platform.processor() or platform.machine()}, {os.cpu_count()} cores, "
-          f"Python {platform.python_version()}; load average before: {load}")
+    _machine()
     print(f"{DURATION} s symmetric push (contact link in the middle), default settings; CPU ms "
           f"per simulate call (median of {args.repeat}, check and no check alternated)\n")
     header = (f"{'n_a':>3} {'scenario':<13} {'output':<11} {'off (ms)':>9} {'stop (ms)':>9}"
@@ -219,8 +222,7 @@ def main_check(args) -> None:
                 print(f"{joints:>3} {scenario:<13} {'end' if output else '400 samples':<11}"
                       f" {off * 1e3:>9.3f} {on * 1e3:>9.3f} {on / off - 1:>+9.1%}"
                       f" {traj.n_samples:>7} {traj.summary['status']:<10}")
-    with open("/proc/loadavg") as f:
-        print(f"\nload average after: {' '.join(f.read().split()[:3])}")
+    print(f"\nload average after: {_load()}")
 
 
 def main() -> None:
