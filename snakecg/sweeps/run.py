@@ -203,13 +203,55 @@ def sweep(scene, *, grid=None, samples=None, seed=None, store, client=None, chun
     if not isinstance(store, (str, Path)) or not str(store).strip():
         raise InputError(f"store must be a path (e.g. 'sweep.zarr'), got {store!r}")
     path = Path(store)
-    state = _store.check_target(path)
+    _store.check_target(path)
+    with _store_lock(path, mode):
+        return _run(scene, plan, path, chunk, client, scheduler, workers, mode, verify,
+                    feasible, clearance, shared_store, t0)
+
+
+def _store_lock(path: Path, mode: str):
+    """The lock of the store at ``path`` (the file ``.NAME.lock`` beside it), held for the
+    whole sweep: a second sweep into the same store waits, saying so, until the first ends
+    (then it resumes the store: it finds the chunks complete, or is refused if made with
+    other arguments), instead of both creating or writing it at once."""
+    from filelock import FileLock, Timeout
+
+    lock = FileLock(str(path.with_name(f".{path.name}.lock")))
+    try:
+        lock.acquire(timeout=0)
+    except Timeout:
+        if mode != "off":
+            sys.stderr.write(f"snakecg sweep: {path} is in use by another sweep; waiting for "
+                             f"it to finish\n")
+            sys.stderr.flush()
+        lock.acquire()
+    except OSError as exc:
+        raise InputError(f"--out {str(path)!r}: cannot create its lock file beside it "
+                         f"({' '.join(str(exc).split())}); the folder must be writable"
+                         ) from None
+    return _Held(lock)
+
+
+class _Held:
+    def __init__(self, lock):
+        self.lock = lock
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        self.lock.release()
+
+
+def _run(scene, plan, path, chunk, client, scheduler, workers, mode, verify, feasible,
+         clearance, shared_store, t0) -> SweepResult:
+    state = _store.check_target(path)  # again: another sweep may have made it meanwhile
     root, done = None, np.zeros(plan.n_chunks, dtype=bool)
     if state == "existing":
         # resume with the store's own format, and chunk size unless one is given
         plan, fmt = _stored(path, plan, keep_chunk=chunk is None)
         root = _store.open_existing(path, _meta(scene, plan, feasible, clearance, fmt))
-        done = _store.completed(root, plan, verify=verify)
+        done = _store.completed(root, plan, verify=verify, path=path)
     todo = [int(i) for i in np.flatnonzero(~done)]
     reused = plan.n_chunks - len(todo)
     if not todo:
@@ -247,6 +289,9 @@ def _stored(path: Path, plan: Plan, keep_chunk: bool) -> tuple[Plan, str]:
     resumes without ``chunk``); unchanged if the store records none (the comparison refuses
     it)."""
     stored = _store.open_existing(path, mode="r").attrs["snakecg_sweep"]
+    from .plan import plan_from_meta
+
+    plan_from_meta(stored, str(path))  # an edited attribute is refused, saying which
     n = stored.get("chunk")
     if keep_chunk and isinstance(n, int) and not isinstance(n, bool) and n >= 1:
         plan = dataclasses.replace(plan, chunk=n)
@@ -282,7 +327,7 @@ def _compute(client, scene, plan, root, todo, reused, mode, clearance, target) -
     # this process writes the digests, and the data only when the workers do not
     opened = _store.handles(root) if target is None else {"chunk_digest": root["chunk_digest"]}
     fmt = _store.format_of(root)
-    digests: dict[int, int] = {}  # completed chunks whose digests are not written yet
+    digests: dict = {}  # completed chunks whose digests are not written yet
     try:
         for fut in as_completed(futures):
             i = index[fut.key]
@@ -324,4 +369,10 @@ def _compute(client, scene, plan, root, todo, reused, mode, clearance, target) -
             _store.record(opened, digests)
         except Exception:  # noqa: BLE001 - the error that stopped the sweep is the one to see
             pass
-        _mark(root, int(np.count_nonzero(root["chunk_digest"][:])), plan.n_chunks)
+        _mark(root, _recorded_count(root), plan.n_chunks)
+
+
+def _recorded_count(root) -> int:
+    """Chunks whose digests are recorded (all of a row's, in format 3)."""
+    d = root["chunk_digest"][:]
+    return int(np.count_nonzero((d != 0).all(axis=1) if d.ndim == 2 else d))
