@@ -279,7 +279,7 @@ def _chunk(chunk, scenario: str, joints: int, size: int) -> int:
         raise InputError(f"chunk must be an integer >= 1 (configurations per chunk), "
                          f"got {chunk!r}")
     problems = []
-    if chunk * result_bytes(joints) > MAX_TASK_BYTES and chunk < size:
+    if min(chunk, size) * result_bytes(joints) > MAX_TASK_BYTES:
         problems.append(f"at most {MAX_TASK_BYTES // result_bytes(joints):,} configurations "
                         f"({MAX_TASK_BYTES // 2**20:,} MiB of results, held in memory by "
                         f"one worker)")

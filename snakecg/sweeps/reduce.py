@@ -70,9 +70,10 @@ def _recorded(reader):
 def read(store) -> dict[str, np.ndarray]:
     """Every array of a (small) store in memory, each chunk checked against its digests
     (a damaged store is refused); configurations of chunks not computed yet are NaN
-    (``feasible``: false). ``q`` in radians whatever the store's format (format 3 stores
-    degrees: converted here, to within a unit of the last place). Also ``complete``: a
-    boolean per configuration."""
+    (``feasible``: false). ``q`` in radians whatever the store's format: the joint angles
+    the configurations were computed at (format 3 stores them in degrees, checked here to
+    be exactly those of the store's grid or samples). Also ``complete``: a boolean per
+    configuration."""
     reader, meta, plan = _open(store)
     out = {}
     for name in reader.names:
@@ -82,7 +83,7 @@ def read(store) -> dict[str, np.ndarray]:
     for i in _recorded(reader):
         start, stop = plan.chunk_range(i)
         data = reader.chunk(i)
-        data["q"] = reader.q_rad(data)
+        data["q"] = reader.q_rad(data, plan.joint_angles(start, stop), i)
         for name, v in data.items():
             out[name][start:stop] = v
         complete[start:stop] = True

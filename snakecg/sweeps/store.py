@@ -456,9 +456,18 @@ class Reader:
         """The joint angles (degrees) of a chunk read by :meth:`chunk`."""
         return data["q"] if _per_file(self.fmt) else np.rad2deg(data["q"])
 
-    def q_rad(self, data: dict) -> np.ndarray:
-        """The joint angles (rad) of a chunk read by :meth:`chunk`."""
-        return np.deg2rad(data["q"]) if _per_file(self.fmt) else data["q"]
+    def q_rad(self, data: dict, planned: np.ndarray, index: int) -> np.ndarray:
+        """The joint angles (rad) of chunk ``index`` read by :meth:`chunk`: ``planned``
+        (the plan's, as computed), which the stored ones must be exactly (format 3: in
+        degrees, ``numpy.rad2deg`` of them)."""
+        stored = data["q"]
+        if not np.array_equal(np.rad2deg(planned) if _per_file(self.fmt) else planned,
+                              stored):
+            start = index * self.plan.chunk
+            raise InputError(f"{self.name}: array q, chunk {index} (configurations from "
+                             f"{start:,}) does not hold the joint angles of the store's "
+                             f"configurations: the store is damaged or was edited")
+        return planned
 
 
 def _open_spec(group, name: str, store: str):
