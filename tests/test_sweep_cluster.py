@@ -83,9 +83,10 @@ def test_no_other_client_can_submit_work_to_the_local_cluster(tmp_path):
 
 # ------------------------------------------------------------------------------------------
 class FakeListener:
-    """A TCP listener on 127.0.0.1 that accepts and then stays silent (``"silent"``) or
-    answers anything with an HTTP error (``"http"``); bounded: it serves at most 20
-    connections and stops when closed."""
+    """A TCP listener on 127.0.0.1 that accepts and then stays silent (``"silent"``),
+    answers a request with an HTTP error (``"http"``), or greets first with a line of text
+    (``"banner"``, as SSH and mail servers do); bounded: it serves at most 20 connections and
+    stops when closed."""
 
     def __init__(self, kind: str):
         self.kind = kind
@@ -110,6 +111,8 @@ class FakeListener:
             else:
                 return
             self.open.append(conn)
+            if self.kind == "banner":
+                conn.sendall(b"SSH-2.0-OpenSSH_9.2p1 Debian-2\r\n" + b"x" * 64)
             if self.kind == "http":
                 conn.settimeout(2)
                 try:
@@ -134,13 +137,15 @@ def _run_cli(capsys, argv):
 
 
 @pytest.mark.parametrize("kind,fragment", [
-    ("silent", "cannot reach the Dask scheduler"),
-    ("http", "is not a Dask scheduler")])
+    ("silent", "no Dask scheduler answered at"),
+    ("http", "no Dask scheduler answered at"),
+    ("banner", "is not a Dask scheduler")])
 def test_scheduler_that_is_not_a_dask_scheduler_is_refused_in_time(tmp_path, capsys,
                                                                    monkeypatch, kind,
                                                                    fragment):
-    """A listener that never answers, or answers with HTTP, is refused on one line (exit 2)
-    within the connection limit (here 2 s), and nothing is written."""
+    """A listener that never answers, an HTTP server (the issue's: Dask read its reply as the
+    length of a message of exabytes), or a server that greets with text, is refused on one
+    line (exit 2) within the connection limit (here 2 s), and nothing is written."""
     from snakecg.sweeps import cluster
 
     monkeypatch.setattr(cluster, "CONNECT_TIMEOUT", 2.0)

@@ -112,7 +112,11 @@ def _probe(address: str, deadline: float) -> None:
     except _NotDask as exc:
         raise InputError(f"{address!r} is not a Dask scheduler ({exc}); give the address "
                          f"of a running dask scheduler, tcp://HOST:PORT") from None
-    except (OSError, TimeoutError) as exc:
+    except TimeoutError:
+        raise InputError(f"no Dask scheduler answered at {address!r} within "
+                         f"{CONNECT_TIMEOUT:g} s; give the address of a running dask "
+                         f"scheduler, tcp://HOST:PORT") from None
+    except OSError as exc:
         why = " ".join(str(exc).split())[:200] or type(exc).__name__
         raise InputError(f"cannot reach the Dask scheduler at {address!r} within "
                          f"{CONNECT_TIMEOUT:g} s ({why})") from None

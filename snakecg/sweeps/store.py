@@ -271,11 +271,20 @@ def store_id(root) -> str:
     return sid
 
 
+def degrees(q: np.ndarray) -> np.ndarray:
+    """Joint angles ``q`` (rad) in degrees as a store of format 3 holds them: each the
+    degrees rounded to 9 decimals where those give ``q`` back exactly (the angles of a grid
+    given in degrees: -120.0, not -119.99999999999999), else ``numpy.rad2deg``."""
+    deg = np.rad2deg(q)
+    rounded = np.round(deg, 9)
+    return np.where(np.deg2rad(rounded) == q, rounded, deg)
+
+
 def stored_values(arrays: dict[str, np.ndarray], fmt: str) -> dict[str, np.ndarray]:
     """A chunk's arrays as a store of format ``fmt`` holds them: format 3 keeps the joint
-    angles in degrees."""
+    angles in degrees (:func:`degrees`)."""
     if _per_file(fmt):
-        return {**arrays, "q": np.rad2deg(arrays["q"])}
+        return {**arrays, "q": degrees(arrays["q"])}
     return arrays
 
 
@@ -431,20 +440,21 @@ class Reader:
         return (d != 0).all(axis=1) if d.ndim == 2 else d != 0
 
     def chunk(self, index: int, names=None) -> dict[str, np.ndarray]:
-        """The values of recorded chunk ``index`` (only its configurations), as stored
-        (format 3: ``q`` in degrees), verified against its digests: format 3 checks each
-        file read against its own digest (so ``names`` are all that is read); formats 1
-        and 2 record one digest of all arrays, so every array is read to check it."""
+        """The values of the arrays ``names`` (default all) of recorded chunk ``index``
+        (only its configurations), as stored (format 3: ``q`` in degrees), after every
+        file of the chunk is checked against its digests: format 3 records one per file
+        (each is read, checked, and decoded if asked for), formats 1 and 2 one of the
+        values of all arrays (each is read and decoded to check it)."""
         per_file = _per_file(self.fmt)
         start, stop = self.plan.chunk_range(index)
-        want = list(names or self.names) if per_file else list(self.names)
+        want = set(names or self.names)
         out = {}
-        for name in want:
+        for k, name in enumerate(self.names):
             spec = self.specs[name]
-            digest_ = self.digests[index, array_names().index(name)] if per_file else None
             data = _chunks.read_file(self._file(name, index), spec, index, store=self.name,
-                                     digest=digest_)
-            out[name] = _chunks.decode(data, spec, index, store=self.name)[:stop - start]
+                                     digest=self.digests[index, k] if per_file else None)
+            if name in want or not per_file:
+                out[name] = _chunks.decode(data, spec, index, store=self.name)[:stop - start]
         if not per_file and digest(out, self.fmt, self.names) != int(self.digests[index]):
             raise InputError(f"{self.name}: chunk {index} (configurations from {start:,}) "
                              f"does not match its recorded digest (one of its arrays was "
@@ -459,10 +469,9 @@ class Reader:
     def q_rad(self, data: dict, planned: np.ndarray, index: int) -> np.ndarray:
         """The joint angles (rad) of chunk ``index`` read by :meth:`chunk`: ``planned``
         (the plan's, as computed), which the stored ones must be exactly (format 3: in
-        degrees, ``numpy.rad2deg`` of them)."""
+        degrees, :func:`degrees` of them)."""
         stored = data["q"]
-        if not np.array_equal(np.rad2deg(planned) if _per_file(self.fmt) else planned,
-                              stored):
+        if not np.array_equal(degrees(planned) if _per_file(self.fmt) else planned, stored):
             start = index * self.plan.chunk
             raise InputError(f"{self.name}: array q, chunk {index} (configurations from "
                              f"{start:,}) does not hold the joint angles of the store's "
