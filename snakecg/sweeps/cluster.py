@@ -140,7 +140,7 @@ def _connect_scheduler(distributed, address: str):
                          ) from None
     try:
         c.wait_for_workers(1, timeout=CONNECT_TIMEOUT)
-    except (TimeoutError, OSError) as exc:
+    except (TimeoutError, OSError):
         c.close()
         raise SnakecgError(f"the Dask scheduler at {address!r} has no workers (none joined "
                            f"within {CONNECT_TIMEOUT:g} s); start some with dask worker "

@@ -74,7 +74,7 @@ def read(store) -> dict[str, np.ndarray]:
     the configurations were computed at (format 3 stores them in degrees, checked here to
     be exactly those of the store's grid or samples). Also ``complete``: a boolean per
     configuration."""
-    reader, meta, plan = _open(store)
+    reader, _, plan = _open(store)
     out = {}
     for name in reader.names:
         spec = reader.specs[name]

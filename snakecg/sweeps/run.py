@@ -147,11 +147,15 @@ def sweep(scene, *, grid=None, samples=None, seed=None, store, client=None, chun
       ``(lo, hi)`` pair in rad or one per joint) from ``seed``.
     * ``store``: path of the Zarr store (a folder, e.g. ``sweep.zarr``). If it exists and was
       made with the same arguments, only the chunks missing from it are computed (each
-      recorded chunk is first checked against its digest when ``verify``); a store made with
-      other arguments is refused.
+      recorded chunk is first checked against its digests when ``verify``); a store made with
+      other arguments is refused. A sweep into a store that another sweep is writing waits
+      for it to end (it prints that it waits, unless progress is off), then resumes it.
     * Where it runs: ``client`` (a ``dask.distributed.Client``), or ``scheduler``
-      (``tcp://HOST:PORT`` of a running cluster), or else a local cluster of ``workers``
-      processes (default one per core) started and shut down by this call.
+      (``tcp://HOST:PORT`` of a running cluster: a Dask scheduler must answer there within
+      10 s, and have a worker within another 10 s), or else a local cluster of ``workers``
+      processes (default one per core, at most 4 per core) started and shut down by this
+      call, on 127.0.0.1 with TLS and temporary credentials: no other program or user can
+      connect to it.
     * ``chunk``: configurations per chunk (one Dask task, one Zarr chunk). Default, for a
       new store: :func:`~snakecg.sweeps.plan.default_chunk` of the scenario and joint count
       (about 1.5 s of single-core work, at most 16 MiB of results), cut so that each worker
