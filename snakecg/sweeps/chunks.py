@@ -3,9 +3,9 @@ and reading one back verified and bounded.
 
 A chunk file of a sweep store holds one chunk of one array, encoded as the array's Zarr
 metadata says: its values' little-endian bytes in C order (the ``bytes`` codec alone: every
-array of formats 1 and 2, the digest array of every format), or those bytes compressed by
-Blosc (the ``bytes`` codec then the ``blosc`` codec: the data arrays of format 3, see
-:data:`COMPRESSION`). The last chunk of an array is stored whole, padded with the array's
+array of formats 1 and 2, the torques and the digest array of format 3), or those bytes
+compressed by Blosc (the ``bytes`` codec then the ``blosc`` codec: the other arrays of
+format 3, see :data:`COMPRESSION`). The last chunk of an array is stored whole, padded with the array's
 fill value, as Zarr stores edge chunks.
 
 Everything that reads a store's data (:func:`snakecg.sweeps.summary`, ``figure``, ``read``,
@@ -27,14 +27,21 @@ import numpy as np
 
 from ..errors import InputError
 
-__all__ = ["COMPRESSION", "ChunkSpec", "spec_of", "encode", "decode", "file_digest",
+__all__ = ["COMPRESSION", "compressed", "ChunkSpec", "spec_of", "encode", "decode", "file_digest",
            "read_file", "chunk_key", "leave_page_cache", "BLOSC_OVERHEAD"]
 
-#: The Blosc compression of the data arrays of stores of format 3 (``None``: raw bytes).
-#: LZ4 with bit shuffling: 1.2-1.4 times smaller on the sweeps measured (the flags 30-70
-#: times, the joint angles of a grid 8-20 times, the minima of the kept torques 3-95 times;
-#: the maxima and torques little), at about 0.5 ms of CPU per MB; see the performance notes.
+#: The Blosc compression of the arrays of stores of format 3 (``None``: raw bytes), but for
+#: the torques (:func:`compressed`). LZ4 with bit shuffling, about 0.5 ms of CPU per MB:
+#: the joint angles of a grid shrink 4-50 times, the flags 15-500 times, the least kept
+#: values of sr and of |a_obj|^2 (bounded wheels) 15-95 times, |qdd|^2's maxima 2.6 times;
+#: the torques 1.0-1.2 times, so they stay raw (70-80 % of the bytes, not worth the CPU).
 COMPRESSION = {"cname": "lz4", "clevel": 5, "shuffle": "bitshuffle"}
+
+
+def compressed(name: str) -> bool:
+    """Whether array ``name`` of a new store is compressed (:data:`COMPRESSION`): all but
+    the torques."""
+    return COMPRESSION is not None and not name.startswith("tau_")
 #: Bytes a Blosc (version 1) frame adds to its data at most: its header.
 BLOSC_OVERHEAD = 16
 _BLOSC_SHUFFLE = {"noshuffle": 0, "shuffle": 1, "bitshuffle": 2}

@@ -143,12 +143,13 @@ def _normalise(obj):
     return json.loads(json.dumps(obj))
 
 
-def _compressors():
+def _compressors(name: str):
     from zarr.codecs import BloscCodec
 
     c = _chunks.COMPRESSION
-    return None if c is None else [BloscCodec(cname=c["cname"], clevel=c["clevel"],
-                                              shuffle=c["shuffle"])]
+    if not _chunks.compressed(name):
+        return None
+    return [BloscCodec(cname=c["cname"], clevel=c["clevel"], shuffle=c["shuffle"])]
 
 
 def create(path: Path, meta: dict, n_configurations: int, chunk: int, joints: int):
@@ -169,7 +170,7 @@ def create(path: Path, meta: dict, n_configurations: int, chunk: int, joints: in
             root.create_array(name, shape=(n_configurations, *row), chunks=(chunk, *row),
                               dtype="bool" if flag else "float64",
                               fill_value=False if flag else np.nan,
-                              compressors=_compressors(), attributes=attrs,
+                              compressors=_compressors(name), attributes=attrs,
                               dimension_names=("configuration", "joint")[:1 + len(row)])
         joint = root.create_array("joint", shape=(joints,), chunks=(joints,), dtype="int64",
                                   fill_value=0, compressors=None, dimension_names=("joint",),
