@@ -190,7 +190,7 @@ def scaling(tmp: Path, quick: bool, chunk: int | None = None, repeat: int = 1,
 
 
 def overhead(tmp: Path, quick: bool, joints: int | None = None, repeat: int = 3,
-             seconds: float = 8.0, variants=("tls-lz4",)) -> dict:
+             seconds: float = 8.0, variants=("tls-lz4",), scenarios=None) -> dict:
     """Wall time of a warm 1-worker sweep against the same chunks evaluated in this process
     one after the other (the plain loop, run right before and right after each sweep: their
     mean is the anchor, so a drift of the machine's speed weighs on both alike), ``repeat``
@@ -206,6 +206,8 @@ def overhead(tmp: Path, quick: bool, joints: int | None = None, repeat: int = 3,
 
     out = {}
     for sc_name, nj in (("wheels", 3), ("frictionless", 4), ("ideal_wheels", 4)):
+        if scenarios and sc_name not in scenarios:
+            continue
         nj = joints or nj
         sc = scene(nj, sc_name)
         chunk = default_chunk(sc_name, nj)
@@ -379,6 +381,8 @@ def main() -> None:
     ap.add_argument("--repeat", type=int, default=3,
                     help="scaling: alternated rounds of 1 and 2 workers; overhead: rounds of "
                     "loop, sweep, loop (default 3)")
+    ap.add_argument("--scenarios", default=None,
+                    help="overhead: comma-separated scenarios (default all three)")
     ap.add_argument("--variants", default="tls-lz4",
                     help="scaling, overhead: comma-separated among tls-lz4 (what sweeps do), "
                     "tls-raw, tcp-raw (the previous release), run one after the other in "
@@ -401,7 +405,8 @@ def main() -> None:
                                         tuple(args.variants.split(",")))
             elif part == "overhead":
                 results[part] = overhead(tmp, args.quick, args.joints, args.repeat,
-                                         args.seconds, tuple(args.variants.split(",")))
+                                         args.seconds, tuple(args.variants.split(",")),
+                                         args.scenarios and args.scenarios.split(","))
             elif part == "size":
                 results[part] = size(tmp)
             elif part == "grid4":

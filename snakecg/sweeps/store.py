@@ -98,12 +98,22 @@ def _per_configuration(name: str, joints: int) -> tuple[int, ...]:
     return (joints,) if name == "q" or name.startswith("tau_") else ()
 
 
+_SYMBOL = {"norm_a_obj": "|a_obj|^2 (eq. 27)", "norm_qdd": "|qdd_s|^2 (eq. 26)",
+           "norm_lambda": "|lambda|^2", "sr": "slippage ratio sr (eq. 30)"}
+
+
 def _long_name(name: str) -> str:
+    """The ``long_name`` attribute of array ``name`` (what xarray shows as its title)."""
     if name in _LONG:
         return _LONG[name]
-    kind, m = ("torque at the ", name[4:]) if name.startswith("tau_") else ("", name)
-    which, m = ("largest", m[4:]) if m.startswith("max_") else ("least kept", m[9:])
-    return f"{kind}{which} {m} over the input ellipsoid"
+    torque = name.startswith("tau_")
+    m = name[4:] if torque else name
+    if m.startswith("max_"):
+        what = f"largest {_SYMBOL[m[4:]]} over the input ellipsoid"
+    else:
+        what = (f"smallest {_SYMBOL[m[9:]]} over the torques of the input ellipsoid that "
+                f"keep the contact")
+    return f"torque attaining the {what}" if torque else what
 
 
 def configuration_bytes(joints: int) -> int:
