@@ -234,7 +234,8 @@ LOCAL_CONFIG = {"distributed.worker.profile.enabled": False,
 def _security():
     """Temporary TLS credentials for one local cluster (``Security.temporary()``: a key and
     a self-signed certificate made in memory, handed to the worker processes through their
-    start-up pipe, never written to a file): the scheduler, nannies and workers accept only
+    start-up pipe; Dask writes them for an instant into a private temporary folder, mode
+    0700, while a TLS context loads them): the scheduler, nannies and workers accept only
     peers that present them, so no other program, and no other user of the machine, can
     connect to the cluster and run code in it."""
     try:

@@ -5,7 +5,6 @@ from __future__ import annotations
 
 import dataclasses
 import math
-import os
 import sys
 import time
 import uuid
@@ -29,6 +28,7 @@ from .cluster import (
     progress_mode,
     start_bar,
 )
+from .lock import store_lock
 from .plan import Plan, default_chunk, grid_plan, samples_plan, spread_chunk
 from .work import evaluate_and_write, evaluate_chunk
 
@@ -216,89 +216,9 @@ def sweep(scene, *, grid=None, samples=None, seed=None, store, client=None, chun
         raise InputError(f"store must be a path (e.g. 'sweep.zarr'), got {store!r}")
     path = Path(store)
     _store.check_target(path)
-    with _store_lock(path, mode):
+    with store_lock(path, quiet=mode == "off"):
         return _run(scene, plan, path, chunk, client, scheduler, workers, mode, verify,
                     feasible, clearance, shared_store, t0)
-
-
-def _store_lock(path: Path, mode: str):
-    """The lock of the store at ``path`` (the file ``.NAME.lock`` beside it while a sweep
-    runs), held for the whole sweep: a second sweep into the same store waits, saying so,
-    until the first ends (then it resumes the store: it finds the chunks complete, or is
-    refused if made with other arguments), instead of both creating or writing it at once."""
-    lock = _StoreLock(path.with_name(f".{path.name}.lock"))
-    if not lock.acquire(block=False):
-        if mode != "off":
-            sys.stderr.write(f"snakecg sweep: {path} is in use by another sweep; waiting for "
-                             f"it to finish\n")
-            sys.stderr.flush()
-        lock.acquire(block=True)
-    return lock
-
-
-class _StoreLock:
-    """An exclusive ``flock`` on a lock file that is removed when released, so that no lock
-    file is left beside the store: whoever takes the lock checks that the file it locked is
-    still the one at the path (else it was removed by the previous holder, and it tries
-    again), the usual way to remove a lock file safely. Without ``fcntl`` (Windows),
-    ``filelock``'s lock, whose file stays."""
-
-    def __init__(self, path: Path):
-        self.path, self.fd, self.fallback = path, None, None
-
-    def acquire(self, block: bool) -> bool:
-        try:
-            import fcntl
-        except ImportError:  # pragma: no cover - not POSIX
-            from filelock import FileLock, Timeout
-
-            self.fallback = self.fallback or FileLock(str(self.path))
-            try:
-                self.fallback.acquire(timeout=-1 if block else 0)
-                return True
-            except Timeout:
-                return False
-        while True:
-            try:
-                fd = os.open(self.path, os.O_RDWR | os.O_CREAT, 0o600)
-            except OSError as exc:
-                raise InputError(f"--out {str(self.path.with_name(self.path.name[1:-5]))!r}:"
-                                 f" cannot create its lock file beside it "
-                                 f"({' '.join(str(exc).split())}); the folder must be "
-                                 f"writable") from None
-            try:
-                fcntl.flock(fd, fcntl.LOCK_EX | (0 if block else fcntl.LOCK_NB))
-            except BlockingIOError:
-                os.close(fd)
-                return False
-            except BaseException:
-                os.close(fd)
-                raise
-            try:
-                same = os.fstat(fd).st_ino == os.stat(self.path).st_ino
-            except FileNotFoundError:
-                same = False
-            if same:
-                self.fd = fd
-                return True
-            os.close(fd)  # removed meanwhile by the previous holder: take the new one
-
-    def release(self) -> None:
-        if self.fallback is not None:  # pragma: no cover - not POSIX
-            self.fallback.release()
-            return
-        try:
-            os.unlink(self.path)
-        except OSError:
-            pass
-        os.close(self.fd)
-        self.fd = None
-
-    def __enter__(self):
-        return self
-
-    def __exit__(self, *exc):
-        self.release()
 
 
 def _run(scene, plan, path, chunk, client, scheduler, workers, mode, verify, feasible,
