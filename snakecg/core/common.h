@@ -11,8 +11,21 @@
 
 #include <math.h>
 #include <stdlib.h>
+#include <time.h>
 
 typedef long long int sc_int;
+
+/* Wall-clock seconds from an arbitrary origin (monotonic where POSIX has it): the long calls
+ * of the simulation pause after a budget of them, so that Python can handle a Ctrl-C. */
+static inline double sc_wall_time(void) {
+  struct timespec ts;
+#if defined(CLOCK_MONOTONIC)
+  clock_gettime(CLOCK_MONOTONIC, &ts);
+#else
+  timespec_get(&ts, TIME_UTC);
+#endif
+  return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
 
 /* Before a loop over one of the model's sizes (known when compiling): unroll it (GCC; other
  * compilers go on without). */
@@ -47,8 +60,8 @@ enum { ABSENT = 0, HELD = 1, LOST = 2, SLIDE_POS = 3, SLIDE_NEG = 4 };
 enum { EV_SEPARATION = 0, EV_S_LOW = 1, EV_S_HIGH = 2, EV_GAP = 3, EV_BREAKAWAY = 4,
        EV_SLIDE_STOP = 5 };
 /* segment status */
-enum { SEG_END = 0, SEG_EVENT = 1, SEG_TOO_SMALL = -1, SEG_PYTHON = -2, SEG_MEMORY = -3,
-       SEG_BAD_INPUT = -4 };
+enum { SEG_END = 0, SEG_EVENT = 1, SEG_PAUSED = 2, SEG_TOO_SMALL = -1, SEG_PYTHON = -2,
+       SEG_MEMORY = -3, SEG_BAD_INPUT = -4 };
 enum { SETTLE_DONE = 0, SETTLE_PYTHON = 1, SETTLE_MEMORY = 2 };
 
 /* One segment: inputs, then outputs (filled by core_integrate_segment). */
@@ -71,13 +84,18 @@ typedef struct {
   const double *y0;      /* NY */
   const double *t_eval;  /* n_eval increasing times in (t0, t1] */
   sc_int n_eval;
+  double budget;         /* wall-clock seconds a call may take: after them (and at least one
+                            step) it stops with SEG_PAUSED; <= 0: no limit */
+  sc_int resume;         /* 1: go on with the segment a call paused (from t_end, y_end,
+                            h_next and n_out, as if it had not stopped) */
   /* outputs */
   double *y_eval;        /* n_eval x NY, row-major */
   sc_int n_out;          /* output times reached */
   double t_end;          /* where the segment ended (t1 or the event) */
   double *y_end;         /* NY: the state there */
   sc_int event;          /* the event that fired (index into ev_*), -1 if none */
-  sc_int nfev, nsteps, nrejected;
+  sc_int nfev, nsteps, nrejected; /* of this call */
+  double h_next;         /* SEG_PAUSED: the step size to go on with */
   sc_int status;         /* SEG_* */
 } sc_segment;
 
