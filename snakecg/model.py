@@ -23,7 +23,7 @@ from ._inputs import (
 from .core import Data, Layout
 from .errors import InputError
 from .forward import ForwardResult, _Columns, forward, forward_one
-from .native import load_backend
+from .native import ManifestMismatch, load_backend
 from .robot import Robot, Scene
 from .solver import (
     ABSENT,
@@ -53,7 +53,11 @@ def _backend(n_joints: int, prefer: str, progress=None):
     key = (n_joints, prefer)
     if key not in _BACKENDS:
         folder, manifest = artifacts.model_dir(n_joints, progress=progress)
-        backend = load_backend(folder, manifest, prefer=prefer, progress=progress)
+        try:
+            backend = load_backend(folder, manifest, prefer=prefer, progress=progress)
+        except ManifestMismatch as exc:  # an edited manifest: the model generated again
+            folder, manifest = artifacts.regenerate(n_joints, folder, exc, progress=progress)
+            backend = load_backend(folder, manifest, prefer=prefer, progress=progress)
         _BACKENDS[key] = (backend, manifest, folder)
     return _BACKENDS[key]
 
