@@ -765,6 +765,10 @@ ELSEWHERE = {
     ("sweep", "--range", "1e308"): "ValueError",
     ("sweep", "--range", str(10**40)): "ValueError",
     ("sweep", "--step", "5e-324"): "ValueError",
+    ("forward", "--kappa", "1e-320"): "LinAlgError",
+    ("optimize", "--kappa", "1e-320"): "LinAlgError",
+    ("sweep", "--step", "1e-320"): "ValueError",
+    ("sweep", "--step", "1e-9"): "MemoryError",
 }
 
 
