@@ -744,3 +744,30 @@ def test_every_batched_method_estimates_its_memory_first(method, monkeypatch, rn
     ok = max(2, int(limit / (4 * per_row)))
     if method != "optimize":  # (a solve per row: the refusal above is what is tested)
         call(model, q[:ok])
+
+
+def test_simulate_checks_its_inputs_as_forward_does():
+    """The ranges forward refuses are refused by simulate too, before any work: torques and
+    wrenches above 1e150, velocities above 1e75 (the norms would overflow float64; 1e151
+    ran until killed), and a duration outside 1e-9..1e6 s (5e-324 divided by zero); a
+    torque law that returns such a torque stops the run with a SimulationError."""
+    from snakecg.simulate.records import SimulationError
+
+    model = snakecg.load(Scene(Robot(joints=2)))
+    q = [0.0, 0.0, 0.0, 0.3, 0.3]
+    for kw, words in (({"tau": [1e151, 0.0]}, r"tau must have every entry within \+-1e\+150"),
+                      ({"v0": [0, 0, 0, 1e76, 0]}, r"v must have every entry within \+-1e\+75"),
+                      ({"v_obj0": [0, -1e80, 0]}, r"v_obj must have every entry within"),
+                      ({"f_obj": [0, 0, 2e150]}, r"f_obj must have every entry within"),
+                      ({"duration": 5e-324}, r"duration must be from 1e-09 to 1e\+06 s"),
+                      ({"duration": 1e7}, r"duration must be from 1e-09 to 1e\+06 s")):
+        args = {"tau": [0.01, 0.0], "duration": 0.01, **kw}
+        with pytest.raises(InputError, match=words):
+            model.simulate(q, args.pop("tau"), args.pop("duration"), **args)
+    with pytest.raises(SimulationError, match=r"torques within \+-1e\+150 N m"):
+        model.simulate(q, lambda t: [1e200, 0.0], 0.01)
+    for argv, words in ((["--tau=1e151,0"], "tau must have every entry within"),
+                        (["--tau=0.01,0", "--duration=5e-324"], "must be >= 1e-09 (s)"),
+                        (["--tau=0.01,0", "--v=0,0,0,1e80,0"], "v must have every entry")):
+        code, out, err = run_cli(["simulate", "--joints", "2", "--q=0,0,0,0.3,0.3", *argv])
+        assert code == 2 and len(err.splitlines()) == 1 and words in err, err
