@@ -36,7 +36,8 @@ def register(sub) -> None:
     add_robot_args(p)
     p.add_argument("--q", required=True, metavar="Q", type=text("numbers x,y,theta,q1..qn"),
                    help="configuration x,y,theta,q1..qn (m and rad; NNdeg for degrees)")
-    p.add_argument("--tau", metavar="TAU", type=text("numbers tau1..tau_n"), help="joint torques tau1..tau_n (N m): draw the "
+    p.add_argument("--tau", metavar="TAU", type=text("numbers tau1..tau_n"),
+                   help="joint torques tau1..tau_n (N m): draw the "
                    "forces and accelerations")
     p.add_argument("--out", required=True, metavar="FILE", type=text("a figure file"),
                    help=f"figure file ({', '.join(FORMATS)})")

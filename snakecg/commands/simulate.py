@@ -10,7 +10,8 @@ import numpy as np
 
 from .._inputs import MAX_MAGNITUDE
 from ..errors import InputError, SnakecgError
-from ..simulate.inputs import (DURATION_MAX, DURATION_MIN, MAX_FRAMES, MAX_OUTPUT_SAMPLES, MAX_PERIODS, METHODS, RTOL_MIN,
+from ..simulate.inputs import (DURATION_MAX, DURATION_MIN, MAX_FRAMES, MAX_OUTPUT_SAMPLES,
+                               MAX_PERIODS, METHODS, RTOL_MIN,
                                STABILIZATION_MAX, check_count)
 from ._common import (add_robot_args, check_vector, count, out_dir, parse_vector, print_json,
                       progress_reporter, real, scene_from_args, strict_json, text)

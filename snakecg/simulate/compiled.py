@@ -180,7 +180,8 @@ class CompiledSegments:
     def run_all(self, y, mode, loss, tau, grid, T, gtol, max_events):
         """The whole run from the state ``y`` in ``mode`` (after the start's settle, the
         energy ``loss`` removed there) with the constant torque ``tau`` to ``T``, output at
-        ``grid`` (increasing, the last is ``T``), in C (``core_run``, called again while it pauses): the filled
+        ``grid`` (increasing, the last is ``T``), in C (``core_run``, called again while it
+        pauses): the filled
         :class:`~snakecg.core.segment.Run` (the workspace's: read it before the next run) and
         its arrays (``t``, ``y``, ``mode``, ``loss`` and the quantities ``samples`` (as
         :meth:`samples_into`) of each sample, the ``modes`` and the ``events``, see run.c),

@@ -15,7 +15,8 @@ from ..solver import FORCE_LIMIT, check_input_range
 from .compiled import placement
 from .torques import torque_law
 
-__all__ = ["DURATION_MAX", "DURATION_MIN", "METHODS", "MAX_OUTPUT_SAMPLES", "MAX_PERIODS", "MAX_STEPS", "MAX_FRAMES", "RTOL_MIN",
+__all__ = ["DURATION_MAX", "DURATION_MIN", "METHODS", "MAX_OUTPUT_SAMPLES", "MAX_PERIODS",
+           "MAX_STEPS", "MAX_FRAMES", "RTOL_MIN",
            "STABILIZATION_MAX", "Settings", "check_arguments", "check_count", "positive",
            "single"]
 
