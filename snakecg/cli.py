@@ -92,8 +92,12 @@ def _format_warning(message, category, filename, lineno, line=None):
 
 
 def main(argv=None) -> int:
-    parser = build_parser()
-    args = parser.parse_args(argv)
+    try:
+        parser = build_parser()  # imports every sub-command: a Ctrl-C may land here too
+        args = parser.parse_args(argv)
+    except KeyboardInterrupt:
+        sys.stderr.write("snakecg: interrupted\n")
+        return 130
     if not getattr(args, "command", None):
         parser.print_help(sys.stderr)
         return 2
