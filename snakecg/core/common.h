@@ -15,17 +15,20 @@
 
 typedef long long int sc_int;
 
-/* Wall-clock seconds from an arbitrary origin (monotonic where POSIX has it): the long calls
- * of the simulation pause after a budget of them, so that Python can handle a Ctrl-C. */
-static inline double sc_wall_time(void) {
-  struct timespec ts;
+#ifdef SC_WALL_TIME
+/* Wall-clock seconds from an arbitrary origin (POSIX's monotonic clock: the file defines
+ * _POSIX_C_SOURCE before its first include; elsewhere the CPU time): the long calls of the
+ * simulation pause after a budget of them, so that Python can handle a Ctrl-C. */
+static double sc_wall_time(void) {
 #if defined(CLOCK_MONOTONIC)
+  struct timespec ts;
   clock_gettime(CLOCK_MONOTONIC, &ts);
-#else
-  timespec_get(&ts, TIME_UTC);
-#endif
   return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+#else
+  return (double)clock() / CLOCKS_PER_SEC;
+#endif
 }
+#endif
 
 /* Before a loop over one of the model's sizes (known when compiling): unroll it (GCC; other
  * compilers go on without). */

@@ -24,6 +24,7 @@
  * the Python right-hand side regularizes; a failed evaluation) returns a status that sends it
  * to the Python path.
  */
+#define _POSIX_C_SOURCE 200809L /* clock_gettime (before the first include) */
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
@@ -31,6 +32,7 @@
 
 #include "snakecg_layout.h"
 #define SC_ROW_VELOCITIES
+#define SC_WALL_TIME
 #include "common.h"
 
 #define NA SNAKECG_NA
@@ -351,7 +353,7 @@ static int initial_step(sc_ctx *c, const sc_segment *sg, const double *y0, const
 static int segment(sc_ctx *c, sc_segment *sg) {
   double K[DP_NX][NY], y[NY], f[NY], y_new[NY], f_new[NY], scale[NY];
   double g_old[MAX_EVENTS], g_new[MAX_EVENTS];
-  double t, h_abs, h, t_new, err, factor;
+  double t, h_abs = 0.0, h, t_new, err, factor;
   const double stop_at = sg->budget > 0 ? sc_wall_time() + sg->budget : INFINITY;
   sc_dense D;
   const int n_ev = (int)sg->n_ev;

@@ -16,12 +16,14 @@
  * back to Python, a failed or too small step, more samples or modes than room) returns
  * RUN_PYTHON: the caller then runs the whole loop in Python from the start.
  */
+#define _POSIX_C_SOURCE 200809L /* clock_gettime (before the first include) */
 #include <math.h>
 #include <string.h>
 #include <time.h>
 
 #include "snakecg_layout.h"
 #define SC_TYPES_ONLY
+#define SC_WALL_TIME
 #include "common.h"
 
 #define MODE_WIDTH (NC + 1)  /* a mode: its row states, then off_link */
