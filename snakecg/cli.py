@@ -40,6 +40,13 @@ class _Parser(argparse.ArgumentParser):
         sys.stderr.write(f"{self.prog}: error: {message} (see {self.prog} --help)\n")
         raise SystemExit(2)
 
+    def _get_values(self, action, arg_strings):
+        # `--opt=--`: argparse drops the '--' and hands the option an empty list, which no
+        # `type` ever sees (every sub-command's parser is this class, so this covers all)
+        if action.option_strings and "--" in arg_strings:
+            raise argparse.ArgumentError(action, "expected a value, got '--'")
+        return super()._get_values(action, arg_strings)
+
 
 def build_parser() -> argparse.ArgumentParser:
     """The parser of ``snakecg`` with every sub-command that is installed."""
@@ -85,8 +92,12 @@ def _format_warning(message, category, filename, lineno, line=None):
 
 
 def main(argv=None) -> int:
-    parser = build_parser()
-    args = parser.parse_args(argv)
+    try:
+        parser = build_parser()  # imports every sub-command: a Ctrl-C may land here too
+        args = parser.parse_args(argv)
+    except KeyboardInterrupt:
+        sys.stderr.write("snakecg: interrupted\n")
+        return 130
     if not getattr(args, "command", None):
         parser.print_help(sys.stderr)
         return 2

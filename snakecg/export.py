@@ -24,6 +24,7 @@ Every file is written atomically (a unique temporary name, then ``os.replace``).
 from __future__ import annotations
 
 import math
+import os
 import re
 from pathlib import Path
 
@@ -166,6 +167,12 @@ def export_library(scene, out, *, source: str | None = None) -> list[Path]:
 
     if not isinstance(scene, Scene):
         raise InputError(f"scene must be a snakecg.Scene, got {type(scene).__name__}")
+    if isinstance(out, bytes) or not isinstance(out, (str, os.PathLike)):
+        raise InputError(f"out must be a folder path (str or os.PathLike), got "
+                         f"{type(out).__name__}")
+    if not str(out).strip() or "\0" in str(out):
+        raise InputError(f"out must name a folder, got {str(out)!r} (an empty name would "
+                         "write into the working directory)")
     out = Path(out)
     if out.exists() and not out.is_dir():
         raise InputError(f"out {str(out)!r} exists and is not a directory")

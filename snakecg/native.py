@@ -267,6 +267,12 @@ def _signature_problems(sig: dict, n_in: int, n_out: int, size_in, size_out) -> 
     return out
 
 
+class ManifestMismatch(ArtifactError):
+    """The manifest's function signatures disagree with its own hash-verified code (the
+    manifest was edited or damaged): the model folder is regenerated
+    (:func:`snakecg.artifacts.regenerate`)."""
+
+
 def _check_signatures(where, manifest: dict, problems: list[str]) -> None:
     """The buffers are sized from the manifest: refuse code whose functions have other shapes
     (a manifest edited or damaged without breaking its JSON would otherwise make the compiled
@@ -274,7 +280,7 @@ def _check_signatures(where, manifest: dict, problems: list[str]) -> None:
     if problems:
         shown = "; ".join(problems[:3]) + (f" (and {len(problems) - 3} more)"
                                            if len(problems) > 3 else "")
-        raise ArtifactError(
+        raise ManifestMismatch(
             f"{where}: the generated functions do not match manifest.json of the model for "
             f"joints={manifest.get('n_joints')}: {shown}. The model folder is damaged: "
             "reinstall snakecg, or delete the snakecg cache folder (SNAKECG_CACHE_DIR)"
@@ -547,12 +553,17 @@ def load_backend(folder: Path, manifest: dict, *, prefer: str = "compiled", prog
             try:
                 return CompiledBackend(lib, manifest)
             except (OSError, AttributeError, ArtifactError) as exc:
+                # rebuilt from the verified C; reported once it loads (a library rebuilt
+                # that still disagrees shows the manifest is wrong: ManifestMismatch)
+                backend = _load_fresh(compile_model(folder, manifest, progress=progress,
+                                                    rebuild=True), manifest)
                 _report_once(
                     f"{lib}:foreign",
                     f"snakecg: the cached library {lib} does not belong to this model "
                     f"({_one_line(exc)}); rebuilding it")
-                return _load_fresh(compile_model(folder, manifest, progress=progress,
-                                                 rebuild=True), manifest)
+                return backend
+        except ManifestMismatch:  # the library built from the verified C disagrees too:
+            raise                 # the manifest is wrong, the model folder is regenerated
         except BuildError as exc:
             _report_once(
                 f"{manifest['n_joints']}:{exc}",

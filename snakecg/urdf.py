@@ -24,10 +24,11 @@ may be bent (``q_urdf = q_snakecg - offset``).
 
 from __future__ import annotations
 
-from pathlib import Path
+import io
 
 import numpy as np
 
+from ._inputs import number
 from .errors import InputError
 
 __all__ = ["robot_from_urdf"]
@@ -35,28 +36,55 @@ __all__ = ["robot_from_urdf"]
 _REVOLUTE = ("revolute", "continuous")
 
 
-def _load(path: Path):
+def _load(path):
+    """``(path, yourdfpy's URDF)`` of the file: read once (a regular file of bounded size),
+    checked to be well-formed XML without a DTD or entities, then parsed by yourdfpy from
+    those bytes."""
     try:
         import yourdfpy
     except ImportError:
         raise InputError("reading URDF needs the yourdfpy package: pip install "
                          "'snakecg[urdf]'") from None
-    if not path.is_file():
-        raise InputError(f"URDF file {str(path)!r} does not exist or is not a file")
     from lxml import etree  # yourdfpy's XML library
 
-    try:  # yourdfpy recovers from malformed XML silently: refuse it first
-        etree.parse(str(path), etree.XMLParser(resolve_entities=False, no_network=True))
-    except (etree.XMLSyntaxError, OSError) as exc:
-        raise InputError(f"URDF file {str(path)!r} cannot be read: not well-formed XML "
-                         f"({' '.join(str(exc).split())})") from None
+    from .toml_file import read_bytes
+
+    p, data = read_bytes(path, where="URDF file", kind="URDF")
+    where = f"URDF file {str(p)!r}"
+    # yourdfpy recovers from malformed XML silently and its parser expands entities: an
+    # external entity, or any DTD, could make the file read as another robot. Refused.
+    no_dtd = (f"{where} declares a DTD or entities (<!DOCTYPE ...>, <!ENTITY ...>); a robot "
+              "file may not: write the values out")
+    parser = etree.XMLParser(resolve_entities=False, no_network=True, load_dtd=False,
+                             huge_tree=False)
     try:
-        return yourdfpy.URDF.load(str(path), build_scene_graph=False, load_meshes=False,
-                                  build_collision_scene_graph=False,
-                                  load_collision_meshes=False)
+        root = etree.fromstring(data, parser)
+    except (etree.XMLSyntaxError, ValueError) as exc:
+        if b"<!DOCTYPE" in data or b"<!ENTITY" in data:
+            raise InputError(no_dtd) from None
+        raise InputError(f"{where} cannot be read: not well-formed XML "
+                         f"({' '.join(str(exc).split())})") from None
+    info = root.getroottree().docinfo
+    has_entity = any(isinstance(e, etree._Entity) for e in root.iter())
+    if info.doctype or info.internalDTD is not None or info.externalDTD is not None \
+            or has_entity:
+        raise InputError(no_dtd)
+    try:
+        return p, yourdfpy.URDF.load(io.BytesIO(data), build_scene_graph=False,
+                                     load_meshes=False, build_collision_scene_graph=False,
+                                     load_collision_meshes=False)
     except Exception as exc:  # noqa: BLE001 - yourdfpy raises many kinds for a bad file
-        raise InputError(f"URDF file {str(path)!r} cannot be read: "
+        raise InputError(f"{where} cannot be read: "
                          f"{' '.join(str(exc).split()) or type(exc).__name__}") from None
+
+
+def _text(value) -> str:
+    """A value of the file as the file wrote it (a vector as its numbers)."""
+    from ._inputs import short_repr
+
+    if isinstance(value, np.ndarray):
+        return repr(" ".join(f"{x:g}" for x in value.ravel()))
+    return short_repr(value)
 
 
 def _origin(T) -> np.ndarray:
@@ -80,10 +108,18 @@ def robot_from_urdf(path, *, tol: float = 1e-6, name: str | None = None):
     the parallel-axes test (radians)."""
     from .robot import Robot
 
-    p = Path(path)
-    urdf = _load(p)
+    tol = number("tol", tol, lo=0, unit="m")
+    if name is not None and not isinstance(name, str):
+        raise InputError(f"name must be a string, got {type(name).__name__}")
+    p, urdf = _load(path)
     where = f"URDF file {str(p)!r}"
     robot = urdf.robot
+    for kind, items in (("link", robot.links), ("joint", robot.joints)):
+        names = [x.name for x in items]
+        twice = sorted({n for n in names if names.count(n) > 1})
+        if twice:
+            raise InputError(f"{where}: {kind} names must be unique; repeated: "
+                             f"{', '.join(repr(n) for n in twice[:5])}")
     links = {ln.name: ln for ln in robot.links}
     joints = list(robot.joints)
     children: dict[str, list] = {n: [] for n in links}
@@ -136,7 +172,13 @@ def robot_from_urdf(path, *, tol: float = 1e-6, name: str | None = None):
         frame[j.child] = frame[j.parent] @ _origin(j.origin)
     axes = []
     for j in chain_joints:
-        a = np.asarray(j.axis if j.axis is not None else (1.0, 0.0, 0.0), dtype=float)
+        try:
+            a = np.asarray(j.axis if j.axis is not None else (1.0, 0.0, 0.0), dtype=float)
+        except (TypeError, ValueError):
+            a = np.zeros(0)
+        if a.shape != (3,) or not np.isfinite(a).all():
+            raise InputError(f"{where}: joint {j.name!r} has axis {_text(j.axis)}; expected "
+                             "three finite numbers (<axis xyz=\"0 0 1\"/>)")
         norm = np.linalg.norm(a)
         if not norm > 0:
             raise InputError(f"{where}: joint {j.name!r} has a zero axis")

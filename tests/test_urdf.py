@@ -234,3 +234,74 @@ def test_the_example_urdf_is_the_example_toml_robot():
     a = snakecg.Robot.from_urdf(root / "snake3.urdf")
     b = snakecg.Robot.from_toml(root / "robot.toml")
     assert a == b and a.name == b.name  # Table 1, exactly (the lengths rounded from 1e-17)
+
+
+def _example_body() -> str:
+    from pathlib import Path
+
+    text = (Path(__file__).resolve().parents[1] / "examples" / "snake3.urdf").read_text()
+    return text[text.index("<robot"):]
+
+
+def test_dtds_and_entities_are_refused(tmp_path, capsys):
+    """An external entity would make the file read as another robot (yourdfpy's recovering
+    parser dropped the link that used it: 3 joints came back as 2); any DTD is refused, the
+    entity never resolved, billion laughs included; CLI: one line, exit 2."""
+    secret = tmp_path / "secret.txt"
+    secret.write_text("link9")
+    body = _example_body()
+    cases = {
+        "external": f'<!DOCTYPE robot [<!ENTITY x SYSTEM "file://{secret}">]>\n'
+                    + body.replace('name="link2"', 'name="&x;"'),
+        "internal": '<!DOCTYPE robot [<!ENTITY m "2.0">]>\n'
+                    + body.replace('<mass value="1.0"/>', '<mass value="&m;"/>', 1),
+        "doctype only": '<?xml version="1.0"?>\n<!DOCTYPE robot SYSTEM "robot.dtd">\n' + body,
+        "billion laughs": '<!DOCTYPE r [<!ENTITY a "aaaaaaaaaa"><!ENTITY b "&a;&a;&a;&a;&a;'
+                          '&a;&a;&a;&a;&a;"><!ENTITY c "&b;&b;&b;&b;&b;&b;&b;&b;&b;&b;">]>\n'
+                          + body.replace('name="link1"', 'name="&c;"'),
+    }
+    for name, text in cases.items():
+        path = tmp_path / f"{name.replace(' ', '_')}.urdf"
+        path.write_text(text)
+        with pytest.raises(snakecg.InputError, match="declares a DTD or entities"):
+            snakecg.Robot.from_urdf(path)
+        code = main(["forward", "--robot", str(path), "--q", "0,0,0,0,0,0", "--tau", "0,0,0"])
+        err = capsys.readouterr().err
+        assert code == 2 and len(err.splitlines()) == 1 and "DTD" in err, (name, err)
+        assert "Traceback" not in err
+    # an entity used without a declaration is not well-formed
+    path = tmp_path / "undeclared.urdf"
+    path.write_text(body.replace('name="link2"', 'name="&x;"'))
+    with pytest.raises(snakecg.InputError, match="not well-formed XML.*'x' not defined"):
+        snakecg.Robot.from_urdf(path)
+
+
+def test_bad_arguments_axes_and_names(tmp_path):
+    """from_urdf's arguments, a two-number axis and duplicate names: one clear InputError."""
+    from pathlib import Path
+
+    example = Path(__file__).resolve().parents[1] / "examples" / "snake3.urdf"
+    for bad in (None, 3, b"robot.urdf", ["a"]):
+        with pytest.raises(snakecg.InputError, match="path must be the path of a robot"):
+            snakecg.Robot.from_urdf(bad)
+    for tol, words in ((float("nan"), "finite"), (-1e-6, ">= 0"), (float("inf"), "finite"),
+                       ("1e-6", "real number")):
+        with pytest.raises(snakecg.InputError, match=f"tol must be.*{words}"):
+            snakecg.Robot.from_urdf(example, tol=tol)
+    body = _example_body()
+    for axis in ("0 1", "0 0 1 0", "0 nan 1", "0 0 inf"):
+        path = tmp_path / "axis.urdf"
+        path.write_text(body.replace('<axis xyz="0 0 1"/>', f'<axis xyz="{axis}"/>', 1))
+        with pytest.raises(snakecg.InputError,
+                           match=f"joint 'joint1' has axis '{axis}'; expected three finite"):
+            snakecg.Robot.from_urdf(path)
+    path = tmp_path / "dup.urdf"
+    path.write_text(body.replace('<link name="link3">', '<link name="link2">'))
+    with pytest.raises(snakecg.InputError, match="link names must be unique; repeated: 'link2'"):
+        snakecg.Robot.from_urdf(path)
+    path.write_text(body.replace('name="joint2"', 'name="joint1"'))
+    with pytest.raises(snakecg.InputError, match="joint names must be unique; repeated: 'joint1'"):
+        snakecg.Robot.from_urdf(path)
+    for device in ("/dev/zero", "/dev/null"):
+        with pytest.raises(snakecg.InputError, match="is a device"):
+            snakecg.Robot.from_urdf(device)

@@ -76,7 +76,7 @@ def _allow_slide(text, n_links=None):
     from ..errors import InputError
 
     tokens = text.replace(",", " ").split()
-    if not tokens or not all(t.isdigit() and t.isascii() for t in tokens) or (
+    if not tokens or not all(t.isdigit() and t.isascii() and len(t) <= 9 for t in tokens) or (
             n_links is not None and not all(1 <= int(t) <= n_links for t in tokens)):
         links = f"1..{n_links}" if n_links is not None else ">= 1"
         raise InputError(f"--allow-slide takes link numbers {links} (e.g. 2,3), 'all' or "

@@ -10,7 +10,8 @@ import numpy as np
 
 from .._inputs import MAX_MAGNITUDE
 from ..errors import InputError, SnakecgError
-from ..simulate.inputs import (MAX_FRAMES, MAX_OUTPUT_SAMPLES, MAX_PERIODS, METHODS, RTOL_MIN,
+from ..simulate.inputs import (DURATION_MAX, DURATION_MIN, MAX_FRAMES, MAX_OUTPUT_SAMPLES,
+                               MAX_PERIODS, METHODS, RTOL_MIN,
                                STABILIZATION_MAX, check_count)
 from ._common import (add_robot_args, check_vector, count, out_dir, parse_vector, print_json,
                       progress_reporter, real, scene_from_args, strict_json, text)
@@ -46,8 +47,8 @@ def register(sub) -> None:
                    help="initial snake velocities (default: rest)")
     p.add_argument("--v-obj", metavar="VO", type=text("numbers vx,vy,omega"),
                    help="initial object twist vx,vy,omega (default 0)")
-    p.add_argument("--duration", type=real(0, lo_open=True, unit="s"), default=0.5,
-                   help="seconds (default 0.5)")
+    p.add_argument("--duration", type=real(DURATION_MIN, DURATION_MAX, unit="s"), default=0.5,
+                   help=f"seconds, {DURATION_MIN:g} to {DURATION_MAX:g} (default 0.5)")
     p.add_argument("--controller", choices=("least-slip-push",),
                    help="feedback law instead of --tau: the least-slippage push query "
                    "(snakecg optimize) answered every --control-period")

@@ -11,8 +11,24 @@
 
 #include <math.h>
 #include <stdlib.h>
+#include <time.h>
 
 typedef long long int sc_int;
+
+#ifdef SC_WALL_TIME
+/* Wall-clock seconds from an arbitrary origin (POSIX's monotonic clock: the file defines
+ * _POSIX_C_SOURCE before its first include; elsewhere the CPU time): the long calls of the
+ * simulation pause after a budget of them, so that Python can handle a Ctrl-C. */
+static double sc_wall_time(void) {
+#if defined(CLOCK_MONOTONIC)
+  struct timespec ts;
+  clock_gettime(CLOCK_MONOTONIC, &ts);
+  return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+#else
+  return (double)clock() / CLOCKS_PER_SEC;
+#endif
+}
+#endif
 
 /* Before a loop over one of the model's sizes (known when compiling): unroll it (GCC; other
  * compilers go on without). */
@@ -47,7 +63,8 @@ enum { ABSENT = 0, HELD = 1, LOST = 2, SLIDE_POS = 3, SLIDE_NEG = 4 };
 enum { EV_SEPARATION = 0, EV_S_LOW = 1, EV_S_HIGH = 2, EV_GAP = 3, EV_BREAKAWAY = 4,
        EV_SLIDE_STOP = 5 };
 /* segment status */
-enum { SEG_END = 0, SEG_EVENT = 1, SEG_GEOMETRY = 2, SEG_TOO_SMALL = -1, SEG_PYTHON = -2,
+enum { SEG_END = 0, SEG_EVENT = 1, SEG_GEOMETRY = 2, SEG_PAUSED = 3, SEG_TOO_SMALL = -1,
+       SEG_PYTHON = -2,
        SEG_MEMORY = -3, SEG_BAD_INPUT = -4 };
 enum { SETTLE_DONE = 0, SETTLE_PYTHON = 1, SETTLE_MEMORY = 2 };
 
@@ -72,13 +89,18 @@ typedef struct {
   const double *t_eval;  /* n_eval increasing times in (t0, t1] */
   sc_int n_eval;
   struct sc_geometry *geo; /* the contact check (geometry.h), or null */
+  double budget;         /* wall-clock seconds a call may take: after them (and at least one
+                            step) it stops with SEG_PAUSED; <= 0: no limit */
+  sc_int resume;         /* 1: go on with the segment a call paused (from t_end, y_end,
+                            h_next and n_out, as if it had not stopped) */
   /* outputs */
   double *y_eval;        /* n_eval x NY, row-major */
   sc_int n_out;          /* output times reached */
   double t_end;          /* where the segment ended (t1 or the event) */
   double *y_end;         /* NY: the state there */
   sc_int event;          /* the event that fired (index into ev_*), -1 if none */
-  sc_int nfev, nsteps, nrejected;
+  sc_int nfev, nsteps, nrejected; /* of this call */
+  double h_next;         /* SEG_PAUSED: the step size to go on with */
   sc_int status;         /* SEG_* */
 } sc_segment;
 

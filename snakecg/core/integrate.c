@@ -28,6 +28,7 @@
  * the Python right-hand side regularizes; a failed evaluation) returns a status that sends it
  * to the Python path.
  */
+#define _POSIX_C_SOURCE 200809L /* clock_gettime (before the first include) */
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
@@ -35,6 +36,7 @@
 
 #include "snakecg_layout.h"
 #define SC_ROW_VELOCITIES
+#define SC_WALL_TIME
 #include "common.h"
 #include "geometry.h"
 
@@ -379,20 +381,35 @@ static int initial_step(sc_ctx *c, const sc_segment *sg, const double *y0, const
   return 0;
 }
 
+/* The segment's steps. A call that has taken at least one step and used up its wall-clock
+ * budget stops before the next step with SEG_PAUSED, its place (t, y, the step size, the
+ * outputs written) in t_end, y_end, h_next and n_out; the call with `resume` goes on from
+ * there: the right-hand side and the event functions at y are evaluated again (the same
+ * values as the step's end gave), so the steps are those of a call that never stopped. */
 static int segment(sc_ctx *c, sc_segment *sg) {
   double K[DP_NX][NY], y[NY], f[NY], y_new[NY], f_new[NY], scale[NY];
   double g_old[MAX_EVENTS], g_new[MAX_EVENTS], geo_old = 0.0;
-  double t = sg->t0, h_abs, h, t_new, err, factor;
+  double t, h_abs = 0.0, h, t_new, err, factor;
+  const double stop_at = sg->budget > 0 ? sc_wall_time() + sg->budget : INFINITY;
   sc_dense D;
   const int n_ev = (int)sg->n_ev;
   sc_geometry *geo = sg->geo && sg->geo->mode != GEO_OFF && !sg->geo->found ? sg->geo : 0;
-  sc_int ie = 0;
+  sc_int ie, steps = 0;
   int st, e, k, accepted, rejected, have_dense;
-  memcpy(y, sg->y0, sizeof(double) * NY);
-  if (geo) { /* the contact check at the start */
+  if (sg->resume) {
+    t = sg->t_end;
+    ie = sg->n_out;
+    h_abs = sg->h_next;
+    memcpy(y, sg->y_end, sizeof(double) * NY);
+  } else {
+    t = sg->t0;
+    ie = 0;
+    memcpy(y, sg->y0, sizeof(double) * NY);
+  }
+  if (geo) { /* the contact check at the start (a resumed call: where the last one paused) */
     sc_int pair;
     const double d = geo_depth(geo, y, &pair);
-    if (d > geo->tol) {
+    if (!sg->resume && d > geo->tol) {
       geo_record(geo, t, y, d, pair);
       if (geo->mode == GEO_STOP) {
         memcpy(sg->y_end, y, sizeof(double) * NY);
@@ -404,9 +421,17 @@ static int segment(sc_ctx *c, sc_segment *sg) {
   }
   if ((st = rhs(c, y, f))) return st;
   for (e = 0; e < n_ev; ++e) g_old[e] = event_value(c, e);
-  if ((st = initial_step(c, sg, y, f, &h_abs))) return st;
+  if (!sg->resume && (st = initial_step(c, sg, y, f, &h_abs))) return st;
   while (!(t == sg->t1)) {
     const double min_step = 10 * fabs(nextafter(t, INFINITY) - t);
+    if (steps > 0 && sc_wall_time() > stop_at) {
+      sg->t_end = t;
+      memcpy(sg->y_end, y, sizeof(double) * NY);
+      sg->h_next = h_abs;
+      sg->n_out = ie;
+      return SEG_PAUSED;
+    }
+    ++steps;
     if (h_abs > sg->max_step) h_abs = sg->max_step;
     else if (h_abs < min_step) h_abs = min_step;
     accepted = rejected = 0;
@@ -527,14 +552,17 @@ static int segment(sc_ctx *c, sc_segment *sg) {
   return SEG_END;
 }
 
-/* Integrate one segment (see sc_segment); returns and stores the status (SEG_*). */
+/* Integrate one segment (see sc_segment), or go on with a paused one (`resume`); returns and
+ * stores the status (SEG_*). */
 int SNAKECG_EXPORT(core_integrate_segment)(sc_segment *sg) {
   sc_ctx c;
   int i, st;
-  sg->n_out = 0;
+  if (!sg->resume) {
+    sg->n_out = 0;
+    sg->t_end = sg->t0;
+  }
   sg->event = -1;
   sg->nfev = sg->nsteps = sg->nrejected = 0;
-  sg->t_end = sg->t0;
   if (sg->n_ev < 0 || sg->n_ev > MAX_EVENTS || !(sg->t1 > sg->t0) || !(sg->rtol > 0) ||
       !(sg->atol >= 0) || !(sg->max_step > 0) || sg->contact_index < 0 ||
       sg->contact_index >= NL) {

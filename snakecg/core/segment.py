@@ -18,14 +18,17 @@ __all__ = [
     "SEG_END",
     "SEG_EVENT",
     "SEG_MEMORY",
+    "SEG_PAUSED",
     "SEG_PYTHON",
     "SEG_TOO_SMALL",
     "GEO_OFF",
     "GEO_RECORD",
     "GEO_STOP",
     "Geometry",
+    "PAUSE_AFTER",
     "RUN_COMPLETED",
     "RUN_GEOMETRY",
+    "RUN_PAUSED",
     "RUN_STOPPED",
     "SEG_GEOMETRY",
     "contact_depth_function",
@@ -48,14 +51,20 @@ EVENT_CODES = {"lam_contact": 0, "s": 1, "l_k - s": 2, "gap": 3, "bound - |lam|"
 SEG_END, SEG_EVENT, SEG_TOO_SMALL, SEG_PYTHON, SEG_MEMORY, SEG_BAD_INPUT = 0, 1, -1, -2, -3, -4
 #: The segment stopped at the contact check's first violation (``GEO_STOP``).
 SEG_GEOMETRY = 2
+#: A segment or run that used up its wall-clock budget (``budget``): called again with
+#: ``resume`` as the call left it, it goes on where it stopped.
+SEG_PAUSED = 3
 #: The contact check's modes (``GEO_*`` of geometry.h): off, stop at the first violation,
 #: record it and go on.
 GEO_OFF, GEO_STOP, GEO_RECORD = 0, 1, 2
 #: Settle status (``SETTLE_*`` of settle.c): done; anything else hands it to Python.
 SETTLE_DONE = 0
 #: Run status (``RUN_*`` of run.c): completed, stopped (events), stopped at the contact
-#: check's first violation; anything else: Python.
-RUN_COMPLETED, RUN_STOPPED, RUN_GEOMETRY = 0, 1, 3
+#: check's first violation, paused (as SEG_PAUSED); anything else: Python.
+RUN_COMPLETED, RUN_STOPPED, RUN_GEOMETRY, RUN_PAUSED = 0, 1, 3, 4
+#: Wall-clock seconds a compiled segment or run goes on before it returns to Python (which
+#: then handles a Ctrl-C, or calls again to go on): a long run stays interruptible.
+PAUSE_AFTER = 0.1
 
 
 class Segment(ctypes.Structure):
@@ -65,9 +74,9 @@ class Segment(ctypes.Structure):
                 ("ev_kind", _P), ("ev_row", _P), ("n_ev", _I), ("contact_index", _I),
                 ("c_k", _D), ("l_k", _D), ("alpha", _D), ("pivot_tol", _D), ("rtol", _D),
                 ("atol", _D), ("max_step", _D), ("t0", _D), ("t1", _D), ("y0", _P),
-                ("t_eval", _P), ("n_eval", _I), ("geo", _P), ("y_eval", _P), ("n_out", _I),
-                ("t_end", _D), ("y_end", _P), ("event", _I), ("nfev", _I), ("nsteps", _I),
-                ("nrejected", _I), ("status", _I)]
+                ("t_eval", _P), ("n_eval", _I), ("geo", _P), ("budget", _D), ("resume", _I),
+                ("y_eval", _P), ("n_out", _I), ("t_end", _D), ("y_end", _P), ("event", _I),
+                ("nfev", _I), ("nsteps", _I), ("nrejected", _I), ("h_next", _D), ("status", _I)]
 
 
 class Geometry(ctypes.Structure):
@@ -101,7 +110,8 @@ class Run(ctypes.Structure):
                 ("loss_out", _P), ("n_out", _I), ("cap_modes", _I), ("modes", _P),
                 ("n_modes", _I), ("cap_events", _I), ("events", _P), ("n_events", _I),
                 ("stuck", _I), ("samples", _P), ("segments", _I), ("nfev", _I), ("nsteps", _I),
-                ("segment_cpu", _D), ("start", _I), ("start_out", _P), ("status", _I)]
+                ("segment_cpu", _D), ("start", _I), ("start_out", _P), ("budget", _D),
+                ("resume", _I), ("mode", _I), ("i0", _I), ("n_sampled", _I), ("status", _I)]
 
 
 def segment_functions(lib: ctypes.CDLL, prefix: str):

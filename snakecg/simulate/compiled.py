@@ -23,12 +23,15 @@ from types import SimpleNamespace
 import numpy as np
 
 from ..core.segment import (
+    PAUSE_AFTER,
     RUN_COMPLETED,
     RUN_GEOMETRY,
+    RUN_PAUSED,
     RUN_STOPPED,
     SEG_END,
     SEG_EVENT,
     SEG_GEOMETRY,
+    SEG_PAUSED,
     SEG_TOO_SMALL,
     SETTLE_DONE,
 )
@@ -39,6 +42,8 @@ __all__ = ["CompiledSegments", "compiled_reason"]
 INTEGRATORS = ("auto", "compiled", "scipy")
 #: Events a whole run in C (core_run) has room for; a run with more is done by the Python loop.
 RUN_EVENTS = 256
+#: Samples evaluated in one C call (between two, Python handles a Ctrl-C).
+SAMPLE_CHUNK = 4096
 _TOO_SMALL = "Required step size is less than spacing between numbers."  # solve_ivp's words
 
 
@@ -159,7 +164,13 @@ class CompiledSegments:
         seg.t_eval, seg.n_eval, seg.y_eval = (self.t_eval.ctypes.data, n,
                                               self.y_eval.ctypes.data)
         seg.n_ev, seg.t0, seg.t1 = len(specs), t0, t1
+        seg.budget, seg.resume = PAUSE_AFTER, 0
         status = self._fn(self._address)
+        while status == SEG_PAUSED:  # back in Python now and then: a Ctrl-C raises here
+            dyn.nfev += seg.nfev
+            self.steps += seg.nsteps
+            seg.resume = 1
+            status = self._fn(self._address)
         dyn.nfev += seg.nfev
         self.steps += seg.nsteps
         if status not in (SEG_END, SEG_EVENT, SEG_TOO_SMALL, SEG_GEOMETRY):
@@ -179,7 +190,8 @@ class CompiledSegments:
     def run_all(self, y, mode, loss, tau, grid, T, gtol, max_events):
         """The whole run from the state ``y`` in ``mode`` (after the start's settle, the
         energy ``loss`` removed there) with the constant torque ``tau`` to ``T``, output at
-        ``grid`` (increasing, the last is ``T``), in one C call (``core_run``): the filled
+        ``grid`` (increasing, the last is ``T``), in C (``core_run``, called again while it
+        pauses): the filled
         :class:`~snakecg.core.segment.Run` (the workspace's: read it before the next run) and
         its arrays (``t``, ``y``, ``mode``, ``loss`` and the quantities ``samples`` (as
         :meth:`samples_into`) of each sample, the ``modes`` and the ``events``, see run.c),
@@ -219,7 +231,10 @@ class CompiledSegments:
         R.cap_modes, R.modes = cap_events + 1, base + 8 * o_modes
         R.cap_events, R.events = cap_events, base + 8 * o_events
         R.n_modes = 0
+        R.budget, R.resume = PAUSE_AFTER, 0
         status = self._run(self.ws.run_address)
+        while status == RUN_PAUSED:  # back in Python now and then: a Ctrl-C raises here
+            status = self._run(self.ws.run_address)
         if status not in (RUN_COMPLETED, RUN_STOPPED, RUN_GEOMETRY):
             self.started = R.n_modes > 0
             return None
@@ -328,8 +343,12 @@ class CompiledSegments:
         n = len(Y)
         self.tau[:] = tau
         self.state[:] = mode.state
-        if n and self._samples(self._address, n, Y.ctypes.data, out.ctypes.data) != 0:
-            raise MemoryError("the compiled samples could not allocate their workspace")
+        width = out.shape[1]
+        for i in range(0, n, SAMPLE_CHUNK):  # in chunks: a Ctrl-C is handled between two
+            m = min(SAMPLE_CHUNK, n - i)
+            if self._samples(self._address, m, Y.ctypes.data + 8 * i * Y.shape[1],
+                             out.ctypes.data + 8 * i * width) != 0:
+                raise MemoryError("the compiled samples could not allocate their workspace")
 
     def samples(self, Y, mode, tau):
         """:meth:`samples_into` as a dict of ``ydot`` (n, n_y), ``lam``, ``AV`` (n, n_c),
