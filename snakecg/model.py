@@ -531,8 +531,9 @@ class SceneModel(RobotModel):
         ``objective``: ``"max_sr"`` (largest slippage ratio, eq. 30), ``"least_slip_push"``
         (a requested object acceleration with the least ``||qdd_s||^2``, eq. 26) or
         ``"strongest_push"`` (largest object acceleration along a direction with no wheel
-        sliding). Keywords: ``tau_max``, ``radius`` (input region: box and/or ellipsoid of
-        eq. 31, default ``radius=1``), ``direction``, ``a_min``, ``a_obj``, ``allow_slide``.
+        sliding). Keywords: ``tau_max`` (default the robot's ``effort_limits``), ``radius``
+        (input region: box and/or ellipsoid of eq. 31, default ``radius=1`` without a box),
+        ``direction``, ``a_min``, ``a_obj``, ``allow_slide``.
         Returns an :class:`~snakecg.optimize.OptimizeResult` (``tau``, ``status`` with
         ``reason``, ``analysis`` = the forward result at ``tau``); see
         :func:`snakecg.optimize.optimize` and docs/optimize.md.

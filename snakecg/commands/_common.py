@@ -170,7 +170,7 @@ def add_robot_args(p, *, scene: bool = True) -> None:
                    help="robot description file (TOML, see docs/model.md); the options below "
                    "override its [scene] table")
     if scene:
-        p.add_argument("--scenario", choices=SCENARIOS,
+        p.add_argument("--scenario", choices=SCENARIOS, type=lambda s: s.replace("-", "_"),
                        help="ground scenario (default frictionless)")
         p.add_argument("--kappa", type=float, help="object mass / mean link mass (default 100)")
         p.add_argument("--mu", type=float,

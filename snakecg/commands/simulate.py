@@ -14,6 +14,7 @@ from ..simulate.inputs import (MAX_FRAMES, MAX_OUTPUT_SAMPLES, MAX_PERIODS, METH
                                STABILIZATION_MAX, check_count)
 from ._common import (add_robot_args, check_vector, count, out_dir, parse_vector, print_json,
                       progress_reporter, real, scene_from_args, strict_json, text)
+from ._names import objective_name
 
 EXAMPLES = """\
 examples:
@@ -48,7 +49,7 @@ def register(sub) -> None:
                    help="initial object twist vx,vy,omega (default 0)")
     p.add_argument("--duration", type=real(0, lo_open=True, unit="s"), default=0.5,
                    help="seconds (default 0.5)")
-    p.add_argument("--controller", choices=("least-slip-push",),
+    p.add_argument("--controller", choices=("least-slip-push",), type=objective_name,
                    help="feedback law instead of --tau: the least-slippage push query "
                    "(snakecg optimize) answered every --control-period")
     p.add_argument("--a-min", type=real(0, MAX_MAGNITUDE, unit="m/s^2"),
