@@ -64,13 +64,14 @@ def load(obj, *, backend: str = "compiled", progress=None):
     The generated model for the joint count is taken from the package or the user cache
     (generated once if missing), compiled once into a cached shared library and shared by
     every robot with that joint count. ``backend="casadi"`` evaluates with CasADi's
-    in-process virtual machine instead of the compiled C. ``progress``: ``None`` reports
-    the generation and compilation steps on a terminal or in a Jupyter notebook (quiet
-    elsewhere, see :mod:`snakecg.progress`), ``False`` never, or a callable taking each
-    step's message.
+    in-process virtual machine instead of the compiled C. ``progress``: ``None`` prints a
+    line on standard error when a generation or compilation starts and one when it ends, with
+    its duration, whatever standard error is (a terminal, a pipe, a log, a notebook; silenced
+    by ``SNAKECG_PROGRESS=0``, see :mod:`snakecg.progress`), ``False`` never, or a callable
+    taking each step's message.
     """
     _check_load_args(backend, progress)
-    from .progress import resolve  # None: model builds reported on a terminal or notebook
+    from .progress import resolve  # None: model builds reported on standard error
 
     progress = resolve(progress)
     if isinstance(obj, Scene):

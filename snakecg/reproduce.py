@@ -32,7 +32,7 @@ from .analysis import com_polar, joint_grid
 from .errors import InputError
 from .figures import paper as figures
 from .geometry import SELF_CLEARANCE, feasibility, link_segments
-from .progress import progress_bar
+from .progress import progress_reporter, stage
 from .robot import SCENARIOS, Robot, Scene
 
 __all__ = ["PAPER_TABLE2", "ReproduceOptions", "reproduce", "table2", "TABLE2_ROWS"]
@@ -112,6 +112,12 @@ class ReproduceReport:
     feasible_count: int | None = None
     grid_count: int | None = None
     timings: dict = field(default_factory=dict)
+    #: Prints a line per stage on standard error (None: quiet, ``progress=False``).
+    progress: object = field(default=None, repr=False)
+
+    def say(self, message: str) -> None:
+        if self.progress is not None:
+            self.progress(message)
 
 
 def _scene(joints: int, scenario: str, kappa: float, opts: ReproduceOptions) -> Scene:
@@ -171,14 +177,14 @@ def _infeasible_reason(f, k=None) -> str:
 def case_study_1(opts: ReproduceOptions, report: ReproduceReport, load, drawer=None):
     out = opts.out
     q = np.array([0.0, 0.0, 0.0, *np.deg2rad(opts.fig4_joints_deg)])
-    bar = progress_bar(len(opts.kappas_case1) * 3 + 3, "case study 1", enabled=opts.progress)
     for kappa in opts.kappas_case1:
         panels = []
         for scenario in SCENARIOS:
             model = load(_scene(2, scenario, kappa, opts))
             t1, t2, grids, N = torque_plane(model, q, opts.torque_grid)
             panels.append(figures.Fig4Panel(scenario, t1, t2, grids, _ellipse(N)))
-            bar.update()
+        report.say(f"  Fig. 4 torque-plane maps, kappa = {kappa:g} ({opts.torque_grid}^2 "
+                   "torques, 3 scenarios): done")
         why = _infeasible_reason(feasibility(model, q, clearance=opts.clearance))
         with _timed(report, "figures"):
             drawer.submit("figure4", panels=panels, kappa=kappa,
@@ -192,8 +198,7 @@ def case_study_1(opts: ReproduceOptions, report: ReproduceReport, load, drawer=N
         r, a = com_polar(model, Q)
         _write_text(out / f"case1_sweep_{scenario}.csv",
                     _extremes_csv(Q, r, a, ex, model.n_joints), report)
-        bar.update()
-    bar.close()
+        report.say(f"  extremes of the {len(Q):,} configurations, {scenario}: done")
 
 
 def _extremes_csv(Q, radius, angle, ex, na) -> str:
@@ -218,7 +223,6 @@ def _extremes_csv(Q, radius, angle, ex, na) -> str:
 def case_study_2(opts: ReproduceOptions, report: ReproduceReport, load):
     Q = joint_grid(3, opts.grid_lo_deg, opts.grid_hi_deg, opts.grid_step_deg)
     results = {}
-    bar = progress_bar(3, "case study 2 (21,952 configurations)", enabled=opts.progress)
     for scenario in SCENARIOS:
         model = load(_scene(3, scenario, opts.kappa_case2, opts))
         chunks = []
@@ -231,8 +235,7 @@ def case_study_2(opts: ReproduceOptions, report: ReproduceReport, load):
         results[scenario] = (model, ex, radius, angle)
         _write_text(opts.out / f"case2_sweep_{scenario}.csv",
                     _extremes_csv(Q, radius, angle, ex, 3), report)
-        bar.update()
-    bar.close()
+        report.say(f"  extremes of the {len(Q):,} configurations, {scenario}: done")
     return Q, results
 
 
@@ -442,10 +445,13 @@ def reproduce(opts: ReproduceOptions | None = None, *, load=None, echo=print) ->
         raise InputError(f"--out {str(out)!r} exists and is not a directory")
     out.mkdir(parents=True, exist_ok=True)
     opts = ReproduceOptions(**{**opts.__dict__, "out": out})
-    report = ReproduceReport()
+    report = ReproduceReport(progress=progress_reporter(prefix="snakecg reproduce")
+                             if opts.progress else None)
     t0 = time.perf_counter()
-    for j in (2, 3):  # build/compile first so the timings below are the study itself
-        load(Robot(joints=j))
+    with stage(report.progress, "loading the 2- and 3-joint models",
+               "loaded the 2- and 3-joint models"):
+        for j in (2, 3):  # build/compile first so the timings below are the study itself
+            load(Robot(joints=j))
     report.timings["models"] = time.perf_counter() - t0
     jobs = opts.jobs if opts.jobs is not None else min(2, os.cpu_count() or 1)
     drawer = figures.Drawer(jobs)
@@ -475,10 +481,21 @@ def reproduce(opts: ReproduceOptions | None = None, *, load=None, echo=print) ->
 def _studies(opts: ReproduceOptions, report: ReproduceReport, load, drawer) -> None:
     out = opts.out
     t1 = time.perf_counter()
-    case_study_1(opts, report, load, drawer)
+    with stage(report.progress, "case study 1 (2 joints): Fig. 4 maps and the sweeps",
+               "case study 1 done"):
+        case_study_1(opts, report, load, drawer)
     report.timings["case_study_1"] = time.perf_counter() - t1
     t2 = time.perf_counter()
-    Q, results = case_study_2(opts, report, load)
+    with stage(report.progress, "case study 2 (3 joints): the extremes of every shape of the "
+               "grid", "case study 2's extremes done"):
+        Q, results = case_study_2(opts, report, load)
+    with stage(report.progress, "Table 2, the shapes' feasibility and Figs. 4-6 (drawn in "
+               f"{'parallel' if drawer.parallel else 'this process'})", "figures done"):
+        _table_and_figures(opts, report, drawer, Q, results, t2)
+
+
+def _table_and_figures(opts, report, drawer, Q, results, t2) -> None:
+    out = opts.out
     feas = feasibility(results[SCENARIOS[0]][0], Q, clearance=opts.clearance)
     t = table2(results, feas.feasible if opts.feasible_only else None)
     report.table2 = t

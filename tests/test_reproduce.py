@@ -8,6 +8,9 @@ documented reading achieves, not a fit (no constant is tuned to the published nu
 from __future__ import annotations
 
 import csv
+import io
+import re
+from contextlib import redirect_stderr
 
 import numpy as np
 import pytest
@@ -29,11 +32,36 @@ TOLERANCE = {
 
 @pytest.fixture(scope="module")
 def run(tmp_path_factory):
+    """The reproduction, with its progress on a captured standard error (not a terminal):
+    ``report.stderr``."""
     out = tmp_path_factory.mktemp("reproduce")
     lines = []
-    opts = ReproduceOptions(out=out, formats=("png", "svg"), torque_grid=41, progress=False)
-    report = reproduce(opts, echo=lines.append)
+    opts = ReproduceOptions(out=out, formats=("png", "svg"), torque_grid=41)
+    err = io.StringIO()
+    with redirect_stderr(err):
+        report = reproduce(opts, echo=lines.append)
+    report.stderr = err.getvalue()
     return out, report, "\n".join(lines)
+
+
+def test_every_stage_says_when_it_starts_and_ends_off_a_terminal(run):
+    """Standard error is a StringIO here (no terminal): each stage still prints its start
+    and its end with the duration, and sub-steps as they finish, in order."""
+    _, report, _ = run
+    lines = report.stderr.splitlines()
+    assert lines and all(re.match(r"snakecg reproduce \[ *\d+\.\d s\] ", ln) for ln in lines)
+    said = [ln.split("] ", 1)[1] for ln in lines]
+    for start, done in [("loading the 2- and 3-joint models", "loaded the 2- and 3-joint "
+                         "models in "),
+                        ("case study 1 (2 joints)", "case study 1 done in "),
+                        ("case study 2 (3 joints)", "case study 2's extremes done in "),
+                        ("Table 2, the shapes' feasibility and Figs. 4-6", "figures done in ")]:
+        i = next(k for k, m in enumerate(said) if m.startswith(start))
+        j = next(k for k, m in enumerate(said) if m.startswith(done))
+        assert i < j and re.search(r" in \d+\.\d s$", said[j]), (start, said)
+    for scenario in snakecg.SCENARIOS:
+        assert f"  extremes of the 21,952 configurations, {scenario}: done" in said
+    assert sum(m.startswith("  Fig. 4 torque-plane maps, kappa = ") for m in said) == 3
 
 
 def test_table2_within_documented_tolerance_of_the_paper(run):
