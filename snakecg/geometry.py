@@ -16,6 +16,8 @@ are batch axes.
 * :func:`self_distance`, :func:`self_intersecting`: closest approach of non-adjacent links.
 * :func:`object_penetration`: how deep a link segment enters the plate.
 * :func:`feasibility`: both checks for configurations of a :class:`~snakecg.SceneModel`.
+* :data:`INFEASIBLE_MARK` and :func:`infeasible_footnote`: how every table marks a value
+  attained by a shape that is not physically possible (Table 2, ``sweep --summary``).
 """
 
 from __future__ import annotations
@@ -29,7 +31,9 @@ __all__ = [
     "SELF_CLEARANCE",
     "PENETRATION_TOLERANCE",
     "Feasibility",
+    "INFEASIBLE_MARK",
     "feasibility",
+    "infeasible_footnote",
     "link_segments",
     "object_penetration",
     "point_segment_distance",
@@ -46,6 +50,15 @@ SELF_CLEARANCE = 0.01
 #: A link entering the plate by less than this [m] only touches it (the contacting link lies
 #: on the plate's face; rounding puts it a few ulp inside).
 PENETRATION_TOLERANCE = 1e-9
+#: The mark of a table entry attained by a shape that is not physically possible (Fig. 6
+#: frames such shapes in red).
+INFEASIBLE_MARK = "*"
+
+
+def infeasible_footnote(clearance: float = SELF_CLEARANCE) -> str:
+    """The footnote that explains :data:`INFEASIBLE_MARK` under a table."""
+    return (f"{INFEASIBLE_MARK} a shape that is not physically possible (links closer than "
+            f"{clearance:g} m or inside the object)")
 
 
 def _cross(a, b):

@@ -164,7 +164,7 @@ def summary_text(s: dict) -> str:
         q = ",".join(f"{x:g}" for x in e["q_deg"])
         if e.get("feasible") is False:
             marked = True
-            return q + " *"
+            return q + " *"  # geometry.INFEASIBLE_MARK
         return q
 
     for m, d in s["metrics"].items():
@@ -174,9 +174,9 @@ def summary_text(s: dict) -> str:
         lines.append(f"{m:<26}{d['worst']['value']:>14.6g}  {at(d['worst']):<28}"
                      f"{d['best']['value']:>14.6g}  {at(d['best'])}")
     if marked:
-        lines.append(f"* a shape that is not physically possible (links closer than "
-                     f"{s['clearance']:g} m or inside the object); --feasible-only leaves "
-                     f"them out")
+        from ..geometry import infeasible_footnote
+
+        lines.append(f"{infeasible_footnote(s['clearance'])}; --feasible-only leaves them out")
     return "\n".join(lines)
 
 
