@@ -23,7 +23,6 @@ import numbers
 import numpy as np
 
 from ._inputs import short_repr as _r
-from .errors import InputError
 
 __all__ = ["ROBOT", "PAPER_JOINT_RANGE", "check_joint_limits", "check_effort_limits",
            "default_joint_limits", "resolve_tau_max", "describe"]
