@@ -17,12 +17,11 @@ import re
 
 import numpy as np
 import pytest
+from reference import Reference, rest_maps, solve_rest_batch
+from test_urdf import _random_links, write_urdf
 
 import snakecg
 from snakecg.cli import main
-
-from reference import Reference, rest_maps, solve_rest_batch
-from test_urdf import _random_links, write_urdf
 
 pytest.importorskip("yourdfpy", reason="the urdf extra: pip install '.[urdf]'")
 
