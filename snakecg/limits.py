@@ -25,7 +25,8 @@ import numpy as np
 from ._inputs import short_repr as _r
 
 __all__ = ["ROBOT", "PAPER_JOINT_RANGE", "check_joint_limits", "check_effort_limits",
-           "default_joint_limits", "resolve_tau_max", "describe"]
+           "default_joint_limits", "resolve_joint_limits", "resolve_tau_max", "describe",
+           "of_query"]
 
 #: The value of a query's ``tau_max`` or ``joint_limits`` that means "the robot's own".
 ROBOT = "robot"
@@ -128,6 +129,14 @@ def default_joint_limits(robot) -> tuple[np.ndarray, str]:
     return np.clip(jl, -math.pi, math.pi), "robot"
 
 
+def resolve_joint_limits(robot, joint_limits):
+    """``(joint_limits, source)``: :func:`default_joint_limits` for ``"robot"``, else the
+    value as given (``"argument"``; validated by the query)."""
+    if isinstance(joint_limits, str) and joint_limits == ROBOT:
+        return default_joint_limits(robot)
+    return joint_limits, "argument"
+
+
 def resolve_tau_max(robot, tau_max):
     """``(tau_max, source)``: the robot's ``effort_limits`` for ``tau_max == "robot"``
     (``(None, None)`` when it has none), else the value as given (``"argument"``; None: no
@@ -160,3 +169,11 @@ def describe(*, joint_limits=None, joint_limits_from=None, tau_max=None, tau_max
     out["tau_max_from"] = tau_max_from if tau_max is not None else None
     out["radius"] = None if radius is None else float(radius)
     return out
+
+
+def of_query(query, joint_limits=None, joint_limits_from=None) -> dict:
+    """:func:`describe` of a validated torque query (``snakecg.optimize.query.Query``) and,
+    for a shape query, its joint range."""
+    return describe(joint_limits=joint_limits, joint_limits_from=joint_limits_from,
+                    tau_max=query.tau_max, tau_max_from=query.tau_max_from,
+                    radius=query.radius)

@@ -309,7 +309,9 @@ def test_cli_json_and_errors(tmp_path):
     data = json.loads(out.stdout, parse_constant=lambda c: pytest.fail(f"non-strict {c}"))
     assert data["schema"] == "snakecg.optimize_shape/1"
     assert data["status"] == "optimal"
-    assert data["value"] == pytest.approx(0.9874917709, abs=1e-9)
+    # sliding wheels searched too: the exact piecewise optimum (the stick-only 0.9874917709
+    # was below what extremes finds at that shape)
+    assert data["value"] == pytest.approx(0.9878425076, abs=1e-9)
     assert fig.stat().st_size > 1000
     for argv in (["max-sr", "--joints", "3", "--starts", "0"],
                  ["max-sr", "--joints", "3", "--joint-limits", "1"],

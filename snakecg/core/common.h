@@ -326,34 +326,53 @@ static double sc_held_forces(const signed char *state, const double *G, const do
 }
 
 #ifdef SC_NEXT_STATES /* forward.c, settle.c */
-/* The next row states (snakecg.solver._violations with _tolerances): returns 1 if any moved. */
+/* Relative weight of the rounding term of a row's scale (snakecg.solver.ROUND_REL). */
+#define SC_ROUND_REL 1e-5
+
+/* The next row states (snakecg.solver._violations with _tolerances): returns 1 if any moved.
+ * Each row is judged against its own scale (force units), s_r = max(|lam_r|, |w_r| / G_rr,
+ * |b_r| / G_rr, ROUND_REL sum_j |G_rj lam_j| / G_rr) with b = w - G lam (the row's
+ * acceleration at zero force): tol_lam_r = rel_tol s_r, tol_w_r = rel_tol G_rr s_r. Scaling
+ * every input force scales every term: the decisions do not depend on units; and the huge
+ * forces of nearly dependent rows (which cancel in the other rows) no longer widen the
+ * tolerance of a row they barely move. */
 static int sc_next_states(signed char *state, const double *lam, const double *w,
                           const double *G, const double *bounds, double rel_tol) {
   const int nc = SNAKECG_NC;
-  double g = 0.0, s_lam = 0.0, s_w = 0.0, tol_lam, tol_w;
+  double g = 0.0, tol_lam[SNAKECG_NC], tol_w[SNAKECG_NC];
   signed char next[SNAKECG_NC];
-  int r, moved = 0;
+  int r, j, moved = 0;
   for (r = 0; r < nc; ++r) {
     double d = fabs(G[r + nc * r]);
     if (d > g) g = d; /* NaN never wins */
-    if (fabs(lam[r]) > s_lam) s_lam = fabs(lam[r]);
-    if (fabs(w[r]) > s_w) s_w = fabs(w[r]);
   }
   if (!(g > 0) || !isfinite(g)) g = 1.0;
-  if (s_w / g > s_lam) s_lam = s_w / g;
-  tol_lam = rel_tol * s_lam;
-  tol_w = rel_tol * g * s_lam;
+  for (r = 0; r < nc; ++r) {
+    double gr = fabs(G[r + nc * r]), b = w[r], cross = 0.0, s;
+    if (!(gr > 0) || !isfinite(gr)) gr = g;
+    for (j = 0; j < nc; ++j) {
+      double t = G[r + nc * j] * lam[j];
+      b -= t;
+      cross += fabs(t);
+    }
+    s = fabs(lam[r]);
+    if (fabs(w[r]) / gr > s) s = fabs(w[r]) / gr;
+    if (fabs(b) / gr > s) s = fabs(b) / gr;
+    if (SC_ROUND_REL * cross / gr > s) s = SC_ROUND_REL * cross / gr;
+    tol_lam[r] = rel_tol * s;
+    tol_w[r] = rel_tol * gr * s;
+  }
   memcpy(next, state, sizeof(next));
-  if (state[0] == HELD && lam[0] < -tol_lam) next[0] = LOST;
-  else if (state[0] == LOST && w[0] < -tol_w) next[0] = HELD;
+  if (state[0] == HELD && lam[0] < -tol_lam[0]) next[0] = LOST;
+  else if (state[0] == LOST && w[0] < -tol_w[0]) next[0] = HELD;
   for (r = 1; r < nc; ++r) {
     const double u = bounds[r];
     if (state[r] == HELD && isfinite(u)) {
-      if (lam[r] > u + tol_lam) next[r] = SLIDE_POS;
-      else if (lam[r] < -u - tol_lam) next[r] = SLIDE_NEG;
-    } else if (state[r] == SLIDE_POS && w[r] > tol_w) {
+      if (lam[r] > u + tol_lam[r]) next[r] = SLIDE_POS;
+      else if (lam[r] < -u - tol_lam[r]) next[r] = SLIDE_NEG;
+    } else if (state[r] == SLIDE_POS && w[r] > tol_w[r]) {
       next[r] = HELD;
-    } else if (state[r] == SLIDE_NEG && w[r] < -tol_w) {
+    } else if (state[r] == SLIDE_NEG && w[r] < -tol_w[r]) {
       next[r] = HELD;
     }
   }

@@ -10,7 +10,8 @@ import numpy as np
 
 from .certificate import certify
 from .fast import quad
-from .finish import check, objective_value, one_result, state_names
+from .finish import (answerable_tau, check, objective_value, one_result, state_names,
+                     unanswered)
 from .max_sr import max_sr
 from .problems import Answer, configs, floats
 from .push import least_slip_push, strongest_push
@@ -89,12 +90,18 @@ def optimize(model, q, objective: str = "max_sr", *, tau_max="robot", radius=Non
         res = one_result(model, query, cfg.q, a, certs[0], cfg.a_dir, e, t0)
         res._query = query
         return res
-    taus = np.array([a.tau for a in answers])
-    analysis = model.forward(qa, taus)
+    checked = [answerable_tau(model, cfg.q, a.tau) for a, cfg in zip(answers, cfgs)]
+    analysis = model.forward(qa, np.array([t for t, _ in checked]))
     raw = analysis.raw
+    for b, (a, (_, why)) in enumerate(zip(answers, checked)):
+        if why:
+            unanswered(model, raw[b], a, why)
+    taus = np.array([a.tau for a in answers])
     values = np.array([objective_value(model, query, cfg.a_dir, raw[b])
                        for b, cfg in enumerate(cfgs)])
     for b, (a, cfg) in enumerate(zip(answers, cfgs)):
+        if a.status == "optimal" and np.isnan(values[b]) and analysis[b].reason:
+            a.status, a.reason = "failed", analysis[b].reason
         if a.status == "optimal":
             problem = check(model, query, a, raw[b], values[b], _form(query, cfg, a))
             if problem:

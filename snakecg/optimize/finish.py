@@ -21,9 +21,16 @@ def one_result(model, query, q, a, cert, a_dir, e, t0, raw=None) -> OptimizeResu
     one-sample forward solve at ``a.tau`` (``raw``: its result row when the compiled query
     has run it already), the objective read from it, the forward check (``e``:
     ``tau^T N tau`` of the answer when the query has an ellipsoid)."""
-    analysis = (model.forward(q, np.ascontiguousarray(a.tau, dtype=float)) if raw is None
-                else ForwardResult(raw, model.columns))
+    if raw is None:
+        tau, why = answerable_tau(model, q, a.tau)
+        analysis = model.forward(q, tau)
+        if why:
+            unanswered(model, analysis.raw, a, why)
+    else:
+        analysis = ForwardResult(raw, model.columns)
     value = objective_value(model, query, a_dir, analysis.raw)
+    if a.status == "optimal" and analysis.reason and np.isnan(value):
+        a.status, a.reason = "failed", analysis.reason
     if a.status == "optimal":
         problem = check(model, query, a, analysis.raw, value, e)
         if problem:
@@ -33,6 +40,36 @@ def one_result(model, query, q, a, cert, a_dir, e, t0, raw=None) -> OptimizeResu
         reason=a.reason, objective_value=value, binding=a.binding, analysis=analysis,
         solver=a.solver, iterations=int(a.iterations), time=time.perf_counter() - t0,
         wheel_states_assumed=state_names(a.states), certificate=cert)
+
+
+def answerable_tau(model, q, tau):
+    """``(tau, why)``: the answer's torque for the forward solve, or zero torque and the cause
+    in one line when it is not finite or beyond the forward solve's range (an answer computed
+    from a numerically singular system: the cause is then the forward solve's own)."""
+    from ..solver import FORCE_LIMIT
+
+    tau = np.ascontiguousarray(tau, dtype=float)
+    with np.errstate(invalid="ignore"):
+        if np.all(np.abs(tau) <= FORCE_LIMIT):
+            return tau, ""
+    zero = np.zeros_like(tau)
+    why = model.forward(q, zero).reason
+    return zero, why or (f"the optimizer's torque is not finite or beyond +-{FORCE_LIMIT:.0e}"
+                         f" (max |tau| = {np.nanmax(np.abs(tau)):.3g}): the configuration is "
+                         f"too ill-conditioned to answer")
+
+
+def unanswered(model, row, a, why):
+    """Mark the answer ``a`` failed with ``why`` and its forward result ``row`` (at zero
+    torque) as no answer: NaN, flagged singular."""
+    cols = model.columns
+    for k in ("tau", "qdd", "a_obj", "lam", "w"):
+        row[..., cols.slices[k]] = np.nan
+    for k in ("norm_lambda", "norm_a_obj", "norm_qdd", "sr", "conditioning"):
+        row[..., cols.index[k]] = np.nan
+    row[..., cols.singular] = 1.0
+    a.tau = np.full(model.n_joints, np.nan)
+    a.status, a.reason = "failed", why
 
 
 def state_names(states):

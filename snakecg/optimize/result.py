@@ -96,12 +96,10 @@ class OptimizeResult:
     @property
     def limits(self) -> dict | None:
         """The torque box and the ellipsoid that bound the answer, and their sources."""
-        from ..limits import describe
+        from ..limits import of_query
 
         q = getattr(self, "_query", None)
-        if q is None:
-            return None
-        return describe(tau_max=q.tau_max, tau_max_from=q.tau_max_from, radius=q.radius)
+        return None if q is None else of_query(q)
 
     @property
     def off_direction_deg(self):
