@@ -148,7 +148,9 @@ def test_the_issue_max_a_obj_shape_stays_within_the_urdf_limits(tmp_path):
     assert robot.effort_limits == (EFFORT,) * 4
     model = snakecg.load(snakecg.Scene(robot, scenario="wheels"))
     res = model.optimize_shape("max_a_obj")
-    assert res.status == "optimal", res.reason
+    # the sliding states' search covers the ellipsoid, not a torque box: stick_only says so
+    assert res.status in ("optimal", "stick_only"), res.reason
+    assert res.status == "optimal" or "sliding wheel states are not searched" in res.reason
     qj = res.q[3:]
     assert np.all(np.abs(qj) <= LIMIT + 1e-9), np.degrees(qj)
     assert np.max(np.abs(qj)) == pytest.approx(LIMIT, abs=1e-7)  # the limit binds
