@@ -61,8 +61,9 @@ CORE_SOURCES = tuple(CORE_SOURCE.with_name(name)
 #: The header they share (work arrays, contact_system, the held rows' forces).
 CORE_HEADER = CORE_SOURCE.with_name("common.h")
 #: Every header of the runtime core (dense.h, optimal.h: the small dense algebra, the query's
-#: types and the certificate of optimal.c).
-CORE_HEADERS = (CORE_HEADER, *(CORE_SOURCE.with_name(name) for name in ("dense.h", "optimal.h")))
+#: types and the certificate of optimal.c; geometry.h: the simulation's contact check).
+CORE_HEADERS = (CORE_HEADER, *(CORE_SOURCE.with_name(name)
+                               for name in ("dense.h", "optimal.h", "geometry.h")))
 #: Up to this batch size the outputs of a compiled call share one buffer (see CompiledBackend).
 _SMALL_BATCH = 64
 

@@ -464,13 +464,13 @@ def test_two_simulations_into_one_folder(tmp_path):
     out = tmp_path / "sim"
     argv = [sys.executable, "-m", "snakecg.cli", "simulate", "--joints", "1",
             "--q=0,0,0,0.3", "--tau=0.01", "--duration", "0.05", "--frames", "4",
-            "--out", str(out), "--json"]
+            "--out", str(out), "--json", "--geometry-check", "off"]
     procs = [subprocess.Popen(argv, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
                               cwd=tmp_path) for _ in range(2)]
     results = [p.communicate(timeout=600) for p in procs]
     for p, (o, e) in zip(procs, results):
         assert p.returncode == 0, e
-        assert strict_loads(o)["status"] == "completed"
+        assert strict_loads(o)["status"] == "completed (geometry not checked)"
     names = sorted(p.name for p in out.iterdir())
     assert names == ["animation.gif", "displacement.png", "energy.png", "forces.png",
                      "slippage.png", "summary.json", "trajectory.npz"]
@@ -679,7 +679,7 @@ def test_disk_full_is_a_clean_failure_without_partial_files(small_fs):
     out = small_fs / "run"
     code, stdout, err = run_cli(["simulate", "--joints", "2", "--q=0,0,0,0.5,-0.6",
                                  "--tau=0.05,-0.02", "--duration", "0.05", "--frames", "20",
-                                 "--out", str(out)])
+                                 "--out", str(out), "--geometry-check", "report"])
     assert code == 1 and "Traceback" not in err, err
     (line,) = err.splitlines()
     assert line.startswith("snakecg simulate: failed: cannot write to --out") and \

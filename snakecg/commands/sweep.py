@@ -76,9 +76,12 @@ def register(sub) -> None:
                    "with --figure, the image file (default STORE-polar.png)")
     w = r.add_mutually_exclusive_group()
     w.add_argument("--scheduler", metavar="ADDRESS",
-                   help="run on the Dask cluster whose scheduler is at tcp://HOST:PORT")
+                   help="run on the Dask cluster whose scheduler is at tcp://HOST:PORT "
+                   "(it must answer, and have a worker, within 10 s each)")
     w.add_argument("--workers", type=int, metavar="K",
-                   help="worker processes of the local cluster (default: one per core)")
+                   help="worker processes of the local cluster (default: one per core; at "
+                   "most 4 per core); the cluster listens on 127.0.0.1 with TLS and "
+                   "temporary credentials, so only this sweep can use it")
     r.add_argument("--shared-store", action="store_true",
                    help="with --scheduler: the workers write the chunks into --out themselves "
                    "(they reach it at the same absolute path, e.g. on a shared file system); "
@@ -151,7 +154,7 @@ def run(args) -> int:
         return _reduce(args)
     import math
 
-    from ..sweeps.plan import PAPER_STEP_DEG, joint_values
+    from ..sweeps.plan import PAPER_STEP_DEG, joint_count, joint_values
     from ..sweeps.run import sweep
 
     if not args.out:
@@ -178,6 +181,7 @@ def run(args) -> int:
         for lo, hi in ranges:
             if hi < lo:
                 raise InputError(f"--range {lo:g}:{hi:g} is empty (LO > HI)")
+        _check_size(args, args.samples, joints)
         kw = {"samples": args.samples, "seed": args.seed,
               "bounds": None if args.range is None else
               [(math.radians(lo), math.radians(hi)) for lo, hi in ranges]}
@@ -187,8 +191,17 @@ def run(args) -> int:
         steps = _per_joint("--step", [_number("--step", s) for s in
                                       _split("--step", args.step)], joints) \
             if args.step is not None else [PAPER_STEP_DEG] * joints
-        kw = {"grid": None if args.range is None and args.step is None else
-              [joint_values(lo, hi, st) for (lo, hi), st in zip(ranges, steps)]}
+        if args.range is None and args.step is None:  # the robot's limits, or the paper's
+            from ..sweeps.plan import default_grid
+
+            size = math.prod(len(v) for v in default_grid(scene.robot)[0])
+            _check_size(args, size, joints)
+            kw = {"grid": None}
+        else:
+            # the grid's size from the arguments, before any value is made
+            size = math.prod(joint_count(lo, hi, st) for (lo, hi), st in zip(ranges, steps))
+            _check_size(args, size, joints)
+            kw = {"grid": [joint_values(lo, hi, st) for (lo, hi), st in zip(ranges, steps)]}
     res = sweep(scene, store=args.out, chunk=args.chunk, scheduler=args.scheduler,
                 workers=args.workers, limit=None if args.force else args.limit,
                 feasible=args.feasible_only, clearance=args.clearance,
@@ -205,6 +218,20 @@ def run(args) -> int:
                  if res.feasible_only else ""))
         print(f"  limits: {limits_line(res.limits)}")
     return 0
+
+
+def _check_size(args, size: int, joints: int) -> None:
+    """Refuse a sweep above --limit (unless --force) or too large for one store, from its
+    size alone (as snakecg.sweep does once the configurations are made)."""
+    from ..sweeps.plan import check_size
+
+    if size < 1:
+        return  # refused with its reason by the sweep
+    if not args.force and isinstance(args.limit, int) and args.limit >= 1 \
+            and size > args.limit:
+        raise InputError(f"{size:,} configurations exceed the limit of {args.limit:,}; "
+                         f"lift it (limit=None, or --force) to run them")
+    check_size(size, joints)
 
 
 def _reduce(args) -> int:

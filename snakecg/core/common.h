@@ -47,8 +47,8 @@ enum { ABSENT = 0, HELD = 1, LOST = 2, SLIDE_POS = 3, SLIDE_NEG = 4 };
 enum { EV_SEPARATION = 0, EV_S_LOW = 1, EV_S_HIGH = 2, EV_GAP = 3, EV_BREAKAWAY = 4,
        EV_SLIDE_STOP = 5 };
 /* segment status */
-enum { SEG_END = 0, SEG_EVENT = 1, SEG_TOO_SMALL = -1, SEG_PYTHON = -2, SEG_MEMORY = -3,
-       SEG_BAD_INPUT = -4 };
+enum { SEG_END = 0, SEG_EVENT = 1, SEG_GEOMETRY = 2, SEG_TOO_SMALL = -1, SEG_PYTHON = -2,
+       SEG_MEMORY = -3, SEG_BAD_INPUT = -4 };
 enum { SETTLE_DONE = 0, SETTLE_PYTHON = 1, SETTLE_MEMORY = 2 };
 
 /* One segment: inputs, then outputs (filled by core_integrate_segment). */
@@ -71,6 +71,7 @@ typedef struct {
   const double *y0;      /* NY */
   const double *t_eval;  /* n_eval increasing times in (t0, t1] */
   sc_int n_eval;
+  struct sc_geometry *geo; /* the contact check (geometry.h), or null */
   /* outputs */
   double *y_eval;        /* n_eval x NY, row-major */
   sc_int n_out;          /* output times reached */

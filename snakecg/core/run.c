@@ -12,7 +12,9 @@
  * force, sliding wheels that keep sliding; the contact candidate of a closing gap on the link)
  * and the settle (core_settle, settle.c). It records the samples (the output times, both
  * sides of every event) with their mode, the modes, and the events with what Python needs to
- * describe them. Anything the Python loop would do differently (a segment or a settle handed
+ * describe them. The contact check (geometry.h) runs in every segment and on the state after
+ * every event; with GEO_STOP its first violation ends the run (RUN_GEOMETRY), its sample the
+ * last. Anything the Python loop would do differently (a segment or a settle handed
  * back to Python, a failed or too small step, more samples or modes than room) returns
  * RUN_PYTHON: the caller then runs the whole loop in Python from the start.
  */
@@ -23,6 +25,7 @@
 #include "snakecg_layout.h"
 #define SC_TYPES_ONLY
 #include "common.h"
+#include "geometry.h"
 
 #define MODE_WIDTH (NC + 1)  /* a mode: its row states, then off_link */
 #define EVENT_WIDTH (11 + NC) /* an event: see sc_run.events */
@@ -31,7 +34,7 @@ int SNAKECG_EXPORT(core_integrate_segment)(sc_segment *sg);
 int SNAKECG_EXPORT(core_mode_samples)(sc_segment *sg, sc_int n, const double *Y, double *out);
 int SNAKECG_EXPORT(core_settle)(sc_settle *st);
 
-enum { RUN_COMPLETED = 0, RUN_STOPPED = 1, RUN_PYTHON = 2 };
+enum { RUN_COMPLETED = 0, RUN_STOPPED = 1, RUN_PYTHON = 2, RUN_GEOMETRY = 3 };
 
 typedef struct {
   sc_segment *sg;     /* the run's segment (tau, constants, its y0/state/ev_* arrays) */
@@ -249,12 +252,18 @@ static int run(sc_run *R) {
     R->segments++;
     R->nfev += sg->nfev;
     R->nsteps += sg->nsteps;
-    if (status != SEG_END && status != SEG_EVENT) return RUN_PYTHON;
+    if (status != SEG_END && status != SEG_EVENT && status != SEG_GEOMETRY) return RUN_PYTHON;
     for (k = 0; k < sg->n_out; ++k) { /* the outputs, written in place */
       R->t_out[R->n_out] = sg->t_eval[k];
       R->mode_out[R->n_out] = (double)mode;
       R->loss_out[R->n_out] = R->loss;
       R->n_out++;
+    }
+    if (status == SEG_GEOMETRY) { /* the contact check's first violation ends the run */
+      if (R->t_out[R->n_out - 1] < sg->t_end && add_sample(R, sg->t_end, sg->y_end, mode))
+        return RUN_PYTHON;
+      R->t = sg->t_end;
+      return RUN_GEOMETRY;
     }
     if (status == SEG_END) {
       t = T;
@@ -289,6 +298,17 @@ static int run(sc_run *R) {
       if (st->impact) R->loss += -st->impact_de;
       t = t_e;
       if (add_sample(R, t, y, mode)) return RUN_PYTHON;
+      if (sg->geo && sg->geo->mode != GEO_OFF && !sg->geo->found) { /* the state after it */
+        sc_int pair;
+        const double d = geo_depth(sg->geo, y, &pair);
+        if (d > sg->geo->tol) {
+          geo_record(sg->geo, t, y, d, pair);
+          if (sg->geo->mode == GEO_STOP) {
+            R->t = t;
+            return RUN_GEOMETRY;
+          }
+        }
+      }
       if (R->n_events >= R->max_events || stuck > 20) {
         R->t = t;
         R->stuck = stuck;

@@ -24,9 +24,11 @@ import numpy as np
 
 from ..core.segment import (
     RUN_COMPLETED,
+    RUN_GEOMETRY,
     RUN_STOPPED,
     SEG_END,
     SEG_EVENT,
+    SEG_GEOMETRY,
     SEG_TOO_SMALL,
     SETTLE_DONE,
 )
@@ -102,9 +104,11 @@ def placement(model, q0):
 
 class CompiledSegments:
     """The compiled segment integrator of one run on the equations ``dyn``
-    (:class:`~snakecg.simulate.dynamics.Dynamics`) with the checked ``settings``."""
+    (:class:`~snakecg.simulate.dynamics.Dynamics`) with the checked ``settings`` and the
+    contact check ``check`` (:class:`~snakecg.simulate.contact_check.RunCheck`, run by the C
+    in every segment)."""
 
-    def __init__(self, dyn, settings):
+    def __init__(self, dyn, settings, check):
         model = settings.model
         self.dyn = dyn
         self._model = model  # keeps the scene vector alive
@@ -117,6 +121,8 @@ class CompiledSegments:
         seg.alpha = dyn.alpha
         seg.rtol, seg.atol = settings.rtol, settings.atol
         seg.max_step = math.inf if settings.max_step is None else settings.max_step
+        seg.geo = check.address
+        self._check = check  # keeps the struct that seg.geo points at alive
         self.t_eval = np.zeros(0)
         self.y_eval = np.zeros((0, dyn.ny))
         self.steps = 0
@@ -129,14 +135,16 @@ class CompiledSegments:
         computed with this object afterwards)."""
         ws, self.ws = self.ws, None
         if ws is not None:
+            ws.seg.geo = None
             give(self._model, ws)
 
     def run(self, t0, t1, y, mode, tau, specs, t_eval):
         """One segment from ``(t0, y)`` to ``t1`` in ``mode`` with the torque ``tau`` and the
         terminal events ``specs`` (:meth:`~snakecg.simulate.events.Events.specs`), output
         at ``t_eval``: an object with ``status`` (solve_ivp's: 0, 1 at an event, -1),
-        ``message``, the output ``t`` (m,) and ``y`` (m, n_y) and ``fired`` (``[(spec, t_e,
-        y_e)]`` of the event), or ``None`` when solve_ivp must do this segment."""
+        ``message``, the output ``t`` (m,) and ``y`` (m, n_y), ``fired`` (``[(spec, t_e,
+        y_e)]`` of the event) and ``stopped`` (``(t, y)`` where the contact check stopped
+        it, else ``None``), or ``None`` when solve_ivp must do this segment."""
         seg, dyn = self.seg, self.dyn
         self.ev_kind[:len(specs)] = specs.codes
         self.ev_row[:len(specs)] = specs.rows
@@ -154,17 +162,19 @@ class CompiledSegments:
         status = self._fn(self._address)
         dyn.nfev += seg.nfev
         self.steps += seg.nsteps
-        if status not in (SEG_END, SEG_EVENT, SEG_TOO_SMALL):
+        if status not in (SEG_END, SEG_EVENT, SEG_TOO_SMALL, SEG_GEOMETRY):
             self.handed_back += 1
             return None
         m = seg.n_out
         fired = []
         if status == SEG_EVENT:
             fired = [(specs[seg.event], seg.t_end, self.y_end.copy())]
+        stopped = (seg.t_end, self.y_end.copy()) if status == SEG_GEOMETRY else None
         return SimpleNamespace(
             t=self.t_eval[:m], y=self.y_eval[:m].copy(),
-            status={SEG_END: 0, SEG_EVENT: 1, SEG_TOO_SMALL: -1}[status],
-            message=_TOO_SMALL if status == SEG_TOO_SMALL else "", fired=fired)
+            status={SEG_END: 0, SEG_EVENT: 1, SEG_TOO_SMALL: -1, SEG_GEOMETRY: 0}[status],
+            message=_TOO_SMALL if status == SEG_TOO_SMALL else "", fired=fired,
+            stopped=stopped)
 
     def run_all(self, y, mode, loss, tau, grid, T, gtol, max_events):
         """The whole run from the state ``y`` in ``mode`` (after the start's settle, the
@@ -210,7 +220,7 @@ class CompiledSegments:
         R.cap_events, R.events = cap_events, base + 8 * o_events
         R.n_modes = 0
         status = self._run(self.ws.run_address)
-        if status not in (RUN_COMPLETED, RUN_STOPPED):
+        if status not in (RUN_COMPLETED, RUN_STOPPED, RUN_GEOMETRY):
             self.started = R.n_modes > 0
             return None
         n = R.n_out

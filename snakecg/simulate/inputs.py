@@ -99,6 +99,7 @@ class Settings:
     output_dt: float
     max_events: int
     integrator: str = "auto"  # "auto", "compiled" or "scipy" (snakecg.simulate.compiled)
+    geometry_check: str = "stop"  # "stop", "report" or "off" (snakecg.simulate.contact_check)
 
 
 def _classes():
@@ -122,7 +123,8 @@ _CLASSES = None
 
 def check_arguments(model, q0, tau, duration, v0, *, v_obj0, q_obj0, rho, f_obj,
                     control_period, method, rtol, atol, max_step, fixed_step, stabilization,
-                    output_dt, max_events, integrator="auto") -> Settings:
+                    output_dt, max_events, integrator="auto",
+                    geometry_check="stop") -> Settings:
     """The arguments of :func:`~snakecg.simulate.simulate` checked, in order, with the
     defaults filled in (the object's placement from the scene when ``q_obj0`` and ``rho``
     are not given)."""
@@ -179,8 +181,12 @@ def check_arguments(model, q0, tau, duration, v0, *, v_obj0, q_obj0, rho, f_obj,
     if not (isinstance(integrator, str) and integrator in ("auto", "compiled", "scipy")):
         raise InputError(f"integrator must be 'auto', 'compiled' or 'scipy', got "
                          f"{integrator!r:.60}")
+    if not (isinstance(geometry_check, str) and geometry_check in ("stop", "report", "off")):
+        raise InputError(f"geometry_check must be 'stop', 'report' or 'off', got "
+                         f"{geometry_check!r:.60}")
     return Settings(model=model, q0=q0, v0=v0, q_obj0=q_obj0, v_obj0=v_obj0, rho=rho,
                     f_obj=f_obj, duration=duration, kind=kind, law=law, control_period=period,
                     method=method, rtol=rtol_, atol=atol, max_step=max_step,
                     fixed_step=fixed_step, alpha=alpha, output_dt=output_dt,
-                    max_events=int(max_events), integrator=integrator)
+                    max_events=int(max_events), integrator=integrator,
+                    geometry_check=geometry_check)
