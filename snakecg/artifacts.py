@@ -439,7 +439,11 @@ def _generate(n_joints: int, root: Path, progress, *, discard: bool = False
             from snakecg_derive.render import render_model, write_model
         except ImportError as exc:  # pragma: no cover - broken install
             raise BuildError(f"cannot import the generator snakecg_derive: {exc}") from exc
-        rendered = render_model(n_joints, progress=progress,
-                                max_joints=max_joints())
-        write_model(rendered, root)
+        from .progress import stage
+
+        with stage(progress, f"generating the {n_joints}-joint model (once; kept in the "
+                   "cache)", f"generated the {n_joints}-joint model"):
+            rendered = render_model(n_joints, progress=progress,
+                                    max_joints=max_joints())
+            write_model(rendered, root)
         return folder, verify_model_dir(folder, n_joints)

@@ -113,8 +113,11 @@ def c_layout(model) -> dict:
         else:
             continue
         constants.append(dict(name=k, vals=[_num(v) for v in vals], size=len(vals)))
-    constants.append(dict(name="wheel_bound", vals=[_num(v) for v in model.bounds],
-                          size=len(model.bounds)))
+    # row 0 is the contact (no friction bound: INFINITY); a link without a wheel (the
+    # contact link, or every link in the frictionless scenario) has none: 0
+    bounds = [b if i == 0 or model.present[i] else 0.0 for i, b in enumerate(model.bounds)]
+    constants.append(dict(name="wheel_bound", vals=[_num(v) for v in bounds],
+                          size=len(bounds)))
     r = model.robot
     return dict(
         prefix=prefix, upper=prefix.upper().rstrip("_"), stem=prefix.rstrip("_"),

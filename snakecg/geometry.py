@@ -16,6 +16,8 @@ are batch axes.
 * :func:`self_distance`, :func:`self_intersecting`: closest approach of non-adjacent links.
 * :func:`object_penetration`: how deep a link segment enters the plate.
 * :func:`feasibility`: both checks for configurations of a :class:`~snakecg.SceneModel`.
+* :data:`INFEASIBLE_MARK` and :func:`infeasible_footnote`: how every table marks a value
+  attained by a shape that is not physically possible (Table 2, ``sweep --summary``).
 * :class:`ContactCheck`: what a simulation checks at every step, sample and event (every
   link against the object, the contacting one included, and non-neighbouring links against
   each other, as overlap depths), with its tolerance :func:`contact_tolerance`.
@@ -37,6 +39,8 @@ __all__ = [
     "chain_segments",
     "contact_tolerance",
     "feasibility",
+    "infeasible_footnote",
+    "INFEASIBLE_MARK",
     "link_radius",
     "link_segments",
     "object_depth",
@@ -56,6 +60,16 @@ SELF_CLEARANCE = 0.01
 #: A link entering the plate by less than this [m] only touches it (the contacting link lies
 #: on the plate's face; rounding puts it a few ulp inside).
 PENETRATION_TOLERANCE = 1e-9
+#: The mark of a table entry attained by a shape that is not physically possible (Fig. 6
+#: frames such shapes in red).
+INFEASIBLE_MARK = "*"
+
+
+def infeasible_footnote(clearance: float = SELF_CLEARANCE) -> str:
+    """The footnote that explains :data:`INFEASIBLE_MARK` under a table."""
+    return (f"{INFEASIBLE_MARK} a shape that is not physically possible (links closer than "
+            f"{clearance:g} m or inside the object)")
+
 #: A simulation stops when two bodies overlap by more than this fraction of the longest link
 #: (:func:`contact_tolerance`: 1.5e-7 m for the paper's 0.15 m links).
 CONTACT_TOLERANCE = 1e-6

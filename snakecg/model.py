@@ -68,13 +68,14 @@ def load(obj, *, backend: str = "compiled", progress=None):
     The generated model for the joint count is taken from the package or the user cache
     (generated once if missing), compiled once into a cached shared library and shared by
     every robot with that joint count. ``backend="casadi"`` evaluates with CasADi's
-    in-process virtual machine instead of the compiled C. ``progress``: ``None`` reports
-    the generation and compilation steps on a terminal or in a Jupyter notebook (quiet
-    elsewhere, see :mod:`snakecg.progress`), ``False`` never, or a callable taking each
-    step's message.
+    in-process virtual machine instead of the compiled C. ``progress``: ``None`` prints a
+    line on standard error when a generation or compilation starts and one when it ends, with
+    its duration, whatever standard error is (a terminal, a pipe, a log, a notebook; silenced
+    by ``SNAKECG_PROGRESS=0``, see :mod:`snakecg.progress`), ``False`` never, or a callable
+    taking each step's message.
     """
     _check_load_args(backend, progress)
-    from .progress import resolve  # None: model builds reported on a terminal or notebook
+    from .progress import resolve  # None: model builds reported on standard error
 
     progress = resolve(progress)
     if isinstance(obj, Scene):
@@ -556,8 +557,9 @@ class SceneModel(RobotModel):
         ``objective``: ``"max_sr"`` (largest slippage ratio, eq. 30), ``"least_slip_push"``
         (a requested object acceleration with the least ``||qdd_s||^2``, eq. 26) or
         ``"strongest_push"`` (largest object acceleration along a direction with no wheel
-        sliding). Keywords: ``tau_max``, ``radius`` (input region: box and/or ellipsoid of
-        eq. 31, default ``radius=1``), ``direction``, ``a_min``, ``a_obj``, ``allow_slide``.
+        sliding). Keywords: ``tau_max`` (default the robot's ``effort_limits``), ``radius``
+        (input region: box and/or ellipsoid of eq. 31, default ``radius=1`` without a box),
+        ``direction``, ``a_min``, ``a_obj``, ``allow_slide``.
         Returns an :class:`~snakecg.optimize.OptimizeResult` (``tau``, ``status`` with
         ``reason``, ``analysis`` = the forward result at ``tau``); see
         :func:`snakecg.optimize.optimize` and docs/optimize.md.

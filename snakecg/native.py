@@ -22,6 +22,7 @@ import os
 import shutil
 import subprocess
 import tempfile
+import time
 import warnings
 from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
@@ -173,8 +174,11 @@ def compile_model(folder: Path, manifest: dict, *, progress=None, rebuild: bool 
         sources = sorted(n for n in manifest["files"] if n.endswith(".c"))
         large = {f"c/{f['name']}.c" for f in manifest["functions"] if f.get("large")}
         tmp = Path(tempfile.mkdtemp(prefix="build-", dir=out_dir))
+        what = f"the {manifest['n_joints']}-joint model"
+        t_start = time.perf_counter()
         try:
-            step(f"compiling {len(sources)} C files with {Path(cc).name} -O2")
+            step(f"compiling {what}: {len(sources)} C files with {Path(cc).name} -O2 (once; "
+                 "the library is cached)")
 
             def one(name: str) -> Path:
                 obj = tmp / (Path(name).stem + ".o")
@@ -218,6 +222,10 @@ def compile_model(folder: Path, manifest: dict, *, progress=None, rebuild: bool 
             tmp_stamp = tmp / "stamp"
             tmp_stamp.write_text(digest)
             os.replace(tmp_stamp, stamp)
+            step(f"compiled {what} in {time.perf_counter() - t_start:.1f} s")
+        except BaseException:
+            step(f"compiling {what}: failed after {time.perf_counter() - t_start:.1f} s")
+            raise
         finally:
             shutil.rmtree(tmp, ignore_errors=True)
     return lib

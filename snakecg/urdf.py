@@ -13,7 +13,12 @@
 * ``com``: the COM's distance from the link's rear end along the link, which must lie on the
   link's axis (the line through its joints) within ``tol`` metres;
 * ``mass`` and ``inertia``: the ``<inertial>`` mass and the inertia about the COM about the
-  plane's normal, ``n^T R I R^T n`` with ``R`` the inertial frame's orientation.
+  plane's normal, ``n^T R I R^T n`` with ``R`` the inertial frame's orientation;
+* ``joint_limits``: a ``revolute`` joint's ``<limit lower upper>`` in snakecg's angles
+  (shifted by the zero configuration's bend, and reversed for an axis opposite the first);
+  a ``continuous`` joint turns freely, ``(-pi, pi)``;
+* ``effort_limits``: every joint's ``<limit effort>`` (N m); when some joints give none, the
+  robot has no effort limits and a warning names those joints.
 
 Anything else (a branch, a prismatic, floating or planar joint, a joint axis not parallel to
 the first, a COM off the link axis, a link without mass, a fixed joint to a link with mass)
@@ -25,6 +30,8 @@ may be bent (``q_urdf = q_snakecg - offset``).
 from __future__ import annotations
 
 import io
+import math
+import warnings
 
 import numpy as np
 
@@ -43,8 +50,10 @@ def _load(path):
     try:
         import yourdfpy
     except ImportError:
-        raise InputError("reading URDF needs the yourdfpy package: pip install "
-                         "'snakecg[urdf]'") from None
+        from .extras import install_hint
+
+        raise InputError("reading URDF needs the yourdfpy package (the urdf extra): "
+                         f"{install_hint('urdf')}") from None
     from lxml import etree  # yourdfpy's XML library
 
     from .toml_file import read_bytes
@@ -97,9 +106,17 @@ def _mass(link) -> float:
 
 
 def _round(x: float) -> float:
-    """15 significant digits: the frames' matrix products add rounding errors of ~1e-16, which
-    would turn the file's ``0.15`` into ``0.14999999999999997``."""
-    return float(f"{x:.15g}")
+    """The shortest decimal within 64 units in the last place of ``x``: the frames' matrix
+    products add rounding errors of a few ulps, which would turn the file's ``0.15`` into
+    ``0.14999999999999997`` (or, rounded to 15 digits, a ``0.06`` into
+    ``0.0600000000000001``); a value the file gives with up to about 14 digits comes back
+    as written, a longer one moves by at most 64 ulps (1.4e-14 relative)."""
+    tol = 64 * math.ulp(x)
+    for digits in range(1, 18):
+        y = float(f"{x:.{digits}g}")
+        if abs(y - x) <= tol:
+            return y
+    return x
 
 
 def robot_from_urdf(path, *, tol: float = 1e-6, name: str | None = None):
@@ -195,7 +212,7 @@ def robot_from_urdf(path, *, tol: float = 1e-6, name: str | None = None):
         return x - n * (n @ x)
 
     joint_pos = [planar(frame[j.child][:3, 3]) for j in chain_joints]
-    masses, lengths, inertias, coms = [], [], [], []
+    masses, lengths, inertias, coms, link_axes = [], [], [], [], []
     nl = len(chain)
     for k, link_name in enumerate(chain):
         link = links[link_name]
@@ -239,13 +256,50 @@ def robot_from_urdf(path, *, tol: float = 1e-6, name: str | None = None):
         if not -tol <= c <= length + tol:
             raise InputError(f"{where}: the COM of link {link_name!r} lies outside the link "
                              f"({c:.6g} m from its rear end, length {length:.6g} m)")
+        link_axes.append(e)
         masses.append(m)
         lengths.append(_round(length))
         inertias.append(_round(inertia))
         coms.append(_round(min(max(c, 0.0), length)))
+    joint_limits, effort_limits = _limits(where, chain_joints, axes, link_axes, n)
     try:
         return Robot(joints=nl - 1, mass=tuple(masses), length=tuple(lengths),
                      inertia=tuple(inertias), com=tuple(coms),
-                     name=name or robot.name or p.stem)
+                     name=name or robot.name or p.stem, joint_limits=joint_limits,
+                     effort_limits=effort_limits)
     except InputError as exc:
         raise InputError(f"{where}: {exc}") from None
+
+
+def _limits(where, joints, axes, link_axes, n):
+    """The joints' ``<limit>`` in snakecg's angles: ``q_j = delta_j + s_j q_urdf``, with
+    ``delta_j`` the angle from link j's axis to link j+1's at the URDF's zero configuration
+    and ``s_j = +-1`` the joint axis's direction along the plane's normal ``n``."""
+    ranges, efforts, missing = [], [], []
+    for j, (joint, a) in enumerate(zip(joints, axes)):
+        e0, e1 = link_axes[j], link_axes[j + 1]
+        delta = math.atan2(float(n @ np.cross(e0, e1)), float(e0 @ e1))
+        sign = 1.0 if float(a @ n) > 0 else -1.0
+        lim = joint.limit
+        if joint.type == "continuous":
+            ranges.append((-math.pi, math.pi))
+        elif lim is None or lim.lower is None or lim.upper is None:
+            raise InputError(f"{where}: revolute joint {joint.name!r} has no <limit lower=... "
+                             "upper=...> (a URDF revolute joint needs both; a joint without "
+                             "limits is 'continuous')")
+        else:
+            lo, hi = sorted((delta + sign * float(lim.lower), delta + sign * float(lim.upper)))
+            if not float(lim.lower) < float(lim.upper):
+                raise InputError(f"{where}: joint {joint.name!r} has <limit lower="
+                                 f"{lim.lower:g} upper={lim.upper:g}>; lower must be below "
+                                 "upper")
+            ranges.append((_round(lo), _round(hi)))
+        if lim is None or lim.effort is None:
+            missing.append(joint.name)
+        else:
+            efforts.append(float(lim.effort))
+    if missing and efforts:
+        warnings.warn(f"{where}: joint(s) {', '.join(repr(m) for m in missing)} give no "
+                      "<limit effort>, the others do: the robot has no effort limits "
+                      "(give tau_max to a query)", stacklevel=4)
+    return tuple(ranges), (tuple(efforts) if not missing else None)

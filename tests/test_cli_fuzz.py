@@ -590,7 +590,7 @@ def no_model_loaded():
     refused before)."""
     import snakecg.model as model_mod
     import snakecg.reproduce as rep
-    import snakecg_derive.inspect as inspect_mod
+    import snakecg_derive.inspection as inspect_mod
     import snakecg_derive.render as render
 
     def boom(*args, **kwargs):

@@ -8,6 +8,7 @@ the manifest.
 
 from __future__ import annotations
 
+import math
 import re
 import shutil
 import subprocess
@@ -114,8 +115,11 @@ def test_header_sizes_and_baked_parameters_follow_the_manifest(tmp_path, random_
     K = [float(x) for x in re.findall(r"^\s*([-+0-9.eE]+),? /\*", body, re.MULTILINE)]
     assert K == model.parameters.tolist()  # exact: repr round-trips
     bound = re.search(r"scene_wheel_bound\[\d+\] = \{([^}]*)\}", params).group(1)
-    want = [0.3 * m * scene.gravity for m in robot.mass]
-    assert [float(x) for x in bound.split(",")][1:] == pytest.approx(want, rel=1e-15)
+    # row 0 the contact; the contact link carries no wheel (assumption 4): no bound on it
+    want = [math.inf] + [0.0 if i == scene.contact_link else 0.3 * m * scene.gravity
+                         for i, m in enumerate(robot.mass, start=1)]
+    got = [math.inf if x.strip() == "INFINITY" else float(x) for x in bound.split(",")]
+    assert got == pytest.approx(want, rel=1e-15)
     # compiles standalone with one cc call, -std=c99 -Wall, no warnings in the wrapper code
     srcs = [str(f) for f in files if f.suffix == ".c"]
     exe = tmp_path / "example"

@@ -27,7 +27,6 @@ import signal
 import stat
 import subprocess
 import sys
-import textwrap
 import time
 import warnings
 from pathlib import Path

@@ -10,6 +10,8 @@ sin(theta)``, ``q_p = q - delta``, and compares ``M = T^T M_p T`` with ``T = dq_
 
 from __future__ import annotations
 
+import json
+
 import numpy as np
 import pytest
 
@@ -305,3 +307,62 @@ def test_bad_arguments_axes_and_names(tmp_path):
     for device in ("/dev/zero", "/dev/null"):
         with pytest.raises(snakecg.InputError, match="is a device"):
             snakecg.Robot.from_urdf(device)
+
+
+def test_values_come_back_as_the_file_writes_them(tmp_path):
+    """A bent zero configuration puts the COMs through rotations: rounding to 15 digits left
+    ``0.0999999999999999`` in the robot and its repr; the file's decimals come back."""
+    com = [0.06, 0.05, 0.075, 0.1]
+    path = write_urdf(tmp_path / "bent.urdf", [1.0] * 4, [0.15, 0.12, 0.15, 0.2], com,
+                      [0.002] * 4, delta=np.array([0.09, 0.32, -0.77]))
+    robot = snakecg.Robot.from_urdf(path)
+    assert robot.com == tuple(com) and robot.length == (0.15, 0.12, 0.15, 0.2)
+    assert "com=(0.06, 0.05, 0.075, 0.1)" in repr(robot)
+    # limits shifted by the bend: joint 1 of write_urdf is revolute with lower -3, upper 3
+    assert robot.joint_limits[0] == (-2.91, 3.09)
+
+
+def test_a_missing_urdf_extra_names_the_install_for_this_installation(monkeypatch, tmp_path):
+    """The advice follows pip's record of the installation (direct_url.json, PEP 610)."""
+    import builtins
+    import importlib.metadata as md
+
+    from snakecg.extras import install_hint
+
+    class Dist:
+        def __init__(self, direct):
+            self.direct = direct
+
+        def read_text(self, name):
+            return None if self.direct is None else json.dumps(self.direct)
+
+    cases = [
+        (None, "pip install 'snakecg[urdf]'"),
+        ({"url": "file:///home/me/snakecg", "dir_info": {"editable": True}},
+         "pip install -e '/home/me/snakecg[urdf]'"),
+        ({"url": "file:///home/me/snakecg", "dir_info": {}},
+         "pip install '/home/me/snakecg[urdf]'"),
+        ({"url": "https://github.com/x/snakecg", "vcs_info": {"vcs": "git"}},
+         "pip install 'snakecg[urdf] @ git+https://github.com/x/snakecg'"),
+    ]
+    for direct, want in cases:
+        monkeypatch.setattr(md, "distribution", lambda name, d=direct: Dist(d))
+        assert install_hint("urdf") == want
+
+    def missing(name):
+        raise md.PackageNotFoundError(name)
+
+    monkeypatch.setattr(md, "distribution", missing)
+    assert install_hint("urdf") == "pip install yourdfpy"
+    # and the error a user sees without yourdfpy
+    real_import = builtins.__import__
+
+    def no_yourdfpy(name, *args, **kwargs):
+        if name == "yourdfpy":
+            raise ImportError(name)
+        return real_import(name, *args, **kwargs)
+
+    monkeypatch.setattr(builtins, "__import__", no_yourdfpy)
+    with pytest.raises(snakecg.InputError, match=r"needs the yourdfpy package \(the urdf "
+                       r"extra\): pip install yourdfpy$"):
+        snakecg.Robot.from_urdf(tmp_path / "any.urdf")

@@ -11,7 +11,7 @@ A page asks for a formula with a directive (on a line of its own, except ``versi
     <!-- snakecg-symbolic: versions -->
 
 and gets display math typeset from the same SymPy expressions that the code generator prints
-(``snakecg_derive.kinematics.readable_mass_matrix``, ``snakecg_derive.inspect.expression``),
+(``snakecg_derive.kinematics.readable_mass_matrix``, ``snakecg_derive.inspection.expression``),
 with the symbol names of ``snakecg show --latex``. Entries are passed through
 ``sympy.trigsimp`` for display only (``c sin^2 + c cos^2 -> c``); the text says so. The
 operation counts are read from the checked-in ``generated/na*/manifest.json``: nothing here
@@ -160,7 +160,7 @@ def _expression(joints: int, name: str, skip: str = "") -> str:
     column, which fits the page."""
     import sympy as sp
 
-    from snakecg_derive.inspect import expression
+    from snakecg_derive.inspection import expression
 
     skipped = {s.strip() for s in skip.split(",") if s.strip()}
     exprs = expression(joints, name)

@@ -15,6 +15,7 @@ from ..simulate.inputs import (DURATION_MAX, DURATION_MIN, MAX_FRAMES, MAX_OUTPU
                                STABILIZATION_MAX, check_count)
 from ._common import (add_robot_args, check_vector, count, out_dir, parse_vector, print_json,
                       progress_reporter, real, scene_from_args, strict_json, text)
+from ._names import objective_name
 
 EXAMPLES = """\
 examples:
@@ -49,7 +50,7 @@ def register(sub) -> None:
                    help="initial object twist vx,vy,omega (default 0)")
     p.add_argument("--duration", type=real(DURATION_MIN, DURATION_MAX, unit="s"), default=0.5,
                    help=f"seconds, {DURATION_MIN:g} to {DURATION_MAX:g} (default 0.5)")
-    p.add_argument("--controller", choices=("least-slip-push",),
+    p.add_argument("--controller", choices=("least-slip-push",), type=objective_name,
                    help="feedback law instead of --tau: the least-slippage push query "
                    "(snakecg optimize) answered every --control-period")
     p.add_argument("--a-min", type=real(0, MAX_MAGNITUDE, unit="m/s^2"),

@@ -21,7 +21,7 @@ from .result import Certificate, OptimizeResult
 from .solvers import cold
 
 
-def optimize(model, q, objective: str = "max_sr", *, tau_max=None, radius=None,
+def optimize(model, q, objective: str = "max_sr", *, tau_max="robot", radius=None,
              direction=None, a_min=None, a_obj=None, allow_slide=False) -> OptimizeResult:
     """The optimal joint torque for a task at configuration ``q`` (at rest).
 
@@ -33,8 +33,9 @@ def optimize(model, q, objective: str = "max_sr", *, tau_max=None, radius=None,
         Configuration(s) ``(x, y, theta, q_1..q_na)``.
     objective : "max_sr" | "least_slip_push" | "strongest_push"
         See the module documentation.
-    tau_max : float or array (n_a,), optional
-        Box limits ``|tau_j| <= tau_max_j`` (N m).
+    tau_max : float or array (n_a,) or "robot" or None
+        Box limits ``|tau_j| <= tau_max_j`` (N m). Default ``"robot"``: the robot's
+        ``effort_limits`` (no box when it has none); None: no box.
     radius : float, optional
         Ellipsoid ``tau^T B^T M_s^-1 B tau <= radius^2`` (eq. 31). With neither ``tau_max``
         nor ``radius`` the region is the paper's ellipsoid (``radius = 1``); with both, their
@@ -56,7 +57,9 @@ def optimize(model, q, objective: str = "max_sr", *, tau_max=None, radius=None,
     OptimizeResult
         ``tau``, ``status`` (``"optimal"``/``"infeasible"``/``"failed"``) with ``reason``,
         ``objective_value``, ``binding``, ``analysis`` (the forward result at ``tau``),
-        ``solver``, ``iterations``, ``time``.
+        ``solver``, ``iterations``, ``time``; ``limits``: the torque box and ellipsoid that
+        bound the answer and where they came from; ``note``: what the status alone does
+        not say (a push whose object moves off the requested direction).
     """
     t0 = time.perf_counter()
     query = validate(model, objective, tau_max, radius, direction, a_min, a_obj, allow_slide)
@@ -64,6 +67,7 @@ def optimize(model, q, objective: str = "max_sr", *, tau_max=None, radius=None,
     if not batched:  # the common case in one compiled call, when it applies
         res = quick(model, query, qa[0], t0)
         if res is not None:
+            res._query = query
             return res
     cfgs = configs(model, qa)
     run = {"max_sr": max_sr, "least_slip_push": least_slip_push,
@@ -83,7 +87,9 @@ def optimize(model, q, objective: str = "max_sr", *, tau_max=None, radius=None,
     if not batched:  # one configuration: the one-sample forward solve, plain fields
         a, cfg = answers[0], cfgs[0]
         e = _form(query, cfg, a) if a.status == "optimal" else None
-        return one_result(model, query, cfg.q, a, certs[0], cfg.a_dir, e, t0)
+        res = one_result(model, query, cfg.q, a, certs[0], cfg.a_dir, e, t0)
+        res._query = query
+        return res
     checked = [answerable_tau(model, cfg.q, a.tau) for a, cfg in zip(answers, cfgs)]
     analysis = model.forward(qa, np.array([t for t, _ in checked]))
     raw = analysis.raw
@@ -101,7 +107,7 @@ def optimize(model, q, objective: str = "max_sr", *, tau_max=None, radius=None,
             if problem:
                 a.status, a.reason = "failed", f"forward check: {problem}"
     elapsed = (time.perf_counter() - t0) / len(answers)
-    return OptimizeResult(
+    res = OptimizeResult(
         objective=query.objective, tau=taus,
         status=np.array([a.status for a in answers], dtype=object),
         reason=np.array([a.reason for a in answers], dtype=object),
@@ -112,6 +118,8 @@ def optimize(model, q, objective: str = "max_sr", *, tau_max=None, radius=None,
         wheel_states_assumed=[state_names(a.states) for a in answers],
         certificate=certs,
     )
+    res._query = query
+    return res
 
 
 def _configurations(model, q):

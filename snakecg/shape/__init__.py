@@ -39,13 +39,14 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..errors import InputError
+from ..limits import ROBOT, of_query, resolve_joint_limits
 from . import _nlp, _starts
 
 __all__ = ["optimize_shape", "OptimizeShapeResult", "OBJECTIVES", "SCHEMA"]
 
 OBJECTIVES = ("max_sr", "strongest_push", "least_slip_push", "max_a_obj")
 SCHEMA = "snakecg.optimize_shape/1"
-#: Default joint limits (rad), the range of the paper's grids.
+#: Joint limits (rad) of a robot that states none: the range of the paper's grids.
 JOINT_LIMITS = (-0.75 * math.pi, 0.75 * math.pi)
 _SUCCESS = ("Solve_Succeeded", "Solved_To_Acceptable_Level")
 _TASK_KEYS = ("tau_max", "radius", "direction", "a_min", "a_obj")
@@ -80,7 +81,9 @@ class OptimizeShapeResult:
       ``start_index``: the start the answer came from (``starts[start_index]`` is the grid
       point it started from); ``grid_best`` / ``grid_best_value``: the coarse grid's best
       point (``None`` when ``q0`` was given); ``runs``: per start, IPOPT's status, iterations
-      and value; ``time``: seconds.
+      and value; ``time``: seconds;
+    * ``limits``: the joint range, torque box and ellipsoid that bound the answer, and their
+      sources (:func:`snakecg.limits.describe`).
     """
 
     objective: str
@@ -99,6 +102,7 @@ class OptimizeShapeResult:
     runs: list = field(default_factory=list, repr=False)
     form: str = ""
     time: float = 0.0
+    limits: dict = field(default_factory=dict)
 
     @property
     def ok(self) -> bool:
@@ -121,7 +125,7 @@ class OptimizeShapeResult:
             "start_index": int(self.start_index),
             "grid_best": None if self.grid_best is None else _l(self.grid_best),
             "grid_best_value": _f(self.grid_best_value), "runs": self.runs,
-            "form": self.form, "time_s": self.time, "analysis": an,
+            "form": self.form, "time_s": self.time, "limits": self.limits, "analysis": an,
         }
 
 
@@ -163,7 +167,7 @@ def _validate(model, objective, q0, starts, seed, joint_limits, feasible, cleara
             raise InputError(f"{', '.join(sorted(extra))} do(es) not apply to objective "
                              f"'max_a_obj' (it takes: radius, tau_max)")
     query = validate_task(model, "max_sr" if objective == "max_a_obj" else objective,
-                          task.get("tau_max"), task.get("radius"), task.get("direction"),
+                          task.get("tau_max", ROBOT), task.get("radius"), task.get("direction"),
                           task.get("a_min"), task.get("a_obj"), False)
     na = model.n_joints
     if isinstance(starts, bool) or not isinstance(starts, (int, np.integer)) or starts < 1:
@@ -177,6 +181,7 @@ def _validate(model, objective, q0, starts, seed, joint_limits, feasible, cleara
             or not math.isfinite(clearance) or clearance < 0):
         raise InputError(f"clearance must be a number >= 0 (m, least distance between "
                          f"non-adjacent links), got {clearance!r}")
+    joint_limits, jl_from = resolve_joint_limits(model.robot, joint_limits)
     try:
         jl = np.asarray(joint_limits, dtype=float)
         if jl.shape == (2,):
@@ -206,7 +211,7 @@ def _validate(model, objective, q0, starts, seed, joint_limits, feasible, cleara
             raise InputError("q0 must be finite")
         if np.any(Q0[:, 3:] < lo - 1e-12) or np.any(Q0[:, 3:] > hi + 1e-12):
             raise InputError("q0's joint angles must lie within joint_limits")
-    return objective, query, Q0, lo, hi, float(clearance)
+    return objective, query, Q0, lo, hi, float(clearance), jl_from
 
 
 def _problem(model, objective, form, feasible, box, ellipsoid, task):
@@ -245,7 +250,7 @@ def _params(query, pose, scale, clearance):
 
 
 def optimize_shape(model, objective: str = "max_sr", *, q0=None, starts: int = 8,
-                   seed: int = 0, joint_limits=JOINT_LIMITS, feasible: bool = True,
+                   seed: int = 0, joint_limits=ROBOT, feasible: bool = True,
                    clearance: float | None = None, **task) -> OptimizeShapeResult:
     """The best shape (joint angles) and torque for a task; see the module documentation.
 
@@ -260,8 +265,9 @@ def optimize_shape(model, objective: str = "max_sr", *, q0=None, starts: int = 8
     seed : int
         Seed of the Sobol sample that replaces the grid beyond 8 joints (the grid itself is
         deterministic).
-    joint_limits : (lo, hi) or (n_a, 2)
-        Radians; default +-135 degrees (the paper's grid range).
+    joint_limits : (lo, hi) or (n_a, 2) or "robot"
+        Radians. Default ``"robot"``: the robot's ``joint_limits`` (within +-pi), or +-135
+        degrees (the paper's grid range, :data:`JOINT_LIMITS`) for a robot without them.
     feasible : bool
         Impose the geometric constraints (default); ``False`` keeps every shape, as the
         paper's grid does.
@@ -269,14 +275,14 @@ def optimize_shape(model, objective: str = "max_sr", *, q0=None, starts: int = 8
         Least distance between non-adjacent links (m), default
         :data:`snakecg.geometry.SELF_CLEARANCE`.
     **task
-        ``tau_max``, ``radius``, ``direction``, ``a_min``, ``a_obj`` as in
-        :func:`snakecg.optimize.optimize`.
+        ``tau_max`` (default: the robot's ``effort_limits``), ``radius``, ``direction``,
+        ``a_min``, ``a_obj`` as in :func:`snakecg.optimize.optimize`.
     """
     from ..geometry import SELF_CLEARANCE
 
     t0 = time.perf_counter()
     clearance = SELF_CLEARANCE if clearance is None else clearance
-    objective, query, Q0, lo, hi, clearance = _validate(
+    objective, query, Q0, lo, hi, clearance, jl_from = _validate(
         model, objective, q0, starts, seed, joint_limits, feasible, clearance, task)
     na = model.n_joints
     bounded = bool(np.any(model.present[1:] & np.isfinite(model.bounds[1:])))
@@ -442,7 +448,8 @@ def optimize_shape(model, objective: str = "max_sr", *, q0=None, starts: int = 8
                                "least_slip_push" else 1.0) if abs(s) < 1e300 else math.nan
                                for s in svals]),
         start_index=int(pick), grid_best=grid_best, grid_best_value=grid_best_value,
-        runs=runs, form=form, time=time.perf_counter() - t0)
+        runs=runs, form=form, time=time.perf_counter() - t0,
+        limits=of_query(query, np.stack([lo, hi], axis=1), jl_from))
 
 
 def _run(model, prob, objective, form, query, qs, ts, p, lo, hi):

@@ -23,7 +23,8 @@ import numpy as np
 from ..errors import InputError
 from .store import configuration_bytes
 
-__all__ = ["Plan", "grid_plan", "samples_plan", "joint_values", "default_chunk",
+__all__ = ["Plan", "grid_plan", "samples_plan", "joint_values", "default_grid",
+           "default_bounds", "default_chunk",
            "spread_chunk", "configuration_seconds", "result_bytes", "plan_from_meta",
            "SAMPLE_BLOCK", "PAPER_RANGE_DEG", "PAPER_STEP_DEG", "CHUNK_SECONDS",
            "MAX_CHUNK_BYTES", "MAX_CHUNKS", "CHUNKS_PER_WORKER", "CONFIGURATION_SECONDS",
@@ -187,6 +188,31 @@ def joint_values(lo_deg: float, hi_deg: float, step_deg: float) -> np.ndarray:
     :data:`MAX_POINTS_PER_JOINT` (:func:`joint_count`)."""
     joint_count(lo_deg, hi_deg, step_deg)
     return np.deg2rad(np.arange(lo_deg, hi_deg + 1e-9, step_deg))
+
+
+def default_grid(robot) -> tuple[list[np.ndarray], str]:
+    """A sweep's joint values when none are given, and where they come from: for a robot
+    with ``joint_limits``, from each joint's lower to its upper limit (within +-pi), both
+    included, evenly at most :data:`PAPER_STEP_DEG` apart (``"robot"``); for a robot
+    without them, the paper's grid, -135..135 degrees every 10 (``"paper"``)."""
+    from ..limits import default_joint_limits
+
+    if robot.joint_limits is None:
+        return [joint_values(*PAPER_RANGE_DEG, PAPER_STEP_DEG)] * robot.joints, "paper"
+    step = math.radians(PAPER_STEP_DEG)
+    limits, source = default_joint_limits(robot)
+    return [np.linspace(lo, hi, int(math.ceil((hi - lo) / step - 1e-9)) + 1)
+            for lo, hi in limits], source
+
+
+def default_bounds(robot) -> tuple[tuple, str]:
+    """The sampling box of a sweep's samples when none is given, and where it comes from:
+    the robot's ``joint_limits`` within +-pi (``"robot"``), or the paper's -135..135 degrees
+    (``"paper"``)."""
+    from ..limits import default_joint_limits
+
+    limits, source = default_joint_limits(robot)
+    return tuple((float(lo), float(hi)) for lo, hi in limits), source
 
 
 def _is_real(v) -> bool:

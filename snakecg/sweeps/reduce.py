@@ -179,7 +179,7 @@ def summary_text(s: dict) -> str:
         q = ",".join(f"{x:g}" for x in e["q_deg"])
         if e.get("feasible") is False:
             marked = True
-            return q + " *"
+            return q + " *"  # geometry.INFEASIBLE_MARK
         return q
 
     for m, d in s["metrics"].items():
@@ -189,9 +189,9 @@ def summary_text(s: dict) -> str:
         lines.append(f"{m:<26}{d['worst']['value']:>14.6g}  {at(d['worst']):<28}"
                      f"{d['best']['value']:>14.6g}  {at(d['best'])}")
     if marked:
-        lines.append(f"* a shape that is not physically possible (links closer than "
-                     f"{s['clearance']:g} m or inside the object); --feasible-only leaves "
-                     f"them out")
+        from ..geometry import infeasible_footnote
+
+        lines.append(f"{infeasible_footnote(s['clearance'])}; --feasible-only leaves them out")
     return "\n".join(lines)
 
 
@@ -265,29 +265,9 @@ def binned_maxima(store, *, radius_bins: int = 24, angle_bins: int = 36,
 
 
 def _draw(grid, rmax, meta, which: str, out: Path, fmt: str) -> None:
-    import matplotlib
-
-    matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    angle_bins, radius_bins = next(iter(grid.values())).shape
-    theta = np.linspace(-math.pi, math.pi, angle_bins + 1)
-    radius = np.linspace(0.0, rmax, radius_bins + 1)
-    fig, axes = plt.subplots(2, 2, figsize=(10, 10), subplot_kw={"projection": "polar"},
-                             constrained_layout=True)
-    for ax, m in zip(axes.ravel(), ("norm_lambda", "norm_a_obj", "sr", "norm_qdd")):
-        vals = np.where(np.isfinite(grid[m]), grid[m], np.nan)
-        mesh = ax.pcolormesh(theta, radius, np.ma.masked_invalid(vals).T, cmap="viridis",
-                             shading="flat")
-        ax.set_title(f"largest max {m} per bin", fontsize=10)
-        ax.set_rlabel_position(135)
-        ax.tick_params(labelsize=7)
-        fig.colorbar(mesh, ax=ax, shrink=0.7, pad=0.08)
-    scene = meta["scene"]
-    fig.suptitle(f"{which}, {meta['robot']['joints']} joints, "
-                 f"{scene['scenario']}, kappa = {scene['kappa']:g}:\nper-configuration maxima "
-                 f"over the input ellipsoid, binned over |COM| [m] from the contact point\nand "
-                 f"the angle of COM from the contacting link's axis", fontsize=10)
+    fig = _polar_figure(grid, rmax, meta, which)
     tmp = out.with_name(f".{out.name}.{uuid.uuid4().hex}.partial")
     try:
         fig.savefig(tmp, format=fmt, dpi=120 if fmt == "png" else None)
@@ -295,3 +275,35 @@ def _draw(grid, rmax, meta, which: str, out: Path, fmt: str) -> None:
     finally:
         plt.close(fig)
         tmp.unlink(missing_ok=True)
+
+
+def _polar_figure(grid, rmax, meta, which: str):
+    """The figure :func:`figure` writes: one polar panel per metric, colour scales and titles
+    by :mod:`snakecg.figures.scales`."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    from ..figures.scales import colorbar, colour_scale, metric_title, polar_rings
+
+    angle_bins, radius_bins = next(iter(grid.values())).shape
+    theta = np.linspace(-math.pi, math.pi, angle_bins + 1)
+    radius = np.linspace(0.0, rmax, radius_bins + 1)
+    fig, axes = plt.subplots(2, 2, figsize=(10, 10.5), subplot_kw={"projection": "polar"},
+                             constrained_layout=True)
+    for ax, m in zip(axes.ravel(), ("norm_lambda", "norm_a_obj", "sr", "norm_qdd")):
+        vals = np.where(np.isfinite(grid[m]), grid[m], np.nan)
+        scale = colour_scale(vals, m)  # flat when constant, a stretch said, sr within [0, 1]
+        mesh = ax.pcolormesh(theta, radius, np.ma.masked_invalid(vals).T, cmap=scale.cmap,
+                             norm=scale.norm, shading="flat")
+        ax.set_title(f"largest max {metric_title(m)} per bin", fontsize=10)
+        polar_rings(ax, rmax, fontsize=8)
+        ax.tick_params(labelsize=7)
+        colorbar(fig, mesh, ax, scale, fontsize=8, shrink=0.7, pad=0.08)
+    scene = meta["scene"]
+    fig.suptitle(f"{which}, {meta['robot']['joints']} joints, "
+                 f"{scene['scenario']}, kappa = {scene['kappa']:g}:\nper-configuration maxima "
+                 f"over the input ellipsoid, binned over |COM| [m] from the contact point\nand "
+                 f"the angle of COM from the contacting link's axis", fontsize=10)
+    return fig

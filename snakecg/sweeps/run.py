@@ -29,7 +29,8 @@ from .cluster import (
     start_bar,
 )
 from .lock import store_lock
-from .plan import Plan, default_chunk, grid_plan, samples_plan, spread_chunk
+from .plan import (Plan, default_bounds, default_chunk, default_grid, grid_plan, samples_plan,
+                   spread_chunk)
 from .work import evaluate_and_write, evaluate_chunk
 
 __all__ = ["sweep", "SweepResult", "LIMIT"]
@@ -62,6 +63,10 @@ class SweepResult:
     #: clearance (m) of its ``feasible`` array.
     feasible_only: bool = False
     clearance: float = SELF_CLEARANCE
+    #: The joint range the configurations span and where it comes from (``"robot"``: its
+    #: joint limits; ``"paper"``: -135..135 degrees; ``"argument"``), and the input region
+    #: of the extremes (the ellipsoid of eq. 31, radius 1): :func:`snakecg.limits.describe`.
+    limits: dict = dataclasses.field(default_factory=dict)
 
     def to_dict(self) -> dict:
         return dataclasses.asdict(self)
@@ -99,12 +104,16 @@ def make_plan(scene: Scene, *, grid=None, samples=None, seed=None, bounds=None,
     if samples is not None:
         if grid is not None:
             raise InputError("give grid or samples, not both")
+        if bounds is None:  # the robot's joint limits (or the paper's range)
+            bounds = default_bounds(scene.robot)[0]
         return samples_plan(joints, samples, seed, scene.scenario, bounds, chunk)
     if seed is not None:
         raise InputError("seed goes with samples (seeded random configurations); a grid "
                          "has no seed")
     if bounds is not None:
         raise InputError("bounds go with samples; a grid gives its joint values itself")
+    if grid is None:  # the robot's joint limits (or the paper's grid)
+        grid = default_grid(scene.robot)[0]
     return grid_plan(joints, grid, scene.scenario, chunk)
 
 
@@ -142,9 +151,11 @@ def sweep(scene, *, grid=None, samples=None, seed=None, store, client=None, chun
     * ``scene``: a :class:`~snakecg.Scene` (it pickles; each worker loads the model from its
       own cache).
     * ``grid``: joint angles (rad), one 1-D sequence for every joint or one per joint;
-      default the paper's -135..135 degrees every 10 (28 values per joint). Or ``samples``
-      configurations uniform in ``bounds`` (default -135..135 degrees on every joint, one
-      ``(lo, hi)`` pair in rad or one per joint) from ``seed``.
+      default the robot's ``joint_limits``, every 10 degrees or a little less, both limits
+      included, or for a robot without them the paper's -135..135 degrees every 10 (28
+      values per joint, :func:`~snakecg.sweeps.plan.default_grid`). Or ``samples``
+      configurations uniform in ``bounds`` (default the robot's joint limits or -135..135
+      degrees, one ``(lo, hi)`` pair in rad or one per joint) from ``seed``.
     * ``store``: path of the Zarr store (a folder, e.g. ``sweep.zarr``). If it exists and was
       made with the same arguments, only the chunks missing from it are computed (each
       recorded chunk is first checked against its digests when ``verify``); a store made with
@@ -217,8 +228,10 @@ def sweep(scene, *, grid=None, samples=None, seed=None, store, client=None, chun
     path = Path(store)
     _store.check_target(path)
     with store_lock(path, quiet=mode == "off"):
-        return _run(scene, plan, path, chunk, client, scheduler, workers, mode, verify,
-                    feasible, clearance, shared_store, t0)
+        res = _run(scene, plan, path, chunk, client, scheduler, workers, mode, verify,
+                   feasible, clearance, shared_store, t0)
+    res.limits = _limits(scene, plan, grid is not None or bounds is not None)
+    return res
 
 
 def _run(scene, plan, path, chunk, client, scheduler, workers, mode, verify, feasible,
@@ -258,6 +271,17 @@ def _run(scene, plan, path, chunk, client, scheduler, workers, mode, verify, fea
         close()
     return SweepResult(str(path), plan.size, plan.n_chunks, plan.chunk, len(todo), reused,
                        time.perf_counter() - t0, dashboard, feasible, clearance)
+
+
+def _limits(scene: Scene, plan: Plan, given: bool) -> dict:
+    """The joint range a sweep's configurations span, its source, and the input region."""
+    from ..limits import describe
+
+    spans = ([(min(v), max(v)) for v in plan.values] if plan.kind == "grid"
+             else list(plan.bounds))
+    source = ("argument" if given else
+              "robot" if scene.robot.joint_limits is not None else "paper")
+    return describe(joint_limits=spans, joint_limits_from=source, radius=1.0)
 
 
 def _stored(path: Path, plan: Plan, keep_chunk: bool) -> tuple[Plan, str]:
