@@ -43,13 +43,17 @@ def _array(name, value, n, width, problems, *, default_row=None):
         problems.append(f"{name} must be {form} for all, or {n} of them (one per "
                         f"{'link' if name in _PER_LINK else 'joint'}), got shape {a.shape}")
         return None
-    if not np.all(np.isfinite(a)):
-        problems.append(f"{name} must be finite, got {_r(value)}")
+    bad = np.isnan(a) if name in _MAY_BE_INFINITE else ~np.isfinite(a)
+    if np.any(bad):
+        problems.append(f"{name} must be {'numbers' if name in _MAY_BE_INFINITE else 'finite'}"
+                        f", got {_r(value)}")
         return None
     return a
 
 
 _PER_LINK = ("mass", "com", "inertia")
+#: Limits may be infinite (a continuous joint, an effort the file does not bound).
+_MAY_BE_INFINITE = ("joint_limits", "effort_limits")
 
 
 def _inertia_rows(value, n, problems):
