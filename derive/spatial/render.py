@@ -20,6 +20,7 @@ from ..printer import CasadiPrinter
 from ..render import (LARGE_FUNCTION_OPERATIONS, RenderedModel, _env, comment_text,
                       first_paragraph, tool_versions, write_model)
 from ..sample_c import sample_function_c
+from .block_c import BLOCK, block_function_c
 from .build import N_BASE_COORDINATES, build_spatial_function, build_spatial_sincos
 from .catalog import CHECKED_IN_SPATIAL_JOINTS, SPATIAL_FUNCTIONS, spatial_dirname
 from .model import derive_spatial_model
@@ -106,6 +107,27 @@ def _signature(fn, prefix: str, doc: str) -> dict:
             "large": ops is not None and ops > LARGE_FUNCTION_OPERATIONS}
 
 
+#: Functions whose batched driver evaluates blocks of samples with vector instructions
+#: (:mod:`.block_c`): the dynamics the engine calls for every sample.
+BLOCK_BATCHED = ("mass_matrix", "bias_forces")
+
+
+def _block_driver(spec, sig, variant, sincos) -> str:
+    """The block driver of ``sig``'s function (``<prefix>batch_<name>``) and its kernel."""
+    names = [i["name"] for i in sig["inputs"]]
+    broadcast = [names.index("K")]
+    sizes = [i["rows"] * i["cols"] for i in sig["inputs"]]
+    work = BLOCK * (2 * sincos["n"] + sum(s for k, s in enumerate(sizes) if k not in broadcast)
+                    + sum(sig["nnz_out"]))
+    symbol = variant.name() + "_block"
+    ctx = {**sig, "broadcast": broadcast, "in_sizes": sizes, "q": names.index("q"),
+           "block_symbol": symbol, "block_work": work,
+           "block_code": block_function_c(variant, symbol, set(broadcast))}
+    return _record_env().get_template("block.c.j2").render(
+        prefix=spec.prefix, f=ctx, B=BLOCK, na=sincos["n"], offset=N_BASE_COORDINATES,
+        broadcast_names=", ".join(names[k] for k in broadcast))
+
+
 def _printable(fn) -> bool:
     """Whether :func:`..sample_c.sample_function_c` prints every operation of ``fn`` (the
     four arithmetic operations, negation and squares; a square root keeps CasADi's C)."""
@@ -142,6 +164,12 @@ def render_c(spec, functions, variants) -> tuple[dict[str, str], list[dict]]:
             " */\n")
         batch = _env().get_template("batch.c.j2").render(prefix=spec.prefix,
                                                          functions=[{**sig, "sincos": sincos}])
+        if sincos is not None and f.name in BLOCK_BATCHED:
+            # the per-sample driver (with the vectorized sines and cosines it shares) keeps
+            # its code under another name and answers where the block driver cannot
+            exported = f"{spec.prefix}batch_{sig['name']}("
+            batch = batch.replace(exported, f"{spec.prefix}sample_batch_{sig['name']}(")
+            batch += _block_driver(spec, sig, variant, sincos)
         files[f"c/{sig['name']}.c"] = header + cg.dump() + batch
     return files, sigs
 

@@ -846,7 +846,7 @@ static void snakecg_sp1_mass_matrix_sincos(
 }
 
 
-CASADI_SYMBOL_EXPORT int snakecg_sp1_batch_mass_matrix(casadi_int n, const casadi_real** arg,
+CASADI_SYMBOL_EXPORT int snakecg_sp1_sample_batch_mass_matrix(casadi_int n, const casadi_real** arg,
     const casadi_int* stride, casadi_real** res) {
   const casadi_real* a[2];
   casadi_real* r[1];
@@ -895,4 +895,379 @@ CASADI_SYMBOL_EXPORT int snakecg_sp1_batch_mass_matrix(casadi_int n, const casad
   free(iw);
   free(w);
   return status;
+}
+
+/* ------------------------------------------------------------------------------------------
+ * GENERATED FILE - DO NOT EDIT. Block driver rendered from derive/spatial/templates/block.c.j2.
+ * snakecg_sp1_batch_mass_matrix evaluates 16 samples at a time with snakecg_sp1_mass_matrix_sincos_block (vectorized across
+ * the samples): the inputs of a block are gathered sample-innermost, the cosines and sines of
+ * the joint angles q[7..7] computed 16 at a time, and the outputs scattered back to
+ * the batch layout. When an input or output is null or K varies per sample, the
+ * per-sample driver snakecg_sp1_sample_batch_mass_matrix above answers instead. Same return codes.
+ * ---------------------------------------------------------------------------------------- */
+
+/* snakecg_sp1_mass_matrix_sincos over 16 samples: 310 CasADi instructions, one per line, in a loop the compiler vectorizes across the samples */
+#if defined(__GNUC__) && !defined(__clang__) && __GNUC__ >= 6 && defined(__x86_64__) \
+    && defined(__linux__)
+__attribute__((target_clones("avx2", "default")))
+#endif
+static void snakecg_sp1_mass_matrix_sincos_block(
+    const casadi_real* restrict arg0,
+    const casadi_real* restrict arg1,
+    const casadi_real* restrict arg2,
+    const casadi_real* restrict arg3,
+    casadi_real* restrict res0) {
+  int s;
+  for (s = 0; s < 16; ++s) {
+    casadi_real w0 = arg1[0];
+    casadi_real w1 = arg1[1];
+    casadi_real w2 = w0 + w1;
+    res0[0 + s] = w2;
+    casadi_real w3 = 0.0;
+    res0[16 + s] = w3;
+    res0[32 + s] = w3;
+    res0[48 + s] = w3;
+    casadi_real w4 = arg1[55];
+    casadi_real w5 = w4 * w0;
+    casadi_real w6 = arg1[49];
+    casadi_real w7 = arg1[58];
+    casadi_real w8 = w6 * w7;
+    casadi_real w9 = arg1[43];
+    casadi_real w10 = arg2[0 + s];
+    casadi_real w11 = w9 * w10;
+    casadi_real w12 = arg1[46];
+    casadi_real w13 = arg3[0 + s];
+    casadi_real w14 = w12 * w13;
+    w11 = w11 + w14;
+    w14 = arg1[56];
+    casadi_real w15 = w11 * w14;
+    w8 = w8 + w15;
+    w12 = w12 * w10;
+    w9 = w9 * w13;
+    w12 = w12 - w9;
+    w9 = arg1[57];
+    w15 = w12 * w9;
+    w8 = w8 + w15;
+    w15 = arg1[52];
+    w8 = w8 + w15;
+    casadi_real w16 = w8 * w1;
+    casadi_real w17 = w5 + w16;
+    res0[64 + s] = w17;
+    casadi_real w18 = arg1[54];
+    casadi_real w19 = w18 * w0;
+    casadi_real w20 = arg1[48];
+    casadi_real w21 = w20 * w7;
+    casadi_real w22 = arg1[42];
+    casadi_real w23 = w22 * w10;
+    casadi_real w24 = arg1[45];
+    casadi_real w25 = w24 * w13;
+    w23 = w23 + w25;
+    w25 = w23 * w14;
+    w21 = w21 + w25;
+    w24 = w24 * w10;
+    w22 = w22 * w13;
+    w24 = w24 - w22;
+    w22 = w24 * w9;
+    w21 = w21 + w22;
+    w22 = arg1[51];
+    w21 = w21 + w22;
+    w25 = w21 * w1;
+    casadi_real w26 = w19 + w25;
+    casadi_real w27 = -w26;
+    res0[80 + s] = w27;
+    casadi_real w28 = w20 * w16;
+    casadi_real w29 = w6 * w22;
+    casadi_real w30 = w20 * w15;
+    w29 = w29 - w30;
+    w30 = w29 * w1;
+    w28 = w28 + w30;
+    w30 = w6 * w25;
+    w28 = w28 - w30;
+    res0[96 + s] = w28;
+    res0[112 + s] = w3;
+    res0[128 + s] = w2;
+    res0[144 + s] = w3;
+    w30 = -w17;
+    res0[160 + s] = w30;
+    res0[176 + s] = w3;
+    casadi_real w31 = arg1[53];
+    w0 = w31 * w0;
+    casadi_real w32 = arg1[47];
+    w7 = w32 * w7;
+    casadi_real w33 = arg1[41];
+    casadi_real w34 = w33 * w10;
+    casadi_real w35 = arg1[44];
+    casadi_real w36 = w35 * w13;
+    w34 = w34 + w36;
+    w14 = w34 * w14;
+    w7 = w7 + w14;
+    w35 = w35 * w10;
+    w33 = w33 * w13;
+    w35 = w35 - w33;
+    w9 = w35 * w9;
+    w7 = w7 + w9;
+    w9 = arg1[50];
+    w7 = w7 + w9;
+    w33 = w7 * w1;
+    w13 = w0 + w33;
+    res0[192 + s] = w13;
+    w10 = w6 * w33;
+    w15 = w32 * w15;
+    w14 = w6 * w9;
+    w15 = w15 - w14;
+    w14 = w15 * w1;
+    w10 = w10 + w14;
+    w14 = w32 * w16;
+    w10 = w10 - w14;
+    res0[208 + s] = w10;
+    res0[224 + s] = w3;
+    res0[240 + s] = w3;
+    res0[256 + s] = w2;
+    res0[272 + s] = w26;
+    w2 = -w13;
+    res0[288 + s] = w2;
+    res0[304 + s] = w3;
+    w14 = w32 * w25;
+    w9 = w20 * w9;
+    w22 = w32 * w22;
+    w9 = w9 - w22;
+    w1 = w9 * w1;
+    w14 = w14 + w1;
+    w1 = w20 * w33;
+    w14 = w14 - w1;
+    res0[320 + s] = w14;
+    res0[336 + s] = w3;
+    res0[352 + s] = w30;
+    res0[368 + s] = w26;
+    w26 = arg1[69];
+    w30 = w26 * w34;
+    w1 = arg1[70];
+    w22 = w1 * w35;
+    w30 = w30 + w22;
+    w22 = arg1[67];
+    w36 = w22 * w32;
+    w30 = w30 + w36;
+    w36 = w32 * w30;
+    casadi_real w37 = arg1[65];
+    casadi_real w38 = w37 * w34;
+    casadi_real w39 = arg1[68];
+    casadi_real w40 = w39 * w35;
+    w38 = w38 + w40;
+    w40 = w26 * w32;
+    w38 = w38 + w40;
+    w40 = w34 * w38;
+    w36 = w36 + w40;
+    w34 = w39 * w34;
+    w40 = arg1[66];
+    casadi_real w41 = w40 * w35;
+    w34 = w34 + w41;
+    w41 = w1 * w32;
+    w34 = w34 + w41;
+    w35 = w35 * w34;
+    w36 = w36 + w35;
+    w7 = w7 * w33;
+    w35 = w21 * w25;
+    w41 = w7 + w35;
+    casadi_real w42 = w8 * w16;
+    w41 = w41 + w42;
+    w36 = w36 + w41;
+    w36 = w36 - w7;
+    w7 = arg1[59];
+    w7 = w36 + w7;
+    w31 = w31 * w0;
+    casadi_real w43 = w18 * w19;
+    casadi_real w44 = w31 + w43;
+    w5 = w4 * w5;
+    w44 = w44 + w5;
+    w7 = w7 + w44;
+    w7 = w7 - w31;
+    res0[384 + s] = w7;
+    w7 = w20 * w30;
+    w31 = w23 * w38;
+    w7 = w7 + w31;
+    w31 = w24 * w34;
+    w7 = w7 + w31;
+    w21 = w21 * w33;
+    w7 = w7 - w21;
+    w21 = arg1[62];
+    w21 = w7 + w21;
+    w18 = w18 * w0;
+    w21 = w21 - w18;
+    res0[400 + s] = w21;
+    w30 = w6 * w30;
+    w38 = w11 * w38;
+    w30 = w30 + w38;
+    w34 = w12 * w34;
+    w30 = w30 + w34;
+    w34 = w8 * w33;
+    w30 = w30 - w34;
+    w34 = arg1[63];
+    w34 = w30 + w34;
+    w0 = w4 * w0;
+    w34 = w34 - w0;
+    res0[416 + s] = w34;
+    w36 = w36 * w32;
+    w0 = w7 * w20;
+    w36 = w36 + w0;
+    w0 = w30 * w6;
+    w36 = w36 + w0;
+    w0 = w25 * w9;
+    w36 = w36 + w0;
+    w0 = w16 * w15;
+    w36 = w36 - w0;
+    res0[432 + s] = w36;
+    res0[448 + s] = w17;
+    res0[464 + s] = w3;
+    res0[480 + s] = w2;
+    res0[496 + s] = w21;
+    w21 = w26 * w23;
+    w2 = w1 * w24;
+    w21 = w21 + w2;
+    w2 = w22 * w20;
+    w21 = w21 + w2;
+    w2 = w20 * w21;
+    w17 = w37 * w23;
+    w0 = w39 * w24;
+    w17 = w17 + w0;
+    w0 = w26 * w20;
+    w17 = w17 + w0;
+    w0 = w23 * w17;
+    w2 = w2 + w0;
+    w23 = w39 * w23;
+    w0 = w40 * w24;
+    w23 = w23 + w0;
+    w0 = w1 * w20;
+    w23 = w23 + w0;
+    w24 = w24 * w23;
+    w2 = w2 + w24;
+    w2 = w2 + w41;
+    w2 = w2 - w35;
+    w35 = arg1[60];
+    w35 = w2 + w35;
+    w35 = w35 + w44;
+    w35 = w35 - w43;
+    res0[512 + s] = w35;
+    w21 = w6 * w21;
+    w17 = w11 * w17;
+    w21 = w21 + w17;
+    w23 = w12 * w23;
+    w21 = w21 + w23;
+    w8 = w8 * w25;
+    w21 = w21 - w8;
+    w8 = arg1[64];
+    w8 = w21 + w8;
+    w4 = w4 * w19;
+    w8 = w8 - w4;
+    res0[528 + s] = w8;
+    w2 = w2 * w20;
+    w7 = w7 * w32;
+    w2 = w2 + w7;
+    w7 = w21 * w6;
+    w2 = w2 + w7;
+    w16 = w16 * w29;
+    w2 = w2 + w16;
+    w16 = w33 * w9;
+    w2 = w2 - w16;
+    res0[544 + s] = w2;
+    res0[560 + s] = w27;
+    res0[576 + s] = w13;
+    res0[592 + s] = w3;
+    res0[608 + s] = w34;
+    res0[624 + s] = w8;
+    w8 = w26 * w11;
+    w34 = w1 * w12;
+    w8 = w8 + w34;
+    w22 = w22 * w6;
+    w8 = w8 + w22;
+    w8 = w6 * w8;
+    w37 = w37 * w11;
+    w22 = w39 * w12;
+    w37 = w37 + w22;
+    w26 = w26 * w6;
+    w37 = w37 + w26;
+    w37 = w11 * w37;
+    w8 = w8 + w37;
+    w39 = w39 * w11;
+    w40 = w40 * w12;
+    w39 = w39 + w40;
+    w1 = w1 * w6;
+    w39 = w39 + w1;
+    w12 = w12 * w39;
+    w8 = w8 + w12;
+    w8 = w8 + w41;
+    w8 = w8 - w42;
+    w42 = arg1[61];
+    w42 = w8 + w42;
+    w42 = w42 + w44;
+    w42 = w42 - w5;
+    res0[640 + s] = w42;
+    w8 = w8 * w6;
+    w30 = w30 * w32;
+    w8 = w8 + w30;
+    w21 = w21 * w20;
+    w8 = w8 + w21;
+    w33 = w33 * w15;
+    w8 = w8 + w33;
+    w25 = w25 * w29;
+    w8 = w8 - w25;
+    res0[656 + s] = w8;
+    res0[672 + s] = w28;
+    res0[688 + s] = w10;
+    res0[704 + s] = w14;
+    res0[720 + s] = w36;
+    res0[736 + s] = w2;
+    res0[752 + s] = w8;
+    w36 = w36 * w32;
+    w2 = w2 * w20;
+    w36 = w36 + w2;
+    w8 = w8 * w6;
+    w36 = w36 + w8;
+    w28 = w28 * w29;
+    w36 = w36 + w28;
+    w10 = w10 * w15;
+    w36 = w36 + w10;
+    w14 = w14 * w9;
+    w36 = w36 + w14;
+    res0[768 + s] = w36;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int snakecg_sp1_batch_mass_matrix(casadi_int n, const casadi_real** arg,
+    const casadi_int* stride, casadi_real** res) {
+  casadi_real *work, *cq, *sq;
+  casadi_real* in0;
+  casadi_real* out0;
+  casadi_int i, i0, m, e, src;
+  int large;
+  if (!(arg[0] && arg[1] && res[0] && stride[1] == 0)) {
+    return snakecg_sp1_sample_batch_mass_matrix(n, arg, stride, res);
+  }
+  work = (casadi_real*) malloc(sizeof(casadi_real) * 944);
+  if (!work) return -1;
+  cq = work;
+  sq = cq + 16;
+  in0 = sq + 16;
+  out0 = in0 + 128;
+  for (i0 = 0; i0 < n; i0 += 16) {
+    m = n - i0 < 16 ? n - i0 : 16;
+    /* gather (the last sample repeated into the unused slots of a partial block) */
+    for (i = 0; i < 16; ++i) {
+      src = i0 + (i < m ? i : m - 1);
+      for (e = 0; e < 8; ++e) in0[e * 16 + i] = arg[0][src * stride[0] + e];
+    }
+    for (e = 0; e < 1; ++e) {
+      const casadi_real* x = in0 + (7 + e) * 16;
+      large = 0;
+      for (i = 0; i < 16; ++i) large |= !(fabs(x[i]) <= SNAKECG_SINCOS_MAX);
+      snakecg_sincos_block(x, cq + e * 16, sq + e * 16);
+      if (large) snakecg_sincos_large(x, cq + e * 16, sq + e * 16, 16);
+    }
+    snakecg_sp1_mass_matrix_sincos_block(in0, arg[1], cq, sq, out0);
+    /* scatter */
+    for (i = 0; i < m; ++i) {
+      for (e = 0; e < 49; ++e) res[0][(i0 + i) * 49 + e] = out0[e * 16 + i];
+    }
+  }
+  free(work);
+  return 0;
 }
