@@ -23,8 +23,10 @@ BLOCK = 16
 
 
 def block_function_c(fn: ca.Function, cname: str, broadcast: set[int]) -> str:
-    """``fn`` as ``static void cname(const casadi_real* restrict arg0, ..., res0, ...)`` over
-    :data:`BLOCK` samples; inputs in ``broadcast`` (indices) are shared by every sample."""
+    """``fn`` as ``static void cname(const casadi_real* restrict arg0, ...,
+    casadi_real* restrict res0, ...)`` over :data:`BLOCK` samples, inputs and outputs
+    sample-innermost (entry ``e`` of sample ``s`` at ``[e * BLOCK + s]``); the inputs in
+    ``broadcast`` (indices) are shared by every sample (``[e]``)."""
     if not fn.is_a("SXFunction"):
         raise ValueError(f"{fn.name()} is not an SX function")
     B = BLOCK
@@ -57,9 +59,10 @@ def block_function_c(fn: ca.Function, cname: str, broadcast: set[int]) -> str:
     params += [f"casadi_real* restrict res{j}" for j in range(fn.n_out())]
     head = [f"/* {fn.name()} over {B} samples: {fn.n_instructions()} CasADi instructions, one "
             "per line, in a loop the compiler vectorizes across the samples */",
-            "#if defined(__GNUC__) && !defined(__clang__) && __GNUC__ >= 6 "
+            "#if defined(__GNUC__) && !defined(__clang__) && __GNUC__ >= 11 "
             "&& defined(__x86_64__) \\\n    && defined(__linux__)",
-            '__attribute__((target_clones("avx2", "default")))',
+            "/* a second copy for processors with AVX2 and FMA, chosen at load time */",
+            '__attribute__((target_clones("arch=x86-64-v3", "default")))',
             "#endif",
             f"static void {cname}("]
     lines = ["    " + p + ("," if i < len(params) - 1 else ") {") for i, p in enumerate(params)]

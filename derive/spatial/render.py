@@ -110,19 +110,43 @@ def _signature(fn, prefix: str, doc: str) -> dict:
 #: Functions whose batched driver evaluates blocks of samples with vector instructions
 #: (:mod:`.block_c`): the dynamics the engine calls for every sample.
 BLOCK_BATCHED = ("mass_matrix", "bias_forces")
+#: Symmetric outputs whose block kernel computes the upper triangle only.
+SYMMETRIC_OUTPUTS = {"mass_matrix": "M"}
 
 
 def _block_driver(spec, sig, variant, sincos) -> str:
-    """The block driver of ``sig``'s function (``<prefix>batch_<name>``) and its kernel."""
+    """The block driver of ``sig``'s function (``<prefix>batch_<name>``) and its kernel.
+
+    A symmetric output (:data:`SYMMETRIC_OUTPUTS`) leaves the kernel as its upper triangle
+    (half the stores), and the scatter writes each entry from its place there."""
     names = [i["name"] for i in sig["inputs"]]
     broadcast = [names.index("K")]
     sizes = [i["rows"] * i["cols"] for i in sig["inputs"]]
+    kernel_fn, triangle, entry = variant, "", []
+    out_names = [o["name"] for o in sig["outputs"]]
+    kernel_nnz = list(sig["nnz_out"])
+    sym = SYMMETRIC_OUTPUTS.get(sig["name"])
+    if sym is not None:
+        k = out_names.index(sym)
+        n = sig["outputs"][k]["rows"]
+        upper = [(r, c) for c in range(n) for r in range(c + 1)]
+        where = {rc: t for t, rc in enumerate(upper)}
+        entry = [where[(min(r, c), max(r, c))] for c in range(n) for r in range(n)]
+        args = [ca.SX.sym(variant.name_in(i), variant.sparsity_in(i))
+                for i in range(variant.n_in())]
+        outs = variant.call(args)
+        outs[k] = ca.vertcat(*[outs[k][r, c] for r, c in upper])
+        kernel_fn = ca.Function(variant.name(), args, outs, variant.name_in(),
+                                variant.name_out())
+        triangle, kernel_nnz[k] = sym, len(upper)
     work = BLOCK * (2 * sincos["n"] + sum(s for k, s in enumerate(sizes) if k not in broadcast)
-                    + sum(sig["nnz_out"]))
+                    + sum(kernel_nnz))
     symbol = variant.name() + "_block"
     ctx = {**sig, "broadcast": broadcast, "in_sizes": sizes, "q": names.index("q"),
-           "block_symbol": symbol, "block_work": work,
-           "block_code": block_function_c(variant, symbol, set(broadcast))}
+           "block_symbol": symbol, "block_work": work, "kernel_nnz": kernel_nnz,
+           "triangle": triangle, "entry": entry,
+           "triangle_index": out_names.index(triangle) if triangle else -1,
+           "block_code": block_function_c(kernel_fn, symbol, set(broadcast))}
     return _record_env().get_template("block.c.j2").render(
         prefix=spec.prefix, f=ctx, B=BLOCK, na=sincos["n"], offset=N_BASE_COORDINATES,
         broadcast_names=", ".join(names[k] for k in broadcast))
@@ -166,9 +190,15 @@ def render_c(spec, functions, variants) -> tuple[dict[str, str], list[dict]]:
                                                          functions=[{**sig, "sincos": sincos}])
         if sincos is not None and f.name in BLOCK_BATCHED:
             # the per-sample driver (with the vectorized sines and cosines it shares) keeps
-            # its code under another name and answers where the block driver cannot
+            # its code under another name and answers where the block driver cannot; the
+            # sines and cosines get the block kernel's AVX2 + FMA copy (a fifth of the time
+            # of a 16-link mass matrix, measured in benchmarks/bench_spatial.py)
             exported = f"{spec.prefix}batch_{sig['name']}("
             batch = batch.replace(exported, f"{spec.prefix}sample_batch_{sig['name']}(")
+            batch = batch.replace('target_clones("avx2", "default")',
+                                  'target_clones("arch=x86-64-v3", "default")')
+            batch = batch.replace("__GNUC__ >= 6 && defined(__x86_64__)",
+                                  "__GNUC__ >= 11 && defined(__x86_64__)")
             batch += _block_driver(spec, sig, variant, sincos)
         files[f"c/{sig['name']}.c"] = header + cg.dump() + batch
     return files, sigs

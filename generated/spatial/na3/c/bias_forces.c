@@ -1365,10 +1365,10 @@ CASADI_SYMBOL_EXPORT int snakecg_sp3_bias_forces_work_bytes(casadi_int *sz_arg, 
 #define SNAKECG_SINCOS_BLOCK 16
 #define SNAKECG_SINCOS_MAX 8.0e5
 
-#if defined(__GNUC__) && !defined(__clang__) && __GNUC__ >= 6 && defined(__x86_64__) \
+#if defined(__GNUC__) && !defined(__clang__) && __GNUC__ >= 11 && defined(__x86_64__) \
     && defined(__linux__)
 /* a second copy for processors with AVX2 (four angles per instruction), chosen at load time */
-__attribute__((target_clones("avx2", "default")))
+__attribute__((target_clones("arch=x86-64-v3", "default")))
 #endif
 static void snakecg_sincos_block(const casadi_real* restrict x, casadi_real* restrict c,
                                  casadi_real* restrict s) {
@@ -2687,9 +2687,10 @@ CASADI_SYMBOL_EXPORT int snakecg_sp3_sample_batch_bias_forces(casadi_int n, cons
  * ---------------------------------------------------------------------------------------- */
 
 /* snakecg_sp3_bias_forces_sincos over 16 samples: 1189 CasADi instructions, one per line, in a loop the compiler vectorizes across the samples */
-#if defined(__GNUC__) && !defined(__clang__) && __GNUC__ >= 6 && defined(__x86_64__) \
+#if defined(__GNUC__) && !defined(__clang__) && __GNUC__ >= 11 && defined(__x86_64__) \
     && defined(__linux__)
-__attribute__((target_clones("avx2", "default")))
+/* a second copy for processors with AVX2 and FMA, chosen at load time */
+__attribute__((target_clones("arch=x86-64-v3", "default")))
 #endif
 static void snakecg_sp3_bias_forces_sincos_block(
     const casadi_real* restrict arg0,
@@ -3926,9 +3927,11 @@ CASADI_SYMBOL_EXPORT int snakecg_sp3_batch_bias_forces(casadi_int n, const casad
       if (large) snakecg_sincos_large(x, cq + e * 16, sq + e * 16, 16);
     }
     snakecg_sp3_bias_forces_sincos_block(in0, in1, arg[2], cq, sq, out0);
-    /* scatter */
-    for (i = 0; i < m; ++i) {
-      for (e = 0; e < 9; ++e) res[0][(i0 + i) * 9 + e] = out0[e * 16 + i];
+    /* scatter: entry by entry, the samples of the block innermost (contiguous reads) */
+    for (e = 0; e < 9; ++e) {
+      const casadi_real* x = out0 + e * 16;
+      casadi_real* y = res[0] + i0 * 9 + e;
+      for (i = 0; i < m; ++i) y[i * 9] = x[i];
     }
   }
   free(work);
