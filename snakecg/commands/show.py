@@ -30,6 +30,7 @@ examples:
   snakecg show --joints 2 M --latex        # the same for two joints, as LaTeX
   snakecg show --joints 2 wheel3 --json    # wheel row of link 3 as text and LaTeX
   snakecg show --joints 2 mass_matrix --c  # the generated C of mass_matrix()
+  snakecg show --spatial --joints 2 mass_matrix  # a 3-D chain's structured program
 """
 
 
@@ -56,12 +57,18 @@ def register(sub) -> None:
                      help=f"print JSON: text and LaTeX of each expression (schema {SCHEMA}, "
                      "docs/cli.md)")
     fmt.add_argument("--c", action="store_true", help="print the generated C of a function")
+    p.add_argument("--spatial", action="store_true",
+                   help="the spatial chain with N joints (3-D snakes, docs/spatial.md)")
     p.set_defaults(run=run)
 
 
 def run(args) -> int:
     if args.joints < 1:
         raise InputError(f"--joints must be >= 1, got {args.joints}")
+    if getattr(args, "spatial", False):
+        from ..spatial.show import run_spatial
+
+        return run_spatial(args)
     if args.c:
         return _show_c(args)
     if args.joints > MAX_SHOW_JOINTS:
