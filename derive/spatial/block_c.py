@@ -14,6 +14,9 @@ from __future__ import annotations
 
 import casadi as ca
 
+# The instruction printing below follows snakecg_derive.sample_c's line for line (with the
+# block's indexing); it is not shared by a change there because every planar model's build
+# hash covers derive/*.py, and the planar models stay byte for byte as they are.
 from ..sample_c import _BINARY, _constant
 
 __all__ = ["block_function_c", "BLOCK"]

@@ -44,6 +44,8 @@ def _expr(expr, env):
 
 
 def _program(f: FunctionSpec, given: dict):
+    # the inputs as in snakecg_derive.build._inputs (not reused: that module's variant runs
+    # SymPy's CSE first, which the structured programs do without)
     env: dict = {}
     args = []
     for name, syms, _ in f.inputs:
