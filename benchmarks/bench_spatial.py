@@ -277,7 +277,8 @@ def growth_table() -> None:
         rows[n] = (c_bytes, ops, mm, time.perf_counter() - t)
         print(f"  rendered {n} links in {rows[n][3]:.1f} s", flush=True)
     print(f"\ngenerated code by link count (exponent of each doubling)")
-    print(f"{'links':>6}{'C bytes':>12}{'exp':>6}{'operations':>12}{'exp':>6}{'M ops':>9}{'exp':>6}")
+    print(f"{'links':>6}{'C bytes':>12}{'exp':>6}{'operations':>12}{'exp':>6}"
+          f"{'M ops':>9}{'exp':>6}")
     prev = None
     for n, (b, o, m, _) in rows.items():
         e = ["" if prev is None else f"{np.log2(x / y):.2f}" for x, y in

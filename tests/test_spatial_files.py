@@ -61,7 +61,7 @@ def test_mjcf_reads_mujocos_model(rng, tmp_path):
     # move every hinge off its body origin: the reader re-expresses the link frames
     path.write_text(text.replace('type="hinge"', 'type="hinge" pos="0.03 -0.02 0.01"', 1)
                     if 'type="hinge"' in text else
-                    text.replace("<joint name=\"j1\"", "<joint name=\"j1\" pos=\"0.03 -0.02 0.01\""))
+                    text.replace('<joint name="j1"', '<joint name="j1" pos="0.03 -0.02 0.01"'))
     mm = mujoco.MjModel.from_xml_path(str(path))
     md = mujoco.MjData(mm)
     read = snakecg.SpatialRobot.from_mjcf(path)

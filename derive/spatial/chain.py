@@ -184,7 +184,8 @@ class SpatialChain:
             w, od = self.velocity(j)
             qd = s.v[6 + j - 1]
             om = self.p.vec(f"om{i}", tuple(a + b * qd for a, b in zip(w, self.axis(j))))
-            vo = self.p.vec(f"vo{i}", tuple(a + b for a, b in zip(od, cross(w, self.joint_step(j)))))
+            step = cross(w, self.joint_step(j))
+            vo = self.p.vec(f"vo{i}", tuple(a + b for a, b in zip(od, step)))
             return om, vo
         return self._memo(("vel", i), build)
 

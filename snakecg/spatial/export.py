@@ -54,7 +54,8 @@ def _layout(model) -> dict:
                 c_files=sorted(n for n in man["files"] if n.endswith(".c")))
 
 
-_PARAMS = """/* robot_params.c: the robot "{robot_name}" baked into the {n_joints}-joint spatial library.
+_PARAMS = """/* robot_params.c: the robot "{robot_name}" baked into the {n_joints}-joint spatial
+ * library.
  * Written by `snakecg export`; do not edit (export again for another robot). */
 #include "{header}"
 
@@ -62,7 +63,8 @@ const casadi_real {prefix}robot_K[{n_parameters}] = {{
     {K}}};
 """
 
-_MAIN = """/* main.c: an example of the {n_joints}-joint spatial library. Written by `snakecg export`. */
+_MAIN = """/* main.c: an example of the {n_joints}-joint spatial library.
+ * Written by `snakecg export`. */
 #include <stdio.h>
 #include "{header}"
 
@@ -78,7 +80,8 @@ int main(void) {{
 }}
 """
 
-_MAKEFILE = """# Makefile of the {n_joints}-joint spatial snakecg library. Written by `snakecg export`.
+_MAKEFILE = """# Makefile of the {n_joints}-joint spatial snakecg library.
+# Written by `snakecg export`.
 CC ?= cc
 CFLAGS ?= -O2 -std=gnu99 -Wall
 AR ?= ar

@@ -162,8 +162,12 @@ def spatial_from_mjcf(path, *, name: str | None = None) -> SpatialRobot:
         m = mujoco.MjModel.from_xml_path(str(p))
     except Exception as exc:  # noqa: BLE001 - MuJoCo reports every problem as one kind
         raise InputError(f"{where} cannot be read: {' '.join(str(exc).split())}") from None
-    body_name = lambda b: mujoco.mj_id2name(m, mujoco.mjtObj.mjOBJ_BODY, b) or f"body {b}"  # noqa: E731
-    joint_name = lambda j: mujoco.mj_id2name(m, mujoco.mjtObj.mjOBJ_JOINT, j) or f"joint {j}"  # noqa: E731
+    def body_name(b):
+        return mujoco.mj_id2name(m, mujoco.mjtObj.mjOBJ_BODY, b) or f"body {b}"
+
+    def joint_name(j):
+        return mujoco.mj_id2name(m, mujoco.mjtObj.mjOBJ_JOINT, j) or f"joint {j}"
+
     kids: dict[int, list[int]] = {b: [] for b in range(m.nbody)}
     for b in range(1, m.nbody):
         kids[int(m.body_parentid[b])].append(b)
