@@ -128,3 +128,15 @@ def test_cli_show_and_export(tmp_path):
     assert r.returncode == 0 and "R2_00 = " in r.stdout
     r = run("show", "--spatial", "--joints", "1", "nothing")
     assert r.returncode == 2 and "unknown name 'nothing'" in r.stderr
+
+
+def test_casadi_backend_equals_compiled(rng):
+    """Without a compiler (backend="casadi"): CasADi's in-process evaluation of the
+    serialized functions gives the compiled numbers (to 1e-13)."""
+    robot = random_robot(rng, 3)
+    compiled, vm = snakecg.load(robot), snakecg.load(robot, backend="casadi")
+    assert vm.backend_kind == "casadi"
+    q, v = _q(rng, robot, 5), rng.normal(size=(5, robot.nv))
+    assert rel(vm.mass_matrix(q), compiled.mass_matrix(q)) <= 1e-13
+    assert rel(vm.bias_forces(q, v), compiled.bias_forces(q, v)) <= 1e-13
+    assert rel(vm.link_jacobians(q), compiled.link_jacobians(q)) <= 1e-13
