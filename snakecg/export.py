@@ -167,7 +167,12 @@ def export_library(scene, out, *, source: str | None = None) -> list[Path]:
     """
     from .model import load
     from .robot import Scene
+    from .spatial import SpatialRobot
 
+    if isinstance(scene, SpatialRobot):  # a 3-D chain: its own layout (snakecg.spatial.export)
+        from .spatial.export import export_spatial_library
+
+        return export_spatial_library(scene, out, source=source)
     if not isinstance(scene, Scene):
         raise InputError(f"scene must be a snakecg.Scene, got {type(scene).__name__}")
     if isinstance(out, bytes) or not isinstance(out, (str, os.PathLike)):

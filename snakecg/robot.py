@@ -239,14 +239,27 @@ class Robot:
         return robot
 
     @classmethod
-    def from_urdf(cls, path: str | Path, *, tol: float = 1e-6, name: str | None = None) -> Robot:
-        """Read a planar serial chain of revolute joints with parallel axes from a URDF file
-        (masses, joint-to-joint lengths, COM offsets along the links, inertias about the
-        joint axis); anything else is refused naming the element. Needs the ``urdf`` extra;
-        see :mod:`snakecg.urdf` and docs/urdf.md."""
+    def from_urdf(cls, path: str | Path, *, tol: float = 1e-6, name: str | None = None):
+        """Read a serial chain of revolute joints from a URDF file: a planar chain (parallel
+        axes, COMs on the links' axes) gives a planar :class:`Robot` (masses, joint-to-joint
+        lengths, COM offsets, inertias about the joint axis), any other chain a
+        :class:`~snakecg.SpatialRobot`; branches and other joints are refused naming the
+        element. Needs the ``urdf`` extra; see :mod:`snakecg.urdf`, docs/urdf.md and
+        docs/spatial.md."""
+        from .spatial.files import spatial_chain_or_planar
         from .urdf import robot_from_urdf
 
-        return robot_from_urdf(path, tol=tol, name=name)
+        return spatial_chain_or_planar("urdf", path, name, lambda: robot_from_urdf(
+            path, tol=tol, name=name))
+
+    @classmethod
+    def from_mjcf(cls, path: str | Path, *, tol: float = 1e-6, name: str | None = None):
+        """Read a serial chain of hinges on a free root from a MuJoCo XML file (MuJoCo's own
+        parser, the ``mjcf`` extra): a planar :class:`Robot` when the chain is planar, else a
+        :class:`~snakecg.SpatialRobot`; see docs/spatial.md."""
+        from .spatial.files import spatial_chain_or_planar
+
+        return spatial_chain_or_planar("mjcf", path, name, None, tol=tol)
 
     def __repr__(self) -> str:
         return f"Robot({_fields_repr(self, _ROBOT_REPR)})"

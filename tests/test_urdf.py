@@ -181,6 +181,9 @@ def test_other_structures_are_refused_naming_the_element(case, rng, tmp_path):
 
 
 def test_non_parallel_axes_and_off_axis_com_are_refused(rng, tmp_path):
+    """The planar reader refuses them; ``Robot.from_urdf`` reads them as a spatial chain."""
+    from snakecg.urdf import robot_from_urdf
+
     mass, length, com, izz = _random_links(rng, 3)
     path = write_urdf(tmp_path / "x.urdf", mass, length, com, izz)
     text = path.read_text()
@@ -189,12 +192,14 @@ def test_non_parallel_axes_and_off_axis_com_are_refused(rng, tmp_path):
     assert tilted != text
     path.write_text(tilted)
     with pytest.raises(snakecg.InputError, match=r"axis of joint 'joint2' is 11.5 deg off"):
-        snakecg.Robot.from_urdf(path)
+        robot_from_urdf(path)
+    assert isinstance(snakecg.Robot.from_urdf(path), snakecg.SpatialRobot)
     off = text.replace(f'<origin xyz="{_f(com[1])} 0 0"',
                        f'<origin xyz="{_f(com[1])} 0.01 0"')
     path.write_text(off)
     with pytest.raises(snakecg.InputError, match=r"COM of link 'link2' lies 0.01 m off"):
-        snakecg.Robot.from_urdf(path)
+        robot_from_urdf(path)
+    assert snakecg.Robot.from_urdf(path).com[1] == pytest.approx((com[1], 0.01, 0.0))
     # within the tolerance it is read (and the offset along the axis n is irrelevant)
     path.write_text(text.replace(f'<origin xyz="{_f(com[1])} 0 0"',
                                  f'<origin xyz="{_f(com[1])} 1e-9 0.02"'))

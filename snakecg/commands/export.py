@@ -42,13 +42,15 @@ def run(args) -> int:
     from pathlib import Path
 
     from ..export import export_library
+    from ..spatial.export import spatial_robot_from_args
 
     out = out_dir("--out", args.out)
-    scene = scene_from_args(args)
+    scene = spatial_robot_from_args(args) or scene_from_args(args)  # a 3-D file: spatial
     files = export_library(scene, out, source=Path(args.robot).name if args.robot else None)
-    stem = f"snakecg_na{scene.robot.joints}"
+    robot = getattr(scene, "robot", scene)
+    stem = f"snakecg_{'sp' if robot is scene else 'na'}{robot.joints}"
     if args.json:
-        print_json({"schema": SCHEMA, "joints": scene.robot.joints, "folder": str(out),
+        print_json({"schema": SCHEMA, "joints": robot.joints, "folder": str(out),
                     "header": str(out / f"{stem}.h"), "files": [str(f) for f in files]})
         return 0
     print(f"wrote {len(files)} files into {out}: {stem}.h, {stem}.c, robot_params.c, "

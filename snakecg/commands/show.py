@@ -33,6 +33,7 @@ examples:
   snakecg show --joints 2 h --latex --simplify   # trigsimp and collection on each entry
   snakecg show --joints 2 wheel3 --json    # wheel row of link 3 as text and LaTeX
   snakecg show --joints 2 mass_matrix --c  # the generated C of mass_matrix()
+  snakecg show --spatial --joints 2 mass_matrix  # a 3-D chain's structured program
 """
 
 
@@ -62,12 +63,18 @@ def register(sub) -> None:
     p.add_argument("--simplify", action="store_true",
                    help="trigsimp and collect each entry before printing (display only; "
                    "seconds for 2 joints, minutes for 6-8)")
+    p.add_argument("--spatial", action="store_true",
+                   help="the spatial chain with N joints (3-D snakes, docs/spatial.md)")
     p.set_defaults(run=run)
 
 
 def run(args) -> int:
     if args.joints < 1:
         raise InputError(f"--joints must be >= 1, got {args.joints}")
+    if getattr(args, "spatial", False):
+        from ..spatial.show import run_spatial
+
+        return run_spatial(args)
     if args.c:
         if args.simplify:
             raise InputError("--simplify goes with an expression, not with --c (the "
