@@ -27,6 +27,17 @@ with the default 400 output samples, of the compiled call followed by the first 
 the compiled run's error against the reference.
 
     python benchmarks/bench_simulate.py --compare --joints 3 [--repeat 20]
+
+These pushes turn the contact link against the object, which it enters within the first
+milliseconds (docs/simulate.md, the contact check): every run here integrates the whole push
+with ``geometry_check="report"`` (the check finds it, then the integration goes on as
+without it). ``--check`` measures the check itself where it runs throughout: a push that
+stays physical (a symmetric W of 4 joints pushing with its middle link, or of 2 joints),
+each call with the check (``"stop"``) against the same call without it (``"off"``),
+alternated, CPU time per call (median of ``--repeat``), output at the end and with the
+default 400 samples.
+
+    python benchmarks/bench_simulate.py --check [--repeat 200]
 """
 
 from __future__ import annotations
@@ -45,6 +56,7 @@ DURATION = 0.5
 ACCURACY = 1e-6  # m
 RTOLS = (1e-5, 1e-6, 1e-7, 1e-8, 1e-10)
 SCENARIOS = ("frictionless", "wheels", "ideal_wheels")
+CHECK = "report"  # the contact check finds the link in the object at once, then reports only
 
 
 def setup(joints: int, scenario: str, radius: float = 1.0):
@@ -77,13 +89,15 @@ def timed(fn, repeat: int):
 
 def case(joints: int, radius: float, scenario: str, repeat: int) -> None:
     sm, q0, tau = setup(joints, scenario, radius)
-    sm.simulate(q0, tau, 0.01)  # warm up (first calls, imports)
-    ref = sm.simulate(q0, tau, DURATION, rtol=1e-13, atol=1e-15, output_dt=DURATION)
+    sm.simulate(q0, tau, 0.01, geometry_check=CHECK)  # warm up (first calls, imports)
+    ref = sm.simulate(q0, tau, DURATION, rtol=1e-13, atol=1e-15, output_dt=DURATION,
+                      geometry_check=CHECK)
     p_ref = positions(sm, ref)
     moved = np.hypot(*(ref.q_obj[-1, :2] - ref.q_obj[0, :2]))
 
     def measure(name, **kw):
-        t, traj = timed(lambda: sm.simulate(q0, tau, DURATION, **kw), repeat)
+        t, traj = timed(lambda: sm.simulate(q0, tau, DURATION, geometry_check=CHECK, **kw),
+                        repeat)
         return name, t, np.abs(positions(sm, traj) - p_ref).max(), traj
 
     rows = [measure(f"rtol {rtol:.0e}", rtol=rtol, atol=rtol * 1e-2, output_dt=DURATION)
@@ -124,16 +138,17 @@ def cpu_timed(fn, repeat: int):
 def compare(joints: int, radius: float, scenario: str, repeat: int) -> None:
     sm, q0, tau = setup(joints, scenario, radius)
     for integrator in ("scipy", "compiled"):
-        sm.simulate(q0, tau, 0.01, integrator=integrator)  # warm up
+        sm.simulate(q0, tau, 0.01, integrator=integrator, geometry_check=CHECK)  # warm up
     ref = sm.simulate(q0, tau, DURATION, rtol=1e-13, atol=1e-15, output_dt=DURATION,
-                      integrator="scipy")
+                      integrator="scipy", geometry_check=CHECK)
     p_ref = positions(sm, ref)
     res, full = {}, {}
     for integrator in ("scipy", "compiled"):
         res[integrator] = cpu_timed(lambda i=integrator: sm.simulate(
-            q0, tau, DURATION, output_dt=DURATION, integrator=i), repeat)
+            q0, tau, DURATION, output_dt=DURATION, integrator=i, geometry_check=CHECK),
+            repeat)
         full[integrator] = cpu_timed(lambda i=integrator: sm.simulate(
-            q0, tau, DURATION, integrator=i), repeat)[0]
+            q0, tau, DURATION, integrator=i, geometry_check=CHECK), repeat)[0]
     (ts, ss, _, a), (tc, sc, tcs, b) = res["scipy"], res["compiled"]
     fs, fc = full["scipy"], full["compiled"]
     diff = np.abs(positions(sm, a) - positions(sm, b)).max()
@@ -145,11 +160,18 @@ def compare(joints: int, radius: float, scenario: str, repeat: int) -> None:
           f" {DURATION / tcs:>9.0f} {diff:>9.1e} {err:>9.1e}")
 
 
-def main_compare(args) -> None:
+def _load() -> str:
     with open("/proc/loadavg") as f:
-        load = " ".join(f.read().split()[:3])
+        return " ".join(f.read().split()[:3])
+
+
+def _machine() -> None:
     print(f"machine: {platform.processor() or platform.machine()}, {os.cpu_count()} cores, "
-          f"Python {platform.python_version()}; load average before: {load}")
+          f"Python {platform.python_version()}; load average before: {_load()}")
+
+
+def main_compare(args) -> None:
+    _machine()
     print(f"{DURATION} s push, default settings (DOP853, rtol 1e-9, atol 1e-11); simulated s per"
           f" CPU s (median of {args.repeat}): call = whole simulate call, output at the end; seg"
           " = its segment integrations alone; 400 = whole call with the default 400 output"
@@ -166,8 +188,41 @@ def main_compare(args) -> None:
         for radius in args.radius:
             for scenario in args.scenarios:
                 compare(joints, radius, scenario, args.repeat)
-    with open("/proc/loadavg") as f:
-        print(f"\nload average after: {' '.join(f.read().split()[:3])}")
+    print(f"\nload average after: {_load()}")
+
+
+def main_check(args) -> None:
+    """The contact check's cost where it runs throughout (a push that stays physical)."""
+    _machine()
+    print(f"{DURATION} s symmetric push (contact link in the middle), default settings; CPU ms "
+          f"per simulate call (median of {args.repeat}, check and no check alternated)\n")
+    header = (f"{'n_a':>3} {'scenario':<13} {'output':<11} {'off (ms)':>9} {'stop (ms)':>9}"
+              f" {'overhead':>9} {'samples':>7} {'status':<10}")
+    print(header)
+    print("-" * len(header))
+    shapes = {2: ([60.0, 60.0], [-0.05, -0.05]), 4: ([30.0, 40.0, 40.0, 30.0],
+                                                      [0.05, 0.02, 0.02, 0.05])}
+    for joints, (q_deg, tau) in shapes.items():
+        for scenario in args.scenarios:
+            scene = snakecg.Scene(snakecg.Robot(joints=joints), scenario=scenario, kappa=10.0,
+                                  contact_link=joints // 2 + 1)
+            sm = snakecg.load(scene)
+            q0 = np.r_[0.0, 0.0, 0.0, np.deg2rad(q_deg)]
+            for output in (DURATION, None):
+                times = {"off": [], "stop": []}
+                for mode in ("off", "stop"):  # warm up
+                    sm.simulate(q0, tau, DURATION, output_dt=output, geometry_check=mode)
+                for _ in range(args.repeat):
+                    for mode in ("off", "stop"):
+                        t0 = time.process_time()
+                        traj = sm.simulate(q0, tau, DURATION, output_dt=output,
+                                           geometry_check=mode)
+                        times[mode].append(time.process_time() - t0)
+                off, on = (statistics.median(times[m]) for m in ("off", "stop"))
+                print(f"{joints:>3} {scenario:<13} {'end' if output else '400 samples':<11}"
+                      f" {off * 1e3:>9.3f} {on * 1e3:>9.3f} {on / off - 1:>+9.1%}"
+                      f" {traj.n_samples:>7} {traj.summary['status']:<10}")
+    print(f"\nload average after: {_load()}")
 
 
 def main() -> None:
@@ -178,9 +233,14 @@ def main() -> None:
     ap.add_argument("--repeat", type=int, default=5)
     ap.add_argument("--compare", action="store_true",
                     help="compiled segments vs solve_ivp, simulated s per CPU s")
+    ap.add_argument("--check", action="store_true",
+                    help="the contact check's cost on a push that stays physical")
     args = ap.parse_args()
     if args.compare:
         main_compare(args)
+        return
+    if args.check:
+        main_check(args)
         return
     print(f"machine: {platform.processor() or platform.machine()}, {os.cpu_count()} cores, "
           f"Python {platform.python_version()}")

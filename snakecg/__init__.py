@@ -14,12 +14,14 @@ from .core import Data
 from .errors import ArtifactError, BuildError, InputError, SingularConstraintsError, SnakecgError
 from .model import ForwardResult, RobotModel, SceneModel, load
 from .robot import SCENARIOS, Robot, Scene
+from .spatial import SpatialRobot
 
 __version__ = "0.1.0"
 
 __all__ = [
     "Robot",
     "Scene",
+    "SpatialRobot",
     "SCENARIOS",
     "load",
     "RobotModel",

@@ -35,6 +35,9 @@ import numpy as np
 
 from ._inputs import integer
 from .errors import InputError
+from .forms_eig import Whitening as _Whitening
+from .forms_eig import range_geig as _range_geig
+from .forms_eig import signed as _signed
 
 __all__ = ["Extremes", "extremes", "com_polar", "joint_grid", "METRICS", "sphere_directions"]
 
@@ -64,6 +67,9 @@ class Extremes:
     #: exact linear scenarios.
     certified: object = None
     pieces: int = 0
+    #: Per configuration: '' where answered, else why not, in one line (the values are NaN
+    #: and ``certified`` False there: e.g. a numerically singular mass matrix).
+    reason: object = None
 
     def _squeeze(self):
         for d in (self.max, self.min, self.tau_max, self.tau_min, self.min_kept,
@@ -72,6 +78,8 @@ class Extremes:
                 d[k] = d[k][0]
         if self.certified is not None:
             self.certified = self.certified[0]
+        if self.reason is not None:
+            self.reason = self.reason[0]
         return self
 
 
@@ -99,74 +107,6 @@ def check_extremes_options(kwargs: dict) -> None:
                                                                for m in refined)):
         raise InputError(f"refined must be a list of metric names (norm_a_obj, norm_qdd, "
                          f"norm_lambda, sr), got {refined!r:.60}")
-
-
-def _tri_inv(L: np.ndarray) -> np.ndarray:
-    """Inverse of batched lower-triangular matrices (explicit for n <= 4, else numpy)."""
-    n = L.shape[-1]
-    if n > 4:
-        return np.linalg.inv(L)
-    Li = np.zeros_like(L)
-    d = 1.0 / np.diagonal(L, axis1=-2, axis2=-1)
-    for i in range(n):
-        Li[:, i, i] = d[:, i]
-        for j in range(i):
-            s = np.zeros(L.shape[0])
-            for k in range(j, i):
-                s += L[:, i, k] * Li[:, k, j]
-            Li[:, i, j] = -s * d[:, i]
-    return Li
-
-
-def _unit(v: np.ndarray) -> np.ndarray:
-    return v / np.maximum(np.linalg.norm(v, axis=-1, keepdims=True), 1e-300)
-
-
-def _eigh_small(C: np.ndarray, vectors: bool = True):
-    """Batched symmetric eigendecomposition, ascending: closed form for n <= 2 (vectorized,
-    faster than ``numpy.linalg.eigh`` on many tiny matrices), numpy otherwise."""
-    n = C.shape[-1]
-    if not vectors and n > 2:
-        return np.linalg.eigvalsh(C), None
-    if n == 1:
-        return C[:, :, 0].copy(), np.ones_like(C)
-    if n == 2:
-        a, b, c = C[:, 0, 0], C[:, 0, 1], C[:, 1, 1]
-        mean, r = 0.5 * (a + c), np.hypot(0.5 * (a - c), b)
-        vals = np.stack([mean - r, mean + r], axis=1)
-        lam = vals[:, 1]
-        v1 = np.stack([b, lam - a], axis=1)
-        v2 = np.stack([lam - c, b], axis=1)
-        use2 = np.linalg.norm(v2, axis=1) > np.linalg.norm(v1, axis=1)
-        vmax = _unit(np.where(use2[:, None], v2, v1))
-        vmax = np.where((r > 0)[:, None], vmax, np.array([1.0, 0.0]))
-        vmin = np.stack([-vmax[:, 1], vmax[:, 0]], axis=1)
-        return vals, np.stack([vmin, vmax], axis=2)
-    return np.linalg.eigh(C)
-
-
-class _Whitening:
-    """``N = L L^T``: maps forms to ``L^-1 X L^-T`` and eigenvectors back (``v^T N v = 1``)."""
-
-    def __init__(self, N: np.ndarray):
-        self.N = N
-        self.Linv = _tri_inv(np.linalg.cholesky(N))
-        self.LinvT = np.swapaxes(self.Linv, -1, -2)
-
-    def form(self, X: np.ndarray) -> np.ndarray:
-        C = self.Linv @ X @ self.LinvT
-        return 0.5 * (C + np.swapaxes(C, -1, -2))
-
-    def geig(self, X: np.ndarray):
-        vals, W = _eigh_small(self.form(X))
-        return vals, self.LinvT @ W
-
-
-def _signed(V: np.ndarray, c: np.ndarray, keep: bool) -> np.ndarray:
-    """Flip columns of V so that ``c . v >= 0`` (keep) or ``<= 0`` (lose)."""
-    s = np.einsum("bi,bij->bj", c, V)
-    flip = (s < 0) if keep else (s > 0)
-    return np.where(flip[:, None, :], -V, V)
 
 
 def sphere_directions(dim: int, count: int) -> np.ndarray:
@@ -239,21 +179,21 @@ def _quadratic_extremes_numpy(model, qa):
         ex.tau_min[m] = tmin
         ex.min_kept[m] = kmin
         ex.tau_min_kept[m] = Vk_keep[:, :, 0]
+        for d in (ex.max, ex.min, ex.min_kept):  # squared norms: rounding below 0 is clipped
+            d[m] = np.maximum(d[m], 0.0)
     # slippage ratio: Rayleigh quotient of (Omega, Omega + Xi) on the kept half, 0 when lost.
-    # Whitened with N; Omega + Xi is only semidefinite where the wheels brace the snake (a
-    # torque direction that moves nothing), so it is regularised relative to its largest
-    # eigenvalue before the second whitening.
+    # Omega + Xi is only semidefinite where the wheels brace the snake (a torque direction
+    # that moves nothing, and pushes nothing: Omega <= Omega + Xi), so the quotient is taken
+    # on the range of Omega + Xi (rank-revealing, _range_geig), where it is defined.
     Omw = W.form(kept["norm_a_obj"])
     Dw = W.form(kept["norm_a_obj"] + kept["norm_qdd"])
-    top = _eigh_small(Dw, vectors=False)[0][:, -1]
-    Dw = Dw + (1e-12 * np.maximum(top, 1e-300))[:, None, None] * np.eye(na)
-    vs, Us = _Whitening(Dw).geig(Omw)
-    Vs = _signed(W.LinvT @ Us, c, keep=True)
-    for col, store_v, store_t in ((-1, ex.max, ex.tau_max), (0, ex.min_kept, ex.tau_min_kept)):
-        v = Vs[:, :, col]
+    (vmax, Umax), (vmin, Umin) = _range_geig(Omw, Dw)
+    for v_, u_, store_v, store_t in ((vmax, Umax, ex.max, ex.tau_max),
+                                     (vmin, Umin, ex.min_kept, ex.tau_min_kept)):
+        v = _signed((W.LinvT @ u_[:, :, None]), c, keep=True)[:, :, 0]
         norm = np.sqrt(np.einsum("bi,bij,bj->b", v, N, v))
-        store_v["sr"] = np.clip(vs[:, col], 0.0, 1.0)
-        store_t["sr"] = v / norm[:, None]
+        store_v["sr"] = np.clip(v_, 0.0, 1.0)
+        store_t["sr"] = v / np.maximum(norm, 1e-300)[:, None]
     ex.min["sr"] = np.zeros(n)
     ex.tau_min["sr"] = -ex.tau_max["sr"]
     return ex
@@ -266,7 +206,7 @@ def _quadratic_extremes(model, qa):
     numpy's batched eigensolver otherwise (and for samples with dependent rows).
     """
     if "metric_extremes" not in model.backend.signatures:
-        return _quadratic_extremes_numpy(model, qa)
+        return _sr_at_torque(model, qa, _quadratic_extremes_numpy(model, qa))
     from .solver import HELD, LOST, PIVOT_TOL, _free_and_fixed
 
     n = qa.shape[0]
@@ -325,6 +265,17 @@ def _quadratic_extremes(model, qa):
             d, e = getattr(ex, attr), getattr(again, attr)
             for k in d:
                 d[k][sub] = e[k]
+    return _sr_at_torque(model, qa, ex)
+
+
+def _sr_at_torque(model, qa, ex):
+    """The largest sr reported is the exact forward solve's at the returned torque: the
+    closed form's eigenvalue is a root of a cubic with a double root at 0 (Omega has rank
+    one), good to ~1e-7 only, and the eigensolver's is near rounding-level directions of
+    Omega + Xi; their eigenvectors are good, and the quotient there to its square."""
+    at = model.forward(qa, ex.tau_max["sr"])
+    ok = at.contact & ~at.singular & np.isfinite(at.sr)
+    ex.max["sr"] = np.where(ok, at.sr, ex.max["sr"])
     return ex
 
 
@@ -449,17 +400,88 @@ def extremes(model, q, *, samples: int | None = None, refine: int = 10,
     bad = [m for m in refined if m not in METRICS]
     if bad:
         raise InputError(f"refined takes metric names from {METRICS}, got {bad[0]!r}")
+    ex = _answered(model, qa, lambda sub: _solve(model, sub, exact, samples, refine, starts,
+                                                  tuple(refined)))
+    return ex if batched else ex._squeeze()
+
+
+def _solve(model, qa, exact, samples, refine, starts, refined):
     if model.scene.scenario == "wheels" and exact:
         from .piecewise import wheel_extremes
 
         ex = wheel_extremes(model, qa)
     elif model.scene.scenario == "wheels":
-        ex = _wheels_extremes(model, qa, samples, refine, starts, tuple(refined))
+        ex = _wheels_extremes(model, qa, samples, refine, starts, refined)
         ex.certified = np.zeros(qa.shape[0], bool)
     else:
         ex = _quadratic_extremes(model, qa)
         ex.certified = np.ones(qa.shape[0], bool)
-    return ex if batched else ex._squeeze()
+    return ex
+
+
+def _answered(model, qa, solve) -> Extremes:
+    """``solve(qa)`` on the configurations that can be answered; NaN, ``certified`` False and
+    the cause in ``reason`` for the others. A configuration is screened by the forward solve
+    at zero torque (a numerically singular mass matrix or a system that is not finite in
+    float64 has no answer at any torque), and a numerical failure of a batch is retried one
+    configuration at a time, so no LAPACK exception reaches the caller."""
+    from .rows import NO_ANSWER, reason_of
+
+    n = qa.shape[0]
+    res = model.forward(qa, np.zeros((n, model.n_joints)))
+    codes = res.raw[:, model.columns.status]
+    why = np.array([reason_of(c) if c in NO_ANSWER else "" for c in codes], dtype=object)
+    good = np.flatnonzero(why == "")
+    parts = []
+    if good.size:
+        try:
+            parts.append((good, solve(np.ascontiguousarray(qa[good]))))
+        except np.linalg.LinAlgError:
+            for i in good:
+                try:
+                    parts.append((np.array([i]), solve(np.ascontiguousarray(qa[i:i + 1]))))
+                except np.linalg.LinAlgError as err:
+                    why[i] = f"the linear algebra failed at this configuration ({err})"
+    return _merge(n, model.n_joints, parts, why)
+
+
+_FIELDS = ("max", "min", "min_kept", "tau_max", "tau_min", "tau_min_kept")
+
+
+def _merge(n: int, na: int, parts, why) -> Extremes:
+    """One :class:`Extremes` of ``n`` configurations from ``(indices, Extremes)`` parts; NaN
+    where none answers (``why`` says why)."""
+    ex = Extremes(method=parts[0][1].method if parts else "none (no configuration answered)")
+    for attr in _FIELDS:
+        d = getattr(ex, attr)
+        for m in METRICS:
+            d[m] = np.full((n, na) if attr.startswith("tau") else n, np.nan)
+        for idx, part in parts:
+            for m, v in getattr(part, attr).items():
+                d[m][idx] = v
+    ex.certified = np.zeros(n, bool)
+    for idx, part in parts:
+        ex.certified[idx] = part.certified
+        ex.pieces += part.pieces
+    # a value that is not finite, or a norm below 0 or sr outside [0, 1] (beyond rounding),
+    # is no answer (min_kept is NaN where no torque keeps the contact)
+    for attr in ("max", "min", "min_kept"):
+        for m, v in getattr(ex, attr).items():
+            tol = 1e-9 * np.abs(np.where(np.isfinite(ex.max[m]), ex.max[m], 0.0))
+            with np.errstate(invalid="ignore"):
+                impossible = (v < -tol) | (v > 1 + 1e-9 if m == "sr" else False)
+                impossible |= np.isinf(v) | (np.isnan(v) & (attr != "min_kept"))
+            for i in np.flatnonzero(impossible & (why == "")):
+                why[i] = (f"{attr} {m} is not a possible value in float64 ({v[i]:.3g}): "
+                          f"the configuration is too ill-conditioned to answer")
+    lost = why != ""
+    if np.any(lost):
+        for attr in _FIELDS:
+            for m in METRICS:
+                getattr(ex, attr)[m][lost] = np.nan
+        ex.certified[lost] = False
+    ex.reason = why
+    return ex
 
 
 def com_polar(model, q):

@@ -396,10 +396,35 @@ def model_dir(n_joints: int, *, generate: bool = True, progress=None) -> tuple[P
     return _generate(n_joints, root, progress)
 
 
-def _generate(n_joints: int, root: Path, progress) -> tuple[Path, dict]:
+def regenerate(n_joints: int, folder: Path, problem, *, progress=None) -> tuple[Path, dict]:
+    """Folder and manifest of the model for ``n_joints`` in place of ``folder`` (from
+    :func:`model_dir`), whose manifest disagrees with its own hash-verified code
+    (``problem``: the manifest is JSON and not itself hashed, so an edited signature passes
+    :func:`verify_model_dir`): a cache entry is generated again, a packaged model is
+    replaced by a cache entry. Reported once, in one line."""
+    root = cache_dir() / "models" / derive_fingerprint()[:20]
+    cached = root / f"na{n_joints}"
+    if folder != cached:  # the packaged model: the cache entry, generated if needed
+        _report_once(str(folder), f"ignoring the packaged model: {problem}; regenerating")
+        if cached.exists():
+            try:
+                return cached, verify_model_dir(cached, n_joints)
+            except ArtifactError:
+                pass
+        return _generate(n_joints, root, progress, discard=True)
+    _report_once(str(folder), f"corrupted cache entry, rebuilding: {problem}")
+    return _generate(n_joints, root, progress, discard=True)
+
+
+def _generate(n_joints: int, root: Path, progress, *, discard: bool = False
+              ) -> tuple[Path, dict]:
     make_private_dir(root)
     folder = root / f"na{n_joints}"
     with held_lock(root / f"na{n_joints}.lock", f"generate the {n_joints}-joint model"):
+        if discard and folder.exists():  # verified, but its manifest lies: out of the way
+            old = root / f".na{n_joints}.old-{os.getpid()}-{os.urandom(4).hex()}"
+            os.replace(folder, old)
+            shutil.rmtree(old, ignore_errors=True)
         if folder.exists():  # another process finished while we waited
             try:
                 return folder, verify_model_dir(folder, n_joints)
@@ -414,7 +439,11 @@ def _generate(n_joints: int, root: Path, progress) -> tuple[Path, dict]:
             from snakecg_derive.render import render_model, write_model
         except ImportError as exc:  # pragma: no cover - broken install
             raise BuildError(f"cannot import the generator snakecg_derive: {exc}") from exc
-        rendered = render_model(n_joints, progress=progress,
-                                max_joints=max_joints())
-        write_model(rendered, root)
+        from .progress import stage
+
+        with stage(progress, f"generating the {n_joints}-joint model (once; kept in the "
+                   "cache)", f"generated the {n_joints}-joint model"):
+            rendered = render_model(n_joints, progress=progress,
+                                    max_joints=max_joints())
+            write_model(rendered, root)
         return folder, verify_model_dir(folder, n_joints)

@@ -2,9 +2,10 @@
 
 Exit status: 0 success, 2 usage or input errors, 1 failures (a build that failed, a file
 that cannot be written, ...). Errors are printed on one line of standard error, with a hint,
-never with a traceback; warnings likewise. Progress (derivation, compilation, sweeps) goes to
-standard error only when it is a terminal. The reference in docs/cli.md is generated from
-:func:`build_parser`.
+never with a traceback; warnings likewise. Progress goes to standard error: a line when a
+generation, a compilation or a stage of work starts and one when it ends, on every stream;
+bars only on a terminal; ``--quiet`` (or ``SNAKECG_PROGRESS=0``) silences it. The reference
+in docs/cli.md is generated from :func:`build_parser`.
 """
 
 from __future__ import annotations
@@ -40,6 +41,13 @@ class _Parser(argparse.ArgumentParser):
         sys.stderr.write(f"{self.prog}: error: {message} (see {self.prog} --help)\n")
         raise SystemExit(2)
 
+    def _get_values(self, action, arg_strings):
+        # `--opt=--`: argparse drops the '--' and hands the option an empty list, which no
+        # `type` ever sees (every sub-command's parser is this class, so this covers all)
+        if action.option_strings and "--" in arg_strings:
+            raise argparse.ArgumentError(action, "expected a value, got '--'")
+        return super()._get_values(action, arg_strings)
+
 
 def build_parser() -> argparse.ArgumentParser:
     """The parser of ``snakecg`` with every sub-command that is installed."""
@@ -62,6 +70,9 @@ def build_parser() -> argparse.ArgumentParser:
                 continue  # command not built yet
             raise
         mod.register(sub)
+        sub.choices[name.replace("_", "-")].add_argument(
+            "--quiet", action="store_true",
+            help="no progress on standard error (model builds, stages, bars)")
         examples.append(_first_example(sub.choices[name.replace("_", "-")]))
     p.epilog = ("examples:\n" + "".join(f"  {e}\n" for e in examples if e)
                 + "\nRun 'snakecg COMMAND --help' for a command's options and examples.\n"
@@ -85,14 +96,21 @@ def _format_warning(message, category, filename, lineno, line=None):
 
 
 def main(argv=None) -> int:
-    parser = build_parser()
-    args = parser.parse_args(argv)
+    try:
+        parser = build_parser()  # imports every sub-command: a Ctrl-C may land here too
+        args = parser.parse_args(argv)
+    except KeyboardInterrupt:
+        sys.stderr.write("snakecg: interrupted\n")
+        return 130
     if not getattr(args, "command", None):
         parser.print_help(sys.stderr)
         return 2
     command = f"snakecg {args.command}"
     hint = f"(see {command} --help)"
     saved_format = warnings.formatwarning
+    saved_progress = os.environ.get("SNAKECG_PROGRESS")
+    if getattr(args, "quiet", False):  # for this command, and the processes it starts
+        os.environ["SNAKECG_PROGRESS"] = "0"
     with warnings.catch_warnings():
         warnings.simplefilter("default")
         warnings.formatwarning = _format_warning
@@ -117,6 +135,10 @@ def main(argv=None) -> int:
             return 130
         finally:
             warnings.formatwarning = saved_format
+            if saved_progress is None:
+                os.environ.pop("SNAKECG_PROGRESS", None)
+            else:
+                os.environ["SNAKECG_PROGRESS"] = saved_progress
 
 
 def _one_line(exc: BaseException) -> str:

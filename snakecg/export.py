@@ -24,6 +24,7 @@ Every file is written atomically (a unique temporary name, then ``os.replace``).
 from __future__ import annotations
 
 import math
+import os
 import re
 from pathlib import Path
 
@@ -112,8 +113,11 @@ def c_layout(model) -> dict:
         else:
             continue
         constants.append(dict(name=k, vals=[_num(v) for v in vals], size=len(vals)))
-    constants.append(dict(name="wheel_bound", vals=[_num(v) for v in model.bounds],
-                          size=len(model.bounds)))
+    # row 0 is the contact (no friction bound: INFINITY); a link without a wheel (the
+    # contact link, or every link in the frictionless scenario) has none: 0
+    bounds = [b if i == 0 or model.present[i] else 0.0 for i, b in enumerate(model.bounds)]
+    constants.append(dict(name="wheel_bound", vals=[_num(v) for v in bounds],
+                          size=len(bounds)))
     r = model.robot
     return dict(
         prefix=prefix, upper=prefix.upper().rstrip("_"), stem=prefix.rstrip("_"),
@@ -163,9 +167,20 @@ def export_library(scene, out, *, source: str | None = None) -> list[Path]:
     """
     from .model import load
     from .robot import Scene
+    from .spatial import SpatialRobot
 
+    if isinstance(scene, SpatialRobot):  # a 3-D chain: its own layout (snakecg.spatial.export)
+        from .spatial.export import export_spatial_library
+
+        return export_spatial_library(scene, out, source=source)
     if not isinstance(scene, Scene):
         raise InputError(f"scene must be a snakecg.Scene, got {type(scene).__name__}")
+    if isinstance(out, bytes) or not isinstance(out, (str, os.PathLike)):
+        raise InputError(f"out must be a folder path (str or os.PathLike), got "
+                         f"{type(out).__name__}")
+    if not str(out).strip() or "\0" in str(out):
+        raise InputError(f"out must name a folder, got {str(out)!r} (an empty name would "
+                         "write into the working directory)")
     out = Path(out)
     if out.exists() and not out.is_dir():
         raise InputError(f"out {str(out)!r} exists and is not a directory")

@@ -23,7 +23,9 @@ from ._inputs import CHUNK_ROWS, as_batch, broadcast_batches, check_batch_memory
 from .core import STATUS_EXACT, Data
 from .errors import InputError
 from .rows import finish as finish_rows
-from .solver import HELD, check_input_range, default_max_iter, solve_active_set
+from .rows import reason_of
+from .solver import (HELD, check_input_range, check_position_range, default_max_iter,
+                     solve_active_set)
 
 __all__ = ["ForwardResult", "forward", "forward_one", "WHEEL_STATE_NAMES"]
 
@@ -131,6 +133,16 @@ class ForwardResult:
     def singular(self):
         r = self._raw
         return (r[self._cols.singular] if r.ndim == 1 else r[:, self._cols.singular]) != 0.0
+
+    @property
+    def reason(self):
+        """Why a ``singular`` sample is not an exact answer, in one line ('' for an exact
+        answer; an array of them for a batch). The results of a sample that cannot be
+        answered at all are NaN."""
+        r = self._raw
+        if r.ndim == 1:
+            return reason_of(r[self._cols.status])
+        return np.array([reason_of(c) for c in r[:, self._cols.status]], dtype=object)
 
     @property
     def sliding(self) -> np.ndarray:
@@ -262,6 +274,7 @@ def _validate(model, q, tau, extras: dict, max_iter, *, check_finite=True):
     batched = any(b for _, b in parts.values())
     if check_finite:
         check_input_range(parts)
+    check_position_range(parts)
     if ("q_obj" in parts) != ("rho" in parts):
         raise InputError("q_obj and rho go together: give both or neither")
     return {k: a for k, (a, _) in parts.items()}, n, batched
@@ -348,11 +361,12 @@ def _reference_into(model, raw: np.ndarray, idx: np.ndarray, parts: dict, max_it
         rows[:, cols.slices[k]] = o[k]
     for k in ("norm_lambda", "norm_a_obj", "norm_qdd", "gap"):
         rows[:, cols.index[k]] = o[k]
-    rows[:, cols.index["sr"]] = np.where(contact, o["sr"], 0.0)  # eq. 30
+    rows[:, cols.index["sr"]] = np.where(contact | np.isnan(o["sr"]), o["sr"], 0.0)  # eq. 30
     rows[:, cols.index["conditioning"]] = sol.conditioning
     rows[:, cols.singular] = sol.singular
     rows[:, cols.slices["state"]] = sol.state
-    rows[:, cols.status] = 1.0  # answered by the reference path
+    # answered by the reference path (1), or flagged: the code of the reason (rows.REASONS)
+    rows[:, cols.status] = np.maximum(sol.reason, 1)
     raw[idx] = rows
 
 

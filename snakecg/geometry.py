@@ -16,6 +16,11 @@ are batch axes.
 * :func:`self_distance`, :func:`self_intersecting`: closest approach of non-adjacent links.
 * :func:`object_penetration`: how deep a link segment enters the plate.
 * :func:`feasibility`: both checks for configurations of a :class:`~snakecg.SceneModel`.
+* :data:`INFEASIBLE_MARK` and :func:`infeasible_footnote`: how every table marks a value
+  attained by a shape that is not physically possible (Table 2, ``sweep --summary``).
+* :class:`ContactCheck`: what a simulation checks at every step, sample and event (every
+  link against the object, the contacting one included, and non-neighbouring links against
+  each other, as overlap depths), with its tolerance :func:`contact_tolerance`.
 """
 
 from __future__ import annotations
@@ -28,9 +33,18 @@ __all__ = [
     "OBJECT_SIDE",
     "SELF_CLEARANCE",
     "PENETRATION_TOLERANCE",
+    "CONTACT_TOLERANCE",
+    "ContactCheck",
     "Feasibility",
+    "chain_segments",
+    "contact_tolerance",
     "feasibility",
+    "infeasible_footnote",
+    "INFEASIBLE_MARK",
+    "link_radius",
     "link_segments",
+    "object_depth",
+    "segment_overlap",
     "object_penetration",
     "point_segment_distance",
     "segment_distance",
@@ -46,6 +60,19 @@ SELF_CLEARANCE = 0.01
 #: A link entering the plate by less than this [m] only touches it (the contacting link lies
 #: on the plate's face; rounding puts it a few ulp inside).
 PENETRATION_TOLERANCE = 1e-9
+#: The mark of a table entry attained by a shape that is not physically possible (Fig. 6
+#: frames such shapes in red).
+INFEASIBLE_MARK = "*"
+
+
+def infeasible_footnote(clearance: float = SELF_CLEARANCE) -> str:
+    """The footnote that explains :data:`INFEASIBLE_MARK` under a table."""
+    return (f"{INFEASIBLE_MARK} a shape that is not physically possible (links closer than "
+            f"{clearance:g} m or inside the object)")
+
+#: A simulation stops when two bodies overlap by more than this fraction of the longest link
+#: (:func:`contact_tolerance`: 1.5e-7 m for the paper's 0.15 m links).
+CONTACT_TOLERANCE = 1e-6
 
 
 def _cross(a, b):
@@ -196,3 +223,133 @@ def feasibility(model, q, *, clearance: float = SELF_CLEARANCE,
         return out
     return Feasibility(**{f: (np.asarray(getattr(out, f))[0] if f != "clearance" else clearance)
                           for f in out.__dataclass_fields__})
+
+
+# --- what a simulation checks --------------------------------------------------------------
+
+def contact_tolerance(robot) -> float:
+    """The overlap a simulation tolerates [m]: :data:`CONTACT_TOLERANCE` times the longest
+    link of ``robot`` (contacts held by the model sit within rounding of zero)."""
+    return CONTACT_TOLERANCE * float(max(robot.length))
+
+
+def link_radius(robot) -> float:
+    """The links' radius [m]: the robot's ``radius`` when it has one (capsules), else 0
+    (segments)."""
+    return float(getattr(robot, "radius", 0.0) or 0.0)
+
+
+def chain_segments(robot, q) -> tuple[np.ndarray, np.ndarray]:
+    """Rear and front ends ``(..., n_l, 2)`` of every link at the coordinates ``q``
+    ``(..., n_s)``: ``(x, y, theta)`` the COM and angle of link 1, then each joint's angle
+    relative to the link before (the chain of :meth:`SceneModel.link_poses`, in NumPy).
+    Link ``i``'s front end is link ``i + 1``'s rear end."""
+    q = np.asarray(q, float)
+    phi = np.concatenate([q[..., 2:3], q[..., 2:3] + np.cumsum(q[..., 3:], axis=-1)], axis=-1)
+    e = np.stack([np.cos(phi), np.sin(phi)], axis=-1)
+    length = np.asarray(robot.length, float)[:, None]
+    rear1 = q[..., :2] - float(robot.com[0]) * e[..., 0, :]
+    front = rear1[..., None, :] + np.cumsum(length * e, axis=-2)
+    rear = np.concatenate([rear1[..., None, :], front[..., :-1, :]], axis=-2)
+    return rear, front
+
+
+def segment_overlap(a0, a1, b0, b1, radius: float = 0.0) -> np.ndarray:
+    """How deep two links overlap [m]: ``2 radius - d``, 0 when apart (shape ``(...)``).
+
+    ``d`` is the distance between the segments ``a0``-``a1`` and ``b0``-``b1`` (arrays
+    ``(..., 2)``) or, when they cross, minus the least distance from an end of one to the
+    other (how far the nearest end must move back to uncross them): continuous in the ends,
+    0 at the instant they touch.
+    """
+    a0, a1, b0, b1 = (np.asarray(x, float) for x in (a0, a1, b0, b1))
+    da, db = a1 - a0, b1 - b0
+    crossing = ((_cross(db, a0 - b0) * _cross(db, a1 - b0) < 0)
+                & (_cross(da, b0 - a0) * _cross(da, b1 - a0) < 0))
+    ends = np.minimum(
+        np.minimum(point_segment_distance(a0, b0, b1), point_segment_distance(a1, b0, b1)),
+        np.minimum(point_segment_distance(b0, a0, a1), point_segment_distance(b1, a0, a1)))
+    return np.maximum(0.0, 2 * radius - np.where(crossing, -ends, ends))
+
+
+def _plate_edges(q_obj, half):
+    """The plate's corners ``(..., 4, 2)``, anticlockwise."""
+    q_obj = np.asarray(q_obj, float)
+    cs, sn = np.cos(q_obj[..., 2]), np.sin(q_obj[..., 2])
+    local = np.array([[-half, -half], [half, -half], [half, half], [-half, half]])
+    x = q_obj[..., None, 0] + cs[..., None] * local[:, 0] - sn[..., None] * local[:, 1]
+    y = q_obj[..., None, 1] + sn[..., None] * local[:, 0] + cs[..., None] * local[:, 1]
+    return np.stack([x, y], axis=-1)
+
+
+def object_depth(a, b, q_obj, half: float, radius: float = 0.0) -> np.ndarray:
+    """How deep a link enters the square plate of half side ``half`` at the pose ``q_obj``
+    ``(..., 3)`` [m], 0 when apart (shape ``(...)``): ``radius`` plus the depth of the
+    segment ``a``-``b``'s deepest point inside the plate (:func:`object_penetration`), or,
+    when the segment stays outside, ``radius`` minus its distance to the plate."""
+    inside = object_penetration(a, b, q_obj, 2 * half)
+    if radius <= 0:
+        return inside
+    corners = _plate_edges(q_obj, half)
+    dist = np.min([segment_distance(a, b, corners[..., k, :], corners[..., (k + 1) % 4, :])
+                   for k in range(4)], axis=0)
+    return np.maximum(0.0, np.where(inside > 0, radius + inside, radius - dist))
+
+
+class ContactCheck:
+    """The geometry a simulation checks: every link of ``robot`` against the object (the
+    square plate of half side ``half`` centred at its COM, turned with it) and every pair of
+    non-neighbouring links against each other (neighbours share a joint and always touch),
+    each as an overlap depth [m]. A link is a segment, or a capsule of the robot's
+    ``radius``. ``tolerance`` [m] (default :func:`contact_tolerance`): the largest overlap
+    allowed.
+
+    ``pairs``: the pairs checked, ``(i, None)`` link ``i`` (from 0) with the object, then
+    ``(i, j)`` links ``i < j - 1``.
+    """
+
+    def __init__(self, robot, half: float, *, tolerance: float | None = None,
+                 radius: float | None = None):
+        self.robot = robot
+        self.half = float(half)
+        self.radius = link_radius(robot) if radius is None else float(radius)
+        self.tolerance = contact_tolerance(robot) if tolerance is None else float(tolerance)
+        n_l = len(robot.length)
+        self.pairs = [(i, None) for i in range(n_l)] + [
+            (i, j) for i in range(n_l) for j in range(i + 2, n_l)]
+
+    @classmethod
+    def of_scene(cls, scene, **kw) -> ContactCheck:
+        """The check of a :class:`~snakecg.Scene`: its object is the square plate of side
+        ``2 object_distance`` (0.1 m by default), touched at the middle of a face."""
+        return cls(scene.robot, scene.object_distance, **kw)
+
+    def depths(self, q, q_obj) -> np.ndarray:
+        """The overlap of every pair at ``q`` ``(..., n_s)``, ``q_obj`` ``(..., 3)``:
+        ``(..., len(pairs))``."""
+        rear, front = chain_segments(self.robot, q)
+        q_obj = np.asarray(q_obj, float)
+        out = []
+        for i, j in self.pairs:
+            if j is None:
+                out.append(object_depth(rear[..., i, :], front[..., i, :], q_obj, self.half,
+                                        self.radius))
+            else:
+                out.append(segment_overlap(rear[..., i, :], front[..., i, :], rear[..., j, :],
+                                           front[..., j, :], self.radius))
+        return np.stack(out, axis=-1)
+
+    def deepest(self, q, q_obj) -> tuple[np.ndarray, np.ndarray]:
+        """The largest overlap at each state and the index of its pair (the first of equals)."""
+        d = self.depths(q, q_obj)
+        k = np.argmax(d, axis=-1)
+        return np.take_along_axis(d, k[..., None], axis=-1)[..., 0], k
+
+    def kind(self, pair: int) -> str:
+        """``"penetration"`` (a link and the object) or ``"self_contact"`` (two links)."""
+        return "penetration" if self.pairs[pair][1] is None else "self_contact"
+
+    def bodies(self, pair: int) -> tuple:
+        """The pair's bodies: link numbers (from 1, tail first), or ``"object"``."""
+        i, j = self.pairs[pair]
+        return (i + 1, "object" if j is None else j + 1)

@@ -23,7 +23,7 @@ from ._inputs import (
 from .core import Data, Layout
 from .errors import InputError
 from .forward import ForwardResult, _Columns, forward, forward_one
-from .native import load_backend
+from .native import ManifestMismatch, load_backend
 from .robot import Robot, Scene
 from .solver import (
     ABSENT,
@@ -53,31 +53,44 @@ def _backend(n_joints: int, prefer: str, progress=None):
     key = (n_joints, prefer)
     if key not in _BACKENDS:
         folder, manifest = artifacts.model_dir(n_joints, progress=progress)
-        backend = load_backend(folder, manifest, prefer=prefer, progress=progress)
+        try:
+            backend = load_backend(folder, manifest, prefer=prefer, progress=progress)
+        except ManifestMismatch as exc:  # an edited manifest: the model generated again
+            folder, manifest = artifacts.regenerate(n_joints, folder, exc, progress=progress)
+            backend = load_backend(folder, manifest, prefer=prefer, progress=progress)
         _BACKENDS[key] = (backend, manifest, folder)
     return _BACKENDS[key]
 
 
 def load(obj, *, backend: str = "compiled", progress=None):
-    """Load the model of a :class:`~snakecg.Robot` or a :class:`~snakecg.Scene`.
+    """Load the model of a :class:`~snakecg.Robot`, a :class:`~snakecg.Scene` or a
+    :class:`~snakecg.SpatialRobot` (a :class:`~snakecg.spatial.model.SpatialModel`).
 
     The generated model for the joint count is taken from the package or the user cache
     (generated once if missing), compiled once into a cached shared library and shared by
     every robot with that joint count. ``backend="casadi"`` evaluates with CasADi's
-    in-process virtual machine instead of the compiled C. ``progress``: ``None`` reports
-    the generation and compilation steps on a terminal or in a Jupyter notebook (quiet
-    elsewhere, see :mod:`snakecg.progress`), ``False`` never, or a callable taking each
-    step's message.
+    in-process virtual machine instead of the compiled C. ``progress``: ``None`` prints a
+    line on standard error when a generation or compilation starts and one when it ends, with
+    its duration, whatever standard error is (a terminal, a pipe, a log, a notebook; silenced
+    by ``SNAKECG_PROGRESS=0``, see :mod:`snakecg.progress`), ``False`` never, or a callable
+    taking each step's message.
     """
     _check_load_args(backend, progress)
-    from .progress import resolve  # None: model builds reported on a terminal or notebook
+    from .progress import resolve  # None: model builds reported on standard error
 
     progress = resolve(progress)
     if isinstance(obj, Scene):
         return SceneModel(obj, backend=backend, progress=progress)
     if isinstance(obj, Robot):
         return RobotModel(obj, backend=backend, progress=progress)
-    raise InputError(f"load() takes a snakecg.Robot or snakecg.Scene, got {type(obj).__name__}")
+    from .spatial import SpatialRobot
+
+    if isinstance(obj, SpatialRobot):  # a 3-D chain: snakecg.spatial's own model
+        from .spatial.model import SpatialModel
+
+        return SpatialModel(obj, backend=backend, progress=progress)
+    raise InputError(f"load() takes a snakecg.Robot, snakecg.Scene or snakecg.SpatialRobot, "
+                     f"got {type(obj).__name__}")
 
 
 def _check_load_args(backend, progress) -> None:
@@ -133,11 +146,22 @@ class RobotModel:
         """Batch argument: 1-D (broadcast) when one sample serves all, else ``(n, size)``."""
         return arr[0] if arr.shape[0] == 1 and n >= 1 else arr
 
+    def _check_memory(self, method: str, n: int, fnames, extra: int = 0) -> None:
+        """Refuse a batch of ``n`` rows whose results would exceed the memory limit
+        (``SNAKECG_MAX_MEMORY``), before any work: per row, the outputs of the generated
+        functions ``fnames`` twice (the driver's buffer and the arrays returned) and
+        ``extra`` more doubles."""
+        if n > 1:
+            sig = self.backend.signatures
+            per_row = 16 * sum(r * c for f in fnames for r, c in sig[f].out_shapes)
+            check_batch_memory(method, n, per_row + 8 * extra, what="results")
+
     # public ----------------------------------------------------------------------------
     def mass_matrix(self, q) -> np.ndarray:
         """Inertia matrix ``M_s(q)`` of eq. (4): ``(n_s, n_s)``, or ``(N, n_s, n_s)``."""
         qa, batched = self._q(q)
         n = qa.shape[0]
+        self._check_memory("mass_matrix", n, ["mass_matrix"])
         M = self._named("mass_matrix", n, q=self._arg(qa, n), K=self.parameters)["M"]
         return M if batched else M[0]
 
@@ -148,6 +172,7 @@ class RobotModel:
         """
         qa, batched = self._q(q)
         n = qa.shape[0]
+        self._check_memory("link_jacobians", n, ["link_jacobians"])
         J = self._named("link_jacobians", n, q=self._arg(qa, n), K=self.parameters)["J"]
         J = J.reshape(n, self.n_links, 3, self.n_coordinates)
         return J if batched else J[0]
@@ -156,6 +181,7 @@ class RobotModel:
         """``(x_i, y_i, phi_i)`` of every link COM: ``(n_l, 3)``, or ``(N, n_l, 3)``."""
         qa, batched = self._q(q)
         n = qa.shape[0]
+        self._check_memory("link_poses", n, ["link_poses"], extra=3 * self.n_links)
         P = self._named("link_poses", n, q=self._arg(qa, n), K=self.parameters)["poses"]
         P = np.ascontiguousarray(P.transpose(0, 2, 1))
         return P if batched else P[0]
@@ -165,6 +191,7 @@ class RobotModel:
         qa, bq = self._q(q)
         va, bv = self._q(v, "v")
         n = broadcast_batches(q=(qa, bq), v=(va, bv))
+        self._check_memory("bias_forces", n, ["bias_forces"], extra=2 * self.n_coordinates)
         h = self._named("bias_forces", n, q=self._arg(qa, n) if not bq else qa,
                         v=self._arg(va, n) if not bv else va, K=self.parameters)["h"]
         h = h[:, :, 0]
@@ -172,6 +199,8 @@ class RobotModel:
 
     def com(self, q) -> np.ndarray:
         """The robot's centre of mass ``(x, y)``: ``(2,)`` or ``(N, 2)``."""
+        qa, _ = self._q(q)
+        self._check_memory("com", qa.shape[0], ["link_poses"], extra=3 * self.n_links + 4)
         P = self.link_poses(q)
         m = np.asarray(self.robot.mass)
         return np.einsum("...ik,i->...k", P[..., :2], m) / m.sum()
@@ -282,6 +311,7 @@ class SceneModel(RobotModel):
         batched)."""
         qa, batched = self._q(q)
         n = qa.shape[0]
+        self._check_memory("place_object", n, ["place_object"])
         q_obj, rho, P = self._place(qa, n)
         if batched:
             return q_obj, rho, P
@@ -365,6 +395,7 @@ class SceneModel(RobotModel):
                              f"{self.n_links} of them, got {wheel_state!r:.60}")
         qa, batched = self._q(q)
         n = qa.shape[0]
+        self._check_memory("maps", n, ["place_object", "interaction_maps"])
         state = np.where(self.present, HELD, ABSENT).astype(np.int8)
         if not contact:
             state[0] = LOST
@@ -522,6 +553,9 @@ class SceneModel(RobotModel):
         :func:`snakecg.analysis.com_polar`."""
         from .analysis import com_polar
 
+        qa, _ = self._q(q)
+        self._check_memory("com_polar", qa.shape[0], ["link_poses", "place_object"],
+                           extra=3 * self.n_links + 12)
         return com_polar(self, q)
 
     # optimal torques (snakecg.optimize) --------------------------------------------------------
@@ -531,8 +565,9 @@ class SceneModel(RobotModel):
         ``objective``: ``"max_sr"`` (largest slippage ratio, eq. 30), ``"least_slip_push"``
         (a requested object acceleration with the least ``||qdd_s||^2``, eq. 26) or
         ``"strongest_push"`` (largest object acceleration along a direction with no wheel
-        sliding). Keywords: ``tau_max``, ``radius`` (input region: box and/or ellipsoid of
-        eq. 31, default ``radius=1``), ``direction``, ``a_min``, ``a_obj``, ``allow_slide``.
+        sliding). Keywords: ``tau_max`` (default the robot's ``effort_limits``), ``radius``
+        (input region: box and/or ellipsoid of eq. 31, default ``radius=1`` without a box),
+        ``direction``, ``a_min``, ``a_obj``, ``allow_slide``.
         Returns an :class:`~snakecg.optimize.OptimizeResult` (``tau``, ``status`` with
         ``reason``, ``analysis`` = the forward result at ``tau``); see
         :func:`snakecg.optimize.optimize` and docs/optimize.md.
@@ -543,6 +578,10 @@ class SceneModel(RobotModel):
             from .optimize.arguments import screen
 
             _LAZY["optimize"], _LAZY["screen"] = run, screen
+        if not (type(q) is np.ndarray and q.ndim == 1):  # a batch: its memory first
+            qa, _ = self._q(q)
+            self._check_memory("optimize", qa.shape[0], ["place_object", "interaction_maps"],
+                               extra=self.columns.width + 4 * self.n_joints)
         return run(self, q, objective=objective, **_LAZY["screen"](kwargs))
 
     # simulation (snakecg.simulate) -------------------------------------------------------------

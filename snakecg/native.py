@@ -22,6 +22,7 @@ import os
 import shutil
 import subprocess
 import tempfile
+import time
 import warnings
 from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
@@ -61,9 +62,10 @@ CORE_SOURCES = tuple(CORE_SOURCE.with_name(name)
 #: The header they share (work arrays, contact_system, the held rows' forces).
 CORE_HEADER = CORE_SOURCE.with_name("common.h")
 #: Every header of the runtime core (linalg.h: the small dense linear algebra; qp.h: the dense
-#: QP block; optimal.h: the optimal-torque queries' types and prototypes).
+#: QP block; optimal.h: the optimal-torque queries' types and prototypes; geometry.h: the
+#: simulation's contact check).
 CORE_HEADERS = (CORE_HEADER, *(CORE_SOURCE.with_name(name)
-                               for name in ("linalg.h", "qp.h", "optimal.h")))
+                               for name in ("linalg.h", "qp.h", "optimal.h", "geometry.h")))
 #: Up to this batch size the outputs of a compiled call share one buffer (see CompiledBackend).
 _SMALL_BATCH = 64
 
@@ -174,8 +176,11 @@ def compile_model(folder: Path, manifest: dict, *, progress=None, rebuild: bool 
         sources = sorted(n for n in manifest["files"] if n.endswith(".c"))
         large = {f"c/{f['name']}.c" for f in manifest["functions"] if f.get("large")}
         tmp = Path(tempfile.mkdtemp(prefix="build-", dir=out_dir))
+        what = f"the {manifest['n_joints']}-joint model"
+        t_start = time.perf_counter()
         try:
-            step(f"compiling {len(sources)} C files with {Path(cc).name} -O2")
+            step(f"compiling {what}: {len(sources)} C files with {Path(cc).name} -O2 (once; "
+                 "the library is cached)")
 
             def one(name: str) -> Path:
                 obj = tmp / (Path(name).stem + ".o")
@@ -219,6 +224,10 @@ def compile_model(folder: Path, manifest: dict, *, progress=None, rebuild: bool 
             tmp_stamp = tmp / "stamp"
             tmp_stamp.write_text(digest)
             os.replace(tmp_stamp, stamp)
+            step(f"compiled {what} in {time.perf_counter() - t_start:.1f} s")
+        except BaseException:
+            step(f"compiling {what}: failed after {time.perf_counter() - t_start:.1f} s")
+            raise
         finally:
             shutil.rmtree(tmp, ignore_errors=True)
     return lib
@@ -268,6 +277,12 @@ def _signature_problems(sig: dict, n_in: int, n_out: int, size_in, size_out) -> 
     return out
 
 
+class ManifestMismatch(ArtifactError):
+    """The manifest's function signatures disagree with its own hash-verified code (the
+    manifest was edited or damaged): the model folder is regenerated
+    (:func:`snakecg.artifacts.regenerate`)."""
+
+
 def _check_signatures(where, manifest: dict, problems: list[str]) -> None:
     """The buffers are sized from the manifest: refuse code whose functions have other shapes
     (a manifest edited or damaged without breaking its JSON would otherwise make the compiled
@@ -275,7 +290,7 @@ def _check_signatures(where, manifest: dict, problems: list[str]) -> None:
     if problems:
         shown = "; ".join(problems[:3]) + (f" (and {len(problems) - 3} more)"
                                            if len(problems) > 3 else "")
-        raise ArtifactError(
+        raise ManifestMismatch(
             f"{where}: the generated functions do not match manifest.json of the model for "
             f"joints={manifest.get('n_joints')}: {shown}. The model folder is damaged: "
             "reinstall snakecg, or delete the snakecg cache folder (SNAKECG_CACHE_DIR)"
@@ -548,12 +563,17 @@ def load_backend(folder: Path, manifest: dict, *, prefer: str = "compiled", prog
             try:
                 return CompiledBackend(lib, manifest)
             except (OSError, AttributeError, ArtifactError) as exc:
+                # rebuilt from the verified C; reported once it loads (a library rebuilt
+                # that still disagrees shows the manifest is wrong: ManifestMismatch)
+                backend = _load_fresh(compile_model(folder, manifest, progress=progress,
+                                                    rebuild=True), manifest)
                 _report_once(
                     f"{lib}:foreign",
                     f"snakecg: the cached library {lib} does not belong to this model "
                     f"({_one_line(exc)}); rebuilding it")
-                return _load_fresh(compile_model(folder, manifest, progress=progress,
-                                                 rebuild=True), manifest)
+                return backend
+        except ManifestMismatch:  # the library built from the verified C disagrees too:
+            raise                 # the manifest is wrong, the model folder is regenerated
         except BuildError as exc:
             _report_once(
                 f"{manifest['n_joints']}:{exc}",

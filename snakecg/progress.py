@@ -1,12 +1,17 @@
-"""Progress display for long work: shown on a terminal and in a Jupyter notebook, quiet
-otherwise.
+"""Progress display for long work, on standard error.
 
-``SNAKECG_PROGRESS=1`` forces it on and ``SNAKECG_PROGRESS=0`` off, so pipes, files and CI
-logs stay clean. Steps (derivation, compilation) print one line each through
-:func:`progress_reporter`; sweeps use tqdm through :func:`progress_bar` (in a notebook,
-tqdm's widget when ipywidgets is installed, else its text bar); long batches of
-``model.extremes`` go in chunks through :func:`in_chunks`. ``snakecg.load`` reports model
-builds by default (:func:`resolve`).
+Steps (generating a model, compiling it, the stages of ``snakecg reproduce``) print one line
+when they start and one when they end, with the elapsed time, through
+:func:`progress_reporter` and :func:`stage`: on every stream, a terminal, a pipe, a log file
+or a notebook's captured output alike, because a compile of tens of seconds must not look like
+a hang anywhere. They are quiet only when asked: ``progress=False``, ``--quiet`` on the
+command line, or ``SNAKECG_PROGRESS=0``.
+
+Bars that redraw themselves (sweeps use tqdm through :func:`progress_bar`; long batches of
+``model.extremes`` go in chunks through :func:`in_chunks`) are drawn on a terminal or in a
+Jupyter notebook only (tqdm's widget when ipywidgets is installed, else its text bar);
+``SNAKECG_PROGRESS=1`` forces them on. ``snakecg.load`` reports model builds by default
+(:func:`resolve`).
 """
 
 from __future__ import annotations
@@ -14,9 +19,16 @@ from __future__ import annotations
 import os
 import sys
 import time
+from contextlib import contextmanager
 
 __all__ = ["progress_enabled", "progress_reporter", "progress_bar", "in_notebook", "resolve",
-           "in_chunks"]
+           "in_chunks", "quiet", "stage"]
+
+
+def quiet() -> bool:
+    """Whether progress was silenced for this process (``SNAKECG_PROGRESS=0``, which the
+    command line's ``--quiet`` sets for the command's run)."""
+    return os.environ.get("SNAKECG_PROGRESS", "").strip() == "0"
 
 
 def in_notebook() -> bool:
@@ -36,8 +48,9 @@ def in_notebook() -> bool:
 
 
 def progress_enabled(stream=None) -> bool:
-    """Whether to show progress on ``stream`` (default stderr): a terminal, unless
-    ``SNAKECG_PROGRESS`` says otherwise (``1`` on, ``0`` off)."""
+    """Whether to draw a progress *bar* on ``stream`` (default stderr): a terminal or a
+    notebook, unless ``SNAKECG_PROGRESS`` says otherwise (``1`` on, ``0`` off). Step lines
+    (:func:`progress_reporter`) go to every stream."""
     forced = os.environ.get("SNAKECG_PROGRESS", "").strip()
     if forced in ("0", "1"):
         return forced == "1"
@@ -50,19 +63,42 @@ def progress_enabled(stream=None) -> bool:
     return stream is sys.stderr and in_notebook()
 
 
-def progress_reporter(stream=None):
+def progress_reporter(stream=None, *, prefix: str = "snakecg"):
     """A ``progress(message)`` callable for the library's long steps (derivation, rendering,
-    compilation), printing ``  [  3.2 s] message`` lines; ``None`` when progress is off."""
-    stream = sys.stderr if stream is None else stream
-    if not progress_enabled(stream):
+    compilation, the stages of a reproduction), printing ``snakecg [   3.2 s] message`` lines
+    (seconds since the reporter was made) on ``stream`` (default stderr), whatever the
+    stream is; ``None`` when progress is silenced (:func:`quiet`)."""
+    if quiet():
         return None
     t0 = time.perf_counter()
 
     def step(message: str) -> None:
-        stream.write(f"  [{time.perf_counter() - t0:6.1f} s] {message}\n")
-        stream.flush()
+        out = sys.stderr if stream is None else stream  # sys.stderr as it is now (pytest)
+        try:
+            out.write(f"{prefix} [{time.perf_counter() - t0:6.1f} s] {message}\n")
+            out.flush()
+        except (OSError, ValueError):  # a closed or broken stream: progress is not worth dying
+            pass
 
     return step
+
+
+@contextmanager
+def stage(progress, start: str, done: str):
+    """One line ``start`` when the block begins and one ``done in 12.3 s`` when it ends (or
+    ``start: failed after 12.3 s`` when it raises) through the ``progress`` callable; nothing
+    when ``progress`` is None."""
+    if progress is None:
+        yield
+        return
+    t0 = time.perf_counter()
+    progress(start)
+    try:
+        yield
+    except BaseException:
+        progress(f"{start}: failed after {time.perf_counter() - t0:.1f} s")
+        raise
+    progress(f"{done} in {time.perf_counter() - t0:.1f} s")
 
 
 def progress_bar(total: int, desc: str, *, enabled: bool = True, stream=None):
@@ -84,8 +120,9 @@ def progress_bar(total: int, desc: str, *, enabled: bool = True, stream=None):
 
 
 def resolve(progress):
-    """The ``progress`` argument of ``snakecg.load``: ``None`` (default) reports on a terminal
-    or in a notebook (:func:`progress_reporter`), ``False`` never, a callable is used."""
+    """The ``progress`` argument of ``snakecg.load``: ``None`` (default) reports on standard
+    error, whatever it is (:func:`progress_reporter`; silenced by ``SNAKECG_PROGRESS=0``),
+    ``False`` never, a callable is used."""
     if progress is None:
         return progress_reporter()
     if progress is False:

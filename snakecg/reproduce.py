@@ -16,8 +16,6 @@ Every choice the paper leaves open is a named option here with the default docum
 
 from __future__ import annotations
 
-import csv
-import io
 import json
 import os
 import time
@@ -31,28 +29,14 @@ from ._files import write_text
 from .analysis import com_polar, joint_grid
 from .errors import InputError
 from .figures import paper as figures
-from .geometry import SELF_CLEARANCE, feasibility, link_segments
-from .progress import progress_bar
+from .geometry import INFEASIBLE_MARK, SELF_CLEARANCE, feasibility, link_segments
+from .progress import progress_reporter, stage
 from .robot import SCENARIOS, Robot, Scene
+from .table2 import PAPER_TABLE2, TABLE2_ROWS, table2, table2_index, table2_text
 
-__all__ = ["PAPER_TABLE2", "ReproduceOptions", "reproduce", "table2", "TABLE2_ROWS"]
+__all__ = ["PAPER_TABLE2", "ReproduceOptions", "reproduce", "table2", "table2_index",
+           "table2_text", "TABLE2_ROWS"]
 
-#: Table 2 of Reyes & Ma 2017 (case study 2): scenario 1, 2, 3.
-PAPER_TABLE2 = {
-    "worst_norm_a_obj": (0.000763215, 0.00107454, 0.00107454),
-    "best_norm_a_obj": (0.00785302, 0.00861168, 0.00861168),
-    "worst_sr": (0.00138484, 0.00185713, 0.00185098),
-    "best_sr": (0.0267348, 0.988638, 0.988643),
-}
-TABLE2_ROWS = {
-    "worst_norm_a_obj": "Worst ||a_obj||^2",
-    "best_norm_a_obj": "Best ||a_obj||^2",
-    "worst_sr": "Worst sr",
-    "best_sr": "Best sr",
-}
-SCENARIO_LABEL = {"frictionless": "Scenario 1 (frictionless)",
-                  "wheels": "Scenario 2 (wheels, mu = 0.1)",
-                  "ideal_wheels": "Scenario 3 (ideal wheels)"}
 #: Maxima the figures and Table 2 use; with bounded wheels only these are refined by the local
 #: search (the maximum of norm_qdd, in the CSV files, is the best of the sampled candidates).
 REFINED = ("norm_a_obj", "sr", "norm_lambda")
@@ -108,10 +92,20 @@ def check_options(opts: ReproduceOptions) -> None:
 @dataclass
 class ReproduceReport:
     table2: dict = field(default_factory=dict)
+    #: Per entry of ``table2``: whether its shape is physically possible; and the entries over
+    #: the physically possible shapes only.
+    table2_shape_feasible: dict = field(default_factory=dict)
+    table2_feasible_only: dict = field(default_factory=dict)
     files: list = field(default_factory=list)
     feasible_count: int | None = None
     grid_count: int | None = None
     timings: dict = field(default_factory=dict)
+    #: Prints a line per stage on standard error (None: quiet, ``progress=False``).
+    progress: object = field(default=None, repr=False)
+
+    def say(self, message: str) -> None:
+        if self.progress is not None:
+            self.progress(message)
 
 
 def _scene(joints: int, scenario: str, kappa: float, opts: ReproduceOptions) -> Scene:
@@ -171,14 +165,14 @@ def _infeasible_reason(f, k=None) -> str:
 def case_study_1(opts: ReproduceOptions, report: ReproduceReport, load, drawer=None):
     out = opts.out
     q = np.array([0.0, 0.0, 0.0, *np.deg2rad(opts.fig4_joints_deg)])
-    bar = progress_bar(len(opts.kappas_case1) * 3 + 3, "case study 1", enabled=opts.progress)
     for kappa in opts.kappas_case1:
         panels = []
         for scenario in SCENARIOS:
             model = load(_scene(2, scenario, kappa, opts))
             t1, t2, grids, N = torque_plane(model, q, opts.torque_grid)
             panels.append(figures.Fig4Panel(scenario, t1, t2, grids, _ellipse(N)))
-            bar.update()
+        report.say(f"  Fig. 4 torque-plane maps, kappa = {kappa:g} ({opts.torque_grid}^2 "
+                   "torques, 3 scenarios): done")
         why = _infeasible_reason(feasibility(model, q, clearance=opts.clearance))
         with _timed(report, "figures"):
             drawer.submit("figure4", panels=panels, kappa=kappa,
@@ -192,8 +186,7 @@ def case_study_1(opts: ReproduceOptions, report: ReproduceReport, load, drawer=N
         r, a = com_polar(model, Q)
         _write_text(out / f"case1_sweep_{scenario}.csv",
                     _extremes_csv(Q, r, a, ex, model.n_joints), report)
-        bar.update()
-    bar.close()
+        report.say(f"  extremes of the {len(Q):,} configurations, {scenario}: done")
 
 
 def _extremes_csv(Q, radius, angle, ex, na) -> str:
@@ -218,7 +211,6 @@ def _extremes_csv(Q, radius, angle, ex, na) -> str:
 def case_study_2(opts: ReproduceOptions, report: ReproduceReport, load):
     Q = joint_grid(3, opts.grid_lo_deg, opts.grid_hi_deg, opts.grid_step_deg)
     results = {}
-    bar = progress_bar(3, "case study 2 (21,952 configurations)", enabled=opts.progress)
     for scenario in SCENARIOS:
         model = load(_scene(3, scenario, opts.kappa_case2, opts))
         chunks = []
@@ -231,8 +223,7 @@ def case_study_2(opts: ReproduceOptions, report: ReproduceReport, load):
         results[scenario] = (model, ex, radius, angle)
         _write_text(opts.out / f"case2_sweep_{scenario}.csv",
                     _extremes_csv(Q, radius, angle, ex, 3), report)
-        bar.update()
-    bar.close()
+        report.say(f"  extremes of the {len(Q):,} configurations, {scenario}: done")
     return Q, results
 
 
@@ -245,56 +236,6 @@ def _concat_extremes(chunks):
         for k in getattr(chunks[0], attr):
             d[k] = np.concatenate([getattr(c, attr)[k] for c in chunks], axis=0)
     return out
-
-
-def table2(results, mask=None) -> dict:
-    """Table 2 from per-configuration maxima: worst = min over configurations, best = max
-    (over the configurations where ``mask`` is true, when given)."""
-    idx = table2_index(results, mask)
-    return {key: tuple(float(results[s][1].max[key.split("_", 1)[1]][idx[key][j]])
-                       for j, s in enumerate(SCENARIOS))
-            for key in PAPER_TABLE2}
-
-
-def table2_index(results, mask=None) -> dict:
-    """Index of the configuration attaining each Table 2 entry, per scenario (among those
-    where ``mask`` is true, when given)."""
-    idx = {}
-    for key in PAPER_TABLE2:
-        kind, metric = key.split("_", 1)
-        per = []
-        for s in SCENARIOS:
-            v = np.asarray(results[s][1].max[metric], float)
-            if mask is not None:
-                v = np.where(mask, v, np.inf if kind == "worst" else -np.inf)
-            per.append(int(np.argmin(v) if kind == "worst" else np.argmax(v)))
-        idx[key] = tuple(per)
-    return idx
-
-
-def table2_text(t: dict) -> tuple[str, str, str]:
-    """(terminal text, Markdown, CSV) of Table 2 beside the paper's values."""
-    md = ["| Concept | " + " | ".join(
-        f"{SCENARIO_LABEL[s]}: snakecg | paper | rel. diff." for s in SCENARIOS) + " |",
-          "|---|" + "---|---|---|" * 3]
-    rows_csv = [["concept", "scenario", "snakecg", "paper", "relative_difference"]]
-    term = [f"{'Table 2':<20}" + "".join(f"{s:>36}" for s in SCENARIOS),
-            f"{'':<20}" + "".join(f"{'snakecg':>12}{'paper':>12}{'rel.diff':>12}"
-                                  for _ in SCENARIOS)]
-    for key, label in TABLE2_ROWS.items():
-        cells, tline = [], f"{label:<20}"
-        for j, s in enumerate(SCENARIOS):
-            ours, paper = t[key][j], PAPER_TABLE2[key][j]
-            rel = (ours - paper) / paper
-            cells.append(f"{ours:.6g} | {paper:.6g} | {rel:+.1%}")
-            tline += f"{ours:>12.6g}{paper:>12.6g}{rel:>+12.1%}"
-            rows_csv.append([key, s, f"{ours:.9g}", f"{paper:.9g}", f"{rel:.6f}"])
-        md_label = label.replace("||", "‖").replace("^2", "²")  # no "|" inside a table cell
-        md.append(f"| {md_label} | " + " | ".join(cells) + " |")
-        term.append(tline)
-    buf = io.StringIO()
-    csv.writer(buf, lineterminator="\n").writerows(rows_csv)
-    return "\n".join(term), "\n".join(md) + "\n", buf.getvalue()
 
 
 def _formats_per_task(opts, drawer):
@@ -358,11 +299,12 @@ def figure6(Q, results, opts, drawer, feas):
         rows[s] = []
         for k, (kind, metric, ci) in enumerate(picks):
             deg = ", ".join(f"{d:.0f}°" for d in np.rad2deg(Q[ci, 3:]))
+            why = _infeasible_reason(feas, ci)
             rows[s].append(figures.Shape(
                 rear[k], front[k], q_obj[k], contact[k], com[k],
-                title=f"{kind} {figures.METRIC_LABEL[metric]} = {ex.max[metric][ci]:.4g}\n"
-                      f"q = ({deg})",
-                infeasible=_infeasible_reason(feas, ci)))
+                title=f"{kind} {figures.METRIC_LABEL[metric]} = {ex.max[metric][ci]:.4g}"
+                      f"{INFEASIBLE_MARK if why else ''}\nq = ({deg})",
+                infeasible=why))
     for formats in _formats_per_task(opts, drawer):
         drawer.submit("figure6", rows=rows, stem=opts.out / "fig6_configurations",
                       formats=formats, feasible_only=opts.feasible_only)
@@ -394,6 +336,11 @@ def alternative_readings(opts: ReproduceOptions | None = None, *, load=None) -> 
         ("only shapes whose links neither cross nor enter the object (clearance 0)", {},
          "feasible"),
         ("max over 12 sampled torque directions instead of the exact max", {}, "sampled"),
+        ("max over a box grid of 15 torques per axis within the ellipsoid", {}, "grid15"),
+        ("max over a box grid of 7 torques per axis over 1.25 x the ellipsoid's extent", {},
+         "grid7"),
+        ("input region tau^T (joint block of M_s)^-1 tau <= 1, exact max", {}, "joint_block"),
+        ("input region tau^T tau <= 1, exact max", {}, "sphere"),
     ]
     lines = ["| reading | S1 worst a_obj | S1 best a_obj | S1 worst sr | S1 best sr | "
              "S3 worst a_obj | S3 best a_obj | S3 worst sr | S3 best sr |",
@@ -421,6 +368,8 @@ def alternative_readings(opts: ReproduceOptions | None = None, *, load=None) -> 
                 res = model.forward(np.repeat(Q, 12, axis=0), taus.reshape(-1, 3))
                 a = res.norm_a_obj.reshape(-1, 12).max(axis=1)
                 srv = res.sr.reshape(-1, 12).max(axis=1)
+            elif mode in ("grid15", "grid7", "joint_block", "sphere"):
+                a, srv = _other_maximum(model, Q, mode)
             else:
                 ex = model.extremes(Q)
                 a, srv = ex.max["norm_a_obj"], ex.max["sr"]
@@ -428,6 +377,42 @@ def alternative_readings(opts: ReproduceOptions | None = None, *, load=None) -> 
             cells += [f"{a.min():.4g}", f"{a.max():.4g}", f"{srv.min():.4g}", f"{srv.max():.4g}"]
         lines.append("| " + " | ".join(cells) + " |")
     return "\n".join(lines) + "\n"
+
+
+def _other_maximum(model, Q, mode):
+    """Per-configuration maxima of ``norm_a_obj`` and ``sr`` (every row held: scenarios 1 and
+    3) under another reading of eq. (31) or of the maximum: a box grid of torques
+    (``grid15``: 15 per axis over the ellipsoid's extent; ``grid7``: 7 per axis over 1.25
+    times it), keeping those inside the ellipsoid that push (lam_c >= 0); or the exact maximum
+    over ``tau^T W tau <= 1`` with ``W`` the inverse of M_s's joint block (``joint_block``)
+    or the identity (``sphere``). sr does not depend on the region (degree 0 in tau)."""
+    import itertools
+
+    maps = model.maps(Q)
+    Om, Xi, N = maps["omega_tau"], maps["xi_tau"], maps["input_metric"]
+    if mode in ("joint_block", "sphere"):
+        W = (np.linalg.inv(model.mass_matrix(Q)[:, 3:, 3:]) if mode == "joint_block"
+             else np.broadcast_to(np.eye(Om.shape[-1]), Om.shape))
+        Li = np.linalg.inv(np.linalg.cholesky(W))
+        a = np.linalg.eigvalsh(Li @ Om @ np.swapaxes(Li, -1, -2))[:, -1]
+        return a, model.extremes(Q).max["sr"]
+    k, margin = (15, 1.0) if mode == "grid15" else (7, 1.25)
+    u = np.linspace(-1.0, 1.0, k)
+    U = np.array(list(itertools.product(u, repeat=Om.shape[-1])))
+    half = margin * np.sqrt(np.einsum("nii->ni", np.linalg.inv(N)))
+    lam_c = maps["lam_from_tau"][:, 0, :]
+    a, srv = np.empty(len(Q)), np.empty(len(Q))
+    for lo in range(0, len(Q), 512):  # bounded memory: 512 configurations at a time
+        sl = slice(lo, lo + 512)
+        T = half[sl, None, :] * U[None]
+        quad = lambda M: np.einsum("nki,nij,nkj->nk", T, M[sl], T)  # noqa: E731
+        ok = (quad(N) <= 1 + 1e-12) & (np.einsum("nki,ni->nk", T, lam_c[sl]) >= 0)
+        va, vq = quad(Om), quad(Xi)
+        with np.errstate(invalid="ignore", divide="ignore"):
+            vs = np.where(va + vq > 0, va / (va + vq), 0.0)
+        a[sl] = np.where(ok, va, -np.inf).max(axis=1)
+        srv[sl] = np.where(ok, vs, -np.inf).max(axis=1)
+    return a, srv
 
 
 def reproduce(opts: ReproduceOptions | None = None, *, load=None, echo=print) -> ReproduceReport:
@@ -442,10 +427,13 @@ def reproduce(opts: ReproduceOptions | None = None, *, load=None, echo=print) ->
         raise InputError(f"--out {str(out)!r} exists and is not a directory")
     out.mkdir(parents=True, exist_ok=True)
     opts = ReproduceOptions(**{**opts.__dict__, "out": out})
-    report = ReproduceReport()
+    report = ReproduceReport(progress=progress_reporter(prefix="snakecg reproduce")
+                             if opts.progress else None)
     t0 = time.perf_counter()
-    for j in (2, 3):  # build/compile first so the timings below are the study itself
-        load(Robot(joints=j))
+    with stage(report.progress, "loading the 2- and 3-joint models",
+               "loaded the 2- and 3-joint models"):
+        for j in (2, 3):  # build/compile first so the timings below are the study itself
+            load(Robot(joints=j))
     report.timings["models"] = time.perf_counter() - t0
     jobs = opts.jobs if opts.jobs is not None else min(2, os.cpu_count() or 1)
     drawer = figures.Drawer(jobs)
@@ -455,13 +443,17 @@ def reproduce(opts: ReproduceOptions | None = None, *, load=None, echo=print) ->
         drawer.close()
     report.timings["total"] = time.perf_counter() - t0
     summary = {"table2": {k: list(v) for k, v in report.table2.items()},
+               "table2_shape_feasible": {k: list(v)
+                                         for k, v in report.table2_shape_feasible.items()},
+               "table2_feasible_only": {k: list(v)
+                                        for k, v in report.table2_feasible_only.items()},
                "paper_table2": {k: list(v) for k, v in PAPER_TABLE2.items()},
                "feasible_shapes": report.feasible_count,
                "options": {k: (str(v) if isinstance(v, Path) else v)
                            for k, v in opts.__dict__.items()},
                "timings_s": report.timings}
     _write_text(out / "summary.json", json.dumps(summary, indent=2) + "\n", report)
-    echo(table2_text(report.table2)[0])
+    echo(_table_text(report, opts)[0])
     if opts.feasible_only:
         echo(f"(over the {report.feasible_count} physically feasible shapes of the "
              f"{report.grid_count} in the grid)")
@@ -472,18 +464,40 @@ def reproduce(opts: ReproduceOptions | None = None, *, load=None, echo=print) ->
     return report
 
 
+def _table_text(report: ReproduceReport, opts: ReproduceOptions):
+    """Table 2 as (terminal text, Markdown, CSV), entries of infeasible shapes marked, the
+    feasible-only entries beside them."""
+    return table2_text(report.table2, feasible=report.table2_shape_feasible or None,
+                       feasible_only=report.table2_feasible_only or None,
+                       clearance=opts.clearance)
+
+
 def _studies(opts: ReproduceOptions, report: ReproduceReport, load, drawer) -> None:
-    out = opts.out
     t1 = time.perf_counter()
-    case_study_1(opts, report, load, drawer)
+    with stage(report.progress, "case study 1 (2 joints): Fig. 4 maps and the sweeps",
+               "case study 1 done"):
+        case_study_1(opts, report, load, drawer)
     report.timings["case_study_1"] = time.perf_counter() - t1
     t2 = time.perf_counter()
-    Q, results = case_study_2(opts, report, load)
+    with stage(report.progress, "case study 2 (3 joints): the extremes of every shape of the "
+               "grid", "case study 2's extremes done"):
+        Q, results = case_study_2(opts, report, load)
+    with stage(report.progress, "Table 2, the shapes' feasibility and Figs. 4-6 (drawn in "
+               f"{'parallel' if drawer.parallel else 'this process'})", "figures done"):
+        _table_and_figures(opts, report, drawer, Q, results, t2)
+
+
+def _table_and_figures(opts, report, drawer, Q, results, t2) -> None:
+    out = opts.out
     feas = feasibility(results[SCENARIOS[0]][0], Q, clearance=opts.clearance)
     t = table2(results, feas.feasible if opts.feasible_only else None)
     report.table2 = t
+    idx = table2_index(results, feas.feasible if opts.feasible_only else None)
+    report.table2_shape_feasible = {k: tuple(bool(feas.feasible[i]) for i in v)
+                                    for k, v in idx.items()}
+    report.table2_feasible_only = table2(results, feas.feasible)
     report.feasible_count, report.grid_count = int(feas.feasible.sum()), len(Q)
-    _, md, csv_text = table2_text(t)
+    _, md, csv_text = _table_text(report, opts)
     _write_text(out / "table2.md", md, report)
     _write_text(out / "table2.csv", csv_text, report)
     with _timed(report, "figures"):

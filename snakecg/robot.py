@@ -8,6 +8,8 @@ A robot description file (TOML) looks like ``examples/robot.toml``::
     length = 0.15              # m
     inertia = 0.002            # kg m^2 about each link's COM
     # com = 0.075              # m from each link's rear end (default: length / 2)
+    # joint_limits = [-2.0, 2.0]   # rad: one (lower, upper) pair, or one pair per joint
+    # effort_limits = 2.0          # N m: largest |tau_j|, one number or one per joint
 
     [scene]                    # optional; used by `snakecg forward/optimize/simulate`
     scenario = "wheels"        # "frictionless" | "wheels" | "ideal_wheels"
@@ -30,6 +32,7 @@ from pathlib import Path
 from ._inputs import short_repr as _r
 from ._inputs import to_float as _to_float
 from .errors import InputError
+from .limits import check_effort_limits, check_joint_limits
 from .toml_file import read_toml as _read_toml
 
 __all__ = ["Robot", "Scene", "SCENARIOS", "DEFAULT_GRAVITY"]
@@ -150,7 +153,8 @@ def _joint_count(joints, problems: list[str]) -> int | None:
     return int(joints) + 1
 
 
-def _robot_problems(joints, mass, length, inertia, com, name) -> tuple[list[str], dict]:
+def _robot_problems(joints, mass, length, inertia, com, name, joint_limits=None,
+                    effort_limits=None) -> tuple[list[str], dict]:
     """Every problem of a robot's fields, and the normalized fields (valid only if none)."""
     problems: list[str] = []
     n = None if joints is _MISSING else _joint_count(joints, problems)
@@ -167,8 +171,11 @@ def _robot_problems(joints, mass, length, inertia, com, name) -> tuple[list[str]
         com = tuple(l_ / 2 for l_ in length)
     if not isinstance(name, str):
         problems.append(f"name must be a string, got {_r(name)}")
-    fields = {"joints": None if n is None else n - 1, "mass": mass, "length": length,
-              "inertia": inertia, "com": com}
+    na = None if n is None else n - 1
+    joint_limits = check_joint_limits(joint_limits, na, problems)
+    effort_limits = check_effort_limits(effort_limits, na, problems)
+    fields = {"joints": na, "mass": mass, "length": length, "inertia": inertia, "com": com,
+              "joint_limits": joint_limits, "effort_limits": effort_limits}
     return problems, fields
 
 
@@ -180,6 +187,12 @@ class Robot:
     (link 1 is the tail). Defaults are the paper's Table 1: ``m = 1 kg``, ``l = 0.15 m``,
     ``I = 0.002 kg m^2``; ``com`` is each COM's distance from the link's rear end
     (default: the middle of the link).
+
+    ``joint_limits``: ``lower < q_j < upper`` (rad), one ``(lower, upper)`` pair for every
+    joint or one pair per joint; ``effort_limits``: ``|tau_j| <= effort_j`` (N m), one
+    positive number or one per joint. None (the default, as the paper's Table 1): not
+    stated. They are the default joint range and torque box of the queries
+    (:mod:`snakecg.limits`).
     """
 
     joints: int
@@ -188,10 +201,13 @@ class Robot:
     inertia: tuple = 0.002
     com: tuple | None = None
     name: str = field(default="snake", compare=False)
+    joint_limits: tuple | None = None
+    effort_limits: tuple | None = None
 
     def __post_init__(self):
         problems, fields = _robot_problems(self.joints, self.mass, self.length, self.inertia,
-                                           self.com, self.name)
+                                           self.com, self.name, self.joint_limits,
+                                           self.effort_limits)
         if problems:
             raise InputError("invalid robot: " + _joined(problems))
         for key, value in fields.items():
@@ -223,20 +239,35 @@ class Robot:
         return robot
 
     @classmethod
-    def from_urdf(cls, path: str | Path, *, tol: float = 1e-6, name: str | None = None) -> Robot:
-        """Read a planar serial chain of revolute joints with parallel axes from a URDF file
-        (masses, joint-to-joint lengths, COM offsets along the links, inertias about the
-        joint axis); anything else is refused naming the element. Needs the ``urdf`` extra;
-        see :mod:`snakecg.urdf` and docs/urdf.md."""
+    def from_urdf(cls, path: str | Path, *, tol: float = 1e-6, name: str | None = None):
+        """Read a serial chain of revolute joints from a URDF file: a planar chain (parallel
+        axes, COMs on the links' axes) gives a planar :class:`Robot` (masses, joint-to-joint
+        lengths, COM offsets, inertias about the joint axis), any other chain a
+        :class:`~snakecg.SpatialRobot`; branches and other joints are refused naming the
+        element. Needs the ``urdf`` extra; see :mod:`snakecg.urdf`, docs/urdf.md and
+        docs/spatial.md."""
+        from .spatial.files import spatial_chain_or_planar
         from .urdf import robot_from_urdf
 
-        return robot_from_urdf(path, tol=tol, name=name)
+        return spatial_chain_or_planar("urdf", path, name, lambda: robot_from_urdf(
+            path, tol=tol, name=name))
+
+    @classmethod
+    def from_mjcf(cls, path: str | Path, *, tol: float = 1e-6, name: str | None = None):
+        """Read a serial chain of hinges on a free root from a MuJoCo XML file (MuJoCo's own
+        parser, the ``mjcf`` extra): a planar :class:`Robot` when the chain is planar, else a
+        :class:`~snakecg.SpatialRobot`; see docs/spatial.md."""
+        from .spatial.files import spatial_chain_or_planar
+
+        return spatial_chain_or_planar("mjcf", path, name, None, tol=tol)
 
     def __repr__(self) -> str:
-        return f"Robot({_fields_repr(self, ('joints', 'mass', 'length', 'inertia', 'com'))})"
+        return f"Robot({_fields_repr(self, _ROBOT_REPR)})"
 
 
-_ROBOT_KEYS = {"joints", "mass", "length", "inertia", "com", "name"}
+_ROBOT_REPR = ("joints", "mass", "length", "inertia", "com", "joint_limits", "effort_limits")
+_ROBOT_KEYS = {"joints", "mass", "length", "inertia", "com", "name", "joint_limits",
+               "effort_limits"}
 _SCENE_KEYS = {
     "scenario", "kappa", "mu", "gravity", "contact_link", "contact_offset", "side",
     "object_distance", "object_inertia", "wheel_links", "wheel_offset",
@@ -270,7 +301,8 @@ def _robot_from_table(data: dict) -> tuple[Robot | None, list[str], int | None]:
     if "joints" not in table:
         problems.append("missing key joints in [robot]")
     defaults = {f.name: f.default for f in Robot.__dataclass_fields__.values()}
-    kw = {k: table.get(k, defaults[k]) for k in ("mass", "length", "inertia", "com", "name")}
+    kw = {k: table.get(k, defaults[k]) for k in ("mass", "length", "inertia", "com", "name",
+                                                 "joint_limits", "effort_limits")}
     more, fields = _robot_problems(table.get("joints", _MISSING), **kw)
     problems += more
     n_links = None if fields["joints"] is None else fields["joints"] + 1
@@ -407,6 +439,8 @@ def _scene_problems(r: Robot | None, f: dict, *, n_links: int | None = None
     problems: list[str] = []
     n_links = r.n_links if r is not None else n_links
     links = f"1..{n_links}" if n_links is not None else ">= 1"
+    if isinstance(f["scenario"], str):  # "ideal-wheels" as the command line may spell it
+        f["scenario"] = f["scenario"].replace("-", "_")
     if not isinstance(f["scenario"], str) or f["scenario"] not in SCENARIOS:
         problems.append(f"scenario must be one of {', '.join(SCENARIOS)} (got {_r(f['scenario'])})")
 

@@ -26,11 +26,36 @@ import numpy as np
 
 from . import kernels
 
-__all__ = ["RowSystem", "mass_pivot_ratio", "ROW_TOL"]
+__all__ = ["RowSystem", "mass_pivot_ratio", "ROW_TOL", "REASONS", "reason_of"]
 
 #: Pivot ratio of the held rows (``diag(R_1)^2 / |column|^2``) below which they are treated as
 #: dependent even when factored directly (relative accuracy ~ 1e-16 / sqrt(ratio) = 1e-6).
 ROW_TOL = 1e-20
+
+#: Mass matrix pivot ratio below which ``M_s`` is numerically singular.
+MASS_TOL = 1e-13
+
+#: Why a sample is flagged ``singular``, by the code in its result row's ``status`` column
+#: (0: answered by the compiled core, 1: answered by the reference path).
+REASONS = (
+    "", "",
+    "the held constraint rows are linearly dependent (the forces are the least-norm ones)",
+    ("the mass matrix is numerically singular in float64 (masses, lengths or inertias too "
+     "far apart): no answer"),
+    ("the result is physically impossible in float64 (non-finite, a negative squared norm or "
+     "sr outside [0, 1]): no answer"),
+    ("the system is not finite in float64 (a scene parameter or an input too large or too "
+     "small, e.g. a subnormal mass or kappa, or a huge wheel offset): no answer"),
+)
+DEPENDENT, MASS_SINGULAR, IMPOSSIBLE, NOT_FINITE = 2, 3, 4, 5
+#: Codes whose results are NaN (every code but DEPENDENT, whose accelerations are unique).
+NO_ANSWER = (MASS_SINGULAR, IMPOSSIBLE, NOT_FINITE)
+
+
+def reason_of(code) -> str:
+    """The one-line cause of a result row's ``status`` code ('' when answered)."""
+    c = int(code) if np.isfinite(code) else 0
+    return REASONS[c] if 0 <= c < len(REASONS) else ""
 
 
 def mass_pivot_ratio(M: np.ndarray) -> np.ndarray:
@@ -107,12 +132,38 @@ class RowSystem:
         f[:, 3:ns] = tau
         f[:, :ns] -= h[:, :, 0] if h.ndim == 3 else h
         f[:, ns:] = f_obj
+        M = np.array(M)
         self.n, self.ns, self.nc = n, ns, nc
+        with np.errstate(all="ignore"):
+            # a sample whose system is not finite, or whose I is not numerically positive
+            # definite, is never handed to LAPACK (which may spin on inf): ok False, NaN out
+            ok = (np.all(np.isfinite(I.reshape(n, -1)), axis=1)
+                  & np.all(np.isfinite(A.reshape(n, -1)), axis=1)
+                  & np.all(np.isfinite(Adv), axis=1) & np.all(np.isfinite(f), axis=1))
+            L = np.broadcast_to(np.eye(nd), (n, nd, nd)).copy()
+            for j in np.flatnonzero(ok):
+                try:
+                    L[j] = np.linalg.cholesky(I[j])
+                except np.linalg.LinAlgError:
+                    ok[j] = False
+            ok &= np.all(np.isfinite(L.reshape(n, -1)), axis=1)
+            ok &= np.all(np.diagonal(L, axis1=1, axis2=2) > 0, axis=1)
+            L[~ok] = np.eye(nd)
+            A[~ok] = 0.0
+            Adv[~ok] = 0.0
+            f[~ok] = 0.0
+            I[~ok] = np.eye(nd)
+            M[~ok] = np.eye(ns)
+            Rall = np.linalg.solve(L, np.swapaxes(A, 1, 2))  # L^-1 A^T: (n, nd, nc)
+            ok &= np.all(np.isfinite(Rall.reshape(n, -1)), axis=1)
+            Rall[~ok] = 0.0
+            G = np.swapaxes(Rall, 1, 2) @ Rall
+            ok &= np.all(np.isfinite(G.reshape(n, -1)), axis=1)
+            G[~ok] = 0.0
+        self.ok = ok
         self.M, self.I, self.A, self.Adv, self.f = M, I, A, Adv, f
         self.mass_ratio = mass_pivot_ratio(M)
-        self.L = np.linalg.cholesky(I)
-        self.Rall = np.linalg.solve(self.L, np.swapaxes(A, 1, 2))  # L^-1 A^T: (n, nd, nc)
-        self.G = np.swapaxes(self.Rall, 1, 2) @ self.Rall
+        self.L, self.Rall, self.G = L, Rall, G
 
     def call(self, idx, free, lam_fixed, reg):
         """``constrained_dynamics`` outputs for samples ``idx`` with held rows ``free``."""
@@ -127,24 +178,23 @@ class RowSystem:
         lam = np.array(lam_fixed, dtype=float)
         z = z0.copy()
         ratio = np.ones(m)
+        good = self.ok[idx] & np.all(np.isfinite(z0), axis=1)
         for j in range(m):  # the held set differs per sample; a few rows each
             H = np.flatnonzero(free[j])
+            if not good[j]:  # not finite: nothing to factor (NaN, flagged by finish)
+                ratio[j] = np.nan
+                continue
             if H.size == 0:
                 continue
-            Q, R1 = np.linalg.qr(R[j][:, H])
-            col = np.linalg.norm(R[j][:, H], axis=0)
-            dg = np.abs(np.diag(R1))
-            ratio[j] = float(np.min((dg / np.where(col > 0, col, 1.0)) ** 2))
-            if not ratio[j] > ROW_TOL:  # dependent even for the rows: least-norm forces
-                lam_h = -np.linalg.lstsq(R[j][:, H], z0[j], rcond=1e-10)[0]
-                lam_h -= np.linalg.lstsq(R[j][:, H].T @ R[j][:, H], Adv[j][H],
-                                         rcond=1e-10)[0]
-                z[j] = z0[j] + R[j][:, H] @ lam_h
-            else:
-                y = np.linalg.solve(R1.T, Adv[j][H])
-                z[j] = z0[j] - Q @ (Q.T @ z0[j] + y)
-                lam_h = -np.linalg.solve(R1, Q.T @ z0[j] + y)
+            try:
+                lam_h, z[j], ratio[j] = _held_rows(R[j][:, H], z0[j], Adv[j][H])
+            except np.linalg.LinAlgError:  # LAPACK gave up: no answer for this sample
+                good[j] = False
+                ratio[j] = np.nan
+                continue
             lam[j, H] = lam_h
+        z[~good] = np.nan
+        lam[~good] = np.nan
         a = np.linalg.solve(np.swapaxes(L, 1, 2), z[:, :, None])[:, :, 0]
         qdd, a_obj = a[:, :ns], a[:, ns:]
         w = np.einsum("nci,ni->nc", self.A[idx], a) + Adv
@@ -159,6 +209,21 @@ class RowSystem:
             "pivot_ratio": ratio, "delassus": self.G[idx],
             "b": np.einsum("nic,ni->nc", R, z0) + Adv,
         }
+
+
+def _held_rows(RH, z0, adv):
+    """The held rows' forces, ``z`` and pivot ratio of one sample (module docstring)."""
+    Q, R1 = np.linalg.qr(RH)
+    col = np.linalg.norm(RH, axis=0)
+    dg = np.abs(np.diag(R1))
+    ratio = float(np.min((dg / np.where(col > 0, col, 1.0)) ** 2))
+    if not ratio > ROW_TOL:  # dependent even for the rows: least-norm forces
+        lam_h = -np.linalg.lstsq(RH, z0, rcond=1e-10)[0]
+        lam_h -= np.linalg.lstsq(RH.T @ RH, adv, rcond=1e-10)[0]
+        return lam_h, z0 + RH @ lam_h, ratio
+    y = np.linalg.solve(R1.T, adv)
+    z = z0 - Q @ (Q.T @ z0 + y)
+    return -np.linalg.solve(R1, Q.T @ z0 + y), z, ratio
 
 
 #: Delassus pivot ratio below which a sample is re-solved from its rows (the squared
@@ -190,9 +255,11 @@ def finish(model, base: dict, n: int, sol, max_iter=None):
       (``sqrt`` of the Delassus pivot ratio where solved from the rows), 0 for singular;
     * a sample whose mass matrix is not numerically positive definite (pivot ratio below
       ``1e-13``) or whose results are physically impossible (non-finite, a negative norm,
-      ``sr`` outside [0, 1]) is flagged ``singular`` with conditioning 0.
+      ``sr`` outside [0, 1]) is flagged ``singular`` with conditioning 0, and its results
+      are NaN (no row state: every row reads ``none``);
+    * ``sol.reason`` (N,): the code of :data:`REASONS` of each flagged sample (0 otherwise).
     """
-    from .solver import PIVOT_TOL, solve_active_set
+    from .solver import ABSENT, PIVOT_TOL, solve_active_set
 
     o = sol.outputs
     q = np.ascontiguousarray(np.broadcast_to(base["q"], (n, base["q"].shape[1])))
@@ -202,6 +269,9 @@ def finish(model, base: dict, n: int, sol, max_iter=None):
     cond = piv.copy()
     weak = np.flatnonzero(sol.singular | ~(piv > WEAK))
     weak = weak[mass[weak] > PIVOT_TOL]
+    unfinite = np.zeros(n, bool)
+    with np.errstate(all="ignore"):
+        unfinite |= ~np.all(np.isfinite(o["delassus"].reshape(n, -1)), axis=1)
     if weak.size:
         sub = {k: (v if v.shape[0] == 1 else v[weak]) for k, v in base.items()}
         rs = RowSystem(model, sub, len(weak))
@@ -216,8 +286,19 @@ def finish(model, base: dict, n: int, sol, max_iter=None):
         dep = ~(ratio > ROW_TOL)
         sol.singular[weak] = dep
         cond[weak] = np.where(dep, 0.0, np.sqrt(ratio))
-    bad = ~(mass > 1e-13) | ~_sane(o, np.arange(n))
-    sol.singular |= bad
+        unfinite[weak] |= ~rs.ok
+    reason = np.where(sol.singular, DEPENDENT, 0)
+    sane = _sane(o, np.arange(n))
+    reason[~sane] = IMPOSSIBLE
+    reason[unfinite & ~sane] = NOT_FINITE
+    reason[~(mass > MASS_TOL)] = MASS_SINGULAR
+    sol.singular |= reason > 0
+    lost = np.isin(reason, NO_ANSWER)
+    if np.any(lost):  # no answer: NaN, never an impossible number
+        for k in ("qdd", "a_obj", "lam", "w", "norm_lambda", "norm_a_obj", "norm_qdd", "sr"):
+            o[k][lost] = np.nan
+        sol.state[lost] = ABSENT
     cond = np.where(sol.singular, 0.0, np.minimum(cond, mass))
     sol.conditioning = cond
+    sol.reason = reason
     return sol

@@ -39,7 +39,7 @@ __all__ = ["ActiveSetSolution", "solve_active_set", "PIVOT_TOL", "check_input_ra
 PIVOT_TOL = 1e-10
 #: Relative regularization used for a singular sample (times the largest G_c diagonal).
 REGULARIZATION = 1e-10
-#: Relative tolerance of the active-set decisions (times the sample's own force scale).
+#: Relative tolerance of the active-set decisions (times each row's own force scale).
 REL_TOL = 1e-9
 
 # row states
@@ -54,6 +54,7 @@ class ActiveSetSolution:
     iterations: int
     enumerated: int
     conditioning: np.ndarray = None  # (N,), set by snakecg.rows.finish
+    reason: np.ndarray = None  # (N,) codes of snakecg.rows.REASONS, set by snakecg.rows.finish
 
 
 def _free_and_fixed(state: np.ndarray, bounds: np.ndarray):
@@ -75,6 +76,7 @@ def _violations(state, lam, w, bounds, tol_lam, tol_w):
     # wheels, rows 1..
     s = state[:, 1:]
     lw, ww, ub = lam[:, 1:], w[:, 1:], bounds[1:]
+    tol_lam, tol_w = tol_lam[:, 1:], tol_w[:, 1:]
     bw = np.broadcast_to(bounded[1:], s.shape)
     n1 = new[:, 1:]
     n1[(s == HELD) & bw & (lw > ub + tol_lam)] = SLIDE_POS
@@ -90,6 +92,30 @@ def _violations(state, lam, w, bounds, tol_lam, tol_w):
 FORCE_LIMIT = 1e150
 _LIMITS = {"tau": FORCE_LIMIT, "f_obj": FORCE_LIMIT, "v": FORCE_LIMIT ** 0.5,
            "v_obj": FORCE_LIMIT ** 0.5}
+
+
+#: Largest magnitude accepted for the object's pose ``q_obj`` and contact point ``rho`` (m,
+#: rad): the contact row carries ``rho`` as a moment arm, squared in the Delassus matrix.
+POSITION_LIMIT = 1e100
+
+
+def check_position_range(parts: dict) -> None:
+    """Refuse an object pose or contact point beyond :data:`POSITION_LIMIT` (checked on every
+    path, before any work: such a system overflows float64 and LAPACK may never return on
+    it). ``parts``: ``{name: (array, batched)}``."""
+    from .errors import InputError
+
+    for name in ("q_obj", "rho"):
+        if name in parts:
+            arr = parts[name][0]
+            with np.errstate(invalid="ignore"):
+                big = np.abs(arr) > POSITION_LIMIT
+            if np.any(big):
+                idx = tuple(int(i) for i in np.argwhere(big)[0])
+                raise InputError(f"{name} must have every entry within +-{POSITION_LIMIT:.0e}"
+                                 f" (m, rad: the object's pose and contact point; beyond it"
+                                 f" the contact row overflows float64), found {arr[idx]:.3e} at"
+                                 f" index {idx}")
 
 
 def check_input_range(parts: dict) -> None:
@@ -114,19 +140,39 @@ def default_max_iter(nc: int) -> int:
     return 4 * nc + 4
 
 
-def _tolerances(out):
-    """Decision tolerances relative to the problem's own scale (no absolute floor).
+#: Weight of the rounding term of a row's scale in :func:`_tolerances`: ``REL_TOL ROUND_REL``
+#: (1e-14) of the row's largest force term, a few roundings of its sum.
+ROUND_REL = 1e-5
 
-    The force scale is ``s = max(max |lam|, max |w| / g)`` with ``g`` the largest diagonal of
-    the Delassus matrix (N per m/s^2 of the rows): forces and accelerations of the sample in
-    one unit. ``tol_lam = REL_TOL s`` and ``tol_w = REL_TOL g s``. Scaling every input force
-    (torque, external wrench, wheel bounds) by ``s`` scales ``lam`` and ``w`` by ``s``: the
-    decisions do not depend on the units or the magnitude of the torque.
+
+def _tolerances(out):
+    """Decision tolerances of every row, relative to the row's own scale (no absolute floor).
+
+    Row ``r`` is judged against ``s_r = max(|lam_r|, |w_r| / G_rr, |b_r| / G_rr,
+    ROUND_REL sum_j |G_rj lam_j| / G_rr)`` (force units; ``b = w - G lam``, the row's
+    acceleration at zero force): ``tol_lam_r = REL_TOL s_r`` and ``tol_w_r = REL_TOL G_rr
+    s_r`` (``(N, n_c)`` each). Scaling every input force (torque, external wrench, wheel
+    bounds) by ``s`` scales every term by ``s``: the decisions do not depend on the units or
+    the magnitude of the torque. A row's own scale, not the sample's largest force: nearly
+    dependent wheel rows carry huge pinning forces that cancel in the other rows, and must not
+    widen their tolerance (the last term is the rounding level of those cancellations). The
+    compiled rule (``sc_next_states``, snakecg/core/common.h) is this one, operation for
+    operation.
     """
-    lam, w = out["lam"], out["w"]
-    g = _g_scale(out["delassus"])
-    s_lam = np.maximum(np.abs(lam).max(axis=1), np.abs(w).max(axis=1) / g)[:, None]
-    return REL_TOL * s_lam, REL_TOL * g[:, None] * s_lam
+    lam, w, G = out["lam"], out["w"], out["delassus"]
+    nc = lam.shape[1]
+    d = np.abs(np.diagonal(G, axis1=1, axis2=2))
+    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+        gr = np.where((d > 0) & np.isfinite(d), d, _g_scale(G)[:, None])
+        b = np.array(w, dtype=float)
+        cross = np.zeros_like(b)
+        for j in range(nc):  # in the C's order
+            t = G[:, :, j] * lam[:, j:j + 1]
+            b -= t
+            cross += np.abs(t)
+        s = np.maximum(np.maximum(np.abs(lam), np.abs(w) / gr),
+                       np.maximum(np.abs(b) / gr, ROUND_REL * cross / gr))
+    return REL_TOL * s, REL_TOL * gr * s
 
 
 def _g_scale(G):

@@ -8,7 +8,7 @@ from pathlib import Path
 from ._inputs import short_repr as _r
 from .errors import InputError
 
-__all__ = ["MAX_FILE_BYTES", "checked_path", "read_toml"]
+__all__ = ["MAX_FILE_BYTES", "checked_path", "read_bytes", "read_toml"]
 
 #: Largest robot description file read (bytes): a description is a few hundred bytes.
 MAX_FILE_BYTES = 1 << 20
@@ -27,8 +27,9 @@ def checked_path(path) -> Path:
     return p
 
 
-def read_toml(path) -> dict:
-    """The parsed file: a regular file of at most MAX_FILE_BYTES, UTF-8 (a BOM is allowed).
+def read_bytes(path, *, where: str = "robot file", kind: str = "TOML") -> tuple[Path, bytes]:
+    """``(path, its bytes)``: a regular file of at most MAX_FILE_BYTES, read once (``where``
+    starts the messages, ``kind`` names the expected file).
 
     Devices (``/dev/zero``), FIFOs and sockets are refused before they are opened, so a read
     can neither run out of memory nor block.
@@ -36,12 +37,8 @@ def read_toml(path) -> dict:
     import os
     import stat
 
-    try:
-        import tomllib
-    except ModuleNotFoundError:  # pragma: no cover - Python 3.10
-        import tomli as tomllib
     p = checked_path(path)
-    where = f"robot file {str(p)!r}"
+    where = f"{where} {str(p)!r}"
     try:
         st = os.stat(p)
     except FileNotFoundError:
@@ -49,12 +46,12 @@ def read_toml(path) -> dict:
     except (OSError, ValueError) as exc:
         raise InputError(f"{where} cannot be read: {exc}") from None
     if stat.S_ISDIR(st.st_mode):
-        raise InputError(f"{where} is a directory, expected a TOML file")
+        raise InputError(f"{where} is a directory, expected a {kind} file")
     if not stat.S_ISREG(st.st_mode):
-        kind = ("a FIFO" if stat.S_ISFIFO(st.st_mode) else
+        what = ("a FIFO" if stat.S_ISFIFO(st.st_mode) else
                 "a device" if stat.S_ISCHR(st.st_mode) or stat.S_ISBLK(st.st_mode) else
                 "a socket" if stat.S_ISSOCK(st.st_mode) else "not a regular file")
-        raise InputError(f"{where} is {kind}; expected a regular TOML file")
+        raise InputError(f"{where} is {what}; expected a regular {kind} file")
     if st.st_size > MAX_FILE_BYTES:
         raise InputError(f"{where} has {st.st_size} bytes, above the limit of "
                          f"{MAX_FILE_BYTES} bytes for a robot description")
@@ -63,13 +60,25 @@ def read_toml(path) -> dict:
         fd = os.open(p, flags)
         with os.fdopen(fd, "rb") as fh:
             if not stat.S_ISREG(os.fstat(fh.fileno()).st_mode):  # replaced meanwhile
-                raise InputError(f"{where} is not a regular file; expected a TOML file")
+                raise InputError(f"{where} is not a regular file; expected a {kind} file")
             data = fh.read(MAX_FILE_BYTES + 1)
     except OSError as exc:
         raise InputError(f"{where} cannot be read: {exc}") from None
     if len(data) > MAX_FILE_BYTES:
         raise InputError(f"{where} has more than {MAX_FILE_BYTES} bytes, the limit for a "
                          f"robot description")
+    return p, data
+
+
+def read_toml(path) -> dict:
+    """The parsed file: a regular file of at most MAX_FILE_BYTES (:func:`read_bytes`), UTF-8
+    (a BOM is allowed)."""
+    try:
+        import tomllib
+    except ModuleNotFoundError:  # pragma: no cover - Python 3.10
+        import tomli as tomllib
+    p, data = read_bytes(path)
+    where = f"robot file {str(p)!r}"
     if data.startswith(b"\xef\xbb\xbf"):
         data = data[3:]  # a UTF-8 byte order mark, as some editors write
     try:

@@ -13,7 +13,12 @@
 * ``com``: the COM's distance from the link's rear end along the link, which must lie on the
   link's axis (the line through its joints) within ``tol`` metres;
 * ``mass`` and ``inertia``: the ``<inertial>`` mass and the inertia about the COM about the
-  plane's normal, ``n^T R I R^T n`` with ``R`` the inertial frame's orientation.
+  plane's normal, ``n^T R I R^T n`` with ``R`` the inertial frame's orientation;
+* ``joint_limits``: a ``revolute`` joint's ``<limit lower upper>`` in snakecg's angles
+  (shifted by the zero configuration's bend, and reversed for an axis opposite the first);
+  a ``continuous`` joint turns freely, ``(-pi, pi)``;
+* ``effort_limits``: every joint's ``<limit effort>`` (N m); when some joints give none, the
+  robot has no effort limits and a warning names those joints.
 
 Anything else (a branch, a prismatic, floating or planar joint, a joint axis not parallel to
 the first, a COM off the link axis, a link without mass, a fixed joint to a link with mass)
@@ -24,10 +29,13 @@ may be bent (``q_urdf = q_snakecg - offset``).
 
 from __future__ import annotations
 
-from pathlib import Path
+import io
+import math
+import warnings
 
 import numpy as np
 
+from ._inputs import number
 from .errors import InputError
 
 __all__ = ["robot_from_urdf"]
@@ -35,28 +43,57 @@ __all__ = ["robot_from_urdf"]
 _REVOLUTE = ("revolute", "continuous")
 
 
-def _load(path: Path):
+def _load(path):
+    """``(path, yourdfpy's URDF)`` of the file: read once (a regular file of bounded size),
+    checked to be well-formed XML without a DTD or entities, then parsed by yourdfpy from
+    those bytes."""
     try:
         import yourdfpy
     except ImportError:
-        raise InputError("reading URDF needs the yourdfpy package: pip install "
-                         "'snakecg[urdf]'") from None
-    if not path.is_file():
-        raise InputError(f"URDF file {str(path)!r} does not exist or is not a file")
+        from .extras import install_hint
+
+        raise InputError("reading URDF needs the yourdfpy package (the urdf extra): "
+                         f"{install_hint('urdf')}") from None
     from lxml import etree  # yourdfpy's XML library
 
-    try:  # yourdfpy recovers from malformed XML silently: refuse it first
-        etree.parse(str(path), etree.XMLParser(resolve_entities=False, no_network=True))
-    except (etree.XMLSyntaxError, OSError) as exc:
-        raise InputError(f"URDF file {str(path)!r} cannot be read: not well-formed XML "
-                         f"({' '.join(str(exc).split())})") from None
+    from .toml_file import read_bytes
+
+    p, data = read_bytes(path, where="URDF file", kind="URDF")
+    where = f"URDF file {str(p)!r}"
+    # yourdfpy recovers from malformed XML silently and its parser expands entities: an
+    # external entity, or any DTD, could make the file read as another robot. Refused.
+    no_dtd = (f"{where} declares a DTD or entities (<!DOCTYPE ...>, <!ENTITY ...>); a robot "
+              "file may not: write the values out")
+    parser = etree.XMLParser(resolve_entities=False, no_network=True, load_dtd=False,
+                             huge_tree=False)
     try:
-        return yourdfpy.URDF.load(str(path), build_scene_graph=False, load_meshes=False,
-                                  build_collision_scene_graph=False,
-                                  load_collision_meshes=False)
+        root = etree.fromstring(data, parser)
+    except (etree.XMLSyntaxError, ValueError) as exc:
+        if b"<!DOCTYPE" in data or b"<!ENTITY" in data:
+            raise InputError(no_dtd) from None
+        raise InputError(f"{where} cannot be read: not well-formed XML "
+                         f"({' '.join(str(exc).split())})") from None
+    info = root.getroottree().docinfo
+    has_entity = any(isinstance(e, etree._Entity) for e in root.iter())
+    if info.doctype or info.internalDTD is not None or info.externalDTD is not None \
+            or has_entity:
+        raise InputError(no_dtd)
+    try:
+        return p, yourdfpy.URDF.load(io.BytesIO(data), build_scene_graph=False,
+                                     load_meshes=False, build_collision_scene_graph=False,
+                                     load_collision_meshes=False)
     except Exception as exc:  # noqa: BLE001 - yourdfpy raises many kinds for a bad file
-        raise InputError(f"URDF file {str(path)!r} cannot be read: "
+        raise InputError(f"{where} cannot be read: "
                          f"{' '.join(str(exc).split()) or type(exc).__name__}") from None
+
+
+def _text(value) -> str:
+    """A value of the file as the file wrote it (a vector as its numbers)."""
+    from ._inputs import short_repr
+
+    if isinstance(value, np.ndarray):
+        return repr(" ".join(f"{x:g}" for x in value.ravel()))
+    return short_repr(value)
 
 
 def _origin(T) -> np.ndarray:
@@ -69,9 +106,17 @@ def _mass(link) -> float:
 
 
 def _round(x: float) -> float:
-    """15 significant digits: the frames' matrix products add rounding errors of ~1e-16, which
-    would turn the file's ``0.15`` into ``0.14999999999999997``."""
-    return float(f"{x:.15g}")
+    """The shortest decimal within 64 units in the last place of ``x``: the frames' matrix
+    products add rounding errors of a few ulps, which would turn the file's ``0.15`` into
+    ``0.14999999999999997`` (or, rounded to 15 digits, a ``0.06`` into
+    ``0.0600000000000001``); a value the file gives with up to about 14 digits comes back
+    as written, a longer one moves by at most 64 ulps (1.4e-14 relative)."""
+    tol = 64 * math.ulp(x)
+    for digits in range(1, 18):
+        y = float(f"{x:.{digits}g}")
+        if abs(y - x) <= tol:
+            return y
+    return x
 
 
 def robot_from_urdf(path, *, tol: float = 1e-6, name: str | None = None):
@@ -80,10 +125,18 @@ def robot_from_urdf(path, *, tol: float = 1e-6, name: str | None = None):
     the parallel-axes test (radians)."""
     from .robot import Robot
 
-    p = Path(path)
-    urdf = _load(p)
+    tol = number("tol", tol, lo=0, unit="m")
+    if name is not None and not isinstance(name, str):
+        raise InputError(f"name must be a string, got {type(name).__name__}")
+    p, urdf = _load(path)
     where = f"URDF file {str(p)!r}"
     robot = urdf.robot
+    for kind, items in (("link", robot.links), ("joint", robot.joints)):
+        names = [x.name for x in items]
+        twice = sorted({n for n in names if names.count(n) > 1})
+        if twice:
+            raise InputError(f"{where}: {kind} names must be unique; repeated: "
+                             f"{', '.join(repr(n) for n in twice[:5])}")
     links = {ln.name: ln for ln in robot.links}
     joints = list(robot.joints)
     children: dict[str, list] = {n: [] for n in links}
@@ -136,7 +189,13 @@ def robot_from_urdf(path, *, tol: float = 1e-6, name: str | None = None):
         frame[j.child] = frame[j.parent] @ _origin(j.origin)
     axes = []
     for j in chain_joints:
-        a = np.asarray(j.axis if j.axis is not None else (1.0, 0.0, 0.0), dtype=float)
+        try:
+            a = np.asarray(j.axis if j.axis is not None else (1.0, 0.0, 0.0), dtype=float)
+        except (TypeError, ValueError):
+            a = np.zeros(0)
+        if a.shape != (3,) or not np.isfinite(a).all():
+            raise InputError(f"{where}: joint {j.name!r} has axis {_text(j.axis)}; expected "
+                             "three finite numbers (<axis xyz=\"0 0 1\"/>)")
         norm = np.linalg.norm(a)
         if not norm > 0:
             raise InputError(f"{where}: joint {j.name!r} has a zero axis")
@@ -153,7 +212,7 @@ def robot_from_urdf(path, *, tol: float = 1e-6, name: str | None = None):
         return x - n * (n @ x)
 
     joint_pos = [planar(frame[j.child][:3, 3]) for j in chain_joints]
-    masses, lengths, inertias, coms = [], [], [], []
+    masses, lengths, inertias, coms, link_axes = [], [], [], [], []
     nl = len(chain)
     for k, link_name in enumerate(chain):
         link = links[link_name]
@@ -197,13 +256,50 @@ def robot_from_urdf(path, *, tol: float = 1e-6, name: str | None = None):
         if not -tol <= c <= length + tol:
             raise InputError(f"{where}: the COM of link {link_name!r} lies outside the link "
                              f"({c:.6g} m from its rear end, length {length:.6g} m)")
+        link_axes.append(e)
         masses.append(m)
         lengths.append(_round(length))
         inertias.append(_round(inertia))
         coms.append(_round(min(max(c, 0.0), length)))
+    joint_limits, effort_limits = _limits(where, chain_joints, axes, link_axes, n)
     try:
         return Robot(joints=nl - 1, mass=tuple(masses), length=tuple(lengths),
                      inertia=tuple(inertias), com=tuple(coms),
-                     name=name or robot.name or p.stem)
+                     name=name or robot.name or p.stem, joint_limits=joint_limits,
+                     effort_limits=effort_limits)
     except InputError as exc:
         raise InputError(f"{where}: {exc}") from None
+
+
+def _limits(where, joints, axes, link_axes, n):
+    """The joints' ``<limit>`` in snakecg's angles: ``q_j = delta_j + s_j q_urdf``, with
+    ``delta_j`` the angle from link j's axis to link j+1's at the URDF's zero configuration
+    and ``s_j = +-1`` the joint axis's direction along the plane's normal ``n``."""
+    ranges, efforts, missing = [], [], []
+    for j, (joint, a) in enumerate(zip(joints, axes)):
+        e0, e1 = link_axes[j], link_axes[j + 1]
+        delta = math.atan2(float(n @ np.cross(e0, e1)), float(e0 @ e1))
+        sign = 1.0 if float(a @ n) > 0 else -1.0
+        lim = joint.limit
+        if joint.type == "continuous":
+            ranges.append((-math.pi, math.pi))
+        elif lim is None or lim.lower is None or lim.upper is None:
+            raise InputError(f"{where}: revolute joint {joint.name!r} has no <limit lower=... "
+                             "upper=...> (a URDF revolute joint needs both; a joint without "
+                             "limits is 'continuous')")
+        else:
+            lo, hi = sorted((delta + sign * float(lim.lower), delta + sign * float(lim.upper)))
+            if not float(lim.lower) < float(lim.upper):
+                raise InputError(f"{where}: joint {joint.name!r} has <limit lower="
+                                 f"{lim.lower:g} upper={lim.upper:g}>; lower must be below "
+                                 "upper")
+            ranges.append((_round(lo), _round(hi)))
+        if lim is None or lim.effort is None:
+            missing.append(joint.name)
+        else:
+            efforts.append(float(lim.effort))
+    if missing and efforts:
+        warnings.warn(f"{where}: joint(s) {', '.join(repr(m) for m in missing)} give no "
+                      "<limit effort>, the others do: the robot has no effort limits "
+                      "(give tau_max to a query)", stacklevel=4)
+    return tuple(ranges), (tuple(efforts) if not missing else None)

@@ -7,6 +7,9 @@
 * ``rng``: a ``numpy.random.Generator`` seeded from the test's node id, so every test has its
   own fixed stream (reordering or selecting tests does not change the numbers a test sees).
 * ``random_robot``: a factory of robots with random per-link parameters over wide ranges.
+* Every simulation any test runs is checked (autouse ``_simulations_never_overlap``): no
+  sample before the first violation that the contact check reports overlaps beyond the
+  tolerance, measured by the independent geometry of ``overlap_reference.py``.
 """
 
 from __future__ import annotations
@@ -33,6 +36,24 @@ def snakecg_cache_dir(tmp_path_factory):
         yield path
     finally:
         os.environ.pop("SNAKECG_CACHE_DIR", None)
+
+
+@pytest.fixture(autouse=True)
+def _simulations_never_overlap(monkeypatch):
+    """Every trajectory a simulation returns in this test is checked against the independent
+    geometry (:func:`overlap_reference.check_trajectory`)."""
+    from overlap_reference import check_trajectory
+
+    from snakecg.simulate import simulator
+
+    run = simulator.Simulator.run
+
+    def checked(self):
+        traj = run(self)
+        check_trajectory(self.model.scene, self.settings.geometry_check, traj)
+        return traj
+
+    monkeypatch.setattr(simulator.Simulator, "run", checked)
 
 
 @pytest.fixture

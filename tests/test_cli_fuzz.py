@@ -12,11 +12,18 @@ Argument lists are fuzzed the same way (bad numbers, vectors of the wrong length
 infinity, unknown options and choices, missing or contradictory options). A fixed set of
 them also runs through a real ``python -m snakecg.cli`` process.
 
+Every option of every sub-command, read from the argparse parsers themselves (a new option is
+covered without editing this file), takes a list of hostile values (empty, ``--`` as
+``--opt=--``, NaN, infinities, 1e308, 5e-324, huge integers, text, unicode, 5000 characters;
+a longer list in the ``slow`` variant): exit status 0, 1 or 2 with one line, never a
+traceback, strict JSON with ``--json``. The reported attacks are replayed one by one.
+
 ``SNAKECG_HYPOTHESIS_PROFILE=long`` runs many more examples (docs/reliability.md).
 """
 
 from __future__ import annotations
 
+import argparse
 import contextlib
 import io
 import json
@@ -403,7 +410,7 @@ OTHER_COMMANDS = [
     (["optimize", "nope", "--joints", "2", "--q=0,0,0,0,0"], "snakecg optimize: error: ",
      "invalid choice: 'nope'"),
     (["simulate", "--joints", "2", "--q=0,0,0,0,0", "--tau=0,0", "--duration=-1"],
-     "snakecg simulate: error: ", "argument --duration: must be > 0 (s), got '-1'"),
+     "snakecg simulate: error: ", "argument --duration: must be >= 1e-09 (s), got '-1'"),
     (["frobnicate"], "snakecg: error: ", "invalid choice: 'frobnicate'"),
     (["forward", "--robot", "examples/robot.toml", "--joints", "2", "--q=0,0,0,0,0",
       "--tau=0,0"], "snakecg forward: error: ", "--joints 2 contradicts the robot file (3 joints)"),
@@ -583,7 +590,7 @@ def no_model_loaded():
     refused before)."""
     import snakecg.model as model_mod
     import snakecg.reproduce as rep
-    import snakecg_derive.inspect as inspect_mod
+    import snakecg_derive.inspection as inspect_mod
     import snakecg_derive.render as render
 
     def boom(*args, **kwargs):
@@ -619,3 +626,235 @@ def test_every_command_and_option_refuses_bad_values(case, workdir):
         names |= {opt, opt.lstrip("-").replace("-", "_"), opt.lstrip("-") + "0"}
     names |= {"robot file", "joints", "q0", "v0", "v_obj0"}
     assert any(n in lines[0] for n in names), (argv, lines[0])
+
+
+# ------------------------------------------------------------------------------------------
+# every option of every sub-command, read from the parsers themselves (a new option is
+# covered without touching this file), with hostile values: exit status 0, 1 (a failure that
+# is not the input's fault, one line) or 2 (one line), never a traceback, strict JSON with
+# --json. Work that would take long once the values are accepted (a derivation, a sweep, a
+# study, a shape search) is stopped where it starts: the values passed every check.
+class WorkStarted(BaseException):
+    """Raised where long work would start: every check before it passed."""
+
+
+HOSTILE = ["", " ", "--", "nan", "-inf", "1e308", "5e-324", "-1", "0", str(10**40), "x",
+           "\u00e9\u202e\u0301", "1" * 5000]
+HOSTILE_SLOW = HOSTILE + [
+    "inf", "-1e308", "1e400", "-0", "0x10", "1e-320", "3.5", "2", "1,2,3", "nan,nan",
+    ",".join(["1e308"] * 6), "true", "/dev/zero", "/", "/nonexistent/x", "-", "1e-9", "1e6",
+    "9" * 400, "\U0001f40d", "a" * 100_000, "0,0,0,0,0", "-135deg", "1e308deg",
+]
+
+
+def _parsers():
+    """``{command: parser}`` of every installed sub-command."""
+    parser = cli.build_parser()
+    (sub,) = [a for a in parser._actions if isinstance(a, argparse._SubParsersAction)]
+    return dict(sub.choices)
+
+
+def _options(parser):
+    """``[(label, make)]``: ``make(value)`` gives the argument list that sets one option (or
+    positional) of ``parser`` to ``value``."""
+    out = []
+    for action in parser._actions:
+        if isinstance(action, argparse._HelpAction):
+            continue
+        if not action.option_strings:
+            out.append((action.dest, ("positional", action.dest)))
+        elif action.nargs == 0:  # flags: a value is an error
+            out.append((action.option_strings[-1], ("flag", action.option_strings[-1])))
+        else:
+            out.append((action.option_strings[-1], ("option", action.option_strings[-1])))
+    return out
+
+
+POSITIONAL_BASE = {"optimize": "max-sr", "optimize-shape": "max-sr", "show": "M"}
+
+
+def _base_line(command, out):
+    """A valid, cheap command line of ``command`` (2 joints), writing under ``out``."""
+    q = "--q=0,0,0,0.3,0.3"
+    return {
+        "generate": ["--joints", "2"],
+        "show": ["--joints", "2"],
+        "forward": ["--joints", "2", q, "--tau=0.01,0"],
+        "reproduce": ["--out", str(out / "r")],
+        "optimize": ["--joints", "2", q],
+        "simulate": ["--joints", "2", q, "--tau=0.01,0", "--duration", "0.01",
+                     "--no-figures", "--out", str(out / "s")],
+        "export": ["--joints", "2", "--out", str(out / "e")],
+        "plot": ["--joints", "2", q, "--out", str(out / "p.png")],
+        "optimize-shape": ["--joints", "2"],
+        "sweep": ["--joints", "2", "--out", str(out / "w.zarr")],
+    }.get(command, [])
+
+
+def _argv(command, parser, kind, name, value, out):
+    """The base line of ``command`` with ``name`` set to ``value`` (``--opt=value``; a flag
+    given a value; a positional replaced), ``--json`` added where the command has it."""
+    base = _base_line(command, out)
+    # drop the option from the base line (with its value)
+    cleaned, skip = [], False
+    for a in base:
+        if skip:
+            skip = False
+            continue
+        if kind != "positional" and a == name:
+            skip = True
+            continue
+        if kind != "positional" and a.startswith(name + "="):
+            continue
+        cleaned.append(a)
+    positional = POSITIONAL_BASE.get(command)
+    if kind == "positional":
+        positional = value
+    argv = [command] + ([positional] if positional is not None else []) + cleaned
+    if kind != "positional":
+        argv.append(f"{name}={value}")
+    if any("--json" in a.option_strings for a in parser._actions) and name != "--json":
+        argv.append("--json")
+    return argv
+
+
+@contextlib.contextmanager
+def long_work_stopped():
+    """Derivations, sweeps, studies, shape searches and simulations raise WorkStarted."""
+    import snakecg.model as model_mod
+    import snakecg.reproduce as rep
+    import snakecg.simulate as sim
+    import snakecg.sweeps.run as sweeps_run
+    import snakecg_derive.inspect as inspect_mod
+    import snakecg_derive.render as render
+
+    def started(*args, **kwargs):
+        raise WorkStarted
+
+    with pytest.MonkeyPatch.context() as mp:
+        mp.setattr(render, "render_model", started)
+        mp.setattr(rep, "reproduce", started)
+        mp.setattr(sweeps_run, "sweep", started)
+        mp.setattr(inspect_mod, "expression", started)
+        mp.setattr(model_mod.SceneModel, "optimize_shape", started)
+        real_simulate = sim.simulate
+
+        def simulate(model, q0, tau, duration, **kw):  # short runs only (a hostile value
+            if duration > 0.05 or (kw.get("atol") or 1) < 1e-30:  # may ask for hours)
+                raise WorkStarted
+            return real_simulate(model, q0, tau, duration, **kw)
+
+        mp.setattr(sim, "simulate", simulate)
+        yield
+
+
+def _strict_json(text):
+    def refuse(token):
+        raise ValueError(f"non-strict JSON token {token}")
+
+    return json.loads(text, parse_constant=refuse)
+
+
+def check_hostile(command, parser, kind, name, value, out):
+    """Run one hostile command line and check what a user sees."""
+    argv = _argv(command, parser, kind, name, value, out)
+    cwd = os.getcwd()
+    os.chdir(out)  # a relative path among the values (`--out=x`) lands in the test's folder
+    try:
+        with long_work_stopped():
+            code, stdout, err = run_cli(argv)
+    except WorkStarted:
+        return "accepted"
+    finally:
+        os.chdir(cwd)
+    shown = [ln for ln in err.splitlines() if not ln.startswith("snakecg: warning: ")]
+    where = (argv[:1] + [a[:80] for a in argv[1:]], code, err[:500])
+    assert "Traceback" not in err, where
+    assert code in (0, 1, 2), where
+    if code == 2:
+        assert len(shown) == 1, where
+        assert shown[0].startswith((f"snakecg {command}: error: ", "snakecg: error: ")), where
+        assert stdout == "", where
+    elif code == 1:  # a failure said in one line, or a result whose status is not a success
+        # (at most one line then, naming it: a simulation that stopped at a penetration)
+        assert len(shown) <= 1, where
+        assert (shown and ": failed: " in shown[0]) or stdout, where
+    if code in (0, 1) and "--json" in argv and stdout.strip():
+        _strict_json(stdout)
+    return code
+
+
+def _cases(values):
+    for command, parser in sorted(_parsers().items()):
+        for name, (kind, opt) in _options(parser):
+            yield command, name, kind, values
+
+
+def test_the_fuzz_reaches_every_command_and_option():
+    """The table is the parsers': every sub-command, every option, and ``--opt=--``."""
+    parsers = _parsers()
+    assert set(parsers) >= {"generate", "show", "forward", "reproduce", "optimize",
+                            "simulate", "export", "plot", "optimize-shape", "sweep"}
+    for command, parser in parsers.items():
+        assert _base_line(command, Path("/tmp")) or command in ("show", "generate"), command
+        names = [n for n, _ in _options(parser)]
+        assert len(names) >= 2, command
+    assert "--" in HOSTILE
+
+
+@pytest.mark.parametrize("command", sorted(_parsers()))
+def test_every_option_takes_hostile_values(command, tmp_path):
+    """Each option of ``command`` given every value of HOSTILE (one at a time, the rest of
+    the line valid): one line and exit 2 when refused, never a traceback, strict JSON."""
+    parser = _parsers()[command]
+    seen = {}
+    for i, (name, (kind, opt)) in enumerate(_options(parser)):
+        for j, value in enumerate(HOSTILE):
+            out = tmp_path / f"{i}-{j}"
+            out.mkdir()
+            seen[(name, value)] = check_hostile(command, parser, kind, opt, value, out)
+    # `--opt=--` is refused by every option that takes a value
+    for name, (kind, opt) in _options(parser):
+        if kind == "option":
+            assert seen[(name, "--")] == 2, (command, name)
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("command", sorted(_parsers()))
+def test_every_option_takes_hostile_values_exhaustive(command, tmp_path):
+    """The long list of hostile values (paths, devices, lists, huge and tiny numbers, long
+    strings), one option at a time."""
+    parser = _parsers()[command]
+    options = _options(parser)
+    for i, (name, (kind, opt)) in enumerate(options):
+        for j, value in enumerate(HOSTILE_SLOW):
+            out = tmp_path / f"{i}-{j}"
+            out.mkdir()
+            check_hostile(command, parser, kind, opt, value, out)
+
+
+# the attacks that were reported, each reachable from the command line: one line, exit 2
+REPORTED = [
+    (["simulate", "--joints", "2", "--q=0,0,0,0,0", "--tau=0,0", "--duration=--"],
+     "argument --duration: expected a value, got '--'"),
+    (["plot", "--joints", "2", "--q=0,0,0,0,0", "--tau=--", "--out", "x.png"],
+     "argument --tau: expected a value, got '--'"),
+    (["simulate", "--joints", "2", "--q=0,0,0,0,0", "--tau=0,0", "--duration", "5e-324"],
+     "argument --duration: must be >= 1e-09"),
+    (["simulate", "--joints", "2", "--q=0,0,0,0,0", "--tau=1e151,0", "--no-figures"],
+     "tau must have every entry within +-1e+150"),
+    (["plot", "--joints", "2", "--q=1e308,0,0,0,0", "--out", "{tmp}/x.png"],
+     "q places the drawing 1e+308 m from the origin"),
+    (["export", "--joints", "1", "--out", ""], "argument --out: empty value"),
+]
+
+
+@pytest.mark.parametrize("argv, fragment", REPORTED, ids=[" ".join(a[:1] + a[-1:])
+                                                          for a, _ in REPORTED])
+def test_reported_attacks_are_refused_in_one_line(argv, fragment, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    argv = [a.replace("{tmp}", str(tmp_path)) for a in argv]
+    code, out, err = run_cli(argv)
+    assert code == 2 and "Traceback" not in err and out == "", err
+    assert len(err.splitlines()) == 1 and fragment in err, err
+    assert list(tmp_path.iterdir()) == []  # nothing written

@@ -10,8 +10,8 @@
   tests.)
 * The doctests of the modules that the API reference renders run too.
 * The CLI behaviour that docs/cli.md documents: exit statuses, one-line errors with a hint,
-  ``--version``, an example in every command's help, the JSON schemas' fields, quiet progress
-  when standard error is not a terminal.
+  ``--version``, an example in every command's help, the JSON schemas' fields, progress lines
+  on every stream (bars on a terminal only).
 * ``mkdocs build --strict`` succeeds (when MkDocs is installed; otherwise skipped, saying so),
   and the generated pages contain what the hooks promise.
 """
@@ -249,7 +249,13 @@ def test_failures_exit_1(tmp_path, capsys):
     status = main(["generate", "--joints", "1", "--out", str(blocker / "sub")])
     err = capsys.readouterr().err
     assert status == 1, err
-    assert len(err.splitlines()) == 1 and err.startswith("snakecg generate: failed:"), err
+    # the progress of the work done before the failure, each line timed, then the failure
+    *steps, last = err.splitlines()
+    assert all(re.match(r"snakecg \[ *\d+\.\d s\] ", line) for line in steps), err
+    assert "] generating the 1-joint model into " in steps[0], err
+    assert re.search(r"] generating the 1-joint model into .*: failed after \d+\.\d s$",
+                     steps[-1]), err
+    assert last.startswith("snakecg generate: failed:"), err
 
 
 def _documented_fields(section: str) -> set[str]:
@@ -290,7 +296,9 @@ def test_generate_json_fields_are_documented(capsys):
     assert set(out) == _documented_fields("### `snakecg generate --json`")
 
 
-def test_progress_is_quiet_off_a_terminal_and_shown_on_one(monkeypatch):
+def test_progress_lines_on_every_stream_bars_on_a_terminal(monkeypatch):
+    """docs/cli.md: step lines on every stream, bars only on a terminal, and
+    SNAKECG_PROGRESS=0 silences both."""
     from snakecg.commands._common import progress_reporter
     from snakecg.progress import progress_bar
 
@@ -299,7 +307,9 @@ def test_progress_is_quiet_off_a_terminal_and_shown_on_one(monkeypatch):
             return True
 
     monkeypatch.delenv("SNAKECG_PROGRESS", raising=False)
-    assert progress_reporter(io.StringIO()) is None
+    pipe = io.StringIO()
+    progress_reporter(pipe)("compiling")
+    assert pipe.getvalue().endswith("compiling\n")
     tty = Tty()
     step = progress_reporter(tty)
     step("compiling")

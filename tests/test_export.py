@@ -8,6 +8,7 @@ the manifest.
 
 from __future__ import annotations
 
+import math
 import re
 import shutil
 import subprocess
@@ -114,8 +115,11 @@ def test_header_sizes_and_baked_parameters_follow_the_manifest(tmp_path, random_
     K = [float(x) for x in re.findall(r"^\s*([-+0-9.eE]+),? /\*", body, re.MULTILINE)]
     assert K == model.parameters.tolist()  # exact: repr round-trips
     bound = re.search(r"scene_wheel_bound\[\d+\] = \{([^}]*)\}", params).group(1)
-    want = [0.3 * m * scene.gravity for m in robot.mass]
-    assert [float(x) for x in bound.split(",")][1:] == pytest.approx(want, rel=1e-15)
+    # row 0 the contact; the contact link carries no wheel (assumption 4): no bound on it
+    want = [math.inf] + [0.0 if i == scene.contact_link else 0.3 * m * scene.gravity
+                         for i, m in enumerate(robot.mass, start=1)]
+    got = [math.inf if x.strip() == "INFINITY" else float(x) for x in bound.split(",")]
+    assert got == pytest.approx(want, rel=1e-15)
     # compiles standalone with one cc call, -std=c99 -Wall, no warnings in the wrapper code
     srcs = [str(f) for f in files if f.suffix == ".c"]
     exe = tmp_path / "example"
@@ -135,3 +139,35 @@ def test_export_refuses_a_file_as_folder(tmp_path, capsys):
     assert main(["export", "--joints", "1", "--out", str(f)]) == 2
     err = capsys.readouterr().err
     assert "is not a directory" in err and len(err.strip().splitlines()) == 1
+
+
+def test_export_refuses_an_empty_folder_name(tmp_path, capsys, monkeypatch):
+    """``--out ''`` wrote every file into the working directory; the docs say it is refused
+    (the API too)."""
+    from snakecg.export import export_library
+
+    monkeypatch.chdir(tmp_path)
+    for value in ("", "  "):
+        with pytest.raises(SystemExit) as info:  # refused by the parser
+            main(["export", "--joints", "1", "--out", value])
+        assert info.value.code == 2
+        err = capsys.readouterr().err
+        assert "argument --out: empty value" in err and len(err.splitlines()) == 1
+    for value, words in (("", "out must name a folder"), (None, "out must be a folder path"),
+                         (3, "out must be a folder path")):
+        with pytest.raises(snakecg.InputError, match=words):
+            export_library(snakecg.Scene(snakecg.Robot(joints=1)), value)
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_the_build_hint_is_shell_quoted(tmp_path, capsys):
+    """The printed ``make -C DIR`` hint, read back by a POSIX shell's rules (shlex), names the
+    folder exactly, whatever characters it holds."""
+    import shlex
+
+    out = tmp_path / "my snake $(touch pwned) 'x'"
+    assert main(["export", "--joints", "1", "--out", str(out)]) == 0
+    hint = capsys.readouterr().out.splitlines()[-1]
+    words = shlex.split(hint)
+    assert words[:3] == ["build:", "make", "-C"] and words[3] == str(out)
+    assert words[4:] == ["run:", str(out / "example")]

@@ -27,7 +27,6 @@ import signal
 import stat
 import subprocess
 import sys
-import textwrap
 import time
 import warnings
 from pathlib import Path
@@ -521,11 +520,13 @@ def test_tampered_model_py_is_never_executed(fresh_cache, monkeypatch, tmp_path)
 
 
 @pytest.mark.parametrize("backend", ["compiled", "casadi"])
-def test_manifest_signature_that_disagrees_with_the_code_is_refused(backend, fresh_cache,
+def test_manifest_signature_that_disagrees_with_the_code_is_rebuilt(backend, fresh_cache,
                                                                     monkeypatch):
     """The manifest is JSON, not hashed itself: an edit that keeps it valid JSON and leaves
-    the files' hashes alone must not size the output buffers of the compiled drivers (they
-    would write past their ends); the functions' own signatures are compared on loading."""
+    the files' hashes alone never sizes the output buffers of the compiled drivers (they
+    would write past their ends): the functions' own signatures are compared on loading, and
+    the model folder is then generated again (docs/reliability.md), reported once in one
+    line. The rebuilt model's mass matrix obeys the physics: M_xx = M_yy = m_1 + m_2."""
     if backend == "compiled" and native.find_compiler() is None:
         pytest.skip("no C compiler on this machine")
     folder = _cached_copy_of_package(1, monkeypatch)
@@ -536,11 +537,26 @@ def test_manifest_signature_that_disagrees_with_the_code_is_refused(backend, fre
     _edit_manifest(folder, shrink)
     artifacts.verify_model_dir(folder, 1)  # the files still match their hashes
     monkeypatch.setattr(snakecg.model, "_BACKENDS", {})
-    with pytest.raises(ArtifactError, match=r"the generated functions do not match "
-                                            r"manifest\.json of the model for joints=1: "
-                                            r"mass_matrix output '\w+' is 4x4, the manifest "
-                                            r"says 3x4\. The model folder is damaged"):
-        snakecg.load(snakecg.Robot(joints=1), backend=backend)
+    robot = snakecg.Robot(joints=1, mass=(2.0, 3.0))
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        model = snakecg.load(robot, backend=backend)
+    lines = [str(w.message) for w in caught if "rebuilding" in str(w.message)]
+    assert len(lines) == 1 and "\n" not in lines[0], lines
+    assert re.search(r"corrupted cache entry, rebuilding: .*the generated functions do not "
+                     r"match manifest\.json of the model for joints=1: mass_matrix output "
+                     r"'\w+' is 4x4, the manifest says 3x4", lines[0]), lines[0]
+    M = model.mass_matrix(np.array([0.1, -0.2, 0.3, 0.4]))
+    assert M[0, 0] == pytest.approx(5.0) and M[1, 1] == pytest.approx(5.0)
+    rows = {f["name"]: f["outputs"][0]["rows"] for f in
+            json.loads((folder / "manifest.json").read_text())["functions"]}
+    assert rows["mass_matrix"] == 4  # the folder was generated again
+    # a second load in a fresh process state: the repaired folder, no new report
+    monkeypatch.setattr(snakecg.model, "_BACKENDS", {})
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        snakecg.load(robot, backend=backend)
+    assert not [w for w in caught if "rebuilding" in str(w.message)]
 
 
 @pytest.fixture(scope="module")

@@ -509,8 +509,9 @@ def test_unknown_contact_link(link):
 
 
 def test_load_rejects_other_objects():
-    with pytest.raises(snakecg.InputError, match=r"load\(\) takes a snakecg\.Robot or "
-                                                 r"snakecg\.Scene, got int"):
+    with pytest.raises(snakecg.InputError, match=r"load\(\) takes a snakecg\.Robot, "
+                                                 r"snakecg\.Scene or snakecg\.SpatialRobot, "
+                                                 r"got int"):
         snakecg.load(3)
 
 

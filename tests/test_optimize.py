@@ -535,7 +535,9 @@ def test_cli_json_is_the_documented_schema(capsys):
     data = json.loads(out)
     assert data["schema"] == SCHEMA and data["status"] == "optimal"
     assert data["objective"] == "least_slip_push" and len(data["tau"]) == 3
-    assert data["limits"] == {"tau_max": [0.3, 0.3, 0.3], "radius": None}
+    assert data["limits"] == {"tau_max": [0.3, 0.3, 0.3], "tau_max_from": "argument",
+                              "radius": None}
+    assert data["off_direction_deg"] == pytest.approx(0.0, abs=1e-6) and data["note"] == ""
     fields = _documented_fields()
     got = set(data) | set(data["analysis"]) | set(data["certificate"])
     assert got == fields, got ^ fields
@@ -557,7 +559,7 @@ def test_cli_infeasible_exits_1_with_the_reason(capsys):
     assert data["status"] == "infeasible" and data["binding"] and "binding:" in data["reason"]
     status, out = _run(["optimize", "max-sr", "--joints", "2", "--q", "0,0,0,-135deg,-135deg",
                         "--scenario", "wheels", "--allow-slide"])
-    assert status == 0 and out.startswith("max-sr: optimal")
+    assert status == 0 and out.startswith("max_sr: optimal")
 
 
 def test_cli_input_errors_are_one_line(capsys):
@@ -574,3 +576,51 @@ def test_cli_input_errors_are_one_line(capsys):
         assert main(argv) == 2
         err = capsys.readouterr().err
         assert len(err.splitlines()) == 1 and text in err, err
+
+
+@pytest.mark.parametrize("objective", ["least_slip_push", "strongest_push"])
+def test_a_push_off_the_contact_normal_says_where_the_object_goes(objective):
+    """A frictionless point contact pushes along its normal n = (-sin phi_1, cos phi_1) only
+    (assumptions 2, 6), so a push asked 30 degrees off n is optimal for ``d . a_obj`` but
+    moves the object along n: the result says so, 30 degrees off."""
+    scene = snakecg.Scene(snakecg.Robot(joints=3), scenario="frictionless")
+    model = snakecg.load(scene)
+    theta = 0.4
+    q = np.array([0.1, -0.2, theta, 0.5, -0.7, 0.9])
+    n = np.array([-np.sin(theta), np.cos(theta)])
+    off = np.radians(30)
+    d = np.array([[np.cos(off), -np.sin(off)], [np.sin(off), np.cos(off)]]) @ n
+    task = {"a_min": 1e-4} if objective == "least_slip_push" else {}
+    res = model.optimize(q, objective, direction=d, **task)
+    assert res.status == "optimal", res.reason
+    a = res.analysis.a_obj[:2]
+    assert abs(a[0] * n[1] - a[1] * n[0]) <= 1e-12 * np.linalg.norm(a)  # along the normal
+    assert res.off_direction_deg == pytest.approx(30.0, abs=1e-9)
+    assert "30 deg off the requested direction" in res.note
+    data = res.to_dict()
+    assert data["off_direction_deg"] == pytest.approx(30.0) and data["note"] == res.note
+    along = model.optimize(q, objective, direction=n, **task)
+    assert along.off_direction_deg == pytest.approx(0.0, abs=1e-6) and along.note == ""
+    assert model.optimize(q, "max_sr").off_direction_deg is None
+
+
+def test_tau_max_of_the_wrong_type_is_named_as_such():
+    model = snakecg.load(snakecg.Scene(snakecg.Robot(joints=2)))
+    q = np.zeros(5)
+    with pytest.raises(snakecg.InputError, match=r"tau_max must be a positive number \(N m\), "
+                       r"2 of them \(one per joint\), 'robot' \(the robot's effort limits\) "
+                       r"or None \(no torque box\); got '0.2' of type str"):
+        model.optimize(q, "max_sr", tau_max="0.2")
+    with pytest.raises(snakecg.InputError, match=r"tau_max must be .* got \['0.2', 1\] "
+                       r"\(not numbers\)"):
+        model.optimize(q, "max_sr", tau_max=["0.2", 1])
+
+
+def test_cli_takes_either_spelling_and_prints_one(capsys):
+    q = "0,0,0,30deg,-45deg"
+    for spelling in ("max-sr", "max_sr"):
+        status, out = _run(["optimize", spelling, "--joints", "2", "--q", q, "--json"])
+        assert status == 0 and json.loads(out)["objective"] == "max_sr"
+    status, out = _run(["optimize", "strongest_push", "--joints", "2", "--q", q,
+                        "--scenario", "ideal-wheels"])
+    assert status == 0 and out.startswith("strongest_push: optimal")

@@ -31,13 +31,15 @@ def fake_notebook(monkeypatch):
     return stderr
 
 
-def test_off_a_terminal_and_outside_a_notebook_it_is_quiet(monkeypatch):
+def test_off_a_terminal_and_outside_a_notebook_bars_are_off_and_steps_print(monkeypatch):
     monkeypatch.delenv("SNAKECG_PROGRESS", raising=False)
-    monkeypatch.setattr(sys, "stderr", io.StringIO())
+    err = io.StringIO()
+    monkeypatch.setattr(sys, "stderr", err)
     shell = types.SimpleNamespace(config={})  # plain IPython in a terminal: no kernel
     monkeypatch.setitem(sys.modules, "IPython", types.SimpleNamespace(get_ipython=lambda: shell))
     assert not progress.in_notebook() and not progress.progress_enabled()
-    assert progress.resolve(None) is None
+    progress.resolve(None)("compiling 13 C files")  # step lines go to every stream
+    assert err.getvalue().endswith("compiling 13 C files\n")
 
 
 def test_a_notebook_shows_steps_and_bars(fake_notebook, monkeypatch):

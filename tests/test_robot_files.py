@@ -34,7 +34,8 @@ def write(tmp_path, text: str, name="robot.toml") -> Path:
 
 def test_example_file():
     scene = Scene.from_toml(ROOT / "examples" / "robot.toml")
-    assert scene.robot == Robot(joints=3, mass=1.0, length=0.15, inertia=0.002)
+    assert scene.robot == Robot(joints=3, mass=1.0, length=0.15, inertia=0.002,
+                                joint_limits=(-2.6, 2.6), effort_limits=1.0)
     assert scene.robot.name == "table1-three-joints"
     assert (scene.scenario, scene.kappa, scene.mu, scene.contact_link, scene.side) == \
         ("wheels", 100.0, 0.1, 1, "left")
@@ -78,8 +79,16 @@ SINGLE_PROBLEMS = [
      "com of link 2 is 0.2 m, beyond its length 0.1 m"),
     (GOOD_ROBOT + "name = 5\n", "name must be a string, got 5"),
     (GOOD_ROBOT + "colour = \"red\"\n",
-     "unknown keys in [robot]: ['colour'] (allowed: ['com', 'inertia', 'joints', 'length', "
-     "'mass', 'name'])"),
+     "unknown keys in [robot]: ['colour'] (allowed: ['com', 'effort_limits', 'inertia', "
+     "'joint_limits', 'joints', 'length', 'mass', 'name'])"),
+    (GOOD_ROBOT + "joint_limits = [1.0, -1.0]\n",
+     "joint_limits must hold pairs lower < upper (rad): lower 1 >= upper -1"),
+    (GOOD_ROBOT + "joint_limits = [[-1.0, 1.0]]\n",
+     "joint_limits has 1 pair(s), expected one pair or 2 (one per joint)"),
+    (GOOD_ROBOT + "effort_limits = [1.0, 0.0]\n",
+     "effort_limits must be positive finite torques (N m), got 0.0 (joint 2)"),
+    (GOOD_ROBOT + "effort_limits = [1.0, 2.0, 3.0]\n",
+     "effort_limits has 3 value(s), expected one number or 2 (one per joint)"),
     ("version = 2\n" + GOOD_ROBOT, "unknown tables or keys ['version'] at the top level "
                                    "(expected the tables [robot] and [scene])"),
     (GOOD_ROBOT + "[scen]\nkappa = 1\n", "unknown tables or keys ['scen'] at the top level"),

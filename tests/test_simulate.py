@@ -27,6 +27,11 @@ from snakecg import cli
 from snakecg.simulate import SimulationError, State, save_figures, simulate
 
 Q3 = np.array([0.0, 0.0, 0.0, 0.5, -0.6, 0.4])
+#: Most runs here test the model's equations over pushes in which the contact link turns
+#: against the object. The model keeps the contact point fixed in the object, so the link
+#: enters the object within a millisecond (test_simulate_penetration.py): the contact check
+#: reports it (the status) and the equations are integrated on, unchanged.
+EQUATIONS = {"geometry_check": "report"}
 TAU3 = np.array([0.05, 0.0, -0.02])
 Q2 = np.array([0.0, 0.0, 0.0, 0.5, -0.6])
 
@@ -79,8 +84,8 @@ def test_frictionless_momentum_com_relation(models):
     """No ground friction: total linear momentum is conserved, so from rest the snake's COM
     moves by -kappa m / M_snake times the object's displacement, at every sample."""
     sm, ref = models(3, "frictionless", 10.0)
-    traj = sm.simulate(Q3, TAU3, 0.5, output_dt=0.05)
-    assert traj.summary["status"] == "completed"
+    traj = sm.simulate(Q3, TAU3, 0.5, output_dt=0.05, **EQUATIONS)
+    assert traj.summary["status"] == "penetration" and traj.t[-1] == 0.5
     assert traj.contact.all() and not traj.events  # held throughout: a real push
     d_obj = traj.q_obj[:, :2] - traj.q_obj[0, :2]
     assert np.hypot(*d_obj[-1]) > 5e-3  # the object moved several mm
@@ -112,7 +117,7 @@ def test_work_of_constant_torque_equals_kinetic_energy(models, scenario):
     a constant torque, tau . (q_joints(t) - q_joints(0)), equals the kinetic energy gained."""
     sm, ref = models(3, scenario, 10.0)
     tau = 2 * TAU3
-    traj = sm.simulate(Q3, tau, 0.4, output_dt=0.1)
+    traj = sm.simulate(Q3, tau, 0.4, output_dt=0.1, **EQUATIONS)
     assert traj.contact.all() and not traj.events
     for i in range(traj.n_samples):
         work = tau @ (traj.q[i, 3:] - traj.q[0, 3:])
@@ -201,7 +206,7 @@ def test_ideal_wheels_residuals_bounded_and_reported(models):
     reference model at every sample, stay at integration-error level; the summary reports
     them (its maxima match the recomputed ones)."""
     sm, ref = models(3, "ideal_wheels", 10.0)
-    traj = sm.simulate(Q3, 3 * TAU3, 0.5, output_dt=0.025)
+    traj = sm.simulate(Q3, 3 * TAU3, 0.5, output_dt=0.025, **EQUATIONS)
     assert traj.contact.all()
     u = np.array([row_velocities(ref, traj, i)[2:] for i in range(traj.n_samples)])
     gap = np.array([ref.gap(np.concatenate([traj.q[i], traj.q_obj[i]]), traj.rho)
@@ -225,13 +230,13 @@ def test_measured_convergence_order(models, method, order, steps):
     falls as h^p with the method's order p."""
     sm, _ = models(3, "frictionless", 10.0)
     T = 0.2
-    ref = sm.simulate(Q3, TAU3, T, rtol=1e-13, atol=1e-15, output_dt=T)
+    ref = sm.simulate(Q3, TAU3, T, rtol=1e-13, atol=1e-15, output_dt=T, **EQUATIONS)
 
     def error(tr):
         return max(np.abs(tr.q[-1] - ref.q[-1]).max(), np.abs(tr.q_obj[-1] - ref.q_obj[-1]).max())
 
-    errs = np.array([error(sm.simulate(Q3, TAU3, T, method=method, fixed_step=h, output_dt=T))
-                     for h in steps])
+    errs = np.array([error(sm.simulate(Q3, TAU3, T, method=method, fixed_step=h, output_dt=T,
+                                       **EQUATIONS)) for h in steps])
     p = np.log2(errs[:-1] / errs[1:])
     assert np.all(np.abs(p - order) < 0.5), (errs, p)
     assert errs[-1] > 1e-12  # still far above the reference's own error
@@ -241,10 +246,10 @@ def test_tolerance_convergence(models):
     """Adaptive runs approach the reference as the tolerance tightens."""
     sm, _ = models(3, "wheels", 10.0)
     T = 0.3
-    ref = sm.simulate(Q3, TAU3, T, rtol=1e-13, atol=1e-15, output_dt=T)
+    ref = sm.simulate(Q3, TAU3, T, rtol=1e-13, atol=1e-15, output_dt=T, **EQUATIONS)
     errs = []
     for rtol in (1e-5, 1e-7, 1e-9):
-        tr = sm.simulate(Q3, TAU3, T, rtol=rtol, atol=rtol * 1e-2, output_dt=T)
+        tr = sm.simulate(Q3, TAU3, T, rtol=rtol, atol=rtol * 1e-2, output_dt=T, **EQUATIONS)
         errs.append(np.abs(tr.q[-1] - ref.q[-1]).max())
     assert errs[0] > errs[1] > errs[2]
     assert errs[2] < 1e-9
@@ -289,7 +294,7 @@ def test_contact_lost_at_predicted_time(models, scenario):
     def law(t):
         return tau0 * (1 - t / t1)
 
-    traj = sm.simulate(Q2, law, 0.12)
+    traj = sm.simulate(Q2, law, 0.12, **EQUATIONS)
     ev = [e for e in traj.events if e.kind == "separation"]
     assert len(ev) == 1
     t_ref = _forward_reference(sm, Q2, law, 0.12, lambda r: r.lam[0] - r.w[0])
@@ -315,7 +320,7 @@ def test_wheel_breaks_away_at_its_friction_bound(models):
     def law(t):
         return tau_b * t / t1
 
-    traj = sm.simulate(Q3, law, 0.13, output_dt=0.002)
+    traj = sm.simulate(Q3, law, 0.13, output_dt=0.002, **EQUATIONS)
     ev = [e for e in traj.events if e.kind == "breakaway"]
     assert ev and ev[0].row == row
     bound = sm.bounds[row]
@@ -343,7 +348,7 @@ def test_sliding_wheels_stick_again_and_friction_work(models):
     def law(t):
         return 1.5 * scale * TAU3 if t < 0.05 else np.zeros(3)
 
-    traj = sm.simulate(Q3, law, 0.2, control_period=0.05, output_dt=0.002)
+    traj = sm.simulate(Q3, law, 0.2, control_period=0.05, output_dt=0.002, **EQUATIONS)
     assert traj.summary["initial_mode"].count("slide") >= 1
     sticks = [e for e in traj.events if e.kind == "stick"]
     assert sticks
@@ -371,7 +376,9 @@ def test_contact_point_leaves_the_link(models):
     the contact ends when the contact point passes the link's front end, and never closes
     again."""
     sm, _ = models(2, "frictionless", 10.0, contact_offset=0.12)
-    traj = sm.simulate(Q2, np.zeros(2), 0.2, v_obj0=[0.3, 0.0, 0.0], f_obj=[0.0, -0.5, 0.0])
+    # (link 2 lies in the object from the start: the check is off)
+    traj = sm.simulate(Q2, np.zeros(2), 0.2, v_obj0=[0.3, 0.0, 0.0], f_obj=[0.0, -0.5, 0.0],
+                       geometry_check="off")
     kinds = [e.kind for e in traj.events]
     assert kinds == ["off_link"]
     i = np.flatnonzero(traj.t == traj.events[0].t)
@@ -387,7 +394,7 @@ def test_displacement_slippage_ratio_starts_at_instant_sr(models):
     slippage ratio tends to the paper's instantaneous sr (eq. 30) at t = 0."""
     sm, _ = models(3, "wheels", 10.0)
     sr0 = sm.forward(Q3, TAU3).sr
-    traj = sm.simulate(Q3, TAU3, 2e-3, output_dt=5e-4)
+    traj = sm.simulate(Q3, TAU3, 2e-3, output_dt=5e-4, **EQUATIONS)
     assert np.isnan(traj.sr_displacement[0])
     assert traj.sr[0] == pytest.approx(sr0, rel=1e-12)
     assert traj.sr_displacement[1] == pytest.approx(sr0, rel=1e-3)
@@ -396,8 +403,8 @@ def test_displacement_slippage_ratio_starts_at_instant_sr(models):
 def test_torque_inputs_constant_time_and_feedback_agree(models):
     sm, _ = models(3, "ideal_wheels", 10.0)
     # the same integrator for all three (a constant would take the compiled segments)
-    a = sm.simulate(Q3, TAU3, 0.2, output_dt=0.05, integrator="scipy")
-    b = sm.simulate(Q3, lambda t: TAU3, 0.2, output_dt=0.05)
+    a = sm.simulate(Q3, TAU3, 0.2, output_dt=0.05, integrator="scipy", **EQUATIONS)
+    b = sm.simulate(Q3, lambda t: TAU3, 0.2, output_dt=0.05, **EQUATIONS)
     seen = []
 
     def law(t, state):
@@ -405,7 +412,7 @@ def test_torque_inputs_constant_time_and_feedback_agree(models):
         seen.append(state.contact)
         return TAU3
 
-    c = sm.simulate(Q3, law, 0.2, output_dt=0.05)
+    c = sm.simulate(Q3, law, 0.2, output_dt=0.05, **EQUATIONS)
     for other in (b, c):
         np.testing.assert_allclose(other.q, a.q, rtol=0, atol=1e-13)
     assert all(seen)
@@ -419,7 +426,7 @@ def test_zero_order_hold_calls_the_law_once_per_period(models):
         calls.append(t)
         return -0.5 * state.v[3:] + TAU3
 
-    traj = sm.simulate(Q3, law, 0.1, control_period=0.02, output_dt=0.005)
+    traj = sm.simulate(Q3, law, 0.1, control_period=0.02, output_dt=0.005, **EQUATIONS)
     np.testing.assert_allclose(calls, [0.0, 0.02, 0.04, 0.06, 0.08], atol=1e-12)
     for k in range(5):
         inside = (traj.t > 0.02 * k + 1e-9) & (traj.t < 0.02 * (k + 1) - 1e-9)
@@ -436,7 +443,7 @@ def test_least_slip_push_controller(models):
 
     ctl = least_slip_push_controller(sm, a_min=0.02)
     T = 0.2
-    traj = sm.simulate(Q3, ctl, T, control_period=0.01, output_dt=0.01)
+    traj = sm.simulate(Q3, ctl, T, control_period=0.01, output_dt=0.01, **EQUATIONS)
     assert [s for _, s, _ in ctl.history] == ["optimal"] * 20
     assert (traj.wheel_state[:, 1:] == "stick").all() and traj.contact.all()
     d = traj.q_obj[-1, 1] - traj.q_obj[0, 1]  # the normal is +y at theta = 0
@@ -469,11 +476,13 @@ def test_bad_input(models):
 
 def test_cli_json_and_errors(tmp_path, capsys):
     rc = cli.main(["simulate", "--joints", "2", "--q", "0,0,0,0.5,-0.6", "--tau", "0.05,-0.02",
-                   "--duration", "0.1", "--json", "--no-figures", "--out", str(tmp_path)])
+                   "--duration", "0.1", "--json", "--no-figures", "--out", str(tmp_path),
+                   "--geometry-check", "off"])
     out = capsys.readouterr().out
     assert rc == 0
     s = json.loads(out)
-    assert s["schema"] == "snakecg.simulate/1" and s["status"] == "completed"
+    assert s["schema"] == "snakecg.simulate/1"
+    assert s["status"] == "completed (geometry not checked)"
     assert json.loads((tmp_path / "summary.json").read_text())["duration"] == 0.1
     data = np.load(tmp_path / "trajectory.npz")
     assert data["q"].shape[1] == 5 and data["t"][-1] == pytest.approx(0.1)
@@ -489,7 +498,7 @@ def test_figures_and_animation(models, tmp_path):
     from PIL import Image
 
     sm, _ = models(3, "wheels", 10.0)
-    traj = sm.simulate(Q3, 2 * TAU3, 0.2, output_dt=0.005)
+    traj = sm.simulate(Q3, 2 * TAU3, 0.2, output_dt=0.005, **EQUATIONS)
     paths = save_figures(traj, tmp_path, frames=6, dpi=60)
     for name in ("displacement", "slippage", "energy", "forces"):
         with Image.open(paths[name]) as im:
@@ -502,9 +511,10 @@ def test_max_events_stops_the_run_and_says_so(models):
     sm, _ = models(3, "wheels", 10.0)
     L = sm.maps(Q3)["lam_from_tau"] @ TAU3
     tau = 4 * TAU3 / np.max(np.abs(L[2:]) / sm.bounds[2:])
-    full = sm.simulate(Q3, tau, 0.6, output_dt=0.05)
-    assert len(full.events) >= 2 and full.summary["status"] == "completed"
-    cut = sm.simulate(Q3, tau, 0.6, output_dt=0.05, max_events=1)
+    full = sm.simulate(Q3, tau, 0.6, output_dt=0.05, geometry_check="off")
+    assert len(full.events) >= 2
+    assert full.summary["status"] == "completed (geometry not checked)"
+    cut = sm.simulate(Q3, tau, 0.6, output_dt=0.05, max_events=1, geometry_check="off")
     assert cut.summary["status"].startswith("stopped at t = ")
     assert cut.t[-1] < 0.6 and len(cut.events) >= 1
 
@@ -517,9 +527,9 @@ def test_long_run_with_many_transitions(models):
     sm, ref = models(3, "wheels", 10.0)
     N = sm.maps(Q3)["input_metric"]
     tau = 4 * TAU3 / np.sqrt(TAU3 @ N @ TAU3)
-    traj = sm.simulate(Q3, tau, 5.0, output_dt=0.01)
+    traj = sm.simulate(Q3, tau, 5.0, output_dt=0.01, **EQUATIONS)
     s = traj.summary
-    assert s["status"] == "completed"
+    assert s["status"] == "penetration" and traj.t[-1] == 5.0
     kinds = set(s["event_counts"])
     assert {"breakaway", "stick"} <= kinds
     # the run is long and chaotic (many friction reversals): the budget closes relative to the

@@ -82,7 +82,8 @@ def test_deferred_fields_against_dense_reference(models, scenario, monkeypatch):
     sm, ref = models(scenario)
     rng = np.random.default_rng(4)
     v0 = 0.2 * rng.normal(size=6)
-    traj = sm.simulate(Q3, _push(sm, 4.0), 0.3, v0=v0, output_dt=0.02)
+    traj = sm.simulate(Q3, _push(sm, 4.0), 0.3, v0=v0, output_dt=0.02,
+                       geometry_check="report")
     assert set(DEFERRED) <= set(traj.__dict__["_deferred"])
     q, v = traj.q.copy(), traj.v.copy()
     q_obj, v_obj = traj.q_obj.copy(), traj.v_obj.copy()
@@ -112,7 +113,8 @@ def test_deferred_fields_against_dense_reference(models, scenario, monkeypatch):
     # the mode fields against the Python loop's (eager) ones
     with monkeypatch.context() as m:
         m.setattr(Simulator, "_run_compiled", lambda self, *args: None)
-        loop = sm.simulate(Q3, _push(sm, 4.0), 0.3, v0=v0, output_dt=0.02)
+        loop = sm.simulate(Q3, _push(sm, 4.0), 0.3, v0=v0, output_dt=0.02,
+                           geometry_check="report")
     assert "_deferred" not in loop.__dict__ or "contact" not in loop.__dict__["_deferred"]
     assert (traj.contact == loop.contact).all()
     assert (traj.wheel_state == loop.wheel_state).all()

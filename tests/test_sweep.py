@@ -1,6 +1,8 @@
 """Sweeps on Dask into Zarr (snakecg.sweep, `snakecg sweep`).
 
-A local cluster of 2 worker processes on the loopback interface serves the module. The
+A local cluster of 2 worker processes on the loopback interface (TLS, as snakecg.sweep starts
+its own) serves the module; a plain-TCP cluster in threads stands for a cluster started by
+hand for the --scheduler tests. The
 reference is the package's in-process batch evaluation, ``model.extremes(Q)`` and
 ``model.com_polar(Q)`` on the same configurations built here independently (NumPy meshgrid);
 the distributed, chunked, resumed path must reproduce it to 1e-12, and a run interrupted by a
@@ -43,11 +45,27 @@ def client():
 
     c, close = connect(workers=2)
     assert isinstance(c, distributed.Client)
-    assert all(a.startswith("tcp://127.0.0.1:") for a in c.scheduler_info()["workers"])
+    assert all(a.startswith("tls://127.0.0.1:") for a in c.scheduler_info()["workers"])
     try:
         yield c
     finally:
         close()
+
+
+@pytest.fixture(scope="module")
+def tcp_scheduler():
+    """The address of a plain-TCP Dask scheduler with one worker thread, as a cluster started
+    by hand with `dask scheduler` and `dask worker` (what --scheduler connects to)."""
+    with distributed.LocalCluster(n_workers=1, threads_per_worker=1, processes=False,
+                                  protocol="tcp://", host="127.0.0.1",
+                                  dashboard_address=None) as cluster:
+        yield cluster.scheduler_address
+
+
+def recorded(store) -> int:
+    """Chunks whose digests are all recorded, read with Zarr."""
+    d = zarr.open_group(str(store), mode="r")["chunk_digest"][:]
+    return int(np.count_nonzero((d != 0).all(axis=1)))
 
 
 def scene(scenario, joints=2):
@@ -224,7 +242,8 @@ def test_default_chunk_sweep_spreads_and_resumes_with_its_own_chunk(client, tmp_
     v = np.arange(-135, 136, 10) * DEG
     assert_matches(data, reference(scene("wheels"), mesh(v, v)))
     # the bytes of results per configuration of the rule's memory cap
-    per = sum(root[k].nbytes for k in root.array_keys() if k != "chunk_digest") / 784
+    per = sum(root[k].nbytes for k in root.array_keys()
+              if k not in ("chunk_digest", "joint")) / 784
     assert per == plan_mod.result_bytes(2)
     for i in (0, 5, 13):
         root["chunk_digest"][i] = 0
@@ -282,8 +301,7 @@ def test_killed_sweep_resumes_with_identical_results(client, tmp_path, uninterru
             p.kill()
         except psutil.NoSuchProcess:
             pass
-    digests = zarr.open_group(str(store), mode="r")["chunk_digest"][:]
-    done = int(np.count_nonzero(digests))
+    done = recorded(store)
     assert 0 < done < 49, done
     res = snakecg.sweep(scene("wheels"), store=store, client=client, progress=False,
                         **WHEELS_GRID)
@@ -335,7 +353,7 @@ def test_killed_worker_the_sweep_completes_identically(client, tmp_path, uninter
         time.sleep(0.05)
         if not (store / "zarr.json").exists():
             continue
-        done = np.count_nonzero(zarr.open_group(str(store), mode="r")["chunk_digest"][:])
+        done = recorded(store)
         busy = [w for w, keys in client.processing().items() if keys]
         if done >= 2 and busy:
             victim = busy[0]
@@ -375,16 +393,21 @@ def test_workers_write_the_data_and_the_client_only_the_digests(client, tmp_path
     workers_write = sum(client.nthreads().values()) >= os.cpu_count()
     assert len(calls) == (0 if workers_write else 49)
     assert_identical(read(tmp_path / "d.zarr"), uninterrupted)
-    # the digests recorded by this process are those of the data the workers wrote
+    # the digests recorded by this process are those of the files the workers wrote: the
+    # documented digest, XXH3-64 of each array's chunk file as stored, low bit set
     for name in ("w.zarr", "c.zarr"):
         root = zarr.open_group(str(tmp_path / name), mode="r")
         for i in (0, 48):
-            start, stop = 16 * i, min(16 * i + 16, 784)
-            assert int(root["chunk_digest"][i]) == store_mod.digest(
-                {k: uninterrupted[k][start:stop] for k in store_mod.array_names()})
-            # and the documented digest: XXH3-64 of the arrays' bytes in order, low bit set
-            assert int(root["chunk_digest"][i]) == _documented_digest(
-                uninterrupted, start, stop, xxhash.xxh3_64())
+            assert [int(x) for x in root["chunk_digest"][i]] == [
+                _file_digest(tmp_path / name / k / "c" / str(i) / "0"
+                             if k == "q" or k.startswith("tau_") else
+                             tmp_path / name / k / "c" / str(i))
+                for k in store_mod.array_names()]
+
+
+def _file_digest(path) -> int:
+    """The digest docs/sweep.md defines for a chunk file of a format-3 store."""
+    return int.from_bytes(xxhash.xxh3_64(Path(path).read_bytes()).digest(), "little") | 1
 
 
 def _documented_digest(arrays, start, stop, h) -> int:
@@ -398,10 +421,12 @@ def _documented_digest(arrays, start, stop, h) -> int:
     return int.from_bytes(h.digest(), "little") | 1
 
 
-def test_chunks_written_as_raw_bytes_are_zarrs_own_encoding(tmp_path):
-    """A whole chunk goes to the store as its raw bytes, the last partial one through Zarr:
-    every chunk file is byte for byte the file Zarr itself writes for the same values, and
-    reads back equal (2-D float, 1-D float with NaN, bool)."""
+def test_chunk_files_are_zarrs_own_encoding(tmp_path):
+    """Every chunk is encoded here and handed to Zarr's store as bytes (the last, partial one
+    padded with the fill value): every chunk file is byte for byte the file Zarr itself
+    writes for the same values (Blosc-compressed in format 3 but for the torques), reads back
+    equal through Zarr,
+    and the digests returned are XXH3-64 of the files (2-D float, 1-D float with NaN, bool)."""
     from snakecg.sweeps import store as store_mod
 
     rng = np.random.default_rng(5)
@@ -413,14 +438,21 @@ def test_chunks_written_as_raw_bytes_are_zarrs_own_encoding(tmp_path):
     ours = store_mod.create(tmp_path / "ours.zarr", {"format": store_mod.FORMAT}, n, chunk,
                             joints)
     opened = store_mod.handles(ours)
-    assert all(store_mod._raw_bytes(opened[k]) for k in store_mod.array_names())
+    assert all(opened["specs"][k].blosc == (None if k.startswith("tau_") else
+                                            ("lz4", 5, "bitshuffle"))
+               for k in store_mod.array_names())
     theirs = store_mod.handles(store_mod.create(tmp_path / "theirs.zarr",
                                                 {"format": store_mod.FORMAT}, n, chunk, joints))
+    stored = dict(arrays, q=np.rad2deg(arrays["q"]))  # format 3 keeps degrees
     for i, (start, stop) in enumerate([(0, 16), (16, 32), (32, 37)]):
         part = {k: v[start:stop] for k, v in arrays.items()}
-        assert store_mod.write_data(opened, start, stop, part) == store_mod.digest(part)
-        for k in store_mod.array_names():
-            theirs[k][start:stop] = part[k]
+        got = store_mod.write_data(opened, start, stop, part)
+        for k in store_mod.array_names():  # every chunk, also one of fill values only
+            theirs[k].with_config({"write_empty_chunks": True})[start:stop] = \
+                stored[k][start:stop]
+        files = [tmp_path / "ours.zarr" / k / "c" / str(i) / ("0" if arrays[k].ndim == 2 else "")
+                 for k in store_mod.array_names()]  # Path / "" is the path itself
+        assert list(got) == [_file_digest(f) for f in files]
     for k in store_mod.array_names():
         files = sorted(p.relative_to(tmp_path / "ours.zarr" / k)
                        for p in (tmp_path / "ours.zarr" / k).rglob("*") if p.is_file())
@@ -428,52 +460,128 @@ def test_chunks_written_as_raw_bytes_are_zarrs_own_encoding(tmp_path):
         for f in files:
             assert (tmp_path / "ours.zarr" / k / f).read_bytes() == \
                 (tmp_path / "theirs.zarr" / k / f).read_bytes(), (k, f)
-        np.testing.assert_array_equal(ours[k][:], arrays[k], err_msg=k)
+        np.testing.assert_array_equal(ours[k][:], stored[k], err_msg=k)
 
 
 def test_digests_recorded_together_across_blocks_of_the_digest_array(tmp_path):
-    """The digests of many chunks are written at once (one write per block of 4096 entries
-    of chunk_digest); the others stay 0."""
+    """The digests of many chunks are written at once (one write per block of 4096 rows
+    of chunk_digest, a row per chunk, one digest per array); the others stay 0."""
     from snakecg.sweeps import store as store_mod
 
     root = store_mod.create(tmp_path / "d.zarr", {"format": store_mod.FORMAT}, 9000, 1, 2)
     opened = store_mod.handles(root)
-    recorded = {0: 3, 4095: 2**64 - 1, 4096: 7, 8191: 11, 8999: 13}
-    store_mod.record(opened, recorded)
+    k = len(store_mod.array_names())
+    recorded_ = {i: tuple(range(d, d + k)) for i, d in
+                 ((0, 3), (4095, 2**64 - k), (4096, 7), (8191, 11), (8999, 13))}
+    store_mod.record(opened, recorded_)
     store_mod.record(opened, {})
     got = zarr.open_group(str(tmp_path / "d.zarr"), mode="r")["chunk_digest"][:]
-    assert got.dtype == np.uint64 and got.shape == (9000,)
-    assert {int(i): int(got[i]) for i in np.flatnonzero(got)} == recorded
+    assert got.dtype == np.uint64 and got.shape == (9000, k)
+    assert {int(i): tuple(int(x) for x in got[i])
+            for i in np.flatnonzero(got.any(axis=1))} == recorded_
 
 
-def test_a_format_1_store_resumes_with_its_blake2b_digests(client, tmp_path, uninterrupted):
-    """A store of the earlier format (BLAKE2b-64 digests) is verified and resumed with its own
-    digest: a chunk whose data no longer matches and one without a digest are computed
-    again, the others kept; the new digests are BLAKE2b's; the reductions read it."""
+# ------------------------------------------------------------------------------------------
+# Stores of earlier formats: tests/data/sweep-format2.zarr was made by the version before
+# format 3 (2-joint frictionless, joints on -120..120 every 60 and -135, -45, 45, 135 degrees,
+# chunks of 6: 20 configurations, 4 chunks, the last partial), raw chunks, one XXH3-64 per
+# chunk of its values, joint angles in radians.
+FORMAT2 = ROOT / "tests" / "data" / "sweep-format2.zarr"
+FORMAT2_GRID = [np.deg2rad(np.arange(-120, 121, 60.0)), np.deg2rad([-135.0, -45, 45, 135])]
+
+
+def old_store(tmp_path, fmt=2, feasible=True):
+    """A copy of the format-2 store; ``fmt=1``: made a format-1 store (BLAKE2b-64 of the
+    values, as the documented digest), ``feasible=False``: one made before the feasible flag
+    (no feasible array, not in the digests)."""
+    import shutil
+
+    from snakecg.sweeps.plan import grid_plan
+    from snakecg.sweeps.run import _meta
+
+    path = tmp_path / f"format{fmt}.zarr"
+    shutil.copytree(FORMAT2, path)
+    root = zarr.open_group(str(path), mode="r+")
+    # the robot's and the scene's description as this version writes them (a field added
+    # to Robot or Scene since the store was made would refuse its resumption)
+    now = _meta(scene("frictionless"), grid_plan(2, FORMAT2_GRID, "frictionless", 6), False,
+                0.01)
+    meta = dict(root.attrs["snakecg_sweep"])
+    meta.update({k: now[k] for k in ("robot", "scene", "version")})
+    root.attrs["snakecg_sweep"] = meta
+    if fmt == 1:
+        meta = dict(meta, format="snakecg.sweep/1")
+        names = [k for k in meta["arrays"] if feasible or k != "feasible"]
+        if not feasible:
+            shutil.rmtree(path / "feasible")
+            for k in ("feasibility", "feasible_only"):
+                meta.pop(k)
+        meta["arrays"] = names
+        root.attrs.update({"snakecg_sweep": meta, "store_id": f"format-1-{feasible}"})
+        values = {k: root[k][:] for k in names}
+        root["chunk_digest"][:] = np.array(
+            [_documented_digest(values, 6 * i, min(6 * i + 6, 20),
+                                hashlib.blake2b(digest_size=8), names) for i in range(4)],
+            dtype=np.uint64)
+    return path
+
+
+def _documented_digest(arrays, start, stop, h, names=None) -> int:
+    """The digest docs/sweep.md defines for formats 1 and 2, from the arrays' bytes (copied,
+    in the documented order) and the hash object ``h``."""
+    for k in names or ("q", "com_radius", "com_angle",
+                       *(f"{p}{m}" for m in METRICS
+                         for p in ("max_", "tau_max_", "min_kept_", "tau_min_kept_")),
+                       "feasible"):
+        part = arrays[k][start:stop]
+        h.update((part.astype(np.uint8) if k == "feasible" else part).tobytes())
+    return int.from_bytes(h.digest(), "little") | 1
+
+
+@pytest.mark.parametrize("fmt", [1, 2])
+def test_stores_of_formats_1_and_2_are_read_verified_and_resumed(client, tmp_path, fmt):
+    """A store of an earlier format is read (joint angles in radians, its own digests, now
+    checked on every read) and equals the in-process reference on its grid; resumed with its
+    own digest: a chunk whose data no longer matches and one without a digest are computed
+    again, the others kept, the recorded digests are the documented ones; a reduction of a
+    damaged one is refused."""
     from snakecg.sweeps import summary
 
-    store = tmp_path / "old.zarr"
-    snakecg.sweep(scene("wheels"), store=store, client=client, progress=False, **WHEELS_GRID)
-    root = zarr.open_group(str(store), mode="r+")
-    meta = dict(root.attrs["snakecg_sweep"])
-    assert meta["format"] == "snakecg.sweep/2"
-    # made by an earlier version: another format and another identity (the workers keep
-    # the stores they wrote open, by identity)
-    root.attrs.update({"snakecg_sweep": {**meta, "format": "snakecg.sweep/1"},
-                       "store_id": "made-by-an-earlier-version"})
-    old = [_documented_digest(uninterrupted, 16 * i, min(16 * i + 16, 784),
-                              hashlib.blake2b(digest_size=8)) for i in range(49)]
-    root["chunk_digest"][:] = np.array(old, dtype=np.uint64)
-    root["chunk_digest"][5] = 0
-    root["max_sr"][16 * 9] = 1.0  # chunk 9 damaged
-    res = snakecg.sweep(scene("wheels"), store=store, client=client, progress=False,
-                        **WHEELS_GRID)
-    assert (res.computed_chunks, res.reused_chunks) == (2, 47)
-    assert_identical(read(store), uninterrupted)
-    root = zarr.open_group(str(store), mode="r")
-    assert root.attrs["snakecg_sweep"]["format"] == "snakecg.sweep/1"
-    np.testing.assert_array_equal(root["chunk_digest"][:], np.array(old, dtype=np.uint64))
-    assert summary(store)["summarized_configurations"] == 784
+    path = old_store(tmp_path, fmt)
+    sc = scene("frictionless")
+    ref = reference(sc, mesh(*FORMAT2_GRID))
+    h = hashlib.blake2b(digest_size=8) if fmt == 1 else xxhash.xxh3_64()
+    data = read(path)
+    assert_matches(data, ref)
+    before = zarr.open_group(str(path), mode="r")["chunk_digest"][:]
+    assert int(before[3]) == _documented_digest(data, 18, 20, h)
+    assert summary(path)["summarized_configurations"] == 20
+    root = zarr.open_group(str(path), mode="r+")
+    root["chunk_digest"][1] = 0
+    root["max_sr"][14] = 1.0  # chunk 2 damaged
+    with pytest.raises(snakecg.InputError, match="chunk 2 .*does not match its recorded"):
+        summary(path)
+    res = snakecg.sweep(sc, grid=FORMAT2_GRID, store=path, client=client, progress=False)
+    assert (res.chunk, res.computed_chunks, res.reused_chunks) == (6, 2, 2)
+    assert_identical(read(path), data)
+    root = zarr.open_group(str(path), mode="r")
+    assert root.attrs["snakecg_sweep"]["format"] == f"snakecg.sweep/{fmt}"
+    np.testing.assert_array_equal(root["chunk_digest"][:], before)
+
+
+def test_a_format_1_store_without_the_feasible_flag_is_read(tmp_path, capsys):
+    """A store made before the feasible flag (format 1, no feasible array, digests without
+    it) is read and summarised verified; it cannot be filtered by feasibility."""
+    from snakecg.sweeps import summary
+
+    path = old_store(tmp_path, 1, feasible=False)
+    data = read(path)
+    assert "feasible" not in data
+    assert_matches(data, reference(scene("frictionless"), mesh(*FORMAT2_GRID)))
+    s = summary(path)
+    assert s["feasible_configurations"] is None and s["summarized_configurations"] == 20
+    _one_line_error(capsys, ["sweep", "--summary", str(path), "--feasible-only"],
+                    "no feasible array")
 
 
 def test_data_written_without_its_digest_is_computed_again(client, tmp_path, uninterrupted):
@@ -511,15 +619,16 @@ def test_a_worker_never_writes_into_another_store(client, tmp_path):
     assert_identical(read(tmp_path / "a.zarr"), before)
     sid = zarr.open_group(str(tmp_path / "a.zarr"), mode="r").attrs["store_id"]
     d, n = work.evaluate_and_write(sc, plan, 1, 0.01, str(tmp_path / "a.zarr"), sid)
-    assert n == 2 and d == int(zarr.open_group(str(tmp_path / "a.zarr"),
-                                               mode="r")["chunk_digest"][1])
+    assert n == 2 and list(d) == [int(x) for x in zarr.open_group(
+        str(tmp_path / "a.zarr"), mode="r")["chunk_digest"][1]]
     with pytest.raises(snakecg.InputError, match="shared_store must be None"):
         snakecg.sweep(sc, store=tmp_path / "b.zarr", shared_store="yes")
     assert not (tmp_path / "b.zarr").exists()
 
 
 # ------------------------------------------------------------------------------------------
-def test_mismatched_store_is_refused_and_left_untouched(client, tmp_path, capsys):
+def test_mismatched_store_is_refused_and_left_untouched(client, tmp_path, capsys,
+                                                       tcp_scheduler):
     store = tmp_path / "m.zarr"
     sc = scene("frictionless")
     grid = joint_values(-90, 90, 30)
@@ -537,7 +646,7 @@ def test_mismatched_store_is_refused_and_left_untouched(client, tmp_path, capsys
     assert {p: p.stat().st_mtime_ns for p in store.rglob("*")} == files
     code = main(["sweep", "--joints", "2", "--scenario", "wheels", "--range", "90",
                  "--step", "30", "--chunk", "10", "--out", str(store),
-                 "--scheduler", client.scheduler.address])
+                 "--scheduler", tcp_scheduler])
     err = capsys.readouterr().err
     assert code == 2 and err.count("\n") == 1 and "other arguments" in err
 
@@ -575,7 +684,23 @@ def test_bad_arguments_are_one_line_errors_and_write_nothing(tmp_path, capsys, m
         (["--joints", "2", "--chunk", "0"] + out, "chunk must be"),
         (["--joints", "2"] + out + ["--workers", "0"], "workers must be"),
         (["--joints", "2"] + out + ["--scheduler", "foo://host:1"], "unknown scheduler"),
+        (["--joints", "2"] + out + ["--scheduler", "ucx://host:1"], "unknown scheduler"),
+        (["--joints", "2"] + out + ["--scheduler", "tls://host:1"], "certificates"),
+        (["--joints", "2"] + out + ["--scheduler", "tcp://host"], "tcp://HOST:PORT"),
         (["--joints", "2"] + out + ["--scheduler", "tcp://127.0.0.1:9"], "cannot reach"),
+        # sizes from the arguments, before any grid is made
+        (["--joints", "2", "--step", "1e-9"] + out, "more than 100,000 values per joint"),
+        (["--joints", "2", "--step", "1e-5"] + out, "more than 100,000 values per joint"),
+        (["--joints", "2", "--step", "0.01"] + out, "exceed the limit of 10,000,000"),
+        (["--joints", "6", "--step", "0.1", "--force"] + out, "too many for one store"),
+        (["--joints", "3", "--samples", str(10**15), "--seed", "1", "--force"] + out,
+         "too many for one store"),
+        (["--joints", "2", "--range=-1e308:1e308", "--step", "1"] + out, "larger step"),
+        (["--joints", "3", "--step", "1", "--chunk", "1", "--force"] + out,
+         "chunk 1 is out of range"),
+        (["--joints", "2", "--chunk", str(10**12), "--samples", str(10**9), "--seed", "1",
+          "--force"] + out, "MiB of results"),
+        (["--joints", "2"] + out + ["--workers", str(10**6)], "workers must be an integer"),
         (["--joints", "2", "--out", "a-file/new.zarr"], "does not exist"),
         (["--joints", "2", "--out", "a-file"], "is a file"),
         (["--joints", "2", "--out", "plain-folder"], "not a Zarr store"),
@@ -597,7 +722,7 @@ def test_bad_arguments_are_one_line_errors_and_write_nothing(tmp_path, capsys, m
     assert not (tmp_path / "g.zarr").exists()
 
 
-def test_cli_json_force_summary_and_figure(client, tmp_path, capsys):
+def test_cli_json_force_summary_and_figure(tcp_scheduler, tmp_path, capsys):
     """The CLI on a running cluster (--scheduler): strict JSON, --force above the limit,
     the summary checked against NumPy on the in-memory reference, the figure rendered."""
     from PIL import Image
@@ -605,7 +730,7 @@ def test_cli_json_force_summary_and_figure(client, tmp_path, capsys):
     store = tmp_path / "w.zarr"
     argv = ["sweep", "--joints", "2", "--scenario", "wheels", "--range=-135:135,-90:90",
             "--step", "20,30", "--chunk", "20", "--out", str(store), "--scheduler",
-            client.scheduler.address, "--json"]
+            tcp_scheduler, "--json"]
     _one_line_error(capsys, argv + ["--limit", "50"], "exceed the limit of 50")
     assert main(argv + ["--limit", "50", "--force"]) == 0
     out = json.loads(capsys.readouterr().out, parse_constant=pytest.fail)
@@ -909,16 +1034,4 @@ def test_bad_feasibility_arguments_are_one_line_errors(client, tmp_path, capsys,
 
     with pytest.raises(snakecg.InputError, match="feasible must be True, False or None"):
         summary(feasible_store, feasible="yes")
-    # a store of an earlier snakecg (no feasible array) cannot be filtered
-    old = tmp_path / "old.zarr"
-    snakecg.sweep(scene("frictionless"), grid=[0.0, 0.5], store=old, client=client,
-                  progress=False)
-    root = zarr.open_group(str(old), mode="r+")
-    meta = dict(root.attrs)["snakecg_sweep"]
-    meta["arrays"].remove("feasible")
-    for k in ("feasibility", "feasible_only"):
-        meta.pop(k)
-    root.attrs["snakecg_sweep"] = meta
-    assert summary(old)["feasible_configurations"] is None
-    _one_line_error(capsys, ["sweep", "--summary", str(old), "--feasible-only"],
-                    "no feasible array")
+

@@ -10,6 +10,8 @@ sin(theta)``, ``q_p = q - delta``, and compares ``M = T^T M_p T`` with ``T = dq_
 
 from __future__ import annotations
 
+import json
+
 import numpy as np
 import pytest
 
@@ -179,6 +181,9 @@ def test_other_structures_are_refused_naming_the_element(case, rng, tmp_path):
 
 
 def test_non_parallel_axes_and_off_axis_com_are_refused(rng, tmp_path):
+    """The planar reader refuses them; ``Robot.from_urdf`` reads them as a spatial chain."""
+    from snakecg.urdf import robot_from_urdf
+
     mass, length, com, izz = _random_links(rng, 3)
     path = write_urdf(tmp_path / "x.urdf", mass, length, com, izz)
     text = path.read_text()
@@ -187,12 +192,14 @@ def test_non_parallel_axes_and_off_axis_com_are_refused(rng, tmp_path):
     assert tilted != text
     path.write_text(tilted)
     with pytest.raises(snakecg.InputError, match=r"axis of joint 'joint2' is 11.5 deg off"):
-        snakecg.Robot.from_urdf(path)
+        robot_from_urdf(path)
+    assert isinstance(snakecg.Robot.from_urdf(path), snakecg.SpatialRobot)
     off = text.replace(f'<origin xyz="{_f(com[1])} 0 0"',
                        f'<origin xyz="{_f(com[1])} 0.01 0"')
     path.write_text(off)
     with pytest.raises(snakecg.InputError, match=r"COM of link 'link2' lies 0.01 m off"):
-        snakecg.Robot.from_urdf(path)
+        robot_from_urdf(path)
+    assert snakecg.Robot.from_urdf(path).com[1] == pytest.approx((com[1], 0.01, 0.0))
     # within the tolerance it is read (and the offset along the axis n is irrelevant)
     path.write_text(text.replace(f'<origin xyz="{_f(com[1])} 0 0"',
                                  f'<origin xyz="{_f(com[1])} 1e-9 0.02"'))
@@ -234,3 +241,133 @@ def test_the_example_urdf_is_the_example_toml_robot():
     a = snakecg.Robot.from_urdf(root / "snake3.urdf")
     b = snakecg.Robot.from_toml(root / "robot.toml")
     assert a == b and a.name == b.name  # Table 1, exactly (the lengths rounded from 1e-17)
+
+
+def _example_body() -> str:
+    from pathlib import Path
+
+    text = (Path(__file__).resolve().parents[1] / "examples" / "snake3.urdf").read_text()
+    return text[text.index("<robot"):]
+
+
+def test_dtds_and_entities_are_refused(tmp_path, capsys):
+    """An external entity would make the file read as another robot (yourdfpy's recovering
+    parser dropped the link that used it: 3 joints came back as 2); any DTD is refused, the
+    entity never resolved, billion laughs included; CLI: one line, exit 2."""
+    secret = tmp_path / "secret.txt"
+    secret.write_text("link9")
+    body = _example_body()
+    cases = {
+        "external": f'<!DOCTYPE robot [<!ENTITY x SYSTEM "file://{secret}">]>\n'
+                    + body.replace('name="link2"', 'name="&x;"'),
+        "internal": '<!DOCTYPE robot [<!ENTITY m "2.0">]>\n'
+                    + body.replace('<mass value="1.0"/>', '<mass value="&m;"/>', 1),
+        "doctype only": '<?xml version="1.0"?>\n<!DOCTYPE robot SYSTEM "robot.dtd">\n' + body,
+        "billion laughs": '<!DOCTYPE r [<!ENTITY a "aaaaaaaaaa"><!ENTITY b "&a;&a;&a;&a;&a;'
+                          '&a;&a;&a;&a;&a;"><!ENTITY c "&b;&b;&b;&b;&b;&b;&b;&b;&b;&b;">]>\n'
+                          + body.replace('name="link1"', 'name="&c;"'),
+    }
+    for name, text in cases.items():
+        path = tmp_path / f"{name.replace(' ', '_')}.urdf"
+        path.write_text(text)
+        with pytest.raises(snakecg.InputError, match="declares a DTD or entities"):
+            snakecg.Robot.from_urdf(path)
+        code = main(["forward", "--robot", str(path), "--q", "0,0,0,0,0,0", "--tau", "0,0,0"])
+        err = capsys.readouterr().err
+        assert code == 2 and len(err.splitlines()) == 1 and "DTD" in err, (name, err)
+        assert "Traceback" not in err
+    # an entity used without a declaration is not well-formed
+    path = tmp_path / "undeclared.urdf"
+    path.write_text(body.replace('name="link2"', 'name="&x;"'))
+    with pytest.raises(snakecg.InputError, match="not well-formed XML.*'x' not defined"):
+        snakecg.Robot.from_urdf(path)
+
+
+def test_bad_arguments_axes_and_names(tmp_path):
+    """from_urdf's arguments, a two-number axis and duplicate names: one clear InputError."""
+    from pathlib import Path
+
+    example = Path(__file__).resolve().parents[1] / "examples" / "snake3.urdf"
+    for bad in (None, 3, b"robot.urdf", ["a"]):
+        with pytest.raises(snakecg.InputError, match="path must be the path of a robot"):
+            snakecg.Robot.from_urdf(bad)
+    for tol, words in ((float("nan"), "finite"), (-1e-6, ">= 0"), (float("inf"), "finite"),
+                       ("1e-6", "real number")):
+        with pytest.raises(snakecg.InputError, match=f"tol must be.*{words}"):
+            snakecg.Robot.from_urdf(example, tol=tol)
+    body = _example_body()
+    for axis in ("0 1", "0 0 1 0", "0 nan 1", "0 0 inf"):
+        path = tmp_path / "axis.urdf"
+        path.write_text(body.replace('<axis xyz="0 0 1"/>', f'<axis xyz="{axis}"/>', 1))
+        with pytest.raises(snakecg.InputError,
+                           match=f"joint 'joint1' has axis '{axis}'; expected three finite"):
+            snakecg.Robot.from_urdf(path)
+    path = tmp_path / "dup.urdf"
+    path.write_text(body.replace('<link name="link3">', '<link name="link2">'))
+    with pytest.raises(snakecg.InputError, match="link names must be unique; repeated: 'link2'"):
+        snakecg.Robot.from_urdf(path)
+    path.write_text(body.replace('name="joint2"', 'name="joint1"'))
+    with pytest.raises(snakecg.InputError, match="joint names must be unique; repeated: 'joint1'"):
+        snakecg.Robot.from_urdf(path)
+    for device in ("/dev/zero", "/dev/null"):
+        with pytest.raises(snakecg.InputError, match="is a device"):
+            snakecg.Robot.from_urdf(device)
+
+
+def test_values_come_back_as_the_file_writes_them(tmp_path):
+    """A bent zero configuration puts the COMs through rotations: rounding to 15 digits left
+    ``0.0999999999999999`` in the robot and its repr; the file's decimals come back."""
+    com = [0.06, 0.05, 0.075, 0.1]
+    path = write_urdf(tmp_path / "bent.urdf", [1.0] * 4, [0.15, 0.12, 0.15, 0.2], com,
+                      [0.002] * 4, delta=np.array([0.09, 0.32, -0.77]))
+    robot = snakecg.Robot.from_urdf(path)
+    assert robot.com == tuple(com) and robot.length == (0.15, 0.12, 0.15, 0.2)
+    assert "com=(0.06, 0.05, 0.075, 0.1)" in repr(robot)
+    # limits shifted by the bend: joint 1 of write_urdf is revolute with lower -3, upper 3
+    assert robot.joint_limits[0] == (-2.91, 3.09)
+
+
+def test_a_missing_urdf_extra_names_the_install_for_this_installation(monkeypatch, tmp_path):
+    """The advice follows pip's record of the installation (direct_url.json, PEP 610)."""
+    import builtins
+    import importlib.metadata as md
+
+    from snakecg.extras import install_hint
+
+    class Dist:
+        def __init__(self, direct):
+            self.direct = direct
+
+        def read_text(self, name):
+            return None if self.direct is None else json.dumps(self.direct)
+
+    cases = [
+        (None, "pip install 'snakecg[urdf]'"),
+        ({"url": "file:///home/me/snakecg", "dir_info": {"editable": True}},
+         "pip install -e '/home/me/snakecg[urdf]'"),
+        ({"url": "file:///home/me/snakecg", "dir_info": {}},
+         "pip install '/home/me/snakecg[urdf]'"),
+        ({"url": "https://github.com/x/snakecg", "vcs_info": {"vcs": "git"}},
+         "pip install 'snakecg[urdf] @ git+https://github.com/x/snakecg'"),
+    ]
+    for direct, want in cases:
+        monkeypatch.setattr(md, "distribution", lambda name, d=direct: Dist(d))
+        assert install_hint("urdf") == want
+
+    def missing(name):
+        raise md.PackageNotFoundError(name)
+
+    monkeypatch.setattr(md, "distribution", missing)
+    assert install_hint("urdf") == "pip install yourdfpy"
+    # and the error a user sees without yourdfpy
+    real_import = builtins.__import__
+
+    def no_yourdfpy(name, *args, **kwargs):
+        if name == "yourdfpy":
+            raise ImportError(name)
+        return real_import(name, *args, **kwargs)
+
+    monkeypatch.setattr(builtins, "__import__", no_yourdfpy)
+    with pytest.raises(snakecg.InputError, match=r"needs the yourdfpy package \(the urdf "
+                       r"extra\): pip install yourdfpy$"):
+        snakecg.Robot.from_urdf(tmp_path / "any.urdf")

@@ -32,8 +32,8 @@ REDUCED = dict(kappas_case1=(100.0,), grid_step_deg=30.0, torque_grid=91, format
                progress=False, jobs=1)
 REPRODUCE_FILES = ("fig4_kappa100.png", "fig5_polar.png", "fig6_configurations.png")
 #: The Simulation page's first example (docs/simulate.md).
-SIMULATION = dict(joints=3, scenario="wheels", kappa=10.0, mu=0.1,
-                  q_deg=(30.0, -35.0, 25.0), tau=(0.035, 0.0, -0.014), duration=0.5)
+SIMULATION = dict(joints=4, scenario="wheels", kappa=10.0, mu=0.1, contact_link=3,
+                  q_deg=(30.0, 40.0, 40.0, 30.0), tau=(0.05, 0.02, 0.02, 0.05), duration=0.5)
 SIMULATE_FILES = ("displacement.png", "slippage.png", "forces.png", "animation.gif")
 
 
@@ -61,7 +61,7 @@ def _simulate(folder: Path) -> None:
 
     s = SIMULATION
     scene = snakecg.Scene(snakecg.Robot(joints=s["joints"]), scenario=s["scenario"],
-                          kappa=s["kappa"], mu=s["mu"])
+                          kappa=s["kappa"], mu=s["mu"], contact_link=s["contact_link"])
     q0 = np.array([0.0, 0.0, 0.0, *np.deg2rad(s["q_deg"])])
     traj = snakecg.load(scene).simulate(q0, list(s["tau"]), s["duration"])
     save_figures(traj, folder, frames=40)

@@ -9,9 +9,11 @@ A page asks for a formula with a directive (on a line of its own, except ``versi
     <!-- snakecg-symbolic: operation-counts -->
     <!-- snakecg-symbolic: functions-table joints=2 -->
     <!-- snakecg-symbolic: versions -->
+    <!-- snakecg-symbolic: spatial-program NAME joints=1 -->
+    <!-- snakecg-symbolic: spatial-functions-table joints=2 -->
 
 and gets display math typeset from the same SymPy expressions that the code generator prints
-(``snakecg_derive.kinematics.readable_mass_matrix``, ``snakecg_derive.inspect.expression``),
+(``snakecg_derive.kinematics.readable_mass_matrix``, ``snakecg_derive.inspection.expression``),
 with the symbol names of ``snakecg show --latex``. Entries are passed through
 ``sympy.trigsimp`` for display only (``c sin^2 + c cos^2 -> c``); the text says so. The
 operation counts are read from the checked-in ``generated/na*/manifest.json``: nothing here
@@ -87,9 +89,18 @@ def _render(body: str) -> str:
         return _functions_table(joints)
     if kind == "versions":
         return _versions()
+    if kind == "spatial-program":  # a spatial chain's structured program, as code
+        if len(pos) != 1:
+            raise PluginError(f"'spatial-program' needs one NAME, got {pos}")
+        from snakecg_derive.spatial.inspection import program_lines
+
+        return "```text\n" + "\n".join(program_lines(joints, pos[0])) + "\n```\n"
+    if kind == "spatial-functions-table":
+        return _functions_table(joints, folder=_ROOT / "generated" / "spatial" / f"na{joints}")
     raise PluginError(
         f"unknown snakecg-symbolic directive {kind!r}; known: mass-matrix, "
-        "mass-matrix-entries, constants, expression, operation-counts, functions-table, versions"
+        "mass-matrix-entries, constants, expression, operation-counts, functions-table, "
+        "versions, spatial-program, spatial-functions-table"
     )
 
 
@@ -160,7 +171,7 @@ def _expression(joints: int, name: str, skip: str = "") -> str:
     column, which fits the page."""
     import sympy as sp
 
-    from snakecg_derive.inspect import expression
+    from snakecg_derive.inspection import expression
 
     skipped = {s.strip() for s in skip.split(",") if s.strip()}
     exprs = expression(joints, name)
@@ -231,11 +242,11 @@ def _versions() -> str:
     return f"SymPy {sympy.__version__}"
 
 
-def _functions_table(joints: int) -> str:
-    """The generated functions of ``generated/na<N>/``: name, arguments and the first
-    paragraph of the function's docstring, all read from its manifest (so the table cannot
-    drift from what was generated)."""
-    folder = _ROOT / "generated" / f"na{joints}"
+def _functions_table(joints: int, folder: Path | None = None) -> str:
+    """The generated functions of ``generated/na<N>/`` (or ``folder``): name, arguments and
+    the first paragraph of the function's docstring, all read from its manifest (so the table
+    cannot drift from what was generated)."""
+    folder = folder or _ROOT / "generated" / f"na{joints}"
     manifest = json.loads((folder / "manifest.json").read_text(encoding="utf-8"))
     rows = ["| function | inputs → outputs | what it computes |", "|---|---|---|"]
     for f in manifest["functions"]:

@@ -8,9 +8,10 @@ never empty; numbers are finite and within the limits each option states.
 ``--json`` output is strict JSON (RFC 8259): a value that is not finite (an overflowing
 result) is printed as ``null`` and its path listed under ``"nonfinite"`` (docs/cli.md).
 
-Progress goes to standard error and only when it is a terminal, so pipes, files and CI logs
-stay clean (``SNAKECG_PROGRESS=1`` forces it on, ``SNAKECG_PROGRESS=0`` off). Commands that
-derive or compile pass :func:`~snakecg.progress.progress_reporter` to the library's
+Progress goes to standard error, standard output keeps the result: a line when a model's
+generation or compilation (or a stage of work) starts and one when it ends, on every stream;
+bars only on a terminal (``--quiet`` or ``SNAKECG_PROGRESS=0`` silences all of it). Commands
+that derive or compile pass :func:`~snakecg.progress.progress_reporter` to the library's
 ``progress`` argument; sweeps use :func:`~snakecg.progress.progress_bar` (tqdm).
 """
 
@@ -170,7 +171,7 @@ def add_robot_args(p, *, scene: bool = True) -> None:
                    help="robot description file (TOML, see docs/model.md); the options below "
                    "override its [scene] table")
     if scene:
-        p.add_argument("--scenario", choices=SCENARIOS,
+        p.add_argument("--scenario", choices=SCENARIOS, type=lambda s: s.replace("-", "_"),
                        help="ground scenario (default frictionless)")
         p.add_argument("--kappa", type=float, help="object mass / mean link mass (default 100)")
         p.add_argument("--mu", type=float,

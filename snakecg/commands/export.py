@@ -4,8 +4,7 @@ from __future__ import annotations
 
 import argparse
 
-from ..errors import InputError
-from ._common import add_robot_args, print_json, scene_from_args
+from ._common import add_robot_args, out_dir, print_json, scene_from_args, text
 
 #: Version of the JSON printed by ``snakecg export --json`` (docs/export.md).
 SCHEMA = "snakecg.export/1"
@@ -31,28 +30,31 @@ def register(sub) -> None:
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
     add_robot_args(p)
-    p.add_argument("--out", required=True, metavar="DIR", help="folder to write (created)")
+    p.add_argument("--out", required=True, metavar="DIR", type=text("an output folder"),
+                   help="folder to write (created)")
     p.add_argument("--json", action="store_true",
                    help=f"print the files written as JSON (schema {SCHEMA})")
     p.set_defaults(run=run)
 
 
 def run(args) -> int:
+    import shlex
     from pathlib import Path
 
     from ..export import export_library
+    from ..spatial.export import spatial_robot_from_args
 
-    out = Path(args.out)
-    if out.exists() and not out.is_dir():
-        raise InputError(f"--out {args.out!r} exists and is not a directory")
-    scene = scene_from_args(args)
+    out = out_dir("--out", args.out)
+    scene = spatial_robot_from_args(args) or scene_from_args(args)  # a 3-D file: spatial
     files = export_library(scene, out, source=Path(args.robot).name if args.robot else None)
-    stem = f"snakecg_na{scene.robot.joints}"
+    robot = getattr(scene, "robot", scene)
+    stem = f"snakecg_{'sp' if robot is scene else 'na'}{robot.joints}"
     if args.json:
-        print_json({"schema": SCHEMA, "joints": scene.robot.joints, "folder": str(out),
+        print_json({"schema": SCHEMA, "joints": robot.joints, "folder": str(out),
                     "header": str(out / f"{stem}.h"), "files": [str(f) for f in files]})
         return 0
     print(f"wrote {len(files)} files into {out}: {stem}.h, {stem}.c, robot_params.c, "
           f"main.c, Makefile and the C of {len(files) - 6} functions")
-    print(f"build: make -C {out}   run: {out / 'example'}")
+    # the hint is pasted into a shell: the folder quoted (spaces, quotes, `$(...)`)
+    print(f"build: make -C {shlex.quote(str(out))}   run: {shlex.quote(str(out / 'example'))}")
     return 0

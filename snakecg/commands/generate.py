@@ -56,8 +56,12 @@ def run(args) -> int:
             raise InputError(f"--out {args.out!r} exists and is not a directory")
         from snakecg_derive.render import render_model, write_model
 
-        folder = write_model(render_model(args.joints, progress=progress,
-                                          max_joints=max_joints()), out)
+        from ..progress import stage
+
+        with stage(progress, f"generating the {args.joints}-joint model into {str(out)!r}",
+                   f"generated the {args.joints}-joint model"):
+            folder = write_model(render_model(args.joints, progress=progress,
+                                              max_joints=max_joints()), out)
         seconds = time.perf_counter() - t0
         if args.json:
             print_json({"schema": SCHEMA, "joints": args.joints, "folder": str(folder),

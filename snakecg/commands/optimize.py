@@ -9,6 +9,7 @@ import numpy as np
 from .._inputs import MAX_MAGNITUDE
 from ._common import (add_robot_args, check_vector, parse_vector, print_json, real,
                       scene_from_args, text, vector)
+from ._names import limits_line, objective_name
 
 EXAMPLES = """\
 examples:
@@ -42,15 +43,19 @@ def register(sub) -> None:
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
     p.add_argument("objective", choices=CLI_OBJECTIVES, metavar="OBJECTIVE",
-                   help="max-sr | least-slip-push | strongest-push")
+                   type=objective_name,
+                   help="max-sr | least-slip-push | strongest-push (or with underscores)")
     add_robot_args(p)
     p.add_argument("--q", required=True, metavar="Q", type=text("numbers x,y,theta,q1..qn"),
                    help="configuration x,y,theta,q1..qn (m and rad; NNdeg for degrees)")
-    p.add_argument("--tau-max", metavar="T", type=text("one positive number or one per joint"),
-                   help="box limits |tau_j| <= T_j (N m): one number or one per joint")
+    p.add_argument("--tau-max", metavar="T",
+                   type=text("one positive number, one per joint, or none"),
+                   help="box limits |tau_j| <= T_j (N m): one number or one per joint; "
+                   "default the robot's effort limits (a URDF's <limit effort>), 'none' for "
+                   "no box")
     p.add_argument("--radius", type=real(0, MAX_MAGNITUDE, lo_open=True), metavar="R",
                    help="ellipsoid tau^T B^T M_s^-1 B tau <= R^2 (eq. 31); default 1 when "
-                   "--tau-max is not given")
+                   "there is no torque box")
     p.add_argument("--direction", metavar="D", type=text("numbers dx,dy or dx,dy,dalpha"),
                    help="push direction dx,dy (or dx,dy,dalpha), world frame; strongest-push "
                    "defaults to the contact normal")
@@ -76,7 +81,7 @@ def _allow_slide(text, n_links=None):
     from ..errors import InputError
 
     tokens = text.replace(",", " ").split()
-    if not tokens or not all(t.isdigit() and t.isascii() for t in tokens) or (
+    if not tokens or not all(t.isdigit() and t.isascii() and len(t) <= 9 for t in tokens) or (
             n_links is not None and not all(1 <= int(t) <= n_links for t in tokens)):
         links = f"1..{n_links}" if n_links is not None else ">= 1"
         raise InputError(f"--allow-slide takes link numbers {links} (e.g. 2,3), 'all' or "
@@ -122,8 +127,10 @@ def run(args) -> int:
     # every option checked against the robot and the objective before the model is loaded
     q = check_vector("q", parse_vector("--q", args.q), na + 3,
                      f" = (n_joints + 3,) for a {na}-joint robot")
-    tau_max = None
-    if args.tau_max is not None:
+    tau_max = "robot"
+    if args.tau_max is not None and args.tau_max.strip().lower() == "none":
+        tau_max = None
+    elif args.tau_max is not None:
         tm = vector("--tau-max", args.tau_max, positive=True,
                     what=f" (N m: one number or one per joint, {na} joints)")
         if len(tm) not in (1, na):
@@ -154,9 +161,6 @@ def run(args) -> int:
         out = {"schema": SCHEMA, "joints": scene.robot.joints, "scenario": scene.scenario,
                "kappa": scene.kappa, "mu": scene.mu, "contact_link": scene.contact_link,
                "side": scene.side, "q": list(q),
-               "limits": {"tau_max": _listed(tau_max, scene.robot.joints),
-                          "radius": args.radius if args.radius is not None
-                          else (None if tau_max is not None else 1.0)},
                "task": {"direction": kwargs["direction"], "a_min": args.a_min,
                         "a_obj": kwargs["a_obj"]},
                "allow_slide": kwargs["allow_slide"]}
@@ -167,9 +171,12 @@ def run(args) -> int:
     an = res.analysis
     name = {"max_sr": "sr", "least_slip_push": "|qdd|^2",
             "strongest_push": "d . a_obj (m/s^2)"}[objective]
-    print(f"{args.objective}: {res.status} ({res.solver}; {res.time * 1e3:.2f} ms)")
+    print(f"{objective}: {res.status} ({res.solver}; {res.time * 1e3:.2f} ms)")
     if res.reason:
         print(f"  reason: {res.reason}")
+    if res.note:
+        print(f"  note: {res.note}")
+    print(f"  limits: {limits_line(res.limits)}")
     c = res.certificate
     if c is not None and c.kind != "none":
         print(f"  certificate: {c.kind}, {'ok' if c.ok else 'failed'} (stationarity "
@@ -186,8 +193,3 @@ def run(args) -> int:
     print(f"  |a_obj|^2 = {an.norm_a_obj:.6g}  |qdd|^2 = {an.norm_qdd:.6g}  sr = {an.sr:.6g}")
     return code
 
-
-def _listed(tau_max, n):
-    if tau_max is None:
-        return None
-    return [float(tau_max)] * n if np.ndim(tau_max) == 0 else [float(t) for t in tau_max]

@@ -11,6 +11,7 @@ import numpy as np
 
 from ..errors import InputError
 from ._common import add_robot_args, parse_vector, print_json, scene_from_args
+from ._names import limits_line, objective_name
 
 EXAMPLES = """\
 examples:
@@ -43,14 +44,18 @@ def register(sub) -> None:
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
     p.add_argument("objective", choices=CLI_OBJECTIVES, metavar="OBJECTIVE",
-                   help="max-sr | strongest-push | least-slip-push | max-a-obj")
+                   type=objective_name,
+                   help="max-sr | strongest-push | least-slip-push | max-a-obj (or with "
+                   "underscores)")
     add_robot_args(p)
     p.add_argument("--starts", type=int, default=8, metavar="K",
                    help="IPOPT runs from the best distinct grid points (default 8)")
     p.add_argument("--seed", type=int, default=0,
                    help="seed of the Sobol sample used instead of the grid beyond 8 joints")
     p.add_argument("--joint-limits", metavar="LO,HI",
-                   help="joint range, e.g. -135deg,135deg (default; radians without 'deg')")
+                   help="joint range, e.g. -135deg,135deg (radians without 'deg'); default "
+                   "the robot's joint limits (a URDF's <limit lower upper>), or -135deg,135deg "
+                   "for a robot without them")
     p.add_argument("--q0", metavar="Q",
                    help="start from this configuration x,y,theta,q1..qn instead of the grid "
                    "(write --q0=-1,... when the first value is negative)")
@@ -60,10 +65,12 @@ def register(sub) -> None:
     p.add_argument("--clearance", type=float, metavar="M",
                    help="least distance between non-adjacent links, m (default 0.01)")
     p.add_argument("--tau-max", metavar="T",
-                   help="box limits |tau_j| <= T_j (N m): one number or one per joint")
+                   help="box limits |tau_j| <= T_j (N m): one number or one per joint; "
+                   "default the robot's effort limits (a URDF's <limit effort>), 'none' for "
+                   "no box")
     p.add_argument("--radius", type=float, metavar="R",
                    help="ellipsoid tau^T B^T M_s^-1 B tau <= R^2 (eq. 31); default 1 when "
-                   "--tau-max is not given")
+                   "there is no torque box")
     p.add_argument("--direction", metavar="D",
                    help="push direction dx,dy (or dx,dy,dalpha), world frame")
     p.add_argument("--a-min", type=float, metavar="A",
@@ -79,7 +86,9 @@ def register(sub) -> None:
 
 def _task(args, n):
     task = {}
-    if args.tau_max is not None:
+    if args.tau_max is not None and args.tau_max.strip().lower() == "none":
+        task["tau_max"] = None
+    elif args.tau_max is not None:
         tm = parse_vector("--tau-max", args.tau_max)
         task["tau_max"] = tm[0] if len(tm) == 1 else tm
     if args.radius is not None:
@@ -95,12 +104,12 @@ def _task(args, n):
 
 def run(args) -> int:
     from .. import load
-    from ..shape import JOINT_LIMITS, SCHEMA
+    from ..shape import SCHEMA
 
     scene = scene_from_args(args)
     n = scene.robot.joints
     task = _task(args, n)
-    limits = JOINT_LIMITS
+    limits = "robot"
     if args.joint_limits is not None:
         lim = parse_vector("--joint-limits", args.joint_limits)
         if len(lim) != 2:
@@ -127,18 +136,19 @@ def run(args) -> int:
         out = {"schema": SCHEMA, "joints": n, "scenario": scene.scenario,
                "kappa": scene.kappa, "mu": scene.mu, "contact_link": scene.contact_link,
                "side": scene.side, "feasible": not args.ignore_geometry,
-               "joint_limits": [float(x) for x in np.ravel(limits)],
-               "task": {k: (np.asarray(v).tolist()) for k, v in task.items()}}
+               "task": {k: (None if v is None else np.asarray(v).tolist())
+                        for k, v in task.items()}}
         out.update(res.to_dict())
         print_json(out)
         return code
     np.set_printoptions(precision=6, suppress=True)
     name = {"max_sr": "sr", "least_slip_push": "|qdd|^2", "max_a_obj": "|a_obj|^2",
             "strongest_push": "d . a_obj (m/s^2)"}[objective]
-    print(f"{args.objective}: {res.status} (IPOPT, {len(res.starts)} starts; "
+    print(f"{objective}: {res.status} (IPOPT, {len(res.starts)} starts; "
           f"{res.time:.2f} s)")
     if res.reason:
         print(f"  reason: {res.reason}")
+    print(f"  limits: {limits_line(res.limits)}")
     print(f"  q      = {_deg(res.q[3:])} deg  (joints; pose {res.q[:3]})")
     print(f"  tau    = {res.tau}  (N m)")
     print(f"  {name} = {res.value:.9g}")

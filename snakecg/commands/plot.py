@@ -8,7 +8,8 @@ import tempfile
 from pathlib import Path
 
 from ..errors import InputError
-from ._common import add_robot_args, parse_vector, progress_reporter, scene_from_args
+from ._common import (add_robot_args, count, parse_vector, progress_reporter, scene_from_args,
+                      text)
 
 FORMATS = ("png", "pdf", "svg")
 #: Version of the JSON printed by ``snakecg plot --json``.
@@ -33,13 +34,15 @@ def register(sub) -> None:
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
     add_robot_args(p)
-    p.add_argument("--q", required=True, metavar="Q",
+    p.add_argument("--q", required=True, metavar="Q", type=text("numbers x,y,theta,q1..qn"),
                    help="configuration x,y,theta,q1..qn (m and rad; NNdeg for degrees)")
-    p.add_argument("--tau", metavar="TAU", help="joint torques tau1..tau_n (N m): draw the "
+    p.add_argument("--tau", metavar="TAU", type=text("numbers tau1..tau_n"),
+                   help="joint torques tau1..tau_n (N m): draw the "
                    "forces and accelerations")
-    p.add_argument("--out", required=True, metavar="FILE",
+    p.add_argument("--out", required=True, metavar="FILE", type=text("a figure file"),
                    help=f"figure file ({', '.join(FORMATS)})")
-    p.add_argument("--dpi", type=int, default=150, help="resolution of a PNG (default 150)")
+    p.add_argument("--dpi", type=count(10, 1200), default=150,
+                   help="resolution of a PNG, 10 to 1200 (default 150)")
     p.add_argument("--json", action="store_true",
                    help=f"print what was drawn as JSON (schema {SCHEMA})")
     p.set_defaults(run=run)
@@ -54,8 +57,6 @@ def run(args) -> int:
         raise InputError(f"--out {args.out!r} is a directory, expected a file name")
     if not out.parent.is_dir():
         raise InputError(f"--out {args.out!r}: the folder {str(out.parent)!r} does not exist")
-    if not 10 <= args.dpi <= 1200:
-        raise InputError(f"--dpi must be between 10 and 1200, got {args.dpi}")
     q = parse_vector("--q", args.q)
     tau = parse_vector("--tau", args.tau) if args.tau else None
     scene = scene_from_args(args)

@@ -79,6 +79,10 @@ def run(args) -> int:
             "schema": SCHEMA,
             "out": str(opts.out),
             "table2": {k: list(v) for k, v in report.table2.items()},
+            "table2_shape_feasible": {k: list(v)
+                                      for k, v in report.table2_shape_feasible.items()},
+            "table2_feasible_only": {k: list(v)
+                                     for k, v in report.table2_feasible_only.items()},
             "paper_table2": {k: list(v) for k, v in PAPER_TABLE2.items()},
             "options": {"kappa": args.kappa, "torque_grid": args.torque_grid,
                         "formats": list(formats), "alternatives": bool(args.alternatives)},

@@ -1,16 +1,18 @@
 """``snakecg show``: print a closed form of the model (or the generated C of a function).
 
-The expressions come from :mod:`snakecg_derive.inspect`, i.e. from the same derivation that
+The expressions come from :mod:`snakecg_derive.inspection`, i.e. from the same derivation that
 the generated code is printed from. On a terminal, a matrix too wide for the window is
-printed entry by entry; ``--latex`` prints LaTeX (the symbol names that the documentation
-uses, see :func:`latex_symbol_names`), ``--json`` both forms, ``--c`` the C that the compiled
-backend runs.
+printed entry by entry; ``--latex`` prints one ``aligned`` block for one equation
+environment, one line per entry, long entries broken after sums to fit a page (the symbol
+names that the documentation uses, see :func:`latex_symbol_names`); ``--simplify`` passes
+each entry through ``trigsimp`` and collection first (display only); ``--json`` gives the
+text and LaTeX of each expression and the block; ``--c`` the C that the compiled backend
+runs.
 """
 
 from __future__ import annotations
 
 import argparse
-import re
 import shutil
 import sys
 import textwrap
@@ -27,9 +29,11 @@ EXAMPLES = """\
 examples:
   snakecg show --joints 1 M                # M_s of a one-joint snake, pretty-printed
   snakecg show --joints 2                  # list the expressions and functions
-  snakecg show --joints 2 M --latex        # the same for two joints, as LaTeX
+  snakecg show --joints 2 M --latex        # the same for two joints, as LaTeX (aligned)
+  snakecg show --joints 2 h --latex --simplify   # trigsimp and collection on each entry
   snakecg show --joints 2 wheel3 --json    # wheel row of link 3 as text and LaTeX
   snakecg show --joints 2 mass_matrix --c  # the generated C of mass_matrix()
+  snakecg show --spatial --joints 2 mass_matrix  # a 3-D chain's structured program
 """
 
 
@@ -56,27 +60,43 @@ def register(sub) -> None:
                      help=f"print JSON: text and LaTeX of each expression (schema {SCHEMA}, "
                      "docs/cli.md)")
     fmt.add_argument("--c", action="store_true", help="print the generated C of a function")
+    p.add_argument("--simplify", action="store_true",
+                   help="trigsimp and collect each entry before printing (display only; "
+                   "seconds for 2 joints, minutes for 6-8)")
+    p.add_argument("--spatial", action="store_true",
+                   help="the spatial chain with N joints (3-D snakes, docs/spatial.md)")
     p.set_defaults(run=run)
 
 
 def run(args) -> int:
     if args.joints < 1:
         raise InputError(f"--joints must be >= 1, got {args.joints}")
+    if getattr(args, "spatial", False):
+        from ..spatial.show import run_spatial
+
+        return run_spatial(args)
     if args.c:
+        if args.simplify:
+            raise InputError("--simplify goes with an expression, not with --c (the "
+                             "generated C is shown as it is compiled)")
         return _show_c(args)
     if args.joints > MAX_SHOW_JOINTS:
         raise InputError(
             f"symbolic inspection is limited to --joints <= {MAX_SHOW_JOINTS} (closed forms "
             "grow as n^3); use --c to read the generated code of larger models"
         )
-    from snakecg_derive.inspect import expression, names
+    from snakecg_derive.inspection import expression, latex_block, names, simplified
 
     if args.what is None:
+        if args.simplify:
+            raise InputError("--simplify goes with an expression NAME")
         return _list(args.joints, names(args.joints))
     try:
         exprs = expression(args.joints, args.what)
     except ValueError as exc:
         raise InputError(str(exc)) from None
+    if args.simplify:
+        exprs = {label: simplified(e) for label, e in exprs.items()}
     if args.json:
         import sympy as sp
 
@@ -84,21 +104,20 @@ def run(args) -> int:
             "schema": SCHEMA,
             "joints": args.joints,
             "what": args.what,
+            "simplified": bool(args.simplify),
             "expressions": [
                 {"label": label, "text": str(e),
                  "latex": sp.latex(e, symbol_names=latex_symbol_names(e))}
                 for label, e in exprs.items()
             ],
+            "latex_aligned": latex_block(exprs),
         })
         return 0
+    if args.latex:
+        print(latex_block(exprs))
+        return 0
     for label, e in exprs.items():
-        if args.latex:
-            import sympy as sp
-
-            print(f"% {label}")
-            print(sp.latex(e, symbol_names=latex_symbol_names(e)))
-        else:
-            print(_pretty(label, e))
+        print(_pretty(label, e))
         print()
     return 0
 
@@ -180,47 +199,9 @@ def _pretty(label: str, e) -> str:
     return "\n".join(lines)
 
 
-_LATEX_PATTERNS = [
-    (re.compile(r"mtot"), lambda m: r"m_{\mathrm{tot}}"),
-    (re.compile(r"beta(\d+)"), lambda m: rf"\beta_{{{m[1]}}}"),
-    (re.compile(r"gamma(\d+)_(\d+)"), lambda m: rf"\gamma_{{{m[1]}{m[2]}}}"),
-    (re.compile(r"Jrot(\d+)"), lambda m: rf"J^{{\mathrm{{rot}}}}_{{{m[1]}}}"),
-    (re.compile(r"(x|y)d"), lambda m: rf"\dot{{{m[1]}}}"),
-    (re.compile(r"thetad"), lambda m: r"\dot{\theta}"),
-    (re.compile(r"qd(\d+)"), lambda m: rf"\dot{{q}}_{{{m[1]}}}"),
-    (re.compile(r"l(x|y)"), lambda m: rf"{m[1]}_{{\ell}}"),
-    (re.compile(r"lphi"), lambda m: r"\phi_{\ell}"),
-    (re.compile(r"lv(x|y)"), lambda m: rf"v_{{\ell {m[1]}}}"),
-    (re.compile(r"lw"), lambda m: r"\omega_{\ell}"),
-    (re.compile(r"lb(x|y)"), lambda m: rf"b_{{\ell {m[1]}}}"),
-    (re.compile(r"lbw"), lambda m: r"b_{\ell \omega}"),
-    (re.compile(r"lc"), lambda m: r"c_{\ell}"),
-    (re.compile(r"o(x|y)"), lambda m: rf"{m[1]}_{{o}}"),
-    (re.compile(r"opsi"), lambda m: r"\psi"),
-    (re.compile(r"ov(x|y)"), lambda m: rf"v_{{o {m[1]}}}"),
-    (re.compile(r"ow"), lambda m: r"\omega_{o}"),
-    (re.compile(r"rho(x|y)"), lambda m: rf"\rho_{{{m[1]}}}"),
-    (re.compile(r"woff"), lambda m: r"w_{\mathrm{off}}"),
-]
-
-
 def latex_symbol_names(*exprs) -> dict:
-    """LaTeX names of the derivation's symbols in ``exprs`` (for ``sympy.latex``).
+    """LaTeX names of the derivation's symbols (``snakecg_derive.inspection``'s, which the
+    documentation uses too): ``beta1 -> beta_1``, ``thetad -> dot theta``, ..."""
+    from snakecg_derive.inspection import latex_symbol_names as names
 
-    ``mtot -> m_tot``, ``beta1 -> beta_1``, ``gamma1_2 -> gamma_12``, ``Jrot1 -> J^rot_1``,
-    velocities ``thetad -> dot theta``, link-level symbols ``lx, lphi, lvx, lw, lbx, lc -> x_l,
-    phi_l, v_lx, omega_l, b_lx, c_l``, object ``ox, opsi, ovx, ow -> x_o, psi, v_ox,
-    omega_o``, ``rhox -> rho_x``, ``woff -> w_off``. Other symbols keep SymPy's names.
-    """
-    import sympy as sp
-
-    out = {}
-    for e in exprs:
-        syms = e.free_symbols if isinstance(e, (sp.Basic, sp.MatrixBase)) else set()
-        for s in syms:
-            for pat, fmt in _LATEX_PATTERNS:
-                m = pat.fullmatch(s.name)
-                if m:
-                    out[s] = fmt(m)
-                    break
-    return out
+    return names(*exprs)

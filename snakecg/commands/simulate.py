@@ -10,10 +10,12 @@ import numpy as np
 
 from .._inputs import MAX_MAGNITUDE
 from ..errors import InputError, SnakecgError
-from ..simulate.inputs import (MAX_FRAMES, MAX_OUTPUT_SAMPLES, MAX_PERIODS, METHODS, RTOL_MIN,
+from ..simulate.inputs import (DURATION_MAX, DURATION_MIN, MAX_FRAMES, MAX_OUTPUT_SAMPLES,
+                               MAX_PERIODS, METHODS, RTOL_MIN,
                                STABILIZATION_MAX, check_count)
 from ._common import (add_robot_args, check_vector, count, out_dir, parse_vector, print_json,
                       progress_reporter, real, scene_from_args, strict_json, text)
+from ._names import objective_name
 
 EXAMPLES = """\
 examples:
@@ -46,9 +48,9 @@ def register(sub) -> None:
                    help="initial snake velocities (default: rest)")
     p.add_argument("--v-obj", metavar="VO", type=text("numbers vx,vy,omega"),
                    help="initial object twist vx,vy,omega (default 0)")
-    p.add_argument("--duration", type=real(0, lo_open=True, unit="s"), default=0.5,
-                   help="seconds (default 0.5)")
-    p.add_argument("--controller", choices=("least-slip-push",),
+    p.add_argument("--duration", type=real(DURATION_MIN, DURATION_MAX, unit="s"), default=0.5,
+                   help=f"seconds, {DURATION_MIN:g} to {DURATION_MAX:g} (default 0.5)")
+    p.add_argument("--controller", choices=("least-slip-push",), type=objective_name,
                    help="feedback law instead of --tau: the least-slippage push query "
                    "(snakecg optimize) answered every --control-period")
     p.add_argument("--a-min", type=real(0, MAX_MAGNITUDE, unit="m/s^2"),
@@ -69,6 +71,10 @@ def register(sub) -> None:
     p.add_argument("--stabilization", type=real(0, STABILIZATION_MAX, unit="1/s"), default=10.0,
                    help=f"Baumgarte rate of the held rows, 1/s, at most {STABILIZATION_MAX:g} "
                    "(default 10; 0: off)")
+    p.add_argument("--geometry-check", default="stop", choices=("stop", "report", "off"),
+                   help="when a link enters the object or two links cross (beyond 1e-6 of "
+                   "the longest link): stop there (default, status penetration or "
+                   "self_contact), report it and integrate on, or check nothing")
     p.add_argument("--output-dt", type=real(0, lo_open=True, unit="s"),
                    help="output sample spacing (default duration/400; at most "
                    f"{MAX_OUTPUT_SAMPLES:g} samples)")
@@ -135,7 +141,8 @@ def run(args) -> int:
     traj = simulate(model, q, tau, args.duration, v0=v, v_obj0=v_obj,
                     control_period=control_period, method=args.method, rtol=args.rtol,
                     atol=args.atol, stabilization=args.stabilization,
-                    output_dt=args.output_dt, integrator=args.integrator)
+                    output_dt=args.output_dt, integrator=args.integrator,
+                    geometry_check=args.geometry_check)
     try:
         out.mkdir(parents=True, exist_ok=True)
         # every file under a unique temporary name, then renamed: two runs into one folder
@@ -154,7 +161,10 @@ def run(args) -> int:
         print_json({**s, "files": files})
     else:
         _print_text(s, files)
-    if s["status"] != "completed":
+    if s["violation"] is not None:  # not physical from there on: the run stopped (or went on)
+        sys.stderr.write(f"snakecg simulate: {s['status']}: {s['violation']['description']}\n")
+        return 1
+    if not s["status"].startswith("completed"):
         sys.stderr.write(f"snakecg simulate: failed: {s['status']}\n")
         return 1
     return 0
@@ -164,6 +174,11 @@ def _print_text(s: dict, files: dict) -> None:
     np.set_printoptions(precision=6, suppress=True)
     print(f"{s['joints']} joints, {s['scenario']}, kappa {s['kappa']:g}, {s['duration']:g} s, "
           f"torque {s['torque']}: {s['status']}")
+    v = s["violation"]
+    if v is not None:
+        after = ("the run stopped there" if s["contact_check"]["mode"] == "stop"
+                 else "reported; the run went on without the check")
+        print(f"  {v['kind']}: {v['description']}; {after}")
     print(f"  start: {s['initial_mode']}")
     for e in s["events"]:
         extra = ""

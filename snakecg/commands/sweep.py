@@ -4,10 +4,12 @@
 from __future__ import annotations
 
 import argparse
+import math
 import sys
 
 from ..errors import InputError
 from ._common import add_robot_args, print_json, real, scene_from_args
+from ._names import limits_line
 
 #: Version of the JSON printed by ``snakecg sweep --json`` (docs/sweep.md).
 SCHEMA = "snakecg.sweep/1"
@@ -42,7 +44,9 @@ def register(sub) -> None:
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
     add_robot_args(p)
-    g = p.add_argument_group("configurations (default: the paper's grid, -135..135 deg every 10)")
+    g = p.add_argument_group("configurations (default: the robot's joint limits every 10 deg "
+                             "or a little less, both included; without limits the paper's "
+                             "grid, -135..135 deg every 10)")
     g.add_argument("--range", metavar="DEG",
                    help="joint range in degrees: R (for -R:R), LO:HI, or one per joint "
                    "separated by commas (write --range=-90:90 when it starts with '-'); "
@@ -72,9 +76,12 @@ def register(sub) -> None:
                    "with --figure, the image file (default STORE-polar.png)")
     w = r.add_mutually_exclusive_group()
     w.add_argument("--scheduler", metavar="ADDRESS",
-                   help="run on the Dask cluster whose scheduler is at tcp://HOST:PORT")
+                   help="run on the Dask cluster whose scheduler is at tcp://HOST:PORT "
+                   "(it must answer, and have a worker, within 10 s each)")
     w.add_argument("--workers", type=int, metavar="K",
-                   help="worker processes of the local cluster (default: one per core)")
+                   help="worker processes of the local cluster (default: one per core; at "
+                   "most 4 per core); the cluster listens on 127.0.0.1 with TLS and "
+                   "temporary credentials, so only this sweep can use it")
     r.add_argument("--shared-store", action="store_true",
                    help="with --scheduler: the workers write the chunks into --out themselves "
                    "(they reach it at the same absolute path, e.g. on a shared file system); "
@@ -122,11 +129,12 @@ def _per_joint(name: str, items: list, joints: int) -> list:
     return items
 
 
-def _ranges(text: str | None, joints: int) -> list[tuple[float, float]]:
-    from ..sweeps.plan import PAPER_RANGE_DEG
+def _ranges(text: str | None, joints: int, robot) -> list[tuple[float, float]]:
+    if text is None:  # the robot's joint limits, or the paper's range
+        from ..limits import default_joint_limits
 
-    if text is None:
-        return [PAPER_RANGE_DEG] * joints
+        return [(math.degrees(lo), math.degrees(hi))
+                for lo, hi in default_joint_limits(robot)[0]]
     out = []
     for tok in _split("--range", text):
         if ":" in tok:
@@ -146,7 +154,7 @@ def run(args) -> int:
         return _reduce(args)
     import math
 
-    from ..sweeps.plan import PAPER_STEP_DEG, joint_values
+    from ..sweeps.plan import PAPER_STEP_DEG, joint_count, joint_values
     from ..sweeps.run import sweep
 
     if not args.out:
@@ -160,7 +168,7 @@ def run(args) -> int:
                          "kept")
     scene = scene_from_args(args)
     joints = scene.robot.joints
-    ranges = _ranges(args.range, joints)
+    ranges = _ranges(args.range, joints, scene.robot)
     for lo, hi in ranges:
         if not (math.isfinite(lo) and math.isfinite(hi)):
             raise InputError(f"--range must be finite degrees, got {args.range!r}")
@@ -173,15 +181,27 @@ def run(args) -> int:
         for lo, hi in ranges:
             if hi < lo:
                 raise InputError(f"--range {lo:g}:{hi:g} is empty (LO > HI)")
+        _check_size(args, args.samples, joints)
         kw = {"samples": args.samples, "seed": args.seed,
-              "bounds": [(math.radians(lo), math.radians(hi)) for lo, hi in ranges]}
+              "bounds": None if args.range is None else
+              [(math.radians(lo), math.radians(hi)) for lo, hi in ranges]}
     else:
         if args.seed is not None:
             raise InputError("--seed goes with --samples N; a grid has no seed")
         steps = _per_joint("--step", [_number("--step", s) for s in
                                       _split("--step", args.step)], joints) \
             if args.step is not None else [PAPER_STEP_DEG] * joints
-        kw = {"grid": [joint_values(lo, hi, st) for (lo, hi), st in zip(ranges, steps)]}
+        if args.range is None and args.step is None:  # the robot's limits, or the paper's
+            from ..sweeps.plan import default_grid
+
+            size = math.prod(len(v) for v in default_grid(scene.robot)[0])
+            _check_size(args, size, joints)
+            kw = {"grid": None}
+        else:
+            # the grid's size from the arguments, before any value is made
+            size = math.prod(joint_count(lo, hi, st) for (lo, hi), st in zip(ranges, steps))
+            _check_size(args, size, joints)
+            kw = {"grid": [joint_values(lo, hi, st) for (lo, hi), st in zip(ranges, steps)]}
     res = sweep(scene, store=args.out, chunk=args.chunk, scheduler=args.scheduler,
                 workers=args.workers, limit=None if args.force else args.limit,
                 feasible=args.feasible_only, clearance=args.clearance,
@@ -196,7 +216,22 @@ def run(args) -> int:
               f"{res.reused_chunks}; {res.seconds:.1f} s"
               + (f"; feasible shapes only (clearance {res.clearance:g} m)"
                  if res.feasible_only else ""))
+        print(f"  limits: {limits_line(res.limits)}")
     return 0
+
+
+def _check_size(args, size: int, joints: int) -> None:
+    """Refuse a sweep above --limit (unless --force) or too large for one store, from its
+    size alone (as snakecg.sweep does once the configurations are made)."""
+    from ..sweeps.plan import check_size
+
+    if size < 1:
+        return  # refused with its reason by the sweep
+    if not args.force and isinstance(args.limit, int) and args.limit >= 1 \
+            and size > args.limit:
+        raise InputError(f"{size:,} configurations exceed the limit of {args.limit:,}; "
+                         f"lift it (limit=None, or --force) to run them")
+    check_size(size, joints)
 
 
 def _reduce(args) -> int:

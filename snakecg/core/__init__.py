@@ -23,7 +23,7 @@ import numpy as np
 from ..rows import WEAK
 from ..solver import FORCE_LIMIT, PIVOT_TOL, REL_TOL
 from .layout import INPUTS, Layout
-from .segment import segment_functions
+from .segment import contact_depth_function, segment_functions
 from .optimal import OptimalKernel
 from .sphere import SphereKernel
 
@@ -65,6 +65,8 @@ class Core:
          self.run) = segment_functions(lib, manifest["prefix"])
         """integrate.c's ``core_integrate_segment`` and ``core_mode_samples``, settle.c's
         ``core_settle``, run.c's ``core_run`` (:mod:`snakecg.core.segment`)."""
+        self.contact_depth = contact_depth_function(lib, manifest["prefix"])
+        """integrate.c's ``core_contact_depth``: the simulation's contact check at states."""
         self.sphere = SphereKernel(lib, manifest["prefix"])
         """sphere.c's faces and KKT candidates (:mod:`snakecg.core.sphere`)."""
         self.optimal = OptimalKernel(lib, manifest["prefix"], self.layout)

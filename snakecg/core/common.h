@@ -11,8 +11,24 @@
 
 #include <math.h>
 #include <stdlib.h>
+#include <time.h>
 
 typedef long long int sc_int;
+
+#ifdef SC_WALL_TIME
+/* Wall-clock seconds from an arbitrary origin (POSIX's monotonic clock: the file defines
+ * _POSIX_C_SOURCE before its first include; elsewhere the CPU time): the long calls of the
+ * simulation pause after a budget of them, so that Python can handle a Ctrl-C. */
+static double sc_wall_time(void) {
+#if defined(CLOCK_MONOTONIC)
+  struct timespec ts;
+  clock_gettime(CLOCK_MONOTONIC, &ts);
+  return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+#else
+  return (double)clock() / CLOCKS_PER_SEC;
+#endif
+}
+#endif
 
 /* Before a loop over one of the model's sizes (known when compiling): unroll it (GCC; other
  * compilers go on without). */
@@ -47,8 +63,9 @@ enum { ABSENT = 0, HELD = 1, LOST = 2, SLIDE_POS = 3, SLIDE_NEG = 4 };
 enum { EV_SEPARATION = 0, EV_S_LOW = 1, EV_S_HIGH = 2, EV_GAP = 3, EV_BREAKAWAY = 4,
        EV_SLIDE_STOP = 5 };
 /* segment status */
-enum { SEG_END = 0, SEG_EVENT = 1, SEG_TOO_SMALL = -1, SEG_PYTHON = -2, SEG_MEMORY = -3,
-       SEG_BAD_INPUT = -4 };
+enum { SEG_END = 0, SEG_EVENT = 1, SEG_GEOMETRY = 2, SEG_PAUSED = 3, SEG_TOO_SMALL = -1,
+       SEG_PYTHON = -2,
+       SEG_MEMORY = -3, SEG_BAD_INPUT = -4 };
 enum { SETTLE_DONE = 0, SETTLE_PYTHON = 1, SETTLE_MEMORY = 2 };
 
 /* One segment: inputs, then outputs (filled by core_integrate_segment). */
@@ -71,13 +88,19 @@ typedef struct {
   const double *y0;      /* NY */
   const double *t_eval;  /* n_eval increasing times in (t0, t1] */
   sc_int n_eval;
+  struct sc_geometry *geo; /* the contact check (geometry.h), or null */
+  double budget;         /* wall-clock seconds a call may take: after them (and at least one
+                            step) it stops with SEG_PAUSED; <= 0: no limit */
+  sc_int resume;         /* 1: go on with the segment a call paused (from t_end, y_end,
+                            h_next and n_out, as if it had not stopped) */
   /* outputs */
   double *y_eval;        /* n_eval x NY, row-major */
   sc_int n_out;          /* output times reached */
   double t_end;          /* where the segment ended (t1 or the event) */
   double *y_end;         /* NY: the state there */
   sc_int event;          /* the event that fired (index into ev_*), -1 if none */
-  sc_int nfev, nsteps, nrejected;
+  sc_int nfev, nsteps, nrejected; /* of this call */
+  double h_next;         /* SEG_PAUSED: the step size to go on with */
   sc_int status;         /* SEG_* */
 } sc_segment;
 
@@ -326,34 +349,53 @@ static double sc_held_forces(const signed char *state, const double *G, const do
 }
 
 #ifdef SC_NEXT_STATES /* forward.c, settle.c */
-/* The next row states (snakecg.solver._violations with _tolerances): returns 1 if any moved. */
+/* Relative weight of the rounding term of a row's scale (snakecg.solver.ROUND_REL). */
+#define SC_ROUND_REL 1e-5
+
+/* The next row states (snakecg.solver._violations with _tolerances): returns 1 if any moved.
+ * Each row is judged against its own scale (force units), s_r = max(|lam_r|, |w_r| / G_rr,
+ * |b_r| / G_rr, ROUND_REL sum_j |G_rj lam_j| / G_rr) with b = w - G lam (the row's
+ * acceleration at zero force): tol_lam_r = rel_tol s_r, tol_w_r = rel_tol G_rr s_r. Scaling
+ * every input force scales every term: the decisions do not depend on units; and the huge
+ * forces of nearly dependent rows (which cancel in the other rows) no longer widen the
+ * tolerance of a row they barely move. */
 static int sc_next_states(signed char *state, const double *lam, const double *w,
                           const double *G, const double *bounds, double rel_tol) {
   const int nc = SNAKECG_NC;
-  double g = 0.0, s_lam = 0.0, s_w = 0.0, tol_lam, tol_w;
+  double g = 0.0, tol_lam[SNAKECG_NC], tol_w[SNAKECG_NC];
   signed char next[SNAKECG_NC];
-  int r, moved = 0;
+  int r, j, moved = 0;
   for (r = 0; r < nc; ++r) {
     double d = fabs(G[r + nc * r]);
     if (d > g) g = d; /* NaN never wins */
-    if (fabs(lam[r]) > s_lam) s_lam = fabs(lam[r]);
-    if (fabs(w[r]) > s_w) s_w = fabs(w[r]);
   }
   if (!(g > 0) || !isfinite(g)) g = 1.0;
-  if (s_w / g > s_lam) s_lam = s_w / g;
-  tol_lam = rel_tol * s_lam;
-  tol_w = rel_tol * g * s_lam;
+  for (r = 0; r < nc; ++r) {
+    double gr = fabs(G[r + nc * r]), b = w[r], cross = 0.0, s;
+    if (!(gr > 0) || !isfinite(gr)) gr = g;
+    for (j = 0; j < nc; ++j) {
+      double t = G[r + nc * j] * lam[j];
+      b -= t;
+      cross += fabs(t);
+    }
+    s = fabs(lam[r]);
+    if (fabs(w[r]) / gr > s) s = fabs(w[r]) / gr;
+    if (fabs(b) / gr > s) s = fabs(b) / gr;
+    if (SC_ROUND_REL * cross / gr > s) s = SC_ROUND_REL * cross / gr;
+    tol_lam[r] = rel_tol * s;
+    tol_w[r] = rel_tol * gr * s;
+  }
   memcpy(next, state, sizeof(next));
-  if (state[0] == HELD && lam[0] < -tol_lam) next[0] = LOST;
-  else if (state[0] == LOST && w[0] < -tol_w) next[0] = HELD;
+  if (state[0] == HELD && lam[0] < -tol_lam[0]) next[0] = LOST;
+  else if (state[0] == LOST && w[0] < -tol_w[0]) next[0] = HELD;
   for (r = 1; r < nc; ++r) {
     const double u = bounds[r];
     if (state[r] == HELD && isfinite(u)) {
-      if (lam[r] > u + tol_lam) next[r] = SLIDE_POS;
-      else if (lam[r] < -u - tol_lam) next[r] = SLIDE_NEG;
-    } else if (state[r] == SLIDE_POS && w[r] > tol_w) {
+      if (lam[r] > u + tol_lam[r]) next[r] = SLIDE_POS;
+      else if (lam[r] < -u - tol_lam[r]) next[r] = SLIDE_NEG;
+    } else if (state[r] == SLIDE_POS && w[r] > tol_w[r]) {
       next[r] = HELD;
-    } else if (state[r] == SLIDE_NEG && w[r] < -tol_w) {
+    } else if (state[r] == SLIDE_NEG && w[r] < -tol_w[r]) {
       next[r] = HELD;
     }
   }

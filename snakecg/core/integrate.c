@@ -19,11 +19,16 @@
  *     I, sec. II.10), output at requested times from the dense output;
  *   - the mode's terminal event functions (snakecg/simulate/events.py, all with direction
  *     -1), detected as solve_ivp does (g >= 0 before a step, <= 0 after) and located on the
- *     dense output by Brent's method with xtol = rtol = 4 EPS (scipy.optimize.brentq).
+ *     dense output by Brent's method with xtol = rtol = 4 EPS (scipy.optimize.brentq);
+ *   - the contact check (geometry.h, sg->geo): the largest overlap of the bodies at the
+ *     segment's start, at every output time and at every step's end; the first time it
+ *     exceeds the tolerance is located between the last two of these on the dense output by
+ *     the same Brent's method, and stops the segment (SEG_GEOMETRY) or is recorded.
  * A segment that this path cannot answer as the Python one would (dependent held rows, which
  * the Python right-hand side regularizes; a failed evaluation) returns a status that sends it
  * to the Python path.
  */
+#define _POSIX_C_SOURCE 200809L /* clock_gettime (before the first include) */
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
@@ -31,7 +36,9 @@
 
 #include "snakecg_layout.h"
 #define SC_ROW_VELOCITIES
+#define SC_WALL_TIME
 #include "common.h"
+#include "geometry.h"
 
 #define NA SNAKECG_NA
 #define NL SNAKECG_NL
@@ -187,14 +194,45 @@ static int event_at(sc_ctx *c, const sc_dense *D, int e, double t, double *g) {
   return st;
 }
 
-/* scipy.optimize.brentq (scipy/optimize/Zeros/brentq.c) on event e over [xa, xb]. */
-static int brentq(sc_ctx *c, const sc_dense *D, int e, double xa, double xb, double *root) {
+/* A function of time for brentq (its value in *g): 0, or SEG_PYTHON. */
+typedef int (*sc_root_fn)(void *arg, double t, double *g);
+
+/* The event function e on the dense output D (an sc_root_fn). */
+typedef struct {
+  sc_ctx *c;
+  const sc_dense *D;
+  int e;
+} sc_event_arg;
+
+static int event_fn(void *arg, double t, double *g) {
+  sc_event_arg *a = (sc_event_arg *)arg;
+  return event_at(a->c, a->D, a->e, t, g);
+}
+
+/* The contact check's margin, tolerance - largest overlap, on the dense output D (an
+ * sc_root_fn). */
+typedef struct {
+  const sc_geometry *geo;
+  const sc_dense *D;
+} sc_geo_arg;
+
+static int geo_fn(void *arg, double t, double *g) {
+  const sc_geo_arg *a = (const sc_geo_arg *)arg;
+  double y[NY];
+  sc_int pair;
+  dense_eval(a->D, t, y);
+  *g = a->geo->tol - geo_depth(a->geo, y, &pair);
+  return 0;
+}
+
+/* scipy.optimize.brentq (scipy/optimize/Zeros/brentq.c) on fn over [xa, xb]. */
+static int brentq(sc_root_fn fn, void *arg, double xa, double xb, double *root) {
   const double xtol = 4 * DBL_EPSILON, rtol = 4 * DBL_EPSILON;
   double xpre = xa, xcur = xb, xblk = 0.0, fpre, fcur, fblk = 0.0, spre = 0.0, scur = 0.0;
   double sbis, delta, stry, dpre, dblk;
   int i, st;
-  if ((st = event_at(c, D, e, xpre, &fpre))) return st;
-  if ((st = event_at(c, D, e, xcur, &fcur))) return st;
+  if ((st = fn(arg, xpre, &fpre))) return st;
+  if ((st = fn(arg, xcur, &fcur))) return st;
   *root = xpre;
   if (fpre == 0) return 0;
   *root = xcur;
@@ -240,7 +278,7 @@ static int brentq(sc_ctx *c, const sc_dense *D, int e, double xa, double xb, dou
     fpre = fcur;
     if (fabs(scur) > delta) xcur += scur;
     else xcur += (sbis > 0 ? delta : -delta);
-    if ((st = event_at(c, D, e, xcur, &fcur))) return st;
+    if ((st = fn(arg, xcur, &fcur))) return st;
   }
   *root = xcur;
   return 0;
@@ -343,20 +381,57 @@ static int initial_step(sc_ctx *c, const sc_segment *sg, const double *y0, const
   return 0;
 }
 
+/* The segment's steps. A call that has taken at least one step and used up its wall-clock
+ * budget stops before the next step with SEG_PAUSED, its place (t, y, the step size, the
+ * outputs written) in t_end, y_end, h_next and n_out; the call with `resume` goes on from
+ * there: the right-hand side and the event functions at y are evaluated again (the same
+ * values as the step's end gave), so the steps are those of a call that never stopped. */
 static int segment(sc_ctx *c, sc_segment *sg) {
   double K[DP_NX][NY], y[NY], f[NY], y_new[NY], f_new[NY], scale[NY];
-  double g_old[MAX_EVENTS], g_new[MAX_EVENTS];
-  double t = sg->t0, h_abs, h, t_new, err, factor;
+  double g_old[MAX_EVENTS], g_new[MAX_EVENTS], geo_old = 0.0;
+  double t, h_abs = 0.0, h, t_new, err, factor;
+  const double stop_at = sg->budget > 0 ? sc_wall_time() + sg->budget : INFINITY;
   sc_dense D;
   const int n_ev = (int)sg->n_ev;
-  sc_int ie = 0;
+  sc_geometry *geo = sg->geo && sg->geo->mode != GEO_OFF && !sg->geo->found ? sg->geo : 0;
+  sc_int ie, steps = 0;
   int st, e, k, accepted, rejected, have_dense;
-  memcpy(y, sg->y0, sizeof(double) * NY);
+  if (sg->resume) {
+    t = sg->t_end;
+    ie = sg->n_out;
+    h_abs = sg->h_next;
+    memcpy(y, sg->y_end, sizeof(double) * NY);
+  } else {
+    t = sg->t0;
+    ie = 0;
+    memcpy(y, sg->y0, sizeof(double) * NY);
+  }
+  if (geo) { /* the contact check at the start (a resumed call: where the last one paused) */
+    sc_int pair;
+    const double d = geo_depth(geo, y, &pair);
+    if (!sg->resume && d > geo->tol) {
+      geo_record(geo, t, y, d, pair);
+      if (geo->mode == GEO_STOP) {
+        memcpy(sg->y_end, y, sizeof(double) * NY);
+        return SEG_GEOMETRY;
+      }
+      geo = 0;
+    }
+    geo_old = geo ? geo->tol - d : 0.0;
+  }
   if ((st = rhs(c, y, f))) return st;
   for (e = 0; e < n_ev; ++e) g_old[e] = event_value(c, e);
-  if ((st = initial_step(c, sg, y, f, &h_abs))) return st;
+  if (!sg->resume && (st = initial_step(c, sg, y, f, &h_abs))) return st;
   while (!(t == sg->t1)) {
     const double min_step = 10 * fabs(nextafter(t, INFINITY) - t);
+    if (steps > 0 && sc_wall_time() > stop_at) {
+      sg->t_end = t;
+      memcpy(sg->y_end, y, sizeof(double) * NY);
+      sg->h_next = h_abs;
+      sg->n_out = ie;
+      return SEG_PAUSED;
+    }
+    ++steps;
     if (h_abs > sg->max_step) h_abs = sg->max_step;
     else if (h_abs < min_step) h_abs = min_step;
     accepted = rejected = 0;
@@ -393,13 +468,18 @@ static int segment(sc_ctx *c, sc_segment *sg) {
     {
       int first = -1;
       double t_stop = t_new, root;
+      sc_int ie0;
+      sc_event_arg arg;
       for (e = 0; e < n_ev; ++e) {
         if (!(g_old[e] >= 0 && g_new[e] <= 0)) continue; /* direction -1 */
         if (!have_dense) {
           if ((st = dense_build(c, t, h, y, y_new, f_new, K, &D))) return st;
           have_dense = 1;
         }
-        if ((st = brentq(c, &D, e, t, t_new, &root))) return st;
+        arg.c = c;
+        arg.D = &D;
+        arg.e = e;
+        if ((st = brentq(event_fn, &arg, t, t_new, &root))) return st;
         if (first < 0 || root < t_stop) {
           first = e;
           t_stop = root;
@@ -410,10 +490,50 @@ static int segment(sc_ctx *c, sc_segment *sg) {
         if ((st = dense_build(c, t, h, y, y_new, f_new, K, &D))) return st;
         have_dense = 1;
       }
+      ie0 = ie;
       while (ie < sg->n_eval && sg->t_eval[ie] <= t_stop) {
         dense_eval(&D, sg->t_eval[ie], sg->y_eval + ie * NY);
         ++ie;
         sg->n_out = ie;
+      }
+      if (geo) { /* the contact check at the outputs, then at t_stop */
+        double ta = t, ga = geo_old, gb = 0.0, tb = t_stop, yb[NY];
+        sc_int j, pair;
+        int crossed = 0;
+        for (j = ie0; j < ie && !crossed; ++j) {
+          gb = geo->tol - geo_depth(geo, sg->y_eval + j * NY, &pair);
+          if (ga >= 0 && gb < 0) crossed = 1, tb = sg->t_eval[j];
+          else ta = sg->t_eval[j], ga = gb;
+        }
+        if (!crossed) {
+          if (first >= 0) dense_eval(&D, t_stop, yb);
+          else memcpy(yb, y_new, sizeof(double) * NY);
+          gb = geo->tol - geo_depth(geo, yb, &pair);
+          crossed = ga >= 0 && gb < 0;
+          geo_old = gb;
+        }
+        if (crossed) { /* located on the dense output */
+          sc_geo_arg garg;
+          double d;
+          if (!have_dense) {
+            if ((st = dense_build(c, t, h, y, y_new, f_new, K, &D))) return st;
+            have_dense = 1;
+          }
+          garg.geo = geo;
+          garg.D = &D;
+          brentq(geo_fn, &garg, ta, tb, &root);
+          dense_eval(&D, root, yb);
+          d = geo_depth(geo, yb, &pair);
+          geo_record(geo, root, yb, d, pair);
+          if (geo->mode == GEO_STOP) { /* the outputs after it dropped */
+            while (ie > ie0 && sg->t_eval[ie - 1] > root) --ie;
+            sg->n_out = ie;
+            sg->t_end = root;
+            memcpy(sg->y_end, yb, sizeof(double) * NY);
+            return SEG_GEOMETRY;
+          }
+          geo = 0; /* recorded: not looked for again */
+        }
       }
       if (first >= 0) {
         sg->event = first;
@@ -432,14 +552,17 @@ static int segment(sc_ctx *c, sc_segment *sg) {
   return SEG_END;
 }
 
-/* Integrate one segment (see sc_segment); returns and stores the status (SEG_*). */
+/* Integrate one segment (see sc_segment), or go on with a paused one (`resume`); returns and
+ * stores the status (SEG_*). */
 int SNAKECG_EXPORT(core_integrate_segment)(sc_segment *sg) {
   sc_ctx c;
   int i, st;
-  sg->n_out = 0;
+  if (!sg->resume) {
+    sg->n_out = 0;
+    sg->t_end = sg->t0;
+  }
   sg->event = -1;
   sg->nfev = sg->nsteps = sg->nrejected = 0;
-  sg->t_end = sg->t0;
   if (sg->n_ev < 0 || sg->n_ev > MAX_EVENTS || !(sg->t1 > sg->t0) || !(sg->rtol > 0) ||
       !(sg->atol >= 0) || !(sg->max_step > 0) || sg->contact_index < 0 ||
       sg->contact_index >= NL) {
@@ -508,5 +631,17 @@ int SNAKECG_EXPORT(core_mode_samples)(sc_segment *sg, sc_int n, const double *Y,
     extra[2 * NC + 5] = (double)st;
   }
   sc_work_free(&c.ws);
+  return 0;
+}
+
+/* The contact check at n states Y (n x NY, row-major): the largest overlap of each in depth,
+ * its pair in pair (as a double). Returns 0. */
+int SNAKECG_EXPORT(core_contact_depth)(const sc_geometry *g, sc_int n, const double *Y,
+                                      double *depth, double *pair) {
+  sc_int k, p;
+  for (k = 0; k < n; ++k) {
+    depth[k] = geo_depth(g, Y + k * NY, &p);
+    pair[k] = (double)p;
+  }
   return 0;
 }

@@ -147,6 +147,12 @@ static void objective_and_check(const double *in, double *out) {
   out[OPT_OUT_objective_value] = value;
   out[OPT_OUT_check] = SC_CHECK_PASSED;
   if (out[OPT_OUT_status] != SC_OPTIMAL) return;
+  if (isnan(value) && row[OUT_status] >= 2) { /* the forward solve has no answer there */
+    out[OPT_OUT_status] = SC_FAILED;
+    out[OPT_OUT_reason] = SC_REASON_NO_ANSWER;
+    out[OPT_OUT_detail + 1] = row[OUT_status]; /* its reason's code */
+    return;
+  }
 #define FAIL(code) (out[OPT_OUT_check] = (code), out[OPT_OUT_status] = SC_FAILED, \
                     out[OPT_OUT_reason] = SC_REASON_FORWARD_CHECK)
   if (!isnan(in[OPT_IN_tau_max])) {
@@ -330,9 +336,14 @@ int SNAKECG_EXPORT(core_optimal)(sc_int n, const double *scene, const double *fw
     tau = o.out + OPT_OUT_tau;
     row = o.out + OPT_OUT_forward;
     for (j = 0; j < NA; ++j) finite &= fabs(tau[j]) <= fw_constants[5];
-    if (!finite) { /* no torque to check: the answer has failed */
-      for (j = 0; j < NA; ++j) tau[j] = 0.0;
+    if (!finite) { /* no torque to check (the caller words why): the answer has failed */
+      double big = 0.0;
+      for (j = 0; j < NA; ++j)
+        if (!(fabs(tau[j]) <= big)) big = fabs(tau[j]); /* NaN wins */
+      o.out[OPT_OUT_detail] = big;
       sc_optimal_status(&o, SC_FAILED, SC_REASON_NOT_FINITE);
+      o.out[OPT_OUT_objective_value] = NAN;
+      continue;
     }
     o.out[OPT_OUT_forward_status] = sc_optimal_forward(&o, tau, row);
     if (o.out[OPT_OUT_forward_status] != 0 || row[OUT_status] != 0) {

@@ -51,7 +51,11 @@ enum {
   SC_REASON_WITHIN_REACH = 9,    /* the solver failed although the task is within reach */
   SC_REASON_CERTIFICATE = 10,    /* the certificate fails (residuals in OPT_OUT_*) */
   SC_REASON_FORWARD_CHECK = 11,  /* the forward check disagrees: OPT_OUT_check */
-  SC_REASON_NOT_FINITE = 12      /* the answer is not a finite torque within the force limit */
+  SC_REASON_NOT_FINITE = 12,     /* the answer is not a finite torque within the force limit:
+                                  * its largest |tau_j|; the caller solves the forward at 0
+                                  * and puts its row's status second */
+  SC_REASON_NO_ANSWER = 13       /* the forward solve at the answer has none: its row's
+                                  * status (the reason's code, snakecg/rows.py) */
 };
 /* forward checks (OPT_OUT_check), with OPT_OUT_check_detail */
 enum {

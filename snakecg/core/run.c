@@ -12,17 +12,22 @@
  * force, sliding wheels that keep sliding; the contact candidate of a closing gap on the link)
  * and the settle (core_settle, settle.c). It records the samples (the output times, both
  * sides of every event) with their mode, the modes, and the events with what Python needs to
- * describe them. Anything the Python loop would do differently (a segment or a settle handed
+ * describe them. The contact check (geometry.h) runs in every segment and on the state after
+ * every event; with GEO_STOP its first violation ends the run (RUN_GEOMETRY), its sample the
+ * last. Anything the Python loop would do differently (a segment or a settle handed
  * back to Python, a failed or too small step, more samples or modes than room) returns
  * RUN_PYTHON: the caller then runs the whole loop in Python from the start.
  */
+#define _POSIX_C_SOURCE 200809L /* clock_gettime (before the first include) */
 #include <math.h>
 #include <string.h>
 #include <time.h>
 
 #include "snakecg_layout.h"
 #define SC_TYPES_ONLY
+#define SC_WALL_TIME
 #include "common.h"
+#include "geometry.h"
 
 #define MODE_WIDTH (NC + 1)  /* a mode: its row states, then off_link */
 #define EVENT_WIDTH (11 + NC) /* an event: see sc_run.events */
@@ -31,7 +36,7 @@ int SNAKECG_EXPORT(core_integrate_segment)(sc_segment *sg);
 int SNAKECG_EXPORT(core_mode_samples)(sc_segment *sg, sc_int n, const double *Y, double *out);
 int SNAKECG_EXPORT(core_settle)(sc_settle *st);
 
-enum { RUN_COMPLETED = 0, RUN_STOPPED = 1, RUN_PYTHON = 2 };
+enum { RUN_COMPLETED = 0, RUN_STOPPED = 1, RUN_PYTHON = 2, RUN_GEOMETRY = 3, RUN_PAUSED = 4 };
 
 typedef struct {
   sc_segment *sg;     /* the run's segment (tau, constants, its y0/state/ev_* arrays) */
@@ -65,6 +70,12 @@ typedef struct {
   sc_int start;       /* in: 1 when y is the initial state, before the start's settle (done
                          here first, see start()), 0 when it is the state after it */
   double *start_out;  /* out (start): START_WIDTH, see start() */
+  double budget;      /* in: wall-clock seconds a call may take; after them it stops with
+                         RUN_PAUSED (within a segment, between two, or within the samples)
+                         and the next call with `resume` goes on; <= 0: no limit */
+  sc_int resume;      /* in/out: 0 a new run; where a paused call stopped: 1 within a
+                         segment (sg->resume), 2 before a segment, 3 within the samples */
+  sc_int mode, i0, n_sampled; /* where a paused call stopped (with t, off_link, stuck) */
   sc_int status;      /* RUN_* */
 } sc_run;
 
@@ -221,40 +232,72 @@ static int start(sc_run *R, double *y, sc_int *off_link) {
   return 0;
 }
 
-static int run(sc_run *R) {
+/* The loop. With a budget, a call stops with RUN_PAUSED where it stands (its place in R and
+ * the segment); the call with R->resume goes on from there. At the top of the loop the
+ * state y is the last sample's. */
+static int run(sc_run *R, double stop_at) {
   sc_segment *sg = R->sg;
   sc_settle *st = R->st;
   const double T = R->T, tiny = 1e-12 * (T > 1.0 ? T : 1.0);
   double t = R->t, y[NY], *state = (double *)sg->state;
-  sc_int off_link = R->off_link, mode, stuck = 0, i0 = 0, k;
-  int status;
+  sc_int off_link = R->off_link, mode, stuck = R->stuck, i0 = R->i0, k;
+  const sc_int resume = R->resume;
+  int status, first = 1;
   clock_t c0;
-  memcpy(y, R->y, sizeof(y));
-  if (R->start && start(R, y, &off_link)) return RUN_PYTHON;
-  if ((mode = add_mode(R, state, off_link)) < 0 || add_sample(R, t, y, mode)) return RUN_PYTHON;
+  R->resume = 0;
+  if (resume) {
+    mode = R->mode;
+    memcpy(y, R->y_out + (R->n_out - 1) * NY, sizeof(y));
+  } else {
+    stuck = i0 = 0;
+    memcpy(y, R->y, sizeof(y));
+    if (R->start && start(R, y, &off_link)) return RUN_PYTHON;
+    if ((mode = add_mode(R, state, off_link)) < 0 || add_sample(R, t, y, mode))
+      return RUN_PYTHON;
+  }
   while (t < T * (1 - 1e-13)) {
-    /* output times after t: the grid's (its last is T, where the segment ends) */
-    while (i0 < R->n_grid && !(R->grid[i0] > t)) ++i0;
-    if (i0 >= R->n_grid || R->n_out + (R->n_grid - i0) + 2 > R->cap) return RUN_PYTHON;
-    sg->t_eval = R->grid + i0;
-    sg->n_eval = R->n_grid - i0;
-    sg->y_eval = R->y_out + R->n_out * NY;
-    sg->n_ev = specs(sg, state, off_link);
-    memcpy((double *)sg->y0, y, sizeof(y));
-    sg->t0 = t;
-    sg->t1 = T;
+    if (resume != 1 || !first) {
+      if (!first && sc_wall_time() > stop_at) { /* pause before this segment */
+        R->resume = 2;
+        break;
+      }
+      /* output times after t: the grid's (its last is T, where the segment ends) */
+      while (i0 < R->n_grid && !(R->grid[i0] > t)) ++i0;
+      if (i0 >= R->n_grid || R->n_out + (R->n_grid - i0) + 2 > R->cap) return RUN_PYTHON;
+      sg->t_eval = R->grid + i0;
+      sg->n_eval = R->n_grid - i0;
+      sg->y_eval = R->y_out + R->n_out * NY;
+      sg->n_ev = specs(sg, state, off_link);
+      memcpy((double *)sg->y0, y, sizeof(y));
+      sg->t0 = t;
+      sg->t1 = T;
+      sg->resume = 0;
+    }
+    first = 0;
+    sg->budget = isfinite(stop_at) ? fmax(stop_at - sc_wall_time(), 1e-9) : 0.0;
     c0 = clock();
     status = SNAKECG_EXPORT(core_integrate_segment)(sg);
     R->segment_cpu += (double)(clock() - c0) / CLOCKS_PER_SEC;
-    R->segments++;
     R->nfev += sg->nfev;
     R->nsteps += sg->nsteps;
-    if (status != SEG_END && status != SEG_EVENT) return RUN_PYTHON;
+    if (status == SEG_PAUSED) { /* the segment goes on at the next call */
+      sg->resume = 1;
+      R->resume = 1;
+      break;
+    }
+    R->segments++;
+    if (status != SEG_END && status != SEG_EVENT && status != SEG_GEOMETRY) return RUN_PYTHON;
     for (k = 0; k < sg->n_out; ++k) { /* the outputs, written in place */
       R->t_out[R->n_out] = sg->t_eval[k];
       R->mode_out[R->n_out] = (double)mode;
       R->loss_out[R->n_out] = R->loss;
       R->n_out++;
+    }
+    if (status == SEG_GEOMETRY) { /* the contact check's first violation ends the run */
+      if (R->t_out[R->n_out - 1] < sg->t_end && add_sample(R, sg->t_end, sg->y_end, mode))
+        return RUN_PYTHON;
+      R->t = sg->t_end;
+      return RUN_GEOMETRY;
     }
     if (status == SEG_END) {
       t = T;
@@ -289,6 +332,17 @@ static int run(sc_run *R) {
       if (st->impact) R->loss += -st->impact_de;
       t = t_e;
       if (add_sample(R, t, y, mode)) return RUN_PYTHON;
+      if (sg->geo && sg->geo->mode != GEO_OFF && !sg->geo->found) { /* the state after it */
+        sc_int pair;
+        const double d = geo_depth(sg->geo, y, &pair);
+        if (d > sg->geo->tol) {
+          geo_record(sg->geo, t, y, d, pair);
+          if (sg->geo->mode == GEO_STOP) {
+            R->t = t;
+            return RUN_GEOMETRY;
+          }
+        }
+      }
       if (R->n_events >= R->max_events || stuck > 20) {
         R->t = t;
         R->stuck = stuck;
@@ -297,18 +351,35 @@ static int run(sc_run *R) {
     }
   }
   R->t = t;
+  if (R->resume) { /* paused: where it stands */
+    R->off_link = off_link;
+    R->stuck = stuck;
+    R->mode = mode;
+    R->i0 = i0;
+    return RUN_PAUSED;
+  }
   return RUN_COMPLETED;
 }
 
-/* The trajectory's quantities at every sample, in its mode (core_mode_samples on each run of
- * samples that share their mode): 0, or 1. */
-static int samples(sc_run *R) {
+/* Samples evaluated between two looks at the clock. */
+#define SAMPLE_CHUNK 256
+
+/* The trajectory's quantities at every sample from R->n_sampled on, in its mode
+ * (core_mode_samples on each run of samples that share their mode, SAMPLE_CHUNK at most at
+ * once): 0, 1 (failed), or RUN_PAUSED after stop_at (R->n_sampled: how far it got). */
+static int samples(sc_run *R, double stop_at) {
   const int width = NY + 2 * NC + 6;
   double *state = (double *)R->sg->state;
-  sc_int start = 0, end;
+  sc_int start = R->n_sampled, end;
   while (start < R->n_out) {
     const sc_int mode = (sc_int)R->mode_out[start];
-    for (end = start + 1; end < R->n_out && (sc_int)R->mode_out[end] == mode; ++end) {
+    if (start > R->n_sampled && sc_wall_time() > stop_at) {
+      R->n_sampled = start;
+      return RUN_PAUSED;
+    }
+    for (end = start + 1;
+         end < R->n_out && end - start < SAMPLE_CHUNK && (sc_int)R->mode_out[end] == mode;
+         ++end) {
     }
     memcpy(state, R->modes + mode * MODE_WIDTH, sizeof(double) * NC);
     if (SNAKECG_EXPORT(core_mode_samples)(R->sg, end - start, R->y_out + start * NY,
@@ -316,17 +387,36 @@ static int samples(sc_run *R) {
       return 1;
     start = end;
   }
+  R->n_sampled = start;
   return 0;
 }
 
 /* Run the loop (see sc_run), then evaluate the samples; returns and stores the status
- * (RUN_*). */
+ * (RUN_*). RUN_PAUSED: call again with R->resume as it was left, nothing else changed. */
 int SNAKECG_EXPORT(core_run)(sc_run *R) {
-  R->n_out = R->n_modes = R->n_events = 0;
-  R->segments = R->nfev = R->nsteps = 0;
-  R->segment_cpu = 0.0;
-  R->stuck = 0;
-  R->status = run(R);
-  if (R->status != RUN_PYTHON && samples(R)) R->status = RUN_PYTHON;
+  const double stop_at = R->budget > 0 ? sc_wall_time() + R->budget : INFINITY;
+  int done;
+  if (R->resume == 3) { /* the loop is done (its status kept): the samples go on */
+    R->resume = 0;
+    done = samples(R, stop_at);
+    if (done == RUN_PAUSED) R->resume = 3;
+    else if (done) R->status = RUN_PYTHON;
+    return done == RUN_PAUSED ? RUN_PAUSED : (int)R->status;
+  }
+  if (!R->resume) {
+    R->n_out = R->n_modes = R->n_events = 0;
+    R->segments = R->nfev = R->nsteps = 0;
+    R->segment_cpu = 0.0;
+    R->stuck = 0;
+    R->i0 = R->mode = R->n_sampled = 0;
+  }
+  R->status = run(R, stop_at);
+  if (R->status == RUN_PAUSED || R->status == RUN_PYTHON) return (int)R->status;
+  done = samples(R, stop_at);
+  if (done == RUN_PAUSED) {
+    R->resume = 3;
+    return RUN_PAUSED;
+  }
+  if (done) R->status = RUN_PYTHON;
   return (int)R->status;
 }

@@ -18,10 +18,20 @@ __all__ = [
     "SEG_END",
     "SEG_EVENT",
     "SEG_MEMORY",
+    "SEG_PAUSED",
     "SEG_PYTHON",
     "SEG_TOO_SMALL",
+    "GEO_OFF",
+    "GEO_RECORD",
+    "GEO_STOP",
+    "Geometry",
+    "PAUSE_AFTER",
     "RUN_COMPLETED",
+    "RUN_GEOMETRY",
+    "RUN_PAUSED",
     "RUN_STOPPED",
+    "SEG_GEOMETRY",
+    "contact_depth_function",
     "Run",
     "SETTLE_DONE",
     "Segment",
@@ -39,10 +49,22 @@ EVENT_CODES = {"lam_contact": 0, "s": 1, "l_k - s": 2, "gap": 3, "bound - |lam|"
                "sliding velocity": 5}
 #: Segment status (``SEG_*`` of integrate.c).
 SEG_END, SEG_EVENT, SEG_TOO_SMALL, SEG_PYTHON, SEG_MEMORY, SEG_BAD_INPUT = 0, 1, -1, -2, -3, -4
+#: The segment stopped at the contact check's first violation (``GEO_STOP``).
+SEG_GEOMETRY = 2
+#: A segment or run that used up its wall-clock budget (``budget``): called again with
+#: ``resume`` as the call left it, it goes on where it stopped.
+SEG_PAUSED = 3
+#: The contact check's modes (``GEO_*`` of geometry.h): off, stop at the first violation,
+#: record it and go on.
+GEO_OFF, GEO_STOP, GEO_RECORD = 0, 1, 2
 #: Settle status (``SETTLE_*`` of settle.c): done; anything else hands it to Python.
 SETTLE_DONE = 0
-#: Run status (``RUN_*`` of run.c): completed, stopped (events); anything else: Python.
-RUN_COMPLETED, RUN_STOPPED = 0, 1
+#: Run status (``RUN_*`` of run.c): completed, stopped (events), stopped at the contact
+#: check's first violation, paused (as SEG_PAUSED); anything else: Python.
+RUN_COMPLETED, RUN_STOPPED, RUN_GEOMETRY, RUN_PAUSED = 0, 1, 3, 4
+#: Wall-clock seconds a compiled segment or run goes on before it returns to Python (which
+#: then handles a Ctrl-C, or calls again to go on): a long run stays interruptible.
+PAUSE_AFTER = 0.1
 
 
 class Segment(ctypes.Structure):
@@ -52,9 +74,17 @@ class Segment(ctypes.Structure):
                 ("ev_kind", _P), ("ev_row", _P), ("n_ev", _I), ("contact_index", _I),
                 ("c_k", _D), ("l_k", _D), ("alpha", _D), ("pivot_tol", _D), ("rtol", _D),
                 ("atol", _D), ("max_step", _D), ("t0", _D), ("t1", _D), ("y0", _P),
-                ("t_eval", _P), ("n_eval", _I), ("y_eval", _P), ("n_out", _I), ("t_end", _D),
-                ("y_end", _P), ("event", _I), ("nfev", _I), ("nsteps", _I), ("nrejected", _I),
-                ("status", _I)]
+                ("t_eval", _P), ("n_eval", _I), ("geo", _P), ("budget", _D), ("resume", _I),
+                ("y_eval", _P), ("n_out", _I), ("t_end", _D), ("y_end", _P), ("event", _I),
+                ("nfev", _I), ("nsteps", _I), ("nrejected", _I), ("h_next", _D), ("status", _I)]
+
+
+class Geometry(ctypes.Structure):
+    """``sc_geometry`` of geometry.h: the contact check of a run (mode ``GEO_*``)."""
+
+    _fields_ = [("mode", _I), ("tol", _D), ("half", _D), ("radius", _D), ("length", _P),
+                ("com1", _D), ("found", _I), ("t", _D), ("depth", _D), ("pair", _I),
+                ("y", _P)]
 
 
 class Settle(ctypes.Structure):
@@ -80,7 +110,8 @@ class Run(ctypes.Structure):
                 ("loss_out", _P), ("n_out", _I), ("cap_modes", _I), ("modes", _P),
                 ("n_modes", _I), ("cap_events", _I), ("events", _P), ("n_events", _I),
                 ("stuck", _I), ("samples", _P), ("segments", _I), ("nfev", _I), ("nsteps", _I),
-                ("segment_cpu", _D), ("start", _I), ("start_out", _P), ("status", _I)]
+                ("segment_cpu", _D), ("start", _I), ("start_out", _P), ("budget", _D),
+                ("resume", _I), ("mode", _I), ("i0", _I), ("n_sampled", _I), ("status", _I)]
 
 
 def segment_functions(lib: ctypes.CDLL, prefix: str):
@@ -103,3 +134,14 @@ def segment_functions(lib: ctypes.CDLL, prefix: str):
     run.argtypes = [_P]
     run.restype = ctypes.c_int
     return integrate, samples, settle, run
+
+
+def contact_depth_function(lib: ctypes.CDLL, prefix: str):
+    """``core_contact_depth(&geometry, n, Y, depth, pair)`` of ``lib`` (integrate.c: the
+    largest overlap of ``n`` states and its pair), or ``None`` for a library built without
+    it."""
+    fn = getattr(lib, f"{prefix}core_contact_depth", None)
+    if fn is not None:
+        fn.argtypes = [_P, _I, _P, _P, _P]
+        fn.restype = ctypes.c_int
+    return fn

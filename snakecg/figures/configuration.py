@@ -23,6 +23,10 @@ from ..errors import InputError
 __all__ = ["plot", "configuration_geometry"]
 
 #: Colours of the drawing (matplotlib's tab palette).
+#: How far from the origin (in robot lengths) a drawing may lie: farther out the float spacing
+#: of the coordinates approaches the links' size (and matplotlib's ticks overflow near 1e308).
+MAX_REACH = 1e6
+
 COLORS = {"snake": "tab:blue", "contact_link": "tab:orange", "object": "0.82",
           "normal": "tab:red", "wheel": "0.15", "force": "tab:purple", "acc": "tab:green"}
 
@@ -91,6 +95,11 @@ def plot(scene, q, tau=None, ax=None, *, title: str | None = None):
         raise InputError(f"scene must be a snakecg.Scene or its loaded model, got "
                          f"{type(scene).__name__}")
     g = configuration_geometry(model, q, tau)
+    reach = float(np.abs(np.concatenate([g["corners"], g["rear"], g["front"]])).max())
+    limit = MAX_REACH * float(np.sum(model.robot.length))
+    if not reach <= limit:
+        raise InputError(f"q places the drawing {reach:.3g} m from the origin; it must lie "
+                         f"within {limit:.3g} m ({MAX_REACH:g} robot lengths) to be drawn")
     if ax is None:
         import matplotlib.pyplot as plt
 

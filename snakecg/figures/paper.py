@@ -6,11 +6,16 @@ cheap: the Agg and SVG backends directly (no pyplot state), fixed layouts instea
 engine, images and meshes rasterized, one draw per format.
 
 * :func:`figure4`: the metrics over the torque plane of case study 1, one figure per kappa;
-  each panel has its own colour scale (the slippage ratio of scenario 1 stays below 0.03).
+  each panel has its own colour scale from 0 (the slippage ratio of scenario 1 stays below
+  0.03).
 * :func:`figure5`: per-configuration maxima against the polar coordinates of the COM, binned
   (the colour of a cell is the largest value of the configurations whose COM falls in it), on
   a few discrete levels between the data's extremes; cells whose largest value belongs to a
   physically infeasible shape are dotted.
+
+Colour scales and titles follow :mod:`snakecg.figures.scales`: a panel constant to rounding
+is drawn flat and says so, a narrow spread says it is stretched, sr stays within [0, 1], and
+titles carry the symbol and the unit.
 * :func:`figure6`: the worst and best shapes of Table 2, drawn to one scale; infeasible shapes
   (links crossing, or entering the object) are framed and labelled in red.
 """
@@ -22,20 +27,14 @@ from pathlib import Path
 
 import numpy as np
 
+from .scales import METRIC_LABEL, colorbar, colour_scale, metric_title, polar_rings
+
 __all__ = ["Drawer", "Fig4Panel", "Shape", "figure4", "figure5", "figure6", "make_figure4",
-           "make_figure5", "make_figure6", "write_figure"]
+           "make_figure5", "make_figure6", "write_figure", "METRIC_LABEL"]
 
 SCENARIO_LABEL = {"frictionless": "Scenario 1 (frictionless)",
                   "wheels": "Scenario 2 (wheels, μ = 0.1)",
                   "ideal_wheels": "Scenario 3 (ideal wheels)"}
-METRIC_LABEL = {
-    "norm_a_obj": r"$\|\vec a_{obj}\|^2$",
-    "norm_qdd": r"$\|\ddot q_s\|^2$",
-    "norm_lambda": r"$\|\vec\lambda\|^2$",
-    "sr": "sr",
-}
-METRIC_UNIT = {"norm_a_obj": r"kg m$^2$/s$^4$", "norm_qdd": r"kg m$^2$/s$^4$",
-               "norm_lambda": r"N$^2$/kg", "sr": "–"}
 FONT = 10          # every text of the figures is at least 9 pt
 PNG_DPI = 110
 
@@ -62,13 +61,6 @@ def write_figure(fig, stem: Path, formats) -> list[Path]:
             fig.savefig(tmp, format=fmt, dpi=PNG_DPI if fmt == "png" else 100)
         written.append(path)
     return written
-
-
-def _colorbar(fig, mappable, ax, label, **kw):
-    cb = fig.colorbar(mappable, ax=ax, **kw)
-    cb.set_label(label, fontsize=FONT - 1)
-    cb.ax.tick_params(labelsize=FONT - 1)
-    return cb
 
 
 # ------------------------------------------------------------------------------------------
@@ -107,10 +99,9 @@ def make_figure4(panels: list[Fig4Panel], *, kappa: float, joints_deg, infeasibl
         for i, metric in enumerate(("norm_a_obj", "norm_qdd", "sr")):
             ax = axes[i, j]
             z = panel.grids[metric]
-            top = float(np.nanmax(z)) if np.isfinite(z).any() else 1.0
-            im = ax.imshow(z, origin="lower", aspect="auto", cmap="viridis", extent=extent,
-                           vmin=0.0, vmax=top if top > 0 else 1.0, interpolation="nearest",
-                           rasterized=True)
+            scale = colour_scale(z, metric, from_zero=True)
+            im = ax.imshow(z, origin="lower", aspect="auto", cmap=scale.cmap, norm=scale.norm,
+                           extent=extent, interpolation="nearest", rasterized=True)
             ax.plot(panel.ellipse[0], panel.ellipse[1], color="white", lw=1.3, ls="--")
             ax.contour(panel.t1, panel.t2, panel.grids["contact"].astype(float), levels=[0.5],
                        colors="red", linewidths=1.0)
@@ -121,10 +112,9 @@ def make_figure4(panels: list[Fig4Panel], *, kappa: float, joints_deg, infeasibl
             ax.tick_params(labelsize=FONT - 1)
             ax.xaxis.set_major_locator(MaxNLocator(5))
             ax.label_outer()
-            ax.set_title(f"{METRIC_LABEL[metric]}, {SCENARIO_LABEL[panel.scenario]}",
+            ax.set_title(f"{metric_title(metric)}\n{SCENARIO_LABEL[panel.scenario]}",
                          fontsize=FONT, y=1.0)  # a fixed place: no layout pass per draw
-            _colorbar(fig, im, ax, f"{METRIC_LABEL[metric]} [{METRIC_UNIT[metric]}]",
-                      fraction=0.08, pad=0.03)
+            colorbar(fig, im, ax, scale, fontsize=FONT - 1, fraction=0.08, pad=0.03)
     q = ", ".join(f"{d:g}°" for d in joints_deg)
     title = (f"Fig. 4 (case study 1, 2 joints): norms over the torque plane at q = (0, 0, 0, {q}),"
              f" $\\kappa$ = {kappa:g}\nwhite dashed: input ellipsoid (31); red: boundary between "
@@ -169,10 +159,6 @@ def make_figure5(angle, radius, maxima: dict, *, infeasible, kappa: float,
     """Fig. 5: ``maxima[scenario][metric]`` (per configuration) against the COM's polar
     coordinates ``angle``, ``radius``; ``infeasible`` marks the shapes that are not physically
     possible (left out when ``feasible_only``)."""
-    import matplotlib
-    from matplotlib.colors import BoundaryNorm
-    from matplotlib.ticker import MaxNLocator
-
     angle, radius = np.asarray(angle), np.asarray(radius)
     infeasible = np.asarray(infeasible, bool)
     keep = ~infeasible if feasible_only else np.ones(len(angle), bool)
@@ -184,30 +170,24 @@ def make_figure5(angle, radius, maxima: dict, *, infeasible, kappa: float,
     metrics = ("norm_lambda", "norm_a_obj", "sr")
     fig = _figure(4.6 * len(scenarios), 14.0)
     axes = fig.subplots(3, len(scenarios), squeeze=False, subplot_kw={"projection": "polar"},
-                        gridspec_kw=dict(left=0.04, right=0.95, bottom=0.03, top=0.88,
-                                         wspace=0.45, hspace=0.38))
-    cmap = matplotlib.colormaps["viridis"]
+                        gridspec_kw=dict(left=0.04, right=0.93, bottom=0.04, top=0.88,
+                                         wspace=0.5, hspace=0.42))
     for j, s in enumerate(scenarios):
         for i, m in enumerate(metrics):
             ax = axes[i, j]
             z, bad = _binned_max(angle[keep], radius[keep], np.asarray(maxima[s][m])[keep],
                                  infeasible[keep], r_max)
-            lo, hi = float(np.nanmin(z)), float(np.nanmax(z))
-            levels = MaxNLocator(nbins=8).tick_values(lo, hi if hi > lo else lo + 1e-12)
-            norm = BoundaryNorm(levels, cmap.N, clip=True)
-            mesh = ax.pcolormesh(theta, rr, np.ma.masked_invalid(z).T, cmap=cmap, norm=norm,
-                                 shading="flat", rasterized=True)
+            scale = colour_scale(z, m, levels=8)
+            mesh = ax.pcolormesh(theta, rr, np.ma.masked_invalid(z).T, cmap=scale.cmap,
+                                 norm=scale.norm, shading="flat", rasterized=True)
             if bad.any():
                 ax.plot(tc[bad], rc[bad], ".", color="black", ms=2.0, alpha=0.7)
-            ax.set_title(f"max {METRIC_LABEL[m]} over (31)\n{SCENARIO_LABEL[s]}",
+            ax.set_title(f"max {metric_title(m)} over (31)\n{SCENARIO_LABEL[s]}",
                          fontsize=FONT, pad=12)
-            ax.set_rlabel_position(135)
-            ax.set_rlim(0, r_max)
-            ax.set_rticks(np.arange(0.05, r_max, 0.05))
+            polar_rings(ax, r_max, fontsize=FONT - 1)
             ax.tick_params(labelsize=FONT - 1)
             ax.grid(alpha=0.4)
-            _colorbar(fig, mesh, ax, f"{METRIC_LABEL[m]} [{METRIC_UNIT[m]}]", ticks=levels,
-                      shrink=0.78, pad=0.10)
+            colorbar(fig, mesh, ax, scale, fontsize=FONT - 1, shrink=0.78, pad=0.10)
     shown = "physically feasible shapes only" if feasible_only else (
         "every shape of the grid; black dots: the cell's largest value belongs to a shape whose "
         "links cross or enter the object")

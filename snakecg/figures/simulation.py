@@ -2,10 +2,12 @@
 :class:`~snakecg.simulate.Trajectory` (what ``snakecg simulate`` writes).
 
 * :func:`save_figures`: ``displacement.png``, ``slippage.png``, ``energy.png``, ``forces.png``
-  (events marked as dashed lines, intervals with the contact lost shaded) and, by default,
-  the animation;
+  (events marked as dashed lines, intervals with the contact lost shaded, the contact check's
+  first violation as a solid red line, and what follows it hatched when the run went on)
+  and, by default, the animation;
 * :func:`save_animation`: an animated GIF of the robot pushing the object (matplotlib draws
-  the frames with blitting, Pillow writes the GIF).
+  the frames with blitting, Pillow writes the GIF); from the contact check's first violation
+  on, the bodies involved are red and the frame says so.
 
 Every file is written atomically (a unique temporary name in the same folder, then
 ``os.replace``).
@@ -47,6 +49,24 @@ def _mark_events(ax, traj: Trajectory, *, label=True):
         lab = e.kind if (label and e.kind not in seen) else None
         seen.add(e.kind)
         ax.axvline(e.t, color=c, lw=0.8, ls="--", alpha=0.8, label=lab)
+
+
+def _violation_label(v) -> str:
+    a, b = v.bodies
+    return (f"{v.kind}: link {a} / object" if b == "object"
+            else f"{v.kind}: links {a} / {b}") + f" (t = {v.t:.4g} s)"
+
+
+def _mark_violation(ax, traj: Trajectory, *, label=True):
+    """The contact check's first violation: a solid red line, the end of the run (or, when
+    the run went on, the start of a hatched span that is not physical)."""
+    v = traj.violation
+    if v is None:
+        return
+    ax.axvline(v.t, color="red", lw=1.6, label=_violation_label(v) if label else None)
+    if traj.t[-1] > v.t:
+        ax.axvspan(v.t, traj.t[-1], fc="none", ec="red", hatch="//", lw=0, alpha=0.25,
+                   zorder=0)
 
 
 def _shade_lost(ax, traj: Trajectory):
@@ -99,6 +119,7 @@ def save_figures(traj: Trajectory, folder, *, animation: bool = True, fps: int =
     ax2.set_ylabel("object angle (deg, dotted)", color="tab:gray")
     _shade_lost(ax, traj)
     _mark_events(ax, traj)
+    _mark_violation(ax, traj)
     ax.legend(loc="upper left", fontsize=8)
     ax.set_title("displacement, " + title + " (grey: contact lost)", fontsize=10)
     ax = axes[1]
@@ -109,6 +130,7 @@ def save_figures(traj: Trajectory, folder, *, animation: bool = True, fps: int =
     ax.set_xlabel("t (s)")
     _shade_lost(ax, traj)
     _mark_events(ax, traj, label=False)
+    _mark_violation(ax, traj, label=False)
     ax.legend(loc="upper left", fontsize=8)
     fig.tight_layout()
     paths["displacement"] = str(out / "displacement.png")
@@ -124,6 +146,7 @@ def save_figures(traj: Trajectory, folder, *, animation: bool = True, fps: int =
     ax.set_ylabel("slippage ratio")
     _shade_lost(ax, traj)
     _mark_events(ax, traj)
+    _mark_violation(ax, traj)
     ax.legend(fontsize=8, loc="best")
     ax.set_title("slippage ratio, " + title, fontsize=10)
     fig.tight_layout()
@@ -138,6 +161,7 @@ def save_figures(traj: Trajectory, folder, *, animation: bool = True, fps: int =
     ax.plot(t, traj.power_friction * 1e3, label="wheel friction")
     ax.set_ylabel("power (mW)")
     _mark_events(ax, traj)
+    _mark_violation(ax, traj)
     ax.legend(fontsize=8)
     ax.set_title("power and energy budget, " + title, fontsize=10)
     ax = axes[1]
@@ -152,6 +176,7 @@ def save_figures(traj: Trajectory, folder, *, animation: bool = True, fps: int =
     ax.set_ylabel("energy (mJ)")
     ax.set_xlabel("t (s)")
     _mark_events(ax, traj, label=False)
+    _mark_violation(ax, traj, label=False)
     ax.legend(fontsize=8)
     fig.tight_layout()
     paths["energy"] = str(out / "energy.png")
@@ -174,6 +199,7 @@ def save_figures(traj: Trajectory, folder, *, animation: bool = True, fps: int =
             ax.axhline(-b, color="0.5", lw=0.6, ls=":")
     ax.set_ylabel("constraint force (N)")
     _mark_events(ax, traj, label=False)
+    _mark_violation(ax, traj, label=False)
     ax.legend(fontsize=8, ncol=2)
     ax.set_title("constraint forces and active set (dotted: friction bounds)", fontsize=10)
     ax = axes[1]
@@ -215,7 +241,9 @@ def save_animation(traj: Trajectory, path, *, fps: int = 20, frames: int = 100,
     """An animated GIF of the robot pushing the object: ``frames`` frames evenly spaced in
     time, drawn with matplotlib (links, wheels green when sticking and red when sliding, the
     object as a square of side ``2 object_distance``, the contact point, the paths of the
-    object and of the snake's COM) and written by Pillow at ``fps`` frames per second."""
+    object and of the snake's COM; from the contact check's first violation on, the bodies
+    involved in red and the frame saying so) and written by Pillow at ``fps`` frames per
+    second."""
     from matplotlib.patches import Polygon
     from PIL import Image
 
@@ -247,6 +275,12 @@ def save_animation(traj: Trajectory, path, *, fps: int = 20, frames: int = 100,
         return traj.q_obj[i, :2] + R @ traj.rho
 
     idx = _frame_indices(traj.t, frames)
+    violation = traj.violation
+    if violation is not None:  # the first violation's sample is a frame (the last, at a stop)
+        k = min(int(np.searchsorted(traj.t, violation.t, side="left")), len(traj.t) - 1)
+        j = min(int(np.searchsorted(traj.t[idx], traj.t[k], side="left")), len(idx) - 1)
+        idx[j] = k
+        red = [b - 1 for b in violation.bodies if b != "object"]
     pts = np.concatenate([rear[idx].reshape(-1, 2), front[idx].reshape(-1, 2),
                           np.concatenate([object_corners(i) for i in idx])])
     lo, hi = pts.min(axis=0), pts.max(axis=0)
@@ -264,6 +298,7 @@ def save_animation(traj: Trajectory, path, *, fps: int = 20, frames: int = 100,
     obj = Polygon(square, closed=True, fc="tan", ec="saddlebrown", alpha=0.8)
     ax.add_patch(obj)
     (cpt,) = ax.plot([], [], "k.", ms=6)
+    (bad_links,) = ax.plot([], [], "-", color="red", lw=3)
     (obj_trail,) = ax.plot([], [], color="saddlebrown", lw=0.8)
     (com_trail,) = ax.plot([], [], color="tab:blue", lw=0.8, ls="--", label="snake COM")
     text = ax.text(0.02, 0.97, "", transform=ax.transAxes, va="top", fontsize=8)
@@ -286,14 +321,27 @@ def save_animation(traj: Trajectory, path, *, fps: int = 20, frames: int = 100,
         cpt.set_data([cp[0]], [cp[1]])
         obj_trail.set_data(traj.q_obj[: i + 1, 0], traj.q_obj[: i + 1, 1])
         com_trail.set_data(traj.com[: i + 1, 0], traj.com[: i + 1, 1])
+        note = ""
+        bx, by = [], []
+        if violation is not None and traj.t[i] >= violation.t:
+            note = "\n" + _violation_label(violation)
+            for k in red:
+                bx += [rear[i, k, 0], front[i, k, 0], np.nan]
+                by += [rear[i, k, 1], front[i, k, 1], np.nan]
+            obj.set_edgecolor("red" if "object" in violation.bodies else "saddlebrown")
+        else:
+            obj.set_edgecolor("saddlebrown")
+        bad_links.set_data(bx, by)
         text.set_text(f"t = {traj.t[i]:.3f} s   contact {'held' if traj.contact[i] else 'lost'}"
-                      f"\nsr = {traj.sr[i]:.3f}")
-        return links_line, wheels_stick, wheels_slide, obj, cpt, obj_trail, com_trail, text
+                      f"\nsr = {traj.sr[i]:.3f}{note}")
+        return (links_line, wheels_stick, wheels_slide, obj, cpt, obj_trail, com_trail,
+                bad_links, text)
 
     # static parts drawn once; each frame restores them and draws only the moving artists
     # (blitting), then Pillow writes the GIF: several times faster than redrawing every
     # tick label per frame
-    moving = (links_line, wheels_stick, wheels_slide, obj, cpt, obj_trail, com_trail, text)
+    moving = (links_line, wheels_stick, wheels_slide, obj, cpt, obj_trail, com_trail, bad_links,
+              text)
     for a in moving:
         a.set_animated(True)
     canvas = fig.canvas

@@ -12,6 +12,8 @@ import numpy as np
 from ..core.optimal import (CERTIFICATE, CHECK, INFEASIBLE, METHOD, OPTIMAL, QP_STATUS,
                             REASON)
 from ..forward import ForwardResult
+from ..rows import reason_of
+from ..solver import FORCE_LIMIT
 from .result import (CONTACT, ELLIPSOID, NORMAL, TOLERANCE, Certificate, OptimizeResult,
                      joint_name, wheel_name)
 
@@ -81,8 +83,13 @@ def _reason(query, row, off, binding, tol) -> str:
         kind = CERTIFICATE[int(row[off["certificate"][0]])]
         again = (" after the general eigenproblem" if row[off["resolved"][0]] else "")
         return f"optimality certificate ({kind}) fails{again}: {_residuals(row, off, tol)}"
-    if code == "not_finite":
-        return "the solver's torque is not finite or beyond the force limit"
+    if code == "not_finite":  # the forward solve at zero torque's reason, when it has one
+        why = reason_of(det[1])
+        return why or (f"the optimizer's torque is not finite or beyond +-{FORCE_LIMIT:.0e} "
+                       f"(max |tau| = {det[0]:.3g}): the configuration is too ill-conditioned "
+                       f"to answer")
+    if code == "no_answer":
+        return reason_of(det[1])
     return f"forward check: {_check(query, row, off)}"
 
 

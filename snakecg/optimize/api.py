@@ -10,7 +10,7 @@ import time
 
 import numpy as np
 
-from ..core.optimal import CHECK, KINDS
+from ..core.optimal import CHECK, KINDS, REASON
 from ..errors import SnakecgError
 from .answers import result
 from .query import Query, validate
@@ -24,7 +24,7 @@ _SETTINGS = [FRICTION_MARGIN, CHECK_TOL, SR_TIE, HESSIAN_REG, LP_REG, ACTIVE,
 _NAN = math.nan
 
 
-def optimize(model, q, objective: str = "max_sr", *, tau_max=None, radius=None,
+def optimize(model, q, objective: str = "max_sr", *, tau_max="robot", radius=None,
              direction=None, a_min=None, a_obj=None, allow_slide=False) -> OptimizeResult:
     """The optimal joint torque for a task at configuration ``q`` (at rest).
 
@@ -36,8 +36,9 @@ def optimize(model, q, objective: str = "max_sr", *, tau_max=None, radius=None,
         Configuration(s) ``(x, y, theta, q_1..q_na)``.
     objective : "max_sr" | "least_slip_push" | "strongest_push"
         See the module documentation.
-    tau_max : float or array (n_a,), optional
-        Box limits ``|tau_j| <= tau_max_j`` (N m).
+    tau_max : float or array (n_a,) or "robot" or None
+        Box limits ``|tau_j| <= tau_max_j`` (N m). Default ``"robot"``: the robot's
+        ``effort_limits`` (no box when it has none); None: no box.
     radius : float, optional
         Ellipsoid ``tau^T B^T M_s^-1 B tau <= radius^2`` (eq. 31). With neither ``tau_max``
         nor ``radius`` the region is the paper's ellipsoid (``radius = 1``); with both, their
@@ -59,7 +60,9 @@ def optimize(model, q, objective: str = "max_sr", *, tau_max=None, radius=None,
     OptimizeResult
         ``tau``, ``status`` (``"optimal"``/``"infeasible"``/``"failed"``) with ``reason``,
         ``objective_value``, ``binding``, ``analysis`` (the forward result at ``tau``),
-        ``solver``, ``iterations``, ``time``, ``certificate``.
+        ``solver``, ``iterations``, ``time``, ``certificate``; ``limits``: the torque box and
+        ellipsoid that bound the answer and where they came from; ``note``: what the status
+        alone does not say (a push whose object moves off the requested direction).
     """
     t0 = time.perf_counter()
     query = validate(model, objective, tau_max, radius, direction, a_min, a_obj, allow_slide)
@@ -75,14 +78,34 @@ def optimize(model, q, objective: str = "max_sr", *, tau_max=None, radius=None,
     out = kernel.solve(model, query_in, qa)
     check = kernel.OUT["check"][0]
     pending = np.flatnonzero(out[:, check] == CHECK["pending"])
+    f0, t0_ = kernel.OUT["forward"][0], kernel.OUT["tau"][0]
     if pending.size:  # forward rows that the compiled forward solve left to its reference path
-        f0 = kernel.OUT["forward"][0]
-        taus = out[pending, kernel.OUT["tau"][0]:kernel.OUT["tau"][0] + model.n_joints]
+        taus = out[pending, t0_:t0_ + model.n_joints]
         rows = model.forward(qa[pending], np.ascontiguousarray(taus)).raw
         out[pending, f0:f0 + rows.shape[1]] = rows
         kernel.check(query_in, out)
-    return result(model, query, kernel, out, batched, time.perf_counter() - t0,
-                  tuple(_SETTINGS[6:10]))
+    unanswered = np.flatnonzero(out[:, kernel.OUT["reason"][0]] == REASON["not_finite"])
+    for i in unanswered.tolist():  # no torque to check: the forward solve at zero says why
+        fw = model.forward(qa[i], np.zeros(model.n_joints))
+        out[i, f0:f0 + fw.raw.size] = no_answer(model, fw.raw)
+        out[i, t0_:t0_ + model.n_joints] = np.nan
+        out[i, kernel.OUT["detail"][0] + 1] = fw.raw[model.columns.status]
+    res = result(model, query, kernel, out, batched, time.perf_counter() - t0,
+                 tuple(_SETTINGS[6:10]))
+    res._query = query  # for its limits and note
+    return res
+
+
+def no_answer(model, row):
+    """A forward result row marked as no answer: NaN, flagged singular (its status kept)."""
+    row = row.copy()
+    cols = model.columns
+    for k in ("tau", "qdd", "a_obj", "lam", "w"):
+        row[cols.slices[k]] = np.nan
+    for k in ("norm_lambda", "norm_a_obj", "norm_qdd", "sr", "conditioning"):
+        row[cols.index[k]] = np.nan
+    row[cols.singular] = 1.0
+    return row
 
 
 def query_vector(query: Query) -> np.ndarray:

@@ -8,6 +8,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import InputError
+from ..limits import ROBOT
 from .result import OBJECTIVES
 
 
@@ -20,9 +21,13 @@ class Query:
     a_min: float | None
     a_obj: np.ndarray | None  # (3,)
     slide: np.ndarray  # (n_c,) bool: rows allowed to slide
+    tau_max_from: str | None = None  # "robot" (its effort limits), "argument" or None
 
 
 def _finite_vector(name, value, sizes, what):
+    if isinstance(value, (str, bytes)) or (isinstance(value, (list, tuple)) and any(
+            isinstance(v, (str, bytes, bool, np.bool_)) for v in value)):
+        raise InputError(f"{name} must be {what}, got {value!r:.60} (not numbers)")
     try:
         arr = np.asarray(value, dtype=float)
     except (TypeError, ValueError):
@@ -53,9 +58,17 @@ def validate(model, objective, tau_max, radius, direction, a_min, a_obj, allow_s
         )
     objective = objective.replace("-", "_")
     na = model.n_joints
+    source = "argument"
+    if tau_max.__class__ is str and tau_max == ROBOT:
+        tau_max, source = _robot_tau_max(model)
     if type(tau_max) is float and math.isfinite(tau_max) and tau_max > 0:
         tau_max = np.full(na, tau_max)  # the common case, checked
-    elif tau_max is not None:
+    elif tau_max is not None and source == "argument":
+        if np.ndim(tau_max) == 0 and not _is_number(tau_max):
+            raise InputError(f"tau_max must be a positive number (N m), {na} of them (one per "
+                             f"joint), {ROBOT!r} (the robot's effort limits) or None (no "
+                             f"torque box); got {tau_max!r:.60} of type "
+                             f"{type(tau_max).__name__}")
         if np.ndim(tau_max) == 0:
             tau_max = np.full(na, tau_max, dtype=float) if _is_number(tau_max) else tau_max
         tm = _finite_vector("tau_max", tau_max, (na,),
@@ -117,7 +130,8 @@ def validate(model, objective, tau_max, radius, direction, a_min, a_obj, allow_s
             none = np.zeros(model.n_constraints, dtype=bool)
             none.setflags(write=False)
             model.__dict__["_snakecg_optimize_no_slide"] = none
-        return Query(objective, tau_max, radius, d, a_min, ao, none)
+        return Query(objective, tau_max, radius, d, a_min, ao, none,
+                     None if tau_max is None else source)
     bounded = model.present & np.isfinite(model.bounds)
     bounded[0] = False
     slide = np.zeros(model.n_constraints, dtype=bool)
@@ -143,7 +157,22 @@ def validate(model, objective, tau_max, radius, direction, a_min, a_obj, allow_s
     if slide.any() and objective != "max_sr":
         raise InputError("allow_slide applies to objective 'max_sr' only; push tasks keep "
                          "every wheel within its friction bound")
-    return Query(objective, tau_max, radius, d, a_min, ao, slide)
+    return Query(objective, tau_max, radius, d, a_min, ao, slide,
+                 None if tau_max is None else source)
+
+
+def _robot_tau_max(model):
+    """The torque box of the robot's effort limits (read-only, kept on the model), and its
+    source; ``(None, None)`` for a robot without effort limits."""
+    cached = model.__dict__.get("_snakecg_effort_limits")
+    if cached is None:
+        e = model.robot.effort_limits
+        arr = None if e is None else np.array(e, dtype=float)
+        if arr is not None:
+            arr.setflags(write=False)
+        cached = model.__dict__["_snakecg_effort_limits"] = (arr, None if e is None
+                                                              else "robot")
+    return cached
 
 
 def _is_number(x) -> bool:

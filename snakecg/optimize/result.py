@@ -32,6 +32,9 @@ ACTIVE = 1e-7
 #: Relative tolerances of the certificate.
 TOLERANCE = {"stationarity": 1e-7, "primal_feasibility": 1e-9, "complementarity": 1e-8,
              "duality_gap": 1e-8}
+#: A push whose object accelerates more than this many degrees off the requested direction
+#: says so in its ``note``.
+OFF_DIRECTION_DEG = 0.01
 
 # names of the constraints, as reported in ``binding`` and in reasons
 ELLIPSOID = "input ellipsoid (eq. 31)"
@@ -73,6 +76,13 @@ class OptimizeResult:
       "every wheel sticks" won: that state per link (``"none"``, ``"stick"``, ``"slide+"``,
       ``"slide-"``); else ``None``. ``analysis.wheel_state`` is what the forward solve found
       (the same, or a neighbouring state on their common boundary).
+    * ``limits``: the limits that bound the answer: ``tau_max`` (N m per joint, or None) and
+      ``tau_max_from`` (``"robot"``: the robot's effort limits; ``"argument"``), ``radius``
+      of the ellipsoid (eq. 31, or None).
+    * ``off_direction_deg``: push tasks with a ``direction``: the angle between the requested
+      direction and the object's linear acceleration (None otherwise); ``note``: ``""``, or
+      what the status does not say, e.g. that the object moves along the contact normal,
+      not along ``direction`` (the task bounds only ``d . a_obj``).
     """
 
     objective: str
@@ -92,6 +102,50 @@ class OptimizeResult:
     def ok(self):
         """``status == "optimal"`` (array for a batch)."""
         return np.asarray(self.status) == "optimal"
+
+    @property
+    def limits(self) -> dict | None:
+        """The torque box and the ellipsoid that bound the answer, and their sources."""
+        from ..limits import of_query
+
+        q = getattr(self, "_query", None)
+        return None if q is None else of_query(q)
+
+    @property
+    def off_direction_deg(self):
+        """Degrees between the requested push direction and the object's linear
+        acceleration (push tasks with a ``direction``; None otherwise; an array for a
+        batch)."""
+        q = getattr(self, "_query", None)
+        if q is None or q.direction is None or q.objective == "max_sr":
+            return None
+        d = np.asarray(q.direction, float)[:2]
+        a = np.atleast_2d(np.asarray(self.analysis.a_obj, float))[:, :2]
+        nd, na = np.linalg.norm(d), np.linalg.norm(a, axis=1)
+        with np.errstate(invalid="ignore", divide="ignore"):
+            cos = np.clip(a @ d / (na * nd), -1.0, 1.0)
+        ang = np.where((na > 0) & (nd > 0), np.degrees(np.arccos(cos)), np.nan)
+        out = [None if not np.isfinite(x) else float(x) for x in ang]
+        return out[0] if np.ndim(self.analysis.a_obj) == 1 else out
+
+    @property
+    def note(self):
+        """``""``, or what the status alone does not say (an array for a batch)."""
+        ang = self.off_direction_deg
+        single = not isinstance(ang, list)
+        angs = [ang] if single else ang
+        a = np.atleast_2d(np.asarray(self.analysis.a_obj, float))
+        notes = []
+        for i, x in enumerate(angs if ang is not None else [None] * len(a)):
+            if x is None or x <= OFF_DIRECTION_DEG:
+                notes.append("")
+                continue
+            ax, ay = a[i, :2] / np.linalg.norm(a[i, :2])
+            notes.append(
+                f"the object accelerates along ({ax:.4g}, {ay:.4g}), {x:.3g} deg off the "
+                f"requested direction: the contact pushes along its normal only, and the "
+                f"task bounds d . a_obj alone")
+        return notes[0] if single else np.array(notes, dtype=object)
 
     def to_dict(self) -> dict:
         """JSON-ready dictionary (schema ``snakecg.optimize/1``, docs/optimize.md)."""
@@ -113,6 +167,9 @@ class OptimizeResult:
                             else [c.to_dict() for c in self.certificate]
                             if isinstance(self.certificate, list)
                             else self.certificate.to_dict()),
+            "limits": self.limits,
+            "off_direction_deg": self.off_direction_deg,
+            "note": _plain(self.note),
             "analysis": an,
         }
         return out

@@ -11,11 +11,14 @@ the joint angles and the torque, at rest, with the pose fixed (planar invariance
 * ``"least_slip_push"``: the least ``||qdd_s||^2`` (eq. 26) for ``d . a_obj >= a_min`` (or a
   full ``a_obj``).
 
-Every row is held at the answer: the contact is kept (``lam_c >= 0``) and, in the ``wheels``
+Every row is held by the NLP: the contact is kept (``lam_c >= 0``) and, in the ``wheels``
 scenario, every wheel sticks within its friction bound (the wheel forces are bounded on the
-smooth stick-state map; sliding states are discontinuous and are not searched). Geometric
-constraints (``feasible=True``): non-adjacent links at least ``clearance`` apart and no link
-inside the object's plate (:mod:`snakecg.geometry`). Joint limits always apply.
+smooth stick-state map; sliding states are discontinuous). For ``max_sr`` and ``max_a_obj``
+with bounded wheels the answer is then refined over every wheel state, sliding ones included
+(the exact piecewise extremes, up to 4 joints; ``status`` ``"stick_only"`` where that search
+does not apply). Geometric constraints (``feasible=True``): non-adjacent links at least
+``clearance`` apart and no link inside the object's plate (:mod:`snakecg.geometry`). Joint
+limits always apply.
 
 Method: IPOPT (through CasADi) on the generated CasADi functions composed symbolically, with
 their exact first and second derivatives; multi-started from the best distinct points of a
@@ -36,13 +39,14 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..errors import InputError
+from ..limits import ROBOT, of_query, resolve_joint_limits
 from . import _nlp, _starts
 
 __all__ = ["optimize_shape", "OptimizeShapeResult", "OBJECTIVES", "SCHEMA"]
 
 OBJECTIVES = ("max_sr", "strongest_push", "least_slip_push", "max_a_obj")
 SCHEMA = "snakecg.optimize_shape/1"
-#: Default joint limits (rad), the range of the paper's grids.
+#: Joint limits (rad) of a robot that states none: the range of the paper's grids.
 JOINT_LIMITS = (-0.75 * math.pi, 0.75 * math.pi)
 _SUCCESS = ("Solve_Succeeded", "Solved_To_Acceptable_Level")
 _TASK_KEYS = ("tau_max", "radius", "direction", "a_min", "a_obj")
@@ -65,8 +69,9 @@ class OptimizeShapeResult:
     * ``q`` (n_s): the best shape (pose as given); ``tau`` (n_a): its torque;
     * ``value``: the objective at ``(q, tau)`` read from ``analysis`` (sr, ``||a_obj||^2``,
       ``d . a_obj`` in m/s^2, or ``||qdd_s||^2``); ``analysis``: the forward result there;
-    * ``status``: ``"optimal"`` (best local optimum of the starts, every check passed),
-      ``"infeasible"`` (no start reached a point meeting the constraints) or ``"failed"``;
+    * ``status``: ``"optimal"`` (best local optimum of the starts, every check passed,
+      sliding wheel states included), ``"stick_only"`` (the same with every wheel sticking:
+      sliding states could not be searched), ``"infeasible"`` (no start reached a point meeting the constraints) or ``"failed"``;
       ``reason``: ``""`` or why;
     * ``certificate``: KKT residuals of the solved NLP (``stationarity``,
       ``primal_infeasibility``, ``complementarity``), ``active`` constraint names, IPOPT's
@@ -76,7 +81,9 @@ class OptimizeShapeResult:
       ``start_index``: the start the answer came from (``starts[start_index]`` is the grid
       point it started from); ``grid_best`` / ``grid_best_value``: the coarse grid's best
       point (``None`` when ``q0`` was given); ``runs``: per start, IPOPT's status, iterations
-      and value; ``time``: seconds.
+      and value; ``time``: seconds;
+    * ``limits``: the joint range, torque box and ellipsoid that bound the answer, and their
+      sources (:func:`snakecg.limits.describe`).
     """
 
     objective: str
@@ -95,6 +102,7 @@ class OptimizeShapeResult:
     runs: list = field(default_factory=list, repr=False)
     form: str = ""
     time: float = 0.0
+    limits: dict = field(default_factory=dict)
 
     @property
     def ok(self) -> bool:
@@ -117,7 +125,7 @@ class OptimizeShapeResult:
             "start_index": int(self.start_index),
             "grid_best": None if self.grid_best is None else _l(self.grid_best),
             "grid_best_value": _f(self.grid_best_value), "runs": self.runs,
-            "form": self.form, "time_s": self.time, "analysis": an,
+            "form": self.form, "time_s": self.time, "limits": self.limits, "analysis": an,
         }
 
 
@@ -159,7 +167,7 @@ def _validate(model, objective, q0, starts, seed, joint_limits, feasible, cleara
             raise InputError(f"{', '.join(sorted(extra))} do(es) not apply to objective "
                              f"'max_a_obj' (it takes: radius, tau_max)")
     query = validate_task(model, "max_sr" if objective == "max_a_obj" else objective,
-                          task.get("tau_max"), task.get("radius"), task.get("direction"),
+                          task.get("tau_max", ROBOT), task.get("radius"), task.get("direction"),
                           task.get("a_min"), task.get("a_obj"), False)
     na = model.n_joints
     if isinstance(starts, bool) or not isinstance(starts, (int, np.integer)) or starts < 1:
@@ -173,6 +181,7 @@ def _validate(model, objective, q0, starts, seed, joint_limits, feasible, cleara
             or not math.isfinite(clearance) or clearance < 0):
         raise InputError(f"clearance must be a number >= 0 (m, least distance between "
                          f"non-adjacent links), got {clearance!r}")
+    joint_limits, jl_from = resolve_joint_limits(model.robot, joint_limits)
     try:
         jl = np.asarray(joint_limits, dtype=float)
         if jl.shape == (2,):
@@ -202,7 +211,7 @@ def _validate(model, objective, q0, starts, seed, joint_limits, feasible, cleara
             raise InputError("q0 must be finite")
         if np.any(Q0[:, 3:] < lo - 1e-12) or np.any(Q0[:, 3:] > hi + 1e-12):
             raise InputError("q0's joint angles must lie within joint_limits")
-    return objective, query, Q0, lo, hi, float(clearance)
+    return objective, query, Q0, lo, hi, float(clearance), jl_from
 
 
 def _problem(model, objective, form, feasible, box, ellipsoid, task):
@@ -241,7 +250,7 @@ def _params(query, pose, scale, clearance):
 
 
 def optimize_shape(model, objective: str = "max_sr", *, q0=None, starts: int = 8,
-                   seed: int = 0, joint_limits=JOINT_LIMITS, feasible: bool = True,
+                   seed: int = 0, joint_limits=ROBOT, feasible: bool = True,
                    clearance: float | None = None, **task) -> OptimizeShapeResult:
     """The best shape (joint angles) and torque for a task; see the module documentation.
 
@@ -256,8 +265,9 @@ def optimize_shape(model, objective: str = "max_sr", *, q0=None, starts: int = 8
     seed : int
         Seed of the Sobol sample that replaces the grid beyond 8 joints (the grid itself is
         deterministic).
-    joint_limits : (lo, hi) or (n_a, 2)
-        Radians; default +-135 degrees (the paper's grid range).
+    joint_limits : (lo, hi) or (n_a, 2) or "robot"
+        Radians. Default ``"robot"``: the robot's ``joint_limits`` (within +-pi), or +-135
+        degrees (the paper's grid range, :data:`JOINT_LIMITS`) for a robot without them.
     feasible : bool
         Impose the geometric constraints (default); ``False`` keeps every shape, as the
         paper's grid does.
@@ -265,14 +275,14 @@ def optimize_shape(model, objective: str = "max_sr", *, q0=None, starts: int = 8
         Least distance between non-adjacent links (m), default
         :data:`snakecg.geometry.SELF_CLEARANCE`.
     **task
-        ``tau_max``, ``radius``, ``direction``, ``a_min``, ``a_obj`` as in
-        :func:`snakecg.optimize.optimize`.
+        ``tau_max`` (default: the robot's ``effort_limits``), ``radius``, ``direction``,
+        ``a_min``, ``a_obj`` as in :func:`snakecg.optimize.optimize`.
     """
     from ..geometry import SELF_CLEARANCE
 
     t0 = time.perf_counter()
     clearance = SELF_CLEARANCE if clearance is None else clearance
-    objective, query, Q0, lo, hi, clearance = _validate(
+    objective, query, Q0, lo, hi, clearance, jl_from = _validate(
         model, objective, q0, starts, seed, joint_limits, feasible, clearance, task)
     na = model.n_joints
     bounded = bool(np.any(model.present[1:] & np.isfinite(model.bounds[1:])))
@@ -288,6 +298,7 @@ def optimize_shape(model, objective: str = "max_sr", *, q0=None, starts: int = 8
 
     # starting points ------------------------------------------------------------------
     grid_best = grid_best_value = None
+    symmetric = False
     if Q0 is None:
         pts, step = _starts.coarse_points(lo, hi, seed)
         Q = np.hstack([np.zeros((len(pts), 3)), pts])
@@ -297,7 +308,24 @@ def optimize_shape(model, objective: str = "max_sr", *, q0=None, starts: int = 8
 
             fz = feasibility(model, Q, clearance=clearance)
             score = np.where(fz.feasible, score, np.minimum(score, -1e300))
-        idx = _starts.pick_starts(pts, score, step, starts)
+        symmetric = _starts.mirrored(objective, query, lo, hi)
+
+        def rescore(p_):  # the grid's score at other joint angles
+            Qm = np.hstack([np.zeros((len(p_), 3)), p_])
+            sc = _starts.inner_optimum(model, objective, model.maps(Qm), query)[0]
+            if feasible:
+                from ..geometry import feasibility
+
+                fm = feasibility(model, Qm, clearance=clearance)
+                sc = np.where(fm.feasible, sc, np.minimum(sc, -1e300))
+            return sc
+
+        mirror = _starts.mirror_scores(pts, score, rescore) if symmetric else None
+
+        def basin(idx):
+            return _starts.ascend(pts[idx], score[idx], step, lo, hi, rescore)
+
+        idx = _starts.pick_starts(pts, score, step, starts, mirror, basin)
         S, svals, staus = Q[idx], score[idx], taus[idx]
         best = int(idx[0])
         grid_best = Q[best]
@@ -372,6 +400,21 @@ def optimize_shape(model, objective: str = "max_sr", *, q0=None, starts: int = 8
 
     # exact torque and forward check at the answer --------------------------------------
     tau, analysis, value, reason = _answer(model, objective, form, query, q, x, used)
+    if Q0 is None and symmetric and good:
+        # the starts skip mirror images: the answer is given as the mirror pair's first in
+        # the joint angles' order (the one a start in either basin would have reported)
+        xm = x.copy()
+        xm[:na] = -x[:na]
+        if used.has_tau:
+            xm[na:2 * na] = -x[na:2 * na]
+        qm = np.concatenate([q[:3], xm[:na]])
+        if (tuple(np.round(qm[3:], 6)) < tuple(np.round(q[3:], 6))
+                and not (feasible and _geometry_problem(model, qm, clearance))):
+            mirror_answer = _answer(model, objective, form, query, qm, xm, used)
+            if (mirror_answer[2] is not None and value is not None and not mirror_answer[3]
+                    and abs(mirror_answer[2] - value) <= 1e-9 * max(1.0, abs(value))):
+                x, q = xm, qm
+                tau, analysis, value, reason = mirror_answer
     cert["regularization_gap"] = float(v_nlp - value) if value is not None else None
     if not good:
         st = "infeasible" if all(sol[2]["primal_infeasibility"] > 1e-6 for sol in sols) \
@@ -389,6 +432,15 @@ def optimize_shape(model, objective: str = "max_sr", *, q0=None, starts: int = 8
                       f"{v_nlp:.9g}")
         if reason:
             st = "failed"
+        elif objective in ("max_sr", "max_a_obj") and _bounded(model):
+            found = _sliding_search(model, objective, query, q, value, lo, hi, feasible,
+                                    clearance)
+            if isinstance(found, str):
+                st, reason = "stick_only", found
+            else:
+                moved, cert["sliding_search"] = found
+                if moved is not None:  # sliding wheels do better: their shape and torque
+                    q, tau, analysis, value = moved
     return OptimizeShapeResult(
         objective=objective, q=q, tau=tau, value=value if value is not None else math.nan,
         status=st, reason=reason, analysis=analysis, certificate=cert, starts=S,
@@ -396,7 +448,8 @@ def optimize_shape(model, objective: str = "max_sr", *, q0=None, starts: int = 8
                                "least_slip_push" else 1.0) if abs(s) < 1e300 else math.nan
                                for s in svals]),
         start_index=int(pick), grid_best=grid_best, grid_best_value=grid_best_value,
-        runs=runs, form=form, time=time.perf_counter() - t0)
+        runs=runs, form=form, time=time.perf_counter() - t0,
+        limits=of_query(query, np.stack([lo, hi], axis=1), jl_from))
 
 
 def _run(model, prob, objective, form, query, qs, ts, p, lo, hi):
@@ -464,6 +517,75 @@ def _answer(model, objective, form, query, q, x, prob):
             d = a_dir / max(np.linalg.norm(a_dir), 1e-300)
         value = float(d @ an.a_obj)
     return tau, an, value, reason
+
+
+def _bounded(model) -> bool:
+    """The model has wheels with a friction bound (scenario 2)."""
+    return bool(np.any(model.present[1:] & np.isfinite(model.bounds[1:])))
+
+
+#: Smallest step (rad) of the search over sliding wheel states.
+SLIDING_STEP = 1e-7
+
+
+def _sliding_search(model, objective, query, q, value, lo, hi, feasible, clearance):
+    """The answer with sliding wheels searched too (``max_sr``, ``max_a_obj``, bounded wheels).
+
+    The NLP keeps every wheel sticking; a sliding wheel adds a fixed force and can raise the
+    objective. Where the exact piecewise extremes apply (the unit ellipsoid, n_a <= 4:
+    :func:`snakecg.piecewise.wheel_extremes`, every wheel state, certified per shape), the
+    shape is refined by a compass search on that exact per-shape optimum (every joint +-h,
+    h halved down to :data:`SLIDING_STEP` where no move improves), from the NLP's answer.
+    Returns ``(moved, record)`` (``moved``: ``(q, tau, analysis, value)`` where sliding
+    wheels do better, None where they do not), or a reason (why the search does not apply:
+    the status is then ``stick_only``)."""
+    from ..analysis import EXACT_WHEELS_MAX_JOINTS
+
+    metric = "sr" if objective == "max_sr" else "norm_a_obj"
+    na = model.n_joints
+    if na > EXACT_WHEELS_MAX_JOINTS or query.tau_max is not None or (
+            query.radius is not None and query.radius != 1.0):
+        return (f"sliding wheel states are not searched (every wheel sticks at the answer): "
+                f"the exact piecewise search covers the unit ellipsoid up to "
+                f"{EXACT_WHEELS_MAX_JOINTS} joints")
+
+    def evaluate(shapes):
+        Qs = np.hstack([np.broadcast_to(q[:3], (len(shapes), 3)), shapes])
+        ex = model.extremes(Qs, exact=True)
+        v = np.where(ex.certified, ex.max[metric], -np.inf)
+        if feasible:
+            from ..geometry import feasibility
+
+            v = np.where(feasibility(model, Qs, clearance=clearance).feasible, v, -np.inf)
+        return v, ex.tau_max[metric]
+
+    x = q[3:].copy()
+    v, t = evaluate(x[None])
+    best, tau = float(v[0]), t[0]
+    if not np.isfinite(best):
+        return "the exact piecewise extremes are not certified at the answer"
+    h = np.full(na, 0.05)
+    rounds = 0
+    while np.max(h) > SLIDING_STEP and rounds < 200:
+        rounds += 1
+        moves = []
+        for j in range(na):
+            for sgn in (1.0, -1.0):
+                c = x.copy()
+                c[j] = np.clip(c[j] + sgn * h[j], lo[j], hi[j])
+                moves.append(c)
+        v, t = evaluate(np.array(moves))
+        k = int(np.argmax(v))
+        if v[k] > best + 1e-11 * abs(best):
+            x, best, tau = moves[k], float(v[k]), t[k]
+        else:
+            h = 0.5 * h
+    record = {"stick_value": value, "rounds": rounds, "step": float(np.max(h))}
+    if best <= value + 1e-12 * max(1.0, abs(value)):  # sliding does not beat the answer
+        return None, record
+    qn = np.concatenate([q[:3], x])
+    an = model.forward(qn, tau)
+    return (qn, tau, an, float(getattr(an, metric))), record
 
 
 def _geometry_problem(model, q, clearance) -> str:

@@ -75,23 +75,34 @@ def _call(model, name, **var):
 
 
 def chol_quad(A, b):
-    """``b A^-1 b^T`` for a symmetric positive definite ``A`` (SX), by a Cholesky
+    """``b A^-1 b^T`` for a symmetric positive definite ``A`` (SX or MX), by a Cholesky
     factorization written out (stable without pivoting, unlike a general symbolic solve)."""
     import casadi as ca
 
+    zero = type(A)(0)
     n = A.shape[0]
     L = [[None] * n for _ in range(n)]
     for j in range(n):
         # the floor only guards rounding at trial points far from the data (never active
         # for a positive definite A in exact arithmetic)
-        d = A[j, j] - sum((L[j][k] ** 2 for k in range(j)), ca.SX(0))
+        d = A[j, j] - sum((L[j][k] ** 2 for k in range(j)), zero)
         L[j][j] = ca.sqrt(ca.fmax(d, 1e-300 + 1e-15 * ca.fabs(A[j, j])))
         for i in range(j + 1, n):
-            L[i][j] = (A[i, j] - sum((L[i][k] * L[j][k] for k in range(j)), ca.SX(0))) / L[j][j]
+            L[i][j] = (A[i, j] - sum((L[i][k] * L[j][k] for k in range(j)), zero)) / L[j][j]
     y = []
     for i in range(n):
-        y.append((b[i] - sum((L[i][k] * y[k] for k in range(i)), ca.SX(0))) / L[i][i])
-    return sum((yi ** 2 for yi in y), ca.SX(0))
+        y.append((b[i] - sum((L[i][k] * y[k] for k in range(i)), zero)) / L[i][i])
+    return sum((yi ** 2 for yi in y), zero)
+
+
+def symbol_class(model, names):
+    """``casadi.SX``, or ``casadi.MX`` where one of the generated functions ``names`` keeps
+    its matrices (the ``mx`` algebra of the larger models: their linear solves, CasADi's
+    ``ldl``, cannot be evaluated on SX arguments)."""
+    import casadi as ca
+
+    mx = any(model.casadi_function(n).is_a("MXFunction") for n in names)
+    return ca.MX if mx else ca.SX
 
 
 def geometry_pairs(model):
@@ -117,13 +128,16 @@ class Problem:
         self.objective, self.form, self.feasible = objective, form, feasible
         na, nl = model.n_joints, model.n_links
         self.na = na
-        qj = ca.SX.sym("q_joints", na)
-        p = ca.SX.sym("p", N_P)
+        need_maps = form == "joint" or objective in ("strongest_push", "least_slip_push")
+        self.pairs = geometry_pairs(model) if feasible else []
+        S = symbol_class(model, ["place_object", "interaction_maps" if need_maps else
+                                 "metric_forms"] + (["link_poses"] if self.pairs else []))
+        qj = S.sym("q_joints", na)
+        p = S.sym("p", N_P)
         q = ca.vertcat(p[P_LAYOUT["pose"]], qj)
         place = _call(model, "place_object", q=q)
         wheels = [i for i in range(1, model.n_constraints)
                   if model.present[i] and math.isfinite(model.bounds[i])]
-        need_maps = form == "joint" or objective in ("strongest_push", "least_slip_push")
         if need_maps:
             m = _call(model, "interaction_maps", q=q, q_obj=place["q_obj"], rho=place["rho"])
             Lm = m["lam_from_tau"]
@@ -148,7 +162,7 @@ class Problem:
         self.has_tau = form == "joint"
         tau = None
         if self.has_tau:
-            tau = ca.SX.sym("tau", na)
+            tau = S.sym("tau", na)
             xs.append(tau)
         eps_xi = SR_EPS * ca.trace(Xi) / ca.trace(N)
         if form == "reduced":
@@ -203,7 +217,6 @@ class Problem:
                     ubg.append(np.inf)
                     names.append("required push (d . a_obj >= a_min)")
         # geometry: separating slabs
-        self.pairs = geometry_pairs(model) if feasible else []
         if self.pairs:
             poses = _call(model, "link_poses", q=q)["poses"]  # (3, n_l)
             rob = model.robot
@@ -218,7 +231,7 @@ class Problem:
                            ca.horzcat(ca.sin(qo[2]), ca.cos(qo[2])))
             corners = [qo[:2] + ca.mtimes(R, ca.DM([sx * h, sy * h]))
                        for sx, sy in ((1, 1), (-1, 1), (-1, -1), (1, -1))]
-            slab = ca.SX.sym("slab", 2 * len(self.pairs))
+            slab = S.sym("slab", 2 * len(self.pairs))
             xs.append(slab)
             clear = p[P_LAYOUT["clearance"]]
             lref = float(np.mean(rob.length))
@@ -242,13 +255,13 @@ class Problem:
                     ubg.append(np.inf)
                     names.append(what)
         x = ca.vertcat(*xs)
-        G = ca.vertcat(*g) if g else ca.SX(0, 1)
+        G = ca.vertcat(*g) if g else S(0, 1)
         self.nx = x.shape[0]
         self.lbg, self.ubg, self.names = np.array(lbg, float), np.array(ubg, float), names
         nlp = {"x": x, "p": p, "f": f, "g": G}
         opts = dict(IPOPT_OPTIONS, **(IPOPT_GEOMETRY_OPTIONS if self.pairs else {}))
         self.solver = ca.nlpsol(f"shape_{objective}_{form}", "ipopt", nlp, opts)
-        lam_g = ca.SX.sym("lam_g", G.shape[0])
+        lam_g = S.sym("lam_g", G.shape[0])
         grad = ca.gradient(f, x) + (ca.mtimes(ca.jacobian(G, x).T, lam_g) if g else 0)
         self.kkt = ca.Function("kkt", [x, p, lam_g], [grad, G, f])
         self.value_fn = ca.Function("value", [x, p], [value])

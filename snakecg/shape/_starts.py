@@ -116,22 +116,113 @@ def _outside(model, query, L, N, tau):
     return bad
 
 
-def pick_starts(points, score, step, n):
+def mirrored(objective, query, lo, hi) -> bool:
+    """Whether the task is symmetric under the mirror image of the shape (every joint angle
+    negated, the pose kept): the metrics of ``max_sr`` and ``max_a_obj`` and the pushes along
+    the default direction (the contact normal, mirrored with the shape) are, within joint
+    limits symmetric about 0; a world-frame ``direction`` or ``a_obj`` is not."""
+    return (objective in ("max_sr", "max_a_obj", "strongest_push", "least_slip_push")
+            and query.direction is None and query.a_obj is None
+            and np.allclose(lo, -hi, rtol=0, atol=1e-12))
+
+
+def mirror_scores(points, score, rescore):
+    """The score of each point's mirror image ``-points``: read off a grid symmetric about 0
+    (its points in reverse order), else ``rescore(-points)``."""
+    if np.array_equal(points[::-1], -points):
+        return score[::-1]
+    return rescore(-points)
+
+
+#: Rounds of the pattern search that follows each candidate start to its basin.
+ASCENT_ROUNDS = 10
+#: Candidates followed per start asked for.
+ASCENT_CANDIDATES = 6
+
+
+def ascend(points, score, step, lo, hi, rescore, rounds: int = ASCENT_ROUNDS):
+    """Follow each point uphill on the score (a compass search: every joint +-h, the best
+    move kept, h halved where none improves; starting at half the grid spacing), all points
+    at once: ``(ends, values)``. Points that end next to each other lie in one basin."""
+    x = points.copy()
+    best = score.copy()
+    h = np.broadcast_to(0.5 * step, x.shape).copy()
+    n, na = x.shape
+    for _ in range(rounds):
+        moves = []
+        for j in range(na):
+            for sgn in (1.0, -1.0):
+                c = x.copy()
+                c[:, j] = np.clip(c[:, j] + sgn * h[:, j], lo[j], hi[j])
+                moves.append(c)
+        cand = np.stack(moves, axis=1)  # (n, 2 na, na)
+        val = rescore(cand.reshape(-1, na)).reshape(n, 2 * na)
+        j = np.argmax(val, axis=1)
+        vj = val[np.arange(n), j]
+        up = vj > best + 1e-12 * np.abs(best)
+        x = np.where(up[:, None], cand[np.arange(n), j], x)
+        best = np.where(up, vj, best)
+        h = np.where(up[:, None], h, 0.5 * h)
+    return x, best
+
+
+def pick_starts(points, score, step, n, mirror=None, basin=None):
     """Up to ``n`` best points, skipping direct neighbours of points already taken (so that
-    the starts lie in different basins); ties broken by the coordinates (deterministic)."""
+    the starts lie in different basins); ties broken by the coordinates (deterministic).
+
+    ``mirror``: the score of each point's mirror image (a symmetric task, :func:`mirrored`);
+    a point whose mirror image lies next to a point already taken, with the same score, is
+    that basin's mirror image and is skipped (its answer is the mirror of the other's), so
+    the starts go to distinct basins instead of to mirror pairs.
+    ``basin(idx)``: ``(ends, values)`` of the points ``idx`` followed uphill (:func:`ascend`);
+    a point whose basin's end lies next to (or mirrors) that of a point taken already is
+    skipped too, and the candidates are taken in the order of their basins' values."""
     order = np.lexsort(tuple(points[:, j] for j in range(points.shape[1] - 1, -1, -1))
                        + (-score,))
     good = order[score[order] > -1e299]  # the task is possible and the shape feasible
     taken = []
+
+    def near(a, b, tol=1.01):
+        return np.max(np.abs((a - b) / step)) <= tol
+
+    def image(idx):  # idx is the mirror image of a start taken already
+        if mirror is None or not abs(mirror[idx] - score[idx]) <= 1e-9 * abs(score[idx]):
+            return False
+        return any(near(-points[idx], points[t]) for t in taken)
+
+    ends = {}
+    if basin is not None and good.size:
+        # the best candidates (distinct neighbourhoods first), followed to their basins
+        cand = []
+        for idx in good:
+            if all(not near(points[idx], points[t]) for t in cand) and not (
+                    mirror is not None and abs(mirror[idx] - score[idx]) <= 1e-9 * abs(
+                        score[idx]) and any(near(-points[idx], points[t]) for t in cand)):
+                cand.append(idx)
+                if len(cand) == ASCENT_CANDIDATES * n:
+                    break
+        e, v = basin(np.array(cand))
+        ends = {idx: (e[k], v[k]) for k, idx in enumerate(cand)}
+        rank = sorted(cand, key=lambda i: (-round(ends[i][1], 12), tuple(points[i])))
+        for idx in rank:
+            end = ends[idx][0]
+            same = any(near(end, ends[t][0], 0.25)
+                       or (mirror is not None and near(-end, ends[t][0], 0.25))
+                       for t in taken)
+            if not same:
+                taken.append(idx)
+                if len(taken) == n:
+                    break
     for idx in good:
-        if all(np.max(np.abs((points[idx] - points[t]) / step)) > 1.01 for t in taken):
+        if len(taken) == n:
+            break
+        if idx not in taken and all(not near(points[idx], points[t]) for t in taken) \
+                and not image(idx):
             taken.append(idx)
-            if len(taken) == n:
-                break
     for idx in good:  # fewer basins than starts: the next best points
         if len(taken) == n:
             break
-        if idx not in taken:
+        if idx not in taken and not image(idx):
             taken.append(idx)
     if not taken:  # nowhere possible: the least violating points
         taken = list(order[np.isfinite(score[order])][:n])

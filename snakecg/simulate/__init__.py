@@ -44,8 +44,14 @@ Torques: a constant vector, a function of time ``tau(t)``, or a feedback law ``t
 (:class:`State`), evaluated continuously or held over ``control_period`` (zero-order hold: the
 law is called once per period with the state at the start of the period).
 
+Geometry: the model's one contact does not keep the links out of the object or out of each
+other; ``contact_check`` measures it at every step, sample and event and, by default, ends
+the run at the first overlap beyond its tolerance (status ``penetration`` or
+``self_contact``, :class:`Violation`).
+
 The package: ``simulator`` (the integration loop), ``dynamics`` (the equations at a state),
-``events`` (event functions, impacts, the active set at an event), ``modes``, ``torques``,
+``events`` (event functions, impacts, the active set at an event), ``contact_check`` (the
+geometry at every step, sample and event), ``modes``, ``torques``,
 ``inputs`` (argument checks and limits), ``assembly`` (trajectory and summary), ``records``,
 ``controllers``. The drawing, :func:`save_figures` and :func:`save_animation`, is
 :mod:`snakecg.figures.simulation`, imported on first use (matplotlib is not needed to
@@ -63,7 +69,7 @@ from .inputs import MAX_PERIODS as MAX_PERIODS
 from .inputs import MAX_STEPS as MAX_STEPS
 from .inputs import RTOL_MIN as RTOL_MIN
 from .inputs import STABILIZATION_MAX as STABILIZATION_MAX
-from .records import SCHEMA, SimEvent, SimulationError, State, Trajectory
+from .records import SCHEMA, SimEvent, SimulationError, State, Trajectory, Violation
 from .simulator import simulate
 
 if TYPE_CHECKING:  # imported on first use (matplotlib), see __getattr__
@@ -73,6 +79,7 @@ __all__ = [
     "simulate",
     "Trajectory",
     "SimEvent",
+    "Violation",
     "State",
     "SimulationError",
     "least_slip_push_controller",

@@ -112,7 +112,7 @@ def trajectory(sim, t, Y, impact, R, tau, p_cons, contact, wheel_state, events, 
         work_tau=W[:, 0].copy(), work_friction=W[:, 1].copy(), work_object=W[:, 2].copy(),
         power_constraint=p_cons, impact_loss=impact, energy_residual=kin, events=events,
         summary=lambda traj: summary(sim, traj, status),
-        geometry=Deferred(partial(_geometry, sim.model, dyn)))
+        geometry=Deferred(partial(_geometry, sim.model, dyn)), violation=sim.check.violation)
 
 
 def _kinematic(sim, Y, loss) -> dict:
@@ -220,6 +220,8 @@ def summary(sim, tr: Trajectory, status: str) -> dict:
     return jsonable({
         "schema": SCHEMA,
         "status": status,
+        "violation": None if tr.violation is None else tr.violation.to_dict(),
+        "contact_check": sim.check.describe(),
         "joints": sc.robot.joints,
         "scenario": sc.scenario,
         "kappa": sc.kappa,

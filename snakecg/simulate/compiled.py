@@ -23,10 +23,15 @@ from types import SimpleNamespace
 import numpy as np
 
 from ..core.segment import (
+    PAUSE_AFTER,
     RUN_COMPLETED,
+    RUN_GEOMETRY,
+    RUN_PAUSED,
     RUN_STOPPED,
     SEG_END,
     SEG_EVENT,
+    SEG_GEOMETRY,
+    SEG_PAUSED,
     SEG_TOO_SMALL,
     SETTLE_DONE,
 )
@@ -37,6 +42,8 @@ __all__ = ["CompiledSegments", "compiled_reason"]
 INTEGRATORS = ("auto", "compiled", "scipy")
 #: Events a whole run in C (core_run) has room for; a run with more is done by the Python loop.
 RUN_EVENTS = 256
+#: Samples evaluated in one C call (between two, Python handles a Ctrl-C).
+SAMPLE_CHUNK = 4096
 _TOO_SMALL = "Required step size is less than spacing between numbers."  # solve_ivp's words
 
 
@@ -102,9 +109,11 @@ def placement(model, q0):
 
 class CompiledSegments:
     """The compiled segment integrator of one run on the equations ``dyn``
-    (:class:`~snakecg.simulate.dynamics.Dynamics`) with the checked ``settings``."""
+    (:class:`~snakecg.simulate.dynamics.Dynamics`) with the checked ``settings`` and the
+    contact check ``check`` (:class:`~snakecg.simulate.contact_check.RunCheck`, run by the C
+    in every segment)."""
 
-    def __init__(self, dyn, settings):
+    def __init__(self, dyn, settings, check):
         model = settings.model
         self.dyn = dyn
         self._model = model  # keeps the scene vector alive
@@ -117,6 +126,8 @@ class CompiledSegments:
         seg.alpha = dyn.alpha
         seg.rtol, seg.atol = settings.rtol, settings.atol
         seg.max_step = math.inf if settings.max_step is None else settings.max_step
+        seg.geo = check.address
+        self._check = check  # keeps the struct that seg.geo points at alive
         self.t_eval = np.zeros(0)
         self.y_eval = np.zeros((0, dyn.ny))
         self.steps = 0
@@ -129,14 +140,16 @@ class CompiledSegments:
         computed with this object afterwards)."""
         ws, self.ws = self.ws, None
         if ws is not None:
+            ws.seg.geo = None
             give(self._model, ws)
 
     def run(self, t0, t1, y, mode, tau, specs, t_eval):
         """One segment from ``(t0, y)`` to ``t1`` in ``mode`` with the torque ``tau`` and the
         terminal events ``specs`` (:meth:`~snakecg.simulate.events.Events.specs`), output
         at ``t_eval``: an object with ``status`` (solve_ivp's: 0, 1 at an event, -1),
-        ``message``, the output ``t`` (m,) and ``y`` (m, n_y) and ``fired`` (``[(spec, t_e,
-        y_e)]`` of the event), or ``None`` when solve_ivp must do this segment."""
+        ``message``, the output ``t`` (m,) and ``y`` (m, n_y), ``fired`` (``[(spec, t_e,
+        y_e)]`` of the event) and ``stopped`` (``(t, y)`` where the contact check stopped
+        it, else ``None``), or ``None`` when solve_ivp must do this segment."""
         seg, dyn = self.seg, self.dyn
         self.ev_kind[:len(specs)] = specs.codes
         self.ev_row[:len(specs)] = specs.rows
@@ -151,25 +164,34 @@ class CompiledSegments:
         seg.t_eval, seg.n_eval, seg.y_eval = (self.t_eval.ctypes.data, n,
                                               self.y_eval.ctypes.data)
         seg.n_ev, seg.t0, seg.t1 = len(specs), t0, t1
+        seg.budget, seg.resume = PAUSE_AFTER, 0
         status = self._fn(self._address)
+        while status == SEG_PAUSED:  # back in Python now and then: a Ctrl-C raises here
+            dyn.nfev += seg.nfev
+            self.steps += seg.nsteps
+            seg.resume = 1
+            status = self._fn(self._address)
         dyn.nfev += seg.nfev
         self.steps += seg.nsteps
-        if status not in (SEG_END, SEG_EVENT, SEG_TOO_SMALL):
+        if status not in (SEG_END, SEG_EVENT, SEG_TOO_SMALL, SEG_GEOMETRY):
             self.handed_back += 1
             return None
         m = seg.n_out
         fired = []
         if status == SEG_EVENT:
             fired = [(specs[seg.event], seg.t_end, self.y_end.copy())]
+        stopped = (seg.t_end, self.y_end.copy()) if status == SEG_GEOMETRY else None
         return SimpleNamespace(
             t=self.t_eval[:m], y=self.y_eval[:m].copy(),
-            status={SEG_END: 0, SEG_EVENT: 1, SEG_TOO_SMALL: -1}[status],
-            message=_TOO_SMALL if status == SEG_TOO_SMALL else "", fired=fired)
+            status={SEG_END: 0, SEG_EVENT: 1, SEG_TOO_SMALL: -1, SEG_GEOMETRY: 0}[status],
+            message=_TOO_SMALL if status == SEG_TOO_SMALL else "", fired=fired,
+            stopped=stopped)
 
     def run_all(self, y, mode, loss, tau, grid, T, gtol, max_events):
         """The whole run from the state ``y`` in ``mode`` (after the start's settle, the
         energy ``loss`` removed there) with the constant torque ``tau`` to ``T``, output at
-        ``grid`` (increasing, the last is ``T``), in one C call (``core_run``): the filled
+        ``grid`` (increasing, the last is ``T``), in C (``core_run``, called again while it
+        pauses): the filled
         :class:`~snakecg.core.segment.Run` (the workspace's: read it before the next run) and
         its arrays (``t``, ``y``, ``mode``, ``loss`` and the quantities ``samples`` (as
         :meth:`samples_into`) of each sample, the ``modes`` and the ``events``, see run.c),
@@ -209,8 +231,11 @@ class CompiledSegments:
         R.cap_modes, R.modes = cap_events + 1, base + 8 * o_modes
         R.cap_events, R.events = cap_events, base + 8 * o_events
         R.n_modes = 0
+        R.budget, R.resume = PAUSE_AFTER, 0
         status = self._run(self.ws.run_address)
-        if status not in (RUN_COMPLETED, RUN_STOPPED):
+        while status == RUN_PAUSED:  # back in Python now and then: a Ctrl-C raises here
+            status = self._run(self.ws.run_address)
+        if status not in (RUN_COMPLETED, RUN_STOPPED, RUN_GEOMETRY):
             self.started = R.n_modes > 0
             return None
         n = R.n_out
@@ -318,8 +343,12 @@ class CompiledSegments:
         n = len(Y)
         self.tau[:] = tau
         self.state[:] = mode.state
-        if n and self._samples(self._address, n, Y.ctypes.data, out.ctypes.data) != 0:
-            raise MemoryError("the compiled samples could not allocate their workspace")
+        width = out.shape[1]
+        for i in range(0, n, SAMPLE_CHUNK):  # in chunks: a Ctrl-C is handled between two
+            m = min(SAMPLE_CHUNK, n - i)
+            if self._samples(self._address, m, Y.ctypes.data + 8 * i * Y.shape[1],
+                             out.ctypes.data + 8 * i * width) != 0:
+                raise MemoryError("the compiled samples could not allocate their workspace")
 
     def samples(self, Y, mode, tau):
         """:meth:`samples_into` as a dict of ``ydot`` (n, n_y), ``lam``, ``AV`` (n, n_c),

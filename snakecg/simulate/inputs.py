@@ -11,10 +11,12 @@ import numpy as np
 
 from .._inputs import as_batch, to_float
 from ..errors import InputError, SnakecgError
+from ..solver import FORCE_LIMIT, check_input_range
 from .compiled import placement
 from .torques import torque_law
 
-__all__ = ["METHODS", "MAX_OUTPUT_SAMPLES", "MAX_PERIODS", "MAX_STEPS", "MAX_FRAMES", "RTOL_MIN",
+__all__ = ["DURATION_MAX", "DURATION_MIN", "METHODS", "MAX_OUTPUT_SAMPLES", "MAX_PERIODS",
+           "MAX_STEPS", "MAX_FRAMES", "RTOL_MIN",
            "STABILIZATION_MAX", "Settings", "check_arguments", "check_count", "positive",
            "single"]
 
@@ -32,6 +34,10 @@ MAX_FRAMES = 2000
 #: makes the equations stiff and the explicit integrators crawl).
 RTOL_MIN = 100 * float(np.finfo(float).eps)
 STABILIZATION_MAX = 1e6
+#: Shortest and longest run (s). Below a nanosecond the default output spacing (duration /
+#: 400) and the event tolerances (1e-12 of the duration) are below what the times resolve;
+#: above 1e6 s an event within 1e-6 s of the last counts as no progress.
+DURATION_MIN, DURATION_MAX = 1e-9, 1e6
 
 
 def positive(name, value, *, allow_none=False, allow_zero=False):
@@ -99,6 +105,7 @@ class Settings:
     output_dt: float
     max_events: int
     integrator: str = "auto"  # "auto", "compiled" or "scipy" (snakecg.simulate.compiled)
+    geometry_check: str = "stop"  # "stop", "report" or "off" (snakecg.simulate.contact_check)
 
 
 def _classes():
@@ -122,7 +129,8 @@ _CLASSES = None
 
 def check_arguments(model, q0, tau, duration, v0, *, v_obj0, q_obj0, rho, f_obj,
                     control_period, method, rtol, atol, max_step, fixed_step, stabilization,
-                    output_dt, max_events, integrator="auto") -> Settings:
+                    output_dt, max_events, integrator="auto",
+                    geometry_check="stop") -> Settings:
     """The arguments of :func:`~snakecg.simulate.simulate` checked, in order, with the
     defaults filled in (the object's placement from the scene when ``q_obj0`` and ``rho``
     are not given)."""
@@ -133,6 +141,7 @@ def check_arguments(model, q0, tau, duration, v0, *, v_obj0, q_obj0, rho, f_obj,
     ns, na = model.n_coordinates, model.n_joints
     what = f" = (n_joints + 3,) for a {na}-joint robot"
     q0 = single("q0", q0, ns, what)
+    v0_default, v_obj0_default, f_default = v0 is None, v_obj0 is None, f_obj is None
     v0 = np.zeros(ns) if v0 is None else single("v0", v0, ns, what)
     v_obj0 = np.zeros(3) if v_obj0 is None else single("v_obj0", v_obj0, 3, "")
     if (q_obj0 is None) != (rho is None):
@@ -145,7 +154,20 @@ def check_arguments(model, q0, tau, duration, v0, *, v_obj0, q_obj0, rho, f_obj,
         rho = single("rho", rho, 2, "")
     f_obj = np.zeros(3) if f_obj is None else single("f_obj", f_obj, 3, "")
     duration = positive("duration", duration)
+    if not DURATION_MIN <= duration <= DURATION_MAX:
+        raise InputError(f"duration must be from {DURATION_MIN:g} to {DURATION_MAX:g} s, got "
+                         f"{duration!r}")
     kind, law = torque_law(tau, na)
+    # forces and velocities within float64's range, as forward checks them (the arrays
+    # given, the defaults are zeros; a few numbers each: tested in Python, the message from
+    # check_input_range)
+    for k, a, default, limit in (
+            ("v", v0, v0_default, FORCE_LIMIT ** 0.5),
+            ("v_obj", v_obj0, v_obj0_default, FORCE_LIMIT ** 0.5),
+            ("f_obj", f_obj, f_default, FORCE_LIMIT), ("tau", law, kind != "constant",
+                                                       FORCE_LIMIT)):
+        if not default and max(map(abs, a.tolist())) > limit:
+            check_input_range({k: (a, False)})
     period = positive("control_period", control_period, allow_none=True)
     if period is not None and kind == "constant":
         period = None
@@ -179,8 +201,12 @@ def check_arguments(model, q0, tau, duration, v0, *, v_obj0, q_obj0, rho, f_obj,
     if not (isinstance(integrator, str) and integrator in ("auto", "compiled", "scipy")):
         raise InputError(f"integrator must be 'auto', 'compiled' or 'scipy', got "
                          f"{integrator!r:.60}")
+    if not (isinstance(geometry_check, str) and geometry_check in ("stop", "report", "off")):
+        raise InputError(f"geometry_check must be 'stop', 'report' or 'off', got "
+                         f"{geometry_check!r:.60}")
     return Settings(model=model, q0=q0, v0=v0, q_obj0=q_obj0, v_obj0=v_obj0, rho=rho,
                     f_obj=f_obj, duration=duration, kind=kind, law=law, control_period=period,
                     method=method, rtol=rtol_, atol=atol, max_step=max_step,
                     fixed_step=fixed_step, alpha=alpha, output_dt=output_dt,
-                    max_events=int(max_events), integrator=integrator)
+                    max_events=int(max_events), integrator=integrator,
+                    geometry_check=geometry_check)

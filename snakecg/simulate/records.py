@@ -1,6 +1,6 @@
 """What a simulation gives back: :class:`Trajectory`, its :class:`SimEvent` records, the
-:class:`State` a feedback law sees, :class:`SimulationError`, and the JSON form of the summary
-(schema :data:`SCHEMA`)."""
+:class:`Violation` of the contact check, the :class:`State` a feedback law sees,
+:class:`SimulationError`, and the JSON form of the summary (schema :data:`SCHEMA`)."""
 
 from __future__ import annotations
 
@@ -12,7 +12,7 @@ import numpy as np
 from ..errors import SnakecgError
 
 __all__ = ["SCHEMA", "Deferred", "SimEvent", "SimulationError", "State", "Trajectory",
-           "jsonable"]
+           "Violation", "jsonable"]
 
 #: Version of the summary dictionary (``Trajectory.summary``, ``snakecg simulate --json``).
 SCHEMA = "snakecg.simulate/1"
@@ -63,6 +63,40 @@ class SimEvent:
                 "after": self.after, **{k: jsonable(v) for k, v in self.data.items()}}
 
 
+@dataclass(frozen=True)
+class Violation:
+    """The first time two bodies overlapped by more than the contact check's tolerance
+    (:class:`snakecg.geometry.ContactCheck`).
+
+    ``kind``: ``"penetration"`` (a link and the object) or ``"self_contact"`` (two links
+    that are not neighbours); ``t`` (s): when, located between the checks (every step's end,
+    every output sample, the state after every event) on the integrator's dense output;
+    ``bodies``: ``(link, "object")`` or ``(link, link)``, links numbered from 1 (the tail);
+    ``depth`` (m): the overlap there, the ``tolerance`` (m) to the root finder's accuracy
+    (more when the overlap appeared at once, at an event); ``y``: the state there.
+    """
+
+    kind: str
+    t: float
+    bodies: tuple
+    depth: float
+    tolerance: float
+    y: np.ndarray = field(repr=False, compare=False)
+
+    def describe(self) -> str:
+        """One line: what overlapped, by how much, when."""
+        a, b = self.bodies
+        what = (f"link {a} entered the object" if b == "object"
+                else f"links {a} and {b} crossed")
+        return (f"{what} at t = {self.t:.6g} s (overlap {self.depth:.3g} m, tolerance "
+                f"{self.tolerance:.3g} m)")
+
+    def to_dict(self) -> dict:
+        return jsonable({"kind": self.kind, "t": self.t, "bodies": list(self.bodies),
+                         "depth": self.depth, "tolerance": self.tolerance,
+                         "description": self.describe()})
+
+
 @dataclass
 class Trajectory:
     """A simulated trajectory, sampled at ``t`` (N,) (uniform output times plus both sides of
@@ -83,7 +117,9 @@ class Trajectory:
       (N,) and ``energy_residual`` = kinetic energy gained minus all of those;
     * ``summary``: a JSON-ready dictionary (schema ``snakecg.simulate/1``, docs/simulate.md),
       computed from the arrays above on first access (given as a function of the trajectory,
-      it is called then; a run that never reads it does not pay for it).
+      it is called then; a run that never reads it does not pay for it);
+    * ``violation``: the contact check's first :class:`Violation`, or ``None`` (its kind is
+      then the ``summary``'s status; with ``geometry_check="stop"`` it is the last sample).
 
     Any other field may be given as a :class:`Deferred`: it is computed when first read
     (``simulate`` defers the fields that need the mass matrices and link poses of the samples,
@@ -124,6 +160,7 @@ class Trajectory:
     events: list
     summary: dict
     geometry: dict = field(repr=False, default_factory=dict)
+    violation: Violation | None = None
 
     def __post_init__(self):
         d = self.__dict__
@@ -171,7 +208,7 @@ class Trajectory:
 
     def arrays(self) -> dict[str, np.ndarray]:
         """Every per-sample array by name (for ``numpy.savez``)."""
-        skip = {"events", "summary", "geometry"}
+        skip = {"events", "summary", "geometry", "violation"}
         return {k: np.asarray(getattr(self, k)) for k in self.__dataclass_fields__
                 if k not in skip}
 

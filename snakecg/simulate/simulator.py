@@ -2,8 +2,9 @@
 mode by mode (terminal events, the mode re-solved at each event, the held torque re-sampled at
 each control instant), each segment in compiled code
 (:class:`~snakecg.simulate.compiled.CompiledSegments`) where it can and with
-:func:`scipy.integrate.solve_ivp` otherwise, and hands the samples to
-:func:`~snakecg.simulate.assembly.assemble`."""
+:func:`scipy.integrate.solve_ivp` otherwise, with the contact check
+(:class:`~snakecg.simulate.contact_check.RunCheck`) on every segment and at every event, and
+hands the samples to :func:`~snakecg.simulate.assembly.assemble`."""
 
 from __future__ import annotations
 
@@ -18,6 +19,7 @@ from ..errors import InputError, SnakecgError
 from ..solver import ABSENT, HELD, LOST
 from .assembly import assemble, assemble_arrays
 from .compiled import CompiledSegments, compiled_reason
+from .contact_check import RunCheck
 from .dynamics import N_WORK, Dynamics
 from .events import Events
 from .inputs import Settings, check_arguments
@@ -42,6 +44,8 @@ class Simulator:
                                settings.control_period, self.dyn.state)
         gtol = 1e-9 * max(self.dyn.scene.robot.length)
         self.events = Events(self.dyn, self.torques, gtol)
+        self.check = RunCheck(settings.model, settings.geometry_check, self.dyn.ns,
+                              self.dyn.ny)
         # filled in by run()
         self.ke_initial = math.nan  # set by assemble()
         self.initial_mode = self.final_mode = ""
@@ -52,7 +56,8 @@ class Simulator:
         if settings.integrator == "compiled" and reason is not None:
             raise InputError(f"integrator='compiled' is not available for this run: {reason};"
                              " use integrator='auto' or 'scipy'")
-        self.compiled = CompiledSegments(self.dyn, settings) if reason is None else None
+        self.compiled = (CompiledSegments(self.dyn, settings, self.check) if reason is None
+                         else None)
         self.events.kernel = self.compiled
 
     def _solver_options(self) -> dict:
@@ -75,31 +80,45 @@ class Simulator:
 
     def _solve_ivp(self, opts, t, t_end, y, mode, tau_fn, t_eval):
         """One segment by :func:`scipy.integrate.solve_ivp`: an object with ``status``,
-        ``message``, the output ``t`` (m,) and ``y`` (m, n_y), and ``fired``: ``(event
-        function, t_e, y_e)`` of each terminal event that fired."""
+        ``message``, the output ``t`` (m,) and ``y`` (m, n_y), ``fired``: ``(event
+        function, t_e, y_e)`` of each terminal event that fired, and ``stopped``: ``(t, y)``
+        where the contact check ended the segment, else ``None``."""
         from scipy.integrate import solve_ivp
 
-        dyn, cfg = self.dyn, self.settings
+        dyn, cfg, check = self.dyn, self.settings, self.check
         evs = self.events.functions(mode, tau_fn)
+        geo = check.event() if check.active else None  # (evaluated at every step's end)
 
         def fun(tt, yy, m=mode, f=tau_fn):
             return dyn.rates(tt, yy, m, f)[0]
 
         if cfg.fixed_step is not None:
             opts["first_step"] = min(cfg.fixed_step, t_end - t)
+        all_evs = (evs + [geo] if geo is not None else evs) or None
+
+        def rerun():  # the same segment with its dense output
+            return solve_ivp(fun, (t, t_end), y, t_eval=t_eval, events=all_evs,
+                             dense_output=True, **opts)
+
         try:
-            sol = solve_ivp(fun, (t, t_end), y, t_eval=t_eval, events=evs or None, **opts)
+            sol = solve_ivp(fun, (t, t_end), y, t_eval=t_eval, events=all_evs, **opts)
         except SnakecgError:
             raise
         except (ValueError, np.linalg.LinAlgError, ArithmeticError) as exc:
             raise SimulationError(f"integration failed at t = {t:.6g} s: {exc}") from exc
         ys = np.asarray(sol.y).reshape(dyn.ny, -1).T if len(sol.t) else np.zeros((0, dyn.ny))
-        fired = []
+        fired, stopped = [], None
         if sol.status == 1:
             fired = [(evs[i], float(te[0]), np.asarray(ye[0])) for i, (te, ye) in
-                     enumerate(zip(sol.t_events, sol.y_events)) if len(te)]
+                     enumerate(zip(sol.t_events[:len(evs)], sol.y_events)) if len(te)]
+        if geo is not None:
+            root = ((float(sol.t_events[-1][0]), np.asarray(sol.y_events[-1][0]))
+                    if len(sol.t_events[-1]) else None)
+            if check.solved(t, y, np.asarray(sol.t), ys, root, rerun) is not None \
+                    and check.stops:
+                stopped = (check.struct.t, check.violation.y)
         return SimpleNamespace(status=sol.status, message=sol.message, t=sol.t, y=ys,
-                               fired=fired)
+                               fired=fired, stopped=stopped)
 
     def _run_compiled(self, y, mode, loss, grid, events, wall0):
         """The loop of :meth:`run` for a constant torque in C (``core_run``, see
@@ -112,6 +131,7 @@ class Simulator:
         tau = self.settings.law  # the constant torque (Torques.function's)
         done = self.compiled.run_all(y, mode, loss, tau, grid, T, handler.gtol, cfg.max_events)
         if done is None:
+            self.check.reset()  # (what the C found before it handed the run back)
             return None
         R, a = done
         nc = self.dyn.nc
@@ -152,7 +172,7 @@ class Simulator:
         self.final_mode = modes[int(a.mode[-1])].describe()
         self.wall = time.perf_counter() - wall0
         return assemble_arrays(self, a.t, a.y, a.loss, a.samples, tau, a.mode, modes, events,
-                               status)
+                               self.check.status(status))
 
     def run(self) -> Trajectory:
         try:
@@ -166,6 +186,7 @@ class Simulator:
         wall0 = time.perf_counter()
         T = cfg.duration
         y = np.concatenate([cfg.q0, cfg.q_obj0, cfg.v0, cfg.v_obj0, np.zeros(N_WORK)])
+        self.check.check_start(y)
         events: list[SimEvent] = []
         grid = self._output_times()
         whole = self.compiled is not None and cfg.kind == "constant"
@@ -212,7 +233,8 @@ class Simulator:
         stuck = 0
         next_control = (cfg.control_period if cfg.control_period is not None else math.inf)
         opts = self._solver_options()
-        while t < T * (1 - 1e-13):
+        check = self.check
+        while t < T * (1 - 1e-13) and not check.at(t, y):  # (the state after the settle)
             t_end = min(T, next_control)
             if t_end - t <= 1e-12 * T:
                 t_end = T if next_control >= T else t_end
@@ -231,7 +253,18 @@ class Simulator:
             segments += 1
             if sol.status < 0:
                 raise SimulationError(f"integration failed at t = {t:.6g} s: {sol.message}")
+            stop = sol.stopped
             keep = np.asarray(sol.t) > t
+            if stop is not None:  # the contact check's first violation ends the run
+                keep &= np.asarray(sol.t) <= stop[0]
+                if keep.any():
+                    blocks.append((np.asarray(sol.t, dtype=float)[keep], sol.y[keep], mode,
+                                   tau_fn, impact_loss))
+                if blocks[-1][0][-1] < stop[0]:
+                    blocks.append((np.array([stop[0]]), stop[1][None, :].copy(), mode, tau_fn,
+                                   impact_loss))
+                t = stop[0]
+                break
             if keep.any():
                 blocks.append((np.asarray(sol.t, dtype=float)[keep], sol.y[keep], mode, tau_fn,
                                impact_loss))
@@ -253,6 +286,7 @@ class Simulator:
                 blocks.append((np.array([t]), y[None, :].copy(), mode, torques.function(),
                                impact_loss))
                 if n_events >= cfg.max_events or stuck > 20:
+                    check.at(t, y)
                     status = (f"stopped at t = {t:.6g} s after {n_events} events"
                               + (" (no progress between events)" if stuck > 20 else ""))
                     break
@@ -274,13 +308,13 @@ class Simulator:
         self.wall = time.perf_counter() - wall0
         self.segments = segments
         self.final_mode = mode.describe()
-        return assemble(self, blocks, events, status)
+        return assemble(self, blocks, events, check.status(status))
 
 
 def simulate(model, q0, tau, duration, v0=None, *, v_obj0=None, q_obj0=None, rho=None,
              f_obj=None, control_period=None, method="DOP853", rtol=1e-9, atol=1e-11,
              max_step=None, fixed_step=None, stabilization=10.0, output_dt=None,
-             max_events=1000, integrator="auto") -> Trajectory:
+             max_events=1000, integrator="auto", geometry_check="stop") -> Trajectory:
     """Integrate the snake + object of ``model`` (a :class:`~snakecg.SceneModel`) from ``q0``.
 
     Parameters
@@ -309,6 +343,14 @@ def simulate(model, q0, tau, duration, v0=None, *, v_obj0=None, q_obj0=None, rho
         constant or a law with ``control_period``; the same steps, error norm, dense output
         and event location as solve_ivp's DOP853), solve_ivp otherwise; ``"compiled"``
         requires the compiled segments, ``"scipy"`` always uses solve_ivp.
+    geometry_check : what the contact check does when two bodies (a link and the object, or
+        two links that are not neighbours) overlap by more than its tolerance
+        (:func:`snakecg.geometry.contact_tolerance`, 1e-6 of the longest link): ``"stop"``
+        (default) ends the run there, with ``summary["status"]`` ``"penetration"`` or
+        ``"self_contact"`` and ``Trajectory.violation`` saying when, which bodies and how
+        deep; ``"report"`` reports it the same way and integrates on (the trajectory
+        without the check); ``"off"`` checks nothing. An initial state that overlaps is
+        refused (``InputError``) unless ``"off"``.
 
     Returns a :class:`Trajectory` with the per-sample arrays, the events and ``summary``.
     """
@@ -316,5 +358,6 @@ def simulate(model, q0, tau, duration, v0=None, *, v_obj0=None, q_obj0=None, rho
         model, q0, tau, duration, v0, v_obj0=v_obj0, q_obj0=q_obj0, rho=rho, f_obj=f_obj,
         control_period=control_period, method=method, rtol=rtol, atol=atol,
         max_step=max_step, fixed_step=fixed_step, stabilization=stabilization,
-        output_dt=output_dt, max_events=max_events, integrator=integrator)
+        output_dt=output_dt, max_events=max_events, integrator=integrator,
+        geometry_check=geometry_check)
     return Simulator(settings).run()

@@ -9,6 +9,7 @@ import numpy as np
 
 from .._inputs import as_batch
 from ..errors import InputError
+from ..solver import FORCE_LIMIT
 from .records import SimulationError
 
 __all__ = ["Torques", "check_tau", "torque_law"]
@@ -52,6 +53,9 @@ def check_tau(value, n_a: int, t: float) -> np.ndarray:
     if arr.shape != (n_a,) or not np.all(np.isfinite(arr)):
         raise SimulationError(f"the torque law returned {value!r} at t = {t:.6g} s; expected "
                               f"{n_a} finite numbers (one per joint)")
+    if np.any(np.abs(arr) > FORCE_LIMIT):
+        raise SimulationError(f"the torque law returned {value!r} at t = {t:.6g} s; expected "
+                              f"torques within +-{FORCE_LIMIT:.0e} N m")
     return arr
 
 

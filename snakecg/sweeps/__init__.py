@@ -3,8 +3,10 @@
 ``snakecg.sweep(scene, store="sweep.zarr")`` (:func:`~snakecg.sweeps.run.sweep`) evaluates
 every configuration of a grid or of seeded samples; :func:`summary` and :func:`figure`
 reduce a store chunk by chunk (Table 2 style and Fig. 5 style); :func:`read` loads a small
-one into memory. Needs the ``sweep`` extra (``pip install 'snakecg[sweep]'``: Dask's
-``distributed`` and Zarr); importing this package does not import them.
+one into memory; every read checks the store's digests. A store also opens with
+``xarray.open_zarr``. Needs the ``sweep`` extra (``pip install 'snakecg[sweep]'``: Dask's
+``distributed``, Zarr, xarray and cryptography); importing this package does not import
+them.
 """
 
 from .plan import Plan, default_chunk, joint_values

@@ -27,37 +27,134 @@ def _distributed():
 
 
 def check_scheduler(address) -> str:
-    """Validate a scheduler address (``tcp://HOST:PORT``) before connecting."""
+    """Validate a scheduler address (``tcp://HOST:PORT``) before connecting. Only plain TCP
+    is taken: a ``tls://`` scheduler needs the cluster's certificates (connect a
+    ``distributed.Client`` with its ``Security`` and pass it as ``client=``), and other
+    transports are not for clusters of separate machines."""
     _distributed()
-    from distributed.comm import registry
-    from distributed.comm.addressing import parse_address
+    from distributed.comm.addressing import parse_address, parse_host_port
 
     if not isinstance(address, str) or not address.strip():
         raise InputError(f"scheduler must be an address like tcp://HOST:PORT, got {address!r}")
-    scheme, loc = parse_address(address.strip())
+    address = address.strip()
+    scheme, loc = parse_address(address)
+    if scheme == "tls":
+        raise InputError(f"scheduler {address!r}: a tls:// scheduler needs its cluster's "
+                         f"certificates, which --scheduler does not take; from Python, "
+                         f"connect distributed.Client(address, security=...) and pass it as "
+                         f"client=")
+    if scheme != "tcp":
+        raise InputError(f"unknown scheduler {address!r}: the scheme {scheme!r} is not "
+                         f"taken; give an address like tcp://HOST:PORT")
     try:
-        registry.get_backend(scheme)
-    except (ValueError, ImportError):
-        raise InputError(f"unknown scheduler {address!r}: the scheme {scheme!r} is not one of "
-                         f"Dask's ({', '.join(sorted(registry.backends))}); give an address "
-                         f"like tcp://HOST:PORT") from None
-    if not loc:
-        raise InputError(f"scheduler {address!r} has no host; give tcp://HOST:PORT")
-    return address.strip()
+        host, port = parse_host_port(loc)
+    except (ValueError, TypeError):
+        host, port = None, None
+    if not host or not isinstance(port, int) or not 0 < port < 65536:
+        raise InputError(f"scheduler {address!r} needs a host and a port: tcp://HOST:PORT")
+    return address
 
 
 def check_workers(workers) -> int:
     if workers is None:
         return os.cpu_count() or 1
-    if isinstance(workers, bool) or not isinstance(workers, int) or workers < 1:
-        raise InputError(f"workers must be an integer >= 1 (local worker processes), "
-                         f"got {workers!r}")
+    most = MAX_WORKERS_PER_CORE * (os.cpu_count() or 1)
+    if isinstance(workers, bool) or not isinstance(workers, int) or not 1 <= workers <= most:
+        raise InputError(f"workers must be an integer from 1 to {most} (local worker "
+                         f"processes, at most {MAX_WORKERS_PER_CORE} per core of this "
+                         f"machine), got {workers!r}")
     return workers
+
+
+#: Local worker processes per core at most (more only share the cores and the memory).
+MAX_WORKERS_PER_CORE = 4
+#: Largest first message a Dask scheduler's greeting is taken to have (a few hundred
+#: bytes in practice).
+_GREETING_MOST = 1 << 20
+
+
+def _probe(address: str, deadline: float) -> None:
+    """Check that a Dask scheduler answers at ``address`` before ``distributed.Client`` is
+    pointed at it: Dask's handshake waits without a time limit for the first message, and
+    reads its length from the first 8 bytes (a listener that never answers would hang the
+    sweep; an HTTP server's reply would be read as a message of exabytes). A Dask server
+    greets first: an 8-byte length, then that many bytes; both must come before
+    ``deadline`` and the length must be plausible."""
+    import socket
+    import struct
+
+    from distributed.comm.addressing import parse_address, parse_host_port
+
+    host, port = parse_host_port(parse_address(address)[1])
+
+    def left() -> float:
+        t = deadline - time.monotonic()
+        if t <= 0:
+            raise TimeoutError("no answer")
+        return t
+
+    def recv(sock, n: int) -> bytes:
+        data = b""
+        while len(data) < n:
+            sock.settimeout(left())
+            part = sock.recv(n - len(data))
+            if not part:
+                raise ConnectionError("the connection was closed")
+            data += part
+        return data
+
+    try:
+        with socket.create_connection((host, port), timeout=left()) as sock:
+            (n,) = struct.unpack("<Q", recv(sock, 8))
+            if not 0 < n <= _GREETING_MOST:
+                raise _NotDask(f"its first bytes are {struct.pack('<Q', n)!r}")
+            recv(sock, n)
+    except _NotDask as exc:
+        raise InputError(f"{address!r} is not a Dask scheduler ({exc}); give the address "
+                         f"of a running dask scheduler, tcp://HOST:PORT") from None
+    except TimeoutError:
+        raise InputError(f"no Dask scheduler answered at {address!r} within "
+                         f"{CONNECT_TIMEOUT:g} s; give the address of a running dask "
+                         f"scheduler, tcp://HOST:PORT") from None
+    except OSError as exc:
+        why = " ".join(str(exc).split())[:200] or type(exc).__name__
+        raise InputError(f"cannot reach the Dask scheduler at {address!r} within "
+                         f"{CONNECT_TIMEOUT:g} s ({why})") from None
+
+
+class _NotDask(Exception):
+    pass
+
+
+def _connect_scheduler(distributed, address: str):
+    """A client of the scheduler at ``address`` (checked by :func:`_probe`, then connected
+    within :data:`CONNECT_TIMEOUT`), with at least one worker within another
+    :data:`CONNECT_TIMEOUT`."""
+    deadline = time.monotonic() + CONNECT_TIMEOUT
+    _probe(address, deadline)
+    try:
+        c = distributed.Client(address, timeout=max(1.0, deadline - time.monotonic()))
+    except (OSError, TimeoutError, ValueError) as exc:
+        raise InputError(f"cannot reach the Dask scheduler at {address!r} within "
+                         f"{CONNECT_TIMEOUT:g} s ({' '.join(str(exc).split())[:200]})"
+                         ) from None
+    try:
+        c.wait_for_workers(1, timeout=CONNECT_TIMEOUT)
+    except (TimeoutError, OSError):
+        c.close()
+        raise SnakecgError(f"the Dask scheduler at {address!r} has no workers (none joined "
+                           f"within {CONNECT_TIMEOUT:g} s); start some with dask worker "
+                           f"{address}") from None
+    except BaseException:
+        c.close()
+        raise
+    return c
 
 
 def connect(*, client=None, scheduler=None, workers=None):
     """``(client, close)``: the given client, one connected to ``scheduler``, or a new local
-    cluster of ``workers`` single-threaded worker processes on the loopback interface;
+    cluster of ``workers`` single-threaded worker processes on the loopback interface,
+    reachable only with its own temporary TLS credentials (:func:`_local_cluster`);
     ``close()`` shuts down whatever this call started."""
     distributed = _distributed()
     if client is not None:
@@ -66,13 +163,7 @@ def connect(*, client=None, scheduler=None, workers=None):
                              f"{type(client).__name__}")
         return client, lambda: None
     if scheduler is not None:
-        address = check_scheduler(scheduler)
-        try:
-            c = distributed.Client(address, timeout=CONNECT_TIMEOUT)
-        except (OSError, TimeoutError, ValueError) as exc:
-            raise InputError(f"cannot reach the Dask scheduler at {address!r} within "
-                             f"{CONNECT_TIMEOUT:g} s ({' '.join(str(exc).split())[:200]})"
-                             ) from None
+        c = _connect_scheduler(distributed, check_scheduler(scheduler))
         return c, c.close
     n = check_workers(workers)
     import dask
@@ -89,11 +180,13 @@ def connect(*, client=None, scheduler=None, workers=None):
         with dask.config.set({"distributed.nanny.pre-spawn-environ.MALLOC_TRIM_THRESHOLD_":
                               None}):
             cluster = _local_cluster(distributed, n)
+    except InputError:
+        raise
     except Exception as exc:  # noqa: BLE001 - reported as a failure, exit 1
         raise SnakecgError(f"could not start a local Dask cluster of {n} workers: "
                            f"{type(exc).__name__}: {' '.join(str(exc).split())[:300]}"
                            ) from None
-    c = distributed.Client(cluster)
+    c = distributed.Client(cluster, security=cluster.security)
 
     def close():
         c.close()
@@ -138,14 +231,36 @@ LOCAL_CONFIG = {"distributed.worker.profile.enabled": False,
                 "distributed.scheduler.work-stealing-interval": "1s"}
 
 
-def _local_cluster(distributed, n: int):
+def _security():
+    """Temporary TLS credentials for one local cluster (``Security.temporary()``: a key and
+    a self-signed certificate made in memory, handed to the worker processes through their
+    start-up pipe; Dask writes them for an instant into a private temporary folder, mode
+    0700, while a TLS context loads them): the scheduler, nannies and workers accept only
+    peers that present them, so no other program, and no other user of the machine, can
+    connect to the cluster and run code in it."""
+    try:
+        from distributed.security import Security
+
+        return Security.temporary()
+    except ImportError:
+        raise InputError("sweeps need the sweep extra (Dask, Zarr, xxhash, xarray and "
+                         "cryptography, for the local cluster's TLS): pip install "
+                         "'snakecg[sweep]'") from None
+
+
+def _local_cluster(distributed, n: int, security=True):
+    """A local cluster of ``n`` single-threaded worker processes on 127.0.0.1, every
+    listener TLS with temporary credentials (:func:`_security`; ``security=None`` is for the
+    benchmark's comparison only)."""
     import dask
 
     env = {"DASK_" + key.upper().replace(".", "__").replace("-", "_"): str(value)
            for key, value in LOCAL_CONFIG.items()}  # read by each worker process at start
+    sec = _security() if security is True else security
     with dask.config.set(LOCAL_CONFIG):  # the scheduler's, in this process
         return distributed.LocalCluster(
             n_workers=n, threads_per_worker=1, processes=True, host="127.0.0.1",
+            security=sec, protocol="tls://" if sec is not None else "tcp://",
             # CRITICAL: a worker whose heartbeat meets the scheduler closing at the end of a
             # sweep logs that race as an error with a traceback; a chunk's own failure
             # reaches the sweep through its future and is reported there

@@ -23,10 +23,13 @@ import numpy as np
 from ..errors import InputError
 from .store import configuration_bytes
 
-__all__ = ["Plan", "grid_plan", "samples_plan", "joint_values", "default_chunk",
+__all__ = ["Plan", "grid_plan", "samples_plan", "joint_values", "default_grid",
+           "default_bounds", "default_chunk",
            "spread_chunk", "configuration_seconds", "result_bytes", "plan_from_meta",
            "SAMPLE_BLOCK", "PAPER_RANGE_DEG", "PAPER_STEP_DEG", "CHUNK_SECONDS",
-           "MAX_CHUNK_BYTES", "MAX_CHUNKS", "CHUNKS_PER_WORKER", "CONFIGURATION_SECONDS"]
+           "MAX_CHUNK_BYTES", "MAX_CHUNKS", "CHUNKS_PER_WORKER", "CONFIGURATION_SECONDS",
+           "joint_count", "check_size", "MAX_EXPLICIT_CHUNKS", "MAX_TASK_BYTES",
+           "MAX_POINTS_PER_JOINT"]
 
 #: Samples are drawn in blocks of this many configurations (one random stream per block).
 SAMPLE_BLOCK = 4096
@@ -45,6 +48,15 @@ MAX_CHUNK_BYTES = 16 * 2**20
 #: A sweep of more configurations than ``MAX_CHUNKS`` default chunks gets larger chunks, so
 #: that it has at most this many (Dask tasks, and Zarr chunk files per array).
 MAX_CHUNKS = 65536
+#: An explicit chunk size may make at most this many chunks (16 times the default's most):
+#: each is a Dask task and a file per array.
+MAX_EXPLICIT_CHUNKS = 16 * MAX_CHUNKS
+#: A chunk holds at most this many bytes of results, whatever the sweep's size (each is
+#: computed and held in memory at once by one worker): a sweep so large that even
+#: :data:`MAX_CHUNKS` chunks would be larger is refused (:func:`check_size`).
+MAX_TASK_BYTES = 2**30
+#: A grid has at most this many values per joint (they are recorded in the attributes).
+MAX_POINTS_PER_JOINT = 100_000
 #: With two or more workers a new store's default chunk is cut so that every worker gets at
 #: least this many chunks (and the chunk count is a multiple of the workers), but not below
 #: a quarter of :func:`default_chunk` (:func:`spread_chunk`).
@@ -150,9 +162,9 @@ def _joint_count(n_joints) -> int:
     return int(n_joints)
 
 
-def joint_values(lo_deg: float, hi_deg: float, step_deg: float) -> np.ndarray:
-    """Joint angles (rad) from ``lo_deg`` to ``hi_deg`` inclusive every ``step_deg``, as
-    :func:`snakecg.analysis.joint_grid` spaces them (-135..135 every 10: 28 values)."""
+def joint_count(lo_deg: float, hi_deg: float, step_deg: float) -> int:
+    """How many values :func:`joint_values` gives for these arguments, computed without
+    building them (checked first, so a tiny step is refused before any memory is taken)."""
     for name, v in (("lo", lo_deg), ("hi", hi_deg), ("step", step_deg)):
         if not _is_real(v) or not math.isfinite(v):
             raise InputError(f"joint range {name} must be a finite number of degrees, got {v!r}")
@@ -161,7 +173,46 @@ def joint_values(lo_deg: float, hi_deg: float, step_deg: float) -> np.ndarray:
     if hi_deg < lo_deg:
         raise InputError(f"joint range {lo_deg:g}:{hi_deg:g} is empty (lo > hi): a grid of "
                          f"zero points; give LO:HI with LO <= HI")
+    span = (float(hi_deg) + 1e-9 - float(lo_deg)) / float(step_deg)
+    if not math.isfinite(span) or span > MAX_POINTS_PER_JOINT:
+        raise InputError(f"joint range {lo_deg:g}:{hi_deg:g} every {step_deg:g} degrees has "
+                         f"more than {MAX_POINTS_PER_JOINT:,} values per joint; give a larger "
+                         f"step")
+    # numpy.arange's length: ceil((stop - start) / step)
+    return max(1, math.ceil(span))
+
+
+def joint_values(lo_deg: float, hi_deg: float, step_deg: float) -> np.ndarray:
+    """Joint angles (rad) from ``lo_deg`` to ``hi_deg`` inclusive every ``step_deg``, as
+    :func:`snakecg.analysis.joint_grid` spaces them (-135..135 every 10: 28 values); at most
+    :data:`MAX_POINTS_PER_JOINT` (:func:`joint_count`)."""
+    joint_count(lo_deg, hi_deg, step_deg)
     return np.deg2rad(np.arange(lo_deg, hi_deg + 1e-9, step_deg))
+
+
+def default_grid(robot) -> tuple[list[np.ndarray], str]:
+    """A sweep's joint values when none are given, and where they come from: for a robot
+    with ``joint_limits``, from each joint's lower to its upper limit (within +-pi), both
+    included, evenly at most :data:`PAPER_STEP_DEG` apart (``"robot"``); for a robot
+    without them, the paper's grid, -135..135 degrees every 10 (``"paper"``)."""
+    from ..limits import default_joint_limits
+
+    if robot.joint_limits is None:
+        return [joint_values(*PAPER_RANGE_DEG, PAPER_STEP_DEG)] * robot.joints, "paper"
+    step = math.radians(PAPER_STEP_DEG)
+    limits, source = default_joint_limits(robot)
+    return [np.linspace(lo, hi, int(math.ceil((hi - lo) / step - 1e-9)) + 1)
+            for lo, hi in limits], source
+
+
+def default_bounds(robot) -> tuple[tuple, str]:
+    """The sampling box of a sweep's samples when none is given, and where it comes from:
+    the robot's ``joint_limits`` within +-pi (``"robot"``), or the paper's -135..135 degrees
+    (``"paper"``)."""
+    from ..limits import default_joint_limits
+
+    limits, source = default_joint_limits(robot)
+    return tuple((float(lo), float(hi)) for lo, hi in limits), source
 
 
 def _is_real(v) -> bool:
@@ -235,12 +286,35 @@ class Plan:
                 "block": SAMPLE_BLOCK}
 
 
+def check_size(size: int, joints: int) -> None:
+    """Refuse a sweep of ``size`` configurations too large for one store: even in
+    :data:`MAX_CHUNKS` chunks, each would hold more than :data:`MAX_TASK_BYTES` of results."""
+    per = result_bytes(joints)
+    if -(-size // MAX_CHUNKS) * per > MAX_TASK_BYTES:
+        most = MAX_CHUNKS * (MAX_TASK_BYTES // per)
+        raise InputError(f"{size:,} configurations are too many for one store (at most "
+                         f"{most:,} for {joints} joints: {MAX_CHUNKS:,} chunks of at most "
+                         f"{MAX_TASK_BYTES // 2**20:,} MiB of results); split the sweep")
+
+
 def _chunk(chunk, scenario: str, joints: int, size: int) -> int:
+    check_size(size, joints)
     if chunk is None:
         return max(1, min(default_chunk(scenario, joints, size), size))
     if not _is_int(chunk) or chunk < 1:
         raise InputError(f"chunk must be an integer >= 1 (configurations per chunk), "
                          f"got {chunk!r}")
+    problems = []
+    if min(chunk, size) * result_bytes(joints) > MAX_TASK_BYTES:
+        problems.append(f"at most {MAX_TASK_BYTES // result_bytes(joints):,} configurations "
+                        f"({MAX_TASK_BYTES // 2**20:,} MiB of results, held in memory by "
+                        f"one worker)")
+    if -(-size // min(chunk, size)) > MAX_EXPLICIT_CHUNKS:
+        problems.append(f"at least {-(-size // MAX_EXPLICIT_CHUNKS):,} for these "
+                        f"{size:,} configurations (at most {MAX_EXPLICIT_CHUNKS:,} chunks: "
+                        f"each is a Dask task and a file per array)")
+    if problems:
+        raise InputError(f"chunk {chunk:,} is out of range: give {' and '.join(problems)}")
     return int(min(chunk, size))
 
 
@@ -252,10 +326,12 @@ def grid_plan(joints: int, grid, scenario: str, chunk=None) -> Plan:
     try:
         arr = np.asarray(grid, dtype=float)
         per_joint = [arr] * joints if arr.ndim == 1 else list(arr) if arr.ndim == 2 else None
+    except OverflowError:  # an integer beyond float's range
+        per_joint = None
     except (TypeError, ValueError):
         try:  # ragged: one sequence per joint
             per_joint = [np.asarray(v, dtype=float) for v in grid]
-        except (TypeError, ValueError):
+        except (TypeError, ValueError, OverflowError):
             per_joint = None
     if per_joint is None or any(v.ndim != 1 for v in per_joint):
         raise InputError("grid must be one 1-D sequence of joint angles (rad) for every joint,"
@@ -264,6 +340,9 @@ def grid_plan(joints: int, grid, scenario: str, chunk=None) -> Plan:
         raise InputError(f"grid has {len(per_joint)} joint value lists, expected {joints} "
                          f"(one per joint) or a single list for every joint")
     for j, v in enumerate(per_joint, start=1):
+        if v.size > MAX_POINTS_PER_JOINT:
+            raise InputError(f"grid of joint {j} has {v.size:,} values, more than "
+                             f"{MAX_POINTS_PER_JOINT:,}")
         if v.size == 0:
             raise InputError(f"grid of joint {j} has no values: a grid of zero points")
         if not np.all(np.isfinite(v)):
@@ -288,7 +367,7 @@ def samples_plan(joints: int, count, seed, scenario: str, bounds=None, chunk=Non
         bounds = tuple(np.deg2rad(PAPER_RANGE_DEG))
     try:
         b = np.asarray(bounds, dtype=float)
-    except (TypeError, ValueError):
+    except (TypeError, ValueError, OverflowError):
         b = None
     if b is not None and b.shape == (2,):
         b = np.tile(b, (joints, 1))
@@ -301,12 +380,63 @@ def samples_plan(joints: int, count, seed, scenario: str, bounds=None, chunk=Non
                 bounds=tuple((float(lo), float(hi)) for lo, hi in b))
 
 
-def plan_from_meta(meta: dict) -> Plan:
-    """The plan recorded in a store's ``snakecg_sweep`` attribute."""
-    c = meta["configurations"]
-    joints, chunk = int(meta["robot"]["joints"]), int(meta["chunk"])
-    if c["kind"] == "grid":
-        return Plan(joints=joints, kind="grid", chunk=chunk,
-                    values=tuple(tuple(v) for v in c["joint_values"]))
-    return Plan(joints=joints, kind="samples", chunk=chunk, count=int(c["count"]),
-                seed=int(c["seed"]), bounds=tuple(tuple(b) for b in c["bounds"]))
+def plan_from_meta(meta, store="the store") -> Plan:
+    """The plan recorded in a store's ``snakecg_sweep`` attribute, checked: every problem
+    of an edited or damaged attribute is collected and raised at once as an
+    :class:`InputError` naming the attribute."""
+    problems = []
+
+    def get(d, key, where):
+        if not isinstance(d, dict) or key not in d:
+            problems.append(f"{where}{key} is missing")
+            return None
+        return d[key]
+
+    def integer(v, where, least):
+        if not _is_int(v) or v < least:
+            problems.append(f"{where} is {v!r}, expected an integer >= {least}")
+            return None
+        return int(v)
+
+    robot = get(meta, "robot", "")
+    joints = integer(get(robot, "joints", "robot."), "robot.joints", 1) \
+        if isinstance(robot, dict) else None
+    chunk = integer(get(meta, "chunk", ""), "chunk", 1)
+    c = get(meta, "configurations", "")
+    plan = None
+    kind = c.get("kind") if isinstance(c, dict) else None
+    if isinstance(c, dict) and kind not in ("grid", "samples"):
+        problems.append(f"configurations.kind is {kind!r}, expected 'grid' or 'samples'")
+    elif kind == "grid" and joints is not None and chunk is not None:
+        values = get(c, "joint_values", "configurations.")
+        if (not isinstance(values, list) or len(values) != joints
+                or not all(isinstance(v, list) and v and len(v) <= MAX_POINTS_PER_JOINT
+                           and all(_is_real(x) and math.isfinite(x) for x in v)
+                           for v in values)):
+            problems.append(f"configurations.joint_values is not {joints} lists of finite "
+                            f"angles")
+        else:
+            plan = Plan(joints=joints, kind="grid", chunk=chunk,
+                        values=tuple(tuple(float(x) for x in v) for v in values))
+    elif kind == "samples" and joints is not None and chunk is not None:
+        count = integer(get(c, "count", "configurations."), "configurations.count", 1)
+        seed = integer(get(c, "seed", "configurations."), "configurations.seed", 0)
+        bounds = get(c, "bounds", "configurations.")
+        if (not isinstance(bounds, list) or len(bounds) != joints
+                or not all(isinstance(b, list) and len(b) == 2
+                           and all(_is_real(x) and math.isfinite(x) for x in b)
+                           and b[0] <= b[1] for b in bounds)):
+            problems.append(f"configurations.bounds is not {joints} (lo, hi) pairs")
+        elif count is not None and seed is not None:
+            plan = Plan(joints=joints, kind="samples", chunk=chunk, count=count, seed=seed,
+                        bounds=tuple((float(lo), float(hi)) for lo, hi in bounds))
+    if plan is not None:
+        for key, want in (("n_configurations", plan.size), ("n_chunks", plan.n_chunks)):
+            found = get(meta, key, "")
+            if found is not None and found != want:
+                problems.append(f"{key} is {found!r}, but the configurations and the "
+                                f"chunk make {want:,}")
+    if problems or plan is None:
+        raise InputError(f"{store!s}: its attribute snakecg_sweep is damaged or was edited: "
+                         f"{'; '.join(problems) or 'no plan'}")
+    return plan

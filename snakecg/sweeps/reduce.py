@@ -29,12 +29,15 @@ def _path(store) -> Path:
 
 
 def _open(store):
+    """``(reader, meta, plan)`` of a store: its attributes, metadata and digest table
+    checked (:class:`~.store.Reader`; a damaged store is refused, saying what is damaged)."""
     path = _path(store)
     if not (path / "zarr.json").is_file():
         raise InputError(f"{str(path)!r} is not a sweep store (no Zarr group there)")
     root = _store.open_existing(path, mode="r")
     meta = dict(root.attrs)["snakecg_sweep"]
-    return root, meta, plan_from_meta(meta)
+    plan = plan_from_meta(meta, str(path))
+    return _store.Reader(path, root, plan, meta), meta, plan
 
 
 def _has_feasible(meta) -> bool:
@@ -59,19 +62,30 @@ def _clearance(meta):
     return meta.get("feasibility", {}).get("clearance")
 
 
-def _recorded(root, plan):
+def _recorded(reader):
     """Indices of the chunks whose data is recorded complete."""
-    return [int(i) for i in np.flatnonzero(root["chunk_digest"][:] != 0)]
+    return [int(i) for i in np.flatnonzero(reader.recorded())]
 
 
 def read(store) -> dict[str, np.ndarray]:
-    """Every array of a (small) store in memory; configurations of chunks not computed yet
-    are NaN. Also ``complete``: a boolean per configuration."""
-    root, meta, plan = _open(store)
-    out = {name: root[name][:] for name in meta["arrays"]}
+    """Every array of a (small) store in memory, each chunk checked against its digests
+    (a damaged store is refused); configurations of chunks not computed yet are NaN
+    (``feasible``: false). ``q`` in radians whatever the store's format: the joint angles
+    the configurations were computed at (format 3 stores them in degrees, checked here to
+    be exactly those of the store's grid or samples). Also ``complete``: a boolean per
+    configuration."""
+    reader, _, plan = _open(store)
+    out = {}
+    for name in reader.names:
+        spec = reader.specs[name]
+        out[name] = np.full((plan.size, *spec.row), spec.fill, dtype=spec.dtype.newbyteorder("="))
     complete = np.zeros(plan.size, dtype=bool)
-    for i in _recorded(root, plan):
+    for i in _recorded(reader):
         start, stop = plan.chunk_range(i)
+        data = reader.chunk(i)
+        data["q"] = reader.q_rad(data, plan.joint_angles(start, stop), i)
+        for name, v in data.items():
+            out[name][start:stop] = v
         complete[start:stop] = True
     out["complete"] = complete
     return out
@@ -82,7 +96,7 @@ def _entry(chunk, j, metric, start):
     return {
         "value": float(chunk[f"max_{metric}"][j]),
         "index": int(start + j),
-        "q_deg": [float(x) for x in np.rad2deg(chunk["q"][j])],
+        "q_deg": [float(x) for x in chunk["q_deg"][j]],
         "tau": [float(x) for x in chunk[f"tau_max_{metric}"][j]],
         "com_radius": float(chunk["com_radius"][j]),
         "com_angle_deg": float(np.rad2deg(chunk["com_angle"][j])),
@@ -101,7 +115,7 @@ def summary(store, *, feasible=None) -> dict:
     ``feasible`` array, at the clearance recorded when it was made), False keeps every shape
     (the paper's reading), None (default) follows the store (``snakecg.sweep(feasible=...)``).
     """
-    root, meta, plan = _open(store)
+    reader, meta, plan = _open(store)
     only = _feasible_only(store, meta, feasible)
     has = _has_feasible(meta)
     names = ["q", "com_radius", "com_angle"] + [f"{p}{m}" for m in METRICS
@@ -109,11 +123,12 @@ def summary(store, *, feasible=None) -> dict:
     names += ["feasible"] if has else []
     best: dict = {m: None for m in METRICS}
     worst: dict = {m: None for m in METRICS}
-    chunks = _recorded(root, plan)
+    chunks = _recorded(reader)
     counted = n_feasible = 0
     for i in chunks:
         start, stop = plan.chunk_range(i)
-        data = _store.read_chunk(root, start, stop, names)
+        data = reader.chunk(i, names)
+        data["q_deg"] = reader.q_deg(data)
         keep = data["feasible"] if has else np.ones(stop - start, dtype=bool)
         n_feasible += int(np.count_nonzero(keep))
         counted += int(np.count_nonzero(keep)) if only else stop - start
@@ -164,7 +179,7 @@ def summary_text(s: dict) -> str:
         q = ",".join(f"{x:g}" for x in e["q_deg"])
         if e.get("feasible") is False:
             marked = True
-            return q + " *"
+            return q + " *"  # geometry.INFEASIBLE_MARK
         return q
 
     for m, d in s["metrics"].items():
@@ -174,9 +189,9 @@ def summary_text(s: dict) -> str:
         lines.append(f"{m:<26}{d['worst']['value']:>14.6g}  {at(d['worst']):<28}"
                      f"{d['best']['value']:>14.6g}  {at(d['best'])}")
     if marked:
-        lines.append(f"* a shape that is not physically possible (links closer than "
-                     f"{s['clearance']:g} m or inside the object); --feasible-only leaves "
-                     f"them out")
+        from ..geometry import infeasible_footnote
+
+        lines.append(f"{infeasible_footnote(s['clearance'])}; --feasible-only leaves them out")
     return "\n".join(lines)
 
 
@@ -212,20 +227,20 @@ def binned_maxima(store, *, radius_bins: int = 24, angle_bins: int = 36,
     angle bins split -pi..pi evenly, the radius bins 0..``radius_max`` (just above the
     largest |COM| of the configurations binned). Also ``binned_configurations``,
     ``configurations``, ``feasible_only``, ``clearance`` and the store's ``meta``."""
-    root, meta, plan = _open(store)
+    reader, meta, plan = _open(store)
     only = _feasible_only(store, meta, feasible)
     for name, v in (("radius_bins", radius_bins), ("angle_bins", angle_bins)):
         if isinstance(v, bool) or not isinstance(v, int) or v < 2:
             raise InputError(f"{name} must be an integer >= 2, got {v!r}")
-    chunks = _recorded(root, plan)
+    chunks = _recorded(reader)
     if not chunks:
         raise InputError(f"{str(store)!r} has no completed chunk yet; nothing to draw")
     rmax, shown = 0.0, 0
     for i in chunks:  # pass 1: the radius range
-        start, stop = plan.chunk_range(i)
-        r = root["com_radius"][start:stop]
+        data = reader.chunk(i, ["com_radius", "feasible"] if only else ["com_radius"])
+        r = data["com_radius"]
         if only:
-            r = r[root["feasible"][start:stop]]
+            r = r[data["feasible"]]
         shown += r.size
         if r.size:
             rmax = max(rmax, float(np.nanmax(r)))
@@ -235,10 +250,8 @@ def binned_maxima(store, *, radius_bins: int = 24, angle_bins: int = 36,
     rmax = rmax * (1 + 1e-9) or 1.0
     grid = {m: np.full((angle_bins, radius_bins), -np.inf) for m in METRICS}
     for i in chunks:  # pass 2: binned maxima
-        start, stop = plan.chunk_range(i)
-        data = _store.read_chunk(root, start, stop,
-                                 ["com_radius", "com_angle"] + [f"max_{m}" for m in METRICS]
-                                 + (["feasible"] if only else []))
+        data = reader.chunk(i, ["com_radius", "com_angle"] + [f"max_{m}" for m in METRICS]
+                            + (["feasible"] if only else []))
         ri = np.clip((data["com_radius"] / rmax * radius_bins).astype(int), 0, radius_bins - 1)
         ai = np.clip(((data["com_angle"] + math.pi) / (2 * math.pi) * angle_bins).astype(int),
                      0, angle_bins - 1)
@@ -252,29 +265,9 @@ def binned_maxima(store, *, radius_bins: int = 24, angle_bins: int = 36,
 
 
 def _draw(grid, rmax, meta, which: str, out: Path, fmt: str) -> None:
-    import matplotlib
-
-    matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    angle_bins, radius_bins = next(iter(grid.values())).shape
-    theta = np.linspace(-math.pi, math.pi, angle_bins + 1)
-    radius = np.linspace(0.0, rmax, radius_bins + 1)
-    fig, axes = plt.subplots(2, 2, figsize=(10, 10), subplot_kw={"projection": "polar"},
-                             constrained_layout=True)
-    for ax, m in zip(axes.ravel(), ("norm_lambda", "norm_a_obj", "sr", "norm_qdd")):
-        vals = np.where(np.isfinite(grid[m]), grid[m], np.nan)
-        mesh = ax.pcolormesh(theta, radius, np.ma.masked_invalid(vals).T, cmap="viridis",
-                             shading="flat")
-        ax.set_title(f"largest max {m} per bin", fontsize=10)
-        ax.set_rlabel_position(135)
-        ax.tick_params(labelsize=7)
-        fig.colorbar(mesh, ax=ax, shrink=0.7, pad=0.08)
-    scene = meta["scene"]
-    fig.suptitle(f"{which}, {meta['robot']['joints']} joints, "
-                 f"{scene['scenario']}, kappa = {scene['kappa']:g}:\nper-configuration maxima "
-                 f"over the input ellipsoid, binned over |COM| [m] from the contact point\nand "
-                 f"the angle of COM from the contacting link's axis", fontsize=10)
+    fig = _polar_figure(grid, rmax, meta, which)
     tmp = out.with_name(f".{out.name}.{uuid.uuid4().hex}.partial")
     try:
         fig.savefig(tmp, format=fmt, dpi=120 if fmt == "png" else None)
@@ -282,3 +275,35 @@ def _draw(grid, rmax, meta, which: str, out: Path, fmt: str) -> None:
     finally:
         plt.close(fig)
         tmp.unlink(missing_ok=True)
+
+
+def _polar_figure(grid, rmax, meta, which: str):
+    """The figure :func:`figure` writes: one polar panel per metric, colour scales and titles
+    by :mod:`snakecg.figures.scales`."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    from ..figures.scales import colorbar, colour_scale, metric_title, polar_rings
+
+    angle_bins, radius_bins = next(iter(grid.values())).shape
+    theta = np.linspace(-math.pi, math.pi, angle_bins + 1)
+    radius = np.linspace(0.0, rmax, radius_bins + 1)
+    fig, axes = plt.subplots(2, 2, figsize=(10, 10.5), subplot_kw={"projection": "polar"},
+                             constrained_layout=True)
+    for ax, m in zip(axes.ravel(), ("norm_lambda", "norm_a_obj", "sr", "norm_qdd")):
+        vals = np.where(np.isfinite(grid[m]), grid[m], np.nan)
+        scale = colour_scale(vals, m)  # flat when constant, a stretch said, sr within [0, 1]
+        mesh = ax.pcolormesh(theta, radius, np.ma.masked_invalid(vals).T, cmap=scale.cmap,
+                             norm=scale.norm, shading="flat")
+        ax.set_title(f"largest max {metric_title(m)} per bin", fontsize=10)
+        polar_rings(ax, rmax, fontsize=8)
+        ax.tick_params(labelsize=7)
+        colorbar(fig, mesh, ax, scale, fontsize=8, shrink=0.7, pad=0.08)
+    scene = meta["scene"]
+    fig.suptitle(f"{which}, {meta['robot']['joints']} joints, "
+                 f"{scene['scenario']}, kappa = {scene['kappa']:g}:\nper-configuration maxima "
+                 f"over the input ellipsoid, binned over |COM| [m] from the contact point\nand "
+                 f"the angle of COM from the contacting link's axis", fontsize=10)
+    return fig

@@ -28,7 +28,9 @@ from .cluster import (
     progress_mode,
     start_bar,
 )
-from .plan import Plan, default_chunk, grid_plan, samples_plan, spread_chunk
+from .lock import store_lock
+from .plan import (Plan, default_bounds, default_chunk, default_grid, grid_plan, samples_plan,
+                   spread_chunk)
 from .work import evaluate_and_write, evaluate_chunk
 
 __all__ = ["sweep", "SweepResult", "LIMIT"]
@@ -61,6 +63,10 @@ class SweepResult:
     #: clearance (m) of its ``feasible`` array.
     feasible_only: bool = False
     clearance: float = SELF_CLEARANCE
+    #: The joint range the configurations span and where it comes from (``"robot"``: its
+    #: joint limits; ``"paper"``: -135..135 degrees; ``"argument"``), and the input region
+    #: of the extremes (the ellipsoid of eq. 31, radius 1): :func:`snakecg.limits.describe`.
+    limits: dict = dataclasses.field(default_factory=dict)
 
     def to_dict(self) -> dict:
         return dataclasses.asdict(self)
@@ -98,12 +104,16 @@ def make_plan(scene: Scene, *, grid=None, samples=None, seed=None, bounds=None,
     if samples is not None:
         if grid is not None:
             raise InputError("give grid or samples, not both")
+        if bounds is None:  # the robot's joint limits (or the paper's range)
+            bounds = default_bounds(scene.robot)[0]
         return samples_plan(joints, samples, seed, scene.scenario, bounds, chunk)
     if seed is not None:
         raise InputError("seed goes with samples (seeded random configurations); a grid "
                          "has no seed")
     if bounds is not None:
         raise InputError("bounds go with samples; a grid gives its joint values itself")
+    if grid is None:  # the robot's joint limits (or the paper's grid)
+        grid = default_grid(scene.robot)[0]
     return grid_plan(joints, grid, scene.scenario, chunk)
 
 
@@ -119,10 +129,17 @@ def check_feasible(feasible, clearance) -> float:
                          "non-adjacent links of a feasible shape); without it every shape "
                          "is kept")
     if (isinstance(clearance, bool) or not isinstance(clearance, (int, float, np.floating))
-            or not math.isfinite(clearance) or clearance < 0):
+            or not _finite(clearance) or clearance < 0):
         raise InputError(f"clearance must be a finite number >= 0 (m, least distance between "
                          f"non-adjacent links), got {clearance!r}")
     return float(clearance)
+
+
+def _finite(x) -> bool:
+    try:
+        return math.isfinite(x)
+    except OverflowError:  # an integer beyond float's range
+        return False
 
 
 def sweep(scene, *, grid=None, samples=None, seed=None, store, client=None, chunk=None,
@@ -134,16 +151,22 @@ def sweep(scene, *, grid=None, samples=None, seed=None, store, client=None, chun
     * ``scene``: a :class:`~snakecg.Scene` (it pickles; each worker loads the model from its
       own cache).
     * ``grid``: joint angles (rad), one 1-D sequence for every joint or one per joint;
-      default the paper's -135..135 degrees every 10 (28 values per joint). Or ``samples``
-      configurations uniform in ``bounds`` (default -135..135 degrees on every joint, one
-      ``(lo, hi)`` pair in rad or one per joint) from ``seed``.
+      default the robot's ``joint_limits``, every 10 degrees or a little less, both limits
+      included, or for a robot without them the paper's -135..135 degrees every 10 (28
+      values per joint, :func:`~snakecg.sweeps.plan.default_grid`). Or ``samples``
+      configurations uniform in ``bounds`` (default the robot's joint limits or -135..135
+      degrees, one ``(lo, hi)`` pair in rad or one per joint) from ``seed``.
     * ``store``: path of the Zarr store (a folder, e.g. ``sweep.zarr``). If it exists and was
       made with the same arguments, only the chunks missing from it are computed (each
-      recorded chunk is first checked against its digest when ``verify``); a store made with
-      other arguments is refused.
+      recorded chunk is first checked against its digests when ``verify``); a store made with
+      other arguments is refused. A sweep into a store that another sweep is writing waits
+      for it to end (it prints that it waits, unless progress is off), then resumes it.
     * Where it runs: ``client`` (a ``dask.distributed.Client``), or ``scheduler``
-      (``tcp://HOST:PORT`` of a running cluster), or else a local cluster of ``workers``
-      processes (default one per core) started and shut down by this call.
+      (``tcp://HOST:PORT`` of a running cluster: a Dask scheduler must answer there within
+      10 s, and have a worker within another 10 s), or else a local cluster of ``workers``
+      processes (default one per core, at most 4 per core) started and shut down by this
+      call, on 127.0.0.1 with TLS and temporary credentials: no other program or user can
+      connect to it.
     * ``chunk``: configurations per chunk (one Dask task, one Zarr chunk). Default, for a
       new store: :func:`~snakecg.sweeps.plan.default_chunk` of the scenario and joint count
       (about 1.5 s of single-core work, at most 16 MiB of results), cut so that each worker
@@ -203,13 +226,23 @@ def sweep(scene, *, grid=None, samples=None, seed=None, store, client=None, chun
     if not isinstance(store, (str, Path)) or not str(store).strip():
         raise InputError(f"store must be a path (e.g. 'sweep.zarr'), got {store!r}")
     path = Path(store)
-    state = _store.check_target(path)
+    _store.check_target(path)
+    with store_lock(path, quiet=mode == "off"):
+        res = _run(scene, plan, path, chunk, client, scheduler, workers, mode, verify,
+                   feasible, clearance, shared_store, t0)
+    res.limits = _limits(scene, plan, grid is not None or bounds is not None)
+    return res
+
+
+def _run(scene, plan, path, chunk, client, scheduler, workers, mode, verify, feasible,
+         clearance, shared_store, t0) -> SweepResult:
+    state = _store.check_target(path)  # again: another sweep may have made it meanwhile
     root, done = None, np.zeros(plan.n_chunks, dtype=bool)
     if state == "existing":
         # resume with the store's own format, and chunk size unless one is given
         plan, fmt = _stored(path, plan, keep_chunk=chunk is None)
         root = _store.open_existing(path, _meta(scene, plan, feasible, clearance, fmt))
-        done = _store.completed(root, plan, verify=verify)
+        done = _store.completed(root, plan, verify=verify, path=path)
     todo = [int(i) for i in np.flatnonzero(~done)]
     reused = plan.n_chunks - len(todo)
     if not todo:
@@ -240,6 +273,17 @@ def sweep(scene, *, grid=None, samples=None, seed=None, store, client=None, chun
                        time.perf_counter() - t0, dashboard, feasible, clearance)
 
 
+def _limits(scene: Scene, plan: Plan, given: bool) -> dict:
+    """The joint range a sweep's configurations span, its source, and the input region."""
+    from ..limits import describe
+
+    spans = ([(min(v), max(v)) for v in plan.values] if plan.kind == "grid"
+             else list(plan.bounds))
+    source = ("argument" if given else
+              "robot" if scene.robot.joint_limits is not None else "paper")
+    return describe(joint_limits=spans, joint_limits_from=source, radius=1.0)
+
+
 def _stored(path: Path, plan: Plan, keep_chunk: bool) -> tuple[Plan, str]:
     """The store's format (an older one resumes with the digests it has) and, with
     ``keep_chunk``, ``plan`` with the chunk size recorded in the store at ``path`` (a store
@@ -247,6 +291,9 @@ def _stored(path: Path, plan: Plan, keep_chunk: bool) -> tuple[Plan, str]:
     resumes without ``chunk``); unchanged if the store records none (the comparison refuses
     it)."""
     stored = _store.open_existing(path, mode="r").attrs["snakecg_sweep"]
+    from .plan import plan_from_meta
+
+    plan_from_meta(stored, str(path))  # an edited attribute is refused, saying which
     n = stored.get("chunk")
     if keep_chunk and isinstance(n, int) and not isinstance(n, bool) and n >= 1:
         plan = dataclasses.replace(plan, chunk=n)
@@ -282,7 +329,7 @@ def _compute(client, scene, plan, root, todo, reused, mode, clearance, target) -
     # this process writes the digests, and the data only when the workers do not
     opened = _store.handles(root) if target is None else {"chunk_digest": root["chunk_digest"]}
     fmt = _store.format_of(root)
-    digests: dict[int, int] = {}  # completed chunks whose digests are not written yet
+    digests: dict = {}  # completed chunks whose digests are not written yet
     try:
         for fut in as_completed(futures):
             i = index[fut.key]
@@ -324,4 +371,10 @@ def _compute(client, scene, plan, root, todo, reused, mode, clearance, target) -
             _store.record(opened, digests)
         except Exception:  # noqa: BLE001 - the error that stopped the sweep is the one to see
             pass
-        _mark(root, int(np.count_nonzero(root["chunk_digest"][:])), plan.n_chunks)
+        _mark(root, _recorded_count(root), plan.n_chunks)
+
+
+def _recorded_count(root) -> int:
+    """Chunks whose digests are recorded (all of a row's, in format 3)."""
+    d = root["chunk_digest"][:]
+    return int(np.count_nonzero((d != 0).all(axis=1) if d.ndim == 2 else d))

@@ -1,28 +1,31 @@
 """The Zarr store of a sweep: layout, creation, compatibility, chunk records.
 
 Layout (a Zarr v3 group, a folder ``STORE.zarr``), every array chunked like the computation
-(``chunk`` configurations per chunk, all joints of a configuration in one chunk):
+(``chunk`` configurations per chunk, all joints of a configuration in one chunk), with the
+dimensions named (``configuration``, ``joint``) and units in each array's attributes, so that
+``xarray.open_zarr(STORE)`` reads it as a Dataset (format 3):
 
-* ``q`` ``(N, n_a)``: joint angles (rad); ``com_radius``, ``com_angle`` ``(N,)``: polar
-  coordinates of the snake's COM w.r.t. the contact point (m, rad; see
-  :func:`snakecg.analysis.com_polar`);
+* ``q`` ``(N, n_a)``: joint angles (degrees; radians in stores of formats 1 and 2), the
+  Dataset's coordinate; ``joint`` ``(n_a,)``: the joint numbers 1..n_a (format 3);
+  ``com_radius``, ``com_angle`` ``(N,)``: polar coordinates of the snake's COM w.r.t. the
+  contact point (m, rad; see :func:`snakecg.analysis.com_polar`);
 * for every metric ``m`` of :data:`snakecg.analysis.METRICS`: ``max_m`` / ``min_kept_m``
   ``(N,)`` and the torques attaining them ``tau_max_m`` / ``tau_min_kept_m`` ``(N, n_a)``
   (:class:`snakecg.analysis.Extremes` ``.max``, ``.min_kept`` and their ``tau_`` partners);
 * ``feasible`` ``(N,)`` bool: the shape is physically possible
-  (:func:`snakecg.geometry.feasibility` at the clearance recorded in the attributes); every
-  configuration is evaluated either way, reductions may leave the infeasible ones out;
-* ``chunk_digest`` ``(n_chunks,)`` uint64: 0 for a chunk not written yet, else a 64-bit
-  digest of the chunk's data (XXH3, or BLAKE2b in stores of format 1: :data:`DIGESTS`). It
-  is written only after all of the chunk's data, so a chunk counts as complete only when
-  its data is all there; on resume every recorded chunk is read back and checked against
-  its digest (a mismatch is computed again). The process that runs the sweep writes the
-  digests of the chunks completed meanwhile about once a second.
+  (:func:`snakecg.geometry.feasibility` at the clearance recorded in the attributes);
+* ``chunk_digest``: 0 for a chunk not written yet, else digests of the chunk's data
+  (:data:`DIGESTS`). Format 3: ``(n_chunks, 20)``, one XXH3-64 per array of the bytes of
+  its chunk file as stored (compressed); formats 1 and 2: ``(n_chunks,)``, one digest of
+  the values of all arrays. A chunk's digests are written only after all of its data, so a
+  chunk counts as complete only when its data is all there. Every read checks them
+  (:class:`Reader`); a resumed sweep computes a chunk that does not match again.
 * attributes ``snakecg_sweep``: robot, scene, grid or sampling, chunk, package version,
   array names, the feasibility check's clearance and whether the reductions default to
   feasible shapes only (the fingerprint a resumed sweep must match); ``completed_chunks`` and
   ``complete``, updated as the sweep goes; ``store_id``, a random identity made with the
-  store (a worker that writes data checks it).
+  store (a worker that writes data checks it). Format 3 consolidates the arrays' metadata
+  into the group's (what ``xarray.open_zarr`` reads first).
 
 Who writes: the chunks' data is written by the workers when they share the store's file
 system (by default: a local cluster with a thread on every core; see
@@ -43,28 +46,42 @@ import json
 import math
 import os
 import shutil
-import threading
 import uuid
-from collections import deque
+import warnings
 from pathlib import Path
 
 import numpy as np
 
 from ..analysis import METRICS
 from ..errors import InputError
+from . import chunks as _chunks
 
 __all__ = ["array_names", "configuration_bytes", "create", "open_existing", "check_target",
            "digest", "handles", "write_data", "record", "completed", "store_id", "format_of",
-           "FORMAT", "DIGESTS"]
+           "Reader", "FORMAT", "DIGESTS", "UNITS"]
 
 #: Layout version of new stores (attribute ``snakecg_sweep.format``).
-FORMAT = "snakecg.sweep/2"
-#: The formats this version reads and resumes, and the digest each records in
-#: ``chunk_digest``: the same layout, format 2 with a checksum ten times cheaper (XXH3-64,
-#: about 0.1 ms per MB against 1 ms; a sweep of the cheap scenarios makes 70 MB of results
-#: per second and core).
-DIGESTS = {"snakecg.sweep/1": "blake2b-64", "snakecg.sweep/2": "xxh3-64"}
-_DIGEST_BLOCK = 4096  # chunk_digest entries per Zarr chunk
+FORMAT = "snakecg.sweep/3"
+#: The formats this version reads and resumes, and the digests each records in
+#: ``chunk_digest``: format 1 BLAKE2b-64 and format 2 XXH3-64 (ten times cheaper) of a
+#: chunk's values; format 3 XXH3-64 of each array's chunk file (compressed, :mod:`.chunks`),
+#: joint angles in degrees, named dimensions and units.
+DIGESTS = {"snakecg.sweep/1": "blake2b-64", "snakecg.sweep/2": "xxh3-64",
+           "snakecg.sweep/3": "xxh3-64 per array file"}
+_DIGEST_BLOCK = 4096  # chunk_digest rows per Zarr chunk
+#: Units of the arrays of a format-3 store (attribute ``units``, UDUNITS spelling). The
+#: three squared norms are quadratic forms in the metric of their space (eqs. 26, 27 and
+#: the constraint forces' G_c): kg m^2 s^-4 whatever the coordinates.
+UNITS = {"q": "degree", "com_radius": "m", "com_angle": "rad", "max_sr": "1",
+         "min_kept_sr": "1", "feasible": "1"}
+for _m in METRICS:
+    for _p in ("tau_max_", "tau_min_kept_"):
+        UNITS[_p + _m] = "N m"
+    if _m != "sr":
+        UNITS["max_" + _m] = UNITS["min_kept_" + _m] = "kg m2 s-4"
+_LONG = {"q": "joint angles", "com_radius": "distance of the snake's COM from the contact "
+         "point", "com_angle": "angle of the COM from the contacting link's axis",
+         "feasible": "the shape is physically possible"}
 
 
 def array_names() -> tuple[str, ...]:
@@ -81,6 +98,24 @@ def _per_configuration(name: str, joints: int) -> tuple[int, ...]:
     return (joints,) if name == "q" or name.startswith("tau_") else ()
 
 
+_SYMBOL = {"norm_a_obj": "|a_obj|^2 (eq. 27)", "norm_qdd": "|qdd_s|^2 (eq. 26)",
+           "norm_lambda": "|lambda|^2", "sr": "slippage ratio sr (eq. 30)"}
+
+
+def _long_name(name: str) -> str:
+    """The ``long_name`` attribute of array ``name`` (what xarray shows as its title)."""
+    if name in _LONG:
+        return _LONG[name]
+    torque = name.startswith("tau_")
+    m = name[4:] if torque else name
+    if m.startswith("max_"):
+        what = f"largest {_SYMBOL[m[4:]]} over the input ellipsoid"
+    else:
+        what = (f"smallest {_SYMBOL[m[9:]]} over the torques of the input ellipsoid that "
+                f"keep the contact")
+    return f"torque attaining the {what}" if torque else what
+
+
 def configuration_bytes(joints: int) -> int:
     """Bytes of one configuration in all the store's arrays (float64; ``feasible`` bool)."""
     return sum((1 if name == "feasible" else 8) * math.prod(_per_configuration(name, joints))
@@ -89,10 +124,10 @@ def configuration_bytes(joints: int) -> int:
 
 def _zarr():
     try:
-        import xxhash  # noqa: F401 - the digests of format 2
+        import xxhash  # noqa: F401 - the digests of formats 2 and 3
         import zarr
     except ModuleNotFoundError:
-        raise InputError("sweeps need the sweep extra (Dask, Zarr and xxhash): "
+        raise InputError("sweeps need the sweep extra (Dask, Zarr, xxhash and xarray): "
                          "pip install 'snakecg[sweep]'") from None
     return zarr
 
@@ -118,25 +153,50 @@ def _normalise(obj):
     return json.loads(json.dumps(obj))
 
 
+def _compressors(name: str):
+    from zarr.codecs import BloscCodec
+
+    c = _chunks.COMPRESSION
+    if not _chunks.compressed(name):
+        return None
+    return [BloscCodec(cname=c["cname"], clevel=c["clevel"], shuffle=c["shuffle"])]
+
+
 def create(path: Path, meta: dict, n_configurations: int, chunk: int, joints: int):
-    """Create the store (under a temporary name, renamed into place) and open it."""
+    """Create a store of format :data:`FORMAT` (under a temporary name, renamed into
+    place) and open it."""
     zarr = _zarr()
     n_chunks = -(-n_configurations // chunk)
+    names = array_names()
     tmp = path.with_name(f".{path.name}.{uuid.uuid4().hex}.partial")
     try:
         root = zarr.open_group(str(tmp), mode="w-")
-        for name in array_names():
+        for name in names:
             row = _per_configuration(name, joints)
-            shape, chunks = (n_configurations, *row), (chunk, *row)
             flag = name == "feasible"
-            root.create_array(name, shape=shape, chunks=chunks,
+            attrs = {"units": UNITS[name], "long_name": _long_name(name)}
+            if name != "q":
+                attrs["coordinates"] = "q"  # xarray: q is every variable's coordinate
+            root.create_array(name, shape=(n_configurations, *row), chunks=(chunk, *row),
                               dtype="bool" if flag else "float64",
-                              fill_value=False if flag else np.nan, compressors=None)
-        root.create_array("chunk_digest", shape=(n_chunks,), chunks=(min(n_chunks,
-                                                                         _DIGEST_BLOCK),),
-                          dtype="uint64", fill_value=0, compressors=None)
+                              fill_value=False if flag else np.nan,
+                              compressors=_compressors(name), attributes=attrs,
+                              dimension_names=("configuration", "joint")[:1 + len(row)])
+        joint = root.create_array("joint", shape=(joints,), chunks=(joints,), dtype="int64",
+                                  fill_value=0, compressors=None, dimension_names=("joint",),
+                                  attributes={"long_name": "joint number"})
+        joint[:] = np.arange(1, joints + 1)
+        root.create_array("chunk_digest", shape=(n_chunks, len(names)),
+                          chunks=(min(n_chunks, _DIGEST_BLOCK), len(names)), dtype="uint64",
+                          fill_value=0, compressors=None, dimension_names=("chunk", "array"),
+                          attributes={"arrays": list(names),
+                                      "long_name": "XXH3-64 of each array's chunk file "
+                                                   "(lowest bit set); 0: not written yet"})
         root.attrs.update({"snakecg_sweep": meta, "completed_chunks": 0, "complete": False,
                            "store_id": uuid.uuid4().hex})
+        with warnings.catch_warnings():  # "not part of the Zarr 3 specification" (yet)
+            warnings.simplefilter("ignore")
+            zarr.consolidate_metadata(str(tmp))
         os.rename(tmp, path)
     except OSError as exc:  # unwritable, read-only file system, no space, ...
         shutil.rmtree(tmp, ignore_errors=True)
@@ -149,7 +209,8 @@ def create(path: Path, meta: dict, n_configurations: int, chunk: int, joints: in
 
 
 def open_existing(path: Path, meta: dict | None = None, *, mode: str = "r+"):
-    """Open a sweep store; with ``meta``, refuse one made with other arguments."""
+    """Open a sweep store (through its consolidated metadata, if it has them, so that
+    attribute updates keep them); with ``meta``, refuse one made with other arguments."""
     zarr = _zarr()
     try:
         root = zarr.open_group(str(path), mode=mode)
@@ -158,8 +219,10 @@ def open_existing(path: Path, meta: dict | None = None, *, mode: str = "r+"):
         raise InputError(f"{str(path)!r} is not a readable sweep store: "
                          f"{' '.join(str(exc).split()) or type(exc).__name__}") from None
     if not isinstance(stored, dict) or stored.get("format") not in DIGESTS:
-        raise InputError(f"{str(path)!r} is a Zarr store but not a snakecg sweep store "
-                         f"(no attribute snakecg_sweep of format {' or '.join(DIGESTS)})")
+        found = stored.get("format") if isinstance(stored, dict) else None
+        raise InputError(f"{str(path)!r} is a Zarr store but not a sweep store this version "
+                         f"reads (attribute snakecg_sweep.format is {found!r}, expected "
+                         f"{' or '.join(DIGESTS)})")
     if meta is not None:
         want = _normalise(meta)
         diff = sorted(k for k in set(want) | set(stored) if want.get(k) != stored.get(k))
@@ -171,18 +234,19 @@ def open_existing(path: Path, meta: dict | None = None, *, mode: str = "r+"):
     return root
 
 
-def digest(arrays: dict[str, np.ndarray], fmt: str = FORMAT) -> int:
-    """Nonzero 64-bit digest of a chunk's arrays, the one store format ``fmt`` records
+def digest(arrays: dict[str, np.ndarray], fmt: str = "snakecg.sweep/2", names=None) -> int:
+    """Nonzero 64-bit digest of a chunk's values, the one stores of format 1 and 2 record
     (:data:`DIGESTS`): XXH3-64 (format 2) or BLAKE2b-64 (format 1) of the arrays' bytes in
     :func:`array_names` order (``feasible`` as one byte per configuration), read as a
-    little-endian integer, lowest bit set."""
+    little-endian integer, lowest bit set. ``names``: the store's arrays (default
+    :func:`array_names`; format-1 stores made before the ``feasible`` array lack it)."""
     if DIGESTS[fmt] == "xxh3-64":
         import xxhash
 
         h = xxhash.xxh3_64()
     else:
         h = hashlib.blake2b(digest_size=8)
-    for name in array_names():
+    for name in names or array_names():
         dtype = np.uint8 if name == "feasible" else np.float64
         # the array's buffer itself (the same bytes as .tobytes(), without copying them)
         h.update(np.ascontiguousarray(arrays[name], dtype=dtype))
@@ -194,21 +258,18 @@ def format_of(root) -> str:
     return root.attrs["snakecg_sweep"]["format"]
 
 
+def _per_file(fmt: str) -> bool:
+    return fmt == "snakecg.sweep/3"
+
+
 def handles(root, *, digests: bool = True) -> dict:
-    """The store's arrays opened once (opening one reads its metadata from the store);
-    ``digests=False`` leaves out ``chunk_digest`` (a worker writing data only).
-
-    Every chunk is written, even one that holds only the fill value (NaN, or false). Zarr's
-    default compares each chunk with the fill value before writing it, to skip the chunks
-    that hold nothing else; that comparison took a third of the CPU time of a write, and
-    reads give the same values either way."""
+    """The store's arrays opened once (opening one reads its metadata from the store) and
+    their :class:`~.chunks.ChunkSpec` (key ``"specs"``); ``digests=False`` leaves out
+    ``chunk_digest`` (a worker writing data only)."""
     names = (*array_names(), "chunk_digest") if digests else array_names()
-    return {name: _write_all(root[name]) for name in names}
-
-
-def _write_all(array):
-    with_config = getattr(array, "with_config", None)  # Zarr's runtime configuration
-    return with_config({"write_empty_chunks": True}) if with_config else array
+    opened = {name: root[name] for name in names}
+    opened["specs"] = {name: _chunks.spec_of(opened[name], name) for name in array_names()}
+    return opened
 
 
 def store_id(root) -> str:
@@ -221,136 +282,240 @@ def store_id(root) -> str:
     return sid
 
 
-def write_data(opened: dict, start: int, stop: int, arrays: dict[str, np.ndarray],
-               fmt: str = FORMAT) -> int:
-    """Write a chunk's data (every array, in one round trip to Zarr's event loop: the
-    arrays are written concurrently, each chunk file through a temporary file and a rename)
-    and return its :func:`digest` for a store of format ``fmt``; the digest is not recorded
-    here (:func:`record`).
+def degrees(q: np.ndarray) -> np.ndarray:
+    """Joint angles ``q`` (rad) in degrees as a store of format 3 holds them: each the
+    degrees rounded to 9 decimals where those give ``q`` back exactly (the angles of a grid
+    given in degrees: -120.0, not -119.99999999999999), else ``numpy.rad2deg``."""
+    deg = np.rad2deg(q)
+    rounded = np.round(deg, 9)
+    return np.where(np.deg2rad(rounded) == q, rounded, deg)
 
-    A whole chunk of an array stored as its raw bytes (:func:`_raw_bytes`, as :func:`create`
-    makes every array) is handed to Zarr's store as those bytes under the chunk's key,
-    without Zarr's selection and codec machinery (a fifth to a third less CPU time per
-    chunk); others (the last, partial chunk; an array stored otherwise) go through the
-    array."""
+
+def stored_values(arrays: dict[str, np.ndarray], fmt: str) -> dict[str, np.ndarray]:
+    """A chunk's arrays as a store of format ``fmt`` holds them: format 3 keeps the joint
+    angles in degrees (:func:`degrees`)."""
+    if _per_file(fmt):
+        return {**arrays, "q": degrees(arrays["q"])}
+    return arrays
+
+
+def write_data(opened: dict, start: int, stop: int, arrays: dict[str, np.ndarray],
+               fmt: str = FORMAT):
+    """Write a chunk's data (every array, in one round trip to Zarr's event loop: the
+    arrays' chunk files are written concurrently, each through a temporary file and a
+    rename) and return what its ``chunk_digest`` row records (:func:`record`): format 3
+    the tuple of each file's XXH3-64, formats 1 and 2 the :func:`digest` of the values.
+
+    Each chunk file is encoded here (:func:`.chunks.encode`: raw bytes, or Blosc as the
+    array's metadata says, byte for byte Zarr's own encoding; the last chunk padded with
+    the fill value) and handed to Zarr's store under the chunk's key, without Zarr's
+    selection and codec machinery (a fifth to a third less CPU time per chunk)."""
     import asyncio
 
     from zarr.core.buffer import default_buffer_prototype
     from zarr.core.sync import sync
 
     buffer = default_buffer_prototype().buffer
-
-    def write(array, values):
-        chunk = array.chunks[0]
-        if start % chunk or stop - start != chunk or not _raw_bytes(array):
-            return array.async_array.setitem(slice(start, stop), values)
-        key = array.metadata.encode_chunk_key((start // chunk,) + (0,) * (array.ndim - 1))
-        raw = np.ascontiguousarray(values, dtype=array.dtype.newbyteorder("<"))
-        return (array.store_path / key).set(buffer.from_array_like(raw.reshape(-1).view(np.uint8)))
+    specs = opened["specs"]
+    values = stored_values(arrays, fmt)
+    index = start // specs["q"].rows
+    files = {name: _chunks.encode(values[name], specs[name]) for name in array_names()}
 
     async def _all():
-        await asyncio.gather(*(write(opened[name], arrays[name]) for name in array_names()))
+        await asyncio.gather(*(
+            (opened[name].store_path / _chunks.chunk_key(index, opened[name].ndim)).set(
+                buffer.from_array_like(np.frombuffer(files[name], dtype=np.uint8)))
+            for name in array_names()))
 
     sync(_all())
-    _leave_page_cache(_chunk_files(opened, start))
-    return digest(arrays, fmt)
+    _chunks.leave_page_cache(_chunk_files(opened, index))
+    if _per_file(fmt):
+        return tuple(_chunks.file_digest(files[name]) for name in array_names())
+    return digest(values, fmt)
 
 
-#: The files of the chunks this process wrote last, in the local file system: their pages
-#: are released from the page cache as the next chunks are written (:func:`_leave_page_cache`).
-_RECENT: deque = deque(maxlen=3)
-_RECENT_LOCK = threading.Lock()
-
-
-def _chunk_files(opened: dict, start: int) -> list[str]:
-    """Paths of the chunk files holding configuration ``start`` of every array, if the store
-    is a local folder (else none)."""
+def _chunk_files(opened: dict, index: int) -> list[str]:
+    """Paths of chunk ``index``'s files of every array, if the store is a local folder
+    (else none)."""
     from zarr.storage import LocalStore
 
-    files = []
+    out = []
     for name in array_names():
         array = opened[name]
         store = array.store_path.store
         if not isinstance(store, LocalStore):
             return []
-        key = array.metadata.encode_chunk_key((start // array.chunks[0],)
-                                              + (0,) * (array.ndim - 1))
-        files.append(os.path.join(store.root, array.store_path.path, key))
-    return files
+        out.append(os.path.join(store.root, array.store_path.path,
+                                _chunks.chunk_key(index, array.ndim)))
+    return out
 
 
-def _leave_page_cache(files: list[str]) -> None:
-    """Tell the kernel that the chunk files just written, and those of the last chunks
-    before them, will not be read soon (``POSIX_FADV_DONTNEED``): it starts writing the
-    new ones to disk and drops the pages of those already written. A sweep writes far more
-    than it reads back; without this its files fill the page cache with pages it must first
-    allocate, which on a VM that backs its memory lazily cost about ten times the write
-    itself (see the performance notes), and which crowd out other files' pages on any
-    machine. Reads are unchanged (from the disk instead of memory). A no-op where the
-    call does not exist or the files are not on a local disk (tmpfs ignores it)."""
-    if not files or not hasattr(os, "posix_fadvise"):
-        return
-    with _RECENT_LOCK:
-        _RECENT.append(files)
-        every = [f for chunk in _RECENT for f in chunk]
-    for path in every:
-        try:
-            fd = os.open(path, os.O_RDONLY)
-        except OSError:  # replaced meanwhile by a rerun of its task, or removed
-            continue
-        try:
-            os.posix_fadvise(fd, 0, 0, os.POSIX_FADV_DONTNEED)
-        except OSError:
-            pass
-        finally:
-            os.close(fd)
-
-
-def _raw_bytes(array) -> bool:
-    """Whether the chunks of ``array`` are stored as their values' little-endian bytes in C
-    order: a Zarr v3 array of fixed-size numbers whose only codec is the ``bytes`` codec
-    (little-endian, or none for one-byte values), on a regular chunk grid, full in every
-    dimension but the first."""
-    from zarr.codecs import BytesCodec
-
-    meta = array.metadata
-    codecs = getattr(meta, "codecs", None)
-    if getattr(meta, "zarr_format", None) != 3 or not codecs or len(codecs) != 1:
-        return False
-    codec = codecs[0]
-    endian = getattr(codec.endian, "value", codec.endian)
-    shape = getattr(meta.chunk_grid, "chunk_shape", None)
-    return (isinstance(codec, BytesCodec) and array.dtype.kind in "fb"
-            and (endian == "little" or (endian is None and array.dtype.itemsize == 1))
-            and shape is not None and tuple(shape[1:]) == tuple(array.shape[1:]))
-
-
-def record(opened: dict, digests: dict[int, int]) -> None:
-    """Record the chunks ``digests`` (index -> digest) as complete, after all of their data
-    is written, in one write per block of the ``chunk_digest`` array. Only the process that
-    called the sweep records digests (never two at once)."""
+def record(opened: dict, digests: dict) -> None:
+    """Record the chunks ``digests`` (index -> what :func:`write_data` returned) as
+    complete, after all of their data is written, in one write per block of the
+    ``chunk_digest`` array. Only the process that called the sweep records digests (never
+    two at once)."""
     if digests:
         index = np.fromiter(digests, dtype=np.int64, count=len(digests))
-        values = np.fromiter(digests.values(), dtype=np.uint64, count=len(digests))
-        opened["chunk_digest"].vindex[index] = values
+        values = np.array(list(digests.values()), dtype=np.uint64)
+        opened["chunk_digest"].oindex[index] = values
 
 
-def read_chunk(root, start: int, stop: int, names=None) -> dict[str, np.ndarray]:
-    return {name: root[name][start:stop] for name in (names or array_names())}
+class Reader:
+    """The chunks of a sweep store read back verified (every read of a store's data goes
+    through one): the attributes, each array's metadata (its own ``zarr.json``, and the
+    consolidated copy where there is one) and the digest table are checked when it is made;
+    each chunk file is read bounded, checked against its digest and decoded by
+    :mod:`.chunks`. A damaged store raises :class:`InputError` naming what is damaged: the
+    attribute, the array, or the array and the chunk."""
+
+    def __init__(self, path: Path, root, plan, meta: dict):
+        zarr = _zarr()
+        fmt = meta["format"]
+        self.path, self.plan, self.fmt = Path(path), plan, fmt
+        self.name = str(path)
+        joints = plan.joints
+        names = meta.get("arrays")
+        every = list(array_names())
+        # stores of format 1 made before the feasible flag have every array but it
+        early = [n for n in every if n != "feasible"] if fmt == "snakecg.sweep/1" else None
+        if names != every and names != early:
+            raise InputError(f"{self.name!r}: its attribute snakecg_sweep.arrays is "
+                             f"{names!r}, expected {every}; the store was edited")
+        self.names = tuple(names)
+        try:
+            plain = zarr.open_group(str(path), mode="r", use_consolidated=False)
+        except Exception as exc:  # noqa: BLE001 - reported with the store's name
+            raise InputError(f"{self.name!r}: its group metadata cannot be read "
+                             f"({' '.join(str(exc).split())[:200]})") from None
+        self.specs = {}
+        wanted = [*self.names, "chunk_digest"] + (["joint"] if _per_file(fmt) else [])
+        for name in wanted:
+            spec = _open_spec(plain, name, self.name)
+            if name in root and root is not plain:
+                other = _open_spec(root, name, self.name)
+                if other.key() != spec.key():
+                    raise InputError(f"{self.name!r}: array {name}'s metadata differs from "
+                                     f"the group's consolidated copy; the store was edited")
+            self.specs[name] = spec
+        self._check_layout(joints)
+        self.digests = self._digest_table()
+
+    def _check_layout(self, joints: int) -> None:
+        plan, per_file = self.plan, _per_file(self.fmt)
+        for name in self.names:
+            s = self.specs[name]
+            want = (np.dtype(bool) if name == "feasible" else np.dtype("<f8"),
+                    plan.chunk, _per_configuration(name, joints))
+            if (s.dtype, s.rows, s.row) != want or (s.blosc is not None and not per_file):
+                raise InputError(f"{self.name!r}: array {name} is not laid out as the store's "
+                                 f"attributes say (chunks of {plan.chunk} configurations, "
+                                 f"{'raw' if not per_file else 'raw or Blosc'} "
+                                 f"{want[0]}); the store is damaged or was edited")
+        d = self.specs["chunk_digest"]
+        row = (len(array_names()),) if per_file else ()
+        if d.dtype != np.dtype("<u8") or d.blosc is not None or d.row != row:
+            raise InputError(f"{self.name!r}: array chunk_digest is not a digest table of "
+                             f"format {self.fmt}; the store is damaged or was edited")
+        if per_file:
+            j = self.specs["joint"]
+            data = _chunks.read_file(self._file("joint", 0), j, 0, store=self.name)
+            if not np.array_equal(_chunks.decode(data, j, 0, store=self.name).reshape(-1),
+                                  np.arange(1, joints + 1)):
+                raise InputError(f"{self.name!r}: array joint does not hold the joint "
+                                 f"numbers 1..{joints}; the store was edited")
+
+    def _file(self, name: str, index: int) -> str:
+        ndim = 1 + len(self.specs[name].row)
+        return str(self.path / name / _chunks.chunk_key(index, ndim))
+
+    def _digest_table(self) -> np.ndarray:
+        s = self.specs["chunk_digest"]
+        n = self.plan.n_chunks
+        if s.rows != min(n, _DIGEST_BLOCK):
+            raise InputError(f"{self.name!r}: array chunk_digest has blocks of {s.rows} rows,"
+                             f" expected {min(n, _DIGEST_BLOCK)}; the store was edited")
+        out = np.zeros((n, *s.row), dtype=np.uint64)
+        for b in range(-(-n // s.rows)):
+            path = self._file("chunk_digest", b)
+            if not os.path.exists(path):
+                continue  # no chunk of this block recorded yet
+            data = _chunks.read_file(path, s, b, store=self.name)
+            rows = _chunks.decode(data, s, b, store=self.name)
+            out[b * s.rows:(b + 1) * s.rows] = rows[:min(s.rows, n - b * s.rows)]
+        return out
+
+    def recorded(self) -> np.ndarray:
+        """Boolean ``(n_chunks,)``: the chunks recorded complete (every digest written)."""
+        d = self.digests
+        return (d != 0).all(axis=1) if d.ndim == 2 else d != 0
+
+    def chunk(self, index: int, names=None) -> dict[str, np.ndarray]:
+        """The values of the arrays ``names`` (default all) of recorded chunk ``index``
+        (only its configurations), as stored (format 3: ``q`` in degrees), after every
+        file of the chunk is checked against its digests: format 3 records one per file
+        (each is read, checked, and decoded if asked for), formats 1 and 2 one of the
+        values of all arrays (each is read and decoded to check it)."""
+        per_file = _per_file(self.fmt)
+        start, stop = self.plan.chunk_range(index)
+        want = set(names or self.names)
+        out = {}
+        for k, name in enumerate(self.names):
+            spec = self.specs[name]
+            data = _chunks.read_file(self._file(name, index), spec, index, store=self.name,
+                                     digest=self.digests[index, k] if per_file else None)
+            if name in want or not per_file:
+                out[name] = _chunks.decode(data, spec, index, store=self.name)[:stop - start]
+        if not per_file and digest(out, self.fmt, self.names) != int(self.digests[index]):
+            raise InputError(f"{self.name}: chunk {index} (configurations from {start:,}) "
+                             f"does not match its recorded digest (one of its arrays was "
+                             f"changed): the store is damaged; rerun the sweep that made it "
+                             f"(it computes such chunks again) or make a new one")
+        return {k: out[k] for k in (names or self.names)}
+
+    def q_deg(self, data: dict) -> np.ndarray:
+        """The joint angles (degrees) of a chunk read by :meth:`chunk`."""
+        return data["q"] if _per_file(self.fmt) else np.rad2deg(data["q"])
+
+    def q_rad(self, data: dict, planned: np.ndarray, index: int) -> np.ndarray:
+        """The joint angles (rad) of chunk ``index`` read by :meth:`chunk`: ``planned``
+        (the plan's, as computed), which the stored ones must be exactly (format 3: in
+        degrees, :func:`degrees` of them)."""
+        stored = data["q"]
+        if not np.array_equal(degrees(planned) if _per_file(self.fmt) else planned, stored):
+            start = index * self.plan.chunk
+            raise InputError(f"{self.name}: array q, chunk {index} (configurations from "
+                             f"{start:,}) does not hold the joint angles of the store's "
+                             f"configurations: the store is damaged or was edited")
+        return planned
 
 
-def completed(root, plan, *, verify: bool = True) -> np.ndarray:
+def _open_spec(group, name: str, store: str):
+    try:
+        array = group[name]
+    except Exception as exc:  # noqa: BLE001 - missing or unreadable zarr.json
+        why = "is missing" if isinstance(exc, KeyError) else \
+            f"cannot be read ({' '.join(str(exc).split())[:150]})"
+        raise InputError(f"{store!r}: array {name} (its zarr.json) {why}; the store is "
+                         f"damaged") from None
+    try:
+        return _chunks.spec_of(array, name)
+    except InputError as exc:
+        raise InputError(f"{store!r}: {exc}") from None
+
+
+def completed(root, plan, *, verify: bool = True, path=None) -> np.ndarray:
     """Boolean ``(n_chunks,)``: which chunks are complete (digest recorded and, with
-    ``verify``, matching the data read back)."""
-    digests = root["chunk_digest"][:]
-    done = digests != 0
-    fmt = format_of(root)
+    ``verify``, matching the data read back; a chunk that does not is computed again). A
+    store whose structure is damaged (attributes, an array's metadata, the digest table)
+    raises :class:`InputError`."""
+    path = Path(path) if path is not None else Path(root.store.root)
+    reader = Reader(path, root, plan, root.attrs["snakecg_sweep"])
+    done = reader.recorded()
     if verify:
         for i in np.flatnonzero(done):
-            start, stop = plan.chunk_range(int(i))
             try:
-                ok = digest(read_chunk(root, start, stop), fmt) == int(digests[i])
-            except Exception:  # noqa: BLE001 - an unreadable chunk is computed again
-                ok = False
-            done[i] = ok
+                reader.chunk(int(i))
+            except InputError:  # damaged: computed again
+                done[i] = False
     return done

@@ -1,0 +1,332 @@
+"""Spatial serial chains from URDF (yourdfpy) and MJCF (MuJoCo's own parser).
+
+Both readers return a :class:`~snakecg.SpatialRobot`: the root link (body) is the floating
+base, link 1; each link has at most one child through a revolute joint (URDF ``revolute`` or
+``continuous``, MJCF ``hinge``); joint origins, axes, masses, COMs and full inertias are kept
+as the file gives them, with the joints' position limits (``joint_limits``) and effort limits
+(``effort_limits``, infinite where the file gives none). Anything else is refused with an
+:class:`~snakecg.InputError` naming the element: a branch, a loop, a prismatic, ball,
+planar or floating joint (MJCF: a free joint anywhere but on the root body), two joints in
+one body, a fixed joint to a link with mass (URDF; massless tip frames are skipped), a body
+without a joint beyond the root (MJCF).
+
+:func:`planar_robot` turns a spatial chain whose joint axes are all parallel into the planar
+:class:`~snakecg.Robot` (the form today's planar pipeline takes), or says why it cannot.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+
+from ..errors import InputError
+from .robot import SpatialRobot
+
+__all__ = ["spatial_from_urdf", "spatial_from_mjcf", "planar_robot", "rpy_of",
+           "spatial_chain_or_planar"]
+
+_REVOLUTE = ("revolute", "continuous")
+
+
+def rpy_of(R) -> tuple[float, float, float]:
+    """Roll, pitch, yaw with ``R = Rz(yaw) Ry(pitch) Rx(roll)`` (URDF's convention)."""
+    R = np.asarray(R, dtype=float)
+    pitch = float(np.arctan2(-R[2, 0], np.hypot(R[0, 0], R[1, 0])))
+    if np.hypot(R[0, 0], R[1, 0]) > 1e-12:
+        roll = float(np.arctan2(R[2, 1], R[2, 2]))
+        yaw = float(np.arctan2(R[1, 0], R[0, 0]))
+    else:  # gimbal lock: the yaw absorbs the roll
+        roll, yaw = 0.0, float(np.arctan2(-R[0, 1], R[1, 1]))
+    return roll, pitch, yaw
+
+
+def _six(I) -> list[float]:
+    return [I[0, 0], I[1, 1], I[2, 2], I[0, 1], I[0, 2], I[1, 2]]
+
+
+def _robot(where, name, links, joints, gravity=(0.0, 0.0, -9.81)) -> SpatialRobot:
+    try:
+        return SpatialRobot(
+            joints=len(joints), mass=[lk["mass"] for lk in links],
+            com=[lk["com"] for lk in links], inertia=[lk["inertia"] for lk in links],
+            joint_xyz=[j["xyz"] for j in joints], joint_rpy=[j["rpy"] for j in joints],
+            joint_axis=[j["axis"] for j in joints], gravity=gravity,
+            joint_limits=[j["limits"] for j in joints],
+            effort_limits=[j["effort"] for j in joints], name=name,
+            link_names=tuple(lk["name"] for lk in links),
+            joint_names=tuple(j["name"] for j in joints))
+    except InputError as exc:
+        raise InputError(f"{where}: {exc}") from None
+
+
+# ------------------------------------------------------------------------------------------
+# URDF
+# ------------------------------------------------------------------------------------------
+def spatial_from_urdf(path, *, name: str | None = None) -> SpatialRobot:
+    """The spatial chain of a URDF file (see the module doc); needs the ``urdf`` extra."""
+    from ..urdf import _load  # the planar reader's checked loading (XML, yourdfpy)
+
+    p = Path(path)
+    urdf = _load(p)
+    where = f"URDF file {str(p)!r}"
+    robot = urdf.robot
+    links = {ln.name: ln for ln in robot.links}
+    children: dict[str, list] = {n: [] for n in links}
+    parents: dict[str, object] = {}
+    for j in robot.joints:
+        if j.parent not in links or j.child not in links:
+            raise InputError(f"{where}: joint {j.name!r} connects unknown links "
+                             f"{j.parent!r} -> {j.child!r}")
+        if j.child in parents:
+            raise InputError(f"{where}: link {j.child!r} has two parent joints "
+                             f"({parents[j.child].name!r}, {j.name!r}): a loop")
+        children[j.parent].append(j)
+        parents[j.child] = j
+    roots = [n for n in links if n not in parents]
+    if len(roots) != 1:
+        raise InputError(f"{where}: expected one root link, found {len(roots)}: "
+                         f"{', '.join(roots) or 'none (the joints form a loop)'}")
+    chain, chain_joints = [roots[0]], []
+    while True:
+        here = chain[-1]
+        moving = []
+        for j in children[here]:
+            if j.type in _REVOLUTE:
+                moving.append(j)
+            elif j.type == "fixed":
+                child = links[j.child]
+                mass = 0.0 if child.inertial is None else float(child.inertial.mass or 0.0)
+                if mass > 0 or children[j.child]:
+                    raise InputError(f"{where}: fixed joint {j.name!r} attaches link "
+                                     f"{j.child!r}, which has mass or children; merge it into "
+                                     f"link {here!r} (only massless tip frames may be fixed)")
+            else:
+                raise InputError(f"{where}: joint {j.name!r} is {j.type}; a snake is a chain "
+                                 "of revolute joints")
+        if len(moving) > 1:
+            raise InputError(f"{where}: the chain branches at link {here!r} (joints "
+                             f"{', '.join(repr(j.name) for j in moving)})")
+        if not moving:
+            break
+        chain_joints.append(moving[0])
+        chain.append(moving[0].child)
+    if not chain_joints:
+        raise InputError(f"{where}: no revolute joint; a snake has at least one")
+    out_links = []
+    for ln in chain:
+        link = links[ln]
+        inertial = link.inertial
+        m = 0.0 if inertial is None or inertial.mass is None else float(inertial.mass)
+        T = np.eye(4) if inertial is None or inertial.origin is None else np.asarray(
+            inertial.origin, dtype=float)
+        Ic = np.zeros((3, 3)) if inertial is None or inertial.inertia is None else \
+            np.asarray(inertial.inertia, dtype=float)
+        out_links.append({"name": ln, "mass": m, "com": T[:3, 3],
+                          "inertia": _six(T[:3, :3] @ Ic @ T[:3, :3].T)})
+    out_joints = []
+    for j in chain_joints:
+        T = np.eye(4) if j.origin is None else np.asarray(j.origin, dtype=float)
+        lim = j.limit
+        lower = getattr(lim, "lower", None) if j.type == "revolute" else None
+        upper = getattr(lim, "upper", None) if j.type == "revolute" else None
+        effort = getattr(lim, "effort", None)
+        out_joints.append({"name": j.name, "xyz": T[:3, 3], "rpy": rpy_of(T[:3, :3]),
+                           "axis": (1.0, 0.0, 0.0) if j.axis is None else j.axis,
+                           "limits": (-np.inf if lower is None else float(lower),
+                                      np.inf if upper is None else float(upper)),
+                           "effort": np.inf if effort is None else float(effort)})
+    return _robot(where, name or robot.name or p.stem, out_links, out_joints)
+
+
+# ------------------------------------------------------------------------------------------
+# MJCF
+# ------------------------------------------------------------------------------------------
+def _mujoco():
+    try:
+        import mujoco
+    except ImportError:
+        raise InputError("reading MJCF needs MuJoCo: pip install 'snakecg[mjcf]'") from None
+    return mujoco
+
+
+def spatial_from_mjcf(path, *, name: str | None = None) -> SpatialRobot:
+    """The spatial chain of a MuJoCo XML file, compiled by ``mujoco.MjModel.from_xml_path``
+    (see the module doc); needs the ``mjcf`` extra."""
+    mujoco = _mujoco()
+    p = Path(path)
+    where = f"MJCF file {str(p)!r}"
+    if not p.is_file():
+        raise InputError(f"{where} does not exist or is not a file")
+    try:
+        m = mujoco.MjModel.from_xml_path(str(p))
+    except Exception as exc:  # noqa: BLE001 - MuJoCo reports every problem as one kind
+        raise InputError(f"{where} cannot be read: {' '.join(str(exc).split())}") from None
+    def body_name(b):
+        return mujoco.mj_id2name(m, mujoco.mjtObj.mjOBJ_BODY, b) or f"body {b}"
+
+    def joint_name(j):
+        return mujoco.mj_id2name(m, mujoco.mjtObj.mjOBJ_JOINT, j) or f"joint {j}"
+
+    kids: dict[int, list[int]] = {b: [] for b in range(m.nbody)}
+    for b in range(1, m.nbody):
+        kids[int(m.body_parentid[b])].append(b)
+    if len(kids[0]) != 1:
+        raise InputError(f"{where}: expected one body in the worldbody, found "
+                         f"{len(kids[0])}: {', '.join(body_name(b) for b in kids[0]) or 'none'}")
+    chain = [kids[0][0]]
+    while kids[chain[-1]]:
+        if len(kids[chain[-1]]) > 1:
+            raise InputError(f"{where}: the chain branches at body {body_name(chain[-1])!r} "
+                             f"(children {', '.join(repr(body_name(b)) for b in kids[chain[-1]])})")
+        chain.append(kids[chain[-1]][0])
+    if m.neq:
+        raise InputError(f"{where}: equality constraints close loops; a snake is a serial chain")
+    FREE, HINGE = mujoco.mjtJoint.mjJNT_FREE, mujoco.mjtJoint.mjJNT_HINGE
+    joint_of = {}
+    for k, b in enumerate(chain):
+        js = [j for j in range(m.njnt) if m.jnt_bodyid[j] == b]
+        for j in js:
+            if m.jnt_type[j] == FREE and k == 0:
+                continue
+            if m.jnt_type[j] != HINGE:
+                kind = {int(FREE): "free", int(mujoco.mjtJoint.mjJNT_BALL): "ball",
+                        int(mujoco.mjtJoint.mjJNT_SLIDE): "slide"}.get(int(m.jnt_type[j]), "?")
+                raise InputError(f"{where}: joint {joint_name(j)!r} of body "
+                                 f"{body_name(b)!r} is a {kind} joint; a snake is a chain of "
+                                 "hinges on a free root")
+        hinges = [j for j in js if m.jnt_type[j] == HINGE]
+        if k == 0:
+            if hinges:
+                raise InputError(f"{where}: the root body {body_name(b)!r} has a hinge "
+                                 f"({joint_name(hinges[0])!r}); its base is floating")
+            continue
+        if len(hinges) != 1:
+            raise InputError(f"{where}: body {body_name(b)!r} has {len(hinges)} joints; each "
+                             "body after the root needs exactly one hinge")
+        joint_of[b] = hinges[0]
+    if len(chain) < 2:
+        raise InputError(f"{where}: no hinge; a snake has at least one")
+    mat = lambda quat: _quat_matrix(mujoco, quat)  # noqa: E731
+    # each link's frame sits on its joint's axis: the body frame moved by jnt_pos
+    shift = {b: (np.zeros(3) if k == 0 else np.asarray(m.jnt_pos[joint_of[b]], dtype=float))
+             for k, b in enumerate(chain)}
+    links, joints = [], []
+    for k, b in enumerate(chain):
+        R_i = mat(m.body_iquat[b])
+        Ic = R_i @ np.diag(m.body_inertia[b]) @ R_i.T
+        links.append({"name": body_name(b), "mass": float(m.body_mass[b]),
+                      "com": np.asarray(m.body_ipos[b]) - shift[b], "inertia": _six(Ic)})
+        if k == 0:
+            continue
+        j = joint_of[b]
+        R = mat(m.body_quat[b])
+        parent = chain[k - 1]
+        xyz = np.asarray(m.body_pos[b]) - shift[parent] + R @ shift[b]
+        limited = bool(m.jnt_limited[j])
+        effort = float(np.abs(m.jnt_actfrcrange[j]).max()) if m.jnt_actfrclimited[j] \
+            else np.inf
+        joints.append({"name": joint_name(j), "xyz": xyz, "rpy": rpy_of(R),
+                       "axis": np.asarray(m.jnt_axis[j], dtype=float),
+                       "limits": tuple(map(float, m.jnt_range[j])) if limited
+                       else (-np.inf, np.inf), "effort": effort})
+    return _robot(where, name or p.stem, links, joints, gravity=tuple(map(float, m.opt.gravity)))
+
+
+def _quat_matrix(mujoco, quat) -> np.ndarray:
+    out = np.zeros(9)
+    mujoco.mju_quat2Mat(out, np.asarray(quat, dtype=float))
+    return out.reshape(3, 3)
+
+
+# ------------------------------------------------------------------------------------------
+# the planar form
+# ------------------------------------------------------------------------------------------
+def planar_robot(robot: SpatialRobot, *, tol: float = 1e-6):
+    """The planar :class:`~snakecg.Robot` of a chain whose joint axes are all parallel (every
+    joint origin and COM in one plane normal to them, each COM on the line through its link's
+    joints; the end links' COMs in their middle), or a string saying why it is not planar."""
+    from ..robot import Robot
+
+    R, o = np.eye(3), np.zeros(3)
+    frames = [(R, o)]
+    axes, origins = [], []
+    for j in range(robot.joints):
+        o = o + R @ np.asarray(robot.joint_xyz[j])
+        roll, pitch, yaw = robot.joint_rpy[j]
+        R = R @ _rpy_matrix(roll, pitch, yaw)
+        axes.append(R @ np.asarray(robot.joint_axis[j]))
+        origins.append(o)
+        frames.append((R, o))
+    n = axes[0]
+    if any(np.linalg.norm(np.cross(n, a)) > tol for a in axes[1:]):
+        return "the joint axes are not parallel"
+    coms = [Rk @ np.asarray(c) + ok for (Rk, ok), c in zip(frames, robot.com)]
+    if any(abs(n @ (x - origins[0])) > tol for x in origins + coms):
+        return "the joints and COMs do not lie in one plane normal to the axes"
+    nl = robot.n_links
+    lengths, cs, inertias = [], [], []
+    for i in range(nl):
+        Rk = frames[i][0]
+        Ic = _matrix(robot.inertia[i])
+        inertias.append(float(n @ Rk @ Ic @ Rk.T @ n))
+        if 0 < i < nl - 1:
+            rear, front = origins[i - 1], origins[i]
+        elif i == 0:
+            front = origins[0]
+            rear = 2 * coms[0] - front
+        else:
+            rear = origins[-1]
+            front = 2 * coms[-1] - rear
+        length = float(np.linalg.norm(front - rear))
+        if not length > tol:
+            return f"link {i + 1} has zero length"
+        e = (front - rear) / length
+        c = float(e @ (coms[i] - rear))
+        if np.linalg.norm(coms[i] - rear - c * e) > tol or not -tol <= c <= length + tol:
+            return f"the COM of link {i + 1} is off the line through its joints"
+        lengths.append(length)
+        cs.append(min(max(c, 0.0), length))
+    if any(m <= 0 for m in robot.mass):
+        return "a link has no mass"
+    return Robot(joints=robot.joints, mass=robot.mass, length=tuple(lengths),
+                 inertia=tuple(inertias), com=tuple(cs), name=robot.name)
+
+
+def _rpy_matrix(roll, pitch, yaw):
+    cr, sr, cp, sp_, cy, sy = (np.cos(roll), np.sin(roll), np.cos(pitch), np.sin(pitch),
+                               np.cos(yaw), np.sin(yaw))
+    return (np.array([[cy, -sy, 0], [sy, cy, 0], [0, 0, 1]])
+            @ np.array([[cp, 0, sp_], [0, 1, 0], [-sp_, 0, cp]])
+            @ np.array([[1, 0, 0], [0, cr, -sr], [0, sr, cr]]))
+
+
+def _matrix(six):
+    xx, yy, zz, xy, xz, yz = six
+    return np.array([[xx, xy, xz], [xy, yy, yz], [xz, yz, zz]])
+
+
+def spatial_chain_or_planar(kind: str, path, name, planar_reader, *, tol: float = 1e-6):
+    """``Robot.from_urdf``/``from_mjcf``: the file's chain read in its spatial form; a planar
+    chain then as a planar :class:`~snakecg.Robot` (URDF: by today's planar reader
+    ``planar_reader``, which keeps tip frames and its own checks), any other chain as the
+    :class:`~snakecg.SpatialRobot`."""
+    spatial = (spatial_from_urdf if kind == "urdf" else spatial_from_mjcf)(path, name=name)
+    if planar_reader is not None:
+        if isinstance(planar_robot(spatial, tol=tol), str) and _axes_differ(spatial, tol):
+            return spatial
+        try:
+            return planar_reader()
+        except InputError:  # a planar-only limit (a COM off a link's axis, ...): 3-D it is
+            return spatial
+    planar = planar_robot(spatial, tol=tol)
+    return spatial if isinstance(planar, str) else planar
+
+
+def _axes_differ(robot: SpatialRobot, tol: float) -> bool:
+    R = np.eye(3)
+    axes = []
+    for j in range(robot.joints):
+        R = R @ _rpy_matrix(*robot.joint_rpy[j])
+        axes.append(R @ np.asarray(robot.joint_axis[j]))
+    return any(np.linalg.norm(np.cross(axes[0], a)) > tol for a in axes[1:])

@@ -1,0 +1,142 @@
+"""The spatial runtime: SpatialRobot validation, the compiled model's batches against its
+samples and CasADi's own evaluation, physical properties, the C export and the CLI."""
+
+from __future__ import annotations
+
+import shutil
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+import snakecg
+
+from test_spatial_references import random_robot, rel
+
+
+def _q(rng, robot, n):
+    quat = rng.normal(size=(n, 4))
+    quat /= np.linalg.norm(quat, axis=1)[:, None]
+    return np.c_[rng.normal(size=(n, 3)), quat, rng.uniform(-2, 2, (n, robot.joints))]
+
+
+def test_robot_validation_collects_every_problem():
+    with pytest.raises(snakecg.InputError, match=r"mass must be >= 0.*joint_axis of joint\(s\) 2 "
+                                                  r"is zero.*effort_limits must be positive"):
+        snakecg.SpatialRobot(joints=2, mass=[1, -1, 1], joint_axis=[(0, 0, 1), (0, 0, 0)],
+                             effort_limits=[1, -2])
+    with pytest.raises(snakecg.InputError, match="inertia of link 1 breaks the triangle"):
+        snakecg.SpatialRobot(joints=1, inertia=(1, 1, 3, 0, 0, 0))
+    with pytest.raises(snakecg.InputError, match="joints must be an integer >= 1"):
+        snakecg.SpatialRobot(joints=0)
+
+
+def test_batches_equal_samples_and_casadi(rng):
+    """The block drivers (16 samples per loop) and the per-sample path give the same numbers,
+    equal to CasADi's in-process evaluation of the serialized functions (to 1e-13)."""
+    robot = random_robot(rng, 4)
+    model = snakecg.load(robot)
+    q, v = _q(rng, robot, 37), rng.normal(size=(37, robot.nv))
+    M, h = model.mass_matrix(q), model.bias_forces(q, v)
+    for k in (0, 15, 16, 36):
+        assert np.array_equal(M[k], model.mass_matrix(q[k]))
+        assert np.array_equal(h[k], model.bias_forces(q[k], v[k]))
+    f = model.casadi_function("mass_matrix", bind=True)
+    assert rel(M[5], np.array(f(q[5]))) <= 1e-13
+    g = model.casadi_function("bias_forces")
+    assert rel(h[5], np.array(g(q[5], v[5], model.parameters)).ravel()) <= 1e-13
+
+
+def test_physics_properties(rng):
+    """M is symmetric positive definite; the kinetic energy 1/2 v^T M v equals the links'
+    1/2 (m |v_C|^2 + w^T I w) from the point and link Jacobians; the power of h at zero
+    gravity is v^T h = 1/2 v^T Mdot v (finite difference along the flow qdot = G v)."""
+    robot = snakecg.SpatialRobot(joints=3, joint_axis=rng.normal(size=(3, 3)),
+                                 gravity=(0, 0, 0), com=rng.normal(0, 0.05, (4, 3)))
+    model = snakecg.load(robot)
+    q, v = _q(rng, robot, 1)[0], rng.normal(size=robot.nv)
+    M = model.mass_matrix(q)
+    assert np.allclose(M, M.T, atol=0) and np.linalg.eigvalsh(M).min() > 0
+    J = model.link_jacobians(q)
+    T = model.link_poses(q)
+    energy = 0.0
+    for i in range(robot.n_links):
+        vc = model.point_jacobian(q, i + 1, robot.com[i]) @ v
+        w = J[i, 3:] @ v
+        xx, yy, zz, xy, xz, yz = robot.inertia[i]
+        Iw = T[i, :3, :3] @ np.array([[xx, xy, xz], [xy, yy, yz], [xz, yz, zz]]) @ T[i, :3, :3].T
+        energy += 0.5 * (robot.mass[i] * vc @ vc + w @ Iw @ w)
+    assert abs(0.5 * v @ M @ v - energy) <= 1e-13 * energy
+    G = model.kinematic_map(q)
+    eps = 1e-6
+    Mdot = (model.mass_matrix(q + eps * G @ v) - model.mass_matrix(q - eps * G @ v)) / (2 * eps)
+    assert abs(v @ model.bias_forces(q, v) - 0.5 * v @ Mdot @ v) <= 1e-7 * abs(v @ M @ v)
+
+
+def test_rows_are_the_point_jacobians(rng):
+    """Ground rows are the z rows of the support points' Jacobians; wheel rows are lateral
+    (orthogonal to the heading in the plane); Adot v of the ground rows is the z of the
+    points' bias accelerations."""
+    robot = random_robot(rng, 3)
+    model = snakecg.load(robot)
+    q, v = _q(rng, robot, 1)[0], rng.normal(size=robot.nv)
+    g = model.ground_rows(q, v)
+    w = model.wheel_rows(q, v)
+    T = model.link_poses(q)
+    for i in range(robot.n_links):
+        Jp = model.point_jacobian(q, i + 1, robot.com[i])
+        assert rel(g["A"][i], Jp[2]) <= 1e-13
+        assert abs(g["adot_v"][i] - model.point_bias_acceleration(q, v, i + 1,
+                                                                   robot.com[i])[2]) <= 1e-12
+        assert abs(g["height"][i] - model.point_position(q, i + 1, robot.com[i])[2]) <= 1e-13
+        heading = T[i, :3, 0]
+        lat = np.array([-heading[1], heading[0], 0]) / np.hypot(*heading[:2])
+        assert rel(w["A"][i], lat @ Jp) <= 1e-12
+
+
+def test_inputs_are_checked(rng):
+    model = snakecg.load(snakecg.SpatialRobot(joints=1))
+    with pytest.raises(snakecg.InputError, match=r"q must be numeric with shape \(8,\)"):
+        model.mass_matrix(np.zeros(7).tolist() + ["x"])
+    with pytest.raises(snakecg.InputError, match=r"link must be an integer from 1"):
+        model.point_jacobian(np.r_[np.zeros(6), 1, 0], 3, [0, 0, 0])
+
+
+@pytest.mark.skipif(shutil.which("make") is None or shutil.which("cc") is None,
+                    reason="the C export example needs make and a C compiler")
+def test_export_builds_and_matches(tmp_path):
+    """`snakecg export` of a spatial robot builds with make and prints the model's numbers."""
+    robot = snakecg.SpatialRobot(joints=2)
+    from snakecg.export import export_library
+
+    export_library(robot, tmp_path / "lib")
+    subprocess.run(["make", "-s", "-C", str(tmp_path / "lib")], check=True, capture_output=True)
+    out = subprocess.run([str(tmp_path / "lib" / "example")], check=True, capture_output=True,
+                         text=True).stdout.splitlines()
+    q = robot.neutral()
+    q[7:] = [0.3 * ((i % 3) - 1) for i in range(7, 9)]
+    h = snakecg.load(robot).bias_forces(q, np.zeros(robot.nv))
+    printed = [float(line.split("=")[1]) for line in out[1:]]
+    assert np.allclose(printed, h, rtol=1e-15, atol=1e-15)
+
+
+def test_cli_show_and_export(tmp_path):
+    run = lambda *a: subprocess.run([sys.executable, "-m", "snakecg.cli", *a],  # noqa: E731
+                                    capture_output=True, text=True)
+    r = run("show", "--spatial", "--joints", "1", "mass_matrix")
+    assert r.returncode == 0 and "R2_00 = " in r.stdout
+    r = run("show", "--spatial", "--joints", "1", "nothing")
+    assert r.returncode == 2 and "unknown name 'nothing'" in r.stderr
+
+
+def test_casadi_backend_equals_compiled(rng):
+    """Without a compiler (backend="casadi"): CasADi's in-process evaluation of the
+    serialized functions gives the compiled numbers (to 1e-13)."""
+    robot = random_robot(rng, 3)
+    compiled, vm = snakecg.load(robot), snakecg.load(robot, backend="casadi")
+    assert vm.backend_kind == "casadi"
+    q, v = _q(rng, robot, 5), rng.normal(size=(5, robot.nv))
+    assert rel(vm.mass_matrix(q), compiled.mass_matrix(q)) <= 1e-13
+    assert rel(vm.bias_forces(q, v), compiled.bias_forces(q, v)) <= 1e-13
+    assert rel(vm.link_jacobians(q), compiled.link_jacobians(q)) <= 1e-13
