@@ -252,13 +252,21 @@ static void configuration(sc_optimal *o) {
   clear_answer(o->out);
   /* 1. the system at rest and the all-held maps */
   for (r = 0; r < NC; ++r) state[r] = present[r] != 0.0 ? HELD : ABSENT;
-  ok = sc_rest_system(o->ws, o->scene, o->q, &o->rest) == 0 &&
-       sc_state_maps(&o->rest, o->scene, state, 1, &o->held) > o->fw_constants[0];
+  ok = sc_rest_system(o->ws, o->scene, o->q, &o->rest) == 0; /* M_s positive definite */
+  if (ok) {
+    double ratio = sc_state_maps(&o->rest, o->scene, state, 1, &o->held);
+    if (isfinite(ratio) && !(ratio > o->fw_constants[0])) {
+      sc_optimal_status(o, SC_FAILED, SC_REASON_SINGULAR); /* dependent held rows */
+      return;
+    }
+    ok = isfinite(ratio);
+  }
   for (i = 0; ok && i < NC * NA; ++i) ok = isfinite(o->held.L[i]);
   for (i = 0; ok && i < NA1 * NA1; ++i) ok = isfinite(o->held.Xih[i]);
   for (i = 0; ok && i < NA * NA; ++i) ok = isfinite(o->rest.N[i]) && isfinite(o->held.Om[i]);
-  if (!ok) {
-    sc_optimal_status(o, SC_FAILED, SC_REASON_SINGULAR);
+  if (!ok) { /* the system at rest is not usable in float64: the caller asks the forward
+              * solve at zero torque why */
+    sc_optimal_status(o, SC_FAILED, SC_REASON_UNANSWERABLE);
     return;
   }
   /* 2. a_obj = a_dir lam_c, k = a_dir^T I_obj a_dir */
@@ -278,7 +286,7 @@ static void configuration(sc_optimal *o) {
   if (o->r2 > 0) {
     memcpy(Lc, o->rest.N, sizeof Lc);
     if (!sc_cholesky(NA, Lc, NA, 0.0)) {
-      sc_optimal_status(o, SC_FAILED, SC_REASON_SINGULAR);
+      sc_optimal_status(o, SC_FAILED, SC_REASON_UNANSWERABLE);
       return;
     }
     for (j = 0; j < NA; ++j) {
@@ -335,6 +343,10 @@ int SNAKECG_EXPORT(core_optimal)(sc_int n, const double *scene, const double *fw
     configuration(&o);
     tau = o.out + OPT_OUT_tau;
     row = o.out + OPT_OUT_forward;
+    if (o.out[OPT_OUT_reason] == SC_REASON_UNANSWERABLE) { /* (the caller words why) */
+      o.out[OPT_OUT_objective_value] = NAN;
+      continue;
+    }
     for (j = 0; j < NA; ++j) finite &= fabs(tau[j]) <= fw_constants[5];
     if (!finite) { /* no torque to check (the caller words why): the answer has failed */
       double big = 0.0;

@@ -54,8 +54,10 @@ enum {
   SC_REASON_NOT_FINITE = 12,     /* the answer is not a finite torque within the force limit:
                                   * its largest |tau_j|; the caller solves the forward at 0
                                   * and puts its row's status second */
-  SC_REASON_NO_ANSWER = 13       /* the forward solve at the answer has none: its row's
+  SC_REASON_NO_ANSWER = 13,      /* the forward solve at the answer has none: its row's
                                   * status (the reason's code, snakecg/rows.py) */
+  SC_REASON_UNANSWERABLE = 14    /* the system at rest is not usable in float64 (M_s not
+                                  * positive definite, a map not finite): as NOT_FINITE */
 };
 /* forward checks (OPT_OUT_check), with OPT_OUT_check_detail */
 enum {

@@ -36,7 +36,7 @@ OPTIMAL, INFEASIBLE, FAILED = 0, 1, 2
 REASON = {"none": 0, "singular": 1, "no_push": 2, "off_normal": 3, "against_normal": 4,
           "direction": 5, "out_of_reach": 6, "no_strong_push": 7, "solver": 8,
           "within_reach": 9, "certificate": 10, "forward_check": 11, "not_finite": 12,
-          "no_answer": 13}
+          "no_answer": 13, "unanswerable": 14}
 #: Forward checks (``OPT_OUT_check``), SC_CHECK_*.
 CHECK = {"passed": 0, "pending": -1, "tau_max": 1, "ellipsoid": 2, "separates": 3,
          "slides": 4, "objective": 5, "a_obj": 6, "a_min": 7}

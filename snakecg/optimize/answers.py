@@ -88,6 +88,9 @@ def _reason(query, row, off, binding, tol) -> str:
         return why or (f"the optimizer's torque is not finite or beyond +-{FORCE_LIMIT:.0e} "
                        f"(max |tau| = {det[0]:.3g}): the configuration is too ill-conditioned "
                        f"to answer")
+    if code == "unanswerable":
+        return reason_of(det[1]) or ("the system at this configuration is not usable in "
+                                     "float64 (a non-finite map): no answer")
     if code == "no_answer":
         return reason_of(det[1])
     return f"forward check: {_check(query, row, off)}"

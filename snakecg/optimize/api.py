@@ -84,7 +84,9 @@ def optimize(model, q, objective: str = "max_sr", *, tau_max="robot", radius=Non
         rows = model.forward(qa[pending], np.ascontiguousarray(taus)).raw
         out[pending, f0:f0 + rows.shape[1]] = rows
         kernel.check(query_in, out)
-    unanswered = np.flatnonzero(out[:, kernel.OUT["reason"][0]] == REASON["not_finite"])
+    reason = out[:, kernel.OUT["reason"][0]]
+    unanswered = np.flatnonzero((reason == REASON["not_finite"])
+                                | (reason == REASON["unanswerable"]))
     for i in unanswered.tolist():  # no torque to check: the forward solve at zero says why
         fw = model.forward(qa[i], np.zeros(model.n_joints))
         out[i, f0:f0 + fw.raw.size] = no_answer(model, fw.raw)
