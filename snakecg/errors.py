@@ -2,7 +2,8 @@
 
 from __future__ import annotations
 
-__all__ = ["SnakecgError", "InputError", "BuildError", "ArtifactError", "SingularConstraintsError"]
+__all__ = ["SnakecgError", "InputError", "BuildError", "ArtifactError", "SingularConstraintsError",
+           "NotPlanarError"]
 
 
 class SnakecgError(Exception):
@@ -11,6 +12,11 @@ class SnakecgError(Exception):
 
 class InputError(SnakecgError, ValueError):
     """Bad input: the message names the argument and the expected form."""
+
+
+class NotPlanarError(InputError):
+    """A robot file describes a chain that is not planar (joint axes not parallel, a COM off
+    its link's axis): the planar reader refuses it, ``Robot.from_urdf`` reads it in 3-D."""
 
 
 class BuildError(SnakecgError, RuntimeError):

@@ -36,7 +36,7 @@ import warnings
 import numpy as np
 
 from ._inputs import number
-from .errors import InputError
+from .errors import InputError, NotPlanarError
 
 __all__ = ["robot_from_urdf"]
 
@@ -204,7 +204,7 @@ def robot_from_urdf(path, *, tol: float = 1e-6, name: str | None = None):
     for j, a in zip(chain_joints[1:], axes[1:]):
         if np.linalg.norm(np.cross(n, a)) > tol:
             angle = np.degrees(np.arcsin(min(1.0, np.linalg.norm(np.cross(n, a)))))
-            raise InputError(f"{where}: the axis of joint {j.name!r} is {angle:.3g} deg off "
+            raise NotPlanarError(f"{where}: the axis of joint {j.name!r} is {angle:.3g} deg off "
                              f"the axis of joint {chain_joints[0].name!r}; a planar snake "
                              "needs parallel joint axes")
 
@@ -250,7 +250,7 @@ def robot_from_urdf(path, *, tol: float = 1e-6, name: str | None = None):
         c = float(e @ (com - rear))
         off = float(np.linalg.norm(com - rear - c * e))
         if off > tol:
-            raise InputError(f"{where}: the COM of link {link_name!r} lies {off:.3g} m off "
+            raise NotPlanarError(f"{where}: the COM of link {link_name!r} lies {off:.3g} m off "
                              f"the link's axis (tolerance {tol:g} m); snakecg's links carry "
                              "their COM on the line through their joints")
         if not -tol <= c <= length + tol:

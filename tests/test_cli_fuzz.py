@@ -725,7 +725,7 @@ def long_work_stopped():
     import snakecg.reproduce as rep
     import snakecg.simulate as sim
     import snakecg.sweeps.run as sweeps_run
-    import snakecg_derive.inspect as inspect_mod
+    import snakecg_derive.inspection as inspect_mod
     import snakecg_derive.render as render
 
     def started(*args, **kwargs):

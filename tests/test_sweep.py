@@ -552,7 +552,9 @@ def test_stores_of_formats_1_and_2_are_read_verified_and_resumed(client, tmp_pat
     ref = reference(sc, mesh(*FORMAT2_GRID))
     h = hashlib.blake2b(digest_size=8) if fmt == 1 else xxhash.xxh3_64()
     data = read(path)
-    assert_matches(data, ref)
+    # the store was written by an earlier version, whose largest sr came from the closed
+    # form (good to a few 1e-12); the values of today's in-process batch are forward's own
+    assert_matches(data, ref, tol=1e-10)
     before = zarr.open_group(str(path), mode="r")["chunk_digest"][:]
     assert int(before[3]) == _documented_digest(data, 18, 20, h)
     assert summary(path)["summarized_configurations"] == 20
@@ -563,10 +565,18 @@ def test_stores_of_formats_1_and_2_are_read_verified_and_resumed(client, tmp_pat
         summary(path)
     res = snakecg.sweep(sc, grid=FORMAT2_GRID, store=path, client=client, progress=False)
     assert (res.chunk, res.computed_chunks, res.reused_chunks) == (6, 2, 2)
-    assert_identical(read(path), data)
+    again = read(path)
+    kept = np.r_[0:6, 18:20]  # chunks 0 and 3: the old version's bytes, untouched
+    assert_identical({k: v[kept] for k, v in again.items()},
+                     {k: v[kept] for k, v in data.items()})
+    assert_matches(again, ref, tol=1e-10)  # chunks 1 and 2 computed again, by today's code
     root = zarr.open_group(str(path), mode="r")
     assert root.attrs["snakecg_sweep"]["format"] == f"snakecg.sweep/{fmt}"
-    np.testing.assert_array_equal(root["chunk_digest"][:], before)
+    after = root["chunk_digest"][:]
+    np.testing.assert_array_equal(after[[0, 3]], before[[0, 3]])
+    for c in (1, 2):
+        h = hashlib.blake2b(digest_size=8) if fmt == 1 else xxhash.xxh3_64()
+        assert int(after[c]) == _documented_digest(again, 6 * c, 6 * c + 6, h)
 
 
 def test_a_format_1_store_without_the_feasible_flag_is_read(tmp_path, capsys):
@@ -577,7 +587,7 @@ def test_a_format_1_store_without_the_feasible_flag_is_read(tmp_path, capsys):
     path = old_store(tmp_path, 1, feasible=False)
     data = read(path)
     assert "feasible" not in data
-    assert_matches(data, reference(scene("frictionless"), mesh(*FORMAT2_GRID)))
+    assert_matches(data, reference(scene("frictionless"), mesh(*FORMAT2_GRID)), tol=1e-10)
     s = summary(path)
     assert s["feasible_configurations"] is None and s["summarized_configurations"] == 20
     _one_line_error(capsys, ["sweep", "--summary", str(path), "--feasible-only"],

@@ -20,7 +20,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ..errors import InputError
+from ..errors import InputError, NotPlanarError
 from .robot import SpatialRobot
 
 __all__ = ["spatial_from_urdf", "spatial_from_mjcf", "planar_robot", "rpy_of",
@@ -67,8 +67,7 @@ def spatial_from_urdf(path, *, name: str | None = None) -> SpatialRobot:
     """The spatial chain of a URDF file (see the module doc); needs the ``urdf`` extra."""
     from ..urdf import _load  # the planar reader's checked loading (XML, yourdfpy)
 
-    p = Path(path)
-    urdf = _load(p)
+    p, urdf = _load(path)
     where = f"URDF file {str(p)!r}"
     robot = urdf.robot
     links = {ln.name: ln for ln in robot.links}
@@ -307,26 +306,18 @@ def _matrix(six):
 
 
 def spatial_chain_or_planar(kind: str, path, name, planar_reader, *, tol: float = 1e-6):
-    """``Robot.from_urdf``/``from_mjcf``: the file's chain read in its spatial form; a planar
-    chain then as a planar :class:`~snakecg.Robot` (URDF: by today's planar reader
-    ``planar_reader``, which keeps tip frames and its own checks), any other chain as the
-    :class:`~snakecg.SpatialRobot`."""
-    spatial = (spatial_from_urdf if kind == "urdf" else spatial_from_mjcf)(path, name=name)
+    """``Robot.from_urdf``/``from_mjcf``. URDF: the planar reader ``planar_reader`` (its
+    checks and refusals stand), and the chain in 3-D where it is not planar
+    (:class:`~snakecg.errors.NotPlanarError`). MJCF: the chain read in its spatial form, as a
+    planar :class:`~snakecg.Robot` when it is planar."""
+    from .._inputs import number
+
     if planar_reader is not None:
-        if isinstance(planar_robot(spatial, tol=tol), str) and _axes_differ(spatial, tol):
-            return spatial
         try:
             return planar_reader()
-        except InputError:  # a planar-only limit (a COM off a link's axis, ...): 3-D it is
-            return spatial
+        except NotPlanarError:
+            return spatial_from_urdf(path, name=name)
+    tol = number("tol", tol, lo=0, unit="m")
+    spatial = spatial_from_mjcf(path, name=name)
     planar = planar_robot(spatial, tol=tol)
     return spatial if isinstance(planar, str) else planar
-
-
-def _axes_differ(robot: SpatialRobot, tol: float) -> bool:
-    R = np.eye(3)
-    axes = []
-    for j in range(robot.joints):
-        R = R @ _rpy_matrix(*robot.joint_rpy[j])
-        axes.append(R @ np.asarray(robot.joint_axis[j]))
-    return any(np.linalg.norm(np.cross(axes[0], a)) > tol for a in axes[1:])
