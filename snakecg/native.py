@@ -57,13 +57,15 @@ _warned: set[str] = set()
 CORE_SOURCE = Path(__file__).resolve().parent / "core" / "forward.c"
 CORE_SOURCES = tuple(CORE_SOURCE.with_name(name)
                      for name in ("forward.c", "integrate.c", "settle.c", "run.c", "sphere.c",
-                                  "pieces.c", "maps.c", "optimal.c"))
+                                  "pieces.c", "maps.c", "qp.c", "optimal.c", "max_sr.c",
+                                  "push.c", "wheel_states.c"))
 #: The header they share (work arrays, contact_system, the held rows' forces).
 CORE_HEADER = CORE_SOURCE.with_name("common.h")
-#: Every header of the runtime core (dense.h, optimal.h: the small dense algebra, the query's
-#: types and the certificate of optimal.c; geometry.h: the simulation's contact check).
+#: Every header of the runtime core (linalg.h: the small dense linear algebra; qp.h: the dense
+#: QP block; optimal.h: the optimal-torque queries' types and prototypes; geometry.h: the
+#: simulation's contact check).
 CORE_HEADERS = (CORE_HEADER, *(CORE_SOURCE.with_name(name)
-                               for name in ("dense.h", "optimal.h", "geometry.h")))
+                               for name in ("linalg.h", "qp.h", "optimal.h", "geometry.h")))
 #: Up to this batch size the outputs of a compiled call share one buffer (see CompiledBackend).
 _SMALL_BATCH = 64
 

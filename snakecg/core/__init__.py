@@ -69,8 +69,8 @@ class Core:
         """integrate.c's ``core_contact_depth``: the simulation's contact check at states."""
         self.sphere = SphereKernel(lib, manifest["prefix"])
         """sphere.c's faces and KKT candidates (:mod:`snakecg.core.sphere`)."""
-        self.optimal = OptimalKernel(lib, manifest["prefix"])
-        """optimal.c's one-call optimal-torque query (:mod:`snakecg.core.optimal`)."""
+        self.optimal = OptimalKernel(lib, manifest["prefix"], self.layout)
+        """The optimal-torque queries in one call per batch (:mod:`snakecg.core.optimal`)."""
 
     def next_states(self, state, lam, w, G, bounds) -> tuple[np.ndarray, bool]:
         """The C's row-state update for one sample (the rules of

@@ -66,6 +66,37 @@ class Layout:
                 ("w", nc), ("norm_lambda", 1), ("norm_a_obj", 1), ("norm_qdd", 1), ("sr", 1),
                 ("gap", 1), ("conditioning", 1), ("singular", 1), ("state", nc), ("status", 1))
 
+    def optimal_in_fields(self) -> tuple[tuple[str, int], ...]:
+        """The input vector of the optimal-torque query (``optimal.c``): the settings
+        (:mod:`snakecg.optimize.result`'s constants), then the query, NaN where it has no
+        such value (``radius``, ``tau_max``, ``direction``, ``a_min``, ``a_obj``)."""
+        return (("friction_margin", 1), ("check_tol", 1), ("sr_tie", 1), ("hessian_reg", 1),
+                ("lp_reg", 1), ("active_tol", 1), ("tol_stationarity", 1), ("tol_primal", 1),
+                ("tol_complementarity", 1), ("tol_gap", 1), ("kind", 1), ("radius", 1),
+                ("tau_max", self.n_joints), ("direction", 3), ("a_min", 1), ("a_obj", 3),
+                ("slide", self.n_constraints))
+
+    def optimal_out_fields(self) -> tuple[tuple[str, int], ...]:
+        """One configuration's answer in ``optimal.c``'s output (codes in
+        :mod:`snakecg.core.optimal`), ending with the forward solve's row at the answer."""
+        na, nc = self.n_joints, self.n_constraints
+        return (("status", 1), ("reason", 1), ("detail", 8), ("objective_value", 1),
+                ("expected", 1), ("tau", na), ("n_binding", 1), ("binding", 3 + na + nc),
+                ("certificate", 1), ("certified", 1), ("stationarity", 1),
+                ("primal_feasibility", 1), ("complementarity", 1), ("duality_gap", 1),
+                ("resolved", 1), ("method", 1), ("qp_solves", 1), ("newton_steps", 1),
+                ("states", 1), ("states_solved", 1), ("wheel_states", nc), ("a_dir", 3),
+                ("k", 1), ("gain", 1), ("form", 1), ("check", 1), ("check_detail", 3),
+                ("forward_status", 1), ("forward", self.out_width))
+
+    @property
+    def optimal_in(self) -> dict[str, tuple[int, int]]:
+        return self._offsets(self.optimal_in_fields())[0]
+
+    @property
+    def optimal_out(self) -> dict[str, tuple[int, int]]:
+        return self._offsets(self.optimal_out_fields())[0]
+
     @staticmethod
     def _offsets(fields):
         out, k = {}, 0
@@ -139,5 +170,11 @@ def header(manifest: dict) -> str:
         lines.append(f"#define SCENE_{name} {off}")
     for name, (off, _) in lay.out.items():
         lines.append(f"#define OUT_{name} {off}")
-    lines += [f"#define OUT_WIDTH {lay.out_width}", "#endif", ""]
+    lines.append(f"#define OUT_WIDTH {lay.out_width}")
+    for prefix, fields in (("OPT_IN", lay.optimal_in_fields()),
+                           ("OPT_OUT", lay.optimal_out_fields())):
+        offsets, width = lay._offsets(fields)
+        lines += [f"#define {prefix}_{name} {off}" for name, (off, _) in offsets.items()]
+        lines.append(f"#define {prefix}_WIDTH {width}")
+    lines += ["#endif", ""]
     return "\n".join(lines)

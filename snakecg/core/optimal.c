@@ -1,362 +1,430 @@
-/* snakecg's runtime core, part 4: one optimal-torque query on one configuration
- * (snakecg/optimize/quick.py) in one call: the all-held maps (maps.c), the task, the solve,
- * the optimality certificate on the original problem (optimal.h) and the exact forward solve
- * at the answer (forward.c's core_forward).
+/* snakecg's runtime core: the optimal-torque queries of snakecg.optimize, every objective and
+ * every input region, for a batch of configurations in one call (types and codes in
+ * optimal.h; the methods in docs/optimize.md).
  *
- * This file is part of the runtime (not generated). Like forward.c it is compiled once per
- * model into the model's shared library; it uses nothing of the model but the symbol prefix.
+ * This file is part of the runtime (not generated); like forward.c it is compiled once per
+ * model into the model's shared library. It holds the batch loop, what the kinds share and
+ * the forward check; the kinds are max_sr.c, push.c and wheel_states.c. Per configuration:
  *
- * It performs, operation for operation, what the Python path of snakecg.optimize does on plain
- * floats for the same cases, so that both give the same answers to rounding (the maps, built
- * from contact_system here and by interaction_maps there, agree to rounding, which only the
- * problem's own conditioning amplifies):
- *
- * - max_sr, every row held: the rank-one closed form of the top of the Rayleigh quotient
- *   (eqs. 28-30; snakecg/optimize/max_sr.py _rank_one), scaled onto the limits (_max_scale),
- *   and its certificate (certificate.py _eigen: the residual of Omega v = sr (Omega + Xi) v,
- *   the largest eigenvalue of Omega - sr (Omega + Xi) by cyclic Jacobi rotations, primal
- *   feasibility);
- * - least_slip_push and strongest_push with box limits only: the task as a bound on the
- *   contact force (problems.py push_target), the QP or LP posed in the scaled torque
- *   (box_push.py) and solved by the dense dual active set of Goldfarb and Idnani
- *   (active_set.py), the strongest push's tie-break QP when its LP optimum is not unique, and
- *   the KKT certificate with the duality gap (certificate.py _push_floats).
- *
- * Whatever the Python path would answer otherwise (a structural infeasibility, a closed form
- * that does not apply, the active set giving up, a certificate that needs non-negative least
- * squares) makes the call return a non-zero code: the caller then takes the Python path,
- * which words the answer. Nothing here allocates but the generated functions' work arrays
- * (maps.c, core_forward).
+ * 1. the system at rest with the object placed and the all-held maps (maps.c); dependent held
+ *    rows (pivot ratio at or below pivot_tol) leave the maps undefined: "failed";
+ * 2. one frictionless point contact pushes the object along its normal only, a_obj = a_dir
+ *    lam_c with a_dir = A l / (l . l) (l = L_c, the contact force's row): every push task is a
+ *    bound on lam_c, and k = a_dir^T I_obj a_dir makes Omega = k l l^T (eq. 29);
+ * 3. the solve: max_sr.c (every row held: the generalized eigenproblem of eqs. 28-30),
+ *    wheel_states.c (max_sr with wheels allowed to slide), push.c (least_slip_push: a convex
+ *    QP or QCQP; strongest_push: an LP or its QCQP), on the QP block of qp.c;
+ * 4. the certificate on the original problem in tau (qp.c sc_kkt_certificate, or for max_sr
+ *    the eigenproblem's residual and the top eigenvalue of Omega - sr (Omega + Xi)): "optimal"
+ *    only when it holds;
+ * 5. the exact forward solve at the answer (forward.c's core_forward, as SceneModel.forward
+ *    runs it) and the forward check: the objective read from it, the limits, the contact and
+ *    the wheels as the optimiser kept them.
  */
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "snakecg_layout.h"
 #include "optimal.h"
 
-/* box_push.solve_box_push: the least-slip QP (lp 0, task lam_c >= lam_lo, == when equal) or
- * the strongest-push LP (lp 1, no task) with box limits only, in y = tau / tau_max. Writes
- * tau, the binding codes (nb of them) and, for the LP, whether its optimum is unique. */
-static int op_box_push(const op_call *c, const op_maps *mp, int lp, int has_lo, double lam_lo,
-                       int equal, double *tau, double *bind, int *nb, int *unique) {
-  int n = mp->n, R = 0, r, i, j, w, code[OP_ROWS], nact = 0, act[OP_ROWS];
-  double rows[OP_ROWS * DENSE_MAX], lo[OP_ROWS], hi[OP_ROWS], H[DENSE_MAX * DENSE_MAX];
-  double g[DENSE_MAX], y[DENSE_MAX], lam[OP_ROWS], big = 0.0, fs;
-  const double *s = c->tau_max, *ell = ROW(mp->L, 0);
-  op_qp Q;
-  if (n > DENSE_MAX || 2 + mp->nw + n > OP_ROWS) return 0;
-  memset(H, 0, sizeof H);
-  memset(g, 0, sizeof g);
-#define OP_ADD(vec, a, b, nm)                                   \
-  do {                                                          \
-    double rn_ = 0.0, cs_[DENSE_MAX];                           \
-    for (j = 0; j < n; ++j) {                                   \
-      cs_[j] = (vec)[j] * s[j];                                 \
-      if (fabs(cs_[j]) > rn_) rn_ = fabs(cs_[j]);               \
-    }                                                           \
-    if (rn_ > 0) {                                              \
-      for (j = 0; j < n; ++j) rows[R * DENSE_MAX + j] = cs_[j] / rn_; \
-      lo[R] = (a) / rn_;                                        \
-      hi[R] = (b) / rn_;                                        \
-      code[R++] = (nm);                                         \
-    }                                                           \
-  } while (0)
-  if (has_lo) OP_ADD(ell, lam_lo, equal ? lam_lo : INFINITY, B_TASK);
-  if (!has_lo || lam_lo < 0) OP_ADD(ell, 0.0, INFINITY, B_CONTACT);
-  for (w = 0; w < mp->nw; ++w) {
-    double ub = c->wheel_ub[w];
-    OP_ADD(ROW(mp->L, c->wheel_row[w]), -ub, ub, B_JOINT + n + w);
-  }
-#undef OP_ADD
-  for (i = 0; i < n; ++i) {
-    for (j = 0; j < n; ++j) rows[R * DENSE_MAX + j] = (i == j) ? 1.0 : 0.0;
-    lo[R] = -1.0;
-    hi[R] = 1.0;
-    code[R++] = B_JOINT + i;
-  }
-  if (lp) {
-    fs = 0.0;
-    for (j = 0; j < n; ++j) {
-      g[j] = -ell[j] * s[j];
-      if (fabs(g[j]) > fs) fs = fabs(g[j]);
-    }
-    fs = fs > 0 ? fs : 1.0;
-    for (j = 0; j < n; ++j) g[j] = g[j] / fs;
-    for (i = 0; i < n; ++i)
-      for (j = 0; j < n; ++j) H[i * DENSE_MAX + j] = (i == j) ? LP_REG : 0.0;
-  } else {
-    double reg = 0.0;
-    fs = 0.0;
-    for (i = 0; i < n; ++i)
-      for (j = 0; j < n; ++j) {
-        double h = 2.0 * ROW(mp->Xi, i)[j] * (s[i] * s[j]);
-        H[i * DENSE_MAX + j] = h;
-        if (fabs(h) > fs) fs = fabs(h);
-      }
-    fs = fs > 0 ? fs : 1.0;
-    for (i = 0; i < n; ++i)
-      for (j = 0; j < n; ++j) H[i * DENSE_MAX + j] = H[i * DENSE_MAX + j] / fs;
-    for (i = 0; i < n; ++i)
-      if (fabs(H[i * DENSE_MAX + i]) > reg) reg = fabs(H[i * DENSE_MAX + i]);
-    reg = HESSIAN_REG * (reg > 1e-300 ? reg : 1e-300);
-    for (i = 0; i < n; ++i) H[i * DENSE_MAX + i] += reg;
-    for (j = 0; j < n; ++j) g[j] = 0.0;
-  }
-  if (!op_dense_qp(&Q, n, H, g, R, rows, lo, hi, y, lam)) return 0;
-  for (r = 0; r < R; ++r)
-    if (fabs(lam[r]) > big) big = fabs(lam[r]);
-  if (big > 0)
-    for (r = 0; r < R; ++r)
-      if (fabs(lam[r]) > 1e-7 * big) {
-        double ry = op_dot(rows + r * DENSE_MAX, y, n);
-        double dl = fabs(ry - lo[r]), dh = fabs(ry - hi[r]);
-        if ((dl < dh ? dl : dh) <= 1e-6) act[nact++] = r;
-      }
-  *nb = 0;
-  for (i = 0; i < nact; ++i) {
-    int cd = code[act[i]], seen = 0;
-    if (cd == B_TASK) continue;
-    for (j = 0; j < *nb; ++j)
-      if ((int)bind[j] == cd) seen = 1;
-    if (!seen) bind[(*nb)++] = cd;
-  }
-  *unique = 0;
-  if (lp && nact >= n) {
-    double B[OP_ROWS * DENSE_MAX];
-    for (i = 0; i < nact; ++i)
-      for (j = 0; j < n; ++j) B[i * DENSE_MAX + j] = rows[act[i] * DENSE_MAX + j];
-    *unique = op_rank(nact, n, B, DENSE_MAX, 1e-9) == n;
-  }
-  for (j = 0; j < n; ++j) tau[j] = y[j] * s[j];
-  return 1;
+/* ---------------------------------------------------------------------------------------
+ * what the kinds share */
+void sc_optimal_bind(sc_optimal *o, int code) {
+  int nb = (int)o->out[OPT_OUT_n_binding], j;
+  for (j = 0; j < nb; ++j)
+    if ((int)o->out[OPT_OUT_binding + j] == code) return;
+  o->out[OPT_OUT_binding + nb] = code;
+  o->out[OPT_OUT_n_binding] = nb + 1;
 }
 
-/* max_sr with every row held: the rank-one closed form, the scale onto the limits, the
- * certificate of the generalized eigenproblem */
-static int op_max_sr(const op_call *c, const op_maps *mp, double *out) {
-  int n = mp->n, j, w, nb = 0, ncand = 0, code[OP_ROWS];
-  double v[OP_MAX], cc, kc, lam, s, cand[OP_ROWS], *tau = out + O_TAU, *bind = out + O_TAU + n;
-  const double *ell = ROW(mp->L, 0);
-  int any = 0;
-  for (j = 0; j < n; ++j)
-    if (ell[j] != 0.0) any = 1;
-  if (mp->k <= 0 || !any) return OP_STRUCTURE;
-  if (!op_chol_solve(n, mp->Xi, OP_MAX, ell, 1e-12, v)) return OP_CLOSED_FORM;
-  cc = op_dot(ell, v, n);
-  if (!(cc > 0)) return OP_CLOSED_FORM;
-  kc = mp->k * cc;
-  lam = kc / (kc + 1.0);
-  /* the largest s > 0 with s v inside every limit, and the limits that set it */
-  if (c->radius > 0) {
-    double qv = op_quad(mp->N, OP_MAX, v, n);
-    cand[ncand] = c->radius / sqrt(qv > 1e-300 ? qv : 1e-300);
-    code[ncand++] = B_ELLIPSOID;
-  }
-  if (c->tau_max)
-    for (j = 0; j < n; ++j)
-      if (fabs(v[j]) > 0) {
-        cand[ncand] = c->tau_max[j] / fabs(v[j]);
-        code[ncand++] = B_JOINT + j;
-      }
-  for (w = 0; w < mp->nw; ++w) {
-    double li = op_dot(ROW(mp->L, c->wheel_row[w]), v, n);
-    if (fabs(li) > 0) {
-      cand[ncand] = c->wheel_ub[w] / fabs(li);
-      code[ncand++] = B_JOINT + n + w;
-    }
-  }
-  if (!ncand) return OP_CLOSED_FORM;
-  s = cand[0];
-  for (j = 1; j < ncand; ++j)
-    if (cand[j] < s) s = cand[j];
-  for (j = 0; j < ncand; ++j)
-    if (cand[j] <= s * (1 + 1e-9)) bind[nb++] = code[j];
-  for (j = 0; j < n; ++j) tau[j] = s * v[j];
-  out[O_NB] = nb;
-  out[O_EXPECTED] = lam > 0.0 ? (lam < 1.0 ? lam : 1.0) : 0.0;
-  { /* the certificate (certificate._eigen) */
-    double D[OP_MAX * OP_MAX], S[OP_MAX * OP_MAX], Dt[OP_MAX], Ot[OP_MAX], rr[OP_MAX];
-    double den, sr, nD, top, scale;
-    int i;
-    for (i = 0; i < n; ++i)
-      for (j = 0; j < n; ++j) D[i * OP_MAX + j] = ROW(mp->Om, i)[j] + ROW(mp->Xi, i)[j];
-    for (i = 0; i < n; ++i) {
-      Dt[i] = op_dot(D + i * OP_MAX, tau, n);
-      Ot[i] = op_dot(ROW(mp->Om, i), tau, n);
-    }
-    den = op_dot(tau, Dt, n);
-    sr = den > 0 ? op_dot(tau, Ot, n) / den : 0.0;
-    nD = op_frob(D, OP_MAX, n);
-    for (i = 0; i < n; ++i)
-      for (j = 0; j < n; ++j) {
-        double sij = ROW(mp->Om, i)[j] - sr * D[i * OP_MAX + j];
-        double sji = ROW(mp->Om, j)[i] - sr * D[j * OP_MAX + i];
-        S[i * n + j] = 0.5 * (sij + sji);
-      }
-    top = op_top_eigenvalue(n, S);
-    scale = (op_frob(mp->Om, OP_MAX, n) + nD) * op_norm(tau, n);
-    for (i = 0; i < n; ++i) rr[i] = Ot[i] - sr * Dt[i];
-    out[O_STAT] = scale > 0 ? op_norm(rr, n) / scale : 0.0;
-    out[O_PRIMAL] = op_primal(c, mp, tau);
-    out[O_COMP] = 0.0;
-    out[O_GAP] = (top > 0.0 ? top : 0.0) / (nD > 1e-300 ? nD : 1e-300);
-  }
-  return OP_OK;
+/* the forward solve at tau, one sample at rest, the object placed: core_forward's status
+ * (0: the row's own status tells whether it is exact) */
+int sc_optimal_forward(sc_optimal *o, const double *tau, double *row) {
+  static const double zero[NS + 3] = {0.0};
+  const double *in[7];
+  sc_int stride[7] = {0, 0, 0, 0, 0, 0, 0};
+  in[IN_q] = o->q;
+  in[IN_v] = zero;
+  in[IN_tau] = tau;
+  in[IN_q_obj] = 0;
+  in[IN_v_obj] = zero;
+  in[IN_f_obj] = zero;
+  in[IN_rho] = 0;
+  return SNAKECG_EXPORT(core_forward)(1, o->scene, o->fw_constants, o->max_iter, in, stride,
+                                      row);
 }
 
-/* the push tasks with box limits only (push.least_slip_push, push.strongest_push) */
-static int op_push(const op_call *c, const op_maps *mp, double *out) {
-  int n = mp->n, nb = 0, unique = 0, j, has_lo = 0, equal = 0, lp;
-  double *tau = out + O_TAU, *bind = out + O_TAU + n, d[3], lam_lo = 0.0;
-  const double *a = mp->a_dir, *ell = ROW(mp->L, 0);
-  double na = sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
-  if (!c->tau_max || c->radius > 0) return OP_SIZE;
-  if (na == 0 || mp->k <= 0) return OP_STRUCTURE;
-  lp = c->kind == OP_STRONGEST;
-  if (c->kind == OP_LEAST_SLIP && c->a_obj) { /* a full planar acceleration */
-    double s0 = (a[0] * c->a_obj[0] + a[1] * c->a_obj[1] + a[2] * c->a_obj[2]) / (na * na);
-    double e[3], an = sqrt(c->a_obj[0] * c->a_obj[0] + c->a_obj[1] * c->a_obj[1] +
-                           c->a_obj[2] * c->a_obj[2]);
-    for (j = 0; j < 3; ++j) e[j] = c->a_obj[j] - s0 * a[j];
-    if (sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]) > 1e-6 * (an > 1e-300 ? an : 1e-300))
-      return OP_STRUCTURE;
-    if (s0 < 0) return OP_STRUCTURE;
-    has_lo = equal = 1;
-    lam_lo = s0;
-  } else {
-    double gamma, dn;
-    if (c->direction) {
-      for (j = 0; j < 3; ++j) d[j] = c->direction[j];
-    } else { /* the strongest push along the contact normal */
-      dn = na > 1e-300 ? na : 1e-300;
-      for (j = 0; j < 3; ++j) d[j] = a[j] / dn;
-    }
-    gamma = d[0] * a[0] + d[1] * a[1] + d[2] * a[2];
-    if (gamma <= 1e-9 * na) return OP_STRUCTURE;
-    if (!lp) {
-      has_lo = 1;
-      lam_lo = c->a_min / gamma;
-    }
-    out[O_GAIN] = gamma;
-  }
-  out[O_TIE] = 0.0;
-  if (!op_box_push(c, mp, lp, has_lo, lam_lo, equal, tau, bind, &nb, &unique))
-    return OP_ACTIVE_SET;
-  out[O_NB] = nb;
-  if (lp) {
-    double lam_max = op_dot(ell, tau, n);
-    if (lam_max <= 0) return OP_NOT_POSITIVE;
-    if (!unique) { /* ties: among the strongest pushes, the least snake motion */
-      double t2[OP_MAX], b2[OP_ROWS];
-      int nb2, u2;
-      if (!op_box_push(c, mp, 0, 1, lam_max * (1 - 1e-9), 0, t2, b2, &nb2, &u2))
-        return OP_ACTIVE_SET;
-      for (j = 0; j < n; ++j) tau[j] = t2[j];
-      out[O_TIE] = 1.0;
-    }
-    out[O_EXPECTED] = out[O_GAIN] * op_dot(ell, tau, n);
-    if (!op_push_certificate(c, mp, tau, 0, 0.0, 0, 1, out + O_STAT)) return OP_CERTIFICATE;
-  } else {
-    double xt[OP_MAX];
-    for (j = 0; j < n; ++j) { /* (tau Xi)_j: the column j of Xi */
-      double s = 0.0;
-      int i;
-      for (i = 0; i < n; ++i) s += tau[i] * ROW(mp->Xi, i)[j];
-      xt[j] = s;
-    }
-    out[O_EXPECTED] = op_dot(xt, tau, n);
-    out[O_LAM_LO] = lam_lo;
-    if (!op_push_certificate(c, mp, tau, 1, lam_lo, equal, 0, out + O_STAT)) return OP_CERTIFICATE;
-  }
-  return OP_OK;
+/* The verdict on the residuals (stationarity, primal feasibility, complementarity, gap; NaN
+ * gap: not defined), written as the answer's certificate; 1 when every one is within its
+ * tolerance. */
+void sc_optimal_certify(sc_optimal *o, int kind, const double *values, int resolved) {
+  const double *in = o->in;
+  int ok = fabs(values[0]) <= in[OPT_IN_tol_stationarity] &&
+           fabs(values[1]) <= in[OPT_IN_tol_primal] &&
+           fabs(values[2]) <= in[OPT_IN_tol_complementarity] &&
+           (isnan(values[3]) || fabs(values[3]) <= in[OPT_IN_tol_gap]);
+  SC_SET(o, certificate, kind);
+  SC_SET(o, certified, ok);
+  SC_SET(o, stationarity, values[0]);
+  SC_SET(o, primal_feasibility, values[1]);
+  SC_SET(o, complementarity, values[2]);
+  SC_SET(o, duality_gap, values[3]);
+  SC_SET(o, resolved, resolved);
 }
 
-/* maps.c */
-int SNAKECG_EXPORT(core_held_maps)(const double *scene, const double *q, double pivot_tol,
-                                   double *maps);
-/* forward.c */
-int SNAKECG_EXPORT(core_forward)(op_int n, const double *scene, const double *constants,
-                                 op_int max_iter, const double *const *in, const op_int *stride,
-                                 double *out);
+int sc_optimal_certified(const sc_optimal *o) { return o->out[OPT_OUT_certified] != 0.0; }
 
-int SNAKECG_EXPORT(core_optimal)(const op_call *c) {
-  op_maps mp;
-  int n = (int)c->n, nc = (int)c->nc, i, j, st;
-  double *out = c->out, ll;
-  const double *ell, *A = c->maps + SNAKECG_NC * SNAKECG_NA, *src;
-  out[O_STATUS] = OP_SIZE;
-  if (n != SNAKECG_NA || nc != SNAKECG_NC || n > OP_MAX || c->nw > nc) return OP_SIZE;
-  /* the all-held maps at q (maps.c), row-major */
-  if (SNAKECG_EXPORT(core_held_maps)(c->scene, c->q, c->pivot_tol, c->maps))
-    return out[O_STATUS] = OP_MAPS;
-  mp.n = n;
-  mp.nc = nc;
-  mp.nw = (int)c->nw;
-  for (i = 0; i < nc; ++i)
-    for (j = 0; j < n; ++j) ROW(mp.L, i)[j] = c->maps[i * n + j];
-  src = A + 3 * n;
-  for (i = 0; i < n; ++i)
-    for (j = 0; j < n; ++j) {
-      ROW(mp.Xi, i)[j] = src[i * n + j];
-      ROW(mp.Om, i)[j] = src[n * n + i * n + j];
-      ROW(mp.N, i)[j] = src[2 * n * n + i * n + j];
+void sc_optimal_status(sc_optimal *o, int status, int reason) {
+  SC_SET(o, status, status);
+  SC_SET(o, reason, reason);
+}
+
+/* the answer becomes "optimal" when certified, else "failed" with the certificate's reason */
+void sc_optimal_if_certified(sc_optimal *o) {
+  if (sc_optimal_certified(o)) sc_optimal_status(o, SC_OPTIMAL, SC_REASON_NONE);
+  else sc_optimal_status(o, SC_FAILED, SC_REASON_CERTIFICATE);
+}
+
+void sc_optimal_count(sc_optimal *o, const sc_qp_solution *s, int qcqp) {
+  o->out[OPT_OUT_qp_solves] += qcqp ? (double)s->iterations : 1.0;
+  o->out[OPT_OUT_newton_steps] += (double)s->newton;
+}
+
+/* ---------------------------------------------------------------------------------------
+ * the query and the model's bounded wheels, read once per call */
+static void read_query(sc_optimal *o) {
+  const double *in = o->in, *present = o->scene + SCENE_present, *bounds = o->scene + SCENE_bounds;
+  int r;
+  o->kind = (int)in[OPT_IN_kind];
+  o->radius = in[OPT_IN_radius];
+  o->r2 = isfinite(o->radius) ? o->radius * o->radius : 0.0;
+  o->tau_max = isnan(in[OPT_IN_tau_max]) ? 0 : in + OPT_IN_tau_max;
+  o->direction = isnan(in[OPT_IN_direction]) ? 0 : in + OPT_IN_direction;
+  o->a_obj = isnan(in[OPT_IN_a_obj]) ? 0 : in + OPT_IN_a_obj;
+  o->a_min = in[OPT_IN_a_min];
+  o->any_slide = 0;
+  o->nw = 0;
+  for (r = 0; r < NC; ++r) {
+    o->slide[r] = in[OPT_IN_slide + r] != 0.0;
+    o->any_slide |= o->slide[r];
+    if (r > 0 && present[r] != 0.0 && isfinite(bounds[r])) {
+      o->wheel_row[o->nw] = r;
+      o->wheel_ub[o->nw++] = bounds[r] * (1.0 - in[OPT_IN_friction_margin]);
     }
-  for (i = 0; i < mp.nw; ++i)
-    if (c->wheel_row[i] < 1 || c->wheel_row[i] >= nc) return OP_SIZE;
-  /* a_obj = a_dir lam_c, k = ||a_dir||^2 in the object's metric (problems.configs) */
-  ell = ROW(mp.L, 0);
-  ll = op_dot(ell, ell, n);
+  }
+}
+
+/* ---------------------------------------------------------------------------------------
+ * the forward check */
+
+/* The objective read from the forward row and the check of an "optimal" answer against it
+ * (the row must be exact: out[OPT_OUT_forward + OUT_status] == 0). */
+static void objective_and_check(const double *in, double *out) {
+  const double *row = out + OPT_OUT_forward, *tau = out + OPT_OUT_tau;
+  double value, *cd = out + OPT_OUT_check_detail, expected = out[OPT_OUT_expected];
+  int kind = (int)in[OPT_IN_kind], j, i;
+  if (kind == SC_MAX_SR) {
+    value = row[OUT_sr];
+  } else if (kind == SC_LEAST_SLIP_PUSH) {
+    value = row[OUT_norm_qdd];
+  } else {
+    double d[3], nd = 0.0;
+    if (!isnan(in[OPT_IN_direction])) {
+      for (j = 0; j < 3; ++j) d[j] = in[OPT_IN_direction + j];
+      nd = 1.0;
+    } else {
+      for (j = 0; j < 3; ++j) {
+        d[j] = out[OPT_OUT_a_dir + j];
+        nd += d[j] * d[j];
+      }
+      nd = sqrt(nd);
+      nd = nd > 1e-300 ? nd : 1e-300;
+    }
+    value = 0.0;
+    for (j = 0; j < 3; ++j) value += d[j] / nd * row[OUT_a_obj + j];
+  }
+  out[OPT_OUT_objective_value] = value;
+  out[OPT_OUT_check] = SC_CHECK_PASSED;
+  if (out[OPT_OUT_status] != SC_OPTIMAL) return;
+  if (isnan(value) && row[OUT_status] >= 2) { /* the forward solve has no answer there */
+    out[OPT_OUT_status] = SC_FAILED;
+    out[OPT_OUT_reason] = SC_REASON_NO_ANSWER;
+    out[OPT_OUT_detail + 1] = row[OUT_status]; /* its reason's code */
+    return;
+  }
+#define FAIL(code) (out[OPT_OUT_check] = (code), out[OPT_OUT_status] = SC_FAILED, \
+                    out[OPT_OUT_reason] = SC_REASON_FORWARD_CHECK)
+  if (!isnan(in[OPT_IN_tau_max])) {
+    double worst = 0.0;
+    int at = 0;
+    for (j = 0; j < NA; ++j)
+      if (fabs(tau[j]) / in[OPT_IN_tau_max + j] > worst) {
+        worst = fabs(tau[j]) / in[OPT_IN_tau_max + j];
+        at = j;
+      }
+    if (worst > 1 + 1e-9) {
+      cd[0] = at;
+      cd[1] = fabs(tau[at]);
+      cd[2] = in[OPT_IN_tau_max + at];
+      FAIL(SC_CHECK_TAU_MAX);
+      return;
+    }
+  }
+  if (isfinite(in[OPT_IN_radius])) {
+    double r2 = in[OPT_IN_radius] * in[OPT_IN_radius];
+    if (out[OPT_OUT_form] > r2 * (1 + 1e-7)) {
+      cd[0] = out[OPT_OUT_form];
+      cd[1] = r2;
+      FAIL(SC_CHECK_ELLIPSOID);
+      return;
+    }
+  }
+  if (row[OUT_state] != HELD) {
+    FAIL(SC_CHECK_SEPARATES);
+    return;
+  }
+  for (i = 1; i < NC; ++i) {
+    int s = (int)row[OUT_state + i];
+    if ((s == SLIDE_POS || s == SLIDE_NEG) && in[OPT_IN_slide + i] == 0.0) {
+      cd[0] = i;
+      cd[1] = s;
+      FAIL(SC_CHECK_SLIDES);
+      return;
+    }
+  }
+  if (!isnan(expected)) {
+    double scale = fabs(expected), alt = kind == SC_MAX_SR ? 1.0 : fabs(value);
+    scale = alt > scale ? alt : scale;
+    scale = scale > 1e-300 ? scale : 1e-300;
+    if (!(fabs(value - expected) <= in[OPT_IN_check_tol] * scale)) {
+      cd[0] = value;
+      cd[1] = expected;
+      FAIL(SC_CHECK_OBJECTIVE);
+      return;
+    }
+  }
+  if (kind == SC_LEAST_SLIP_PUSH) {
+    if (!isnan(in[OPT_IN_a_obj])) {
+      double e = 0.0, an = 0.0;
+      for (j = 0; j < 3; ++j) {
+        double dj = row[OUT_a_obj + j] - in[OPT_IN_a_obj + j];
+        e += dj * dj;
+        an += in[OPT_IN_a_obj + j] * in[OPT_IN_a_obj + j];
+      }
+      an = sqrt(an);
+      if (sqrt(e) > 1e-6 * (an > 1e-12 ? an : 1e-12)) {
+        cd[0] = sqrt(e);
+        FAIL(SC_CHECK_A_OBJ);
+        return;
+      }
+    } else {
+      double got = 0.0;
+      for (j = 0; j < 3; ++j) got += in[OPT_IN_direction + j] * row[OUT_a_obj + j];
+      if (got < in[OPT_IN_a_min] * (1 - 1e-6)) {
+        cd[0] = got;
+        cd[1] = in[OPT_IN_a_min];
+        FAIL(SC_CHECK_A_MIN);
+        return;
+      }
+    }
+  }
+#undef FAIL
+}
+
+/* ---------------------------------------------------------------------------------------
+ * one configuration */
+static void clear_answer(double *out) {
+  int j;
+  for (j = 0; j < OPT_OUT_WIDTH; ++j) out[j] = 0.0;
+  out[OPT_OUT_status] = SC_FAILED;
+  out[OPT_OUT_expected] = NAN;
+  out[OPT_OUT_duality_gap] = NAN;
+  for (j = 0; j < NC; ++j) out[OPT_OUT_wheel_states + j] = -1.0;
+}
+
+static void configuration(sc_optimal *o) {
+  signed char state[NC];
+  const double *present = o->scene + SCENE_present;
+  double Lc[NA * NA], e[NA], ll, Io[3];
+  const double *ell;
+  int r, i, j, ok;
+  clear_answer(o->out);
+  /* 1. the system at rest and the all-held maps */
+  for (r = 0; r < NC; ++r) state[r] = present[r] != 0.0 ? HELD : ABSENT;
+  ok = sc_rest_system(o->ws, o->scene, o->q, &o->rest) == 0; /* M_s positive definite */
+  if (ok) {
+    double ratio = sc_state_maps(&o->rest, o->scene, state, 1, &o->held);
+    if (isfinite(ratio) && !(ratio > o->fw_constants[0])) {
+      sc_optimal_status(o, SC_FAILED, SC_REASON_SINGULAR); /* dependent held rows */
+      return;
+    }
+    ok = isfinite(ratio);
+  }
+  for (i = 0; ok && i < NC * NA; ++i) ok = isfinite(o->held.L[i]);
+  for (i = 0; ok && i < NA1 * NA1; ++i) ok = isfinite(o->held.Xih[i]);
+  for (i = 0; ok && i < NA * NA; ++i) ok = isfinite(o->rest.N[i]) && isfinite(o->held.Om[i]);
+  if (!ok) { /* the system at rest is not usable in float64: the caller asks the forward
+              * solve at zero torque why */
+    sc_optimal_status(o, SC_FAILED, SC_REASON_UNANSWERABLE);
+    return;
+  }
+  /* 2. a_obj = a_dir lam_c, k = a_dir^T I_obj a_dir */
+  ell = o->held.L;
+  ll = sc_dot(ell, ell, NA);
+  Io[0] = Io[1] = o->scene[SCENE_object_mass];
+  Io[2] = o->scene[SCENE_object_inertia];
+  o->k = 0.0;
   for (i = 0; i < 3; ++i) {
-    double s = 0.0;
-    for (j = 0; j < n; ++j) s += A[i * n + j] * ell[j];
-    mp.a_dir[i] = ll > 0 ? s / ll : 0.0;
+    o->a_dir[i] = ll > 0 ? sc_dot(o->held.A + i * NA, ell, NA) / ll : 0.0;
+    o->k += Io[i] * o->a_dir[i] * o->a_dir[i];
+    o->out[OPT_OUT_a_dir + i] = o->a_dir[i];
   }
-  mp.k = 0.0;
-  for (i = 0; i < 3; ++i) mp.k += c->Io[i] * mp.a_dir[i] * mp.a_dir[i];
-  out[O_K] = mp.k;
-  for (i = 0; i < 3; ++i) out[O_ADIR + i] = mp.a_dir[i];
-  st = c->kind == OP_MAX_SR ? op_max_sr(c, &mp, out) : op_push(c, &mp, out);
-  out[O_STATUS] = st;
-  if (st != OP_OK) return st;
-  out[O_QUAD] = op_quad(mp.N, OP_MAX, out + O_TAU, n);
-  { /* the forward solve at the answer: q, v = 0, tau, the object placed, at rest */
-    static const double zero[SNAKECG_NS] = {0.0};
-    const double *in[7];
-    op_int stride[7] = {0, 0, 0, 0, 0, 0, 0};
-    in[IN_q] = c->q;
-    in[IN_v] = zero;
-    in[IN_tau] = out + O_TAU;
-    in[IN_q_obj] = 0;
-    in[IN_v_obj] = zero;
-    in[IN_f_obj] = zero;
-    in[IN_rho] = 0;
-    out[O_FORWARD] = SNAKECG_EXPORT(core_forward)(1, c->scene, c->constants, c->max_iter, in,
-                                                  stride, c->row);
+  SC_SET(o, k, o->k);
+  /* the region's bounding box: the box, and r sqrt((N^-1)_jj) of the ellipsoid */
+  for (j = 0; j < NA; ++j) o->widths[j] = o->tau_max ? o->tau_max[j] : INFINITY;
+  if (o->r2 > 0) {
+    memcpy(Lc, o->rest.N, sizeof Lc);
+    if (!sc_cholesky(NA, Lc, NA, 0.0)) {
+      sc_optimal_status(o, SC_FAILED, SC_REASON_UNANSWERABLE);
+      return;
+    }
+    for (j = 0; j < NA; ++j) {
+      double b;
+      for (i = 0; i < NA; ++i) e[i] = i == j ? 1.0 : 0.0;
+      sc_cholesky_solve(NA, Lc, NA, e);
+      b = o->radius * sqrt(e[j]);
+      if (b < o->widths[j]) o->widths[j] = b;
+    }
   }
+  /* 3-4. the solve and its certificate */
+  if (o->kind == SC_MAX_SR) sc_max_sr(o);
+  else if (o->kind == SC_LEAST_SLIP_PUSH) sc_least_slip_push(o);
+  else sc_strongest_push(o);
+  SC_SET(o, form, sc_quad(NA, o->rest.N, NA, SC_OUT(o, tau)));
+}
+
+/* The answers of n configurations q (n x NS, row-major) to the query `in` (OPT_IN_*), into out
+ * (n x OPT_OUT_WIDTH): the solve, its certificate, the forward solve at the answer and the
+ * forward check (left to the caller, OPT_OUT_check = SC_CHECK_PENDING, where the forward row
+ * is not exact: the reference path then solves it, and core_optimal_check finishes).
+ * Returns 0; -1 when out of memory. */
+int SNAKECG_EXPORT(core_optimal)(sc_int n, const double *scene, const double *fw_constants,
+                                 sc_int max_iter, const double *in, const double *q,
+                                 double *out) {
+  sc_optimal o;
+  sc_int i;
+#if SC_QP_WORK_DOUBLES(NA1, SC_ROWS_MAX) <= 65536
+  /* the QP block's scratch on the stack (at most 512 kB): a large allocation per call costs
+   * more than the solve when the process's heap is busy (malloc consolidates its bins) */
+  double qd[SC_QP_WORK_DOUBLES(NA1, SC_ROWS_MAX)];
+  sc_int qi[SC_QP_WORK_INTS(NA1, SC_ROWS_MAX)];
+  sc_qp_work_init(&o.qw, NA1, SC_ROWS_MAX, qd, qi);
+#define SC_QP_WORK_FREE(w)
+#else
+  if (sc_qp_work_alloc(&o.qw, NA1, SC_ROWS_MAX)) return -1;
+#define SC_QP_WORK_FREE(w) sc_qp_work_free(w)
+#endif
+  o.scene = scene;
+  o.fw_constants = fw_constants;
+  o.max_iter = max_iter;
+  o.in = in;
+  read_query(&o);
+  o.ws = sc_rest_work_new();
+  if (!o.ws) {
+    SC_QP_WORK_FREE(&o.qw);
+    return -1;
+  }
+  for (i = 0; i < n; ++i) {
+    double *tau, *row;
+    int j, finite = 1;
+    o.q = q + i * NS;
+    o.out = out + i * OPT_OUT_WIDTH;
+    configuration(&o);
+    tau = o.out + OPT_OUT_tau;
+    row = o.out + OPT_OUT_forward;
+    if (o.out[OPT_OUT_reason] == SC_REASON_UNANSWERABLE) { /* (the caller words why) */
+      o.out[OPT_OUT_objective_value] = NAN;
+      continue;
+    }
+    for (j = 0; j < NA; ++j) finite &= fabs(tau[j]) <= fw_constants[5];
+    if (!finite) { /* no torque to check (the caller words why): the answer has failed */
+      double big = 0.0;
+      for (j = 0; j < NA; ++j)
+        if (!(fabs(tau[j]) <= big)) big = fabs(tau[j]); /* NaN wins */
+      o.out[OPT_OUT_detail] = big;
+      sc_optimal_status(&o, SC_FAILED, SC_REASON_NOT_FINITE);
+      o.out[OPT_OUT_objective_value] = NAN;
+      continue;
+    }
+    o.out[OPT_OUT_forward_status] = sc_optimal_forward(&o, tau, row);
+    if (o.out[OPT_OUT_forward_status] != 0 || row[OUT_status] != 0) {
+      o.out[OPT_OUT_check] = SC_CHECK_PENDING;
+      continue;
+    }
+    objective_and_check(in, o.out);
+  }
+  SC_QP_WORK_FREE(&o.qw);
+#undef SC_QP_WORK_FREE
+  sc_rest_work_free(o.ws);
+  return 0;
+}
+
+/* The forward check of the answers whose forward row the caller has solved by the reference
+ * path (OPT_OUT_check == SC_CHECK_PENDING, the row now in place). */
+int SNAKECG_EXPORT(core_optimal_check)(sc_int n, const double *in, double *out) {
+  sc_int i;
+  for (i = 0; i < n; ++i)
+    if (out[i * OPT_OUT_WIDTH + OPT_OUT_check] == SC_CHECK_PENDING)
+      objective_and_check(in, out + i * OPT_OUT_WIDTH);
+  return 0;
+}
+
+/* ---------------------------------------------------------------------------------------
+ * The building blocks alone, for tests against independent references (snakecg.core.optimal:
+ * the QP, the QCQP, the certificate, the symmetric eigensolver). Sizes up to n variables and m
+ * rows of the caller's choosing. */
+int SNAKECG_EXPORT(core_qp_solve)(sc_int n, sc_int m, const double *H, const double *g,
+                                  const double *A, const double *lo, const double *hi,
+                                  const double *N, double rho2, double mu0, double *x,
+                                  double *lam, double *info) {
+  sc_qp_work w;
+  sc_qp qp;
+  sc_qp_solution s;
+  sc_int *act;
+  int st;
+  if (sc_qp_work_alloc(&w, n, m)) return -1;
+  act = (sc_int *)malloc(sizeof(sc_int) * (size_t)(n + 1));
+  if (!act) {
+    sc_qp_work_free(&w);
+    return -1;
+  }
+  sc_qp_define(&qp, n, m, H, g, A, lo, hi);
+  sc_qp_solution_define(&s, x, lam, act);
+  st = N ? sc_qcqp_ellipsoid(&qp, N, rho2, mu0, &w, &s) : sc_qp_solve(&qp, &w, &s);
+  info[0] = (double)s.n_active;
+  info[1] = (double)s.iterations;
+  info[2] = (double)s.newton;
+  info[3] = s.mu;
+  free(act);
+  sc_qp_work_free(&w);
   return st;
 }
 
-/* The dense dual active set alone, for tests: min 1/2 x^T H x + g^T x s.t.
- * lo <= A x <= hi (H n x n, A R x n, row-major); 1 with x and the rows' multipliers. */
-int SNAKECG_EXPORT(core_dense_qp)(op_int n, op_int R, const double *H, const double *g,
-                                  const double *A, const double *lo, const double *hi, double *x,
-                                  double *lam) {
-  double Hd[DENSE_MAX * DENSE_MAX], Ad[OP_ROWS * DENSE_MAX];
-  op_qp Q;
-  int i, j;
-  if (n < 1 || n > DENSE_MAX || R < 0 || R > OP_ROWS) return -1;
-  for (i = 0; i < n; ++i)
-    for (j = 0; j < n; ++j) Hd[i * DENSE_MAX + j] = H[i * n + j];
-  for (i = 0; i < R; ++i)
-    for (j = 0; j < n; ++j) Ad[i * DENSE_MAX + j] = A[i * n + j];
-  return op_dense_qp(&Q, (int)n, Hd, g, (int)R, Ad, lo, hi, x, lam);
+int SNAKECG_EXPORT(core_kkt_certificate)(sc_int n, const double *x, const double *H,
+                                         const double *c, sc_int m, const double *G,
+                                         const double *lo, const double *hi, const double *Q,
+                                         double r2, sc_int convex, double active,
+                                         double stationarity_tol, double *values, double *lam,
+                                         double *mu) {
+  sc_qp_work w;
+  if (sc_qp_work_alloc(&w, n, m)) return -1;
+  sc_kkt_certificate(n, x, H, c, m, G, lo, hi, Q, r2, (int)convex, active, stationarity_tol,
+                     values, lam, mu, &w);
+  sc_qp_work_free(&w);
+  return 0;
 }
 
-/* The largest eigenvalue of a symmetric n x n matrix (row-major, copied), for tests. */
-double SNAKECG_EXPORT(core_top_eigenvalue)(op_int n, const double *S) {
-  double W[OP_MAX * OP_MAX];
-  int i;
-  if (n < 1 || n > OP_MAX) return NAN;
-  for (i = 0; i < n * n; ++i) W[i] = S[i];
-  return op_top_eigenvalue((int)n, W);
+int SNAKECG_EXPORT(core_eigen_symmetric)(sc_int n, double *A, double *w, double *V) {
+  return sc_eigen_symmetric(n, A, n, w, V, n);
 }

@@ -1,278 +1,187 @@
-/* snakecg's runtime core: the types of optimal.c's query and the certificate of its answers
- * (included by optimal.c alone).
+/* snakecg's runtime core: the optimal-torque queries (maps.c, optimal.c, max_sr.c, push.c,
+ * wheel_states.c).
  *
- * The certificate rebuilds each push problem in the torque itself from the maps and the query
- * (every limit as the optimiser poses it), measures primal feasibility, recomputes the
- * multipliers of the active constraints from the stationarity condition (the normal
- * equations of the active columns) and the duality gap sum_i lam_i slack_i + 1/2 r^T H^-1 r, as
- * snakecg/optimize/certificate.py _push_floats does on floats, operation for operation.
+ * One call answers a batch of configurations, each by the same steps (docs/optimize.md):
+ * the system at rest with the object placed (the generated contact_system at rest), the
+ * all-held maps of eqs. (17), (22), (24), (28), (29), (31) (maps.c), the query's solve
+ * (max_sr.c, push.c, wheel_states.c on the QP block of qp.c), the optimality certificate on the
+ * original problem, the exact forward solve at the answer (forward.c's core_forward) and the
+ * forward check of the answer. The query and the answers are flat double vectors laid out in
+ * snakecg_layout.h (OPT_IN_*, OPT_OUT_*; snakecg/core/layout.py), read by name in Python
+ * (snakecg/core/optimal.py); the codes below are mirrored there.
+ *
+ * Included after snakecg_layout.h. Prototypes of every function that crosses the files of the
+ * query are here (none is declared in a .c file).
  */
 #ifndef SNAKECG_CORE_OPTIMAL_H
 #define SNAKECG_CORE_OPTIMAL_H
 
 #include <math.h>
-#include <string.h>
 
-#include "dense.h"
+/* the sizes, the row states and the integer type of common.h (its types alone: the
+ * generated functions are called by maps.c only, which includes common.h whole first) */
+#ifndef SNAKECG_CORE_COMMON_H
+#define SC_TYPES_ONLY
+#include "common.h"
+#undef SC_TYPES_ONLY
+#endif
+#include "qp.h"
 
-/* tolerances of snakecg/optimize (polish.LP_REG, result.HESSIAN_REG, certificate.ACTIVE,
- * certificate.TOLERANCE["stationarity"]) */
-#define LP_REG 1e-9
-#define HESSIAN_REG 1e-11
-#define ACTIVE 1e-7
-#define STATIONARITY_TOL 1e-7
+#define NA SNAKECG_NA
+#define NA1 (SNAKECG_NA + 1)
+/* rows of the largest QP posed here: z = (tau, t) with the contact force, every wheel's two
+ * sides, both sides of every joint's box, t >= 0 */
+#define SC_ROWS_MAX (2 * SNAKECG_NC + 2 * SNAKECG_NA + 4)
 
-enum { OP_MAX_SR = 0, OP_LEAST_SLIP = 1, OP_STRONGEST = 2 };
-/* return codes: 0 answered; otherwise the Python path answers */
-enum { OP_OK = 0, OP_SIZE = 1, OP_MAPS = 2, OP_STRUCTURE = 3, OP_CLOSED_FORM = 4,
-       OP_ACTIVE_SET = 5, OP_CERTIFICATE = 6, OP_NOT_POSITIVE = 7 };
-/* binding codes: 0 the task row (no name), 1 the contact, 2 the ellipsoid, 3 + j joint j,
- * 3 + n + w the w-th bounded wheel */
-enum { B_TASK = 0, B_CONTACT = 1, B_ELLIPSOID = 2, B_JOINT = 3 };
-/* the output vector */
-enum { O_STATUS = 0, O_EXPECTED = 1, O_K = 2, O_ADIR = 3, O_STAT = 6, O_PRIMAL = 7, O_COMP = 8,
-       O_GAP = 9, O_QUAD = 10, O_TIE = 11, O_NB = 12, O_LAM_LO = 13, O_GAIN = 14, O_FORWARD = 15,
-       O_TAU = 16 };
+/* query kinds (OPT_IN_kind) */
+enum { SC_MAX_SR = 0, SC_LEAST_SLIP_PUSH = 1, SC_STRONGEST_PUSH = 2 };
+/* statuses (OPT_OUT_status) */
+enum { SC_OPTIMAL = 0, SC_INFEASIBLE = 1, SC_FAILED = 2 };
+/* reasons (OPT_OUT_reason), with what OPT_OUT_detail holds */
+enum {
+  SC_REASON_NONE = 0,
+  SC_REASON_SINGULAR = 1,        /* dependent held rows: the maps are not defined */
+  SC_REASON_NO_PUSH = 2,         /* no torque accelerates the object */
+  SC_REASON_OFF_NORMAL = 3,      /* a_obj off the contact normal: normal (2), a_dir (3) */
+  SC_REASON_AGAINST_NORMAL = 4,  /* a_obj against the normal: normal (2) */
+  SC_REASON_DIRECTION = 5,       /* d . n <= 0: normal (2) */
+  SC_REASON_OUT_OF_REACH = 6,    /* least slip: wanted, at most (both in m/s^2) */
+  SC_REASON_NO_STRONG_PUSH = 7,  /* strongest push: the limits allow none */
+  SC_REASON_SOLVER = 8,          /* the solver failed: its status (SC_QP_*) */
+  SC_REASON_WITHIN_REACH = 9,    /* the solver failed although the task is within reach */
+  SC_REASON_CERTIFICATE = 10,    /* the certificate fails (residuals in OPT_OUT_*) */
+  SC_REASON_FORWARD_CHECK = 11,  /* the forward check disagrees: OPT_OUT_check */
+  SC_REASON_NOT_FINITE = 12,     /* the answer is not a finite torque within the force limit:
+                                  * its largest |tau_j|; the caller solves the forward at 0
+                                  * and puts its row's status second */
+  SC_REASON_NO_ANSWER = 13,      /* the forward solve at the answer has none: its row's
+                                  * status (the reason's code, snakecg/rows.py) */
+  SC_REASON_UNANSWERABLE = 14    /* the system at rest is not usable in float64 (M_s not
+                                  * positive definite, a map not finite): as NOT_FINITE */
+};
+/* forward checks (OPT_OUT_check), with OPT_OUT_check_detail */
+enum {
+  SC_CHECK_PASSED = 0,
+  SC_CHECK_PENDING = -1,     /* the forward row needs the reference path first */
+  SC_CHECK_TAU_MAX = 1,      /* joint (from 0), |tau_j|, tau_max_j */
+  SC_CHECK_ELLIPSOID = 2,    /* tau^T N tau, radius^2 */
+  SC_CHECK_SEPARATES = 3,
+  SC_CHECK_SLIDES = 4,       /* link, its state */
+  SC_CHECK_OBJECTIVE = 5,    /* from the forward solve, from the optimiser */
+  SC_CHECK_A_OBJ = 6,        /* ||a_obj - wanted|| */
+  SC_CHECK_A_MIN = 7         /* d . a_obj, a_min */
+};
+/* certificate kinds (OPT_OUT_certificate) */
+enum {
+  SC_CERT_NONE = 0,
+  SC_CERT_QP = 1,
+  SC_CERT_LP = 2,
+  SC_CERT_QCQP = 3,
+  SC_CERT_EIGEN = 4,
+  SC_CERT_STATE = 5
+};
+/* binding codes (OPT_OUT_binding): then 3 + j for joint j (from 0), 3 + NA + i - 1 for the
+ * wheel of link i (from 1) */
+enum { SC_BIND_CONTACT = 0, SC_BIND_ELLIPSOID = 1, SC_BIND_NORMAL = 2, SC_BIND_JOINT = 3 };
+#define SC_BIND_WHEEL(i) (SC_BIND_JOINT + NA + (i) - 1)
+/* the methods used (OPT_OUT_method, bit flags) */
+enum {
+  SC_METHOD_RANK_ONE = 1,      /* max_sr: the rank-one closed form */
+  SC_METHOD_EIGEN = 2,         /* max_sr: the generalized eigenproblem by Jacobi rotations */
+  SC_METHOD_QP = 4,            /* a QP by the dual active set */
+  SC_METHOD_LP = 8,            /* an LP by the dual active set */
+  SC_METHOD_SECULAR = 16,      /* the ellipsoid's multiplier */
+  SC_METHOD_CLOSED_ELLIPSOID = 32, /* the strongest push on the ellipsoid alone */
+  SC_METHOD_TIE_BREAK = 64,    /* the least-slip tie-break of a degenerate LP */
+  SC_METHOD_DIAGNOSIS = 128,   /* the strongest push that diagnoses an infeasible task */
+  SC_METHOD_STATES = 256,      /* max_sr: the sliding wheel states */
+  SC_METHOD_SCALE = 512        /* t-scale search of a state cut by the ellipsoid */
+};
 
-/* One query (mirrored in snakecg/core/optimal.py): the configuration, the model's bounded
- * wheels, the query's limits and task, the outputs. */
+/* The system at rest at one configuration, the object placed: from the generated
+ * contact_system (column-major as it writes them) M_s (eq. 4), G_c (eq. 14), Kq = M_s^-1 A_s^T
+ * and Ka = I_obj^-1 A_o^T (eq. 18); then M_s^-1 B and the input metric N = B^T M_s^-1 B
+ * (eq. 31), row-major (B selects the joints). */
 typedef struct {
-  op_int kind, n, nc, nw;
-  const double *scene;     /* the model's scene vector (SCENE_* offsets) */
-  const double *q;         /* the configuration */
-  double *maps;            /* out: the maps (core_held_maps' layout) */
-  const op_int *wheel_row; /* nw rows of L with a friction bound */
-  const double *wheel_ub;  /* their bounds, backed off by FRICTION_MARGIN */
-  const double *Io;        /* 3: the object's inertia diagonal */
-  double pivot_tol;
-  double radius;           /* <= 0: no ellipsoid */
-  const double *tau_max;   /* n, or null */
-  const double *direction; /* 3 (unit), or null */
-  double a_min;
-  const double *a_obj;     /* 3, or null */
-  double *out;
-  /* the exact forward solve at the answer (forward.c's core_forward, as SceneModel.forward
-   * calls it for one sample at rest): its solver constants, iteration limit, output row */
-  const double *constants;
-  op_int max_iter;
-  double *row;
-} op_call;
+  double M[NS * NS], G[NC * NC], Kq[NS * NC], Ka[3 * NC];
+  double MB[NS * NA];
+  double N[NA * NA];
+} sc_rest;
 
-/* ---------------------------------------------------------------------------------------
- * the query */
+/* the generated functions' work arrays (maps.c) */
+typedef struct sc_rest_work sc_rest_work;
+
+/* The affine maps of one row state at rest: lam = L tau + l0 (eq. 17), w = W tau + w0 (the
+ * rows' accelerations), qdd = Q tau + q0 (eq. 22), a_obj = A tau + a0 (eq. 24), Xi of eq. (28)
+ * as a form in z = (tau, 1), Omega of eq. (29) in tau (the held state's: no offset), all
+ * row-major; the held rows' pivot ratio (min_j d_j / G_jj of G_HH = L D L^T in row order). */
 typedef struct {
-  int n, nc, nw;
-  double L[(OP_MAX + 2) * OP_MAX]; /* row-major, leading dimension OP_MAX */
-  double Xi[OP_MAX * OP_MAX], Om[OP_MAX * OP_MAX], N[OP_MAX * OP_MAX];
-  double a_dir[3], k;
-} op_maps;
+  double L[NC * NA], l0[NC];
+  double W[NC * NA], w0[NC];
+  double Q[NS * NA], q0[NS];
+  double A[3 * NA], a0[3];
+  double Xih[NA1 * NA1];
+  double Om[NA * NA];
+  double pivot_ratio;
+} sc_affine_maps;
 
-#define ROW(M, i) ((M) + (i) * OP_MAX)
+/* One call: the model, the query and the workspaces, then the configuration at hand. */
+typedef struct {
+  const double *scene;        /* the scene vector (SCENE_*) */
+  const double *fw_constants; /* core_forward's constants */
+  sc_int max_iter;            /* core_forward's active-set passes */
+  const double *in;           /* the query (OPT_IN_*) */
+  sc_rest_work *ws;           /* the generated functions' work arrays */
+  sc_qp_work qw;              /* the QP block's */
+  /* the query */
+  int kind, any_slide;
+  double radius, r2;          /* r2 = 0: no ellipsoid */
+  const double *tau_max;      /* null: no box */
+  const double *direction;    /* null: none given */
+  const double *a_obj;        /* null: none given */
+  double a_min;               /* NaN: none given */
+  int slide[NC];              /* rows allowed to slide (max_sr) */
+  /* the model's bounded wheels: rows and bounds backed off by the friction margin */
+  int nw, wheel_row[NC];
+  double wheel_ub[NC];
+  /* the configuration */
+  const double *q;
+  sc_rest rest;
+  sc_affine_maps held;
+  double a_dir[3], k;         /* a_obj = a_dir lam_c; k = a_dir^T I_obj a_dir */
+  double widths[NA];          /* the region's bounding box (the variables' scale) */
+  double *out;                /* this configuration's answer (OPT_OUT_*) */
+} sc_optimal;
 
-/* certificate._push_floats: the KKT conditions and the duality gap of a push answer with box
- * limits only; 0 when the multipliers need more than the normal equations */
-static int op_push_certificate(const op_call *c, const op_maps *mp, const double *x, int has_lo,
-                               double lam_lo, int equal, int lp, double *values) {
-  int n = mp->n, R = 0, i, j, w, k = 0, nh = 0;
-  double G[OP_ROWS * OP_MAX], lo[OP_ROWS], hi[OP_ROWS];
-  double H[OP_MAX * OP_MAX], cvec[OP_MAX], Hx[OP_MAX], grad[OP_MAX], ax[OP_MAX];
-  double cols[OP_CONS * OP_MAX], slacks[OP_CONS], his[OP_ROWS * OP_MAX], hisl[OP_ROWS];
-  double f, fscale, ref, ng, primal = 0.0, resid, size, comp = 0.0, corr = 0.0, stat;
-  double res[OP_MAX], norms[OP_CONS], lam[OP_CONS];
-  int freec[OP_CONS];
-  const double *ell = ROW(mp->L, 0);
-  if (mp->nw + n + 2 > OP_ROWS) return 0;
-  for (w = 0; w < mp->nw; ++w) {
-    memcpy(G + R * OP_MAX, ROW(mp->L, c->wheel_row[w]), sizeof(double) * n);
-    lo[R] = -c->wheel_ub[w];
-    hi[R++] = c->wheel_ub[w];
-  }
-  if (c->tau_max)
-    for (j = 0; j < n; ++j) {
-      for (i = 0; i < n; ++i) G[R * OP_MAX + i] = (i == j) ? 1.0 : 0.0;
-      lo[R] = -c->tau_max[j];
-      hi[R++] = c->tau_max[j];
-    }
-  memcpy(G + R * OP_MAX, ell, sizeof(double) * n);
-  lo[R] = 0.0;
-  hi[R++] = INFINITY;
-  if (has_lo) {
-    memcpy(G + R * OP_MAX, ell, sizeof(double) * n);
-    lo[R] = lam_lo;
-    hi[R++] = equal ? lam_lo : INFINITY;
-  }
-  if (lp) {
-    for (j = 0; j < n; ++j) {
-      cvec[j] = -ell[j];
-      Hx[j] = 0.0;
-    }
-  } else {
-    for (i = 0; i < n; ++i)
-      for (j = 0; j < n; ++j) H[i * OP_MAX + j] = 2.0 * ROW(mp->Xi, i)[j];
-    for (j = 0; j < n; ++j) cvec[j] = 0.0;
-    for (i = 0; i < n; ++i) Hx[i] = op_dot(H + i * OP_MAX, x, n);
-  }
-  f = 0.5 * op_dot(x, Hx, n) + op_dot(cvec, x, n);
-  for (j = 0; j < n; ++j) {
-    grad[j] = Hx[j] + cvec[j];
-    ax[j] = fabs(x[j]);
-  }
-  for (i = 0; i < R; ++i) {
-    const double *row = G + i * OP_MAX;
-    double gx = op_dot(row, x, n), bnd, rs = 0.0, s_lo, s_hi, v;
-    int a_lo, a_hi, eq;
-    double blo = lo[i] > -INFINITY ? fabs(lo[i]) : 0.0, bhi = hi[i] < INFINITY ? fabs(hi[i]) : 0.0;
-    bnd = bhi > blo ? bhi : blo;
-    for (j = 0; j < n; ++j) rs += fabs(row[j]) * ax[j];
-    rs += bnd;
-    rs = rs > 0 ? rs : 1.0;
-    s_lo = lo[i] > -INFINITY ? gx - lo[i] : INFINITY;
-    s_hi = hi[i] < INFINITY ? hi[i] - gx : INFINITY;
-    v = -s_lo;
-    if (-s_hi > v) v = -s_hi;
-    if (0.0 > v) v = 0.0;
-    v = v / rs;
-    if (v > primal) primal = v;
-    a_lo = s_lo <= ACTIVE * rs;
-    a_hi = s_hi <= ACTIVE * rs;
-    eq = a_lo && a_hi && lo[i] == hi[i];
-    if (a_lo) {
-      memcpy(cols + k * OP_MAX, row, sizeof(double) * n);
-      slacks[k] = eq ? 0.0 : s_lo;
-      freec[k++] = eq;
-    }
-    if (a_hi && !eq) {
-      for (j = 0; j < n; ++j) his[nh * OP_MAX + j] = -row[j];
-      hisl[nh++] = s_hi;
-    }
-  }
-  for (i = 0; i < nh; ++i) { /* the upper sides after the lower ones, as kkt orders them */
-    memcpy(cols + k * OP_MAX, his + i * OP_MAX, sizeof(double) * n);
-    slacks[k] = hisl[i];
-    freec[k++] = 0;
-  }
-  {
-    double a = fabs(f), b = fabs(op_dot(grad, x, n));
-    fscale = a;
-    if (b > fscale) fscale = b;
-    if (1e-300 > fscale) fscale = 1e-300;
-  }
-  ref = (lp ? 0.0 : op_frob(H, OP_MAX, n) * op_norm(x, n)) + op_norm(cvec, n);
-  ng = op_norm(grad, n);
-  if (k) {
-    double Cn[OP_CONS * OP_MAX], Mn[OP_LS * OP_LS], rhs[OP_LS], lam_s[OP_LS], fit[OP_MAX];
-    double tol;
-    if (k > OP_LS) return 0;
-    memset(Mn, 0, sizeof(double) * k * k);
-    memset(rhs, 0, sizeof(double) * k);
-    for (i = 0; i < k; ++i) {
-      double nv = op_norm(cols + i * OP_MAX, n);
-      norms[i] = nv != 0.0 ? nv : 1.0;
-      for (j = 0; j < n; ++j) Cn[i * OP_MAX + j] = cols[i * OP_MAX + j] / norms[i];
-    }
-    for (i = 0; i < k; ++i) {
-      for (j = 0; j < k; ++j) Mn[i * k + j] = op_dot(Cn + i * OP_MAX, Cn + j * OP_MAX, n);
-      rhs[i] = op_dot(Cn + i * OP_MAX, grad, n);
-    }
-    if (!op_lin_solve(k, Mn, k, rhs, lam_s)) return 0;
-    for (i = 0; i < k; ++i)
-      if (!freec[i] && lam_s[i] < 0) return 0;
-    for (j = 0; j < n; ++j) {
-      double s = 0.0;
-      for (i = 0; i < k; ++i) s += lam_s[i] * Cn[i * OP_MAX + j];
-      fit[j] = s - grad[j];
-    }
-    tol = ng;
-    if (ref > tol) tol = ref;
-    if (1e-300 > tol) tol = 1e-300;
-    if (!(op_norm(fit, n) <= 0.1 * STATIONARITY_TOL * tol)) return 0;
-    size = 0.0;
-    for (i = 0; i < k; ++i) {
-      lam[i] = lam_s[i] / norms[i];
-      size += fabs(lam[i]) * norms[i];
-    }
-    for (j = 0; j < n; ++j) {
-      double s = 0.0;
-      for (i = 0; i < k; ++i) s += lam[i] * cols[i * OP_MAX + j];
-      res[j] = s - grad[j];
-    }
-    resid = op_norm(res, n);
-    if (ng > size) size = ng;
-  } else {
-    for (j = 0; j < n; ++j) res[j] = -grad[j];
-    resid = ng;
-    size = 0.0;
-  }
-  {
-    double d = size;
-    if (ref > d) d = ref;
-    if (1e-300 > d) d = 1e-300;
-    stat = resid > 0 ? resid / d : 0.0;
-  }
-  for (i = 0; i < k; ++i) comp += fabs(lam[i]) * fabs(slacks[i]);
-  if (!lp) {
-    double r[OP_MAX], y[OP_MAX];
-    int any = 0;
-    for (j = 0; j < n; ++j) {
-      r[j] = -res[j];
-      if (r[j] != 0.0) any = 1;
-    }
-    if (any) {
-      if (!op_chol_solve(n, H, OP_MAX, r, 1e-9, y)) return 0;
-      corr = 0.5 * op_dot(r, y, n);
-    }
-  }
-  values[0] = stat;
-  values[1] = primal;
-  values[2] = k ? comp / fscale : 0.0;
-  values[3] = k ? (comp + corr) / fscale : corr / fscale;
-  return 1;
-}
+/* a field of the configuration's answer (OPT_OUT_*), and setting one */
+#define SC_OUT(o, f) ((o)->out + OPT_OUT_##f)
+#define SC_SET(o, f, v) ((o)->out[OPT_OUT_##f] = (v))
 
-/* fast.primal_violation (and fast.ellipsoid_violation): the largest relative violation of the
- * all-held limits at tau */
-static double op_primal(const op_call *c, const op_maps *mp, const double *tau) {
-  int n = mp->n, w, j;
-  double worst = 0.0, g, at[OP_MAX];
-  const double *ell = ROW(mp->L, 0);
-  for (j = 0; j < n; ++j) at[j] = fabs(tau[j]);
-  for (w = 0; w < mp->nw; ++w) {
-    const double *row = ROW(mp->L, c->wheel_row[w]);
-    double ub = c->wheel_ub[w];
-    g = fabs(op_dot(row, tau, n));
-    if (g > ub) {
-      double rs = 0.0, v;
-      for (j = 0; j < n; ++j) rs += fabs(row[j]) * at[j];
-      rs += ub;
-      v = (g - ub) / (rs > 0 ? rs : 1.0);
-      if (v > worst) worst = v;
-    }
-  }
-  if (c->tau_max)
-    for (j = 0; j < n; ++j) {
-      double t = fabs(tau[j]), m = c->tau_max[j];
-      if (t > m && (t - m) / (t + m) > worst) worst = (t - m) / (t + m);
-    }
-  g = op_dot(ell, tau, n);
-  if (g < 0) {
-    double rs = 0.0, v;
-    for (j = 0; j < n; ++j) rs += fabs(ell[j]) * at[j];
-    v = -g / (rs > 0 ? rs : 1.0);
-    if (v > worst) worst = v;
-  }
-  if (c->radius > 0) {
-    double r2 = c->radius * c->radius, e = op_quad(mp->N, OP_MAX, tau, n);
-    if (e > r2) {
-      double An[OP_MAX * OP_MAX], qs, v;
-      int i;
-      for (i = 0; i < n; ++i)
-        for (j = 0; j < n; ++j) An[i * OP_MAX + j] = fabs(ROW(mp->N, i)[j]);
-      qs = op_quad(An, OP_MAX, at, n) + fabs(r2);
-      v = (e - r2) / (qs > 0 ? qs : 1.0);
-      if (v > worst) worst = v;
-    }
-  }
-  return worst;
-}
+/* maps.c */
+SC_INTERNAL sc_rest_work *sc_rest_work_new(void);
+SC_INTERNAL void sc_rest_work_free(sc_rest_work *ws);
+SC_INTERNAL int sc_rest_system(sc_rest_work *ws, const double *scene, const double *q,
+                               sc_rest *rest);
+SC_INTERNAL double sc_state_maps(const sc_rest *rest, const double *scene,
+                                 const signed char *state, int with_omega, sc_affine_maps *mp);
+/* optimal.c: what the kinds share */
+SC_INTERNAL void sc_optimal_bind(sc_optimal *o, int code);
+SC_INTERNAL int sc_optimal_forward(sc_optimal *o, const double *tau, double *row);
+SC_INTERNAL void sc_optimal_certify(sc_optimal *o, int kind, const double *values, int resolved);
+SC_INTERNAL int sc_optimal_certified(const sc_optimal *o);
+SC_INTERNAL void sc_optimal_status(sc_optimal *o, int status, int reason);
+SC_INTERNAL void sc_optimal_if_certified(sc_optimal *o);
+SC_INTERNAL void sc_optimal_count(sc_optimal *o, const sc_qp_solution *s, int qcqp);
+/* max_sr.c: max_sr with every row held (then the sliding states when allowed) */
+SC_INTERNAL void sc_max_sr(sc_optimal *o);
+/* push.c */
+SC_INTERNAL void sc_least_slip_push(sc_optimal *o);
+SC_INTERNAL void sc_strongest_push(sc_optimal *o);
+/* wheel_states.c: max_sr with sliding wheels, after the all-held answer is in o->out */
+SC_INTERNAL void sc_max_sr_sliding(sc_optimal *o);
+/* forward.c (exported) */
+int SNAKECG_EXPORT(core_forward)(sc_int n, const double *scene, const double *constants,
+                                 sc_int max_iter, const double *const *in, const sc_int *stride,
+                                 double *out);
 
 #endif

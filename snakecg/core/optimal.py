@@ -1,129 +1,209 @@
-"""The Python side of ``optimal.c`` and ``maps.c``: one optimal-torque query on the all-held
-maps of one configuration in one compiled call (:mod:`snakecg.optimize.quick`); the maps, the
-dense dual active set and the symmetric top eigenvalue alone (for tests against independent
-references).
+"""The Python side of the optimal-torque queries in C (``optimal.c``, ``wheel_states.c``,
+``maps.c``, ``qp.c``): one compiled call answers a batch of configurations
+(:meth:`OptimalKernel.solve`), every objective and input region; and the building blocks
+alone (the QP and QCQP solver, the KKT certificate, the symmetric eigensolver, the maps of a
+row state) for tests against independent references.
 
-:class:`Query` mirrors ``op_call`` field by field; :class:`OptimalKernel` binds the functions
-of one compiled model library.
+The query and the answers are flat float64 vectors laid out by
+:meth:`snakecg.core.Layout.optimal_in_fields` and :meth:`~snakecg.core.Layout.optimal_out_fields`
+(the same names in ``snakecg_layout.h``); the codes below mirror ``optimal.h``.
 """
 
 from __future__ import annotations
 
 import ctypes
+import os
 
 import numpy as np
 
-__all__ = ["OptimalKernel", "Query", "maps_size", "MAX_SR", "LEAST_SLIP", "STRONGEST", "MAX_DIM",
-           "DENSE_MAX", "OUT"]
+from .layout import Layout
+
+__all__ = ["OptimalKernel", "MAX_SR", "LEAST_SLIP_PUSH", "STRONGEST_PUSH", "KINDS",
+           "OPTIMAL", "INFEASIBLE", "FAILED", "REASON", "CHECK", "CERTIFICATE", "METHOD",
+           "BIND_CONTACT", "BIND_ELLIPSOID", "BIND_NORMAL", "BIND_JOINT", "QP_STATUS"]
 
 _P = ctypes.c_void_p
 _I = ctypes.c_longlong
 _D = ctypes.c_double
 
-#: Query kinds (``op_call.kind``).
-MAX_SR, LEAST_SLIP, STRONGEST = 0, 1, 2
-#: Largest ``n_a`` of a query in the C (``OP_MAX``), and of its active set (``DENSE_MAX``,
-#: the same as :data:`snakecg.optimize.active_set.DENSE_MAX`).
-MAX_DIM, DENSE_MAX = 16, 4
-#: Largest number of rows of a dense QP (``OP_ROWS``).
-MAX_ROWS = 2 * MAX_DIM + 4
-#: Positions in the output vector (``O_*`` of optimal.c); ``tau`` at ``OUT["tau"]``, then the
-#: binding codes.
-OUT = {"status": 0, "expected": 1, "k": 2, "a_dir": 3, "stationarity": 6, "primal": 7,
-       "complementarity": 8, "gap": 9, "quad": 10, "tie": 11, "nb": 12, "lam_lo": 13,
-       "gain": 14, "forward": 15, "tau": 16}
-#: Binding codes: 0 the task row, 1 the contact, 2 the ellipsoid, 3 + j joint j (from 0),
-#: 3 + n_a + w the w-th bounded wheel.
-CODE_TASK, CODE_CONTACT, CODE_ELLIPSOID, CODE_JOINT = 0, 1, 2, 3
+#: Query kinds (``OPT_IN_kind``).
+MAX_SR, LEAST_SLIP_PUSH, STRONGEST_PUSH = 0, 1, 2
+KINDS = {"max_sr": MAX_SR, "least_slip_push": LEAST_SLIP_PUSH,
+         "strongest_push": STRONGEST_PUSH}
+#: Statuses (``OPT_OUT_status``).
+OPTIMAL, INFEASIBLE, FAILED = 0, 1, 2
+#: Reasons (``OPT_OUT_reason``), optimal.h's SC_REASON_*.
+REASON = {"none": 0, "singular": 1, "no_push": 2, "off_normal": 3, "against_normal": 4,
+          "direction": 5, "out_of_reach": 6, "no_strong_push": 7, "solver": 8,
+          "within_reach": 9, "certificate": 10, "forward_check": 11, "not_finite": 12,
+          "no_answer": 13, "unanswerable": 14}
+#: Forward checks (``OPT_OUT_check``), SC_CHECK_*.
+CHECK = {"passed": 0, "pending": -1, "tau_max": 1, "ellipsoid": 2, "separates": 3,
+         "slides": 4, "objective": 5, "a_obj": 6, "a_min": 7}
+#: Certificate kinds (``OPT_OUT_certificate``), SC_CERT_*.
+CERTIFICATE = {0: "none", 1: "kkt (convex QP)", 2: "kkt (LP)", 3: "kkt (convex QCQP)",
+               4: "generalized eigenproblem", 5: "kkt of the winning wheel state"}
+#: Method flags (``OPT_OUT_method``), SC_METHOD_*.
+METHOD = {"rank_one": 1, "eigen": 2, "qp": 4, "lp": 8, "secular": 16,
+          "closed_ellipsoid": 32, "tie_break": 64, "diagnosis": 128, "states": 256,
+          "scale": 512}
+#: Binding codes (``OPT_OUT_binding``): then joint j (from 0) at BIND_JOINT + j and the wheel
+#: of link i (from 1) at BIND_JOINT + n_a + i - 1.
+BIND_CONTACT, BIND_ELLIPSOID, BIND_NORMAL, BIND_JOINT = 0, 1, 2, 3
+#: The QP block's statuses (qp.h SC_QP_*).
+QP_STATUS = {0: "optimal", 1: "the linear limits have no common point",
+             2: "the Hessian is not positive definite", 3: "no convergence",
+             4: "the ellipsoid and the linear limits do not intersect",
+             5: "the problem is too large"}
+
+#: Configurations per thread below which a batch is not split (SNAKECG_THREADS set above 1).
+PARALLEL_MIN = 1024
 
 
-class Query(ctypes.Structure):
-    """``op_call``: the model's scene vector and the configuration, the buffer of the maps,
-    the model's bounded wheels, the query's limits and task, the output vector, and what the
-    forward solve at the answer takes (``core_forward``'s constants and iteration limit, the
-    output row)."""
+def _workers(n: int) -> int:
+    """Threads for a batch of ``n`` configurations: one, unless ``SNAKECG_THREADS`` asks for
+    more and each of them gets ``PARALLEL_MIN`` configurations at least. A configuration takes
+    a few microseconds, so the split pays only with cores to spare, which a shared machine
+    rarely has: on the 2-core machine of docs/performance.md, shared with other work, two
+    threads never ran faster than one (16,000 configurations: 4.6 us per configuration
+    either way; the second core was busy), so one thread is the default."""
+    raw = os.environ.get("SNAKECG_THREADS")
+    if not raw or n < 2 * PARALLEL_MIN:
+        return 1
+    try:
+        asked = int(raw)
+    except ValueError:
+        return 1
+    return max(1, min(asked, n // PARALLEL_MIN))
 
-    _fields_ = [("kind", _I), ("n", _I), ("nc", _I), ("nw", _I),
-                ("scene", _P), ("q", _P), ("maps", _P),
-                ("wheel_row", _P), ("wheel_ub", _P), ("Io", _P),
-                ("pivot_tol", _D), ("radius", _D), ("tau_max", _P), ("direction", _P),
-                ("a_min", _D), ("a_obj", _P), ("out", _P),
-                ("constants", _P), ("max_iter", _I), ("row", _P)]
 
-
-def maps_size(n_joints: int, n_constraints: int) -> int:
-    """Length of the maps' buffer (``core_held_maps``): ``L`` (n_c x n_a), ``A`` (3 x n_a),
-    ``Xi``, ``Omega``, ``N`` (n_a x n_a each), row-major, then the pivot ratio."""
-    return n_constraints * n_joints + 3 * n_joints + 3 * n_joints * n_joints + 1
+def _ptr(a):
+    return None if a is None else a.ctypes.data
 
 
 class OptimalKernel:
-    """``core_optimal``, ``core_dense_qp`` and ``core_top_eigenvalue`` of one compiled model
-    library."""
+    """The optimal-torque entry points of one compiled model library."""
 
-    def __init__(self, lib: ctypes.CDLL, prefix: str):
+    def __init__(self, lib: ctypes.CDLL, prefix: str, layout: Layout):
+        self.layout = layout
+        self.in_width = layout._offsets(layout.optimal_in_fields())[1]
+        self.out_width = layout._offsets(layout.optimal_out_fields())[1]
+        self.IN = layout.optimal_in
+        self.OUT = layout.optimal_out
         fn = getattr(lib, f"{prefix}core_optimal")
-        fn.argtypes = [_P]
+        fn.argtypes = [_I, _P, _P, _I, _P, _P, _P]
         fn.restype = ctypes.c_int
-        self.call = fn
-        """``core_optimal(&query)``: 0 when answered, else the code of what the Python path
-        must answer (optimal.c ``OP_*``)."""
-        fn = getattr(lib, f"{prefix}core_dense_qp")
-        fn.argtypes = [_I, _I] + [_P] * 7
+        self._solve = fn
+        fn = getattr(lib, f"{prefix}core_optimal_check")
+        fn.argtypes = [_I, _P, _P]
+        fn.restype = ctypes.c_int
+        self._check = fn
+        fn = getattr(lib, f"{prefix}core_qp_solve")
+        fn.argtypes = [_I, _I] + [_P] * 6 + [_D, _D, _P, _P, _P]
         fn.restype = ctypes.c_int
         self._qp = fn
-        fn = getattr(lib, f"{prefix}core_held_maps")
-        fn.argtypes = [_P, _P, _D, _P]
+        fn = getattr(lib, f"{prefix}core_kkt_certificate")
+        fn.argtypes = [_I, _P, _P, _P, _I, _P, _P, _P, _P, _D, _I, _D, _D, _P, _P, _P]
+        fn.restype = ctypes.c_int
+        self._kkt = fn
+        fn = getattr(lib, f"{prefix}core_eigen_symmetric")
+        fn.argtypes = [_I, _P, _P, _P]
+        fn.restype = ctypes.c_int
+        self._eigen = fn
+        fn = getattr(lib, f"{prefix}core_state_maps")
+        fn.argtypes = [_P, _P, _P, _P]
         fn.restype = ctypes.c_int
         self._maps = fn
-        fn = getattr(lib, f"{prefix}core_top_eigenvalue")
-        fn.argtypes = [_I, _P]
-        fn.restype = _D
-        self._top = fn
 
-    def dense_qp(self, H, g, A, lo, hi):
-        """``min 1/2 x^T H x + g^T x`` s.t. ``lo <= A x <= hi`` by the C's dense dual active
-        set (``H`` positive definite, at most ``DENSE_MAX`` variables and ``MAX_ROWS`` rows):
-        ``(x, lam)`` with ``lam`` the rows' multipliers, or None when it gives up."""
+    # the query -----------------------------------------------------------------------------
+    def solve(self, model, query_in: np.ndarray, qa: np.ndarray) -> np.ndarray:
+        """The answers ``(N, width)`` of the query vector ``query_in`` at the configurations
+        ``qa`` (C-contiguous float64 ``(N, n_s)``): one C call, split across the shared
+        threads only when asked (:func:`_workers`; each configuration is answered alone, so
+        the split does not change a bit)."""
+        n = qa.shape[0]
+        out = np.empty((n, self.out_width))
+        args = (model.scene_address, model.core.constants_address, model.max_iter,
+                query_in.ctypes.data)
+        workers = _workers(n)
+        if workers == 1:
+            status = self._solve(n, *args, qa.ctypes.data, out.ctypes.data)
+        else:
+            from ..native import pool
+
+            bounds = np.linspace(0, n, workers + 1).astype(np.int64)
+            qp, op = qa.ctypes.data, out.ctypes.data
+            ns, w = qa.shape[1], self.out_width
+            jobs = [(int(lo), int(hi)) for lo, hi in zip(bounds[:-1], bounds[1:]) if hi > lo]
+            status = min(pool().map(
+                lambda j: self._solve(j[1] - j[0], *args, qp + 8 * ns * j[0], op + 8 * w * j[0]),
+                jobs))
+        if status != 0:
+            raise MemoryError("the optimal-torque query could not allocate its workspace")
+        return out
+
+    def check(self, query_in: np.ndarray, out: np.ndarray) -> None:
+        """The forward check of the answers whose forward row was left to the reference path
+        (now in place in ``out``)."""
+        self._check(out.shape[0], query_in.ctypes.data, out.ctypes.data)
+
+    # the building blocks alone, for tests ---------------------------------------------------
+    def qp(self, H, g, A, lo, hi, *, N=None, rho2=0.0, mu0=1.0):
+        """``min 1/2 x^T H x + g^T x`` s.t. ``lo <= A x <= hi`` (and ``x^T N x <= rho2`` when
+        ``N`` is given: the ellipsoid's multiplier, for a problem whose optimum without it lies
+        outside): ``(status, x, lam, info)`` with the rows' signed multipliers and ``info`` =
+        (active rows, QP solves or active-set changes, Newton steps, mu)."""
         H, g, A, lo, hi = (np.ascontiguousarray(a, dtype=float) for a in (H, g, A, lo, hi))
         n = g.size
         A = A.reshape(-1, n)
-        R = A.shape[0]
-        if H.shape != (n, n) or lo.shape != (R,) or hi.shape != (R,):
-            raise ValueError("dense_qp: inconsistent shapes")
-        if not 1 <= n <= DENSE_MAX or R > MAX_ROWS:
-            raise ValueError(f"dense_qp takes 1..{DENSE_MAX} variables and {MAX_ROWS} rows")
-        x = np.zeros(n)
-        lam = np.zeros(R)
-        ok = self._qp(n, R, H.ctypes.data, g.ctypes.data, A.ctypes.data, lo.ctypes.data,
-                      hi.ctypes.data, x.ctypes.data, lam.ctypes.data)
-        return (x, lam) if ok == 1 else None
+        m = A.shape[0]
+        Nc = None if N is None else np.ascontiguousarray(N, dtype=float)
+        x, lam, info = np.zeros(n), np.zeros(m), np.zeros(4)
+        st = self._qp(n, m, H.ctypes.data, g.ctypes.data, A.ctypes.data, lo.ctypes.data,
+                      hi.ctypes.data, _ptr(Nc), float(rho2), float(mu0), x.ctypes.data,
+                      lam.ctypes.data, info.ctypes.data)
+        return st, x, lam, info
 
-    def held_maps(self, model, q, pivot_tol: float):
-        """maps.c's all-held maps at ``q`` (a model of this library): ``(code, maps)`` with
-        ``maps`` a dict of ``L``, ``A``, ``Xi``, ``Omega``, ``N``, ``pivot_ratio`` and
-        ``code`` 0 when they are defined (1: a call failed, 2: dependent rows, 3: not
-        finite)."""
-        n, nc = model.n_joints, model.n_constraints
+    def kkt_certificate(self, x, H, c, G, lo, hi, *, Q=None, r2=0.0, convex=True,
+                        active=1e-7, stationarity_tol=1e-7):
+        """qp.c's certificate of ``x``: ``(values, lam, mu)``, values = (stationarity,
+        primal feasibility, complementarity, duality gap or NaN)."""
+        x, c, G, lo, hi = (np.ascontiguousarray(a, dtype=float) for a in (x, c, G, lo, hi))
+        n = x.size
+        G = G.reshape(-1, n)
+        m = G.shape[0]
+        Hc = None if H is None else np.ascontiguousarray(H, dtype=float)
+        Qc = None if Q is None else np.ascontiguousarray(Q, dtype=float)
+        values, lam, mu = np.zeros(4), np.zeros(m), np.zeros(1)
+        self._kkt(n, x.ctypes.data, _ptr(Hc), c.ctypes.data, m, G.ctypes.data, lo.ctypes.data,
+                  hi.ctypes.data, _ptr(Qc), float(r2), int(convex), active, stationarity_tol,
+                  values.ctypes.data, lam.ctypes.data, mu.ctypes.data)
+        return values, lam, float(mu[0])
+
+    def eigen_symmetric(self, S):
+        """Eigenvalues (ascending) and eigenvectors (columns) of a symmetric matrix."""
+        A = np.array(S, dtype=float, order="C")
+        n = A.shape[0]
+        w, V = np.zeros(n), np.zeros((n, n))
+        self._eigen(n, A.ctypes.data, w.ctypes.data, V.ctypes.data)
+        return w, V
+
+    def state_maps(self, model, q, state):
+        """maps.c's maps at ``q`` for the row states ``state`` (solver codes): ``(code, maps)``
+        with ``L``, ``l0``, ``W``, ``w0``, ``Q``, ``q0``, ``A``, ``a0``, ``Xi_h``, ``Omega``,
+        ``N``, ``pivot_ratio``; code 0 when defined."""
+        na, nc, ns = model.n_joints, model.n_constraints, model.n_coordinates
         q = np.ascontiguousarray(q, dtype=float)
-        if q.shape != (model.n_coordinates,):
-            raise ValueError(f"held_maps takes one configuration of {model.n_coordinates}")
-        buf = np.zeros(maps_size(n, nc))
-        code = self._maps(model.scene_address, q.ctypes.data, pivot_tol, buf.ctypes.data)
-        k = 0
-        out = {}
-        for name, shape in (("L", (nc, n)), ("A", (3, n)), ("Xi", (n, n)), ("Omega", (n, n)),
-                            ("N", (n, n))):
-            size = shape[0] * shape[1]
+        st = np.ascontiguousarray(state, dtype=float)
+        shapes = (("L", (nc, na)), ("l0", (nc,)), ("W", (nc, na)), ("w0", (nc,)),
+                  ("Q", (ns, na)), ("q0", (ns,)), ("A", (3, na)), ("a0", (3,)),
+                  ("Xi_h", (na + 1, na + 1)), ("Omega", (na, na)), ("N", (na, na)))
+        buf = np.zeros(sum(int(np.prod(s)) for _, s in shapes) + 1)
+        code = self._maps(model.scene_address, q.ctypes.data, st.ctypes.data, buf.ctypes.data)
+        out, k = {}, 0
+        for name, shape in shapes:
+            size = int(np.prod(shape))
             out[name] = buf[k:k + size].reshape(shape)
             k += size
         out["pivot_ratio"] = float(buf[k])
         return int(code), out
-
-    def top_eigenvalue(self, S) -> float:
-        """Largest eigenvalue of a symmetric matrix (cyclic Jacobi, at most ``MAX_DIM``)."""
-        S = np.ascontiguousarray(S, dtype=float)
-        n = S.shape[0]
-        if S.shape != (n, n) or not 1 <= n <= MAX_DIM:
-            raise ValueError(f"top_eigenvalue takes a square matrix of size 1..{MAX_DIM}")
-        return float(self._top(n, S.ctypes.data))
