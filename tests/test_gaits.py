@@ -1,0 +1,90 @@
+"""Gaits: the serpenoid curve against its formula and finite differences, the PD law and the
+torque table against hand-computed values, and runs of a serpenoid gait against physical
+laws (a snake on frictionless ground cannot move its centre of mass; on wheels it crawls)."""
+
+import math
+
+import numpy as np
+import pytest
+
+import snakecg
+from snakecg.simulate import Serpenoid, TorqueTable, serpenoid_controller, simulate
+
+
+def test_serpenoid_matches_hirose_and_its_derivatives():
+    c = Serpenoid(4, amplitude=0.5, frequency=0.8, phase_lag=-1.1, offset=0.05)
+    t = 0.37
+    want = [0.5 * math.sin(2 * math.pi * 0.8 * t + j * -1.1) + 0.05 for j in range(4)]
+    assert c.angles(t) == pytest.approx(want, abs=1e-15)
+    h = 1e-5
+    assert c.rates(t) == pytest.approx((c.angles(t + h) - c.angles(t - h)) / (2 * h), abs=1e-9)
+    assert c.accelerations(t) == pytest.approx((c.rates(t + h) - c.rates(t - h)) / (2 * h),
+                                               abs=1e-8)
+
+
+def test_torque_table_interpolates_and_holds():
+    table = TorqueTable([0.0, 1.0, 3.0], [[0.0, 1.0], [2.0, -1.0], [4.0, 0.0]])
+    assert table(0.5) == pytest.approx([1.0, 0.0])
+    assert table(2.0) == pytest.approx([3.0, -0.5])
+    assert table(-1.0) == pytest.approx([0.0, 1.0]) and table(9.0) == pytest.approx([4.0, 0.0])
+    held = TorqueTable([0.0, 1.0, 3.0], [[0.0, 1.0], [2.0, -1.0], [4.0, 0.0]],
+                       interpolation="previous")
+    assert held(0.999) == pytest.approx([0.0, 1.0]) and held(1.0) == pytest.approx([2.0, -1.0])
+
+
+def test_bad_gait_arguments_are_named():
+    model = snakecg.load(snakecg.Scene(snakecg.Robot(joints=3), scenario="frictionless"))
+    with pytest.raises(snakecg.InputError, match="times must be finite, strictly increasing"):
+        TorqueTable([0.0, 0.0], [[1.0], [2.0]])
+    with pytest.raises(snakecg.InputError, match=r"torques must be .* shape \(2, n_a\)"):
+        TorqueTable([0.0, 1.0], [1.0, 2.0])
+    with pytest.raises(snakecg.InputError, match="frequency must be a finite number >= 0"):
+        Serpenoid(3, 0.3, -1.0, 0.5)
+    with pytest.raises(snakecg.InputError, match=r"kp must be .*; kd must be"):
+        serpenoid_controller(model, amplitude=0.3, frequency=1.0, phase_lag=0.5,
+                             kp=[1.0, 2.0], kd=-1.0)
+
+
+def test_pd_law_against_its_formula_and_box():
+    robot = snakecg.Robot(joints=3, effort_limits=[0.2, 0.2, 0.05])
+    model = snakecg.load(snakecg.Scene(robot, scenario="frictionless"))
+    law = serpenoid_controller(model, amplitude=0.4, frequency=1.0, phase_lag=0.9, kp=2.0,
+                               kd=0.1)
+    state = type("S", (), {"q": np.array([0, 0, 0, 0.1, -0.2, 0.3]),
+                           "v": np.array([0, 0, 0, 0.5, 0.0, -0.5])})()
+    t = 0.1
+    ref = [0.4 * math.sin(2 * math.pi * t + 0.9 * j) for j in range(3)]
+    dref = [0.4 * 2 * math.pi * math.cos(2 * math.pi * t + 0.9 * j) for j in range(3)]
+    raw = [2.0 * (ref[j] - state.q[3 + j]) + 0.1 * (dref[j] - state.v[3 + j]) for j in range(3)]
+    want = np.clip(raw, [-0.2, -0.2, -0.05], [0.2, 0.2, 0.05])
+    assert law(t, state) == pytest.approx(want, abs=1e-15)
+    assert abs(raw[2]) > 0.05  # the box acts on this state
+
+
+def _com(model, q):
+    poses = model.link_poses(q)
+    m = np.asarray(model.robot.mass, float) * np.ones(poses.shape[-2])
+    return (m[:, None] * poses[..., :2]).sum(-2) / m.sum()
+
+
+@pytest.mark.parametrize("scenario", ["frictionless", "ideal_wheels"])
+def test_serpenoid_gait_obeys_momentum(scenario):
+    """Far from the object, a snake on frictionless ground has no external horizontal force:
+    its centre of mass stays where it was while the joints swing. On ideal wheels the same
+    gait moves it (the wheels' lateral forces push it)."""
+    model = snakecg.load(snakecg.Scene(snakecg.Robot(joints=3), scenario=scenario, kappa=10.0))
+    q0 = np.array([0.0, 0.0, 0.0, 0.0, 0.0, 0.0])
+    q_obj, rho, _ = model.place_object(q0)
+    law = serpenoid_controller(model, amplitude=0.4, frequency=1.0, phase_lag=-1.0, kp=3.0,
+                               kd=0.2)
+    traj = simulate(model, q0, law, 2.0, q_obj0=q_obj + [0.0, 10.0, 0.0], rho=rho,
+                    control_period=0.002)
+    assert traj.summary["status"] == "completed"
+    com = _com(model, traj.q)
+    drift = np.linalg.norm(com - com[0], axis=-1).max()
+    swing = np.ptp(traj.q[:, 3:], axis=0).min()
+    assert swing > 0.3  # the gait does swing every joint
+    if scenario == "frictionless":
+        assert drift < 1e-8
+    else:
+        assert drift > 0.02
