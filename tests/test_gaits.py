@@ -88,3 +88,33 @@ def test_serpenoid_gait_obeys_momentum(scenario):
         assert drift < 1e-8
     else:
         assert drift > 0.02
+
+
+def test_batch_of_runs_equals_single_runs_and_sorts_out_gaits():
+    """A batch of runs equals the single calls bit for bit (in this process and in worker
+    processes), one row per run; and mirror symmetry: from the straight shape at rest on the
+    x axis, the gait of amplitude -A is the mirror image (y -> -y) of the gait of amplitude A,
+    so the centre of mass moves by the same x and the opposite y."""
+    from snakecg.simulate import simulate_batch
+
+    model = snakecg.load(snakecg.Scene(snakecg.Robot(joints=3), scenario="ideal_wheels",
+                                       kappa=10.0))
+    q0 = np.zeros(6)
+    q_obj, rho, _ = model.place_object(q0)
+    far = q_obj + [0.0, 10.0, 0.0]
+    laws = [serpenoid_controller(model, amplitude=a, frequency=1.0, phase_lag=-1.0, kp=3.0,
+                                 kd=0.2) for a in (0.4, -0.4)]
+    opts = dict(q_obj0=far, rho=rho, control_period=0.005)
+    single = [simulate(model, q0, law, 1.0, **opts) for law in laws]
+    for processes in (1, 2):
+        batch = simulate_batch(model, q0, laws, 1.0, processes=processes, progress=False,
+                               **opts)
+        assert len(batch) == 2 and batch.completed.all()
+        for i, traj in enumerate(single):
+            assert np.array_equal(batch.q_end[i], traj.q[-1])
+            assert np.array_equal(batch.q_obj_end[i], traj.q_obj[-1])
+    d = batch.com_displacement
+    assert abs(d[0, 0]) > 0.05 and abs(d[0, 1]) > 1e-3
+    assert d[1] == pytest.approx([d[0, 0], -d[0, 1]], rel=1e-9, abs=1e-12)
+    with pytest.raises(snakecg.InputError, match="q0 has 3 rows, other arguments 2"):
+        simulate_batch(model, np.zeros((3, 6)), laws, 1.0, **opts)

@@ -60,7 +60,7 @@ class Serpenoid:
                 or n_joints < 1:
             raise InputError(f"n_joints must be an integer >= 1, got {n_joints!r}")
         self.n_joints = int(n_joints)
-        self.amplitude = _finite("amplitude", amplitude, nonnegative=True)
+        self.amplitude = _finite("amplitude", amplitude)  # the sign mirrors the wave
         self.frequency = _finite("frequency", frequency, nonnegative=True)
         self.phase_lag = _finite("phase_lag", phase_lag)
         self.offset = _finite("offset", offset)
