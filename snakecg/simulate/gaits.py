@@ -28,12 +28,17 @@ from ..errors import InputError
 __all__ = ["Serpenoid", "SerpenoidPD", "TorqueTable", "serpenoid_controller"]
 
 
-def _finite(name: str, value, *, positive: bool = False, nonnegative: bool = False) -> float:
+#: Largest angle (rad) and frequency (Hz) of a serpenoid: beyond them the curve means nothing.
+ANGLE_MAX, FREQUENCY_MAX = 1e3, 1e6
+
+
+def _finite(name: str, value, *, nonnegative: bool = False, largest: float = ANGLE_MAX
+            ) -> float:
     ok = not isinstance(value, bool) and isinstance(value, (int, float, np.integer, np.floating))
     v = to_float(value) if ok else math.nan
-    if not math.isfinite(v) or (positive and v <= 0) or (nonnegative and v < 0):
-        form = "> 0" if positive else ">= 0" if nonnegative else ""
-        raise InputError(f"{name} must be a finite number {form}".rstrip() + f", got {value!r}")
+    if not math.isfinite(v) or (nonnegative and v < 0) or abs(v) > largest:
+        lo = "0" if nonnegative else f"-{largest:g}"
+        raise InputError(f"{name} must be a number from {lo} to {largest:g}, got {value!r}")
     return v
 
 
@@ -61,7 +66,8 @@ class Serpenoid:
             raise InputError(f"n_joints must be an integer >= 1, got {n_joints!r}")
         self.n_joints = int(n_joints)
         self.amplitude = _finite("amplitude", amplitude)  # the sign mirrors the wave
-        self.frequency = _finite("frequency", frequency, nonnegative=True)
+        self.frequency = _finite("frequency", frequency, nonnegative=True,
+                                 largest=FREQUENCY_MAX)
         self.phase_lag = _finite("phase_lag", phase_lag)
         self.offset = _finite("offset", offset)
         self._phases = np.arange(self.n_joints) * self.phase_lag
