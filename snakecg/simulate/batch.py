@@ -97,9 +97,10 @@ def simulate_batch(model, q0, tau, duration, *, v0=None, q_obj0=None, rho=None,
     v0 : (n_s,) or (N, n_s) initial velocities (default at rest). ``q_obj0`` (3,) or (N, 3)
         and ``rho`` (2,) or (N, 2): the object's pose and contact point (together; default
         the scene's placement).
-    processes : worker processes (default: one per core for batches of more than 4 runs,
-        else none); with more than one, the torque laws must pickle (the laws of
-        :mod:`snakecg.simulate.gaits` do).
+    processes : worker processes (default None: every run in this process). With more than
+        one, the torque laws must pickle (the laws of :mod:`snakecg.simulate.gaits` do) and,
+        as for any use of :mod:`multiprocessing` with the ``spawn`` start method, a script
+        must call this under ``if __name__ == "__main__":`` (the workers import the script).
     keep_trajectories : keep every run's whole :class:`Trajectory` (memory grows with N).
     options : any other keyword of :func:`~snakecg.simulate.simulate` (``control_period``,
         ``geometry_check``, ``output_dt``, ...), the same for every run.
@@ -140,10 +141,9 @@ def simulate_batch(model, q0, tau, duration, *, v0=None, q_obj0=None, rho=None,
     for i in range(runs):
         law = laws[i if len(laws) > 1 else 0] if laws is not None else pick(t_rows, i)
         jobs.append((pick(q_rows, i), law, pick(v_rows, i), pick(o_rows, i), pick(r_rows, i)))
-    # the first run checks every common option before the others start (a bad option fails
-    # at once, with simulate's own message)
     if processes is None:
-        processes = min(os.cpu_count() or 1, runs) if runs > 4 else 1
+        processes = 1
+    processes = min(int(processes), runs, 4 * (os.cpu_count() or 1))
     records = _run_all(model, jobs, float(duration), options, int(processes), progress,
                        bool(keep_trajectories))
     return _gather(records)
