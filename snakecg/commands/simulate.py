@@ -147,10 +147,11 @@ def run(args) -> int:
         if not args.tau:
             raise InputError("give the joint torques --tau (or --controller least-slip-push "
                              "or serpenoid)")
-        for opt, val in (("--a-min", args.a_min), ("--tau-max", args.tau_max),
-                         ("--control-period", args.control_period)):
+        for opt, val, which in (("--a-min", args.a_min, " least-slip-push"),
+                                ("--tau-max", args.tau_max, ""),
+                                ("--control-period", args.control_period, "")):
             if val is not None:
-                raise InputError(f"{opt} applies to --controller only")
+                raise InputError(f"{opt} applies to --controller{which} only")
         tau = check_vector("tau", parse_vector("--tau", args.tau), na,
                            f" (one torque per joint, n_a = {na})")
     _check_counts(args)
