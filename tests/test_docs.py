@@ -9,8 +9,8 @@
   install commands and long runs, shown but not executed; the reproduction itself has its own
   tests.)
 * The doctests of the modules that the API reference renders run too.
-* The CLI behaviour that docs/cli.md documents: exit statuses, one-line errors with a hint,
-  ``--version``, an example in every command's help, the JSON schemas' fields, progress lines
+* The CLI behaviour that docs/reference/cli.md documents: exit statuses, one-line errors with a
+  hint, ``--version``, an example in every command's help, the JSON schemas' fields, progress lines
   on every stream (bars on a terminal only).
 * ``mkdocs build --strict`` succeeds (when MkDocs is installed; otherwise skipped, saying so),
   and the generated pages contain what the hooks promise.
@@ -34,7 +34,7 @@ import pytest
 
 ROOT = Path(__file__).resolve().parents[1]
 DOCS = ROOT / "docs"
-PAGES = sorted(DOCS.glob("*.md")) + [ROOT / "README.md"]
+PAGES = sorted(DOCS.rglob("*.md")) + [ROOT / "README.md"]
 
 FENCE = re.compile(r"^(?P<indent>[ ]*)```(?P<info>[^\n`]*)\n(?P<body>.*?)^(?P=indent)```[ ]*$",
                    re.MULTILINE | re.DOTALL)
@@ -79,9 +79,11 @@ def test_python_blocks_run(page, monkeypatch):
 
 def test_the_docs_have_examples():
     """Guards the extraction itself: the pages that must carry runnable examples do."""
-    names = {p.name for p in PYTHON_PAGES}
-    for required in ("README.md", "getting-started.md", "tutorial.md", "model.md",
-                     "scenarios.md", "metrics.md", "generated-code.md", "symbolic.md"):
+    names = {p.relative_to(DOCS).as_posix() if p.is_relative_to(DOCS) else p.name
+             for p in PYTHON_PAGES}
+    for required in ("README.md", "tutorials/getting-started.md", "tutorials/robot-to-result.md",
+                     "explanation/model.md", "explanation/scenarios.md", "explanation/metrics.md",
+                     "explanation/generated-code.md", "explanation/symbolic.md"):
         assert required in names, f"no ```python block found in {required}"
 
 
@@ -152,7 +154,7 @@ def test_console_commands_run(page, line, argv, expected, monkeypatch, capsys):
 # ------------------------------------------------------------------------------------------
 # 3. doctests of the modules the API reference renders
 # ------------------------------------------------------------------------------------------
-_API_TEXT = (DOCS / "api.md").read_text(encoding="utf-8")
+_API_TEXT = (DOCS / "reference" / "api.md").read_text(encoding="utf-8")
 API_NAMES = re.findall(r"^::: (snakecg[\w.]*)", _API_TEXT, re.MULTILINE) + [
     # entries the site hook renders once the module exists (docs/hooks/site.py)
     m for m in re.findall(r"<!--\s*snakecg-api:\s*([\w.]+)\s*-->", _API_TEXT)
@@ -186,7 +188,7 @@ def test_api_doctests(module, monkeypatch):
 
 
 # ------------------------------------------------------------------------------------------
-# 4. the CLI promises of docs/cli.md
+# 4. the CLI promises of docs/reference/cli.md
 # ------------------------------------------------------------------------------------------
 def _subparsers():
     import argparse
@@ -259,8 +261,8 @@ def test_failures_exit_1(tmp_path, capsys):
 
 
 def _documented_fields(section: str) -> set[str]:
-    """Field names in the first column of the table under ``section`` in docs/cli.md."""
-    text = (DOCS / "cli.md").read_text(encoding="utf-8")
+    """Field names in the first column of the table under ``section`` in docs/reference/cli.md."""
+    text = (DOCS / "reference" / "cli.md").read_text(encoding="utf-8")
     start = text.index(section)
     table = text[start:].split("\n\n", 3)
     rows = [r for block in table[1:3] for r in block.splitlines() if r.startswith("| `")]
@@ -297,7 +299,7 @@ def test_generate_json_fields_are_documented(capsys):
 
 
 def test_progress_lines_on_every_stream_bars_on_a_terminal(monkeypatch):
-    """docs/cli.md: step lines on every stream, bars only on a terminal, and
+    """docs/reference/cli.md: step lines on every stream, bars only on a terminal, and
     SNAKECG_PROGRESS=0 silences both."""
     from snakecg.commands._common import progress_reporter
     from snakecg.progress import progress_bar
@@ -382,7 +384,7 @@ def built_site(tmp_path_factory):
 
 def test_mkdocs_build_strict(built_site):
     site = built_site
-    symbolic = (site / "symbolic" / "index.html").read_text(encoding="utf-8")
+    symbolic = (site / "explanation" / "symbolic" / "index.html").read_text(encoding="utf-8")
     assert "snakecg-symbolic" not in symbolic, "a symbolic directive was not replaced"
     assert symbolic.count('class="arithmatex"') >= 10
     assert r"\beta_{1}" in symbolic and r"m_{\mathrm{tot}}" in symbolic
@@ -390,18 +392,19 @@ def test_mkdocs_build_strict(built_site):
     manifest = json.loads((ROOT / "generated" / "na2" / "manifest.json").read_text())
     ops = {f["name"]: f["operations"] for f in manifest["functions"]}
     assert f"{ops['constrained_dynamics']:,}" in symbolic
-    cli = (site / "cli" / "index.html").read_text(encoding="utf-8")
+    cli = (site / "reference" / "cli" / "index.html").read_text(encoding="utf-8")
     assert "snakecg-cli" not in cli and "usage: snakecg forward" in cli
-    api = (site / "api" / "index.html").read_text(encoding="utf-8")
+    api = (site / "reference" / "api" / "index.html").read_text(encoding="utf-8")
     assert 'id="snakecg.model.SceneModel.forward"' in api
     # the figures computed at build time are in the site and on their pages
     for rel in ("figures/reproduce/fig4_kappa100.png", "figures/reproduce/fig5_polar.png",
                 "figures/reproduce/fig6_configurations.png", "figures/simulate/displacement.png",
                 "figures/simulate/animation.gif"):
         assert (site / rel).stat().st_size > 10_000, rel
-    reproduction = (site / "reproduction" / "index.html").read_text(encoding="utf-8")
-    assert reproduction.count('src="../figures/reproduce/') == 3
-    assert 'src="../figures/simulate/' in (site / "simulate" / "index.html").read_text("utf-8")
+    reproduction = (site / "how-to" / "reproduction" / "index.html").read_text(encoding="utf-8")
+    assert reproduction.count('src="../../figures/reproduce/') == 3
+    assert 'src="../../figures/simulate/' in (site / "how-to" / "simulate" / "index.html") \
+        .read_text("utf-8")
 
 
 # ------------------------------------------------------------------------------------------
@@ -437,8 +440,8 @@ def test_site_loads_nothing_from_elsewhere(built_site):
     # the renderer is served with the site, with its licence
     assert (built_site / "assets" / "mathjax" / "tex-svg.js").stat().st_size > 1_000_000
     assert "Apache License" in (built_site / "assets" / "mathjax" / "LICENSE").read_text()
-    assert 'src="../assets/mathjax/tex-svg.js"' in (built_site / "model" / "index.html") \
-        .read_text(encoding="utf-8")
+    model_page = built_site / "explanation" / "model" / "index.html"
+    assert 'src="../../assets/mathjax/tex-svg.js"' in model_page.read_text(encoding="utf-8")
 
 
 _PROBE = r"""
@@ -524,7 +527,7 @@ def test_formulas_render_in_a_browser_offline(built_site, site_server, tmp_path)
     typeset, a matrix is drawn as a matrix (taller than a line, ink in its box on the
     screenshot), no raw TeX is left, and wide formulas scroll inside the page."""
     Image = pytest.importorskip("PIL.Image", reason="pillow (test extra) reads the screenshot")
-    probe = _probe(built_site, site_server, "model", 1280, tmp_path)
+    probe = _probe(built_site, site_server, "explanation/model", 1280, tmp_path)
     items = probe["items"]
     assert len(items) >= 30 and all(i["rendered"] for i in items)
     assert not probe["raw"], "raw TeX is visible"
@@ -534,7 +537,7 @@ def test_formulas_render_in_a_browser_offline(built_site, site_server, tmp_path)
     assert tallest["box"][3] > 1.8 * probe["line"], tallest   # two rows, not one line of text
     shot = tmp_path / "model.png"
     _browser(["--window-size=1280,4000", f"--screenshot={shot}",
-              f"{site_server}/model/probe.html"], tmp_path)
+              f"{site_server}/explanation/model/probe.html"], tmp_path)
     import numpy as np
 
     with Image.open(shot) as im:
@@ -544,6 +547,6 @@ def test_formulas_render_in_a_browser_offline(built_site, site_server, tmp_path)
     rows = np.flatnonzero(ink.any(axis=1))
     assert rows[-1] - rows[0] > 1.5 * probe["line"], "the drawn matrix is not taller than a line"
     # the symbolic page's wide matrices scroll in their block; the page itself does not
-    sym = _probe(built_site, site_server, "symbolic", 900, tmp_path)
+    sym = _probe(built_site, site_server, "explanation/symbolic", 900, tmp_path)
     assert any(i["scrolls"] for i in sym["items"])
     assert sym["pageWidth"] <= sym["viewport"]

@@ -1,15 +1,20 @@
-"""MkDocs hook: the figures of the site, computed when the site is built.
+"""MkDocs hook: the figures and Table 2 of the site, computed when the site is built.
 
-* ``figures/reproduce/``: Figs. 4 (kappa = 100), 5 and 6 from a reduced ``snakecg reproduce``
-  run (``REDUCED``: a coarser joint grid and torque grid than the full run, PNG only), so the
-  pages show what the code computes today, not a picture that can go stale.
+* ``figures/reproduce/``: Figs. 4 (kappa = 100), 5 and 6 from a ``snakecg reproduce`` run
+  (``SITE_RUN``, PNG only). Case study 2 (Figs. 5, 6 and Table 2) runs on the command's
+  defaults, the full 10-degree joint grid, so the pages show what ``snakecg reproduce``
+  computes; only case study 1 is reduced (kappa = 100 alone, a coarser torque grid for Fig. 4).
+* Table 2: the directive ``<!-- snakecg-table2 -->`` on a line of its own is replaced by the
+  Markdown table that the same run wrote (``table2.md``, made by ``snakecg.table2``), with
+  its footnotes; ``<!-- snakecg-table2: caption -->`` adds the caption on the ||a_obj||^2
+  rows. No number of Table 2 is typed into a page.
 * ``figures/simulate/``: the figures and the animation of the push that the Simulation page's
   first example runs (``SIMULATION``).
 
-The run takes seconds; its output is kept in the snakecg cache folder under a key made of the
-package's sources, the checked-in generated models and this file, so a rebuild with nothing
-changed (``mkdocs serve``, the second build of CI) reuses it. Pages refer to the files as
-``figures/...``; ``mkdocs build --strict`` fails if one is missing.
+The runs take seconds to a minute; their output is kept in the snakecg cache folder under a
+key made of the package's sources, the checked-in generated models and this file, so a
+rebuild with nothing changed (``mkdocs serve``, the second build of CI) reuses it. Pages
+refer to the files as ``figures/...``; ``mkdocs build --strict`` fails if one is missing.
 """
 
 from __future__ import annotations
@@ -17,21 +22,24 @@ from __future__ import annotations
 import hashlib
 import logging
 import os
+import re
 import shutil
 import tempfile
 import time
 from pathlib import Path
 
+from mkdocs.exceptions import PluginError
 from mkdocs.structure.files import File
 
 log = logging.getLogger("mkdocs.hooks.snakecg.figures")
 
-#: The reduced reproduction: every joint on -135..135 deg every 30 deg (10^3 = 1,000 shapes of
-#: case study 2 instead of 21,952), a 91 x 91 torque grid instead of 181 x 181, kappa = 100 only.
-REDUCED = dict(kappas_case1=(100.0,), grid_step_deg=30.0, torque_grid=91, formats=("png",),
-               progress=False, jobs=1)
-REPRODUCE_FILES = ("fig4_kappa100.png", "fig5_polar.png", "fig6_configurations.png")
-#: The Simulation page's first example (docs/simulate.md).
+#: The site's reproduction: case study 2 on the defaults of ``snakecg reproduce`` (every joint
+#: on -135..135 deg every 10 deg, 21,952 shapes), so Figs. 5, 6 and Table 2 are the command's;
+#: case study 1 at kappa = 100 only, on a 91 x 91 torque grid instead of 181 x 181.
+SITE_RUN = dict(kappas_case1=(100.0,), torque_grid=91, formats=("png",), progress=False, jobs=1)
+REPRODUCE_FILES = ("fig4_kappa100.png", "fig5_polar.png", "fig6_configurations.png",
+                   "table2.md")
+#: The Simulation page's first example (docs/how-to/simulate.md).
 SIMULATION = dict(joints=4, scenario="wheels", kappa=10.0, mu=0.1, contact_link=3,
                   q_deg=(30.0, 40.0, 40.0, 30.0), tau=(0.05, 0.02, 0.02, 0.05), duration=0.5)
 SIMULATE_FILES = ("displacement.png", "slippage.png", "forces.png", "animation.gif")
@@ -50,7 +58,7 @@ def _key(root: Path) -> str:
 def _reproduce(folder: Path) -> None:
     from snakecg.reproduce import ReproduceOptions, reproduce
 
-    reproduce(ReproduceOptions(out=folder, **REDUCED), echo=lambda *a: None)
+    reproduce(ReproduceOptions(out=folder, **SITE_RUN), echo=lambda *a: None)
 
 
 def _simulate(folder: Path) -> None:
@@ -85,16 +93,44 @@ def _build(dest: Path) -> None:
         raise
 
 
+_DEST: Path | None = None  # the folder of this build's figures and Table 2
+
+
 def on_files(files, config):
+    global _DEST
     from snakecg.artifacts import cache_dir
 
     root = Path(config.config_file_path).resolve().parent
-    dest = cache_dir() / "docs-figures" / _key(root)
+    dest = _DEST = cache_dir() / "docs-figures" / _key(root)
     wanted = [("reproduce", n) for n in REPRODUCE_FILES] + [("simulate", n)
                                                             for n in SIMULATE_FILES]
     if not all((dest / a / n).is_file() for a, n in wanted):
         _build(dest)
     for sub, name in wanted:
+        if name.endswith(".md"):
+            continue  # read by on_page_markdown, not a page of the site
         files.append(File.generated(config, f"figures/{sub}/{name}",
                                     abs_src_path=str(dest / sub / name)))
     return files
+
+
+TABLE2 = re.compile(r"^<!--\s*snakecg-table2(?::\s*(?P<opt>[\w-]*))?\s*-->\s*$", re.MULTILINE)
+
+
+def on_page_markdown(markdown, page, config, files):
+    """``<!-- snakecg-table2 -->``: Table 2 of this build's run with its footnotes;
+    ``<!-- snakecg-table2: caption -->`` adds the caption (why the ||a_obj||^2 rows differ)."""
+    if "snakecg-table2" not in markdown:
+        return markdown
+    text = (_DEST / "reproduce" / "table2.md").read_text(encoding="utf-8")
+    table, _, rest = text.partition("\n\n")
+    notes, _, caption = rest.rstrip("\n").rpartition("\n\n")
+
+    def replace(m: re.Match) -> str:
+        opt = m.group("opt") or ""
+        if opt not in ("", "caption"):
+            raise PluginError(f"{page.file.src_uri}: unknown directive 'snakecg-table2: {opt}' "
+                              "(known: snakecg-table2, snakecg-table2: caption)")
+        return f"{table}\n\n{notes}\n" + (f"\n{caption}\n" if opt == "caption" else "")
+
+    return TABLE2.sub(replace, markdown)

@@ -30,11 +30,7 @@ log = logging.getLogger("mkdocs.hooks.snakecg.site")
 
 #: Pages in the nav that other contributors write: file -> (title, who writes it).
 EXPECTED_PAGES = {
-    "reproduction.md": ("Reproducing the paper", "the lead (`snakecg reproduce`)"),
-    "optimize.md": ("Optimal torque queries", "the optimization contributor"),
-    "simulate.md": ("Simulation", "the simulation contributor"),
-    "performance.md": ("Performance", "several contributors, one section each"),
-    "reliability.md": ("Reliability", "the reliability contributor"),
+    "explanation/architecture.md": ("Architecture", "another contributor"),
 }
 
 MATHJAX_CONFIG = """\
@@ -119,9 +115,9 @@ def on_files(files, config):
             f"adds while `docs/{name}` does not exist.\n"
         )
         # sections that written pages already link to get their anchors, so those links hold
-        anchors = sorted({a for page in docs.glob("*.md")
-                          for a in re.findall(rf"\({re.escape(name)}#([\w-]+)\)",
-                                              page.read_text(encoding="utf-8"))})
+        anchors = sorted({a for page in docs.rglob("*.md")
+                          for a in re.findall(rf"\((?:[\w./-]*/)?{re.escape(Path(name).name)}"
+                                              r"#([\w-]+)\)", page.read_text(encoding="utf-8"))})
         for anchor in anchors:
             text += f"\n## {anchor.replace('-', ' ').capitalize()} {{#{anchor}}}\n\nTo come.\n"
         files.append(File.generated(config, name, content=text))
