@@ -6,8 +6,9 @@
   computes; only case study 1 is reduced (kappa = 100 alone, a coarser torque grid for Fig. 4).
 * Table 2: the directive ``<!-- snakecg-table2 -->`` on a line of its own is replaced by the
   Markdown table that the same run wrote (``table2.md``, made by ``snakecg.table2``), with
-  its footnotes; ``<!-- snakecg-table2: caption -->`` adds the caption on the ||a_obj||^2
-  rows. No number of Table 2 is typed into a page.
+  its footnotes (the caption is left to the page's own text). No number of Table 2 is typed
+  into a page. ``<!-- snakecg-alternatives -->``: the
+  table of ``snakecg reproduce --alternatives`` (``alternatives.md``), from the same defaults.
 * ``figures/simulate/``: the figures and the animation of the push that the Simulation page's
   first example runs (``SIMULATION``).
 
@@ -28,7 +29,6 @@ import tempfile
 import time
 from pathlib import Path
 
-from mkdocs.exceptions import PluginError
 from mkdocs.structure.files import File
 
 log = logging.getLogger("mkdocs.hooks.snakecg.figures")
@@ -38,7 +38,7 @@ log = logging.getLogger("mkdocs.hooks.snakecg.figures")
 #: case study 1 at kappa = 100 only, on a 91 x 91 torque grid instead of 181 x 181.
 SITE_RUN = dict(kappas_case1=(100.0,), torque_grid=91, formats=("png",), progress=False, jobs=1)
 REPRODUCE_FILES = ("fig4_kappa100.png", "fig5_polar.png", "fig6_configurations.png",
-                   "table2.md")
+                   "table2.md", "alternatives.md")
 #: The Simulation page's first example (docs/how-to/simulate.md).
 SIMULATION = dict(joints=4, scenario="wheels", kappa=10.0, mu=0.1, contact_link=3,
                   q_deg=(30.0, 40.0, 40.0, 30.0), tau=(0.05, 0.02, 0.02, 0.05), duration=0.5)
@@ -58,7 +58,13 @@ def _key(root: Path) -> str:
 def _reproduce(folder: Path) -> None:
     from snakecg.reproduce import ReproduceOptions, reproduce
 
-    reproduce(ReproduceOptions(out=folder, **SITE_RUN), echo=lambda *a: None)
+    from snakecg._files import write_text
+    from snakecg.reproduce import alternative_readings
+
+    opts = ReproduceOptions(out=folder, **SITE_RUN)
+    reproduce(opts, echo=lambda *a: None)
+    # the table of `snakecg reproduce --alternatives`, on the command's defaults
+    write_text(folder / "alternatives.md", alternative_readings(opts))
 
 
 def _simulate(folder: Path) -> None:
@@ -114,23 +120,19 @@ def on_files(files, config):
     return files
 
 
-TABLE2 = re.compile(r"^<!--\s*snakecg-table2(?::\s*(?P<opt>[\w-]*))?\s*-->\s*$", re.MULTILINE)
+ALTERNATIVES = re.compile(r"^<!--\s*snakecg-alternatives\s*-->\s*$", re.MULTILINE)
+TABLE2 = re.compile(r"^<!--\s*snakecg-table2\s*-->\s*$", re.MULTILINE)
 
 
 def on_page_markdown(markdown, page, config, files):
-    """``<!-- snakecg-table2 -->``: Table 2 of this build's run with its footnotes;
-    ``<!-- snakecg-table2: caption -->`` adds the caption (why the ||a_obj||^2 rows differ)."""
-    if "snakecg-table2" not in markdown:
-        return markdown
-    text = (_DEST / "reproduce" / "table2.md").read_text(encoding="utf-8")
-    table, _, rest = text.partition("\n\n")
-    notes, _, caption = rest.rstrip("\n").rpartition("\n\n")
-
-    def replace(m: re.Match) -> str:
-        opt = m.group("opt") or ""
-        if opt not in ("", "caption"):
-            raise PluginError(f"{page.file.src_uri}: unknown directive 'snakecg-table2: {opt}' "
-                              "(known: snakecg-table2, snakecg-table2: caption)")
-        return f"{table}\n\n{notes}\n" + (f"\n{caption}\n" if opt == "caption" else "")
-
-    return TABLE2.sub(replace, markdown)
+    """``<!-- snakecg-table2 -->``: Table 2 of this build's run with its footnotes (its caption
+    is left to the page); ``<!-- snakecg-alternatives -->``: the alternatives table."""
+    if "snakecg-alternatives" in markdown:
+        text = (_DEST / "reproduce" / "alternatives.md").read_text(encoding="utf-8")
+        markdown = ALTERNATIVES.sub(lambda m: text.rstrip("\n") + "\n", markdown)
+    if "snakecg-table2" in markdown:
+        text = (_DEST / "reproduce" / "table2.md").read_text(encoding="utf-8")
+        table, _, rest = text.partition("\n\n")
+        notes = rest.rstrip("\n").rpartition("\n\n")[0]
+        markdown = TABLE2.sub(lambda m: f"{table}\n\n{notes}\n", markdown)
+    return markdown
