@@ -174,8 +174,12 @@ class ForwardResult:
         self._raw, self._cols = st["raw"], cols
 
     def to_dict(self) -> dict:
-        """JSON-ready dictionary (schema in docs/reference/cli.md)."""
-        return {k: np.asarray(getattr(self, k)).tolist() for k in _ORDER if k != "gap"}
+        """JSON-ready dictionary (schema in docs/reference/cli.md): every result field and, per
+        sample, ``reason`` ('' for an exact answer, else why the sample is flagged or NaN)."""
+        out = {k: np.asarray(getattr(self, k)).tolist() for k in _ORDER if k != "gap"}
+        reason = self.reason
+        out["reason"] = reason if isinstance(reason, str) else [str(r) for r in reason]
+        return out
 
     def __repr__(self) -> str:
         if self._raw.ndim == 2:

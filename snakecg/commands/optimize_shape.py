@@ -20,7 +20,8 @@ examples:
   snakecg optimize-shape strongest-push --joints 3 --scenario wheels --figure best.png
   snakecg optimize-shape max-sr --joints 3 --scenario frictionless --ignore-geometry --starts 16
 
-exit status: 0 optimal, 1 infeasible or failed (the result is still printed), 2 input error.
+exit status: 0 optimal, 1 any other status (stick_only: sliding pieces not searched;
+infeasible; failed; the result is still printed), 2 input error.
 """
 
 CLI_OBJECTIVES = ("max-sr", "strongest-push", "least-slip-push", "max-a-obj")
