@@ -56,10 +56,8 @@ def _key(root: Path) -> str:
 
 
 def _reproduce(folder: Path) -> None:
-    from snakecg.reproduce import ReproduceOptions, reproduce
-
     from snakecg._files import write_text
-    from snakecg.reproduce import alternative_readings
+    from snakecg.reproduce import ReproduceOptions, alternative_readings, reproduce
 
     opts = ReproduceOptions(out=folder, **SITE_RUN)
     reproduce(opts, echo=lambda *a: None)
