@@ -16,7 +16,7 @@ __all__ = ["derive_model", "ModelDerivation", "program_operation_count", "CLOSED
 
 #: Beyond this joint count the ``O(n^3)`` closed form and the suffix-sum form of ``M_s`` are not
 #: derived for the operation-count comparison (they lose by more at every joint count above
-#: one, and cost derivation time; see docs/reference/performance.md for the measured counts).
+#: one, and cost derivation time; see docs/performance.md for the measured counts).
 CLOSED_FORM_MAX_JOINTS = 8
 
 

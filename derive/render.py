@@ -206,8 +206,7 @@ def build_functions(spec: ModelSpec, algebra: str = "sx"):
 
 #: Functions with more operations than this are compiled with GCC's partial-redundancy
 #: elimination and code hoisting off: on straight-line code of that size those two passes are
-#: superlinear (33 s instead of 8 s for ``interaction_maps`` at n_a = 10,
-#: docs/reference/performance.md).
+#: superlinear (33 s instead of 8 s for ``interaction_maps`` at n_a = 10, docs/performance.md).
 LARGE_FUNCTION_OPERATIONS = 5000
 
 
@@ -232,7 +231,7 @@ def _signature(f, prefix: str, doc: str = "") -> dict:
 #: Per-link functions whose batched driver computes the sines and cosines of a block of
 #: samples at once (vectorized) and calls the function's ``_sincos`` variant per sample
 #: (:func:`.build.build_sincos_function`): about 85 % of the time of ``mass_matrix`` at
-#: n_a = 3 was its C library ``sincos`` calls (docs/reference/performance.md).
+#: n_a = 3 was its C library ``sincos`` calls (docs/performance.md).
 SINCOS_BATCHED = ("mass_matrix",)
 
 
@@ -289,8 +288,7 @@ def _sha(text: str) -> str:
 
 
 #: Up to this joint count the composed functions are unrolled scalar (SX) code, above it they
-#: keep their matrices (MX: linear-solve nodes and loops). Measured
-#: (docs/reference/performance.md): at
+#: keep their matrices (MX: linear-solve nodes and loops). Measured (docs/performance.md): at
 #: n_a = 6 both evaluate in CasADi's VM within a factor two of each other, while at n_a = 20
 #: the MX form emits 1.4 MB of C instead of 12 MB; the checked-in 1..6 stay SX so that small
 #: robots keep their unrolled speed.

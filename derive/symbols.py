@@ -1,6 +1,6 @@
 """Ordered SymPy symbols of a planar snake with ``n_a`` joints.
 
-Conventions (also in ``docs/explanation/model.md``):
+Conventions (also in ``docs/model.md``):
 
 * ``n_l = n_a + 1`` rigid links; link 1 is the tail. Generalized coordinates
   ``q_s = (x, y, theta, q_1 ... q_na)``, ``n_s = n_a + 3``: ``(x, y)`` is the COM of link 1 in

@@ -1,6 +1,6 @@
 """Ordered SymPy symbols of a spatial serial chain on a floating base.
 
-Conventions (Pinocchio's, so that comparisons are direct; also in ``docs/how-to/spatial.md``):
+Conventions (Pinocchio's, so that comparisons are direct; also in ``docs/spatial.md``):
 
 * ``n_l`` rigid links, ``n_a = n_l - 1`` revolute joints; link 1 is the base (the tail).
   Joint ``j`` joins link ``j`` (parent) to link ``j + 1`` (child).
@@ -141,7 +141,7 @@ class SpatialSymbols:
     # derived parameters (in each link's *axis frame*: the joint axis along z) ---------------
     # Link i's axis frame is its frame turned by P_i, a fixed rotation with P_i e_z = a_{i-1}
     # (P_1 = 1 for the base). In it a joint turns about z, so a link's rotation costs one
-    # constant 3x3 product and one planar rotation (docs/how-to/spatial.md).
+    # constant 3x3 product and one planar rotation (docs/spatial.md).
     @cached_property
     def axis_frame(self) -> tuple[tuple[sp.Symbol, ...], ...]:
         """``P_i`` (column-major, 9 each) for links 2..n_l."""
