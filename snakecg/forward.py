@@ -90,7 +90,7 @@ class ForwardResult:
       where weakly independent rows are solved from the rows themselves, ``snakecg.rows``) and
       the mass matrix's; ``singular``: not an exact answer (conditioning 0): rows dependent even
       when factored directly (least-norm forces), a numerically singular mass matrix, or a
-      physically impossible result (docs/scenarios.md).
+      physically impossible result (docs/explanation/scenarios.md).
 
     The fields are views into one float64 array (``result.raw``, a row per sample);
     ``result[i]`` is sample ``i`` of a batch.
@@ -174,8 +174,8 @@ class ForwardResult:
         self._raw, self._cols = st["raw"], cols
 
     def to_dict(self) -> dict:
-        """JSON-ready dictionary (schema in docs/cli.md): every result field and, per sample,
-        ``reason`` ('' for an exact answer, else why the sample is flagged or NaN)."""
+        """JSON-ready dictionary (schema in docs/reference/cli.md): every result field and, per
+        sample, ``reason`` ('' for an exact answer, else why the sample is flagged or NaN)."""
         out = {k: np.asarray(getattr(self, k)).tolist() for k in _ORDER if k != "gap"}
         reason = self.reason
         out["reason"] = reason if isinstance(reason, str) else [str(r) for r in reason]

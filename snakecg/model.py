@@ -205,7 +205,7 @@ class RobotModel:
         m = np.asarray(self.robot.mass)
         return np.einsum("...ik,i->...k", P[..., :2], m) / m.sum()
 
-    # CasADi functions as public API (snakecg.casadi_api, docs/casadi.md) -------------------
+    # CasADi functions as public API (snakecg.casadi_api, docs/how-to/casadi.md) -------------------
     def casadi_function(self, name: str, *, bind: bool = False, **inputs):
         """The generated :class:`casadi.Function` ``name`` (e.g. ``"constrained_dynamics"``).
 
@@ -570,7 +570,7 @@ class SceneModel(RobotModel):
         ``direction``, ``a_min``, ``a_obj``, ``allow_slide``.
         Returns an :class:`~snakecg.optimize.OptimizeResult` (``tau``, ``status`` with
         ``reason``, ``analysis`` = the forward result at ``tau``); see
-        :func:`snakecg.optimize.optimize` and docs/optimize.md.
+        :func:`snakecg.optimize.optimize` and docs/how-to/optimize.md.
         """
         run = _LAZY.get("optimize")
         if run is None:  # imported once (an import inside every call costs microseconds)
@@ -592,7 +592,7 @@ class SceneModel(RobotModel):
         breaking away and sticking again are events. Returns a
         :class:`~snakecg.simulate.Trajectory` (``t``, ``q``, ``v``, ``q_obj``, ``v_obj``,
         ``lam``, ``contact``, ``wheel_state``, ... and ``summary``); keywords and details in
-        :func:`snakecg.simulate.simulate` and docs/simulate.md.
+        :func:`snakecg.simulate.simulate` and docs/how-to/simulate.md.
         """
         from .simulate import simulate
 
@@ -605,7 +605,7 @@ class SceneModel(RobotModel):
         generated functions, multi-started from a coarse grid, under joint limits and (with
         ``feasible=True``) no self-intersection or object penetration. Returns an
         :class:`~snakecg.shape.OptimizeShapeResult`; see :func:`snakecg.shape.optimize_shape`
-        and docs/shapes.md.
+        and docs/how-to/shapes.md.
         """
         from .shape import optimize_shape
 

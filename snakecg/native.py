@@ -50,7 +50,8 @@ LARGE_FLAGS = ["-fno-tree-pre", "-fno-code-hoisting"]
 SETUP_FUNCTIONS = frozenset({"derived_parameters"})
 SETUP_FLAGS = ["-O1", "-fPIC"]
 #: The runtime core's own C files (small loops over the model's sizes, known when compiling):
-#: -O3 unrolls and vectorizes them, about 5 % of a batched `forward` (docs/performance.md).
+#: -O3 unrolls and vectorizes them, about 5 % of a batched `forward`
+#: (docs/reference/performance.md).
 CORE_FLAGS = ["-O3", "-fPIC"]
 _warned: set[str] = set()
 #: The runtime core compiled into every model's library (fixed C files of the runtime).

@@ -244,8 +244,8 @@ class Robot:
         axes, COMs on the links' axes) gives a planar :class:`Robot` (masses, joint-to-joint
         lengths, COM offsets, inertias about the joint axis), any other chain a
         :class:`~snakecg.SpatialRobot`; branches and other joints are refused naming the
-        element. Needs the ``urdf`` extra; see :mod:`snakecg.urdf`, docs/urdf.md and
-        docs/spatial.md."""
+        element. Needs the ``urdf`` extra; see :mod:`snakecg.urdf`, docs/how-to/urdf.md and
+        docs/how-to/spatial.md."""
         from .spatial.files import spatial_chain_or_planar
         from .urdf import robot_from_urdf
 
@@ -256,7 +256,7 @@ class Robot:
     def from_mjcf(cls, path: str | Path, *, tol: float = 1e-6, name: str | None = None):
         """Read a serial chain of hinges on a free root from a MuJoCo XML file (MuJoCo's own
         parser, the ``mjcf`` extra): a planar :class:`Robot` when the chain is planar, else a
-        :class:`~snakecg.SpatialRobot`; see docs/spatial.md."""
+        :class:`~snakecg.SpatialRobot`; see docs/how-to/spatial.md."""
         from .spatial.files import spatial_chain_or_planar
 
         return spatial_chain_or_planar("mjcf", path, name, None, tol=tol)

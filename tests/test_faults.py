@@ -525,7 +525,7 @@ def test_manifest_signature_that_disagrees_with_the_code_is_rebuilt(backend, fre
     """The manifest is JSON, not hashed itself: an edit that keeps it valid JSON and leaves
     the files' hashes alone never sizes the output buffers of the compiled drivers (they
     would write past their ends): the functions' own signatures are compared on loading, and
-    the model folder is then generated again (docs/reliability.md), reported once in one
+    the model folder is then generated again (docs/explanation/reliability.md), reported once in one
     line. The rebuilt model's mass matrix obeys the physics: M_xx = M_yy = m_1 + m_2."""
     if backend == "compiled" and native.find_compiler() is None:
         pytest.skip("no C compiler on this machine")

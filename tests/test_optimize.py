@@ -520,7 +520,7 @@ def _run(argv):
 
 
 def _documented_fields() -> set[str]:
-    text = (DOCS / "optimize.md").read_text(encoding="utf-8")
+    text = (DOCS / "how-to" / "optimize.md").read_text(encoding="utf-8")
     start = text.index("## JSON output")
     rows = [r for r in text[start:].splitlines() if r.startswith("| `")]
     return {re.match(r"\| `([^`]+)`", r).group(1) for r in rows}

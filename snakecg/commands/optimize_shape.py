@@ -81,7 +81,7 @@ def register(sub) -> None:
     p.add_argument("--figure", metavar="FILE",
                    help=f"draw the best shape and the object ({', '.join(FIGURE_SUFFIXES)})")
     p.add_argument("--json", action="store_true",
-                   help=f"print JSON (schema {SCHEMA}, docs/shapes.md)")
+                   help=f"print JSON (schema {SCHEMA}, docs/how-to/shapes.md)")
     p.set_defaults(run=run)
 
 

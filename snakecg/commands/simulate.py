@@ -37,7 +37,7 @@ def register(sub) -> None:
         "--tau, or with the least-slippage push query as a feedback law (--controller). "
         "Contact separation, impacts and wheels breaking away or sticking again are events. "
         "Writes the trajectory (trajectory.npz), the summary (summary.json), figures (PNG) and "
-        "an animation (GIF) to --out; --json prints the summary (docs/simulate.md).",
+        "an animation (GIF) to --out; --json prints the summary (docs/how-to/simulate.md).",
         epilog=EXAMPLES,
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )

@@ -1,4 +1,5 @@
-/* snakecg's runtime core: max_sr with every constraint row held (optimal.h, docs/optimize.md).
+/* snakecg's runtime core: max_sr with every constraint row held (optimal.h,
+ * docs/how-to/optimize.md).
  *
  * This file is part of the runtime (not generated), compiled once per model into the model's
  * shared library.

@@ -1,6 +1,6 @@
 /* snakecg's runtime core: the optimal-torque queries of snakecg.optimize, every objective and
  * every input region, for a batch of configurations in one call (types and codes in
- * optimal.h; the methods in docs/optimize.md).
+ * optimal.h; the methods in docs/how-to/optimize.md).
  *
  * This file is part of the runtime (not generated); like forward.c it is compiled once per
  * model into the model's shared library. It holds the batch loop, what the kinds share and

@@ -1,7 +1,7 @@
 /* snakecg's runtime core: the optimal-torque queries (maps.c, optimal.c, max_sr.c, push.c,
  * wheel_states.c).
  *
- * One call answers a batch of configurations, each by the same steps (docs/optimize.md):
+ * One call answers a batch of configurations, each by the same steps (docs/how-to/optimize.md):
  * the system at rest with the object placed (the generated contact_system at rest), the
  * all-held maps of eqs. (17), (22), (24), (28), (29), (31) (maps.c), the query's solve
  * (max_sr.c, push.c, wheel_states.c on the QP block of qp.c), the optimality certificate on the

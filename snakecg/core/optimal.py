@@ -64,7 +64,7 @@ def _workers(n: int) -> int:
     """Threads for a batch of ``n`` configurations: one, unless ``SNAKECG_THREADS`` asks for
     more and each of them gets ``PARALLEL_MIN`` configurations at least. A configuration takes
     a few microseconds, so the split pays only with cores to spare, which a shared machine
-    rarely has: on the 2-core machine of docs/performance.md, shared with other work, two
+    rarely has: on the 2-core machine of docs/reference/performance.md, shared with other work, two
     threads never ran faster than one (16,000 configurations: 4.6 us per configuration
     either way; the second core was busy), so one thread is the default."""
     raw = os.environ.get("SNAKECG_THREADS")

@@ -1,5 +1,5 @@
 /* snakecg's runtime core: the push tasks least_slip_push and strongest_push (optimal.h,
- * docs/optimize.md).
+ * docs/how-to/optimize.md).
  *
  * This file is part of the runtime (not generated), compiled once per model into the model's
  * shared library.

@@ -129,7 +129,7 @@ SC_INTERNAL int sc_nnls(sc_int n, sc_int k, const double *C, const double *d, do
  * stationarity condition (the normal equations of the unit-scaled active columns, or
  * non-negative least squares when their signs bind or they are dependent); `values` receives
  * stationarity, primal feasibility, complementarity and (convex only, else NaN) the duality
- * gap f(x) - d(lam), each relative (docs/optimize.md), and the multipliers of the rows
+ * gap f(x) - d(lam), each relative (docs/how-to/optimize.md), and the multipliers of the rows
  * (lam, m: signed as in sc_qp_solution) and of Q (*mu), when those pointers are not null. */
 SC_INTERNAL void sc_kkt_certificate(sc_int n, const double *x, const double *H, const double *c,
                                     sc_int m, const double *G, const double *lo,

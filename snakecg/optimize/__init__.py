@@ -26,7 +26,7 @@ the exact forward solve at the answer and checks it. This package validates the 
 (:mod:`~snakecg.optimize.api`) and words the answers (:mod:`~snakecg.optimize.answers`,
 :mod:`~snakecg.optimize.result`). A batch of one is the single call, bit for bit.
 
-Structure used (see docs/optimize.md for the derivations):
+Structure used (see docs/how-to/optimize.md for the derivations):
 
 1. With every constraint row held (contact kept, wheels sticking) the system at rest is
    linear in ``tau`` (eqs. 17, 22, 24): ``lam = L tau``, ``a_obj = A tau``,

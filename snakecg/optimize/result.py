@@ -10,7 +10,8 @@ import numpy as np
 #: Objective names (the CLI spells them with dashes).
 OBJECTIVES = ("max_sr", "least_slip_push", "strongest_push")
 STATUSES = ("optimal", "infeasible", "failed")
-#: Version of :meth:`OptimizeResult.to_dict` and ``snakecg optimize --json`` (docs/optimize.md).
+#: Version of :meth:`OptimizeResult.to_dict` and ``snakecg optimize --json``
+#: (docs/how-to/optimize.md).
 SCHEMA = "snakecg.optimize/1"
 
 #: Relative back-off from the friction bounds, so the exact forward solve sees the wheels stick.
@@ -148,7 +149,7 @@ class OptimizeResult:
         return notes[0] if single else np.array(notes, dtype=object)
 
     def to_dict(self) -> dict:
-        """JSON-ready dictionary (schema ``snakecg.optimize/1``, docs/optimize.md)."""
+        """JSON-ready dictionary (schema ``snakecg.optimize/1``, docs/how-to/optimize.md)."""
         an = self.analysis.to_dict()
         for k in ("contact", "singular"):
             v = np.asarray(getattr(self.analysis, k))
@@ -227,7 +228,7 @@ class Certificate:
     reason: str = ""
 
     def to_dict(self) -> dict:
-        """JSON-ready dictionary (the ``certificate`` object of docs/optimize.md)."""
+        """JSON-ready dictionary (the ``certificate`` object of docs/how-to/optimize.md)."""
         return {k: _plain(getattr(self, k)) for k in self.__dataclass_fields__}
 
 

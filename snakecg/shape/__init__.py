@@ -26,7 +26,7 @@ coarse grid scored by the exact inner optimum over the torque; the best run wins
 broken by the joint angles, so the answer does not depend on the order of the starts. At the
 answer the torque is recomputed by the exact per-configuration optimizer
 (:func:`snakecg.optimize.optimize`; for ``max_a_obj`` the closed form or IPOPT's torque) and
-checked by the forward analysis. See docs/shapes.md.
+checked by the forward analysis. See docs/how-to/shapes.md.
 """
 
 from __future__ import annotations
@@ -109,7 +109,7 @@ class OptimizeShapeResult:
         return self.status == "optimal"
 
     def to_dict(self) -> dict:
-        """JSON-ready dictionary (schema ``snakecg.optimize_shape/1``, docs/shapes.md)."""
+        """JSON-ready dictionary (schema ``snakecg.optimize_shape/1``, docs/how-to/shapes.md)."""
         an = self.analysis.to_dict() if self.analysis is not None else None
         if an is not None:
             for k in ("contact", "singular"):

@@ -2,7 +2,7 @@
 
 :class:`SpatialRobot` describes one (from Python, a URDF or an MJCF file);
 ``snakecg.load(robot)`` gives its compiled :class:`SpatialModel` (mass matrix, Jacobians,
-bias forces, poses, constraint rows; see docs/spatial.md).
+bias forces, poses, constraint rows; see docs/how-to/spatial.md).
 """
 
 from .robot import SpatialRobot
