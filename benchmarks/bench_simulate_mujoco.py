@@ -149,12 +149,12 @@ def main() -> None:
     print(f"{DURATION} s push at n_a = {args.joints}, frictionless, kappa = 10, tau = "
           f"{np.array2string(tau, precision=4)} N m; the object moves {moved * 1e3:.2f} mm; "
           f"contact tolerance {tol:.2g} m; simulated s per CPU s (median of {args.repeat})\n")
-    header = (f"{'engine':<27} {'step (s)':>9} {'depth (m)':>9} {'sim s/CPU s':>11}"
+    header = (f"{'engine':<40} {'step (s)':>9} {'depth (m)':>9} {'sim s/CPU s':>11}"
               f" {'snakecg/x':>9} {'diff obj':>9} {'diff COM':>9}")
     print(header)
     print("-" * len(header))
     rate = DURATION / cpu
-    print(f"{'snakecg simulate (DOP853)':<27} {'adaptive':>9} {'model':>9} {rate:>11.0f}"
+    print(f"{'snakecg simulate (DOP853)':<40} {'adaptive':>9} {'model':>9} {rate:>11.4g}"
           f" {1.0:>9.2f} {0.0:>9.1e} {0.0:>9.1e}")
     com_end = traj.com[-1]
     for geometry in OBJECTS:
@@ -162,7 +162,7 @@ def main() -> None:
             dt, depth = admissible_step(scene, q0, q_obj0, rho, tau, geometry, integrator, tol)
             name = f"MuJoCo {geometry} {integrator}"
             if dt is None:
-                print(f"{name:<27} {'none':>9} {depth:>9.1e}  (no step of {STEPS[-1]:g} s or "
+                print(f"{name:<40} {'none':>9} {depth:>9.1e}  (no step of {STEPS[-1]:g} s or "
                       "more meets the tolerance)")
                 continue
             t_loop, t_c, (q, q_obj, com), same = mujoco_timed(
@@ -171,7 +171,7 @@ def main() -> None:
             d_com = np.abs(com - com_end).max()
             for kind, t in (("mj_step loop", t_loop), ("rollout", t_c)):
                 r = DURATION / t
-                print(f"{name + ', ' + kind:<27} {dt:>9.0e} {depth:>9.1e} {r:>11.0f}"
+                print(f"{name + ', ' + kind:<40} {dt:>9.0e} {depth:>9.1e} {r:>11.4g}"
                       f" {rate / r:>9.2f} {d_obj:>9.1e} {d_com:>9.1e}")
             if same > 1e-12:
                 print(f"    (the rollout's final state differs from the loop's by {same:.1e})")

@@ -173,7 +173,7 @@ def test_impact_matches_mujoco(w_model):
     contact gives back part of the closing speed and leaves the object 1e-5 m ahead), RK4 at
     1e-5 s. Measured: object 8e-9 m (of 43 mm moved), COM 1e-8 m, joints 9e-7 rad, the
     object's final velocity 3e-9 m/s. MuJoCo's contact goes 5.4e-7 m deep while it stops the
-    closing speed (about speed x time constant / 4 here): deeper than snakecg's tolerance,
+    closing speed (of the order of the speed times the time constant): deeper than snakecg's tolerance,
     which MuJoCo meets only with a step ten times shorter."""
     model = w_model
     q0 = np.r_[0.0, 0.0, 0.0, np.deg2rad(W_DEG)]
