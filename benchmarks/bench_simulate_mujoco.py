@@ -41,24 +41,18 @@ from pathlib import Path
 
 import numpy as np
 
-import snakecg
 from snakecg.geometry import contact_tolerance
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))  # the matched model
-from bench_simulate import setup  # noqa: E402  (benchmarks/bench_simulate.py)
-from mujoco_scene import matched_scene  # noqa: E402  (tests/mujoco_scene.py)
+from bench_simulate import _load, setup  # benchmarks/bench_simulate.py
+from mujoco_scene import matched_scene  # tests/mujoco_scene.py
 
 DURATION = 0.5
 STEPS = (2e-3, 1e-3, 5e-4, 2e-4, 1e-4, 5e-5, 2e-5, 1e-5, 5e-6, 2e-6, 1e-6)
 INTEGRATORS = ("RK4", "implicitfast")
 OBJECTS = ("point", "box")
 LINK_RADIUS = 1e-6  # m: the point model touches the line to 2 r (1 - cos theta)
-
-
-def _load() -> str:
-    with open("/proc/loadavg") as f:
-        return " ".join(f.read().split()[:3])
 
 
 def cpu_median(fn, repeat: int):
@@ -71,8 +65,9 @@ def cpu_median(fn, repeat: int):
 
 
 def snakecg_run(sm, q0, tau, repeat: int):
-    run = lambda: sm.simulate(q0, tau, DURATION, output_dt=DURATION,  # noqa: E731
-                              geometry_check="report")
+    def run():
+        return sm.simulate(q0, tau, DURATION, output_dt=DURATION, geometry_check="report")
+
     run()  # warm up
     return cpu_median(run, repeat)
 
@@ -100,7 +95,7 @@ def mujoco_timed(scene, q0, q_obj0, rho, tau, geometry, integrator, dt, repeat: 
     mj = matched_scene(scene, timestep=dt, integrator=integrator, object_geometry=geometry,
                        rho=rho, link_radius=LINK_RADIUS)
     m, d = mj.model, mj.data
-    n = int(round(DURATION / dt))
+    n = round(DURATION / dt)
 
     def loop():
         mj.set_state(q0, q_obj=q_obj0)
@@ -165,7 +160,7 @@ def main() -> None:
                 print(f"{name:<40} {'none':>9} {depth:>9.1e}  (no step of {STEPS[-1]:g} s or "
                       "more meets the tolerance)")
                 continue
-            t_loop, t_c, (q, q_obj, com), same = mujoco_timed(
+            t_loop, t_c, (_, q_obj, com), same = mujoco_timed(
                 scene, q0, q_obj0, rho, tau, geometry, integrator, dt, args.repeat)
             d_obj = np.abs(q_obj[:2] - traj.q_obj[-1, :2]).max()
             d_com = np.abs(com - com_end).max()

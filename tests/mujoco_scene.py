@@ -191,11 +191,11 @@ class MatchedScene:
         ``v_obj``, ``com`` and the largest penetration over every step, ``max_depth``."""
         mj, m, d, ns = self.mujoco, self.model, self.data, self.ns
         dt = m.opt.timestep
-        n_steps = int(round(duration / dt))
+        n_steps = round(duration / dt)
         law = callable(tau)
         if not law:
             d.qfrc_applied[3:ns] = np.asarray(tau, float)
-        every = 1 if control_period is None else max(1, int(round(control_period / dt)))
+        every = 1 if control_period is None else max(1, round(control_period / dt))
         if times is None:
             marks = np.arange(n_steps + 1)
         else:

@@ -103,9 +103,9 @@ def test_paper_push_model_matches_mujocos_point_contact():
     ``"point"`` object is that model: a point (a 1e-6 m sphere) fixed in the object against
     the contact link's capsule. RK4 at 2e-4 s: measured object 8e-9 m (of 5.7 mm moved),
     COM 2e-8 m, the object's angle 2e-6 rad and link 1's 5e-6 rad (the soft contact's
-    7e-8 m depth, 0.05 m from the object's COM), MuJoCo's deepest contact 7e-8 m. MuJoCo's box instead, the physical plate,
-    turns on its edge: the object ends 1.2 mm and the COM 2.9 mm away from the model's (the
-    page docs/explanation/simulation-vs-mujoco.md)."""
+    7e-8 m depth, 0.05 m from the object's COM), MuJoCo's deepest contact 7e-8 m.
+    MuJoCo's box instead, the physical plate, turns on its edge: the object ends 1.2 mm and
+    the COM 2.9 mm away from the model's (docs/explanation/simulation-vs-mujoco.md)."""
     scene = snakecg.Scene(snakecg.Robot(joints=3), scenario="frictionless", kappa=10.0)
     model = snakecg.load(scene)
     q0 = np.r_[0.0, 0.0, 0.0, np.deg2rad([30.0, -35.0, 25.0])]
@@ -173,8 +173,8 @@ def test_impact_matches_mujoco(w_model):
     contact gives back part of the closing speed and leaves the object 1e-5 m ahead), RK4 at
     1e-5 s. Measured: object 8e-9 m (of 43 mm moved), COM 1e-8 m, joints 9e-7 rad, the
     object's final velocity 3e-9 m/s. MuJoCo's contact goes 5.4e-7 m deep while it stops the
-    closing speed (of the order of the speed times the time constant): deeper than snakecg's tolerance,
-    which MuJoCo meets only with a step ten times shorter."""
+    closing speed (of the order of the speed times the time constant): deeper than
+    snakecg's tolerance, which MuJoCo meets only with a step ten times shorter."""
     model = w_model
     q0 = np.r_[0.0, 0.0, 0.0, np.deg2rad(W_DEG)]
     q_obj, rho, _ = model.place_object(q0)
