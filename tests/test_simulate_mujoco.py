@@ -4,9 +4,10 @@ the contact link's line beyond its ends (no event; found while comparing).
 
 What MuJoCo differs in, and so what the margins allow for:
 
-* its contacts are soft: a held contact sits a little inside (a steady depth of
-  ``(1 - d)/d * a_0 * (2 timestep)^2``, here 2e-8..4e-8 m), which shifts the object against
-  the snake by that much;
+* its contacts are soft: a held contact sits a little inside (about
+  ``(1 - d)/d * a_0 * (2 timestep)^2``, ``a_0`` the gap's acceleration without the contact:
+  here up to 2e-8..4e-8 m at 1e-4 s), which shifts the object against the snake by that
+  much;
 * an impact is not an instant: the contact spring-damper (time constant ``2 timestep``)
   stops the closing speed over a few steps and, underdamped or critically damped, gives a
   little back when it lets go (a critically damped contact returns about e^-2 of the
