@@ -151,7 +151,7 @@ static int handle(sc_run *R, sc_int e, const double *y_e, sc_int *off_link) {
   } else if (kind == EV_GAP) {
     const double s = point[NY + 2 * NC + 1];
     if (-R->gtol <= s && s <= sg->l_k + R->gtol) candidate = 1;
-    else forced[0] = LOST;
+    else forced[0] = LOST, *off_link = 1; /* passed the link beyond its ends (Events.handle) */
   } else if (kind == EV_BREAKAWAY) {
     forced[row] = point[NY + row] > 0 ? SLIDE_POS : SLIDE_NEG;
   } else {

@@ -151,8 +151,9 @@ class Events:
                 s = self._point(t, y, mode)[1]
                 if -self.gtol <= s <= dyn.l_k + self.gtol:
                     contact_candidate = True
-                else:
-                    forced[0] = LOST
+                else:  # the point crossed the link's line beyond its ends: it has passed
+                    forced[0] = LOST  # the link, and is not looked for again (else the
+                    off_link = True  # crossing, a no-op, fires again at once)
             elif ev.kind == "breakaway":
                 lam = self._point(t, y, mode)[0]
                 forced[ev.row] = SLIDE_POS if lam[ev.row] > 0 else SLIDE_NEG
