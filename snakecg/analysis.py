@@ -367,7 +367,8 @@ def _quadratic_extremes_for(model, qa, scenario: str):
     from .model import SceneModel
 
     other = SceneModel(model.scene.replace(scenario=scenario, wheel_links=model.scene.wheel_links,
-                                           contact_offset=model.scene.contact_offset))
+                                           contact_offset=model.scene.contact_offset),
+                       backend=model.backend_kind)
     return _quadratic_extremes(other, qa)
 
 

@@ -492,7 +492,6 @@ class CasadiBackend:
                 continue
             self._fns[sig["name"]] = f
         self._maps: dict[tuple[str, int], object] = {}
-        problems = []
         for sig in manifest["functions"]:
             f = self._fns.get(sig["name"])
             if f is None:
