@@ -1,7 +1,7 @@
 """The forward analysis of a scene (eqs. 12-30): accelerations, constraint forces, active set,
 norms and the slippage ratio, for one sample or a batch.
 
-Every sample is solved by the compiled runtime core (:mod:`snakecg.core`): one C call for the
+Every sample is solved by the compiled runtime core (:mod:`snakecg.engine`): one C call for the
 whole batch. The rare samples it marks (dependent or weakly independent held rows, no
 convergence, an ill-conditioned mass matrix, an impossible result), and every sample on the
 CasADi backend, take the reference path: the vectorized active-set iteration of
@@ -9,7 +9,7 @@ CasADi backend, take the reference path: the vectorized active-set iteration of
 :mod:`snakecg.rows` (rows factored directly, conditioning, physical checks).
 
 Results are rows of one float64 array (:class:`ForwardResult` views into it), laid out by
-:class:`snakecg.core.Layout`; ``out=`` reuses the array of an earlier result.
+:class:`snakecg.engine.Layout`; ``out=`` reuses the array of an earlier result.
 """
 
 from __future__ import annotations
@@ -20,7 +20,7 @@ import numpy as np
 
 from . import kernels
 from ._inputs import CHUNK_ROWS, as_batch, broadcast_batches, check_batch_memory
-from .core import STATUS_EXACT, Data
+from .engine import STATUS_EXACT, Data
 from .errors import InputError
 from .rows import finish as finish_rows
 from .rows import reason_of
@@ -117,7 +117,7 @@ class ForwardResult:
     @property
     def raw(self) -> np.ndarray:
         """The result's rows (``(width,)`` or ``(N, width)``), laid out by
-        :class:`snakecg.core.Layout`."""
+        :class:`snakecg.engine.Layout`."""
         return self._raw
 
     @property
@@ -300,7 +300,7 @@ PARALLEL_MIN = 512
 
 def _core_batch(model, core, parts: dict, n: int, iters: int, raw: np.ndarray) -> int:
     """The C core over the batch (in chunks on threads for a large one): its status."""
-    from .core.layout import INPUTS
+    from .engine.layout import INPUTS
     from .native import pool, threads
 
     zeros = model.zero_inputs

@@ -20,7 +20,7 @@ from ._inputs import (
     broadcast_batches,
     check_batch_memory,
 )
-from .core import Data, Layout
+from .engine import Data, Layout
 from .errors import InputError
 from .forward import ForwardResult, _Columns, forward, forward_one
 from .native import ManifestMismatch, load_backend
@@ -276,7 +276,7 @@ class SceneModel(RobotModel):
             bounds[1:] = np.asarray(scene.wheel_bounds())
         self.bounds = bounds
         # the runtime core: the scene's constants in one vector, the output columns, a
-        # default workspace (snakecg.core.Data)
+        # default workspace (snakecg.engine.Data)
         self.core = getattr(self.backend, "core", None)
         layout = self.core.layout if self.core is not None else Layout.of(self.manifest)
         self.columns = _Columns(layout)
@@ -332,7 +332,7 @@ class SceneModel(RobotModel):
 
     # forward -------------------------------------------------------------------------------
     def create_data(self) -> Data:
-        """A new workspace for this model (:class:`snakecg.core.Data`): give one to each
+        """A new workspace for this model (:class:`snakecg.engine.Data`): give one to each
         thread that calls :meth:`forward` on one sample at a high rate (``data=``)."""
         return Data(self.core.layout if self.core is not None else Layout.of(self.manifest))
 
@@ -352,7 +352,7 @@ class SceneModel(RobotModel):
         touching the contact link at ``contact_offset``). ``data``: a workspace from
         :meth:`create_data` (one per thread); ``out``: an earlier result of the same shape
         whose array is overwritten (no allocation). Solved in compiled code per sample
-        (:mod:`snakecg.core`); see :mod:`snakecg.forward`.
+        (:mod:`snakecg.engine`); see :mod:`snakecg.forward`.
         """
         core = self.core
         if (core is not None and v is None and v_obj is None and f_obj is None and q_obj is None

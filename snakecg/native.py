@@ -53,19 +53,15 @@ SETUP_FLAGS = ["-O1", "-fPIC"]
 #: -O3 unrolls and vectorizes them, about 5 % of a batched `forward` (docs/performance.md).
 CORE_FLAGS = ["-O3", "-fPIC"]
 _warned: set[str] = set()
-#: The runtime core compiled into every model's library (fixed C files of the runtime).
-CORE_SOURCE = Path(__file__).resolve().parent / "core" / "forward.c"
-CORE_SOURCES = tuple(CORE_SOURCE.with_name(name)
-                     for name in ("forward.c", "integrate.c", "settle.c", "run.c", "sphere.c",
-                                  "pieces.c", "maps.c", "qp.c", "optimal.c", "max_sr.c",
-                                  "push.c", "wheel_states.c"))
-#: The header they share (work arrays, contact_system, the held rows' forces).
-CORE_HEADER = CORE_SOURCE.with_name("common.h")
-#: Every header of the runtime core (linalg.h: the small dense linear algebra; qp.h: the dense
-#: QP block; optimal.h: the optimal-torque queries' types and prototypes; geometry.h: the
-#: simulation's contact check).
-CORE_HEADERS = (CORE_HEADER, *(CORE_SOURCE.with_name(name)
-                               for name in ("linalg.h", "qp.h", "optimal.h", "geometry.h")))
+#: The engine compiled into every model's library (fixed C files of the runtime, each named
+#: after the step it does; snakecg/engine/engine.h lists what each defines).
+ENGINE_DIR = Path(__file__).resolve().parent / "engine"
+CORE_SOURCES = tuple(ENGINE_DIR / name
+                     for name in ("contact.c", "forward.c", "integrate.c", "events.c", "run.c",
+                                  "geometry.c", "sphere.c", "pieces.c", "maps.c", "qp.c",
+                                  "optimal.c", "max_sr.c", "push.c", "wheel_states.c"))
+#: Its headers: engine.h (the types and prototypes), linalg.h (the small dense linear algebra).
+CORE_HEADERS = (ENGINE_DIR / "engine.h", ENGINE_DIR / "linalg.h")
 #: Up to this batch size the outputs of a compiled call share one buffer (see CompiledBackend).
 _SMALL_BATCH = 64
 
@@ -90,8 +86,8 @@ def _compiler_id(cc: str) -> str:
 
 
 def _core_sources(manifest: dict) -> tuple[dict[str, bytes], str]:
-    """The runtime core's C files (snakecg/core/*.c) by name and its layout header."""
-    from .core.layout import header
+    """The runtime core's C files (snakecg/engine/*.c) by name and its layout header."""
+    from .engine.layout import header
 
     return ({p.name: p.read_bytes() for p in (*CORE_SOURCES, *CORE_HEADERS)},
             header(manifest))
@@ -389,10 +385,10 @@ class CompiledBackend:
             fn.restype = ctypes.c_int
             self._fns[name] = fn
         _check_signatures(lib_path, manifest, _library_problems(self._lib, manifest))
-        from .core import Core
+        from .engine import Core
 
         self.core = Core(self._lib, manifest)
-        """The runtime core's ``core_forward`` (snakecg.core), compiled into the library."""
+        """The runtime core's ``core_forward`` (snakecg.engine), compiled into the library."""
 
     def __call__(self, name: str, n: int, inputs: list[np.ndarray]) -> list[np.ndarray]:
         """Evaluate ``name`` on ``n`` samples.

@@ -1,7 +1,7 @@
 """Ctrl-C during a long simulation, and the compiled calls that make it possible.
 
 The compiled segments and whole runs (``core_integrate_segment``, ``core_run``) return to
-Python after a wall-clock budget (``snakecg.core.segment.PAUSE_AFTER``) and are called again
+Python after a wall-clock budget (``snakecg.engine.segment.PAUSE_AFTER``) and are called again
 to go on where they stopped, so that Python can raise KeyboardInterrupt in between:
 
 * a run whose every C call pauses after one step (or one chunk of samples) gives the same

@@ -3,7 +3,7 @@ the output times and the event functions of a segment in one C call
 (``core_integrate_segment`` of the model library's ``integrate.c``), answering what
 :func:`scipy.integrate.solve_ivp` answers to :class:`~snakecg.simulate.simulator.Simulator`;
 and what happens at an event (impacts, projections, the new active set) in one C call
-(``core_settle`` of ``settle.c``), answering what
+(``core_settle`` of ``events.c``), answering what
 :meth:`~snakecg.simulate.events.Events.settle` computes in Python.
 
 Used for ``method="DOP853"`` without ``fixed_step`` when the torque is constant over each
@@ -22,7 +22,7 @@ from types import SimpleNamespace
 
 import numpy as np
 
-from ..core.segment import (
+from ..engine.segment import (
     PAUSE_AFTER,
     RUN_COMPLETED,
     RUN_GEOMETRY,
@@ -192,7 +192,7 @@ class CompiledSegments:
         energy ``loss`` removed there) with the constant torque ``tau`` to ``T``, output at
         ``grid`` (increasing, the last is ``T``), in C (``core_run``, called again while it
         pauses): the filled
-        :class:`~snakecg.core.segment.Run` (the workspace's: read it before the next run) and
+        :class:`~snakecg.engine.segment.Run` (the workspace's: read it before the next run) and
         its arrays (``t``, ``y``, ``mode``, ``loss`` and the quantities ``samples`` (as
         :meth:`samples_into`) of each sample, the ``modes`` and the ``events``, see run.c),
         or ``None`` when the Python loop must do the run.
@@ -269,9 +269,9 @@ class CompiledSegments:
     def settle(self, y, prev, forced: dict, contact_candidate: bool, tau):
         """``core_settle`` at the state ``y`` after the mode ``prev`` (``None`` at the start)
         with the rows ``forced`` (row: state code) and the torque ``tau``: the
-        :class:`~snakecg.core.segment.Settle` it filled (outputs in ``s_y_out``,
+        :class:`~snakecg.engine.segment.Settle` it filled (outputs in ``s_y_out``,
         ``s_state``, ``s_impact_lam``, ``s_projection_lam``), or ``None`` when the Python
-        path must do it (see settle.c)."""
+        path must do it (see events.c)."""
         st = self.st
         self.s_y[:] = y
         self.tau[:] = tau

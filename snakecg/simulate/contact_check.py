@@ -17,7 +17,7 @@ between the last two checks by Brent's method on the integrator's dense output.
   violation is reported all the same (and is the status);
 * ``"off"``: no check; the status is ``"completed (geometry not checked)"``.
 
-In compiled segments the check runs in C (``geometry.h``, ``sc_geometry``); this class holds
+In compiled segments the check runs in C (``geometry.c``, ``sc_geometry``); this class holds
 its struct and does the same in Python for the segments that ``solve_ivp`` integrates.
 """
 
@@ -28,7 +28,7 @@ import weakref
 
 import numpy as np
 
-from ..core.segment import GEO_OFF, GEO_RECORD, GEO_STOP, Geometry
+from ..engine.segment import GEO_OFF, GEO_RECORD, GEO_STOP, Geometry
 from ..errors import InputError
 from ..geometry import ContactCheck
 from .records import Violation
@@ -57,7 +57,7 @@ class RunCheck:
     """The contact check of one run of ``model`` in ``mode`` (:data:`MODES`); ``ns``, ``ny``:
     the sizes of ``q`` and of the integrated state ``y = (q, q_obj, ...)``.
 
-    ``struct``: the :class:`~snakecg.core.segment.Geometry` the compiled segments read and
+    ``struct``: the :class:`~snakecg.engine.segment.Geometry` the compiled segments read and
     fill (its address ``address``); the first violation is kept there, by C or by Python.
     """
 

@@ -1,5 +1,5 @@
 """The buffers and C structs of the compiled simulation of one model (a :class:`Workspace`):
-what the C of ``integrate.c``, ``settle.c`` and ``run.c`` reads and writes, set up once per
+what the C of ``integrate.c``, ``events.c`` and ``run.c`` reads and writes, set up once per
 model and lent to one run at a time.
 
 A run takes a workspace with :func:`take` (from the model's pool, or a new one) and gives it
@@ -16,7 +16,7 @@ import weakref
 
 import numpy as np
 
-from ..core.segment import Run, Segment, Settle
+from ..engine.segment import Run, Segment, Settle
 from ..solver import PIVOT_TOL, REL_TOL, default_max_iter
 
 __all__ = ["START_IMPACT", "START_WIDTH", "Workspace", "give", "take"]

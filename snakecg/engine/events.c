@@ -27,12 +27,7 @@
 #include <string.h>
 
 #include "snakecg_layout.h"
-#define SC_ROW_VELOCITIES
-#define SC_NEXT_STATES
-#include "common.h"
-
-
-
+#include "engine.h"
 /* G, Q = [Kq; Ka], gap, s and A V at y. */
 static int maps(sc_work_t *ws, const sc_settle *st, const double *y, sc_system *sys,
                 double *av) {

@@ -1,4 +1,4 @@
-"""The Python side of ``integrate.c``, ``settle.c`` and ``run.c``: one integration segment
+"""The Python side of ``integrate.c``, ``events.c`` and ``run.c``: one integration segment
 of a simulation, what happens at an event, and a whole run with a constant torque, in C.
 
 :class:`Segment` mirrors the C struct ``sc_segment`` field by field (inputs, then outputs),
@@ -54,10 +54,10 @@ SEG_GEOMETRY = 2
 #: A segment or run that used up its wall-clock budget (``budget``): called again with
 #: ``resume`` as the call left it, it goes on where it stopped.
 SEG_PAUSED = 3
-#: The contact check's modes (``GEO_*`` of geometry.h): off, stop at the first violation,
+#: The contact check's modes (``SC_GEO_*`` of engine.h): off, stop at the first violation,
 #: record it and go on.
 GEO_OFF, GEO_STOP, GEO_RECORD = 0, 1, 2
-#: Settle status (``SETTLE_*`` of settle.c): done; anything else hands it to Python.
+#: Settle status (``SETTLE_*`` of events.c): done; anything else hands it to Python.
 SETTLE_DONE = 0
 #: Run status (``RUN_*`` of run.c): completed, stopped (events), stopped at the contact
 #: check's first violation, paused (as SEG_PAUSED); anything else: Python.
@@ -80,7 +80,7 @@ class Segment(ctypes.Structure):
 
 
 class Geometry(ctypes.Structure):
-    """``sc_geometry`` of geometry.h: the contact check of a run (mode ``GEO_*``)."""
+    """``sc_geometry`` of engine.h: the contact check of a run (mode ``GEO_*``)."""
 
     _fields_ = [("mode", _I), ("tol", _D), ("half", _D), ("radius", _D), ("length", _P),
                 ("com1", _D), ("found", _I), ("t", _D), ("depth", _D), ("pair", _I),
@@ -88,7 +88,7 @@ class Geometry(ctypes.Structure):
 
 
 class Settle(ctypes.Structure):
-    """``sc_settle`` of settle.c."""
+    """``sc_settle`` of events.c."""
 
     _fields_ = [("scene", _P), ("tau", _P), ("f_obj", _P), ("rho", _P), ("contact_index", _I),
                 ("c_k", _D), ("l_k", _D), ("pivot_tol", _D), ("rel_tol", _D),

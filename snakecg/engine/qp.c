@@ -1,5 +1,5 @@
-/* snakecg's runtime core: dense convex QPs, the ellipsoid constraint through its multiplier,
- * non-negative least squares and the KKT certificate (prototypes and method notes in qp.h).
+/* snakecg's engine: dense convex QPs, the ellipsoid constraint through its multiplier,
+ * non-negative least squares and the KKT certificate (prototypes and method notes in engine.h).
  *
  * This file is part of the runtime (not generated); it knows nothing of the model and is
  * compiled into every model's library beside the other core files.
@@ -8,8 +8,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "qp.h"
-
+#include "snakecg_layout.h"
+#include "engine.h"
 /* ---------------------------------------------------------------------------------------
  * workspace */
 /* doubles and sc_ints of each region, as carved by the function that uses it */
@@ -601,7 +601,7 @@ int sc_nnls(sc_int n, sc_int k, const double *C, const double *d, double *y, dou
 }
 
 /* ---------------------------------------------------------------------------------------
- * The KKT certificate (qp.h). Constraint "sizes" follow the row: |G| |x| + |bound| for a row,
+ * The KKT certificate (engine.h). Constraint "sizes" follow the row: |G| |x| + |bound| for a row,
  * |x| |Q| |x| + |r2| for the quadric; the gradient's size is ||H|| ||x|| + ||c||. The
  * duality gap of a convex problem at multipliers lam: with L(y) = f(y) - sum_i lam_i s_i(y)
  * (the quadric's slack r2 - y^T Q y among the s_i), L is quadratic with Hessian

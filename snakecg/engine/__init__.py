@@ -63,14 +63,14 @@ class Core:
         self.constants_address = self._constants.ctypes.data
         (self.integrate_segment, self.mode_samples, self.settle,
          self.run) = segment_functions(lib, manifest["prefix"])
-        """integrate.c's ``core_integrate_segment`` and ``core_mode_samples``, settle.c's
-        ``core_settle``, run.c's ``core_run`` (:mod:`snakecg.core.segment`)."""
+        """integrate.c's ``core_integrate_segment`` and ``core_mode_samples``, events.c's
+        ``core_settle``, run.c's ``core_run`` (:mod:`snakecg.engine.segment`)."""
         self.contact_depth = contact_depth_function(lib, manifest["prefix"])
         """integrate.c's ``core_contact_depth``: the simulation's contact check at states."""
         self.sphere = SphereKernel(lib, manifest["prefix"])
-        """sphere.c's faces and KKT candidates (:mod:`snakecg.core.sphere`)."""
+        """sphere.c's faces and KKT candidates (:mod:`snakecg.engine.sphere`)."""
         self.optimal = OptimalKernel(lib, manifest["prefix"], self.layout)
-        """The optimal-torque queries in one call per batch (:mod:`snakecg.core.optimal`)."""
+        """The optimal-torque queries in one call per batch (:mod:`snakecg.engine.optimal`)."""
 
     def next_states(self, state, lam, w, G, bounds) -> tuple[np.ndarray, bool]:
         """The C's row-state update for one sample (the rules of

@@ -5,8 +5,8 @@ alone (the QP and QCQP solver, the KKT certificate, the symmetric eigensolver, t
 row state) for tests against independent references.
 
 The query and the answers are flat float64 vectors laid out by
-:meth:`snakecg.core.Layout.optimal_in_fields` and :meth:`~snakecg.core.Layout.optimal_out_fields`
-(the same names in ``snakecg_layout.h``); the codes below mirror ``optimal.h``.
+:meth:`snakecg.engine.Layout.optimal_in_fields` and :meth:`~snakecg.engine.Layout.optimal_out_fields`
+(the same names in ``snakecg_layout.h``); the codes below mirror ``engine.h``.
 """
 
 from __future__ import annotations
@@ -32,7 +32,7 @@ KINDS = {"max_sr": MAX_SR, "least_slip_push": LEAST_SLIP_PUSH,
          "strongest_push": STRONGEST_PUSH}
 #: Statuses (``OPT_OUT_status``).
 OPTIMAL, INFEASIBLE, FAILED = 0, 1, 2
-#: Reasons (``OPT_OUT_reason``), optimal.h's SC_REASON_*.
+#: Reasons (``OPT_OUT_reason``), engine.h's SC_REASON_*.
 REASON = {"none": 0, "singular": 1, "no_push": 2, "off_normal": 3, "against_normal": 4,
           "direction": 5, "out_of_reach": 6, "no_strong_push": 7, "solver": 8,
           "within_reach": 9, "certificate": 10, "forward_check": 11, "not_finite": 12,
@@ -50,7 +50,7 @@ METHOD = {"rank_one": 1, "eigen": 2, "qp": 4, "lp": 8, "secular": 16,
 #: Binding codes (``OPT_OUT_binding``): then joint j (from 0) at BIND_JOINT + j and the wheel
 #: of link i (from 1) at BIND_JOINT + n_a + i - 1.
 BIND_CONTACT, BIND_ELLIPSOID, BIND_NORMAL, BIND_JOINT = 0, 1, 2, 3
-#: The QP block's statuses (qp.h SC_QP_*).
+#: The QP block's statuses (engine.h SC_QP_*).
 QP_STATUS = {0: "optimal", 1: "the linear limits have no common point",
              2: "the Hessian is not positive definite", 3: "no convergence",
              4: "the ellipsoid and the linear limits do not intersect",
