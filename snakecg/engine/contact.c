@@ -13,8 +13,9 @@
 #include "engine.h"
 
 
-/* Wall-clock seconds from an arbitrary origin (POSIX's monotonic clock; elsewhere the CPU time): the long calls of the
- * simulation pause after a budget of them, so that Python can handle a Ctrl-C. */
+/* Wall-clock seconds from an arbitrary origin (POSIX's monotonic clock; elsewhere the CPU
+ * time): the long calls of the simulation pause after a budget of them, so that Python can
+ * handle a Ctrl-C. */
 double sc_wall_time(void) {
 #if defined(CLOCK_MONOTONIC)
   struct timespec ts;

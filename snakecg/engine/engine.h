@@ -16,7 +16,8 @@
  *   run.c           a whole simulation: segments and events in one call (exported: core_run)
  *   geometry.c      the contact check of a simulation (overlap depths)
  *   maps.c          the system at rest and the affine maps of one row state
- *   qp.c, qp_*.c    dense QPs, the ellipsoid constraint, NNLS, the KKT certificate
+ *   qp.c            dense QPs and the ellipsoid constraint (the dual active set)
+ *   certificate.c   non-negative least squares and the KKT certificate of a point
  *   optimal.c       the optimal-torque queries of a batch (exported: core_optimal)
  *   max_sr.c, push.c, wheel_states.c   the queries' solves
  *   pieces.c, sphere.c                 the exact extremes' pieces and faces (exported)
@@ -224,6 +225,13 @@ SC_INTERNAL double sc_held_forces(const signed char *state, const double *G, con
 SC_INTERNAL int sc_next_states(signed char *state, const double *lam, const double *w,
                                const double *G, const double *bounds, double rel_tol);
 
+/* ---- events.c: locating an event ---- */
+
+/* A function of time whose root is sought (its value in *g): 0, or SEG_PYTHON. */
+typedef int (*sc_root_fn)(void *arg, double t, double *g);
+/* The root of fn on [xa, xb] (scipy.optimize.brentq's method) in *root: 0, or fn's status. */
+SC_INTERNAL int sc_brentq(sc_root_fn fn, void *arg, double xa, double xb, double *root);
+
 /* ---- geometry.c: the contact check of a simulation ---- */
 
 /* The check of a run (mirrored in snakecg/engine/binding.py): inputs, then outputs. */
@@ -348,6 +356,34 @@ typedef struct {
    7 * (n) * (2 * (m) + 2) + 14 * (2 * (m) + 2) + (2 * (m) + 2) * (2 * (m) + 2) +       \
    2 * (n) * (n) + 12 * (n) + 4 * (m) + 64)
 #define SC_QP_WORK_INTS(n, m) (4 * (m) + 4 + 4 * (n) + 2 + 4 * (n) + 9 * (2 * (m) + 2) + 64)
+
+/* doubles and sc_ints of each region, as carved by the function that uses it */
+#define SC_QP_GI_D(n, m) (6 * (n) * (n) + 10 * (n) + 2 + 2 * (2 * (m) + 2))
+#define SC_QP_GI_I(n, m) (2 * (2 * (m) + 2) + 2 * (n) + 2 * (n) + 2)
+#define SC_QP_QC_D(n, m) (5 * (n) * (n) + 12 * (n))
+#define SC_QP_QC_I(n, m) (2 * (n) + 2 * (n))
+#define SC_QP_CE_K(n, m) (2 * (m) + 2)
+#define SC_QP_CE_D(n, m)                                                        \
+  (7 * (n) * SC_QP_CE_K(n, m) + 14 * SC_QP_CE_K(n, m) +                         \
+   SC_QP_CE_K(n, m) * SC_QP_CE_K(n, m) + 2 * (n) * (n) + 12 * (n) + 4 * (m))
+#define SC_QP_CE_I(n, m) (9 * SC_QP_CE_K(n, m))
+
+/* the three regions of the workspace: the active-set solver, the secular equation, the
+ * certificate (each may call the one before it) */
+static inline double *sc_qp_gi_d(const sc_qp_work *w) { return w->d; }
+static inline sc_int *sc_qp_gi_i(const sc_qp_work *w) { return w->i; }
+static inline double *sc_qp_qc_d(const sc_qp_work *w) {
+  return w->d + SC_QP_GI_D(w->n_max, w->m_max);
+}
+static inline sc_int *sc_qp_qc_i(const sc_qp_work *w) {
+  return w->i + SC_QP_GI_I(w->n_max, w->m_max);
+}
+static inline double *sc_qp_ce_d(const sc_qp_work *w) {
+  return w->d + SC_QP_GI_D(w->n_max, w->m_max) + SC_QP_QC_D(w->n_max, w->m_max);
+}
+static inline sc_int *sc_qp_ce_i(const sc_qp_work *w) {
+  return w->i + SC_QP_GI_I(w->n_max, w->m_max) + SC_QP_QC_I(w->n_max, w->m_max);
+}
 
 /* Relative violation below which a row counts as satisfied (sc_qp_solve). */
 #define SC_QP_FEAS_TOL 1e-12
@@ -552,5 +588,8 @@ int SNAKECG_EXPORT(core_integrate_segment)(sc_segment *sg);
 int SNAKECG_EXPORT(core_mode_samples)(sc_segment *sg, sc_int n, const double *Y, double *out);
 /* events.c */
 int SNAKECG_EXPORT(core_settle)(sc_settle *st);
+/* geometry.c: the contact check at n states Y (n x NY, row-major) */
+int SNAKECG_EXPORT(core_contact_depth)(const sc_geometry *g, sc_int n, const double *Y,
+                                      double *depth, double *pair);
 
 #endif

@@ -22,6 +22,7 @@
  * convergence within max_iter passes, which the Python path enumerates), it returns
  * SETTLE_PYTHON and writes nothing that the caller keeps: the Python path does it all.
  */
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -258,4 +259,64 @@ int SNAKECG_EXPORT(core_settle)(sc_settle *st) {
   sc_work_free(&ws);
   st->status = status;
   return status;
+}
+
+/* The root of fn between xa and xb (the integrator locates its events with it):
+ * scipy.optimize.brentq (scipy/optimize/Zeros/brentq.c) on fn over [xa, xb]. */
+int sc_brentq(sc_root_fn fn, void *arg, double xa, double xb, double *root) {
+  const double xtol = 4 * DBL_EPSILON, rtol = 4 * DBL_EPSILON;
+  double xpre = xa, xcur = xb, xblk = 0.0, fpre, fcur, fblk = 0.0, spre = 0.0, scur = 0.0;
+  double sbis, delta, stry, dpre, dblk;
+  int i, st;
+  if ((st = fn(arg, xpre, &fpre))) return st;
+  if ((st = fn(arg, xcur, &fcur))) return st;
+  *root = xpre;
+  if (fpre == 0) return 0;
+  *root = xcur;
+  if (fcur == 0) return 0;
+  if (signbit(fpre) == signbit(fcur)) return 0; /* not bracketed: solve_ivp would raise */
+  for (i = 0; i < 100; ++i) {
+    if (fpre != 0 && fcur != 0 && signbit(fpre) != signbit(fcur)) {
+      xblk = xpre;
+      fblk = fpre;
+      spre = scur = xcur - xpre;
+    }
+    if (fabs(fblk) < fabs(fcur)) {
+      xpre = xcur;
+      xcur = xblk;
+      xblk = xpre;
+      fpre = fcur;
+      fcur = fblk;
+      fblk = fpre;
+    }
+    delta = (xtol + rtol * fabs(xcur)) / 2;
+    sbis = (xblk - xcur) / 2;
+    if (fcur == 0 || fabs(sbis) < delta) break;
+    if (fabs(spre) > delta && fabs(fcur) < fabs(fpre)) {
+      if (xpre == xblk) { /* interpolate */
+        stry = -fcur * (xcur - xpre) / (fcur - fpre);
+      } else { /* extrapolate */
+        dpre = (fpre - fcur) / (xpre - xcur);
+        dblk = (fblk - fcur) / (xblk - xcur);
+        stry = -fcur * (fblk * dblk - fpre * dpre) / (dblk * dpre * (fblk - fpre));
+      }
+      if (2 * fabs(stry) < fmin(fabs(spre), 3 * fabs(sbis) - delta)) {
+        spre = scur;
+        scur = stry;
+      } else {
+        spre = sbis;
+        scur = sbis;
+      }
+    } else {
+      spre = sbis;
+      scur = sbis;
+    }
+    xpre = xcur;
+    fpre = fcur;
+    if (fabs(scur) > delta) xcur += scur;
+    else xcur += (sbis > 0 ? delta : -delta);
+    if ((st = fn(arg, xcur, &fcur))) return st;
+  }
+  *root = xcur;
+  return 0;
 }

@@ -150,3 +150,14 @@ void sc_geo_record(sc_geometry *g, double t, const double *y, double depth, sc_i
   memcpy(g->y, y, sizeof(double) * NY);
 }
 
+/* The contact check at n states Y (n x NY, row-major): the largest overlap of each in depth,
+ * its pair in pair (as a double). Returns 0. */
+int SNAKECG_EXPORT(core_contact_depth)(const sc_geometry *g, sc_int n, const double *Y,
+                                      double *depth, double *pair) {
+  sc_int k, p;
+  for (k = 0; k < n; ++k) {
+    depth[k] = sc_geo_depth(g, Y + k * NY, &p);
+    pair[k] = (double)p;
+  }
+  return 0;
+}

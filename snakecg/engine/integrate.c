@@ -29,7 +29,6 @@
  * to the Python path.
  */
 #define _POSIX_C_SOURCE 200809L /* clock_gettime (before the first include) */
-#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -190,9 +189,6 @@ static int event_at(sc_ctx *c, const sc_dense *D, int e, double t, double *g) {
   return st;
 }
 
-/* A function of time for brentq (its value in *g): 0, or SEG_PYTHON. */
-typedef int (*sc_root_fn)(void *arg, double t, double *g);
-
 /* The event function e on the dense output D (an sc_root_fn). */
 typedef struct {
   sc_ctx *c;
@@ -218,65 +214,6 @@ static int sc_geo_fn(void *arg, double t, double *g) {
   sc_int pair;
   dense_eval(a->D, t, y);
   *g = a->geo->tol - sc_geo_depth(a->geo, y, &pair);
-  return 0;
-}
-
-/* scipy.optimize.brentq (scipy/optimize/Zeros/brentq.c) on fn over [xa, xb]. */
-static int brentq(sc_root_fn fn, void *arg, double xa, double xb, double *root) {
-  const double xtol = 4 * DBL_EPSILON, rtol = 4 * DBL_EPSILON;
-  double xpre = xa, xcur = xb, xblk = 0.0, fpre, fcur, fblk = 0.0, spre = 0.0, scur = 0.0;
-  double sbis, delta, stry, dpre, dblk;
-  int i, st;
-  if ((st = fn(arg, xpre, &fpre))) return st;
-  if ((st = fn(arg, xcur, &fcur))) return st;
-  *root = xpre;
-  if (fpre == 0) return 0;
-  *root = xcur;
-  if (fcur == 0) return 0;
-  if (signbit(fpre) == signbit(fcur)) return 0; /* not bracketed: solve_ivp would raise */
-  for (i = 0; i < 100; ++i) {
-    if (fpre != 0 && fcur != 0 && signbit(fpre) != signbit(fcur)) {
-      xblk = xpre;
-      fblk = fpre;
-      spre = scur = xcur - xpre;
-    }
-    if (fabs(fblk) < fabs(fcur)) {
-      xpre = xcur;
-      xcur = xblk;
-      xblk = xpre;
-      fpre = fcur;
-      fcur = fblk;
-      fblk = fpre;
-    }
-    delta = (xtol + rtol * fabs(xcur)) / 2;
-    sbis = (xblk - xcur) / 2;
-    if (fcur == 0 || fabs(sbis) < delta) break;
-    if (fabs(spre) > delta && fabs(fcur) < fabs(fpre)) {
-      if (xpre == xblk) { /* interpolate */
-        stry = -fcur * (xcur - xpre) / (fcur - fpre);
-      } else { /* extrapolate */
-        dpre = (fpre - fcur) / (xpre - xcur);
-        dblk = (fblk - fcur) / (xblk - xcur);
-        stry = -fcur * (fblk * dblk - fpre * dpre) / (dblk * dpre * (fblk - fpre));
-      }
-      if (2 * fabs(stry) < fmin(fabs(spre), 3 * fabs(sbis) - delta)) {
-        spre = scur;
-        scur = stry;
-      } else {
-        spre = sbis;
-        scur = sbis;
-      }
-    } else {
-      spre = sbis;
-      scur = sbis;
-    }
-    xpre = xcur;
-    fpre = fcur;
-    if (fabs(scur) > delta) xcur += scur;
-    else xcur += (sbis > 0 ? delta : -delta);
-    if ((st = fn(arg, xcur, &fcur))) return st;
-  }
-  *root = xcur;
   return 0;
 }
 
@@ -475,7 +412,7 @@ static int segment(sc_ctx *c, sc_segment *sg) {
         arg.c = c;
         arg.D = &D;
         arg.e = e;
-        if ((st = brentq(event_fn, &arg, t, t_new, &root))) return st;
+        if ((st = sc_brentq(event_fn, &arg, t, t_new, &root))) return st;
         if (first < 0 || root < t_stop) {
           first = e;
           t_stop = root;
@@ -517,7 +454,7 @@ static int segment(sc_ctx *c, sc_segment *sg) {
           }
           garg.geo = geo;
           garg.D = &D;
-          brentq(sc_geo_fn, &garg, ta, tb, &root);
+          sc_brentq(sc_geo_fn, &garg, ta, tb, &root);
           dense_eval(&D, root, yb);
           d = sc_geo_depth(geo, yb, &pair);
           sc_geo_record(geo, root, yb, d, pair);
@@ -627,17 +564,5 @@ int SNAKECG_EXPORT(core_mode_samples)(sc_segment *sg, sc_int n, const double *Y,
     extra[2 * NC + 5] = (double)st;
   }
   sc_work_free(&c.ws);
-  return 0;
-}
-
-/* The contact check at n states Y (n x NY, row-major): the largest overlap of each in depth,
- * its pair in pair (as a double). Returns 0. */
-int SNAKECG_EXPORT(core_contact_depth)(const sc_geometry *g, sc_int n, const double *Y,
-                                      double *depth, double *pair) {
-  sc_int k, p;
-  for (k = 0; k < n; ++k) {
-    depth[k] = sc_geo_depth(g, Y + k * NY, &p);
-    pair[k] = (double)p;
-  }
   return 0;
 }
