@@ -14,13 +14,13 @@ Results are rows of one float64 array (:class:`ForwardResult` views into it), la
 
 from __future__ import annotations
 
-import ctypes
 
 import numpy as np
 
 from . import kernels
 from ._inputs import CHUNK_ROWS, as_batch, broadcast_batches, check_batch_memory
 from .engine import STATUS_EXACT, Data
+from .engine.binding import address, empty_pointers, int64s
 from .errors import InputError
 from .rows import finish as finish_rows
 from .rows import reason_of
@@ -314,16 +314,16 @@ def _core_batch(model, core, parts: dict, n: int, iters: int, raw: np.ndarray) -
     bounds = np.linspace(0, n, workers + 1).astype(np.int64)
 
     def job(lo, hi):
-        ptr = (ctypes.c_void_p * len(INPUTS))()
-        strides = (ctypes.c_longlong * len(INPUTS))()
+        ptr = empty_pointers(len(INPUTS))
+        strides = int64s(len(INPUTS))
         for k, a in enumerate(arrays):
             if a is None:
                 continue
             step = a.shape[1] if a.shape[0] > 1 else 0
             strides[k] = step
             ptr[k] = a.ctypes.data + 8 * lo * step
-        return core(hi - lo, model.scene_address, iters, ctypes.addressof(ptr),
-                    ctypes.addressof(strides), raw.ctypes.data + 8 * lo * raw.shape[1])
+        return core(hi - lo, model.scene_address, iters, address(ptr), address(strides),
+                    raw.ctypes.data + 8 * lo * raw.shape[1])
 
     if workers == 1:
         return job(0, n)

@@ -15,7 +15,6 @@ Both return, for a batch of ``n``, arrays of shape ``(n, rows, cols)`` per outpu
 
 from __future__ import annotations
 
-import ctypes
 import hashlib
 import json
 import os
@@ -31,6 +30,7 @@ import numpy as np
 
 from .artifacts import cache_dir, held_lock, make_private_dir
 from .bound import BoundFunction
+from .engine.binding import Library, empty_pointers, int64s, pointers
 from .errors import ArtifactError, BuildError
 
 __all__ = [
@@ -296,29 +296,15 @@ def _check_signatures(where, manifest: dict, problems: list[str]) -> None:
 
 def _library_problems(lib, manifest: dict) -> list[str]:
     """Compare the manifest with CasADi's own signature functions in the compiled library."""
-    ci = ctypes.c_longlong
     problems = []
     for sig in manifest["functions"]:
         sym = sig["symbol"]
         try:
-            f_in, f_out = getattr(lib, f"{sym}_n_in"), getattr(lib, f"{sym}_n_out")
-            sp_in, sp_out = getattr(lib, f"{sym}_sparsity_in"), getattr(lib, f"{sym}_sparsity_out")
+            n_in, n_out, size_in, size_out = lib.signature(sym)
         except AttributeError:
             problems.append(f"{sym} is not in the library")
             continue
-        for f in (f_in, f_out):
-            f.restype, f.argtypes = ci, []
-        for f in (sp_in, sp_out):
-            f.restype, f.argtypes = ctypes.POINTER(ci), [ci]
-
-        def size(fn):
-            def get(k):
-                p = fn(k)
-                return (int(p[0]), int(p[1])) if p else (-1, -1)
-            return get
-
-        problems += _signature_problems(sig, int(f_in()), int(f_out()), size(sp_in),
-                                        size(sp_out))
+        problems += _signature_problems(sig, n_in, n_out, size_in, size_out)
     return problems
 
 
@@ -365,26 +351,17 @@ def _check_input(sig: _Signature, k: int, a: np.ndarray, n: int, size: int) -> N
 
 
 class CompiledBackend:
-    """Calls the compiled batched drivers ``<prefix>batch_<function>`` through ctypes."""
+    """Calls the compiled batched drivers ``<prefix>batch_<function>`` (bound in
+    :mod:`snakecg.engine.binding`)."""
 
     kind = "compiled"
 
     def __init__(self, lib_path: Path, manifest: dict):
         self.path = lib_path
-        self._lib = ctypes.CDLL(str(lib_path))
         self.prefix = manifest["prefix"]
+        self._lib = Library(lib_path, self.prefix)
         self.signatures = {s["name"]: _Signature(s) for s in manifest["functions"]}
-        self._fns = {}
-        for name in self.signatures:
-            fn = getattr(self._lib, f"{self.prefix}batch_{name}")
-            fn.argtypes = [
-                ctypes.c_longlong,
-                ctypes.POINTER(ctypes.c_void_p),
-                ctypes.POINTER(ctypes.c_longlong),
-                ctypes.POINTER(ctypes.c_void_p),
-            ]
-            fn.restype = ctypes.c_int
-            self._fns[name] = fn
+        self._fns = {name: self._lib.batch(name) for name in self.signatures}
         _check_signatures(lib_path, manifest, _library_problems(self._lib, manifest))
         from .engine import Core
 
@@ -399,8 +376,8 @@ class CompiledBackend:
         """
         sig = self.signatures[name]
         n_in = len(sig.in_sizes)
-        argp = (ctypes.c_void_p * n_in)()
-        strides = (ctypes.c_longlong * n_in)()
+        argp = empty_pointers(n_in)
+        strides = int64s(n_in)
         # Reading an array's address (``a.ctypes.data``) costs about 1 us, as much as the C call
         # for one sample, so broadcast (1-D) inputs are packed into one buffer and small
         # batches get one output buffer: one address lookup each instead of one per array.
@@ -421,13 +398,12 @@ class CompiledBackend:
         if n <= _SMALL_BATCH:
             buf = np.empty(n * sig.out_offsets[-1])
             base = buf.ctypes.data
-            resp = (ctypes.c_void_p * len(sig.out_shapes))(
-                *[base + 8 * n * o for o in sig.out_offsets[:-1]])
+            resp = pointers(base + 8 * n * o for o in sig.out_offsets[:-1])
             outs = [buf[n * o: n * (o + r * c)].reshape(n, c, r)
                     for o, (r, c) in zip(sig.out_offsets, sig.out_shapes)]
         else:
             outs = [np.empty((n, c, r)) for (r, c) in sig.out_shapes]
-            resp = (ctypes.c_void_p * len(outs))(*[o.ctypes.data for o in outs])
+            resp = pointers(o.ctypes.data for o in outs)
         if n >= _PARALLEL_MIN and _threads() > 1:
             status = self._parallel(name, n, argp, strides, resp, sig)
         else:
@@ -450,10 +426,8 @@ class CompiledBackend:
         for lo, hi in zip(bounds[:-1], bounds[1:]):
             if hi <= lo:
                 continue
-            a = (ctypes.c_void_p * n_in)(*[(argp[k] or 0) + 8 * int(lo) * strides[k]
-                                           for k in range(n_in)])
-            r = (ctypes.c_void_p * n_out)(*[resp[k] + 8 * int(lo) * nnz[k]
-                                            for k in range(n_out)])
+            a = pointers((argp[k] or 0) + 8 * int(lo) * strides[k] for k in range(n_in))
+            r = pointers(resp[k] + 8 * int(lo) * nnz[k] for k in range(n_out))
             jobs.append((int(lo), int(hi - lo), a, r))
         fn = self._fns[name]
         results = list(pool().map(lambda j: (j[0], fn(j[1], j[2], strides, j[3])), jobs))

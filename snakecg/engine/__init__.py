@@ -2,7 +2,7 @@
 
 ``forward.c`` (one fixed C file of the runtime) is compiled into every model's library beside
 the generated functions (:func:`snakecg.native.compile_model`); :class:`Core` calls its
-``core_forward`` through ctypes. One call evaluates a whole batch: placement, the active-set
+``core_forward`` (bound in :mod:`snakecg.engine.binding`). One call evaluates a whole batch: placement, the active-set
 iteration of :mod:`snakecg.solver`'s rules, the conditioning and the physical checks, per
 sample, with the loop in C. Samples it cannot answer exactly come back marked for the
 reference path (:mod:`snakecg.rows`, :mod:`snakecg.solver`).
@@ -15,15 +15,14 @@ models are safe to share between threads without hidden thread-local state.
 
 from __future__ import annotations
 
-import ctypes
 import threading
 
 import numpy as np
 
 from ..rows import WEAK
 from ..solver import FORCE_LIMIT, PIVOT_TOL, REL_TOL
+from .binding import Call, Library, address, int64s, pointers
 from .layout import INPUTS, Layout
-from .segment import contact_depth_function, segment_functions
 from .optimal import OptimalKernel
 from .sphere import SphereKernel
 
@@ -37,39 +36,28 @@ SANE_TOL = 1e-12
 CONSTANTS = np.array([PIVOT_TOL, WEAK, REL_TOL, MASS_TOL, SANE_TOL, FORCE_LIMIT])
 STATUS_EXACT, STATUS_FALLBACK = 0, 1
 
-_P = ctypes.c_void_p
-_I = ctypes.c_longlong
-
-
 class Core:
-    """``core_forward`` of one compiled model library."""
+    """The engine's entry points in one compiled model library (a
+    :class:`~snakecg.engine.binding.Library`)."""
 
-    def __init__(self, lib: ctypes.CDLL, manifest: dict):
+    def __init__(self, lib: Library, manifest: dict):
         self.layout = Layout.of(manifest)
-        fn = getattr(lib, f"{manifest['prefix']}core_forward")
-        fn.argtypes = [_I, _P, _P, _I, _P, _P, _P]
-        fn.restype = ctypes.c_int
-        self._fn = fn
-        packed = getattr(lib, f"{manifest['prefix']}core_forward_call")
-        packed.argtypes = [_P]
-        packed.restype = ctypes.c_int
-        self.call_packed = packed
+        self._fn = lib.entry("core_forward")
+        self.call_packed = lib.entry("core_forward_call")
         """``core_forward_call(&call)``: the same with the arguments in a :class:`Call`."""
-        rules = getattr(lib, f"{manifest['prefix']}core_next_states")
-        rules.argtypes = [_P, _P, _P, _P, _P, ctypes.c_double]
-        rules.restype = ctypes.c_int
-        self._rules = rules
+        self._rules = lib.entry("core_next_states")
         self._constants = CONSTANTS.copy()
         self.constants_address = self._constants.ctypes.data
-        (self.integrate_segment, self.mode_samples, self.settle,
-         self.run) = segment_functions(lib, manifest["prefix"])
+        self.integrate_segment, self.mode_samples, self.settle, self.run = (
+            lib.entry_or_none(name) for name in ("core_integrate_segment", "core_mode_samples",
+                                                 "core_settle", "core_run"))
         """integrate.c's ``core_integrate_segment`` and ``core_mode_samples``, events.c's
-        ``core_settle``, run.c's ``core_run`` (:mod:`snakecg.engine.segment`)."""
-        self.contact_depth = contact_depth_function(lib, manifest["prefix"])
-        """integrate.c's ``core_contact_depth``: the simulation's contact check at states."""
-        self.sphere = SphereKernel(lib, manifest["prefix"])
+        ``core_settle``, run.c's ``core_run``."""
+        self.contact_depth = lib.entry_or_none("core_contact_depth")
+        """geometry.c's ``core_contact_depth``: the simulation's contact check at states."""
+        self.sphere = SphereKernel(lib)
         """sphere.c's faces and KKT candidates (:mod:`snakecg.engine.sphere`)."""
-        self.optimal = OptimalKernel(lib, manifest["prefix"], self.layout)
+        self.optimal = OptimalKernel(lib, self.layout)
         """The optimal-torque queries in one call per batch (:mod:`snakecg.engine.optimal`)."""
 
     def next_states(self, state, lam, w, G, bounds) -> tuple[np.ndarray, bool]:
@@ -92,13 +80,6 @@ class Core:
         memory, ``-(2 + i)`` bad input at sample ``i``)."""
         return self._fn(n, scene_address, self.constants_address, max_iter, inputs_address,
                         strides_address, out_address)
-
-
-class Call(ctypes.Structure):
-    """The arguments of one ``core_forward`` call, for ``core_forward_call``."""
-
-    _fields_ = [("n", _I), ("scene", _P), ("constants", _P), ("max_iter", _I), ("inputs", _P),
-                ("strides", _P), ("out", _P)]
 
 
 class Data:
@@ -124,13 +105,13 @@ class Data:
         self.tau = self.inputs[offsets["tau"]: offsets["tau"] + na]
         base = self.inputs.ctypes.data
         # q_obj NULL: the C places the object from q
-        self._pointers = (_P * len(INPUTS))(*[0 if name in ("q_obj", "rho")
-                                              else base + 8 * offsets[name] for name in INPUTS])
-        self._strides = (_I * len(INPUTS))()  # zero: one sample
+        self._pointers = pointers(0 if name in ("q_obj", "rho") else base + 8 * offsets[name]
+                                  for name in INPUTS)
+        self._strides = int64s(len(INPUTS))  # zero: one sample
         self.out = np.zeros(layout.out_width)
-        self.call = Call(1, 0, 0, 0, ctypes.addressof(self._pointers),
-                         ctypes.addressof(self._strides), self.out.ctypes.data)
-        self.call_address = ctypes.addressof(self.call)
+        self.call = Call(1, 0, 0, 0, address(self._pointers), address(self._strides),
+                         self.out.ctypes.data)
+        self.call_address = address(self.call)
         self.lock = threading.Lock()
         self.owner = None
 

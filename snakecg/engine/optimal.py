@@ -11,7 +11,6 @@ The query and the answers are flat float64 vectors laid out by
 
 from __future__ import annotations
 
-import ctypes
 import os
 
 import numpy as np
@@ -21,10 +20,6 @@ from .layout import Layout
 __all__ = ["OptimalKernel", "MAX_SR", "LEAST_SLIP_PUSH", "STRONGEST_PUSH", "KINDS",
            "OPTIMAL", "INFEASIBLE", "FAILED", "REASON", "CHECK", "CERTIFICATE", "METHOD",
            "BIND_CONTACT", "BIND_ELLIPSOID", "BIND_NORMAL", "BIND_JOINT", "QP_STATUS"]
-
-_P = ctypes.c_void_p
-_I = ctypes.c_longlong
-_D = ctypes.c_double
 
 #: Query kinds (``OPT_IN_kind``).
 MAX_SR, LEAST_SLIP_PUSH, STRONGEST_PUSH = 0, 1, 2
@@ -84,36 +79,18 @@ def _ptr(a):
 class OptimalKernel:
     """The optimal-torque entry points of one compiled model library."""
 
-    def __init__(self, lib: ctypes.CDLL, prefix: str, layout: Layout):
+    def __init__(self, lib, layout: Layout):
         self.layout = layout
         self.in_width = layout._offsets(layout.optimal_in_fields())[1]
         self.out_width = layout._offsets(layout.optimal_out_fields())[1]
         self.IN = layout.optimal_in
         self.OUT = layout.optimal_out
-        fn = getattr(lib, f"{prefix}core_optimal")
-        fn.argtypes = [_I, _P, _P, _I, _P, _P, _P]
-        fn.restype = ctypes.c_int
-        self._solve = fn
-        fn = getattr(lib, f"{prefix}core_optimal_check")
-        fn.argtypes = [_I, _P, _P]
-        fn.restype = ctypes.c_int
-        self._check = fn
-        fn = getattr(lib, f"{prefix}core_qp_solve")
-        fn.argtypes = [_I, _I] + [_P] * 6 + [_D, _D, _P, _P, _P]
-        fn.restype = ctypes.c_int
-        self._qp = fn
-        fn = getattr(lib, f"{prefix}core_kkt_certificate")
-        fn.argtypes = [_I, _P, _P, _P, _I, _P, _P, _P, _P, _D, _I, _D, _D, _P, _P, _P]
-        fn.restype = ctypes.c_int
-        self._kkt = fn
-        fn = getattr(lib, f"{prefix}core_eigen_symmetric")
-        fn.argtypes = [_I, _P, _P, _P]
-        fn.restype = ctypes.c_int
-        self._eigen = fn
-        fn = getattr(lib, f"{prefix}core_state_maps")
-        fn.argtypes = [_P, _P, _P, _P]
-        fn.restype = ctypes.c_int
-        self._maps = fn
+        self._solve = lib.entry("core_optimal")
+        self._check = lib.entry("core_optimal_check")
+        self._qp = lib.entry("core_qp_solve")
+        self._kkt = lib.entry("core_kkt_certificate")
+        self._eigen = lib.entry("core_eigen_symmetric")
+        self._maps = lib.entry("core_state_maps")
 
     # the query -----------------------------------------------------------------------------
     def solve(self, model, query_in: np.ndarray, qa: np.ndarray) -> np.ndarray:

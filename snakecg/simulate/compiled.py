@@ -15,13 +15,13 @@ solve_ivp.
 
 from __future__ import annotations
 
-import ctypes
 import math
 import weakref
 from types import SimpleNamespace
 
 import numpy as np
 
+from ..engine.binding import copied, empty_pointers, int64s, pointers
 from ..engine.segment import (
     PAUSE_AFTER,
     RUN_COMPLETED,
@@ -82,7 +82,7 @@ def placement(model, q0):
                   "object_distance": [model.scene.object_distance], "side": model._side}
         packed = np.concatenate([np.ravel(np.asarray(values[k], dtype=float))
                                  for k in sig.in_names if k != "q"])
-        argp, off = (ctypes.c_void_p * len(sig.in_names))(), 0
+        argp, off = empty_pointers(len(sig.in_names)), 0
         for i, (k, size) in enumerate(zip(sig.in_names, sig.in_sizes)):
             if k != "q":
                 argp[i] = packed.ctypes.data + 8 * off
@@ -90,7 +90,7 @@ def placement(model, q0):
         sizes = [r * c for r, c in sig.out_shapes]  # q_obj (3), rho (2), contact point (2)
         # the template of the pointer arrays (copied at each call: the q and output pointers
         # are the call's), the strides (all 0: one sample), where q and the outputs go
-        fixed = _PLACE[model] = (packed, argp, (ctypes.c_longlong * len(argp))(),
+        fixed = _PLACE[model] = (packed, argp, int64s(len(argp)),
                                  sig.in_names.index("q"), len(q0),
                                  np.cumsum([len(q0), *sizes[:-1]]).tolist(), sum(sizes))
     _, template, strides, k, ns, offsets, n_out = fixed
@@ -98,9 +98,9 @@ def placement(model, q0):
     buf = np.empty(ns + n_out)
     buf[:ns] = q0
     base = buf.ctypes.data
-    argp = type(template).from_buffer_copy(template)
+    argp = copied(template)
     argp[k] = base
-    resp = (ctypes.c_void_p * len(offsets))(*[base + 8 * o for o in offsets])
+    resp = pointers(base + 8 * o for o in offsets)
     if fn(1, argp, strides, resp) != 0:
         q_obj0, rho, _ = model.place(q0[None, :], 1)
         return q_obj0[0].copy(), rho[0].copy()
@@ -326,9 +326,9 @@ class CompiledSegments:
         q, base = Q.ctypes.data, buf.ctypes.data
         outs = (base, base + 8 * n * ns * ns)
         for (fn, K, k, strides), out in zip(self._kin, outs):
-            argp = (ctypes.c_void_p * 2)()
+            argp = empty_pointers(2)
             argp[k], argp[1 - k] = q, K
-            if fn(n, argp, strides, (ctypes.c_void_p * 1)(out)) != 0:
+            if fn(n, argp, strides, pointers([out])) != 0:
                 return None
         M = buf[:n * ns * ns].reshape(n, ns, ns).transpose(0, 2, 1)
         return M, buf[n * ns * ns:].reshape(n, nl, 3)

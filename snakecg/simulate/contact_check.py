@@ -23,12 +23,12 @@ its struct and does the same in Python for the segments that ``solve_ivp`` integ
 
 from __future__ import annotations
 
-import ctypes
 import weakref
 
 import numpy as np
 
-from ..engine.segment import GEO_OFF, GEO_RECORD, GEO_STOP, Geometry
+from ..engine.binding import Geometry, address
+from ..engine.segment import GEO_OFF, GEO_RECORD, GEO_STOP
 from ..errors import InputError
 from ..geometry import ContactCheck
 from .records import Violation
@@ -75,7 +75,7 @@ class RunCheck:
         g.tol, g.half, g.radius = self.tolerance, self.shape.half, self.shape.radius
         g.length, g.com1 = self._length.ctypes.data, com1
         g.y = self._y.ctypes.data
-        self.address = ctypes.addressof(g)
+        self.address = address(g)
         core = getattr(model, "core", None)
         self._c = getattr(core, "contact_depth", None)
 

@@ -11,12 +11,11 @@ workspace keeps its model, and so the scene vector whose address the structs sto
 
 from __future__ import annotations
 
-import ctypes
 import weakref
 
 import numpy as np
 
-from ..engine.segment import Run, Segment, Settle
+from ..engine.binding import Run, Segment, Settle, address, int64s
 from ..solver import PIVOT_TOL, REL_TOL, default_max_iter
 
 __all__ = ["START_IMPACT", "START_WIDTH", "Workspace", "give", "take"]
@@ -88,13 +87,13 @@ class Workspace:
         st.y_out, st.state, st.forced_out = addr["s_y_out"], addr["s_state"], addr["s_forced_out"]
         st.impact_lam, st.projection_lam = addr["s_impact_lam"], addr["s_projection_lam"]
         run = Run()
-        run.sg, run.st = ctypes.addressof(seg), ctypes.addressof(st)
+        run.sg, run.st = address(seg), address(st)
         run.y, run.start_out = addr["y_start"], addr["start_out"]
         self.seg, self.st, self.run = seg, st, run
-        self.run_address = ctypes.addressof(run)
+        self.run_address = address(run)
         shared.update(
-            seg=seg, st=st, _address=ctypes.addressof(seg),
-            _settle_address=ctypes.addressof(st), _prev_address=addr["s_prev"],
+            seg=seg, st=st, _address=address(seg),
+            _settle_address=address(st), _prev_address=addr["s_prev"],
             _fn=core.integrate_segment, _samples=core.mode_samples, _run=core.run,
             _settle=core.settle)
         # the batch drivers of mass_matrix and link_poses (inputs q, K): their pointer arrays
@@ -109,7 +108,7 @@ class Workspace:
             kin = []
             for name in ("mass_matrix", "link_poses"):
                 i = be.signatures[name].in_names.index("q")
-                strides = (ctypes.c_longlong * 2)()  # q's stride n_s, K broadcast
+                strides = int64s(2)  # q's stride n_s, K broadcast
                 strides[i] = ns
                 kin.append((fns[name], K.ctypes.data, i, strides))
             shared["_K"], shared["_kin"] = K, kin
