@@ -15,8 +15,7 @@ from .errors import ArtifactError, BuildError, InputError, SingularConstraintsEr
 from .model import ForwardResult, RobotModel, SceneModel, load
 from .robot import SCENARIOS, Robot, Scene
 from .spatial import SpatialRobot
-
-__version__ = "0.1.0"
+from ._version import __version__
 
 __all__ = [
     "Robot",

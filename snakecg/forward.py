@@ -301,7 +301,7 @@ PARALLEL_MIN = 512
 def _core_batch(model, core, parts: dict, n: int, iters: int, raw: np.ndarray) -> int:
     """The C core over the batch (in chunks on threads for a large one): its status."""
     from .engine.layout import INPUTS
-    from .native import pool, threads
+    from .engine.threads import pool, threads
 
     zeros = model.zero_inputs
     arrays = []

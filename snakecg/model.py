@@ -22,6 +22,7 @@ from ._inputs import (
 )
 from .engine import Data, Layout
 from .errors import InputError
+from .kinds import SCENE_MODEL
 from .forward import ForwardResult, _Columns, forward, forward_one
 from .native import ManifestMismatch, load_backend
 from .robot import Robot, Scene
@@ -251,6 +252,9 @@ def _plain(x, size: int) -> bool:
 class SceneModel(RobotModel):
     """The coupled snake + object of a :class:`~snakecg.Scene`: forward analysis, maps,
     extremes over the input region, torque optimisation and simulation."""
+
+    #: What the feature packages check their ``model`` argument by (:mod:`snakecg.kinds`).
+    model_kind = SCENE_MODEL
 
     def __init__(self, scene: Scene, *, backend: str = "compiled", progress=None):
         if not isinstance(scene, Scene):

@@ -31,6 +31,8 @@ import numpy as np
 from .artifacts import cache_dir, held_lock, make_private_dir
 from .bound import BoundFunction
 from .engine.binding import Library, empty_pointers, int64s, pointers
+from .engine.threads import PARALLEL_MIN as _PARALLEL_MIN
+from .engine.threads import pool, threads
 from .errors import ArtifactError, BuildError
 
 __all__ = [
@@ -308,36 +310,6 @@ def _library_problems(lib, manifest: dict) -> list[str]:
     return problems
 
 
-#: Batches at least this large are split across threads.
-_PARALLEL_MIN = 2048
-_POOL = None
-
-
-def _threads() -> int:
-    raw = os.environ.get("SNAKECG_THREADS")
-    if raw:
-        try:
-            return max(1, int(raw))
-        except ValueError:
-            return 1
-    return max(1, min(os.cpu_count() or 1, 8))
-
-
-def threads(n: int, parallel_min: int) -> int:
-    """Threads for a batch of ``n``: ``SNAKECG_THREADS`` (default: the cores, at most 8) when
-    ``n`` reaches ``parallel_min`` samples per thread, else fewer (at least 1)."""
-    return max(1, min(_threads(), n // max(1, parallel_min)))
-
-
-def pool() -> ThreadPoolExecutor:
-    """The shared worker threads of batched calls (ctypes releases the GIL in C)."""
-    global _POOL
-    if _POOL is None:
-        _POOL = ThreadPoolExecutor(max_workers=_threads(), thread_name_prefix="snakecg")
-    return _POOL
-
-
-
 def _check_input(sig: _Signature, k: int, a: np.ndarray, n: int, size: int) -> None:
     """Internal contract: 1-D of ``size`` (broadcast) or C-contiguous ``(n, size)`` float64."""
     ok = a.dtype == np.float64 and a.flags.c_contiguous and (
@@ -404,7 +376,7 @@ class CompiledBackend:
         else:
             outs = [np.empty((n, c, r)) for (r, c) in sig.out_shapes]
             resp = pointers(o.ctypes.data for o in outs)
-        if n >= _PARALLEL_MIN and _threads() > 1:
+        if threads(n, _PARALLEL_MIN) > 1:
             status = self._parallel(name, n, argp, strides, resp, sig)
         else:
             status = self._fns[name](n, argp, strides, resp)
@@ -416,9 +388,10 @@ class CompiledBackend:
         """Split a large batch into contiguous chunks evaluated on several threads.
 
         ctypes releases the GIL during the call and every driver call allocates its own work
-        arrays, so the chunks run truly in parallel (``SNAKECG_THREADS``, default: the cores).
+        arrays, so the chunks run truly in parallel (``SNAKECG_THREADS``; one thread by default:
+        :mod:`snakecg.engine.threads`).
         """
-        workers = _threads()
+        workers = threads(n, _PARALLEL_MIN)
         bounds = np.linspace(0, n, workers + 1).astype(np.int64)
         n_in, n_out = len(sig.in_sizes), len(sig.out_shapes)
         nnz = [r * c for r, c in sig.out_shapes]

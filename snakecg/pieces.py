@@ -189,7 +189,7 @@ def explore(model, prim, qa, states, kernel=None):
     S = len(states)
     lookup, base = _state_lookup(states)
     # seeds: the states of a few directions, from the package's forward solver
-    from .analysis import sphere_directions
+    from .extremes_result import sphere_directions
 
     dirs = sphere_directions(na, {1: 2, 2: 4, 3: 6}.get(na, 12))
     taus = np.einsum("bij,kj->bki", prim["T"], dirs).reshape(-1, na)

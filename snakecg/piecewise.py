@@ -49,7 +49,7 @@ from __future__ import annotations
 import numpy as np
 
 from .engine.sphere import MAX_DIM
-from .native import pool, threads
+from .engine.threads import pool, threads
 from .pieces import all_states, explore, forms, primitives
 from .solver import HELD
 from .sphere_kkt import per_config, piece_extremes, quad
@@ -210,7 +210,7 @@ def wheel_extremes(model, qa, chunk: int = 2048, compiled: bool = True):
     Returns an :class:`~snakecg.analysis.Extremes` with ``certified`` (N,) and ``pieces``
     (the number of (configuration, state) pieces meeting the sphere).
     """
-    from .analysis import METRICS, Extremes
+    from .extremes_result import METRICS, Extremes
 
     n, na = qa.shape[0], model.n_joints
     ex = Extremes(method="wheels: exact piecewise solve (every wheel state meeting the input "

@@ -11,11 +11,11 @@ The query and the answers are flat float64 vectors laid out by
 
 from __future__ import annotations
 
-import os
 
 import numpy as np
 
 from .layout import Layout
+from .threads import pool, threads
 
 __all__ = ["OptimalKernel", "MAX_SR", "LEAST_SLIP_PUSH", "STRONGEST_PUSH", "KINDS",
            "OPTIMAL", "INFEASIBLE", "FAILED", "REASON", "CHECK", "CERTIFICATE", "METHOD",
@@ -62,14 +62,7 @@ def _workers(n: int) -> int:
     rarely has: on the 2-core machine of docs/performance.md, shared with other work, two
     threads never ran faster than one (16,000 configurations: 4.6 us per configuration
     either way; the second core was busy), so one thread is the default."""
-    raw = os.environ.get("SNAKECG_THREADS")
-    if not raw or n < 2 * PARALLEL_MIN:
-        return 1
-    try:
-        asked = int(raw)
-    except ValueError:
-        return 1
-    return max(1, min(asked, n // PARALLEL_MIN))
+    return threads(n, PARALLEL_MIN)
 
 
 def _ptr(a):
@@ -106,8 +99,6 @@ class OptimalKernel:
         if workers == 1:
             status = self._solve(n, *args, qa.ctypes.data, out.ctypes.data)
         else:
-            from ..native import pool
-
             bounds = np.linspace(0, n, workers + 1).astype(np.int64)
             qp, op = qa.ctypes.data, out.ctypes.data
             ns, w = qa.shape[1], self.out_width

@@ -8,6 +8,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import InputError
+from ..kinds import is_scene_model
 from ..limits import ROBOT
 from .result import OBJECTIVES
 
@@ -39,16 +40,8 @@ def _finite_vector(name, value, sizes, what):
     return arr
 
 
-#: snakecg.model.SceneModel, imported on first use (an import inside every call costs
-#: microseconds)
-_SceneModel = None
-
-
 def validate(model, objective, tau_max, radius, direction, a_min, a_obj, allow_slide):
-    global _SceneModel
-    if _SceneModel is None:
-        from ..model import SceneModel as _SceneModel
-    if not isinstance(model, _SceneModel):
+    if not is_scene_model(model):
         raise InputError(
             f"model must be a snakecg.SceneModel (snakecg.load(scene)), got {type(model).__name__}"
         )

@@ -143,10 +143,10 @@ def _l(a):
 
 # ------------------------------------------------------------------------------------------
 def _validate(model, objective, q0, starts, seed, joint_limits, feasible, clearance, task):
-    from ..model import SceneModel
+    from ..kinds import is_scene_model
     from ..optimize.query import validate as validate_task
 
-    if not isinstance(model, SceneModel):
+    if not is_scene_model(model):
         raise InputError(f"model must be a snakecg.SceneModel (snakecg.load(scene)), got "
                          f"{type(model).__name__}")
     if not isinstance(objective, str) or objective.replace("-", "_") not in OBJECTIVES:
