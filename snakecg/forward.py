@@ -228,7 +228,7 @@ def forward_one(model, core, q, tau, data):
     d = data
     own = d is None
     if own:
-        d = model.data
+        d = model.data()
         if not d.lock.acquire(False):  # another thread is using it: a workspace of our own
             d, own = model.create_data(), False
     try:

@@ -280,7 +280,7 @@ class SceneModel(RobotModel):
             bounds[1:] = np.asarray(scene.wheel_bounds())
         self.bounds = bounds
         # the runtime core: the scene's constants in one vector, the output columns, a
-        # default workspace (snakecg.engine.Data)
+        # default workspace (snakecg.engine.data.Data)
         self.core = getattr(self.backend, "core", None)
         layout = self.core.layout if self.core is not None else Layout.of(self.manifest)
         self.columns = _Columns(layout)
@@ -296,8 +296,7 @@ class SceneModel(RobotModel):
         self.zero_inputs = {"v": np.zeros((1, self.n_coordinates)), "v_obj": np.zeros((1, 3)),
                             "f_obj": np.zeros((1, 3))}
         self._shape_q, self._shape_tau = (self.n_coordinates,), (self.n_joints,)
-        self.data = self.create_data().bind(self)
-        """The default workspace (used by one caller at a time; others get a fresh one)."""
+        self._data = self.create_data().bind(self)
         self.scene_inputs = MappingProxyType({
             "K": self.parameters, "contact_link": onehot, "side": self._side,
             "object_mass": self._object_mass, "object_inertia": self._object_inertia,
@@ -335,9 +334,16 @@ class SceneModel(RobotModel):
         return o["q_obj"][:, :, 0], o["rho"][:, :, 0], o["contact_point"][:, :, 0]
 
     # forward -------------------------------------------------------------------------------
+    def data(self) -> Data:
+        """The model's own :class:`~snakecg.engine.data.Data` (every workspace of its steps;
+        used by one caller at a time: a second thread gets a fresh one, see
+        :meth:`create_data`)."""
+        return self._data
+
     def create_data(self) -> Data:
-        """A new workspace for this model (:class:`snakecg.engine.Data`): give one to each
-        thread that calls :meth:`forward` on one sample at a high rate (``data=``)."""
+        """A new :class:`~snakecg.engine.data.Data` for this model (Pinocchio's rule: one per
+        thread): give one to each thread that calls :meth:`forward` on one sample at a high
+        rate (``data=``)."""
         return Data(self.core.layout if self.core is not None else Layout.of(self.manifest))
 
     def __getstate__(self):

@@ -158,3 +158,32 @@ def test_engine_files_are_under_600_lines():
     for path in [*ENGINE.glob("*.[ch]"), *ENGINE.glob("*.py")]:
         lines = path.read_text(encoding="utf-8").count("\n")
         assert lines < 600, f"{path.name}: {lines} lines"
+
+
+def test_no_per_model_state_outside_its_data():
+    """No module keeps per-model state (a WeakKeyDictionary keyed by models) and no step
+    stashes a key in a model's ``__dict__``: every workspace is the model's Data's."""
+    for name, path in _modules().items():
+        text = path.read_text(encoding="utf-8")
+        assert "WeakKeyDictionary" not in text, name
+        assert not re.search(r"model\.__dict__", text), name
+
+
+def test_one_data_holds_the_workspaces_of_every_step():
+    """forward, optimize and simulate leave their workspaces in ``model.data()`` and nothing
+    on the model; ``create_data()`` is a new, empty one (one per thread)."""
+    import numpy as np
+
+    model = snakecg.load(snakecg.Scene(snakecg.Robot(joints=2), scenario="wheels"))
+    before = set(vars(model))
+    q = np.array([0.0, 0.0, 0.0, 0.4, -0.3])
+    model.forward(q, [0.1, -0.1])
+    model.optimize(q, "max_sr", radius=1.0)
+    model.simulate(q, [0.05, -0.05], 0.01)
+    assert set(vars(model)) == before
+    data = model.data()
+    assert data is model.data()
+    assert {"optimize.no_slide", "simulate.constants"} <= set(data.derived)
+    assert len(data.simulation_pool) == 1
+    other = model.create_data()
+    assert other is not data and other.derived == {} and other.simulation_pool == []

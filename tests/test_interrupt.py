@@ -82,7 +82,7 @@ def test_paused_calls_give_the_uninterrupted_run(wheels, monkeypatch, path):
     try:
         paused = wheels.simulate(Q3, law, 0.4, **kw)
     finally:
-        workspace._POOLS.pop(wheels, None)  # no counting workspace left for later runs
+        wheels.data().simulation_pool.clear()  # no counting workspace left for later runs
     assert paused.summary["integrator"]["compiled_segments"]
     steps = plain.summary["integrator"]["rhs_evaluations"] // 12
     assert len(calls) > steps // 2, (len(calls), steps)  # it did stop and go on, many times

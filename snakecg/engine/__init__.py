@@ -7,22 +7,19 @@ iteration of :mod:`snakecg.solver`'s rules, the conditioning and the physical ch
 sample, with the loop in C. Samples it cannot answer exactly come back marked for the
 reference path (:mod:`snakecg.rows`, :mod:`snakecg.solver`).
 
-:class:`Data` is the workspace of one caller, in the manner of Pinocchio's ``Data``: the
-one-sample input and output buffers with their addresses, built once. A model holds a default
-one, used under a non-blocking lock (a second thread that finds it busy gets a fresh one), so
-models are safe to share between threads without hidden thread-local state.
+:class:`~snakecg.engine.data.Data` (:mod:`snakecg.engine.data`) is the workspace of one
+caller, in the manner of Pinocchio's ``Data``.
 """
 
 from __future__ import annotations
-
-import threading
 
 import numpy as np
 
 from ..rows import WEAK
 from ..solver import FORCE_LIMIT, PIVOT_TOL, REL_TOL
-from .binding import Call, Library, address, int64s, pointers
-from .layout import INPUTS, Layout
+from .binding import Library
+from .data import Data
+from .layout import Layout
 from .optimal import OptimalKernel
 from .sphere import SphereKernel
 
@@ -80,47 +77,3 @@ class Core:
         memory, ``-(2 + i)`` bad input at sample ``i``)."""
         return self._fn(n, scene_address, self.constants_address, max_iter, inputs_address,
                         strides_address, out_address)
-
-
-class Data:
-    """The workspace of one caller of a :class:`~snakecg.SceneModel` (Pinocchio's ``Data``):
-    the one-sample input buffer (``q, v, tau, q_obj, v_obj, f_obj, rho``), the output row and
-    the pointer arrays the C reads, built once. Create one per thread with
-    ``model.create_data()`` and pass it as ``data=``; a model used without one takes its
-    default workspace when free and a fresh one otherwise."""
-
-    __slots__ = ("n_coordinates", "n_joints", "inputs", "q", "tau", "out", "call",
-                 "call_address", "lock", "owner", "_pointers", "_strides")
-
-    def __init__(self, layout: Layout):
-        ns, na = layout.n_coordinates, layout.n_joints
-        sizes = {"q": ns, "v": ns, "tau": na, "q_obj": 3, "v_obj": 3, "f_obj": 3, "rho": 2}
-        self.n_coordinates, self.n_joints = ns, na
-        self.inputs = np.zeros(sum(sizes.values()))  # v, v_obj, f_obj stay 0 (at rest)
-        offsets, k = {}, 0
-        for name in INPUTS:
-            offsets[name] = k
-            k += sizes[name]
-        self.q = self.inputs[offsets["q"]: offsets["q"] + ns]
-        self.tau = self.inputs[offsets["tau"]: offsets["tau"] + na]
-        base = self.inputs.ctypes.data
-        # q_obj NULL: the C places the object from q
-        self._pointers = pointers(0 if name in ("q_obj", "rho") else base + 8 * offsets[name]
-                                  for name in INPUTS)
-        self._strides = int64s(len(INPUTS))  # zero: one sample
-        self.out = np.zeros(layout.out_width)
-        self.call = Call(1, 0, 0, 0, address(self._pointers), address(self._strides),
-                         self.out.ctypes.data)
-        self.call_address = address(self.call)
-        self.lock = threading.Lock()
-        self.owner = None
-
-    def bind(self, model) -> Data:
-        """Point the one-sample call at ``model``'s scene vector and solver constants."""
-        self.call.scene, self.call.max_iter = model.scene_address, model.max_iter
-        self.call.constants = model.core.constants_address if model.core is not None else 0
-        self.owner = model
-        return self
-
-    def __repr__(self) -> str:
-        return f"<snakecg.Data for n_s = {self.n_coordinates}, n_a = {self.n_joints}>"

@@ -33,7 +33,6 @@ from __future__ import annotations
 
 import math
 import time
-import weakref
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -58,9 +57,6 @@ CHECK_TOL = 1e-6
 REGULARIZED_TOL = 1e-4
 #: Geometric constraints are checked at the answer to this tolerance (m).
 GEOMETRY_TOL = 1e-9
-
-_PROBLEMS: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
-
 
 @dataclass
 class OptimizeShapeResult:
@@ -215,7 +211,7 @@ def _validate(model, objective, q0, starts, seed, joint_limits, feasible, cleara
 
 
 def _problem(model, objective, form, feasible, box, ellipsoid, task):
-    cache = _PROBLEMS.setdefault(model, {})
+    cache = model.data().derived.setdefault("shape.problems", {})
     key = (objective, form, feasible, box, ellipsoid, task)
     if key not in cache:
         cache[key] = _nlp.Problem(model, objective, form, feasible=feasible, box=box,

@@ -16,7 +16,6 @@ solve_ivp.
 from __future__ import annotations
 
 import math
-import weakref
 from types import SimpleNamespace
 
 import numpy as np
@@ -62,9 +61,6 @@ def compiled_reason(settings) -> str | None:
     return None
 
 
-_PLACE: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
-
-
 def placement(model, q0):
     """The scene's placement of the object at the checked ``q0`` (n_s,): ``(q_obj0, rho)``,
     new arrays, as :meth:`snakecg.SceneModel.place` gives them, through the compiled batch
@@ -74,7 +70,8 @@ def placement(model, q0):
     if fn is None:
         q_obj0, rho, _ = model.place(q0[None, :], 1)
         return q_obj0[0].copy(), rho[0].copy()
-    fixed = _PLACE.get(model)
+    derived = model.data().derived
+    fixed = derived.get("simulate.place")
     if fixed is None:
         sig = be.signatures["place_object"]
         values = {"K": model.parameters, "contact_link": model._contact_link,
@@ -90,7 +87,7 @@ def placement(model, q0):
         sizes = [r * c for r, c in sig.out_shapes]  # q_obj (3), rho (2), contact point (2)
         # the template of the pointer arrays (copied at each call: the q and output pointers
         # are the call's), the strides (all 0: one sample), where q and the outputs go
-        fixed = _PLACE[model] = (packed, argp, int64s(len(argp)),
+        fixed = derived["simulate.place"] = (packed, argp, int64s(len(argp)),
                                  sig.in_names.index("q"), len(q0),
                                  np.cumsum([len(q0), *sizes[:-1]]).tolist(), sum(sizes))
     _, template, strides, k, ns, offsets, n_out = fixed

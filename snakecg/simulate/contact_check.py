@@ -23,7 +23,6 @@ its struct and does the same in Python for the segments that ``solve_ivp`` integ
 
 from __future__ import annotations
 
-import weakref
 
 import numpy as np
 
@@ -39,15 +38,16 @@ __all__ = ["MODES", "RunCheck"]
 MODES = ("stop", "report", "off")
 _CODES = {"stop": GEO_STOP, "report": GEO_RECORD, "off": GEO_OFF}
 _XTOL = 4 * float(np.finfo(float).eps)  # Brent's method as the events' (scipy's brentq)
-#: The :class:`~snakecg.geometry.ContactCheck` of a model and its link lengths, made once.
-_SHAPES: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
 
 
 def _shape_of(model):
-    got = _SHAPES.get(model)
+    """The :class:`~snakecg.geometry.ContactCheck` of a model and its link lengths, made once
+    (kept in the model's data)."""
+    derived = model.data().derived
+    got = derived.get("simulate.shapes")
     if got is None:
         robot = model.scene.robot
-        got = _SHAPES[model] = (ContactCheck.of_scene(model.scene),
+        got = derived["simulate.shapes"] = (ContactCheck.of_scene(model.scene),
                                 np.ascontiguousarray(robot.length, dtype=float),
                                 float(robot.com[0]))
     return got

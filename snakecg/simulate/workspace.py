@@ -4,14 +4,13 @@ model and lent to one run at a time.
 
 A run takes a workspace with :func:`take` (from the model's pool, or a new one) and gives it
 back with :func:`give` when it is done; two runs at the same time (threads) hold two
-workspaces, so nothing is shared between them. The pool holds no reference to the model (it
-is kept in a :class:`weakref.WeakKeyDictionary` keyed by the model): the run that holds a
+workspaces, so nothing is shared between them. The pool is the model's data's
+(``model.data().simulation_pool``, :mod:`snakecg.engine.data`): the run that holds a
 workspace keeps its model, and so the scene vector whose address the structs store, alive.
 """
 
 from __future__ import annotations
 
-import weakref
 
 import numpy as np
 
@@ -33,9 +32,6 @@ KEEP_BYTES = 4 << 20
 #: ``START_WIDTH`` doubles without the 2 n_c impulses.
 START_IMPACT = 4
 START_WIDTH = 15
-
-_POOLS: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
-
 
 class Workspace:
     """Everything the compiled segments, settles and runs of ``model`` read and write, with
@@ -128,7 +124,7 @@ class Workspace:
 
 def take(model) -> Workspace:
     """A workspace of ``model``: one from its pool, or a new one."""
-    pool = _POOLS.get(model)
+    pool = model.data().simulation_pool
     if pool:
         try:
             return pool.pop()
@@ -140,9 +136,7 @@ def take(model) -> Workspace:
 def give(model, ws: Workspace) -> None:
     """Give ``ws`` back to the pool of ``model`` (dropped when the pool is full; its output
     buffer dropped when above :data:`KEEP_BYTES`)."""
-    pool = _POOLS.get(model)
-    if pool is None:
-        pool = _POOLS.setdefault(model, [])
+    pool = model.data().simulation_pool
     if len(pool) < POOL_SIZE:
         if ws._out[0].nbytes > KEEP_BYTES:
             ws._out = np.empty(0), 0
