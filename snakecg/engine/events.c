@@ -53,51 +53,13 @@ static double kinetic_energy(const sc_settle *st, const sc_system *sys, const do
                           vo[2] * (st->scene[SCENE_object_inertia] * vo[2]));
 }
 
-/* Solve A x = b (n x n, row-major copy in A) by Gaussian elimination with partial pivoting
- * (LAPACK's getrf/getrs, as numpy.linalg.solve); 1 if A is singular. */
-static int lu_solve(double *A, double *b, int n) {
-  int i, j, k, p;
-  for (k = 0; k < n; ++k) {
-    double best = fabs(A[k * n + k]);
-    p = k;
-    for (i = k + 1; i < n; ++i)
-      if (fabs(A[i * n + k]) > best) {
-        best = fabs(A[i * n + k]);
-        p = i;
-      }
-    if (!(best > 0)) return 1;
-    if (p != k) {
-      double t;
-      for (j = 0; j < n; ++j) {
-        t = A[k * n + j];
-        A[k * n + j] = A[p * n + j];
-        A[p * n + j] = t;
-      }
-      t = b[k];
-      b[k] = b[p];
-      b[p] = t;
-    }
-    for (i = k + 1; i < n; ++i) {
-      const double f = A[i * n + k] / A[k * n + k];
-      A[i * n + k] = f;
-      for (j = k + 1; j < n; ++j) A[i * n + j] -= f * A[k * n + j];
-      b[i] -= f * b[k];
-    }
-  }
-  for (i = n - 1; i >= 0; --i) {
-    double t = b[i];
-    for (j = i + 1; j < n; ++j) t -= A[i * n + j] * b[j];
-    b[i] = t / A[i * n + i];
-  }
-  return 0;
-}
-
 /* Dynamics.project: y projected (positions onto g = 0 first when `positions` and the contact
  * is among the m `rows`), the impulses Lam (m) and the kinetic-energy change. 0, or 1. */
 static int project(sc_work_t *ws, const sc_settle *st, double *y, const int *rows, int m,
                    int positions, double *Lam, double *dE) {
   sc_system sys;
   double av[NC], GF[NC * NC];
+  sc_int piv[NC];
   int i, j, it;
   if (positions && m > 0 && rows[0] == 0) {
     for (it = 0; it < 3; ++it) {
@@ -114,7 +76,8 @@ static int project(sc_work_t *ws, const sc_settle *st, double *y, const int *row
     for (j = 0; j < m; ++j) GF[i * m + j] = sys.G[rows[i] + NC * rows[j]];
     Lam[i] = av[rows[i]];
   }
-  if (lu_solve(GF, Lam, m)) return 1;
+  if (!sc_lu_factor(m, GF, m, piv)) return 1; /* linalg.h: P A = L U, partial pivoting */
+  sc_lu_solve(m, GF, m, piv, Lam);
   for (i = 0; i < m; ++i) Lam[i] = -Lam[i];
   for (i = 0; i < NS; ++i) {
     double t = 0.0;

@@ -34,64 +34,6 @@
 #define SC_SPHERE_MAX 16
 #define SC_SPHERE_CAND (4 * SC_SPHERE_MAX + 2)
 
-/* Eigen-decomposition of the symmetric k x k matrix S (row-major, overwritten): eigenvalues
- * e ascending, eigenvectors as the columns of V (row-major). Cyclic Jacobi rotations. */
-static void sc_sphere_eigh(int k, double *S, double *e, double *V) {
-  int i, j, l, sweep;
-  for (i = 0; i < k; ++i)
-    for (j = 0; j < k; ++j) V[i * k + j] = (i == j) ? 1.0 : 0.0;
-  for (sweep = 0; sweep < 60; ++sweep) {
-    double off = 0.0, tot = 0.0;
-    for (i = 0; i < k; ++i)
-      for (j = 0; j < k; ++j) {
-        double s2 = S[i * k + j] * S[i * k + j];
-        tot += s2;
-        if (i != j) off += s2;
-      }
-    if (off <= 1e-32 * tot || off == 0.0) break;
-    for (i = 0; i < k - 1; ++i)
-      for (j = i + 1; j < k; ++j) {
-        double apq = S[i * k + j], app, aqq, theta, t, c, s;
-        if (apq == 0.0) continue;
-        app = S[i * k + i];
-        aqq = S[j * k + j];
-        theta = 0.5 * (aqq - app) / apq;
-        t = (theta >= 0 ? 1.0 : -1.0) / (fabs(theta) + sqrt(theta * theta + 1.0));
-        c = 1.0 / sqrt(t * t + 1.0);
-        s = t * c;
-        for (l = 0; l < k; ++l) { /* S <- S J (columns i, j) */
-          double sli = S[l * k + i], slj = S[l * k + j];
-          S[l * k + i] = c * sli - s * slj;
-          S[l * k + j] = s * sli + c * slj;
-        }
-        for (l = 0; l < k; ++l) { /* S <- J^T S (rows i, j) */
-          double sil = S[i * k + l], sjl = S[j * k + l];
-          S[i * k + l] = c * sil - s * sjl;
-          S[j * k + l] = s * sil + c * sjl;
-        }
-        S[i * k + j] = S[j * k + i] = 0.0;
-        for (l = 0; l < k; ++l) { /* V <- V J */
-          double vli = V[l * k + i], vlj = V[l * k + j];
-          V[l * k + i] = c * vli - s * vlj;
-          V[l * k + j] = s * vli + c * vlj;
-        }
-      }
-  }
-  for (i = 0; i < k; ++i) e[i] = S[i * k + i];
-  for (i = 1; i < k; ++i) { /* insertion sort, ascending, columns of V along */
-    for (j = i; j > 0 && e[j - 1] > e[j]; --j) {
-      double t = e[j];
-      e[j] = e[j - 1];
-      e[j - 1] = t;
-      for (l = 0; l < k; ++l) {
-        t = V[l * k + j];
-        V[l * k + j] = V[l * k + j - 1];
-        V[l * k + j - 1] = t;
-      }
-    }
-  }
-}
-
 /* Functions with the signs and zeros of phi (which = 0) and phi' (which = 1), nearly linear
  * near the poles so that Newton's method converges in a few steps, and their slopes:
  *   which 0: 1/r - S^(-1/2), S = sum_j W_j / (P_j - mu)^2 (phi = S - r^2);
@@ -362,7 +304,7 @@ int SNAKECG_EXPORT(core_sphere_faces)(sc_int F, sc_int na_, sc_int k_, sc_int m_
         e[0] = Ar[0];
         V[0] = 1.0;
       } else {
-        sc_sphere_eigh(k, Ar, e, V);
+        sc_eigen_symmetric(k, Ar, k, e, V, k); /* linalg.h */
       }
       for (l = 0; l < k; ++l) ng += gr[l] * gr[l];
       ng = 2.0 * sqrt(ng) * rf;
