@@ -16,7 +16,7 @@ import re
 import sys
 import warnings
 
-from . import __version__
+from ._version import __version__
 from .errors import InputError, SnakecgError
 
 COMMANDS = ("generate", "show", "forward", "reproduce", "optimize", "simulate")

@@ -247,10 +247,12 @@ class Robot:
         element. Needs the ``urdf`` extra; see :mod:`snakecg.urdf`, docs/how-to/urdf.md and
         docs/how-to/spatial.md."""
         from .spatial.files import spatial_chain_or_planar
+        from .spatial.robot import SpatialRobot
         from .urdf import robot_from_urdf
 
         return spatial_chain_or_planar("urdf", path, name, lambda: robot_from_urdf(
-            path, tol=tol, name=name))
+            path, robot_type=cls, tol=tol, name=name), planar_type=cls,
+            spatial_type=SpatialRobot)
 
     @classmethod
     def from_mjcf(cls, path: str | Path, *, tol: float = 1e-6, name: str | None = None):
@@ -258,8 +260,10 @@ class Robot:
         parser, the ``mjcf`` extra): a planar :class:`Robot` when the chain is planar, else a
         :class:`~snakecg.SpatialRobot`; see docs/how-to/spatial.md."""
         from .spatial.files import spatial_chain_or_planar
+        from .spatial.robot import SpatialRobot
 
-        return spatial_chain_or_planar("mjcf", path, name, None, tol=tol)
+        return spatial_chain_or_planar("mjcf", path, name, None, planar_type=cls,
+                                       spatial_type=SpatialRobot, tol=tol)
 
     def __repr__(self) -> str:
         return f"Robot({_fields_repr(self, _ROBOT_REPR)})"

@@ -828,3 +828,16 @@ def test_no_pickle_or_eval_in_the_runtime():
     # the no-compiler fallback deserializes CasADi's data format; it imports no generated code
     assert "exec_module" not in loader and "importlib" not in loader
     assert "Function.deserialize" in loader
+
+
+def test_missing_serialized_function_is_an_artifact_error(tmp_path):
+    """A model folder whose manifest lacks one function's ``.casadi`` file is refused on
+    loading with an ArtifactError naming the function, for CasADi's in-process backend (the
+    problem used to be dropped, and the first call of the function raised a bare KeyError)."""
+    folder = tmp_path / "na1"
+    shutil.copytree(packaged(1), folder)
+    manifest = json.loads((folder / "manifest.json").read_text())
+    del manifest["files"]["casadi/mass_matrix.casadi"]
+    (folder / "casadi" / "mass_matrix.casadi").unlink()
+    with pytest.raises(ArtifactError, match=r"mass_matrix has no serialized CasADi function"):
+        native.CasadiBackend(folder, manifest)

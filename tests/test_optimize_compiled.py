@@ -1,4 +1,4 @@
-"""The optimal-torque queries in C (``snakecg/core/qp.c``, ``maps.c``, ``optimal.c``,
+"""The optimal-torque queries in C (``snakecg/engine/qp.c``, ``maps.c``, ``optimal.c``,
 ``wheel_states.c``, ``linalg.h``) against independent references.
 
 References, none of them sharing code with what they check:
@@ -547,7 +547,7 @@ def test_batch_of_one_and_batches_equal_the_single_call_bit_for_bit(models, rng,
 
 
 def test_threads_do_not_change_a_bit(models, rng, monkeypatch):
-    from snakecg.core import optimal
+    from snakecg.engine import optimal
 
     sm = models(3)
     Q = random_q(rng, 3, 40)

@@ -29,6 +29,9 @@ from ..errors import InputError
 from ..progress import progress_enabled, progress_reporter
 from ..robot import SCENARIOS, Robot, Scene
 
+#: The schema of ``snakecg show --json`` (planar and spatial chains).
+SHOW_SCHEMA = "snakecg.show/1"
+
 __all__ = [
     "parse_vector",
     "vector",

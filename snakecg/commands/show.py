@@ -18,10 +18,10 @@ import sys
 import textwrap
 
 from ..errors import ArtifactError, BuildError, InputError
-from ._common import print_json, progress_reporter
+from ._common import SHOW_SCHEMA, print_json, progress_reporter
 
 #: Version of the JSON printed by ``snakecg show --json`` (docs/reference/cli.md).
-SCHEMA = "snakecg.show/1"
+SCHEMA = SHOW_SCHEMA
 #: Largest joint count for symbolic inspection (the closed forms grow as n^3).
 MAX_SHOW_JOINTS = 8
 

@@ -18,8 +18,8 @@ The input region is the ellipsoid of eq. (31), ``tau^T N tau <= radius^2`` with
 or both.
 
 One home: every query, for one configuration or a batch, is one call of the compiled
-runtime core (``snakecg/core/optimal.c``, ``wheel_states.c``, ``maps.c`` on the QP block
-``qp.c`` and the linear algebra of ``linalg.h``; bound in :mod:`snakecg.core.optimal`), which
+runtime core (``snakecg/engine/optimal.c``, ``wheel_states.c``, ``maps.c`` on the QP block
+``qp.c`` and the linear algebra of ``linalg.h``; bound in :mod:`snakecg.engine.optimal`), which
 per configuration builds the maps, solves, certifies the answer on the original problem, runs
 the exact forward solve at the answer and checks it. This package validates the query
 (:mod:`~snakecg.optimize.query`, :mod:`~snakecg.optimize.arguments`), builds the call's inputs

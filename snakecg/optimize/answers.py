@@ -1,6 +1,6 @@
 """The compiled query's answers as :class:`~snakecg.optimize.OptimizeResult`: codes to names,
 numbers to reasons. Nothing numeric happens here: the solve, the certificate, the forward
-solve at the answer and its check all ran in C (:mod:`snakecg.core.optimal`)."""
+solve at the answer and its check all ran in C (:mod:`snakecg.engine.optimal`)."""
 
 from __future__ import annotations
 
@@ -9,7 +9,7 @@ import math
 
 import numpy as np
 
-from ..core.optimal import (CERTIFICATE, CHECK, INFEASIBLE, METHOD, OPTIMAL, QP_STATUS,
+from ..engine.optimal import (CERTIFICATE, CHECK, INFEASIBLE, METHOD, OPTIMAL, QP_STATUS,
                             REASON)
 from ..forward import ForwardResult
 from ..rows import reason_of

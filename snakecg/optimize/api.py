@@ -1,5 +1,5 @@
 """The entry point :func:`optimize`: validate the query, build the compiled call's inputs, one
-call of the runtime core for every configuration (:mod:`snakecg.core.optimal`: the maps, the
+call of the runtime core for every configuration (:mod:`snakecg.engine.optimal`: the maps, the
 solve, the certificate, the forward solve at the answer and its check), the answers as an
 :class:`~snakecg.optimize.OptimizeResult`."""
 
@@ -10,7 +10,7 @@ import time
 
 import numpy as np
 
-from ..core.optimal import CHECK, KINDS, REASON
+from ..engine.optimal import CHECK, KINDS, REASON
 from ..errors import SnakecgError
 from .answers import result
 from .query import Query, validate
@@ -111,7 +111,7 @@ def no_answer(model, row):
 
 
 def query_vector(query: Query) -> np.ndarray:
-    """The compiled query's input vector (:meth:`snakecg.core.Layout.optimal_in_fields`):
+    """The compiled query's input vector (:meth:`snakecg.engine.Layout.optimal_in_fields`):
     the settings, then the query with NaN where it has no such value."""
     tm = query.tau_max
     d = query.direction

@@ -214,7 +214,7 @@ class Certificate:
     ``tolerance``; ``resolved`` is True when the first solve failed the check and the answer
     comes from a second method (max_sr: the general eigenproblem after the closed form);
     ``reason`` says which condition failed ("" when ok). Computed in C with the answer
-    (``snakecg/core/qp.c``, ``optimal.c``).
+    (``snakecg/engine/qp.c``, ``optimal.c``).
     """
 
     kind: str

@@ -20,7 +20,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from ..core.segment import EVENT_CODES
+from ..engine.segment import EVENT_CODES
 from ..solver import ABSENT, HELD, LOST, SLIDE_NEG, SLIDE_POS, solve_active_set
 from .modes import Mode, transitions
 from .records import SimEvent
@@ -31,7 +31,7 @@ __all__ = ["EventSpec", "EventSpecs", "Events"]
 class EventSpec(NamedTuple):
     """A terminal event of a mode: its ``kind`` (what happens when it fires), the constraint
     ``row`` and the ``quantity`` that crosses zero downwards (the compiled segments' code of
-    it: :data:`snakecg.core.segment.EVENT_CODES`)."""
+    it: :data:`snakecg.engine.segment.EVENT_CODES`)."""
 
     kind: str
     row: int
@@ -248,7 +248,7 @@ class Events:
 
     def _settled(self, t, st, prev, before, off_link, events, impact_kind):
         """:meth:`settle`'s records, state and mode from the compiled ``core_settle``'s
-        answer ``st`` (a :class:`~snakecg.core.segment.Settle`)."""
+        answer ``st`` (a :class:`~snakecg.engine.segment.Settle`)."""
         k = self.kernel
         records = []
         if st.impact:

@@ -10,7 +10,6 @@ later), and is called through the same batched drivers and backends.
 
 from __future__ import annotations
 
-import ctypes
 import hashlib
 import json
 import os
@@ -21,6 +20,7 @@ from importlib import metadata
 from pathlib import Path
 
 from .. import native
+from ..engine.binding import Library
 from ..artifacts import (_package_dir, _report_once, _safe_relative, _sha_file, _well_formed,
                          cache_dir, held_lock, make_private_dir)
 from ..errors import ArtifactError, BuildError, InputError
@@ -195,16 +195,10 @@ class SpatialCompiledBackend(native.CompiledBackend):
 
     def __init__(self, lib_path: Path, manifest: dict):  # noqa: D107 - as CompiledBackend
         self.path = lib_path
-        self._lib = ctypes.CDLL(str(lib_path))
         self.prefix = manifest["prefix"]
+        self._lib = Library(lib_path, self.prefix)
         self.signatures = {s["name"]: native._Signature(s) for s in manifest["functions"]}
-        self._fns = {}
-        for name in self.signatures:
-            fn = getattr(self._lib, f"{self.prefix}batch_{name}")
-            fn.argtypes = [ctypes.c_longlong, ctypes.POINTER(ctypes.c_void_p),
-                           ctypes.POINTER(ctypes.c_longlong), ctypes.POINTER(ctypes.c_void_p)]
-            fn.restype = ctypes.c_int
-            self._fns[name] = fn
+        self._fns = {name: self._lib.batch(name) for name in self.signatures}
         native._check_signatures(lib_path, manifest, native._library_problems(self._lib,
                                                                                 manifest))
         self.core = None

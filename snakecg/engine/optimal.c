@@ -1,6 +1,6 @@
-/* snakecg's runtime core: the optimal-torque queries of snakecg.optimize, every objective and
+/* snakecg's engine: the optimal-torque queries of snakecg.optimize, every objective and
  * every input region, for a batch of configurations in one call (types and codes in
- * optimal.h; the methods in docs/how-to/optimize.md).
+ * engine.h; the methods in docs/how-to/optimize.md).
  *
  * This file is part of the runtime (not generated); like forward.c it is compiled once per
  * model into the model's shared library. It holds the batch loop, what the kinds share and
@@ -26,8 +26,7 @@
 #include <string.h>
 
 #include "snakecg_layout.h"
-#include "optimal.h"
-
+#include "engine.h"
 /* ---------------------------------------------------------------------------------------
  * what the kinds share */
 void sc_optimal_bind(sc_optimal *o, int code) {
@@ -381,7 +380,7 @@ int SNAKECG_EXPORT(core_optimal_check)(sc_int n, const double *in, double *out) 
 }
 
 /* ---------------------------------------------------------------------------------------
- * The building blocks alone, for tests against independent references (snakecg.core.optimal:
+ * The building blocks alone, for tests against independent references (snakecg.engine.optimal:
  * the QP, the QCQP, the certificate, the symmetric eigensolver). Sizes up to n variables and m
  * rows of the caller's choosing. */
 int SNAKECG_EXPORT(core_qp_solve)(sc_int n, sc_int m, const double *H, const double *g,

@@ -2,8 +2,7 @@
  * every link against the object and every pair of non-neighbouring links against each other,
  * as overlap depths (m, 0 when apart), at a state y = (q, q_obj, ...).
  *
- * This file is part of the runtime (not generated); integrate.c and run.c include it after
- * common.h. The links are the segments of the planar chain (rear end of link 1 at
+ * Part of the engine (not generated); used by integrate.c and run.c through engine.h. The links are the segments of the planar chain (rear end of link 1 at
  * (x, y) - c_1 e_1, each link's front end the next one's rear end; phi_1 = theta,
  * phi_{i+1} = phi_i + q_i), or capsules of a radius; the object is the square plate of half
  * side h centred at q_obj[0..1], turned by q_obj[2].
@@ -17,39 +16,24 @@
  * then the links (i, j), i < j - 1, in order. A pair whose bounding circles (a link's about
  * its middle, the plate's about its centre, widened by the radius) are apart has overlap 0
  * and is not measured further. */
-#ifndef SNAKECG_CORE_GEOMETRY_H
-#define SNAKECG_CORE_GEOMETRY_H
-
 #include <math.h>
 #include <string.h>
 
-#define GEO_NL SNAKECG_NL
+#include "snakecg_layout.h"
+#include "engine.h"
+
+#include <string.h>
+
+#define SC_GEO_NL SNAKECG_NL
 /* the larger and smaller of two numbers (inlined: the library's fmax and fmin are calls) */
-static double geo_max(double a, double b) { return a > b ? a : b; }
-static double geo_min(double a, double b) { return a < b ? a : b; }
+static double sc_geo_max(double a, double b) { return a > b ? a : b; }
+static double sc_geo_min(double a, double b) { return a < b ? a : b; }
 
-/* The check of a run (mirrored in snakecg/core/segment.py): inputs, then outputs. */
-enum { GEO_OFF = 0, GEO_STOP = 1, GEO_RECORD = 2 };
-struct sc_geometry {
-  sc_int mode;          /* GEO_STOP: the first violation ends the segment (SEG_GEOMETRY);
-                           GEO_RECORD: it is recorded and the segment goes on */
-  double tol;           /* the overlap allowed (m) */
-  double half;          /* the plate's half side (m) */
-  double radius;        /* the links' radius (m; 0: segments) */
-  const double *length; /* GEO_NL link lengths (joint to joint) */
-  double com1;          /* link 1's COM from its rear end */
-  /* outputs: the first violation (found = 1 once there is one; not looked for again) */
-  sc_int found;
-  double t, depth;      /* when the overlap first exceeds tol (located on the dense output) */
-  sc_int pair;          /* the deepest pair there */
-  double *y;            /* NY: the state there */
-};
-typedef struct sc_geometry sc_geometry;
 
-static double geo_cross(double ax, double ay, double bx, double by) { return ax * by - ay * bx; }
+static double sc_geo_cross(double ax, double ay, double bx, double by) { return ax * by - ay * bx; }
 
 /* Distance from (px, py) to the segment a-b (geometry.point_segment_distance). */
-static double geo_point_segment(double px, double py, double ax, double ay, double bx,
+static double sc_geo_point_segment(double px, double py, double ax, double ay, double bx,
                                 double by) {
   const double dx = bx - ax, dy = by - ay, dd = dx * dx + dy * dy;
   double t = dd > 0 ? ((px - ax) * dx + (py - ay) * dy) / dd : 0.0, ex, ey;
@@ -60,24 +44,24 @@ static double geo_point_segment(double px, double py, double ax, double ay, doub
 }
 
 /* The least distance from an end of a0-a1 or b0-b1 to the other, and whether they cross. */
-static double geo_ends(const double *a0, const double *a1, const double *b0, const double *b1,
+static double sc_geo_ends(const double *a0, const double *a1, const double *b0, const double *b1,
                        int *crossing) {
   const double dax = a1[0] - a0[0], day = a1[1] - a0[1];
   const double dbx = b1[0] - b0[0], dby = b1[1] - b0[1];
-  const double s1 = geo_cross(dbx, dby, a0[0] - b0[0], a0[1] - b0[1]);
-  const double s2 = geo_cross(dbx, dby, a1[0] - b0[0], a1[1] - b0[1]);
-  const double s3 = geo_cross(dax, day, b0[0] - a0[0], b0[1] - a0[1]);
-  const double s4 = geo_cross(dax, day, b1[0] - a0[0], b1[1] - a0[1]);
+  const double s1 = sc_geo_cross(dbx, dby, a0[0] - b0[0], a0[1] - b0[1]);
+  const double s2 = sc_geo_cross(dbx, dby, a1[0] - b0[0], a1[1] - b0[1]);
+  const double s3 = sc_geo_cross(dax, day, b0[0] - a0[0], b0[1] - a0[1]);
+  const double s4 = sc_geo_cross(dax, day, b1[0] - a0[0], b1[1] - a0[1]);
   *crossing = s1 * s2 < 0 && s3 * s4 < 0;
-  return geo_min(geo_min(geo_point_segment(a0[0], a0[1], b0[0], b0[1], b1[0], b1[1]),
-                   geo_point_segment(a1[0], a1[1], b0[0], b0[1], b1[0], b1[1])),
-              geo_min(geo_point_segment(b0[0], b0[1], a0[0], a0[1], a1[0], a1[1]),
-                   geo_point_segment(b1[0], b1[1], a0[0], a0[1], a1[0], a1[1])));
+  return sc_geo_min(sc_geo_min(sc_geo_point_segment(a0[0], a0[1], b0[0], b0[1], b1[0], b1[1]),
+                   sc_geo_point_segment(a1[0], a1[1], b0[0], b0[1], b1[0], b1[1])),
+              sc_geo_min(sc_geo_point_segment(b0[0], b0[1], a0[0], a0[1], a1[0], a1[1]),
+                   sc_geo_point_segment(b1[0], b1[1], a0[0], a0[1], a1[0], a1[1])));
 }
 
 /* The depth of the deepest point of the segment a-b (in the plate's frame) inside the plate
  * of half side h, 0 when it stays outside (geometry.object_penetration). */
-static double geo_plate_depth(double ax, double ay, double bx, double by, double h) {
+static double sc_geo_plate_depth(double ax, double ay, double bx, double by, double h) {
   const double dx = bx - ax, dy = by - ay;
   const double ts[6] = {0.0, 1.0, -ax / dx, -ay / dy, -(ax - ay) / (dx - dy),
                         -(ax + ay) / (dx + dy)};
@@ -86,14 +70,14 @@ static double geo_plate_depth(double ax, double ay, double bx, double by, double
   for (k = 0; k < 6; ++k) {
     double t = isfinite(ts[k]) ? ts[k] : 0.0;
     t = t < 0 ? 0.0 : (t > 1 ? 1.0 : t);
-    best = geo_max(best, h - geo_max(fabs(ax + t * dx), fabs(ay + t * dy)));
+    best = sc_geo_max(best, h - sc_geo_max(fabs(ax + t * dx), fabs(ay + t * dy)));
   }
   return best;
 }
 
 /* The overlap of the link a-b (in the plate's frame) and the plate of half side h. */
-static double geo_link_plate(double ax, double ay, double bx, double by, double h, double r) {
-  const double d = geo_plate_depth(ax, ay, bx, by, h);
+static double sc_geo_link_plate(double ax, double ay, double bx, double by, double h, double r) {
+  const double d = sc_geo_plate_depth(ax, ay, bx, by, h);
   const double c[5][2] = {{-h, -h}, {h, -h}, {h, h}, {-h, h}, {-h, -h}};
   const double a[2] = {ax, ay}, b[2] = {bx, by};
   double dist = INFINITY;
@@ -101,20 +85,20 @@ static double geo_link_plate(double ax, double ay, double bx, double by, double 
   if (r <= 0) return d;
   if (d > 0) return d + r;
   for (k = 0; k < 4; ++k) { /* outside: the distance to the plate's edges */
-    const double e = geo_ends(a, b, c[k], c[k + 1], &crossing);
-    dist = geo_min(dist, crossing ? 0.0 : e);
+    const double e = sc_geo_ends(a, b, c[k], c[k + 1], &crossing);
+    dist = sc_geo_min(dist, crossing ? 0.0 : e);
   }
-  return geo_max(0.0, r - dist);
+  return sc_geo_max(0.0, r - dist);
 }
 
 /* The largest overlap at the state y and its pair (the first of equals). */
-static double geo_depth(const sc_geometry *g, const double *y, sc_int *pair) {
-  double rear[GEO_NL][2], front[GEO_NL][2], phi = y[2], best = 0.0;
+double sc_geo_depth(const sc_geometry *g, const double *y, sc_int *pair) {
+  double rear[SC_GEO_NL][2], front[SC_GEO_NL][2], phi = y[2], best = 0.0;
   const double h = g->half, r = g->radius, ox = y[SNAKECG_NS], oy = y[SNAKECG_NS + 1];
   const double cs = cos(y[SNAKECG_NS + 2]), sn = sin(y[SNAKECG_NS + 2]);
   const double reach = h * 1.4142135623730951 + r; /* the plate's circle, widened */
   sc_int i, j, p = 0;
-  for (i = 0; i < GEO_NL; ++i) {
+  for (i = 0; i < SC_GEO_NL; ++i) {
     double ex, ey;
     if (i) phi += y[2 + i];
     ex = cos(phi);
@@ -130,7 +114,7 @@ static double geo_depth(const sc_geometry *g, const double *y, sc_int *pair) {
     front[i][1] = rear[i][1] + g->length[i] * ey;
   }
   *pair = 0;
-  for (i = 0; i < GEO_NL; ++i, ++p) { /* the links and the object */
+  for (i = 0; i < SC_GEO_NL; ++i, ++p) { /* the links and the object */
     const double mx = 0.5 * (rear[i][0] + front[i][0]) - ox;
     const double my = 0.5 * (rear[i][1] + front[i][1]) - oy, far = 0.5 * g->length[i] + reach;
     if (mx * mx + my * my <= far * far) { /* in the plate's frame */
@@ -138,19 +122,19 @@ static double geo_depth(const sc_geometry *g, const double *y, sc_int *pair) {
       const double ay = -sn * (rear[i][0] - ox) + cs * (rear[i][1] - oy);
       const double bx = cs * (front[i][0] - ox) + sn * (front[i][1] - oy);
       const double by = -sn * (front[i][0] - ox) + cs * (front[i][1] - oy);
-      const double d = geo_link_plate(ax, ay, bx, by, h, r);
+      const double d = sc_geo_link_plate(ax, ay, bx, by, h, r);
       if (d > best) best = d, *pair = p;
     }
   }
-  for (i = 0; i < GEO_NL; ++i) /* non-neighbouring links */
-    for (j = i + 2; j < GEO_NL; ++j, ++p) {
+  for (i = 0; i < SC_GEO_NL; ++i) /* non-neighbouring links */
+    for (j = i + 2; j < SC_GEO_NL; ++j, ++p) {
       const double mx = 0.5 * (rear[i][0] + front[i][0] - rear[j][0] - front[j][0]);
       const double my = 0.5 * (rear[i][1] + front[i][1] - rear[j][1] - front[j][1]);
       const double far = 0.5 * (g->length[i] + g->length[j]) + 2 * r;
       if (mx * mx + my * my <= far * far) {
         int crossing;
-        const double e = geo_ends(rear[i], front[i], rear[j], front[j], &crossing);
-        const double d = geo_max(0.0, 2 * r - (crossing ? -e : e));
+        const double e = sc_geo_ends(rear[i], front[i], rear[j], front[j], &crossing);
+        const double d = sc_geo_max(0.0, 2 * r - (crossing ? -e : e));
         if (d > best) best = d, *pair = p;
       }
     }
@@ -158,7 +142,7 @@ static double geo_depth(const sc_geometry *g, const double *y, sc_int *pair) {
 }
 
 /* The first violation: at t, the state y (NY), its overlap and pair. */
-static void geo_record(sc_geometry *g, double t, const double *y, double depth, sc_int pair) {
+void sc_geo_record(sc_geometry *g, double t, const double *y, double depth, sc_int pair) {
   g->found = 1;
   g->t = t;
   g->depth = depth;
@@ -166,4 +150,14 @@ static void geo_record(sc_geometry *g, double t, const double *y, double depth, 
   memcpy(g->y, y, sizeof(double) * NY);
 }
 
-#endif
+/* The contact check at n states Y (n x NY, row-major): the largest overlap of each in depth,
+ * its pair in pair (as a double). Returns 0. */
+int SNAKECG_EXPORT(core_contact_depth)(const sc_geometry *g, sc_int n, const double *Y,
+                                      double *depth, double *pair) {
+  sc_int k, p;
+  for (k = 0; k < n; ++k) {
+    depth[k] = sc_geo_depth(g, Y + k * NY, &p);
+    pair[k] = (double)p;
+  }
+  return 0;
+}

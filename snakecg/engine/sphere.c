@@ -27,77 +27,19 @@
 #include <string.h>
 
 #include "snakecg_layout.h"
+#include "engine.h"
 
-typedef long long int sk_int;
 
 /* largest na (and face dimension k) handled here; larger ones stay on NumPy's path */
-#define SK_MAX 16
-#define SK_CAND (4 * SK_MAX + 2)
-
-/* Eigen-decomposition of the symmetric k x k matrix S (row-major, overwritten): eigenvalues
- * e ascending, eigenvectors as the columns of V (row-major). Cyclic Jacobi rotations. */
-static void sk_eigh(int k, double *S, double *e, double *V) {
-  int i, j, l, sweep;
-  for (i = 0; i < k; ++i)
-    for (j = 0; j < k; ++j) V[i * k + j] = (i == j) ? 1.0 : 0.0;
-  for (sweep = 0; sweep < 60; ++sweep) {
-    double off = 0.0, tot = 0.0;
-    for (i = 0; i < k; ++i)
-      for (j = 0; j < k; ++j) {
-        double s2 = S[i * k + j] * S[i * k + j];
-        tot += s2;
-        if (i != j) off += s2;
-      }
-    if (off <= 1e-32 * tot || off == 0.0) break;
-    for (i = 0; i < k - 1; ++i)
-      for (j = i + 1; j < k; ++j) {
-        double apq = S[i * k + j], app, aqq, theta, t, c, s;
-        if (apq == 0.0) continue;
-        app = S[i * k + i];
-        aqq = S[j * k + j];
-        theta = 0.5 * (aqq - app) / apq;
-        t = (theta >= 0 ? 1.0 : -1.0) / (fabs(theta) + sqrt(theta * theta + 1.0));
-        c = 1.0 / sqrt(t * t + 1.0);
-        s = t * c;
-        for (l = 0; l < k; ++l) { /* S <- S J (columns i, j) */
-          double sli = S[l * k + i], slj = S[l * k + j];
-          S[l * k + i] = c * sli - s * slj;
-          S[l * k + j] = s * sli + c * slj;
-        }
-        for (l = 0; l < k; ++l) { /* S <- J^T S (rows i, j) */
-          double sil = S[i * k + l], sjl = S[j * k + l];
-          S[i * k + l] = c * sil - s * sjl;
-          S[j * k + l] = s * sil + c * sjl;
-        }
-        S[i * k + j] = S[j * k + i] = 0.0;
-        for (l = 0; l < k; ++l) { /* V <- V J */
-          double vli = V[l * k + i], vlj = V[l * k + j];
-          V[l * k + i] = c * vli - s * vlj;
-          V[l * k + j] = s * vli + c * vlj;
-        }
-      }
-  }
-  for (i = 0; i < k; ++i) e[i] = S[i * k + i];
-  for (i = 1; i < k; ++i) { /* insertion sort, ascending, columns of V along */
-    for (j = i; j > 0 && e[j - 1] > e[j]; --j) {
-      double t = e[j];
-      e[j] = e[j - 1];
-      e[j - 1] = t;
-      for (l = 0; l < k; ++l) {
-        t = V[l * k + j];
-        V[l * k + j] = V[l * k + j - 1];
-        V[l * k + j - 1] = t;
-      }
-    }
-  }
-}
+#define SC_SPHERE_MAX 16
+#define SC_SPHERE_CAND (4 * SC_SPHERE_MAX + 2)
 
 /* Functions with the signs and zeros of phi (which = 0) and phi' (which = 1), nearly linear
  * near the poles so that Newton's method converges in a few steps, and their slopes:
  *   which 0: 1/r - S^(-1/2), S = sum_j W_j / (P_j - mu)^2 (phi = S - r^2);
  *   which 1: L^(-1/3) - R^(-1/3), L = sum_{P_j < mu} W_j / (mu - P_j)^3 and R the same over
  *            the poles right of mu (phi' = 2 (R - L); used between two poles). */
-static double sk_eval(int which, int J, const double *P, const double *W, double r, double mu,
+static double sc_sphere_eval(int which, int J, const double *P, const double *W, double r, double mu,
                       double *slope) {
   int j;
   if (!which) {
@@ -132,18 +74,18 @@ static double sk_eval(int which, int J, const double *P, const double *W, double
 /* The zero of an increasing (sign +1) or decreasing (-1) function (which: 0 phi, 1 phi') on
  * (lo, hi) from x0 (the midpoint if outside): Newton steps kept inside the bracket, bisection
  * where a step leaves it or stalls (rtsafe), to the rounding level. */
-static double sk_root(int which, int sign, int J, const double *P, const double *W, double r,
+static double sc_sphere_root(int which, int sign, int J, const double *P, const double *W, double r,
                       double lo, double hi, double x0, double atol) {
   const double lo0 = lo, hi0 = hi;
   double x = (x0 > lo && x0 < hi) ? x0 : 0.5 * (lo + hi), dx_old = hi - lo;
   int it;
-#ifdef SK_COUNT
-  ++sk_calls;
+#ifdef SC_SPHERE_COUNT
+  ++sc_sphere_calls;
 #endif
   for (it = 0; it < 100; ++it) {
-    double slope, f = sk_eval(which, J, P, W, r, x, &slope), step, xn;
-#ifdef SK_COUNT
-    ++sk_iters;
+    double slope, f = sc_sphere_eval(which, J, P, W, r, x, &slope), step, xn;
+#ifdef SC_SPHERE_COUNT
+    ++sc_sphere_iters;
 #endif
     if (f == 0.0) return x;
     if (sign * f > 0) hi = x;
@@ -167,7 +109,7 @@ static double sk_root(int which, int sign, int J, const double *P, const double 
 }
 
 /* y scaled to |y| = r (r e_0 where y = 0) */
-static void sk_to_sphere(int k, double *y, double r) {
+static void sc_sphere_to_sphere(int k, double *y, double r) {
   double ny = 0.0;
   int l;
   for (l = 0; l < k; ++l) ny += y[l] * y[l];
@@ -181,7 +123,7 @@ static void sk_to_sphere(int k, double *y, double r) {
 }
 
 /* y = -sum_i gv_i / (e_i - mu) V_i, scaled to |y| = r */
-static void sk_point(int k, const double *e, const double *gv, const double *V, double mu,
+static void sc_sphere_point(int k, const double *e, const double *gv, const double *V, double mu,
                      double tiny, double r, double *y) {
   int i, l;
   for (l = 0; l < k; ++l) y[l] = 0.0;
@@ -191,14 +133,14 @@ static void sk_point(int k, const double *e, const double *gv, const double *V, 
     a = -gv[i] / den;
     for (l = 0; l < k; ++l) y[l] += a * V[l * k + i];
   }
-  sk_to_sphere(k, y, r);
+  sc_sphere_to_sphere(k, y, r);
 }
 
 /* The stationary points y (n x k, returned count) of y^T Ar y + 2 gr^T y on |y| = r, with
  * Ar = V diag(e) V^T (e ascending). */
-static int sk_candidates(int k, const double *e, const double *V, const double *gr, double r,
+static int sc_sphere_candidates(int k, const double *e, const double *V, const double *gr, double r,
                          double *Y) {
-  double gv[SK_MAX], P[SK_MAX], W[SK_MAX];
+  double gv[SC_SPHERE_MAX], P[SC_SPHERE_MAX], W[SC_SPHERE_MAX];
   double emax = 0.0, gmax = 0.0, escale, tiny, near, r_safe = r > 1e-100 ? r : 1e-100;
   double r2 = r_safe * r_safe, wsum = 0.0, atol;
   int i, j, l, n = 0, J = 0;
@@ -240,8 +182,8 @@ static int sk_candidates(int k, const double *e, const double *V, const double *
   if (J > 0) {
     double s = 2.0 * sqrt(wsum) / r_safe; /* phi < 0 at P_0 - s and P_J-1 + s, strictly */
     /* first guesses: the root of the nearest pole's term alone */
-    double mu = sk_root(0, 1, J, P, W, r_safe, P[0] - s, P[0], P[0] - sqrt(W[0]) / r_safe, atol);
-    sk_point(k, e, gv, V, mu, tiny, r, Y + k * n++);
+    double mu = sc_sphere_root(0, 1, J, P, W, r_safe, P[0] - s, P[0], P[0] - sqrt(W[0]) / r_safe, atol);
+    sc_sphere_point(k, e, gv, V, mu, tiny, r, Y + k * n++);
     for (j = 0; j + 1 < J; ++j) {
       /* phi >= W_j / x^2 + W_j+1 / (d - x)^2 - r^2 >= max(8 sqrt(W_j W_j+1), W_j, W_j+1) / d^2
        * - r^2 between the two poles (x = mu - P_j, d = P_j+1 - P_j): no root where positive */
@@ -249,25 +191,25 @@ static int sk_candidates(int k, const double *e, const double *V, const double *
       if (W[j] > lb) lb = W[j];
       if (W[j + 1] > lb) lb = W[j + 1];
       if (lb > 1.0000001 * r2 * d * d) continue;
-      m = sk_root(1, 1, J, P, W, r_safe, P[j], P[j + 1], 0.5 * (P[j] + P[j + 1]), atol);
-      f = sk_eval(0, J, P, W, r_safe, m, &slope);
+      m = sc_sphere_root(1, 1, J, P, W, r_safe, P[j], P[j + 1], 0.5 * (P[j] + P[j + 1]), atol);
+      f = sc_sphere_eval(0, J, P, W, r_safe, m, &slope);
       if (f < 0) {
-        mu = sk_root(0, -1, J, P, W, r_safe, P[j], m, P[j] + sqrt(W[j]) / r_safe, atol);
-        sk_point(k, e, gv, V, mu, tiny, r, Y + k * n++);
-        mu = sk_root(0, 1, J, P, W, r_safe, m, P[j + 1], P[j + 1] - sqrt(W[j + 1]) / r_safe,
+        mu = sc_sphere_root(0, -1, J, P, W, r_safe, P[j], m, P[j] + sqrt(W[j]) / r_safe, atol);
+        sc_sphere_point(k, e, gv, V, mu, tiny, r, Y + k * n++);
+        mu = sc_sphere_root(0, 1, J, P, W, r_safe, m, P[j + 1], P[j + 1] - sqrt(W[j + 1]) / r_safe,
                      atol);
-        sk_point(k, e, gv, V, mu, tiny, r, Y + k * n++);
+        sc_sphere_point(k, e, gv, V, mu, tiny, r, Y + k * n++);
       } else if (f <= 1e-10 / r_safe) { /* a double root (within rounding) */
-        sk_point(k, e, gv, V, m, tiny, r, Y + k * n++);
+        sc_sphere_point(k, e, gv, V, m, tiny, r, Y + k * n++);
       }
     }
-    mu = sk_root(0, -1, J, P, W, r_safe, P[J - 1], P[J - 1] + s,
+    mu = sc_sphere_root(0, -1, J, P, W, r_safe, P[J - 1], P[J - 1] + s,
                  P[J - 1] + sqrt(W[J - 1]) / r_safe, atol);
-    sk_point(k, e, gv, V, mu, tiny, r, Y + k * n++);
+    sc_sphere_point(k, e, gv, V, mu, tiny, r, Y + k * n++);
   }
   /* the hard case: mu an eigenvalue e_i whose gv_i vanishes (to within the roots' spread) */
   for (i = 0; i < k; ++i) {
-    double yp[SK_MAX], t, s2 = 0.0;
+    double yp[SC_SPHERE_MAX], t, s2 = 0.0;
     int sgn;
     if (fabs(gv[i]) > near * r_safe) continue;
     for (l = 0; l < k; ++l) yp[l] = 0.0;
@@ -282,7 +224,7 @@ static int sk_candidates(int k, const double *e, const double *V, const double *
     for (sgn = 1; sgn >= -1; sgn -= 2) {
       double *y = Y + k * n++;
       for (l = 0; l < k; ++l) y[l] = yp[l] + sgn * t * V[l * k + i];
-      sk_to_sphere(k, y, r);
+      sc_sphere_to_sphere(k, y, r);
     }
   }
   return n;
@@ -296,24 +238,24 @@ static int sk_candidates(int k, const double *e, const double *V, const double *
  *        [skip_lo, skip_hi] is not searched: vmax/vmin -inf/+inf, vhi/vlo those bounds;
  *   out: vmax/umax, vmin/umin (feasible candidates; -inf/+inf where none),
  *        vhi/vlo (all candidates).
- * Returns 0, or -1 when na or k exceeds SK_MAX (nothing written). */
-int SNAKECG_EXPORT(core_sphere_faces)(sk_int F, sk_int na_, sk_int k_, sk_int m_,
-                                      const sk_int *pair, const double *u0, const double *Z,
+ * Returns 0, or -1 when na or k exceeds SC_SPHERE_MAX (nothing written). */
+int SNAKECG_EXPORT(core_sphere_faces)(sc_int F, sc_int na_, sc_int k_, sc_int m_,
+                                      const sc_int *pair, const double *u0, const double *Z,
                                       const double *r, const double *A, const double *g,
                                       const double *c, const double *cond, double feas_tol,
                                       const double *skip_hi, const double *skip_lo,
                                       double *vmax, double *umax, double *vmin, double *umin,
                                       double *vhi, double *vlo) {
   int na = (int)na_, k = (int)k_, m = (int)m_;
-  sk_int f;
-  if (na > SK_MAX || k > SK_MAX || na < 1 || k < 1) return -1;
+  sc_int f;
+  if (na > SC_SPHERE_MAX || k > SC_SPHERE_MAX || na < 1 || k < 1) return -1;
   for (f = 0; f < F; ++f) {
-    const sk_int p = pair[f];
+    const sc_int p = pair[f];
     const double *Ap = A + p * na * na, *gp = g + p * na, *cp = cond + p * m * (na + 1);
     const double *Zf = Z ? Z + f * na * k : 0, *u0f = Z ? u0 + f * na : 0;
     const double rf = Z ? r[f] : 1.0;
-    double Ar[SK_MAX * SK_MAX], gr[SK_MAX], h[SK_MAX], AZ[SK_MAX * SK_MAX];
-    double e[SK_MAX], V[SK_MAX * SK_MAX], Y[SK_CAND * SK_MAX], u[SK_MAX];
+    double Ar[SC_SPHERE_MAX * SC_SPHERE_MAX], gr[SC_SPHERE_MAX], h[SC_SPHERE_MAX], AZ[SC_SPHERE_MAX * SC_SPHERE_MAX];
+    double e[SC_SPHERE_MAX], V[SC_SPHERE_MAX * SC_SPHERE_MAX], Y[SC_SPHERE_CAND * SC_SPHERE_MAX], u[SC_SPHERE_MAX];
     double bmax = -INFINITY, bmin = INFINITY, hi = -INFINITY, lo = INFINITY;
     int i, j, l, nc, ci, imax = -1, imin = -1;
     /* h = A u0 + g, gr = Z^T h, Ar = Z^T A Z */
@@ -362,7 +304,7 @@ int SNAKECG_EXPORT(core_sphere_faces)(sk_int F, sk_int na_, sk_int k_, sk_int m_
         e[0] = Ar[0];
         V[0] = 1.0;
       } else {
-        sk_eigh(k, Ar, e, V);
+        sc_eigen_symmetric(k, Ar, k, e, V, k); /* linalg.h */
       }
       for (l = 0; l < k; ++l) ng += gr[l] * gr[l];
       ng = 2.0 * sqrt(ng) * rf;
@@ -379,7 +321,7 @@ int SNAKECG_EXPORT(core_sphere_faces)(sk_int F, sk_int na_, sk_int k_, sk_int m_
         continue;
       }
     }
-    nc = sk_candidates(k, e, V, gr, rf, Y);
+    nc = sc_sphere_candidates(k, e, V, gr, rf, Y);
     for (ci = 0; ci < nc; ++ci) {
       const double *y = Y + ci * k;
       double v = c[p], au;
@@ -433,19 +375,19 @@ int SNAKECG_EXPORT(core_sphere_faces)(sk_int F, sk_int na_, sk_int k_, sk_int m_
  * where the rows are independent (|R_jj| > 1e-12) and r^2 >= 0. Writes the kept faces'
  * pair, combination index, u0 (F, na), Z (F, na, na - s) and r, in the order of pairs then
  * combinations (NumPy's order); returns their count F (at most P * ncombo), -1 when na
- * exceeds SK_MAX. */
-sk_int SNAKECG_EXPORT(core_sphere_cut)(sk_int P, sk_int na_, sk_int m_, sk_int s_, sk_int ncombo,
-                                       const sk_int *combos, const double *cond,
-                                       const unsigned char *used, sk_int *pair_out,
-                                       sk_int *combo_out, double *u0, double *Z, double *r) {
+ * exceeds SC_SPHERE_MAX. */
+sc_int SNAKECG_EXPORT(core_sphere_cut)(sc_int P, sc_int na_, sc_int m_, sc_int s_, sc_int ncombo,
+                                       const sc_int *combos, const double *cond,
+                                       const unsigned char *used, sc_int *pair_out,
+                                       sc_int *combo_out, double *u0, double *Z, double *r) {
   int na = (int)na_, m = (int)m_, s = (int)s_, k = na - s;
-  sk_int p, ci, F = 0;
-  if (na > SK_MAX || s < 1 || s >= na) return -1;
+  sc_int p, ci, F = 0;
+  if (na > SC_SPHERE_MAX || s < 1 || s >= na) return -1;
   for (p = 0; p < P; ++p) {
     const double *cp = cond + p * m * (na + 1);
     for (ci = 0; ci < ncombo; ++ci) {
-      const sk_int *sl = combos + ci * s;
-      double Q[SK_MAX * SK_MAX], R[SK_MAX * SK_MAX], x[SK_MAX], rr = 1.0;
+      const sc_int *sl = combos + ci * s;
+      double Q[SC_SPHERE_MAX * SC_SPHERE_MAX], R[SC_SPHERE_MAX * SC_SPHERE_MAX], x[SC_SPHERE_MAX], rr = 1.0;
       int i, j, l, ok = 1;
       for (j = 0; j < s; ++j) ok &= used[p * m + sl[j]] != 0;
       if (!ok) continue;
@@ -454,7 +396,7 @@ sk_int SNAKECG_EXPORT(core_sphere_cut)(sk_int P, sk_int na_, sk_int m_, sk_int s
         for (j = 0; j < s; ++j) R[i * s + j] = cp[sl[j] * (na + 1) + i];
       }
       for (j = 0; j < s && ok; ++j) { /* Householder on column j, rows j.. */
-        double nx = 0.0, alpha, v[SK_MAX], vv = 0.0;
+        double nx = 0.0, alpha, v[SC_SPHERE_MAX], vv = 0.0;
         for (i = j; i < na; ++i) nx += R[i * s + j] * R[i * s + j];
         nx = sqrt(nx);
         alpha = R[j * s + j] >= 0 ? -nx : nx;
@@ -504,17 +446,17 @@ sk_int SNAKECG_EXPORT(core_sphere_cut)(sk_int P, sk_int na_, sk_int m_, sk_int s
 /* Whether each face meets its piece: one of the two stationary points of direction . u on
  * the face's sphere (u0 +- r Z Z^T d / |Z^T d|; u0 +- r Z for k = 1) satisfies every
  * condition of the pair within feas_tol (snakecg.sphere_kkt.linear_candidates). */
-int SNAKECG_EXPORT(core_sphere_meets)(sk_int F, sk_int na_, sk_int k_, sk_int m_,
-                                      const sk_int *pair, const double *u0, const double *Z,
+int SNAKECG_EXPORT(core_sphere_meets)(sc_int F, sc_int na_, sc_int k_, sc_int m_,
+                                      const sc_int *pair, const double *u0, const double *Z,
                                       const double *r, const double *cond,
                                       const double *direction, double feas_tol,
                                       unsigned char *meets) {
   int na = (int)na_, k = (int)k_, m = (int)m_;
-  sk_int f;
-  if (na > SK_MAX || k > SK_MAX) return -1;
+  sc_int f;
+  if (na > SC_SPHERE_MAX || k > SC_SPHERE_MAX) return -1;
   for (f = 0; f < F; ++f) {
     const double *Zf = Z + f * na * k, *cp = cond + pair[f] * m * (na + 1);
-    double gz[SK_MAX], ng = 0.0;
+    double gz[SC_SPHERE_MAX], ng = 0.0;
     int i, l, j, sgn, hit = 0;
     if (k == 1) {
       gz[0] = 1.0;
@@ -529,7 +471,7 @@ int SNAKECG_EXPORT(core_sphere_meets)(sk_int F, sk_int na_, sk_int k_, sk_int m_
       for (l = 0; l < k; ++l) gz[l] = ng > 1e-14 ? gz[l] / ng : (l == 0 ? 1.0 : 0.0);
     }
     for (sgn = 1; sgn >= -1 && !hit; sgn -= 2) {
-      double u[SK_MAX];
+      double u[SC_SPHERE_MAX];
       int ok = 1;
       for (i = 0; i < na; ++i) {
         double t = 0.0;

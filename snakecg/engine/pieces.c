@@ -19,17 +19,17 @@
 #include <string.h>
 
 #include "snakecg_layout.h"
+#include "engine.h"
 
-typedef long long int pc_int;
 
 /* row states (snakecg/solver.py) */
-enum { PC_ABSENT = 0, PC_HELD = 1, PC_LOST = 2, PC_SLIDE_POS = 3, PC_SLIDE_NEG = 4 };
+enum { SC_PIECE_ABSENT = 0, SC_PIECE_HELD = 1, SC_PIECE_LOST = 2, SC_PIECE_SLIDE_POS = 3, SC_PIECE_SLIDE_NEG = 4 };
 
-#define PC_MAX 16
+#define SC_PIECE_MAX 16
 
 /* one condition into slot `*k` of the pair: coefficients a (stride `sa`, times `sign`), the
  * constant b; scaled to a largest coefficient of 1 */
-static void pc_add(double *cond, pc_int *flip, pc_int *row, int *k, int na, const double *a,
+static void sc_piece_add(double *cond, sc_int *flip, sc_int *row, int *k, int na, const double *a,
                    int sa, double sign, double b, int to, int r) {
   double *c = cond + (*k) * (na + 1), scale = 0.0;
   int i;
@@ -50,19 +50,19 @@ static void pc_add(double *cond, pc_int *flip, pc_int *row, int *k, int na, cons
  *   out per pair: Lam (nc, na), lam0 (nc), W (nc, na), w0 (nc), Q (ns, na), q0 (ns),
  *   Aa (3, na), a0 (3), cond (mfull, na + 1), flip (mfull, the state across, -1 unused),
  *   row (mfull).
- * Returns the largest number of used conditions of a pair, -1 when a size exceeds PC_MAX or
+ * Returns the largest number of used conditions of a pair, -1 when a size exceeds SC_PIECE_MAX or
  * mfull is too small, -2 - p when pair p's held rows are singular. */
-pc_int SNAKECG_EXPORT(core_pieces)(pc_int P, pc_int na_, pc_int nc_, pc_int ns_, pc_int mfull,
-                                   const pc_int *cfg, const signed char *states,
+sc_int SNAKECG_EXPORT(core_pieces)(sc_int P, sc_int na_, sc_int nc_, sc_int ns_, sc_int mfull,
+                                   const sc_int *cfg, const signed char *states,
                                    const double *bounds, const double *G, const double *Bt,
                                    const double *Q0, const double *A0, const double *Kq,
                                    const double *Ka, double *Lam, double *lam0, double *W,
                                    double *w0, double *Q, double *q0, double *Aa, double *a0,
-                                   double *cond, pc_int *flip, pc_int *row) {
+                                   double *cond, sc_int *flip, sc_int *row) {
   const int na = (int)na_, nc = (int)nc_, ns = (int)ns_;
   int mmax = 0, r;
-  pc_int p;
-  if (na > PC_MAX || nc > PC_MAX || na < 1 || nc < 1 || ns < 1) return -1;
+  sc_int p;
+  if (na > SC_PIECE_MAX || nc > SC_PIECE_MAX || na < 1 || nc < 1 || ns < 1) return -1;
   {
     int need = 2;
     for (r = 1; r < nc; ++r)
@@ -70,7 +70,7 @@ pc_int SNAKECG_EXPORT(core_pieces)(pc_int P, pc_int na_, pc_int nc_, pc_int ns_,
     if (mfull < need) return -1;
   }
   for (p = 0; p < P; ++p) {
-    const pc_int n = cfg[p];
+    const sc_int n = cfg[p];
     const signed char *st = states + p * nc;
     const double *Gp = G + n * nc * nc, *Bp = Bt + n * nc * na, *Kqp = Kq + n * ns * nc;
     const double *Kap = Ka + n * 3 * nc;
@@ -78,14 +78,14 @@ pc_int SNAKECG_EXPORT(core_pieces)(pc_int P, pc_int na_, pc_int nc_, pc_int ns_,
     double *w0p = w0 + p * nc, *Qp = Q + p * ns * na, *q0p = q0 + p * ns;
     double *Ap = Aa + p * 3 * na, *a0p = a0 + p * 3;
     double *cp = cond + p * mfull * (na + 1);
-    pc_int *fp = flip + p * mfull, *rp = row + p * mfull;
-    double lf[PC_MAX], M[PC_MAX * PC_MAX], X[PC_MAX * (PC_MAX + 1)];
-    int H[PC_MAX], nh = 0, i, j, l, k = 0;
+    sc_int *fp = flip + p * mfull, *rp = row + p * mfull;
+    double lf[SC_PIECE_MAX], M[SC_PIECE_MAX * SC_PIECE_MAX], X[SC_PIECE_MAX * (SC_PIECE_MAX + 1)];
+    int H[SC_PIECE_MAX], nh = 0, i, j, l, k = 0;
     /* the fixed forces and the held rows */
     for (r = 0; r < nc; ++r) {
       double ub = isfinite(bounds[r]) ? bounds[r] : 0.0;
-      lf[r] = st[r] == PC_SLIDE_POS ? ub : (st[r] == PC_SLIDE_NEG ? -ub : 0.0);
-      if (st[r] == PC_HELD) H[nh++] = r;
+      lf[r] = st[r] == SC_PIECE_SLIDE_POS ? ub : (st[r] == SC_PIECE_SLIDE_NEG ? -ub : 0.0);
+      if (st[r] == SC_PIECE_HELD) H[nh++] = r;
     }
     /* G_HH X = -[Bt_H, (G lf)_H] by Gaussian elimination with partial pivoting */
     for (i = 0; i < nh; ++i) {
@@ -163,18 +163,18 @@ pc_int SNAKECG_EXPORT(core_pieces)(pc_int P, pc_int na_, pc_int nc_, pc_int ns_,
       else a0p[i - ns] = s0;
     }
     /* the conditions, in snakecg/pieces.py's order */
-    if (st[0] == PC_HELD) pc_add(cp, fp, rp, &k, na, L, 1, 1.0, l0[0], PC_LOST, 0);
-    if (st[0] == PC_LOST) pc_add(cp, fp, rp, &k, na, Wp, 1, 1.0, w0p[0], PC_HELD, 0);
+    if (st[0] == SC_PIECE_HELD) sc_piece_add(cp, fp, rp, &k, na, L, 1, 1.0, l0[0], SC_PIECE_LOST, 0);
+    if (st[0] == SC_PIECE_LOST) sc_piece_add(cp, fp, rp, &k, na, Wp, 1, 1.0, w0p[0], SC_PIECE_HELD, 0);
     for (r = 1; r < nc; ++r) {
       if (!isfinite(bounds[r])) continue;
-      if (st[r] == PC_HELD) {
-        pc_add(cp, fp, rp, &k, na, L + r * na, 1, -1.0, -l0[r] + bounds[r], PC_SLIDE_POS, r);
-        pc_add(cp, fp, rp, &k, na, L + r * na, 1, 1.0, l0[r] + bounds[r], PC_SLIDE_NEG, r);
+      if (st[r] == SC_PIECE_HELD) {
+        sc_piece_add(cp, fp, rp, &k, na, L + r * na, 1, -1.0, -l0[r] + bounds[r], SC_PIECE_SLIDE_POS, r);
+        sc_piece_add(cp, fp, rp, &k, na, L + r * na, 1, 1.0, l0[r] + bounds[r], SC_PIECE_SLIDE_NEG, r);
       }
-      if (st[r] == PC_SLIDE_POS)
-        pc_add(cp, fp, rp, &k, na, Wp + r * na, 1, -1.0, -w0p[r], PC_HELD, r);
-      if (st[r] == PC_SLIDE_NEG)
-        pc_add(cp, fp, rp, &k, na, Wp + r * na, 1, 1.0, w0p[r], PC_HELD, r);
+      if (st[r] == SC_PIECE_SLIDE_POS)
+        sc_piece_add(cp, fp, rp, &k, na, Wp + r * na, 1, -1.0, -w0p[r], SC_PIECE_HELD, r);
+      if (st[r] == SC_PIECE_SLIDE_NEG)
+        sc_piece_add(cp, fp, rp, &k, na, Wp + r * na, 1, 1.0, w0p[r], SC_PIECE_HELD, r);
     }
     if (k > mmax) mmax = k;
     for (; k < mfull; ++k) { /* unused: 0 . u + 1 >= 0 */

@@ -5,26 +5,21 @@ alone (the QP and QCQP solver, the KKT certificate, the symmetric eigensolver, t
 row state) for tests against independent references.
 
 The query and the answers are flat float64 vectors laid out by
-:meth:`snakecg.core.Layout.optimal_in_fields` and :meth:`~snakecg.core.Layout.optimal_out_fields`
-(the same names in ``snakecg_layout.h``); the codes below mirror ``optimal.h``.
+:meth:`snakecg.engine.Layout.optimal_in_fields` and :meth:`~snakecg.engine.Layout.optimal_out_fields`
+(the same names in ``snakecg_layout.h``); the codes below mirror ``engine.h``.
 """
 
 from __future__ import annotations
 
-import ctypes
-import os
 
 import numpy as np
 
 from .layout import Layout
+from .threads import pool, threads
 
 __all__ = ["OptimalKernel", "MAX_SR", "LEAST_SLIP_PUSH", "STRONGEST_PUSH", "KINDS",
            "OPTIMAL", "INFEASIBLE", "FAILED", "REASON", "CHECK", "CERTIFICATE", "METHOD",
            "BIND_CONTACT", "BIND_ELLIPSOID", "BIND_NORMAL", "BIND_JOINT", "QP_STATUS"]
-
-_P = ctypes.c_void_p
-_I = ctypes.c_longlong
-_D = ctypes.c_double
 
 #: Query kinds (``OPT_IN_kind``).
 MAX_SR, LEAST_SLIP_PUSH, STRONGEST_PUSH = 0, 1, 2
@@ -32,7 +27,7 @@ KINDS = {"max_sr": MAX_SR, "least_slip_push": LEAST_SLIP_PUSH,
          "strongest_push": STRONGEST_PUSH}
 #: Statuses (``OPT_OUT_status``).
 OPTIMAL, INFEASIBLE, FAILED = 0, 1, 2
-#: Reasons (``OPT_OUT_reason``), optimal.h's SC_REASON_*.
+#: Reasons (``OPT_OUT_reason``), engine.h's SC_REASON_*.
 REASON = {"none": 0, "singular": 1, "no_push": 2, "off_normal": 3, "against_normal": 4,
           "direction": 5, "out_of_reach": 6, "no_strong_push": 7, "solver": 8,
           "within_reach": 9, "certificate": 10, "forward_check": 11, "not_finite": 12,
@@ -50,7 +45,7 @@ METHOD = {"rank_one": 1, "eigen": 2, "qp": 4, "lp": 8, "secular": 16,
 #: Binding codes (``OPT_OUT_binding``): then joint j (from 0) at BIND_JOINT + j and the wheel
 #: of link i (from 1) at BIND_JOINT + n_a + i - 1.
 BIND_CONTACT, BIND_ELLIPSOID, BIND_NORMAL, BIND_JOINT = 0, 1, 2, 3
-#: The QP block's statuses (qp.h SC_QP_*).
+#: The QP block's statuses (engine.h SC_QP_*).
 QP_STATUS = {0: "optimal", 1: "the linear limits have no common point",
              2: "the Hessian is not positive definite", 3: "no convergence",
              4: "the ellipsoid and the linear limits do not intersect",
@@ -67,14 +62,7 @@ def _workers(n: int) -> int:
     rarely has: on the 2-core machine of docs/reference/performance.md, shared with other work, two
     threads never ran faster than one (16,000 configurations: 4.6 us per configuration
     either way; the second core was busy), so one thread is the default."""
-    raw = os.environ.get("SNAKECG_THREADS")
-    if not raw or n < 2 * PARALLEL_MIN:
-        return 1
-    try:
-        asked = int(raw)
-    except ValueError:
-        return 1
-    return max(1, min(asked, n // PARALLEL_MIN))
+    return threads(n, PARALLEL_MIN)
 
 
 def _ptr(a):
@@ -84,36 +72,18 @@ def _ptr(a):
 class OptimalKernel:
     """The optimal-torque entry points of one compiled model library."""
 
-    def __init__(self, lib: ctypes.CDLL, prefix: str, layout: Layout):
+    def __init__(self, lib, layout: Layout):
         self.layout = layout
         self.in_width = layout._offsets(layout.optimal_in_fields())[1]
         self.out_width = layout._offsets(layout.optimal_out_fields())[1]
         self.IN = layout.optimal_in
         self.OUT = layout.optimal_out
-        fn = getattr(lib, f"{prefix}core_optimal")
-        fn.argtypes = [_I, _P, _P, _I, _P, _P, _P]
-        fn.restype = ctypes.c_int
-        self._solve = fn
-        fn = getattr(lib, f"{prefix}core_optimal_check")
-        fn.argtypes = [_I, _P, _P]
-        fn.restype = ctypes.c_int
-        self._check = fn
-        fn = getattr(lib, f"{prefix}core_qp_solve")
-        fn.argtypes = [_I, _I] + [_P] * 6 + [_D, _D, _P, _P, _P]
-        fn.restype = ctypes.c_int
-        self._qp = fn
-        fn = getattr(lib, f"{prefix}core_kkt_certificate")
-        fn.argtypes = [_I, _P, _P, _P, _I, _P, _P, _P, _P, _D, _I, _D, _D, _P, _P, _P]
-        fn.restype = ctypes.c_int
-        self._kkt = fn
-        fn = getattr(lib, f"{prefix}core_eigen_symmetric")
-        fn.argtypes = [_I, _P, _P, _P]
-        fn.restype = ctypes.c_int
-        self._eigen = fn
-        fn = getattr(lib, f"{prefix}core_state_maps")
-        fn.argtypes = [_P, _P, _P, _P]
-        fn.restype = ctypes.c_int
-        self._maps = fn
+        self._solve = lib.entry("core_optimal")
+        self._check = lib.entry("core_optimal_check")
+        self._qp = lib.entry("core_qp_solve")
+        self._kkt = lib.entry("core_kkt_certificate")
+        self._eigen = lib.entry("core_eigen_symmetric")
+        self._maps = lib.entry("core_state_maps")
 
     # the query -----------------------------------------------------------------------------
     def solve(self, model, query_in: np.ndarray, qa: np.ndarray) -> np.ndarray:
@@ -129,8 +99,6 @@ class OptimalKernel:
         if workers == 1:
             status = self._solve(n, *args, qa.ctypes.data, out.ctypes.data)
         else:
-            from ..native import pool
-
             bounds = np.linspace(0, n, workers + 1).astype(np.int64)
             qp, op = qa.ctypes.data, out.ctypes.data
             ns, w = qa.shape[1], self.out_width

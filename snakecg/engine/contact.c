@@ -1,25 +1,22 @@
-/* What the runtime core's C files share (snakecg/core/forward.c, integrate.c, settle.c,
- * run.c, maps.c): the sizes, the row states, the simulation's structs, the
- * generated functions' work arrays, one evaluation of the generated `contact_system` (the
- * object given or placed), the rows' velocities A V, the held rows' forces of eq. (16) and the
- * active-set rule. Included after snakecg_layout.h; everything here is static, so each file
- * gets its own copy and the library exports nothing more; a file asks for the parts that not
- * every file uses (SC_ROW_VELOCITIES, SC_NEXT_STATES), or the types alone
- * (SC_TYPES_ONLY), before including it. */
-#ifndef SNAKECG_CORE_COMMON_H
-#define SNAKECG_CORE_COMMON_H
-
+/* The per-state system and its complementarity solve: one evaluation of the generated
+ * `contact_system` (the object given or placed), the rows' velocities A V, the held rows'
+ * forces of eq. (16) and the active-set rule; the generated functions' work arrays, and the
+ * wall clock of the long calls. Shared by forward.c, integrate.c, events.c, run.c and maps.c
+ * through engine.h. */
+#define _POSIX_C_SOURCE 200809L /* clock_gettime (before the first include) */
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 #include <time.h>
 
-typedef long long int sc_int;
+#include "snakecg_layout.h"
+#include "engine.h"
 
-#ifdef SC_WALL_TIME
-/* Wall-clock seconds from an arbitrary origin (POSIX's monotonic clock: the file defines
- * _POSIX_C_SOURCE before its first include; elsewhere the CPU time): the long calls of the
- * simulation pause after a budget of them, so that Python can handle a Ctrl-C. */
-static double sc_wall_time(void) {
+
+/* Wall-clock seconds from an arbitrary origin (POSIX's monotonic clock; elsewhere the CPU
+ * time): the long calls of the simulation pause after a budget of them, so that Python can
+ * handle a Ctrl-C. */
+double sc_wall_time(void) {
 #if defined(CLOCK_MONOTONIC)
   struct timespec ts;
   clock_gettime(CLOCK_MONOTONIC, &ts);
@@ -28,124 +25,8 @@ static double sc_wall_time(void) {
   return (double)clock() / CLOCKS_PER_SEC;
 #endif
 }
-#endif
 
-/* Before a loop over one of the model's sizes (known when compiling): unroll it (GCC; other
- * compilers go on without). */
-#if defined(__GNUC__) && !defined(__clang__)
-#define SC_UNROLL _Pragma("GCC unroll 16")
-#else
-#define SC_UNROLL
-#endif
-
-/* sizes: coordinates n_s, constraint rows n_c, a body state (q, q_obj), the integrated state
- * (positions, velocities and three work integrals) */
-#define NS SNAKECG_NS
-#define NC SNAKECG_NC
-#define NX (NS + 3)
-#define NY (2 * NX + 3)
-
-typedef int (*sc_work_fn)(sc_int *sz_arg, sc_int *sz_res, sc_int *sz_iw, sc_int *sz_w);
-
-int SNAKECG_CS(const double **arg, double **res, sc_int *iw, double *w, int mem);
-int SNAKECG_CS_WORK(sc_int *sz_arg, sc_int *sz_res, sc_int *sz_iw, sc_int *sz_w);
-int SNAKECG_CR(const double **arg, double **res, sc_int *iw, double *w, int mem);
-int SNAKECG_CR_WORK(sc_int *sz_arg, sc_int *sz_res, sc_int *sz_iw, sc_int *sz_w);
-int SNAKECG_LJ(const double **arg, double **res, sc_int *iw, double *w, int mem);
-int SNAKECG_LJ_WORK(sc_int *sz_arg, sc_int *sz_res, sc_int *sz_iw, sc_int *sz_w);
-
-/* row states (snakecg/solver.py) */
-enum { ABSENT = 0, HELD = 1, LOST = 2, SLIDE_POS = 3, SLIDE_NEG = 4 };
-
-/* The simulation's structs, shared by integrate.c, settle.c and run.c (mirrored field by
- * field in snakecg/core/segment.py). */
-/* event functions (snakecg/simulate/events.py, Events.functions) */
-enum { EV_SEPARATION = 0, EV_S_LOW = 1, EV_S_HIGH = 2, EV_GAP = 3, EV_BREAKAWAY = 4,
-       EV_SLIDE_STOP = 5 };
-/* segment status */
-enum { SEG_END = 0, SEG_EVENT = 1, SEG_GEOMETRY = 2, SEG_PAUSED = 3, SEG_TOO_SMALL = -1,
-       SEG_PYTHON = -2,
-       SEG_MEMORY = -3, SEG_BAD_INPUT = -4 };
-enum { SETTLE_DONE = 0, SETTLE_PYTHON = 1, SETTLE_MEMORY = 2 };
-
-/* One segment: inputs, then outputs (filled by core_integrate_segment). */
-typedef struct {
-  /* the model and the run */
-  const double *scene;   /* the scene vector (layout: SCENE_*) */
-  const double *tau;     /* NA, held over the segment */
-  const double *f_obj;   /* 3 */
-  const double *rho;     /* 2, contact point in the object frame */
-  const double *state;   /* NC row states (solver codes, as doubles) */
-  const sc_int *ev_kind; /* n_ev event kinds (EV_*) */
-  const sc_int *ev_row;  /* their rows */
-  sc_int n_ev;
-  sc_int contact_index;  /* k: the contact link, from 0 */
-  double c_k, l_k;       /* the contact link's COM offset and length */
-  double alpha;          /* Baumgarte rate (1/s) */
-  double pivot_tol;      /* held rows dependent at or below this pivot ratio */
-  double rtol, atol, max_step;
-  double t0, t1;
-  const double *y0;      /* NY */
-  const double *t_eval;  /* n_eval increasing times in (t0, t1] */
-  sc_int n_eval;
-  struct sc_geometry *geo; /* the contact check (geometry.h), or null */
-  double budget;         /* wall-clock seconds a call may take: after them (and at least one
-                            step) it stops with SEG_PAUSED; <= 0: no limit */
-  sc_int resume;         /* 1: go on with the segment a call paused (from t_end, y_end,
-                            h_next and n_out, as if it had not stopped) */
-  /* outputs */
-  double *y_eval;        /* n_eval x NY, row-major */
-  sc_int n_out;          /* output times reached */
-  double t_end;          /* where the segment ended (t1 or the event) */
-  double *y_end;         /* NY: the state there */
-  sc_int event;          /* the event that fired (index into ev_*), -1 if none */
-  sc_int nfev, nsteps, nrejected; /* of this call */
-  double h_next;         /* SEG_PAUSED: the step size to go on with */
-  sc_int status;         /* SEG_* */
-} sc_segment;
-
-/* One settle: inputs, then outputs (filled by core_settle). */
-typedef struct {
-  const double *scene;  /* the scene vector (layout: SCENE_*) */
-  const double *tau;    /* NA */
-  const double *f_obj;  /* 3 */
-  const double *rho;    /* 2 */
-  sc_int contact_index; /* k, from 0 */
-  double c_k, l_k;
-  double pivot_tol, rel_tol;
-  sc_int max_iter;      /* active-set passes */
-  const double *y;      /* NY: the state at the event */
-  const double *prev;   /* NC row states of the mode before (null at the start) */
-  const double *forced; /* NC: a row's forced state, or -1 */
-  sc_int contact_candidate;
-  /* outputs */
-  double vtol;          /* 1e-8 max(1, max |V|) at y */
-  double *y_out;        /* NY */
-  double *state;        /* NC: the new row states */
-  double *forced_out;   /* NC: the forced rows after the velocity checks (-1: free) */
-  sc_int impact;        /* 1 when the contact closed with an impact */
-  double impact_velocity, impact_ke, impact_de; /* gdot before, energy before, change */
-  double *impact_lam;   /* NC: impulses of the contact and the ideal wheels, in row order */
-  sc_int n_impact;
-  sc_int n_projected;   /* rows projected in step 4 (0: none) */
-  double drift;         /* their largest |A V| before the projection */
-  sc_int drift_row;     /* where it is (the first such row) */
-  double projection_ke, projection_de;
-  double *projection_lam; /* NC: their impulses, in row order */
-  sc_int status;        /* SETTLE_* */
-} sc_settle;
-
-#ifndef SC_TYPES_ONLY /* run.c: the types alone */
-/* Argument and result pointer arrays and work vectors of generated functions, sized for the
- * largest of `n` of them (their `_work` functions). */
-typedef struct {
-  const double **arg;
-  double **res;
-  sc_int *iw;
-  double *w;
-} sc_work_t;
-
-static void sc_work_free(sc_work_t *ws) {
+void sc_work_free(sc_work_t *ws) {
   free((void *)ws->arg);
   free(ws->res);
   free(ws->iw);
@@ -156,11 +37,8 @@ static void sc_work_free(sc_work_t *ws) {
   ws->w = 0;
 }
 
-/* The entries of an array (of the work-size functions a file passes to sc_work_alloc). */
-#define SC_COUNT(a) ((int)(sizeof(a) / sizeof((a)[0])))
-
 /* 0, or -1 when a size query or an allocation failed (then nothing is left allocated). */
-static int sc_work_alloc(sc_work_t *ws, const sc_work_fn *fns, int n) {
+int sc_work_alloc(sc_work_t *ws, const sc_work_fn *fns, int n) {
   sc_int a, r, i, w, ma = 0, mr = 0, mi = 0, mw = 0;
   int k;
   ws->arg = 0;
@@ -186,25 +64,8 @@ static int sc_work_alloc(sc_work_t *ws, const sc_work_fn *fns, int n) {
   return 0;
 }
 
-/* The outputs of `contact_system`: the problem of one state before any active set. */
-typedef struct {
-  double M[SNAKECG_NS * SNAKECG_NS];          /* M_s (eq. 4), column-major */
-  double G[SNAKECG_NC * SNAKECG_NC];          /* G_c (eq. 14) */
-  double b[SNAKECG_NC];                       /* the rows' accelerations at lam = 0 (eq. 13) */
-  double qdd_free[SNAKECG_NS], a_free[3];     /* eq. (12) without constraint forces */
-  double Kq[SNAKECG_NS * SNAKECG_NC];         /* M_s^-1 A_s^T (eq. 18) */
-  double Ka[3 * SNAKECG_NC];                  /* I_obj^-1 A_o^T (eq. 18) */
-  double gap, s;
-} sc_system;
-
-/* `contact_system` at (q, v, tau, q_obj, v_obj, f_obj, rho) with the scene's constants of
- * `scene` (SCENE_* offsets); q_obj == NULL places the object at the scene's contact from q
- * (the generated function's input `placed` = 1; rho is then ignored too). When v and v_obj
- * are zero, the generated `contact_system_at_rest` (the same without the velocity terms).
- * The work arrays must fit both (SC_CS_WORKS). Its status (0 on success).
- * SC_SET_SYSTEM_ARGS(F) points the arguments and results of function F (CS or CR: the
- * indices differ) at sc_contact_system's own parameters and locals, by their names. */
-#define SC_CS_WORKS SNAKECG_CS_WORK, SNAKECG_CR_WORK
+/* Point the arguments and results of generated function F (CS or CR: the indices differ) at
+ * sc_contact_system's own parameters and locals, by their names. */
 #define SC_SET_SYSTEM_ARGS(F)                                           \
   do {                                                                   \
     ws->arg[F##_IN_q] = q;                                               \
@@ -232,10 +93,10 @@ typedef struct {
     ws->res[F##_OUT_s] = &out->s;                                        \
   } while (0)
 
-static int sc_contact_system(sc_work_t *ws, const double *scene, const double *q,
-                             const double *v, const double *tau, const double *q_obj,
-                             const double *v_obj, const double *f_obj, const double *rho,
-                             sc_system *out) {
+int sc_contact_system(sc_work_t *ws, const double *scene, const double *q,
+                      const double *v, const double *tau, const double *q_obj,
+                      const double *v_obj, const double *f_obj, const double *rho,
+                      sc_system *out) {
   static const double zeros[3] = {0.0, 0.0, 0.0}, one = 1.0, zero = 0.0;
   int k, rest = 1;
   for (k = 0; k < SNAKECG_NS; ++k) rest &= v[k] == 0.0;
@@ -250,16 +111,15 @@ static int sc_contact_system(sc_work_t *ws, const double *scene, const double *q
   return SNAKECG_CS(ws->arg, ws->res, ws->iw, ws->w, 0);
 }
 
-#ifdef SC_ROW_VELOCITIES /* integrate.c, settle.c */
 /* A V (snakecg.simulate.dynamics.Dynamics.row_velocities): the gap rate (row 0) and the
  * wheels' lateral velocities, from the generated `link_jacobians` at q (its status, 0 on
  * success). The link twists J v; the wheel row of link i is (-sin phi_i, cos phi_i,
  * wheel_offset_i) on its twist, the contact row the normal n = side (-sin phi_k, cos phi_k)
  * on the velocity of the object's contact point (rho in the object frame) relative to the
  * link's, less the sliding term side omega_k (s - c_k). */
-static int sc_row_velocities(sc_work_t *ws, const double *scene, const double *rho, int k,
-                             double c_k, const double *q, const double *v, const double *qo,
-                             const double *vo, double s, double *av) {
+int sc_row_velocities(sc_work_t *ws, const double *scene, const double *rho, int k,
+                      double c_k, const double *q, const double *v, const double *qo,
+                      const double *vo, double s, double *av) {
   enum { ns = SNAKECG_NS, nl = SNAKECG_NL };
   const double *woff = scene + SCENE_wheel_offset;
   const double sig = scene[SCENE_side];
@@ -297,15 +157,14 @@ static int sc_row_velocities(sc_work_t *ws, const double *scene, const double *r
   av[0] = n0 * (p0 - tw[3 * k]) + n1 * (p1 - tw[3 * k + 1]) - sig * tw[3 * k + 2] * (s - c_k);
   return 0;
 }
-#endif
 
 /* The constraint forces for row states `state` (eq. 16): lam_F fixed (0, or +-bound for a
  * sliding wheel), lam_H solving G_HH lam_H = -(b_H + G_HF lam_F) - extra_H by LDL^T in row
  * order (the masked factorization of the generated `constrained_dynamics`); `extra` (may be
  * null) adds to the right-hand side per row (the simulator's Baumgarte terms). Returns the
  * pivot ratio min_j d_j / G_jj over the held rows (1 when none holds). */
-static double sc_held_forces(const signed char *state, const double *G, const double *b,
-                             const double *bounds, const double *extra, double *lam) {
+double sc_held_forces(const signed char *state, const double *G, const double *b,
+                      const double *bounds, const double *extra, double *lam) {
   const int nc = SNAKECG_NC;
   int held[SNAKECG_NC], m = 0, i, j, k;
   double L[SNAKECG_NC * SNAKECG_NC], d[SNAKECG_NC], dinv[SNAKECG_NC], y[SNAKECG_NC], ratio = 1.0;
@@ -348,7 +207,6 @@ static double sc_held_forces(const signed char *state, const double *G, const do
   return ratio;
 }
 
-#ifdef SC_NEXT_STATES /* forward.c, settle.c */
 /* Relative weight of the rounding term of a row's scale (snakecg.solver.ROUND_REL). */
 #define SC_ROUND_REL 1e-5
 
@@ -359,8 +217,8 @@ static double sc_held_forces(const signed char *state, const double *G, const do
  * every input force scales every term: the decisions do not depend on units; and the huge
  * forces of nearly dependent rows (which cancel in the other rows) no longer widen the
  * tolerance of a row they barely move. */
-static int sc_next_states(signed char *state, const double *lam, const double *w,
-                          const double *G, const double *bounds, double rel_tol) {
+int sc_next_states(signed char *state, const double *lam, const double *w,
+                   const double *G, const double *bounds, double rel_tol) {
   const int nc = SNAKECG_NC;
   double g = 0.0, tol_lam[SNAKECG_NC], tol_w[SNAKECG_NC];
   signed char next[SNAKECG_NC];
@@ -405,7 +263,3 @@ static int sc_next_states(signed char *state, const double *lam, const double *w
   }
   return moved;
 }
-#endif
-#endif
-
-#endif

@@ -1,5 +1,4 @@
-/* snakecg's runtime core: max_sr with every constraint row held (optimal.h,
- * docs/how-to/optimize.md).
+/* snakecg's engine: max_sr with every constraint row held (engine.h, docs/how-to/optimize.md).
  *
  * This file is part of the runtime (not generated), compiled once per model into the model's
  * shared library.
@@ -18,8 +17,7 @@
 #include <string.h>
 
 #include "snakecg_layout.h"
-#include "optimal.h"
-
+#include "engine.h"
 /* the largest s > 0 with s v inside every limit, the limits that set it bound (in the order
  * ellipsoid, joints, wheels) */
 static double scale_onto_limits(sc_optimal *o, const double *v) {

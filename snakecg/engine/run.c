@@ -1,7 +1,7 @@
 /* snakecg's runtime core, part 4: a whole simulation run with a constant torque, in C.
  *
  * This file is part of the runtime (not generated), compiled once per model into the model's
- * shared library like forward.c, integrate.c and settle.c.
+ * shared library like forward.c, integrate.c and events.c.
  *
  * It runs the loop of snakecg/simulate/simulator.py (Simulator.run) for a torque that is
  * constant over the whole run, from the start's settle (done here too with sc_run.start, or
@@ -10,10 +10,10 @@
  * (snakecg/simulate/events.py, Events.specs), at an event what Events.handle does (the rows
  * that the event fixes: a separated or lost contact, a wheel breaking away against its
  * force, sliding wheels that keep sliding; the contact candidate of a closing gap on the link)
- * and the settle (core_settle, settle.c). It records the samples (the output times, both
+ * and the settle (core_settle, events.c). It records the samples (the output times, both
  * sides of every event) with their mode, the modes, and the events with what Python needs to
- * describe them. The contact check (geometry.h) runs in every segment and on the state after
- * every event; with GEO_STOP its first violation ends the run (RUN_GEOMETRY), its sample the
+ * describe them. The contact check (geometry.c) runs in every segment and on the state after
+ * every event; with SC_GEO_STOP its first violation ends the run (RUN_GEOMETRY), its sample the
  * last. Anything the Python loop would do differently (a segment or a settle handed
  * back to Python, a failed or too small step, more samples or modes than room) returns
  * RUN_PYTHON: the caller then runs the whole loop in Python from the start.
@@ -24,17 +24,10 @@
 #include <time.h>
 
 #include "snakecg_layout.h"
-#define SC_TYPES_ONLY
-#define SC_WALL_TIME
-#include "common.h"
-#include "geometry.h"
-
+#include "engine.h"
 #define MODE_WIDTH (NC + 1)  /* a mode: its row states, then off_link */
 #define EVENT_WIDTH (11 + NC) /* an event: see sc_run.events */
 
-int SNAKECG_EXPORT(core_integrate_segment)(sc_segment *sg);
-int SNAKECG_EXPORT(core_mode_samples)(sc_segment *sg, sc_int n, const double *Y, double *out);
-int SNAKECG_EXPORT(core_settle)(sc_settle *st);
 
 enum { RUN_COMPLETED = 0, RUN_STOPPED = 1, RUN_PYTHON = 2, RUN_GEOMETRY = 3, RUN_PAUSED = 4 };
 
@@ -332,12 +325,12 @@ static int run(sc_run *R, double stop_at) {
       if (st->impact) R->loss += -st->impact_de;
       t = t_e;
       if (add_sample(R, t, y, mode)) return RUN_PYTHON;
-      if (sg->geo && sg->geo->mode != GEO_OFF && !sg->geo->found) { /* the state after it */
+      if (sg->geo && sg->geo->mode != SC_GEO_OFF && !sg->geo->found) { /* the state after it */
         sc_int pair;
-        const double d = geo_depth(sg->geo, y, &pair);
+        const double d = sc_geo_depth(sg->geo, y, &pair);
         if (d > sg->geo->tol) {
-          geo_record(sg->geo, t, y, d, pair);
-          if (sg->geo->mode == GEO_STOP) {
+          sc_geo_record(sg->geo, t, y, d, pair);
+          if (sg->geo->mode == SC_GEO_STOP) {
             R->t = t;
             return RUN_GEOMETRY;
           }

@@ -1,4 +1,4 @@
-/* snakecg's runtime core: max_sr with wheels allowed to slide (optimal.h, docs/how-to/optimize.md).
+/* snakecg's engine: max_sr with wheels allowed to slide (engine.h, docs/how-to/optimize.md).
  *
  * This file is part of the runtime (not generated), compiled once per model into the model's
  * shared library.
@@ -36,8 +36,7 @@
 #include <string.h>
 
 #include "snakecg_layout.h"
-#include "optimal.h"
-
+#include "engine.h"
 /* most wheel states visited (3^n_w - 1): beyond, the query fails with its reason */
 #define SC_STATES_MAX 531441
 

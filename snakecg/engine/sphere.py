@@ -20,7 +20,6 @@ stay the reference and the path of models without a C compiler.
 
 from __future__ import annotations
 
-import ctypes
 import itertools
 
 import numpy as np
@@ -29,9 +28,6 @@ __all__ = ["MAX_DIM", "SphereKernel"]
 
 #: Largest ``n_a`` the C handles (``SK_MAX`` of sphere.c); larger models stay on NumPy.
 MAX_DIM = 16
-
-_P = ctypes.c_void_p
-_I = ctypes.c_longlong
 
 
 def _c(a, dtype=np.float64):
@@ -56,23 +52,11 @@ class SphereKernel:
     """``core_pieces``, ``core_sphere_cut``, ``core_sphere_meets`` and ``core_sphere_faces``
     of one compiled model library."""
 
-    def __init__(self, lib: ctypes.CDLL, prefix: str):
-        fn = getattr(lib, f"{prefix}core_pieces")
-        fn.argtypes = [_I] * 5 + [_P] * 20
-        fn.restype = _I
-        self._pieces = fn
-        fn = getattr(lib, f"{prefix}core_sphere_faces")
-        fn.argtypes = [_I, _I, _I, _I] + [_P] * 8 + [ctypes.c_double] + [_P] * 8
-        fn.restype = ctypes.c_int
-        self._faces = fn
-        fn = getattr(lib, f"{prefix}core_sphere_cut")
-        fn.argtypes = [_I, _I, _I, _I, _I] + [_P] * 8
-        fn.restype = _I
-        self._cut = fn
-        fn = getattr(lib, f"{prefix}core_sphere_meets")
-        fn.argtypes = [_I, _I, _I, _I] + [_P] * 6 + [ctypes.c_double, _P]
-        fn.restype = ctypes.c_int
-        self._meets = fn
+    def __init__(self, lib):
+        self._pieces = lib.entry("core_pieces")
+        self._faces = lib.entry("core_sphere_faces")
+        self._cut = lib.entry("core_sphere_cut")
+        self._meets = lib.entry("core_sphere_meets")
 
     def pieces(self, cfg, states, bounds, G, Bt, Q0, A0, Kq, Ka):
         """The pairs' affine maps and conditions (:func:`snakecg.pieces.piece`): ``cfg``

@@ -1,4 +1,4 @@
-/* snakecg's runtime core: the linear maps at rest of one configuration, for any row state, from
+/* snakecg's engine: the linear maps at rest of one configuration, for any row state, from
  * the generated contact_system with the object placed (the function the forward solve calls),
  * for the optimal-torque queries (optimal.c, wheel_states.c).
  *
@@ -21,9 +21,7 @@
 #include <string.h>
 
 #include "snakecg_layout.h"
-#include "common.h"
-#include "optimal.h"
-
+#include "engine.h"
 struct sc_rest_work {
   sc_work_t ws;
 };
@@ -81,7 +79,7 @@ double sc_state_maps(const sc_rest *rest, const double *scene, const signed char
   sc_int i, j, r, c;
   /* lam = l0 at tau = 0 (b = 0: the sliding wheels' forces alone), then a column per joint
    * (b_j = Kq^T e_j on the rows) with the sliding rows' forces at 0, by the forward solve's
-   * own factorization of the held rows (common.h sc_held_forces) */
+   * own factorization of the held rows (contact.c sc_held_forces) */
   for (r = 0; r < NC; ++r) {
     b[r] = 0.0;
     unforced[r] = (state[r] == SLIDE_POS || state[r] == SLIDE_NEG) ? LOST : state[r];

@@ -1,4 +1,4 @@
-/* snakecg's runtime core: the push tasks least_slip_push and strongest_push (optimal.h,
+/* snakecg's engine: the push tasks least_slip_push and strongest_push (engine.h,
  * docs/how-to/optimize.md).
  *
  * This file is part of the runtime (not generated), compiled once per model into the model's
@@ -19,8 +19,7 @@
 #include <string.h>
 
 #include "snakecg_layout.h"
-#include "optimal.h"
-
+#include "engine.h"
 /* The task as a bound on the contact force (a_obj = a_dir lam_c): lam_c >= lam_lo (== when
  * equal), gain = d . a_dir (|a_dir| for a full acceleration); 0, or the reason why no torque
  * can do the task (with its binding code and the normal in the details). */

@@ -1,10 +1,10 @@
-/* snakecg's runtime core: the exact contact/wheel complementarity solve of one sample, and the
+/* snakecg's engine: the exact contact/wheel complementarity solve of one sample, and the
  * batch loop over samples, in C.
  *
  * This file is part of the runtime (not generated). It is compiled once per model into the
  * model's shared library, beside CasADi's C of the generated functions, with a header
  * `snakecg_layout.h` that the runtime writes from the model's manifest
- * (snakecg/core/layout.py): the sizes, the generated functions' symbols and the index of every
+ * (snakecg/engine/layout.py): the sizes, the generated functions' symbols and the index of every
  * input and output by name. Nothing here knows an argument's position.
  *
  * Per sample (eqs. 12-30 of Reyes & Ma 2017; the rules of snakecg/solver.py):
@@ -32,9 +32,7 @@
 #include <string.h>
 
 #include "snakecg_layout.h"
-#define SC_NEXT_STATES
-#include "common.h"
-
+#include "engine.h"
 /* sample status */
 enum { STATUS_EXACT = 0, STATUS_FALLBACK = 1 };
 

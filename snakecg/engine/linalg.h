@@ -1,4 +1,4 @@
-/* snakecg's runtime core: small dense linear algebra (the one home of LU, Cholesky, the
+/* snakecg's engine: small dense linear algebra (the one home of LU, Cholesky, the
  * symmetric eigensolver and Householder QR for the core's optimisation code).
  *
  * Everything here is `static inline`, works on row-major matrices with an explicit leading
@@ -13,15 +13,12 @@
  *   sc_qr_least_squares                 Householder QR with column pivoting (alg. 5.4.1), the
  *                                       basic solution of a least-squares problem of any rank
  */
-#ifndef SNAKECG_CORE_LINALG_H
-#define SNAKECG_CORE_LINALG_H
+#ifndef SNAKECG_ENGINE_LINALG_H
+#define SNAKECG_ENGINE_LINALG_H
 
 #include <math.h>
 
-/* the core's one integer type (common.h's, when it came first: C99 allows one typedef) */
-#ifndef SNAKECG_CORE_COMMON_H
-typedef long long int sc_int;
-#endif
+/* included by engine.h, after its integer type sc_int */
 
 static inline double sc_dot(const double *a, const double *b, sc_int n) {
   double s = 0.0;

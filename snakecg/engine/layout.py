@@ -78,7 +78,7 @@ class Layout:
 
     def optimal_out_fields(self) -> tuple[tuple[str, int], ...]:
         """One configuration's answer in ``optimal.c``'s output (codes in
-        :mod:`snakecg.core.optimal`), ending with the forward solve's row at the answer."""
+        :mod:`snakecg.engine.optimal`), ending with the forward solve's row at the answer."""
         na, nc = self.n_joints, self.n_constraints
         return (("status", 1), ("reason", 1), ("detail", 8), ("objective_value", 1),
                 ("expected", 1), ("tau", na), ("n_binding", 1), ("binding", 3 + na + nc),
@@ -141,7 +141,7 @@ def header(manifest: dict) -> str:
     lay = Layout.of(manifest)
     sigs = {s["name"]: s for s in manifest["functions"]}
     lines = ["/* snakecg_layout.h: written by the snakecg runtime from the model's manifest",
-             " * (snakecg/core/layout.py) for the runtime core's C files (snakecg/core). */",
+             " * (snakecg/engine/layout.py) for the runtime core's C files (snakecg/engine). */",
              "#ifndef SNAKECG_LAYOUT_H", "#define SNAKECG_LAYOUT_H",
              f"#define SNAKECG_PREFIX {_ident('the prefix', manifest['prefix'])}",
              "/* SNAKECG_EXPORT(name): the core's exported symbol, the model's prefix first */",

@@ -2,7 +2,7 @@
  *
  * This file is part of the runtime (not generated). Like forward.c it is compiled once per
  * model into the model's shared library, beside CasADi's C of the generated functions, with
- * the header `snakecg_layout.h` written from the model's manifest (snakecg/core/layout.py):
+ * the header `snakecg_layout.h` written from the model's manifest (snakecg/engine/layout.py):
  * sizes, symbols and every input/output index by name.
  *
  * What it computes is what snakecg/simulate does with scipy.integrate.solve_ivp, for a mode
@@ -20,7 +20,7 @@
  *   - the mode's terminal event functions (snakecg/simulate/events.py, all with direction
  *     -1), detected as solve_ivp does (g >= 0 before a step, <= 0 after) and located on the
  *     dense output by Brent's method with xtol = rtol = 4 EPS (scipy.optimize.brentq);
- *   - the contact check (geometry.h, sg->geo): the largest overlap of the bodies at the
+ *   - the contact check (geometry.c, sg->geo): the largest overlap of the bodies at the
  *     segment's start, at every output time and at every step's end; the first time it
  *     exceeds the tolerance is located between the last two of these on the dense output by
  *     the same Brent's method, and stops the segment (SEG_GEOMETRY) or is recorded.
@@ -29,17 +29,12 @@
  * to the Python path.
  */
 #define _POSIX_C_SOURCE 200809L /* clock_gettime (before the first include) */
-#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "snakecg_layout.h"
-#define SC_ROW_VELOCITIES
-#define SC_WALL_TIME
-#include "common.h"
-#include "geometry.h"
-
+#include "engine.h"
 #define NA SNAKECG_NA
 #define NL SNAKECG_NL
 #define MAX_EVENTS (3 + NC)
@@ -194,9 +189,6 @@ static int event_at(sc_ctx *c, const sc_dense *D, int e, double t, double *g) {
   return st;
 }
 
-/* A function of time for brentq (its value in *g): 0, or SEG_PYTHON. */
-typedef int (*sc_root_fn)(void *arg, double t, double *g);
-
 /* The event function e on the dense output D (an sc_root_fn). */
 typedef struct {
   sc_ctx *c;
@@ -216,71 +208,12 @@ typedef struct {
   const sc_dense *D;
 } sc_geo_arg;
 
-static int geo_fn(void *arg, double t, double *g) {
+static int sc_geo_fn(void *arg, double t, double *g) {
   const sc_geo_arg *a = (const sc_geo_arg *)arg;
   double y[NY];
   sc_int pair;
   dense_eval(a->D, t, y);
-  *g = a->geo->tol - geo_depth(a->geo, y, &pair);
-  return 0;
-}
-
-/* scipy.optimize.brentq (scipy/optimize/Zeros/brentq.c) on fn over [xa, xb]. */
-static int brentq(sc_root_fn fn, void *arg, double xa, double xb, double *root) {
-  const double xtol = 4 * DBL_EPSILON, rtol = 4 * DBL_EPSILON;
-  double xpre = xa, xcur = xb, xblk = 0.0, fpre, fcur, fblk = 0.0, spre = 0.0, scur = 0.0;
-  double sbis, delta, stry, dpre, dblk;
-  int i, st;
-  if ((st = fn(arg, xpre, &fpre))) return st;
-  if ((st = fn(arg, xcur, &fcur))) return st;
-  *root = xpre;
-  if (fpre == 0) return 0;
-  *root = xcur;
-  if (fcur == 0) return 0;
-  if (signbit(fpre) == signbit(fcur)) return 0; /* not bracketed: solve_ivp would raise */
-  for (i = 0; i < 100; ++i) {
-    if (fpre != 0 && fcur != 0 && signbit(fpre) != signbit(fcur)) {
-      xblk = xpre;
-      fblk = fpre;
-      spre = scur = xcur - xpre;
-    }
-    if (fabs(fblk) < fabs(fcur)) {
-      xpre = xcur;
-      xcur = xblk;
-      xblk = xpre;
-      fpre = fcur;
-      fcur = fblk;
-      fblk = fpre;
-    }
-    delta = (xtol + rtol * fabs(xcur)) / 2;
-    sbis = (xblk - xcur) / 2;
-    if (fcur == 0 || fabs(sbis) < delta) break;
-    if (fabs(spre) > delta && fabs(fcur) < fabs(fpre)) {
-      if (xpre == xblk) { /* interpolate */
-        stry = -fcur * (xcur - xpre) / (fcur - fpre);
-      } else { /* extrapolate */
-        dpre = (fpre - fcur) / (xpre - xcur);
-        dblk = (fblk - fcur) / (xblk - xcur);
-        stry = -fcur * (fblk * dblk - fpre * dpre) / (dblk * dpre * (fblk - fpre));
-      }
-      if (2 * fabs(stry) < fmin(fabs(spre), 3 * fabs(sbis) - delta)) {
-        spre = scur;
-        scur = stry;
-      } else {
-        spre = sbis;
-        scur = sbis;
-      }
-    } else {
-      spre = sbis;
-      scur = sbis;
-    }
-    xpre = xcur;
-    fpre = fcur;
-    if (fabs(scur) > delta) xcur += scur;
-    else xcur += (sbis > 0 ? delta : -delta);
-    if ((st = fn(arg, xcur, &fcur))) return st;
-  }
-  *root = xcur;
+  *g = a->geo->tol - sc_geo_depth(a->geo, y, &pair);
   return 0;
 }
 
@@ -388,12 +321,12 @@ static int initial_step(sc_ctx *c, const sc_segment *sg, const double *y0, const
  * values as the step's end gave), so the steps are those of a call that never stopped. */
 static int segment(sc_ctx *c, sc_segment *sg) {
   double K[DP_NX][NY], y[NY], f[NY], y_new[NY], f_new[NY], scale[NY];
-  double g_old[MAX_EVENTS], g_new[MAX_EVENTS], geo_old = 0.0;
+  double g_old[MAX_EVENTS], g_new[MAX_EVENTS], sc_geo_old = 0.0;
   double t, h_abs = 0.0, h, t_new, err, factor;
   const double stop_at = sg->budget > 0 ? sc_wall_time() + sg->budget : INFINITY;
   sc_dense D;
   const int n_ev = (int)sg->n_ev;
-  sc_geometry *geo = sg->geo && sg->geo->mode != GEO_OFF && !sg->geo->found ? sg->geo : 0;
+  sc_geometry *geo = sg->geo && sg->geo->mode != SC_GEO_OFF && !sg->geo->found ? sg->geo : 0;
   sc_int ie, steps = 0;
   int st, e, k, accepted, rejected, have_dense;
   if (sg->resume) {
@@ -408,16 +341,16 @@ static int segment(sc_ctx *c, sc_segment *sg) {
   }
   if (geo) { /* the contact check at the start (a resumed call: where the last one paused) */
     sc_int pair;
-    const double d = geo_depth(geo, y, &pair);
+    const double d = sc_geo_depth(geo, y, &pair);
     if (!sg->resume && d > geo->tol) {
-      geo_record(geo, t, y, d, pair);
-      if (geo->mode == GEO_STOP) {
+      sc_geo_record(geo, t, y, d, pair);
+      if (geo->mode == SC_GEO_STOP) {
         memcpy(sg->y_end, y, sizeof(double) * NY);
         return SEG_GEOMETRY;
       }
       geo = 0;
     }
-    geo_old = geo ? geo->tol - d : 0.0;
+    sc_geo_old = geo ? geo->tol - d : 0.0;
   }
   if ((st = rhs(c, y, f))) return st;
   for (e = 0; e < n_ev; ++e) g_old[e] = event_value(c, e);
@@ -479,7 +412,7 @@ static int segment(sc_ctx *c, sc_segment *sg) {
         arg.c = c;
         arg.D = &D;
         arg.e = e;
-        if ((st = brentq(event_fn, &arg, t, t_new, &root))) return st;
+        if ((st = sc_brentq(event_fn, &arg, t, t_new, &root))) return st;
         if (first < 0 || root < t_stop) {
           first = e;
           t_stop = root;
@@ -497,20 +430,20 @@ static int segment(sc_ctx *c, sc_segment *sg) {
         sg->n_out = ie;
       }
       if (geo) { /* the contact check at the outputs, then at t_stop */
-        double ta = t, ga = geo_old, gb = 0.0, tb = t_stop, yb[NY];
+        double ta = t, ga = sc_geo_old, gb = 0.0, tb = t_stop, yb[NY];
         sc_int j, pair;
         int crossed = 0;
         for (j = ie0; j < ie && !crossed; ++j) {
-          gb = geo->tol - geo_depth(geo, sg->y_eval + j * NY, &pair);
+          gb = geo->tol - sc_geo_depth(geo, sg->y_eval + j * NY, &pair);
           if (ga >= 0 && gb < 0) crossed = 1, tb = sg->t_eval[j];
           else ta = sg->t_eval[j], ga = gb;
         }
         if (!crossed) {
           if (first >= 0) dense_eval(&D, t_stop, yb);
           else memcpy(yb, y_new, sizeof(double) * NY);
-          gb = geo->tol - geo_depth(geo, yb, &pair);
+          gb = geo->tol - sc_geo_depth(geo, yb, &pair);
           crossed = ga >= 0 && gb < 0;
-          geo_old = gb;
+          sc_geo_old = gb;
         }
         if (crossed) { /* located on the dense output */
           sc_geo_arg garg;
@@ -521,11 +454,11 @@ static int segment(sc_ctx *c, sc_segment *sg) {
           }
           garg.geo = geo;
           garg.D = &D;
-          brentq(geo_fn, &garg, ta, tb, &root);
+          sc_brentq(sc_geo_fn, &garg, ta, tb, &root);
           dense_eval(&D, root, yb);
-          d = geo_depth(geo, yb, &pair);
-          geo_record(geo, root, yb, d, pair);
-          if (geo->mode == GEO_STOP) { /* the outputs after it dropped */
+          d = sc_geo_depth(geo, yb, &pair);
+          sc_geo_record(geo, root, yb, d, pair);
+          if (geo->mode == SC_GEO_STOP) { /* the outputs after it dropped */
             while (ie > ie0 && sg->t_eval[ie - 1] > root) --ie;
             sg->n_out = ie;
             sg->t_end = root;
@@ -631,17 +564,5 @@ int SNAKECG_EXPORT(core_mode_samples)(sc_segment *sg, sc_int n, const double *Y,
     extra[2 * NC + 5] = (double)st;
   }
   sc_work_free(&c.ws);
-  return 0;
-}
-
-/* The contact check at n states Y (n x NY, row-major): the largest overlap of each in depth,
- * its pair in pair (as a double). Returns 0. */
-int SNAKECG_EXPORT(core_contact_depth)(const sc_geometry *g, sc_int n, const double *Y,
-                                      double *depth, double *pair) {
-  sc_int k, p;
-  for (k = 0; k < n; ++k) {
-    depth[k] = geo_depth(g, Y + k * NY, &p);
-    pair[k] = (double)p;
-  }
   return 0;
 }

@@ -22,17 +22,13 @@
  * convergence within max_iter passes, which the Python path enumerates), it returns
  * SETTLE_PYTHON and writes nothing that the caller keeps: the Python path does it all.
  */
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "snakecg_layout.h"
-#define SC_ROW_VELOCITIES
-#define SC_NEXT_STATES
-#include "common.h"
-
-
-
+#include "engine.h"
 /* G, Q = [Kq; Ka], gap, s and A V at y. */
 static int maps(sc_work_t *ws, const sc_settle *st, const double *y, sc_system *sys,
                 double *av) {
@@ -57,51 +53,13 @@ static double kinetic_energy(const sc_settle *st, const sc_system *sys, const do
                           vo[2] * (st->scene[SCENE_object_inertia] * vo[2]));
 }
 
-/* Solve A x = b (n x n, row-major copy in A) by Gaussian elimination with partial pivoting
- * (LAPACK's getrf/getrs, as numpy.linalg.solve); 1 if A is singular. */
-static int lu_solve(double *A, double *b, int n) {
-  int i, j, k, p;
-  for (k = 0; k < n; ++k) {
-    double best = fabs(A[k * n + k]);
-    p = k;
-    for (i = k + 1; i < n; ++i)
-      if (fabs(A[i * n + k]) > best) {
-        best = fabs(A[i * n + k]);
-        p = i;
-      }
-    if (!(best > 0)) return 1;
-    if (p != k) {
-      double t;
-      for (j = 0; j < n; ++j) {
-        t = A[k * n + j];
-        A[k * n + j] = A[p * n + j];
-        A[p * n + j] = t;
-      }
-      t = b[k];
-      b[k] = b[p];
-      b[p] = t;
-    }
-    for (i = k + 1; i < n; ++i) {
-      const double f = A[i * n + k] / A[k * n + k];
-      A[i * n + k] = f;
-      for (j = k + 1; j < n; ++j) A[i * n + j] -= f * A[k * n + j];
-      b[i] -= f * b[k];
-    }
-  }
-  for (i = n - 1; i >= 0; --i) {
-    double t = b[i];
-    for (j = i + 1; j < n; ++j) t -= A[i * n + j] * b[j];
-    b[i] = t / A[i * n + i];
-  }
-  return 0;
-}
-
 /* Dynamics.project: y projected (positions onto g = 0 first when `positions` and the contact
  * is among the m `rows`), the impulses Lam (m) and the kinetic-energy change. 0, or 1. */
 static int project(sc_work_t *ws, const sc_settle *st, double *y, const int *rows, int m,
                    int positions, double *Lam, double *dE) {
   sc_system sys;
   double av[NC], GF[NC * NC];
+  sc_int piv[NC];
   int i, j, it;
   if (positions && m > 0 && rows[0] == 0) {
     for (it = 0; it < 3; ++it) {
@@ -118,7 +76,8 @@ static int project(sc_work_t *ws, const sc_settle *st, double *y, const int *row
     for (j = 0; j < m; ++j) GF[i * m + j] = sys.G[rows[i] + NC * rows[j]];
     Lam[i] = av[rows[i]];
   }
-  if (lu_solve(GF, Lam, m)) return 1;
+  if (!sc_lu_factor(m, GF, m, piv)) return 1; /* linalg.h: P A = L U, partial pivoting */
+  sc_lu_solve(m, GF, m, piv, Lam);
   for (i = 0; i < m; ++i) Lam[i] = -Lam[i];
   for (i = 0; i < NS; ++i) {
     double t = 0.0;
@@ -263,4 +222,64 @@ int SNAKECG_EXPORT(core_settle)(sc_settle *st) {
   sc_work_free(&ws);
   st->status = status;
   return status;
+}
+
+/* The root of fn between xa and xb (the integrator locates its events with it):
+ * scipy.optimize.brentq (scipy/optimize/Zeros/brentq.c) on fn over [xa, xb]. */
+int sc_brentq(sc_root_fn fn, void *arg, double xa, double xb, double *root) {
+  const double xtol = 4 * DBL_EPSILON, rtol = 4 * DBL_EPSILON;
+  double xpre = xa, xcur = xb, xblk = 0.0, fpre, fcur, fblk = 0.0, spre = 0.0, scur = 0.0;
+  double sbis, delta, stry, dpre, dblk;
+  int i, st;
+  if ((st = fn(arg, xpre, &fpre))) return st;
+  if ((st = fn(arg, xcur, &fcur))) return st;
+  *root = xpre;
+  if (fpre == 0) return 0;
+  *root = xcur;
+  if (fcur == 0) return 0;
+  if (signbit(fpre) == signbit(fcur)) return 0; /* not bracketed: solve_ivp would raise */
+  for (i = 0; i < 100; ++i) {
+    if (fpre != 0 && fcur != 0 && signbit(fpre) != signbit(fcur)) {
+      xblk = xpre;
+      fblk = fpre;
+      spre = scur = xcur - xpre;
+    }
+    if (fabs(fblk) < fabs(fcur)) {
+      xpre = xcur;
+      xcur = xblk;
+      xblk = xpre;
+      fpre = fcur;
+      fcur = fblk;
+      fblk = fpre;
+    }
+    delta = (xtol + rtol * fabs(xcur)) / 2;
+    sbis = (xblk - xcur) / 2;
+    if (fcur == 0 || fabs(sbis) < delta) break;
+    if (fabs(spre) > delta && fabs(fcur) < fabs(fpre)) {
+      if (xpre == xblk) { /* interpolate */
+        stry = -fcur * (xcur - xpre) / (fcur - fpre);
+      } else { /* extrapolate */
+        dpre = (fpre - fcur) / (xpre - xcur);
+        dblk = (fblk - fcur) / (xblk - xcur);
+        stry = -fcur * (fblk * dblk - fpre * dpre) / (dblk * dpre * (fblk - fpre));
+      }
+      if (2 * fabs(stry) < fmin(fabs(spre), 3 * fabs(sbis) - delta)) {
+        spre = scur;
+        scur = stry;
+      } else {
+        spre = sbis;
+        scur = sbis;
+      }
+    } else {
+      spre = sbis;
+      scur = sbis;
+    }
+    xpre = xcur;
+    fpre = fcur;
+    if (fabs(scur) > delta) xcur += scur;
+    else xcur += (sbis > 0 ? delta : -delta);
+    if ((st = fn(arg, xcur, &fcur))) return st;
+  }
+  *root = xcur;
+  return 0;
 }
