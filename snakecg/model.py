@@ -83,13 +83,20 @@ def load(obj, *, backend: str = "compiled", progress=None):
         return SceneModel(obj, backend=backend, progress=progress)
     if isinstance(obj, Robot):
         return RobotModel(obj, backend=backend, progress=progress)
+    from .scenes import GeneralScene
+
+    if isinstance(obj, GeneralScene):  # objects, obstacles, contacts from geometry
+        from .scenes.model import GeneralSceneModel
+
+        return GeneralSceneModel(obj, backend=backend, progress=progress)
     from .spatial import SpatialRobot
 
     if isinstance(obj, SpatialRobot):  # a 3-D chain: snakecg.spatial's own model
         from .spatial.model import SpatialModel
 
         return SpatialModel(obj, backend=backend, progress=progress)
-    raise InputError(f"load() takes a snakecg.Robot, snakecg.Scene or snakecg.SpatialRobot, "
+    raise InputError(f"load() takes a snakecg.Robot, snakecg.Scene, snakecg.scenes.GeneralScene"
+                     f" or snakecg.SpatialRobot, "
                      f"got {type(obj).__name__}")
 
 

@@ -59,6 +59,13 @@ def run(args) -> int:
         raise InputError(f"--out {args.out!r}: the folder {str(out.parent)!r} does not exist")
     q = parse_vector("--q", args.q)
     tau = parse_vector("--tau", args.tau) if args.tau else None
+    from ._common import general_scene_from_args
+
+    general = general_scene_from_args(args)
+    if general is not None:  # a general scene (snakecg.scenes)
+        from ..scenes.commands import plot_command
+
+        return plot_command(args, general, q, tau, out, fmt, SCHEMA)
     scene = scene_from_args(args)
     from matplotlib.figure import Figure
 

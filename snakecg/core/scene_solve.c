@@ -557,6 +557,14 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
   info[INFO_SWEEPS] = (double)total_sweeps;
   info[INFO_PASSES] = (double)passes;
   info[INFO_RANK_DEFECT] = (double)defect;
+  if (ok) /* on the set's boundary without sliding: stick at the limit */
+    for (k = 0; k < nb; ++k)
+      if (state[k] == S_SLIDE) {
+        sc_int r = start[k], nk = block_size(kind[k]);
+        double e = 0.0;
+        for (i = 0; i < nk; ++i) e = fmax(e, fabs(w[r + i]));
+        if (e <= TOL_ACCEPT * p.wscale) state[k] = S_HELD;
+      }
   for (k = 0; k < nb; ++k) {
     double code = (double)state[k];
     if (state[k] == S_SLIDE && kind[k] == K_BOX) code = lam[start[k]] > 0 ? 3.0 : 4.0;

@@ -105,15 +105,19 @@ class GeneralSceneModel(RobotModel):
             A[s, :m[s]] = r.A
             kind[s, :k] = r.kind
             start[s, :k] = r.start
-            par[s, :k] = r.par
+            par[s, :k] = np.reshape(r.par, (-1, 3))
         out = solve(Mf, f, A, m, kind, start, par)
         a = out["a"]
         a_free = np.linalg.solve(Mf, f[..., None])[..., 0]
         qdd = a[:, :ns]
         a_obj = a[:, ns:].reshape(N, no, 3)
         nq, each, na_sum, nl = norms(qdd, M_s, a_obj, self.object_inertia, a, a_free, Mf)
+        # eq. (30); 0 where both norms are rounding (below (1e-13)^2 of the free motion's
+        # |a_free|^2_M: a system that does not move)
         denom = na_sum + nq
-        sr = np.where(denom > 0, na_sum / np.where(denom > 0, denom, 1.0), 0.0)
+        free = np.einsum("ni,nij,nj->n", a_free, Mf, a_free)
+        moving = denom > 1e-26 * free
+        sr = np.where(moving, na_sum / np.where(moving, denom, 1.0), 0.0)
         status = out["info"]["status"].astype(int)
         overlap = np.array([r is None for r in rows])
         status[overlap] = 3
@@ -156,11 +160,11 @@ class GeneralSceneModel(RobotModel):
                           out["info"]["dependent"].astype(int), cert, contacts, ground,
                           objects, reason, True)
         res._raw = out  # the solver's arrays (lam, w, state, info) for checks
-        res._rows = rows
+        res._rows, res._q = rows, qa
         if bq or bt or bf:
             return res
         one = res.sample(0)
-        one._raw, one._rows = out, rows
+        one._raw, one._rows, one._q = out, rows, qa[0]
         return one
 
 

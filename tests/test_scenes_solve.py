@@ -1,0 +1,177 @@
+"""The general scenes' exact solve, against independent references: the paper's three
+scenarios through today's path (1e-12), a dense NumPy model of the KKT conditions, brute-force
+enumeration of the polyhedral pieces, and Clarabel on the conic (Coulomb) problems."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+import snakecg
+from snakecg import Robot, Scene
+from snakecg.errors import InputError
+from snakecg.scenes import GeneralScene, Ground, Obstacle, SceneObject, load_scene
+
+from scenes_reference import (ALL_MODELS, POLYHEDRAL, clarabel_accelerations, dense_problem,
+                              enumerate_polyhedral, kkt_violations, peg_obstacles,
+                              random_scene)
+
+
+@pytest.mark.parametrize("scenario", ["frictionless", "wheels", "ideal_wheels"])
+@pytest.mark.parametrize("joints", [1, 2, 3])
+def test_paper_scenarios_through_the_general_path(scenario, joints, rng):
+    scene = Scene(Robot(joints=joints), scenario=scenario, kappa=float(rng.uniform(1, 200)),
+                  mu=0.1, contact_link=int(rng.integers(1, joints + 2)))
+    old, new = snakecg.load(scene), load_scene(scene)
+    q = np.c_[rng.normal(size=(40, 3)), rng.uniform(-0.8, 0.8, (40, joints))]
+    tau = rng.normal(size=(40, joints))
+    o = old.forward(q, tau)
+    r = new.forward(q, tau)
+    assert np.all(r.status == 0)
+    for name, got, want in (("qdd", r.qdd, o.qdd), ("a_obj", r.a_obj[:, 0], o.a_obj)):
+        scale = np.abs(want).max(axis=1, keepdims=True)
+        assert np.abs(got - want).max() <= 1e-12 * scale.max(), name
+    for name in ("norm_qdd", "norm_a_obj", "norm_lambda"):
+        got, want = getattr(r, name), getattr(o, name)
+        assert np.all(np.abs(got - want) <= 1e-12 * np.maximum(np.abs(want), 1e-300) +
+                      1e-12 * np.abs(o.norm_qdd)), name
+    assert np.abs(r.sr - o.sr).max() <= 1e-12
+    # the contact force and every wheel's lateral force
+    for s in range(40):
+        lam = r._raw["lam"][s]
+        rows = r._rows[s]
+        for (kind, st, par), label in zip(zip(rows.kind, rows.start, rows.par), rows.labels):
+            want = o.lam[s, 0] if label[0] == "contact" else o.lam[s, label[1] + 1]
+            assert abs(lam[st] - want) <= 1e-11 * max(1.0, np.abs(o.lam[s]).max())
+
+
+def _solved(rng, models, tries=50):
+    """A random solved one-sample problem (resampled on overlap, or without 1-6 contacts)."""
+    for _ in range(tries):
+        robot, ground, objects, pegs, q, tau = random_scene(rng, models)
+        base = GeneralScene(robot, ground=ground, objects=objects)
+        try:
+            m0 = snakecg.load(base)
+            scene = GeneralScene(robot, ground=ground, objects=objects,
+                                 obstacles=peg_obstacles(m0, pegs, q))
+            model = snakecg.load(scene)
+            res = model.forward(q, tau)
+        except InputError:
+            continue
+        if 1 <= len(res.contacts) <= 6:
+            return model, res, q, tau
+    raise AssertionError("no random scene without overlap")
+
+
+def test_kkt_conditions_with_a_dense_model(rng):
+    for _ in range(60):
+        model, res, q, tau = _solved(rng, ALL_MODELS)
+        assert res.status == 0, res.reason
+        p = dense_problem(res, model, tau)
+        a = np.r_[res.qdd, np.ravel(res.a_obj)]
+        assert kkt_violations(p, res._raw["lam"][0][:len(p["b"])], a) == []
+        for k in ("primal", "dual", "complementarity"):
+            assert res.certificate[k] <= 1e-9
+        assert res.norm_qdd >= 0 and res.norm_a_obj >= 0 and 0 <= res.sr <= 1
+
+
+def _enumeration_study(rng, count):
+    mismatches = []
+    for i in range(count):
+        model, res, q, tau = _solved(rng, POLYHEDRAL)
+        p = dense_problem(res, model, tau)
+        ref = enumerate_polyhedral(p)
+        a = np.r_[res.qdd, np.ravel(res.a_obj)]
+        if ref is None or res.status != 0 or not np.abs(a - ref).max() <= 1e-10 * max(
+                1.0, np.abs(ref).max()):
+            mismatches.append((i, q.tolist(), None if ref is None else
+                               float(np.abs(a - ref).max())))
+    return mismatches
+
+
+def test_active_set_against_enumeration(rng):
+    assert _enumeration_study(rng, 150) == []
+
+
+@pytest.mark.slow
+def test_active_set_against_enumeration_study(rng):
+    assert _enumeration_study(rng, 10_000) == []
+
+
+def test_conic_problems_against_clarabel(rng):
+    worst = 0.0
+    for _ in range(25):
+        model, res, q, tau = _solved(rng, ("coulomb", "anisotropic", "frictionless"))
+        p = dense_problem(res, model, tau)
+        ref, status = clarabel_accelerations(p)
+        assert status == "optimal"
+        a = np.r_[res.qdd, np.ravel(res.a_obj)]
+        err = np.abs(a - ref).max() / max(1.0, np.abs(ref).max())
+        worst = max(worst, err)
+    assert worst <= 1e-6
+
+
+def test_point_jacobians_against_finite_differences(rng):
+    """A contact row is n . (v_B - v_A) at the surface points fixed on their bodies: checked
+    against the points moved by a small step of q (central differences)."""
+    from snakecg.scenes.contacts import link_ends
+
+    model, res, q, tau = _solved(rng, ("frictionless",))
+    rows = res._rows[0]
+    v = rng.normal(size=model.n_coordinates)
+    h = 1e-6
+    ends0 = link_ends(model.scene, model.link_poses(q))
+    for c in rows.contacts:
+        if c.a[0] != "link" or c.b[0] != "obstacle":
+            continue
+        i = c.a[1]
+        a0, a1 = ends0[i]
+        s = (c.point_a - a0) @ (a1 - a0) / ((a1 - a0) @ (a1 - a0))
+        perp = (c.point_a - (a0 + s * (a1 - a0)))
+
+        def point(qq):
+            e0, e1 = link_ends(model.scene, model.link_poses(qq))[i]
+            t = (e1 - e0) / np.hypot(*(e1 - e0))
+            return e0 + s * (e1 - e0) + np.array([[t[0], -t[1]], [t[1], t[0]]]) @ (
+                np.array([[t[0], t[1]], [-t[1], t[0]]]) @ perp)
+
+        vel = (point(q + h * v) - point(q - h * v)) / (2 * h)
+        row = rows.A[c.row][:model.n_coordinates]
+        assert abs(row @ v - c.normal @ (-vel)) <= 1e-6 * max(1.0, np.abs(vel).max())
+
+
+def test_dependent_rows_are_flagged_with_minimum_norm_forces():
+    """A link pressed on two pegs at one place: the rows are equal (statically
+    indeterminate); the forces are split evenly (minimum norm) and the flag says so. The
+    reference: the same scene with one peg carries their sum."""
+    robot = Robot(joints=1)
+    q = np.array([0.0, 0.0, 0.0, 0.3])
+    m0 = snakecg.load(GeneralScene(robot))
+    x, y, phi = m0.link_poses(q)[0]
+    c = (x - 0.02 * np.sin(phi) * 0 + 0.0, y + 0.03)  # a peg above link 1's COM
+    peg = Obstacle(shape="peg", center=(float(x), float(y) + 0.03), radius=0.03)
+    one = snakecg.load(GeneralScene(robot, obstacles=(peg,))).forward(q, [1.0])
+    two = snakecg.load(GeneralScene(robot, obstacles=(peg, peg))).forward(q, [1.0])
+    assert len(two.contacts) == 2 and one.contacts[0]["force"] > 0
+    assert two.dependent == 1
+    f1, f2 = (cc["force"] for cc in two.contacts)
+    assert f1 == pytest.approx(f2, rel=1e-12)
+    assert f1 + f2 == pytest.approx(one.contacts[0]["force"], rel=1e-12)
+    assert np.allclose(two.qdd, one.qdd, rtol=1e-12, atol=1e-12)
+    del c
+
+
+def test_overlap_is_refused_naming_the_bodies_and_depth():
+    robot = Robot(joints=1)
+    peg = Obstacle(shape="peg", center=(0.0, 0.01), radius=0.03)
+    model = snakecg.load(GeneralScene(robot, obstacles=(peg,)))
+    with pytest.raises(InputError, match=r"link 1 and obstacle 1 overlap by 0\.02 m"):
+        model.forward([0.0, 0.0, 0.0, 0.0], [0.0])
+    res = model.forward([[0.0, 0.0, 0.0, 0.0], [0.0, 1.0, 0.0, 0.0]], [0.0])
+    assert res.status.tolist() == [3, 0] and np.isnan(res.sr[0]) and "overlap" in res.reason[0]
+
+
+def test_other_queries_are_refused_with_one_line():
+    model = snakecg.load(GeneralScene(Robot(joints=1)))
+    with pytest.raises(InputError, match="maps is not available on a general scene"):
+        model.maps([0.0] * 4)
