@@ -95,8 +95,8 @@ def load(obj, *, backend: str = "compiled", progress=None):
         from .spatial.model import SpatialModel
 
         return SpatialModel(obj, backend=backend, progress=progress)
-    raise InputError(f"load() takes a snakecg.Robot, snakecg.Scene, snakecg.scenes.GeneralScene"
-                     f" or snakecg.SpatialRobot, "
+    raise InputError(f"load() takes a snakecg.Robot, snakecg.Scene or snakecg.SpatialRobot "
+                     f"(or a snakecg.scenes.GeneralScene), "
                      f"got {type(obj).__name__}")
 
 
