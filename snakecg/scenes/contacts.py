@@ -151,14 +151,20 @@ def rows_of(scene: GeneralScene, masses, poses, J, *, index=None) -> tuple[Rows,
         rows.extend(rs)
         labels.append(label)
 
+    # broad phase: a bounding circle per shape (a wall: none), pairs farther apart skipped
+    centre = np.array([sh.pts.mean(axis=0) for _, sh in bodies])
+    reach = np.array([np.inf if sh.kind == "halfplane" else
+                      np.sqrt(((sh.pts - sh.pts.mean(axis=0)) ** 2).sum(axis=1)).max()
+                      + sh.radius for _, sh in bodies])
     for ia in range(len(bodies)):
         ba, sa = bodies[ia]
+        if ba[0] == "obstacle" or sa.kind == "halfplane":
+            continue
         for ib in range(ia + 1, len(bodies)):
             bb, sb = bodies[ib]
-            if ba[0] == "obstacle" or (ba[0] == "link" and bb[0] == "link"
-                                       and abs(ba[1] - bb[1]) < 2):
+            if ba[0] == "link" and bb[0] == "link" and abs(ba[1] - bb[1]) < 2:
                 continue
-            if sa.kind == "halfplane":
+            if np.hypot(*(centre[ia] - centre[ib])) > reach[ia] + reach[ib] + 2 * tol:
                 continue
             d, pairs = closest(sa, sb, size)
             if d < -tol:
