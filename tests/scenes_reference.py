@@ -144,7 +144,8 @@ def kkt_violations(p, lam, a, tol=1e-8):
 def enumerate_polyhedral(p, tol=1e-9):
     """The accelerations of every piece of a polyhedral problem (FREE, UNILATERAL, BOX
     blocks) whose KKT conditions hold, by trying every combination of pieces (held, at zero,
-    at +-bound) and solving its equations by least squares. Stops at the first."""
+    at +-bound) and solving its equations by least squares. Stops at the first; returns its
+    accelerations and held rows (None, None when no piece holds)."""
     blocks = p["blocks"]
     G, b = p["G"], p["b"]
     choices = []
@@ -192,8 +193,8 @@ def enumerate_polyhedral(p, tol=1e-9):
             if not ok:
                 break
         if ok:
-            return p["a_free"] + p["Minv"] @ p["A"].T @ lam
-    return None
+            return p["a_free"] + p["Minv"] @ p["A"].T @ lam, held
+    return None, None
 
 
 def clarabel_accelerations(p):

@@ -78,32 +78,39 @@ def test_kkt_conditions_with_a_dense_model(rng):
 def _enumeration_study(rng, count):
     """Mismatches between the compiled solve and brute-force enumeration: no valid piece
     found, or accelerations apart by more than 1e-10 (relative), widened only to what double
-    precision can tell apart on an ill-conditioned problem (50 eps cond(G): forces of 1e4 N
-    through a Delassus matrix of condition 1e7 are known to 1e-8 by any method)."""
-    mismatches = []
+    precision resolves on the valid piece's held rows, 50 eps cond(G_HH) (on its range: nearly
+    dependent rows carry forces of 1e4 N that cancel, known to 1e-8 by any method). Returns
+    the mismatches and how many samples needed the wider tolerance."""
+    mismatches, widened = [], 0
     for i in range(count):
         model, res, q, tau = _solved(rng, POLYHEDRAL)
         p = dense_problem(res, model, tau)
-        ref = enumerate_polyhedral(p)
+        ref, held = enumerate_polyhedral(p)
         a = np.r_[res.qdd, np.ravel(res.a_obj)]
-        ev = np.linalg.eigvalsh(p["G"]) if len(p["b"]) else np.ones(1)
-        ev = ev[ev > 1e-12 * ev.max()]  # on G's range (dependent rows: a null space)
-        cond = ev.max() / ev.min()
+        cond = 1.0
+        if held:
+            ev = np.linalg.eigvalsh(p["G"][np.ix_(held, held)])
+            ev = ev[ev > 1e-13 * ev.max()]  # on its range (exactly dependent rows: a null space)
+            cond = ev.max() / ev.min()
         tol = max(1e-10, 50 * np.finfo(float).eps * cond)
+        widened += tol > 1e-10
         if ref is None or res.status != 0 or not np.abs(a - ref).max() <= tol * max(
                 1.0, np.abs(ref).max()):
             mismatches.append((i, q.tolist(), None if ref is None else
                                float(np.abs(a - ref).max()), cond))
-    return mismatches
+    return mismatches, widened
 
 
 def test_active_set_against_enumeration(rng):
-    assert _enumeration_study(rng, 150) == []
+    mismatches, widened = _enumeration_study(rng, 150)
+    assert mismatches == [] and widened <= 5
 
 
 @pytest.mark.slow
 def test_active_set_against_enumeration_study(rng):
-    assert _enumeration_study(rng, 10_000) == []
+    mismatches, widened = _enumeration_study(rng, 10_000)
+    print(f"10^4 scenes: {len(mismatches)} mismatches, {widened} on ill-conditioned rows")
+    assert mismatches == [] and widened <= 100
 
 
 def test_conic_problems_against_clarabel(rng):

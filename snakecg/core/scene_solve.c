@@ -54,6 +54,10 @@ enum { INFO_STATUS = 0, INFO_DEPENDENT, INFO_PRIMAL, INFO_DUAL, INFO_COMPL, INFO
        INFO_PASSES, INFO_RANK_DEFECT, INFO_WIDTH };
 
 #define TOL_ACCEPT 1e-9
+/* held rows dependent where a pivot of their equations falls below this ratio to the first
+ * (snakecg.solver.PIVOT_TOL): nearly dependent rows are statically indeterminate to double
+ * precision, their forces are taken minimum-norm rather than huge and cancelling */
+#define DEP_TOL 1e-10
 
 typedef struct {
   sc_int n, m, nb;
@@ -323,7 +327,7 @@ static sc_int polish(problem *p, double *work, sc_int *iwork) {
       F[i] = -F[i];
     }
     {
-      sc_int rank = sc_qr_least_squares(neq, nu, J, nu, F, 1e-13, dx, qw, perm);
+      sc_int rank = sc_qr_least_squares(neq, nu, J, nu, F, DEP_TOL, dx, qw, perm);
       defect = nu - rank;
     }
     {
@@ -418,16 +422,23 @@ static int kkt(problem *p, double *res, int do_switch) {
 }
 
 /* Minimum-norm held forces on the face: lam_F -= N N^T lam_F, N the null space of G_FF
- * (eigenvalues below 1e-10 of the largest). Kept only if lam stays in K. Returns 1 when
- * applied, 2 when it would leave the set. */
+ * (eigenvalues at most DEP_TOL of the largest). Where that leaves a force's set and the null
+ * space is one direction v, the minimum of |lam_F + t v| over the t that keep every held force
+ * in its set (an interval holding 0) is taken instead, exactly. Returns 1 when the
+ * minimum-norm forces were found, 2 when not (a larger null space whose unconstrained
+ * minimum leaves the set: the face's basic solution stays). */
 static int min_norm_face(problem *p, double *work) {
   const sc_int m = p->m;
-  sc_int F[512], nf = 0, i, j, k, t;
-  double *A, *V, *ev, *l0, big;
+  sc_int F[512], fk[512], nf = 0, i, j, k, t, nnull = 0, tnull = -1;
+  double *A, *V, *ev, *l0, big, lo = -INFINITY, hi = INFINITY;
+  int inside = 1;
   for (k = 0; k < p->nb; ++k) {
     if (p->state[k] != S_HELD) continue;
     if (p->kind[k] >= K_DISC) return 2; /* 2-D held blocks are regular (a COM's rows) */
-    if (nf < 512) F[nf++] = p->start[k];
+    if (nf < 512) {
+      fk[nf] = k;
+      F[nf++] = p->start[k];
+    }
   }
   if (nf == 0) return 1;
   A = work;
@@ -441,16 +452,36 @@ static int min_norm_face(problem *p, double *work) {
   for (i = 0; i < nf; ++i) l0[i] = p->lam[F[i]];
   for (t = 0; t < nf; ++t) {
     double s;
-    if (!(fabs(ev[t]) <= 1e-10 * big)) continue;
+    if (!(fabs(ev[t]) <= DEP_TOL * big)) continue;
+    ++nnull;
+    tnull = t;
     s = 0.0;
     for (i = 0; i < nf; ++i) s += V[i * nf + t] * l0[i];
     for (i = 0; i < nf; ++i) l0[i] -= s * V[i * nf + t];
   }
-  for (k = 0, i = 0; k < p->nb; ++k) {
-    if (p->state[k] != S_HELD) continue;
-    if (p->kind[k] == K_UNILATERAL && l0[i] < -TOL_ACCEPT * p->fscale) return 2;
-    if (p->kind[k] == K_BOX && fabs(l0[i]) > p->par[3 * k] * (1 + TOL_ACCEPT)) return 2;
-    ++i;
+  for (i = 0; i < nf; ++i) {
+    k = fk[i];
+    if (p->kind[k] == K_UNILATERAL && l0[i] < -TOL_ACCEPT * p->fscale) inside = 0;
+    if (p->kind[k] == K_BOX && fabs(l0[i]) > p->par[3 * k] * (1 + TOL_ACCEPT)) inside = 0;
+  }
+  if (!inside) {
+    double tstar = 0.0;
+    if (nnull != 1) return 2;
+    for (i = 0; i < nf; ++i) { /* lam_F + t v in the sets: an interval of t holding 0 */
+      double v = V[i * nf + tnull], l = p->lam[F[i]];
+      k = fk[i];
+      tstar -= v * l;
+      if (v == 0.0) continue;
+      if (p->kind[k] == K_UNILATERAL) {
+        if (v > 0) lo = fmax(lo, -l / v); else hi = fmin(hi, -l / v);
+      } else if (p->kind[k] == K_BOX) {
+        double u = p->par[3 * k], a = (-u - l) / v, b = (u - l) / v;
+        lo = fmax(lo, fmin(a, b));
+        hi = fmin(hi, fmax(a, b));
+      }
+    }
+    tstar = fmax(lo, fmin(hi, tstar));
+    for (i = 0; i < nf; ++i) l0[i] = p->lam[F[i]] + tstar * V[i * nf + tnull];
   }
   for (i = 0; i < nf; ++i) p->lam[F[i]] = l0[i];
   update_w(p);
@@ -548,6 +579,33 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
   if (ok && defect > 0) {
     dep = min_norm_face(&p, rest);
     kkt(&p, res, 0);
+    /* a contact that the minimum-norm choice brought to zero force may open instead, which
+     * frees the dependent forces further: tried one at a time, kept where the KKT conditions
+     * still hold */
+    for (k = 0; k < nb && dep == 1; ++k) {
+      double keep_lam[512], keep_w[512], keep_res[3] = {res[0], res[1], res[2]};
+      sc_int keep_state = state[k], d2;
+      if (kind[k] != K_UNILATERAL || state[k] != S_HELD || lam[start[k]] > 1e-12 * p.fscale)
+        continue;
+      memcpy(keep_lam, lam, sizeof(double) * (size_t)m);
+      memcpy(keep_w, w, sizeof(double) * (size_t)m);
+      state[k] = S_ZERO;
+      d2 = polish(&p, rest, iw2);
+      if (d2 >= 0 && !kkt(&p, res, 0) && res[0] <= TOL_ACCEPT && res[1] <= TOL_ACCEPT &&
+          res[2] <= TOL_ACCEPT) {
+        if (d2 > 0) dep = min_norm_face(&p, rest);
+        defect = d2;
+        kkt(&p, res, 0);
+        if (d2 == 0) break;
+      } else {
+        state[k] = keep_state;
+        memcpy(lam, keep_lam, sizeof(double) * (size_t)m);
+        memcpy(w, keep_w, sizeof(double) * (size_t)m);
+        res[0] = keep_res[0];
+        res[1] = keep_res[1];
+        res[2] = keep_res[2];
+      }
+    }
   }
   info[INFO_STATUS] = ok ? ST_SOLVED : ST_NOT_CONVERGED;
   info[INFO_DEPENDENT] = defect > 0 ? (double)dep : 0.0;
