@@ -21,21 +21,12 @@ from __future__ import annotations
 import argparse
 import os
 import platform
-import time
 
 import numpy as np
+from bench_core import best_of  # benchmarks/bench_core.py
 
 import snakecg
 from snakecg.scenes import GeneralScene, Ground, Obstacle, SceneObject
-
-
-def best_of(fn, repeat: int) -> float:
-    best = float("inf")
-    for _ in range(repeat):
-        t0 = time.perf_counter()
-        fn()
-        best = min(best, time.perf_counter() - t0)
-    return best
 
 
 def scene_of(joints: int, q):

@@ -190,3 +190,17 @@ def test_other_queries_are_refused_with_one_line():
     model = snakecg.load(GeneralScene(Robot(joints=1)))
     with pytest.raises(InputError, match="maps is not available on a general scene"):
         model.maps([0.0] * 4)
+
+
+def test_scene_solve_is_strict_c99(tmp_path):
+    """scene_solve.c (with scene_sets.h and linalg.h) compiles with the core's strict flags."""
+    import shutil
+    import subprocess
+
+    from snakecg.scenes.solve_binding import SOURCE
+
+    cc = shutil.which("cc") or shutil.which("gcc")
+    res = subprocess.run([cc, "-std=c99", "-Wall", "-Wextra", "-pedantic", "-Werror", "-O2",
+                          "-fPIC", "-c", str(SOURCE), "-o", str(tmp_path / "s.o")],
+                         capture_output=True, text=True, timeout=600)
+    assert res.returncode == 0, res.stderr[-3000:]

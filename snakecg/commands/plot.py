@@ -75,15 +75,7 @@ def run(args) -> int:
     model = load(scene, progress=progress_reporter())
     fig = Figure(figsize=(6.4, 5.2), constrained_layout=True)
     ax = plot(model, q, tau, ax=fig.add_subplot())
-    fd, tmp = tempfile.mkstemp(prefix=f".{out.name}.", suffix=f".{fmt}", dir=out.parent)
-    os.close(fd)
-    try:
-        fig.savefig(tmp, format=fmt, dpi=args.dpi)
-        os.chmod(tmp, 0o644)
-        os.replace(tmp, out)
-    except BaseException:
-        Path(tmp).unlink(missing_ok=True)
-        raise
+    save_figure(fig, out, fmt, args.dpi)
     if args.json:
         from ._common import print_json
 
@@ -93,3 +85,16 @@ def run(args) -> int:
         return 0
     print(f"wrote {out}")
     return 0
+
+
+def save_figure(fig, out: Path, fmt: str, dpi: int) -> None:
+    """Write ``fig`` to ``out`` atomically (a temporary file beside it, then renamed)."""
+    fd, tmp = tempfile.mkstemp(prefix=f".{out.name}.", suffix=f".{fmt}", dir=out.parent)
+    os.close(fd)
+    try:
+        fig.savefig(tmp, format=fmt, dpi=dpi)
+        os.chmod(tmp, 0o644)
+        os.replace(tmp, out)
+    except BaseException:
+        Path(tmp).unlink(missing_ok=True)
+        raise

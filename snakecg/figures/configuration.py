@@ -80,6 +80,20 @@ def _scale(vectors, target):
     return (target / big, big) if big > 0 else (0.0, 0.0)
 
 
+def frame(ax, tips, margin: float) -> None:
+    """Limits around every point of ``tips`` (arrays of 2-D points) with ``margin`` of their
+    extent, equal axes in metres, a light grid."""
+    pts = np.concatenate([np.asarray(t).reshape(-1, 2) for t in tips])
+    lo, hi = pts.min(axis=0), pts.max(axis=0)
+    pad = margin * float(max(hi - lo)) + 1e-3
+    ax.set_xlim(lo[0] - pad, hi[0] + pad)
+    ax.set_ylim(lo[1] - pad, hi[1] + pad)
+    ax.set_aspect("equal", adjustable="box")
+    ax.set_xlabel("x [m]")
+    ax.set_ylabel("y [m]")
+    ax.grid(True, lw=0.3, alpha=0.5)
+
+
 def plot(scene, q, tau=None, ax=None, *, title: str | None = None):
     """Draw the configuration ``q`` of ``scene`` (a :class:`~snakecg.Scene` or its loaded
     model) on ``ax`` (a new figure if None); with ``tau``, the constraint forces and the
@@ -158,15 +172,7 @@ def plot(scene, q, tau=None, ax=None, *, title: str | None = None):
                    f"accelerations ({amax:.3g} m/s$^2$ = {L0:.3g} m)")
             arrows(g["q_obj"][:2], as_ * g["acc_object"], COLORS["acc"], "acc_object", None,
                    alpha=0.8)
-    pts = np.concatenate([np.asarray(t).reshape(-1, 2) for t in tips])
-    lo, hi = pts.min(axis=0), pts.max(axis=0)
-    pad = 0.08 * float(max(hi - lo)) + 1e-3
-    ax.set_xlim(lo[0] - pad, hi[0] + pad)
-    ax.set_ylim(lo[1] - pad, hi[1] + pad)
-    ax.set_aspect("equal", adjustable="box")
-    ax.set_xlabel("x [m]")
-    ax.set_ylabel("y [m]")
-    ax.grid(True, lw=0.3, alpha=0.5)
+    frame(ax, tips, 0.08)
     if title is None:
         title = (f"{model.n_joints} joints, {sc.scenario}, contact on link {sc.contact_link}"
                  f" ({sc.side})")

@@ -2,8 +2,6 @@
 
 from __future__ import annotations
 
-import os
-import tempfile
 from pathlib import Path
 
 import numpy as np
@@ -73,21 +71,14 @@ def plot_command(args, scene, q, tau, out: Path, fmt: str, schema: str) -> int:
 
     from .. import load
     from ..commands._common import print_json, progress_reporter
+    from ..commands.plot import save_figure
     from .drawing import plot_scene
 
     _vectors(args, scene)
     model = load(scene, progress=progress_reporter())
     fig = Figure(figsize=(6.4, 5.2), constrained_layout=True)
     ax = plot_scene(model, q, tau, ax=fig.add_subplot())
-    fd, tmp = tempfile.mkstemp(prefix=f".{out.name}.", suffix=f".{fmt}", dir=out.parent)
-    os.close(fd)
-    try:
-        fig.savefig(tmp, format=fmt, dpi=args.dpi)
-        os.chmod(tmp, 0o644)
-        os.replace(tmp, out)
-    except BaseException:
-        Path(tmp).unlink(missing_ok=True)
-        raise
+    save_figure(fig, out, fmt, args.dpi)
     if args.json:
         print_json({"schema": schema, "file": str(out), "format": fmt, "joints":
                     scene.robot.joints, "scene": str(args.scene), "q": q, "tau": tau,

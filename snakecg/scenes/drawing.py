@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..figures.configuration import COLORS, _scale
+from ..figures.configuration import COLORS, _scale, frame
 from .contacts import link_ends, place_objects
 from .geometry import box_corners
 
@@ -115,15 +115,7 @@ def plot_scene(model, q, tau=None, ax=None, *, title: str | None = None):
                 ax.quiver(op[:, 0], op[:, 1], as_ * acc_o[:, 0], as_ * acc_o[:, 1],
                           angles="xy", scale_units="xy", scale=1, color=COLORS["acc"],
                           zorder=6, width=0.006, gid="acc_objects", alpha=0.8)
-    allp = np.concatenate([np.asarray(t).reshape(-1, 2) for t in tips])
-    lo, hi = allp.min(axis=0), allp.max(axis=0)
-    pad = 0.15 * float(max(hi - lo)) + 1e-3
-    ax.set_xlim(lo[0] - pad, hi[0] + pad)
-    ax.set_ylim(lo[1] - pad, hi[1] + pad)
-    ax.set_aspect("equal", adjustable="box")
-    ax.set_xlabel("x [m]")
-    ax.set_ylabel("y [m]")
-    ax.grid(True, lw=0.3, alpha=0.5)
+    frame(ax, tips, 0.15)
     if title is None:
         models = sorted({g.model for g in sc.ground})
         title = (f"{model.n_joints} joints, ground {'/'.join(models)}, {sc.n_objects} objects, "

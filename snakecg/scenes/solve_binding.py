@@ -37,7 +37,7 @@ SOLVED, NOT_CONVERGED, SINGULAR_MASS = 0, 1, 2
 MAX_SWEEPS = 200000
 
 SOURCE = Path(__file__).resolve().parent.parent / "core" / "scene_solve.c"
-HEADERS = (SOURCE.with_name("linalg.h"),)
+HEADERS = (SOURCE.with_name("linalg.h"), SOURCE.with_name("scene_sets.h"))
 _LIB: list = []
 _P = ctypes.c_void_p
 _I = ctypes.c_longlong
