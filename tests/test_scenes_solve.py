@@ -204,3 +204,43 @@ def test_scene_solve_is_strict_c99(tmp_path):
                           "-fPIC", "-c", str(SOURCE), "-o", str(tmp_path / "s.o")],
                          capture_output=True, text=True, timeout=600)
     assert res.returncode == 0, res.stderr[-3000:]
+
+
+def test_object_on_object_and_self_contact():
+    """A disc pushed by link 1 presses a second disc (placed by its pose against the first),
+    which rests on a wall: every contact found, the KKT conditions hold in the dense model and
+    the chain's force is equal along it (no friction, no other load on the discs). Links
+    folded onto each other are refused by name."""
+    robot = Robot(joints=2)
+    base = snakecg.load(robot)
+    q = np.array([0.0, 0.0, 0.0, 0.4, -0.3])
+    x, y, phi = base.link_poses(q)[0]
+    d1 = SceneObject(shape="disc", radius=0.03, mass=1.0,
+                     touching={"link": 1, "offset": 0.075, "side": "left"})
+    c1 = np.array([x, y]) + 0.03 * np.array([-np.sin(phi), np.cos(phi)])
+    c2 = c1 + 0.07 * np.array([-np.sin(phi), np.cos(phi)])
+    d2 = SceneObject(shape="disc", radius=0.04, mass=2.0, pose=(float(c2[0]), float(c2[1]), 0.0))
+    wall = Obstacle(shape="wall", point=(0.0, float(c2[1]) + 0.04), normal=(0.0, -1.0))
+    scene = GeneralScene(robot, objects=(d1, d2), obstacles=(wall,))
+    model = snakecg.load(scene)
+    res = model.forward(q, [0.0, 0.0], f_obj=[[0.0, 0.0, 0.0], [0.0, 0.0, 0.0]])
+    pairs = {tuple(c["bodies"]) for c in res.contacts}
+    assert pairs == {("link 1", "object 1"), ("object 1", "object 2"),
+                     ("object 2", "obstacle 1")}
+    # a force F on disc 1 toward disc 2 and the wall: static equilibrium (a physical law)
+    # carries F along the chain, the link's contact opens and nothing accelerates
+    n = np.array([-np.sin(phi), np.cos(phi)])
+    F = 3.0
+    f_obj = [[F * n[0], F * n[1], 0.0], [0.0, 0.0, 0.0]]
+    res = model.forward(q, [0.0, 0.0], f_obj=f_obj)
+    forces = {tuple(c["bodies"]): c["force"] for c in res.contacts}
+    assert forces[("link 1", "object 1")] == 0.0
+    assert forces[("object 1", "object 2")] == pytest.approx(F, rel=1e-12)
+    assert forces[("object 2", "obstacle 1")] == pytest.approx(F, rel=1e-12)  # n = (0, 1)
+    assert np.abs(res.a_obj).max() <= 1e-12 * F
+    p = dense_problem(res, model, [0.0, 0.0], f_obj)
+    assert kkt_violations(p, res._raw["lam"][0][:len(p["b"])],
+                          np.r_[res.qdd, np.ravel(res.a_obj)]) == []
+    folded = GeneralScene(robot, radius=0.02)
+    with pytest.raises(InputError, match=r"link 1 and link 3 overlap"):
+        snakecg.load(folded).forward([0.0, 0.0, 0.0, 2.9, 2.9], [0.0, 0.0])
