@@ -5,6 +5,7 @@ problem in cvxpy (solved by Clarabel). None of it calls the code under test's so
 from __future__ import annotations
 
 import itertools
+import warnings
 
 import numpy as np
 
@@ -226,3 +227,38 @@ def clarabel_accelerations(p):
     prob.solve(solver="CLARABEL", tol_gap_abs=1e-11, tol_gap_rel=1e-11, tol_feas=1e-11,
                max_iter=400)
     return a.value, prob.status
+
+
+def clarabel_min_norm_forces(p, lam_star):
+    """The minimum-norm forces among all that give the same accelerations (A^T lam = A^T
+    lam*, lam in the sets), in cvxpy (Clarabel): the statically indeterminate case's
+    reference."""
+    import cvxpy as cp
+
+    A = p["A"]
+    _, sv, Vt = np.linalg.svd(A.T)  # lam = lam* + N t, N spanning the null space of A^T
+    rank = int(np.sum(sv > 1e-10 * sv.max()))
+    N = Vt[rank:].T
+    t = cp.Variable(N.shape[1])
+    lam = lam_star + N @ t
+    cons = []
+    for kind, s, par in p["blocks"]:
+        if kind == UNILATERAL:
+            cons.append(lam[s] >= 0)
+        elif kind == BOX:
+            cons.append(cp.abs(lam[s]) <= par[0])
+        elif kind == DISC:
+            cons.append(cp.norm(lam[s:s + 2]) <= par[0])
+        elif kind == SPLIT:
+            sp, sm = cp.Variable(nonneg=True), cp.Variable(nonneg=True)
+            cons += [lam[s] == sp - sm,
+                     cp.norm(cp.hstack([sm / par[0], sp / par[1], lam[s + 1] / par[2]])) <= 1]
+    prob = cp.Problem(cp.Minimize(cp.sum_squares(lam)), cons)
+    for tol in (1e-11, 1e-9):  # retried looser where Clarabel stops short of 1e-11
+        with warnings.catch_warnings():  # "may be inaccurate": the retry's reason
+            warnings.simplefilter("ignore", UserWarning)
+            prob.solve(solver="CLARABEL", tol_gap_abs=tol, tol_gap_rel=tol, tol_feas=tol,
+                       max_iter=400)
+        if prob.status == "optimal":
+            break
+    return lam_star + N @ t.value, prob.status

@@ -12,9 +12,9 @@ from snakecg import Robot, Scene
 from snakecg.errors import InputError
 from snakecg.scenes import GeneralScene, Ground, Obstacle, SceneObject, load_scene
 
-from scenes_reference import (ALL_MODELS, POLYHEDRAL, clarabel_accelerations, dense_problem,
-                              enumerate_polyhedral, kkt_violations, peg_obstacles,
-                              random_scene)
+from scenes_reference import (ALL_MODELS, POLYHEDRAL, clarabel_accelerations,
+                              clarabel_min_norm_forces, dense_problem, enumerate_polyhedral,
+                              kkt_violations, peg_obstacles, random_scene)
 
 
 @pytest.mark.parametrize("scenario", ["frictionless", "wheels", "ideal_wheels"])
@@ -73,6 +73,26 @@ def test_kkt_conditions_with_a_dense_model(rng):
         for k in ("primal", "dual", "complementarity"):
             assert res.certificate[k] <= 1e-9
         assert res.norm_qdd >= 0 and res.norm_a_obj >= 0 and 0 <= res.sr <= 1
+
+
+def test_minimum_norm_forces_against_clarabel(rng):
+    """Where the held rows are dependent and the flag says the forces are minimum-norm (1),
+    they are: against the minimum-norm forces over every force that gives the same
+    accelerations, within the sets (Clarabel)."""
+    checked = 0
+    for _ in range(400):
+        model, res, q, tau = _solved(rng, ALL_MODELS)
+        if res.dependent != 1:
+            continue
+        p = dense_problem(res, model, tau)
+        lam = res._raw["lam"][0][:len(p["b"])]
+        ref, status = clarabel_min_norm_forces(p, lam)
+        assert status == "optimal"
+        assert np.linalg.norm(lam) <= np.linalg.norm(ref) * (1 + 1e-6) + 1e-9
+        checked += 1
+        if checked == 10:
+            break
+    assert checked >= 3
 
 
 def _enumeration_study(rng, count):

@@ -281,26 +281,64 @@ static int kkt(problem *p, double *res, int do_switch) {
   return moved;
 }
 
-/* Minimum-norm held forces on the face: lam_F -= N N^T lam_F, N the null space of G_FF
+/* 1 if the forces l of block k lie in its set, to the relative tolerance tol; with clip,
+ * forces outside by at most that are first moved onto the set. */
+static int in_set(const problem *p, sc_int k, double *l, double tol, int clip) {
+  const double *q = p->par + 3 * k;
+  double P[2], phi;
+  switch (p->kind[k]) {
+    case K_FREE: return 1;
+    case K_UNILATERAL:
+      if (!(l[0] >= -tol * p->fscale)) return 0;
+      if (clip && l[0] < 0) l[0] = 0.0;
+      return 1;
+    case K_BOX:
+      if (!(fabs(l[0]) <= q[0] * (1 + tol))) return 0;
+      if (clip) l[0] = fmax(-q[0], fmin(q[0], l[0]));
+      return 1;
+    default:
+      if (!(p->kind[k] == K_DISC ? q[0] > 0 : q[2] > 0 && (q[0] > 0 || q[1] > 0)))
+        return l[0] == 0.0 && l[1] == 0.0;
+      block_P(p, k, l, P);
+      phi = sqrt(P[0] * l[0] * l[0] + P[1] * l[1] * l[1]);
+      if (!(phi <= 1 + tol)) return 0;
+      if (clip && phi > 1) {
+        l[0] /= phi;
+        l[1] /= phi;
+      }
+      return 1;
+  }
+}
+
+/* 1 if block k's rows do not accelerate (|w| within the acceptance tolerance). */
+static int still(const problem *p, sc_int k) {
+  sc_int i;
+  for (i = 0; i < block_size(p->kind[k]); ++i)
+    if (fabs(p->w[p->start[k] + i]) > TOL_ACCEPT * p->wscale) return 0;
+  return 1;
+}
+
+/* Minimum-norm forces on the face (every block whose rows do not accelerate: the forces of
+ * the others are fixed by the unique accelerations): lam_F -= N N^T lam_F, N the null space of G_FF
  * (eigenvalues at most DEP_TOL of the largest). Where that leaves a force's set and the null
  * space is one direction v, the minimum of |lam_F + t v| over the t that keep every held force
- * in its set (an interval holding 0) is taken instead, exactly. Returns 1 when the
- * minimum-norm forces were found, 2 when not (a larger null space whose unconstrained
- * minimum leaves the set: the face's basic solution stays). */
+ * in its set (an interval holding 0, its ends found by bisection to rounding) is taken
+ * instead. Returns 0 when the face's rows are independent (nothing to choose), 1 when the
+ * minimum-norm forces were found, 2 when not (a larger null space whose unconstrained minimum
+ * leaves the set: the face's basic solution stays). */
 static int min_norm_face(problem *p, double *work) {
   const sc_int m = p->m;
   sc_int F[512], fk[512], nf = 0, i, j, k, t, nnull = 0, tnull = -1;
-  double *A, *V, *ev, *l0, big, lo = -INFINITY, hi = INFINITY;
+  double *A, *V, *ev, *l0, big;
   int inside = 1;
-  for (k = 0; k < p->nb; ++k) {
-    if (p->state[k] != S_HELD) continue;
-    if (p->kind[k] >= K_DISC) return 2; /* 2-D held blocks are regular (a COM's rows) */
-    if (nf < 512) {
+  for (k = 0; k < p->nb; ++k) { /* the face: every block whose rows do not accelerate */
+    if (p->state[k] != S_HELD && !still(p, k)) continue;
+    for (i = 0; i < block_size(p->kind[k]) && nf < 512; ++i) {
       fk[nf] = k;
-      F[nf++] = p->start[k];
+      F[nf++] = p->start[k] + i;
     }
   }
-  if (nf == 0) return 1;
+  if (nf == 0) return 0;
   A = work;
   V = A + nf * nf;
   ev = V + nf * nf;
@@ -319,29 +357,44 @@ static int min_norm_face(problem *p, double *work) {
     for (i = 0; i < nf; ++i) s += V[i * nf + t] * l0[i];
     for (i = 0; i < nf; ++i) l0[i] -= s * V[i * nf + t];
   }
-  for (i = 0; i < nf; ++i) {
-    k = fk[i];
-    if (p->kind[k] == K_UNILATERAL && l0[i] < -TOL_ACCEPT * p->fscale) inside = 0;
-    if (p->kind[k] == K_BOX && fabs(l0[i]) > p->par[3 * k] * (1 + TOL_ACCEPT)) inside = 0;
-  }
+  if (nnull == 0) return 0;
+  for (i = 0; i < nf; i += block_size(p->kind[fk[i]]))
+    if (!in_set(p, fk[i], l0 + i, 1e-13, 1)) inside = 0;
   if (!inside) {
-    double tstar = 0.0;
+    double tstar = 0.0, lim[2];
+    int side;
     if (nnull != 1) return 2;
-    for (i = 0; i < nf; ++i) { /* lam_F + t v in the sets: an interval of t holding 0 */
-      double v = V[i * nf + tnull], l = p->lam[F[i]];
-      k = fk[i];
-      tstar -= v * l;
-      if (v == 0.0) continue;
-      if (p->kind[k] == K_UNILATERAL) {
-        if (v > 0) lo = fmax(lo, -l / v); else hi = fmin(hi, -l / v);
-      } else if (p->kind[k] == K_BOX) {
-        double u = p->par[3 * k], a = (-u - l) / v, b = (u - l) / v;
-        lo = fmax(lo, fmin(a, b));
-        hi = fmin(hi, fmax(a, b));
+    for (i = 0; i < nf; ++i) tstar -= V[i * nf + tnull] * p->lam[F[i]];
+    for (side = 0; side < 2; ++side) { /* the interval's ends: every block stays in its set */
+      double dir = side ? 1.0 : -1.0, lo = 0.0, hi = 1.0, l[2];
+      int it, ok = 1;
+      for (it = 0; it < 80 && ok; ++it) { /* grow until one block leaves */
+        for (i = 0; i < nf && ok; i += block_size(p->kind[fk[i]])) {
+          l[0] = p->lam[F[i]] + dir * hi * V[i * nf + tnull];
+          if (block_size(p->kind[fk[i]]) == 2)
+            l[1] = p->lam[F[i + 1]] + dir * hi * V[(i + 1) * nf + tnull];
+          if (!in_set(p, fk[i], l, 1e-12, 0)) ok = 0;
+        }
+        if (ok) { lo = hi; hi *= 2.0 * (1.0 + p->fscale); }
       }
+      if (ok) { lim[side] = INFINITY; continue; }
+      for (it = 0; it < 200 && hi - lo > 1e-15 * hi; ++it) {
+        double mid = 0.5 * (lo + hi);
+        int in = 1;
+        for (i = 0; i < nf && in; i += block_size(p->kind[fk[i]])) {
+          l[0] = p->lam[F[i]] + dir * mid * V[i * nf + tnull];
+          if (block_size(p->kind[fk[i]]) == 2)
+            l[1] = p->lam[F[i + 1]] + dir * mid * V[(i + 1) * nf + tnull];
+          if (!in_set(p, fk[i], l, 1e-12, 0)) in = 0;
+        }
+        if (in) lo = mid; else hi = mid;
+      }
+      lim[side] = lo;
     }
-    tstar = fmax(lo, fmin(hi, tstar));
+    tstar = fmax(-lim[0], fmin(lim[1], tstar));
     for (i = 0; i < nf; ++i) l0[i] = p->lam[F[i]] + tstar * V[i * nf + tnull];
+    for (i = 0; i < nf; i += block_size(p->kind[fk[i]])) /* rounding onto the sets */
+      in_set(p, fk[i], l0 + i, INFINITY, 1);
   }
   for (i = 0; i < nf; ++i) p->lam[F[i]] = l0[i];
   update_w(p);
@@ -436,8 +489,11 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
       }
     }
   }
-  if (ok && defect > 0) {
-    dep = min_norm_face(&p, rest);
+  if (ok) {
+    int degenerate = defect > 0;
+    for (k = 0; k < nb && !degenerate; ++k)
+      if (state[k] != S_HELD && still(&p, k)) degenerate = 1;
+    if (degenerate) dep = min_norm_face(&p, rest);
     kkt(&p, res, 0);
     /* a contact that the minimum-norm choice brought to zero force may open instead, which
      * frees the dependent forces further: tried one at a time, kept where the KKT conditions
@@ -453,7 +509,7 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
       d2 = polish(&p, rest, iw2);
       if (d2 >= 0 && !kkt(&p, res, 0) && res[0] <= TOL_ACCEPT && res[1] <= TOL_ACCEPT &&
           res[2] <= TOL_ACCEPT) {
-        if (d2 > 0) dep = min_norm_face(&p, rest);
+        dep = min_norm_face(&p, rest);
         defect = d2;
         kkt(&p, res, 0);
         if (d2 == 0) break;
@@ -468,7 +524,7 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
     }
   }
   info[INFO_STATUS] = ok ? ST_SOLVED : ST_NOT_CONVERGED;
-  info[INFO_DEPENDENT] = defect > 0 ? (double)dep : 0.0;
+  info[INFO_DEPENDENT] = (double)dep;
   info[INFO_PRIMAL] = res[0];
   info[INFO_DUAL] = res[1];
   info[INFO_COMPL] = res[2];
