@@ -163,3 +163,42 @@ def test_cli_forward_and_plot_take_a_scene(tmp_path):
     r = _cli("simulate", "--scene", str(p), "--q", "0,0,0,0,0,0", "--tau", "0,0,0",
              "--duration", "0.1")
     assert r.returncode == 2 and "--scene" in r.stderr and "Traceback" not in r.stderr
+
+
+def test_api_inputs_are_checked_by_name():
+    import snakecg
+
+    robot = Robot(joints=1)
+    disc = SceneObject(shape="disc", radius=0.03, mass=1.0,
+                       touching={"link": 1, "offset": 0.075, "side": "left"})
+    model = snakecg.load(GeneralScene(robot, objects=(disc,)))
+    with pytest.raises(InputError, match="f_obj"):
+        model.forward([0.0] * 4, [0.0], f_obj=[1.0, 2.0])
+    with pytest.raises(InputError, match="tau"):
+        model.forward([0.0] * 4, [0.0, 1.0])
+    with pytest.raises(InputError, match="at rest"):
+        model.forward([0.0] * 4, [0.0], v=[0.0, 0.0, 0.0, 1.0])
+    with pytest.raises(InputError, match=r"ground must be one Ground or a list of 2"):
+        GeneralScene(robot, ground=(Ground(),))
+    with pytest.raises(InputError, match="exactly one of pose"):
+        GeneralScene(robot, objects=(SceneObject(shape="disc", radius=0.1),))
+
+
+def test_snakecg_plot_draws_a_general_scene():
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import snakecg
+
+    robot = Robot(joints=2)
+    scene = GeneralScene(robot, radius=0.01, ground=Ground(model="coulomb", mu=0.3),
+                         objects=(SceneObject(shape="box", size=(0.1, 0.05), mass=2.0,
+                                              touching={"link": 2, "offset": 0.075,
+                                                        "side": "left"}),),
+                         obstacles=(Obstacle(shape="wall", point=(0.0, -0.3),
+                                             normal=(0.0, 1.0)),))
+    ax = snakecg.plot(scene, [0.0, 0.0, 0.0, 0.3, -0.3], [0.2, 0.1])
+    gids = {a.get_gid() for a in ax.get_children() if a.get_gid()}
+    assert {"link1", "object1", "obstacle1", "contact_normals", "force_contacts",
+            "acc_links"} <= gids
+    assert "2 contacts" in ax.get_title()

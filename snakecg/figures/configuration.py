@@ -95,12 +95,19 @@ def frame(ax, tips, margin: float) -> None:
 
 
 def plot(scene, q, tau=None, ax=None, *, title: str | None = None):
-    """Draw the configuration ``q`` of ``scene`` (a :class:`~snakecg.Scene` or its loaded
-    model) on ``ax`` (a new figure if None); with ``tau``, the constraint forces and the
+    """Draw the configuration ``q`` of ``scene`` (a :class:`~snakecg.Scene`, a
+    :class:`~snakecg.scenes.GeneralScene` or a loaded model of either) on ``ax`` (a new figure if None); with ``tau``, the constraint forces and the
     accelerations of the forward solve at rest. Returns the axes. See the module doc."""
     from ..model import SceneModel, load
     from ..robot import Scene
+    from ..scenes import GeneralScene
 
+    if isinstance(scene, GeneralScene) or isinstance(getattr(scene, "scene", None),
+                                                     GeneralScene):
+        from ..scenes.drawing import plot_scene  # objects, obstacles, every contact
+
+        return plot_scene(scene if not isinstance(scene, GeneralScene) else load(scene), q,
+                          tau, ax, title=title)
     if isinstance(scene, SceneModel):
         model = scene
     elif isinstance(scene, Scene):

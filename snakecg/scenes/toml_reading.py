@@ -94,7 +94,13 @@ def scene_from_data(data: dict, where: str = "scene file") -> GeneralScene:
                                 f"{sorted(keys)})")
             out.append(cls(**{k: _tuple(v) for k, v in t.items() if k in keys}))
     contacts = data.get("contacts", {})
-    tolerance = contacts.get("tolerance", 1e-8) if isinstance(contacts, dict) else 1e-8
+    if not isinstance(contacts, dict):
+        problems.append(f"[contacts] must be a table, got {contacts!r:.60}")
+        contacts = {}
+    elif set(contacts) - {"tolerance"}:
+        problems.append(f"unknown keys in [contacts]: {sorted(set(contacts) - {'tolerance'})} "
+                        f"(allowed: ['tolerance'])")
+    tolerance = contacts.get("tolerance", 1e-8)
     if robot is None or grounds is None or problems:
         # the rest checked too, so that one message names every problem
         if robot is not None:
