@@ -58,6 +58,9 @@ enum { INFO_STATUS = 0, INFO_DEPENDENT, INFO_PRIMAL, INFO_DUAL, INFO_COMPL, INFO
  * (snakecg.solver.PIVOT_TOL): nearly dependent rows are statically indeterminate to double
  * precision, their forces are taken minimum-norm rather than huge and cancelling */
 #define DEP_TOL 1e-10
+/* a direction of the face's forces that moves no acceleration: an eigenvalue of G_FF at
+ * rounding level (at most this times the largest) */
+#define NULL_TOL 1e-13
 
 
 static void update_w(problem *p) {
@@ -320,7 +323,7 @@ static int still(const problem *p, sc_int k) {
 
 /* Minimum-norm forces on the face (every block whose rows do not accelerate: the forces of
  * the others are fixed by the unique accelerations): lam_F -= N N^T lam_F, N the null space of G_FF
- * (eigenvalues at most DEP_TOL of the largest). Where that leaves a force's set and the null
+ * (eigenvalues at most NULL_TOL of the largest). Where that leaves a force's set and the null
  * space is one direction v, the minimum of |lam_F + t v| over the t that keep every held force
  * in its set (an interval holding 0, its ends found by bisection to rounding) is taken
  * instead. Returns 0 when the face's rows are independent (nothing to choose), 1 when the
@@ -350,7 +353,7 @@ static int min_norm_face(problem *p, double *work) {
   for (i = 0; i < nf; ++i) l0[i] = p->lam[F[i]];
   for (t = 0; t < nf; ++t) {
     double s;
-    if (!(fabs(ev[t]) <= DEP_TOL * big)) continue;
+    if (!(fabs(ev[t]) <= NULL_TOL * big)) continue;
     ++nnull;
     tnull = t;
     s = 0.0;
@@ -395,6 +398,16 @@ static int min_norm_face(problem *p, double *work) {
     for (i = 0; i < nf; ++i) l0[i] = p->lam[F[i]] + tstar * V[i * nf + tnull];
     for (i = 0; i < nf; i += block_size(p->kind[fk[i]])) /* rounding onto the sets */
       in_set(p, fk[i], l0 + i, INFINITY, 1);
+  }
+  { /* the forces may change only along A^T's null space: the accelerations stay put to
+       rounding, |A_F^T dlam|^2_{M^-1} = dlam^T G_FF dlam (else the choice is refused) */
+    double quad = 0.0;
+    for (i = 0; i < nf; ++i) {
+      double t2 = 0.0;
+      for (j = 0; j < nf; ++j) t2 += p->G[F[i] * m + F[j]] * (l0[j] - p->lam[F[j]]);
+      quad += (l0[i] - p->lam[F[i]]) * t2;
+    }
+    if (!(quad <= 1e-26 * p->wscale * p->fscale)) return 2;
   }
   for (i = 0; i < nf; ++i) p->lam[F[i]] = l0[i];
   update_w(p);
