@@ -43,7 +43,7 @@ def fresh_cache(tmp_path, monkeypatch):
     monkeypatch.setattr(artifacts, "_reported", set())
     monkeypatch.setattr(native, "_warned", set())
     # models loaded here (a CasADi fallback among them) must not serve later tests
-    monkeypatch.setattr(snakecg.model, "_BACKENDS", {})
+    monkeypatch.setattr(snakecg.robot_model, "_BACKENDS", {})
     return cache
 
 

@@ -496,7 +496,7 @@ def test_model_py_with_a_recomputed_hash_is_never_executed(fresh_cache, monkeypa
     def rehash(m):
         m["files"]["model.py"] = artifacts._sha_file(folder / "model.py")
     _edit_manifest(folder, rehash)
-    monkeypatch.setattr(snakecg.model, "_BACKENDS", {})
+    monkeypatch.setattr(snakecg.robot_model, "_BACKENDS", {})
     model = snakecg.load(snakecg.Robot(joints=1), backend="casadi")
     q = np.array([0.1, -0.2, 0.3, 0.7])
     M = model.mass_matrix(q)
@@ -510,7 +510,7 @@ def test_tampered_model_py_is_never_executed(fresh_cache, monkeypatch, tmp_path)
     folder = _cached_copy_of_package(1, monkeypatch)
     marker = tmp_path / "executed"
     (folder / "model.py").write_text(f"open({str(marker)!r}, 'w').write('ran')\n")
-    monkeypatch.setattr(snakecg.model, "_BACKENDS", {})
+    monkeypatch.setattr(snakecg.robot_model, "_BACKENDS", {})
     monkeypatch.setattr(artifacts, "_generate", lambda *a: (_ for _ in ()).throw(
         ArtifactError("regeneration disabled in this test")))
     with pytest.warns(RuntimeWarning, match=r"model\.py does not match"):
@@ -536,7 +536,7 @@ def test_manifest_signature_that_disagrees_with_the_code_is_rebuilt(backend, fre
         sig["outputs"][0]["rows"] -= 1
     _edit_manifest(folder, shrink)
     artifacts.verify_model_dir(folder, 1)  # the files still match their hashes
-    monkeypatch.setattr(snakecg.model, "_BACKENDS", {})
+    monkeypatch.setattr(snakecg.robot_model, "_BACKENDS", {})
     robot = snakecg.Robot(joints=1, mass=(2.0, 3.0))
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
@@ -552,7 +552,7 @@ def test_manifest_signature_that_disagrees_with_the_code_is_rebuilt(backend, fre
             json.loads((folder / "manifest.json").read_text())["functions"]}
     assert rows["mass_matrix"] == 4  # the folder was generated again
     # a second load in a fresh process state: the repaired folder, no new report
-    monkeypatch.setattr(snakecg.model, "_BACKENDS", {})
+    monkeypatch.setattr(snakecg.robot_model, "_BACKENDS", {})
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
         snakecg.load(robot, backend=backend)

@@ -174,6 +174,9 @@ def add_robot_args(p, *, scene: bool = True) -> None:
                    help="robot description file (TOML, see docs/explanation/model.md); the "
                    "options below override its [scene] table")
     if scene:
+        p.add_argument("--scene", metavar="FILE", type=text("a scene file"),
+                       help="general scene file (TOML: [robot], [ground], [[object]], "
+                       "[[obstacle]]; see docs/how-to/scenes.md): forward and plot take it")
         p.add_argument("--scenario", choices=SCENARIOS, type=lambda s: s.replace("-", "_"),
                        help="ground scenario (default frictionless)")
         p.add_argument("--kappa", type=float, help="object mass / mean link mass (default 100)")
@@ -212,7 +215,26 @@ def robot_from_args(args) -> Robot:
     return Robot(joints=joints)
 
 
+def general_scene_from_args(args):
+    """The general scene of ``--scene FILE`` (None without it); refused beside the options
+    of the paper's scene."""
+    path = getattr(args, "scene", None)
+    if not path:
+        return None
+    given = [f"--{k.replace('_', '-')}" for k in ("robot", "joints", "scenario", "kappa", "mu",
+                                                   "contact_link", "side")
+             if getattr(args, k, None) is not None]
+    if given:
+        raise InputError(f"--scene FILE describes the whole scene; drop {', '.join(given)}")
+    from ..scenes.toml_reading import read_scene
+
+    return read_scene(path)
+
+
 def scene_from_args(args) -> Scene:
+    if getattr(args, "scene", None):
+        raise InputError(f"--scene: {args.command if hasattr(args, 'command') else 'this'} "
+                         f"command does not take a general scene yet (forward and plot do)")
     overrides = {
         "scenario": args.scenario, "kappa": args.kappa, "mu": args.mu,
         "contact_link": args.contact_link, "side": args.side,

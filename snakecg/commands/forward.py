@@ -47,7 +47,13 @@ def register(sub) -> None:
 
 def run(args) -> int:
     from .. import load
+    from ._common import general_scene_from_args
 
+    general = general_scene_from_args(args)
+    if general is not None:  # a general scene (snakecg.scenes)
+        from ._scene import forward_command
+
+        return forward_command(args, general, SCHEMA)
     scene = scene_from_args(args)
     na = scene.robot.joints
     what = f" = (n_joints + 3,) for a {na}-joint robot"

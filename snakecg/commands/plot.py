@@ -8,8 +8,7 @@ import tempfile
 from pathlib import Path
 
 from ..errors import InputError
-from ._common import (add_robot_args, count, parse_vector, progress_reporter, scene_from_args,
-                      text)
+from ._common import add_robot_args, count, parse_vector, progress_reporter, scene_from_args, text
 
 FORMATS = ("png", "pdf", "svg")
 #: Version of the JSON printed by ``snakecg plot --json``.
@@ -59,6 +58,12 @@ def run(args) -> int:
         raise InputError(f"--out {args.out!r}: the folder {str(out.parent)!r} does not exist")
     q = parse_vector("--q", args.q)
     tau = parse_vector("--tau", args.tau) if args.tau else None
+    from ._common import general_scene_from_args
+
+    general = general_scene_from_args(args)
+    if general is not None:  # a general scene (snakecg.scenes)
+
+        return _plot_general(args, general, q, tau, out, fmt, SCHEMA)
     scene = scene_from_args(args)
     from matplotlib.figure import Figure
 
@@ -68,20 +73,47 @@ def run(args) -> int:
     model = load(scene, progress=progress_reporter())
     fig = Figure(figsize=(6.4, 5.2), constrained_layout=True)
     ax = plot(model, q, tau, ax=fig.add_subplot())
-    fd, tmp = tempfile.mkstemp(prefix=f".{out.name}.", suffix=f".{fmt}", dir=out.parent)
-    os.close(fd)
-    try:
-        fig.savefig(tmp, format=fmt, dpi=args.dpi)
-        os.chmod(tmp, 0o644)
-        os.replace(tmp, out)
-    except BaseException:
-        Path(tmp).unlink(missing_ok=True)
-        raise
+    save_figure(fig, out, fmt, args.dpi)
     if args.json:
         from ._common import print_json
 
         print_json({"schema": SCHEMA, "file": str(out), "format": fmt, "joints":
                     scene.robot.joints, "scenario": scene.scenario, "q": q, "tau": tau,
+                    "title": ax.get_title()})
+        return 0
+    print(f"wrote {out}")
+    return 0
+
+
+def save_figure(fig, out: Path, fmt: str, dpi: int) -> None:
+    """Write ``fig`` to ``out`` atomically (a temporary file beside it, then renamed)."""
+    fd, tmp = tempfile.mkstemp(prefix=f".{out.name}.", suffix=f".{fmt}", dir=out.parent)
+    os.close(fd)
+    try:
+        fig.savefig(tmp, format=fmt, dpi=dpi)
+        os.chmod(tmp, 0o644)
+        os.replace(tmp, out)
+    except BaseException:
+        Path(tmp).unlink(missing_ok=True)
+        raise
+
+
+def _plot_general(args, scene, q, tau, out: Path, fmt: str, schema: str) -> int:
+    from matplotlib.figure import Figure
+
+    from .. import load
+    from ..scenes.drawing import plot_scene
+    from ._common import print_json, progress_reporter
+    from ._scene import _vectors
+
+    _vectors(args, scene)
+    model = load(scene, progress=progress_reporter())
+    fig = Figure(figsize=(6.4, 5.2), constrained_layout=True)
+    ax = plot_scene(model, q, tau, ax=fig.add_subplot())
+    save_figure(fig, out, fmt, args.dpi)
+    if args.json:
+        print_json({"schema": schema, "file": str(out), "format": fmt, "joints":
+                    scene.robot.joints, "scene": str(args.scene), "q": q, "tau": tau,
                     "title": ax.get_title()})
         return 0
     print(f"wrote {out}")

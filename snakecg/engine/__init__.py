@@ -50,6 +50,8 @@ class Core:
                                                  "core_settle", "core_run"))
         """integrate.c's ``core_integrate_segment`` and ``core_mode_samples``, events.c's
         ``core_settle``, run.c's ``core_run``."""
+        self.scene_solve = lib.entry_or_none("core_scene_solve")
+        """scene_solve.c's ``core_scene_solve``: the exact solve of general scenes' samples."""
         self.contact_depth = lib.entry_or_none("core_contact_depth")
         """geometry.c's ``core_contact_depth``: the simulation's contact check at states."""
         self.sphere = SphereKernel(lib)

@@ -21,6 +21,8 @@
  *   optimal.c       the optimal-torque queries of a batch (exported: core_optimal)
  *   max_sr.c, push.c, wheel_states.c   the queries' solves
  *   pieces.c, sphere.c                 the exact extremes' pieces and faces (exported)
+ *   scene_sets.c, scene_solve.c        the exact solve of a general scene's sets (exported:
+ *                                      core_scene_solve)
  *
  * One prefix (sc_), one integer type (sc_int). The library exports the model's prefixed entry
  * points only (SNAKECG_EXPORT); the engine's own functions across its files are hidden
@@ -185,7 +187,6 @@ typedef struct {
   double gap, s;
 } sc_system;
 
-
 /* `contact_system` at (q, v, tau, q_obj, v_obj, f_obj, rho) with the scene's constants of
  * `scene` (SCENE_* offsets); q_obj == NULL places the object at the scene's contact from q
  * (the generated function's input `placed` = 1; rho is then ignored too). When v and v_obj
@@ -278,14 +279,6 @@ SC_INTERNAL void sc_geo_record(sc_geometry *g, double t, const double *y, double
  *                        stationarity with multipliers recomputed by least squares, dual signs,
  *                        complementarity, and for a convex problem the duality gap)
  *
- * Why the multiplier for the ellipsoid rather than an interior-point method: the linear rows are
- * handled by the same exact active-set solver as every QP here, infeasibility is decided
- * exactly (the least-N-norm point of the rows, one more QP), the answer comes with its active
- * set and multipliers, and on each piece of constant active set the solution is a rational
- * function of mu, so Newton's method converges quadratically to the root; an interior point
- * method stops near its barrier parameter's tolerance and needs an exact active-set solve
- * after it anyway.
- *
  * Matrices are row-major (element (i, j) of an m x n matrix at [i * n + j]). Nothing is
  * allocated but the workspace of sc_qp_work_alloc, which serves every problem up to its sizes.
  */
@@ -313,25 +306,9 @@ typedef struct {
 } sc_qp_solution;
 
 /* a problem's and a solution's fields at once */
-static inline void sc_qp_define(sc_qp *qp, sc_int n, sc_int m, const double *H, const double *g,
-                                const double *A, const double *lo, const double *hi) {
-  qp->n = n;
-  qp->m = m;
-  qp->H = H;
-  qp->g = g;
-  qp->A = A;
-  qp->lo = lo;
-  qp->hi = hi;
-}
-
-static inline void sc_qp_solution_define(sc_qp_solution *s, double *x, double *lam,
-                                         sc_int *active) {
-  s->x = x;
-  s->lam = lam;
-  s->active = active;
-  s->n_active = s->iterations = s->newton = 0;
-  s->mu = 0.0;
-}
+SC_INTERNAL void sc_qp_define(sc_qp *qp, sc_int n, sc_int m, const double *H, const double *g,
+                              const double *A, const double *lo, const double *hi);
+SC_INTERNAL void sc_qp_solution_define(sc_qp_solution *s, double *x, double *lam, sc_int *active);
 
 enum {
   SC_QP_OPTIMAL = 0,
@@ -591,5 +568,31 @@ int SNAKECG_EXPORT(core_settle)(sc_settle *st);
 /* geometry.c: the contact check at n states Y (n x NY, row-major) */
 int SNAKECG_EXPORT(core_contact_depth)(const sc_geometry *g, sc_int n, const double *Y,
                                       double *depth, double *pair);
+
+/* ---- the general-scene solve (scene_sets.c, scene_solve.c) ---- */
+/* block kinds of the force sets, a problem of one sample, the solve's states and
+ * (the solve's own states, fields and tolerances are scene_solve.c's) */
+enum { K_FREE = 0, K_UNILATERAL = 1, K_BOX = 2, K_DISC = 3, K_SPLIT = 4 };
+
+typedef struct {
+  sc_int n, m, nb;
+  const sc_int *kind, *start;
+  const double *par; /* nb x 3 */
+  double *G, *b, *lam, *w, *gamma;
+  sc_int *state;
+  double fscale, wscale;
+} sc_problem;
+
+SC_INTERNAL sc_int sc_block_size(sc_int kind);
+SC_INTERNAL void sc_block_P(const sc_problem *p, sc_int k, const double *l, double *P);
+enum { S_HELD = 0, S_ZERO = 1, S_SLIDE = 2 }; /* a block's state */
+#define TOL_ACCEPT 1e-9 /* a row's acceleration is zero within this of its scale */
+/* a direction of the face's forces that moves no acceleration: an eigenvalue of G_FF at
+ * rounding level (at most this times the largest) */
+#define NULL_TOL 1e-13
+SC_INTERNAL int sc_in_set(const sc_problem *p, sc_int k, double *l, double tol, int clip);
+SC_INTERNAL int sc_still(const sc_problem *p, sc_int k);
+SC_INTERNAL int sc_min_norm_face(sc_problem *p, double *work);
+SC_INTERNAL void sc_block_min(const sc_problem *p, sc_int k, const double *c, double *l);
 
 #endif

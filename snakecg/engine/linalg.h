@@ -290,4 +290,71 @@ static inline sc_int sc_qr_least_squares(sc_int m, sc_int n, double *A, sc_int l
   return rank;
 }
 
+/* min 1/2 x^T H x + g^T x over |x| <= 1 (H 2x2 symmetric positive semidefinite): the
+ * trust-region sc_problem in closed form on H's eigenvectors, its secular equation
+ * sum g_i^2 / (h_i + s)^2 = 1 solved by safeguarded Newton on 1/|x(s)| to rounding. */
+static inline void sc_trust_region_2d(const double *H, const double *g, double *x) {
+  double a = H[0], c = H[3], bb = 0.5 * (H[1] + H[2]);
+  double tr = 0.5 * (a + c), d = sqrt(0.25 * (a - c) * (a - c) + bb * bb);
+  double h[2] = {tr - d, tr + d}, v[2][2], gp[2], lo, hi, s, nx;
+  int it, i;
+  if (fabs(bb) > 1e-300) {
+    /* eigenvector of h0: (bb, h0 - a) or (h0 - c, bb) */
+    double e0 = bb, e1 = h[0] - a, nn;
+    if (fabs(h[0] - c) > fabs(h[0] - a)) {
+      e0 = h[0] - c;
+      e1 = bb;
+    }
+    nn = sqrt(e0 * e0 + e1 * e1);
+    v[0][0] = e0 / nn;
+    v[0][1] = e1 / nn;
+  } else if (a <= c) {
+    h[0] = a; h[1] = c;
+    v[0][0] = 1.0; v[0][1] = 0.0;
+  } else {
+    h[0] = c; h[1] = a;
+    v[0][0] = 0.0; v[0][1] = 1.0;
+  }
+  v[1][0] = -v[0][1];
+  v[1][1] = v[0][0];
+  for (i = 0; i < 2; ++i) gp[i] = v[i][0] * g[0] + v[i][1] * g[1];
+  if (h[0] < 0) h[0] = 0; /* rounding of a semidefinite H */
+  /* interior: x = -H^+ g (min-norm on a null direction) */
+  {
+    double y0 = 0.0, y1 = 0.0, tiny = 1e-14 * (h[1] > 0 ? h[1] : 1.0);
+    int interior = 1;
+    if (h[0] > tiny) y0 = -gp[0] / h[0];
+    else if (fabs(gp[0]) > 0) interior = 0;
+    if (h[1] > tiny) y1 = -gp[1] / h[1];
+    else if (fabs(gp[1]) > 0) interior = 0;
+    if (interior && y0 * y0 + y1 * y1 <= 1.0) {
+      x[0] = y0 * v[0][0] + y1 * v[1][0];
+      x[1] = y0 * v[0][1] + y1 * v[1][1];
+      return;
+    }
+  }
+  lo = 0.0;
+  hi = sqrt(gp[0] * gp[0] + gp[1] * gp[1]); /* |x(hi)| <= |g| / hi <= 1 */
+  s = lo;
+  for (it = 0; it < 200; ++it) {
+    double y0, y1, dn, phi, dphi;
+    if (!(s > lo && s < hi)) s = 0.5 * (lo + hi);
+    y0 = gp[0] / (h[0] + s);
+    y1 = gp[1] / (h[1] + s);
+    nx = sqrt(y0 * y0 + y1 * y1);
+    phi = 1.0 / nx - 1.0; /* increasing in s */
+    if (phi < 0) lo = s; else hi = s;
+    if (phi == 0.0 || hi - lo <= 4e-16 * hi) break;
+    dn = (y0 * y0 / (h[0] + s) + y1 * y1 / (h[1] + s)) / nx; /* -d|x|/ds */
+    dphi = dn / (nx * nx);
+    s = s - phi / dphi;
+  }
+  {
+    double y0 = -gp[0] / (h[0] + s), y1 = -gp[1] / (h[1] + s), nn = sqrt(y0 * y0 + y1 * y1);
+    if (nn > 0) { y0 /= nn; y1 /= nn; } /* on the circle exactly */
+    x[0] = y0 * v[0][0] + y1 * v[1][0];
+    x[1] = y0 * v[0][1] + y1 * v[1][1];
+  }
+}
+
 #endif

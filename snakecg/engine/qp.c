@@ -3,6 +3,14 @@
  *
  * This file is part of the runtime (not generated); it knows nothing of the model and is
  * compiled into every model's library beside the other core files.
+ *
+ * Why the multiplier for the ellipsoid rather than an interior-point method: the linear rows are
+ * handled by the same exact active-set solver as every QP here, infeasibility is decided
+ * exactly (the least-N-norm point of the rows, one more QP), the answer comes with its active
+ * set and multipliers, and on each piece of constant active set the solution is a rational
+ * function of mu, so Newton's method converges quadratically to the root; an interior point
+ * method stops near its barrier parameter's tolerance and needs an exact active-set solve
+ * after it anyway.
  */
 #include <math.h>
 #include <stdlib.h>
@@ -10,6 +18,27 @@
 
 #include "snakecg_layout.h"
 #include "engine.h"
+/* a problem's and a solution's fields at once */
+void sc_qp_define(sc_qp *qp, sc_int n, sc_int m, const double *H, const double *g,
+                  const double *A, const double *lo, const double *hi) {
+  qp->n = n;
+  qp->m = m;
+  qp->H = H;
+  qp->g = g;
+  qp->A = A;
+  qp->lo = lo;
+  qp->hi = hi;
+}
+
+void sc_qp_solution_define(sc_qp_solution *s, double *x, double *lam,
+                           sc_int *active) {
+  s->x = x;
+  s->lam = lam;
+  s->active = active;
+  s->n_active = s->iterations = s->newton = 0;
+  s->mu = 0.0;
+}
+
 /* ---------------------------------------------------------------------------------------
  * workspace */
 void sc_qp_work_init(sc_qp_work *w, sc_int n_max, sc_int m_max, double *d, sc_int *i) {

@@ -19,16 +19,14 @@ from __future__ import annotations
 import numpy as np
 
 from ..errors import InputError
+from .axes import COLORS, _scale, frame
 
 __all__ = ["plot", "configuration_geometry"]
 
-#: Colours of the drawing (matplotlib's tab palette).
 #: How far from the origin (in robot lengths) a drawing may lie: farther out the float spacing
 #: of the coordinates approaches the links' size (and matplotlib's ticks overflow near 1e308).
 MAX_REACH = 1e6
 
-COLORS = {"snake": "tab:blue", "contact_link": "tab:orange", "object": "0.82",
-          "normal": "tab:red", "wheel": "0.15", "force": "tab:purple", "acc": "tab:green"}
 
 
 def configuration_geometry(model, q, tau=None) -> dict:
@@ -75,18 +73,23 @@ def configuration_geometry(model, q, tau=None) -> dict:
     return out
 
 
-def _scale(vectors, target):
-    big = max((float(np.hypot(*v)) for v in vectors), default=0.0)
-    return (target / big, big) if big > 0 else (0.0, 0.0)
-
-
 def plot(scene, q, tau=None, ax=None, *, title: str | None = None):
-    """Draw the configuration ``q`` of ``scene`` (a :class:`~snakecg.Scene` or its loaded
-    model) on ``ax`` (a new figure if None); with ``tau``, the constraint forces and the
+    """Draw the configuration ``q`` of ``scene`` (a :class:`~snakecg.Scene`, a
+    :class:`~snakecg.scenes.GeneralScene` or a loaded model of either) on ``ax`` (a new figure if None); with ``tau``, the constraint forces and the
     accelerations of the forward solve at rest. Returns the axes. See the module doc."""
     from ..kinds import is_scene_model
     from ..robot import Scene
+    from ..scenes import GeneralScene
 
+    if isinstance(scene, GeneralScene) or isinstance(getattr(scene, "scene", None),
+                                                     GeneralScene):
+        from ..scenes.drawing import plot_scene  # objects, obstacles, every contact
+
+        if isinstance(scene, GeneralScene):
+            from ..model import load  # a scene given: the facade loads its model
+
+            scene = load(scene)
+        return plot_scene(scene, q, tau, ax, title=title)
     if is_scene_model(scene):
         model = scene
     elif isinstance(scene, Scene):
@@ -160,15 +163,7 @@ def plot(scene, q, tau=None, ax=None, *, title: str | None = None):
                    f"accelerations ({amax:.3g} m/s$^2$ = {L0:.3g} m)")
             arrows(g["q_obj"][:2], as_ * g["acc_object"], COLORS["acc"], "acc_object", None,
                    alpha=0.8)
-    pts = np.concatenate([np.asarray(t).reshape(-1, 2) for t in tips])
-    lo, hi = pts.min(axis=0), pts.max(axis=0)
-    pad = 0.08 * float(max(hi - lo)) + 1e-3
-    ax.set_xlim(lo[0] - pad, hi[0] + pad)
-    ax.set_ylim(lo[1] - pad, hi[1] + pad)
-    ax.set_aspect("equal", adjustable="box")
-    ax.set_xlabel("x [m]")
-    ax.set_ylabel("y [m]")
-    ax.grid(True, lw=0.3, alpha=0.5)
+    frame(ax, tips, 0.08)
     if title is None:
         title = (f"{model.n_joints} joints, {sc.scenario}, contact on link {sc.contact_link}"
                  f" ({sc.side})")

@@ -160,10 +160,8 @@ def _one(model, job, duration, options, keep):
 _WORKER: dict = {}
 
 
-def _worker_init(scene, duration, options, keep):
-    from .. import load
-
-    _WORKER["model"] = load(scene, progress=False)
+def _worker_init(model_type, scene, backend, duration, options, keep):
+    _WORKER["model"] = model_type(scene, backend=backend, progress=False)
     _WORKER["args"] = (duration, options, keep)
 
 
@@ -192,7 +190,8 @@ def _run_all(model, jobs, duration, options, processes, progress, keep):
 
             ctx = mp.get_context("spawn")
             with ProcessPoolExecutor(processes, mp_context=ctx, initializer=_worker_init,
-                                     initargs=(model.scene, duration, options, keep)) as pool:
+                                     initargs=(type(model), model.scene, model.backend_kind,
+                                               duration, options, keep)) as pool:
                 chunk = max(1, math.ceil(len(rest) / (4 * processes)))
                 for record in pool.map(_worker_run, rest, chunksize=chunk):
                     out.append(record)

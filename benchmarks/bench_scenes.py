@@ -1,0 +1,134 @@
+"""Benchmark of the general scenes' forward solve, side by side with MuJoCo in one run.
+
+* **scene**: an ``--joints`` (default 10) joint snake, 2 objects (a box and a disc touching
+  links), 4 pegs touching links, Coulomb ground on every link (mu 0.3) and under the objects:
+  ``model.forward(q, tau)`` on one sample from Python (best of ``--repeat`` rounds of
+  ``--single`` calls) and batched (``--n`` samples, time per sample);
+* **mj_forward**: MuJoCo's forward dynamics on the matched scene (capsule links on a planar
+  base lying on a floor plane with gravity, box and cylinder objects on planar joints,
+  cylinder pegs fixed to the world, actuated joints), bare ``mj_forward`` and with qpos/ctrl
+  set and qacc copied;
+* **paper**: the paper's scene (3 joints, wheels, kappa 100) through the general path and
+  through today's path, single and batched.
+
+    python benchmarks/bench_scenes.py [--joints 10] [--n 2000] [--single 300] [--repeat 3]
+
+Prints a table and the machine's load average before and after.
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import platform
+
+import numpy as np
+from bench_core import best_of  # benchmarks/bench_core.py
+
+import snakecg
+from snakecg.scenes import GeneralScene, Ground, Obstacle, SceneObject
+
+
+def scene_of(joints: int, q):
+    robot = snakecg.Robot(joints=joints)
+    objects = (SceneObject(shape="box", size=(0.1, 0.08), mass=2.0, mu=0.2,
+                           touching={"link": 1, "offset": 0.075, "side": "left"}),
+               SceneObject(shape="disc", radius=0.04, mass=1.0, mu=0.2,
+                           touching={"link": joints + 1, "offset": 0.075, "side": "right"}))
+    base = GeneralScene(robot, ground=Ground(model="coulomb", mu=0.3), objects=objects)
+    P = snakecg.load(robot).link_poses(q)
+    pegs = []
+    for k in range(4):  # pegs touching links 2.. on alternating sides
+        link = 2 + (k * (joints - 1)) // 4
+        x, y, phi = P[link - 1]
+        side = 1.0 if k % 2 else -1.0
+        n = np.array([-np.sin(phi), np.cos(phi)]) * side
+        c = np.array([x, y]) + 0.03 * n
+        pegs.append(Obstacle(shape="peg", center=(float(c[0]), float(c[1])), radius=0.03))
+    return GeneralScene(robot, ground=base.ground, objects=objects, obstacles=tuple(pegs))
+
+
+def mjcf(scene, P, obj_poses) -> str:
+    """The matched MuJoCo scene (links from their COM poses at q, in world coordinates)."""
+    r = scene.robot
+    links, close = [], []
+    for i in range(r.n_links):
+        L = r.length[i]
+        joint = ('<joint type="slide" axis="1 0 0"/><joint type="slide" axis="0 1 0"/>'
+                 '<joint type="hinge" axis="0 0 1"/>' if i == 0 else
+                 '<joint type="hinge" axis="0 0 1" pos="-0.075 0 0"/>')
+        pos = f"{P[0][0]} {P[0][1]} 0.01" if i == 0 else f"{L} 0 0"
+        links.append(f'<body pos="{pos}">{joint}<geom type="capsule" size="0.01" '
+                     f'fromto="{-L / 2} 0 0 {L / 2} 0 0" mass="{r.mass[i]}"/>')
+        close.append("</body>")
+    objs = []
+    for j, o in enumerate(scene.objects):
+        x, y, th = obj_poses[j]
+        geom = (f'<geom type="box" size="{o.size[0] / 2} {o.size[1] / 2} 0.01" mass="{o.mass}"/>'
+                if o.shape == "box" else
+                f'<geom type="cylinder" size="{o.radius} 0.01" mass="{o.mass}"/>')
+        objs.append(f'<body pos="{x} {y} 0.01" euler="0 0 {th}"><joint type="slide" '
+                    f'axis="1 0 0"/><joint type="slide" axis="0 1 0"/><joint type="hinge" '
+                    f'axis="0 0 1"/>{geom}</body>')
+    pegs = "".join(f'<geom type="cylinder" pos="{o.center[0]} {o.center[1]} 0.02" '
+                   f'size="{o.radius} 0.02"/>' for o in scene.obstacles)
+    motors = "".join(f'<motor joint="{name}"/>' for name in [])
+    return (f'<mujoco><option timestep="0.001" noslip_iterations="5"/>'
+            f'<default><geom friction="0.3 0.005 0.0001" solref="0.002 1"/></default>'
+            f'<worldbody><geom type="plane" size="5 5 0.1"/>{pegs}{"".join(links)}'
+            f'{"".join(close)}{"".join(objs)}</worldbody>{motors}</mujoco>')
+
+
+def main() -> None:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--joints", type=int, default=10)
+    ap.add_argument("--n", type=int, default=2000)
+    ap.add_argument("--single", type=int, default=300)
+    ap.add_argument("--repeat", type=int, default=3)
+    a = ap.parse_args()
+    rng = np.random.default_rng(0)
+    print(f"machine: {platform.processor() or platform.machine()}, load {os.getloadavg()}")
+    na = a.joints
+    q = np.r_[0.0, 0.0, 0.0, 0.25 * np.sin(np.arange(na))]
+    scene = scene_of(na, q)
+    model = snakecg.load(scene)
+    tau = rng.normal(0, 0.1, na)
+    res = model.forward(q, tau)
+    print(f"scene: {na} joints, {len(res.contacts)} contacts, status {res.status}, "
+          f"sweeps {res._raw['info']['sweeps'][0]:.0f}")
+    t1 = best_of(lambda: [model.forward(q, tau) for _ in range(a.single)], a.repeat) / a.single
+    Q = np.repeat(q[None], a.n, axis=0)
+    T = rng.normal(0, 0.1, (a.n, na))
+    tb = best_of(lambda: model.forward(Q, T), a.repeat) / a.n
+    print(f"  snakecg forward, single:  {t1 * 1e6:10.1f} us")
+    print(f"  snakecg forward, batched: {tb * 1e6:10.1f} us per sample")
+    try:
+        import mujoco
+
+        from snakecg.scenes.contacts import place_objects
+
+        m = mujoco.MjModel.from_xml_string(mjcf(scene, model.link_poses(q),
+                                                place_objects(scene, model.link_poses(q))))
+        d = mujoco.MjData(m)
+        mujoco.mj_forward(m, d)
+        tm = best_of(lambda: [mujoco.mj_forward(m, d) for _ in range(a.single)],
+                     a.repeat) / a.single
+        print(f"  mj_forward (bare, {d.ncon} contacts, MuJoCo {mujoco.__version__}): "
+              f"{tm * 1e6:8.1f} us")
+    except ImportError:
+        print("  mujoco not installed")
+    paper = snakecg.Scene(snakecg.Robot(joints=3), scenario="wheels", kappa=100)
+    old, new = snakecg.load(paper), snakecg.load(GeneralScene.from_scene(paper))
+    Q = np.c_[np.zeros((a.n, 3)), rng.uniform(-1.0, 1.0, (a.n, 3))]
+    T = rng.normal(0, 0.05, (a.n, 3))
+    q0, t0 = Q[0].copy(), T[0].copy()
+    for name, mdl in (("today's path", old), ("general path", new)):
+        s = best_of(lambda: [mdl.forward(q0, t0) for _ in range(a.single)], a.repeat) / a.single
+        b = best_of(lambda: mdl.forward(Q, T), a.repeat) / a.n
+        print(f"  paper scene, {name:13s}: single {s * 1e6:9.1f} us, batched "
+              f"{b * 1e6:9.2f} us per sample")
+    print(f"load after: {os.getloadavg()}")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,218 @@
+/* snakecg's engine: the friction and contact sets of the general-scene solve
+ * (scene_solve.c) and the exact minimiser of a quadratic over each of them.
+ *
+ * A block k of the dual, min 1/2 lam^T G lam + b^T lam over lam in K_1 x ... x K_nb, is one
+ * row (FREE: R; UNILATERAL: lam >= 0; BOX: |lam| <= p0) or two (DISC: |lam| <= p0; SPLIT: the
+ * split ellipse with semi-axes p0 for lam_t <= 0, p1 for lam_t >= 0, p2 across). On a 2-D
+ * set's boundary, lam^T P lam = 1 with P diagonal (block_P). block_min minimises
+ * 1/2 l^T G_kk l + c^T l over K_k exactly: a clamp, or a 2-D trust-region problem in closed
+ * form on the eigenvectors (its secular equation solved to rounding); the split ellipse as
+ * the backward half, the forward half, or the segment lam_t = 0 (the minimiser over the
+ * convex set lies in the half whose own full-ellipse minimiser falls inside it, else on the
+ * dividing segment). Used by scene_solve.c.
+ */
+#include <math.h>
+
+#include "snakecg_layout.h"
+#include "engine.h"
+
+
+
+
+SC_INTERNAL sc_int sc_block_size(sc_int kind) { return kind >= K_DISC ? 2 : 1; }
+
+/* P of a 2-D block at lam (diag, 2 entries): the set is lam^T P lam <= 1 */
+SC_INTERNAL void sc_block_P(const sc_problem *p, sc_int k, const double *l, double *P) {
+  const double *q = p->par + 3 * k;
+  if (p->kind[k] == K_DISC) {
+    P[0] = P[1] = 1.0 / (q[0] * q[0]);
+  } else {
+    double st = l[0] < 0 ? q[0] : q[1];
+    P[0] = 1.0 / (st * st);
+    P[1] = 1.0 / (q[2] * q[2]);
+  }
+}
+
+/* The exact minimiser over block k's set of 1/2 l^T H l + c^T l (H = G_kk). */
+SC_INTERNAL void sc_block_min(const sc_problem *p, sc_int k, const double *c, double *l) {
+  const sc_int r = p->start[k], m = p->m;
+  const double *q = p->par + 3 * k, *G = p->G;
+  if (p->kind[k] < K_DISC) {
+    double h = G[r * m + r], x = h > 0 ? -c[0] / h : 0.0;
+    if (p->kind[k] == K_UNILATERAL && x < 0) x = 0;
+    if (p->kind[k] == K_BOX) x = x > q[0] ? q[0] : (x < -q[0] ? -q[0] : x);
+    if (!(h > 0)) x = p->kind[k] == K_UNILATERAL ? 0.0 : 0.0;
+    l[0] = x;
+    return;
+  }
+  {
+    double H[4] = {G[r * m + r], G[r * m + r + 1], G[(r + 1) * m + r], G[(r + 1) * m + r + 1]};
+    if (p->kind[k] == K_DISC) {
+      double Hs[4], gs[2], x[2], s = q[0];
+      if (!(s > 0)) { l[0] = l[1] = 0.0; return; }
+      for (int i = 0; i < 4; ++i) Hs[i] = H[i] * s * s;
+      gs[0] = c[0] * s;
+      gs[1] = c[1] * s;
+      sc_trust_region_2d(Hs, gs, x);
+      l[0] = s * x[0];
+      l[1] = s * x[1];
+    } else { /* split ellipse: the backward half, the forward half, or the segment t = 0 */
+      int half;
+      if (!(q[2] > 0) || !(q[0] > 0 || q[1] > 0)) {
+        l[0] = 0.0;
+        l[1] = q[2] > 0 ? fmax(-q[2], fmin(q[2], H[3] > 0 ? -c[1] / H[3] : 0.0)) : 0.0;
+        if (!(q[0] > 0 || q[1] > 0)) return;
+      }
+      for (half = 0; half < 2; ++half) {
+        double st = q[half], Hs[4], gs[2], x[2];
+        if (!(st > 0)) continue;
+        Hs[0] = H[0] * st * st; Hs[1] = H[1] * st * q[2];
+        Hs[2] = H[2] * st * q[2]; Hs[3] = H[3] * q[2] * q[2];
+        gs[0] = c[0] * st;
+        gs[1] = c[1] * q[2];
+        sc_trust_region_2d(Hs, gs, x);
+        if ((half == 0 && x[0] <= 0) || (half == 1 && x[0] >= 0)) {
+          l[0] = st * x[0];
+          l[1] = q[2] * x[1];
+          return;
+        }
+      }
+      l[0] = 0.0;
+      l[1] = H[3] > 0 ? -c[1] / H[3] : 0.0;
+      l[1] = fmax(-q[2], fmin(q[2], l[1]));
+    }
+  }
+}
+
+/* 1 if the forces l of block k lie in its set, to the relative tolerance tol; with clip,
+ * forces outside by at most that are first moved onto the set. */
+SC_INTERNAL int sc_in_set(const sc_problem *p, sc_int k, double *l, double tol, int clip) {
+  const double *q = p->par + 3 * k;
+  double P[2], phi;
+  switch (p->kind[k]) {
+    case K_FREE: return 1;
+    case K_UNILATERAL:
+      if (!(l[0] >= -tol * p->fscale)) return 0;
+      if (clip && l[0] < 0) l[0] = 0.0;
+      return 1;
+    case K_BOX:
+      if (!(fabs(l[0]) <= q[0] * (1 + tol))) return 0;
+      if (clip) l[0] = fmax(-q[0], fmin(q[0], l[0]));
+      return 1;
+    default:
+      if (!(p->kind[k] == K_DISC ? q[0] > 0 : q[2] > 0 && (q[0] > 0 || q[1] > 0)))
+        return l[0] == 0.0 && l[1] == 0.0;
+      sc_block_P(p, k, l, P);
+      phi = sqrt(P[0] * l[0] * l[0] + P[1] * l[1] * l[1]);
+      if (!(phi <= 1 + tol)) return 0;
+      if (clip && phi > 1) {
+        l[0] /= phi;
+        l[1] /= phi;
+      }
+      return 1;
+  }
+}
+
+/* 1 if block k's rows do not accelerate (|w| within the acceptance tolerance). */
+SC_INTERNAL int sc_still(const sc_problem *p, sc_int k) {
+  sc_int i;
+  for (i = 0; i < sc_block_size(p->kind[k]); ++i)
+    if (fabs(p->w[p->start[k] + i]) > TOL_ACCEPT * p->wscale) return 0;
+  return 1;
+}
+
+/* Minimum-norm forces on the face (every block whose rows do not accelerate: the forces of
+ * the others are fixed by the unique accelerations): lam_F -= N N^T lam_F, N the null space of G_FF
+ * (eigenvalues at most NULL_TOL of the largest). Where that leaves a force's set and the null
+ * space is one direction v, the minimum of |lam_F + t v| over the t that keep every held force
+ * in its set (an interval holding 0, its ends found by bisection to rounding) is taken
+ * instead. Returns 0 when the face's rows are independent (nothing to choose), 1 when the
+ * minimum-norm forces were found, 2 when not (a larger null space whose unconstrained minimum
+ * leaves the set: the face's basic solution stays). */
+SC_INTERNAL int sc_min_norm_face(sc_problem *p, double *work) {
+  const sc_int m = p->m;
+  sc_int F[512], fk[512], nf = 0, i, j, k, t, nnull = 0, tnull = -1;
+  double *A, *V, *ev, *l0, big;
+  int inside = 1;
+  for (k = 0; k < p->nb; ++k) { /* the face: every block whose rows do not accelerate */
+    if (p->state[k] != S_HELD && !sc_still(p, k)) continue;
+    for (i = 0; i < sc_block_size(p->kind[k]) && nf < 512; ++i) {
+      fk[nf] = k;
+      F[nf++] = p->start[k] + i;
+    }
+  }
+  if (nf == 0) return 0;
+  A = work;
+  V = A + nf * nf;
+  ev = V + nf * nf;
+  l0 = ev + nf;
+  for (i = 0; i < nf; ++i)
+    for (j = 0; j < nf; ++j) A[i * nf + j] = p->G[F[i] * m + F[j]];
+  sc_eigen_symmetric(nf, A, nf, ev, V, nf);
+  big = fabs(ev[nf - 1]);
+  for (i = 0; i < nf; ++i) l0[i] = p->lam[F[i]];
+  for (t = 0; t < nf; ++t) {
+    double s;
+    if (!(fabs(ev[t]) <= NULL_TOL * big)) continue;
+    ++nnull;
+    tnull = t;
+    s = 0.0;
+    for (i = 0; i < nf; ++i) s += V[i * nf + t] * l0[i];
+    for (i = 0; i < nf; ++i) l0[i] -= s * V[i * nf + t];
+  }
+  if (nnull == 0) return 0;
+  for (i = 0; i < nf; i += sc_block_size(p->kind[fk[i]]))
+    if (!sc_in_set(p, fk[i], l0 + i, 1e-13, 1)) inside = 0;
+  if (!inside) {
+    double tstar = 0.0, lim[2];
+    int side;
+    if (nnull != 1) return 2;
+    for (i = 0; i < nf; ++i) tstar -= V[i * nf + tnull] * p->lam[F[i]];
+    for (side = 0; side < 2; ++side) { /* the interval's ends: every block stays in its set */
+      double dir = side ? 1.0 : -1.0, lo = 0.0, hi = 1.0, l[2];
+      int it, ok = 1;
+      for (it = 0; it < 80 && ok; ++it) { /* grow until one block leaves */
+        for (i = 0; i < nf && ok; i += sc_block_size(p->kind[fk[i]])) {
+          l[0] = p->lam[F[i]] + dir * hi * V[i * nf + tnull];
+          if (sc_block_size(p->kind[fk[i]]) == 2)
+            l[1] = p->lam[F[i + 1]] + dir * hi * V[(i + 1) * nf + tnull];
+          if (!sc_in_set(p, fk[i], l, 1e-12, 0)) ok = 0;
+        }
+        if (ok) { lo = hi; hi *= 2.0 * (1.0 + p->fscale); }
+      }
+      if (ok) { lim[side] = INFINITY; continue; }
+      for (it = 0; it < 200 && hi - lo > 1e-15 * hi; ++it) {
+        double mid = 0.5 * (lo + hi);
+        int in = 1;
+        for (i = 0; i < nf && in; i += sc_block_size(p->kind[fk[i]])) {
+          l[0] = p->lam[F[i]] + dir * mid * V[i * nf + tnull];
+          if (sc_block_size(p->kind[fk[i]]) == 2)
+            l[1] = p->lam[F[i + 1]] + dir * mid * V[(i + 1) * nf + tnull];
+          if (!sc_in_set(p, fk[i], l, 1e-12, 0)) in = 0;
+        }
+        if (in) lo = mid; else hi = mid;
+      }
+      lim[side] = lo;
+    }
+    tstar = fmax(-lim[0], fmin(lim[1], tstar));
+    for (i = 0; i < nf; ++i) l0[i] = p->lam[F[i]] + tstar * V[i * nf + tnull];
+    for (i = 0; i < nf; i += sc_block_size(p->kind[fk[i]])) /* rounding onto the sets */
+      sc_in_set(p, fk[i], l0 + i, INFINITY, 1);
+  }
+  { /* the forces may change only along A^T's null space: the accelerations stay put to
+       rounding, |A_F^T dlam|^2_{M^-1} = dlam^T G_FF dlam (else the choice is refused) */
+    double quad = 0.0;
+    for (i = 0; i < nf; ++i) {
+      double t2 = 0.0;
+      for (j = 0; j < nf; ++j) t2 += p->G[F[i] * m + F[j]] * (l0[j] - p->lam[F[j]]);
+      quad += (l0[i] - p->lam[F[i]]) * t2;
+    }
+    if (!(quad <= 1e-26 * p->wscale * p->fscale)) return 2;
+  }
+  for (i = 0; i < nf; ++i) p->lam[F[i]] = l0[i];
+  { /* w = G lam + b at the new forces */
+    sc_int r;
+    for (r = 0; r < p->m; ++r) p->w[r] = p->b[r] + sc_dot(p->G + r * p->m, p->lam, p->m);
+  }
+  return 1;
+}

@@ -1,0 +1,468 @@
+/* snakecg's engine: the exact solve of a general scene at one sample (and a batch).
+ *
+ * This file is part of the runtime (not generated) and knows no robot: it takes, per sample,
+ * the inertia I of every body (snake coordinates and 3 per object: eq. 12), the applied
+ * generalized force f (B tau + external wrenches, eq. 12), the constraint rows A (eqs. 8-10:
+ * contact normals, wheel lateral rows, ground friction rows) and their blocks' sets:
+ *
+ *   FREE        one row, lam free (an ideal wheel: bilateral, unbounded)
+ *   UNILATERAL  one row, lam >= 0 (a contact: the paper's assumption 2, frictionless)
+ *   BOX         one row, |lam| <= p0 (a wheel's lateral force bounded by mu m g)
+ *   DISC        two rows, |lam| <= p0 (isotropic Coulomb at a COM, radius mu m g)
+ *   SPLIT       two rows (along, across the link): a split ellipse, semi-axis p0 backward
+ *               (lam_t <= 0, resisting forward sliding), p1 forward (lam_t >= 0, resisting
+ *               backward sliding), p2 across (anisotropic Coulomb)
+ *
+ * Gauss's principle with the sets' support functions has the dual
+ *     min_lam 1/2 lam^T G lam + b^T lam  over lam in K = K_1 x ... x K_nb,
+ * G = A I^-1 A^T (eq. 14), b = A I^-1 f (eq. 16 at rest): the accelerations
+ * a = I^-1 (f + A^T lam) (eq. 18) are unique; the forces are unique when G is regular. The
+ * solve:
+ *   1. block Gauss-Seidel, each block minimised exactly (a clamp, or a 2-D trust-region
+ *      sc_problem whose secular equation is solved to rounding), to a relative 1e-10;
+ *   2. the pieces read from that point (held/stick, zero, sliding) and the piece's equations
+ *      (w_F = 0 on held rows, lam fixed on zero rows and saturated boxes, w_B + gamma P_B
+ *      lam_B = 0 and lam_B^T P_B lam_B = 1 on sliding 2-D blocks) solved by Newton with a
+ *      pivoted QR step, to rounding;
+ *   3. the KKT conditions checked on the result; a violated piece is switched (a
+ *      primal-dual active-set step) and step 2 repeated; after that more sweeps and again.
+ * The certificate (KKT residuals, relative to the sample's force and acceleration scales) is
+ * returned with every sample. Where the held rows' equations are dependent (statically
+ * indeterminate), the flag is set and the held forces are the minimum-norm ones on the face
+ * (the null space of G_FF taken out); if that leaves the set, the face's basic solution stays
+ * and the flag says so (2).
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "snakecg_layout.h"
+#include "engine.h"
+
+/* sample status */
+enum { ST_SOLVED = 0, ST_NOT_CONVERGED = 1, ST_SINGULAR_MASS = 2, ST_BAD_INPUT = 3 };
+/* info fields */
+enum { INFO_STATUS = 0, INFO_DEPENDENT, INFO_PRIMAL, INFO_DUAL, INFO_COMPL, INFO_SWEEPS,
+       INFO_PASSES, INFO_RANK_DEFECT, INFO_WIDTH };
+
+/* held rows dependent where a pivot of their equations falls below this ratio to the first
+ * (snakecg.solver.PIVOT_TOL): nearly dependent rows are statically indeterminate to double
+ * precision, their forces are taken minimum-norm rather than huge and cancelling */
+#define DEP_TOL 1e-10
+
+
+
+static void update_w(sc_problem *p) {
+  sc_int i;
+  for (i = 0; i < p->m; ++i) p->w[i] = p->b[i] + sc_dot(p->G + i * p->m, p->lam, p->m);
+}
+
+/* Gauss-Seidel sweeps until the largest change is below rel * scale; returns the sweeps. */
+static sc_int sweeps(sc_problem *p, sc_int max_sweeps, double rel) {
+  sc_int s, k, i;
+  for (s = 0; s < max_sweeps; ++s) {
+    double change = 0.0, size = 0.0;
+    for (k = 0; k < p->nb; ++k) {
+      sc_int r = p->start[k], nk = sc_block_size(p->kind[k]);
+      double c[2], l[2];
+      for (i = 0; i < nk; ++i) {
+        sc_int j;
+        double t = p->b[r + i];
+        for (j = 0; j < p->m; ++j)
+          if (j < r || j >= r + nk) t += p->G[(r + i) * p->m + j] * p->lam[j];
+        c[i] = t;
+      }
+      sc_block_min(p, k, c, l);
+      for (i = 0; i < nk; ++i) {
+        double d = fabs(l[i] - p->lam[r + i]);
+        if (d > change) change = d;
+        if (fabs(l[i]) > size) size = fabs(l[i]);
+        p->lam[r + i] = l[i];
+      }
+    }
+    if (!(change > rel * (size > p->fscale ? size : p->fscale))) return s + 1;
+  }
+  return max_sweeps;
+}
+
+/* Pieces read from the current lam (rel: relative tolerance on the set's boundary). */
+static void read_states(sc_problem *p, double rel) {
+  sc_int k;
+  for (k = 0; k < p->nb; ++k) {
+    sc_int r = p->start[k];
+    const double *q = p->par + 3 * k, *l = p->lam + r;
+    switch (p->kind[k]) {
+      case K_FREE: p->state[k] = S_HELD; break;
+      case K_UNILATERAL:
+        p->state[k] = l[0] > rel * p->fscale ? S_HELD : (p->w[r] > 0 ? S_ZERO : S_HELD);
+        break;
+      case K_BOX:
+        p->state[k] = !(q[0] > 0) ? S_ZERO : (fabs(l[0]) < q[0] * (1 - rel) ? S_HELD : S_SLIDE);
+        break;
+      default: {
+        double P[2], phi;
+        if (!(p->kind[k] == K_DISC ? q[0] > 0 : q[2] > 0 && (q[0] > 0 || q[1] > 0))) {
+          p->state[k] = S_ZERO;
+          break;
+        }
+        sc_block_P(p, k, l, P);
+        phi = P[0] * l[0] * l[0] + P[1] * l[1] * l[1];
+        p->state[k] = phi < (1 - rel) * (1 - rel) ? S_HELD : S_SLIDE;
+        if (p->state[k] == S_SLIDE) {
+          double g = -(p->w[r] * P[0] * l[0] + p->w[r + 1] * P[1] * l[1]) /
+                     (P[0] * P[0] * l[0] * l[0] + P[1] * P[1] * l[1] * l[1]);
+          p->gamma[k] = g > 0 ? g : 0.0;
+        }
+      }
+    }
+  }
+}
+
+/* Newton on the piece's equations (unknowns: lam of held rows, lam and gamma of sliding 2-D
+ * blocks; fixed: zero rows and saturated boxes). Returns the rank defect of the last step's
+ * matrix (0: independent), or -1 when the iteration did not converge. Scratch in `work`. */
+static sc_int polish(sc_problem *p, double *work, sc_int *iwork) {
+  const sc_int m = p->m;
+  sc_int *col = iwork, *perm = iwork + m + p->nb, nu = 0, neq, k, i, j, it, defect = 0;
+  double *J, *F, *dx, *qw;
+  /* unknown index of each row (-1 fixed) and of each sliding block's gamma */
+  sc_int *urow = iwork + 2 * (m + p->nb), *ugam = urow + m;
+  for (k = 0; k < p->nb; ++k) {
+    sc_int r = p->start[k], nk = sc_block_size(p->kind[k]);
+    ugam[k] = -1;
+    for (i = 0; i < nk; ++i) urow[r + i] = -1;
+    if (p->state[k] == S_ZERO) {
+      for (i = 0; i < nk; ++i) p->lam[r + i] = 0.0;
+    } else if (p->state[k] == S_SLIDE && p->kind[k] == K_BOX) {
+      p->lam[r] = p->lam[r] >= 0 ? p->par[3 * k] : -p->par[3 * k];
+    } else {
+      for (i = 0; i < nk; ++i) { urow[r + i] = nu; col[nu++] = r + i; }
+      if (p->state[k] == S_SLIDE) { ugam[k] = nu; col[nu++] = -1 - k; }
+    }
+  }
+  (void)col;
+  if (nu == 0) { update_w(p); return 0; }
+  neq = nu;
+  J = work;
+  F = J + neq * nu;
+  dx = F + neq;
+  qw = dx + nu;
+  for (it = 0; it < 40; ++it) {
+    double fn = 0.0;
+    update_w(p);
+    memset(J, 0, sizeof(double) * (size_t)(neq * nu));
+    for (k = 0; k < p->nb; ++k) {
+      sc_int r = p->start[k], nk = sc_block_size(p->kind[k]);
+      if (urow[r] < 0) continue;
+      for (i = 0; i < nk; ++i) {
+        sc_int e = urow[r + i];
+        F[e] = p->w[r + i];
+        for (j = 0; j < m; ++j)
+          if (urow[j] >= 0) J[e * nu + urow[j]] = p->G[(r + i) * m + j];
+      }
+      if (ugam[k] >= 0) {
+        double P[2], *l = p->lam + r, gmm = p->gamma[k];
+        sc_int e = ugam[k];
+        sc_block_P(p, k, l, P);
+        for (i = 0; i < 2; ++i) {
+          F[urow[r + i]] += gmm * P[i] * l[i];
+          J[urow[r + i] * nu + urow[r + i]] += gmm * P[i];
+          J[urow[r + i] * nu + e] = P[i] * l[i];
+          J[e * nu + urow[r + i]] = P[i] * l[i];
+        }
+        F[e] = 0.5 * (P[0] * l[0] * l[0] + P[1] * l[1] * l[1] - 1.0);
+      }
+    }
+    for (i = 0; i < neq; ++i) {
+      double s = fabs(F[i]);
+      if (s > fn) fn = s;
+      F[i] = -F[i];
+    }
+    {
+      sc_int rank = sc_qr_least_squares(neq, nu, J, nu, F, DEP_TOL, dx, qw, perm);
+      defect = nu - rank;
+    }
+    {
+      double step = 0.0;
+      for (k = 0; k < p->nb; ++k) {
+        sc_int r = p->start[k], nk = sc_block_size(p->kind[k]);
+        if (urow[r] < 0) continue;
+        for (i = 0; i < nk; ++i) {
+          p->lam[r + i] += dx[urow[r + i]];
+          if (fabs(dx[urow[r + i]]) > step) step = fabs(dx[urow[r + i]]);
+        }
+        if (ugam[k] >= 0) p->gamma[k] += dx[ugam[k]];
+      }
+      if (!(step > 1e-15 * p->fscale) || (it > 0 && fn <= 1e-15 * (p->wscale + 1e-300)))
+        break;
+    }
+  }
+  update_w(p);
+  return defect;
+}
+
+/* The KKT residuals (relative): primal (outside the set), dual (w not in -N_K(lam)),
+ * complementarity; and the states switched where they are violated (returns 1 if any). */
+static int kkt(sc_problem *p, double *res, int do_switch) {
+  double pr = 0.0, du = 0.0, co = 0.0, F = p->fscale, W = p->wscale;
+  int moved = 0;
+  sc_int k;
+  for (k = 0; k < p->nb; ++k) {
+    sc_int r = p->start[k];
+    const double *q = p->par + 3 * k, *l = p->lam + r, *w = p->w + r;
+    double e;
+    switch (p->kind[k]) {
+      case K_FREE:
+        du = fmax(du, fabs(w[0]) / W);
+        break;
+      case K_UNILATERAL:
+        pr = fmax(pr, fmax(0.0, -l[0]) / F);
+        du = fmax(du, fmax(0.0, -w[0]) / W);
+        co = fmax(co, fabs(l[0] * w[0]) / (F * W));
+        if (do_switch) {
+          if (p->state[k] == S_HELD && l[0] < -TOL_ACCEPT * F) { p->state[k] = S_ZERO; moved = 1; }
+          else if (p->state[k] == S_ZERO && w[0] < -TOL_ACCEPT * W) { p->state[k] = S_HELD; moved = 1; }
+        }
+        break;
+      case K_BOX:
+        pr = fmax(pr, fmax(0.0, fabs(l[0]) - q[0]) / F);
+        if (fabs(l[0]) < q[0]) e = fabs(w[0]);
+        else e = l[0] > 0 ? fmax(0.0, w[0]) : fmax(0.0, -w[0]);
+        du = fmax(du, e / W);
+        co = fmax(co, fabs(fmin(q[0] - fabs(l[0]), 0.0) * w[0]) / (F * W));
+        if (do_switch) {
+          if (p->state[k] == S_HELD && fabs(l[0]) > q[0] * (1 + TOL_ACCEPT)) { p->state[k] = S_SLIDE; moved = 1; }
+          else if (p->state[k] == S_SLIDE && e > TOL_ACCEPT * W) { p->state[k] = S_HELD; moved = 1; }
+        }
+        break;
+      default: {
+        double P[2], phi, nrm[2], nn, wn, wt;
+        int zero = !(p->kind[k] == K_DISC ? q[0] > 0 : q[2] > 0 && (q[0] > 0 || q[1] > 0));
+        if (zero) break;
+        sc_block_P(p, k, l, P);
+        phi = sqrt(P[0] * l[0] * l[0] + P[1] * l[1] * l[1]);
+        pr = fmax(pr, fmax(0.0, phi - 1.0));
+        if (p->state[k] == S_HELD || phi < 1.0 - 1e-12) {
+          e = sqrt(w[0] * w[0] + w[1] * w[1]);
+          if (do_switch && p->state[k] == S_HELD && phi > 1.0 + TOL_ACCEPT) {
+            p->state[k] = S_SLIDE;
+            p->gamma[k] = 0.0;
+            moved = 1;
+          }
+        } else {
+          nrm[0] = P[0] * l[0];
+          nrm[1] = P[1] * l[1];
+          nn = sqrt(nrm[0] * nrm[0] + nrm[1] * nrm[1]);
+          nrm[0] /= nn;
+          nrm[1] /= nn;
+          wn = w[0] * nrm[0] + w[1] * nrm[1]; /* must be <= 0 */
+          wt = w[1] * nrm[0] - w[0] * nrm[1]; /* must be 0 */
+          e = fmax(fmax(0.0, wn), fabs(wt));
+          if (do_switch && p->state[k] == S_SLIDE && wn > TOL_ACCEPT * W) {
+            p->state[k] = S_HELD;
+            moved = 1;
+          }
+        }
+        du = fmax(du, e / W);
+      }
+    }
+  }
+  res[0] = pr;
+  res[1] = du;
+  res[2] = co;
+  return moved;
+}
+
+/* One sample. M (n x n), f (n), A (m x n) row-major; out: lam (m), a (n), w (m), state (nb),
+ * info (INFO_WIDTH). Scratch: work and iwork sized by scene_solve_work. */
+static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const double *f,
+                         const double *A, const sc_int *kind, const sc_int *start,
+                         const double *par, sc_int max_sweeps, double *lam, double *a,
+                         double *w, double *state_out, double *info, double *work,
+                         sc_int *iwork) {
+  double *L = work, *Y = L + n * n, *G = Y + n * m, *b = G + m * m, *gam = b + m,
+         *rest = gam + nb, res[3] = {NAN, NAN, NAN};
+  sc_int i, j, k, total_sweeps = 0, passes = 0, defect = 0;
+  sc_int *state = iwork, *iw2 = iwork + nb;
+  sc_problem p;
+  int dep = 0, ok = 0;
+  memset(info, 0, sizeof(double) * INFO_WIDTH);
+  for (i = 0; i < n * n; ++i) L[i] = M[i];
+  if (!sc_cholesky(n, L, n, 1e-14)) {
+    info[INFO_STATUS] = ST_SINGULAR_MASS;
+    for (i = 0; i < m; ++i) lam[i] = w[i] = NAN;
+    for (i = 0; i < n; ++i) a[i] = NAN;
+    return;
+  }
+  /* a_free = M^-1 f (in a), Y = M^-1 A^T (n x m, column j for row j of A) */
+  for (i = 0; i < n; ++i) a[i] = f[i];
+  sc_cholesky_solve(n, L, n, a);
+  for (j = 0; j < m; ++j) {
+    double col[512];
+    for (i = 0; i < n; ++i) col[i] = A[j * n + i];
+    sc_cholesky_solve(n, L, n, col);
+    for (i = 0; i < n; ++i) Y[i * m + j] = col[i];
+  }
+  for (i = 0; i < m; ++i) { /* G = A Y, b = A a_free */
+    for (j = 0; j < m; ++j) {
+      double s = 0.0;
+      for (k = 0; k < n; ++k) s += A[i * n + k] * Y[k * m + j];
+      G[i * m + j] = s;
+    }
+    b[i] = sc_dot(A + i * n, a, n);
+  }
+  for (i = 0; i < m; ++i) /* symmetric to rounding */
+    for (j = 0; j < i; ++j) G[i * m + j] = G[j * m + i] = 0.5 * (G[i * m + j] + G[j * m + i]);
+  p.n = n; p.m = m; p.nb = nb; p.kind = kind; p.start = start; p.par = par;
+  p.G = G; p.b = b; p.lam = lam; p.w = w; p.gamma = gam; p.state = state;
+  { /* scales: forces (what would stop the rows' accelerations, and the sets' sizes),
+       accelerations */
+    double fs = 0.0, ws = 0.0;
+    for (i = 0; i < m; ++i) {
+      if (G[i * m + i] > 0 && fabs(b[i]) / G[i * m + i] > fs) fs = fabs(b[i]) / G[i * m + i];
+      if (fabs(b[i]) > ws) ws = fabs(b[i]);
+    }
+    for (k = 0; k < nb; ++k)
+      for (i = 0; i < 3; ++i)
+        if (isfinite(par[3 * k + i]) && fabs(par[3 * k + i]) > fs) fs = fabs(par[3 * k + i]);
+    for (i = 0; i < m; ++i) {
+      double g = G[i * m + i] * fs;
+      if (g > ws) ws = g;
+    }
+    p.fscale = fs > 0 ? fs : 1.0;
+    p.wscale = ws > 0 ? ws : 1.0;
+  }
+  for (i = 0; i < m; ++i) lam[i] = 0.0;
+  for (k = 0; k < nb; ++k) gam[k] = 0.0;
+  if (m == 0) {
+    ok = 1;
+    res[0] = res[1] = res[2] = 0.0;
+  }
+  while (!ok && total_sweeps < max_sweeps) {
+    int pass;
+    sc_int s = sweeps(&p, total_sweeps == 0 ? 200 : 2000, total_sweeps == 0 ? 1e-8 : 1e-12);
+    total_sweeps += s;
+    update_w(&p);
+    read_states(&p, 1e-6);
+    for (pass = 0; pass < 20; ++pass) {
+      ++passes;
+      defect = polish(&p, rest, iw2);
+      if (defect < 0) break;
+      if (!kkt(&p, res, 1)) {
+        ok = res[0] <= TOL_ACCEPT && res[1] <= TOL_ACCEPT && res[2] <= TOL_ACCEPT;
+        break;
+      }
+    }
+    if (!ok) { /* back to the sweeps from the set's nearest point */
+      for (k = 0; k < nb; ++k) {
+        sc_int r = start[k];
+        if (kind[k] == K_UNILATERAL && lam[r] < 0) lam[r] = 0;
+        if (kind[k] == K_BOX) lam[r] = fmax(-par[3 * k], fmin(par[3 * k], lam[r]));
+      }
+    }
+  }
+  if (ok) {
+    int degenerate = defect > 0;
+    for (k = 0; k < nb && !degenerate; ++k)
+      if (state[k] != S_HELD && sc_still(&p, k)) degenerate = 1;
+    if (degenerate) dep = sc_min_norm_face(&p, rest);
+    kkt(&p, res, 0);
+    /* a contact that the minimum-norm choice brought to zero force may open instead, which
+     * frees the dependent forces further: tried one at a time, kept where the KKT conditions
+     * still hold */
+    for (k = 0; k < nb && dep == 1; ++k) {
+      double keep_lam[512], keep_w[512], keep_res[3] = {res[0], res[1], res[2]};
+      sc_int keep_state = state[k], d2;
+      if (kind[k] != K_UNILATERAL || state[k] != S_HELD || lam[start[k]] > 1e-12 * p.fscale)
+        continue;
+      memcpy(keep_lam, lam, sizeof(double) * (size_t)m);
+      memcpy(keep_w, w, sizeof(double) * (size_t)m);
+      state[k] = S_ZERO;
+      d2 = polish(&p, rest, iw2);
+      if (d2 >= 0 && !kkt(&p, res, 0) && res[0] <= TOL_ACCEPT && res[1] <= TOL_ACCEPT &&
+          res[2] <= TOL_ACCEPT) {
+        dep = sc_min_norm_face(&p, rest);
+        defect = d2;
+        kkt(&p, res, 0);
+        if (d2 == 0) break;
+      } else {
+        state[k] = keep_state;
+        memcpy(lam, keep_lam, sizeof(double) * (size_t)m);
+        memcpy(w, keep_w, sizeof(double) * (size_t)m);
+        res[0] = keep_res[0];
+        res[1] = keep_res[1];
+        res[2] = keep_res[2];
+      }
+    }
+  }
+  info[INFO_STATUS] = ok ? ST_SOLVED : ST_NOT_CONVERGED;
+  info[INFO_DEPENDENT] = (double)dep;
+  info[INFO_PRIMAL] = res[0];
+  info[INFO_DUAL] = res[1];
+  info[INFO_COMPL] = res[2];
+  info[INFO_SWEEPS] = (double)total_sweeps;
+  info[INFO_PASSES] = (double)passes;
+  info[INFO_RANK_DEFECT] = (double)defect;
+  if (ok) /* on the set's boundary without sliding: stick at the limit */
+    for (k = 0; k < nb; ++k)
+      if (state[k] == S_SLIDE) {
+        sc_int r = start[k], nk = sc_block_size(kind[k]);
+        double e = 0.0;
+        for (i = 0; i < nk; ++i) e = fmax(e, fabs(w[r + i]));
+        if (e <= TOL_ACCEPT * p.wscale) state[k] = S_HELD;
+      }
+  for (k = 0; k < nb; ++k) {
+    double code = (double)state[k];
+    if (state[k] == S_SLIDE && kind[k] == K_BOX) code = lam[start[k]] > 0 ? 3.0 : 4.0;
+    state_out[k] = code;
+  }
+  /* eq. (18): a = a_free + Y lam */
+  for (i = 0; i < n; ++i) a[i] += sc_dot(Y + i * m, lam, m);
+  if (!ok) {
+    for (i = 0; i < n; ++i) a[i] = NAN;
+    for (i = 0; i < m; ++i) lam[i] = NAN;
+  }
+}
+
+/* Scratch sizes (doubles, sc_ints) for n coordinates, m rows, nb blocks. */
+void SNAKECG_EXPORT(core_scene_solve_work)(sc_int n, sc_int m, sc_int nb, sc_int *nd, sc_int *ni) {
+  sc_int u = m + nb;
+  *nd = n * n + n * m + m * m + m + nb + (u * u + 3 * u + 2 * m * m + 3 * m + 16);
+  *ni = nb + 4 * (m + nb) + 16;
+}
+
+/* A batch of samples of equal sizes n; sample s has m[s] rows and nb[s] blocks (padded to
+ * mmax, nbmax in the arrays). Inputs per sample at s * (n n), s * n, s * (mmax n),
+ * s * nbmax, s * 3 nbmax. Outputs: lam, w (mmax), a (n), state (nbmax), info (INFO_WIDTH).
+ * Returns 0, -1 when out of memory, -2 when a size is out of range. */
+int SNAKECG_EXPORT(core_scene_solve)(sc_int ns, sc_int n, sc_int mmax, sc_int nbmax, const sc_int *m,
+                           const sc_int *nb, const double *M, const double *f, const double *A,
+                           const sc_int *kind, const sc_int *start, const double *par,
+                           sc_int max_sweeps, double *lam, double *a, double *w,
+                           double *state, double *info) {
+  sc_int nd, ni, s;
+  double *work;
+  sc_int *iwork;
+  if (n < 1 || n > 512 || mmax < 0 || mmax > 500 || nbmax < 0 || nbmax > mmax) return -2;
+  SNAKECG_EXPORT(core_scene_solve_work)(n, mmax, nbmax, &nd, &ni);
+  work = (double *)malloc(sizeof(double) * (size_t)nd);
+  iwork = (sc_int *)malloc(sizeof(sc_int) * (size_t)ni);
+  if (!work || !iwork) {
+    free(work);
+    free(iwork);
+    return -1;
+  }
+  for (s = 0; s < ns; ++s) {
+    if (m[s] < 0 || m[s] > mmax || nb[s] < 0 || nb[s] > nbmax) {
+      free(work);
+      free(iwork);
+      return -2;
+    }
+    solve_sample(n, m[s], nb[s], M + s * n * n, f + s * n, A + s * mmax * n, kind + s * nbmax,
+                 start + s * nbmax, par + s * 3 * nbmax, max_sweeps, lam + s * mmax, a + s * n,
+                 w + s * mmax, state + s * nbmax, info + s * INFO_WIDTH, work, iwork);
+  }
+  free(work);
+  free(iwork);
+  return 0;
+}

@@ -1,0 +1,264 @@
+"""Independent references for the general scenes' tests: random scenes, a dense NumPy model of
+the KKT conditions, brute-force enumeration of the polyhedral pieces and the primal Gauss
+problem in cvxpy (solved by Clarabel). None of it calls the code under test's solver."""
+
+from __future__ import annotations
+
+import itertools
+import warnings
+
+import numpy as np
+
+from snakecg import Robot
+from snakecg.scenes import GeneralScene, Ground, Obstacle, SceneObject
+from snakecg.scenes.solve import BOX, DISC, FREE, SPLIT, UNILATERAL
+
+POLYHEDRAL = ("frictionless", "wheels", "ideal_wheels")
+ALL_MODELS = POLYHEDRAL + ("coulomb", "anisotropic")
+
+
+def random_scene(rng, models=ALL_MODELS, n_joints=None):
+    """A random scene of n_a 1-5 joints with 1-4 bodies touching links (discs, boxes, pegs),
+    a ground model per link from ``models``, and a random configuration (q, tau)."""
+    na = int(rng.integers(1, 6)) if n_joints is None else n_joints
+    robot = Robot(joints=na, mass=list(rng.uniform(0.5, 2.0, na + 1)),
+                  length=list(rng.uniform(0.1, 0.2, na + 1)),
+                  inertia=list(rng.uniform(0.001, 0.004, na + 1)))
+    ground = tuple(Ground(model=str(rng.choice(models)), mu=float(rng.uniform(0.05, 0.6)),
+                          mu_forward=float(rng.uniform(0.05, 0.5)),
+                          mu_backward=float(rng.uniform(0.05, 0.5)),
+                          mu_lateral=float(rng.uniform(0.05, 0.8)),
+                          wheel_offset=float(rng.uniform(-0.03, 0.03)))
+                   for _ in range(na + 1))
+    q = np.r_[rng.normal(size=2), rng.uniform(-np.pi, np.pi), rng.uniform(-1.2, 1.2, na)]
+    tau = rng.normal(size=na) * rng.choice([0.1, 1.0, 5.0])
+    objects, pegs = [], []
+    for _ in range(int(rng.integers(1, 5))):
+        link = int(rng.integers(1, na + 2))
+        side = str(rng.choice(["left", "right"]))
+        off = float(rng.uniform(0.1, 0.9)) * robot.length[link - 1]
+        kind = rng.choice(["disc", "box", "peg"])
+        if kind == "peg":
+            pegs.append((link, off, side, float(rng.uniform(0.01, 0.05))))
+        elif kind == "disc":
+            objects.append(SceneObject(shape="disc", radius=float(rng.uniform(0.02, 0.06)),
+                                       mass=float(rng.uniform(0.5, 50)),
+                                       touching={"link": link, "offset": off, "side": side},
+                                       mu=float(rng.uniform(0.1, 0.5))
+                                       if "coulomb" in models and rng.random() < 0.3
+                                       else None))
+        else:
+            objects.append(SceneObject(shape="box", size=(float(rng.uniform(0.02, 0.08)),
+                                                          float(rng.uniform(0.02, 0.08))),
+                                       mass=float(rng.uniform(0.5, 50)),
+                                       touching={"link": link, "offset": off, "side": side}))
+    return robot, ground, tuple(objects), pegs, q, tau
+
+
+def peg_obstacles(model, pegs, q):
+    """Pegs touching their links at configuration q (placed from the link poses)."""
+    P = model.link_poses(q)
+    out = []
+    for link, off, side, r in pegs:
+        x, y, phi = P[link - 1]
+        t = np.array([np.cos(phi), np.sin(phi)])
+        n = np.array([-np.sin(phi), np.cos(phi)]) * (1 if side == "left" else -1)
+        rear = np.array([x, y]) - model.robot.com[link - 1] * t
+        c = rear + off * t + (r + model.scene.radius) * n
+        out.append(Obstacle(shape="peg", center=tuple(c), radius=r))
+    return tuple(out)
+
+
+def dense_problem(res, model, tau, f_obj=None):
+    """M (full), f, A, blocks of the one-sample result's rows, and G, b, a_free in NumPy."""
+    r = res._rows[0]
+    ns, no = model.n_coordinates, model.scene.n_objects
+    n = ns + 3 * no
+    M = np.zeros((n, n))
+    M[:ns, :ns] = model.mass_matrix(np.asarray(res._q))
+    for j, o in enumerate(model.scene.objects):
+        M[ns + 3 * j:ns + 3 * j + 3, ns + 3 * j:ns + 3 * j + 3] = np.diag(
+            [o.mass, o.mass, o.plate_inertia])
+    f = np.zeros(n)
+    f[3:ns] = tau
+    if f_obj is not None:
+        f[ns:] = np.ravel(f_obj)
+    Minv = np.linalg.inv(M)
+    A = r.A
+    return dict(M=M, f=f, A=A, G=A @ Minv @ A.T, b=A @ Minv @ f, a_free=Minv @ f, Minv=Minv,
+                blocks=list(zip(r.kind, r.start, r.par)))
+
+
+def kkt_violations(p, lam, a, tol=1e-8):
+    """Every KKT condition the (lam, a) pair violates, checked densely: a = a_free + M^-1 A^T
+    lam; contact forces >= 0, their accelerations >= 0 and complementary; stick forces inside
+    their sets with zero sliding acceleration; sliding forces on the boundary, opposing the
+    sliding acceleration (maximum dissipation)."""
+    out = []
+    w = p["G"] @ lam + p["b"]
+    F = max(1.0, np.abs(lam).max())
+    W = max(1.0, np.abs(p["b"]).max(), np.abs(w).max())
+    a_ref = p["a_free"] + p["Minv"] @ p["A"].T @ lam
+    if not np.allclose(a, a_ref, rtol=1e-9, atol=1e-9 * max(1, np.abs(a_ref).max())):
+        out.append("a != a_free + M^-1 A^T lam")
+    for kind, s, par in p["blocks"]:
+        if kind == FREE:
+            if abs(w[s]) > tol * W:
+                out.append(f"ideal wheel row {s} accelerates {w[s]}")
+        elif kind == UNILATERAL:
+            if lam[s] < -tol * F:
+                out.append(f"contact {s} pulls {lam[s]}")
+            if w[s] < -tol * W:
+                out.append(f"contact {s} penetrates {w[s]}")
+            if abs(lam[s] * w[s]) > tol * F * W:
+                out.append(f"contact {s} not complementary")
+        elif kind == BOX:
+            u = par[0]
+            if abs(lam[s]) > u * (1 + tol) + tol * F:
+                out.append(f"wheel {s} force beyond its bound")
+            if abs(lam[s]) < u * (1 - 1e-7):
+                if abs(w[s]) > tol * W:
+                    out.append(f"stuck wheel {s} slides")
+            elif lam[s] * w[s] > tol * F * W:
+                out.append(f"wheel {s} force does not oppose its sliding")
+        else:
+            l, ww = lam[s:s + 2], w[s:s + 2]
+            if kind == DISC:
+                inside = np.hypot(*l) / par[0] if par[0] > 0 else 0.0
+                normal = l / par[0] ** 2 if par[0] > 0 else l
+            else:
+                st = par[0] if l[0] < 0 else par[1]
+                inside = np.hypot(l[0] / st, l[1] / par[2])
+                normal = np.array([l[0] / st ** 2, l[1] / par[2] ** 2])
+            if inside > 1 + tol:
+                out.append(f"friction block {s} outside its set ({inside})")
+            if inside < 1 - 1e-7:
+                if np.hypot(*ww) > tol * W:
+                    out.append(f"sticking block {s} slides {ww}")
+            else:  # w = -gamma normal, gamma >= 0
+                nn = normal / np.hypot(*normal)
+                if ww @ nn > tol * W or abs(ww[0] * nn[1] - ww[1] * nn[0]) > tol * W:
+                    out.append(f"sliding block {s} not maximally dissipative: w {ww}, n {nn}")
+    return out
+
+
+def enumerate_polyhedral(p, tol=1e-9):
+    """The accelerations of every piece of a polyhedral problem (FREE, UNILATERAL, BOX
+    blocks) whose KKT conditions hold, by trying every combination of pieces (held, at zero,
+    at +-bound) and solving its equations by least squares. Stops at the first; returns its
+    accelerations and held rows (None, None when no piece holds)."""
+    blocks = p["blocks"]
+    G, b = p["G"], p["b"]
+    choices = []
+    for kind, s, par in blocks:
+        if kind == FREE:
+            choices.append(("held",))
+        elif kind == UNILATERAL:
+            choices.append(("held", "zero"))
+        elif kind == BOX:
+            choices.append(("held", "+", "-") if par[0] > 0 else ("zero",))
+        else:
+            raise ValueError("not polyhedral")
+    m = len(b)
+    scale_w = max(1.0, np.abs(b).max(), np.abs(np.diag(G)).max())
+    for combo in itertools.product(*choices):
+        lam = np.zeros(m)
+        held = []
+        for (kind, s, par), c in zip(blocks, combo):
+            if c == "held":
+                held.append(s)
+            elif c == "+":
+                lam[s] = par[0]
+            elif c == "-":
+                lam[s] = -par[0]
+        if held:
+            H = np.array(held)
+            rhs = -(b[H] + G[H] @ lam)
+            lam[H] = np.linalg.lstsq(G[np.ix_(H, H)], rhs, rcond=1e-12)[0]
+        w = G @ lam + b
+        F = max(1.0, np.abs(lam).max())
+        ok = True
+        for (kind, s, par), c in zip(blocks, combo):
+            if c == "held":
+                ok &= abs(w[s]) <= tol * scale_w * F
+                if kind == UNILATERAL:
+                    ok &= lam[s] >= -tol * F
+                if kind == BOX:
+                    ok &= abs(lam[s]) <= par[0] * (1 + tol)
+            elif c == "zero":
+                ok &= w[s] >= -tol * scale_w * F
+            elif c == "+":
+                ok &= w[s] <= tol * scale_w * F
+            elif c == "-":
+                ok &= w[s] >= -tol * scale_w * F
+            if not ok:
+                break
+        if ok:
+            return p["a_free"] + p["Minv"] @ p["A"].T @ lam, held
+    return None, None
+
+
+def clarabel_accelerations(p):
+    """The primal of Gauss's principle with the sets' support functions, in cvxpy (Clarabel):
+    min 1/2 |a - a_free|_M^2 + sum_B sigma_K_B(-A_B a)."""
+    import cvxpy as cp
+
+    n = len(p["f"])
+    a = cp.Variable(n)
+    L = np.linalg.cholesky(p["M"])
+    cost = 0.5 * cp.sum_squares(L.T @ (a - p["a_free"]))
+    cons = []
+    A = p["A"]
+    for kind, s, par in p["blocks"]:
+        if kind == FREE:
+            cons.append(A[s] @ a == 0)
+        elif kind == UNILATERAL:
+            cons.append(A[s] @ a >= 0)
+        elif kind == BOX:
+            cost += par[0] * cp.abs(A[s] @ a)
+        elif kind == DISC:
+            cost += par[0] * cp.norm(A[s:s + 2] @ a)
+        else:  # split ellipse: y = -A a; sigma = |(p1 y_t+, p0 y_t-, p2 y_n)|
+            sp, sm = cp.Variable(nonneg=True), cp.Variable(nonneg=True)
+            yt = -(A[s] @ a)
+            cons += [sp >= yt, sm >= -yt]
+            cost += cp.norm(cp.hstack([par[1] * sp, par[0] * sm, par[2] * (-(A[s + 1] @ a))]))
+    prob = cp.Problem(cp.Minimize(cost), cons)
+    prob.solve(solver="CLARABEL", tol_gap_abs=1e-11, tol_gap_rel=1e-11, tol_feas=1e-11,
+               max_iter=400)
+    return a.value, prob.status
+
+
+def clarabel_min_norm_forces(p, lam_star):
+    """The minimum-norm forces among all that give the same accelerations (A^T lam = A^T
+    lam*, lam in the sets), in cvxpy (Clarabel): the statically indeterminate case's
+    reference."""
+    import cvxpy as cp
+
+    A = p["A"]
+    _, sv, Vt = np.linalg.svd(A.T)  # lam = lam* + N t, N spanning the null space of A^T
+    rank = int(np.sum(sv > 1e-10 * sv.max()))
+    N = Vt[rank:].T
+    t = cp.Variable(N.shape[1])
+    lam = lam_star + N @ t
+    cons = []
+    for kind, s, par in p["blocks"]:
+        if kind == UNILATERAL:
+            cons.append(lam[s] >= 0)
+        elif kind == BOX:
+            cons.append(cp.abs(lam[s]) <= par[0])
+        elif kind == DISC:
+            cons.append(cp.norm(lam[s:s + 2]) <= par[0])
+        elif kind == SPLIT:
+            sp, sm = cp.Variable(nonneg=True), cp.Variable(nonneg=True)
+            cons += [lam[s] == sp - sm,
+                     cp.norm(cp.hstack([sm / par[0], sp / par[1], lam[s + 1] / par[2]])) <= 1]
+    prob = cp.Problem(cp.Minimize(cp.sum_squares(lam)), cons)
+    for tol in (1e-11, 1e-9):  # retried looser where Clarabel stops short of 1e-11
+        with warnings.catch_warnings():  # "may be inaccurate": the retry's reason
+            warnings.simplefilter("ignore", UserWarning)
+            prob.solve(solver="CLARABEL", tol_gap_abs=tol, tol_gap_rel=tol, tol_feas=tol,
+                       max_iter=400)
+        if prob.status == "optimal":
+            break
+    return lam_star + N @ t.value, prob.status

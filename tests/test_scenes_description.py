@@ -1,0 +1,204 @@
+"""General scenes: the description and its validation, the TOML file, the command line, the
+geometry's closest points (against dense sampling of the shapes' boundaries) and the
+drawing."""
+
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+from snakecg import Robot, Scene
+from snakecg.errors import InputError
+from snakecg.scenes import GeneralScene, Ground, Obstacle, SceneObject
+from snakecg.scenes.geometry import Shape, box_corners, closest
+from snakecg.scenes.toml_reading import read_scene
+
+SCENE = """
+[robot]
+joints = 3
+length = 0.15
+mass = 1.0
+inertia = 0.002
+radius = 0.01
+
+[ground]
+model = "coulomb"
+mu = 0.3
+
+[[object]]
+shape = "box"
+size = [0.1, 0.1]
+mass = 100.0
+touching = { link = 1, offset = 0.075, side = "left" }
+
+[[obstacle]]
+shape = "peg"
+center = [0.3, 0.12]
+radius = 0.03
+"""
+
+
+def test_toml_scene_is_read(tmp_path):
+    p = tmp_path / "s.toml"
+    p.write_text(SCENE)
+    s = read_scene(p)
+    assert s.robot.joints == 3 and s.radius == 0.01
+    assert all(g.model == "coulomb" and g.mu == 0.3 for g in s.ground)
+    o = s.objects[0]
+    assert o.plate_inertia == pytest.approx(100.0 * (0.01 + 0.01) / 12)  # uniform plate
+    assert s.obstacles[0].shape == "peg"
+
+
+def test_every_problem_is_named_at_once(tmp_path):
+    p = tmp_path / "bad.toml"
+    p.write_text(SCENE.replace('model = "coulomb"', 'model = "ice"')
+                 .replace("mass = 100.0", "mass = -1")
+                 .replace("radius = 0.03", "radius = 0")
+                 .replace('side = "left"', 'side = "up"'))
+    with pytest.raises(InputError) as e:
+        read_scene(p)
+    msg = str(e.value)
+    for part in ("ground.model must be one of", "object[1].mass must be a number > 0",
+                 "obstacle[1].radius must be a number > 0", "object[1].touching.side"):
+        assert part in msg
+    assert "\n" not in msg
+
+
+def test_ground_lists_per_link(tmp_path):
+    p = tmp_path / "s.toml"
+    p.write_text(SCENE.replace('model = "coulomb"',
+                               'model = ["wheels", "coulomb", "anisotropic", "frictionless"]'))
+    s = read_scene(p)
+    assert [g.model for g in s.ground] == ["wheels", "coulomb", "anisotropic", "frictionless"]
+    p.write_text(SCENE.replace('model = "coulomb"', 'model = ["wheels", "coulomb"]'))
+    with pytest.raises(InputError, match="must have 4 entries"):
+        read_scene(p)
+
+
+def test_the_paper_scene_as_a_general_one():
+    s = GeneralScene.from_scene(Scene(Robot(joints=2), scenario="wheels", kappa=50,
+                                      contact_link=2, side="right"))
+    assert [g.model for g in s.ground] == ["wheels", "frictionless", "wheels"]
+    o = s.objects[0]
+    assert o.shape == "disc" and o.radius == 0.05 and o.mass == 50.0
+    assert o.touching == {"link": 2, "offset": 0.075, "side": "right"}
+
+
+@pytest.mark.parametrize("a,b", [
+    (Shape("segment", [[0, 0], [1, 0]], 0.1), Shape("point", [[0.5, 0.5]], 0.2)),
+    (Shape("segment", [[0, 0], [1, 0.3]], 0.05), Shape("polygon", box_corners((0.4, 0.6),
+                                                                               (0.3, 0.2), 0.4))),
+    (Shape("polygon", box_corners((0, 0), (0.2, 0.1), 0.3)),
+     Shape("polygon", box_corners((0.5, 0.2), (0.2, 0.3), -0.7))),
+    (Shape("segment", [[0, 0], [1, 0.2]], 0.0), Shape("segment", [[0.2, 0.5], [0.9, 1.5]], 0)),
+])
+def test_closest_points_against_dense_sampling(a, b):
+    """The distance against the nearest pair of points sampled densely on the two shapes'
+    boundaries (an independent estimate, accurate to the sampling's spacing squared)."""
+
+    def boundary(sh, k=4000):
+        if sh.kind == "point":
+            t = np.linspace(0, 2 * np.pi, k, endpoint=False)
+            return sh.pts[0] + sh.radius * np.c_[np.cos(t), np.sin(t)]
+        pts = []
+        for s0, s1 in sh.segments():
+            u = np.linspace(0, 1, k)[:, None]
+            line = s0 + u * (s1 - s0)
+            if sh.radius > 0:
+                t = np.linspace(0, 2 * np.pi, 64, endpoint=False)
+                ring = sh.radius * np.c_[np.cos(t), np.sin(t)]
+                line = (line[:, None, :] + ring[None]).reshape(-1, 2)
+            pts.append(line)
+        return np.concatenate(pts)
+
+    pa, pb = boundary(a), boundary(b)
+    from scipy.spatial import cKDTree
+
+    ref = cKDTree(pb).query(pa)[0].min()
+    d, pairs = closest(a, b, 1.0)
+    assert d == pytest.approx(ref, abs=2e-3 * max(a.radius, b.radius, 0.05))
+    for ca, cb, n in pairs:
+        assert np.hypot(*n) == pytest.approx(1.0)
+        assert np.allclose(cb - ca, d * n, atol=1e-12)
+
+
+def test_flush_box_gives_two_contacts():
+    robot = Robot(joints=1)
+    box = SceneObject(shape="box", size=(0.1, 0.04), mass=2.0,
+                      touching={"link": 1, "offset": 0.075, "side": "left"})
+    import snakecg
+
+    res = snakecg.load(GeneralScene(robot, objects=(box,))).forward([0, 0, 0.3, 0.2], [0.5])
+    assert len(res.contacts) == 2
+    pts = np.array([c["point"] for c in res.contacts])
+    assert np.hypot(*(pts[0] - pts[1])) == pytest.approx(0.1)
+
+
+def _cli(*args):
+    return subprocess.run([sys.executable, "-m", "snakecg.cli", *args], capture_output=True,
+                          text=True, timeout=600)
+
+
+def test_cli_forward_and_plot_take_a_scene(tmp_path):
+    p = tmp_path / "s.toml"
+    p.write_text(SCENE)
+    r = _cli("forward", "--scene", str(p), "--q", "0,0,0,0.3,-0.3,0.2", "--tau", "0.1,0,0",
+             "--json")
+    assert r.returncode == 0, r.stderr
+    out = json.loads(r.stdout)
+    assert {"qdd", "a_obj", "sr", "contacts", "objects", "ground", "certificate"} <= set(out)
+    assert len(out["contacts"]) == 2 and out["contacts"][0]["bodies"] == ["link 1", "object 1"]
+    r = _cli("plot", "--scene", str(p), "--q", "0,0,0,0.3,-0.3,0.2", "--tau", "0.1,0,0",
+             "--out", str(tmp_path / "s.png"))
+    assert r.returncode == 0, r.stderr and (tmp_path / "s.png").stat().st_size > 0
+    bad = tmp_path / "bad.toml"
+    bad.write_text(SCENE.replace("mass = 100.0", "mass = 0"))
+    r = _cli("forward", "--scene", str(bad), "--q", "0,0,0,0,0,0", "--tau", "0,0,0")
+    assert r.returncode == 2 and "object[1].mass" in r.stderr and "Traceback" not in r.stderr
+    assert len(r.stderr.strip().splitlines()) == 1
+    r = _cli("simulate", "--scene", str(p), "--q", "0,0,0,0,0,0", "--tau", "0,0,0",
+             "--duration", "0.1")
+    assert r.returncode == 2 and "--scene" in r.stderr and "Traceback" not in r.stderr
+
+
+def test_api_inputs_are_checked_by_name():
+    import snakecg
+
+    robot = Robot(joints=1)
+    disc = SceneObject(shape="disc", radius=0.03, mass=1.0,
+                       touching={"link": 1, "offset": 0.075, "side": "left"})
+    model = snakecg.load(GeneralScene(robot, objects=(disc,)))
+    with pytest.raises(InputError, match="f_obj"):
+        model.forward([0.0] * 4, [0.0], f_obj=[1.0, 2.0])
+    with pytest.raises(InputError, match="tau"):
+        model.forward([0.0] * 4, [0.0, 1.0])
+    with pytest.raises(InputError, match="at rest"):
+        model.forward([0.0] * 4, [0.0], v=[0.0, 0.0, 0.0, 1.0])
+    with pytest.raises(InputError, match=r"ground must be one Ground or a list of 2"):
+        GeneralScene(robot, ground=(Ground(),))
+    with pytest.raises(InputError, match="exactly one of pose"):
+        GeneralScene(robot, objects=(SceneObject(shape="disc", radius=0.1),))
+
+
+def test_snakecg_plot_draws_a_general_scene():
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import snakecg
+
+    robot = Robot(joints=2)
+    scene = GeneralScene(robot, radius=0.01, ground=Ground(model="coulomb", mu=0.3),
+                         objects=(SceneObject(shape="box", size=(0.1, 0.05), mass=2.0,
+                                              touching={"link": 2, "offset": 0.075,
+                                                        "side": "left"}),),
+                         obstacles=(Obstacle(shape="wall", point=(0.0, -0.3),
+                                             normal=(0.0, 1.0)),))
+    ax = snakecg.plot(scene, [0.0, 0.0, 0.0, 0.3, -0.3], [0.2, 0.1])
+    gids = {a.get_gid() for a in ax.get_children() if a.get_gid()}
+    assert {"link1", "object1", "obstacle1", "contact_normals", "force_contacts",
+            "acc_links"} <= gids
+    assert "2 contacts" in ax.get_title()
