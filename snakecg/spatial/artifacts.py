@@ -64,7 +64,7 @@ def spatial_fingerprint() -> str:
 def verify_spatial_dir(path: Path, n_joints: int) -> dict:
     """The folder's manifest after checking its kind, sizes, function set and every file's
     SHA-256; :class:`ArtifactError` naming the folder and the problem otherwise."""
-    from snakecg_derive.spatial.catalog import SPATIAL_FUNCTIONS
+    from snakecg_derive.spatial.catalog import SPATIAL_MODEL_FUNCTIONS as SPATIAL_FUNCTIONS
 
     try:
         manifest = json.loads((path / "manifest.json").read_text(encoding="utf-8"))
