@@ -17,8 +17,8 @@ runs along ``e`` from the frame origin. Rows, in order (``n_c = 2 n_l + 1``):
   in the object frame) from the edge of link ``k`` (one-hot ``contact_link``), ``n = side
   (-e_y, e_x)``; the row is ``gdot`` on ``(v, v_obj)``, ``s = e . (P - o_k)`` the contact
   coordinate along the edge;
-* rows ``1..n_l``, the **wheels**: the velocity of the point ``c_i + wheel_offset_i e_i``
-  (``c_i`` the link's COM) along the lateral direction ``(-e_y, e_x, 0)``;
+* rows ``1..n_l``, the **wheels**: the velocity of the link's point ``c_i + wheel_offset_i
+  x_i`` (``c_i`` its COM, ``x_i`` its frame's x axis) along the lateral direction ``(-e_y, e_x, 0)``;
 * rows ``n_l + 1..2 n_l``, the **ground**: the vertical velocity of each link's COM
   (bilateral: the snake stays on the ground).
 
@@ -97,7 +97,7 @@ def _rows(fn, s: SpatialSymbols, q, K, q_obj, rho, sc):
         c = _link_com(K, s, i)
         R = rot[:, 3 * i: 3 * i + 3]
         hx, hy = _heading(R)
-        local = c + sc["wheel_offset"][i] * ca.mtimes(R.T, ca.vertcat(hx, hy, 0))
+        local = c + ca.vertcat(sc["wheel_offset"][i], 0, 0)
         _, vel, _, _ = point(i, local)
         rows.append(-hy * vel[0] + hx * vel[1])
     for i in range(nl):  # the ground
