@@ -14,7 +14,7 @@ from .core import Data
 from .errors import ArtifactError, BuildError, InputError, SingularConstraintsError, SnakecgError
 from .model import ForwardResult, RobotModel, SceneModel, load
 from .robot import SCENARIOS, Robot, Scene
-from .spatial import SpatialRobot
+from .spatial import SpatialRobot, SpatialScene
 
 __version__ = "0.1.0"
 
@@ -22,6 +22,7 @@ __all__ = [
     "Robot",
     "Scene",
     "SpatialRobot",
+    "SpatialScene",
     "SCENARIOS",
     "load",
     "RobotModel",

@@ -45,6 +45,21 @@ class Core:
     """``core_forward`` of one compiled model library."""
 
     def __init__(self, lib: ctypes.CDLL, manifest: dict):
+        self.forward_only(lib, manifest)
+        (self.integrate_segment, self.mode_samples, self.settle,
+         self.run) = segment_functions(lib, manifest["prefix"])
+        """integrate.c's ``core_integrate_segment`` and ``core_mode_samples``, settle.c's
+        ``core_settle``, run.c's ``core_run`` (:mod:`snakecg.core.segment`)."""
+        self.contact_depth = contact_depth_function(lib, manifest["prefix"])
+        """integrate.c's ``core_contact_depth``: the simulation's contact check at states."""
+        self.sphere = SphereKernel(lib, manifest["prefix"])
+        """sphere.c's faces and KKT candidates (:mod:`snakecg.core.sphere`)."""
+        self.optimal = OptimalKernel(lib, manifest["prefix"])
+        """optimal.c's one-call optimal-torque query (:mod:`snakecg.core.optimal`)."""
+
+    def forward_only(self, lib: ctypes.CDLL, manifest: dict) -> None:
+        """forward.c's functions alone (a library with no other file of the core: a spatial
+        model's)."""
         self.layout = Layout.of(manifest)
         fn = getattr(lib, f"{manifest['prefix']}core_forward")
         fn.argtypes = [_I, _P, _P, _I, _P, _P, _P]
@@ -61,16 +76,6 @@ class Core:
         self._rules = rules
         self._constants = CONSTANTS.copy()
         self.constants_address = self._constants.ctypes.data
-        (self.integrate_segment, self.mode_samples, self.settle,
-         self.run) = segment_functions(lib, manifest["prefix"])
-        """integrate.c's ``core_integrate_segment`` and ``core_mode_samples``, settle.c's
-        ``core_settle``, run.c's ``core_run`` (:mod:`snakecg.core.segment`)."""
-        self.contact_depth = contact_depth_function(lib, manifest["prefix"])
-        """integrate.c's ``core_contact_depth``: the simulation's contact check at states."""
-        self.sphere = SphereKernel(lib, manifest["prefix"])
-        """sphere.c's faces and KKT candidates (:mod:`snakecg.core.sphere`)."""
-        self.optimal = OptimalKernel(lib, manifest["prefix"])
-        """optimal.c's one-call optimal-torque query (:mod:`snakecg.core.optimal`)."""
 
     def next_states(self, state, lam, w, G, bounds) -> tuple[np.ndarray, bool]:
         """The C's row-state update for one sample (the rules of

@@ -54,8 +54,11 @@ int SNAKECG_CR_WORK(sc_int *sz_arg, sc_int *sz_res, sc_int *sz_iw, sc_int *sz_w)
 int SNAKECG_LJ(const double **arg, double **res, sc_int *iw, double *w, int mem);
 int SNAKECG_LJ_WORK(sc_int *sz_arg, sc_int *sz_res, sc_int *sz_iw, sc_int *sz_w);
 
-/* row states (snakecg/solver.py) */
-enum { ABSENT = 0, HELD = 1, LOST = 2, SLIDE_POS = 3, SLIDE_NEG = 4 };
+/* row states (snakecg/solver.py); SUPPORT: a bilateral row that always holds and may depend
+ * on the other held rows (a spatial snake's ground rows, snakecg/spatial/analysis.py) */
+enum { ABSENT = 0, HELD = 1, LOST = 2, SLIDE_POS = 3, SLIDE_NEG = 4, SUPPORT = 5 };
+/* A SUPPORT row whose pivot ratio is at most this depends on the held rows before it. */
+#define SC_SUPPORT_TOL 1e-10
 
 /* The simulation's structs, shared by integrate.c, settle.c and run.c (mirrored field by
  * field in snakecg/core/segment.py). */
@@ -299,20 +302,85 @@ static int sc_row_velocities(sc_work_t *ws, const double *scene, const double *r
 }
 #endif
 
+/* Solve L D L^T x = y in place (m rows; a dropped row has dinv 0 and a zero column of L). */
+static void sc_ldl_solve(int m, const double *L, const double *dinv, double *y) {
+  const int nc = SNAKECG_NC;
+  int i, k;
+  for (i = 0; i < m; ++i) /* forward, diagonal and back substitution */
+    for (k = 0; k < i; ++k) y[i] -= L[i + nc * k] * y[k];
+  for (i = m - 1; i >= 0; --i) {
+    y[i] *= dinv[i];
+    for (k = i + 1; k < m; ++k) y[i] -= L[k + nc * i] * y[k];
+  }
+}
+
+/* The held forces y (m of them) made least-norm where SUPPORT rows were dropped (drop[j]):
+ * the solutions differ by the null vectors z_j = e_j - G_KK^-1 G_Kj (K: the rows kept), so
+ * y <- y - Z (Z^T Z)^-1 Z^T y. */
+static void sc_least_norm(int m, const int *held, const int *drop, const double *G,
+                          const double *L, const double *dinv, double *y) {
+  const int nc = SNAKECG_NC;
+  double Z[SNAKECG_NC * SNAKECG_NC], C[SNAKECG_NC * SNAKECG_NC], c[SNAKECG_NC];
+  int nd = 0, i, j, k;
+  for (j = 0; j < m; ++j) {
+    double *z = Z + nc * nd;
+    if (!drop[j]) continue;
+    for (i = 0; i < m; ++i) z[i] = drop[i] ? 0.0 : G[held[i] + nc * held[j]];
+    sc_ldl_solve(m, L, dinv, z);
+    for (i = 0; i < m; ++i) z[i] = -z[i];
+    z[j] = 1.0;
+    ++nd;
+  }
+  for (j = 0; j < nd; ++j) { /* C = Z^T Z (Cholesky in place), c = Z^T y */
+    double t = 0.0;
+    for (i = 0; i < m; ++i) t += Z[i + nc * j] * y[i];
+    c[j] = t;
+    for (k = 0; k <= j; ++k) {
+      double s = 0.0;
+      for (i = 0; i < m; ++i) s += Z[i + nc * j] * Z[i + nc * k];
+      C[j + nc * k] = s;
+    }
+  }
+  for (j = 0; j < nd; ++j) {
+    double s = C[j + nc * j];
+    for (k = 0; k < j; ++k) s -= C[j + nc * k] * C[j + nc * k];
+    s = sqrt(s);
+    C[j + nc * j] = s;
+    for (i = j + 1; i < nd; ++i) {
+      double t = C[i + nc * j];
+      for (k = 0; k < j; ++k) t -= C[i + nc * k] * C[j + nc * k];
+      C[i + nc * j] = t / s;
+    }
+  }
+  for (j = 0; j < nd; ++j) { /* c <- C^-T C^-1 c */
+    for (k = 0; k < j; ++k) c[j] -= C[j + nc * k] * c[k];
+    c[j] /= C[j + nc * j];
+  }
+  for (j = nd - 1; j >= 0; --j) {
+    for (k = j + 1; k < nd; ++k) c[j] -= C[k + nc * j] * c[k];
+    c[j] /= C[j + nc * j];
+  }
+  for (j = 0; j < nd; ++j)
+    for (i = 0; i < m; ++i) y[i] -= Z[i + nc * j] * c[j];
+
+}
+
 /* The constraint forces for row states `state` (eq. 16): lam_F fixed (0, or +-bound for a
  * sliding wheel), lam_H solving G_HH lam_H = -(b_H + G_HF lam_F) - extra_H by LDL^T in row
  * order (the masked factorization of the generated `constrained_dynamics`); `extra` (may be
- * null) adds to the right-hand side per row (the simulator's Baumgarte terms). Returns the
- * pivot ratio min_j d_j / G_jj over the held rows (1 when none holds). */
+ * null) adds to the right-hand side per row (the simulator's Baumgarte terms). A SUPPORT row
+ * is held; where it depends on the held rows before it (pivot ratio at most SC_SUPPORT_TOL)
+ * it is dropped from the factorization, and the held forces are then the least-norm ones.
+ * Returns the pivot ratio min_j d_j / G_jj over the held rows not dropped (1 when none). */
 static double sc_held_forces(const signed char *state, const double *G, const double *b,
                              const double *bounds, const double *extra, double *lam) {
   const int nc = SNAKECG_NC;
-  int held[SNAKECG_NC], m = 0, i, j, k;
+  int held[SNAKECG_NC], drop[SNAKECG_NC], m = 0, dropped = 0, i, j, k;
   double L[SNAKECG_NC * SNAKECG_NC], d[SNAKECG_NC], dinv[SNAKECG_NC], y[SNAKECG_NC], ratio = 1.0;
   for (i = 0; i < nc; ++i) {
     lam[i] = state[i] == SLIDE_POS ? bounds[i] : state[i] == SLIDE_NEG ? -bounds[i] : 0.0;
     if (!isfinite(lam[i])) lam[i] = 0.0;
-    if (state[i] == HELD) held[m++] = i;
+    if (state[i] == HELD || state[i] == SUPPORT) held[m++] = i;
   }
   for (i = 0; i < m; ++i) { /* right-hand side -(b_H + G_HF lam_F) - extra_H */
     double t = b[held[i]];
@@ -328,9 +396,16 @@ static double sc_held_forces(const signed char *state, const double *G, const do
       ld[k] = L[j + nc * k] * d[k];
       s -= L[j + nc * k] * ld[k];
     }
+    r = s / G[held[j] + nc * held[j]];
+    drop[j] = state[held[j]] == SUPPORT && fabs(r) <= SC_SUPPORT_TOL;
+    if (drop[j]) { /* dependent: out of the factorization */
+      d[j] = dinv[j] = 0.0;
+      for (i = j + 1; i < m; ++i) L[i + nc * j] = 0.0;
+      dropped = 1;
+      continue;
+    }
     d[j] = s;
     dinv[j] = 1.0 / s; /* one division per pivot */
-    r = s / G[held[j] + nc * held[j]];
     if (!(r >= ratio)) ratio = r; /* NaN propagates */
     for (i = j + 1; i < m; ++i) {
       double t = G[held[i] + nc * held[j]];
@@ -338,12 +413,8 @@ static double sc_held_forces(const signed char *state, const double *G, const do
       L[i + nc * j] = t * dinv[j];
     }
   }
-  for (i = 0; i < m; ++i) /* forward, diagonal and back substitution */
-    for (k = 0; k < i; ++k) y[i] -= L[i + nc * k] * y[k];
-  for (i = m - 1; i >= 0; --i) {
-    y[i] *= dinv[i];
-    for (k = i + 1; k < m; ++k) y[i] -= L[k + nc * i] * y[k];
-  }
+  sc_ldl_solve(m, L, dinv, y);
+  if (dropped) sc_least_norm(m, held, drop, G, L, dinv, y);
   for (i = 0; i < m; ++i) lam[held[i]] = y[i];
   return ratio;
 }

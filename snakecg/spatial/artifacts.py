@@ -4,8 +4,9 @@ As the planar models (:mod:`snakecg.artifacts`, :mod:`snakecg.native`): the pack
 ``snakecg_generated/spatial/na<N>/`` first, else the user cache's
 ``<cache>/spatial/<fingerprint>/na<N>/``, generated once under a file lock (SymPy is imported
 only then); every file is checked against the manifest's SHA-256 before use. The C compiles
-into ``<cache>/build/spatial-na<N>-<key>/model.so`` (no runtime core: the spatial engine comes
-later), and is called through the same batched drivers and backends.
+into ``<cache>/build/spatial-na<N>-<key>/model.so`` with the runtime core's complementarity
+solve (``forward.c``, for the contact analysis), and is called through the same batched
+drivers and backends.
 """
 
 from __future__ import annotations
@@ -136,9 +137,34 @@ def spatial_model_dir(n_joints: int, *, progress=None) -> tuple[Path, dict]:
         return folder, verify_spatial_dir(folder, n_joints)
 
 
+#: The runtime core's file that spatial models compile in (its complementarity solve) and
+#: the headers it includes.
+CORE_FILES = ("forward.c", "common.h")
+
+
+def core_manifest(manifest: dict) -> dict:
+    """The spatial manifest in the runtime core's terms (snakecg/core/layout.py): ``n_s`` is
+    ``n_v``, the rows are the contact, a wheel and a ground row per link."""
+    return {**manifest, "n_coordinates": manifest["nv"],
+            "n_constraints": 2 * manifest["n_links"] + 1}
+
+
+def _core_sources(manifest: dict) -> tuple[dict[str, bytes], str]:
+    from ..core.layout import header
+
+    here = Path(native.CORE_SOURCE).parent
+    return {name: (here / name).read_bytes() for name in CORE_FILES}, \
+        header(core_manifest(manifest))
+
+
 def _build_key(manifest: dict, cc: str) -> str:
     h = hashlib.sha256()
     h.update(manifest["build_hash"].encode())
+    core, layout = _core_sources(manifest)
+    for name, text in core.items():
+        h.update(name.encode() + hashlib.sha256(text).digest())
+    h.update(layout.encode())
+    h.update(" ".join(native.CORE_FLAGS).encode())
     h.update(json.dumps(manifest["files"], sort_keys=True).encode())
     h.update(native._compiler_id(cc).encode())
     h.update(" ".join(OPT_FLAGS + native.LARGE_FLAGS).encode())
@@ -175,9 +201,22 @@ def compile_spatial(folder: Path, manifest: dict, *, progress=None) -> Path:
                 native._run([cc, *flags, "-c", str(folder / name), "-o", str(obj)])
                 return obj
 
+            core, layout = _core_sources(manifest)
+            (tmp / "snakecg_layout.h").write_text(layout, encoding="utf-8")
+            for name, text in core.items():
+                (tmp / (name if name.endswith(".h") else f"snakecg_core_{name}")).write_bytes(text)
+
+            def one_core(name: str) -> Path:
+                obj = tmp / "snakecg_core_forward.o"
+                native._run([cc, *native.CORE_FLAGS, "-I", str(tmp), "-c",
+                             str(tmp / f"snakecg_core_{name}"), "-o", str(obj)])
+                return obj
+
             sources.sort(key=lambda n: -(folder / n).stat().st_size)
             with ThreadPoolExecutor(max_workers=max(1, os.cpu_count() or 1)) as pool:
-                objs = sorted(pool.map(one, sources), key=lambda o: o.name)
+                jobs = [pool.submit(one, name) for name in sources]
+                jobs.append(pool.submit(one_core, "forward.c"))
+                objs = sorted((j.result() for j in jobs), key=lambda o: o.name)
             tmp_lib = tmp / "model.so"
             native._run([cc, "-shared", *map(str, objs), "-o", str(tmp_lib), "-lm"])
             digest = hashlib.sha256(tmp_lib.read_bytes()).hexdigest()
@@ -191,7 +230,8 @@ def compile_spatial(folder: Path, manifest: dict, *, progress=None) -> Path:
 
 
 class SpatialCompiledBackend(native.CompiledBackend):
-    """The compiled batched drivers of a spatial model (no runtime core)."""
+    """The compiled batched drivers of a spatial model and the runtime core's solve
+    (``core``: :class:`snakecg.core.Core`, its ``core_forward`` only)."""
 
     def __init__(self, lib_path: Path, manifest: dict):  # noqa: D107 - as CompiledBackend
         self.path = lib_path
@@ -207,7 +247,10 @@ class SpatialCompiledBackend(native.CompiledBackend):
             self._fns[name] = fn
         native._check_signatures(lib_path, manifest, native._library_problems(self._lib,
                                                                                 manifest))
-        self.core = None
+        from ..core import Core
+
+        self.core = Core.__new__(Core)
+        Core.forward_only(self.core, self._lib, core_manifest(manifest))
 
 
 def load_spatial_backend(folder: Path, manifest: dict, *, prefer: str = "compiled",
