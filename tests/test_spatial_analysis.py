@@ -12,12 +12,10 @@ import json
 
 import numpy as np
 import pytest
+from test_spatial_contact import _embed, _flat, _reference
 
 import snakecg
 from snakecg.errors import InputError
-
-from test_spatial_contact import _embed, _flat, _reference  # noqa: E402
-from test_spatial_references import random_robot, rel  # noqa: E402
 
 SCENARIOS = ("frictionless", "wheels", "ideal_wheels")
 

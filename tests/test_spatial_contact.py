@@ -13,7 +13,7 @@ import snakecg
 
 pin = pytest.importorskip("pinocchio")
 
-from test_spatial_references import pinocchio_chain, random_robot, rel  # noqa: E402
+from test_spatial_references import pinocchio_chain, random_robot, rel
 
 
 def _call(model, name, **inputs):
@@ -64,7 +64,7 @@ def _reference(robot, q, v, tau, q_obj, v_obj, f_obj, rho, sc):
 
     def heading(i):
         """e, edot, eddot of the link's x axis projected on the ground, normalised."""
-        J, a_o, al, v_o, w, R, o = links[i]
+        _, _, al, _, w, R, _ = links[i]
         hv = R[:, 0]
         hd = np.cross(w, hv)
         hdd = np.cross(al, hv) + np.cross(w, hd)
@@ -81,9 +81,9 @@ def _reference(robot, q, v, tau, q_obj, v_obj, f_obj, rho, sc):
     rows, adot = [], []
     k = int(np.argmax(sc["contact_link"]))
     e, ed, edd = heading(k)
-    J, a_o, al, v_o, w, R, o = links[k]
+    J, a_o, _, v_o, _, R, o = links[k]
     side = sc["side"]
-    perp = lambda x: np.array([-x[1], x[0]])  # noqa: E731
+    perp = lambda x: np.array([-x[1], x[0]])
     n, nd, ndd = side * perp(e), side * perp(ed), side * perp(edd)
     psi, wo = q_obj[2], v_obj[2]
     Rz = np.array([[np.cos(psi), -np.sin(psi)], [np.sin(psi), np.cos(psi)]])
@@ -202,7 +202,8 @@ def test_flat_yaw_chain_is_the_planar_problem(rng, velocities):
         vs = rng.normal(size=6) if velocities else np.zeros(6)
         tau, f_obj = rng.normal(size=3), rng.normal(size=3)
         q, v, E = _embed(planar, qs, vs)
-        common = dict(tau=tau, q_obj=np.zeros(3), f_obj=f_obj, rho=np.zeros(2), placed=1.0)
+        common = {"tau": tau, "q_obj": np.zeros(3), "f_obj": f_obj, "rho": np.zeros(2),
+                  "placed": 1.0}
         if velocities:
             vo = rng.normal(size=3)
             po = _call(pm, "contact_system", q=qs, v=vs, v_obj=vo, **common, **si)

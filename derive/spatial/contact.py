@@ -36,7 +36,7 @@ import casadi as ca
 from ..algebra import Algebra
 from .symbols import SpatialSymbols
 
-__all__ = ["contact_functions", "CONTACT_FUNCTIONS"]
+__all__ = ["CONTACT_FUNCTIONS", "contact_functions"]
 
 #: The composed functions, in manifest order after the chain's own.
 CONTACT_FUNCTIONS = ("contact_system", "contact_system_at_rest")

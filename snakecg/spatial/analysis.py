@@ -25,12 +25,12 @@ import numpy as np
 from .._inputs import as_batch, broadcast_batches, check_batch_memory
 from ..core import STATUS_EXACT
 from ..errors import InputError
-from ..forward import ForwardResult, WHEEL_STATE_NAMES, _Columns, _core_batch
+from ..forward import WHEEL_STATE_NAMES, ForwardResult, _Columns, _core_batch
 from ..solver import check_input_range, default_max_iter
 from .model import SpatialModel
 from .scene import SpatialScene
 
-__all__ = ["SpatialSceneModel", "SpatialForwardResult", "SUPPORT"]
+__all__ = ["SUPPORT", "SpatialForwardResult", "SpatialSceneModel"]
 
 #: The row state of a ground row (snakecg/core/common.h).
 SUPPORT = 5
@@ -69,12 +69,12 @@ class SpatialForwardResult(ForwardResult):
     @property
     def reason(self):
         r = self._raw
-        flag = lambda c: "" if c == STATUS_EXACT else NO_ANSWER  # noqa: E731
+        flag = lambda c: "" if c == STATUS_EXACT else NO_ANSWER
         if r.ndim == 1:
             return flag(r[self._cols.status])
         return np.array([flag(c) for c in r[:, self._cols.status]], dtype=object)
 
-    def __getitem__(self, i) -> "SpatialForwardResult":
+    def __getitem__(self, i) -> SpatialForwardResult:
         if self._raw.ndim != 2:
             raise TypeError("a one-sample ForwardResult cannot be indexed")
         return SpatialForwardResult(self._raw[i], self._cols)
@@ -149,11 +149,10 @@ class SpatialSceneModel:
         if max_iter is not None and (isinstance(max_iter, bool) or not isinstance(
                 max_iter, (int, np.integer)) or max_iter < 1):
             raise InputError(f"max_iter must be an integer >= 1 or None, got {max_iter!r}")
-        named = {"q": (q, self.nq, f" = (joints + 7,) for a {self.n_joints}-joint spatial "
-                       "robot (x, y, z, qx, qy, qz, qw, joint angles)"),
+        named = {"q": (q, self.nq, (f" = (joints + 7,) for a {self.n_joints}-joint spatial "
+                                    "robot (x, y, z, qx, qy, qz, qw, joint angles)")),
                  "tau": (tau, self.n_joints, f" (one torque per joint, n_a = {self.n_joints})"),
-                 "v": (v, self.nv, f" = (joints + 6,) (base twist in the base frame, joint "
-                       "rates)"),
+                 "v": (v, self.nv, " = (joints + 6,) (base twist in the base frame, rates)"),
                  "v_obj": (v_obj, 3, ""), "f_obj": (f_obj, 3, ""), "q_obj": (q_obj, 3, ""),
                  "rho": (rho, 2, "")}
         parts, problems = {}, []

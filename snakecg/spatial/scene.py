@@ -16,7 +16,7 @@ from .._inputs import short_repr as _r
 from ..errors import InputError
 from .robot import SpatialRobot
 
-__all__ = ["SpatialScene", "SCENARIOS"]
+__all__ = ["SCENARIOS", "SpatialScene"]
 
 SCENARIOS = ("frictionless", "wheels", "ideal_wheels")
 
