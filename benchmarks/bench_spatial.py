@@ -222,12 +222,14 @@ def mass_matrix_table(args) -> None:
     # every core (the default SNAKECG_THREADS): wall time of batches of 8 x --batch
     os.environ["SNAKECG_THREADS"] = str(os.cpu_count() or 1)
     Qbig = np.concatenate([Q] * 8)
-    wall = np.inf
+    wall = cpu_all = np.inf
+    calls = max(1, args.calls // 8)
     for _ in range(args.repeat):
-        t = time.perf_counter()
-        for _ in range(max(1, args.calls // 8)):
+        t, c = time.perf_counter(), time.process_time()
+        for _ in range(calls):
             model.mass_matrix(Qbig)
-        wall = min(wall, (time.perf_counter() - t) / (max(1, args.calls // 8) * len(Qbig)))
+        wall = min(wall, (time.perf_counter() - t) / (calls * len(Qbig)))
+        cpu_all = min(cpu_all, (time.process_time() - c) / (calls * len(Qbig)))
     err = np.abs(Mc - M[-1]).max() / np.abs(Mc).max()
     cpp = min(best["cpp_local"], best["cpp_world"])
     print(f"\nmass matrix, {N_LINKS} links (n_v = {r.nv}), per configuration, best of "
@@ -236,6 +238,9 @@ def mass_matrix_table(args) -> None:
     print(f"{'snakecg batched (1 thread)':34}{best['snakecg'] * 1e9:10.0f}{'':>12}")
     print(f"{f'snakecg batched ({os.cpu_count()} threads, wall)':34}{wall * 1e9:10.0f}"
           f"{best['snakecg'] / wall:11.1f}x")
+    print(f"{f'  the same, CPU of all threads':34}{cpu_all * 1e9:10.0f}"
+          f"   (wall x threads / CPU: {wall * (os.cpu_count() or 1) / cpu_all:.2f}; above 1: "
+          "the cores were shared)")
     for key, label in (("cpp_local", "Pinocchio C++ crba (LOCAL)"),
                        ("cpp_world", "Pinocchio C++ crba (WORLD)"),
                        ("python", "Pinocchio pin.crba from Python")):

@@ -55,6 +55,26 @@ def test_flat_yaw_chain_gives_the_planar_numbers(rng, scenario):
     assert _close(b.normal, np.outer(np.ones(40), 9.81 * np.array(planar.mass)), 1e-12)
 
 
+def test_five_yaw_joints_give_the_planar_numbers(rng):
+    """Six links lying flat (three ground rows dependent, the linear algebra as matrices):
+    the planar scenario 2 to 1e-12, each link's weight on the ground."""
+    planar = snakecg.Robot(joints=5)
+    pm = snakecg.load(snakecg.Scene(robot=planar, scenario="wheels", contact_link=6))
+    sm = snakecg.load(snakecg.SpatialScene(_flat(planar), scenario="wheels", contact_link=6))
+    Q = np.c_[rng.normal(size=(30, 3)), np.deg2rad(rng.uniform(-60, 60, (30, 5)))]
+    T = rng.normal(size=(30, 5))
+    a = pm.forward(Q, T)
+    b = sm.forward(np.array([_embed(planar, qs, np.zeros(8))[0] for qs in Q]), T)
+    assert not np.any(b.singular)
+    scale = np.maximum(np.abs(a.lam).max(axis=1), np.abs(T).max(axis=1) / min(planar.length))
+    for i in range(30):
+        assert _close(b.lam[i, :7], a.lam[i], 1e-12 * scale[i])
+    for k in ("norm_lambda", "norm_a_obj", "norm_qdd", "sr"):
+        assert _close(getattr(b, k), getattr(a, k), 1e-12), k
+    assert np.array_equal(a.wheel_state, b.wheel_state)
+    assert _close(b.normal, np.full((30, 6), 9.81), 1e-12)
+
+
 def _enumerate(ref, sc, scenario, wheels, mu, nl):
     """The solution of the complementarity problem on ``ref``'s G_c and b by enumeration:
     every active set of the contact and the wheels, the ground rows held, the held forces the

@@ -129,10 +129,11 @@ def _reference(robot, q, v, tau, q_obj, v_obj, f_obj, rho, sc):
             "gap": gap, "s": s}, mass
 
 
-@pytest.mark.parametrize("joints", (1, 3))
+@pytest.mark.parametrize("joints", (1, 3, 5))
 def test_contact_system_against_pinocchio(rng, joints):
     """Random axes, placements, masses and inertias, a random state with velocities and a
-    given object: M, G_c, b, the free accelerations, M^-1 A^T, the gap and s to 1e-12."""
+    given object: M, G_c, b, the free accelerations, M^-1 A^T, the gap and s to 1e-12 (five
+    joints: the linear algebra as matrices, not unrolled)."""
     robot = random_robot(rng, joints + 1)
     model = snakecg.load(robot)
     for _ in range(3):

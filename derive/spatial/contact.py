@@ -24,7 +24,8 @@ runs along ``e`` from the frame origin. Rows, in order (``n_c = 2 n_l + 1``):
 
 Every row is ``A(q, q_obj) (v, v_obj)``; its ``Adot v`` is the derivative of ``A`` along the
 motion, ``d/dq (A V) G(q) v + d/dq_obj (A V) v_obj`` with ``qdot = G(q) v`` (the kinematic
-map), taken by CasADi's algorithmic differentiation of the same expressions. A chain of yaw
+map), taken by CasADi's algorithmic differentiation of the same expressions (one forward-mode
+directional derivative). A chain of yaw
 joints lying flat is the planar snake: these rows are then the planar rows (eqs. 8-13 of
 Reyes & Ma 2017) and the ground rows carry the weight.
 """
@@ -38,6 +39,9 @@ from .symbols import SpatialSymbols
 
 __all__ = ["CONTACT_FUNCTIONS", "contact_functions"]
 
+#: Up to this many links the linear algebra is unrolled into scalars (faster for small
+#: chains); beyond, it keeps its matrices.
+SX_MAX_LINKS = 4
 #: The composed functions, in manifest order after the chain's own.
 CONTACT_FUNCTIONS = ("contact_system", "contact_system_at_rest")
 
@@ -109,7 +113,6 @@ def _rows(fn, s: SpatialSymbols, q, K, q_obj, rho, sc):
 
 
 def _system(fn, s: SpatialSymbols, *, at_rest: bool, prefix: str) -> ca.Function:
-    alg = Algebra("sx", prefix)
     nl, nq, nv, na = s.n_links, s.nq, s.nv, s.n_joints
     K = ca.SX.sym("K", len(s.parameters))
     q = ca.SX.sym("q", nq)
@@ -144,36 +147,45 @@ def _system(fn, s: SpatialSymbols, *, at_rest: bool, prefix: str) -> ca.Function
     if at_rest:
         Adot_v = ca.SX(A.shape[0], 1)
     else:
+        # one directional derivative (forward mode) along (qdot, q_obj dot) = (G(q) v, v_obj)
         AV = ca.mtimes(A, Vall)
         G = fn["kinematic_map"](q)
-        Adot_v = (ca.mtimes(ca.jacobian(AV, q), ca.mtimes(G, v))
-                  + ca.mtimes(ca.jacobian(AV, qo), v_obj))
+        Adot_v = ca.jtimes(AV, ca.vertcat(q, qo), ca.vertcat(ca.mtimes(G, v), v_obj))
     obj = given * q_obj + placed * p_obj
     rho = given * sc["rho"] + placed * p_rho
     A, gap, s_along, Adot_v = (ca.substitute(x, ca.vertcat(qo, rh), ca.vertcat(obj, rho))
                                for x in (A, gap, s_along, Adot_v))
     M = fn["mass_matrix"](q, K)
     h = fn["bias_forces"](q, v, K)  # at rest: gravity alone
-    A_s, A_o = A[:, :nv], A[:, nv:]
-    B = ca.vertcat(ca.SX(6, na), ca.SX.eye(na))
-    M_factors, _ = alg.ldl(M)
-    X = alg.solve(M_factors, ca.horzcat(ca.mtimes(B, tau) - h, A_s.T))
-    qdd_free, Minv_AsT = X[:, 0], X[:, 1:]
-    I_obj = ca.vertcat(sc["object_mass"], sc["object_mass"], sc["object_inertia"])
-    Iinv_AoT = ca.mtimes(ca.diag(1 / I_obj), A_o.T)
-    Gc = ca.mtimes(A_s, Minv_AsT) + ca.mtimes(A_o, Iinv_AoT)       # eq. (14)
-    a_free = f_obj / I_obj
-    b = ca.mtimes(A_s, qdd_free) + ca.mtimes(A_o, a_free) + Adot_v  # eq. (13), lam = 0
     inputs = {"q": q, "v": v, "tau": tau, "q_obj": q_obj, "v_obj": v_obj, "f_obj": f_obj,
               "K": K, **sc, "contact_offset": contact_offset,
               "object_distance": object_distance, "placed": placed}
     if at_rest:
         del inputs["v"], inputs["v_obj"]
+    # the scalar part (rows, M, h) as one SX function; the linear algebra in the algebra of
+    # the chain's size: unrolled scalars for a few links, matrices (CasADi's ldl solve, a loop
+    # in the C) beyond, so that the code grows like n^2 and not like n^3
+    terms = ca.Function("terms", list(inputs.values()), [M, h, A, Adot_v, gap, s_along])
+    alg = Algebra("sx" if nl <= SX_MAX_LINKS else "mx", prefix)
+    args = {k: alg.sym(k, x.shape[0], x.shape[1]) for k, x in inputs.items()}
+    M, h, A, Adot_v, gap, s_along = terms(*args.values())
+    A_s, A_o = A[:, :nv], A[:, nv:]
+    B = ca.vertcat(alg.zeros(6, na), alg.eye(na))
+    M_factors, _ = alg.ldl(M)
+    X = alg.solve(M_factors, ca.horzcat(ca.mtimes(B, args["tau"]) - h, A_s.T))
+    qdd_free, Minv_AsT = X[:, 0], X[:, 1:]
+    I_obj = ca.vertcat(args["object_mass"], args["object_mass"], args["object_inertia"])
+    Iinv_AoT = ca.mtimes(ca.diag(1 / I_obj), A_o.T)
+    Gc = ca.mtimes(A_s, Minv_AsT) + ca.mtimes(A_o, Iinv_AoT)       # eq. (14)
+    a_free = args["f_obj"] / I_obj
+    b = ca.mtimes(A_s, qdd_free) + ca.mtimes(A_o, a_free) + Adot_v  # eq. (13), lam = 0
     outputs = {"M": M, "delassus": Gc, "b": b, "qdd_free": qdd_free, "a_obj_free": a_free,
                "qdd_from_lam": Minv_AsT, "a_obj_from_lam": Iinv_AoT, "gap": gap, "s": s_along}
-    outs = ca.cse([ca.densify(o) for o in outputs.values()])
+    outs = [ca.densify(o) for o in outputs.values()]
+    if alg.kind == "sx":
+        outs = ca.cse(outs)
     name = "contact_system_at_rest" if at_rest else "contact_system"
-    return ca.Function(prefix + name, list(inputs.values()), outs, list(inputs), list(outputs))
+    return ca.Function(prefix + name, list(args.values()), outs, list(args), list(outputs))
 
 
 def contact_functions(built: dict, s: SpatialSymbols, prefix: str) -> list[ca.Function]:
