@@ -99,8 +99,9 @@ class SpatialSceneModel:
         self.scene = scene
         self.robot_model = SpatialModel(scene.robot, backend=backend, progress=progress)
         rm = self.robot_model
-        self.backend = rm.backend
-        self.core = getattr(rm.backend, "core", None)
+        contact = getattr(rm.backend, "contact", None)
+        self.backend = contact(progress) if contact is not None else rm.backend
+        self.core = getattr(self.backend, "core", None)
         if self.core is None:
             raise InputError("the spatial analysis runs in the compiled runtime core; this "
                              "model has CasADi's in-process backend (load it with a C "

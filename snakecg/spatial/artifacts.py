@@ -4,9 +4,10 @@ As the planar models (:mod:`snakecg.artifacts`, :mod:`snakecg.native`): the pack
 ``snakecg_generated/spatial/na<N>/`` first, else the user cache's
 ``<cache>/spatial/<fingerprint>/na<N>/``, generated once under a file lock (SymPy is imported
 only then); every file is checked against the manifest's SHA-256 before use. The C compiles
-into ``<cache>/build/spatial-na<N>-<key>/model.so`` with the runtime core's complementarity
-solve (``forward.c``, for the contact analysis), and is called through the same batched
-drivers and backends.
+into ``<cache>/build/spatial-na<N>-chain-<key>/model.so``, and is called through the same
+batched drivers and backends; the contact problem (``contact_system``) with the runtime
+core's complementarity solve (``forward.c``) compiles into a second library on the first
+spatial scene.
 """
 
 from __future__ import annotations
@@ -157,27 +158,46 @@ def _core_sources(manifest: dict) -> tuple[dict[str, bytes], str]:
         header(core_manifest(manifest))
 
 
-def _build_key(manifest: dict, cc: str) -> str:
+#: The two libraries of a spatial model: the chain's functions (``load(robot)``), and the
+#: contact problem with the runtime core's solve (compiled on the first ``load(scene)``, so
+#: that a chain alone does not wait for it).
+PARTS = ("chain", "contact")
+
+
+def _part(manifest: dict, part: str) -> dict:
+    """The manifest restricted to the functions of one library."""
+    from snakecg_derive.spatial.catalog import SPATIAL_CONTACT_FUNCTIONS
+
+    keep = [f for f in manifest["functions"]
+            if (f["name"] in SPATIAL_CONTACT_FUNCTIONS) == (part == "contact")]
+    return {**manifest, "functions": keep}
+
+
+def _build_key(manifest: dict, cc: str, part: str) -> str:
     h = hashlib.sha256()
     h.update(manifest["build_hash"].encode())
-    core, layout = _core_sources(manifest)
-    for name, text in core.items():
-        h.update(name.encode() + hashlib.sha256(text).digest())
-    h.update(layout.encode())
-    h.update(" ".join(native.CORE_FLAGS).encode())
+    h.update(part.encode())
+    if part == "contact":
+        core, layout = _core_sources(manifest)
+        for name, text in core.items():
+            h.update(name.encode() + hashlib.sha256(text).digest())
+        h.update(layout.encode())
+        h.update(" ".join(native.CORE_FLAGS).encode())
     h.update(json.dumps(manifest["files"], sort_keys=True).encode())
     h.update(native._compiler_id(cc).encode())
     h.update(" ".join(OPT_FLAGS + native.LARGE_FLAGS).encode())
     return h.hexdigest()[:24]
 
 
-def compile_spatial(folder: Path, manifest: dict, *, progress=None) -> Path:
-    """Compile the folder's C files (in parallel) into a cached shared library, atomically
-    under a file lock; :class:`BuildError` with the command and stderr when it fails."""
+def compile_spatial(folder: Path, manifest: dict, *, progress=None, part: str = "chain") -> Path:
+    """Compile the C files of one library (:data:`PARTS`; in parallel) into a cached shared
+    library, atomically under a file lock; :class:`BuildError` with the command and stderr
+    when it fails."""
     cc = native.find_compiler()
     if cc is None:
         raise native._no_compiler()
-    out_dir = cache_dir() / "build" / f"spatial-na{manifest['n_joints']}-{_build_key(manifest, cc)}"
+    key = _build_key(manifest, cc, part)
+    out_dir = cache_dir() / "build" / f"spatial-na{manifest['n_joints']}-{part}-{key}"
     lib, stamp = out_dir / "model.so", out_dir / "model.so.sha256"
     if native._library_ok(lib, stamp):
         return lib
@@ -188,7 +208,7 @@ def compile_spatial(folder: Path, manifest: dict, *, progress=None) -> Path:
             return lib
         for stale in out_dir.glob("build-*"):
             shutil.rmtree(stale, ignore_errors=True)
-        sources = sorted(n for n in manifest["files"] if n.endswith(".c"))
+        sources = sorted(f"c/{f['name']}.c" for f in _part(manifest, part)["functions"])
         large = {f"c/{f['name']}.c" for f in manifest["functions"] if f.get("large")}
         tmp = Path(tempfile.mkdtemp(prefix="build-", dir=out_dir))
         try:
@@ -201,7 +221,7 @@ def compile_spatial(folder: Path, manifest: dict, *, progress=None) -> Path:
                 native._run([cc, *flags, "-c", str(folder / name), "-o", str(obj)])
                 return obj
 
-            core, layout = _core_sources(manifest)
+            core, layout = _core_sources(manifest) if part == "contact" else ({}, "")
             (tmp / "snakecg_layout.h").write_text(layout, encoding="utf-8")
             for name, text in core.items():
                 (tmp / (name if name.endswith(".h") else f"snakecg_core_{name}")).write_bytes(text)
@@ -215,7 +235,8 @@ def compile_spatial(folder: Path, manifest: dict, *, progress=None) -> Path:
             sources.sort(key=lambda n: -(folder / n).stat().st_size)
             with ThreadPoolExecutor(max_workers=max(1, os.cpu_count() or 1)) as pool:
                 jobs = [pool.submit(one, name) for name in sources]
-                jobs.append(pool.submit(one_core, "forward.c"))
+                if part == "contact":
+                    jobs.append(pool.submit(one_core, "forward.c"))
                 objs = sorted((j.result() for j in jobs), key=lambda o: o.name)
             tmp_lib = tmp / "model.so"
             native._run([cc, "-shared", *map(str, objs), "-o", str(tmp_lib), "-lm"])
@@ -230,14 +251,16 @@ def compile_spatial(folder: Path, manifest: dict, *, progress=None) -> Path:
 
 
 class SpatialCompiledBackend(native.CompiledBackend):
-    """The compiled batched drivers of a spatial model and the runtime core's solve
-    (``core``: :class:`snakecg.core.Core`, its ``core_forward`` only)."""
+    """The compiled batched drivers of a spatial chain; :meth:`contact` the library of its
+    contact problem with the runtime core's solve (compiled on first use)."""
 
-    def __init__(self, lib_path: Path, manifest: dict):  # noqa: D107 - as CompiledBackend
+    def __init__(self, lib_path: Path, manifest: dict, *, folder: Path | None = None,
+                 part: str = "chain", progress=None):  # noqa: D107 - as CompiledBackend
         self.path = lib_path
         self._lib = ctypes.CDLL(str(lib_path))
         self.prefix = manifest["prefix"]
-        self.signatures = {s["name"]: native._Signature(s) for s in manifest["functions"]}
+        mine = _part(manifest, part)
+        self.signatures = {s["name"]: native._Signature(s) for s in mine["functions"]}
         self._fns = {}
         for name in self.signatures:
             fn = getattr(self._lib, f"{self.prefix}batch_{name}")
@@ -245,12 +268,23 @@ class SpatialCompiledBackend(native.CompiledBackend):
                            ctypes.POINTER(ctypes.c_longlong), ctypes.POINTER(ctypes.c_void_p)]
             fn.restype = ctypes.c_int
             self._fns[name] = fn
-        native._check_signatures(lib_path, manifest, native._library_problems(self._lib,
-                                                                                manifest))
-        from ..core import Core
+        native._check_signatures(lib_path, manifest, native._library_problems(self._lib, mine))
+        self.core = None
+        if part == "contact":
+            from ..core import Core
 
-        self.core = Core.__new__(Core)
-        Core.forward_only(self.core, self._lib, core_manifest(manifest))
+            self.core = Core.__new__(Core)
+            Core.forward_only(self.core, self._lib, core_manifest(manifest))
+        self._folder, self._manifest, self._contact = folder, manifest, None
+
+    def contact(self, progress=None) -> SpatialCompiledBackend:
+        """The contact problem's library (``contact_system``, the runtime core's
+        ``core_forward`` as ``.core``), compiled once and cached."""
+        if self._contact is None:
+            lib = compile_spatial(self._folder, self._manifest, progress=progress,
+                                  part="contact")
+            self._contact = SpatialCompiledBackend(lib, self._manifest, part="contact")
+        return self._contact
 
 
 def load_spatial_backend(folder: Path, manifest: dict, *, prefer: str = "compiled",
@@ -259,7 +293,7 @@ def load_spatial_backend(folder: Path, manifest: dict, *, prefer: str = "compile
     if prefer == "compiled" and os.environ.get("SNAKECG_BACKEND", "") != "casadi":
         try:
             return SpatialCompiledBackend(compile_spatial(folder, manifest, progress=progress),
-                                          manifest)
+                                          manifest, folder=folder)
         except (BuildError, ArtifactError, OSError, AttributeError) as exc:
             _report_once(f"spatial{manifest['n_joints']}:{exc}",
                          "snakecg: using CasADi's in-process evaluation (slower) for the "
