@@ -57,9 +57,17 @@ class Core:
         self.optimal = OptimalKernel(lib, manifest["prefix"])
         """optimal.c's one-call optimal-torque query (:mod:`snakecg.core.optimal`)."""
 
+    @classmethod
+    def forward_library(cls, lib: ctypes.CDLL, manifest: dict) -> Core:
+        """The core of a library that has forward.c alone (a spatial model's contact
+        library): ``core_forward`` and the state rule, nothing of the simulation."""
+        core = cls.__new__(cls)
+        core.forward_only(lib, manifest)
+        return core
+
     def forward_only(self, lib: ctypes.CDLL, manifest: dict) -> None:
-        """forward.c's functions alone (a library with no other file of the core: a spatial
-        model's)."""
+        """Bind forward.c's functions (:meth:`forward_library`, and the first step of the
+        constructor)."""
         self.layout = Layout.of(manifest)
         fn = getattr(lib, f"{manifest['prefix']}core_forward")
         fn.argtypes = [_I, _P, _P, _I, _P, _P, _P]

@@ -273,8 +273,7 @@ class SpatialCompiledBackend(native.CompiledBackend):
         if part == "contact":
             from ..core import Core
 
-            self.core = Core.__new__(Core)
-            Core.forward_only(self.core, self._lib, core_manifest(manifest))
+            self.core = Core.forward_library(self._lib, core_manifest(manifest))
         self._folder, self._manifest, self._contact = folder, manifest, None
 
     def contact(self, progress=None) -> SpatialCompiledBackend:
