@@ -223,3 +223,72 @@ def test_flat_yaw_chain_is_the_planar_problem(rng, velocities):
         assert rel(so["qdd_from_lam"][:, :nc], E @ po["qdd_from_lam"]) <= 1e-12
         assert rel(so["a_obj_from_lam"][:, :nc], po["a_obj_from_lam"]) <= 1e-12
         assert abs(so["gap"] - po["gap"]) <= 1e-12 and abs(so["s"] - po["s"]) <= 1e-12
+
+
+def test_contact_system_at_rest_against_mujoco(rng):
+    """At rest, G_c and b from MuJoCo's mass matrix (mj_fullM), its point Jacobians (mj_jac)
+    and its gravity forces (qfrc_bias), in MuJoCo's own velocity coordinates (G_c and b do
+    not depend on them), with the rows written out here: to 1e-12."""
+    from test_spatial_references import mujoco_chain
+
+    robot = random_robot(rng, 4)
+    mujoco, mm = mujoco_chain(robot)
+    md = mujoco.MjData(mm)
+    model = snakecg.load(robot)
+    nl, nv = robot.n_links, robot.nv
+    perp = lambda x: np.array([-x[1], x[0]])  # noqa: E731
+    for _ in range(3):
+        q = robot.neutral()
+        quat = rng.normal(size=4)
+        q[3:7] = quat / np.linalg.norm(quat)
+        q[:3] = rng.normal(size=3)
+        q[7:] = rng.uniform(-1.5, 1.5, robot.joints)
+        tau = rng.normal(size=robot.joints)
+        q_obj, f_obj, rho = rng.normal(size=3), rng.normal(size=3), rng.normal(size=2) * 0.2
+        sc = _scene_inputs(model, rng, int(rng.integers(nl)))
+        out = _call(model, "contact_system_at_rest", q=q, tau=tau, q_obj=q_obj, f_obj=f_obj,
+                    rho=rho, placed=0.0, **sc)
+        md.qpos[:] = np.r_[q[:3], q[6], q[3:6], q[7:]]
+        md.qvel[:] = 0.0
+        mujoco.mj_forward(mm, md)
+        M = np.zeros((nv, nv))
+        try:
+            mujoco.mj_fullM(mm, md, M)  # MuJoCo 4: (model, data, dst)
+        except TypeError:
+            mujoco.mj_fullM(mm, M, md.qM)  # MuJoCo 3: (model, dst, qM)
+
+        def jac(i, local):
+            R, o = md.xmat[i + 1].reshape(3, 3), md.xpos[i + 1]
+            jp, jr = np.zeros((3, nv)), np.zeros((3, nv))
+            mujoco.mj_jac(mm, md, jp, jr, o + R @ local, i + 1)
+            return jp, jr, R, o
+
+        rows = []
+        k = int(np.argmax(sc["contact_link"]))
+        jo, jr, R, o = jac(k, np.zeros(3))
+        h = R[:, 0]
+        r = np.linalg.norm(h[:2])
+        e = h[:2] / r
+        n = sc["side"] * perp(e)
+        psi = q_obj[2]
+        Rz = np.array([[np.cos(psi), -np.sin(psi)], [np.sin(psi), np.cos(psi)]])
+        d = q_obj[:2] + Rz @ rho - o[:2]
+        de = (np.eye(2) - np.outer(e, e)) @ (-_skew(h) @ jr)[:2] / r  # edot = de v
+        dn = sc["side"] * np.vstack([-de[1], de[0]])
+        rows.append(np.r_[d @ dn - n @ jo[:2], n, n @ perp(Rz @ rho)])
+        for i in range(nl):
+            c = np.array(robot.com[i])
+            jp, _, Ri, _ = jac(i, c + np.array([sc["wheel_offset"][i], 0, 0]))
+            ei = Ri[:2, 0] / np.linalg.norm(Ri[:2, 0])
+            rows.append(np.r_[perp(ei) @ jp[:2], 0, 0, 0])
+        for i in range(nl):
+            jp, _, _, _ = jac(i, np.array(robot.com[i]))
+            rows.append(np.r_[jp[2], 0, 0, 0])
+        A = np.array(rows)
+        A_s, A_o = A[:, :nv], A[:, nv:]
+        I_obj = np.array([sc["object_mass"], sc["object_mass"], sc["object_inertia"]])
+        S = np.vstack([np.zeros((6, robot.joints)), np.eye(robot.joints)])
+        G = A_s @ np.linalg.solve(M, A_s.T) + A_o @ np.diag(1 / I_obj) @ A_o.T
+        b = A_s @ np.linalg.solve(M, S @ tau - md.qfrc_bias) + A_o @ (f_obj / I_obj)
+        assert rel(out["delassus"], G) <= 1e-12
+        assert rel(out["b"].ravel(), b) <= 1e-12
