@@ -413,7 +413,12 @@ static double sc_held_forces(const signed char *state, const double *G, const do
       L[i + nc * j] = t * dinv[j];
     }
   }
-  sc_ldl_solve(m, L, dinv, y);
+  for (i = 0; i < m; ++i) /* forward, diagonal and back substitution */
+    for (k = 0; k < i; ++k) y[i] -= L[i + nc * k] * y[k];
+  for (i = m - 1; i >= 0; --i) {
+    y[i] *= dinv[i];
+    for (k = i + 1; k < m; ++k) y[i] -= L[k + nc * i] * y[k];
+  }
   if (dropped) sc_least_norm(m, held, drop, G, L, dinv, y);
   for (i = 0; i < m; ++i) lam[held[i]] = y[i];
   return ratio;
