@@ -29,7 +29,7 @@ the compiled run's error against the reference.
     python benchmarks/bench_simulate.py --compare --joints 3 [--repeat 20]
 
 These pushes turn the contact link against the object, which it enters within the first
-milliseconds (docs/simulate.md, the contact check): every run here integrates the whole push
+milliseconds (docs/how-to/simulate.md, the contact check): every run here integrates the whole push
 with ``geometry_check="report"`` (the check finds it, then the integration goes on as
 without it). ``--check`` measures the check itself where it runs throughout: a push that
 stays physical (a symmetric W of 4 joints pushing with its middle link, or of 2 joints),

@@ -14,8 +14,8 @@ machine), the rounds interleaved so that all see the same load:
   call per configuration (``Convention::LOCAL``, its default, and ``WORLD``; the faster one is
   the anchor); its matrices are checked against snakecg's;
 * **Pinocchio Python**: ``pin.crba(model, data, q)`` per configuration;
-* **snakecg on two threads**: batches of ``8 --batch`` on every core by the wall clock (the
-  default ``SNAKECG_THREADS``), and split in two halves on two threads by hand, timed by
+* **snakecg on two threads**: batches of ``8 --batch`` on every core by the wall clock
+  (``SNAKECG_THREADS`` set to the core count), and split in two halves on two threads by hand, timed by
   each thread's own CPU time (``thread_time``): the slower thread's is the wall time on two
   free cores, a figure that the other jobs of a shared machine do not inflate.
 
@@ -223,7 +223,7 @@ def mass_matrix_table(args) -> None:
             print(f"  round {rnd + 1}: " + ", ".join(f"{k} {v * 1e9:.0f} ns"
                                                     for k, v in best.items()), flush=True)
         Mc = np.fromfile(work / "M.bin").reshape(r.nv, r.nv, order="F")
-    # every core (the default SNAKECG_THREADS): wall time of batches of 8 x --batch
+    # every core (SNAKECG_THREADS set to the core count): wall time of batches of 8 x --batch
     os.environ["SNAKECG_THREADS"] = str(os.cpu_count() or 1)
     Qbig = np.concatenate([Q] * 8)
     wall = cpu_all = np.inf

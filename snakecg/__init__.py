@@ -10,13 +10,12 @@ builders and C, folder ``generated/``) -> ``snakecg`` (this runtime: numbers in,
 (5, 5)
 """
 
-from .core import Data
+from .engine import Data
 from .errors import ArtifactError, BuildError, InputError, SingularConstraintsError, SnakecgError
 from .model import ForwardResult, RobotModel, SceneModel, load
 from .robot import SCENARIOS, Robot, Scene
 from .spatial import SpatialRobot, SpatialScene
-
-__version__ = "0.1.0"
+from ._version import __version__
 
 __all__ = [
     "Robot",

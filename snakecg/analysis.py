@@ -29,59 +29,17 @@ Method, per scenario:
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
 
 import numpy as np
 
 from ._inputs import integer
 from .errors import InputError
+from .extremes_result import METRICS, Extremes, sphere_directions
 from .forms_eig import Whitening as _Whitening
 from .forms_eig import range_geig as _range_geig
 from .forms_eig import signed as _signed
 
 __all__ = ["Extremes", "extremes", "com_polar", "joint_grid", "METRICS", "sphere_directions"]
-
-METRICS = ("norm_a_obj", "norm_qdd", "norm_lambda", "sr")
-
-
-@dataclass
-class Extremes:
-    """Best and worst value of each metric over the boundary of the input ellipsoid.
-
-    ``max[m]`` / ``min[m]`` are arrays ``(N,)`` (scalars for one configuration);
-    ``tau_max[m]`` / ``tau_min[m]`` the torques ``(N, n_a)`` attaining them
-    (``tau^T B^T M_s^-1 B tau = 1``). ``min_kept`` / ``tau_min_kept`` restrict the minimum
-    to torques that keep the contact (the unrestricted minimum of ``norm_a_obj`` and ``sr``
-    is 0: a torque that pulls away loses the contact).
-    """
-
-    max: dict = field(default_factory=dict)
-    min: dict = field(default_factory=dict)
-    tau_max: dict = field(default_factory=dict)
-    tau_min: dict = field(default_factory=dict)
-    min_kept: dict = field(default_factory=dict)
-    tau_min_kept: dict = field(default_factory=dict)
-    method: str = ""
-    #: Per configuration: the values are certified exact (bounded wheels, n_a <= 4: every
-    #: piece searched and the forward solver agrees at the returned torques); True for the
-    #: exact linear scenarios.
-    certified: object = None
-    pieces: int = 0
-    #: Per configuration: '' where answered, else why not, in one line (the values are NaN
-    #: and ``certified`` False there: e.g. a numerically singular mass matrix).
-    reason: object = None
-
-    def _squeeze(self):
-        for d in (self.max, self.min, self.tau_max, self.tau_min, self.min_kept,
-                  self.tau_min_kept):
-            for k in d:
-                d[k] = d[k][0]
-        if self.certified is not None:
-            self.certified = self.certified[0]
-        if self.reason is not None:
-            self.reason = self.reason[0]
-        return self
-
 
 #: Keywords of :meth:`SceneModel.extremes` and their limits (larger values would take hours).
 _EXTREMES_LIMITS = {"samples": (2, 100_000), "refine": (0, 1000), "starts": (1, 1000)}
@@ -107,25 +65,6 @@ def check_extremes_options(kwargs: dict) -> None:
                                                                for m in refined)):
         raise InputError(f"refined must be a list of metric names (norm_a_obj, norm_qdd, "
                          f"norm_lambda, sr), got {refined!r:.60}")
-
-
-def sphere_directions(dim: int, count: int) -> np.ndarray:
-    """Quasi-uniform unit vectors in R^dim (deterministic): a circle grid for dim 2, a
-    Fibonacci sphere for dim 3, a seeded Gaussian sample otherwise."""
-    if dim == 1:
-        return np.array([[1.0], [-1.0]])
-    if dim == 2:
-        a = 2 * np.pi * np.arange(count) / count
-        return np.stack([np.cos(a), np.sin(a)], axis=1)
-    if dim == 3:
-        i = np.arange(count) + 0.5
-        z = 1 - 2 * i / count
-        r = np.sqrt(1 - z * z)
-        a = np.pi * (1 + 5**0.5) * i
-        return np.stack([r * np.cos(a), r * np.sin(a), z], axis=1)
-    rng = np.random.default_rng(12345)
-    d = rng.standard_normal((count, dim))
-    return d / np.linalg.norm(d, axis=1, keepdims=True)
 
 
 def _forms(model, qa, *, contact: bool):
@@ -364,10 +303,9 @@ def _quadratic_extremes_for(model, qa, scenario: str):
     """Quadratic extremes of the same robot/contact in another (linear) scenario."""
     if model.scene.scenario == scenario:
         return _quadratic_extremes(model, qa)
-    from .model import SceneModel
-
-    other = SceneModel(model.scene.replace(scenario=scenario, wheel_links=model.scene.wheel_links,
-                                           contact_offset=model.scene.contact_offset))
+    other = type(model)(model.scene.replace(scenario=scenario, wheel_links=model.scene.wheel_links,
+                                              contact_offset=model.scene.contact_offset),
+                        backend=model.backend_kind)
     return _quadratic_extremes(other, qa)
 
 

@@ -5,10 +5,9 @@ would dominate the C."""
 
 from __future__ import annotations
 
-import ctypes
-
 import numpy as np
 
+from .engine.binding import int64s, pointers
 from .errors import BuildError
 from .kernels import outputs_type
 
@@ -46,10 +45,9 @@ class BoundFunction:
                            else np.zeros(self.in_sizes[k]))
             outs = [np.zeros(r * c) for r, c in self.out_shapes]
             self._bufs = bufs
-            self._argp = (ctypes.c_void_p * len(bufs))(*[bufs[k].ctypes.data
-                                                          for k in self.in_names])
-            self._strides = (ctypes.c_longlong * len(bufs))()  # all zero: one sample
-            self._resp = (ctypes.c_void_p * len(outs))(*[o.ctypes.data for o in outs])
+            self._argp = pointers(bufs[k].ctypes.data for k in self.in_names)
+            self._strides = int64s(len(bufs))  # all zero: one sample
+            self._resp = pointers(o.ctypes.data for o in outs)
             self._outs = outs
             self._views = self._outputs([o if c == 1 else o.reshape(c, r).T
                                          for (r, c), o in zip(self.out_shapes, outs)])

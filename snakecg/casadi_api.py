@@ -11,7 +11,7 @@ reproduces what the runtime computes. ``casadi_function(name, bind=True)`` embed
 and places the object from ``q`` symbolically: a function of ``q`` and ``tau`` only, whose
 derivatives CasADi computes.
 
-The inputs, their meaning and the layout of ``K`` are documented in docs/casadi.md.
+The inputs, their meaning and the layout of ``K`` are documented in docs/how-to/casadi.md.
 """
 
 from __future__ import annotations
@@ -135,7 +135,7 @@ def _column(fname: str, k: str, val, size: int) -> np.ndarray:
 def function_inputs(model, name: str, q=None) -> dict[str, np.ndarray]:
     """Values of the inputs of ``name`` that the robot or scene fixes, by input name.
 
-    * ``K``: the robot's parameter vector (``model.parameters``, layout in docs/casadi.md);
+    * ``K``: the robot's parameter vector (``model.parameters``, layout in docs/how-to/casadi.md);
     * scene inputs (a :class:`~snakecg.SceneModel` only): ``contact_link`` (one-hot over the
       links), ``side`` (+1 left, -1 right), ``object_mass``, ``object_inertia``,
       ``wheel_offset`` (one per link), ``contact_offset``, ``object_distance``, and
@@ -189,7 +189,7 @@ def function_inputs(model, name: str, q=None) -> dict[str, np.ndarray]:
 
 
 def parameter_names(n_joints: int) -> list[str]:
-    """Names of the entries of ``K`` for ``n_joints`` joints, in order (docs/casadi.md):
+    """Names of the entries of ``K`` for ``n_joints`` joints, in order (docs/how-to/casadi.md):
     ``m1..m_nl, l1..l_nl, I1..I_nl, c1..c_nl`` (the raw link parameters), then the derived
     constants ``mtot``, ``beta1..beta_nl``, ``gamma{j}_{k}`` (``j <= k``, row by row) and
     ``Jrot1..Jrot_nl``."""

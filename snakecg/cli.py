@@ -5,7 +5,7 @@ that cannot be written, ...). Errors are printed on one line of standard error, 
 never with a traceback; warnings likewise. Progress goes to standard error: a line when a
 generation, a compilation or a stage of work starts and one when it ends, on every stream;
 bars only on a terminal; ``--quiet`` (or ``SNAKECG_PROGRESS=0``) silences it. The reference
-in docs/cli.md is generated from :func:`build_parser`.
+in docs/reference/cli.md is generated from :func:`build_parser`.
 """
 
 from __future__ import annotations
@@ -16,7 +16,7 @@ import re
 import sys
 import warnings
 
-from . import __version__
+from ._version import __version__
 from .errors import InputError, SnakecgError
 
 COMMANDS = ("generate", "show", "forward", "reproduce", "optimize", "simulate")

@@ -25,31 +25,18 @@ from __future__ import annotations
 
 import math
 import os
-import re
 from pathlib import Path
 
 from ._files import write_bytes
+from .c_text import STACK_LIMIT
+from .c_text import c_comment as _comment
+from .c_text import c_ident as _ident
 from .errors import InputError
 
 __all__ = ["export_library", "c_layout"]
 
-_IDENT = re.compile(r"^[A-Za-z_][A-Za-z0-9_]*$")
-#: Work arrays larger than this (in doubles) are allocated with malloc instead of the stack.
-STACK_LIMIT = 32768
 _TEMPLATES = ("header.h.j2", "eval.c.j2", "robot_params.h.j2", "robot_params.c.j2",
               "main.c.j2", "Makefile.j2")
-
-
-def _ident(text: str, what: str) -> str:
-    if not isinstance(text, str) or not _IDENT.match(text):
-        raise InputError(f"{what} {text!r} is not a C identifier; the model folder is damaged")
-    return text
-
-
-def _comment(text: str) -> str:
-    """Free text made safe for a C comment (no comment terminator, printable ASCII)."""
-    safe = "".join(ch if 32 <= ord(ch) < 127 else "?" for ch in str(text))
-    return safe.replace("*/", "* /").replace("/*", "/ *")
 
 
 def _num(x: float) -> str:

@@ -1,7 +1,7 @@
 """The forward analysis of a scene (eqs. 12-30): accelerations, constraint forces, active set,
 norms and the slippage ratio, for one sample or a batch.
 
-Every sample is solved by the compiled runtime core (:mod:`snakecg.core`): one C call for the
+Every sample is solved by the compiled runtime core (:mod:`snakecg.engine`): one C call for the
 whole batch. The rare samples it marks (dependent or weakly independent held rows, no
 convergence, an ill-conditioned mass matrix, an impossible result), and every sample on the
 CasADi backend, take the reference path: the vectorized active-set iteration of
@@ -9,18 +9,18 @@ CasADi backend, take the reference path: the vectorized active-set iteration of
 :mod:`snakecg.rows` (rows factored directly, conditioning, physical checks).
 
 Results are rows of one float64 array (:class:`ForwardResult` views into it), laid out by
-:class:`snakecg.core.Layout`; ``out=`` reuses the array of an earlier result.
+:class:`snakecg.engine.Layout`; ``out=`` reuses the array of an earlier result.
 """
 
 from __future__ import annotations
 
-import ctypes
 
 import numpy as np
 
 from . import kernels
 from ._inputs import CHUNK_ROWS, as_batch, broadcast_batches, check_batch_memory
-from .core import STATUS_EXACT, Data
+from .engine import STATUS_EXACT, Data
+from .engine.binding import address, empty_pointers, int64s
 from .errors import InputError
 from .rows import finish as finish_rows
 from .rows import reason_of
@@ -90,7 +90,7 @@ class ForwardResult:
       where weakly independent rows are solved from the rows themselves, ``snakecg.rows``) and
       the mass matrix's; ``singular``: not an exact answer (conditioning 0): rows dependent even
       when factored directly (least-norm forces), a numerically singular mass matrix, or a
-      physically impossible result (docs/scenarios.md).
+      physically impossible result (docs/explanation/scenarios.md).
 
     The fields are views into one float64 array (``result.raw``, a row per sample);
     ``result[i]`` is sample ``i`` of a batch.
@@ -117,7 +117,7 @@ class ForwardResult:
     @property
     def raw(self) -> np.ndarray:
         """The result's rows (``(width,)`` or ``(N, width)``), laid out by
-        :class:`snakecg.core.Layout`."""
+        :class:`snakecg.engine.Layout`."""
         return self._raw
 
     @property
@@ -174,8 +174,12 @@ class ForwardResult:
         self._raw, self._cols = st["raw"], cols
 
     def to_dict(self) -> dict:
-        """JSON-ready dictionary (schema in docs/cli.md)."""
-        return {k: np.asarray(getattr(self, k)).tolist() for k in _ORDER if k != "gap"}
+        """JSON-ready dictionary (schema in docs/reference/cli.md): every result field and, per
+        sample, ``reason`` ('' for an exact answer, else why the sample is flagged or NaN)."""
+        out = {k: np.asarray(getattr(self, k)).tolist() for k in _ORDER if k != "gap"}
+        reason = self.reason
+        out["reason"] = reason if isinstance(reason, str) else [str(r) for r in reason]
+        return out
 
     def __repr__(self) -> str:
         if self._raw.ndim == 2:
@@ -228,7 +232,7 @@ def forward_one(model, core, q, tau, data):
     d = data
     own = d is None
     if own:
-        d = model.data
+        d = model.data()
         if not d.lock.acquire(False):  # another thread is using it: a workspace of our own
             d, own = model.create_data(), False
     try:
@@ -300,8 +304,8 @@ PARALLEL_MIN = 512
 
 def _core_batch(model, core, parts: dict, n: int, iters: int, raw: np.ndarray) -> int:
     """The C core over the batch (in chunks on threads for a large one): its status."""
-    from .core.layout import INPUTS
-    from .native import pool, threads
+    from .engine.layout import INPUTS
+    from .engine.threads import pool, threads
 
     zeros = model.zero_inputs
     arrays = []
@@ -314,16 +318,16 @@ def _core_batch(model, core, parts: dict, n: int, iters: int, raw: np.ndarray) -
     bounds = np.linspace(0, n, workers + 1).astype(np.int64)
 
     def job(lo, hi):
-        ptr = (ctypes.c_void_p * len(INPUTS))()
-        strides = (ctypes.c_longlong * len(INPUTS))()
+        ptr = empty_pointers(len(INPUTS))
+        strides = int64s(len(INPUTS))
         for k, a in enumerate(arrays):
             if a is None:
                 continue
             step = a.shape[1] if a.shape[0] > 1 else 0
             strides[k] = step
             ptr[k] = a.ctypes.data + 8 * lo * step
-        return core(hi - lo, model.scene_address, iters, ctypes.addressof(ptr),
-                    ctypes.addressof(strides), raw.ctypes.data + 8 * lo * raw.shape[1])
+        return core(hi - lo, model.scene_address, iters, address(ptr), address(strides),
+                    raw.ctypes.data + 8 * lo * raw.shape[1])
 
     if workers == 1:
         return job(0, n)

@@ -15,26 +15,19 @@ from types import MappingProxyType
 import numpy as np
 
 from . import artifacts, kernels
+from . import maps as _maps_mod
 from ._inputs import (
     as_batch,
     broadcast_batches,
     check_batch_memory,
 )
-from .core import Data, Layout
+from .engine import Data, Layout
 from .errors import InputError
+from .kinds import SCENE_MODEL
 from .forward import ForwardResult, _Columns, forward, forward_one
 from .native import ManifestMismatch, load_backend
 from .robot import Robot, Scene
-from .solver import (
-    ABSENT,
-    HELD,
-    LOST,
-    PIVOT_TOL,
-    REGULARIZATION,
-    SLIDE_NEG,
-    SLIDE_POS,
-    default_max_iter,
-)
+from .solver import default_max_iter
 
 __all__ = ["load", "RobotModel", "SceneModel", "ForwardResult"]
 
@@ -210,7 +203,7 @@ class RobotModel:
         m = np.asarray(self.robot.mass)
         return np.einsum("...ik,i->...k", P[..., :2], m) / m.sum()
 
-    # CasADi functions as public API (snakecg.casadi_api, docs/casadi.md) -------------------
+    # CasADi functions as public API (snakecg.casadi_api, docs/how-to/casadi.md) -------------------
     def casadi_function(self, name: str, *, bind: bool = False, **inputs):
         """The generated :class:`casadi.Function` ``name`` (e.g. ``"constrained_dynamics"``).
 
@@ -257,6 +250,9 @@ class SceneModel(RobotModel):
     """The coupled snake + object of a :class:`~snakecg.Scene`: forward analysis, maps,
     extremes over the input region, torque optimisation and simulation."""
 
+    #: What the feature packages check their ``model`` argument by (:mod:`snakecg.kinds`).
+    model_kind = SCENE_MODEL
+
     def __init__(self, scene: Scene, *, backend: str = "compiled", progress=None):
         if not isinstance(scene, Scene):
             raise InputError(f"scene must be a snakecg.Scene, got {type(scene).__name__}")
@@ -281,7 +277,7 @@ class SceneModel(RobotModel):
             bounds[1:] = np.asarray(scene.wheel_bounds())
         self.bounds = bounds
         # the runtime core: the scene's constants in one vector, the output columns, a
-        # default workspace (snakecg.core.Data)
+        # default workspace (snakecg.engine.data.Data)
         self.core = getattr(self.backend, "core", None)
         layout = self.core.layout if self.core is not None else Layout.of(self.manifest)
         self.columns = _Columns(layout)
@@ -297,8 +293,7 @@ class SceneModel(RobotModel):
         self.zero_inputs = {"v": np.zeros((1, self.n_coordinates)), "v_obj": np.zeros((1, 3)),
                             "f_obj": np.zeros((1, 3))}
         self._shape_q, self._shape_tau = (self.n_coordinates,), (self.n_joints,)
-        self.data = self.create_data().bind(self)
-        """The default workspace (used by one caller at a time; others get a fresh one)."""
+        self._data = self.create_data().bind(self)
         self.scene_inputs = MappingProxyType({
             "K": self.parameters, "contact_link": onehot, "side": self._side,
             "object_mass": self._object_mass, "object_inertia": self._object_inertia,
@@ -336,9 +331,16 @@ class SceneModel(RobotModel):
         return o["q_obj"][:, :, 0], o["rho"][:, :, 0], o["contact_point"][:, :, 0]
 
     # forward -------------------------------------------------------------------------------
+    def data(self) -> Data:
+        """The model's own :class:`~snakecg.engine.data.Data` (every workspace of its steps;
+        used by one caller at a time: a second thread gets a fresh one, see
+        :meth:`create_data`)."""
+        return self._data
+
     def create_data(self) -> Data:
-        """A new workspace for this model (:class:`snakecg.core.Data`): give one to each
-        thread that calls :meth:`forward` on one sample at a high rate (``data=``)."""
+        """A new :class:`~snakecg.engine.data.Data` for this model (Pinocchio's rule: one per
+        thread): give one to each thread that calls :meth:`forward` on one sample at a high
+        rate (``data=``)."""
         return Data(self.core.layout if self.core is not None else Layout.of(self.manifest))
 
     def __getstate__(self):
@@ -357,7 +359,7 @@ class SceneModel(RobotModel):
         touching the contact link at ``contact_offset``). ``data``: a workspace from
         :meth:`create_data` (one per thread); ``out``: an earlier result of the same shape
         whose array is overwritten (no allocation). Solved in compiled code per sample
-        (:mod:`snakecg.core`); see :mod:`snakecg.forward`.
+        (:mod:`snakecg.engine`); see :mod:`snakecg.forward`.
         """
         core = self.core
         if (core is not None and v is None and v_obj is None and f_obj is None and q_obj is None
@@ -376,151 +378,23 @@ class SceneModel(RobotModel):
         return forward(self, q, tau, v=v, v_obj=v_obj, f_obj=f_obj, q_obj=q_obj, rho=rho,
                        max_iter=max_iter, data=data, out=out)
 
-    # linear maps ---------------------------------------------------------------------------
+    # linear maps (snakecg.maps) --------------------------------------------------------------
     def maps(self, q, *, contact: bool = True, wheel_state=None) -> dict[str, np.ndarray]:
-        """The paper's linear maps at rest for a given active set (default: everything held).
-
-        Keys (each ``(..., rows, cols)``): ``qdd_from_tau`` (eq. 22), ``qdd_from_f_obj``
-        (eq. 23), ``a_obj_from_tau`` (eq. 24), ``a_obj_from_f_obj`` (eq. 25),
-        ``lam_from_tau``/``lam_from_f_obj`` (eq. 17), ``xi_tau`` (eq. 28), ``omega_tau``
-        (eq. 29), ``lambda_form_tau`` (``lam^T G_c lam`` as a form in ``tau``),
-        ``input_metric`` (``B^T M_s^-1 B``, eq. 31 corrected), ``projector_constrained``
-        (eq. 14), ``projector_orthogonal`` (eq. 19), ``delassus`` (``G_c``), plus the
-        ``*_offset`` vectors produced by sliding wheels' fixed forces and ``w_*`` maps of the
-        rows' accelerations. ``pivot_ratio`` and ``singular``: the held rows were dependent;
-        such samples are re-evaluated with a tiny Tikhonov term (least-norm forces, as in
-        ``forward``).
-        """
-        if not isinstance(contact, (bool, np.bool_)):
-            raise InputError(f"contact must be True or False, got {contact!r:.60}")
-        if wheel_state is not None and not isinstance(wheel_state, str) and not (
-                isinstance(wheel_state, (list, tuple, np.ndarray))
-                and all(isinstance(w, (str, np.str_)) for w in wheel_state)):
-            raise InputError(f"wheel_state must be None, a state name or a list of "
-                             f"{self.n_links} of them, got {wheel_state!r:.60}")
-        qa, batched = self._q(q)
-        n = qa.shape[0]
-        self._check_memory("maps", n, ["place_object", "interaction_maps"])
-        state = np.where(self.present, HELD, ABSENT).astype(np.int8)
-        if not contact:
-            state[0] = LOST
-        if wheel_state is not None:
-            ws = [wheel_state] if isinstance(wheel_state, str) else list(wheel_state)
-            if len(ws) != self.n_links:
-                raise InputError(f"wheel_state must list {self.n_links} link states (one per"
-                                 f" link: 'stick', 'slide+', 'slide-', or 'none' without a"
-                                 f" wheel), got {wheel_state!r}")
-            codes = {"stick": HELD, "slide+": SLIDE_POS, "slide-": SLIDE_NEG}
-            for i, s in enumerate(ws):
-                if self.present[i + 1] and s not in codes:
-                    raise InputError(f"wheel_state[{i}] must be 'stick', 'slide+' or 'slide-'"
-                                     f" (link {i + 1} has a wheel), got {s!r}")
-                if not self.present[i + 1]:
-                    if s not in ("none", *codes):
-                        raise InputError(f"wheel_state[{i}] must be a wheel state ('none' for"
-                                         f" link {i + 1}, which has no wheel), got {s!r}")
-                    continue
-                state[i + 1] = codes[s]
-        out = self._maps(qa, n, state)
-        return out if batched else {k: v[0] for k, v in out.items()}
+        """The paper's linear maps at rest for a given active set (default: everything held);
+        see :func:`snakecg.maps.maps`."""
+        return _maps_mod.maps(self, q, contact=contact, wheel_state=wheel_state)
 
     def state_maps(self, qa, state) -> dict[str, np.ndarray]:
-        """:meth:`maps` of a checked batch ``qa`` for the row states ``state`` (``(n_c,)``
-        solver codes, :mod:`snakecg.solver`), every sample batched."""
-        return self._maps(qa, qa.shape[0], np.asarray(state, dtype=np.int8))
+        """:meth:`maps` of a checked batch for row states (:func:`snakecg.maps.state_maps`)."""
+        return _maps_mod.state_maps(self, qa, state)
 
     def state_forms(self, qa, state) -> dict[str, np.ndarray]:
-        """The metrics' quadratic forms in ``tau`` at rest (generated ``metric_forms``) of a
-        checked batch ``qa`` for the row states ``state``; dependent held rows regularised."""
-        return self._metric_forms(qa, qa.shape[0], np.asarray(state, dtype=np.int8))
+        """The metrics' quadratic forms at rest (:func:`snakecg.maps.state_forms`)."""
+        return _maps_mod.state_forms(self, qa, state)
 
     def at_rest(self, fname: str, qa, *free_args):
-        """Evaluate a generated at-rest function (``interaction_maps``, ``metric_forms``,
-        ``metric_extremes``) on a checked batch ``qa`` at the scene's placement: ``free_args``
-        are its inputs after ``wheel_offset`` up to ``regularization`` (0). Returns the inputs
-        and the outputs by name."""
-        return self._at_rest(fname, qa, qa.shape[0], *free_args)
-
-    def _maps(self, qa, n, state):
-        from .solver import _free_and_fixed
-
-        free, lam_fixed = _free_and_fixed(state[None, :], self.bounds)
-        args, raw = self._at_rest("interaction_maps", qa, n, free[0], lam_fixed[0])
-        res = {}
-        for name_, o in raw.items():
-            if name_ == "pivot_ratio":  # the only scalar (a 1x1 map is still a matrix)
-                res[name_] = o[:, 0, 0].copy()
-            elif o.shape[2] == 1 and name_.endswith("offset"):
-                res[name_] = np.ascontiguousarray(o[:, :, 0])
-            else:
-                res[name_] = np.ascontiguousarray(o)
-        # dependent held rows: re-solve those samples with the solver's Tikhonov term
-        finite = np.all(np.isfinite(res["lam_from_tau"].reshape(n, -1)), axis=1)
-        singular = ~(res["pivot_ratio"] > PIVOT_TOL) | ~finite
-        if np.any(singular):
-            sub = np.flatnonzero(singular)
-            scale = np.abs(np.diagonal(res["delassus"][sub], axis1=1, axis2=2)).max(axis=1)
-            reg = (REGULARIZATION * np.maximum(scale, 1e-300)).reshape(-1, 1)
-            sub_args = {k: a[sub] if a.ndim == 2 else a for k, a in args.items()}
-            again = self._named("interaction_maps", len(sub), **{**sub_args,
-                                                                  "regularization": reg})
-            for name_, o in again.items():
-                if name_ != "pivot_ratio":
-                    res[name_][sub] = o.reshape(res[name_][sub].shape)
-        res["singular"] = singular
-        return res
-
-    def _at_rest(self, fname: str, qa, n: int, *free_args):
-        """Evaluate a generated at-rest function (``interaction_maps``, ``metric_forms``,
-        ``metric_extremes``) at the scene's placement of the object.
-
-        ``free_args`` are the inputs that follow ``wheel_offset`` up to ``regularization``
-        (the held-row masks, fixed forces, in signature order); ``regularization`` is 0.
-        Returns the inputs ``{name: array}`` and ``{output name: (n, rows, cols) array}``.
-        """
-        q_obj, rho, _ = self._place(qa, n)
-        names = self.backend.signatures[fname].in_names
-        tail = names[names.index("wheel_offset") + 1: names.index("regularization")]
-        if len(tail) != len(free_args):
-            raise InputError(f"{fname} takes {', '.join(tail)} after wheel_offset")
-        args = {"q": self._arg(qa, n), "K": self.parameters,
-                "contact_link": self._contact_link, "side": self._side,
-                "object_mass": self._object_mass, "object_inertia": self._object_inertia,
-                "q_obj": self._arg(q_obj, n), "rho": self._arg(rho, n),
-                "wheel_offset": self._wheel_offset, **dict(zip(tail, free_args)),
-                "regularization": np.zeros(1)}
-        args = {k: np.ascontiguousarray(a, dtype=float) for k, a in args.items()}
-        outs = self._named(fname, n, **args)
-        return args, outs.as_dict()
-
-    def _metric_forms(self, qa, n, state):
-        """Quadratic forms of the metrics at rest (generated ``metric_forms``), batched.
-
-        Samples whose held rows are dependent fall back to :meth:`_maps` (regularised).
-        """
-        from .solver import _free_and_fixed
-
-        free, _ = _free_and_fixed(state[None, :], self.bounds)
-        _, raw = self._at_rest("metric_forms", qa, n, free[0])
-        res = {}
-        for name_, o in raw.items():
-            if name_ == "pivot_ratio":  # the only scalar (a 1x1 form is still a matrix)
-                res[name_] = o[:, 0, 0].copy()
-            elif name_ == "contact_from_tau":
-                res[name_] = np.ascontiguousarray(o[:, 0, :])
-            else:
-                res[name_] = np.ascontiguousarray(o)
-        finite = np.all(np.isfinite(res["omega_tau"].reshape(n, -1)), axis=1)
-        singular = ~(res["pivot_ratio"] > PIVOT_TOL) | ~finite
-        if np.any(singular):
-            sub = np.flatnonzero(singular)
-            again = self._maps(np.ascontiguousarray(qa[sub] if qa.shape[0] > 1 else qa),
-                               len(sub), state)
-            for k in ("omega_tau", "xi_tau", "lambda_form_tau", "input_metric"):
-                res[k][sub] = again[k]
-            res["contact_from_tau"][sub] = again["lam_from_tau"][:, 0, :]
-        res["singular"] = singular
-        return res
+        """A generated at-rest function at the scene's placement (:func:`snakecg.maps.at_rest`)."""
+        return _maps_mod.at_rest(self, fname, qa, *free_args)
 
     # analysis (snakecg.analysis) -------------------------------------------------------------
     def extremes(self, q, **kwargs):
@@ -575,7 +449,7 @@ class SceneModel(RobotModel):
         ``direction``, ``a_min``, ``a_obj``, ``allow_slide``.
         Returns an :class:`~snakecg.optimize.OptimizeResult` (``tau``, ``status`` with
         ``reason``, ``analysis`` = the forward result at ``tau``); see
-        :func:`snakecg.optimize.optimize` and docs/optimize.md.
+        :func:`snakecg.optimize.optimize` and docs/how-to/optimize.md.
         """
         run = _LAZY.get("optimize")
         if run is None:  # imported once (an import inside every call costs microseconds)
@@ -597,7 +471,7 @@ class SceneModel(RobotModel):
         breaking away and sticking again are events. Returns a
         :class:`~snakecg.simulate.Trajectory` (``t``, ``q``, ``v``, ``q_obj``, ``v_obj``,
         ``lam``, ``contact``, ``wheel_state``, ... and ``summary``); keywords and details in
-        :func:`snakecg.simulate.simulate` and docs/simulate.md.
+        :func:`snakecg.simulate.simulate` and docs/how-to/simulate.md.
         """
         from .simulate import simulate
 
@@ -610,7 +484,7 @@ class SceneModel(RobotModel):
         generated functions, multi-started from a coarse grid, under joint limits and (with
         ``feasible=True``) no self-intersection or object penetration. Returns an
         :class:`~snakecg.shape.OptimizeShapeResult`; see :func:`snakecg.shape.optimize_shape`
-        and docs/shapes.md.
+        and docs/how-to/shapes.md.
         """
         from .shape import optimize_shape
 

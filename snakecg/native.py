@@ -15,7 +15,6 @@ Both return, for a batch of ``n``, arrays of shape ``(n, rows, cols)`` per outpu
 
 from __future__ import annotations
 
-import ctypes
 import hashlib
 import json
 import os
@@ -31,6 +30,9 @@ import numpy as np
 
 from .artifacts import cache_dir, held_lock, make_private_dir
 from .bound import BoundFunction
+from .engine.binding import Library, empty_pointers, int64s, pointers
+from .engine.threads import PARALLEL_MIN as _PARALLEL_MIN
+from .engine.threads import pool, threads
 from .errors import ArtifactError, BuildError
 
 __all__ = [
@@ -50,20 +52,20 @@ LARGE_FLAGS = ["-fno-tree-pre", "-fno-code-hoisting"]
 SETUP_FUNCTIONS = frozenset({"derived_parameters"})
 SETUP_FLAGS = ["-O1", "-fPIC"]
 #: The runtime core's own C files (small loops over the model's sizes, known when compiling):
-#: -O3 unrolls and vectorizes them, about 5 % of a batched `forward` (docs/performance.md).
+#: -O3 unrolls and vectorizes them, about 5 % of a batched `forward`
+#: (docs/reference/performance.md).
 CORE_FLAGS = ["-O3", "-fPIC"]
 _warned: set[str] = set()
-#: The runtime core compiled into every model's library (fixed C files of the runtime).
-CORE_SOURCE = Path(__file__).resolve().parent / "core" / "forward.c"
-CORE_SOURCES = tuple(CORE_SOURCE.with_name(name)
-                     for name in ("forward.c", "integrate.c", "settle.c", "run.c", "sphere.c",
-                                  "pieces.c", "maps.c", "optimal.c"))
-#: The header they share (work arrays, contact_system, the held rows' forces).
-CORE_HEADER = CORE_SOURCE.with_name("common.h")
-#: Every header of the runtime core (dense.h, optimal.h: the small dense algebra, the query's
-#: types and the certificate of optimal.c; geometry.h: the simulation's contact check).
-CORE_HEADERS = (CORE_HEADER, *(CORE_SOURCE.with_name(name)
-                               for name in ("dense.h", "optimal.h", "geometry.h")))
+#: The engine compiled into every model's library (fixed C files of the runtime, each named
+#: after the step it does; snakecg/engine/engine.h lists what each defines).
+ENGINE_DIR = Path(__file__).resolve().parent / "engine"
+CORE_SOURCES = tuple(ENGINE_DIR / name
+                     for name in ("contact.c", "forward.c", "integrate.c", "events.c", "run.c",
+                                  "geometry.c", "sphere.c", "pieces.c", "maps.c", "qp.c",
+                                  "certificate.c", "optimal.c", "max_sr.c", "push.c",
+                                  "wheel_states.c"))
+#: Its headers: engine.h (the types and prototypes), linalg.h (the small dense linear algebra).
+CORE_HEADERS = (ENGINE_DIR / "engine.h", ENGINE_DIR / "linalg.h")
 #: Up to this batch size the outputs of a compiled call share one buffer (see CompiledBackend).
 _SMALL_BATCH = 64
 
@@ -88,8 +90,8 @@ def _compiler_id(cc: str) -> str:
 
 
 def _core_sources(manifest: dict) -> tuple[dict[str, bytes], str]:
-    """The runtime core's C files (snakecg/core/*.c) by name and its layout header."""
-    from .core.layout import header
+    """The runtime core's C files (snakecg/engine/*.c) by name and its layout header."""
+    from .engine.layout import header
 
     return ({p.name: p.read_bytes() for p in (*CORE_SOURCES, *CORE_HEADERS)},
             header(manifest))
@@ -297,60 +299,16 @@ def _check_signatures(where, manifest: dict, problems: list[str]) -> None:
 
 def _library_problems(lib, manifest: dict) -> list[str]:
     """Compare the manifest with CasADi's own signature functions in the compiled library."""
-    ci = ctypes.c_longlong
     problems = []
     for sig in manifest["functions"]:
         sym = sig["symbol"]
         try:
-            f_in, f_out = getattr(lib, f"{sym}_n_in"), getattr(lib, f"{sym}_n_out")
-            sp_in, sp_out = getattr(lib, f"{sym}_sparsity_in"), getattr(lib, f"{sym}_sparsity_out")
+            n_in, n_out, size_in, size_out = lib.signature(sym)
         except AttributeError:
             problems.append(f"{sym} is not in the library")
             continue
-        for f in (f_in, f_out):
-            f.restype, f.argtypes = ci, []
-        for f in (sp_in, sp_out):
-            f.restype, f.argtypes = ctypes.POINTER(ci), [ci]
-
-        def size(fn):
-            def get(k):
-                p = fn(k)
-                return (int(p[0]), int(p[1])) if p else (-1, -1)
-            return get
-
-        problems += _signature_problems(sig, int(f_in()), int(f_out()), size(sp_in),
-                                        size(sp_out))
+        problems += _signature_problems(sig, n_in, n_out, size_in, size_out)
     return problems
-
-
-#: Batches at least this large are split across threads.
-_PARALLEL_MIN = 2048
-_POOL = None
-
-
-def _threads() -> int:
-    raw = os.environ.get("SNAKECG_THREADS")
-    if raw:
-        try:
-            return max(1, int(raw))
-        except ValueError:
-            return 1
-    return max(1, min(os.cpu_count() or 1, 8))
-
-
-def threads(n: int, parallel_min: int) -> int:
-    """Threads for a batch of ``n``: ``SNAKECG_THREADS`` (default: the cores, at most 8) when
-    ``n`` reaches ``parallel_min`` samples per thread, else fewer (at least 1)."""
-    return max(1, min(_threads(), n // max(1, parallel_min)))
-
-
-def pool() -> ThreadPoolExecutor:
-    """The shared worker threads of batched calls (ctypes releases the GIL in C)."""
-    global _POOL
-    if _POOL is None:
-        _POOL = ThreadPoolExecutor(max_workers=_threads(), thread_name_prefix="snakecg")
-    return _POOL
-
 
 
 def _check_input(sig: _Signature, k: int, a: np.ndarray, n: int, size: int) -> None:
@@ -366,31 +324,22 @@ def _check_input(sig: _Signature, k: int, a: np.ndarray, n: int, size: int) -> N
 
 
 class CompiledBackend:
-    """Calls the compiled batched drivers ``<prefix>batch_<function>`` through ctypes."""
+    """Calls the compiled batched drivers ``<prefix>batch_<function>`` (bound in
+    :mod:`snakecg.engine.binding`)."""
 
     kind = "compiled"
 
     def __init__(self, lib_path: Path, manifest: dict):
         self.path = lib_path
-        self._lib = ctypes.CDLL(str(lib_path))
         self.prefix = manifest["prefix"]
+        self._lib = Library(lib_path, self.prefix)
         self.signatures = {s["name"]: _Signature(s) for s in manifest["functions"]}
-        self._fns = {}
-        for name in self.signatures:
-            fn = getattr(self._lib, f"{self.prefix}batch_{name}")
-            fn.argtypes = [
-                ctypes.c_longlong,
-                ctypes.POINTER(ctypes.c_void_p),
-                ctypes.POINTER(ctypes.c_longlong),
-                ctypes.POINTER(ctypes.c_void_p),
-            ]
-            fn.restype = ctypes.c_int
-            self._fns[name] = fn
+        self._fns = {name: self._lib.batch(name) for name in self.signatures}
         _check_signatures(lib_path, manifest, _library_problems(self._lib, manifest))
-        from .core import Core
+        from .engine import Core
 
         self.core = Core(self._lib, manifest)
-        """The runtime core's ``core_forward`` (snakecg.core), compiled into the library."""
+        """The runtime core's ``core_forward`` (snakecg.engine), compiled into the library."""
 
     def __call__(self, name: str, n: int, inputs: list[np.ndarray]) -> list[np.ndarray]:
         """Evaluate ``name`` on ``n`` samples.
@@ -400,8 +349,8 @@ class CompiledBackend:
         """
         sig = self.signatures[name]
         n_in = len(sig.in_sizes)
-        argp = (ctypes.c_void_p * n_in)()
-        strides = (ctypes.c_longlong * n_in)()
+        argp = empty_pointers(n_in)
+        strides = int64s(n_in)
         # Reading an array's address (``a.ctypes.data``) costs about 1 us, as much as the C call
         # for one sample, so broadcast (1-D) inputs are packed into one buffer and small
         # batches get one output buffer: one address lookup each instead of one per array.
@@ -422,14 +371,13 @@ class CompiledBackend:
         if n <= _SMALL_BATCH:
             buf = np.empty(n * sig.out_offsets[-1])
             base = buf.ctypes.data
-            resp = (ctypes.c_void_p * len(sig.out_shapes))(
-                *[base + 8 * n * o for o in sig.out_offsets[:-1]])
+            resp = pointers(base + 8 * n * o for o in sig.out_offsets[:-1])
             outs = [buf[n * o: n * (o + r * c)].reshape(n, c, r)
                     for o, (r, c) in zip(sig.out_offsets, sig.out_shapes)]
         else:
             outs = [np.empty((n, c, r)) for (r, c) in sig.out_shapes]
-            resp = (ctypes.c_void_p * len(outs))(*[o.ctypes.data for o in outs])
-        if n >= _PARALLEL_MIN and _threads() > 1:
+            resp = pointers(o.ctypes.data for o in outs)
+        if threads(n, _PARALLEL_MIN) > 1:
             status = self._parallel(name, n, argp, strides, resp, sig)
         else:
             status = self._fns[name](n, argp, strides, resp)
@@ -441,9 +389,10 @@ class CompiledBackend:
         """Split a large batch into contiguous chunks evaluated on several threads.
 
         ctypes releases the GIL during the call and every driver call allocates its own work
-        arrays, so the chunks run truly in parallel (``SNAKECG_THREADS``, default: the cores).
+        arrays, so the chunks run truly in parallel (``SNAKECG_THREADS``; one thread by default:
+        :mod:`snakecg.engine.threads`).
         """
-        workers = _threads()
+        workers = threads(n, _PARALLEL_MIN)
         bounds = np.linspace(0, n, workers + 1).astype(np.int64)
         n_in, n_out = len(sig.in_sizes), len(sig.out_shapes)
         nnz = [r * c for r, c in sig.out_shapes]
@@ -451,10 +400,8 @@ class CompiledBackend:
         for lo, hi in zip(bounds[:-1], bounds[1:]):
             if hi <= lo:
                 continue
-            a = (ctypes.c_void_p * n_in)(*[(argp[k] or 0) + 8 * int(lo) * strides[k]
-                                           for k in range(n_in)])
-            r = (ctypes.c_void_p * n_out)(*[resp[k] + 8 * int(lo) * nnz[k]
-                                            for k in range(n_out)])
+            a = pointers((argp[k] or 0) + 8 * int(lo) * strides[k] for k in range(n_in))
+            r = pointers(resp[k] + 8 * int(lo) * nnz[k] for k in range(n_out))
             jobs.append((int(lo), int(hi - lo), a, r))
         fn = self._fns[name]
         results = list(pool().map(lambda j: (j[0], fn(j[1], j[2], strides, j[3])), jobs))
@@ -490,7 +437,6 @@ class CasadiBackend:
                 continue
             self._fns[sig["name"]] = f
         self._maps: dict[tuple[str, int], object] = {}
-        problems = []
         for sig in manifest["functions"]:
             f = self._fns.get(sig["name"])
             if f is None:

@@ -84,7 +84,7 @@ def piece(prim, bounds, p, states, kernel=None):
     Returns a dict with ``lam``, ``w``, ``qdd``, ``a_obj`` as ``(X, x0)`` and ``cond``
     ``(P, m, na + 1)``, ``flip`` ``(P, m)`` (the state code a row moves to across that facet,
     -1 for an unused slot; each pair's conditions come first) and ``row`` ``(P, m)`` (which
-    row). ``kernel``: the compiled path (:class:`snakecg.core.sphere.SphereKernel`), else
+    row). ``kernel``: the compiled path (:class:`snakecg.engine.sphere.SphereKernel`), else
     NumPy's.
     """
     if kernel is not None:
@@ -184,12 +184,12 @@ def explore(model, prim, qa, states, kernel=None):
     """Pieces meeting the sphere: ``(pairs_p, pairs_s)`` index arrays (configuration, state),
     the number of rounds, and the pieces' maps (:func:`piece`) and faces
     (:func:`~snakecg.sphere_kkt.faces`) built on the way, for those pairs in that order.
-    ``kernel``: the compiled faces (:class:`snakecg.core.sphere.SphereKernel`) or None."""
+    ``kernel``: the compiled faces (:class:`snakecg.engine.sphere.SphereKernel`) or None."""
     n, na = qa.shape[0], model.n_joints
     S = len(states)
     lookup, base = _state_lookup(states)
     # seeds: the states of a few directions, from the package's forward solver
-    from .analysis import sphere_directions
+    from .extremes_result import sphere_directions
 
     dirs = sphere_directions(na, {1: 2, 2: 4, 3: 6}.get(na, 12))
     taus = np.einsum("bij,kj->bki", prim["T"], dirs).reshape(-1, na)

@@ -48,8 +48,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from .core.sphere import MAX_DIM
-from .native import pool, threads
+from .engine.sphere import MAX_DIM
+from .engine.threads import pool, threads
 from .pieces import all_states, explore, forms, primitives
 from .solver import HELD
 from .sphere_kkt import per_config, piece_extremes, quad
@@ -181,7 +181,7 @@ def _chunk(model, qa, kernel):
 
 
 class _Kernel:
-    """A model's :class:`~snakecg.core.sphere.SphereKernel` with the candidates split over the
+    """A model's :class:`~snakecg.engine.sphere.SphereKernel` with the candidates split over the
     package's threads."""
 
     def __init__(self, sphere):
@@ -195,7 +195,7 @@ class _Kernel:
 
 def face_kernel(model):
     """The compiled faces and KKT candidates of ``model``'s library
-    (:mod:`snakecg.core.sphere`); None without a compiled core (NumPy's path then)."""
+    (:mod:`snakecg.engine.sphere`); None without a compiled core (NumPy's path then)."""
     core = getattr(model, "core", None)
     if core is None or model.n_joints > MAX_DIM:
         return None
@@ -210,7 +210,7 @@ def wheel_extremes(model, qa, chunk: int = 2048, compiled: bool = True):
     Returns an :class:`~snakecg.analysis.Extremes` with ``certified`` (N,) and ``pieces``
     (the number of (configuration, state) pieces meeting the sphere).
     """
-    from .analysis import METRICS, Extremes
+    from .extremes_result import METRICS, Extremes
 
     n, na = qa.shape[0], model.n_joints
     ex = Extremes(method="wheels: exact piecewise solve (every wheel state meeting the input "

@@ -1,7 +1,7 @@
 """Reproduce the paper's case studies: Figures 4-6 and Table 2 (``snakecg reproduce``).
 
 Every choice the paper leaves open is a named option here with the default documented in
-``docs/reproduction.md``; nothing is fitted to the published numbers.
+``docs/how-to/reproduction.md``; nothing is fitted to the published numbers.
 
 * Case study 1 (2 joints, Table 1, contact at the middle of link 1): maps over the torque
   plane of ``norm_a_obj``, ``norm_qdd`` and ``sr`` at the configuration of Fig. 4
@@ -44,7 +44,7 @@ REFINED = ("norm_a_obj", "sr", "norm_lambda")
 
 @dataclass(frozen=True)
 class ReproduceOptions:
-    """The readings taken where the paper is silent (see docs/reproduction.md)."""
+    """The readings taken where the paper is silent (see docs/how-to/reproduction.md)."""
 
     out: Path = Path("snakecg-output")
     kappas_case1: tuple = (1.0, 10.0, 100.0)

@@ -244,22 +244,26 @@ class Robot:
         axes, COMs on the links' axes) gives a planar :class:`Robot` (masses, joint-to-joint
         lengths, COM offsets, inertias about the joint axis), any other chain a
         :class:`~snakecg.SpatialRobot`; branches and other joints are refused naming the
-        element. Needs the ``urdf`` extra; see :mod:`snakecg.urdf`, docs/urdf.md and
-        docs/spatial.md."""
+        element. Needs the ``urdf`` extra; see :mod:`snakecg.urdf`, docs/how-to/urdf.md and
+        docs/how-to/spatial.md."""
         from .spatial.files import spatial_chain_or_planar
+        from .spatial.robot import SpatialRobot
         from .urdf import robot_from_urdf
 
         return spatial_chain_or_planar("urdf", path, name, lambda: robot_from_urdf(
-            path, tol=tol, name=name))
+            path, robot_type=cls, tol=tol, name=name), planar_type=cls,
+            spatial_type=SpatialRobot)
 
     @classmethod
     def from_mjcf(cls, path: str | Path, *, tol: float = 1e-6, name: str | None = None):
         """Read a serial chain of hinges on a free root from a MuJoCo XML file (MuJoCo's own
         parser, the ``mjcf`` extra): a planar :class:`Robot` when the chain is planar, else a
-        :class:`~snakecg.SpatialRobot`; see docs/spatial.md."""
+        :class:`~snakecg.SpatialRobot`; see docs/how-to/spatial.md."""
         from .spatial.files import spatial_chain_or_planar
+        from .spatial.robot import SpatialRobot
 
-        return spatial_chain_or_planar("mjcf", path, name, None, tol=tol)
+        return spatial_chain_or_planar("mjcf", path, name, None, planar_type=cls,
+                                       spatial_type=SpatialRobot, tol=tol)
 
     def __repr__(self) -> str:
         return f"Robot({_fields_repr(self, _ROBOT_REPR)})"

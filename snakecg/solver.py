@@ -156,7 +156,7 @@ def _tolerances(out):
     the magnitude of the torque. A row's own scale, not the sample's largest force: nearly
     dependent wheel rows carry huge pinning forces that cancel in the other rows, and must not
     widen their tolerance (the last term is the rounding level of those cancellations). The
-    compiled rule (``sc_next_states``, snakecg/core/common.h) is this one, operation for
+    compiled rule (``sc_next_states``, snakecg/engine/contact.c) is this one, operation for
     operation.
     """
     lam, w, G = out["lam"], out["w"], out["delassus"]

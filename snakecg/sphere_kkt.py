@@ -97,7 +97,7 @@ def faces(cond, used, na, kernel=None):
     """Every face (``|S| < na``) of every pair that meets the sphere, as one :class:`Faces`
     batch per ``|S|`` (index 0: the whole sphere). ``used`` (P, m): the pair's real conditions
     (unused slots ``0 . u + 1`` are never at equality). ``kernel``: the compiled path
-    (:class:`snakecg.core.sphere.SphereKernel`), else NumPy's."""
+    (:class:`snakecg.engine.sphere.SphereKernel`), else NumPy's."""
     P, m, _ = cond.shape
     out = [Faces(np.arange(P), np.zeros((P, 0), np.intp), np.zeros((P, na)),
                  np.broadcast_to(np.eye(na), (P, na, na)), np.ones(P))]
@@ -253,7 +253,7 @@ def _evaluate(cond, fc, rows, A, g, c, out, both=True, kernel=None, skip=None):
     """KKT candidates of the faces ``rows`` of ``fc``, merged into ``out`` (vmax, umax, vmin,
     umin per pair; the min only if ``both``); returns the largest and smallest value over each
     face's candidates (feasible or not). ``kernel``: the compiled path
-    (:class:`snakecg.core.sphere.SphereKernel`, which skips the faces whose bounds stay within
+    (:class:`snakecg.engine.sphere.SphereKernel`, which skips the faces whose bounds stay within
     ``skip``, then returning those bounds), else NumPy's."""
     q = fc.pair[rows]
     if kernel is not None:
@@ -292,7 +292,7 @@ def piece_extremes(cond, fcs, A, g, c, p, n, kept, floor=None, kernel=None, acti
     With ``floor`` (n,), only the max is sought and only where it exceeds ``floor`` (per
     configuration): pairs and faces whose bound stays below it are skipped, the whole sphere
     too where the bound ``c + 2 |g| + lambda_max(A)`` does (vmin is then not computed).
-    ``kernel``: the compiled candidates (:class:`snakecg.core.sphere.SphereKernel`) or None.
+    ``kernel``: the compiled candidates (:class:`snakecg.engine.sphere.SphereKernel`) or None.
     ``active`` (P,) bool: search only these pairs (the others come back infinite).
     """
     P, na = A.shape[0], A.shape[1]

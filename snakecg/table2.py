@@ -39,7 +39,7 @@ TABLE2_ROWS = {
 SCENARIO_LABEL = {"frictionless": "Scenario 1 (frictionless)",
                   "wheels": "Scenario 2 (wheels, mu = 0.1)",
                   "ideal_wheels": "Scenario 3 (ideal wheels)"}
-#: Why the ||a_obj||^2 rows differ from the paper's (docs/reproduction.md has the numbers).
+#: Why the ||a_obj||^2 rows differ from the paper's (docs/how-to/reproduction.md has the numbers).
 A_OBJ_CAPTION = (
     "The paper's ||a_obj||^2 rows are not reproducible from its Table 1: they scale with the "
     "input region (31), whose printed form tau^T Mbar_s^-1 tau does not type-check, and with "

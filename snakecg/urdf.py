@@ -119,11 +119,12 @@ def _round(x: float) -> float:
     return x
 
 
-def robot_from_urdf(path, *, tol: float = 1e-6, name: str | None = None):
+def robot_from_urdf(path, *, robot_type, tol: float = 1e-6, name: str | None = None):
     """The :class:`~snakecg.Robot` of the planar chain in the URDF file ``path`` (see the
     module doc); ``tol``: metres a COM may lie off its link's axis, and the tolerance of
-    the parallel-axes test (radians)."""
-    from .robot import Robot
+    the parallel-axes test (radians). ``robot_type``: the class built,
+    :class:`~snakecg.Robot` (``Robot.from_urdf`` passes itself: this module imports no
+    robot)."""
 
     tol = number("tol", tol, lo=0, unit="m")
     if name is not None and not isinstance(name, str):
@@ -263,7 +264,7 @@ def robot_from_urdf(path, *, tol: float = 1e-6, name: str | None = None):
         coms.append(_round(min(max(c, 0.0), length)))
     joint_limits, effort_limits = _limits(where, chain_joints, axes, link_axes, n)
     try:
-        return Robot(joints=nl - 1, mass=tuple(masses), length=tuple(lengths),
+        return robot_type(joints=nl - 1, mass=tuple(masses), length=tuple(lengths),
                      inertia=tuple(inertias), com=tuple(coms),
                      name=name or robot.name or p.stem, joint_limits=joint_limits,
                      effort_limits=effort_limits)

@@ -1,6 +1,6 @@
 """An independent NumPy geometry of the simulation's contact check, for the tests.
 
-Written apart from ``snakecg.geometry`` and ``snakecg/core/geometry.h``: the links from the
+Written apart from ``snakecg.geometry`` and ``snakecg/engine/geometry.c``: the links from the
 coordinates by their own chain, the plate from its corners in the world frame, and
 
 * a link's depth in the plate as a small linear program solved by enumeration: the depth of

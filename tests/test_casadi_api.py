@@ -1,4 +1,4 @@
-"""The generated CasADi functions as public API (snakecg.casadi_api, docs/casadi.md).
+"""The generated CasADi functions as public API (snakecg.casadi_api, docs/how-to/casadi.md).
 
 References: the dense NumPy model of tests/reference.py (forces and accelerations of eq. 12
 for an active set), the derivation's own symbol list (the layout of ``K``), central finite
@@ -26,8 +26,8 @@ def test_docs_opti_example_reaches_model_optimize(monkeypatch):
 
     monkeypatch.chdir(ROOT)
     ns: dict = {}
-    for _, code in fenced_blocks(ROOT / "docs" / "casadi.md", "python"):
-        exec(compile(code, "docs/casadi.md", "exec"), ns)  # noqa: S102 - the docs example
+    for _, code in fenced_blocks(ROOT / "docs" / "how-to" / "casadi.md", "python"):
+        exec(compile(code, "docs/how-to/casadi.md", "exec"), ns)  # noqa: S102 - the docs example
     sol, out, best, tau = ns["sol"], ns["out"], ns["best"], ns["tau"]
     assert best.status == "optimal"
     sr_opti = float(sol.value(out["sr"]))

@@ -18,7 +18,7 @@ covered without editing this file), takes a list of hostile values (empty, ``--`
 a longer list in the ``slow`` variant): exit status 0, 1 or 2 with one line, never a
 traceback, strict JSON with ``--json``. The reported attacks are replayed one by one.
 
-``SNAKECG_HYPOTHESIS_PROFILE=long`` runs many more examples (docs/reliability.md).
+``SNAKECG_HYPOTHESIS_PROFILE=long`` runs many more examples (docs/explanation/reliability.md).
 """
 
 from __future__ import annotations

@@ -1,4 +1,4 @@
-"""The compiled runtime core (snakecg/core/forward.c) against the reference path.
+"""The compiled runtime core (snakecg/engine/forward.c) against the reference path.
 
 The reference is the Python active-set iteration of snakecg.solver on the generated
 ``constrained_dynamics`` (the CasADi backend answers every sample with it), itself checked

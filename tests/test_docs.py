@@ -9,8 +9,8 @@
   install commands and long runs, shown but not executed; the reproduction itself has its own
   tests.)
 * The doctests of the modules that the API reference renders run too.
-* The CLI behaviour that docs/cli.md documents: exit statuses, one-line errors with a hint,
-  ``--version``, an example in every command's help, the JSON schemas' fields, progress lines
+* The CLI behaviour that docs/reference/cli.md documents: exit statuses, one-line errors with a
+  hint, ``--version``, an example in every command's help, the JSON schemas' fields, progress lines
   on every stream (bars on a terminal only).
 * ``mkdocs build --strict`` succeeds (when MkDocs is installed; otherwise skipped, saying so),
   and the generated pages contain what the hooks promise.
@@ -34,7 +34,7 @@ import pytest
 
 ROOT = Path(__file__).resolve().parents[1]
 DOCS = ROOT / "docs"
-PAGES = sorted(DOCS.glob("*.md")) + [ROOT / "README.md"]
+PAGES = sorted(DOCS.rglob("*.md")) + [ROOT / "README.md"]
 
 FENCE = re.compile(r"^(?P<indent>[ ]*)```(?P<info>[^\n`]*)\n(?P<body>.*?)^(?P=indent)```[ ]*$",
                    re.MULTILINE | re.DOTALL)
@@ -79,9 +79,11 @@ def test_python_blocks_run(page, monkeypatch):
 
 def test_the_docs_have_examples():
     """Guards the extraction itself: the pages that must carry runnable examples do."""
-    names = {p.name for p in PYTHON_PAGES}
-    for required in ("README.md", "getting-started.md", "tutorial.md", "model.md",
-                     "scenarios.md", "metrics.md", "generated-code.md", "symbolic.md"):
+    names = {p.relative_to(DOCS).as_posix() if p.is_relative_to(DOCS) else p.name
+             for p in PYTHON_PAGES}
+    for required in ("README.md", "tutorials/getting-started.md", "tutorials/robot-to-result.md",
+                     "explanation/model.md", "explanation/scenarios.md", "explanation/metrics.md",
+                     "explanation/generated-code.md", "explanation/symbolic.md"):
         assert required in names, f"no ```python block found in {required}"
 
 
@@ -152,7 +154,7 @@ def test_console_commands_run(page, line, argv, expected, monkeypatch, capsys):
 # ------------------------------------------------------------------------------------------
 # 3. doctests of the modules the API reference renders
 # ------------------------------------------------------------------------------------------
-_API_TEXT = (DOCS / "api.md").read_text(encoding="utf-8")
+_API_TEXT = (DOCS / "reference" / "api.md").read_text(encoding="utf-8")
 API_NAMES = re.findall(r"^::: (snakecg[\w.]*)", _API_TEXT, re.MULTILINE) + [
     # entries the site hook renders once the module exists (docs/hooks/site.py)
     m for m in re.findall(r"<!--\s*snakecg-api:\s*([\w.]+)\s*-->", _API_TEXT)
@@ -186,7 +188,7 @@ def test_api_doctests(module, monkeypatch):
 
 
 # ------------------------------------------------------------------------------------------
-# 4. the CLI promises of docs/cli.md
+# 4. the CLI promises of docs/reference/cli.md
 # ------------------------------------------------------------------------------------------
 def _subparsers():
     import argparse
@@ -259,8 +261,8 @@ def test_failures_exit_1(tmp_path, capsys):
 
 
 def _documented_fields(section: str) -> set[str]:
-    """Field names in the first column of the table under ``section`` in docs/cli.md."""
-    text = (DOCS / "cli.md").read_text(encoding="utf-8")
+    """Field names in the first column of the table under ``section`` in docs/reference/cli.md."""
+    text = (DOCS / "reference" / "cli.md").read_text(encoding="utf-8")
     start = text.index(section)
     table = text[start:].split("\n\n", 3)
     rows = [r for block in table[1:3] for r in block.splitlines() if r.startswith("| `")]
@@ -297,7 +299,7 @@ def test_generate_json_fields_are_documented(capsys):
 
 
 def test_progress_lines_on_every_stream_bars_on_a_terminal(monkeypatch):
-    """docs/cli.md: step lines on every stream, bars only on a terminal, and
+    """docs/reference/cli.md: step lines on every stream, bars only on a terminal, and
     SNAKECG_PROGRESS=0 silences both."""
     from snakecg.commands._common import progress_reporter
     from snakecg.progress import progress_bar
@@ -382,7 +384,7 @@ def built_site(tmp_path_factory):
 
 def test_mkdocs_build_strict(built_site):
     site = built_site
-    symbolic = (site / "symbolic" / "index.html").read_text(encoding="utf-8")
+    symbolic = (site / "explanation" / "symbolic" / "index.html").read_text(encoding="utf-8")
     assert "snakecg-symbolic" not in symbolic, "a symbolic directive was not replaced"
     assert symbolic.count('class="arithmatex"') >= 10
     assert r"\beta_{1}" in symbolic and r"m_{\mathrm{tot}}" in symbolic
@@ -390,18 +392,19 @@ def test_mkdocs_build_strict(built_site):
     manifest = json.loads((ROOT / "generated" / "na2" / "manifest.json").read_text())
     ops = {f["name"]: f["operations"] for f in manifest["functions"]}
     assert f"{ops['constrained_dynamics']:,}" in symbolic
-    cli = (site / "cli" / "index.html").read_text(encoding="utf-8")
+    cli = (site / "reference" / "cli" / "index.html").read_text(encoding="utf-8")
     assert "snakecg-cli" not in cli and "usage: snakecg forward" in cli
-    api = (site / "api" / "index.html").read_text(encoding="utf-8")
+    api = (site / "reference" / "api" / "index.html").read_text(encoding="utf-8")
     assert 'id="snakecg.model.SceneModel.forward"' in api
     # the figures computed at build time are in the site and on their pages
     for rel in ("figures/reproduce/fig4_kappa100.png", "figures/reproduce/fig5_polar.png",
                 "figures/reproduce/fig6_configurations.png", "figures/simulate/displacement.png",
                 "figures/simulate/animation.gif"):
         assert (site / rel).stat().st_size > 10_000, rel
-    reproduction = (site / "reproduction" / "index.html").read_text(encoding="utf-8")
-    assert reproduction.count('src="../figures/reproduce/') == 3
-    assert 'src="../figures/simulate/' in (site / "simulate" / "index.html").read_text("utf-8")
+    reproduction = (site / "how-to" / "reproduction" / "index.html").read_text(encoding="utf-8")
+    assert reproduction.count('src="../../figures/reproduce/') == 3
+    assert 'src="../../figures/simulate/' in (site / "how-to" / "simulate" / "index.html") \
+        .read_text("utf-8")
 
 
 # ------------------------------------------------------------------------------------------
@@ -437,8 +440,8 @@ def test_site_loads_nothing_from_elsewhere(built_site):
     # the renderer is served with the site, with its licence
     assert (built_site / "assets" / "mathjax" / "tex-svg.js").stat().st_size > 1_000_000
     assert "Apache License" in (built_site / "assets" / "mathjax" / "LICENSE").read_text()
-    assert 'src="../assets/mathjax/tex-svg.js"' in (built_site / "model" / "index.html") \
-        .read_text(encoding="utf-8")
+    model_page = built_site / "explanation" / "model" / "index.html"
+    assert 'src="../../assets/mathjax/tex-svg.js"' in model_page.read_text(encoding="utf-8")
 
 
 _PROBE = r"""
@@ -524,7 +527,7 @@ def test_formulas_render_in_a_browser_offline(built_site, site_server, tmp_path)
     typeset, a matrix is drawn as a matrix (taller than a line, ink in its box on the
     screenshot), no raw TeX is left, and wide formulas scroll inside the page."""
     Image = pytest.importorskip("PIL.Image", reason="pillow (test extra) reads the screenshot")
-    probe = _probe(built_site, site_server, "model", 1280, tmp_path)
+    probe = _probe(built_site, site_server, "explanation/model", 1280, tmp_path)
     items = probe["items"]
     assert len(items) >= 30 and all(i["rendered"] for i in items)
     assert not probe["raw"], "raw TeX is visible"
@@ -534,7 +537,7 @@ def test_formulas_render_in_a_browser_offline(built_site, site_server, tmp_path)
     assert tallest["box"][3] > 1.8 * probe["line"], tallest   # two rows, not one line of text
     shot = tmp_path / "model.png"
     _browser(["--window-size=1280,4000", f"--screenshot={shot}",
-              f"{site_server}/model/probe.html"], tmp_path)
+              f"{site_server}/explanation/model/probe.html"], tmp_path)
     import numpy as np
 
     with Image.open(shot) as im:
@@ -544,6 +547,155 @@ def test_formulas_render_in_a_browser_offline(built_site, site_server, tmp_path)
     rows = np.flatnonzero(ink.any(axis=1))
     assert rows[-1] - rows[0] > 1.5 * probe["line"], "the drawn matrix is not taller than a line"
     # the symbolic page's wide matrices scroll in their block; the page itself does not
-    sym = _probe(built_site, site_server, "symbolic", 900, tmp_path)
+    sym = _probe(built_site, site_server, "explanation/symbolic", 900, tmp_path)
     assert any(i["scrolls"] for i in sym["items"])
     assert sym["pageWidth"] <= sym["viewport"]
+
+
+# ------------------------------------------------------------------------------------------
+# 7. Table 2 on the pages is the program's; wide tables and formulas scroll, never cut off
+# ------------------------------------------------------------------------------------------
+def _html_tables(page_html: str) -> list[list[list[str]]]:
+    """Every ``<table>`` of a built page as rows of cell texts (tags dropped)."""
+    import html as html_mod
+
+    tables = []
+    for body in re.findall(r"<table>(.*?)</table>", page_html, re.DOTALL):
+        rows = []
+        for row in re.findall(r"<tr>(.*?)</tr>", body, re.DOTALL):
+            cells = re.findall(r"<t[hd][^>]*>(.*?)</t[hd]>", row, re.DOTALL)
+            rows.append([html_mod.unescape(re.sub(r"<[^>]+>", "", c)).strip() for c in cells])
+        tables.append(rows)
+    return tables
+
+
+def test_table2_on_the_pages_is_the_programs(built_site, tmp_path, capsys):
+    """The home page's and the reproduction page's Table 2 are what ``snakecg reproduce``
+    prints today, entry by entry: its values to the 6 digits shown, its paper values and
+    relative differences, its marks on infeasible shapes and its feasible-only column. The
+    command runs here on its own (case study 2 on its defaults; a coarse Fig. 4 grid, which
+    Table 2 does not use)."""
+    from snakecg.cli import main
+
+    status = main(["reproduce", "--out", str(tmp_path / "out"), "--torque-grid", "11",
+                   "--formats", "png", "--json"])
+    captured = capsys.readouterr()
+    assert status == 0, captured.err
+    program = json.loads(captured.out)
+    keys = ("worst_norm_a_obj", "best_norm_a_obj", "worst_sr", "best_sr")
+    assert set(program["table2"]) == set(keys)
+    for rel in ("index.html", "how-to/reproduction/index.html"):
+        tables = [t for t in _html_tables((built_site / rel).read_text(encoding="utf-8"))
+                  if t and t[0] and t[0][0] == "Concept"]
+        assert len(tables) == 1, f"{rel}: {len(tables)} Table 2s"
+        head, *rows = tables[0]
+        assert len(head) == 13 and head[1].startswith("Scenario 1") and len(rows) == 4, head
+        for key, row in zip(keys, rows):
+            for j in range(3):
+                ours, paper, diff, feasible_only = row[1 + 4 * j: 5 + 4 * j]
+                value = program["table2"][key][j]
+                infeasible = not program["table2_shape_feasible"][key][j]
+                where = f"{rel}: {key}, scenario {j + 1}"
+                assert ours.endswith("*") == infeasible, where
+                assert float(ours.rstrip("*")) == float(f"{value:.6g}"), (where, ours, value)
+                assert float(paper) == float(f"{program['paper_table2'][key][j]:.6g}"), where
+                rel_diff = value / program["paper_table2"][key][j] - 1
+                assert math.isclose(float(diff.rstrip("%").replace("−", "-")) / 100, rel_diff,
+                                    abs_tol=0.0005 + 1e-12), (where, diff, rel_diff)
+                assert float(feasible_only) == float(
+                    f"{program['table2_feasible_only'][key][j]:.6g}"), where
+
+
+_WIDE_PROBE = r"""
+<script>
+(function wait() {
+  if (!(window.MathJax && MathJax.startup && MathJax.startup.promise) ||
+      !document.querySelector(".md-typeset__scrollwrap")) {
+    return setTimeout(wait, 50);
+  }
+  MathJax.startup.promise.then(function () {
+    var art = document.querySelector("article.md-content__inner");
+    var boxes = [];
+    function box(r) { return [r.left + scrollX, r.top + scrollY, r.width, r.height]; }
+    function check(kind, el, scroller, last) {
+      var s = getComputedStyle(scroller), before = scroller.getBoundingClientRect();
+      var wide = scroller.scrollWidth > scroller.clientWidth + 1;
+      scroller.scrollLeft = scroller.scrollWidth;  // as far right as the reader can scroll
+      var view = scroller.getBoundingClientRect(), end = last.getBoundingClientRect();
+      var cut = [];  // an ancestor up to the article that hides what sticks out of it
+      for (var c = scroller.parentElement; c && c !== art.parentElement; c = c.parentElement) {
+        var o = getComputedStyle(c).overflowX;
+        if ((o === "hidden" || o === "clip") && c.scrollWidth > c.clientWidth + 1) {
+          cut.push(c.tagName + "." + c.className);
+        }
+      }
+      boxes.push({kind: kind, wide: wide, overflowX: s.overflowX,
+                  contentWidth: scroller.scrollWidth, visibleWidth: scroller.clientWidth,
+                  view: box(view), end: box(end), cut: cut,
+                  inColumn: before.left >= art.getBoundingClientRect().left - 20 &&
+                            before.right <= art.getBoundingClientRect().right + 20});
+    }
+    document.querySelectorAll(".md-typeset table").forEach(function (t) {
+      if (!/Scenario 1/.test(t.rows[0].textContent)) return;
+      var cells = t.rows[t.rows.length - 1].cells;
+      check("table2", t, t.closest(".md-typeset__scrollwrap") || t, cells[cells.length - 1]);
+    });
+    document.querySelectorAll(".md-typeset div.arithmatex").forEach(function (d) {
+      var svg = d.querySelector("mjx-container svg");
+      if (svg && d.scrollWidth > d.clientWidth + 1) check("formula", d, d, svg);
+    });
+    var out = document.createElement("pre");
+    out.id = "snakecg-probe";
+    out.textContent = JSON.stringify({boxes: boxes,
+      pageWidth: document.documentElement.scrollWidth, viewport: innerWidth});
+    document.body.appendChild(out);
+  });
+})();
+</script>
+"""
+
+
+@pytest.mark.parametrize("page, kind", [("how-to/reproduction", "table2"), ("", "table2"),
+                                        ("explanation/symbolic", "formula")])
+def test_wide_tables_and_formulas_scroll_and_are_not_cut_off(built_site, site_server, tmp_path,
+                                                             page, kind):
+    """Headless Chromium at a width where Table 2 and the 2-joint matrices do not fit the
+    column: each sits in a box that scrolls sideways (its content wider than its visible
+    width), inside the text column, with no ancestor hiding what sticks out, and the page
+    itself does not scroll sideways. Scrolled to its right end, the box shows the table's
+    last column (the formula's right edge), and the screenshot has ink there."""
+    Image = pytest.importorskip("PIL.Image", reason="pillow (test extra) reads the screenshot")
+    import html as html_mod
+
+    import numpy as np
+
+    folder = built_site / page if page else built_site
+    html = (folder / "index.html").read_text(encoding="utf-8")
+    (folder / "wide.html").write_text(html.replace("</body>", _WIDE_PROBE + "</body>"),
+                                      encoding="utf-8")
+    url = f"{site_server}/{page + '/' if page else ''}wide.html"
+    size = "--window-size=1024,12000"
+    proc = _browser([size, "--dump-dom", url], tmp_path)
+    m = re.search(r'<pre id="snakecg-probe">(.*?)</pre>', proc.stdout, re.DOTALL)
+    assert m, f"the page never finished typesetting:\n{proc.stderr[-2000:]}"
+    probe = json.loads(html_mod.unescape(m.group(1)))
+    assert probe["pageWidth"] <= probe["viewport"], "the page scrolls sideways"
+    boxes = [b for b in probe["boxes"] if b["kind"] == kind]
+    assert boxes, f"no {kind} found on {page or 'the home page'}"
+    wide = [b for b in boxes if b["wide"]]
+    assert wide, f"at 1024 px no {kind} is wider than its box: the check would be vacuous"
+    for b in wide:
+        assert b["overflowX"] in ("auto", "scroll"), b
+        assert b["inColumn"] and not b["cut"], b
+        assert b["contentWidth"] > b["visibleWidth"], b
+        vx, _, vw, _ = b["view"]
+        ex, _, ew, _ = b["end"]
+        assert vx - 1 <= ex + ew <= vx + vw + 1, f"the right end is out of reach: {b}"
+    shot = tmp_path / "wide.png"
+    _browser([size, f"--screenshot={shot}", url], tmp_path)
+    b = max(wide, key=lambda b: b["contentWidth"])
+    with Image.open(shot) as im:
+        x, y, w, h = (round(v) for v in b["end"])
+        x0, x1 = max(x, int(b["view"][0])), min(x + w, int(b["view"][0] + b["view"][2]))
+        ink = np.asarray(im.convert("L").crop((x0, y, x1, y + h))) < 110
+    assert ink.mean() > 0.002, f"the right end of the {kind} is blank on the screen: {b}"

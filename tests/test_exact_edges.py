@@ -524,3 +524,15 @@ def test_the_walk_reaches_every_piece_a_dense_sample_meets():
         seen = seen[out["kkt"] < 1e-9]  # the torques whose state is clear
         missing = {tuple(x) for x in seen} - walked
         assert not missing, (np.rad2deg(q[3:]), missing)
+
+
+def test_json_carries_the_reason():
+    """The JSON fields of a result (what ``--json`` prints) carry each sample's reason: the
+    float64-impossible sample says 'mass matrix', an exact one says nothing."""
+    bad = snakecg.load(snakecg.Scene(snakecg.Robot(**_INCONSISTENT), scenario="frictionless"))
+    single = bad.forward(_Q6, _TAU6).to_dict()
+    assert "mass matrix" in single["reason"]
+    good = snakecg.load(snakecg.Scene(snakecg.Robot(joints=2)))
+    q = np.array([[0.0, 0.0, 0.0, 0.4, -0.7]] * 2)
+    batch = good.forward(q, np.array([[0.3, 0.1], [0.2, -0.1]])).to_dict()
+    assert batch["reason"] == ["", ""]

@@ -327,3 +327,25 @@ def test_compiled_closed_form_agrees_with_numpy_eigensolver(joints, scenario):
         got = getattr(model.forward(Q, t), m)
         np.testing.assert_allclose(got, fast.max[m], rtol=1e-6,
                                    atol=1e-9 * np.abs(fast.max[m]).max())
+
+
+def test_sampled_wheel_extremes_keep_the_callers_backend(monkeypatch):
+    """The sampled wheel extremes start from the ideal-wheel extremes of the same robot,
+    evaluated on a second model: that model uses the caller's backend, so a model loaded with
+    ``backend="casadi"`` never asks for a compiled library."""
+    import snakecg.model as model_module
+
+    asked = []
+    real = model_module._backend
+
+    def spy(n_joints, prefer, progress=None):
+        asked.append(prefer)
+        return real(n_joints, prefer, progress)
+
+    monkeypatch.setattr(model_module, "_backend", spy)
+    model = snakecg.load(snakecg.Scene(snakecg.Robot(joints=2), scenario="wheels"),
+                         backend="casadi")
+    q = np.array([0.0, 0.0, 0.0, 0.4, -0.3])
+    ex = model.extremes(q, exact=False, samples=8, refine=1, starts=1)
+    assert asked and set(asked) == {"casadi"}
+    assert np.all(ex.max["norm_qdd"] >= ex.min["norm_qdd"])

@@ -525,7 +525,7 @@ def test_manifest_signature_that_disagrees_with_the_code_is_rebuilt(backend, fre
     """The manifest is JSON, not hashed itself: an edit that keeps it valid JSON and leaves
     the files' hashes alone never sizes the output buffers of the compiled drivers (they
     would write past their ends): the functions' own signatures are compared on loading, and
-    the model folder is then generated again (docs/reliability.md), reported once in one
+    the model folder is then generated again (docs/explanation/reliability.md), reported once in one
     line. The rebuilt model's mass matrix obeys the physics: M_xx = M_yy = m_1 + m_2."""
     if backend == "compiled" and native.find_compiler() is None:
         pytest.skip("no C compiler on this machine")
@@ -828,3 +828,16 @@ def test_no_pickle_or_eval_in_the_runtime():
     # the no-compiler fallback deserializes CasADi's data format; it imports no generated code
     assert "exec_module" not in loader and "importlib" not in loader
     assert "Function.deserialize" in loader
+
+
+def test_missing_serialized_function_is_an_artifact_error(tmp_path):
+    """A model folder whose manifest lacks one function's ``.casadi`` file is refused on
+    loading with an ArtifactError naming the function, for CasADi's in-process backend (the
+    problem used to be dropped, and the first call of the function raised a bare KeyError)."""
+    folder = tmp_path / "na1"
+    shutil.copytree(packaged(1), folder)
+    manifest = json.loads((folder / "manifest.json").read_text())
+    del manifest["files"]["casadi/mass_matrix.casadi"]
+    (folder / "casadi" / "mass_matrix.casadi").unlink()
+    with pytest.raises(ArtifactError, match=r"mass_matrix has no serialized CasADi function"):
+        native.CasadiBackend(folder, manifest)

@@ -156,9 +156,9 @@ def test_matrix_structured_c_is_strict_c99(tmp_path):
 
 @pytest.mark.parametrize("joints", [1, 3, 6])
 def test_runtime_core_is_strict_c99(joints, tmp_path):
-    """The runtime core (every C file of snakecg/core) with the layout header written from a
+    """The runtime core (every C file of snakecg/engine) with the layout header written from a
     model's manifest compiles with the strict flags and -Wextra."""
-    from snakecg.core.layout import header
+    from snakecg.engine.layout import header
     from snakecg.native import CORE_SOURCES
 
     cc = _compiler()

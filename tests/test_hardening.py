@@ -1,8 +1,8 @@
 """Hardening: bad values refused at the boundary before any work, strict JSON, robot files
 that are not regular files, empty option values, atomic writes, bounded memory.
 
-Each fault class of docs/reliability.md ("Bad input", "Output", "Files written", "Memory")
-has its cases here; the fuzz tests (tests/test_cli_fuzz.py) add random combinations over
+Each fault class of docs/explanation/reliability.md ("Bad input", "Output", "Files written",
+"Memory") has its cases here; the fuzz tests (tests/test_cli_fuzz.py) add random combinations over
 every sub-command and option.
 """
 
@@ -331,8 +331,8 @@ def test_reproduce_json_schema(tmp_path, monkeypatch):
     assert "table2.best_sr[2]" in data["nonfinite"] and "timings_s.total" in data["nonfinite"]
     assert data["options"] == {"kappa": 100.0, "torque_grid": 181,
                                "formats": ["png", "svg"], "alternatives": False}
-    # every field is documented in docs/cli.md (nonfinite is the common convention)
-    text = (ROOT / "docs" / "cli.md").read_text(encoding="utf-8")
+    # every field is documented in docs/reference/cli.md (nonfinite is the common convention)
+    text = (ROOT / "docs" / "reference" / "cli.md").read_text(encoding="utf-8")
     section = text[text.index("### `snakecg reproduce --json`"):]
     section = section[:section.index("\n## ") if "\n## " in section else None]
     import re

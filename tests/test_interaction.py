@@ -240,7 +240,7 @@ def test_single_call_path_equals_general_path(models, rng, scenario):
 
 
 def test_compiled_state_update_equals_the_reference_rules(rng):
-    """The row-state update of the compiled core (snakecg/core/forward.c) and the vectorized
+    """The row-state update of the compiled core (snakecg/engine/forward.c) and the vectorized
     one of the reference path (solver._violations with _tolerances) give the same next states,
     on random states, forces and accelerations placed at and around the bounds and the
     tolerances."""

@@ -1,7 +1,7 @@
 """Ctrl-C during a long simulation, and the compiled calls that make it possible.
 
 The compiled segments and whole runs (``core_integrate_segment``, ``core_run``) return to
-Python after a wall-clock budget (``snakecg.core.segment.PAUSE_AFTER``) and are called again
+Python after a wall-clock budget (``snakecg.engine.segment.PAUSE_AFTER``) and are called again
 to go on where they stopped, so that Python can raise KeyboardInterrupt in between:
 
 * a run whose every C call pauses after one step (or one chunk of samples) gives the same
@@ -82,7 +82,7 @@ def test_paused_calls_give_the_uninterrupted_run(wheels, monkeypatch, path):
     try:
         paused = wheels.simulate(Q3, law, 0.4, **kw)
     finally:
-        workspace._POOLS.pop(wheels, None)  # no counting workspace left for later runs
+        wheels.data().simulation_pool.clear()  # no counting workspace left for later runs
     assert paused.summary["integrator"]["compiled_segments"]
     steps = plain.summary["integrator"]["rhs_evaluations"] // 12
     assert len(calls) > steps // 2, (len(calls), steps)  # it did stop and go on, many times

@@ -1,9 +1,9 @@
 """The generated model against independent numeric references, at seeded random states.
 
-References written here, from the conventions only (docs/model.md, notes): link COM poses of
-the chain in plain numpy; velocities by complex-step differentiation of those poses (a finite
-difference along an imaginary step, exact to rounding for analytic functions); kinetic energy
-of the links; Christoffel symbols of finite-differenced ``M_s``; time derivatives of the
+References written here, from the conventions only (docs/explanation/model.md, notes): link COM
+poses of the chain in plain numpy; velocities by complex-step differentiation of those poses (a
+finite difference along an imaginary step, exact to rounding for analytic functions); kinetic
+energy of the links; Christoffel symbols of finite-differenced ``M_s``; time derivatives of the
 constraint rows along a trajectory by central finite differences. Also: compiled C against
 CasADi's in-process evaluation, batch semantics, and bad input at the API and CLI boundary.
 """

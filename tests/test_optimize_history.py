@@ -271,54 +271,65 @@ def reference_maps(scene, q):
                 N=B.T @ np.linalg.solve(sys0["M"], B), bounds=ref.bounds, present=ref.present)
 
 
+def _issue_3_problem():
+    """The issue's least-slip push posed in the torque from the dense reference's maps: the
+    Hessian 2 Xi, the rows (box, contact kept, the task on lam_c) and the ellipsoid."""
+    key, q, _, kw = CASES["issue-3"]
+    mp = reference_maps(_scene(key), np.array(q))
+    ell = mp["L"][0]
+    a_dir = mp["Ao"] @ ell / (ell @ ell)  # a_obj = a_dir lam_c
+    d = np.append(kw["direction"], 0.0) / np.linalg.norm(kw["direction"])
+    lam_lo = kw["a_min"] / (d @ a_dir)
+    G = np.vstack([np.eye(2), ell, ell])
+    lo = np.array([-0.3, -0.3, 0.0, lam_lo])
+    hi = np.array([0.3, 0.3, np.inf, np.inf])
+    return mp, 2 * mp["Xi"], G, lo, hi
+
+
 def test_certificate_rejects_the_answer_the_issue_reported():
     """The torque returned after queries 1 and 2 by the hot-started solver (||qdd||^2 =
-    0.138773, labelled optimal) is feasible but not optimal: its certificate fails."""
-    from snakecg.optimize.certificate import certify
-    from snakecg.optimize.problems import configs, push_target
-    from snakecg.optimize.push import least_slip_push
-    from snakecg.optimize.query import validate
+    0.138773, labelled optimal) is feasible but not optimal: the compiled certificate (the KKT
+    residuals on the problem posed from the dense reference's maps) accepts the package's
+    answer and rejects that one."""
+    from snakecg.optimize import TOLERANCE
 
     key, q, objective, kw = CASES["issue-3"]
     sm = _model(key)
-    query = validate(sm, objective, kw["tau_max"], kw["radius"], kw["direction"], kw["a_min"],
-                     None, False)
-    cfg = configs(sm, np.array(q)[None, :])[0]
-    good = least_slip_push(sm, query, cfg)
-    assert certify(sm, query, cfg, good).ok
+    kernel = sm.core.optimal
+    mp, H, G, lo, hi = _issue_3_problem()
+    good = sm.optimize(np.array(q), objective, **kw)
+    assert good.status == "optimal"
+    values, _, _ = kernel.kkt_certificate(good.tau, H, np.zeros(2), G, lo, hi, Q=mp["N"], r2=1.0)
+    assert values[0] <= TOLERANCE["stationarity"] and values[1] <= TOLERANCE["primal_feasibility"]
+    assert abs(values[3]) <= TOLERANCE["duality_gap"]
     wrong = np.array([0.04256693, 0.00871659])  # the reported answer
-    lam_lo = push_target(query, cfg)[0]
-    assert cfg.L[0] @ wrong >= lam_lo  # feasible ...
-    np.testing.assert_allclose(wrong @ cfg.Xi @ wrong, 0.138773, rtol=1e-5)
-    good.tau = wrong
-    cert = certify(sm, query, cfg, good)
-    assert not cert.ok and "stationarity" in cert.reason, cert  # ... not optimal
+    assert np.all(G @ wrong >= lo) and wrong @ mp["N"] @ wrong <= 1.0  # feasible ...
+    np.testing.assert_allclose(wrong @ mp["Xi"] @ wrong, 0.138773, rtol=1e-5)
+    values, _, _ = kernel.kkt_certificate(wrong, H, np.zeros(2), G, lo, hi, Q=mp["N"], r2=1.0)
+    assert values[0] > 1e-3 and values[3] > 1e-3  # ... not optimal: stationarity and the gap
 
 
-def test_a_failed_certificate_triggers_a_cold_re_solve(monkeypatch):
-    """A hot solve that returns a wrong point (simulated) is caught by the certificate and
-    re-solved from scratch; when the cold solve is wrong too, the status says so."""
-    from snakecg.optimize import solvers
+def test_a_certificate_that_fails_makes_the_answer_failed(monkeypatch):
+    """An answer whose certificate does not hold is never "optimal": with tolerances that no
+    answer can meet (negative), each kind returns "failed" naming the residual; max_sr first
+    tries its second method (the general eigenproblem after the closed form)."""
+    from snakecg.optimize import api
 
     key, q, objective, kw = CASES["issue-3"]
     sm = _model(key)
-    clean = sm.optimize(np.array(q), objective, **kw)
-    assert clean.certificate.ok and not clean.certificate.resolved
-    real_polish = solvers._polish
-
-    def hot_corrupted(*args):
-        z = real_polish(*args)
-        return z * 1.05 if solvers._COLD.get() is None else z  # feasible, 5 % off
-
-    monkeypatch.setattr(solvers, "_polish", hot_corrupted)
+    assert sm.optimize(np.array(q), objective, **kw).status == "optimal"
+    strict = list(api._SETTINGS)
+    strict[6:10] = [-1.0] * 4  # the tolerances of the four residuals
+    monkeypatch.setattr(api, "_SETTINGS", strict)
     res = sm.optimize(np.array(q), objective, **kw)
-    assert res.status == "optimal" and res.certificate.ok and res.certificate.resolved
-    assert "cold re-solve" in res.solver
-    np.testing.assert_allclose(res.objective_value, clean.objective_value, rtol=1e-9)
-    monkeypatch.setattr(solvers, "_polish", lambda *a: real_polish(*a) * 1.05)
-    res = sm.optimize(np.array(q), objective, **kw)
-    assert res.status == "failed" and "certificate" in res.reason, res.reason
-    assert not res.certificate.ok and res.certificate.resolved
+    assert res.status == "failed" and not res.certificate.ok
+    assert res.reason.startswith("optimality certificate (kkt (convex QCQP)) fails"), res.reason
+    assert "duality_gap" in res.reason or "stationarity" in res.reason
+    res = sm.optimize(np.array(q), "max_sr")
+    assert res.status == "failed" and res.certificate.resolved, res.reason
+    assert "after the general eigenproblem" in res.reason
+    res = sm.optimize(np.array(q), "strongest_push", tau_max=0.3)
+    assert res.status == "failed" and res.certificate.kind == "kkt (LP)", res.reason
 
 
 @pytest.mark.parametrize("joints, scenario", [(3, "frictionless"), (3, "wheels"),

@@ -25,7 +25,7 @@ must give finite numbers or raise the ``singular`` flag, never NaN without it.
 
 Profiles: by default every test runs a modest, derandomized (seeded) set of examples so the
 file takes well under a minute; ``SNAKECG_HYPOTHESIS_PROFILE=long`` runs many more random ones
-(see docs/reliability.md). Joint counts 7 and 8 are generated once per session into the
+(see docs/explanation/reliability.md). Joint counts 7 and 8 are generated once per session into the
 session's cache (tests/conftest.py).
 """
 

@@ -1,7 +1,7 @@
 """Reproduction of the paper (issue #4): Table 2 against the published values, the paper's
 qualitative claims, and the figure files.
 
-Tolerances per Table 2 entry are those stated in docs/reproduction.md; they are what the
+Tolerances per Table 2 entry are those stated in docs/how-to/reproduction.md; they are what the
 documented reading achieves, not a fit (no constant is tuned to the published numbers).
 """
 
@@ -239,7 +239,7 @@ def test_figures_written_and_readable(run):
 
 
 def test_object_inertia_and_distance_drop_out_with_the_com_on_the_normal():
-    """docs/reproduction.md: with the object's COM on the contact normal the contact force
+    """docs/how-to/reproduction.md: with the object's COM on the contact normal the contact force
     passes through it, so neither its rotational inertia nor the distance changes a metric."""
     Q = joint_grid(3)[::331]
     robot = snakecg.Robot(joints=3)

@@ -437,8 +437,6 @@ def test_least_slip_push_controller(models):
     """The "push with least slippage" query as a feedback law: every wheel sticks, and the
     object advances along the contact normal as 1/2 a_min t^2."""
     sm, _ = models(3, "wheels", 10.0)
-    if not hasattr(sm, "optimize"):
-        pytest.skip("model.optimize (snakecg.optimize) is not available")
     from snakecg.simulate import least_slip_push_controller
 
     ctl = least_slip_push_controller(sm, a_min=0.02)
@@ -448,6 +446,20 @@ def test_least_slip_push_controller(models):
     assert (traj.wheel_state[:, 1:] == "stick").all() and traj.contact.all()
     d = traj.q_obj[-1, 1] - traj.q_obj[0, 1]  # the normal is +y at theta = 0
     assert d == pytest.approx(0.5 * 0.02 * T**2, rel=0.02)
+
+
+def test_least_slip_push_controller_keeps_the_robots_effort_limits():
+    """Without tau_max the controller's torques stay in the robot's effort box (the query's
+    default); a task beyond the box gets its strongest push, at the box's edge."""
+    from snakecg.simulate import least_slip_push_controller
+
+    limits = np.array([0.05, 0.08, 0.03])
+    robot = snakecg.Robot(joints=3, effort_limits=limits)
+    sm = snakecg.load(snakecg.Scene(robot, scenario="wheels", kappa=10.0))
+    ctl = least_slip_push_controller(sm, a_min=50.0)  # far beyond what 0.08 N m can do
+    tau = np.asarray(ctl(0.0, type("S", (), {"q": Q3})()))
+    assert np.all(np.abs(tau) <= limits * (1 + 1e-12))
+    assert np.any(np.isclose(np.abs(tau), limits, rtol=1e-9))
 
 
 def test_bad_input(models):

@@ -1,4 +1,4 @@
-"""The compiled integration segments (snakecg/core/integrate.c via snakecg.simulate.compiled)
+"""The compiled integration segments (snakecg/engine/integrate.c via snakecg.simulate.compiled)
 against the solve_ivp path and independent references.
 
 * the right-hand side within a mode against the dense numpy model of ``tests/reference.py``

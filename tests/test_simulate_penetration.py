@@ -2,7 +2,7 @@
 cross, and says so.
 
 References, none of which shares code with the check (``snakecg.geometry.ContactCheck``,
-``snakecg/core/geometry.h``):
+``snakecg/engine/geometry.c``):
 
 * the NumPy geometry of ``overlap_reference.py`` (its own chain, the plate's depth as a small
   linear program over the segment, crossing by a 2 x 2 solve), itself checked here against

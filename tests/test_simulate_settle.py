@@ -1,4 +1,4 @@
-"""What the simulation does at an event, in C (snakecg/core/settle.c through
+"""What the simulation does at an event, in C (snakecg/engine/events.c through
 ``CompiledSegments.settle``), against the Python reference path of
 ``snakecg.simulate.events.Events.settle`` (``snakecg.solver.solve_active_set``, numpy's LU
 solve) and the dense numpy model of ``tests/reference.py``:

@@ -170,7 +170,7 @@ def test_runs_from_threads_match_sequential_runs(models):
         threaded = list(pool.map(run, jobs))
     for a, b in zip(threaded, sequential):
         _same(a, b, tol=0.0)
-    assert len(workspace._POOLS[sm]) <= workspace.POOL_SIZE
+    assert len(sm.data().simulation_pool) <= workspace.POOL_SIZE
 
 
 @pytest.mark.parametrize("scenario", ["frictionless", "wheels", "ideal_wheels"])
@@ -241,7 +241,7 @@ def test_workspace_pool(models):
     q0 = np.array([0.0, 0.0, 0.0, 0.4, -0.3])
     tau = np.array([0.01, -0.005])
     sm.simulate(q0, tau, 0.05)
-    pool = workspace._POOLS[sm]
+    pool = sm.data().simulation_pool
     assert len(pool) == 1
     held = [workspace.take(sm) for _ in range(3)]
     assert len(pool) == 0 and len({id(w) for w in held}) == 3

@@ -228,19 +228,23 @@ def test_forward_batch_json_and_bad_input():
 
 
 def test_runtime_core_is_strict_c99_with_a_spatial_layout(tmp_path):
-    """forward.c with the layout of a spatial model (n_q != n_v, the spatial scene fields)
-    compiles with the strict flags and -Wextra."""
+    """The engine's files of a spatial scene's library (contact.c and forward.c) with the
+    layout of a spatial model (n_q != n_v, the spatial scene fields) compile with the strict
+    flags and -Wextra."""
     import subprocess
 
     from test_generated_fresh import GENERATED, STRICT, _compiler
 
-    from snakecg.core.layout import header
-    from snakecg.native import CORE_SOURCE
-    from snakecg.spatial.artifacts import core_manifest
+    from snakecg.engine.layout import header
+    from snakecg.native import ENGINE_DIR
+    from snakecg.spatial.artifacts import CORE_FILES, core_manifest
 
     manifest = json.loads((GENERATED / "spatial" / "na3" / "manifest.json").read_text())
     (tmp_path / "snakecg_layout.h").write_text(header(core_manifest(manifest)))
-    res = subprocess.run([_compiler(), *STRICT, "-Wextra", "-I", str(tmp_path), "-c",
-                          str(CORE_SOURCE), "-o", str(tmp_path / "core.o")],
-                         capture_output=True, text=True, timeout=600)
-    assert res.returncode == 0, res.stderr[-3000:]
+    sources = [name for name in CORE_FILES if name.endswith(".c")]
+    assert sources == ["contact.c", "forward.c"]
+    for name in sources:
+        res = subprocess.run([_compiler(), *STRICT, "-Wextra", "-I", str(tmp_path), "-c",
+                              str(ENGINE_DIR / name), "-o", str(tmp_path / "core.o")],
+                             capture_output=True, text=True, timeout=600)
+        assert res.returncode == 0, f"{name}:\n{res.stderr[-3000:]}"

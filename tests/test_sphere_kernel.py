@@ -1,4 +1,4 @@
-"""The compiled faces and KKT candidates (snakecg/core/sphere.c) against NumPy's path
+"""The compiled faces and KKT candidates (snakecg/engine/sphere.c) against NumPy's path
 (snakecg.sphere_kkt: QR cuts and the Gander-Golub-von Matt eigenvalue linearization) and
 against dense sampling of each face's sphere; the exact bounded-wheel extremes by both paths."""
 

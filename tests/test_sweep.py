@@ -406,12 +406,12 @@ def test_workers_write_the_data_and_the_client_only_the_digests(client, tmp_path
 
 
 def _file_digest(path) -> int:
-    """The digest docs/sweep.md defines for a chunk file of a format-3 store."""
+    """The digest docs/how-to/sweep.md defines for a chunk file of a format-3 store."""
     return int.from_bytes(xxhash.xxh3_64(Path(path).read_bytes()).digest(), "little") | 1
 
 
 def _documented_digest(arrays, start, stop, h) -> int:
-    """The digest docs/sweep.md defines, from the arrays' bytes (copied, in the documented
+    """The digest docs/how-to/sweep.md defines, from the arrays' bytes (copied, in the documented
     order) and the hash object ``h``."""
     for k in ("q", "com_radius", "com_angle",
               *(f"{p}{m}" for m in METRICS
@@ -527,7 +527,7 @@ def old_store(tmp_path, fmt=2, feasible=True):
 
 
 def _documented_digest(arrays, start, stop, h, names=None) -> int:
-    """The digest docs/sweep.md defines for formats 1 and 2, from the arrays' bytes (copied,
+    """The digest docs/how-to/sweep.md defines for formats 1 and 2, from the arrays' bytes (copied,
     in the documented order) and the hash object ``h``."""
     for k in names or ("q", "com_radius", "com_angle",
                        *(f"{p}{m}" for m in METRICS

@@ -192,13 +192,13 @@ def test_non_parallel_axes_and_off_axis_com_are_refused(rng, tmp_path):
     assert tilted != text
     path.write_text(tilted)
     with pytest.raises(snakecg.InputError, match=r"axis of joint 'joint2' is 11.5 deg off"):
-        robot_from_urdf(path)
+        robot_from_urdf(path, robot_type=snakecg.Robot)
     assert isinstance(snakecg.Robot.from_urdf(path), snakecg.SpatialRobot)
     off = text.replace(f'<origin xyz="{_f(com[1])} 0 0"',
                        f'<origin xyz="{_f(com[1])} 0.01 0"')
     path.write_text(off)
     with pytest.raises(snakecg.InputError, match=r"COM of link 'link2' lies 0.01 m off"):
-        robot_from_urdf(path)
+        robot_from_urdf(path, robot_type=snakecg.Robot)
     assert snakecg.Robot.from_urdf(path).com[1] == pytest.approx((com[1], 0.01, 0.0))
     # within the tolerance it is read (and the offset along the axis n is irrelevant)
     path.write_text(text.replace(f'<origin xyz="{_f(com[1])} 0 0"',

@@ -6,7 +6,7 @@ model is generated, loaded or evaluated and before anything is written. Option v
 never empty; numbers are finite and within the limits each option states.
 
 ``--json`` output is strict JSON (RFC 8259): a value that is not finite (an overflowing
-result) is printed as ``null`` and its path listed under ``"nonfinite"`` (docs/cli.md).
+result) is printed as ``null`` and its path listed under ``"nonfinite"`` (docs/reference/cli.md).
 
 Progress goes to standard error, standard output keeps the result: a line when a model's
 generation or compilation (or a stage of work) starts and one when it ends, on every stream;
@@ -28,6 +28,9 @@ from .._inputs import short_repr
 from ..errors import InputError
 from ..progress import progress_enabled, progress_reporter
 from ..robot import SCENARIOS, Robot, Scene
+
+#: The schema of ``snakecg show --json`` (planar and spatial chains).
+SHOW_SCHEMA = "snakecg.show/1"
 
 __all__ = [
     "parse_vector",
@@ -168,8 +171,8 @@ def add_robot_args(p, *, scene: bool = True) -> None:
     p.add_argument("--joints", type=int, metavar="N",
                    help="number of joints n_a (default 2, or the robot file's)")
     p.add_argument("--robot", metavar="FILE", type=text("a robot description file"),
-                   help="robot description file (TOML, see docs/model.md); the options below "
-                   "override its [scene] table")
+                   help="robot description file (TOML, see docs/explanation/model.md); the "
+                   "options below override its [scene] table")
     if scene:
         p.add_argument("--scenario", choices=SCENARIOS, type=lambda s: s.replace("-", "_"),
                        help="ground scenario (default frictionless)")

@@ -6,7 +6,7 @@ import argparse
 
 from ._common import add_robot_args, out_dir, print_json, scene_from_args, text
 
-#: Version of the JSON printed by ``snakecg export --json`` (docs/export.md).
+#: Version of the JSON printed by ``snakecg export --json`` (docs/how-to/export.md).
 SCHEMA = "snakecg.export/1"
 
 EXAMPLES = """\
@@ -25,7 +25,7 @@ def register(sub) -> None:
         "plain wrappers, robot_params.c with the robot's parameter vector K and the scene's "
         "constants baked in (from --robot, else the paper's Table 1 robot and the default "
         "scene), a Makefile and an example main.c. Every file is written atomically. "
-        "Build with `make -C DIR`; see docs/export.md.",
+        "Build with `make -C DIR`; see docs/how-to/export.md.",
         epilog=EXAMPLES,
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )

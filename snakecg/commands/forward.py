@@ -11,7 +11,7 @@ import sys
 from ._common import (add_robot_args, check_vector, parse_vector, print_json, progress_reporter,
                       scene_from_args, text)
 
-#: Version of the JSON printed by ``snakecg forward --json`` (docs/cli.md).
+#: Version of the JSON printed by ``snakecg forward --json`` (docs/reference/cli.md).
 SCHEMA = "snakecg.forward/1"
 
 EXAMPLES = """\
@@ -41,7 +41,7 @@ def register(sub) -> None:
     p.add_argument("--v", metavar="V", type=text("numbers, same order as --q"),
                    help="snake velocities, same order as --q (default: rest)")
     p.add_argument("--json", action="store_true",
-                   help=f"print JSON (schema {SCHEMA}, docs/cli.md)")
+                   help=f"print JSON (schema {SCHEMA}, docs/reference/cli.md)")
     p.set_defaults(run=run)
 
 

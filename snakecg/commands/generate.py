@@ -9,7 +9,7 @@ from pathlib import Path
 from ..errors import InputError
 from ._common import print_json, progress_reporter, text
 
-#: Version of the JSON printed by ``snakecg generate --json`` (docs/cli.md).
+#: Version of the JSON printed by ``snakecg generate --json`` (docs/reference/cli.md).
 SCHEMA = "snakecg.generate/1"
 
 EXAMPLES = """\
@@ -36,7 +36,7 @@ def register(sub) -> None:
     p.add_argument("--out", metavar="DIR", type=text("an output folder"),
                    help="write na<N>/ into DIR instead of the cache (not compiled)")
     p.add_argument("--json", action="store_true",
-                   help=f"print the result as JSON (schema {SCHEMA}, docs/cli.md)")
+                   help=f"print the result as JSON (schema {SCHEMA}, docs/reference/cli.md)")
     p.set_defaults(run=run)
 
 

@@ -69,7 +69,7 @@ def register(sub) -> None:
                    help="max-sr, scenario wheels: let wheels slide (all, or the listed links, "
                    "e.g. 2,3)")
     p.add_argument("--json", action="store_true",
-                   help=f"print JSON (schema {SCHEMA}, docs/optimize.md)")
+                   help=f"print JSON (schema {SCHEMA}, docs/how-to/optimize.md)")
     p.set_defaults(run=run)
 
 

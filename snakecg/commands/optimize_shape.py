@@ -20,7 +20,8 @@ examples:
   snakecg optimize-shape strongest-push --joints 3 --scenario wheels --figure best.png
   snakecg optimize-shape max-sr --joints 3 --scenario frictionless --ignore-geometry --starts 16
 
-exit status: 0 optimal, 1 infeasible or failed (the result is still printed), 2 input error.
+exit status: 0 optimal, 1 any other status (stick_only: sliding pieces not searched;
+infeasible; failed; the result is still printed), 2 input error.
 """
 
 CLI_OBJECTIVES = ("max-sr", "strongest-push", "least-slip-push", "max-a-obj")
@@ -80,7 +81,7 @@ def register(sub) -> None:
     p.add_argument("--figure", metavar="FILE",
                    help=f"draw the best shape and the object ({', '.join(FIGURE_SUFFIXES)})")
     p.add_argument("--json", action="store_true",
-                   help=f"print JSON (schema {SCHEMA}, docs/shapes.md)")
+                   help=f"print JSON (schema {SCHEMA}, docs/how-to/shapes.md)")
     p.set_defaults(run=run)
 
 

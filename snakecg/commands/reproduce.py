@@ -7,7 +7,7 @@ import argparse
 from ..reproduce import FORMATS, MAX_TORQUE_GRID
 from ._common import count, out_dir, print_json, real, text
 
-#: Version of the JSON printed by ``snakecg reproduce --json`` (docs/cli.md).
+#: Version of the JSON printed by ``snakecg reproduce --json`` (docs/reference/cli.md).
 SCHEMA = "snakecg.reproduce/1"
 
 
@@ -18,7 +18,7 @@ def register(sub) -> None:
         description="Case study 1 (2 joints): Fig. 4 torque-plane maps for kappa = 1, 10, 100 "
         "and the 784-configuration sweep; case study 2 (3 joints): Fig. 5 polar maps, Fig. 6 "
         "best/worst shapes and Table 2 beside the paper's values. Choices the paper leaves "
-        "open are documented in docs/reproduction.md.",
+        "open are documented in docs/how-to/reproduction.md.",
         epilog="examples:\n  snakecg reproduce --out snakecg-output\n"
         "  snakecg reproduce --out snakecg-output --json > summary.json",
         formatter_class=argparse.RawDescriptionHelpFormatter,
@@ -40,7 +40,7 @@ def register(sub) -> None:
     p.add_argument("--alternatives", action="store_true",
                    help="also write alternatives.md: Table 2 under alternative readings")
     p.add_argument("--json", action="store_true",
-                   help=f"print the summary as JSON (schema {SCHEMA}, docs/cli.md); the "
+                   help=f"print the summary as JSON (schema {SCHEMA}, docs/reference/cli.md); the "
                    "human-readable report goes to standard error")
     p.set_defaults(run=run)
 

@@ -18,10 +18,10 @@ import sys
 import textwrap
 
 from ..errors import ArtifactError, BuildError, InputError
-from ._common import print_json, progress_reporter
+from ._common import SHOW_SCHEMA, print_json, progress_reporter
 
-#: Version of the JSON printed by ``snakecg show --json`` (docs/cli.md).
-SCHEMA = "snakecg.show/1"
+#: Version of the JSON printed by ``snakecg show --json`` (docs/reference/cli.md).
+SCHEMA = SHOW_SCHEMA
 #: Largest joint count for symbolic inspection (the closed forms grow as n^3).
 MAX_SHOW_JOINTS = 8
 
@@ -58,13 +58,13 @@ def register(sub) -> None:
     fmt.add_argument("--latex", action="store_true", help="print LaTeX")
     fmt.add_argument("--json", action="store_true",
                      help=f"print JSON: text and LaTeX of each expression (schema {SCHEMA}, "
-                     "docs/cli.md)")
+                     "docs/reference/cli.md)")
     fmt.add_argument("--c", action="store_true", help="print the generated C of a function")
     p.add_argument("--simplify", action="store_true",
                    help="trigsimp and collect each entry before printing (display only; "
                    "seconds for 2 joints, minutes for 6-8)")
     p.add_argument("--spatial", action="store_true",
-                   help="the spatial chain with N joints (3-D snakes, docs/spatial.md)")
+                   help="the spatial chain with N joints (3-D snakes, docs/how-to/spatial.md)")
     p.set_defaults(run=run)
 
 

@@ -23,6 +23,8 @@ examples:
   snakecg simulate --joints 3 --scenario wheels --kappa 10 --q 0,0,0,30deg,-35deg,25deg \\
       --controller least-slip-push --a-min 0.02 --control-period 0.01 --out run1
   snakecg simulate --joints 2 --q 0,0,0,30deg,-35deg --tau 0.05,-0.02 --json --no-figures
+  snakecg simulate --joints 3 --scenario ideal_wheels --q 0,0,0,0,0,0 --controller serpenoid \
+      --amplitude 25deg --frequency 1 --phase-lag=-60deg --kp 3 --kd 0.2 --duration 2
 """
 
 
@@ -35,7 +37,7 @@ def register(sub) -> None:
         "--tau, or with the least-slippage push query as a feedback law (--controller). "
         "Contact separation, impacts and wheels breaking away or sticking again are events. "
         "Writes the trajectory (trajectory.npz), the summary (summary.json), figures (PNG) and "
-        "an animation (GIF) to --out; --json prints the summary (docs/simulate.md).",
+        "an animation (GIF) to --out; --json prints the summary (docs/how-to/simulate.md).",
         epilog=EXAMPLES,
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
@@ -50,13 +52,30 @@ def register(sub) -> None:
                    help="initial object twist vx,vy,omega (default 0)")
     p.add_argument("--duration", type=real(DURATION_MIN, DURATION_MAX, unit="s"), default=0.5,
                    help=f"seconds, {DURATION_MIN:g} to {DURATION_MAX:g} (default 0.5)")
-    p.add_argument("--controller", choices=("least-slip-push",), type=objective_name,
+    p.add_argument("--controller", choices=("least-slip-push", "serpenoid"),
+                   type=objective_name,
                    help="feedback law instead of --tau: the least-slippage push query "
-                   "(snakecg optimize) answered every --control-period")
+                   "(snakecg optimize) answered every --control-period, or a PD law that "
+                   "tracks Hirose's serpenoid curve (lateral undulation: --amplitude, "
+                   "--frequency, --phase-lag, --offset, gains --kp and --kd)")
     p.add_argument("--a-min", type=real(0, MAX_MAGNITUDE, unit="m/s^2"),
                    help="controller task: object acceleration along the contact normal (m/s^2)")
     p.add_argument("--tau-max", type=real(0, MAX_MAGNITUDE, lo_open=True, unit="N m"),
-                   help="controller: torque limit |tau_j| (N m)")
+                   help="controller: torque limit |tau_j| (N m; default the robot's effort "
+                   "limits)")
+    p.add_argument("--amplitude", type=text("an angle (rad, or NNdeg)"),
+                   help="serpenoid: amplitude of the joint angles (rad; NNdeg for degrees)")
+    p.add_argument("--frequency", type=real(0, 1e6, unit="Hz"),
+                   help="serpenoid: frequency of the wave (Hz)")
+    p.add_argument("--phase-lag", type=text("an angle (rad, or NNdeg)"),
+                   help="serpenoid: phase between neighbouring joints (rad; negative: the wave "
+                   "runs from the tail to the head)")
+    p.add_argument("--offset", type=text("an angle (rad, or NNdeg)"),
+                   help="serpenoid: constant bend added to every joint (rad; default 0)")
+    p.add_argument("--kp", type=real(0, MAX_MAGNITUDE, unit="N m/rad"),
+                   help="serpenoid: proportional gain (N m/rad)")
+    p.add_argument("--kd", type=real(0, MAX_MAGNITUDE, unit="N m s/rad"),
+                   help="serpenoid: derivative gain (N m s/rad)")
     p.add_argument("--control-period", type=real(0, lo_open=True, unit="s"),
                    help="zero-order hold of the controller (s, default 0.01)")
     p.add_argument("--method", default="DOP853", choices=METHODS,
@@ -104,7 +123,7 @@ def run(args) -> int:
     from .. import load
     from .._files import write_text
     from ..figures.simulation import save_figures
-    from ..simulate import least_slip_push_controller, simulate
+    from ..simulate import least_slip_push_controller, serpenoid_controller, simulate
 
     # every option checked against the robot and each other before the model is loaded
     scene = scene_from_args(args)
@@ -114,30 +133,40 @@ def run(args) -> int:
     v = check_vector("v0", parse_vector("--v", args.v), na + 3, what) if args.v else None
     v_obj = check_vector("v_obj0", parse_vector("--v-obj", args.v_obj), 3) \
         if args.v_obj else None
+    gait = _gait_options(args)
     if args.controller:
         if args.tau:
             raise InputError("give either --tau or --controller, not both")
-        if args.a_min is None:
+        if args.controller == "least-slip-push" and args.a_min is None:
             raise InputError("--controller least-slip-push needs --a-min (m/s^2 along the "
                              "contact normal)")
+        if args.controller == "serpenoid" and args.a_min is not None:
+            raise InputError("--a-min applies to --controller least-slip-push only")
         tau = None
     else:
         if not args.tau:
-            raise InputError("give the joint torques --tau (or --controller least-slip-push)")
-        for opt, val in (("--a-min", args.a_min), ("--tau-max", args.tau_max),
-                         ("--control-period", args.control_period)):
+            raise InputError("give the joint torques --tau (or --controller least-slip-push "
+                             "or serpenoid)")
+        for opt, val, which in (("--a-min", args.a_min, " least-slip-push"),
+                                ("--tau-max", args.tau_max, ""),
+                                ("--control-period", args.control_period, "")):
             if val is not None:
-                raise InputError(f"{opt} applies to --controller least-slip-push only")
+                raise InputError(f"{opt} applies to --controller{which} only")
         tau = check_vector("tau", parse_vector("--tau", args.tau), na,
                            f" (one torque per joint, n_a = {na})")
     _check_counts(args)
     out = out_dir("--out", args.out)
     model = load(scene, progress=progress_reporter())
     control_period = args.control_period
-    if args.controller:
+    if args.controller == "least-slip-push":
         tau = least_slip_push_controller(model, a_min=args.a_min, tau_max=args.tau_max)
         if control_period is None:
             control_period = 0.01
+    elif args.controller == "serpenoid":
+        tau = serpenoid_controller(model, **gait,
+                                   tau_max="robot" if args.tau_max is None else args.tau_max)
+        if control_period is None:
+            control_period = 0.002
     traj = simulate(model, q, tau, args.duration, v0=v, v_obj0=v_obj,
                     control_period=control_period, method=args.method, rtol=args.rtol,
                     atol=args.atol, stabilization=args.stabilization,
@@ -168,6 +197,30 @@ def run(args) -> int:
         sys.stderr.write(f"snakecg simulate: failed: {s['status']}\n")
         return 1
     return 0
+
+
+_GAIT = {"--amplitude": "amplitude", "--frequency": "frequency", "--phase-lag": "phase_lag",
+         "--offset": "offset", "--kp": "kp", "--kd": "kd"}
+
+
+def _gait_options(args) -> dict:
+    """The serpenoid's options (angles in rad or NNdeg), all given with --controller
+    serpenoid and none without it."""
+    given = {opt: getattr(args, key) for opt, key in _GAIT.items()
+             if getattr(args, key) is not None}
+    if args.controller != "serpenoid":
+        if given:
+            raise InputError(f"{next(iter(given))} applies to --controller serpenoid only")
+        return {}
+    missing = [opt for opt in _GAIT if opt != "--offset" and opt not in given]
+    if missing:
+        raise InputError(f"--controller serpenoid needs {', '.join(missing)}")
+    gait = {}
+    for opt, value in given.items():
+        if opt in ("--amplitude", "--phase-lag", "--offset"):
+            value = float(check_vector(opt, parse_vector(opt, value), 1, " (one angle)")[0])
+        gait[_GAIT[opt]] = value
+    return gait
 
 
 def _print_text(s: dict, files: dict) -> None:

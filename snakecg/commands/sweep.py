@@ -11,7 +11,7 @@ from ..errors import InputError
 from ._common import add_robot_args, print_json, real, scene_from_args
 from ._names import limits_line
 
-#: Version of the JSON printed by ``snakecg sweep --json`` (docs/sweep.md).
+#: Version of the JSON printed by ``snakecg sweep --json`` (docs/how-to/sweep.md).
 SCHEMA = "snakecg.sweep/1"
 
 EXAMPLES = """\
@@ -39,7 +39,7 @@ def register(sub) -> None:
         "--workers processes, or a running one at --scheduler) into the Zarr store --out. "
         "Rerun the same command after an interruption: only the missing chunks are computed. "
         "--summary and --figure read a store chunk by chunk. Needs the sweep extra "
-        "(pip install 'snakecg[sweep]'). Reference: docs/sweep.md.",
+        "(pip install 'snakecg[sweep]'). Reference: docs/how-to/sweep.md.",
         epilog=EXAMPLES,
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )

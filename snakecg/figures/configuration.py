@@ -84,12 +84,14 @@ def plot(scene, q, tau=None, ax=None, *, title: str | None = None):
     """Draw the configuration ``q`` of ``scene`` (a :class:`~snakecg.Scene` or its loaded
     model) on ``ax`` (a new figure if None); with ``tau``, the constraint forces and the
     accelerations of the forward solve at rest. Returns the axes. See the module doc."""
-    from ..model import SceneModel, load
+    from ..kinds import is_scene_model
     from ..robot import Scene
 
-    if isinstance(scene, SceneModel):
+    if is_scene_model(scene):
         model = scene
     elif isinstance(scene, Scene):
+        from ..model import load  # a scene given: the facade loads its model
+
         model = load(scene)
     else:
         raise InputError(f"scene must be a snakecg.Scene or its loaded model, got "

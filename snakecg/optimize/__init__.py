@@ -17,16 +17,24 @@ The input region is the ellipsoid of eq. (31), ``tau^T N tau <= radius^2`` with
 ``N = B^T M_s^-1 B`` (``radius = 1`` is the paper's region), the box ``|tau_j| <= tau_max_j``,
 or both.
 
-Structure used (see docs/optimize.md for the derivations):
+One home: every query, for one configuration or a batch, is one call of the compiled
+runtime core (``snakecg/engine/optimal.c``, ``wheel_states.c``, ``maps.c`` on the QP block
+``qp.c`` and the linear algebra of ``linalg.h``; bound in :mod:`snakecg.engine.optimal`), which
+per configuration builds the maps, solves, certifies the answer on the original problem, runs
+the exact forward solve at the answer and checks it. This package validates the query
+(:mod:`~snakecg.optimize.query`, :mod:`~snakecg.optimize.arguments`), builds the call's inputs
+(:mod:`~snakecg.optimize.api`) and words the answers (:mod:`~snakecg.optimize.answers`,
+:mod:`~snakecg.optimize.result`). A batch of one is the single call, bit for bit.
+
+Structure used (see docs/how-to/optimize.md for the derivations):
 
 1. With every constraint row held (contact kept, wheels sticking) the system at rest is
    linear in ``tau`` (eqs. 17, 22, 24): ``lam = L tau``, ``a_obj = A tau``,
    ``qdd = Q tau``; "contact kept" is ``L_c tau >= 0`` and "no wheel slides" is
    ``|L_i tau| <= mu m_i g``: linear inequalities. ``least_slip_push`` is then a convex QP
-   and ``strongest_push`` an LP (qpOASES through ``casadi.conic``). With the ellipsoid they
-   are convex QCQPs: the linear relaxation (the ellipsoid's bounding box) is solved first;
-   if its answer leaves the ellipsoid, the ellipsoid's multiplier ``mu`` is found by root
-   finding on ``tau(mu)^T N tau(mu) = r^2``, each step a QP (exact to solver precision).
+   and ``strongest_push`` an LP, solved by a dense dual active-set method (Goldfarb-Idnani)
+   and, on the ellipsoid, through the ellipsoid's multiplier (a monotone secular equation,
+   Newton's method on each piece of constant active set).
 2. One frictionless point contact (assumptions 2 and 6) pushes the object only along its
    normal: ``a_obj = a_dir * lam_c`` for a fixed ``a_dir``, so every push task is a bound on
    the contact force ``lam_c = L_c tau``, and a requested acceleration off ``a_dir`` is
@@ -41,29 +49,16 @@ Structure used (see docs/optimize.md for the derivations):
    rank-one numerator ``||a_obj||^2 = k lam_c^2``, ``max sr`` on one state is the convex
    problem ``min z^T Xi_h z`` subject to ``lam_c(z) = 1``, the state's validity cone and the
    region in homogeneous form (Charnes-Cooper): a QP per state; where the ellipsoid cuts
-   the state's optimum, tangent-plane cuts, then a convex NLP (IPOPT) if the state can still
-   win. States are pruned by an exact upper bound (the problem without the cone) before any
+   the state's optimum, the state's value function in ``t`` is minimised, each point a QCQP.
+   States are pruned by an exact upper bound (the problem without the cone) before any
    solve; the candidates are ranked by the exact forward solve.
 
-Every answer that claims to be optimal carries a :class:`Certificate`, checked on the
-original problem after the solve (KKT residuals, feasibility, and for the convex kinds the
-duality gap; :mod:`snakecg.optimize.certificate`). When it fails the query is solved again
-from scratch by a fresh solver; when that fails too the status is ``"failed"`` with the reason.
-Every answer is then checked with :meth:`SceneModel.forward`; a disagreement (a wheel that
-slides although it was kept, a different objective value, a violated limit) turns the status
-into ``"failed"`` with the reason.
-
-No answer depends on what ran before, in any order and from any thread: the solvers are built
-once per problem size and shared, but every solve starts from the same solver state (qpOASES
-is reset by a problem of the same constraint pattern with a known answer before each solve,
-under a lock, and its active set is solved exactly; IPOPT starts from the given point), see
-:mod:`snakecg.optimize.solvers`.
-
-Modules: :mod:`~snakecg.optimize.query` (input validation), :mod:`~snakecg.optimize.problems`
-(the maps and constraint rows), :mod:`~snakecg.optimize.solvers` (qpOASES, IPOPT, the
-ellipsoid multiplier), :mod:`~snakecg.optimize.max_sr` and :mod:`~snakecg.optimize.push` (the
-three kinds), :mod:`~snakecg.optimize.certificate`, :mod:`~snakecg.optimize.api`
-(:func:`optimize`), :mod:`~snakecg.optimize.result`.
+Every answer that claims to be optimal carries a :class:`Certificate`, computed in C on the
+original problem (KKT residuals, feasibility, and for the convex kinds the duality gap);
+``"optimal"`` is only returned when it holds. Every answer is then checked with the exact
+forward solve; a disagreement (a wheel that slides although it was kept, a different objective
+value, a violated limit) turns the status into ``"failed"`` with the reason. The compiled
+call keeps no state between calls: every answer is a function of the query alone.
 """
 
 from __future__ import annotations
@@ -78,9 +73,10 @@ from .result import (
     OBJECTIVES,
     SCHEMA,
     STATUSES,
+    TOLERANCE,
     Certificate,
     OptimizeResult,
 )
 
 __all__ = ["optimize", "OptimizeResult", "Certificate", "OBJECTIVES", "STATUSES", "SCHEMA",
-           "CONTACT", "ELLIPSOID", "NORMAL", "FRICTION_MARGIN", "CHECK_TOL"]
+           "CONTACT", "ELLIPSOID", "NORMAL", "FRICTION_MARGIN", "CHECK_TOL", "TOLERANCE"]

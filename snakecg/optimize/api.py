@@ -1,5 +1,7 @@
-"""The entry point :func:`optimize`: validate, build the maps, solve each configuration,
-certify the answer on the original problem, check it with the exact forward solve."""
+"""The entry point :func:`optimize`: validate the query, build the compiled call's inputs, one
+call of the runtime core for every configuration (:mod:`snakecg.engine.optimal`: the maps, the
+solve, the certificate, the forward solve at the answer and its check), the answers as an
+:class:`~snakecg.optimize.OptimizeResult`."""
 
 from __future__ import annotations
 
@@ -8,17 +10,18 @@ import time
 
 import numpy as np
 
-from .certificate import certify
-from .fast import quad
-from .finish import (answerable_tau, check, objective_value, one_result, state_names,
-                     unanswered)
-from .max_sr import max_sr
-from .problems import Answer, configs, floats
-from .push import least_slip_push, strongest_push
-from .query import validate
-from .quick import quick
-from .result import Certificate, OptimizeResult
-from .solvers import cold
+from ..engine.optimal import CHECK, KINDS, REASON
+from ..errors import SnakecgError
+from .answers import result
+from .query import Query, validate
+from .result import (ACTIVE, CHECK_TOL, FRICTION_MARGIN, HESSIAN_REG, LP_REG, SR_TIE,
+                     TOLERANCE, OptimizeResult)
+
+#: The settings of the compiled query (Layout.optimal_in_fields, in order).
+_SETTINGS = [FRICTION_MARGIN, CHECK_TOL, SR_TIE, HESSIAN_REG, LP_REG, ACTIVE,
+             TOLERANCE["stationarity"], TOLERANCE["primal_feasibility"],
+             TOLERANCE["complementarity"], TOLERANCE["duality_gap"]]
+_NAN = math.nan
 
 
 def optimize(model, q, objective: str = "max_sr", *, tau_max="robot", radius=None,
@@ -57,69 +60,71 @@ def optimize(model, q, objective: str = "max_sr", *, tau_max="robot", radius=Non
     OptimizeResult
         ``tau``, ``status`` (``"optimal"``/``"infeasible"``/``"failed"``) with ``reason``,
         ``objective_value``, ``binding``, ``analysis`` (the forward result at ``tau``),
-        ``solver``, ``iterations``, ``time``; ``limits``: the torque box and ellipsoid that
-        bound the answer and where they came from; ``note``: what the status alone does
-        not say (a push whose object moves off the requested direction).
+        ``solver``, ``iterations``, ``time``, ``certificate``; ``limits``: the torque box and
+        ellipsoid that bound the answer and where they came from; ``note``: what the status
+        alone does not say (a push whose object moves off the requested direction).
     """
     t0 = time.perf_counter()
     query = validate(model, objective, tau_max, radius, direction, a_min, a_obj, allow_slide)
     qa, batched = _configurations(model, q)
-    if not batched:  # the common case in one compiled call, when it applies
-        res = quick(model, query, qa[0], t0)
-        if res is not None:
-            res._query = query
-            return res
-    cfgs = configs(model, qa)
-    run = {"max_sr": max_sr, "least_slip_push": least_slip_push,
-           "strongest_push": strongest_push}[query.objective]
-    answers, certs = [], []
-    for cfg in cfgs:
-        if cfg.singular:
-            answers.append(Answer(np.zeros(model.n_joints), "failed",
-                                  "dependent constraint rows at this configuration (singular "
-                                  "Delassus matrix); the maps are not defined", (), "none", 0,
-                                  None))
-            certs.append(Certificate("none", False, reason="singular configuration"))
-            continue
-        a, cert = _certified(model, query, cfg, run)
-        answers.append(a)
-        certs.append(cert)
-    if not batched:  # one configuration: the one-sample forward solve, plain fields
-        a, cfg = answers[0], cfgs[0]
-        e = _form(query, cfg, a) if a.status == "optimal" else None
-        res = one_result(model, query, cfg.q, a, certs[0], cfg.a_dir, e, t0)
-        res._query = query
-        return res
-    checked = [answerable_tau(model, cfg.q, a.tau) for a, cfg in zip(answers, cfgs)]
-    analysis = model.forward(qa, np.array([t for t, _ in checked]))
-    raw = analysis.raw
-    for b, (a, (_, why)) in enumerate(zip(answers, checked)):
-        if why:
-            unanswered(model, raw[b], a, why)
-    taus = np.array([a.tau for a in answers])
-    values = np.array([objective_value(model, query, cfg.a_dir, raw[b])
-                       for b, cfg in enumerate(cfgs)])
-    for b, (a, cfg) in enumerate(zip(answers, cfgs)):
-        if a.status == "optimal" and np.isnan(values[b]) and analysis[b].reason:
-            a.status, a.reason = "failed", analysis[b].reason
-        if a.status == "optimal":
-            problem = check(model, query, a, raw[b], values[b], _form(query, cfg, a))
-            if problem:
-                a.status, a.reason = "failed", f"forward check: {problem}"
-    elapsed = (time.perf_counter() - t0) / len(answers)
-    res = OptimizeResult(
-        objective=query.objective, tau=taus,
-        status=np.array([a.status for a in answers], dtype=object),
-        reason=np.array([a.reason for a in answers], dtype=object),
-        objective_value=values, binding=[a.binding for a in answers], analysis=analysis,
-        solver=np.array([a.solver for a in answers], dtype=object),
-        iterations=np.array([a.iterations for a in answers]),
-        time=np.full(len(answers), elapsed),
-        wheel_states_assumed=[state_names(a.states) for a in answers],
-        certificate=certs,
-    )
-    res._query = query
+    core = model.core
+    if core is None:
+        raise SnakecgError(
+            "optimal torques are computed by the compiled runtime core, which this model does "
+            f"not have (backend {model.backend_kind!r}: no C compiler, or the build failed); "
+            "install a C compiler (gcc or clang, or set CC) and load the scene again")
+    kernel = core.optimal
+    query_in = query_vector(query)
+    out = kernel.solve(model, query_in, qa)
+    check = kernel.OUT["check"][0]
+    pending = np.flatnonzero(out[:, check] == CHECK["pending"])
+    f0, t0_ = kernel.OUT["forward"][0], kernel.OUT["tau"][0]
+    if pending.size:  # forward rows that the compiled forward solve left to its reference path
+        taus = out[pending, t0_:t0_ + model.n_joints]
+        rows = model.forward(qa[pending], np.ascontiguousarray(taus)).raw
+        out[pending, f0:f0 + rows.shape[1]] = rows
+        kernel.check(query_in, out)
+    reason = out[:, kernel.OUT["reason"][0]]
+    unanswered = np.flatnonzero((reason == REASON["not_finite"])
+                                | (reason == REASON["unanswerable"]))
+    for i in unanswered.tolist():  # no torque to check: the forward solve at zero says why
+        fw = model.forward(qa[i], np.zeros(model.n_joints))
+        out[i, f0:f0 + fw.raw.size] = no_answer(model, fw.raw)
+        out[i, t0_:t0_ + model.n_joints] = np.nan
+        out[i, kernel.OUT["detail"][0] + 1] = fw.raw[model.columns.status]
+    res = result(model, query, kernel, out, batched, time.perf_counter() - t0,
+                 tuple(_SETTINGS[6:10]))
+    res._query = query  # for its limits and note
     return res
+
+
+def no_answer(model, row):
+    """A forward result row marked as no answer: NaN, flagged singular (its status kept)."""
+    row = row.copy()
+    cols = model.columns
+    for k in ("tau", "qdd", "a_obj", "lam", "w"):
+        row[cols.slices[k]] = np.nan
+    for k in ("norm_lambda", "norm_a_obj", "norm_qdd", "sr", "conditioning"):
+        row[cols.index[k]] = np.nan
+    row[cols.singular] = 1.0
+    return row
+
+
+def query_vector(query: Query) -> np.ndarray:
+    """The compiled query's input vector (:meth:`snakecg.engine.Layout.optimal_in_fields`):
+    the settings, then the query with NaN where it has no such value."""
+    tm = query.tau_max
+    d = query.direction
+    ao = query.a_obj
+    na = len(query.slide) - 2
+    vals = _SETTINGS + [KINDS[query.objective],
+                        _NAN if query.radius is None else query.radius]
+    vals += [_NAN] * na if tm is None else tm.tolist()
+    vals += [_NAN] * 3 if d is None else d.tolist()
+    vals.append(_NAN if query.a_min is None else query.a_min)
+    vals += [_NAN] * 3 if ao is None else ao.tolist()
+    vals += query.slide.tolist()
+    return np.array(vals, dtype=float)
 
 
 def _configurations(model, q):
@@ -128,32 +133,3 @@ def _configurations(model, q):
             and q.flags.c_contiguous and math.isfinite(float(q.sum()))):
         return q[None, :], False
     return model.configurations(q)
-
-
-def _certified(model, query, cfg, run):
-    """Solve, then certify the answer on the original problem; when the certificate fails,
-    re-solve from scratch (a fresh solver, no hot start) and certify again; an answer whose
-    certificate still fails is returned as ``"failed"`` with the reason."""
-    a = run(model, query, cfg)
-    if a.status != "optimal":
-        return a, Certificate("none", False, reason=f"no optimality claim: {a.status}")
-    cert = certify(model, query, cfg, a)
-    if cert.ok:
-        return a, cert
-    with cold():
-        b = run(model, query, cfg)
-    cert_b = certify(model, query, cfg, b) if b.status == "optimal" else cert
-    cert_b.resolved = True
-    if b.status == "optimal" and cert_b.ok:
-        return b, cert_b
-    b = a if b.status == "optimal" else b
-    b.status = "failed"
-    b.reason = (f"optimality certificate ({cert_b.kind}) fails after a cold re-solve: "
-                f"{cert_b.reason or b.reason}")
-    return b, cert_b
-
-
-def _form(query, cfg, a: Answer):
-    """``tau^T N tau`` of the answer when the query has an ellipsoid (the forward check
-    compares it with ``radius^2``), else None."""
-    return quad(floats(cfg)["N"], a.tau.tolist()) if query.radius is not None else None

@@ -8,6 +8,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import InputError
+from ..kinds import is_scene_model
 from ..limits import ROBOT
 from .result import OBJECTIVES
 
@@ -39,16 +40,8 @@ def _finite_vector(name, value, sizes, what):
     return arr
 
 
-#: snakecg.model.SceneModel, imported on first use (an import inside every call costs
-#: microseconds)
-_SceneModel = None
-
-
 def validate(model, objective, tau_max, radius, direction, a_min, a_obj, allow_slide):
-    global _SceneModel
-    if _SceneModel is None:
-        from ..model import SceneModel as _SceneModel
-    if not isinstance(model, _SceneModel):
+    if not is_scene_model(model):
         raise InputError(
             f"model must be a snakecg.SceneModel (snakecg.load(scene)), got {type(model).__name__}"
         )
@@ -125,11 +118,12 @@ def validate(model, objective, tau_max, radius, direction, a_min, a_obj, allow_s
                              "(m/s^2), or a_obj=(a_x, a_y, alpha)")
     # wheels allowed to slide
     if allow_slide is False or allow_slide is None:  # the common case: nothing slides
-        none = model.__dict__.get("_snakecg_optimize_no_slide")
+        derived = model.data().derived
+        none = derived.get("optimize.no_slide")
         if none is None:
             none = np.zeros(model.n_constraints, dtype=bool)
             none.setflags(write=False)
-            model.__dict__["_snakecg_optimize_no_slide"] = none
+            derived["optimize.no_slide"] = none
         return Query(objective, tau_max, radius, d, a_min, ao, none,
                      None if tau_max is None else source)
     bounded = model.present & np.isfinite(model.bounds)
@@ -162,16 +156,16 @@ def validate(model, objective, tau_max, radius, direction, a_min, a_obj, allow_s
 
 
 def _robot_tau_max(model):
-    """The torque box of the robot's effort limits (read-only, kept on the model), and its
-    source; ``(None, None)`` for a robot without effort limits."""
-    cached = model.__dict__.get("_snakecg_effort_limits")
+    """The torque box of the robot's effort limits (read-only, kept in the model's data), and
+    its source; ``(None, None)`` for a robot without effort limits."""
+    derived = model.data().derived
+    cached = derived.get("optimize.effort_limits")
     if cached is None:
         e = model.robot.effort_limits
         arr = None if e is None else np.array(e, dtype=float)
         if arr is not None:
             arr.setflags(write=False)
-        cached = model.__dict__["_snakecg_effort_limits"] = (arr, None if e is None
-                                                              else "robot")
+        cached = derived["optimize.effort_limits"] = (arr, None if e is None else "robot")
     return cached
 
 

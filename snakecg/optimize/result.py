@@ -10,7 +10,8 @@ import numpy as np
 #: Objective names (the CLI spells them with dashes).
 OBJECTIVES = ("max_sr", "least_slip_push", "strongest_push")
 STATUSES = ("optimal", "infeasible", "failed")
-#: Version of :meth:`OptimizeResult.to_dict` and ``snakecg optimize --json`` (docs/optimize.md).
+#: Version of :meth:`OptimizeResult.to_dict` and ``snakecg optimize --json``
+#: (docs/how-to/optimize.md).
 SCHEMA = "snakecg.optimize/1"
 
 #: Relative back-off from the friction bounds, so the exact forward solve sees the wheels stick.
@@ -22,6 +23,16 @@ CHECK_TOL = 1e-6
 SR_TIE = 1e-9
 #: Relative Tikhonov term added to the (semidefinite) QP Hessians, in scaled variables.
 HESSIAN_REG = 1e-11
+#: Curvature of the QP that stands for an LP (scaled variables, objective of size 1): at a
+#: vertex whose multipliers exceed it times the torque's size (every non-degenerate LP optimum
+#: here) the QP's solution is that vertex exactly; on a degenerate optimal face, the face's
+#: point nearest the origin.
+LP_REG = 1e-9
+#: A constraint whose slack is below this (relative to the row's size) is active (certificate).
+ACTIVE = 1e-7
+#: Relative tolerances of the certificate.
+TOLERANCE = {"stationarity": 1e-7, "primal_feasibility": 1e-9, "complementarity": 1e-8,
+             "duality_gap": 1e-8}
 #: A push whose object accelerates more than this many degrees off the requested direction
 #: says so in its ``note``.
 OFF_DIRECTION_DEG = 0.01
@@ -56,8 +67,8 @@ class OptimizeResult:
       ``"torque limit on joint 2"``, ``"friction bound of the wheel on link 3"``,
       ``"input ellipsoid (eq. 31)"``, ``"contact would separate"``.
     * ``analysis``: :class:`~snakecg.ForwardResult` at ``tau`` (the exact forward solve).
-    * ``solver``: what produced ``tau``; ``iterations``: solver iterations (for max_sr with
-      sliding wheels: QPs solved plus IPOPT iterations); ``time``: wall-clock seconds of the
+    * ``solver``: the methods that produced ``tau``; ``iterations``: QPs solved plus the
+      Newton steps on the ellipsoid's secular equation; ``time``: wall-clock seconds of the
       query (batched: the batch's time divided evenly).
     * ``certificate``: :class:`Certificate` (a list of them for a batch): the optimality
       conditions checked on the original problem after the solve; ``"optimal"`` is only
@@ -138,7 +149,7 @@ class OptimizeResult:
         return notes[0] if single else np.array(notes, dtype=object)
 
     def to_dict(self) -> dict:
-        """JSON-ready dictionary (schema ``snakecg.optimize/1``, docs/optimize.md)."""
+        """JSON-ready dictionary (schema ``snakecg.optimize/1``, docs/how-to/optimize.md)."""
         an = self.analysis.to_dict()
         for k in ("contact", "singular"):
             v = np.asarray(getattr(self.analysis, k))
@@ -182,8 +193,10 @@ class Certificate:
     """Optimality conditions of an answer, checked on the original problem after the solve.
 
     The problem is rebuilt from the configuration's maps in the torque itself (no scaling, no
-    regularisation, no homogeneous variable), the multipliers of the constraints active at
-    ``tau`` are recomputed from the stationarity condition (non-negative least squares), and:
+    regularisation, no homogeneous variable; for max_sr with sliding wheels, the winning
+    state's problem in ``z = (tau, t)``), the multipliers of the constraints active at ``tau``
+    are recomputed from the stationarity condition (least squares, non-negative where the
+    signs bind), and:
 
     * ``stationarity``: ``||grad f - sum_i lam_i grad g_i||`` relative to the size of the
       gradient's terms (``||H|| ||tau|| + ||c||``, or the multipliers' terms if larger);
@@ -199,7 +212,9 @@ class Certificate:
     QCQP)"``, ``"generalized eigenproblem"``, ``"kkt of the winning wheel state"``, or
     ``"none"`` when no optimality claim is made); ``ok`` is whether every residual is within
     ``tolerance``; ``resolved`` is True when the first solve failed the check and the answer
-    comes from a cold re-solve; ``reason`` says which condition failed ("" when ok).
+    comes from a second method (max_sr: the general eigenproblem after the closed form);
+    ``reason`` says which condition failed ("" when ok). Computed in C with the answer
+    (``snakecg/engine/qp.c``, ``optimal.c``).
     """
 
     kind: str
@@ -213,7 +228,7 @@ class Certificate:
     reason: str = ""
 
     def to_dict(self) -> dict:
-        """JSON-ready dictionary (the ``certificate`` object of docs/optimize.md)."""
+        """JSON-ready dictionary (the ``certificate`` object of docs/how-to/optimize.md)."""
         return {k: _plain(getattr(self, k)) for k in self.__dataclass_fields__}
 
 

@@ -26,14 +26,13 @@ coarse grid scored by the exact inner optimum over the torque; the best run wins
 broken by the joint angles, so the answer does not depend on the order of the starts. At the
 answer the torque is recomputed by the exact per-configuration optimizer
 (:func:`snakecg.optimize.optimize`; for ``max_a_obj`` the closed form or IPOPT's torque) and
-checked by the forward analysis. See docs/shapes.md.
+checked by the forward analysis. See docs/how-to/shapes.md.
 """
 
 from __future__ import annotations
 
 import math
 import time
-import weakref
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -58,9 +57,6 @@ CHECK_TOL = 1e-6
 REGULARIZED_TOL = 1e-4
 #: Geometric constraints are checked at the answer to this tolerance (m).
 GEOMETRY_TOL = 1e-9
-
-_PROBLEMS: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
-
 
 @dataclass
 class OptimizeShapeResult:
@@ -109,7 +105,7 @@ class OptimizeShapeResult:
         return self.status == "optimal"
 
     def to_dict(self) -> dict:
-        """JSON-ready dictionary (schema ``snakecg.optimize_shape/1``, docs/shapes.md)."""
+        """JSON-ready dictionary (schema ``snakecg.optimize_shape/1``, docs/how-to/shapes.md)."""
         an = self.analysis.to_dict() if self.analysis is not None else None
         if an is not None:
             for k in ("contact", "singular"):
@@ -143,10 +139,10 @@ def _l(a):
 
 # ------------------------------------------------------------------------------------------
 def _validate(model, objective, q0, starts, seed, joint_limits, feasible, clearance, task):
-    from ..model import SceneModel
+    from ..kinds import is_scene_model
     from ..optimize.query import validate as validate_task
 
-    if not isinstance(model, SceneModel):
+    if not is_scene_model(model):
         raise InputError(f"model must be a snakecg.SceneModel (snakecg.load(scene)), got "
                          f"{type(model).__name__}")
     if not isinstance(objective, str) or objective.replace("-", "_") not in OBJECTIVES:
@@ -215,7 +211,7 @@ def _validate(model, objective, q0, starts, seed, joint_limits, feasible, cleara
 
 
 def _problem(model, objective, form, feasible, box, ellipsoid, task):
-    cache = _PROBLEMS.setdefault(model, {})
+    cache = model.data().derived.setdefault("shape.problems", {})
     key = (objective, form, feasible, box, ellipsoid, task)
     if key not in cache:
         cache[key] = _nlp.Problem(model, objective, form, feasible=feasible, box=box,

@@ -53,7 +53,9 @@ The package: ``simulator`` (the integration loop), ``dynamics`` (the equations a
 ``events`` (event functions, impacts, the active set at an event), ``contact_check`` (the
 geometry at every step, sample and event), ``modes``, ``torques``,
 ``inputs`` (argument checks and limits), ``assembly`` (trajectory and summary), ``records``,
-``controllers``. The drawing, :func:`save_figures` and :func:`save_animation`, is
+``controllers``, ``gaits`` (serpenoid PD tracking, torque tables), ``batch`` (many runs in
+one call). The drawing,
+:func:`save_figures` and :func:`save_animation`, is
 :mod:`snakecg.figures.simulation`, imported on first use (matplotlib is not needed to
 simulate).
 """
@@ -63,6 +65,8 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from .controllers import LeastSlipPush, least_slip_push_controller
+from .batch import RunBatch, simulate_batch
+from .gaits import Serpenoid, SerpenoidPD, TorqueTable, serpenoid_controller
 from .inputs import MAX_FRAMES as MAX_FRAMES  # the limits, where they were before
 from .inputs import MAX_OUTPUT_SAMPLES as MAX_OUTPUT_SAMPLES
 from .inputs import MAX_PERIODS as MAX_PERIODS
@@ -77,6 +81,12 @@ if TYPE_CHECKING:  # imported on first use (matplotlib), see __getattr__
 
 __all__ = [
     "simulate",
+    "simulate_batch",
+    "RunBatch",
+    "Serpenoid",
+    "SerpenoidPD",
+    "TorqueTable",
+    "serpenoid_controller",
     "Trajectory",
     "SimEvent",
     "Violation",

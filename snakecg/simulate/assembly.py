@@ -186,7 +186,8 @@ def _runs(blocks):
 
 
 def summary(sim, tr: Trajectory, status: str) -> dict:
-    """The JSON-ready summary of the trajectory ``tr`` of the run ``sim`` (docs/simulate.md)."""
+    """The JSON-ready summary of the trajectory ``tr`` of the run ``sim``
+    (docs/how-to/simulate.md)."""
     cfg, dyn = sim.settings, sim.dyn
     sc = dyn.scene
     t = tr.t

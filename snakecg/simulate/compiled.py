@@ -3,7 +3,7 @@ the output times and the event functions of a segment in one C call
 (``core_integrate_segment`` of the model library's ``integrate.c``), answering what
 :func:`scipy.integrate.solve_ivp` answers to :class:`~snakecg.simulate.simulator.Simulator`;
 and what happens at an event (impacts, projections, the new active set) in one C call
-(``core_settle`` of ``settle.c``), answering what
+(``core_settle`` of ``events.c``), answering what
 :meth:`~snakecg.simulate.events.Events.settle` computes in Python.
 
 Used for ``method="DOP853"`` without ``fixed_step`` when the torque is constant over each
@@ -15,14 +15,13 @@ solve_ivp.
 
 from __future__ import annotations
 
-import ctypes
 import math
-import weakref
 from types import SimpleNamespace
 
 import numpy as np
 
-from ..core.segment import (
+from ..engine.binding import copied, empty_pointers, int64s, pointers
+from ..engine.segment import (
     PAUSE_AFTER,
     RUN_COMPLETED,
     RUN_GEOMETRY,
@@ -62,9 +61,6 @@ def compiled_reason(settings) -> str | None:
     return None
 
 
-_PLACE: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
-
-
 def placement(model, q0):
     """The scene's placement of the object at the checked ``q0`` (n_s,): ``(q_obj0, rho)``,
     new arrays, as :meth:`snakecg.SceneModel.place` gives them, through the compiled batch
@@ -74,7 +70,8 @@ def placement(model, q0):
     if fn is None:
         q_obj0, rho, _ = model.place(q0[None, :], 1)
         return q_obj0[0].copy(), rho[0].copy()
-    fixed = _PLACE.get(model)
+    derived = model.data().derived
+    fixed = derived.get("simulate.place")
     if fixed is None:
         sig = be.signatures["place_object"]
         values = {"K": model.parameters, "contact_link": model._contact_link,
@@ -82,7 +79,7 @@ def placement(model, q0):
                   "object_distance": [model.scene.object_distance], "side": model._side}
         packed = np.concatenate([np.ravel(np.asarray(values[k], dtype=float))
                                  for k in sig.in_names if k != "q"])
-        argp, off = (ctypes.c_void_p * len(sig.in_names))(), 0
+        argp, off = empty_pointers(len(sig.in_names)), 0
         for i, (k, size) in enumerate(zip(sig.in_names, sig.in_sizes)):
             if k != "q":
                 argp[i] = packed.ctypes.data + 8 * off
@@ -90,7 +87,7 @@ def placement(model, q0):
         sizes = [r * c for r, c in sig.out_shapes]  # q_obj (3), rho (2), contact point (2)
         # the template of the pointer arrays (copied at each call: the q and output pointers
         # are the call's), the strides (all 0: one sample), where q and the outputs go
-        fixed = _PLACE[model] = (packed, argp, (ctypes.c_longlong * len(argp))(),
+        fixed = derived["simulate.place"] = (packed, argp, int64s(len(argp)),
                                  sig.in_names.index("q"), len(q0),
                                  np.cumsum([len(q0), *sizes[:-1]]).tolist(), sum(sizes))
     _, template, strides, k, ns, offsets, n_out = fixed
@@ -98,9 +95,9 @@ def placement(model, q0):
     buf = np.empty(ns + n_out)
     buf[:ns] = q0
     base = buf.ctypes.data
-    argp = type(template).from_buffer_copy(template)
+    argp = copied(template)
     argp[k] = base
-    resp = (ctypes.c_void_p * len(offsets))(*[base + 8 * o for o in offsets])
+    resp = pointers(base + 8 * o for o in offsets)
     if fn(1, argp, strides, resp) != 0:
         q_obj0, rho, _ = model.place(q0[None, :], 1)
         return q_obj0[0].copy(), rho[0].copy()
@@ -192,7 +189,7 @@ class CompiledSegments:
         energy ``loss`` removed there) with the constant torque ``tau`` to ``T``, output at
         ``grid`` (increasing, the last is ``T``), in C (``core_run``, called again while it
         pauses): the filled
-        :class:`~snakecg.core.segment.Run` (the workspace's: read it before the next run) and
+        :class:`~snakecg.engine.segment.Run` (the workspace's: read it before the next run) and
         its arrays (``t``, ``y``, ``mode``, ``loss`` and the quantities ``samples`` (as
         :meth:`samples_into`) of each sample, the ``modes`` and the ``events``, see run.c),
         or ``None`` when the Python loop must do the run.
@@ -269,9 +266,9 @@ class CompiledSegments:
     def settle(self, y, prev, forced: dict, contact_candidate: bool, tau):
         """``core_settle`` at the state ``y`` after the mode ``prev`` (``None`` at the start)
         with the rows ``forced`` (row: state code) and the torque ``tau``: the
-        :class:`~snakecg.core.segment.Settle` it filled (outputs in ``s_y_out``,
+        :class:`~snakecg.engine.segment.Settle` it filled (outputs in ``s_y_out``,
         ``s_state``, ``s_impact_lam``, ``s_projection_lam``), or ``None`` when the Python
-        path must do it (see settle.c)."""
+        path must do it (see events.c)."""
         st = self.st
         self.s_y[:] = y
         self.tau[:] = tau
@@ -326,9 +323,9 @@ class CompiledSegments:
         q, base = Q.ctypes.data, buf.ctypes.data
         outs = (base, base + 8 * n * ns * ns)
         for (fn, K, k, strides), out in zip(self._kin, outs):
-            argp = (ctypes.c_void_p * 2)()
+            argp = empty_pointers(2)
             argp[k], argp[1 - k] = q, K
-            if fn(n, argp, strides, (ctypes.c_void_p * 1)(out)) != 0:
+            if fn(n, argp, strides, pointers([out])) != 0:
                 return None
         M = buf[:n * ns * ns].reshape(n, ns, ns).transpose(0, 2, 1)
         return M, buf[n * ns * ns:].reshape(n, nl, 3)

@@ -17,18 +17,17 @@ between the last two checks by Brent's method on the integrator's dense output.
   violation is reported all the same (and is the status);
 * ``"off"``: no check; the status is ``"completed (geometry not checked)"``.
 
-In compiled segments the check runs in C (``geometry.h``, ``sc_geometry``); this class holds
+In compiled segments the check runs in C (``geometry.c``, ``sc_geometry``); this class holds
 its struct and does the same in Python for the segments that ``solve_ivp`` integrates.
 """
 
 from __future__ import annotations
 
-import ctypes
-import weakref
 
 import numpy as np
 
-from ..core.segment import GEO_OFF, GEO_RECORD, GEO_STOP, Geometry
+from ..engine.binding import Geometry, address
+from ..engine.segment import GEO_OFF, GEO_RECORD, GEO_STOP
 from ..errors import InputError
 from ..geometry import ContactCheck
 from .records import Violation
@@ -39,15 +38,16 @@ __all__ = ["MODES", "RunCheck"]
 MODES = ("stop", "report", "off")
 _CODES = {"stop": GEO_STOP, "report": GEO_RECORD, "off": GEO_OFF}
 _XTOL = 4 * float(np.finfo(float).eps)  # Brent's method as the events' (scipy's brentq)
-#: The :class:`~snakecg.geometry.ContactCheck` of a model and its link lengths, made once.
-_SHAPES: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
 
 
 def _shape_of(model):
-    got = _SHAPES.get(model)
+    """The :class:`~snakecg.geometry.ContactCheck` of a model and its link lengths, made once
+    (kept in the model's data)."""
+    derived = model.data().derived
+    got = derived.get("simulate.shapes")
     if got is None:
         robot = model.scene.robot
-        got = _SHAPES[model] = (ContactCheck.of_scene(model.scene),
+        got = derived["simulate.shapes"] = (ContactCheck.of_scene(model.scene),
                                 np.ascontiguousarray(robot.length, dtype=float),
                                 float(robot.com[0]))
     return got
@@ -57,7 +57,7 @@ class RunCheck:
     """The contact check of one run of ``model`` in ``mode`` (:data:`MODES`); ``ns``, ``ny``:
     the sizes of ``q`` and of the integrated state ``y = (q, q_obj, ...)``.
 
-    ``struct``: the :class:`~snakecg.core.segment.Geometry` the compiled segments read and
+    ``struct``: the :class:`~snakecg.engine.segment.Geometry` the compiled segments read and
     fill (its address ``address``); the first violation is kept there, by C or by Python.
     """
 
@@ -75,7 +75,7 @@ class RunCheck:
         g.tol, g.half, g.radius = self.tolerance, self.shape.half, self.shape.radius
         g.length, g.com1 = self._length.ctypes.data, com1
         g.y = self._y.ctypes.data
-        self.address = ctypes.addressof(g)
+        self.address = address(g)
         core = getattr(model, "core", None)
         self._c = getattr(core, "contact_depth", None)
 

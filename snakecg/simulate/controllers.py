@@ -22,7 +22,8 @@ class LeastSlipPush:
     along the link are left out), which is exactly what a simulation of it can reveal. The
     task: the object's acceleration along ``direction`` at least ``a_min`` (``direction``
     default: the current contact normal), or the full planar acceleration ``a_obj``; torque
-    limits ``tau_max`` and/or the ellipsoid ``radius`` as in :func:`snakecg.optimize.optimize`.
+    limits ``tau_max`` and/or the ellipsoid ``radius`` as in :func:`snakecg.optimize.optimize`
+    (default: the robot's effort limits where it has them, as the query's).
     An infeasible task gives the query's closest torque (its strongest push within the
     limits). ``history`` lists ``(t, status, objective_value)`` of every call.
     """

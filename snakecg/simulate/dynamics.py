@@ -15,7 +15,6 @@ contact, ``udot = -2 alpha u`` for a sticking wheel).
 from __future__ import annotations
 
 import math
-import weakref
 from functools import cached_property
 
 import numpy as np
@@ -32,13 +31,11 @@ _RHS_OUTPUTS = ("qdd", "a_obj", "lam", "gap", "s", "sr", "norm_a_obj", "norm_qdd
                 "pivot_ratio", "delassus")
 
 
-_CONSTANTS: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
-
-
 def _constants(model) -> dict:
     """What :class:`Dynamics` takes from the model and its scene, built once per model (the
-    arrays read-only: every run shares them)."""
-    c = _CONSTANTS.get(model)
+    arrays read-only: every run shares them; kept in the model's data)."""
+    derived = model.data().derived
+    c = derived.get("simulate.constants")
     if c is None:
         scene = model.scene
         ns, na, nl, nc = (model.n_coordinates, model.n_joints, model.n_links,
@@ -56,7 +53,7 @@ def _constants(model) -> dict:
         for v in c.values():
             if isinstance(v, np.ndarray):
                 v.flags.writeable = False
-        _CONSTANTS[model] = c
+        derived["simulate.constants"] = c
     return c
 
 

@@ -20,7 +20,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from ..core.segment import EVENT_CODES
+from ..engine.segment import EVENT_CODES
 from ..solver import ABSENT, HELD, LOST, SLIDE_NEG, SLIDE_POS, solve_active_set
 from .modes import Mode, transitions
 from .records import SimEvent
@@ -31,7 +31,7 @@ __all__ = ["EventSpec", "EventSpecs", "Events"]
 class EventSpec(NamedTuple):
     """A terminal event of a mode: its ``kind`` (what happens when it fires), the constraint
     ``row`` and the ``quantity`` that crosses zero downwards (the compiled segments' code of
-    it: :data:`snakecg.core.segment.EVENT_CODES`)."""
+    it: :data:`snakecg.engine.segment.EVENT_CODES`)."""
 
     kind: str
     row: int
@@ -151,8 +151,9 @@ class Events:
                 s = self._point(t, y, mode)[1]
                 if -self.gtol <= s <= dyn.l_k + self.gtol:
                     contact_candidate = True
-                else:
-                    forced[0] = LOST
+                else:  # the point crossed the link's line beyond its ends: it has passed
+                    forced[0] = LOST  # the link, and is not looked for again (else the
+                    off_link = True  # crossing, a no-op, fires again at once)
             elif ev.kind == "breakaway":
                 lam = self._point(t, y, mode)[0]
                 forced[ev.row] = SLIDE_POS if lam[ev.row] > 0 else SLIDE_NEG
@@ -247,7 +248,7 @@ class Events:
 
     def _settled(self, t, st, prev, before, off_link, events, impact_kind):
         """:meth:`settle`'s records, state and mode from the compiled ``core_settle``'s
-        answer ``st`` (a :class:`~snakecg.core.segment.Settle`)."""
+        answer ``st`` (a :class:`~snakecg.engine.segment.Settle`)."""
         k = self.kernel
         records = []
         if st.impact:

@@ -11,6 +11,7 @@ import numpy as np
 
 from .._inputs import as_batch, to_float
 from ..errors import InputError, SnakecgError
+from ..kinds import is_scene_model
 from ..solver import FORCE_LIMIT, check_input_range
 from .compiled import placement
 from .torques import torque_law
@@ -109,18 +110,15 @@ class Settings:
 
 
 def _classes():
-    """:class:`~snakecg.SceneModel` and SciPy's ``OdeSolver`` (imported on first use: the
-    model module imports this package)."""
+    """SciPy's ``OdeSolver`` (imported on first use)."""
     global _CLASSES
     if _CLASSES is None:
-        from ..model import SceneModel
-
         try:
             from scipy.integrate import OdeSolver
         except ImportError:  # pragma: no cover - scipy is a dependency of the simulation
             raise SnakecgError("snakecg.simulate needs SciPy (its solve_ivp integrates the "
                                "dynamics): pip install scipy") from None
-        _CLASSES = SceneModel, OdeSolver
+        _CLASSES = OdeSolver
     return _CLASSES
 
 
@@ -134,8 +132,8 @@ def check_arguments(model, q0, tau, duration, v0, *, v_obj0, q_obj0, rho, f_obj,
     """The arguments of :func:`~snakecg.simulate.simulate` checked, in order, with the
     defaults filled in (the object's placement from the scene when ``q_obj0`` and ``rho``
     are not given)."""
-    SceneModel, OdeSolver = _classes()
-    if not isinstance(model, SceneModel):
+    OdeSolver = _classes()
+    if not is_scene_model(model):
         raise InputError("simulate needs a model loaded from a snakecg.Scene "
                          "(snakecg.load(scene)), got " + type(model).__name__)
     ns, na = model.n_coordinates, model.n_joints

@@ -108,14 +108,14 @@ class Trajectory:
     * flags: ``contact`` (N,) bool (held), ``wheel_state`` (N, n_l) (``"none"``, ``"stick"``,
       ``"slide+"``, ``"slide-"``: force at ``+-mu m g``), ``events`` (list of :class:`SimEvent`);
     * metrics: instantaneous ``sr`` (eq. 30), ``norm_a_obj``, ``norm_qdd``; the
-      displacement-based slippage ratio ``sr_displacement`` (see docs/simulate.md); the
+      displacement-based slippage ratio ``sr_displacement`` (see docs/how-to/simulate.md); the
       snake's COM ``com`` (N, 2); ``link_poses`` (N, n_l, 3);
     * constraint rows: ``gap`` (N,), ``s`` (N,) (contact position along the link),
       ``row_velocity`` (N, n_c) (``gdot``, lateral wheel velocities ``u_i``);
     * energy: ``kinetic_energy`` (N,), ``power_tau``, ``power_friction`` (N,), cumulative
       ``work_tau``, ``work_friction``, ``work_object``, ``impact_loss``
       (N,) and ``energy_residual`` = kinetic energy gained minus all of those;
-    * ``summary``: a JSON-ready dictionary (schema ``snakecg.simulate/1``, docs/simulate.md),
+    * ``summary``: a JSON-ready dictionary (schema ``snakecg.simulate/1``, docs/how-to/simulate.md),
       computed from the arrays above on first access (given as a function of the trajectory,
       it is called then; a run that never reads it does not pay for it);
     * ``violation``: the contact check's first :class:`Violation`, or ``None`` (its kind is

@@ -14,7 +14,7 @@ from types import SimpleNamespace
 
 import numpy as np
 
-from ..core.segment import RUN_STOPPED
+from ..engine.segment import RUN_STOPPED
 from ..errors import InputError, SnakecgError
 from ..solver import ABSENT, HELD, LOST
 from .assembly import assemble, assemble_arrays

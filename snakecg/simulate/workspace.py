@@ -1,22 +1,20 @@
 """The buffers and C structs of the compiled simulation of one model (a :class:`Workspace`):
-what the C of ``integrate.c``, ``settle.c`` and ``run.c`` reads and writes, set up once per
+what the C of ``integrate.c``, ``events.c`` and ``run.c`` reads and writes, set up once per
 model and lent to one run at a time.
 
 A run takes a workspace with :func:`take` (from the model's pool, or a new one) and gives it
 back with :func:`give` when it is done; two runs at the same time (threads) hold two
-workspaces, so nothing is shared between them. The pool holds no reference to the model (it
-is kept in a :class:`weakref.WeakKeyDictionary` keyed by the model): the run that holds a
+workspaces, so nothing is shared between them. The pool is the model's data's
+(``model.data().simulation_pool``, :mod:`snakecg.engine.data`): the run that holds a
 workspace keeps its model, and so the scene vector whose address the structs store, alive.
 """
 
 from __future__ import annotations
 
-import ctypes
-import weakref
 
 import numpy as np
 
-from ..core.segment import Run, Segment, Settle
+from ..engine.binding import Run, Segment, Settle, address, int64s
 from ..solver import PIVOT_TOL, REL_TOL, default_max_iter
 
 __all__ = ["START_IMPACT", "START_WIDTH", "Workspace", "give", "take"]
@@ -34,9 +32,6 @@ KEEP_BYTES = 4 << 20
 #: ``START_WIDTH`` doubles without the 2 n_c impulses.
 START_IMPACT = 4
 START_WIDTH = 15
-
-_POOLS: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
-
 
 class Workspace:
     """Everything the compiled segments, settles and runs of ``model`` read and write, with
@@ -88,13 +83,13 @@ class Workspace:
         st.y_out, st.state, st.forced_out = addr["s_y_out"], addr["s_state"], addr["s_forced_out"]
         st.impact_lam, st.projection_lam = addr["s_impact_lam"], addr["s_projection_lam"]
         run = Run()
-        run.sg, run.st = ctypes.addressof(seg), ctypes.addressof(st)
+        run.sg, run.st = address(seg), address(st)
         run.y, run.start_out = addr["y_start"], addr["start_out"]
         self.seg, self.st, self.run = seg, st, run
-        self.run_address = ctypes.addressof(run)
+        self.run_address = address(run)
         shared.update(
-            seg=seg, st=st, _address=ctypes.addressof(seg),
-            _settle_address=ctypes.addressof(st), _prev_address=addr["s_prev"],
+            seg=seg, st=st, _address=address(seg),
+            _settle_address=address(st), _prev_address=addr["s_prev"],
             _fn=core.integrate_segment, _samples=core.mode_samples, _run=core.run,
             _settle=core.settle)
         # the batch drivers of mass_matrix and link_poses (inputs q, K): their pointer arrays
@@ -109,7 +104,7 @@ class Workspace:
             kin = []
             for name in ("mass_matrix", "link_poses"):
                 i = be.signatures[name].in_names.index("q")
-                strides = (ctypes.c_longlong * 2)()  # q's stride n_s, K broadcast
+                strides = int64s(2)  # q's stride n_s, K broadcast
                 strides[i] = ns
                 kin.append((fns[name], K.ctypes.data, i, strides))
             shared["_K"], shared["_kin"] = K, kin
@@ -129,7 +124,7 @@ class Workspace:
 
 def take(model) -> Workspace:
     """A workspace of ``model``: one from its pool, or a new one."""
-    pool = _POOLS.get(model)
+    pool = model.data().simulation_pool
     if pool:
         try:
             return pool.pop()
@@ -141,9 +136,7 @@ def take(model) -> Workspace:
 def give(model, ws: Workspace) -> None:
     """Give ``ws`` back to the pool of ``model`` (dropped when the pool is full; its output
     buffer dropped when above :data:`KEEP_BYTES`)."""
-    pool = _POOLS.get(model)
-    if pool is None:
-        pool = _POOLS.setdefault(model, [])
+    pool = model.data().simulation_pool
     if len(pool) < POOL_SIZE:
         if ws._out[0].nbytes > KEEP_BYTES:
             ws._out = np.empty(0), 0

@@ -2,8 +2,8 @@
 
 :class:`SpatialRobot` describes one (from Python, a URDF or an MJCF file);
 ``snakecg.load(robot)`` gives its compiled :class:`SpatialModel` (mass matrix, Jacobians,
-bias forces, poses, constraint rows; see docs/spatial.md). :class:`SpatialScene` puts it on
-the ground against an object; ``snakecg.load(scene)`` gives its forward analysis.
+bias forces, poses, constraint rows; see docs/how-to/spatial.md). :class:`SpatialScene` puts it
+on the ground against an object; ``snakecg.load(scene)`` gives its forward analysis.
 """
 
 from .robot import SpatialRobot

@@ -1,7 +1,7 @@
 """The paper's forward analysis on a spatial snake lying on the ground (eqs. 12-30 in 3-D).
 
 ``snakecg.load(SpatialScene(...))`` gives a :class:`SpatialSceneModel`; its :meth:`forward`
-runs the runtime core's complementarity solve (snakecg/core/forward.c, the planar models'
+runs the runtime core's complementarity solve (snakecg/engine/forward.c, the planar models'
 own) on the generated spatial ``contact_system``: one C call per batch, split over threads
 when large. Rows: the contact (row 0), a lateral wheel row per link (rows ``1..n_l``) and a
 ground row per link (rows ``n_l + 1..2 n_l``). The ground rows always hold (bilateral); where
@@ -23,7 +23,7 @@ import math
 import numpy as np
 
 from .._inputs import as_batch, broadcast_batches, check_batch_memory
-from ..core import STATUS_EXACT
+from ..engine import STATUS_EXACT
 from ..errors import InputError
 from ..forward import WHEEL_STATE_NAMES, ForwardResult, _Columns, _core_batch
 from ..solver import check_input_range, default_max_iter
@@ -32,7 +32,7 @@ from .scene import SpatialScene
 
 __all__ = ["SUPPORT", "SpatialForwardResult", "SpatialSceneModel"]
 
-#: The row state of a ground row (snakecg/core/common.h).
+#: The row state of a ground row (snakecg/engine/engine.h).
 SUPPORT = 5
 #: Why a flagged sample has no answer.
 NO_ANSWER = ("the compiled solve did not answer this sample exactly (held rows dependent "

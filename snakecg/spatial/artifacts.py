@@ -12,7 +12,6 @@ spatial scene.
 
 from __future__ import annotations
 
-import ctypes
 import hashlib
 import json
 import os
@@ -23,6 +22,7 @@ from importlib import metadata
 from pathlib import Path
 
 from .. import native
+from ..engine.binding import Library
 from ..artifacts import (_package_dir, _report_once, _safe_relative, _sha_file, _well_formed,
                          cache_dir, held_lock, make_private_dir)
 from ..errors import ArtifactError, BuildError, InputError
@@ -138,22 +138,22 @@ def spatial_model_dir(n_joints: int, *, progress=None) -> tuple[Path, dict]:
         return folder, verify_spatial_dir(folder, n_joints)
 
 
-#: The runtime core's file that spatial models compile in (its complementarity solve) and
-#: the headers it includes.
-CORE_FILES = ("forward.c", "common.h")
+#: The engine's files that a spatial scene's library compiles in (the per-state system and
+#: the complementarity solve) and the headers they include.
+CORE_FILES = ("contact.c", "forward.c", "engine.h", "linalg.h")
 
 
 def core_manifest(manifest: dict) -> dict:
-    """The spatial manifest in the runtime core's terms (snakecg/core/layout.py): ``n_s`` is
+    """The spatial manifest in the runtime core's terms (snakecg/engine/layout.py): ``n_s`` is
     ``n_v``, the rows are the contact, a wheel and a ground row per link."""
     return {**manifest, "n_coordinates": manifest["nv"],
             "n_constraints": 2 * manifest["n_links"] + 1}
 
 
 def _core_sources(manifest: dict) -> tuple[dict[str, bytes], str]:
-    from ..core.layout import header
+    from ..engine.layout import header
 
-    here = Path(native.CORE_SOURCE).parent
+    here = native.ENGINE_DIR
     return {name: (here / name).read_bytes() for name in CORE_FILES}, \
         header(core_manifest(manifest))
 
@@ -227,7 +227,7 @@ def compile_spatial(folder: Path, manifest: dict, *, progress=None, part: str = 
                 (tmp / (name if name.endswith(".h") else f"snakecg_core_{name}")).write_bytes(text)
 
             def one_core(name: str) -> Path:
-                obj = tmp / "snakecg_core_forward.o"
+                obj = tmp / f"snakecg_core_{Path(name).stem}.o"
                 native._run([cc, *native.CORE_FLAGS, "-I", str(tmp), "-c",
                              str(tmp / f"snakecg_core_{name}"), "-o", str(obj)])
                 return obj
@@ -235,8 +235,7 @@ def compile_spatial(folder: Path, manifest: dict, *, progress=None, part: str = 
             sources.sort(key=lambda n: -(folder / n).stat().st_size)
             with ThreadPoolExecutor(max_workers=max(1, os.cpu_count() or 1)) as pool:
                 jobs = [pool.submit(one, name) for name in sources]
-                if part == "contact":
-                    jobs.append(pool.submit(one_core, "forward.c"))
+                jobs += [pool.submit(one_core, name) for name in core if name.endswith(".c")]
                 objs = sorted((j.result() for j in jobs), key=lambda o: o.name)
             tmp_lib = tmp / "model.so"
             native._run([cc, "-shared", *map(str, objs), "-o", str(tmp_lib), "-lm"])
@@ -257,21 +256,15 @@ class SpatialCompiledBackend(native.CompiledBackend):
     def __init__(self, lib_path: Path, manifest: dict, *, folder: Path | None = None,
                  part: str = "chain", progress=None):  # noqa: D107 - as CompiledBackend
         self.path = lib_path
-        self._lib = ctypes.CDLL(str(lib_path))
         self.prefix = manifest["prefix"]
+        self._lib = Library(lib_path, self.prefix)
         mine = _part(manifest, part)
         self.signatures = {s["name"]: native._Signature(s) for s in mine["functions"]}
-        self._fns = {}
-        for name in self.signatures:
-            fn = getattr(self._lib, f"{self.prefix}batch_{name}")
-            fn.argtypes = [ctypes.c_longlong, ctypes.POINTER(ctypes.c_void_p),
-                           ctypes.POINTER(ctypes.c_longlong), ctypes.POINTER(ctypes.c_void_p)]
-            fn.restype = ctypes.c_int
-            self._fns[name] = fn
+        self._fns = {name: self._lib.batch(name) for name in self.signatures}
         native._check_signatures(lib_path, manifest, native._library_problems(self._lib, mine))
         self.core = None
         if part == "contact":
-            from ..core import Core
+            from ..engine import Core
 
             self.core = Core.forward_library(self._lib, core_manifest(manifest))
         self._folder, self._manifest, self._contact = folder, manifest, None

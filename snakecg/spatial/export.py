@@ -25,7 +25,9 @@ def _num(x: float) -> str:
 
 def _layout(model) -> dict:
     from ..casadi_api import _backend
-    from ..export import STACK_LIMIT, _comment, _ident
+    from ..c_text import STACK_LIMIT
+    from ..c_text import c_comment as _comment
+    from ..c_text import c_ident as _ident
 
     man = model.manifest
     prefix = _ident(man["prefix"], "prefix")

@@ -21,7 +21,6 @@ from pathlib import Path
 import numpy as np
 
 from ..errors import InputError, NotPlanarError
-from .robot import SpatialRobot
 
 __all__ = ["spatial_from_urdf", "spatial_from_mjcf", "planar_robot", "rpy_of",
            "spatial_chain_or_planar"]
@@ -45,9 +44,9 @@ def _six(I) -> list[float]:
     return [I[0, 0], I[1, 1], I[2, 2], I[0, 1], I[0, 2], I[1, 2]]
 
 
-def _robot(where, name, links, joints, gravity=(0.0, 0.0, -9.81)) -> SpatialRobot:
+def _robot(robot_type, where, name, links, joints, gravity=(0.0, 0.0, -9.81)):
     try:
-        return SpatialRobot(
+        return robot_type(
             joints=len(joints), mass=[lk["mass"] for lk in links],
             com=[lk["com"] for lk in links], inertia=[lk["inertia"] for lk in links],
             joint_xyz=[j["xyz"] for j in joints], joint_rpy=[j["rpy"] for j in joints],
@@ -63,8 +62,9 @@ def _robot(where, name, links, joints, gravity=(0.0, 0.0, -9.81)) -> SpatialRobo
 # ------------------------------------------------------------------------------------------
 # URDF
 # ------------------------------------------------------------------------------------------
-def spatial_from_urdf(path, *, name: str | None = None) -> SpatialRobot:
-    """The spatial chain of a URDF file (see the module doc); needs the ``urdf`` extra."""
+def spatial_from_urdf(path, *, robot_type, name: str | None = None):
+    """The spatial chain of a URDF file (see the module doc), a ``robot_type``
+    (:class:`~snakecg.SpatialRobot`); needs the ``urdf`` extra."""
     from ..urdf import _load  # the planar reader's checked loading (XML, yourdfpy)
 
     p, urdf = _load(path)
@@ -135,7 +135,8 @@ def spatial_from_urdf(path, *, name: str | None = None) -> SpatialRobot:
                            "limits": (-np.inf if lower is None else float(lower),
                                       np.inf if upper is None else float(upper)),
                            "effort": np.inf if effort is None else float(effort)})
-    return _robot(where, name or robot.name or p.stem, out_links, out_joints)
+    return _robot(robot_type, where, name or robot.name or p.stem, out_links,
+                  out_joints)
 
 
 # ------------------------------------------------------------------------------------------
@@ -149,9 +150,10 @@ def _mujoco():
     return mujoco
 
 
-def spatial_from_mjcf(path, *, name: str | None = None) -> SpatialRobot:
+def spatial_from_mjcf(path, *, robot_type, name: str | None = None):
     """The spatial chain of a MuJoCo XML file, compiled by ``mujoco.MjModel.from_xml_path``
-    (see the module doc); needs the ``mjcf`` extra."""
+    (see the module doc), a ``robot_type`` (:class:`~snakecg.SpatialRobot`); needs the
+    ``mjcf`` extra."""
     mujoco = _mujoco()
     p = Path(path)
     where = f"MJCF file {str(p)!r}"
@@ -229,7 +231,8 @@ def spatial_from_mjcf(path, *, name: str | None = None) -> SpatialRobot:
                        "axis": np.asarray(m.jnt_axis[j], dtype=float),
                        "limits": tuple(map(float, m.jnt_range[j])) if limited
                        else (-np.inf, np.inf), "effort": effort})
-    return _robot(where, name or p.stem, links, joints, gravity=tuple(map(float, m.opt.gravity)))
+    return _robot(robot_type, where, name or p.stem, links, joints,
+                  gravity=tuple(map(float, m.opt.gravity)))
 
 
 def _quat_matrix(mujoco, quat) -> np.ndarray:
@@ -241,11 +244,11 @@ def _quat_matrix(mujoco, quat) -> np.ndarray:
 # ------------------------------------------------------------------------------------------
 # the planar form
 # ------------------------------------------------------------------------------------------
-def planar_robot(robot: SpatialRobot, *, tol: float = 1e-6):
+def planar_robot(robot, *, robot_type, tol: float = 1e-6):
     """The planar :class:`~snakecg.Robot` of a chain whose joint axes are all parallel (every
     joint origin and COM in one plane normal to them, each COM on the line through its link's
-    joints; the end links' COMs in their middle), or a string saying why it is not planar."""
-    from ..robot import Robot
+    joints; the end links' COMs in their middle), a ``robot_type`` (:class:`~snakecg.Robot`),
+    or a string saying why it is not planar."""
 
     R, o = np.eye(3), np.zeros(3)
     frames = [(R, o)]
@@ -288,8 +291,8 @@ def planar_robot(robot: SpatialRobot, *, tol: float = 1e-6):
         cs.append(min(max(c, 0.0), length))
     if any(m <= 0 for m in robot.mass):
         return "a link has no mass"
-    return Robot(joints=robot.joints, mass=robot.mass, length=tuple(lengths),
-                 inertia=tuple(inertias), com=tuple(cs), name=robot.name)
+    return robot_type(joints=robot.joints, mass=robot.mass, length=tuple(lengths),
+                      inertia=tuple(inertias), com=tuple(cs), name=robot.name)
 
 
 def _rpy_matrix(roll, pitch, yaw):
@@ -305,19 +308,22 @@ def _matrix(six):
     return np.array([[xx, xy, xz], [xy, yy, yz], [xz, yz, zz]])
 
 
-def spatial_chain_or_planar(kind: str, path, name, planar_reader, *, tol: float = 1e-6):
+def spatial_chain_or_planar(kind: str, path, name, planar_reader, *, planar_type, spatial_type,
+                            tol: float = 1e-6):
     """``Robot.from_urdf``/``from_mjcf``. URDF: the planar reader ``planar_reader`` (its
     checks and refusals stand), and the chain in 3-D where it is not planar
     (:class:`~snakecg.errors.NotPlanarError`). MJCF: the chain read in its spatial form, as a
-    planar :class:`~snakecg.Robot` when it is planar."""
+    planar :class:`~snakecg.Robot` when it is planar. ``planar_type`` and ``spatial_type``:
+    the classes built (:class:`~snakecg.Robot`, :class:`~snakecg.SpatialRobot`; passed in,
+    so that the readers import neither)."""
     from .._inputs import number
 
     if planar_reader is not None:
         try:
             return planar_reader()
         except NotPlanarError:
-            return spatial_from_urdf(path, name=name)
+            return spatial_from_urdf(path, robot_type=spatial_type, name=name)
     tol = number("tol", tol, lo=0, unit="m")
-    spatial = spatial_from_mjcf(path, name=name)
-    planar = planar_robot(spatial, tol=tol)
+    spatial = spatial_from_mjcf(path, robot_type=spatial_type, name=name)
+    planar = planar_robot(spatial, robot_type=planar_type, tol=tol)
     return spatial if isinstance(planar, str) else planar

@@ -203,7 +203,7 @@ class SpatialRobot:
         see :mod:`snakecg.spatial.files`. Needs the ``urdf`` extra."""
         from .files import spatial_from_urdf
 
-        return spatial_from_urdf(path, name=name)
+        return spatial_from_urdf(path, robot_type=cls, name=name)
 
     @classmethod
     def from_mjcf(cls, path, *, name: str | None = None) -> SpatialRobot:
@@ -211,7 +211,7 @@ class SpatialRobot:
         MuJoCo's own parser; see :mod:`snakecg.spatial.files`. Needs the ``mjcf`` extra."""
         from .files import spatial_from_mjcf
 
-        return spatial_from_mjcf(path, name=name)
+        return spatial_from_mjcf(path, robot_type=cls, name=name)
 
     def parameters(self) -> dict[str, np.ndarray]:
         """The inputs of the generated ``derived_parameters``, by name."""

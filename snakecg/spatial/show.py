@@ -37,7 +37,9 @@ def run_spatial(args) -> int:
         exprs = spatial_expression(args.joints, args.what)
     except ValueError as exc:
         raise InputError(str(exc)) from None
-    from ..commands.show import SCHEMA, latex_symbol_names
+    from snakecg_derive.inspection import latex_symbol_names
+
+    from ..commands._common import SHOW_SCHEMA as SCHEMA
 
     if args.json:
         import sympy as sp

@@ -74,7 +74,7 @@ class SweepResult:
 
 def _meta(scene: Scene, plan: Plan, feasible: bool, clearance: float,
           fmt: str = _store.FORMAT) -> dict:
-    from .. import __version__
+    from .._version import __version__
 
     robot = dataclasses.asdict(scene.robot)
     fields = {f.name: getattr(scene, f.name) for f in dataclasses.fields(scene)

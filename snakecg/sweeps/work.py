@@ -30,7 +30,7 @@ def _model(scene):
     with _LOCK:
         model = _MODELS.get(scene)
         if model is None:
-            from .. import load
+            from ..model import load
 
             model = _MODELS[scene] = load(scene)
         return model

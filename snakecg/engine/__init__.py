@@ -1,0 +1,93 @@
+"""The runtime core: the per-sample contact/wheel solve in compiled code.
+
+``forward.c`` (one fixed C file of the runtime) is compiled into every model's library beside
+the generated functions (:func:`snakecg.native.compile_model`); :class:`Core` calls its
+``core_forward`` (bound in :mod:`snakecg.engine.binding`). One call evaluates a whole batch: placement, the active-set
+iteration of :mod:`snakecg.solver`'s rules, the conditioning and the physical checks, per
+sample, with the loop in C. Samples it cannot answer exactly come back marked for the
+reference path (:mod:`snakecg.rows`, :mod:`snakecg.solver`).
+
+:class:`~snakecg.engine.data.Data` (:mod:`snakecg.engine.data`) is the workspace of one
+caller, in the manner of Pinocchio's ``Data``.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ..rows import WEAK
+from ..solver import FORCE_LIMIT, PIVOT_TOL, REL_TOL
+from .binding import Library
+from .data import Data
+from .layout import Layout
+from .optimal import OptimalKernel
+from .sphere import SphereKernel
+
+__all__ = ["Core", "Data", "Layout", "CONSTANTS", "STATUS_EXACT", "STATUS_FALLBACK"]
+
+#: Pivot ratio below which the mass matrix counts as numerically singular (snakecg.rows.finish).
+MASS_TOL = 1e-13
+#: Rounding allowed in the physical checks (norms >= 0, 0 <= sr <= 1; snakecg.rows._sane).
+SANE_TOL = 1e-12
+#: The solver constants passed to the C, in the order of its ``sc_constants``.
+CONSTANTS = np.array([PIVOT_TOL, WEAK, REL_TOL, MASS_TOL, SANE_TOL, FORCE_LIMIT])
+STATUS_EXACT, STATUS_FALLBACK = 0, 1
+
+class Core:
+    """The engine's entry points in one compiled model library (a
+    :class:`~snakecg.engine.binding.Library`)."""
+
+    def __init__(self, lib: Library, manifest: dict):
+        self.forward_only(lib, manifest)
+        self.integrate_segment, self.mode_samples, self.settle, self.run = (
+            lib.entry_or_none(name) for name in ("core_integrate_segment", "core_mode_samples",
+                                                 "core_settle", "core_run"))
+        """integrate.c's ``core_integrate_segment`` and ``core_mode_samples``, events.c's
+        ``core_settle``, run.c's ``core_run``."""
+        self.contact_depth = lib.entry_or_none("core_contact_depth")
+        """geometry.c's ``core_contact_depth``: the simulation's contact check at states."""
+        self.sphere = SphereKernel(lib)
+        """sphere.c's faces and KKT candidates (:mod:`snakecg.engine.sphere`)."""
+        self.optimal = OptimalKernel(lib, self.layout)
+        """The optimal-torque queries in one call per batch (:mod:`snakecg.engine.optimal`)."""
+
+    @classmethod
+    def forward_library(cls, lib: Library, manifest: dict) -> Core:
+        """The core of a library that has contact.c and forward.c alone (a spatial scene's
+        contact library): ``core_forward`` and the state rule, nothing of the simulation or
+        the optimal-torque queries."""
+        core = cls.__new__(cls)
+        core.forward_only(lib, manifest)
+        return core
+
+    def forward_only(self, lib: Library, manifest: dict) -> None:
+        """Bind forward.c's entry points (:meth:`forward_library`, and the first step of the
+        constructor)."""
+        self.layout = Layout.of(manifest)
+        self._fn = lib.entry("core_forward")
+        self.call_packed = lib.entry("core_forward_call")
+        """``core_forward_call(&call)``: the same with the arguments in a :class:`Call`."""
+        self._rules = lib.entry("core_next_states")
+        self._constants = CONSTANTS.copy()
+        self.constants_address = self._constants.ctypes.data
+
+    def next_states(self, state, lam, w, G, bounds) -> tuple[np.ndarray, bool]:
+        """The C's row-state update for one sample (the rules of
+        :func:`snakecg.solver._violations` with its tolerances): the next states and whether
+        a row moved. For tests; the solve itself runs inside :meth:`__call__`."""
+        nc = self.layout.n_constraints
+        st = np.array(state, dtype=float).reshape(nc)
+        arrays = [np.ascontiguousarray(x, dtype=float) for x in (lam, w, G, bounds)]
+        if [a.size for a in arrays] != [nc, nc, nc * nc, nc]:
+            raise ValueError(f"next_states takes n_c = {nc} rows")
+        G_col = np.asfortranarray(arrays[2].reshape(nc, nc))  # column-major, as generated
+        moved = self._rules(st.ctypes.data, arrays[0].ctypes.data, arrays[1].ctypes.data,
+                            G_col.ctypes.data, arrays[3].ctypes.data, REL_TOL)
+        return st.astype(np.int8), bool(moved)
+
+    def __call__(self, n: int, scene_address: int, max_iter: int, inputs_address: int,
+                 strides_address: int, out_address: int) -> int:
+        """One C call over ``n`` samples (releases the GIL); the C's status (0, -1 out of
+        memory, ``-(2 + i)`` bad input at sample ``i``)."""
+        return self._fn(n, scene_address, self.constants_address, max_iter, inputs_address,
+                        strides_address, out_address)

@@ -1,0 +1,293 @@
+/* snakecg's engine: small dense linear algebra (the one home of LU, Cholesky, the
+ * symmetric eigensolver and Householder QR for the core's optimisation code).
+ *
+ * Everything here is `static inline`, works on row-major matrices with an explicit leading
+ * dimension `ld` (element (i, j) of A at A[i * ld + j]), takes its sizes as sc_int and
+ * allocates nothing: a routine that needs scratch space takes it from the caller. The sizes
+ * are those of one configuration's problems (a handful to a few dozen), so the methods are
+ * the plain textbook ones (Golub & Van Loan, "Matrix Computations", 4th ed.):
+ *
+ *   sc_lu_factor / sc_lu_solve          Gaussian elimination with partial pivoting (alg. 3.4.1)
+ *   sc_cholesky / sc_cholesky_solve     A = L L^T, with a relative pivot threshold (alg. 4.2.2)
+ *   sc_eigen_symmetric                  cyclic Jacobi rotations, eigenvectors optional (8.5.3)
+ *   sc_qr_least_squares                 Householder QR with column pivoting (alg. 5.4.1), the
+ *                                       basic solution of a least-squares problem of any rank
+ */
+#ifndef SNAKECG_ENGINE_LINALG_H
+#define SNAKECG_ENGINE_LINALG_H
+
+#include <math.h>
+
+/* included by engine.h, after its integer type sc_int */
+
+static inline double sc_dot(const double *a, const double *b, sc_int n) {
+  double s = 0.0;
+  sc_int i;
+  for (i = 0; i < n; ++i) s += a[i] * b[i];
+  return s;
+}
+
+static inline double sc_norm(const double *a, sc_int n) { return sqrt(sc_dot(a, a, n)); }
+
+static inline double sc_max_abs(const double *a, sc_int n) {
+  double m = 0.0;
+  sc_int i;
+  for (i = 0; i < n; ++i)
+    if (fabs(a[i]) > m) m = fabs(a[i]);
+  return m;
+}
+
+/* y = A x, A m x n */
+static inline void sc_matvec(sc_int m, sc_int n, const double *A, sc_int ld, const double *x,
+                             double *y) {
+  sc_int i;
+  for (i = 0; i < m; ++i) y[i] = sc_dot(A + i * ld, x, n);
+}
+
+/* x^T A x, A n x n */
+static inline double sc_quad(sc_int n, const double *A, sc_int ld, const double *x) {
+  double s = 0.0;
+  sc_int i;
+  for (i = 0; i < n; ++i) s += x[i] * sc_dot(A + i * ld, x, n);
+  return s;
+}
+
+/* Frobenius norm of the m x n matrix A */
+static inline double sc_frobenius(sc_int m, sc_int n, const double *A, sc_int ld) {
+  double s = 0.0;
+  sc_int i;
+  for (i = 0; i < m; ++i) s += sc_dot(A + i * ld, A + i * ld, n);
+  return sqrt(s);
+}
+
+/* ---------------------------------------------------------------------------------------
+ * LU with partial pivoting: P A = L U in place of A (L unit lower, U upper), piv[k] the row
+ * swapped with k at step k. Returns 1, or 0 when a pivot is zero or a factor not finite. */
+static inline int sc_lu_factor(sc_int n, double *A, sc_int ld, sc_int *piv) {
+  sc_int i, j, k;
+  for (k = 0; k < n; ++k) {
+    sc_int p = k;
+    double big = fabs(A[k * ld + k]), inv;
+    for (i = k + 1; i < n; ++i)
+      if (fabs(A[i * ld + k]) > big) {
+        big = fabs(A[i * ld + k]);
+        p = i;
+      }
+    piv[k] = p;
+    if (!(big > 0.0) || !isfinite(big)) return 0;
+    if (p != k)
+      for (j = 0; j < n; ++j) {
+        double t = A[k * ld + j];
+        A[k * ld + j] = A[p * ld + j];
+        A[p * ld + j] = t;
+      }
+    inv = 1.0 / A[k * ld + k];
+    for (i = k + 1; i < n; ++i) {
+      double f = A[i * ld + k] * inv;
+      A[i * ld + k] = f;
+      if (f != 0.0)
+        for (j = k + 1; j < n; ++j) A[i * ld + j] -= f * A[k * ld + j];
+    }
+  }
+  return 1;
+}
+
+/* b := A^-1 b with the factors of sc_lu_factor (the row swaps first: the factorization swaps
+ * whole rows, so its L belongs to P A with every swap applied) */
+static inline void sc_lu_solve(sc_int n, const double *A, sc_int ld, const sc_int *piv,
+                               double *b) {
+  sc_int i, k;
+  for (k = 0; k < n; ++k)
+    if (piv[k] != k) {
+      double t = b[k];
+      b[k] = b[piv[k]];
+      b[piv[k]] = t;
+    }
+  for (i = 1; i < n; ++i) {
+    double s = b[i];
+    for (k = 0; k < i; ++k) s -= A[i * ld + k] * b[k];
+    b[i] = s;
+  }
+  for (i = n - 1; i >= 0; --i) {
+    double s = b[i];
+    for (k = i + 1; k < n; ++k) s -= A[i * ld + k] * b[k];
+    b[i] = s / A[i * ld + i];
+  }
+}
+
+/* ---------------------------------------------------------------------------------------
+ * Cholesky A = L L^T of a symmetric matrix, L in place of A's lower triangle (the upper one is
+ * left alone). Returns 1, or 0 when a pivot d_j (before its square root) is not above
+ * rel * max_i A_ii: the matrix is not safely positive definite at that relative level. */
+static inline int sc_cholesky(sc_int n, double *A, sc_int ld, double rel) {
+  sc_int i, j, k;
+  double big = 0.0;
+  for (i = 0; i < n; ++i)
+    if (A[i * ld + i] > big) big = A[i * ld + i];
+  if (!(big > 0.0) || !isfinite(big)) return 0;
+  for (j = 0; j < n; ++j) {
+    double d = A[j * ld + j];
+    for (k = 0; k < j; ++k) d -= A[j * ld + k] * A[j * ld + k];
+    if (!(d > rel * big)) return 0;
+    d = sqrt(d);
+    A[j * ld + j] = d;
+    for (i = j + 1; i < n; ++i) {
+      double t = A[i * ld + j];
+      for (k = 0; k < j; ++k) t -= A[i * ld + k] * A[j * ld + k];
+      A[i * ld + j] = t / d;
+    }
+  }
+  return 1;
+}
+
+/* b := (L L^T)^-1 b with the factor of sc_cholesky */
+static inline void sc_cholesky_solve(sc_int n, const double *L, sc_int ld, double *b) {
+  sc_int i, k;
+  for (i = 0; i < n; ++i) {
+    double s = b[i];
+    for (k = 0; k < i; ++k) s -= L[i * ld + k] * b[k];
+    b[i] = s / L[i * ld + i];
+  }
+  for (i = n - 1; i >= 0; --i) {
+    double s = b[i];
+    for (k = i + 1; k < n; ++k) s -= L[k * ld + i] * b[k];
+    b[i] = s / L[i * ld + i];
+  }
+}
+
+/* ---------------------------------------------------------------------------------------
+ * Eigenvalues (w) and, when V is not null, orthonormal eigenvectors (the columns of V) of the
+ * symmetric n x n matrix A, by cyclic Jacobi rotations; A is overwritten (its diagonal ends as
+ * w). Sorted ascending. Returns the number of sweeps (at most 60); converged when the
+ * off-diagonal part is below 1e-32 of the whole in squared Frobenius norm, i.e. to rounding. */
+static inline int sc_eigen_symmetric(sc_int n, double *A, sc_int ld, double *w, double *V,
+                                     sc_int ldv) {
+  sc_int i, j, l;
+  int sweep;
+  if (V)
+    for (i = 0; i < n; ++i)
+      for (j = 0; j < n; ++j) V[i * ldv + j] = (i == j) ? 1.0 : 0.0;
+  for (sweep = 0; sweep < 60; ++sweep) {
+    double off = 0.0, tot = 0.0;
+    for (i = 0; i < n; ++i)
+      for (j = 0; j < n; ++j) {
+        double s2 = A[i * ld + j] * A[i * ld + j];
+        tot += s2;
+        if (i != j) off += s2;
+      }
+    if (off == 0.0 || off <= 1e-32 * tot) break;
+    for (i = 0; i < n - 1; ++i)
+      for (j = i + 1; j < n; ++j) {
+        double apq = A[i * ld + j], theta, t, c, s;
+        if (apq == 0.0) continue;
+        theta = 0.5 * (A[j * ld + j] - A[i * ld + i]) / apq;
+        t = (theta >= 0 ? 1.0 : -1.0) / (fabs(theta) + sqrt(theta * theta + 1.0));
+        c = 1.0 / sqrt(t * t + 1.0);
+        s = t * c;
+        for (l = 0; l < n; ++l) { /* A := A G (columns i, j) */
+          double ali = A[l * ld + i], alj = A[l * ld + j];
+          A[l * ld + i] = c * ali - s * alj;
+          A[l * ld + j] = s * ali + c * alj;
+        }
+        for (l = 0; l < n; ++l) { /* A := G^T A (rows i, j) */
+          double ail = A[i * ld + l], ajl = A[j * ld + l];
+          A[i * ld + l] = c * ail - s * ajl;
+          A[j * ld + l] = s * ail + c * ajl;
+        }
+        A[i * ld + j] = A[j * ld + i] = 0.0;
+        if (V)
+          for (l = 0; l < n; ++l) {
+            double vli = V[l * ldv + i], vlj = V[l * ldv + j];
+            V[l * ldv + i] = c * vli - s * vlj;
+            V[l * ldv + j] = s * vli + c * vlj;
+          }
+      }
+  }
+  for (i = 0; i < n; ++i) w[i] = A[i * ld + i];
+  for (i = 1; i < n; ++i) /* insertion sort, columns of V along */
+    for (j = i; j > 0 && w[j - 1] > w[j]; --j) {
+      double t = w[j];
+      w[j] = w[j - 1];
+      w[j - 1] = t;
+      if (V)
+        for (l = 0; l < n; ++l) {
+          t = V[l * ldv + j];
+          V[l * ldv + j] = V[l * ldv + j - 1];
+          V[l * ldv + j - 1] = t;
+        }
+    }
+  return sweep;
+}
+
+/* ---------------------------------------------------------------------------------------
+ * The basic least-squares solution of min ||A x - b|| (A m x n, any shape and rank) by
+ * Householder QR with column pivoting: A P = Q R, the rank r the number of |R_kk| above
+ * rcond |R_00|, x = P [R_11^-1 (Q^T b)_1; 0]. A and b are overwritten; work holds n doubles
+ * and perm n sc_ints. Returns the rank (0 when A is zero). */
+static inline sc_int sc_qr_least_squares(sc_int m, sc_int n, double *A, sc_int ld, double *b,
+                                         double rcond, double *x, double *work, sc_int *perm) {
+  sc_int i, j, k, rank = 0, steps = m < n ? m : n;
+  double *cn = work, r00 = 0.0;
+  for (j = 0; j < n; ++j) {
+    double s = 0.0;
+    for (i = 0; i < m; ++i) s += A[i * ld + j] * A[i * ld + j];
+    cn[j] = s;
+    perm[j] = j;
+  }
+  for (k = 0; k < steps; ++k) {
+    sc_int p = k;
+    double alpha, vnorm2, beta;
+    for (j = k + 1; j < n; ++j) /* the column of largest remaining norm */
+      if (cn[j] > cn[p]) p = j;
+    if (p != k) {
+      double t;
+      sc_int ti;
+      for (i = 0; i < m; ++i) {
+        t = A[i * ld + k];
+        A[i * ld + k] = A[i * ld + p];
+        A[i * ld + p] = t;
+      }
+      t = cn[k];
+      cn[k] = cn[p];
+      cn[p] = t;
+      ti = perm[k];
+      perm[k] = perm[p];
+      perm[p] = ti;
+    }
+    /* the Householder reflector of column k below the diagonal: v = x - alpha e_1 */
+    vnorm2 = 0.0;
+    for (i = k; i < m; ++i) vnorm2 += A[i * ld + k] * A[i * ld + k];
+    alpha = sqrt(vnorm2);
+    if (A[k * ld + k] > 0) alpha = -alpha;
+    if (k == 0) r00 = fabs(alpha);
+    if (!(fabs(alpha) > rcond * r00) || alpha == 0.0) break;
+    A[k * ld + k] -= alpha; /* v in place, v_k = x_k - alpha */
+    beta = 0.0;
+    for (i = k; i < m; ++i) beta += A[i * ld + k] * A[i * ld + k];
+    for (j = k + 1; j < n; ++j) { /* columns j > k: a -= 2 v (v . a) / (v . v) */
+      double s = 0.0;
+      for (i = k; i < m; ++i) s += A[i * ld + k] * A[i * ld + j];
+      s = 2.0 * s / beta;
+      for (i = k; i < m; ++i) A[i * ld + j] -= s * A[i * ld + k];
+      cn[j] = 0.0; /* the squared norm of what is left below row k (recomputed: exact) */
+      for (i = k + 1; i < m; ++i) cn[j] += A[i * ld + j] * A[i * ld + j];
+    }
+    { /* b := H b */
+      double s = 0.0;
+      for (i = k; i < m; ++i) s += A[i * ld + k] * b[i];
+      s = 2.0 * s / beta;
+      for (i = k; i < m; ++i) b[i] -= s * A[i * ld + k];
+    }
+    A[k * ld + k] = alpha; /* R_kk (the reflector's vector is no longer needed) */
+    ++rank;
+  }
+  for (j = 0; j < n; ++j) x[j] = 0.0;
+  for (k = rank - 1; k >= 0; --k) { /* R_11 y = (Q^T b)_1, x = P y */
+    double s = b[k];
+    for (j = k + 1; j < rank; ++j) s -= A[k * ld + j] * x[perm[j]];
+    x[perm[k]] = s / A[k * ld + k];
+  }
+  return rank;
+}
+
+#endif
