@@ -14,13 +14,14 @@ from .engine import Data
 from .errors import ArtifactError, BuildError, InputError, SingularConstraintsError, SnakecgError
 from .model import ForwardResult, RobotModel, SceneModel, load
 from .robot import SCENARIOS, Robot, Scene
-from .spatial import SpatialRobot
+from .spatial import SpatialRobot, SpatialScene
 from ._version import __version__
 
 __all__ = [
     "Robot",
     "Scene",
     "SpatialRobot",
+    "SpatialScene",
     "SCENARIOS",
     "load",
     "RobotModel",

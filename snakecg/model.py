@@ -36,8 +36,10 @@ EXTREMES_CHUNK_ROWS = 2048
 CLOSED_FORM_CHUNK_ROWS = 32768
 
 def load(obj, *, backend: str = "compiled", progress=None):
-    """Load the model of a :class:`~snakecg.Robot`, a :class:`~snakecg.Scene` or a
-    :class:`~snakecg.SpatialRobot` (a :class:`~snakecg.spatial.model.SpatialModel`).
+    """Load the model of a :class:`~snakecg.Robot`, a :class:`~snakecg.Scene`, a
+    :class:`~snakecg.scenes.GeneralScene`, a :class:`~snakecg.SpatialRobot` (a
+    :class:`~snakecg.spatial.model.SpatialModel`) or a :class:`~snakecg.SpatialScene` (a
+    :class:`~snakecg.spatial.analysis.SpatialSceneModel`).
 
     The generated model for the joint count is taken from the package or the user cache
     (generated once if missing), compiled once into a cached shared library and shared by
@@ -62,14 +64,18 @@ def load(obj, *, backend: str = "compiled", progress=None):
         from .scenes.model import GeneralSceneModel
 
         return GeneralSceneModel(obj, backend=backend, progress=progress)
-    from .spatial import SpatialRobot
+    from .spatial import SpatialRobot, SpatialScene
 
     if isinstance(obj, SpatialRobot):  # a 3-D chain: snakecg.spatial's own model
         from .spatial.model import SpatialModel
 
         return SpatialModel(obj, backend=backend, progress=progress)
-    raise InputError(f"load() takes a snakecg.Robot, snakecg.Scene or snakecg.SpatialRobot "
-                     f"(or a snakecg.scenes.GeneralScene), "
+    if isinstance(obj, SpatialScene):  # the paper's analysis in 3-D
+        from .spatial.analysis import SpatialSceneModel
+
+        return SpatialSceneModel(obj, backend=backend, progress=progress)
+    raise InputError(f"load() takes a snakecg.Robot, snakecg.Scene, snakecg.SpatialRobot or "
+                     f"snakecg.SpatialScene (or a snakecg.scenes.GeneralScene), "
                      f"got {type(obj).__name__}")
 
 

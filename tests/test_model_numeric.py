@@ -510,8 +510,9 @@ def test_unknown_contact_link(link):
 
 def test_load_rejects_other_objects():
     with pytest.raises(snakecg.InputError, match=r"load\(\) takes a snakecg\.Robot, "
-                                                 r"snakecg\.Scene or snakecg\.SpatialRobot "
-                                                 r"\(or a snakecg\.scenes\.GeneralScene\), "
+                                                 r"snakecg\.Scene, snakecg\.SpatialRobot or "
+                                                 r"snakecg\.SpatialScene \(or a "
+                                                 r"snakecg\.scenes\.GeneralScene\), "
                                                  r"got int"):
         snakecg.load(3)
 

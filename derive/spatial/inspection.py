@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import sympy as sp
 
-from .catalog import SPATIAL_FUNCTIONS
+from .catalog import SPATIAL_CONTACT_FUNCTIONS, SPATIAL_FUNCTIONS
 
 __all__ = ["spatial_names", "spatial_expression", "program_lines"]
 
@@ -27,6 +27,10 @@ def _spec(n_joints: int, name: str):
 
 def spatial_expression(n_joints: int, what: str) -> dict:
     """``{label: expression}`` for ``what`` (see the module doc)."""
+    if what in SPATIAL_CONTACT_FUNCTIONS:
+        raise ValueError(f"{what} is composed in CasADi from the functions above and has no "
+                         f"SymPy program; its C: snakecg show --spatial --joints {n_joints} "
+                         f"--c {what}")
     if what not in SPATIAL_FUNCTIONS:
         raise ValueError(f"unknown name {what!r}; choose one of: "
                          f"{', '.join(spatial_names(n_joints))}")

@@ -23,6 +23,7 @@ from ..sample_c import sample_function_c
 from .block_c import BLOCK, block_function_c
 from .build import N_BASE_COORDINATES, build_spatial_function, build_spatial_sincos
 from .catalog import CHECKED_IN_SPATIAL_JOINTS, SPATIAL_FUNCTIONS, spatial_dirname
+from .contact import CONTACT_DOCS, contact_functions
 from .model import derive_spatial_model
 from .symbols import MAX_SPATIAL_LINKS
 
@@ -162,11 +163,13 @@ def _printable(fn) -> bool:
     return True
 
 
-def render_c(spec, functions, variants) -> tuple[dict[str, str], list[dict]]:
-    """CasADi's C of each function with its batched driver (one translation unit each)."""
+def render_c(spec, functions, variants, docs) -> tuple[dict[str, str], list[dict]]:
+    """CasADi's C of each function with its batched driver (one translation unit each);
+    ``docs``: each function's description."""
     versions = ", ".join(f"{k} {v}" for k, v in tool_versions().items())
     files, sigs = {}, []
-    for f, fn in zip(spec.functions, functions):
+    for doc, fn in zip(docs, functions):
+        f = type("F", (), {"name": fn.name()[len(spec.prefix):], "doc": doc})
         sig = _signature(fn, spec.prefix, f.doc)
         sigs.append(sig)
         cg = ca.CodeGenerator(fn.name(), {"with_header": False})
@@ -209,7 +212,8 @@ def render_spatial_model(n_links: int, *, progress=None,
     """Derive, build and emit the spatial model with ``n_links`` links (nothing written)."""
     step = progress or (lambda msg: None)
     step(f"deriving the spatial model of a {n_links}-link chain (SymPy)")
-    spec = derive_spatial_model(n_links, max_links=max_links).spec
+    derivation = derive_spatial_model(n_links, max_links=max_links)
+    spec = derivation.spec
     step("building the CasADi functions")
     functions = [build_spatial_function(f, spec.prefix) for f in spec.functions]
     built = tuple(fn.name()[len(spec.prefix):] for fn in functions)
@@ -222,8 +226,14 @@ def render_spatial_model(n_links: int, *, progress=None,
             variants[f.name] = g
     step("rendering the readable record model.py (Jinja2)")
     record = render_record(spec, functions)
+    step("composing the contact problem (CasADi)")
+    built = {f.name: fn for f, fn in zip(spec.functions, functions)}
+    composed = contact_functions(built, derivation.symbols, spec.prefix)
     step("emitting C (CasADi code generator)")
-    files, sigs = render_c(spec, functions, variants)
+    functions = functions + composed
+    docs = [f.doc for f in spec.functions] + [CONTACT_DOCS[fn.name()[len(spec.prefix):]]
+                                               for fn in composed]
+    files, sigs = render_c(spec, functions, variants, docs)
     files.update({f"casadi/{fn.name()[len(spec.prefix):]}.casadi": fn.serialize()
                   for fn in functions})
     digest = lambda text: hashlib.sha256(text.encode()).hexdigest()  # noqa: E731

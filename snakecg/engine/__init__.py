@@ -38,13 +38,7 @@ class Core:
     :class:`~snakecg.engine.binding.Library`)."""
 
     def __init__(self, lib: Library, manifest: dict):
-        self.layout = Layout.of(manifest)
-        self._fn = lib.entry("core_forward")
-        self.call_packed = lib.entry("core_forward_call")
-        """``core_forward_call(&call)``: the same with the arguments in a :class:`Call`."""
-        self._rules = lib.entry("core_next_states")
-        self._constants = CONSTANTS.copy()
-        self.constants_address = self._constants.ctypes.data
+        self.forward_only(lib, manifest)
         self.integrate_segment, self.mode_samples, self.settle, self.run = (
             lib.entry_or_none(name) for name in ("core_integrate_segment", "core_mode_samples",
                                                  "core_settle", "core_run"))
@@ -58,6 +52,26 @@ class Core:
         """sphere.c's faces and KKT candidates (:mod:`snakecg.engine.sphere`)."""
         self.optimal = OptimalKernel(lib, self.layout)
         """The optimal-torque queries in one call per batch (:mod:`snakecg.engine.optimal`)."""
+
+    @classmethod
+    def forward_library(cls, lib: Library, manifest: dict) -> Core:
+        """The core of a library that has contact.c and forward.c alone (a spatial scene's
+        contact library): ``core_forward`` and the state rule, nothing of the simulation or
+        the optimal-torque queries."""
+        core = cls.__new__(cls)
+        core.forward_only(lib, manifest)
+        return core
+
+    def forward_only(self, lib: Library, manifest: dict) -> None:
+        """Bind forward.c's entry points (:meth:`forward_library`, and the first step of the
+        constructor)."""
+        self.layout = Layout.of(manifest)
+        self._fn = lib.entry("core_forward")
+        self.call_packed = lib.entry("core_forward_call")
+        """``core_forward_call(&call)``: the same with the arguments in a :class:`Call`."""
+        self._rules = lib.entry("core_next_states")
+        self._constants = CONSTANTS.copy()
+        self.constants_address = self._constants.ctypes.data
 
     def next_states(self, state, lam, w, G, bounds) -> tuple[np.ndarray, bool]:
         """The C's row-state update for one sample (the rules of

@@ -1,6 +1,6 @@
 /* The per-state system and its complementarity solve: one evaluation of the generated
- * `contact_system` (the object given or placed), the rows' velocities A V, the held rows'
- * forces of eq. (16) and the active-set rule; the generated functions' work arrays, and the
+ * `contact_system` (the object given or placed), the held rows' forces of eq. (16) and the
+ * active-set rule; the generated functions' work arrays, and the
  * wall clock of the long calls. Shared by forward.c, integrate.c, events.c, run.c and maps.c
  * through engine.h. */
 #define _POSIX_C_SOURCE 200809L /* clock_gettime (before the first include) */
@@ -111,67 +111,74 @@ int sc_contact_system(sc_work_t *ws, const double *scene, const double *q,
   return SNAKECG_CS(ws->arg, ws->res, ws->iw, ws->w, 0);
 }
 
-/* A V (snakecg.simulate.dynamics.Dynamics.row_velocities): the gap rate (row 0) and the
- * wheels' lateral velocities, from the generated `link_jacobians` at q (its status, 0 on
- * success). The link twists J v; the wheel row of link i is (-sin phi_i, cos phi_i,
- * wheel_offset_i) on its twist, the contact row the normal n = side (-sin phi_k, cos phi_k)
- * on the velocity of the object's contact point (rho in the object frame) relative to the
- * link's, less the sliding term side omega_k (s - c_k). */
-int sc_row_velocities(sc_work_t *ws, const double *scene, const double *rho, int k,
-                      double c_k, const double *q, const double *v, const double *qo,
-                      const double *vo, double s, double *av) {
-  enum { ns = SNAKECG_NS, nl = SNAKECG_NL };
-  const double *woff = scene + SCENE_wheel_offset;
-  const double sig = scene[SCENE_side];
-  double J[3 * SNAKECG_NL * SNAKECG_NS], tw[3 * SNAKECG_NL], phi = q[2], spk = 0.0, cpk = 0.0;
-  double n0, n1, cs, sn, rx, ry, p0, p1;
-  int i, j;
-  ws->arg[LJ_IN_q] = q;
-  ws->arg[LJ_IN_K] = scene + SCENE_K;
-  ws->res[LJ_OUT_J] = J;
-  if (SNAKECG_LJ(ws->arg, ws->res, ws->iw, ws->w, 0)) return 1;
-  for (i = 0; i < 3 * nl; ++i) {
+/* A SUPPORT row whose pivot ratio is at most this depends on the held rows before it. */
+#define SC_SUPPORT_TOL 1e-10
+
+/* Solve L D L^T x = y in place (m rows; a dropped row has dinv 0 and a zero column of L). */
+static void sc_ldl_solve(int m, const double *L, const double *dinv, double *y) {
+  const int nc = SNAKECG_NC;
+  int i, k;
+  for (i = 0; i < m; ++i) /* forward, diagonal and back substitution */
+    for (k = 0; k < i; ++k) y[i] -= L[i + nc * k] * y[k];
+  for (i = m - 1; i >= 0; --i) {
+    y[i] *= dinv[i];
+    for (k = i + 1; k < m; ++k) y[i] -= L[k + nc * i] * y[k];
+  }
+}
+
+/* The held forces y (m of them) made least-norm where SUPPORT rows were dropped (drop[j]):
+ * the solutions differ by the null vectors z_j = e_j - G_KK^-1 G_Kj (K: the rows kept), so
+ * y <- y - Z (Z^T Z)^-1 Z^T y (Z^T Z by linalg.h's Cholesky: Z has an identity block, so it
+ * is positive definite). */
+static void sc_least_norm(int m, const int *held, const int *drop, const double *G,
+                          const double *L, const double *dinv, double *y) {
+  const int nc = SNAKECG_NC;
+  double Z[SNAKECG_NC * SNAKECG_NC], C[SNAKECG_NC * SNAKECG_NC], c[SNAKECG_NC];
+  int nd = 0, i, j, k;
+  for (j = 0; j < m; ++j) {
+    double *z = Z + nc * nd;
+    if (!drop[j]) continue;
+    for (i = 0; i < m; ++i) z[i] = drop[i] ? 0.0 : G[held[i] + nc * held[j]];
+    sc_ldl_solve(m, L, dinv, z);
+    for (i = 0; i < m; ++i) z[i] = -z[i];
+    z[j] = 1.0;
+    ++nd;
+  }
+  for (j = 0; j < nd; ++j) { /* C = Z^T Z (its lower triangle, row-major), c = Z^T y */
     double t = 0.0;
-    for (j = 0; j < ns; ++j) t += J[i + 3 * nl * j] * v[j];
-    tw[i] = t;
-  }
-  for (i = 0; i < nl; ++i) { /* phi_1 = theta, phi_{i+1} = phi_i + q_i */
-    double sp, cp;
-    if (i) phi += q[2 + i];
-    sp = sin(phi);
-    cp = cos(phi);
-    if (i == k) {
-      spk = sp;
-      cpk = cp;
+    for (i = 0; i < m; ++i) t += Z[i + nc * j] * y[i];
+    c[j] = t;
+    for (k = 0; k <= j; ++k) {
+      double s = 0.0;
+      for (i = 0; i < m; ++i) s += Z[i + nc * j] * Z[i + nc * k];
+      C[j * nc + k] = s;
     }
-    av[1 + i] = -sp * tw[3 * i] + cp * tw[3 * i + 1] + woff[i] * tw[3 * i + 2];
   }
-  n0 = sig * -spk;
-  n1 = sig * cpk;
-  cs = cos(qo[2]);
-  sn = sin(qo[2]);
-  rx = rho[0];
-  ry = rho[1];
-  p0 = vo[0] - vo[2] * (sn * rx + cs * ry);
-  p1 = vo[1] + vo[2] * (cs * rx - sn * ry);
-  av[0] = n0 * (p0 - tw[3 * k]) + n1 * (p1 - tw[3 * k + 1]) - sig * tw[3 * k + 2] * (s - c_k);
-  return 0;
+  if (!sc_cholesky(nd, C, nc, 0.0)) { /* not reached (see above); NaN flags the sample */
+    for (i = 0; i < m; ++i) y[i] = NAN;
+    return;
+  }
+  sc_cholesky_solve(nd, C, nc, c); /* c <- (Z^T Z)^-1 Z^T y */
+  for (j = 0; j < nd; ++j)
+    for (i = 0; i < m; ++i) y[i] -= Z[i + nc * j] * c[j];
 }
 
 /* The constraint forces for row states `state` (eq. 16): lam_F fixed (0, or +-bound for a
  * sliding wheel), lam_H solving G_HH lam_H = -(b_H + G_HF lam_F) - extra_H by LDL^T in row
  * order (the masked factorization of the generated `constrained_dynamics`); `extra` (may be
- * null) adds to the right-hand side per row (the simulator's Baumgarte terms). Returns the
- * pivot ratio min_j d_j / G_jj over the held rows (1 when none holds). */
+ * null) adds to the right-hand side per row (the simulator's Baumgarte terms). A SUPPORT row
+ * is held; where it depends on the held rows before it (pivot ratio at most SC_SUPPORT_TOL)
+ * it is dropped from the factorization, and the held forces are then the least-norm ones.
+ * Returns the pivot ratio min_j d_j / G_jj over the held rows not dropped (1 when none). */
 double sc_held_forces(const signed char *state, const double *G, const double *b,
                       const double *bounds, const double *extra, double *lam) {
   const int nc = SNAKECG_NC;
-  int held[SNAKECG_NC], m = 0, i, j, k;
+  int held[SNAKECG_NC], drop[SNAKECG_NC], m = 0, dropped = 0, i, j, k;
   double L[SNAKECG_NC * SNAKECG_NC], d[SNAKECG_NC], dinv[SNAKECG_NC], y[SNAKECG_NC], ratio = 1.0;
   for (i = 0; i < nc; ++i) {
     lam[i] = state[i] == SLIDE_POS ? bounds[i] : state[i] == SLIDE_NEG ? -bounds[i] : 0.0;
     if (!isfinite(lam[i])) lam[i] = 0.0;
-    if (state[i] == HELD) held[m++] = i;
+    if (state[i] == HELD || state[i] == SUPPORT) held[m++] = i;
   }
   for (i = 0; i < m; ++i) { /* right-hand side -(b_H + G_HF lam_F) - extra_H */
     double t = b[held[i]];
@@ -187,9 +194,16 @@ double sc_held_forces(const signed char *state, const double *G, const double *b
       ld[k] = L[j + nc * k] * d[k];
       s -= L[j + nc * k] * ld[k];
     }
+    r = s / G[held[j] + nc * held[j]];
+    drop[j] = state[held[j]] == SUPPORT && fabs(r) <= SC_SUPPORT_TOL;
+    if (drop[j]) { /* dependent: out of the factorization */
+      d[j] = dinv[j] = 0.0;
+      for (i = j + 1; i < m; ++i) L[i + nc * j] = 0.0;
+      dropped = 1;
+      continue;
+    }
     d[j] = s;
     dinv[j] = 1.0 / s; /* one division per pivot */
-    r = s / G[held[j] + nc * held[j]];
     if (!(r >= ratio)) ratio = r; /* NaN propagates */
     for (i = j + 1; i < m; ++i) {
       double t = G[held[i] + nc * held[j]];
@@ -203,6 +217,7 @@ double sc_held_forces(const signed char *state, const double *G, const double *b
     y[i] *= dinv[i];
     for (k = i + 1; k < m; ++k) y[i] -= L[k + nc * i] * y[k];
   }
+  if (dropped) sc_least_norm(m, held, drop, G, L, dinv, y);
   for (i = 0; i < m; ++i) lam[held[i]] = y[i];
   return ratio;
 }

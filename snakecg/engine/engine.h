@@ -6,15 +6,16 @@
  * function that crosses files is declared here, with the file that defines it; nothing else
  * declares a function of another file. The small dense linear algebra is linalg.h's.
  *
- *   contact.c       the per-state system (the generated contact_system), the rows' velocities,
- *                   the held rows' forces of eq. (16), the active-set rule, work arrays
+ *   contact.c       the per-state system (the generated contact_system), the held rows'
+ *                   forces of eq. (16), the active-set rule, work arrays (alone with
+ *                   forward.c in a spatial scene's library)
  *   forward.c       the forward solve of a batch (exported: core_forward)
  *   integrate.c     one integration segment between events (Dormand-Prince 5(4), dense
  *                   output, event location; exported: core_integrate_segment, ...)
  *   events.c        what happens at an event: impacts, projections, the new active set
  *                   (exported: core_settle)
  *   run.c           a whole simulation: segments and events in one call (exported: core_run)
- *   geometry.c      the contact check of a simulation (overlap depths)
+ *   geometry.c      the contact check of a simulation (overlap depths), the rows' velocities
  *   maps.c          the system at rest and the affine maps of one row state
  *   qp.c            dense QPs and the ellipsoid constraint (the dual active set)
  *   certificate.c   non-negative least squares and the KKT certificate of a point
@@ -48,8 +49,7 @@ typedef long long int sc_int;
 
 #include "linalg.h"
 
-/* Before a loop over one of the model's sizes (known when compiling): unroll it (GCC; other
- * compilers go on without). */
+/* Before a loop over one of the model's sizes (known when compiling): unroll it (GCC). */
 #if defined(__GNUC__) && !defined(__clang__)
 #define SC_UNROLL _Pragma("GCC unroll 16")
 #else
@@ -72,8 +72,9 @@ int SNAKECG_CR_WORK(sc_int *sz_arg, sc_int *sz_res, sc_int *sz_iw, sc_int *sz_w)
 int SNAKECG_LJ(const double **arg, double **res, sc_int *iw, double *w, int mem);
 int SNAKECG_LJ_WORK(sc_int *sz_arg, sc_int *sz_res, sc_int *sz_iw, sc_int *sz_w);
 
-/* row states (snakecg/solver.py) */
-enum { ABSENT = 0, HELD = 1, LOST = 2, SLIDE_POS = 3, SLIDE_NEG = 4 };
+/* row states (snakecg/solver.py); SUPPORT: a bilateral row held always that may depend on the
+ * held rows (a spatial snake's ground rows, snakecg/spatial/analysis.py) */
+enum { ABSENT = 0, HELD = 1, LOST = 2, SLIDE_POS = 3, SLIDE_NEG = 4, SUPPORT = 5 };
 
 /* The simulation's structs, shared by integrate.c, events.c and run.c (mirrored field by
  * field in snakecg/engine/segment.py). */
@@ -198,7 +199,7 @@ SC_INTERNAL int sc_contact_system(sc_work_t *ws, const double *scene, const doub
                                   const double *v_obj, const double *f_obj, const double *rho,
                                   sc_system *out);
 
-/* A V (snakecg.simulate.dynamics.Dynamics.row_velocities): the gap rate (row 0) and the
+/* geometry.c: A V (snakecg.simulate.dynamics.Dynamics.row_velocities): the gap rate (row 0) and the
  * wheels' lateral velocities, from the generated `link_jacobians` at q (its status, 0 on
  * success). The link twists J v; the wheel row of link i is (-sin phi_i, cos phi_i,
  * wheel_offset_i) on its twist, the contact row the normal n = side (-sin phi_k, cos phi_k)
@@ -211,8 +212,9 @@ SC_INTERNAL int sc_row_velocities(sc_work_t *ws, const double *scene, const doub
 /* The constraint forces for row states `state` (eq. 16): lam_F fixed (0, or +-bound for a
  * sliding wheel), lam_H solving G_HH lam_H = -(b_H + G_HF lam_F) - extra_H by LDL^T in row
  * order (the masked factorization of the generated `constrained_dynamics`); `extra` (may be
- * null) adds to the right-hand side per row (the simulator's Baumgarte terms). Returns the
- * pivot ratio min_j d_j / G_jj over the held rows (1 when none holds). */
+ * null) adds to the right-hand side per row (the simulator's Baumgarte terms); a dependent
+ * SUPPORT row is dropped and the forces made least-norm. Returns the pivot ratio
+ * min_j d_j / G_jj over the held rows not dropped (1 when none holds). */
 SC_INTERNAL double sc_held_forces(const signed char *state, const double *G, const double *b,
                                   const double *bounds, const double *extra, double *lam);
 
@@ -587,9 +589,7 @@ SC_INTERNAL sc_int sc_block_size(sc_int kind);
 SC_INTERNAL void sc_block_P(const sc_problem *p, sc_int k, const double *l, double *P);
 enum { S_HELD = 0, S_ZERO = 1, S_SLIDE = 2 }; /* a block's state */
 #define TOL_ACCEPT 1e-9 /* a row's acceleration is zero within this of its scale */
-/* a direction of the face's forces that moves no acceleration: an eigenvalue of G_FF at
- * rounding level (at most this times the largest) */
-#define NULL_TOL 1e-13
+#define NULL_TOL 1e-13 /* G_FF's eigenvalues at most this of the largest: no acceleration */
 SC_INTERNAL int sc_in_set(const sc_problem *p, sc_int k, double *l, double tol, int clip);
 SC_INTERNAL int sc_still(const sc_problem *p, sc_int k);
 SC_INTERNAL int sc_min_norm_face(sc_problem *p, double *work);

@@ -33,6 +33,17 @@
 
 #include "snakecg_layout.h"
 #include "engine.h"
+
+/* the length of q (a spatial model's configuration has one more entry than its velocity) */
+#ifndef SNAKECG_NQ
+#define SNAKECG_NQ SNAKECG_NS
+#endif
+/* Bounds that follow the solution (a spatial scene, SCENE_friction): row r's bound is
+ * friction_r times the force of row normal_row_r (mu times the link's solved normal force,
+ * none where negative), found by iterating the solve on the bounds to a fixed point; at most
+ * this many passes. */
+#define SC_BOUND_PASSES 100
+
 /* sample status */
 enum { STATUS_EXACT = 0, STATUS_FALLBACK = 1 };
 
@@ -93,26 +104,51 @@ static int solve_one(sc_work_t *ws, const double *scene, const sc_constants *c, 
   const double *M = sys.M, *G = sys.G, *b = sys.b, *Kq = sys.Kq, *Ka = sys.Ka;
   const double *bounds = scene + SCENE_bounds, *present = scene + SCENE_present;
   signed char state[SNAKECG_NC];
+  double u[SNAKECG_NC]; /* the rows' bounds */
   long it;
-  int r, i, moved = 1;
+  int r, i, moved = 1, pass, coupled = 0;
   double *lam = out + OUT_lam, *w = out + OUT_w, *qdd = out + OUT_qdd, *a = out + OUT_a_obj;
 
   memcpy(out + OUT_tau, tau, sizeof(double) * SNAKECG_NA);
   /* q_obj_in == NULL: the object placed at the scene's contact from q */
   if (sc_contact_system(ws, scene, q, v, tau, q_obj_in, v_obj, f_obj, rho_in, &sys))
     return STATUS_FALLBACK;
-  for (r = 0; r < nc; ++r) state[r] = present[r] != 0.0 ? HELD : ABSENT;
-  for (it = 0; it < max_iter && moved; ++it) {
-    pivot = sc_held_forces(state, G, b, bounds, 0, lam);
-    if (!(pivot > c->pivot_tol) || !all_finite(lam, nc, INFINITY)) return STATUS_FALLBACK;
-    for (r = 0; r < nc; ++r) { /* w = G_c lam + b (eq. 13) */
-      double t = b[r];
-      for (i = 0; i < nc; ++i) t += G[r + nc * i] * lam[i];
-      w[r] = t;
+  /* present 2: a SUPPORT row (held always, may depend on the others) */
+  for (r = 0; r < nc; ++r)
+    state[r] = present[r] == 2.0 ? SUPPORT : present[r] != 0.0 ? HELD : ABSENT;
+  for (r = 0; r < nc; ++r) u[r] = bounds[r];
+#ifdef SCENE_friction
+  for (r = 0; r < nc; ++r) coupled |= scene[SCENE_friction + r] > 0.0;
+#endif
+  for (pass = 0;; ++pass) {
+    double change = 0.0, size = 0.0;
+    moved = 1;
+    for (it = 0; it < max_iter && moved; ++it) {
+      pivot = sc_held_forces(state, G, b, u, 0, lam);
+      if (!(pivot > c->pivot_tol) || !all_finite(lam, nc, INFINITY)) return STATUS_FALLBACK;
+      for (r = 0; r < nc; ++r) { /* w = G_c lam + b (eq. 13) */
+        double t = b[r];
+        for (i = 0; i < nc; ++i) t += G[r + nc * i] * lam[i];
+        w[r] = t;
+      }
+      moved = sc_next_states(state, lam, w, G, u, c->rel_tol);
     }
-    moved = sc_next_states(state, lam, w, G, bounds, c->rel_tol);
+    if (moved) return STATUS_FALLBACK; /* not settled: enumeration, in the reference path */
+    if (!coupled) break;
+#ifdef SCENE_friction
+    for (r = 0; r < nc; ++r) { /* the bounds from the forces just solved */
+      double mu = scene[SCENE_friction + r], nr, f;
+      if (!(mu > 0.0)) continue;
+      nr = lam[(int)scene[SCENE_normal_row + r]];
+      f = mu * (nr > 0.0 ? nr : 0.0);
+      if (!(fabs(f - u[r]) <= change)) change = fabs(f - u[r]); /* the first pass: inf */
+      if (f > size) size = f;
+      u[r] = f;
+    }
+#endif
+    if (change <= 1e-14 * size) break;
+    if (pass >= SC_BOUND_PASSES) return STATUS_FALLBACK;
   }
-  if (moved) return STATUS_FALLBACK; /* not settled: enumeration, in the reference path */
   if (!(pivot > c->weak)) return STATUS_FALLBACK; /* weak rows: factored directly there */
   mass = mass_pivot_ratio(M, S);
   if (!(mass > c->mass_tol)) return STATUS_FALLBACK;
@@ -139,7 +175,12 @@ static int solve_one(sc_work_t *ws, const double *scene, const sc_constants *c, 
   nl = 0.0;
   for (i = 0; i < nc; ++i) {
     double t = 0.0;
+#ifdef SCENE_in_norm /* the rows of the norm (a spatial scene: not the ground's support) */
+    if (scene[SCENE_in_norm + i] == 0.0) continue;
+    for (r = 0; r < nc; ++r) t += scene[SCENE_in_norm + r] != 0.0 ? G[i + nc * r] * lam[r] : 0.0;
+#else
     for (r = 0; r < nc; ++r) t += G[i + nc * r] * lam[r];
+#endif
     nl += lam[i] * t;
   }
   out[OUT_norm_qdd] = nq;
@@ -191,7 +232,7 @@ int SNAKECG_EXPORT(core_forward)(sc_int n, const double *scene, const double *co
   vlim = sqrt(c.force_limit);
   /* inputs first: bad input refuses the whole call before any work */
   for (i = 0; i < n; ++i) {
-    if (!all_finite(in[IN_q] + i * stride[IN_q], SNAKECG_NS, INFINITY) ||
+    if (!all_finite(in[IN_q] + i * stride[IN_q], SNAKECG_NQ, INFINITY) ||
         !all_finite(in[IN_v] + i * stride[IN_v], SNAKECG_NS, vlim) ||
         !all_finite(in[IN_tau] + i * stride[IN_tau], SNAKECG_NA, c.force_limit) ||
         !all_finite(in[IN_v_obj] + i * stride[IN_v_obj], 3, vlim) ||

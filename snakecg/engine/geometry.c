@@ -15,7 +15,10 @@
  * The pairs are numbered as ContactCheck.pairs: link i (from 0) and the object is pair i,
  * then the links (i, j), i < j - 1, in order. A pair whose bounding circles (a link's about
  * its middle, the plate's about its centre, widened by the radius) are apart has overlap 0
- * and is not measured further. */
+ * and is not measured further.
+ * Also the rows' velocities A V from the generated `link_jacobians` (integrate.c, events.c):
+ * here, not in contact.c, so that contact.c and forward.c compile alone into a spatial
+ * scene's library, which has no planar link Jacobians. */
 #include <math.h>
 #include <string.h>
 
@@ -159,5 +162,52 @@ int SNAKECG_EXPORT(core_contact_depth)(const sc_geometry *g, sc_int n, const dou
     depth[k] = sc_geo_depth(g, Y + k * NY, &p);
     pair[k] = (double)p;
   }
+  return 0;
+}
+
+/* A V (snakecg.simulate.dynamics.Dynamics.row_velocities): the gap rate (row 0) and the
+ * wheels' lateral velocities, from the generated `link_jacobians` at q (its status, 0 on
+ * success). The link twists J v; the wheel row of link i is (-sin phi_i, cos phi_i,
+ * wheel_offset_i) on its twist, the contact row the normal n = side (-sin phi_k, cos phi_k)
+ * on the velocity of the object's contact point (rho in the object frame) relative to the
+ * link's, less the sliding term side omega_k (s - c_k). */
+int sc_row_velocities(sc_work_t *ws, const double *scene, const double *rho, int k,
+                      double c_k, const double *q, const double *v, const double *qo,
+                      const double *vo, double s, double *av) {
+  enum { ns = SNAKECG_NS, nl = SNAKECG_NL };
+  const double *woff = scene + SCENE_wheel_offset;
+  const double sig = scene[SCENE_side];
+  double J[3 * SNAKECG_NL * SNAKECG_NS], tw[3 * SNAKECG_NL], phi = q[2], spk = 0.0, cpk = 0.0;
+  double n0, n1, cs, sn, rx, ry, p0, p1;
+  int i, j;
+  ws->arg[LJ_IN_q] = q;
+  ws->arg[LJ_IN_K] = scene + SCENE_K;
+  ws->res[LJ_OUT_J] = J;
+  if (SNAKECG_LJ(ws->arg, ws->res, ws->iw, ws->w, 0)) return 1;
+  for (i = 0; i < 3 * nl; ++i) {
+    double t = 0.0;
+    for (j = 0; j < ns; ++j) t += J[i + 3 * nl * j] * v[j];
+    tw[i] = t;
+  }
+  for (i = 0; i < nl; ++i) { /* phi_1 = theta, phi_{i+1} = phi_i + q_i */
+    double sp, cp;
+    if (i) phi += q[2 + i];
+    sp = sin(phi);
+    cp = cos(phi);
+    if (i == k) {
+      spk = sp;
+      cpk = cp;
+    }
+    av[1 + i] = -sp * tw[3 * i] + cp * tw[3 * i + 1] + woff[i] * tw[3 * i + 2];
+  }
+  n0 = sig * -spk;
+  n1 = sig * cpk;
+  cs = cos(qo[2]);
+  sn = sin(qo[2]);
+  rx = rho[0];
+  ry = rho[1];
+  p0 = vo[0] - vo[2] * (sn * rx + cs * ry);
+  p1 = vo[1] + vo[2] * (cs * rx - sn * ry);
+  av[0] = n0 * (p0 - tw[3 * k]) + n1 * (p1 - tw[3 * k + 1]) - sig * tw[3 * k + 2] * (s - c_k);
   return 0;
 }

@@ -50,13 +50,17 @@ class Layout:
     n_links: int
     n_constraints: int
     n_parameters: int
+    #: a spatial scene's: bounds that follow the solved forces and the rows of the norm
+    #: (snakecg/spatial/analysis.py)
+    spatial: bool = False
 
     def scene_fields(self) -> tuple[tuple[str, int], ...]:
         nl, nc = self.n_links, self.n_constraints
+        spatial = (("friction", nc), ("normal_row", nc), ("in_norm", nc)) if self.spatial else ()
         return (("K", self.n_parameters), ("contact_link", nl), ("side", 1),
                 ("object_mass", 1), ("object_inertia", 1), ("wheel_offset", nl),
                 ("contact_offset", 1), ("object_distance", 1), ("present", nc),
-                ("bounds", nc))
+                ("bounds", nc)) + spatial
 
     def out_fields(self) -> tuple[tuple[str, int], ...]:
         """Columns of one output row: the :class:`~snakecg.ForwardResult` fields, the row
@@ -125,7 +129,7 @@ class Layout:
     def of(cls, manifest: dict) -> "Layout":
         return cls(int(manifest["n_joints"]), int(manifest["n_coordinates"]),
                    int(manifest["n_links"]), int(manifest["n_constraints"]),
-                   int(manifest["n_parameters"]))
+                   int(manifest["n_parameters"]), manifest.get("kind") == "spatial")
 
 
 def _ident(what: str, name) -> str:
@@ -149,6 +153,8 @@ def header(manifest: dict) -> str:
              "#define SNAKECG_EXPORT(name) SNAKECG_CAT(SNAKECG_PREFIX, name)",
              f"#define SNAKECG_NA {lay.n_joints}", f"#define SNAKECG_NS {lay.n_coordinates}",
              f"#define SNAKECG_NL {lay.n_links}", f"#define SNAKECG_NC {lay.n_constraints}"]
+    if "nq" in manifest:  # a spatial model: q has n_q entries
+        lines.append(f"#define SNAKECG_NQ {int(manifest['nq'])}")
     for fname, (short, ins, outs) in FUNCTIONS.items():
         sig = sigs.get(fname)
         if sig is None:

@@ -4,8 +4,10 @@ As the planar models (:mod:`snakecg.artifacts`, :mod:`snakecg.native`): the pack
 ``snakecg_generated/spatial/na<N>/`` first, else the user cache's
 ``<cache>/spatial/<fingerprint>/na<N>/``, generated once under a file lock (SymPy is imported
 only then); every file is checked against the manifest's SHA-256 before use. The C compiles
-into ``<cache>/build/spatial-na<N>-<key>/model.so`` (no runtime core: the spatial engine comes
-later), and is called through the same batched drivers and backends.
+into ``<cache>/build/spatial-na<N>-chain-<key>/model.so``, and is called through the same
+batched drivers and backends; the contact problem (``contact_system``) with the runtime
+core's complementarity solve (``forward.c``) compiles into a second library on the first
+spatial scene.
 """
 
 from __future__ import annotations
@@ -64,7 +66,7 @@ def spatial_fingerprint() -> str:
 def verify_spatial_dir(path: Path, n_joints: int) -> dict:
     """The folder's manifest after checking its kind, sizes, function set and every file's
     SHA-256; :class:`ArtifactError` naming the folder and the problem otherwise."""
-    from snakecg_derive.spatial.catalog import SPATIAL_FUNCTIONS
+    from snakecg_derive.spatial.catalog import SPATIAL_MODEL_FUNCTIONS as SPATIAL_FUNCTIONS
 
     try:
         manifest = json.loads((path / "manifest.json").read_text(encoding="utf-8"))
@@ -136,22 +138,66 @@ def spatial_model_dir(n_joints: int, *, progress=None) -> tuple[Path, dict]:
         return folder, verify_spatial_dir(folder, n_joints)
 
 
-def _build_key(manifest: dict, cc: str) -> str:
+#: The engine's files that a spatial scene's library compiles in (the per-state system and
+#: the complementarity solve) and the headers they include.
+CORE_FILES = ("contact.c", "forward.c", "engine.h", "linalg.h")
+
+
+def core_manifest(manifest: dict) -> dict:
+    """The spatial manifest in the runtime core's terms (snakecg/engine/layout.py): ``n_s`` is
+    ``n_v``, the rows are the contact, a wheel and a ground row per link."""
+    return {**manifest, "n_coordinates": manifest["nv"],
+            "n_constraints": 2 * manifest["n_links"] + 1}
+
+
+def _core_sources(manifest: dict) -> tuple[dict[str, bytes], str]:
+    from ..engine.layout import header
+
+    here = native.ENGINE_DIR
+    return {name: (here / name).read_bytes() for name in CORE_FILES}, \
+        header(core_manifest(manifest))
+
+
+#: The two libraries of a spatial model: the chain's functions (``load(robot)``), and the
+#: contact problem with the runtime core's solve (compiled on the first ``load(scene)``, so
+#: that a chain alone does not wait for it).
+PARTS = ("chain", "contact")
+
+
+def _part(manifest: dict, part: str) -> dict:
+    """The manifest restricted to the functions of one library."""
+    from snakecg_derive.spatial.catalog import SPATIAL_CONTACT_FUNCTIONS
+
+    keep = [f for f in manifest["functions"]
+            if (f["name"] in SPATIAL_CONTACT_FUNCTIONS) == (part == "contact")]
+    return {**manifest, "functions": keep}
+
+
+def _build_key(manifest: dict, cc: str, part: str) -> str:
     h = hashlib.sha256()
     h.update(manifest["build_hash"].encode())
+    h.update(part.encode())
+    if part == "contact":
+        core, layout = _core_sources(manifest)
+        for name, text in core.items():
+            h.update(name.encode() + hashlib.sha256(text).digest())
+        h.update(layout.encode())
+        h.update(" ".join(native.CORE_FLAGS).encode())
     h.update(json.dumps(manifest["files"], sort_keys=True).encode())
     h.update(native._compiler_id(cc).encode())
     h.update(" ".join(OPT_FLAGS + native.LARGE_FLAGS).encode())
     return h.hexdigest()[:24]
 
 
-def compile_spatial(folder: Path, manifest: dict, *, progress=None) -> Path:
-    """Compile the folder's C files (in parallel) into a cached shared library, atomically
-    under a file lock; :class:`BuildError` with the command and stderr when it fails."""
+def compile_spatial(folder: Path, manifest: dict, *, progress=None, part: str = "chain") -> Path:
+    """Compile the C files of one library (:data:`PARTS`; in parallel) into a cached shared
+    library, atomically under a file lock; :class:`BuildError` with the command and stderr
+    when it fails."""
     cc = native.find_compiler()
     if cc is None:
         raise native._no_compiler()
-    out_dir = cache_dir() / "build" / f"spatial-na{manifest['n_joints']}-{_build_key(manifest, cc)}"
+    key = _build_key(manifest, cc, part)
+    out_dir = cache_dir() / "build" / f"spatial-na{manifest['n_joints']}-{part}-{key}"
     lib, stamp = out_dir / "model.so", out_dir / "model.so.sha256"
     if native._library_ok(lib, stamp):
         return lib
@@ -162,7 +208,7 @@ def compile_spatial(folder: Path, manifest: dict, *, progress=None) -> Path:
             return lib
         for stale in out_dir.glob("build-*"):
             shutil.rmtree(stale, ignore_errors=True)
-        sources = sorted(n for n in manifest["files"] if n.endswith(".c"))
+        sources = sorted(f"c/{f['name']}.c" for f in _part(manifest, part)["functions"])
         large = {f"c/{f['name']}.c" for f in manifest["functions"] if f.get("large")}
         tmp = Path(tempfile.mkdtemp(prefix="build-", dir=out_dir))
         try:
@@ -175,9 +221,22 @@ def compile_spatial(folder: Path, manifest: dict, *, progress=None) -> Path:
                 native._run([cc, *flags, "-c", str(folder / name), "-o", str(obj)])
                 return obj
 
+            core, layout = _core_sources(manifest) if part == "contact" else ({}, "")
+            (tmp / "snakecg_layout.h").write_text(layout, encoding="utf-8")
+            for name, text in core.items():
+                (tmp / (name if name.endswith(".h") else f"snakecg_core_{name}")).write_bytes(text)
+
+            def one_core(name: str) -> Path:
+                obj = tmp / f"snakecg_core_{Path(name).stem}.o"
+                native._run([cc, *native.CORE_FLAGS, "-I", str(tmp), "-c",
+                             str(tmp / f"snakecg_core_{name}"), "-o", str(obj)])
+                return obj
+
             sources.sort(key=lambda n: -(folder / n).stat().st_size)
             with ThreadPoolExecutor(max_workers=max(1, os.cpu_count() or 1)) as pool:
-                objs = sorted(pool.map(one, sources), key=lambda o: o.name)
+                jobs = [pool.submit(one, name) for name in sources]
+                jobs += [pool.submit(one_core, name) for name in core if name.endswith(".c")]
+                objs = sorted((j.result() for j in jobs), key=lambda o: o.name)
             tmp_lib = tmp / "model.so"
             native._run([cc, "-shared", *map(str, objs), "-o", str(tmp_lib), "-lm"])
             digest = hashlib.sha256(tmp_lib.read_bytes()).hexdigest()
@@ -191,17 +250,33 @@ def compile_spatial(folder: Path, manifest: dict, *, progress=None) -> Path:
 
 
 class SpatialCompiledBackend(native.CompiledBackend):
-    """The compiled batched drivers of a spatial model (no runtime core)."""
+    """The compiled batched drivers of a spatial chain; :meth:`contact` the library of its
+    contact problem with the runtime core's solve (compiled on first use)."""
 
-    def __init__(self, lib_path: Path, manifest: dict):  # noqa: D107 - as CompiledBackend
+    def __init__(self, lib_path: Path, manifest: dict, *, folder: Path | None = None,
+                 part: str = "chain", progress=None):  # noqa: D107 - as CompiledBackend
         self.path = lib_path
         self.prefix = manifest["prefix"]
         self._lib = Library(lib_path, self.prefix)
-        self.signatures = {s["name"]: native._Signature(s) for s in manifest["functions"]}
+        mine = _part(manifest, part)
+        self.signatures = {s["name"]: native._Signature(s) for s in mine["functions"]}
         self._fns = {name: self._lib.batch(name) for name in self.signatures}
-        native._check_signatures(lib_path, manifest, native._library_problems(self._lib,
-                                                                                manifest))
+        native._check_signatures(lib_path, manifest, native._library_problems(self._lib, mine))
         self.core = None
+        if part == "contact":
+            from ..engine import Core
+
+            self.core = Core.forward_library(self._lib, core_manifest(manifest))
+        self._folder, self._manifest, self._contact = folder, manifest, None
+
+    def contact(self, progress=None) -> SpatialCompiledBackend:
+        """The contact problem's library (``contact_system``, the runtime core's
+        ``core_forward`` as ``.core``), compiled once and cached."""
+        if self._contact is None:
+            lib = compile_spatial(self._folder, self._manifest, progress=progress,
+                                  part="contact")
+            self._contact = SpatialCompiledBackend(lib, self._manifest, part="contact")
+        return self._contact
 
 
 def load_spatial_backend(folder: Path, manifest: dict, *, prefer: str = "compiled",
@@ -210,7 +285,7 @@ def load_spatial_backend(folder: Path, manifest: dict, *, prefer: str = "compile
     if prefer == "compiled" and os.environ.get("SNAKECG_BACKEND", "") != "casadi":
         try:
             return SpatialCompiledBackend(compile_spatial(folder, manifest, progress=progress),
-                                          manifest)
+                                          manifest, folder=folder)
         except (BuildError, ArtifactError, OSError, AttributeError) as exc:
             _report_once(f"spatial{manifest['n_joints']}:{exc}",
                          "snakecg: using CasADi's in-process evaluation (slower) for the "
