@@ -39,6 +39,8 @@ from hypothesis import HealthCheck, Phase, event, given, settings
 from hypothesis import strategies as st
 
 import snakecg
+import snakecg.artifacts
+import snakecg.robot_model
 from snakecg import cli
 
 _PHASES = [Phase.explicit, Phase.reuse, Phase.generate, Phase.shrink]
@@ -597,8 +599,8 @@ def no_model_loaded():
         raise AssertionError("work started before the bad input was refused")
 
     with pytest.MonkeyPatch.context() as mp:
-        mp.setattr(model_mod, "_backend", boom)
-        mp.setattr(model_mod.artifacts, "model_dir", boom)
+        mp.setattr(snakecg.robot_model, "_backend", boom)
+        mp.setattr(snakecg.artifacts, "model_dir", boom)
         mp.setattr(render, "render_model", boom)
         mp.setattr(rep, "case_study_1", boom)
         mp.setattr(inspect_mod, "expression", boom)

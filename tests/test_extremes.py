@@ -10,6 +10,7 @@ import numpy as np
 import pytest
 
 import snakecg
+import snakecg.robot_model
 from snakecg.analysis import METRICS, joint_grid, sphere_directions
 
 
@@ -333,16 +334,15 @@ def test_sampled_wheel_extremes_keep_the_callers_backend(monkeypatch):
     """The sampled wheel extremes start from the ideal-wheel extremes of the same robot,
     evaluated on a second model: that model uses the caller's backend, so a model loaded with
     ``backend="casadi"`` never asks for a compiled library."""
-    import snakecg.model as model_module
 
     asked = []
-    real = model_module._backend
+    real = snakecg.robot_model._backend
 
     def spy(n_joints, prefer, progress=None):
         asked.append(prefer)
         return real(n_joints, prefer, progress)
 
-    monkeypatch.setattr(model_module, "_backend", spy)
+    monkeypatch.setattr(snakecg.robot_model, "_backend", spy)
     model = snakecg.load(snakecg.Scene(snakecg.Robot(joints=2), scenario="wheels"),
                          backend="casadi")
     q = np.array([0.0, 0.0, 0.0, 0.4, -0.3])

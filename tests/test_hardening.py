@@ -23,6 +23,8 @@ import numpy as np
 import pytest
 
 import snakecg
+import snakecg.artifacts
+import snakecg.robot_model
 from snakecg import InputError, Robot, Scene, cli
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -68,8 +70,8 @@ def no_model(monkeypatch):
     def boom(*args, **kwargs):
         raise AssertionError("a model was loaded before the bad input was refused")
 
-    monkeypatch.setattr(model_mod, "_backend", boom)
-    monkeypatch.setattr(model_mod.artifacts, "model_dir", boom)
+    monkeypatch.setattr(snakecg.robot_model, "_backend", boom)
+    monkeypatch.setattr(snakecg.artifacts, "model_dir", boom)
     import snakecg_derive.render as render
 
     monkeypatch.setattr(render, "render_model", boom)

@@ -12,6 +12,7 @@ import numpy as np
 import pytest
 
 import snakecg
+import snakecg.robot_model
 from snakecg import progress
 
 
@@ -61,17 +62,16 @@ def test_a_notebook_shows_steps_and_bars(fake_notebook, monkeypatch):
 
 
 def test_load_reports_builds_by_default(fake_notebook, monkeypatch):
-    import snakecg.model as model_mod
 
     fake_notebook()
     seen = []
-    original = model_mod._backend
+    original = snakecg.robot_model._backend
 
     def spy(n_joints, prefer, progress=None):
         seen.append(progress)
         return original(n_joints, prefer, progress)
 
-    monkeypatch.setattr(model_mod, "_backend", spy)
+    monkeypatch.setattr(snakecg.robot_model, "_backend", spy)
     snakecg.load(snakecg.Robot(joints=1))
     snakecg.load(snakecg.Robot(joints=1), progress=False)
     assert callable(seen[0]) and seen[1] is None
