@@ -98,14 +98,14 @@ def compute(folder: Path) -> None:
                 masked = np.where(feas.feasible, values, -np.inf) if feasible else values
                 g = int(np.nanargmax(np.where(np.isnan(masked), -np.inf, masked)))
                 cert = res.certificate
-                rows.append(dict(
-                    scenario=scenario, objective=objective, shapes=shape_set,
-                    status=res.status, value=float(res.value), q_deg=_deg(res.q[3:]),
-                    kkt=max(float(cert[k]) for k in
-                            ("stationarity", "primal_infeasibility", "complementarity")),
-                    seconds=seconds, starts=len(res.starts),
-                    grid_value=float(values[g]), grid_q_deg=_deg(Q[g, 3:]),
-                    grid_infeasible=_why(feas, g)))
+                rows.append({
+                    "scenario": scenario, "objective": objective, "shapes": shape_set,
+                    "status": res.status, "value": float(res.value), "q_deg": _deg(res.q[3:]),
+                    "kkt": max(float(cert[k]) for k in
+                               ("stationarity", "primal_infeasibility", "complementarity")),
+                    "seconds": seconds, "starts": len(res.starts),
+                    "grid_value": float(values[g]), "grid_q_deg": _deg(Q[g, 3:]),
+                    "grid_infeasible": _why(feas, g)})
                 log.info("optimal shapes: scenario %s, %s, %s shapes: %s %.8g (%.1f s); "
                          "grid %.8g", label, objective, shape_set, res.status, res.value,
                          seconds, values[g])
@@ -195,8 +195,9 @@ def _num(v: float) -> str:
 def table(data: dict) -> str:
     """The Markdown table and the sentence under it, from ``shapes.json``."""
     labels = dict(SCENARIOS)
-    lines = ["| scenario | maximised | shapes | continuous optimum | joint angles (°) | "
-             "best grid point | joint angles (°) | gain |", "|---|---|---|---|---|---|---|---|"]
+    head = ("| scenario | maximised | shapes | continuous optimum | joint angles (°) | "
+            "best grid point | joint angles (°) | gain |")
+    lines = [head, "|---|---|---|---|---|---|---|---|"]
     for r in data["rows"]:
         cont = ", ".join(f"{d:.2f}" for d in r["q_deg"])
         grid = ", ".join(f"{d:.0f}" for d in r["grid_q_deg"])
