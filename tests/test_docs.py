@@ -644,6 +644,13 @@ def test_optimal_shapes_table_is_the_packages(built_site):
     for (value, _, grid, _, _, gain) in table.values():
         assert value >= grid * (1 - 1e-12)  # the continuous optimum is never below the grid
         assert math.isclose(gain, value / grid - 1, rel_tol=0.06, abs_tol=1e-9)
+    # what the page's prose says of the table: scenario 1's sr with the first joint at its
+    # limit; the friction bounds do not bind ||a_obj||^2 (scenarios 2 and 3 agree), whose
+    # grid best over all shapes is not physically possible
+    assert table[("1", "sr", "all")][1][0] == -135.0
+    for shapes in ("all", "feasible"):
+        assert table[("2", "a_obj", shapes)][:2] == table[("3", "a_obj", shapes)][:2]
+        assert table[("2", "a_obj", shapes)][4] == (shapes == "all")
     Q = joint_grid(3, -135.0, 135.0, 10.0)
     robot = snakecg.Robot(joints=3)
 
