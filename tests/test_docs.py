@@ -606,6 +606,115 @@ def test_table2_on_the_pages_is_the_programs(built_site, tmp_path, capsys):
                     f"{program['table2_feasible_only'][key][j]:.6g}"), where
 
 
+def _shapes_table(site) -> dict:
+    """The optimal-shapes page's table, ``{(scenario, metric, shapes): (continuous value,
+    its angles, grid value, grid angles, grid marked infeasible, gain)}``."""
+    html = (site / "how-to" / "shapes" / "index.html").read_text(encoding="utf-8")
+    assert "snakecg-shapes-table" not in html, "the table directive was not replaced"
+    tables = [t for t in _html_tables(html) if t and t[0][:2] == ["scenario", "maximised"]]
+    assert len(tables) == 1, f"{len(tables)} shape tables"
+    def angles(s):
+        return tuple(float(x) for x in s.strip("()").split(","))
+
+    out = {}
+    for scenario, metric, shapes, value, q, grid, q_grid, gain in tables[0][1:]:
+        key = (scenario.split()[0], "sr" if metric == "sr" else "a_obj", shapes)
+        out[key] = (float(value), angles(q), float(grid.rstrip("*")), angles(q_grid),
+                    grid.endswith("*"), float(gain.rstrip(" %")) / 100)
+    return out
+
+
+def test_optimal_shapes_table_is_the_packages(built_site):
+    """The optimal-shapes page's table, computed at build time, against references outside
+    the hook: scenario 1's sr (the top generalized eigenvalue of (Omega, Omega + Xi), eq. 30,
+    by SciPy) over the paper's grid, and a SciPy search from the page's continuous optimum
+    that finds nothing better; scenario 3's ||a_obj||^2 on the ellipsoid (SciPy's top
+    eigenvalue of (Omega, N)) over the grid; scenario 3's sr at the straight shape against
+    the closed-form plateau kappa / (kappa + 1 + 3 I / (m l^2)); scenario 2's sr with the
+    package's API called directly (optimize_shape, and the extremes at that shape)."""
+    import numpy as np
+    import scipy.linalg as sla
+    from scipy.optimize import minimize
+
+    import snakecg
+    from snakecg.analysis import joint_grid
+
+    table = _shapes_table(built_site)
+    assert len(table) == 12 and {k[0] for k in table} == {"1", "2", "3"}
+    for (value, _, grid, _, _, gain) in table.values():
+        assert value >= grid * (1 - 1e-12)  # the continuous optimum is never below the grid
+        assert math.isclose(gain, value / grid - 1, rel_tol=0.06, abs_tol=1e-9)
+    # what the page's prose says of the table: scenario 1's sr with the first joint at its
+    # limit; the friction bounds do not bind ||a_obj||^2 (scenarios 2 and 3 agree), whose
+    # grid best over all shapes is not physically possible
+    assert table[("1", "sr", "all")][1][0] == -135.0
+    for shapes in ("all", "feasible"):
+        assert table[("2", "a_obj", shapes)][:2] == table[("3", "a_obj", shapes)][:2]
+        assert table[("2", "a_obj", shapes)][4] == (shapes == "all")
+    Q = joint_grid(3, -135.0, 135.0, 10.0)
+    robot = snakecg.Robot(joints=3)
+
+    def load(scenario):
+        return snakecg.load(snakecg.Scene(robot, scenario=scenario, kappa=100))
+
+    def top(A, B):
+        return np.array([sla.eigh(a, b, eigvals_only=True)[-1] for a, b in zip(A, B)])
+
+    # scenario 1, sr: Omega = k c^T c (rank one), so the sign of the top eigenvector keeps
+    # the contact and the best sr at a shape is the top eigenvalue of (Omega, Omega + Xi)
+    m1 = load("frictionless")
+    maps = m1.maps(Q)
+    sr = top(maps["omega_tau"], maps["omega_tau"] + maps["xi_tau"])
+    best = int(np.argmax(sr))
+    value, q_deg, grid, grid_deg, marked, _ = table[("1", "sr", "all")]
+    assert float(f"{sr[best]:.8g}") == grid and not marked
+    assert np.allclose(np.rad2deg(Q[best, 3:]), grid_deg)
+
+    def neg_sr(qj):
+        mp = m1.maps(np.concatenate([[0.0, 0.0, 0.0], qj])[None])
+        return -top(mp["omega_tau"], mp["omega_tau"] + mp["xi_tau"])[0]
+
+    lim = [(-0.75 * np.pi, 0.75 * np.pi)] * 3
+    q_page = np.deg2rad(q_deg)
+    assert math.isclose(-neg_sr(q_page), value, rel_tol=2e-7)
+    for start in (q_page, Q[best, 3:]):
+        found = minimize(neg_sr, start, method="L-BFGS-B", bounds=lim)
+        assert -found.fun <= value * (1 + 1e-7), (start, found)
+    assert table[("1", "sr", "feasible")][:2] == (value, q_deg)
+
+    # scenario 3, ||a_obj||^2: the largest k lam_c^2 on tau^T N tau <= 1, Omega rank one
+    m3 = load("ideal_wheels")
+    maps = m3.maps(Q)
+    a = top(maps["omega_tau"], maps["input_metric"])
+    best = int(np.argmax(a))
+    _, _, grid, grid_deg, marked, _ = table[("3", "a_obj", "all")]
+    assert float(f"{a[best]:.8g}") == grid and marked  # its links cross / enter the object
+    assert np.allclose(np.rad2deg(Q[best, 3:]), grid_deg)
+
+    # scenario 3, sr: the straight snake on the closed-form plateau
+    plateau = 100 / (100 + 1 + 3 * robot.inertia[0] / (robot.mass[0] * robot.length[0] ** 2))
+    for shapes in ("all", "feasible"):
+        value, q_deg, *_ = table[("3", "sr", shapes)]
+        assert value == float(f"{plateau:.8g}") and np.allclose(q_deg, 0.0, atol=0.005)
+
+    # scenario 2, sr: the API called here; a sliding wheel lifts it above the plateau
+    m2 = load("wheels")
+    res = m2.optimize_shape("max_sr", feasible=False)
+    value, q_deg, *_ = table[("2", "sr", "all")]
+    assert res.status == "optimal" and float(f"{res.value:.8g}") == value > plateau
+    assert np.allclose(np.rad2deg(res.q[3:]), q_deg, atol=0.005)
+    ex = m2.extremes(res.q[None], exact=True)
+    assert math.isclose(float(ex.max["sr"][0]), value, rel_tol=1e-7)
+
+
+def test_optimal_shapes_figures_are_built(built_site):
+    page = (built_site / "how-to" / "shapes" / "index.html").read_text(encoding="utf-8")
+    for name in ("max_sr.png", "max_a_obj.png"):
+        assert (built_site / "figures" / "shapes" / name).stat().st_size > 10_000, name
+        assert f'src="../../figures/shapes/{name}"' in page, name
+    assert not (DOCS / "how-to" / "shapes").exists(), "hand-made figures are back in docs/"
+
+
 _WIDE_PROBE = r"""
 <script>
 (function wait() {
