@@ -19,10 +19,10 @@ def assemble(sim, blocks, events, status) -> Trajectory:
     from its samples in ``blocks`` ``(t (k,), y (k, n_y), mode, tau_fn, impact_loss)``, every
     quantity evaluated again at each sample in the sample's mode (the summary on first
     access)."""
-    model, dyn, cfg = sim.model, sim.dyn, sim.settings
+    dyn = sim.dyn
     t = np.concatenate([b[0] for b in blocks])
     N = len(t)
-    ns, na, nc, nl, nx, ny = dyn.ns, dyn.na, dyn.nc, dyn.nl, dyn.nx, dyn.ny
+    na, nc, nl, ny = dyn.na, dyn.nc, dyn.nl, dyn.ny
     Y = np.concatenate([b[1] for b in blocks])
     impact = np.repeat([b[4] for b in blocks], [len(b[0]) for b in blocks])
     # per sample, as the compiled samples lay it out: ydot (n_y), lam, A V (n_c), gap, s, sr,
