@@ -60,11 +60,15 @@ def run(args) -> int:
     tau = parse_vector("--tau", args.tau) if args.tau else None
     from ._common import general_scene_from_args
 
-    general = general_scene_from_args(args)
-    if general is not None:  # a general scene (snakecg.scenes)
+    scene = general_scene_from_args(args)
+    if scene is not None:  # a general scene (snakecg.scenes): its vectors checked first
+        from ._scene import _vectors
 
-        return _plot_general(args, general, q, tau, out, fmt, SCHEMA)
-    scene = scene_from_args(args)
+        _vectors(args, scene)
+        about = {"scene": str(args.scene)}
+    else:
+        scene = scene_from_args(args)
+        about = {"scenario": scene.scenario}
     from matplotlib.figure import Figure
 
     from .. import load
@@ -78,7 +82,7 @@ def run(args) -> int:
         from ._common import print_json
 
         print_json({"schema": SCHEMA, "file": str(out), "format": fmt, "joints":
-                    scene.robot.joints, "scenario": scene.scenario, "q": q, "tau": tau,
+                    scene.robot.joints, **about, "q": q, "tau": tau,
                     "title": ax.get_title()})
         return 0
     print(f"wrote {out}")
@@ -96,25 +100,3 @@ def save_figure(fig, out: Path, fmt: str, dpi: int) -> None:
     except BaseException:
         Path(tmp).unlink(missing_ok=True)
         raise
-
-
-def _plot_general(args, scene, q, tau, out: Path, fmt: str, schema: str) -> int:
-    from matplotlib.figure import Figure
-
-    from .. import load
-    from ..scenes.drawing import plot_scene
-    from ._common import print_json, progress_reporter
-    from ._scene import _vectors
-
-    _vectors(args, scene)
-    model = load(scene, progress=progress_reporter())
-    fig = Figure(figsize=(6.4, 5.2), constrained_layout=True)
-    ax = plot_scene(model, q, tau, ax=fig.add_subplot())
-    save_figure(fig, out, fmt, args.dpi)
-    if args.json:
-        print_json({"schema": schema, "file": str(out), "format": fmt, "joints":
-                    scene.robot.joints, "scene": str(args.scene), "q": q, "tau": tau,
-                    "title": ax.get_title()})
-        return 0
-    print(f"wrote {out}")
-    return 0
