@@ -8,7 +8,7 @@ import math
 import sys
 
 from ..errors import InputError
-from ._common import add_robot_args, print_json, real, scene_from_args
+from ._common import add_robot_args, print_json, real, scene_from_args, text, vector
 from ._names import limits_line
 
 #: Version of the JSON printed by ``snakecg sweep --json`` (docs/how-to/sweep.md).
@@ -19,6 +19,7 @@ examples:
   snakecg sweep --joints 3 --scenario wheels --range 135 --step 10 --out wheels3.zarr
   snakecg sweep --joints 4 --scenario frictionless --samples 100000 --seed 1 --out s4.zarr --workers 2
   snakecg sweep --joints 3 --range=-90:90,-45:45,0:90 --step 5,5,10 --out part.zarr --scheduler tcp://scheduler-host:8786
+  snakecg sweep --joints 3 --range 60 --step 20 --simulate 0.5 --tau 0.035,0,-0.014 --out push3.zarr
   snakecg sweep --summary wheels3.zarr --json
   snakecg sweep --summary wheels3.zarr --feasible-only
   snakecg sweep --figure wheels3.zarr --every-shape
@@ -70,6 +71,14 @@ def register(sub) -> None:
                    help="with --feasible-only when sweeping: least distance between "
                    "non-adjacent links of a feasible shape, in metres (default 0.01, as "
                    "snakecg reproduce --feasible-only)")
+    s = p.add_argument_group("a simulated push from every configuration (optional)")
+    s.add_argument("--simulate", type=real(0, 60, lo_open=True, unit="s", name="duration"),
+                   metavar="SECONDS",
+                   help="also simulate a push of this many seconds from rest from every "
+                        "configuration, with the constant torques --tau, and store how it "
+                        "ended, the object's and the COM's displacements and the mean sr")
+    s.add_argument("--tau", metavar="TAU", type=text("numbers tau1..tau_n"),
+                   help="the constant joint torques tau1..tau_n (N m) of --simulate")
     r = p.add_argument_group("where and how")
     r.add_argument("--out", metavar="STORE",
                    help="Zarr store to write (a folder, e.g. sweep.zarr); resumed if it exists; "
@@ -168,6 +177,15 @@ def run(args) -> int:
                          "kept")
     scene = scene_from_args(args)
     joints = scene.robot.joints
+    simulate = None
+    if (args.simulate is None) != (args.tau is None):
+        raise InputError("--simulate SECONDS and --tau TAU go together (a push of that "
+                         "duration with those constant joint torques from every "
+                         "configuration)")
+    if args.simulate is not None:
+        simulate = {"duration": args.simulate,
+                    "tau": vector("--tau", args.tau, joints,
+                                  what=f" (one torque per joint, n_a = {joints})")}
     ranges = _ranges(args.range, joints, scene.robot)
     for lo, hi in ranges:
         if not (math.isfinite(lo) and math.isfinite(hi)):
@@ -205,7 +223,7 @@ def run(args) -> int:
     res = sweep(scene, store=args.out, chunk=args.chunk, scheduler=args.scheduler,
                 workers=args.workers, limit=None if args.force else args.limit,
                 feasible=args.feasible_only, clearance=args.clearance,
-                shared_store=True if args.shared_store else None, **kw)
+                shared_store=True if args.shared_store else None, simulate=simulate, **kw)
     if args.json:
         out = {"schema": SCHEMA, **res.to_dict(), "joints": joints,
                "scenario": scene.scenario, "kappa": scene.kappa, "mu": scene.mu}
@@ -238,6 +256,7 @@ def _reduce(args) -> int:
     from ..sweeps.reduce import figure, summary, summary_text
 
     for flag in ("range", "step", "samples", "seed", "scheduler", "workers", "chunk",
+                 "simulate", "tau",
                  "joints", "robot", "scenario", "kappa", "mu", "contact_link", "side"):
         if getattr(args, flag) is not None:
             raise InputError(f"--{flag.replace('_', '-')} describes a sweep to run; "

@@ -106,7 +106,8 @@ def _nice_below(x: float) -> int:
     return 3 * 2 ** (k - 1) if k >= 1 and 3 * 2 ** (k - 1) <= x else 2 ** k
 
 
-def default_chunk(scenario: str, n_joints: int, configurations: int | None = None) -> int:
+def default_chunk(scenario: str, n_joints: int, configurations: int | None = None,
+                  extra_seconds: float = 0.0) -> int:
     """The default chunk size (configurations) of a sweep of ``scenario`` with ``n_joints``
     joints: :data:`CHUNK_SECONDS` of single-core work at the cost of
     :func:`configuration_seconds`, rounded to the nearest 2^k or 3 * 2^k, and at most
@@ -117,8 +118,11 @@ def default_chunk(scenario: str, n_joints: int, configurations: int | None = Non
     to 7 joints), 8,192 for 10. With
     ``configurations`` (the sweep's size), raised to ``ceil(configurations / MAX_CHUNKS)`` if
     that is larger (at most :data:`MAX_CHUNKS` chunks). Not capped at the sweep's size (a
-    sweep smaller than a chunk is one chunk)."""
-    chunk = _nice(CHUNK_SECONDS / configuration_seconds(scenario, n_joints))
+    sweep smaller than a chunk is one chunk). ``extra_seconds``: single-core seconds each
+    configuration costs besides the extremes (a simulated push,
+    :func:`.simulation.seconds_per_run`)."""
+    chunk = max(1, _nice(CHUNK_SECONDS / (configuration_seconds(scenario, n_joints)
+                                          + extra_seconds)))
     cap = MAX_CHUNK_BYTES / result_bytes(n_joints)
     if chunk > cap:
         chunk = _nice_below(cap)

@@ -121,6 +121,8 @@ def summary(store, *, feasible=None) -> dict:
     names = ["q", "com_radius", "com_angle"] + [f"{p}{m}" for m in METRICS
                                                   for p in ("max_", "tau_max_")]
     names += ["feasible"] if has else []
+    sim = _SimulationTally(meta.get("simulation"))
+    names += list(sim.names)
     best: dict = {m: None for m in METRICS}
     worst: dict = {m: None for m in METRICS}
     chunks = _recorded(reader)
@@ -141,8 +143,9 @@ def summary(store, *, feasible=None) -> dict:
                 best[m] = _entry(data, hi, m, start)
             if worst[m] is None or v[lo] < worst[m]["value"]:
                 worst[m] = _entry(data, lo, m, start)
+        sim.add(data, keep if only else np.ones(stop - start, dtype=bool), start)
     scene = dict(meta["scene"])
-    return {
+    out = {
         "schema": SUMMARY_SCHEMA,
         "store": str(store),
         "joints": meta["robot"]["joints"],
@@ -156,6 +159,50 @@ def summary(store, *, feasible=None) -> dict:
         "complete": len(chunks) == plan.n_chunks,
         "metrics": {m: {"worst": worst[m], "best": best[m]} for m in METRICS},
     }
+    if sim.spec:
+        out["simulation"] = sim.result()
+    return out
+
+
+class _SimulationTally:
+    """The summary of a store's simulated pushes (:mod:`.simulation`), chunk by chunk: how
+    the runs ended, and the completed run that moved the object farthest."""
+
+    def __init__(self, spec):
+        from .simulation import SIM_ARRAYS, STATUS_CODES
+
+        self.spec = spec
+        self.names = SIM_ARRAYS if spec else ()
+        self.codes = {v: k for k, v in STATUS_CODES.items()}
+        self.counts = {k: 0 for k in STATUS_CODES}
+        self.farthest = None
+
+    def add(self, data, keep, start):
+        if not self.spec:
+            return
+        status = data["sim_status"]
+        for code, name in self.codes.items():
+            self.counts[name] += int(np.count_nonzero(keep & (status == code)))
+        dist = np.hypot(data["sim_object_dx"], data["sim_object_dy"])
+        dist = np.where(keep & (status == 0) & np.isfinite(dist), dist, -np.inf)
+        if dist.size and np.isfinite(dist.max()):
+            j = int(np.argmax(dist))
+            if self.farthest is None or dist[j] > self.farthest["distance"]:
+                self.farthest = {
+                    "distance": float(dist[j]), "index": start + j,
+                    "q_deg": [float(x) for x in data["q_deg"][j]],
+                    "object_displacement": [float(data[f"sim_object_{k}"][j])
+                                            for k in ("dx", "dy", "dpsi")],
+                    "com_displacement": [float(data[f"sim_com_{k}"][j]) for k in ("dx", "dy")],
+                    "sr_mean": _finite_or_none(data["sim_sr_mean"][j])}
+
+    def result(self) -> dict:
+        return {"duration": self.spec["duration"], "tau": self.spec["tau"],
+                "status_counts": self.counts, "farthest_push": self.farthest}
+
+
+def _finite_or_none(x):
+    return float(x) if np.isfinite(x) else None
 
 
 def summary_text(s: dict) -> str:
@@ -192,6 +239,16 @@ def summary_text(s: dict) -> str:
         from ..geometry import infeasible_footnote
 
         lines.append(f"{infeasible_footnote(s['clearance'])}; --feasible-only leaves them out")
+    sim = s.get("simulation")
+    if sim:
+        ended = ", ".join(f"{n} {k}" for k, n in sim["status_counts"].items() if n)
+        lines.append(f"pushes of {sim['duration']:g} s with tau = "
+                     f"({', '.join(f'{t:g}' for t in sim['tau'])}) N m: {ended or 'none yet'}")
+        f = sim["farthest_push"]
+        if f is not None:
+            sr = "-" if f["sr_mean"] is None else f"{f['sr_mean']:.4g}"
+            lines.append(f"  farthest completed push: {f['distance']:.6g} m at q (deg) "
+                         f"{','.join(f'{x:g}' for x in f['q_deg'])} (mean sr {sr})")
     return "\n".join(lines)
 
 

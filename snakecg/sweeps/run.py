@@ -31,6 +31,7 @@ from .cluster import (
 from .lock import store_lock
 from .plan import (Plan, default_bounds, default_chunk, default_grid, grid_plan, samples_plan,
                    spread_chunk)
+from .simulation import check_simulation, seconds_per_run
 from .work import evaluate_and_write, evaluate_chunk
 
 __all__ = ["sweep", "SweepResult", "LIMIT"]
@@ -73,7 +74,7 @@ class SweepResult:
 
 
 def _meta(scene: Scene, plan: Plan, feasible: bool, clearance: float,
-          fmt: str = _store.FORMAT) -> dict:
+          fmt: str = _store.FORMAT, simulation: dict | None = None) -> dict:
     from .._version import __version__
 
     robot = dataclasses.asdict(scene.robot)
@@ -94,6 +95,10 @@ def _meta(scene: Scene, plan: Plan, feasible: bool, clearance: float,
                         "penetration_tolerance": PENETRATION_TOLERANCE},
         "feasible_only": feasible,
     }
+    if simulation:
+        meta["simulation"] = {**simulation, "per_configuration": (
+            "snakecg.simulate.simulate(model, q, tau, duration) with its defaults, from rest")}
+    meta["arrays"] = list(_store.array_names(meta))
     return _store._normalise(meta)
 
 
@@ -144,7 +149,8 @@ def _finite(x) -> bool:
 
 def sweep(scene, *, grid=None, samples=None, seed=None, store, client=None, chunk=None,
           progress=None, bounds=None, scheduler=None, workers=None, limit=LIMIT,
-          verify=True, feasible=False, clearance=None, shared_store=None) -> SweepResult:
+          verify=True, feasible=False, clearance=None, shared_store=None,
+          simulate=None) -> SweepResult:
     """Evaluate :meth:`~snakecg.SceneModel.extremes` and the COM's polar coordinates for
     every configuration of a grid or of seeded samples, in chunks on Dask, into a Zarr store.
 
@@ -194,6 +200,11 @@ def sweep(scene, *, grid=None, samples=None, seed=None, store, client=None, chun
       its absolute path, e.g. on a shared file system; each checks it is the same store).
       False: this process. Either way only this process records the chunks' digests and
       the store's attributes.
+    * ``simulate``: None, or ``{"duration": seconds, "tau": joint torques}``: every
+      configuration is also the start of a push with these constant torques, simulated by
+      :func:`snakecg.simulate.simulate` (its defaults, from rest), and the store holds what
+      each run did (:data:`snakecg.sweeps.simulation.SIM_ARRAYS`: how it ended, the object's
+      and the COM's displacements, the mean sr), recorded in its attributes.
 
     Returns a :class:`SweepResult`. Inputs are checked before any work; a bad one raises
     :class:`~snakecg.InputError` and writes nothing.
@@ -203,6 +214,7 @@ def sweep(scene, *, grid=None, samples=None, seed=None, store, client=None, chun
         raise InputError(f"scene must be a snakecg.Scene, got {type(scene).__name__}")
     plan = make_plan(scene, grid=grid, samples=samples, seed=seed, bounds=bounds, chunk=chunk)
     clearance = check_feasible(feasible, clearance)
+    simulation = check_simulation(simulate, scene.robot.joints)
     if limit is not None:
         if isinstance(limit, bool) or not isinstance(limit, int) or limit < 1:
             raise InputError(f"limit must be an integer >= 1 or None, got {limit!r}")
@@ -229,19 +241,20 @@ def sweep(scene, *, grid=None, samples=None, seed=None, store, client=None, chun
     _store.check_target(path)
     with store_lock(path, quiet=mode == "off"):
         res = _run(scene, plan, path, chunk, client, scheduler, workers, mode, verify,
-                   feasible, clearance, shared_store, t0)
+                   feasible, clearance, shared_store, t0, simulation)
     res.limits = _limits(scene, plan, grid is not None or bounds is not None)
     return res
 
 
 def _run(scene, plan, path, chunk, client, scheduler, workers, mode, verify, feasible,
-         clearance, shared_store, t0) -> SweepResult:
+         clearance, shared_store, t0, simulation=None) -> SweepResult:
     state = _store.check_target(path)  # again: another sweep may have made it meanwhile
     root, done = None, np.zeros(plan.n_chunks, dtype=bool)
     if state == "existing":
         # resume with the store's own format, and chunk size unless one is given
         plan, fmt = _stored(path, plan, keep_chunk=chunk is None)
-        root = _store.open_existing(path, _meta(scene, plan, feasible, clearance, fmt))
+        root = _store.open_existing(path, _meta(scene, plan, feasible, clearance, fmt,
+                                                simulation))
         done = _store.completed(root, plan, verify=verify, path=path)
     todo = [int(i) for i in np.flatnonzero(~done)]
     reused = plan.n_chunks - len(todo)
@@ -256,17 +269,19 @@ def _run(scene, plan, path, chunk, client, scheduler, workers, mode, verify, fea
             sys.stderr.write(f"snakecg sweep: Dask dashboard at {dashboard}\n")
         if root is None:
             if chunk is None:  # the default, spread over the workers there are
+                extra = seconds_per_run(simulation) if simulation else 0.0
                 plan = dataclasses.replace(plan, chunk=spread_chunk(
-                    default_chunk(scene.scenario, plan.joints, plan.size), plan.size,
+                    default_chunk(scene.scenario, plan.joints, plan.size, extra), plan.size,
                     concurrency(c)))
                 todo = list(range(plan.n_chunks))
-            root = _store.create(path, _meta(scene, plan, feasible, clearance), plan.size,
-                                 plan.chunk, plan.joints)
+            root = _store.create(path, _meta(scene, plan, feasible, clearance,
+                                             simulation=simulation),
+                                 plan.size, plan.chunk, plan.joints)
         if shared_store is None:
             shared_store = ((client is None and scheduler is None) or is_local(c)) \
                 and fills_machine(c)
         target = (str(path.resolve()), _store.store_id(root)) if shared_store else None
-        _compute(c, scene, plan, root, todo, reused, mode, clearance, target)
+        _compute(c, scene, plan, root, todo, reused, mode, clearance, target, simulation)
     finally:
         close()
     return SweepResult(str(path), plan.size, plan.n_chunks, plan.chunk, len(todo), reused,
@@ -304,7 +319,8 @@ def _mark(root, completed: int, total: int) -> None:
     root.attrs.update({"completed_chunks": int(completed), "complete": completed == total})
 
 
-def _compute(client, scene, plan, root, todo, reused, mode, clearance, target) -> None:
+def _compute(client, scene, plan, root, todo, reused, mode, clearance, target,
+             simulation=None) -> None:
     """Submit the chunks ``todo`` and record each as it completes. ``target``: ``(absolute
     path, store id)`` when the workers write the data (they return the digest only), None
     when this process writes it (they return the arrays)."""
@@ -313,11 +329,11 @@ def _compute(client, scene, plan, root, todo, reused, mode, clearance, target) -
 
     tag = uuid.uuid4().hex[:8]
     if target is None:
-        futures = [client.submit(evaluate_chunk, scene, plan, i, clearance,
+        futures = [client.submit(evaluate_chunk, scene, plan, i, clearance, simulation,
                                  key=f"snakecg-sweep-{tag}-{i}", pure=False) for i in todo]
     else:
         futures = [client.submit(evaluate_and_write, scene, plan, i, clearance, *target,
-                                 key=f"snakecg-sweep-{tag}-{i}", pure=False) for i in todo]
+                                 simulation, key=f"snakecg-sweep-{tag}-{i}", pure=False) for i in todo]
     index = {f.key: i for f, i in zip(futures, todo)}
     lines = ProgressLines(plan.n_chunks, reused, plan.size) if mode == "lines" else None
     bar = start_bar(client, futures) if mode == "bar" else None

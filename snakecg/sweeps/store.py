@@ -55,8 +55,9 @@ import numpy as np
 from ..analysis import METRICS
 from ..errors import InputError
 from . import chunks as _chunks
+from .simulation import SIM_ARRAYS, SIM_LONG, SIM_UNITS, STATUS_CODES
 
-__all__ = ["array_names", "configuration_bytes", "create", "open_existing", "check_target",
+__all__ = ["array_names", "names_of", "configuration_bytes", "create", "open_existing", "check_target",
            "digest", "handles", "write_data", "record", "completed", "store_id", "format_of",
            "Reader", "FORMAT", "DIGESTS", "UNITS"]
 
@@ -84,12 +85,22 @@ _LONG = {"q": "joint angles", "com_radius": "distance of the snake's COM from th
          "feasible": "the shape is physically possible"}
 
 
-def array_names() -> tuple[str, ...]:
-    """Names of the per-configuration arrays, in the order the digest reads them."""
+def array_names(meta: dict | None = None) -> tuple[str, ...]:
+    """Names of the per-configuration arrays, in the order the digest reads them; a store
+    whose attributes ``meta`` record a simulation (``meta["simulation"]``) has the arrays of
+    :data:`.simulation.SIM_ARRAYS` after them."""
     names = ["q", "com_radius", "com_angle"]
     for m in METRICS:
         names += [f"max_{m}", f"tau_max_{m}", f"min_kept_{m}", f"tau_min_kept_{m}"]
-    return tuple(names + ["feasible"])
+    names.append("feasible")
+    if meta and meta.get("simulation"):
+        names += SIM_ARRAYS
+    return tuple(names)
+
+
+def names_of(root) -> tuple[str, ...]:
+    """The per-configuration arrays of an open store (by its attributes)."""
+    return array_names(dict(root.attrs).get("snakecg_sweep"))
 
 
 def _per_configuration(name: str, joints: int) -> tuple[int, ...]:
@@ -106,6 +117,8 @@ def _long_name(name: str) -> str:
     """The ``long_name`` attribute of array ``name`` (what xarray shows as its title)."""
     if name in _LONG:
         return _LONG[name]
+    if name in SIM_LONG:
+        return SIM_LONG[name]
     torque = name.startswith("tau_")
     m = name[4:] if torque else name
     if m.startswith("max_"):
@@ -116,10 +129,12 @@ def _long_name(name: str) -> str:
     return f"torque attaining the {what}" if torque else what
 
 
-def configuration_bytes(joints: int) -> int:
-    """Bytes of one configuration in all the store's arrays (float64; ``feasible`` bool)."""
+def configuration_bytes(joints: int, simulation: bool = False) -> int:
+    """Bytes of one configuration in all the store's arrays (float64; ``feasible`` bool),
+    with the simulation's arrays when ``simulation``."""
+    names = array_names({"simulation": True} if simulation else None)
     return sum((1 if name == "feasible" else 8) * math.prod(_per_configuration(name, joints))
-               for name in array_names())
+               for name in names)
 
 
 def _zarr():
@@ -167,14 +182,17 @@ def create(path: Path, meta: dict, n_configurations: int, chunk: int, joints: in
     place) and open it."""
     zarr = _zarr()
     n_chunks = -(-n_configurations // chunk)
-    names = array_names()
+    names = array_names(meta)
     tmp = path.with_name(f".{path.name}.{uuid.uuid4().hex}.partial")
     try:
         root = zarr.open_group(str(tmp), mode="w-")
         for name in names:
             row = _per_configuration(name, joints)
             flag = name == "feasible"
-            attrs = {"units": UNITS[name], "long_name": _long_name(name)}
+            attrs = {"units": UNITS.get(name) or SIM_UNITS[name], "long_name": _long_name(name)}
+            if name == "sim_status":  # CF: what each code means
+                attrs["flag_values"] = list(STATUS_CODES.values())
+                attrs["flag_meanings"] = " ".join(STATUS_CODES)
             if name != "q":
                 attrs["coordinates"] = "q"  # xarray: q is every variable's coordinate
             root.create_array(name, shape=(n_configurations, *row), chunks=(chunk, *row),
@@ -266,9 +284,11 @@ def handles(root, *, digests: bool = True) -> dict:
     """The store's arrays opened once (opening one reads its metadata from the store) and
     their :class:`~.chunks.ChunkSpec` (key ``"specs"``); ``digests=False`` leaves out
     ``chunk_digest`` (a worker writing data only)."""
-    names = (*array_names(), "chunk_digest") if digests else array_names()
+    data = names_of(root)
+    names = (*data, "chunk_digest") if digests else data
     opened = {name: root[name] for name in names}
-    opened["specs"] = {name: _chunks.spec_of(opened[name], name) for name in array_names()}
+    opened["specs"] = {name: _chunks.spec_of(opened[name], name) for name in data}
+    opened["names"] = data
     return opened
 
 
@@ -319,19 +339,20 @@ def write_data(opened: dict, start: int, stop: int, arrays: dict[str, np.ndarray
     specs = opened["specs"]
     values = stored_values(arrays, fmt)
     index = start // specs["q"].rows
-    files = {name: _chunks.encode(values[name], specs[name]) for name in array_names()}
+    names = opened["names"]
+    files = {name: _chunks.encode(values[name], specs[name]) for name in names}
 
     async def _all():
         await asyncio.gather(*(
             (opened[name].store_path / _chunks.chunk_key(index, opened[name].ndim)).set(
                 buffer.from_array_like(np.frombuffer(files[name], dtype=np.uint8)))
-            for name in array_names()))
+            for name in names))
 
     sync(_all())
     _chunks.leave_page_cache(_chunk_files(opened, index))
     if _per_file(fmt):
-        return tuple(_chunks.file_digest(files[name]) for name in array_names())
-    return digest(values, fmt)
+        return tuple(_chunks.file_digest(files[name]) for name in names)
+    return digest(values, fmt, names)
 
 
 def _chunk_files(opened: dict, index: int) -> list[str]:
@@ -340,7 +361,7 @@ def _chunk_files(opened: dict, index: int) -> list[str]:
     from zarr.storage import LocalStore
 
     out = []
-    for name in array_names():
+    for name in opened["names"]:
         array = opened[name]
         store = array.store_path.store
         if not isinstance(store, LocalStore):
@@ -376,7 +397,7 @@ class Reader:
         self.name = str(path)
         joints = plan.joints
         names = meta.get("arrays")
-        every = list(array_names())
+        every = list(array_names(meta))
         # stores of format 1 made before the feasible flag have every array but it
         early = [n for n in every if n != "feasible"] if fmt == "snakecg.sweep/1" else None
         if names != every and names != early:
@@ -413,7 +434,7 @@ class Reader:
                                  f"{'raw' if not per_file else 'raw or Blosc'} "
                                  f"{want[0]}); the store is damaged or was edited")
         d = self.specs["chunk_digest"]
-        row = (len(array_names()),) if per_file else ()
+        row = (len(self.names),) if per_file else ()
         if d.dtype != np.dtype("<u8") or d.blosc is not None or d.row != row:
             raise InputError(f"{self.name!r}: array chunk_digest is not a digest table of "
                              f"format {self.fmt}; the store is damaged or was edited")

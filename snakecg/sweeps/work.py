@@ -17,6 +17,7 @@ from ..analysis import METRICS
 from ..errors import SnakecgError
 from ..geometry import SELF_CLEARANCE, feasibility
 from . import store as _store
+from .simulation import evaluate_simulation
 
 __all__ = ["evaluate_chunk", "evaluate", "evaluate_and_write", "BLOCK"]
 
@@ -44,16 +45,19 @@ def _model(scene):
 BLOCK = 4096
 
 
-def evaluate(model, q: np.ndarray, clearance: float = SELF_CLEARANCE) -> dict[str, np.ndarray]:
+def evaluate(model, q: np.ndarray, clearance: float = SELF_CLEARANCE,
+             simulation: dict | None = None) -> dict[str, np.ndarray]:
     """Per-configuration arrays of the store for configurations ``q`` ``(n, n_a + 3)``:
     :meth:`~snakecg.SceneModel.extremes`, :meth:`~snakecg.SceneModel.com_polar` and
     :func:`~snakecg.geometry.feasibility` at ``clearance`` (m), in blocks of
-    :data:`BLOCK` configurations."""
+    :data:`BLOCK` configurations; with ``simulation`` (:func:`.simulation.
+    check_simulation`), the push simulated from each (:func:`.simulation.
+    evaluate_simulation`)."""
     if len(q) <= BLOCK:
-        return _evaluate_block(model, q, clearance)
+        return _evaluate_block(model, q, clearance, simulation)
     out = None
     for start in range(0, len(q), BLOCK):
-        part = _evaluate_block(model, q[start:start + BLOCK], clearance)
+        part = _evaluate_block(model, q[start:start + BLOCK], clearance, simulation)
         if out is None:
             out = {k: np.empty((len(q), *v.shape[1:]), dtype=v.dtype) for k, v in part.items()}
         for k, v in part.items():
@@ -61,7 +65,8 @@ def evaluate(model, q: np.ndarray, clearance: float = SELF_CLEARANCE) -> dict[st
     return out
 
 
-def _evaluate_block(model, q: np.ndarray, clearance: float) -> dict[str, np.ndarray]:
+def _evaluate_block(model, q: np.ndarray, clearance: float, simulation=None
+                    ) -> dict[str, np.ndarray]:
     ex = model.extremes(q)
     radius, angle = model.com_polar(q)
     out = {"q": q[:, 3:], "com_radius": radius, "com_angle": angle}
@@ -73,13 +78,15 @@ def _evaluate_block(model, q: np.ndarray, clearance: float) -> dict[str, np.ndar
     out = {k: np.ascontiguousarray(v, dtype=np.float64) for k, v in out.items()}
     out["feasible"] = np.ascontiguousarray(feasibility(model, q, clearance=clearance).feasible,
                                            dtype=bool)
+    if simulation:
+        out.update(evaluate_simulation(model, q, simulation))
     return out
 
 
-def evaluate_chunk(scene, plan, index: int, clearance: float = SELF_CLEARANCE
-                   ) -> dict[str, np.ndarray]:
+def evaluate_chunk(scene, plan, index: int, clearance: float = SELF_CLEARANCE,
+                   simulation: dict | None = None) -> dict[str, np.ndarray]:
     """The store's arrays for chunk ``index`` of ``plan`` (runs on a worker)."""
-    return evaluate(_model(scene), plan.configurations(index), clearance)
+    return evaluate(_model(scene), plan.configurations(index), clearance, simulation)
 
 
 def _opened(path: str, sid: str) -> tuple[dict, str]:
@@ -110,13 +117,13 @@ def _opened(path: str, sid: str) -> tuple[dict, str]:
         return opened
 
 
-def evaluate_and_write(scene, plan, index: int, clearance: float, path: str, sid: str
-                       ) -> tuple[int, int]:
+def evaluate_and_write(scene, plan, index: int, clearance: float, path: str, sid: str,
+                       simulation: dict | None = None) -> tuple[int, int]:
     """Evaluate chunk ``index`` of ``plan`` and write its data into the store at ``path``
     (absolute; ``sid`` its ``store_id``); return ``(digest, configurations)``. The digest is
     recorded by the process that runs the sweep, after this returns: a chunk whose data is
     written but whose digest is not counts as missing and is computed again."""
-    arrays = evaluate_chunk(scene, plan, index, clearance)
+    arrays = evaluate_chunk(scene, plan, index, clearance, simulation)
     start, stop = plan.chunk_range(index)
     opened, fmt = _opened(path, sid)
     return _store.write_data(opened, start, stop, arrays, fmt), stop - start
