@@ -1,10 +1,10 @@
 """The forward analysis of a scene (eqs. 12-30): accelerations, constraint forces, active set,
 norms and the slippage ratio, for one sample or a batch.
 
-Every sample is solved by the compiled runtime core (:mod:`snakecg.engine`): one C call for the
-whole batch. The rare samples it marks (dependent or weakly independent held rows, no
-convergence, an ill-conditioned mass matrix, an impossible result), and every sample on the
-CasADi backend, take the reference path: the vectorized active-set iteration of
+Every sample is solved by the compiled engine (:mod:`snakecg.engine`): one C call for the
+whole batch, the rare samples (dependent or weakly independent held rows, no convergence, an
+ill-conditioned mass matrix, an impossible result) included (``rows.c``). On the CasADi
+backend every sample takes the pure-Python engine: the vectorized active-set iteration of
 :mod:`snakecg.solver` on the generated ``constrained_dynamics``, completed by
 :mod:`snakecg.rows` (rows factored directly, conditioning, physical checks).
 
@@ -19,7 +19,7 @@ import numpy as np
 
 from . import kernels
 from ._inputs import CHUNK_ROWS, as_batch, broadcast_batches, check_batch_memory
-from .engine import STATUS_EXACT, Data
+from .engine import Data
 from .engine.binding import address, empty_pointers, int64s
 from .errors import InputError
 from .rows import finish as finish_rows
@@ -194,8 +194,8 @@ class ForwardResult:
 def forward(model, q, tau, *, v=None, v_obj=None, f_obj=None, q_obj=None, rho=None,
             max_iter=None, data: Data | None = None, out: ForwardResult | None = None):
     """:meth:`SceneModel.forward` (see there) on its general path: every input validated and
-    converted, one C call for the batch (split over threads when large), the marked samples
-    and every sample of the CasADi backend on the reference path. (``data`` serves the
+    converted, one C call for the batch (split over threads when large); every sample of the
+    CasADi backend on the pure-Python engine. (``data`` serves the
     one-sample path only: a batch needs no workspace.)"""
     extras = {"v": v, "v_obj": v_obj, "f_obj": f_obj, "q_obj": q_obj, "rho": rho}
     core = model.core
@@ -219,9 +219,6 @@ def forward(model, q, tau, *, v=None, v_obj=None, f_obj=None, q_obj=None, rho=No
         _validate(model, q, tau, extras, max_iter)  # raises, naming the input
         raise InputError(f"forward: an input of sample {-2 - status} is not finite or beyond "
                          f"the force limit")
-    redo = np.flatnonzero(raw2[:, cols.status] != STATUS_EXACT)
-    for lo in range(0, redo.size, CHUNK_ROWS):
-        _reference_into(model, raw2, redo[lo:lo + CHUNK_ROWS], parts, max_iter)
     return ForwardResult(raw, cols)
 
 
@@ -249,12 +246,7 @@ def forward_one(model, core, q, tau, data):
     finally:
         if own:
             d.lock.release()
-    cols = model.columns
-    if raw[cols.status] != STATUS_EXACT:  # the rare sample for the reference path
-        parts = {"q": np.asarray(q, dtype=float).reshape(1, -1),
-                 "tau": np.asarray(tau, dtype=float).reshape(1, -1)}
-        _reference_into(model, raw[None, :], np.zeros(1, dtype=np.intp), parts, None)
-    return ForwardResult(raw, cols)
+    return ForwardResult(raw, model.columns)
 
 
 def _validate(model, q, tau, extras: dict, max_iter, *, check_finite=True):

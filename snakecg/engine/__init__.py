@@ -15,8 +15,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..rows import WEAK
-from ..solver import FORCE_LIMIT, PIVOT_TOL, REL_TOL
+from ..rows import ROW_TOL, WEAK
+from ..solver import FORCE_LIMIT, PIVOT_TOL, REGULARIZATION, REL_TOL
 from .binding import Library
 from .data import Data
 from .layout import Layout
@@ -30,7 +30,8 @@ MASS_TOL = 1e-13
 #: Rounding allowed in the physical checks (norms >= 0, 0 <= sr <= 1; snakecg.rows._sane).
 SANE_TOL = 1e-12
 #: The solver constants passed to the C, in the order of its ``sc_constants``.
-CONSTANTS = np.array([PIVOT_TOL, WEAK, REL_TOL, MASS_TOL, SANE_TOL, FORCE_LIMIT])
+CONSTANTS = np.array([PIVOT_TOL, WEAK, REL_TOL, MASS_TOL, SANE_TOL, FORCE_LIMIT, ROW_TOL,
+                      REGULARIZATION])
 STATUS_EXACT, STATUS_FALLBACK = 0, 1
 
 class Core:
