@@ -60,26 +60,11 @@ static int all_finite(const double *x, int n, double limit) {
  * scaled factor's squared pivots are the LDL^T pivots of M over its diagonal, d_j / M_jj
  * (scaling by a diagonal leaves L unit and scales d), so no square root is taken. */
 static double mass_pivot_ratio(const double *M, double *L) {
-  const int n = SNAKECG_NS;
-  double d[SNAKECG_NS], w[SNAKECG_NS], best = INFINITY, s, dinv;
-  int i, j, k;
-  SC_UNROLL
-  for (j = 0; j < n; ++j) { /* unit lower L, column by column, in place of M's lower half */
-    s = M[j + n * j];
-    for (k = 0; k < j; ++k) { /* w = row j of L D */
-      w[k] = L[j + n * k] * d[k];
-      s -= L[j + n * k] * w[k];
-    }
-    if (!(s > 0) || !(M[j + n * j] > 0)) return 0.0;
-    d[j] = s;
-    dinv = 1.0 / s;
-    if (s / M[j + n * j] < best) best = s / M[j + n * j];
-    for (i = j + 1; i < n; ++i) {
-      double t = M[i + n * j];
-      for (k = 0; k < j; ++k) t -= L[i + n * k] * w[k];
-      L[i + n * j] = t * dinv;
-    }
-  }
+  double d[SNAKECG_NS], dinv[SNAKECG_NS], best;
+  int j;
+  best = sc_ldl_factor(SNAKECG_NS, M, SNAKECG_NS, L, SNAKECG_NS, d, dinv, 0, 0.0);
+  for (j = 0; j < SNAKECG_NS; ++j)
+    if (!(d[j] > 0) || !(M[j + SNAKECG_NS * j] > 0)) return 0.0;
   return isfinite(best) ? best : 0.0;
 }
 

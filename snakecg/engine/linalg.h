@@ -9,6 +9,7 @@
  *
  *   sc_lu_factor / sc_lu_solve          Gaussian elimination with partial pivoting (alg. 3.4.1)
  *   sc_cholesky / sc_cholesky_solve     A = L L^T, with a relative pivot threshold (alg. 4.2.2)
+ *   sc_ldl_factor / sc_ldl_solve        A = L D L^T without pivoting, rows that may drop out
  *   sc_eigen_symmetric                  cyclic Jacobi rotations, eigenvectors optional (8.5.3)
  *   sc_qr_least_squares                 Householder QR with column pivoting (alg. 5.4.1), the
  *                                       basic solution of a least-squares problem of any rank
@@ -154,6 +155,54 @@ static inline void sc_cholesky_solve(sc_int n, const double *L, sc_int ld, doubl
     double s = b[i];
     for (k = i + 1; k < n; ++k) s -= L[k * ld + i] * b[k];
     b[i] = s / L[i * ld + i];
+  }
+}
+
+/* ---------------------------------------------------------------------------------------
+ * A = L D L^T of the symmetric n x n matrix A without pivoting (alg. 4.1.2; column-major:
+ * A_ij at A[i + j lda], its lower triangle read), unit lower L at L[i + j ldl] (strictly below
+ * the diagonal written), d and dinv = 1 / d. drop (may be null): on entry, drop[j] != 0 lets
+ * row j be dropped when its pivot ratio d_j / A_jj is at most drop_tol in magnitude (then
+ * d_j = dinv_j = 0 and column j of L is zero); on exit, whether it was. Returns the smallest
+ * pivot ratio d_j / A_jj of the rows kept, at most 1 (NaN propagates). */
+static inline double sc_ldl_factor(sc_int n, const double *A, sc_int lda, double *L, sc_int ldl,
+                                   double *d, double *dinv, int *drop, double drop_tol) {
+  double ratio = 1.0, ld[n > 0 ? n : 1]; /* row j of L D */
+  sc_int i, j, k;
+  for (j = 0; j < n; ++j) {
+    double s = A[j + lda * j], r;
+    for (k = 0; k < j; ++k) { /* ld = row j of L D */
+      ld[k] = L[j + ldl * k] * d[k];
+      s -= L[j + ldl * k] * ld[k];
+    }
+    r = s / A[j + lda * j];
+    if (drop) drop[j] = drop[j] && fabs(r) <= drop_tol;
+    if (drop && drop[j]) { /* dependent: out of the factorization */
+      d[j] = dinv[j] = 0.0;
+      for (i = j + 1; i < n; ++i) L[i + ldl * j] = 0.0;
+      continue;
+    }
+    d[j] = s;
+    dinv[j] = 1.0 / s; /* one division per pivot */
+    if (!(r >= ratio)) ratio = r;
+    for (i = j + 1; i < n; ++i) {
+      double t = A[i + lda * j];
+      for (k = 0; k < j; ++k) t -= L[i + ldl * k] * ld[k];
+      L[i + ldl * j] = t * dinv[j];
+    }
+  }
+  return ratio;
+}
+
+/* y := (L D L^T)^-1 y with sc_ldl_factor's factors (a dropped row: dinv 0, a zero column) */
+static inline void sc_ldl_solve(sc_int n, const double *L, sc_int ldl, const double *dinv,
+                                double *y) {
+  sc_int i, k;
+  for (i = 0; i < n; ++i) /* forward, diagonal and back substitution */
+    for (k = 0; k < i; ++k) y[i] -= L[i + ldl * k] * y[k];
+  for (i = n - 1; i >= 0; --i) {
+    y[i] *= dinv[i];
+    for (k = i + 1; k < n; ++k) y[i] -= L[k + ldl * i] * y[k];
   }
 }
 
