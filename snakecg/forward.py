@@ -27,7 +27,7 @@ from .rows import reason_of
 from .solver import (HELD, check_input_range, check_position_range, default_max_iter,
                      solve_active_set)
 
-__all__ = ["ForwardResult", "forward", "forward_one", "WHEEL_STATE_NAMES"]
+__all__ = ["ForwardResult", "forward", "forward_one", "model_forward", "WHEEL_STATE_NAMES"]
 
 _STATE_NAMES = np.array(["none", "stick", "lost", "slide+", "slide-"])
 #: Names of the wheel rows' states (a wheel row is never "lost"; read as "none").
@@ -191,6 +191,51 @@ class ForwardResult:
 
 
 # ------------------------------------------------------------------------------------------
+_F64 = np.dtype(np.float64)
+
+
+def _plain(x, size: int) -> bool:
+    """A list or tuple of ``size`` Python floats or ints (the one-sample fast path)."""
+    if len(x) != size:
+        return False
+    for e in x:
+        t = type(e)
+        if t is not float and t is not int:
+            return False
+    return True
+
+
+def model_forward(model, q, tau, *, v=None, v_obj=None, f_obj=None, q_obj=None, rho=None,
+                  max_iter: int | None = None, data: Data | None = None,
+                  out: ForwardResult | None = None) -> ForwardResult:
+    """Accelerations, constraint forces, active set and norms (eqs. 12-30).
+
+    ``q`` ``(n_s,)`` or ``(N, n_s)``; ``tau`` ``(n_a,)`` or ``(N, n_a)`` (one broadcasts
+    against the other). Optional: snake velocities ``v``, object twist ``v_obj``, external
+    wrench on the object ``f_obj`` (F_x, F_y, torque). The object's pose ``q_obj`` and the
+    contact point in its frame ``rho`` default to the scene's placement (the object
+    touching the contact link at ``contact_offset``). ``data``: a workspace from
+    :meth:`~snakecg.SceneModel.create_data` (one per thread); ``out``: an earlier result of
+    the same shape whose array is overwritten (no allocation). Solved in compiled code per
+    sample (:mod:`snakecg.engine`). (:meth:`SceneModel.forward` is this function.)
+    """
+    core = model.core
+    if (core is not None and v is None and v_obj is None and f_obj is None and q_obj is None
+            and rho is None and max_iter is None and out is None):
+        # one sample of float64 arrays or plain lists: straight into a workspace's buffers,
+        # one C call, one copy of the result row (the C checks finiteness and range)
+        tq, tt = type(q), type(tau)
+        if ((tq is np.ndarray and q.dtype is _F64 and q.shape == model._shape_q
+             or (tq is list or tq is tuple) and _plain(q, model.n_coordinates))
+                and (tt is np.ndarray and tau.dtype is _F64 and tau.shape == model._shape_tau
+                     or (tt is list or tt is tuple) and _plain(tau, model.n_joints))):
+            res = forward_one(model, core, q, tau, data)
+            if res is not None:
+                return res
+    return forward(model, q, tau, v=v, v_obj=v_obj, f_obj=f_obj, q_obj=q_obj, rho=rho,
+                   max_iter=max_iter, data=data, out=out)
+
+
 def forward(model, q, tau, *, v=None, v_obj=None, f_obj=None, q_obj=None, rho=None,
             max_iter=None, data: Data | None = None, out: ForwardResult | None = None):
     """:meth:`SceneModel.forward` (see there) on its general path: every input validated and

@@ -133,3 +133,15 @@ def _configurations(model, q):
             and q.flags.c_contiguous and math.isfinite(float(q.sum()))):
         return q[None, :], False
     return model.configurations(q)
+
+
+def optimize_model(model, q, objective, kwargs: dict) -> OptimizeResult:
+    """:meth:`SceneModel.optimize`: a batch's memory checked first, the keywords screened
+    (:func:`~snakecg.optimize.arguments.screen`), then :func:`optimize`."""
+    from .arguments import screen
+
+    if not (type(q) is np.ndarray and q.ndim == 1):  # a batch: its memory first
+        qa, _ = model._q(q)
+        model._check_memory("optimize", qa.shape[0], ["place_object", "interaction_maps"],
+                            extra=model.columns.width + 4 * model.n_joints)
+    return optimize(model, q, objective=objective, **screen(kwargs))
