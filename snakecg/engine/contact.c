@@ -162,8 +162,8 @@ double sc_held_forces(const signed char *state, const double *G, const double *b
                       const double *bounds, const double *extra, double *lam) {
   const int nc = SNAKECG_NC;
   int held[SNAKECG_NC], drop[SNAKECG_NC], m = 0, dropped = 0, i, j;
-  double L[SNAKECG_NC * SNAKECG_NC], GH[SNAKECG_NC * SNAKECG_NC], d[SNAKECG_NC], dinv[SNAKECG_NC],
-      y[SNAKECG_NC], ratio;
+  double L[SNAKECG_NC * SNAKECG_NC], d[SNAKECG_NC], dinv[SNAKECG_NC], y[SNAKECG_NC],
+      work[SNAKECG_NC], ratio;
   for (i = 0; i < nc; ++i) {
     lam[i] = state[i] == SLIDE_POS ? bounds[i] : state[i] == SLIDE_NEG ? -bounds[i] : 0.0;
     if (!isfinite(lam[i])) lam[i] = 0.0;
@@ -176,11 +176,8 @@ double sc_held_forces(const signed char *state, const double *G, const double *b
     y[i] = -t;
     if (extra) y[i] -= extra[held[i]];
   }
-  for (j = 0; j < m; ++j) { /* G_HH, the rows that may drop out (SUPPORT) */
-    for (i = 0; i < m; ++i) GH[i + nc * j] = G[held[i] + nc * held[j]];
-    drop[j] = state[held[j]] == SUPPORT;
-  }
-  ratio = sc_ldl_factor(m, GH, nc, L, nc, d, dinv, drop, SC_SUPPORT_TOL);
+  for (j = 0; j < m; ++j) drop[j] = state[held[j]] == SUPPORT; /* may drop out */
+  ratio = sc_ldl_factor(m, G, nc, held, L, nc, d, dinv, drop, SC_SUPPORT_TOL, work);
   for (j = 0; j < m; ++j) dropped |= drop[j];
   sc_ldl_solve(m, L, nc, dinv, y);
   if (dropped) sc_least_norm(m, held, drop, G, L, dinv, y);

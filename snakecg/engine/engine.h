@@ -47,14 +47,14 @@ typedef long long int sc_int;
 #define SC_INTERNAL
 #endif
 
-#include "linalg.h"
-
 /* Before a loop over one of the model's sizes (known when compiling): unroll it (GCC). */
 #if defined(__GNUC__) && !defined(__clang__)
 #define SC_UNROLL _Pragma("GCC unroll 16")
 #else
 #define SC_UNROLL
 #endif
+#include "linalg.h"
+
 
 /* sizes: coordinates n_s, constraint rows n_c, a body state (q, q_obj), the integrated state
  * (positions, velocities and three work integrals) */

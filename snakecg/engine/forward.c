@@ -60,9 +60,9 @@ static int all_finite(const double *x, int n, double limit) {
  * scaled factor's squared pivots are the LDL^T pivots of M over its diagonal, d_j / M_jj
  * (scaling by a diagonal leaves L unit and scales d), so no square root is taken. */
 static double mass_pivot_ratio(const double *M, double *L) {
-  double d[SNAKECG_NS], dinv[SNAKECG_NS], best;
+  double d[SNAKECG_NS], dinv[SNAKECG_NS], work[SNAKECG_NS], best;
   int j;
-  best = sc_ldl_factor(SNAKECG_NS, M, SNAKECG_NS, L, SNAKECG_NS, d, dinv, 0, 0.0);
+  best = sc_ldl_factor(SNAKECG_NS, M, SNAKECG_NS, 0, L, SNAKECG_NS, d, dinv, 0, 0.0, work);
   for (j = 0; j < SNAKECG_NS; ++j)
     if (!(d[j] > 0) || !(M[j + SNAKECG_NS * j] > 0)) return 0.0;
   return isfinite(best) ? best : 0.0;

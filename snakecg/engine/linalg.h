@@ -159,23 +159,27 @@ static inline void sc_cholesky_solve(sc_int n, const double *L, sc_int ld, doubl
 }
 
 /* ---------------------------------------------------------------------------------------
- * A = L D L^T of the symmetric n x n matrix A without pivoting (alg. 4.1.2; column-major:
- * A_ij at A[i + j lda], its lower triangle read), unit lower L at L[i + j ldl] (strictly below
- * the diagonal written), d and dinv = 1 / d. drop (may be null): on entry, drop[j] != 0 lets
+ * A = L D L^T of a symmetric n x n matrix without pivoting (alg. 4.1.2): the matrix is rows
+ * and columns idx[0..n) of A (column-major, A_ij at A[i + j lda], its lower triangle read;
+ * idx null: the first n), unit lower L at L[i + j ldl] (strictly below the diagonal written),
+ * d and dinv = 1 / d; work holds n doubles. drop (may be null): on entry, drop[j] != 0 lets
  * row j be dropped when its pivot ratio d_j / A_jj is at most drop_tol in magnitude (then
  * d_j = dinv_j = 0 and column j of L is zero); on exit, whether it was. Returns the smallest
  * pivot ratio d_j / A_jj of the rows kept, at most 1 (NaN propagates). */
-static inline double sc_ldl_factor(sc_int n, const double *A, sc_int lda, double *L, sc_int ldl,
-                                   double *d, double *dinv, int *drop, double drop_tol) {
-  double ratio = 1.0, ld[n > 0 ? n : 1]; /* row j of L D */
+static inline double sc_ldl_factor(sc_int n, const double *A, sc_int lda, const int *idx,
+                                   double *L, sc_int ldl, double *d, double *dinv, int *drop,
+                                   double drop_tol, double *work) {
+  double ratio = 1.0, *ld = work; /* row j of L D */
   sc_int i, j, k;
+#define SC_A(i, j) (idx ? A[idx[i] + lda * idx[j]] : A[(i) + lda * (j)])
+  SC_UNROLL
   for (j = 0; j < n; ++j) {
-    double s = A[j + lda * j], r;
-    for (k = 0; k < j; ++k) { /* ld = row j of L D */
+    double s = SC_A(j, j), r;
+    for (k = 0; k < j; ++k) {
       ld[k] = L[j + ldl * k] * d[k];
       s -= L[j + ldl * k] * ld[k];
     }
-    r = s / A[j + lda * j];
+    r = s / SC_A(j, j);
     if (drop) drop[j] = drop[j] && fabs(r) <= drop_tol;
     if (drop && drop[j]) { /* dependent: out of the factorization */
       d[j] = dinv[j] = 0.0;
@@ -186,11 +190,12 @@ static inline double sc_ldl_factor(sc_int n, const double *A, sc_int lda, double
     dinv[j] = 1.0 / s; /* one division per pivot */
     if (!(r >= ratio)) ratio = r;
     for (i = j + 1; i < n; ++i) {
-      double t = A[i + lda * j];
+      double t = SC_A(i, j);
       for (k = 0; k < j; ++k) t -= L[i + ldl * k] * ld[k];
       L[i + ldl * j] = t * dinv[j];
     }
   }
+#undef SC_A
   return ratio;
 }
 
