@@ -157,3 +157,47 @@ def test_both_engines_agree_on_the_hard_samples(case):
         assert c.conditioning == p.conditioning == 0.0
     else:
         assert c.conditioning == pytest.approx(p.conditioning, rel=1e-6)
+
+
+def test_face_kernels_take_any_size():
+    """The compiled faces, cuts and KKT candidates at n_a = 20 (beyond the former fixed 16):
+    the same faces as NumPy's QR cut, the same meets, and the extremes over each face's sphere
+    equal to NumPy's eigenvalue linearization and bounding a dense sample of the sphere."""
+    from test_sphere_kernel import _dense_face, _pieces, _quadratics
+
+    from snakecg import sphere_kkt as sk
+    from snakecg.piecewise import face_kernel
+
+    model = snakecg.load(snakecg.Scene(snakecg.Robot(joints=3), scenario="wheels",
+                                       kappa=100.0, mu=0.1))
+    kernel = face_kernel(model)
+    na = 20
+    rng = np.random.default_rng(2020)
+    cond, used = _pieces(rng, 40, 3, na)
+    A, g, c = _quadratics(rng, 40, na)
+    d = rng.normal(size=na)
+    d /= np.linalg.norm(d)
+    ref, got = sk.faces(cond, used, na), sk.faces(cond, used, na, kernel)
+    assert len(ref) == len(got) == 4
+    for level, (a, b) in enumerate(zip(ref, got)):
+        np.testing.assert_array_equal(a.pair, b.pair)
+        if level:
+            np.testing.assert_allclose(b.u0, a.u0, atol=1e-12)
+            np.testing.assert_allclose(b.r, a.r, atol=1e-12)
+            np.testing.assert_allclose(b.Z @ np.swapaxes(b.Z, 1, 2),
+                                       a.Z @ np.swapaxes(a.Z, 1, 2), atol=1e-12)
+            np.testing.assert_array_equal(
+                sk.meets(cond, b, d, kernel),
+                sk.feasible(cond[a.pair], sk.linear_candidates(a, d)).any(axis=1))
+        q, whole = b.pair, level == 0
+        u = sk.quadratic_candidates(b.u0, b.Z, b.r, A[q], g[q])
+        v = sk.quad(A[q], g[q], c[q], u)
+        _, _, _, _, hi, lo = kernel.candidates(
+            q, None if whole else b.u0, None if whole else b.Z, None if whole else b.r,
+            A, g, c, cond, sk.FEAS_TOL, identity=whole)
+        scale = np.abs(v).max() + 1.0
+        np.testing.assert_allclose(hi, v.max(axis=1), atol=1e-9 * scale)
+        np.testing.assert_allclose(lo, v.min(axis=1), atol=1e-9 * scale)
+        dense, _ = _dense_face(b, np.arange(len(q)), A, g, c, 500, rng)
+        assert np.all(dense.max(axis=1) <= hi + 1e-9 * scale)
+        assert np.all(dense.min(axis=1) >= lo - 1e-9 * scale)
