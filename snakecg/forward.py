@@ -251,7 +251,7 @@ def forward(model, q, tau, *, v=None, v_obj=None, f_obj=None, q_obj=None, rho=No
     check_batch_memory("forward", n, 8 * cols.width, what="results")
     raw = _output(out, n, batched, cols)
     raw2 = raw.reshape(n, cols.width)
-    if core is None:  # CasADi backend: the reference path for every sample
+    if core is None:  # CasADi backend: the pure-Python engine for every sample
         for lo in range(0, n, CHUNK_ROWS):
             hi = min(n, lo + CHUNK_ROWS)
             idx = np.arange(lo, hi)

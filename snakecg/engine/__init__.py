@@ -4,8 +4,9 @@
 the generated functions (:func:`snakecg.native.compile_model`); :class:`Core` calls its
 ``core_forward`` (bound in :mod:`snakecg.engine.binding`). One call evaluates a whole batch: placement, the active-set
 iteration of :mod:`snakecg.solver`'s rules, the conditioning and the physical checks, per
-sample, with the loop in C. Samples it cannot answer exactly come back marked for the
-reference path (:mod:`snakecg.rows`, :mod:`snakecg.solver`).
+sample, with the loop in C. The samples its fast path cannot answer exactly (dependent or weak
+held rows, no convergence, a singular mass matrix) are answered in C too, by ``rows.c``: their
+status is the code of :data:`snakecg.rows.REASONS` (1: answered exactly there).
 
 :class:`~snakecg.engine.data.Data` (:mod:`snakecg.engine.data`) is the workspace of one
 caller, in the manner of Pinocchio's ``Data``.
