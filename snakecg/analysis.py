@@ -343,6 +343,34 @@ def extremes(model, q, *, samples: int | None = None, refine: int = 10,
     return ex if batched else ex._squeeze()
 
 
+def extremes_of(model, q, chunk_rows: tuple[int, int], kwargs: dict):
+    """:meth:`SceneModel.extremes`: :func:`extremes` of one configuration, or of a batch in
+    chunks of rows (bounded working memory, a progress bar kept alive). ``chunk_rows``: the
+    rows of one call with bounded wheels and in the closed-form scenarios."""
+    from ._inputs import check_batch_memory
+    from .progress import in_chunks
+
+    check_extremes_options(kwargs)
+    qa, batched = model._q(q)
+    if not batched:
+        return extremes(model, q, **kwargs)
+    n = qa.shape[0]
+    wheels = model.scene.scenario == "wheels"
+    rows = chunk_rows[0] if wheels else chunk_rows[1]
+    if n > rows:  # bounded working memory (kB per row inside one call): chunks of rows
+        check_batch_memory("extremes", n, 8 * (24 + 24 * model.n_joints), what="results")
+    # bounded wheels: chunks of 256 rows keep the progress bar alive; large batches solved
+    # exactly go in chunks of chunk_rows[0] (vectorized over a chunk: faster)
+    chunk = min(rows, 256) if wheels else rows
+    exact = kwargs.get("exact")
+    if exact is None:
+        exact = model.n_joints <= EXACT_WHEELS_MAX_JOINTS
+    if wheels and exact is True and n > rows:
+        chunk = rows
+    return in_chunks(lambda part: extremes(model, part, **kwargs), qa, chunk, "extremes",
+                     always=n > rows)
+
+
 def _solve(model, qa, exact, samples, refine, starts, refined):
     if model.scene.scenario == "wheels" and exact:
         from .piecewise import wheel_extremes
@@ -431,6 +459,8 @@ def com_polar(model, q):
     """
     qa, batched = model.configurations(q)
     n = qa.shape[0]
+    model._check_memory("com_polar", n, ["link_poses", "place_object"],
+                        extra=3 * model.n_links + 12)
     poses = model.link_poses(qa)
     m = np.asarray(model.robot.mass)
     com = np.einsum("bik,i->bk", poses[:, :, :2], m) / m.sum()

@@ -152,7 +152,7 @@ def export_library(scene, out, *, source: str | None = None) -> list[Path]:
     ``source`` is a short description of where the robot comes from (a file name), quoted in
     the generated comments.
     """
-    from .model import load
+    from .loading import load
     from .robot import Scene
     from .spatial import SpatialRobot
 

@@ -1,10 +1,10 @@
 """The forward analysis of a scene (eqs. 12-30): accelerations, constraint forces, active set,
 norms and the slippage ratio, for one sample or a batch.
 
-Every sample is solved by the compiled runtime core (:mod:`snakecg.engine`): one C call for the
-whole batch. The rare samples it marks (dependent or weakly independent held rows, no
-convergence, an ill-conditioned mass matrix, an impossible result), and every sample on the
-CasADi backend, take the reference path: the vectorized active-set iteration of
+Every sample is solved by the compiled engine (:mod:`snakecg.engine`): one C call for the
+whole batch, the rare samples (dependent or weakly independent held rows, no convergence, an
+ill-conditioned mass matrix, an impossible result) included (``rows.c``). On the CasADi
+backend every sample takes the pure-Python engine: the vectorized active-set iteration of
 :mod:`snakecg.solver` on the generated ``constrained_dynamics``, completed by
 :mod:`snakecg.rows` (rows factored directly, conditioning, physical checks).
 
@@ -19,7 +19,7 @@ import numpy as np
 
 from . import kernels
 from ._inputs import CHUNK_ROWS, as_batch, broadcast_batches, check_batch_memory
-from .engine import STATUS_EXACT, Data
+from .engine import Data
 from .engine.binding import address, empty_pointers, int64s
 from .errors import InputError
 from .rows import finish as finish_rows
@@ -27,7 +27,7 @@ from .rows import reason_of
 from .solver import (HELD, check_input_range, check_position_range, default_max_iter,
                      solve_active_set)
 
-__all__ = ["ForwardResult", "forward", "forward_one", "WHEEL_STATE_NAMES"]
+__all__ = ["ForwardResult", "forward", "forward_one", "model_forward", "WHEEL_STATE_NAMES"]
 
 _STATE_NAMES = np.array(["none", "stick", "lost", "slide+", "slide-"])
 #: Names of the wheel rows' states (a wheel row is never "lost"; read as "none").
@@ -191,11 +191,56 @@ class ForwardResult:
 
 
 # ------------------------------------------------------------------------------------------
+_F64 = np.dtype(np.float64)
+
+
+def _plain(x, size: int) -> bool:
+    """A list or tuple of ``size`` Python floats or ints (the one-sample fast path)."""
+    if len(x) != size:
+        return False
+    for e in x:
+        t = type(e)
+        if t is not float and t is not int:
+            return False
+    return True
+
+
+def model_forward(model, q, tau, *, v=None, v_obj=None, f_obj=None, q_obj=None, rho=None,
+                  max_iter: int | None = None, data: Data | None = None,
+                  out: ForwardResult | None = None) -> ForwardResult:
+    """Accelerations, constraint forces, active set and norms (eqs. 12-30).
+
+    ``q`` ``(n_s,)`` or ``(N, n_s)``; ``tau`` ``(n_a,)`` or ``(N, n_a)`` (one broadcasts
+    against the other). Optional: snake velocities ``v``, object twist ``v_obj``, external
+    wrench on the object ``f_obj`` (F_x, F_y, torque). The object's pose ``q_obj`` and the
+    contact point in its frame ``rho`` default to the scene's placement (the object
+    touching the contact link at ``contact_offset``). ``data``: a workspace from
+    :meth:`~snakecg.SceneModel.create_data` (one per thread); ``out``: an earlier result of
+    the same shape whose array is overwritten (no allocation). Solved in compiled code per
+    sample (:mod:`snakecg.engine`). (:meth:`SceneModel.forward` is this function.)
+    """
+    core = model.core
+    if (core is not None and v is None and v_obj is None and f_obj is None and q_obj is None
+            and rho is None and max_iter is None and out is None):
+        # one sample of float64 arrays or plain lists: straight into a workspace's buffers,
+        # one C call, one copy of the result row (the C checks finiteness and range)
+        tq, tt = type(q), type(tau)
+        if ((tq is np.ndarray and q.dtype is _F64 and q.shape == model._shape_q
+             or (tq is list or tq is tuple) and _plain(q, model.n_coordinates))
+                and (tt is np.ndarray and tau.dtype is _F64 and tau.shape == model._shape_tau
+                     or (tt is list or tt is tuple) and _plain(tau, model.n_joints))):
+            res = forward_one(model, core, q, tau, data)
+            if res is not None:
+                return res
+    return forward(model, q, tau, v=v, v_obj=v_obj, f_obj=f_obj, q_obj=q_obj, rho=rho,
+                   max_iter=max_iter, data=data, out=out)
+
+
 def forward(model, q, tau, *, v=None, v_obj=None, f_obj=None, q_obj=None, rho=None,
             max_iter=None, data: Data | None = None, out: ForwardResult | None = None):
     """:meth:`SceneModel.forward` (see there) on its general path: every input validated and
-    converted, one C call for the batch (split over threads when large), the marked samples
-    and every sample of the CasADi backend on the reference path. (``data`` serves the
+    converted, one C call for the batch (split over threads when large); every sample of the
+    CasADi backend on the pure-Python engine. (``data`` serves the
     one-sample path only: a batch needs no workspace.)"""
     extras = {"v": v, "v_obj": v_obj, "f_obj": f_obj, "q_obj": q_obj, "rho": rho}
     core = model.core
@@ -206,7 +251,7 @@ def forward(model, q, tau, *, v=None, v_obj=None, f_obj=None, q_obj=None, rho=No
     check_batch_memory("forward", n, 8 * cols.width, what="results")
     raw = _output(out, n, batched, cols)
     raw2 = raw.reshape(n, cols.width)
-    if core is None:  # CasADi backend: the reference path for every sample
+    if core is None:  # CasADi backend: the pure-Python engine for every sample
         for lo in range(0, n, CHUNK_ROWS):
             hi = min(n, lo + CHUNK_ROWS)
             idx = np.arange(lo, hi)
@@ -219,9 +264,6 @@ def forward(model, q, tau, *, v=None, v_obj=None, f_obj=None, q_obj=None, rho=No
         _validate(model, q, tau, extras, max_iter)  # raises, naming the input
         raise InputError(f"forward: an input of sample {-2 - status} is not finite or beyond "
                          f"the force limit")
-    redo = np.flatnonzero(raw2[:, cols.status] != STATUS_EXACT)
-    for lo in range(0, redo.size, CHUNK_ROWS):
-        _reference_into(model, raw2, redo[lo:lo + CHUNK_ROWS], parts, max_iter)
     return ForwardResult(raw, cols)
 
 
@@ -249,12 +291,7 @@ def forward_one(model, core, q, tau, data):
     finally:
         if own:
             d.lock.release()
-    cols = model.columns
-    if raw[cols.status] != STATUS_EXACT:  # the rare sample for the reference path
-        parts = {"q": np.asarray(q, dtype=float).reshape(1, -1),
-                 "tau": np.asarray(tau, dtype=float).reshape(1, -1)}
-        _reference_into(model, raw[None, :], np.zeros(1, dtype=np.intp), parts, None)
-    return ForwardResult(raw, cols)
+    return ForwardResult(raw, model.columns)
 
 
 def _validate(model, q, tau, extras: dict, max_iter, *, check_finite=True):

@@ -15,6 +15,28 @@ from .solver import _free_and_fixed
 __all__ = ["at_rest", "maps", "state_forms", "state_maps"]
 
 
+def place_object(model, q):
+    """:meth:`SceneModel.place_object`: the object's pose, the contact point in its frame and
+    in the world, for one configuration or a batch."""
+    qa, batched = model._q(q)
+    n = qa.shape[0]
+    model._check_memory("place_object", n, ["place_object"])
+    q_obj, rho, P = place(model, qa, n)
+    if batched:
+        return q_obj, rho, P
+    return q_obj[0], rho[0], P[0]
+
+
+def place(model, qa, n: int):
+    """:func:`place_object` of a checked batch ``qa`` of ``n`` rows (generated
+    ``place_object`` at the scene's contact)."""
+    o = model._named("place_object", n, q=model._arg(qa, n), K=model.parameters,
+                     contact_link=model._contact_link,
+                     contact_offset=[model.scene.contact_offset],
+                     object_distance=[model.scene.object_distance], side=model._side)
+    return o["q_obj"][:, :, 0], o["rho"][:, :, 0], o["contact_point"][:, :, 0]
+
+
 def maps(model, q, *, contact: bool = True, wheel_state=None) -> dict[str, np.ndarray]:
     """The paper's linear maps at rest for a given active set (default: everything held).
 
@@ -114,7 +136,7 @@ def _at_rest(model, fname: str, qa, n: int, *free_args):
     (the held-row masks, fixed forces, in signature order); ``regularization`` is 0.
     Returns the inputs ``{name: array}`` and ``{output name: (n, rows, cols) array}``.
     """
-    q_obj, rho, _ = model._place(qa, n)
+    q_obj, rho, _ = place(model, qa, n)
     names = model.backend.signatures[fname].in_names
     tail = names[names.index("wheel_offset") + 1: names.index("regularization")]
     if len(tail) != len(free_args):

@@ -13,14 +13,12 @@ from types import MappingProxyType
 
 import numpy as np
 
+from . import loading as _loading
 from . import maps as _maps_mod
-from ._inputs import (
-    check_batch_memory,
-)
 from .engine import Data, Layout
 from .errors import InputError
 from .kinds import SCENE_MODEL
-from .forward import ForwardResult, _Columns, forward, forward_one
+from .forward import ForwardResult, _Columns, model_forward
 from .robot import Robot, Scene
 from .robot_model import RobotModel, _check_load_args
 from .solver import default_max_iter
@@ -79,20 +77,8 @@ def load(obj, *, backend: str = "compiled", progress=None):
                      f"got {type(obj).__name__}")
 
 
-_F64 = np.dtype(np.float64)
 #: snakecg.optimize's entry point and argument screen, imported on first use
 _LAZY: dict = {}
-
-
-def _plain(x, size: int) -> bool:
-    """A list or tuple of ``size`` Python floats or ints (the one-sample fast path)."""
-    if len(x) != size:
-        return False
-    for e in x:
-        t = type(e)
-        if t is not float and t is not int:
-            return False
-    return True
 
 
 class SceneModel(RobotModel):
@@ -157,27 +143,14 @@ class SceneModel(RobotModel):
     def place_object(self, q):
         """Object pose ``(x_o, y_o, psi)``, contact point in the object frame ``rho`` and the
         world contact point for the scene's contact (shapes ``(3,)``, ``(2,)``, ``(2,)`` or
-        batched)."""
-        qa, batched = self._q(q)
-        n = qa.shape[0]
-        self._check_memory("place_object", n, ["place_object"])
-        q_obj, rho, P = self._place(qa, n)
-        if batched:
-            return q_obj, rho, P
-        return q_obj[0], rho[0], P[0]
+        batched); see :func:`snakecg.maps.place_object`."""
+        return _maps_mod.place_object(self, q)
 
     def place(self, qa, n: int | None = None):
         """:meth:`place_object` of a checked batch ``qa`` (``(N, n_s)``, from
         :meth:`configurations`): ``(q_obj, rho, contact_point)`` of shapes ``(N, 3)``,
         ``(N, 2)``, ``(N, 2)``."""
-        return self._place(qa, qa.shape[0] if n is None else n)
-
-    def _place(self, qa, n):
-        o = self._named("place_object", n, q=self._arg(qa, n), K=self.parameters,
-                        contact_link=self._contact_link,
-                        contact_offset=[self.scene.contact_offset],
-                        object_distance=[self.scene.object_distance], side=self._side)
-        return o["q_obj"][:, :, 0], o["rho"][:, :, 0], o["contact_point"][:, :, 0]
+        return _maps_mod.place(self, qa, qa.shape[0] if n is None else n)
 
     # forward -------------------------------------------------------------------------------
     def data(self) -> Data:
@@ -196,36 +169,9 @@ class SceneModel(RobotModel):
         raise TypeError("a loaded model holds compiled code and cannot be pickled; pickle its "
                         "Scene and call snakecg.load(scene) where it is needed")
 
-    def forward(self, q, tau, *, v=None, v_obj=None, f_obj=None, q_obj=None, rho=None,
-                max_iter: int | None = None, data: Data | None = None,
-                out: ForwardResult | None = None) -> ForwardResult:
-        """Accelerations, constraint forces, active set and norms (eqs. 12-30).
-
-        ``q`` ``(n_s,)`` or ``(N, n_s)``; ``tau`` ``(n_a,)`` or ``(N, n_a)`` (one broadcasts
-        against the other). Optional: snake velocities ``v``, object twist ``v_obj``, external
-        wrench on the object ``f_obj`` (F_x, F_y, torque). The object's pose ``q_obj`` and the
-        contact point in its frame ``rho`` default to the scene's placement (the object
-        touching the contact link at ``contact_offset``). ``data``: a workspace from
-        :meth:`create_data` (one per thread); ``out``: an earlier result of the same shape
-        whose array is overwritten (no allocation). Solved in compiled code per sample
-        (:mod:`snakecg.engine`); see :mod:`snakecg.forward`.
-        """
-        core = self.core
-        if (core is not None and v is None and v_obj is None and f_obj is None and q_obj is None
-                and rho is None and max_iter is None and out is None):
-            # one sample of float64 arrays or plain lists: straight into a workspace's buffers,
-            # one C call, one copy of the result row (the C checks finiteness and range;
-            # snakecg.forward.forward_one)
-            tq, tt = type(q), type(tau)
-            if ((tq is np.ndarray and q.dtype is _F64 and q.shape == self._shape_q
-                 or (tq is list or tq is tuple) and _plain(q, self.n_coordinates))
-                    and (tt is np.ndarray and tau.dtype is _F64 and tau.shape == self._shape_tau
-                         or (tt is list or tt is tuple) and _plain(tau, self.n_joints))):
-                res = forward_one(self, core, q, tau, data)
-                if res is not None:
-                    return res
-        return forward(self, q, tau, v=v, v_obj=v_obj, f_obj=f_obj, q_obj=q_obj, rho=rho,
-                       max_iter=max_iter, data=data, out=out)
+    #: Accelerations, constraint forces, active set and norms (eqs. 12-30):
+    #: :func:`snakecg.forward.model_forward` (bound as the method: no extra call).
+    forward = model_forward
 
     # linear maps (snakecg.maps) --------------------------------------------------------------
     def maps(self, q, *, contact: bool = True, wheel_state=None) -> dict[str, np.ndarray]:
@@ -248,32 +194,10 @@ class SceneModel(RobotModel):
     # analysis (snakecg.analysis) -------------------------------------------------------------
     def extremes(self, q, **kwargs):
         """Best and worst ``norm_a_obj``, ``norm_qdd``, ``norm_lambda`` and ``sr`` over the
-        input ellipsoid of eq. (31); see :func:`snakecg.analysis.extremes`."""
-        from .analysis import check_extremes_options, extremes
-        from .progress import in_chunks
+        input ellipsoid of eq. (31); see :func:`snakecg.analysis.extremes_of`."""
+        from .analysis import extremes_of
 
-        check_extremes_options(kwargs)
-        qa, batched = self._q(q)
-        if not batched:
-            return extremes(self, q, **kwargs)
-        n = qa.shape[0]
-        wheels = self.scene.scenario == "wheels"
-        rows = EXTREMES_CHUNK_ROWS if wheels else CLOSED_FORM_CHUNK_ROWS
-        if n > rows:
-            # bounded working memory (kB per row inside one call): chunks of rows
-            check_batch_memory("extremes", n, 8 * (24 + 24 * self.n_joints), what="results")
-        # bounded wheels: chunks of 256 rows keep the progress bar alive; large batches solved
-        # exactly go in chunks of EXTREMES_CHUNK_ROWS (vectorized over a chunk: faster)
-        from .analysis import EXACT_WHEELS_MAX_JOINTS
-
-        chunk = min(rows, 256) if wheels else rows
-        exact = kwargs.get("exact")
-        if exact is None:
-            exact = self.n_joints <= EXACT_WHEELS_MAX_JOINTS
-        if wheels and exact is True and n > rows:
-            chunk = rows
-        return in_chunks(lambda part: extremes(self, part, **kwargs), qa, chunk, "extremes",
-                         always=n > rows)
+        return extremes_of(self, q, (EXTREMES_CHUNK_ROWS, CLOSED_FORM_CHUNK_ROWS), kwargs)
 
     def com_polar(self, q):
         """Polar coordinates ``(|COM|, angle COM)`` of the snake's COM w.r.t. the contact point,
@@ -281,9 +205,6 @@ class SceneModel(RobotModel):
         :func:`snakecg.analysis.com_polar`."""
         from .analysis import com_polar
 
-        qa, _ = self._q(q)
-        self._check_memory("com_polar", qa.shape[0], ["link_poses", "place_object"],
-                           extra=3 * self.n_links + 12)
         return com_polar(self, q)
 
     # optimal torques (snakecg.optimize) --------------------------------------------------------
@@ -302,15 +223,10 @@ class SceneModel(RobotModel):
         """
         run = _LAZY.get("optimize")
         if run is None:  # imported once (an import inside every call costs microseconds)
-            from .optimize import optimize as run
-            from .optimize.arguments import screen
+            from .optimize.api import optimize_model as run
 
-            _LAZY["optimize"], _LAZY["screen"] = run, screen
-        if not (type(q) is np.ndarray and q.ndim == 1):  # a batch: its memory first
-            qa, _ = self._q(q)
-            self._check_memory("optimize", qa.shape[0], ["place_object", "interaction_maps"],
-                               extra=self.columns.width + 4 * self.n_joints)
-        return run(self, q, objective=objective, **_LAZY["screen"](kwargs))
+            _LAZY["optimize"] = run
+        return run(self, q, objective, kwargs)
 
     # simulation (snakecg.simulate) -------------------------------------------------------------
     def simulate(self, q0, tau, duration, v0=None, **kwargs):
@@ -338,3 +254,6 @@ class SceneModel(RobotModel):
         from .shape import optimize_shape
 
         return optimize_shape(self, objective, **kwargs)
+
+
+_loading.register(load)  # the features that are given a scene load its model through it

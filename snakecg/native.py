@@ -60,8 +60,8 @@ _warned: set[str] = set()
 #: after the step it does; snakecg/engine/engine.h lists what each defines).
 ENGINE_DIR = Path(__file__).resolve().parent / "engine"
 CORE_SOURCES = tuple(ENGINE_DIR / name
-                     for name in ("contact.c", "forward.c", "integrate.c", "events.c", "run.c",
-                                  "geometry.c", "sphere.c", "pieces.c", "maps.c", "qp.c",
+                     for name in ("contact.c", "forward.c", "rows.c", "integrate.c", "events.c",
+                                  "run.c", "geometry.c", "sphere.c", "pieces.c", "maps.c", "qp.c",
                                   "certificate.c", "optimal.c", "max_sr.c", "push.c",
                                   "wheel_states.c", "scene_sets.c", "scene_solve.c"))
 #: Its headers: engine.h (the types and prototypes), linalg.h (the small dense linear algebra).

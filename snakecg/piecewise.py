@@ -48,7 +48,6 @@ from __future__ import annotations
 
 import numpy as np
 
-from .engine.sphere import MAX_DIM
 from .engine.threads import pool, threads
 from .pieces import all_states, explore, forms, primitives
 from .solver import HELD
@@ -197,7 +196,7 @@ def face_kernel(model):
     """The compiled faces and KKT candidates of ``model``'s library
     (:mod:`snakecg.engine.sphere`); None without a compiled core (NumPy's path then)."""
     core = getattr(model, "core", None)
-    if core is None or model.n_joints > MAX_DIM:
+    if core is None:
         return None
     return _Kernel(core.sphere)
 

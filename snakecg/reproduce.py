@@ -320,7 +320,7 @@ def physically_feasible(model, Q, clearance: float = 0.0) -> np.ndarray:
 
 def alternative_readings(opts: ReproduceOptions | None = None, *, load=None) -> str:
     """Table 2 entries of scenarios 1 and 3 under alternative readings (Markdown)."""
-    from .model import load as default_load
+    from .loading import load as default_load
 
     opts = opts or ReproduceOptions()
     load = load or default_load
@@ -417,7 +417,7 @@ def _other_maximum(model, Q, mode):
 
 def reproduce(opts: ReproduceOptions | None = None, *, load=None, echo=print) -> ReproduceReport:
     """Run both case studies, write figures/CSV/Markdown into ``opts.out``, print Table 2."""
-    from .model import load as default_load
+    from .loading import load as default_load
 
     opts = opts or ReproduceOptions()
     check_options(opts)

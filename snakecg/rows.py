@@ -36,7 +36,8 @@ ROW_TOL = 1e-20
 MASS_TOL = 1e-13
 
 #: Why a sample is flagged ``singular``, by the code in its result row's ``status`` column
-#: (0: answered by the compiled core, 1: answered by the reference path).
+#: (0: answered by the compiled fast path, 1: answered exactly by the rare-sample rules, the
+#: compiled ``rows.c`` or, on the CasADi backend, this module).
 REASONS = (
     "", "",
     "the held constraint rows are linearly dependent (the forces are the least-norm ones)",

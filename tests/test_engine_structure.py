@@ -187,3 +187,40 @@ def test_one_data_holds_the_workspaces_of_every_step():
     assert len(data.simulation_pool) == 1
     other = model.create_data()
     assert other is not data and other.derived == {} and other.simulation_pool == []
+
+
+def test_only_the_facade_layer_imports_the_facade():
+    """snakecg.model is imported by the package's __init__ and the CLI layer (snakecg.cli,
+    snakecg.commands) alone: figures, sweeps, export and reproduce load a scene they are given
+    through snakecg.loading, which the facade fills when the package is imported."""
+    graph = _import_graph()
+    importers = sorted(m for m, targets in graph.items() if "snakecg.model" in targets)
+    allowed = {"snakecg", "snakecg.cli"}
+    assert [m for m in importers if m not in allowed
+            and not m.startswith("snakecg.commands")] == []
+    assert "snakecg" in importers  # the import graph sees the facade's importer
+
+
+def test_the_loader_the_features_call_is_the_facades():
+    import snakecg.loading
+
+    assert snakecg.loading._LOADER == [snakecg.load]
+
+
+def test_scene_model_methods_are_one_liners():
+    """Every public method SceneModel defines itself is a call of a free function that takes
+    the model (an import of that function aside), or is that function itself."""
+    import inspect
+    import textwrap
+
+    from snakecg.model import SceneModel
+
+    for name, fn in vars(SceneModel).items():
+        if name.startswith("_") or not inspect.isfunction(fn) or fn.__qualname__.split(".")[0] \
+                != "SceneModel":
+            continue
+        body = ast.parse(textwrap.dedent(inspect.getsource(fn))).body[0].body
+        body = [s for s in body if not (isinstance(s, ast.Expr)
+                                        and isinstance(s.value, ast.Constant))]  # docstring
+        body = [s for s in body if not isinstance(s, (ast.Import, ast.ImportFrom))]
+        assert len(body) <= 1 or name == "optimize", (name, len(body))

@@ -825,9 +825,15 @@ def test_active_set_against_enumeration(models, rng, joints, monkeypatch):
                                   v_obj=v_obj, f_obj=f_obj)
     assert_matches_reference(res_ref, refs, ref, "reference active set")
     assert seen[-1].enumerated == 0 and seen[-1].iterations >= 2
-    res1 = sm.forward(q, tau, v=v, v_obj=v_obj, f_obj=f_obj, max_iter=1)
+    res1 = forward_mod.forward(snakecg.load(sm.scene, backend="casadi"), q, tau, v=v,
+                               v_obj=v_obj, f_obj=f_obj, max_iter=1)
     assert seen[-1].enumerated > n // 4, "max_iter=1 should leave samples to the enumeration"
-    assert_matches_reference(res1, refs, ref, "enumeration fallback")
+    assert_matches_reference(res1, refs, ref, "enumeration (Python engine)")
+    if sm.core is not None:  # the compiled engine enumerates them itself (engine/rows.c)
+        seen.clear()
+        res1 = sm.forward(q, tau, v=v, v_obj=v_obj, f_obj=f_obj, max_iter=1)
+        assert not seen and np.count_nonzero(res1.raw[:, sm.columns.status]) > n // 4
+        assert_matches_reference(res1, refs, ref, "enumeration (compiled engine)")
 
 
 # ------------------------------------------------------------------------------------------

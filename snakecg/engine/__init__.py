@@ -4,8 +4,9 @@
 the generated functions (:func:`snakecg.native.compile_model`); :class:`Core` calls its
 ``core_forward`` (bound in :mod:`snakecg.engine.binding`). One call evaluates a whole batch: placement, the active-set
 iteration of :mod:`snakecg.solver`'s rules, the conditioning and the physical checks, per
-sample, with the loop in C. Samples it cannot answer exactly come back marked for the
-reference path (:mod:`snakecg.rows`, :mod:`snakecg.solver`).
+sample, with the loop in C. The samples its fast path cannot answer exactly (dependent or weak
+held rows, no convergence, a singular mass matrix) are answered in C too, by ``rows.c``: their
+status is the code of :data:`snakecg.rows.REASONS` (1: answered exactly there).
 
 :class:`~snakecg.engine.data.Data` (:mod:`snakecg.engine.data`) is the workspace of one
 caller, in the manner of Pinocchio's ``Data``.
@@ -15,8 +16,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..rows import WEAK
-from ..solver import FORCE_LIMIT, PIVOT_TOL, REL_TOL
+from ..rows import ROW_TOL, WEAK
+from ..solver import FORCE_LIMIT, PIVOT_TOL, REGULARIZATION, REL_TOL
 from .binding import Library
 from .data import Data
 from .layout import Layout
@@ -30,7 +31,8 @@ MASS_TOL = 1e-13
 #: Rounding allowed in the physical checks (norms >= 0, 0 <= sr <= 1; snakecg.rows._sane).
 SANE_TOL = 1e-12
 #: The solver constants passed to the C, in the order of its ``sc_constants``.
-CONSTANTS = np.array([PIVOT_TOL, WEAK, REL_TOL, MASS_TOL, SANE_TOL, FORCE_LIMIT])
+CONSTANTS = np.array([PIVOT_TOL, WEAK, REL_TOL, MASS_TOL, SANE_TOL, FORCE_LIMIT, ROW_TOL,
+                      REGULARIZATION])
 STATUS_EXACT, STATUS_FALLBACK = 0, 1
 
 class Core:

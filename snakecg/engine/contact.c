@@ -114,18 +114,6 @@ int sc_contact_system(sc_work_t *ws, const double *scene, const double *q,
 /* A SUPPORT row whose pivot ratio is at most this depends on the held rows before it. */
 #define SC_SUPPORT_TOL 1e-10
 
-/* Solve L D L^T x = y in place (m rows; a dropped row has dinv 0 and a zero column of L). */
-static void sc_ldl_solve(int m, const double *L, const double *dinv, double *y) {
-  const int nc = SNAKECG_NC;
-  int i, k;
-  for (i = 0; i < m; ++i) /* forward, diagonal and back substitution */
-    for (k = 0; k < i; ++k) y[i] -= L[i + nc * k] * y[k];
-  for (i = m - 1; i >= 0; --i) {
-    y[i] *= dinv[i];
-    for (k = i + 1; k < m; ++k) y[i] -= L[k + nc * i] * y[k];
-  }
-}
-
 /* The held forces y (m of them) made least-norm where SUPPORT rows were dropped (drop[j]):
  * the solutions differ by the null vectors z_j = e_j - G_KK^-1 G_Kj (K: the rows kept), so
  * y <- y - Z (Z^T Z)^-1 Z^T y (Z^T Z by linalg.h's Cholesky: Z has an identity block, so it
@@ -139,7 +127,7 @@ static void sc_least_norm(int m, const int *held, const int *drop, const double 
     double *z = Z + nc * nd;
     if (!drop[j]) continue;
     for (i = 0; i < m; ++i) z[i] = drop[i] ? 0.0 : G[held[i] + nc * held[j]];
-    sc_ldl_solve(m, L, dinv, z);
+    sc_ldl_solve(m, L, nc, dinv, z);
     for (i = 0; i < m; ++i) z[i] = -z[i];
     z[j] = 1.0;
     ++nd;
@@ -173,8 +161,9 @@ static void sc_least_norm(int m, const int *held, const int *drop, const double 
 double sc_held_forces(const signed char *state, const double *G, const double *b,
                       const double *bounds, const double *extra, double *lam) {
   const int nc = SNAKECG_NC;
-  int held[SNAKECG_NC], drop[SNAKECG_NC], m = 0, dropped = 0, i, j, k;
-  double L[SNAKECG_NC * SNAKECG_NC], d[SNAKECG_NC], dinv[SNAKECG_NC], y[SNAKECG_NC], ratio = 1.0;
+  int held[SNAKECG_NC], drop[SNAKECG_NC], m = 0, dropped = 0, i, j;
+  double L[SNAKECG_NC * SNAKECG_NC], d[SNAKECG_NC], dinv[SNAKECG_NC], y[SNAKECG_NC],
+      work[SNAKECG_NC], ratio;
   for (i = 0; i < nc; ++i) {
     lam[i] = state[i] == SLIDE_POS ? bounds[i] : state[i] == SLIDE_NEG ? -bounds[i] : 0.0;
     if (!isfinite(lam[i])) lam[i] = 0.0;
@@ -187,36 +176,10 @@ double sc_held_forces(const signed char *state, const double *G, const double *b
     y[i] = -t;
     if (extra) y[i] -= extra[held[i]];
   }
-  SC_UNROLL
-  for (j = 0; j < m; ++j) { /* L D L^T of G_HH, no pivoting */
-    double s = G[held[j] + nc * held[j]], r, ld[SNAKECG_NC];
-    for (k = 0; k < j; ++k) { /* ld = row j of L D */
-      ld[k] = L[j + nc * k] * d[k];
-      s -= L[j + nc * k] * ld[k];
-    }
-    r = s / G[held[j] + nc * held[j]];
-    drop[j] = state[held[j]] == SUPPORT && fabs(r) <= SC_SUPPORT_TOL;
-    if (drop[j]) { /* dependent: out of the factorization */
-      d[j] = dinv[j] = 0.0;
-      for (i = j + 1; i < m; ++i) L[i + nc * j] = 0.0;
-      dropped = 1;
-      continue;
-    }
-    d[j] = s;
-    dinv[j] = 1.0 / s; /* one division per pivot */
-    if (!(r >= ratio)) ratio = r; /* NaN propagates */
-    for (i = j + 1; i < m; ++i) {
-      double t = G[held[i] + nc * held[j]];
-      for (k = 0; k < j; ++k) t -= L[i + nc * k] * ld[k];
-      L[i + nc * j] = t * dinv[j];
-    }
-  }
-  for (i = 0; i < m; ++i) /* forward, diagonal and back substitution */
-    for (k = 0; k < i; ++k) y[i] -= L[i + nc * k] * y[k];
-  for (i = m - 1; i >= 0; --i) {
-    y[i] *= dinv[i];
-    for (k = i + 1; k < m; ++k) y[i] -= L[k + nc * i] * y[k];
-  }
+  for (j = 0; j < m; ++j) drop[j] = state[held[j]] == SUPPORT; /* may drop out */
+  ratio = sc_ldl_factor(m, G, nc, held, L, nc, d, dinv, drop, SC_SUPPORT_TOL, work);
+  for (j = 0; j < m; ++j) dropped |= drop[j];
+  sc_ldl_solve(m, L, nc, dinv, y);
   if (dropped) sc_least_norm(m, held, drop, G, L, dinv, y);
   for (i = 0; i < m; ++i) lam[held[i]] = y[i];
   return ratio;

@@ -10,6 +10,7 @@
  *                   forces of eq. (16), the active-set rule, work arrays (alone with
  *                   forward.c in a spatial scene's library)
  *   forward.c       the forward solve of a batch (exported: core_forward)
+ *   rows.c          its rare samples: Tikhonov, enumeration, the rows factored directly
  *   integrate.c     one integration segment between events (Dormand-Prince 5(4), dense
  *                   output, event location; exported: core_integrate_segment, ...)
  *   events.c        what happens at an event: impacts, projections, the new active set
@@ -40,14 +41,11 @@
 typedef long long int sc_int;
 
 #if defined(__GNUC__)
-/* the library exports the model's prefixed entry points only; the engine's own functions
- * across its files stay inside it */
+/* the library exports the model's entry points only; the engine's own functions are hidden */
 #define SC_INTERNAL __attribute__((visibility("hidden")))
 #else
 #define SC_INTERNAL
 #endif
-
-#include "linalg.h"
 
 /* Before a loop over one of the model's sizes (known when compiling): unroll it (GCC). */
 #if defined(__GNUC__) && !defined(__clang__)
@@ -55,6 +53,8 @@ typedef long long int sc_int;
 #else
 #define SC_UNROLL
 #endif
+#include "linalg.h"
+
 
 /* sizes: coordinates n_s, constraint rows n_c, a body state (q, q_obj), the integrated state
  * (positions, velocities and three work integrals) */
@@ -156,13 +156,10 @@ typedef struct {
 
 /* ---- contact.c: the per-state system and its complementarity solve ---- */
 
-/* Wall-clock seconds from an arbitrary origin (POSIX's monotonic clock; elsewhere the CPU
- * time): the long calls of the simulation pause after a budget of them, so that Python can
- * handle a Ctrl-C. */
+/* Wall-clock seconds (monotonic): the long calls pause after a budget, for Ctrl-C. */
 SC_INTERNAL double sc_wall_time(void);
 
-/* Argument and result pointer arrays and work vectors of generated functions, sized for the
- * largest of `n` of them (their `_work` functions). */
+/* Argument and result arrays and work vectors of generated functions (the largest of n). */
 typedef struct {
   const double **arg;
   double **res;
@@ -171,9 +168,7 @@ typedef struct {
 } sc_work_t;
 SC_INTERNAL void sc_work_free(sc_work_t *ws);
 
-/* The entries of an array (of the work-size functions a file passes to sc_work_alloc). */
-#define SC_COUNT(a) ((int)(sizeof(a) / sizeof((a)[0])))
-
+#define SC_COUNT(a) ((int)(sizeof(a) / sizeof((a)[0]))) /* the entries of an array */
 /* 0, or -1 when a size query or an allocation failed (then nothing is left allocated). */
 SC_INTERNAL int sc_work_alloc(sc_work_t *ws, const sc_work_fn *fns, int n);
 
@@ -188,11 +183,9 @@ typedef struct {
   double gap, s;
 } sc_system;
 
-/* `contact_system` at (q, v, tau, q_obj, v_obj, f_obj, rho) with the scene's constants of
- * `scene` (SCENE_* offsets); q_obj == NULL places the object at the scene's contact from q
- * (the generated function's input `placed` = 1; rho is then ignored too). When v and v_obj
- * are zero, the generated `contact_system_at_rest` (the same without the velocity terms).
- * The work arrays must fit both (SC_CS_WORKS). Its status (0 on success). */
+/* `contact_system` at (q, v, tau, q_obj, v_obj, f_obj, rho), the scene's constants `scene`;
+ * q_obj NULL places the object from q (rho ignored); `contact_system_at_rest` when v, v_obj
+ * are zero. The work arrays must fit both (SC_CS_WORKS). Its status (0 on success). */
 #define SC_CS_WORKS SNAKECG_CS_WORK, SNAKECG_CR_WORK
 SC_INTERNAL int sc_contact_system(sc_work_t *ws, const double *scene, const double *q,
                                   const double *v, const double *tau, const double *q_obj,
@@ -209,6 +202,19 @@ SC_INTERNAL int sc_row_velocities(sc_work_t *ws, const double *scene, const doub
                                   double c_k, const double *q, const double *v,
                                   const double *qo, const double *vo, double s, double *av);
 
+/* The solver's constants (snakecg.engine.CONSTANTS, in this order): pivot ratios of dependent,
+ * of weak held rows, the decisions' tolerance, M's singular ratio, the checks' rounding, the
+ * force limit, the ratio of rows dependent even factored directly, the Tikhonov weight. */
+typedef struct {
+  double pivot_tol, weak, rel_tol, mass_tol, sane_tol, force_limit, row_tol, regularization;
+} sc_constants;
+
+/* rows.c: a sample the fast path does not answer exactly, by the reference rules; its status
+ * the reason's code. sys null when its evaluation failed; mass: M's pivot ratio. */
+SC_INTERNAL void sc_forward_edge(const sc_system *sys, const double *scene,
+                                 const sc_constants *c, long max_iter, int at_rest,
+                                 double mass, double *out);
+
 /* The constraint forces for row states `state` (eq. 16): lam_F fixed (0, or +-bound for a
  * sliding wheel), lam_H solving G_HH lam_H = -(b_H + G_HF lam_F) - extra_H by LDL^T in row
  * order (the masked factorization of the generated `constrained_dynamics`); `extra` (may be
@@ -218,13 +224,8 @@ SC_INTERNAL int sc_row_velocities(sc_work_t *ws, const double *scene, const doub
 SC_INTERNAL double sc_held_forces(const signed char *state, const double *G, const double *b,
                                   const double *bounds, const double *extra, double *lam);
 
-/* The next row states (snakecg.solver._violations with _tolerances): returns 1 if any moved.
- * Each row is judged against its own scale (force units), s_r = max(|lam_r|, |w_r| / G_rr,
- * |b_r| / G_rr, ROUND_REL sum_j |G_rj lam_j| / G_rr) with b = w - G lam (the row's
- * acceleration at zero force): tol_lam_r = rel_tol s_r, tol_w_r = rel_tol G_rr s_r. Scaling
- * every input force scales every term: the decisions do not depend on units; and the huge
- * forces of nearly dependent rows (which cancel in the other rows) no longer widen the
- * tolerance of a row they barely move. */
+/* The next row states (snakecg.solver._violations with _tolerances; the rule in contact.c):
+ * returns 1 if any moved. */
 SC_INTERNAL int sc_next_states(signed char *state, const double *lam, const double *w,
                                const double *G, const double *bounds, double rel_tol);
 

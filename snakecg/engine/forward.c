@@ -24,8 +24,8 @@
  *      norms >= 0, 0 <= sr <= 1).
  * A sample that this path does not answer exactly (dependent or weakly independent held rows,
  * no convergence within max_iter passes, an ill-conditioned mass matrix, an impossible result)
- * is returned with status FALLBACK: the runtime solves it with its reference path (rows
- * factored directly, enumeration of active sets; snakecg/rows.py, snakecg/solver.py).
+ * is answered by rows.c with the reference rules (the Tikhonov term, enumeration of active
+ * sets, the rows factored directly, the flags), its status the reason's code (1: exact).
  */
 #include <math.h>
 #include <stdlib.h>
@@ -47,15 +47,6 @@
 /* sample status */
 enum { STATUS_EXACT = 0, STATUS_FALLBACK = 1 };
 
-/* The solver's constants (snakecg/solver.py, snakecg/rows.py): passed in by the runtime. */
-typedef struct {
-  double pivot_tol;   /* held rows dependent below this pivot ratio */
-  double weak;        /* solved from the rows themselves below this pivot ratio */
-  double rel_tol;     /* decision tolerance, relative to the sample's force scale */
-  double mass_tol;    /* mass matrix numerically singular below this pivot ratio */
-  double sane_tol;    /* rounding allowed in the physical checks */
-  double force_limit; /* |tau|, |f_obj| at most this; |v|, |v_obj| at most its square root */
-} sc_constants;
 
 static int all_finite(const double *x, int n, double limit) {
   int k;
@@ -69,26 +60,11 @@ static int all_finite(const double *x, int n, double limit) {
  * scaled factor's squared pivots are the LDL^T pivots of M over its diagonal, d_j / M_jj
  * (scaling by a diagonal leaves L unit and scales d), so no square root is taken. */
 static double mass_pivot_ratio(const double *M, double *L) {
-  const int n = SNAKECG_NS;
-  double d[SNAKECG_NS], w[SNAKECG_NS], best = INFINITY, s, dinv;
-  int i, j, k;
-  SC_UNROLL
-  for (j = 0; j < n; ++j) { /* unit lower L, column by column, in place of M's lower half */
-    s = M[j + n * j];
-    for (k = 0; k < j; ++k) { /* w = row j of L D */
-      w[k] = L[j + n * k] * d[k];
-      s -= L[j + n * k] * w[k];
-    }
-    if (!(s > 0) || !(M[j + n * j] > 0)) return 0.0;
-    d[j] = s;
-    dinv = 1.0 / s;
-    if (s / M[j + n * j] < best) best = s / M[j + n * j];
-    for (i = j + 1; i < n; ++i) {
-      double t = M[i + n * j];
-      for (k = 0; k < j; ++k) t -= L[i + n * k] * w[k];
-      L[i + n * j] = t * dinv;
-    }
-  }
+  double d[SNAKECG_NS], dinv[SNAKECG_NS], work[SNAKECG_NS], best;
+  int j;
+  best = sc_ldl_factor(SNAKECG_NS, M, SNAKECG_NS, 0, L, SNAKECG_NS, d, dinv, 0, 0.0, work);
+  for (j = 0; j < SNAKECG_NS; ++j)
+    if (!(d[j] > 0) || !(M[j + SNAKECG_NS * j] > 0)) return 0.0;
   return isfinite(best) ? best : 0.0;
 }
 
@@ -106,13 +82,15 @@ static int solve_one(sc_work_t *ws, const double *scene, const sc_constants *c, 
   signed char state[SNAKECG_NC];
   double u[SNAKECG_NC]; /* the rows' bounds */
   long it;
-  int r, i, moved = 1, pass, coupled = 0;
+  int r, i, moved = 1, pass, coupled = 0, system_ok = 1;
   double *lam = out + OUT_lam, *w = out + OUT_w, *qdd = out + OUT_qdd, *a = out + OUT_a_obj;
 
   memcpy(out + OUT_tau, tau, sizeof(double) * SNAKECG_NA);
   /* q_obj_in == NULL: the object placed at the scene's contact from q */
-  if (sc_contact_system(ws, scene, q, v, tau, q_obj_in, v_obj, f_obj, rho_in, &sys))
-    return STATUS_FALLBACK;
+  if (sc_contact_system(ws, scene, q, v, tau, q_obj_in, v_obj, f_obj, rho_in, &sys)) {
+    system_ok = 0;
+    goto edge;
+  }
   /* present 2: a SUPPORT row (held always, may depend on the others) */
   for (r = 0; r < nc; ++r)
     state[r] = present[r] == 2.0 ? SUPPORT : present[r] != 0.0 ? HELD : ABSENT;
@@ -125,7 +103,7 @@ static int solve_one(sc_work_t *ws, const double *scene, const sc_constants *c, 
     moved = 1;
     for (it = 0; it < max_iter && moved; ++it) {
       pivot = sc_held_forces(state, G, b, u, 0, lam);
-      if (!(pivot > c->pivot_tol) || !all_finite(lam, nc, INFINITY)) return STATUS_FALLBACK;
+      if (!(pivot > c->pivot_tol) || !all_finite(lam, nc, INFINITY)) goto edge;
       for (r = 0; r < nc; ++r) { /* w = G_c lam + b (eq. 13) */
         double t = b[r];
         for (i = 0; i < nc; ++i) t += G[r + nc * i] * lam[i];
@@ -133,7 +111,7 @@ static int solve_one(sc_work_t *ws, const double *scene, const sc_constants *c, 
       }
       moved = sc_next_states(state, lam, w, G, u, c->rel_tol);
     }
-    if (moved) return STATUS_FALLBACK; /* not settled: enumeration, in the reference path */
+    if (moved) goto edge; /* not settled: enumeration, in the reference path */
     if (!coupled) break;
 #ifdef SCENE_friction
     for (r = 0; r < nc; ++r) { /* the bounds from the forces just solved */
@@ -147,11 +125,11 @@ static int solve_one(sc_work_t *ws, const double *scene, const sc_constants *c, 
     }
 #endif
     if (change <= 1e-14 * size) break;
-    if (pass >= SC_BOUND_PASSES) return STATUS_FALLBACK;
+    if (pass >= SC_BOUND_PASSES) goto edge;
   }
-  if (!(pivot > c->weak)) return STATUS_FALLBACK; /* weak rows: factored directly there */
+  if (!(pivot > c->weak)) goto edge; /* weak rows: factored directly there */
   mass = mass_pivot_ratio(M, S);
-  if (!(mass > c->mass_tol)) return STATUS_FALLBACK;
+  if (!(mass > c->mass_tol)) goto edge;
   /* eq. (18): the forces back into the accelerations */
   for (i = 0; i < ns; ++i) {
     double t = sys.qdd_free[i];
@@ -193,17 +171,32 @@ static int solve_one(sc_work_t *ws, const double *scene, const sc_constants *c, 
   if (fabs(nl) > scale) scale = fabs(nl);
   if (!isfinite(scale) || !isfinite(out[OUT_sr]) || !all_finite(qdd, ns, INFINITY) ||
       !all_finite(a, 3, INFINITY))
-    return STATUS_FALLBACK;
+    goto edge;
   if (nq < -c->sane_tol * scale || na < -c->sane_tol * scale || nl < -c->sane_tol * scale ||
       out[OUT_sr] < -c->sane_tol || out[OUT_sr] > 1.0 + c->sane_tol)
-    return STATUS_FALLBACK;
+    goto edge;
   if (state[0] != HELD) out[OUT_sr] = 0.0; /* eq. 30: no interaction without contact */
   out[OUT_gap] = sys.gap;
   out[OUT_conditioning] = pivot < mass ? (pivot < 1.0 ? pivot : 1.0) : (mass < 1.0 ? mass : 1.0);
   out[OUT_singular] = 0.0;
   for (r = 0; r < nc; ++r) out[OUT_state + r] = (double)state[r];
   return STATUS_EXACT;
+edge: /* the rare sample: the reference rules, in rows.c (a spatial scene flags it) */
+#ifdef SCENE_in_norm
+  (void)system_ok;
+  return STATUS_FALLBACK;
+#else
+  {
+    int at_rest = 1;
+    for (r = 0; r < ns; ++r) at_rest &= v[r] == 0.0;
+    for (r = 0; r < 3; ++r) at_rest &= v_obj[r] == 0.0;
+    sc_forward_edge(system_ok ? &sys : 0, scene, c, max_iter, at_rest,
+                    system_ok ? mass_pivot_ratio(M, S) : 0.0, out);
+    return (int)out[OUT_status];
+  }
+#endif
 }
+
 
 /* The forward analysis of n samples.
  *
@@ -229,6 +222,8 @@ int SNAKECG_EXPORT(core_forward)(sc_int n, const double *scene, const double *co
   c.mass_tol = constants[3];
   c.sane_tol = constants[4];
   c.force_limit = constants[5];
+  c.row_tol = constants[6];
+  c.regularization = constants[7];
   vlim = sqrt(c.force_limit);
   /* inputs first: bad input refuses the whole call before any work */
   for (i = 0; i < n; ++i) {

@@ -64,7 +64,7 @@ class Layout:
 
     def out_fields(self) -> tuple[tuple[str, int], ...]:
         """Columns of one output row: the :class:`~snakecg.ForwardResult` fields, the row
-        states (solver codes) and the sample's status (0 exact, 1 for the reference path)."""
+        states (solver codes) and the sample's status (0 exact, else the code of snakecg.rows.REASONS)."""
         nc = self.n_constraints
         return (("tau", self.n_joints), ("qdd", self.n_coordinates), ("a_obj", 3), ("lam", nc),
                 ("w", nc), ("norm_lambda", 1), ("norm_a_obj", 1), ("norm_qdd", 1), ("sr", 1),

@@ -9,9 +9,12 @@
  *
  *   sc_lu_factor / sc_lu_solve          Gaussian elimination with partial pivoting (alg. 3.4.1)
  *   sc_cholesky / sc_cholesky_solve     A = L L^T, with a relative pivot threshold (alg. 4.2.2)
+ *   sc_ldl_factor / sc_ldl_solve        A = L D L^T without pivoting, rows that may drop out
  *   sc_eigen_symmetric                  cyclic Jacobi rotations, eigenvectors optional (8.5.3)
  *   sc_qr_least_squares                 Householder QR with column pivoting (alg. 5.4.1), the
  *                                       basic solution of a least-squares problem of any rank
+ *   sc_qr_factor / sc_qr_apply          Householder QR without pivoting (alg. 5.2.1)
+ *   sc_svd_jacobi / sc_svd_least_norm   one-sided Jacobi SVD (8.6.3), least-norm solutions
  */
 #ifndef SNAKECG_ENGINE_LINALG_H
 #define SNAKECG_ENGINE_LINALG_H
@@ -152,6 +155,59 @@ static inline void sc_cholesky_solve(sc_int n, const double *L, sc_int ld, doubl
     double s = b[i];
     for (k = i + 1; k < n; ++k) s -= L[k * ld + i] * b[k];
     b[i] = s / L[i * ld + i];
+  }
+}
+
+/* ---------------------------------------------------------------------------------------
+ * A = L D L^T of a symmetric n x n matrix without pivoting (alg. 4.1.2): the matrix is rows
+ * and columns idx[0..n) of A (column-major, A_ij at A[i + j lda], its lower triangle read;
+ * idx null: the first n), unit lower L at L[i + j ldl] (strictly below the diagonal written),
+ * d and dinv = 1 / d; work holds n doubles. drop (may be null): on entry, drop[j] != 0 lets
+ * row j be dropped when its pivot ratio d_j / A_jj is at most drop_tol in magnitude (then
+ * d_j = dinv_j = 0 and column j of L is zero); on exit, whether it was. Returns the smallest
+ * pivot ratio d_j / A_jj of the rows kept, at most 1 (NaN propagates). */
+static inline double sc_ldl_factor(sc_int n, const double *A, sc_int lda, const int *idx,
+                                   double *L, sc_int ldl, double *d, double *dinv, int *drop,
+                                   double drop_tol, double *work) {
+  double ratio = 1.0, *ld = work; /* row j of L D */
+  sc_int i, j, k;
+#define SC_A(i, j) (idx ? A[idx[i] + lda * idx[j]] : A[(i) + lda * (j)])
+  SC_UNROLL
+  for (j = 0; j < n; ++j) {
+    double s = SC_A(j, j), r;
+    for (k = 0; k < j; ++k) {
+      ld[k] = L[j + ldl * k] * d[k];
+      s -= L[j + ldl * k] * ld[k];
+    }
+    r = s / SC_A(j, j);
+    if (drop) drop[j] = drop[j] && fabs(r) <= drop_tol;
+    if (drop && drop[j]) { /* dependent: out of the factorization */
+      d[j] = dinv[j] = 0.0;
+      for (i = j + 1; i < n; ++i) L[i + ldl * j] = 0.0;
+      continue;
+    }
+    d[j] = s;
+    dinv[j] = 1.0 / s; /* one division per pivot */
+    if (!(r >= ratio)) ratio = r;
+    for (i = j + 1; i < n; ++i) {
+      double t = SC_A(i, j);
+      for (k = 0; k < j; ++k) t -= L[i + ldl * k] * ld[k];
+      L[i + ldl * j] = t * dinv[j];
+    }
+  }
+#undef SC_A
+  return ratio;
+}
+
+/* y := (L D L^T)^-1 y with sc_ldl_factor's factors (a dropped row: dinv 0, a zero column) */
+static inline void sc_ldl_solve(sc_int n, const double *L, sc_int ldl, const double *dinv,
+                                double *y) {
+  sc_int i, k;
+  for (i = 0; i < n; ++i) /* forward, diagonal and back substitution */
+    for (k = 0; k < i; ++k) y[i] -= L[i + ldl * k] * y[k];
+  for (i = n - 1; i >= 0; --i) {
+    y[i] *= dinv[i];
+    for (k = i + 1; k < n; ++k) y[i] -= L[k + ldl * i] * y[k];
   }
 }
 
@@ -354,6 +410,116 @@ static inline void sc_trust_region_2d(const double *H, const double *g, double *
     if (nn > 0) { y0 /= nn; y1 /= nn; } /* on the circle exactly */
     x[0] = y0 * v[0][0] + y1 * v[1][0];
     x[1] = y0 * v[0][1] + y1 * v[1][1];
+  }
+}
+
+/* ---------------------------------------------------------------------------------------
+ * Householder QR without pivoting of the m columns of A (n >= m rows; column j at A + j ld):
+ * A = Q R (alg. 5.2.1). In place: R's strict upper triangle above the diagonal (R_kj at
+ * A[k + j ld]), its diagonal in rd, the reflectors' vectors v_k on and below the diagonal
+ * (H_k = 1 - v_k v_k^T 2 / beta_k, beta_k = v_k . v_k, 0 for a zero column: H_k = 1). */
+static inline void sc_qr_factor(sc_int n, sc_int m, double *A, sc_int ld, double *rd,
+                                double *beta) {
+  sc_int i, j, k;
+  for (k = 0; k < m; ++k) {
+    double *v = A + k * ld, nrm = 0.0, alpha, bk;
+    for (i = k; i < n; ++i) nrm += v[i] * v[i];
+    nrm = sqrt(nrm);
+    alpha = v[k] > 0 ? -nrm : nrm;
+    if (nrm == 0.0) {
+      rd[k] = 0.0;
+      beta[k] = 0.0;
+      continue;
+    }
+    v[k] -= alpha;
+    bk = 0.0;
+    for (i = k; i < n; ++i) bk += v[i] * v[i];
+    beta[k] = bk;
+    rd[k] = alpha;
+    for (j = k + 1; j < m; ++j) { /* a_j -= v (v . a_j) 2 / beta */
+      double *aj = A + j * ld, s = 0.0;
+      for (i = k; i < n; ++i) s += v[i] * aj[i];
+      s = 2.0 * s / bk;
+      for (i = k; i < n; ++i) aj[i] -= s * v[i];
+    }
+  }
+}
+
+/* x := Q^T x (transpose 1) or Q x (transpose 0), n entries, with sc_qr_factor's reflectors */
+static inline void sc_qr_apply(sc_int n, sc_int m, const double *A, sc_int ld,
+                               const double *beta, double *x, int transpose) {
+  sc_int i, k, step;
+  for (step = 0; step < m; ++step) {
+    const double *v;
+    double s = 0.0;
+    k = transpose ? step : m - 1 - step;
+    if (beta[k] == 0.0) continue;
+    v = A + k * ld;
+    for (i = k; i < n; ++i) s += v[i] * x[i];
+    s = 2.0 * s / beta[k];
+    for (i = k; i < n; ++i) x[i] -= s * v[i];
+  }
+}
+
+/* ---------------------------------------------------------------------------------------
+ * The singular values of the n x m matrix U (m columns, column j at U + j ld) by one-sided
+ * Jacobi rotations (Hestenes; Golub & Van Loan 8.6.3): U := U V with orthogonal columns, V
+ * (m x m, column j at V + j m) the right singular vectors, s_j = |U_j|. Rotations until every
+ * pair of columns is orthogonal to rounding (at most 60 sweeps). */
+static inline void sc_svd_jacobi(sc_int n, sc_int m, double *U, sc_int ld, double *V,
+                                 double *s) {
+  sc_int i, p, q;
+  int sweep, rotated = 1;
+  for (p = 0; p < m; ++p)
+    for (q = 0; q < m; ++q) V[p + q * m] = p == q ? 1.0 : 0.0;
+  for (sweep = 0; sweep < 60 && rotated; ++sweep) {
+    rotated = 0;
+    for (p = 0; p < m - 1; ++p)
+      for (q = p + 1; q < m; ++q) {
+        double *up = U + p * ld, *uq = U + q * ld, al = 0.0, be = 0.0, ga = 0.0, ze, t, c, sn;
+        for (i = 0; i < n; ++i) {
+          al += up[i] * up[i];
+          be += uq[i] * uq[i];
+          ga += up[i] * uq[i];
+        }
+        if (!(fabs(ga) > 1e-16 * sqrt(al * be))) continue;
+        rotated = 1;
+        ze = (be - al) / (2.0 * ga);
+        t = (ze >= 0 ? 1.0 : -1.0) / (fabs(ze) + sqrt(1.0 + ze * ze));
+        c = 1.0 / sqrt(1.0 + t * t);
+        sn = c * t;
+        for (i = 0; i < n; ++i) {
+          double a = up[i], b = uq[i];
+          up[i] = c * a - sn * b;
+          uq[i] = sn * a + c * b;
+        }
+        for (i = 0; i < m; ++i) {
+          double a = V[i + p * m], b = V[i + q * m];
+          V[i + p * m] = c * a - sn * b;
+          V[i + q * m] = sn * a + c * b;
+        }
+      }
+  }
+  for (p = 0; p < m; ++p) s[p] = sc_norm(U + p * ld, n);
+}
+
+/* The least-norm least-squares solution x (m) from sc_svd_jacobi's factors, singular values at
+ * most rcond times the largest dropped (numpy.linalg.lstsq's rule): of U x = b (b: n entries;
+ * gram 0) or of (U^T U) x = b (b: m entries; gram 1, whose singular values are s^2). */
+static inline void sc_svd_least_norm(sc_int n, sc_int m, const double *U, sc_int ld,
+                                     const double *V, const double *s, const double *b,
+                                     double rcond, int gram, double *x) {
+  sc_int i, j;
+  double smax = 0.0;
+  for (j = 0; j < m; ++j)
+    if (s[j] > smax) smax = s[j];
+  for (i = 0; i < m; ++i) x[i] = 0.0;
+  for (j = 0; j < m; ++j) {
+    double c;
+    if (gram ? !(s[j] * s[j] > rcond * smax * smax) : !(s[j] > rcond * smax)) continue;
+    c = gram ? sc_dot(V + j * m, b, m) : sc_dot(U + j * ld, b, n);
+    c /= s[j] * s[j];
+    for (i = 0; i < m; ++i) x[i] += V[i + j * m] * c;
   }
 }
 

@@ -25,8 +25,6 @@
 /* row states (snakecg/solver.py) */
 enum { SC_PIECE_ABSENT = 0, SC_PIECE_HELD = 1, SC_PIECE_LOST = 2, SC_PIECE_SLIDE_POS = 3, SC_PIECE_SLIDE_NEG = 4 };
 
-#define SC_PIECE_MAX 16
-
 /* one condition into slot `*k` of the pair: coefficients a (stride `sa`, times `sign`), the
  * constant b; scaled to a largest coefficient of 1 */
 static void sc_piece_add(double *cond, sc_int *flip, sc_int *row, int *k, int na, const double *a,
@@ -50,7 +48,7 @@ static void sc_piece_add(double *cond, sc_int *flip, sc_int *row, int *k, int na
  *   out per pair: Lam (nc, na), lam0 (nc), W (nc, na), w0 (nc), Q (ns, na), q0 (ns),
  *   Aa (3, na), a0 (3), cond (mfull, na + 1), flip (mfull, the state across, -1 unused),
  *   row (mfull).
- * Returns the largest number of used conditions of a pair, -1 when a size exceeds SC_PIECE_MAX or
+ * Returns the largest number of used conditions of a pair, -1 when a size is not positive or
  * mfull is too small, -2 - p when pair p's held rows are singular. */
 sc_int SNAKECG_EXPORT(core_pieces)(sc_int P, sc_int na_, sc_int nc_, sc_int ns_, sc_int mfull,
                                    const sc_int *cfg, const signed char *states,
@@ -59,10 +57,10 @@ sc_int SNAKECG_EXPORT(core_pieces)(sc_int P, sc_int na_, sc_int nc_, sc_int ns_,
                                    const double *Ka, double *Lam, double *lam0, double *W,
                                    double *w0, double *Q, double *q0, double *Aa, double *a0,
                                    double *cond, sc_int *flip, sc_int *row) {
-  const int na = (int)na_, nc = (int)nc_, ns = (int)ns_;
+  const int na = (int)na_, nc = (int)nc_, ns = (int)ns_, D = na > nc ? na : nc;
   int mmax = 0, r;
   sc_int p;
-  if (na > SC_PIECE_MAX || nc > SC_PIECE_MAX || na < 1 || nc < 1 || ns < 1) return -1;
+  if (na < 1 || nc < 1 || ns < 1) return -1;
   {
     int need = 2;
     for (r = 1; r < nc; ++r)
@@ -79,8 +77,8 @@ sc_int SNAKECG_EXPORT(core_pieces)(sc_int P, sc_int na_, sc_int nc_, sc_int ns_,
     double *Ap = Aa + p * 3 * na, *a0p = a0 + p * 3;
     double *cp = cond + p * mfull * (na + 1);
     sc_int *fp = flip + p * mfull, *rp = row + p * mfull;
-    double lf[SC_PIECE_MAX], M[SC_PIECE_MAX * SC_PIECE_MAX], X[SC_PIECE_MAX * (SC_PIECE_MAX + 1)];
-    int H[SC_PIECE_MAX], nh = 0, i, j, l, k = 0;
+    double lf[D], M[D * D], X[D * (D + 1)]; /* D = max(na, nc): any size */
+    int H[D], nh = 0, i, j, l, k = 0;
     /* the fixed forces and the held rows */
     for (r = 0; r < nc; ++r) {
       double ub = isfinite(bounds[r]) ? bounds[r] : 0.0;

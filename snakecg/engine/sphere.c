@@ -31,8 +31,8 @@
 
 
 /* largest na (and face dimension k) handled here; larger ones stay on NumPy's path */
-#define SC_SPHERE_MAX 16
-#define SC_SPHERE_CAND (4 * SC_SPHERE_MAX + 2)
+/* the most stationary points of a face of dimension k */
+#define SC_SPHERE_CAND(k) (4 * (k) + 2)
 
 /* Functions with the signs and zeros of phi (which = 0) and phi' (which = 1), nearly linear
  * near the poles so that Newton's method converges in a few steps, and their slopes:
@@ -140,7 +140,7 @@ static void sc_sphere_point(int k, const double *e, const double *gv, const doub
  * Ar = V diag(e) V^T (e ascending). */
 static int sc_sphere_candidates(int k, const double *e, const double *V, const double *gr, double r,
                          double *Y) {
-  double gv[SC_SPHERE_MAX], P[SC_SPHERE_MAX], W[SC_SPHERE_MAX];
+  double gv[k], P[k], W[k];
   double emax = 0.0, gmax = 0.0, escale, tiny, near, r_safe = r > 1e-100 ? r : 1e-100;
   double r2 = r_safe * r_safe, wsum = 0.0, atol;
   int i, j, l, n = 0, J = 0;
@@ -209,7 +209,7 @@ static int sc_sphere_candidates(int k, const double *e, const double *V, const d
   }
   /* the hard case: mu an eigenvalue e_i whose gv_i vanishes (to within the roots' spread) */
   for (i = 0; i < k; ++i) {
-    double yp[SC_SPHERE_MAX], t, s2 = 0.0;
+    double yp[k], t, s2 = 0.0;
     int sgn;
     if (fabs(gv[i]) > near * r_safe) continue;
     for (l = 0; l < k; ++l) yp[l] = 0.0;
@@ -238,7 +238,7 @@ static int sc_sphere_candidates(int k, const double *e, const double *V, const d
  *        [skip_lo, skip_hi] is not searched: vmax/vmin -inf/+inf, vhi/vlo those bounds;
  *   out: vmax/umax, vmin/umin (feasible candidates; -inf/+inf where none),
  *        vhi/vlo (all candidates).
- * Returns 0, or -1 when na or k exceeds SC_SPHERE_MAX (nothing written). */
+ * Returns 0, or -1 when na or k is not positive or k > na (nothing written). */
 int SNAKECG_EXPORT(core_sphere_faces)(sc_int F, sc_int na_, sc_int k_, sc_int m_,
                                       const sc_int *pair, const double *u0, const double *Z,
                                       const double *r, const double *A, const double *g,
@@ -248,14 +248,14 @@ int SNAKECG_EXPORT(core_sphere_faces)(sc_int F, sc_int na_, sc_int k_, sc_int m_
                                       double *vhi, double *vlo) {
   int na = (int)na_, k = (int)k_, m = (int)m_;
   sc_int f;
-  if (na > SC_SPHERE_MAX || k > SC_SPHERE_MAX || na < 1 || k < 1) return -1;
+  if (na < 1 || k < 1 || k > na) return -1;
   for (f = 0; f < F; ++f) {
     const sc_int p = pair[f];
     const double *Ap = A + p * na * na, *gp = g + p * na, *cp = cond + p * m * (na + 1);
     const double *Zf = Z ? Z + f * na * k : 0, *u0f = Z ? u0 + f * na : 0;
     const double rf = Z ? r[f] : 1.0;
-    double Ar[SC_SPHERE_MAX * SC_SPHERE_MAX], gr[SC_SPHERE_MAX], h[SC_SPHERE_MAX], AZ[SC_SPHERE_MAX * SC_SPHERE_MAX];
-    double e[SC_SPHERE_MAX], V[SC_SPHERE_MAX * SC_SPHERE_MAX], Y[SC_SPHERE_CAND * SC_SPHERE_MAX], u[SC_SPHERE_MAX];
+    double Ar[na * na], gr[na], h[na], AZ[na * na]; /* k <= na: any size */
+    double e[na], V[na * na], Y[SC_SPHERE_CAND(na) * na], u[na];
     double bmax = -INFINITY, bmin = INFINITY, hi = -INFINITY, lo = INFINITY;
     int i, j, l, nc, ci, imax = -1, imin = -1;
     /* h = A u0 + g, gr = Z^T h, Ar = Z^T A Z */
@@ -374,20 +374,20 @@ int SNAKECG_EXPORT(core_sphere_faces)(sc_int F, sc_int na_, sc_int k_, sc_int m_
  * (Householder), u0 = Q_1 x where R^T x = -b, Z = Q_2 and r^2 = 1 - |u0|^2; a face is kept
  * where the rows are independent (|R_jj| > 1e-12) and r^2 >= 0. Writes the kept faces'
  * pair, combination index, u0 (F, na), Z (F, na, na - s) and r, in the order of pairs then
- * combinations (NumPy's order); returns their count F (at most P * ncombo), -1 when na
- * exceeds SC_SPHERE_MAX. */
+ * combinations (NumPy's order); returns their count F (at most P * ncombo), -1 when s is
+ * not in [1, na). */
 sc_int SNAKECG_EXPORT(core_sphere_cut)(sc_int P, sc_int na_, sc_int m_, sc_int s_, sc_int ncombo,
                                        const sc_int *combos, const double *cond,
                                        const unsigned char *used, sc_int *pair_out,
                                        sc_int *combo_out, double *u0, double *Z, double *r) {
   int na = (int)na_, m = (int)m_, s = (int)s_, k = na - s;
   sc_int p, ci, F = 0;
-  if (na > SC_SPHERE_MAX || s < 1 || s >= na) return -1;
+  if (s < 1 || s >= na) return -1;
   for (p = 0; p < P; ++p) {
     const double *cp = cond + p * m * (na + 1);
     for (ci = 0; ci < ncombo; ++ci) {
       const sc_int *sl = combos + ci * s;
-      double Q[SC_SPHERE_MAX * SC_SPHERE_MAX], R[SC_SPHERE_MAX * SC_SPHERE_MAX], x[SC_SPHERE_MAX], rr = 1.0;
+      double Q[na * na], R[na * na], x[na], rr = 1.0;
       int i, j, l, ok = 1;
       for (j = 0; j < s; ++j) ok &= used[p * m + sl[j]] != 0;
       if (!ok) continue;
@@ -396,7 +396,7 @@ sc_int SNAKECG_EXPORT(core_sphere_cut)(sc_int P, sc_int na_, sc_int m_, sc_int s
         for (j = 0; j < s; ++j) R[i * s + j] = cp[sl[j] * (na + 1) + i];
       }
       for (j = 0; j < s && ok; ++j) { /* Householder on column j, rows j.. */
-        double nx = 0.0, alpha, v[SC_SPHERE_MAX], vv = 0.0;
+        double nx = 0.0, alpha, v[na], vv = 0.0;
         for (i = j; i < na; ++i) nx += R[i * s + j] * R[i * s + j];
         nx = sqrt(nx);
         alpha = R[j * s + j] >= 0 ? -nx : nx;
@@ -453,10 +453,10 @@ int SNAKECG_EXPORT(core_sphere_meets)(sc_int F, sc_int na_, sc_int k_, sc_int m_
                                       unsigned char *meets) {
   int na = (int)na_, k = (int)k_, m = (int)m_;
   sc_int f;
-  if (na > SC_SPHERE_MAX || k > SC_SPHERE_MAX) return -1;
+  if (na < 1 || k < 1 || k > na) return -1;
   for (f = 0; f < F; ++f) {
     const double *Zf = Z + f * na * k, *cp = cond + pair[f] * m * (na + 1);
-    double gz[SC_SPHERE_MAX], ng = 0.0;
+    double gz[k], ng = 0.0;
     int i, l, j, sgn, hit = 0;
     if (k == 1) {
       gz[0] = 1.0;
@@ -471,7 +471,7 @@ int SNAKECG_EXPORT(core_sphere_meets)(sc_int F, sc_int na_, sc_int k_, sc_int m_
       for (l = 0; l < k; ++l) gz[l] = ng > 1e-14 ? gz[l] / ng : (l == 0 ? 1.0 : 0.0);
     }
     for (sgn = 1; sgn >= -1 && !hit; sgn -= 2) {
-      double u[SC_SPHERE_MAX];
+      double u[na];
       int ok = 1;
       for (i = 0; i < na; ++i) {
         double t = 0.0;

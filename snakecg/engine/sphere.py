@@ -24,10 +24,7 @@ import itertools
 
 import numpy as np
 
-__all__ = ["MAX_DIM", "SphereKernel"]
-
-#: Largest ``n_a`` the C handles (``SK_MAX`` of sphere.c); larger models stay on NumPy.
-MAX_DIM = 16
+__all__ = ["SphereKernel"]
 
 
 def _c(a, dtype=np.float64):
@@ -73,8 +70,8 @@ class SphereKernel:
         P = len(cfg)
         if (G.shape != (n, nc, nc) or Q0.shape != (n, ns, na) or A0.shape != (n, 3, na)
                 or Kq.shape != (n, ns, nc) or Ka.shape != (n, 3, nc)
-                or states.shape != (P, nc) or bounds.shape != (nc,) or na > MAX_DIM
-                or nc > MAX_DIM or (P and (cfg.min() < 0 or cfg.max() >= n))):
+                or states.shape != (P, nc) or bounds.shape != (nc,)
+                or (P and (cfg.min() < 0 or cfg.max() >= n))):
             raise ValueError("sphere kernel: inconsistent piece inputs")
         mfull = 2 + 4 * int(np.sum(np.isfinite(bounds[1:])))
         out = [np.empty((P, nc, na)), np.empty((P, nc)), np.empty((P, nc, na)),
@@ -100,7 +97,7 @@ class SphereKernel:
         cond = _c(cond)
         P, m, na = cond.shape[0], cond.shape[1], cond.shape[2] - 1
         used = _c(used, np.uint8)
-        if used.shape != (P, m) or not 1 <= s < na or na > MAX_DIM:
+        if used.shape != (P, m) or not 1 <= s < na:
             raise ValueError("sphere kernel: bad face batch")
         combos = np.array(list(itertools.combinations(range(m), s)), dtype=np.int64)
         cap = P * len(combos)
@@ -110,7 +107,7 @@ class SphereKernel:
                       used.ctypes.data, pair.ctypes.data, combo.ctypes.data, u0.ctypes.data,
                       Z.ctypes.data, r.ctypes.data)
         if F < 0:
-            raise ValueError(f"sphere kernel: n_a = {na} above {MAX_DIM}")
+            raise ValueError(f"sphere kernel: a cut of {s} conditions in n_a = {na}")
         return pair[:F], combos[combo[:F]].astype(np.intp), u0[:F], Z[:F], r[:F]
 
     def meets(self, pair, u0, Z, r, cond, direction, feas_tol):
@@ -122,7 +119,7 @@ class SphereKernel:
         if F and self._meets(F, na, k, cond.shape[1], pair.ctypes.data, u0.ctypes.data,
                              Z.ctypes.data, r.ctypes.data, cond.ctypes.data,
                              direction.ctypes.data, float(feas_tol), out.ctypes.data):
-            raise ValueError(f"sphere kernel: n_a = {na} above {MAX_DIM}")
+            raise ValueError(f"sphere kernel: faces of n_a = {na} with a bad dimension")
         return out.view(bool)
 
     def candidates(self, pair, u0, Z, r, A, g, c, cond, feas_tol, *, identity=False,
@@ -171,6 +168,5 @@ class SphereKernel:
             edges = np.linspace(0, F, n_threads + 1).astype(int)
             status = list(pool.map(run, edges[:-1], edges[1:]))
         if any(s != 0 for s in status):
-            raise ValueError(f"sphere kernel: n_a = {na} or face dimension {k} above "
-                             f"{MAX_DIM}")
+            raise ValueError(f"sphere kernel: n_a = {na} with face dimension {k}")
         return vmax, umax, vmin, umin, vhi, vlo

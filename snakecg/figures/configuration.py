@@ -86,14 +86,14 @@ def plot(scene, q, tau=None, ax=None, *, title: str | None = None):
         from ..scenes.drawing import plot_scene  # objects, obstacles, every contact
 
         if isinstance(scene, GeneralScene):
-            from ..model import load  # a scene given: the facade loads its model
+            from ..loading import load  # a scene given: its model
 
             scene = load(scene)
         return plot_scene(scene, q, tau, ax, title=title)
     if is_scene_model(scene):
         model = scene
     elif isinstance(scene, Scene):
-        from ..model import load  # a scene given: the facade loads its model
+        from ..loading import load  # a scene given: its model
 
         model = load(scene)
     else:

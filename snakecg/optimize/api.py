@@ -13,6 +13,7 @@ import numpy as np
 from ..engine.optimal import CHECK, KINDS, REASON
 from ..errors import SnakecgError
 from .answers import result
+from .arguments import screen
 from .query import Query, validate
 from .result import (ACTIVE, CHECK_TOL, FRICTION_MARGIN, HESSIAN_REG, LP_REG, SR_TIE,
                      TOLERANCE, OptimizeResult)
@@ -133,3 +134,13 @@ def _configurations(model, q):
             and q.flags.c_contiguous and math.isfinite(float(q.sum()))):
         return q[None, :], False
     return model.configurations(q)
+
+
+def optimize_model(model, q, objective, kwargs: dict) -> OptimizeResult:
+    """:meth:`SceneModel.optimize`: a batch's memory checked first, the keywords screened
+    (:func:`~snakecg.optimize.arguments.screen`), then :func:`optimize`."""
+    if not (type(q) is np.ndarray and q.ndim == 1):  # a batch: its memory first
+        qa, _ = model._q(q)
+        model._check_memory("optimize", qa.shape[0], ["place_object", "interaction_maps"],
+                            extra=model.columns.width + 4 * model.n_joints)
+    return optimize(model, q, objective=objective, **screen(kwargs))

@@ -31,7 +31,7 @@ def _model(scene):
     with _LOCK:
         model = _MODELS.get(scene)
         if model is None:
-            from ..model import load
+            from ..loading import load
 
             model = _MODELS[scene] = load(scene)
         return model
