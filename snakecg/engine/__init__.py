@@ -46,6 +46,8 @@ class Core:
         ``core_settle``, run.c's ``core_run``."""
         self.scene_solve = lib.entry_or_none("core_scene_solve")
         """scene_solve.c's ``core_scene_solve``: the exact solve of general scenes' samples."""
+        self.scene_forward = lib.entry_or_none("core_scene_forward")
+        """scene_rows.c's ``core_scene_forward``: a general scene's forward solve of a batch."""
         self.contact_depth = lib.entry_or_none("core_contact_depth")
         """geometry.c's ``core_contact_depth``: the simulation's contact check at states."""
         self.sphere = SphereKernel(lib)
