@@ -54,28 +54,49 @@ class SceneResult:
         self._model, self._out, self._ccap = model, out, ccap
         self.batched = batched
         self._inputs = inputs  # (q, tau, f_obj) of every sample, for the details
-        self._detail = None
-        self._reasons = None
-        self._lists = None
-        pk, off = model.packed, model.packed.offsets()
-        o = out if batched else out[0]
-        ns, no = pk.n_s, pk.n_objects
-        one = (lambda k: o[:, k]) if batched else (lambda k: o[k])
-        self.qdd = o[..., off["qdd"]:off["qdd"] + ns]
-        self.a_obj = o[..., off["a_obj"]:off["a_obj"] + 3 * no].reshape(o.shape[:-1] + (no, 3))
-        self.norm_qdd = one(SO_NORM_QDD)
-        self.norm_a_obj = one(SO_NORM_A)
-        self.norm_a_obj_each = o[..., off["each"]:off["each"] + no]
-        self.norm_lambda = one(SO_NORM_L)
-        self.sr = one(SO_SR)
-        self.status = o[:, 0].astype(int) if batched else int(o[0])
-        self.dependent = o[:, 1].astype(int) if batched else int(o[1])
-        self.certificate = {k: one(INFO.index(k)) for k in ("primal", "dual",
-                                                           "complementarity")}
+        self._detail = self._reasons = self._lists = None
+
+    # the arrays: views into the engine's rows (a batch) or numbers (one sample) -----------
+    def _col(self, k):
+        return self._out[:, k] if self.batched else self._out[0, k]
+
+    def _span(self, name: str, size: int):
+        o = self._model.packed.offset[name]
+        return self._out[:, o:o + size] if self.batched else self._out[0, o:o + size]
+
+    @property
+    def qdd(self) -> np.ndarray:
+        return self._span("qdd", self._model.packed.n_s)
+
+    @property
+    def a_obj(self) -> np.ndarray:
+        no = self._model.packed.n_objects
+        return self._span("a_obj", 3 * no).reshape((-1, no, 3) if self.batched else (no, 3))
+
+    @property
+    def norm_a_obj_each(self) -> np.ndarray:
+        return self._span("each", self._model.packed.n_objects)
+
+    norm_qdd = property(lambda self: self._col(SO_NORM_QDD))
+    norm_a_obj = property(lambda self: self._col(SO_NORM_A))
+    norm_lambda = property(lambda self: self._col(SO_NORM_L))
+    sr = property(lambda self: self._col(SO_SR))
+
+    @property
+    def status(self):
+        return self._out[:, 0].astype(int) if self.batched else int(self._out[0, 0])
+
+    @property
+    def dependent(self):
+        return self._out[:, 1].astype(int) if self.batched else int(self._out[0, 1])
+
+    @property
+    def certificate(self) -> dict:
+        return {k: self._col(INFO.index(k)) for k in ("primal", "dual", "complementarity")}
 
     # the per-sample entries -------------------------------------------------------------
     def _sample_lists(self, s: int):
-        pk, off, sc = self._model.packed, self._model.packed.offsets(), self._model.scene
+        pk, off, sc = self._model.packed, self._model.packed.offset, self._model.scene
         row = self._out[s]
         status = int(row[0])
         no = pk.n_objects

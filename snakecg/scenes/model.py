@@ -6,6 +6,8 @@ calls are)."""
 
 from __future__ import annotations
 
+import threading
+
 import numpy as np
 
 from .._inputs import as_batch, broadcast_batches, check_batch_memory
@@ -44,6 +46,7 @@ class GeneralSceneModel(RobotModel):
         self._pk = self.packed.vector.ctypes.data
         self._zero_f = np.zeros((1, 3 * scene.n_objects))
         self._shape_q, self._shape_tau = (self.n_coordinates,), (self.n_joints,)
+        self._one = _OneSample(self) if self._engine is not None else None
 
     def __getattr__(self, name):
         if name in _REFUSED:
@@ -70,10 +73,20 @@ class GeneralSceneModel(RobotModel):
                 and q.dtype is _F64 and tau.dtype is _F64 and q.shape == self._shape_q
                 and tau.shape == self._shape_tau and q.flags.c_contiguous
                 and tau.flags.c_contiguous and self._engine is not None):
-            # one sample of float64 arrays: straight to the engine (it checks finiteness)
-            out = self._run(q[None], tau[None], self._zero_f, 1, False)
-            if out is not None:
-                return self._result(out, False, (q[None], tau[None], self._zero_f))
+            # one sample of float64 arrays: through the model's one-sample buffers straight
+            # to the engine (which checks finiteness), one copy of the output row
+            one = self._one
+            if one.lock.acquire(False):
+                try:
+                    one.q[0] = q
+                    one.tau[0] = tau
+                    code = self._engine(*one.args)
+                    out = one.out.copy()
+                finally:
+                    one.lock.release()
+                if code == 0 and out[0, 0] != 4:
+                    return self._result(out, False, (q[None].copy(), tau[None].copy(),
+                                                     self._zero_f))
         if v is not None and np.any(np.asarray(v, dtype=float) != 0):
             raise InputError("v: a general scene is solved at rest (v = 0); velocities are not "
                              "supported yet")
@@ -186,7 +199,7 @@ class GeneralSceneModel(RobotModel):
         q, tau, fo = (np.ascontiguousarray(a) for a in inputs)
         self._call(q, tau, fo, N, ccap, again, det)
         starts = np.cumsum((0,) + pk.sizes)
-        off = pk.offsets()["contacts"]
+        off = pk.offset["contacts"]
         rows = []
         for s in range(N):
             if not ok[s]:
@@ -207,3 +220,22 @@ class GeneralSceneModel(RobotModel):
         raw = {"lam": det["lam"], "w": det["w"], "state": det["state"].astype(np.int64),
                "info": {name: out[:, i] for i, name in enumerate(INFO)}}
         return {"raw": raw, "rows": rows}
+
+
+class _OneSample:
+    """A model's buffers for one-sample calls (q, tau, the output row) and the engine's
+    arguments pointing at them, built once; taken under a non-blocking lock (a second thread
+    that finds it busy goes the general way)."""
+
+    __slots__ = ("q", "tau", "out", "args", "lock")
+
+    def __init__(self, model: GeneralSceneModel):
+        pk = model.packed
+        ccap = min(CONTACTS_FIRST, pk.contacts_max)
+        self.q = np.zeros((1, model.n_coordinates))
+        self.tau = np.zeros((1, model.n_joints))
+        self.out = np.empty((1, pk.width(ccap)))
+        self.args = (model._pk, 1, self.q.ctypes.data, 0, self.tau.ctypes.data, 0,
+                     model._zero_f.ctypes.data, 0, ccap, ccap + pk.ground_rows,
+                     self.out.ctypes.data, 0, 0, 0, 0)
+        self.lock = threading.Lock()

@@ -96,6 +96,8 @@ class Packed:
     ground_rows: int
     contacts_max: int
     tolerance: float
+    offset: dict
+    """where the per-sample fields start in an output row"""
 
     @property
     def n_ground(self) -> int:
@@ -104,13 +106,6 @@ class Packed:
     def width(self, ccap: int) -> int:
         """Doubles of one sample's output row with room for ``ccap`` contacts."""
         return SO_QDD + self.n_s + 7 * self.n_objects + 3 * self.n_ground + CR_W * ccap
-
-    def offsets(self) -> dict[str, int]:
-        """Where the per-sample fields start in an output row."""
-        ns, no = self.n_s, self.n_objects
-        return {"qdd": SO_QDD, "a_obj": SO_QDD + ns, "each": SO_QDD + ns + 3 * no,
-                "pose": SO_QDD + ns + 4 * no, "ground": SO_QDD + ns + 7 * no,
-                "contacts": SO_QDD + ns + 7 * no + 3 * self.n_ground}
 
 
 def pack(scene: GeneralScene, parameters: np.ndarray, n_s: int) -> Packed:
@@ -159,6 +154,11 @@ def pack(scene: GeneralScene, parameters: np.ndarray, n_s: int) -> Packed:
     head[:12] = (no, nob, scene.radius, scene.tolerance * size, size, len(blocks), mg,
                  *starts)
     vector = np.ascontiguousarray(np.concatenate([head, *parts]))
+    ng = len(blocks)
+    offset = {"qdd": SO_QDD, "a_obj": SO_QDD + n_s, "each": SO_QDD + n_s + 3 * no,
+              "pose": SO_QDD + n_s + 4 * no, "ground": SO_QDD + n_s + 7 * no,
+              "contacts": SO_QDD + n_s + 7 * no + 3 * ng}
     return Packed(vector, tuple(b[4] for b in blocks), tuple(b[5] for b in blocks),
                   tuple(b[3] for b in blocks), tuple(b[6] for b in blocks), n_s, no, mg,
-                  max(1, min(4 * _pairs(scene), MAX_ROWS - mg)), scene.tolerance * size)
+                  max(1, min(4 * _pairs(scene), MAX_ROWS - mg)), scene.tolerance * size,
+                  offset)
