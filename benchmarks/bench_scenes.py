@@ -3,11 +3,14 @@
 * **scene**: an ``--joints`` (default 10) joint snake, 2 objects (a box and a disc touching
   links), 4 pegs touching links, Coulomb ground on every link (mu 0.3) and under the objects:
   ``model.forward(q, tau)`` on one sample from Python (best of ``--repeat`` rounds of
-  ``--single`` calls) and batched (``--n`` samples, time per sample);
+  ``--single`` calls) and batched (``--n`` samples, time per sample, one thread);
+* **where the time goes** in the batched figure: the engine's exact solve alone
+  (``core_scene_solve`` on the same rows, inertia and forces, stacked), the engine's whole
+  call (contacts, rows, solve, metrics: ``core_scene_forward``), and the rest (Python);
 * **mj_forward**: MuJoCo's forward dynamics on the matched scene (capsule links on a planar
   base lying on a floor plane with gravity, box and cylinder objects on planar joints,
-  cylinder pegs fixed to the world, actuated joints), bare ``mj_forward`` and with qpos/ctrl
-  set and qacc copied;
+  cylinder pegs fixed to the world), bare ``mj_forward`` and with qpos and the applied
+  forces set and qacc copied;
 * **paper**: the paper's scene (3 joints, wheels, kappa 100) through the general path and
   through today's path, single and batched.
 
@@ -79,6 +82,30 @@ def mjcf(scene, P, obj_poses) -> str:
             f'{"".join(close)}{"".join(objs)}</worldbody>{motors}</mujoco>')
 
 
+def _where(model, q, tau, n, repeat) -> tuple[float, float, dict]:
+    """Per sample of a batch of n: the engine's whole call, its solve alone (on the same
+    rows), and the solve's info of the first sample."""
+    from snakecg.scenes.solve import solve
+
+    res = model.forward(q, tau)
+    rows, ns = res._rows[0], model.n_coordinates
+    no = model.scene.n_objects
+    M = np.zeros((n, ns + 3 * no, ns + 3 * no))
+    M[:, :ns, :ns] = model.mass_matrix(q)
+    for j, o in enumerate(model.scene.objects):
+        M[:, ns + 3 * j + np.arange(3), ns + 3 * j + np.arange(3)] = [o.mass, o.mass,
+                                                                       o.plate_inertia]
+    f = np.zeros((n, ns + 3 * no))
+    f[:, 3:ns] = tau
+    A = np.repeat(rows.A[None], n, axis=0)
+    args = (M, f, A, np.full(n, rows.A.shape[0]), np.repeat([rows.kind], n, axis=0),
+            np.repeat([rows.start], n, axis=0), np.repeat([rows.par], n, axis=0))
+    t_solve = best_of(lambda: solve(model.core, *args), repeat) / n
+    Q, T = np.repeat(q[None], n, axis=0), np.repeat(tau[None], n, axis=0)
+    t_call = best_of(lambda: model._run(Q, T, model._zero_f, n, True), repeat) / n
+    return t_call, t_solve, {k: float(v[0]) for k, v in res._raw["info"].items()}
+
+
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--joints", type=int, default=10)
@@ -86,6 +113,7 @@ def main() -> None:
     ap.add_argument("--single", type=int, default=300)
     ap.add_argument("--repeat", type=int, default=3)
     a = ap.parse_args()
+    os.environ["SNAKECG_THREADS"] = "1"
     rng = np.random.default_rng(0)
     print(f"machine: {platform.processor() or platform.machine()}, load {os.getloadavg()}")
     na = a.joints
@@ -94,14 +122,18 @@ def main() -> None:
     model = snakecg.load(scene)
     tau = rng.normal(0, 0.1, na)
     res = model.forward(q, tau)
-    print(f"scene: {na} joints, {len(res.contacts)} contacts, status {res.status}, "
-          f"sweeps {res._raw['info']['sweeps'][0]:.0f}")
+    t_call, t_solve, info = _where(model, q, tau, a.n, a.repeat)
+    print(f"scene: {na} joints, {len(res.contacts)} contacts, {res._rows[0].A.shape[0]} rows, "
+          f"status {res.status}, sweeps {info['sweeps']:.0f}, passes {info['passes']:.0f}, "
+          f"dependent {info['dependent']:.0f}")
     t1 = best_of(lambda: [model.forward(q, tau) for _ in range(a.single)], a.repeat) / a.single
     Q = np.repeat(q[None], a.n, axis=0)
     T = rng.normal(0, 0.1, (a.n, na))
     tb = best_of(lambda: model.forward(Q, T), a.repeat) / a.n
     print(f"  snakecg forward, single:  {t1 * 1e6:10.1f} us")
     print(f"  snakecg forward, batched: {tb * 1e6:10.1f} us per sample")
+    print(f"    of which the engine's call {t_call * 1e6:.1f} us, its solve alone "
+          f"{t_solve * 1e6:.1f} us (contacts, rows, metrics: {(t_call - t_solve) * 1e6:.1f} us)")
     try:
         import mujoco
 
@@ -113,8 +145,17 @@ def main() -> None:
         mujoco.mj_forward(m, d)
         tm = best_of(lambda: [mujoco.mj_forward(m, d) for _ in range(a.single)],
                      a.repeat) / a.single
+        qpos0 = d.qpos.copy()
+
+        def full():
+            d.qpos[:] = qpos0
+            d.qfrc_applied[3:3 + na] = tau
+            mujoco.mj_forward(m, d)
+            return d.qacc.copy()
+
+        tf = best_of(lambda: [full() for _ in range(a.single)], a.repeat) / a.single
         print(f"  mj_forward (bare, {d.ncon} contacts, MuJoCo {mujoco.__version__}): "
-              f"{tm * 1e6:8.1f} us")
+              f"{tm * 1e6:8.1f} us; with qpos, forces set and qacc copied: {tf * 1e6:8.1f} us")
     except ImportError:
         print("  mujoco not installed")
     paper = snakecg.Scene(snakecg.Robot(joints=3), scenario="wheels", kappa=100)
@@ -127,6 +168,9 @@ def main() -> None:
         b = best_of(lambda: mdl.forward(Q, T), a.repeat) / a.n
         print(f"  paper scene, {name:13s}: single {s * 1e6:9.1f} us, batched "
               f"{b * 1e6:9.2f} us per sample")
+    t_call, t_solve, info = _where(new, q0, t0, a.n, a.repeat)
+    print(f"    general path, of which the engine's call {t_call * 1e6:.2f} us, its solve alone "
+          f"{t_solve * 1e6:.2f} us per sample (sweeps {info['sweeps']:.0f})")
     print(f"load after: {os.getloadavg()}")
 
 
