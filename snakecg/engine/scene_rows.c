@@ -485,3 +485,24 @@ int SNAKECG_EXPORT(core_scene_forward)(const double *pk, sc_int n, const double 
   work_free(&sw);
   return 0;
 }
+
+/* core_scene_forward with its arguments in one struct: the one-sample calls pass a single
+ * pointer (a foreign call's cost grows with its argument count; snakecg/engine/binding.py
+ * mirrors it as SceneCall). */
+typedef struct {
+  const double *pk;
+  sc_int n;
+  const double *q;
+  sc_int sq;
+  const double *tau;
+  sc_int st;
+  const double *fo;
+  sc_int sf, ccap, mcap;
+  double *out, *A, *lam, *w, *state;
+} sc_scene_call;
+
+int SNAKECG_EXPORT(core_scene_forward_call)(const sc_scene_call *c) {
+  return SNAKECG_EXPORT(core_scene_forward)(c->pk, c->n, c->q, c->sq, c->tau, c->st, c->fo,
+                                            c->sf, c->ccap, c->mcap, c->out, c->A, c->lam,
+                                            c->w, c->state);
+}

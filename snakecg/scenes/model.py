@@ -11,6 +11,7 @@ import threading
 import numpy as np
 
 from .._inputs import as_batch, broadcast_batches, check_batch_memory
+from ..engine.binding import SceneCall, address
 from ..errors import BuildError, InputError
 from ..robot_model import RobotModel
 from .contacts import Contact, Rows
@@ -46,7 +47,8 @@ class GeneralSceneModel(RobotModel):
         self._pk = self.packed.vector.ctypes.data
         self._zero_f = np.zeros((1, 3 * scene.n_objects))
         self._shape_q, self._shape_tau = (self.n_coordinates,), (self.n_joints,)
-        self._one = _OneSample(self) if self._engine is not None else None
+        self._one = (_OneSample(self) if getattr(self.core, "scene_forward_call", None)
+                     is not None else None)
 
     def __getattr__(self, name):
         if name in _REFUSED:
@@ -72,21 +74,22 @@ class GeneralSceneModel(RobotModel):
         if (v is None and f_obj is None and type(q) is np.ndarray and type(tau) is np.ndarray
                 and q.dtype is _F64 and tau.dtype is _F64 and q.shape == self._shape_q
                 and tau.shape == self._shape_tau and q.flags.c_contiguous
-                and tau.flags.c_contiguous and self._engine is not None):
+                and tau.flags.c_contiguous and self._one is not None):
             # one sample of float64 arrays: through the model's one-sample buffers straight
             # to the engine (which checks finiteness), one copy of the output row
             one = self._one
             if one.lock.acquire(False):
                 try:
-                    one.q[0] = q
-                    one.tau[0] = tau
-                    code = self._engine(*one.args)
-                    out = one.out.copy()
+                    one.q[:] = q
+                    one.tau[:] = tau
+                    code = one.call(one.address)
+                    buf = one.buf.copy()  # the inputs and the output row in one copy
                 finally:
                     one.lock.release()
-                if code == 0 and out[0, 0] != 4:
-                    return self._result(out, False, (q[None].copy(), tau[None].copy(),
-                                                     self._zero_f))
+                ns, na = self._shape_q[0], self._shape_tau[0]
+                if code == 0 and buf[ns + na] != 4:
+                    return self._result(buf[None, ns + na:], False,
+                                        (buf[None, :ns], buf[None, ns:ns + na], self._zero_f))
         if v is not None and np.any(np.asarray(v, dtype=float) != 0):
             raise InputError("v: a general scene is solved at rest (v = 0); velocities are not "
                              "supported yet")
@@ -223,19 +226,22 @@ class GeneralSceneModel(RobotModel):
 
 
 class _OneSample:
-    """A model's buffers for one-sample calls (q, tau, the output row) and the engine's
-    arguments pointing at them, built once; taken under a non-blocking lock (a second thread
-    that finds it busy goes the general way)."""
+    """A model's buffer for one-sample calls (q, tau and the output row, side by side) and the
+    engine's arguments pointing into it, built once; taken under a non-blocking lock (a
+    second thread that finds it busy goes the general way)."""
 
-    __slots__ = ("q", "tau", "out", "args", "lock")
+    __slots__ = ("buf", "q", "tau", "args", "address", "call", "lock")
 
     def __init__(self, model: GeneralSceneModel):
         pk = model.packed
         ccap = min(CONTACTS_FIRST, pk.contacts_max)
-        self.q = np.zeros((1, model.n_coordinates))
-        self.tau = np.zeros((1, model.n_joints))
-        self.out = np.empty((1, pk.width(ccap)))
-        self.args = (model._pk, 1, self.q.ctypes.data, 0, self.tau.ctypes.data, 0,
-                     model._zero_f.ctypes.data, 0, ccap, ccap + pk.ground_rows,
-                     self.out.ctypes.data, 0, 0, 0, 0)
+        ns, na = model.n_coordinates, model.n_joints
+        self.buf = np.zeros(ns + na + pk.width(ccap))
+        self.q, self.tau = self.buf[:ns], self.buf[ns:ns + na]
+        base = self.buf.ctypes.data
+        self.args = SceneCall(model._pk, 1, base, 0, base + 8 * ns, 0,
+                              model._zero_f.ctypes.data, 0, ccap, ccap + pk.ground_rows,
+                              base + 8 * (ns + na), 0, 0, 0, 0)
+        self.address = address(self.args)
+        self.call = model.core.scene_forward_call
         self.lock = threading.Lock()
