@@ -12,22 +12,10 @@ from snakecg.errors import InputError
 from snakecg.scenes.contacts import Contact, Rows, link_ends, place_objects
 from snakecg.scenes.description import GeneralScene
 from snakecg.scenes.geometry import Shape, box_corners, closest
+from snakecg.scenes.packing import scene_size  # the scene's extent: a definition, shared
 from snakecg.scenes.solve import BOX, DISC, FREE, SPLIT, UNILATERAL
 
-__all__ = ["scene_size", "shapes", "rows_of"]
-
-
-def scene_size(scene: GeneralScene) -> float:
-    """The scene's extent (m): the robot's length, the objects' and obstacles' sizes."""
-    size = float(sum(scene.robot.length)) + 2 * scene.radius
-    for o in scene.objects:
-        size += 2 * o.radius if o.shape == "disc" else float(np.hypot(*o.size))
-    for o in scene.obstacles:
-        if o.shape == "peg":
-            size += 2 * o.radius
-        elif o.shape == "box":
-            size += float(np.hypot(*o.size))
-    return size
+__all__ = ["shapes", "rows_of"]
 
 
 def shapes(scene: GeneralScene, poses, obj_poses) -> list:
