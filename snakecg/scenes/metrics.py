@@ -51,10 +51,35 @@ class SceneResult:
     ``reason`` (why a sample was not solved, '' when it was)."""
 
     def __init__(self, model, out: np.ndarray, ccap: int, batched: bool, inputs: tuple):
-        self._model, self._out, self._ccap = model, out, ccap
+        self._model, self._rows_out, self._ccap = model, out, ccap
         self.batched = batched
-        self._inputs = inputs  # (q, tau, f_obj) of every sample, for the details
-        self._detail = self._reasons = self._lists = None
+        self._given = inputs  # (q, tau, f_obj) of every sample, for the details
+        self._buf = self._detail = self._reasons = self._lists = None
+
+    @classmethod
+    def of_buffer(cls, model, buf: np.ndarray, ccap: int) -> SceneResult:
+        """One sample from a one-sample call's buffer (q, tau, then the output row): its
+        views made when first read."""
+        self = cls.__new__(cls)
+        self._model, self._buf, self._ccap, self.batched = model, buf, ccap, False
+        self._rows_out = self._given = self._detail = self._reasons = self._lists = None
+        return self
+
+    @property
+    def _out(self) -> np.ndarray:
+        """The engine's output rows ``(N, width)``."""
+        if self._rows_out is None:
+            ns, na = self._model.n_coordinates, self._model.n_joints
+            self._rows_out = self._buf[None, ns + na:]
+        return self._rows_out
+
+    @property
+    def _inputs(self) -> tuple:
+        if self._given is None:
+            ns, na = self._model.n_coordinates, self._model.n_joints
+            self._given = (self._buf[None, :ns], self._buf[None, ns:ns + na],
+                           self._model._zero_f)
+        return self._given
 
     # the arrays: views into the engine's rows (a batch) or numbers (one sample) -----------
     def _col(self, k):

@@ -73,8 +73,7 @@ class GeneralSceneModel(RobotModel):
         NaN with status ``overlap`` and the reason)."""
         if (v is None and f_obj is None and type(q) is np.ndarray and type(tau) is np.ndarray
                 and q.dtype is _F64 and tau.dtype is _F64 and q.shape == self._shape_q
-                and tau.shape == self._shape_tau and q.flags.c_contiguous
-                and tau.flags.c_contiguous and self._one is not None):
+                and tau.shape == self._shape_tau and self._one is not None):
             # one sample of float64 arrays: through the model's one-sample buffers straight
             # to the engine (which checks finiteness), one copy of the output row
             one = self._one
@@ -86,10 +85,12 @@ class GeneralSceneModel(RobotModel):
                     buf = one.buf.copy()  # the inputs and the output row in one copy
                 finally:
                     one.lock.release()
-                ns, na = self._shape_q[0], self._shape_tau[0]
-                if code == 0 and buf[ns + na] != 4:
-                    return self._result(buf[None, ns + na:], False,
-                                        (buf[None, :ns], buf[None, ns:ns + na], self._zero_f))
+                status = buf.item(one.at)
+                if code == 0 and status != 4:
+                    if status == 3:
+                        raise InputError(self.overlap_message(buf[one.at + 13:one.at + 19],
+                                                              None))
+                    return SceneResult.of_buffer(self, buf, one.ccap)
         if v is not None and np.any(np.asarray(v, dtype=float) != 0):
             raise InputError("v: a general scene is solved at rest (v = 0); velocities are not "
                              "supported yet")
@@ -230,7 +231,7 @@ class _OneSample:
     engine's arguments pointing into it, built once; taken under a non-blocking lock (a
     second thread that finds it busy goes the general way)."""
 
-    __slots__ = ("buf", "q", "tau", "args", "address", "call", "lock")
+    __slots__ = ("buf", "q", "tau", "at", "ccap", "args", "address", "call", "lock")
 
     def __init__(self, model: GeneralSceneModel):
         pk = model.packed
@@ -238,6 +239,7 @@ class _OneSample:
         ns, na = model.n_coordinates, model.n_joints
         self.buf = np.zeros(ns + na + pk.width(ccap))
         self.q, self.tau = self.buf[:ns], self.buf[ns:ns + na]
+        self.at, self.ccap = ns + na, ccap  # where the output row starts; its room
         base = self.buf.ctypes.data
         self.args = SceneCall(model._pk, 1, base, 0, base + 8 * ns, 0,
                               model._zero_f.ctypes.data, 0, ccap, ccap + pk.ground_rows,
