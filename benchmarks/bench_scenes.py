@@ -3,15 +3,22 @@
 * **scene**: an ``--joints`` (default 10) joint snake, 2 objects (a box and a disc touching
   links), 4 pegs touching links, Coulomb ground on every link (mu 0.3) and under the objects:
   ``model.forward(q, tau)`` on one sample from Python (best of ``--repeat`` rounds of
-  ``--single`` calls) and batched (``--n`` samples, time per sample);
+  ``--single`` calls) and batched (``--n`` samples, time per sample, one thread);
+* **where the time goes** in the batched figure: the engine's exact solve alone
+  (``core_scene_solve`` on the same rows, inertia and forces, stacked), the engine's whole
+  call (contacts, rows, solve, metrics: ``core_scene_forward``), and the rest (Python);
 * **mj_forward**: MuJoCo's forward dynamics on the matched scene (capsule links on a planar
   base lying on a floor plane with gravity, box and cylinder objects on planar joints,
-  cylinder pegs fixed to the world, actuated joints), bare ``mj_forward`` and with qpos/ctrl
-  set and qacc copied;
+  cylinder pegs fixed to the world), bare ``mj_forward`` and with qpos and the applied
+  forces set and qacc copied;
 * **paper**: the paper's scene (3 joints, wheels, kappa 100) through the general path and
-  through today's path, single and batched.
+  through today's path, single and batched;
+* **instructions** (``--instructions``, needs valgrind): machine instructions per sample
+  inside the engine's call and inside its solve (callgrind's inclusive counts over a batch),
+  figures that do not depend on the machine's load.
 
     python benchmarks/bench_scenes.py [--joints 10] [--n 2000] [--single 300] [--repeat 3]
+                                      [--instructions]
 
 Prints a table and the machine's load average before and after.
 """
@@ -79,13 +86,99 @@ def mjcf(scene, P, obj_poses) -> str:
             f'{"".join(close)}{"".join(objs)}</worldbody>{motors}</mujoco>')
 
 
+def _where(model, q, tau, n, repeat) -> tuple[float, float, dict]:
+    """Per sample of a batch of n: the engine's whole call, its solve alone (on the same
+    rows), and the solve's info of the first sample."""
+    from snakecg.scenes.solve import solve
+
+    res = model.forward(q, tau)
+    rows, ns = res._rows[0], model.n_coordinates
+    no = model.scene.n_objects
+    M = np.zeros((n, ns + 3 * no, ns + 3 * no))
+    M[:, :ns, :ns] = model.mass_matrix(q)
+    for j, o in enumerate(model.scene.objects):
+        M[:, ns + 3 * j + np.arange(3), ns + 3 * j + np.arange(3)] = [o.mass, o.mass,
+                                                                       o.plate_inertia]
+    f = np.zeros((n, ns + 3 * no))
+    f[:, 3:ns] = tau
+    A = np.repeat(rows.A[None], n, axis=0)
+    args = (M, f, A, np.full(n, rows.A.shape[0]), np.repeat([rows.kind], n, axis=0),
+            np.repeat([rows.start], n, axis=0), np.repeat([rows.par], n, axis=0))
+    t_solve = best_of(lambda: solve(model.core, *args), repeat) / n
+    Q, T = np.repeat(q[None], n, axis=0), np.repeat(tau[None], n, axis=0)
+    t_call = best_of(lambda: model._run(Q, T, model._zero_f, n, True), repeat) / n
+    return t_call, t_solve, {k: float(v[0]) for k, v in res._raw["info"].items()}
+
+
+def _models(joints: int):
+    """The benchmark's scene (its model, q, tau) and the paper's scene on the general path."""
+    rng = np.random.default_rng(0)
+    q = np.r_[0.0, 0.0, 0.0, 0.25 * np.sin(np.arange(joints))]
+    scene = scene_of(joints, q)
+    paper = snakecg.Scene(snakecg.Robot(joints=3), scenario="wheels", kappa=100)
+    return (snakecg.load(scene), q, rng.normal(0, 0.1, joints),
+            snakecg.load(GeneralScene.from_scene(paper)))
+
+
+def _instructions_child(which: str, joints: int, n: int) -> None:
+    """The work callgrind counts: one batch of n samples through the engine's call."""
+    model, q, tau, paper = _models(joints)
+    rng = np.random.default_rng(1)
+    if which == "paper":
+        model, q = paper, np.zeros(6)
+        Q = np.c_[np.zeros((n, 3)), rng.uniform(-1.0, 1.0, (n, 3))]
+        T = rng.normal(0, 0.05, (n, 3))
+    else:
+        Q, T = np.repeat(q[None], n, axis=0), rng.normal(0, 0.1, (n, joints))
+    model._run(Q, T, model._zero_f, n, True)
+
+
+def bench_instructions(joints: int) -> None:
+    """Instructions per sample of the engine's call and of its solve (callgrind, inclusive)."""
+    import re
+    import shutil
+    import subprocess
+    import sys
+    import tempfile
+
+    if not shutil.which("valgrind") or not shutil.which("callgrind_annotate"):
+        print("instructions: valgrind is not installed (apt-get install valgrind)")
+        return
+    print("instructions per sample (callgrind, inclusive): the engine's call | its solve | the "
+          "rest (contacts, rows, metrics)")
+    for which, n in (("scene", 100), ("paper", 2000)):
+        with tempfile.TemporaryDirectory() as tmp:
+            out = f"{tmp}/cg.out"
+            subprocess.run(["valgrind", "--tool=callgrind", f"--callgrind-out-file={out}",
+                            sys.executable, __file__, "--_child", which, str(joints), str(n)],
+                           check=True, capture_output=True)
+            text = subprocess.run(["callgrind_annotate", "--inclusive=yes", "--threshold=100",
+                                   out], check=True, capture_output=True, text=True).stdout
+        counts = []
+        # the engine's call: libffi's inclusive count (callgrind attributes the exported
+        # entry point's own count to its caller; the child makes no other foreign call of
+        # note), its solve: core_scene_solve's
+        for fn in ("ffi_call", "core_scene_solve"):
+            m = re.search(rf"^\s*([\d,]+) .*{fn}\b", text, re.M)
+            counts.append(int(m.group(1).replace(",", "")) / n if m else float("nan"))
+        print(f"  {which:5s} ({n} samples): {counts[0]:12,.0f} | {counts[1]:12,.0f} | "
+              f"{counts[0] - counts[1]:10,.0f}")
+
+
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--joints", type=int, default=10)
     ap.add_argument("--n", type=int, default=2000)
     ap.add_argument("--single", type=int, default=300)
     ap.add_argument("--repeat", type=int, default=3)
+    ap.add_argument("--instructions", action="store_true",
+                    help="also instructions per sample (valgrind's callgrind)")
+    ap.add_argument("--_child", nargs=3, help=argparse.SUPPRESS)
     a = ap.parse_args()
+    if a._child:
+        _instructions_child(a._child[0], int(a._child[1]), int(a._child[2]))
+        return
+    os.environ["SNAKECG_THREADS"] = "1"
     rng = np.random.default_rng(0)
     print(f"machine: {platform.processor() or platform.machine()}, load {os.getloadavg()}")
     na = a.joints
@@ -94,14 +187,18 @@ def main() -> None:
     model = snakecg.load(scene)
     tau = rng.normal(0, 0.1, na)
     res = model.forward(q, tau)
-    print(f"scene: {na} joints, {len(res.contacts)} contacts, status {res.status}, "
-          f"sweeps {res._raw['info']['sweeps'][0]:.0f}")
+    t_call, t_solve, info = _where(model, q, tau, a.n, a.repeat)
+    print(f"scene: {na} joints, {len(res.contacts)} contacts, {res._rows[0].A.shape[0]} rows, "
+          f"status {res.status}, sweeps {info['sweeps']:.0f}, passes {info['passes']:.0f}, "
+          f"dependent {info['dependent']:.0f}")
     t1 = best_of(lambda: [model.forward(q, tau) for _ in range(a.single)], a.repeat) / a.single
     Q = np.repeat(q[None], a.n, axis=0)
     T = rng.normal(0, 0.1, (a.n, na))
     tb = best_of(lambda: model.forward(Q, T), a.repeat) / a.n
     print(f"  snakecg forward, single:  {t1 * 1e6:10.1f} us")
     print(f"  snakecg forward, batched: {tb * 1e6:10.1f} us per sample")
+    print(f"    of which the engine's call {t_call * 1e6:.1f} us, its solve alone "
+          f"{t_solve * 1e6:.1f} us (contacts, rows, metrics: {(t_call - t_solve) * 1e6:.1f} us)")
     try:
         import mujoco
 
@@ -113,8 +210,17 @@ def main() -> None:
         mujoco.mj_forward(m, d)
         tm = best_of(lambda: [mujoco.mj_forward(m, d) for _ in range(a.single)],
                      a.repeat) / a.single
+        qpos0 = d.qpos.copy()
+
+        def full():
+            d.qpos[:] = qpos0
+            d.qfrc_applied[3:3 + na] = tau
+            mujoco.mj_forward(m, d)
+            return d.qacc.copy()
+
+        tf = best_of(lambda: [full() for _ in range(a.single)], a.repeat) / a.single
         print(f"  mj_forward (bare, {d.ncon} contacts, MuJoCo {mujoco.__version__}): "
-              f"{tm * 1e6:8.1f} us")
+              f"{tm * 1e6:8.1f} us; with qpos, forces set and qacc copied: {tf * 1e6:8.1f} us")
     except ImportError:
         print("  mujoco not installed")
     paper = snakecg.Scene(snakecg.Robot(joints=3), scenario="wheels", kappa=100)
@@ -127,6 +233,11 @@ def main() -> None:
         b = best_of(lambda: mdl.forward(Q, T), a.repeat) / a.n
         print(f"  paper scene, {name:13s}: single {s * 1e6:9.1f} us, batched "
               f"{b * 1e6:9.2f} us per sample")
+    t_call, t_solve, info = _where(new, q0, t0, a.n, a.repeat)
+    print(f"    general path, of which the engine's call {t_call * 1e6:.2f} us, its solve alone "
+          f"{t_solve * 1e6:.2f} us per sample (sweeps {info['sweeps']:.0f})")
+    if a.instructions:
+        bench_instructions(na)
     print(f"load after: {os.getloadavg()}")
 
 

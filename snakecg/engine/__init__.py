@@ -48,6 +48,10 @@ class Core:
         ``core_settle``, run.c's ``core_run``."""
         self.scene_solve = lib.entry_or_none("core_scene_solve")
         """scene_solve.c's ``core_scene_solve``: the exact solve of general scenes' samples."""
+        self.scene_forward, self.scene_forward_call = (
+            lib.entry_or_none(name) for name in ("core_scene_forward", "core_scene_forward_call"))
+        """scene_rows.c's ``core_scene_forward``: a general scene's forward solve of a batch
+        (``core_scene_forward_call``: the same with its arguments in a ``SceneCall``)."""
         self.contact_depth = lib.entry_or_none("core_contact_depth")
         """geometry.c's ``core_contact_depth``: the simulation's contact check at states."""
         self.sphere = SphereKernel(lib)

@@ -23,6 +23,7 @@ __all__ = [
     "Library",
     "PROTOTYPES",
     "Run",
+    "SceneCall",
     "Segment",
     "Settle",
     "address",
@@ -65,6 +66,9 @@ PROTOTYPES: dict[str, tuple[list, object]] = {
     "core_eigen_symmetric": ([_I, _P, _P, _P], _INT),
     # scene_solve.c
     "core_scene_solve": ([_I, _I, _I, _I] + [_P] * 8 + [_I] + [_P] * 5, _INT),
+    # scene_rows.c
+    "core_scene_forward": ([_P, _I, _P, _I, _P, _I, _P, _I, _I, _I] + [_P] * 5, _INT),
+    "core_scene_forward_call": ([_P], _INT),
 }
 #: A generated function's batched driver: (n, inputs, strides, outputs).
 _BATCH = ([_I, ctypes.POINTER(_P), ctypes.POINTER(_I), ctypes.POINTER(_P)], _INT)
@@ -159,6 +163,15 @@ class Segment(ctypes.Structure):
                 ("t_eval", _P), ("n_eval", _I), ("geo", _P), ("budget", _D), ("resume", _I),
                 ("y_eval", _P), ("n_out", _I), ("t_end", _D), ("y_end", _P), ("event", _I),
                 ("nfev", _I), ("nsteps", _I), ("nrejected", _I), ("h_next", _D), ("status", _I)]
+
+
+class SceneCall(ctypes.Structure):
+    """The arguments of one ``core_scene_forward`` call, for ``core_scene_forward_call``
+    (scene_rows.c's ``sc_scene_call``)."""
+
+    _fields_ = [("pk", _P), ("n", _I), ("q", _P), ("sq", _I), ("tau", _P), ("st", _I),
+                ("fo", _P), ("sf", _I), ("ccap", _I), ("mcap", _I), ("out", _P), ("A", _P),
+                ("lam", _P), ("w", _P), ("state", _P)]
 
 
 class Geometry(ctypes.Structure):

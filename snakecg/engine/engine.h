@@ -25,6 +25,7 @@
  *   pieces.c, sphere.c                 the exact extremes' pieces and faces (exported)
  *   scene_sets.c, scene_solve.c        the exact solve of a general scene's sets (exported:
  *                                      core_scene_solve)
+ *   scene_geometry.c, scene_rows.c     contacts, rows, solve, metrics (core_scene_forward)
  *
  * One prefix (sc_), one integer type (sc_int). The library exports the model's prefixed entry
  * points only (SNAKECG_EXPORT); the engine's own functions across its files are hidden
@@ -71,11 +72,15 @@ int SNAKECG_CR(const double **arg, double **res, sc_int *iw, double *w, int mem)
 int SNAKECG_CR_WORK(sc_int *sz_arg, sc_int *sz_res, sc_int *sz_iw, sc_int *sz_w);
 int SNAKECG_LJ(const double **arg, double **res, sc_int *iw, double *w, int mem);
 int SNAKECG_LJ_WORK(sc_int *sz_arg, sc_int *sz_res, sc_int *sz_iw, sc_int *sz_w);
-
+#ifdef SNAKECG_LP /* a planar model's link poses and mass matrix (scene_rows.c) */
+int SNAKECG_LP(const double **arg, double **res, sc_int *iw, double *w, int mem);
+int SNAKECG_LP_WORK(sc_int *sz_arg, sc_int *sz_res, sc_int *sz_iw, sc_int *sz_w);
+int SNAKECG_MM(const double **arg, double **res, sc_int *iw, double *w, int mem);
+int SNAKECG_MM_WORK(sc_int *sz_arg, sc_int *sz_res, sc_int *sz_iw, sc_int *sz_w);
+#endif
 /* row states (snakecg/solver.py); SUPPORT: a bilateral row held always that may depend on the
  * held rows (a spatial snake's ground rows, snakecg/spatial/analysis.py) */
 enum { ABSENT = 0, HELD = 1, LOST = 2, SLIDE_POS = 3, SLIDE_NEG = 4, SUPPORT = 5 };
-
 /* The simulation's structs, shared by integrate.c, events.c and run.c (mirrored field by
  * field in snakecg/engine/segment.py). */
 /* event functions (snakecg/simulate/events.py, Events.functions) */
@@ -86,7 +91,6 @@ enum { SEG_END = 0, SEG_EVENT = 1, SEG_GEOMETRY = 2, SEG_PAUSED = 3, SEG_TOO_SMA
        SEG_PYTHON = -2,
        SEG_MEMORY = -3, SEG_BAD_INPUT = -4 };
 enum { SETTLE_DONE = 0, SETTLE_PYTHON = 1, SETTLE_MEMORY = 2 };
-
 /* One segment: inputs, then outputs (filled by core_integrate_segment). */
 typedef struct {
   /* the model and the run */
@@ -122,7 +126,6 @@ typedef struct {
   double h_next;         /* SEG_PAUSED: the step size to go on with */
   sc_int status;         /* SEG_* */
 } sc_segment;
-
 /* One settle: inputs, then outputs (filled by core_settle). */
 typedef struct {
   const double *scene;  /* the scene vector (layout: SCENE_*) */
@@ -153,13 +156,13 @@ typedef struct {
   double *projection_lam; /* NC: their impulses, in row order */
   sc_int status;        /* SETTLE_* */
 } sc_settle;
-
 /* ---- contact.c: the per-state system and its complementarity solve ---- */
-
-/* Wall-clock seconds (monotonic): the long calls pause after a budget, for Ctrl-C. */
+/* Wall-clock seconds from an arbitrary origin (POSIX's monotonic clock; elsewhere the CPU
+ * time): the long calls of the simulation pause after a budget of them, so that Python can
+ * handle a Ctrl-C. */
 SC_INTERNAL double sc_wall_time(void);
-
-/* Argument and result arrays and work vectors of generated functions (the largest of n). */
+/* Argument and result pointer arrays and work vectors of generated functions, sized for the
+ * largest of `n` of them (their `_work` functions). */
 typedef struct {
   const double **arg;
   double **res;
@@ -171,7 +174,6 @@ SC_INTERNAL void sc_work_free(sc_work_t *ws);
 #define SC_COUNT(a) ((int)(sizeof(a) / sizeof((a)[0]))) /* the entries of an array */
 /* 0, or -1 when a size query or an allocation failed (then nothing is left allocated). */
 SC_INTERNAL int sc_work_alloc(sc_work_t *ws, const sc_work_fn *fns, int n);
-
 /* The outputs of `contact_system`: the problem of one state before any active set. */
 typedef struct {
   double M[SNAKECG_NS * SNAKECG_NS];          /* M_s (eq. 4), column-major */
@@ -182,16 +184,16 @@ typedef struct {
   double Ka[3 * SNAKECG_NC];                  /* I_obj^-1 A_o^T (eq. 18) */
   double gap, s;
 } sc_system;
-
-/* `contact_system` at (q, v, tau, q_obj, v_obj, f_obj, rho), the scene's constants `scene`;
- * q_obj NULL places the object from q (rho ignored); `contact_system_at_rest` when v, v_obj
- * are zero. The work arrays must fit both (SC_CS_WORKS). Its status (0 on success). */
+/* `contact_system` at (q, v, tau, q_obj, v_obj, f_obj, rho) with the scene's constants of
+ * `scene` (SCENE_* offsets); q_obj == NULL places the object at the scene's contact from q
+ * (the generated function's input `placed` = 1; rho is then ignored too). When v and v_obj
+ * are zero, the generated `contact_system_at_rest` (the same without the velocity terms).
+ * The work arrays must fit both (SC_CS_WORKS). Its status (0 on success). */
 #define SC_CS_WORKS SNAKECG_CS_WORK, SNAKECG_CR_WORK
 SC_INTERNAL int sc_contact_system(sc_work_t *ws, const double *scene, const double *q,
                                   const double *v, const double *tau, const double *q_obj,
                                   const double *v_obj, const double *f_obj, const double *rho,
                                   sc_system *out);
-
 /* geometry.c: A V (snakecg.simulate.dynamics.Dynamics.row_velocities): the gap rate (row 0) and the
  * wheels' lateral velocities, from the generated `link_jacobians` at q (its status, 0 on
  * success). The link twists J v; the wheel row of link i is (-sin phi_i, cos phi_i,
@@ -201,20 +203,6 @@ SC_INTERNAL int sc_contact_system(sc_work_t *ws, const double *scene, const doub
 SC_INTERNAL int sc_row_velocities(sc_work_t *ws, const double *scene, const double *rho, int k,
                                   double c_k, const double *q, const double *v,
                                   const double *qo, const double *vo, double s, double *av);
-
-/* The solver's constants (snakecg.engine.CONSTANTS, in this order): pivot ratios of dependent,
- * of weak held rows, the decisions' tolerance, M's singular ratio, the checks' rounding, the
- * force limit, the ratio of rows dependent even factored directly, the Tikhonov weight. */
-typedef struct {
-  double pivot_tol, weak, rel_tol, mass_tol, sane_tol, force_limit, row_tol, regularization;
-} sc_constants;
-
-/* rows.c: a sample the fast path does not answer exactly, by the reference rules; its status
- * the reason's code. sys null when its evaluation failed; mass: M's pivot ratio. */
-SC_INTERNAL void sc_forward_edge(const sc_system *sys, const double *scene,
-                                 const sc_constants *c, long max_iter, int at_rest,
-                                 double mass, double *out);
-
 /* The constraint forces for row states `state` (eq. 16): lam_F fixed (0, or +-bound for a
  * sliding wheel), lam_H solving G_HH lam_H = -(b_H + G_HF lam_F) - extra_H by LDL^T in row
  * order (the masked factorization of the generated `constrained_dynamics`); `extra` (may be
@@ -228,16 +216,12 @@ SC_INTERNAL double sc_held_forces(const signed char *state, const double *G, con
  * returns 1 if any moved. */
 SC_INTERNAL int sc_next_states(signed char *state, const double *lam, const double *w,
                                const double *G, const double *bounds, double rel_tol);
-
 /* ---- events.c: locating an event ---- */
-
 /* A function of time whose root is sought (its value in *g): 0, or SEG_PYTHON. */
 typedef int (*sc_root_fn)(void *arg, double t, double *g);
 /* The root of fn on [xa, xb] (scipy.optimize.brentq's method) in *root: 0, or fn's status. */
 SC_INTERNAL int sc_brentq(sc_root_fn fn, void *arg, double xa, double xb, double *root);
-
 /* ---- geometry.c: the contact check of a simulation ---- */
-
 /* The check of a run (mirrored in snakecg/engine/binding.py): inputs, then outputs. */
 enum { SC_GEO_OFF = 0, SC_GEO_STOP = 1, SC_GEO_RECORD = 2 };
 struct sc_geometry {
@@ -255,13 +239,11 @@ struct sc_geometry {
   double *y;            /* NY: the state there */
 };
 typedef struct sc_geometry sc_geometry;
-
 /* The deepest overlap (m) of every pair at state y, its pair in *pair (geometry.c). */
 SC_INTERNAL double sc_geo_depth(const sc_geometry *g, const double *y, sc_int *pair);
 /* Record the first violation of the check (once). */
 SC_INTERNAL void sc_geo_record(sc_geometry *g, double t, const double *y, double depth,
                                sc_int pair);
-
 /* ---- qp.c: dense convex QPs, the ellipsoid constraint, non-negative least squares
  * and the KKT certificate (qp.c). Building blocks that know nothing of snakes: problems of a
  * few dozen variables and rows, solved exactly on their active set.
@@ -294,7 +276,6 @@ typedef struct {
   const double *A; /* m x n */
   const double *lo, *hi;
 } sc_qp;
-
 /* A solution: x, the rows' signed multipliers (H x + g = sum_r lam_r a_r, lam_r >= 0 on an
  * active lower side, <= 0 on an active upper side, 0 on an inactive row), the active rows,
  * the counts of work done. */
@@ -307,12 +288,10 @@ typedef struct {
   sc_int newton;     /* sc_qcqp_ellipsoid: Newton steps on the secular equation */
   double mu;         /* sc_qcqp_ellipsoid: the ellipsoid's multiplier (0: not active) */
 } sc_qp_solution;
-
 /* a problem's and a solution's fields at once */
 SC_INTERNAL void sc_qp_define(sc_qp *qp, sc_int n, sc_int m, const double *H, const double *g,
                               const double *A, const double *lo, const double *hi);
 SC_INTERNAL void sc_qp_solution_define(sc_qp_solution *s, double *x, double *lam, sc_int *active);
-
 enum {
   SC_QP_OPTIMAL = 0,
   SC_QP_INFEASIBLE = 1,  /* the linear rows have no common point */
@@ -321,7 +300,6 @@ enum {
   SC_QP_EMPTY = 4,       /* sc_qcqp_ellipsoid: no point of the rows inside the ellipsoid */
   SC_QP_SIZE = 5         /* larger than the workspace */
 };
-
 /* Scratch space for problems of up to n_max variables and m_max rows: allocated
  * (sc_qp_work_alloc), or the caller's arrays of SC_QP_WORK_DOUBLES and SC_QP_WORK_INTS
  * entries (sc_qp_work_init; a model's fixed sizes on the stack: no allocation per call). */
@@ -330,13 +308,11 @@ typedef struct {
   double *d;
   sc_int *i;
 } sc_qp_work;
-
 #define SC_QP_WORK_DOUBLES(n, m)                                                         \
   (6 * (n) * (n) + 10 * (n) + 4 * (m) + 6 + 5 * (n) * (n) + 12 * (n) +                  \
    7 * (n) * (2 * (m) + 2) + 14 * (2 * (m) + 2) + (2 * (m) + 2) * (2 * (m) + 2) +       \
    2 * (n) * (n) + 12 * (n) + 4 * (m) + 64)
 #define SC_QP_WORK_INTS(n, m) (4 * (m) + 4 + 4 * (n) + 2 + 4 * (n) + 9 * (2 * (m) + 2) + 64)
-
 /* doubles and sc_ints of each region, as carved by the function that uses it */
 #define SC_QP_GI_D(n, m) (6 * (n) * (n) + 10 * (n) + 2 + 2 * (2 * (m) + 2))
 #define SC_QP_GI_I(n, m) (2 * (2 * (m) + 2) + 2 * (n) + 2 * (n) + 2)
@@ -347,7 +323,6 @@ typedef struct {
   (7 * (n) * SC_QP_CE_K(n, m) + 14 * SC_QP_CE_K(n, m) +                         \
    SC_QP_CE_K(n, m) * SC_QP_CE_K(n, m) + 2 * (n) * (n) + 12 * (n) + 4 * (m))
 #define SC_QP_CE_I(n, m) (9 * SC_QP_CE_K(n, m))
-
 /* the three regions of the workspace: the active-set solver, the secular equation, the
  * certificate (each may call the one before it) */
 static inline double *sc_qp_gi_d(const sc_qp_work *w) { return w->d; }
@@ -595,5 +570,22 @@ SC_INTERNAL int sc_in_set(const sc_problem *p, sc_int k, double *l, double tol, 
 SC_INTERNAL int sc_still(const sc_problem *p, sc_int k);
 SC_INTERNAL int sc_min_norm_face(sc_problem *p, double *work);
 SC_INTERNAL void sc_block_min(const sc_problem *p, sc_int k, const double *c, double *l);
+int SNAKECG_EXPORT(core_scene_solve)(sc_int ns, sc_int n, sc_int mmax, sc_int nbmax,
+  const sc_int *m, const sc_int *nb, const double *M, const double *f, const double *A,
+  const sc_int *kind, const sc_int *start, const double *par, sc_int max_sweeps, double *lam,
+  double *a, double *w, double *state, double *info);
+/* ---- a general scene's shapes and contacts (scene_geometry.c), forward (scene_rows.c) ---- */
+enum { SC_SEGMENT = 0, SC_POINT = 1, SC_POLYGON = 2, SC_HALFPLANE = 3 };
+#define SC_TOUCH_MAX 64 /* candidate point pairs of two shapes (4 x 4 edges, 4 each) */
+/* a core (np points: segment, point, polygon; a half-plane's point, normal into the free
+ * side) and a radius; a contact's surface points and its unit normal from a to b */
+typedef struct { int kind, np; double p[4][2], radius, normal[2]; } sc_shape;
+typedef struct { double a[2], b[2], n[2]; } sc_touch;
+SC_INTERNAL void sc_shape_centroid(const sc_shape *s, double *c);
+SC_INTERNAL double sc_shape_closest(const sc_shape *A, const sc_shape *B, double scale,
+                                    sc_touch *out, int *count);
+int SNAKECG_EXPORT(core_scene_forward)(const double *pk, sc_int n, const double *q, sc_int sq,
+  const double *tau, sc_int st, const double *fo, sc_int sf, sc_int ccap, sc_int mcap,
+  double *out, double *A, double *lam, double *w, double *state);
 
 #endif

@@ -38,6 +38,14 @@ FUNCTIONS = {
     "link_jacobians": ("LJ", ("q", "K"), ("J",)),
 }
 
+#: The generated functions a planar model's general-scene forward calls (scene_rows.c):
+#: defined for a planar model (a spatial model's have other outputs, and its contact library
+#: compiles no scene_rows.c).
+SCENE_FUNCTIONS = {
+    "link_poses": ("LP", ("q", "K"), ("poses",)),
+    "mass_matrix": ("MM", ("q", "K"), ("M",)),
+}
+
 _IDENT = re.compile(r"[A-Za-z_][A-Za-z0-9_]*\Z")
 
 
@@ -155,7 +163,8 @@ def header(manifest: dict) -> str:
              f"#define SNAKECG_NL {lay.n_links}", f"#define SNAKECG_NC {lay.n_constraints}"]
     if "nq" in manifest:  # a spatial model: q has n_q entries
         lines.append(f"#define SNAKECG_NQ {int(manifest['nq'])}")
-    for fname, (short, ins, outs) in FUNCTIONS.items():
+    scene = {} if lay.spatial or not set(SCENE_FUNCTIONS) <= set(sigs) else SCENE_FUNCTIONS
+    for fname, (short, ins, outs) in {**FUNCTIONS, **scene}.items():
         sig = sigs.get(fname)
         if sig is None:
             raise ArtifactError(f"the model has no generated function {fname!r}, which the "

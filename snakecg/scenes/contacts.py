@@ -1,9 +1,7 @@
-"""One configuration's constraint rows from geometry and the ground (eqs. 7-11): the bodies'
-shapes placed at ``q``, every contact within the scene's tolerance (links with objects and
-obstacles, links that are not neighbours, objects with objects and obstacles), each a
-frictionless unilateral row ``n . (v_B - v_A) >= 0`` at the two surface points; then the
-ground's rows per link (wheels, Coulomb, anisotropic Coulomb) and the objects' own Coulomb
-friction with the ground. Overlap beyond the tolerance is refused.
+"""A configuration's contacts and constraint rows as Python objects (:class:`Contact`,
+:class:`Rows`: what a :class:`~snakecg.scenes.metrics.SceneResult` reports for checks; the
+engine finds and builds them, ``snakecg/engine/scene_rows.c``), and the placement of the
+links and objects at a configuration (what the drawing shows).
 """
 
 from __future__ import annotations
@@ -12,12 +10,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..errors import InputError
 from .description import GeneralScene
-from .geometry import Shape, box_corners, closest
-from .solve import BOX, DISC, FREE, SPLIT, UNILATERAL
 
-__all__ = ["Contact", "Rows", "scene_size", "place_objects", "shapes", "rows_of"]
+__all__ = ["Contact", "Rows", "link_ends", "place_objects"]
 
 
 @dataclass
@@ -46,19 +41,6 @@ class Rows:
     par: list
     contacts: list
     labels: list
-
-
-def scene_size(scene: GeneralScene) -> float:
-    """The scene's extent (m): the robot's length, the objects' and obstacles' sizes."""
-    size = float(sum(scene.robot.length)) + 2 * scene.radius
-    for o in scene.objects:
-        size += 2 * o.radius if o.shape == "disc" else float(np.hypot(*o.size))
-    for o in scene.obstacles:
-        if o.shape == "peg":
-            size += 2 * o.radius
-        elif o.shape == "box":
-            size += float(np.hypot(*o.size))
-    return size
 
 
 def _frame(pose):
@@ -94,120 +76,3 @@ def place_objects(scene: GeneralScene, poses) -> np.ndarray:
         c = ends[k, 0] + off * t + side * (scene.radius + o.half_depth) * nrm
         out[j] = (c[0], c[1], poses[k][2])
     return out
-
-
-def shapes(scene: GeneralScene, poses, obj_poses) -> list:
-    """``[(body, Shape)]`` for links, objects and obstacles."""
-    out = []
-    for i, (a, b) in enumerate(link_ends(scene, poses)):
-        out.append((("link", i), Shape("segment", [a, b], scene.radius)))
-    for j, o in enumerate(scene.objects):
-        p = obj_poses[j]
-        if o.shape == "disc":
-            out.append((("object", j), Shape("point", [p[:2]], o.radius)))
-        else:
-            out.append((("object", j), Shape("polygon", box_corners(p[:2], o.size, p[2]))))
-    for k, o in enumerate(scene.obstacles):
-        if o.shape == "peg":
-            sh = Shape("point", [o.center], o.radius)
-        elif o.shape == "box":
-            sh = Shape("polygon", box_corners(o.center, o.size, o.angle))
-        else:
-            sh = Shape("halfplane", [o.point], 0.0, o.normal)
-        out.append((("obstacle", k), sh))
-    return out
-
-
-def _point_jacobian(body, p, J, poses, obj_poses, n_s, n):
-    """(2, n): the velocity of point p fixed on ``body`` in the generalized velocities."""
-    out = np.zeros((2, n))
-    kind, i = body
-    if kind == "link":
-        r = p - poses[i][:2]
-        out[:, :n_s] = J[i][:2] + np.outer([-r[1], r[0]], J[i][2])
-    elif kind == "object":
-        r = p - obj_poses[i][:2]
-        c = n_s + 3 * i
-        out[:, c:c + 3] = [[1.0, 0.0, -r[1]], [0.0, 1.0, r[0]]]
-    return out
-
-
-def rows_of(scene: GeneralScene, masses, poses, J, *, index=None) -> tuple[Rows, np.ndarray]:
-    """The rows of one configuration (link COM poses ``poses`` (n_l, 3), link Jacobians
-    ``J`` (n_l, 3, n_s)) and the objects' poses. Raises :class:`InputError` on overlap
-    (``index``: the sample's, named in the message)."""
-    n_s = J.shape[2]
-    n = n_s + 3 * scene.n_objects
-    size = scene_size(scene)
-    tol = scene.tolerance * size
-    obj_poses = place_objects(scene, poses)
-    bodies = shapes(scene, poses, obj_poses)
-    rows, kind, start, par, contacts, labels = [], [], [], [], [], []
-
-    def block(k, rs, p, label):
-        kind.append(k)
-        start.append(len(rows))
-        par.append(p)
-        rows.extend(rs)
-        labels.append(label)
-
-    # broad phase: a bounding circle per shape (a wall: none), pairs farther apart skipped
-    centre = np.array([sh.pts.mean(axis=0) for _, sh in bodies])
-    reach = np.array([np.inf if sh.kind == "halfplane" else
-                      np.sqrt(((sh.pts - sh.pts.mean(axis=0)) ** 2).sum(axis=1)).max()
-                      + sh.radius for _, sh in bodies])
-    for ia in range(len(bodies)):
-        ba, sa = bodies[ia]
-        if ba[0] == "obstacle" or sa.kind == "halfplane":
-            continue
-        for ib in range(ia + 1, len(bodies)):
-            bb, sb = bodies[ib]
-            if ba[0] == "link" and bb[0] == "link" and abs(ba[1] - bb[1]) < 2:
-                continue
-            if np.hypot(*(centre[ia] - centre[ib])) > reach[ia] + reach[ib] + 2 * tol:
-                continue
-            d, pairs = closest(sa, sb, size)
-            if d < -tol:
-                where = "" if index is None else f" in sample {index}"
-                raise InputError(
-                    f"{scene.body_name(*ba)} and {scene.body_name(*bb)} overlap by "
-                    f"{-d:.3g} m{where} (contacts hold within {tol:.3g} m); move them apart")
-            if d > tol:
-                continue
-            for ca, cb, nrm in pairs:
-                Ja = _point_jacobian(ba, ca, J, poses, obj_poses, n_s, n)
-                Jb = _point_jacobian(bb, cb, J, poses, obj_poses, n_s, n)
-                contacts.append(Contact(ba, bb, ca, cb, nrm, d, len(rows)))
-                block(UNILATERAL, [nrm @ (Jb - Ja)], (0.0, 0.0, 0.0),
-                      ("contact", len(contacts) - 1))
-    g = scene.gravity
-    for i, gr in enumerate(scene.ground):
-        x, y, phi = poses[i]
-        t = np.array([np.cos(phi), np.sin(phi)])
-        nl = np.array([-np.sin(phi), np.cos(phi)])
-        load = masses[i] * g
-        if gr.model in ("wheels", "ideal_wheels"):
-            row = nl @ J[i][:2] + gr.wheel_offset * J[i][2]
-            full = np.zeros(n)
-            full[:n_s] = row
-            if gr.model == "ideal_wheels":
-                block(FREE, [full], (0.0, 0.0, 0.0), ("wheel", i))
-            else:
-                block(BOX, [full], (gr.mu * load, 0.0, 0.0), ("wheel", i))
-        elif gr.model == "coulomb":
-            full = np.zeros((2, n))
-            full[:, :n_s] = J[i][:2]
-            block(DISC, list(full), (gr.mu * load, 0.0, 0.0), ("ground", i))
-        elif gr.model == "anisotropic":
-            full = np.zeros((2, n))
-            full[0, :n_s] = t @ J[i][:2]
-            full[1, :n_s] = nl @ J[i][:2]
-            block(SPLIT, list(full), (gr.mu_forward * load, gr.mu_backward * load,
-                                      gr.mu_lateral * load), ("ground", i))
-    for j, o in enumerate(scene.objects):
-        if o.mu is not None:
-            full = np.zeros((2, n))
-            full[:, n_s + 3 * j:n_s + 3 * j + 2] = np.eye(2)
-            block(DISC, list(full), (o.mu * o.mass * g, 0.0, 0.0), ("object_ground", j))
-    A = np.array(rows).reshape(len(rows), n)
-    return Rows(A, kind, start, par, contacts, labels), obj_poses

@@ -2,6 +2,10 @@
 segment, radius the robot's), a disc or peg (a point), a box (a convex polygon, radius 0), a
 wall (a half-plane). Plain NumPy on one configuration; every function returns the pairs of
 nearest points (two where two features are parallel: the ends of the shared interval).
+
+The forward solve finds its contacts in the engine (``snakecg/engine/scene_geometry.c``);
+this module is the drawing's (:func:`box_corners`) and the tests' reference for the engine's
+closest points, written apart from it.
 """
 
 from __future__ import annotations

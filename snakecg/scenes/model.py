@@ -1,23 +1,31 @@
-"""The loaded model of a general scene: the robot's generated functions (mass matrix, link
-poses and Jacobians, one compiled call per batch), the rows found from geometry per sample
-(:mod:`snakecg.scenes.contacts`) and the compiled exact solve (:mod:`snakecg.scenes.
-solve`), at rest."""
+"""The loaded model of a general scene: the robot's generated functions and the scene packed
+once (:mod:`snakecg.scenes.packing`) for the engine's forward at rest
+(``snakecg/engine/scene_rows.c``: contacts from geometry, rows, the exact solve and the
+metrics per sample, one C call for a batch, split over threads as the engine's other batched
+calls are)."""
 
 from __future__ import annotations
+
+import threading
 
 import numpy as np
 
 from .._inputs import as_batch, broadcast_batches, check_batch_memory
-from ..errors import InputError
+from ..engine.binding import SceneCall, address
+from ..errors import BuildError, InputError
 from ..robot_model import RobotModel
-from .contacts import rows_of
+from .contacts import Contact, Rows
 from .description import GeneralScene
-from .metrics import SceneResult, norms, state_name
-from .solve import solve
+from .metrics import SceneResult
+from .packing import BODY_KINDS, CONTACTS_FIRST, CR_W, SO_NC, pack
+from .solve import INFO, UNILATERAL
 
 __all__ = ["GeneralSceneModel"]
 
 _REFUSED = ("maps", "extremes", "optimize", "simulate", "optimize_shape", "com_polar")
+#: Samples per thread below which a batch is not split (SNAKECG_THREADS; snakecg.forward's)
+PARALLEL_MIN = 512
+_F64 = np.dtype(np.float64)
 
 
 class GeneralSceneModel(RobotModel):
@@ -33,12 +41,28 @@ class GeneralSceneModel(RobotModel):
         self.masses = np.asarray(scene.robot.mass, dtype=float)
         self.object_inertia = np.array([[o.mass, o.mass, o.plate_inertia]
                                         for o in scene.objects]).reshape(-1, 3)
+        self.packed = pack(scene, self.parameters, self.n_coordinates)
+        """The scene as the engine reads it (:class:`~snakecg.scenes.packing.Packed`)."""
+        self._engine = getattr(self.core, "scene_forward", None)
+        self._pk = self.packed.vector.ctypes.data
+        self._zero_f = np.zeros((1, 3 * scene.n_objects))
+        self._shape_q, self._shape_tau = (self.n_coordinates,), (self.n_joints,)
+        self._one = (_OneSample(self) if getattr(self.core, "scene_forward_call", None)
+                     is not None else None)
 
     def __getattr__(self, name):
         if name in _REFUSED:
             raise InputError(f"{name} is not available on a general scene yet (forward and "
                              f"plot are); use a snakecg.Scene of the paper's scenarios")
         raise AttributeError(name)
+
+    def overlap_message(self, rec, index) -> str:
+        """The line that refuses an overlap (``rec``: the engine's record of it)."""
+        a = self.scene.body_name(BODY_KINDS[int(rec[0])], int(rec[1]))
+        b = self.scene.body_name(BODY_KINDS[int(rec[2])], int(rec[3]))
+        where = "" if index is None else f" in sample {index}"
+        return (f"{a} and {b} overlap by {rec[4]:.3g} m{where} (contacts hold within "
+                f"{rec[5]:.3g} m); move them apart")
 
     def forward(self, q, tau, *, f_obj=None, v=None) -> SceneResult:
         """Accelerations, forces, contact states, norms, sr and the certificate at rest.
@@ -47,129 +71,179 @@ class GeneralSceneModel(RobotModel):
         external wrench (F_x, F_y, torque) on every object, ``(n_objects, 3)`` (or batched).
         A sample whose shapes overlap is refused (one sample: :class:`InputError`; in a batch:
         NaN with status ``overlap`` and the reason)."""
+        if (v is None and f_obj is None and type(q) is np.ndarray and type(tau) is np.ndarray
+                and q.dtype is _F64 and tau.dtype is _F64 and q.shape == self._shape_q
+                and tau.shape == self._shape_tau and self._one is not None):
+            # one sample of float64 arrays: through the model's one-sample buffers straight
+            # to the engine (which checks finiteness), one copy of the output row
+            one = self._one
+            if one.lock.acquire(False):
+                try:
+                    one.q[:] = q
+                    one.tau[:] = tau
+                    code = one.call(one.address)
+                    buf = one.buf.copy()  # the inputs and the output row in one copy
+                finally:
+                    one.lock.release()
+                status = buf.item(one.at)
+                if code == 0 and status != 4:
+                    if status == 3:
+                        raise InputError(self.overlap_message(buf[one.at + 13:one.at + 19],
+                                                              None))
+                    return SceneResult.of_buffer(self, buf, one.ccap)
         if v is not None and np.any(np.asarray(v, dtype=float) != 0):
             raise InputError("v: a general scene is solved at rest (v = 0); velocities are not "
                              "supported yet")
         na, ns, no = self.n_joints, self.n_coordinates, self.scene.n_objects
-        qa, bq = as_batch("q", q, ns, what=f" = (n_joints + 3,) for a {na}-joint robot")
-        ta, bt = as_batch("tau", tau, na, what=f" (one torque per joint, n_a = {na})")
+        qa, bq = as_batch("q", q, ns, what=f" = (n_joints + 3,) for a {na}-joint robot",
+                          check_finite=False)
+        ta, bt = as_batch("tau", tau, na, what=f" (one torque per joint, n_a = {na})",
+                          check_finite=False)
         if f_obj is None:
-            fo, bf = np.zeros((1, 3 * no)), False
+            fo, bf = self._zero_f, False
         else:
             arr = np.asarray(f_obj, dtype=float)
             batched_f = arr.ndim == 3
             fo, bf = as_batch("f_obj", arr.reshape(arr.shape[0], -1) if batched_f
-                              else arr.reshape(-1), 3 * no,
+                              else arr.reshape(-1), 3 * no, check_finite=False,
                               what=f" = (n_objects, 3) wrenches, {no} objects")
         N = broadcast_batches(q=(qa, bq), tau=(ta, bt), f_obj=(fo, bf))
-        check_batch_memory("forward", N, 8 * (ns + 3 * no) ** 2 * 6, what="results")
-        qa = np.broadcast_to(qa, (N, ns))
-        ta = np.broadcast_to(ta, (N, na))
-        fo = np.broadcast_to(fo, (N, 3 * no))
-        M_s = self.mass_matrix(qa) if N > 0 else np.zeros((0, ns, ns))
-        J = self.link_jacobians(qa).reshape(N, self.n_links, 3, ns)
-        P = self.link_poses(qa).reshape(N, self.n_links, 3)
-        n = ns + 3 * no
-        rows, poses, reasons = [], [], []
+        batched = bq or bt or bf
+        check_batch_memory("forward", N, 8 * self.packed.width(CONTACTS_FIRST), what="results")
+        if self._engine is None:
+            raise BuildError("a general scene is solved by the compiled engine; load it with a "
+                             "C compiler (set CC) and the compiled backend")
+        out = self._run(qa, ta, fo, N, batched)
+        if out is None:  # an input not finite: named by the checks
+            for name, val, size in (("q", q, ns), ("tau", tau, na), ("f_obj", fo, 3 * no)):
+                as_batch(name, val, size)
+            raise InputError("forward: an input is not finite")
+        return self._result(out, batched, (np.broadcast_to(qa, (N, ns)),
+                                           np.broadcast_to(ta, (N, na)),
+                                           np.broadcast_to(fo, (N, 3 * no))))
+
+    def _result(self, out, batched, inputs) -> SceneResult:
+        if not batched and out[0, 0] == 3:
+            raise InputError(self.overlap_message(out[0, 13:19], None))
+        return SceneResult(self, out, self._ccap_of(out), batched, inputs)
+
+    def _ccap_of(self, out) -> int:
+        return (out.shape[1] - self.packed.width(0)) // CR_W
+
+    def _call(self, q, tau, fo, N, ccap, out, detail=None) -> int:
+        """One engine call over samples 0..N of the inputs (broadcast where one row), into
+        ``out``; the batch split over threads when large. Its status."""
+        from ..engine.threads import pool, threads
+
+        mcap = ccap + self.packed.ground_rows
+        steps = [a.shape[1] if a.shape[0] > 1 else 0 for a in (q, tau, fo)]
+        workers = threads(N, PARALLEL_MIN) if detail is None else 1
+        n = self.n_coordinates + 3 * self.scene.n_objects
+
+        def job(lo, hi):
+            ptrs = [a.ctypes.data + 8 * lo * st for a, st in zip((q, tau, fo), steps)]
+            det = [0, 0, 0, 0] if detail is None else [
+                detail["A"].ctypes.data + 8 * lo * mcap * n] + [
+                detail[k].ctypes.data + 8 * lo * mcap for k in ("lam", "w", "state")]
+            return self._engine(self._pk, hi - lo, ptrs[0], steps[0], ptrs[1], steps[1],
+                                ptrs[2], steps[2], ccap, mcap,
+                                out.ctypes.data + 8 * lo * out.shape[1], *det)
+
+        if workers == 1:
+            return job(0, N)
+        bounds = np.linspace(0, N, workers + 1).astype(np.int64)
+        spans = [(int(lo), int(hi)) for lo, hi in zip(bounds[:-1], bounds[1:]) if hi > lo]
+        codes = list(pool().map(lambda b: job(*b), spans))
+        for code, (lo, _) in zip(codes, spans):
+            if code < -2:
+                return code - lo
+            if code != 0:
+                return code
+        return 0
+
+    def _run(self, q, tau, fo, N, batched):
+        """The engine's outputs of N samples (None where an input is not finite): a first
+        pass with room for a few contacts, the samples that found more solved again with room
+        for every pair's."""
+        pk = self.packed
+        ccap = min(CONTACTS_FIRST, pk.contacts_max)
+        out = np.empty((N, pk.width(ccap)))
+        code = self._call(q, tau, fo, N, ccap, out)
+        if code <= -3:
+            return None
+        if code != 0:
+            raise MemoryError("the general scene's forward ran out of memory") if code == -1 \
+                else ValueError(f"core_scene_forward refused its sizes ({code})")
+        more = np.flatnonzero(out[:, 0] == 4)
+        if more.size == 0:
+            return out
+        full = pk.contacts_max
+        wide = np.full((N, pk.width(full)), np.nan)
+        wide[:, :out.shape[1]] = out
+        pick = [a if a.shape[0] == 1 else np.ascontiguousarray(a[more]) for a in (q, tau, fo)]
+        redo = np.empty((more.size, pk.width(full)))
+        self._call(*pick, more.size, full, redo)
+        redo[redo[:, 0] == 4, 0] = 5  # more than the solve takes
+        wide[more] = redo
+        return wide
+
+    def details(self, out, inputs) -> dict:
+        """The rows, forces, row accelerations and block states of every sample of a result
+        (``out``, its inputs), solved again with them kept: ``{"raw", "rows"}``."""
+        pk = self.packed
+        N = out.shape[0]
+        n = self.n_coordinates + 3 * self.scene.n_objects
+        ok = (out[:, 0] != 3) & (out[:, 0] < 5)
+        nc = out[:, SO_NC].astype(int)
+        ccap = max(1, int(nc[ok].max()) if ok.any() else 1)
+        mcap = ccap + pk.ground_rows
+        det = {"A": np.zeros((N, mcap, n)), "lam": np.zeros((N, mcap)),
+               "w": np.zeros((N, mcap)), "state": np.zeros((N, mcap))}
+        again = np.empty((N, pk.width(ccap)))
+        q, tau, fo = (np.ascontiguousarray(a) for a in inputs)
+        self._call(q, tau, fo, N, ccap, again, det)
+        starts = np.cumsum((0,) + pk.sizes)
+        off = pk.offset["contacts"]
+        rows = []
         for s in range(N):
-            try:
-                r, op = rows_of(self.scene, self.masses, P[s], J[s],
-                                index=s if N > 1 or bq else None)
-            except InputError as exc:
-                if not (bq or bt or bf):
-                    raise
-                r, op = None, np.full((no, 3), np.nan)
-                reasons.append(str(exc))
-            else:
-                reasons.append("")
-            rows.append(r)
-            poses.append(op)
-        mmax = max([r.A.shape[0] for r in rows if r is not None] + [1])
-        nbmax = max([len(r.kind) for r in rows if r is not None] + [1])
-        Mf = np.zeros((N, n, n))
-        Mf[:, :ns, :ns] = M_s
-        for j in range(no):
-            Mf[:, ns + 3 * j + np.arange(3), ns + 3 * j + np.arange(3)] = self.object_inertia[j]
-        f = np.zeros((N, n))
-        f[:, 3:ns] = ta
-        f[:, ns:] = fo
-        A = np.zeros((N, mmax, n))
-        m = np.zeros(N, dtype=np.int64)
-        kind = np.full((N, nbmax), -1, dtype=np.int64)
-        start = np.zeros((N, nbmax), dtype=np.int64)
-        par = np.zeros((N, nbmax, 3))
-        for s, r in enumerate(rows):
-            if r is None:
+            if not ok[s]:
+                rows.append(None)
                 continue
-            k = len(r.kind)
-            m[s] = r.A.shape[0]
-            A[s, :m[s]] = r.A
-            kind[s, :k] = r.kind
-            start[s, :k] = r.start
-            par[s, :k] = np.reshape(r.par, (-1, 3))
-        out = solve(self.core, Mf, f, A, m, kind, start, par)
-        a = out["a"]
-        a_free = np.linalg.solve(Mf, f[..., None])[..., 0]
-        qdd = a[:, :ns]
-        a_obj = a[:, ns:].reshape(N, no, 3)
-        nq, each, na_sum, nl = norms(qdd, M_s, a_obj, self.object_inertia, a, a_free, Mf)
-        # eq. (30); 0 where both norms are rounding (below (1e-13)^2 of the free motion's
-        # |a_free|^2_M: a system that does not move)
-        denom = na_sum + nq
-        free = np.einsum("ni,nij,nj->n", a_free, Mf, a_free)
-        moving = denom > 1e-26 * free
-        sr = np.where(moving, na_sum / np.where(moving, denom, 1.0), 0.0)
-        status = out["info"]["status"].astype(int)
-        overlap = np.array([r is None for r in rows])
-        status[overlap] = 3
-        bad = status != 0
-        for arr in (nq, na_sum, nl, sr):
-            arr[bad] = np.nan
-        each[bad] = np.nan
-        qdd[bad] = np.nan
-        a_obj[bad] = np.nan
-        nq = np.maximum(nq, 0.0)  # rounding of a form that is >= 0
-        contacts, ground, objects = [], [], []
-        for s, r in enumerate(rows):
-            lam, st = out["lam"][s], out["state"][s]
-            cs, gs = [], []
-            if r is not None:
-                for b, (kd, st0, label) in enumerate(zip(r.kind, r.start, r.labels)):
-                    size = 2 if kd >= 3 else 1
-                    force = lam[st0:st0 + size].tolist()
-                    if label[0] == "contact":
-                        c = r.contacts[label[1]]
-                        cs.append({"bodies": [self.scene.body_name(*c.a),
-                                              self.scene.body_name(*c.b)],
-                                   "point": ((c.point_a + c.point_b) / 2).tolist(),
-                                   "normal": c.normal.tolist(), "gap": c.gap,
-                                   "force": force[0], "state": state_name(kd, int(st[b]))})
-                    else:
-                        what = ("link" if label[0] in ("wheel", "ground") else "object")
-                        gs.append({what: label[1] + 1, "model": _model_name(kd),
-                                   "force": force, "state": state_name(kd, int(st[b]))})
-            contacts.append(cs)
-            ground.append(gs)
-            objects.append([{"object": j + 1, "pose": poses[s][j].tolist(),
-                             "a": a_obj[s, j].tolist(), "norm_a": float(each[s, j])}
-                            for j in range(no)])
-        reason = [reasons[s] or ({1: "the active-set solve did not converge",
-                                  2: "the mass matrix is not positive definite"}
-                                 .get(int(status[s]), "")) for s in range(N)]
-        cert = {k: out["info"][k] for k in ("primal", "dual", "complementarity")}
-        res = SceneResult(qdd, a_obj, nq, na_sum, each, nl, sr, status,
-                          out["info"]["dependent"].astype(int), cert, contacts, ground,
-                          objects, reason, True)
-        res._raw = out  # the solver's arrays (lam, w, state, info) for checks
-        res._rows, res._q = rows, qa
-        if bq or bt or bf:
-            return res
-        one = res.sample(0)
-        one._raw, one._rows, one._q = out, rows, qa[0]
-        return one
+            k = nc[s]
+            contacts = []
+            for c in range(k):
+                r = out[s, off + CR_W * c: off + CR_W * (c + 1)]
+                contacts.append(Contact((BODY_KINDS[int(r[0])], int(r[1])),
+                                        (BODY_KINDS[int(r[2])], int(r[3])), r[4:6].copy(),
+                                        r[6:8].copy(), r[8:10].copy(), float(r[10]), c))
+            rows.append(Rows(det["A"][s, :k + pk.ground_rows],
+                             [UNILATERAL] * k + list(pk.kinds),
+                             list(range(k)) + [k + int(x) for x in starts[:-1]],
+                             [(0.0, 0.0, 0.0)] * k + list(pk.pars), contacts,
+                             [("contact", c) for c in range(k)] + list(pk.labels)))
+        raw = {"lam": det["lam"], "w": det["w"], "state": det["state"].astype(np.int64),
+               "info": {name: out[:, i] for i, name in enumerate(INFO)}}
+        return {"raw": raw, "rows": rows}
 
 
-def _model_name(kind: int) -> str:
-    from .metrics import _KIND_NAMES
+class _OneSample:
+    """A model's buffer for one-sample calls (q, tau and the output row, side by side) and the
+    engine's arguments pointing into it, built once; taken under a non-blocking lock (a
+    second thread that finds it busy goes the general way)."""
 
-    return _KIND_NAMES[kind]
+    __slots__ = ("buf", "q", "tau", "at", "ccap", "args", "address", "call", "lock")
+
+    def __init__(self, model: GeneralSceneModel):
+        pk = model.packed
+        ccap = min(CONTACTS_FIRST, pk.contacts_max)
+        ns, na = model.n_coordinates, model.n_joints
+        self.buf = np.zeros(ns + na + pk.width(ccap))
+        self.q, self.tau = self.buf[:ns], self.buf[ns:ns + na]
+        self.at, self.ccap = ns + na, ccap  # where the output row starts; its room
+        base = self.buf.ctypes.data
+        self.args = SceneCall(model._pk, 1, base, 0, base + 8 * ns, 0,
+                              model._zero_f.ctypes.data, 0, ccap, ccap + pk.ground_rows,
+                              base + 8 * (ns + na), 0, 0, 0, 0)
+        self.address = address(self.args)
+        self.call = model.core.scene_forward_call
+        self.lock = threading.Lock()

@@ -1,0 +1,274 @@
+/* snakecg's engine: closest points between the shapes of a general scene (scene_rows.c).
+ *
+ * Every shape is a core and a radius: a link's capsule (a segment, the robot's radius), a
+ * disc or a peg (a point), a box (a convex polygon, counter-clockwise, radius 0), a wall (a
+ * half-plane, its normal into the free side). sc_shape_closest returns the signed distance of
+ * two shapes' surfaces (< 0: overlap, its depth) and the contacts: the surface points on A and
+ * on B and the unit normal from A to B, two where two features are parallel (the ends of the
+ * shared stretch). Tolerances are relative to the scene's size `scale`:
+ *   1e-12  equal distances (ties between candidate pairs), a core point inside a polygon
+ *   1e-9   a parallel stretch worth two contacts, coincident contacts, a point on an edge
+ * Where the cores touch (distance within 1e-9 scale) the normal is the touched edge's, or a
+ * segment's side toward the other body, or the line between the shapes' centroids.
+ */
+#include "snakecg_layout.h"
+#include "engine.h"
+
+/* Segment k of a shape (an edge of a polygon; a segment's one; a point twice). */
+static void segment_of(const sc_shape *s, int k, const double **a, const double **b) {
+  if (s->kind == SC_POLYGON) {
+    *a = s->p[k];
+    *b = s->p[(k + 1) % s->np];
+  } else if (s->kind == SC_SEGMENT) {
+    *a = s->p[0];
+    *b = s->p[1];
+  } else {
+    *a = *b = s->p[0];
+  }
+}
+
+static int segments(const sc_shape *s) { return s->kind == SC_POLYGON ? s->np : 1; }
+
+/* The point of segment [a, b] nearest p. */
+static void point_segment(const double *p, const double *a, const double *b, double *out) {
+  double d0 = b[0] - a[0], d1 = b[1] - a[1], L = d0 * d0 + d1 * d1, t = 0.0;
+  if (L != 0) {
+    t = ((p[0] - a[0]) * d0 + (p[1] - a[1]) * d1) / L;
+    t = t > 1.0 ? 1.0 : (t < 0.0 ? 0.0 : t);
+  }
+  out[0] = a[0] + t * d0;
+  out[1] = a[1] + t * d1;
+}
+
+static void put(double *pairs, int *np, const double *p, const double *q) {
+  double *o = pairs + 4 * (*np)++;
+  o[0] = p[0];
+  o[1] = p[1];
+  o[2] = q[0];
+  o[3] = q[1];
+}
+
+/* Nearest point pairs of two segments, appended to pairs (4 doubles each): one, or the two
+ * ends of the shared stretch of parallel ones, or every candidate at the least distance. */
+static void segment_pairs(const double *a0, const double *a1, const double *b0, const double *b1,
+                          double scale, double *pairs, int *np) {
+  double da[2] = {a1[0] - a0[0], a1[1] - a0[1]}, db[2] = {b1[0] - b0[0], b1[1] - b0[1]};
+  double la = hypot(da[0], da[1]), lb = hypot(db[0], db[1]);
+  double cross = da[0] * db[1] - da[1] * db[0], c[4][4], dist[4], best;
+  int i;
+  if (la > 0 && lb > 0 && fabs(cross) <= 1e-12 * la * lb) { /* parallel: b's ends on a */
+    double u[2] = {da[0] / la, da[1] / la}, s0, s1, lo, hi;
+    s0 = (b0[0] - a0[0]) * u[0] + (b0[1] - a0[1]) * u[1];
+    s1 = (b1[0] - a0[0]) * u[0] + (b1[1] - a0[1]) * u[1];
+    if (s1 < s0) {
+      double t = s0;
+      s0 = s1;
+      s1 = t;
+    }
+    lo = s0 > 0.0 ? s0 : 0.0;
+    hi = s1 < la ? s1 : la;
+    if (hi - lo > 1e-9 * scale) {
+      double s[2] = {lo, hi}, pa[2], pb[2];
+      for (i = 0; i < 2; ++i) {
+        pa[0] = a0[0] + s[i] * u[0];
+        pa[1] = a0[1] + s[i] * u[1];
+        point_segment(pa, b0, b1, pb);
+        put(pairs, np, pa, pb);
+      }
+      return;
+    }
+  }
+  c[0][0] = a0[0]; c[0][1] = a0[1];
+  point_segment(a0, b0, b1, c[0] + 2);
+  c[1][0] = a1[0]; c[1][1] = a1[1];
+  point_segment(a1, b0, b1, c[1] + 2);
+  point_segment(b0, a0, a1, c[2]);
+  c[2][2] = b0[0]; c[2][3] = b0[1];
+  point_segment(b1, a0, a1, c[3]);
+  c[3][2] = b1[0]; c[3][3] = b1[1];
+  if (la > 0 && lb > 0 && cross != 0) { /* crossing interiors */
+    double w0 = b0[0] - a0[0], w1 = b0[1] - a0[1];
+    double t = (w0 * db[1] - w1 * db[0]) / cross, s = (w0 * da[1] - w1 * da[0]) / cross;
+    if (0 < t && t < 1 && 0 < s && s < 1) {
+      double x[2] = {a0[0] + t * da[0], a0[1] + t * da[1]};
+      put(pairs, np, x, x);
+      return;
+    }
+  }
+  best = INFINITY;
+  for (i = 0; i < 4; ++i) {
+    dist[i] = hypot(c[i][2] - c[i][0], c[i][3] - c[i][1]);
+    if (dist[i] < best) best = dist[i];
+  }
+  for (i = 0; i < 4; ++i)
+    if (dist[i] <= best + 1e-12 * scale) put(pairs, np, c[i], c[i] + 2);
+}
+
+/* Depth of p inside the convex polygon (> 0 inside), from its nearest edge. */
+static double inside(const double *p, const sc_shape *poly) {
+  double depth = INFINITY;
+  int i;
+  for (i = 0; i < poly->np; ++i) {
+    const double *a = poly->p[i], *b = poly->p[(i + 1) % poly->np];
+    double e0 = b[0] - a[0], e1 = b[1] - a[1], L = hypot(e0, e1);
+    double d = -((p[0] - a[0]) * (e1 / L) + (p[1] - a[1]) * (-e0 / L));
+    if (d < depth) depth = d;
+  }
+  return depth;
+}
+
+/* The outward normal of a polygon at its core point q on an edge's interior (1), else 0 (a
+ * corner; and always 0 for a segment or a point: no outward normal of their own). */
+static int feature_normal(const sc_shape *sh, const double *q, double scale, double *n) {
+  int k;
+  if (sh->kind != SC_POLYGON && sh->kind != SC_SEGMENT) return 0;
+  for (k = 0; k < segments(sh); ++k) {
+    const double *a, *b;
+    double e0, e1, L, t;
+    segment_of(sh, k, &a, &b);
+    e0 = b[0] - a[0];
+    e1 = b[1] - a[1];
+    L = hypot(e0, e1);
+    if (L == 0) continue;
+    t = ((q[0] - a[0]) * e0 + (q[1] - a[1]) * e1) / (L * L);
+    if (1e-9 < t && t < 1 - 1e-9 &&
+        fabs((q[0] - a[0]) * e1 - (q[1] - a[1]) * e0) / L <= 1e-9 * scale) {
+      if (sh->kind != SC_POLYGON) return 0;
+      n[0] = e1 / L;
+      n[1] = -e0 / L;
+      return 1;
+    }
+  }
+  return 0;
+}
+
+/* The mean of a shape's core points. */
+SC_INTERNAL void sc_shape_centroid(const sc_shape *s, double *c) {
+  int i;
+  c[0] = c[1] = 0.0;
+  for (i = 0; i < s->np; ++i) {
+    c[0] += s->p[i][0];
+    c[1] += s->p[i][1];
+  }
+  c[0] /= s->np;
+  c[1] /= s->np;
+}
+
+/* The normal from A to B where the cores touch at p (on A) and q (on B). */
+static void touching_normal(const sc_shape *A, const sc_shape *B, const double *p,
+                            const double *q, double scale, double *n) {
+  double nn[2], ca[2], cb[2];
+  int side;
+  if (feature_normal(B, q, scale, nn)) {
+    n[0] = -nn[0];
+    n[1] = -nn[1];
+    return;
+  }
+  if (feature_normal(A, p, scale, n)) return;
+  for (side = 0; side < 2; ++side) { /* a tip on a segment's side: its normal, toward the other */
+    const sc_shape *sh = side ? B : A, *toward = side ? A : B;
+    const double *pt = side ? q : p;
+    double e0, e1, L, perp[2], sign = side ? -1.0 : 1.0, c[2];
+    if (sh->kind != SC_SEGMENT) continue;
+    e0 = sh->p[1][0] - sh->p[0][0];
+    e1 = sh->p[1][1] - sh->p[0][1];
+    L = hypot(e0, e1);
+    perp[0] = -e1 / L;
+    perp[1] = e0 / L;
+    sc_shape_centroid(toward, c);
+    if ((c[0] - pt[0]) * perp[0] + (c[1] - pt[1]) * perp[1] < 0) {
+      perp[0] = -perp[0];
+      perp[1] = -perp[1];
+    }
+    n[0] = sign * perp[0];
+    n[1] = sign * perp[1];
+    return;
+  }
+  sc_shape_centroid(A, ca); /* corner to corner: the line between the centroids */
+  sc_shape_centroid(B, cb);
+  {
+    double d0 = cb[0] - ca[0], d1 = cb[1] - ca[1], L = hypot(d0, d1);
+    n[0] = d0 / L;
+    n[1] = d1 / L;
+  }
+}
+
+/* The signed distance of A's and B's surfaces and their contacts (at most SC_TOUCH_MAX, in
+ * out; their count in *count; none where they overlap). A is never a half-plane. */
+SC_INTERNAL double sc_shape_closest(const sc_shape *A, const sc_shape *B, double scale,
+                                    sc_touch *out, int *count) {
+  double pairs[4 * SC_TOUCH_MAX], dist[SC_TOUCH_MAX], core = INFINITY, depth = -INFINITY;
+  int np = 0, i, j, k, side;
+  *count = 0;
+  if (B->kind == SC_HALFPLANE) {
+    const double *n = B->normal;
+    double vals[4], best = INFINITY, d, off = B->p[0][0] * n[0] + B->p[0][1] * n[1];
+    int m = A->kind == SC_POINT ? 1 : A->np;
+    for (i = 0; i < m; ++i) {
+      vals[i] = A->p[i][0] * n[0] + A->p[i][1] * n[1] - off;
+      if (vals[i] < best) best = vals[i];
+    }
+    d = best - A->radius;
+    for (i = 0; i < m; ++i) {
+      sc_touch *t;
+      if (!(vals[i] <= best + 1e-12 * scale)) continue;
+      t = out + (*count)++;
+      for (k = 0; k < 2; ++k) {
+        t->a[k] = A->p[i][k] - A->radius * n[k];
+        t->b[k] = t->a[k] - (vals[i] - best) * n[k] - d * n[k];
+        t->n[k] = -n[k];
+      }
+    }
+    return d;
+  }
+  for (i = 0; i < segments(A); ++i)
+    for (j = 0; j < segments(B); ++j) {
+      const double *a0, *a1, *b0, *b1;
+      segment_of(A, i, &a0, &a1);
+      segment_of(B, j, &b0, &b1);
+      segment_pairs(a0, a1, b0, b1, scale, pairs, &np);
+    }
+  for (i = 0; i < np; ++i) {
+    const double *o = pairs + 4 * i;
+    dist[i] = hypot(o[2] - o[0], o[3] - o[1]);
+    if (dist[i] < core) core = dist[i];
+  }
+  for (side = 0; side < 2; ++side) { /* a core point inside the other polygon: overlap */
+    const sc_shape *X = side ? B : A, *Y = side ? A : B;
+    if (Y->kind != SC_POLYGON) continue;
+    for (i = 0; i < X->np; ++i) {
+      double d = inside(X->p[i], Y);
+      if (d > depth) depth = d;
+    }
+  }
+  if (depth > 1e-12 * scale) return -(depth + A->radius + B->radius);
+  for (i = 0; i < np; ++i) {
+    const double *p = pairs + 4 * i, *q = p + 2;
+    double n[2];
+    int dup = 0;
+    sc_touch *t;
+    if (dist[i] > core + 1e-12 * scale) continue;
+    for (j = 0; j < *count && !dup; ++j) /* kept before: the core points out[j].a, .b */
+      dup = hypot(p[0] - out[j].a[0], p[1] - out[j].a[1]) <= 1e-9 * scale &&
+            hypot(q[0] - out[j].b[0], q[1] - out[j].b[1]) <= 1e-9 * scale;
+    if (dup) continue;
+    if (dist[i] > 1e-9 * scale) {
+      n[0] = (q[0] - p[0]) / dist[i];
+      n[1] = (q[1] - p[1]) / dist[i];
+    } else {
+      touching_normal(A, B, p, q, scale, n);
+    }
+    t = out + (*count)++;
+    for (k = 0; k < 2; ++k) { /* the core points for now: moved to the surfaces below */
+      t->a[k] = p[k];
+      t->b[k] = q[k];
+      t->n[k] = n[k];
+    }
+  }
+  for (j = 0; j < *count; ++j)
+    for (k = 0; k < 2; ++k) {
+      out[j].a[k] += A->radius * out[j].n[k];
+      out[j].b[k] -= B->radius * out[j].n[k];
+    }
+  return core - A->radius - B->radius;
+}

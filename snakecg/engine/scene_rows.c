@@ -1,0 +1,508 @@
+/* snakecg's engine: the forward solve of a general scene at rest, per sample, in one call for a
+ * batch: contacts found from geometry, the constraint rows, the exact solve, the metrics.
+ *
+ * Per sample (eqs. 7-30 of Reyes & Ma 2017, on any set of constraints):
+ *   1. the link poses, the link Jacobians J_i (twist of link i's COM = J_i qdot, eq. 3) and
+ *      M_s (eq. 4): the generated functions `link_poses`, `link_jacobians`, `mass_matrix`;
+ *   2. the objects placed (a pose, or touching a link on its side at an offset), every body's
+ *      shape (scene_geometry.c); a broad phase of bounding circles, then the closest points of
+ *      every pair that may touch (links with objects and obstacles, links that are not
+ *      neighbours, objects with objects and obstacles); a pair that overlaps beyond the
+ *      tolerance stops the sample (status OVERLAP, the pair and its depth reported); one
+ *      frictionless unilateral row n . (v_B - v_A) >= 0 per contact within the tolerance, at
+ *      the two surface points fixed on their bodies;
+ *   3. the ground's blocks (a table packed once per model: wheels, ideal wheels, Coulomb,
+ *      anisotropic Coulomb per link; an object's Coulomb friction with the ground);
+ *   4. the exact solve of scene_solve.c (core_scene_solve) on the full inertia (M_s, then
+ *      m, m, I per object) and force (B tau, the objects' wrenches);
+ *   5. the metrics: ||qdd_s||^2 = qdd^T M_s qdd (eq. 26), ||a_o||^2 = a_o^T I_o a_o (eq. 27)
+ *      per object and summed, ||lambda||^2 = lam^T G lam = (a - a_free)^T M (a - a_free), and
+ *      sr (eq. 30; 0 where the summed norms are rounding of the free motion's:
+ *      below 1e-26 a_free^T M a_free, a system that does not move). A sample not solved has
+ *      NaN metrics and its status says why.
+ * The scene, the sample's outputs and the optional details (rows, forces, row accelerations,
+ * block states, for checks) are laid out as snakecg/scenes/packing.py writes and reads them
+ * (SP_*, SO_*, the records' widths below).
+ */
+#include "snakecg_layout.h"
+#include "engine.h"
+
+/* the packed scene: header, then link, object, obstacle and ground-block records, then K */
+enum { SP_NO = 0, SP_NOB, SP_RADIUS, SP_TOL, SP_SIZE, SP_NG, SP_MG, SP_LINKS, SP_OBJECTS,
+       SP_OBSTACLES, SP_GROUND, SP_K, SP_HEAD = 16 };
+enum { LINK_W = 2 };  /* com (from the rear end), length */
+enum { OBJ_W = 12 };  /* shape (0 box, 1 disc), a, b, radius, mass, inertia, placed (0 pose,
+                         1 touching), x | link, y | offset, theta | side (+-1), half depth */
+enum { OBS_W = 14 };  /* shape (0 peg, 1 wall, 2 box), x, y, radius, normal (2), corners (8) */
+enum { GB_W = 8 };    /* type (GB_*), body, wheel offset, par (3), block kind (K_*) */
+enum { GB_WHEEL = 0, GB_COULOMB = 1, GB_SPLIT = 2, GB_OBJECT = 3 };
+/* one sample's outputs: the solve's info (scene_solve.c's INFO_* order), then these */
+enum { SO_INFO = 0, SO_NC = 8, SO_NORM_QDD, SO_NORM_A, SO_NORM_L, SO_SR, SO_OVERLAP,
+       SO_QDD = SO_OVERLAP + 6 };
+enum { CR_W = 14 };   /* a contact: body a (kind, index), b, point a (2), b (2), normal (2),
+                         gap, force, state, pad */
+/* sample status (after scene_solve.c's 0 solved, 1 not converged, 2 singular mass; 5, more
+ * contacts than the solve takes, is the caller's) */
+enum { SS_OVERLAP = 3, SS_MORE = 4, SS_FAILED = 6 };
+enum { BODY_LINK = 0, BODY_OBJECT = 1, BODY_OBSTACLE = 2 };
+/* Gauss-Seidel sweeps allowed per sample (snakecg.scenes.solve.MAX_SWEEPS) */
+#define SC_SCENE_SWEEPS 200000
+
+/* The scene's sizes and the scratch of one batch call. */
+typedef struct {
+  const double *pk;
+  sc_int no, nob, ng, mg, n, ccap, mcap, nbody;
+  sc_work_t ws;
+  double *A, *M, *f, *par, *lam, *w, *a, *st, *P, *J, *Ms, *LU, *afree;
+  sc_int *kind, *start, *piv;
+  sc_shape *shape;
+  double *centre, *reach, *pose;
+} sc_scene_work;
+
+static void box_corners(double x, double y, double th, double sx, double sy, sc_shape *s) {
+  double c = cos(th), sn = sin(th), a = sx / 2, b = sy / 2;
+  double lx[4] = {-a, a, a, -a}, ly[4] = {-b, -b, b, b};
+  int i;
+  s->kind = SC_POLYGON;
+  s->np = 4;
+  s->radius = 0.0;
+  for (i = 0; i < 4; ++i) {
+    s->p[i][0] = x + (lx[i] * c + ly[i] * -sn);
+    s->p[i][1] = y + (lx[i] * sn + ly[i] * c);
+  }
+}
+
+/* The bodies' shapes at the link poses P (nl x 3), the objects placed (their poses in pose). */
+static void place(sc_scene_work *sw, const double *P) {
+  const double *pk = sw->pk, *lk = pk + (sc_int)pk[SP_LINKS], r = pk[SP_RADIUS];
+  sc_int i, j, k;
+  for (i = 0; i < SNAKECG_NL; ++i) {
+    double c = cos(P[3 * i + 2]), s = sin(P[3 * i + 2]), *e0 = sw->shape[i].p[0],
+           *e1 = sw->shape[i].p[1];
+    e0[0] = P[3 * i] - lk[LINK_W * i] * c;
+    e0[1] = P[3 * i + 1] - lk[LINK_W * i] * s;
+    e1[0] = e0[0] + lk[LINK_W * i + 1] * c;
+    e1[1] = e0[1] + lk[LINK_W * i + 1] * s;
+    sw->shape[i].kind = SC_SEGMENT;
+    sw->shape[i].np = 2;
+    sw->shape[i].radius = r;
+  }
+  for (j = 0; j < sw->no; ++j) {
+    const double *o = pk + (sc_int)pk[SP_OBJECTS] + OBJ_W * j;
+    double *ps = sw->pose + 3 * j;
+    sc_shape *sh = sw->shape + SNAKECG_NL + j;
+    if (o[6] == 0.0) {
+      ps[0] = o[7];
+      ps[1] = o[8];
+      ps[2] = o[9];
+    } else { /* on the named side of link k, the contact at offset from its rear end */
+      const double *rear = sw->shape[(sc_int)o[7]].p[0], *pl = P + 3 * (sc_int)o[7];
+      double t[2] = {cos(pl[2]), sin(pl[2])}, nrm[2] = {-sin(pl[2]), cos(pl[2])};
+      double h = o[9] * (r + o[10]);
+      ps[0] = rear[0] + o[8] * t[0] + h * nrm[0];
+      ps[1] = rear[1] + o[8] * t[1] + h * nrm[1];
+      ps[2] = pl[2];
+    }
+    if (o[0] == 1.0) {
+      sh->kind = SC_POINT;
+      sh->np = 1;
+      sh->radius = o[3];
+      sh->p[0][0] = ps[0];
+      sh->p[0][1] = ps[1];
+    } else {
+      box_corners(ps[0], ps[1], ps[2], o[1], o[2], sh);
+    }
+  }
+  for (k = 0; k < sw->nob; ++k) {
+    const double *o = pk + (sc_int)pk[SP_OBSTACLES] + OBS_W * k;
+    sc_shape *sh = sw->shape + SNAKECG_NL + sw->no + k;
+    sh->radius = 0.0;
+    sh->p[0][0] = o[1];
+    sh->p[0][1] = o[2];
+    if (o[0] == 0.0) {
+      sh->kind = SC_POINT;
+      sh->np = 1;
+      sh->radius = o[3];
+    } else if (o[0] == 1.0) {
+      sh->kind = SC_HALFPLANE;
+      sh->np = 1;
+      sh->normal[0] = o[4];
+      sh->normal[1] = o[5];
+    } else {
+      sh->kind = SC_POLYGON;
+      sh->np = 4;
+      for (i = 0; i < 4; ++i) {
+        sh->p[i][0] = o[6 + 2 * i];
+        sh->p[i][1] = o[7 + 2 * i];
+      }
+    }
+  }
+  for (i = 0; i < sw->nbody; ++i) { /* the broad phase's bounding circles (a wall: none) */
+    sc_shape *sh = sw->shape + i;
+    double *c = sw->centre + 2 * i, far = 0.0;
+    sc_shape_centroid(sh, c);
+    for (j = 0; j < sh->np; ++j) {
+      double d = sqrt((sh->p[j][0] - c[0]) * (sh->p[j][0] - c[0]) +
+                      (sh->p[j][1] - c[1]) * (sh->p[j][1] - c[1]));
+      if (d > far) far = d;
+    }
+    sw->reach[i] = sh->kind == SC_HALFPLANE ? INFINITY : far + sh->radius;
+  }
+}
+
+/* The velocity of point p fixed on body b, in the generalized velocities: rows x, y added
+ * with sign into Dx, Dy (n each). */
+static void point_jacobian(sc_scene_work *sw, sc_int b, const double *p, const double *P,
+                           double sign, double *Dx, double *Dy) {
+  sc_int j;
+  if (b < SNAKECG_NL) {
+    const double *J = sw->J;
+    double r0 = p[0] - P[3 * b], r1 = p[1] - P[3 * b + 1];
+    for (j = 0; j < SNAKECG_NS; ++j) {
+      const double *c = J + 3 * SNAKECG_NL * j + 3 * b;
+      Dx[j] += sign * (c[0] + -r1 * c[2]);
+      Dy[j] += sign * (c[1] + r0 * c[2]);
+    }
+  } else if (b < SNAKECG_NL + sw->no) {
+    sc_int o = b - SNAKECG_NL, col = SNAKECG_NS + 3 * o;
+    const double *ps = sw->pose + 3 * o;
+    Dx[col] += sign;
+    Dx[col + 2] += sign * -(p[1] - ps[1]);
+    Dy[col + 1] += sign;
+    Dy[col + 2] += sign * (p[0] - ps[0]);
+  }
+}
+
+static sc_int body_kind(const sc_scene_work *sw, sc_int b, sc_int *index) {
+  if (b < SNAKECG_NL) { *index = b; return BODY_LINK; }
+  if (b < SNAKECG_NL + sw->no) { *index = b - SNAKECG_NL; return BODY_OBJECT; }
+  *index = b - SNAKECG_NL - sw->no;
+  return BODY_OBSTACLE;
+}
+
+/* The contacts' rows of one configuration into sw->A (rows 0..), their records into out;
+ * returns their count, or -SS_* (overlap: the pair and depth in out). */
+static sc_int contact_rows(sc_scene_work *sw, const double *P, double *out, sc_int cap) {
+  const double tol = sw->pk[SP_TOL], size = sw->pk[SP_SIZE];
+  const sc_int n = sw->n, nl = SNAKECG_NL;
+  sc_int ia, ib, nc = 0, k, j;
+  sc_touch t[SC_TOUCH_MAX];
+  for (ia = 0; ia < nl + sw->no; ++ia)
+    for (ib = ia + 1; ib < sw->nbody; ++ib) {
+      const double *ca = sw->centre + 2 * ia, *cb = sw->centre + 2 * ib;
+      double d;
+      int count;
+      if (ib < nl && ib - ia < 2) continue; /* neighbouring links */
+      if (hypot(ca[0] - cb[0], ca[1] - cb[1]) > sw->reach[ia] + sw->reach[ib] + 2 * tol)
+        continue;
+      d = sc_shape_closest(sw->shape + ia, sw->shape + ib, size, t, &count);
+      if (d < -tol) {
+        double *o = out + SO_OVERLAP, idx;
+        o[0] = (double)body_kind(sw, ia, &k);
+        o[1] = (double)k;
+        idx = (double)body_kind(sw, ib, &k);
+        o[2] = idx;
+        o[3] = (double)k;
+        o[4] = -d;
+        o[5] = tol;
+        return -SS_OVERLAP;
+      }
+      if (d > tol) continue;
+      for (k = 0; k < count; ++k) {
+        double *row = sw->A + nc * n, *Dx = sw->M, *Dy = sw->M + n, *rec;
+        sc_int kk;
+        if (nc >= cap) return -SS_MORE;
+        memset(Dx, 0, sizeof(double) * (size_t)(2 * n)); /* D = J_b - J_a at the points */
+        point_jacobian(sw, ib, t[k].b, P, 1.0, Dx, Dy);
+        point_jacobian(sw, ia, t[k].a, P, -1.0, Dx, Dy);
+        for (j = 0; j < n; ++j) row[j] = t[k].n[0] * Dx[j] + t[k].n[1] * Dy[j];
+        rec = out + SO_QDD + SNAKECG_NS + 7 * sw->no + 3 * sw->ng + CR_W * nc;
+        rec[0] = (double)body_kind(sw, ia, &kk);
+        rec[1] = (double)kk;
+        rec[2] = (double)body_kind(sw, ib, &kk);
+        rec[3] = (double)kk;
+        for (j = 0; j < 2; ++j) {
+          rec[4 + j] = t[k].a[j];
+          rec[6 + j] = t[k].b[j];
+          rec[8 + j] = t[k].n[j];
+        }
+        rec[10] = d;
+        sw->kind[nc] = K_UNILATERAL;
+        sw->start[nc] = nc;
+        sw->par[3 * nc] = sw->par[3 * nc + 1] = sw->par[3 * nc + 2] = 0.0;
+        ++nc;
+      }
+    }
+  return nc;
+}
+
+/* The ground's blocks after the contacts' nc rows; returns the rows used. */
+static sc_int ground_rows(sc_scene_work *sw, const double *P, sc_int nc) {
+  const double *gb = sw->pk + (sc_int)sw->pk[SP_GROUND];
+  const sc_int n = sw->n;
+  sc_int g, r = nc, j;
+  for (g = 0; g < sw->ng; ++g, gb += GB_W) {
+    sc_int b = (sc_int)gb[1], type = (sc_int)gb[0], bk = nc + g;
+    double *r0 = sw->A + r * n, *r1 = r0 + n;
+    sw->kind[bk] = (sc_int)gb[6];
+    sw->start[bk] = r;
+    sw->par[3 * bk] = gb[3];
+    sw->par[3 * bk + 1] = gb[4];
+    sw->par[3 * bk + 2] = gb[5];
+    memset(r0, 0, sizeof(double) * (size_t)(type == GB_WHEEL ? n : 2 * n));
+    if (type == GB_OBJECT) {
+      r0[SNAKECG_NS + 3 * b] = 1.0;
+      r1[SNAKECG_NS + 3 * b + 1] = 1.0;
+      r += 2;
+      continue;
+    }
+    {
+      double phi = P[3 * b + 2], c = cos(phi), s = sin(phi);
+      for (j = 0; j < SNAKECG_NS; ++j) {
+        const double *J = sw->J + 3 * SNAKECG_NL * j + 3 * b;
+        if (type == GB_WHEEL) {
+          r0[j] = -s * J[0] + c * J[1] + gb[2] * J[2];
+        } else if (type == GB_COULOMB) {
+          r0[j] = J[0];
+          r1[j] = J[1];
+        } else {
+          r0[j] = c * J[0] + s * J[1];
+          r1[j] = -s * J[0] + c * J[1];
+        }
+      }
+    }
+    r += type == GB_WHEEL ? 1 : 2;
+  }
+  return r;
+}
+
+/* The metrics of a solved sample (a: the accelerations) into out. */
+static void metrics(sc_scene_work *sw, const double *a, double *out) {
+  const sc_int n = sw->n, ns = SNAKECG_NS;
+  const double *I = sw->M;
+  double nq = 0.0, na = 0.0, nl = 0.0, fr = 0.0, denom;
+  sc_int i, j, o;
+  int bad = out[SO_INFO] != 0.0;
+  for (i = 0; i < ns; ++i) {
+    double t = 0.0;
+    for (j = 0; j < ns; ++j) t += sw->Ms[i + ns * j] * a[j];
+    nq += a[i] * t;
+  }
+  for (i = 0; i < n; ++i) {
+    double t = 0.0, u = 0.0;
+    for (j = 0; j < n; ++j) {
+      t += I[i * n + j] * (a[j] - sw->afree[j]);
+      u += I[i * n + j] * sw->afree[j];
+    }
+    nl += (a[i] - sw->afree[i]) * t;
+    fr += sw->afree[i] * u;
+  }
+  for (o = 0; o < sw->no; ++o) {
+    const double *ao = a + ns + 3 * o, *obj = sw->pk + (sc_int)sw->pk[SP_OBJECTS] + OBJ_W * o;
+    double e = ao[0] * obj[4] * ao[0] + ao[1] * obj[4] * ao[1] + ao[2] * obj[5] * ao[2];
+    out[SO_QDD + ns + 3 * sw->no + o] = bad ? NAN : e;
+    na += e;
+  }
+  denom = na + nq;
+  out[SO_SR] = denom > 1e-26 * fr ? na / denom : 0.0; /* eq. (30) */
+  out[SO_NORM_QDD] = nq > 0.0 ? nq : 0.0; /* rounding of a form that is >= 0 */
+  out[SO_NORM_A] = na;
+  out[SO_NORM_L] = nl;
+  for (i = 0; i < n; ++i) out[SO_QDD + i] = a[i];
+  if (bad) {
+    for (i = SO_NORM_QDD; i <= SO_SR; ++i) out[i] = NAN;
+    for (i = 0; i < n; ++i) out[SO_QDD + i] = NAN;
+  }
+}
+
+/* One sample: out (its row), and where A is not null its details (rows, forces, row
+ * accelerations, block states; mcap rows each). */
+static void scene_sample(sc_scene_work *sw, const double *q, const double *tau,
+                         const double *fo, sc_int max_sweeps, double *out, double *A,
+                         double *lam, double *w, double *state) {
+  const sc_int n = sw->n, ns = SNAKECG_NS, width = SO_QDD + ns + 7 * sw->no + 3 * sw->ng;
+  sc_int nc, m, nb, i, j, o;
+  double *P = sw->P;
+  sc_work_t *ws = &sw->ws;
+  for (i = 0; i < width; ++i) out[i] = 0.0;
+  ws->arg[LP_IN_q] = q;
+  ws->arg[LP_IN_K] = sw->pk + (sc_int)sw->pk[SP_K];
+  ws->res[LP_OUT_poses] = P;
+  if (SNAKECG_LP(ws->arg, ws->res, ws->iw, ws->w, 0)) goto failed;
+  ws->arg[LJ_IN_q] = q;
+  ws->arg[LJ_IN_K] = sw->pk + (sc_int)sw->pk[SP_K];
+  ws->res[LJ_OUT_J] = sw->J;
+  if (SNAKECG_LJ(ws->arg, ws->res, ws->iw, ws->w, 0)) goto failed;
+  ws->arg[MM_IN_q] = q;
+  ws->arg[MM_IN_K] = sw->pk + (sc_int)sw->pk[SP_K];
+  ws->res[MM_OUT_M] = sw->Ms;
+  if (SNAKECG_MM(ws->arg, ws->res, ws->iw, ws->w, 0)) goto failed;
+  place(sw, P);
+  for (o = 0; o < sw->no; ++o)
+    for (j = 0; j < 3; ++j) out[SO_QDD + ns + 4 * sw->no + 3 * o + j] = sw->pose[3 * o + j];
+  nc = contact_rows(sw, P, out, sw->ccap);
+  if (nc < 0) {
+    out[SO_INFO] = (double)-nc;
+    for (i = SO_NORM_QDD; i <= SO_SR; ++i) out[i] = NAN;
+    for (i = SO_QDD; i < width; ++i) out[i] = NAN; /* no contacts, no ground blocks */
+    return;
+  }
+  m = ground_rows(sw, P, nc);
+  nb = nc + sw->ng;
+  /* the full inertia (M_s; m, m, I per object) and force (B tau; the objects' wrenches) */
+  memset(sw->M, 0, sizeof(double) * (size_t)(n * n));
+  for (i = 0; i < ns; ++i)
+    for (j = 0; j < ns; ++j) sw->M[i * n + j] = sw->Ms[i + ns * j];
+  for (o = 0; o < sw->no; ++o) {
+    const double *obj = sw->pk + (sc_int)sw->pk[SP_OBJECTS] + OBJ_W * o;
+    sc_int c = ns + 3 * o;
+    sw->M[c * n + c] = sw->M[(c + 1) * n + c + 1] = obj[4];
+    sw->M[(c + 2) * n + c + 2] = obj[5];
+  }
+  for (i = 0; i < n; ++i) sw->f[i] = 0.0;
+  for (i = 3; i < ns; ++i) sw->f[i] = tau[i - 3];
+  for (i = 0; i < 3 * sw->no; ++i) sw->f[ns + i] = fo[i];
+  for (i = 0; i < nb; ++i) sw->st[i] = 0.0;
+  SNAKECG_EXPORT(core_scene_solve)(1, n, m, nb, &m, &nb, sw->M, sw->f, sw->A, sw->kind,
+                                   sw->start, sw->par, max_sweeps, sw->lam, sw->a, sw->w,
+                                   sw->st, out + SO_INFO);
+  /* a_free = M^-1 f (partial pivoting, as numpy.linalg.solve) */
+  memcpy(sw->LU, sw->M, sizeof(double) * (size_t)(n * n));
+  for (i = 0; i < n; ++i) sw->afree[i] = sw->f[i];
+  if (sc_lu_factor(n, sw->LU, n, sw->piv)) sc_lu_solve(n, sw->LU, n, sw->piv, sw->afree);
+  else
+    for (i = 0; i < n; ++i) sw->afree[i] = NAN;
+  metrics(sw, sw->a, out);
+  out[SO_NC] = (double)nc;
+  {
+    double *g = out + SO_QDD + ns + 7 * sw->no, *rec = g + 3 * sw->ng;
+    for (i = 0; i < sw->ng; ++i) {
+      sc_int r = sw->start[nc + i];
+      g[3 * i] = sw->lam[r];
+      g[3 * i + 1] = sc_block_size(sw->kind[nc + i]) == 2 ? sw->lam[r + 1] : 0.0;
+      g[3 * i + 2] = sw->st[nc + i];
+    }
+    for (i = 0; i < nc; ++i) {
+      rec[CR_W * i + 11] = sw->lam[i];
+      rec[CR_W * i + 12] = sw->st[i];
+    }
+  }
+  if (A) {
+    memcpy(A, sw->A, sizeof(double) * (size_t)(m * n));
+    memcpy(lam, sw->lam, sizeof(double) * (size_t)m);
+    memcpy(w, sw->w, sizeof(double) * (size_t)m);
+    memcpy(state, sw->st, sizeof(double) * (size_t)nb);
+  }
+  return;
+failed: /* a generated function refused */
+  out[SO_INFO] = SS_FAILED;
+  for (i = SO_NORM_QDD; i < width; ++i) out[i] = NAN;
+}
+
+static void work_free(sc_scene_work *sw) {
+  sc_work_free(&sw->ws);
+  free(sw->A);
+  free(sw->kind);
+  free(sw->shape);
+}
+
+/* The scratch of a batch call (0, or -1 out of memory). */
+static int work_alloc(sc_scene_work *sw, const double *pk, sc_int ccap, sc_int mcap) {
+  const sc_work_fn fns[] = {SNAKECG_LP_WORK, SNAKECG_LJ_WORK, SNAKECG_MM_WORK};
+  sc_int n, nd;
+  double *d;
+  sw->pk = pk;
+  sw->no = (sc_int)pk[SP_NO];
+  sw->nob = (sc_int)pk[SP_NOB];
+  sw->ng = (sc_int)pk[SP_NG];
+  sw->mg = (sc_int)pk[SP_MG];
+  sw->n = n = SNAKECG_NS + 3 * sw->no;
+  sw->ccap = ccap;
+  sw->mcap = mcap;
+  sw->nbody = SNAKECG_NL + sw->no + sw->nob;
+  sw->A = 0;
+  sw->kind = 0;
+  sw->shape = 0;
+  if (sc_work_alloc(&sw->ws, fns, SC_COUNT(fns))) return -1;
+  nd = mcap * n + 2 * n * n + 5 * n + 3 * mcap + 3 * mcap + 3 * SNAKECG_NL +
+       3 * SNAKECG_NL * SNAKECG_NS + SNAKECG_NS * SNAKECG_NS + 3 * sw->nbody + 3 * sw->no + 8;
+  sw->A = d = (double *)calloc((size_t)nd, sizeof(double));
+  sw->kind = (sc_int *)calloc((size_t)(2 * mcap + n + 2), sizeof(sc_int));
+  sw->shape = (sc_shape *)calloc((size_t)sw->nbody + 1, sizeof(sc_shape));
+  if (!sw->A || !sw->kind || !sw->shape) {
+    work_free(sw);
+    return -1;
+  }
+  d += mcap * n;
+  sw->M = d; d += n * n;
+  sw->LU = d; d += n * n;
+  sw->f = d; d += n;
+  sw->a = d; d += n;
+  sw->afree = d; d += n;
+  sw->par = d; d += 3 * mcap;
+  sw->lam = d; d += mcap;
+  sw->w = d; d += mcap;
+  sw->st = d; d += mcap;
+  sw->P = d; d += 3 * SNAKECG_NL;
+  sw->J = d; d += 3 * SNAKECG_NL * SNAKECG_NS;
+  sw->Ms = d; d += SNAKECG_NS * SNAKECG_NS;
+  sw->centre = d; d += 2 * sw->nbody;
+  sw->reach = d; d += sw->nbody;
+  sw->pose = d;
+  sw->start = sw->kind + mcap;
+  sw->piv = sw->start + mcap;
+  return 0;
+}
+
+/* The forward solve of n samples of a general scene packed in pk: sample i's q, tau, f_obj at
+ * q + i sq, tau + i st, fo + i sf (stride 0 broadcasts); its outputs at out + i width
+ * (width = SO_QDD + n_s + 7 n_o + 3 n_g + CR_W ccap); where A is not null, its details at
+ * A + i mcap n, lam, w, state + i mcap. At most ccap contacts a sample (a sample with more:
+ * status SS_MORE, for the caller to redo with a larger ccap). Returns 0, -1 out of memory, -2
+ * on sizes out of range, -(3 + i) when an input of sample i is not finite. */
+int SNAKECG_EXPORT(core_scene_forward)(const double *pk, sc_int n, const double *q, sc_int sq,
+                                       const double *tau, sc_int st, const double *fo,
+                                       sc_int sf, sc_int ccap, sc_int mcap, double *out,
+                                       double *A, double *lam, double *w, double *state) {
+  sc_scene_work sw;
+  sc_int i, width, mg = (sc_int)pk[SP_MG];
+  if (ccap < 0 || mcap < ccap + mg || mcap > 500 || SNAKECG_NS + 3 * pk[SP_NO] > 512)
+    return -2;
+  for (i = 0; i < n; ++i) { /* inputs first: a sample that is not finite refuses the call */
+    sc_int j, no3 = 3 * (sc_int)pk[SP_NO];
+    int ok = 1;
+    for (j = 0; j < SNAKECG_NS; ++j) ok &= isfinite(q[i * sq + j]) != 0;
+    for (j = 0; j < SNAKECG_NA; ++j) ok &= isfinite(tau[i * st + j]) != 0;
+    for (j = 0; j < no3; ++j) ok &= isfinite(fo[i * sf + j]) != 0;
+    if (!ok) return (int)(-3 - (i < 2000000000 ? i : 2000000000));
+  }
+  if (work_alloc(&sw, pk, ccap, mcap)) return -1;
+  width = SO_QDD + SNAKECG_NS + 7 * sw.no + 3 * sw.ng + CR_W * ccap;
+  for (i = 0; i < n; ++i)
+    scene_sample(&sw, q + i * sq, tau + i * st, fo + i * sf, SC_SCENE_SWEEPS, out + i * width,
+                 A ? A + i * mcap * sw.n : 0, A ? lam + i * mcap : 0, A ? w + i * mcap : 0,
+                 A ? state + i * mcap : 0);
+  work_free(&sw);
+  return 0;
+}
+
+/* core_scene_forward with its arguments in one struct: the one-sample calls pass a single
+ * pointer (a foreign call's cost grows with its argument count; snakecg/engine/binding.py
+ * mirrors it as SceneCall). */
+typedef struct {
+  const double *pk;
+  sc_int n;
+  const double *q;
+  sc_int sq;
+  const double *tau;
+  sc_int st;
+  const double *fo;
+  sc_int sf, ccap, mcap;
+  double *out, *A, *lam, *w, *state;
+} sc_scene_call;
+
+int SNAKECG_EXPORT(core_scene_forward_call)(const sc_scene_call *c) {
+  return SNAKECG_EXPORT(core_scene_forward)(c->pk, c->n, c->q, c->sq, c->tau, c->st, c->fo,
+                                            c->sf, c->ccap, c->mcap, c->out, c->A, c->lam,
+                                            c->w, c->state);
+}
