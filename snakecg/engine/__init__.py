@@ -46,6 +46,9 @@ class Core:
         ``core_settle``, run.c's ``core_run``."""
         self.scene_solve = lib.entry_or_none("core_scene_solve")
         """scene_solve.c's ``core_scene_solve``: the exact solve of general scenes' samples."""
+        self.scene_solve_b = lib.entry_or_none("core_scene_solve_b")
+        """scene_solve.c's ``core_scene_solve_b``: the same with row offsets (``w = A a + c``),
+        the velocity-level step of :mod:`snakecg.scenes.stepping`."""
         self.contact_depth = lib.entry_or_none("core_contact_depth")
         """geometry.c's ``core_contact_depth``: the simulation's contact check at states."""
         self.sphere = SphereKernel(lib)

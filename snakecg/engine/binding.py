@@ -65,6 +65,7 @@ PROTOTYPES: dict[str, tuple[list, object]] = {
     "core_eigen_symmetric": ([_I, _P, _P, _P], _INT),
     # scene_solve.c
     "core_scene_solve": ([_I, _I, _I, _I] + [_P] * 8 + [_I] + [_P] * 5, _INT),
+    "core_scene_solve_b": ([_I, _I, _I, _I] + [_P] * 9 + [_I] + [_P] * 5, _INT),
 }
 #: A generated function's batched driver: (n, inputs, strides, outputs).
 _BATCH = ([_I, ctypes.POINTER(_P), ctypes.POINTER(_I), ctypes.POINTER(_P)], _INT)

@@ -132,15 +132,19 @@ def _point_jacobian(body, p, J, poses, obj_poses, n_s, n):
     return out
 
 
-def rows_of(scene: GeneralScene, masses, poses, J, *, index=None) -> tuple[Rows, np.ndarray]:
+def rows_of(scene: GeneralScene, masses, poses, J, *, index=None, obj_poses=None,
+            tol=None) -> tuple[Rows, np.ndarray]:
     """The rows of one configuration (link COM poses ``poses`` (n_l, 3), link Jacobians
     ``J`` (n_l, 3, n_s)) and the objects' poses. Raises :class:`InputError` on overlap
-    (``index``: the sample's, named in the message)."""
+    (``index``: the sample's, named in the message). ``obj_poses`` (n_objects, 3): the
+    objects where they are (a simulation's state; default: placed by the scene); ``tol``
+    (m): the contact tolerance (default the scene's, ``tolerance`` times its size)."""
     n_s = J.shape[2]
     n = n_s + 3 * scene.n_objects
     size = scene_size(scene)
-    tol = scene.tolerance * size
-    obj_poses = place_objects(scene, poses)
+    tol = scene.tolerance * size if tol is None else float(tol)
+    obj_poses = (place_objects(scene, poses) if obj_poses is None
+                 else np.asarray(obj_poses, dtype=float).reshape(scene.n_objects, 3))
     bodies = shapes(scene, poses, obj_poses)
     rows, kind, start, par, contacts, labels = [], [], [], [], [], []
 

@@ -17,7 +17,7 @@ from .solve import solve
 
 __all__ = ["GeneralSceneModel"]
 
-_REFUSED = ("maps", "extremes", "optimize", "simulate", "optimize_shape", "com_polar")
+_REFUSED = ("maps", "extremes", "optimize", "optimize_shape", "com_polar")
 
 
 class GeneralSceneModel(RobotModel):
@@ -39,6 +39,14 @@ class GeneralSceneModel(RobotModel):
             raise InputError(f"{name} is not available on a general scene yet (forward and "
                              f"plot are); use a snakecg.Scene of the paper's scenarios")
         raise AttributeError(name)
+
+    def simulate(self, q0, duration, **kwargs):
+        """Simulate the scene over time: :func:`snakecg.scenes.stepping.simulate_scene`
+        (velocity-level time stepping on the same exact solve, contact onset by root finding,
+        inelastic impacts)."""
+        from .stepping import simulate_scene
+
+        return simulate_scene(self, q0, duration, **kwargs)
 
     def forward(self, q, tau, *, f_obj=None, v=None) -> SceneResult:
         """Accelerations, forces, contact states, norms, sr and the certificate at rest.
