@@ -289,6 +289,7 @@ def simulate_scene(model, q0, duration, *, v0=None, tau=None, dt=1e-3, q_obj0=No
             return rec.finish("penetration", t, f"the step could not be kept within the "
                               f"contact tolerance at t = {t:.6g} s")
         rec.step_work(h, tau_now, Vp, out, rows)
+        held = {(c.a, c.b) for c in rows.contacts}
         t += h
         x, V = xp, Vp
         nstep += 1
@@ -296,11 +297,11 @@ def simulate_scene(model, q0, duration, *, v0=None, tau=None, dt=1e-3, q_obj0=No
             Mf, P, rows = st.geometry(x[:ns], x[ns:].reshape(-1, 3))
         except InputError as exc:
             return rec.finish("penetration", t, str(exc))
-        # inelastic impact where a contact closes with a closing velocity
-        imp = None
-        if rows.contacts:
-            A = rows.A
-            vn = np.array([A[c.row] @ V for c in rows.contacts])
+        # inelastic impact where a new contact closes with a closing velocity (the contacts
+        # of the step's rows are the step's solve's)
+        new = [c for c in rows.contacts if (c.a, c.b) not in held]
+        if new:
+            vn = np.array([rows.A[c.row] @ V for c in new])
             if np.any(vn < -IMPACT_SPEED):
                 imp = st.solve_rows(Mf, Mf @ V, rows, 0.0, None)
                 if imp["info"]["status"] != 0:
