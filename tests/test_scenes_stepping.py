@@ -288,3 +288,46 @@ def test_simulate_refuses_bad_arguments_before_any_work():
     with pytest.raises(InputError, match="tolerance must be"):
         model.simulate(np.zeros(5), 1.0, tolerance=1.0)
     assert math.isfinite(model.simulate(np.zeros(5), 0.01).kinetic_energy[-1])
+
+
+# MuJoCo on the matched pegs scene ------------------------------------------------------------
+def test_pegs_row_against_mujoco():
+    """The pegs-row run for 1 s against MuJoCo on the matched scene (capsules and cylinders,
+    COM spheres on a Coulomb floor with condim 3 and noslip, stiff solref; tests/
+    mujoco_pegs.py) at 2e-4 s, where its capsule-peg overlaps stay within snakecg's tolerance:
+    the COM paths agree to a quarter of the distance travelled and the end points to 15 %.
+    (They are not the same model: MuJoCo's contacts are soft, its friction regularised, and
+    snakecg steps at 1e-3 s; see the obstacle-aided locomotion page.)"""
+    pytest.importorskip("mujoco")
+    from mujoco_pegs import MatchedPegs
+
+    from snakecg.scenes.stepping import SceneState
+
+    scene = read_scene(PEGS_ROW)
+    model = load_scene(scene)
+    q0 = np.zeros(13)
+    q0[3:] = 0.5 * np.sin(np.arange(10) * 2 * np.pi / 5)
+    gait = serpenoid_controller(model, amplitude=0.5, frequency=1.0, phase_lag=2 * np.pi / 5,
+                                kp=10.0, kd=0.3, tau_max=None)
+    run = model.simulate(q0, 1.0, tau=gait, dt=1e-3)
+    assert run.status == "completed"
+    com = model.com(run.q)
+    ts = 2e-4
+    mj = MatchedPegs(scene, timestep=ts)
+    mj.set_state(q0)
+    hold = 5  # the torque held over snakecg's step
+    coms, depth = [], 0.0
+    for k in range(5000):
+        if k % hold == 0:
+            q, v = mj.state()
+            tau = gait(k * ts, SceneState(k * ts, q, v, np.zeros((0, 3)), np.zeros((0, 3))))
+        mj.step(tau)
+        depth = max(depth, mj.peg_depth())
+        if (k + 1) % hold == 0:
+            coms.append(model.com(mj.state()[0]))
+    coms = np.array(coms)
+    travelled = float(np.hypot(*(com[-1] - com[0])))
+    assert travelled > 0.05
+    assert depth <= run.tolerance
+    assert np.hypot(*(coms[-1] - com[-1])) <= 0.15 * travelled
+    assert np.abs(coms - com[1:1 + len(coms)]).max() <= 0.25 * travelled

@@ -107,7 +107,6 @@ class _Stepper:
         self.f_obj = f_obj
         self.masses = np.asarray(model.scene.robot.mass, dtype=float)
         self.Mo = np.asarray(model.object_inertia, dtype=float).reshape(-1)
-        self.reach = 0.05 * scene_size(model.scene)
 
     def geometry(self, q, qo):
         """Mass matrix, link poses, Jacobians and rows at ``(q, qo)``."""
@@ -227,7 +226,7 @@ def simulate_scene(model, q0, duration, *, v0=None, tau=None, dt=1e-3, q_obj0=No
 
     def min_gap(xx):
         P, op = poses_at(xx)
-        g = pair_gaps(scene, P, op, st.reach)
+        g = pair_gaps(scene, P, op, 2.0 * tol)
         if not g:
             return math.inf, None
         i = int(np.argmin([d for _, _, d in g]))
@@ -258,13 +257,14 @@ def simulate_scene(model, q0, duration, *, v0=None, tau=None, dt=1e-3, q_obj0=No
             Vp = out["a"]
             xp = x + h * Vp
             P1, op1 = poses_at(xp)
-            gaps = pair_gaps(scene, P1, op1, st.reach)
+            # bounding circles apart: no overlap (the pairs farther than that need no distance)
+            gaps = pair_gaps(scene, P1, op1, 2.0 * tol)
             bad = [(a, b, d) for a, b, d in gaps if d < -tol]
             if not bad:
                 break
             # the time along the step where the first violating pair reaches -tol/4
-            P0, op0 = poses_at(x)
-            gaps0 = {(a, b): d for a, b, d in pair_gaps(scene, P0, op0, st.reach)}
+            gaps0 = {(a, b): _pair_gap(scene, P, x[ns:].reshape(-1, 3), a, b, size)
+                     for a, b, _ in bad}
             s_hit = 1.0
             for a, b, d1 in bad:
                 d0 = gaps0.get((a, b), math.inf)
