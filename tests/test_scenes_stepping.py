@@ -193,6 +193,8 @@ def test_one_step_against_cvxpy_clarabel(rng):
     Mf, _, rows = st.geometry(q, qo)
     assert len(rows.contacts) == 2  # the peg and the disc
     h = 1e-3
+    # gaps within the tolerance on both sides: the rows' offsets g / h of the solve
+    rows.contacts[0].gap, rows.contacts[1].gap = 3e-7, -2e-7
     V = np.r_[rng.normal(size=6) * 0.3, rng.normal(size=3) * 0.2]
     V[:6] -= 0  # any velocity; the ideal wheel's row need not hold before the step
     tau = rng.normal(size=3)
@@ -331,3 +333,26 @@ def test_pegs_row_against_mujoco():
     assert depth <= run.tolerance
     assert np.hypot(*(coms[-1] - com[-1])) <= 0.15 * travelled
     assert np.abs(coms - com[1:1 + len(coms)]).max() <= 0.25 * travelled
+
+
+def test_cli_simulate_scene_json_and_refusals(tmp_path, capsys):
+    """``snakecg simulate --scene``: strict JSON with the run's status and energy; options of
+    the paper's scene refused in one line with exit 2."""
+    import json
+
+    from snakecg.cli import main
+
+    q = "0,0,0,0,0.4755,0.2939,-0.2939,-0.4755,0,0.4755,0.2939,-0.2939,-0.4755"
+    rc = main(["simulate", "--scene", str(PEGS_ROW), f"--q={q}", "--tau",
+               "0.2,0,0,0,0,0,0,0,0,0", "--duration", "0.02", "--json", "--out",
+               str(tmp_path / "out")])
+    out = json.loads(capsys.readouterr().out)
+    assert rc == 0 and out["status"] == "completed" and out["steps"] == 20
+    assert out["energy"]["work_tau"] > 0
+    assert (tmp_path / "out" / "trajectory.npz").is_file()
+    with pytest.raises(SystemExit) as exc:
+        main(["simulate", "--scene", str(PEGS_ROW), f"--q={q}", "--tau",
+              "0,0,0,0,0,0,0,0,0,0", "--a-min", "1"])
+    assert exc.value.code == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "--a-min applies to the paper's scene only" in err[0]
