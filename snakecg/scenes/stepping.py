@@ -241,7 +241,7 @@ def simulate_scene(model, q0, duration, *, v0=None, tau=None, dt=1e-3, q_obj0=No
     tau_now = torque(t, x, V)
     rec.sample(t, x, V, tau_now, Mf, g0, rows, None)
     nstep = 0
-    while t < duration - 1e-12 * max(1.0, duration):
+    while duration - t > 1e-9 * dt:  # (rounding of the sum of the steps is no step)
         h = min(dt, duration - t)
         tau_now = torque(t, x, V)
         fgen = np.zeros(n)
@@ -311,7 +311,7 @@ def simulate_scene(model, q0, duration, *, v0=None, tau=None, dt=1e-3, q_obj0=No
                 rec.impact(t, V, V1, Mf, imp, rows, scene)
                 V = V1
         dmin = min([d for _, _, d in gaps], default=math.inf)
-        if nstep % output_every == 0 or t >= duration - 1e-12 * max(1.0, duration):
+        if nstep % output_every == 0 or duration - t <= 1e-9 * dt:
             rec.sample(t, x, V, tau_now, Mf, dmin, rows, out)
     return rec.finish("completed", t, "")
 
