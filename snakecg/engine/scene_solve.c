@@ -226,6 +226,7 @@ static int kkt(sc_problem *p, double *res, int do_switch) {
         break;
       case K_BOX:
         pr = fmax(pr, fmax(0.0, fabs(l[0]) - q[0]) / F);
+        if (!(q[0] > 0)) break; /* the set {0}: its normal cone is every w */
         if (fabs(l[0]) < q[0]) e = fabs(w[0]);
         else e = l[0] > 0 ? fmax(0.0, w[0]) : fmax(0.0, -w[0]);
         du = fmax(du, e / W);
