@@ -8,6 +8,7 @@ friction with the ground. Overlap beyond the tolerance is refused.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -118,6 +119,45 @@ def shapes(scene: GeneralScene, poses, obj_poses) -> list:
     return out
 
 
+def candidate_pairs(bodies, margin: float) -> list:
+    """The broad phase: index pairs ``(ia, ib)``, ``ia < ib``, of the ``[(body, Shape)]`` that
+    can touch (not two obstacles, not neighbouring links) and whose bounding circles (a wall:
+    none, it meets every shape) are within ``margin`` of each other."""
+    nb = len(bodies)
+    if nb < 2:
+        return []
+    centre = np.empty((nb, 2))
+    reach = np.empty(nb)
+    kind = np.empty(nb, dtype=np.int64)  # 0 link, 1 object, 2 obstacle
+    index = np.empty(nb, dtype=np.int64)
+    codes = {"link": 0, "object": 1, "obstacle": 2}
+    for i, (b, sh) in enumerate(bodies):
+        p = sh.pts
+        if sh.kind == "segment":  # the middle, half the length
+            (x0, y0), (x1, y1) = p.tolist()
+            centre[i] = (0.5 * (x0 + x1), 0.5 * (y0 + y1))
+            reach[i] = 0.5 * math.hypot(x1 - x0, y1 - y0) + sh.radius
+        elif sh.kind == "point":
+            centre[i] = p[0]
+            reach[i] = sh.radius
+        elif sh.kind == "halfplane":
+            centre[i] = p[0]
+            reach[i] = np.inf
+        else:
+            c = p.mean(axis=0)
+            centre[i] = c
+            reach[i] = np.sqrt(((p - c) ** 2).sum(axis=1)).max() + sh.radius
+        kind[i] = codes[b[0]]
+        index[i] = b[1]
+    ia, ib = np.triu_indices(nb, 1)
+    gap = np.hypot(*(centre[ia] - centre[ib]).T)
+    with np.errstate(invalid="ignore"):  # inf - inf of two walls: never compared (obstacles)
+        near = gap <= reach[ia] + reach[ib] + margin
+    ok = near & (kind[ia] != 2) & np.isfinite(reach[ia]) & ~(
+        (kind[ia] == 0) & (kind[ib] == 0) & (np.abs(index[ia] - index[ib]) < 2))
+    return list(zip(ia[ok].tolist(), ib[ok].tolist()))
+
+
 def _point_jacobian(body, p, J, poses, obj_poses, n_s, n):
     """(2, n): the velocity of point p fixed on ``body`` in the generalized velocities."""
     out = np.zeros((2, n))
@@ -155,35 +195,22 @@ def rows_of(scene: GeneralScene, masses, poses, J, *, index=None, obj_poses=None
         rows.extend(rs)
         labels.append(label)
 
-    # broad phase: a bounding circle per shape (a wall: none), pairs farther apart skipped
-    centre = np.array([sh.pts.mean(axis=0) for _, sh in bodies])
-    reach = np.array([np.inf if sh.kind == "halfplane" else
-                      np.sqrt(((sh.pts - sh.pts.mean(axis=0)) ** 2).sum(axis=1)).max()
-                      + sh.radius for _, sh in bodies])
-    for ia in range(len(bodies)):
-        ba, sa = bodies[ia]
-        if ba[0] == "obstacle" or sa.kind == "halfplane":
+    for ia, ib in candidate_pairs(bodies, 2 * tol):
+        (ba, sa), (bb, sb) = bodies[ia], bodies[ib]
+        d, pairs = closest(sa, sb, size)
+        if d < -tol:
+            where = "" if index is None else f" in sample {index}"
+            raise InputError(
+                f"{scene.body_name(*ba)} and {scene.body_name(*bb)} overlap by "
+                f"{-d:.3g} m{where} (contacts hold within {tol:.3g} m); move them apart")
+        if d > tol:
             continue
-        for ib in range(ia + 1, len(bodies)):
-            bb, sb = bodies[ib]
-            if ba[0] == "link" and bb[0] == "link" and abs(ba[1] - bb[1]) < 2:
-                continue
-            if np.hypot(*(centre[ia] - centre[ib])) > reach[ia] + reach[ib] + 2 * tol:
-                continue
-            d, pairs = closest(sa, sb, size)
-            if d < -tol:
-                where = "" if index is None else f" in sample {index}"
-                raise InputError(
-                    f"{scene.body_name(*ba)} and {scene.body_name(*bb)} overlap by "
-                    f"{-d:.3g} m{where} (contacts hold within {tol:.3g} m); move them apart")
-            if d > tol:
-                continue
-            for ca, cb, nrm in pairs:
-                Ja = _point_jacobian(ba, ca, J, poses, obj_poses, n_s, n)
-                Jb = _point_jacobian(bb, cb, J, poses, obj_poses, n_s, n)
-                contacts.append(Contact(ba, bb, ca, cb, nrm, d, len(rows)))
-                block(UNILATERAL, [nrm @ (Jb - Ja)], (0.0, 0.0, 0.0),
-                      ("contact", len(contacts) - 1))
+        for ca, cb, nrm in pairs:
+            Ja = _point_jacobian(ba, ca, J, poses, obj_poses, n_s, n)
+            Jb = _point_jacobian(bb, cb, J, poses, obj_poses, n_s, n)
+            contacts.append(Contact(ba, bb, ca, cb, nrm, d, len(rows)))
+            block(UNILATERAL, [nrm @ (Jb - Ja)], (0.0, 0.0, 0.0),
+                  ("contact", len(contacts) - 1))
     g = scene.gravity
     for i, gr in enumerate(scene.ground):
         x, y, phi = poses[i]

@@ -100,26 +100,32 @@ class SceneRun:
         ns = self._ns
         self._acc[0] += h * float(tau @ Vp[3:ns])
         lam, A = out["lam"], rows.A
-        fr = cw = imp = 0.0
-        for k, (kd, st) in enumerate(zip(rows.kind, rows.start)):
-            size = 2 if kd in (DISC, SPLIT) else 1
-            lk = lam[st:st + size]
-            wk = A[st:st + size] @ Vp if A.size else np.zeros(size)
-            if kd in (BOX, DISC, SPLIT):
-                fr -= float(lk @ wk)
-                sp, ln = float(np.hypot(*wk)) if size == 2 else abs(float(wk[0])), \
-                    float(np.hypot(*lk)) if size == 2 else abs(float(lk[0]))
-                if sp > 1e-9 and ln > 0 and kd != SPLIT:
-                    # Coulomb disc, bounded wheel: the impulse is anti-parallel to sliding
-                    cos = -float(lk @ wk) / (sp * ln)
-                    self.min_sliding_cosine = (cos if self.min_sliding_cosine < 0 else
-                                               min(self.min_sliding_cosine, cos))
-            elif kd == UNILATERAL:
-                cw += float(lk @ wk)
-                imp += float(lk[0])
-        self._acc[1] += fr
-        self._acc[3] += cw
-        self._acc[4] = imp
+        m = A.shape[0]
+        w = A @ Vp if m else np.zeros(0)
+        kind = np.asarray(rows.kind, dtype=np.int64)
+        start = np.asarray(rows.start, dtype=np.int64)
+        size = np.where((kind == DISC) | (kind == SPLIT), 2, 1)
+        per_row = np.repeat(kind, size) if m else np.zeros(0, dtype=np.int64)
+        fric = np.isin(per_row, (BOX, DISC, SPLIT))
+        cont = per_row == UNILATERAL
+        self._acc[1] -= float(lam[:m][fric] @ w[fric])
+        self._acc[3] += float(lam[:m][cont] @ w[cont])
+        self._acc[4] = float(lam[:m][cont].sum())
+        # Coulomb discs and bounded wheels: the impulse anti-parallel to the sliding velocity
+        for kd in (DISC, BOX):
+            st = start[kind == kd]
+            if not st.size:
+                continue
+            idx = st[:, None] + np.arange(2 if kd == DISC else 1)
+            wk, lk = w[idx], lam[idx]
+            sp = np.sqrt((wk * wk).sum(axis=1))
+            ln = np.sqrt((lk * lk).sum(axis=1))
+            slide = (sp > 1e-9) & (ln > 0)
+            if slide.any():
+                cos = -(lk[slide] * wk[slide]).sum(axis=1) / (sp[slide] * ln[slide])
+                c = float(cos.min())
+                self.min_sliding_cosine = (c if self.min_sliding_cosine < 0 else
+                                           min(self.min_sliding_cosine, c))
         info = out["info"]
         for k in ("primal", "dual", "complementarity"):
             self.certificate[k] = max(self.certificate[k], float(info[k]))

@@ -38,7 +38,7 @@ import numpy as np
 from scipy.optimize import brentq
 
 from ..errors import InputError
-from .contacts import place_objects, rows_of, scene_size, shapes
+from .contacts import candidate_pairs, place_objects, rows_of, scene_size, shapes
 from .geometry import closest
 from .run_record import SceneEvent, SceneRun
 from .solve import BOX, DISC, SPLIT, solve
@@ -71,23 +71,9 @@ def pair_gaps(scene, poses, obj_poses, reach: float) -> list:
     and obstacles) whose bounding circles are within ``reach`` of each other."""
     bodies = shapes(scene, poses, obj_poses)
     size = scene_size(scene)
-    centre = [sh.pts.mean(axis=0) for _, sh in bodies]
-    rad = [np.inf if sh.kind == "halfplane" else
-           float(np.sqrt(((sh.pts - centre[i]) ** 2).sum(axis=1)).max()) + sh.radius
-           for i, (_, sh) in enumerate(bodies)]
-    out = []
-    for ia, (ba, sa) in enumerate(bodies):
-        if ba[0] == "obstacle":
-            continue
-        for ib in range(ia + 1, len(bodies)):
-            bb, sb = bodies[ib]
-            if ba[0] == "link" and bb[0] == "link" and abs(ba[1] - bb[1]) < 2:
-                continue
-            if math.hypot(*(centre[ia] - centre[ib])) > rad[ia] + rad[ib] + reach:
-                continue
-            d, _ = closest(sa, sb, size)
-            out.append((ba, bb, float(d)))
-    return out
+    return [(bodies[ia][0], bodies[ib][0], float(closest(bodies[ia][1], bodies[ib][1],
+                                                         size)[0]))
+            for ia, ib in candidate_pairs(bodies, reach)]
 
 
 def _pair_gap(scene, poses, obj_poses, a, b, size) -> float:
