@@ -409,3 +409,14 @@ def test_pushing_a_box_on_every_ground_stays_outside_it(ground):
             worst = max(worst, scene.radius - _segment_box_distance(a, b, corners))
     assert worst <= run.tolerance * (1 + 1e-6)
     _laws(run)
+
+
+def test_a_long_run_reports_progress(monkeypatch):
+    import snakecg.scenes.stepping as stepping
+
+    monkeypatch.setattr(stepping, "PROGRESS_EVERY", 0.0)
+    model = load_scene(GeneralScene(snakecg.Robot(joints=2), ground=Ground(model="coulomb")))
+    lines = []
+    run = model.simulate(np.zeros(5), 0.01, tau=np.array([0.1, 0.0]), progress=lines.append)
+    assert run.status == "completed" and len(lines) == 10
+    assert lines[-1] == "simulate: t = 0.009 s of 0.01 s, 9 steps, 0 impacts"

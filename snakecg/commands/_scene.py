@@ -103,7 +103,7 @@ def simulate_command(args, scene, gait: dict) -> int:
         tau = serpenoid_controller(model, **gait,
                                    tau_max="robot" if args.tau_max is None else args.tau_max)
     run = model.simulate(q, args.duration, v0=v, tau=tau,
-                         dt=1e-3 if args.dt is None else args.dt)
+                         dt=1e-3 if args.dt is None else args.dt, progress=None)
     s = strict_json(run.summary)
     s["scene"] = str(args.scene)
     try:

@@ -32,6 +32,7 @@ edges and links and a box's corner can take over.
 from __future__ import annotations
 
 import math
+import time
 from dataclasses import dataclass
 
 import numpy as np
@@ -51,6 +52,8 @@ H_MIN = 1e-9
 MAX_STEPS = 5_000_000
 #: a contact closes with an impact when its normal velocity is below this (m/s)
 IMPACT_SPEED = 1e-9
+#: seconds of wall time between progress lines
+PROGRESS_EVERY = 5.0
 
 
 @dataclass
@@ -170,7 +173,8 @@ def _check_args(model, q0, v0, duration, dt, q_obj0, v_obj0, f_obj, tolerance):
 
 
 def simulate_scene(model, q0, duration, *, v0=None, tau=None, dt=1e-3, q_obj0=None,
-                   v_obj0=None, f_obj=None, tolerance=None, output_every=1) -> SceneRun:
+                   v_obj0=None, f_obj=None, tolerance=None, output_every=1,
+                   progress=False) -> SceneRun:
     """Simulate the general scene of ``model`` (a :class:`~snakecg.scenes.model.
     GeneralSceneModel`) from ``q0`` (``v0``: default at rest) for ``duration`` seconds.
 
@@ -181,7 +185,11 @@ def simulate_scene(model, q0, duration, *, v0=None, tau=None, dt=1e-3, q_obj0=No
     the scene, at rest); ``f_obj``: a constant wrench on every object. ``tolerance`` (m): the
     contact tolerance (default ``1e-5`` times the scene's size): contacts hold within it and
     nothing may penetrate beyond it. ``output_every``: keep every k-th step in the record.
+    ``progress``: ``False`` (default) quiet, ``None`` a line on standard error every
+    :data:`PROGRESS_EVERY` seconds of a long run (:func:`snakecg.progress.resolve`), or a
+    ``progress(message)`` callable.
     """
+    from ..progress import resolve
     from ..simulate.torques import check_tau, torque_law
 
     q, v, qo, vo, fo = _check_args(model, q0, v0, duration, dt, q_obj0, v_obj0, f_obj,
@@ -227,7 +235,13 @@ def simulate_scene(model, q0, duration, *, v0=None, tau=None, dt=1e-3, q_obj0=No
     tau_now = torque(t, x, V)
     rec.sample(t, x, V, tau_now, Mf, g0, rows, None)
     nstep = 0
-    while duration - t > 1e-9 * dt:  # (rounding of the sum of the steps is no step)
+    report = resolve(progress)
+    wall = time.perf_counter()
+    while duration - t > 1e-9 * dt:
+        if report is not None and time.perf_counter() - wall > PROGRESS_EVERY:
+            wall = time.perf_counter()
+            report(f"simulate: t = {t:.4g} s of {duration:g} s, {nstep} steps, "
+                   f"{len(rec.events)} impacts")  # (rounding of the sum of the steps is no step)
         h = min(dt, duration - t)
         tau_now = torque(t, x, V)
         fgen = np.zeros(n)
