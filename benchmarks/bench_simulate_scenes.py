@@ -144,8 +144,8 @@ def main() -> None:
               f"deepest overlap {depth:.3g} m{' (within)' if ok else ''}, COM end differs "
               f"from snakecg's by {np.hypot(*(com_mj - com[-1])):.4f} m")
     if chosen:
-        print(f"ratio at the largest step within the bound ({chosen[0]:.1e} s): snakecg / "
-              f"MuJoCo = {chosen[1] / best:.3f}")
+        print(f"speed ratio at MuJoCo's largest step within the bound ({chosen[0]:.1e} s): "
+              f"snakecg / MuJoCo = {chosen[1] / best:.3f}")
     print(f"load after: {os.getloadavg()}")
 
 
