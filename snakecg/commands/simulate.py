@@ -135,6 +135,9 @@ def run(args) -> int:
         from ._scene import simulate_command
 
         return simulate_command(args, general, _gait_options(args))
+    if args.dt is not None:
+        raise InputError("--dt applies to a general scene (--scene FILE) only; the paper's "
+                         "scene is integrated with error control (--rtol, --atol)")
     # every option checked against the robot and each other before the model is loaded
     scene = scene_from_args(args)
     na = scene.robot.joints
