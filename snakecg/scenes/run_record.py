@@ -45,8 +45,9 @@ class SceneRun:
 
     * state: ``q``, ``v`` (N, n_s), ``q_obj``, ``v_obj`` (N, n_objects, 3); ``tau`` (N, n_a)
       (the torque held over the step that ends at the sample);
-    * contacts: ``min_gap`` (N,) the smallest signed distance of any pair (m; >= -tolerance
-      on every sample of a completed run), ``n_contacts`` (N,), ``contact_impulse`` (N,) the
+    * contacts: ``min_gap`` (N,) the smallest signed distance of the pairs within the contact
+      tolerance (m; inf where there is none: every pair is farther apart; >= -tolerance on
+      every sample of a completed run), ``n_contacts`` (N,), ``contact_impulse`` (N,) the
       sum of the contacts' normal impulses over the step (N s);
     * energy: ``kinetic_energy`` (N,), cumulative ``work_tau`` (the torques' work, h tau . v+
       per step), ``friction_dissipation`` (the ground's, -lam . (A v+) >= 0 per step),

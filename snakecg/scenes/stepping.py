@@ -218,30 +218,24 @@ def simulate_scene(model, q0, duration, *, v0=None, tau=None, dt=1e-3, q_obj0=No
     def poses_at(xx):
         return model.link_poses(xx[:ns]), xx[ns:].reshape(-1, 3)
 
-    def min_gap(xx):
-        P, op = poses_at(xx)
-        g = pair_gaps(scene, P, op, 2.0 * tol)
-        if not g:
-            return math.inf, None
-        i = int(np.argmin([d for _, _, d in g]))
-        return g[i][2], g[i]
+    def min_gap(rows):  # the contacts' (every other pair is farther than the tolerance)
+        return min((c.gap for c in rows.contacts), default=math.inf)
 
     try:
         Mf, P, rows = st.geometry(x[:ns], x[ns:].reshape(-1, 3))
     except InputError as exc:
         return rec.finish("penetration", 0.0, str(exc))
-    g0, pair0 = min_gap(x)
     t = 0.0
     tau_now = torque(t, x, V)
-    rec.sample(t, x, V, tau_now, Mf, g0, rows, None)
+    rec.sample(t, x, V, tau_now, Mf, min_gap(rows), rows, None)
     nstep = 0
     report = resolve(progress)
     wall = time.perf_counter()
-    while duration - t > 1e-9 * dt:
+    while duration - t > 1e-9 * dt:  # (rounding of the sum of the steps is no step)
         if report is not None and time.perf_counter() - wall > PROGRESS_EVERY:
             wall = time.perf_counter()
             report(f"simulate: t = {t:.4g} s of {duration:g} s, {nstep} steps, "
-                   f"{len(rec.events)} impacts")  # (rounding of the sum of the steps is no step)
+                   f"{len(rec.events)} impacts")
         h = min(dt, duration - t)
         tau_now = torque(t, x, V)
         fgen = np.zeros(n)
@@ -256,12 +250,16 @@ def simulate_scene(model, q0, duration, *, v0=None, tau=None, dt=1e-3, q_obj0=No
                                   f"at t = {t:.6g} s")
             Vp = out["a"]
             xp = x + h * Vp
+            try:  # the next step's geometry; refused where a pair overlaps beyond tol
+                geo = st.geometry(xp[:ns], xp[ns:].reshape(-1, 3))
+                break
+            except InputError as exc:
+                refusal = str(exc)
             P1, op1 = poses_at(xp)
             # bounding circles apart: no overlap (the pairs farther than that need no distance)
-            gaps = pair_gaps(scene, P1, op1, 2.0 * tol)
-            bad = [(a, b, d) for a, b, d in gaps if d < -tol]
+            bad = [(a, b, d) for a, b, d in pair_gaps(scene, P1, op1, 2.0 * tol) if d < -tol]
             if not bad:
-                break
+                return rec.finish("penetration", t, refusal)
             # the time along the step where the first violating pair reaches -tol/4
             gaps0 = {(a, b): _pair_gap(scene, P, x[ns:].reshape(-1, 3), a, b, size)
                      for a, b, _ in bad}
@@ -293,10 +291,7 @@ def simulate_scene(model, q0, duration, *, v0=None, tau=None, dt=1e-3, q_obj0=No
         t += h
         x, V = xp, Vp
         nstep += 1
-        try:
-            Mf, P, rows = st.geometry(x[:ns], x[ns:].reshape(-1, 3))
-        except InputError as exc:
-            return rec.finish("penetration", t, str(exc))
+        Mf, P, rows = geo
         # inelastic impact where a new contact closes with a closing velocity (the contacts
         # of the step's rows are the step's solve's)
         new = [c for c in rows.contacts if (c.a, c.b) not in held]
@@ -310,8 +305,7 @@ def simulate_scene(model, q0, duration, *, v0=None, tau=None, dt=1e-3, q_obj0=No
                 V1 = imp["a"]
                 rec.impact(t, V, V1, Mf, imp, rows, scene)
                 V = V1
-        dmin = min([d for _, _, d in gaps], default=math.inf)
         if nstep % output_every == 0 or duration - t <= 1e-9 * dt:
-            rec.sample(t, x, V, tau_now, Mf, dmin, rows, out)
+            rec.sample(t, x, V, tau_now, Mf, min_gap(rows), rows, out)
     return rec.finish("completed", t, "")
 
