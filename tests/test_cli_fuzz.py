@@ -526,7 +526,9 @@ COMMAND_FAULTS = {
                  "--atol": ["0", "-1", "nan", ""],
                  "--stabilization": ["-1", "nan", "1e7", ""],
                  "--output-dt": ["0", "5e-324", "1e-9", "nan", "-1", ""],
-                 "--out": [""], "--frames": ["0", "1", "1000000000", "x", ""]},
+                 "--out": [""], "--frames": ["0", "1", "1000000000", "x", ""],
+                 # a time step is a general scene's (--scene); the paper's scene refuses any
+                 "--dt": ["0", "-1", "nan", "2", "", "0.001"]},
     "reproduce": {"--out": [""], "--kappa": ["nan", "0", "-1", "inf", "x", ""],
                   "--torque-grid": ["10", "0", "100000000", "x", "", "-5"],
                   "--formats": ["", "gif", "png,jpg", " , "]},

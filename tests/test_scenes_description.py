@@ -160,9 +160,12 @@ def test_cli_forward_and_plot_take_a_scene(tmp_path):
     r = _cli("forward", "--scene", str(bad), "--q", "0,0,0,0,0,0", "--tau", "0,0,0")
     assert r.returncode == 2 and "object[1].mass" in r.stderr and "Traceback" not in r.stderr
     assert len(r.stderr.strip().splitlines()) == 1
-    r = _cli("simulate", "--scene", str(p), "--q", "0,0,0,0,0,0", "--tau", "0,0,0",
-             "--duration", "0.1")
+    r = _cli("optimize", "max_sr", "--scene", str(p), "--q", "0,0,0,0,0,0")
     assert r.returncode == 2 and "--scene" in r.stderr and "Traceback" not in r.stderr
+    # simulate takes a general scene (tests/test_scenes_stepping.py)
+    r = _cli("simulate", "--scene", str(p), "--q", "0,0,0,0,0,0", "--tau", "0,0,0",
+             "--duration", "0.01", "--out", str(tmp_path / "run"))
+    assert r.returncode == 0, r.stderr
 
 
 def test_api_inputs_are_checked_by_name():

@@ -271,3 +271,15 @@ def test_object_on_object_and_self_contact():
     folded = GeneralScene(robot, radius=0.02)
     with pytest.raises(InputError, match=r"link 1 and link 3 overlap"):
         snakecg.load(folded).forward([0.0, 0.0, 0.0, 2.9, 2.9], [0.0, 0.0])
+
+
+def test_a_wheel_without_friction_is_a_frictionless_ground(rng):
+    """A bounded wheel of mu = 0 holds no force: the accelerations are the frictionless
+    ground's, every sample solved (its zero set's normal cone is every row acceleration; the
+    certificate used to count a negative one as a dual residual and report no convergence)."""
+    wheels = load_scene(GeneralScene(Robot(joints=2), ground=Ground(model="wheels", mu=0.0)))
+    free = load_scene(GeneralScene(Robot(joints=2), ground=Ground(model="frictionless")))
+    q, tau = rng.normal(size=(30, 5)), rng.normal(size=(30, 2))
+    a, b = wheels.forward(q, tau), free.forward(q, tau)
+    assert np.all(a.status == 0)
+    np.testing.assert_allclose(a.qdd, b.qdd, rtol=0, atol=1e-12 * np.abs(b.qdd).max())

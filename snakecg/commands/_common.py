@@ -234,7 +234,7 @@ def general_scene_from_args(args):
 def scene_from_args(args) -> Scene:
     if getattr(args, "scene", None):
         raise InputError(f"--scene: {args.command if hasattr(args, 'command') else 'this'} "
-                         f"command does not take a general scene yet (forward and plot do)")
+                         f"command does not take a general scene yet (forward, plot and simulate do)")
     overrides = {
         "scenario": args.scenario, "kappa": args.kappa, "mu": args.mu,
         "contact_link": args.contact_link, "side": args.side,

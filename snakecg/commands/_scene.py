@@ -1,10 +1,11 @@
-"""The command line on a general scene (``--scene FILE``): ``forward`` and ``plot``."""
+"""The command line on a general scene (``--scene FILE``): ``forward``, ``plot`` and
+``simulate``."""
 
 from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["forward_command"]
+__all__ = ["forward_command", "simulate_command"]
 
 
 def _vectors(args, scene):
@@ -60,5 +61,79 @@ def forward_command(args, scene, schema: str) -> int:
         import sys
 
         sys.stderr.write(f"snakecg forward: failed: {res.reason[0]}\n")
+        return 1
+    return 0
+
+
+#: the paper-scene options of ``snakecg simulate`` that a general scene's run does not take
+_NOT_FOR_SCENES = (("--v-obj", "v_obj"), ("--a-min", "a_min"), ("--control-period",
+                   "control_period"), ("--output-dt", "output_dt"))
+
+
+def simulate_command(args, scene, gait: dict) -> int:
+    """``snakecg simulate --scene FILE``: the general scene over time (velocity-level time
+    stepping, :func:`snakecg.scenes.stepping.simulate_scene`); writes ``summary.json`` and
+    ``trajectory.npz`` to ``--out``; ``--json`` prints the summary."""
+    import json
+    import sys
+
+    from .. import load
+    from .._files import write_text
+    from ..errors import InputError, SnakecgError
+    from ..simulate import serpenoid_controller
+    from ._common import check_vector, out_dir, parse_vector, print_json, progress_reporter
+    from ._common import strict_json
+
+    given = [opt for opt, key in _NOT_FOR_SCENES if getattr(args, key, None) is not None]
+    if args.controller == "least-slip-push":
+        given.append("--controller least-slip-push")
+    if given:
+        raise InputError(f"--scene: {', '.join(given)} applies to the paper's scene only")
+    q, tau = _vectors(args, scene)
+    na = scene.robot.joints
+    v = (check_vector("v0", parse_vector("--v", args.v), na + 3,
+                      f" = (n_joints + 3,) for a {na}-joint robot") if args.v else None)
+    if args.controller and tau is not None:
+        raise InputError("give either --tau or --controller, not both")
+    if not args.controller and tau is None:
+        raise InputError("give the joint torques --tau (or --controller serpenoid)")
+    out = out_dir("--out", args.out)
+    model = load(scene, progress=progress_reporter())
+    if args.controller == "serpenoid":
+        tau = serpenoid_controller(model, **gait,
+                                   tau_max="robot" if args.tau_max is None else args.tau_max)
+    run = model.simulate(q, args.duration, v0=v, tau=tau,
+                         dt=1e-3 if args.dt is None else args.dt, progress=None)
+    s = strict_json(run.summary)
+    s["scene"] = str(args.scene)
+    try:
+        out.mkdir(parents=True, exist_ok=True)
+        write_text(out / "summary.json", json.dumps(s, indent=2, allow_nan=False) + "\n")
+        arrays = {k: getattr(run, k) for k in ("t", "q", "v", "q_obj", "v_obj", "tau",
+                                               "min_gap", "kinetic_energy", "work_tau",
+                                               "friction_dissipation", "impact_loss")}
+        tmp = out / ".trajectory.npz.part"
+        with open(tmp, "wb") as fh:
+            np.savez(fh, **arrays)
+        tmp.replace(out / "trajectory.npz")
+    except OSError as exc:
+        raise SnakecgError(f"cannot write to --out {str(out)!r}: {exc}") from None
+    files = {"trajectory": str(out / "trajectory.npz"), "summary": str(out / "summary.json")}
+    if args.json:
+        print_json({**s, "files": files})
+    else:
+        e = s["energy"]
+        print(f"{na} joints, {scene.n_objects} objects, {len(scene.obstacles)} obstacles, "
+              f"{s['duration']:g} s in {s['steps']} steps: {s['status']}")
+        print(f"  impacts {s['impacts']}, smallest gap {s['min_gap']} m (tolerance "
+              f"{s['tolerance']:.3g} m)")
+        print(f"  energy (J): kinetic {e['kinetic_start']:.4g} -> {e['kinetic_end']:.4g}, "
+              f"torques {e['work_tau']:.4g}, friction {e['friction_dissipation']:.4g}, "
+              f"impacts {e['impact_loss']:.4g}")
+        c = s["certificate"]
+        print(f"  KKT residuals (largest over the steps): primal {c['primal']:.2g}, dual "
+              f"{c['dual']:.2g}, complementarity {c['complementarity']:.2g}")
+    if s["status"] != "completed":
+        sys.stderr.write(f"snakecg simulate: {s['status']}: {s['message']}\n")
         return 1
     return 0

@@ -105,6 +105,9 @@ def register(sub) -> None:
     p.add_argument("--frames", type=count(2, MAX_FRAMES, why=" (the limit: frames are held in "
                                            "memory until the GIF is written)"), default=100,
                    help=f"animation frames, 2 to {MAX_FRAMES} (default 100)")
+    p.add_argument("--dt", type=real(1e-7, 1.0, lo_open=False, unit="s"),
+                   help="--scene: the time step (s, default 0.001; shortened where a contact "
+                   "begins)")
     p.add_argument("--json", action="store_true",
                    help="print the summary as JSON (schema snakecg.simulate/1)")
     p.set_defaults(run=run)
@@ -125,6 +128,16 @@ def run(args) -> int:
     from ..figures.simulation import save_figures
     from ..simulate import least_slip_push_controller, serpenoid_controller, simulate
 
+    from ._common import general_scene_from_args
+
+    general = general_scene_from_args(args)
+    if general is not None:  # a general scene: time stepping (snakecg.scenes.stepping)
+        from ._scene import simulate_command
+
+        return simulate_command(args, general, _gait_options(args))
+    if args.dt is not None:
+        raise InputError("--dt applies to a general scene (--scene FILE) only; the paper's "
+                         "scene is integrated with error control (--rtol, --atol)")
     # every option checked against the robot and each other before the model is loaded
     scene = scene_from_args(args)
     na = scene.robot.joints

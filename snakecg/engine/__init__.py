@@ -52,6 +52,9 @@ class Core:
             lib.entry_or_none(name) for name in ("core_scene_forward", "core_scene_forward_call"))
         """scene_rows.c's ``core_scene_forward``: a general scene's forward solve of a batch
         (``core_scene_forward_call``: the same with its arguments in a ``SceneCall``)."""
+        self.scene_solve_b = lib.entry_or_none("core_scene_solve_b")
+        """scene_solve.c's ``core_scene_solve_b``: the same with row offsets (``w = A a + c``),
+        the velocity-level step of :mod:`snakecg.scenes.stepping`."""
         self.contact_depth = lib.entry_or_none("core_contact_depth")
         """geometry.c's ``core_contact_depth``: the simulation's contact check at states."""
         self.sphere = SphereKernel(lib)

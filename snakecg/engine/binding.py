@@ -69,6 +69,7 @@ PROTOTYPES: dict[str, tuple[list, object]] = {
     # scene_rows.c
     "core_scene_forward": ([_P, _I, _P, _I, _P, _I, _P, _I, _I, _I] + [_P] * 5, _INT),
     "core_scene_forward_call": ([_P], _INT),
+    "core_scene_solve_b": ([_I, _I, _I, _I] + [_P] * 9 + [_I] + [_P] * 5, _INT),
 }
 #: A generated function's batched driver: (n, inputs, strides, outputs).
 _BATCH = ([_I, ctypes.POINTER(_P), ctypes.POINTER(_I), ctypes.POINTER(_P)], _INT)

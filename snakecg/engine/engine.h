@@ -24,7 +24,8 @@
  *   max_sr.c, push.c, wheel_states.c   the queries' solves
  *   pieces.c, sphere.c                 the exact extremes' pieces and faces (exported)
  *   scene_sets.c, scene_solve.c        the exact solve of a general scene's sets (exported:
- *                                      core_scene_solve)
+ *                                      core_scene_solve, and core_scene_solve_b
+ *                                      with row offsets: the velocity-level step)
  *   scene_geometry.c, scene_rows.c     contacts, rows, solve, metrics (core_scene_forward)
  *
  * One prefix (sc_), one integer type (sc_int). The library exports the model's prefixed entry

@@ -15,7 +15,7 @@
  *
  * Gauss's principle with the sets' support functions has the dual
  *     min_lam 1/2 lam^T G lam + b^T lam  over lam in K = K_1 x ... x K_nb,
- * G = A I^-1 A^T (eq. 14), b = A I^-1 f (eq. 16 at rest): the accelerations
+ * G = A I^-1 A^T (eq. 14), b = A I^-1 f + c (eq. 16 at rest, c = 0): the accelerations
  * a = I^-1 (f + A^T lam) (eq. 18) are unique; the forces are unique when G is regular. The
  * solve:
  *   1. block Gauss-Seidel, each block minimised exactly (a clamp, or a 2-D trust-region
@@ -226,6 +226,7 @@ static int kkt(sc_problem *p, double *res, int do_switch) {
         break;
       case K_BOX:
         pr = fmax(pr, fmax(0.0, fabs(l[0]) - q[0]) / F);
+        if (!(q[0] > 0)) break; /* the set {0}: its normal cone is every w */
         if (fabs(l[0]) < q[0]) e = fabs(w[0]);
         else e = l[0] > 0 ? fmax(0.0, w[0]) : fmax(0.0, -w[0]);
         du = fmax(du, e / W);
@@ -276,7 +277,7 @@ static int kkt(sc_problem *p, double *res, int do_switch) {
 /* One sample. M (n x n), f (n), A (m x n) row-major; out: lam (m), a (n), w (m), state (nb),
  * info (INFO_WIDTH). Scratch: work and iwork sized by scene_solve_work. */
 static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const double *f,
-                         const double *A, const sc_int *kind, const sc_int *start,
+                         const double *A, const double *c, const sc_int *kind, const sc_int *start,
                          const double *par, sc_int max_sweeps, double *lam, double *a,
                          double *w, double *state_out, double *info, double *work,
                          sc_int *iwork) {
@@ -309,7 +310,7 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
       for (k = 0; k < n; ++k) s += A[i * n + k] * Y[k * m + j];
       G[i * m + j] = s;
     }
-    b[i] = sc_dot(A + i * n, a, n);
+    b[i] = sc_dot(A + i * n, a, n) + (c ? c[i] : 0.0);
   }
   for (i = 0; i < m; ++i) /* symmetric to rounding */
     for (j = 0; j < i; ++j) G[i * m + j] = G[j * m + i] = 0.5 * (G[i * m + j] + G[j * m + i]);
@@ -433,13 +434,15 @@ void SNAKECG_EXPORT(core_scene_solve_work)(sc_int n, sc_int m, sc_int nb, sc_int
 
 /* A batch of samples of equal sizes n; sample s has m[s] rows and nb[s] blocks (padded to
  * mmax, nbmax in the arrays). Inputs per sample at s * (n n), s * n, s * (mmax n),
- * s * nbmax, s * 3 nbmax. Outputs: lam, w (mmax), a (n), state (nbmax), info (INFO_WIDTH).
- * Returns 0, -1 when out of memory, -2 when a size is out of range. */
-int SNAKECG_EXPORT(core_scene_solve)(sc_int ns, sc_int n, sc_int mmax, sc_int nbmax, const sc_int *m,
-                           const sc_int *nb, const double *M, const double *f, const double *A,
-                           const sc_int *kind, const sc_int *start, const double *par,
-                           sc_int max_sweeps, double *lam, double *a, double *w,
-                           double *state, double *info) {
+ * s * mmax (the rows' offsets c, or NULL: none), s * nbmax, s * 3 nbmax. Outputs: lam, w
+ * (mmax), a (n), state (nbmax), info (INFO_WIDTH). Returns 0, -1 when out of memory, -2
+ * when a size is out of range. */
+int SNAKECG_EXPORT(core_scene_solve_b)(sc_int ns, sc_int n, sc_int mmax, sc_int nbmax,
+                                       const sc_int *m, const sc_int *nb, const double *M,
+                                       const double *f, const double *A, const double *c,
+                                       const sc_int *kind, const sc_int *start,
+                                       const double *par, sc_int max_sweeps, double *lam,
+                                       double *a, double *w, double *state, double *info) {
   sc_int nd, ni, s;
   double *work;
   sc_int *iwork;
@@ -458,11 +461,22 @@ int SNAKECG_EXPORT(core_scene_solve)(sc_int ns, sc_int n, sc_int mmax, sc_int nb
       free(iwork);
       return -2;
     }
-    solve_sample(n, m[s], nb[s], M + s * n * n, f + s * n, A + s * mmax * n, kind + s * nbmax,
-                 start + s * nbmax, par + s * 3 * nbmax, max_sweeps, lam + s * mmax, a + s * n,
-                 w + s * mmax, state + s * nbmax, info + s * INFO_WIDTH, work, iwork);
+    solve_sample(n, m[s], nb[s], M + s * n * n, f + s * n, A + s * mmax * n,
+                 c ? c + s * mmax : NULL, kind + s * nbmax, start + s * nbmax,
+                 par + s * 3 * nbmax, max_sweeps, lam + s * mmax, a + s * n, w + s * mmax,
+                 state + s * nbmax, info + s * INFO_WIDTH, work, iwork);
   }
   free(work);
   free(iwork);
   return 0;
+}
+
+/* core_scene_solve_b with no offsets (w = A a): the solve at rest. */
+int SNAKECG_EXPORT(core_scene_solve)(sc_int ns, sc_int n, sc_int mmax, sc_int nbmax, const sc_int *m,
+                           const sc_int *nb, const double *M, const double *f, const double *A,
+                           const sc_int *kind, const sc_int *start, const double *par,
+                           sc_int max_sweeps, double *lam, double *a, double *w,
+                           double *state, double *info) {
+  return SNAKECG_EXPORT(core_scene_solve_b)(ns, n, mmax, nbmax, m, nb, M, f, A, NULL, kind,
+                                            start, par, max_sweeps, lam, a, w, state, info);
 }

@@ -136,6 +136,13 @@ def closest(A: Shape, B: Shape, scale: float):
             ca = A.pts[i] - A.radius * n
             out.append((ca, ca - (vals[i] - best) * n - d * n, -n))
         return d, out
+    if B.kind == "point" and A.kind in ("segment", "point"):  # a capsule or disc and a point
+        q = B.pts[0]
+        p = A.pts[0] if A.kind == "point" else _point_segment(q, A.pts[0], A.pts[1])[0]
+        dd = float(np.hypot(*(q - p)))
+        if dd > 1e-9 * scale:  # else the general path below (the features' normals)
+            n = (q - p) / dd
+            return dd - A.radius - B.radius, [(p + A.radius * n, q - B.radius * n, n)]
     pairs = []
     for a0, a1 in A.segments():
         for b0, b1 in B.segments():

@@ -22,7 +22,7 @@ from .solve import INFO, UNILATERAL
 
 __all__ = ["GeneralSceneModel"]
 
-_REFUSED = ("maps", "extremes", "optimize", "simulate", "optimize_shape", "com_polar")
+_REFUSED = ("maps", "extremes", "optimize", "optimize_shape", "com_polar")
 #: Samples per thread below which a batch is not split (SNAKECG_THREADS; snakecg.forward's)
 PARALLEL_MIN = 512
 _F64 = np.dtype(np.float64)
@@ -63,6 +63,14 @@ class GeneralSceneModel(RobotModel):
         where = "" if index is None else f" in sample {index}"
         return (f"{a} and {b} overlap by {rec[4]:.3g} m{where} (contacts hold within "
                 f"{rec[5]:.3g} m); move them apart")
+
+    def simulate(self, q0, duration, **kwargs):
+        """Simulate the scene over time: :func:`snakecg.scenes.stepping.simulate_scene`
+        (velocity-level time stepping on the same exact solve, contact onset by root finding,
+        inelastic impacts)."""
+        from .stepping import simulate_scene
+
+        return simulate_scene(self, q0, duration, **kwargs)
 
     def forward(self, q, tau, *, f_obj=None, v=None) -> SceneResult:
         """Accelerations, forces, contact states, norms, sr and the certificate at rest.

@@ -32,13 +32,14 @@ def _c(a, dtype):
     return np.ascontiguousarray(a, dtype=dtype)
 
 
-def solve(core, M, f, A, m, kind, start, par, *, max_sweeps: int = MAX_SWEEPS) -> dict:
+def solve(core, M, f, A, m, kind, start, par, *, c=None, max_sweeps: int = MAX_SWEEPS) -> dict:
     """Solve ``N`` stacked problems: ``M`` ``(N, n, n)``, ``f`` ``(N, n)``, ``A``
     ``(N, mmax, n)``, ``m`` ``(N,)`` rows used, ``kind``/``start`` ``(N, nbmax)`` (blocks
     used: entries before the first ``-1`` kind), ``par`` ``(N, nbmax, 3)``. Returns ``lam``,
     ``w`` ``(N, mmax)``, ``a`` ``(N, n)``, ``state`` ``(N, nbmax)`` (int), ``info``
-    ``{name: (N,)}``."""
-    fn = getattr(core, "scene_solve", None)
+    ``{name: (N,)}``. ``c`` ``(N, mmax)``: the rows' offsets (they read ``w = A a + c``;
+    default none), the velocity-level step's gaps over h."""
+    fn = getattr(core, "scene_solve" if c is None else "scene_solve_b", None)
     if fn is None:
         raise BuildError("a general scene is solved by the compiled engine; load it with a C "
                          "compiler (set CC) and the compiled backend")
@@ -54,8 +55,12 @@ def solve(core, M, f, A, m, kind, start, par, *, max_sweeps: int = MAX_SWEEPS) -
     a = np.zeros((N, n))
     state = np.zeros((N, max(nbmax, 1)))
     info = np.zeros((N, len(INFO)))
-    rc = fn(N, n, mmax, nbmax, m.ctypes.data, nb.ctypes.data, M.ctypes.data, f.ctypes.data,
-            A.ctypes.data, kind.ctypes.data, start.ctypes.data, par.ctypes.data, max_sweeps,
+    head = [N, n, mmax, nbmax, m.ctypes.data, nb.ctypes.data, M.ctypes.data, f.ctypes.data,
+            A.ctypes.data]
+    if c is not None:
+        c = _c(np.broadcast_to(c, (N, mmax)), np.float64)
+        head.append(c.ctypes.data)
+    rc = fn(*head, kind.ctypes.data, start.ctypes.data, par.ctypes.data, max_sweeps,
             lam.ctypes.data, a.ctypes.data, w.ctypes.data, state.ctypes.data, info.ctypes.data)
     if rc == -1:
         raise MemoryError("the scene solve ran out of memory")

@@ -1,0 +1,153 @@
+"""Benchmark: a general scene over time, snakecg's time stepping against MuJoCo's ``mj_step``
+on the matched scene, side by side in one run.
+
+The scene is ``examples/scenes/pegs_row.toml``: a 10-joint snake (capsule links, radius
+0.02 m) among 10 pegs on an isotropic Coulomb ground (mu 0.1), driven by the serpenoid PD law
+of the obstacle-aided locomotion page (amplitude 0.5 rad, 1 Hz, phase lag 2 pi / 5, kp 10,
+kd 0.3) from the serpenoid's shape, for ``--duration`` seconds (default 2).
+
+* **snakecg**: ``model.simulate`` at ``dt = 1e-3`` (velocity-level steps on the exact solve,
+  contact onset by root finding); its penetration bound is its contact tolerance (1e-5 of the
+  scene's size), held on every step. The time is split by a profile into the generated
+  functions, the geometry (closest points, rows), the solve and the rest.
+* **MuJoCo**: ``mj_step`` in a Python loop on tests/mujoco_pegs.py's matched model (COM
+  spheres on a condim-3 floor, noslip 10, frictionless capsule-peg contacts, solref
+  ``(2 timestep, 1)``) at the time steps of ``STEPS``; reported: the deepest capsule-peg or
+  capsule-capsule overlap over the run, the speed, and the largest time step whose overlap
+  stays within snakecg's tolerance (the ratio is taken there). The torque is the same law,
+  held over 1 ms (its Python call is in both timings). The overlap is measured on a second,
+  identical run, outside the timing.
+
+The figure is simulated seconds per CPU second (``time.process_time``, best of
+``--repeat``). Prints the machine's load before and after.
+
+    python benchmarks/bench_simulate_scenes.py [--duration 2] [--repeat 2]
+"""
+
+from __future__ import annotations
+
+import argparse
+import cProfile
+import os
+import platform
+import pstats
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+
+ROOT = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(ROOT / "tests"))  # the matched MuJoCo model (tests/mujoco_pegs.py)
+
+from snakecg.scenes import load_scene  # noqa: E402
+from snakecg.scenes.stepping import SceneState  # noqa: E402
+from snakecg.scenes.toml_reading import read_scene  # noqa: E402
+from snakecg.simulate import serpenoid_controller  # noqa: E402
+
+STEPS = (1e-3, 5e-4, 2e-4, 1e-4, 5e-5, 2e-5)
+
+
+def setup():
+    scene = read_scene(ROOT / "examples" / "scenes" / "pegs_row.toml")
+    model = load_scene(scene)
+    q0 = np.zeros(13)
+    q0[3:] = 0.5 * np.sin(np.arange(10) * 2 * np.pi / 5)
+    gait = serpenoid_controller(model, amplitude=0.5, frequency=1.0, phase_lag=2 * np.pi / 5,
+                                kp=10.0, kd=0.3, tau_max=None)
+    return scene, model, q0, gait
+
+
+def run_mujoco(scene, model, q0, gait, ts, duration, measure: bool):
+    """CPU seconds (``measure`` False: the timed run, nothing but the law and mj_step) or the
+    deepest overlap over every step (``measure`` True, the same run), and the COM at the
+    end."""
+    from mujoco_pegs import MatchedPegs
+
+    mj = MatchedPegs(scene, timestep=ts)
+    mj.set_state(q0)
+    hold = max(1, int(round(1e-3 / ts)))
+    n = int(round(duration / ts))
+    depth = 0.0
+    none = np.zeros((0, 3))
+    t0 = time.process_time()
+    for k in range(n):
+        if k % hold == 0:
+            q, v = mj.state()
+            tau = gait(k * ts, SceneState(k * ts, q, v, none, none))
+        mj.step(tau)
+        if measure:
+            depth = max(depth, mj.peg_depth())
+    cpu = time.process_time() - t0
+    return depth if measure else cpu, model.com(mj.state()[0])
+
+
+def split(prof) -> dict:
+    """CPU seconds by where they go (inclusive times of the top functions)."""
+    st = pstats.Stats(prof)
+    out = {"generated functions": 0.0, "geometry (rows, distances)": 0.0, "solve (C)": 0.0}
+    for (file, _, name), (_, _, _, ct, _) in st.stats.items():
+        if file.endswith("robot_model.py") and name in ("mass_matrix", "link_poses",
+                                                        "link_jacobians", "bias_forces"):
+            out["generated functions"] += ct
+        elif file.endswith("contacts.py") and name == "rows_of":
+            out["geometry (rows, distances)"] += ct
+        elif file.endswith("stepping.py") and name in ("pair_gaps", "_pair_gap"):
+            out["geometry (rows, distances)"] += ct
+        elif file.endswith("solve.py") and name == "solve":
+            out["solve (C)"] += ct
+    return out
+
+
+def main() -> None:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--duration", type=float, default=2.0)
+    ap.add_argument("--repeat", type=int, default=2)
+    a = ap.parse_args()
+    print(f"machine: {platform.processor() or platform.machine()}, load {os.getloadavg()}")
+    scene, model, q0, gait = setup()
+    best, run = np.inf, None
+    for _ in range(a.repeat):
+        t0 = time.process_time()
+        run = model.simulate(q0, a.duration, tau=gait, dt=1e-3)
+        best = min(best, time.process_time() - t0)
+    com = model.com(run.q)
+    worst = max(0.0, -float(np.min(run.min_gap)))
+    print(f"snakecg: {run.status}, {run.steps} steps, {len(run.events)} impacts, deepest "
+          f"overlap {worst:.3g} m (tolerance {run.tolerance:.3g} m), COM moved "
+          f"{np.hypot(*(com[-1] - com[0])):.4f} m")
+    print(f"  {a.duration / best:8.3f} simulated s per CPU s ({best / run.steps * 1e3:.2f} ms "
+          f"per step)")
+    prof = cProfile.Profile()
+    prof.enable()
+    model.simulate(q0, min(a.duration, 0.5), tau=gait, dt=1e-3)
+    prof.disable()
+    total = pstats.Stats(prof).total_tt
+    parts = split(prof)
+    print("  where the time goes (profiled 0.5 s run): " + ", ".join(
+        f"{k} {100 * v / total:.0f} %" for k, v in parts.items())
+        + f", the rest (Python bookkeeping) {100 * (1 - sum(parts.values()) / total):.0f} %")
+    try:
+        import mujoco
+    except ImportError:
+        print("MuJoCo: not installed")
+        return
+    print(f"MuJoCo {mujoco.__version__} mj_step (matched scene, Python loop):")
+    chosen = None
+    for ts in STEPS:
+        depth, com_mj = run_mujoco(scene, model, q0, gait, ts, a.duration, True)
+        cpu, _ = run_mujoco(scene, model, q0, gait, ts, a.duration, False)
+        ok = depth <= run.tolerance
+        if ok and chosen is None:
+            chosen = (ts, cpu)
+        print(f"  timestep {ts:7.1e} s: {a.duration / cpu:8.3f} simulated s per CPU s, "
+              f"deepest overlap {depth:.3g} m{' (within)' if ok else ''}, COM end differs "
+              f"from snakecg's by {np.hypot(*(com_mj - com[-1])):.4f} m")
+    if chosen:
+        print(f"speed ratio at MuJoCo's largest step within the bound ({chosen[0]:.1e} s): "
+              f"snakecg / MuJoCo = {chosen[1] / best:.3f}")
+    print(f"load after: {os.getloadavg()}")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,422 @@
+"""General scenes over time (snakecg.scenes.stepping), against independent references:
+closed-form inelastic impacts of discs, the velocity-level step written independently as a
+conic QP for cvxpy + Clarabel, NumPy distances of capsules and pegs on every sample, and the
+physical laws (energy, impulses >= 0, kinetic friction against sliding) over every run."""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import snakecg
+from snakecg.errors import InputError
+from snakecg.scenes import GeneralScene, Ground, Obstacle, SceneObject, load_scene
+from snakecg.scenes.toml_reading import read_scene
+from snakecg.simulate import serpenoid_controller
+
+ROOT = Path(__file__).resolve().parents[1]
+PEGS_ROW = ROOT / "examples" / "scenes" / "pegs_row.toml"
+
+
+# independent geometry (NumPy, not snakecg.scenes.geometry) --------------------------------
+def _point_segment(p, a, b):
+    d = b - a
+    t = np.clip((p - a) @ d / (d @ d), 0.0, 1.0)
+    return float(np.hypot(*(a + t * d - p)))
+
+
+def _segment_segment(a0, a1, b0, b1):
+    # crossing segments have distance 0; else the least of the four end-to-segment distances
+    def orient(p, q, r):
+        return (q[0] - p[0]) * (r[1] - p[1]) - (q[1] - p[1]) * (r[0] - p[0])
+
+    if (orient(a0, a1, b0) * orient(a0, a1, b1) < 0 and
+            orient(b0, b1, a0) * orient(b0, b1, a1) < 0):
+        return 0.0
+    return min(_point_segment(a0, b0, b1), _point_segment(a1, b0, b1),
+               _point_segment(b0, a0, a1), _point_segment(b1, a0, a1))
+
+
+def _link_segments(robot, q):
+    """Rear and front ends of every link from the chain's own kinematics: q = (x, y, theta,
+    q1..) with (x, y) the COM of link 1 and theta its heading."""
+    L, c = np.asarray(robot.length), np.asarray(robot.com)
+    th = q[2]
+    rear = np.array([q[0], q[1]]) - c[0] * np.array([np.cos(th), np.sin(th)])
+    out = []
+    for i in range(len(L)):
+        if i > 0:
+            th += q[2 + i]
+        front = rear + L[i] * np.array([np.cos(th), np.sin(th)])
+        out.append((rear, front))
+        rear = front
+    return out
+
+
+def _worst_depth(scene, run):
+    """The largest penetration (m) of any link into a peg or a non-neighbour link over every
+    sample of the run (0 if none)."""
+    r = scene.radius
+    worst = 0.0
+    for q in run.q:
+        segs = _link_segments(scene.robot, q)
+        for ob in scene.obstacles:
+            cen = np.asarray(ob.center)
+            for a, b in segs:
+                worst = max(worst, ob.radius + r - _point_segment(cen, a, b))
+        for i in range(len(segs)):
+            for j in range(i + 2, len(segs)):
+                worst = max(worst, 2 * r - _segment_segment(*segs[i], *segs[j]))
+    return worst
+
+
+def _laws(run):
+    """Energy: kinetic energy gained <= the torques' work - friction dissipated - impact loss
+    + the contacts' work (to 1e-9 J; the contacts' work is the gap stabilisation's, which
+    pushes a contact within the tolerance back to zero gap: at most 2 % of the torques'
+    work); friction dissipates, impacts lose energy, impulses >= 0; the sliding blocks'
+    impulses oppose the sliding velocity."""
+    ke = run.kinetic_energy
+    gain = ke - ke[0]
+    budget = run.work_tau - run.friction_dissipation - run.impact_loss + run.contact_work
+    assert np.all(np.abs(run.contact_work) <= 0.02 * np.abs(run.work_tau) + 1e-12)
+    assert np.all(gain <= budget + 1e-9 + 1e-9 * np.abs(budget)), float(np.max(gain - budget))
+    assert np.all(np.diff(run.friction_dissipation) >= -1e-12)
+    assert np.all(np.diff(run.impact_loss) >= -1e-12)
+    assert np.all(run.contact_impulse >= -1e-12)
+    for e in run.events:
+        assert all(p >= 0 for p in e.impulses)
+        assert max(e.certificate.values()) <= 1e-8
+    if run.min_sliding_cosine >= 0:
+        assert run.min_sliding_cosine >= 1 - 1e-9
+
+
+# closed-form impacts ------------------------------------------------------------------------
+def _far_robot():
+    return snakecg.Robot(joints=1)
+
+
+def test_disc_hits_a_wall_inelastically_at_the_time_of_contact():
+    """A disc (no friction) sliding at u toward a wall from gap d0: contact at t = d0 / u, the
+    normal velocity removed, the tangential kept (the closed-form plastic impact), no
+    penetration beyond the tolerance on any sample."""
+    u, d0, vt, rad = 0.5, 0.1, 0.2, 0.05
+    wall = Obstacle(shape="wall", point=(1.0, 0.0), normal=(-1.0, 0.0))
+    disc = SceneObject(shape="disc", radius=rad, mass=2.0, pose=(1.0 - rad - d0, 0.0, 0.0))
+    scene = GeneralScene(_far_robot(), ground=Ground(model="frictionless"), objects=(disc,),
+                         obstacles=(wall,))
+    model = load_scene(scene)
+    q0 = np.array([-1.0, 0.0, 0.0, 0.0])
+    run = model.simulate(q0, 0.5, v_obj0=[[u, vt, 0.0]], dt=1e-2, tolerance=1e-6)
+    assert run.status == "completed", run.message
+    assert len(run.events) == 1
+    e = run.events[0]
+    assert abs(e.t - d0 / u) <= 1e-6 / u + 1e-12
+    # plastic impact: the impulse m u, the kinetic energy 1/2 m u^2 lost
+    assert e.impulses[0] == pytest.approx(2.0 * u, rel=1e-9)
+    assert e.loss == pytest.approx(0.5 * 2.0 * u * u, rel=1e-9)
+    after = run.t > e.t + 1e-12
+    np.testing.assert_allclose(run.v_obj[after, 0, 0], 0.0, atol=1e-12)
+    np.testing.assert_allclose(run.v_obj[after, 0, 1], vt, rtol=1e-12)
+    x_face = run.q_obj[:, 0, 0] + rad
+    assert np.all(x_face <= 1.0 + 1e-6)
+    _laws(run)
+
+
+def test_two_discs_collide_centrally_with_momentum_kept():
+    """Two discs on a line, 1 kg at 1 m/s onto 3 kg at rest: after the plastic impact both move
+    at (m1 v1) / (m1 + m2) = 0.25 m/s; the loss is 1/2 m1 m2 / (m1 + m2) v1^2."""
+    d1 = SceneObject(shape="disc", radius=0.05, mass=1.0, pose=(0.0, 0.0, 0.0))
+    d2 = SceneObject(shape="disc", radius=0.05, mass=3.0, pose=(0.2, 0.0, 0.0))
+    scene = GeneralScene(_far_robot(), ground=Ground(model="frictionless"), objects=(d1, d2))
+    model = load_scene(scene)
+    run = model.simulate(np.array([-2.0, 0.0, 0.0, 0.0]), 0.3, v_obj0=[[1.0, 0, 0], [0, 0, 0]],
+                         dt=1e-2, tolerance=1e-6)
+    assert run.status == "completed", run.message
+    assert len(run.events) == 1
+    assert run.events[0].t == pytest.approx(0.1, abs=1e-6)
+    np.testing.assert_allclose(run.v_obj[-1, :, 0], [0.25, 0.25], rtol=1e-10)
+    assert run.events[0].loss == pytest.approx(0.5 * 1 * 3 / 4 * 1.0, rel=1e-9)
+    _laws(run)
+
+
+def test_a_disc_under_coulomb_friction_stops_at_the_closed_form_distance():
+    """A disc with ground friction mu sliding at u stops after u^2 / (2 mu g) (semi-implicit
+    Euler: within u h of it) and sticks afterwards, kinetic friction against sliding."""
+    u, mu, g = 0.6, 0.3, 9.81
+    disc = SceneObject(shape="disc", radius=0.05, mass=1.5, pose=(0.0, 0.0, 0.0), mu=mu)
+    scene = GeneralScene(_far_robot(), ground=Ground(model="frictionless"), objects=(disc,))
+    run = load_scene(scene).simulate(np.array([-2.0, 0.0, 0.0, 0.0]), 0.5,
+                                     v_obj0=[[u, 0, 0]], dt=1e-3)
+    assert run.status == "completed"
+    assert run.q_obj[-1, 0, 0] == pytest.approx(u * u / (2 * mu * g), abs=u * 1e-3)
+    assert np.all(run.v_obj[run.t > u / (mu * g) + 2e-3, 0, 0] == 0.0)
+    # the friction's work lam . v+ per step: the kinetic energy lost less the scheme's own
+    # dissipation 1/2 m |dv|^2 per step (dv = mu g h), 1/2 m mu g h u in all
+    h = 1e-3
+    assert run.friction_dissipation[-1] == pytest.approx(
+        0.5 * 1.5 * u * u - 0.5 * 1.5 * mu * g * h * u, abs=1.5 * (mu * g * h) ** 2)
+    _laws(run)
+
+
+# the velocity-level step against an independent conic QP -----------------------------------
+def test_one_step_against_cvxpy_clarabel(rng):
+    """One step with a peg contact, Coulomb, bounded and ideal wheels, a disc object with
+    ground friction: V+ of the engine's solve equals the minimiser of the same conic QP
+    written apart with dense NumPy rows and solved by Clarabel."""
+    cp = pytest.importorskip("cvxpy")
+    pytest.importorskip("clarabel")
+    from snakecg.scenes.contacts import link_ends
+    from snakecg.scenes.stepping import _Stepper
+
+    robot = snakecg.Robot(joints=3)
+    ground = (Ground(model="coulomb", mu=0.3), Ground(model="wheels", mu=0.2),
+              Ground(model="ideal_wheels"), Ground(model="coulomb", mu=0.5))
+    base = GeneralScene(robot, radius=0.02, ground=ground)
+    q = np.array([0.0, 0.0, 0.1, 0.4, -0.3, 0.5])
+    P = load_scene(base).link_poses(q)
+    ends = link_ends(base, P)
+    mid = 0.5 * (ends[1, 0] + ends[1, 1])
+    t = (ends[1, 1] - ends[1, 0]) / 0.15
+    peg = Obstacle(shape="peg", center=tuple(mid + 0.05 * np.array([-t[1], t[0]])), radius=0.03)
+    disc = SceneObject(shape="disc", radius=0.04, mass=0.7, mu=0.4,
+                       touching={"link": 4, "offset": 0.07, "side": "right"})
+    scene = GeneralScene(robot, radius=0.02, ground=ground, objects=(disc,), obstacles=(peg,))
+    model = load_scene(scene)
+    st = _Stepper(model, 1e-6, np.zeros(3))
+    from snakecg.scenes.contacts import place_objects
+
+    qo = place_objects(scene, model.link_poses(q))
+    Mf, _, rows = st.geometry(q, qo)
+    assert len(rows.contacts) == 2  # the peg and the disc
+    h = 1e-3
+    # gaps within the tolerance on both sides: the rows' offsets g / h of the solve
+    rows.contacts[0].gap, rows.contacts[1].gap = 3e-7, -2e-7
+    V = np.r_[rng.normal(size=6) * 0.3, rng.normal(size=3) * 0.2]
+    V[:6] -= 0  # any velocity; the ideal wheel's row need not hold before the step
+    tau = rng.normal(size=3)
+    fgen = np.zeros(9)
+    fgen[3:6] = tau
+    fgen[:6] -= model.bias_forces(q, V[:6])
+    out = st.solve_rows(Mf, Mf @ V + h * fgen, rows, h, None)
+    assert out["info"]["status"] == 0
+    # the same problem, independently: min 1/2 |x - v*|_M^2 + h sum r_k |A_k x| s.t. ...
+    vstar = V + h * np.linalg.solve(Mf, fgen)
+    x = cp.Variable(9)
+    Lc = np.linalg.cholesky(Mf)
+    cost = 0.5 * cp.sum_squares(Lc.T @ (x - vstar))
+    cons = []
+    g = scene.gravity
+    for i, gr in enumerate(ground):
+        xi, yi, phi = model.link_poses(q)[i]
+        Ji = model.link_jacobians(q)[i]
+        Jl = np.zeros((3, 9))
+        Jl[:, :6] = Ji
+        if gr.model == "coulomb":
+            cost += h * gr.mu * robot.mass[i] * g * cp.norm(Jl[:2] @ x, 2)
+        elif gr.model in ("wheels", "ideal_wheels"):
+            lat = np.array([-np.sin(phi), np.cos(phi), 0.0]) @ Jl
+            if gr.model == "wheels":
+                cost += h * gr.mu * robot.mass[i] * g * cp.abs(lat @ x)
+            else:
+                cons.append(lat @ x == 0)
+    Jo = np.zeros((2, 9))
+    Jo[:, 6:8] = np.eye(2)
+    cost += h * 0.4 * 0.7 * g * cp.norm(Jo @ x, 2)
+    for c in rows.contacts:
+        cons.append(rows.A[c.row] @ x + c.gap / h >= 0)
+    cp.Problem(cp.Minimize(cost), cons).solve(solver=cp.CLARABEL, tol_gap_abs=1e-12,
+                                              tol_gap_rel=1e-12, tol_feas=1e-12)
+    np.testing.assert_allclose(out["a"], x.value, atol=2e-6 * np.abs(x.value).max())
+
+
+# obstacle-aided locomotion ------------------------------------------------------------------
+def _pegs_row_runs(duration):
+    scene = read_scene(PEGS_ROW)
+    free = GeneralScene(scene.robot, radius=scene.radius, ground=scene.ground)
+    q0 = np.zeros(13)
+    q0[3:] = 0.5 * np.sin(np.arange(10) * 2 * np.pi / 5)
+    runs = {}
+    for name, sc in (("pegs", scene), ("free", free)):
+        model = load_scene(sc)
+        gait = serpenoid_controller(model, amplitude=0.5, frequency=1.0,
+                                    phase_lag=2 * np.pi / 5, kp=10.0, kd=0.3, tau_max=None)
+        run = model.simulate(q0, duration, tau=gait, dt=1e-3)
+        runs[name] = (sc, model, run)
+    return runs
+
+
+def test_pegs_row_obstacle_aided_locomotion():
+    """Among the pegs the snake moves forward along the row; on the same ground without them it
+    barely moves (isotropic Coulomb friction gives lateral undulation no grip). Nothing
+    penetrates beyond the tolerance on any sample (NumPy distances of capsules and pegs)."""
+    runs = _pegs_row_runs(1.5)
+    progress = {}
+    for name, (sc, model, run) in runs.items():
+        assert run.status == "completed", run.message
+        assert _worst_depth(sc, run) <= run.tolerance * (1 + 1e-6)
+        assert np.min(run.min_gap) >= -run.tolerance
+        _laws(run)
+        com = model.com(run.q)
+        progress[name] = float(np.hypot(*(com[-1] - com[0])))
+    assert runs["pegs"][2].events  # it pushes against the pegs: impacts happen
+    assert progress["pegs"] > 0.1
+    assert progress["free"] < 0.02
+    assert progress["pegs"] > 8 * progress["free"]
+
+
+def test_self_contact_is_a_row_and_nothing_crosses():
+    """A 4-joint snake folded by large torques onto itself on a frictionless ground: its
+    links touch (self-contact rows) and never cross (NumPy segment distances)."""
+    robot = snakecg.Robot(joints=4)
+    scene = GeneralScene(robot, radius=0.02, ground=Ground(model="coulomb", mu=0.05))
+    model = load_scene(scene)
+    q0 = np.array([0.0, 0.0, 0.0, 1.2, 1.2, 1.2, 0.0])
+    run = model.simulate(q0, 0.6, tau=np.array([0.6, 0.6, 0.6, 0.3]), dt=1e-3)
+    assert run.status == "completed", run.message
+    assert run.n_contacts.max() >= 1
+    assert _worst_depth(scene, run) <= run.tolerance * (1 + 1e-6)
+    _laws(run)
+
+
+def test_simulate_refuses_bad_arguments_before_any_work():
+    scene = GeneralScene(snakecg.Robot(joints=2), ground=Ground(model="coulomb", mu=0.1))
+    model = load_scene(scene)
+    with pytest.raises(InputError, match=r"q0 must be 5 finite numbers.*dt must be"):
+        model.simulate([0, 0, 0], 1.0, dt=-1)
+    with pytest.raises(InputError, match="tolerance must be"):
+        model.simulate(np.zeros(5), 1.0, tolerance=1.0)
+    assert math.isfinite(model.simulate(np.zeros(5), 0.01).kinetic_energy[-1])
+
+
+# MuJoCo on the matched pegs scene ------------------------------------------------------------
+def test_pegs_row_against_mujoco():
+    """The pegs-row run for 1 s against MuJoCo on the matched scene (capsules and cylinders,
+    COM spheres on a Coulomb floor with condim 3 and noslip, stiff solref; tests/
+    mujoco_pegs.py) at 2e-4 s, where its capsule-peg overlaps stay within snakecg's tolerance:
+    the COM paths agree to a quarter of the distance travelled and the end points to 15 %.
+    (They are not the same model: MuJoCo's contacts are soft, its friction regularised, and
+    snakecg steps at 1e-3 s; see the obstacle-aided locomotion page.)"""
+    pytest.importorskip("mujoco")
+    from mujoco_pegs import MatchedPegs
+
+    from snakecg.scenes.stepping import SceneState
+
+    scene = read_scene(PEGS_ROW)
+    model = load_scene(scene)
+    q0 = np.zeros(13)
+    q0[3:] = 0.5 * np.sin(np.arange(10) * 2 * np.pi / 5)
+    gait = serpenoid_controller(model, amplitude=0.5, frequency=1.0, phase_lag=2 * np.pi / 5,
+                                kp=10.0, kd=0.3, tau_max=None)
+    run = model.simulate(q0, 1.0, tau=gait, dt=1e-3)
+    assert run.status == "completed"
+    com = model.com(run.q)
+    ts = 2e-4
+    mj = MatchedPegs(scene, timestep=ts)
+    mj.set_state(q0)
+    hold = 5  # the torque held over snakecg's step
+    coms, depth = [], 0.0
+    for k in range(5000):
+        if k % hold == 0:
+            q, v = mj.state()
+            tau = gait(k * ts, SceneState(k * ts, q, v, np.zeros((0, 3)), np.zeros((0, 3))))
+        mj.step(tau)
+        depth = max(depth, mj.peg_depth())
+        if (k + 1) % hold == 0:
+            coms.append(model.com(mj.state()[0]))
+    coms = np.array(coms)
+    travelled = float(np.hypot(*(com[-1] - com[0])))
+    assert travelled > 0.05
+    assert depth <= run.tolerance
+    assert np.hypot(*(coms[-1] - com[-1])) <= 0.15 * travelled
+    assert np.abs(coms - com[1:1 + len(coms)]).max() <= 0.25 * travelled
+
+
+def test_cli_simulate_scene_json_and_refusals(tmp_path, capsys):
+    """``snakecg simulate --scene``: strict JSON with the run's status and energy; options of
+    the paper's scene refused in one line with exit 2."""
+    import json
+
+    from snakecg.cli import main
+
+    q = "0,0,0,0,0.4755,0.2939,-0.2939,-0.4755,0,0.4755,0.2939,-0.2939,-0.4755"
+    rc = main(["simulate", "--scene", str(PEGS_ROW), f"--q={q}", "--tau",
+               "0.2,0,0,0,0,0,0,0,0,0", "--duration", "0.02", "--json", "--out",
+               str(tmp_path / "out")])
+    out = json.loads(capsys.readouterr().out)
+    assert rc == 0 and out["status"] == "completed"
+    # 20 steps of 1 ms, and one more where a step was shortened to a contact's onset
+    assert out["duration"] == pytest.approx(0.02, abs=1e-12)
+    assert out["steps"] == 20 + sum(e["kind"] == "impact" for e in out["events"])
+    assert out["energy"]["work_tau"] > 0
+    assert (tmp_path / "out" / "trajectory.npz").is_file()
+    rc = main(["simulate", "--scene", str(PEGS_ROW), f"--q={q}", "--tau",
+               "0,0,0,0,0,0,0,0,0,0", "--a-min", "1"])
+    assert rc == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "--a-min applies to the paper's scene only" in err[0]
+
+
+def _box_corners(pose, size):
+    c, s = np.cos(pose[2]), np.sin(pose[2])
+    a, b = size[0] / 2, size[1] / 2
+    loc = np.array([[-a, -b], [a, -b], [a, b], [-a, b]])
+    return pose[:2] + loc @ np.array([[c, s], [-s, c]])
+
+
+def _segment_box_distance(a0, a1, corners):
+    """0 if the segment meets the box (an end inside, or crossing an edge), else the least
+    distance between the segment and the box's edges."""
+    def inside(p):
+        def cross(u, w):
+            return u[0] * w[1] - u[1] * w[0]
+
+        return all(cross(corners[(k + 1) % 4] - corners[k], p - corners[k]) >= 0
+                   for k in range(4))
+
+    if inside(a0) or inside(a1):
+        return 0.0
+    return min(_segment_segment(a0, a1, corners[k], corners[(k + 1) % 4]) for k in range(4))
+
+
+@pytest.mark.parametrize("ground", [Ground(model="anisotropic", mu_forward=0.05,
+                                           mu_backward=0.3, mu_lateral=0.5),
+                                    Ground(model="wheels", mu=0.3, wheel_offset=0.02)],
+                         ids=["anisotropic", "wheels"])
+def test_pushing_a_box_on_every_ground_stays_outside_it(ground):
+    """A 3-joint snake drives a box touching its middle link: the box turns on the link, its
+    corner or face the contact as the geometry says; the links never enter the box (NumPy
+    segment-box distance on every sample) and the laws hold."""
+    robot = snakecg.Robot(joints=3)
+    box = SceneObject(shape="box", size=(0.1, 0.06), mass=0.5, mu=0.2,
+                      touching={"link": 2, "offset": 0.09, "side": "left"})
+    scene = GeneralScene(robot, radius=0.01, ground=ground, objects=(box,))
+    model = load_scene(scene)
+    q0 = np.array([0.0, 0.0, 0.0, -0.2, -0.1, 0.3])
+    gait = serpenoid_controller(model, amplitude=0.4, frequency=1.5, phase_lag=1.0, kp=3.0,
+                                kd=0.1, tau_max=None)
+    run = model.simulate(q0, 0.8, tau=gait, dt=1e-3)
+    assert run.status == "completed", run.message
+    moved = np.hypot(*(run.q_obj[-1, 0, :2] - run.q_obj[0, 0, :2]))
+    assert moved > 1e-3
+    worst = 0.0
+    for q, qo in zip(run.q, run.q_obj):
+        corners = _box_corners(qo[0], box.size)
+        for a, b in _link_segments(robot, q):
+            worst = max(worst, scene.radius - _segment_box_distance(a, b, corners))
+    assert worst <= run.tolerance * (1 + 1e-6)
+    _laws(run)
+
+
+def test_a_long_run_reports_progress(monkeypatch):
+    import snakecg.scenes.stepping as stepping
+
+    monkeypatch.setattr(stepping, "PROGRESS_EVERY", 0.0)
+    model = load_scene(GeneralScene(snakecg.Robot(joints=2), ground=Ground(model="coulomb")))
+    lines = []
+    run = model.simulate(np.zeros(5), 0.01, tau=np.array([0.1, 0.0]), progress=lines.append)
+    assert run.status == "completed" and len(lines) == 10
+    assert lines[-1] == "simulate: t = 0.009 s of 0.01 s, 9 steps, 0 impacts"
