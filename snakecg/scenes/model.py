@@ -17,7 +17,7 @@ from .solve import solve
 
 __all__ = ["GeneralSceneModel"]
 
-_REFUSED = ("maps", "extremes", "optimize", "simulate", "optimize_shape", "com_polar")
+_REFUSED = ("simulate", "optimize_shape", "com_polar")
 
 
 class GeneralSceneModel(RobotModel):
@@ -36,9 +36,25 @@ class GeneralSceneModel(RobotModel):
 
     def __getattr__(self, name):
         if name in _REFUSED:
-            raise InputError(f"{name} is not available on a general scene yet (forward and "
-                             f"plot are); use a snakecg.Scene of the paper's scenarios")
+            raise InputError(f"{name} is not available on a general scene yet (forward, "
+                             f"maps, extremes, optimize and plot are); use a snakecg.Scene of "
+                             f"the paper's scenarios")
         raise AttributeError(name)
+
+    def maps(self, q, *, state=None) -> dict:
+        """The linear maps at ``q`` for a block state (:func:`snakecg.scenes.maps.maps`)."""
+        from .maps import maps
+        return maps(self, q, state=state)
+
+    def extremes(self, q, **kwargs):
+        """Extremes of the metrics on the input ellipsoid (:mod:`snakecg.scenes.extremes`)."""
+        from .extremes import extremes
+        return extremes(self, q, **kwargs)
+
+    def optimize(self, q, objective="max_sr", **kwargs):
+        """Optimal torques for a task (:func:`snakecg.scenes.optimize.optimize`)."""
+        from .optimize import optimize
+        return optimize(self, q, objective, **kwargs)
 
     def forward(self, q, tau, *, f_obj=None, v=None) -> SceneResult:
         """Accelerations, forces, contact states, norms, sr and the certificate at rest.
