@@ -52,7 +52,8 @@ class Sampler:
                                              p.rows.contacts[lab[1]].b[0])]
 
     def __call__(self, tau) -> dict:
-        """``{metric: (K,)}``, ``_D`` (``|a|_M^2``), ``_ok`` (solved), ``_kept`` and ``sr``."""
+        """``{metric: (K,)}``, ``_D`` (``|a|_M^2``), ``_ok`` (solved), ``_kept``, ``sr`` and
+        ``_a`` (the accelerations, K x n)."""
         p, K = self.p, tau.shape[0]
         self.count += K
         f = tau @ p.B.T
@@ -82,9 +83,11 @@ class Sampler:
         D = total + out["norm_qdd"]
         out["_D"] = D
         free = np.einsum("ki,ij,kj->k", f, p.Minv, f)
+        out["_free"] = free
         moving = D > 1e-26 * free  # eq. (30); 0 where the system does not move (as forward)
         out["sr"] = np.where(moving, total / np.where(moving, D, 1.0), 0.0)
         out["_ok"] = res["info"]["status"] == 0
+        out["_a"] = a
         st = res["state"]
         out["_kept"] = (np.all(st[:, self.kept_blocks] == HELD, axis=1) if self.kept_blocks
                         else np.ones(K, bool))
