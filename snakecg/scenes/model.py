@@ -21,7 +21,8 @@ _REFUSED = ("simulate", "optimize_shape", "com_polar")
 
 
 class GeneralSceneModel(RobotModel):
-    """``forward`` on a :class:`~snakecg.scenes.GeneralScene` (at rest)."""
+    """``forward``, ``maps``, ``extremes`` and ``optimize`` on a
+    :class:`~snakecg.scenes.GeneralScene` (at rest)."""
 
     def __init__(self, scene: GeneralScene, *, backend: str = "compiled", progress=None):
         if not isinstance(scene, GeneralScene):
