@@ -17,7 +17,7 @@ from snakecg.scenes import GeneralScene
 from snakecg.scenes.solve import BOX, DISC, FREE, UNILATERAL
 from snakecg.scenes.toml_reading import read_scene
 
-from scenes_reference import POLYHEDRAL, dense_problem, peg_obstacles, random_scene
+from scenes_reference import POLYHEDRAL, dense_problem, small_scenes
 
 cp = pytest.importorskip("cvxpy")
 
@@ -69,34 +69,14 @@ def clarabel_push(p, ns, objective, obj, d, a_min=None, radius=None, tau_max=Non
     return best
 
 
-def scenes(rng, count, models=POLYHEDRAL):
-    """Random scenes with 1-4 contacts, independent rows and objects without ground
-    friction (convex pieces)."""
-    out = []
-    while len(out) < count:
-        robot, ground, objects, pegs, q, _ = random_scene(rng, models,
-                                                          n_joints=int(rng.integers(2, 4)))
-        if any(o.mu is not None for o in objects):
-            continue
-        try:
-            m0 = snakecg.load(GeneralScene(robot, ground=ground, objects=objects))
-            model = snakecg.load(GeneralScene(robot, ground=ground, objects=objects,
-                                              obstacles=peg_obstacles(m0, pegs, q)))
-            res = model.forward(q, np.zeros(robot.joints))
-        except InputError:
-            continue
-        if 1 <= len(res.contacts) <= 4 and not res.dependent and model.scene.n_objects:
-            out.append((model, q, res))
-    return out
-
-
 @pytest.mark.parametrize("models,radius", [(POLYHEDRAL, 1.0),
                                            (("coulomb", "wheels", "frictionless"), 20.0)])
 def test_pushes_against_clarabel(models, radius, rng):
     """Every contact state enumerated by the reference; links sticking (allow_slide=False:
     a Coulomb set is a second-order cone)."""
     pushed = 0
-    for model, q, res in scenes(rng, 12, models):
+    for model, q, res in small_scenes(rng, 12, models, object_friction=False,
+                                      need_object=True):
         p = dense_problem(res, model, np.zeros(model.n_joints))
         ns = model.n_coordinates
         d = rng.normal(size=2)

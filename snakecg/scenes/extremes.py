@@ -49,8 +49,11 @@ __all__ = ["SceneExtremes", "extremes", "metric_names"]
 MAX_STATES = 2048
 #: Feasibility tolerance of a candidate point (normalized conditions).
 FEAS_TOL = 1e-9
-#: The forward solve at an exact extreme's torque agrees to this (relative), or not certified.
+#: The forward solve at an exact extreme's torque agrees to this (absolute: on the boundary
+#: every norm and sr lie in [0, 1]), or not certified.
 AGREE = 1e-7
+#: Below this ``|a|_M^2`` (the free motion's is 1) the system does not move: sr is 0 there.
+MOTION_FLOOR = 1e-12
 
 
 @dataclass
@@ -260,7 +263,9 @@ def _faces(C, na):
         else:
             a = np.array([C[i][list(S), :-1] for i, S in items])
             b = np.array([C[i][list(S), -1] for i, S in items])
-            u0, Z, r, valid = _cut(a, b, na)
+            with np.errstate(divide="ignore", invalid="ignore"):  # parallel conditions
+                u0, Z, r, valid = _cut(a, b, na)
+            valid &= np.isfinite(r) & np.all(np.isfinite(u0), axis=1)
             idx, u0, Z, r = idx[valid], u0[valid], Z[valid], r[valid]
         if idx.size:
             out[na - s] = (idx, u0, Z, r)
@@ -345,7 +350,6 @@ def _dinkelbach(ex, conds, forms, faces, kept, T, pts):
         A, g, c = forms[i][key]
         return u @ A @ u + 2 * g @ u + c
 
-    scale = max(ex.max["norm_a_obj"] + ex.max["norm_qdd"], 1e-300)
     for attr, sign, sel in (("max", 1, None), ("min", -1, None), ("min_kept", -1, kept)):
         use = faces if sel is None else _restrict(faces, sel)
         if not use:
@@ -360,7 +364,7 @@ def _dinkelbach(ex, conds, forms, faces, kept, T, pts):
                     continue
                 if np.all(conds[i][:, :-1] @ u + conds[i][:, -1] >= -FEAS_TOL):
                     D = value(i, u, "norm_a_obj") + value(i, u, "norm_qdd")
-                    r = value(i, u, "norm_a_obj") / D if D > 1e-12 * scale else 0.0
+                    r = value(i, u, "norm_a_obj") / D if D > MOTION_FLOOR else 0.0
                     if u_best is None or sign * r > sign * t:
                         t, u_best = r, u
                     break
@@ -371,7 +375,7 @@ def _dinkelbach(ex, conds, forms, faces, kept, T, pts):
             if u is None:
                 break
             D = value(i, u, "norm_a_obj") + value(i, u, "norm_qdd")
-            r = value(i, u, "norm_a_obj") / D if D > 1e-12 * scale else t
+            r = value(i, u, "norm_a_obj") / D if D > MOTION_FLOOR else t
             if not sign * (r - t) > 1e-14:
                 break
             t, u_best = r, u
@@ -395,6 +399,8 @@ def _check(model, p, ex, names):
     ok = True
     for i, (attr, m) in enumerate(keys):
         got, want = vals[m][i], getattr(ex, attr)[m]
+        if m == "sr" and vals["_D"][i] < MOTION_FLOOR:  # nothing moves: sr is 0 by convention
+            got = 0.0
         if not (vals["_ok"][i] and abs(got - want) <= AGREE):  # the free motion's norm is 1
             ok = False
         if attr == "max" and vals["_ok"][i]:

@@ -84,7 +84,9 @@ class Sampler:
         out["_D"] = D
         free = np.einsum("ki,ij,kj->k", f, p.Minv, f)
         out["_free"] = free
-        moving = D > 1e-26 * free  # eq. (30); 0 where the system does not move (as forward)
+        # eq. (30); 0 where the system does not move: |a|_M^2 below 1e-12 of the free
+        # motion's, where the ratio is one of rounding errors
+        moving = D > 1e-12 * free
         out["sr"] = np.where(moving, total / np.where(moving, D, 1.0), 0.0)
         out["_ok"] = res["info"]["status"] == 0
         out["_a"] = a
