@@ -65,22 +65,23 @@ def forward_command(args, scene, schema: str) -> int:
     return 0
 
 
-def optimize_command(args, scene, schema: str) -> int:
+def optimize_command(args, scene, schema: str, task_options, tasks) -> int:
     """``snakecg optimize --scene FILE``: the task's options checked against the scene before
-    the model is loaded, then :func:`snakecg.scenes.optimize.optimize`."""
+    the model is loaded (``task_options``: the command's parsing of --tau-max, --direction,
+    --a-obj; ``tasks``: the options each objective takes), then
+    :func:`snakecg.scenes.optimize.optimize`."""
     from .. import load
     from ..errors import InputError
     from ._common import print_json
-    from .optimize import _TASKS, task_options
 
     q, _ = _vectors(args, scene)
     tau_max, direction, a_obj = task_options(args, scene.robot.joints)
     given = {k for k, v in (("--direction", args.direction), ("--a-min", args.a_min),
                             ("--a-obj", args.a_obj)) if v is not None}
-    extra = given - _TASKS[args.objective]
+    extra = given - tasks[args.objective]
     if extra:
         raise InputError(f"{', '.join(sorted(extra))} do(es) not apply to {args.objective} "
-                         f"(it takes: {', '.join(sorted(_TASKS[args.objective])) or 'none'})")
+                         f"(it takes: {', '.join(sorted(tasks[args.objective])) or 'none'})")
     if args.objective == "strongest-push" and direction is None:
         raise InputError("strongest-push on a general scene needs --direction dx,dy")
     if args.objective == "least-slip-push" and a_obj is None and not {

@@ -158,7 +158,7 @@ def run(args) -> int:
     if general is not None:  # a general scene (snakecg.scenes)
         from ._scene import optimize_command
 
-        return optimize_command(args, general, SCHEMA)
+        return optimize_command(args, general, SCHEMA, task_options, _TASKS)
     if args.object is not None and args.object != 1:
         raise InputError(f"--object {args.object}: the paper's scene has one object (1)")
     scene = scene_from_args(args)

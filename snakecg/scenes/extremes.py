@@ -43,7 +43,8 @@ from .maps import scene_problem, state_maps
 from .extremes_bounds import Sampler, bounds
 from .solve import BOX, DISC, FREE, HELD, SLIDE_NEG, SLIDE_POS, SPLIT, UNILATERAL, ZERO
 
-__all__ = ["SceneExtremes", "extremes", "metric_names"]
+__all__ = ["SceneExtremes", "extremes", "metric_names", "whitening", "quadratics", "piece_faces",
+           "best_on_pieces"]
 
 #: States enumerated at most by the exact method (more: certified bounds instead).
 MAX_STATES = 2048
@@ -189,12 +190,12 @@ def _stack(parts, names):
 
 
 # ---------------------------------------------------------------- exact pieces
-def _whitening(p):
+def whitening(p):
     L = np.linalg.cholesky(p.N)
     return np.linalg.inv(L).T  # tau = T u
 
 
-def _quadratics(p, mp, T, names):
+def quadratics(p, mp, T, names):
     """Every metric of the state's maps as ``(A, g, c)`` in ``u``: ``u^T A u + 2 g^T u + c``."""
     ns, no = p.n_s, p.n_o
     P = np.vstack([mp["qdd_from_tau"], mp["a_obj_from_tau"].reshape(3 * no, p.n_a)]) @ T
@@ -244,7 +245,7 @@ def _conditions(p, mp, state, T):
     return C
 
 
-def _faces(C, na):
+def piece_faces(C, na):
     """``(state index, u0, Z, r)`` of every face of every state's polyhedron cut with the
     sphere, grouped by the cut's dimension ``k`` (dict ``k -> arrays``)."""
     groups = {}
@@ -272,7 +273,7 @@ def _faces(C, na):
     return out
 
 
-def _best_on_pieces(C, forms, faces, sign):
+def best_on_pieces(C, forms, faces, sign):
     """The largest (sign 1) or smallest (-1) value of each state's quadratic on its piece
     of the sphere: (value, u, state) over every state."""
     best, bu, bs = -np.inf, None, -1
@@ -300,7 +301,7 @@ def _best_on_pieces(C, forms, faces, sign):
 
 def _exact(model, p, names) -> SceneExtremes:
     na = p.n_a
-    T = _whitening(p)
+    T = whitening(p)
     states = list(itertools.product(*_block_states(p)))
     conds, forms, kept = [], [], []
     kept_blocks = [b for b, lab in enumerate(p.rows.labels) if lab[0] == "contact" and "object"
@@ -311,10 +312,10 @@ def _exact(model, p, names) -> SceneExtremes:
         if C is None:
             continue
         conds.append(C)
-        forms.append(_quadratics(p, mp, T, names))
+        forms.append(quadratics(p, mp, T, names))
         kept.append(all(st[b] == HELD for b in kept_blocks))
     kept = np.array(kept)
-    faces = _faces(conds, na)
+    faces = piece_faces(conds, na)
     ex = SceneExtremes(method=f"exact pieces ({len(conds)} states, KKT points of every face "
                               f"on the sphere; sr by Dinkelbach's iteration)", pieces=len(conds))
     pts = []
@@ -324,7 +325,7 @@ def _exact(model, p, names) -> SceneExtremes:
         fm = [f[m] for f in forms]
         for attr, sign, sel in (("max", 1, None), ("min", -1, None), ("min_kept", -1, kept)):
             use_faces = faces if sel is None else _restrict(faces, sel)
-            v, u, _ = _best_on_pieces(conds, fm, use_faces, sign) if use_faces else \
+            v, u, _ = best_on_pieces(conds, fm, use_faces, sign) if use_faces else \
                 (np.nan, np.full(na, np.nan), -1)
             getattr(ex, attr)[m] = max(float(v), 0.0) if np.isfinite(v) else np.nan
             getattr(ex, "tau_" + attr)[m] = T @ u if u is not None else np.full(na, np.nan)
@@ -371,7 +372,7 @@ def _dinkelbach(ex, conds, forms, faces, kept, T, pts):
         for _ in range(60):
             comb = [tuple(f["norm_a_obj"][j] - t * (f["norm_a_obj"][j] + f["norm_qdd"][j])
                           for j in range(3)) for f in forms]
-            h, u, i = _best_on_pieces(conds, comb, use, sign)
+            h, u, i = best_on_pieces(conds, comb, use, sign)
             if u is None:
                 break
             D = value(i, u, "norm_a_obj") + value(i, u, "norm_qdd")
@@ -422,7 +423,7 @@ def _check(model, p, ex, names):
 # ---------------------------------------------------------------- certified bounds
 def _bounds(model, p, names, gap, budget) -> SceneExtremes:
     na = p.n_a
-    T = _whitening(p)
+    T = whitening(p)
     sampler = Sampler(model, p)
     best, bmax, bmin, closed, why = bounds(sampler, names, T, gap, budget)
     if best is None:

@@ -27,7 +27,6 @@ no link's set sliding): a disagreement is status ``failed`` with the reason.
 
 from __future__ import annotations
 
-import itertools
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -36,21 +35,18 @@ from .._inputs import short_repr
 from ..errors import InputError
 from ..limits import describe, resolve_tau_max
 from .maps import scene_problem
-from .solve import BOX, DISC, HELD, SLIDE, SPLIT, UNILATERAL, ZERO
+from .optimize_pieces import solve_pieces
+from .optimize_search import search
+from .optimize_sr import max_sr_exact
+from .optimize_task import CHECK_TOL, gauge
+from .optimize_task import roles as block_roles
+from .solve import DISC, SPLIT
 
-__all__ = ["OBJECTIVES", "STATUSES", "SceneOptimizeResult", "optimize", "contact_states",
-           "objective_of", "binding", "gauge"]
+__all__ = ["OBJECTIVES", "STATUSES", "SceneOptimizeResult", "optimize", "objective_of",
+           "binding"]
 
 OBJECTIVES = ("max_sr", "least_slip_push", "strongest_push")
 STATUSES = ("optimal", "stick_only", "local", "infeasible", "failed")
-#: Relative back-off from the friction sets' boundaries, so the forward solve sees them stick.
-MARGIN = 1e-7
-#: Relative agreement of the forward solve with the objective value.
-CHECK_TOL = 1e-6
-#: IPOPT's tolerance.
-IPOPT_TOL = 1e-10
-#: Contact states searched at most.
-MAX_STATES = 4096
 
 
 @dataclass
@@ -163,18 +159,6 @@ def _validate(model, objective, obj, tau_max, radius, direction, a_min, a_obj, a
                 allow_slide=None if allow_slide is None else bool(allow_slide))
 
 
-def _roles(p):
-    """Per block: 'contact', 'link' (a link's ground set) or 'object' (an object's ground
-    friction), and whether its set has size 0."""
-    out = []
-    for k, par, lab in zip(p.kind, p.par, p.rows.labels):
-        zero = (k == BOX and not par[0] > 0) or (k == DISC and not par[0] > 0) or (
-            k == SPLIT and not (par[2] > 0 and (par[0] > 0 or par[1] > 0)))
-        role = {"contact": "contact", "object_ground": "object"}.get(lab[0], "link")
-        out.append((role, zero))
-    return out
-
-
 def optimize(model, q, objective="max_sr", *, object=1, tau_max="robot", radius=None,
              direction=None, a_min=None, a_obj=None, allow_slide=None):
     """The optimal joint torque for a task at configuration ``q`` (n_s,) of a general scene
@@ -191,7 +175,7 @@ def optimize(model, q, objective="max_sr", *, object=1, tau_max="robot", radius=
     p = scene_problem(model, qa)
     limits = describe(tau_max=task["tau_max"], tau_max_from=task["tau_max_from"],
                       radius=task["radius"])
-    roles = _roles(p)
+    roles = block_roles(p)
     sliding_objects = [b for b, (r, z) in enumerate(roles) if r == "object" and not z]
     if task["allow_slide"] is None:  # a snake on Coulomb or anisotropic ground moves by sliding
         task["allow_slide"] = any(r == "link" and not z and k in (DISC, SPLIT)
@@ -203,21 +187,15 @@ def optimize(model, q, objective="max_sr", *, object=1, tau_max="robot", radius=
     tau, status, cert, solver = None, "infeasible", {}, ""
     if not task["allow_slide"] or (objective == "max_sr" and not sliding_objects):
         if objective == "max_sr" and not sliding_objects:
-            from .optimize_sr import max_sr_exact
-
             tau, cert = max_sr_exact(p, roles, task)
             status = "optimal" if tau is not None else "infeasible"
             solver = ("Dinkelbach on the KKT points of every contact state's cone, scaled to "
                       "the limits")
         else:
-            from .optimize_pieces import solve_pieces
-
             tau, status, cert = solve_pieces(p, roles, task, sliding_objects)
             solver = "IPOPT (CasADi) on every piece"
     res = _finish(model, qa, p, task, tau, status, cert, solver, limits)
     if task["allow_slide"]:
-        from .optimize_search import search
-
         t2, v2, count = search(model, p, task)
         how = (f"search of the region by {count} forward solves (every link free to slide) "
                f"and a pattern search")
@@ -249,18 +227,6 @@ def objective_of(task, an, p):
         return float(an.norm_qdd)
     ao = np.asarray(an.a_obj)[task["object"] - 1]
     return float(task["direction"] @ ao)
-
-
-def gauge(kind, par, lam) -> float:
-    """How far ``lam`` is out along its set (1 on the boundary, 0 at the centre)."""
-    if kind == BOX:
-        return abs(lam[0]) / par[0] if par[0] > 0 else 0.0
-    if kind == DISC:
-        return float(np.hypot(*lam[:2])) / par[0] if par[0] > 0 else 0.0
-    if kind == SPLIT and par[2] > 0:
-        st = par[0] if lam[0] < 0 else par[1]
-        return float(np.hypot(lam[0] / st if st > 0 else 0.0, lam[1] / par[2]))
-    return 0.0
 
 
 def binding(p, task, tau, an) -> list:
@@ -305,25 +271,3 @@ def _finish(model, qa, p, task, tau, status, cert, solver, limits):
                                     f"the piece's {want:.9g}")
     return SceneOptimizeResult(task["objective"], tau, status, reason, value, obj,
                                binding(p, task, tau, an), an, solver, cert, limits)
-
-
-def contact_states(p, roles, objects_slide=()):
-    """Every combination of block states: contacts held/open, links' sets sticking (size 0:
-    none), objects' ground friction sticking or sliding (``objects_slide``: blocks that may
-    slide)."""
-    choices = []
-    for b, ((role, zero), k) in enumerate(zip(roles, p.kind)):
-        if zero:
-            choices.append((ZERO,))
-        elif role == "contact" and k == UNILATERAL:
-            choices.append((HELD, ZERO))
-        elif role == "object" and b in objects_slide:
-            choices.append((HELD, SLIDE))
-        else:
-            choices.append((HELD,))
-    n = int(np.prod([len(c) for c in choices]))
-    if n > MAX_STATES:
-        raise InputError(f"this configuration has {n} contact states (more than "
-                         f"{MAX_STATES}) to search; move the bodies apart")
-    return list(itertools.product(*choices))
-

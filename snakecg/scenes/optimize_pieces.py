@@ -10,6 +10,7 @@ from __future__ import annotations
 import numpy as np
 
 from .maps import state_maps
+from .optimize_task import IPOPT_TOL, MARGIN, contact_states
 from .solve import BOX, DISC, HELD, SLIDE, SPLIT, UNILATERAL, ZERO
 
 __all__ = ["solve_pieces"]
@@ -49,8 +50,6 @@ def _affine(p, st):
 
 def _build(p, roles, task, st, start, relax=0.0):
     import casadi as ca
-
-    from .optimize import MARGIN
 
     aff, slides, _ = _affine(p, st)
     opti = ca.Opti()
@@ -123,8 +122,6 @@ def _build(p, roles, task, st, start, relax=0.0):
     opti.set_initial(tau, tau0)
     if slides:
         opti.set_initial(th, th0[:len(slides)])
-    from .optimize import IPOPT_TOL
-
     # a push that no torque changes on this piece (the object held by the others): its value
     # is a constant, exact wherever the piece is feasible
     Xa = aff["a"][0][p.n_s + 3 * j:p.n_s + 3 * j + 3]
@@ -152,8 +149,6 @@ def _starts(p, task, st, rng):
 def solve_pieces(p, roles, task, sliding_objects):
     """``(tau, status, certificate)``: the best piece's torque; ``optimal`` where every piece
     is convex and solved or proven infeasible."""
-    from .optimize import contact_states
-
     rng = np.random.default_rng(0)
     states = contact_states(p, roles, sliding_objects)
     best, solved, infeasible, unknown, nonconvex = None, 0, 0, 0, False

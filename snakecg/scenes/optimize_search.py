@@ -9,7 +9,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..extremes_result import sphere_directions
-from .extremes import _whitening
+from .extremes import whitening
 from .extremes_bounds import Sampler
 
 __all__ = ["search", "DIRECTIONS", "RADII", "ROUNDS"]
@@ -52,7 +52,7 @@ def search(model, p, task, starts: int = 4):
     """``(tau, value, samples)``: the best torque found (None where no sample meets the
     task) and its objective (sr, ``||qdd_s||^2`` or ``d . a_o``)."""
     sampler = Sampler(model, p)
-    T = _whitening(p)
+    T = whitening(p)
     dirs = sphere_directions(p.n_a, DIRECTIONS) @ T.T
     dirs *= _region_scale(p, task, dirs)[:, None]
     radii = (np.arange(1, RADII + 1) / RADII) ** 2 if task["objective"] == "least_slip_push" \

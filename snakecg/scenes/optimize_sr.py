@@ -5,8 +5,9 @@ from __future__ import annotations
 
 import numpy as np
 
-from .extremes import _best_on_pieces, _faces, _quadratics, _whitening
+from .extremes import best_on_pieces, piece_faces, quadratics, whitening
 from .maps import state_maps
+from .optimize_task import MARGIN, contact_states, gauge
 from .solve import HELD, UNILATERAL
 
 __all__ = ["max_sr_exact", "scale_to_limits"]
@@ -18,8 +19,6 @@ SR_GAIN = 1e-14
 def scale_to_limits(p, roles, task, tau, lam_from_tau) -> float:
     """The largest ``t`` with ``t tau`` inside the region and every link's set sticking (the
     forces ``t lam_from_tau tau`` within their sets)."""
-    from .optimize import gauge
-
     t = np.inf
     if task["radius"] is not None:
         t = min(t, task["radius"] / np.sqrt(max(tau @ p.N @ tau, 1e-300)))
@@ -38,9 +37,7 @@ def scale_to_limits(p, roles, task, tau, lam_from_tau) -> float:
 def max_sr_exact(p, roles, task):
     """``(tau, certificate)``: the largest sr with every link's set sticking, or ``(None,
     certificate)`` when no torque moves an object."""
-    from .optimize import MARGIN, contact_states
-
-    T = _whitening(p)
+    T = whitening(p)
     states = contact_states(p, roles)
     conds, forms, lams = [], [], []
     for st in states:
@@ -52,9 +49,9 @@ def max_sr_exact(p, roles, task):
         nrm = np.linalg.norm(C, axis=1)
         C = C[nrm > 1e-14] / nrm[nrm > 1e-14, None]
         conds.append(np.hstack([C, np.zeros((len(C), 1))]))  # homogeneous: a cone
-        forms.append(_quadratics(p, mp, T, ()))
+        forms.append(quadratics(p, mp, T, ()))
         lams.append(mp["lam_from_tau"])
-    faces = _faces(conds, p.n_a)
+    faces = piece_faces(conds, p.n_a)
 
     def ratio(i, u):
         Ao, Aq = forms[i]["norm_a_obj"][0], forms[i]["norm_qdd"][0]
@@ -65,7 +62,7 @@ def max_sr_exact(p, roles, task):
     for rounds in range(1, 61):
         comb = [tuple(f["norm_a_obj"][j] - t * (f["norm_a_obj"][j] + f["norm_qdd"][j])
                       for j in range(3)) for f in forms]
-        _, u, i = _best_on_pieces(conds, comb, faces, 1)
+        _, u, i = best_on_pieces(conds, comb, faces, 1)
         if u is None:
             break
         r = ratio(i, u)
