@@ -262,3 +262,29 @@ def clarabel_min_norm_forces(p, lam_star):
         if prob.status == "optimal":
             break
     return lam_star + N @ t.value, prob.status
+
+
+def small_scenes(rng, count, models=POLYHEDRAL, *, object_friction=True, need_object=False):
+    """``count`` random scenes of 2-3 joints, 1-4 contacts and independent rows, as
+    ``(model, q, forward result at zero torque)`` (resampled on overlap); without
+    ``object_friction`` no object rubs the ground; ``need_object``: at least one object."""
+    import snakecg
+    from snakecg.errors import InputError
+
+    out = []
+    while len(out) < count:
+        robot, ground, objects, pegs, q, _ = random_scene(rng, models,
+                                                          n_joints=int(rng.integers(2, 4)))
+        if not object_friction and any(o.mu is not None for o in objects):
+            continue
+        try:
+            m0 = snakecg.load(GeneralScene(robot, ground=ground, objects=objects))
+            model = snakecg.load(GeneralScene(robot, ground=ground, objects=objects,
+                                              obstacles=peg_obstacles(m0, pegs, q)))
+            res = model.forward(q, np.zeros(robot.joints))
+        except InputError:
+            continue
+        if (1 <= len(res.contacts) <= 4 and not res.dependent
+                and (model.scene.n_objects or not need_object)):
+            out.append((model, q, res))
+    return out

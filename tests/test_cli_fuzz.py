@@ -862,3 +862,78 @@ def test_reported_attacks_are_refused_in_one_line(argv, fragment, tmp_path, monk
     assert code == 2 and "Traceback" not in err and out == "", err
     assert len(err.splitlines()) == 1 and fragment in err, err
     assert list(tmp_path.iterdir()) == []  # nothing written
+
+
+# ------------------------------------------------------------------------------------------
+# a general scene (--scene FILE): optimize's options broken one to three at a time against
+# the scene (its joints, its objects), refused in one line before any model is loaded; the
+# commands that do not take a general scene say so in one line
+_SCENES = Path(__file__).resolve().parents[1] / "examples" / "scenes"
+SCENE_FILE_FAULTS = {
+    "--object": ["0", "3", "-1", "x", "", "1.5", str(2**70)],
+    "--q": VECTOR_FAULTS,
+    "--direction": ["0,0", "1", "1,2,3,4", "nan,1", "", "1e400,0"],
+    "--a-min": ["-1", "nan", "1e308", "", "inf"],
+    "--a-obj": ["1,2", "nan,0,0", "1e101,0,0", ""],
+    "--tau-max": ["", "-1", "0", "nan", "1e101", "1,2,3,4,5,6", "x"],
+    "--radius": ["0", "-1", "nan", "inf", "1e308", "", "x"],
+    "--allow-slide": ["2,3", "0", "x", ""],
+    "--joints": ["3", "2"],
+    "--scenario": ["wheels"],
+    "--kappa": ["10"],
+}
+
+
+@st.composite
+def broken_scene_lines(draw):
+    objective = draw(st.sampled_from(["max-sr", "least-slip-push", "strongest-push"]))
+    base = ["optimize", objective, "--scene", str(_SCENES / "two_objects.toml"),
+            "--q=0,0,0,0.6,-0.6,0.6", "--tau-max=2"]
+    base += {"max-sr": [], "least-slip-push": ["--direction=0,1", "--a-min=0.1"],
+             "strongest-push": ["--direction=0,1"]}[objective]
+    opts = draw(st.lists(st.sampled_from(sorted(SCENE_FILE_FAULTS)), min_size=1, max_size=3,
+                         unique=True))
+    return objective, _apply(base, {o: draw(st.sampled_from(SCENE_FILE_FAULTS[o]))
+                                    for o in opts})
+
+
+@PROFILE
+@given(case=broken_scene_lines())
+def test_optimize_on_a_scene_file_refuses_bad_options(case):
+    objective, argv = case
+    event(objective)
+    with no_model_loaded():
+        code, stdout, err = run_cli(argv)
+    assert code == 2, (argv, code, err)
+    assert "Traceback" not in err and stdout == "", (argv, err)
+    assert len(err.splitlines()) == 1 and err.startswith("snakecg"), (argv, err)
+
+
+@pytest.mark.parametrize("command", ["simulate", "sweep", "optimize-shape", "export"])
+def test_commands_without_general_scenes_refuse_scene_files(command, tmp_path):
+    line = {"simulate": ["simulate", "--q=0,0,0,0,0,0", "--tau=0,0,0", "--duration", "0.01",
+                         "--no-figures", "--out", str(tmp_path / "s")],
+            "sweep": ["sweep", *_base_line("sweep", tmp_path)],
+            "optimize-shape": ["optimize-shape", "max-sr"],
+            "export": ["export", "--out", str(tmp_path / "e")]}[command]
+    line = [a for a in line if a not in ("--joints", "2")]
+    with no_model_loaded():
+        code, stdout, err = run_cli(line + ["--scene", str(_SCENES / "pegs.toml")])
+    assert code == 2 and stdout == "" and "Traceback" not in err, (line, err)
+    (msg,) = err.splitlines()
+    assert "does not take a general scene yet (forward, optimize and plot do)" in msg, msg
+
+
+def test_optimize_on_a_scene_file_prints_strict_json():
+    code, stdout, err = run_cli(["optimize", "strongest-push", "--scene",
+                                 str(_SCENES / "wall_push.toml"), "--q=0,0,0,0,0,0",
+                                 "--direction=0,1", "--tau-max=2", "--json"])
+    assert code == 1 and err == ""  # a search: 'local', not optimal
+    out = _strict_json(stdout)
+    assert out["status"] == "local" and out["object"] == 1 and out["objective_value"] > 0.1
+    assert out["analysis"]["objects"][0]["a"][1] == pytest.approx(out["objective_value"])
+    code, stdout, _ = run_cli(["optimize", "max-sr", "--scene",
+                               str(_SCENES / "two_objects.toml"),
+                               "--q=0,0,0,0.6,-0.6,0.6", "--json", "--allow-slide"])
+    assert code in (0, 1)
+    _strict_json(stdout)

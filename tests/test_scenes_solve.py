@@ -208,8 +208,8 @@ def test_overlap_is_refused_naming_the_bodies_and_depth():
 
 def test_other_queries_are_refused_with_one_line():
     model = snakecg.load(GeneralScene(Robot(joints=1)))
-    with pytest.raises(InputError, match="maps is not available on a general scene"):
-        model.maps([0.0] * 4)
+    with pytest.raises(InputError, match="optimize_shape is not available on a general scene"):
+        model.optimize_shape()
 
 
 def test_scene_solve_is_strict_c99(tmp_path):

@@ -176,7 +176,8 @@ def add_robot_args(p, *, scene: bool = True) -> None:
     if scene:
         p.add_argument("--scene", metavar="FILE", type=text("a scene file"),
                        help="general scene file (TOML: [robot], [ground], [[object]], "
-                       "[[obstacle]]; see docs/how-to/scenes.md): forward and plot take it")
+                       "[[obstacle]]; see docs/how-to/scenes.md): forward, optimize and plot "
+                       "take it")
         p.add_argument("--scenario", choices=SCENARIOS, type=lambda s: s.replace("-", "_"),
                        help="ground scenario (default frictionless)")
         p.add_argument("--kappa", type=float, help="object mass / mean link mass (default 100)")
@@ -234,7 +235,8 @@ def general_scene_from_args(args):
 def scene_from_args(args) -> Scene:
     if getattr(args, "scene", None):
         raise InputError(f"--scene: {args.command if hasattr(args, 'command') else 'this'} "
-                         f"command does not take a general scene yet (forward, plot and simulate do)")
+                         f"command does not take a general scene yet (forward, optimize, plot "
+                         f"and simulate do)")
     overrides = {
         "scenario": args.scenario, "kappa": args.kappa, "mu": args.mu,
         "contact_link": args.contact_link, "side": args.side,

@@ -1,11 +1,11 @@
-"""The command line on a general scene (``--scene FILE``): ``forward``, ``plot`` and
-``simulate``."""
+"""The command line on a general scene (``--scene FILE``): ``forward``, ``optimize`` and
+``simulate`` (``plot`` draws either kind of scene itself)."""
 
 from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["forward_command", "simulate_command"]
+__all__ = ["forward_command", "optimize_command", "simulate_command"]
 
 
 def _vectors(args, scene):
@@ -137,3 +137,67 @@ def simulate_command(args, scene, gait: dict) -> int:
         sys.stderr.write(f"snakecg simulate: {s['status']}: {s['message']}\n")
         return 1
     return 0
+
+
+def optimize_command(args, scene, schema: str, task_options, tasks) -> int:
+    """``snakecg optimize --scene FILE``: the task's options checked against the scene before
+    the model is loaded (``task_options``: the command's parsing of --tau-max, --direction,
+    --a-obj; ``tasks``: the options each objective takes), then
+    :func:`snakecg.scenes.optimize.optimize`."""
+    from .. import load
+    from ..errors import InputError
+    from ._common import print_json
+
+    q, _ = _vectors(args, scene)
+    tau_max, direction, a_obj = task_options(args, scene.robot.joints)
+    given = {k for k, v in (("--direction", args.direction), ("--a-min", args.a_min),
+                            ("--a-obj", args.a_obj)) if v is not None}
+    extra = given - tasks[args.objective]
+    if extra:
+        raise InputError(f"{', '.join(sorted(extra))} do(es) not apply to {args.objective} "
+                         f"(it takes: {', '.join(sorted(tasks[args.objective])) or 'none'})")
+    if args.objective == "strongest-push" and direction is None:
+        raise InputError("strongest-push on a general scene needs --direction dx,dy")
+    if args.objective == "least-slip-push" and a_obj is None and not {
+            "--direction", "--a-min"} <= given:
+        raise InputError("least-slip-push needs a task: --direction and --a-min, or --a-obj")
+    if scene.n_objects == 0:
+        raise InputError(f"--scene {args.scene}: {args.objective} needs an object in the "
+                         f"scene; it has none")
+    obj = 1 if args.object is None else args.object
+    if not 1 <= obj <= scene.n_objects:
+        raise InputError(f"--object must be an object number 1..{scene.n_objects}, got {obj}")
+    slide = None
+    if args.allow_slide is not None:
+        if args.allow_slide.strip().lower() != "all":
+            raise InputError("--allow-slide on a general scene takes no link list: every "
+                             "link's set may slide (give it alone, or 'all')")
+        slide = True
+    objective = args.objective.replace("-", "_")
+    model = load(scene)
+    res = model.optimize(q, objective, object=obj, tau_max=tau_max, radius=args.radius,
+                         direction=direction, a_min=args.a_min, a_obj=a_obj,
+                         allow_slide=slide)
+    code = 0 if res.status == "optimal" else 1
+    if args.json:
+        out = {"schema": schema, "joints": scene.robot.joints, "scene": str(args.scene),
+               "q": list(q), "task": {"direction": direction, "a_min": args.a_min,
+                                      "a_obj": a_obj}}
+        out.update(res.to_dict())
+        print_json(out)
+        return code
+    np.set_printoptions(precision=6, suppress=True)
+    name = {"max_sr": "sr", "least_slip_push": "|qdd|^2",
+            "strongest_push": f"d . a_obj of object {obj} (m/s^2)"}[objective]
+    print(f"{objective}: {res.status} ({res.solver})")
+    if res.reason:
+        print(f"  reason: {res.reason}")
+    print(f"  tau    = {res.tau}  (N m)")
+    print(f"  {name} = {res.objective_value:.9g}")
+    if res.binding:
+        print(f"  binding: {', '.join(res.binding)}")
+    an = res.analysis
+    for o in an.objects:
+        print(f"  object {o['object']}: a = {np.asarray(o['a'])}")
+    print(f"  |a_obj|^2 = {an.norm_a_obj:.6g}  |qdd|^2 = {an.norm_qdd:.6g}  sr = {an.sr:.6g}")
+    return code

@@ -68,6 +68,9 @@ def register(sub) -> None:
                    type=text("'all' or link numbers such as 2,3"),
                    help="max-sr, scenario wheels: let wheels slide (all, or the listed links, "
                    "e.g. 2,3)")
+    p.add_argument("--object", type=int, metavar="J",
+                   help="general scene (--scene): the object (1-based) that the push task "
+                   "refers to (default 1)")
     p.add_argument("--json", action="store_true",
                    help=f"print JSON (schema {SCHEMA}, docs/how-to/optimize.md)")
     p.set_defaults(run=run)
@@ -116,17 +119,10 @@ def _check_task(args, n_links):
         raise InputError("--allow-slide applies to max-sr only")
 
 
-def run(args) -> int:
-    from .. import load
-    from ..optimize import SCHEMA
-
+def task_options(args, na):
+    """``(tau_max, direction, a_obj)`` of the command line, checked against ``na`` joints."""
     from ..errors import InputError
 
-    scene = scene_from_args(args)
-    na = scene.robot.joints
-    # every option checked against the robot and the objective before the model is loaded
-    q = check_vector("q", parse_vector("--q", args.q), na + 3,
-                     f" = (n_joints + 3,) for a {na}-joint robot")
     tau_max = "robot"
     if args.tau_max is not None and args.tau_max.strip().lower() == "none":
         tau_max = None
@@ -148,6 +144,29 @@ def run(args) -> int:
     if a_obj is not None and max(map(abs, a_obj)) > MAX_MAGNITUDE:
         raise InputError(f"--a-obj must be at most {MAX_MAGNITUDE:g} in magnitude (the "
                          f"limit), got {args.a_obj!r:.80}")
+    return tau_max, direction, a_obj
+
+
+def run(args) -> int:
+    from .. import load
+    from ..optimize import SCHEMA
+
+    from ..errors import InputError
+    from ._common import general_scene_from_args
+
+    general = general_scene_from_args(args)
+    if general is not None:  # a general scene (snakecg.scenes)
+        from ._scene import optimize_command
+
+        return optimize_command(args, general, SCHEMA, task_options, _TASKS)
+    if args.object is not None and args.object != 1:
+        raise InputError(f"--object {args.object}: the paper's scene has one object (1)")
+    scene = scene_from_args(args)
+    na = scene.robot.joints
+    # every option checked against the robot and the objective before the model is loaded
+    q = check_vector("q", parse_vector("--q", args.q), na + 3,
+                     f" = (n_joints + 3,) for a {na}-joint robot")
+    tau_max, direction, a_obj = task_options(args, na)
     _check_task(args, scene.robot.n_links)
     kwargs = dict(
         tau_max=tau_max, radius=args.radius, direction=direction, a_min=args.a_min,

@@ -22,14 +22,15 @@ from .solve import INFO, UNILATERAL
 
 __all__ = ["GeneralSceneModel"]
 
-_REFUSED = ("maps", "extremes", "optimize", "optimize_shape", "com_polar")
+_REFUSED = ("optimize_shape", "com_polar")
 #: Samples per thread below which a batch is not split (SNAKECG_THREADS; snakecg.forward's)
 PARALLEL_MIN = 512
 _F64 = np.dtype(np.float64)
 
 
 class GeneralSceneModel(RobotModel):
-    """``forward`` on a :class:`~snakecg.scenes.GeneralScene` (at rest)."""
+    """``forward``, ``maps``, ``extremes`` and ``optimize`` on a
+    :class:`~snakecg.scenes.GeneralScene` (at rest)."""
 
     def __init__(self, scene: GeneralScene, *, backend: str = "compiled", progress=None):
         if not isinstance(scene, GeneralScene):
@@ -52,8 +53,9 @@ class GeneralSceneModel(RobotModel):
 
     def __getattr__(self, name):
         if name in _REFUSED:
-            raise InputError(f"{name} is not available on a general scene yet (forward and "
-                             f"plot are); use a snakecg.Scene of the paper's scenarios")
+            raise InputError(f"{name} is not available on a general scene yet (forward, "
+                             f"maps, extremes, optimize, simulate and plot are); use a snakecg.Scene of "
+                             f"the paper's scenarios")
         raise AttributeError(name)
 
     def overlap_message(self, rec, index) -> str:
@@ -71,6 +73,20 @@ class GeneralSceneModel(RobotModel):
         from .stepping import simulate_scene
 
         return simulate_scene(self, q0, duration, **kwargs)
+    def maps(self, q, *, state=None) -> dict:
+        """The linear maps at ``q`` for a block state (:func:`snakecg.scenes.maps.maps`)."""
+        from .maps import maps
+        return maps(self, q, state=state)
+
+    def extremes(self, q, **kwargs):
+        """Extremes of the metrics on the input ellipsoid (:mod:`snakecg.scenes.extremes`)."""
+        from .extremes import extremes
+        return extremes(self, q, **kwargs)
+
+    def optimize(self, q, objective="max_sr", **kwargs):
+        """Optimal torques for a task (:func:`snakecg.scenes.optimize.optimize`)."""
+        from .optimize import optimize
+        return optimize(self, q, objective, **kwargs)
 
     def forward(self, q, tau, *, f_obj=None, v=None) -> SceneResult:
         """Accelerations, forces, contact states, norms, sr and the certificate at rest.

@@ -1,0 +1,273 @@
+"""Optimal torques on a general scene (at rest): ``max_sr``, and ``least_slip_push`` /
+``strongest_push`` of a chosen object, over the input region (the ellipsoid of eq. 31,
+``tau^T N tau <= radius^2``, and/or the box ``|tau_j| <= tau_max_j``), with no ground set
+of a link sliding (the paper's "every wheel sticking", on every ground model).
+
+The exact pieces: every contact held or open, every link's wheel or friction set sticking,
+each object's own ground friction sticking or sliding. On a piece the maps are affine
+(:mod:`snakecg.scenes.maps`) and, where no object slides, the task is convex: a quadratic
+(``least_slip_push``: ``||qdd_s||^2``, eq. 26) or linear (``strongest_push``: ``d . a_o``)
+objective under linear (contacts, push, box), second-order-cone (Coulomb sets) and ellipsoid
+constraints, solved by IPOPT through CasADi to its KKT tolerance. The best piece, with every
+piece either solved or proven infeasible, is the optimum: status ``optimal``. An object that
+slides on the ground pushes back along its sliding direction ``theta``, a variable of the
+piece: the problem is no longer convex, solved from a few starts: status ``local``.
+
+``max_sr``: ``sr`` (eq. 30) is homogeneous of degree 0 on a piece with no fixed force, and
+the set of torques that keep every link's set sticking is star-shaped about 0, so its
+maximum is the largest ratio on the cone of the contact state: Dinkelbach's iteration on the
+KKT points of the cone's faces (as :mod:`snakecg.scenes.extremes`), then the torque scaled
+to the largest that keeps every limit. ``allow_slide=True`` also searches the region's
+boundary with the forward solve: status ``local`` where a sliding torque beats the sticking
+optimum, else ``stick_only`` (the sticking answer, not certified against sliding pieces).
+
+Every answer is checked by the compiled forward solve at its torque (the objective to 1e-6,
+no link's set sliding): a disagreement is status ``failed`` with the reason.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from .._inputs import short_repr
+from ..errors import InputError
+from ..limits import describe, resolve_tau_max
+from .maps import scene_problem
+from .optimize_pieces import solve_pieces
+from .optimize_search import search
+from .optimize_sr import max_sr_exact
+from .optimize_task import CHECK_TOL, gauge
+from .optimize_task import roles as block_roles
+from .solve import DISC, SPLIT
+
+__all__ = ["OBJECTIVES", "STATUSES", "SceneOptimizeResult", "optimize", "objective_of",
+           "binding"]
+
+OBJECTIVES = ("max_sr", "least_slip_push", "strongest_push")
+STATUSES = ("optimal", "stick_only", "local", "infeasible", "failed")
+
+
+@dataclass
+class SceneOptimizeResult:
+    """The answer of :func:`optimize`: ``tau`` (n_a), ``status`` (:data:`STATUSES`),
+    ``reason``, ``objective_value`` (sr, ``||qdd_s||^2`` or ``d . a_o``, read from the
+    forward solve), ``object`` (1-based), ``binding`` (limits active at ``tau``),
+    ``analysis`` (the forward :class:`~snakecg.scenes.metrics.SceneResult` at ``tau``),
+    ``solver``, ``certificate`` (what was checked), ``limits``."""
+
+    objective: str
+    tau: np.ndarray
+    status: str
+    reason: str
+    objective_value: float
+    object: int
+    binding: list
+    analysis: object
+    solver: str
+    certificate: dict = field(default_factory=dict)
+    limits: dict = field(default_factory=dict)
+
+    @property
+    def ok(self) -> bool:
+        return self.status == "optimal"
+
+    def to_dict(self) -> dict:
+        """JSON-ready (no NaN: a missing value is None)."""
+        def num(x):
+            x = float(x)
+            return x if np.isfinite(x) else None
+
+        an = self.analysis.to_dict() if self.analysis is not None else None
+        return {"objective": self.objective, "object": self.object, "status": self.status,
+                "reason": self.reason, "objective_value": num(self.objective_value),
+                "tau": [num(t) for t in self.tau], "binding": list(self.binding),
+                "solver": self.solver, "certificate": self.certificate,
+                "limits": self.limits, "analysis": an}
+
+
+def _vector(name, v, sizes, what):
+    try:
+        arr = np.asarray(v, dtype=float).ravel()
+    except (TypeError, ValueError):
+        raise InputError(f"{name} must be {what}, got {short_repr(v)}") from None
+    if arr.size not in sizes or not np.all(np.isfinite(arr)):
+        raise InputError(f"{name} must be {what}, got {short_repr(v)}")
+    return arr
+
+
+def _validate(model, objective, obj, tau_max, radius, direction, a_min, a_obj, allow_slide):
+    na, no = model.n_joints, model.scene.n_objects
+    problems = []
+    if objective not in OBJECTIVES:
+        raise InputError(f"objective must be one of {', '.join(OBJECTIVES)}, got "
+                         f"{short_repr(objective)}")
+    if no == 0:
+        raise InputError(f"{objective} needs an object in the scene (sr and the pushes are "
+                         f"about objects); this scene has none")
+    if isinstance(obj, bool) or not isinstance(obj, (int, np.integer)) or not 1 <= obj <= no:
+        problems.append(f"object must be an object number 1..{no}, got {short_repr(obj)}")
+    tm, source = resolve_tau_max(model.robot, tau_max)
+    if tm is not None:
+        tm = _vector("tau_max", tm, (1, na), f"one positive number or {na} (N m per joint)")
+        if np.any(tm <= 0):
+            problems.append(f"tau_max must be > 0 (N m), got {short_repr(tau_max)}")
+        tm = np.broadcast_to(tm, (na,)).copy()
+    if radius is not None and not (isinstance(radius, (int, float, np.floating)) and
+                                   not isinstance(radius, bool) and np.isfinite(radius)
+                                   and radius > 0):
+        problems.append(f"radius must be a number > 0 (eq. 31), got {short_repr(radius)}")
+    if tm is None and radius is None:
+        radius = 1.0
+    d = None
+    if direction is not None:
+        d = _vector("direction", direction, (2, 3), "dx,dy or dx,dy,dalpha (not all 0)")
+        if not np.any(d):
+            problems.append("direction must not be all 0")
+        else:
+            d = np.r_[d, 0.0][:3] / np.linalg.norm(d)
+    target = None if a_obj is None else _vector("a_obj", a_obj, (3,), "(a_x, a_y, alpha)")
+    if objective == "least_slip_push":
+        if (target is None) == (d is None and a_min is None):
+            if target is None:
+                problems.append("least_slip_push needs a task: direction and a_min, or a_obj")
+            else:
+                problems.append("least_slip_push takes either a_obj or direction and a_min")
+        elif target is None and (d is None or a_min is None):
+            problems.append("least_slip_push needs both direction and a_min")
+        if a_min is not None and not (isinstance(a_min, (int, float, np.floating))
+                                      and not isinstance(a_min, bool) and np.isfinite(a_min)
+                                      and a_min > 0):
+            problems.append(f"a_min must be a number > 0 (m/s^2), got {short_repr(a_min)}")
+    elif objective == "strongest_push":
+        if d is None:
+            problems.append("strongest_push needs a direction (dx,dy or dx,dy,dalpha) on a "
+                            "general scene")
+        if a_min is not None or target is not None:
+            problems.append("strongest_push takes no a_min or a_obj")
+    elif direction is not None or a_min is not None or a_obj is not None:
+        problems.append("max_sr takes no direction, a_min or a_obj")
+    if allow_slide is not None and not isinstance(allow_slide, (bool, np.bool_)):
+        problems.append(f"allow_slide must be None, True or False on a general scene, got "
+                        f"{short_repr(allow_slide)}")
+    if problems:
+        raise InputError("; ".join(problems))
+    return dict(objective=objective, object=int(obj), tau_max=tm, tau_max_from=source,
+                radius=None if radius is None else float(radius), direction=d,
+                a_min=None if a_min is None else float(a_min), a_obj=target,
+                allow_slide=None if allow_slide is None else bool(allow_slide))
+
+
+def optimize(model, q, objective="max_sr", *, object=1, tau_max="robot", radius=None,
+             direction=None, a_min=None, a_obj=None, allow_slide=None):
+    """The optimal joint torque for a task at configuration ``q`` (n_s,) of a general scene
+    (see the module docstring). ``object``: the object (1-based) that ``direction``,
+    ``a_min`` and ``a_obj`` refer to (``a_obj = (a_x, a_y, alpha)``; ``direction``
+    ``(dx, dy)`` or ``(dx, dy, dalpha)``, normalized). ``tau_max``: the box (``"robot"``: the
+    robot's effort limits; None: none); ``radius``: the ellipsoid (default 1 without a box).
+    Returns a :class:`SceneOptimizeResult`."""
+    ns = model.n_coordinates
+    qa = _vector("q", q, (ns,), f"{ns} finite numbers = (n_joints + 3,) for a "
+                                f"{model.n_joints}-joint robot (one configuration)")
+    task = _validate(model, objective, object, tau_max, radius, direction, a_min, a_obj,
+                     allow_slide)
+    p = scene_problem(model, qa)
+    limits = describe(tau_max=task["tau_max"], tau_max_from=task["tau_max_from"],
+                      radius=task["radius"])
+    roles = block_roles(p)
+    sliding_objects = [b for b, (r, z) in enumerate(roles) if r == "object" and not z]
+    if task["allow_slide"] is None:  # a snake on Coulomb or anisotropic ground moves by sliding
+        task["allow_slide"] = any(r == "link" and not z and k in (DISC, SPLIT)
+                                  for (r, z), k in zip(roles, p.kind))
+    if task["allow_slide"] and task["a_obj"] is not None:
+        raise InputError("a_obj (a full object acceleration) needs every link's set sticking "
+                         "(allow_slide=False): with sliding links it is searched for, and an "
+                         "equality is not met by a search; give direction and a_min instead")
+    tau, status, cert, solver = None, "infeasible", {}, ""
+    if not task["allow_slide"] or (objective == "max_sr" and not sliding_objects):
+        if objective == "max_sr" and not sliding_objects:
+            tau, cert = max_sr_exact(p, roles, task)
+            status = "optimal" if tau is not None else "infeasible"
+            solver = ("Dinkelbach on the KKT points of every contact state's cone, scaled to "
+                      "the limits")
+        else:
+            tau, status, cert = solve_pieces(p, roles, task, sliding_objects)
+            solver = "IPOPT (CasADi) on every piece"
+    res = _finish(model, qa, p, task, tau, status, cert, solver, limits)
+    if task["allow_slide"]:
+        t2, v2, count = search(model, p, task)
+        how = (f"search of the region by {count} forward solves (every link free to slide) "
+               f"and a pattern search")
+        sign = -1.0 if objective == "least_slip_push" else 1.0
+        if t2 is not None and (tau is None or not np.isfinite(res.objective_value)
+                               or sign * (v2 - res.objective_value) > 1e-9 * max(1.0, abs(v2))):
+            res = _finish(model, qa, p, task, t2, "local",
+                          {"kind": "sampled, not certified", "ok": False, "value": v2,
+                           "samples": count,
+                           "reason": "a search: links may slide, the pieces are not "
+                                     "polyhedra; not certified"}, how, limits)
+        elif tau is not None and res.status == "optimal":
+            res.status = "stick_only"
+            res.reason = ("the optimum with every link's set sticking; no sliding torque "
+                          "found by the search beats it, but sliding pieces are not certified")
+            res.solver += "; " + how
+        elif t2 is None and tau is None:
+            res.reason = "no torque found by the search meets the task within the limits"
+            res.status = "infeasible" if objective != "max_sr" else res.status
+            res.solver = how
+    return res
+
+
+def objective_of(task, an, p):
+    """The task's objective read from a forward result ``an``."""
+    if task["objective"] == "max_sr":
+        return float(an.sr)
+    if task["objective"] == "least_slip_push":
+        return float(an.norm_qdd)
+    ao = np.asarray(an.a_obj)[task["object"] - 1]
+    return float(task["direction"] @ ao)
+
+
+def binding(p, task, tau, an) -> list:
+    """The limits active at ``tau``: the ellipsoid, a joint's torque limit, a link's set at its
+    boundary, a contact at zero force."""
+    out = []
+    if task["radius"] is not None and tau @ p.N @ tau >= task["radius"] ** 2 * (1 - 1e-6):
+        out.append("input ellipsoid (eq. 31)")
+    if task["tau_max"] is not None:
+        for j in np.flatnonzero(np.abs(tau) >= task["tau_max"] * (1 - 1e-6)):
+            out.append(f"torque limit on joint {j + 1}")
+    lam = an._raw["lam"][0]
+    for b, (k, par, lab) in enumerate(zip(p.kind, p.par, p.rows.labels)):
+        r = p.start[b]
+        if lab[0] in ("wheel", "ground") and gauge(k, par, lam[r:r + 2]) >= 1 - 1e-5:
+            out.append(f"friction set of link {lab[1] + 1} at its boundary")
+    return out
+
+
+def _finish(model, qa, p, task, tau, status, cert, solver, limits):
+    obj = task["object"]
+    if tau is None:
+        tau = np.zeros(p.n_a)
+        an = model.forward(qa, tau)
+        return SceneOptimizeResult(task["objective"], np.full(p.n_a, np.nan), status,
+                                   cert.get("reason", "no piece admits the task within the "
+                                                      "limits"), np.nan, obj, [], an, solver,
+                                   cert, limits)
+    an = model.forward(qa, tau)
+    value = objective_of(task, an, p)
+    want = cert.get("value", value)
+    reason = cert.get("reason", "")
+    slid = [g for g in an.ground if g.get("link") and g["state"].startswith("slide")
+            and not task["allow_slide"]]
+    if an.status != 0:
+        status, reason = "failed", f"the forward solve did not answer at tau: {an.reason[0]}"
+    elif slid:
+        status, reason = "failed", (f"the forward solve finds the set of link "
+                                    f"{slid[0]['link']} sliding at tau")
+    elif abs(value - want) > CHECK_TOL * max(1.0, abs(want)):
+        status, reason = "failed", (f"the forward solve's objective {value:.9g} differs from "
+                                    f"the piece's {want:.9g}")
+    return SceneOptimizeResult(task["objective"], tau, status, reason, value, obj,
+                               binding(p, task, tau, an), an, solver, cert, limits)

@@ -1,0 +1,207 @@
+"""The push tasks (and ``max_sr`` with objects sliding on the ground) of a general scene, piece
+by piece, by IPOPT through CasADi (see :mod:`snakecg.scenes.optimize`).
+
+On a piece, with the objects' sliding directions ``theta_b`` as variables, every quantity
+is ``X(tau, theta) = X_tau tau + X_0 + sum_b (cos theta_b C_b + sin theta_b S_b)``: the maps
+of :mod:`snakecg.scenes.maps` with the sliding forces superposed (they enter linearly)."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from .maps import state_maps
+from .optimize_task import IPOPT_TOL, MARGIN, contact_states
+from .solve import BOX, DISC, HELD, SLIDE, SPLIT, UNILATERAL, ZERO
+
+__all__ = ["solve_pieces"]
+
+_SUCCESS = ("Solve_Succeeded",)
+_INFEASIBLE = ("Infeasible_Problem_Detected",)
+_ACCEPTABLE = ("Solved_To_Acceptable_Level",)
+
+
+def _affine(p, st):
+    """``{name: (X_tau, X_0, [(C_b, S_b)])}`` for ``a`` (qdd and objects), ``lam`` and ``w``
+    of state ``st`` (sliding blocks superposed)."""
+    slides = [b for b, c in enumerate(st) if c == SLIDE]
+    base = [ZERO if c == SLIDE else c for c in st]
+    m0 = state_maps(p, base)
+
+    def vec(mp):
+        return {"a": np.r_[mp["qdd_offset"], mp["a_obj_offset"].ravel()],
+                "lam": mp["lam_offset"], "w": mp["w_offset"]}
+
+    def mat(mp):
+        return {"a": np.vstack([mp["qdd_from_tau"],
+                                mp["a_obj_from_tau"].reshape(3 * p.n_o, p.n_a)]),
+                "lam": mp["lam_from_tau"], "w": mp["w_from_tau"]}
+
+    v0, X = vec(m0), mat(m0)
+    extra = {k: [] for k in v0}
+    for b in slides:
+        st_b = list(base)
+        st_b[b] = SLIDE
+        vc = vec(state_maps(p, st_b, {b: 0.0}))
+        vs = vec(state_maps(p, st_b, {b: np.pi / 2}))
+        for k in v0:
+            extra[k].append((vc[k] - v0[k], vs[k] - v0[k]))
+    return {k: (X[k], v0[k], extra[k]) for k in v0}, slides, m0["singular"]
+
+
+def _build(p, roles, task, st, start, relax=0.0):
+    import casadi as ca
+
+    aff, slides, _ = _affine(p, st)
+    opti = ca.Opti()
+    tau = opti.variable(p.n_a)
+    th = opti.variable(len(slides)) if slides else None
+
+    def ex(name):
+        X, x0, extra = aff[name]
+        out = ca.mtimes(ca.DM(X), tau) + ca.DM(x0)
+        for i, (C, S) in enumerate(extra):
+            out = out + ca.cos(th[i]) * ca.DM(C) + ca.sin(th[i]) * ca.DM(S)
+        return out
+
+    a, lam, w = ex("a"), ex("lam"), ex("w")
+    keep = 1 - MARGIN
+    for b, (code, (role, zero), k, par) in enumerate(zip(st, roles, p.kind, p.par)):
+        r = p.start[b]
+        if k == UNILATERAL:
+            opti.subject_to((lam[r] if code == HELD else w[r]) >= 0)
+        elif code == HELD and not zero and k == BOX:
+            opti.subject_to(opti.bounded(-par[0] * keep, lam[r], par[0] * keep))
+        elif code == HELD and not zero and k == DISC:
+            opti.subject_to(lam[r] ** 2 + lam[r + 1] ** 2 <= (par[0] * keep) ** 2)
+        elif code == HELD and not zero and k == SPLIT:
+            s = opti.variable()
+            opti.subject_to(s >= 0)
+            for sgn, semi in ((1.0, par[1]), (-1.0, par[0])):
+                if semi > 0:
+                    opti.subject_to(s >= sgn * lam[r] / semi)
+                else:
+                    opti.subject_to(sgn * lam[r] <= 0)
+            opti.subject_to(s ** 2 + (lam[r + 1] / par[2]) ** 2 <= keep ** 2)
+        elif code == SLIDE:  # the object slides against its friction: a_lin = -s (cos, sin)
+            i = slides.index(b)
+            j = p.rows.labels[b][1]
+            ax, ay = a[p.n_s + 3 * j], a[p.n_s + 3 * j + 1]
+            c, sn = ca.cos(th[i]), ca.sin(th[i])
+            opti.subject_to(ax * sn - ay * c == 0)
+            opti.subject_to(ax * c + ay * sn <= 0)
+    if task["radius"] is not None:
+        opti.subject_to(ca.bilin(ca.DM(p.N), tau, tau) <= task["radius"] ** 2)
+    if task["tau_max"] is not None:
+        opti.subject_to(opti.bounded(-ca.DM(task["tau_max"]), tau, ca.DM(task["tau_max"])))
+    j = task["object"] - 1
+    ao = a[p.n_s + 3 * j:p.n_s + 3 * j + 3]
+    qdd = a[:p.n_s]
+    norm_qdd = ca.bilin(ca.DM(p.M_s), qdd, qdd)
+    if task["objective"] == "least_slip_push":
+        if task["a_obj"] is not None:
+            opti.subject_to(ao == ca.DM(task["a_obj"]))
+        else:
+            opti.subject_to(ca.dot(ca.DM(task["direction"]), ao) >= task["a_min"])
+        f = norm_qdd
+    elif task["objective"] == "strongest_push":
+        f = -ca.dot(ca.DM(task["direction"]), ao)
+    else:
+        om = 0
+        for jj in range(p.n_o):
+            aj = a[p.n_s + 3 * jj:p.n_s + 3 * jj + 3]
+            Ij = p.M[p.n_s + 3 * jj:p.n_s + 3 * jj + 3, p.n_s + 3 * jj:p.n_s + 3 * jj + 3]
+            om = om + ca.bilin(ca.DM(Ij), aj, aj)
+        # sr is 0/0 where nothing moves: the ratio is taken where the motion is above a
+        # floor (1e-8 of the free motion's largest norm in the region)
+        free = task["radius"] ** 2 if task["radius"] is not None else float(
+            task["tau_max"] @ np.abs(p.N) @ task["tau_max"])
+        opti.subject_to(om + norm_qdd >= 1e-8 * free)
+        f = -om / (om + norm_qdd)
+    opti.minimize(f)
+    tau0, th0 = start
+    opti.set_initial(tau, tau0)
+    if slides:
+        opti.set_initial(th, th0[:len(slides)])
+    # a push that no torque changes on this piece (the object held by the others): its value
+    # is a constant, exact wherever the piece is feasible
+    Xa = aff["a"][0][p.n_s + 3 * j:p.n_s + 3 * j + 3]
+    constant = (task["objective"] == "strongest_push" and not slides
+                and np.abs(task["direction"] @ Xa).max() <= 1e-12 * max(1.0, np.abs(Xa).max()))
+    opti.solver("ipopt", {"print_time": False, "ipopt.print_level": 0, "ipopt.sb": "yes",
+                          "ipopt.tol": IPOPT_TOL, "ipopt.max_iter": 1000,
+                          "ipopt.bound_relax_factor": relax})
+    return opti, tau, f, bool(slides), constant
+
+
+def _starts(p, task, st, rng):
+    """Initial points: a small torque along each axis (convex pieces: one is enough), and
+    sliding directions against the push (or around the circle)."""
+    n_sl = sum(1 for c in st if c == SLIDE)
+    d = task["direction"]
+    base = -np.arctan2(d[1], d[0]) if d is not None else 0.0
+    scale = 1e-3 if task["radius"] is None else 1e-3 * task["radius"]
+    t0 = np.linalg.solve(np.linalg.cholesky(p.N).T, rng.normal(size=p.n_a)) * scale
+    if n_sl == 0:  # convex: the second start only where IPOPT does not finish the first
+        return [(t0, np.zeros(0)), (-10 * t0, np.zeros(0))]
+    return [(t0, np.full(n_sl, base + np.pi + off)) for off in (0.0, np.pi / 2, -np.pi / 2)]
+
+
+def solve_pieces(p, roles, task, sliding_objects):
+    """``(tau, status, certificate)``: the best piece's torque; ``optimal`` where every piece
+    is convex and solved or proven infeasible."""
+    rng = np.random.default_rng(0)
+    states = contact_states(p, roles, sliding_objects)
+    best, solved, infeasible, unknown, nonconvex = None, 0, 0, 0, False
+    for st in states:
+        outcome = None
+        starts = _starts(p, task, st, rng)
+        # a degenerate piece (no interior) may need IPOPT's own relaxation of the bounds
+        # (1e-8): the last try; the forward solve checks the answer at the end
+        tries = [(s0, 0.0) for s0 in starts] + [(starts[0], 1e-8)]
+        for start, relax in tries:
+            opti, tau, f, has_slide, constant = _build(p, roles, task, st, start, relax)
+            nonconvex |= has_slide or task["objective"] == "max_sr"
+            try:
+                sol = opti.solve()
+                stat = sol.stats()["return_status"]
+                val, t = float(sol.value(f)), np.atleast_1d(sol.value(tau)).astype(float)
+            except RuntimeError:
+                stat = opti.stats()["return_status"]
+                val, t = np.inf, None
+            if stat in _SUCCESS or (constant and stat in _ACCEPTABLE):
+                outcome = "solved"
+                if best is None or val < best[0]:
+                    best = (val, t, st)
+                if not has_slide and task["objective"] != "max_sr":
+                    break  # a convex piece: its KKT point is its optimum
+            elif stat in _INFEASIBLE and outcome in (None, "unknown"):
+                outcome = "infeasible"
+                if not has_slide:
+                    break
+            elif outcome is None:
+                outcome = "unknown"
+            if relax == 0.0 and outcome != "unknown" and start is starts[-1]:
+                break
+        solved += outcome == "solved"
+        infeasible += outcome == "infeasible"
+        unknown += outcome == "unknown"
+    cert = {"kind": "KKT of every piece (IPOPT)" + (", non-convex pieces (objects sliding "
+                                                     "on the ground): local" if nonconvex
+                                                     else ", convex pieces"),
+            "states": len(states), "solved": solved, "infeasible": infeasible,
+            "unknown": unknown, "ok": best is not None and not nonconvex and unknown == 0}
+    if best is None:
+        if unknown == 0:
+            cert["reason"] = ("every piece is infeasible: no torque within the limits does "
+                              "the task with every link's set sticking")
+            return None, "infeasible", cert
+        cert["reason"] = f"no piece solved ({unknown} not answered by IPOPT)"
+        return None, "failed", cert
+    value = best[0]
+    cert["value"] = {"least_slip_push": value, "strongest_push": -value,
+                     "max_sr": -value}[task["objective"]]
+    if cert["ok"]:
+        return best[1], "optimal", cert
+    cert["reason"] = ("pieces with an object sliding on the ground are not convex: a local "
+                      "optimum" if nonconvex else f"{unknown} pieces not answered by IPOPT")
+    return best[1], "local", cert

@@ -1,0 +1,81 @@
+"""``max_sr`` on a general scene where no fixed force acts (no object's own ground friction):
+the exact optimum with every link's set sticking (see :mod:`snakecg.scenes.optimize`)."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from .extremes import best_on_pieces, piece_faces, quadratics, whitening
+from .maps import state_maps
+from .optimize_task import MARGIN, contact_states, gauge
+from .solve import HELD, UNILATERAL
+
+__all__ = ["max_sr_exact", "scale_to_limits"]
+
+#: Dinkelbach's iteration stops when the ratio gains less than this (sr is in [0, 1]).
+SR_GAIN = 1e-14
+
+
+def scale_to_limits(p, roles, task, tau, lam_from_tau) -> float:
+    """The largest ``t`` with ``t tau`` inside the region and every link's set sticking (the
+    forces ``t lam_from_tau tau`` within their sets)."""
+    t = np.inf
+    if task["radius"] is not None:
+        t = min(t, task["radius"] / np.sqrt(max(tau @ p.N @ tau, 1e-300)))
+    if task["tau_max"] is not None:
+        big = np.abs(tau) > 0
+        t = min(t, float(np.min(task["tau_max"][big] / np.abs(tau[big]), initial=np.inf)))
+    lam = lam_from_tau @ tau
+    for b, ((role, zero), k, par) in enumerate(zip(roles, p.kind, p.par)):
+        if role != "contact" and not zero:
+            g = gauge(k, par, lam[p.start[b]:p.start[b] + 2])
+            if g > 0:
+                t = min(t, 1.0 / g)
+    return t
+
+
+def max_sr_exact(p, roles, task):
+    """``(tau, certificate)``: the largest sr with every link's set sticking, or ``(None,
+    certificate)`` when no torque moves an object."""
+    T = whitening(p)
+    states = contact_states(p, roles)
+    conds, forms, lams = [], [], []
+    for st in states:
+        mp = state_maps(p, st)
+        L, W = mp["lam_from_tau"] @ T, mp["w_from_tau"] @ T
+        rows = [L[p.start[b]] if code == HELD else W[p.start[b]]
+                for b, code in enumerate(st) if p.kind[b] == UNILATERAL]
+        C = np.array(rows).reshape(-1, p.n_a)
+        nrm = np.linalg.norm(C, axis=1)
+        C = C[nrm > 1e-14] / nrm[nrm > 1e-14, None]
+        conds.append(np.hstack([C, np.zeros((len(C), 1))]))  # homogeneous: a cone
+        forms.append(quadratics(p, mp, T, ()))
+        lams.append(mp["lam_from_tau"])
+    faces = piece_faces(conds, p.n_a)
+
+    def ratio(i, u):
+        Ao, Aq = forms[i]["norm_a_obj"][0], forms[i]["norm_qdd"][0]
+        om, D = u @ Ao @ u, u @ (Ao + Aq) @ u
+        return om / D if D > 1e-12 * (np.abs(Ao).max() + np.abs(Aq).max() + 1e-300) else 0.0
+
+    t, best, rounds = 0.0, None, 0
+    for rounds in range(1, 61):
+        comb = [tuple(f["norm_a_obj"][j] - t * (f["norm_a_obj"][j] + f["norm_qdd"][j])
+                      for j in range(3)) for f in forms]
+        _, u, i = best_on_pieces(conds, comb, faces, 1)
+        if u is None:
+            break
+        r = ratio(i, u)
+        if best is not None and not r > t + SR_GAIN:
+            break
+        t, best = max(r, t), (i, u)
+    cert = {"kind": "Dinkelbach on the KKT points of every contact state's cone (every "
+                    "link's set sticking)", "states": len(states), "rounds": rounds,
+            "ok": best is not None, "value": float(t)}
+    if best is None or not t > 0:
+        cert["reason"] = "no torque within the limits moves an object with every link sticking"
+        return None, cert
+    i, u = best
+    tau = T @ u
+    s = scale_to_limits(p, roles, task, tau, lams[i])
+    return tau * s * (1 - MARGIN), cert
