@@ -162,6 +162,11 @@ class SpatialSceneModel:
                  "object_distance": [scene.object_distance], "present": present,
                  "bounds": bounds, "friction": friction, "normal_row": normal_row,
                  "in_norm": in_norm}
+        #: The generated contact_system's scene inputs (snakecg.spatial.maps).
+        self.scene_inputs = {k: np.ravel(np.asarray(parts[k], dtype=float))
+                             for k in ("K", "contact_link", "side", "object_mass",
+                                       "object_inertia", "wheel_offset", "contact_offset",
+                                       "object_distance")}
         self._scene_vector = np.concatenate([np.ravel(np.asarray(parts[k], dtype=float))
                                              for k, _ in layout.scene_fields()])
         self.scene_address = self._scene_vector.ctypes.data
@@ -228,6 +233,32 @@ class SpatialSceneModel:
             raw[np.ix_(bad, range(cols.slices["tau"].start, cols.slices["tau"].stop))] = \
                 np.broadcast_to(arrays["tau"], (n, self.n_joints))[bad]
         return SpatialForwardResult(raw if batched else raw[0], cols)
+
+    def configurations(self, q):
+        """``(q as (N, n_q), batched)``, checked (a unit quaternion in entries 3..6)."""
+        qa, batched = as_batch("q", q, self.nq, what=(
+            f" = (joints + 7,) for a {self.n_joints}-joint spatial robot (x, y, z, qx, qy, "
+            "qz, qw, joint angles)"))
+        bad = np.abs(np.linalg.norm(qa[:, 3:7], axis=1) - 1.0) > 1e-9
+        if np.any(bad):
+            raise InputError(f"q's quaternion (entries 3..6) must have unit norm (to 1e-9); "
+                             f"sample {int(np.flatnonzero(bad)[0])} is not")
+        return qa, batched
+
+    def extremes(self, q, **kwargs):
+        """Best and worst ``norm_a_obj``, ``norm_qdd``, ``norm_lambda`` and ``sr`` over the
+        input ellipsoid of eq. (31) with the spatial ``M``; see
+        :func:`snakecg.spatial.queries.extremes`."""
+        from .queries import extremes
+
+        return extremes(self, q, **kwargs)
+
+    def optimize(self, q, objective="max_sr", **kwargs):
+        """The optimal joint torque for a task at configuration ``q`` (at rest); see
+        :func:`snakecg.spatial.optimal.optimize`."""
+        from .optimal import optimize
+
+        return optimize(self, q, objective, **kwargs)
 
     def __repr__(self) -> str:
         return f"<SpatialSceneModel of {self.scene!r}>"
