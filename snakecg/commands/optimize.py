@@ -122,6 +122,15 @@ def run(args) -> int:
 
     from ..errors import InputError
 
+    if getattr(args, "scene", None):  # a spatial scene file; any other is refused below
+        from ._common import general_scene_from_args
+
+        spatial = general_scene_from_args(args)
+        if spatial.__class__.__name__ == "SpatialScene":
+            from ..spatial.cli import optimize_command
+
+            _check_task(args, spatial.robot.n_links)
+            return optimize_command(args, spatial)
     scene = scene_from_args(args)
     na = scene.robot.joints
     # every option checked against the robot and the objective before the model is loaded
