@@ -26,7 +26,14 @@ cache in a fresh process; wall time and CPU time (the process and its compilers)
 operations of every generated function at 4, 8, 16 and 32 links, and the exponents
 ``log(size ratio) / log(2)`` of each doubling.
 
-Usage: ``python benchmarks/bench_spatial.py [--repeat 5] [--batch 1024] [--cold] [--growth]``.
+**Profile** (``--profile``): where the batched mass matrix's time goes: the generated C's
+size, the Python call's overhead per batch, and the C driver's parts timed by a harness
+compiled around the model's own generated file (the whole driver, the cosines and sines, the
+block kernel; the rest is the gather of the inputs and the scatter of the outputs, with the
+bytes written per configuration).
+
+Usage: ``python benchmarks/bench_spatial.py [--repeat 5] [--batch 1024] [--cold] [--growth]
+[--profile]``.
 """
 
 from __future__ import annotations
@@ -275,6 +282,110 @@ def mass_matrix_table(args) -> None:
           f"{best['python'] / critical:.1f}x on two threads by the slower one's CPU time)")
 
 
+_HARNESS = r"""
+#include <stdio.h>
+#include <stdlib.h>
+#include <time.h>
+#include "mass_matrix.c"
+static double now(void) { struct timespec t; clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+                          return t.tv_sec + 1e-9 * t.tv_nsec; }
+int main(void) {
+  const int N = 1024, NQ = @NQ@, NK = @NK@, NA = @NA@, R = 30;
+  double *Q = malloc(8 * N * NQ), *K = malloc(8 * NK), *M = malloc(8 * (size_t) N * @NV@ * @NV@);
+  double *in = malloc(8 * 16 * NQ), *cq = malloc(8 * 16 * NA), *sq = malloc(8 * 16 * NA);
+  double *out = malloc(8 * 16 * @NV@ * @NV@), best[3] = {1e9, 1e9, 1e9}, t;
+  int i, r, k, e;
+  for (i = 0; i < N * NQ; ++i) Q[i] = (rand() / (double) RAND_MAX - 0.5) * 6;
+  for (i = 0; i < NK; ++i) K[i] = rand() / (double) RAND_MAX;
+  for (i = 0; i < 16 * NQ; ++i) in[i] = Q[i];
+  const casadi_real* arg[2] = {Q, K};
+  casadi_int stride[2] = {NQ, 0};
+  casadi_real* res[1] = {M};
+  for (r = 0; r < R; ++r) {
+    t = now(); @PREFIX@batch_mass_matrix(N, arg, stride, res); t = now() - t;
+    if (t < best[0]) best[0] = t;
+    t = now();
+    for (k = 0; k < N / 16; ++k)
+      for (e = 0; e < NA; ++e) snakecg_sincos_block(Q + 16 * e + k, cq + 16 * e, sq + 16 * e);
+    t = now() - t;
+    if (t < best[1]) best[1] = t;
+    t = now();
+    for (k = 0; k < N / 16; ++k) @PREFIX@mass_matrix_sincos_block(in, K, cq, sq, out);
+    t = now() - t;
+    if (t < best[2]) best[2] = t;
+  }
+  printf("%.6e %.6e %.6e %g\n", best[0] / N, best[1] / N, best[2] / N, M[1] + out[1]);
+  return 0;
+}
+"""
+
+
+def profile_table(args) -> None:
+    """Where the time of the batched 16-link mass matrix goes: the generated code's size, the
+    Python call's overhead per batch, and the C driver's parts (a harness compiled here
+    around the model's own generated C file: the whole driver, the cosines and sines, the
+    block kernel; the rest is the gather of the inputs and the scatter of the outputs)."""
+    import json
+
+    import snakecg
+    from snakecg import kernels
+    from snakecg.native import empty_pointers, int64s, pointers
+
+    rng = np.random.default_rng(30)
+    r = robot(rng, N_LINKS)
+    model = snakecg.load(r)
+    Q = rng.uniform(-np.pi, np.pi, (args.batch, r.nq))
+    Q[:, 3:7] /= np.linalg.norm(Q[:, 3:7], axis=1, keepdims=True)
+    src = Path(model.folder) / "c" / "mass_matrix.c"
+    manifest = json.loads((Path(model.folder) / "manifest.json").read_text())
+    ops = next(f["operations"] for f in manifest["functions"] if f["name"] == "mass_matrix")
+    fn, K = model.backend._fns["mass_matrix"], model.parameters
+    argp, strides = empty_pointers(2), int64s(2)
+    argp[0], strides[0], argp[1], strides[1] = Q.ctypes.data, r.nq, K.ctypes.data, 0
+    out = np.empty((len(Q), r.nv, r.nv))
+    resp = pointers([out.ctypes.data])
+    best = {"python": np.inf, "call": np.inf, "raw": np.inf}
+    for _ in range(args.repeat * 4):
+        for key, run in (("python", lambda: model.mass_matrix(Q)),
+                         ("call", lambda: kernels.call(model.backend, "mass_matrix", len(Q),
+                                                       q=Q, K=K)),
+                         ("raw", lambda: fn(len(Q), argp, strides, resp))):
+            t = time.process_time()
+            run()
+            best[key] = min(best[key], (time.process_time() - t) / len(Q))
+    with tempfile.TemporaryDirectory() as tmp:
+        work = Path(tmp)
+        (work / "mass_matrix.c").write_bytes(src.read_bytes())
+        text = (_HARNESS.replace("@NQ@", str(r.nq)).replace("@NK@", str(len(K)))
+                .replace("@NA@", str(r.joints)).replace("@NV@", str(r.nv))
+                .replace("@PREFIX@", manifest["prefix"]))
+        (work / "harness.c").write_text(text)
+        cc = os.environ.get("CC", "cc")
+        print(f"compiling the C harness around {src.name} ({cc} -O2) ...", flush=True)
+        subprocess.run([cc, "-O2", "-I", str(work), str(work / "harness.c"), "-o",
+                        str(work / "harness"), "-lm"], check=True, capture_output=True)
+        driver, sincos, kernel = (float(x) for x in subprocess.run(
+            [str(work / "harness")], capture_output=True, text=True,
+            check=True).stdout.split()[:3])
+    written = 8 * r.nv * r.nv
+    print(f"\nprofile of the batched mass matrix, {N_LINKS} links, batches of {len(Q)} "
+          f"(CPU time per configuration, best of the rounds)")
+    print(f"  generated C of mass_matrix: {src.stat().st_size:,} bytes, {ops:,} CasADi "
+          f"operations per configuration")
+    print(f"  model.mass_matrix(Q)          {best['python'] * 1e9:8.0f} ns   (Python: "
+          f"{(best['python'] - best['raw']) * 1e9:.0f} ns of it, "
+          f"{(best['python'] - best['raw']) * len(Q) * 1e6:.1f} us per call)")
+    print(f"  kernels.call                  {best['call'] * 1e9:8.0f} ns")
+    print(f"  the C driver alone (ctypes)   {best['raw'] * 1e9:8.0f} ns")
+    print(f"  C harness: whole driver       {driver * 1e9:8.0f} ns")
+    print(f"    cosines and sines           {sincos * 1e9:8.0f} ns")
+    print(f"    block kernel ({ops:,} ops)   {kernel * 1e9:8.0f} ns   "
+          f"({ops / (kernel * 1e9):.1f} operations per ns)")
+    print(f"    gather + scatter + rest     {(driver - sincos - kernel) * 1e9:8.0f} ns   "
+          f"({written:,} bytes written per configuration: "
+          f"{written / max(driver - sincos - kernel, 1e-12) / 1e9:.1f} GB/s)")
+
+
 def cold_table() -> None:
     code = ("import snakecg, time\n"
             "t = time.time()\n"
@@ -327,10 +438,15 @@ def main() -> None:
     p.add_argument("--calls", type=int, default=20, help="batched calls per round")
     p.add_argument("--cold", action="store_true", help="also time a cold build")
     p.add_argument("--growth", action="store_true", help="also measure the code's growth")
+    p.add_argument("--profile", action="store_true",
+                   help="also profile the batched mass matrix (Python, gather/scatter, kernel)")
     args = p.parse_args()
     print(f"machine: {cpu_name()}, {os.cpu_count()} cores, load average "
           f"{os.getloadavg()[0]:.1f}")
     mass_matrix_table(args)
+    if args.profile:
+        profile_table(args)
+    print(f"load average at the end: {os.getloadavg()[0]:.1f}")
     if args.cold:
         cold_table()
     if args.growth:

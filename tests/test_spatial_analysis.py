@@ -52,7 +52,12 @@ def test_flat_yaw_chain_gives_the_planar_numbers(rng, scenario):
         assert _close(b.a_obj[i], a.a_obj[i], 1e-12)
     for k in ("norm_lambda", "norm_a_obj", "norm_qdd", "sr"):
         assert _close(getattr(b, k), getattr(a, k), 1e-12), k
-    assert _close(b.normal, np.outer(np.ones(40), 9.81 * np.array(planar.mass)), 1e-12)
+    # the weight on the ground, level: 2 n_l ground and pitch rows of which 2 n_l - 3 depend
+    # on the others (their least-norm forces), to 1e-11 of the sample's force scale
+    for i in range(40):
+        ground = max(scale[i], 9.81 * max(planar.mass))
+        assert _close(b.normal[i], 9.81 * np.array(planar.mass), 1e-11 * ground)
+        assert _close(b.pitch_moment[i], np.zeros(planar.n_links), 1e-11 * ground)
 
 
 def test_five_yaw_joints_give_the_planar_numbers(rng):
@@ -72,7 +77,8 @@ def test_five_yaw_joints_give_the_planar_numbers(rng):
     for k in ("norm_lambda", "norm_a_obj", "norm_qdd", "sr"):
         assert _close(getattr(b, k), getattr(a, k), 1e-12), k
     assert np.array_equal(a.wheel_state, b.wheel_state)
-    assert _close(b.normal, np.full((30, 6), 9.81), 1e-12)
+    for i in range(30):
+        assert _close(b.normal[i], np.full(6, 9.81), 1e-11 * max(scale[i], 9.81))
 
 
 def _enumerate(ref, sc, scenario, wheels, mu, nl):
@@ -82,7 +88,7 @@ def _enumerate(ref, sc, scenario, wheels, mu, nl):
     where N_i is not positive)."""
     G, b = ref["delassus"], ref["b"]
     nc = G.shape[0]
-    ground = list(range(nl + 1, 2 * nl + 1))
+    ground = list(range(nl + 1, 3 * nl + 1))  # the ground and pitch rows
     # "free": a wheel of a link whose normal force is not positive (no friction: force 0)
     wheel_choices = [("stick",) if scenario == "ideal_wheels" else
                      ("stick", "slide+", "slide-", "free") for _ in wheels]
@@ -108,7 +114,7 @@ def _enumerate(ref, sc, scenario, wheels, mu, nl):
             w = G @ lam + b
             scale = max(1.0, np.abs(lam).max())
             tol = 1e-9 * scale
-            N = lam[nl + 1:]
+            N = lam[nl + 1:2 * nl + 1]
             ok = np.abs(w[held]).max() <= 1e-9 * max(1.0, np.abs(b).max())
             ok &= (lam[0] >= -tol) if contact == "held" else (w[0] >= -tol and lam[0] == 0)
             for r, s in zip(wheels, ws):
@@ -128,7 +134,7 @@ def _enumerate(ref, sc, scenario, wheels, mu, nl):
 
 def _kkt_report(lam, ref, nl, mu):  # pragma: no cover - a failure's diagnosis
     w = ref["delassus"] @ lam + ref["b"]
-    return {"lam": lam, "w": w, "bounds": mu * lam[nl + 1:]}
+    return {"lam": lam, "w": w, "bounds": mu * lam[nl + 1:2 * nl + 1]}
 
 
 @pytest.mark.parametrize("scenario", SCENARIOS)
@@ -248,3 +254,58 @@ def test_runtime_core_is_strict_c99_with_a_spatial_layout(tmp_path):
                               str(ENGINE_DIR / name), "-o", str(tmp_path / "core.o")],
                              capture_output=True, text=True, timeout=600)
         assert res.returncode == 0, f"{name}:\n{res.stderr[-3000:]}"
+
+
+@pytest.mark.parametrize("scenario", SCENARIOS)
+def test_each_link_lies_on_its_line(rng, scenario):
+    """A lying link is held along its axis (height and slope), not at one point: on a
+    yaw-pitch snake, a two-link pitch snake and a two-link yaw snake with a product of inertia
+    lying flat, with random torques (pitch torques
+    among them) and planar velocities, the vertical acceleration of both ends of every link's
+    axis (Pinocchio's classical acceleration at the engine's qdd) is zero, and the ground's
+    forces carry the weight (Newton's law on the whole chain, Pinocchio's COM acceleration)."""
+    from test_spatial_references import pinocchio_chain
+
+    pin = pytest.importorskip("pinocchio")
+    robots = (snakecg.SpatialRobot(joints=3),
+              # one pitch joint: held on two COMs alone, the links would seesaw
+              snakecg.SpatialRobot(joints=1, joint_axis=(0, 1, 0)),
+              # a product of inertia: turning in yaw needs a moment about the link's axis
+              snakecg.SpatialRobot(joints=1, joint_axis=(0, 0, 1),
+                                   inertia=(0.0004, 0.002, 0.002, 0.0, 0.0005, 0.0)))
+    for robot in robots:
+        model = snakecg.load(snakecg.SpatialScene(robot, scenario=scenario, mu=0.3,
+                                                  contact_link=robot.n_links))
+        pm = pinocchio_chain(robot)
+        pd = pm.createData()
+        yaw = np.array([np.allclose(a, (0, 0, 1)) for a in robot.joint_axis])
+        for _ in range(6):
+            q = robot.neutral()
+            q[:2] = rng.normal(size=2)
+            th = rng.uniform(-3, 3)
+            q[3:7] = (0, 0, np.sin(th / 2), np.cos(th / 2))
+            q[7:] = np.where(yaw, rng.uniform(-1.2, 1.2, robot.joints), 0.0)
+            v = np.zeros(robot.nv)
+            v[[0, 1, 5]] = rng.normal(size=3) * 0.5
+            v[6:] = np.where(yaw, rng.normal(size=robot.joints), 0.0)
+            tau = rng.normal(size=robot.joints)
+            res = model.forward(q, tau, v=v)
+            assert not res.singular, res.reason
+            pin.forwardKinematics(pm, pd, q, v, res.qdd)
+            for i in range(robot.n_links):
+                frame = pin.SE3(np.eye(3), np.zeros(3))
+                for end in (0.0, 0.15):  # the link's axis from its rear joint to its front
+                    frame.translation = np.array([end, 0.0, 0.0])
+                    jid = i + 1
+                    placed = pd.oMi[jid]
+                    a = pin.getClassicalAcceleration(pm, pd, jid,
+                                                     pin.ReferenceFrame.LOCAL_WORLD_ALIGNED)
+                    vel = pin.getVelocity(pm, pd, jid, pin.ReferenceFrame.LOCAL_WORLD_ALIGNED)
+                    r = placed.rotation @ frame.translation
+                    acc = a.linear + np.cross(a.angular, r) + np.cross(
+                        vel.angular, np.cross(vel.angular, r))
+                    assert abs(acc[2]) <= 1e-9 * max(1.0, np.abs(res.qdd).max()), (i, end)
+            pin.centerOfMass(pm, pd, q, v, res.qdd)
+            weight = 9.81 * robot.total_mass
+            assert abs(res.normal.sum() - weight - robot.total_mass * pd.acom[0][2]) \
+                <= 1e-9 * weight

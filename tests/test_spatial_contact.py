@@ -117,6 +117,12 @@ def _reference(robot, q, v, tau, q_obj, v_obj, f_obj, rho, sc):
         _, Jp, vp, ap = point(i, np.array(robot.com[i]))
         rows.append(np.r_[Jp[2], 0, 0, 0])
         adot.append(ap[2])
+    for i in range(nl):  # pitch: half the difference of the Gauss points' vertical velocities
+        L = np.linalg.norm(robot.joint_xyz[min(i, nl - 2)])
+        d = L / (2 * np.sqrt(3)) * np.array([1.0, 0, 0])
+        ends = [point(i, np.array(robot.com[i]) + sgn * d) for sgn in (1, -1)]
+        rows.append(np.r_[(ends[0][1][2] - ends[1][1][2]) / 2, 0, 0, 0])
+        adot.append((ends[0][3][2] - ends[1][3][2]) / 2)
     A = np.array(rows)
     A_s, A_o = A[:, :nv], A[:, nv:]
     I_obj = np.array([sc["object_mass"], sc["object_mass"], sc["object_inertia"]])
@@ -190,8 +196,8 @@ def _embed(planar, qs, vs):
 def test_flat_yaw_chain_is_the_planar_problem(rng, velocities):
     """Case study 2's robot with its joints turned to yaw, lying flat: the contact and wheel
     rows' G_c and b, the maps of their forces, M, the gap and s are the planar model's
-    (to 1e-12); the ground rows are uncoupled from them and their accelerations at zero force
-    are free fall (-g)."""
+    (to 1e-12); the ground and pitch rows are uncoupled from them and their accelerations at
+    zero force are free fall (-g, no pitch)."""
     planar = snakecg.Robot(joints=3)
     scene = snakecg.Scene(robot=planar, scenario="ideal_wheels")
     pm = snakecg.load(scene)
@@ -218,7 +224,9 @@ def test_flat_yaw_chain_is_the_planar_problem(rng, velocities):
         assert rel(G[:nc, :nc], po["delassus"]) <= 1e-12
         assert rel(b[:nc], po["b"].ravel()) <= 1e-12
         assert np.abs(G[:nc, nc:]).max() <= 1e-14 * np.abs(G).max()
-        assert np.abs(b[nc:] + 9.81).max() <= 1e-12 * 9.81
+        nl = planar.n_links
+        assert np.abs(b[nc:nc + nl] + 9.81).max() <= 1e-12 * 9.81  # the ground rows fall
+        assert np.abs(b[nc + nl:]).max() <= 1e-12 * 9.81  # the links fall without pitching
         assert rel(E.T @ so["M"] @ E, po["M"]) <= 1e-12
         assert rel(so["qdd_from_lam"][:, :nc], E @ po["qdd_from_lam"]) <= 1e-12
         assert rel(so["a_obj_from_lam"][:, :nc], po["a_obj_from_lam"]) <= 1e-12
@@ -284,6 +292,12 @@ def test_contact_system_at_rest_against_mujoco(rng):
         for i in range(nl):
             jp, _, _, _ = jac(i, np.array(robot.com[i]))
             rows.append(np.r_[jp[2], 0, 0, 0])
+        for i in range(nl):  # pitch: the Gauss points' vertical velocities, half difference
+            L = np.linalg.norm(robot.joint_xyz[min(i, nl - 2)])
+            off = np.array([L / (2 * np.sqrt(3)), 0, 0])
+            jf, _, _, _ = jac(i, np.array(robot.com[i]) + off)
+            jb, _, _, _ = jac(i, np.array(robot.com[i]) - off)
+            rows.append(np.r_[(jf[2] - jb[2]) / 2, 0, 0, 0])
         A = np.array(rows)
         A_s, A_o = A[:, :nv], A[:, nv:]
         I_obj = np.array([sc["object_mass"], sc["object_mass"], sc["object_inertia"]])

@@ -210,3 +210,19 @@ def test_against_mujoco(rng, n_links):
 def test_long_chains_against_pinocchio_and_mujoco(rng, n_links):
     _check_against_pinocchio(rng, n_links)
     _check_against_mujoco(rng, n_links)
+
+
+def test_full_blocks_against_pinocchio(rng):
+    """Batches of two full blocks of 16 and a partial one (the block drivers' transposing
+    scatter and its one-by-one tail): every sample's M and h equal Pinocchio's crba and rnea
+    (1e-12)."""
+    robot = random_robot(rng, 5)
+    sm = snakecg.load(robot)
+    model = pinocchio_chain(robot)
+    data = model.createData()
+    q, v = _states(rng, robot, model, 37)
+    M, h = sm.mass_matrix(q), sm.bias_forces(q, v)
+    for k in range(len(q)):
+        Mp = pin.crba(model, data, q[k])
+        assert rel(M[k], np.triu(Mp) + np.triu(Mp, 1).T) <= TOL, k
+        assert rel(h[k], pin.rnea(model, data, q[k], v[k], np.zeros(model.nv))) <= TOL, k

@@ -11,7 +11,7 @@ nothing here is rendered into text and run.
 The ground is the plane ``z = 0`` (world ``z`` up); the object lies on it and moves in it
 (pose ``q_obj = (x, y, psi)``, twist ``(vx, vy, omega_z)``, inertia ``diag(m, m, I_zz)``).
 Each link's *heading* is its frame's ``x`` axis projected on the ground, ``e``, and its edge
-runs along ``e`` from the frame origin. Rows, in order (``n_c = 2 n_l + 1``):
+runs along ``e`` from the frame origin. Rows, in order (``n_c = 3 n_l + 1``):
 
 * row 0, the **contact**: the gap ``g = n . (P - o_k)`` of the object's point ``P`` (``rho``
   in the object frame) from the edge of link ``k`` (one-hot ``contact_link``), ``n = side
@@ -20,7 +20,19 @@ runs along ``e`` from the frame origin. Rows, in order (``n_c = 2 n_l + 1``):
 * rows ``1..n_l``, the **wheels**: the velocity of the link's point ``c_i + wheel_offset_i
   x_i`` (``c_i`` its COM, ``x_i`` its frame's x axis) along the lateral direction ``(-e_y, e_x, 0)``;
 * rows ``n_l + 1..2 n_l``, the **ground**: the vertical velocity of each link's COM
-  (bilateral: the snake stays on the ground).
+  (bilateral: the snake stays on the ground); the row's force is the link's normal force;
+* rows ``2 n_l + 1..3 n_l``, the link's **pitch** on the ground: ``d_i (w_i x x_i)_z``, the
+  rate of the height of the link's axis ``x_i`` scaled by ``d_i = L_i / (2 sqrt 3)`` (``L_i``
+  the link's length: the distance to its next joint, the last link's that of the one before).
+
+The ground and pitch rows of a link are its lying capsule's line contact: the bottom line of
+the link along its axis through the COM, held on the ground (its height and its slope), free
+to roll about its own axis, as a cylinder on a flat floor is. With both rows at the same
+scale they are the half sum and half difference of the vertical velocities at the two Gauss
+points ``c_i +- d_i x_i``: the least-norm forces of the rows (the solve's choice where rows
+depend on each other) are then those of a uniformly stiff ground along equally long links
+(two-point Gauss quadrature is exact for the line's linear load), and the ground row's force
+is the sum of the two, the link's normal force.
 
 Every row is ``A(q, q_obj) (v, v_obj)``; its ``Adot v`` is the derivative of ``A`` along the
 motion, ``d/dq (A V) G(q) v + d/dq_obj (A V) v_obj`` with ``qdot = G(q) v`` (the kinematic
@@ -50,6 +62,15 @@ def _link_com(K, s: SpatialSymbols, i: int):
     """COM of link ``i`` (from 0) in its frame: ``K``'s ``link_com`` block."""
     nl = s.n_links
     return K[nl + 3 * i: nl + 3 * i + 3]
+
+
+def _support_offset(K, s: SpatialSymbols, i: int):
+    """``d_i = L_i / (2 sqrt 3)``: the Gauss points' distance from the COM along the link
+    (``L_i = |joint_xyz|`` of the link's next joint; the last link: of the joint before)."""
+    nl = s.n_links
+    j = min(i, nl - 2)
+    t = K[10 * nl + 3 * j: 10 * nl + 3 * j + 3]
+    return ca.sqrt(ca.dot(t, t)) / (2 * 3 ** 0.5)
 
 
 def _heading(R):
@@ -107,6 +128,9 @@ def _rows(fn, s: SpatialSymbols, q, K, q_obj, rho, sc):
     for i in range(nl):  # the ground
         _, vel, _, _ = point(i, _link_com(K, s, i))
         rows.append(vel[2])
+    for i in range(nl):  # the pitch of each link's axis on the ground
+        _, _, R, w = point(i, _link_com(K, s, i))
+        rows.append(_support_offset(K, s, i) * ca.cross(w, R[:, 0])[2])
     Vall = ca.vertcat(V, Vo)
     A = ca.jacobian(ca.vertcat(*rows), Vall)  # the rows are linear in the velocities
     return A, gap, s_along
@@ -202,6 +226,7 @@ CONTACT_DOCS = {
                       "b = A I^-1 (f - p) + Adot v (eq. 13), the accelerations without "
                       "constraint forces and the maps of the forces into them (eq. 18), the "
                       "gap and s. Rows: contact, a lateral wheel row per link, a ground row "
-                      "per link.",
+                      "per link (its normal force), a pitch row per link (its axis's slope on "
+                      "the ground).",
     "contact_system_at_rest": "contact_system at rest (v = 0, v_obj = 0).",
 }

@@ -176,8 +176,10 @@ def add_robot_args(p, *, scene: bool = True) -> None:
     if scene:
         p.add_argument("--scene", metavar="FILE", type=text("a scene file"),
                        help="general scene file (TOML: [robot], [ground], [[object]], "
-                       "[[obstacle]]; see docs/how-to/scenes.md): forward, optimize and plot "
-                       "take it")
+                       "[[obstacle]]; see docs/how-to/scenes.md): forward, optimize, simulate "
+                       "and plot take it; or a 3-D snake's ([robot] with joint_axis or a "
+                       "URDF/MJCF file, [scene]; docs/how-to/spatial.md): forward, optimize "
+                       "and plot")
         p.add_argument("--scenario", choices=SCENARIOS, type=lambda s: s.replace("-", "_"),
                        help="ground scenario (default frictionless)")
         p.add_argument("--kappa", type=float, help="object mass / mean link mass (default 100)")
@@ -227,6 +229,11 @@ def general_scene_from_args(args):
              if getattr(args, k, None) is not None]
     if given:
         raise InputError(f"--scene FILE describes the whole scene; drop {', '.join(given)}")
+    from ..spatial.scene_file import is_spatial_scene_data, read_spatial_scene
+    from ..toml_file import read_toml
+
+    if is_spatial_scene_data(read_toml(path)):  # a 3-D snake (snakecg.spatial)
+        return read_spatial_scene(path)
     from ..scenes.toml_reading import read_scene
 
     return read_scene(path)

@@ -50,6 +50,10 @@ def run(args) -> int:
     from ._common import general_scene_from_args
 
     general = general_scene_from_args(args)
+    if general is not None and general.__class__.__name__ == "SpatialScene":
+        from ..spatial.cli import forward_command
+
+        return forward_command(args, general, SCHEMA)
     if general is not None:  # a general scene (snakecg.scenes)
         from ._scene import forward_command
 

@@ -155,6 +155,11 @@ def run(args) -> int:
     from ._common import general_scene_from_args
 
     general = general_scene_from_args(args)
+    if general is not None and general.__class__.__name__ == "SpatialScene":  # a 3-D snake
+        from ..spatial.cli import optimize_command as spatial_optimize
+
+        _check_task(args, general.robot.n_links)
+        return spatial_optimize(args, general)
     if general is not None:  # a general scene (snakecg.scenes)
         from ._scene import optimize_command
 

@@ -61,6 +61,10 @@ def run(args) -> int:
     from ._common import general_scene_from_args
 
     scene = general_scene_from_args(args)
+    if scene is not None and scene.__class__.__name__ == "SpatialScene":
+        from ..spatial.cli import plot_command
+
+        return plot_command(args, scene, out, fmt)
     if scene is not None:  # a general scene (snakecg.scenes): its vectors checked first
         from ._scene import _vectors
 

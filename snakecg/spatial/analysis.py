@@ -3,10 +3,14 @@
 ``snakecg.load(SpatialScene(...))`` gives a :class:`SpatialSceneModel`; its :meth:`forward`
 runs the runtime core's complementarity solve (snakecg/engine/forward.c, the planar models'
 own) on the generated spatial ``contact_system``: one C call per batch, split over threads
-when large. Rows: the contact (row 0), a lateral wheel row per link (rows ``1..n_l``) and a
-ground row per link (rows ``n_l + 1..2 n_l``). The ground rows always hold (bilateral); where
-they depend on each other (a chain stiffer than its supports: a chain of yaw joints on more
-than three links), their forces are the least-norm ones, the limit of equally stiff supports.
+when large. Rows: the contact (row 0), a lateral wheel row per link (rows ``1..n_l``), a
+ground row per link (rows ``n_l + 1..2 n_l``, its force the link's normal force) and a pitch
+row per link (rows ``2 n_l + 1..3 n_l``): each link lies on the ground along its axis, held
+in height and slope and free to roll about its axis, as a capsule on a flat floor (see
+snakecg_derive.spatial.contact). The ground and pitch rows always hold (bilateral); where
+they depend on each other (a chain stiffer than its supports: any chain of more than one
+link lying flat), their forces are the least-norm ones, the limit of a uniformly stiff
+ground along the links.
 In scenario 2 each wheel's bound is ``mu`` times its link's solved normal force (none where
 that force is negative), found by iterating the solve on the bounds to a fixed point.
 
@@ -39,21 +43,38 @@ NO_ANSWER = ("the compiled solve did not answer this sample exactly (held rows d
              "beyond the ground's support, no convergence of the active set or of the "
              "friction bounds, an ill-conditioned mass matrix, or an impossible result); its "
              "results are NaN")
-_ORDER = ("tau", "qdd", "a_obj", "lam", "normal", "w", "contact", "wheel_state",
+_ORDER = ("tau", "qdd", "a_obj", "lam", "normal", "pitch_moment", "w", "contact", "wheel_state",
           "norm_lambda", "norm_a_obj", "norm_qdd", "sr", "singular", "conditioning")
+
+
+class _SpatialColumns(_Columns):
+    """The columns of a spatial result, with each link's Gauss-point offset."""
+
+    __slots__ = ("support_offset",)
+
+
+def support_offsets(robot) -> np.ndarray:
+    """``d_i = L_i / (2 sqrt 3)`` per link: the Gauss points of the link's line on the ground
+    from its COM (``L_i`` the distance to its next joint; the last link's, to the joint
+    before), as in the generated pitch rows."""
+    xyz = np.asarray(robot.joint_xyz, dtype=float)
+    idx = np.minimum(np.arange(robot.n_links), robot.joints - 1)
+    return np.linalg.norm(xyz[idx], axis=1) / (2 * math.sqrt(3))
 
 
 class SpatialForwardResult(ForwardResult):
     """:class:`snakecg.ForwardResult` of a spatial scene: ``qdd`` has ``n_v`` entries (the
-    base twist's rate in the base frame, then the joints'), ``lam`` the ``2 n_l + 1`` rows'
-    forces (contact, wheels, ground), ``normal`` the ground rows' forces (N, up),
+    base twist's rate in the base frame, then the joints'), ``lam`` the
+    ``3 n_l + 1`` rows' forces (contact, wheels, ground, pitch), ``normal`` the links' normal
+    forces (N, up), ``pitch_moment`` the pitch rows' (N m, about each link's horizontal
+    normal at its COM),
     ``wheel_state`` the ``n_l`` wheels'. A sample the solve cannot answer exactly is NaN with
     ``singular`` set and its ``reason``."""
 
     __slots__ = ()
 
     def _n_links(self):
-        return (self._cols.slices["lam"].stop - self._cols.slices["lam"].start - 1) // 2
+        return (self._cols.slices["lam"].stop - self._cols.slices["lam"].start - 1) // 3
 
     @property
     def wheel_state(self) -> np.ndarray:
@@ -64,7 +85,15 @@ class SpatialForwardResult(ForwardResult):
     @property
     def normal(self) -> np.ndarray:
         nl = self._n_links()
-        return self.lam[..., 1 + nl:]
+        return self.lam[..., 1 + nl:1 + 2 * nl]
+
+    @property
+    def pitch_moment(self) -> np.ndarray:
+        """The ground's moment on each link about its COM (N m), about the horizontal axis
+        ``e_z x x_i`` (the link's left): ``-d_i`` times the pitch row's force, ``d_i`` the
+        Gauss points' offset (the row's force is the front point's force less the rear's)."""
+        nl = self._n_links()
+        return -self._cols.support_offset * self.lam[..., 1 + 2 * nl:]
 
     @property
     def reason(self):
@@ -109,9 +138,10 @@ class SpatialSceneModel:
         nl = rm.n_links
         self.n_joints, self.n_links, self.nq, self.nv = rm.n_joints, nl, rm.nq, rm.nv
         self.n_coordinates = self.nv
-        self.n_constraints = nc = 2 * nl + 1
+        self.n_constraints = nc = 3 * nl + 1
         layout = self.core.layout
-        self.columns = _Columns(layout)
+        self.columns = _SpatialColumns(layout)
+        self.columns.support_offset = support_offsets(scene.robot)
         onehot = np.zeros(nl)
         onehot[scene.contact_link - 1] = 1.0
         present = np.zeros(nc)
@@ -124,7 +154,7 @@ class SpatialSceneModel:
                 if scene.scenario == "wheels":
                     friction[i], normal_row[i] = scene.mu, nl + i
         present[nl + 1:] = 2.0  # SUPPORT: held always, may depend on the others
-        in_norm = np.r_[np.ones(nl + 1), np.zeros(nl)]
+        in_norm = np.r_[np.ones(nl + 1), np.zeros(2 * nl)]
         self.present, self.bounds = present, bounds
         parts = {"K": rm.parameters, "contact_link": onehot, "side": [scene.side_sign],
                  "object_mass": [scene.object_mass], "object_inertia": [scene.object_inertia],
@@ -132,6 +162,11 @@ class SpatialSceneModel:
                  "object_distance": [scene.object_distance], "present": present,
                  "bounds": bounds, "friction": friction, "normal_row": normal_row,
                  "in_norm": in_norm}
+        #: The generated contact_system's scene inputs (snakecg.spatial.maps).
+        self.scene_inputs = {k: np.ravel(np.asarray(parts[k], dtype=float))
+                             for k in ("K", "contact_link", "side", "object_mass",
+                                       "object_inertia", "wheel_offset", "contact_offset",
+                                       "object_distance")}
         self._scene_vector = np.concatenate([np.ravel(np.asarray(parts[k], dtype=float))
                                              for k, _ in layout.scene_fields()])
         self.scene_address = self._scene_vector.ctypes.data
@@ -198,6 +233,32 @@ class SpatialSceneModel:
             raw[np.ix_(bad, range(cols.slices["tau"].start, cols.slices["tau"].stop))] = \
                 np.broadcast_to(arrays["tau"], (n, self.n_joints))[bad]
         return SpatialForwardResult(raw if batched else raw[0], cols)
+
+    def configurations(self, q):
+        """``(q as (N, n_q), batched)``, checked (a unit quaternion in entries 3..6)."""
+        qa, batched = as_batch("q", q, self.nq, what=(
+            f" = (joints + 7,) for a {self.n_joints}-joint spatial robot (x, y, z, qx, qy, "
+            "qz, qw, joint angles)"))
+        bad = np.abs(np.linalg.norm(qa[:, 3:7], axis=1) - 1.0) > 1e-9
+        if np.any(bad):
+            raise InputError(f"q's quaternion (entries 3..6) must have unit norm (to 1e-9); "
+                             f"sample {int(np.flatnonzero(bad)[0])} is not")
+        return qa, batched
+
+    def extremes(self, q, **kwargs):
+        """Best and worst ``norm_a_obj``, ``norm_qdd``, ``norm_lambda`` and ``sr`` over the
+        input ellipsoid of eq. (31) with the spatial ``M``; see
+        :func:`snakecg.spatial.queries.extremes`."""
+        from .queries import extremes
+
+        return extremes(self, q, **kwargs)
+
+    def optimize(self, q, objective="max_sr", **kwargs):
+        """The optimal joint torque for a task at configuration ``q`` (at rest); see
+        :func:`snakecg.spatial.optimal.optimize`."""
+        from .optimal import optimize
+
+        return optimize(self, q, objective, **kwargs)
 
     def __repr__(self) -> str:
         return f"<SpatialSceneModel of {self.scene!r}>"

@@ -145,9 +145,9 @@ CORE_FILES = ("contact.c", "forward.c", "engine.h", "linalg.h")
 
 def core_manifest(manifest: dict) -> dict:
     """The spatial manifest in the runtime core's terms (snakecg/engine/layout.py): ``n_s`` is
-    ``n_v``, the rows are the contact, a wheel and a ground row per link."""
+    ``n_v``, the rows are the contact, a wheel, a ground and a pitch row per link."""
     return {**manifest, "n_coordinates": manifest["nv"],
-            "n_constraints": 2 * manifest["n_links"] + 1}
+            "n_constraints": 3 * manifest["n_links"] + 1}
 
 
 def _core_sources(manifest: dict) -> tuple[dict[str, bytes], str]:

@@ -51,7 +51,8 @@ class SpatialScene:
     * ``wheel_links``: links with a passive wheel (default: every link but the contacting
       one); ``wheel_offset``: the wheel's place from the link's COM along its x axis.
 
-    Every link is held on the ground by a bilateral row at its COM (see docs/how-to/spatial.md).
+    Every link lies on the ground along its axis: bilateral rows hold its height at the COM
+    and its axis's slope, and leave it free to roll about its axis (see docs/how-to/spatial.md).
     """
 
     robot: SpatialRobot

@@ -3155,6 +3155,64 @@ static const short snakecg_sp3_mass_matrix_sincos_block_entry[81] = {
     29, 30, 31, 32, 33, 34, 35, 43, 36, 37, 38, 39, 40, 41, 42, 43,
     44
 };
+/* The scatter of one output of a block to the batch layout: entry e of sample i, at
+ * x[src[e] * 16 + i] in the block (src null: at x[e * 16 + i]), to y[i * nnz + e], m samples.
+ * A full block goes 4 entries by 4 samples at a time, transposed in vector registers and
+ * stored 4 entries at once (an AVX2 copy chosen at load time), the rest one by one. */
+#include <string.h>
+#if defined(__GNUC__) && !defined(__clang__) && __GNUC__ >= 11 && defined(__x86_64__) \
+    && defined(__linux__)
+typedef casadi_real snakecg_sp3_mass_matrix_sincos_block_v4 __attribute__((vector_size(32)));
+typedef long long snakecg_sp3_mass_matrix_sincos_block_i4 __attribute__((vector_size(32)));
+__attribute__((target_clones("arch=x86-64-v3", "default")))
+static void snakecg_sp3_mass_matrix_sincos_block_scatter(const casadi_real* x, const short* src, casadi_int nnz,
+    casadi_real* y, casadi_int m) {
+  casadi_int e = 0, i;
+  const snakecg_sp3_mass_matrix_sincos_block_i4 lo = {0, 4, 2, 6}, hi = {1, 5, 3, 7};
+  const snakecg_sp3_mass_matrix_sincos_block_i4 first = {0, 1, 4, 5}, second = {2, 3, 6, 7};
+  if (m == 16) {
+    for (; e + 4 <= nnz; e += 4) {
+      const casadi_real* x0 = x + (src ? src[e] : e) * 16;
+      const casadi_real* x1 = x + (src ? src[e + 1] : e + 1) * 16;
+      const casadi_real* x2 = x + (src ? src[e + 2] : e + 2) * 16;
+      const casadi_real* x3 = x + (src ? src[e + 3] : e + 3) * 16;
+      for (i = 0; i < 16; i += 4) {
+        snakecg_sp3_mass_matrix_sincos_block_v4 a, b, c, d, t0, t1, t2, t3, r;
+        memcpy(&a, x0 + i, sizeof a);
+        memcpy(&b, x1 + i, sizeof b);
+        memcpy(&c, x2 + i, sizeof c);
+        memcpy(&d, x3 + i, sizeof d);
+        t0 = __builtin_shuffle(a, b, lo); /* (a0 b0 a2 b2) */
+        t1 = __builtin_shuffle(a, b, hi); /* (a1 b1 a3 b3) */
+        t2 = __builtin_shuffle(c, d, lo);
+        t3 = __builtin_shuffle(c, d, hi);
+        r = __builtin_shuffle(t0, t2, first); /* sample i: (a0 b0 c0 d0) */
+        memcpy(y + i * nnz + e, &r, sizeof r);
+        r = __builtin_shuffle(t1, t3, first);
+        memcpy(y + (i + 1) * nnz + e, &r, sizeof r);
+        r = __builtin_shuffle(t0, t2, second);
+        memcpy(y + (i + 2) * nnz + e, &r, sizeof r);
+        r = __builtin_shuffle(t1, t3, second);
+        memcpy(y + (i + 3) * nnz + e, &r, sizeof r);
+      }
+    }
+  }
+  for (; e < nnz; ++e) {
+    const casadi_real* x0 = x + (src ? src[e] : e) * 16;
+    for (i = 0; i < m; ++i) y[i * nnz + e] = x0[i];
+  }
+}
+#else
+static void snakecg_sp3_mass_matrix_sincos_block_scatter(const casadi_real* x, const short* src, casadi_int nnz,
+    casadi_real* y, casadi_int m) {
+  casadi_int e, i;
+  for (e = 0; e < nnz; ++e) {
+    const casadi_real* x0 = x + (src ? src[e] : e) * 16;
+    for (i = 0; i < m; ++i) y[i * nnz + e] = x0[i];
+  }
+}
+#endif
+
 CASADI_SYMBOL_EXPORT int snakecg_sp3_batch_mass_matrix(casadi_int n, const casadi_real** arg,
     const casadi_int* stride, casadi_real** res) {
   casadi_real *work, *cq, *sq;
@@ -3186,14 +3244,10 @@ CASADI_SYMBOL_EXPORT int snakecg_sp3_batch_mass_matrix(casadi_int n, const casad
       if (large) snakecg_sincos_large(x, cq + e * 16, sq + e * 16, 16);
     }
     snakecg_sp3_mass_matrix_sincos_block(in0, arg[1], cq, sq, out0);
-    /* scatter: entry by entry, the samples of the block innermost (contiguous reads);
-     * the kernel gives the upper triangle of the symmetric output M, the table
-     * snakecg_sp3_mass_matrix_sincos_block_entry maps each entry to its place in the triangle */
-    for (e = 0; e < 81; ++e) {
-      const casadi_real* x = out0 + snakecg_sp3_mass_matrix_sincos_block_entry[e] * 16;
-      casadi_real* y = res[0] + i0 * 81 + e;
-      for (i = 0; i < m; ++i) y[i * 81] = x[i];
-    }
+    /* scatter: the block's outputs to the batch layout; the kernel gives the
+     * upper triangle of the symmetric output M, the table snakecg_sp3_mass_matrix_sincos_block_entry maps
+     * each entry to its place in the triangle */
+    snakecg_sp3_mass_matrix_sincos_block_scatter(out0, snakecg_sp3_mass_matrix_sincos_block_entry, 81, res[0] + i0 * 81, m);
   }
   free(work);
   return 0;
