@@ -79,7 +79,7 @@ class NumpyInteraction:
         self.M_rot = np.einsum("i,ik,il->kl", self.I, dphi, dphi)
 
     def __call__(self, q, tau, max_iter=30):
-        N, nl, ns, nc = len(q), self.nl, self.ns, self.nc
+        N, _nl, ns, nc = len(q), self.nl, self.ns, self.nc
         phi = q[:, 2:3] + np.concatenate([np.zeros((N, 1)), np.cumsum(q[:, 3:], axis=1)], 1)
         e = np.stack([np.cos(phi), np.sin(phi)], axis=-1)  # (N, nl, 2)
         perp = np.stack([-e[..., 1], e[..., 0]], axis=-1)

@@ -267,7 +267,7 @@ def mass_matrix_table(args) -> None:
     print(f"{'snakecg batched (1 thread)':34}{best['snakecg'] * 1e9:10.0f}{'':>12}")
     print(f"{f'snakecg batched ({os.cpu_count()} threads, wall)':34}{wall * 1e9:10.0f}"
           f"{best['snakecg'] / wall:11.1f}x")
-    print(f"{f'  the same, CPU of all threads':34}{cpu_all * 1e9:10.0f}"
+    print(f"{'  the same, CPU of all threads':34}{cpu_all * 1e9:10.0f}"
           f"   (wall x threads / CPU: {wall * (os.cpu_count() or 1) / cpu_all:.2f}; above 1: "
           "the cores were shared)")
     print(f"{'snakecg batched (2 threads, critical)':34}{critical * 1e9:10.0f}"
@@ -417,7 +417,7 @@ def growth_table() -> None:
                   if f["name"] == "mass_matrix")
         rows[n] = (c_bytes, ops, mm, time.perf_counter() - t)
         print(f"  rendered {n} links in {rows[n][3]:.1f} s", flush=True)
-    print(f"\ngenerated code by link count (exponent of each doubling)")
+    print("\ngenerated code by link count (exponent of each doubling)")
     print(f"{'links':>6}{'C bytes':>12}{'exp':>6}{'operations':>12}{'exp':>6}"
           f"{'M ops':>9}{'exp':>6}")
     prev = None

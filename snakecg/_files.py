@@ -14,7 +14,7 @@ import tempfile
 from collections.abc import Iterator
 from pathlib import Path
 
-__all__ = ["atomic_path", "write_text", "write_bytes"]
+__all__ = ["atomic_path", "write_text", "write_bytes", "save_figure"]
 
 
 def _umask() -> int:
@@ -59,4 +59,11 @@ def write_bytes(path, data: bytes) -> Path:
     """Write ``data`` to ``path`` atomically."""
     with atomic_path(path) as tmp:
         tmp.write_bytes(data)
+    return Path(path)
+
+
+def save_figure(fig, path, fmt: str, dpi: int) -> Path:
+    """Write a matplotlib figure to ``path`` atomically, in format ``fmt`` at ``dpi``."""
+    with atomic_path(path) as tmp:
+        fig.savefig(tmp, format=fmt, dpi=dpi)
     return Path(path)

@@ -592,7 +592,6 @@ def _apply(base, chosen):
 def no_model_loaded():
     """Any generation, rendering, loading or study fails the test (the bad input must be
     refused before)."""
-    import snakecg.model as model_mod
     import snakecg.reproduce as rep
     import snakecg_derive.inspection as inspect_mod
     import snakecg_derive.render as render

@@ -65,7 +65,6 @@ def strict_loads(text: str):
 def no_model(monkeypatch):
     """Fail the test if anything generates, renders or loads a model (the input must be
     refused before)."""
-    import snakecg.model as model_mod
 
     def boom(*args, **kwargs):
         raise AssertionError("a model was loaded before the bad input was refused")

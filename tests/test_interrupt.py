@@ -25,7 +25,6 @@ import pytest
 
 import snakecg
 import snakecg.simulate.compiled as compiled
-import snakecg.simulate.workspace as workspace
 
 Q3 = np.array([0.0, 0.0, 0.0, 0.5, -0.6, 0.4])
 TAU3 = np.array([0.05, 0.0, -0.02])

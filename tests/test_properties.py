@@ -355,7 +355,6 @@ def check_against_dense(scene, q, tau, V, f_obj, *, rtol):
           + (", sliding" if np.any(res.sliding) else ""))
     sysd = dense.system(q, v, tau, v_obj, f_obj)
     M, A = sysd["M"], sysd["A"]
-    ns = dense.ns
     outputs = [res.qdd, res.a_obj, res.lam, res.w, res.sr, res.norm_qdd, res.norm_a_obj]
     assert all(np.all(np.isfinite(o)) for o in outputs) or res.singular
     # placement agrees (geometry of the contact)

@@ -17,7 +17,7 @@ pytest.importorskip("yourdfpy", reason="yourdfpy is a test extra: pip install '.
 
 def _urdf(robot, path, *, extra=""):
     f = lambda x: " ".join(repr(float(v)) for v in x)  # noqa: E731
-    text = [f'<robot name="s">']
+    text = ['<robot name="s">']
     for i in range(robot.n_links):
         I = robot.inertia[i]
         text.append(

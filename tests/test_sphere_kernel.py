@@ -230,7 +230,7 @@ def test_pieces_match_numpy(wheels, kernel):
     np.testing.assert_array_equal(b["flip"], a["flip"])
     used = a["flip"] >= 0
     np.testing.assert_array_equal(b["row"][used], a["row"][used])
-    (Lam, lam0), (W, w0) = b["lam"], b["w"]
+    (Lam, _lam0), (W, w0) = b["lam"], b["w"]
     held = states[s] == 1
     G, Bt = prim["G"][p], prim["Bt"][p]
     np.testing.assert_allclose(W, G @ Lam + Bt, atol=1e-12)

@@ -51,7 +51,7 @@ def run(args) -> int:
 
     general = general_scene_from_args(args)
     if general is not None and general.__class__.__name__ == "SpatialScene":
-        from ..spatial.cli import forward_command
+        from ._spatial import forward_command
 
         return forward_command(args, general, SCHEMA)
     if general is not None:  # a general scene (snakecg.scenes)

@@ -156,7 +156,7 @@ def run(args) -> int:
 
     general = general_scene_from_args(args)
     if general is not None and general.__class__.__name__ == "SpatialScene":  # a 3-D snake
-        from ..spatial.cli import optimize_command as spatial_optimize
+        from ._spatial import optimize_command as spatial_optimize
 
         _check_task(args, general.robot.n_links)
         return spatial_optimize(args, general)

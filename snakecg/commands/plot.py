@@ -3,10 +3,9 @@
 from __future__ import annotations
 
 import argparse
-import os
-import tempfile
 from pathlib import Path
 
+from .._files import save_figure
 from ..errors import InputError
 from ._common import add_robot_args, count, parse_vector, progress_reporter, scene_from_args, text
 
@@ -62,9 +61,9 @@ def run(args) -> int:
 
     scene = general_scene_from_args(args)
     if scene is not None and scene.__class__.__name__ == "SpatialScene":
-        from ..spatial.cli import plot_command
+        from ._spatial import plot_command
 
-        return plot_command(args, scene, out, fmt)
+        return plot_command(args, scene, out, fmt, SCHEMA)
     if scene is not None:  # a general scene (snakecg.scenes): its vectors checked first
         from ._scene import _vectors
 
@@ -91,16 +90,3 @@ def run(args) -> int:
         return 0
     print(f"wrote {out}")
     return 0
-
-
-def save_figure(fig, out: Path, fmt: str, dpi: int) -> None:
-    """Write ``fig`` to ``out`` atomically (a temporary file beside it, then renamed)."""
-    fd, tmp = tempfile.mkstemp(prefix=f".{out.name}.", suffix=f".{fmt}", dir=out.parent)
-    os.close(fd)
-    try:
-        fig.savefig(tmp, format=fmt, dpi=dpi)
-        os.chmod(tmp, 0o644)
-        os.replace(tmp, out)
-    except BaseException:
-        Path(tmp).unlink(missing_ok=True)
-        raise

@@ -23,9 +23,8 @@
  *   optimal.c       the optimal-torque queries of a batch (exported: core_optimal)
  *   max_sr.c, push.c, wheel_states.c   the queries' solves
  *   pieces.c, sphere.c                 the exact extremes' pieces and faces (exported)
- *   scene_sets.c, scene_solve.c        the exact solve of a general scene's sets (exported:
- *                                      core_scene_solve, and core_scene_solve_b
- *                                      with row offsets: the velocity-level step)
+ *   scene_sets.c, scene_solve.c        a general scene's exact solve (exported: core_scene_solve;
+ *                                      core_scene_solve_b with row offsets, for stepping)
  *   scene_geometry.c, scene_rows.c     contacts, rows, solve, metrics (core_scene_forward)
  *
  * One prefix (sc_), one integer type (sc_int). The library exports the model's prefixed entry
@@ -38,7 +37,6 @@
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
-
 /* the engine's one integer type (CasADi's casadi_int) */
 typedef long long int sc_int;
 
@@ -56,7 +54,6 @@ typedef long long int sc_int;
 #define SC_UNROLL
 #endif
 #include "linalg.h"
-
 
 /* sizes: coordinates n_s, constraint rows n_c, a body state (q, q_obj), the integrated state
  * (positions, velocities and three work integrals) */
@@ -158,12 +155,10 @@ typedef struct {
   sc_int status;        /* SETTLE_* */
 } sc_settle;
 /* ---- contact.c: the per-state system and its complementarity solve ---- */
-/* Wall-clock seconds from an arbitrary origin (POSIX's monotonic clock; elsewhere the CPU
- * time): the long calls of the simulation pause after a budget of them, so that Python can
- * handle a Ctrl-C. */
+
+/* Wall-clock seconds (monotonic): the long calls pause after a budget, for Ctrl-C. */
 SC_INTERNAL double sc_wall_time(void);
-/* Argument and result pointer arrays and work vectors of generated functions, sized for the
- * largest of `n` of them (their `_work` functions). */
+/* Argument and result arrays and work vectors of generated functions (the largest of n). */
 typedef struct {
   const double **arg;
   double **res;
@@ -185,11 +180,9 @@ typedef struct {
   double Ka[3 * SNAKECG_NC];                  /* I_obj^-1 A_o^T (eq. 18) */
   double gap, s;
 } sc_system;
-/* `contact_system` at (q, v, tau, q_obj, v_obj, f_obj, rho) with the scene's constants of
- * `scene` (SCENE_* offsets); q_obj == NULL places the object at the scene's contact from q
- * (the generated function's input `placed` = 1; rho is then ignored too). When v and v_obj
- * are zero, the generated `contact_system_at_rest` (the same without the velocity terms).
- * The work arrays must fit both (SC_CS_WORKS). Its status (0 on success). */
+/* `contact_system` at (q, v, tau, q_obj, v_obj, f_obj, rho), the scene's constants `scene`;
+ * q_obj NULL places the object from q (rho ignored); `contact_system_at_rest` when v, v_obj
+ * are zero. The work arrays must fit both (SC_CS_WORKS). Its status (0 on success). */
 #define SC_CS_WORKS SNAKECG_CS_WORK, SNAKECG_CR_WORK
 SC_INTERNAL int sc_contact_system(sc_work_t *ws, const double *scene, const double *q,
                                   const double *v, const double *tau, const double *q_obj,
@@ -204,6 +197,19 @@ SC_INTERNAL int sc_contact_system(sc_work_t *ws, const double *scene, const doub
 SC_INTERNAL int sc_row_velocities(sc_work_t *ws, const double *scene, const double *rho, int k,
                                   double c_k, const double *q, const double *v,
                                   const double *qo, const double *vo, double s, double *av);
+/* The solver's constants (snakecg.engine.CONSTANTS, in this order): pivot ratios of dependent,
+ * of weak held rows, the decisions' tolerance, M's singular ratio, the checks' rounding, the
+ * force limit, the ratio of rows dependent even factored directly, the Tikhonov weight. */
+typedef struct {
+  double pivot_tol, weak, rel_tol, mass_tol, sane_tol, force_limit, row_tol, regularization;
+} sc_constants;
+
+/* rows.c: a sample the fast path does not answer exactly, by the reference rules; its status
+ * the reason's code. sys null when its evaluation failed; mass: M's pivot ratio. */
+SC_INTERNAL void sc_forward_edge(const sc_system *sys, const double *scene,
+                                 const sc_constants *c, long max_iter, int at_rest,
+                                 double mass, double *out);
+
 /* The constraint forces for row states `state` (eq. 16): lam_F fixed (0, or +-bound for a
  * sliding wheel), lam_H solving G_HH lam_H = -(b_H + G_HF lam_F) - extra_H by LDL^T in row
  * order (the masked factorization of the generated `constrained_dynamics`); `extra` (may be
@@ -213,8 +219,9 @@ SC_INTERNAL int sc_row_velocities(sc_work_t *ws, const double *scene, const doub
 SC_INTERNAL double sc_held_forces(const signed char *state, const double *G, const double *b,
                                   const double *bounds, const double *extra, double *lam);
 
-/* The next row states (snakecg.solver._violations with _tolerances; the rule in contact.c):
- * returns 1 if any moved. */
+/* The next row states (snakecg.solver._violations with _tolerances): returns 1 if any moved.
+ * Each row is judged against its own scale (the rule in contact.c), so the decisions do not
+ * depend on units, nor on the huge forces of nearly dependent rows. */
 SC_INTERNAL int sc_next_states(signed char *state, const double *lam, const double *w,
                                const double *G, const double *bounds, double rel_tol);
 /* ---- events.c: locating an event ---- */

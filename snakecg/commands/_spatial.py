@@ -13,14 +13,14 @@ import math
 import numpy as np
 
 from ..errors import InputError
-from .scene import SpatialScene
+from ..spatial.scene import SpatialScene
 
 __all__ = ["configuration", "forward_command", "optimize_command", "plot_command"]
 
 
 def configuration(text: str, scene: SpatialScene) -> np.ndarray:
     """``--q`` of a spatial scene: ``n_a + 7`` numbers, or ``x,y,yaw,q1..qn`` lying flat."""
-    from ..commands._common import parse_vector
+    from ._common import parse_vector
 
     q = parse_vector("--q", text)
     na = scene.robot.joints
@@ -38,7 +38,7 @@ def configuration(text: str, scene: SpatialScene) -> np.ndarray:
 
 
 def _torques(text, scene):
-    from ..commands._common import check_vector, parse_vector
+    from ._common import check_vector, parse_vector
 
     na = scene.robot.joints
     return check_vector("tau", parse_vector("--tau", text), na,
@@ -54,7 +54,7 @@ def _header(scene, path) -> dict:
 def forward_command(args, scene: SpatialScene, schema: str) -> int:
     """``snakecg forward --scene FILE``: one sample of the spatial forward analysis."""
     from .. import load
-    from ..commands._common import check_vector, parse_vector, print_json, progress_reporter
+    from ._common import check_vector, parse_vector, print_json, progress_reporter
 
     q = configuration(args.q, scene)
     tau = _torques(args.tau, scene)
@@ -99,7 +99,7 @@ def optimize_command(args, scene: SpatialScene) -> int:
     """``snakecg optimize OBJECTIVE --scene FILE``."""
     from .. import load
     from .._inputs import MAX_MAGNITUDE
-    from ..commands._common import print_json, vector
+    from ._common import print_json, vector
     from ..optimize import SCHEMA
 
     q = configuration(args.q, scene)
@@ -202,13 +202,14 @@ def draw(model, q, tau=None, *, ax):
     return drawn
 
 
-def plot_command(args, scene: SpatialScene, out, fmt: str) -> int:
-    """``snakecg plot --scene FILE``: the 3-D view, written atomically."""
+def plot_command(args, scene: SpatialScene, out, fmt: str, schema: str) -> int:
+    """``snakecg plot --scene FILE``: the 3-D view, written atomically (``schema``: the
+    plot command's JSON schema)."""
     from matplotlib.figure import Figure
 
     from .. import load
-    from ..commands._common import print_json, progress_reporter
-    from ..commands.plot import SCHEMA, save_figure
+    from .._files import save_figure
+    from ._common import print_json, progress_reporter
 
     q = configuration(args.q, scene)
     tau = _torques(args.tau, scene) if args.tau else None
@@ -218,7 +219,7 @@ def plot_command(args, scene: SpatialScene, out, fmt: str) -> int:
     draw(model, q, tau, ax=ax)
     save_figure(fig, out, fmt, args.dpi)
     if args.json:
-        print_json({"schema": SCHEMA, "file": str(out), "format": fmt,
+        print_json({"schema": schema, "file": str(out), "format": fmt,
                     **_header(scene, args.scene), "q": q.tolist(),
                     "tau": None if tau is None else list(tau), "title": ax.get_title()})
         return 0
