@@ -190,7 +190,7 @@ def test_one_step_against_cvxpy_clarabel(rng):
     from snakecg.scenes.contacts import place_objects
 
     qo = place_objects(scene, model.link_poses(q))
-    Mf, _, rows = st.geometry(q, qo)
+    Mf, rows = st.geometry(q, qo)
     assert len(rows.contacts) == 2  # the peg and the disc
     h = 1e-3
     # gaps within the tolerance on both sides: the rows' offsets g / h of the solve

@@ -52,6 +52,10 @@ class Core:
             lib.entry_or_none(name) for name in ("core_scene_forward", "core_scene_forward_call"))
         """scene_rows.c's ``core_scene_forward``: a general scene's forward solve of a batch
         (``core_scene_forward_call``: the same with its arguments in a ``SceneCall``)."""
+        self.scene_rows, self.scene_gaps = (
+            lib.entry_or_none(name) for name in ("core_scene_rows", "core_scene_gaps"))
+        """scene_rows.c's ``core_scene_rows`` and ``core_scene_gaps``: a general scene's rows,
+        and its pairs' distances, at a simulation's state (a ``SceneStateCall``)."""
         self.scene_solve_b = lib.entry_or_none("core_scene_solve_b")
         """scene_solve.c's ``core_scene_solve_b``: the same with row offsets (``w = A a + c``),
         the velocity-level step of :mod:`snakecg.scenes.stepping`."""

@@ -24,6 +24,7 @@ __all__ = [
     "PROTOTYPES",
     "Run",
     "SceneCall",
+    "SceneStateCall",
     "Segment",
     "Settle",
     "address",
@@ -70,6 +71,8 @@ PROTOTYPES: dict[str, tuple[list, object]] = {
     "core_scene_forward": ([_P, _I, _P, _I, _P, _I, _P, _I, _I, _I] + [_P] * 5, _INT),
     "core_scene_forward_call": ([_P], _INT),
     "core_scene_solve_b": ([_I, _I, _I, _I] + [_P] * 9 + [_I] + [_P] * 5, _INT),
+    "core_scene_rows": ([_P], _INT),
+    "core_scene_gaps": ([_P], _INT),
 }
 #: A generated function's batched driver: (n, inputs, strides, outputs).
 _BATCH = ([_I, ctypes.POINTER(_P), ctypes.POINTER(_I), ctypes.POINTER(_P)], _INT)
@@ -173,6 +176,15 @@ class SceneCall(ctypes.Structure):
     _fields_ = [("pk", _P), ("n", _I), ("q", _P), ("sq", _I), ("tau", _P), ("st", _I),
                 ("fo", _P), ("sf", _I), ("ccap", _I), ("mcap", _I), ("out", _P), ("A", _P),
                 ("lam", _P), ("w", _P), ("state", _P)]
+
+
+class SceneStateCall(ctypes.Structure):
+    """The arguments of ``core_scene_rows`` and ``core_scene_gaps`` (scene_rows.c's
+    ``sc_scene_state``): a general scene's rows, or its pairs' distances, at a state."""
+
+    _fields_ = [("pk", _P), ("q", _P), ("qo", _P), ("tol", _D), ("margin", _D), ("ccap", _I),
+                ("mcap", _I), ("pair_a", _I), ("pair_b", _I), ("out", _P), ("M", _P),
+                ("A", _P), ("par", _P), ("kind", _P), ("start", _P)]
 
 
 class Geometry(ctypes.Structure):

@@ -25,7 +25,7 @@
  *   pieces.c, sphere.c                 the exact extremes' pieces and faces (exported)
  *   scene_sets.c, scene_solve.c        a general scene's exact solve (exported: core_scene_solve;
  *                                      core_scene_solve_b with row offsets, for stepping)
- *   scene_geometry.c, scene_rows.c     contacts, rows, solve, metrics (core_scene_forward)
+ *   scene_geometry.c, scene_rows.c     contacts, rows (core_scene_rows), forward (core_scene_forward)
  *
  * One prefix (sc_), one integer type (sc_int). The library exports the model's prefixed entry
  * points only (SNAKECG_EXPORT); the engine's own functions across its files are hidden
@@ -258,19 +258,14 @@ SC_INTERNAL void sc_geo_record(sc_geometry *g, double t, const double *y, double
  *
  *   sc_qp_solve          min 1/2 x^T H x + g^T x  s.t.  lo <= A x <= hi, H positive definite:
  *                        the dual active-set method of Goldfarb & Idnani (1983), then the
- *                        optimum of its final active set solved directly (one KKT system), so
- *                        that the answer is a function of the active set alone
- *   sc_qcqp_ellipsoid    the same problem plus the ellipsoid x^T N x <= rho2 (N positive
- *                        definite, H positive semidefinite), through the ellipsoid's
- *                        multiplier mu: x(mu) minimises 1/2 x^T (H + mu N) x + g^T x over the
- *                        linear rows, phi(mu) = x(mu)^T N x(mu) decreases with mu, and the
- *                        secular equation 1/sqrt(phi(mu)) = 1/sqrt(rho2) is solved by Newton's
- *                        method on each piece of constant active set (safeguarded by a
- *                        bracket), to machine precision
+ *                        optimum of its final active set solved directly (one KKT system)
+ *   sc_qcqp_ellipsoid    the same plus x^T N x <= rho2 (N > 0, H >= 0), through the
+ *                        ellipsoid's multiplier mu: x(mu) minimises 1/2 x^T (H + mu N) x +
+ *                        g^T x over the linear rows and 1/sqrt(x(mu)^T N x(mu)) = 1/sqrt(rho2)
+ *                        by Newton's method per piece of constant active set (bracketed)
  *   sc_nnls              min ||C y - d|| s.t. y >= 0 (Lawson & Hanson 1974, ch. 23)
- *   sc_kkt_certificate   the KKT residuals of a point of a QP or QCQP (primal feasibility,
- *                        stationarity with multipliers recomputed by least squares, dual signs,
- *                        complementarity, and for a convex problem the duality gap)
+ *   sc_kkt_certificate   the KKT residuals of a point of a QP or QCQP (primal, stationarity
+ *                        by least-squares multipliers, dual signs, complementarity, the gap)
  *
  * Matrices are row-major (element (i, j) of an m x n matrix at [i * n + j]). Nothing is
  * allocated but the workspace of sc_qp_work_alloc, which serves every problem up to its sizes.
@@ -582,7 +577,10 @@ int SNAKECG_EXPORT(core_scene_solve)(sc_int ns, sc_int n, sc_int mmax, sc_int nb
   const sc_int *m, const sc_int *nb, const double *M, const double *f, const double *A,
   const sc_int *kind, const sc_int *start, const double *par, sc_int max_sweeps, double *lam,
   double *a, double *w, double *state, double *info);
-/* ---- a general scene's shapes and contacts (scene_geometry.c), forward (scene_rows.c) ---- */
+/* ---- a general scene's shapes, contacts (scene_geometry.c), rows and forward (scene_rows.c) ----
+ * The packed scene's header and records' widths (their fields: snakecg/scenes/packing.py). */
+enum { SP_NO = 0, SP_NOB, SP_RADIUS, SP_TOL, SP_SIZE, SP_NG, SP_MG, SP_LINKS, SP_OBJECTS,
+       SP_OBSTACLES, SP_GROUND, SP_K, SP_HEAD = 16, LINK_W = 2, OBJ_W = 12, OBS_W = 14 };
 enum { SC_SEGMENT = 0, SC_POINT = 1, SC_POLYGON = 2, SC_HALFPLANE = 3 };
 #define SC_TOUCH_MAX 64 /* candidate point pairs of two shapes (4 x 4 edges, 4 each) */
 /* a core (np points: segment, point, polygon; a half-plane's point, normal into the free
@@ -592,6 +590,8 @@ typedef struct { double a[2], b[2], n[2]; } sc_touch;
 SC_INTERNAL void sc_shape_centroid(const sc_shape *s, double *c);
 SC_INTERNAL double sc_shape_closest(const sc_shape *A, const sc_shape *B, double scale,
                                     sc_touch *out, int *count);
+SC_INTERNAL void sc_scene_place(const double *pk, const double *P, const double *qo,
+                                sc_shape *shape, double *pose, double *centre, double *reach);
 int SNAKECG_EXPORT(core_scene_forward)(const double *pk, sc_int n, const double *q, sc_int sq,
   const double *tau, sc_int st, const double *fo, sc_int sf, sc_int ccap, sc_int mcap,
   double *out, double *A, double *lam, double *w, double *state);

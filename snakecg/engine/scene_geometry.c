@@ -1,4 +1,5 @@
-/* snakecg's engine: closest points between the shapes of a general scene (scene_rows.c).
+/* snakecg's engine: a general scene's shapes placed (sc_scene_place) and the closest points
+ * between them (scene_rows.c).
  *
  * Every shape is a core and a radius: a link's capsule (a segment, the robot's radius), a
  * disc or a peg (a point), a box (a convex polygon, counter-clockwise, radius 0), a wall (a
@@ -271,4 +272,104 @@ SC_INTERNAL double sc_shape_closest(const sc_shape *A, const sc_shape *B, double
       out[j].b[k] -= B->radius * out[j].n[k];
     }
   return core - A->radius - B->radius;
+}
+
+static void box_corners(double x, double y, double th, double sx, double sy, sc_shape *s) {
+  double c = cos(th), sn = sin(th), a = sx / 2, b = sy / 2;
+  double lx[4] = {-a, a, a, -a}, ly[4] = {-b, -b, b, b};
+  int i;
+  s->kind = SC_POLYGON;
+  s->np = 4;
+  s->radius = 0.0;
+  for (i = 0; i < 4; ++i) {
+    s->p[i][0] = x + (lx[i] * c + ly[i] * -sn);
+    s->p[i][1] = y + (lx[i] * sn + ly[i] * c);
+  }
+}
+
+/* Every body's shape of the scene packed in pk (links, objects, obstacles) at the link poses
+ * P (n_l x 3): the objects at their poses qo (3 n_o; a simulation's state) or, qo null, placed
+ * by the scene (a pose, or touching a link on its side at an offset); their poses into pose,
+ * the broad phase's bounding circles (a wall: none) into centre (2 each) and reach. */
+SC_INTERNAL void sc_scene_place(const double *pk, const double *P, const double *qo,
+                                sc_shape *shape, double *pose, double *centre, double *reach) {
+  const double *lk = pk + (sc_int)pk[SP_LINKS], r = pk[SP_RADIUS];
+  const sc_int no = (sc_int)pk[SP_NO], nob = (sc_int)pk[SP_NOB], nbody = SNAKECG_NL + no + nob;
+  sc_int i, j, k;
+  for (i = 0; i < SNAKECG_NL; ++i) {
+    double c = cos(P[3 * i + 2]), s = sin(P[3 * i + 2]), *e0 = shape[i].p[0],
+           *e1 = shape[i].p[1];
+    e0[0] = P[3 * i] - lk[LINK_W * i] * c;
+    e0[1] = P[3 * i + 1] - lk[LINK_W * i] * s;
+    e1[0] = e0[0] + lk[LINK_W * i + 1] * c;
+    e1[1] = e0[1] + lk[LINK_W * i + 1] * s;
+    shape[i].kind = SC_SEGMENT;
+    shape[i].np = 2;
+    shape[i].radius = r;
+  }
+  for (j = 0; j < no; ++j) {
+    const double *o = pk + (sc_int)pk[SP_OBJECTS] + OBJ_W * j;
+    double *ps = pose + 3 * j;
+    sc_shape *sh = shape + SNAKECG_NL + j;
+    if (qo) {
+      ps[0] = qo[3 * j];
+      ps[1] = qo[3 * j + 1];
+      ps[2] = qo[3 * j + 2];
+    } else if (o[6] == 0.0) {
+      ps[0] = o[7];
+      ps[1] = o[8];
+      ps[2] = o[9];
+    } else { /* on the named side of link k, the contact at offset from its rear end */
+      const double *rear = shape[(sc_int)o[7]].p[0], *pl = P + 3 * (sc_int)o[7];
+      double t[2] = {cos(pl[2]), sin(pl[2])}, nrm[2] = {-sin(pl[2]), cos(pl[2])};
+      double h = o[9] * (r + o[10]);
+      ps[0] = rear[0] + o[8] * t[0] + h * nrm[0];
+      ps[1] = rear[1] + o[8] * t[1] + h * nrm[1];
+      ps[2] = pl[2];
+    }
+    if (o[0] == 1.0) {
+      sh->kind = SC_POINT;
+      sh->np = 1;
+      sh->radius = o[3];
+      sh->p[0][0] = ps[0];
+      sh->p[0][1] = ps[1];
+    } else {
+      box_corners(ps[0], ps[1], ps[2], o[1], o[2], sh);
+    }
+  }
+  for (k = 0; k < nob; ++k) {
+    const double *o = pk + (sc_int)pk[SP_OBSTACLES] + OBS_W * k;
+    sc_shape *sh = shape + SNAKECG_NL + no + k;
+    sh->radius = 0.0;
+    sh->p[0][0] = o[1];
+    sh->p[0][1] = o[2];
+    if (o[0] == 0.0) {
+      sh->kind = SC_POINT;
+      sh->np = 1;
+      sh->radius = o[3];
+    } else if (o[0] == 1.0) {
+      sh->kind = SC_HALFPLANE;
+      sh->np = 1;
+      sh->normal[0] = o[4];
+      sh->normal[1] = o[5];
+    } else {
+      sh->kind = SC_POLYGON;
+      sh->np = 4;
+      for (i = 0; i < 4; ++i) {
+        sh->p[i][0] = o[6 + 2 * i];
+        sh->p[i][1] = o[7 + 2 * i];
+      }
+    }
+  }
+  for (i = 0; i < nbody; ++i) {
+    sc_shape *sh = shape + i;
+    double *c = centre + 2 * i, far = 0.0;
+    sc_shape_centroid(sh, c);
+    for (j = 0; j < sh->np; ++j) {
+      double d = sqrt((sh->p[j][0] - c[0]) * (sh->p[j][0] - c[0]) +
+                      (sh->p[j][1] - c[1]) * (sh->p[j][1] - c[1]));
+      if (d > far) far = d;
+    }
+    reach[i] = sh->kind == SC_HALFPLANE ? INFINITY : far + sh->radius;
+  }
 }

@@ -27,13 +27,7 @@
 #include "snakecg_layout.h"
 #include "engine.h"
 
-/* the packed scene: header, then link, object, obstacle and ground-block records, then K */
-enum { SP_NO = 0, SP_NOB, SP_RADIUS, SP_TOL, SP_SIZE, SP_NG, SP_MG, SP_LINKS, SP_OBJECTS,
-       SP_OBSTACLES, SP_GROUND, SP_K, SP_HEAD = 16 };
-enum { LINK_W = 2 };  /* com (from the rear end), length */
-enum { OBJ_W = 12 };  /* shape (0 box, 1 disc), a, b, radius, mass, inertia, placed (0 pose,
-                         1 touching), x | link, y | offset, theta | side (+-1), half depth */
-enum { OBS_W = 14 };  /* shape (0 peg, 1 wall, 2 box), x, y, radius, normal (2), corners (8) */
+/* the packed scene (SP_*, LINK_W, OBJ_W, OBS_W): engine.h */
 enum { GB_W = 8 };    /* type (GB_*), body, wheel offset, par (3), block kind (K_*) */
 enum { GB_WHEEL = 0, GB_COULOMB = 1, GB_SPLIT = 2, GB_OBJECT = 3 };
 /* one sample's outputs: the solve's info (scene_solve.c's INFO_* order), then these */
@@ -52,103 +46,13 @@ enum { BODY_LINK = 0, BODY_OBJECT = 1, BODY_OBSTACLE = 2 };
 typedef struct {
   const double *pk;
   sc_int no, nob, ng, mg, n, ccap, mcap, nbody;
+  double tol; /* the contact tolerance (m) */
   sc_work_t ws;
   double *A, *M, *f, *par, *lam, *w, *a, *st, *P, *J, *Ms, *LU, *afree;
   sc_int *kind, *start, *piv;
   sc_shape *shape;
   double *centre, *reach, *pose;
 } sc_scene_work;
-
-static void box_corners(double x, double y, double th, double sx, double sy, sc_shape *s) {
-  double c = cos(th), sn = sin(th), a = sx / 2, b = sy / 2;
-  double lx[4] = {-a, a, a, -a}, ly[4] = {-b, -b, b, b};
-  int i;
-  s->kind = SC_POLYGON;
-  s->np = 4;
-  s->radius = 0.0;
-  for (i = 0; i < 4; ++i) {
-    s->p[i][0] = x + (lx[i] * c + ly[i] * -sn);
-    s->p[i][1] = y + (lx[i] * sn + ly[i] * c);
-  }
-}
-
-/* The bodies' shapes at the link poses P (nl x 3), the objects placed (their poses in pose). */
-static void place(sc_scene_work *sw, const double *P) {
-  const double *pk = sw->pk, *lk = pk + (sc_int)pk[SP_LINKS], r = pk[SP_RADIUS];
-  sc_int i, j, k;
-  for (i = 0; i < SNAKECG_NL; ++i) {
-    double c = cos(P[3 * i + 2]), s = sin(P[3 * i + 2]), *e0 = sw->shape[i].p[0],
-           *e1 = sw->shape[i].p[1];
-    e0[0] = P[3 * i] - lk[LINK_W * i] * c;
-    e0[1] = P[3 * i + 1] - lk[LINK_W * i] * s;
-    e1[0] = e0[0] + lk[LINK_W * i + 1] * c;
-    e1[1] = e0[1] + lk[LINK_W * i + 1] * s;
-    sw->shape[i].kind = SC_SEGMENT;
-    sw->shape[i].np = 2;
-    sw->shape[i].radius = r;
-  }
-  for (j = 0; j < sw->no; ++j) {
-    const double *o = pk + (sc_int)pk[SP_OBJECTS] + OBJ_W * j;
-    double *ps = sw->pose + 3 * j;
-    sc_shape *sh = sw->shape + SNAKECG_NL + j;
-    if (o[6] == 0.0) {
-      ps[0] = o[7];
-      ps[1] = o[8];
-      ps[2] = o[9];
-    } else { /* on the named side of link k, the contact at offset from its rear end */
-      const double *rear = sw->shape[(sc_int)o[7]].p[0], *pl = P + 3 * (sc_int)o[7];
-      double t[2] = {cos(pl[2]), sin(pl[2])}, nrm[2] = {-sin(pl[2]), cos(pl[2])};
-      double h = o[9] * (r + o[10]);
-      ps[0] = rear[0] + o[8] * t[0] + h * nrm[0];
-      ps[1] = rear[1] + o[8] * t[1] + h * nrm[1];
-      ps[2] = pl[2];
-    }
-    if (o[0] == 1.0) {
-      sh->kind = SC_POINT;
-      sh->np = 1;
-      sh->radius = o[3];
-      sh->p[0][0] = ps[0];
-      sh->p[0][1] = ps[1];
-    } else {
-      box_corners(ps[0], ps[1], ps[2], o[1], o[2], sh);
-    }
-  }
-  for (k = 0; k < sw->nob; ++k) {
-    const double *o = pk + (sc_int)pk[SP_OBSTACLES] + OBS_W * k;
-    sc_shape *sh = sw->shape + SNAKECG_NL + sw->no + k;
-    sh->radius = 0.0;
-    sh->p[0][0] = o[1];
-    sh->p[0][1] = o[2];
-    if (o[0] == 0.0) {
-      sh->kind = SC_POINT;
-      sh->np = 1;
-      sh->radius = o[3];
-    } else if (o[0] == 1.0) {
-      sh->kind = SC_HALFPLANE;
-      sh->np = 1;
-      sh->normal[0] = o[4];
-      sh->normal[1] = o[5];
-    } else {
-      sh->kind = SC_POLYGON;
-      sh->np = 4;
-      for (i = 0; i < 4; ++i) {
-        sh->p[i][0] = o[6 + 2 * i];
-        sh->p[i][1] = o[7 + 2 * i];
-      }
-    }
-  }
-  for (i = 0; i < sw->nbody; ++i) { /* the broad phase's bounding circles (a wall: none) */
-    sc_shape *sh = sw->shape + i;
-    double *c = sw->centre + 2 * i, far = 0.0;
-    sc_shape_centroid(sh, c);
-    for (j = 0; j < sh->np; ++j) {
-      double d = sqrt((sh->p[j][0] - c[0]) * (sh->p[j][0] - c[0]) +
-                      (sh->p[j][1] - c[1]) * (sh->p[j][1] - c[1]));
-      if (d > far) far = d;
-    }
-    sw->reach[i] = sh->kind == SC_HALFPLANE ? INFINITY : far + sh->radius;
-  }
-}
 
 /* The velocity of point p fixed on body b, in the generalized velocities: rows x, y added
  * with sign into Dx, Dy (n each). */
@@ -180,10 +84,11 @@ static sc_int body_kind(const sc_scene_work *sw, sc_int b, sc_int *index) {
   return BODY_OBSTACLE;
 }
 
-/* The contacts' rows of one configuration into sw->A (rows 0..), their records into out;
- * returns their count, or -SS_* (overlap: the pair and depth in out). */
-static sc_int contact_rows(sc_scene_work *sw, const double *P, double *out, sc_int cap) {
-  const double tol = sw->pk[SP_TOL], size = sw->pk[SP_SIZE];
+/* The contacts' rows of one configuration into sw->A (rows 0..), their records (CR_W each)
+ * into recs; returns their count, or -SS_* (overlap: the pair, depth, tolerance in over). */
+static sc_int contact_rows(sc_scene_work *sw, const double *P, double *recs, double *over,
+                           sc_int cap) {
+  const double tol = sw->tol, size = sw->pk[SP_SIZE];
   const sc_int n = sw->n, nl = SNAKECG_NL;
   sc_int ia, ib, nc = 0, k, j;
   sc_touch t[SC_TOUCH_MAX];
@@ -197,7 +102,7 @@ static sc_int contact_rows(sc_scene_work *sw, const double *P, double *out, sc_i
         continue;
       d = sc_shape_closest(sw->shape + ia, sw->shape + ib, size, t, &count);
       if (d < -tol) {
-        double *o = out + SO_OVERLAP, idx;
+        double *o = over, idx;
         o[0] = (double)body_kind(sw, ia, &k);
         o[1] = (double)k;
         idx = (double)body_kind(sw, ib, &k);
@@ -216,7 +121,7 @@ static sc_int contact_rows(sc_scene_work *sw, const double *P, double *out, sc_i
         point_jacobian(sw, ib, t[k].b, P, 1.0, Dx, Dy);
         point_jacobian(sw, ia, t[k].a, P, -1.0, Dx, Dy);
         for (j = 0; j < n; ++j) row[j] = t[k].n[0] * Dx[j] + t[k].n[1] * Dy[j];
-        rec = out + SO_QDD + SNAKECG_NS + 7 * sw->no + 3 * sw->ng + CR_W * nc;
+        rec = recs + CR_W * nc;
         rec[0] = (double)body_kind(sw, ia, &kk);
         rec[1] = (double)kk;
         rec[2] = (double)body_kind(sw, ib, &kk);
@@ -315,6 +220,41 @@ static void metrics(sc_scene_work *sw, const double *a, double *out) {
   }
 }
 
+/* The link poses (sw->P), Jacobians (sw->J) and, where mass, M_s (sw->Ms) at q: the
+ * generated functions' status (0 on success). */
+static int kinematics(sc_scene_work *sw, const double *q, int mass) {
+  sc_work_t *ws = &sw->ws;
+  const double *K = sw->pk + (sc_int)sw->pk[SP_K];
+  ws->arg[LP_IN_q] = q;
+  ws->arg[LP_IN_K] = K;
+  ws->res[LP_OUT_poses] = sw->P;
+  if (SNAKECG_LP(ws->arg, ws->res, ws->iw, ws->w, 0)) return 1;
+  ws->arg[LJ_IN_q] = q;
+  ws->arg[LJ_IN_K] = K;
+  ws->res[LJ_OUT_J] = sw->J;
+  if (SNAKECG_LJ(ws->arg, ws->res, ws->iw, ws->w, 0)) return 1;
+  if (!mass) return 0;
+  ws->arg[MM_IN_q] = q;
+  ws->arg[MM_IN_K] = K;
+  ws->res[MM_OUT_M] = sw->Ms;
+  return SNAKECG_MM(ws->arg, ws->res, ws->iw, ws->w, 0) != 0;
+}
+
+/* The bodies' full inertia (M_s; m, m, I per object), n x n row-major, into M. */
+static void full_inertia(const sc_scene_work *sw, double *M) {
+  const sc_int n = sw->n, ns = SNAKECG_NS;
+  sc_int i, j, o;
+  memset(M, 0, sizeof(double) * (size_t)(n * n));
+  for (i = 0; i < ns; ++i)
+    for (j = 0; j < ns; ++j) M[i * n + j] = sw->Ms[i + ns * j];
+  for (o = 0; o < sw->no; ++o) {
+    const double *obj = sw->pk + (sc_int)sw->pk[SP_OBJECTS] + OBJ_W * o;
+    sc_int c = ns + 3 * o;
+    M[c * n + c] = M[(c + 1) * n + c + 1] = obj[4];
+    M[(c + 2) * n + c + 2] = obj[5];
+  }
+}
+
 /* One sample: out (its row), and where A is not null its details (rows, forces, row
  * accelerations, block states; mcap rows each). */
 static void scene_sample(sc_scene_work *sw, const double *q, const double *tau,
@@ -323,24 +263,13 @@ static void scene_sample(sc_scene_work *sw, const double *q, const double *tau,
   const sc_int n = sw->n, ns = SNAKECG_NS, width = SO_QDD + ns + 7 * sw->no + 3 * sw->ng;
   sc_int nc, m, nb, i, j, o;
   double *P = sw->P;
-  sc_work_t *ws = &sw->ws;
   for (i = 0; i < width; ++i) out[i] = 0.0;
-  ws->arg[LP_IN_q] = q;
-  ws->arg[LP_IN_K] = sw->pk + (sc_int)sw->pk[SP_K];
-  ws->res[LP_OUT_poses] = P;
-  if (SNAKECG_LP(ws->arg, ws->res, ws->iw, ws->w, 0)) goto failed;
-  ws->arg[LJ_IN_q] = q;
-  ws->arg[LJ_IN_K] = sw->pk + (sc_int)sw->pk[SP_K];
-  ws->res[LJ_OUT_J] = sw->J;
-  if (SNAKECG_LJ(ws->arg, ws->res, ws->iw, ws->w, 0)) goto failed;
-  ws->arg[MM_IN_q] = q;
-  ws->arg[MM_IN_K] = sw->pk + (sc_int)sw->pk[SP_K];
-  ws->res[MM_OUT_M] = sw->Ms;
-  if (SNAKECG_MM(ws->arg, ws->res, ws->iw, ws->w, 0)) goto failed;
-  place(sw, P);
+  if (kinematics(sw, q, 1)) goto failed;
+  sc_scene_place(sw->pk, P, 0, sw->shape, sw->pose, sw->centre, sw->reach);
   for (o = 0; o < sw->no; ++o)
     for (j = 0; j < 3; ++j) out[SO_QDD + ns + 4 * sw->no + 3 * o + j] = sw->pose[3 * o + j];
-  nc = contact_rows(sw, P, out, sw->ccap);
+  nc = contact_rows(sw, P, out + SO_QDD + ns + 7 * sw->no + 3 * sw->ng, out + SO_OVERLAP,
+                    sw->ccap);
   if (nc < 0) {
     out[SO_INFO] = (double)-nc;
     for (i = SO_NORM_QDD; i <= SO_SR; ++i) out[i] = NAN;
@@ -349,16 +278,7 @@ static void scene_sample(sc_scene_work *sw, const double *q, const double *tau,
   }
   m = ground_rows(sw, P, nc);
   nb = nc + sw->ng;
-  /* the full inertia (M_s; m, m, I per object) and force (B tau; the objects' wrenches) */
-  memset(sw->M, 0, sizeof(double) * (size_t)(n * n));
-  for (i = 0; i < ns; ++i)
-    for (j = 0; j < ns; ++j) sw->M[i * n + j] = sw->Ms[i + ns * j];
-  for (o = 0; o < sw->no; ++o) {
-    const double *obj = sw->pk + (sc_int)sw->pk[SP_OBJECTS] + OBJ_W * o;
-    sc_int c = ns + 3 * o;
-    sw->M[c * n + c] = sw->M[(c + 1) * n + c + 1] = obj[4];
-    sw->M[(c + 2) * n + c + 2] = obj[5];
-  }
+  full_inertia(sw, sw->M); /* and the force (B tau; the objects' wrenches) */
   for (i = 0; i < n; ++i) sw->f[i] = 0.0;
   for (i = 3; i < ns; ++i) sw->f[i] = tau[i - 3];
   for (i = 0; i < 3 * sw->no; ++i) sw->f[ns + i] = fo[i];
@@ -412,6 +332,7 @@ static int work_alloc(sc_scene_work *sw, const double *pk, sc_int ccap, sc_int m
   sc_int n, nd;
   double *d;
   sw->pk = pk;
+  sw->tol = pk[SP_TOL];
   sw->no = (sc_int)pk[SP_NO];
   sw->nob = (sc_int)pk[SP_NOB];
   sw->ng = (sc_int)pk[SP_NG];
@@ -505,4 +426,117 @@ int SNAKECG_EXPORT(core_scene_forward_call)(const sc_scene_call *c) {
   return SNAKECG_EXPORT(core_scene_forward)(c->pk, c->n, c->q, c->sq, c->tau, c->st, c->fo,
                                             c->sf, c->ccap, c->mcap, c->out, c->A, c->lam,
                                             c->w, c->state);
+}
+
+/* ---- the rows at a simulation's state (snakecg/scenes/stepping.py; maps at rest) ---- */
+/* The arguments of core_scene_rows and core_scene_gaps (snakecg/engine/binding.py mirrors
+ * them as SceneStateCall). */
+typedef struct {
+  const double *pk, *q, *qo; /* the packed scene; q (n_s); the objects' poses (3 n_o, or
+                                null: placed by the scene from q) */
+  double tol;                /* rows: the contact tolerance (m; <= 0: the scene's) */
+  double margin;             /* gaps: the pairs whose bounding circles are within it (m) */
+  sc_int ccap, mcap;         /* rows: room for contacts and rows (mcap >= ccap + ground
+                                rows); gaps: for records */
+  sc_int pair_a, pair_b;     /* gaps: this pair of bodies alone (-1: every pair) */
+  double *out;               /* rows: RO_*, then the contacts (CR_W each); gaps: 5 per pair */
+  double *M;                 /* rows: the bodies' inertia (n x n, row-major), or null */
+  double *A, *par;           /* rows: A (mcap x n), the blocks' parameters (3 each) */
+  sc_int *kind, *start;      /* rows: the blocks' kinds and first rows */
+} sc_scene_state;
+/* rows' outputs: status (0, SS_*), contacts, rows, blocks, an overlap's record (bodies,
+ * depth, tolerance), the objects' poses (3 n_o), then the contacts */
+enum { RO_STATUS = 0, RO_NC, RO_M, RO_NB, RO_OVERLAP, RO_POSE = RO_OVERLAP + 6 };
+
+static int state_work(sc_scene_work *sw, const sc_scene_state *c, sc_int ccap, sc_int mcap) {
+  sc_int j, no3 = 3 * (sc_int)c->pk[SP_NO];
+  int ok = 1;
+  if (ccap < 0 || mcap < ccap + (sc_int)c->pk[SP_MG] || mcap > 500 ||
+      SNAKECG_NS + no3 > 512)
+    return -2;
+  for (j = 0; j < SNAKECG_NS; ++j) ok &= isfinite(c->q[j]) != 0;
+  for (j = 0; c->qo && j < no3; ++j) ok &= isfinite(c->qo[j]) != 0;
+  if (!ok) return -3;
+  if (work_alloc(sw, c->pk, ccap, mcap)) return -1;
+  if (c->tol > 0) sw->tol = c->tol;
+  return 0;
+}
+
+/* The contacts, rows and blocks of one state (q, the objects at qo): the rows of the
+ * forward's step 2 and 3 (contacts first, one unilateral row each, then the ground's
+ * blocks), and where c->M is not null the bodies' inertia. A pair overlapping beyond the
+ * tolerance: status SS_OVERLAP and its record; more than ccap contacts: SS_MORE. Returns
+ * 0, -1 out of memory, -2 on sizes out of range, -3 on an input not finite. */
+int SNAKECG_EXPORT(core_scene_rows)(const sc_scene_state *c) {
+  sc_scene_work sw;
+  sc_int nc, m, i, code = state_work(&sw, c, c->ccap, c->mcap);
+  double *out = c->out;
+  if (code) return (int)code;
+  for (i = 0; i < RO_POSE + 3 * sw.no; ++i) out[i] = 0.0;
+  if (kinematics(&sw, c->q, c->M != 0)) {
+    out[RO_STATUS] = SS_FAILED;
+    work_free(&sw);
+    return 0;
+  }
+  sc_scene_place(c->pk, sw.P, c->qo, sw.shape, sw.pose, sw.centre, sw.reach);
+  for (i = 0; i < 3 * sw.no; ++i) out[RO_POSE + i] = sw.pose[i];
+  nc = contact_rows(&sw, sw.P, out + RO_POSE + 3 * sw.no, out + RO_OVERLAP, sw.ccap);
+  if (nc < 0) {
+    out[RO_STATUS] = (double)-nc;
+    work_free(&sw);
+    return 0;
+  }
+  m = ground_rows(&sw, sw.P, nc);
+  out[RO_NC] = (double)nc;
+  out[RO_M] = (double)m;
+  out[RO_NB] = (double)(nc + sw.ng);
+  memcpy(c->A, sw.A, sizeof(double) * (size_t)(m * sw.n));
+  memcpy(c->par, sw.par, sizeof(double) * (size_t)(3 * (nc + sw.ng)));
+  memcpy(c->kind, sw.kind, sizeof(sc_int) * (size_t)(nc + sw.ng));
+  memcpy(c->start, sw.start, sizeof(sc_int) * (size_t)(nc + sw.ng));
+  if (c->M) full_inertia(&sw, c->M);
+  work_free(&sw);
+  return 0;
+}
+
+/* The signed distance of every pair of bodies that can touch (the pairs of contact_rows)
+ * whose bounding circles are within c->margin at one state, or of the pair (pair_a, pair_b)
+ * alone (body indices: links, objects, obstacles), overlapping or not: records (body a kind,
+ * index, body b kind, index, distance) into out, at most c->ccap. Returns their count (the
+ * pairs found, beyond ccap not written), -1 out of memory, -2 on sizes, -3 on an input not
+ * finite, -4 where a generated function refused. */
+int SNAKECG_EXPORT(core_scene_gaps)(const sc_scene_state *c) {
+  sc_scene_work sw;
+  sc_int ia, ib, k, found = 0, code = state_work(&sw, c, 0, (sc_int)c->pk[SP_MG]);
+  const sc_int nl = SNAKECG_NL;
+  if (code) return (int)code;
+  if (kinematics(&sw, c->q, 0)) {
+    work_free(&sw);
+    return -4;
+  }
+  sc_scene_place(c->pk, sw.P, c->qo, sw.shape, sw.pose, sw.centre, sw.reach);
+  for (ia = 0; ia < nl + sw.no; ++ia)
+    for (ib = ia + 1; ib < sw.nbody; ++ib) {
+      const double *ca = sw.centre + 2 * ia, *cb = sw.centre + 2 * ib;
+      sc_touch t[SC_TOUCH_MAX];
+      double d, *rec;
+      int count;
+      if (ib < nl && ib - ia < 2) continue; /* neighbouring links */
+      if (c->pair_a >= 0 && !(ia == c->pair_a && ib == c->pair_b)) continue;
+      if (c->pair_a < 0 &&
+          hypot(ca[0] - cb[0], ca[1] - cb[1]) > sw.reach[ia] + sw.reach[ib] + c->margin)
+        continue;
+      d = sc_shape_closest(sw.shape + ia, sw.shape + ib, c->pk[SP_SIZE], t, &count);
+      if (found < c->ccap) {
+        rec = c->out + 5 * found;
+        rec[0] = (double)body_kind(&sw, ia, &k);
+        rec[1] = (double)k;
+        rec[2] = (double)body_kind(&sw, ib, &k);
+        rec[3] = (double)k;
+        rec[4] = d;
+      }
+      ++found;
+    }
+  work_free(&sw);
+  return (int)found;
 }

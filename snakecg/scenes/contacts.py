@@ -1,26 +1,30 @@
 """A configuration's contacts and constraint rows as Python objects (:class:`Contact`,
-:class:`Rows`: what a :class:`~snakecg.scenes.metrics.SceneResult` reports for checks; the
-engine finds and builds them, ``snakecg/engine/scene_rows.c``), and the placement of the
-links and objects at a configuration (what the drawing shows). The time stepping's rows at a
-simulation state (objects where they are, its own tolerance) are still built here
-(:func:`rows_of`) until the engine's row builder takes object poses.
+:class:`Rows`: what a :class:`~snakecg.scenes.metrics.SceneResult` reports for checks), read
+from the engine that finds and builds them (``snakecg/engine/scene_rows.c``): at rest
+(the objects placed by the scene) or at a simulation's state (the objects where they are, the
+run's tolerance) through :class:`StateRows`; and the placement of the links and objects at a
+configuration (what the drawing shows).
 """
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 
 import numpy as np
 
-from ..errors import InputError
+from ..engine.binding import SceneStateCall, address
+from ..errors import BuildError, InputError
 from .description import GeneralScene
-from .geometry import Shape, box_corners, closest
-from .packing import scene_size
-from .solve import BOX, DISC, FREE, SPLIT, UNILATERAL
+from .packing import BODY_KINDS, CR_W, MAX_ROWS
 
-__all__ = ["Contact", "Rows", "link_ends", "place_objects", "shapes", "candidate_pairs",
-           "rows_of"]
+__all__ = ["Contact", "Rows", "StateRows", "link_ends", "place_objects"]
+
+#: the engine's rows' outputs (scene_rows.c's RO_*): status, contacts, rows, blocks, an
+#: overlap's record, then the objects' poses and the contacts
+RO_NC, RO_M, RO_NB, RO_OVERLAP, RO_POSE = 1, 2, 3, 4, 10
+#: the engine's statuses of a state: an overlap beyond the tolerance, more contacts than the
+#: room, a generated function that refused
+_OVERLAP, _MORE, _FAILED = 3, 4, 6
 
 
 @dataclass
@@ -86,148 +90,136 @@ def place_objects(scene: GeneralScene, poses) -> np.ndarray:
     return out
 
 
-def shapes(scene: GeneralScene, poses, obj_poses) -> list:
-    """``[(body, Shape)]`` for links, objects and obstacles."""
-    out = []
-    for i, (a, b) in enumerate(link_ends(scene, poses)):
-        out.append((("link", i), Shape("segment", [a, b], scene.radius)))
-    for j, o in enumerate(scene.objects):
-        p = obj_poses[j]
-        if o.shape == "disc":
-            out.append((("object", j), Shape("point", [p[:2]], o.radius)))
+class StateRows:
+    """The engine's rows and pairs' distances at states of one general scene model
+    (``core_scene_rows``, ``core_scene_gaps`` of ``snakecg/engine/scene_rows.c``), with its
+    buffers made once: a simulation's workspace (one per run), or one query's.
+
+    ``tol`` (m): the contact tolerance (default the scene's, ``tolerance`` times its size)."""
+
+    def __init__(self, model, tol: float | None = None):
+        core = model.core
+        if getattr(core, "scene_rows", None) is None:
+            raise BuildError("a general scene's rows are built by the compiled engine; load "
+                             "it with a C compiler (set CC) and the compiled backend")
+        self.model = model
+        pk = model.packed
+        self.ns, self.no = model.n_coordinates, model.scene.n_objects
+        self.n = n = self.ns + 3 * self.no
+        self.tol = pk.tolerance if tol is None else float(tol)
+        nl, nob = model.n_links, len(model.scene.obstacles)
+        pairs = (nl * (nl - 1) // 2 - (nl - 1) + nl * (self.no + nob)
+                 + self.no * (self.no - 1) // 2 + self.no * nob)
+        self.ccap = max(1, min(4 * pairs, MAX_ROWS - pk.ground_rows))  # every pair's
+        self.mcap = self.ccap + pk.ground_rows
+        self.gcap = max(1, pairs)
+        self.q = np.zeros(self.ns)
+        self.qo = np.zeros(max(1, 3 * self.no))
+        self.out = np.zeros(RO_POSE + 3 * self.no + CR_W * self.ccap)
+        self.gap_buf = np.zeros(5 * self.gcap)
+        self.M = np.zeros((n, n))
+        self.A = np.zeros((self.mcap, n))
+        self.par = np.zeros((self.mcap, 3))
+        self.kind = np.zeros(self.mcap, dtype=np.int64)
+        self.start = np.zeros(self.mcap, dtype=np.int64)
+        self.args = SceneStateCall(model._pk, self.q.ctypes.data, self.qo.ctypes.data,
+                                   self.tol, 0.0, self.ccap, self.mcap, -1, -1,
+                                   self.out.ctypes.data, self.M.ctypes.data,
+                                   self.A.ctypes.data, self.par.ctypes.data,
+                                   self.kind.ctypes.data, self.start.ctypes.data)
+        self._address = address(self.args)
+        self._rows, self._gaps = core.scene_rows, core.scene_gaps
+        self._index = {}
+        for k in range(nl + self.no + nob):
+            kind = 0 if k < nl else (1 if k < nl + self.no else 2)
+            self._index[(BODY_KINDS[kind], k - (0 if kind == 0 else nl if kind == 1
+                                                else nl + self.no))] = k
+
+    def _state(self, q, obj_poses):
+        self.q[:] = q
+        if obj_poses is None:
+            self.args.qo = None
         else:
-            out.append((("object", j), Shape("polygon", box_corners(p[:2], o.size, p[2]))))
-    for k, o in enumerate(scene.obstacles):
-        if o.shape == "peg":
-            sh = Shape("point", [o.center], o.radius)
-        elif o.shape == "box":
-            sh = Shape("polygon", box_corners(o.center, o.size, o.angle))
-        else:
-            sh = Shape("halfplane", [o.point], 0.0, o.normal)
-        out.append((("obstacle", k), sh))
-    return out
+            self.args.qo = self.qo.ctypes.data
+            self.qo[:3 * self.no] = np.asarray(obj_poses, dtype=float).reshape(-1)
 
+    def rows(self, q, obj_poses=None, *, mass=True, index=None):
+        """``(rows, M, obj_poses)`` at ``q`` (n_s,) with the objects at ``obj_poses``
+        (n_objects, 3; default: placed by the scene): the :class:`Rows` (contacts within the
+        tolerance first, one unilateral row each, then the ground's blocks), the bodies'
+        inertia ``M`` (n x n; None unless ``mass``) and the objects' poses. Raises
+        :class:`InputError` where a pair overlaps beyond the tolerance (``index``: the
+        sample's, named in the message)."""
+        self._state(q, obj_poses)
+        self.args.M = self.M.ctypes.data if mass else None
+        code = self._rows(self._address)
+        out = self.out
+        if code != 0:
+            if code == -3:
+                raise InputError("the state is not finite (q or the objects' poses)")
+            raise MemoryError("the scene's rows ran out of memory") if code == -1 else \
+                ValueError(f"core_scene_rows refused its sizes ({code})")
+        status = int(out[0])
+        if status == _OVERLAP:
+            raise InputError(self.model.overlap_message(out[RO_OVERLAP:RO_OVERLAP + 6],
+                                                        index))
+        if status == _MORE:
+            raise InputError(f"more than {self.ccap} contacts at this state, beyond the rows "
+                             "the solve takes")
+        if status == _FAILED:
+            raise InputError("a generated function refused the state (q not finite?)")
+        nc, m = int(out[RO_NC]), int(out[RO_M])
+        nb = int(out[RO_NB])
+        poses = out[RO_POSE:RO_POSE + 3 * self.no].reshape(self.no, 3).copy()
+        off = RO_POSE + 3 * self.no
+        contacts = []
+        for c in range(nc):
+            r = out[off + CR_W * c: off + CR_W * (c + 1)]
+            contacts.append(Contact((BODY_KINDS[int(r[0])], int(r[1])),
+                                    (BODY_KINDS[int(r[2])], int(r[3])), r[4:6].copy(),
+                                    r[6:8].copy(), r[8:10].copy(), float(r[10]), c))
+        pk = self.model.packed
+        rows = Rows(self.A[:m].copy(), self.kind[:nb].tolist(), self.start[:nb].tolist(),
+                    [tuple(p) for p in self.par[:nb].tolist()], contacts,
+                    [("contact", c) for c in range(nc)] + list(pk.labels))
+        return rows, (self.M.copy() if mass else None), poses
 
-def candidate_pairs(bodies, margin: float) -> list:
-    """The broad phase: index pairs ``(ia, ib)``, ``ia < ib``, of the ``[(body, Shape)]`` that
-    can touch (not two obstacles, not neighbouring links) and whose bounding circles (a wall:
-    none, it meets every shape) are within ``margin`` of each other."""
-    nb = len(bodies)
-    if nb < 2:
-        return []
-    centre = np.empty((nb, 2))
-    reach = np.empty(nb)
-    kind = np.empty(nb, dtype=np.int64)  # 0 link, 1 object, 2 obstacle
-    index = np.empty(nb, dtype=np.int64)
-    codes = {"link": 0, "object": 1, "obstacle": 2}
-    for i, (b, sh) in enumerate(bodies):
-        p = sh.pts
-        if sh.kind == "segment":  # the middle, half the length
-            (x0, y0), (x1, y1) = p.tolist()
-            centre[i] = (0.5 * (x0 + x1), 0.5 * (y0 + y1))
-            reach[i] = 0.5 * math.hypot(x1 - x0, y1 - y0) + sh.radius
-        elif sh.kind == "point":
-            centre[i] = p[0]
-            reach[i] = sh.radius
-        elif sh.kind == "halfplane":
-            centre[i] = p[0]
-            reach[i] = np.inf
-        else:
-            c = p.mean(axis=0)
-            centre[i] = c
-            reach[i] = np.sqrt(((p - c) ** 2).sum(axis=1)).max() + sh.radius
-        kind[i] = codes[b[0]]
-        index[i] = b[1]
-    ia, ib = np.triu_indices(nb, 1)
-    gap = np.hypot(*(centre[ia] - centre[ib]).T)
-    with np.errstate(invalid="ignore"):  # inf - inf of two walls: never compared (obstacles)
-        near = gap <= reach[ia] + reach[ib] + margin
-    ok = near & (kind[ia] != 2) & np.isfinite(reach[ia]) & ~(
-        (kind[ia] == 0) & (kind[ib] == 0) & (np.abs(index[ia] - index[ib]) < 2))
-    return list(zip(ia[ok].tolist(), ib[ok].tolist()))
+    def gaps(self, q, obj_poses, margin: float) -> list:
+        """``[(body_a, body_b, d)]``: the signed distance of every pair of bodies that can
+        touch (links that are not neighbours, links with objects and obstacles, objects with
+        each other and obstacles) whose bounding circles are within ``margin`` (m) of each
+        other, at ``q`` and the objects' poses, overlapping or not."""
+        self._state(q, obj_poses)
+        self.args.margin = float(margin)
+        self.args.pair_a = self.args.pair_b = -1
+        return self._read_gaps(self._call_gaps())
 
+    def gap(self, q, obj_poses, a, b) -> float:
+        """The signed distance (m) of bodies ``a`` and ``b`` (``("link", i)``, ...) at
+        ``q`` and the objects' poses."""
+        self._state(q, obj_poses)
+        self.args.pair_a, self.args.pair_b = self._index[a], self._index[b]
+        found = self._call_gaps()
+        self.args.pair_a = self.args.pair_b = -1
+        if found != 1:
+            raise ValueError(f"{a} and {b} are not a pair that can touch")
+        return float(self.gap_buf[4])
 
-def _point_jacobian(body, p, J, poses, obj_poses, n_s, n):
-    """(2, n): the velocity of point p fixed on ``body`` in the generalized velocities."""
-    out = np.zeros((2, n))
-    kind, i = body
-    if kind == "link":
-        r = p - poses[i][:2]
-        out[:, :n_s] = J[i][:2] + np.outer([-r[1], r[0]], J[i][2])
-    elif kind == "object":
-        r = p - obj_poses[i][:2]
-        c = n_s + 3 * i
-        out[:, c:c + 3] = [[1.0, 0.0, -r[1]], [0.0, 1.0, r[0]]]
-    return out
+    def _call_gaps(self) -> int:
+        self.args.ccap, out = self.gcap, self.args.out
+        self.args.out = self.gap_buf.ctypes.data
+        try:
+            found = self._gaps(self._address)
+        finally:
+            self.args.ccap, self.args.out = self.ccap, out
+        if found < 0:
+            if found == -3:
+                raise InputError("the state is not finite (q or the objects' poses)")
+            raise MemoryError("the scene's gaps ran out of memory") if found == -1 else \
+                ValueError(f"core_scene_gaps refused ({found})")
+        return min(found, self.gcap)
 
-
-def rows_of(scene: GeneralScene, masses, poses, J, *, index=None, obj_poses=None,
-            tol=None) -> tuple[Rows, np.ndarray]:
-    """The rows of one configuration (link COM poses ``poses`` (n_l, 3), link Jacobians
-    ``J`` (n_l, 3, n_s)) and the objects' poses. Raises :class:`InputError` on overlap
-    (``index``: the sample's, named in the message). ``obj_poses`` (n_objects, 3): the
-    objects where they are (a simulation's state; default: placed by the scene); ``tol``
-    (m): the contact tolerance (default the scene's, ``tolerance`` times its size)."""
-    n_s = J.shape[2]
-    n = n_s + 3 * scene.n_objects
-    size = scene_size(scene)
-    tol = scene.tolerance * size if tol is None else float(tol)
-    obj_poses = (place_objects(scene, poses) if obj_poses is None
-                 else np.asarray(obj_poses, dtype=float).reshape(scene.n_objects, 3))
-    bodies = shapes(scene, poses, obj_poses)
-    rows, kind, start, par, contacts, labels = [], [], [], [], [], []
-
-    def block(k, rs, p, label):
-        kind.append(k)
-        start.append(len(rows))
-        par.append(p)
-        rows.extend(rs)
-        labels.append(label)
-
-    for ia, ib in candidate_pairs(bodies, 2 * tol):
-        (ba, sa), (bb, sb) = bodies[ia], bodies[ib]
-        d, pairs = closest(sa, sb, size)
-        if d < -tol:
-            where = "" if index is None else f" in sample {index}"
-            raise InputError(
-                f"{scene.body_name(*ba)} and {scene.body_name(*bb)} overlap by "
-                f"{-d:.3g} m{where} (contacts hold within {tol:.3g} m); move them apart")
-        if d > tol:
-            continue
-        for ca, cb, nrm in pairs:
-            Ja = _point_jacobian(ba, ca, J, poses, obj_poses, n_s, n)
-            Jb = _point_jacobian(bb, cb, J, poses, obj_poses, n_s, n)
-            contacts.append(Contact(ba, bb, ca, cb, nrm, d, len(rows)))
-            block(UNILATERAL, [nrm @ (Jb - Ja)], (0.0, 0.0, 0.0),
-                  ("contact", len(contacts) - 1))
-    g = scene.gravity
-    for i, gr in enumerate(scene.ground):
-        x, y, phi = poses[i]
-        t = np.array([np.cos(phi), np.sin(phi)])
-        nl = np.array([-np.sin(phi), np.cos(phi)])
-        load = masses[i] * g
-        if gr.model in ("wheels", "ideal_wheels"):
-            row = nl @ J[i][:2] + gr.wheel_offset * J[i][2]
-            full = np.zeros(n)
-            full[:n_s] = row
-            if gr.model == "ideal_wheels":
-                block(FREE, [full], (0.0, 0.0, 0.0), ("wheel", i))
-            else:
-                block(BOX, [full], (gr.mu * load, 0.0, 0.0), ("wheel", i))
-        elif gr.model == "coulomb":
-            full = np.zeros((2, n))
-            full[:, :n_s] = J[i][:2]
-            block(DISC, list(full), (gr.mu * load, 0.0, 0.0), ("ground", i))
-        elif gr.model == "anisotropic":
-            full = np.zeros((2, n))
-            full[0, :n_s] = t @ J[i][:2]
-            full[1, :n_s] = nl @ J[i][:2]
-            block(SPLIT, list(full), (gr.mu_forward * load, gr.mu_backward * load,
-                                      gr.mu_lateral * load), ("ground", i))
-    for j, o in enumerate(scene.objects):
-        if o.mu is not None:
-            full = np.zeros((2, n))
-            full[:, n_s + 3 * j:n_s + 3 * j + 2] = np.eye(2)
-            block(DISC, list(full), (o.mu * o.mass * g, 0.0, 0.0), ("object_ground", j))
-    A = np.array(rows).reshape(len(rows), n)
-    return Rows(A, kind, start, par, contacts, labels), obj_poses
+    def _read_gaps(self, k) -> list:
+        g = self.gap_buf[:5 * k].reshape(k, 5)
+        return [((BODY_KINDS[int(r[0])], int(r[1])), (BODY_KINDS[int(r[2])], int(r[3])),
+                 float(r[4])) for r in g]

@@ -1,12 +1,12 @@
 """The linear maps of a general scene at rest for a fixed contact/ground state (eqs. 17,
 22-25, 28, 29 of the paper, taken with any set of constraint rows).
 
-At a configuration the rows ``A`` (:func:`~snakecg.scenes.contacts.rows_of`) split, for a
-given state of every block, into *held* rows ``H`` (a contact held, an ideal wheel, a wheel or
-friction set sticking: ``w_H = A_H a = 0``) and rows with a *fixed* force ``lam_F`` (a contact
-that opens: 0; a wheel sliding either way: ``+-mu m g``; a Coulomb or anisotropic set sliding
-at a given point of its boundary). Then, with ``I`` the bodies' inertia (snake and objects),
-``f = B tau + E f_obj`` (eq. 12) and ``G_HH = A_H I^-1 A_H^T`` (eq. 14)::
+At a configuration the rows ``A`` (the engine's: :class:`~snakecg.scenes.contacts.StateRows`)
+split, for a given state of every block, into *held* rows ``H`` (a contact held, an ideal
+wheel, a wheel or friction set sticking: ``w_H = A_H a = 0``) and rows with a *fixed* force
+``lam_F`` (a contact that opens: 0; a wheel sliding either way: ``+-mu m g``; a Coulomb or
+anisotropic set sliding at a given point of its boundary). Then, with ``I`` the bodies'
+inertia (snake and objects), ``f = B tau + E f_obj`` (eq. 12) and ``G_HH = A_H I^-1 A_H^T`` (eq. 14)::
 
     lam_H = -G_HH^-1 A_H I^-1 (f + A_F^T lam_F)              (eq. 17)
     a     = I^-1 (f + A_H^T lam_H + A_F^T lam_F)              (eqs. 18, 22-25)
@@ -22,7 +22,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..errors import InputError
-from .contacts import rows_of
+from .contacts import StateRows
 from .solve import BOX, DISC, FREE, HELD, SLIDE, SLIDE_NEG, SLIDE_POS, SPLIT, UNILATERAL, ZERO
 
 __all__ = ["Problem", "scene_problem", "state_maps", "maps", "boundary_point", "block_names",
@@ -44,16 +44,9 @@ class Problem:
     def __init__(self, model, q):
         na, ns, no = model.n_joints, model.n_coordinates, model.scene.n_objects
         qa = np.asarray(q, dtype=float).reshape(1, ns)
-        M_s = model.mass_matrix(qa)[0]
-        J = model.link_jacobians(qa).reshape(model.n_links, 3, ns)
-        P = model.link_poses(qa).reshape(model.n_links, 3)
-        self.rows, self.obj_poses = rows_of(model.scene, model.masses, P, J)
+        self.rows, M, self.obj_poses = StateRows(model).rows(qa[0])
         n = ns + 3 * no
-        M = np.zeros((n, n))
-        M[:ns, :ns] = M_s
-        for j in range(no):
-            M[ns + 3 * j + np.arange(3), ns + 3 * j + np.arange(3)] = model.object_inertia[j]
-        self.M, self.M_s = M, M_s
+        self.M, self.M_s = M, M[:ns, :ns].copy()
         self.B = np.zeros((n, na))
         self.B[3:ns] = np.eye(na)
         self.E = np.zeros((n, 3 * no))

@@ -19,7 +19,8 @@ its set's boundary, opposing the sliding velocity); a contact whose impulse woul
 
 Then ``x+ = x + h V+``. Before the step is accepted the signed distance of every pair of
 bodies that can touch (non-neighbour links, links with objects and obstacles, objects with
-objects and obstacles: :func:`snakecg.scenes.geometry.closest`) is evaluated at ``x+``; where
+objects and obstacles: the engine's closest points, ``snakecg/engine/scene_geometry.c``) is
+evaluated at ``x+``; where
 one is below ``-tolerance`` the time it reaches ``-tolerance / 4`` along the step is found by
 Brent's method on the distance of the interpolated state ``x + s h V+`` and the step is
 taken again, shortened to it. A pair that comes within the tolerance with a closing velocity
@@ -39,12 +40,12 @@ import numpy as np
 from scipy.optimize import brentq
 
 from ..errors import InputError
-from .contacts import candidate_pairs, place_objects, rows_of, scene_size, shapes
-from .geometry import closest
+from .contacts import StateRows, place_objects
+from .packing import scene_size
 from .run_record import SceneEvent, SceneRun
 from .solve import BOX, DISC, SPLIT, solve
 
-__all__ = ["SceneState", "SceneEvent", "SceneRun", "simulate_scene", "pair_gaps"]
+__all__ = ["SceneState", "SceneEvent", "SceneRun", "simulate_scene"]
 
 #: the shortest step (s) the root finding may ask for before the run stops (penetration)
 H_MIN = 1e-9
@@ -68,23 +69,6 @@ class SceneState:
     v_obj: np.ndarray
 
 
-def pair_gaps(scene, poses, obj_poses, reach: float) -> list:
-    """``[(body_a, body_b, d)]``: the signed distance of every pair of bodies that can touch
-    (links that are not neighbours, links with objects and obstacles, objects with each other
-    and obstacles) whose bounding circles are within ``reach`` of each other."""
-    bodies = shapes(scene, poses, obj_poses)
-    size = scene_size(scene)
-    return [(bodies[ia][0], bodies[ib][0], float(closest(bodies[ia][1], bodies[ib][1],
-                                                         size)[0]))
-            for ia, ib in candidate_pairs(bodies, reach)]
-
-
-def _pair_gap(scene, poses, obj_poses, a, b, size) -> float:
-    """The signed distance of bodies ``a`` and ``b``."""
-    found = dict(shapes(scene, poses, obj_poses))
-    return float(closest(found[a], found[b], size)[0])
-
-
 class _Stepper:
     """One run's state and the model's functions at a configuration."""
 
@@ -94,21 +78,12 @@ class _Stepper:
         self.n = self.ns + 3 * self.no
         self.tol = tol
         self.f_obj = f_obj
-        self.masses = np.asarray(model.scene.robot.mass, dtype=float)
-        self.Mo = np.asarray(model.object_inertia, dtype=float).reshape(-1)
+        self.engine = StateRows(model, tol)
 
     def geometry(self, q, qo):
-        """Mass matrix, link poses, Jacobians and rows at ``(q, qo)``."""
-        m = self.model
-        M_s = m.mass_matrix(q)
-        P = m.link_poses(q)
-        J = m.link_jacobians(q)
-        rows, _ = rows_of(self.scene, self.masses, P, J, obj_poses=qo, tol=self.tol)
-        Mf = np.zeros((self.n, self.n))
-        Mf[:self.ns, :self.ns] = M_s
-        idx = np.arange(self.ns, self.n)
-        Mf[idx, idx] = self.Mo
-        return Mf, P, rows
+        """The bodies' inertia and the rows at ``(q, qo)`` (the engine's, one call)."""
+        rows, Mf, _ = self.engine.rows(q, qo)
+        return Mf, rows
 
     def solve_rows(self, Mf, f, rows, h, gaps):
         """The velocity-level problem with the rows' sets scaled by ``h`` and contact offsets
@@ -195,8 +170,7 @@ def simulate_scene(model, q0, duration, *, v0=None, tau=None, dt=1e-3, q_obj0=No
     q, v, qo, vo, fo = _check_args(model, q0, v0, duration, dt, q_obj0, v_obj0, f_obj,
                                    tolerance)
     scene = model.scene
-    size = scene_size(scene)
-    tol = 1e-5 * size if tolerance is None else float(tolerance)
+    tol = 1e-5 * scene_size(scene) if tolerance is None else float(tolerance)
     kind, law = torque_law(np.zeros(model.n_joints) if tau is None else tau, model.n_joints)
     st = _Stepper(model, tol, fo.reshape(-1))
     ns, n = st.ns, st.n
@@ -215,14 +189,11 @@ def simulate_scene(model, q0, duration, *, v0=None, tau=None, dt=1e-3, q_obj0=No
                        V[ns:].reshape(-1, 3).copy())
         return check_tau(law(t, s), model.n_joints, t)
 
-    def poses_at(xx):
-        return model.link_poses(xx[:ns]), xx[ns:].reshape(-1, 3)
-
     def min_gap(rows):  # the contacts' (every other pair is farther than the tolerance)
         return min((c.gap for c in rows.contacts), default=math.inf)
 
     try:
-        Mf, P, rows = st.geometry(x[:ns], x[ns:].reshape(-1, 3))
+        Mf, rows = st.geometry(x[:ns], x[ns:].reshape(-1, 3))
     except InputError as exc:
         return rec.finish("penetration", 0.0, str(exc))
     t = 0.0
@@ -255,14 +226,13 @@ def simulate_scene(model, q0, duration, *, v0=None, tau=None, dt=1e-3, q_obj0=No
                 break
             except InputError as exc:
                 refusal = str(exc)
-            P1, op1 = poses_at(xp)
             # bounding circles apart: no overlap (the pairs farther than that need no distance)
-            bad = [(a, b, d) for a, b, d in pair_gaps(scene, P1, op1, 2.0 * tol) if d < -tol]
+            bad = [(a, b, d) for a, b, d in st.engine.gaps(xp[:ns], xp[ns:], 2.0 * tol)
+                   if d < -tol]
             if not bad:
                 return rec.finish("penetration", t, refusal)
             # the time along the step where the first violating pair reaches -tol/4
-            gaps0 = {(a, b): _pair_gap(scene, P, x[ns:].reshape(-1, 3), a, b, size)
-                     for a, b, _ in bad}
+            gaps0 = {(a, b): st.engine.gap(x[:ns], x[ns:], a, b) for a, b, _ in bad}
             s_hit = 1.0
             for a, b, d1 in bad:
                 d0 = gaps0.get((a, b), math.inf)
@@ -272,8 +242,8 @@ def simulate_scene(model, q0, duration, *, v0=None, tau=None, dt=1e-3, q_obj0=No
                     break
 
                 def dist(s, a=a, b=b, target=target):
-                    Ps, ops = poses_at(x + s * h * Vp)
-                    return _pair_gap(scene, Ps, ops, a, b, size) - target
+                    xs = x + s * h * Vp
+                    return st.engine.gap(xs[:ns], xs[ns:], a, b) - target
 
                 s_hit = min(s_hit, brentq(dist, 0.0, 1.0, xtol=1e-12, rtol=1e-10))
             h = h * s_hit
@@ -291,7 +261,7 @@ def simulate_scene(model, q0, duration, *, v0=None, tau=None, dt=1e-3, q_obj0=No
         t += h
         x, V = xp, Vp
         nstep += 1
-        Mf, P, rows = geo
+        Mf, rows = geo
         # inelastic impact where a new contact closes with a closing velocity (the contacts
         # of the step's rows are the step's solve's)
         new = [c for c in rows.contacts if (c.a, c.b) not in held]
