@@ -1,5 +1,5 @@
 """The reference of the general scenes' contacts and rows: the closest points
-(:mod:`snakecg.scenes.geometry`, plain NumPy) and the rows of eqs. 7-11 built per sample in
+(tests/scenes_geometry_reference.py, plain NumPy) and the rows of eqs. 7-11 built per sample in
 Python, written apart from the engine's C (``snakecg/engine/scene_geometry.c``,
 ``scene_rows.c``) that the tests hold against it. Nothing here calls the engine.
 """
@@ -11,11 +11,13 @@ import numpy as np
 from snakecg.errors import InputError
 from snakecg.scenes.contacts import Contact, Rows, link_ends, place_objects
 from snakecg.scenes.description import GeneralScene
-from snakecg.scenes.geometry import Shape, box_corners, closest
+from snakecg.scenes.geometry import box_corners
+
+from scenes_geometry_reference import Shape, closest
 from snakecg.scenes.packing import scene_size  # the scene's extent: a definition, shared
 from snakecg.scenes.solve import BOX, DISC, FREE, SPLIT, UNILATERAL
 
-__all__ = ["shapes", "rows_of"]
+__all__ = ["shapes", "rows_of", "pair_gaps"]
 
 
 def shapes(scene: GeneralScene, poses, obj_poses) -> list:
@@ -54,26 +56,9 @@ def _point_jacobian(body, p, J, poses, obj_poses, n_s, n):
     return out
 
 
-def rows_of(scene: GeneralScene, masses, poses, J, *, index=None) -> tuple[Rows, np.ndarray]:
-    """The rows of one configuration (link COM poses ``poses`` (n_l, 3), link Jacobians
-    ``J`` (n_l, 3, n_s)) and the objects' poses. Raises :class:`InputError` on overlap
-    (``index``: the sample's, named in the message)."""
-    n_s = J.shape[2]
-    n = n_s + 3 * scene.n_objects
-    size = scene_size(scene)
-    tol = scene.tolerance * size
-    obj_poses = place_objects(scene, poses)
-    bodies = shapes(scene, poses, obj_poses)
-    rows, kind, start, par, contacts, labels = [], [], [], [], [], []
-
-    def block(k, rs, p, label):
-        kind.append(k)
-        start.append(len(rows))
-        par.append(p)
-        rows.extend(rs)
-        labels.append(label)
-
-    # broad phase: a bounding circle per shape (a wall: none), pairs farther apart skipped
+def _pairs(bodies, margin):
+    """The broad phase: ``(ia, ib)`` of the bodies that can touch (not two obstacles, not
+    neighbouring links) whose bounding circles (a wall: none) are within ``margin``."""
     centre = np.array([sh.pts.mean(axis=0) for _, sh in bodies])
     reach = np.array([np.inf if sh.kind == "halfplane" else
                       np.sqrt(((sh.pts - sh.pts.mean(axis=0)) ** 2).sum(axis=1)).max()
@@ -86,22 +71,60 @@ def rows_of(scene: GeneralScene, masses, poses, J, *, index=None) -> tuple[Rows,
             bb, sb = bodies[ib]
             if ba[0] == "link" and bb[0] == "link" and abs(ba[1] - bb[1]) < 2:
                 continue
-            if np.hypot(*(centre[ia] - centre[ib])) > reach[ia] + reach[ib] + 2 * tol:
+            if np.hypot(*(centre[ia] - centre[ib])) > reach[ia] + reach[ib] + margin:
                 continue
-            d, pairs = closest(sa, sb, size)
-            if d < -tol:
-                where = "" if index is None else f" in sample {index}"
-                raise InputError(
-                    f"{scene.body_name(*ba)} and {scene.body_name(*bb)} overlap by "
-                    f"{-d:.3g} m{where} (contacts hold within {tol:.3g} m); move them apart")
-            if d > tol:
-                continue
-            for ca, cb, nrm in pairs:
-                Ja = _point_jacobian(ba, ca, J, poses, obj_poses, n_s, n)
-                Jb = _point_jacobian(bb, cb, J, poses, obj_poses, n_s, n)
-                contacts.append(Contact(ba, bb, ca, cb, nrm, d, len(rows)))
-                block(UNILATERAL, [nrm @ (Jb - Ja)], (0.0, 0.0, 0.0),
-                      ("contact", len(contacts) - 1))
+            yield ia, ib
+
+
+def pair_gaps(scene: GeneralScene, poses, obj_poses, margin: float) -> list:
+    """``[(body_a, body_b, d)]``: the signed distance of every pair that can touch whose
+    bounding circles are within ``margin`` of each other."""
+    bodies = shapes(scene, poses, obj_poses)
+    size = scene_size(scene)
+    return [(bodies[ia][0], bodies[ib][0], float(closest(bodies[ia][1], bodies[ib][1],
+                                                         size)[0]))
+            for ia, ib in _pairs(bodies, margin)]
+
+
+def rows_of(scene: GeneralScene, masses, poses, J, *, index=None, obj_poses=None,
+            tol=None) -> tuple[Rows, np.ndarray]:
+    """The rows of one configuration (link COM poses ``poses`` (n_l, 3), link Jacobians
+    ``J`` (n_l, 3, n_s)) and the objects' poses. Raises :class:`InputError` on overlap
+    (``index``: the sample's, named in the message). ``obj_poses`` (n_objects, 3): the
+    objects where they are (a simulation's state; default: placed by the scene); ``tol`` (m):
+    the contact tolerance (default the scene's)."""
+    n_s = J.shape[2]
+    n = n_s + 3 * scene.n_objects
+    size = scene_size(scene)
+    tol = scene.tolerance * size if tol is None else float(tol)
+    obj_poses = (place_objects(scene, poses) if obj_poses is None
+                 else np.asarray(obj_poses, dtype=float).reshape(scene.n_objects, 3))
+    bodies = shapes(scene, poses, obj_poses)
+    rows, kind, start, par, contacts, labels = [], [], [], [], [], []
+
+    def block(k, rs, p, label):
+        kind.append(k)
+        start.append(len(rows))
+        par.append(p)
+        rows.extend(rs)
+        labels.append(label)
+
+    for ia, ib in _pairs(bodies, 2 * tol):
+        (ba, sa), (bb, sb) = bodies[ia], bodies[ib]
+        d, pairs = closest(sa, sb, size)
+        if d < -tol:
+            where = "" if index is None else f" in sample {index}"
+            raise InputError(
+                f"{scene.body_name(*ba)} and {scene.body_name(*bb)} overlap by "
+                f"{-d:.3g} m{where} (contacts hold within {tol:.3g} m); move them apart")
+        if d > tol:
+            continue
+        for ca, cb, nrm in pairs:
+            Ja = _point_jacobian(ba, ca, J, poses, obj_poses, n_s, n)
+            Jb = _point_jacobian(bb, cb, J, poses, obj_poses, n_s, n)
+            contacts.append(Contact(ba, bb, ca, cb, nrm, d, len(rows)))
+            block(UNILATERAL, [nrm @ (Jb - Ja)], (0.0, 0.0, 0.0),
+                  ("contact", len(contacts) - 1))
     g = scene.gravity
     for i, gr in enumerate(scene.ground):
         x, y, phi = poses[i]

@@ -1,6 +1,6 @@
 """General scenes: the description and its validation, the TOML file, the command line, the
-geometry's closest points (against dense sampling of the shapes' boundaries) and the
-drawing."""
+tests' reference closest points (tests/scenes_geometry_reference.py, against dense sampling
+of the shapes' boundaries) and the drawing."""
 
 from __future__ import annotations
 
@@ -14,8 +14,10 @@ import pytest
 from snakecg import Robot, Scene
 from snakecg.errors import InputError
 from snakecg.scenes import GeneralScene, Ground, Obstacle, SceneObject
-from snakecg.scenes.geometry import Shape, box_corners, closest
+from snakecg.scenes.geometry import box_corners
 from snakecg.scenes.toml_reading import read_scene
+
+from scenes_geometry_reference import Shape, closest
 
 SCENE = """
 [robot]

@@ -12,10 +12,10 @@ import snakecg
 from snakecg import Robot
 from snakecg.errors import InputError
 from snakecg.scenes import GeneralScene, Ground, Obstacle, SceneObject
-from snakecg.scenes.contacts import link_ends
+from snakecg.scenes.contacts import StateRows, link_ends, place_objects
 
 from scenes_reference import ALL_MODELS, dense_problem, peg_obstacles, random_scene
-from scenes_rows_reference import rows_of
+from scenes_rows_reference import pair_gaps, rows_of
 
 
 def _reference(model, q):
@@ -79,6 +79,54 @@ def test_contacts_and_rows_against_the_python_reference(rng):
                                    obj_poses, rtol=0, atol=1e-14 * scale)
         compared += 1
     assert compared >= 40 and refused >= 1
+
+
+def test_rows_at_simulation_states_against_the_python_reference(rng):
+    """The engine's rows at a simulation's state (core_scene_rows): random scenes, the
+    configuration moved off the one the pegs were placed at and every object moved and
+    turned off its placement by about the tolerance (a random one, 1e-6 to 1e-3 of the
+    scene's size): the same contacts (bodies, points, normals, gaps), rows to 1e-12, blocks
+    and objects' poses as the reference given the same poses and tolerance, or the same
+    overlap refused; the bodies' inertia against the generated mass matrix and the objects'
+    masses; the pairs' distances (core_scene_gaps) against the reference's closest points."""
+    compared = refused = touching = gaps = 0
+    for _ in range(60):
+        model, q, _ = _random_model(rng)
+        size = model.packed.vector[4]
+        tol = float(size * 10 ** rng.uniform(-6, -3))
+        q = q + rng.normal(scale=0.3 * tol / max(1.0, size), size=q.shape)
+        P, J = model.link_poses(q), model.link_jacobians(q)
+        placed = place_objects(model.scene, P)
+        qo = placed + rng.normal(size=placed.shape) * [tol, tol, tol / size]
+        engine = StateRows(model, tol)
+        try:
+            ref = rows_of(model.scene, model.masses, P, J, obj_poses=qo, tol=tol)
+        except InputError as exc:
+            with pytest.raises(InputError) as got:
+                engine.rows(q, qo)
+            assert str(got.value) == str(exc)
+            refused += 1
+        else:
+            rows, M, poses = engine.rows(q, qo)
+            _same_rows(ref[0], rows, size)
+            np.testing.assert_array_equal(poses, qo)
+            ns = model.n_coordinates
+            Mref = np.zeros_like(M)
+            Mref[:ns, :ns] = model.mass_matrix(q)
+            Mref[ns:, ns:] = np.diag(np.ravel([[o.mass, o.mass, o.plate_inertia]
+                                               for o in model.scene.objects]))
+            np.testing.assert_allclose(M, Mref, rtol=1e-14, atol=0)
+            compared += 1
+            touching += len(rows.contacts) > 0
+        margin = float(rng.choice([2 * tol, 0.05 * size]))
+        want = pair_gaps(model.scene, P, qo, margin)
+        got = engine.gaps(q, qo, margin)
+        assert [(a, b) for a, b, _ in got] == [(a, b) for a, b, _ in want]
+        for (a, b, d), (_, _, dr) in zip(got, want):
+            assert abs(d - dr) <= 1e-13 * size
+            assert engine.gap(q, qo, a, b) == d
+            gaps += 1
+    assert compared >= 25 and refused >= 3 and touching >= 10 and gaps >= 60
 
 
 def test_touching_boxes_walls_and_self_contact_against_the_reference():
