@@ -164,13 +164,17 @@ def test_a_disc_under_coulomb_friction_stops_at_the_closed_form_distance():
 
 # the velocity-level step against an independent conic QP -----------------------------------
 def test_one_step_against_cvxpy_clarabel(rng):
-    """One step with a peg contact, Coulomb, bounded and ideal wheels, a disc object with
-    ground friction: V+ of the engine's solve equals the minimiser of the same conic QP
-    written apart with dense NumPy rows and solved by Clarabel."""
+    """One step of the engine (core_scene_step) with a peg contact, Coulomb, bounded and ideal
+    wheels, a disc object with ground friction, both contacts' gaps inside the tolerance on
+    either side (the rows' offsets g / h): V+ equals the minimiser of the same conic QP
+    written apart with the reference's rows (tests/scenes_rows_reference.py), the generated
+    mass matrix and bias forces, solved by Clarabel."""
     cp = pytest.importorskip("cvxpy")
     pytest.importorskip("clarabel")
-    from snakecg.scenes.contacts import link_ends
-    from snakecg.scenes.stepping import _Stepper
+    from scenes_rows_reference import rows_of
+
+    from snakecg.scenes.contacts import link_ends, place_objects
+    from snakecg.scenes.stepping import STEP_NOT_CONVERGED, _Stepper
 
     robot = snakecg.Robot(joints=3)
     ground = (Ground(model="coulomb", mu=0.3), Ground(model="wheels", mu=0.2),
@@ -181,28 +185,35 @@ def test_one_step_against_cvxpy_clarabel(rng):
     ends = link_ends(base, P)
     mid = 0.5 * (ends[1, 0] + ends[1, 1])
     t = (ends[1, 1] - ends[1, 0]) / 0.15
-    peg = Obstacle(shape="peg", center=tuple(mid + 0.05 * np.array([-t[1], t[0]])), radius=0.03)
+    peg = Obstacle(shape="peg", center=tuple(mid + (0.05 + 3e-7) * np.array([-t[1], t[0]])),
+                   radius=0.03)  # 3e-7 m off link 2
     disc = SceneObject(shape="disc", radius=0.04, mass=0.7, mu=0.4,
                        touching={"link": 4, "offset": 0.07, "side": "right"})
     scene = GeneralScene(robot, radius=0.02, ground=ground, objects=(disc,), obstacles=(peg,))
     model = load_scene(scene)
-    st = _Stepper(model, 1e-6, np.zeros(3))
-    from snakecg.scenes.contacts import place_objects
-
-    qo = place_objects(scene, model.link_poses(q))
-    Mf, rows = st.geometry(q, qo)
-    assert len(rows.contacts) == 2  # the peg and the disc
+    tol = 1e-6
+    J = model.link_jacobians(q)
+    qo = place_objects(scene, P)
+    placed, _ = rows_of(scene, model.masses, P, J, obj_poses=qo, tol=tol)
+    qo[0, :2] -= 2e-7 * placed.contacts[1].normal  # the disc 2e-7 m into link 4
+    rows, _ = rows_of(scene, model.masses, P, J, obj_poses=qo, tol=tol)
+    assert [c.b for c in rows.contacts] == [("obstacle", 0), ("object", 0)]
+    assert [c.gap for c in rows.contacts] == pytest.approx([3e-7, -2e-7], abs=1e-12)
     h = 1e-3
-    # gaps within the tolerance on both sides: the rows' offsets g / h of the solve
-    rows.contacts[0].gap, rows.contacts[1].gap = 3e-7, -2e-7
     V = np.r_[rng.normal(size=6) * 0.3, rng.normal(size=3) * 0.2]
-    V[:6] -= 0  # any velocity; the ideal wheel's row need not hold before the step
     tau = rng.normal(size=3)
+    st = _Stepper(model, tol, np.zeros(3))
+    st.x[:] = np.r_[q, qo.ravel()]
+    st.V[:] = V
+    assert st.call(0.0) == 0 and len(st.rows().contacts) == 2
+    st.tau[:] = tau
+    assert st.call(h) != STEP_NOT_CONVERGED
+    Mf = np.zeros((9, 9))
+    Mf[:6, :6] = model.mass_matrix(q)
+    Mf[6:, 6:] = np.diag([0.7, 0.7, disc.plate_inertia])
     fgen = np.zeros(9)
     fgen[3:6] = tau
     fgen[:6] -= model.bias_forces(q, V[:6])
-    out = st.solve_rows(Mf, Mf @ V + h * fgen, rows, h, None)
-    assert out["info"]["status"] == 0
     # the same problem, independently: min 1/2 |x - v*|_M^2 + h sum r_k |A_k x| s.t. ...
     vstar = V + h * np.linalg.solve(Mf, fgen)
     x = cp.Variable(9)
@@ -230,7 +241,7 @@ def test_one_step_against_cvxpy_clarabel(rng):
         cons.append(rows.A[c.row] @ x + c.gap / h >= 0)
     cp.Problem(cp.Minimize(cost), cons).solve(solver=cp.CLARABEL, tol_gap_abs=1e-12,
                                               tol_gap_rel=1e-12, tol_feas=1e-12)
-    np.testing.assert_allclose(out["a"], x.value, atol=2e-6 * np.abs(x.value).max())
+    np.testing.assert_allclose(st.Vp, x.value, atol=2e-6 * np.abs(x.value).max())
 
 
 # obstacle-aided locomotion ------------------------------------------------------------------

@@ -56,6 +56,9 @@ class Core:
             lib.entry_or_none(name) for name in ("core_scene_rows", "core_scene_gaps"))
         """scene_rows.c's ``core_scene_rows`` and ``core_scene_gaps``: a general scene's rows,
         and its pairs' distances, at a simulation's state (a ``SceneStateCall``)."""
+        self.scene_step = lib.entry_or_none("core_scene_step")
+        """scene_step.c's ``core_scene_step``: one time step of a general scene (a
+        ``SceneStep``)."""
         self.scene_solve_b = lib.entry_or_none("core_scene_solve_b")
         """scene_solve.c's ``core_scene_solve_b``: the same with row offsets (``w = A a + c``),
         the velocity-level step of :mod:`snakecg.scenes.stepping`."""

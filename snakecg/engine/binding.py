@@ -25,6 +25,7 @@ __all__ = [
     "Run",
     "SceneCall",
     "SceneStateCall",
+    "SceneStep",
     "Segment",
     "Settle",
     "address",
@@ -73,6 +74,8 @@ PROTOTYPES: dict[str, tuple[list, object]] = {
     "core_scene_solve_b": ([_I, _I, _I, _I] + [_P] * 9 + [_I] + [_P] * 5, _INT),
     "core_scene_rows": ([_P], _INT),
     "core_scene_gaps": ([_P], _INT),
+    # scene_step.c
+    "core_scene_step": ([_P], _INT),
 }
 #: A generated function's batched driver: (n, inputs, strides, outputs).
 _BATCH = ([_I, ctypes.POINTER(_P), ctypes.POINTER(_I), ctypes.POINTER(_P)], _INT)
@@ -185,6 +188,18 @@ class SceneStateCall(ctypes.Structure):
     _fields_ = [("pk", _P), ("q", _P), ("qo", _P), ("tol", _D), ("margin", _D), ("ccap", _I),
                 ("mcap", _I), ("pair_a", _I), ("pair_b", _I), ("out", _P), ("M", _P),
                 ("A", _P), ("par", _P), ("kind", _P), ("start", _P)]
+
+
+class SceneStep(ctypes.Structure):
+    """The arguments of ``core_scene_step`` (scene_step.c's ``sc_scene_step``): one time step
+    of a general scene."""
+
+    _fields_ = [("pk", _P), ("tol", _D), ("h", _D), ("impact_speed", _D), ("tau", _P),
+                ("fo", _P), ("x", _P), ("V", _P), ("ccap", _I), ("mcap", _I), ("M", _P),
+                ("A", _P), ("par", _P), ("out", _P), ("kind", _P), ("start", _P), ("M1", _P),
+                ("A1", _P), ("par1", _P), ("out1", _P), ("kind1", _P), ("start1", _P),
+                ("Vp", _P), ("lam", _P), ("info", _P), ("ilam", _P), ("iinfo", _P),
+                ("acc", _P), ("status", _I)]
 
 
 class Geometry(ctypes.Structure):

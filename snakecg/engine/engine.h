@@ -25,7 +25,7 @@
  *   pieces.c, sphere.c                 the exact extremes' pieces and faces (exported)
  *   scene_sets.c, scene_solve.c        a general scene's exact solve (exported: core_scene_solve;
  *                                      core_scene_solve_b with row offsets, for stepping)
- *   scene_geometry.c, scene_rows.c     contacts, rows (core_scene_rows), forward (core_scene_forward)
+ *   scene_geometry.c, scene_rows.c, scene_step.c   contacts, rows, forward, a time step
  *
  * One prefix (sc_), one integer type (sc_int). The library exports the model's prefixed entry
  * points only (SNAKECG_EXPORT); the engine's own functions across its files are hidden
@@ -70,11 +70,13 @@ int SNAKECG_CR(const double **arg, double **res, sc_int *iw, double *w, int mem)
 int SNAKECG_CR_WORK(sc_int *sz_arg, sc_int *sz_res, sc_int *sz_iw, sc_int *sz_w);
 int SNAKECG_LJ(const double **arg, double **res, sc_int *iw, double *w, int mem);
 int SNAKECG_LJ_WORK(sc_int *sz_arg, sc_int *sz_res, sc_int *sz_iw, sc_int *sz_w);
-#ifdef SNAKECG_LP /* a planar model's link poses and mass matrix (scene_rows.c) */
+#ifdef SNAKECG_LP /* a planar model's link poses, mass matrix, bias forces (scene_*.c) */
 int SNAKECG_LP(const double **arg, double **res, sc_int *iw, double *w, int mem);
 int SNAKECG_LP_WORK(sc_int *sz_arg, sc_int *sz_res, sc_int *sz_iw, sc_int *sz_w);
 int SNAKECG_MM(const double **arg, double **res, sc_int *iw, double *w, int mem);
 int SNAKECG_MM_WORK(sc_int *sz_arg, sc_int *sz_res, sc_int *sz_iw, sc_int *sz_w);
+int SNAKECG_BF(const double **arg, double **res, sc_int *iw, double *w, int mem);
+int SNAKECG_BF_WORK(sc_int *sz_arg, sc_int *sz_res, sc_int *sz_iw, sc_int *sz_w);
 #endif
 /* row states (snakecg/solver.py); SUPPORT: a bilateral row held always that may depend on the
  * held rows (a spatial snake's ground rows, snakecg/spatial/analysis.py) */
@@ -369,8 +371,7 @@ SC_INTERNAL void sc_kkt_certificate(sc_int n, const double *x, const double *H, 
                                     const double *hi, const double *Q, double r2, int convex,
                                     double active, double stationarity_tol, double *values,
                                     double *lam, double *mu, sc_qp_work *w);
-/* ---- the optimal-torque queries (maps.c, optimal.c, max_sr.c, push.c,
- * wheel_states.c).
+/* ---- the optimal-torque queries (maps.c, optimal.c, max_sr.c, push.c, wheel_states.c).
  *
  * One call answers a batch of configurations, each by the same steps (docs/how-to/optimize.md):
  * the system at rest with the object placed (the generated contact_system at rest), the
@@ -427,14 +428,8 @@ enum {
   SC_CHECK_A_MIN = 7         /* d . a_obj, a_min */
 };
 /* certificate kinds (OPT_OUT_certificate) */
-enum {
-  SC_CERT_NONE = 0,
-  SC_CERT_QP = 1,
-  SC_CERT_LP = 2,
-  SC_CERT_QCQP = 3,
-  SC_CERT_EIGEN = 4,
-  SC_CERT_STATE = 5
-};
+enum { SC_CERT_NONE = 0, SC_CERT_QP = 1, SC_CERT_LP = 2, SC_CERT_QCQP = 3, SC_CERT_EIGEN = 4,
+       SC_CERT_STATE = 5 };
 /* binding codes (OPT_OUT_binding): then 3 + j for joint j (from 0), 3 + NA + i - 1 for the
  * wheel of link i (from 1) */
 enum { SC_BIND_CONTACT = 0, SC_BIND_ELLIPSOID = 1, SC_BIND_NORMAL = 2, SC_BIND_JOINT = 3 };
@@ -573,18 +568,18 @@ SC_INTERNAL int sc_in_set(const sc_problem *p, sc_int k, double *l, double tol, 
 SC_INTERNAL int sc_still(const sc_problem *p, sc_int k);
 SC_INTERNAL int sc_min_norm_face(sc_problem *p, double *work);
 SC_INTERNAL void sc_block_min(const sc_problem *p, sc_int k, const double *c, double *l);
-int SNAKECG_EXPORT(core_scene_solve)(sc_int ns, sc_int n, sc_int mmax, sc_int nbmax,
+int SNAKECG_EXPORT(core_scene_solve_b)(sc_int ns, sc_int n, sc_int mmax, sc_int nbmax,
   const sc_int *m, const sc_int *nb, const double *M, const double *f, const double *A,
-  const sc_int *kind, const sc_int *start, const double *par, sc_int max_sweeps, double *lam,
-  double *a, double *w, double *state, double *info);
+  const double *c, const sc_int *kind, const sc_int *start, const double *par,
+  sc_int max_sweeps, double *lam, double *a, double *w, double *state, double *info);
 /* ---- a general scene's shapes, contacts (scene_geometry.c), rows and forward (scene_rows.c) ----
  * The packed scene's header and records' widths (their fields: snakecg/scenes/packing.py). */
 enum { SP_NO = 0, SP_NOB, SP_RADIUS, SP_TOL, SP_SIZE, SP_NG, SP_MG, SP_LINKS, SP_OBJECTS,
        SP_OBSTACLES, SP_GROUND, SP_K, SP_HEAD = 16, LINK_W = 2, OBJ_W = 12, OBS_W = 14 };
 enum { SC_SEGMENT = 0, SC_POINT = 1, SC_POLYGON = 2, SC_HALFPLANE = 3 };
 #define SC_TOUCH_MAX 64 /* candidate point pairs of two shapes (4 x 4 edges, 4 each) */
-/* a core (np points: segment, point, polygon; a half-plane's point, normal into the free
- * side) and a radius; a contact's surface points and its unit normal from a to b */
+/* a core (np points; a half-plane's point and normal into the free side) and a radius; a
+ * contact's surface points and its unit normal from a to b */
 typedef struct { int kind, np; double p[4][2], radius, normal[2]; } sc_shape;
 typedef struct { double a[2], b[2], n[2]; } sc_touch;
 SC_INTERNAL void sc_shape_centroid(const sc_shape *s, double *c);
@@ -592,8 +587,13 @@ SC_INTERNAL double sc_shape_closest(const sc_shape *A, const sc_shape *B, double
                                     sc_touch *out, int *count);
 SC_INTERNAL void sc_scene_place(const double *pk, const double *P, const double *qo,
                                 sc_shape *shape, double *pose, double *centre, double *reach);
-int SNAKECG_EXPORT(core_scene_forward)(const double *pk, sc_int n, const double *q, sc_int sq,
-  const double *tau, sc_int st, const double *fo, sc_int sf, sc_int ccap, sc_int mcap,
-  double *out, double *A, double *lam, double *w, double *state);
+/* The rows of a state (scene_rows.c's core_scene_rows, for scene_step.c): outputs RO_*, then
+ * the objects' poses (3 n_o) and the contacts (CR_W each); its status (0, SS_*) or < 0. */
+enum { RO_STATUS = 0, RO_NC, RO_M, RO_NB, RO_OVERLAP, RO_POSE = RO_OVERLAP + 6, CR_W = 14 };
+enum { SS_OVERLAP = 3, SS_MORE = 4, SS_FAILED = 6 };
+SC_INTERNAL int sc_scene_state_rows(const double *pk, const double *q, const double *qo,
+                                    double tol, sc_int ccap, sc_int mcap, double *out,
+                                    double *M, double *A, double *par, sc_int *kind,
+                                    sc_int *start);
 
 #endif

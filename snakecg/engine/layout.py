@@ -38,12 +38,15 @@ FUNCTIONS = {
     "link_jacobians": ("LJ", ("q", "K"), ("J",)),
 }
 
-#: The generated functions a planar model's general-scene forward calls (scene_rows.c):
+#: The generated functions a planar model's general-scene forward and time step call
+#: (scene_rows.c, scene_step.c):
 #: defined for a planar model (a spatial model's have other outputs, and its contact library
 #: compiles no scene_rows.c).
 SCENE_FUNCTIONS = {
     "link_poses": ("LP", ("q", "K"), ("poses",)),
     "mass_matrix": ("MM", ("q", "K"), ("M",)),
+    # scene_step.c: a time step's generalized force
+    "bias_forces": ("BF", ("q", "v", "K"), ("h",)),
 }
 
 _IDENT = re.compile(r"[A-Za-z_][A-Za-z0-9_]*\Z")

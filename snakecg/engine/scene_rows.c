@@ -33,11 +33,10 @@ enum { GB_WHEEL = 0, GB_COULOMB = 1, GB_SPLIT = 2, GB_OBJECT = 3 };
 /* one sample's outputs: the solve's info (scene_solve.c's INFO_* order), then these */
 enum { SO_INFO = 0, SO_NC = 8, SO_NORM_QDD, SO_NORM_A, SO_NORM_L, SO_SR, SO_OVERLAP,
        SO_QDD = SO_OVERLAP + 6 };
-enum { CR_W = 14 };   /* a contact: body a (kind, index), b, point a (2), b (2), normal (2),
-                         gap, force, state, pad */
-/* sample status (after scene_solve.c's 0 solved, 1 not converged, 2 singular mass; 5, more
- * contacts than the solve takes, is the caller's) */
-enum { SS_OVERLAP = 3, SS_MORE = 4, SS_FAILED = 6 };
+/* a contact's record (CR_W, engine.h): body a (kind, index), b, point a (2), b (2), normal
+ * (2), gap, force, state, pad; a sample's status (SS_*, engine.h) after scene_solve.c's 0
+ * solved, 1 not converged, 2 singular mass (5, more contacts than the solve takes, is the
+ * caller's) */
 enum { BODY_LINK = 0, BODY_OBJECT = 1, BODY_OBSTACLE = 2 };
 /* Gauss-Seidel sweeps allowed per sample (snakecg.scenes.solve.MAX_SWEEPS) */
 #define SC_SCENE_SWEEPS 200000
@@ -283,9 +282,9 @@ static void scene_sample(sc_scene_work *sw, const double *q, const double *tau,
   for (i = 3; i < ns; ++i) sw->f[i] = tau[i - 3];
   for (i = 0; i < 3 * sw->no; ++i) sw->f[ns + i] = fo[i];
   for (i = 0; i < nb; ++i) sw->st[i] = 0.0;
-  SNAKECG_EXPORT(core_scene_solve)(1, n, m, nb, &m, &nb, sw->M, sw->f, sw->A, sw->kind,
-                                   sw->start, sw->par, max_sweeps, sw->lam, sw->a, sw->w,
-                                   sw->st, out + SO_INFO);
+  SNAKECG_EXPORT(core_scene_solve_b)(1, n, m, nb, &m, &nb, sw->M, sw->f, sw->A, NULL,
+                                     sw->kind, sw->start, sw->par, max_sweeps, sw->lam, sw->a,
+                                     sw->w, sw->st, out + SO_INFO);
   /* a_free = M^-1 f (partial pivoting, as numpy.linalg.solve) */
   memcpy(sw->LU, sw->M, sizeof(double) * (size_t)(n * n));
   for (i = 0; i < n; ++i) sw->afree[i] = sw->f[i];
@@ -444,21 +443,20 @@ typedef struct {
   double *A, *par;           /* rows: A (mcap x n), the blocks' parameters (3 each) */
   sc_int *kind, *start;      /* rows: the blocks' kinds and first rows */
 } sc_scene_state;
-/* rows' outputs: status (0, SS_*), contacts, rows, blocks, an overlap's record (bodies,
- * depth, tolerance), the objects' poses (3 n_o), then the contacts */
-enum { RO_STATUS = 0, RO_NC, RO_M, RO_NB, RO_OVERLAP, RO_POSE = RO_OVERLAP + 6 };
+/* rows' outputs (RO_*, engine.h): status (0, SS_*), contacts, rows, blocks, an overlap's
+ * record (bodies, depth, tolerance), the objects' poses (3 n_o), then the contacts */
 
-static int state_work(sc_scene_work *sw, const sc_scene_state *c, sc_int ccap, sc_int mcap) {
-  sc_int j, no3 = 3 * (sc_int)c->pk[SP_NO];
+static int state_work(sc_scene_work *sw, const double *pk, const double *q, const double *qo,
+                      double tol, sc_int ccap, sc_int mcap) {
+  sc_int j, no3 = 3 * (sc_int)pk[SP_NO];
   int ok = 1;
-  if (ccap < 0 || mcap < ccap + (sc_int)c->pk[SP_MG] || mcap > 500 ||
-      SNAKECG_NS + no3 > 512)
+  if (ccap < 0 || mcap < ccap + (sc_int)pk[SP_MG] || mcap > 500 || SNAKECG_NS + no3 > 512)
     return -2;
-  for (j = 0; j < SNAKECG_NS; ++j) ok &= isfinite(c->q[j]) != 0;
-  for (j = 0; c->qo && j < no3; ++j) ok &= isfinite(c->qo[j]) != 0;
+  for (j = 0; j < SNAKECG_NS; ++j) ok &= isfinite(q[j]) != 0;
+  for (j = 0; qo && j < no3; ++j) ok &= isfinite(qo[j]) != 0;
   if (!ok) return -3;
-  if (work_alloc(sw, c->pk, ccap, mcap)) return -1;
-  if (c->tol > 0) sw->tol = c->tol;
+  if (work_alloc(sw, pk, ccap, mcap)) return -1;
+  if (tol > 0) sw->tol = tol;
   return 0;
 }
 
@@ -468,33 +466,41 @@ static int state_work(sc_scene_work *sw, const sc_scene_state *c, sc_int ccap, s
  * tolerance: status SS_OVERLAP and its record; more than ccap contacts: SS_MORE. Returns
  * 0, -1 out of memory, -2 on sizes out of range, -3 on an input not finite. */
 int SNAKECG_EXPORT(core_scene_rows)(const sc_scene_state *c) {
+  int code = sc_scene_state_rows(c->pk, c->q, c->qo, c->tol, c->ccap, c->mcap, c->out, c->M,
+                                 c->A, c->par, c->kind, c->start);
+  return code < 0 ? code : 0;
+}
+
+SC_INTERNAL int sc_scene_state_rows(const double *pk, const double *q, const double *qo,
+                                    double tol, sc_int ccap, sc_int mcap, double *out,
+                                    double *M, double *A, double *par, sc_int *kind,
+                                    sc_int *start) {
   sc_scene_work sw;
-  sc_int nc, m, i, code = state_work(&sw, c, c->ccap, c->mcap);
-  double *out = c->out;
+  sc_int nc, m, i, code = state_work(&sw, pk, q, qo, tol, ccap, mcap);
   if (code) return (int)code;
   for (i = 0; i < RO_POSE + 3 * sw.no; ++i) out[i] = 0.0;
-  if (kinematics(&sw, c->q, c->M != 0)) {
+  if (kinematics(&sw, q, M != 0)) {
     out[RO_STATUS] = SS_FAILED;
     work_free(&sw);
-    return 0;
+    return SS_FAILED;
   }
-  sc_scene_place(c->pk, sw.P, c->qo, sw.shape, sw.pose, sw.centre, sw.reach);
+  sc_scene_place(pk, sw.P, qo, sw.shape, sw.pose, sw.centre, sw.reach);
   for (i = 0; i < 3 * sw.no; ++i) out[RO_POSE + i] = sw.pose[i];
   nc = contact_rows(&sw, sw.P, out + RO_POSE + 3 * sw.no, out + RO_OVERLAP, sw.ccap);
   if (nc < 0) {
     out[RO_STATUS] = (double)-nc;
     work_free(&sw);
-    return 0;
+    return (int)-nc;
   }
   m = ground_rows(&sw, sw.P, nc);
   out[RO_NC] = (double)nc;
   out[RO_M] = (double)m;
   out[RO_NB] = (double)(nc + sw.ng);
-  memcpy(c->A, sw.A, sizeof(double) * (size_t)(m * sw.n));
-  memcpy(c->par, sw.par, sizeof(double) * (size_t)(3 * (nc + sw.ng)));
-  memcpy(c->kind, sw.kind, sizeof(sc_int) * (size_t)(nc + sw.ng));
-  memcpy(c->start, sw.start, sizeof(sc_int) * (size_t)(nc + sw.ng));
-  if (c->M) full_inertia(&sw, c->M);
+  memcpy(A, sw.A, sizeof(double) * (size_t)(m * sw.n));
+  memcpy(par, sw.par, sizeof(double) * (size_t)(3 * (nc + sw.ng)));
+  memcpy(kind, sw.kind, sizeof(sc_int) * (size_t)(nc + sw.ng));
+  memcpy(start, sw.start, sizeof(sc_int) * (size_t)(nc + sw.ng));
+  if (M) full_inertia(&sw, M);
   work_free(&sw);
   return 0;
 }
@@ -507,7 +513,8 @@ int SNAKECG_EXPORT(core_scene_rows)(const sc_scene_state *c) {
  * finite, -4 where a generated function refused. */
 int SNAKECG_EXPORT(core_scene_gaps)(const sc_scene_state *c) {
   sc_scene_work sw;
-  sc_int ia, ib, k, found = 0, code = state_work(&sw, c, 0, (sc_int)c->pk[SP_MG]);
+  sc_int ia, ib, k, found = 0;
+  sc_int code = state_work(&sw, c->pk, c->q, c->qo, 0.0, 0, (sc_int)c->pk[SP_MG]);
   const sc_int nl = SNAKECG_NL;
   if (code) return (int)code;
   if (kinematics(&sw, c->q, 0)) {

@@ -17,7 +17,7 @@ from ..errors import BuildError, InputError
 from .description import GeneralScene
 from .packing import BODY_KINDS, CR_W, MAX_ROWS
 
-__all__ = ["Contact", "Rows", "StateRows", "link_ends", "place_objects"]
+__all__ = ["Contact", "Rows", "StateRows", "read_rows", "link_ends", "place_objects"]
 
 #: the engine's rows' outputs (scene_rows.c's RO_*): status, contacts, rows, blocks, an
 #: overlap's record, then the objects' poses and the contacts
@@ -90,6 +90,23 @@ def place_objects(scene: GeneralScene, poses) -> np.ndarray:
     return out
 
 
+def read_rows(model, out, A, par, kind, start) -> Rows:
+    """The :class:`Rows` of the engine's outputs at a state (``out``: ``RO_*``, the objects'
+    poses, the contacts' records; the rows ``A``, the blocks' ``par``, ``kind``, ``start``)."""
+    no = model.scene.n_objects
+    nc, m, nb = int(out[RO_NC]), int(out[RO_M]), int(out[RO_NB])
+    off = RO_POSE + 3 * no
+    contacts = []
+    for c in range(nc):
+        r = out[off + CR_W * c: off + CR_W * (c + 1)]
+        contacts.append(Contact((BODY_KINDS[int(r[0])], int(r[1])),
+                                (BODY_KINDS[int(r[2])], int(r[3])), r[4:6].copy(),
+                                r[6:8].copy(), r[8:10].copy(), float(r[10]), c))
+    return Rows(A[:m].copy(), kind[:nb].tolist(), start[:nb].tolist(),
+                [tuple(p) for p in par[:nb].tolist()], contacts,
+                [("contact", c) for c in range(nc)] + list(model.packed.labels))
+
+
 class StateRows:
     """The engine's rows and pairs' distances at states of one general scene model
     (``core_scene_rows``, ``core_scene_gaps`` of ``snakecg/engine/scene_rows.c``), with its
@@ -159,30 +176,21 @@ class StateRows:
                 raise InputError("the state is not finite (q or the objects' poses)")
             raise MemoryError("the scene's rows ran out of memory") if code == -1 else \
                 ValueError(f"core_scene_rows refused its sizes ({code})")
+        if int(out[0]) != 0:
+            raise InputError(self.refusal(out, index))
+        poses = out[RO_POSE:RO_POSE + 3 * self.no].reshape(self.no, 3).copy()
+        return (read_rows(self.model, out, self.A, self.par, self.kind, self.start),
+                (self.M.copy() if mass else None), poses)
+
+    def refusal(self, out, index=None) -> str:
+        """Why the engine refused the rows of a state (``out``: its outputs)."""
         status = int(out[0])
         if status == _OVERLAP:
-            raise InputError(self.model.overlap_message(out[RO_OVERLAP:RO_OVERLAP + 6],
-                                                        index))
+            return self.model.overlap_message(out[RO_OVERLAP:RO_OVERLAP + 6], index)
         if status == _MORE:
-            raise InputError(f"more than {self.ccap} contacts at this state, beyond the rows "
-                             "the solve takes")
-        if status == _FAILED:
-            raise InputError("a generated function refused the state (q not finite?)")
-        nc, m = int(out[RO_NC]), int(out[RO_M])
-        nb = int(out[RO_NB])
-        poses = out[RO_POSE:RO_POSE + 3 * self.no].reshape(self.no, 3).copy()
-        off = RO_POSE + 3 * self.no
-        contacts = []
-        for c in range(nc):
-            r = out[off + CR_W * c: off + CR_W * (c + 1)]
-            contacts.append(Contact((BODY_KINDS[int(r[0])], int(r[1])),
-                                    (BODY_KINDS[int(r[2])], int(r[3])), r[4:6].copy(),
-                                    r[6:8].copy(), r[8:10].copy(), float(r[10]), c))
-        pk = self.model.packed
-        rows = Rows(self.A[:m].copy(), self.kind[:nb].tolist(), self.start[:nb].tolist(),
-                    [tuple(p) for p in self.par[:nb].tolist()], contacts,
-                    [("contact", c) for c in range(nc)] + list(pk.labels))
-        return rows, (self.M.copy() if mass else None), poses
+            return (f"more than {self.ccap} contacts at this state, beyond the rows the solve "
+                    "takes")
+        return "a generated function refused the state"
 
     def gaps(self, q, obj_poses, margin: float) -> list:
         """``[(body_a, body_b, d)]``: the signed distance of every pair of bodies that can

@@ -8,11 +8,18 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .solve import BOX, DISC, SPLIT, UNILATERAL
+from .solve import INFO
 
 __all__ = ["SceneEvent", "SceneRun", "SCHEMA"]
 
 SCHEMA = "snakecg.simulate_scene/1"
+#: the engine's step's accumulators and figures (scene_step.c's ST_*): the torques' work, the
+#: ground's dissipation, the impacts' loss, the contacts' work (cumulative), the last step's
+#: contact impulse, the least sliding cosine, the largest residuals, the steps, the last
+#: step's impact (flag, loss), the state's kinetic energy, smallest contact gap, contacts
+(ST_WORK_TAU, ST_FRICTION, ST_IMPACT_LOSS, ST_CONTACT_WORK, ST_CONTACT_IMPULSE, ST_SLIDING_COS,
+ ST_PRIMAL, ST_DUAL, ST_COMPL, ST_STEPS, ST_IMPACT, ST_LOSS, ST_KE, ST_MIN_GAP, ST_NC,
+ ST_WIDTH) = range(16)
 
 
 @dataclass
@@ -85,6 +92,7 @@ class SceneRun:
     _acc: list = field(default_factory=lambda: [0.0, 0.0, 0.0, 0.0, 0.0])
     _ns: int = 0
     _names: object = None
+    _engine_acc: object = None
 
     @classmethod
     def start(cls, model, tolerance, dt) -> SceneRun:
@@ -93,60 +101,39 @@ class SceneRun:
         r._names = model.scene.body_name
         return r
 
-    # while running ---------------------------------------------------------------------
-    def step_work(self, h, tau, Vp, out, rows) -> None:
-        """The step's work of the torques, friction dissipation, contacts' work and impulse,
-        the certificate's residuals, and the sliding blocks' impulses against their velocity
-        (the cosine of the impulse with -(A v+): 1 for kinetic friction opposing sliding)."""
-        ns = self._ns
-        self._acc[0] += h * float(tau @ Vp[3:ns])
-        lam, A = out["lam"], rows.A
-        m = A.shape[0]
-        w = A @ Vp if m else np.zeros(0)
-        kind = np.asarray(rows.kind, dtype=np.int64)
-        start = np.asarray(rows.start, dtype=np.int64)
-        size = np.where((kind == DISC) | (kind == SPLIT), 2, 1)
-        per_row = np.repeat(kind, size) if m else np.zeros(0, dtype=np.int64)
-        fric = np.isin(per_row, (BOX, DISC, SPLIT))
-        cont = per_row == UNILATERAL
-        self._acc[1] -= float(lam[:m][fric] @ w[fric])
-        self._acc[3] += float(lam[:m][cont] @ w[cont])
-        self._acc[4] = float(lam[:m][cont].sum())
-        # Coulomb discs and bounded wheels: the impulse anti-parallel to the sliding velocity
-        for kd in (DISC, BOX):
-            st = start[kind == kd]
-            if not st.size:
-                continue
-            idx = st[:, None] + np.arange(2 if kd == DISC else 1)
-            wk, lk = w[idx], lam[idx]
-            sp = np.sqrt((wk * wk).sum(axis=1))
-            ln = np.sqrt((lk * lk).sum(axis=1))
-            slide = (sp > 1e-9) & (ln > 0)
-            if slide.any():
-                cos = -(lk[slide] * wk[slide]).sum(axis=1) / (sp[slide] * ln[slide])
-                c = float(cos.min())
-                self.min_sliding_cosine = (c if self.min_sliding_cosine < 0 else
-                                           min(self.min_sliding_cosine, c))
-        info = out["info"]
-        for k in ("primal", "dual", "complementarity"):
-            self.certificate[k] = max(self.certificate[k], float(info[k]))
-        self.steps += 1
+    # while running (from the engine's step, snakecg/engine/scene_step.c) -------------
+    def follow(self, acc) -> None:
+        """Read the run's accumulators and figures from the engine's array ``acc``
+        (``ST_*``) at every sample and at the end."""
+        self._engine_acc = acc
 
-    def impact(self, t, V0, V1, Mf, out, rows, scene) -> None:
-        loss = 0.5 * float(V0 @ Mf @ V0 - V1 @ Mf @ V1)
-        self._acc[2] += loss
-        lam = out["lam"]
+    def _read(self) -> None:
+        acc = self._engine_acc
+        if acc is None:
+            return
+        self._acc[:] = [acc[ST_WORK_TAU], acc[ST_FRICTION], acc[ST_IMPACT_LOSS],
+                        acc[ST_CONTACT_WORK], acc[ST_CONTACT_IMPULSE]]
+        self.min_sliding_cosine = float(acc[ST_SLIDING_COS])
+        for k, i in (("primal", ST_PRIMAL), ("dual", ST_DUAL), ("complementarity", ST_COMPL)):
+            self.certificate[k] = float(acc[i])
+        self.steps = int(acc[ST_STEPS])
+
+    def impact(self, t, loss, contacts, lam, info) -> None:
+        """An inelastic impact at ``t``: its kinetic energy ``loss``, the contacts of the
+        state and their impulses ``lam`` (by row), the solve's certificate ``info``."""
         bodies, imps = [], []
-        for c in rows.contacts:
+        for c in contacts:
             if lam[c.row] > 0:
-                bodies.append([scene.body_name(*c.a), scene.body_name(*c.b)])
+                bodies.append([self._names(*c.a), self._names(*c.b)])
                 imps.append(float(lam[c.row]))
-        info = out["info"]
-        self.events.append(SceneEvent(float(t), "impact", bodies, imps, loss,
-                                      {k: float(info[k]) for k in
-                                       ("primal", "dual", "complementarity")}))
+        cert = {k: float(info[INFO.index(k)]) for k in ("primal", "dual", "complementarity")}
+        self.events.append(SceneEvent(float(t), "impact", bodies, imps, float(loss), cert))
 
-    def sample(self, t, x, V, tau, Mf, min_gap, rows, out) -> None:
+    def sample(self, t, x, V, tau) -> None:
+        """The state ``x``, ``V`` at ``t``, the torque held over the step that ends there,
+        and the engine's figures at it."""
+        self._read()
+        acc = self._engine_acc
         ns = self._ns
         self.t.append(float(t))
         self.q.append(x[:ns].copy())
@@ -154,16 +141,17 @@ class SceneRun:
         self.q_obj.append(x[ns:].reshape(-1, 3).copy())
         self.v_obj.append(V[ns:].reshape(-1, 3).copy())
         self.tau.append(np.array(tau, dtype=float))
-        self.min_gap.append(float(min_gap))
-        self.n_contacts.append(len(rows.contacts))
+        self.min_gap.append(float(acc[ST_MIN_GAP]))
+        self.n_contacts.append(int(acc[ST_NC]))
         self.contact_impulse.append(self._acc[4])
-        self.kinetic_energy.append(0.5 * float(V @ Mf @ V))
+        self.kinetic_energy.append(float(acc[ST_KE]))
         self.work_tau.append(self._acc[0])
         self.friction_dissipation.append(self._acc[1])
         self.impact_loss.append(self._acc[2])
         self.contact_work.append(self._acc[3])
 
     def finish(self, status, t, message, bodies=None) -> SceneRun:
+        self._read()
         self.status = status
         self.message = message
         if status == "penetration":

@@ -39,11 +39,12 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.optimize import brentq
 
-from ..errors import InputError
-from .contacts import StateRows, place_objects
+from ..engine.binding import SceneStep, address
+from ..errors import BuildError, InputError
+from .contacts import Rows, StateRows, place_objects, read_rows
 from .packing import scene_size
-from .run_record import SceneEvent, SceneRun
-from .solve import BOX, DISC, SPLIT, solve
+from .run_record import ST_IMPACT, ST_LOSS, ST_SLIDING_COS, ST_WIDTH, SceneEvent, SceneRun
+from .solve import INFO
 
 __all__ = ["SceneState", "SceneEvent", "SceneRun", "simulate_scene"]
 
@@ -69,46 +70,69 @@ class SceneState:
     v_obj: np.ndarray
 
 
+#: the engine's step's statuses (scene_step.c)
+STEP_DONE, STEP_NOT_CONVERGED, STEP_IMPACT_NOT_CONVERGED = 0, 1, 2
+
+
 class _Stepper:
-    """One run's state and the model's functions at a configuration."""
+    """One run's workspace for the engine's time step (``core_scene_step``,
+    ``snakecg/engine/scene_step.c``): the state ``x``, ``V``, the rows at it and at a step's
+    end, the solves' outputs and the run's accumulators; the pairs' distances for the root
+    finding (:class:`~snakecg.scenes.contacts.StateRows`)."""
 
     def __init__(self, model, tol, f_obj):
-        self.model, self.scene = model, model.scene
-        self.ns, self.na, self.no = model.n_coordinates, model.n_joints, model.scene.n_objects
-        self.n = self.ns + 3 * self.no
-        self.tol = tol
-        self.f_obj = f_obj
-        self.engine = StateRows(model, tol)
+        core = model.core
+        if getattr(core, "scene_step", None) is None:
+            raise BuildError("a general scene is simulated by the compiled engine; load it "
+                             "with a C compiler (set CC) and the compiled backend")
+        self.model = model
+        self.engine = eng = StateRows(model, tol)
+        self.ns, self.no, self.n = eng.ns, eng.no, eng.n
+        n, mcap = self.n, eng.mcap
+        self.x, self.V, self.Vp = np.zeros(n), np.zeros(n), np.zeros(n)
+        self.tau = np.zeros(max(1, model.n_joints))
+        self.fo = np.zeros(max(1, 3 * self.no))
+        self.fo[:3 * self.no] = f_obj
+        self.M, self.M1 = np.zeros((n, n)), np.zeros((n, n))
+        self.A, self.A1 = np.zeros((mcap, n)), np.zeros((mcap, n))
+        self.par, self.par1 = np.zeros((mcap, 3)), np.zeros((mcap, 3))
+        self.out, self.out1 = np.zeros_like(eng.out), np.zeros_like(eng.out)
+        self.kind, self.kind1 = (np.zeros(mcap, dtype=np.int64) for _ in range(2))
+        self.start, self.start1 = (np.zeros(mcap, dtype=np.int64) for _ in range(2))
+        self.lam, self.ilam = np.zeros(mcap), np.zeros(mcap)
+        self.info, self.iinfo = np.zeros(len(INFO)), np.zeros(len(INFO))
+        self.acc = np.zeros(ST_WIDTH)
+        self.acc[ST_SLIDING_COS] = -1.0
+        ad = [a.ctypes.data for a in (
+            self.tau, self.fo, self.x, self.V)]
+        bufs = [a.ctypes.data for a in (
+            self.M, self.A, self.par, self.out, self.kind, self.start, self.M1, self.A1,
+            self.par1, self.out1, self.kind1, self.start1, self.Vp, self.lam, self.info,
+            self.ilam, self.iinfo, self.acc)]
+        self.args = SceneStep(model._pk, float(tol), 0.0, IMPACT_SPEED, *ad, eng.ccap, mcap,
+                              *bufs, 0)
+        self._address = address(self.args)
+        self._step = core.scene_step
 
-    def geometry(self, q, qo):
-        """The bodies' inertia and the rows at ``(q, qo)`` (the engine's, one call)."""
-        rows, Mf, _ = self.engine.rows(q, qo)
-        return Mf, rows
+    def call(self, h: float) -> int:
+        """One step of length ``h`` from ``x``, ``V`` with the torques in ``tau`` (``h = 0``:
+        the rows at ``x`` alone): its status (``STEP_*``, or the refusal of the rows at the
+        step's end: 3 overlap, 4 more contacts, 6 a generated function refused)."""
+        self.args.h = h
+        code = self._step(self._address)
+        if code != 0:
+            if code == -3:
+                raise InputError("simulate: the state is not finite")
+            raise MemoryError("the scene's step ran out of memory") if code == -1 else \
+                ValueError(f"core_scene_step refused its sizes ({code})")
+        return int(self.args.status)
 
-    def solve_rows(self, Mf, f, rows, h, gaps):
-        """The velocity-level problem with the rows' sets scaled by ``h`` and contact offsets
-        ``gaps / h`` (``h = 0``: an impact, offsets 0)."""
-        A = rows.A if rows.A.size else np.zeros((0, self.n))
-        m = A.shape[0]
-        par = np.reshape(np.asarray(rows.par, dtype=float), (-1, 3)).copy()
-        kind = np.asarray(rows.kind, dtype=np.int64)
-        for k in range(len(kind)):
-            if kind[k] in (BOX, DISC, SPLIT):
-                par[k] *= h
-        c = np.zeros(m)
-        if h > 0:
-            for cn in rows.contacts:
-                c[cn.row] = cn.gap / h
-        nb = len(kind)
-        out = solve(self.model.core, Mf[None], f[None], A.reshape(1, m, self.n) if m else
-                    np.zeros((1, 1, self.n)), np.array([m]),
-                    kind.reshape(1, nb) if nb else np.full((1, 1), -1),
-                    np.asarray(rows.start, dtype=np.int64).reshape(1, nb) if nb
-                    else np.zeros((1, 1), dtype=np.int64),
-                    par.reshape(1, nb, 3) if nb else np.zeros((1, 1, 3)), c=c[None] if m
-                    else np.zeros((1, 1)))
-        return {k: (v[0] if not isinstance(v, dict) else {a: b[0] for a, b in v.items()})
-                for k, v in out.items()}
+    def rows(self, end: bool = False) -> Rows:
+        """The rows at the state (``end``: at the last step's end, before it is accepted)."""
+        if end:
+            return read_rows(self.model, self.out1, self.A1, self.par1, self.kind1,
+                             self.start1)
+        return read_rows(self.model, self.out, self.A, self.par, self.kind, self.start)
 
 
 def _check_args(model, q0, v0, duration, dt, q_obj0, v_obj0, f_obj, tolerance):
@@ -173,11 +197,9 @@ def simulate_scene(model, q0, duration, *, v0=None, tau=None, dt=1e-3, q_obj0=No
     tol = 1e-5 * scene_size(scene) if tolerance is None else float(tolerance)
     kind, law = torque_law(np.zeros(model.n_joints) if tau is None else tau, model.n_joints)
     st = _Stepper(model, tol, fo.reshape(-1))
-    ns, n = st.ns, st.n
+    ns = st.ns
     if qo is None:
         qo = place_objects(scene, model.link_poses(q))
-    x = np.concatenate([q, qo.reshape(-1)])
-    V = np.concatenate([v, vo.reshape(-1)])
     rec = SceneRun.start(model, tol, dt)
 
     def torque(t, x, V):
@@ -189,16 +211,14 @@ def simulate_scene(model, q0, duration, *, v0=None, tau=None, dt=1e-3, q_obj0=No
                        V[ns:].reshape(-1, 3).copy())
         return check_tau(law(t, s), model.n_joints, t)
 
-    def min_gap(rows):  # the contacts' (every other pair is farther than the tolerance)
-        return min((c.gap for c in rows.contacts), default=math.inf)
-
-    try:
-        Mf, rows = st.geometry(x[:ns], x[ns:].reshape(-1, 3))
-    except InputError as exc:
-        return rec.finish("penetration", 0.0, str(exc))
+    st.x[:ns], st.x[ns:], st.V[:ns], st.V[ns:] = q, qo.reshape(-1), v, vo.reshape(-1)
+    acc = st.acc
+    rec.follow(acc)
+    if st.call(0.0) != STEP_DONE:
+        return rec.finish("penetration", 0.0, st.engine.refusal(st.out))
     t = 0.0
-    tau_now = torque(t, x, V)
-    rec.sample(t, x, V, tau_now, Mf, min_gap(rows), rows, None)
+    tau_now = torque(t, st.x, st.V)
+    rec.sample(t, st.x, st.V, tau_now)
     nstep = 0
     report = resolve(progress)
     wall = time.perf_counter()
@@ -208,24 +228,19 @@ def simulate_scene(model, q0, duration, *, v0=None, tau=None, dt=1e-3, q_obj0=No
             report(f"simulate: t = {t:.4g} s of {duration:g} s, {nstep} steps, "
                    f"{len(rec.events)} impacts")
         h = min(dt, duration - t)
-        tau_now = torque(t, x, V)
-        fgen = np.zeros(n)
-        fgen[3:ns] = tau_now
-        fgen[:ns] -= model.bias_forces(x[:ns], V[:ns])
-        fgen[ns:] += st.f_obj
+        tau_now = torque(t, st.x, st.V)
+        st.tau[:model.n_joints] = tau_now
         for _ in range(60):
-            f = Mf @ V + h * fgen
-            out = st.solve_rows(Mf, f, rows, h, None)
-            if out["info"]["status"] != 0:
+            status = st.call(h)
+            if status == STEP_NOT_CONVERGED:
                 return rec.finish("not_converged", t, "the step's solve did not converge "
                                   f"at t = {t:.6g} s")
-            Vp = out["a"]
-            xp = x + h * Vp
-            try:  # the next step's geometry; refused where a pair overlaps beyond tol
-                geo = st.geometry(xp[:ns], xp[ns:].reshape(-1, 3))
+            if status in (STEP_DONE, STEP_IMPACT_NOT_CONVERGED):
                 break
-            except InputError as exc:
-                refusal = str(exc)
+            # the step's end refused where a pair overlaps beyond tol
+            refusal = st.engine.refusal(st.out1)
+            x, Vp = st.x.copy(), st.Vp.copy()
+            xp = x + h * Vp
             # bounding circles apart: no overlap (the pairs farther than that need no distance)
             bad = [(a, b, d) for a, b, d in st.engine.gaps(xp[:ns], xp[ns:], 2.0 * tol)
                    if d < -tol]
@@ -256,26 +271,14 @@ def simulate_scene(model, q0, duration, *, v0=None, tau=None, dt=1e-3, q_obj0=No
         else:
             return rec.finish("penetration", t, f"the step could not be kept within the "
                               f"contact tolerance at t = {t:.6g} s")
-        rec.step_work(h, tau_now, Vp, out, rows)
-        held = {(c.a, c.b) for c in rows.contacts}
         t += h
-        x, V = xp, Vp
         nstep += 1
-        Mf, rows = geo
-        # inelastic impact where a new contact closes with a closing velocity (the contacts
-        # of the step's rows are the step's solve's)
-        new = [c for c in rows.contacts if (c.a, c.b) not in held]
-        if new:
-            vn = np.array([rows.A[c.row] @ V for c in new])
-            if np.any(vn < -IMPACT_SPEED):
-                imp = st.solve_rows(Mf, Mf @ V, rows, 0.0, None)
-                if imp["info"]["status"] != 0:
-                    return rec.finish("not_converged", t, "the impact's solve did not "
-                                      f"converge at t = {t:.6g} s")
-                V1 = imp["a"]
-                rec.impact(t, V, V1, Mf, imp, rows, scene)
-                V = V1
+        if status == STEP_IMPACT_NOT_CONVERGED:
+            return rec.finish("not_converged", t, "the impact's solve did not converge at "
+                              f"t = {t:.6g} s")
+        if acc[ST_IMPACT]:
+            rec.impact(t, acc[ST_LOSS], st.rows().contacts, st.ilam, st.iinfo)
         if nstep % output_every == 0 or duration - t <= 1e-9 * dt:
-            rec.sample(t, x, V, tau_now, Mf, min_gap(rows), rows, out)
+            rec.sample(t, st.x, st.V, tau_now)
     return rec.finish("completed", t, "")
 

@@ -1,0 +1,246 @@
+/* snakecg's engine: one time step of a general scene (snakecg/scenes/stepping.py states the
+ * scheme: velocity-level steps on the exact solve, Stewart & Trinkle 1996, Anitescu & Potra
+ * 1997), in one call.
+ *
+ * From (x, V) (x = (q, q_obj), V = (v, v_obj)) and the rows found at x (scene_rows.c's
+ * sc_scene_state_rows, kept in the caller's buffers from the step before), a step of length h:
+ *   1. the bias forces h_s(q, v) (the generated `bias_forces`), the generalized force
+ *      fgen = B tau - h_s + E f_obj and f = M V + h fgen;
+ *   2. the exact solve (scene_solve.c's core_scene_solve_b) with the friction sets' sizes
+ *      times h and the contacts' offsets gap / h: V+;
+ *   3. x+ = x + h V+ and the rows there; a pair overlapping beyond the tolerance refuses the
+ *      step (STEP_OVERLAP, V+ kept for the caller's root finding, nothing else changed);
+ *   4. the step's work: the torques' h tau . v+, the ground's dissipation -lam . (A V+), the
+ *      contacts' work and impulse, the sliding sets' impulse against their velocity (the
+ *      cosine), the solve's largest residuals;
+ *   5. an inelastic impact where a contact new at x+ closes faster than impact_speed: the same
+ *      solve with h = 0 (no friction impulse; ideal wheels take impulses) on A V >= 0; its
+ *      kinetic energy loss;
+ *   6. x, V and the rows replaced by the step's end; its kinetic energy, smallest contact gap
+ *      and contact count.
+ * h = 0: the rows at x alone (the run's start).
+ */
+#include "snakecg_layout.h"
+#include "engine.h"
+
+/* the run's accumulators and the last step's figures (snakecg/scenes/stepping.py's ST_*) */
+enum { ST_WORK_TAU = 0, ST_FRICTION, ST_IMPACT_LOSS, ST_CONTACT_WORK, ST_CONTACT_IMPULSE,
+       ST_SLIDING_COS, ST_PRIMAL, ST_DUAL, ST_COMPL, ST_STEPS, ST_IMPACT, ST_LOSS, ST_KE,
+       ST_MIN_GAP, ST_NC, ST_WIDTH };
+/* a step's status: done; the step's or the impact's solve did not converge; the rows at the
+ * end refused (SS_OVERLAP, SS_MORE, SS_FAILED of engine.h) */
+enum { STEP_DONE = 0, STEP_NOT_CONVERGED = 1, STEP_IMPACT_NOT_CONVERGED = 2 };
+enum { SOLVE_INFO = 8 }; /* the solve's certificate: status, dependent, primal, dual, compl.. */
+#define SC_STEP_SWEEPS 200000 /* snakecg.scenes.solve.MAX_SWEEPS */
+
+/* One call's arguments (snakecg/engine/binding.py mirrors them as SceneStep). */
+typedef struct {
+  const double *pk;          /* the packed scene */
+  double tol, h, impact_speed; /* contact tolerance (m), step (s), closing speed (m/s) */
+  const double *tau, *fo;    /* NA; 3 n_o: held over the step */
+  double *x, *V;             /* n each: the state, replaced by the step's end when accepted */
+  sc_int ccap, mcap;         /* room for contacts and rows */
+  double *M, *A, *par, *out; /* the rows at x (sc_scene_state_rows' outputs), replaced */
+  sc_int *kind, *start;
+  double *M1, *A1, *par1, *out1; /* scratch: the rows at the step's end */
+  sc_int *kind1, *start1;
+  double *Vp;                /* n: the step's V+ (before an impact) */
+  double *lam, *info;        /* mcap, SOLVE_INFO: the step's solve */
+  double *ilam, *iinfo;      /* the impact's */
+  double *acc;               /* ST_WIDTH */
+  sc_int status;             /* STEP_* or SS_* */
+} sc_scene_step;
+
+static double quad(sc_int n, const double *M, const double *v) {
+  double s = 0.0;
+  sc_int i, j;
+  for (i = 0; i < n; ++i) {
+    double t = 0.0;
+    for (j = 0; j < n; ++j) t += M[i * n + j] * v[j];
+    s += v[i] * t;
+  }
+  return s;
+}
+
+/* The solve of the rows in c's buffers at force f, the sets' sizes times h, the contacts'
+ * offsets gap / h (h = 0: none): a (n), lam, info. Returns core_scene_solve_b's code. */
+static int solve(sc_scene_step *c, sc_int n, double h, const double *f, double *scratch,
+                 double *a, double *lam, double *info) {
+  sc_int m = (sc_int)c->out[RO_M], nb = (sc_int)c->out[RO_NB], nc = (sc_int)c->out[RO_NC];
+  const double *rec = c->out + RO_POSE + 3 * (sc_int)c->pk[SP_NO];
+  double *par = scratch, *off = par + 3 * c->mcap, *w = off + c->mcap, *st = w + c->mcap;
+  sc_int b, k;
+  for (b = 0; b < nb; ++b) {
+    int sized = c->kind[b] == K_BOX || c->kind[b] == K_DISC || c->kind[b] == K_SPLIT;
+    for (k = 0; k < 3; ++k) par[3 * b + k] = sized ? c->par[3 * b + k] * h : c->par[3 * b + k];
+  }
+  for (k = 0; k < m; ++k) off[k] = 0.0;
+  for (k = 0; h > 0 && k < nc; ++k) off[c->start[k]] = rec[CR_W * k + 10] / h;
+  return SNAKECG_EXPORT(core_scene_solve_b)(1, n, m, nb, &m, &nb, c->M, f, c->A, off, c->kind,
+                                            c->start, par, SC_STEP_SWEEPS, lam, a, w, st,
+                                            info);
+}
+
+/* The step's work (4.) from the rows at x, the impulses lam and V+. */
+static void step_work(sc_scene_step *c, sc_int n, const double *Vp) {
+  const sc_int nb = (sc_int)c->out[RO_NB];
+  double *acc = c->acc, impulse = 0.0, cmin = 2.0, t = 0.0;
+  sc_int b, r, j;
+  for (j = 3; j < SNAKECG_NS; ++j) t += c->tau[j - 3] * Vp[j];
+  acc[ST_WORK_TAU] += c->h * t;
+  for (b = 0; b < nb; ++b) {
+    sc_int kd = c->kind[b], size = sc_block_size(kd);
+    double w[2] = {0.0, 0.0}, sp = 0.0, ln = 0.0, dot = 0.0;
+    for (r = 0; r < size; ++r) {
+      const double *row = c->A + (c->start[b] + r) * n, l = c->lam[c->start[b] + r];
+      for (j = 0; j < n; ++j) w[r] += row[j] * Vp[j];
+      if (kd == K_BOX || kd == K_DISC || kd == K_SPLIT) acc[ST_FRICTION] -= l * w[r];
+      if (kd == K_UNILATERAL) {
+        acc[ST_CONTACT_WORK] += l * w[r];
+        impulse += l;
+      }
+      sp += w[r] * w[r];
+      ln += l * l;
+      dot += l * w[r];
+    }
+    sp = sqrt(sp);
+    ln = sqrt(ln);
+    if ((kd == K_DISC || kd == K_BOX) && sp > 1e-9 && ln > 0 && -dot / (sp * ln) < cmin)
+      cmin = -dot / (sp * ln);
+  }
+  acc[ST_CONTACT_IMPULSE] = impulse;
+  if (cmin <= 1.0) /* kinetic friction against the sliding: 1 */
+    acc[ST_SLIDING_COS] = acc[ST_SLIDING_COS] < 0 ? cmin : fmin(acc[ST_SLIDING_COS], cmin);
+  for (j = 0; j < 3; ++j)
+    acc[ST_PRIMAL + j] = fmax(acc[ST_PRIMAL + j], c->info[2 + j]);
+  acc[ST_STEPS] += 1.0;
+}
+
+/* The contact k of rows `out` is one at rows `old` too (the same bodies). */
+static int held_before(const double *old, const double *out, sc_int no, sc_int k) {
+  const double *a = out + RO_POSE + 3 * no + CR_W * k, *r = old + RO_POSE + 3 * no;
+  sc_int j, nc = (sc_int)old[RO_NC];
+  for (j = 0; j < nc; ++j, r += CR_W)
+    if (r[0] == a[0] && r[1] == a[1] && r[2] == a[2] && r[3] == a[3]) return 1;
+  return 0;
+}
+
+/* The kinetic energy, smallest contact gap and contact count of the state in c. */
+static void figures(sc_scene_step *c, sc_int n) {
+  const sc_int no = (sc_int)c->pk[SP_NO], nc = (sc_int)c->out[RO_NC];
+  double g = INFINITY;
+  sc_int k;
+  for (k = 0; k < nc; ++k) g = fmin(g, c->out[RO_POSE + 3 * no + CR_W * k + 10]);
+  c->acc[ST_KE] = 0.5 * quad(n, c->M, c->V);
+  c->acc[ST_MIN_GAP] = g;
+  c->acc[ST_NC] = (double)nc;
+}
+
+/* One step (or, h = 0, the rows at x): c->status says how it ended. Returns 0, -1 out of
+ * memory, -2 on sizes out of range, -3 on a state not finite. */
+int SNAKECG_EXPORT(core_scene_step)(sc_scene_step *c) {
+  const double *pk = c->pk;
+  const sc_int no = (sc_int)pk[SP_NO], n = SNAKECG_NS + 3 * no, mc = c->mcap;
+  const sc_work_fn fns[] = {SNAKECG_BF_WORK};
+  sc_work_t ws;
+  double *d, *f, *fgen, *hb, *xp, *scratch;
+  sc_int i, j, k, m1, nc1;
+  int code;
+  c->acc[ST_IMPACT] = 0.0;
+  c->acc[ST_LOSS] = 0.0;
+  if (!(c->h > 0)) {
+    code = sc_scene_state_rows(pk, c->x, c->x + SNAKECG_NS, c->tol, c->ccap, mc, c->out, c->M,
+                               c->A, c->par, c->kind, c->start);
+    if (code < 0) return code;
+    c->status = code;
+    if (code == 0) figures(c, n);
+    return 0;
+  }
+  for (i = 0; i < n; ++i)
+    if (!isfinite(c->x[i]) || !isfinite(c->V[i])) return -3;
+  if (sc_work_alloc(&ws, fns, SC_COUNT(fns))) return -1;
+  d = (double *)malloc(sizeof(double) * (size_t)(4 * n + SNAKECG_NS + 6 * mc + 8));
+  if (!d) {
+    sc_work_free(&ws);
+    return -1;
+  }
+  f = d;
+  fgen = f + n;
+  xp = fgen + n;
+  hb = xp + n;
+  scratch = hb + SNAKECG_NS; /* 6 mcap: the solve's sizes, offsets, w, states */
+  ws.arg[BF_IN_q] = c->x; /* 1. */
+  ws.arg[BF_IN_v] = c->V;
+  ws.arg[BF_IN_K] = pk + (sc_int)pk[SP_K];
+  ws.res[BF_OUT_h] = hb;
+  code = SNAKECG_BF(ws.arg, ws.res, ws.iw, ws.w, 0);
+  sc_work_free(&ws);
+  if (code) {
+    c->status = SS_FAILED;
+    free(d);
+    return 0;
+  }
+  for (i = 0; i < n; ++i) fgen[i] = i >= SNAKECG_NS ? c->fo[i - SNAKECG_NS] : 0.0;
+  for (i = 3; i < SNAKECG_NS; ++i) fgen[i] += c->tau[i - 3];
+  for (i = 0; i < SNAKECG_NS; ++i) fgen[i] -= hb[i];
+  for (i = 0; i < n; ++i) {
+    double t = 0.0;
+    for (j = 0; j < n; ++j) t += c->M[i * n + j] * c->V[j];
+    f[i] = t + c->h * fgen[i];
+  }
+  code = solve(c, n, c->h, f, scratch, c->Vp, c->lam, c->info); /* 2. */
+  if (code || c->info[0] != 0.0) {
+    c->status = STEP_NOT_CONVERGED;
+    free(d);
+    return code == -1 ? -1 : 0;
+  }
+  for (i = 0; i < n; ++i) xp[i] = c->x[i] + c->h * c->Vp[i]; /* 3. */
+  code = sc_scene_state_rows(pk, xp, xp + SNAKECG_NS, c->tol, c->ccap, mc, c->out1, c->M1,
+                             c->A1, c->par1, c->kind1, c->start1);
+  if (code != 0) {
+    c->status = code > 0 ? code : c->status;
+    free(d);
+    return code < 0 ? code : 0;
+  }
+  step_work(c, n, c->Vp); /* 4. */
+  m1 = (sc_int)c->out1[RO_M];
+  nc1 = (sc_int)c->out1[RO_NC];
+  {
+    int impact = 0; /* 5.: a new contact closing */
+    for (k = 0; k < nc1 && !impact; ++k) {
+      double vn = 0.0;
+      if (held_before(c->out, c->out1, no, k)) continue;
+      for (j = 0; j < n; ++j) vn += c->A1[c->start1[k] * n + j] * c->Vp[j];
+      impact = vn < -c->impact_speed;
+    }
+    memcpy(c->x, xp, sizeof(double) * (size_t)n); /* 6. */
+    memcpy(c->V, c->Vp, sizeof(double) * (size_t)n);
+    memcpy(c->out, c->out1, sizeof(double) * (size_t)(RO_POSE + 3 * no + CR_W * nc1));
+    memcpy(c->M, c->M1, sizeof(double) * (size_t)(n * n));
+    memcpy(c->A, c->A1, sizeof(double) * (size_t)(m1 * n));
+    memcpy(c->par, c->par1, sizeof(double) * (size_t)(3 * c->out1[RO_NB]));
+    memcpy(c->kind, c->kind1, sizeof(sc_int) * (size_t)c->out1[RO_NB]);
+    memcpy(c->start, c->start1, sizeof(sc_int) * (size_t)c->out1[RO_NB]);
+    c->status = STEP_DONE;
+    if (impact) {
+      double *v1 = fgen, e0 = quad(n, c->M, c->V);
+      for (i = 0; i < n; ++i) {
+        double t = 0.0;
+        for (j = 0; j < n; ++j) t += c->M[i * n + j] * c->V[j];
+        f[i] = t;
+      }
+      code = solve(c, n, 0.0, f, scratch, v1, c->ilam, c->iinfo);
+      if (code || c->iinfo[0] != 0.0) {
+        c->status = STEP_IMPACT_NOT_CONVERGED;
+      } else {
+        c->acc[ST_IMPACT] = 1.0;
+        c->acc[ST_LOSS] = 0.5 * (e0 - quad(n, c->M, v1));
+        c->acc[ST_IMPACT_LOSS] += c->acc[ST_LOSS];
+        memcpy(c->V, v1, sizeof(double) * (size_t)n);
+      }
+    }
+  }
+  figures(c, n);
+  free(d);
+  return code == -1 ? -1 : 0;
+}
