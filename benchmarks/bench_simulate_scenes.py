@@ -8,8 +8,9 @@ kd 0.3) from the serpenoid's shape, for ``--duration`` seconds (default 2).
 
 * **snakecg**: ``model.simulate`` at ``dt = 1e-3`` (velocity-level steps on the exact solve,
   contact onset by root finding); its penetration bound is its contact tolerance (1e-5 of the
-  scene's size), held on every step. The time is split by a profile into the generated
-  functions, the geometry (closest points, rows), the solve and the rest.
+  scene's size), held on every step. The time is split by a profile into the engine's step
+  (one C call: bias forces, rows, the exact solve, the step's work), the root finding, the
+  torque law (Python) and the record; and the exact solve's share of the engine's step.
 * **MuJoCo**: ``mj_step`` in a Python loop on tests/mujoco_pegs.py's matched model (COM
   spheres on a condim-3 floor, noslip 10, frictionless capsule-peg contacts, solref
   ``(2 timestep, 1)``) at the time steps of ``STEPS``; reported: the deepest capsule-peg or
@@ -85,18 +86,57 @@ def run_mujoco(scene, model, q0, gait, ts, duration, measure: bool):
 def split(prof) -> dict:
     """CPU seconds by where they go (inclusive times of the top functions)."""
     st = pstats.Stats(prof)
-    out = {"generated functions": 0.0, "geometry (rows, distances)": 0.0, "solve (C)": 0.0}
+    out = {"engine step (C: bias forces, rows, solve, work)": 0.0,
+           "root finding (engine distances, brentq)": 0.0, "torque law": 0.0, "record": 0.0}
     for (file, _, name), (_, _, _, ct, _) in st.stats.items():
-        if file.endswith("robot_model.py") and name in ("mass_matrix", "link_poses",
-                                                        "link_jacobians", "bias_forces"):
-            out["generated functions"] += ct
-        elif file.endswith("contacts.py") and name == "rows_of":
-            out["geometry (rows, distances)"] += ct
-        elif file.endswith("stepping.py") and name in ("pair_gaps", "_pair_gap"):
-            out["geometry (rows, distances)"] += ct
-        elif file.endswith("solve.py") and name == "solve":
-            out["solve (C)"] += ct
+        if file.endswith("stepping.py") and name == "call":
+            out["engine step (C: bias forces, rows, solve, work)"] += ct
+        elif file.endswith("contacts.py") and name in ("gaps", "gap"):
+            out["root finding (engine distances, brentq)"] += ct
+        elif file.endswith("stepping.py") and name == "torque":
+            out["torque law"] += ct
+        elif file.endswith("run_record.py") and name in ("sample", "impact"):
+            out["record"] += ct
     return out
+
+
+def solve_share(model, run) -> float:
+    """The exact solve's share of the engine's step: the step, and the solve alone on the
+    same problem (core_scene_solve_b), timed from one state of the run, 2000 times each."""
+    from snakecg.scenes.solve import INFO
+    from snakecg.scenes.stepping import _Stepper
+
+    st = _Stepper(model, run.tolerance, np.zeros(0))
+    k = len(run.t) // 2
+    x0, V0 = run.q[k].copy(), run.v[k].copy()
+    st.x[:], st.V[:] = x0, V0
+    st.call(0.0)
+    m, nb = int(st.out[2]), int(st.out[3])
+    f = st.M @ V0
+    par = st.par[:nb] * 1e-3
+    off = np.zeros(m)
+    w, lam, a = np.zeros(m), np.zeros(m), np.zeros(len(V0))
+    state, info = np.zeros(nb), np.zeros(len(INFO))
+    mm, nn = np.array([m]), np.array([nb])
+    kind, start = st.kind[:nb].copy(), st.start[:nb].copy()
+    A = st.A[:m].copy()
+    args = (1, len(V0), m, nb, mm.ctypes.data, nn.ctypes.data, st.M.ctypes.data, f.ctypes.data,
+            A.ctypes.data, off.ctypes.data, kind.ctypes.data, start.ctypes.data,
+            par.ctypes.data, 200000, lam.ctypes.data, a.ctypes.data, w.ctypes.data,
+            state.ctypes.data, info.ctypes.data)
+    fn = model.core.scene_solve_b
+    t0 = time.process_time()
+    for _ in range(2000):
+        fn(*args)
+    t_solve = time.process_time() - t0
+    t_step = 0.0
+    for _ in range(2000):
+        st.x[:], st.V[:] = x0, V0
+        st.call(0.0)
+        t0 = time.process_time()
+        st.call(1e-3)
+        t_step += time.process_time() - t0
+    return t_solve / t_step
 
 
 def main() -> None:
@@ -126,7 +166,9 @@ def main() -> None:
     parts = split(prof)
     print("  where the time goes (profiled 0.5 s run): " + ", ".join(
         f"{k} {100 * v / total:.0f} %" for k, v in parts.items())
-        + f", the rest (Python bookkeeping) {100 * (1 - sum(parts.values()) / total):.0f} %")
+        + f", the rest (Python loop) {100 * (1 - sum(parts.values()) / total):.0f} %")
+    print(f"  the exact solve's share of the engine's step: "
+          f"{100 * solve_share(model, run):.0f} %")
     try:
         import mujoco
     except ImportError:

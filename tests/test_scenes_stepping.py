@@ -422,6 +422,50 @@ def test_pushing_a_box_on_every_ground_stays_outside_it(ground):
     _laws(run)
 
 
+def test_the_records_figures_against_numpy_and_the_reference_rows():
+    """Every sample of two runs (a box pushed on Coulomb ground; the pegs row, with impacts):
+    the engine's step (scene_step.c) keeps the figures, here recomputed apart: the kinetic
+    energy 1/2 V^T M V with the generated mass matrix and the objects' inertia, the torques'
+    work h tau . v+ per step (steps without an impact), the contacts' count and smallest gap
+    as the reference rows (tests/scenes_rows_reference.py) find them at the sample's state
+    with the run's tolerance."""
+    from scenes_rows_reference import rows_of
+
+    robot = snakecg.Robot(joints=3)
+    box = SceneObject(shape="box", size=(0.1, 0.06), mass=0.5, mu=0.2,
+                      touching={"link": 2, "offset": 0.09, "side": "left"})
+    pushing = GeneralScene(robot, radius=0.01, ground=Ground(model="coulomb", mu=0.3),
+                           objects=(box,))
+    q_pegs = np.zeros(13)
+    q_pegs[3:] = 0.5 * np.sin(np.arange(10) * 2 * np.pi / 5)
+    touching = impacts = 0
+    for scene, q0 in ((pushing, np.array([0.0, 0.0, 0.0, -0.2, -0.1, 0.3])),
+                      (read_scene(PEGS_ROW), q_pegs)):
+        model = load_scene(scene)
+        gait = serpenoid_controller(model, amplitude=0.4, frequency=1.5, phase_lag=1.0,
+                                    kp=3.0, kd=0.1, tau_max=None)
+        run = model.simulate(q0, 0.3, tau=gait, dt=1e-3)
+        assert run.status == "completed", run.message
+        impacts += len(run.events)
+        for k in range(len(run.t)):
+            q, v, qo, vo = run.q[k], run.v[k], run.q_obj[k], run.v_obj[k]
+            ke = 0.5 * v @ model.mass_matrix(q) @ v + 0.5 * sum(
+                w @ np.diag([o.mass, o.mass, o.plate_inertia]) @ w
+                for w, o in zip(vo, scene.objects))
+            assert run.kinetic_energy[k] == pytest.approx(ke, rel=1e-12, abs=1e-15)
+            rows, _ = rows_of(scene, model.masses, model.link_poses(q),
+                              model.link_jacobians(q), obj_poses=qo, tol=run.tolerance)
+            assert run.n_contacts[k] == len(rows.contacts)
+            want = min((c.gap for c in rows.contacts), default=np.inf)
+            assert run.min_gap[k] == pytest.approx(want, abs=1e-15)
+            touching += len(rows.contacts) > 0
+            if k and run.impact_loss[k] == run.impact_loss[k - 1]:
+                work = (run.t[k] - run.t[k - 1]) * run.tau[k] @ v[3:]
+                assert run.work_tau[k] - run.work_tau[k - 1] == pytest.approx(
+                    work, rel=1e-9, abs=1e-15)
+    assert touching >= 100 and impacts >= 1
+
+
 def test_a_long_run_reports_progress(monkeypatch):
     import snakecg.scenes.stepping as stepping
 
