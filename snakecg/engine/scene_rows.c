@@ -262,7 +262,7 @@ static void scene_sample(sc_scene_work *sw, const double *q, const double *tau,
   const sc_int n = sw->n, ns = SNAKECG_NS, width = SO_QDD + ns + 7 * sw->no + 3 * sw->ng;
   sc_int nc, m, nb, i, j, o;
   double *P = sw->P;
-  for (i = 0; i < width; ++i) out[i] = 0.0;
+  for (i = 0; i < width + CR_W * sw->ccap; ++i) out[i] = 0.0; /* the records' room too */
   if (kinematics(sw, q, 1)) goto failed;
   sc_scene_place(sw->pk, P, 0, sw->shape, sw->pose, sw->centre, sw->reach);
   for (o = 0; o < sw->no; ++o)

@@ -89,8 +89,10 @@ class SceneRun:
                                                        "complementarity": 0.0})
     steps: int = 0
     min_sliding_cosine: float = -1.0
-    _acc: list = field(default_factory=lambda: [0.0, 0.0, 0.0, 0.0, 0.0])
+    _rows: list = field(default_factory=list)
     _ns: int = 0
+    _n: int = 0
+    _na: int = 0
     _names: object = None
     _engine_acc: object = None
 
@@ -98,6 +100,7 @@ class SceneRun:
     def start(cls, model, tolerance, dt) -> SceneRun:
         r = cls(tolerance=float(tolerance), dt=float(dt))
         r._ns = model.n_coordinates
+        r._n, r._na = model.n_coordinates + 3 * model.scene.n_objects, model.n_joints
         r._names = model.scene.body_name
         return r
 
@@ -111,8 +114,6 @@ class SceneRun:
         acc = self._engine_acc
         if acc is None:
             return
-        self._acc[:] = [acc[ST_WORK_TAU], acc[ST_FRICTION], acc[ST_IMPACT_LOSS],
-                        acc[ST_CONTACT_WORK], acc[ST_CONTACT_IMPULSE]]
         self.min_sliding_cosine = float(acc[ST_SLIDING_COS])
         for k, i in (("primal", ST_PRIMAL), ("dual", ST_DUAL), ("complementarity", ST_COMPL)):
             self.certificate[k] = float(acc[i])
@@ -131,27 +132,12 @@ class SceneRun:
 
     def sample(self, t, x, V, tau) -> None:
         """The state ``x``, ``V`` at ``t``, the torque held over the step that ends there,
-        and the engine's figures at it."""
-        self._read()
-        acc = self._engine_acc
-        ns = self._ns
-        self.t.append(float(t))
-        self.q.append(x[:ns].copy())
-        self.v.append(V[:ns].copy())
-        self.q_obj.append(x[ns:].reshape(-1, 3).copy())
-        self.v_obj.append(V[ns:].reshape(-1, 3).copy())
-        self.tau.append(np.array(tau, dtype=float))
-        self.min_gap.append(float(acc[ST_MIN_GAP]))
-        self.n_contacts.append(int(acc[ST_NC]))
-        self.contact_impulse.append(self._acc[4])
-        self.kinetic_energy.append(float(acc[ST_KE]))
-        self.work_tau.append(self._acc[0])
-        self.friction_dissipation.append(self._acc[1])
-        self.impact_loss.append(self._acc[2])
-        self.contact_work.append(self._acc[3])
+        and the engine's figures at it (one row kept; the fields are made at the end)."""
+        self._rows.append((t, np.concatenate((x, V, tau, self._engine_acc))))
 
     def finish(self, status, t, message, bodies=None) -> SceneRun:
         self._read()
+        self._columns()
         self.status = status
         self.message = message
         if status == "penetration":
@@ -163,6 +149,25 @@ class SceneRun:
         for k in ("q", "v", "q_obj", "v_obj", "tau"):
             setattr(self, k, np.asarray(getattr(self, k), dtype=float))
         return self
+
+    def _columns(self) -> None:
+        """The samples' fields from the rows kept."""
+        if not self._rows:
+            return
+        ns, n, na = self._ns, self._n, self._na
+        data = np.array([r[1] for r in self._rows])
+        x, V, tau, acc = (data[:, :n], data[:, n:2 * n], data[:, 2 * n:2 * n + na],
+                          data[:, 2 * n + na:])
+        self.t = [r[0] for r in self._rows]
+        self.q, self.v = list(x[:, :ns]), list(V[:, :ns])
+        self.q_obj = list(x[:, ns:].reshape(len(x), -1, 3))
+        self.v_obj = list(V[:, ns:].reshape(len(x), -1, 3))
+        self.tau = list(tau)
+        for name, i in (("min_gap", ST_MIN_GAP), ("n_contacts", ST_NC),
+                        ("contact_impulse", ST_CONTACT_IMPULSE), ("kinetic_energy", ST_KE),
+                        ("work_tau", ST_WORK_TAU), ("friction_dissipation", ST_FRICTION),
+                        ("impact_loss", ST_IMPACT_LOSS), ("contact_work", ST_CONTACT_WORK)):
+            setattr(self, name, list(acc[:, i]))
 
     # after -----------------------------------------------------------------------------
     @property
