@@ -17,17 +17,20 @@ the rows' offsets ``c = g_c / h`` (``core_scene_solve_b``): one exact solve for 
 impacts. Stick-slip and maximum dissipation come from it (a sliding block's impulse is on
 its set's boundary, opposing the sliding velocity); a contact whose impulse would pull opens.
 
-Then ``x+ = x + h V+``. Before the step is accepted the signed distance of every pair of
-bodies that can touch (non-neighbour links, links with objects and obstacles, objects with
-objects and obstacles: the engine's closest points, ``snakecg/engine/scene_geometry.c``) is
-evaluated at ``x+``; where
-one is below ``-tolerance`` the time it reaches ``-tolerance / 4`` along the step is found by
-Brent's method on the distance of the interpolated state ``x + s h V+`` and the step is
-taken again, shortened to it. A pair that comes within the tolerance with a closing velocity
-gets an inelastic impact: the same solve with ``h = 0`` (no friction impulse, the ground's
-forces being finite; ideal wheels take impulses) and the rows ``A V+ >= 0``, with its
-certificate. The rows are found from the geometry at every step, so contact points slide along
-edges and links and a box's corner can take over.
+Then ``x+ = x + h V+``. Before the step is accepted the rows at ``x+`` are found from the
+geometry (every pair of bodies that can touch: non-neighbour links, links with objects and
+obstacles, objects with objects and obstacles); where a pair overlaps beyond ``tolerance``
+the time it reaches ``-tolerance / 4`` along the step is found by Brent's method on the
+engine's distance of the pair at the interpolated state ``x + s h V+`` and the step is taken
+again, shortened to it. A pair that comes within the tolerance with a closing velocity gets
+an inelastic impact: the same solve with ``h = 0`` (no friction impulse, the ground's forces
+being finite; ideal wheels take impulses) and the rows ``A V+ >= 0``, with its certificate.
+The rows are found from the geometry at every step, so contact points slide along edges and
+links and a box's corner can take over.
+
+Each step is one call of the compiled engine (``snakecg/engine/scene_step.c``: the bias
+forces, the solve, the rows at the step's end, the step's energy terms, the impact); Python
+evaluates the torque law, keeps the record and does the root finding of a refused step.
 """
 
 from __future__ import annotations
