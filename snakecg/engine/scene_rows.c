@@ -13,7 +13,7 @@
  *      the two surface points fixed on their bodies;
  *   3. the ground's blocks (a table packed once per model: wheels, ideal wheels, Coulomb,
  *      anisotropic Coulomb per link; an object's Coulomb friction with the ground);
- *   4. the exact solve of scene_solve.c (core_scene_solve) on the full inertia (M_s, then
+ *   4. the exact solve of scene_solve.c (core_scene_solve_b) on the full inertia (M_s, then
  *      m, m, I per object) and force (B tau, the objects' wrenches);
  *   5. the metrics: ||qdd_s||^2 = qdd^T M_s qdd (eq. 26), ||a_o||^2 = a_o^T I_o a_o (eq. 27)
  *      per object and summed, ||lambda||^2 = lam^T G lam = (a - a_free)^T M (a - a_free), and
@@ -23,6 +23,9 @@
  * The scene, the sample's outputs and the optional details (rows, forces, row accelerations,
  * block states, for checks) are laid out as snakecg/scenes/packing.py writes and reads them
  * (SP_*, SO_*, the records' widths below).
+ * Steps 1-3 alone at a simulation's state (the objects at given poses, the run's tolerance):
+ * core_scene_rows (and sc_scene_state_rows, scene_step.c's); the signed distances of the
+ * pairs, overlapping or not, for the root finding of a contact's onset: core_scene_gaps.
  */
 #include "snakecg_layout.h"
 #include "engine.h"
