@@ -135,3 +135,22 @@ def test_options_belong_to_their_model(models):
         sm.simulate(Q0, TAU, 0.1, dt=1e-3)
     with pytest.raises(InputError, match="q_obj0 must be 3 numbers"):
         sm.simulate(Q0, TAU, 0.1, contacts="geometry", q_obj0=[0.0, 0.05])
+
+
+def test_cli_contacts_geometry(models, tmp_path, capsys):
+    import json
+
+    from snakecg import cli
+
+    args = ["simulate", "--joints", "3", "--scenario", "wheels", "--kappa", "100", "--q",
+            "0,0,0,30deg,-45deg,60deg", "--tau", "0.05,0,-0.02", "--duration", "0.5",
+            "--out", str(tmp_path)]
+    rc = cli.main([*args, "--contacts", "geometry", "--json"])
+    s = json.loads(capsys.readouterr().out)
+    assert rc == 0 and s["status"] == "completed" and s["duration"] == pytest.approx(0.5)
+    scene, sm, ref = models("wheels")
+    saved = np.load(tmp_path / "trajectory.npz")
+    depth, _ = overlaps(scene, saved["q"], saved["q_obj"][:, 0])
+    assert len(saved["t"]) == 501 and depth.max() <= s["tolerance"]
+    rc = cli.main([*args, "--dt", "1e-3"])
+    assert rc == 2 and "--dt applies to" in capsys.readouterr().err

@@ -35,9 +35,9 @@ def simulate_with_geometry(model, q0, tau, duration, v0=None, *, q_obj0=None, v_
     contacts from geometry: the general scene of :func:`plate_scene`, stepped by
     :func:`snakecg.scenes.stepping.simulate_scene` with ``dt`` (default 1e-3 s),
     ``tolerance`` (m; default 1e-5 of the scene's size) and ``output_every``, then the
-    paper's contact check at every sample (:func:`_checked`). ``q_obj0``, ``v_obj0``, ``f_obj``: the plate's pose,
-    twist and a constant wrench on it, 3 numbers each. Returns a
-    :class:`~snakecg.scenes.run_record.SceneRun`."""
+    paper's contact check at every sample (:func:`_checked`). ``q_obj0``, ``v_obj0``,
+    ``f_obj``: the plate's pose, twist and a constant wrench on it, 3 numbers each. Returns
+    a :class:`~snakecg.scenes.run_record.SceneRun`."""
     from . import load_scene
 
     general = load_scene(plate_scene(model.scene))
@@ -71,7 +71,7 @@ def _checked(scene, run):
 
     if run.status != "completed" or not len(run.t):
         return run
-    check = ContactCheck.of_scene(scene, tolerance=run.tolerance)
+    check = ContactCheck.of_scene(scene, tolerance=run.tolerance, radius=0.0)  # segments
     depth, pair = check.deepest(run.q, run.q_obj[:, 0])
     beyond = np.flatnonzero(depth > run.tolerance)
     if beyond.size:
