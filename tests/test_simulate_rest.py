@@ -95,3 +95,17 @@ def test_torque_held_by_the_wheels_moves_nothing(models, joints, q0, integrator)
                                rtol=1e-9, atol=1e-12)
     assert np.abs(traj.lam[:, 0]).max() <= 1e-10  # the contact force: 1e-9 of the wheels'
     assert np.abs(traj.gap).max() <= 1e-12
+
+
+def test_casadi_backend_at_rest_and_its_placement():
+    """The CasADi backend (the Python engine, no compiled library): the run places the
+    object itself where the dense reference does, and at rest nothing moves."""
+    scene = snakecg.Scene(snakecg.Robot(joints=3), scenario="wheels", kappa=100.0)
+    slow = snakecg.load(scene, backend="casadi")
+    traj = slow.simulate(Q_BENT, np.zeros(3), 0.5)
+    assert not traj.summary["integrator"]["compiled_segments"]
+    _at_rest(traj, Q_BENT, 0.0)
+    assert traj.events == []
+    q_obj, rho, _ = Reference(scene).place_object(Q_BENT)
+    np.testing.assert_allclose(traj.q_obj[0], q_obj, atol=1e-15)
+    np.testing.assert_allclose(traj.rho, rho, atol=1e-15)
