@@ -362,7 +362,8 @@ def simulate(model, q0, tau, duration, v0=None, *, v_obj0=None, q_obj0=None, rho
         ``tolerance`` and ``output_every``, and returns a
         :class:`~snakecg.scenes.run_record.SceneRun`.
 
-    Returns a :class:`Trajectory` with the per-sample arrays, the events and ``summary``.
+    Returns a :class:`Trajectory` with the per-sample arrays, the events and ``summary``
+    (``contacts="paper"``).
     """
     if contacts == "geometry":
         return _with_geometry(model, q0, tau, duration, v0, locals())
@@ -381,23 +382,25 @@ def simulate(model, q0, tau, duration, v0=None, *, v_obj0=None, q_obj0=None, rho
     return Simulator(settings).run()
 
 
-#: The options of :func:`simulate` that only the paper's model takes, with their defaults.
-_PAPER_ONLY = {"rho": None, "control_period": None, "method": "DOP853", "rtol": 1e-9,
-               "atol": 1e-11, "max_step": None, "fixed_step": None, "stabilization": 10.0,
-               "output_dt": None, "max_events": 1000, "integrator": "auto",
-               "geometry_check": "stop"}
+#: The options of :func:`simulate` that only the paper's model takes.
+_PAPER_ONLY = ("rho", "control_period", "method", "rtol", "atol", "max_step", "fixed_step",
+               "stabilization", "output_dt", "max_events", "integrator", "geometry_check")
 
 
 def _with_geometry(model, q0, tau, duration, v0, given):
-    """:func:`simulate` with ``contacts="geometry"``, its arguments ``given``."""
+    """:func:`simulate` with ``contacts="geometry"``, its arguments ``given``: the paper's
+    options must be left at their defaults."""
+    import inspect
+
     from ..kinds import is_scene_model
     from ..scenes.paper import simulate_with_geometry
 
     if not is_scene_model(model):
         raise InputError("contacts='geometry' simulates a loaded snakecg.Scene "
                          f"(snakecg.load(scene)), got {type(model).__name__}")
-    for name, default in _PAPER_ONLY.items():
-        value = given[name]
+    defaults = inspect.signature(simulate).parameters
+    for name in _PAPER_ONLY:
+        value, default = given[name], defaults[name].default
         if value is not default and not (isinstance(value, (str, float, int))
                                          and value == default):
             raise InputError(f"{name} is an option of contacts='paper' (the paper's model "
