@@ -236,7 +236,9 @@ class SceneModel(RobotModel):
         breaking away and sticking again are events. Returns a
         :class:`~snakecg.simulate.Trajectory` (``t``, ``q``, ``v``, ``q_obj``, ``v_obj``,
         ``lam``, ``contact``, ``wheel_state``, ... and ``summary``); keywords and details in
-        :func:`snakecg.simulate.simulate` and docs/how-to/simulate.md.
+        :func:`snakecg.simulate.simulate` and docs/how-to/simulate.md. ``contacts="geometry"``
+        steps the scene with its square plate and every contact from the geometry instead
+        (a :class:`~snakecg.scenes.run_record.SceneRun`).
         """
         from .simulate import simulate
 

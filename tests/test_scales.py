@@ -162,3 +162,39 @@ def test_titles_carry_symbols_and_units_and_rings_sit_off_the_data(narrow):
     texts = [t.get_text() for t in fig.findobj(lambda a: hasattr(a, "get_text"))]
     texts += [c.ax.get_ylabel() for c in (m.colorbar for m in _meshes(fig))]
     assert not any(name in t for t in texts for name in CODE_NAMES)
+
+
+def test_fig5_tick_labels_carry_no_rounding_noise():
+    """Fig. 5 as ``snakecg reproduce`` draws it (3 joints, kappa 100): with wheels the maxima
+    of ||lambda||^2 reach 1 + 2e-15 (rounding above the ellipsoid's norm, 1), just beyond the
+    round level 1. Every colour bar's labels read as short decimals (at most 6 significant
+    digits, no 0.9700000000000001), apart from each other, each within 1 % of the least
+    tick spacing of its tick, and the bar covers the data."""
+    import re
+
+    import matplotlib.pyplot as plt
+
+    from snakecg.analysis import com_polar, joint_grid
+
+    Q = joint_grid(3, -135, 135, 45)
+    maxima = {}
+    for s in snakecg.SCENARIOS:
+        model = snakecg.load(snakecg.Scene(snakecg.Robot(joints=3), scenario=s, kappa=100))
+        ex = model.extremes(Q)
+        maxima[s] = {m: ex.max[m] for m in ("norm_lambda", "norm_a_obj", "sr")}
+    assert maxima["wheels"]["norm_lambda"].max() > 1.0  # the rounding the labels must hide
+    radius, angle = com_polar(model, Q)
+    fig = paper.make_figure5(np.asarray(angle), np.asarray(radius), maxima,
+                             infeasible=np.zeros(len(Q), bool), kappa=100)
+    meshes = _meshes(fig)
+    assert len(meshes) == 9
+    for mesh in meshes:
+        cb, ticks, labels, _ = _bar(mesh)
+        assert len(ticks) >= 3 and len(set(labels)) == len(labels), labels
+        for text in labels:  # significant digits of the mantissa
+            assert len(re.sub(r"[^0-9]", "", text.split("e")[0]).strip("0")) <= 6, labels
+        assert [float(t) for t in labels] == pytest.approx(
+            ticks, abs=0.01 * np.diff(ticks).min()), labels
+        data = mesh.get_array().compressed()
+        assert ticks[0] <= data.min() and data.max() <= ticks[-1]
+    plt.close(fig)

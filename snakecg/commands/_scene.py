@@ -70,10 +70,12 @@ _NOT_FOR_SCENES = (("--v-obj", "v_obj"), ("--a-min", "a_min"), ("--control-perio
                    "control_period"), ("--output-dt", "output_dt"))
 
 
-def simulate_command(args, scene, gait: dict) -> int:
+def simulate_command(args, scene, gait: dict, paper=None) -> int:
     """``snakecg simulate --scene FILE``: the general scene over time (velocity-level time
     stepping, :func:`snakecg.scenes.stepping.simulate_scene`); writes ``summary.json`` and
-    ``trajectory.npz`` to ``--out``; ``--json`` prints the summary."""
+    ``trajectory.npz`` to ``--out``; ``--json`` prints the summary. ``paper``: the paper's
+    scene of ``--contacts geometry`` (``scene`` its general one), run by its model's
+    ``simulate(..., contacts="geometry")``."""
     import json
     import sys
 
@@ -102,10 +104,15 @@ def simulate_command(args, scene, gait: dict) -> int:
     if args.controller == "serpenoid":
         tau = serpenoid_controller(model, **gait,
                                    tau_max="robot" if args.tau_max is None else args.tau_max)
-    run = model.simulate(q, args.duration, v0=v, tau=tau,
-                         dt=1e-3 if args.dt is None else args.dt, progress=None)
+    if paper is None:
+        run = model.simulate(q, args.duration, v0=v, tau=tau,
+                             dt=1e-3 if args.dt is None else args.dt, progress=None)
+    else:
+        run = load(paper).simulate(q, tau, args.duration, v0=v, contacts="geometry",
+                                   dt=args.dt)
     s = strict_json(run.summary)
-    s["scene"] = str(args.scene)
+    s["scene"] = (str(args.scene) if paper is None
+                  else "the paper's scene, contacts from geometry")
     try:
         out.mkdir(parents=True, exist_ok=True)
         write_text(out / "summary.json", json.dumps(s, indent=2, allow_nan=False) + "\n")

@@ -94,6 +94,11 @@ def register(sub) -> None:
                    help="when a link enters the object or two links cross (beyond 1e-6 of "
                    "the longest link): stop there (default, status penetration or "
                    "self_contact), report it and integrate on, or check nothing")
+    p.add_argument("--contacts", default="paper", choices=("paper", "geometry"),
+                   help="paper (default): the paper's one point contact, integrated between "
+                   "events; geometry: the object as its square plate and every contact from "
+                   "the geometry, velocity-level time stepping (--dt), as a general scene "
+                   "(docs/how-to/simulate.md)")
     p.add_argument("--output-dt", type=real(0, lo_open=True, unit="s"),
                    help="output sample spacing (default duration/400; at most "
                    f"{MAX_OUTPUT_SAMPLES:g} samples)")
@@ -134,10 +139,21 @@ def run(args) -> int:
     if general is not None:  # a general scene: time stepping (snakecg.scenes.stepping)
         from ._scene import simulate_command
 
+        if args.contacts != "paper":
+            raise InputError("--contacts applies to the paper's scene; a general scene's "
+                             "contacts always come from its geometry")
+
         return simulate_command(args, general, _gait_options(args))
+    if args.contacts == "geometry":  # the paper's scene stepped as a general one
+        from ..scenes.paper import plate_scene
+        from ._scene import simulate_command
+
+        paper = scene_from_args(args)
+        return simulate_command(args, plate_scene(paper), _gait_options(args), paper=paper)
     if args.dt is not None:
-        raise InputError("--dt applies to a general scene (--scene FILE) only; the paper's "
-                         "scene is integrated with error control (--rtol, --atol)")
+        raise InputError("--dt applies to a general scene (--scene FILE) or --contacts "
+                         "geometry only; the paper's model is integrated with error control "
+                         "(--rtol, --atol)")
     # every option checked against the robot and each other before the model is loaded
     scene = scene_from_args(args)
     na = scene.robot.joints

@@ -18,8 +18,9 @@
  *     step and dense output of scipy.integrate.DOP853 (Hairer, Norsett & Wanner, Solving ODE
  *     I, sec. II.10), output at requested times from the dense output;
  *   - the mode's terminal event functions (snakecg/simulate/events.py, all with direction
- *     -1), detected as solve_ivp does (g >= 0 before a step, <= 0 after) and located on the
- *     dense output by Brent's method with xtol = rtol = 4 EPS (scipy.optimize.brentq);
+ *     -1, an exact zero counted as positive), detected as solve_ivp does (g >= 0 before a
+ *     step, <= 0 after) and located on the dense output by Brent's method with
+ *     xtol = rtol = 4 EPS (scipy.optimize.brentq);
  *   - the contact check (geometry.c, sg->geo): the largest overlap of the bodies at the
  *     segment's start, at every output time and at every step's end; the first time it
  *     exceeds the tolerance is located between the last two of these on the dense output by
@@ -29,6 +30,7 @@
  * to the Python path.
  */
 #define _POSIX_C_SOURCE 200809L /* clock_gettime (before the first include) */
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -38,6 +40,7 @@
 #define NA SNAKECG_NA
 #define NL SNAKECG_NL
 #define MAX_EVENTS (3 + NC)
+#define SC_LEAST_POSITIVE (DBL_MIN * DBL_EPSILON) /* 2^-1074, events.py's LEAST_POSITIVE */
 
 
 /* DOP853: 12 stages, 16 with the dense output's, interpolant of 7 terms (scipy's
@@ -140,19 +143,24 @@ static int rhs(sc_ctx *c, const double *y, double *ydot) {
   return 0;
 }
 
-/* The event functions at the last evaluation (Events.functions). */
+/* The event functions at the last evaluation (Events.functions). An event is the quantity
+ * becoming negative: an exact zero counts as the least positive double (events.py's
+ * not_crossed), so that a quantity that stays at zero (a contact held at rest with exactly no
+ * force, a closed gap that does not move) is no crossing. */
 static double event_value(const sc_ctx *c, int e) {
   const sc_segment *sg = c->sg;
   const int r = (int)sg->ev_row[e];
+  double g;
   switch ((int)sg->ev_kind[e]) {
-    case EV_SEPARATION: return c->lam[0];
-    case EV_S_LOW: return c->sys.s;
-    case EV_S_HIGH: return sg->l_k - c->sys.s;
-    case EV_GAP: return c->sys.gap;
-    case EV_BREAKAWAY: return c->bounds[r] - fabs(c->lam[r]);
+    case EV_SEPARATION: g = c->lam[0]; break;
+    case EV_S_LOW: g = c->sys.s; break;
+    case EV_S_HIGH: g = sg->l_k - c->sys.s; break;
+    case EV_GAP: g = c->sys.gap; break;
+    case EV_BREAKAWAY: g = c->bounds[r] - fabs(c->lam[r]); break;
     default: /* EV_SLIDE_STOP: the sliding velocity's sign returning to zero */
-      return (c->state[r] == SLIDE_POS ? -1.0 : 1.0) * c->av[r];
+      g = (c->state[r] == SLIDE_POS ? -1.0 : 1.0) * c->av[r];
   }
+  return g == 0.0 ? SC_LEAST_POSITIVE : g;
 }
 
 static double rms(const double *x, const double *scale, int n) {

@@ -42,6 +42,9 @@ CONSTANT_REL = 1e-9
 CONSTANT_ULPS = 8
 #: Relative spread below which a panel's colours are said to be stretched.
 NARROW_REL = 0.05
+#: A data end within this fraction of a colour level's step beyond the round levels moves the
+#: end level onto it (rather than adding a level a rounding error away).
+MERGE_REL = 0.01
 
 
 def metric_title(metric: str) -> str:
@@ -131,10 +134,21 @@ def colour_scale(values, metric: str, *, levels: int | None = None, from_zero: b
                      lo, hi)
     bounds = MaxNLocator(nbins=levels).tick_values(start, hi)
     bounds = np.unique(np.clip(bounds, bound_lo, bound_hi))
-    if bounds[0] > start:  # the clip may have lifted the first level above the data
-        bounds = np.r_[start, bounds]
+    # the data's ends beyond the round levels (the clip may have lifted the first one above
+    # the data): a level of their own, or, within MERGE_REL of a level step (rounding, such
+    # as a maximum of 1 + 1e-15), the end level moved onto them; a level of its own there
+    # would take 16 digits to tell from its neighbour and print the rounding noise
+    step = float(np.diff(bounds).min()) if len(bounds) > 1 else 0.0
+    if bounds[0] > start:
+        if bounds[0] - start <= MERGE_REL * step:
+            bounds[0] = start
+        else:
+            bounds = np.r_[start, bounds]
     if bounds[-1] < hi:
-        bounds = np.r_[bounds, hi]
+        if hi - bounds[-1] <= MERGE_REL * step:
+            bounds[-1] = hi
+        else:
+            bounds = np.r_[bounds, hi]
     norm = BoundaryNorm(bounds, base.N, clip=True)
     ticks = [float(b) for b in bounds]
     return Scale(norm, base, ticks, _labels(ticks), label, "narrow" if narrow else "full", lo,

@@ -238,13 +238,18 @@ class GeneralScene:
         return f"{kind} {i + 1}" + (f" ({name})" if name else "")
 
     @classmethod
-    def from_scene(cls, scene: Scene) -> GeneralScene:
+    def from_scene(cls, scene: Scene, object_shape: str = "disc") -> GeneralScene:
         """The paper's scene as a general one: ground per link (a wheel, bounded or ideal, on
-        every wheel link, frictionless elsewhere), one disc of radius ``object_distance``
-        (mass ``kappa m``, the scene's inertia) touching ``contact_link`` at
-        ``contact_offset`` on ``side``, segment links."""
+        every wheel link, frictionless elsewhere), one object (mass ``kappa m``, the scene's
+        inertia) touching ``contact_link`` at ``contact_offset`` on ``side``, segment links.
+        ``object_shape``: ``"disc"`` (default) of radius ``object_distance``, the same body
+        at rest; ``"box"``: the square plate of side ``2 object_distance`` with a face along
+        the link (the body the paper's simulation checks its geometry against), for motion
+        over time, where the plate's faces and corners matter."""
         if not isinstance(scene, Scene):
             raise InputError(f"scene must be a snakecg.Scene, got {type(scene).__name__}")
+        if object_shape not in OBJECT_SHAPES:
+            raise InputError(f"object_shape must be 'disc' or 'box', got {object_shape!r:.60}")
         nl = scene.robot.n_links
         woff = scene.wheel_offset
         woff = woff if isinstance(woff, tuple) else (woff,) * nl
@@ -254,7 +259,9 @@ class GeneralScene:
             Ground(model=model if (scene.has_wheels and i + 1 in scene.wheel_links)
                    else "frictionless", mu=scene.mu, wheel_offset=float(woff[i]))
             for i in range(nl))
-        obj = SceneObject(shape="disc", radius=scene.object_distance, mass=scene.object_mass,
+        d = scene.object_distance
+        size = {"radius": d} if object_shape == "disc" else {"size": (2 * d, 2 * d)}
+        obj = SceneObject(shape=object_shape, **size, mass=scene.object_mass,
                           inertia=scene.object_inertia,
                           touching={"link": scene.contact_link, "offset": scene.contact_offset,
                                     "side": scene.side})

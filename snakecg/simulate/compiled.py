@@ -66,7 +66,9 @@ def placement(model, q0):
     new arrays, as :meth:`snakecg.SceneModel.place` gives them, through the compiled batch
     driver of ``place_object`` with its constant inputs packed once per model."""
     be = model.backend
-    fn = getattr(be, "_fns", {}).get("place_object")
+    # the batch driver of the compiled library (a CasADi backend's functions are CasADi's)
+    fn = getattr(be, "_fns", {}).get("place_object") if getattr(be, "kind", None) == \
+        "compiled" else None
     if fn is None:
         q_obj0, rho, _ = model.place(q0[None, :], 1)
         return q_obj0[0].copy(), rho[0].copy()

@@ -1,5 +1,7 @@
 """Events: what ends an integration segment in a mode, and what happens at its end.
 
+Each is a quantity becoming negative (an exact zero is no crossing: :data:`LEAST_POSITIVE`):
+
 * contact held: ``lam_c`` crossing zero downwards -> the contact separates; the contact point
   leaving the link (``s`` outside ``[0, l_k]``) -> the contact is lost for good;
 * contact separated: the gap reaching zero with the point on the link -> plastic impact
@@ -26,6 +28,24 @@ from .modes import Mode, transitions
 from .records import SimEvent
 
 __all__ = ["EventSpec", "EventSpecs", "Events"]
+
+
+#: What an event function returns for an exact zero (2^-1074, the least positive double; the
+#: compiled segments' ``SC_LEAST_POSITIVE``): an event is its quantity becoming negative, and
+#: one that stays at zero is no crossing (a contact held at rest with exactly no force, a
+#: closed gap that does not move), where solve_ivp's test ``g >= 0`` before a step and
+#: ``g <= 0`` after it would fire at once, and again after every event.
+LEAST_POSITIVE = float(np.nextafter(0.0, 1.0))
+
+
+def _not_crossed_at_zero(fn):
+    """``fn`` with an exact zero returned as :data:`LEAST_POSITIVE`."""
+
+    def event(t, y):
+        g = fn(t, y)
+        return g if g != 0.0 else LEAST_POSITIVE
+
+    return event
 
 
 class EventSpec(NamedTuple):
@@ -126,6 +146,7 @@ class Events:
             else:  # the sliding velocity's sign returning to zero
                 d = -1.0 if mode.state[r] == SLIDE_POS else 1.0
                 fn = lambda t, y, r=r, d=d: d * rates(t, y, mode, tau_fn)[4][r]  # noqa: E731
+            fn = _not_crossed_at_zero(fn)
             fn.terminal = True
             fn.direction = -1
             fn.kind, fn.row, fn.quantity = spec

@@ -314,7 +314,8 @@ class Simulator:
 def simulate(model, q0, tau, duration, v0=None, *, v_obj0=None, q_obj0=None, rho=None,
              f_obj=None, control_period=None, method="DOP853", rtol=1e-9, atol=1e-11,
              max_step=None, fixed_step=None, stabilization=10.0, output_dt=None,
-             max_events=1000, integrator="auto", geometry_check="stop") -> Trajectory:
+             max_events=1000, integrator="auto", geometry_check="stop", contacts="paper",
+             dt=None, tolerance=None, output_every=None):
     """Integrate the snake + object of ``model`` (a :class:`~snakecg.SceneModel`) from ``q0``.
 
     Parameters
@@ -351,9 +352,27 @@ def simulate(model, q0, tau, duration, v0=None, *, v_obj0=None, q_obj0=None, rho
         deep; ``"report"`` reports it the same way and integrates on (the trajectory
         without the check); ``"off"`` checks nothing. An initial state that overlaps is
         refused (``InputError``) unless ``"off"``.
+    contacts : ``"paper"`` (default): the paper's model above, one point contact fixed in the
+        object against the contact link's face, integrated between events. ``"geometry"``:
+        the scene as a general one with the object as its square plate, every contact found
+        from the geometry at every step (a flush face holds at both ends, a corner takes
+        over when the link turns, other links touch the plate), velocity-level time
+        stepping (:func:`snakecg.scenes.paper.simulate_with_geometry`); it takes ``v0``,
+        ``v_obj0``, ``q_obj0``, ``f_obj`` and its own ``dt`` (default 1e-3 s),
+        ``tolerance`` and ``output_every``, and returns a
+        :class:`~snakecg.scenes.run_record.SceneRun`.
 
-    Returns a :class:`Trajectory` with the per-sample arrays, the events and ``summary``.
+    Returns a :class:`Trajectory` with the per-sample arrays, the events and ``summary``
+    (``contacts="paper"``).
     """
+    if contacts == "geometry":
+        return _with_geometry(model, q0, tau, duration, v0, locals())
+    if contacts != "paper":
+        raise InputError(f"contacts must be 'paper' or 'geometry', got {contacts!r:.60}")
+    for name, value in (("dt", dt), ("tolerance", tolerance), ("output_every", output_every)):
+        if value is not None:
+            raise InputError(f"{name} is an option of contacts='geometry' (time stepping); "
+                             "the paper's model takes output_dt, rtol and atol")
     settings = check_arguments(
         model, q0, tau, duration, v0, v_obj0=v_obj0, q_obj0=q_obj0, rho=rho, f_obj=f_obj,
         control_period=control_period, method=method, rtol=rtol, atol=atol,
@@ -361,3 +380,33 @@ def simulate(model, q0, tau, duration, v0=None, *, v_obj0=None, q_obj0=None, rho
         output_dt=output_dt, max_events=max_events, integrator=integrator,
         geometry_check=geometry_check)
     return Simulator(settings).run()
+
+
+#: The options of :func:`simulate` that only the paper's model takes.
+_PAPER_ONLY = ("rho", "control_period", "method", "rtol", "atol", "max_step", "fixed_step",
+               "stabilization", "output_dt", "max_events", "integrator", "geometry_check")
+
+
+def _with_geometry(model, q0, tau, duration, v0, given):
+    """:func:`simulate` with ``contacts="geometry"``, its arguments ``given``: the paper's
+    options must be left at their defaults."""
+    import inspect
+
+    from ..kinds import is_scene_model
+    from ..scenes.paper import simulate_with_geometry
+
+    if not is_scene_model(model):
+        raise InputError("contacts='geometry' simulates a loaded snakecg.Scene "
+                         f"(snakecg.load(scene)), got {type(model).__name__}")
+    defaults = inspect.signature(simulate).parameters
+    for name in _PAPER_ONLY:
+        value, default = given[name], defaults[name].default
+        if value is not default and not (isinstance(value, (str, float, int))
+                                         and value == default):
+            raise InputError(f"{name} is an option of contacts='paper' (the paper's model "
+                             "between events); contacts='geometry' takes dt, tolerance and "
+                             "output_every")
+    return simulate_with_geometry(model, q0, tau, duration, v0, q_obj0=given["q_obj0"],
+                                  v_obj0=given["v_obj0"], f_obj=given["f_obj"],
+                                  dt=given["dt"], tolerance=given["tolerance"],
+                                  output_every=given["output_every"])
