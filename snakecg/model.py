@@ -169,9 +169,10 @@ class SceneModel(RobotModel):
         raise TypeError("a loaded model holds compiled code and cannot be pickled; pickle its "
                         "Scene and call snakecg.load(scene) where it is needed")
 
-    #: Accelerations, constraint forces, active set and norms (eqs. 12-30):
-    #: :func:`snakecg.forward.model_forward` (bound as the method: no extra call).
     forward = model_forward
+    """Accelerations, constraint forces, active set and norms (eqs. 12-30):
+    :func:`snakecg.forward.model_forward`, bound as the method (no extra call), so
+    ``model.forward(q, tau, ...)`` takes its arguments after the model."""
 
     # linear maps (snakecg.maps) --------------------------------------------------------------
     def maps(self, q, *, contact: bool = True, wheel_state=None) -> dict[str, np.ndarray]:

@@ -908,11 +908,9 @@ def test_optimize_on_a_scene_file_refuses_bad_options(case):
     assert len(err.splitlines()) == 1 and err.startswith("snakecg"), (argv, err)
 
 
-@pytest.mark.parametrize("command", ["simulate", "sweep", "optimize-shape", "export"])
+@pytest.mark.parametrize("command", ["sweep", "optimize-shape", "export"])
 def test_commands_without_general_scenes_refuse_scene_files(command, tmp_path):
-    line = {"simulate": ["simulate", "--q=0,0,0,0,0,0", "--tau=0,0,0", "--duration", "0.01",
-                         "--no-figures", "--out", str(tmp_path / "s")],
-            "sweep": ["sweep", *_base_line("sweep", tmp_path)],
+    line = {"sweep": ["sweep", *_base_line("sweep", tmp_path)],
             "optimize-shape": ["optimize-shape", "max-sr"],
             "export": ["export", "--out", str(tmp_path / "e")]}[command]
     line = [a for a in line if a not in ("--joints", "2")]
@@ -920,7 +918,7 @@ def test_commands_without_general_scenes_refuse_scene_files(command, tmp_path):
         code, stdout, err = run_cli(line + ["--scene", str(_SCENES / "pegs.toml")])
     assert code == 2 and stdout == "" and "Traceback" not in err, (line, err)
     (msg,) = err.splitlines()
-    assert "does not take a general scene yet (forward, optimize and plot do)" in msg, msg
+    assert "does not take a general scene yet (forward, optimize, plot and simulate do)" in msg, msg
 
 
 def test_optimize_on_a_scene_file_prints_strict_json():

@@ -162,8 +162,17 @@ def test_cli_forward_and_plot_take_a_scene(tmp_path):
     r = _cli("forward", "--scene", str(bad), "--q", "0,0,0,0,0,0", "--tau", "0,0,0")
     assert r.returncode == 2 and "object[1].mass" in r.stderr and "Traceback" not in r.stderr
     assert len(r.stderr.strip().splitlines()) == 1
-    r = _cli("optimize", "max_sr", "--scene", str(p), "--q", "0,0,0,0,0,0")
+    # optimize takes a general scene (tests/test_scenes_optimize.py); optimize-shape does not
+    r = _cli("optimize", "max_sr", "--scene", str(p), "--q", "0,0,0,0.3,-0.3,0.2",
+             "--tau-max", "1", "--json")
+    assert r.returncode == 1 and r.stderr == "", r.stderr  # links may slide: a search
+    out = json.loads(r.stdout)
+    assert out["status"] == "local" and len(out["tau"]) == 3
+    assert max(abs(x) for x in out["tau"]) <= 1.0 + 1e-12
+    assert 0.0 <= out["analysis"]["sr"] <= 1.0
+    r = _cli("optimize-shape", "max-sr", "--scene", str(p))
     assert r.returncode == 2 and "--scene" in r.stderr and "Traceback" not in r.stderr
+    assert len(r.stderr.strip().splitlines()) == 1
     # simulate takes a general scene (tests/test_scenes_stepping.py)
     r = _cli("simulate", "--scene", str(p), "--q", "0,0,0,0,0,0", "--tau", "0,0,0",
              "--duration", "0.01", "--out", str(tmp_path / "run"))

@@ -136,6 +136,10 @@ def run(args) -> int:
     from ._common import general_scene_from_args
 
     general = general_scene_from_args(args)
+    if general is not None and general.__class__.__name__ == "SpatialScene":
+        raise InputError("--scene: a 3-D snake's scene is not simulated yet (forward, optimize "
+                         "and plot take it); simulate takes the paper's scene or a planar "
+                         "general scene")
     if general is not None:  # a general scene: time stepping (snakecg.scenes.stepping)
         from ._scene import simulate_command
 
