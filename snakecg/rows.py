@@ -25,38 +25,25 @@ from __future__ import annotations
 import numpy as np
 
 from . import kernels
+from .engine.rules import (
+    DEPENDENT,
+    IMPOSSIBLE,
+    MASS_SINGULAR,
+    MASS_TOL,
+    NO_ANSWER,
+    NOT_FINITE,
+    REASONS,
+    ROW_TOL,
+    WEAK,
+    reason_of,
+)
 
 __all__ = ["RowSystem", "mass_pivot_ratio", "ROW_TOL", "REASONS", "reason_of"]
 
-#: Pivot ratio of the held rows (``diag(R_1)^2 / |column|^2``) below which they are treated as
-#: dependent even when factored directly (relative accuracy ~ 1e-16 / sqrt(ratio) = 1e-6).
-ROW_TOL = 1e-20
-
-#: Mass matrix pivot ratio below which ``M_s`` is numerically singular.
-MASS_TOL = 1e-13
-
-#: Why a sample is flagged ``singular``, by the code in its result row's ``status`` column
-#: (0: answered by the compiled fast path, 1: answered exactly by the rare-sample rules, the
-#: compiled ``rows.c`` or, on the CasADi backend, this module).
-REASONS = (
-    "", "",
-    "the held constraint rows are linearly dependent (the forces are the least-norm ones)",
-    ("the mass matrix is numerically singular in float64 (masses, lengths or inertias too "
-     "far apart): no answer"),
-    ("the result is physically impossible in float64 (non-finite, a negative squared norm or "
-     "sr outside [0, 1]): no answer"),
-    ("the system is not finite in float64 (a scene parameter or an input too large or too "
-     "small, e.g. a subnormal mass or kappa, or a huge wheel offset): no answer"),
-)
-DEPENDENT, MASS_SINGULAR, IMPOSSIBLE, NOT_FINITE = 2, 3, 4, 5
-#: Codes whose results are NaN (every code but DEPENDENT, whose accelerations are unique).
-NO_ANSWER = (MASS_SINGULAR, IMPOSSIBLE, NOT_FINITE)
 
 
-def reason_of(code) -> str:
-    """The one-line cause of a result row's ``status`` code ('' when answered)."""
-    c = int(code) if np.isfinite(code) else 0
-    return REASONS[c] if 0 <= c < len(REASONS) else ""
+
+
 
 
 def mass_pivot_ratio(M: np.ndarray) -> np.ndarray:
@@ -227,9 +214,7 @@ def _held_rows(RH, z0, adv):
     return -np.linalg.solve(R1, Q.T @ z0 + y), z, ratio
 
 
-#: Delassus pivot ratio below which a sample is re-solved from its rows (the squared
-#: system's relative error, 1e-16 / ratio, would exceed 1e-10).
-WEAK = 1e-6
+
 
 
 def _sane(o, idx):

@@ -33,17 +33,23 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .engine.rules import (
+    ABSENT,
+    FORCE_LIMIT,
+    HELD,
+    LOST,
+    PIVOT_TOL,
+    POSITION_LIMIT,
+    REGULARIZATION,
+    REL_TOL,
+    ROUND_REL,
+    SLIDE_NEG,
+    SLIDE_POS,
+    default_max_iter,
+)
+
 __all__ = ["ActiveSetSolution", "solve_active_set", "PIVOT_TOL", "check_input_range"]
 
-#: Pivot ratio below which the held rows are treated as linearly dependent.
-PIVOT_TOL = 1e-10
-#: Relative regularization used for a singular sample (times the largest G_c diagonal).
-REGULARIZATION = 1e-10
-#: Relative tolerance of the active-set decisions (times each row's own force scale).
-REL_TOL = 1e-9
-
-# row states
-ABSENT, HELD, LOST, SLIDE_POS, SLIDE_NEG = 0, 1, 2, 3, 4
 
 
 @dataclass
@@ -87,16 +93,13 @@ def _violations(state, lam, w, bounds, tol_lam, tol_w):
     return new
 
 
-#: Largest magnitude accepted for the forces (``tau``, ``f_obj``) and, square-rooted, for the
-#: velocities: the norms are quadratic in them and must stay inside float64's range.
-FORCE_LIMIT = 1e150
+
+
+
+
+
 _LIMITS = {"tau": FORCE_LIMIT, "f_obj": FORCE_LIMIT, "v": FORCE_LIMIT ** 0.5,
            "v_obj": FORCE_LIMIT ** 0.5}
-
-
-#: Largest magnitude accepted for the object's pose ``q_obj`` and contact point ``rho`` (m,
-#: rad): the contact row carries ``rho`` as a moment arm, squared in the Delassus matrix.
-POSITION_LIMIT = 1e100
 
 
 def check_position_range(parts: dict) -> None:
@@ -135,14 +138,10 @@ def check_input_range(parts: dict) -> None:
                                  f" found {arr[idx]:.3e} at index {idx}")
 
 
-def default_max_iter(nc: int) -> int:
-    """Active-set passes before the remaining samples are enumerated."""
-    return 4 * nc + 4
 
 
-#: Weight of the rounding term of a row's scale in :func:`_tolerances`: ``REL_TOL ROUND_REL``
-#: (1e-14) of the row's largest force term, a few roundings of its sum.
-ROUND_REL = 1e-5
+
+
 
 
 def _tolerances(out):

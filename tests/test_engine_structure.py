@@ -101,6 +101,19 @@ def test_feature_packages_never_import_the_facade():
     assert importers == []
 
 
+def test_the_engine_imports_nothing_above_it():
+    """snakecg.engine is the low layer: its modules import only each other and the error
+    types (the rules both engines share live in snakecg.engine.rules, not in the Python
+    engine's modules)."""
+    graph = _import_graph()
+    engine = [m for m in graph if m == "snakecg.engine" or m.startswith("snakecg.engine.")]
+    assert len(engine) >= 8
+    upward = sorted((m, t) for m in engine for t in graph[m]
+                    if not (t == "snakecg.engine" or t.startswith("snakecg.engine."))
+                    and t not in ("snakecg", "snakecg.errors"))
+    assert upward == []
+
+
 def test_ctypes_is_imported_by_the_binding_only():
     users = []
     for name, path in _modules().items():

@@ -6,7 +6,7 @@ the generated functions (:func:`snakecg.native.compile_model`); :class:`Core` ca
 iteration of :mod:`snakecg.solver`'s rules, the conditioning and the physical checks, per
 sample, with the loop in C. The samples its fast path cannot answer exactly (dependent or weak
 held rows, no convergence, a singular mass matrix) are answered in C too, by ``rows.c``: their
-status is the code of :data:`snakecg.rows.REASONS` (1: answered exactly there).
+status is the code of :data:`snakecg.engine.rules.REASONS` (1: answered exactly there).
 
 :class:`~snakecg.engine.data.Data` (:mod:`snakecg.engine.data`) is the workspace of one
 caller, in the manner of Pinocchio's ``Data``.
@@ -16,24 +16,15 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..rows import ROW_TOL, WEAK
-from ..solver import FORCE_LIMIT, PIVOT_TOL, REGULARIZATION, REL_TOL
 from .binding import Library
 from .data import Data
 from .layout import Layout
 from .optimal import OptimalKernel
+from .rules import CONSTANTS, REL_TOL, STATUS_EXACT, STATUS_FALLBACK
 from .sphere import SphereKernel
 
 __all__ = ["Core", "Data", "Layout", "CONSTANTS", "STATUS_EXACT", "STATUS_FALLBACK"]
 
-#: Pivot ratio below which the mass matrix counts as numerically singular (snakecg.rows.finish).
-MASS_TOL = 1e-13
-#: Rounding allowed in the physical checks (norms >= 0, 0 <= sr <= 1; snakecg.rows._sane).
-SANE_TOL = 1e-12
-#: The solver constants passed to the C, in the order of its ``sc_constants``.
-CONSTANTS = np.array([PIVOT_TOL, WEAK, REL_TOL, MASS_TOL, SANE_TOL, FORCE_LIMIT, ROW_TOL,
-                      REGULARIZATION])
-STATUS_EXACT, STATUS_FALLBACK = 0, 1
 
 class Core:
     """The engine's entry points in one compiled model library (a
