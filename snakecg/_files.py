@@ -14,7 +14,7 @@ import tempfile
 from collections.abc import Iterator
 from pathlib import Path
 
-__all__ = ["atomic_path", "write_text", "write_bytes", "save_figure"]
+__all__ = ["atomic_path", "atomic_dir", "write_text", "write_bytes", "save_figure"]
 
 
 def _umask() -> int:
@@ -45,6 +45,27 @@ def atomic_path(path) -> Iterator[Path]:
     except BaseException:
         with contextlib.suppress(OSError):
             os.unlink(tmp)
+        raise
+
+
+@contextlib.contextmanager
+def atomic_dir(path) -> Iterator[Path]:
+    """A new temporary folder beside ``path`` (its parents made), renamed onto ``path`` when
+    the block ends without an exception; removed otherwise, or when another writer's folder
+    took the place first (the first complete folder stays: both hold the same content)."""
+    import shutil
+
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    tmp = Path(tempfile.mkdtemp(prefix=f".{path.name}-", dir=path.parent))
+    try:
+        yield tmp
+        try:
+            os.replace(tmp, path)
+        except OSError:  # another writer finished first: its copy stays
+            shutil.rmtree(tmp, ignore_errors=True)
+    except BaseException:
+        shutil.rmtree(tmp, ignore_errors=True)
         raise
 
 

@@ -772,3 +772,22 @@ def test_simulate_checks_its_inputs_as_forward_does():
                         (["--tau=0.01,0", "--v=0,0,0,1e80,0"], "v must have every entry")):
         code, out, err = run_cli(["simulate", "--joints", "2", "--q=0,0,0,0.3,0.3", *argv])
         assert code == 2 and len(err.splitlines()) == 1 and words in err, err
+
+
+def test_atomic_dir_moves_a_complete_folder_or_nothing(tmp_path):
+    """snakecg._files.atomic_dir: the folder appears whole, or not at all after an error;
+    a second writer that finishes later leaves the first complete folder in place."""
+    from snakecg._files import atomic_dir
+
+    dest = tmp_path / "sub" / "built"
+    with pytest.raises(RuntimeError):
+        with atomic_dir(dest) as work:
+            (work / "a.txt").write_text("half")
+            raise RuntimeError("interrupted")
+    assert not dest.exists() and list((tmp_path / "sub").iterdir()) == []
+    with atomic_dir(dest) as work:
+        (work / "a.txt").write_text("first")
+    with atomic_dir(dest) as work:
+        (work / "a.txt").write_text("second")
+    assert (dest / "a.txt").read_text() == "first"
+    assert [p.name for p in (tmp_path / "sub").iterdir()] == ["built"]

@@ -22,10 +22,7 @@ from __future__ import annotations
 
 import hashlib
 import logging
-import os
 import re
-import shutil
-import tempfile
 import time
 from pathlib import Path
 
@@ -81,20 +78,13 @@ def _simulate(folder: Path) -> None:
 
 def _build(dest: Path) -> None:
     """Compute every figure into a fresh folder, then move it into place (atomic)."""
-    dest.parent.mkdir(parents=True, exist_ok=True)
-    work = Path(tempfile.mkdtemp(prefix=".figures-", dir=dest.parent))
-    try:
+    from snakecg._files import atomic_dir
+
+    with atomic_dir(dest) as work:
         t = time.perf_counter()
         _reproduce(work / "reproduce")
         _simulate(work / "simulate")
         log.info("figures computed in %.1f s", time.perf_counter() - t)
-        try:
-            os.replace(work, dest)
-        except OSError:  # another build finished first: use its copy
-            shutil.rmtree(work, ignore_errors=True)
-    except BaseException:
-        shutil.rmtree(work, ignore_errors=True)
-        raise
 
 
 _DEST: Path | None = None  # the folder of this build's figures and Table 2

@@ -15,10 +15,7 @@ from __future__ import annotations
 import hashlib
 import json
 import logging
-import os
 import re
-import shutil
-import tempfile
 import time
 from pathlib import Path
 
@@ -112,20 +109,14 @@ def _figure(path: Path, scene, paths: dict) -> None:
 
 
 def _build(root: Path, dest: Path) -> None:
-    dest.parent.mkdir(parents=True, exist_ok=True)
-    work = Path(tempfile.mkdtemp(prefix=".obstacles-", dir=dest.parent))
-    try:
+    """Compute into a fresh folder, then move it into place (atomic)."""
+    from snakecg._files import atomic_dir
+
+    with atomic_dir(dest) as work:
         t = time.perf_counter()
         log.info("obstacle-aided locomotion: two 2 s runs of the pegs-row example")
         compute(root, work)
         log.info("obstacle-aided locomotion: computed in %.1f s", time.perf_counter() - t)
-        try:
-            os.replace(work, dest)
-        except OSError:  # another build finished first: use its copy
-            shutil.rmtree(work, ignore_errors=True)
-    except BaseException:
-        shutil.rmtree(work, ignore_errors=True)
-        raise
 
 
 _DEST: Path | None = None

@@ -22,10 +22,7 @@ from __future__ import annotations
 import hashlib
 import json
 import logging
-import os
 import re
-import shutil
-import tempfile
 import time
 from pathlib import Path
 
@@ -154,21 +151,14 @@ def _figure(path: Path, objective: str, shapes: dict) -> None:
 
 def _build(dest: Path) -> None:
     """Compute into a fresh folder, then move it into place (atomic)."""
-    dest.parent.mkdir(parents=True, exist_ok=True)
-    work = Path(tempfile.mkdtemp(prefix=".shapes-", dir=dest.parent))
-    try:
+    from snakecg._files import atomic_dir
+
+    with atomic_dir(dest) as work:
         t = time.perf_counter()
         log.info("optimal shapes: computing the table and figures of how-to/shapes.md "
                  "(12 continuous optima, the paper's grid in 3 scenarios)")
         compute(work)
         log.info("optimal shapes: computed in %.1f s", time.perf_counter() - t)
-        try:
-            os.replace(work, dest)
-        except OSError:  # another build finished first: use its copy
-            shutil.rmtree(work, ignore_errors=True)
-    except BaseException:
-        shutil.rmtree(work, ignore_errors=True)
-        raise
 
 
 _DEST: Path | None = None  # the folder of this build's table and figures
