@@ -34,6 +34,7 @@ import numpy as np
 from .._inputs import short_repr
 from ..errors import InputError
 from ..limits import describe, resolve_tau_max
+from .friction_hold import friction_holds
 from .maps import scene_problem
 from .optimize_pieces import solve_pieces
 from .optimize_search import search
@@ -184,6 +185,9 @@ def optimize(model, q, objective="max_sr", *, object=1, tau_max="robot", radius=
         raise InputError("a_obj (a full object acceleration) needs every link's set sticking "
                          "(allow_slide=False): with sliding links it is searched for, and an "
                          "equality is not met by a search; give direction and a_min instead")
+    hold = friction_holds(p, task["radius"], task["tau_max"])
+    if hold.holds:
+        return _held(model, qa, p, task, hold, limits)
     tau, status, cert, solver = None, "infeasible", {}, ""
     if not task["allow_slide"] or (objective == "max_sr" and not sliding_objects):
         if objective == "max_sr" and not sliding_objects:
@@ -216,6 +220,32 @@ def optimize(model, q, objective="max_sr", *, object=1, tau_max="robot", radius=
             res.reason = "no torque found by the search meets the task within the limits"
             res.status = "infeasible" if objective != "max_sr" else res.status
             res.solver = how
+    return res
+
+
+def _held(model, qa, p, task, hold, limits):
+    """The answer where friction holds every torque of the region still
+    (:mod:`snakecg.scenes.friction_hold`): nothing moves, so every torque gives ``sr = 0``
+    (its convention where nothing moves) and ``d . a_o = 0``; a push of at least ``a_min``
+    is infeasible. Checked by the forward solve at the torque that uses the most friction."""
+    why = (f"friction holds every torque of the region still (at most {hold.fraction:.3g} "
+           f"of a friction set's size is needed): nothing moves")
+    cert = {"kind": "friction holds the region: every ground set balances every torque "
+                    "of the region within its size", "ok": True, "fraction": hold.fraction,
+            "value": 0.0}
+    solver = "balance of the torques by the ground sets over the region (friction_holds)"
+    target = task["a_obj"]
+    moving = (task["objective"] == "least_slip_push"
+              and (target is None or np.any(target != 0)))
+    if moving:
+        cert["reason"] = why + ", so no torque of the region moves the object"
+        return _finish(model, qa, p, task, None, "infeasible", cert, solver, limits)
+    cert["reason"] = why + {"max_sr": ": sr = 0 for every torque (0 where nothing moves)",
+                            "strongest_push": ": every torque gives d . a_o = 0",
+                            "least_slip_push": ": every torque gives a_o = 0 and "
+                                               "norm_qdd = 0"}[task["objective"]]
+    res = _finish(model, qa, p, dict(task, allow_slide=False), hold.tau, "optimal", cert,
+                  solver, limits)
     return res
 
 
