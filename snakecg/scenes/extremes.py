@@ -119,8 +119,9 @@ def extremes(model, q, *, gap: float = 1e-3, budget: int = 100_000,
     """Best and worst of every metric over the input ellipsoid's boundary (eq. 31), with the
     torques attaining them and a certificate (see the module docstring).
 
-    ``q``: ``(n_s,)`` or ``(N, n_s)``. ``exact``: None (default) enumerates the exact pieces
-    where every block is a 1-D set and bounds the rest; False always bounds. ``gap``: the
+    ``q``: ``(n_s,)`` or ``(N, n_s)``. ``exact``: None (default) answers a configuration
+    where friction holds every torque exactly, enumerates the exact pieces where every block
+    is a 1-D set and bounds the rest; False always bounds. ``gap``: the
     absolute gap at which the bounds stop (every norm and sr lie in [0, 1] there);
     ``budget``: forward solves allowed per configuration for the bounds."""
     ns = model.n_coordinates
@@ -153,8 +154,8 @@ def extremes(model, q, *, gap: float = 1e-3, budget: int = 100_000,
                 raise
             parts.append(_none(names, model.n_joints, str(exc)))
             continue
-        hold = friction_holds(p, radius=1.0)
-        if hold.holds:
+        hold = friction_holds(p, radius=1.0) if exact is not False else None
+        if hold is not None and hold.holds:
             parts.append(_held(model, p, names, hold))
             continue
         if exact is not False and _polyhedral(p):

@@ -150,12 +150,15 @@ def friction_holds(p, radius=None, tau_max=None) -> Hold:
         Y = -s[:, None] * (np.linalg.pinv(K * s[None, :]) @ PB)
         used = {int(b): _worst(Y[owner == b], T, verts, radius, tau_max) for b in blocks}
         wb = max(used, key=lambda b: used[b][0])
-        if used[wb][0] < best[0]:
-            best = (used[wb][0], used[wb][1], wb)
+        top = used[wb][0]
+        if top < best[0]:
+            best = (top, used[wb][1], wb)
+        if not top > 0:  # no set is loaded: the ideal wheels hold every torque
+            break
         # the next balance leans less on the sets used most
         for b, (g, _) in used.items():
-            weight[owner == b] *= (g / used[wb][0]) ** 2 + 1e-3
-        weight /= weight.max()
+            weight[owner == b] *= (g / top) ** 2
+        weight = np.clip(weight / weight.max(), 1e-6, 1.0)
     worst, where, wb = best
     where = where * _region_scale(p, radius, tau_max, where)
     if worst > 1 - HOLD_MARGIN:

@@ -34,6 +34,7 @@ import numpy as np
 from .._inputs import short_repr
 from ..errors import InputError
 from ..limits import describe, resolve_tau_max
+from .extremes import MOTION_FLOOR
 from .friction_hold import friction_holds
 from .maps import scene_problem
 from .optimize_pieces import solve_pieces
@@ -249,10 +250,13 @@ def _held(model, qa, p, task, hold, limits):
     return res
 
 
-def objective_of(task, an, p):
-    """The task's objective read from a forward result ``an``."""
+def objective_of(task, an, p, tau):
+    """The task's objective read from a forward result ``an`` at ``tau``; sr is 0 where
+    nothing moves (``|a|_M^2`` below ``MOTION_FLOOR`` of the free motion's ``tau^T N tau``,
+    where the ratio is one of rounding errors)."""
     if task["objective"] == "max_sr":
-        return float(an.sr)
+        moving = float(an.norm_a_obj + an.norm_qdd) > MOTION_FLOOR * float(tau @ p.N @ tau)
+        return float(an.sr) if moving else 0.0
     if task["objective"] == "least_slip_push":
         return float(an.norm_qdd)
     ao = np.asarray(an.a_obj)[task["object"] - 1]
@@ -286,7 +290,7 @@ def _finish(model, qa, p, task, tau, status, cert, solver, limits):
                                                       "limits"), np.nan, obj, [], an, solver,
                                    cert, limits)
     an = model.forward(qa, tau)
-    value = objective_of(task, an, p)
+    value = objective_of(task, an, p, tau)
     want = cert.get("value", value)
     reason = cert.get("reason", "")
     slid = [g for g in an.ground if g.get("link") and g["state"].startswith("slide")
