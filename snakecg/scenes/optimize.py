@@ -3,6 +3,13 @@
 ``tau^T N tau <= radius^2``, and/or the box ``|tau_j| <= tau_max_j``), with no ground set
 of a link sliding (the paper's "every wheel sticking", on every ground model).
 
+First, whether friction holds every torque of the region still
+(:mod:`snakecg.scenes.friction_hold`: a friction set's size ``mu m g`` is constant, so the
+torques it holds are not a cone): there nothing moves, every torque gives ``sr = 0`` (its
+value where nothing moves) and ``d . a_o = 0``, so ``max_sr`` and ``strongest_push`` are
+``optimal`` with 0 at the torque that needs the most friction, and ``least_slip_push`` is
+``infeasible``.
+
 The exact pieces: every contact held or open, every link's wheel or friction set sticking,
 each object's own ground friction sticking or sliding. On a piece the maps are affine
 (:mod:`snakecg.scenes.maps`) and, where no object slides, the task is convex: a quadratic
@@ -17,7 +24,8 @@ piece: the problem is no longer convex, solved from a few starts: status ``local
 the set of torques that keep every link's set sticking is star-shaped about 0, so its
 maximum is the largest ratio on the cone of the contact state: Dinkelbach's iteration on the
 KKT points of the cone's faces (as :mod:`snakecg.scenes.extremes`), then the torque scaled
-to the largest that keeps every limit. ``allow_slide=True`` also searches the region's
+to the largest that keeps every limit. A state on which nothing moves (the sticking sets
+lock the snake) has no ratio (0/0) and is left out. ``allow_slide=True`` also searches the region's
 boundary with the forward solve: status ``local`` where a sliding torque beats the sticking
 optimum, else ``stick_only`` (the sticking answer, not certified against sliding pieces).
 
