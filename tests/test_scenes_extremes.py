@@ -134,10 +134,12 @@ def test_pegs_example_exact():
     _check_against_samples(model, q, ex, np.random.default_rng(1))
 
 
-@pytest.mark.parametrize("path,q", [("wall_push", [0, 0, 0, 0.4, -0.3, 0.5]),
-                                    ("two_objects", [0, 0, 0, 0.6, -0.6, 0.6])])
+@pytest.mark.parametrize("path,q", [("wall_push", [0, 0, 0, 0.05, 0, 0]),
+                                    ("two_objects", [0, 0, 0, 0.05, -0.05, 0.05])])
 def test_certified_bounds_hold_every_sample(path, q, rng):
-    """Coulomb ground: the bounds hold every dense sample; the values are attained."""
+    """Coulomb ground: the bounds hold every dense sample; the values are attained. (Nearly
+    straight: bent further, friction holds every torque of the unit ellipsoid still, answered
+    exactly in tests/test_scenes_friction_hold.py.)"""
     model = snakecg.load(read_scene(f"examples/scenes/{path}.toml"))
     q = np.array(q, float)
     ex = model.extremes(q, budget=20000, gap=1e-3)

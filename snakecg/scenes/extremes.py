@@ -25,6 +25,11 @@ Two methods, chosen per configuration:
   motion's norm is 1) or until ``budget`` solves are spent; what the certificate leaves out
   is said there (``sr`` where nothing moves, ``min_kept``).
 
+Before either, a configuration where friction holds every torque of the ellipsoid still
+(:mod:`snakecg.scenes.friction_hold`: the ground sets balance every torque within their
+sizes) is answered exactly: nothing moves, every object's norm, ``norm_qdd`` and ``sr`` are
+0 and ``norm_lambda`` is 1 on the whole boundary.
+
 ``min_kept`` (both methods): the minimum over the torques that keep every contact of every
 object held (equal to ``min`` when no object is touched).
 """
@@ -39,8 +44,9 @@ import numpy as np
 from ..errors import InputError
 from ..extremes_result import Extremes
 from ..sphere_kkt import _cut, quadratic_candidates
-from .maps import scene_problem, state_maps
+from .maps import scene_problem, state_maps, whitening
 from .extremes_bounds import Sampler, bounds
+from .friction_hold import friction_holds
 from .solve import BOX, DISC, FREE, HELD, SLIDE_NEG, SLIDE_POS, SPLIT, UNILATERAL, ZERO
 
 __all__ = ["SceneExtremes", "extremes", "metric_names", "whitening", "quadratics", "piece_faces",
@@ -113,8 +119,9 @@ def extremes(model, q, *, gap: float = 1e-3, budget: int = 100_000,
     """Best and worst of every metric over the input ellipsoid's boundary (eq. 31), with the
     torques attaining them and a certificate (see the module docstring).
 
-    ``q``: ``(n_s,)`` or ``(N, n_s)``. ``exact``: None (default) enumerates the exact pieces
-    where every block is a 1-D set and bounds the rest; False always bounds. ``gap``: the
+    ``q``: ``(n_s,)`` or ``(N, n_s)``. ``exact``: None (default) answers a configuration
+    where friction holds every torque exactly, enumerates the exact pieces where every block
+    is a 1-D set and bounds the rest; False always bounds. ``gap``: the
     absolute gap at which the bounds stop (every norm and sr lie in [0, 1] there);
     ``budget``: forward solves allowed per configuration for the bounds."""
     ns = model.n_coordinates
@@ -146,6 +153,10 @@ def extremes(model, q, *, gap: float = 1e-3, budget: int = 100_000,
             if not batched:
                 raise
             parts.append(_none(names, model.n_joints, str(exc)))
+            continue
+        hold = friction_holds(p, radius=1.0) if exact is not False else None
+        if hold is not None and hold.holds:
+            parts.append(_held(model, p, names, hold))
             continue
         if exact is not False and _polyhedral(p):
             n_states = int(np.prod([len(x) for x in _block_states(p)]))
@@ -189,12 +200,27 @@ def _stack(parts, names):
     return ex
 
 
+def _held(model, p, names, hold) -> SceneExtremes:
+    """Friction holds every torque of the ellipsoid still
+    (:mod:`snakecg.scenes.friction_hold`): ``a = 0`` for every torque, so on the boundary
+    every object's norm, ``norm_qdd`` and ``sr`` are 0 and ``norm_lambda = |a_free|_M^2 = 1``,
+    exactly; the torque reported for each is the one that uses the most friction, where the
+    forward solve checks the values."""
+    ex = SceneExtremes(method=f"friction holds every torque of the ellipsoid still (at most "
+                              f"{hold.fraction:.3g} of a friction set's size is needed): "
+                              f"nothing moves", pieces=0)
+    for m in names:
+        v = 1.0 if m == "norm_lambda" else 0.0
+        for attr in ("max", "min", "min_kept"):
+            getattr(ex, attr)[m] = v
+            getattr(ex, "tau_" + attr)[m] = hold.tau.copy()
+    ex = _check(model, p, ex, names)
+    for m in names:  # the exact values, not the forward solve's rounding of them
+        ex.max[m] = ex.bound_max[m] = ex.min[m]
+    return ex
+
+
 # ---------------------------------------------------------------- exact pieces
-def whitening(p):
-    L = np.linalg.cholesky(p.N)
-    return np.linalg.inv(L).T  # tau = T u
-
-
 def quadratics(p, mp, T, names):
     """Every metric of the state's maps as ``(A, g, c)`` in ``u``: ``u^T A u + 2 g^T u + c``."""
     ns, no = p.n_s, p.n_o

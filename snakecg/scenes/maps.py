@@ -26,7 +26,7 @@ from .contacts import StateRows
 from .solve import BOX, DISC, FREE, HELD, SLIDE, SLIDE_NEG, SLIDE_POS, SPLIT, UNILATERAL, ZERO
 
 __all__ = ["Problem", "scene_problem", "state_maps", "maps", "boundary_point", "block_names",
-           "PINV_RCOND"]
+           "whitening", "PINV_RCOND"]
 
 #: Relative cut-off of the held rows' pseudo-inverse (singular values of ``G_HH`` below it
 #: times the largest are its null space: dependent rows).
@@ -74,6 +74,13 @@ class Problem:
 def scene_problem(model, q) -> Problem:
     """The :class:`Problem` of one configuration ``q`` (n_s,) of a general scene model."""
     return Problem(model, q)
+
+
+def whitening(p: Problem) -> np.ndarray:
+    """``T`` with ``tau = T u``: the whitened torques ``u = L^T tau`` (``N = L L^T``, eq. 31),
+    in which the input ellipsoid is the unit ball."""
+    L = np.linalg.cholesky(p.N)
+    return np.linalg.inv(L).T
 
 
 def boundary_point(kind: int, par, angle: float) -> np.ndarray:

@@ -3,6 +3,13 @@
 ``tau^T N tau <= radius^2``, and/or the box ``|tau_j| <= tau_max_j``), with no ground set
 of a link sliding (the paper's "every wheel sticking", on every ground model).
 
+First, whether friction holds every torque of the region still
+(:mod:`snakecg.scenes.friction_hold`: a friction set's size ``mu m g`` is constant, so the
+torques it holds are not a cone): there nothing moves, every torque gives ``sr = 0`` (its
+value where nothing moves) and ``d . a_o = 0``, so ``max_sr`` and ``strongest_push`` are
+``optimal`` with 0 at the torque that needs the most friction, and ``least_slip_push`` is
+``infeasible``.
+
 The exact pieces: every contact held or open, every link's wheel or friction set sticking,
 each object's own ground friction sticking or sliding. On a piece the maps are affine
 (:mod:`snakecg.scenes.maps`) and, where no object slides, the task is convex: a quadratic
@@ -17,7 +24,8 @@ piece: the problem is no longer convex, solved from a few starts: status ``local
 the set of torques that keep every link's set sticking is star-shaped about 0, so its
 maximum is the largest ratio on the cone of the contact state: Dinkelbach's iteration on the
 KKT points of the cone's faces (as :mod:`snakecg.scenes.extremes`), then the torque scaled
-to the largest that keeps every limit. ``allow_slide=True`` also searches the region's
+to the largest that keeps every limit. A state on which nothing moves (the sticking sets
+lock the snake) has no ratio (0/0) and is left out. ``allow_slide=True`` also searches the region's
 boundary with the forward solve: status ``local`` where a sliding torque beats the sticking
 optimum, else ``stick_only`` (the sticking answer, not certified against sliding pieces).
 
@@ -34,6 +42,8 @@ import numpy as np
 from .._inputs import short_repr
 from ..errors import InputError
 from ..limits import describe, resolve_tau_max
+from .extremes import MOTION_FLOOR
+from .friction_hold import friction_holds
 from .maps import scene_problem
 from .optimize_pieces import solve_pieces
 from .optimize_search import search
@@ -184,6 +194,9 @@ def optimize(model, q, objective="max_sr", *, object=1, tau_max="robot", radius=
         raise InputError("a_obj (a full object acceleration) needs every link's set sticking "
                          "(allow_slide=False): with sliding links it is searched for, and an "
                          "equality is not met by a search; give direction and a_min instead")
+    hold = friction_holds(p, task["radius"], task["tau_max"])
+    if hold.holds:
+        return _held(model, qa, p, task, hold, limits)
     tau, status, cert, solver = None, "infeasible", {}, ""
     if not task["allow_slide"] or (objective == "max_sr" and not sliding_objects):
         if objective == "max_sr" and not sliding_objects:
@@ -219,10 +232,39 @@ def optimize(model, q, objective="max_sr", *, object=1, tau_max="robot", radius=
     return res
 
 
-def objective_of(task, an, p):
-    """The task's objective read from a forward result ``an``."""
+def _held(model, qa, p, task, hold, limits):
+    """The answer where friction holds every torque of the region still
+    (:mod:`snakecg.scenes.friction_hold`): nothing moves, so every torque gives ``sr = 0``
+    (its convention where nothing moves) and ``d . a_o = 0``; a push of at least ``a_min``
+    is infeasible. Checked by the forward solve at the torque that uses the most friction."""
+    why = (f"friction holds every torque of the region still (at most {hold.fraction:.3g} "
+           f"of a friction set's size is needed): nothing moves")
+    cert = {"kind": "friction holds the region: every ground set balances every torque "
+                    "of the region within its size", "ok": True, "fraction": hold.fraction,
+            "value": 0.0}
+    solver = "balance of the torques by the ground sets over the region (friction_holds)"
+    target = task["a_obj"]
+    moving = (task["objective"] == "least_slip_push"
+              and (target is None or np.any(target != 0)))
+    if moving:
+        cert["reason"] = why + ", so no torque of the region moves the object"
+        return _finish(model, qa, p, task, None, "infeasible", cert, solver, limits)
+    cert["reason"] = why + {"max_sr": ": sr = 0 for every torque (0 where nothing moves)",
+                            "strongest_push": ": every torque gives d . a_o = 0",
+                            "least_slip_push": ": every torque gives a_o = 0 and "
+                                               "norm_qdd = 0"}[task["objective"]]
+    res = _finish(model, qa, p, dict(task, allow_slide=False), hold.tau, "optimal", cert,
+                  solver, limits)
+    return res
+
+
+def objective_of(task, an, p, tau):
+    """The task's objective read from a forward result ``an`` at ``tau``; sr is 0 where
+    nothing moves (``|a|_M^2`` below ``MOTION_FLOOR`` of the free motion's ``tau^T N tau``,
+    where the ratio is one of rounding errors)."""
     if task["objective"] == "max_sr":
-        return float(an.sr)
+        moving = float(an.norm_a_obj + an.norm_qdd) > MOTION_FLOOR * float(tau @ p.N @ tau)
+        return float(an.sr) if moving else 0.0
     if task["objective"] == "least_slip_push":
         return float(an.norm_qdd)
     ao = np.asarray(an.a_obj)[task["object"] - 1]
@@ -256,7 +298,7 @@ def _finish(model, qa, p, task, tau, status, cert, solver, limits):
                                                       "limits"), np.nan, obj, [], an, solver,
                                    cert, limits)
     an = model.forward(qa, tau)
-    value = objective_of(task, an, p)
+    value = objective_of(task, an, p, tau)
     want = cert.get("value", value)
     reason = cert.get("reason", "")
     slid = [g for g in an.ground if g.get("link") and g["state"].startswith("slide")

@@ -5,8 +5,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from .extremes import best_on_pieces, piece_faces, quadratics, whitening
-from .maps import state_maps
+from .extremes import MOTION_FLOOR, best_on_pieces, piece_faces, quadratics
+from .maps import state_maps, whitening
 from .optimize_task import MARGIN, contact_states, gauge
 from .solve import HELD, UNILATERAL
 
@@ -40,8 +40,15 @@ def max_sr_exact(p, roles, task):
     T = whitening(p)
     states = contact_states(p, roles)
     conds, forms, lams = [], [], []
+    locked = 0
     for st in states:
         mp = state_maps(p, st)
+        f = quadratics(p, mp, T, ())
+        # a state on which nothing moves (the sticking sets lock the snake and the objects):
+        # sr is 0 there by its convention, not a ratio of rounding errors; left out
+        if np.linalg.eigvalsh(f["norm_a_obj"][0] + f["norm_qdd"][0]).max() <= MOTION_FLOOR:
+            locked += 1
+            continue
         L, W = mp["lam_from_tau"] @ T, mp["w_from_tau"] @ T
         rows = [L[p.start[b]] if code == HELD else W[p.start[b]]
                 for b, code in enumerate(st) if p.kind[b] == UNILATERAL]
@@ -49,14 +56,21 @@ def max_sr_exact(p, roles, task):
         nrm = np.linalg.norm(C, axis=1)
         C = C[nrm > 1e-14] / nrm[nrm > 1e-14, None]
         conds.append(np.hstack([C, np.zeros((len(C), 1))]))  # homogeneous: a cone
-        forms.append(quadratics(p, mp, T, ()))
+        forms.append(f)
         lams.append(mp["lam_from_tau"])
+    cert = {"kind": "Dinkelbach on the KKT points of every contact state's cone (every "
+                    "link's set sticking)", "states": len(states), "locked": locked,
+            "rounds": 0, "ok": False, "value": 0.0}
+    if not conds:
+        cert["reason"] = ("with every link's set sticking nothing moves (the sets lock the "
+                          "snake): no sticking torque moves an object")
+        return None, cert
     faces = piece_faces(conds, p.n_a)
 
-    def ratio(i, u):
+    def ratio(i, u):  # u on the unit sphere: the free motion's norm is 1
         Ao, Aq = forms[i]["norm_a_obj"][0], forms[i]["norm_qdd"][0]
         om, D = u @ Ao @ u, u @ (Ao + Aq) @ u
-        return om / D if D > 1e-12 * (np.abs(Ao).max() + np.abs(Aq).max() + 1e-300) else 0.0
+        return om / D if D > MOTION_FLOOR else 0.0
 
     t, best, rounds = 0.0, None, 0
     for rounds in range(1, 61):
@@ -69,9 +83,7 @@ def max_sr_exact(p, roles, task):
         if best is not None and not r > t + SR_GAIN:
             break
         t, best = max(r, t), (i, u)
-    cert = {"kind": "Dinkelbach on the KKT points of every contact state's cone (every "
-                    "link's set sticking)", "states": len(states), "rounds": rounds,
-            "ok": best is not None, "value": float(t)}
+    cert.update(rounds=rounds, ok=best is not None, value=float(t))
     if best is None or not t > 0:
         cert["reason"] = "no torque within the limits moves an object with every link sticking"
         return None, cert
