@@ -1,0 +1,113 @@
+"""The engine's signed distance of every pair of shapes (snakecg/engine/scene_geometry.c:
+the depth from the hull of the cores' Minkowski difference) against the tests' reference
+(tests/scenes_geometry_reference.py: the separating axis theorem where the cores overlap,
+the closest features apart), on random poses that overlap as often as not; its continuity
+through contact; the contacts of a corner crossing a link (one) and of a flush face (the two
+ends of the overlap, one where shorter than the tolerance)."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+import snakecg
+from snakecg import Robot
+from snakecg.scenes import GeneralScene, Obstacle, SceneObject
+from snakecg.scenes.contacts import StateRows, link_ends
+
+from scenes_geometry_reference import closest
+from scenes_rows_reference import shapes
+
+# (a, b) of every kind of pair: link (segment or capsule) with a box, a disc, a peg, a wall,
+# a box obstacle and a link; a box object with a disc, a peg, a wall, a box; a disc with a
+# peg, a wall, a box
+PAIRS = [(("link", 0), ("object", 0)), (("link", 0), ("object", 1)),
+         (("link", 0), ("obstacle", 0)), (("link", 0), ("obstacle", 1)),
+         (("link", 0), ("obstacle", 2)), (("link", 0), ("link", 2)),
+         (("object", 0), ("object", 1)), (("object", 0), ("obstacle", 0)),
+         (("object", 0), ("obstacle", 1)), (("object", 0), ("obstacle", 2)),
+         (("object", 1), ("obstacle", 0)), (("object", 1), ("obstacle", 1)),
+         (("object", 1), ("obstacle", 2))]
+
+
+def _model(radius, rng):
+    """A 3-link robot near the origin, a box and a disc object, a peg, a wall and a box
+    obstacle, each within reach of link 1 (0.15 m long, from -0.075 to 0.075 on x)."""
+    obstacles = (Obstacle(shape="peg", center=tuple(rng.uniform(-0.05, 0.05, 2)),
+                          radius=float(rng.uniform(0.005, 0.03))),
+                 Obstacle(shape="wall", point=tuple(rng.uniform(-0.03, 0.03, 2)),
+                          normal=tuple(rng.normal(size=2))),
+                 Obstacle(shape="box", center=tuple(rng.uniform(-0.05, 0.05, 2)),
+                          size=tuple(rng.uniform(0.02, 0.1, 2)),
+                          angle=float(rng.uniform(-3, 3))))
+    objects = (SceneObject(shape="box", size=tuple(rng.uniform(0.02, 0.1, 2)), mass=1.0,
+                           pose=(0.0, 0.2, 0.0)),
+               SceneObject(shape="disc", radius=float(rng.uniform(0.005, 0.04)), mass=1.0,
+                           pose=(0.0, -0.2, 0.0)))
+    return snakecg.load(GeneralScene(Robot(joints=2), radius=radius, objects=objects,
+                                     obstacles=obstacles))
+
+
+def _reference(model, q, qo, a, b):
+    bodies = dict(shapes(model.scene, model.link_poses(q), qo))
+    return closest(bodies[a], bodies[b], model.packed.vector[4])
+
+
+def test_signed_distances_of_every_pair_against_the_reference(rng):
+    """Random poses of the objects and the robot's first link near the obstacles: the
+    engine's distance of every pair equals the reference's to 1e-12 of the scene's size,
+    apart and overlapping (both seen often for every pair)."""
+    seen = {}
+    for trial in range(12):
+        model = _model(0.0 if trial % 2 == 0 else 0.01, rng)
+        size = model.packed.vector[4]
+        engine = StateRows(model, 1e-6 * size)
+        for _ in range(40):
+            q = np.r_[rng.uniform(-0.03, 0.03, 2), rng.uniform(-3, 3), rng.uniform(-2.5, 2.5, 2)]
+            qo = np.c_[rng.uniform(-0.06, 0.06, (2, 2)), rng.uniform(-3, 3, 2)]
+            for a, b in PAIRS:
+                if (a, b) == (("link", 0), ("link", 2)) and rng.random() < 0.5:
+                    q[3:] = rng.uniform(2.6, 3.1, 2)  # folded: link 3 back over link 1
+                d = engine.gap(q, qo, a, b)
+                dr, _ = _reference(model, q, qo, a, b)
+                assert abs(d - dr) <= 1e-12 * size, (a, b, d, dr)
+                apart, over = seen.get((a, b), (0, 0))
+                seen[a, b] = (apart + (dr > 0), over + (dr < 0))
+    assert set(seen) == set(PAIRS)
+    assert all(apart >= 20 and over >= 20 for apart, over in seen.values()), seen
+
+
+@pytest.mark.parametrize("radius", [0.0, 0.01])
+def test_the_distance_is_continuous_through_contact(rng, radius):
+    """Each object, turned at random, driven straight through link 1 and each obstacle in
+    steps of 0.1 mm (out of a wall along its normal): the distance goes from positive to
+    negative and back, and changes by
+    no more than the step (a signed distance is 1-Lipschitz in a translation), so a
+    crossing is never seen as touching and a depth never jumps."""
+    model = _model(radius, rng)
+    engine = StateRows(model, 1e-6 * model.packed.vector[4])
+    q = np.array([0.0, 0.0, 0.0, 0.4, -0.4])  # link 1 from (-0.075, 0) to (0.075, 0)
+    peg, wall, box = model.scene.obstacles
+    s = np.linspace(-0.15, 0.15, 3001)
+    checked = 0
+    for j in (0, 1):
+        for b, centre, u in ((("link", 0), (0.0, 0.0), None), (("obstacle", 0), peg.center, None),
+                             (("obstacle", 1), wall.point, wall.normal),
+                             (("obstacle", 2), box.center, None)):
+            u = rng.normal(size=2) if u is None else np.asarray(u, float)
+            u /= np.hypot(*u)
+            th = float(rng.uniform(-3, 3))
+            d = []
+            for si in s:
+                qo = np.array([[0.0, 0.5, 0.0], [0.0, -0.5, 0.0]])  # the other object away
+                qo[j] = [*(np.asarray(centre) + si * u), th]
+                a2, b2 = ((b, ("object", j)) if b[0] == "link" else (("object", j), b))
+                d.append(engine.gap(q, qo, a2, b2))
+            d = np.array(d)
+            if b == ("obstacle", 1):  # from inside the wall out along its normal
+                assert d[0] < 0 < d[-1], (j, b)
+            else:
+                assert d[0] > 0 > d[len(s) // 2] and d[-1] > 0, (j, b)
+            assert np.abs(np.diff(d)).max() <= (s[1] - s[0]) * (1 + 1e-9), (j, b)
+            checked += 1
+    assert checked == 8
