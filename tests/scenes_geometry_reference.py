@@ -46,9 +46,9 @@ def _point_segment(p, a, b):
     return a + t * d, t
 
 
-def _segment_pairs(a0, a1, b0, b1, scale):
+def _segment_pairs(a0, a1, b0, b1, scale, merge):
     """Nearest point pairs of two segments: one, or the two ends of the shared stretch of
-    parallel ones."""
+    parallel ones (its middle where shorter than ``merge``)."""
     da, db = a1 - a0, b1 - b0
     la, lb = np.hypot(*da), np.hypot(*db)
     cross = da[0] * db[1] - da[1] * db[0]
@@ -58,7 +58,7 @@ def _segment_pairs(a0, a1, b0, b1, scale):
         lo, hi = max(0.0, s0), min(la, s1)
         if hi - lo > 1e-9 * scale:
             out = []
-            for s in (lo, hi):
+            for s in ((lo, hi) if hi - lo > merge else (0.5 * (lo + hi),)):
                 pa = a0 + s * u
                 pb, _ = _point_segment(pa, b0, b1)
                 out.append((pa, pb))
@@ -175,7 +175,7 @@ def closest(A: Shape, B: Shape, scale: float, merge: float = 0.0):
     pairs = []
     for a0, a1 in A.segments():
         for b0, b1 in B.segments():
-            pairs += _segment_pairs(a0, a1, b0, b1, scale)
+            pairs += _segment_pairs(a0, a1, b0, b1, scale, merge)
     dist = np.array([np.hypot(*(q - p)) for p, q in pairs])
     core = dist.min()
     keep, out = [], []

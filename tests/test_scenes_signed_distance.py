@@ -15,8 +15,10 @@ from snakecg import Robot
 from snakecg.scenes import GeneralScene, Obstacle, SceneObject
 from snakecg.scenes.contacts import StateRows, link_ends
 
+from snakecg.errors import InputError
+
 from scenes_geometry_reference import closest
-from scenes_rows_reference import shapes
+from scenes_rows_reference import rows_of, shapes
 
 # (a, b) of every kind of pair: link (segment or capsule) with a box, a disc, a peg, a wall,
 # a box obstacle and a link; a box object with a disc, a peg, a wall, a box; a disc with a
@@ -77,6 +79,43 @@ def test_signed_distances_of_every_pair_against_the_reference(rng):
     assert all(apart >= 20 and over >= 20 for apart, over in seen.values()), seen
 
 
+def test_contacts_of_overlapping_shapes_against_the_reference(rng):
+    """Random poses, a tolerance of 2 to 20 % of the scene's size so that overlapping pairs
+    keep their contacts: the engine's contacts (bodies, surface points, normals, gaps) equal
+    the reference's to 1e-13 of the scene's size, or both refuse the same overlap."""
+    compared = overlapping = refused = 0
+    for trial in range(12):
+        model = _model(0.0 if trial % 2 == 0 else 0.01, rng)
+        size = model.packed.vector[4]
+        for _ in range(20):
+            tol = float(rng.uniform(0.02, 0.2) * size)
+            q = np.r_[rng.uniform(-0.03, 0.03, 2), rng.uniform(-3, 3), rng.uniform(-2.5, 2.5, 2)]
+            qo = np.c_[rng.uniform(-0.06, 0.06, (2, 2)), rng.uniform(-3, 3, 2)]
+            P, J = model.link_poses(q), model.link_jacobians(q)
+            try:
+                ref, _ = rows_of(model.scene, model.masses, P, J, obj_poses=qo, tol=tol)
+            except InputError as exc:
+                with pytest.raises(InputError) as got:
+                    StateRows(model, tol).rows(q, qo)
+                assert str(got.value) == str(exc)
+                refused += 1
+                continue
+            rows, _, _ = StateRows(model, tol).rows(q, qo)
+            assert len(rows.contacts) == len(ref.contacts)
+            for c, r in zip(rows.contacts, ref.contacts):
+                assert (c.a, c.b, c.row) == (r.a, r.b, r.row)
+                for x, y in ((c.point_a, r.point_a), (c.point_b, r.point_b),
+                             (c.normal, r.normal)):
+                    np.testing.assert_allclose(x, y, rtol=0, atol=1e-13 * size)
+                assert abs(c.gap - r.gap) <= 1e-13 * size
+                overlapping += c.gap < 0
+            np.testing.assert_allclose(rows.A, ref.A, rtol=0,
+                                       atol=1e-12 * max(1.0, abs(ref.A).max()))
+            compared += 1
+    assert compared >= 50 and overlapping >= 200 and refused >= 50, (compared, overlapping,
+                                                                     refused)
+
+
 @pytest.mark.parametrize("radius", [0.0, 0.01])
 def test_the_distance_is_continuous_through_contact(rng, radius):
     """Each object, turned at random, driven straight through link 1 and each obstacle in
@@ -111,3 +150,75 @@ def test_the_distance_is_continuous_through_contact(rng, radius):
             assert np.abs(np.diff(d)).max() <= (s[1] - s[0]) * (1 + 1e-9), (j, b)
             checked += 1
     assert checked == 8
+
+
+def _one_link_and_box(radius, size):
+    """Link 1 from (-0.075, 0) to (0.075, 0) (q = 0), link 2 turned down out of the way, and
+    a box placed by the state."""
+    box = SceneObject(shape="box", size=size, mass=1.0, pose=(0.0, 0.3, 0.0))
+    model = snakecg.load(GeneralScene(Robot(joints=1), radius=radius, objects=(box,)))
+    q = np.array([0.0, 0.0, 0.0, -1.0])
+    ends = link_ends(model.scene, model.link_poses(q))[0]
+    np.testing.assert_allclose(ends, [[-0.075, 0.0], [0.075, 0.0]], atol=1e-15)
+    return model, q
+
+
+def _contacts(model, q, qo, tol):
+    rows, _, _ = StateRows(model, tol).rows(q, np.atleast_2d(qo))
+    return [c for c in rows.contacts if (c.a, c.b) == (("link", 0), ("object", 0))]
+
+
+@pytest.mark.parametrize("radius", [0.0, 0.01])
+def test_a_corner_across_a_link_is_one_contact_at_its_depth(rng, radius):
+    """A box's corner pushed across link 1 (a segment, or a capsule's surface) by depths
+    from 1e-10 m to half the tolerance, the box turned at random: one contact, at the corner,
+    the link's normal, its gap minus the depth (the closed form: the corner's height)."""
+    model, q = _one_link_and_box(radius, (0.04, 0.03))
+    tol = 1e-6
+    for _ in range(10):
+        th = float(rng.uniform(0.15, np.pi / 2 - 0.15) + rng.integers(4) * np.pi / 2)
+        c, s = np.cos(th), np.sin(th)
+        local = np.array([[-0.02, -0.015], [0.02, -0.015], [0.02, 0.015], [-0.02, 0.015]])
+        corners = local @ np.array([[c, s], [-s, c]])  # turned by th
+        low = corners[np.argmin(corners[:, 1])]
+        for depth in (1e-10, 1e-8, 0.5 * tol):
+            centre = np.array([-0.02, radius - depth]) - low
+            got = _contacts(model, q, [*centre, th], tol)
+            assert len(got) == 1
+            k = got[0]
+            np.testing.assert_allclose(k.normal, [0.0, 1.0], atol=1e-12)
+            assert k.gap == pytest.approx(-depth, rel=1e-6, abs=1e-16)
+            np.testing.assert_allclose(k.point_b, centre + low, atol=1e-15)
+            np.testing.assert_allclose(k.point_a, [centre[0] + low[0], radius], atol=1e-15)
+
+
+@pytest.mark.parametrize("radius", [0.0, 0.01])
+def test_a_flush_face_is_the_two_ends_of_the_overlap_or_its_middle(radius):
+    """A box lying flush on link 1, just apart or just inside (gaps of half the tolerance
+    either way, and 1e-10 m inside): two contacts at the ends of the shared stretch (the
+    box's bottom corners, 0.1 m apart); where the box overlaps the link's end by less than
+    the tolerance, one contact at the middle of that stretch, apart and inside alike (but
+    where the box is deeper in a segment than that stretch: it parts sideways, by the
+    stretch; a capsule's round end keeps it parting upwards)."""
+    model, q = _one_link_and_box(radius, (0.1, 0.04))
+    tol = 1e-6
+    for gap in (0.5 * tol, -1e-10, -0.5 * tol):
+        y = radius + 0.02 + gap
+        got = _contacts(model, q, [0.0, y, 0.0], tol)
+        assert len(got) == 2
+        np.testing.assert_allclose(sorted(k.point_b[0] for k in got), [-0.05, 0.05], atol=1e-15)
+        for k in got:
+            assert k.gap == pytest.approx(gap, rel=1e-6)
+            np.testing.assert_allclose(k.normal, [0.0, 1.0], atol=1e-12)
+        for short in (0.3 * tol, 0.9 * tol):  # the box's right edge past the link's rear end
+            got = _contacts(model, q, [-0.125 + short, y, 0.0], tol)
+            assert len(got) == 1
+            if radius == 0 and -gap > short:  # deeper than the stretch: parted sideways
+                np.testing.assert_allclose(got[0].normal, [-1.0, 0.0], atol=1e-12)
+                assert got[0].gap == pytest.approx(-short, rel=1e-6)
+                continue
+            np.testing.assert_allclose(got[0].point_b, [-0.075 + 0.5 * short, y - 0.02],
+                                       atol=1e-15)
+            assert got[0].gap == pytest.approx(gap, rel=1e-6)
+        got = _contacts(model, q, [-0.125 + 1.1 * tol, y, 0.0], tol)
+        assert len(got) == 2

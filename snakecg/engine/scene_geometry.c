@@ -55,9 +55,10 @@ static void put(double *pairs, int *np, const double *p, const double *q) {
 }
 
 /* Nearest point pairs of two segments, appended to pairs (4 doubles each): one, or the two
- * ends of the shared stretch of parallel ones, or every candidate at the least distance. */
+ * ends of the shared stretch of parallel ones (its middle where shorter than merge), or
+ * every candidate at the least distance. */
 static void segment_pairs(const double *a0, const double *a1, const double *b0, const double *b1,
-                          double scale, double *pairs, int *np) {
+                          double scale, double merge, double *pairs, int *np) {
   double da[2] = {a1[0] - a0[0], a1[1] - a0[1]}, db[2] = {b1[0] - b0[0], b1[1] - b0[1]};
   double la = hypot(da[0], da[1]), lb = hypot(db[0], db[1]);
   double cross = da[0] * db[1] - da[1] * db[0], c[4][4], dist[4], best;
@@ -75,7 +76,9 @@ static void segment_pairs(const double *a0, const double *a1, const double *b0, 
     hi = s1 < la ? s1 : la;
     if (hi - lo > 1e-9 * scale) {
       double s[2] = {lo, hi}, pa[2], pb[2];
-      for (i = 0; i < 2; ++i) {
+      int two = hi - lo > merge;
+      if (!two) s[0] = 0.5 * (lo + hi);
+      for (i = 0; i < 1 + two; ++i) {
         pa[0] = a0[0] + s[i] * u[0];
         pa[1] = a0[1] + s[i] * u[1];
         point_segment(pa, b0, b1, pb);
@@ -317,7 +320,7 @@ SC_INTERNAL double sc_shape_closest(const sc_shape *A, const sc_shape *B, double
       const double *a0, *a1, *b0, *b1;
       segment_of(A, i, &a0, &a1);
       segment_of(B, j, &b0, &b1);
-      segment_pairs(a0, a1, b0, b1, scale, pairs, &np);
+      segment_pairs(a0, a1, b0, b1, scale, merge, pairs, &np);
     }
   for (i = 0; i < np; ++i) {
     const double *o = pairs + 4 * i;
