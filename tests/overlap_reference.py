@@ -97,6 +97,28 @@ def crossing_depth(a0, a1, b0, b1):
     return np.where(crossing, ends, 0.0)
 
 
+def sat_depths(scene, q, q_obj):
+    """``(N, n_l)``: each link's penetration depth in the plate (the least translation that
+    parts them; 0 apart) by the separating axis theorem: minus the largest gap of their
+    projections over the axes normal to and along the link and the plate's edges."""
+    rear, front = link_ends(scene.robot, q)
+    corners = plate_corners(q_obj, scene.object_distance)                # (N, 4, 2)
+    edges = np.roll(corners, -1, axis=1) - corners
+    out = np.zeros(rear.shape[:2])
+    for i in range(rear.shape[1]):
+        seg = np.stack([rear[:, i], front[:, i]], axis=1)                 # (N, 2, 2)
+        d = seg[:, 1] - seg[:, 0]
+        axes = np.concatenate([edges[:, :2], d[:, None], np.stack([-d[:, 1], d[:, 0]],
+                                                                   -1)[:, None]], axis=1)
+        axes = axes / np.linalg.norm(axes, axis=-1, keepdims=True)
+        axes = np.concatenate([axes, -axes], axis=1)                      # (N, 8, 2)
+        ps = np.einsum("npj,naj->nap", seg, axes)
+        pc = np.einsum("npj,naj->nap", corners, axes)
+        gap = pc.min(axis=-1) - ps.max(axis=-1)                           # (N, 8)
+        out[:, i] = np.maximum(0.0, -gap.max(axis=1))
+    return out
+
+
 def overlaps(scene, q, q_obj):
     """Every overlap ``(N, n_pairs)`` and the pairs' bodies (``(link, "object")`` or
     ``(link, link)``, links from 1): each link with the object (the square plate of side

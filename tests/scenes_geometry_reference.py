@@ -3,15 +3,19 @@ segment, radius the robot's), a disc or peg (a point), a box (a convex polygon, 
 wall (a half-plane). Plain NumPy on one configuration; every function returns the pairs of
 nearest points (two where two features are parallel: the ends of the shared interval).
 
-The engine finds the contacts (``snakecg/engine/scene_geometry.c``); this module is the
-tests' reference for its closest points, written apart from it.
+The signed distance: apart, the least distance of the cores' features; overlapping, minus the
+penetration depth by the separating axis theorem (the largest gap of the cores' projections
+over the edges' normals and directions, negative when every axis overlaps), the radii
+subtracted. The engine finds the contacts (``snakecg/engine/scene_geometry.c``, the depth from
+the hull of the cores' Minkowski difference); this module is the tests' reference for its
+closest points, written apart from it.
 """
 
 from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["Shape", "closest"]
+__all__ = ["Shape", "closest", "sat_gap"]
 
 
 class Shape:
@@ -42,9 +46,9 @@ def _point_segment(p, a, b):
     return a + t * d, t
 
 
-def _segment_pairs(a0, a1, b0, b1, scale):
+def _segment_pairs(a0, a1, b0, b1, scale, merge):
     """Nearest point pairs of two segments: one, or the two ends of the shared stretch of
-    parallel ones."""
+    parallel ones (its middle where shorter than ``merge``)."""
     da, db = a1 - a0, b1 - b0
     la, lb = np.hypot(*da), np.hypot(*db)
     cross = da[0] * db[1] - da[1] * db[0]
@@ -54,7 +58,7 @@ def _segment_pairs(a0, a1, b0, b1, scale):
         lo, hi = max(0.0, s0), min(la, s1)
         if hi - lo > 1e-9 * scale:
             out = []
-            for s in (lo, hi):
+            for s in ((lo, hi) if hi - lo > merge else (0.5 * (lo + hi),)):
                 pa = a0 + s * u
                 pb, _ = _point_segment(pa, b0, b1)
                 out.append((pa, pb))
@@ -78,15 +82,42 @@ def _segment_pairs(a0, a1, b0, b1, scale):
     return [cands[i] for i in range(4) if dist[i] <= best + 1e-12 * scale]
 
 
-def _inside(p, poly) -> float:
-    """Depth of ``p`` inside the convex polygon (> 0 inside), from its nearest edge."""
-    depth = np.inf
-    for i in range(len(poly)):
-        a, b = poly[i], poly[(i + 1) % len(poly)]
-        e = b - a
-        n = np.array([e[1], -e[0]]) / np.hypot(*e)  # outward for counter-clockwise corners
-        depth = min(depth, -(p - a) @ n)
-    return depth
+def sat_gap(A: Shape, B: Shape):
+    """``(g, n)``: the largest gap ``min(B . n) - max(A . n)`` of the cores' projections over
+    the unit axes normal and along every edge (both ways), and its axis. ``g < 0`` exactly
+    where the cores overlap, then minus their penetration depth, ``n`` parting them."""
+    best, axis = -np.inf, None
+    for sh in (A, B):
+        for a, b in sh.segments():
+            e = b - a
+            L = np.hypot(*e)
+            if L == 0:
+                continue
+            for n in (np.array([e[1], -e[0]]) / L, e / L):
+                for m in (n, -n):
+                    g = (B.pts @ m).min() - (A.pts @ m).max()
+                    if g > best:
+                        best, axis = g, m
+    return best, axis
+
+
+def _overlap_pairs(A: Shape, B: Shape, n, scale, merge):
+    """The contacts of overlapping cores parted along ``n``: A's supporting feature along
+    ``n`` and B's against it; one for a corner, the ends of the shared stretch of two flush
+    edges (its middle where shorter than ``merge``)."""
+    t = np.array([-n[1], n[0]])
+    pa, pb = A.pts @ n, B.pts @ n
+    ha, hb = pa.max(), pb.min()
+    sa = A.pts[pa >= ha - 1e-9 * scale] @ t
+    sb = B.pts[pb <= hb + 1e-9 * scale] @ t
+    if np.ptp(sa) <= 1e-9 * scale:
+        us = [sa.min()]
+    elif np.ptp(sb) <= 1e-9 * scale:
+        us = [sb.min()]
+    else:
+        lo, hi = max(sa.min(), sb.min()), min(sa.max(), sb.max())
+        us = [lo, hi] if hi - lo > merge else [0.5 * (lo + hi)]
+    return [(ha * n + u * t, hb * n + u * t) for u in us]
 
 
 def _feature_normal(sh, q, scale):
@@ -111,10 +142,12 @@ def _centroid(sh):
     return sh.pts.mean(axis=0)
 
 
-def closest(A: Shape, B: Shape, scale: float):
+def closest(A: Shape, B: Shape, scale: float, merge: float = 0.0):
     """``(d, pairs)``: the signed distance of the two shapes' surfaces (< 0: overlap, its
     depth) and the contacts ``[(ca, cb, n)]``: the surface points on A and B and the unit
-    normal from A to B. ``A`` is never a half-plane."""
+    normal from A to B; contacts closer than ``merge`` (the contact tolerance) are one.
+    ``A`` is never a half-plane."""
+    merge = max(merge, 1e-9 * scale)
     if B.kind == "halfplane":
         n = B.normal
         vals = A.pts @ n - B.pts[0] @ n
@@ -134,25 +167,22 @@ def closest(A: Shape, B: Shape, scale: float):
         if dd > 1e-9 * scale:  # else the general path below (the features' normals)
             n = (q - p) / dd
             return dd - A.radius - B.radius, [(p + A.radius * n, q - B.radius * n, n)]
+    g, axis = sat_gap(A, B)
+    if axis is not None and g < -1e-12 * scale:  # overlapping cores (else touching)
+        out = [(p + A.radius * axis, q - B.radius * axis, axis)
+               for p, q in _overlap_pairs(A, B, axis, scale, merge)]
+        return g - A.radius - B.radius, out
     pairs = []
     for a0, a1 in A.segments():
         for b0, b1 in B.segments():
-            pairs += _segment_pairs(a0, a1, b0, b1, scale)
+            pairs += _segment_pairs(a0, a1, b0, b1, scale, merge)
     dist = np.array([np.hypot(*(q - p)) for p, q in pairs])
     core = dist.min()
-    # a core point inside the other polygon: overlap by its depth
-    depth = -np.inf
-    for X, Y in ((A, B), (B, A)):
-        if Y.kind == "polygon":
-            for p in X.pts:
-                depth = max(depth, _inside(p, Y.pts))
-    if depth > 1e-12 * scale:
-        return -(depth + A.radius + B.radius), []
     keep, out = [], []
     for (p, q), dd in zip(pairs, dist):
         if dd > core + 1e-12 * scale:
             continue
-        if any(np.hypot(*(p - p2)) <= 1e-9 * scale and np.hypot(*(q - q2)) <= 1e-9 * scale
+        if any(np.hypot(*(p - p2)) <= merge and np.hypot(*(q - q2)) <= merge
                for p2, q2 in keep):
             continue
         keep.append((p, q))

@@ -111,7 +111,7 @@ def rows_of(scene: GeneralScene, masses, poses, J, *, index=None, obj_poses=None
 
     for ia, ib in _pairs(bodies, 2 * tol):
         (ba, sa), (bb, sb) = bodies[ia], bodies[ib]
-        d, pairs = closest(sa, sb, size)
+        d, pairs = closest(sa, sb, size, tol)
         if d < -tol:
             where = "" if index is None else f" in sample {index}"
             raise InputError(

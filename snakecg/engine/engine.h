@@ -584,7 +584,7 @@ typedef struct { int kind, np; double p[4][2], radius, normal[2]; } sc_shape;
 typedef struct { double a[2], b[2], n[2]; } sc_touch;
 SC_INTERNAL void sc_shape_centroid(const sc_shape *s, double *c);
 SC_INTERNAL double sc_shape_closest(const sc_shape *A, const sc_shape *B, double scale,
-                                    sc_touch *out, int *count);
+                                    double merge, sc_touch *out, int *count);
 SC_INTERNAL void sc_scene_place(const double *pk, const double *P, const double *qo,
                                 sc_shape *shape, double *pose, double *centre, double *reach);
 /* The rows of a state (scene_rows.c's core_scene_rows, for scene_step.c): outputs RO_*, then

@@ -4,11 +4,16 @@
  * Every shape is a core and a radius: a link's capsule (a segment, the robot's radius), a
  * disc or a peg (a point), a box (a convex polygon, counter-clockwise, radius 0), a wall (a
  * half-plane, its normal into the free side). sc_shape_closest returns the signed distance of
- * two shapes' surfaces (< 0: overlap, its depth) and the contacts: the surface points on A and
- * on B and the unit normal from A to B, two where two features are parallel (the ends of the
- * shared stretch). Tolerances are relative to the scene's size `scale`:
- *   1e-12  equal distances (ties between candidate pairs), a core point inside a polygon
- *   1e-9   a parallel stretch worth two contacts, coincident contacts, a point on an edge
+ * two shapes' surfaces, continuous through contact: > 0 their distance, < 0 minus their
+ * penetration depth (the least translation that parts them: the origin's depth in the hull of
+ * the cores' difference B - A, plus the radii), and the contacts: the surface points on A and
+ * on B and the unit normal from A to B. Apart, the closest features: one contact, two where
+ * two features are parallel (the ends of the shared stretch); overlapping, the supporting
+ * features along the parting normal: a corner gives one, flush edges the ends of their shared
+ * stretch. Contacts closer than `merge` (the contact tolerance) are one. Tolerances relative
+ * to the scene's size `scale`:
+ *   1e-12  equal distances (ties between candidate pairs), cores that overlap (else touch)
+ *   1e-9   a parallel stretch worth two contacts, a supporting edge, a point on an edge
  * Where the cores touch (distance within 1e-9 scale) the normal is the touched edge's, or a
  * segment's side toward the other body, or the line between the shapes' centroids.
  */
@@ -50,9 +55,10 @@ static void put(double *pairs, int *np, const double *p, const double *q) {
 }
 
 /* Nearest point pairs of two segments, appended to pairs (4 doubles each): one, or the two
- * ends of the shared stretch of parallel ones, or every candidate at the least distance. */
+ * ends of the shared stretch of parallel ones (its middle where shorter than merge), or
+ * every candidate at the least distance. */
 static void segment_pairs(const double *a0, const double *a1, const double *b0, const double *b1,
-                          double scale, double *pairs, int *np) {
+                          double scale, double merge, double *pairs, int *np) {
   double da[2] = {a1[0] - a0[0], a1[1] - a0[1]}, db[2] = {b1[0] - b0[0], b1[1] - b0[1]};
   double la = hypot(da[0], da[1]), lb = hypot(db[0], db[1]);
   double cross = da[0] * db[1] - da[1] * db[0], c[4][4], dist[4], best;
@@ -70,7 +76,9 @@ static void segment_pairs(const double *a0, const double *a1, const double *b0, 
     hi = s1 < la ? s1 : la;
     if (hi - lo > 1e-9 * scale) {
       double s[2] = {lo, hi}, pa[2], pb[2];
-      for (i = 0; i < 2; ++i) {
+      int two = hi - lo > merge;
+      if (!two) s[0] = 0.5 * (lo + hi);
+      for (i = 0; i < 1 + two; ++i) {
         pa[0] = a0[0] + s[i] * u[0];
         pa[1] = a0[1] + s[i] * u[1];
         point_segment(pa, b0, b1, pb);
@@ -105,17 +113,96 @@ static void segment_pairs(const double *a0, const double *a1, const double *b0, 
     if (dist[i] <= best + 1e-12 * scale) put(pairs, np, c[i], c[i] + 2);
 }
 
-/* Depth of p inside the convex polygon (> 0 inside), from its nearest edge. */
-static double inside(const double *p, const sc_shape *poly) {
-  double depth = INFINITY;
-  int i;
-  for (i = 0; i < poly->np; ++i) {
-    const double *a = poly->p[i], *b = poly->p[(i + 1) % poly->np];
-    double e0 = b[0] - a[0], e1 = b[1] - a[1], L = hypot(e0, e1);
-    double d = -((p[0] - a[0]) * (e1 / L) + (p[1] - a[1]) * (-e0 / L));
-    if (d < depth) depth = d;
+/* The convex hull (counter-clockwise, no collinear points; Andrew's monotone chain) of the
+ * cores' difference B - A, every core point of B less every one of A, into h; its count. */
+static int difference_hull(const sc_shape *A, const sc_shape *B, double (*h)[2]) {
+  double p[16][2], t0, t1;
+  int n = 0, i, j, k = 0, lo;
+  for (i = 0; i < A->np; ++i)
+    for (j = 0; j < B->np; ++j, ++n) {
+      p[n][0] = B->p[j][0] - A->p[i][0];
+      p[n][1] = B->p[j][1] - A->p[i][1];
+    }
+  for (i = 1; i < n; ++i) /* sorted by x, then y */
+    for (j = i; j > 0 && (p[j][0] < p[j - 1][0] ||
+                          (p[j][0] == p[j - 1][0] && p[j][1] < p[j - 1][1])); --j) {
+      t0 = p[j][0], t1 = p[j][1];
+      p[j][0] = p[j - 1][0], p[j][1] = p[j - 1][1];
+      p[j - 1][0] = t0, p[j - 1][1] = t1;
+    }
+#define TURN(a, b, c) \
+  (((b)[0] - (a)[0]) * ((c)[1] - (a)[1]) - ((b)[1] - (a)[1]) * ((c)[0] - (a)[0]))
+  for (i = 0; i < n; ++i) { /* the lower chain, then the upper */
+    while (k >= 2 && TURN(h[k - 2], h[k - 1], p[i]) <= 0) --k;
+    h[k][0] = p[i][0], h[k++][1] = p[i][1];
   }
-  return depth;
+  for (i = n - 2, lo = k + 1; i >= 0; --i) {
+    while (k >= lo && TURN(h[k - 2], h[k - 1], p[i]) <= 0) --k;
+    h[k][0] = p[i][0], h[k++][1] = p[i][1];
+  }
+#undef TURN
+  return n == 1 ? 1 : k - 1;
+}
+
+/* How deep the cores overlap (> 0; else 0): the origin's depth in their difference hull, from
+ * its nearest edge, whose inward normal is the normal n from A to B that parts them by it
+ * (the least translation). A hull without interior (points, a segment) holds no depth. */
+static double core_overlap(const sc_shape *A, const sc_shape *B, double *n) {
+  double h[33][2], depth = INFINITY;
+  int m = difference_hull(A, B, h), i;
+  if (m < 3) return 0.0;
+  for (i = 0; i < m; ++i) {
+    const double *a = h[i], *b = h[(i + 1) % m];
+    double e0 = b[0] - a[0], e1 = b[1] - a[1], L = hypot(e0, e1);
+    double c = (a[0] * e1 - a[1] * e0) / L; /* the origin inside this edge's line by c */
+    if (c < depth) {
+      depth = c;
+      n[0] = -e1 / L;
+      n[1] = e0 / L;
+    }
+  }
+  return depth > 0 ? depth : 0.0;
+}
+
+/* The contacts of cores that overlap, parted along n by depth, into out (the core points):
+ * A's supporting feature along n and B's against it; a corner gives one contact, two flush
+ * edges the ends of their shared stretch (one at its middle where shorter than merge). */
+static void overlap_touches(const sc_shape *A, const sc_shape *B, const double *n,
+                            double scale, double merge, sc_touch *out, int *count) {
+  const double t[2] = {-n[1], n[0]}, eps = 1e-9 * scale;
+  double ha = -INFINITY, hb = INFINITY, ua[2] = {INFINITY, -INFINITY}, ub[2], u[2];
+  int i, k, m = 1;
+  ub[0] = INFINITY, ub[1] = -INFINITY;
+  for (i = 0; i < A->np; ++i) ha = fmax(ha, A->p[i][0] * n[0] + A->p[i][1] * n[1]);
+  for (i = 0; i < B->np; ++i) hb = fmin(hb, B->p[i][0] * n[0] + B->p[i][1] * n[1]);
+  for (i = 0; i < A->np; ++i) /* the supporting features' stretches along t */
+    if (A->p[i][0] * n[0] + A->p[i][1] * n[1] >= ha - eps) {
+      double s = A->p[i][0] * t[0] + A->p[i][1] * t[1];
+      ua[0] = fmin(ua[0], s), ua[1] = fmax(ua[1], s);
+    }
+  for (i = 0; i < B->np; ++i)
+    if (B->p[i][0] * n[0] + B->p[i][1] * n[1] <= hb + eps) {
+      double s = B->p[i][0] * t[0] + B->p[i][1] * t[1];
+      ub[0] = fmin(ub[0], s), ub[1] = fmax(ub[1], s);
+    }
+  if (ua[1] - ua[0] <= eps) { /* A's corner */
+    u[0] = ua[0];
+  } else if (ub[1] - ub[0] <= eps) { /* B's corner */
+    u[0] = ub[0];
+  } else { /* flush edges: the ends of the shared stretch, or its middle */
+    double lo = fmax(ua[0], ub[0]), hi = fmin(ua[1], ub[1]);
+    m = hi - lo > merge ? 2 : 1;
+    u[0] = m == 2 ? lo : 0.5 * (lo + hi);
+    u[1] = hi;
+  }
+  for (k = 0; k < m; ++k) {
+    sc_touch *c = out + (*count)++;
+    for (i = 0; i < 2; ++i) {
+      c->a[i] = ha * n[i] + u[k] * t[i];
+      c->b[i] = hb * n[i] + u[k] * t[i];
+      c->n[i] = n[i];
+    }
+  }
 }
 
 /* The outward normal of a polygon at its core point q on an edge's interior (1), else 0 (a
@@ -195,11 +282,11 @@ static void touching_normal(const sc_shape *A, const sc_shape *B, const double *
 }
 
 /* The signed distance of A's and B's surfaces and their contacts (at most SC_TOUCH_MAX, in
- * out; their count in *count; none where they overlap). A is never a half-plane. */
+ * out; their count in *count), those closer than merge one. A is never a half-plane. */
 SC_INTERNAL double sc_shape_closest(const sc_shape *A, const sc_shape *B, double scale,
-                                    sc_touch *out, int *count) {
-  double pairs[4 * SC_TOUCH_MAX], dist[SC_TOUCH_MAX], core = INFINITY, depth = -INFINITY;
-  int np = 0, i, j, k, side;
+                                    double merge, sc_touch *out, int *count) {
+  double pairs[4 * SC_TOUCH_MAX], dist[SC_TOUCH_MAX], core = INFINITY, depth, nrm[2];
+  int np = 0, i, j, k;
   *count = 0;
   if (B->kind == SC_HALFPLANE) {
     const double *n = B->normal;
@@ -222,27 +309,24 @@ SC_INTERNAL double sc_shape_closest(const sc_shape *A, const sc_shape *B, double
     }
     return d;
   }
-  for (i = 0; i < segments(A); ++i)
+  merge = fmax(merge, 1e-9 * scale);
+  depth = core_overlap(A, B, nrm);
+  if (depth > 1e-12 * scale) { /* overlapping cores: their least translation */
+    overlap_touches(A, B, nrm, scale, merge, out, count);
+    core = -depth;
+  }
+  for (i = 0; depth <= 1e-12 * scale && i < segments(A); ++i)
     for (j = 0; j < segments(B); ++j) {
       const double *a0, *a1, *b0, *b1;
       segment_of(A, i, &a0, &a1);
       segment_of(B, j, &b0, &b1);
-      segment_pairs(a0, a1, b0, b1, scale, pairs, &np);
+      segment_pairs(a0, a1, b0, b1, scale, merge, pairs, &np);
     }
   for (i = 0; i < np; ++i) {
     const double *o = pairs + 4 * i;
     dist[i] = hypot(o[2] - o[0], o[3] - o[1]);
     if (dist[i] < core) core = dist[i];
   }
-  for (side = 0; side < 2; ++side) { /* a core point inside the other polygon: overlap */
-    const sc_shape *X = side ? B : A, *Y = side ? A : B;
-    if (Y->kind != SC_POLYGON) continue;
-    for (i = 0; i < X->np; ++i) {
-      double d = inside(X->p[i], Y);
-      if (d > depth) depth = d;
-    }
-  }
-  if (depth > 1e-12 * scale) return -(depth + A->radius + B->radius);
   for (i = 0; i < np; ++i) {
     const double *p = pairs + 4 * i, *q = p + 2;
     double n[2];
@@ -250,8 +334,8 @@ SC_INTERNAL double sc_shape_closest(const sc_shape *A, const sc_shape *B, double
     sc_touch *t;
     if (dist[i] > core + 1e-12 * scale) continue;
     for (j = 0; j < *count && !dup; ++j) /* kept before: the core points out[j].a, .b */
-      dup = hypot(p[0] - out[j].a[0], p[1] - out[j].a[1]) <= 1e-9 * scale &&
-            hypot(q[0] - out[j].b[0], q[1] - out[j].b[1]) <= 1e-9 * scale;
+      dup = hypot(p[0] - out[j].a[0], p[1] - out[j].a[1]) <= merge &&
+            hypot(q[0] - out[j].b[0], q[1] - out[j].b[1]) <= merge;
     if (dup) continue;
     if (dist[i] > 1e-9 * scale) {
       n[0] = (q[0] - p[0]) / dist[i];

@@ -102,7 +102,7 @@ static sc_int contact_rows(sc_scene_work *sw, const double *P, double *recs, dou
       if (ib < nl && ib - ia < 2) continue; /* neighbouring links */
       if (hypot(ca[0] - cb[0], ca[1] - cb[1]) > sw->reach[ia] + sw->reach[ib] + 2 * tol)
         continue;
-      d = sc_shape_closest(sw->shape + ia, sw->shape + ib, size, t, &count);
+      d = sc_shape_closest(sw->shape + ia, sw->shape + ib, size, tol, t, &count);
       if (d < -tol) {
         double *o = over, idx;
         o[0] = (double)body_kind(sw, ia, &k);
@@ -536,7 +536,7 @@ int SNAKECG_EXPORT(core_scene_gaps)(const sc_scene_state *c) {
       if (c->pair_a < 0 &&
           hypot(ca[0] - cb[0], ca[1] - cb[1]) > sw.reach[ia] + sw.reach[ib] + c->margin)
         continue;
-      d = sc_shape_closest(sw.shape + ia, sw.shape + ib, c->pk[SP_SIZE], t, &count);
+      d = sc_shape_closest(sw.shape + ia, sw.shape + ib, c->pk[SP_SIZE], sw.tol, t, &count);
       if (found < c->ccap) {
         rec = c->out + 5 * found;
         rec[0] = (double)body_kind(&sw, ia, &k);
