@@ -2708,10 +2708,11 @@ CASADI_SYMBOL_EXPORT int snakecg_sp2_batch_bias_forces(casadi_int n, const casad
   out0 = in1 + 128;
   for (i0 = 0; i0 < n; i0 += 16) {
     m = n - i0 < 16 ? n - i0 : 16;
-    /* gather (the last sample repeated into the unused slots of a partial block) */
+    /* gather the entries the kernel and the sines and cosines read (the last sample repeated
+     * into the unused slots of a partial block) */
     for (i = 0; i < 16; ++i) {
       src = i0 + (i < m ? i : m - 1);
-      for (e = 0; e < 9; ++e) in0[e * 16 + i] = arg[0][src * stride[0] + e];
+      for (e = 3; e < 9; ++e) in0[e * 16 + i] = arg[0][src * stride[0] + e];
       for (e = 0; e < 8; ++e) in1[e * 16 + i] = arg[1][src * stride[1] + e];
     }
     for (e = 0; e < 2; ++e) {

@@ -3019,10 +3019,11 @@ CASADI_SYMBOL_EXPORT int snakecg_sp3_batch_mass_matrix(casadi_int n, const casad
   out0 = in0 + 160;
   for (i0 = 0; i0 < n; i0 += 16) {
     m = n - i0 < 16 ? n - i0 : 16;
-    /* gather (the last sample repeated into the unused slots of a partial block) */
+    /* gather the entries the kernel and the sines and cosines read (the last sample repeated
+     * into the unused slots of a partial block) */
     for (i = 0; i < 16; ++i) {
       src = i0 + (i < m ? i : m - 1);
-      for (e = 0; e < 10; ++e) in0[e * 16 + i] = arg[0][src * stride[0] + e];
+      for (e = 7; e < 10; ++e) in0[e * 16 + i] = arg[0][src * stride[0] + e];
     }
     for (e = 0; e < 3; ++e) {
       const casadi_real* x = in0 + (7 + e) * 16;
