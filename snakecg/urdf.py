@@ -172,7 +172,7 @@ def robot_from_urdf(path, *, robot_type, tol: float = 1e-6, name: str | None = N
                                      f"({tips[here][0].name!r} and {j.name!r})")
                 tips[here] = (j, j.child)
             else:
-                raise InputError(f"{where}: joint {j.name!r} is {j.type}; a snake is a planar "
+                raise InputError(f"{where}: joint {j.name!r} is {j.type}; a snake is a "
                                  "chain of revolute joints")
         if len(moving) > 1:
             raise InputError(f"{where}: the chain branches at link {here!r} (joints "

@@ -112,3 +112,29 @@ def test_scene_file_problems_are_collected():
     with pytest.raises(InputError, match=r"\[scene\].*contact_link"):
         spatial_scene_from_data({"robot": {"joints": 2, "joint_axis": [0, 0, 1]},
                                  "scene": {"contact_link": 7}})
+
+
+def test_robot_files_of_both_forms_on_the_planar_commands(tmp_path):
+    """--robot takes an MJCF file: a planar chain (the paper's links as yaw hinges) gives the
+    numbers of the paper's Table 1 robot; a 3-D chain is refused in one line that points at
+    the spatial scene file."""
+    inertial = '<inertial pos="0.075 0 0" mass="1" fullinertia="0.0002 0.002 0.002 0 0 0"/>'
+
+    def chain(axis2):
+        return (f'<mujoco><worldbody><body name="a"><freejoint/>{inertial}'
+                f'<body name="b" pos="0.15 0 0"><joint name="h1" axis="0 0 1"/>{inertial}'
+                f'<body name="c" pos="0.15 0 0"><joint name="h2" axis="{axis2}"/>{inertial}'
+                '</body></body></body></worldbody></mujoco>')
+
+    (tmp_path / "planar.xml").write_text(chain("0 0 1"))
+    (tmp_path / "spatial.xml").write_text(chain("0 1 0"))
+    q, tau = "0.1,-0.2,20deg,30deg,-45deg", "0.05,-0.02"
+    common = ("--scenario", "wheels", "--q", q, "--tau", tau, "--json")
+    mjcf = _json(_cli("forward", "--robot", str(tmp_path / "planar.xml"), *common))
+    paper = _json(_cli("forward", "--joints", "2", *common))
+    for k in ("qdd", "a_obj", "lam", "sr", "norm_qdd"):
+        assert np.allclose(mjcf[k], paper[k], rtol=1e-12, atol=1e-12), k
+    res = _cli("forward", "--robot", str(tmp_path / "spatial.xml"), "--q", q, "--tau", tau)
+    assert res.returncode == 2
+    lines = res.stderr.strip().splitlines()
+    assert len(lines) == 1 and "a 3-D chain" in lines[0] and "--scene" in lines[0]

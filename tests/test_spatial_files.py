@@ -179,3 +179,122 @@ def test_planar_embedding_gives_the_planar_model(rng, joints):
         planar_bias = pm._named("link_bias_accelerations", 1, q=qs, v=vs,
                                 K=pm.parameters)["bias"][0][:2, i]
         assert np.abs(bias[:2] - planar_bias).max() <= 1e-12 * max(1, np.abs(planar_bias).max())
+
+
+_LINK = ('<link name="{}"><inertial><origin xyz="0.075 0 0"/><mass value="1"/><inertia '
+         'ixx="0.0002" iyy="0.002" izz="0.002" ixy="0" ixz="0" iyz="0"/></inertial></link>')
+
+
+def _joint(name, parent, child, kind="revolute"):
+    return (f'<joint name="{name}" type="{kind}"><parent link="{parent}"/><child link="{child}"/>'
+            '<origin xyz="0.15 0 0"/><axis xyz="0 1 0"/>'
+            '<limit lower="-1" upper="1" effort="2" velocity="1"/></joint>')
+
+
+@pytest.mark.parametrize("joints, message", [
+    ([("j1", "a", "b"), ("j2", "a", "c")], r"branches at link 'a' \(joints 'j1', 'j2'\)"),
+    ([("j1", "a", "b"), ("j2", "b", "c", "prismatic")], r"joint 'j2' is prismatic"),
+    ([("j1", "a", "b"), ("j2", "b", "c", "floating")], r"joint 'j2' is floating"),
+    ([("j1", "a", "b"), ("j2", "b", "c", "planar")], r"joint 'j2' is planar"),
+    ([("j1", "a", "b"), ("j2", "b", "c", "fixed")], r"fixed joint 'j2' attaches link 'c'"),
+    ([("j1", "a", "b"), ("j2", "b", "c"), ("j3", "a", "c")], r"'j3'"),
+])
+@pytest.mark.parametrize("reader", ["Robot", "SpatialRobot"])
+def test_urdf_refusals_name_the_element(tmp_path, joints, message, reader):
+    """A 3-D chain (pitch joints) with a branch, a loop or a joint that is not revolute is
+    refused by both readers, naming the joint or link."""
+    text = "".join(_LINK.format(n) for n in "abc") + "".join(_joint(*j) for j in joints)
+    path = tmp_path / "x.urdf"
+    path.write_text(f'<robot name="s">{text}</robot>')
+    with pytest.raises(snakecg.InputError, match=message):
+        getattr(snakecg, reader).from_urdf(path)
+
+
+_INERTIAL = '<inertial pos="0.075 0 0" mass="1" fullinertia="0.0002 0.002 0.002 0 0 0"/>'
+
+
+def _mjcf(tmp_path, hinges, after=""):
+    """A chain of bodies 0.15 m apart under a free root; ``hinges`` the joints' attributes."""
+    body, closing = f'<body name="b0"><freejoint name="root"/>{_INERTIAL}', "</body>"
+    for k, attrs in enumerate(hinges, start=1):
+        body += f'<body name="b{k}" {attrs[1]}><joint name="h{k}" {attrs[0]}/>{_INERTIAL}'
+        closing += "</body>"
+    path = tmp_path / "x.xml"
+    path.write_text(f'<mujoco><compiler angle="radian"/><worldbody>{body}{closing}</worldbody>'
+                    f'{after}</mujoco>')
+    return path
+
+
+@pytest.mark.parametrize("after, message", [
+    ('<equality><connect name="close" body1="b0" body2="b2" anchor="0 0 0"/></equality>',
+     r"equality 'close' \(connect: bodies 'b0' and 'b2'\) closes a loop"),
+    ('<equality><weld body1="b1" body2="b2"/></equality>',
+     r"equality constraint 1 \(unnamed\) \(weld: bodies 'b1' and 'b2'\) closes a loop"),
+    ('<equality><joint name="couple" joint1="h1" joint2="h2"/></equality>',
+     r"equality 'couple' \(joint: joints 'h1' and 'h2'\)"),
+])
+def test_mjcf_refuses_a_loop_naming_the_equality(tmp_path, after, message):
+    path = _mjcf(tmp_path, [('axis="0 1 0"', 'pos="0.15 0 0"')] * 2, after)
+    with pytest.raises(snakecg.InputError, match=message):
+        snakecg.Robot.from_mjcf(path)
+
+
+def test_mjcf_limits_are_mujocos_on_both_forms(tmp_path):
+    """Position limits are MuJoCo's compiled ranges (degrees turned to radians by MuJoCo);
+    effort limits a hinge's actuatorfrcrange, else gear times a motor's forcerange or
+    ctrlrange, infinite (spatial) or absent (planar) where nothing bounds the joint; the
+    planar Robot (yaw hinges) keeps them as the spatial one (a pitch hinge) does."""
+    motors = ('<actuator><motor joint="h2" gear="3" ctrlrange="-0.5 0.25" ctrllimited="true"/>'
+              '<motor joint="h3" gear="-2" forcerange="-1.5 1" forcelimited="true"/>'
+              '</actuator>')
+    spec = [('axis="0 0 1" range="-0.5 0.7" actuatorfrcrange="-4 2.5"', 'pos="0.15 0 0"'),
+            ('axis="0 0 1" range="-1 1"', 'pos="0.15 0 0"'), ('axis="0 0 1"', 'pos="0.15 0 0"')]
+    planar = snakecg.Robot.from_mjcf(_mjcf(tmp_path, spec, motors))
+    assert isinstance(planar, snakecg.Robot)
+    mm = mujoco.MjModel.from_xml_path(str(tmp_path / "x.xml"))
+    assert planar.joint_limits == (tuple(mm.jnt_range[1]), tuple(mm.jnt_range[2]),
+                                   (-np.pi, np.pi))
+    assert planar.effort_limits == pytest.approx((4.0, 1.5, 3.0), rel=1e-15)
+    spec[2] = ('axis="0 1 0"', 'pos="0.15 0 0"')  # a pitch hinge: the spatial form
+    spatial = snakecg.Robot.from_mjcf(_mjcf(tmp_path, spec, motors))
+    assert isinstance(spatial, snakecg.SpatialRobot)
+    assert spatial.joint_limits[:2] == planar.joint_limits[:2]
+    assert spatial.joint_limits[2] == (-np.inf, np.inf)
+    assert spatial.effort_limits == pytest.approx((4.0, 1.5, 3.0), rel=1e-15)
+    spec[2] = ('axis="0 0 1"', 'pos="0.15 0 0"')
+    free = snakecg.Robot.from_mjcf(_mjcf(tmp_path, spec))  # no motors: h2 and h3 unbounded
+    assert free.effort_limits is None
+    assert snakecg.SpatialRobot.from_mjcf(tmp_path / "x.xml").effort_limits == (4.0, np.inf,
+                                                                                np.inf)
+
+
+@pytest.mark.parametrize("spec, why", [
+    ([('axis="0 0 1"', 'pos="0.15 0 0"'), ('axis="0 0 -1"', 'pos="0.15 0 0"')],
+     "an axis turned over"),
+    ([('axis="0 0 1"', 'pos="0.15 0 0"'), ('axis="0 0 1"', 'pos="0.15 0 0" euler="0 0 0.4"')],
+     "bent at zero"),
+])
+def test_planar_mjcf_whose_angles_differ_is_spatial_and_exact(tmp_path, rng, spec, why):
+    """Yaw hinges whose planar angles would not be the file's (an axis pointing down, a
+    chain bent in its zero configuration) are read in the spatial form, whose mass matrix
+    is MuJoCo's (1e-12)."""
+    path = _mjcf(tmp_path, spec)
+    robot = snakecg.Robot.from_mjcf(path)
+    assert isinstance(robot, snakecg.SpatialRobot), why
+    mm = mujoco.MjModel.from_xml_path(str(path))
+    md = mujoco.MjData(mm)
+    q = np.r_[0.1, 0.2, 0.3, 0, 0, 0, 1, rng.uniform(-1, 1, robot.joints)]
+    md.qpos[:] = np.r_[q[:3], 1, 0, 0, 0, q[7:]]
+    mujoco.mj_forward(mm, md)
+    M = np.zeros((robot.nv, robot.nv))
+    try:
+        mujoco.mj_fullM(mm, md, M)
+    except TypeError:
+        mujoco.mj_fullM(mm, M, md.qM)
+    assert rel(snakecg.load(robot).mass_matrix(q), M) <= 1e-12
+
+
+def test_mjcf_armature_is_left_out_with_a_warning(tmp_path):
+    path = _mjcf(tmp_path, [('axis="0 1 0" armature="0.01"', 'pos="0.15 0 0"')])
+    with pytest.warns(UserWarning, match=r"armature of joint\(s\) 'h1'"):
+        snakecg.Robot.from_mjcf(path)

@@ -3,9 +3,11 @@ samples and CasADi's own evaluation, physical properties, the C export and the C
 
 from __future__ import annotations
 
+import json
 import shutil
 import subprocess
 import sys
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -119,6 +121,98 @@ def test_export_builds_and_matches(tmp_path):
     h = snakecg.load(robot).bias_forces(q, np.zeros(robot.nv))
     printed = [float(line.split("=")[1]) for line in out[1:]]
     assert np.allclose(printed, h, rtol=1e-15, atol=1e-15)
+
+
+_DRIVER = r"""
+#include <stdio.h>
+#include <stdlib.h>
+#include "snakecg_sp{na}.h"
+#define NQ SNAKECG_SP{na}_NQ
+#define NV SNAKECG_SP{na}_NV
+#define NL SNAKECG_SP{na}_N_LINKS
+static void put(const char* name, const double* x, int n) {{
+  int i;
+  printf("%s", name);
+  for (i = 0; i < n; ++i) printf(" %.17g", x[i]);
+  printf("\n");
+}}
+int main(int argc, char** argv) {{
+  double q[NQ], v[NV], M[NV * NV], h[NV], J[6 * NL * NV], b[6 * NL];
+  int i;
+  for (i = 0; i < NQ; ++i) q[i] = atof(argv[1 + i]);
+  for (i = 0; i < NV; ++i) v[i] = atof(argv[1 + NQ + i]);
+  if (snakecg_sp{na}_robot_mass_matrix(q, M) || snakecg_sp{na}_robot_bias_forces(q, v, h)
+      || snakecg_sp{na}_robot_link_jacobians(q, J)
+      || snakecg_sp{na}_robot_link_bias_accelerations(q, v, b)) return 1;
+  put("M", M, NV * NV); put("h", h, NV); put("J", J, 6 * NL * NV); put("b", b, 6 * NL);
+  return 0;
+}}
+"""
+
+
+@pytest.mark.skipif(shutil.which("make") is None or shutil.which("cc") is None,
+                    reason="the C export needs make and a C compiler")
+def test_cli_export_of_a_urdf_chain_is_pinocchio(rng, tmp_path):
+    """`snakecg export --robot chain.urdf` of a random 3-D chain: the library built with its
+    Makefile, called from a C program of the test through the baked wrappers, gives
+    Pinocchio's crba, rnea, joint Jacobians and classical accelerations (1e-12)."""
+    pin = pytest.importorskip("pinocchio")
+    pytest.importorskip("yourdfpy")
+    from test_spatial_files import _urdf
+    from test_spatial_references import pinocchio_chain
+
+    robot = random_robot(rng, 4)
+    path = _urdf(robot, tmp_path / "chain.urdf")
+    lib = tmp_path / "lib"
+    res = subprocess.run([sys.executable, "-m", "snakecg.cli", "export", "--robot", str(path),
+                          "--out", str(lib)], capture_output=True, text=True)
+    assert res.returncode == 0, res.stderr
+    assert "snakecg_sp3.h" in res.stdout
+    subprocess.run(["make", "-s", "-C", str(lib), "libsnakecg_sp3.a"], check=True,
+                   capture_output=True)
+    (lib / "check.c").write_text(_DRIVER.format(na=robot.joints))
+    subprocess.run(["cc", "-O2", "-std=gnu99", "-o", str(lib / "check"), str(lib / "check.c"),
+                    str(lib / "libsnakecg_sp3.a"), "-lm"], check=True, cwd=lib)
+    model = pinocchio_chain(robot)
+    model.gravity.linear = np.array([0.0, 0.0, -9.81])  # a URDF has no gravity: the default
+    data = model.createData()
+    nv, nl = model.nv, robot.n_links
+    for _ in range(3):
+        q = pin.randomConfiguration(model, -2 * np.ones(model.nq), 2 * np.ones(model.nq))
+        v = rng.normal(size=nv)
+        out = subprocess.run([str(lib / "check"), *map(repr, np.r_[q, v].tolist())],
+                             check=True, capture_output=True, text=True).stdout
+        got = {line.split()[0]: np.array(line.split()[1:], float) for line in out.splitlines()}
+        Mp = pin.crba(model, data, q)
+        assert rel(got["M"].reshape(nv, nv).T, np.triu(Mp) + np.triu(Mp, 1).T) <= 1e-12
+        assert rel(got["h"], pin.rnea(model, data, q, v, np.zeros(nv))) <= 1e-12
+        J = got["J"].reshape(nv, nl, 6).transpose(1, 2, 0)  # column-major (6 n_l) x n_v
+        bias = got["b"].reshape(nl, 6)  # column-major 6 x n_l: one column per link
+        pin.forwardKinematics(model, data, q, v, np.zeros(nv))
+        pin.computeJointJacobians(model, data, q)
+        for i in range(nl):
+            assert rel(J[i], pin.getJointJacobian(model, data, i + 1,
+                                                  pin.LOCAL_WORLD_ALIGNED)) <= 1e-12
+            acc = pin.getClassicalAcceleration(model, data, i + 1, pin.LOCAL_WORLD_ALIGNED)
+            assert rel(bias[i], np.r_[acc.linear, acc.angular]) <= 1e-12
+
+
+def test_cli_export_takes_a_spatial_scene_file(tmp_path):
+    """`snakecg export --scene` of a spatial scene file (and --robot of its TOML) exports
+    the scene's robot, its parameters baked in."""
+    from snakecg.spatial.scene_file import read_spatial_scene
+
+    scene = Path(__file__).resolve().parents[1] / "examples" / "spatial" / "yaw_pitch.toml"
+    for flag in ("--scene", "--robot"):
+        out = tmp_path / flag.strip("-")
+        res = subprocess.run([sys.executable, "-m", "snakecg.cli", "export", flag, str(scene),
+                              "--out", str(out), "--json"], capture_output=True, text=True)
+        assert res.returncode == 0, res.stderr
+        assert json.loads(res.stdout)["header"].endswith("snakecg_sp3.h")
+        K = snakecg.load(read_spatial_scene(scene).robot).parameters
+        text = (out / "robot_params.c").read_text()
+        baked = text.split("{", 1)[1].split("}", 1)[0].replace("\n", " ")
+        assert np.array_equal(np.array(baked.split(","), float), K)
 
 
 def test_cli_show_and_export(tmp_path):

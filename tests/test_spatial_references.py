@@ -168,6 +168,7 @@ def _check_against_mujoco(rng, n_links):
     model = pinocchio_chain(robot)  # only for random configurations on the right manifold
     q, v = _states(rng, robot, model, 3)
     M, h, J = sm.mass_matrix(q), sm.bias_forces(q, v), sm.link_jacobians(q)
+    bias = sm.link_bias_accelerations(q, v)
     nv = robot.nv
     for k in range(len(q)):
         quat = q[k, 3:7]
@@ -190,6 +191,11 @@ def _check_against_mujoco(rng, n_links):
             jacp, jacr = np.zeros((3, nv)), np.zeros((3, nv))
             mujoco.mj_jac(mm, md, jacp, jacr, md.xpos[i + 1], i + 1)
             assert rel(J[k, i], np.vstack([jacp, jacr]) @ T) <= TOL
+            # Jdot v of the same rows: d/dt (J_mj T) v = Jdot_mj v_mj + J_mj Tdot v
+            dp, dr = np.zeros((3, nv)), np.zeros((3, nv))
+            mujoco.mj_jacDot(mm, md, dp, dr, md.xpos[i + 1], i + 1)
+            expected = np.vstack([dp, dr]) @ md.qvel + np.vstack([jacp, jacr]) @ Tdot_v
+            assert rel(bias[k, i], expected) <= TOL, i
 
 
 @pytest.mark.parametrize("n_links", LINKS)
@@ -201,7 +207,8 @@ def test_against_pinocchio(rng, n_links):
 
 @pytest.mark.parametrize("n_links", LINKS)
 def test_against_mujoco(rng, n_links):
-    """M (mj_fullM), h (qfrc_bias) and link Jacobians (mj_jac) to 1e-12 relative."""
+    """M (mj_fullM), h (qfrc_bias), link Jacobians (mj_jac) and their Jdot v (mj_jacDot) to
+    1e-12 relative."""
     _check_against_mujoco(rng, n_links)
 
 

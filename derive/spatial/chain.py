@@ -159,12 +159,28 @@ class SpatialChain:
             f"cm{i}", tuple(a + b for a, b in zip(self.origin(i), self.com_offset(i)))))
 
     def inertia(self, i: int):
-        """``R'_i J_i R'_i^T``: link ``i``'s inertia about its COM in the chain's axes."""
+        """``R'_i J_i R'_i^T``: link ``i``'s inertia about its COM in the chain's axes.
+
+        In the base frame, where every ``R'_i`` is a product of rotations, a link's axis
+        frame has no ``xy`` product of inertia (:mod:`.parameters`), and with the columns
+        ``r_1, r_2, r_3`` of ``R'_i`` (``r_1 r_1^T = 1 - r_2 r_2^T - r_3 r_3^T``):
+        ``R'JR'^T = J_xx 1 + (J_yy - J_xx) r_2 r_2^T + r_3 y^T + y r_3^T`` with
+        ``y = J_xz r_1 + J_yz r_2 + (J_zz - J_xx)/2 r_3``: 54 operations instead of 75."""
         def build():
             R = self.rotation(i)
             J = inertia_matrix(self.s.axis_inertia[i - 1])
             if i == 1 and self.frame == "base":
                 return J
+            if self.frame == "base":
+                xx, yy, zz, _, xz, yz = self.s.axis_inertia[i - 1]
+                r1, r2, r3 = (column(R, k) for k in range(3))
+                half = self.p.let(f"Jh{i}", (zz - xx) / 2)
+                y = self.p.vec(f"Jy{i}", tuple(xz * a + yz * b + half * c
+                                               for a, b, c in zip(r1, r2, r3)))
+                z = self.p.vec(f"Jz{i}", tuple((yy - xx) * b for b in r2))
+                return self.p.sym_mat(f"Ic{i}", tuple(tuple(
+                    r3[r] * y[c] + y[r] * r3[c] + z[r] * r2[c] + (xx if r == c else 0)
+                    for c in range(3)) for r in range(3)))
             RJ = self.p.mat(f"RJ{i}", matmul(R, J))
             return self.p.sym_mat(f"Ic{i}", matmul(RJ, transpose(R)))
         return self._memo(("I", i), build)

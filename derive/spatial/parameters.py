@@ -3,7 +3,10 @@
 For joint ``j`` with unit axis ``a`` (normalized here), ``P_{j+1}`` is a rotation with
 ``P e_z = a``: the smallest rotation taking ``e_z`` to ``a`` when ``a_z >= 0``, and for
 ``a_z < 0`` the smallest one taking ``e_z`` to ``-a`` turned half a turn about ``x`` (each
-formula divides by ``1 + |a_z|`` >= 1, so neither is singular where it is used). Then
+formula divides by ``1 + |a_z|`` >= 1, so neither is singular where it is used), then turned
+about ``e_z`` by the angle ``phi`` that leaves no ``xy`` product in the link's inertia
+(``tan 2 phi = 2 J_xy / (J_xx - J_yy)``): the chain rotates an inertia with fewer operations.
+Then
 
 * ``Q_j = P_j^T E_j P_{j+1}`` with ``E_j = Rz(yaw) Ry(pitch) Rx(roll)`` (URDF's rpy);
 * ``P_j^T t_j``, ``P_i^T c_i`` and ``P_i^T I_i P_i`` (``P_1 = 1``).
@@ -51,7 +54,25 @@ def derived_parameter_program(s: SpatialSymbols) -> tuple[Program, list[sp.Expr]
         ax, ay, az = s.joint_axis[j - 1]
         norm = p.let(f"an{j}", 1 / sp.sqrt(ax**2 + ay**2 + az**2))
         u = p.vec(f"au{j}", (ax * norm, ay * norm, az * norm))
-        P = axis_frame(*u)
+        P = p.mat(f"P0{j + 1}", axis_frame(*u))
+        # turned about the axis by phi so that the inertia has no xy product in it: tan 2 phi
+        # = 2 J_xy / (J_xx - J_yy) for J = P^T I P (chain.SpatialChain.inertia uses it)
+        I = inertia_matrix(s.link_inertia[j])
+        Jxx, Jyy, Jxy = (sum(P[a][r] * I[a][b] * P[b][c] for a in range(3) for b in range(3))
+                         for r, c in ((0, 0), (1, 1), (0, 1)))
+        # |phi| <= pi/4 (a quarter turn more would do as well): cos 2 phi = |a| / r >= 0,
+        # cos phi = sqrt((1 + cos 2 phi) / 2) >= sqrt(1/2), sin phi = sin 2 phi / (2 cos phi)
+        a = p.let(f"Ja{j + 1}", Jxx - Jyy)
+        b = p.let(f"Jb{j + 1}", 2 * Jxy)
+        r = p.let(f"Jr{j + 1}", sp.sqrt(a * a + b * b))
+        a_abs = p.let(f"Jaa{j + 1}", sp.Piecewise((a, a >= 0), (-a, True)))
+        b_sgn = p.let(f"Jbs{j + 1}", sp.Piecewise((b, a >= 0), (-b, True)))
+        c2 = p.let(f"c2phi{j + 1}", sp.Piecewise((a_abs / r, r > 0), (1, True)))
+        s2 = p.let(f"s2phi{j + 1}", sp.Piecewise((b_sgn / r, r > 0), (0, True)))
+        cf = p.let(f"cphi{j + 1}", sp.sqrt((1 + c2) / 2))
+        sf = p.let(f"sphi{j + 1}", s2 / (2 * cf))
+        P = tuple((P[r][0] * cf + P[r][1] * sf, P[r][1] * cf - P[r][0] * sf, P[r][2])
+                  for r in range(3))
         frames.append(tuple(tuple(p.let(f"P{j + 1}_{3 * c + r}", P[r][c]) for c in range(3))
                             for r in range(3)))
     out: list[sp.Expr] = []

@@ -142,8 +142,18 @@ def _block_driver(spec, sig, variant, sincos) -> str:
         triangle, kernel_nnz[k] = sym, len(upper)
     work = BLOCK * (2 * sincos["n"] + sum(s for k, s in enumerate(sizes) if k not in broadcast)
                     + sum(kernel_nnz))
+    # the gather copies only what is read: the kernel's input entries and the joint angles
+    read = {k: set() for k in range(len(sizes)) if k not in broadcast}
+    read[names.index("q")].update(range(N_BASE_COORDINATES, N_BASE_COORDINATES + sincos["n"]))
+    for t in range(kernel_fn.n_instructions()):
+        if kernel_fn.instruction_id(t) == ca.OP_INPUT:
+            k, e = kernel_fn.instruction_input(t)[:2]
+            if k in read:
+                read[k].add(e)
+    gather = {k: _runs(sorted(entries)) for k, entries in read.items()}
     symbol = variant.name() + "_block"
     ctx = {**sig, "broadcast": broadcast, "in_sizes": sizes, "q": names.index("q"),
+           "gather": gather,
            "block_symbol": symbol, "block_work": work, "kernel_nnz": kernel_nnz,
            "triangle": triangle, "entry": entry,
            "triangle_index": out_names.index(triangle) if triangle else -1,
@@ -151,6 +161,17 @@ def _block_driver(spec, sig, variant, sincos) -> str:
     return _record_env().get_template("block.c.j2").render(
         prefix=spec.prefix, f=ctx, B=BLOCK, na=sincos["n"], offset=N_BASE_COORDINATES,
         broadcast_names=", ".join(names[k] for k in broadcast))
+
+
+def _runs(entries: list[int]) -> list[tuple[int, int]]:
+    """Sorted entries as half-open runs of consecutive ones: [1, 2, 3, 7] -> [(1, 4), (7, 8)]."""
+    runs: list[list[int]] = []
+    for e in entries:
+        if runs and runs[-1][1] == e:
+            runs[-1][1] = e + 1
+        else:
+            runs.append([e, e + 1])
+    return [(a, b) for a, b in runs]
 
 
 def _printable(fn) -> bool:

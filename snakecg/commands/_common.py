@@ -21,6 +21,7 @@ import argparse
 import json
 import math
 import sys
+from pathlib import Path
 
 import numpy as np
 
@@ -192,7 +193,8 @@ def add_robot_args(p, *, scene: bool = True) -> None:
 
 
 def _is_urdf(path) -> bool:
-    return str(path).lower().endswith(".urdf")
+    """A robot file without a [scene] table: URDF, or MJCF (``.xml``)."""
+    return str(path).lower().endswith((".urdf", ".xml"))
 
 
 def check_vector(name: str, values, size: int, what: str = ""):
@@ -208,7 +210,15 @@ def check_vector(name: str, values, size: int, what: str = ""):
 
 def robot_from_args(args) -> Robot:
     if args.robot:
-        robot = (Robot.from_urdf if _is_urdf(args.robot) else Robot.from_toml)(args.robot)
+        name = str(args.robot).lower()
+        read = (Robot.from_urdf if name.endswith(".urdf") else Robot.from_mjcf
+                if name.endswith(".xml") else Robot.from_toml)
+        robot = read(args.robot)
+        if not isinstance(robot, Robot):  # a 3-D chain: snakecg.SpatialRobot
+            raise InputError(f"--robot {args.robot}: a 3-D chain (its joints are not the "
+                             f"planar snake's); forward, optimize and plot take it in a spatial "
+                             f"scene file: --scene FILE with [robot] file = "
+                             f"\"{Path(args.robot).name}\" (docs/how-to/spatial.md)")
         if args.joints is not None and args.joints != robot.joints:
             raise InputError(
                 f"--joints {args.joints} contradicts the robot file ({robot.joints} joints)"

@@ -137,9 +137,8 @@ def run(args) -> int:
 
     general = general_scene_from_args(args)
     if general is not None and general.__class__.__name__ == "SpatialScene":
-        raise InputError("--scene: a 3-D snake's scene is not simulated yet (forward, optimize "
-                         "and plot take it); simulate takes the paper's scene or a planar "
-                         "general scene")
+        raise InputError(f"--scene {args.scene}: a 3-D snake's scene is not simulated "
+                         f"(forward, optimize and plot take it)")
     if general is not None:  # a general scene: time stepping (snakecg.scenes.stepping)
         from ._scene import simulate_command
 

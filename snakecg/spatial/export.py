@@ -161,14 +161,29 @@ def export_spatial_library(robot: SpatialRobot, out, *, source: str | None = Non
 
 
 def spatial_robot_from_args(args) -> SpatialRobot | None:
-    """The CLI's ``--robot FILE``: a spatial chain when the file is a URDF or MJCF (``.xml``)
-    chain that is not planar, else None (the planar path reads the file)."""
-    path = getattr(args, "robot", None)
-    if not path or not str(path).lower().endswith((".urdf", ".xml")):
-        return None
-    from ..robot import Robot
+    """The CLI's ``--robot FILE`` or ``--scene FILE``: a spatial chain when the file is a URDF
+    or MJCF (``.xml``) chain that is not planar, or a spatial scene file (``[robot]`` with
+    ``joint_axis`` or ``file``; its robot), else None (the planar path reads the file)."""
+    from .scene_file import is_spatial_scene_data, read_spatial_scene
 
-    robot = (Robot.from_urdf if str(path).lower().endswith(".urdf") else Robot.from_mjcf)(path)
+    scene_path = getattr(args, "scene", None)
+    path = getattr(args, "robot", None)
+    toml = scene_path or (path if path and str(path).lower().endswith(".toml") else None)
+    if toml:
+        from ..toml_file import read_toml
+
+        if not is_spatial_scene_data(read_toml(toml)):
+            return None
+        if scene_path and path:
+            raise InputError("--scene FILE describes the robot; drop --robot")
+        robot = read_spatial_scene(toml).robot
+    elif not path or not str(path).lower().endswith((".urdf", ".xml")):
+        return None
+    else:
+        from ..robot import Robot
+
+        robot = (Robot.from_urdf if str(path).lower().endswith(".urdf")
+                 else Robot.from_mjcf)(path)
     if not isinstance(robot, SpatialRobot):
         return None
     joints = getattr(args, "joints", None)

@@ -4,14 +4,17 @@ Both readers return a :class:`~snakecg.SpatialRobot`: the root link (body) is th
 base, link 1; each link has at most one child through a revolute joint (URDF ``revolute`` or
 ``continuous``, MJCF ``hinge``); joint origins, axes, masses, COMs and full inertias are kept
 as the file gives them, with the joints' position limits (``joint_limits``) and effort limits
-(``effort_limits``, infinite where the file gives none). Anything else is refused with an
-:class:`~snakecg.InputError` naming the element: a branch, a loop, a prismatic, ball,
-planar or floating joint (MJCF: a free joint anywhere but on the root body), two joints in
-one body, a fixed joint to a link with mass (URDF; massless tip frames are skipped), a body
-without a joint beyond the root (MJCF).
+(``effort_limits``; MJCF: a hinge's ``actuatorfrcrange``, else the bound of the actuators
+driving it; infinite where the file gives none). Anything else is refused with an
+:class:`~snakecg.InputError` naming the element: a branch, a loop (MJCF: the equality that
+closes it), a prismatic, ball, planar or floating joint (MJCF: a free joint anywhere but on
+the root body), two joints in one body, a fixed joint to a link with mass (URDF; massless tip
+frames are skipped), a body without a joint beyond the root (MJCF). An MJCF joint's armature
+is left out, with a warning naming the joint.
 
-:func:`planar_robot` turns a spatial chain whose joint axes are all parallel into the planar
-:class:`~snakecg.Robot` (the form today's planar pipeline takes), or says why it cannot.
+:func:`planar_robot` turns a spatial chain whose joint axes are all parallel and point the
+same way, straight in its zero configuration, into the planar :class:`~snakecg.Robot` (the
+form today's planar pipeline takes, the same joint angles and limits), or says why it cannot.
 """
 
 from __future__ import annotations
@@ -182,7 +185,8 @@ def spatial_from_mjcf(path, *, robot_type, name: str | None = None):
                              f"(children {', '.join(repr(body_name(b)) for b in kids[chain[-1]])})")
         chain.append(kids[chain[-1]][0])
     if m.neq:
-        raise InputError(f"{where}: equality constraints close loops; a snake is a serial chain")
+        raise InputError(f"{where}: {_equality_text(mujoco, m, 0)} closes a loop; a snake is a "
+                         "serial chain")
     FREE, HINGE = mujoco.mjtJoint.mjJNT_FREE, mujoco.mjtJoint.mjJNT_HINGE
     joint_of = {}
     for k, b in enumerate(chain):
@@ -208,6 +212,14 @@ def spatial_from_mjcf(path, *, robot_type, name: str | None = None):
         joint_of[b] = hinges[0]
     if len(chain) < 2:
         raise InputError(f"{where}: no hinge; a snake has at least one")
+    armature = [joint_name(j) for j in range(m.njnt) if np.any(m.dof_armature[
+        m.jnt_dofadr[j]:m.jnt_dofadr[j] + _NDOF[int(m.jnt_type[j])]])]
+    if armature:
+        import warnings
+
+        warnings.warn(f"{where}: the armature of joint(s) {', '.join(map(repr, armature))} is "
+                      "not part of a SpatialRobot and is left out (MuJoCo adds it to the mass "
+                      "matrix's diagonal)", stacklevel=3)
     mat = lambda quat: _quat_matrix(mujoco, quat)  # noqa: E731
     # each link's frame sits on its joint's axis: the body frame moved by jnt_pos
     shift = {b: (np.zeros(3) if k == 0 else np.asarray(m.jnt_pos[joint_of[b]], dtype=float))
@@ -225,14 +237,61 @@ def spatial_from_mjcf(path, *, robot_type, name: str | None = None):
         parent = chain[k - 1]
         xyz = np.asarray(m.body_pos[b]) - shift[parent] + R @ shift[b]
         limited = bool(m.jnt_limited[j])
-        effort = float(np.abs(m.jnt_actfrcrange[j]).max()) if m.jnt_actfrclimited[j] \
-            else np.inf
+        effort = _effort(mujoco, m, j)
         joints.append({"name": joint_name(j), "xyz": xyz, "rpy": rpy_of(R),
                        "axis": np.asarray(m.jnt_axis[j], dtype=float),
                        "limits": tuple(map(float, m.jnt_range[j])) if limited
                        else (-np.inf, np.inf), "effort": effort})
     return _robot(robot_type, where, name or p.stem, links, joints,
                   gravity=tuple(map(float, m.opt.gravity)))
+
+
+#: Degrees of freedom of MuJoCo's joint types (free, ball, slide, hinge).
+_NDOF = {0: 6, 1: 3, 2: 1, 3: 1}
+
+
+def _equality_text(mujoco, m, e) -> str:
+    """``equality 'name' (connect: bodies 'a' and 'b')``: the element a loop is closed by."""
+    kinds = {int(mujoco.mjtEq.mjEQ_CONNECT): "connect", int(mujoco.mjtEq.mjEQ_WELD): "weld",
+             int(mujoco.mjtEq.mjEQ_JOINT): "joint", int(mujoco.mjtEq.mjEQ_TENDON): "tendon"}
+    kind = kinds.get(int(m.eq_type[e]), "constraint")
+    obj = {"connect": mujoco.mjtObj.mjOBJ_BODY, "weld": mujoco.mjtObj.mjOBJ_BODY,
+           "joint": mujoco.mjtObj.mjOBJ_JOINT, "tendon": mujoco.mjtObj.mjOBJ_TENDON}.get(kind)
+    if kind in ("connect", "weld") and int(m.eq_objtype[e]) == int(mujoco.mjtObj.mjOBJ_SITE):
+        obj = mujoco.mjtObj.mjOBJ_SITE
+    name = mujoco.mj_id2name(m, mujoco.mjtObj.mjOBJ_EQUALITY, e)
+    text = f"equality {name!r}" if name else f"equality constraint {e + 1} (unnamed)"
+    if obj is None:
+        return f"{text} ({kind})"
+    what = {mujoco.mjtObj.mjOBJ_BODY: "bodies", mujoco.mjtObj.mjOBJ_SITE: "sites",
+            mujoco.mjtObj.mjOBJ_JOINT: "joints", mujoco.mjtObj.mjOBJ_TENDON: "tendons"}[obj]
+    ids = [int(m.eq_obj1id[e]), int(m.eq_obj2id[e])]
+    names = [repr(mujoco.mj_id2name(m, obj, i) or f"{i}") for i in ids if i >= 0]
+    return f"{text} ({kind}: {what} {' and '.join(names)})"
+
+
+def _effort(mujoco, m, j) -> float:
+    """The largest torque about hinge ``j``: its ``actuatorfrcrange``, else the sum over the
+    actuators driving it directly of ``|gear|`` times their force bound (``forcerange``, or
+    ``ctrlrange`` times the gain of a plain motor); infinite where nothing bounds it."""
+    if m.jnt_actfrclimited[j]:
+        return float(np.abs(m.jnt_actfrcrange[j]).max())
+    total = 0.0
+    fixed, none = int(mujoco.mjtGain.mjGAIN_FIXED), int(mujoco.mjtBias.mjBIAS_NONE)
+    for a in range(m.nu):
+        if int(m.actuator_trntype[a]) != int(mujoco.mjtTrn.mjTRN_JOINT) \
+                or int(m.actuator_trnid[a, 0]) != j:
+            continue
+        gear = abs(float(m.actuator_gear[a, 0]))
+        if m.actuator_forcelimited[a]:
+            total += gear * float(np.abs(m.actuator_forcerange[a]).max())
+        elif (m.actuator_ctrllimited[a] and int(m.actuator_gaintype[a]) == fixed
+              and int(m.actuator_biastype[a]) == none):
+            total += gear * abs(float(m.actuator_gainprm[a, 0])) * float(
+                np.abs(m.actuator_ctrlrange[a]).max())
+        else:
+            return np.inf
+    return total if total > 0 else np.inf
 
 
 def _quat_matrix(mujoco, quat) -> np.ndarray:
@@ -260,14 +319,17 @@ def planar_robot(robot, *, robot_type, tol: float = 1e-6):
         axes.append(R @ np.asarray(robot.joint_axis[j]))
         origins.append(o)
         frames.append((R, o))
-    n = axes[0]
-    if any(np.linalg.norm(np.cross(n, a)) > tol for a in axes[1:]):
+    n = axes[0] / np.linalg.norm(axes[0])
+    if any(np.linalg.norm(np.cross(n, a / np.linalg.norm(a))) > tol for a in axes[1:]):
         return "the joint axes are not parallel"
+    for j, a in enumerate(axes):
+        if n @ a < 0:  # the planar angle would be the file's with its sign turned
+            return f"joint {j + 1} turns about the opposite of joint 1's axis"
     coms = [Rk @ np.asarray(c) + ok for (Rk, ok), c in zip(frames, robot.com)]
     if any(abs(n @ (x - origins[0])) > tol for x in origins + coms):
         return "the joints and COMs do not lie in one plane normal to the axes"
     nl = robot.n_links
-    lengths, cs, inertias = [], [], []
+    lengths, cs, inertias, heads = [], [], [], []
     for i in range(nl):
         Rk = frames[i][0]
         Ic = _matrix(robot.inertia[i])
@@ -289,10 +351,25 @@ def planar_robot(robot, *, robot_type, tol: float = 1e-6):
             return f"the COM of link {i + 1} is off the line through its joints"
         lengths.append(length)
         cs.append(min(max(c, 0.0), length))
+        heads.append(e)
+    for j in range(robot.joints):  # the planar angle is the file's only if straight at zero
+        e0, e1 = heads[j], heads[j + 1]
+        if abs(np.arctan2(n @ np.cross(e0, e1), e0 @ e1)) > tol:
+            return f"the chain is bent at joint {j + 1} in its zero configuration"
     if any(m <= 0 for m in robot.mass):
         return "a link has no mass"
+    limits = None
+    if robot.joint_limits is not None and np.isfinite(robot.joint_limits).any():
+        # a free hinge turns about the whole circle, as a URDF continuous joint
+        limits = tuple((max(lo, -np.pi) if np.isinf(lo) else lo,
+                        min(hi, np.pi) if np.isinf(hi) else hi)
+                       for lo, hi in robot.joint_limits)
+    efforts = None
+    if robot.effort_limits is not None and np.isfinite(robot.effort_limits).all():
+        efforts = tuple(robot.effort_limits)
     return robot_type(joints=robot.joints, mass=robot.mass, length=tuple(lengths),
-                      inertia=tuple(inertias), com=tuple(cs), name=robot.name)
+                      inertia=tuple(inertias), com=tuple(cs), name=robot.name,
+                      joint_limits=limits, effort_limits=efforts)
 
 
 def _rpy_matrix(roll, pitch, yaw):

@@ -1,7 +1,7 @@
 /* GENERATED FILE - DO NOT EDIT. C code emitted by CasADi for point_bias_acceleration() of
  * generated/spatial/na1/ (see its model.py), plus its batched driver.
  * Regenerate with: python -m snakecg_derive.spatial --checked-in
- * spec sha256: dd93d3f2ef1290f32ab7cdb90da98ea85b9120232707a3ab6d75e7fc4845992e
+ * spec sha256: f2554e7caf7b43e45e9fb60d8118a375db06d8dd0e711f01c5b700b16dc8d2be
  * tools: sympy 1.14.0, casadi 3.8.2, jinja2 3.1.6
  */
 /* How to prefix internal symbols */

@@ -1,7 +1,7 @@
 /* GENERATED FILE - DO NOT EDIT. C code emitted by CasADi for link_jacobians() of
  * generated/spatial/na2/ (see its model.py), plus its batched driver.
  * Regenerate with: python -m snakecg_derive.spatial --checked-in
- * spec sha256: fc72cb3c8cf4b7a874aa31d3d22b4faa3abbf00a501dc82f5b5c9e41e805f09d
+ * spec sha256: 24971844b370b327c8b1ec05d13793d7cad6a8e8fa0affc7182db4e83ce1513f
  * tools: sympy 1.14.0, casadi 3.8.2, jinja2 3.1.6
  */
 /* How to prefix internal symbols */

@@ -1,7 +1,7 @@
 /* GENERATED FILE - DO NOT EDIT. C code emitted by CasADi for link_jacobians() of
  * generated/spatial/na3/ (see its model.py), plus its batched driver.
  * Regenerate with: python -m snakecg_derive.spatial --checked-in
- * spec sha256: bf1c4fd4f801e736fb72ccb4a73063ec2be6511d38a40d0e800777ceac032ebe
+ * spec sha256: 82d64716a2089350522ee6ce607152c94df1120870c00e7b42763fcf4d7df073
  * tools: sympy 1.14.0, casadi 3.8.2, jinja2 3.1.6
  */
 /* How to prefix internal symbols */
