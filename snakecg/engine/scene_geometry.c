@@ -285,7 +285,7 @@ static void touching_normal(const sc_shape *A, const sc_shape *B, const double *
  * out; their count in *count), those closer than merge one. A is never a half-plane. */
 SC_INTERNAL double sc_shape_closest(const sc_shape *A, const sc_shape *B, double scale,
                                     double merge, sc_touch *out, int *count) {
-  double pairs[4 * SC_TOUCH_MAX], dist[SC_TOUCH_MAX], core = INFINITY, depth, nrm[2];
+  double pairs[4 * SC_TOUCH_MAX], dist[SC_TOUCH_MAX], core = INFINITY, depth, nrm[2] = {0.0, 0.0};
   int np = 0, i, j, k;
   *count = 0;
   if (B->kind == SC_HALFPLANE) {
