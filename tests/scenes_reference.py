@@ -198,7 +198,7 @@ def enumerate_polyhedral(p, tol=1e-9):
     return None, None
 
 
-def clarabel_accelerations(p):
+def clarabel_accelerations(p, tol=1e-11):
     """The primal of Gauss's principle with the sets' support functions, in cvxpy (Clarabel):
     min 1/2 |a - a_free|_M^2 + sum_B sigma_K_B(-A_B a)."""
     import cvxpy as cp
@@ -224,7 +224,7 @@ def clarabel_accelerations(p):
             cons += [sp >= yt, sm >= -yt]
             cost += cp.norm(cp.hstack([par[1] * sp, par[0] * sm, par[2] * (-(A[s + 1] @ a))]))
     prob = cp.Problem(cp.Minimize(cost), cons)
-    prob.solve(solver="CLARABEL", tol_gap_abs=1e-11, tol_gap_rel=1e-11, tol_feas=1e-11,
+    prob.solve(solver="CLARABEL", tol_gap_abs=tol, tol_gap_rel=tol, tol_feas=tol,
                max_iter=400)
     return a.value, prob.status
 
@@ -442,6 +442,23 @@ def _held_forces_in_sets(p, pieces, lam, held, rhs):
     return out
 
 
+def approximate_accelerations(p):
+    """Clarabel's accelerations to 1e-11, retried to 1e-8 where it stops short; None when it
+    fails at both (every block is then ambiguous to enumerate_pieces)."""
+    import cvxpy as cp
+
+    for tol in (1e-11, 1e-8):
+        try:
+            with warnings.catch_warnings():
+                warnings.simplefilter("ignore", UserWarning)
+                a, status = clarabel_accelerations(p, tol)
+        except cp.error.SolverError:
+            continue
+        if a is not None and status in ("optimal", "optimal_inaccurate"):
+            return a
+    return None
+
+
 def enumerate_pieces(p, a_hint, band=1e-6, limit=4096):
     """The accelerations of the first assignment of pieces (every ground model) whose KKT
     conditions hold, enumerated exactly (solve_piece) over the blocks an approximate solution
@@ -449,7 +466,7 @@ def enumerate_pieces(p, a_hint, band=1e-6, limit=4096):
     fewest departures from "held" first; a block clearly moving takes the one piece its motion
     allows. The KKT conditions are checked to 1e-12 first, then (none found) to 1e-9. Returns
     (a, held rows) or (None, None)."""
-    w = p["A"] @ a_hint
+    w = p["A"] @ a_hint if a_hint is not None else np.zeros(len(p["b"]))
     W = max(1.0, np.abs(p["b"]).max(), np.abs(w).max())
     options = []
     for kind, s, par in p["blocks"]:

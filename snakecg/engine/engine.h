@@ -573,11 +573,13 @@ SC_INTERNAL sc_int sc_block_size(sc_int kind);
 SC_INTERNAL void sc_block_P(const sc_problem *p, sc_int k, const double *l, double *P);
 enum { S_HELD = 0, S_ZERO = 1, S_SLIDE = 2 }; /* a block's state */
 #define TOL_ACCEPT 1e-9 /* a row's acceleration is zero within this of its scale */
-#define NULL_TOL 1e-13 /* G_FF's eigenvalues at most this of the largest: no acceleration */
+#define NULL_TOL 1e-13 /* G_FF's pivots at most this of the first: no acceleration */
 SC_INTERNAL int sc_in_set(const sc_problem *p, sc_int k, double *l, double tol, int clip);
 SC_INTERNAL int sc_still(const sc_problem *p, sc_int k);
 SC_INTERNAL int sc_min_norm_face(sc_problem *p, double *work);
 SC_INTERNAL void sc_block_min(const sc_problem *p, sc_int k, const double *c, double *l);
+SC_INTERNAL void sc_on_boundary(const sc_problem *p, sc_int k, double t, double *l, double *T);
+SC_INTERNAL double sc_angle_of(const sc_problem *p, sc_int k, const double *l);
 int SNAKECG_EXPORT(core_scene_solve)(sc_int ns, sc_int n, sc_int mmax, sc_int nbmax,
   const sc_int *m, const sc_int *nb, const double *M, const double *f, const double *A,
   const sc_int *kind, const sc_int *start, const double *par, sc_int max_sweeps, double *lam,

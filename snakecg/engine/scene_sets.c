@@ -9,7 +9,8 @@
  * form on the eigenvectors (its secular equation solved to rounding); the split ellipse as
  * the backward half, the forward half, or the segment lam_t = 0 (the minimiser over the
  * convex set lies in the half whose own full-ellipse minimiser falls inside it, else on the
- * dividing segment). Used by scene_solve.c.
+ * dividing segment). sc_on_boundary parametrizes a 2-D set's boundary by an angle (the
+ * sliding pieces' unknowns). Used by scene_solve.c.
  */
 #include <math.h>
 
@@ -84,6 +85,27 @@ SC_INTERNAL void sc_block_min(const sc_problem *p, sc_int k, const double *c, do
   }
 }
 
+/* A sliding 2-D block k's force on its set's boundary at angle t and the tangent T =
+ * dlam/dt there: a disc s (cos t, sin t); a split ellipse (st cos t, p2 sin t), st the
+ * semi-axis of the half that cos t points into. Both have dT/dt = -lam. */
+SC_INTERNAL void sc_on_boundary(const sc_problem *p, sc_int k, double t, double *l, double *T) {
+  const double *q = p->par + 3 * k;
+  double c = cos(t), s = sin(t), ax = p->kind[k] == K_DISC ? q[0] : (c < 0 ? q[0] : q[1]),
+         ay = p->kind[k] == K_DISC ? q[0] : q[2];
+  l[0] = ax * c;
+  l[1] = ay * s;
+  T[0] = -ax * s;
+  T[1] = ay * c;
+}
+
+/* The angle of a 2-D block's force (sc_on_boundary's parametrization, radially onto it). */
+SC_INTERNAL double sc_angle_of(const sc_problem *p, sc_int k, const double *l) {
+  const double *q = p->par + 3 * k;
+  double ax = l[0] < 0 ? q[0] : q[1];
+  if (p->kind[k] == K_DISC) return atan2(l[1], l[0]);
+  return atan2(l[1] / q[2], ax > 0 ? l[0] / ax : 0.0);
+}
+
 /* 1 if the forces l of block k lie in its set, to the relative tolerance tol; with clip,
  * forces outside by at most that are first moved onto the set. */
 SC_INTERNAL int sc_in_set(const sc_problem *p, sc_int k, double *l, double tol, int clip) {
@@ -122,8 +144,8 @@ SC_INTERNAL int sc_still(const sc_problem *p, sc_int k) {
 }
 
 /* Minimum-norm forces on the face (every block whose rows do not accelerate: the forces of
- * the others are fixed by the unique accelerations): lam_F -= N N^T lam_F, N the null space of G_FF
- * (eigenvalues at most NULL_TOL of the largest). Where that leaves a force's set and the null
+ * the others are fixed by the unique accelerations): lam_F -= N N^T lam_F, N the null space of
+ * G_FF (null_space: pivots at most NULL_TOL of the first). Where that leaves a force's set and the null
  * space is one direction v, the minimum of |lam_F + t v| over the t that keep every held force
  * in its set (an interval holding 0, its ends found by bisection to rounding) is taken
  * instead. Returns 0 when the face's rows are independent (nothing to choose), 1 when the

@@ -16,16 +16,21 @@
  * Gauss's principle with the sets' support functions has the dual
  *     min_lam 1/2 lam^T G lam + b^T lam  over lam in K = K_1 x ... x K_nb,
  * G = A I^-1 A^T (eq. 14), b = A I^-1 f + c (eq. 16 at rest, c = 0): the accelerations
- * a = I^-1 (f + A^T lam) (eq. 18) are unique; the forces are unique when G is regular. The
- * solve:
- *   1. block Gauss-Seidel, each block minimised exactly (a clamp, or a 2-D trust-region
- *      sc_problem whose secular equation is solved to rounding), to a relative 1e-10;
- *   2. the pieces read from that point (held/stick, zero, sliding) and the piece's equations
- *      (w_F = 0 on held rows, lam fixed on zero rows and saturated boxes, w_B + gamma P_B
- *      lam_B = 0 and lam_B^T P_B lam_B = 1 on sliding 2-D blocks) solved by Newton with a
- *      pivoted QR step, to rounding;
- *   3. the KKT conditions checked on the result; a violated piece is switched (a
- *      primal-dual active-set step) and step 2 repeated; after that more sweeps and again.
+ * a = I^-1 (f + A^T lam) (eq. 18) are unique; the forces are unique when G is regular. With
+ * I = L L^T, G = Z^T Z and b = Z^T L^-1 f + c for Z = L^-1 A^T (built once per sample). The
+ * solve is an active set on the pieces (held/stick, zero, sliding):
+ *   1. the piece's equations solved by Newton to rounding (polish): held rows' forces and one
+ *      angle per sliding 2-D block's force on its set's boundary, w = 0 on held rows and no
+ *      acceleration along the boundary on sliding blocks, lam fixed on zero rows and
+ *      saturated boxes; the Jacobian is the reduced Hessian of the dual on the piece
+ *      (positive semidefinite), factored by diagonal pivoting, dependent rows dropped;
+ *   2. the KKT conditions checked on the result; a violated piece is switched (a primal-dual
+ *      active-set step) and step 1 repeated;
+ *   3. the pieces start from the held guess (every block held) where the rows are at most
+ *      the coordinates; else, or when that fails within a few passes, from block
+ *      Gauss-Seidel sweeps (each block minimised exactly: a clamp, or a 2-D trust-region
+ *      problem whose secular equation is solved to rounding), read every ten sweeps and
+ *      tried once two readings agree (or the sweeps converged).
  * The certificate (KKT residuals, relative to the sample's force and acceleration scales) is
  * returned with every sample. Where the held rows' equations are dependent (statically
  * indeterminate), the flag is set and the held forces are the minimum-norm ones on the face
@@ -49,7 +54,7 @@ enum { INFO_STATUS = 0, INFO_DEPENDENT, INFO_PRIMAL, INFO_DUAL, INFO_COMPL, INFO
  * (snakecg.solver.PIVOT_TOL): nearly dependent rows are statically indeterminate to double
  * precision, their forces are taken minimum-norm rather than huge and cancelling */
 #define DEP_TOL 1e-10
-#define GUESS_PASSES 1 /* active-set passes from the held guess */
+#define GUESS_PASSES 3 /* active-set passes from the held guess (rows <= coordinates) */
 #define TRY_PASSES 3 /* from pieces read before the sweeps converged */
 #define CHUNK 10 /* sweeps between two readings of the pieces */
 
@@ -125,27 +130,6 @@ static void read_states(sc_problem *p, double rel) {
   }
 }
 
-/* A sliding 2-D block k's force on its set's boundary at angle t and the tangent T =
- * dlam/dt there: a disc s (cos t, sin t); a split ellipse (st cos t, p2 sin t), st the
- * semi-axis of the half that cos t points into. Both have dT/dt = -lam. */
-static void on_boundary(const sc_problem *p, sc_int k, double t, double *l, double *T) {
-  const double *q = p->par + 3 * k;
-  double c = cos(t), s = sin(t), ax = p->kind[k] == K_DISC ? q[0] : (c < 0 ? q[0] : q[1]),
-         ay = p->kind[k] == K_DISC ? q[0] : q[2];
-  l[0] = ax * c;
-  l[1] = ay * s;
-  T[0] = -ax * s;
-  T[1] = ay * c;
-}
-
-/* The angle of a 2-D block's force (on_boundary's parametrization, radially onto it). */
-static double angle_of(const sc_problem *p, sc_int k, const double *l) {
-  const double *q = p->par + 3 * k;
-  double ax = l[0] < 0 ? q[0] : q[1];
-  if (p->kind[k] == K_DISC) return atan2(l[1], l[0]);
-  return atan2(l[1] / q[2], ax > 0 ? l[0] / ax : 0.0);
-}
-
 /* The dual objective 1/2 lam^T G lam + b^T lam at the current lam and w = G lam + b. */
 static double dual_value(const sc_problem *p) {
   sc_int i;
@@ -166,7 +150,7 @@ static double dual_value(const sc_problem *p) {
 static sc_int polish(sc_problem *p, double *work, sc_int *iwork) {
   const sc_int m = p->m, nb = p->nb;
   sc_int *urow = iwork, *uth = urow + m, *var = uth + nb, *perm = var + m + nb;
-  sc_int nu = 0, nslide = 0, k, i, j, it, defect = 0;
+  sc_int nu = 0, nslide = 0, k, i, it, defect = 0;
   double *J = work, *F, *dx, *th, *th0, *T, *l0;
   for (k = 0; k < nb; ++k) {
     sc_int r = p->start[k], nk = sc_block_size(p->kind[k]);
@@ -194,8 +178,8 @@ static sc_int polish(sc_problem *p, double *work, sc_int *iwork) {
   for (k = 0; k < nb; ++k) th[k] = 0.0;
   for (k = 0; k < nb; ++k)
     if (uth[k] >= 0) {
-      th[k] = angle_of(p, k, p->lam + p->start[k]);
-      on_boundary(p, k, th[k], p->lam + p->start[k], T + 2 * k);
+      th[k] = sc_angle_of(p, k, p->lam + p->start[k]);
+      sc_on_boundary(p, k, th[k], p->lam + p->start[k], T + 2 * k);
     }
   for (it = 0; it < 40; ++it) {
     double fn = 0.0, step = 0.0, v0 = 0.0, t = 1.0;
@@ -250,7 +234,7 @@ static sc_int polish(sc_problem *p, double *work, sc_int *iwork) {
         } else {
           k = -1 - v;
           th[k] = th0[k] + t * dx[e];
-          on_boundary(p, k, th[k], p->lam + p->start[k], T + 2 * k);
+          sc_on_boundary(p, k, th[k], p->lam + p->start[k], T + 2 * k);
         }
       }
       if (!nslide) break;
@@ -265,7 +249,6 @@ static sc_int polish(sc_problem *p, double *work, sc_int *iwork) {
     }
     if (!(step > 1e-15 * p->fscale)) break;
   }
-  (void)j;
   update_w(p);
   return defect;
 }
@@ -343,6 +326,16 @@ static int kkt(sc_problem *p, double *res, int do_switch) {
   return moved;
 }
 
+/* x := L^-1 x, L the lower triangle of sc_cholesky's factor (n x n, row-major) */
+static void lower_solve(sc_int n, const double *L, double *x) {
+  sc_int i, k;
+  for (i = 0; i < n; ++i) {
+    double t = x[i];
+    for (k = 0; k < i; ++k) t -= L[i * n + k] * x[k];
+    x[i] = t / L[i * n + i];
+  }
+}
+
 /* Active-set passes from the states in p: the piece's equations solved (polish), the KKT
  * conditions checked and the violated pieces switched, at most max_pass times. Returns 1 when
  * a piece's solution satisfies them (res: its residuals), else 0. */
@@ -365,7 +358,7 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
                          const double *par, sc_int max_sweeps, double *lam, double *a,
                          double *w, double *state_out, double *info, double *work,
                          sc_int *iwork) {
-  double *L = work, *Y = L + n * n, *G = Y + n * m, *b = G + m * m, *gam = b + m,
+  double *L = work, *Z = L + n * n, *G = Z + n * m, *b = G + m * m, *gam = b + m,
          *keep = gam + nb, *rest = keep + m, res[3] = {NAN, NAN, NAN};
   sc_int i, j, k, total_sweeps = 0, passes = 0, defect = 0;
   sc_int *state = iwork, *iw2 = iwork + nb, *prev = iw2 + 3 * (m + nb);
@@ -379,25 +372,18 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
     for (i = 0; i < n; ++i) a[i] = NAN;
     return;
   }
-  /* a_free = M^-1 f (in a), Y = M^-1 A^T (n x m, column j for row j of A) */
+  /* with M = L L^T: g = L^-1 f (in a), Z = L^-1 A^T (row j of A at Z + j n); then G = Z^T Z
+   * (symmetric by construction) and b = Z^T g + c */
   for (i = 0; i < n; ++i) a[i] = f[i];
-  sc_cholesky_solve(n, L, n, a);
+  lower_solve(n, L, a);
   for (j = 0; j < m; ++j) {
-    double col[512];
-    for (i = 0; i < n; ++i) col[i] = A[j * n + i];
-    sc_cholesky_solve(n, L, n, col);
-    for (i = 0; i < n; ++i) Y[i * m + j] = col[i];
+    for (i = 0; i < n; ++i) Z[j * n + i] = A[j * n + i];
+    lower_solve(n, L, Z + j * n);
   }
-  for (i = 0; i < m; ++i) { /* G = A Y, b = A a_free */
-    for (j = 0; j < m; ++j) {
-      double s = 0.0;
-      for (k = 0; k < n; ++k) s += A[i * n + k] * Y[k * m + j];
-      G[i * m + j] = s;
-    }
-    b[i] = sc_dot(A + i * n, a, n) + (c ? c[i] : 0.0);
+  for (i = 0; i < m; ++i) {
+    for (j = 0; j <= i; ++j) G[i * m + j] = G[j * m + i] = sc_dot(Z + i * n, Z + j * n, n);
+    b[i] = sc_dot(Z + i * n, a, n) + (c ? c[i] : 0.0);
   }
-  for (i = 0; i < m; ++i) /* symmetric to rounding */
-    for (j = 0; j < i; ++j) G[i * m + j] = G[j * m + i] = 0.5 * (G[i * m + j] + G[j * m + i]);
   p.n = n; p.m = m; p.nb = nb; p.kind = kind; p.start = start; p.par = par;
   p.G = G; p.b = b; p.lam = lam; p.w = w; p.gamma = gam; p.state = state;
   { /* scales: forces (what would stop the rows' accelerations, and the sets' sizes),
@@ -423,7 +409,8 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
     ok = 1;
     res[0] = res[1] = res[2] = 0.0;
   }
-  if (!ok) { /* the active set from the held guess: every block held (or its set zero) */
+  if (!ok && m <= n) { /* the active set from the held guess: every block held (or its set
+    zero); not where more rows than coordinates make the held forces' basic solution arbitrary */
     for (k = 0; k < nb; ++k) {
       const double *q = par + 3 * k;
       int zero = kind[k] == K_BOX ? !(q[0] > 0) : kind[k] == K_DISC ? !(q[0] > 0) :
@@ -518,8 +505,15 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
     if (state[k] == S_SLIDE && kind[k] == K_BOX) code = lam[start[k]] > 0 ? 3.0 : 4.0;
     state_out[k] = code;
   }
-  /* eq. (18): a = a_free + Y lam */
-  for (i = 0; i < n; ++i) a[i] += sc_dot(Y + i * m, lam, m);
+  /* eq. (18): a = M^-1 (f + A^T lam) = L^-T (g + Z lam) */
+  for (j = 0; j < m; ++j)
+    if (lam[j] != 0.0 && isfinite(lam[j]))
+      for (i = 0; i < n; ++i) a[i] += Z[j * n + i] * lam[j];
+  for (i = n - 1; i >= 0; --i) {
+    double t = a[i];
+    for (k = i + 1; k < n; ++k) t -= L[k * n + i] * a[k];
+    a[i] = t / L[i * n + i];
+  }
   if (!ok) {
     for (i = 0; i < n; ++i) a[i] = NAN;
     for (i = 0; i < m; ++i) lam[i] = NAN;
