@@ -60,9 +60,22 @@ enum { INFO_STATUS = 0, INFO_DEPENDENT, INFO_PRIMAL, INFO_DUAL, INFO_COMPL, INFO
 
 
 
-static void update_w(sc_problem *p) {
-  sc_int i;
-  for (i = 0; i < p->m; ++i) p->w[i] = p->b[i] + sc_dot(p->G + i * p->m, p->lam, p->m);
+static void update_w(sc_problem *p) { /* w = G lam + b, four partial sums a row */
+  const sc_int m = p->m;
+  const double *lam = p->lam;
+  sc_int i, j;
+  for (i = 0; i < m; ++i) {
+    const double *g = p->G + i * m;
+    double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;
+    for (j = 0; j + 3 < m; j += 4) {
+      s0 += g[j] * lam[j];
+      s1 += g[j + 1] * lam[j + 1];
+      s2 += g[j + 2] * lam[j + 2];
+      s3 += g[j + 3] * lam[j + 3];
+    }
+    for (; j < m; ++j) s0 += g[j] * lam[j];
+    p->w[i] = p->b[i] + ((s0 + s1) + (s2 + s3));
+  }
 }
 
 /* Gauss-Seidel sweeps until the largest change is below rel * scale; returns the sweeps.
@@ -87,8 +100,11 @@ static sc_int sweeps(sc_problem *p, sc_int max_sweeps, double rel) {
         if (fabs(d) > change) change = fabs(d);
         if (fabs(l[i]) > size) size = fabs(l[i]);
         p->lam[r + i] = l[i];
-        if (d != 0.0)
-          for (j = 0; j < m; ++j) p->w[j] += col[j] * d;
+        if (d != 0.0) {
+          double *restrict wv = p->w;
+          const double *restrict cv = col;
+          for (j = 0; j < m; ++j) wv[j] += cv[j] * d;
+        }
       }
     }
     if (!(change > rel * (size > p->fscale ? size : p->fscale))) break;
@@ -181,10 +197,11 @@ static sc_int polish(sc_problem *p, double *work, sc_int *iwork) {
       th[k] = sc_angle_of(p, k, p->lam + p->start[k]);
       sc_on_boundary(p, k, th[k], p->lam + p->start[k], T + 2 * k);
     }
+  update_w(p);
   for (it = 0; it < 40; ++it) {
     double fn = 0.0, step = 0.0, v0 = 0.0, t = 1.0;
     sc_int e, f, ls;
-    update_w(p);
+    if (it > 0 && !nslide) update_w(p); /* (with sliding blocks: the line search's) */
     for (e = 0; e < nu; ++e) {
       sc_int v = var[e];
       if (v >= 0) {
