@@ -559,7 +559,6 @@ int SNAKECG_EXPORT(core_contact_depth)(const sc_geometry *g, sc_int n, const dou
 /* block kinds of the force sets, a problem of one sample, the solve's states and
  * (the solve's own states, fields and tolerances are scene_solve.c's) */
 enum { K_FREE = 0, K_UNILATERAL = 1, K_BOX = 2, K_DISC = 3, K_SPLIT = 4 };
-
 typedef struct {
   sc_int n, m, nb;
   const sc_int *kind, *start;
@@ -568,7 +567,6 @@ typedef struct {
   sc_int *state;
   double fscale, wscale;
 } sc_problem;
-
 SC_INTERNAL sc_int sc_block_size(sc_int kind);
 SC_INTERNAL void sc_block_P(const sc_problem *p, sc_int k, const double *l, double *P);
 enum { S_HELD = 0, S_ZERO = 1, S_SLIDE = 2 }; /* a block's state */

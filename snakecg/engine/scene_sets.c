@@ -143,14 +143,6 @@ SC_INTERNAL int sc_still(const sc_problem *p, sc_int k) {
   return 1;
 }
 
-/* Minimum-norm forces on the face (every block whose rows do not accelerate: the forces of
- * the others are fixed by the unique accelerations): lam_F -= N N^T lam_F, N the null space of
- * G_FF (null_space: pivots at most NULL_TOL of the first). Where that leaves a force's set and the null
- * space is one direction v, the minimum of |lam_F + t v| over the t that keep every held force
- * in its set (an interval holding 0, its ends found by bisection to rounding) is taken
- * instead. Returns 0 when the face's rows are independent (nothing to choose), 1 when the
- * minimum-norm forces were found, 2 when not (a larger null space whose unconstrained minimum
- * leaves the set: the face's basic solution stays). */
 /* An orthonormal basis of the null space of the positive semidefinite n x n A (row-major;
  * overwritten): the pivoted L D L^T of sc_psd_solve stopped at pivots of at most NULL_TOL of
  * the first, the null vectors P [-L11^-T L21^T; I] orthonormalized (Gram-Schmidt, twice).
@@ -191,6 +183,14 @@ static sc_int null_space(sc_int n, double *A, double *V, double *work, sc_int *p
   return nn;
 }
 
+/* Minimum-norm forces on the face (every block whose rows do not accelerate: the forces of
+ * the others are fixed by the unique accelerations): lam_F -= N N^T lam_F, N the null space
+ * of G_FF (null_space: pivots at most NULL_TOL of the first). Where that leaves a force's set
+ * and the null space is one direction v, the minimum of |lam_F + t v| over the t that keep
+ * every held force in its set (an interval holding 0, its ends found by bisection to
+ * rounding) is taken instead. Returns 0 when the face's rows are independent (nothing to choose), 1 when the
+ * minimum-norm forces were found, 2 when not (a larger null space whose unconstrained minimum
+ * leaves the set: the face's basic solution stays). */
 SC_INTERNAL int sc_min_norm_face(sc_problem *p, double *work) {
   const sc_int m = p->m;
   sc_int F[512], fk[512], perm[512], nf = 0, i, j, k, t, nnull = 0, tnull = -1;

@@ -167,7 +167,7 @@ static sc_int polish(sc_problem *p, double *work, sc_int *iwork) {
   const sc_int m = p->m, nb = p->nb;
   sc_int *urow = iwork, *uth = urow + m, *var = uth + nb, *perm = var + m + nb;
   sc_int nu = 0, nslide = 0, k, i, it, defect = 0;
-  double *J = work, *F, *dx, *th, *th0, *T, *l0;
+  double *J = work, *F, *dx, *th, *th0, *T, *l0, rc = DEP_TOL, fn_prev = INFINITY;
   for (k = 0; k < nb; ++k) {
     sc_int r = p->start[k], nk = sc_block_size(p->kind[k]);
     uth[k] = -1;
@@ -214,7 +214,11 @@ static sc_int polish(sc_problem *p, double *work, sc_int *iwork) {
         fn = fmax(fn, fabs(F[e]) / (sqrt(Tk[0] * Tk[0] + Tk[1] * Tk[1]) + 1e-300));
       }
     }
-    if (fn <= 1e-15 * p->wscale) break;
+    if (it > 0 && fn <= 1e-15 * p->wscale) break; /* (the first step always: its rank) */
+    if (defect > 0 && fn > 0.5 * fn_prev && fn > 1e-12 * p->wscale)
+      rc = 1e-15; /* stalled on a residual the dropped (nearly dependent) rows carry: they
+                     are kept from here on */
+    fn_prev = fn;
     for (e = 0; e < nu; ++e) { /* the reduced Hessian's lower triangle */
       sc_int v = var[e];
       for (f = 0; f <= e; ++f) {
@@ -237,7 +241,7 @@ static sc_int polish(sc_problem *p, double *work, sc_int *iwork) {
       }
       F[e] = -F[e];
     }
-    defect = nu - sc_psd_solve(nu, J, nu, F, DEP_TOL, dx, l0, perm);
+    defect = nu - sc_psd_solve(nu, J, nu, F, rc, dx, l0, perm);
     if (nslide) {
       v0 = dual_value(p);
       memcpy(l0, p->lam, sizeof(double) * (size_t)m);
