@@ -570,4 +570,30 @@ static inline sc_int sc_psd_solve(sc_int n, double *A, sc_int ld, double *b, dou
   return rank;
 }
 
+/* y = A x + b for the n x n row-major A, each row's dot product in four partial sums */
+static inline void sc_matvec_plus(sc_int n, const double *A, const double *x, const double *b,
+                                  double *y) {
+  sc_int i, j;
+  for (i = 0; i < n; ++i) {
+    const double *g = A + i * n;
+    double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;
+    for (j = 0; j + 3 < n; j += 4) {
+      s0 += g[j] * x[j], s1 += g[j + 1] * x[j + 1];
+      s2 += g[j + 2] * x[j + 2], s3 += g[j + 3] * x[j + 3];
+    }
+    for (; j < n; ++j) s0 += g[j] * x[j];
+    y[i] = b[i] + ((s0 + s1) + (s2 + s3));
+  }
+}
+
+/* x := L^-1 x, L the lower triangle of sc_cholesky's factor (n x n, row-major) */
+static inline void sc_lower_solve(sc_int n, const double *L, double *x) {
+  sc_int i, k;
+  for (i = 0; i < n; ++i) {
+    double t = x[i];
+    for (k = 0; k < i; ++k) t -= L[i * n + k] * x[k];
+    x[i] = t / L[i * n + i];
+  }
+}
+
 #endif

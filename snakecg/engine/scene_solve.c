@@ -60,23 +60,7 @@ enum { INFO_STATUS = 0, INFO_DEPENDENT, INFO_PRIMAL, INFO_DUAL, INFO_COMPL, INFO
 
 
 
-static void update_w(sc_problem *p) { /* w = G lam + b, four partial sums a row */
-  const sc_int m = p->m;
-  const double *lam = p->lam;
-  sc_int i, j;
-  for (i = 0; i < m; ++i) {
-    const double *g = p->G + i * m;
-    double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;
-    for (j = 0; j + 3 < m; j += 4) {
-      s0 += g[j] * lam[j];
-      s1 += g[j + 1] * lam[j + 1];
-      s2 += g[j + 2] * lam[j + 2];
-      s3 += g[j + 3] * lam[j + 3];
-    }
-    for (; j < m; ++j) s0 += g[j] * lam[j];
-    p->w[i] = p->b[i] + ((s0 + s1) + (s2 + s3));
-  }
-}
+static void update_w(sc_problem *p) { sc_matvec_plus(p->m, p->G, p->lam, p->b, p->w); }
 
 /* Gauss-Seidel sweeps until the largest change is below rel * scale; returns the sweeps.
  * w = G lam + b is kept along (one column of G per changed row), and recomputed after. */
@@ -163,11 +147,11 @@ static double dual_value(const sc_problem *p) {
  * taken at least 0), factored by diagonal pivoting (dependent held rows: the basic
  * solution); with sliding blocks the step is halved until the dual objective does not rise.
  * Returns the rank defect of the last step's matrix (0: independent). Scratch in work. */
-static sc_int polish(sc_problem *p, double *work, sc_int *iwork) {
+static sc_int polish_piece(sc_problem *p, double *work, sc_int *iwork, double *fn_out) {
   const sc_int m = p->m, nb = p->nb;
   sc_int *urow = iwork, *uth = urow + m, *var = uth + nb, *perm = var + m + nb;
   sc_int nu = 0, nslide = 0, k, i, it, defect = 0;
-  double *J = work, *F, *dx, *th, *th0, *T, *l0, rc = DEP_TOL, fn_prev = INFINITY;
+  double *J = work, *F, *dx, *th, *th0, *T, *l0, rc = DEP_TOL, fn_prev = INFINITY, fn = 0.0;
   for (k = 0; k < nb; ++k) {
     sc_int r = p->start[k], nk = sc_block_size(p->kind[k]);
     uth[k] = -1;
@@ -184,6 +168,7 @@ static sc_int polish(sc_problem *p, double *work, sc_int *iwork) {
       for (i = 0; i < nk; ++i) { urow[r + i] = nu; var[nu++] = r + i; }
     }
   }
+  *fn_out = 0.0;
   if (nu == 0) { update_w(p); return 0; }
   F = J + nu * nu;
   dx = F + nu;
@@ -199,7 +184,8 @@ static sc_int polish(sc_problem *p, double *work, sc_int *iwork) {
     }
   update_w(p);
   for (it = 0; it < 40; ++it) {
-    double fn = 0.0, step = 0.0, v0 = 0.0, t = 1.0;
+    double step = 0.0, v0 = 0.0, t = 1.0;
+    fn = 0.0;
     sc_int e, f, ls;
     if (it > 0 && !nslide) update_w(p); /* (with sliding blocks: the line search's) */
     for (e = 0; e < nu; ++e) {
@@ -270,8 +256,25 @@ static sc_int polish(sc_problem *p, double *work, sc_int *iwork) {
     }
     if (!(step > 1e-15 * p->fscale)) break;
   }
+  *fn_out = fn;
   update_w(p);
   return defect;
+}
+
+/* polish_piece; where it stops short of rounding with a sliding block that does not move (at
+ * its set's limit: the angle's equation is degenerate there), that block is held instead
+ * and the piece solved again. */
+static sc_int polish(sc_problem *p, double *work, sc_int *iwork) {
+  double fn;
+  sc_int k, defect = polish_piece(p, work, iwork, &fn);
+  int again = 0;
+  if (!(fn > 1e-14 * p->wscale)) return defect;
+  for (k = 0; k < p->nb; ++k)
+    if (p->state[k] == S_SLIDE && p->kind[k] >= K_DISC && sc_still(p, k)) {
+      p->state[k] = S_HELD;
+      again = 1;
+    }
+  return again ? polish_piece(p, work, iwork, &fn) : defect;
 }
 
 /* The KKT residuals (relative): primal (outside the set), dual (w not in -N_K(lam)),
@@ -347,16 +350,6 @@ static int kkt(sc_problem *p, double *res, int do_switch) {
   return moved;
 }
 
-/* x := L^-1 x, L the lower triangle of sc_cholesky's factor (n x n, row-major) */
-static void lower_solve(sc_int n, const double *L, double *x) {
-  sc_int i, k;
-  for (i = 0; i < n; ++i) {
-    double t = x[i];
-    for (k = 0; k < i; ++k) t -= L[i * n + k] * x[k];
-    x[i] = t / L[i * n + i];
-  }
-}
-
 /* Active-set passes from the states in p: the piece's equations solved (polish), the KKT
  * conditions checked and the violated pieces switched, at most max_pass times. Returns 1 when
  * a piece's solution satisfies them (res: its residuals), else 0. */
@@ -396,10 +389,10 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
   /* with M = L L^T: g = L^-1 f (in a), Z = L^-1 A^T (row j of A at Z + j n); then G = Z^T Z
    * (symmetric by construction) and b = Z^T g + c */
   for (i = 0; i < n; ++i) a[i] = f[i];
-  lower_solve(n, L, a);
+  sc_lower_solve(n, L, a);
   for (j = 0; j < m; ++j) {
     for (i = 0; i < n; ++i) Z[j * n + i] = A[j * n + i];
-    lower_solve(n, L, Z + j * n);
+    sc_lower_solve(n, L, Z + j * n);
   }
   for (i = 0; i < m; ++i) {
     for (j = 0; j <= i; ++j) G[i * m + j] = G[j * m + i] = sc_dot(Z + i * n, Z + j * n, n);
@@ -500,8 +493,8 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
         res[2] = keep_res[2];
       }
     }
-    for (k = 0; k < nb; ++k) /* forces outside their sets by rounding moved onto them */
-      sc_in_set(&p, k, lam + start[k], INFINITY, 1);
+    for (k = 0; k < nb; ++k) /* a contact's force below zero by rounding: zero */
+      if (kind[k] == K_UNILATERAL && lam[start[k]] < 0) lam[start[k]] = 0.0;
     update_w(&p);
     kkt(&p, res, 0);
   }
