@@ -4,7 +4,8 @@
   links), 4 pegs touching links, Coulomb ground on every link (mu 0.3) and under the objects:
   ``model.forward(q, tau)`` on one sample from Python (best of ``--repeat`` rounds of
   ``--single`` calls) and batched (``--n`` samples, time per sample, one thread);
-* **where the time goes** in the batched figure: the engine's exact solve alone
+* **where the time goes** in the batched figure (and the batch's mean Gauss-Seidel sweeps and
+  active-set passes per sample): the engine's exact solve alone
   (``core_scene_solve`` on the same rows, inertia and forces, stacked), the engine's whole
   call (contacts, rows, solve, metrics: ``core_scene_forward``), and the rest (Python);
 * **mj_forward**: MuJoCo's forward dynamics on the matched scene (capsule links on a planar
@@ -197,6 +198,10 @@ def main() -> None:
     tb = best_of(lambda: model.forward(Q, T), a.repeat) / a.n
     print(f"  snakecg forward, single:  {t1 * 1e6:10.1f} us")
     print(f"  snakecg forward, batched: {tb * 1e6:10.1f} us per sample")
+    inf = model.forward(Q, T)._raw["info"]
+    print(f"    the batch's solves: mean sweeps {inf['sweeps'].mean():.1f}, mean active-set "
+          f"passes {inf['passes'].mean():.2f}, dependent {np.mean(inf['dependent'] > 0):.0%}, "
+          f"solved {np.mean(inf['status'] == 0):.0%}")
     print(f"    of which the engine's call {t_call * 1e6:.1f} us, its solve alone "
           f"{t_solve * 1e6:.1f} us (contacts, rows, metrics: {(t_call - t_solve) * 1e6:.1f} us)")
     try:
@@ -233,6 +238,9 @@ def main() -> None:
         b = best_of(lambda: mdl.forward(Q, T), a.repeat) / a.n
         print(f"  paper scene, {name:13s}: single {s * 1e6:9.1f} us, batched "
               f"{b * 1e6:9.2f} us per sample")
+    inf = new.forward(Q, T)._raw["info"]
+    print(f"    general path's batch: mean sweeps {inf['sweeps'].mean():.1f}, mean active-set "
+          f"passes {inf['passes'].mean():.2f}")
     t_call, t_solve, info = _where(new, q0, t0, a.n, a.repeat)
     print(f"    general path, of which the engine's call {t_call * 1e6:.2f} us, its solve alone "
           f"{t_solve * 1e6:.2f} us per sample (sweeps {info['sweeps']:.0f})")

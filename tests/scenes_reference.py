@@ -198,7 +198,7 @@ def enumerate_polyhedral(p, tol=1e-9):
     return None, None
 
 
-def clarabel_accelerations(p):
+def clarabel_accelerations(p, tol=1e-11):
     """The primal of Gauss's principle with the sets' support functions, in cvxpy (Clarabel):
     min 1/2 |a - a_free|_M^2 + sum_B sigma_K_B(-A_B a)."""
     import cvxpy as cp
@@ -224,7 +224,7 @@ def clarabel_accelerations(p):
             cons += [sp >= yt, sm >= -yt]
             cost += cp.norm(cp.hstack([par[1] * sp, par[0] * sm, par[2] * (-(A[s + 1] @ a))]))
     prob = cp.Problem(cp.Minimize(cost), cons)
-    prob.solve(solver="CLARABEL", tol_gap_abs=1e-11, tol_gap_rel=1e-11, tol_feas=1e-11,
+    prob.solve(solver="CLARABEL", tol_gap_abs=tol, tol_gap_rel=tol, tol_feas=tol,
                max_iter=400)
     return a.value, prob.status
 
@@ -288,3 +288,229 @@ def small_scenes(rng, count, models=POLYHEDRAL, *, object_friction=True, need_ob
                 and (model.scene.n_objects or not need_object)):
             out.append((model, q, res))
     return out
+
+
+def _support(kind, par, y):
+    """A 2-D set's support function sigma(y) = max_{l in K} l . y, its maximizer l and
+    Hessian (the disc's radius, or the split ellipse's semi-axes: p1 along y_t >= 0)."""
+    ax = par[0] if kind == DISC else (par[1] if y[0] >= 0 else par[0])
+    ay = par[0] if kind == DISC else par[2]
+    D = np.array([ax, ay])
+    s = np.hypot(*(D * y))
+    v = D * y / s
+    return s, D * v, (np.diag(D) @ (np.eye(2) - np.outer(v, v)) @ np.diag(D)) / s
+
+
+def solve_piece(p, pieces, a0=None, tol=1e-9):
+    """The accelerations of one assignment of pieces (per block: "held", "zero", "slide",
+    "+" / "-" for a bounded wheel at its bound) if it satisfies every KKT condition, else None.
+    Solved in the primal, densely: a = Z y on the held rows' null space, Newton on
+    1/2 |a - a_free|_M^2 + sum over sliding sets of sigma_K(-A_k a) - lam_fixed . A a; the held
+    forces by least squares (minimum norm) and checked against their sets. Newton starts from
+    a0 (default a_free) taken onto the held rows' null space."""
+    M, A, af = p["M"], p["A"], p["a_free"]
+    n, m = len(af), A.shape[0]
+    held = [s + i for (kind, s, par), c in zip(p["blocks"], pieces) if c == "held"
+            for i in range(2 if kind >= DISC else 1)]
+    lam_fix = np.zeros(m)
+    slide = []
+    for (kind, s, par), c in zip(p["blocks"], pieces):
+        if c in "+-":
+            lam_fix[s] = par[0] if c == "+" else -par[0]
+        elif c == "slide":
+            slide.append((kind, s, par))
+    if held:
+        _, sv, Vt = np.linalg.svd(A[held])
+        rank = int(np.sum(sv > 1e-12 * max(sv.max(), 1e-300)))
+        Z = Vt[rank:].T
+    else:
+        Z = np.eye(n)
+    if Z.shape[1] == 0:
+        a = np.zeros(n)
+    else:
+        y = np.linalg.solve(Z.T @ M @ Z, Z.T @ M @ (af if a0 is None else a0))
+
+        def parts(y):
+            a = Z @ y
+            val = 0.5 * (a - af) @ M @ (a - af) - lam_fix @ (A @ a)
+            g = M @ (a - af) - A.T @ lam_fix
+            H = M.copy()
+            for kind, s, par in slide:
+                w = A[s:s + 2] @ a
+                if not np.hypot(*w) > 0:
+                    return None
+                sg, lk, Hs = _support(kind, par, -w)
+                val += sg
+                g -= A[s:s + 2].T @ lk
+                H += A[s:s + 2].T @ Hs @ A[s:s + 2]
+            return val, Z.T @ g, Z.T @ H @ Z
+
+        for _ in range(200):
+            out = parts(y)
+            if out is None:
+                return None
+            val, g, H = out
+            if not (np.isfinite(H).all() and np.isfinite(g).all()):
+                return None  # a sliding block brought to rest: not this piece
+            d = -np.linalg.lstsq(H, g, rcond=1e-15)[0]
+            t = 1.0
+            while t > 1e-12:  # the value falls, or (rounding hides it) the gradient
+                nxt = parts(y + t * d)
+                if nxt is not None and (nxt[0] <= val + 1e-4 * t * (g @ d) or np.linalg.norm(
+                        nxt[1]) <= (1 - 1e-4 * t) * np.linalg.norm(g)):
+                    break
+                t *= 0.5
+            y = y + t * d
+            if np.abs(t * d).max() <= 1e-15 * max(1.0, np.abs(y).max()):
+                break
+        a = Z @ y
+    w = A @ a
+    lam = lam_fix.copy()
+    for kind, s, par in slide:
+        if not np.hypot(*w[s:s + 2]) > tol * max(1.0, np.abs(w).max()):
+            return None  # not sliding: held instead
+        lam[s:s + 2] = _support(kind, par, -w[s:s + 2])[1]
+    rhs = M @ (a - af) - A.T @ lam
+    if held:
+        lam[held], _, rank, _ = np.linalg.lstsq(A[held].T, rhs, rcond=1e-12)
+        if rank < len(held) and not _held_in_sets(p, pieces, lam, tol):
+            lam = _held_forces_in_sets(p, pieces, lam, held, rhs)  # dependent rows
+            if lam is None:
+                return None
+    if np.abs(A.T @ lam - M @ (a - af)).max() > 1e-8 * max(1.0, np.abs(M @ (a - af)).max()):
+        return None  # the held rows cannot carry the rest
+    W = max(1.0, np.abs(p["b"]).max())
+    for (kind, s, par), c in zip(p["blocks"], pieces):
+        if kind == UNILATERAL and c == "zero" and w[s] < -tol * W:
+            return None
+        if kind == BOX and c == "+" and w[s] > tol * W:
+            return None
+        if kind == BOX and c == "-" and w[s] < -tol * W:
+            return None
+    return a if _held_in_sets(p, pieces, lam, tol) else None
+
+
+def _held_in_sets(p, pieces, lam, tol):
+    """Whether every held block's forces lie in its set (relative tolerance tol)."""
+    F = max(1.0, np.abs(lam).max())
+    for (kind, s, par), c in zip(p["blocks"], pieces):
+        if c != "held":
+            continue
+        if kind == UNILATERAL and lam[s] < -tol * F:
+            return False
+        if kind == BOX and abs(lam[s]) > par[0] * (1 + tol) + tol * F:
+            return False
+        if kind >= DISC:
+            l = lam[s:s + 2]
+            st = par[0] if kind == DISC or l[0] < 0 else par[1]
+            ay = par[0] if kind == DISC else par[2]
+            if np.hypot(l[0] / st, l[1] / ay) > 1 + tol:
+                return False
+    return True
+
+
+def _held_forces_in_sets(p, pieces, lam, held, rhs):
+    """Held forces inside their sets that carry rhs (A_H^T lam_H = rhs), the minimum-norm ones
+    (cvxpy, Clarabel): dependent held rows whose least-squares forces leave the sets."""
+    import cvxpy as cp
+
+    A = p["A"]
+    x = cp.Variable(len(held))
+    pos = {r: i for i, r in enumerate(held)}
+    cons = [A[held].T @ x == rhs]
+    for (kind, s, par), c in zip(p["blocks"], pieces):
+        if c != "held" or kind == FREE:
+            continue
+        if kind == UNILATERAL:
+            cons.append(x[pos[s]] >= 0)
+        elif kind == BOX:
+            cons.append(cp.abs(x[pos[s]]) <= par[0])
+        elif kind == DISC:
+            cons.append(cp.norm(cp.hstack([x[pos[s]], x[pos[s + 1]]])) <= par[0])
+        else:
+            sp, sm = cp.Variable(nonneg=True), cp.Variable(nonneg=True)
+            cons += [x[pos[s]] == sp - sm, cp.norm(cp.hstack(
+                [sm / par[0], sp / par[1], x[pos[s + 1]] / par[2]])) <= 1]
+    prob = cp.Problem(cp.Minimize(cp.sum_squares(x)), cons)
+    for tol in (1e-12, 1e-9):  # retried looser where Clarabel stops short
+        try:
+            with warnings.catch_warnings():
+                warnings.simplefilter("ignore", UserWarning)
+                prob.solve(solver="CLARABEL", tol_gap_abs=tol, tol_gap_rel=tol, tol_feas=tol)
+        except cp.error.SolverError:
+            continue
+        if prob.status == "optimal":
+            break
+    if prob.status != "optimal":
+        return None
+    out = lam.copy()
+    out[held] = x.value
+    return out
+
+
+def approximate_accelerations(p):
+    """Clarabel's accelerations to 1e-11, retried to 1e-8 where it stops short; None when it
+    fails at both (every block is then ambiguous to enumerate_pieces)."""
+    import cvxpy as cp
+
+    for tol in (1e-11, 1e-8):
+        try:
+            with warnings.catch_warnings():
+                warnings.simplefilter("ignore", UserWarning)
+                a, status = clarabel_accelerations(p, tol)
+        except cp.error.SolverError:
+            continue
+        if a is not None and status in ("optimal", "optimal_inaccurate"):
+            return a
+    return None
+
+
+def enumerate_pieces(p, a_hint, band=1e-6, limit=4096):
+    """The accelerations of the first assignment of pieces (every ground model) whose KKT
+    conditions hold, enumerated exactly (solve_piece) over the blocks an approximate solution
+    a_hint (Clarabel's) leaves ambiguous, |w| within band of its scale: those try every piece,
+    fewest departures from "held" first; a block clearly moving takes the one piece its motion
+    allows. The KKT conditions are checked to 1e-12 first, then (none found) to 1e-9. Returns
+    (a, held rows) or (None, None)."""
+    w = p["A"] @ a_hint if a_hint is not None else np.zeros(len(p["b"]))
+    W = max(1.0, np.abs(p["b"]).max(), np.abs(w).max())
+    options = []
+    for kind, s, par in p["blocks"]:
+        ws = w[s:s + (2 if kind >= DISC else 1)]
+        zero_set = (kind == BOX and not par[0] > 0) or (kind == DISC and not par[0] > 0) or (
+            kind == SPLIT and not (par[2] > 0 and (par[0] > 0 or par[1] > 0)))
+        if kind == FREE:
+            options.append(["held"])
+        elif zero_set:
+            options.append(["zero"])
+        elif np.abs(ws).max() <= band * W:
+            options.append({UNILATERAL: ["held", "zero"], BOX: ["held", "+", "-"]}.get(
+                kind, ["held", "slide"]))
+        elif kind == UNILATERAL:
+            options.append(["zero"] if ws[0] > 0 else ["held"])
+        elif kind == BOX:
+            options.append(["-" if ws[0] > 0 else "+"])
+        else:
+            options.append(["slide"])
+    amb = [k for k, o in enumerate(options) if len(o) > 1]
+
+    def combos():  # fewest departures first
+        for d in range(len(amb) + 1):
+            for chosen in itertools.combinations(amb, d):
+                for alt in itertools.product(*[range(1, len(options[k])) for k in chosen]):
+                    pick = [0] * len(options)
+                    for k, i in zip(chosen, alt):
+                        pick[k] = i
+                    yield pick
+
+    for tol in (1e-12, 1e-9):  # tight first: a wrong piece may pass within 1e-9
+        for count, combo in enumerate(combos()):
+            if count == limit:
+                break
+            pieces = [o[i] for o, i in zip(options, combo)]
+            a = solve_piece(p, pieces, a_hint, tol)
+            if a is not None:
+                held = [s + i for (kind, s, par), c in zip(p["blocks"], pieces) if c == "held"
+                        for i in range(2 if kind >= DISC else 1)]
+                return a, held
+    return None, None

@@ -11,11 +11,13 @@ import snakecg
 from snakecg import Robot, Scene
 from snakecg.errors import InputError
 from snakecg.scenes import GeneralScene, Ground, Obstacle, SceneObject, load_scene
+from snakecg.scenes.solve import DISC
 
 from overlap_reference import crossing_depth, link_ends
-from scenes_reference import (ALL_MODELS, POLYHEDRAL, clarabel_accelerations,
-                              clarabel_min_norm_forces, dense_problem, enumerate_polyhedral,
-                              kkt_violations, peg_obstacles, random_scene)
+from scenes_reference import (ALL_MODELS, POLYHEDRAL, approximate_accelerations,
+                              clarabel_accelerations, clarabel_min_norm_forces, dense_problem,
+                              enumerate_pieces, enumerate_polyhedral, kkt_violations,
+                              peg_obstacles, random_scene)
 
 
 @pytest.mark.parametrize("scenario", ["frictionless", "wheels", "ideal_wheels"])
@@ -96,23 +98,32 @@ def test_minimum_norm_forces_against_clarabel(rng):
     assert checked >= 3
 
 
-def _enumeration_study(rng, count):
+def _enumeration_study(rng, count, models=POLYHEDRAL):
     """Mismatches between the compiled solve and brute-force enumeration: no valid piece
     found, or accelerations apart by more than 1e-10 (relative), widened only to what double
-    precision resolves on the valid piece's held rows, 50 eps cond(G_HH) (on its range: nearly
-    dependent rows carry forces of 1e4 N that cancel, known to 1e-8 by any method). Returns
-    the mismatches and how many samples needed the wider tolerance."""
+    precision resolves on the held rows (the valid piece's, the solve's), 50 eps cond(G_HH) (on
+    its range: nearly dependent rows carry forces of 1e4 N that cancel, known to 1e-8 by any
+    method). Returns
+    the mismatches and how many samples needed the wider tolerance. Polyhedral scenes are
+    enumerated over every piece; with friction discs and ellipses, over the pieces of the
+    blocks that Clarabel's solution leaves ambiguous (enumerate_pieces)."""
     mismatches, widened = [], 0
     for i in range(count):
-        model, res, q, tau = _solved(rng, POLYHEDRAL)
+        model, res, q, tau = _solved(rng, models)
         p = dense_problem(res, model, tau)
-        ref, held = enumerate_polyhedral(p)
+        if set(models) <= set(POLYHEDRAL):
+            ref, held = enumerate_polyhedral(p)
+        else:
+            ref, held = enumerate_pieces(p, approximate_accelerations(p))
         a = np.r_[res.qdd, np.ravel(res.a_obj)]
         cond = 1.0
-        if held:
-            ev = np.linalg.eigvalsh(p["G"][np.ix_(held, held)])
-            ev = ev[ev > 1e-13 * ev.max()]  # on its range (exactly dependent rows: a null space)
-            cond = ev.max() / ev.min()
+        mine = [s + i for (kind, s, _), st in zip(p["blocks"], res._raw["state"][0])
+                if st == 0 for i in range(2 if kind >= DISC else 1)]  # the solve's held rows
+        for rows in (held, mine):
+            if rows:
+                ev = np.linalg.eigvalsh(p["G"][np.ix_(rows, rows)])
+                ev = ev[ev > 1e-13 * ev.max()]  # on its range (exactly dependent: a null space)
+                cond = max(cond, ev.max() / ev.min())
         tol = max(1e-10, 50 * np.finfo(float).eps * cond)
         widened += tol > 1e-10
         if ref is None or res.status != 0 or not np.abs(a - ref).max() <= tol * max(
@@ -131,6 +142,22 @@ def test_active_set_against_enumeration(rng):
 def test_active_set_against_enumeration_study(rng):
     mismatches, widened = _enumeration_study(rng, 10_000)
     print(f"10^4 scenes: {len(mismatches)} mismatches, {widened} on ill-conditioned rows")
+    assert mismatches == [] and widened <= 100
+
+
+def test_every_ground_model_against_enumeration(rng):
+    """Coulomb discs, split ellipses, bounded and ideal wheels and contacts: the compiled
+    solve's accelerations against the exact pieces enumerated in NumPy (the primal solved on
+    each assignment, its KKT conditions checked), 1e-10."""
+    mismatches, widened = _enumeration_study(rng, 120, ALL_MODELS)
+    assert mismatches == [] and widened <= 5
+
+
+@pytest.mark.slow
+def test_every_ground_model_against_enumeration_study(rng):
+    mismatches, widened = _enumeration_study(rng, 10_000, ALL_MODELS)
+    print(f"10^4 scenes, every ground model: {len(mismatches)} mismatches, {widened} on "
+          "ill-conditioned rows")
     assert mismatches == [] and widened <= 100
 
 

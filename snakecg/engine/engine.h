@@ -549,7 +549,6 @@ int SNAKECG_EXPORT(core_contact_depth)(const sc_geometry *g, sc_int n, const dou
 /* block kinds of the force sets, a problem of one sample, the solve's states and
  * (the solve's own states, fields and tolerances are scene_solve.c's) */
 enum { K_FREE = 0, K_UNILATERAL = 1, K_BOX = 2, K_DISC = 3, K_SPLIT = 4 };
-
 typedef struct {
   sc_int n, m, nb;
   const sc_int *kind, *start;
@@ -558,16 +557,17 @@ typedef struct {
   sc_int *state;
   double fscale, wscale;
 } sc_problem;
-
 SC_INTERNAL sc_int sc_block_size(sc_int kind);
 SC_INTERNAL void sc_block_P(const sc_problem *p, sc_int k, const double *l, double *P);
 enum { S_HELD = 0, S_ZERO = 1, S_SLIDE = 2 }; /* a block's state */
 #define TOL_ACCEPT 1e-9 /* a row's acceleration is zero within this of its scale */
-#define NULL_TOL 1e-13 /* G_FF's eigenvalues at most this of the largest: no acceleration */
+#define NULL_TOL 1e-13 /* G_FF's pivots at most this of the first: no acceleration */
 SC_INTERNAL int sc_in_set(const sc_problem *p, sc_int k, double *l, double tol, int clip);
 SC_INTERNAL int sc_still(const sc_problem *p, sc_int k);
 SC_INTERNAL int sc_min_norm_face(sc_problem *p, double *work);
 SC_INTERNAL void sc_block_min(const sc_problem *p, sc_int k, const double *c, double *l);
+SC_INTERNAL void sc_on_boundary(const sc_problem *p, sc_int k, double t, double *l, double *T);
+SC_INTERNAL double sc_angle_of(const sc_problem *p, sc_int k, const double *l);
 int SNAKECG_EXPORT(core_scene_solve_b)(sc_int ns, sc_int n, sc_int mmax, sc_int nbmax,
   const sc_int *m, const sc_int *nb, const double *M, const double *f, const double *A,
   const double *c, const sc_int *kind, const sc_int *start, const double *par,

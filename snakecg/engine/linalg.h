@@ -523,4 +523,77 @@ static inline void sc_svd_least_norm(sc_int n, sc_int m, const double *U, sc_int
   }
 }
 
+/* ---------------------------------------------------------------------------------------
+ * A symmetric positive semidefinite n x n A (row-major, ld; its lower triangle read and
+ * overwritten) = P L D L^T P^T by diagonal pivoting (the largest remaining pivot first, as
+ * LAPACK's dpstrf); the rank r is the number of pivots above rcond times the first. x = the
+ * basic solution of A x = b: P [(L D L^T)_11^-1 (P^T b)_1; 0] (b overwritten). work holds n
+ * doubles, perm n sc_ints. Returns r. */
+static inline sc_int sc_psd_solve(sc_int n, double *A, sc_int ld, double *b, double rcond,
+                                  double *x, double *work, sc_int *perm) {
+  sc_int i, j, k, rank = 0;
+  double d0 = 0.0, *c = work;
+  for (j = 0; j < n; ++j) perm[j] = j;
+  for (k = 0; k < n; ++k) {
+    sc_int p = k;
+    double d, t;
+    for (j = k + 1; j < n; ++j)
+      if (A[j * ld + j] > A[p * ld + p]) p = j;
+    d = A[p * ld + p];
+    if (k == 0) d0 = d;
+    if (!(d > 0) || !(d > rcond * d0)) break;
+    if (p != k) { /* rows and columns k and p, in the lower triangle */
+#define SC_SWAP(u, v) (t = (u), (u) = (v), (v) = t)
+      SC_SWAP(A[k * ld + k], A[p * ld + p]);
+      for (j = 0; j < k; ++j) SC_SWAP(A[k * ld + j], A[p * ld + j]);
+      for (i = k + 1; i < p; ++i) SC_SWAP(A[i * ld + k], A[p * ld + i]);
+      for (i = p + 1; i < n; ++i) SC_SWAP(A[i * ld + k], A[i * ld + p]);
+      SC_SWAP(b[k], b[p]);
+#undef SC_SWAP
+      j = perm[k]; perm[k] = perm[p]; perm[p] = j;
+    }
+    for (i = k + 1; i < n; ++i) c[i] = A[i * ld + k]; /* column k, then L's */
+    for (i = k + 1; i < n; ++i) {
+      double l = c[i] / d, *row = A + i * ld;
+      for (j = k + 1; j <= i; ++j) row[j] -= l * c[j];
+      row[k] = l;
+    }
+    ++rank;
+  }
+  for (i = 0; i < rank; ++i) /* L y = b_1, D z = y, L^T x_1 = z */
+    for (k = 0; k < i; ++k) b[i] -= A[i * ld + k] * b[k];
+  for (i = 0; i < rank; ++i) b[i] /= A[i * ld + i];
+  for (i = rank - 1; i >= 0; --i)
+    for (k = i + 1; k < rank; ++k) b[i] -= A[k * ld + i] * b[k];
+  for (j = 0; j < n; ++j) x[j] = 0.0;
+  for (i = 0; i < rank; ++i) x[perm[i]] = b[i];
+  return rank;
+}
+
+/* y = A x + b for the n x n row-major A, each row's dot product in four partial sums */
+static inline void sc_matvec_plus(sc_int n, const double *A, const double *x, const double *b,
+                                  double *y) {
+  sc_int i, j;
+  for (i = 0; i < n; ++i) {
+    const double *g = A + i * n;
+    double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;
+    for (j = 0; j + 3 < n; j += 4) {
+      s0 += g[j] * x[j], s1 += g[j + 1] * x[j + 1];
+      s2 += g[j + 2] * x[j + 2], s3 += g[j + 3] * x[j + 3];
+    }
+    for (; j < n; ++j) s0 += g[j] * x[j];
+    y[i] = b[i] + ((s0 + s1) + (s2 + s3));
+  }
+}
+
+/* x := L^-1 x, L the lower triangle of sc_cholesky's factor (n x n, row-major) */
+static inline void sc_lower_solve(sc_int n, const double *L, double *x) {
+  sc_int i, k;
+  for (i = 0; i < n; ++i) {
+    double t = x[i];
+    for (k = 0; k < i; ++k) t -= L[i * n + k] * x[k];
+    x[i] = t / L[i * n + i];
+  }
+}
+
 #endif

@@ -9,7 +9,8 @@
  * form on the eigenvectors (its secular equation solved to rounding); the split ellipse as
  * the backward half, the forward half, or the segment lam_t = 0 (the minimiser over the
  * convex set lies in the half whose own full-ellipse minimiser falls inside it, else on the
- * dividing segment). Used by scene_solve.c.
+ * dividing segment). sc_on_boundary parametrizes a 2-D set's boundary by an angle (the
+ * sliding pieces' unknowns). Used by scene_solve.c.
  */
 #include <math.h>
 
@@ -84,6 +85,27 @@ SC_INTERNAL void sc_block_min(const sc_problem *p, sc_int k, const double *c, do
   }
 }
 
+/* A sliding 2-D block k's force on its set's boundary at angle t and the tangent T =
+ * dlam/dt there: a disc s (cos t, sin t); a split ellipse (st cos t, p2 sin t), st the
+ * semi-axis of the half that cos t points into. Both have dT/dt = -lam. */
+SC_INTERNAL void sc_on_boundary(const sc_problem *p, sc_int k, double t, double *l, double *T) {
+  const double *q = p->par + 3 * k;
+  double c = cos(t), s = sin(t), ax = p->kind[k] == K_DISC ? q[0] : (c < 0 ? q[0] : q[1]),
+         ay = p->kind[k] == K_DISC ? q[0] : q[2];
+  l[0] = ax * c;
+  l[1] = ay * s;
+  T[0] = -ax * s;
+  T[1] = ay * c;
+}
+
+/* The angle of a 2-D block's force (sc_on_boundary's parametrization, radially onto it). */
+SC_INTERNAL double sc_angle_of(const sc_problem *p, sc_int k, const double *l) {
+  const double *q = p->par + 3 * k;
+  double ax = l[0] < 0 ? q[0] : q[1];
+  if (p->kind[k] == K_DISC) return atan2(l[1], l[0]);
+  return atan2(l[1] / q[2], ax > 0 ? l[0] / ax : 0.0);
+}
+
 /* 1 if the forces l of block k lie in its set, to the relative tolerance tol; with clip,
  * forces outside by at most that are first moved onto the set. */
 SC_INTERNAL int sc_in_set(const sc_problem *p, sc_int k, double *l, double tol, int clip) {
@@ -121,18 +143,58 @@ SC_INTERNAL int sc_still(const sc_problem *p, sc_int k) {
   return 1;
 }
 
+/* An orthonormal basis of the null space of the positive semidefinite n x n A (row-major;
+ * overwritten): the pivoted L D L^T of sc_psd_solve stopped at pivots of at most NULL_TOL of
+ * the first, the null vectors P [-L11^-T L21^T; I] orthonormalized (Gram-Schmidt, twice).
+ * Column t of the basis at V[i * n + t]; returns their number. Work: 2 n doubles, n sc_ints
+ * in perm. */
+static sc_int null_space(sc_int n, double *A, double *V, double *work, sc_int *perm) {
+  double *b = work, *x = work + n;
+  sc_int i, j, t, u, rank, nn;
+  for (i = 0; i < n; ++i) b[i] = 0.0;
+  rank = sc_psd_solve(n, A, n, b, NULL_TOL, x, work + n, perm);
+  nn = n - rank;
+  for (t = 0; t < nn; ++t) {
+    sc_int jj = rank + t;
+    double *y = x;
+    for (i = 0; i < n; ++i) y[i] = 0.0;
+    y[jj] = 1.0;
+    for (i = rank - 1; i >= 0; --i) { /* L11^T y1 = -L21^T e_jj */
+      double sum = -A[jj * n + i];
+      for (j = i + 1; j < rank; ++j) sum -= A[j * n + i] * y[j];
+      y[i] = sum;
+    }
+    for (i = 0; i < n; ++i) V[perm[i] * n + t] = y[i];
+  }
+  for (t = 0; t < nn; ++t) {
+    int pass;
+    double nrm;
+    for (pass = 0; pass < 2; ++pass)
+      for (u = 0; u < t; ++u) {
+        double d = 0.0;
+        for (i = 0; i < n; ++i) d += V[i * n + u] * V[i * n + t];
+        for (i = 0; i < n; ++i) V[i * n + t] -= d * V[i * n + u];
+      }
+    nrm = 0.0;
+    for (i = 0; i < n; ++i) nrm += V[i * n + t] * V[i * n + t];
+    nrm = sqrt(nrm);
+    for (i = 0; i < n; ++i) V[i * n + t] /= nrm;
+  }
+  return nn;
+}
+
 /* Minimum-norm forces on the face (every block whose rows do not accelerate: the forces of
- * the others are fixed by the unique accelerations): lam_F -= N N^T lam_F, N the null space of G_FF
- * (eigenvalues at most NULL_TOL of the largest). Where that leaves a force's set and the null
- * space is one direction v, the minimum of |lam_F + t v| over the t that keep every held force
- * in its set (an interval holding 0, its ends found by bisection to rounding) is taken
- * instead. Returns 0 when the face's rows are independent (nothing to choose), 1 when the
+ * the others are fixed by the unique accelerations): lam_F -= N N^T lam_F, N the null space
+ * of G_FF (null_space: pivots at most NULL_TOL of the first). Where that leaves a force's set
+ * and the null space is one direction v, the minimum of |lam_F + t v| over the t that keep
+ * every held force in its set (an interval holding 0, its ends found by bisection to
+ * rounding) is taken instead. Returns 0 when the face's rows are independent (nothing to choose), 1 when the
  * minimum-norm forces were found, 2 when not (a larger null space whose unconstrained minimum
  * leaves the set: the face's basic solution stays). */
 SC_INTERNAL int sc_min_norm_face(sc_problem *p, double *work) {
   const sc_int m = p->m;
-  sc_int F[512], fk[512], nf = 0, i, j, k, t, nnull = 0, tnull = -1;
-  double *A, *V, *ev, *l0, big;
+  sc_int F[512], fk[512], perm[512], nf = 0, i, j, k, t, nnull = 0, tnull = -1;
+  double *A, *V, *ev, *l0;
   int inside = 1;
   for (k = 0; k < p->nb; ++k) { /* the face: every block whose rows do not accelerate */
     if (p->state[k] != S_HELD && !sc_still(p, k)) continue;
@@ -145,16 +207,13 @@ SC_INTERNAL int sc_min_norm_face(sc_problem *p, double *work) {
   A = work;
   V = A + nf * nf;
   ev = V + nf * nf;
-  l0 = ev + nf;
+  l0 = ev + 2 * nf;
   for (i = 0; i < nf; ++i)
     for (j = 0; j < nf; ++j) A[i * nf + j] = p->G[F[i] * m + F[j]];
-  sc_eigen_symmetric(nf, A, nf, ev, V, nf);
-  big = fabs(ev[nf - 1]);
+  nnull = null_space(nf, A, V, ev, perm);
   for (i = 0; i < nf; ++i) l0[i] = p->lam[F[i]];
-  for (t = 0; t < nf; ++t) {
+  for (t = 0; t < nnull; ++t) {
     double s;
-    if (!(fabs(ev[t]) <= NULL_TOL * big)) continue;
-    ++nnull;
     tnull = t;
     s = 0.0;
     for (i = 0; i < nf; ++i) s += V[i * nf + t] * l0[i];

@@ -16,16 +16,21 @@
  * Gauss's principle with the sets' support functions has the dual
  *     min_lam 1/2 lam^T G lam + b^T lam  over lam in K = K_1 x ... x K_nb,
  * G = A I^-1 A^T (eq. 14), b = A I^-1 f + c (eq. 16 at rest, c = 0): the accelerations
- * a = I^-1 (f + A^T lam) (eq. 18) are unique; the forces are unique when G is regular. The
- * solve:
- *   1. block Gauss-Seidel, each block minimised exactly (a clamp, or a 2-D trust-region
- *      sc_problem whose secular equation is solved to rounding), to a relative 1e-10;
- *   2. the pieces read from that point (held/stick, zero, sliding) and the piece's equations
- *      (w_F = 0 on held rows, lam fixed on zero rows and saturated boxes, w_B + gamma P_B
- *      lam_B = 0 and lam_B^T P_B lam_B = 1 on sliding 2-D blocks) solved by Newton with a
- *      pivoted QR step, to rounding;
- *   3. the KKT conditions checked on the result; a violated piece is switched (a
- *      primal-dual active-set step) and step 2 repeated; after that more sweeps and again.
+ * a = I^-1 (f + A^T lam) (eq. 18) are unique; the forces are unique when G is regular. With
+ * I = L L^T, G = Z^T Z and b = Z^T L^-1 f + c for Z = L^-1 A^T (built once per sample). The
+ * solve is an active set on the pieces (held/stick, zero, sliding):
+ *   1. the piece's equations solved by Newton to rounding (polish): held rows' forces and one
+ *      angle per sliding 2-D block's force on its set's boundary, w = 0 on held rows and no
+ *      acceleration along the boundary on sliding blocks, lam fixed on zero rows and
+ *      saturated boxes; the Jacobian is the reduced Hessian of the dual on the piece
+ *      (positive semidefinite), factored by diagonal pivoting, dependent rows dropped;
+ *   2. the KKT conditions checked on the result; a violated piece is switched (a primal-dual
+ *      active-set step) and step 1 repeated;
+ *   3. the pieces start from the held guess (every block held) where the rows are at most
+ *      the coordinates; else, or when that fails within a few passes, from block
+ *      Gauss-Seidel sweeps (each block minimised exactly: a clamp, or a 2-D trust-region
+ *      problem whose secular equation is solved to rounding), read every ten sweeps and
+ *      tried once two readings agree (or the sweeps converged).
  * The certificate (KKT residuals, relative to the sample's force and acceleration scales) is
  * returned with every sample. Where the held rows' equations are dependent (statically
  * indeterminate), the flag is set and the held forces are the minimum-norm ones on the face
@@ -49,40 +54,47 @@ enum { INFO_STATUS = 0, INFO_DEPENDENT, INFO_PRIMAL, INFO_DUAL, INFO_COMPL, INFO
  * (snakecg.solver.PIVOT_TOL): nearly dependent rows are statically indeterminate to double
  * precision, their forces are taken minimum-norm rather than huge and cancelling */
 #define DEP_TOL 1e-10
+#define GUESS_PASSES 3 /* active-set passes from the held guess (rows <= coordinates) */
+#define TRY_PASSES 3 /* from pieces read before the sweeps converged */
+#define CHUNK 10 /* sweeps between two readings of the pieces */
 
 
 
-static void update_w(sc_problem *p) {
-  sc_int i;
-  for (i = 0; i < p->m; ++i) p->w[i] = p->b[i] + sc_dot(p->G + i * p->m, p->lam, p->m);
-}
+static void update_w(sc_problem *p) { sc_matvec_plus(p->m, p->G, p->lam, p->b, p->w); }
 
-/* Gauss-Seidel sweeps until the largest change is below rel * scale; returns the sweeps. */
+/* Gauss-Seidel sweeps until the largest change is below rel * scale; returns the sweeps.
+ * w = G lam + b is kept along (one column of G per changed row), and recomputed after. */
 static sc_int sweeps(sc_problem *p, sc_int max_sweeps, double rel) {
-  sc_int s, k, i;
+  const sc_int m = p->m;
+  sc_int s, k, i, j;
+  update_w(p);
   for (s = 0; s < max_sweeps; ++s) {
     double change = 0.0, size = 0.0;
     for (k = 0; k < p->nb; ++k) {
       sc_int r = p->start[k], nk = sc_block_size(p->kind[k]);
       double c[2], l[2];
       for (i = 0; i < nk; ++i) {
-        sc_int j;
-        double t = p->b[r + i];
-        for (j = 0; j < p->m; ++j)
-          if (j < r || j >= r + nk) t += p->G[(r + i) * p->m + j] * p->lam[j];
-        c[i] = t;
+        c[i] = p->w[r + i];
+        for (j = 0; j < nk; ++j) c[i] -= p->G[(r + i) * m + r + j] * p->lam[r + j];
       }
       sc_block_min(p, k, c, l);
       for (i = 0; i < nk; ++i) {
-        double d = fabs(l[i] - p->lam[r + i]);
-        if (d > change) change = d;
+        double d = l[i] - p->lam[r + i];
+        const double *col = p->G + (r + i) * m; /* G symmetric: column r + i */
+        if (fabs(d) > change) change = fabs(d);
         if (fabs(l[i]) > size) size = fabs(l[i]);
         p->lam[r + i] = l[i];
+        if (d != 0.0) {
+          double *restrict wv = p->w;
+          const double *restrict cv = col;
+          for (j = 0; j < m; ++j) wv[j] += cv[j] * d;
+        }
       }
     }
-    if (!(change > rel * (size > p->fscale ? size : p->fscale))) return s + 1;
+    if (!(change > rel * (size > p->fscale ? size : p->fscale))) break;
   }
-  return max_sweeps;
+  update_w(p);
+  return s < max_sweeps ? s + 1 : max_sweeps;
 }
 
 /* Pieces read from the current lam (rel: relative tolerance on the set's boundary). */
@@ -118,87 +130,151 @@ static void read_states(sc_problem *p, double rel) {
   }
 }
 
-/* Newton on the piece's equations (unknowns: lam of held rows, lam and gamma of sliding 2-D
- * blocks; fixed: zero rows and saturated boxes). Returns the rank defect of the last step's
- * matrix (0: independent), or -1 when the iteration did not converge. Scratch in `work`. */
-static sc_int polish(sc_problem *p, double *work, sc_int *iwork) {
-  const sc_int m = p->m;
-  sc_int *col = iwork, *perm = iwork + m + p->nb, nu = 0, neq, k, i, j, it, defect = 0;
-  double *J, *F, *dx, *qw;
-  /* unknown index of each row (-1 fixed) and of each sliding block's gamma */
-  sc_int *urow = iwork + 2 * (m + p->nb), *ugam = urow + m;
-  for (k = 0; k < p->nb; ++k) {
+/* The dual objective 1/2 lam^T G lam + b^T lam at the current lam and w = G lam + b. */
+static double dual_value(const sc_problem *p) {
+  sc_int i;
+  double v = 0.0;
+  for (i = 0; i < p->m; ++i) v += 0.5 * p->lam[i] * (p->w[i] + p->b[i]);
+  return v;
+}
+
+/* Newton on the piece's equations: the unknowns are the forces of held rows and the angle t
+ * of every sliding 2-D block's force on its set's boundary (zero rows and saturated boxes
+ * fixed); the equations are the dual's stationarity on the piece, w = 0 on held rows and
+ * T . w = 0 (no sliding acceleration along the boundary) on sliding blocks. Their Jacobian
+ * is the reduced Hessian [G_HH, G_HS T; T^T G_SH, T^T G_SS T + diag(-lam_S . w_S)], positive
+ * semidefinite where the sliding forces oppose their accelerations (the diagonal term is
+ * taken at least 0), factored by diagonal pivoting (dependent held rows: the basic
+ * solution); with sliding blocks the step is halved until the dual objective does not rise.
+ * Returns the rank defect of the last step's matrix (0: independent). Scratch in work. */
+static sc_int polish_piece(sc_problem *p, double *work, sc_int *iwork, double *fn_out) {
+  const sc_int m = p->m, nb = p->nb;
+  sc_int *urow = iwork, *uth = urow + m, *var = uth + nb, *perm = var + m + nb;
+  sc_int nu = 0, nslide = 0, k, i, it, defect = 0;
+  double *J = work, *F, *dx, *th, *th0, *T, *l0, rc = DEP_TOL, fn_prev = INFINITY, fn = 0.0;
+  for (k = 0; k < nb; ++k) {
     sc_int r = p->start[k], nk = sc_block_size(p->kind[k]);
-    ugam[k] = -1;
+    uth[k] = -1;
     for (i = 0; i < nk; ++i) urow[r + i] = -1;
     if (p->state[k] == S_ZERO) {
       for (i = 0; i < nk; ++i) p->lam[r + i] = 0.0;
     } else if (p->state[k] == S_SLIDE && p->kind[k] == K_BOX) {
       p->lam[r] = p->lam[r] >= 0 ? p->par[3 * k] : -p->par[3 * k];
+    } else if (p->state[k] == S_SLIDE) {
+      uth[k] = nu;
+      var[nu++] = -1 - k;
+      ++nslide;
     } else {
-      for (i = 0; i < nk; ++i) { urow[r + i] = nu; col[nu++] = r + i; }
-      if (p->state[k] == S_SLIDE) { ugam[k] = nu; col[nu++] = -1 - k; }
+      for (i = 0; i < nk; ++i) { urow[r + i] = nu; var[nu++] = r + i; }
     }
   }
-  (void)col;
+  *fn_out = 0.0;
   if (nu == 0) { update_w(p); return 0; }
-  neq = nu;
-  J = work;
-  F = J + neq * nu;
-  dx = F + neq;
-  qw = dx + nu;
+  F = J + nu * nu;
+  dx = F + nu;
+  th = dx + nu;
+  th0 = th + nb;
+  T = th0 + nb;
+  l0 = T + 2 * nb;
+  for (k = 0; k < nb; ++k) th[k] = 0.0;
+  for (k = 0; k < nb; ++k)
+    if (uth[k] >= 0) {
+      th[k] = sc_angle_of(p, k, p->lam + p->start[k]);
+      sc_on_boundary(p, k, th[k], p->lam + p->start[k], T + 2 * k);
+    }
+  update_w(p);
   for (it = 0; it < 40; ++it) {
-    double fn = 0.0;
-    update_w(p);
-    memset(J, 0, sizeof(double) * (size_t)(neq * nu));
-    for (k = 0; k < p->nb; ++k) {
-      sc_int r = p->start[k], nk = sc_block_size(p->kind[k]);
-      if (urow[r] < 0) continue;
-      for (i = 0; i < nk; ++i) {
-        sc_int e = urow[r + i];
-        F[e] = p->w[r + i];
-        for (j = 0; j < m; ++j)
-          if (urow[j] >= 0) J[e * nu + urow[j]] = p->G[(r + i) * m + j];
+    double step = 0.0, v0 = 0.0, t = 1.0;
+    fn = 0.0;
+    sc_int e, f, ls;
+    if (it > 0 && !nslide) update_w(p); /* (with sliding blocks: the line search's) */
+    for (e = 0; e < nu; ++e) {
+      sc_int v = var[e];
+      if (v >= 0) {
+        F[e] = p->w[v];
+        fn = fmax(fn, fabs(F[e]));
+      } else {
+        sc_int r = p->start[-1 - v];
+        const double *Tk = T + 2 * (-1 - v);
+        F[e] = Tk[0] * p->w[r] + Tk[1] * p->w[r + 1];
+        fn = fmax(fn, fabs(F[e]) / (sqrt(Tk[0] * Tk[0] + Tk[1] * Tk[1]) + 1e-300));
       }
-      if (ugam[k] >= 0) {
-        double P[2], *l = p->lam + r, gmm = p->gamma[k];
-        sc_int e = ugam[k];
-        sc_block_P(p, k, l, P);
-        for (i = 0; i < 2; ++i) {
-          F[urow[r + i]] += gmm * P[i] * l[i];
-          J[urow[r + i] * nu + urow[r + i]] += gmm * P[i];
-          J[urow[r + i] * nu + e] = P[i] * l[i];
-          J[e * nu + urow[r + i]] = P[i] * l[i];
+    }
+    if (it > 0 && fn <= 1e-15 * p->wscale) break; /* (the first step always: its rank) */
+    if (defect > 0 && fn > 0.5 * fn_prev && fn > 1e-12 * p->wscale)
+      rc = 1e-15; /* stalled on a residual the dropped (nearly dependent) rows carry: they
+                     are kept from here on */
+    fn_prev = fn;
+    for (e = 0; e < nu; ++e) { /* the reduced Hessian's lower triangle */
+      sc_int v = var[e];
+      for (f = 0; f <= e; ++f) {
+        sc_int u = var[f];
+        double h;
+        if (v >= 0 && u >= 0) {
+          h = p->G[v * m + u];
+        } else if (v >= 0 || u >= 0) {
+          sc_int row = v >= 0 ? v : u, kk = v >= 0 ? -1 - u : -1 - v, r = p->start[kk];
+          h = p->G[row * m + r] * T[2 * kk] + p->G[row * m + r + 1] * T[2 * kk + 1];
+        } else {
+          sc_int ka = -1 - v, kb = -1 - u, ra = p->start[ka], rb = p->start[kb];
+          const double *Ta = T + 2 * ka, *Tb = T + 2 * kb;
+          h = Ta[0] * (p->G[ra * m + rb] * Tb[0] + p->G[ra * m + rb + 1] * Tb[1]) +
+              Ta[1] * (p->G[(ra + 1) * m + rb] * Tb[0] + p->G[(ra + 1) * m + rb + 1] * Tb[1]);
+          if (ka == kb)
+            h += fmax(0.0, -(p->lam[ra] * p->w[ra] + p->lam[ra + 1] * p->w[ra + 1]));
         }
-        F[e] = 0.5 * (P[0] * l[0] * l[0] + P[1] * l[1] * l[1] - 1.0);
+        J[e * nu + f] = h;
       }
+      F[e] = -F[e];
     }
-    for (i = 0; i < neq; ++i) {
-      double s = fabs(F[i]);
-      if (s > fn) fn = s;
-      F[i] = -F[i];
+    defect = nu - sc_psd_solve(nu, J, nu, F, rc, dx, l0, perm);
+    if (nslide) {
+      v0 = dual_value(p);
+      memcpy(l0, p->lam, sizeof(double) * (size_t)m);
+      for (k = 0; k < nb; ++k) th0[k] = th[k];
     }
-    {
-      sc_int rank = sc_qr_least_squares(neq, nu, J, nu, F, DEP_TOL, dx, qw, perm);
-      defect = nu - rank;
-    }
-    {
-      double step = 0.0;
-      for (k = 0; k < p->nb; ++k) {
-        sc_int r = p->start[k], nk = sc_block_size(p->kind[k]);
-        if (urow[r] < 0) continue;
-        for (i = 0; i < nk; ++i) {
-          p->lam[r + i] += dx[urow[r + i]];
-          if (fabs(dx[urow[r + i]]) > step) step = fabs(dx[urow[r + i]]);
+    for (ls = 0; ls < 40; ++ls, t *= 0.5) { /* the step, halved while the dual rises */
+      for (e = 0; e < nu; ++e) {
+        sc_int v = var[e];
+        if (v >= 0) {
+          p->lam[v] = (nslide ? l0[v] : p->lam[v]) + t * dx[e];
+        } else {
+          k = -1 - v;
+          th[k] = th0[k] + t * dx[e];
+          sc_on_boundary(p, k, th[k], p->lam + p->start[k], T + 2 * k);
         }
-        if (ugam[k] >= 0) p->gamma[k] += dx[ugam[k]];
       }
-      if (!(step > 1e-15 * p->fscale) || (it > 0 && fn <= 1e-15 * (p->wscale + 1e-300)))
-        break;
+      if (!nslide) break;
+      update_w(p);
+      if (dual_value(p) <= v0 + 1e-14 * (fabs(v0) + p->fscale * p->wscale)) break;
     }
+    for (e = 0; e < nu; ++e) {
+      double d = fabs(t * dx[e]);
+      if (var[e] < 0) d *= p->par[3 * (-1 - var[e])] + (p->kind[-1 - var[e]] == K_SPLIT ?
+                                                       p->par[3 * (-1 - var[e]) + 1] : 0.0);
+      if (d > step) step = d;
+    }
+    if (!(step > 1e-15 * p->fscale)) break;
   }
+  *fn_out = fn;
   update_w(p);
   return defect;
+}
+
+/* polish_piece; where it stops short of rounding with a sliding block that does not move (at
+ * its set's limit: the angle's equation is degenerate there), that block is held instead
+ * and the piece solved again. */
+static sc_int polish(sc_problem *p, double *work, sc_int *iwork) {
+  double fn;
+  sc_int k, defect = polish_piece(p, work, iwork, &fn);
+  int again = 0;
+  if (!(fn > 1e-14 * p->wscale)) return defect;
+  for (k = 0; k < p->nb; ++k)
+    if (p->state[k] == S_SLIDE && p->kind[k] >= K_DISC && sc_still(p, k)) {
+      p->state[k] = S_HELD;
+      again = 1;
+    }
+  return again ? polish_piece(p, work, iwork, &fn) : defect;
 }
 
 /* The KKT residuals (relative): primal (outside the set), dual (w not in -N_K(lam)),
@@ -274,6 +350,21 @@ static int kkt(sc_problem *p, double *res, int do_switch) {
   return moved;
 }
 
+/* Active-set passes from the states in p: the piece's equations solved (polish), the KKT
+ * conditions checked and the violated pieces switched, at most max_pass times. Returns 1 when
+ * a piece's solution satisfies them (res: its residuals), else 0. */
+static int active_set(sc_problem *p, sc_int max_pass, double *work, sc_int *iwork,
+                      sc_int *passes, sc_int *defect, double *res) {
+  sc_int pass;
+  for (pass = 0; pass < max_pass; ++pass) {
+    ++*passes;
+    *defect = polish(p, work, iwork);
+    if (!kkt(p, res, 1))
+      return res[0] <= TOL_ACCEPT && res[1] <= TOL_ACCEPT && res[2] <= TOL_ACCEPT;
+  }
+  return 0;
+}
+
 /* One sample. M (n x n), f (n), A (m x n) row-major; out: lam (m), a (n), w (m), state (nb),
  * info (INFO_WIDTH). Scratch: work and iwork sized by scene_solve_work. */
 static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const double *f,
@@ -281,10 +372,10 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
                          const double *par, sc_int max_sweeps, double *lam, double *a,
                          double *w, double *state_out, double *info, double *work,
                          sc_int *iwork) {
-  double *L = work, *Y = L + n * n, *G = Y + n * m, *b = G + m * m, *gam = b + m,
-         *rest = gam + nb, res[3] = {NAN, NAN, NAN};
+  double *L = work, *Z = L + n * n, *G = Z + n * m, *b = G + m * m, *gam = b + m,
+         *keep = gam + nb, *rest = keep + m, res[3] = {NAN, NAN, NAN};
   sc_int i, j, k, total_sweeps = 0, passes = 0, defect = 0;
-  sc_int *state = iwork, *iw2 = iwork + nb;
+  sc_int *state = iwork, *iw2 = iwork + nb, *prev = iw2 + 3 * (m + nb);
   sc_problem p;
   int dep = 0, ok = 0;
   memset(info, 0, sizeof(double) * INFO_WIDTH);
@@ -295,25 +386,18 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
     for (i = 0; i < n; ++i) a[i] = NAN;
     return;
   }
-  /* a_free = M^-1 f (in a), Y = M^-1 A^T (n x m, column j for row j of A) */
+  /* with M = L L^T: g = L^-1 f (in a), Z = L^-1 A^T (row j of A at Z + j n); then G = Z^T Z
+   * (symmetric by construction) and b = Z^T g + c */
   for (i = 0; i < n; ++i) a[i] = f[i];
-  sc_cholesky_solve(n, L, n, a);
+  sc_lower_solve(n, L, a);
   for (j = 0; j < m; ++j) {
-    double col[512];
-    for (i = 0; i < n; ++i) col[i] = A[j * n + i];
-    sc_cholesky_solve(n, L, n, col);
-    for (i = 0; i < n; ++i) Y[i * m + j] = col[i];
+    for (i = 0; i < n; ++i) Z[j * n + i] = A[j * n + i];
+    sc_lower_solve(n, L, Z + j * n);
   }
-  for (i = 0; i < m; ++i) { /* G = A Y, b = A a_free */
-    for (j = 0; j < m; ++j) {
-      double s = 0.0;
-      for (k = 0; k < n; ++k) s += A[i * n + k] * Y[k * m + j];
-      G[i * m + j] = s;
-    }
-    b[i] = sc_dot(A + i * n, a, n) + (c ? c[i] : 0.0);
+  for (i = 0; i < m; ++i) {
+    for (j = 0; j <= i; ++j) G[i * m + j] = G[j * m + i] = sc_dot(Z + i * n, Z + j * n, n);
+    b[i] = sc_dot(Z + i * n, a, n) + (c ? c[i] : 0.0);
   }
-  for (i = 0; i < m; ++i) /* symmetric to rounding */
-    for (j = 0; j < i; ++j) G[i * m + j] = G[j * m + i] = 0.5 * (G[i * m + j] + G[j * m + i]);
   p.n = n; p.m = m; p.nb = nb; p.kind = kind; p.start = start; p.par = par;
   p.G = G; p.b = b; p.lam = lam; p.w = w; p.gamma = gam; p.state = state;
   { /* scales: forces (what would stop the rows' accelerations, and the sets' sizes),
@@ -339,28 +423,42 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
     ok = 1;
     res[0] = res[1] = res[2] = 0.0;
   }
-  while (!ok && total_sweeps < max_sweeps) {
-    int pass;
-    sc_int s = sweeps(&p, total_sweeps == 0 ? 200 : 2000, total_sweeps == 0 ? 1e-8 : 1e-12);
-    total_sweeps += s;
-    update_w(&p);
-    read_states(&p, 1e-6);
-    for (pass = 0; pass < 20; ++pass) {
-      ++passes;
-      defect = polish(&p, rest, iw2);
-      if (defect < 0) break;
-      if (!kkt(&p, res, 1)) {
-        ok = res[0] <= TOL_ACCEPT && res[1] <= TOL_ACCEPT && res[2] <= TOL_ACCEPT;
-        break;
-      }
+  if (!ok && m <= n) { /* the active set from the held guess: every block held (or its set
+    zero); not where more rows than coordinates make the held forces' basic solution arbitrary */
+    for (k = 0; k < nb; ++k) {
+      const double *q = par + 3 * k;
+      int zero = kind[k] == K_BOX ? !(q[0] > 0) : kind[k] == K_DISC ? !(q[0] > 0) :
+                 kind[k] == K_SPLIT ? !(q[2] > 0 && (q[0] > 0 || q[1] > 0)) : 0;
+      state[k] = zero ? S_ZERO : S_HELD;
     }
-    if (!ok) { /* back to the sweeps from the set's nearest point */
+    ok = active_set(&p, GUESS_PASSES, rest, iw2, &passes, &defect, res);
+    if (!ok) /* else the sweeps from zero forces */
+      for (i = 0; i < m; ++i) lam[i] = 0.0;
+  }
+  /* block Gauss-Seidel sweeps in chunks, the pieces read after each; tried once they read
+   * the same after two chunks (from a copy: the sweeps go on from their own point), or when
+   * the sweeps converged (then they go on from the pieces' point, inside the polyhedral
+   * sets) */
+  for (k = 0; k < nb; ++k) prev[k] = -1;
+  while (!ok && total_sweeps < max_sweeps) {
+    int same = 1;
+    sc_int s = sweeps(&p, CHUNK, 1e-12);
+    total_sweeps += s;
+    read_states(&p, 1e-6);
+    for (k = 0; k < nb; ++k) {
+      if (state[k] != prev[k]) same = 0;
+      prev[k] = state[k];
+    }
+    if (!same && s == CHUNK) continue;
+    memcpy(keep, lam, sizeof(double) * (size_t)m);
+    ok = active_set(&p, s < CHUNK ? 20 : TRY_PASSES, rest, iw2, &passes, &defect, res);
+    if (!ok && s == CHUNK) memcpy(lam, keep, sizeof(double) * (size_t)m);
+    else if (!ok)
       for (k = 0; k < nb; ++k) {
         sc_int r = start[k];
         if (kind[k] == K_UNILATERAL && lam[r] < 0) lam[r] = 0;
         if (kind[k] == K_BOX) lam[r] = fmax(-par[3 * k], fmin(par[3 * k], lam[r]));
       }
-    }
   }
   if (ok) {
     int degenerate = defect > 0;
@@ -395,6 +493,10 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
         res[2] = keep_res[2];
       }
     }
+    for (k = 0; k < nb; ++k) /* a contact's force below zero by rounding: zero */
+      if (kind[k] == K_UNILATERAL && lam[start[k]] < 0) lam[start[k]] = 0.0;
+    update_w(&p);
+    kkt(&p, res, 0);
   }
   info[INFO_STATUS] = ok ? ST_SOLVED : ST_NOT_CONVERGED;
   info[INFO_DEPENDENT] = (double)dep;
@@ -417,8 +519,15 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
     if (state[k] == S_SLIDE && kind[k] == K_BOX) code = lam[start[k]] > 0 ? 3.0 : 4.0;
     state_out[k] = code;
   }
-  /* eq. (18): a = a_free + Y lam */
-  for (i = 0; i < n; ++i) a[i] += sc_dot(Y + i * m, lam, m);
+  /* eq. (18): a = M^-1 (f + A^T lam) = L^-T (g + Z lam) */
+  for (j = 0; j < m; ++j)
+    if (lam[j] != 0.0 && isfinite(lam[j]))
+      for (i = 0; i < n; ++i) a[i] += Z[j * n + i] * lam[j];
+  for (i = n - 1; i >= 0; --i) {
+    double t = a[i];
+    for (k = i + 1; k < n; ++k) t -= L[k * n + i] * a[k];
+    a[i] = t / L[i * n + i];
+  }
   if (!ok) {
     for (i = 0; i < n; ++i) a[i] = NAN;
     for (i = 0; i < m; ++i) lam[i] = NAN;
@@ -428,7 +537,8 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
 /* Scratch sizes (doubles, sc_ints) for n coordinates, m rows, nb blocks. */
 void SNAKECG_EXPORT(core_scene_solve_work)(sc_int n, sc_int m, sc_int nb, sc_int *nd, sc_int *ni) {
   sc_int u = m + nb;
-  *nd = n * n + n * m + m * m + m + nb + (u * u + 3 * u + 2 * m * m + 3 * m + 16);
+  *nd = n * n + n * m + m * m + m + nb + (u * u + 3 * u + 2 * m * m + 3 * m + 16) +
+        m;
   *ni = nb + 4 * (m + nb) + 16;
 }
 
