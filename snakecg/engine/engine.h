@@ -79,8 +79,8 @@ int SNAKECG_BF_WORK(sc_int *sz_arg, sc_int *sz_res, sc_int *sz_iw, sc_int *sz_w)
 /* row states (snakecg/solver.py); SUPPORT: a bilateral row held always that may depend on the
  * held rows (a spatial snake's ground rows, snakecg/spatial/analysis.py) */
 enum { ABSENT = 0, HELD = 1, LOST = 2, SLIDE_POS = 3, SLIDE_NEG = 4, SUPPORT = 5 };
-/* The simulation's structs, shared by integrate.c, events.c and run.c (mirrored field by
- * field in snakecg/engine/binding.py). Event functions (Events.functions of events.py): */
+/* The simulation's structs (integrate.c, events.c, run.c; mirrored field by field in
+ * snakecg/engine/binding.py). Event functions (Events.functions of events.py): */
 enum { EV_SEPARATION = 0, EV_S_LOW = 1, EV_S_HIGH = 2, EV_GAP = 3, EV_BREAKAWAY = 4,
        EV_SLIDE_STOP = 5 };
 /* segment and settle status; *_FAILED: an evaluation failed or a derivative is not finite */
@@ -95,8 +95,8 @@ typedef struct { /* the model and the run */
   const double *state;   /* NC row states (solver codes, as doubles) */
   const sc_int *ev_kind, *ev_row; /* n_ev event kinds (EV_*), their rows */
   sc_int n_ev;
-  sc_int contact_index;  /* k: the contact link, from 0; c_k, l_k: its COM offset, length */
-  double c_k, l_k;
+  sc_int contact_index;  /* k: the contact link, from 0 */
+  double c_k, l_k;       /* its COM offset and length */
   double alpha;          /* Baumgarte rate (1/s) */
   double pivot_tol, regularization; /* dependent held rows (at most this pivot ratio) get
                             the Tikhonov term of this weight (rows.c's rule) */
@@ -135,14 +135,14 @@ typedef struct {
   double *y_out;        /* NY */
   double *state;        /* NC: the new row states */
   double *forced_out;   /* NC: the forced rows after the velocity checks (-1: free) */
-  sc_int impact, n_impact; /* 1 when the contact closed with an impact; its impulses */
+  sc_int impact;        /* 1 when the contact closed with an impact */
   double impact_velocity, impact_ke, impact_de; /* gdot before, energy before, change */
   double *impact_lam;   /* NC: impulses of the contact and the ideal wheels, in row order */
+  sc_int n_impact;
   sc_int n_projected;   /* rows projected in step 4 (0: none) */
   double drift;         /* their largest |A V| before the projection */
   sc_int drift_row;     /* where it is (the first such row) */
-  double projection_ke, projection_de;
-  double *projection_lam; /* NC: their impulses, in row order */
+  double projection_ke, projection_de, *projection_lam; /* their impulses (NC, row order) */
   sc_int nsingular;     /* projections and decisions whose held rows were dependent */
   sc_int status;        /* SETTLE_* */
 } sc_settle;
