@@ -166,11 +166,11 @@ class Segment(ctypes.Structure):
     _fields_ = [("scene", _P), ("tau", _P), ("f_obj", _P), ("rho", _P), ("state", _P),
                 ("ev_kind", _P), ("ev_row", _P), ("n_ev", _I), ("contact_index", _I),
                 ("c_k", _D), ("l_k", _D), ("alpha", _D), ("pivot_tol", _D),
-                ("regularization", _D), ("rtol", _D), ("atol", _D), ("max_step", _D), ("t0", _D), ("t1", _D), ("y0", _P),
-                ("t_eval", _P), ("n_eval", _I), ("geo", _P), ("budget", _D), ("resume", _I),
-                ("y_eval", _P), ("n_out", _I), ("t_end", _D), ("y_end", _P), ("event", _I),
-                ("nfev", _I), ("nsteps", _I), ("nrejected", _I), ("nsingular", _I), ("h_next", _D),
-                ("status", _I)]
+                ("regularization", _D), ("rtol", _D), ("atol", _D), ("max_step", _D),
+                ("t0", _D), ("t1", _D), ("y0", _P), ("t_eval", _P), ("n_eval", _I),
+                ("geo", _P), ("budget", _D), ("resume", _I), ("y_eval", _P), ("n_out", _I),
+                ("t_end", _D), ("y_end", _P), ("event", _I), ("nfev", _I), ("nsteps", _I),
+                ("nrejected", _I), ("nsingular", _I), ("h_next", _D), ("status", _I)]
 
 
 class SceneCall(ctypes.Structure):
@@ -234,5 +234,6 @@ class Run(ctypes.Structure):
                 ("loss_out", _P), ("n_out", _I), ("cap_modes", _I), ("modes", _P),
                 ("n_modes", _I), ("cap_events", _I), ("events", _P), ("n_events", _I),
                 ("stuck", _I), ("samples", _P), ("segments", _I), ("nfev", _I), ("nsteps", _I),
-                ("nsingular", _I), ("segment_cpu", _D), ("start", _I), ("start_out", _P), ("budget", _D),
-                ("resume", _I), ("mode", _I), ("i0", _I), ("n_sampled", _I), ("status", _I)]
+                ("nsingular", _I), ("segment_cpu", _D), ("start", _I), ("start_out", _P),
+                ("budget", _D), ("resume", _I), ("mode", _I), ("i0", _I), ("n_sampled", _I),
+                ("status", _I)]
