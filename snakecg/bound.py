@@ -58,8 +58,9 @@ class BoundFunction:
         for k, val in var.items():
             if self._fast is not None:
                 self._bufs[k][:] = val
-            else:
+            else:  # (and no longer the value the last one-sample call was given)
                 self.const[k] = np.ascontiguousarray(np.ravel(np.asarray(val, dtype=float)))
+                self._last.pop(k, None)
 
     def one(self, **var):
         """Evaluate on one sample; the returned arrays are overwritten by the next call."""

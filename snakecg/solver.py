@@ -259,7 +259,9 @@ def _enumerate(call, i: int, present, bounds):
     lam, w = out["lam"], out["w"]
     # KKT residual of each candidate (0 for the solution)
     res = np.zeros(len(combos))
-    res += np.where(combos[:, 0] == HELD, np.maximum(-lam[:, 0], 0), np.maximum(-w[:, 0], 0))
+    if present[0]:  # (the free rows only: a forced row keeps its state)
+        res += np.where(combos[:, 0] == HELD, np.maximum(-lam[:, 0], 0),
+                        np.maximum(-w[:, 0], 0))
     ub = bounds[1:]
     s, lw, ww = combos[:, 1:], lam[:, 1:], w[:, 1:]
     with np.errstate(invalid="ignore"):

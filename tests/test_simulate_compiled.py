@@ -253,18 +253,25 @@ def test_auto_chooses_the_compiled_segments_when_it_can(models):
         sm.simulate(Q3, TAU3, 0.02, integrator="fast")
 
 
-def test_segment_handed_back_goes_through_solve_ivp(models):
-    """A segment the C hands back (as for dependent held rows) is integrated by solve_ivp:
-    the run is then the solve_ivp run."""
+def test_failed_segment_raises_instead_of_switching_engines(models, monkeypatch):
+    """A segment the C cannot answer (SEG_FAILED: a failed evaluation, a derivative that is
+    not finite) ends the run with SimulationError saying when; solve_ivp never takes over."""
+    import scipy.integrate
+
+    from snakecg.engine.segment import RUN_PYTHON, SEG_FAILED
+    from snakecg.simulate.records import SimulationError
+
     sm, _ = models(3, "wheels")
     q0, tau = _hard_push(sm)
     sim = _simulator(sm, q0, tau, output_dt=0.01)
     sim.settings.duration = 0.3
-    sim.compiled._run = lambda address: 2  # RUN_PYTHON: the run goes through the Python loop
-    sim.compiled._fn = lambda address: -2  # SEG_PYTHON
-    handed = sim.run()
-    ref = sm.simulate(q0, tau, 0.3, output_dt=0.01, integrator="scipy")
-    assert sim.compiled.handed_back == handed.summary["integrator"]["segments"] > 0
+    sim.compiled._run = lambda address: RUN_PYTHON  # the Python loop over the C segments
+    sim.compiled._fn = lambda address: SEG_FAILED
+
+    def refuse(*args, **kwargs):
+        raise AssertionError("solve_ivp took over a compiled segment")
+
+    monkeypatch.setattr(scipy.integrate, "solve_ivp", refuse)
+    with pytest.raises(SimulationError, match="integration failed at t = .* s: .*not finite"):
+        sim.run()
     assert sim.compiled.runs_handed_back == 1
-    np.testing.assert_array_equal(handed.q, ref.q)
-    assert [(e.kind, e.t) for e in handed.events] == [(e.kind, e.t) for e in ref.events]

@@ -165,11 +165,12 @@ class Segment(ctypes.Structure):
 
     _fields_ = [("scene", _P), ("tau", _P), ("f_obj", _P), ("rho", _P), ("state", _P),
                 ("ev_kind", _P), ("ev_row", _P), ("n_ev", _I), ("contact_index", _I),
-                ("c_k", _D), ("l_k", _D), ("alpha", _D), ("pivot_tol", _D), ("rtol", _D),
-                ("atol", _D), ("max_step", _D), ("t0", _D), ("t1", _D), ("y0", _P),
-                ("t_eval", _P), ("n_eval", _I), ("geo", _P), ("budget", _D), ("resume", _I),
-                ("y_eval", _P), ("n_out", _I), ("t_end", _D), ("y_end", _P), ("event", _I),
-                ("nfev", _I), ("nsteps", _I), ("nrejected", _I), ("h_next", _D), ("status", _I)]
+                ("c_k", _D), ("l_k", _D), ("alpha", _D), ("pivot_tol", _D),
+                ("regularization", _D), ("rtol", _D), ("atol", _D), ("max_step", _D),
+                ("t0", _D), ("t1", _D), ("y0", _P), ("t_eval", _P), ("n_eval", _I),
+                ("geo", _P), ("budget", _D), ("resume", _I), ("y_eval", _P), ("n_out", _I),
+                ("t_end", _D), ("y_end", _P), ("event", _I), ("nfev", _I), ("nsteps", _I),
+                ("nrejected", _I), ("nsingular", _I), ("h_next", _D), ("status", _I)]
 
 
 class SceneCall(ctypes.Structure):
@@ -215,13 +216,13 @@ class Settle(ctypes.Structure):
 
     _fields_ = [("scene", _P), ("tau", _P), ("f_obj", _P), ("rho", _P), ("contact_index", _I),
                 ("c_k", _D), ("l_k", _D), ("pivot_tol", _D), ("rel_tol", _D),
-                ("max_iter", _I), ("y", _P), ("prev", _P), ("forced", _P),
+                ("regularization", _D), ("max_iter", _I), ("y", _P), ("prev", _P), ("forced", _P),
                 ("contact_candidate", _I), ("vtol", _D), ("y_out", _P), ("state", _P),
                 ("forced_out", _P), ("impact", _I), ("impact_velocity", _D),
                 ("impact_ke", _D), ("impact_de", _D), ("impact_lam", _P), ("n_impact", _I),
                 ("n_projected", _I), ("drift", _D), ("drift_row", _I),
                 ("projection_ke", _D), ("projection_de", _D), ("projection_lam", _P),
-                ("status", _I)]
+                ("nsingular", _I), ("status", _I)]
 
 
 class Run(ctypes.Structure):
@@ -233,5 +234,6 @@ class Run(ctypes.Structure):
                 ("loss_out", _P), ("n_out", _I), ("cap_modes", _I), ("modes", _P),
                 ("n_modes", _I), ("cap_events", _I), ("events", _P), ("n_events", _I),
                 ("stuck", _I), ("samples", _P), ("segments", _I), ("nfev", _I), ("nsteps", _I),
-                ("segment_cpu", _D), ("start", _I), ("start_out", _P), ("budget", _D),
-                ("resume", _I), ("mode", _I), ("i0", _I), ("n_sampled", _I), ("status", _I)]
+                ("nsingular", _I), ("segment_cpu", _D), ("start", _I), ("start_out", _P),
+                ("budget", _D), ("resume", _I), ("mode", _I), ("i0", _I), ("n_sampled", _I),
+                ("status", _I)]

@@ -11,10 +11,8 @@
  *                   forward.c in a spatial scene's library)
  *   forward.c       the forward solve of a batch (exported: core_forward)
  *   rows.c          its rare samples: Tikhonov, enumeration, the rows factored directly
- *   integrate.c     one integration segment between events (Dormand-Prince 5(4), dense
- *                   output, event location; exported: core_integrate_segment, ...)
- *   events.c        what happens at an event: impacts, projections, the new active set
- *                   (exported: core_settle)
+ *   integrate.c     a segment between events: DOP853, dense output, event location (exported)
+ *   events.c        at an event: impacts, projections, the new active set (core_settle)
  *   run.c           a whole simulation: segments and events in one call (exported: core_run)
  *   geometry.c      the contact check of a simulation (overlap depths), the rows' velocities
  *   maps.c          the system at rest and the affine maps of one row state
@@ -81,35 +79,29 @@ int SNAKECG_BF_WORK(sc_int *sz_arg, sc_int *sz_res, sc_int *sz_iw, sc_int *sz_w)
 /* row states (snakecg/solver.py); SUPPORT: a bilateral row held always that may depend on the
  * held rows (a spatial snake's ground rows, snakecg/spatial/analysis.py) */
 enum { ABSENT = 0, HELD = 1, LOST = 2, SLIDE_POS = 3, SLIDE_NEG = 4, SUPPORT = 5 };
-/* The simulation's structs, shared by integrate.c, events.c and run.c (mirrored field by
- * field in snakecg/engine/segment.py). */
-/* event functions (snakecg/simulate/events.py, Events.functions) */
+/* The simulation's structs (integrate.c, events.c, run.c; mirrored field by field in
+ * snakecg/engine/binding.py). Event functions (Events.functions of events.py): */
 enum { EV_SEPARATION = 0, EV_S_LOW = 1, EV_S_HIGH = 2, EV_GAP = 3, EV_BREAKAWAY = 4,
        EV_SLIDE_STOP = 5 };
-/* segment status */
+/* segment and settle status; *_FAILED: an evaluation failed or a derivative is not finite */
 enum { SEG_END = 0, SEG_EVENT = 1, SEG_GEOMETRY = 2, SEG_PAUSED = 3, SEG_TOO_SMALL = -1,
-       SEG_PYTHON = -2,
-       SEG_MEMORY = -3, SEG_BAD_INPUT = -4 };
-enum { SETTLE_DONE = 0, SETTLE_PYTHON = 1, SETTLE_MEMORY = 2 };
+       SEG_FAILED = -2, SEG_MEMORY = -3, SEG_BAD_INPUT = -4 };
+enum { SETTLE_DONE = 0, SETTLE_FAILED = 1, SETTLE_MEMORY = 2 };
 /* One segment: inputs, then outputs (filled by core_integrate_segment). */
-typedef struct {
-  /* the model and the run */
+typedef struct { /* the model and the run */
   const double *scene;   /* the scene vector (layout: SCENE_*) */
-  const double *tau;     /* NA, held over the segment */
-  const double *f_obj;   /* 3 */
-  const double *rho;     /* 2, contact point in the object frame */
+  const double *tau, *f_obj, *rho; /* NA, held over the segment; 3; 2, contact point in the
+                            object frame */
   const double *state;   /* NC row states (solver codes, as doubles) */
-  const sc_int *ev_kind; /* n_ev event kinds (EV_*) */
-  const sc_int *ev_row;  /* their rows */
+  const sc_int *ev_kind, *ev_row; /* n_ev event kinds (EV_*), their rows */
   sc_int n_ev;
   sc_int contact_index;  /* k: the contact link, from 0 */
-  double c_k, l_k;       /* the contact link's COM offset and length */
+  double c_k, l_k;       /* its COM offset and length */
   double alpha;          /* Baumgarte rate (1/s) */
-  double pivot_tol;      /* held rows dependent at or below this pivot ratio */
-  double rtol, atol, max_step;
-  double t0, t1;
-  const double *y0;      /* NY */
-  const double *t_eval;  /* n_eval increasing times in (t0, t1] */
+  double pivot_tol, regularization; /* dependent held rows (at most this pivot ratio) get
+                            the Tikhonov term of this weight (rows.c's rule) */
+  double rtol, atol, max_step, t0, t1;
+  const double *y0, *t_eval; /* NY; n_eval increasing times in (t0, t1] */
   sc_int n_eval;
   struct sc_geometry *geo; /* the contact check (geometry.c), or null */
   double budget;         /* wall-clock seconds a call may take: after them (and at least one
@@ -122,20 +114,18 @@ typedef struct {
   double t_end;          /* where the segment ended (t1 or the event) */
   double *y_end;         /* NY: the state there */
   sc_int event;          /* the event that fired (index into ev_*), -1 if none */
-  sc_int nfev, nsteps, nrejected; /* of this call */
+  sc_int nfev, nsteps, nrejected, nsingular; /* of this call (nsingular: regularized) */
   double h_next;         /* SEG_PAUSED: the step size to go on with */
   sc_int status;         /* SEG_* */
 } sc_segment;
 /* One settle: inputs, then outputs (filled by core_settle). */
 typedef struct {
   const double *scene;  /* the scene vector (layout: SCENE_*) */
-  const double *tau;    /* NA */
-  const double *f_obj;  /* 3 */
-  const double *rho;    /* 2 */
+  const double *tau, *f_obj, *rho; /* NA, 3, 2 */
   sc_int contact_index; /* k, from 0 */
   double c_k, l_k;
-  double pivot_tol, rel_tol;
-  sc_int max_iter;      /* active-set passes */
+  double pivot_tol, rel_tol, regularization; /* as sc_segment's; the decisions' tolerance */
+  sc_int max_iter;      /* active-set passes (then enumeration) */
   const double *y;      /* NY: the state at the event */
   const double *prev;   /* NC row states of the mode before (null at the start) */
   const double *forced; /* NC: a row's forced state, or -1 */
@@ -152,8 +142,8 @@ typedef struct {
   sc_int n_projected;   /* rows projected in step 4 (0: none) */
   double drift;         /* their largest |A V| before the projection */
   sc_int drift_row;     /* where it is (the first such row) */
-  double projection_ke, projection_de;
-  double *projection_lam; /* NC: their impulses, in row order */
+  double projection_ke, projection_de, *projection_lam; /* their impulses (NC, row order) */
+  sc_int nsingular;     /* projections and decisions whose held rows were dependent */
   sc_int status;        /* SETTLE_* */
 } sc_settle;
 /* ---- contact.c: the per-state system and its complementarity solve ---- */
@@ -211,6 +201,16 @@ typedef struct {
 SC_INTERNAL void sc_forward_edge(const sc_system *sys, const double *scene,
                                  const sc_constants *c, long max_iter, int at_rest,
                                  double mass, double *out);
+/* rows.c: lam (w = G lam + b unless null) of `state` by sc_held_forces (with `extra`), the
+ * Tikhonov term where the held rows are dependent (*singular = 1); the pivot ratio. */
+SC_INTERNAL double sc_delassus_state(const sc_system *sys, const sc_constants *c,
+                                     const signed char *state, const double *u,
+                                     const double *extra, double *lam, double *w,
+                                     int *singular);
+/* rows.c: the active set of the rows free[r] != 0 (the others keep theirs) at an event. */
+SC_INTERNAL double sc_decide_states(const sc_system *sys, const sc_constants *c,
+                                    const double *u, const double *free, long max_iter,
+                                    signed char *state, int *singular);
 
 /* The constraint forces for row states `state` (eq. 16): lam_F fixed (0, or +-bound for a
  * sliding wheel), lam_H solving G_HH lam_H = -(b_H + G_HF lam_F) - extra_H by LDL^T in row
@@ -227,7 +227,7 @@ SC_INTERNAL double sc_held_forces(const signed char *state, const double *G, con
 SC_INTERNAL int sc_next_states(signed char *state, const double *lam, const double *w,
                                const double *G, const double *bounds, double rel_tol);
 /* ---- events.c: locating an event ---- */
-/* A function of time whose root is sought (its value in *g): 0, or SEG_PYTHON. */
+/* A function of time whose root is sought (its value in *g): 0, or SEG_FAILED. */
 typedef int (*sc_root_fn)(void *arg, double t, double *g);
 /* The root of fn on [xa, xb] (scipy.optimize.brentq's method) in *root: 0, or fn's status. */
 SC_INTERNAL int sc_brentq(sc_root_fn fn, void *arg, double xa, double xb, double *root);

@@ -16,11 +16,11 @@
  *   4. the remaining present rows (the candidates) projected the same way (their drift);
  *   5. the new active set: the primal-dual iteration of snakecg/solver.py (and forward.c) over
  *      the candidates at the acceleration level (eqs. 13, 14, 16), the forced rows fixed
- *      (a sliding wheel at its bound, a lost contact at zero force).
- * Where this path does not answer exactly as the Python one would (a failed evaluation,
- * dependent held rows, which the Python path regularizes, a singular impulse system, no
- * convergence within max_iter passes, which the Python path enumerates), it returns
- * SETTLE_PYTHON and writes nothing that the caller keeps: the Python path does it all.
+ *      (a sliding wheel at its bound, a lost contact at zero force), then enumeration when
+ *      it has not settled in max_iter passes (rows.c's sc_decide_states).
+ * Dependent rows (pivot ratio at most pivot_tol) in a projection or a decision get rows.c's
+ * Tikhonov term (least-norm impulses and forces; counted in nsingular). A failed evaluation
+ * returns SETTLE_FAILED and writes nothing that the caller keeps.
  */
 #include <float.h>
 #include <math.h>
@@ -53,14 +53,27 @@ static double kinetic_energy(const sc_settle *st, const sc_system *sys, const do
                           vo[2] * (st->scene[SCENE_object_inertia] * vo[2]));
 }
 
+/* The constants of rows.c's rules that the settle uses. */
+static sc_constants constants(const sc_settle *st) {
+  sc_constants k;
+  memset(&k, 0, sizeof(k));
+  k.pivot_tol = st->pivot_tol;
+  k.rel_tol = st->rel_tol;
+  k.regularization = st->regularization;
+  return k;
+}
+
 /* Dynamics.project: y projected (positions onto g = 0 first when `positions` and the contact
- * is among the m `rows`), the impulses Lam (m) and the kinetic-energy change. 0, or 1. */
-static int project(sc_work_t *ws, const sc_settle *st, double *y, const int *rows, int m,
+ * is among the m `rows`), the impulses Lam (m) and the kinetic-energy change: LU of G_RR, or
+ * where the rows are dependent the least-norm impulses of the Tikhonov rule. 0, or 1. */
+static int project(sc_work_t *ws, sc_settle *st, double *y, const int *rows, int m,
                    int positions, double *Lam, double *dE) {
+  const sc_constants k = constants(st);
   sc_system sys;
-  double av[NC], GF[NC * NC];
+  double av[NC], GF[NC * NC], lam[NC];
+  signed char state[NC];
   sc_int piv[NC];
-  int i, j, it;
+  int i, j, it, singular;
   if (positions && m > 0 && rows[0] == 0) {
     for (it = 0; it < 3; ++it) {
       if (maps(ws, st, y, &sys, av)) return 1;
@@ -72,13 +85,21 @@ static int project(sc_work_t *ws, const sc_settle *st, double *y, const int *row
   if (maps(ws, st, y, &sys, av)) return 1;
   *dE = 0.0;
   if (m == 0) return 0;
+  for (i = 0; i < NC; ++i) state[i] = ABSENT;
   for (i = 0; i < m; ++i) {
     for (j = 0; j < m; ++j) GF[i * m + j] = sys.G[rows[i] + NC * rows[j]];
     Lam[i] = av[rows[i]];
+    state[rows[i]] = HELD;
   }
-  if (!sc_lu_factor(m, GF, m, piv)) return 1; /* linalg.h: P A = L U, partial pivoting */
-  sc_lu_solve(m, GF, m, piv, Lam);
-  for (i = 0; i < m; ++i) Lam[i] = -Lam[i];
+  memcpy(sys.b, av, sizeof(av)); /* G_RR Lam = -(A V)_R: the held rows' forces with b = A V */
+  sc_delassus_state(&sys, &k, state, st->scene + SCENE_bounds, 0, lam, 0, &singular);
+  if (!singular && sc_lu_factor(m, GF, m, piv)) { /* linalg.h: P A = L U */
+    sc_lu_solve(m, GF, m, piv, Lam);
+    for (i = 0; i < m; ++i) Lam[i] = -Lam[i];
+  } else {
+    for (i = 0; i < m; ++i) Lam[i] = lam[rows[i]];
+    st->nsingular++;
+  }
   for (i = 0; i < NS; ++i) {
     double t = 0.0;
     for (j = 0; j < m; ++j) t += sys.Kq[i + NS * rows[j]] * Lam[j];
@@ -101,44 +122,26 @@ static int project(sc_work_t *ws, const sc_settle *st, double *y, const int *row
   return 0;
 }
 
-/* Events.decide: the active set over the candidates, the forced rows fixed. 0, or 1. */
-static int decide(sc_work_t *ws, const sc_settle *st, const double *y, const signed char *forced,
+/* Events.decide: the active set over the candidates, the forced rows fixed (rows.c's
+ * iteration, then enumeration; Tikhonov where the held rows are dependent). 0, or 1. */
+static int decide(sc_work_t *ws, sc_settle *st, const double *y, const signed char *forced,
                   const double *bounds, const double *present, signed char *state) {
+  const sc_constants k = constants(st);
   sc_system sys;
-  double lam[NC], w[NC], ratio;
-  signed char next[NC];
-  sc_int it;
-  int r, i, moved = 1, any = 0;
+  double free[NC];
+  int r, any = 0, singular;
   for (r = 0; r < NC; ++r) {
     state[r] = forced[r] >= 0 ? forced[r] : present[r] != 0.0 ? HELD : ABSENT;
-    if (forced[r] < 0 && present[r] != 0.0) any = 1;
+    free[r] = forced[r] < 0 && present[r] != 0.0;
+    if (free[r] != 0.0) any = 1;
   }
   if (!any) return 0;
   if (sc_contact_system(ws, st->scene, y, y + NX, st->tau, y + NS, y + NX + NS, st->f_obj,
                         st->rho, &sys))
     return 1;
-  for (it = 0; it < st->max_iter && moved; ++it) {
-    ratio = sc_held_forces(state, sys.G, sys.b, bounds, 0, lam);
-    if (!(ratio > st->pivot_tol)) return 1;
-    for (r = 0; r < NC; ++r) {
-      double t = sys.b[r];
-      if (!isfinite(lam[r])) return 1;
-      for (i = 0; i < NC; ++i) t += sys.G[r + NC * i] * lam[i];
-      w[r] = t;
-    }
-    /* the rules of snakecg.solver._violations; a forced row never moves */
-    memcpy(next, state, sizeof(next));
-    for (r = 0; r < NC; ++r)
-      if (forced[r] >= 0) next[r] = ABSENT;
-    sc_next_states(next, lam, w, sys.G, bounds, st->rel_tol);
-    moved = 0;
-    for (r = 0; r < NC; ++r) {
-      if (forced[r] >= 0) continue;
-      if (next[r] != state[r]) moved = 1;
-      state[r] = next[r];
-    }
-  }
-  return moved; /* not settled: enumeration, in the Python path */
+  sc_decide_states(&sys, &k, bounds, free, (long)st->max_iter, state, &singular);
+  st->nsingular += singular;
+  return 0;
 }
 
 static int settle(sc_work_t *ws, sc_settle *st) {
@@ -152,7 +155,7 @@ static int settle(sc_work_t *ws, sc_settle *st) {
     forced[r] = (signed char)(st->forced[r] >= 0 ? st->forced[r] : -1);
     held_before[r] = st->prev != 0 && st->prev[r] == HELD;
   }
-  if (maps(ws, st, y, &sys, av)) return SETTLE_PYTHON;
+  if (maps(ws, st, y, &sys, av)) return SETTLE_FAILED;
   for (r = 0; r < NX; ++r)
     if (fabs(y[NX + r]) > vtol) vtol = fabs(y[NX + r]);
   vtol = 1e-8 * fmax(1.0, vtol);
@@ -165,12 +168,12 @@ static int settle(sc_work_t *ws, sc_settle *st) {
       if (present[r] != 0.0 && !isfinite(bounds[r])) rows[m++] = r;
     st->impact_velocity = av[0];
     st->impact_ke = kinetic_energy(st, &sys, y);
-    if (project(ws, st, y, rows, m, 1, lam, &dE)) return SETTLE_PYTHON;
+    if (project(ws, st, y, rows, m, 1, lam, &dE)) return SETTLE_FAILED;
     memcpy(st->impact_lam, lam, sizeof(double) * (size_t)m);
     st->n_impact = m;
     st->impact_de = dE;
     st->impact = impact = 1;
-    if (maps(ws, st, y, &sys, av)) return SETTLE_PYTHON;
+    if (maps(ws, st, y, &sys, av)) return SETTLE_FAILED;
   } else if (contact_in && !held_before[0] && av[0] > vtol) {
     forced[0] = LOST; /* already moving apart */
   } else if (!contact_in && forced[0] < 0) {
@@ -192,12 +195,12 @@ static int settle(sc_work_t *ws, sc_settle *st) {
         st->drift_row = rows[r];
       }
     st->projection_ke = kinetic_energy(st, &sys, y);
-    if (project(ws, st, y, rows, m, rows[0] == 0, lam, &dE)) return SETTLE_PYTHON;
+    if (project(ws, st, y, rows, m, rows[0] == 0, lam, &dE)) return SETTLE_FAILED;
     memcpy(st->projection_lam, lam, sizeof(double) * (size_t)m);
     st->projection_de = dE;
   }
   st->n_projected = m;
-  if (decide(ws, st, y, forced, bounds, present, state)) return SETTLE_PYTHON;
+  if (decide(ws, st, y, forced, bounds, present, state)) return SETTLE_FAILED;
   for (r = 0; r < NY; ++r) st->y_out[r] = y[r];
   for (r = 0; r < NC; ++r) {
     st->state[r] = (double)state[r];
@@ -211,7 +214,7 @@ int SNAKECG_EXPORT(core_settle)(sc_settle *st) {
   const sc_work_fn fns[] = {SC_CS_WORKS, SNAKECG_LJ_WORK};
   sc_work_t ws;
   int status;
-  st->impact = st->n_impact = st->n_projected = 0;
+  st->impact = st->n_impact = st->n_projected = st->nsingular = 0;
   st->drift = 0.0;
   st->drift_row = -1;
   if (sc_work_alloc(&ws, fns, SC_COUNT(fns))) {

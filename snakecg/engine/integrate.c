@@ -25,9 +25,9 @@
  *     segment's start, at every output time and at every step's end; the first time it
  *     exceeds the tolerance is located between the last two of these on the dense output by
  *     the same Brent's method, and stops the segment (SEG_GEOMETRY) or is recorded.
- * A segment that this path cannot answer as the Python one would (dependent held rows, which
- * the Python right-hand side regularizes; a failed evaluation) returns a status that sends it
- * to the Python path.
+ * Dependent held rows (pivot ratio at most pivot_tol) get rows.c's Tikhonov term (the
+ * least-norm forces in the limit; counted in nsingular). A failed evaluation or a derivative
+ * that is not finite ends the segment with SEG_FAILED at the step's start (t_end, y_end).
  */
 #define _POSIX_C_SOURCE 200809L /* clock_gettime (before the first include) */
 #include <float.h>
@@ -81,43 +81,52 @@ typedef struct {
   const sc_segment *sg;
   signed char state[NC];
   double bounds[NC];
-  sc_int nfev;
+  sc_int nfev, nsingular;
+  sc_constants k; /* pivot_tol and regularization: rows.c's Tikhonov rule */
   /* the last evaluation's quantities (for the event functions and the samples) */
   double lam[NC], av[NC];
   sc_system sys; /* contact_system at the last state: gap, s and M_s among it */
 } sc_ctx;
 
-static int ctx_alloc(sc_ctx *c) {
+/* The context of the segment sg: 0, or -1 when its work arrays could not be allocated. */
+static int ctx_alloc(sc_ctx *c, const sc_segment *sg) {
   const sc_work_fn fns[] = {SC_CS_WORKS, SNAKECG_LJ_WORK};
+  int i;
+  c->sg = sg;
+  c->nfev = c->nsingular = 0;
+  memset(&c->k, 0, sizeof(c->k));
+  c->k.pivot_tol = sg->pivot_tol;
+  c->k.regularization = sg->regularization;
+  for (i = 0; i < NC; ++i) {
+    c->state[i] = (signed char)sg->state[i];
+    c->bounds[i] = sg->scene[SCENE_bounds + i];
+  }
   return sc_work_alloc(&c->ws, fns, SC_COUNT(fns));
 }
 
 /* The right-hand side in the mode at y (Dynamics.rates); keeps lam, A V, gap and s in c.
- * Returns 0, or SEG_PYTHON where the Python path must do it (dependent held rows, a failed
- * evaluation). */
+ * Returns 0, or SEG_FAILED (a failed evaluation, a derivative not finite). */
 static int rhs(sc_ctx *c, const double *y, double *ydot) {
   const sc_segment *sg = c->sg;
   const double *q = y, *qo = y + NS, *v = y + NX, *vo = y + NX + NS;
   const sc_system *sys = &c->sys;
   const double *qdd_free = sys->qdd_free, *a_free = sys->a_free, *Kq = sys->Kq, *Ka = sys->Ka;
-  double baumgarte[NC], *lam = c->lam, *av = c->av, ratio;
+  double baumgarte[NC], *lam = c->lam, *av = c->av;
   double p_tau = 0.0, p_fric = 0.0, p_obj = 0.0;
-  int held = 0, i, r;
+  int singular, i, r;
   c->nfev++;
   if (sc_contact_system(&c->ws, sg->scene, q, v, sg->tau, qo, vo, sg->f_obj, sg->rho, &c->sys))
-    return SEG_PYTHON;
+    return SEG_FAILED;
   if (sc_row_velocities(&c->ws, sg->scene, sg->rho, (int)sg->contact_index, sg->c_k, q, v, qo,
                         vo, sys->s, av))
-    return SEG_PYTHON;
+    return SEG_FAILED;
   /* eq. (16) with the mode's fixed forces, the held rows Baumgarte-stabilised:
    * G_HH lam_H = -(b_H + G_HF lam_F) - 2 alpha (A V)_H [- alpha^2 g for the contact] */
-  for (r = 0; r < NC; ++r) {
-    baumgarte[r] = sg->alpha > 0 ? 2.0 * sg->alpha * av[r] : 0.0;
-    if (c->state[r] == HELD) held = 1;
-  }
+  for (r = 0; r < NC; ++r) baumgarte[r] = sg->alpha > 0 ? 2.0 * sg->alpha * av[r] : 0.0;
   if (sg->alpha > 0) baumgarte[0] += sg->alpha * sg->alpha * sys->gap;
-  ratio = sc_held_forces(c->state, sys->G, sys->b, c->bounds, baumgarte, lam);
-  if (held && !(ratio > sg->pivot_tol)) return SEG_PYTHON; /* regularized there */
+  /* (dependent held rows: Tikhonov, the whole right-hand side least-norm) */
+  sc_delassus_state(sys, &c->k, c->state, c->bounds, baumgarte, lam, 0, &singular);
+  c->nsingular += singular;
   /* eq. (18) and the state's rates */
   memcpy(ydot, v, sizeof(double) * NS);
   memcpy(ydot + NS, vo, sizeof(double) * 3);
@@ -139,7 +148,7 @@ static int rhs(sc_ctx *c, const double *y, double *ydot) {
   ydot[2 * NX + 1] = p_fric;
   ydot[2 * NX + 2] = p_obj;
   for (i = 0; i < NY; ++i)
-    if (!isfinite(ydot[i])) return SEG_PYTHON;
+    if (!isfinite(ydot[i])) return SEG_FAILED;
   return 0;
 }
 
@@ -187,7 +196,7 @@ static void dense_eval(const sc_dense *D, double t, double *y) {
   for (k = 0; k < NY; ++k) y[k] += D->y_old[k];
 }
 
-/* The event function e at time t on the dense output: 0 or SEG_PYTHON. */
+/* The event function e at time t on the dense output: 0 or SEG_FAILED. */
 static int event_at(sc_ctx *c, const sc_dense *D, int e, double t, double *g) {
   double y[NY], f[NY];
   int st;
@@ -226,7 +235,7 @@ static int sc_geo_fn(void *arg, double t, double *g) {
 }
 
 /* One DOP853 step of size h from (t, y) with f = f(t, y): K (DP_NX x NY) filled up to stage
- * DP_NS (f_new), y_new. Returns 0 or SEG_PYTHON. */
+ * DP_NS (f_new), y_new. Returns 0 or SEG_FAILED. */
 static int rk_step(sc_ctx *c, double t, const double *y, const double *f, double h,
                    double (*K)[NY], double *y_new) {
   double yy[NY];
@@ -365,6 +374,7 @@ static int segment(sc_ctx *c, sc_segment *sg) {
   if (!sg->resume && (st = initial_step(c, sg, y, f, &h_abs))) return st;
   while (!(t == sg->t1)) {
     const double min_step = 10 * fabs(nextafter(t, INFINITY) - t);
+    sg->t_end = t; /* (where a failed step leaves it) */
     if (steps > 0 && sc_wall_time() > stop_at) {
       sg->t_end = t;
       memcpy(sg->y_end, y, sizeof(double) * NY);
@@ -503,7 +513,7 @@ int SNAKECG_EXPORT(core_integrate_segment)(sc_segment *sg) {
     sg->t_end = sg->t0;
   }
   sg->event = -1;
-  sg->nfev = sg->nsteps = sg->nrejected = 0;
+  sg->nfev = sg->nsteps = sg->nrejected = sg->nsingular = 0;
   if (sg->n_ev < 0 || sg->n_ev > MAX_EVENTS || !(sg->t1 > sg->t0) || !(sg->rtol > 0) ||
       !(sg->atol >= 0) || !(sg->max_step > 0) || sg->contact_index < 0 ||
       sg->contact_index >= NL) {
@@ -515,18 +525,13 @@ int SNAKECG_EXPORT(core_integrate_segment)(sc_segment *sg) {
       sg->status = SEG_BAD_INPUT;
       return SEG_BAD_INPUT;
     }
-  if (ctx_alloc(&c)) {
+  if (ctx_alloc(&c, sg)) {
     sg->status = SEG_MEMORY;
     return SEG_MEMORY;
   }
-  c.sg = sg;
-  c.nfev = 0;
-  for (i = 0; i < NC; ++i) {
-    c.state[i] = (signed char)sg->state[i];
-    c.bounds[i] = sg->scene[SCENE_bounds + i];
-  }
   st = segment(&c, sg);
   sg->nfev = c.nfev;
+  sg->nsingular = c.nsingular;
   sc_work_free(&c.ws);
   sg->status = st;
   return st;
@@ -534,22 +539,16 @@ int SNAKECG_EXPORT(core_integrate_segment)(sc_segment *sg) {
 
 /* The trajectory's quantities at n states Y (n x NY, row-major) in the segment's mode: row i
  * of out (SAMPLE_WIDTH = NY + 2 NC + 6 columns) is ydot (NY), lam (NC), A V (NC), gap, s, sr,
- * norm_a_obj, norm_qdd (eqs. 30, 27, 26) and the sample's status (0, or SEG_PYTHON where the
- * Python path must evaluate it). Returns 0, or SEG_MEMORY. */
+ * norm_a_obj, norm_qdd (eqs. 30, 27, 26) and the sample's status (0, or SEG_FAILED: then the
+ * rest of its row is NaN). Returns 0, or SEG_MEMORY. */
 int SNAKECG_EXPORT(core_mode_samples)(sc_segment *sg, sc_int n, const double *Y, double *out) {
   const int width = NY + 2 * NC + 6;
   const double *I_obj = sg->scene + SCENE_object_mass;
   sc_ctx c;
   sc_int k;
   int i, j;
-  if (ctx_alloc(&c)) {
+  if (ctx_alloc(&c, sg)) {
     return SEG_MEMORY;
-  }
-  c.sg = sg;
-  c.nfev = 0;
-  for (i = 0; i < NC; ++i) {
-    c.state[i] = (signed char)sg->state[i];
-    c.bounds[i] = sg->scene[SCENE_bounds + i];
   }
   for (k = 0; k < n; ++k) {
     double *row = out + k * width, *extra = row + NY, nq = 0.0, na;
@@ -570,6 +569,7 @@ int SNAKECG_EXPORT(core_mode_samples)(sc_segment *sg, sc_int n, const double *Y,
     extra[2 * NC + 3] = na;
     extra[2 * NC + 4] = nq;
     extra[2 * NC + 5] = (double)st;
+    for (i = 0; i < width - 1 && st; ++i) row[i] = NAN;
   }
   sc_work_free(&c.ws);
   return 0;

@@ -39,12 +39,13 @@ static int finite_all(const double *x, int n) {
 
 /* ---- the Delassus solve of one state, with the Tikhonov term where it is singular ---- */
 
-/* lam and w of `state`; *singular set when regularized; returns the pivot ratio. */
-static double delassus_state(const sc_system *sys, const sc_constants *c,
-                             const signed char *state, const double *u, double *lam, double *w,
-                             int *singular) {
+/* lam and w (w may be null) of `state`, `extra` (may be null) added to the held rows'
+ * right-hand side as in sc_held_forces; *singular set when regularized; the pivot ratio. */
+double sc_delassus_state(const sc_system *sys, const sc_constants *c, const signed char *state,
+                         const double *u, const double *extra, double *lam, double *w,
+                         int *singular) {
   const int nc = SNAKECG_NC;
-  double pivot = sc_held_forces(state, sys->G, sys->b, u, 0, lam);
+  double pivot = sc_held_forces(state, sys->G, sys->b, u, extra, lam);
   int r, i;
   *singular = 0;
   if (!(pivot > c->pivot_tol) || !finite_all(lam, nc)) {
@@ -57,10 +58,10 @@ static double delassus_state(const sc_system *sys, const sc_constants *c,
     memcpy(Greg, sys->G, sizeof(Greg));
     for (r = 0; r < nc; ++r)
       if (state[r] == HELD) Greg[r + nc * r] += reg;
-    pivot = sc_held_forces(state, Greg, sys->b, u, 0, lam);
+    pivot = sc_held_forces(state, Greg, sys->b, u, extra, lam);
     *singular = 1;
   }
-  for (r = 0; r < nc; ++r) { /* w = G_c lam + b (eq. 13) */
+  for (r = 0; r < nc && w; ++r) { /* w = G_c lam + b (eq. 13) */
     double t = sys->b[r];
     for (i = 0; i < nc; ++i) t += sys->G[r + nc * i] * lam[i];
     w[r] = t;
@@ -208,12 +209,14 @@ static double rows_state(const rows_system *rs, const sc_constants *c, const sig
 
 /* ---- the active set of either solve ---- */
 
-/* The KKT residual of a candidate state (snakecg.solver._enumerate): 0 for the solution. */
-static double kkt_residual(const signed char *s, const double *lam, const double *w,
-                           const double *u) {
-  double res = s[0] == HELD ? fmax(-lam[0], 0.0) : fmax(-w[0], 0.0);
+/* The KKT residual of a candidate state over the free rows (snakecg.solver._enumerate): 0 for
+ * the solution. */
+static double kkt_residual(const signed char *s, const double *free, const double *lam,
+                           const double *w, const double *u) {
+  double res = free[0] == 0.0 ? 0.0 : s[0] == HELD ? fmax(-lam[0], 0.0) : fmax(-w[0], 0.0);
   int r;
   for (r = 1; r < SNAKECG_NC; ++r) {
+    if (free[r] == 0.0) continue;
     if (s[r] == HELD && isfinite(u[r])) res += fmax(fabs(lam[r]) - u[r], 0.0);
     else if (s[r] == SLIDE_POS) res += fmax(w[r], 0.0);
     else if (s[r] == SLIDE_NEG) res += fmax(-w[r], 0.0);
@@ -231,34 +234,42 @@ typedef struct {
 static double eval_state(const solver_ctx *x, const signed char *state, double *lam, double *w,
                          double *z, int *singular) {
   double p;
-  if (!x->rs) return delassus_state(x->sys, x->c, state, x->u, lam, w, singular);
+  if (!x->rs) return sc_delassus_state(x->sys, x->c, state, x->u, 0, lam, w, singular);
   p = rows_state(x->rs, x->c, state, x->u, lam, w, z);
   *singular = !(p > x->c->pivot_tol) || !finite_all(lam, SNAKECG_NC);
   return p;
 }
 
-/* The active set from "every present row held" (snakecg.solver.solve_active_set), then
- * enumeration; the state, lam, w, z, the pivot ratio and the singular flag of the answer. */
-static double active_set(const solver_ctx *x, const double *present, long max_iter,
+/* The active set of the `free` rows from "every free row held" (snakecg.solver.
+ * solve_active_set), then enumeration; the other rows keep their state as given in `state`
+ * (ABSENT, or a forced one: LOST, a wheel sliding at its bound). The state, lam, w, z, the
+ * pivot ratio and the singular flag of the answer. */
+static double active_set(const solver_ctx *x, const double *free, long max_iter,
                          signed char *state, double *lam, double *w, double *z, int *singular) {
   const int nc = SNAKECG_NC;
   const double *G = x->rs ? x->rs->G : x->sys->G;
+  signed char given[SNAKECG_NC];
   double pivot = 1.0;
   long it;
   int r, moved = 1;
-  for (r = 0; r < nc; ++r) state[r] = present[r] != 0.0 ? HELD : ABSENT;
+  for (r = 0; r < nc; ++r) given[r] = state[r] = free[r] != 0.0 ? HELD : state[r];
   for (it = 0; it < max_iter && moved; ++it) {
     pivot = eval_state(x, state, lam, w, z, singular);
-    moved = sc_next_states(state, lam, w, G, x->u, x->c->rel_tol);
+    sc_next_states(state, lam, w, G, x->u, x->c->rel_tol);
+    for (moved = 0, r = 0; r < nc; ++r) { /* the rows not free never move */
+      if (free[r] == 0.0) state[r] = given[r];
+      else if (state[r] != given[r]) moved = 1;
+      given[r] = state[r];
+    }
   }
   if (moved) { /* not settled: every active set, the least KKT residual */
     signed char s[SNAKECG_NC], best[SNAKECG_NC];
     double l2[SNAKECG_NC], w2[SNAKECG_NC], z2[ND], p2, res, best_res = INFINITY;
     int sing2, found = 0, k;
-    for (r = 0; r < nc; ++r) s[r] = present[r] == 0.0 ? ABSENT : HELD;
+    for (r = 0; r < nc; ++r) s[r] = free[r] == 0.0 ? state[r] : HELD;
     for (;;) {
       p2 = eval_state(x, s, l2, w2, z2, &sing2);
-      res = kkt_residual(s, l2, w2, x->u);
+      res = kkt_residual(s, free, l2, w2, x->u);
       if (!found || res < best_res) {
         found = 1;
         best_res = res;
@@ -270,7 +281,7 @@ static double active_set(const solver_ctx *x, const double *present, long max_it
         *singular = sing2;
       }
       for (k = nc - 1; k >= 0; --k) { /* the next state, the last row fastest */
-        if (s[k] == ABSENT) continue;
+        if (free[k] == 0.0) continue;
         if (k == 0) {
           if (s[0] == HELD) { s[0] = LOST; break; }
           s[0] = HELD;
@@ -287,6 +298,19 @@ static double active_set(const solver_ctx *x, const double *present, long max_it
     memcpy(state, best, sizeof(best));
   }
   return pivot;
+}
+
+/* The active set of the free rows at an event (events.c: the simulation's Events.decide) by
+ * the same rules, on the Delassus matrix with the Tikhonov term; its pivot ratio. */
+double sc_decide_states(const sc_system *sys, const sc_constants *c, const double *u,
+                        const double *free, long max_iter, signed char *state, int *singular) {
+  double lam[SNAKECG_NC], w[SNAKECG_NC], z[ND];
+  solver_ctx x;
+  x.sys = sys;
+  x.rs = 0;
+  x.c = c;
+  x.u = u;
+  return active_set(&x, free, max_iter, state, lam, w, z, singular);
 }
 
 static void no_answer(double *out, int code) {
@@ -327,6 +351,7 @@ void sc_forward_edge(const sc_system *sys, const double *scene, const sc_constan
   unfinite = !finite_all(sys->G, nc * nc);
   I_obj[0] = I_obj[1] = scene[SCENE_object_mass];
   I_obj[2] = scene[SCENE_object_inertia];
+  for (r = 0; r < nc; ++r) state[r] = ABSENT; /* (the rows not present) */
   pivot = active_set(&x, present, max_iter, state, lam, w, z, &singular);
   cond = singular ? 0.0 : (pivot < 1.0 ? pivot : 1.0);
   if ((singular || !(cond > c->weak)) && mass > c->pivot_tol) { /* from the rows */

@@ -14,9 +14,11 @@
  * sides of every event) with their mode, the modes, and the events with what Python needs to
  * describe them. The contact check (geometry.c) runs in every segment and on the state after
  * every event; with SC_GEO_STOP its first violation ends the run (RUN_GEOMETRY), its sample the
- * last. Anything the Python loop would do differently (a segment or a settle handed
- * back to Python, a failed or too small step, more samples or modes than room) returns
- * RUN_PYTHON: the caller then runs the whole loop in Python from the start.
+ * last. A failed evaluation or a derivative that is not finite (SEG_FAILED, SETTLE_FAILED)
+ * ends the run with RUN_FAILED at R->t. What the Python loop does differently (a too small
+ * step, which it reports; more samples or modes than room; an object penetrating the link
+ * at the start, which it refuses) returns RUN_PYTHON: the caller then runs the whole loop in
+ * Python from the start, with the same compiled segments and settles.
  */
 #define _POSIX_C_SOURCE 200809L /* clock_gettime (before the first include) */
 #include <math.h>
@@ -29,7 +31,8 @@
 #define EVENT_WIDTH (11 + NC) /* an event: see sc_run.events */
 
 
-enum { RUN_COMPLETED = 0, RUN_STOPPED = 1, RUN_PYTHON = 2, RUN_GEOMETRY = 3, RUN_PAUSED = 4 };
+enum { RUN_COMPLETED = 0, RUN_STOPPED = 1, RUN_PYTHON = 2, RUN_GEOMETRY = 3, RUN_PAUSED = 4,
+       RUN_FAILED = 5 };
 
 typedef struct {
   sc_segment *sg;     /* the run's segment (tau, constants, its y0/state/ev_* arrays) */
@@ -58,7 +61,7 @@ typedef struct {
   sc_int n_events;
   sc_int stuck;       /* events in a row without progress in time (at a stop) */
   double *samples;    /* cap x (NY + 2 NC + 6): core_mode_samples of every sample in its mode */
-  sc_int segments, nfev, nsteps;
+  sc_int segments, nfev, nsteps, nsingular; /* nsingular: regularized (dependent rows) */
   double segment_cpu; /* CPU seconds inside the segment integrations */
   sc_int start;       /* in: 1 when y is the initial state, before the start's settle (done
                          here first, see start()), 0 when it is the state after it */
@@ -120,7 +123,7 @@ static sc_int specs(sc_segment *sg, const double *state, sc_int off_link) {
 }
 
 /* Events.handle of the event `e` of the segment at (t_e, y_e), then the settle: the new
- * state in st->y_out, the new row states in st->state; *off_link updated. 0, or 1. */
+ * state in st->y_out, the new row states in st->state; *off_link updated. 0, or RUN_FAILED. */
 static int handle(sc_run *R, sc_int e, const double *y_e, sc_int *off_link) {
   sc_segment *sg = R->sg;
   sc_settle *st = R->st;
@@ -131,8 +134,8 @@ static int handle(sc_run *R, sc_int e, const double *y_e, sc_int *off_link) {
   for (r = 0; r < NC; ++r) forced[r] = -1.0;
   if (kind == EV_GAP || kind == EV_BREAKAWAY) { /* lam and s there, in the mode */
     R->nfev++;
-    if (SNAKECG_EXPORT(core_mode_samples)(sg, 1, y_e, point) != 0) return 1;
-    if (point[NY + 2 * NC + 5] != 0.0) return 1;
+    if (SNAKECG_EXPORT(core_mode_samples)(sg, 1, y_e, point) != 0) return RUN_FAILED;
+    if (point[NY + 2 * NC + 5] != 0.0) return RUN_FAILED;
   }
   if (kind == EV_SEPARATION) {
     forced[0] = LOST;
@@ -157,7 +160,9 @@ static int handle(sc_run *R, sc_int e, const double *y_e, sc_int *off_link) {
   memcpy((double *)st->y, y_e, sizeof(double) * NY);
   st->prev = sg->state;
   st->contact_candidate = candidate;
-  return SNAKECG_EXPORT(core_settle)(st) != SETTLE_DONE;
+  if (SNAKECG_EXPORT(core_settle)(st) != SETTLE_DONE) return RUN_FAILED;
+  R->nsingular += st->nsingular;
+  return 0;
 }
 
 /* Simulator.run at the start, for R->y the initial state: the gap and the contact position s
@@ -165,8 +170,8 @@ static int handle(sc_run *R, sc_int e, const double *y_e, sc_int *off_link) {
  * s on the link, gtol about) or off the link, then the start's settle (Events.settle without
  * a mode before, the contact a candidate when touching) with the run's torque. Its new state
  * in y, its row states in the segment's state, *off_link set, its energy removed in R->loss;
- * what Python records of it in R->start_out. 0, or 1: Python does the start (also when the
- * object penetrates the link: Python raises). */
+ * what Python records of it in R->start_out. 0, RUN_FAILED, or RUN_PYTHON when the object
+ * penetrates the link (Python refuses it). */
 static int start(sc_run *R, double *y, sc_int *off_link) {
   sc_segment *sg = R->sg;
   sc_settle *st = R->st;
@@ -182,18 +187,19 @@ static int start(sc_run *R, double *y, sc_int *off_link) {
            point[NY + 2 * NC + 5] != 0.0;
   sg->tau = tau;
   sg->state = state;
-  if (failed) return 1;
+  if (failed) return RUN_FAILED;
   gap = point[NY + 2 * NC];
   s = point[NY + 2 * NC + 1];
   on_link = -R->gtol <= s && s <= sg->l_k + R->gtol;
-  if (gap < -R->gtol && on_link) return 1; /* penetrating: Python raises */
+  if (gap < -R->gtol && on_link) return RUN_PYTHON; /* penetrating: Python refuses it */
   touching = fabs(gap) <= R->gtol && on_link;
   *off_link = !on_link && fabs(gap) <= R->gtol;
   for (r = 0; r < NC; ++r) forced[r] = -1.0;
   memcpy((double *)st->y, y, sizeof(double) * NY);
   st->prev = 0;
   st->contact_candidate = touching;
-  if (SNAKECG_EXPORT(core_settle)(st) != SETTLE_DONE) return 1;
+  if (SNAKECG_EXPORT(core_settle)(st) != SETTLE_DONE) return RUN_FAILED;
+  R->nsingular += st->nsingular;
   memcpy(y, st->y_out, sizeof(double) * NY);
   memcpy((double *)sg->state, st->state, sizeof(double) * NC);
   memset(o, 0, sizeof(double) * START_WIDTH);
@@ -235,7 +241,7 @@ static int run(sc_run *R, double stop_at) {
   double t = R->t, y[NY], *state = (double *)sg->state;
   sc_int off_link = R->off_link, mode, stuck = R->stuck, i0 = R->i0, k;
   const sc_int resume = R->resume;
-  int status, first = 1;
+  int status, first = 1, failed;
   clock_t c0;
   R->resume = 0;
   if (resume) {
@@ -244,7 +250,7 @@ static int run(sc_run *R, double stop_at) {
   } else {
     stuck = i0 = 0;
     memcpy(y, R->y, sizeof(y));
-    if (R->start && start(R, y, &off_link)) return RUN_PYTHON;
+    if (R->start && (failed = start(R, y, &off_link))) return failed;
     if ((mode = add_mode(R, state, off_link)) < 0 || add_sample(R, t, y, mode))
       return RUN_PYTHON;
   }
@@ -273,12 +279,17 @@ static int run(sc_run *R, double stop_at) {
     R->segment_cpu += (double)(clock() - c0) / CLOCKS_PER_SEC;
     R->nfev += sg->nfev;
     R->nsteps += sg->nsteps;
+    R->nsingular += sg->nsingular;
     if (status == SEG_PAUSED) { /* the segment goes on at the next call */
       sg->resume = 1;
       R->resume = 1;
       break;
     }
     R->segments++;
+    if (status == SEG_FAILED) { /* where the step that failed began */
+      R->t = sg->t_end;
+      return RUN_FAILED;
+    }
     if (status != SEG_END && status != SEG_EVENT && status != SEG_GEOMETRY) return RUN_PYTHON;
     for (k = 0; k < sg->n_out; ++k) { /* the outputs, written in place */
       R->t_out[R->n_out] = sg->t_eval[k];
@@ -304,7 +315,10 @@ static int run(sc_run *R, double stop_at) {
       stuck = t_e - t <= tiny ? stuck + 1 : 0;
       if (R->t_out[R->n_out - 1] < t_e && add_sample(R, t_e, sg->y_end, mode)) return RUN_PYTHON;
       if (R->n_events >= R->cap_events) return RUN_PYTHON;
-      if (handle(R, e, sg->y_end, &off_link)) return RUN_PYTHON;
+      if (handle(R, e, sg->y_end, &off_link)) {
+        R->t = t_e;
+        return RUN_FAILED;
+      }
       memcpy(y, st->y_out, sizeof(y));
       memcpy(state, st->state, sizeof(double) * NC);
       if ((mode = add_mode(R, state, off_link)) < 0) return RUN_PYTHON;
@@ -398,13 +412,14 @@ int SNAKECG_EXPORT(core_run)(sc_run *R) {
   }
   if (!R->resume) {
     R->n_out = R->n_modes = R->n_events = 0;
-    R->segments = R->nfev = R->nsteps = 0;
+    R->segments = R->nfev = R->nsteps = R->nsingular = 0;
     R->segment_cpu = 0.0;
     R->stuck = 0;
     R->i0 = R->mode = R->n_sampled = 0;
   }
   R->status = run(R, stop_at);
-  if (R->status == RUN_PAUSED || R->status == RUN_PYTHON) return (int)R->status;
+  if (R->status == RUN_PAUSED || R->status == RUN_PYTHON || R->status == RUN_FAILED)
+    return (int)R->status;
   done = samples(R, stop_at);
   if (done == RUN_PAUSED) {
     R->resume = 3;

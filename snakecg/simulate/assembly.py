@@ -34,16 +34,14 @@ def assemble(sim, blocks, events, status) -> Trajectory:
     wheel_state = np.empty((N, nl), dtype="<U6")
     for start, end, mode, tau_fn in _runs(blocks):
         sl = slice(start, end)
-        todo = range(start, end)
         if sim.compiled is not None:
-            # one compiled call for the run of samples (the torque is constant over it)
+            # one compiled call for the run of samples (the torque is constant over it; a
+            # sample the C could not evaluate is NaN)
             taui = np.asarray(tau_fn(t[start], Y[start], mode), dtype=float)
             sim.compiled.samples_into(Y[sl], mode, taui, R[sl])
             dyn.nfev += end - start
             tau[sl] = taui
-            handed = R[sl, -1]
-            todo = start + np.flatnonzero(handed) if handed.any() else ()
-        for i in todo:
+        for i in range(start, end) if sim.compiled is None else ():
             ydot, li, gi, si, AV, (ti, sri, nai, nqi) = dyn.rates(t[i], Y[i], mode, tau_fn)
             R[i, :ny], R[i, ny:ny + nc], R[i, ny + nc:ny + 2 * nc] = ydot, li, AV
             R[i, ny + 2 * nc:] = (gi, si, sri, nai, nqi, 0.0)
@@ -61,20 +59,13 @@ def assemble(sim, blocks, events, status) -> Trajectory:
 def assemble_arrays(sim, t, Y, impact, R, tau, mode_index, modes, events, status):
     """:func:`assemble` of a run done in C (``core_run``): the samples ``t``, ``Y`` with
     their energy removed ``impact``, their quantities ``R`` (rows as the compiled samples'
-    where the C evaluated them, else a non-zero status), the constant torque ``tau`` and each
-    sample's mode (an index into ``modes``). The contact flags, wheel states and constraint
-    power come from the modes' table when first read."""
+    with their status: NaN and a non-zero status where the C could not evaluate one), the
+    constant torque ``tau`` and each sample's mode (an index into ``modes``). The contact
+    flags, wheel states and constraint power come from the modes' table when first read."""
     dyn = sim.dyn
     nc, ny = dyn.nc, dyn.ny
     N = len(t)
     dyn.nfev += N
-    if R[:, -1].any():
-        for i in np.flatnonzero(R[:, -1]):  # handed back: the Python right-hand side
-            mode = modes[int(mode_index[i])]
-            ydot, li, gi, si, AV, (_, sri, nai, nqi) = dyn.rates(t[i], Y[i], mode,
-                                                                  lambda *_: tau)
-            R[i, :ny], R[i, ny:ny + nc], R[i, ny + nc:ny + 2 * nc] = ydot, li, AV
-            R[i, ny + 2 * nc:] = (gi, si, sri, nai, nqi, 0.0)
     idx = mode_index.astype(np.intp)  # (a new array: mode_index is the workspace's)
     lam_av = R[:, ny:ny + nc] * R[:, ny + nc:ny + 2 * nc]
 

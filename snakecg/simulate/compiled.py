@@ -8,9 +8,12 @@ and what happens at an event (impacts, projections, the new active set) in one C
 
 Used for ``method="DOP853"`` without ``fixed_step`` when the torque is constant over each
 segment (a constant, or a law held over ``control_period``) and the model has a compiled
-library; the rest goes through solve_ivp. A segment the C hands back (dependent held rows,
-which the Python right-hand side regularizes; a failed evaluation) is integrated again by
-solve_ivp.
+library; the rest goes through solve_ivp. The C answers the rare stretches itself (dependent
+held rows by the Tikhonov rule of the forward solve, an active set that does not settle by
+enumeration); what it cannot answer (a failed evaluation, a derivative that is not finite)
+raises :class:`~snakecg.simulate.records.SimulationError` with the time and the reason. The
+Python engine (:class:`~snakecg.simulate.dynamics.Dynamics`,
+:class:`~snakecg.simulate.events.Events`) is never called for it.
 """
 
 from __future__ import annotations
@@ -22,18 +25,24 @@ import numpy as np
 
 from ..engine.binding import copied, empty_pointers, int64s, pointers
 from ..engine.segment import (
+    FAILED_REASON,
     PAUSE_AFTER,
     RUN_COMPLETED,
+    RUN_FAILED,
     RUN_GEOMETRY,
     RUN_PAUSED,
     RUN_STOPPED,
     SEG_END,
     SEG_EVENT,
+    SEG_FAILED,
     SEG_GEOMETRY,
+    SEG_MEMORY,
     SEG_PAUSED,
     SEG_TOO_SMALL,
     SETTLE_DONE,
+    SETTLE_MEMORY,
 )
+from .records import SimulationError
 from .workspace import give, take
 
 __all__ = ["CompiledSegments", "compiled_reason"]
@@ -106,6 +115,14 @@ def placement(model, q0):
     return buf[ns:ns + 3].copy(), buf[ns + 3:ns + 5].copy()
 
 
+def _failed(memory: bool, t) -> None:
+    """Raise for a compiled segment, settle or run that failed (at the time ``t``, if known)."""
+    if memory:
+        raise MemoryError("the compiled simulation could not allocate its workspace")
+    at = f" at t = {t:.6g} s" if t is not None else ""
+    raise SimulationError(f"integration failed{at}: {FAILED_REASON}")
+
+
 class CompiledSegments:
     """The compiled segment integrator of one run on the equations ``dyn``
     (:class:`~snakecg.simulate.dynamics.Dynamics`) with the checked ``settings`` and the
@@ -130,7 +147,6 @@ class CompiledSegments:
         self.t_eval = np.zeros(0)
         self.y_eval = np.zeros((0, dyn.ny))
         self.steps = 0
-        self.handed_back = 0  # segments and settles done in Python instead
         self.runs_handed_back = 0  # whole runs (core_run) done by the Python loop instead
         self.started = False  # a run handed back after its start (run_all)
 
@@ -148,7 +164,8 @@ class CompiledSegments:
         at ``t_eval``: an object with ``status`` (solve_ivp's: 0, 1 at an event, -1),
         ``message``, the output ``t`` (m,) and ``y`` (m, n_y), ``fired`` (``[(spec, t_e,
         y_e)]`` of the event) and ``stopped`` (``(t, y)`` where the contact check stopped
-        it, else ``None``), or ``None`` when solve_ivp must do this segment."""
+        it, else ``None``). A failed evaluation or a derivative that is not finite raises
+        :class:`~snakecg.simulate.records.SimulationError`."""
         seg, dyn = self.seg, self.dyn
         self.ev_kind[:len(specs)] = specs.codes
         self.ev_row[:len(specs)] = specs.rows
@@ -171,10 +188,10 @@ class CompiledSegments:
             seg.resume = 1
             status = self._fn(self._address)
         dyn.nfev += seg.nfev
+        dyn.singular += seg.nsingular
         self.steps += seg.nsteps
         if status not in (SEG_END, SEG_EVENT, SEG_TOO_SMALL, SEG_GEOMETRY):
-            self.handed_back += 1
-            return None
+            _failed(status == SEG_MEMORY, seg.t_end if status == SEG_FAILED else t0)
         m = seg.n_out
         fired = []
         if status == SEG_EVENT:
@@ -194,7 +211,9 @@ class CompiledSegments:
         :class:`~snakecg.engine.segment.Run` (the workspace's: read it before the next run) and
         its arrays (``t``, ``y``, ``mode``, ``loss`` and the quantities ``samples`` (as
         :meth:`samples_into`) of each sample, the ``modes`` and the ``events``, see run.c),
-        or ``None`` when the Python loop must do the run.
+        or ``None`` when the Python loop must do the run (no room for its samples, modes or
+        events, a too small step, a penetrating start); a failed evaluation raises
+        :class:`~snakecg.simulate.records.SimulationError`.
 
         With ``mode=None``, ``y`` is the initial state and the C does the start as well
         (the contact's gap and position, the start's settle): ``arrays.start`` is then what it
@@ -234,6 +253,9 @@ class CompiledSegments:
         status = self._run(self.ws.run_address)
         while status == RUN_PAUSED:  # back in Python now and then: a Ctrl-C raises here
             status = self._run(self.ws.run_address)
+        self.dyn.singular += R.nsingular
+        if status == RUN_FAILED:
+            _failed(False, R.t)
         if status not in (RUN_COMPLETED, RUN_STOPPED, RUN_GEOMETRY):
             self.started = R.n_modes > 0
             return None
@@ -269,8 +291,8 @@ class CompiledSegments:
         """``core_settle`` at the state ``y`` after the mode ``prev`` (``None`` at the start)
         with the rows ``forced`` (row: state code) and the torque ``tau``: the
         :class:`~snakecg.engine.segment.Settle` it filled (outputs in ``s_y_out``,
-        ``s_state``, ``s_impact_lam``, ``s_projection_lam``), or ``None`` when the Python
-        path must do it (see events.c)."""
+        ``s_state``, ``s_impact_lam``, ``s_projection_lam``); a failed evaluation raises
+        :class:`~snakecg.simulate.records.SimulationError` (see events.c)."""
         st = self.st
         self.s_y[:] = y
         self.tau[:] = tau
@@ -283,32 +305,34 @@ class CompiledSegments:
         for r, code in forced.items():
             self.s_forced[r] = code
         st.contact_candidate = 1 if contact_candidate else 0
-        if self._settle(self._settle_address) != SETTLE_DONE:
-            self.handed_back += 1
-            return None
+        status = self._settle(self._settle_address)
+        self.dyn.singular += st.nsingular
+        if status != SETTLE_DONE:
+            _failed(status == SETTLE_MEMORY, None)
         return st
 
     def gap_and_s(self, y):
         """The contact's ``gap`` and position ``s`` along the link at the state ``y`` (of
-        ``contact_system``: the same in every mode), or ``None`` when the C could not
-        evaluate them."""
+        ``contact_system``: the same in every mode); a failed evaluation raises
+        :class:`~snakecg.simulate.records.SimulationError`."""
         nc = self.dyn.nc
         out = np.zeros((1, self.dyn.ny + 2 * nc + 6))
         self.tau.fill(0.0)
         self.state.fill(0.0)  # no row held: nothing to factor
         y = np.ascontiguousarray(y, dtype=float)
-        if self._samples(self._address, 1, y.ctypes.data, out.ctypes.data) != 0 \
-                or out[0, -1] != 0:
-            return None
+        if self._samples(self._address, 1, y.ctypes.data, out.ctypes.data) != 0:
+            _failed(True, None)
+        if out[0, -1] != 0:
+            _failed(False, 0.0)
         return float(out[0, -6]), float(out[0, -5])
 
     def point(self, y, mode, tau):
         """``(lam, s)`` at the state ``y`` in ``mode`` with the torque ``tau`` (as the
-        right-hand side evaluates them), or ``None`` where the Python right-hand side must
-        evaluate it."""
+        right-hand side evaluates them); a failed evaluation raises
+        :class:`~snakecg.simulate.records.SimulationError`."""
         r = self.samples(y, mode, tau)
         if not r["ok"][0]:
-            return None
+            _failed(False, None)
         return r["lam"][0].copy(), float(r["s"][0])
 
     def kinematics(self, Q):
@@ -336,8 +360,8 @@ class CompiledSegments:
         """The trajectory's quantities at the states ``Y`` (n, n_y) in ``mode`` with the torque
         ``tau``, evaluated by the C into ``out`` (n, n_y + 2 n_c + 6), C-contiguous rows:
         ``ydot`` (n_y), ``lam``, ``A V`` (n_c), ``gap``, ``s``, ``sr``, ``norm_a_obj``,
-        ``norm_qdd`` and the status (not 0 where the Python right-hand side must evaluate
-        the sample: dependent held rows)."""
+        ``norm_qdd`` and the status (0, or ``SEG_FAILED`` where the evaluation failed or is
+        not finite: the rest of the row is NaN)."""
         Y = np.ascontiguousarray(Y, dtype=float)
         n = len(Y)
         self.tau[:] = tau
@@ -352,7 +376,7 @@ class CompiledSegments:
     def samples(self, Y, mode, tau):
         """:meth:`samples_into` as a dict of ``ydot`` (n, n_y), ``lam``, ``AV`` (n, n_c),
         ``gap``, ``s``, ``sr``, ``norm_a_obj``, ``norm_qdd`` (n,) and ``ok`` (n,) (False
-        where the Python right-hand side must evaluate the sample)."""
+        where the evaluation failed: NaN)."""
         dyn = self.dyn
         ny, nc = dyn.ny, dyn.nc
         Y = np.ascontiguousarray(Y, dtype=float).reshape(-1, ny)

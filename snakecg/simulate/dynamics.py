@@ -202,13 +202,14 @@ class Dynamics:
         o = tuple(cd.one(q=q, v=v, tau=tau, q_obj=qo, v_obj=vo, free=mode.free,
                          lam_fixed=mode.lam_fixed))
         F = mode.free_idx
+        reg = 0.0
         if F.size and not o[ipiv][0] > PIVOT_TOL:
             # dependent held rows: least-norm forces (as in snakecg.solver)
             self.singular += 1
             scale = np.abs(np.diagonal(o[idel])).max()
+            reg = REGULARIZATION * max(scale, 1e-300)
             o = tuple(cd.one(q=q, v=v, tau=tau, q_obj=qo, v_obj=vo, free=mode.free,
-                             lam_fixed=mode.lam_fixed,
-                             regularization=REGULARIZATION * max(scale, 1e-300)))
+                             lam_fixed=mode.lam_fixed, regularization=reg))
             cd.set(regularization=0.0)
         lam = o[ilam].copy()
         gap = float(o[igap][0])
@@ -223,6 +224,8 @@ class Dynamics:
             if mode.contact_held:
                 rhs[0] += a * a * gap
             G = o[idel][mode.ff]
+            if reg:  # the same Tikhonov term: the whole right-hand side least-norm
+                G = G + reg * np.eye(len(F))
             x, info = self._posv(G, rhs)[1:]  # Cholesky solve of G_FF x = rhs (SPD)
             if info != 0:
                 x = np.linalg.lstsq(G, rhs, rcond=None)[0]

@@ -12,8 +12,8 @@ Each is a quantity becoming negative (an exact zero is no crossing: :data:`LEAST
 At an event the new active set is the solution of the acceleration-level complementarity
 problem (:func:`snakecg.solver.solve_active_set`) over the rows whose status is not fixed by
 the velocities. With a compiled ``kernel`` (:class:`~snakecg.simulate.compiled.CompiledSegments`)
-the same computation runs in C (``core_settle``), the Python here being its reference and its
-fallback.
+the same computation runs in C (``core_settle``), the Python here being the engine of
+``backend="casadi"`` (held against the C by the tests).
 """
 
 from __future__ import annotations
@@ -91,10 +91,8 @@ class Events:
         """``(lam, s)`` at ``(t, y)`` in ``mode``."""
         tau_fn = self.torques.function()
         if self.kernel is not None:
-            r = self.kernel.point(y, mode, tau_fn(t, y, mode))
-            if r is not None:
-                self.dyn.nfev += 1
-                return r
+            self.dyn.nfev += 1
+            return self.kernel.point(y, mode, tau_fn(t, y, mode))
         out = self.dyn.rates(t, y, mode, tau_fn)
         return out[1], out[3]
 
@@ -205,8 +203,7 @@ class Events:
         tau = np.asarray(self.torques.function()(t, y, probe), dtype=float)
         if self.kernel is not None:
             done = self.kernel.settle(y, prev, forced, contact_candidate, tau)
-            if done is not None:
-                return self._settled(t, done, prev, before, off_link, events, impact_kind)
+            return self._settled(t, done, prev, before, off_link, events, impact_kind)
         Q, G, gap, s, AV = dyn.linear_maps(y, tau)
         V = y[dyn.nx:2 * dyn.nx]
         vtol = 1e-8 * max(1.0, float(np.abs(V).max()))

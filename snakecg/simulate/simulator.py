@@ -197,8 +197,8 @@ class Simulator:
                 return done
             whole = not self.compiled.started  # handed back after its start: Python's loop
         # initial mode: the contact is a candidate when the object touches the link face
-        geo = self.compiled.gap_and_s(y) if self.compiled is not None else None
-        gap, s = geo if geo is not None else dyn.linear_maps(y, np.zeros(dyn.na))[2:4]
+        gap, s = (self.compiled.gap_and_s(y) if self.compiled is not None
+                  else dyn.linear_maps(y, np.zeros(dyn.na))[2:4])
         gtol = handler.gtol
         on_link = -gtol <= s <= dyn.l_k + gtol
         if gap < -gtol and on_link:
@@ -243,11 +243,10 @@ class Simulator:
             t_eval = np.append(grid[np.searchsorted(grid, t, "right"):
                                     np.searchsorted(grid, t_end, "left")], t_end)
             cpu0 = time.process_time()
-            sol = None
             if self.compiled is not None:
                 sol = self.compiled.run(t, t_end, y, mode, tau_fn(t, y, mode),
                                         handler.specs(mode), t_eval)
-            if sol is None:
+            else:
                 sol = self._solve_ivp(opts, t, t_end, y, mode, tau_fn, t_eval)
             self.segment_cpu += time.process_time() - cpu0
             segments += 1

@@ -15,7 +15,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..engine.binding import Run, Segment, Settle, address, int64s
-from ..solver import PIVOT_TOL, REL_TOL, default_max_iter
+from ..solver import PIVOT_TOL, REGULARIZATION, REL_TOL, default_max_iter
 
 __all__ = ["START_IMPACT", "START_WIDTH", "Workspace", "give", "take"]
 
@@ -72,13 +72,14 @@ class Workspace:
         seg.ev_kind = events.ctypes.data
         seg.ev_row = seg.ev_kind + 8 * (nc + 3)
         seg.contact_index, seg.c_k, seg.l_k = k, c_k, l_k
-        seg.pivot_tol = PIVOT_TOL
+        seg.pivot_tol, seg.regularization = PIVOT_TOL, REGULARIZATION
         seg.y0, seg.y_end = addr["y0"], addr["y_end"]
         st = Settle()
         st.scene, st.tau, st.f_obj, st.rho = (model.scene_address, addr["tau"], addr["f_obj"],
                                               addr["rho"])
         st.contact_index, st.c_k, st.l_k = k, c_k, l_k
         st.pivot_tol, st.rel_tol, st.max_iter = PIVOT_TOL, REL_TOL, default_max_iter(nc)
+        st.regularization = REGULARIZATION
         st.y, st.forced = addr["s_y"], addr["s_forced"]
         st.y_out, st.state, st.forced_out = addr["s_y_out"], addr["s_state"], addr["s_forced_out"]
         st.impact_lam, st.projection_lam = addr["s_impact_lam"], addr["s_projection_lam"]
