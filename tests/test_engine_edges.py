@@ -201,3 +201,15 @@ def test_face_kernels_take_any_size():
         dense, _ = _dense_face(b, np.arange(len(q)), A, g, c, 500, rng)
         assert np.all(dense.max(axis=1) <= hi + 1e-9 * scale)
         assert np.all(dense.min(axis=1) >= lo - 1e-9 * scale)
+
+
+def test_a_singular_mass_matrix_is_refused_before_a_simulation():
+    """The robot of the test above (its M_s numerically singular, by NumPy's pivot ratio there):
+    simulate refuses it at once, naming the robot, instead of shrinking its steps forever."""
+    robot = snakecg.Robot(joints=1, mass=[1.0, 1e5], length=[1e-3, 1e3], inertia=[1e-9, 1e-9])
+    model = snakecg.load(snakecg.Scene(robot))
+    q = np.array([0.0, 0.0, 0.0, -3.03774645687452])
+    with pytest.raises(snakecg.InputError, match="robot: the mass matrix is numerically"):
+        model.simulate(q, [-0.68], 0.01)
+    ok = snakecg.load(snakecg.Scene(snakecg.Robot(joints=1)))  # a sound robot still runs
+    assert ok.simulate(q, [0.0], 0.01).summary["status"] == "completed"

@@ -202,9 +202,23 @@ def check_arguments(model, q0, tau, duration, v0, *, v_obj0, q_obj0, rho, f_obj,
     if not (isinstance(geometry_check, str) and geometry_check in ("stop", "report", "off")):
         raise InputError(f"geometry_check must be 'stop', 'report' or 'off', got "
                          f"{geometry_check!r:.60}")
+    _check_mass_matrix(model, q0)
     return Settings(model=model, q0=q0, v0=v0, q_obj0=q_obj0, v_obj0=v_obj0, rho=rho,
                     f_obj=f_obj, duration=duration, kind=kind, law=law, control_period=period,
                     method=method, rtol=rtol_, atol=atol, max_step=max_step,
                     fixed_step=fixed_step, alpha=alpha, output_dt=output_dt,
                     max_events=int(max_events), integrator=integrator,
                     geometry_check=geometry_check)
+
+
+def _check_mass_matrix(model, q0) -> None:
+    """Refuse a robot whose mass matrix is numerically singular at ``q0`` (the forward
+    solve's own test, whose answer there is NaN with that reason): no integrator can step such
+    a system, it would only shrink its steps."""
+    from ..engine.rules import MASS_SINGULAR, reason_of
+
+    res = model.forward(q0, np.zeros(model.n_joints))
+    if res.singular and res.reason == reason_of(MASS_SINGULAR):
+        raise InputError("robot: the mass matrix is numerically singular at q0 in float64 "
+                         "(masses, lengths or inertias too far apart); a simulation cannot "
+                         "step it")
