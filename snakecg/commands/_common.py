@@ -307,3 +307,19 @@ def print_json(obj) -> list[str]:
     sys.stdout.write("\n")
     return found
 
+
+def print_optimum(res, objective: str, value_name: str, *, timed: bool = True,
+                  between=()) -> None:
+    """The lines every ``snakecg optimize`` answer starts with: the status (and the solver,
+    with its time when ``timed``), the reason, the lines ``between``, the torque, the
+    objective's value (``value_name``) and the binding limits."""
+    when = f"; {res.time * 1e3:.2f} ms" if timed else ""
+    print(f"{objective}: {res.status} ({res.solver}{when})")
+    if res.reason:
+        print(f"  reason: {res.reason}")
+    for line in between:
+        print(line)
+    print(f"  tau    = {res.tau}  (N m)")
+    print(f"  {value_name} = {res.objective_value:.9g}")
+    if res.binding:
+        print(f"  binding: {', '.join(res.binding)}")

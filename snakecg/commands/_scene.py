@@ -153,7 +153,7 @@ def optimize_command(args, scene, schema: str, task_options, tasks) -> int:
     :func:`snakecg.scenes.optimize.optimize`."""
     from .. import load
     from ..errors import InputError
-    from ._common import print_json
+    from ._common import print_json, print_optimum
 
     q, _ = _vectors(args, scene)
     tau_max, direction, a_obj = task_options(args, scene.robot.joints)
@@ -196,13 +196,7 @@ def optimize_command(args, scene, schema: str, task_options, tasks) -> int:
     np.set_printoptions(precision=6, suppress=True)
     name = {"max_sr": "sr", "least_slip_push": "|qdd|^2",
             "strongest_push": f"d . a_obj of object {obj} (m/s^2)"}[objective]
-    print(f"{objective}: {res.status} ({res.solver})")
-    if res.reason:
-        print(f"  reason: {res.reason}")
-    print(f"  tau    = {res.tau}  (N m)")
-    print(f"  {name} = {res.objective_value:.9g}")
-    if res.binding:
-        print(f"  binding: {', '.join(res.binding)}")
+    print_optimum(res, objective, name, timed=False)
     an = res.analysis
     for o in an.objects:
         print(f"  object {o['object']}: a = {np.asarray(o['a'])}")

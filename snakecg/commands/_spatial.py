@@ -99,7 +99,7 @@ def optimize_command(args, scene: SpatialScene) -> int:
     """``snakecg optimize OBJECTIVE --scene FILE``."""
     from .. import load
     from .._inputs import MAX_MAGNITUDE
-    from ._common import print_json, vector
+    from ._common import print_json, print_optimum, vector
     from ..optimize import SCHEMA
 
     q = configuration(args.q, scene)
@@ -135,13 +135,7 @@ def optimize_command(args, scene: SpatialScene) -> int:
     an = res.analysis
     name = {"max_sr": "sr", "least_slip_push": "|qdd|^2",
             "strongest_push": "d . a_obj (m/s^2)"}[objective]
-    print(f"{objective}: {res.status} ({res.solver}; {res.time * 1e3:.2f} ms)")
-    if res.reason:
-        print(f"  reason: {res.reason}")
-    print(f"  tau    = {res.tau}  (N m)")
-    print(f"  {name} = {res.objective_value:.9g}")
-    if res.binding:
-        print(f"  binding: {', '.join(res.binding)}")
+    print_optimum(res, objective, name)
     print(f"  a_obj  = {an.a_obj}")
     print(f"  normal = {an.normal}  (N)")
     print(f"  contact {'kept' if an.contact else 'lost'}; wheels: {' '.join(an.wheel_state)}")

@@ -7,8 +7,8 @@ import argparse
 import numpy as np
 
 from .._inputs import MAX_MAGNITUDE
-from ._common import (add_robot_args, check_vector, parse_vector, print_json, real,
-                      scene_from_args, text, vector)
+from ._common import (add_robot_args, check_vector, parse_vector, print_json, print_optimum,
+                      real, scene_from_args, text, vector)
 from ._names import limits_line, objective_name
 
 EXAMPLES = """\
@@ -195,21 +195,15 @@ def run(args) -> int:
     an = res.analysis
     name = {"max_sr": "sr", "least_slip_push": "|qdd|^2",
             "strongest_push": "d . a_obj (m/s^2)"}[objective]
-    print(f"{objective}: {res.status} ({res.solver}; {res.time * 1e3:.2f} ms)")
-    if res.reason:
-        print(f"  reason: {res.reason}")
-    if res.note:
-        print(f"  note: {res.note}")
-    print(f"  limits: {limits_line(res.limits)}")
+    between = [f"  note: {res.note}"] if res.note else []
+    between.append(f"  limits: {limits_line(res.limits)}")
     c = res.certificate
     if c is not None and c.kind != "none":
-        print(f"  certificate: {c.kind}, {'ok' if c.ok else 'failed'} (stationarity "
-              f"{c.stationarity:.1e}, feasibility {c.primal_feasibility:.1e}"
-              + (f", gap {c.duality_gap:.1e})" if c.duality_gap is not None else ")"))
-    print(f"  tau    = {res.tau}  (N m)")
-    print(f"  {name} = {res.objective_value:.9g}")
-    if res.binding:
-        print(f"  binding: {', '.join(res.binding)}")
+        between.append(f"  certificate: {c.kind}, {'ok' if c.ok else 'failed'} (stationarity "
+                       f"{c.stationarity:.1e}, feasibility {c.primal_feasibility:.1e}"
+                       + (f", gap {c.duality_gap:.1e})" if c.duality_gap is not None
+                          else ")"))
+    print_optimum(res, objective, name, between=between)
     print(f"  a_obj  = {an.a_obj}")
     print(f"  qdd    = {an.qdd}")
     print(f"  lambda = {an.lam}  (row 0: contact, row i: wheel of link i)")
