@@ -514,3 +514,30 @@ def enumerate_pieces(p, a_hint, band=1e-6, limit=4096):
                         for i in range(2 if kind >= DISC else 1)]
                 return a, held
     return None, None
+
+
+#: A small scene file shared by the tests: a 3-joint snake (capsules of radius 0.01) on
+#: Coulomb ground (mu 0.3) touching a 100 kg box with link 1, and a peg.
+SCENE = """
+[robot]
+joints = 3
+length = 0.15
+mass = 1.0
+inertia = 0.002
+radius = 0.01
+
+[ground]
+model = "coulomb"
+mu = 0.3
+
+[[object]]
+shape = "box"
+size = [0.1, 0.1]
+mass = 100.0
+touching = { link = 1, offset = 0.075, side = "left" }
+
+[[obstacle]]
+shape = "peg"
+center = [0.3, 0.12]
+radius = 0.03
+"""

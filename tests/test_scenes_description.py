@@ -10,38 +10,14 @@ import sys
 
 import numpy as np
 import pytest
+from scenes_geometry_reference import Shape, closest
+from scenes_reference import SCENE
 
 from snakecg import Robot, Scene
 from snakecg.errors import InputError
 from snakecg.scenes import GeneralScene, Ground, Obstacle, SceneObject
 from snakecg.scenes.geometry import box_corners
 from snakecg.scenes.toml_reading import read_scene
-
-from scenes_geometry_reference import Shape, closest
-
-SCENE = """
-[robot]
-joints = 3
-length = 0.15
-mass = 1.0
-inertia = 0.002
-radius = 0.01
-
-[ground]
-model = "coulomb"
-mu = 0.3
-
-[[object]]
-shape = "box"
-size = [0.1, 0.1]
-mass = 100.0
-touching = { link = 1, offset = 0.075, side = "left" }
-
-[[obstacle]]
-shape = "peg"
-center = [0.3, 0.12]
-radius = 0.03
-"""
 
 
 def test_toml_scene_is_read(tmp_path):

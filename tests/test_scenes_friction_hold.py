@@ -11,6 +11,7 @@ import sys
 
 import numpy as np
 import pytest
+from scenes_reference import SCENE, dense_problem
 
 import snakecg
 from snakecg import Robot
@@ -20,34 +21,8 @@ from snakecg.scenes.maps import scene_problem
 from snakecg.scenes.solve import BOX, DISC, FREE, SPLIT, UNILATERAL
 from snakecg.scenes.toml_reading import read_scene
 
-from scenes_reference import dense_problem
-
 cp = pytest.importorskip("cvxpy")
 
-# a 3-joint snake on Coulomb ground (mu 0.3) touching a 100 kg box with link 1, and a peg
-SCENE = """
-[robot]
-joints = 3
-length = 0.15
-mass = 1.0
-inertia = 0.002
-radius = 0.01
-
-[ground]
-model = "coulomb"
-mu = 0.3
-
-[[object]]
-shape = "box"
-size = [0.1, 0.1]
-mass = 100.0
-touching = { link = 1, offset = 0.075, side = "left" }
-
-[[obstacle]]
-shape = "peg"
-center = [0.3, 0.12]
-radius = 0.03
-"""
 Q = np.array([0.0, 0.0, 0.0, 0.3, -0.3, 0.2])
 
 
