@@ -26,6 +26,7 @@ __all__ = [
     "SceneCall",
     "SceneStateCall",
     "SceneStep",
+    "SceneRunCall",
     "Segment",
     "Settle",
     "address",
@@ -74,8 +75,10 @@ PROTOTYPES: dict[str, tuple[list, object]] = {
     "core_scene_solve_b": ([_I, _I, _I, _I] + [_P] * 9 + [_I] + [_P] * 5, _INT),
     "core_scene_rows": ([_P], _INT),
     "core_scene_gaps": ([_P], _INT),
-    # scene_step.c
+    # scene_step.c, scene_run.c
     "core_scene_step": ([_P], _INT),
+    "core_scene_run": ([_P], _INT),
+    "core_scene_run_batch": ([_P, _I, _P], _INT),
 }
 #: A generated function's batched driver: (n, inputs, strides, outputs).
 _BATCH = ([_I, ctypes.POINTER(_P), ctypes.POINTER(_I), ctypes.POINTER(_P)], _INT)
@@ -201,6 +204,17 @@ class SceneStep(ctypes.Structure):
                 ("A1", _P), ("par1", _P), ("out1", _P), ("kind1", _P), ("start1", _P),
                 ("Vp", _P), ("lam", _P), ("info", _P), ("ilam", _P), ("iinfo", _P),
                 ("acc", _P), ("status", _I)]
+
+
+class SceneRunCall(ctypes.Structure):
+    """The arguments of ``core_scene_run`` (scene_run.c's ``sc_scene_run``): a general
+    scene's run, many steps per call."""
+
+    _fields_ = [("st", _P), ("gs", _P), ("gcap", _I), ("duration", _D), ("dt", _D),
+                ("h_min", _D), ("tau_limit", _D), ("law", _I), ("nlp", _I), ("lp", _P),
+                ("every", _I), ("rec", _P), ("cap", _I), ("nrec", _I), ("pause", _I),
+                ("stop_at_impacts", _I), ("work", _P), ("t", _D), ("nstep", _I),
+                ("phase", _I), ("impacts", _I), ("min_gap", _D), ("bad", _D * 5)]
 
 
 class Geometry(ctypes.Structure):

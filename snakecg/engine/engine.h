@@ -21,9 +21,9 @@
  *   optimal.c       the optimal-torque queries of a batch (exported: core_optimal)
  *   max_sr.c, push.c, wheel_states.c   the queries' solves
  *   pieces.c, sphere.c                 the exact extremes' pieces and faces (exported)
- *   scene_sets.c, scene_solve.c        a general scene's exact solve (exported: core_scene_solve;
- *                                      core_scene_solve_b with row offsets, for stepping)
- *   scene_geometry.c, scene_rows.c, scene_step.c   contacts, rows, forward, a time step
+ *   scene_sets.c, scene_solve.c  a general scene's exact solve (core_scene_solve, _solve_b)
+ *   scene_geometry.c, scene_rows.c, scene_step.c, scene_run.c   contacts, rows, forward, a
+ *                   time step, whole runs and batches of runs
  *
  * One prefix (sc_), one integer type (sc_int). The library exports the model's prefixed entry
  * points only (SNAKECG_EXPORT); the engine's own functions across its files are hidden
@@ -147,7 +147,6 @@ typedef struct {
   sc_int status;        /* SETTLE_* */
 } sc_settle;
 /* ---- contact.c: the per-state system and its complementarity solve ---- */
-
 /* Wall-clock seconds (monotonic): the long calls pause after a budget, for Ctrl-C. */
 SC_INTERNAL double sc_wall_time(void);
 /* Argument and result arrays and work vectors of generated functions (the largest of n). */
@@ -158,7 +157,6 @@ typedef struct {
   double *w;
 } sc_work_t;
 SC_INTERNAL void sc_work_free(sc_work_t *ws);
-
 #define SC_COUNT(a) ((int)(sizeof(a) / sizeof((a)[0]))) /* the entries of an array */
 /* 0, or -1 when a size query or an allocation failed (then nothing is left allocated). */
 SC_INTERNAL int sc_work_alloc(sc_work_t *ws, const sc_work_fn *fns, int n);
@@ -195,7 +193,6 @@ SC_INTERNAL int sc_row_velocities(sc_work_t *ws, const double *scene, const doub
 typedef struct {
   double pivot_tol, weak, rel_tol, mass_tol, sane_tol, force_limit, row_tol, regularization;
 } sc_constants;
-
 /* rows.c: a sample the fast path does not answer exactly, by the reference rules; its status
  * the reason's code. sys null when its evaluation failed; mass: M's pivot ratio. */
 SC_INTERNAL void sc_forward_edge(const sc_system *sys, const double *scene,
@@ -211,7 +208,6 @@ SC_INTERNAL double sc_delassus_state(const sc_system *sys, const sc_constants *c
 SC_INTERNAL double sc_decide_states(const sc_system *sys, const sc_constants *c,
                                     const double *u, const double *free, long max_iter,
                                     signed char *state, int *singular);
-
 /* The constraint forces for row states `state` (eq. 16): lam_F fixed (0, or +-bound for a
  * sliding wheel), lam_H solving G_HH lam_H = -(b_H + G_HF lam_F) - extra_H by LDL^T in row
  * order (the masked factorization of the generated `constrained_dynamics`); `extra` (may be
@@ -220,7 +216,6 @@ SC_INTERNAL double sc_decide_states(const sc_system *sys, const sc_constants *c,
  * min_j d_j / G_jj over the held rows not dropped (1 when none holds). */
 SC_INTERNAL double sc_held_forces(const signed char *state, const double *G, const double *b,
                                   const double *bounds, const double *extra, double *lam);
-
 /* The next row states (snakecg.solver._violations with _tolerances): returns 1 if any moved.
  * Each row is judged against its own scale (the rule in contact.c), so the decisions do not
  * depend on units, nor on the huge forces of nearly dependent rows. */
@@ -229,8 +224,10 @@ SC_INTERNAL int sc_next_states(signed char *state, const double *lam, const doub
 /* ---- events.c: locating an event ---- */
 /* A function of time whose root is sought (its value in *g): 0, or SEG_FAILED. */
 typedef int (*sc_root_fn)(void *arg, double t, double *g);
-/* The root of fn on [xa, xb] (scipy.optimize.brentq's method) in *root: 0, or fn's status. */
-SC_INTERNAL int sc_brentq(sc_root_fn fn, void *arg, double xa, double xb, double *root);
+/* The root of fn on [xa, xb] to xtol + rtol |root| (scipy.optimize.brentq's method, events.c)
+ * in *root: 0, or fn's status. */
+SC_INTERNAL int sc_brentq(sc_root_fn fn, void *arg, double xa, double xb, double xtol,
+                          double rtol, double *root);
 /* ---- geometry.c: the contact check of a simulation ---- */
 /* The check of a run (mirrored in snakecg/engine/binding.py): inputs, then outputs. */
 enum { SC_GEO_OFF = 0, SC_GEO_STOP = 1, SC_GEO_RECORD = 2 };
@@ -344,10 +341,8 @@ static inline double *sc_qp_ce_d(const sc_qp_work *w) {
 static inline sc_int *sc_qp_ce_i(const sc_qp_work *w) {
   return w->i + SC_QP_GI_I(w->n_max, w->m_max) + SC_QP_QC_I(w->n_max, w->m_max);
 }
-
 /* Relative violation below which a row counts as satisfied (sc_qp_solve). */
 #define SC_QP_FEAS_TOL 1e-12
-
 SC_INTERNAL int sc_qp_work_alloc(sc_qp_work *w, sc_int n_max, sc_int m_max);
 SC_INTERNAL void sc_qp_work_init(sc_qp_work *w, sc_int n_max, sc_int m_max, double *d,
                                  sc_int *i);
@@ -357,7 +352,6 @@ SC_INTERNAL int sc_qcqp_ellipsoid(const sc_qp *qp, const double *N, double rho2,
                                   sc_qp_work *w, sc_qp_solution *sol);
 SC_INTERNAL int sc_nnls(sc_int n, sc_int k, const double *C, const double *d, double *y,
                         double *work, sc_int *iwork);
-
 /* The certificate of a point x of min 1/2 x^T H x + c^T x (H null: linear) s.t.
  * lo <= G x <= hi (m rows) and, when Q is not null, x^T Q x <= r2. The constraints whose
  * relative slack is at most `active` are taken as active, their multipliers recomputed from the
@@ -388,7 +382,6 @@ SC_INTERNAL void sc_kkt_certificate(sc_int n, const double *x, const double *H, 
 /* rows of the largest QP posed here: z = (tau, t) with the contact force, every wheel's two
  * sides, both sides of every joint's box, t >= 0 */
 #define SC_ROWS_MAX (2 * SNAKECG_NC + 2 * SNAKECG_NA + 4)
-
 /* query kinds (OPT_IN_kind) */
 enum { SC_MAX_SR = 0, SC_LEAST_SLIP_PUSH = 1, SC_STRONGEST_PUSH = 2 };
 /* statuses (OPT_OUT_status) */
@@ -447,7 +440,6 @@ enum {
   SC_METHOD_STATES = 256,      /* max_sr: the sliding wheel states */
   SC_METHOD_SCALE = 512        /* t-scale search of a state cut by the ellipsoid */
 };
-
 /* The system at rest at one configuration, the object placed: from the generated
  * contact_system (column-major as it writes them) M_s (eq. 4), G_c (eq. 14), Kq = M_s^-1 A_s^T
  * and Ka = I_obj^-1 A_o^T (eq. 18); then M_s^-1 B and the input metric N = B^T M_s^-1 B
@@ -457,10 +449,8 @@ typedef struct {
   double MB[NS * NA];
   double N[NA * NA];
 } sc_rest;
-
 /* the generated functions' work arrays (maps.c) */
 typedef struct sc_rest_work sc_rest_work;
-
 /* The affine maps of one row state at rest: lam = L tau + l0 (eq. 17), w = W tau + w0 (the
  * rows' accelerations), qdd = Q tau + q0 (eq. 22), a_obj = A tau + a0 (eq. 24), Xi of eq. (28)
  * as a form in z = (tau, 1), Omega of eq. (29) in tau (the held state's: no offset), all
@@ -474,7 +464,6 @@ typedef struct {
   double Om[NA * NA];
   double pivot_ratio;
 } sc_affine_maps;
-
 /* One call: the model, the query and the workspaces, then the configuration at hand. */
 typedef struct {
   const double *scene;        /* the scene vector (SCENE_*) */
@@ -502,11 +491,9 @@ typedef struct {
   double widths[NA];          /* the region's bounding box (the variables' scale) */
   double *out;                /* this configuration's answer (OPT_OUT_*) */
 } sc_optimal;
-
 /* a field of the configuration's answer (OPT_OUT_*), and setting one */
 #define SC_OUT(o, f) ((o)->out + OPT_OUT_##f)
 #define SC_SET(o, f, v) ((o)->out[OPT_OUT_##f] = (v))
-
 /* maps.c */
 SC_INTERNAL sc_rest_work *sc_rest_work_new(void);
 SC_INTERNAL void sc_rest_work_free(sc_rest_work *ws);
@@ -529,7 +516,6 @@ SC_INTERNAL void sc_least_slip_push(sc_optimal *o);
 SC_INTERNAL void sc_strongest_push(sc_optimal *o);
 /* wheel_states.c: max_sr with sliding wheels, after the all-held answer is in o->out */
 SC_INTERNAL void sc_max_sr_sliding(sc_optimal *o);
-
 /* ---- the exported entry points (the model's prefix; bound in snakecg/engine/binding.py) ---- */
 
 /* forward.c */
@@ -595,5 +581,18 @@ SC_INTERNAL int sc_scene_state_rows(const double *pk, const double *q, const dou
                                     double tol, sc_int ccap, sc_int mcap, double *out,
                                     double *M, double *A, double *par, sc_int *kind,
                                     sc_int *start);
-
+/* core_scene_rows' and core_scene_gaps' arguments (binding.py's SceneStateCall; fields:
+ * scene_rows.c); core_scene_step's (SceneStep; fields, ST_* and STEP_*: scene_step.c) */
+typedef struct { const double *pk, *q, *qo; double tol, margin; sc_int ccap, mcap, pair_a,
+  pair_b; double *out, *M, *A, *par; sc_int *kind, *start; } sc_scene_state;
+int SNAKECG_EXPORT(core_scene_gaps)(const sc_scene_state *c);
+enum { ST_WORK_TAU = 0, ST_FRICTION, ST_IMPACT_LOSS, ST_CONTACT_WORK, ST_CONTACT_IMPULSE,
+       ST_SLIDING_COS, ST_PRIMAL, ST_DUAL, ST_COMPL, ST_STEPS, ST_IMPACT, ST_LOSS, ST_KE,
+       ST_MIN_GAP, ST_NC, ST_WIDTH };
+enum { STEP_DONE = 0, STEP_NOT_CONVERGED = 1, STEP_IMPACT_NOT_CONVERGED = 2 };
+typedef struct { const double *pk; double tol, h, impact_speed; const double *tau, *fo;
+  double *x, *V; sc_int ccap, mcap; double *M, *A, *par, *out; sc_int *kind, *start;
+  double *M1, *A1, *par1, *out1; sc_int *kind1, *start1;
+  double *Vp, *lam, *info, *ilam, *iinfo, *acc; sc_int status; } sc_scene_step;
+int SNAKECG_EXPORT(core_scene_step)(sc_scene_step *c);
 #endif

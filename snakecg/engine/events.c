@@ -227,10 +227,11 @@ int SNAKECG_EXPORT(core_settle)(sc_settle *st) {
   return status;
 }
 
-/* The root of fn between xa and xb (the integrator locates its events with it):
+/* The root of fn between xa and xb to xtol + rtol |root| (the integrator locates its events
+ * with it, 4 eps each; a general scene's run its contacts' onsets, scene_run.c):
  * scipy.optimize.brentq (scipy/optimize/Zeros/brentq.c) on fn over [xa, xb]. */
-int sc_brentq(sc_root_fn fn, void *arg, double xa, double xb, double *root) {
-  const double xtol = 4 * DBL_EPSILON, rtol = 4 * DBL_EPSILON;
+int sc_brentq(sc_root_fn fn, void *arg, double xa, double xb, double xtol, double rtol,
+              double *root) {
   double xpre = xa, xcur = xb, xblk = 0.0, fpre, fcur, fblk = 0.0, spre = 0.0, scur = 0.0;
   double sbis, delta, stry, dpre, dblk;
   int i, st;

@@ -430,7 +430,9 @@ static int segment(sc_ctx *c, sc_segment *sg) {
         arg.c = c;
         arg.D = &D;
         arg.e = e;
-        if ((st = sc_brentq(event_fn, &arg, t, t_new, &root))) return st;
+        if ((st = sc_brentq(event_fn, &arg, t, t_new, 4 * DBL_EPSILON, 4 * DBL_EPSILON,
+                            &root)))
+          return st;
         if (first < 0 || root < t_stop) {
           first = e;
           t_stop = root;
@@ -472,7 +474,7 @@ static int segment(sc_ctx *c, sc_segment *sg) {
           }
           garg.geo = geo;
           garg.D = &D;
-          sc_brentq(sc_geo_fn, &garg, ta, tb, &root);
+          sc_brentq(sc_geo_fn, &garg, ta, tb, 4 * DBL_EPSILON, 4 * DBL_EPSILON, &root);
           dense_eval(&D, root, yb);
           d = sc_geo_depth(geo, yb, &pair);
           sc_geo_record(geo, root, yb, d, pair);

@@ -431,21 +431,14 @@ int SNAKECG_EXPORT(core_scene_forward_call)(const sc_scene_call *c) {
 }
 
 /* ---- the rows at a simulation's state (snakecg/scenes/stepping.py; maps at rest) ---- */
-/* The arguments of core_scene_rows and core_scene_gaps (snakecg/engine/binding.py mirrors
- * them as SceneStateCall). */
-typedef struct {
-  const double *pk, *q, *qo; /* the packed scene; q (n_s); the objects' poses (3 n_o, or
-                                null: placed by the scene from q) */
-  double tol;                /* rows: the contact tolerance (m; <= 0: the scene's) */
-  double margin;             /* gaps: the pairs whose bounding circles are within it (m) */
-  sc_int ccap, mcap;         /* rows: room for contacts and rows (mcap >= ccap + ground
-                                rows); gaps: for records */
-  sc_int pair_a, pair_b;     /* gaps: this pair of bodies alone (-1: every pair) */
-  double *out;               /* rows: RO_*, then the contacts (CR_W each); gaps: 5 per pair */
-  double *M;                 /* rows: the bodies' inertia (n x n, row-major), or null */
-  double *A, *par;           /* rows: A (mcap x n), the blocks' parameters (3 each) */
-  sc_int *kind, *start;      /* rows: the blocks' kinds and first rows */
-} sc_scene_state;
+/* The arguments of core_scene_rows and core_scene_gaps: sc_scene_state of engine.h
+ * (snakecg/engine/binding.py mirrors them as SceneStateCall): pk the packed scene; q (n_s);
+ * qo the objects' poses (3 n_o, or null: placed by the scene from q); tol (rows: the contact
+ * tolerance, m; <= 0: the scene's); margin (gaps: the pairs whose bounding circles are within
+ * it, m); ccap, mcap (rows: room for contacts and rows, mcap >= ccap + ground rows; gaps: for
+ * records); pair_a, pair_b (gaps: this pair of bodies alone, -1: every pair); out (rows: RO_*,
+ * then the contacts, CR_W each; gaps: 5 per pair); M (rows: the bodies' inertia, n x n
+ * row-major, or null); A (mcap x n), par (3 per block), kind, start: the rows' blocks. */
 /* rows' outputs (RO_*, engine.h): status (0, SS_*), contacts, rows, blocks, an overlap's
  * record (bodies, depth, tolerance), the objects' poses (3 n_o), then the contacts */
 

@@ -23,33 +23,20 @@
 #include "snakecg_layout.h"
 #include "engine.h"
 
-/* the run's accumulators and the last step's figures (snakecg/scenes/stepping.py's ST_*) */
-enum { ST_WORK_TAU = 0, ST_FRICTION, ST_IMPACT_LOSS, ST_CONTACT_WORK, ST_CONTACT_IMPULSE,
-       ST_SLIDING_COS, ST_PRIMAL, ST_DUAL, ST_COMPL, ST_STEPS, ST_IMPACT, ST_LOSS, ST_KE,
-       ST_MIN_GAP, ST_NC, ST_WIDTH };
-/* a step's status: done; the step's or the impact's solve did not converge; the rows at the
- * end refused (SS_OVERLAP, SS_MORE, SS_FAILED of engine.h) */
-enum { STEP_DONE = 0, STEP_NOT_CONVERGED = 1, STEP_IMPACT_NOT_CONVERGED = 2 };
+/* the run's accumulators and the last step's figures (ST_*, snakecg/scenes/run_record.py's),
+ * a step's status (STEP_*, or SS_OVERLAP, SS_MORE, SS_FAILED: the rows at the end refused):
+ * engine.h */
 enum { SOLVE_INFO = 8 }; /* the solve's certificate: status, dependent, primal, dual, compl.. */
 #define SC_STEP_SWEEPS 200000 /* snakecg.scenes.solve.MAX_SWEEPS */
 
-/* One call's arguments (snakecg/engine/binding.py mirrors them as SceneStep). */
-typedef struct {
-  const double *pk;          /* the packed scene */
-  double tol, h, impact_speed; /* contact tolerance (m), step (s), closing speed (m/s) */
-  const double *tau, *fo;    /* NA; 3 n_o: held over the step */
-  double *x, *V;             /* n each: the state, replaced by the step's end when accepted */
-  sc_int ccap, mcap;         /* room for contacts and rows */
-  double *M, *A, *par, *out; /* the rows at x (sc_scene_state_rows' outputs), replaced */
-  sc_int *kind, *start;
-  double *M1, *A1, *par1, *out1; /* scratch: the rows at the step's end */
-  sc_int *kind1, *start1;
-  double *Vp;                /* n: the step's V+ (before an impact) */
-  double *lam, *info;        /* mcap, SOLVE_INFO: the step's solve */
-  double *ilam, *iinfo;      /* the impact's */
-  double *acc;               /* ST_WIDTH */
-  sc_int status;             /* STEP_* or SS_* */
-} sc_scene_step;
+/* One call's arguments (sc_scene_step of engine.h; snakecg/engine/binding.py mirrors them as
+ * SceneStep): pk the packed scene; tol, h, impact_speed: contact tolerance (m), step (s),
+ * closing speed (m/s); tau (NA), fo (3 n_o) held over the step; x, V (n each) the state,
+ * replaced by the step's end when accepted; ccap, mcap room for contacts and rows; M, A, par,
+ * out, kind, start the rows at x (sc_scene_state_rows' outputs), replaced; M1 .. start1
+ * scratch: the rows at the step's end; Vp (n) the step's V+ (before an impact); lam, info
+ * (mcap, SOLVE_INFO) the step's solve, ilam, iinfo the impact's; acc (ST_WIDTH); status
+ * STEP_* or SS_*. */
 
 static double quad(sc_int n, const double *M, const double *v) {
   double s = 0.0;

@@ -130,10 +130,12 @@ class SceneRun:
         cert = {k: float(info[INFO.index(k)]) for k in ("primal", "dual", "complementarity")}
         self.events.append(SceneEvent(float(t), "impact", bodies, imps, float(loss), cert))
 
-    def sample(self, t, x, V, tau) -> None:
-        """The state ``x``, ``V`` at ``t``, the torque held over the step that ends there,
-        and the engine's figures at it (one row kept; the fields are made at the end)."""
-        self._rows.append((t, np.concatenate((x, V, tau, self._engine_acc))))
+    def samples(self, rows) -> None:
+        """Samples from the engine's run (``snakecg/engine/scene_run.c``): rows of the time,
+        the state ``x``, ``V``, the torque held over the step that ends there and the
+        engine's figures at it (``ST_*``); the fields are made at the end."""
+        if len(rows):
+            self._rows.append(np.asarray(rows, dtype=float))
 
     def finish(self, status, t, message, bodies=None) -> SceneRun:
         self._read()
@@ -144,10 +146,9 @@ class SceneRun:
             self.violation = {"t": float(t), "bodies": [self._names(*b) for b in bodies]
                               if bodies else [], "message": message}
         for k in ("t", "min_gap", "n_contacts", "contact_impulse", "kinetic_energy",
-                  "work_tau", "friction_dissipation", "impact_loss", "contact_work"):
-            setattr(self, k, np.asarray(getattr(self, k), dtype=float))
-        for k in ("q", "v", "q_obj", "v_obj", "tau"):
-            setattr(self, k, np.asarray(getattr(self, k), dtype=float))
+                  "work_tau", "friction_dissipation", "impact_loss", "contact_work", "q", "v",
+                  "q_obj", "v_obj", "tau"):
+            setattr(self, k, np.ascontiguousarray(getattr(self, k), dtype=float))
         return self
 
     def _columns(self) -> None:
@@ -155,19 +156,19 @@ class SceneRun:
         if not self._rows:
             return
         ns, n, na = self._ns, self._n, self._na
-        data = np.array([r[1] for r in self._rows])
-        x, V, tau, acc = (data[:, :n], data[:, n:2 * n], data[:, 2 * n:2 * n + na],
-                          data[:, 2 * n + na:])
-        self.t = [r[0] for r in self._rows]
-        self.q, self.v = list(x[:, :ns]), list(V[:, :ns])
-        self.q_obj = list(x[:, ns:].reshape(len(x), -1, 3))
-        self.v_obj = list(V[:, ns:].reshape(len(x), -1, 3))
-        self.tau = list(tau)
+        data = np.concatenate(self._rows)
+        x, V, tau, acc = (data[:, 1:1 + n], data[:, 1 + n:1 + 2 * n],
+                          data[:, 1 + 2 * n:1 + 2 * n + na], data[:, 1 + 2 * n + na:])
+        self.t = data[:, 0]
+        self.q, self.v = x[:, :ns], V[:, :ns]
+        self.q_obj = x[:, ns:].reshape(len(x), -1, 3)
+        self.v_obj = V[:, ns:].reshape(len(x), -1, 3)
+        self.tau = tau
         for name, i in (("min_gap", ST_MIN_GAP), ("n_contacts", ST_NC),
                         ("contact_impulse", ST_CONTACT_IMPULSE), ("kinetic_energy", ST_KE),
                         ("work_tau", ST_WORK_TAU), ("friction_dissipation", ST_FRICTION),
                         ("impact_loss", ST_IMPACT_LOSS), ("contact_work", ST_CONTACT_WORK)):
-            setattr(self, name, list(acc[:, i]))
+            setattr(self, name, acc[:, i])
 
     # after -----------------------------------------------------------------------------
     @property

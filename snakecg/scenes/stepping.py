@@ -28,9 +28,13 @@ being finite; ideal wheels take impulses) and the rows ``A V+ >= 0``, with its c
 The rows are found from the geometry at every step, so contact points slide along edges and
 links and a box's corner can take over.
 
-Each step is one call of the compiled engine (``snakecg/engine/scene_step.c``: the bias
-forces, the solve, the rows at the step's end, the step's energy terms, the impact); Python
-evaluates the torque law, keeps the record and does the root finding of a refused step.
+A step is the compiled engine's (``snakecg/engine/scene_step.c``: the bias forces, the solve,
+the rows at the step's end, the step's energy terms, the impact), and so is the run's loop
+(``snakecg/engine/scene_run.c``): the torque law where the engine knows it (a constant, a
+:class:`~snakecg.simulate.TorqueTable`, a :class:`~snakecg.simulate.SerpenoidPD`), the root
+finding of a refused step, the record into a buffer. A call returns to Python only for a
+torque law of the caller's own (evaluated here at each step), an impact's event, a full record
+buffer, a pause every :data:`PAUSE_STEPS` steps (progress, Ctrl-C) and the run's end.
 """
 
 from __future__ import annotations
@@ -40,13 +44,12 @@ import time
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.optimize import brentq
 
-from ..engine.binding import SceneStep, address
+from ..engine.binding import SceneRunCall, SceneStateCall, SceneStep, address
 from ..errors import BuildError, InputError
 from .contacts import Rows, StateRows, place_objects, read_rows
-from .packing import scene_size
-from .run_record import ST_IMPACT, ST_LOSS, ST_SLIDING_COS, ST_WIDTH, SceneEvent, SceneRun
+from .packing import BODY_KINDS, scene_size
+from .run_record import ST_LOSS, ST_SLIDING_COS, ST_WIDTH, SceneEvent, SceneRun
 from .solve import INFO
 
 __all__ = ["SceneState", "SceneEvent", "SceneRun", "simulate_scene"]
@@ -59,6 +62,13 @@ MAX_STEPS = 5_000_000
 IMPACT_SPEED = 1e-9
 #: seconds of wall time between progress lines
 PROGRESS_EVERY = 5.0
+#: the engine's run returns after this many steps (progress lines, Ctrl-C)
+PAUSE_STEPS = 20_000
+#: the torque laws the engine evaluates (scene_run.c's LAW_*), by the laws' names
+LAWS = {"constant": 0, "table": 1, "hold": 2, "serpenoid_pd": 3, "caller": 4}
+#: why the engine's run returned (scene_run.c's RUN_*)
+(RUN_END, RUN_TAU, RUN_FULL, RUN_IMPACT, RUN_PAUSE, RUN_NOT_CONVERGED, RUN_IMPACT_NOT_CONVERGED,
+ RUN_REFUSED, RUN_TOO_SHORT, RUN_TRIES_OUT, RUN_BAD_TAU) = range(11)
 
 
 @dataclass
@@ -174,6 +184,69 @@ def _check_args(model, q0, v0, duration, dt, q_obj0, v_obj0, f_obj, tolerance):
     return q, v, qo, vo, fo
 
 
+class _Runner:
+    """One run's loop in the engine (``core_scene_run``, ``snakecg/engine/scene_run.c``) over
+    a :class:`_Stepper`: its arguments, the torque law's parameters, the record's buffer
+    (``cap`` rows of ``t, x, V, tau, acc``; ``every``: keep every k-th step, 0 none) and the
+    pairs' distances of the root finding (their own call and buffers)."""
+
+    def __init__(self, st: _Stepper, duration, dt, law: str, params, every: int, cap: int,
+                 stop_at_impacts: bool = True, pause: int = PAUSE_STEPS):
+        from ..engine.rules import FORCE_LIMIT
+
+        eng, model = st.engine, st.model
+        self.st, self.na = st, model.n_joints
+        self.width = 1 + 2 * st.n + self.na + ST_WIDTH
+        self.gq, self.gqo = np.zeros(st.ns), np.zeros(max(1, 3 * st.no))
+        self.gout = np.zeros(5 * eng.gcap)
+        self.gs = SceneStateCall(model._pk, self.gq.ctypes.data, self.gqo.ctypes.data,
+                                 eng.tol, 0.0, eng.gcap, eng.mcap, -1, -1,
+                                 self.gout.ctypes.data, None, None, None, None, None)
+        self.lp = np.zeros(1) if params is None else np.ascontiguousarray(params, dtype=float)
+        self.rec = np.zeros((max(1, cap) if every else 1, self.width))
+        self.work = np.zeros(2 * st.n + 5 * eng.gcap)
+        self.args = SceneRunCall(st._address, address(self.gs), eng.gcap, float(duration),
+                                 float(dt), H_MIN, FORCE_LIMIT, LAWS[law], self.lp.size,
+                                 self.lp.ctypes.data, int(every), self.rec.ctypes.data,
+                                 self.rec.shape[0] if every else 0, 0, int(pause),
+                                 int(stop_at_impacts), self.work.ctypes.data)
+        self._address = address(self.args)
+        self._run = model.core.scene_run
+
+    def go(self) -> int:
+        """Go on with the run: why the engine returned (``RUN_*``)."""
+        code = self._run(self._address)
+        if code < 0:
+            if code == -3:
+                raise InputError("simulate: the state is not finite")
+            raise MemoryError("the scene's run ran out of memory") if code == -1 else \
+                ValueError(f"core_scene_run refused ({code})")
+        return code
+
+    def take(self) -> np.ndarray:
+        """The record's rows since the last take (the buffer emptied)."""
+        k = int(self.args.nrec)
+        self.args.nrec = 0
+        return self.rec[:k].copy()
+
+
+def engine_law(kind: str, law, n_a: int):
+    """``(name, parameters)`` of a torque law (:func:`snakecg.simulate.torques.torque_law`'s
+    ``kind, law``) for the engine's run: ``constant`` (the torques), a law that carries its
+    own parameters (``law.engine_law()``: a :class:`~snakecg.simulate.TorqueTable`, a
+    :class:`~snakecg.simulate.SerpenoidPD`; a subclass, which may change the law, does not),
+    else ``caller`` (evaluated in Python at each step)."""
+    if kind == "constant":
+        return "constant", np.asarray(law, dtype=float)
+    from ..simulate.gaits import SerpenoidPD, TorqueTable
+
+    if type(law) in (SerpenoidPD, TorqueTable):
+        found = law.engine_law(n_a)
+        if found is not None:
+            return found
+    return "caller", None
+
+
 def simulate_scene(model, q0, duration, *, v0=None, tau=None, dt=1e-3, q_obj0=None,
                    v_obj0=None, f_obj=None, tolerance=None, output_every=1,
                    progress=False) -> SceneRun:
@@ -182,7 +255,9 @@ def simulate_scene(model, q0, duration, *, v0=None, tau=None, dt=1e-3, q_obj0=No
 
     ``tau``: joint torques, a constant ``(n_a,)``, a function ``tau(t)`` or a feedback law
     ``tau(t, state)`` (:class:`SceneState`; e.g. :class:`snakecg.simulate.SerpenoidPD`), held
-    over each step; default zero. ``dt``: the step (s), shortened where a contact begins.
+    over each step; default zero. A constant, a :class:`~snakecg.simulate.TorqueTable` and a
+    :class:`~snakecg.simulate.SerpenoidPD` are evaluated by the engine, in its loop; any other
+    callable by Python at each step. ``dt``: the step (s), shortened where a contact begins.
     ``q_obj0``/``v_obj0`` ``(n_objects, 3)``: the objects' poses and twists (default: placed by
     the scene, at rest); ``f_obj``: a constant wrench on every object. ``tolerance`` (m): the
     contact tolerance (default ``1e-5`` times the scene's size): contacts hold within it and
@@ -196,92 +271,78 @@ def simulate_scene(model, q0, duration, *, v0=None, tau=None, dt=1e-3, q_obj0=No
 
     q, v, qo, vo, fo = _check_args(model, q0, v0, duration, dt, q_obj0, v_obj0, f_obj,
                                    tolerance)
+    if isinstance(output_every, bool) or not isinstance(output_every, (int, np.integer)) \
+            or output_every < 1:
+        raise InputError(f"simulate: output_every must be an integer >= 1, got "
+                         f"{output_every!r:.60}")
     scene = model.scene
     tol = 1e-5 * scene_size(scene) if tolerance is None else float(tolerance)
-    kind, law = torque_law(np.zeros(model.n_joints) if tau is None else tau, model.n_joints)
+    na = model.n_joints
+    kind, law = torque_law(np.zeros(na) if tau is None else tau, na)
+    name, params = engine_law(kind, law, na)
     st = _Stepper(model, tol, fo.reshape(-1))
     ns = st.ns
     if qo is None:
         qo = place_objects(scene, model.link_poses(q))
     rec = SceneRun.start(model, tol, dt)
 
-    def torque(t, x, V):
-        if kind == "constant":
-            return law
+    def torque(t):
         if kind == "time":
-            return check_tau(law(t), model.n_joints, t)
-        s = SceneState(t, x[:ns].copy(), V[:ns].copy(), x[ns:].reshape(-1, 3).copy(),
-                       V[ns:].reshape(-1, 3).copy())
-        return check_tau(law(t, s), model.n_joints, t)
+            return check_tau(law(t), na, t)
+        s = SceneState(t, st.x[:ns].copy(), st.V[:ns].copy(), st.x[ns:].reshape(-1, 3).copy(),
+                       st.V[ns:].reshape(-1, 3).copy())
+        return check_tau(law(t, s), na, t)
 
     st.x[:ns], st.x[ns:], st.V[:ns], st.V[ns:] = q, qo.reshape(-1), v, vo.reshape(-1)
     acc = st.acc
     rec.follow(acc)
     if st.call(0.0) != STEP_DONE:
         return rec.finish("penetration", 0.0, st.engine.refusal(st.out))
-    t = 0.0
-    tau_now = torque(t, st.x, st.V)
-    rec.sample(t, st.x, st.V, tau_now)
-    nstep = 0
+    cap = int(min(100_000, duration / dt / output_every + 4))
+    run = _Runner(st, duration, dt, name, params, int(output_every), cap)
+    if name == "constant":
+        st.tau[:na] = params
+    elif name == "caller":
+        st.tau[:na] = torque(0.0)
     report = resolve(progress)
     wall = time.perf_counter()
-    while duration - t > 1e-9 * dt:  # (rounding of the sum of the steps is no step)
+    args = run.args
+    while True:
+        code = run.go()
         if report is not None and time.perf_counter() - wall > PROGRESS_EVERY:
             wall = time.perf_counter()
-            report(f"simulate: t = {t:.4g} s of {duration:g} s, {nstep} steps, "
+            report(f"simulate: t = {args.t:.4g} s of {duration:g} s, {args.nstep} steps, "
                    f"{len(rec.events)} impacts")
-        h = min(dt, duration - t)
-        tau_now = torque(t, st.x, st.V)
-        st.tau[:model.n_joints] = tau_now
-        for _ in range(60):
-            status = st.call(h)
-            if status == STEP_NOT_CONVERGED:
-                return rec.finish("not_converged", t, "the step's solve did not converge "
-                                  f"at t = {t:.6g} s")
-            if status in (STEP_DONE, STEP_IMPACT_NOT_CONVERGED):
-                break
-            # the step's end refused where a pair overlaps beyond tol
-            refusal = st.engine.refusal(st.out1)
-            x, Vp = st.x.copy(), st.Vp.copy()
-            xp = x + h * Vp
-            # bounding circles apart: no overlap (the pairs farther than that need no distance)
-            bad = [(a, b, d) for a, b, d in st.engine.gaps(xp[:ns], xp[ns:], 2.0 * tol)
-                   if d < -tol]
-            if not bad:
-                return rec.finish("penetration", t, refusal)
-            # the time along the step where the first violating pair reaches -tol/4
-            gaps0 = {(a, b): st.engine.gap(x[:ns], x[ns:], a, b) for a, b, _ in bad}
-            s_hit = 1.0
-            for a, b, d1 in bad:
-                d0 = gaps0.get((a, b), math.inf)
-                target = min(-0.25 * tol, 0.5 * (min(d0, tol) - tol))
-                if not d0 > target:
-                    s_hit = 0.0
-                    break
-
-                def dist(s, a=a, b=b, target=target):
-                    xs = x + s * h * Vp
-                    return st.engine.gap(xs[:ns], xs[ns:], a, b) - target
-
-                s_hit = min(s_hit, brentq(dist, 0.0, 1.0, xtol=1e-12, rtol=1e-10))
-            h = h * s_hit
-            if h < H_MIN:
-                a, b, d1 = min(bad, key=lambda r: r[2])
-                return rec.finish("penetration", t,
-                                  f"{scene.body_name(*a)} and {scene.body_name(*b)} would "
-                                  f"penetrate by {-d1:.3g} m at t = {t:.6g} s (tolerance "
-                                  f"{tol:.3g} m)", bodies=(a, b))
-        else:
-            return rec.finish("penetration", t, f"the step could not be kept within the "
-                              f"contact tolerance at t = {t:.6g} s")
-        t += h
-        nstep += 1
-        if status == STEP_IMPACT_NOT_CONVERGED:
-            return rec.finish("not_converged", t, "the impact's solve did not converge at "
-                              f"t = {t:.6g} s")
-        if acc[ST_IMPACT]:
-            rec.impact(t, acc[ST_LOSS], st.rows().contacts, st.ilam, st.iinfo)
-        if nstep % output_every == 0 or duration - t <= 1e-9 * dt:
-            rec.sample(t, st.x, st.V, tau_now)
-    return rec.finish("completed", t, "")
-
+        if code == RUN_TAU:
+            st.tau[:na] = torque(args.t)
+        elif code == RUN_FULL:
+            rec.samples(run.take())
+        elif code == RUN_IMPACT:
+            rec.impact(args.t, acc[ST_LOSS], st.rows().contacts, st.ilam, st.iinfo)
+        elif code != RUN_PAUSE:
+            break
+    rec.samples(run.take())
+    t = args.t
+    if code == RUN_END:
+        return rec.finish("completed", t, "")
+    if code == RUN_BAD_TAU:
+        check_tau(st.tau[:na].copy(), na, t)  # raises: the law's torque is out of bounds
+    if code == RUN_NOT_CONVERGED:
+        return rec.finish("not_converged", t, "the step's solve did not converge "
+                          f"at t = {t:.6g} s")
+    if code == RUN_IMPACT_NOT_CONVERGED:
+        return rec.finish("not_converged", t, "the impact's solve did not converge at "
+                          f"t = {t:.6g} s")
+    if code == RUN_REFUSED:  # the step's end refused, but no pair overlaps beyond tol
+        return rec.finish("penetration", t, st.engine.refusal(st.out1))
+    if code == RUN_TOO_SHORT:
+        bad = args.bad
+        a, b = (BODY_KINDS[int(bad[0])], int(bad[1])), (BODY_KINDS[int(bad[2])], int(bad[3]))
+        return rec.finish("penetration", t,
+                          f"{scene.body_name(*a)} and {scene.body_name(*b)} would "
+                          f"penetrate by {-bad[4]:.3g} m at t = {t:.6g} s (tolerance "
+                          f"{tol:.3g} m)", bodies=(a, b))
+    if code == RUN_TRIES_OUT:
+        return rec.finish("penetration", t, f"the step could not be kept within the "
+                          f"contact tolerance at t = {t:.6g} s")
+    raise ValueError(f"core_scene_run returned {code}")

@@ -133,6 +133,20 @@ class SerpenoidPD:
             return None
         return np.broadcast_to(arr, (na,)).astype(float)
 
+    def engine_law(self, n_a: int):
+        """``("serpenoid_pd", parameters)``: the law as the compiled engine's run evaluates it
+        (``snakecg/engine/scene_run.c``, the formula of :meth:`__call__` and
+        :class:`Serpenoid`): amplitude, ``2 pi frequency``, offset, whether to clip, then the
+        joints' phases, ``kp``, ``kd`` and ``tau_max`` (n_a each); None for another model's
+        joint count."""
+        c = self.curve
+        if c.n_joints != n_a:
+            return None
+        clip = self.tau_max is not None
+        return "serpenoid_pd", np.concatenate((
+            [c.amplitude, 2.0 * math.pi * c.frequency, c.offset, 1.0 if clip else 0.0],
+            c._phases, self.kp, self.kd, self.tau_max if clip else np.zeros(n_a)))
+
     def __call__(self, t, state) -> np.ndarray:
         c = self.curve
         tau = self.kp * (c.angles(t) - state.q[3:]) + self.kd * (c.rates(t) - state.v[3:])
@@ -183,6 +197,20 @@ class TorqueTable:
     @property
     def n_joints(self) -> int:
         return int(self.torques.shape[1])
+
+    def engine_law(self, n_a: int):
+        """``("table" or "hold", parameters)``: the table as the compiled engine's run
+        evaluates it (``snakecg/engine/scene_run.c``, the rule of :meth:`__call__`): the
+        count k, the times, the torques row by row; None where the engine would not give the
+        answer of :meth:`__call__` and its checks (another joint count, a torque beyond the
+        force limit: the run's check then says so)."""
+        from ..engine.rules import FORCE_LIMIT
+
+        if self.n_joints != n_a or np.any(np.abs(self.torques) > FORCE_LIMIT):
+            return None
+        name = "table" if self.interpolation == "linear" else "hold"
+        return name, np.concatenate(([float(self.times.size)], self.times,
+                                     self.torques.reshape(-1)))
 
     def __call__(self, t) -> np.ndarray:
         ts, tq = self.times, self.torques
