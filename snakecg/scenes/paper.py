@@ -38,9 +38,7 @@ def simulate_with_geometry(model, q0, tau, duration, v0=None, *, q_obj0=None, v_
     paper's contact check at every sample (:func:`_checked`). ``q_obj0``, ``v_obj0``,
     ``f_obj``: the plate's pose, twist and a constant wrench on it, 3 numbers each. Returns
     a :class:`~snakecg.scenes.run_record.SceneRun`."""
-    from . import load_scene
-
-    general = load_scene(plate_scene(model.scene))
+    general = _plate_model(model)
 
     def one_object(name, value):
         if value is None:
@@ -58,10 +56,42 @@ def simulate_with_geometry(model, q0, tau, duration, v0=None, *, q_obj0=None, v_
         kwargs["dt"] = dt
     if output_every is not None:
         kwargs["output_every"] = output_every
-    return _checked(model.scene, general.simulate(q0, duration, **kwargs))
+    return _checked(model, general.simulate(q0, duration, **kwargs))
 
 
-def _checked(scene, run):
+def _plate_model(model):
+    """The loaded general scene of :func:`plate_scene`, made once per model (kept in its
+    data's derived constants)."""
+    from . import load_scene
+
+    derived = model.data().derived
+    got = derived.get("scenes.plate_model")
+    if got is None:
+        got = derived["scenes.plate_model"] = load_scene(plate_scene(model.scene))
+    return got
+
+
+def _deepest(model, check, run):
+    """``check.deepest`` at the run's samples: the compiled check of the paper's model
+    (``core_contact_depth``, ``snakecg/engine/geometry.c``) where it has one, else NumPy's."""
+    fn = getattr(getattr(model, "core", None), "contact_depth", None)
+    if fn is None:
+        return check.deepest(run.q, run.q_obj[:, 0])
+    from ..engine.binding import Geometry, address
+
+    ns = run.q.shape[1]
+    Y = np.zeros((len(run.t), 2 * (ns + 3) + 3))
+    Y[:, :ns], Y[:, ns:ns + 3] = run.q, run.q_obj[:, 0]
+    robot = model.scene.robot
+    length = np.ascontiguousarray(robot.length, dtype=float)
+    g = Geometry(mode=0, tol=check.tolerance, half=check.half, radius=check.radius,
+                 length=length.ctypes.data, com1=float(robot.com[0]))
+    depth, pair = np.empty(len(Y)), np.empty(len(Y))
+    fn(address(g), len(Y), Y.ctypes.data, depth.ctypes.data, pair.ctypes.data)
+    return depth, pair.astype(np.intp)
+
+
+def _checked(model, run):
     """``run`` after the paper's contact check (:class:`snakecg.geometry.ContactCheck`, every
     link against the plate and the links against each other) at every sample, with the run's
     tolerance: a completed run that overlaps beyond it at a sample says so (status
@@ -71,8 +101,8 @@ def _checked(scene, run):
 
     if run.status != "completed" or not len(run.t):
         return run
-    check = ContactCheck.of_scene(scene, tolerance=run.tolerance, radius=0.0)  # segments
-    depth, pair = check.deepest(run.q, run.q_obj[:, 0])
+    check = ContactCheck.of_scene(model.scene, tolerance=run.tolerance, radius=0.0)  # segments
+    depth, pair = _deepest(model, check, run)
     beyond = np.flatnonzero(depth > run.tolerance)
     if beyond.size:
         k = int(beyond[0])
