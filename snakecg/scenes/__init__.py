@@ -3,7 +3,8 @@ geometry, solved exactly at rest (see docs/how-to/scenes.md)."""
 
 from .description import GROUND_MODELS, GeneralScene, Ground, Obstacle, SceneObject
 
-__all__ = ["GROUND_MODELS", "GeneralScene", "Ground", "Obstacle", "SceneObject", "load_scene"]
+__all__ = ["GROUND_MODELS", "GeneralScene", "Ground", "Obstacle", "SceneObject", "load_scene",
+           "simulate_scene_batch"]
 
 
 def load_scene(scene, **kwargs):
@@ -15,3 +16,11 @@ def load_scene(scene, **kwargs):
     if isinstance(scene, Scene):
         scene = GeneralScene.from_scene(scene)
     return GeneralSceneModel(scene, **kwargs)
+
+
+def simulate_scene_batch(model, q0, duration, **kwargs):
+    """Many runs of one general scene in one call:
+    :func:`snakecg.scenes.run_batch.simulate_scene_batch`."""
+    from .run_batch import simulate_scene_batch as batch
+
+    return batch(model, q0, duration, **kwargs)

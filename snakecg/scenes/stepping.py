@@ -322,27 +322,35 @@ def simulate_scene(model, q0, duration, *, v0=None, tau=None, dt=1e-3, q_obj0=No
         elif code != RUN_PAUSE:
             break
     rec.samples(run.take())
-    t = args.t
-    if code == RUN_END:
-        return rec.finish("completed", t, "")
     if code == RUN_BAD_TAU:
-        check_tau(st.tau[:na].copy(), na, t)  # raises: the law's torque is out of bounds
+        check_tau(st.tau[:na].copy(), na, args.t)  # raises: the law's torque is out of bounds
+    status, message, bodies = ending(code, run, scene)
+    return rec.finish(status, args.t, message, bodies=bodies)
+
+
+def ending(code: int, run: _Runner, scene):
+    """``(status, message, bodies)`` of a run whose engine's loop returned ``code``
+    (``RUN_*``, the run's end): ``completed``, ``not_converged`` or ``penetration`` with its
+    bodies (``(kind, index)`` pairs, or None)."""
+    st, t, tol = run.st, run.args.t, run.st.engine.tol
+    if code == RUN_END:
+        return "completed", "", None
+    if code == RUN_BAD_TAU:
+        return "invalid_torque", (f"the torque law's value at t = {t:.6g} s is not finite or "
+                                  "beyond the force limit"), None
     if code == RUN_NOT_CONVERGED:
-        return rec.finish("not_converged", t, "the step's solve did not converge "
-                          f"at t = {t:.6g} s")
+        return "not_converged", f"the step's solve did not converge at t = {t:.6g} s", None
     if code == RUN_IMPACT_NOT_CONVERGED:
-        return rec.finish("not_converged", t, "the impact's solve did not converge at "
-                          f"t = {t:.6g} s")
+        return "not_converged", f"the impact's solve did not converge at t = {t:.6g} s", None
     if code == RUN_REFUSED:  # the step's end refused, but no pair overlaps beyond tol
-        return rec.finish("penetration", t, st.engine.refusal(st.out1))
+        return "penetration", st.engine.refusal(st.out1), None
     if code == RUN_TOO_SHORT:
-        bad = args.bad
+        bad = run.args.bad
         a, b = (BODY_KINDS[int(bad[0])], int(bad[1])), (BODY_KINDS[int(bad[2])], int(bad[3]))
-        return rec.finish("penetration", t,
-                          f"{scene.body_name(*a)} and {scene.body_name(*b)} would "
-                          f"penetrate by {-bad[4]:.3g} m at t = {t:.6g} s (tolerance "
-                          f"{tol:.3g} m)", bodies=(a, b))
+        return "penetration", (f"{scene.body_name(*a)} and {scene.body_name(*b)} would "
+                               f"penetrate by {-bad[4]:.3g} m at t = {t:.6g} s (tolerance "
+                               f"{tol:.3g} m)"), (a, b)
     if code == RUN_TRIES_OUT:
-        return rec.finish("penetration", t, f"the step could not be kept within the "
-                          f"contact tolerance at t = {t:.6g} s")
+        return "penetration", ("the step could not be kept within the contact tolerance at "
+                               f"t = {t:.6g} s"), None
     raise ValueError(f"core_scene_run returned {code}")
