@@ -106,14 +106,15 @@ def _laws(tau, n_a: int, runs: int | None):
     return laws, (len(laws) if runs in (None, 1) else runs)
 
 
-def _runs_of(q0, v0, q_obj0, ns, no) -> int | None:
-    """The runs that ``q0``, ``v0``, ``q_obj0`` ask for (None: one row each)."""
+def _runs_of(q0, v0, q_obj0, v_obj0, ns, no) -> int | None:
+    """The runs that ``q0``, ``v0``, ``q_obj0``, ``v_obj0`` ask for (None: one row each)."""
     found = set()
-    for value, size in ((q0, ns), (v0, ns), (q_obj0, 3 * no)):
+    for value, size in ((q0, ns), (v0, ns), (q_obj0, 3 * no), (v_obj0, 3 * no)):
         if value is not None and size and np.size(value) > size and np.size(value) % size == 0:
             found.add(np.size(value) // size)
     if len(found) > 1:
-        raise InputError(f"simulate_scene_batch: q0, v0 and q_obj0 ask for different numbers "
+        raise InputError(f"simulate_scene_batch: q0, v0, q_obj0 and v_obj0 ask for different "
+                         f"numbers "
                          f"of runs ({sorted(found)})")
     return found.pop() if found else None
 
@@ -130,7 +131,7 @@ def simulate_scene_batch(model, q0, duration, *, v0=None, tau=None, dt=1e-3, q_o
     runs in :func:`~snakecg.scenes.stepping.simulate_scene` only). ``f_obj``, ``dt`` and
     ``tolerance`` are the batch's. Returns a :class:`SceneBatch`."""
     ns, no, na = model.n_coordinates, model.scene.n_objects, model.n_joints
-    runs = _runs_of(q0, v0, q_obj0, ns, no)
+    runs = _runs_of(q0, v0, q_obj0, v_obj0, ns, no)
     laws, runs = _laws(tau, na, runs)
     runs = runs or 1
     if runs > MAX_RUNS:

@@ -191,7 +191,7 @@ class _Runner:
     pairs' distances of the root finding (their own call and buffers)."""
 
     def __init__(self, st: _Stepper, duration, dt, law: str, params, every: int, cap: int,
-                 stop_at_impacts: bool = True, pause: int = PAUSE_STEPS):
+                 stop_at_impacts: bool = True, pause: int | None = None):
         from ..engine.rules import FORCE_LIMIT
 
         eng, model = st.engine, st.model
@@ -208,8 +208,9 @@ class _Runner:
         self.args = SceneRunCall(st._address, address(self.gs), eng.gcap, float(duration),
                                  float(dt), H_MIN, FORCE_LIMIT, LAWS[law], self.lp.size,
                                  self.lp.ctypes.data, int(every), self.rec.ctypes.data,
-                                 self.rec.shape[0] if every else 0, 0, int(pause),
+                                 self.rec.shape[0] if every else 0, 0, 0,
                                  int(stop_at_impacts), self.work.ctypes.data)
+        self.args.pause = PAUSE_STEPS if pause is None else int(pause)
         self._address = address(self.args)
         self._run = model.core.scene_run
 
@@ -309,7 +310,8 @@ def simulate_scene(model, q0, duration, *, v0=None, tau=None, dt=1e-3, q_obj0=No
     args = run.args
     while True:
         code = run.go()
-        if report is not None and time.perf_counter() - wall > PROGRESS_EVERY:
+        if code == RUN_PAUSE and report is not None and \
+                time.perf_counter() - wall > PROGRESS_EVERY:
             wall = time.perf_counter()
             report(f"simulate: t = {args.t:.4g} s of {duration:g} s, {args.nstep} steps, "
                    f"{len(rec.events)} impacts")
