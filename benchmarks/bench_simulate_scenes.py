@@ -8,9 +8,14 @@ kd 0.3) from the serpenoid's shape, for ``--duration`` seconds (default 2).
 
 * **snakecg**: ``model.simulate`` at ``dt = 1e-3`` (velocity-level steps on the exact solve,
   contact onset by root finding); its penetration bound is its contact tolerance (1e-5 of the
-  scene's size), held on every step. The time is split by a profile into the engine's step
-  (one C call: bias forces, rows, the exact solve, the step's work), the root finding, the
-  torque law (Python) and the record; and the exact solve's share of the engine's step.
+  scene's size), held on every step. The run's loop is the engine's (``scene_run.c``, the
+  serpenoid PD law evaluated in C); beside it the same law as a callable of the caller's own
+  (the loop returns to Python for the torque at every step), the exact solve's share of the
+  engine's step and the figure the rest of the step would reach were the solve free; and a
+  batch of 8 runs (gait amplitudes) in one ``simulate_scene_batch`` call.
+* **the paper's push**: ``model.simulate(..., contacts="geometry")`` of the paper's 3-joint
+  scene (kappa 100, q0 = (0, 0, 0, 30, -45, 60) deg, tau = (0.05, 0, -0.02) N m, 0.5 s), as
+  times real time, the first call in the process apart (imports, the plate model's load).
 * **MuJoCo**: ``mj_step`` in a Python loop on tests/mujoco_pegs.py's matched model (COM
   spheres on a condim-3 floor, noslip 10, frictionless capsule-peg contacts, solref
   ``(2 timestep, 1)``) at the time steps of ``STEPS``; reported: the deepest capsule-peg or
@@ -28,10 +33,8 @@ The figure is simulated seconds per CPU second (``time.process_time``, best of
 from __future__ import annotations
 
 import argparse
-import cProfile
 import os
 import platform
-import pstats
 import sys
 import time
 from pathlib import Path
@@ -83,32 +86,16 @@ def run_mujoco(scene, model, q0, gait, ts, duration, measure: bool):
     return depth if measure else cpu, model.com(mj.state()[0])
 
 
-def split(prof) -> dict:
-    """CPU seconds by where they go (inclusive times of the top functions)."""
-    st = pstats.Stats(prof)
-    out = {"engine step (C: bias forces, rows, solve, work)": 0.0,
-           "root finding (engine distances, brentq)": 0.0, "torque law": 0.0, "record": 0.0}
-    for (file, _, name), (_, _, _, ct, _) in st.stats.items():
-        if file.endswith("stepping.py") and name == "call":
-            out["engine step (C: bias forces, rows, solve, work)"] += ct
-        elif file.endswith("contacts.py") and name in ("gaps", "gap"):
-            out["root finding (engine distances, brentq)"] += ct
-        elif file.endswith("stepping.py") and name == "torque":
-            out["torque law"] += ct
-        elif file.endswith("run_record.py") and name in ("sample", "impact"):
-            out["record"] += ct
-    return out
-
-
 def solve_share(model, run) -> float:
     """The exact solve's share of the engine's step: the step, and the solve alone on the
     same problem (core_scene_solve_b), timed from one state of the run, 2000 times each."""
     from snakecg.scenes.solve import INFO
     from snakecg.scenes.stepping import _Stepper
 
-    st = _Stepper(model, run.tolerance, np.zeros(0))
+    st = _Stepper(model, run.tolerance, np.zeros(3 * model.scene.n_objects))
     k = len(run.t) // 2
-    x0, V0 = run.q[k].copy(), run.v[k].copy()
+    x0 = np.concatenate((run.q[k], run.q_obj[k].reshape(-1)))
+    V0 = np.concatenate((run.v[k], run.v_obj[k].reshape(-1)))
     st.x[:], st.V[:] = x0, V0
     st.call(0.0)
     m, nb = int(st.out[2]), int(st.out[3])
@@ -139,6 +126,54 @@ def solve_share(model, run) -> float:
     return t_solve / t_step
 
 
+def batch(model, q0, duration, repeat) -> None:
+    """8 runs (gait amplitudes 0.3 .. 0.65) in one simulate_scene_batch call."""
+    from snakecg.scenes import simulate_scene_batch
+
+    gaits = [serpenoid_controller(model, amplitude=amp, frequency=1.0,
+                                  phase_lag=2 * np.pi / 5, kp=10.0, kd=0.3, tau_max=None)
+             for amp in np.linspace(0.3, 0.65, 8)]
+    best = np.inf
+    for _ in range(repeat):
+        t0 = time.process_time()
+        out = simulate_scene_batch(model, q0, duration, tau=gaits)
+        best = min(best, time.process_time() - t0)
+    print(f"  batch of 8 runs: {8 * duration / best:8.3f} simulated s per CPU s "
+          f"({int(out.completed.sum())} completed, SNAKECG_THREADS "
+          f"{os.environ.get('SNAKECG_THREADS', 'unset')})")
+
+
+def paper_push(repeat) -> None:
+    """The paper's push with contacts from geometry, times real time (CPU)."""
+    import snakecg
+
+    q = np.deg2rad([0.0, 0.0, 0.0, 30.0, -45.0, 60.0])
+    tau = np.array([0.05, 0.0, -0.02])
+    sm = snakecg.load(snakecg.Scene(snakecg.Robot(joints=3), scenario="wheels", kappa=100.0))
+    t0 = time.process_time()
+    run = sm.simulate(q, tau, 0.5, contacts="geometry")
+    first = time.process_time() - t0
+    best = np.inf
+    for _ in range(max(repeat, 20)):
+        t0 = time.process_time()
+        sm.simulate(q, tau, 0.5, contacts="geometry")
+        best = min(best, time.process_time() - t0)
+    print(f"the paper's push (3 joints, contacts='geometry', 0.5 s): {run.status}, "
+          f"{run.steps} steps, {0.5 / best:.0f} x real time ({best * 1e3:.2f} ms; the model's "
+          f"first call, the plate model's load with it, {first * 1e3:.0f} ms)")
+    from snakecg.scenes.paper import _plate_model
+
+    plate = _plate_model(sm)
+    steps = np.inf
+    for _ in range(max(repeat, 20)):
+        t0 = time.process_time()
+        prun = plate.simulate(q, 0.5, tau=tau)
+        steps = min(steps, time.process_time() - t0)
+    share = solve_share(plate, prun)
+    print(f"  of it the stepping {steps * 1e3:.2f} ms, the exact solve {100 * share:.0f} % of "
+          f"a step; were the solve free: {0.5 / (best - share * steps):.0f} x real time")
+
+
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--duration", type=float, default=2.0)
@@ -156,19 +191,20 @@ def main() -> None:
     print(f"snakecg: {run.status}, {run.steps} steps, {len(run.events)} impacts, deepest "
           f"overlap {worst:.3g} m (tolerance {run.tolerance:.3g} m), COM moved "
           f"{np.hypot(*(com[-1] - com[0])):.4f} m")
-    print(f"  {a.duration / best:8.3f} simulated s per CPU s ({best / run.steps * 1e3:.2f} ms "
-          f"per step)")
-    prof = cProfile.Profile()
-    prof.enable()
-    model.simulate(q0, min(a.duration, 0.5), tau=gait, dt=1e-3)
-    prof.disable()
-    total = pstats.Stats(prof).total_tt
-    parts = split(prof)
-    print("  where the time goes (profiled 0.5 s run): " + ", ".join(
-        f"{k} {100 * v / total:.0f} %" for k, v in parts.items())
-        + f", the rest (Python loop) {100 * (1 - sum(parts.values()) / total):.0f} %")
-    print(f"  the exact solve's share of the engine's step: "
-          f"{100 * solve_share(model, run):.0f} %")
+    print(f"  {a.duration / best:8.3f} simulated s per CPU s ({best / run.steps * 1e3:.3f} ms "
+          f"per step), the law in the engine's loop")
+    caller = np.inf
+    for _ in range(a.repeat):
+        t0 = time.process_time()
+        model.simulate(q0, a.duration, tau=lambda t, state: gait(t, state), dt=1e-3)
+        caller = min(caller, time.process_time() - t0)
+    print(f"  {a.duration / caller:8.3f} simulated s per CPU s, the law a callable of the "
+          "caller's own (Python at every step)")
+    share = solve_share(model, run)
+    print(f"  the exact solve's share of the engine's step: {100 * share:.0f} %; were it free: "
+          f"{a.duration / (best * (1 - share)):.1f} simulated s per CPU s")
+    batch(model, q0, a.duration, a.repeat)
+    paper_push(a.repeat)
     try:
         import mujoco
     except ImportError:
