@@ -87,16 +87,43 @@ def test_the_engines_torque_table_is_numpys_interpolation(pegs, interpolation):
     np.testing.assert_allclose(run.tau[1:], ref, rtol=1e-12, atol=1e-15)
 
 
+def test_the_serpenoid_pd_call_is_hiroses_formula(pegs):
+    """SerpenoidPD called from Python (the engine's law, core_scene_law; NumPy's copy where
+    there is no compiled engine, as after pickling) against the formula written here."""
+    import pickle
+
+    from snakecg.scenes.stepping import SceneState
+
+    scene, model, q0 = pegs
+    rng = np.random.default_rng(7)
+    gait = serpenoid_controller(model, amplitude=0.4, frequency=0.7, phase_lag=1.1,
+                                offset=-0.2, kp=np.linspace(1, 3, 10), kd=0.2, tau_max=0.3)
+    plain = pickle.loads(pickle.dumps(gait))
+    assert gait._law is not None and plain._law is None
+    for _ in range(20):
+        t, q, v = rng.uniform(0, 3), rng.normal(size=13), rng.normal(size=13)
+        ref = _hirose_pd(np.array([t]), q[None], v[None], 0.4, 0.7, 1.1, -0.2,
+                         np.linspace(1, 3, 10), 0.2, 0.3)[0]
+        none = np.zeros((0, 3))
+        for law in (gait, plain):
+            np.testing.assert_allclose(law(t, SceneState(t, q, v, none, none)), ref,
+                                       rtol=1e-12, atol=1e-14)
+
+
 def test_the_engines_loop_equals_the_callers_law_path(pegs):
-    """The same law evaluated by the engine and, as a callable of the caller's own, by Python
-    at each step (the loop returns for it): the same run to 1e-12 (in fact bit for bit: the
-    same arithmetic, libm's sin and cos on both sides here). The run has impacts and steps
-    shortened by the onsets' root finding."""
+    """The serpenoid PD law evaluated by the engine, and the same law written here in NumPy as
+    a callable of the caller's own (the loop returns to Python for it at each step): the same
+    run to 1e-12. The run has impacts and steps shortened by the onsets' root finding."""
     scene, model, q0 = pegs
     gait = serpenoid_controller(model, amplitude=0.5, frequency=1.0, phase_lag=2 * np.pi / 5,
                                 kp=10.0, kd=0.3, tau_max=None)
     run = model.simulate(q0, 0.4, tau=gait)
-    ref = model.simulate(q0, 0.4, tau=lambda t, state: gait(t, state))
+
+    def numpy_law(t, state):
+        return _hirose_pd(np.array([t]), state.q[None], state.v[None], 0.5, 1.0,
+                          2 * np.pi / 5, 0.0, 10.0, 0.3, None)[0]
+
+    ref = model.simulate(q0, 0.4, tau=numpy_law)
     assert run.status == ref.status == "completed"
     assert run.events and run.steps > 400  # impacts; onsets shortened steps
     assert run.steps == ref.steps and len(run.events) == len(ref.events)

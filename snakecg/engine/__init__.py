@@ -50,10 +50,12 @@ class Core:
         self.scene_step = lib.entry_or_none("core_scene_step")
         """scene_step.c's ``core_scene_step``: one time step of a general scene (a
         ``SceneStep``)."""
-        self.scene_run, self.scene_run_batch = (
-            lib.entry_or_none(name) for name in ("core_scene_run", "core_scene_run_batch"))
+        self.scene_run, self.scene_run_batch, self.scene_law = (
+            lib.entry_or_none(name) for name in ("core_scene_run", "core_scene_run_batch",
+                                                 "core_scene_law"))
         """scene_run.c's ``core_scene_run``: a general scene's run, many steps per call (a
-        ``SceneRunCall``), and ``core_scene_run_batch``: many runs to their ends."""
+        ``SceneRunCall``), ``core_scene_run_batch``: many runs to their ends, and
+        ``core_scene_law``: a torque law the runs evaluate (the serpenoid PD law's home)."""
         self.scene_solve_b = lib.entry_or_none("core_scene_solve_b")
         """scene_solve.c's ``core_scene_solve_b``: the same with row offsets (``w = A a + c``),
         the velocity-level step of :mod:`snakecg.scenes.stepping`."""

@@ -27,6 +27,7 @@ __all__ = [
     "SceneStateCall",
     "SceneStep",
     "SceneRunCall",
+    "SCENE_LAWS",
     "Segment",
     "Settle",
     "address",
@@ -79,6 +80,7 @@ PROTOTYPES: dict[str, tuple[list, object]] = {
     "core_scene_step": ([_P], _INT),
     "core_scene_run": ([_P], _INT),
     "core_scene_run_batch": ([_P, _I, _P], _INT),
+    "core_scene_law": ([_I, _P, _D, _P, _P, _D, _P], _INT),
 }
 #: A generated function's batched driver: (n, inputs, strides, outputs).
 _BATCH = ([_I, ctypes.POINTER(_P), ctypes.POINTER(_I), ctypes.POINTER(_P)], _INT)
@@ -204,6 +206,10 @@ class SceneStep(ctypes.Structure):
                 ("A1", _P), ("par1", _P), ("out1", _P), ("kind1", _P), ("start1", _P),
                 ("Vp", _P), ("lam", _P), ("info", _P), ("ilam", _P), ("iinfo", _P),
                 ("acc", _P), ("status", _I)]
+
+
+#: the torque laws ``core_scene_run`` and ``core_scene_law`` evaluate (scene_run.c's LAW_*)
+SCENE_LAWS = {"constant": 0, "table": 1, "hold": 2, "serpenoid_pd": 3, "caller": 4}
 
 
 class SceneRunCall(ctypes.Structure):

@@ -57,14 +57,15 @@ typedef struct {
   double bad[5];
 } sc_scene_run;
 
-/* The law's torque at t from the state in st (LAW_CALLER: left as the caller wrote it): 0, or
- * RUN_BAD_TAU where one is not finite or beyond the limit. */
-static int law_tau(const sc_scene_run *r, double t) {
-  const double *p = r->lp, *q = r->st->x, *v = r->st->V;
-  double *tau = (double *)r->st->tau;
+/* A torque law (LAW_TABLE, LAW_HOLD, LAW_SERPENOID_PD with its parameters p) at t and the
+ * state q, v (n_s each) into tau (NA); LAW_CONSTANT: tau left as it is. Returns 0, or
+ * RUN_BAD_TAU where a torque is not finite or beyond limit. The serpenoid PD law's one
+ * compiled home (snakecg/simulate/gaits.py's SerpenoidPD calls it through the binding). */
+int SNAKECG_EXPORT(core_scene_law)(sc_int law, const double *p, double t, const double *q,
+                                   const double *v, double limit, double *tau) {
   sc_int j, na = SNAKECG_NS - 3;
-  if (r->law == LAW_CONSTANT) return 0;
-  if (r->law == LAW_TABLE || r->law == LAW_HOLD) { /* k, times (k), torques (k x na) */
+  if (law == LAW_CONSTANT) return 0;
+  if (law == LAW_TABLE || law == LAW_HOLD) { /* k, times (k), torques (k x na) */
     sc_int k = (sc_int)p[0], lo = 0, hi = k, i;
     const double *ts = p + 1, *tq = p + 1 + k;
     while (lo < hi) { /* the first time > t: numpy's searchsorted(side="right") */
@@ -74,13 +75,13 @@ static int law_tau(const sc_scene_run *r, double t) {
     }
     i = lo - 1;
     if (i < 0) i = 0;
-    if (lo == 0 || i >= k - 1 || r->law == LAW_HOLD) {
+    if (lo == 0 || i >= k - 1 || law == LAW_HOLD) {
       for (j = 0; j < na; ++j) tau[j] = tq[i * na + j];
     } else {
       double s = (t - ts[i]) / (ts[i + 1] - ts[i]);
       for (j = 0; j < na; ++j) tau[j] = (1.0 - s) * tq[i * na + j] + s * tq[(i + 1) * na + j];
     }
-  } else if (r->law == LAW_SERPENOID_PD) {
+  } else if (law == LAW_SERPENOID_PD) {
     /* amplitude, 2 pi frequency, offset, clip (0/1); phases, kp, kd, tau_max (na each) */
     const double a = p[0], w = p[1], off = p[2], *ph = p + 4, *kp = ph + na, *kd = kp + na,
                  *tm = kd + na;
@@ -93,8 +94,14 @@ static int law_tau(const sc_scene_run *r, double t) {
     }
   }
   for (j = 0; j < na; ++j)
-    if (!(fabs(tau[j]) <= r->tau_limit)) return RUN_BAD_TAU;
+    if (!(fabs(tau[j]) <= limit)) return RUN_BAD_TAU;
   return 0;
+}
+
+/* The run's law at t from the state in its step (LAW_CALLER: the caller wrote the torque). */
+static int law_tau(const sc_scene_run *r, double t) {
+  return SNAKECG_EXPORT(core_scene_law)(r->law, r->lp, t, r->st->x, r->st->V, r->tau_limit,
+                                        (double *)r->st->tau);
 }
 
 /* One record row at the step's state. */

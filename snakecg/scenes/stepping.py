@@ -45,7 +45,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..engine.binding import SceneRunCall, SceneStateCall, SceneStep, address
+from ..engine.binding import SCENE_LAWS, SceneRunCall, SceneStateCall, SceneStep, address
 from ..errors import BuildError, InputError
 from .contacts import Rows, StateRows, place_objects, read_rows
 from .packing import BODY_KINDS, scene_size
@@ -64,8 +64,6 @@ IMPACT_SPEED = 1e-9
 PROGRESS_EVERY = 5.0
 #: the engine's run returns after this many steps (progress lines, Ctrl-C)
 PAUSE_STEPS = 20_000
-#: the torque laws the engine evaluates (scene_run.c's LAW_*), by the laws' names
-LAWS = {"constant": 0, "table": 1, "hold": 2, "serpenoid_pd": 3, "caller": 4}
 #: why the engine's run returned (scene_run.c's RUN_*)
 (RUN_END, RUN_TAU, RUN_FULL, RUN_IMPACT, RUN_PAUSE, RUN_NOT_CONVERGED, RUN_IMPACT_NOT_CONVERGED,
  RUN_REFUSED, RUN_TOO_SHORT, RUN_TRIES_OUT, RUN_BAD_TAU) = range(11)
@@ -206,7 +204,7 @@ class _Runner:
         self.rec = np.zeros((max(1, cap) if every else 1, self.width))
         self.work = np.zeros(2 * st.n + 5 * eng.gcap)
         self.args = SceneRunCall(st._address, address(self.gs), eng.gcap, float(duration),
-                                 float(dt), H_MIN, FORCE_LIMIT, LAWS[law], self.lp.size,
+                                 float(dt), H_MIN, FORCE_LIMIT, SCENE_LAWS[law], self.lp.size,
                                  self.lp.ctypes.data, int(every), self.rec.ctypes.data,
                                  self.rec.shape[0] if every else 0, 0, 0,
                                  int(stop_at_impacts), self.work.ctypes.data)

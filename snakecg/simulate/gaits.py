@@ -23,6 +23,7 @@ import math
 import numpy as np
 
 from .._inputs import to_float
+from ..engine.binding import SCENE_LAWS
 from ..errors import InputError
 
 __all__ = ["Serpenoid", "SerpenoidPD", "TorqueTable", "serpenoid_controller"]
@@ -116,6 +117,15 @@ class SerpenoidPD:
         if problems:
             raise InputError("; ".join(problems))
         self.curve = curve
+        # the law's compiled home (scene_run.c's core_scene_law), where the model has one
+        self._law = getattr(getattr(model, "core", None), "scene_law", None)
+        self._params = self.engine_law(na)[1]
+        self._ns = na + 3
+
+    def __getstate__(self):
+        state = self.__dict__.copy()
+        state["_law"] = None  # a compiled entry point does not pickle: NumPy's copy then
+        return state
 
     @staticmethod
     def _box(model, tau_max, na: int, problems: list[str]):
@@ -148,6 +158,14 @@ class SerpenoidPD:
             c._phases, self.kp, self.kd, self.tau_max if clip else np.zeros(n_a)))
 
     def __call__(self, t, state) -> np.ndarray:
+        q = np.ascontiguousarray(state.q, dtype=float)
+        v = np.ascontiguousarray(state.v, dtype=float)
+        if self._law is not None and q.shape == v.shape == (self._ns,):
+            tau = np.empty(self._ns - 3)
+            self._law(SCENE_LAWS["serpenoid_pd"], self._params.ctypes.data, float(t),
+                      q.ctypes.data, v.ctypes.data, math.inf, tau.ctypes.data)
+            return tau
+        # without a compiled engine (backend="casadi"): the same formula in NumPy
         c = self.curve
         tau = self.kp * (c.angles(t) - state.q[3:]) + self.kd * (c.rates(t) - state.v[3:])
         if self.tau_max is not None:
