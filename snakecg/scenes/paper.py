@@ -77,17 +77,21 @@ def _deepest(model, check, run):
     fn = getattr(getattr(model, "core", None), "contact_depth", None)
     if fn is None:
         return check.deepest(run.q, run.q_obj[:, 0])
-    from ..engine.binding import Geometry, address
+    derived = model.data().derived
+    got = derived.get("scenes.plate_check")  # the check's shapes, read only: made once
+    if got is None:
+        from ..engine.binding import Geometry, address
 
+        robot = model.scene.robot
+        length = np.ascontiguousarray(robot.length, dtype=float)
+        g = Geometry(mode=0, tol=check.tolerance, half=check.half, radius=check.radius,
+                     length=length.ctypes.data, com1=float(robot.com[0]))
+        got = derived["scenes.plate_check"] = (address(g), g, length)
     ns = run.q.shape[1]
     Y = np.zeros((len(run.t), 2 * (ns + 3) + 3))
     Y[:, :ns], Y[:, ns:ns + 3] = run.q, run.q_obj[:, 0]
-    robot = model.scene.robot
-    length = np.ascontiguousarray(robot.length, dtype=float)
-    g = Geometry(mode=0, tol=check.tolerance, half=check.half, radius=check.radius,
-                 length=length.ctypes.data, com1=float(robot.com[0]))
     depth, pair = np.empty(len(Y)), np.empty(len(Y))
-    fn(address(g), len(Y), Y.ctypes.data, depth.ctypes.data, pair.ctypes.data)
+    fn(got[0], len(Y), Y.ctypes.data, depth.ctypes.data, pair.ctypes.data)
     return depth, pair.astype(np.intp)
 
 

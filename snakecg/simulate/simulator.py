@@ -389,17 +389,15 @@ _PAPER_ONLY = ("rho", "control_period", "method", "rtol", "atol", "max_step", "f
 def _with_geometry(model, q0, tau, duration, v0, given):
     """:func:`simulate` with ``contacts="geometry"``, its arguments ``given``: the paper's
     options must be left at their defaults."""
-    import inspect
-
     from ..kinds import is_scene_model
     from ..scenes.paper import simulate_with_geometry
 
     if not is_scene_model(model):
         raise InputError("contacts='geometry' simulates a loaded snakecg.Scene "
                          f"(snakecg.load(scene)), got {type(model).__name__}")
-    defaults = inspect.signature(simulate).parameters
+    defaults = simulate.__kwdefaults__  # the paper's options are keyword-only
     for name in _PAPER_ONLY:
-        value, default = given[name], defaults[name].default
+        value, default = given[name], defaults[name]
         if value is not default and not (isinstance(value, (str, float, int))
                                          and value == default):
             raise InputError(f"{name} is an option of contacts='paper' (the paper's model "
