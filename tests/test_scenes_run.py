@@ -141,6 +141,23 @@ def test_the_engines_loop_equals_the_callers_law_path(pegs):
     assert sparse.summary["energy"] == run.summary["energy"]
 
 
+def test_a_run_handed_over_in_pieces_is_the_same_run(pegs, monkeypatch):
+    """The engine's loop returns for a full record buffer (7 rows) and for pauses (every 5
+    steps), and goes on exactly where it stopped: the same record as one long call."""
+    import snakecg.scenes.stepping as stepping
+
+    scene, model, q0 = pegs
+    gait = serpenoid_controller(model, amplitude=0.5, frequency=1.0, phase_lag=2 * np.pi / 5,
+                                kp=10.0, kd=0.3, tau_max=None)
+    whole = model.simulate(q0, 0.2, tau=gait)
+    monkeypatch.setattr(stepping, "RECORD_ROWS", 7)
+    monkeypatch.setattr(stepping, "PAUSE_STEPS", 5)
+    pieces = model.simulate(q0, 0.2, tau=gait)
+    for k in FIELDS:
+        np.testing.assert_array_equal(getattr(pieces, k), getattr(whole, k), err_msg=k)
+    assert pieces.summary == whole.summary and len(whole.t) == whole.steps + 1 > 200
+
+
 def test_a_subclassed_law_is_the_callers_own(pegs):
     """A subclass of SerpenoidPD may change the law: the engine does not evaluate it."""
     scene, model, q0 = pegs

@@ -64,6 +64,8 @@ IMPACT_SPEED = 1e-9
 PROGRESS_EVERY = 5.0
 #: the engine's run returns after this many steps (progress lines, Ctrl-C)
 PAUSE_STEPS = 20_000
+#: the engine's record buffer: rows kept before the run returns to hand them over
+RECORD_ROWS = 4096
 #: why the engine's run returned (scene_run.c's RUN_*)
 (RUN_END, RUN_TAU, RUN_FULL, RUN_IMPACT, RUN_PAUSE, RUN_NOT_CONVERGED, RUN_IMPACT_NOT_CONVERGED,
  RUN_REFUSED, RUN_TOO_SHORT, RUN_TRIES_OUT, RUN_BAD_TAU) = range(11)
@@ -297,7 +299,7 @@ def simulate_scene(model, q0, duration, *, v0=None, tau=None, dt=1e-3, q_obj0=No
     rec.follow(acc)
     if st.call(0.0) != STEP_DONE:
         return rec.finish("penetration", 0.0, st.engine.refusal(st.out))
-    cap = int(min(100_000, duration / dt / output_every + 4))
+    cap = int(min(RECORD_ROWS, duration / dt / output_every + 4))
     run = _Runner(st, duration, dt, name, params, int(output_every), cap)
     if name == "constant":
         st.tau[:na] = params
