@@ -231,10 +231,10 @@ def test_a_batch_of_discs_stops_at_coulombs_distances():
 
 
 def test_a_batch_of_discs_at_a_wall_has_one_inelastic_impact_each():
-    """A frictionless disc thrown at a wall at u stops on it (an inelastic impact: its normal
-    velocity lost) at the wall's distance less its radius (within u h: the contact's row
-    holds the gap from closing beyond zero over the step before the impact), nothing deeper
-    than the tolerance."""
+    """A frictionless disc thrown at a wall stops on it with one inelastic impact, at the
+    wall's distance less its radius: within the tolerance, or off the wall by the gap
+    stabilisation's velocity (an onset located at -tol / 4 is pushed back at tol / (4 h),
+    1 mm/s here, which nothing stops on a frictionless ground) times the time left."""
     disc = SceneObject(shape="disc", radius=0.05, mass=1.0, pose=(0.0, 0.0, 0.0))
     wall = Obstacle(shape="wall", point=(0.3, 0.0), normal=(-1.0, 0.0))
     scene = GeneralScene(snakecg.Robot(joints=1), ground=Ground(model="frictionless"),
@@ -245,7 +245,8 @@ def test_a_batch_of_discs_at_a_wall_has_one_inelastic_impact_each():
     batch = simulate_scene_batch(model, np.array([-2.0, 0.0, 0.0, 0.0]), 0.4, v_obj0=v_obj0)
     assert batch.completed.all() and (batch.impacts == 1).all()
     gap = 0.25 - batch.q_obj_end[:, 0, 0]
-    assert np.all(gap >= -batch.tolerance) and np.all(gap <= v_obj0[:, 0, 0] * 1e-3)
+    assert np.all(gap >= -batch.tolerance)
+    assert np.all(gap <= batch.tolerance + batch.tolerance / 4 / 1e-3 * 0.4)
     np.testing.assert_array_equal(batch.object_displacement[:, 0, 0], -gap + 0.25)
     assert (batch.deepest_overlap <= batch.tolerance).all()
 
