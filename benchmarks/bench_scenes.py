@@ -207,10 +207,8 @@ def main() -> None:
     try:
         import mujoco
 
-        from snakecg.scenes.contacts import place_objects
-
         m = mujoco.MjModel.from_xml_string(mjcf(scene, model.link_poses(q),
-                                                place_objects(scene, model.link_poses(q))))
+                                                model.object_poses(q)))
         d = mujoco.MjData(m)
         mujoco.mj_forward(m, d)
         tm = best_of(lambda: [mujoco.mj_forward(m, d) for _ in range(a.single)],

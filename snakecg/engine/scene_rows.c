@@ -166,10 +166,8 @@ static sc_int ground_rows(sc_scene_work *sw, sc_int nc) {
     sw->par[3 * bk] = gb[3];
     sw->par[3 * bk + 1] = gb[4];
     sw->par[3 * bk + 2] = gb[5];
-    for (j = type == GB_OBJECT ? 0 : SNAKECG_NS; j < n; ++j) { /* the columns not set below */
-      r0[j] = 0.0;
-      if (type != GB_WHEEL) r1[j] = 0.0;
-    }
+    for (j = type == GB_OBJECT ? 0 : SNAKECG_NS; j < n; ++j) r0[j] = 0.0; /* not set below */
+    for (j = type == GB_OBJECT ? 0 : SNAKECG_NS; type != GB_WHEEL && j < n; ++j) r1[j] = 0.0;
     if (type == GB_OBJECT) {
       r0[SNAKECG_NS + 3 * b] = 1.0;
       r1[SNAKECG_NS + 3 * b + 1] = 1.0;
@@ -368,10 +366,10 @@ static int work_alloc(sc_scene_work *sw, const double *pk, sc_int ccap, sc_int m
   }
   nd = mcap * n + 2 * n * n + 7 * n + 3 * mcap + 3 * mcap + 5 * SNAKECG_NL +
        3 * SNAKECG_NL * SNAKECG_NS + SNAKECG_NS * SNAKECG_NS + 3 * sw->nbody + 3 * sw->no + 8;
-  sw->A = d = (double *)calloc((size_t)(nd + most[3] + 1) * sizeof(double) +
-                                   (size_t)(most[0] + most[1] + 2) * sizeof(double *) +
-                                   (size_t)(2 * mcap + n + 2 + most[2] + 1) * sizeof(sc_int) +
-                                   (size_t)(sw->nbody + 1) * sizeof(sc_shape), 1);
+  sw->A = d = (double *)malloc((size_t)(nd + most[3] + 1) * sizeof(double) +
+                               (size_t)(most[0] + most[1] + 2) * sizeof(double *) +
+                               (size_t)(2 * mcap + n + 2 + most[2] + 1) * sizeof(sc_int) +
+                               (size_t)(sw->nbody + 1) * sizeof(sc_shape));
   if (!d) return -1;
   sw->ws.w = d + nd;
   sw->ws.arg = (const double **)(d + nd + most[3] + 1);
@@ -379,6 +377,11 @@ static int work_alloc(sc_scene_work *sw, const double *pk, sc_int ccap, sc_int m
   sw->kind = (sc_int *)(sw->ws.res + most[1] + 1);
   sw->ws.iw = sw->kind + 2 * mcap + n + 2;
   sw->shape = (sc_shape *)(sw->ws.iw + most[2] + 1);
+  /* zeros but for the rows and the generated functions' work vectors (the largest parts,
+   * written before they are read) */
+  memset(d + mcap * n, 0, sizeof(double) * (size_t)(nd - mcap * n));
+  memset((void *)sw->ws.arg, 0, (size_t)((char *)sw->ws.iw - (char *)sw->ws.arg));
+  memset(sw->shape, 0, sizeof(sc_shape) * (size_t)(sw->nbody + 1));
   d += mcap * n;
   sw->M = d; d += n * n;
   sw->LU = d; d += n * n;

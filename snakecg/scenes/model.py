@@ -26,6 +26,7 @@ _REFUSED = ("optimize_shape", "com_polar")
 #: Samples per thread below which a batch is not split (SNAKECG_THREADS; snakecg.forward's)
 PARALLEL_MIN = 512
 _F64 = np.dtype(np.float64)
+_of_buffer = SceneResult.of_buffer
 
 
 class GeneralSceneModel(RobotModel):
@@ -47,15 +48,14 @@ class GeneralSceneModel(RobotModel):
         self._engine = getattr(self.core, "scene_forward", None)
         self._pk = self.packed.vector.ctypes.data
         self._zero_f = np.zeros((1, 3 * scene.n_objects))
-        self._shape_q, self._shape_tau = (self.n_coordinates,), (self.n_joints,)
         self._one = (_OneSample(self) if getattr(self.core, "scene_forward_call", None)
                      is not None else None)
 
     def __getattr__(self, name):
         if name in _REFUSED:
             raise InputError(f"{name} is not available on a general scene yet (forward, "
-                             f"maps, extremes, optimize, simulate and plot are); use a snakecg.Scene of "
-                             f"the paper's scenarios")
+                             "maps, extremes, optimize, simulate and plot are); use a "
+                             "snakecg.Scene of the paper's scenarios")
         raise AttributeError(name)
 
     def overlap_message(self, rec, index) -> str:
@@ -65,6 +65,23 @@ class GeneralSceneModel(RobotModel):
         where = "" if index is None else f" in sample {index}"
         return (f"{a} and {b} overlap by {rec[4]:.3g} m{where} (contacts hold within "
                 f"{rec[5]:.3g} m); move them apart")
+
+    def object_poses(self, q) -> np.ndarray:
+        """Every object's pose ``(x, y, theta)`` at ``q`` as the forward solve places it (a
+        ``pose``, or ``touching`` a link: on its named side, the contact at ``offset`` from
+        the rear end, a box with a face along the link): ``(n_objects, 3)``, or
+        ``(N, n_objects, 3)`` for ``q`` ``(N, n_s)``. The engine's placement
+        (``core_scene_place``), the one the forward, the drawing and a simulation's start
+        read."""
+        P = self.link_poses(q)  # checks q
+        if getattr(self.core, "scene_place", None) is None:
+            raise BuildError("a general scene's objects are placed by the compiled engine; "
+                             "load it with a C compiler (set CC) and the compiled backend")
+        P3 = np.ascontiguousarray(P.reshape(-1, self.n_links, 3))
+        out = np.empty((P3.shape[0], self.scene.n_objects, 3))
+        if self.core.scene_place(self._pk, P3.shape[0], P3.ctypes.data, out.ctypes.data):
+            raise MemoryError("the scene's placement ran out of memory")
+        return out if P.ndim == 3 else out[0]
 
     def simulate(self, q0, duration, **kwargs):
         """Simulate the scene over time: :func:`snakecg.scenes.stepping.simulate_scene`
@@ -95,26 +112,26 @@ class GeneralSceneModel(RobotModel):
         external wrench (F_x, F_y, torque) on every object, ``(n_objects, 3)`` (or batched).
         A sample whose shapes overlap is refused (one sample: :class:`InputError`; in a batch:
         NaN with status ``overlap`` and the reason)."""
-        if (v is None and f_obj is None and type(q) is np.ndarray and type(tau) is np.ndarray
-                and q.dtype is _F64 and tau.dtype is _F64 and q.shape == self._shape_q
-                and tau.shape == self._shape_tau and self._one is not None):
+        one = self._one
+        if (one is not None and type(q) is np.ndarray and type(tau) is np.ndarray
+                and q.dtype is _F64 and tau.dtype is _F64 and q.shape == one.shape_q
+                and tau.shape == one.shape_tau and v is None and f_obj is None
+                and one.lock.acquire(False)):
             # one sample of float64 arrays: through the model's one-sample buffers straight
             # to the engine (which checks finiteness), one copy of the output row
-            one = self._one
-            if one.lock.acquire(False):
-                try:
-                    one.q[:] = q
-                    one.tau[:] = tau
-                    code = one.call(one.address)
-                    buf = one.buf.copy()  # the inputs and the output row in one copy
-                finally:
-                    one.lock.release()
+            try:
+                one.q[:] = q
+                one.tau[:] = tau
+                code = one.call(one.address)
+                buf = one.buf.copy()  # the inputs and the output row in one copy
+            finally:
+                one.lock.release()
+            if code == 0:
                 status = buf.item(one.at)
-                if code == 0 and status != 4:
-                    if status == 3:
-                        raise InputError(self.overlap_message(buf[one.at + 13:one.at + 19],
-                                                              None))
-                    return SceneResult.of_buffer(self, buf, one.ccap)
+                if status == 3:
+                    raise InputError(self.overlap_message(buf[one.at + 13:one.at + 19], None))
+                if status != 4:  # else: more contacts than the first pass's room
+                    return _of_buffer(self, buf, one.ccap)
         if v is not None and np.any(np.asarray(v, dtype=float) != 0):
             raise InputError("v: a general scene is solved at rest (v = 0); velocities are not "
                              "supported yet")
@@ -255,7 +272,8 @@ class _OneSample:
     engine's arguments pointing into it, built once; taken under a non-blocking lock (a
     second thread that finds it busy goes the general way)."""
 
-    __slots__ = ("buf", "q", "tau", "at", "ccap", "args", "address", "call", "lock")
+    __slots__ = ("buf", "q", "tau", "at", "ccap", "args", "address", "call", "lock", "shape_q",
+                 "shape_tau")
 
     def __init__(self, model: GeneralSceneModel):
         pk = model.packed
@@ -271,3 +289,4 @@ class _OneSample:
         self.address = address(self.args)
         self.call = model.core.scene_forward_call
         self.lock = threading.Lock()
+        self.shape_q, self.shape_tau = (ns,), (na,)

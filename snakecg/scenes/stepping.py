@@ -44,7 +44,7 @@ from scipy.optimize import brentq
 
 from ..engine.binding import SceneStep, address
 from ..errors import BuildError, InputError
-from .contacts import Rows, StateRows, place_objects, read_rows
+from .contacts import Rows, StateRows, read_rows
 from .packing import scene_size
 from .run_record import ST_IMPACT, ST_LOSS, ST_SLIDING_COS, ST_WIDTH, SceneEvent, SceneRun
 from .solve import INFO
@@ -202,7 +202,7 @@ def simulate_scene(model, q0, duration, *, v0=None, tau=None, dt=1e-3, q_obj0=No
     st = _Stepper(model, tol, fo.reshape(-1))
     ns = st.ns
     if qo is None:
-        qo = place_objects(scene, model.link_poses(q))
+        qo = model.object_poses(q)
     rec = SceneRun.start(model, tol, dt)
 
     def torque(t, x, V):
