@@ -309,6 +309,22 @@ SC_INTERNAL double sc_shape_closest(const sc_shape *A, const sc_shape *B, double
     }
     return d;
   }
+  if (B->kind == SC_POINT && A->kind != SC_POLYGON) { /* a capsule or disc and a point apart:
+                                                          * the nearest point, one contact */
+    const double *q = B->p[0];
+    double p[2], dd;
+    point_segment(q, A->p[0], A->p[A->kind == SC_SEGMENT ? 1 : 0], p);
+    dd = hypot(q[0] - p[0], q[1] - p[1]);
+    if (dd > 1e-9 * scale) { /* else the general path below (the features' normals) */
+      for (k = 0; k < 2; ++k) {
+        out->n[k] = (q[k] - p[k]) / dd;
+        out->a[k] = p[k] + A->radius * out->n[k];
+        out->b[k] = q[k] - B->radius * out->n[k];
+      }
+      *count = 1;
+      return dd - A->radius - B->radius;
+    }
+  }
   merge = fmax(merge, 1e-9 * scale);
   depth = core_overlap(A, B, nrm);
   if (depth > 1e-12 * scale) { /* overlapping cores: their least translation */
