@@ -22,7 +22,7 @@
  *   pieces.c, sphere.c                 the exact extremes' pieces and faces (exported)
  *   scene_sets.c, scene_solve.c        a general scene's exact solve (exported: core_scene_solve;
  *                                      core_scene_solve_b with row offsets, for stepping)
- *   scene_geometry.c, scene_rows.c, scene_step.c   contacts, rows, forward, a time step
+ *   scene_geometry.c, scene_rows.c, scene_step.c   placement, contacts, rows, forward, a step
  *
  * One prefix (sc_), one integer type (sc_int). The library exports the model's prefixed entry
  * points only (SNAKECG_EXPORT); the engine's own functions across its files are hidden
