@@ -304,5 +304,10 @@ def test_objects_are_placed_by_the_engine_where_they_touch(rng):
         np.testing.assert_array_equal(poses[3], (1.0, -2.0, 0.3))
         np.testing.assert_allclose(poses, place_objects(scene, P), rtol=0, atol=1e-12)
     np.testing.assert_array_equal(model.object_poses(Q[5]), got[5])
+    res = model.forward(Q, np.zeros(3))  # the forward's bodies are where the drawing's are
+    apart = np.flatnonzero(res.status != 3)  # (overlapping samples report no poses)
+    assert apart.size >= 10
+    for s in apart:
+        np.testing.assert_array_equal([o["pose"] for o in res.objects[s]], got[s])
     with pytest.raises(InputError, match="q"):
         model.object_poses(np.zeros(5))

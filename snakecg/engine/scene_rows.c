@@ -411,8 +411,9 @@ static int work_alloc(sc_scene_work *sw, const double *pk, sc_int ccap, sc_int m
  * q + i sq, tau + i st, fo + i sf (stride 0 broadcasts); its outputs at out + i width
  * (width = SO_QDD + n_s + 7 n_o + 3 n_g + CR_W ccap); where A is not null, its details at
  * A + i mcap n, lam, w, state + i mcap. At most ccap contacts a sample (a sample with more:
- * status SS_MORE, for the caller to redo with a larger ccap). Returns 0, -1 out of memory, -2
- * on sizes out of range, -(3 + i) when an input of sample i is not finite. */
+ * status SS_MORE, for the caller to redo with a larger ccap; the records after a sample's
+ * contacts are left as they were). Returns 0, -1 out of memory, -2 on sizes out of range,
+ * -(3 + i) when an input of sample i is not finite. */
 int SNAKECG_EXPORT(core_scene_forward)(const double *pk, sc_int n, const double *q, sc_int sq,
                                        const double *tau, sc_int st, const double *fo,
                                        sc_int sf, sc_int ccap, sc_int mcap, double *out,
