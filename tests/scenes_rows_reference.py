@@ -9,7 +9,7 @@ from __future__ import annotations
 import numpy as np
 
 from snakecg.errors import InputError
-from snakecg.scenes.contacts import Contact, Rows, link_ends, place_objects
+from snakecg.scenes.contacts import Contact, Rows, link_ends
 from snakecg.scenes.description import GeneralScene
 from snakecg.scenes.geometry import box_corners
 
@@ -17,7 +17,32 @@ from scenes_geometry_reference import Shape, closest
 from snakecg.scenes.packing import scene_size  # the scene's extent: a definition, shared
 from snakecg.scenes.solve import BOX, DISC, FREE, SPLIT, UNILATERAL
 
-__all__ = ["shapes", "rows_of", "pair_gaps"]
+__all__ = ["shapes", "rows_of", "pair_gaps", "place_objects"]
+
+
+def place_objects(scene: GeneralScene, poses) -> np.ndarray:
+    """Every object's pose ``(x, y, theta)`` at the link COM poses ``(n_l, 3)``, from the
+    geometry: a ``touching`` object's face (a disc's nearest point) on the link's edge point
+    at ``offset`` from its rear end, on the named side (left: the link's left normal), the
+    object turned with the link; so its centre lies ``half_depth`` beyond that point along
+    the side's normal."""
+    out = np.empty((scene.n_objects, 3))
+    for j, o in enumerate(scene.objects):
+        if o.pose is not None:
+            out[j] = o.pose
+            continue
+        k = o.touching["link"] - 1
+        x, y, phi = poses[k]
+        along = np.array([np.cos(phi), np.sin(phi)])
+        side = np.array([-along[1], along[0]])  # left of the link, looking forward
+        if o.touching.get("side", "left") == "right":
+            side = -side
+        rear = np.array([x, y]) - scene.robot.com[k] * along
+        edge = rear + o.touching.get("offset", scene.robot.length[k] / 2) * along \
+            + scene.radius * side
+        depth = o.radius if o.shape == "disc" else o.size[1] / 2
+        out[j] = (*(edge + depth * side), phi)
+    return out
 
 
 def shapes(scene: GeneralScene, poses, obj_poses) -> list:

@@ -76,9 +76,7 @@ def test_matched_scene_against_mujoco(with_disc, rng):
     scene = GeneralScene(robot, radius=radius, obstacles=pegs,
                          objects=(disc,) if disc else ())
     model = snakecg.load(scene)
-    from snakecg.scenes.contacts import place_objects
-
-    disc_pose = place_objects(scene, model.link_poses(q))[0] if disc else None
+    disc_pose = model.object_poses(q)[0] if disc else None
     m = mujoco.MjModel.from_xml_string(_mjcf(robot, radius, q, pegs, disc, disc_pose))
     d = mujoco.MjData(m)
     worst = 0.0

@@ -12,10 +12,10 @@ import snakecg
 from snakecg import Robot
 from snakecg.errors import InputError
 from snakecg.scenes import GeneralScene, Ground, Obstacle, SceneObject
-from snakecg.scenes.contacts import StateRows, link_ends, place_objects
+from snakecg.scenes.contacts import StateRows, link_ends
 
 from scenes_reference import ALL_MODELS, dense_problem, peg_obstacles, random_scene
-from scenes_rows_reference import pair_gaps, rows_of
+from scenes_rows_reference import pair_gaps, place_objects, rows_of
 
 
 def _reference(model, q):
@@ -245,3 +245,69 @@ def test_batches_and_threads_give_the_same_samples(rng, monkeypatch):
         assert single.contacts == one.contacts[i]
     with pytest.raises(InputError, match="tau must be finite"):
         model.forward(Q[:2], np.r_[T[:1], [[np.nan] * model.n_joints]])
+
+
+def _edge_point(robot, radius, pose, k, offset, side):
+    """Link k's surface point at ``offset`` from its rear end on ``side`` and the side's unit
+    normal, from the link's COM pose: the rear end is ``com`` behind the COM along the link."""
+    x, y, phi = pose
+    along = np.array([np.cos(phi), np.sin(phi)])
+    normal = np.array([-np.sin(phi), np.cos(phi)]) * (1.0 if side == "left" else -1.0)
+    return np.array([x, y]) + (offset - robot.com[k]) * along + radius * normal, normal
+
+
+def test_objects_are_placed_by_the_engine_where_they_touch(rng):
+    """The engine's placement (``model.object_poses``, the one the forward, the drawing and a
+    simulation's start read) on batches of random configurations, checked from the
+    geometry: a touching disc's nearest point is the link's surface point at the offset on
+    the named side (its centre one radius beyond it along the side's normal); a touching
+    box turns with the link and the middle of the face toward the link is that point, the
+    face's outward normal against the side's; an object with a pose stays there. Also
+    against the reference's placement (tests/scenes_rows_reference.py) to 1e-12."""
+    robot = Robot(joints=3)
+    objects = (
+        SceneObject(shape="box", size=(0.1, 0.06), mass=2.0,
+                    touching={"link": 1, "offset": 0.03, "side": "left"}),
+        SceneObject(shape="disc", radius=0.04, mass=1.0,
+                    touching={"link": 3, "offset": 0.11, "side": "right"}),
+        SceneObject(shape="box", size=(0.05, 0.09), mass=1.0,
+                    touching={"link": 4, "side": "right"}),  # the default offset: L/2
+        SceneObject(shape="disc", radius=0.05, mass=1.0, pose=(1.0, -2.0, 0.3)))
+    scene = GeneralScene(robot, radius=0.015, objects=objects)
+    model = snakecg.load(scene)
+    Q = np.c_[rng.normal(size=(40, 2)), rng.uniform(-np.pi, np.pi, 40),
+              rng.uniform(-1.2, 1.2, (40, 3))]
+    got = model.object_poses(Q)
+    assert got.shape == (40, 4, 3)
+    for q, poses in zip(Q, got):
+        P = model.link_poses(q)
+        for o, pose in zip(objects[:3], poses):
+            t = o.touching
+            k = t["link"] - 1
+            point, normal = _edge_point(robot, scene.radius, P[k], k,
+                                        t.get("offset", robot.length[k] / 2), t["side"])
+            if o.shape == "disc":
+                np.testing.assert_allclose(pose[:2] - o.radius * normal, point, atol=1e-13)
+                continue
+            assert abs(np.angle(np.exp(1j * (pose[2] - P[k, 2])))) <= 1e-13
+            c, s = np.cos(pose[2]), np.sin(pose[2])
+            half = 0.5 * np.asarray(o.size)
+            local = np.array([(-1, -1), (1, -1), (1, 1), (-1, 1)]) * half
+            corners = pose[:2] + np.array([[c * x - s * y, s * x + c * y] for x, y in local])
+            faces = [(corners[i], corners[(i + 1) % 4]) for i in range(4)]
+            mids = [0.5 * (a + b) for a, b in faces]
+            near = int(np.argmin([np.hypot(*(m - point)) for m in mids]))
+            np.testing.assert_allclose(mids[near], point, atol=1e-13)
+            a, b = faces[near]
+            outward = np.array([b[1] - a[1], a[0] - b[0]]) / np.hypot(*(b - a))  # CCW corners
+            np.testing.assert_allclose(outward, -normal, atol=1e-13)
+        np.testing.assert_array_equal(poses[3], (1.0, -2.0, 0.3))
+        np.testing.assert_allclose(poses, place_objects(scene, P), rtol=0, atol=1e-12)
+    np.testing.assert_array_equal(model.object_poses(Q[5]), got[5])
+    res = model.forward(Q, np.zeros(3))  # the forward's bodies are where the drawing's are
+    apart = np.flatnonzero(res.status != 3)  # (overlapping samples report no poses)
+    assert apart.size >= 10
+    for s in apart:
+        np.testing.assert_array_equal([o["pose"] for o in res.objects[s]], got[s])
+    with pytest.raises(InputError, match="q"):
+        model.object_poses(np.zeros(5))

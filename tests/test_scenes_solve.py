@@ -48,6 +48,30 @@ def test_paper_scenarios_through_the_general_path(scenario, joints, rng):
             assert abs(lam[st] - want) <= 1e-11 * max(1.0, np.abs(o.lam[s]).max())
 
 
+@pytest.mark.parametrize("scenario", ["frictionless", "wheels", "ideal_wheels"])
+def test_paper_scenarios_one_sample_at_a_time(scenario, rng):
+    """The general path's one-sample forward (its own buffers, straight to the engine) on the
+    paper's scene against the paper's own closed-form path, sample by sample at random
+    configurations and torques, to 1e-12; the same numbers as the general path's batch."""
+    scene = Scene(Robot(joints=3), scenario=scenario, kappa=float(rng.uniform(1, 200)),
+                  mu=0.1, contact_link=int(rng.integers(1, 5)))
+    old, new = snakecg.load(scene), load_scene(scene)
+    Q = np.c_[rng.normal(size=(25, 3)), rng.uniform(-0.8, 0.8, (25, 3))]
+    T = rng.normal(size=(25, 3))
+    batch = new.forward(Q, T)
+    for s, (q, tau) in enumerate(zip(Q, T)):
+        o, r = old.forward(q, tau), new.forward(q, tau)
+        assert not r.batched and r.status == 0, r.reason
+        for got, want in ((r.qdd, o.qdd), (r.a_obj[0], o.a_obj)):
+            assert np.abs(got - want).max() <= 1e-12 * max(1.0, np.abs(want).max())
+        for name in ("norm_qdd", "norm_a_obj", "norm_lambda"):
+            got, want = getattr(r, name), getattr(o, name)
+            assert abs(got - want) <= 1e-12 * max(abs(want), abs(o.norm_qdd), 1e-300), name
+        assert abs(r.sr - o.sr) <= 1e-12 and 0.0 <= r.sr <= 1.0
+        np.testing.assert_array_equal(r.qdd, batch.qdd[s])
+        assert r.sr == batch.sr[s] and r.norm_lambda == batch.norm_lambda[s]
+
+
 def _solved(rng, models, tries=50):
     """A random solved one-sample problem (resampled on overlap, or without 1-6 contacts)."""
     for _ in range(tries):

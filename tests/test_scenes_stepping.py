@@ -171,9 +171,9 @@ def test_one_step_against_cvxpy_clarabel(rng):
     mass matrix and bias forces, solved by Clarabel."""
     cp = pytest.importorskip("cvxpy")
     pytest.importorskip("clarabel")
-    from scenes_rows_reference import rows_of
+    from scenes_rows_reference import place_objects, rows_of
 
-    from snakecg.scenes.contacts import link_ends, place_objects
+    from snakecg.scenes.contacts import link_ends
     from snakecg.scenes.stepping import STEP_NOT_CONVERGED, _Stepper
 
     robot = snakecg.Robot(joints=3)

@@ -76,6 +76,8 @@ PROTOTYPES: dict[str, tuple[list, object]] = {
     "core_scene_solve_b": ([_I, _I, _I, _I] + [_P] * 9 + [_I] + [_P] * 5, _INT),
     "core_scene_rows": ([_P], _INT),
     "core_scene_gaps": ([_P], _INT),
+    # scene_geometry.c
+    "core_scene_place": ([_P, _I, _P, _P], _INT),
     # scene_step.c, scene_run.c
     "core_scene_step": ([_P], _INT),
     "core_scene_run": ([_P], _INT),

@@ -6,9 +6,8 @@
  * function that crosses files is declared here, with the file that defines it; nothing else
  * declares a function of another file. The small dense linear algebra is linalg.h's.
  *
- *   contact.c       the per-state system (the generated contact_system), the held rows'
- *                   forces of eq. (16), the active-set rule, work arrays (alone with
- *                   forward.c in a spatial scene's library)
+ *   contact.c       the per-state system (contact_system), the held rows' forces of eq. (16),
+ *                   the active-set rule, work arrays (with forward.c alone in a spatial scene)
  *   forward.c       the forward solve of a batch (exported: core_forward)
  *   rows.c          its rare samples: Tikhonov, enumeration, the rows factored directly
  *   integrate.c     a segment between events: DOP853, dense output, event location (exported)
@@ -22,8 +21,8 @@
  *   max_sr.c, push.c, wheel_states.c   the queries' solves
  *   pieces.c, sphere.c                 the exact extremes' pieces and faces (exported)
  *   scene_sets.c, scene_solve.c  a general scene's exact solve (core_scene_solve, _solve_b)
- *   scene_geometry.c, scene_rows.c, scene_step.c, scene_run.c   contacts, rows, forward, a
- *                   time step, whole runs and batches of runs
+ *   scene_geometry.c, scene_rows.c, scene_step.c, scene_run.c   placement, contacts, rows,
+ *                   forward, a time step, whole runs and batches of runs
  *
  * One prefix (sc_), one integer type (sc_int). The library exports the model's prefixed entry
  * points only (SNAKECG_EXPORT); the engine's own functions across its files are hidden
@@ -571,8 +570,9 @@ typedef struct { double a[2], b[2], n[2]; } sc_touch;
 SC_INTERNAL void sc_shape_centroid(const sc_shape *s, double *c);
 SC_INTERNAL double sc_shape_closest(const sc_shape *A, const sc_shape *B, double scale,
                                     double merge, sc_touch *out, int *count);
-SC_INTERNAL void sc_scene_place(const double *pk, const double *P, const double *qo,
-                                sc_shape *shape, double *pose, double *centre, double *reach);
+SC_INTERNAL void sc_scene_place(const double *pk, const double *P, const double *qo, int all,
+                                double *cs, sc_shape *shape, double *pose, double *centre,
+                                double *reach);
 /* The rows of a state (scene_rows.c's core_scene_rows, for scene_step.c): outputs RO_*, then
  * the objects' poses (3 n_o) and the contacts (CR_W each); its status (0, SS_*) or < 0. */
 enum { RO_STATUS = 0, RO_NC, RO_M, RO_NB, RO_OVERLAP, RO_POSE = RO_OVERLAP + 6, CR_W = 14 };

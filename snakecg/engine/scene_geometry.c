@@ -309,6 +309,22 @@ SC_INTERNAL double sc_shape_closest(const sc_shape *A, const sc_shape *B, double
     }
     return d;
   }
+  if (B->kind == SC_POINT && A->kind != SC_POLYGON) { /* a capsule or disc and a point apart:
+                                                          * the nearest point, one contact */
+    const double *q = B->p[0];
+    double p[2], dd;
+    point_segment(q, A->p[0], A->p[A->kind == SC_SEGMENT ? 1 : 0], p);
+    dd = hypot(q[0] - p[0], q[1] - p[1]);
+    if (dd > 1e-9 * scale) { /* else the general path below (the features' normals) */
+      for (k = 0; k < 2; ++k) {
+        out->n[k] = (q[k] - p[k]) / dd;
+        out->a[k] = p[k] + A->radius * out->n[k];
+        out->b[k] = q[k] - B->radius * out->n[k];
+      }
+      *count = 1;
+      return dd - A->radius - B->radius;
+    }
+  }
   merge = fmax(merge, 1e-9 * scale);
   depth = core_overlap(A, B, nrm);
   if (depth > 1e-12 * scale) { /* overlapping cores: their least translation */
@@ -372,29 +388,38 @@ static void box_corners(double x, double y, double th, double sx, double sy, sc_
 }
 
 /* Every body's shape of the scene packed in pk (links, objects, obstacles) at the link poses
- * P (n_l x 3): the objects at their poses qo (3 n_o; a simulation's state) or, qo null, placed
- * by the scene (a pose, or touching a link on its side at an offset); their poses into pose,
- * the broad phase's bounding circles (a wall: none) into centre (2 each) and reach. */
-SC_INTERNAL void sc_scene_place(const double *pk, const double *P, const double *qo,
-                                sc_shape *shape, double *pose, double *centre, double *reach) {
+ * P (n_l x 3), with the links' cos and sin of their angles into cs (2 each): the objects at
+ * their poses qo (3 n_o; a simulation's state) or, qo null, placed by the scene (a pose, or
+ * touching a link on its side at an offset); their poses into pose, the broad phase's
+ * bounding circles (a wall: none) into centre (2 each) and reach. With `all` 0, the parts
+ * that do not move (the obstacles' shapes and circles, every reach) are kept from an earlier
+ * call on the same pk and buffers. */
+SC_INTERNAL void sc_scene_place(const double *pk, const double *P, const double *qo, int all,
+                                double *cs, sc_shape *shape, double *pose, double *centre,
+                                double *reach) {
   const double *lk = pk + (sc_int)pk[SP_LINKS], r = pk[SP_RADIUS];
-  const sc_int no = (sc_int)pk[SP_NO], nob = (sc_int)pk[SP_NOB], nbody = SNAKECG_NL + no + nob;
+  const sc_int no = (sc_int)pk[SP_NO], nob = (sc_int)pk[SP_NOB], nl = SNAKECG_NL;
   sc_int i, j, k;
-  for (i = 0; i < SNAKECG_NL; ++i) {
+  for (i = 0; i < nl; ++i) {
     double c = cos(P[3 * i + 2]), s = sin(P[3 * i + 2]), *e0 = shape[i].p[0],
-           *e1 = shape[i].p[1];
+           *e1 = shape[i].p[1], L = lk[LINK_W * i + 1];
+    cs[2 * i] = c;
+    cs[2 * i + 1] = s;
     e0[0] = P[3 * i] - lk[LINK_W * i] * c;
     e0[1] = P[3 * i + 1] - lk[LINK_W * i] * s;
-    e1[0] = e0[0] + lk[LINK_W * i + 1] * c;
-    e1[1] = e0[1] + lk[LINK_W * i + 1] * s;
+    e1[0] = e0[0] + L * c;
+    e1[1] = e0[1] + L * s;
     shape[i].kind = SC_SEGMENT;
     shape[i].np = 2;
     shape[i].radius = r;
+    centre[2 * i] = 0.5 * (e0[0] + e1[0]);
+    centre[2 * i + 1] = 0.5 * (e0[1] + e1[1]);
+    if (all) reach[i] = 0.5 * L + r;
   }
   for (j = 0; j < no; ++j) {
     const double *o = pk + (sc_int)pk[SP_OBJECTS] + OBJ_W * j;
     double *ps = pose + 3 * j;
-    sc_shape *sh = shape + SNAKECG_NL + j;
+    sc_shape *sh = shape + nl + j;
     if (qo) {
       ps[0] = qo[3 * j];
       ps[1] = qo[3 * j + 1];
@@ -404,12 +429,12 @@ SC_INTERNAL void sc_scene_place(const double *pk, const double *P, const double 
       ps[1] = o[8];
       ps[2] = o[9];
     } else { /* on the named side of link k, the contact at offset from its rear end */
-      const double *rear = shape[(sc_int)o[7]].p[0], *pl = P + 3 * (sc_int)o[7];
-      double t[2] = {cos(pl[2]), sin(pl[2])}, nrm[2] = {-sin(pl[2]), cos(pl[2])};
+      sc_int lnk = (sc_int)o[7];
+      const double *rear = shape[lnk].p[0], c = cs[2 * lnk], s = cs[2 * lnk + 1];
       double h = o[9] * (r + o[10]);
-      ps[0] = rear[0] + o[8] * t[0] + h * nrm[0];
-      ps[1] = rear[1] + o[8] * t[1] + h * nrm[1];
-      ps[2] = pl[2];
+      ps[0] = rear[0] + o[8] * c - h * s;
+      ps[1] = rear[1] + o[8] * s + h * c;
+      ps[2] = P[3 * lnk + 2];
     }
     if (o[0] == 1.0) {
       sh->kind = SC_POINT;
@@ -420,10 +445,14 @@ SC_INTERNAL void sc_scene_place(const double *pk, const double *P, const double 
     } else {
       box_corners(ps[0], ps[1], ps[2], o[1], o[2], sh);
     }
+    centre[2 * (nl + j)] = ps[0]; /* a disc's centre; a box's, its corners' mean */
+    centre[2 * (nl + j) + 1] = ps[1];
+    if (all) reach[nl + j] = o[0] == 1.0 ? o[3] : 0.5 * hypot(o[1], o[2]);
   }
-  for (k = 0; k < nob; ++k) {
+  for (k = 0; all && k < nob; ++k) {
     const double *o = pk + (sc_int)pk[SP_OBSTACLES] + OBS_W * k;
-    sc_shape *sh = shape + SNAKECG_NL + no + k;
+    sc_shape *sh = shape + nl + no + k;
+    double *c = centre + 2 * (nl + no + k), far = 0.0;
     sh->radius = 0.0;
     sh->p[0][0] = o[1];
     sh->p[0][1] = o[2];
@@ -444,16 +473,27 @@ SC_INTERNAL void sc_scene_place(const double *pk, const double *P, const double 
         sh->p[i][1] = o[7 + 2 * i];
       }
     }
-  }
-  for (i = 0; i < nbody; ++i) {
-    sc_shape *sh = shape + i;
-    double *c = centre + 2 * i, far = 0.0;
     sc_shape_centroid(sh, c);
-    for (j = 0; j < sh->np; ++j) {
-      double d = sqrt((sh->p[j][0] - c[0]) * (sh->p[j][0] - c[0]) +
-                      (sh->p[j][1] - c[1]) * (sh->p[j][1] - c[1]));
-      if (d > far) far = d;
-    }
-    reach[i] = sh->kind == SC_HALFPLANE ? INFINITY : far + sh->radius;
+    for (j = 0; j < sh->np; ++j) far = fmax(far, hypot(sh->p[j][0] - c[0], sh->p[j][1] - c[1]));
+    reach[nl + no + k] = sh->kind == SC_HALFPLANE ? INFINITY : far + sh->radius;
   }
+}
+
+/* The objects' poses (3 n_o each) of the scene packed in pk at n configurations' link poses
+ * P (n_l x 3 each), as the forward places them (sc_scene_place): the one home of the
+ * placement that the drawing and a simulation's start read. Returns 0, or -1 out of memory. */
+int SNAKECG_EXPORT(core_scene_place)(const double *pk, sc_int n, const double *P,
+                                     double *pose) {
+  const sc_int no = (sc_int)pk[SP_NO], nb = SNAKECG_NL + no;
+  sc_shape *shape = (sc_shape *)malloc(sizeof(sc_shape) * (size_t)nb);
+  double *d = (double *)malloc(sizeof(double) * (size_t)(2 * SNAKECG_NL + 3 * nb));
+  sc_int i;
+  const int ok = shape && d;
+  if (ok)
+    for (i = 0; i < n; ++i) /* the parts that do not move (all = 0) are not read */
+      sc_scene_place(pk, P + 3 * SNAKECG_NL * i, 0, 0, d, shape, pose + 3 * no * i,
+                     d + 2 * SNAKECG_NL, d + 2 * SNAKECG_NL + 2 * nb);
+  free(shape);
+  free(d);
+  return ok ? 0 : -1;
 }

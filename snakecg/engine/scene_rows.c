@@ -48,13 +48,22 @@ enum { BODY_LINK = 0, BODY_OBJECT = 1, BODY_OBSTACLE = 2 };
 typedef struct {
   const double *pk;
   sc_int no, nob, ng, mg, n, ccap, mcap, nbody;
+  int placed; /* the bodies' parts that do not move are placed (sc_scene_place's `all`) */
   double tol; /* the contact tolerance (m) */
   sc_work_t ws;
-  double *A, *M, *f, *par, *lam, *w, *a, *st, *P, *J, *Ms, *LU, *afree;
+  double *A, *M, *f, *par, *lam, *w, *a, *st, *P, *J, *Ms, *LU, *afree, *D, *cs;
   sc_int *kind, *start, *piv;
   sc_shape *shape;
   double *centre, *reach, *pose;
 } sc_scene_work;
+
+/* The bodies placed at the link poses P (the objects at qo, or by the scene): the parts that
+ * do not move once per call. */
+static void place(sc_scene_work *sw, const double *P, const double *qo) {
+  sc_scene_place(sw->pk, P, qo, !sw->placed, sw->cs, sw->shape, sw->pose, sw->centre,
+                 sw->reach);
+  sw->placed = 1;
+}
 
 /* The velocity of point p fixed on body b, in the generalized velocities: rows x, y added
  * with sign into Dx, Dy (n each). */
@@ -97,11 +106,11 @@ static sc_int contact_rows(sc_scene_work *sw, const double *P, double *recs, dou
   for (ia = 0; ia < nl + sw->no; ++ia)
     for (ib = ia + 1; ib < sw->nbody; ++ib) {
       const double *ca = sw->centre + 2 * ia, *cb = sw->centre + 2 * ib;
-      double d;
+      double d, dx = ca[0] - cb[0], dy = ca[1] - cb[1], far;
       int count;
       if (ib < nl && ib - ia < 2) continue; /* neighbouring links */
-      if (hypot(ca[0] - cb[0], ca[1] - cb[1]) > sw->reach[ia] + sw->reach[ib] + 2 * tol)
-        continue;
+      far = (sw->reach[ia] + sw->reach[ib] + 2 * tol) * (1 + 1e-9); /* circles apart */
+      if (dx * dx + dy * dy > far * far) continue;
       d = sc_shape_closest(sw->shape + ia, sw->shape + ib, size, tol, t, &count);
       if (d < -tol) {
         double *o = over, idx;
@@ -116,7 +125,7 @@ static sc_int contact_rows(sc_scene_work *sw, const double *P, double *recs, dou
       }
       if (d > tol) continue;
       for (k = 0; k < count; ++k) {
-        double *row = sw->A + nc * n, *Dx = sw->M, *Dy = sw->M + n, *rec;
+        double *row = sw->A + nc * n, *Dx = sw->D, *Dy = sw->D + n, *rec;
         sc_int kk;
         if (nc >= cap) return -SS_MORE;
         memset(Dx, 0, sizeof(double) * (size_t)(2 * n)); /* D = J_b - J_a at the points */
@@ -124,6 +133,7 @@ static sc_int contact_rows(sc_scene_work *sw, const double *P, double *recs, dou
         point_jacobian(sw, ia, t[k].a, P, -1.0, Dx, Dy);
         for (j = 0; j < n; ++j) row[j] = t[k].n[0] * Dx[j] + t[k].n[1] * Dy[j];
         rec = recs + CR_W * nc;
+        memset(rec, 0, sizeof(double) * CR_W);
         rec[0] = (double)body_kind(sw, ia, &kk);
         rec[1] = (double)kk;
         rec[2] = (double)body_kind(sw, ib, &kk);
@@ -144,7 +154,7 @@ static sc_int contact_rows(sc_scene_work *sw, const double *P, double *recs, dou
 }
 
 /* The ground's blocks after the contacts' nc rows; returns the rows used. */
-static sc_int ground_rows(sc_scene_work *sw, const double *P, sc_int nc) {
+static sc_int ground_rows(sc_scene_work *sw, sc_int nc) {
   const double *gb = sw->pk + (sc_int)sw->pk[SP_GROUND];
   const sc_int n = sw->n;
   sc_int g, r = nc, j;
@@ -156,7 +166,8 @@ static sc_int ground_rows(sc_scene_work *sw, const double *P, sc_int nc) {
     sw->par[3 * bk] = gb[3];
     sw->par[3 * bk + 1] = gb[4];
     sw->par[3 * bk + 2] = gb[5];
-    memset(r0, 0, sizeof(double) * (size_t)(type == GB_WHEEL ? n : 2 * n));
+    for (j = type == GB_OBJECT ? 0 : SNAKECG_NS; j < n; ++j) r0[j] = 0.0; /* not set below */
+    for (j = type == GB_OBJECT ? 0 : SNAKECG_NS; type != GB_WHEEL && j < n; ++j) r1[j] = 0.0;
     if (type == GB_OBJECT) {
       r0[SNAKECG_NS + 3 * b] = 1.0;
       r1[SNAKECG_NS + 3 * b + 1] = 1.0;
@@ -164,7 +175,7 @@ static sc_int ground_rows(sc_scene_work *sw, const double *P, sc_int nc) {
       continue;
     }
     {
-      double phi = P[3 * b + 2], c = cos(phi), s = sin(phi);
+      double c = sw->cs[2 * b], s = sw->cs[2 * b + 1];
       for (j = 0; j < SNAKECG_NS; ++j) {
         const double *J = sw->J + 3 * SNAKECG_NL * j + 3 * b;
         if (type == GB_WHEEL) {
@@ -183,26 +194,28 @@ static sc_int ground_rows(sc_scene_work *sw, const double *P, sc_int nc) {
   return r;
 }
 
-/* The metrics of a solved sample (a: the accelerations) into out. */
+/* The metrics of a solved sample (a: the accelerations) into out; the inertia M is block
+ * diagonal (M_s, then m, m, I per object): its forms are summed block by block. */
 static void metrics(sc_scene_work *sw, const double *a, double *out) {
   const sc_int n = sw->n, ns = SNAKECG_NS;
-  const double *I = sw->M;
+  const double *I = sw->M, *af = sw->afree;
   double nq = 0.0, na = 0.0, nl = 0.0, fr = 0.0, denom;
   sc_int i, j, o;
   int bad = out[SO_INFO] != 0.0;
   for (i = 0; i < ns; ++i) {
-    double t = 0.0;
-    for (j = 0; j < ns; ++j) t += sw->Ms[i + ns * j] * a[j];
-    nq += a[i] * t;
-  }
-  for (i = 0; i < n; ++i) {
-    double t = 0.0, u = 0.0;
-    for (j = 0; j < n; ++j) {
-      t += I[i * n + j] * (a[j] - sw->afree[j]);
-      u += I[i * n + j] * sw->afree[j];
+    double t = 0.0, u = 0.0, v = 0.0;
+    for (j = 0; j < ns; ++j) {
+      t += sw->Ms[i + ns * j] * a[j];
+      u += sw->Ms[i + ns * j] * (a[j] - af[j]);
+      v += sw->Ms[i + ns * j] * af[j];
     }
-    nl += (a[i] - sw->afree[i]) * t;
-    fr += sw->afree[i] * u;
+    nq += a[i] * t;
+    nl += (a[i] - af[i]) * u;
+    fr += af[i] * v;
+  }
+  for (i = ns; i < n; ++i) {
+    nl += (a[i] - af[i]) * (I[i * n + i] * (a[i] - af[i]));
+    fr += af[i] * (I[i * n + i] * af[i]);
   }
   for (o = 0; o < sw->no; ++o) {
     const double *ao = a + ns + 3 * o, *obj = sw->pk + (sc_int)sw->pk[SP_OBJECTS] + OBJ_W * o;
@@ -265,9 +278,9 @@ static void scene_sample(sc_scene_work *sw, const double *q, const double *tau,
   const sc_int n = sw->n, ns = SNAKECG_NS, width = SO_QDD + ns + 7 * sw->no + 3 * sw->ng;
   sc_int nc, m, nb, i, j, o;
   double *P = sw->P;
-  for (i = 0; i < width + CR_W * sw->ccap; ++i) out[i] = 0.0; /* the records' room too */
+  memset(out, 0, sizeof(double) * (size_t)width); /* the records: as contact_rows writes them */
   if (kinematics(sw, q, 1)) goto failed;
-  sc_scene_place(sw->pk, P, 0, sw->shape, sw->pose, sw->centre, sw->reach);
+  place(sw, P, 0);
   for (o = 0; o < sw->no; ++o)
     for (j = 0; j < 3; ++j) out[SO_QDD + ns + 4 * sw->no + 3 * o + j] = sw->pose[3 * o + j];
   nc = contact_rows(sw, P, out + SO_QDD + ns + 7 * sw->no + 3 * sw->ng, out + SO_OVERLAP,
@@ -278,20 +291,26 @@ static void scene_sample(sc_scene_work *sw, const double *q, const double *tau,
     for (i = SO_QDD; i < width; ++i) out[i] = NAN; /* no contacts, no ground blocks */
     return;
   }
-  m = ground_rows(sw, P, nc);
+  m = ground_rows(sw, nc);
   nb = nc + sw->ng;
-  full_inertia(sw, sw->M); /* and the force (B tau; the objects' wrenches) */
-  for (i = 0; i < n; ++i) sw->f[i] = 0.0;
+  for (i = 0; i < ns; ++i) /* M_s into the inertia (the objects' part is the call's) */
+    for (j = 0; j < ns; ++j) sw->M[i * n + j] = sw->Ms[i + ns * j];
+  sw->f[0] = sw->f[1] = sw->f[2] = 0.0; /* the force: B tau, the objects' wrenches */
   for (i = 3; i < ns; ++i) sw->f[i] = tau[i - 3];
   for (i = 0; i < 3 * sw->no; ++i) sw->f[ns + i] = fo[i];
   for (i = 0; i < nb; ++i) sw->st[i] = 0.0;
   SNAKECG_EXPORT(core_scene_solve_b)(1, n, m, nb, &m, &nb, sw->M, sw->f, sw->A, NULL,
                                      sw->kind, sw->start, sw->par, max_sweeps, sw->lam, sw->a,
                                      sw->w, sw->st, out + SO_INFO);
-  /* a_free = M^-1 f (partial pivoting, as numpy.linalg.solve) */
-  memcpy(sw->LU, sw->M, sizeof(double) * (size_t)(n * n));
-  for (i = 0; i < n; ++i) sw->afree[i] = sw->f[i];
-  if (sc_lu_factor(n, sw->LU, n, sw->piv)) sc_lu_solve(n, sw->LU, n, sw->piv, sw->afree);
+  /* a_free = M^-1 f (partial pivoting, as numpy.linalg.solve; block by block, which is the
+   * same elimination on a block-diagonal M) */
+  for (i = 0; i < ns; ++i)
+    for (j = 0; j < ns; ++j) sw->LU[i * ns + j] = sw->M[i * n + j];
+  for (i = 0, j = sc_lu_factor(ns, sw->LU, ns, sw->piv); i < n; ++i) {
+    sw->afree[i] = i < ns ? sw->f[i] : sw->f[i] / sw->M[i * n + i];
+    j &= i < ns || sw->M[i * n + i] != 0.0;
+  }
+  if (j) sc_lu_solve(ns, sw->LU, ns, sw->piv, sw->afree);
   else
     for (i = 0; i < n; ++i) sw->afree[i] = NAN;
   metrics(sw, sw->a, out);
@@ -321,17 +340,14 @@ failed: /* a generated function refused */
   for (i = SO_NORM_QDD; i < width; ++i) out[i] = NAN;
 }
 
-static void work_free(sc_scene_work *sw) {
-  sc_work_free(&sw->ws);
-  free(sw->A);
-  free(sw->kind);
-  free(sw->shape);
-}
+static void work_free(sc_scene_work *sw) { free(sw->A); }
 
-/* The scratch of a batch call (0, or -1 out of memory). */
+/* The scratch of a batch call, one allocation (doubles, then the generated functions'
+ * pointers and integers, the blocks' integers, the shapes; 8-byte fields throughout): 0, or
+ * -1 out of memory. */
 static int work_alloc(sc_scene_work *sw, const double *pk, sc_int ccap, sc_int mcap) {
   const sc_work_fn fns[] = {SNAKECG_LP_WORK, SNAKECG_LJ_WORK, SNAKECG_MM_WORK};
-  sc_int n, nd;
+  sc_int n, nd, k, i, sz[4], most[4] = {0, 0, 0, 0};
   double *d;
   sw->pk = pk;
   sw->tol = pk[SP_TOL];
@@ -343,19 +359,29 @@ static int work_alloc(sc_scene_work *sw, const double *pk, sc_int ccap, sc_int m
   sw->ccap = ccap;
   sw->mcap = mcap;
   sw->nbody = SNAKECG_NL + sw->no + sw->nob;
-  sw->A = 0;
-  sw->kind = 0;
-  sw->shape = 0;
-  if (sc_work_alloc(&sw->ws, fns, SC_COUNT(fns))) return -1;
-  nd = mcap * n + 2 * n * n + 5 * n + 3 * mcap + 3 * mcap + 3 * SNAKECG_NL +
-       3 * SNAKECG_NL * SNAKECG_NS + SNAKECG_NS * SNAKECG_NS + 3 * sw->nbody + 3 * sw->no + 8;
-  sw->A = d = (double *)calloc((size_t)nd, sizeof(double));
-  sw->kind = (sc_int *)calloc((size_t)(2 * mcap + n + 2), sizeof(sc_int));
-  sw->shape = (sc_shape *)calloc((size_t)sw->nbody + 1, sizeof(sc_shape));
-  if (!sw->A || !sw->kind || !sw->shape) {
-    work_free(sw);
-    return -1;
+  for (k = 0; k < SC_COUNT(fns); ++k) {
+    sz[0] = sz[1] = sz[2] = sz[3] = 0;
+    if (fns[k](sz, sz + 1, sz + 2, sz + 3)) return -1;
+    for (i = 0; i < 4; ++i) most[i] = sz[i] > most[i] ? sz[i] : most[i];
   }
+  nd = mcap * n + 2 * n * n + 7 * n + 3 * mcap + 3 * mcap + 5 * SNAKECG_NL +
+       3 * SNAKECG_NL * SNAKECG_NS + SNAKECG_NS * SNAKECG_NS + 3 * sw->nbody + 3 * sw->no + 8;
+  sw->A = d = (double *)malloc((size_t)(nd + most[3] + 1) * sizeof(double) +
+                               (size_t)(most[0] + most[1] + 2) * sizeof(double *) +
+                               (size_t)(2 * mcap + n + 2 + most[2] + 1) * sizeof(sc_int) +
+                               (size_t)(sw->nbody + 1) * sizeof(sc_shape));
+  if (!d) return -1;
+  sw->ws.w = d + nd;
+  sw->ws.arg = (const double **)(d + nd + most[3] + 1);
+  sw->ws.res = (double **)(sw->ws.arg + most[0] + 1);
+  sw->kind = (sc_int *)(sw->ws.res + most[1] + 1);
+  sw->ws.iw = sw->kind + 2 * mcap + n + 2;
+  sw->shape = (sc_shape *)(sw->ws.iw + most[2] + 1);
+  /* zeros but for the rows and the generated functions' work vectors (the largest parts,
+   * written before they are read) */
+  memset(d + mcap * n, 0, sizeof(double) * (size_t)(nd - mcap * n));
+  memset((void *)sw->ws.arg, 0, (size_t)((char *)sw->ws.iw - (char *)sw->ws.arg));
+  memset(sw->shape, 0, sizeof(sc_shape) * (size_t)(sw->nbody + 1));
   d += mcap * n;
   sw->M = d; d += n * n;
   sw->LU = d; d += n * n;
@@ -371,9 +397,13 @@ static int work_alloc(sc_scene_work *sw, const double *pk, sc_int ccap, sc_int m
   sw->Ms = d; d += SNAKECG_NS * SNAKECG_NS;
   sw->centre = d; d += 2 * sw->nbody;
   sw->reach = d; d += sw->nbody;
-  sw->pose = d;
+  sw->pose = d; d += 3 * sw->no;
+  sw->D = d; d += 2 * n;
+  sw->cs = d;
   sw->start = sw->kind + mcap;
   sw->piv = sw->start + mcap;
+  sw->placed = 0;
+  full_inertia(sw, sw->M); /* the objects' part (M_s: per sample) */
   return 0;
 }
 
@@ -381,8 +411,9 @@ static int work_alloc(sc_scene_work *sw, const double *pk, sc_int ccap, sc_int m
  * q + i sq, tau + i st, fo + i sf (stride 0 broadcasts); its outputs at out + i width
  * (width = SO_QDD + n_s + 7 n_o + 3 n_g + CR_W ccap); where A is not null, its details at
  * A + i mcap n, lam, w, state + i mcap. At most ccap contacts a sample (a sample with more:
- * status SS_MORE, for the caller to redo with a larger ccap). Returns 0, -1 out of memory, -2
- * on sizes out of range, -(3 + i) when an input of sample i is not finite. */
+ * status SS_MORE, for the caller to redo with a larger ccap; the records after a sample's
+ * contacts are left as they were). Returns 0, -1 out of memory, -2 on sizes out of range,
+ * -(3 + i) when an input of sample i is not finite. */
 int SNAKECG_EXPORT(core_scene_forward)(const double *pk, sc_int n, const double *q, sc_int sq,
                                        const double *tau, sc_int st, const double *fo,
                                        sc_int sf, sc_int ccap, sc_int mcap, double *out,
@@ -480,7 +511,7 @@ SC_INTERNAL int sc_scene_state_rows(const double *pk, const double *q, const dou
     work_free(&sw);
     return SS_FAILED;
   }
-  sc_scene_place(pk, sw.P, qo, sw.shape, sw.pose, sw.centre, sw.reach);
+  place(&sw, sw.P, qo);
   for (i = 0; i < 3 * sw.no; ++i) out[RO_POSE + i] = sw.pose[i];
   nc = contact_rows(&sw, sw.P, out + RO_POSE + 3 * sw.no, out + RO_OVERLAP, sw.ccap);
   if (nc < 0) {
@@ -488,7 +519,7 @@ SC_INTERNAL int sc_scene_state_rows(const double *pk, const double *q, const dou
     work_free(&sw);
     return (int)-nc;
   }
-  m = ground_rows(&sw, sw.P, nc);
+  m = ground_rows(&sw, nc);
   out[RO_NC] = (double)nc;
   out[RO_M] = (double)m;
   out[RO_NB] = (double)(nc + sw.ng);
@@ -517,7 +548,7 @@ int SNAKECG_EXPORT(core_scene_gaps)(const sc_scene_state *c) {
     work_free(&sw);
     return -4;
   }
-  sc_scene_place(c->pk, sw.P, c->qo, sw.shape, sw.pose, sw.centre, sw.reach);
+  place(&sw, sw.P, c->qo);
   for (ia = 0; ia < nl + sw.no; ++ia)
     for (ib = ia + 1; ib < sw.nbody; ++ib) {
       const double *ca = sw.centre + 2 * ia, *cb = sw.centre + 2 * ib;

@@ -2,8 +2,9 @@
 :class:`Rows`: what a :class:`~snakecg.scenes.metrics.SceneResult` reports for checks), read
 from the engine that finds and builds them (``snakecg/engine/scene_rows.c``): at rest
 (the objects placed by the scene) or at a simulation's state (the objects where they are, the
-run's tolerance) through :class:`StateRows`; and the placement of the links and objects at a
-configuration (what the drawing shows).
+run's tolerance) through :class:`StateRows`; and the links' ends at a configuration (what the
+drawing shows; the objects' placement is the engine's,
+:meth:`~snakecg.scenes.model.GeneralSceneModel.object_poses`).
 """
 
 from __future__ import annotations
@@ -17,7 +18,7 @@ from ..errors import BuildError, InputError
 from .description import GeneralScene
 from .packing import BODY_KINDS, CR_W, MAX_ROWS
 
-__all__ = ["Contact", "Rows", "StateRows", "read_rows", "link_ends", "place_objects"]
+__all__ = ["Contact", "Rows", "StateRows", "read_rows", "link_ends"]
 
 #: the engine's rows' outputs (scene_rows.c's RO_*): status, contacts, rows, blocks, an
 #: overlap's record, then the objects' poses and the contacts
@@ -55,11 +56,6 @@ class Rows:
     labels: list
 
 
-def _frame(pose):
-    return np.array([np.cos(pose[2]), np.sin(pose[2])]), np.array([-np.sin(pose[2]),
-                                                                    np.cos(pose[2])])
-
-
 def link_ends(scene: GeneralScene, poses) -> np.ndarray:
     """Rear and front ends of every link (n_l, 2, 2) from the COM poses."""
     r = scene.robot
@@ -68,25 +64,6 @@ def link_ends(scene: GeneralScene, poses) -> np.ndarray:
         t = np.array([np.cos(phi), np.sin(phi)])
         rear = np.array([x, y]) - r.com[i] * t
         out[i] = (rear, rear + r.length[i] * t)
-    return out
-
-
-def place_objects(scene: GeneralScene, poses) -> np.ndarray:
-    """Every object's pose (x, y, theta) at the link poses (a ``touching`` object on the
-    named side of its link, the contact at ``offset`` from the rear end; a box with a face
-    along the link)."""
-    out = np.empty((scene.n_objects, 3))
-    ends = link_ends(scene, poses)
-    for j, o in enumerate(scene.objects):
-        if o.pose is not None:
-            out[j] = o.pose
-            continue
-        k = o.touching["link"] - 1
-        t, nrm = _frame(poses[k])
-        off = o.touching.get("offset", scene.robot.length[k] / 2)
-        side = 1.0 if o.touching.get("side", "left") == "left" else -1.0
-        c = ends[k, 0] + off * t + side * (scene.radius + o.half_depth) * nrm
-        out[j] = (c[0], c[1], poses[k][2])
     return out
 
 

@@ -10,7 +10,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..figures.axes import COLORS, _scale, frame
-from .contacts import link_ends, place_objects
+from .contacts import link_ends
 from .geometry import box_corners
 
 __all__ = ["plot_scene"]
@@ -24,7 +24,7 @@ def plot_scene(model, q, tau=None, ax=None, *, title: str | None = None):
     sc = model.scene
     P = model.link_poses(q)
     ends = link_ends(sc, P)
-    op = place_objects(sc, P)
+    op = model.object_poses(q)
     if ax is None:
         import matplotlib.pyplot as plt
 

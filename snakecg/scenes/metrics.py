@@ -50,6 +50,9 @@ class SceneResult:
     minimum-norm on the face: 1, or not attained: 2), ``status`` (:data:`STATUS_NAMES`) and
     ``reason`` (why a sample was not solved, '' when it was)."""
 
+    # filled when first read (class defaults: a one-sample result sets four fields)
+    _rows_out = _given = _buf = _detail = _reasons = _lists = None
+
     def __init__(self, model, out: np.ndarray, ccap: int, batched: bool, inputs: tuple):
         self._model, self._rows_out, self._ccap = model, out, ccap
         self.batched = batched
@@ -62,7 +65,6 @@ class SceneResult:
         views made when first read."""
         self = cls.__new__(cls)
         self._model, self._buf, self._ccap, self.batched = model, buf, ccap, False
-        self._rows_out = self._given = self._detail = self._reasons = self._lists = None
         return self
 
     @property

@@ -26,6 +26,7 @@ _REFUSED = ("optimize_shape", "com_polar")
 #: Samples per thread below which a batch is not split (SNAKECG_THREADS; snakecg.forward's)
 PARALLEL_MIN = 512
 _F64 = np.dtype(np.float64)
+_of_buffer = SceneResult.of_buffer
 
 
 class GeneralSceneModel(RobotModel):
@@ -47,15 +48,14 @@ class GeneralSceneModel(RobotModel):
         self._engine = getattr(self.core, "scene_forward", None)
         self._pk = self.packed.vector.ctypes.data
         self._zero_f = np.zeros((1, 3 * scene.n_objects))
-        self._shape_q, self._shape_tau = (self.n_coordinates,), (self.n_joints,)
-        self._one = (_OneSample(self) if getattr(self.core, "scene_forward_call", None)
+        self._one = (_one_sample(self) if getattr(self.core, "scene_forward_call", None)
                      is not None else None)
 
     def __getattr__(self, name):
         if name in _REFUSED:
             raise InputError(f"{name} is not available on a general scene yet (forward, "
-                             f"maps, extremes, optimize, simulate and plot are); use a snakecg.Scene of "
-                             f"the paper's scenarios")
+                             "maps, extremes, optimize, simulate and plot are); use a "
+                             "snakecg.Scene of the paper's scenarios")
         raise AttributeError(name)
 
     def overlap_message(self, rec, index) -> str:
@@ -65,6 +65,23 @@ class GeneralSceneModel(RobotModel):
         where = "" if index is None else f" in sample {index}"
         return (f"{a} and {b} overlap by {rec[4]:.3g} m{where} (contacts hold within "
                 f"{rec[5]:.3g} m); move them apart")
+
+    def object_poses(self, q) -> np.ndarray:
+        """Every object's pose ``(x, y, theta)`` at ``q`` as the forward solve places it (a
+        ``pose``, or ``touching`` a link: on its named side, the contact at ``offset`` from
+        the rear end, a box with a face along the link): ``(n_objects, 3)``, or
+        ``(N, n_objects, 3)`` for ``q`` ``(N, n_s)``. The engine's placement
+        (``core_scene_place``), the one the forward, the drawing and a simulation's start
+        read."""
+        P = self.link_poses(q)  # checks q
+        if getattr(self.core, "scene_place", None) is None:
+            raise BuildError("a general scene's objects are placed by the compiled engine; "
+                             "load it with a C compiler (set CC) and the compiled backend")
+        P3 = np.ascontiguousarray(P.reshape(-1, self.n_links, 3))
+        out = np.empty((P3.shape[0], self.scene.n_objects, 3))
+        if self.core.scene_place(self._pk, P3.shape[0], P3.ctypes.data, out.ctypes.data):
+            raise MemoryError("the scene's placement ran out of memory")
+        return out if P.ndim == 3 else out[0]
 
     def simulate(self, q0, duration, **kwargs):
         """Simulate the scene over time: :func:`snakecg.scenes.stepping.simulate_scene`
@@ -95,26 +112,11 @@ class GeneralSceneModel(RobotModel):
         external wrench (F_x, F_y, torque) on every object, ``(n_objects, 3)`` (or batched).
         A sample whose shapes overlap is refused (one sample: :class:`InputError`; in a batch:
         NaN with status ``overlap`` and the reason)."""
-        if (v is None and f_obj is None and type(q) is np.ndarray and type(tau) is np.ndarray
-                and q.dtype is _F64 and tau.dtype is _F64 and q.shape == self._shape_q
-                and tau.shape == self._shape_tau and self._one is not None):
-            # one sample of float64 arrays: through the model's one-sample buffers straight
-            # to the engine (which checks finiteness), one copy of the output row
-            one = self._one
-            if one.lock.acquire(False):
-                try:
-                    one.q[:] = q
-                    one.tau[:] = tau
-                    code = one.call(one.address)
-                    buf = one.buf.copy()  # the inputs and the output row in one copy
-                finally:
-                    one.lock.release()
-                status = buf.item(one.at)
-                if code == 0 and status != 4:
-                    if status == 3:
-                        raise InputError(self.overlap_message(buf[one.at + 13:one.at + 19],
-                                                              None))
-                    return SceneResult.of_buffer(self, buf, one.ccap)
+        one = self._one
+        if one is not None and v is None and f_obj is None:
+            res = one(q, tau)
+            if res is not None:
+                return res
         if v is not None and np.any(np.asarray(v, dtype=float) != 0):
             raise InputError("v: a general scene is solved at rest (v = 0); velocities are not "
                              "supported yet")
@@ -250,24 +252,44 @@ class GeneralSceneModel(RobotModel):
         return {"raw": raw, "rows": rows}
 
 
-class _OneSample:
-    """A model's buffer for one-sample calls (q, tau and the output row, side by side) and the
-    engine's arguments pointing into it, built once; taken under a non-blocking lock (a
-    second thread that finds it busy goes the general way)."""
+def _one_sample(model: GeneralSceneModel):
+    """A model's forward of one sample of float64 arrays of the right shapes (None for any
+    other input, or when the buffer is busy or the sample has more contacts than the first
+    pass's room: the general way then answers): q, tau and the output row side by side in one
+    buffer, the engine's arguments pointing into it, built once; taken under a non-blocking
+    lock (a second thread that finds it busy goes the general way). A closure: its fields are
+    its own variables, no lookups per call."""
+    pk = model.packed
+    ccap = min(CONTACTS_FIRST, pk.contacts_max)
+    ns, na = model.n_coordinates, model.n_joints
+    buf = np.zeros(ns + na + pk.width(ccap))
+    bq, bt, at = buf[:ns], buf[ns:ns + na], ns + na  # at: where the output row starts
+    base = buf.ctypes.data
+    args = SceneCall(model._pk, 1, base, 0, base + 8 * ns, 0, model._zero_f.ctypes.data, 0,
+                     ccap, ccap + pk.ground_rows, base + 8 * at, 0, 0, 0, 0)
+    where, call = address(args), model.core.scene_forward_call
+    lock = threading.Lock()
+    acquire, release = lock.acquire, lock.release
+    shape_q, shape_tau, ndarray = (ns,), (na,), np.ndarray
 
-    __slots__ = ("buf", "q", "tau", "at", "ccap", "args", "address", "call", "lock")
+    def one(q, tau):
+        if (type(q) is ndarray and type(tau) is ndarray and q.dtype is _F64
+                and tau.dtype is _F64 and q.shape == shape_q and tau.shape == shape_tau
+                and acquire(False)):
+            try:  # straight to the engine (which checks finiteness)
+                bq[:] = q
+                bt[:] = tau
+                code = call(where)
+                out = buf.copy()  # the inputs and the output row in one copy
+            finally:
+                release()
+            if code == 0:
+                status = out.item(at)
+                if status == 3:
+                    raise InputError(model.overlap_message(out[at + 13:at + 19], None))
+                if status != 4:  # else: more contacts than the first pass's room
+                    return _of_buffer(model, out, ccap)
+        return None
 
-    def __init__(self, model: GeneralSceneModel):
-        pk = model.packed
-        ccap = min(CONTACTS_FIRST, pk.contacts_max)
-        ns, na = model.n_coordinates, model.n_joints
-        self.buf = np.zeros(ns + na + pk.width(ccap))
-        self.q, self.tau = self.buf[:ns], self.buf[ns:ns + na]
-        self.at, self.ccap = ns + na, ccap  # where the output row starts; its room
-        base = self.buf.ctypes.data
-        self.args = SceneCall(model._pk, 1, base, 0, base + 8 * ns, 0,
-                              model._zero_f.ctypes.data, 0, ccap, ccap + pk.ground_rows,
-                              base + 8 * (ns + na), 0, 0, 0, 0)
-        self.address = address(self.args)
-        self.call = model.core.scene_forward_call
-        self.lock = threading.Lock()
+    one.args = args  # the engine reads it: kept alive with the closure
+    return one

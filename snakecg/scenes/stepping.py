@@ -47,7 +47,7 @@ import numpy as np
 
 from ..engine.binding import SCENE_LAWS, SceneRunCall, SceneStateCall, SceneStep, address
 from ..errors import BuildError, InputError
-from .contacts import Rows, StateRows, place_objects, read_rows
+from .contacts import Rows, StateRows, read_rows
 from .packing import BODY_KINDS, scene_size
 from .run_record import ST_LOSS, ST_SLIDING_COS, ST_WIDTH, SceneEvent, SceneRun
 from .solve import INFO
@@ -284,7 +284,7 @@ def simulate_scene(model, q0, duration, *, v0=None, tau=None, dt=1e-3, q_obj0=No
     st = _Stepper(model, tol, fo.reshape(-1))
     ns = st.ns
     if qo is None:
-        qo = place_objects(scene, model.link_poses(q))
+        qo = model.object_poses(q)
     rec = SceneRun.start(model, tol, dt)
 
     def torque(t):
