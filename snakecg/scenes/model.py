@@ -193,7 +193,9 @@ class GeneralSceneModel(RobotModel):
         for every pair's."""
         pk = self.packed
         ccap = min(CONTACTS_FIRST, pk.contacts_max)
-        out = np.empty((N, pk.width(ccap)))
+        # zeros: the engine leaves the record room after a sample's contacts unwritten, and
+        # a result is the same bytes whatever the threads' split
+        out = np.zeros((N, pk.width(ccap)))
         code = self._call(q, tau, fo, N, ccap, out)
         if code <= -3:
             return None
@@ -207,7 +209,7 @@ class GeneralSceneModel(RobotModel):
         wide = np.full((N, pk.width(full)), np.nan)
         wide[:, :out.shape[1]] = out
         pick = [a if a.shape[0] == 1 else np.ascontiguousarray(a[more]) for a in (q, tau, fo)]
-        redo = np.empty((more.size, pk.width(full)))
+        redo = np.zeros((more.size, pk.width(full)))
         self._call(*pick, more.size, full, redo)
         redo[redo[:, 0] == 4, 0] = 5  # more than the solve takes
         wide[more] = redo
@@ -225,7 +227,7 @@ class GeneralSceneModel(RobotModel):
         mcap = ccap + pk.ground_rows
         det = {"A": np.zeros((N, mcap, n)), "lam": np.zeros((N, mcap)),
                "w": np.zeros((N, mcap)), "state": np.zeros((N, mcap))}
-        again = np.empty((N, pk.width(ccap)))
+        again = np.zeros((N, pk.width(ccap)))
         q, tau, fo = (np.ascontiguousarray(a) for a in inputs)
         self._call(q, tau, fo, N, ccap, again, det)
         starts = np.cumsum((0,) + pk.sizes)

@@ -16,7 +16,6 @@ import numpy as np
 
 from ..engine.threads import pool, threads
 from ..errors import InputError
-from .contacts import place_objects
 from .packing import scene_size
 from .stepping import STEP_DONE, _check_args, _Runner, _Stepper, ending, engine_law
 
@@ -154,10 +153,11 @@ def simulate_scene_batch(model, q0, duration, *, v0=None, tau=None, dt=1e-3, q_o
     q_end, q_obj_end = np.zeros((runs, ns)), np.zeros((runs, no, 3))
     q_obj_start, deepest = np.zeros((runs, no, 3)), np.zeros(runs)
     keep, going = [], []
+    placed = model.object_poses(Q) if QO is None else QO  # the engine's placement, one call
     for i in range(runs):
         name, params = laws[i if len(laws) > 1 else 0]
         st = _Stepper(model, tol, fo.reshape(-1))
-        qo = QO[i] if QO is not None else place_objects(model.scene, model.link_poses(Q[i]))
+        qo = placed[i]
         st.x[:ns], st.x[ns:] = Q[i], np.asarray(qo).reshape(-1)
         st.V[:ns] = V[i] if V is not None else 0.0
         st.V[ns:] = VO[i].reshape(-1) if VO is not None else 0.0
