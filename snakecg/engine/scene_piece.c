@@ -53,7 +53,8 @@ static sc_int piece(sc_problem *p, double rc, double *work, sc_int *iwork, doubl
   const double *G = p->G;
   sc_int *hr = iwork, *sl = hr + m, *ph = sl + nb, *pj = ph + m;
   sc_int h = 0, ns = 0, n2, k, i, s, t, a, c, it, rank = 0, rj = 0;
-  double *X, *S, *J, *d0, *sc, *sc2, *th, *th0, *T, *F, *dx, *l0, *D, *wt, *ws, *W, fn = 0.0;
+  double *X, *S, *J, *d0, *sc, *sc2, *th, *th0, *T, *F, *dx, *l0, *D, *wt, *ws, *W, fn = 0.0,
+         v = 0.0;
   for (k = 0; k < nb; ++k) {
     sc_int r = p->start[k], nk = sc_block_size(p->kind[k]);
     if (p->state[k] == S_ZERO)
@@ -103,20 +104,20 @@ static sc_int piece(sc_problem *p, double rc, double *work, sc_int *iwork, doubl
   for (a = 0; a < n2; ++a) { /* S = G_SS + G_SH X, wt = w_S + G_SH d0 */
     const double *ga = G + (p->start[sl[a / 2]] + a % 2) * m;
     double *restrict sa = S + a * n2;
-    double v = p->w[p->start[sl[a / 2]] + a % 2];
+    double wa = p->w[p->start[sl[a / 2]] + a % 2];
     for (c = 0; c < n2; ++c) sa[c] = ga[p->start[sl[c / 2]] + c % 2];
     for (i = 0; i < h; ++i) {
       const double *restrict xi = X + i * n2;
       const double g = ga[hr[i]];
-      v += g * d0[i];
+      wa += g * d0[i];
       for (c = 0; c < n2; ++c) sa[c] += g * xi[c];
     }
-    wt[a] = v;
+    wt[a] = wa;
   }
   for (a = 0; a < n2; ++a) /* symmetric to rounding: made exactly so */
     for (c = 0; c < a; ++c) S[a * n2 + c] = S[c * n2 + a] = 0.5 * (S[a * n2 + c] + S[c * n2 + a]);
   for (it = 0; it < 40 && ns > 0; ++it) { /* Newton on the angles */
-    double v0 = reduced(n2, S, wt, D, ws), tstep = 1.0, step = 0.0;
+    double v0 = it ? v : reduced(n2, S, wt, D, ws), tstep = 1.0, step = 0.0;
     sc_int ls;
     fn = 0.0;
     for (s = 0; s < ns; ++s) {
@@ -148,7 +149,8 @@ static sc_int piece(sc_problem *p, double rc, double *work, sc_int *iwork, doubl
         D[2 * s] = l[0] - l0[2 * s];
         D[2 * s + 1] = l[1] - l0[2 * s + 1];
       }
-      if (reduced(n2, S, wt, D, ws) <= v0 + 1e-14 * (fabs(v0) + p->fscale * p->wscale)) break;
+      v = reduced(n2, S, wt, D, ws); /* (ws at the step taken: the next iteration's) */
+      if (v <= v0 + 1e-14 * (fabs(v0) + p->fscale * p->wscale)) break;
     }
     for (s = 0; s < ns; ++s) {
       k = sl[s];
