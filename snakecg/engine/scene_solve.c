@@ -342,7 +342,7 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
     int degenerate = defect > 0;
     for (k = 0; k < nb && !degenerate; ++k)
       if (state[k] != S_HELD && sc_still(&p, k)) degenerate = 1;
-    if (degenerate) dep = sc_min_norm_face(&p, rest);
+    if (degenerate) dep = sc_min_norm_face(&p, Z, rest);
     kkt(&p, res, 0);
     /* a contact that the minimum-norm choice brought to zero force may open instead, which
      * frees the dependent forces further: tried one at a time, kept where the KKT conditions
@@ -358,7 +358,7 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
       d2 = sc_polish(&p, rest, iw2);
       if (d2 >= 0 && !kkt(&p, res, 0) && res[0] <= TOL_ACCEPT && res[1] <= TOL_ACCEPT &&
           res[2] <= TOL_ACCEPT) {
-        dep = sc_min_norm_face(&p, rest);
+        dep = sc_min_norm_face(&p, Z, rest);
         defect = d2;
         kkt(&p, res, 0);
         if (d2 == 0) break;
