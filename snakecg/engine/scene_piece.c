@@ -177,14 +177,15 @@ static sc_int piece(sc_problem *p, double rc, double *work, sc_int *iwork, doubl
 }
 
 /* piece, solved again from its own result while the residual is above rounding (at most
- * three times): where it does not halve with rows dropped, they are kept (pivots to 1e-15). */
+ * three times): where it does not halve with rows dropped and stays above 1e-12 of the
+ * scale, they are kept (pivots to 1e-15). */
 static sc_int rounds(sc_problem *p, double *work, sc_int *iwork, double *fn) {
   double rc = DEP_TOL, prev = INFINITY;
   sc_int defect = 0, round;
   for (round = 0; round < 3; ++round) {
     defect = piece(p, rc, work, iwork, fn);
     if (!(*fn > 1e-14 * p->wscale)) break;
-    if (defect > 0 && !(*fn < 0.5 * prev)) rc = 1e-15;
+    if (defect > 0 && !(*fn < 0.5 * prev) && *fn > 1e-12 * p->wscale) rc = 1e-15;
     prev = *fn;
   }
   return defect;
