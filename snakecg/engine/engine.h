@@ -20,7 +20,8 @@
  *   optimal.c       the optimal-torque queries of a batch (exported: core_optimal)
  *   max_sr.c, push.c, wheel_states.c   the queries' solves
  *   pieces.c, sphere.c                 the exact extremes' pieces and faces (exported)
- *   scene_sets.c, scene_solve.c  a general scene's exact solve (core_scene_solve, _solve_b)
+ *   scene_sets.c, scene_piece.c, scene_solve.c   a general scene's exact solve (core_scene_solve,
+ *                   core_scene_solve_b with offsets)
  *   scene_geometry.c, scene_rows.c, scene_step.c, scene_run.c   placement, contacts, rows,
  *                   forward, a time step, whole runs and batches of runs
  *
@@ -530,9 +531,7 @@ int SNAKECG_EXPORT(core_settle)(sc_settle *st);
 int SNAKECG_EXPORT(core_contact_depth)(const sc_geometry *g, sc_int n, const double *Y,
                                       double *depth, double *pair);
 
-/* ---- the general-scene solve (scene_sets.c, scene_solve.c) ---- */
-/* block kinds of the force sets, a problem of one sample, the solve's states and
- * (the solve's own states, fields and tolerances are scene_solve.c's) */
+/* ---- the general-scene solve (scene_sets.c, scene_piece.c, scene_solve.c) ---- */
 enum { K_FREE = 0, K_UNILATERAL = 1, K_BOX = 2, K_DISC = 3, K_SPLIT = 4 };
 typedef struct {
   sc_int n, m, nb;
@@ -549,10 +548,12 @@ enum { S_HELD = 0, S_ZERO = 1, S_SLIDE = 2 }; /* a block's state */
 #define NULL_TOL 1e-13 /* G_FF's pivots at most this of the first: no acceleration */
 SC_INTERNAL int sc_in_set(const sc_problem *p, sc_int k, double *l, double tol, int clip);
 SC_INTERNAL int sc_still(const sc_problem *p, sc_int k);
-SC_INTERNAL int sc_min_norm_face(sc_problem *p, double *work);
+SC_INTERNAL int sc_min_norm_face(sc_problem *p, const double *Z, double *work);
 SC_INTERNAL void sc_block_min(const sc_problem *p, sc_int k, const double *c, double *l);
 SC_INTERNAL void sc_on_boundary(const sc_problem *p, sc_int k, double t, double *l, double *T);
 SC_INTERNAL double sc_angle_of(const sc_problem *p, sc_int k, const double *l);
+SC_INTERNAL void sc_update_w(sc_problem *p); /* scene_piece.c: w = G lam + b; a piece */
+SC_INTERNAL sc_int sc_polish(sc_problem *p, double *work, sc_int *iwork);
 int SNAKECG_EXPORT(core_scene_solve_b)(sc_int ns, sc_int n, sc_int mmax, sc_int nbmax,
   const sc_int *m, const sc_int *nb, const double *M, const double *f, const double *A,
   const double *c, const sc_int *kind, const sc_int *start, const double *par,

@@ -1,11 +1,8 @@
-/* snakecg's engine: small dense linear algebra (the one home of LU, Cholesky, the
- * symmetric eigensolver and Householder QR for the core's optimisation code).
- *
- * Everything here is `static inline`, works on row-major matrices with an explicit leading
- * dimension `ld` (element (i, j) of A at A[i * ld + j]), takes its sizes as sc_int and
- * allocates nothing: a routine that needs scratch space takes it from the caller. The sizes
- * are those of one configuration's problems (a handful to a few dozen), so the methods are
- * the plain textbook ones (Golub & Van Loan, "Matrix Computations", 4th ed.):
+/* snakecg's engine: small dense linear algebra (the one home of LU, Cholesky, the symmetric
+ * eigensolver and Householder QR for the core's optimisation code). All `static inline`,
+ * row-major with a leading dimension `ld` (A_ij at A[i * ld + j]), sizes as sc_int, no
+ * allocation (scratch from the caller); for a few dozen unknowns, so the plain textbook
+ * methods (Golub & Van Loan, "Matrix Computations", 4th ed.):
  *
  *   sc_lu_factor / sc_lu_solve          Gaussian elimination with partial pivoting (alg. 3.4.1)
  *   sc_cholesky / sc_cholesky_solve     A = L L^T, with a relative pivot threshold (alg. 4.2.2)
@@ -15,7 +12,7 @@
  *                                       basic solution of a least-squares problem of any rank
  *   sc_qr_factor / sc_qr_apply          Householder QR without pivoting (alg. 5.2.1)
  *   sc_svd_jacobi / sc_svd_least_norm   one-sided Jacobi SVD (8.6.3), least-norm solutions
- */
+ *   sc_psd_solve / sc_psd_resolve       semidefinite P L D L^T P^T (diagonal pivoting) */
 #ifndef SNAKECG_ENGINE_LINALG_H
 #define SNAKECG_ENGINE_LINALG_H
 
@@ -63,8 +60,7 @@ static inline double sc_frobenius(sc_int m, sc_int n, const double *A, sc_int ld
   return sqrt(s);
 }
 
-/* ---------------------------------------------------------------------------------------
- * LU with partial pivoting: P A = L U in place of A (L unit lower, U upper), piv[k] the row
+/* LU with partial pivoting: P A = L U in place of A (L unit lower, U upper), piv[k] the row
  * swapped with k at step k. Returns 1, or 0 when a pivot is zero or a factor not finite. */
 static inline int sc_lu_factor(sc_int n, double *A, sc_int ld, sc_int *piv) {
   sc_int i, j, k;
@@ -95,8 +91,7 @@ static inline int sc_lu_factor(sc_int n, double *A, sc_int ld, sc_int *piv) {
   return 1;
 }
 
-/* b := A^-1 b with the factors of sc_lu_factor (the row swaps first: the factorization swaps
- * whole rows, so its L belongs to P A with every swap applied) */
+/* b := A^-1 b with sc_lu_factor's factors (the swaps first: its L belongs to P A) */
 static inline void sc_lu_solve(sc_int n, const double *A, sc_int ld, const sc_int *piv,
                                double *b) {
   sc_int i, k;
@@ -118,10 +113,8 @@ static inline void sc_lu_solve(sc_int n, const double *A, sc_int ld, const sc_in
   }
 }
 
-/* ---------------------------------------------------------------------------------------
- * Cholesky A = L L^T of a symmetric matrix, L in place of A's lower triangle (the upper one is
- * left alone). Returns 1, or 0 when a pivot d_j (before its square root) is not above
- * rel * max_i A_ii: the matrix is not safely positive definite at that relative level. */
+/* Cholesky A = L L^T, L in place of A's lower triangle (the upper one left alone). Returns 1,
+ * or 0 when a pivot (before its square root) is not above rel * max_i A_ii. */
 static inline int sc_cholesky(sc_int n, double *A, sc_int ld, double rel) {
   sc_int i, j, k;
   double big = 0.0;
@@ -158,14 +151,11 @@ static inline void sc_cholesky_solve(sc_int n, const double *L, sc_int ld, doubl
   }
 }
 
-/* ---------------------------------------------------------------------------------------
- * A = L D L^T of a symmetric n x n matrix without pivoting (alg. 4.1.2): the matrix is rows
- * and columns idx[0..n) of A (column-major, A_ij at A[i + j lda], its lower triangle read;
- * idx null: the first n), unit lower L at L[i + j ldl] (strictly below the diagonal written),
- * d and dinv = 1 / d; work holds n doubles. drop (may be null): on entry, drop[j] != 0 lets
- * row j be dropped when its pivot ratio d_j / A_jj is at most drop_tol in magnitude (then
- * d_j = dinv_j = 0 and column j of L is zero); on exit, whether it was. Returns the smallest
- * pivot ratio d_j / A_jj of the rows kept, at most 1 (NaN propagates). */
+/* A = L D L^T without pivoting (alg. 4.1.2) of rows and columns idx[0..n) of A (column-major,
+ * A_ij at A[i + j lda], lower triangle read; idx null: the first n); unit lower L at
+ * L[i + j ldl] (below the diagonal), d, dinv = 1 / d; work: n doubles. drop (may be null): on
+ * entry drop[j] != 0 lets row j drop when |d_j / A_jj| <= drop_tol (then d_j = dinv_j = 0, L's
+ * column j zero); on exit, whether it did. Returns the smallest d_j / A_jj kept, at most 1. */
 static inline double sc_ldl_factor(sc_int n, const double *A, sc_int lda, const int *idx,
                                    double *L, sc_int ldl, double *d, double *dinv, int *drop,
                                    double drop_tol, double *work) {
@@ -211,11 +201,9 @@ static inline void sc_ldl_solve(sc_int n, const double *L, sc_int ldl, const dou
   }
 }
 
-/* ---------------------------------------------------------------------------------------
- * Eigenvalues (w) and, when V is not null, orthonormal eigenvectors (the columns of V) of the
- * symmetric n x n matrix A, by cyclic Jacobi rotations; A is overwritten (its diagonal ends as
- * w). Sorted ascending. Returns the number of sweeps (at most 60); converged when the
- * off-diagonal part is below 1e-32 of the whole in squared Frobenius norm, i.e. to rounding. */
+/* Eigenvalues (w, ascending) and, V not null, orthonormal eigenvectors (V's columns) of the
+ * symmetric A by cyclic Jacobi rotations (A overwritten). Returns the sweeps (at most 60),
+ * until the off-diagonal part is below 1e-32 of the squared Frobenius norm (rounding). */
 static inline int sc_eigen_symmetric(sc_int n, double *A, sc_int ld, double *w, double *V,
                                      sc_int ldv) {
   sc_int i, j, l;
@@ -275,11 +263,9 @@ static inline int sc_eigen_symmetric(sc_int n, double *A, sc_int ld, double *w, 
   return sweep;
 }
 
-/* ---------------------------------------------------------------------------------------
- * The basic least-squares solution of min ||A x - b|| (A m x n, any shape and rank) by
- * Householder QR with column pivoting: A P = Q R, the rank r the number of |R_kk| above
- * rcond |R_00|, x = P [R_11^-1 (Q^T b)_1; 0]. A and b are overwritten; work holds n doubles
- * and perm n sc_ints. Returns the rank (0 when A is zero). */
+/* The basic solution of min ||A x - b|| (A m x n, any shape and rank) by Householder QR with
+ * column pivoting: A P = Q R, rank r = the |R_kk| above rcond |R_00|, x = P [R_11^-1 (Q^T b)_1;
+ * 0]. A, b overwritten; work: n doubles, perm n sc_ints. Returns r (0 when A is zero). */
 static inline sc_int sc_qr_least_squares(sc_int m, sc_int n, double *A, sc_int ld, double *b,
                                          double rcond, double *x, double *work, sc_int *perm) {
   sc_int i, j, k, rank = 0, steps = m < n ? m : n;
@@ -346,9 +332,8 @@ static inline sc_int sc_qr_least_squares(sc_int m, sc_int n, double *A, sc_int l
   return rank;
 }
 
-/* min 1/2 x^T H x + g^T x over |x| <= 1 (H 2x2 symmetric positive semidefinite): the
- * trust-region sc_problem in closed form on H's eigenvectors, its secular equation
- * sum g_i^2 / (h_i + s)^2 = 1 solved by safeguarded Newton on 1/|x(s)| to rounding. */
+/* min 1/2 x^T H x + g^T x over |x| <= 1 (H 2x2 positive semidefinite) on H's eigenvectors,
+ * the secular equation sum g_i^2 / (h_i + s)^2 = 1 by safeguarded Newton to rounding. */
 static inline void sc_trust_region_2d(const double *H, const double *g, double *x) {
   double a = H[0], c = H[3], bb = 0.5 * (H[1] + H[2]);
   double tr = 0.5 * (a + c), d = sqrt(0.25 * (a - c) * (a - c) + bb * bb);
@@ -389,9 +374,10 @@ static inline void sc_trust_region_2d(const double *H, const double *g, double *
       return;
     }
   }
-  lo = 0.0;
-  hi = sqrt(gp[0] * gp[0] + gp[1] * gp[1]); /* |x(hi)| <= |g| / hi <= 1 */
-  s = lo;
+  nx = gp[0] * gp[0] + gp[1] * gp[1]; /* |g|/(h1 + s) <= |x(s)| <= |g|/(h0 + s): a bracket */
+  lo = fmax(0.0, sqrt(nx) - h[1]);
+  hi = sqrt(nx) - h[0];
+  s = sqrt(nx) - (h[0] * gp[0] * gp[0] + h[1] * gp[1] * gp[1]) / nx; /* h's mean on g */
   for (it = 0; it < 200; ++it) {
     double y0, y1, dn, phi, dphi;
     if (!(s > lo && s < hi)) s = 0.5 * (lo + hi);
@@ -400,7 +386,7 @@ static inline void sc_trust_region_2d(const double *H, const double *g, double *
     nx = sqrt(y0 * y0 + y1 * y1);
     phi = 1.0 / nx - 1.0; /* increasing in s */
     if (phi < 0) lo = s; else hi = s;
-    if (phi == 0.0 || hi - lo <= 4e-16 * hi) break;
+    if (fabs(phi) <= 4e-16 || hi - lo <= 4e-16 * hi) break;
     dn = (y0 * y0 / (h[0] + s) + y1 * y1 / (h[1] + s)) / nx; /* -d|x|/ds */
     dphi = dn / (nx * nx);
     s = s - phi / dphi;
@@ -413,11 +399,9 @@ static inline void sc_trust_region_2d(const double *H, const double *g, double *
   }
 }
 
-/* ---------------------------------------------------------------------------------------
- * Householder QR without pivoting of the m columns of A (n >= m rows; column j at A + j ld):
- * A = Q R (alg. 5.2.1). In place: R's strict upper triangle above the diagonal (R_kj at
- * A[k + j ld]), its diagonal in rd, the reflectors' vectors v_k on and below the diagonal
- * (H_k = 1 - v_k v_k^T 2 / beta_k, beta_k = v_k . v_k, 0 for a zero column: H_k = 1). */
+/* Householder QR of the m columns of A (n >= m rows; column j at A + j ld): A = Q R (5.2.1).
+ * In place: R above the diagonal (R_kj at A[k + j ld]), its diagonal in rd, the reflectors v_k
+ * on and below it (H_k = 1 - 2 v_k v_k^T / beta_k, beta_k = v_k . v_k; 0: H_k = 1). */
 static inline void sc_qr_factor(sc_int n, sc_int m, double *A, sc_int ld, double *rd,
                                 double *beta) {
   sc_int i, j, k;
@@ -461,11 +445,9 @@ static inline void sc_qr_apply(sc_int n, sc_int m, const double *A, sc_int ld,
   }
 }
 
-/* ---------------------------------------------------------------------------------------
- * The singular values of the n x m matrix U (m columns, column j at U + j ld) by one-sided
- * Jacobi rotations (Hestenes; Golub & Van Loan 8.6.3): U := U V with orthogonal columns, V
- * (m x m, column j at V + j m) the right singular vectors, s_j = |U_j|. Rotations until every
- * pair of columns is orthogonal to rounding (at most 60 sweeps). */
+/* The singular values of the n x m U (column j at U + j ld) by one-sided Jacobi (8.6.3):
+ * U := U V with orthogonal columns, V (m x m, column j at V + j m) the right singular vectors,
+ * s_j = |U_j|; until every pair of columns is orthogonal to rounding (at most 60 sweeps). */
 static inline void sc_svd_jacobi(sc_int n, sc_int m, double *U, sc_int ld, double *V,
                                  double *s) {
   sc_int i, p, q;
@@ -503,9 +485,8 @@ static inline void sc_svd_jacobi(sc_int n, sc_int m, double *U, sc_int ld, doubl
   for (p = 0; p < m; ++p) s[p] = sc_norm(U + p * ld, n);
 }
 
-/* The least-norm least-squares solution x (m) from sc_svd_jacobi's factors, singular values at
- * most rcond times the largest dropped (numpy.linalg.lstsq's rule): of U x = b (b: n entries;
- * gram 0) or of (U^T U) x = b (b: m entries; gram 1, whose singular values are s^2). */
+/* The least-norm solution x (m) by sc_svd_jacobi's factors (singular values <= rcond times the
+ * largest dropped, as numpy's lstsq) of U x = b (b: n; gram 0) or U^T U x = b (m; gram 1). */
 static inline void sc_svd_least_norm(sc_int n, sc_int m, const double *U, sc_int ld,
                                      const double *V, const double *s, const double *b,
                                      double rcond, int gram, double *x) {
@@ -523,12 +504,10 @@ static inline void sc_svd_least_norm(sc_int n, sc_int m, const double *U, sc_int
   }
 }
 
-/* ---------------------------------------------------------------------------------------
- * A symmetric positive semidefinite n x n A (row-major, ld; its lower triangle read and
- * overwritten) = P L D L^T P^T by diagonal pivoting (the largest remaining pivot first, as
- * LAPACK's dpstrf); the rank r is the number of pivots above rcond times the first. x = the
- * basic solution of A x = b: P [(L D L^T)_11^-1 (P^T b)_1; 0] (b overwritten). work holds n
- * doubles, perm n sc_ints. Returns r. */
+/* A symmetric positive semidefinite A (its lower triangle read and overwritten) = P L D L^T
+ * P^T by diagonal pivoting (the largest pivot first, as LAPACK's dpstrf); rank r = the pivots
+ * above rcond times the first. x = the basic solution of A x = b: P [(L D L^T)_11^-1
+ * (P^T b)_1; 0] (b overwritten). work holds n doubles, perm n sc_ints. Returns r. */
 static inline sc_int sc_psd_solve(sc_int n, double *A, sc_int ld, double *b, double rcond,
                                   double *x, double *work, sc_int *perm) {
   sc_int i, j, k, rank = 0;
@@ -568,6 +547,25 @@ static inline sc_int sc_psd_solve(sc_int n, double *A, sc_int ld, double *b, dou
   for (j = 0; j < n; ++j) x[j] = 0.0;
   for (i = 0; i < rank; ++i) x[perm[i]] = b[i];
   return rank;
+}
+
+/* sc_psd_solve's basic solutions for nr more right-hand sides by its factor (B, X n x nr, row
+ * i: unknown i's; B kept, may be X), nr at once: L Y = (P^T B)_1, D Z = Y, L^T X_1 = Z */
+static inline void sc_psd_resolve(sc_int n, const double *A, sc_int ld, sc_int rank,
+                                  const sc_int *perm, sc_int nr, const double *B, double *X,
+                                  double *restrict W) { /* W: rank x nr */
+  sc_int i, k, c;
+  for (i = 0; i < rank * nr; ++i) W[i] = B[perm[i / nr] * nr + i % nr];
+  for (i = 0; i < rank; ++i)
+    for (k = 0; k < i; ++k)
+      for (c = 0; c < nr; ++c) W[i * nr + c] -= A[i * ld + k] * W[k * nr + c];
+  for (i = rank - 1; i >= 0; --i) {
+    for (c = 0; c < nr; ++c) W[i * nr + c] /= A[i * ld + i];
+    for (k = i + 1; k < rank; ++k)
+      for (c = 0; c < nr; ++c) W[i * nr + c] -= A[k * ld + i] * W[k * nr + c];
+  }
+  for (i = 0; i < n * nr; ++i) X[i] = 0.0;
+  for (i = 0; i < rank * nr; ++i) X[perm[i / nr] * nr + i % nr] = W[i];
 }
 
 /* y = A x + b for the n x n row-major A, each row's dot product in four partial sums */

@@ -188,10 +188,11 @@ static sc_int null_space(sc_int n, double *A, double *V, double *work, sc_int *p
  * of G_FF (null_space: pivots at most NULL_TOL of the first). Where that leaves a force's set
  * and the null space is one direction v, the minimum of |lam_F + t v| over the t that keep
  * every held force in its set (an interval holding 0, its ends found by bisection to
- * rounding) is taken instead. Returns 0 when the face's rows are independent (nothing to choose), 1 when the
- * minimum-norm forces were found, 2 when not (a larger null space whose unconstrained minimum
- * leaves the set: the face's basic solution stays). */
-SC_INTERNAL int sc_min_norm_face(sc_problem *p, double *work) {
+ * rounding) is taken instead. Z = L^-1 A^T (n x m, scene_solve.c's) checks that the choice
+ * keeps the accelerations. Returns 0 when the face's rows are independent (nothing to
+ * choose), 1 when the minimum-norm forces were found, 2 when not (a larger null space whose
+ * unconstrained minimum leaves the set: the face's basic solution stays). */
+SC_INTERNAL int sc_min_norm_face(sc_problem *p, const double *Z, double *work) {
   const sc_int m = p->m;
   sc_int F[512], fk[512], perm[512], nf = 0, i, j, k, t, nnull = 0, tnull = -1;
   double *A, *V, *ev, *l0;
@@ -259,12 +260,14 @@ SC_INTERNAL int sc_min_norm_face(sc_problem *p, double *work) {
       sc_in_set(p, fk[i], l0 + i, INFINITY, 1);
   }
   { /* the forces may change only along A^T's null space: the accelerations stay put to
-       rounding, |A_F^T dlam|^2_{M^-1} = dlam^T G_FF dlam (else the choice is refused) */
+       rounding, |A_F^T dlam|^2_{M^-1} = |Z_F dlam|^2 (else the choice is refused; summed
+       as squares, its rounding is that of Z dlam squared: dlam^T G_FF dlam would carry G's
+       rounding times |dlam|^2, far above the bound) */
     double quad = 0.0;
-    for (i = 0; i < nf; ++i) {
+    for (t = 0; t < p->n; ++t) {
       double t2 = 0.0;
-      for (j = 0; j < nf; ++j) t2 += p->G[F[i] * m + F[j]] * (l0[j] - p->lam[F[j]]);
-      quad += (l0[i] - p->lam[F[i]]) * t2;
+      for (j = 0; j < nf; ++j) t2 += Z[t * m + F[j]] * (l0[j] - p->lam[F[j]]);
+      quad += t2 * t2;
     }
     if (!(quad <= 1e-26 * p->wscale * p->fscale)) return 2;
   }

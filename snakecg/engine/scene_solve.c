@@ -19,18 +19,18 @@
  * a = I^-1 (f + A^T lam) (eq. 18) are unique; the forces are unique when G is regular. With
  * I = L L^T, G = Z^T Z and b = Z^T L^-1 f + c for Z = L^-1 A^T (built once per sample). The
  * solve is an active set on the pieces (held/stick, zero, sliding):
- *   1. the piece's equations solved by Newton to rounding (polish): held rows' forces and one
- *      angle per sliding 2-D block's force on its set's boundary, w = 0 on held rows and no
- *      acceleration along the boundary on sliding blocks, lam fixed on zero rows and
- *      saturated boxes; the Jacobian is the reduced Hessian of the dual on the piece
- *      (positive semidefinite), factored by diagonal pivoting, dependent rows dropped;
+ *   1. the piece's equations solved to rounding (scene_piece.c's sc_polish): w = 0 on held
+ *      rows and no acceleration along the boundary on sliding blocks, lam fixed on zero rows
+ *      and saturated boxes; the held rows' forces eliminated (G_HH factored once by diagonal
+ *      pivoting, dependent rows dropped), Newton on one angle per sliding 2-D block;
  *   2. the KKT conditions checked on the result; a violated piece is switched (a primal-dual
  *      active-set step) and step 1 repeated;
  *   3. the pieces start from the held guess (every block held) where the rows are at most
  *      the coordinates; else, or when that fails within a few passes, from block
  *      Gauss-Seidel sweeps (each block minimised exactly: a clamp, or a 2-D trust-region
- *      problem whose secular equation is solved to rounding), read every ten sweeps and
- *      tried once two readings agree (or the sweeps converged).
+ *      problem whose secular equation is solved to rounding), read after five sweeps and
+ *      tried where they read otherwise than at the last try, every failed try doubling the
+ *      sweeps to the next reading (or once the sweeps converged).
  * The certificate (KKT residuals, relative to the sample's force and acceleration scales) is
  * returned with every sample. Where the held rows' equations are dependent (statically
  * indeterminate), the flag is set and the held forces are the minimum-norm ones on the face
@@ -50,24 +50,19 @@ enum { ST_SOLVED = 0, ST_NOT_CONVERGED = 1, ST_SINGULAR_MASS = 2, ST_BAD_INPUT =
 enum { INFO_STATUS = 0, INFO_DEPENDENT, INFO_PRIMAL, INFO_DUAL, INFO_COMPL, INFO_SWEEPS,
        INFO_PASSES, INFO_RANK_DEFECT, INFO_WIDTH };
 
-/* held rows dependent where a pivot of their equations falls below this ratio to the first
- * (snakecg.solver.PIVOT_TOL): nearly dependent rows are statically indeterminate to double
- * precision, their forces are taken minimum-norm rather than huge and cancelling */
-#define DEP_TOL 1e-10
 #define GUESS_PASSES 3 /* active-set passes from the held guess (rows <= coordinates) */
-#define TRY_PASSES 3 /* from pieces read before the sweeps converged */
-#define CHUNK 10 /* sweeps between two readings of the pieces */
+#define TRY_PASSES 6 /* from pieces read before the sweeps converged */
+#define CHUNK 5 /* sweeps before the first reading of the pieces */
 
 
 
-static void update_w(sc_problem *p) { sc_matvec_plus(p->m, p->G, p->lam, p->b, p->w); }
 
 /* Gauss-Seidel sweeps until the largest change is below rel * scale; returns the sweeps.
  * w = G lam + b is kept along (one column of G per changed row), and recomputed after. */
 static sc_int sweeps(sc_problem *p, sc_int max_sweeps, double rel) {
   const sc_int m = p->m;
   sc_int s, k, i, j;
-  update_w(p);
+  sc_update_w(p);
   for (s = 0; s < max_sweeps; ++s) {
     double change = 0.0, size = 0.0;
     for (k = 0; k < p->nb; ++k) {
@@ -93,7 +88,7 @@ static sc_int sweeps(sc_problem *p, sc_int max_sweeps, double rel) {
     }
     if (!(change > rel * (size > p->fscale ? size : p->fscale))) break;
   }
-  update_w(p);
+  sc_update_w(p);
   return s < max_sweeps ? s + 1 : max_sweeps;
 }
 
@@ -128,153 +123,6 @@ static void read_states(sc_problem *p, double rel) {
       }
     }
   }
-}
-
-/* The dual objective 1/2 lam^T G lam + b^T lam at the current lam and w = G lam + b. */
-static double dual_value(const sc_problem *p) {
-  sc_int i;
-  double v = 0.0;
-  for (i = 0; i < p->m; ++i) v += 0.5 * p->lam[i] * (p->w[i] + p->b[i]);
-  return v;
-}
-
-/* Newton on the piece's equations: the unknowns are the forces of held rows and the angle t
- * of every sliding 2-D block's force on its set's boundary (zero rows and saturated boxes
- * fixed); the equations are the dual's stationarity on the piece, w = 0 on held rows and
- * T . w = 0 (no sliding acceleration along the boundary) on sliding blocks. Their Jacobian
- * is the reduced Hessian [G_HH, G_HS T; T^T G_SH, T^T G_SS T + diag(-lam_S . w_S)], positive
- * semidefinite where the sliding forces oppose their accelerations (the diagonal term is
- * taken at least 0), factored by diagonal pivoting (dependent held rows: the basic
- * solution); with sliding blocks the step is halved until the dual objective does not rise.
- * Returns the rank defect of the last step's matrix (0: independent). Scratch in work. */
-static sc_int polish_piece(sc_problem *p, double *work, sc_int *iwork, double *fn_out) {
-  const sc_int m = p->m, nb = p->nb;
-  sc_int *urow = iwork, *uth = urow + m, *var = uth + nb, *perm = var + m + nb;
-  sc_int nu = 0, nslide = 0, k, i, it, defect = 0;
-  double *J = work, *F, *dx, *th, *th0, *T, *l0, rc = DEP_TOL, fn_prev = INFINITY, fn = 0.0;
-  for (k = 0; k < nb; ++k) {
-    sc_int r = p->start[k], nk = sc_block_size(p->kind[k]);
-    uth[k] = -1;
-    for (i = 0; i < nk; ++i) urow[r + i] = -1;
-    if (p->state[k] == S_ZERO) {
-      for (i = 0; i < nk; ++i) p->lam[r + i] = 0.0;
-    } else if (p->state[k] == S_SLIDE && p->kind[k] == K_BOX) {
-      p->lam[r] = p->lam[r] >= 0 ? p->par[3 * k] : -p->par[3 * k];
-    } else if (p->state[k] == S_SLIDE) {
-      uth[k] = nu;
-      var[nu++] = -1 - k;
-      ++nslide;
-    } else {
-      for (i = 0; i < nk; ++i) { urow[r + i] = nu; var[nu++] = r + i; }
-    }
-  }
-  *fn_out = 0.0;
-  if (nu == 0) { update_w(p); return 0; }
-  F = J + nu * nu;
-  dx = F + nu;
-  th = dx + nu;
-  th0 = th + nb;
-  T = th0 + nb;
-  l0 = T + 2 * nb;
-  for (k = 0; k < nb; ++k) th[k] = 0.0;
-  for (k = 0; k < nb; ++k)
-    if (uth[k] >= 0) {
-      th[k] = sc_angle_of(p, k, p->lam + p->start[k]);
-      sc_on_boundary(p, k, th[k], p->lam + p->start[k], T + 2 * k);
-    }
-  update_w(p);
-  for (it = 0; it < 40; ++it) {
-    double step = 0.0, v0 = 0.0, t = 1.0;
-    fn = 0.0;
-    sc_int e, f, ls;
-    if (it > 0 && !nslide) update_w(p); /* (with sliding blocks: the line search's) */
-    for (e = 0; e < nu; ++e) {
-      sc_int v = var[e];
-      if (v >= 0) {
-        F[e] = p->w[v];
-        fn = fmax(fn, fabs(F[e]));
-      } else {
-        sc_int r = p->start[-1 - v];
-        const double *Tk = T + 2 * (-1 - v);
-        F[e] = Tk[0] * p->w[r] + Tk[1] * p->w[r + 1];
-        fn = fmax(fn, fabs(F[e]) / (sqrt(Tk[0] * Tk[0] + Tk[1] * Tk[1]) + 1e-300));
-      }
-    }
-    if (it > 0 && fn <= 1e-15 * p->wscale) break; /* (the first step always: its rank) */
-    if (defect > 0 && fn > 0.5 * fn_prev && fn > 1e-12 * p->wscale)
-      rc = 1e-15; /* stalled on a residual the dropped (nearly dependent) rows carry: they
-                     are kept from here on */
-    fn_prev = fn;
-    for (e = 0; e < nu; ++e) { /* the reduced Hessian's lower triangle */
-      sc_int v = var[e];
-      for (f = 0; f <= e; ++f) {
-        sc_int u = var[f];
-        double h;
-        if (v >= 0 && u >= 0) {
-          h = p->G[v * m + u];
-        } else if (v >= 0 || u >= 0) {
-          sc_int row = v >= 0 ? v : u, kk = v >= 0 ? -1 - u : -1 - v, r = p->start[kk];
-          h = p->G[row * m + r] * T[2 * kk] + p->G[row * m + r + 1] * T[2 * kk + 1];
-        } else {
-          sc_int ka = -1 - v, kb = -1 - u, ra = p->start[ka], rb = p->start[kb];
-          const double *Ta = T + 2 * ka, *Tb = T + 2 * kb;
-          h = Ta[0] * (p->G[ra * m + rb] * Tb[0] + p->G[ra * m + rb + 1] * Tb[1]) +
-              Ta[1] * (p->G[(ra + 1) * m + rb] * Tb[0] + p->G[(ra + 1) * m + rb + 1] * Tb[1]);
-          if (ka == kb)
-            h += fmax(0.0, -(p->lam[ra] * p->w[ra] + p->lam[ra + 1] * p->w[ra + 1]));
-        }
-        J[e * nu + f] = h;
-      }
-      F[e] = -F[e];
-    }
-    defect = nu - sc_psd_solve(nu, J, nu, F, rc, dx, l0, perm);
-    if (nslide) {
-      v0 = dual_value(p);
-      memcpy(l0, p->lam, sizeof(double) * (size_t)m);
-      for (k = 0; k < nb; ++k) th0[k] = th[k];
-    }
-    for (ls = 0; ls < 40; ++ls, t *= 0.5) { /* the step, halved while the dual rises */
-      for (e = 0; e < nu; ++e) {
-        sc_int v = var[e];
-        if (v >= 0) {
-          p->lam[v] = (nslide ? l0[v] : p->lam[v]) + t * dx[e];
-        } else {
-          k = -1 - v;
-          th[k] = th0[k] + t * dx[e];
-          sc_on_boundary(p, k, th[k], p->lam + p->start[k], T + 2 * k);
-        }
-      }
-      if (!nslide) break;
-      update_w(p);
-      if (dual_value(p) <= v0 + 1e-14 * (fabs(v0) + p->fscale * p->wscale)) break;
-    }
-    for (e = 0; e < nu; ++e) {
-      double d = fabs(t * dx[e]);
-      if (var[e] < 0) d *= p->par[3 * (-1 - var[e])] + (p->kind[-1 - var[e]] == K_SPLIT ?
-                                                       p->par[3 * (-1 - var[e]) + 1] : 0.0);
-      if (d > step) step = d;
-    }
-    if (!(step > 1e-15 * p->fscale)) break;
-  }
-  *fn_out = fn;
-  update_w(p);
-  return defect;
-}
-
-/* polish_piece; where it stops short of rounding with a sliding block that does not move (at
- * its set's limit: the angle's equation is degenerate there), that block is held instead
- * and the piece solved again. */
-static sc_int polish(sc_problem *p, double *work, sc_int *iwork) {
-  double fn;
-  sc_int k, defect = polish_piece(p, work, iwork, &fn);
-  int again = 0;
-  if (!(fn > 1e-14 * p->wscale)) return defect;
-  for (k = 0; k < p->nb; ++k)
-    if (p->state[k] == S_SLIDE && p->kind[k] >= K_DISC && sc_still(p, k)) {
-      p->state[k] = S_HELD;
-      again = 1;
-    }
-  return again ? polish_piece(p, work, iwork, &fn) : defect;
 }
 
 /* The KKT residuals (relative): primal (outside the set), dual (w not in -N_K(lam)),
@@ -358,7 +206,7 @@ static int active_set(sc_problem *p, sc_int max_pass, double *work, sc_int *iwor
   sc_int pass;
   for (pass = 0; pass < max_pass; ++pass) {
     ++*passes;
-    *defect = polish(p, work, iwork);
+    *defect = sc_polish(p, work, iwork);
     if (!kkt(p, res, 1))
       return res[0] <= TOL_ACCEPT && res[1] <= TOL_ACCEPT && res[2] <= TOL_ACCEPT;
   }
@@ -373,8 +221,8 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
                          double *w, double *state_out, double *info, double *work,
                          sc_int *iwork) {
   double *L = work, *Z = L + n * n, *G = Z + n * m, *b = G + m * m, *gam = b + m,
-         *keep = gam + nb, *rest = keep + m, res[3] = {NAN, NAN, NAN};
-  sc_int i, j, k, total_sweeps = 0, passes = 0, defect = 0;
+         *keep = gam + nb, *zero = keep + m, *rest = zero + m, res[3] = {NAN, NAN, NAN};
+  sc_int i, j, k, total_sweeps = 0, passes = 0, defect = 0, chunk = CHUNK;
   sc_int *state = iwork, *iw2 = iwork + nb, *prev = iw2 + 3 * (m + nb);
   sc_problem p;
   int dep = 0, ok = 0;
@@ -386,17 +234,45 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
     for (i = 0; i < n; ++i) a[i] = NAN;
     return;
   }
-  /* with M = L L^T: g = L^-1 f (in a), Z = L^-1 A^T (row j of A at Z + j n); then G = Z^T Z
-   * (symmetric by construction) and b = Z^T g + c */
+  /* with M = L L^T: g = L^-1 f (in a), Z = L^-1 A^T (n x m: coordinate i's row at Z + i m,
+   * every row of A at once); then G = Z^T Z and b = Z^T g + c, summed over the coordinates
+   * (G's lower triangle, mirrored: symmetric by construction) */
   for (i = 0; i < n; ++i) a[i] = f[i];
   sc_lower_solve(n, L, a);
-  for (j = 0; j < m; ++j) {
-    for (i = 0; i < n; ++i) Z[j * n + i] = A[j * n + i];
-    sc_lower_solve(n, L, Z + j * n);
+  for (i = 0; i < n; ++i) { /* (four rows of Z at a time: a fourth of the loads and stores) */
+    double *restrict zi = Z + i * m;
+    const double *Li = L + i * n;
+    for (j = 0; j < m; ++j) zi[j] = A[j * n + i];
+    for (k = 0; k + 3 < i; k += 4) {
+      const double *restrict z0 = Z + k * m, *restrict z1 = z0 + m, *restrict z2 = z1 + m,
+                   *restrict z3 = z2 + m;
+      for (j = 0; j < m; ++j)
+        zi[j] -= (Li[k] * z0[j] + Li[k + 1] * z1[j]) + (Li[k + 2] * z2[j] + Li[k + 3] * z3[j]);
+    }
+    for (; k < i; ++k)
+      for (j = 0; j < m; ++j) zi[j] -= Li[k] * Z[k * m + j];
+    for (j = 0; j < m; ++j) zi[j] /= Li[i];
   }
-  for (i = 0; i < m; ++i) {
-    for (j = 0; j <= i; ++j) G[i * m + j] = G[j * m + i] = sc_dot(Z + i * n, Z + j * n, n);
-    b[i] = sc_dot(Z + i * n, a, n) + (c ? c[i] : 0.0);
+  for (j = 0; j < m; ++j) {
+    b[j] = zero[j] = 0.0;
+    for (k = 0; k <= j; ++k) G[j * m + k] = 0.0;
+  }
+  for (i = 0; i < n; i += 4) {
+    const double *restrict z0 = Z + i * m, *restrict z1 = i + 1 < n ? z0 + m : zero,
+                 *restrict z2 = i + 2 < n ? z0 + 2 * m : zero,
+                 *restrict z3 = i + 3 < n ? z0 + 3 * m : zero;
+    const double a0 = a[i], a1 = i + 1 < n ? a[i + 1] : 0.0, a2 = i + 2 < n ? a[i + 2] : 0.0,
+                 a3 = i + 3 < n ? a[i + 3] : 0.0;
+    for (j = 0; j < m; ++j) {
+      double *restrict gj = G + j * m;
+      const double y0 = z0[j], y1 = z1[j], y2 = z2[j], y3 = z3[j];
+      for (k = 0; k <= j; ++k) gj[k] += (y0 * z0[k] + y1 * z1[k]) + (y2 * z2[k] + y3 * z3[k]);
+      b[j] += (y0 * a0 + y1 * a1) + (y2 * a2 + y3 * a3);
+    }
+  }
+  for (j = 0; j < m; ++j) {
+    for (k = 0; k < j; ++k) G[k * m + j] = G[j * m + k];
+    if (c) b[j] += c[j];
   }
   p.n = n; p.m = m; p.nb = nb; p.kind = kind; p.start = start; p.par = par;
   p.G = G; p.b = b; p.lam = lam; p.w = w; p.gamma = gam; p.state = state;
@@ -435,24 +311,26 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
     if (!ok) /* else the sweeps from zero forces */
       for (i = 0; i < m; ++i) lam[i] = 0.0;
   }
-  /* block Gauss-Seidel sweeps in chunks, the pieces read after each; tried once they read
-   * the same after two chunks (from a copy: the sweeps go on from their own point), or when
-   * the sweeps converged (then they go on from the pieces' point, inside the polyhedral
-   * sets) */
+  /* block Gauss-Seidel sweeps in chunks, the pieces read after each and tried where they
+   * read otherwise than at the last try (from a copy: the sweeps go on from their own point;
+   * every failed try doubles the chunk, up to 16 times CHUNK), or when the sweeps converged
+   * (then they go on from the pieces' point, inside the polyhedral sets) */
   for (k = 0; k < nb; ++k) prev[k] = -1;
   while (!ok && total_sweeps < max_sweeps) {
     int same = 1;
-    sc_int s = sweeps(&p, CHUNK, 1e-12);
+    sc_int s = sweeps(&p, chunk, 1e-12);
     total_sweeps += s;
     read_states(&p, 1e-6);
-    for (k = 0; k < nb; ++k) {
+    for (k = 0; k < nb; ++k)
       if (state[k] != prev[k]) same = 0;
-      prev[k] = state[k];
-    }
-    if (!same && s == CHUNK) continue;
+    if (same && s == chunk) continue;
+    memcpy(prev, state, sizeof(sc_int) * (size_t)nb);
     memcpy(keep, lam, sizeof(double) * (size_t)m);
-    ok = active_set(&p, s < CHUNK ? 20 : TRY_PASSES, rest, iw2, &passes, &defect, res);
-    if (!ok && s == CHUNK) memcpy(lam, keep, sizeof(double) * (size_t)m);
+    ok = active_set(&p, s < chunk ? 20 : TRY_PASSES, rest, iw2, &passes, &defect, res);
+    if (!ok && s == chunk) {
+      memcpy(lam, keep, sizeof(double) * (size_t)m);
+      if (chunk < 16 * CHUNK) chunk *= 2;
+    }
     else if (!ok)
       for (k = 0; k < nb; ++k) {
         sc_int r = start[k];
@@ -464,7 +342,7 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
     int degenerate = defect > 0;
     for (k = 0; k < nb && !degenerate; ++k)
       if (state[k] != S_HELD && sc_still(&p, k)) degenerate = 1;
-    if (degenerate) dep = sc_min_norm_face(&p, rest);
+    if (degenerate) dep = sc_min_norm_face(&p, Z, rest);
     kkt(&p, res, 0);
     /* a contact that the minimum-norm choice brought to zero force may open instead, which
      * frees the dependent forces further: tried one at a time, kept where the KKT conditions
@@ -477,10 +355,10 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
       memcpy(keep_lam, lam, sizeof(double) * (size_t)m);
       memcpy(keep_w, w, sizeof(double) * (size_t)m);
       state[k] = S_ZERO;
-      d2 = polish(&p, rest, iw2);
+      d2 = sc_polish(&p, rest, iw2);
       if (d2 >= 0 && !kkt(&p, res, 0) && res[0] <= TOL_ACCEPT && res[1] <= TOL_ACCEPT &&
           res[2] <= TOL_ACCEPT) {
-        dep = sc_min_norm_face(&p, rest);
+        dep = sc_min_norm_face(&p, Z, rest);
         defect = d2;
         kkt(&p, res, 0);
         if (d2 == 0) break;
@@ -495,7 +373,7 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
     }
     for (k = 0; k < nb; ++k) /* a contact's force below zero by rounding: zero */
       if (kind[k] == K_UNILATERAL && lam[start[k]] < 0) lam[start[k]] = 0.0;
-    update_w(&p);
+    sc_update_w(&p);
     kkt(&p, res, 0);
   }
   info[INFO_STATUS] = ok ? ST_SOLVED : ST_NOT_CONVERGED;
@@ -520,9 +398,9 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
     state_out[k] = code;
   }
   /* eq. (18): a = M^-1 (f + A^T lam) = L^-T (g + Z lam) */
-  for (j = 0; j < m; ++j)
-    if (lam[j] != 0.0 && isfinite(lam[j]))
-      for (i = 0; i < n; ++i) a[i] += Z[j * n + i] * lam[j];
+  for (i = 0; i < n; ++i)
+    for (j = 0; j < m; ++j)
+      if (lam[j] != 0.0 && isfinite(lam[j])) a[i] += Z[i * m + j] * lam[j];
   for (i = n - 1; i >= 0; --i) {
     double t = a[i];
     for (k = i + 1; k < n; ++k) t -= L[k * n + i] * a[k];
@@ -538,7 +416,7 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
 void SNAKECG_EXPORT(core_scene_solve_work)(sc_int n, sc_int m, sc_int nb, sc_int *nd, sc_int *ni) {
   sc_int u = m + nb;
   *nd = n * n + n * m + m * m + m + nb + (u * u + 3 * u + 2 * m * m + 3 * m + 16) +
-        m;
+        2 * m;
   *ni = nb + 4 * (m + nb) + 16;
 }
 
