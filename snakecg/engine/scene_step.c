@@ -6,8 +6,9 @@
  * sc_scene_state_rows, kept in the caller's buffers from the step before), a step of length h:
  *   1. the bias forces h_s(q, v) (the generated `bias_forces`), the generalized force
  *      fgen = B tau - h_s + E f_obj and f = M V + h fgen;
- *   2. the exact solve (scene_solve.c's core_scene_solve_b) with the friction sets' sizes
- *      times h and the contacts' offsets gap / h: V+;
+ *   2. the exact solve (scene_solve.c's core_scene_solve_s) with the friction sets' sizes
+ *      times h and the contacts' offsets gap / h: V+, its active set started from the last
+ *      step's pieces (consecutive steps almost always have the same);
  *   3. x+ = x + h V+ and the rows there; a pair overlapping beyond the tolerance refuses the
  *      step (STEP_OVERLAP, V+ kept for the caller's root finding, nothing else changed);
  *   4. the step's work: the torques' h tau . v+, the ground's dissipation -lam . (A V+), the
@@ -36,7 +37,8 @@ enum { SOLVE_INFO = 8 }; /* the solve's certificate: status, dependent, primal, 
  * out, kind, start the rows at x (sc_scene_state_rows' outputs), replaced; M1 .. start1
  * scratch: the rows at the step's end; Vp (n) the step's V+ (before an impact); lam, info
  * (mcap, SOLVE_INFO) the step's solve, ilam, iinfo the impact's; acc (ST_WIDTH); status
- * STEP_* or SS_*. */
+ * STEP_* or SS_*; from (3 mcap, or NULL: every solve from scratch), nfrom: the last accepted
+ * step's pieces on the rows at x (its blocks' count; 0: none), the run's own. */
 
 static double quad(sc_int n, const double *M, const double *v) {
   double s = 0.0;
@@ -50,7 +52,8 @@ static double quad(sc_int n, const double *M, const double *v) {
 }
 
 /* The solve of the rows in c's buffers at force f, the sets' sizes times h, the contacts'
- * offsets gap / h (h = 0: none): a (n), lam, info. Returns core_scene_solve_b's code. */
+ * offsets gap / h (h = 0: none), from the last step's pieces where c keeps them: a (n), lam,
+ * info, the blocks' states (scratch + 5 mcap). Returns core_scene_solve_s's code. */
 static int solve(sc_scene_step *c, sc_int n, double h, const double *f, double *scratch,
                  double *a, double *lam, double *info) {
   sc_int m = (sc_int)c->out[RO_M], nb = (sc_int)c->out[RO_NB], nc = (sc_int)c->out[RO_NC];
@@ -63,9 +66,45 @@ static int solve(sc_scene_step *c, sc_int n, double h, const double *f, double *
   }
   for (k = 0; k < m; ++k) off[k] = 0.0;
   for (k = 0; h > 0 && k < nc; ++k) off[c->start[k]] = rec[CR_W * k + 10] / h;
-  return SNAKECG_EXPORT(core_scene_solve_b)(1, n, m, nb, &m, &nb, c->M, f, c->A, off, c->kind,
-                                            c->start, par, SC_STEP_SWEEPS, lam, a, w, st,
-                                            info);
+  return SNAKECG_EXPORT(core_scene_solve_s)(n, m, nb, c->M, f, c->A, off, c->kind, c->start,
+                                            par, SC_STEP_SWEEPS,
+                                            c->from && c->nfrom == nb ? c->from : NULL, lam,
+                                            a, w, st, info);
+}
+
+/* The step's pieces (the solve's states st and forces lam on the rows at x) as the start of
+ * the next step's solve on the rows at its end (c->from, 3 per block: state, forces): the
+ * ground's blocks are the same; a contact is the one of the same bodies, the same count of
+ * that pair's contacts before it, else new: held. */
+static void keep_pieces(sc_scene_step *c, sc_int no, const double *st) {
+  const sc_int nc0 = (sc_int)c->out[RO_NC], nc1 = (sc_int)c->out1[RO_NC],
+               nb1 = (sc_int)c->out1[RO_NB];
+  const double *r0 = c->out + RO_POSE + 3 * no, *r1 = c->out1 + RO_POSE + 3 * no;
+  sc_int k, j, i;
+  for (k = 0; k < nb1; ++k) {
+    double *s = c->from + 3 * k;
+    sc_int old = -1;
+    if (k < nc1) {
+      const double *a = r1 + CR_W * k;
+      sc_int before = 0;
+      for (i = 0; i < k; ++i) before += r1[CR_W * i] == a[0] && r1[CR_W * i + 1] == a[1] &&
+                                        r1[CR_W * i + 2] == a[2] && r1[CR_W * i + 3] == a[3];
+      for (j = 0; j < nc0 && old < 0; ++j) {
+        const double *b = r0 + CR_W * j;
+        if (b[0] == a[0] && b[1] == a[1] && b[2] == a[2] && b[3] == a[3] && before-- == 0)
+          old = j;
+      }
+    } else {
+      old = nc0 + k - nc1;
+    }
+    s[0] = old < 0 ? (double)S_HELD : st[old];
+    s[1] = s[2] = 0.0;
+    if (old >= 0 && sc_block_size(c->kind1[k]) == 2) {
+      s[1] = c->lam[c->start[old]];
+      s[2] = c->lam[c->start[old] + 1];
+    }
+  }
+  c->nfrom = nb1;
 }
 
 /* The step's work (4.) from the rows at x, the impulses lam and V+. */
@@ -136,6 +175,7 @@ int SNAKECG_EXPORT(core_scene_step)(sc_scene_step *c) {
   c->acc[ST_IMPACT] = 0.0;
   c->acc[ST_LOSS] = 0.0;
   if (!(c->h > 0)) {
+    c->nfrom = 0; /* no pieces yet */
     code = sc_scene_state_rows(pk, c->x, c->x + SNAKECG_NS, c->tol, c->ccap, mc, c->out, c->M,
                                c->A, c->par, c->kind, c->start);
     if (code < 0) return code;
@@ -200,6 +240,7 @@ int SNAKECG_EXPORT(core_scene_step)(sc_scene_step *c) {
       for (j = 0; j < n; ++j) vn += c->A1[c->start1[k] * n + j] * c->Vp[j];
       impact = vn < -c->impact_speed;
     }
+    if (c->from) keep_pieces(c, no, scratch + 5 * mc);
     memcpy(c->x, xp, sizeof(double) * (size_t)n); /* 6. */
     memcpy(c->V, c->Vp, sizeof(double) * (size_t)n);
     memcpy(c->out, c->out1, sizeof(double) * (size_t)(RO_POSE + 3 * no + CR_W * nc1));
