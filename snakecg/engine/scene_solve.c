@@ -303,17 +303,19 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
     res[0] = res[1] = res[2] = 0.0;
   }
   if (!ok && from) { /* the active set from the caller's pieces (3 per block: the code of
-    state_out, -1 none: held; a sliding 2-D block's forces, their angle the start's) */
+    state_out, -1 none: held; the forces: a sliding 2-D block's angle, the held rows' start,
+    which dependent held rows keep: the basic solution near the last one, inside the sets) */
     for (k = 0; k < nb; ++k) {
       const double *q = par + 3 * k, *s = from + 3 * k;
-      sc_int r = start[k], code = (sc_int)s[0];
+      sc_int r = start[k], code = (sc_int)s[0], nk = sc_block_size(kind[k]);
       int zero = kind[k] == K_BOX ? !(q[0] > 0) : kind[k] == K_DISC ? !(q[0] > 0) :
                  kind[k] == K_SPLIT ? !(q[2] > 0 && (q[0] > 0 || q[1] > 0)) : 0;
       state[k] = zero || (code == S_ZERO && kind[k] != K_FREE) ? S_ZERO : S_HELD;
-      if (zero || code < S_SLIDE || kind[k] < K_BOX) continue;
+      if (zero || state[k] == S_ZERO) continue;
+      for (i = 0; i < nk; ++i) lam[r + i] = s[1 + i];
+      if (code < S_SLIDE || kind[k] < K_BOX) continue;
       if (kind[k] == K_BOX) lam[r] = code == 4 ? -q[0] : q[0];
-      else if (s[1] != 0.0 || s[2] != 0.0) { lam[r] = s[1]; lam[r + 1] = s[2]; }
-      else continue;
+      else if (s[1] == 0.0 && s[2] == 0.0) continue;
       state[k] = S_SLIDE;
     }
     ok = active_set(&p, FROM_PASSES, rest, iw2, &passes, &defect, res);

@@ -29,6 +29,10 @@
  * engine.h */
 enum { SOLVE_INFO = 8 }; /* the solve's certificate: status, dependent, primal, dual, compl.. */
 #define SC_STEP_SWEEPS 200000 /* snakecg.scenes.solve.MAX_SWEEPS */
+/* a contact's gap within this of the tolerance from zero takes no offset: what a step's
+ * gap stabilisation leaves (second order, ~1e-11 m) would else ask dependent contacts (a
+ * snake jammed among pegs) for offsets that no velocity meets, above the solve's acceptance */
+#define GAP_BAND 1e-3
 
 /* One call's arguments (sc_scene_step of engine.h; snakecg/engine/binding.py mirrors them as
  * SceneStep): pk the packed scene; tol, h, impact_speed: contact tolerance (m), step (s),
@@ -58,24 +62,33 @@ static int solve(sc_scene_step *c, sc_int n, double h, const double *f, double *
                  double *a, double *lam, double *info) {
   sc_int m = (sc_int)c->out[RO_M], nb = (sc_int)c->out[RO_NB], nc = (sc_int)c->out[RO_NC];
   const double *rec = c->out + RO_POSE + 3 * (sc_int)c->pk[SP_NO];
-  double *par = scratch, *off = par + 3 * c->mcap, *w = off + c->mcap, *st = w + c->mcap;
+  double *par = scratch, *off = par + 3 * c->mcap, *w = off + c->mcap, *st = w + c->mcap,
+         *from = st + c->mcap; /* the pieces' forces (kept per second) times h */
   sc_int b, k;
   for (b = 0; b < nb; ++b) {
     int sized = c->kind[b] == K_BOX || c->kind[b] == K_DISC || c->kind[b] == K_SPLIT;
     for (k = 0; k < 3; ++k) par[3 * b + k] = sized ? c->par[3 * b + k] * h : c->par[3 * b + k];
   }
   for (k = 0; k < m; ++k) off[k] = 0.0;
-  for (k = 0; h > 0 && k < nc; ++k) off[c->start[k]] = rec[CR_W * k + 10] / h;
+  for (k = 0; h > 0 && k < nc; ++k) { /* (a gap within GAP_BAND of zero: none) */
+    double g = rec[CR_W * k + 10];
+    off[c->start[k]] = fabs(g) > GAP_BAND * c->tol ? g / h : 0.0;
+  }
+  for (b = 0; c->from && c->nfrom == nb && b < nb; ++b) {
+    from[3 * b] = c->from[3 * b];
+    from[3 * b + 1] = c->from[3 * b + 1] * h;
+    from[3 * b + 2] = c->from[3 * b + 2] * h;
+  }
   return SNAKECG_EXPORT(core_scene_solve_s)(n, m, nb, c->M, f, c->A, off, c->kind, c->start,
                                             par, SC_STEP_SWEEPS,
-                                            c->from && c->nfrom == nb ? c->from : NULL, lam,
+                                            c->from && c->nfrom == nb ? from : NULL, lam,
                                             a, w, st, info);
 }
 
-/* The step's pieces (the solve's states st and forces lam on the rows at x) as the start of
- * the next step's solve on the rows at its end (c->from, 3 per block: state, forces): the
- * ground's blocks are the same; a contact is the one of the same bodies, the same count of
- * that pair's contacts before it, else new: held. */
+/* The step's pieces (the solve's states st and impulses lam on the rows at x) as the start of
+ * the next step's solve on the rows at its end (c->from, 3 per block: state, forces lam / h):
+ * the ground's blocks are the same; a contact is the one of the same bodies, the same count
+ * of that pair's contacts before it, else new: held at zero force. */
 static void keep_pieces(sc_scene_step *c, sc_int no, const double *st) {
   const sc_int nc0 = (sc_int)c->out[RO_NC], nc1 = (sc_int)c->out1[RO_NC],
                nb1 = (sc_int)c->out1[RO_NB];
@@ -99,10 +112,8 @@ static void keep_pieces(sc_scene_step *c, sc_int no, const double *st) {
     }
     s[0] = old < 0 ? (double)S_HELD : st[old];
     s[1] = s[2] = 0.0;
-    if (old >= 0 && sc_block_size(c->kind1[k]) == 2) {
-      s[1] = c->lam[c->start[old]];
-      s[2] = c->lam[c->start[old] + 1];
-    }
+    for (i = 0; old >= 0 && i < sc_block_size(c->kind1[k]); ++i)
+      s[1 + i] = c->lam[c->start[old] + i] / c->h;
   }
   c->nfrom = nb1;
 }
@@ -186,7 +197,7 @@ int SNAKECG_EXPORT(core_scene_step)(sc_scene_step *c) {
   for (i = 0; i < n; ++i)
     if (!isfinite(c->x[i]) || !isfinite(c->V[i])) return -3;
   if (sc_work_alloc(&ws, fns, SC_COUNT(fns))) return -1;
-  d = (double *)malloc(sizeof(double) * (size_t)(4 * n + SNAKECG_NS + 6 * mc + 8));
+  d = (double *)malloc(sizeof(double) * (size_t)(4 * n + SNAKECG_NS + 9 * mc + 8));
   if (!d) {
     sc_work_free(&ws);
     return -1;
@@ -195,7 +206,7 @@ int SNAKECG_EXPORT(core_scene_step)(sc_scene_step *c) {
   fgen = f + n;
   xp = fgen + n;
   hb = xp + n;
-  scratch = hb + SNAKECG_NS; /* 6 mcap: the solve's sizes, offsets, w, states */
+  scratch = hb + SNAKECG_NS; /* 9 mcap: the solve's sizes, offsets, w, states, start */
   ws.arg[BF_IN_q] = c->x; /* 1. */
   ws.arg[BF_IN_v] = c->V;
   ws.arg[BF_IN_K] = pk + (sc_int)pk[SP_K];

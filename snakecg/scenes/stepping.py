@@ -11,7 +11,9 @@ poses and twists in the world frame) solves
 
 with ``V* = V + h M^-1 (B tau - bias(q, v) + f_obj)`` and ``sigma_F`` the support function of
 each ground friction set (a wheel's box, Coulomb's disc, the anisotropic split ellipse: the
-sets of forces ``mu m_i g``, times ``h``: impulses). It is the rest problem of
+sets of forces ``mu m_i g``, times ``h``: impulses; ``g_c`` taken as 0 within
+:data:`GAP_BAND` of the tolerance, what the previous step's first-order closing leaves, which
+dependent contacts of a jammed snake could not all meet). It is the rest problem of
 :mod:`snakecg.scenes.solve` with ``a -> V+``, ``f -> M V*``, the sets' sizes times ``h`` and
 the rows' offsets ``c = g_c / h`` (``core_scene_solve_b``): one exact solve for rest, steps and
 impacts. Stick-slip and maximum dissipation come from it (a sliding block's impulse is on
@@ -72,6 +74,9 @@ PROGRESS_EVERY = 5.0
 PAUSE_STEPS = 20_000
 #: the engine's record buffer: rows kept before the run returns to hand them over
 RECORD_ROWS = 4096
+#: a contact's gap within this fraction of the tolerance from zero takes no offset (the
+#: engine's scene_step.c GAP_BAND)
+GAP_BAND = 1e-3
 #: set (to anything but "" or "0") in the environment, every step's solve starts from scratch
 #: instead of from the last step's pieces (the same answer: for comparisons and checks)
 COLD_START_ENV = "SNAKECG_SCENE_COLD_START"
