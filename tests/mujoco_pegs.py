@@ -104,9 +104,10 @@ class MatchedPegs:
         d = self.data
         return np.r_[d.qpos[:3], d.qpos[4:]], np.r_[d.qvel[:3], d.qvel[4:]]
 
-    def step(self, tau) -> None:
+    def step(self, tau, nstep: int = 1) -> None:
+        """``nstep`` steps of MuJoCo's with the joint torques ``tau`` held."""
         self.data.qfrc_applied[4:] = tau
-        self.mujoco.mj_step(self.model, self.data)
+        self.mujoco.mj_step(self.model, self.data, nstep)
 
     def peg_depth(self) -> float:
         d = self.data
