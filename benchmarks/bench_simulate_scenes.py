@@ -11,11 +11,14 @@ kd 0.3) from the serpenoid's shape, for ``--duration`` seconds (default 2).
   scene's size), held on every step. The run's loop is the engine's (``scene_run.c``, the
   serpenoid PD law evaluated in C); beside it the same law as a callable of the caller's own
   (the loop returns to Python for the torque at every step), the exact solve's share of the
-  engine's step and the figure the rest of the step would reach were the solve free; and a
+  engine's step and the figure the rest of the step would reach were the solve free; the
+  same run with every step's solve from scratch (``SNAKECG_SCENE_COLD_START=1``: the anchor
+  of the warm start, each step's solve started from the last step's pieces); and a
   batch of 8 runs (gait amplitudes) in one ``simulate_scene_batch`` call.
 * **the paper's push**: ``model.simulate(..., contacts="geometry")`` of the paper's 3-joint
   scene (kappa 100, q0 = (0, 0, 0, 30, -45, 60) deg, tau = (0.05, 0, -0.02) N m, 0.5 s), as
-  times real time, the first call in the process apart (imports, the plate model's load).
+  times real time, the first call in the process apart (imports, the plate model's load),
+  and from scratch.
 * **MuJoCo**: ``mj_step`` in a Python loop on tests/mujoco_pegs.py's matched model (COM
   spheres on a condim-3 floor, noslip 10, frictionless capsule-peg contacts, solref
   ``(2 timestep, 1)``) at the time steps of ``STEPS``; reported: the deepest capsule-peg or
@@ -33,6 +36,7 @@ The figure is simulated seconds per CPU second (``time.process_time``, best of
 from __future__ import annotations
 
 import argparse
+import contextlib
 import os
 import platform
 import sys
@@ -50,6 +54,21 @@ from snakecg.scenes.toml_reading import read_scene  # noqa: E402
 from snakecg.simulate import serpenoid_controller  # noqa: E402
 
 STEPS = (1e-3, 5e-4, 2e-4, 1e-4, 5e-5, 2e-5)
+COLD = "SNAKECG_SCENE_COLD_START"
+
+
+@contextlib.contextmanager
+def cold_start():
+    """Every step's solve from scratch (not from the last step's pieces) inside."""
+    old = os.environ.get(COLD)
+    os.environ[COLD] = "1"
+    try:
+        yield
+    finally:
+        if old is None:
+            del os.environ[COLD]
+        else:
+            os.environ[COLD] = old
 
 
 def setup():
@@ -87,42 +106,50 @@ def run_mujoco(scene, model, q0, gait, ts, duration, measure: bool):
 
 
 def solve_share(model, run) -> float:
-    """The exact solve's share of the engine's step: the step, and the solve alone on the
-    same problem (core_scene_solve_b), timed from one state of the run, 2000 times each."""
+    """The exact solve's share of the engine's step: the step (from the last step's pieces, as
+    in a run), and the solve alone on the same problem from the same pieces
+    (core_scene_solve_s), timed from one state of the run, 2000 times each."""
     from snakecg.scenes.solve import INFO
-    from snakecg.scenes.stepping import _Stepper
+    from snakecg.scenes.stepping import GAP_BAND, _Stepper
 
+    h = 1e-3
     st = _Stepper(model, run.tolerance, np.zeros(3 * model.scene.n_objects))
     k = len(run.t) // 2
-    x0 = np.concatenate((run.q[k], run.q_obj[k].reshape(-1)))
-    V0 = np.concatenate((run.v[k], run.v_obj[k].reshape(-1)))
-    st.x[:], st.V[:] = x0, V0
+    st.x[:] = np.concatenate((run.q[k], run.q_obj[k].reshape(-1)))
+    st.V[:] = np.concatenate((run.v[k], run.v_obj[k].reshape(-1)))
     st.call(0.0)
-    m, nb = int(st.out[2]), int(st.out[3])
-    f = st.M @ V0
-    par = st.par[:nb] * 1e-3
+    st.call(h)  # the pieces of this step: the start of the next
+    keep = (st.x, st.V, st.M, st.A, st.par, st.out, st.kind, st.start, st.pieces)
+    saved, nfrom = [a.copy() for a in keep], st.args.nfrom
+    m, nb, ns, n = int(st.out[2]), int(st.out[3]), st.ns, st.n
+    f = st.M @ st.V  # no torque: M V - h bias(q, v)
+    f[:ns] -= h * np.asarray(model.bias_forces(st.x[:ns], st.V[:ns])).reshape(-1)
+    par = st.par[:nb] * h
     off = np.zeros(m)
-    w, lam, a = np.zeros(m), np.zeros(m), np.zeros(len(V0))
+    for c in st.rows().contacts:
+        off[c.row] = c.gap / h if abs(c.gap) > GAP_BAND * run.tolerance else 0.0
+    start = st.pieces[:3 * nb].reshape(nb, 3) * np.array([1.0, h, h])
+    w, lam, a = np.zeros(m), np.zeros(m), np.zeros(n)
     state, info = np.zeros(nb), np.zeros(len(INFO))
-    mm, nn = np.array([m]), np.array([nb])
-    kind, start = st.kind[:nb].copy(), st.start[:nb].copy()
-    A = st.A[:m].copy()
-    args = (1, len(V0), m, nb, mm.ctypes.data, nn.ctypes.data, st.M.ctypes.data, f.ctypes.data,
-            A.ctypes.data, off.ctypes.data, kind.ctypes.data, start.ctypes.data,
-            par.ctypes.data, 200000, lam.ctypes.data, a.ctypes.data, w.ctypes.data,
-            state.ctypes.data, info.ctypes.data)
-    fn = model.core.scene_solve_b
+    kind, rstart, A = st.kind[:nb].copy(), st.start[:nb].copy(), st.A[:m].copy()
+    args = (n, m, nb, st.M.ctypes.data, f.ctypes.data, A.ctypes.data, off.ctypes.data,
+            kind.ctypes.data, rstart.ctypes.data, par.ctypes.data, 200000, start.ctypes.data,
+            lam.ctypes.data, a.ctypes.data, w.ctypes.data, state.ctypes.data, info.ctypes.data)
+    fn = model.core.scene_solve_s
     t0 = time.process_time()
     for _ in range(2000):
         fn(*args)
     t_solve = time.process_time() - t0
     t_step = 0.0
     for _ in range(2000):
-        st.x[:], st.V[:] = x0, V0
-        st.call(0.0)
+        for dst, src in zip(keep, saved):
+            dst[...] = src
+        st.args.nfrom = nfrom
         t0 = time.process_time()
-        st.call(1e-3)
+        st.call(h)
         t_step += time.process_time() - t0
+    if not np.allclose(a, st.Vp, rtol=0, atol=1e-9 * max(1.0, np.abs(a).max())):
+        raise RuntimeError("the solve alone is not the step's problem")
     return t_solve / t_step
 
 
@@ -153,14 +180,19 @@ def paper_push(repeat) -> None:
     t0 = time.process_time()
     run = sm.simulate(q, tau, 0.5, contacts="geometry")
     first = time.process_time() - t0
-    best = np.inf
+    best, cold = np.inf, np.inf
     for _ in range(max(repeat, 20)):
         t0 = time.process_time()
         sm.simulate(q, tau, 0.5, contacts="geometry")
         best = min(best, time.process_time() - t0)
+        with cold_start():
+            t0 = time.process_time()
+            sm.simulate(q, tau, 0.5, contacts="geometry")
+            cold = min(cold, time.process_time() - t0)
     print(f"the paper's push (3 joints, contacts='geometry', 0.5 s): {run.status}, "
           f"{run.steps} steps, {0.5 / best:.0f} x real time ({best * 1e3:.2f} ms; the model's "
-          f"first call, the plate model's load with it, {first * 1e3:.0f} ms)")
+          f"first call, the plate model's load with it, {first * 1e3:.0f} ms); every solve "
+          f"from scratch: {0.5 / cold:.0f} x real time")
     from snakecg.scenes.paper import _plate_model
 
     plate = _plate_model(sm)
@@ -193,6 +225,14 @@ def main() -> None:
           f"{np.hypot(*(com[-1] - com[0])):.4f} m")
     print(f"  {a.duration / best:8.3f} simulated s per CPU s ({best / run.steps * 1e3:.3f} ms "
           f"per step), the law in the engine's loop")
+    cold = np.inf
+    with cold_start():
+        for _ in range(a.repeat):
+            t0 = time.process_time()
+            model.simulate(q0, a.duration, tau=gait, dt=1e-3)
+            cold = min(cold, time.process_time() - t0)
+    print(f"  {a.duration / cold:8.3f} simulated s per CPU s, every step's solve from scratch "
+          f"({COLD}=1: the anchor; the warm start {cold / best:.2f}x)")
     caller = np.inf
     for _ in range(a.repeat):
         t0 = time.process_time()

@@ -62,6 +62,9 @@ class Core:
         self.scene_solve_b = lib.entry_or_none("core_scene_solve_b")
         """scene_solve.c's ``core_scene_solve_b``: the same with row offsets (``w = A a + c``),
         the velocity-level step of :mod:`snakecg.scenes.stepping`."""
+        self.scene_solve_s = lib.entry_or_none("core_scene_solve_s")
+        """scene_solve.c's ``core_scene_solve_s``: one sample of ``core_scene_solve_b``, its
+        active set tried first from given pieces (a time step's: the last step's)."""
         self.contact_depth = lib.entry_or_none("core_contact_depth")
         """geometry.c's ``core_contact_depth``: the simulation's contact check at states."""
         self.sphere = SphereKernel(lib)

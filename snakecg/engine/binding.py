@@ -74,6 +74,7 @@ PROTOTYPES: dict[str, tuple[list, object]] = {
     "core_scene_forward": ([_P, _I, _P, _I, _P, _I, _P, _I, _I, _I] + [_P] * 5, _INT),
     "core_scene_forward_call": ([_P], _INT),
     "core_scene_solve_b": ([_I, _I, _I, _I] + [_P] * 9 + [_I] + [_P] * 5, _INT),
+    "core_scene_solve_s": ([_I, _I, _I] + [_P] * 7 + [_I] + [_P] * 6, _INT),
     "core_scene_rows": ([_P], _INT),
     "core_scene_gaps": ([_P], _INT),
     # scene_geometry.c
@@ -207,7 +208,7 @@ class SceneStep(ctypes.Structure):
                 ("A", _P), ("par", _P), ("out", _P), ("kind", _P), ("start", _P), ("M1", _P),
                 ("A1", _P), ("par1", _P), ("out1", _P), ("kind1", _P), ("start1", _P),
                 ("Vp", _P), ("lam", _P), ("info", _P), ("ilam", _P), ("iinfo", _P),
-                ("acc", _P), ("status", _I)]
+                ("acc", _P), ("status", _I), ("from_", _P), ("nfrom", _I)]
 
 
 #: the torque laws ``core_scene_run`` and ``core_scene_law`` evaluate (scene_run.c's LAW_*)

@@ -20,8 +20,7 @@
  *   optimal.c       the optimal-torque queries of a batch (exported: core_optimal)
  *   max_sr.c, push.c, wheel_states.c   the queries' solves
  *   pieces.c, sphere.c                 the exact extremes' pieces and faces (exported)
- *   scene_sets.c, scene_piece.c, scene_solve.c   a general scene's exact solve (core_scene_solve,
- *                   core_scene_solve_b with offsets)
+ *   scene_sets.c, scene_piece.c, scene_solve.c   a general scene's exact solve (core_scene_solve*)
  *   scene_geometry.c, scene_rows.c, scene_step.c, scene_run.c   placement, contacts, rows,
  *                   forward, a time step, whole runs and batches of runs
  *
@@ -39,7 +38,6 @@
 typedef long long int sc_int;
 
 #if defined(__GNUC__)
-/* the library exports the model's entry points only; the engine's own functions are hidden */
 #define SC_INTERNAL __attribute__((visibility("hidden")))
 #else
 #define SC_INTERNAL
@@ -90,24 +88,20 @@ enum { SETTLE_DONE = 0, SETTLE_FAILED = 1, SETTLE_MEMORY = 2 };
 /* One segment: inputs, then outputs (filled by core_integrate_segment). */
 typedef struct { /* the model and the run */
   const double *scene;   /* the scene vector (layout: SCENE_*) */
-  const double *tau, *f_obj, *rho; /* NA, held over the segment; 3; 2, contact point in the
-                            object frame */
+  const double *tau, *f_obj, *rho; /* NA, held; 3; 2: the contact point in the object's frame */
   const double *state;   /* NC row states (solver codes, as doubles) */
   const sc_int *ev_kind, *ev_row; /* n_ev event kinds (EV_*), their rows */
   sc_int n_ev;
   sc_int contact_index;  /* k: the contact link, from 0 */
   double c_k, l_k;       /* its COM offset and length */
   double alpha;          /* Baumgarte rate (1/s) */
-  double pivot_tol, regularization; /* dependent held rows (at most this pivot ratio) get
-                            the Tikhonov term of this weight (rows.c's rule) */
+  double pivot_tol, regularization; /* held rows dependent at this pivot ratio: Tikhonov */
   double rtol, atol, max_step, t0, t1;
   const double *y0, *t_eval; /* NY; n_eval increasing times in (t0, t1] */
   sc_int n_eval;
   struct sc_geometry *geo; /* the contact check (geometry.c), or null */
-  double budget;         /* wall-clock seconds a call may take: after them (and at least one
-                            step) it stops with SEG_PAUSED; <= 0: no limit */
-  sc_int resume;         /* 1: go on with the segment a call paused (from t_end, y_end,
-                            h_next and n_out, as if it had not stopped) */
+  double budget;         /* wall seconds a call may take (then SEG_PAUSED; <= 0: none) */
+  sc_int resume;         /* 1: go on with a paused segment (t_end, y_end, h_next, n_out) */
   /* outputs */
   double *y_eval;        /* n_eval x NY, row-major */
   sc_int n_out;          /* output times reached */
@@ -558,6 +552,10 @@ int SNAKECG_EXPORT(core_scene_solve_b)(sc_int ns, sc_int n, sc_int mmax, sc_int 
   const sc_int *m, const sc_int *nb, const double *M, const double *f, const double *A,
   const double *c, const sc_int *kind, const sc_int *start, const double *par,
   sc_int max_sweeps, double *lam, double *a, double *w, double *state, double *info);
+int SNAKECG_EXPORT(core_scene_solve_s)(sc_int n, sc_int m, sc_int nb, const double *M,
+  const double *f, const double *A, const double *c, const sc_int *kind, const sc_int *start,
+  const double *par, sc_int max_sweeps, const double *from, double *lam, double *a, double *w,
+  double *state, double *info); /* one sample, from the pieces `from` (3 per block) */
 /* ---- a general scene's shapes, contacts (scene_geometry.c), rows and forward (scene_rows.c) ----
  * The packed scene's header and records' widths (their fields: snakecg/scenes/packing.py). */
 enum { SP_NO = 0, SP_NOB, SP_RADIUS, SP_TOL, SP_SIZE, SP_NG, SP_MG, SP_LINKS, SP_OBJECTS,
@@ -594,6 +592,7 @@ enum { STEP_DONE = 0, STEP_NOT_CONVERGED = 1, STEP_IMPACT_NOT_CONVERGED = 2 };
 typedef struct { const double *pk; double tol, h, impact_speed; const double *tau, *fo;
   double *x, *V; sc_int ccap, mcap; double *M, *A, *par, *out; sc_int *kind, *start;
   double *M1, *A1, *par1, *out1; sc_int *kind1, *start1;
-  double *Vp, *lam, *info, *ilam, *iinfo, *acc; sc_int status; } sc_scene_step;
+  double *Vp, *lam, *info, *ilam, *iinfo, *acc; sc_int status; double *from; sc_int nfrom; }
+  sc_scene_step;
 int SNAKECG_EXPORT(core_scene_step)(sc_scene_step *c);
 #endif

@@ -25,8 +25,10 @@
  *      pivoting, dependent rows dropped), Newton on one angle per sliding 2-D block;
  *   2. the KKT conditions checked on the result; a violated piece is switched (a primal-dual
  *      active-set step) and step 1 repeated;
- *   3. the pieces start from the held guess (every block held) where the rows are at most
- *      the coordinates; else, or when that fails within a few passes, from block
+ *   3. the pieces start from the caller's where given (core_scene_solve_s: a time step's,
+ *      the last step's pieces; a few passes), then from the held guess (every block held)
+ *      where the rows are at most the coordinates; else, or when that fails within a few
+ *      passes, from block
  *      Gauss-Seidel sweeps (each block minimised exactly: a clamp, or a 2-D trust-region
  *      problem whose secular equation is solved to rounding), read after five sweeps and
  *      tried where they read otherwise than at the last try, every failed try doubling the
@@ -53,6 +55,7 @@ enum { INFO_STATUS = 0, INFO_DEPENDENT, INFO_PRIMAL, INFO_DUAL, INFO_COMPL, INFO
 #define GUESS_PASSES 3 /* active-set passes from the held guess (rows <= coordinates) */
 #define TRY_PASSES 6 /* from pieces read before the sweeps converged */
 #define CHUNK 5 /* sweeps before the first reading of the pieces */
+#define FROM_PASSES 4 /* from the caller's start (the last time step's pieces) */
 
 
 
@@ -217,9 +220,9 @@ static int active_set(sc_problem *p, sc_int max_pass, double *work, sc_int *iwor
  * info (INFO_WIDTH). Scratch: work and iwork sized by scene_solve_work. */
 static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const double *f,
                          const double *A, const double *c, const sc_int *kind, const sc_int *start,
-                         const double *par, sc_int max_sweeps, double *lam, double *a,
-                         double *w, double *state_out, double *info, double *work,
-                         sc_int *iwork) {
+                         const double *par, sc_int max_sweeps, const double *from,
+                         double *lam, double *a, double *w, double *state_out, double *info,
+                         double *work, sc_int *iwork) {
   double *L = work, *Z = L + n * n, *G = Z + n * m, *b = G + m * m, *gam = b + m,
          *keep = gam + nb, *zero = keep + m, *rest = zero + m, res[3] = {NAN, NAN, NAN};
   sc_int i, j, k, total_sweeps = 0, passes = 0, defect = 0, chunk = CHUNK;
@@ -298,6 +301,28 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
   if (m == 0) {
     ok = 1;
     res[0] = res[1] = res[2] = 0.0;
+  }
+  if (!ok && from) { /* the active set from the caller's pieces (3 per block: the code of
+    state_out, -1 none: held; the forces: a sliding 2-D block's angle, the held rows' start,
+    which dependent held rows keep: the basic solution near the last one, inside the sets) */
+    for (k = 0; k < nb; ++k) {
+      const double *q = par + 3 * k, *s = from + 3 * k;
+      sc_int r = start[k], code = (sc_int)s[0], nk = sc_block_size(kind[k]);
+      int zero = kind[k] == K_BOX ? !(q[0] > 0) : kind[k] == K_DISC ? !(q[0] > 0) :
+                 kind[k] == K_SPLIT ? !(q[2] > 0 && (q[0] > 0 || q[1] > 0)) : 0;
+      state[k] = zero || (code == S_ZERO && kind[k] != K_FREE) ? S_ZERO : S_HELD;
+      if (zero || state[k] == S_ZERO) continue;
+      for (i = 0; i < nk; ++i) lam[r + i] = s[1 + i];
+      if (code < S_SLIDE || kind[k] < K_BOX) continue;
+      if (kind[k] == K_BOX) lam[r] = code == 4 ? -q[0] : q[0];
+      else if (s[1] == 0.0 && s[2] == 0.0) continue;
+      state[k] = S_SLIDE;
+    }
+    ok = active_set(&p, FROM_PASSES, rest, iw2, &passes, &defect, res);
+    if (!ok) { /* else today's order from zero forces */
+      for (i = 0; i < m; ++i) lam[i] = 0.0;
+      for (k = 0; k < nb; ++k) gam[k] = 0.0;
+    }
   }
   if (!ok && m <= n) { /* the active set from the held guess: every block held (or its set
     zero); not where more rows than coordinates make the held forces' basic solution arbitrary */
@@ -451,12 +476,35 @@ int SNAKECG_EXPORT(core_scene_solve_b)(sc_int ns, sc_int n, sc_int mmax, sc_int 
     }
     solve_sample(n, m[s], nb[s], M + s * n * n, f + s * n, A + s * mmax * n,
                  c ? c + s * mmax : NULL, kind + s * nbmax, start + s * nbmax,
-                 par + s * 3 * nbmax, max_sweeps, lam + s * mmax, a + s * n, w + s * mmax,
-                 state + s * nbmax, info + s * INFO_WIDTH, work, iwork);
+                 par + s * 3 * nbmax, max_sweeps, NULL, lam + s * mmax, a + s * n,
+                 w + s * mmax, state + s * nbmax, info + s * INFO_WIDTH, work, iwork);
   }
   free(work);
   free(iwork);
   return 0;
+}
+
+/* One sample of core_scene_solve_b (offsets c), its active set tried first from the pieces
+ * `from` (3 per block; NULL: none). Returns 0, -1 out of memory, -2 sizes out of range. */
+int SNAKECG_EXPORT(core_scene_solve_s)(sc_int n, sc_int m, sc_int nb, const double *M,
+                                       const double *f, const double *A, const double *c,
+                                       const sc_int *kind, const sc_int *start,
+                                       const double *par, sc_int max_sweeps,
+                                       const double *from, double *lam, double *a, double *w,
+                                       double *state, double *info) {
+  sc_int nd, ni;
+  double *work;
+  sc_int *iwork;
+  if (n < 1 || n > 512 || m < 0 || m > 500 || nb < 0 || nb > m) return -2;
+  SNAKECG_EXPORT(core_scene_solve_work)(n, m, nb, &nd, &ni);
+  work = (double *)malloc(sizeof(double) * (size_t)nd);
+  iwork = (sc_int *)malloc(sizeof(sc_int) * (size_t)ni);
+  if (work && iwork)
+    solve_sample(n, m, nb, M, f, A, c, kind, start, par, max_sweeps, from, lam, a, w, state,
+                 info, work, iwork);
+  free(work);
+  free(iwork);
+  return work && iwork ? 0 : -1;
 }
 
 /* core_scene_solve_b with no offsets (w = A a): the solve at rest. */

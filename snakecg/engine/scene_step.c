@@ -6,8 +6,10 @@
  * sc_scene_state_rows, kept in the caller's buffers from the step before), a step of length h:
  *   1. the bias forces h_s(q, v) (the generated `bias_forces`), the generalized force
  *      fgen = B tau - h_s + E f_obj and f = M V + h fgen;
- *   2. the exact solve (scene_solve.c's core_scene_solve_b) with the friction sets' sizes
- *      times h and the contacts' offsets gap / h: V+;
+ *   2. the exact solve (scene_solve.c's core_scene_solve_s) with the friction sets' sizes
+ *      times h and the contacts' offsets gap / h (none within GAP_BAND of the tolerance):
+ *      V+, its active set started from the last step's pieces (consecutive steps almost
+ *      always have the same; they are kept at the step's end, 6.);
  *   3. x+ = x + h V+ and the rows there; a pair overlapping beyond the tolerance refuses the
  *      step (STEP_OVERLAP, V+ kept for the caller's root finding, nothing else changed);
  *   4. the step's work: the torques' h tau . v+, the ground's dissipation -lam . (A V+), the
@@ -28,6 +30,10 @@
  * engine.h */
 enum { SOLVE_INFO = 8 }; /* the solve's certificate: status, dependent, primal, dual, compl.. */
 #define SC_STEP_SWEEPS 200000 /* snakecg.scenes.solve.MAX_SWEEPS */
+/* a contact's gap within this of the tolerance from zero takes no offset: what a step's
+ * gap stabilisation leaves (second order, ~1e-11 m) would else ask dependent contacts (a
+ * snake jammed among pegs) for offsets that no velocity meets, above the solve's acceptance */
+#define GAP_BAND 1e-3
 
 /* One call's arguments (sc_scene_step of engine.h; snakecg/engine/binding.py mirrors them as
  * SceneStep): pk the packed scene; tol, h, impact_speed: contact tolerance (m), step (s),
@@ -36,7 +42,8 @@ enum { SOLVE_INFO = 8 }; /* the solve's certificate: status, dependent, primal, 
  * out, kind, start the rows at x (sc_scene_state_rows' outputs), replaced; M1 .. start1
  * scratch: the rows at the step's end; Vp (n) the step's V+ (before an impact); lam, info
  * (mcap, SOLVE_INFO) the step's solve, ilam, iinfo the impact's; acc (ST_WIDTH); status
- * STEP_* or SS_*. */
+ * STEP_* or SS_*; from (3 mcap, or NULL: every solve from scratch), nfrom: the last accepted
+ * step's pieces on the rows at x (its blocks' count; 0: none), the run's own. */
 
 static double quad(sc_int n, const double *M, const double *v) {
   double s = 0.0;
@@ -50,22 +57,70 @@ static double quad(sc_int n, const double *M, const double *v) {
 }
 
 /* The solve of the rows in c's buffers at force f, the sets' sizes times h, the contacts'
- * offsets gap / h (h = 0: none): a (n), lam, info. Returns core_scene_solve_b's code. */
+ * offsets gap / h (h = 0: none), from the last step's pieces where c keeps them (h > 0):
+ * a (n), lam, info, the blocks' states (scratch + 5 mcap). Returns core_scene_solve_s's
+ * code. */
 static int solve(sc_scene_step *c, sc_int n, double h, const double *f, double *scratch,
                  double *a, double *lam, double *info) {
   sc_int m = (sc_int)c->out[RO_M], nb = (sc_int)c->out[RO_NB], nc = (sc_int)c->out[RO_NC];
   const double *rec = c->out + RO_POSE + 3 * (sc_int)c->pk[SP_NO];
-  double *par = scratch, *off = par + 3 * c->mcap, *w = off + c->mcap, *st = w + c->mcap;
+  double *par = scratch, *off = par + 3 * c->mcap, *w = off + c->mcap, *st = w + c->mcap,
+         *from = st + c->mcap; /* the pieces' forces (kept per second) times h */
   sc_int b, k;
+  /* from the last step's pieces (an impact from scratch: measured as cheap, 1 pass after 4
+   * sweeps, against 2.3 passes from the step's pieces) */
+  const int warm = c->from && c->nfrom == nb && h > 0;
   for (b = 0; b < nb; ++b) {
     int sized = c->kind[b] == K_BOX || c->kind[b] == K_DISC || c->kind[b] == K_SPLIT;
     for (k = 0; k < 3; ++k) par[3 * b + k] = sized ? c->par[3 * b + k] * h : c->par[3 * b + k];
   }
   for (k = 0; k < m; ++k) off[k] = 0.0;
-  for (k = 0; h > 0 && k < nc; ++k) off[c->start[k]] = rec[CR_W * k + 10] / h;
-  return SNAKECG_EXPORT(core_scene_solve_b)(1, n, m, nb, &m, &nb, c->M, f, c->A, off, c->kind,
-                                            c->start, par, SC_STEP_SWEEPS, lam, a, w, st,
-                                            info);
+  for (k = 0; h > 0 && k < nc; ++k) { /* (a gap within GAP_BAND of zero: none) */
+    double g = rec[CR_W * k + 10];
+    off[c->start[k]] = fabs(g) > GAP_BAND * c->tol ? g / h : 0.0;
+  }
+  for (b = 0; warm && b < nb; ++b) {
+    from[3 * b] = c->from[3 * b];
+    from[3 * b + 1] = c->from[3 * b + 1] * h;
+    from[3 * b + 2] = c->from[3 * b + 2] * h;
+  }
+  return SNAKECG_EXPORT(core_scene_solve_s)(n, m, nb, c->M, f, c->A, off, c->kind, c->start,
+                                            par, SC_STEP_SWEEPS,
+                                            warm ? from : NULL, lam,
+                                            a, w, st, info);
+}
+
+/* The step's pieces (the solve's states st and impulses lam on the rows at x) as the start of
+ * the next step's solve on the rows at its end (c->from, 3 per block: state, forces lam / h):
+ * the ground's blocks are the same; a contact is the one of the same bodies, the same count
+ * of that pair's contacts before it, else new: held at zero force. */
+static void keep_pieces(sc_scene_step *c, sc_int no, const double *st) {
+  const sc_int nc0 = (sc_int)c->out[RO_NC], nc1 = (sc_int)c->out1[RO_NC],
+               nb1 = (sc_int)c->out1[RO_NB];
+  const double *r0 = c->out + RO_POSE + 3 * no, *r1 = c->out1 + RO_POSE + 3 * no;
+  sc_int k, j, i;
+  for (k = 0; k < nb1; ++k) {
+    double *s = c->from + 3 * k;
+    sc_int old = -1;
+    if (k < nc1) {
+      const double *a = r1 + CR_W * k;
+      sc_int before = 0;
+      for (i = 0; i < k; ++i) before += r1[CR_W * i] == a[0] && r1[CR_W * i + 1] == a[1] &&
+                                        r1[CR_W * i + 2] == a[2] && r1[CR_W * i + 3] == a[3];
+      for (j = 0; j < nc0 && old < 0; ++j) {
+        const double *b = r0 + CR_W * j;
+        if (b[0] == a[0] && b[1] == a[1] && b[2] == a[2] && b[3] == a[3] && before-- == 0)
+          old = j;
+      }
+    } else {
+      old = nc0 + k - nc1;
+    }
+    s[0] = old < 0 ? (double)S_HELD : st[old];
+    s[1] = s[2] = 0.0;
+    for (i = 0; old >= 0 && i < sc_block_size(c->kind1[k]); ++i)
+      s[1 + i] = c->lam[c->start[old] + i] / c->h;
+  }
+  c->nfrom = nb1;
 }
 
 /* The step's work (4.) from the rows at x, the impulses lam and V+. */
@@ -136,6 +191,7 @@ int SNAKECG_EXPORT(core_scene_step)(sc_scene_step *c) {
   c->acc[ST_IMPACT] = 0.0;
   c->acc[ST_LOSS] = 0.0;
   if (!(c->h > 0)) {
+    c->nfrom = 0; /* no pieces yet */
     code = sc_scene_state_rows(pk, c->x, c->x + SNAKECG_NS, c->tol, c->ccap, mc, c->out, c->M,
                                c->A, c->par, c->kind, c->start);
     if (code < 0) return code;
@@ -146,7 +202,7 @@ int SNAKECG_EXPORT(core_scene_step)(sc_scene_step *c) {
   for (i = 0; i < n; ++i)
     if (!isfinite(c->x[i]) || !isfinite(c->V[i])) return -3;
   if (sc_work_alloc(&ws, fns, SC_COUNT(fns))) return -1;
-  d = (double *)malloc(sizeof(double) * (size_t)(4 * n + SNAKECG_NS + 6 * mc + 8));
+  d = (double *)malloc(sizeof(double) * (size_t)(4 * n + SNAKECG_NS + 9 * mc + 8));
   if (!d) {
     sc_work_free(&ws);
     return -1;
@@ -155,7 +211,7 @@ int SNAKECG_EXPORT(core_scene_step)(sc_scene_step *c) {
   fgen = f + n;
   xp = fgen + n;
   hb = xp + n;
-  scratch = hb + SNAKECG_NS; /* 6 mcap: the solve's sizes, offsets, w, states */
+  scratch = hb + SNAKECG_NS; /* 9 mcap: the solve's sizes, offsets, w, states, start */
   ws.arg[BF_IN_q] = c->x; /* 1. */
   ws.arg[BF_IN_v] = c->V;
   ws.arg[BF_IN_K] = pk + (sc_int)pk[SP_K];
@@ -200,6 +256,7 @@ int SNAKECG_EXPORT(core_scene_step)(sc_scene_step *c) {
       for (j = 0; j < n; ++j) vn += c->A1[c->start1[k] * n + j] * c->Vp[j];
       impact = vn < -c->impact_speed;
     }
+    if (c->from) keep_pieces(c, no, scratch + 5 * mc);
     memcpy(c->x, xp, sizeof(double) * (size_t)n); /* 6. */
     memcpy(c->V, c->Vp, sizeof(double) * (size_t)n);
     memcpy(c->out, c->out1, sizeof(double) * (size_t)(RO_POSE + 3 * no + CR_W * nc1));

@@ -11,7 +11,9 @@ poses and twists in the world frame) solves
 
 with ``V* = V + h M^-1 (B tau - bias(q, v) + f_obj)`` and ``sigma_F`` the support function of
 each ground friction set (a wheel's box, Coulomb's disc, the anisotropic split ellipse: the
-sets of forces ``mu m_i g``, times ``h``: impulses). It is the rest problem of
+sets of forces ``mu m_i g``, times ``h``: impulses; ``g_c`` taken as 0 within
+:data:`GAP_BAND` of the tolerance, what the previous step's first-order closing leaves, which
+dependent contacts of a jammed snake could not all meet). It is the rest problem of
 :mod:`snakecg.scenes.solve` with ``a -> V+``, ``f -> M V*``, the sets' sizes times ``h`` and
 the rows' offsets ``c = g_c / h`` (``core_scene_solve_b``): one exact solve for rest, steps and
 impacts. Stick-slip and maximum dissipation come from it (a sliding block's impulse is on
@@ -29,7 +31,12 @@ The rows are found from the geometry at every step, so contact points slide alon
 links and a box's corner can take over.
 
 A step is the compiled engine's (``snakecg/engine/scene_step.c``: the bias forces, the solve,
-the rows at the step's end, the step's energy terms, the impact), and so is the run's loop
+the rows at the step's end, the step's energy terms, the impact). Its solve's active set starts
+from the last step's pieces (each friction block held, zero or sliding at its angle, each
+contact held or open; contacts matched by their bodies), which consecutive steps almost always
+share; where they do not, the solve goes on as from scratch. The answer is the same (the
+certificate's): the environment variable ``SNAKECG_SCENE_COLD_START=1``, read when a run
+starts, makes every solve start from scratch, for comparisons. So is the run's loop
 (``snakecg/engine/scene_run.c``): the torque law where the engine knows it (a constant, a
 :class:`~snakecg.simulate.TorqueTable`, a :class:`~snakecg.simulate.SerpenoidPD`), the root
 finding of a refused step, the record into a buffer. A call returns to Python only for a
@@ -40,6 +47,7 @@ buffer, a pause every :data:`PAUSE_STEPS` steps (progress, Ctrl-C) and the run's
 from __future__ import annotations
 
 import math
+import os
 import time
 from dataclasses import dataclass
 
@@ -66,6 +74,12 @@ PROGRESS_EVERY = 5.0
 PAUSE_STEPS = 20_000
 #: the engine's record buffer: rows kept before the run returns to hand them over
 RECORD_ROWS = 4096
+#: a contact's gap within this fraction of the tolerance from zero takes no offset (the
+#: engine's scene_step.c GAP_BAND)
+GAP_BAND = 1e-3
+#: set (to anything but "" or "0") in the environment, every step's solve starts from scratch
+#: instead of from the last step's pieces (the same answer: for comparisons and checks)
+COLD_START_ENV = "SNAKECG_SCENE_COLD_START"
 #: why the engine's run returned (scene_run.c's RUN_*)
 (RUN_END, RUN_TAU, RUN_FULL, RUN_IMPACT, RUN_PAUSE, RUN_NOT_CONVERGED, RUN_IMPACT_NOT_CONVERGED,
  RUN_REFUSED, RUN_TOO_SHORT, RUN_TRIES_OUT, RUN_BAD_TAU) = range(11)
@@ -116,6 +130,10 @@ class _Stepper:
         self.info, self.iinfo = np.zeros(len(INFO)), np.zeros(len(INFO))
         self.acc = np.zeros(ST_WIDTH)
         self.acc[ST_SLIDING_COS] = -1.0
+        # the last step's pieces, the next solve's start (this run's own: a batch's runs and
+        # a run handed over in pieces go on from their own)
+        self.pieces = np.zeros(3 * mcap)
+        cold = os.environ.get(COLD_START_ENV, "") not in ("", "0")
         ad = [a.ctypes.data for a in (
             self.tau, self.fo, self.x, self.V)]
         bufs = [a.ctypes.data for a in (
@@ -123,7 +141,7 @@ class _Stepper:
             self.par1, self.out1, self.kind1, self.start1, self.Vp, self.lam, self.info,
             self.ilam, self.iinfo, self.acc)]
         self.args = SceneStep(model._pk, float(tol), 0.0, IMPACT_SPEED, *ad, eng.ccap, mcap,
-                              *bufs, 0)
+                              *bufs, 0, None if cold else self.pieces.ctypes.data, 0)
         self._address = address(self.args)
         self._step = core.scene_step
 
