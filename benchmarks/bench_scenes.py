@@ -12,8 +12,12 @@
   base lying on a floor plane with gravity, box and cylinder objects on planar joints,
   cylinder pegs fixed to the world), bare ``mj_forward`` and with qpos and the applied
   forces set and qacc copied;
+* **warm starts**: a batch's solves start from the last sample's pieces; the engine's call
+  on a torque map (two joints' torques on a 36 x 36 grid, the others fixed) and on the random
+  batch, against the same call with every sample cold (``chunk=1``), in one run;
 * **paper**: the paper's scene (3 joints, wheels, kappa 100) through the general path and
-  through today's path, single and batched;
+  through today's path, single and batched (and a 64 x 64 map of two joint angles, warm
+  against cold);
 * **instructions** (``--instructions``, needs valgrind): machine instructions per sample
   inside the engine's call and inside its solve (callgrind's inclusive counts over a batch),
   figures that do not depend on the machine's load.
@@ -107,8 +111,27 @@ def _where(model, q, tau, n, repeat) -> tuple[float, float, dict]:
             np.repeat([rows.start], n, axis=0), np.repeat([rows.par], n, axis=0))
     t_solve = best_of(lambda: solve(model.core, *args), repeat) / n
     Q, T = np.repeat(q[None], n, axis=0), np.repeat(tau[None], n, axis=0)
-    t_call = best_of(lambda: model._run(Q, T, model._zero_f, n, True), repeat) / n
+    # (every sample cold, as the stacked solve is: these samples are all the same, which a
+    # warm start would answer from the first one's pieces)
+    t_call = best_of(lambda: model._run(Q, T, model._zero_f, n, True, chunk=1), repeat) / n
     return t_call, t_solve, {k: float(v[0]) for k, v in res._raw["info"].items()}
+
+
+def _warm_cold(model, name, Q, T, repeat) -> None:
+    """The engine's call on a batch, its solves from the last sample's pieces (the forward's)
+    and every sample cold, alternated; per sample, with the mean sweeps and passes."""
+    from snakecg.scenes.model import WARM_CHUNK
+
+    n, times = len(Q), {WARM_CHUNK: [], 1: []}
+    for _ in range(repeat):
+        for chunk, acc in times.items():
+            acc.append(best_of(lambda: model._run(Q, T, model._zero_f, n, True, chunk=chunk),
+                               1) / n)
+    warm, cold = (model._run(Q, T, model._zero_f, n, True, chunk=c) for c in times)
+    print(f"  {name} ({n}): warm {min(times[WARM_CHUNK]) * 1e6:.2f} us per sample (sweeps "
+          f"{warm[:, 5].mean():.2f}, passes {warm[:, 6].mean():.2f}), cold "
+          f"{min(times[1]) * 1e6:.2f} us (sweeps {cold[:, 5].mean():.2f}, passes "
+          f"{cold[:, 6].mean():.2f}): {min(times[1]) / min(times[WARM_CHUNK]):.2f}x")
 
 
 def _models(joints: int):
@@ -158,8 +181,8 @@ def bench_instructions(joints: int) -> None:
         counts = []
         # the engine's call: libffi's inclusive count (callgrind attributes the exported
         # entry point's own count to its caller; the child makes no other foreign call of
-        # note), its solve: core_scene_solve_b's (the forward's per-sample call)
-        for fn in ("ffi_call", "core_scene_solve_b"):
+        # note), its solve: core_scene_solve_s's (the forward's per-sample call)
+        for fn in ("ffi_call", "core_scene_solve_s"):
             m = re.search(rf"^\s*([\d,]+) .*{fn}\b", text, re.M)
             counts.append(int(m.group(1).replace(",", "")) / n if m else float("nan"))
         print(f"  {which:5s} ({n} samples): {counts[0]:12,.0f} | {counts[1]:12,.0f} | "
@@ -204,6 +227,11 @@ def main() -> None:
           f"solved {np.mean(inf['status'] == 0):.0%}")
     print(f"    of which the engine's call {t_call * 1e6:.1f} us, its solve alone "
           f"{t_solve * 1e6:.1f} us (contacts, rows, metrics: {(t_call - t_solve) * 1e6:.1f} us)")
+    g = np.linspace(-0.3, 0.3, 36)
+    Tg = np.repeat(tau[None], g.size ** 2, axis=0)
+    Tg[:, 2], Tg[:, 6] = np.repeat(g, g.size), np.tile(g, g.size)
+    _warm_cold(model, "torque map 36 x 36", np.repeat(q[None], len(Tg), axis=0), Tg, a.repeat)
+    _warm_cold(model, "random batch", Q, T, a.repeat)
     try:
         import mujoco
 
@@ -242,6 +270,11 @@ def main() -> None:
     t_call, t_solve, info = _where(new, q0, t0, a.n, a.repeat)
     print(f"    general path, of which the engine's call {t_call * 1e6:.2f} us, its solve alone "
           f"{t_solve * 1e6:.2f} us per sample (sweeps {info['sweeps']:.0f})")
+    g = np.linspace(-1.0, 1.0, 64)
+    Qg = np.c_[np.zeros((g.size ** 2, 3)), np.repeat(g, g.size), np.tile(g, g.size),
+               np.full(g.size ** 2, 0.3)]
+    _warm_cold(new, "paper, q map 64 x 64", Qg, np.tile([0.02, -0.01, 0.03], (len(Qg), 1)),
+               a.repeat)
     if a.instructions:
         bench_instructions(na)
     print(f"load after: {os.getloadavg()}")

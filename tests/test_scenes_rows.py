@@ -241,8 +241,19 @@ def test_batches_and_threads_give_the_same_samples(rng, monkeypatch):
         except InputError:
             assert one.status[i] == 3 and "overlap" in one.reason[i]
             continue
-        np.testing.assert_array_equal(single.qdd, one.qdd[i])
-        assert single.contacts == one.contacts[i]
+        # sample 0 starts cold as the one-sample call does: the same bytes; the others
+        # start from the last sample's pieces: the same answer to rounding
+        np.testing.assert_allclose(one.qdd[i], single.qdd, rtol=0,
+                                   atol=0 if i == 0 else 1e-12 * max(1, np.abs(single.qdd).max()))
+        unique = one._raw["info"]["dependent"][i] == 0  # (else the forces need not be)
+        assert len(single.contacts) == len(one.contacts[i])
+        for c1, c2 in zip(single.contacts, one.contacts[i]):
+            assert c1.keys() == c2.keys()
+            for k in c1:
+                if k == "force" and unique:
+                    assert c2[k] == pytest.approx(c1[k], rel=1e-9, abs=1e-12)
+                elif k != "force" and (k != "state" or unique):
+                    assert c1[k] == c2[k], k
     with pytest.raises(InputError, match="tau must be finite"):
         model.forward(Q[:2], np.r_[T[:1], [[np.nan] * model.n_joints]])
 

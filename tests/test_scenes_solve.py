@@ -68,8 +68,13 @@ def test_paper_scenarios_one_sample_at_a_time(scenario, rng):
             got, want = getattr(r, name), getattr(o, name)
             assert abs(got - want) <= 1e-12 * max(abs(want), abs(o.norm_qdd), 1e-300), name
         assert abs(r.sr - o.sr) <= 1e-12 and 0.0 <= r.sr <= 1.0
-        np.testing.assert_array_equal(r.qdd, batch.qdd[s])
-        assert r.sr == batch.sr[s] and r.norm_lambda == batch.norm_lambda[s]
+        # the batch's solves start from the last sample's pieces, the one-sample call's
+        # cold: the same piece solved from another start, equal to rounding
+        scale = max(1.0, np.abs(r.qdd).max())
+        np.testing.assert_allclose(batch.qdd[s], r.qdd, rtol=0, atol=1e-12 * scale)
+        assert abs(r.sr - batch.sr[s]) <= 1e-12
+        assert batch.norm_lambda[s] == pytest.approx(r.norm_lambda, rel=1e-10,
+                                                      abs=1e-14 * r.norm_qdd)
 
 
 def _solved(rng, models, tries=50):

@@ -12,6 +12,7 @@ import pytest
 
 import snakecg
 from snakecg.scenes import GeneralScene, Ground, Obstacle, SceneObject
+from snakecg.scenes.model import WARM_CHUNK
 from snakecg.scenes.solve import DISC
 
 from scenes_reference import (approximate_accelerations, dense_problem, enumerate_pieces,
@@ -138,3 +139,76 @@ def test_minimum_norm_forces_against_clarabel(batch):
         ref, status = _min_norm_on_face(p, lam, _face(p, a))
         assert status == "optimal"
         assert np.linalg.norm(lam) <= np.linalg.norm(ref) * (1 + 1e-7) + 1e-9
+
+
+@pytest.fixture(scope="module")
+def grid():
+    """A torque map of the scene (two joints' torques on a 36 x 32 grid, the others fixed),
+    batched as `forward` runs it: neighbours with nearly the same pieces, so that the solves
+    start from the last sample's."""
+    rng = np.random.default_rng(7)
+    q = np.r_[0.0, 0.0, 0.0, 0.25 * np.sin(np.arange(JOINTS))]
+    model = snakecg.load(_scene(q))
+    a, b = np.meshgrid(np.linspace(-0.3, 0.3, 36), np.linspace(-0.3, 0.3, 32), indexing="ij")
+    tau = np.repeat(rng.normal(0, 0.1, (1, JOINTS)), a.size, axis=0)
+    tau[:, 2], tau[:, 6] = a.ravel(), b.ravel()
+    return model, q, tau, model.forward(np.repeat(q[None], len(tau), axis=0), tau)
+
+
+def test_warm_batch_against_references_and_cold_samples(grid, monkeypatch):
+    """The map's batch (warm starts) against the one-sample calls (cold): the same status,
+    accelerations and metrics to 1e-10, the same dependent flag, the forces to 1e-9 where the
+    flag says minimum-norm (1); against the exact pieces enumerated in NumPy (1e-9), the KKT
+    conditions checked densely and Clarabel's minimum-norm forces; and the same bytes on two
+    threads (the batch split on its cold samples)."""
+    model, q, tau, res = grid
+    info = res._raw["info"]
+    assert np.all(res.status == 0)
+    warm = np.arange(len(tau)) % WARM_CHUNK != 0
+    # the starts were taken (no sweeps: a cold solve of these 33 rows on 19 coordinates
+    # begins with sweeps) in most samples: the comparisons below are of warm solves
+    assert np.mean(info["sweeps"][warm] == 0) > 0.6
+    p = _sample(model, q, tau[0])[1]
+    basic = differ = 0
+    for s in range(len(tau)):
+        one = model.forward(q, tau[s])
+        assert one.status == 0 and one._raw["info"]["dependent"][0] == info["dependent"][s]
+        a1, a = np.r_[one.qdd, np.ravel(one.a_obj)], np.r_[res.qdd[s], np.ravel(res.a_obj[s])]
+        scale = max(1.0, np.abs(a1).max())
+        assert np.abs(a - a1).max() <= 1e-10 * scale
+        f = np.zeros(len(a1))
+        f[3:3 + JOINTS] = tau[s]
+        a_free = np.linalg.solve(p["M"], f)
+        form = a_free @ p["M"] @ a_free  # the metrics' scale: the free motion's |a|^2_M
+        for name in ("norm_qdd", "norm_a_obj", "norm_lambda"):
+            assert abs(getattr(res, name)[s] - getattr(one, name)) <= 1e-10 * max(
+                abs(getattr(one, name)), form, 1e-300), name
+        assert abs(res.sr[s] - one.sr) <= 1e-10
+        lam1, lam = one._raw["lam"][0][:len(p["b"])], res._raw["lam"][s][:len(p["b"])]
+        near = np.abs(lam - lam1).max() <= 1e-9 * max(1.0, np.abs(lam1).max())
+        if info["dependent"][s] == 2:  # another basic solution of the face: checked below
+            basic += 1
+            differ += not near
+        else:
+            assert near, s
+        for key in ("primal", "dual", "complementarity"):
+            assert info[key][s] <= 1e-9, key
+        if s % 64 == 17 or not near:  # the references: the pieces on a sample of the map,
+            ps = dense_problem(one, model, tau[s])  # the KKT conditions where forces differ
+            assert kkt_violations(ps, lam, a) == []
+        if s % 64 == 17:
+            ref, _ = enumerate_pieces(ps, approximate_accelerations(ps))
+            assert ref is not None
+            assert np.abs(a - ref).max() <= 1e-9 * max(1.0, np.abs(ref).max())
+    print(f"flag 2 (basic forces kept): {basic} of {len(tau)}, forces differing {differ}")
+    flagged = np.flatnonzero(info["dependent"] == 1)
+    assert len(flagged) >= 2
+    for s in flagged[:: max(1, len(flagged) // 4)][:4]:
+        a = np.r_[res.qdd[s], np.ravel(res.a_obj[s])]
+        lam = res._raw["lam"][s][:len(p["b"])]
+        ref, status = _min_norm_on_face(p, lam, _face(p, a))
+        assert status == "optimal"
+        assert np.linalg.norm(lam) <= np.linalg.norm(ref) * (1 + 1e-7) + 1e-9
+    monkeypatch.setenv("SNAKECG_THREADS", "2")
+    two = model.forward(np.repeat(q[None], len(tau), axis=0), tau)
+    np.testing.assert_array_equal(two._out, res._out)

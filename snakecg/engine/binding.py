@@ -71,7 +71,7 @@ PROTOTYPES: dict[str, tuple[list, object]] = {
     # scene_solve.c
     "core_scene_solve": ([_I, _I, _I, _I] + [_P] * 8 + [_I] + [_P] * 5, _INT),
     # scene_rows.c
-    "core_scene_forward": ([_P, _I, _P, _I, _P, _I, _P, _I, _I, _I] + [_P] * 5, _INT),
+    "core_scene_forward": ([_P, _I, _P, _I, _P, _I, _P, _I, _I, _I] + [_P] * 5 + [_I], _INT),
     "core_scene_forward_call": ([_P], _INT),
     "core_scene_solve_b": ([_I, _I, _I, _I] + [_P] * 9 + [_I] + [_P] * 5, _INT),
     "core_scene_solve_s": ([_I, _I, _I] + [_P] * 7 + [_I] + [_P] * 6, _INT),
@@ -187,7 +187,7 @@ class SceneCall(ctypes.Structure):
 
     _fields_ = [("pk", _P), ("n", _I), ("q", _P), ("sq", _I), ("tau", _P), ("st", _I),
                 ("fo", _P), ("sf", _I), ("ccap", _I), ("mcap", _I), ("out", _P), ("A", _P),
-                ("lam", _P), ("w", _P), ("state", _P)]
+                ("lam", _P), ("w", _P), ("state", _P), ("chunk", _I)]
 
 
 class SceneStateCall(ctypes.Structure):

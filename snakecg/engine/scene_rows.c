@@ -13,8 +13,9 @@
  *      the two surface points fixed on their bodies;
  *   3. the ground's blocks (a table packed once per model: wheels, ideal wheels, Coulomb,
  *      anisotropic Coulomb per link; an object's Coulomb friction with the ground);
- *   4. the exact solve of scene_solve.c (core_scene_solve_b) on the full inertia (M_s, then
- *      m, m, I per object) and force (B tau, the objects' wrenches);
+ *   4. the exact solve of scene_solve.c (core_scene_solve_s) on the full inertia (M_s, then
+ *      m, m, I per object) and force (B tau, the objects' wrenches), in a batch from the
+ *      last sample's pieces (a map's neighbours have nearly the same; core_scene_forward);
  *   5. the metrics: ||qdd_s||^2 = qdd^T M_s qdd (eq. 26), ||a_o||^2 = a_o^T I_o a_o (eq. 27)
  *      per object and summed, ||lambda||^2 = lam^T G lam = (a - a_free)^T M (a - a_free), and
  *      sr (eq. 30; 0 where the summed norms are rounding of the free motion's:
@@ -43,6 +44,9 @@ enum { SO_INFO = 0, SO_NC = 8, SO_NORM_QDD, SO_NORM_A, SO_NORM_L, SO_SR, SO_OVER
 enum { BODY_LINK = 0, BODY_OBJECT = 1, BODY_OBSTACLE = 2 };
 /* Gauss-Seidel sweeps allowed per sample (snakecg.scenes.solve.MAX_SWEEPS) */
 #define SC_SCENE_SWEEPS 200000
+/* a warm start's passes beyond which it gained nothing (measured, 10-joint scene: a cold
+ * solve ~5 sweeps and 2.5-3 passes, a pass ~3 sweeps' time; a start that falls back: +4) */
+#define SC_GAIN_PASSES 2
 
 /* The scene's sizes and the scratch of one batch call. */
 typedef struct {
@@ -52,7 +56,10 @@ typedef struct {
   double tol; /* the contact tolerance (m) */
   sc_work_t ws;
   double *A, *M, *f, *par, *lam, *w, *a, *st, *P, *J, *Ms, *LU, *afree, *D, *cs;
-  sc_int *kind, *start, *piv;
+  double *prev; /* the last sample's pieces (3 per block: state, forces) */
+  const double *prec; /* and its contacts' records */
+  sc_int *kind, *start, *piv, pnb; /* pnb: its blocks (-1: none, not solved) */
+  sc_int cool, backoff; /* samples left cold after a start that fell back, the next count */
   sc_shape *shape;
   double *centre, *reach, *pose;
 } sc_scene_work;
@@ -271,20 +278,21 @@ static void full_inertia(const sc_scene_work *sw, double *M) {
 }
 
 /* One sample: out (its row), and where A is not null its details (rows, forces, row
- * accelerations, block states; mcap rows each). */
+ * accelerations, block states; mcap rows each). Where warm, the solve starts from the last
+ * sample's pieces if its blocks are the same (contacts: of the same bodies, in order). */
 static void scene_sample(sc_scene_work *sw, const double *q, const double *tau,
                          const double *fo, sc_int max_sweeps, double *out, double *A,
-                         double *lam, double *w, double *state) {
+                         double *lam, double *w, double *state, int warm) {
   const sc_int n = sw->n, ns = SNAKECG_NS, width = SO_QDD + ns + 7 * sw->no + 3 * sw->ng;
-  sc_int nc, m, nb, i, j, o;
-  double *P = sw->P;
+  sc_int nc, m, nb, i, j, o, pnb = sw->pnb;
+  double *P = sw->P, *rec = out + SO_QDD + ns + 7 * sw->no + 3 * sw->ng;
+  sw->pnb = -1; /* (until this sample is solved) */
   memset(out, 0, sizeof(double) * (size_t)width); /* the records: as contact_rows writes them */
   if (kinematics(sw, q, 1)) goto failed;
   place(sw, P, 0);
   for (o = 0; o < sw->no; ++o)
     for (j = 0; j < 3; ++j) out[SO_QDD + ns + 4 * sw->no + 3 * o + j] = sw->pose[3 * o + j];
-  nc = contact_rows(sw, P, out + SO_QDD + ns + 7 * sw->no + 3 * sw->ng, out + SO_OVERLAP,
-                    sw->ccap);
+  nc = contact_rows(sw, P, rec, out + SO_OVERLAP, sw->ccap);
   if (nc < 0) {
     out[SO_INFO] = (double)-nc;
     for (i = SO_NORM_QDD; i <= SO_SR; ++i) out[i] = NAN;
@@ -299,9 +307,12 @@ static void scene_sample(sc_scene_work *sw, const double *q, const double *tau,
   for (i = 3; i < ns; ++i) sw->f[i] = tau[i - 3];
   for (i = 0; i < 3 * sw->no; ++i) sw->f[ns + i] = fo[i];
   for (i = 0; i < nb; ++i) sw->st[i] = 0.0;
-  SNAKECG_EXPORT(core_scene_solve_b)(1, n, m, nb, &m, &nb, sw->M, sw->f, sw->A, NULL,
-                                     sw->kind, sw->start, sw->par, max_sweeps, sw->lam, sw->a,
-                                     sw->w, sw->st, out + SO_INFO);
+  warm = warm && pnb == nb && !(sw->cool > 0 && sw->cool--); /* (backing off: cold) */
+  for (i = 0; warm && i < nc * CR_W; i += CR_W)
+    for (j = 0; j < 4; ++j) warm &= rec[i + j] == sw->prec[i + j]; /* the same bodies */
+  SNAKECG_EXPORT(core_scene_solve_s)(n, m, nb, sw->M, sw->f, sw->A, NULL, sw->kind,
+                                     sw->start, sw->par, max_sweeps, warm ? sw->prev : NULL,
+                                     sw->lam, sw->a, sw->w, sw->st, out + SO_INFO);
   /* a_free = M^-1 f (partial pivoting, as numpy.linalg.solve; block by block, which is the
    * same elimination on a block-diagonal M) */
   for (i = 0; i < ns; ++i)
@@ -315,19 +326,27 @@ static void scene_sample(sc_scene_work *sw, const double *q, const double *tau,
     for (i = 0; i < n; ++i) sw->afree[i] = NAN;
   metrics(sw, sw->a, out);
   out[SO_NC] = (double)nc;
-  {
-    double *g = out + SO_QDD + ns + 7 * sw->no, *rec = g + 3 * sw->ng;
-    for (i = 0; i < sw->ng; ++i) {
-      sc_int r = sw->start[nc + i];
-      g[3 * i] = sw->lam[r];
-      g[3 * i + 1] = sc_block_size(sw->kind[nc + i]) == 2 ? sw->lam[r + 1] : 0.0;
-      g[3 * i + 2] = sw->st[nc + i];
-    }
-    for (i = 0; i < nc; ++i) {
-      rec[CR_W * i + 11] = sw->lam[i];
-      rec[CR_W * i + 12] = sw->st[i];
+  if (warm) { /* a start that gained nothing (it fell back to sweeps, or took more than
+    SC_GAIN_PASSES): the next 1, 2, 4 .. 128 samples cold; one that gained halves the count */
+    j = out[SO_INFO + 5] == 0.0 && out[SO_INFO + 6] <= SC_GAIN_PASSES;
+    sw->backoff = j ? sw->backoff / 2 : sw->backoff ? 2 * sw->backoff : 1;
+    if (sw->backoff > 128) sw->backoff = 128;
+    sw->cool = j ? 0 : sw->backoff;
+  }
+  for (i = 0; i < nb; ++i) { /* the pieces: the next sample's start, the ground's outputs */
+    sc_int r = sw->start[i];
+    double *s = sw->prev + 3 * i, *g = rec - 3 * sw->ng + 3 * (i - nc);
+    s[0] = sw->st[i];
+    s[1] = sw->lam[r];
+    s[2] = sc_block_size(sw->kind[i]) == 2 ? sw->lam[r + 1] : 0.0;
+    if (i < nc) { /* a contact's force and state */
+      rec[CR_W * i + 11] = s[1];
+      rec[CR_W * i + 12] = s[0];
+    } else { /* a ground block's forces and state */
+      g[0] = s[1]; g[1] = s[2]; g[2] = s[0];
     }
   }
+  sw->pnb = out[SO_INFO] == 0.0 ? nb : -1, sw->prec = rec; /* the next sample's start */
   if (A) {
     memcpy(A, sw->A, sizeof(double) * (size_t)(m * n));
     memcpy(lam, sw->lam, sizeof(double) * (size_t)m);
@@ -365,7 +384,8 @@ static int work_alloc(sc_scene_work *sw, const double *pk, sc_int ccap, sc_int m
     for (i = 0; i < 4; ++i) most[i] = sz[i] > most[i] ? sz[i] : most[i];
   }
   nd = mcap * n + 2 * n * n + 7 * n + 3 * mcap + 3 * mcap + 5 * SNAKECG_NL +
-       3 * SNAKECG_NL * SNAKECG_NS + SNAKECG_NS * SNAKECG_NS + 3 * sw->nbody + 3 * sw->no + 8;
+       3 * SNAKECG_NL * SNAKECG_NS + SNAKECG_NS * SNAKECG_NS + 3 * sw->nbody + 3 * sw->no + 8 +
+       3 * mcap;
   sw->A = d = (double *)malloc((size_t)(nd + most[3] + 1) * sizeof(double) +
                                (size_t)(most[0] + most[1] + 2) * sizeof(double *) +
                                (size_t)(2 * mcap + n + 2 + most[2] + 1) * sizeof(sc_int) +
@@ -399,10 +419,11 @@ static int work_alloc(sc_scene_work *sw, const double *pk, sc_int ccap, sc_int m
   sw->reach = d; d += sw->nbody;
   sw->pose = d; d += 3 * sw->no;
   sw->D = d; d += 2 * n;
+  sw->prev = d; d += 3 * mcap;
   sw->cs = d;
   sw->start = sw->kind + mcap;
   sw->piv = sw->start + mcap;
-  sw->placed = 0;
+  sw->placed = 0, sw->pnb = -1; /* (nothing placed, no last sample) */
   full_inertia(sw, sw->M); /* the objects' part (M_s: per sample) */
   return 0;
 }
@@ -412,12 +433,16 @@ static int work_alloc(sc_scene_work *sw, const double *pk, sc_int ccap, sc_int m
  * (width = SO_QDD + n_s + 7 n_o + 3 n_g + CR_W ccap); where A is not null, its details at
  * A + i mcap n, lam, w, state + i mcap. At most ccap contacts a sample (a sample with more:
  * status SS_MORE, for the caller to redo with a larger ccap; the records after a sample's
- * contacts are left as they were). Returns 0, -1 out of memory, -2 on sizes out of range,
- * -(3 + i) when an input of sample i is not finite. */
+ * contacts are left as they were). The solves start from the last sample's pieces where its
+ * blocks are the same, but at every chunk-th sample of the call (chunk < 2: all cold; a
+ * caller splitting a batch on multiples of chunk gets the same answers whatever the split)
+ * and for 1, 2, 4 .. 128 samples after starts that gained nothing. Returns 0, -1 out of
+ * memory, -2 on sizes out of range, -(3 + i) when an input of sample i is not finite. */
 int SNAKECG_EXPORT(core_scene_forward)(const double *pk, sc_int n, const double *q, sc_int sq,
                                        const double *tau, sc_int st, const double *fo,
                                        sc_int sf, sc_int ccap, sc_int mcap, double *out,
-                                       double *A, double *lam, double *w, double *state) {
+                                       double *A, double *lam, double *w, double *state,
+                                       sc_int chunk) {
   sc_scene_work sw;
   sc_int i, width, mg = (sc_int)pk[SP_MG];
   if (ccap < 0 || mcap < ccap + mg || mcap > 500 || SNAKECG_NS + 3 * pk[SP_NO] > 512)
@@ -432,10 +457,12 @@ int SNAKECG_EXPORT(core_scene_forward)(const double *pk, sc_int n, const double 
   }
   if (work_alloc(&sw, pk, ccap, mcap)) return -1;
   width = SO_QDD + SNAKECG_NS + 7 * sw.no + 3 * sw.ng + CR_W * ccap;
-  for (i = 0; i < n; ++i)
+  for (i = 0; i < n; ++i) { /* cold at every chunk-th sample of the call */
+    if (chunk < 2 || i % chunk == 0) sw.cool = sw.backoff = 0;
     scene_sample(&sw, q + i * sq, tau + i * st, fo + i * sf, SC_SCENE_SWEEPS, out + i * width,
                  A ? A + i * mcap * sw.n : 0, A ? lam + i * mcap : 0, A ? w + i * mcap : 0,
-                 A ? state + i * mcap : 0);
+                 A ? state + i * mcap : 0, chunk > 1 && i % chunk != 0);
+  }
   work_free(&sw);
   return 0;
 }
@@ -444,21 +471,17 @@ int SNAKECG_EXPORT(core_scene_forward)(const double *pk, sc_int n, const double 
  * pointer (a foreign call's cost grows with its argument count; snakecg/engine/binding.py
  * mirrors it as SceneCall). */
 typedef struct {
-  const double *pk;
-  sc_int n;
-  const double *q;
-  sc_int sq;
-  const double *tau;
-  sc_int st;
-  const double *fo;
-  sc_int sf, ccap, mcap;
-  double *out, *A, *lam, *w, *state;
+  const double *pk; sc_int n;
+  const double *q; sc_int sq;
+  const double *tau; sc_int st;
+  const double *fo; sc_int sf, ccap, mcap;
+  double *out, *A, *lam, *w, *state; sc_int chunk;
 } sc_scene_call;
 
 int SNAKECG_EXPORT(core_scene_forward_call)(const sc_scene_call *c) {
   return SNAKECG_EXPORT(core_scene_forward)(c->pk, c->n, c->q, c->sq, c->tau, c->st, c->fo,
                                             c->sf, c->ccap, c->mcap, c->out, c->A, c->lam,
-                                            c->w, c->state);
+                                            c->w, c->state, c->chunk);
 }
 
 /* ---- the rows at a simulation's state (snakecg/scenes/stepping.py; maps at rest) ---- */

@@ -25,6 +25,10 @@ __all__ = ["GeneralSceneModel"]
 _REFUSED = ("optimize_shape", "com_polar")
 #: Samples per thread below which a batch is not split (SNAKECG_THREADS; snakecg.forward's)
 PARALLEL_MIN = 512
+#: A batch's solves start from the last sample's pieces (neighbours of a map or a sweep have
+#: nearly the same), but every WARM_CHUNK-th sample of an engine call starts cold: the threads'
+#: spans start on its multiples, so that the answers do not depend on the split
+WARM_CHUNK = 256
 _F64 = np.dtype(np.float64)
 _of_buffer = SceneResult.of_buffer
 
@@ -156,9 +160,11 @@ class GeneralSceneModel(RobotModel):
     def _ccap_of(self, out) -> int:
         return (out.shape[1] - self.packed.width(0)) // CR_W
 
-    def _call(self, q, tau, fo, N, ccap, out, detail=None) -> int:
+    def _call(self, q, tau, fo, N, ccap, out, detail=None, chunk=WARM_CHUNK) -> int:
         """One engine call over samples 0..N of the inputs (broadcast where one row), into
-        ``out``; the batch split over threads when large. Its status."""
+        ``out``; the batch split over threads when large (on multiples of ``chunk``: every
+        chunk-th sample starts cold, the others from the last one's pieces; 1: all cold). Its
+        status."""
         from ..engine.threads import pool, threads
 
         mcap = ccap + self.packed.ground_rows
@@ -173,11 +179,14 @@ class GeneralSceneModel(RobotModel):
                 detail[k].ctypes.data + 8 * lo * mcap for k in ("lam", "w", "state")]
             return self._engine(self._pk, hi - lo, ptrs[0], steps[0], ptrs[1], steps[1],
                                 ptrs[2], steps[2], ccap, mcap,
-                                out.ctypes.data + 8 * lo * out.shape[1], *det)
+                                out.ctypes.data + 8 * lo * out.shape[1], *det, chunk)
 
         if workers == 1:
             return job(0, N)
-        bounds = np.linspace(0, N, workers + 1).astype(np.int64)
+        step = max(1, chunk)
+        bounds = np.minimum(N, np.round(np.linspace(0, N, workers + 1) / step)
+                            .astype(np.int64) * step)
+        bounds[-1] = N
         spans = [(int(lo), int(hi)) for lo, hi in zip(bounds[:-1], bounds[1:]) if hi > lo]
         codes = list(pool().map(lambda b: job(*b), spans))
         for code, (lo, _) in zip(codes, spans):
@@ -187,7 +196,7 @@ class GeneralSceneModel(RobotModel):
                 return code
         return 0
 
-    def _run(self, q, tau, fo, N, batched):
+    def _run(self, q, tau, fo, N, batched, chunk=WARM_CHUNK):
         """The engine's outputs of N samples (None where an input is not finite): a first
         pass with room for a few contacts, the samples that found more solved again with room
         for every pair's."""
@@ -196,7 +205,7 @@ class GeneralSceneModel(RobotModel):
         # zeros: the engine leaves the record room after a sample's contacts unwritten, and
         # a result is the same bytes whatever the threads' split
         out = np.zeros((N, pk.width(ccap)))
-        code = self._call(q, tau, fo, N, ccap, out)
+        code = self._call(q, tau, fo, N, ccap, out, chunk=chunk)
         if code <= -3:
             return None
         if code != 0:
@@ -210,7 +219,7 @@ class GeneralSceneModel(RobotModel):
         wide[:, :out.shape[1]] = out
         pick = [a if a.shape[0] == 1 else np.ascontiguousarray(a[more]) for a in (q, tau, fo)]
         redo = np.zeros((more.size, pk.width(full)))
-        self._call(*pick, more.size, full, redo)
+        self._call(*pick, more.size, full, redo, chunk=chunk)
         redo[redo[:, 0] == 4, 0] = 5  # more than the solve takes
         wide[more] = redo
         return wide
@@ -268,7 +277,7 @@ def _one_sample(model: GeneralSceneModel):
     bq, bt, at = buf[:ns], buf[ns:ns + na], ns + na  # at: where the output row starts
     base = buf.ctypes.data
     args = SceneCall(model._pk, 1, base, 0, base + 8 * ns, 0, model._zero_f.ctypes.data, 0,
-                     ccap, ccap + pk.ground_rows, base + 8 * at, 0, 0, 0, 0)
+                     ccap, ccap + pk.ground_rows, base + 8 * at, 0, 0, 0, 0, 1)
     where, call = address(args), model.core.scene_forward_call
     lock = threading.Lock()
     acquire, release = lock.acquire, lock.release
