@@ -212,3 +212,30 @@ def test_warm_batch_against_references_and_cold_samples(grid, monkeypatch):
     monkeypatch.setenv("SNAKECG_THREADS", "2")
     two = model.forward(np.repeat(q[None], len(tau), axis=0), tau)
     np.testing.assert_array_equal(two._out, res._out)
+
+
+def test_room_of_the_first_pass_changes_no_answer(grid, monkeypatch):
+    """Where some samples find more contacts than the first pass has room for, the batch is
+    solved again whole, so each sample starts from the same neighbour as with room for all:
+    every number equals the run with room (forces of dependent faces included); and the
+    details' forces (solved again in one call) are the records' own. The batch alternates
+    the map's configuration (7 contacts) with one that leaves a peg (6 contacts)."""
+    import snakecg.scenes.model as scene_model
+
+    model, q, tau, _ = grid
+    apart = q.copy()
+    apart[3 + 5] -= 0.05
+    Q = np.array([q if (s // 3) % 2 == 0 else apart for s in range(300)])
+    T = tau[:300]
+    roomy = model.forward(Q, T)
+    assert sorted({len(c) for c in roomy.contacts}) == [6, 7]
+    assert np.any(roomy._raw["info"]["dependent"] == 2)  # path-dependent forces are met
+    monkeypatch.setattr(scene_model, "CONTACTS_FIRST", 6)  # the 7-contact samples out of room
+    tight = model.forward(Q, T)
+    for name in ("qdd", "a_obj", "norm_lambda", "norm_a_obj", "norm_qdd", "sr", "status"):
+        np.testing.assert_array_equal(getattr(tight, name), getattr(roomy, name), name)
+    assert tight.contacts == roomy.contacts and tight.ground == roomy.ground
+    lam = tight._raw["lam"]
+    for s in range(300):
+        forces = [c["force"] for c in tight.contacts[s]]
+        np.testing.assert_array_equal(lam[s][:len(forces)], forces)

@@ -198,8 +198,10 @@ class GeneralSceneModel(RobotModel):
 
     def _run(self, q, tau, fo, N, batched, chunk=WARM_CHUNK):
         """The engine's outputs of N samples (None where an input is not finite): a first
-        pass with room for a few contacts, the samples that found more solved again with room
-        for every pair's."""
+        pass with room for a few contacts; where some samples found more, the batch solved
+        again with room for every pair's (the whole batch where samples start from their
+        neighbours' pieces, so that the chain of starts is the one :meth:`details` meets;
+        only those samples where every sample starts cold)."""
         pk = self.packed
         ccap = min(CONTACTS_FIRST, pk.contacts_max)
         # zeros: the engine leaves the record room after a sample's contacts unwritten, and
@@ -215,7 +217,13 @@ class GeneralSceneModel(RobotModel):
         if more.size == 0:
             return out
         full = pk.contacts_max
-        wide = np.full((N, pk.width(full)), np.nan)
+        wide = np.zeros((N, pk.width(full)))
+        if chunk > 1:  # a sample out of room broke its neighbours' chain of starts
+            code = self._call(q, tau, fo, N, full, wide, chunk=chunk)
+            if code != 0:
+                raise MemoryError("the general scene's forward ran out of memory")
+            wide[wide[:, 0] == 4, 0] = 5  # more than the solve takes
+            return wide
         wide[:, :out.shape[1]] = out
         pick = [a if a.shape[0] == 1 else np.ascontiguousarray(a[more]) for a in (q, tau, fo)]
         redo = np.zeros((more.size, pk.width(full)))
@@ -226,7 +234,11 @@ class GeneralSceneModel(RobotModel):
 
     def details(self, out, inputs) -> dict:
         """The rows, forces, row accelerations and block states of every sample of a result
-        (``out``, its inputs), solved again with them kept: ``{"raw", "rows"}``."""
+        (``out``, its inputs), solved again with them kept: ``{"raw", "rows"}``. The batch
+        is solved again as one call, so each sample starts from the same neighbour's pieces
+        as in the forward and meets the same forces; a one-sample result taken from a batch
+        (:meth:`SceneResult.sample`) is solved from scratch, and where its forces are one
+        basic solution of a dependent face (flag 2) it may meet another one."""
         pk = self.packed
         N = out.shape[0]
         n = self.n_coordinates + 3 * self.scene.n_objects
