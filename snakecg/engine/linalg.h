@@ -594,4 +594,6 @@ static inline void sc_lower_solve(sc_int n, const double *L, double *x) {
   }
 }
 
+/* fmax(x, y) for x not NaN, inlined (libm's fmax is a call: its NaN rules for x) */
+static inline double sc_max(double x, double y) { return y > x ? y : x; }
 #endif

@@ -123,7 +123,7 @@ static sc_int piece(sc_problem *p, double rc, double *work, sc_int *iwork, doubl
     for (s = 0; s < ns; ++s) {
       const double *Ts = T + 2 * s;
       F[s] = Ts[0] * ws[2 * s] + Ts[1] * ws[2 * s + 1];
-      fn = fmax(fn, fabs(F[s]) / (sqrt(Ts[0] * Ts[0] + Ts[1] * Ts[1]) + 1e-300));
+      fn = sc_max(fn, fabs(F[s]) / (sqrt(Ts[0] * Ts[0] + Ts[1] * Ts[1]) + 1e-300));
     }
     if (it > 0 && fn <= 1e-15 * p->wscale) break; /* (the first step always: its rank) */
     for (s = 0; s < ns; ++s) {
@@ -135,7 +135,7 @@ static sc_int piece(sc_problem *p, double rc, double *work, sc_int *iwork, doubl
       }
       { /* the boundary's curvature: -lam . w, at least 0 */
         const double *l = p->lam + p->start[sl[s]];
-        J[s * ns + s] += fmax(0.0, -(l[0] * ws[2 * s] + l[1] * ws[2 * s + 1]));
+        J[s * ns + s] += sc_max(0.0, -(l[0] * ws[2 * s] + l[1] * ws[2 * s + 1]));
       }
       F[s] = -F[s];
     }
@@ -154,7 +154,7 @@ static sc_int piece(sc_problem *p, double rc, double *work, sc_int *iwork, doubl
     }
     for (s = 0; s < ns; ++s) {
       k = sl[s];
-      step = fmax(step, fabs(tstep * dx[s]) *
+      step = sc_max(step, fabs(tstep * dx[s]) *
                             (p->par[3 * k] + (p->kind[k] == K_SPLIT ? p->par[3 * k + 1] : 0.0)));
     }
     if (!(step > 1e-15 * p->fscale)) break;
@@ -166,10 +166,10 @@ static sc_int piece(sc_problem *p, double rc, double *work, sc_int *iwork, doubl
   }
   sc_update_w(p);
   fn = 0.0;
-  for (i = 0; i < h; ++i) fn = fmax(fn, fabs(p->w[hr[i]]));
+  for (i = 0; i < h; ++i) fn = sc_max(fn, fabs(p->w[hr[i]]));
   for (s = 0; s < ns; ++s) {
     const double *Ts = T + 2 * s, *w = p->w + p->start[sl[s]];
-    fn = fmax(fn, fabs(Ts[0] * w[0] + Ts[1] * w[1]) /
+    fn = sc_max(fn, fabs(Ts[0] * w[0] + Ts[1] * w[1]) /
                       (sqrt(Ts[0] * Ts[0] + Ts[1] * Ts[1]) + 1e-300));
   }
   *fn_out = fn;

@@ -140,24 +140,24 @@ static int kkt(sc_problem *p, double *res, int do_switch) {
     double e;
     switch (p->kind[k]) {
       case K_FREE:
-        du = fmax(du, fabs(w[0]) / W);
+        du = sc_max(du, fabs(w[0]) / W);
         break;
       case K_UNILATERAL:
-        pr = fmax(pr, fmax(0.0, -l[0]) / F);
-        du = fmax(du, fmax(0.0, -w[0]) / W);
-        co = fmax(co, fabs(l[0] * w[0]) / (F * W));
+        pr = sc_max(pr, sc_max(0.0, -l[0]) / F);
+        du = sc_max(du, sc_max(0.0, -w[0]) / W);
+        co = sc_max(co, fabs(l[0] * w[0]) / (F * W));
         if (do_switch) {
           if (p->state[k] == S_HELD && l[0] < -TOL_ACCEPT * F) { p->state[k] = S_ZERO; moved = 1; }
           else if (p->state[k] == S_ZERO && w[0] < -TOL_ACCEPT * W) { p->state[k] = S_HELD; moved = 1; }
         }
         break;
       case K_BOX:
-        pr = fmax(pr, fmax(0.0, fabs(l[0]) - q[0]) / F);
+        pr = sc_max(pr, sc_max(0.0, fabs(l[0]) - q[0]) / F);
         if (!(q[0] > 0)) break; /* the set {0}: its normal cone is every w */
         if (fabs(l[0]) < q[0]) e = fabs(w[0]);
-        else e = l[0] > 0 ? fmax(0.0, w[0]) : fmax(0.0, -w[0]);
-        du = fmax(du, e / W);
-        co = fmax(co, fabs(fmin(q[0] - fabs(l[0]), 0.0) * w[0]) / (F * W));
+        else e = l[0] > 0 ? sc_max(0.0, w[0]) : sc_max(0.0, -w[0]);
+        du = sc_max(du, e / W);
+        co = sc_max(co, fabs(fmin(q[0] - fabs(l[0]), 0.0) * w[0]) / (F * W));
         if (do_switch) {
           if (p->state[k] == S_HELD && fabs(l[0]) > q[0] * (1 + TOL_ACCEPT)) { p->state[k] = S_SLIDE; moved = 1; }
           else if (p->state[k] == S_SLIDE && e > TOL_ACCEPT * W) { p->state[k] = S_HELD; moved = 1; }
@@ -169,7 +169,7 @@ static int kkt(sc_problem *p, double *res, int do_switch) {
         if (zero) break;
         sc_block_P(p, k, l, P);
         phi = sqrt(P[0] * l[0] * l[0] + P[1] * l[1] * l[1]);
-        pr = fmax(pr, fmax(0.0, phi - 1.0));
+        pr = sc_max(pr, sc_max(0.0, phi - 1.0));
         if (p->state[k] == S_HELD || phi < 1.0 - 1e-12) {
           e = sqrt(w[0] * w[0] + w[1] * w[1]);
           if (do_switch && p->state[k] == S_HELD && phi > 1.0 + TOL_ACCEPT) {
@@ -185,13 +185,13 @@ static int kkt(sc_problem *p, double *res, int do_switch) {
           nrm[1] /= nn;
           wn = w[0] * nrm[0] + w[1] * nrm[1]; /* must be <= 0 */
           wt = w[1] * nrm[0] - w[0] * nrm[1]; /* must be 0 */
-          e = fmax(fmax(0.0, wn), fabs(wt));
+          e = sc_max(sc_max(0.0, wn), fabs(wt));
           if (do_switch && p->state[k] == S_SLIDE && wn > TOL_ACCEPT * W) {
             p->state[k] = S_HELD;
             moved = 1;
           }
         }
-        du = fmax(du, e / W);
+        du = sc_max(du, e / W);
       }
     }
   }
@@ -363,12 +363,15 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
         if (kind[k] == K_BOX) lam[r] = fmax(-par[3 * k], fmin(par[3 * k], lam[r]));
       }
   }
-  if (ok) {
-    int degenerate = defect > 0;
+  if (ok) { /* (w and res: the last pass's, of this lam, until lam moves) */
+    int degenerate = defect > 0, moved = 0;
     for (k = 0; k < nb && !degenerate; ++k)
       if (state[k] != S_HELD && sc_still(&p, k)) degenerate = 1;
-    if (degenerate) dep = sc_min_norm_face(&p, Z, rest);
-    kkt(&p, res, 0);
+    if (degenerate) {
+      dep = sc_min_norm_face(&p, Z, rest);
+      kkt(&p, res, 0);
+      moved = 1;
+    }
     /* a contact that the minimum-norm choice brought to zero force may open instead, which
      * frees the dependent forces further: tried one at a time, kept where the KKT conditions
      * still hold */
@@ -397,9 +400,14 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
       }
     }
     for (k = 0; k < nb; ++k) /* a contact's force below zero by rounding: zero */
-      if (kind[k] == K_UNILATERAL && lam[start[k]] < 0) lam[start[k]] = 0.0;
-    sc_update_w(&p);
-    kkt(&p, res, 0);
+      if (kind[k] == K_UNILATERAL && lam[start[k]] < 0) {
+        lam[start[k]] = 0.0;
+        moved = 1;
+      }
+    if (moved) {
+      sc_update_w(&p);
+      kkt(&p, res, 0);
+    }
   }
   info[INFO_STATUS] = ok ? ST_SOLVED : ST_NOT_CONVERGED;
   info[INFO_DEPENDENT] = (double)dep;
@@ -414,7 +422,7 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
       if (state[k] == S_SLIDE) {
         sc_int r = start[k], nk = sc_block_size(kind[k]);
         double e = 0.0;
-        for (i = 0; i < nk; ++i) e = fmax(e, fabs(w[r + i]));
+        for (i = 0; i < nk; ++i) e = sc_max(e, fabs(w[r + i]));
         if (e <= TOL_ACCEPT * p.wscale) state[k] = S_HELD;
       }
   for (k = 0; k < nb; ++k) {
@@ -423,9 +431,14 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
     state_out[k] = code;
   }
   /* eq. (18): a = M^-1 (f + A^T lam) = L^-T (g + Z lam) */
-  for (i = 0; i < n; ++i)
-    for (j = 0; j < m; ++j)
-      if (lam[j] != 0.0 && isfinite(lam[j])) a[i] += Z[i * m + j] * lam[j];
+  for (j = k = 0; j < m; ++j) /* (the rows with a force listed once: iw2 is free by now) */
+    if (lam[j] != 0.0 && isfinite(lam[j])) iw2[k++] = j;
+  for (i = 0; i < n; ++i) { /* (summed in a register: a and Z may alias for the compiler) */
+    const double *zi = Z + i * m;
+    double t = a[i];
+    for (j = 0; j < k; ++j) t += zi[iw2[j]] * lam[iw2[j]];
+    a[i] = t;
+  }
   for (i = n - 1; i >= 0; --i) {
     double t = a[i];
     for (k = i + 1; k < n; ++k) t -= L[k * n + i] * a[k];
