@@ -26,6 +26,8 @@ from snakecg.scenes import (GeneralScene, Ground, Obstacle, SceneObject, load_sc
 from snakecg.scenes.toml_reading import read_scene
 from snakecg.simulate import Serpenoid, SerpenoidPD, TorqueTable, serpenoid_controller
 
+from capsule_reference import point_segment
+
 ROOT = Path(__file__).resolve().parents[1]
 FIELDS = ("t", "q", "v", "q_obj", "v_obj", "tau", "min_gap", "n_contacts", "contact_impulse",
           "kinetic_energy", "work_tau", "friction_dissipation", "impact_loss", "contact_work")
@@ -251,12 +253,6 @@ def test_a_batch_of_discs_at_a_wall_has_one_inelastic_impact_each():
     assert (batch.deepest_overlap <= batch.tolerance).all()
 
 
-def _point_segment(p, a, b):
-    d = b - a
-    s = np.clip((p - a) @ d / (d @ d), 0.0, 1.0)
-    return float(np.hypot(*(a + s * d - p)))
-
-
 def test_a_batch_among_the_pegs_keeps_outside_them(pegs):
     """The runs' ends against NumPy distances of the capsule links and the pegs (the chain's
     kinematics written here), and the engine's deepest overlap within the tolerance."""
@@ -273,7 +269,7 @@ def test_a_batch_among_the_pegs_keeps_outside_them(pegs):
             th = th + (q[2 + i] if i else 0.0)
             front = rear + L[i] * np.array([np.cos(th), np.sin(th)])
             for ob in scene.obstacles:
-                gap = _point_segment(np.asarray(ob.center), rear, front) - ob.radius - r
+                gap = point_segment(np.asarray(ob.center), rear, front) - ob.radius - r
                 assert gap >= -batch.tolerance
             rear = front
 

@@ -17,60 +17,10 @@ from snakecg.scenes import GeneralScene, Ground, Obstacle, SceneObject, load_sce
 from snakecg.scenes.toml_reading import read_scene
 from snakecg.simulate import serpenoid_controller
 
+from capsule_reference import deepest_overlap, link_segments, segment_segment
+
 ROOT = Path(__file__).resolve().parents[1]
 PEGS_ROW = ROOT / "examples" / "scenes" / "pegs_row.toml"
-
-
-# independent geometry (NumPy, not snakecg.scenes.geometry) --------------------------------
-def _point_segment(p, a, b):
-    d = b - a
-    t = np.clip((p - a) @ d / (d @ d), 0.0, 1.0)
-    return float(np.hypot(*(a + t * d - p)))
-
-
-def _segment_segment(a0, a1, b0, b1):
-    # crossing segments have distance 0; else the least of the four end-to-segment distances
-    def orient(p, q, r):
-        return (q[0] - p[0]) * (r[1] - p[1]) - (q[1] - p[1]) * (r[0] - p[0])
-
-    if (orient(a0, a1, b0) * orient(a0, a1, b1) < 0 and
-            orient(b0, b1, a0) * orient(b0, b1, a1) < 0):
-        return 0.0
-    return min(_point_segment(a0, b0, b1), _point_segment(a1, b0, b1),
-               _point_segment(b0, a0, a1), _point_segment(b1, a0, a1))
-
-
-def _link_segments(robot, q):
-    """Rear and front ends of every link from the chain's own kinematics: q = (x, y, theta,
-    q1..) with (x, y) the COM of link 1 and theta its heading."""
-    L, c = np.asarray(robot.length), np.asarray(robot.com)
-    th = q[2]
-    rear = np.array([q[0], q[1]]) - c[0] * np.array([np.cos(th), np.sin(th)])
-    out = []
-    for i in range(len(L)):
-        if i > 0:
-            th += q[2 + i]
-        front = rear + L[i] * np.array([np.cos(th), np.sin(th)])
-        out.append((rear, front))
-        rear = front
-    return out
-
-
-def _worst_depth(scene, run):
-    """The largest penetration (m) of any link into a peg or a non-neighbour link over every
-    sample of the run (0 if none)."""
-    r = scene.radius
-    worst = 0.0
-    for q in run.q:
-        segs = _link_segments(scene.robot, q)
-        for ob in scene.obstacles:
-            cen = np.asarray(ob.center)
-            for a, b in segs:
-                worst = max(worst, ob.radius + r - _point_segment(cen, a, b))
-        for i in range(len(segs)):
-            for j in range(i + 2, len(segs)):
-                worst = max(worst, 2 * r - _segment_segment(*segs[i], *segs[j]))
-    return worst
 
 
 def _laws(run):
@@ -269,7 +219,7 @@ def test_pegs_row_obstacle_aided_locomotion():
     progress = {}
     for name, (sc, model, run) in runs.items():
         assert run.status == "completed", run.message
-        assert _worst_depth(sc, run) <= run.tolerance * (1 + 1e-6)
+        assert deepest_overlap(sc, run.q) <= run.tolerance * (1 + 1e-6)
         assert np.min(run.min_gap) >= -run.tolerance
         _laws(run)
         com = model.com(run.q)
@@ -290,7 +240,7 @@ def test_self_contact_is_a_row_and_nothing_crosses():
     run = model.simulate(q0, 0.6, tau=np.array([0.6, 0.6, 0.6, 0.3]), dt=1e-3)
     assert run.status == "completed", run.message
     assert run.n_contacts.max() >= 1
-    assert _worst_depth(scene, run) <= run.tolerance * (1 + 1e-6)
+    assert deepest_overlap(scene, run.q) <= run.tolerance * (1 + 1e-6)
     _laws(run)
 
 
@@ -391,7 +341,7 @@ def _segment_box_distance(a0, a1, corners):
 
     if inside(a0) or inside(a1):
         return 0.0
-    return min(_segment_segment(a0, a1, corners[k], corners[(k + 1) % 4]) for k in range(4))
+    return min(segment_segment(a0, a1, corners[k], corners[(k + 1) % 4]) for k in range(4))
 
 
 @pytest.mark.parametrize("ground", [Ground(model="anisotropic", mu_forward=0.05,
@@ -417,7 +367,7 @@ def test_pushing_a_box_on_every_ground_stays_outside_it(ground):
     worst = 0.0
     for q, qo in zip(run.q, run.q_obj):
         corners = _box_corners(qo[0], box.size)
-        for a, b in _link_segments(robot, q):
+        for a, b in link_segments(robot, q):
             worst = max(worst, scene.radius - _segment_box_distance(a, b, corners))
     assert worst <= run.tolerance * (1 + 1e-6)
     _laws(run)

@@ -34,6 +34,8 @@ from snakecg.scenes import GeneralScene, Ground, Obstacle, SceneObject, load_sce
 from snakecg.scenes.toml_reading import read_scene
 from snakecg.simulate import serpenoid_controller
 
+from capsule_reference import deepest_overlap
+
 ROOT = Path(__file__).resolve().parents[1]
 COLD = "SNAKECG_SCENE_COLD_START"
 FIELDS = ("t", "q", "v", "q_obj", "v_obj", "kinetic_energy", "work_tau",
@@ -62,52 +64,6 @@ def _same(cold, warm, fields=FIELDS, atol=1e-9):
         assert a.bodies == b.bodies and a.t == pytest.approx(b.t, abs=1e-12)
         np.testing.assert_allclose(a.impulses, b.impulses, rtol=1e-9, atol=1e-12)
         assert max(b.certificate.values()) <= 1e-8
-
-
-# independent geometry (NumPy) ----------------------------------------------------------------
-def _point_segment(p, a, b):
-    d = b - a
-    s = np.clip((p - a) @ d / (d @ d), 0.0, 1.0)
-    return float(np.hypot(*(a + s * d - p)))
-
-
-def _segment_segment(a0, a1, b0, b1):
-    def orient(p, q, r):
-        return (q[0] - p[0]) * (r[1] - p[1]) - (q[1] - p[1]) * (r[0] - p[0])
-
-    if (orient(a0, a1, b0) * orient(a0, a1, b1) < 0 and
-            orient(b0, b1, a0) * orient(b0, b1, a1) < 0):
-        return 0.0
-    return min(_point_segment(a0, b0, b1), _point_segment(a1, b0, b1),
-               _point_segment(b0, a0, a1), _point_segment(b1, a0, a1))
-
-
-def _links(robot, q):
-    """Rear and front ends of every link: q = (x, y, theta, q1..), (x, y) link 1's COM."""
-    L, c = np.asarray(robot.length), np.asarray(robot.com)
-    th = q[2]
-    rear = np.array([q[0], q[1]]) - c[0] * np.array([np.cos(th), np.sin(th)])
-    out = []
-    for i in range(len(L)):
-        th = th + (q[2 + i] if i else 0.0)
-        front = rear + L[i] * np.array([np.cos(th), np.sin(th)])
-        out.append((rear, front))
-        rear = front
-    return out
-
-
-def _deepest(scene, run):
-    """The largest overlap (m) of a link with a peg or a non-neighbouring link, any sample."""
-    r, worst = scene.radius, 0.0
-    for q in run.q:
-        segs = _links(scene.robot, q)
-        for ob in scene.obstacles:
-            for a, b in segs:
-                worst = max(worst, ob.radius + r - _point_segment(np.asarray(ob.center), a, b))
-        for i in range(len(segs)):
-            for j in range(i + 2, len(segs)):
-                worst = max(worst, 2 * r - _segment_segment(*segs[i], *segs[j]))
-    return worst
 
 
 def _gait(model, tau_max):
@@ -141,7 +97,7 @@ def test_the_pegs_run_is_the_same_from_the_last_steps_pieces(pegs, monkeypatch, 
         np.testing.assert_allclose(warm.contact_impulse, cold.contact_impulse, rtol=0,
                                    atol=1e-9)
     for run in (cold, warm):
-        assert _deepest(scene, run) <= run.tolerance
+        assert deepest_overlap(scene, run.q) <= run.tolerance
         gain = np.asarray(run.kinetic_energy) - run.kinetic_energy[0]
         budget = (np.asarray(run.work_tau) - run.friction_dissipation - run.impact_loss +
                   run.contact_work)
