@@ -72,27 +72,16 @@ def _plate_model(model):
 
 
 def _deepest(model, check, run):
-    """``check.deepest`` at the run's samples: the compiled check of the paper's model
-    (``core_contact_depth``, ``snakecg/engine/geometry.c``) where it has one, else NumPy's."""
-    fn = getattr(getattr(model, "core", None), "contact_depth", None)
-    if fn is None:
-        return check.deepest(run.q, run.q_obj[:, 0])
-    derived = model.data().derived
-    got = derived.get("scenes.plate_check")  # the check's shapes, read only: made once
-    if got is None:
-        from ..engine.binding import Geometry, address
+    """``check.deepest`` at the run's samples, by the paper model's own contact check of a
+    run (:class:`snakecg.simulate.contact_check.RunCheck`: compiled where the model is)."""
+    from ..simulate.contact_check import RunCheck
+    from ..simulate.dynamics import N_WORK
 
-        robot = model.scene.robot
-        length = np.ascontiguousarray(robot.length, dtype=float)
-        g = Geometry(mode=0, tol=check.tolerance, half=check.half, radius=check.radius,
-                     length=length.ctypes.data, com1=float(robot.com[0]))
-        got = derived["scenes.plate_check"] = (address(g), g, length)
     ns = run.q.shape[1]
-    Y = np.zeros((len(run.t), 2 * (ns + 3) + 3))
+    rc = RunCheck(model, "report", ns, 2 * (ns + 3) + N_WORK, shape=check)  # the state y
+    Y = np.zeros((len(run.t), rc.ny))
     Y[:, :ns], Y[:, ns:ns + 3] = run.q, run.q_obj[:, 0]
-    depth, pair = np.empty(len(Y)), np.empty(len(Y))
-    fn(got[0], len(Y), Y.ctypes.data, depth.ctypes.data, pair.ctypes.data)
-    return depth, pair.astype(np.intp)
+    return rc.deepest(Y)
 
 
 def _checked(model, run):

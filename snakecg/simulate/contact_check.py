@@ -59,11 +59,15 @@ class RunCheck:
 
     ``struct``: the :class:`~snakecg.engine.segment.Geometry` the compiled segments read and
     fill (its address ``address``); the first violation is kept there, by C or by Python.
+    ``shape``: another :class:`~snakecg.geometry.ContactCheck` of the model's scene (its
+    tolerance, segments instead of capsules) in place of the model's own.
     """
 
-    def __init__(self, model, mode: str, ns: int, ny: int):
+    def __init__(self, model, mode: str, ns: int, ny: int, shape: ContactCheck | None = None):
         self.mode = mode
         self.shape, self._length, com1 = _shape_of(model)
+        if shape is not None:
+            self.shape = shape
         self.tolerance = self.shape.tolerance
         self.ns, self.ny = ns, ny
         # the state of the first violation; then one state checked (_one), its depth and pair
