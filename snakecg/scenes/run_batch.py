@@ -16,8 +16,8 @@ import numpy as np
 
 from ..engine.threads import pool, threads
 from ..errors import InputError
-from .packing import scene_size
-from .stepping import STEP_DONE, _check_args, _Runner, _Stepper, ending, engine_law
+from .stepping import (STEP_DONE, _check_args, _Runner, _Stepper, contact_tolerance, ending,
+                       engine_law)
 
 __all__ = ["SceneBatch", "simulate_scene_batch"]
 
@@ -146,7 +146,7 @@ def simulate_scene_batch(model, q0, duration, *, v0=None, tau=None, dt=1e-3, q_o
     # the batch's own arguments, checked as a single run's
     _, _, _, _, fo = _check_args(model, Q[0], None, duration, dt, None, None, f_obj,
                                  tolerance)
-    tol = 1e-5 * scene_size(model.scene) if tolerance is None else float(tolerance)
+    tol = contact_tolerance(model.scene, tolerance)
     status = np.full(runs, "", dtype=object)
     message = np.full(runs, "", dtype=object)
     t_end, steps, impacts = np.zeros(runs), np.zeros(runs, dtype=int), np.zeros(runs, dtype=int)
@@ -157,12 +157,10 @@ def simulate_scene_batch(model, q0, duration, *, v0=None, tau=None, dt=1e-3, q_o
     for i in range(runs):
         name, params = laws[i if len(laws) > 1 else 0]
         st = _Stepper(model, tol, fo.reshape(-1))
-        qo = placed[i]
-        st.x[:ns], st.x[ns:] = Q[i], np.asarray(qo).reshape(-1)
-        st.V[:ns] = V[i] if V is not None else 0.0
-        st.V[ns:] = VO[i].reshape(-1) if VO is not None else 0.0
+        code = st.begin(Q[i], placed[i], None if V is None else V[i],
+                        None if VO is None else VO[i])
         q_obj_start[i] = st.x[ns:].reshape(no, 3)
-        if st.call(0.0) != STEP_DONE:
+        if code != STEP_DONE:
             status[i], message[i] = "penetration", st.engine.refusal(st.out)
             q_end[i], q_obj_end[i] = Q[i], q_obj_start[i]
             deepest[i] = np.nan if st.out[0] else 0.0

@@ -145,6 +145,15 @@ class _Stepper:
         self._address = address(self.args)
         self._step = core.scene_step
 
+    def begin(self, q, qo, v, vo) -> int:
+        """The run's start: the state (``qo``, ``vo``: ``(n_objects, 3)`` or flat; ``v``,
+        ``vo`` None: at rest) and the rows found there (:meth:`call` with ``h = 0``)."""
+        ns = self.ns
+        self.x[:ns], self.x[ns:] = q, np.asarray(qo).reshape(-1)
+        self.V[:ns] = 0.0 if v is None else v
+        self.V[ns:] = 0.0 if vo is None else np.asarray(vo).reshape(-1)
+        return self.call(0.0)
+
     def call(self, h: float) -> int:
         """One step of length ``h`` from ``x``, ``V`` with the torques in ``tau`` (``h = 0``:
         the rows at ``x`` alone): its status (``STEP_*``, or the refusal of the rows at the
@@ -164,6 +173,12 @@ class _Stepper:
             return read_rows(self.model, self.out1, self.A1, self.par1, self.kind1,
                              self.start1)
         return read_rows(self.model, self.out, self.A, self.par, self.kind, self.start)
+
+
+def contact_tolerance(scene, tolerance) -> float:
+    """A run's contact tolerance (m): ``tolerance``, by default ``1e-5`` of the scene's size
+    (:func:`~snakecg.scenes.packing.scene_size`)."""
+    return 1e-5 * scene_size(scene) if tolerance is None else float(tolerance)
 
 
 def _check_args(model, q0, v0, duration, dt, q_obj0, v_obj0, f_obj, tolerance):
@@ -295,7 +310,7 @@ def simulate_scene(model, q0, duration, *, v0=None, tau=None, dt=1e-3, q_obj0=No
         raise InputError(f"simulate: output_every must be an integer >= 1, got "
                          f"{output_every!r:.60}")
     scene = model.scene
-    tol = 1e-5 * scene_size(scene) if tolerance is None else float(tolerance)
+    tol = contact_tolerance(scene, tolerance)
     na = model.n_joints
     kind, law = torque_law(np.zeros(na) if tau is None else tau, na)
     name, params = engine_law(kind, law, na)
@@ -312,10 +327,9 @@ def simulate_scene(model, q0, duration, *, v0=None, tau=None, dt=1e-3, q_obj0=No
                        st.V[ns:].reshape(-1, 3).copy())
         return check_tau(law(t, s), na, t)
 
-    st.x[:ns], st.x[ns:], st.V[:ns], st.V[ns:] = q, qo.reshape(-1), v, vo.reshape(-1)
     acc = st.acc
     rec.follow(acc)
-    if st.call(0.0) != STEP_DONE:
+    if st.begin(q, qo, v, vo) != STEP_DONE:
         return rec.finish("penetration", 0.0, st.engine.refusal(st.out))
     cap = int(min(RECORD_ROWS, duration / dt / output_every + 4))
     run = _Runner(st, duration, dt, name, params, int(output_every), cap)
