@@ -1,0 +1,327 @@
+"""Coulomb friction at a general scene's contacts (``mu_contact``), held against references
+written apart from the engine (``snakecg/engine/scene_friction.c``):
+
+* a dense NumPy enumeration of every contact's Coulomb state (open, stick, slip either way)
+  and every other block's piece, each piece's linear equations in (a, lam) solved and kept
+  where all of Coulomb's conditions hold, on random small scenes (pegs and objects touching
+  links, polyhedral ground); the rows come from the geometry reference
+  (tests/scenes_rows_reference.py), the tangent rows from its contact points here;
+* closed forms: a box pushed against a wall;
+* the frictionless answer where no contact has friction, bit for bit.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import itertools
+import json
+
+import numpy as np
+import pytest
+
+import snakecg
+from snakecg.errors import InputError
+from snakecg.scenes import GeneralScene, Ground, Obstacle, SceneObject
+from snakecg.scenes.description import pair_mu
+from snakecg.scenes.toml_reading import scene_from_data
+
+from scenes_reference import POLYHEDRAL, small_scenes
+from scenes_rows_reference import _point_jacobian, rows_of
+from snakecg.scenes.solve import BOX, FREE, UNILATERAL
+
+
+# ---- the reference ------------------------------------------------------------------------
+def _body_mu(scene, body):
+    kind, i = body
+    if kind == "link":
+        return None
+    return (scene.objects if kind == "object" else scene.obstacles)[i].mu_contact
+
+
+def reference_problem(model, q, tau, f_obj=None):
+    """M, f, the rows A (normal rows, the ground's, then one tangent row per frictional
+    contact), the blocks and the contacts, built from the geometry reference."""
+    scene = model.scene
+    P, J = model.link_poses(q), model.link_jacobians(q)
+    rows, obj_poses = rows_of(scene, model.masses, P, J)
+    ns, no = model.n_coordinates, scene.n_objects
+    n = ns + 3 * no
+    M = np.zeros((n, n))
+    M[:ns, :ns] = model.mass_matrix(q)
+    for j, o in enumerate(scene.objects):
+        M[ns + 3 * j:ns + 3 * j + 3, ns + 3 * j:ns + 3 * j + 3] = np.diag(
+            [o.mass, o.mass, o.plate_inertia])
+    f = np.zeros(n)
+    f[3:ns] = tau
+    if f_obj is not None:
+        f[ns:] = np.ravel(f_obj)
+    A = [r for r in rows.A]
+    blocks = []
+    for kind, start, par, label in zip(rows.kind, rows.start, rows.par, rows.labels):
+        blocks.append({"kind": kind, "row": start, "p": par[0], "tangent": None, "mu": 0.0})
+    contacts = []
+    for c_i, c in enumerate(rows.contacts):
+        mu = pair_mu(scene.mu_contact, _body_mu(scene, c.a), _body_mu(scene, c.b))
+        contacts.append({"bodies": (c.a, c.b), "point": (c.point_a + c.point_b) / 2,
+                         "normal": c.normal, "row": c.row, "tangent": None, "mu": mu})
+        if mu > 0:
+            t = np.array([-c.normal[1], c.normal[0]])
+            Ja = _point_jacobian(c.a, c.point_a, J, P, obj_poses, ns, n)
+            Jb = _point_jacobian(c.b, c.point_b, J, P, obj_poses, ns, n)
+            A.append(t @ (Jb - Ja))
+            blk = next(b for b in blocks if b["row"] == c.row and b["kind"] == UNILATERAL)
+            blk["tangent"], blk["mu"] = len(A) - 1, mu
+            contacts[-1]["tangent"] = len(A) - 1
+    return {"M": M, "f": f, "A": np.array(A).reshape(len(A), n), "blocks": blocks,
+            "contacts": contacts}
+
+
+def coulomb_solutions(p, tol=1e-9):
+    """Every solution of Coulomb's conditions by enumeration of the pieces: each contact
+    (open, stick, slip with w_t > 0, slip with w_t < 0; frictionless: held, open), bounded
+    wheel (stick, force +p, force -p), ideal wheel (held). Each piece: M a - A^T lam = f and
+    one equation per row, solved densely in (a, lam); kept where every inequality holds
+    within tol of the scales. Returns (solutions [(a, lam)], singular pieces met)."""
+    M, f, A = p["M"], p["f"], p["A"]
+    m, n = A.shape
+    a_free = np.linalg.solve(M, f)
+    W = max(1e-12, np.abs(A @ a_free).max() if m else 0.0)
+    options = []
+    for b in p["blocks"]:
+        if b["kind"] == FREE:
+            options.append(["held"])
+        elif b["kind"] == UNILATERAL:
+            options.append(["open", "stick", "slip+", "slip-"] if b["tangent"] is not None
+                           else ["held", "open"])
+        elif b["kind"] == BOX:
+            options.append(["stick", "+", "-"] if b["p"] > 0 else ["zero"])
+        else:
+            raise ValueError("polyhedral blocks only")
+    sols, singular = [], 0
+    for combo in itertools.product(*options):
+        K = np.zeros((n + m, n + m))
+        rhs = np.zeros(n + m)
+        K[:n, :n], K[:n, n:], rhs[:n] = M, -A.T, f
+
+        def w_zero(r):
+            K[n + r, :n] = A[r]
+
+        def force(r, value=0.0, other=None, coef=0.0):
+            K[n + r, n + r] = 1.0
+            if other is not None:
+                K[n + r, n + other] = coef
+            rhs[n + r] = value
+
+        for b, s in zip(p["blocks"], combo):
+            r, t = b["row"], b["tangent"]
+            if s in ("held", "stick"):
+                w_zero(r)
+            elif s in ("open", "zero"):
+                force(r)
+            elif s in ("+", "-"):
+                force(r, b["p"] if s == "+" else -b["p"])
+            else:  # slip: normal held
+                w_zero(r)
+            if t is None:
+                continue
+            if s == "open":
+                force(t)
+            elif s == "stick":
+                w_zero(t)
+            else:  # lam_t = -mu lam_n sign(w_t)
+                force(t, 0.0, r, b["mu"] if s == "slip+" else -b["mu"])
+        if np.linalg.matrix_rank(K, tol=1e-10 * np.abs(K).max()) < n + m:
+            singular += 1
+            continue
+        x = np.linalg.solve(K, rhs)
+        a, lam = x[:n], x[n:]
+        w = A @ a
+        F = max(1e-12, np.abs(lam).max())
+        ok = True
+        for b, s in zip(p["blocks"], combo):
+            r, t = b["row"], b["tangent"]
+            if b["kind"] == UNILATERAL:
+                ok &= lam[r] >= -tol * F and w[r] >= -tol * W
+                if t is not None and s == "stick":
+                    ok &= abs(lam[t]) <= b["mu"] * lam[r] + tol * F
+                if t is not None and s == "slip+":
+                    ok &= w[t] >= -tol * W
+                if t is not None and s == "slip-":
+                    ok &= w[t] <= tol * W
+            elif b["kind"] == BOX and s == "stick":
+                ok &= abs(lam[r]) <= b["p"] * (1 + tol) + tol * F
+            elif s == "+":
+                ok &= w[r] <= tol * W
+            elif s == "-":
+                ok &= w[r] >= -tol * W
+        if ok and not any(np.abs(a - a2).max() <= 1e-7 * max(1.0, np.abs(a).max())
+                          for a2, _ in sols):
+            sols.append((a, lam))
+    return sols, singular
+
+
+def engine_forces(res, p):
+    """The engine's contact forces as the reference's lam (matched by bodies and point)."""
+    lam = np.full(p["A"].shape[0], np.nan)
+    for c in res.contacts:
+        for rc in p["contacts"]:
+            same = (c["bodies"][0].split(" (")[0] == f"{rc['bodies'][0][0]} "
+                    f"{rc['bodies'][0][1] + 1}" and np.allclose(c["point"], rc["point"],
+                                                               atol=1e-9))
+            if same:
+                lam[rc["row"]] = c["force"]
+                if rc["tangent"] is not None:
+                    lam[rc["tangent"]] = c["friction"]
+    return lam
+
+
+# ---- random small scenes against the enumeration -------------------------------------------
+@pytest.fixture(scope="module")
+def frictional_samples():
+    rng = np.random.default_rng(20261205)
+    out = []
+    for model0, q, _ in small_scenes(rng, 45, POLYHEDRAL, object_friction=False):
+        if len(model0.scene.objects) + len(model0.scene.obstacles) == 0:
+            continue
+        for _ in range(8):
+            mu = float(rng.choice([0.1, 0.3, 0.6, 1.0, 2.0]))
+            scene = dataclasses.replace(model0.scene, mu_contact=mu)
+            model = snakecg.load(scene)
+            tau = rng.normal(size=model.n_joints) * float(rng.choice([0.1, 1.0, 5.0]))
+            out.append((model, q, tau))
+    return out
+
+
+def test_random_scenes_match_the_enumeration(frictional_samples):
+    stats = {"unique": 0, "several": 0, "not_certified": 0, "checked": 0}
+    for model, q, tau in frictional_samples:  # (the stats: printed with -s)
+        res = model.forward(q, tau)
+        p = reference_problem(model, q, tau)
+        sols, singular = coulomb_solutions(p)
+        if res.status != 0:  # not settled: only where no single solution is known
+            assert res.status == 7 and not (len(sols) == 1 and singular == 0), \
+                (res.reason, len(sols), singular)
+            continue
+        stats["checked"] += 1
+        stats[res.uniqueness] += 1
+        a = np.r_[res.qdd, np.ravel(res.a_obj)]
+        scale = max(1.0, np.abs(a).max())
+        match = [s for s in sols if np.abs(s[0] - a).max() <= 1e-9 * scale]
+        if not match:  # a solution on a singular piece: Coulomb's conditions densely
+            assert singular > 0, (a, [s[0] for s in sols])
+            continue
+        lam = engine_forces(res, p)
+        F = max(1.0, np.abs(match[0][1]).max())
+        known = ~np.isnan(lam)  # the contacts' rows (the ground's: through a)
+        assert known.sum() == 2 * len(res.contacts) - sum(c["mu"] == 0 for c in res.contacts)
+        if not res.dependent:
+            np.testing.assert_allclose(lam[known], match[0][1][known], atol=1e-9 * F, rtol=0)
+        if len(sols) >= 2:
+            assert res.uniqueness != "unique"
+            assert abs(res.solutions) >= 2
+        if res.uniqueness == "unique" and singular == 0:
+            assert len(sols) == 1
+    print(stats)
+    assert stats["checked"] >= 300, stats
+    assert stats["unique"] > 0
+
+
+# ---- closed forms ------------------------------------------------------------------------
+def _box_on_wall(mu, *, own=None):
+    robot = snakecg.Robot(joints=1)
+    # (wide and low: pushed at its COM it slides without tipping while mu < 0.2 / 0.05)
+    box = SceneObject(shape="box", size=(0.4, 0.1), mass=2.0, pose=(1.0, -0.45, 0.0),
+                      mu_contact=own)
+    wall = Obstacle(shape="wall", point=(0.0, -0.5), normal=(0.0, 1.0))
+    return snakecg.load(GeneralScene(robot, ground=Ground(model="frictionless"),
+                                     objects=(box,), obstacles=(wall,), mu_contact=mu))
+
+
+@pytest.mark.parametrize("mu", [0.2, 0.5, 1.3])
+def test_box_pushed_against_a_wall_sticks_or_slides_as_coulomb_says(mu):
+    """A box of mass m pressed on a wall by f_n with a tangential push f_t sticks iff |f_t|
+    <= mu f_n, else slides with a_t = sign(f_t) (|f_t| - mu f_n) / m."""
+    model = _box_on_wall(mu)
+    m, fn = 2.0, 5.0
+    for ft in np.linspace(-3 * mu * fn, 3 * mu * fn, 13):
+        res = model.forward(np.zeros(4), np.zeros(1), f_obj=[[ft, -fn, 0.0]])
+        assert res.status == 0 and res.uniqueness == "unique"
+        at = 0.0 if abs(ft) <= mu * fn else np.sign(ft) * (abs(ft) - mu * fn) / m
+        np.testing.assert_allclose(res.a_obj[0], [at, 0.0, 0.0], atol=1e-12)
+        # the box is the first body: the friction on it is minus the second's
+        fric = -sum(c["friction"] * c["tangent"][0] for c in res.contacts)
+        np.testing.assert_allclose(fric, -ft if abs(ft) <= mu * fn else -np.sign(ft) * mu * fn,
+                                   atol=1e-12)
+        states = {c["friction_state"] for c in res.contacts}
+        assert states == ({"stick"} if abs(ft) < mu * fn else {"slip"}) or abs(
+            abs(ft) - mu * fn) < 1e-9
+
+
+def test_a_body_s_own_coefficient_overrides_the_scene_s():
+    """The pair's coefficient is the larger of the bodies' own where one is given."""
+    assert pair_mu(0.2, None, None) == 0.2
+    assert pair_mu(0.2, 0.0, None) == 0.0
+    assert pair_mu(0.0, 0.4, 0.7) == 0.7
+    model = _box_on_wall(0.0, own=0.5)
+    res = model.forward(np.zeros(4), np.zeros(1), f_obj=[[-3.0, -5.0, 0.0]])
+    np.testing.assert_allclose(res.a_obj[0][0], -(3.0 - 2.5) / 2.0, atol=1e-12)
+    assert {c["mu"] for c in res.contacts} == {0.5}
+
+
+def test_without_frictional_contacts_the_answer_is_the_frictionless_one_bit_for_bit():
+    """A scene whose only frictional body touches nothing at this sample answers as the same
+    scene without friction, bit for bit."""
+    rng = np.random.default_rng(7)
+    for model0, q, _ in small_scenes(rng, 6, POLYHEDRAL, object_friction=False):
+        far = Obstacle(shape="peg", center=(50.0, 50.0), radius=0.1, mu_contact=0.8)
+        fric = snakecg.load(dataclasses.replace(
+            model0.scene, obstacles=model0.scene.obstacles + (far,)))
+        base = snakecg.load(dataclasses.replace(
+            model0.scene, obstacles=model0.scene.obstacles + (dataclasses.replace(
+                far, mu_contact=None),)))
+        assert fric.packed.friction and not base.packed.friction
+        tau = rng.normal(size=model0.n_joints)
+        r1, r0 = fric.forward(q, tau), base.forward(q, tau)
+        assert np.array_equal(r1.qdd, r0.qdd) and np.array_equal(r1.a_obj, r0.a_obj)
+        assert [c["force"] for c in r1.contacts] == [c["force"] for c in r0.contacts]
+        assert r1.norm_lambda == r0.norm_lambda and r1.uniqueness == "unique"
+
+
+def test_json_has_the_friction_fields():
+    res = _box_on_wall(0.5).forward(np.zeros(4), np.zeros(1), f_obj=[[-3.0, -5.0, 0.0]])
+    d = json.loads(json.dumps(res.to_dict(), allow_nan=False))
+    assert d["uniqueness"] == "unique" and d["solutions"] == 1
+    c = d["contacts"][0]
+    assert c["friction_state"] == "slip" and c["mu"] == 0.5 and len(c["tangent"]) == 2
+
+
+# ---- input --------------------------------------------------------------------------------
+def _table(**contacts):
+    return {"robot": {"joints": 1}, "contacts": contacts,
+            "obstacle": [{"shape": "peg", "center": [0.0, 1.0], "radius": 0.1,
+                          "mu_contact": 0.4}]}
+
+
+def test_toml_reads_the_contact_coefficients():
+    scene = scene_from_data(_table(mu=0.25))
+    assert scene.mu_contact == 0.25 and scene.obstacles[0].mu_contact == 0.4
+    assert scene_from_data({"robot": {"joints": 1}}).mu_contact == 0.0
+
+
+@pytest.mark.parametrize("bad, match", [
+    (_table(mu=-0.1), r"\[contacts\] mu must be a finite number >= 0"),
+    (_table(mu="high"), r"\[contacts\] mu must be a finite number >= 0"),
+    ({**_table(), "obstacle": [{"shape": "peg", "center": [0, 1], "radius": 0.1,
+                                "mu_contact": -1}]}, r"obstacle\[1\]\.mu_contact must be"),
+])
+def test_toml_refuses_bad_coefficients_naming_the_key(bad, match):
+    with pytest.raises(InputError, match=match):
+        scene_from_data(bad)
+
+
+def test_python_refuses_a_bad_scene_coefficient():
+    with pytest.raises(InputError, match="mu_contact must be a finite number >= 0"):
+        GeneralScene(snakecg.Robot(joints=1), mu_contact=float("nan"))
+    with pytest.raises(InputError, match=r"object\[1\]\.mu_contact"):
+        GeneralScene(snakecg.Robot(joints=1), objects=(SceneObject(
+            shape="disc", radius=0.1, pose=(0, 1, 0), mu_contact=-2.0),))
