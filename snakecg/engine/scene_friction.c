@@ -123,6 +123,7 @@ static void piece_equations(sc_enum *e) {
   const sc_int m = e->m, mt = m + e->nt;
   sc_int k, r, u;
   memset(e->K, 0, sizeof(double) * (size_t)(mt * mt));
+  for (u = m; u < mt; ++u) e->K[u * mt + u] = 1.0, e->x[u] = 0.0; /* no friction: 0 */
   for (k = 0; k < e->nb; ++k) {
     const sc_int kd = e->kind[k], dg = e->digit[k], t = e->tc[k];
     const double p = e->par[3 * k];
@@ -137,11 +138,8 @@ static void piece_equations(sc_enum *e) {
     } else {
       memcpy(e->K + r * mt, e->G + r * mt, sizeof(double) * (size_t)mt);
     }
-    if (u < 0) continue;
-    e->x[u] = 0.0;
-    if (dg == 0) {
-      e->K[u * mt + u] = 1.0; /* open: no tangent force */
-    } else if (dg == 1) { /* stick */
+    if (u < 0 || dg == 0) continue; /* (open: no tangent force) */
+    if (dg == 1) { /* stick */
       e->x[u] = -e->b[u];
       memcpy(e->K + u * mt, e->G + u * mt, sizeof(double) * (size_t)mt);
     } else { /* slip */
@@ -337,22 +335,24 @@ int sc_friction_solve(sc_int n, sc_int m, sc_int nb, sc_int nc, const double *M,
   if (!T) /* no contact friction in the scene: the convex solve alone */
     return SNAKECG_EXPORT(core_scene_solve_s)(n, m, nb, M, f, A, c, kind, start, par, sweeps,
                                               from, lam, a, w, st, info);
-  for (k = 0; k < nc; ++k) { /* the tangent rows: BOX blocks after the ground's */
+  for (k = 0; k < nc; ++k) { /* contact k's tangent row m + k: a BOX block after the ground's
+    (of size 0 where the pair has no friction) */
     rec[CR_W * k + REC_FT] = rec[CR_W * k + REC_ST] = 0.0;
-    if (!(rec[CR_W * k + REC_MU] > 0)) continue;
-    memcpy(A + (m + nt) * n, T + k * n, sizeof(double) * (size_t)n);
-    kind[nb + nt] = K_BOX;
-    start[nb + nt] = m + nt;
-    par[3 * (nb + nt)] = par[3 * (nb + nt) + 1] = par[3 * (nb + nt) + 2] = 0.0;
-    if (c) c[m + nt] = 0.0;
-    ++nt;
+    if (T + k * n != A + (m + k) * n) /* (the forward's; a step's rows have them in place) */
+      memcpy(A + (m + k) * n, T + k * n, sizeof(double) * (size_t)n);
+    kind[nb + k] = K_BOX;
+    start[nb + k] = m + k;
+    par[3 * (nb + k)] = par[3 * (nb + k) + 1] = par[3 * (nb + k) + 2] = 0.0;
+    lam[m + k] = 0.0;
+    if (c) c[m + k] = 0.0;
+    nt += rec[CR_W * k + REC_MU] > 0;
   }
   if (nt == 0) { /* no frictional contact here: convex, the accelerations unique */
     *solutions = 1.0;
     return SNAKECG_EXPORT(core_scene_solve_s)(n, m, nb, M, f, A, c, kind, start, par, sweeps,
-                                              NULL, lam, a, w, st, info);
+                                              from, lam, a, w, st, info);
   }
-  mt = m + nt, nbt = nb + nt;
+  nt = nc, mt = m + nt, nbt = nb + nt;
   d = (double *)malloc(sizeof(double) * (size_t)(4 * nt + 4 * nbt + n * n + 2 * n * mt +
                                                  4 * mt * mt + 10 * mt + 4 * n + 12 * nbt +
                                                  SOL_MAX * n + nt * nt + 16));
@@ -371,11 +371,10 @@ int sc_friction_solve(sc_int n, sc_int m, sc_int nb, sc_int nc, const double *M,
   tc = iw, rn = tc + nbt, piv = rn + nt, slide = piv + mt;
   e.opt = slide + nt, e.digit = e.opt + nbt;
   for (k = 0; k < nbt; ++k) tc[k] = -1;
-  for (k = j = 0; k < nc; ++k)
-    if (rec[CR_W * k + REC_MU] > 0) {
-      tc[k] = j, rn[j] = start[k], mu[j] = rec[CR_W * k + REC_MU], s[j] = 0.0;
-      ++j;
-    }
+  for (k = 0; k < nc; ++k) { /* (tc: the contact's tangent where it has friction) */
+    tc[k] = rec[CR_W * k + REC_MU] > 0 ? k : -1;
+    rn[k] = start[k], mu[k] = fmax(0.0, rec[CR_W * k + REC_MU]), s[k] = 0.0;
+  }
   for (it = 0; it < FP_MAX; ++it) {
     double F = 0.0, err = 0.0;
     for (j = 0; j < nt; ++j) par[3 * (nb + j)] = s[j];

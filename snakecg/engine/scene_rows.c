@@ -512,7 +512,8 @@ static int state_work(sc_scene_work *sw, const double *pk, const double *q, cons
 
 /* The contacts, rows and blocks of one state (q, the objects at qo): the rows of the
  * forward's step 2 and 3 (contacts first, one unilateral row each, then the ground's
- * blocks), and where c->M is not null the bodies' inertia. A pair overlapping beyond the
+ * blocks; with contact friction the contacts' tangent rows after them, m + k contact k's),
+ * and where c->M is not null the bodies' inertia. A pair overlapping beyond the
  * tolerance: status SS_OVERLAP and its record; more than ccap contacts: SS_MORE. Returns
  * 0, -1 out of memory, -2 on sizes out of range, -3 on an input not finite. */
 int SNAKECG_EXPORT(core_scene_rows)(const sc_scene_state *c) {
@@ -543,10 +544,9 @@ SC_INTERNAL int sc_scene_state_rows(const double *pk, const double *q, const dou
     return (int)-nc;
   }
   m = ground_rows(&sw, nc);
-  out[RO_NC] = (double)nc;
-  out[RO_M] = (double)m;
-  out[RO_NB] = (double)(nc + sw.ng);
+  out[RO_NC] = (double)nc, out[RO_M] = (double)m, out[RO_NB] = (double)(nc + sw.ng);
   memcpy(A, sw.A, sizeof(double) * (size_t)(m * sw.n));
+  if (sw.T) memcpy(A + m * sw.n, sw.T, sizeof(double) * (size_t)(nc * sw.n)); /* tangents */
   memcpy(par, sw.par, sizeof(double) * (size_t)(3 * (nc + sw.ng)));
   memcpy(kind, sw.kind, sizeof(sc_int) * (size_t)(nc + sw.ng));
   memcpy(start, sw.start, sizeof(sc_int) * (size_t)(nc + sw.ng));
