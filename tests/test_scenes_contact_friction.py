@@ -210,6 +210,8 @@ def test_random_scenes_match_the_enumeration(frictional_samples):
         if not match:  # a solution on a singular piece: Coulomb's conditions densely
             assert singular > 0, (a, [s[0] for s in sols])
             continue
+        d = a - np.linalg.solve(p["M"], p["f"])  # ||lambda||^2 counts the friction forces
+        np.testing.assert_allclose(res.norm_lambda, d @ p["M"] @ d, rtol=1e-9, atol=1e-12)
         lam = engine_forces(res, p)
         F = max(1.0, np.abs(match[0][1]).max())
         known = ~np.isnan(lam)  # the contacts' rows (the ground's: through a)
@@ -255,6 +257,30 @@ def test_box_pushed_against_a_wall_sticks_or_slides_as_coulomb_says(mu):
         states = {c["friction_state"] for c in res.contacts}
         assert states == ({"stick"} if abs(ft) < mu * fn else {"slip"}) or abs(
             abs(ft) - mu * fn) < 1e-9
+
+
+@pytest.mark.parametrize("mu", [0.05, 0.3])
+def test_a_disc_pressed_on_a_peg_rolls_or_slips_as_coulomb_says(mu):
+    """A disc (m, r, I = m r^2 / 2) pressed on a peg by f_n with a push f_t at its centre:
+    sticking, it rolls about the peg, a = f_t / (1.5 m), alpha = -a / r, the friction
+    -f_t / 3, which holds iff |f_t| / 3 <= mu f_n; else it slips: a = (f_t - mu f_n s) / m,
+    alpha = -2 mu f_n s / (m r), s = sign(f_t)."""
+    m, r, fn = 2.0, 0.05, 5.0
+    disc = SceneObject(shape="disc", radius=r, mass=m, pose=(1.0, 0.0, 0.0))
+    peg = Obstacle(shape="peg", center=(1.0, -0.08), radius=0.03)
+    model = snakecg.load(GeneralScene(snakecg.Robot(joints=1), ground=Ground(),
+                                      objects=(disc,), obstacles=(peg,), mu_contact=mu))
+    for ft in (-2.0, -0.5, 0.2, 1.0, 4.0):
+        res = model.forward(np.zeros(4), np.zeros(1), f_obj=[[ft, -fn, 0.0]])
+        assert res.status == 0 and res.uniqueness == "unique"
+        if abs(ft) / 3 <= mu * fn:
+            a = ft / (1.5 * m)
+            want, state = [a, 0.0, -a / r], "stick"
+        else:
+            s = np.sign(ft)
+            want, state = [(ft - mu * fn * s) / m, 0.0, -2 * mu * fn * s / (m * r)], "slip"
+        np.testing.assert_allclose(res.a_obj[0], want, atol=1e-10)
+        assert res.contacts[0]["friction_state"] == state
 
 
 def test_a_body_s_own_coefficient_overrides_the_scene_s():
