@@ -34,12 +34,13 @@
 #include "snakecg_layout.h"
 #include "engine.h"
 
-#define FP_MAX 200      /* fixed-point and Newton passes */
+#define FP_MAX 400      /* fixed-point and Newton passes */
 #define FP_TOL 1e-12    /* |mu lam_n - s| at most this of the forces' scale: settled */
 #define ENUM_MAX 4096   /* pieces enumerated for the uniqueness check */
 #define SOL_MAX 16      /* distinct solutions kept */
 #define ENUM_TOL 1e-9   /* a piece's solution meets Coulomb's conditions within this */
 #define SAME_TOL 1e-7   /* two solutions are one within this of the forces' scale */
+#define SAME_ROW 1e-8   /* two normal rows are one (bound_of's groups) within this */
 #define FR_NOT_SETTLED 7 /* a sample's status: the fixed point did not settle */
 enum { REC_MU = 13, REC_FT = 14, REC_ST = 15 }; /* a contact record's friction fields */
 
@@ -55,6 +56,33 @@ void sc_friction_row(const double *pk, sc_int ia, sc_int ib, const double *nrm,
   sc_int j;
   rec[REC_MU] = pair_mu(pk, ia, ib);
   for (j = 0; j < n; ++j) row[j] = -nrm[1] * Dx[j] + nrm[0] * Dy[j];
+}
+
+/* Rows a and b (n) equal to rounding. */
+static int same_row(const double *a, const double *b, sc_int n) {
+  double d = 0.0, big = 0.0;
+  sc_int j;
+  for (j = 0; j < n; ++j) {
+    d = fmax(d, fabs(a[j] - b[j]));
+    big = fmax(big, fmax(fabs(a[j]), fabs(b[j])));
+  }
+  return d <= SAME_ROW * big;
+}
+
+/* a = M^-1 (f + A^T lam) = L^-T (g + Z lam), with delassus' factors. */
+static void accelerations(sc_int n, sc_int mt, const double *L, const double *Z,
+                          const double *g, const double *lam, double *a) {
+  sc_int i, j;
+  for (i = 0; i < n; ++i) {
+    double t = g[i];
+    for (j = 0; j < mt; ++j) t += Z[j * n + i] * lam[j];
+    a[i] = t;
+  }
+  for (i = n - 1; i >= 0; --i) {
+    double t = a[i];
+    for (j = i + 1; j < n; ++j) t -= L[j * n + i] * a[j];
+    a[i] = t / L[i * n + i];
+  }
 }
 
 /* The problem's G = A M^-1 A^T, b = A M^-1 f + c (mt rows) by M = L L^T, and the scales of
@@ -89,22 +117,53 @@ static int delassus(sc_int n, sc_int mt, sc_int nbt, const double *M, const doub
   return 1;
 }
 
+/* Contacts whose normal rows are one (a peg at a joint touching both links' rounded ends)
+ * share their normal force, split arbitrarily between them (statically indeterminate); as
+ * each contact's friction is bounded by its own share, together they allow exactly
+ * sum_k |lam_t,k| <= mu N (N their summed normal force), a slipping one's force against its
+ * slip, and sum_k |lam_t,k| = mu N where every one slips. The group: contacts k with
+ * lead[k] = its first. Contact j's bound: mu lam_n alone; in a group, its share of mu N in
+ * proportion to the friction forces (equal shares where they are all 0). */
+static double bound_of(sc_int j, sc_int nt, sc_int m, const sc_int *lead, const sc_int *rn,
+                       const double *mu, const double *lam) {
+  double N = 0.0, T = 0.0;
+  sc_int k, g = lead[j], count = 0;
+  for (k = g; k < nt; ++k)
+    if (lead[k] == g) N += lam[rn[k]], T += fabs(lam[m + k]), ++count;
+  if (count == 1) return mu[j] * lam[rn[j]];
+  return mu[j] * N * (T > 0 ? fabs(lam[m + j]) / T : 1.0 / (double)count);
+}
+
 /* Coulomb's residuals of (lam, w) on the frictional contacts (normal rows rn[j], tangent rows
  * m + j), relative to the scales: res[0] primal (a normal force below 0, a tangent force
  * outside the cone), res[1] dual (a normal row that accelerates into the contact, a sliding
- * tangent row whose force is not -mu lam_n sign(w_t)), res[2] complementarity (lam_n w_n). */
-static void coulomb_residuals(sc_int m, sc_int nt, const sc_int *rn, const double *mu,
-                              const double *lam, const double *w, const double *scale,
-                              double *res) {
+ * tangent row whose force is not -mu lam_n sign(w_t)), res[2] complementarity (lam_n w_n);
+ * a group's (bound_of) on its summed forces. */
+static void coulomb_residuals(sc_int m, sc_int nt, const sc_int *rn, const sc_int *lead,
+                              const double *mu, const double *lam, const double *w,
+                              const double *scale, double *res) {
   const double F = scale[0], W = scale[1];
-  sc_int j;
+  sc_int j, k;
   for (j = 0; j < nt; ++j) {
-    double ln = lam[rn[j]], lt = lam[m + j], wn = w[rn[j]], wt = w[m + j];
-    res[0] = fmax(res[0], fmax(fmax(0.0, -ln), fabs(lt) - mu[j] * ln) / F);
+    double ln = lam[rn[j]], lt = lam[m + j], wn = w[rn[j]], wt = w[m + j], N = 0.0, T = 0.0;
+    int count = 0, slips = 0;
     res[1] = fmax(res[1], fmax(0.0, -wn) / W);
     res[2] = fmax(res[2], fabs(ln * wn) / (F * W));
-    if (fabs(wt) > TOL_ACCEPT * W) /* slip: the force at the cone's edge, against w_t */
+    res[0] = fmax(res[0], fmax(0.0, -ln) / F);
+    if (lead[j] != j) continue; /* (a group: at its first) */
+    for (k = j; k < nt; ++k) {
+      if (lead[k] != j) continue;
+      N += lam[rn[k]], T += fabs(lam[m + k]), ++count;
+      if (fabs(w[m + k]) > TOL_ACCEPT * W) { /* slip: the force against it */
+        ++slips;
+        res[1] = fmax(res[1], fmax(0.0, lam[m + k] * (w[m + k] > 0 ? 1.0 : -1.0)) / F);
+      }
+    }
+    res[0] = fmax(res[0], fmax(0.0, T - mu[j] * N) / F);
+    if (count == 1 && slips) /* at the cone's edge */
       res[1] = fmax(res[1], fabs(lt + (wt > 0 ? mu[j] : -mu[j]) * ln) / F);
+    else if (slips == count)
+      res[1] = fmax(res[1], fabs(T - mu[j] * N) / F);
   }
 }
 
@@ -326,11 +385,12 @@ int sc_friction_solve(sc_int n, sc_int m, sc_int nb, sc_int nc, const double *M,
                       double *par, const double *T, double *rec, sc_int sweeps,
                       const double *from, double *lam, double *a, double *w, double *st,
                       double *info, double *solutions) {
-  sc_int nt = 0, k, j, i, it, mt, nbt, *iw, *tc, *rn, *piv, *slide, ns;
+  sc_int nt = 0, k, j, i, it, mt, nbt, *iw, *tc, *rn, *piv, *slide, *lead, ns;
   double *d, *mu, *s, *fr, *L, *Z, *G, *b, *g, *pl, *pw, *pa, *pst, *pinfo, *D, *rhs, *r0,
       scale[2], res[3];
   sc_enum e;
-  int code = 0, ok = 0, same;
+  int code = 0, ok = 0, same, stall = 0;
+  double omega = 1.0, best = INFINITY; /* the passes' relaxation (halved where they stall) */
   *solutions = 0.0;
   if (!T) /* no contact friction in the scene: the convex solve alone */
     return SNAKECG_EXPORT(core_scene_solve_s)(n, m, nb, M, f, A, c, kind, start, par, sweeps,
@@ -356,7 +416,7 @@ int sc_friction_solve(sc_int n, sc_int m, sc_int nb, sc_int nc, const double *M,
   d = (double *)malloc(sizeof(double) * (size_t)(4 * nt + 4 * nbt + n * n + 2 * n * mt +
                                                  4 * mt * mt + 10 * mt + 4 * n + 12 * nbt +
                                                  SOL_MAX * n + nt * nt + 16));
-  iw = (sc_int *)malloc(sizeof(sc_int) * (size_t)(3 * nbt + 2 * nt + 2 * mt + 8));
+  iw = (sc_int *)malloc(sizeof(sc_int) * (size_t)(3 * nbt + 3 * nt + 2 * mt + 8));
   if (!d || !iw) {
     free(d);
     free(iw);
@@ -369,11 +429,17 @@ int sc_friction_solve(sc_int n, sc_int m, sc_int nb, sc_int nc, const double *M,
   e.y = e.x + mt, e.ys = e.y + n, e.c0 = e.ys + SOL_MAX * n, e.c1 = e.c0 + 6 * nbt;
   e.qw = e.c1 + 6 * nbt, e.best = e.qw + 5 * mt + n;
   tc = iw, rn = tc + nbt, piv = rn + nt, slide = piv + mt;
-  e.opt = slide + nt, e.digit = e.opt + nbt;
+  e.opt = slide + nt, e.digit = e.opt + nbt, lead = e.digit + nbt;
   for (k = 0; k < nbt; ++k) tc[k] = -1;
   for (k = 0; k < nc; ++k) { /* (tc: the contact's tangent where it has friction) */
     tc[k] = rec[CR_W * k + REC_MU] > 0 ? k : -1;
-    rn[k] = start[k], mu[k] = fmax(0.0, rec[CR_W * k + REC_MU]), s[k] = 0.0;
+    rn[k] = start[k], mu[k] = fmax(0.0, rec[CR_W * k + REC_MU]), s[k] = 0.0, lead[k] = k;
+    for (j = 0; j < k && tc[k] >= 0; ++j) /* one normal row: the first one's group */
+      if (tc[j] >= 0 && lead[j] == j && mu[j] == mu[k] &&
+          same_row(A + rn[j] * n, A + rn[k] * n, n)) {
+        lead[k] = j;
+        break;
+      }
   }
   for (it = 0; it < FP_MAX; ++it) {
     double F = 0.0, err = 0.0;
@@ -382,22 +448,26 @@ int sc_friction_solve(sc_int n, sc_int m, sc_int nb, sc_int nc, const double *M,
                                               it ? fr : NULL, lam, a, w, st, info);
     if (code || info[0] != 0.0) break;
     for (i = 0; i < mt; ++i) F = fmax(F, fabs(lam[i]));
-    for (j = 0; j < nt; ++j) err = fmax(err, fabs(mu[j] * lam[rn[j]] - s[j]));
+    for (j = 0; j < nt; ++j)
+      err = fmax(err, fabs(bound_of(j, nt, m, lead, rn, mu, lam) - s[j]));
     if (err <= FP_TOL * (F > 0 ? F : 1.0)) {
       ok = 1;
       break;
     }
+    if (err < 0.9 * best) best = err, stall = 0; /* progress */
+    else if (++stall >= 6) /* no progress in 6 passes (a cycle of pieces): relax */
+      omega = fmax(0.5 * omega, 1.0 / 1024), stall = 0, best = err;
     same = it > 0;
     for (k = 0; k < nbt && same; ++k) same = fr[3 * k] == st[k];
     pieces(nbt, kind, start, st, lam, fr);
     for (j = ns = 0; j < nt; ++j) /* the sliding tangents (on the bound, s > 0) */
       if (st[nb + j] == 3.0 || st[nb + j] == 4.0) slide[ns++] = j;
     if (!same || ns == 0) { /* s <- mu lam_n */
-      for (j = 0; j < nt; ++j) s[j] = mu[j] * lam[rn[j]];
+      for (j = 0; j < nt; ++j) s[j] += omega * (bound_of(j, nt, m, lead, rn, mu, lam) - s[j]);
       continue;
     }
     /* Newton on the sliding s: R = mu lam_n(s) - s, J = mu dlam_n/ds - I by differences */
-    for (j = 0; j < nt; ++j) r0[j] = mu[j] * lam[rn[j]];
+    for (j = 0; j < nt; ++j) r0[j] = bound_of(j, nt, m, lead, rn, mu, lam);
     for (i = 0; i < ns; ++i) {
       sc_int q = slide[i];
       double h = 1e-7 * fmax(s[q], F);
@@ -407,21 +477,22 @@ int sc_friction_solve(sc_int n, sc_int m, sc_int nb, sc_int nc, const double *M,
       par[3 * (nb + q)] = s[q];
       if (code || pinfo[0] != 0.0) break;
       for (j = 0; j < ns; ++j)
-        D[j * ns + i] = (mu[slide[j]] * pl[rn[slide[j]]] - r0[slide[j]]) / h - (i == j);
+        D[j * ns + i] =
+            (bound_of(slide[j], nt, m, lead, rn, mu, pl) - r0[slide[j]]) / h - (i == j);
     }
     if (i < ns) { /* a difference not solved: a plain pass */
-      for (j = 0; j < nt; ++j) s[j] = r0[j];
+      for (j = 0; j < nt; ++j) s[j] += omega * (r0[j] - s[j]);
       code = 0;
       continue;
     }
     for (j = 0; j < ns; ++j) rhs[j] = -(r0[slide[j]] - s[slide[j]]);
     if (!sc_lu_factor(ns, D, ns, piv)) {
-      for (j = 0; j < nt; ++j) s[j] = r0[j];
+      for (j = 0; j < nt; ++j) s[j] += omega * (r0[j] - s[j]);
       continue;
     }
     sc_lu_solve(ns, D, ns, piv, rhs);
-    for (j = 0; j < ns; ++j) rhs[j] += s[slide[j]];
-    for (j = 0; j < nt; ++j) s[j] = r0[j]; /* the sticking and open ones: s = mu lam_n */
+    for (j = 0; j < ns; ++j) rhs[j] = s[slide[j]] + omega * rhs[j];
+    for (j = 0; j < nt; ++j) s[j] += omega * (r0[j] - s[j]); /* sticking, open: mu lam_n */
     for (j = 0; j < ns; ++j) s[slide[j]] = fmax(0.0, rhs[j]);
   }
   if (code == -1) {
@@ -439,16 +510,7 @@ int sc_friction_solve(sc_int n, sc_int m, sc_int nb, sc_int nc, const double *M,
     *solutions = (double)count;
     if (!ok && count == 1) { /* the one solution, where the fixed point did not settle */
       memcpy(lam, e.best, sizeof(double) * (size_t)mt);
-      for (i = 0; i < n; ++i) {
-        double t = g[i];
-        for (j = 0; j < mt; ++j) t += Z[j * n + i] * lam[j];
-        a[i] = t;
-      }
-      for (i = n - 1; i >= 0; --i) { /* a = L^-T (g + Z lam) */
-        double t = a[i];
-        for (k = i + 1; k < n; ++k) t -= L[k * n + i] * a[k];
-        a[i] = t / L[i * n + i];
-      }
+      accelerations(n, mt, L, Z, g, lam, a);
       for (k = 0; k < nbt; ++k) { /* the states read off the solution */
         double l = lam[start[k]];
         st[k] = kind[k] == K_UNILATERAL ? (l > 0 ? S_HELD : S_ZERO) :
@@ -460,9 +522,32 @@ int sc_friction_solve(sc_int n, sc_int m, sc_int nb, sc_int nc, const double *M,
     }
   }
   if (ok) { /* Coulomb's residuals apart, from the accelerations: w = A a + c */
+    int moved = 0;
     for (i = 0; i < mt; ++i) w[i] = sc_dot(A + i * n, a, n) + (c ? c[i] : 0.0);
+    for (j = 0; j < nc; ++j) { /* a group's normal force split as Coulomb allows it: a
+      slipping contact |lam_t| / mu, the sticking ones the rest in equal parts */
+      double N = 0.0, need = 0.0;
+      sc_int count = 0, stick = 0;
+      if (lead[j] != j || !(mu[j] > 0)) continue;
+      for (k = j; k < nc; ++k)
+        if (lead[k] == j) {
+          N += lam[rn[k]], need += fabs(lam[m + k]) / mu[j], ++count;
+          stick += !(fabs(w[m + k]) > TOL_ACCEPT * scale[1]);
+        }
+      for (k = j; count > 1 && k < nc; ++k)
+        if (lead[k] == j) {
+          int sticks = !(fabs(w[m + k]) > TOL_ACCEPT * scale[1]);
+          lam[rn[k]] = fabs(lam[m + k]) / mu[j] + (sticks ? fmax(0.0, N - need) / stick : 0.0);
+          st[k] = lam[rn[k]] > 0 ? S_HELD : S_ZERO;
+          moved = 1;
+        }
+    }
+    if (moved) { /* (the rows equal to within SAME_ROW: the accelerations again) */
+      accelerations(n, mt, L, Z, g, lam, a);
+      for (i = 0; i < mt; ++i) w[i] = sc_dot(A + i * n, a, n) + (c ? c[i] : 0.0);
+    }
     res[0] = info[2], res[1] = info[3], res[2] = info[4];
-    coulomb_residuals(m, nt, rn, mu, lam, w, scale, res);
+    coulomb_residuals(m, nt, rn, lead, mu, lam, w, scale, res);
     info[2] = res[0], info[3] = res[1], info[4] = res[2];
     ok = res[0] <= TOL_ACCEPT && res[1] <= TOL_ACCEPT && res[2] <= TOL_ACCEPT;
   }
@@ -472,12 +557,12 @@ int sc_friction_solve(sc_int n, sc_int m, sc_int nb, sc_int nc, const double *M,
     for (i = 0; i < mt; ++i) lam[i] = NAN;
   }
   for (k = 0; k < nc; ++k) /* the contacts' friction force and state */
-    if (tc[k] >= 0) {
-      j = tc[k];
-      rec[CR_W * k + REC_FT] = lam[m + j];
-      rec[CR_W * k + REC_ST] = !(lam[rn[j]] > 0) || st[k] == S_ZERO ? 1.0 :
-                               st[nb + j] == 3.0 || st[nb + j] == 4.0 ? 2.0 : 0.0;
+    if (mu[k] > 0) {
+      rec[CR_W * k + REC_FT] = lam[m + k];
+      rec[CR_W * k + REC_ST] = !(lam[rn[k]] > 0) ? 1.0 : fabs(w[m + k]) > TOL_ACCEPT *
+                               scale[1] ? 2.0 : 0.0;
     }
+
   free(d);
   free(iw);
   return 0;
