@@ -397,34 +397,32 @@ static int work_alloc(sc_scene_work *sw, const double *pk, sc_int ccap, sc_int m
   sw->kind = (sc_int *)(sw->ws.res + most[1] + 1);
   sw->ws.iw = sw->kind + 2 * mcap + n + 2;
   sw->shape = (sc_shape *)(sw->ws.iw + most[2] + 1);
-  /* zeros but for the rows and the generated functions' work vectors (the largest parts,
-   * written before they are read) */
-  memset(d + mcap * n, 0, sizeof(double) * (size_t)(nd - mcap * n));
-  memset((void *)sw->ws.arg, 0, (size_t)((char *)sw->ws.iw - (char *)sw->ws.arg));
-  memset(sw->shape, 0, sizeof(sc_shape) * (size_t)(sw->nbody + 1));
-  d += mcap * n;
-  sw->M = d; d += n * n;
+  d += mcap * n; /* the rows, then what is written before it is read: not zeroed */
+  sw->M = d; d += n * n; /* (the forward's full_inertia) */
   sw->LU = d; d += n * n;
   sw->f = d; d += n;
   sw->a = d; d += n;
   sw->afree = d; d += n;
+  sw->D = d; d += 2 * n;
   sw->par = d; d += 3 * mcap;
   sw->lam = d; d += mcap;
   sw->w = d; d += mcap;
   sw->st = d; d += mcap;
-  sw->P = d; d += 3 * SNAKECG_NL;
+  sw->prev = d; d += 3 * mcap; /* (read once a sample has written it: pnb) */
+  sw->P = d; d += 3 * SNAKECG_NL; /* (the generated functions' outputs are dense) */
   sw->J = d; d += 3 * SNAKECG_NL * SNAKECG_NS;
   sw->Ms = d; d += SNAKECG_NS * SNAKECG_NS;
   sw->centre = d; d += 2 * sw->nbody;
   sw->reach = d; d += sw->nbody;
   sw->pose = d; d += 3 * sw->no;
-  sw->D = d; d += 2 * n;
-  sw->prev = d; d += 3 * mcap;
-  sw->cs = d;
+  sw->cs = d; /* (the placement's: written before read) */
+  /* zeros: the generated functions' pointers, the shapes (not what the model's sizes or mcap
+   * scale, written before read: a step's rows call this every step) */
+  memset((void *)sw->ws.arg, 0, (size_t)((char *)sw->kind - (char *)sw->ws.arg));
+  memset(sw->shape, 0, sizeof(sc_shape) * (size_t)(sw->nbody + 1));
   sw->start = sw->kind + mcap;
   sw->piv = sw->start + mcap;
   sw->placed = 0, sw->pnb = -1; /* (nothing placed, no last sample) */
-  full_inertia(sw, sw->M); /* the objects' part (M_s: per sample) */
   return 0;
 }
 
@@ -456,6 +454,7 @@ int SNAKECG_EXPORT(core_scene_forward)(const double *pk, sc_int n, const double 
     if (!ok) return (int)(-3 - (i < 2000000000 ? i : 2000000000));
   }
   if (work_alloc(&sw, pk, ccap, mcap)) return -1;
+  full_inertia(&sw, sw.M); /* the objects' part (M_s: per sample) */
   width = SO_QDD + SNAKECG_NS + 7 * sw.no + 3 * sw.ng + CR_W * ccap;
   for (i = 0; i < n; ++i) { /* cold at every chunk-th sample of the call */
     if (chunk < 2 || i % chunk == 0) sw.cool = sw.backoff = 0;
