@@ -55,7 +55,7 @@ typedef struct {
   int placed; /* the bodies' parts that do not move are placed (sc_scene_place's `all`) */
   double tol; /* the contact tolerance (m) */
   sc_work_t ws;
-  double *A, *M, *f, *par, *lam, *w, *a, *st, *P, *J, *Ms, *LU, *afree, *D, *cs;
+  double *base, *A, *M, *f, *par, *lam, *w, *a, *st, *P, *J, *Ms, *LU, *afree, *D, *cs;
   double *prev; /* the last sample's pieces (3 per block: state, forces) */
   const double *prec; /* and its contacts' records */
   sc_int *kind, *start, *piv, pnb; /* pnb: its blocks (-1: none, not solved) */
@@ -359,13 +359,15 @@ failed: /* a generated function refused */
   for (i = SO_NORM_QDD; i < width; ++i) out[i] = NAN;
 }
 
-static void work_free(sc_scene_work *sw) { free(sw->A); }
+static void work_free(sc_scene_work *sw) { free(sw->base); }
 
 /* The scratch of a batch call, one allocation (doubles, then the generated functions'
  * pointers and integers, the blocks' integers, the shapes; 8-byte fields throughout): 0, or
- * -1 out of memory. */
-static int work_alloc(sc_scene_work *sw, const double *pk, sc_int ccap, sc_int mcap) {
+ * -1 out of memory. With own 0 the rows' room (A, par, kind, start: mcap rows) is the
+ * caller's to set and none of what mcap scales is allocated (a state's rows, every step). */
+static int work_alloc(sc_scene_work *sw, const double *pk, sc_int ccap, sc_int mcap, int own) {
   const sc_work_fn fns[] = {SNAKECG_LP_WORK, SNAKECG_LJ_WORK, SNAKECG_MM_WORK};
+  const sc_int mc = own ? mcap : 0;
   sc_int n, nd, k, i, sz[4], most[4] = {0, 0, 0, 0};
   double *d;
   sw->pk = pk;
@@ -383,32 +385,32 @@ static int work_alloc(sc_scene_work *sw, const double *pk, sc_int ccap, sc_int m
     if (fns[k](sz, sz + 1, sz + 2, sz + 3)) return -1;
     for (i = 0; i < 4; ++i) most[i] = sz[i] > most[i] ? sz[i] : most[i];
   }
-  nd = mcap * n + 2 * n * n + 7 * n + 3 * mcap + 3 * mcap + 5 * SNAKECG_NL +
+  nd = mc * n + 2 * n * n + 7 * n + 3 * mc + 3 * mc + 5 * SNAKECG_NL +
        3 * SNAKECG_NL * SNAKECG_NS + SNAKECG_NS * SNAKECG_NS + 3 * sw->nbody + 3 * sw->no + 8 +
-       3 * mcap;
-  sw->A = d = (double *)malloc((size_t)(nd + most[3] + 1) * sizeof(double) +
-                               (size_t)(most[0] + most[1] + 2) * sizeof(double *) +
-                               (size_t)(2 * mcap + n + 2 + most[2] + 1) * sizeof(sc_int) +
-                               (size_t)(sw->nbody + 1) * sizeof(sc_shape));
+       3 * mc;
+  sw->base = sw->A = d = (double *)malloc((size_t)(nd + most[3] + 1) * sizeof(double) +
+                                         (size_t)(most[0] + most[1] + 2) * sizeof(double *) +
+                                         (size_t)(2 * mc + n + 2 + most[2] + 1) * sizeof(sc_int) +
+                                         (size_t)(sw->nbody + 1) * sizeof(sc_shape));
   if (!d) return -1;
   sw->ws.w = d + nd;
   sw->ws.arg = (const double **)(d + nd + most[3] + 1);
   sw->ws.res = (double **)(sw->ws.arg + most[0] + 1);
   sw->kind = (sc_int *)(sw->ws.res + most[1] + 1);
-  sw->ws.iw = sw->kind + 2 * mcap + n + 2;
+  sw->ws.iw = sw->kind + 2 * mc + n + 2;
   sw->shape = (sc_shape *)(sw->ws.iw + most[2] + 1);
-  d += mcap * n; /* the rows, then what is written before it is read: not zeroed */
+  d += mc * n; /* the rows, then what is written before it is read: not zeroed */
   sw->M = d; d += n * n; /* (the forward's full_inertia) */
   sw->LU = d; d += n * n;
   sw->f = d; d += n;
   sw->a = d; d += n;
   sw->afree = d; d += n;
   sw->D = d; d += 2 * n;
-  sw->par = d; d += 3 * mcap;
-  sw->lam = d; d += mcap;
-  sw->w = d; d += mcap;
-  sw->st = d; d += mcap;
-  sw->prev = d; d += 3 * mcap; /* (read once a sample has written it: pnb) */
+  sw->par = d; d += 3 * mc;
+  sw->lam = d; d += mc;
+  sw->w = d; d += mc;
+  sw->st = d; d += mc;
+  sw->prev = d; d += 3 * mc; /* (read once a sample has written it: pnb) */
   sw->P = d; d += 3 * SNAKECG_NL; /* (the generated functions' outputs are dense) */
   sw->J = d; d += 3 * SNAKECG_NL * SNAKECG_NS;
   sw->Ms = d; d += SNAKECG_NS * SNAKECG_NS;
@@ -420,8 +422,8 @@ static int work_alloc(sc_scene_work *sw, const double *pk, sc_int ccap, sc_int m
    * scale, written before read: a step's rows call this every step) */
   memset((void *)sw->ws.arg, 0, (size_t)((char *)sw->kind - (char *)sw->ws.arg));
   memset(sw->shape, 0, sizeof(sc_shape) * (size_t)(sw->nbody + 1));
-  sw->start = sw->kind + mcap;
-  sw->piv = sw->start + mcap;
+  sw->start = sw->kind + mc;
+  sw->piv = sw->start + mc;
   sw->placed = 0, sw->pnb = -1; /* (nothing placed, no last sample) */
   return 0;
 }
@@ -453,7 +455,7 @@ int SNAKECG_EXPORT(core_scene_forward)(const double *pk, sc_int n, const double 
     for (j = 0; j < no3; ++j) ok &= isfinite(fo[i * sf + j]) != 0;
     if (!ok) return (int)(-3 - (i < 2000000000 ? i : 2000000000));
   }
-  if (work_alloc(&sw, pk, ccap, mcap)) return -1;
+  if (work_alloc(&sw, pk, ccap, mcap, 1)) return -1;
   full_inertia(&sw, sw.M); /* the objects' part (M_s: per sample) */
   width = SO_QDD + SNAKECG_NS + 7 * sw.no + 3 * sw.ng + CR_W * ccap;
   for (i = 0; i < n; ++i) { /* cold at every chunk-th sample of the call */
@@ -495,8 +497,10 @@ int SNAKECG_EXPORT(core_scene_forward_call)(const sc_scene_call *c) {
 /* rows' outputs (RO_*, engine.h): status (0, SS_*), contacts, rows, blocks, an overlap's
  * record (bodies, depth, tolerance), the objects' poses (3 n_o), then the contacts */
 
+/* A state's scratch; its rows (where A is not null) go straight into A, par, kind, start. */
 static int state_work(sc_scene_work *sw, const double *pk, const double *q, const double *qo,
-                      double tol, sc_int ccap, sc_int mcap) {
+                      double tol, sc_int ccap, sc_int mcap, double *A, double *par,
+                      sc_int *kind, sc_int *start) {
   sc_int j, no3 = 3 * (sc_int)pk[SP_NO];
   int ok = 1;
   if (ccap < 0 || mcap < ccap + (sc_int)pk[SP_MG] || mcap > 500 || SNAKECG_NS + no3 > 512)
@@ -504,7 +508,8 @@ static int state_work(sc_scene_work *sw, const double *pk, const double *q, cons
   for (j = 0; j < SNAKECG_NS; ++j) ok &= isfinite(q[j]) != 0;
   for (j = 0; qo && j < no3; ++j) ok &= isfinite(qo[j]) != 0;
   if (!ok) return -3;
-  if (work_alloc(sw, pk, ccap, mcap)) return -1;
+  if (work_alloc(sw, pk, ccap, mcap, A == 0)) return -1;
+  if (A) sw->A = A, sw->par = par, sw->kind = kind, sw->start = start;
   if (tol > 0) sw->tol = tol;
   return 0;
 }
@@ -525,7 +530,7 @@ SC_INTERNAL int sc_scene_state_rows(const double *pk, const double *q, const dou
                                     double *M, double *A, double *par, sc_int *kind,
                                     sc_int *start) {
   sc_scene_work sw;
-  sc_int nc, m, i, code = state_work(&sw, pk, q, qo, tol, ccap, mcap);
+  sc_int nc, m, i, code = state_work(&sw, pk, q, qo, tol, ccap, mcap, A, par, kind, start);
   if (code) return (int)code;
   for (i = 0; i < RO_POSE + 3 * sw.no; ++i) out[i] = 0.0;
   if (kinematics(&sw, q, M != 0)) {
@@ -545,10 +550,6 @@ SC_INTERNAL int sc_scene_state_rows(const double *pk, const double *q, const dou
   out[RO_NC] = (double)nc;
   out[RO_M] = (double)m;
   out[RO_NB] = (double)(nc + sw.ng);
-  memcpy(A, sw.A, sizeof(double) * (size_t)(m * sw.n));
-  memcpy(par, sw.par, sizeof(double) * (size_t)(3 * (nc + sw.ng)));
-  memcpy(kind, sw.kind, sizeof(sc_int) * (size_t)(nc + sw.ng));
-  memcpy(start, sw.start, sizeof(sc_int) * (size_t)(nc + sw.ng));
   if (M) full_inertia(&sw, M);
   work_free(&sw);
   return 0;
@@ -563,7 +564,7 @@ SC_INTERNAL int sc_scene_state_rows(const double *pk, const double *q, const dou
 int SNAKECG_EXPORT(core_scene_gaps)(const sc_scene_state *c) {
   sc_scene_work sw;
   sc_int ia, ib, k, found = 0;
-  sc_int code = state_work(&sw, c->pk, c->q, c->qo, 0.0, 0, (sc_int)c->pk[SP_MG]);
+  sc_int code = state_work(&sw, c->pk, c->q, c->qo, 0.0, 0, (sc_int)c->pk[SP_MG], 0, 0, 0, 0);
   const sc_int nl = SNAKECG_NL;
   if (code) return (int)code;
   if (kinematics(&sw, c->q, 0)) {
