@@ -361,6 +361,8 @@ failed: /* a generated function refused */
 
 static void work_free(sc_scene_work *sw) { free(sw->base); }
 
+enum { SW_HEAD = (sizeof(sc_scene_work) + sizeof(double) - 1) / sizeof(double) };
+
 /* The scratch of a batch call, one allocation (doubles, then the generated functions'
  * pointers and integers, the blocks' integers, the shapes; 8-byte fields throughout): 0, or
  * -1 out of memory. With own 0 the rows' room (A, par, kind, start: mcap rows) is the
@@ -388,11 +390,12 @@ static int work_alloc(sc_scene_work *sw, const double *pk, sc_int ccap, sc_int m
   nd = mc * n + 2 * n * n + 7 * n + 3 * mc + 3 * mc + 5 * SNAKECG_NL +
        3 * SNAKECG_NL * SNAKECG_NS + SNAKECG_NS * SNAKECG_NS + 3 * sw->nbody + 3 * sw->no + 8 +
        3 * mc;
-  sw->base = sw->A = d = (double *)malloc((size_t)(nd + most[3] + 1) * sizeof(double) +
-                                         (size_t)(most[0] + most[1] + 2) * sizeof(double *) +
-                                         (size_t)(2 * mc + n + 2 + most[2] + 1) * sizeof(sc_int) +
-                                         (size_t)(sw->nbody + 1) * sizeof(sc_shape));
-  if (!d) return -1;
+  sw->base = (double *)malloc((size_t)(SW_HEAD + nd + most[3] + 1) * sizeof(double) +
+                              (size_t)(most[0] + most[1] + 2) * sizeof(double *) +
+                              (size_t)(2 * mc + n + 2 + most[2] + 1) * sizeof(sc_int) +
+                              (size_t)(sw->nbody + 1) * sizeof(sc_shape));
+  if (!sw->base) return -1;
+  sw->A = d = sw->base + SW_HEAD; /* (the head: a kept state scratch's struct) */
   sw->ws.w = d + nd;
   sw->ws.arg = (const double **)(d + nd + most[3] + 1);
   sw->ws.res = (double **)(sw->ws.arg + most[0] + 1);
@@ -472,10 +475,8 @@ int SNAKECG_EXPORT(core_scene_forward)(const double *pk, sc_int n, const double 
  * pointer (a foreign call's cost grows with its argument count; snakecg/engine/binding.py
  * mirrors it as SceneCall). */
 typedef struct {
-  const double *pk; sc_int n;
-  const double *q; sc_int sq;
-  const double *tau; sc_int st;
-  const double *fo; sc_int sf, ccap, mcap;
+  const double *pk; sc_int n; const double *q; sc_int sq;
+  const double *tau; sc_int st; const double *fo; sc_int sf, ccap, mcap;
   double *out, *A, *lam, *w, *state; sc_int chunk;
 } sc_scene_call;
 
@@ -494,13 +495,13 @@ int SNAKECG_EXPORT(core_scene_forward_call)(const sc_scene_call *c) {
  * records); pair_a, pair_b (gaps: this pair of bodies alone, -1: every pair); out (rows: RO_*,
  * then the contacts, CR_W each; gaps: 5 per pair); M (rows: the bodies' inertia, n x n
  * row-major, or null); A (mcap x n), par (3 per block), kind, start: the rows' blocks. */
-/* rows' outputs (RO_*, engine.h): status (0, SS_*), contacts, rows, blocks, an overlap's
- * record (bodies, depth, tolerance), the objects' poses (3 n_o), then the contacts */
-
-/* A state's scratch; its rows (where A is not null) go straight into A, par, kind, start. */
-static int state_work(sc_scene_work *sw, const double *pk, const double *q, const double *qo,
+/* (rows' outputs: RO_* of engine.h, then the objects' poses (3 n_o) and the contacts.) */
+/* A state's scratch (where keep is not null: made at the first call into *keep, the caller's
+ * to free, then reused; the same pk, ccap, mcap every call); its rows (A not null) go straight
+ * into A, par, kind, start. */
+static int state_work(sc_scene_work **sw, const double *pk, const double *q, const double *qo,
                       double tol, sc_int ccap, sc_int mcap, double *A, double *par,
-                      sc_int *kind, sc_int *start) {
+                      sc_int *kind, sc_int *start, void **keep) {
   sc_int j, no3 = 3 * (sc_int)pk[SP_NO];
   int ok = 1;
   if (ccap < 0 || mcap < ccap + (sc_int)pk[SP_MG] || mcap > 500 || SNAKECG_NS + no3 > 512)
@@ -508,9 +509,11 @@ static int state_work(sc_scene_work *sw, const double *pk, const double *q, cons
   for (j = 0; j < SNAKECG_NS; ++j) ok &= isfinite(q[j]) != 0;
   for (j = 0; qo && j < no3; ++j) ok &= isfinite(qo[j]) != 0;
   if (!ok) return -3;
-  if (work_alloc(sw, pk, ccap, mcap, A == 0)) return -1;
-  if (A) sw->A = A, sw->par = par, sw->kind = kind, sw->start = start;
-  if (tol > 0) sw->tol = tol;
+  if (keep && *keep) *sw = (sc_scene_work *)*keep; /* (its fixed bodies placed already) */
+  else if (work_alloc(*sw, pk, ccap, mcap, A == 0)) return -1;
+  else if (keep) *keep = *sw = (sc_scene_work *)memcpy((*sw)->base, *sw, sizeof(**sw));
+  if (A) (*sw)->A = A, (*sw)->par = par, (*sw)->kind = kind, (*sw)->start = start;
+  (*sw)->tol = tol > 0 ? tol : pk[SP_TOL];
   return 0;
 }
 
@@ -521,38 +524,35 @@ static int state_work(sc_scene_work *sw, const double *pk, const double *q, cons
  * 0, -1 out of memory, -2 on sizes out of range, -3 on an input not finite. */
 int SNAKECG_EXPORT(core_scene_rows)(const sc_scene_state *c) {
   int code = sc_scene_state_rows(c->pk, c->q, c->qo, c->tol, c->ccap, c->mcap, c->out, c->M,
-                                 c->A, c->par, c->kind, c->start);
+                                 c->A, c->par, c->kind, c->start, 0);
   return code < 0 ? code : 0;
 }
 
 SC_INTERNAL int sc_scene_state_rows(const double *pk, const double *q, const double *qo,
                                     double tol, sc_int ccap, sc_int mcap, double *out,
                                     double *M, double *A, double *par, sc_int *kind,
-                                    sc_int *start) {
-  sc_scene_work sw;
-  sc_int nc, m, i, code = state_work(&sw, pk, q, qo, tol, ccap, mcap, A, par, kind, start);
+                                    sc_int *start, void **keep) {
+  sc_scene_work local, *sw = &local;
+  sc_int nc, m, i, code = state_work(&sw, pk, q, qo, tol, ccap, mcap, A, par, kind, start, keep);
   if (code) return (int)code;
-  for (i = 0; i < RO_POSE + 3 * sw.no; ++i) out[i] = 0.0;
-  if (kinematics(&sw, q, M != 0)) {
-    out[RO_STATUS] = SS_FAILED;
-    work_free(&sw);
-    return SS_FAILED;
+  for (i = 0; i < RO_POSE + 3 * sw->no; ++i) out[i] = 0.0;
+  code = kinematics(sw, q, M != 0) ? SS_FAILED : 0;
+  if (!code) {
+    place(sw, sw->P, qo);
+    for (i = 0; i < 3 * sw->no; ++i) out[RO_POSE + i] = sw->pose[i];
+    nc = contact_rows(sw, sw->P, out + RO_POSE + 3 * sw->no, out + RO_OVERLAP, sw->ccap);
+    code = nc < 0 ? -nc : 0;
   }
-  place(&sw, sw.P, qo);
-  for (i = 0; i < 3 * sw.no; ++i) out[RO_POSE + i] = sw.pose[i];
-  nc = contact_rows(&sw, sw.P, out + RO_POSE + 3 * sw.no, out + RO_OVERLAP, sw.ccap);
-  if (nc < 0) {
-    out[RO_STATUS] = (double)-nc;
-    work_free(&sw);
-    return (int)-nc;
+  if (!code) {
+    m = ground_rows(sw, nc);
+    out[RO_NC] = (double)nc;
+    out[RO_M] = (double)m;
+    out[RO_NB] = (double)(nc + sw->ng);
+    if (M) full_inertia(sw, M);
   }
-  m = ground_rows(&sw, nc);
-  out[RO_NC] = (double)nc;
-  out[RO_M] = (double)m;
-  out[RO_NB] = (double)(nc + sw.ng);
-  if (M) full_inertia(&sw, M);
-  work_free(&sw);
-  return 0;
+  out[RO_STATUS] = (double)code;
+  if (!keep) work_free(sw);
+  return (int)code;
 }
 
 /* The signed distance of every pair of bodies that can touch (the pairs of contact_rows)
@@ -562,9 +562,9 @@ SC_INTERNAL int sc_scene_state_rows(const double *pk, const double *q, const dou
  * pairs found, beyond ccap not written), -1 out of memory, -2 on sizes, -3 on an input not
  * finite, -4 where a generated function refused. */
 int SNAKECG_EXPORT(core_scene_gaps)(const sc_scene_state *c) {
-  sc_scene_work sw;
-  sc_int ia, ib, k, found = 0;
-  sc_int code = state_work(&sw, c->pk, c->q, c->qo, 0.0, 0, (sc_int)c->pk[SP_MG], 0, 0, 0, 0);
+  sc_scene_work sw, *swp = &sw; /* (no keep: swp stays &sw) */
+  sc_int ia, ib, k, found = 0,
+         code = state_work(&swp, c->pk, c->q, c->qo, 0.0, 0, (sc_int)c->pk[SP_MG], 0, 0, 0, 0, 0);
   const sc_int nl = SNAKECG_NL;
   if (code) return (int)code;
   if (kinematics(&sw, c->q, 0)) {
