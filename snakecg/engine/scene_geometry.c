@@ -261,18 +261,6 @@ static int feature_normal(const sc_shape *sh, const double *q, double scale, dou
   return 0;
 }
 
-/* Point q outside the core of s: 1 where s is a polygon and q is outside one of its edges'
- * lines (counter-clockwise), or where s has no area. */
-static int outside(const sc_shape *s, const double *q) {
-  int k;
-  if (s->kind != SC_POLYGON) return 1;
-  for (k = 0; k < s->np; ++k) {
-    const double *a = s->p[k], *b = s->p[(k + 1) % s->np];
-    if ((b[0] - a[0]) * (q[1] - a[1]) - (b[1] - a[1]) * (q[0] - a[0]) < 0) return 1;
-  }
-  return 0;
-}
-
 /* The mean of a shape's core points. */
 SC_INTERNAL void sc_shape_centroid(const sc_shape *s, double *c) {
   int i;
@@ -369,10 +357,12 @@ SC_INTERNAL double sc_shape_closest(const sc_shape *A, const sc_shape *B, double
     }
   }
   merge = fmax(merge, 1e-9 * scale);
-  /* the features' nearest pairs first: cores at least 1e-10 scale apart whose first points lie
-   * outside the other's polygon (convex: no crossing, no containment) do not overlap, else
-   * the hull of their difference says; overlapping, the pairs are not read */
-  for (i = 0; i < segments(A); ++i)
+  depth = core_overlap(A, B, nrm);
+  if (depth > 1e-12 * scale) { /* overlapping cores: their least translation */
+    overlap_touches(A, B, nrm, scale, merge, out, count);
+    core = -depth;
+  }
+  for (i = 0; depth <= 1e-12 * scale && i < segments(A); ++i)
     for (j = 0; j < segments(B); ++j) {
       const double *a0, *a1, *b0, *b1;
       segment_of(A, i, &a0, &a1);
@@ -389,13 +379,6 @@ SC_INTERNAL double sc_shape_closest(const sc_shape *A, const sc_shape *B, double
   }
   for (i = 0; i < np; ++i)
     if (dist[i] < core) core = dist[i];
-  depth = core > 1e-10 * scale && outside(A, B->p[0]) && outside(B, A->p[0])
-              ? 0.0 : core_overlap(A, B, nrm);
-  if (depth > 1e-12 * scale) { /* overlapping cores: their least translation */
-    overlap_touches(A, B, nrm, scale, merge, out, count);
-    core = -depth;
-    np = 0;
-  }
   for (i = 0; i < np; ++i) {
     const double *p = pairs + 4 * i, *q = p + 2;
     double n[2];
