@@ -366,7 +366,7 @@ enum { SW_HEAD = (sizeof(sc_scene_work) + sizeof(double) - 1) / sizeof(double) }
 /* The scratch of a batch call, one allocation (doubles, then the generated functions'
  * pointers and integers, the blocks' integers, the shapes; 8-byte fields throughout): 0, or
  * -1 out of memory. With own 0 the rows' room (A, par, kind, start: mcap rows) is the
- * caller's to set and none of what mcap scales is allocated (a state's rows, every step). */
+ * caller's to set and none of what mcap scales is allocated (a state's rows). */
 static int work_alloc(sc_scene_work *sw, const double *pk, sc_int ccap, sc_int mcap, int own) {
   const sc_work_fn fns[] = {SNAKECG_LP_WORK, SNAKECG_LJ_WORK, SNAKECG_MM_WORK};
   const sc_int mc = own ? mcap : 0;
@@ -422,7 +422,7 @@ static int work_alloc(sc_scene_work *sw, const double *pk, sc_int ccap, sc_int m
   sw->pose = d; d += 3 * sw->no;
   sw->cs = d; /* (the placement's: written before read) */
   /* zeros: the generated functions' pointers, the shapes (not what the model's sizes or mcap
-   * scale, written before read: a step's rows call this every step) */
+   * scale: written before it is read) */
   memset((void *)sw->ws.arg, 0, (size_t)((char *)sw->kind - (char *)sw->ws.arg));
   memset(sw->shape, 0, sizeof(sc_shape) * (size_t)(sw->nbody + 1));
   sw->start = sw->kind + mc;
