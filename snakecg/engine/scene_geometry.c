@@ -312,10 +312,40 @@ static void touching_normal(const sc_shape *A, const sc_shape *B, const double *
   }
 }
 
+/* The surfaces of A and B certainly farther apart than beyond (1, else 0): the projections
+ * of their cores on a polygon's edge normal or a segment's normal apart by more than beyond,
+ * the radii and 1e-9 scale (a margin over the rounding here and in sc_shape_closest), by the
+ * squares (no square root). Points and half-planes give no axis. */
+static int apart(const sc_shape *A, const sc_shape *B, double beyond, double scale) {
+  const sc_shape *S[2] = {A, B};
+  const double need = beyond + A->radius + B->radius + 1e-9 * scale;
+  int s, k, i;
+  if (!(need < INFINITY) || A->kind == SC_HALFPLANE || B->kind == SC_HALFPLANE) return 0;
+  for (s = 0; s < 2; ++s) {
+    const int ne = S[s]->kind == SC_POLYGON ? S[s]->np : S[s]->kind == SC_SEGMENT ? 1 : 0;
+    for (k = 0; k < ne; ++k) {
+      const double *a = S[s]->p[k], *b = S[s]->p[(k + 1) % S[s]->np];
+      const double ex = a[1] - b[1], ey = b[0] - a[0];
+      double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY}, sep;
+      int t;
+      for (t = 0; t < 2; ++t)
+        for (i = 0; i < S[t]->np; ++i) {
+          const double v = S[t]->p[i][0] * ex + S[t]->p[i][1] * ey;
+          lo[t] = fmin(lo[t], v);
+          hi[t] = fmax(hi[t], v);
+        }
+      sep = fmax(lo[1] - hi[0], lo[0] - hi[1]);
+      if (sep > 0 && sep * sep > need * need * (ex * ex + ey * ey)) return 1;
+    }
+  }
+  return 0;
+}
+
 /* The signed distance of A's and B's surfaces and their contacts (at most SC_TOUCH_MAX, in
- * out; their count in *count), those closer than merge one. A is never a half-plane. */
+ * out; their count in *count), those closer than merge one; where they are certainly
+ * farther apart than beyond (apart), INFINITY and no contacts. A is never a half-plane. */
 SC_INTERNAL double sc_shape_closest(const sc_shape *A, const sc_shape *B, double scale,
-                                    double merge, sc_touch *out, int *count) {
+                                    double merge, double beyond, sc_touch *out, int *count) {
   double pairs[4 * SC_TOUCH_MAX], dist[SC_TOUCH_MAX], core = INFINITY, depth, nrm[2] = {0.0, 0.0};
   int np = 0, i, j, k;
   *count = 0;
@@ -356,6 +386,7 @@ SC_INTERNAL double sc_shape_closest(const sc_shape *A, const sc_shape *B, double
       return dd - A->radius - B->radius;
     }
   }
+  if (apart(A, B, beyond, scale)) return INFINITY;
   merge = fmax(merge, 1e-9 * scale);
   depth = core_overlap(A, B, nrm);
   if (depth > 1e-12 * scale) { /* overlapping cores: their least translation */

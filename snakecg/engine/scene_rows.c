@@ -118,7 +118,7 @@ static sc_int contact_rows(sc_scene_work *sw, const double *P, double *recs, dou
       if (ib < nl && ib - ia < 2) continue; /* neighbouring links */
       far = (sw->reach[ia] + sw->reach[ib] + 2 * tol) * (1 + 1e-9); /* circles apart */
       if (dx * dx + dy * dy > far * far) continue;
-      d = sc_shape_closest(sw->shape + ia, sw->shape + ib, size, tol, t, &count);
+      d = sc_shape_closest(sw->shape + ia, sw->shape + ib, size, tol, tol, t, &count);
       if (d < -tol) {
         double *o = over, idx;
         o[0] = (double)body_kind(sw, ia, &k);
@@ -565,25 +565,25 @@ int SNAKECG_EXPORT(core_scene_gaps)(const sc_scene_state *c) {
   sc_scene_work sw, *swp = &sw; /* (no keep: swp stays &sw) */
   sc_int ia, ib, k, found = 0,
          code = state_work(&swp, c->pk, c->q, c->qo, 0.0, 0, (sc_int)c->pk[SP_MG], 0, 0, 0, 0, 0);
-  const sc_int nl = SNAKECG_NL;
   if (code) return (int)code;
   if (kinematics(&sw, c->q, 0)) {
     work_free(&sw);
     return -4;
   }
   place(&sw, sw.P, c->qo);
-  for (ia = 0; ia < nl + sw.no; ++ia)
+  for (ia = 0; ia < SNAKECG_NL + sw.no; ++ia)
     for (ib = ia + 1; ib < sw.nbody; ++ib) {
       const double *ca = sw.centre + 2 * ia, *cb = sw.centre + 2 * ib;
       sc_touch t[SC_TOUCH_MAX];
       double d, *rec;
       int count;
-      if (ib < nl && ib - ia < 2) continue; /* neighbouring links */
+      if (ib < SNAKECG_NL && ib - ia < 2) continue; /* neighbouring links */
       if (c->pair_a >= 0 && !(ia == c->pair_a && ib == c->pair_b)) continue;
       if (c->pair_a < 0 &&
           hypot(ca[0] - cb[0], ca[1] - cb[1]) > sw.reach[ia] + sw.reach[ib] + c->margin)
         continue;
-      d = sc_shape_closest(sw.shape + ia, sw.shape + ib, c->pk[SP_SIZE], sw.tol, t, &count);
+      d = sc_shape_closest(sw.shape + ia, sw.shape + ib, c->pk[SP_SIZE], sw.tol, INFINITY, t,
+                           &count);
       if (found < c->ccap) {
         rec = c->out + 5 * found;
         rec[0] = (double)body_kind(&sw, ia, &k);
