@@ -330,11 +330,11 @@ static int apart(const sc_shape *A, const sc_shape *B, double beyond, double sca
       int t;
       for (t = 0; t < 2; ++t)
         for (i = 0; i < S[t]->np; ++i) {
-          const double v = S[t]->p[i][0] * ex + S[t]->p[i][1] * ey;
-          lo[t] = fmin(lo[t], v);
-          hi[t] = fmax(hi[t], v);
+          const double v = S[t]->p[i][0] * ex + S[t]->p[i][1] * ey; /* (inline, not libm's) */
+          lo[t] = v < lo[t] ? v : lo[t];
+          hi[t] = v > hi[t] ? v : hi[t];
         }
-      sep = fmax(lo[1] - hi[0], lo[0] - hi[1]);
+      sep = sc_max(lo[1] - hi[0], lo[0] - hi[1]);
       if (sep > 0 && sep * sep > need * need * (ex * ex + ey * ey)) return 1;
     }
   }
