@@ -561,12 +561,11 @@ typedef struct { int kind, np; double p[4][2], radius, normal[2]; } sc_shape;
 typedef struct { double a[2], b[2], n[2]; } sc_touch;
 SC_INTERNAL void sc_shape_centroid(const sc_shape *s, double *c);
 SC_INTERNAL double sc_shape_closest(const sc_shape *A, const sc_shape *B, double scale,
-                                    double merge, sc_touch *out, int *count);
+                                    double merge, double beyond, sc_touch *out, int *count);
 SC_INTERNAL void sc_scene_place(const double *pk, const double *P, const double *qo, int all,
                                 double *cs, sc_shape *shape, double *pose, double *centre,
                                 double *reach);
-/* The rows of a state (scene_rows.c's core_scene_rows, for scene_step.c): outputs RO_*, then
- * the objects' poses (3 n_o) and the contacts (CR_W each); its status (0, SS_*) or < 0. */
+/* A state's rows (scene_rows.c's, for scene_step.c): RO_*, poses (3 n_o), contacts (CR_W) */
 enum { RO_STATUS = 0, RO_NC, RO_M, RO_NB, RO_OVERLAP, RO_POSE = RO_OVERLAP + 6, CR_W = 16 };
 enum { SS_OVERLAP = 3, SS_MORE = 4, SS_FAILED = 6 };
 /* scene_friction.c: a contact's tangent row (t = (-n_y, n_x) on D = J_b - J_a), the pair's
@@ -580,7 +579,7 @@ SC_INTERNAL int sc_friction_solve(sc_int n, sc_int m, sc_int nb, sc_int nc, cons
 SC_INTERNAL int sc_scene_state_rows(const double *pk, const double *q, const double *qo,
                                     double tol, sc_int ccap, sc_int mcap, double *out,
                                     double *M, double *A, double *par, sc_int *kind,
-                                    sc_int *start);
+                                    sc_int *start, void **keep);
 /* core_scene_rows' and core_scene_gaps' arguments (binding.py's SceneStateCall; fields:
  * scene_rows.c); core_scene_step's (SceneStep; fields, ST_* and STEP_*: scene_step.c) */
 typedef struct { const double *pk, *q, *qo; double tol, margin; sc_int ccap, mcap, pair_a,
@@ -596,4 +595,5 @@ typedef struct { const double *pk; double tol, h, impact_speed; const double *ta
   double *Vp, *lam, *info, *ilam, *iinfo, *acc; sc_int status; double *from; sc_int nfrom; }
   sc_scene_step;
 int SNAKECG_EXPORT(core_scene_step)(sc_scene_step *c);
+SC_INTERNAL int sc_scene_step_kept(sc_scene_step *c, void **keep); /* c null: frees *keep */
 #endif

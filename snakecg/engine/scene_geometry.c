@@ -46,6 +46,22 @@ static void point_segment(const double *p, const double *a, const double *b, dou
   out[1] = a[1] + t * d1;
 }
 
+/* Which of the k distances |(x_i, y_i)| can be the least or within tie of it (at most tie
+ * more): the others are certainly farther, by their squares (relative rounding ~1e-16 against
+ * a margin of 1e-13, and of tie itself; squares below 1e-280 not trusted); their distances
+ * (hypot) are not needed. The kept ones' into dist, the others' INFINITY. */
+static void nearest(int k, const double (*xy)[2], double tie, double *dist) {
+  double sq[SC_TOUCH_MAX], least = INFINITY, cut;
+  int i;
+  for (i = 0; i < k; ++i) {
+    sq[i] = xy[i][0] * xy[i][0] + xy[i][1] * xy[i][1];
+    if (sq[i] < least) least = sq[i];
+  }
+  cut = (sqrt(least) * (1 + 1e-13) + tie) * (1 + 1e-13);
+  cut = cut * cut > 1e-280 ? cut * cut : INFINITY;
+  for (i = 0; i < k; ++i) dist[i] = sq[i] > cut ? INFINITY : hypot(xy[i][0], xy[i][1]);
+}
+
 static void put(double *pairs, int *np, const double *p, const double *q) {
   double *o = pairs + 4 * (*np)++;
   o[0] = p[0];
@@ -60,10 +76,19 @@ static void put(double *pairs, int *np, const double *p, const double *q) {
 static void segment_pairs(const double *a0, const double *a1, const double *b0, const double *b1,
                           double scale, double merge, double *pairs, int *np) {
   double da[2] = {a1[0] - a0[0], a1[1] - a0[1]}, db[2] = {b1[0] - b0[0], b1[1] - b0[1]};
-  double la = hypot(da[0], da[1]), lb = hypot(db[0], db[1]);
-  double cross = da[0] * db[1] - da[1] * db[0], c[4][4], dist[4], best;
+  double cross = da[0] * db[1] - da[1] * db[0], c[4][4], d[4][2], dist[4], best, la = 1.0,
+         lb = 1.0;
   int i;
-  if (la > 0 && lb > 0 && fabs(cross) <= 1e-12 * la * lb) { /* parallel: b's ends on a */
+  /* not parallel by the squares (a margin of 1e-6 on rounding; cross^2 above 1e-280: then
+   * neither segment is a point, la, lb > 0): the lengths, not needed, are not taken */
+  const int apart = cross * cross > 1e-280 &&
+                    cross * cross > 1.000001e-24 * (da[0] * da[0] + da[1] * da[1]) *
+                                        (db[0] * db[0] + db[1] * db[1]);
+  if (!apart) {
+    la = hypot(da[0], da[1]);
+    lb = hypot(db[0], db[1]);
+  }
+  if (!apart && la > 0 && lb > 0 && fabs(cross) <= 1e-12 * la * lb) { /* parallel: b's ends on a */
     double u[2] = {da[0] / la, da[1] / la}, s0, s1, lo, hi;
     s0 = (b0[0] - a0[0]) * u[0] + (b0[1] - a0[1]) * u[1];
     s1 = (b1[0] - a0[0]) * u[0] + (b1[1] - a0[1]) * u[1];
@@ -106,9 +131,12 @@ static void segment_pairs(const double *a0, const double *a1, const double *b0, 
   }
   best = INFINITY;
   for (i = 0; i < 4; ++i) {
-    dist[i] = hypot(c[i][2] - c[i][0], c[i][3] - c[i][1]);
-    if (dist[i] < best) best = dist[i];
+    d[i][0] = c[i][2] - c[i][0];
+    d[i][1] = c[i][3] - c[i][1];
   }
+  nearest(4, (const double(*)[2])d, 1e-12 * scale, dist);
+  for (i = 0; i < 4; ++i)
+    if (dist[i] < best) best = dist[i];
   for (i = 0; i < 4; ++i)
     if (dist[i] <= best + 1e-12 * scale) put(pairs, np, c[i], c[i] + 2);
 }
@@ -151,6 +179,9 @@ static double core_overlap(const sc_shape *A, const sc_shape *B, double *n) {
   double h[33][2], depth = INFINITY;
   int m = difference_hull(A, B, h), i;
   if (m < 3) return 0.0;
+  for (i = 0; i < m; ++i) /* the origin outside an edge's line: no depth (c < 0 below) */
+    if (h[i][0] * (h[(i + 1) % m][1] - h[i][1]) - h[i][1] * (h[(i + 1) % m][0] - h[i][0]) < 0)
+      return 0.0;
   for (i = 0; i < m; ++i) {
     const double *a = h[i], *b = h[(i + 1) % m];
     double e0 = b[0] - a[0], e1 = b[1] - a[1], L = hypot(e0, e1);
@@ -281,10 +312,40 @@ static void touching_normal(const sc_shape *A, const sc_shape *B, const double *
   }
 }
 
+/* The surfaces of A and B certainly farther apart than beyond (1, else 0): the projections
+ * of their cores on a polygon's edge normal or a segment's normal apart by more than beyond,
+ * the radii and 1e-9 scale (a margin over the rounding here and in sc_shape_closest), by the
+ * squares (no square root). Points and half-planes give no axis. */
+static int apart(const sc_shape *A, const sc_shape *B, double beyond, double scale) {
+  const sc_shape *S[2] = {A, B};
+  const double need = beyond + A->radius + B->radius + 1e-9 * scale;
+  int s, k, i;
+  if (!(need < INFINITY) || A->kind == SC_HALFPLANE || B->kind == SC_HALFPLANE) return 0;
+  for (s = 0; s < 2; ++s) {
+    const int ne = S[s]->kind == SC_POLYGON ? S[s]->np : S[s]->kind == SC_SEGMENT ? 1 : 0;
+    for (k = 0; k < ne; ++k) {
+      const double *a = S[s]->p[k], *b = S[s]->p[(k + 1) % S[s]->np];
+      const double ex = a[1] - b[1], ey = b[0] - a[0];
+      double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY}, sep;
+      int t;
+      for (t = 0; t < 2; ++t)
+        for (i = 0; i < S[t]->np; ++i) {
+          const double v = S[t]->p[i][0] * ex + S[t]->p[i][1] * ey; /* (inline, not libm's) */
+          lo[t] = v < lo[t] ? v : lo[t];
+          hi[t] = v > hi[t] ? v : hi[t];
+        }
+      sep = sc_max(lo[1] - hi[0], lo[0] - hi[1]);
+      if (sep > 0 && sep * sep > need * need * (ex * ex + ey * ey)) return 1;
+    }
+  }
+  return 0;
+}
+
 /* The signed distance of A's and B's surfaces and their contacts (at most SC_TOUCH_MAX, in
- * out; their count in *count), those closer than merge one. A is never a half-plane. */
+ * out; their count in *count), those closer than merge one; where they are certainly
+ * farther apart than beyond (apart), INFINITY and no contacts. A is never a half-plane. */
 SC_INTERNAL double sc_shape_closest(const sc_shape *A, const sc_shape *B, double scale,
-                                    double merge, sc_touch *out, int *count) {
+                                    double merge, double beyond, sc_touch *out, int *count) {
   double pairs[4 * SC_TOUCH_MAX], dist[SC_TOUCH_MAX], core = INFINITY, depth, nrm[2] = {0.0, 0.0};
   int np = 0, i, j, k;
   *count = 0;
@@ -325,6 +386,7 @@ SC_INTERNAL double sc_shape_closest(const sc_shape *A, const sc_shape *B, double
       return dd - A->radius - B->radius;
     }
   }
+  if (apart(A, B, beyond, scale)) return INFINITY;
   merge = fmax(merge, 1e-9 * scale);
   depth = core_overlap(A, B, nrm);
   if (depth > 1e-12 * scale) { /* overlapping cores: their least translation */
@@ -338,11 +400,16 @@ SC_INTERNAL double sc_shape_closest(const sc_shape *A, const sc_shape *B, double
       segment_of(B, j, &b0, &b1);
       segment_pairs(a0, a1, b0, b1, scale, merge, pairs, &np);
     }
-  for (i = 0; i < np; ++i) {
-    const double *o = pairs + 4 * i;
-    dist[i] = hypot(o[2] - o[0], o[3] - o[1]);
-    if (dist[i] < core) core = dist[i];
+  {
+    double d[SC_TOUCH_MAX][2];
+    for (i = 0; i < np; ++i) {
+      d[i][0] = pairs[4 * i + 2] - pairs[4 * i];
+      d[i][1] = pairs[4 * i + 3] - pairs[4 * i + 1];
+    }
+    nearest(np, (const double(*)[2])d, 1e-12 * scale, dist);
   }
+  for (i = 0; i < np; ++i)
+    if (dist[i] < core) core = dist[i];
   for (i = 0; i < np; ++i) {
     const double *p = pairs + 4 * i, *q = p + 2;
     double n[2];

@@ -54,7 +54,7 @@ typedef struct {
   int placed; /* the bodies' parts that do not move are placed (sc_scene_place's `all`) */
   double tol; /* the contact tolerance (m) */
   sc_work_t ws;
-  double *A, *M, *f, *par, *lam, *w, *a, *st, *P, *J, *Ms, *LU, *afree, *D, *cs;
+  double *base, *A, *M, *f, *par, *lam, *w, *a, *st, *P, *J, *Ms, *LU, *afree, *D, *cs;
   double *prev; /* the last sample's pieces (3 per block: state, forces) */
   const double *prec; /* and its contacts' records */
   sc_int *kind, *start, *piv, pnb; /* pnb: its blocks (-1: none, not solved) */
@@ -117,7 +117,7 @@ static sc_int contact_rows(sc_scene_work *sw, const double *P, double *recs, dou
       if (ib < nl && ib - ia < 2) continue; /* neighbouring links */
       far = (sw->reach[ia] + sw->reach[ib] + 2 * tol) * (1 + 1e-9); /* circles apart */
       if (dx * dx + dy * dy > far * far) continue;
-      d = sc_shape_closest(sw->shape + ia, sw->shape + ib, size, tol, t, &count);
+      d = sc_shape_closest(sw->shape + ia, sw->shape + ib, size, tol, tol, t, &count);
       if (d < -tol) {
         double *o = over, idx;
         o[0] = (double)body_kind(sw, ia, &k);
@@ -359,13 +359,16 @@ failed: /* a generated function refused */
   for (i = SO_NORM_QDD; i < width; ++i) out[i] = NAN;
 }
 
-static void work_free(sc_scene_work *sw) { free(sw->A); }
+static void work_free(sc_scene_work *sw) { free(sw->base); }
+enum { SW_HEAD = (sizeof(sc_scene_work) + sizeof(double) - 1) / sizeof(double) };
 
 /* The scratch of a batch call, one allocation (doubles, then the generated functions'
  * pointers and integers, the blocks' integers, the shapes; 8-byte fields throughout): 0, or
- * -1 out of memory. */
-static int work_alloc(sc_scene_work *sw, const double *pk, sc_int ccap, sc_int mcap) {
+ * -1 out of memory. With own 0 the rows' room (A, par, kind, start: mcap rows) is the
+ * caller's to set and none of what mcap scales is allocated (a state's rows). */
+static int work_alloc(sc_scene_work *sw, const double *pk, sc_int ccap, sc_int mcap, int own) {
   const sc_work_fn fns[] = {SNAKECG_LP_WORK, SNAKECG_LJ_WORK, SNAKECG_MM_WORK};
+  const sc_int mc = own ? mcap : 0;
   sc_int n, nd, k, i, sz[4], most[4] = {0, 0, 0, 0};
   double *d;
   sw->pk = pk;
@@ -383,48 +386,47 @@ static int work_alloc(sc_scene_work *sw, const double *pk, sc_int ccap, sc_int m
     if (fns[k](sz, sz + 1, sz + 2, sz + 3)) return -1;
     for (i = 0; i < 4; ++i) most[i] = sz[i] > most[i] ? sz[i] : most[i];
   }
-  nd = mcap * n + 2 * n * n + 7 * n + 3 * mcap + 3 * mcap + 5 * SNAKECG_NL +
+  nd = mc * n + 2 * n * n + 7 * n + 3 * mc + 3 * mc + 5 * SNAKECG_NL +
        3 * SNAKECG_NL * SNAKECG_NS + SNAKECG_NS * SNAKECG_NS + 3 * sw->nbody + 3 * sw->no + 8 +
-       3 * mcap + (pk[SP_FRICTION] != 0.0 ? ccap * n : 0);
-  sw->A = d = (double *)malloc((size_t)(nd + most[3] + 1) * sizeof(double) +
-                               (size_t)(most[0] + most[1] + 2) * sizeof(double *) +
-                               (size_t)(2 * mcap + n + 2 + most[2] + 1) * sizeof(sc_int) +
-                               (size_t)(sw->nbody + 1) * sizeof(sc_shape));
-  if (!d) return -1;
+       3 * mc + (pk[SP_FRICTION] != 0.0 ? ccap * n : 0);
+  sw->base = (double *)malloc((size_t)(SW_HEAD + nd + most[3] + 1) * sizeof(double) +
+                              (size_t)(most[0] + most[1] + 2) * sizeof(double *) +
+                              (size_t)(2 * mc + n + 2 + most[2] + 1) * sizeof(sc_int) +
+                              (size_t)(sw->nbody + 1) * sizeof(sc_shape));
+  if (!sw->base) return -1;
+  sw->A = d = sw->base + SW_HEAD; /* (the head: a kept state scratch's struct) */
   sw->ws.w = d + nd;
   sw->ws.arg = (const double **)(d + nd + most[3] + 1);
   sw->ws.res = (double **)(sw->ws.arg + most[0] + 1);
   sw->kind = (sc_int *)(sw->ws.res + most[1] + 1);
-  sw->ws.iw = sw->kind + 2 * mcap + n + 2;
+  sw->ws.iw = sw->kind + 2 * mc + n + 2;
   sw->shape = (sc_shape *)(sw->ws.iw + most[2] + 1);
-  /* zeros but for the rows and the generated functions' work vectors (the largest parts,
-   * written before they are read) */
-  memset(d + mcap * n, 0, sizeof(double) * (size_t)(nd - mcap * n));
-  memset((void *)sw->ws.arg, 0, (size_t)((char *)sw->ws.iw - (char *)sw->ws.arg));
-  memset(sw->shape, 0, sizeof(sc_shape) * (size_t)(sw->nbody + 1));
-  d += mcap * n;
-  sw->M = d; d += n * n;
+  d += mc * n; /* the rows, then what is written before it is read: not zeroed */
+  sw->M = d; d += n * n; /* (the forward's full_inertia) */
   sw->LU = d; d += n * n;
   sw->f = d; d += n;
   sw->a = d; d += n;
   sw->afree = d; d += n;
-  sw->par = d; d += 3 * mcap;
-  sw->lam = d; d += mcap;
-  sw->w = d; d += mcap;
-  sw->st = d; d += mcap;
-  sw->P = d; d += 3 * SNAKECG_NL;
+  sw->D = d; d += 2 * n;
+  sw->par = d; d += 3 * mc;
+  sw->lam = d; d += mc;
+  sw->w = d; d += mc;
+  sw->st = d; d += mc;
+  sw->prev = d; d += 3 * mc; /* (read once a sample has written it: pnb) */
+  sw->P = d; d += 3 * SNAKECG_NL; /* (the generated functions' outputs are dense) */
   sw->J = d; d += 3 * SNAKECG_NL * SNAKECG_NS;
   sw->Ms = d; d += SNAKECG_NS * SNAKECG_NS;
   sw->centre = d; d += 2 * sw->nbody;
   sw->reach = d; d += sw->nbody;
   sw->pose = d; d += 3 * sw->no;
-  sw->D = d; d += 2 * n;
-  sw->prev = d; d += 3 * mcap;
   sw->cs = d, sw->T = pk[SP_FRICTION] != 0.0 ? d + 2 * SNAKECG_NL : 0; /* (cs: 2 NL) */
-  sw->start = sw->kind + mcap;
-  sw->piv = sw->start + mcap;
+  /* zeros: the generated functions' pointers, the shapes (not what the model's sizes or mcap
+   * scale: written before it is read) */
+  memset((void *)sw->ws.arg, 0, (size_t)((char *)sw->kind - (char *)sw->ws.arg));
+  memset(sw->shape, 0, sizeof(sc_shape) * (size_t)(sw->nbody + 1));
+  sw->start = sw->kind + mc;
+  sw->piv = sw->start + mc;
   sw->placed = 0, sw->pnb = -1; /* (nothing placed, no last sample) */
-  full_inertia(sw, sw->M); /* the objects' part (M_s: per sample) */
   return 0;
 }
 
@@ -455,7 +457,8 @@ int SNAKECG_EXPORT(core_scene_forward)(const double *pk, sc_int n, const double 
     for (j = 0; j < no3; ++j) ok &= isfinite(fo[i * sf + j]) != 0;
     if (!ok) return (int)(-3 - (i < 2000000000 ? i : 2000000000));
   }
-  if (work_alloc(&sw, pk, ccap, mcap)) return -1;
+  if (work_alloc(&sw, pk, ccap, mcap, 1)) return -1;
+  full_inertia(&sw, sw.M); /* the objects' part (M_s: per sample) */
   width = SO_QDD + SNAKECG_NS + 7 * sw.no + 3 * sw.ng + CR_W * ccap;
   for (i = 0; i < n; ++i) { /* cold at every chunk-th sample of the call */
     if (chunk < 2 || i % chunk == 0) sw.cool = sw.backoff = 0;
@@ -471,10 +474,8 @@ int SNAKECG_EXPORT(core_scene_forward)(const double *pk, sc_int n, const double 
  * pointer (a foreign call's cost grows with its argument count; snakecg/engine/binding.py
  * mirrors it as SceneCall). */
 typedef struct {
-  const double *pk; sc_int n;
-  const double *q; sc_int sq;
-  const double *tau; sc_int st;
-  const double *fo; sc_int sf, ccap, mcap;
+  const double *pk; sc_int n; const double *q; sc_int sq;
+  const double *tau; sc_int st; const double *fo; sc_int sf, ccap, mcap;
   double *out, *A, *lam, *w, *state; sc_int chunk;
 } sc_scene_call;
 
@@ -493,20 +494,24 @@ int SNAKECG_EXPORT(core_scene_forward_call)(const sc_scene_call *c) {
  * records); pair_a, pair_b (gaps: this pair of bodies alone, -1: every pair); out (rows: RO_*,
  * then the contacts, CR_W each; gaps: 5 per pair); M (rows: the bodies' inertia, n x n
  * row-major, or null); A (mcap x n), par (3 per block), kind, start: the rows' blocks. */
-/* rows' outputs (RO_*, engine.h): status (0, SS_*), contacts, rows, blocks, an overlap's
- * record (bodies, depth, tolerance), the objects' poses (3 n_o), then the contacts */
-
-static int state_work(sc_scene_work *sw, const double *pk, const double *q, const double *qo,
-                      double tol, sc_int ccap, sc_int mcap) {
-  sc_int j, no3 = 3 * (sc_int)pk[SP_NO], mg = (sc_int)pk[SP_MG];
-  int ok = 1, fr = pk[SP_FRICTION] != 0; /* (a tangent row beside each contact) */
-  if (ccap < 0 || mcap < (1 + fr) * ccap + mg || mcap > 500 || SNAKECG_NS + no3 > 512)
+/* A state's scratch (where keep is not null: made at the first call into *keep, the caller's
+ * to free, then reused; the same pk, ccap, mcap every call); its rows (A not null) go straight
+ * into A, par, kind, start. */
+static int state_work(sc_scene_work **sw, const double *pk, const double *q, const double *qo,
+                      double tol, sc_int ccap, sc_int mcap, double *A, double *par,
+                      sc_int *kind, sc_int *start, void **keep) {
+  sc_int j, no3 = 3 * (sc_int)pk[SP_NO], fr = pk[SP_FRICTION] != 0; /* (tangent rows) */
+  int ok = 1;
+  if (ccap < 0 || mcap < (1 + fr) * ccap + pk[SP_MG] || mcap > 500 || SNAKECG_NS + no3 > 512)
     return -2;
   for (j = 0; j < SNAKECG_NS; ++j) ok &= isfinite(q[j]) != 0;
   for (j = 0; qo && j < no3; ++j) ok &= isfinite(qo[j]) != 0;
   if (!ok) return -3;
-  if (work_alloc(sw, pk, ccap, mcap)) return -1;
-  if (tol > 0) sw->tol = tol;
+  if (keep && *keep) *sw = (sc_scene_work *)*keep; /* (its fixed bodies placed already) */
+  else if (work_alloc(*sw, pk, ccap, mcap, A == 0)) return -1;
+  else if (keep) *keep = *sw = (sc_scene_work *)memcpy((*sw)->base, *sw, sizeof(**sw));
+  if (A) (*sw)->A = A, (*sw)->par = par, (*sw)->kind = kind, (*sw)->start = start;
+  (*sw)->tol = tol > 0 ? tol : pk[SP_TOL];
   return 0;
 }
 
@@ -518,41 +523,36 @@ static int state_work(sc_scene_work *sw, const double *pk, const double *q, cons
  * 0, -1 out of memory, -2 on sizes out of range, -3 on an input not finite. */
 int SNAKECG_EXPORT(core_scene_rows)(const sc_scene_state *c) {
   int code = sc_scene_state_rows(c->pk, c->q, c->qo, c->tol, c->ccap, c->mcap, c->out, c->M,
-                                 c->A, c->par, c->kind, c->start);
+                                 c->A, c->par, c->kind, c->start, 0);
   return code < 0 ? code : 0;
 }
 
 SC_INTERNAL int sc_scene_state_rows(const double *pk, const double *q, const double *qo,
                                     double tol, sc_int ccap, sc_int mcap, double *out,
                                     double *M, double *A, double *par, sc_int *kind,
-                                    sc_int *start) {
-  sc_scene_work sw;
-  sc_int nc, m, i, code = state_work(&sw, pk, q, qo, tol, ccap, mcap);
+                                    sc_int *start, void **keep) {
+  sc_scene_work local, *sw = &local;
+  sc_int nc, m, i, code = state_work(&sw, pk, q, qo, tol, ccap, mcap, A, par, kind, start, keep);
   if (code) return (int)code;
-  for (i = 0; i < RO_POSE + 3 * sw.no; ++i) out[i] = 0.0;
-  if (kinematics(&sw, q, M != 0)) {
-    out[RO_STATUS] = SS_FAILED;
-    work_free(&sw);
-    return SS_FAILED;
+  for (i = 0; i < RO_POSE + 3 * sw->no; ++i) out[i] = 0.0;
+  code = kinematics(sw, q, M != 0) ? SS_FAILED : 0;
+  if (!code) {
+    place(sw, sw->P, qo);
+    for (i = 0; i < 3 * sw->no; ++i) out[RO_POSE + i] = sw->pose[i];
+    nc = contact_rows(sw, sw->P, out + RO_POSE + 3 * sw->no, out + RO_OVERLAP, sw->ccap);
+    code = nc < 0 ? -nc : 0;
   }
-  place(&sw, sw.P, qo);
-  for (i = 0; i < 3 * sw.no; ++i) out[RO_POSE + i] = sw.pose[i];
-  nc = contact_rows(&sw, sw.P, out + RO_POSE + 3 * sw.no, out + RO_OVERLAP, sw.ccap);
-  if (nc < 0) {
-    out[RO_STATUS] = (double)-nc;
-    work_free(&sw);
-    return (int)-nc;
+  if (!code) {
+    m = ground_rows(sw, nc);
+    out[RO_NC] = (double)nc;
+    out[RO_M] = (double)m;
+    out[RO_NB] = (double)(nc + sw->ng);
+    if (sw->T) memcpy(A + m * sw->n, sw->T, sizeof(double) * (size_t)(nc * sw->n)); /* (T) */
+    if (M) full_inertia(sw, M);
   }
-  m = ground_rows(&sw, nc);
-  out[RO_NC] = (double)nc, out[RO_M] = (double)m, out[RO_NB] = (double)(nc + sw.ng);
-  memcpy(A, sw.A, sizeof(double) * (size_t)(m * sw.n));
-  if (sw.T) memcpy(A + m * sw.n, sw.T, sizeof(double) * (size_t)(nc * sw.n)); /* tangents */
-  memcpy(par, sw.par, sizeof(double) * (size_t)(3 * (nc + sw.ng)));
-  memcpy(kind, sw.kind, sizeof(sc_int) * (size_t)(nc + sw.ng));
-  memcpy(start, sw.start, sizeof(sc_int) * (size_t)(nc + sw.ng));
-  if (M) full_inertia(&sw, M);
-  work_free(&sw);
-  return 0;
+  out[RO_STATUS] = (double)code;
+  if (!keep) work_free(sw);
+  return (int)code;
 }
 
 /* The signed distance of every pair of bodies that can touch (the pairs of contact_rows)
@@ -562,28 +562,28 @@ SC_INTERNAL int sc_scene_state_rows(const double *pk, const double *q, const dou
  * pairs found, beyond ccap not written), -1 out of memory, -2 on sizes, -3 on an input not
  * finite, -4 where a generated function refused. */
 int SNAKECG_EXPORT(core_scene_gaps)(const sc_scene_state *c) {
-  sc_scene_work sw;
-  sc_int ia, ib, k, found = 0;
-  sc_int code = state_work(&sw, c->pk, c->q, c->qo, 0.0, 0, (sc_int)c->pk[SP_MG]);
-  const sc_int nl = SNAKECG_NL;
+  sc_scene_work sw, *swp = &sw; /* (no keep: swp stays &sw) */
+  sc_int ia, ib, k, found = 0,
+         code = state_work(&swp, c->pk, c->q, c->qo, 0.0, 0, (sc_int)c->pk[SP_MG], 0, 0, 0, 0, 0);
   if (code) return (int)code;
   if (kinematics(&sw, c->q, 0)) {
     work_free(&sw);
     return -4;
   }
   place(&sw, sw.P, c->qo);
-  for (ia = 0; ia < nl + sw.no; ++ia)
+  for (ia = 0; ia < SNAKECG_NL + sw.no; ++ia)
     for (ib = ia + 1; ib < sw.nbody; ++ib) {
       const double *ca = sw.centre + 2 * ia, *cb = sw.centre + 2 * ib;
       sc_touch t[SC_TOUCH_MAX];
       double d, *rec;
       int count;
-      if (ib < nl && ib - ia < 2) continue; /* neighbouring links */
+      if (ib < SNAKECG_NL && ib - ia < 2) continue; /* neighbouring links */
       if (c->pair_a >= 0 && !(ia == c->pair_a && ib == c->pair_b)) continue;
       if (c->pair_a < 0 &&
           hypot(ca[0] - cb[0], ca[1] - cb[1]) > sw.reach[ia] + sw.reach[ib] + c->margin)
         continue;
-      d = sc_shape_closest(sw.shape + ia, sw.shape + ib, c->pk[SP_SIZE], sw.tol, t, &count);
+      d = sc_shape_closest(sw.shape + ia, sw.shape + ib, c->pk[SP_SIZE], sw.tol, INFINITY, t,
+                           &count);
       if (found < c->ccap) {
         rec = c->out + 5 * found;
         rec[0] = (double)body_kind(&sw, ia, &k);

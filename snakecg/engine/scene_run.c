@@ -211,9 +211,8 @@ static int shorten(sc_scene_run *r, double *h) {
   return 0;
 }
 
-/* Go on with run r: RUN_* (why it returned), or < 0 (core_scene_step's or the gaps'
- * refusal: -1 memory, -2 sizes, -3 a state not finite, -4, -5 a pair's distance). */
-int SNAKECG_EXPORT(core_scene_run)(sc_scene_run *r) {
+/* core_scene_run, its steps' scratch in *kept. */
+static int run_on(sc_scene_run *r, void **kept) {
   sc_scene_step *st = r->st;
   const double eps = 1e-9 * r->dt;
   sc_int steps = 0;
@@ -242,7 +241,7 @@ int SNAKECG_EXPORT(core_scene_run)(sc_scene_run *r) {
     r->phase = PH_STEP;
     for (tries = 0; tries < RUN_TRIES; ++tries) {
       st->h = h;
-      if ((code = SNAKECG_EXPORT(core_scene_step)(st))) return code;
+      if ((code = sc_scene_step_kept(st, kept))) return code;
       status = (int)st->status;
       if (status == STEP_NOT_CONVERGED) return RUN_NOT_CONVERGED;
       if (status == STEP_DONE || status == STEP_IMPACT_NOT_CONVERGED) break;
@@ -261,6 +260,16 @@ int SNAKECG_EXPORT(core_scene_run)(sc_scene_run *r) {
     }
   }
   return RUN_END;
+}
+
+/* Go on with run r: RUN_* (why it returned), or < 0 (core_scene_step's or the gaps'
+ * refusal: -1 memory, -2 sizes, -3 a state not finite, -4, -5 a pair's distance). The steps
+ * of one call share their scratch (made at its first step). */
+int SNAKECG_EXPORT(core_scene_run)(sc_scene_run *r) {
+  void *kept = 0;
+  int code = run_on(r, &kept);
+  sc_scene_step_kept(0, &kept);
+  return code;
 }
 
 /* n runs, each to its end (a batch: no caller's law, no impacts returned, no record or a

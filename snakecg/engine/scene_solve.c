@@ -225,7 +225,7 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
                          double *work, sc_int *iwork) {
   double *L = work, *Z = L + n * n, *G = Z + n * m, *b = G + m * m, *gam = b + m,
          *keep = gam + nb, *zero = keep + m, *rest = zero + m, res[3] = {NAN, NAN, NAN};
-  sc_int i, j, k, total_sweeps = 0, passes = 0, defect = 0, chunk = CHUNK;
+  sc_int i, j, k, t, total_sweeps = 0, passes = 0, defect = 0, chunk = CHUNK;
   sc_int *state = iwork, *iw2 = iwork + nb, *prev = iw2 + 3 * (m + nb);
   sc_problem p;
   int dep = 0, ok = 0;
@@ -239,10 +239,20 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
   }
   /* with M = L L^T: g = L^-1 f (in a), Z = L^-1 A^T (n x m: coordinate i's row at Z + i m,
    * every row of A at once); then G = Z^T Z and b = Z^T g + c, summed over the coordinates
-   * (G's lower triangle, mirrored: symmetric by construction) */
+   * (G's lower triangle, mirrored: symmetric by construction). M's rows from t on are
+   * diagonal (the objects' m, m, I after M_s): there L's row is its diagonal alone and Z's
+   * row A's column over it (the terms left out are zeros) */
+  for (t = n; t > 0; --t) {
+    for (j = 0; j < t - 1 && M[(t - 1) * n + j] == 0.0; ++j) continue;
+    if (j < t - 1) break;
+  }
   for (i = 0; i < n; ++i) a[i] = f[i];
   sc_lower_solve(n, L, a);
-  for (i = 0; i < n; ++i) { /* (four rows of Z at a time: a fourth of the loads and stores) */
+  for (i = t; i < n; ++i) {
+    double *restrict zi = Z + i * m;
+    for (j = 0; j < m; ++j) zi[j] = A[j * n + i] / L[i * n + i];
+  }
+  for (i = 0; i < t; ++i) { /* (four rows of Z at a time: a fourth of the loads and stores) */
     double *restrict zi = Z + i * m;
     const double *Li = L + i * n;
     for (j = 0; j < m; ++j) zi[j] = A[j * n + i];
@@ -439,10 +449,10 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
     for (j = 0; j < k; ++j) t += zi[iw2[j]] * lam[iw2[j]];
     a[i] = t;
   }
-  for (i = n - 1; i >= 0; --i) {
-    double t = a[i];
-    for (k = i + 1; k < n; ++k) t -= L[k * n + i] * a[k];
-    a[i] = t / L[i * n + i];
+  for (i = n - 1; i >= 0; --i) { /* (L's column i is zero from t on, below i) */
+    double s = a[i];
+    for (k = i + 1; k < (i < t ? t : 0); ++k) s -= L[k * n + i] * a[k];
+    a[i] = s / L[i * n + i];
   }
   if (!ok) {
     for (i = 0; i < n; ++i) a[i] = NAN;

@@ -180,22 +180,54 @@ static void figures(sc_scene_step *c, sc_int n) {
   c->acc[ST_NC] = (double)nc;
 }
 
+/* A run's scratch of its steps, kept from one to the next (sc_scene_step_kept): the bias
+ * forces' work, the step's doubles, the rows' scratch (scene_rows.c's). */
+typedef struct { sc_work_t ws; double *d; void *rows; } step_keep;
+
+static void keep_free(step_keep *k) {
+  if (!k) return;
+  sc_work_free(&k->ws);
+  free(k->d);
+  free(k->rows);
+  free(k);
+}
+
 /* One step (or, h = 0, the rows at x): c->status says how it ended. Returns 0, -1 out of
  * memory, -2 on sizes out of range, -3 on a state not finite. */
 int SNAKECG_EXPORT(core_scene_step)(sc_scene_step *c) {
-  const double *pk = c->pk;
-  const sc_int no = (sc_int)pk[SP_NO], n = SNAKECG_NS + 3 * no, mc = c->mcap;
+  void *keep = 0;
+  int code = sc_scene_step_kept(c, &keep);
+  keep_free((step_keep *)keep);
+  return code;
+}
+
+/* core_scene_step with its scratch kept in *keep (null at a run's first step; the same c's
+ * sizes at every call), for the next step; c null: *keep freed. */
+SC_INTERNAL int sc_scene_step_kept(sc_scene_step *c, void **keep) {
+  const double *pk = c ? c->pk : 0;
+  const sc_int no = c ? (sc_int)pk[SP_NO] : 0, n = SNAKECG_NS + 3 * no, mc = c ? c->mcap : 0;
   const sc_work_fn fns[] = {SNAKECG_BF_WORK};
-  sc_work_t ws;
+  step_keep *kp = (step_keep *)*keep;
   double *d, *f, *fgen, *hb, *xp, *scratch;
   sc_int i, j, k, m1, nc1;
   int code;
+  if (!c) {
+    keep_free(kp);
+    *keep = 0;
+    return 0;
+  }
+  if (!kp) { /* (freed by the caller, whole or in part) */
+    if (!(*keep = kp = (step_keep *)calloc(1, sizeof(step_keep)))) return -1;
+    if (sc_work_alloc(&kp->ws, fns, SC_COUNT(fns))) return -1;
+    kp->d = (double *)malloc(sizeof(double) * (size_t)(4 * n + SNAKECG_NS + 9 * mc + 8));
+    if (!kp->d) return -1;
+  }
   c->acc[ST_IMPACT] = 0.0;
   c->acc[ST_LOSS] = 0.0;
   if (!(c->h > 0)) {
     c->nfrom = 0; /* no pieces yet */
     code = sc_scene_state_rows(pk, c->x, c->x + SNAKECG_NS, c->tol, c->ccap, mc, c->out, c->M,
-                               c->A, c->par, c->kind, c->start);
+                               c->A, c->par, c->kind, c->start, &kp->rows);
     if (code < 0) return code;
     c->status = code;
     if (code == 0) figures(c, n);
@@ -203,26 +235,18 @@ int SNAKECG_EXPORT(core_scene_step)(sc_scene_step *c) {
   }
   for (i = 0; i < n; ++i)
     if (!isfinite(c->x[i]) || !isfinite(c->V[i])) return -3;
-  if (sc_work_alloc(&ws, fns, SC_COUNT(fns))) return -1;
-  d = (double *)malloc(sizeof(double) * (size_t)(4 * n + SNAKECG_NS + 9 * mc + 8));
-  if (!d) {
-    sc_work_free(&ws);
-    return -1;
-  }
+  d = kp->d;
   f = d;
   fgen = f + n;
   xp = fgen + n;
   hb = xp + n;
   scratch = hb + SNAKECG_NS; /* 9 mcap: the solve's sizes, offsets, w, states, start */
-  ws.arg[BF_IN_q] = c->x; /* 1. */
-  ws.arg[BF_IN_v] = c->V;
-  ws.arg[BF_IN_K] = pk + (sc_int)pk[SP_K];
-  ws.res[BF_OUT_h] = hb;
-  code = SNAKECG_BF(ws.arg, ws.res, ws.iw, ws.w, 0);
-  sc_work_free(&ws);
-  if (code) {
+  kp->ws.arg[BF_IN_q] = c->x; /* 1. */
+  kp->ws.arg[BF_IN_v] = c->V;
+  kp->ws.arg[BF_IN_K] = pk + (sc_int)pk[SP_K];
+  kp->ws.res[BF_OUT_h] = hb;
+  if (SNAKECG_BF(kp->ws.arg, kp->ws.res, kp->ws.iw, kp->ws.w, 0)) {
     c->status = SS_FAILED;
-    free(d);
     return 0;
   }
   for (i = 0; i < n; ++i) fgen[i] = i >= SNAKECG_NS ? c->fo[i - SNAKECG_NS] : 0.0;
@@ -236,15 +260,13 @@ int SNAKECG_EXPORT(core_scene_step)(sc_scene_step *c) {
   code = solve(c, n, c->h, f, scratch, c->Vp, c->lam, c->info); /* 2. */
   if (code || c->info[0] != 0.0) {
     c->status = STEP_NOT_CONVERGED;
-    free(d);
     return code == -1 ? -1 : 0;
   }
   for (i = 0; i < n; ++i) xp[i] = c->x[i] + c->h * c->Vp[i]; /* 3. */
   code = sc_scene_state_rows(pk, xp, xp + SNAKECG_NS, c->tol, c->ccap, mc, c->out1, c->M1,
-                             c->A1, c->par1, c->kind1, c->start1);
+                             c->A1, c->par1, c->kind1, c->start1, &kp->rows);
   if (code != 0) {
     c->status = code > 0 ? code : c->status;
-    free(d);
     return code < 0 ? code : 0;
   }
   step_work(c, n, c->Vp); /* 4. */
@@ -287,6 +309,5 @@ int SNAKECG_EXPORT(core_scene_step)(sc_scene_step *c) {
     }
   }
   figures(c, n);
-  free(d);
   return code == -1 ? -1 : 0;
 }
