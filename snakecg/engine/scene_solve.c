@@ -26,7 +26,9 @@
  *   2. the KKT conditions checked on the result; a violated piece is switched (a primal-dual
  *      active-set step) and step 1 repeated;
  *   3. the pieces start from the caller's where given (core_scene_solve_s: a time step's,
- *      the last step's pieces; a few passes), then from the held guess (every block held)
+ *      the last step's pieces: that piece first solved in the primal, scene_primal.c, without
+ *      G, and kept where its KKT conditions hold; else a few passes), then from the held
+ *      guess (every block held)
  *      where the rows are at most the coordinates; else, or when that fails within a few
  *      passes, from block
  *      Gauss-Seidel sweeps (each block minimised exactly: a clamp, or a 2-D trust-region
@@ -216,6 +218,86 @@ static int active_set(sc_problem *p, sc_int max_pass, double *work, sc_int *iwor
   return 0;
 }
 
+/* The scales: forces (what would stop the rows' accelerations, and the sets' sizes),
+ * accelerations; from G's diagonal (dg[i * stride]) and b. */
+static void scales(sc_problem *p, const double *dg, sc_int stride, const double *b) {
+  double fs = 0.0, ws = 0.0;
+  sc_int i, k;
+  for (i = 0; i < p->m; ++i) {
+    const double d = dg[i * stride];
+    if (d > 0 && fabs(b[i]) / d > fs) fs = fabs(b[i]) / d;
+    if (fabs(b[i]) > ws) ws = fabs(b[i]);
+  }
+  for (k = 0; k < p->nb; ++k)
+    for (i = 0; i < 3; ++i)
+      if (isfinite(p->par[3 * k + i]) && fabs(p->par[3 * k + i]) > fs)
+        fs = fabs(p->par[3 * k + i]);
+  for (i = 0; i < p->m; ++i) {
+    double g = dg[i * stride] * fs;
+    if (g > ws) ws = g;
+  }
+  p->fscale = fs > 0 ? fs : 1.0;
+  p->wscale = ws > 0 ? ws : 1.0;
+}
+
+/* The pieces and forces from the caller's (3 per block: the code of state_out, -1 none: held;
+ * the forces: a sliding 2-D block's angle, the held rows' start, which dependent held rows
+ * keep: the basic solution near the last one, inside the sets). */
+static void start_from(sc_problem *p, const double *from) {
+  sc_int i, k;
+  for (i = 0; i < p->m; ++i) p->lam[i] = 0.0;
+  for (k = 0; k < p->nb; ++k) {
+    const double *q = p->par + 3 * k, *s = from + 3 * k;
+    const sc_int kind = p->kind[k], r = p->start[k], code = (sc_int)s[0];
+    int zero = kind == K_BOX ? !(q[0] > 0) : kind == K_DISC ? !(q[0] > 0) :
+               kind == K_SPLIT ? !(q[2] > 0 && (q[0] > 0 || q[1] > 0)) : 0;
+    p->gamma[k] = 0.0;
+    p->state[k] = zero || (code == S_ZERO && kind != K_FREE) ? S_ZERO : S_HELD;
+    if (zero || p->state[k] == S_ZERO) continue;
+    for (i = 0; i < sc_block_size(kind); ++i) p->lam[r + i] = s[1 + i];
+    if (code < S_SLIDE || kind < K_BOX) continue;
+    if (kind == K_BOX) p->lam[r] = code == 4 ? -q[0] : q[0];
+    else if (s[1] == 0.0 && s[2] == 0.0) continue;
+    p->state[k] = S_SLIDE;
+  }
+}
+
+/* The warm start's piece solved in the primal (scene_primal.c), kept where the KKT conditions
+ * hold on it and its forces are unique (no block off the held ones without acceleration): G's
+ * diagonal and b summed as G's own loop does (the same scales). Returns 1 when kept. */
+static int primal_start(sc_problem *p, const double *Z, const double *g, const double *c,
+                        const double *from, double *dg, double *work, sc_int *iwork,
+                        double *res, sc_int *defect, int *dep) {
+  const sc_int n = p->n, m = p->m;
+  sc_int i, j, k;
+  int ok, r;
+  for (j = 0; j < m; ++j) {
+    double d = 0.0, e = 0.0;
+    for (i = 0; i < n; i += 4) {
+      const double y0 = Z[i * m + j], y1 = i + 1 < n ? Z[(i + 1) * m + j] : 0.0,
+                   y2 = i + 2 < n ? Z[(i + 2) * m + j] : 0.0,
+                   y3 = i + 3 < n ? Z[(i + 3) * m + j] : 0.0;
+      d += (y0 * y0 + y1 * y1) + (y2 * y2 + y3 * y3);
+      e += (y0 * g[i] + y1 * (i + 1 < n ? g[i + 1] : 0.0)) +
+           (y2 * (i + 2 < n ? g[i + 2] : 0.0) + y3 * (i + 3 < n ? g[i + 3] : 0.0));
+    }
+    dg[j] = d;
+    p->b[j] = c ? e + c[j] : e;
+  }
+  scales(p, dg, 1, p->b);
+  start_from(p, from);
+  r = sc_primal_piece(p, Z, g, c, work, iwork, defect);
+  ok = r > 0 && !kkt(p, res, 1) && res[0] <= TOL_ACCEPT && res[1] <= TOL_ACCEPT &&
+       res[2] <= TOL_ACCEPT;
+  for (k = 0; k < p->nb && ok && r == 2; ++k) /* (the dual's next choice: a contact opened) */
+    if (p->kind[k] == K_UNILATERAL && p->state[k] == S_HELD &&
+        p->lam[p->start[k]] <= 1e-12 * p->fscale)
+      ok = 0;
+  *dep = ok ? r - 1 : 0;
+  sc_primal_tally(ok);
+  return ok;
+}
+
 /* One sample. M (n x n), f (n), A (m x n) row-major; out: lam (m), a (n), w (m), state (nb),
  * info (INFO_WIDTH). Scratch: work and iwork sized by scene_solve_work. */
 static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const double *f,
@@ -228,7 +310,7 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
   sc_int i, j, k, total_sweeps = 0, passes = 0, defect = 0, chunk = CHUNK;
   sc_int *state = iwork, *iw2 = iwork + nb, *prev = iw2 + 3 * (m + nb);
   sc_problem p;
-  int dep = 0, ok = 0;
+  int dep = 0, ok = 0, primal = 0;
   memset(info, 0, sizeof(double) * INFO_WIDTH);
   for (i = 0; i < n * n; ++i) L[i] = M[i];
   if (!sc_cholesky(n, L, n, 1e-14)) {
@@ -256,6 +338,14 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
       for (j = 0; j < m; ++j) zi[j] -= Li[k] * Z[k * m + j];
     for (j = 0; j < m; ++j) zi[j] /= Li[i];
   }
+  p.n = n; p.m = m; p.nb = nb; p.kind = kind; p.start = start; p.par = par;
+  p.G = G; p.b = b; p.lam = lam; p.w = w; p.gamma = gam; p.state = state;
+  if (from && m > 0 && sc_primal_tally(-1)) /* the warm start's piece, first in the primal */
+    ok = primal = primal_start(&p, Z, a, c, from, keep, rest, iw2, res, &defect, &dep);
+  if (primal) {
+    passes = 1;
+    goto answered;
+  }
   for (j = 0; j < m; ++j) {
     b[j] = zero[j] = 0.0;
     for (k = 0; k <= j; ++k) G[j * m + k] = 0.0;
@@ -277,47 +367,15 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
     for (k = 0; k < j; ++k) G[k * m + j] = G[j * m + k];
     if (c) b[j] += c[j];
   }
-  p.n = n; p.m = m; p.nb = nb; p.kind = kind; p.start = start; p.par = par;
-  p.G = G; p.b = b; p.lam = lam; p.w = w; p.gamma = gam; p.state = state;
-  { /* scales: forces (what would stop the rows' accelerations, and the sets' sizes),
-       accelerations */
-    double fs = 0.0, ws = 0.0;
-    for (i = 0; i < m; ++i) {
-      if (G[i * m + i] > 0 && fabs(b[i]) / G[i * m + i] > fs) fs = fabs(b[i]) / G[i * m + i];
-      if (fabs(b[i]) > ws) ws = fabs(b[i]);
-    }
-    for (k = 0; k < nb; ++k)
-      for (i = 0; i < 3; ++i)
-        if (isfinite(par[3 * k + i]) && fabs(par[3 * k + i]) > fs) fs = fabs(par[3 * k + i]);
-    for (i = 0; i < m; ++i) {
-      double g = G[i * m + i] * fs;
-      if (g > ws) ws = g;
-    }
-    p.fscale = fs > 0 ? fs : 1.0;
-    p.wscale = ws > 0 ? ws : 1.0;
-  }
+  scales(&p, G, m + 1, b);
   for (i = 0; i < m; ++i) lam[i] = 0.0;
   for (k = 0; k < nb; ++k) gam[k] = 0.0;
   if (m == 0) {
     ok = 1;
     res[0] = res[1] = res[2] = 0.0;
   }
-  if (!ok && from) { /* the active set from the caller's pieces (3 per block: the code of
-    state_out, -1 none: held; the forces: a sliding 2-D block's angle, the held rows' start,
-    which dependent held rows keep: the basic solution near the last one, inside the sets) */
-    for (k = 0; k < nb; ++k) {
-      const double *q = par + 3 * k, *s = from + 3 * k;
-      sc_int r = start[k], code = (sc_int)s[0], nk = sc_block_size(kind[k]);
-      int zero = kind[k] == K_BOX ? !(q[0] > 0) : kind[k] == K_DISC ? !(q[0] > 0) :
-                 kind[k] == K_SPLIT ? !(q[2] > 0 && (q[0] > 0 || q[1] > 0)) : 0;
-      state[k] = zero || (code == S_ZERO && kind[k] != K_FREE) ? S_ZERO : S_HELD;
-      if (zero || state[k] == S_ZERO) continue;
-      for (i = 0; i < nk; ++i) lam[r + i] = s[1 + i];
-      if (code < S_SLIDE || kind[k] < K_BOX) continue;
-      if (kind[k] == K_BOX) lam[r] = code == 4 ? -q[0] : q[0];
-      else if (s[1] == 0.0 && s[2] == 0.0) continue;
-      state[k] = S_SLIDE;
-    }
+  if (!ok && from) { /* the active set from the caller's pieces (start_from) */
+    start_from(&p, from);
     ok = active_set(&p, FROM_PASSES, rest, iw2, &passes, &defect, res);
     if (!ok) { /* else today's order from zero forces */
       for (i = 0; i < m; ++i) lam[i] = 0.0;
@@ -409,6 +467,7 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
       kkt(&p, res, 0);
     }
   }
+answered:
   info[INFO_STATUS] = ok ? ST_SOLVED : ST_NOT_CONVERGED;
   info[INFO_DEPENDENT] = (double)dep;
   info[INFO_PRIMAL] = res[0];
@@ -454,8 +513,8 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
 void SNAKECG_EXPORT(core_scene_solve_work)(sc_int n, sc_int m, sc_int nb, sc_int *nd, sc_int *ni) {
   sc_int u = m + nb;
   *nd = n * n + n * m + m * m + m + nb + (u * u + 3 * u + 2 * m * m + 3 * m + 16) +
-        2 * m;
-  *ni = nb + 4 * (m + nb) + 16;
+        2 * m + sc_primal_work(n, m);
+  *ni = nb + 4 * (m + nb) + 16 + n;
 }
 
 /* A batch of samples of equal sizes n; sample s has m[s] rows and nb[s] blocks (padded to
