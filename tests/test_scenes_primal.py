@@ -117,8 +117,8 @@ def _polished(p, V0, lam0, iters=30):
     its force's slack to the disc's edge, a contact held where its dual is the larger
     relative to the forces' than its motion); Newton in NumPy on the piece's primal,
     min 1/2 |V - V*|_M^2 + sum s_i |w_i| over the sliding discs s.t. w = A V + c = 0 on the
-    held rows (the KKT system by least squares: dependent rows allowed). Returns V and the forces (lam_H the KKT
-    multipliers, a sliding disc's -s w / |w|)."""
+    held rows (the KKT system by least squares: dependent rows allowed). Returns V and the
+    forces (lam_H the KKT multipliers, a sliding disc's -s w / |w|)."""
     M, f, A, c = p["M"], p["f"], p["A"], p["c"]
     w0 = A @ V0 + c
     W, F = max(np.abs(w0).max(), 1e-300), max(np.abs(lam0).max(), 1e-300)
