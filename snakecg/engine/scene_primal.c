@@ -1,5 +1,6 @@
 /* snakecg's engine: a general scene's piece solved in the primal, in the coordinates' n
- * unknowns instead of the rows' m forces (scene_solve.c's warm start).
+ * unknowns instead of the rows' m forces (scene_solve.c's warm start, where m > n: the pegs
+ * row's 22-33 rows on 13 coordinates; where m <= n the dual is the smaller and keeps it).
  *
  * On a piece (scene_solve.c's header: every block held, zero, or sliding), the dual's
  * problem is the Lagrange dual of the primal one in the accelerations (velocities in a time

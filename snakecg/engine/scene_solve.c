@@ -340,7 +340,8 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
   }
   p.n = n; p.m = m; p.nb = nb; p.kind = kind; p.start = start; p.par = par;
   p.G = G; p.b = b; p.lam = lam; p.w = w; p.gamma = gam; p.state = state;
-  if (from && m > 0 && sc_primal_tally(-1)) /* the warm start's piece, first in the primal */
+  if (from && m > n && sc_primal_tally(-1)) /* the warm start's piece, first in the primal
+    where its n unknowns are fewer than the dual's m */
     ok = primal = primal_start(&p, Z, a, c, from, keep, rest, iw2, res, &defect, &dep);
   if (primal) {
     passes = 1;
