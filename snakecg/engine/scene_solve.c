@@ -263,27 +263,30 @@ static void start_from(sc_problem *p, const double *from) {
 }
 
 /* The warm start's piece solved in the primal (scene_primal.c), kept where the KKT conditions
- * hold on it and its forces are unique (no block off the held ones without acceleration): G's
- * diagonal and b summed as G's own loop does (the same scales). Returns 1 when kept. */
+ * hold on it and, where the face's rows are dependent, its forces are the dual's minimum-norm
+ * ones (the dual would next try opening a contact at zero force: then not kept). G's
+ * diagonal and b are summed as G's own loop does (the same scales; dg: 2 m scratch). Returns
+ * 1 when kept (dep: the dependent flag, defect: the held rows' rank defect). */
 static int primal_start(sc_problem *p, const double *Z, const double *g, const double *c,
                         const double *from, double *dg, double *work, sc_int *iwork,
                         double *res, sc_int *defect, int *dep) {
   const sc_int n = p->n, m = p->m;
   sc_int i, j, k;
   int ok, r;
-  for (j = 0; j < m; ++j) {
-    double d = 0.0, e = 0.0;
-    for (i = 0; i < n; i += 4) {
-      const double y0 = Z[i * m + j], y1 = i + 1 < n ? Z[(i + 1) * m + j] : 0.0,
-                   y2 = i + 2 < n ? Z[(i + 2) * m + j] : 0.0,
-                   y3 = i + 3 < n ? Z[(i + 3) * m + j] : 0.0;
-      d += (y0 * y0 + y1 * y1) + (y2 * y2 + y3 * y3);
-      e += (y0 * g[i] + y1 * (i + 1 < n ? g[i + 1] : 0.0)) +
-           (y2 * (i + 2 < n ? g[i + 2] : 0.0) + y3 * (i + 3 < n ? g[i + 3] : 0.0));
+  double *restrict d = dg, *restrict e = p->b;
+  for (j = 0; j < m; ++j) d[j] = e[j] = dg[m + j] = 0.0;
+  for (i = 0; i < n; i += 4) { /* (four coordinates at a time, missing ones zero) */
+    const double *restrict z0 = Z + i * m, *restrict z1 = i + 1 < n ? z0 + m : dg + m,
+                 *restrict z2 = i + 2 < n ? z0 + 2 * m : dg + m,
+                 *restrict z3 = i + 3 < n ? z0 + 3 * m : dg + m;
+    const double a0 = g[i], a1 = i + 1 < n ? g[i + 1] : 0.0, a2 = i + 2 < n ? g[i + 2] : 0.0,
+                 a3 = i + 3 < n ? g[i + 3] : 0.0;
+    for (j = 0; j < m; ++j) {
+      d[j] += (z0[j] * z0[j] + z1[j] * z1[j]) + (z2[j] * z2[j] + z3[j] * z3[j]);
+      e[j] += (z0[j] * a0 + z1[j] * a1) + (z2[j] * a2 + z3[j] * a3);
     }
-    dg[j] = d;
-    p->b[j] = c ? e + c[j] : e;
   }
+  for (j = 0; c && j < m; ++j) e[j] += c[j];
   scales(p, dg, 1, p->b);
   start_from(p, from);
   r = sc_primal_piece(p, Z, g, c, work, iwork, defect);
