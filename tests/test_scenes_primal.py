@@ -14,7 +14,7 @@ Held to references written here apart:
 * the 10-joint statically indeterminate forward scene (33 rows on 19 coordinates), from a
   neighbouring torque's pieces: the accelerations against Clarabel's primal, the forces'
   KKT conditions checked densely;
-* the fallback: from wrong pieces (every disc held, a held contact opened) the primal's
+* the fallback: from wrong pieces (a sliding disc held, a held contact opened) the primal's
   answer fails its checks and the dual path's is returned, the same as Clarabel's; from the
   right pieces with every sliding force's start reversed the primal still answers;
 * whole runs with the primal piece and without it (``core_scene_primal``'s switch): the pegs
@@ -282,20 +282,25 @@ def test_primal_and_dual_paths_agree_on_the_steps(step_problems):
 
 
 def test_wrong_pieces_fall_back_to_the_dual_path(step_problems):
-    """From wrong pieces the primal's answer fails its KKT checks and the dual path answers:
-    the same V as Clarabel's; from the right pieces with every sliding force's start reversed
-    the primal answers (only its Newton's start moved), the same V."""
+    """From wrong pieces (a sliding disc held, a pushing contact opened) the primal's answer
+    fails its KKT checks and the dual path answers: the same V as Clarabel's; from the right
+    pieces with every sliding force's start reversed the primal answers (only its Newton's
+    start moved), the same V."""
     model, problems = step_problems
     core = model.core
     core.scene_primal(1, None)
-    p = next(p for p in problems
-             if np.any(p["frm"][:, 0] == 2) and np.any((p["kind"] == UNILATERAL)
-                                                       & (p["frm"][:, 0] == 0)))
+
+    def held_rows(p):
+        return int(np.sum(np.where(p["kind"] == DISC, 2, 1)[p["frm"][:, 0] == 0]))
+
+    p = next(p for p in problems  # (few held rows: the primal tries this piece and the next)
+             if held_rows(p) + 2 <= p["n"] // 2 and np.any(p["frm"][:, 0] == 2)
+             and np.any((p["kind"] == UNILATERAL) & (p["frm"][:, 0] == 0)))
     V = _polished(p, *_primal_reference(p))[0]
     scale = np.abs(V).max()
     _counts(core)
-    held = p["frm"].copy()  # every disc held at zero force: their forces leave the discs
-    held[p["kind"] == DISC] = 0.0
+    held = p["frm"].copy()  # a sliding disc held at zero force: its force leaves the disc
+    held[np.flatnonzero((p["kind"] == DISC) & (p["frm"][:, 0] == 2))[0]] = 0.0
     opened = p["frm"].copy()  # a pushing contact opened: its row penetrates
     opened[np.flatnonzero((p["kind"] == UNILATERAL) & (p["frm"][:, 0] == 0))[0], 0] = 1
     for frm in (held, opened):
@@ -332,31 +337,40 @@ def _indeterminate_scene(q, joints=10):
     return GeneralScene(robot, ground=ground, objects=objects, obstacles=tuple(pegs))
 
 
+def _forward_problem(model, one, prev, tau):
+    """The solve's problem of a one-sample forward (M, f, A at rest: no offsets) and the
+    pieces of another sample's (prev) as its start."""
+    d = dense_problem(one, model, tau)
+    r = one._rows[0]
+    nb = len(r.kind)
+    frm = np.zeros((nb, 3))
+    frm[:, 0] = prev._raw["state"][0][:nb]
+    for b, (kind, s) in enumerate(zip(r.kind, r.start)):
+        k = 2 if kind >= DISC else 1
+        frm[b, 1:1 + k] = prev._raw["lam"][0][s:s + k]
+    p = dict(n=len(d["f"]), m=len(d["b"]), nb=nb, M=d["M"], f=d["f"], A=d["A"],
+             c=np.zeros(len(d["b"])), kind=np.asarray(r.kind), start=np.asarray(r.start),
+             par=np.asarray(r.par, dtype=float).reshape(-1))
+    return p, frm
+
+
 def test_indeterminate_forward_from_a_neighbours_pieces():
     """The 10-joint scene's forward at torques near each other: each sample's solve from its
     neighbour's pieces, primal piece on, against Clarabel's primal (1e-9) and the dense KKT
     conditions of its forces; with the piece off, the same accelerations (1e-12)."""
-    rng = np.random.default_rng(11)
+    rng = np.random.default_rng(0)
     q = np.r_[0.0, 0.0, 0.0, 0.25 * np.sin(np.arange(10))]
     model = snakecg.load(_indeterminate_scene(q))
     core = model.core
-    tau0 = rng.normal(0, 0.1, 10)
-    taus = [tau0 + 0.02 * k * np.eye(10)[2] for k in range(6)]
+    g = np.linspace(-0.3, 0.3, 36)  # a column of the benchmark's torque map
+    taus = [np.r_[t[:2], g[31], t[3:6], g[k], t[7:]]
+            for t in [rng.normal(0, 0.1, 10)] for k in range(28, 36)]
     ones = [model.forward(q, t) for t in taus]
     core.scene_primal(1, None)
     _counts(core)
     for one, prev, tau in zip(ones[1:], ones[:-1], taus[1:]):
+        p, frm = _forward_problem(model, one, prev, tau)
         d = dense_problem(one, model, tau)
-        r = one._rows[0]
-        nb = len(r.kind)
-        frm = np.zeros((nb, 3))
-        frm[:, 0] = prev._raw["state"][0][:nb]
-        for b, (kind, s) in enumerate(zip(r.kind, r.start)):
-            k = 2 if kind >= DISC else 1
-            frm[b, 1:1 + k] = prev._raw["lam"][0][s:s + k]
-        p = dict(n=len(d["f"]), m=len(d["b"]), nb=nb, M=d["M"], f=d["f"], A=d["A"],
-                 c=np.zeros(len(d["b"])), kind=np.asarray(r.kind), start=np.asarray(r.start),
-                 par=np.asarray(r.par, dtype=float).reshape(-1))
         out = _solve(core, p, frm)
         assert out["info"]["status"] == 0
         V = _polished(p, *_primal_reference(p))[0]
@@ -368,7 +382,10 @@ def test_indeterminate_forward_from_a_neighbours_pieces():
         np.testing.assert_allclose(out["a"], off["a"], rtol=0,
                                    atol=1e-12 * np.abs(off["a"]).max())
         assert out["info"]["dependent"] == off["info"]["dependent"]
-    assert _counts(core)[0] == len(taus) - 1
+    tries, answered = _counts(core)
+    # the primal tried where the held rows are at most half the coordinates, and answered
+    # some (the others: minimum-norm forces outside their sets, the dual path's)
+    assert tries >= 4 and answered >= 2
 
 
 def _runs(core, simulate):

@@ -297,7 +297,7 @@ static int primal_start(sc_problem *p, const double *Z, const double *g, const d
         p->lam[p->start[k]] <= 1e-12 * p->fscale)
       ok = 0;
   *dep = ok ? r - 1 : 0;
-  sc_primal_tally(ok);
+  if (r >= 0) sc_primal_tally(ok);
   return ok;
 }
 
