@@ -129,8 +129,7 @@ static sc_int face_rank(sc_problem *p, const double *Z, const sc_int *F, sc_int 
  * (every row's, w = Z^T (g + Z lam) + c) filled. g = L^-1 f, Z = L^-1 A^T (n x m,
  * coordinate i's row at Z + i m; M = L L^T), c the rows' offsets (or NULL). Returns 1 when
  * solved with unique forces, 2 with the face's minimum-norm ones (defect: the held rows'
- * rank defect), 0 when left to the dual path (p->lam, p->w then undefined), -1 when not
- * tried (its held rows too many). */
+ * rank defect), 0 when left to the dual path (p->lam, p->w then undefined). */
 SC_INTERNAL int sc_primal_piece(sc_problem *p, const double *Z, const double *g,
                                 const double *c, double *work, sc_int *iwork, sc_int *defect) {
   const sc_int n = p->n, m = p->m, nb = p->nb;
@@ -164,9 +163,6 @@ SC_INTERNAL int sc_primal_piece(sc_problem *p, const double *Z, const double *g,
       return 0; /* a sliding split ellipse, or a sliding one-row block */
     }
   }
-  if (2 * h > n) return -1; /* not tried: held rows as many as half the coordinates (the
-    indeterminate forward's 13-17 on 19) make a dependent face whose minimum-norm forces
-    left the sets on every try, after its Newton */
   /* the start: y = g_F + Z (lam_H, lam_S) at the caller's forces; the piece's columns of Z
    * gathered (Zg, n x nc: the sliding discs' pairs, then the held rows) */
   nc = 2 * ns + h;
