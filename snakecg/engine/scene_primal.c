@@ -187,27 +187,32 @@ SC_INTERNAL int sc_primal_piece(sc_problem *p, const double *Z, const double *g,
     double step = 0.0, tstep = 1.0, ymax = ysc;
     int feasible = it > 0;
     if (it == 0) v = sliding(n, nc, ns, rad, Zg, cg, y, ws);
-    /* the Hessian I + sum (s_i / |w_i|) v_i v_i^T and the gradient y - g_F + sum s_i Z_i u_i */
-    for (i = 0; i < n; ++i) {
-      for (j = 0; j <= i; ++j) R[i * n + j] = 0.0;
-      R[i * n + i] = 1.0;
-      grad[i] = y[i] - gF[i];
-    }
+    /* the Hessian I + T T^T (T's column j: sqrt(s_j / |w_j|) v_j, in Y's room) and the
+     * gradient y - g_F + sum s_j Z_j u_j */
+    for (i = 0; i < n; ++i) grad[i] = y[i] - gF[i];
     for (j = 0; j < ns; ++j) {
       double w0 = ws[2 * j], w1 = ws[2 * j + 1], nw = sqrt(w0 * w0 + w1 * w1), cj;
       if (!(nw > TOL_ACCEPT * p->wscale)) return 0; /* sliding at rounding's speed */
       w0 /= nw;
       w1 /= nw;
-      cj = rad[j] / nw;
+      cj = sqrt(rad[j] / nw);
       for (i = 0; i < n; ++i) {
         const double z0 = Zg[i * nc + 2 * j], z1 = Zg[i * nc + 2 * j + 1];
-        t[i] = w1 * z0 - w0 * z1; /* Z_i u^perp (up to sign) */
+        Y[i * ns + j] = cj * (w1 * z0 - w0 * z1); /* Z_j u^perp (up to sign) */
         grad[i] += rad[j] * (z0 * w0 + z1 * w1);
       }
-      for (i = 0; i < n; ++i) {
-        const double ti = cj * t[i];
-        double *restrict ri = R + i * n;
-        for (k = 0; k <= i; ++k) ri[k] += ti * t[k];
+    }
+    for (i = 0; i < n; ++i) {
+      const double *ti = Y + i * ns;
+      for (k = 0; k <= i; ++k) {
+        const double *tk = Y + k * ns;
+        double s0 = 0.0, s1 = 0.0;
+        for (j = 0; j + 1 < ns; j += 2) {
+          s0 += ti[j] * tk[j];
+          s1 += ti[j + 1] * tk[j + 1];
+        }
+        if (j < ns) s0 += ti[j] * tk[j];
+        R[i * n + k] = (i == k ? 1.0 : 0.0) + (s0 + s1);
       }
     }
     if (!sc_cholesky(n, R, n, 1e-14)) return 0;
