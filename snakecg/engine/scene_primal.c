@@ -216,39 +216,35 @@ SC_INTERNAL int sc_primal_piece(sc_problem *p, const double *Z, const double *g,
       }
     }
     if (!sc_cholesky(n, R, n, 1e-14)) return 0;
-    /* q = R^-1 grad; Y = R^-1 Z_H (n x h), lh = Y^T q - (Z_H^T y + c_H) */
+    /* q = R^-1 grad; Y = R^-1 Z_H (column j, held row j's, at Y + j n), lh = Y^T q - w_H
+     * (w_H = Z_H^T y + c_H), S = Y^T Y */
     for (i = 0; i < n; ++i) q[i] = grad[i];
     sc_lower_solve(n, R, q);
-    for (j = 0; j < h; ++j) lh[j] = -cg[2 * ns + j];
-    for (i = 0; i < n; ++i) {
-      const double *ri = R + i * n, *restrict zi = Zg + i * nc + 2 * ns;
-      double *restrict yi = Y + i * h;
-      for (j = 0; j < h; ++j) yi[j] = zi[j];
-      for (k = 0; k < i; ++k) {
-        const double rk = ri[k], *restrict yk = Y + k * h;
-        for (j = 0; j < h; ++j) yi[j] -= rk * yk[j];
+    for (j = 0; j < h; ++j) {
+      double *restrict yj = Y + j * n, u = -cg[2 * ns + j];
+      for (i = 0; i < n; ++i) {
+        const double *restrict ri = R + i * n, zij = Zg[i * nc + 2 * ns + j];
+        double t0 = zij, t1 = 0.0;
+        for (k = 0; k + 1 < i; k += 2) {
+          t0 -= ri[k] * yj[k];
+          t1 -= ri[k + 1] * yj[k + 1];
+        }
+        if (k < i) t0 -= ri[k] * yj[k];
+        yj[i] = (t0 + t1) / ri[i];
+        u += yj[i] * q[i] - zij * y[i];
       }
-      for (j = 0; j < h; ++j) {
-        yi[j] /= ri[i];
-        lh[j] += yi[j] * q[i] - zi[j] * y[i];
-      }
+      lh[j] = u;
+      for (k = 0; k <= j; ++k) S[j * h + k] = sc_dot(yj, Y + k * n, n);
     }
     if (h > 0) {
-      for (j = 0; j < h; ++j) /* S = Y^T Y (lower triangle) */
-        for (k = 0; k <= j; ++k) S[j * h + k] = 0.0;
-      for (i = 0; i < n; ++i) {
-        const double *restrict yi = Y + i * h;
-        for (j = 0; j < h; ++j)
-          for (k = 0; k <= j; ++k) S[j * h + k] += yi[j] * yi[k];
-      }
       for (j = 0; j < h; ++j) bh[j] = lh[j];
       rank = sc_psd_solve(h, S, h, bh, PRIMAL_DEP, lh, wt, perm); /* (dependent: basic) */
     }
     /* dy = R^-T (Y lam_H - q) */
-    for (i = 0; i < n; ++i) {
-      double s = -q[i];
-      for (j = 0; j < h; ++j) s += Y[i * h + j] * lh[j];
-      dy[i] = s;
+    for (i = 0; i < n; ++i) dy[i] = -q[i];
+    for (j = 0; j < h; ++j) {
+      const double *restrict yj = Y + j * n, l = lh[j];
+      for (i = 0; i < n; ++i) dy[i] += yj[i] * l;
     }
     for (i = n - 1; i >= 0; --i) {
       double s = dy[i];
