@@ -12,8 +12,8 @@ Held to references written here apart:
   the discs' second-order cones) where the face's rows are independent (NumPy's SVD), and
   Newton's stationarity M V = f + A^T lam checked densely;
 * the 10-joint statically indeterminate forward scene (33 rows on 19 coordinates), from a
-  neighbouring torque's pieces: the accelerations against Clarabel's primal, the forces'
-  KKT conditions checked densely;
+  neighbouring torque's pieces and from the sample's own: the accelerations against
+  Clarabel's primal, the forces' KKT conditions checked densely;
 * the fallback: from wrong pieces (a sliding disc held, a held contact opened) the primal's
   answer fails its checks and the dual path's is returned, the same as Clarabel's; from the
   right pieces with every sliding force's start reversed the primal still answers;
@@ -354,10 +354,14 @@ def _forward_problem(model, one, prev, tau):
     return p, frm
 
 
-def test_indeterminate_forward_from_a_neighbours_pieces():
+def test_indeterminate_forward_from_a_neighbours_and_its_own_pieces():
     """The 10-joint scene's forward at torques near each other: each sample's solve from its
-    neighbour's pieces, primal piece on, against Clarabel's primal (1e-9) and the dense KKT
-    conditions of its forces; with the piece off, the same accelerations (1e-12)."""
+    neighbour's pieces and from its own (its one-sample solve's), primal piece on, against
+    Clarabel's primal polished on its piece (1e-9) and the dense KKT conditions of its forces;
+    with the piece off, the same accelerations (1e-12) and dependent flag. From a neighbour's
+    pieces the primal's Newton starts too far and leaves them to the dual path; from its own
+    it answers some (the others: minimum-norm forces outside their sets, or held rows as many
+    as half the coordinates)."""
     rng = np.random.default_rng(0)
     q = np.r_[0.0, 0.0, 0.0, 0.25 * np.sin(np.arange(10))]
     model = snakecg.load(_indeterminate_scene(q))
@@ -368,24 +372,26 @@ def test_indeterminate_forward_from_a_neighbours_pieces():
     ones = [model.forward(q, t) for t in taus]
     core.scene_primal(1, None)
     _counts(core)
+    own = np.zeros(2)
     for one, prev, tau in zip(ones[1:], ones[:-1], taus[1:]):
-        p, frm = _forward_problem(model, one, prev, tau)
         d = dense_problem(one, model, tau)
-        out = _solve(core, p, frm)
-        assert out["info"]["status"] == 0
-        V = _polished(p, *_primal_reference(p))[0]
-        np.testing.assert_allclose(out["a"], V, rtol=0, atol=1e-9 * np.abs(V).max())
-        assert kkt_violations(d, out["lam"], out["a"]) == []
-        core.scene_primal(0, None)
-        off = _solve(core, p, frm)
-        core.scene_primal(1, None)
-        np.testing.assert_allclose(out["a"], off["a"], rtol=0,
-                                   atol=1e-12 * np.abs(off["a"]).max())
-        assert out["info"]["dependent"] == off["info"]["dependent"]
-    tries, answered = _counts(core)
-    # the primal tried where the held rows are at most half the coordinates, and answered
-    # some (the others: minimum-norm forces outside their sets, the dual path's)
-    assert tries >= 4 and answered >= 2
+        for start in (prev, one):
+            p, frm = _forward_problem(model, one, start, tau)
+            out = _solve(core, p, frm)
+            if start is one:
+                own += _counts(core)
+            assert out["info"]["status"] == 0
+            V = _polished(p, *_primal_reference(p))[0]
+            np.testing.assert_allclose(out["a"], V, rtol=0, atol=1e-9 * np.abs(V).max())
+            assert kkt_violations(d, out["lam"], out["a"]) == []
+            core.scene_primal(0, None)
+            off = _solve(core, p, frm)
+            core.scene_primal(1, None)
+            np.testing.assert_allclose(out["a"], off["a"], rtol=0,
+                                       atol=1e-12 * np.abs(off["a"]).max())
+            assert out["info"]["dependent"] == off["info"]["dependent"]
+            _counts(core)
+    assert own[0] >= 4 and own[1] >= 2
 
 
 def _runs(core, simulate):

@@ -24,7 +24,7 @@
 #include "snakecg_layout.h"
 #include "engine.h"
 
-#define PRIMAL_STEPS 10 /* Newton steps before the dual path takes over */
+#define PRIMAL_STEPS 6 /* Newton steps before the dual path takes over */
 #define PRIMAL_DEP 1e-8 /* held rows taken as dependent below this pivot ratio (dual: 1e-10) */
 
 /* core_scene_primal's switch (1: the warm start tries the primal piece first) and counts
@@ -279,6 +279,9 @@ SC_INTERNAL int sc_primal_piece(sc_problem *p, const double *Z, const double *g,
       ok = 1;
       break;
     }
+    if (it >= 1 && !(step <= 1e-4)) return 0; /* not yet quadratic after two steps (a time
+      step's second is 1e-13 to 1e-5 of y): a start too far for the primal to pay (a forward
+      neighbour's on the indeterminate scene took 4-10 steps), the dual path's */
     prev = tstep == 1.0 ? step : INFINITY;
   }
   if (!ok) return 0;
