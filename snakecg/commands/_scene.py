@@ -45,8 +45,10 @@ def forward_command(args, scene, schema: str) -> int:
     for o in res.objects:
         print(f"  object {o['object']}: a = {np.asarray(o['a'])}, |a|^2 = {o['norm_a']:.6g}")
     for c in res.contacts:
+        fric = (f", friction {c['friction']:.6g} N ({c['friction_state']}, mu {c['mu']:.3g})"
+                if "friction" in c else "")
         print(f"  contact {c['bodies'][0]} - {c['bodies'][1]}: force {c['force']:.6g} N, "
-              f"{c['state']}")
+              f"{c['state']}{fric}")
     for g in res.ground:
         print(f"  ground {g}")
     print(f"  |lambda|^2 = {res.norm_lambda:.6g}  |a_obj|^2 = {res.norm_a_obj:.6g}  "
@@ -54,6 +56,9 @@ def forward_command(args, scene, schema: str) -> int:
     cert = res.certificate
     print(f"  KKT residuals: primal {cert['primal']:.2g}, dual {cert['dual']:.2g}, "
           f"complementarity {cert['complementarity']:.2g}")
+    if res.uniqueness is not None:
+        print(f"  Coulomb friction at the contacts: {res.uniqueness} ({res.solutions} solutions "
+              "found by enumeration; 0: not enumerated, negative: some piece singular)")
     if res.dependent:
         print("  warning: dependent constraint rows (statically indeterminate); minimum-norm "
               "forces")

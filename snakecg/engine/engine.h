@@ -23,25 +23,23 @@
  *   scene_sets.c, scene_piece.c, scene_primal.c, scene_solve.c   a general scene's exact solve
  *   scene_geometry.c, scene_rows.c, scene_step.c, scene_run.c   placement, contacts, rows,
  *                   forward, a time step, whole runs and batches of runs
+ *   scene_friction.c  Coulomb friction at a general scene's contacts (tangent rows, its solve)
  *
  * One prefix (sc_), one integer type (sc_int). The library exports the model's prefixed entry
  * points only (SNAKECG_EXPORT); the engine's own functions across its files are hidden
  * (SC_INTERNAL). */
 #ifndef SNAKECG_ENGINE_H
 #define SNAKECG_ENGINE_H
-
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
 typedef long long int sc_int; /* the engine's one integer type (CasADi's casadi_int) */
-
 #if defined(__GNUC__)
 #define SC_INTERNAL __attribute__((visibility("hidden")))
 #else
 #define SC_INTERNAL
 #endif
-
 /* Before a loop over one of the model's sizes (known when compiling): unroll it (GCC). */
 #if defined(__GNUC__) && !defined(__clang__)
 #define SC_UNROLL _Pragma("GCC unroll 16")
@@ -49,16 +47,13 @@ typedef long long int sc_int; /* the engine's one integer type (CasADi's casadi_
 #define SC_UNROLL
 #endif
 #include "linalg.h"
-
 /* sizes: coordinates n_s, constraint rows n_c, a body state (q, q_obj), the integrated state
  * (positions, velocities and three work integrals) */
 #define NS SNAKECG_NS
 #define NC SNAKECG_NC
 #define NX (NS + 3)
 #define NY (2 * NX + 3)
-
 typedef int (*sc_work_fn)(sc_int *sz_arg, sc_int *sz_res, sc_int *sz_iw, sc_int *sz_w);
-
 int SNAKECG_CS(const double **arg, double **res, sc_int *iw, double *w, int mem);
 int SNAKECG_CS_WORK(sc_int *sz_arg, sc_int *sz_res, sc_int *sz_iw, sc_int *sz_w);
 int SNAKECG_CR(const double **arg, double **res, sc_int *iw, double *w, int mem);
@@ -359,7 +354,6 @@ SC_INTERNAL void sc_kkt_certificate(sc_int n, const double *x, const double *H, 
                                     double active, double stationarity_tol, double *values,
                                     double *lam, double *mu, sc_qp_work *w);
 /* ---- the optimal-torque queries (maps.c, optimal.c, max_sr.c, push.c, wheel_states.c).
- *
  * One call answers a batch of configurations, each by the same steps (docs/how-to/optimize.md):
  * the system at rest with the object placed (the generated contact_system at rest), the
  * all-held maps of eqs. (17), (22), (24), (28), (29), (31) (maps.c), the query's solve
@@ -367,9 +361,7 @@ SC_INTERNAL void sc_kkt_certificate(sc_int n, const double *x, const double *H, 
  * original problem, the exact forward solve at the answer (forward.c's core_forward) and the
  * forward check of the answer. The query and the answers are flat double vectors laid out in
  * snakecg_layout.h (OPT_IN_*, OPT_OUT_*; snakecg/engine/layout.py), read by name in Python
- * (snakecg/engine/binding.py); the codes below are mirrored there.
- *
- * Included after snakecg_layout.h. Prototypes of every function that crosses the files of the */
+ * (snakecg/engine/binding.py); the codes below are mirrored there. */
 #define NA SNAKECG_NA
 #define NA1 (SNAKECG_NA + 1)
 /* rows of the largest QP posed here: z = (tau, t) with the contact force, every wheel's two
@@ -546,9 +538,8 @@ SC_INTERNAL double sc_angle_of(const sc_problem *p, sc_int k, const double *l);
 SC_INTERNAL void sc_update_w(sc_problem *p); /* scene_piece.c: w = G lam + b; a piece */
 SC_INTERNAL sc_int sc_polish(sc_problem *p, double *work, sc_int *iwork);
 SC_INTERNAL int sc_primal_piece(sc_problem *p, const double *Z, const double *g, const double *c,
-                                double *work, sc_int *iwork, sc_int *defect); /* scene_primal.c */
-SC_INTERNAL sc_int sc_primal_work(sc_int n, sc_int m); SC_INTERNAL int sc_primal_tally(int ok);
-int SNAKECG_EXPORT(core_scene_primal)(sc_int mode, double *counts); /* its switch, counts */
+  double *work, sc_int *iwork, sc_int *def); SC_INTERNAL sc_int sc_primal_work(sc_int n, sc_int m);
+SC_INTERNAL int sc_primal_tally(int ok); int SNAKECG_EXPORT(core_scene_primal)(sc_int, double *);
 int SNAKECG_EXPORT(core_scene_solve_b)(sc_int ns, sc_int n, sc_int mmax, sc_int nbmax,
   const sc_int *m, const sc_int *nb, const double *M, const double *f, const double *A,
   const double *c, const sc_int *kind, const sc_int *start, const double *par,
@@ -560,7 +551,8 @@ int SNAKECG_EXPORT(core_scene_solve_s)(sc_int n, sc_int m, sc_int nb, const doub
 /* ---- a general scene's shapes, contacts (scene_geometry.c), rows and forward (scene_rows.c) ----
  * The packed scene's header and records' widths (their fields: snakecg/scenes/packing.py). */
 enum { SP_NO = 0, SP_NOB, SP_RADIUS, SP_TOL, SP_SIZE, SP_NG, SP_MG, SP_LINKS, SP_OBJECTS,
-       SP_OBSTACLES, SP_GROUND, SP_K, SP_HEAD = 16, LINK_W = 2, OBJ_W = 12, OBS_W = 14 };
+       SP_OBSTACLES, SP_GROUND, SP_K, SP_MU, SP_MUC, SP_FRICTION, SP_HEAD = 16, LINK_W = 2,
+       OBJ_W = 12, OBS_W = 14 };
 enum { SC_SEGMENT = 0, SC_POINT = 1, SC_POLYGON = 2, SC_HALFPLANE = 3 };
 #define SC_TOUCH_MAX 64 /* candidate point pairs of two shapes (4 x 4 edges, 4 each) */
 /* a core (np points; a half-plane's point and normal into the free side) and a radius; a
@@ -575,8 +567,16 @@ SC_INTERNAL void sc_scene_place(const double *pk, const double *P, const double 
                                 double *reach);
 /* The rows of a state (scene_rows.c's core_scene_rows, for scene_step.c): outputs RO_*, then
  * the objects' poses (3 n_o) and the contacts (CR_W each); its status (0, SS_*) or < 0. */
-enum { RO_STATUS = 0, RO_NC, RO_M, RO_NB, RO_OVERLAP, RO_POSE = RO_OVERLAP + 6, CR_W = 14 };
+enum { RO_STATUS = 0, RO_NC, RO_M, RO_NB, RO_OVERLAP, RO_POSE = RO_OVERLAP + 6, CR_W = 16 };
 enum { SS_OVERLAP = 3, SS_MORE = 4, SS_FAILED = 6 };
+/* scene_friction.c: a contact's tangent row (t = (-n_y, n_x) on D = J_b - J_a), the pair's
+ * coefficient into its record; the solve with Coulomb friction at the contacts (the file) */
+SC_INTERNAL void sc_friction_row(const double *pk, sc_int ia, sc_int ib, const double *nrm,
+  const double *Dx, const double *Dy, sc_int n, double *row, double *rec);
+SC_INTERNAL int sc_friction_solve(sc_int n, sc_int m, sc_int nb, sc_int nc, const double *M,
+  const double *f, double *A, double *c, sc_int *kind, sc_int *start, double *par,
+  const double *T, double *rec, sc_int sweeps, const double *from, double *lam, double *a,
+  double *w, double *st, double *info, double *solutions);
 SC_INTERNAL int sc_scene_state_rows(const double *pk, const double *q, const double *qo,
                                     double tol, sc_int ccap, sc_int mcap, double *out,
                                     double *M, double *A, double *par, sc_int *kind,

@@ -9,24 +9,23 @@
  *      every pair that may touch (links with objects and obstacles, links that are not
  *      neighbours, objects with objects and obstacles); a pair that overlaps beyond the
  *      tolerance stops the sample (status OVERLAP, the pair and its depth reported); one
- *      frictionless unilateral row n . (v_B - v_A) >= 0 per contact within the tolerance, at
- *      the two surface points fixed on their bodies;
+ *      unilateral row n . (v_B - v_A) >= 0 per contact within the tolerance, at the two surface
+ *      points fixed on their bodies, and where the pair has Coulomb friction a tangent row;
  *   3. the ground's blocks (a table packed once per model: wheels, ideal wheels, Coulomb,
  *      anisotropic Coulomb per link; an object's Coulomb friction with the ground);
- *   4. the exact solve of scene_solve.c (core_scene_solve_s) on the full inertia (M_s, then
- *      m, m, I per object) and force (B tau, the objects' wrenches), in a batch from the
- *      last sample's pieces (a map's neighbours have nearly the same; core_scene_forward);
+ *   4. the exact solve of scene_solve.c (core_scene_solve_s; with contact friction
+ *      scene_friction.c's) on the full inertia (M_s, then m, m, I per object) and force (B tau,
+ *      the objects' wrenches), in a batch from the last sample's pieces (frictionless);
  *   5. the metrics: ||qdd_s||^2 = qdd^T M_s qdd (eq. 26), ||a_o||^2 = a_o^T I_o a_o (eq. 27)
  *      per object and summed, ||lambda||^2 = lam^T G lam = (a - a_free)^T M (a - a_free), and
  *      sr (eq. 30; 0 where the summed norms are rounding of the free motion's:
  *      below 1e-26 a_free^T M a_free, a system that does not move). A sample not solved has
  *      NaN metrics and its status says why.
- * The scene, the sample's outputs and the optional details (rows, forces, row accelerations,
- * block states, for checks) are laid out as snakecg/scenes/packing.py writes and reads them
- * (SP_*, SO_*, the records' widths below).
+ * The scene, outputs and details (rows, forces, row accelerations, block states) are laid out
+ * as snakecg/scenes/packing.py writes and reads them (SP_*, SO_*, the records' widths below).
  * Steps 1-3 alone at a simulation's state (the objects at given poses, the run's tolerance):
- * core_scene_rows (and sc_scene_state_rows, scene_step.c's); the signed distances of the
- * pairs, overlapping or not, for the root finding of a contact's onset: core_scene_gaps.
+ * core_scene_rows (and sc_scene_state_rows, scene_step.c's); the pairs' signed distances,
+ * overlapping or not, for the root finding of a contact's onset: core_scene_gaps.
  */
 #include "snakecg_layout.h"
 #include "engine.h"
@@ -36,11 +35,11 @@ enum { GB_W = 8 };    /* type (GB_*), body, wheel offset, par (3), block kind (K
 enum { GB_WHEEL = 0, GB_COULOMB = 1, GB_SPLIT = 2, GB_OBJECT = 3 };
 /* one sample's outputs: the solve's info (scene_solve.c's INFO_* order), then these */
 enum { SO_INFO = 0, SO_NC = 8, SO_NORM_QDD, SO_NORM_A, SO_NORM_L, SO_SR, SO_OVERLAP,
-       SO_QDD = SO_OVERLAP + 6 };
+       SO_SOLUTIONS = SO_OVERLAP + 6, SO_QDD };
 /* a contact's record (CR_W, engine.h): body a (kind, index), b, point a (2), b (2), normal
- * (2), gap, force, state, pad; a sample's status (SS_*, engine.h) after scene_solve.c's 0
- * solved, 1 not converged, 2 singular mass (5, more contacts than the solve takes, is the
- * caller's) */
+ * (2), gap, force, state, the pair's mu, tangent force and state; a sample's status (SS_*,
+ * engine.h) after scene_solve.c's 0 solved, 1 not converged, 2 singular mass (5, more contacts
+ * than the solve takes, is the caller's) */
 enum { BODY_LINK = 0, BODY_OBJECT = 1, BODY_OBSTACLE = 2 };
 /* Gauss-Seidel sweeps allowed per sample (snakecg.scenes.solve.MAX_SWEEPS) */
 #define SC_SCENE_SWEEPS 200000
@@ -61,7 +60,7 @@ typedef struct {
   sc_int *kind, *start, *piv, pnb; /* pnb: its blocks (-1: none, not solved) */
   sc_int cool, backoff; /* samples left cold after a start that fell back, the next count */
   sc_shape *shape;
-  double *centre, *reach, *pose;
+  double *centre, *reach, *pose, *T; /* T: the contacts' tangent rows (null: no friction) */
 } sc_scene_work;
 
 /* The bodies placed at the link poses P (the objects at qo, or by the scene): the parts that
@@ -154,6 +153,7 @@ static sc_int contact_rows(sc_scene_work *sw, const double *P, double *recs, dou
         sw->kind[nc] = K_UNILATERAL;
         sw->start[nc] = nc;
         sw->par[3 * nc] = sw->par[3 * nc + 1] = sw->par[3 * nc + 2] = 0.0;
+        if (sw->T) sc_friction_row(sw->pk, ia, ib, t[k].n, Dx, Dy, n, sw->T + nc * n, rec);
         ++nc;
       }
     }
@@ -310,9 +310,9 @@ static void scene_sample(sc_scene_work *sw, const double *q, const double *tau,
   warm = warm && pnb == nb && !(sw->cool > 0 && sw->cool--); /* (backing off: cold) */
   for (i = 0; warm && i < nc * CR_W; i += CR_W)
     for (j = 0; j < 4; ++j) warm &= rec[i + j] == sw->prec[i + j]; /* the same bodies */
-  SNAKECG_EXPORT(core_scene_solve_s)(n, m, nb, sw->M, sw->f, sw->A, NULL, sw->kind,
-                                     sw->start, sw->par, max_sweeps, warm ? sw->prev : NULL,
-                                     sw->lam, sw->a, sw->w, sw->st, out + SO_INFO);
+  sc_friction_solve(n, m, nb, nc, sw->M, sw->f, sw->A, NULL, sw->kind, sw->start, sw->par,
+                    sw->T, rec, max_sweeps, warm ? sw->prev : 0, sw->lam, sw->a, sw->w, sw->st,
+                    out + SO_INFO, out + SO_SOLUTIONS); /* (T null: core_scene_solve_s's) */
   /* a_free = M^-1 f (partial pivoting, as numpy.linalg.solve; block by block, which is the
    * same elimination on a block-diagonal M) */
   for (i = 0; i < ns; ++i)
@@ -385,7 +385,7 @@ static int work_alloc(sc_scene_work *sw, const double *pk, sc_int ccap, sc_int m
   }
   nd = mcap * n + 2 * n * n + 7 * n + 3 * mcap + 3 * mcap + 5 * SNAKECG_NL +
        3 * SNAKECG_NL * SNAKECG_NS + SNAKECG_NS * SNAKECG_NS + 3 * sw->nbody + 3 * sw->no + 8 +
-       3 * mcap;
+       3 * mcap + (pk[SP_FRICTION] != 0.0 ? ccap * n : 0);
   sw->A = d = (double *)malloc((size_t)(nd + most[3] + 1) * sizeof(double) +
                                (size_t)(most[0] + most[1] + 2) * sizeof(double *) +
                                (size_t)(2 * mcap + n + 2 + most[2] + 1) * sizeof(sc_int) +
@@ -420,7 +420,7 @@ static int work_alloc(sc_scene_work *sw, const double *pk, sc_int ccap, sc_int m
   sw->pose = d; d += 3 * sw->no;
   sw->D = d; d += 2 * n;
   sw->prev = d; d += 3 * mcap;
-  sw->cs = d;
+  sw->cs = d, sw->T = pk[SP_FRICTION] != 0.0 ? d + 2 * SNAKECG_NL : 0; /* (cs: 2 NL) */
   sw->start = sw->kind + mcap;
   sw->piv = sw->start + mcap;
   sw->placed = 0, sw->pnb = -1; /* (nothing placed, no last sample) */
@@ -444,7 +444,7 @@ int SNAKECG_EXPORT(core_scene_forward)(const double *pk, sc_int n, const double 
                                        double *A, double *lam, double *w, double *state,
                                        sc_int chunk) {
   sc_scene_work sw;
-  sc_int i, width, mg = (sc_int)pk[SP_MG];
+  sc_int i, width, mg = (sc_int)pk[SP_MG] + (pk[SP_FRICTION] != 0) * ccap; /* (tangents) */
   if (ccap < 0 || mcap < ccap + mg || mcap > 500 || SNAKECG_NS + 3 * pk[SP_NO] > 512)
     return -2;
   for (i = 0; i < n; ++i) { /* inputs first: a sample that is not finite refuses the call */
@@ -498,9 +498,9 @@ int SNAKECG_EXPORT(core_scene_forward_call)(const sc_scene_call *c) {
 
 static int state_work(sc_scene_work *sw, const double *pk, const double *q, const double *qo,
                       double tol, sc_int ccap, sc_int mcap) {
-  sc_int j, no3 = 3 * (sc_int)pk[SP_NO];
-  int ok = 1;
-  if (ccap < 0 || mcap < ccap + (sc_int)pk[SP_MG] || mcap > 500 || SNAKECG_NS + no3 > 512)
+  sc_int j, no3 = 3 * (sc_int)pk[SP_NO], mg = (sc_int)pk[SP_MG];
+  int ok = 1, fr = pk[SP_FRICTION] != 0; /* (a tangent row beside each contact) */
+  if (ccap < 0 || mcap < (1 + fr) * ccap + mg || mcap > 500 || SNAKECG_NS + no3 > 512)
     return -2;
   for (j = 0; j < SNAKECG_NS; ++j) ok &= isfinite(q[j]) != 0;
   for (j = 0; qo && j < no3; ++j) ok &= isfinite(qo[j]) != 0;
@@ -512,7 +512,8 @@ static int state_work(sc_scene_work *sw, const double *pk, const double *q, cons
 
 /* The contacts, rows and blocks of one state (q, the objects at qo): the rows of the
  * forward's step 2 and 3 (contacts first, one unilateral row each, then the ground's
- * blocks), and where c->M is not null the bodies' inertia. A pair overlapping beyond the
+ * blocks; with contact friction the contacts' tangent rows after them, m + k contact k's),
+ * and where c->M is not null the bodies' inertia. A pair overlapping beyond the
  * tolerance: status SS_OVERLAP and its record; more than ccap contacts: SS_MORE. Returns
  * 0, -1 out of memory, -2 on sizes out of range, -3 on an input not finite. */
 int SNAKECG_EXPORT(core_scene_rows)(const sc_scene_state *c) {
@@ -543,10 +544,9 @@ SC_INTERNAL int sc_scene_state_rows(const double *pk, const double *q, const dou
     return (int)-nc;
   }
   m = ground_rows(&sw, nc);
-  out[RO_NC] = (double)nc;
-  out[RO_M] = (double)m;
-  out[RO_NB] = (double)(nc + sw.ng);
+  out[RO_NC] = (double)nc, out[RO_M] = (double)m, out[RO_NB] = (double)(nc + sw.ng);
   memcpy(A, sw.A, sizeof(double) * (size_t)(m * sw.n));
+  if (sw.T) memcpy(A + m * sw.n, sw.T, sizeof(double) * (size_t)(nc * sw.n)); /* tangents */
   memcpy(par, sw.par, sizeof(double) * (size_t)(3 * (nc + sw.ng)));
   memcpy(kind, sw.kind, sizeof(sc_int) * (size_t)(nc + sw.ng));
   memcpy(start, sw.start, sizeof(sc_int) * (size_t)(nc + sw.ng));

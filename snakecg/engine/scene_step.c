@@ -6,7 +6,8 @@
  * sc_scene_state_rows, kept in the caller's buffers from the step before), a step of length h:
  *   1. the bias forces h_s(q, v) (the generated `bias_forces`), the generalized force
  *      fgen = B tau - h_s + E f_obj and f = M V + h fgen;
- *   2. the exact solve (scene_solve.c's core_scene_solve_s) with the friction sets' sizes
+ *   2. the exact solve (scene_solve.c's core_scene_solve_s; with contact friction
+ *      scene_friction.c's on the tangent rows too) with the friction sets' sizes
  *      times h and the contacts' offsets gap / h (none within GAP_BAND of the tolerance):
  *      V+, its active set started from the last step's pieces (consecutive steps almost
  *      always have the same; they are kept at the step's end, 6.);
@@ -16,8 +17,8 @@
  *      contacts' work and impulse, the sliding sets' impulse against their velocity (the
  *      cosine), the solve's largest residuals;
  *   5. an inelastic impact where a contact new at x+ closes faster than impact_speed: the same
- *      solve with h = 0 (no friction impulse; ideal wheels take impulses) on A V >= 0; its
- *      kinetic energy loss;
+ *      solve with h = 0 (no friction impulse, at the ground or the contacts: a frictionless
+ *      impact; ideal wheels take impulses) on A V >= 0; its kinetic energy loss;
  *   6. x, V and the rows replaced by the step's end; its kinetic energy, smallest contact gap
  *      and contact count.
  * h = 0: the rows at x alone (the run's start).
@@ -63,7 +64,7 @@ static double quad(sc_int n, const double *M, const double *v) {
 static int solve(sc_scene_step *c, sc_int n, double h, const double *f, double *scratch,
                  double *a, double *lam, double *info) {
   sc_int m = (sc_int)c->out[RO_M], nb = (sc_int)c->out[RO_NB], nc = (sc_int)c->out[RO_NC];
-  const double *rec = c->out + RO_POSE + 3 * (sc_int)c->pk[SP_NO];
+  double *rec = c->out + RO_POSE + 3 * (sc_int)c->pk[SP_NO], unique;
   double *par = scratch, *off = par + 3 * c->mcap, *w = off + c->mcap, *st = w + c->mcap,
          *from = st + c->mcap; /* the pieces' forces (kept per second) times h */
   sc_int b, k;
@@ -84,10 +85,11 @@ static int solve(sc_scene_step *c, sc_int n, double h, const double *f, double *
     from[3 * b + 1] = c->from[3 * b + 1] * h;
     from[3 * b + 2] = c->from[3 * b + 2] * h;
   }
-  return SNAKECG_EXPORT(core_scene_solve_s)(n, m, nb, c->M, f, c->A, off, c->kind, c->start,
-                                            par, SC_STEP_SWEEPS,
-                                            warm ? from : NULL, lam,
-                                            a, w, st, info);
+  /* (with contact friction: scene_friction.c's solve on the tangent rows after the m rows;
+   * an impact, h = 0, is frictionless) */
+  return sc_friction_solve(n, m, nb, nc, c->M, f, c->A, off, c->kind, c->start, par,
+                           c->pk[SP_FRICTION] != 0 && h > 0 ? c->A + m * n : NULL, rec,
+                           SC_STEP_SWEEPS, warm ? from : NULL, lam, a, w, st, info, &unique);
 }
 
 /* The step's pieces (the solve's states st and impulses lam on the rows at x) as the start of
@@ -125,7 +127,7 @@ static void keep_pieces(sc_scene_step *c, sc_int no, const double *st) {
 
 /* The step's work (4.) from the rows at x, the impulses lam and V+. */
 static void step_work(sc_scene_step *c, sc_int n, const double *Vp) {
-  const sc_int nb = (sc_int)c->out[RO_NB];
+  const sc_int nb = (sc_int)c->out[RO_NB] + (c->pk[SP_FRICTION] != 0) * (sc_int)c->out[RO_NC];
   double *acc = c->acc, impulse = 0.0, cmin = 2.0, t = 0.0;
   sc_int b, r, j;
   for (j = 3; j < SNAKECG_NS; ++j) t += c->tau[j - 3] * Vp[j];
@@ -261,7 +263,7 @@ int SNAKECG_EXPORT(core_scene_step)(sc_scene_step *c) {
     memcpy(c->V, c->Vp, sizeof(double) * (size_t)n);
     memcpy(c->out, c->out1, sizeof(double) * (size_t)(RO_POSE + 3 * no + CR_W * nc1));
     memcpy(c->M, c->M1, sizeof(double) * (size_t)(n * n));
-    memcpy(c->A, c->A1, sizeof(double) * (size_t)(m1 * n));
+    memcpy(c->A, c->A1, sizeof(double) * (size_t)((m1 + (pk[SP_FRICTION] != 0) * nc1) * n));
     memcpy(c->par, c->par1, sizeof(double) * (size_t)(3 * c->out1[RO_NB]));
     memcpy(c->kind, c->kind1, sizeof(sc_int) * (size_t)c->out1[RO_NB]);
     memcpy(c->start, c->start1, sizeof(sc_int) * (size_t)c->out1[RO_NB]);

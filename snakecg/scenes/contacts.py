@@ -104,8 +104,9 @@ class StateRows:
         nl, nob = model.n_links, len(model.scene.obstacles)
         pairs = (nl * (nl - 1) // 2 - (nl - 1) + nl * (self.no + nob)
                  + self.no * (self.no - 1) // 2 + self.no * nob)
-        self.ccap = max(1, min(4 * pairs, MAX_ROWS - pk.ground_rows))  # every pair's
-        self.mcap = self.ccap + pk.ground_rows
+        room = (MAX_ROWS - pk.ground_rows) // (2 if pk.friction else 1)
+        self.ccap = max(1, min(4 * pairs, room))  # every pair's
+        self.mcap = pk.rows_room(self.ccap)
         self.gcap = max(1, pairs)
         self.q = np.zeros(self.ns)
         self.qo = np.zeros(max(1, 3 * self.no))

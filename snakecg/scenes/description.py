@@ -17,7 +17,7 @@ from dataclasses import dataclass
 from ..errors import InputError
 from ..robot import DEFAULT_GRAVITY, Robot, Scene
 
-__all__ = ["GROUND_MODELS", "Ground", "SceneObject", "Obstacle", "GeneralScene"]
+__all__ = ["GROUND_MODELS", "Ground", "SceneObject", "Obstacle", "GeneralScene", "pair_mu"]
 
 GROUND_MODELS = ("frictionless", "wheels", "ideal_wheels", "coulomb", "anisotropic")
 OBJECT_SHAPES = ("box", "disc")
@@ -30,6 +30,21 @@ def _num(v) -> bool:
 
 def _vec(v, n) -> bool:
     return (isinstance(v, (list, tuple)) and len(v) == n and all(_num(x) for x in v))
+
+
+def _mu_contact_problems(v, where: str) -> list[str]:
+    if v is None or (_num(v) and v >= 0):
+        return []
+    return [f"{where}.mu_contact must be a finite number >= 0 (Coulomb's coefficient at its "
+            f"contacts), got {v!r:.60}"]
+
+
+def pair_mu(scene_mu: float, mu_a: float | None, mu_b: float | None) -> float:
+    """The Coulomb coefficient of a contact between two bodies: the larger of their own
+    ``mu_contact`` where either has one (as MuJoCo takes the larger of two geoms'), else the
+    scene's ``mu_contact`` (a link has none of its own)."""
+    given = [m for m in (mu_a, mu_b) if m is not None]
+    return float(max(given)) if given else float(scene_mu)
 
 
 @dataclass(frozen=True)
@@ -68,7 +83,9 @@ class SceneObject:
     (``radius``); ``mass``; ``inertia`` about its COM (default: the uniform plate's); placed by
     ``pose = (x, y, theta)`` or ``touching = {link, offset, side}`` (then it touches that link,
     at ``offset`` m from its rear end, on its left or right, a box with a face along the link);
-    ``mu``: Coulomb friction with the ground at its COM (None: none)."""
+    ``mu``: Coulomb friction with the ground at its COM (None: none); ``mu_contact``: its
+    Coulomb friction at contacts with other bodies (None: the scene's ``mu_contact``; a pair's
+    coefficient is :func:`pair_mu`'s)."""
 
     shape: str = "box"
     size: tuple | None = None
@@ -79,6 +96,7 @@ class SceneObject:
     touching: dict | None = None
     mu: float | None = None
     name: str | None = None
+    mu_contact: float | None = None
 
     @property
     def plate_inertia(self) -> float:
@@ -109,6 +127,7 @@ class SceneObject:
                        f"{self.inertia!r:.60}")
         if self.mu is not None and not (_num(self.mu) and self.mu >= 0):
             out.append(f"{where}.mu must be a number >= 0, got {self.mu!r:.60}")
+        out += _mu_contact_problems(self.mu_contact, where)
         if (self.pose is None) == (self.touching is None):
             out.append(f"{where} needs exactly one of pose = [x, y, theta] or touching = "
                        f"{{link, offset, side}}")
@@ -137,7 +156,8 @@ class SceneObject:
 @dataclass(frozen=True)
 class Obstacle:
     """A fixed body: ``peg`` (``center``, ``radius``), ``wall`` (``point``, ``normal`` into
-    the free side) or ``box`` (``center``, ``size``, ``angle``)."""
+    the free side) or ``box`` (``center``, ``size``, ``angle``); ``mu_contact``: its Coulomb
+    friction at contacts (None: the scene's; a pair's coefficient is :func:`pair_mu`'s)."""
 
     shape: str = "peg"
     center: tuple | None = None
@@ -147,12 +167,13 @@ class Obstacle:
     size: tuple | None = None
     angle: float = 0.0
     name: str | None = None
+    mu_contact: float | None = None
 
     def problems(self, where: str) -> list[str]:
-        out = []
+        out = _mu_contact_problems(self.mu_contact, where)
         if self.shape not in OBSTACLE_SHAPES:
-            return [f"{where}.shape must be one of {', '.join(OBSTACLE_SHAPES)}, got "
-                    f"{self.shape!r:.60}"]
+            return out + [f"{where}.shape must be one of {', '.join(OBSTACLE_SHAPES)}, got "
+                          f"{self.shape!r:.60}"]
         if self.shape in ("peg", "box") and not _vec(self.center, 2):
             out.append(f"{where}.center must be [x, y] (m), got {self.center!r:.60}")
         if self.shape == "peg" and not (_num(self.radius) and self.radius > 0):
@@ -176,7 +197,10 @@ class Obstacle:
 class GeneralScene:
     """Robot (links: capsules of ``radius``), ``ground`` (one :class:`Ground` for every link
     or a tuple of one per link), ``objects``, ``obstacles``, ``gravity``; ``tolerance``: a
-    contact holds within ``tolerance * size`` (``size`` the scene's extent)."""
+    contact holds within ``tolerance * size`` (``size`` the scene's extent); ``mu_contact``:
+    Coulomb's coefficient at the contacts between bodies (0, the default: frictionless, the
+    paper's assumption 2; an object's or obstacle's own ``mu_contact`` overrides it at its
+    contacts, :func:`pair_mu`)."""
 
     robot: Robot
     radius: float = 0.0
@@ -185,6 +209,7 @@ class GeneralScene:
     obstacles: tuple = ()
     gravity: float = DEFAULT_GRAVITY
     tolerance: float = 1e-8
+    mu_contact: float = 0.0
 
     def __post_init__(self):
         problems = []
@@ -216,6 +241,9 @@ class GeneralScene:
                 problems += o.problems(f"obstacle[{i + 1}]")
         if not (_num(self.gravity) and self.gravity >= 0):
             problems.append(f"gravity must be a number >= 0 (m/s^2), got {self.gravity!r:.60}")
+        if not (_num(self.mu_contact) and self.mu_contact >= 0):
+            problems.append(f"mu_contact must be a finite number >= 0 (Coulomb's coefficient at "
+                            f"the contacts), got {self.mu_contact!r:.60}")
         if not (_num(self.tolerance) and 0 < self.tolerance < 1e-2):
             problems.append(f"tolerance must be a number in (0, 0.01) (relative to the scene's "
                             f"size), got {self.tolerance!r:.60}")
@@ -228,6 +256,12 @@ class GeneralScene:
     @property
     def n_objects(self) -> int:
         return len(self.objects)
+
+    @property
+    def has_contact_friction(self) -> bool:
+        """Some pair of bodies may touch with a Coulomb coefficient above 0."""
+        return self.mu_contact > 0 or any(
+            (o.mu_contact or 0) > 0 for o in (*self.objects, *self.obstacles))
 
     def body_name(self, kind: str, i: int) -> str:
         """``link 2``, ``object 1`` (or its name), ``obstacle 3`` (1-based)."""

@@ -3,7 +3,9 @@
 ``tau``, the contact and ground forces and the accelerations of the forward solve at rest,
 each group of arrows scaled so that its longest is 0.6 of the mean link length. Artists carry
 ``gid`` labels (``link1``..., ``object1``..., ``obstacle1``..., ``contact_normals``,
-``force_contacts``, ``force_ground``, ``acc_links``, ``acc_objects``)."""
+``force_contacts`` (with contact friction: the whole force, normal and friction),
+``force_friction`` (the friction part alone, where a contact has one), ``force_ground``,
+``acc_links``, ``acc_objects``)."""
 
 from __future__ import annotations
 
@@ -79,6 +81,9 @@ def plot_scene(model, q, tau=None, ax=None, *, title: str | None = None):
         tips.append(pts + 0.5 * L0 * nrm)
     if tau is not None and res.status == 0:
         fc = nrm * np.array([c["force"] for c in res.contacts])[:, None] if len(pts) else pts
+        ft = np.array([np.multiply(c.get("tangent", (0.0, 0.0)), c.get("friction", 0.0))
+                       for c in res.contacts]).reshape(-1, 2)
+        fc = fc + ft  # (on the second body of each contact, as its force)
         gp, gf = [], []
         for g in res.ground:
             if "link" not in g:
@@ -98,6 +103,11 @@ def plot_scene(model, q, tau=None, ax=None, *, title: str | None = None):
                           scale_units="xy", scale=1, color=COLORS["force"], zorder=6,
                           width=0.006, gid="force_contacts",
                           label=f"forces ({fmax:.3g} N = {L0:.3g} m)")
+                if np.any(ft != 0):
+                    ax.quiver(pts[:, 0], pts[:, 1], fs * ft[:, 0], fs * ft[:, 1], angles="xy",
+                              scale_units="xy", scale=1, color=COLORS["force"], zorder=6,
+                              width=0.004, gid="force_friction", alpha=0.5,
+                              label="contact friction")
             if gp:
                 gp, gf = np.array(gp), np.array(gf)
                 ax.quiver(gp[:, 0], gp[:, 1], fs * gf[:, 0], fs * gf[:, 1], angles="xy",

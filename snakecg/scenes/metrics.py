@@ -15,18 +15,22 @@ from __future__ import annotations
 import numpy as np
 
 from .packing import BODY_KINDS, CR_W, SO_NC, SO_NORM_A, SO_NORM_L, SO_NORM_QDD, SO_OVERLAP, \
-    SO_SR
+    SO_SOLUTIONS, SO_SR
 from .solve import BOX, DISC, FREE, INFO, SLIDE, SLIDE_NEG, SLIDE_POS, SPLIT, UNILATERAL, ZERO
 
 __all__ = ["SceneResult", "STATUS_NAMES"]
 
 STATUS_NAMES = ("solved", "not_converged", "singular_mass", "overlap", "", "too_many_contacts",
-                "failed")
+                "failed", "not_converged")
 _KIND_NAMES = {FREE: "ideal_wheel", UNILATERAL: "contact", BOX: "wheel", DISC: "coulomb",
                SPLIT: "anisotropic"}
 _REASONS = {1: "the active-set solve did not converge",
             2: "the mass matrix is not positive definite",
-            6: "a generated function of the model failed at this configuration"}
+            6: "a generated function of the model failed at this configuration",
+            7: "Coulomb friction at the contacts: the fixed point on the tangent rows' bounds "
+               "(s <- mu lam_n) did not settle, or its answer failed Coulomb's conditions"}
+#: a contact's friction state (the record's last field)
+_FRICTION_STATES = ("stick", "open", "slip")
 
 
 def state_name(kind: int, code: int) -> str:
@@ -48,7 +52,11 @@ class SceneResult:
     ``certificate``: the KKT residuals (relative primal, dual, complementarity),
     ``dependent``: the held rows were dependent (statically indeterminate; forces
     minimum-norm on the face: 1, or not attained: 2), ``status`` (:data:`STATUS_NAMES`) and
-    ``reason`` (why a sample was not solved, '' when it was)."""
+    ``reason`` (why a sample was not solved, '' when it was). With contact friction
+    (``mu_contact``), ``uniqueness``: ``unique`` (certified: every piece was enumerated and
+    one solution meets Coulomb's conditions), ``several`` (enumeration found others: the
+    answer is one of ``solutions``), or ``not_certified`` (not enumerated, or some piece's
+    equations were singular); ``None`` on a frictionless scene."""
 
     # filled when first read (class defaults: a one-sample result sets four fields)
     _rows_out = _given = _buf = _detail = _reasons = _lists = None
@@ -118,6 +126,24 @@ class SceneResult:
         return self._out[:, 1].astype(int) if self.batched else int(self._out[0, 1])
 
     @property
+    def solutions(self):
+        """The distinct solutions of Coulomb's conditions that enumeration found (0: not
+        enumerated; negative: some piece was singular, so others may exist)."""
+        return self._out[:, SO_SOLUTIONS].astype(int) if self.batched else int(
+            self._out[0, SO_SOLUTIONS])
+
+    @property
+    def uniqueness(self):
+        """Per sample: ``unique``, ``several`` or ``not_certified`` (class docstring); None
+        where the scene has no contact friction."""
+        if not self._model.packed.friction:
+            return None
+        sol = np.atleast_1d(self.solutions)
+        words = ["unique" if k == 1 else "several" if abs(k) >= 2 else "not_certified"
+                 for k in sol]
+        return words if self.batched else words[0]
+
+    @property
     def certificate(self) -> dict:
         return {k: self._col(INFO.index(k)) for k in ("primal", "dual", "complementarity")}
 
@@ -138,11 +164,17 @@ class SceneResult:
         base = off["contacts"]
         for c in range(int(row[SO_NC])):
             r = row[base + CR_W * c: base + CR_W * (c + 1)]
-            contacts.append({"bodies": [sc.body_name(BODY_KINDS[int(r[0])], int(r[1])),
-                                        sc.body_name(BODY_KINDS[int(r[2])], int(r[3]))],
-                             "point": ((r[4:6] + r[6:8]) / 2).tolist(),
-                             "normal": r[8:10].tolist(), "gap": float(r[10]),
-                             "force": float(r[11]), "state": state_name(UNILATERAL, int(r[12]))})
+            entry = {"bodies": [sc.body_name(BODY_KINDS[int(r[0])], int(r[1])),
+                                sc.body_name(BODY_KINDS[int(r[2])], int(r[3]))],
+                     "point": ((r[4:6] + r[6:8]) / 2).tolist(),
+                     "normal": r[8:10].tolist(), "gap": float(r[10]),
+                     "force": float(r[11]), "state": state_name(UNILATERAL, int(r[12]))}
+            if pk.friction:  # the tangent (-n_y, n_x), the force along it on the second body
+                entry.update(mu=float(r[13]), tangent=[-float(r[9]), float(r[8])],
+                             friction=float(r[14]),
+                             friction_state=_FRICTION_STATES[int(r[15])] if r[13] > 0
+                             else "none")
+            contacts.append(entry)
         ground = []
         g = row[off["ground"]:off["ground"] + 3 * pk.n_ground].reshape(-1, 3)
         for b, (kind, size, label) in enumerate(zip(pk.kinds, pk.sizes, pk.labels)):
@@ -231,7 +263,9 @@ class SceneResult:
                 "status": STATUS_NAMES[int(r.status)], "reason": r.reason[0],
                 "dependent": int(r.dependent), "certificate": {k: float(v) for k, v in
                                                                r.certificate.items()},
-                "contacts": r.contacts, "ground": r.ground, "objects": r.objects}
+                "contacts": r.contacts, "ground": r.ground, "objects": r.objects,
+                **({"uniqueness": r.uniqueness, "solutions": int(r.solutions)}
+                   if self._model.packed.friction else {})}
 
     def __repr__(self) -> str:
         if self.batched:

@@ -94,19 +94,28 @@ class GeneralSceneModel(RobotModel):
         from .stepping import simulate_scene
 
         return simulate_scene(self, q0, duration, **kwargs)
+    def _frictionless_contacts(self, what: str) -> None:
+        if self.packed.friction:
+            raise InputError(f"{what} is not available with contact friction (mu_contact > 0) "
+                             "yet: its pieces assume frictionless contacts; forward, plot and "
+                             "simulate take it")
+
     def maps(self, q, *, state=None) -> dict:
         """The linear maps at ``q`` for a block state (:func:`snakecg.scenes.maps.maps`)."""
         from .maps import maps
+        self._frictionless_contacts("maps")
         return maps(self, q, state=state)
 
     def extremes(self, q, **kwargs):
         """Extremes of the metrics on the input ellipsoid (:mod:`snakecg.scenes.extremes`)."""
         from .extremes import extremes
+        self._frictionless_contacts("extremes")
         return extremes(self, q, **kwargs)
 
     def optimize(self, q, objective="max_sr", **kwargs):
         """Optimal torques for a task (:func:`snakecg.scenes.optimize.optimize`)."""
         from .optimize import optimize
+        self._frictionless_contacts("optimize")
         return optimize(self, q, objective, **kwargs)
 
     def forward(self, q, tau, *, f_obj=None, v=None) -> SceneResult:
@@ -167,7 +176,7 @@ class GeneralSceneModel(RobotModel):
         status."""
         from ..engine.threads import pool, threads
 
-        mcap = ccap + self.packed.ground_rows
+        mcap = self.packed.rows_room(ccap)
         steps = [a.shape[1] if a.shape[0] > 1 else 0 for a in (q, tau, fo)]
         workers = threads(N, PARALLEL_MIN) if detail is None else 1
         n = self.n_coordinates + 3 * self.scene.n_objects
@@ -245,7 +254,7 @@ class GeneralSceneModel(RobotModel):
         ok = (out[:, 0] != 3) & (out[:, 0] < 5)
         nc = out[:, SO_NC].astype(int)
         ccap = max(1, int(nc[ok].max()) if ok.any() else 1)
-        mcap = ccap + pk.ground_rows
+        mcap = pk.rows_room(ccap)
         det = {"A": np.zeros((N, mcap, n)), "lam": np.zeros((N, mcap)),
                "w": np.zeros((N, mcap)), "state": np.zeros((N, mcap))}
         again = np.zeros((N, pk.width(ccap)))
@@ -289,7 +298,7 @@ def _one_sample(model: GeneralSceneModel):
     bq, bt, at = buf[:ns], buf[ns:ns + na], ns + na  # at: where the output row starts
     base = buf.ctypes.data
     args = SceneCall(model._pk, 1, base, 0, base + 8 * ns, 0, model._zero_f.ctypes.data, 0,
-                     ccap, ccap + pk.ground_rows, base + 8 * at, 0, 0, 0, 0, 1)
+                     ccap, pk.rows_room(ccap), base + 8 * at, 0, 0, 0, 0, 1)
     where, call = address(args), model.core.scene_forward_call
     lock = threading.Lock()
     acquire, release = lock.acquire, lock.release

@@ -20,12 +20,17 @@ from .solve import BOX, DISC, FREE, SPLIT
 
 __all__ = ["Packed", "pack", "scene_size"]
 
-SP_HEAD, LINK_W, OBJ_W, OBS_W, GB_W, CR_W = 16, 2, 12, 14, 8, 14
+SP_HEAD, LINK_W, OBJ_W, OBS_W, GB_W, CR_W = 16, 2, 12, 14, 8, 16
 GB_WHEEL, GB_COULOMB, GB_SPLIT, GB_OBJECT = 0, 1, 2, 3
 #: one sample's output row: the solve's info (INFO order), the contact count, the norms, sr,
 #: an overlap's record (bodies, depth, tolerance), then qdd, a_obj, the objects' norms and
-#: poses, the ground blocks (force 2, state), the contacts (CR_W each)
-SO_NC, SO_NORM_QDD, SO_NORM_A, SO_NORM_L, SO_SR, SO_OVERLAP, SO_QDD = 8, 9, 10, 11, 12, 13, 19
+#: poses, the ground blocks (force 2, state), the contacts (CR_W each: bodies (4), points
+#: (4), normal (2), gap, force, state, the pair's Coulomb coefficient, its friction force
+#: along the tangent (-n_y, n_x) and state); SO_SOLUTIONS: the solutions of Coulomb's
+#: conditions that enumeration found (0: not enumerated; negative: some piece's equations
+#: were singular, so others may exist), scene_friction.c
+SO_NC, SO_NORM_QDD, SO_NORM_A, SO_NORM_L, SO_SR, SO_OVERLAP, SO_SOLUTIONS, SO_QDD = \
+    8, 9, 10, 11, 12, 13, 19, 20
 BODY_KINDS = ("link", "object", "obstacle")
 #: contacts read per sample in a first pass (a sample with more is solved again with room for
 #: every pair's)
@@ -98,10 +103,17 @@ class Packed:
     tolerance: float
     offset: dict
     """where the per-sample fields start in an output row"""
+    friction: bool = False
+    """some pair may touch with contact friction (a tangent row beside each such contact)"""
 
     @property
     def n_ground(self) -> int:
         return len(self.kinds)
+
+    def rows_room(self, ccap: int) -> int:
+        """Rows of a sample with room for ``ccap`` contacts (a normal and, with friction, a
+        tangent row each) and the ground's."""
+        return (2 if self.friction else 1) * ccap + self.ground_rows
 
     def width(self, ccap: int) -> int:
         """Doubles of one sample's output row with room for ``ccap`` contacts."""
@@ -146,13 +158,18 @@ def pack(scene: GeneralScene, parameters: np.ndarray, n_s: int) -> Packed:
             rec[6:14] = box_corners(o.center, o.size, o.angle).ravel()
     ground = np.array([[t, b, woff, *par, kind, 0.0] for t, b, woff, par, kind, _, _ in blocks],
                       dtype=float).reshape(-1, GB_W)
-    parts = [links.ravel(), objects.ravel(), obstacles.ravel(), ground.ravel(),
+    # every body's own Coulomb coefficient at contacts (-1: none, the scene's applies)
+    own = np.array([-1.0] * nl + [-1.0 if o.mu_contact is None else o.mu_contact
+                                  for o in (*scene.objects, *scene.obstacles)])
+    parts = [links.ravel(), objects.ravel(), obstacles.ravel(), ground.ravel(), own,
              np.asarray(parameters, dtype=float).ravel()]
     starts = np.cumsum([SP_HEAD] + [p.size for p in parts[:-1]])
     head = np.zeros(SP_HEAD)
     mg = sum(b[5] for b in blocks)
+    friction = scene.has_contact_friction
     head[:12] = (no, nob, scene.radius, scene.tolerance * size, size, len(blocks), mg,
-                 *starts)
+                 *starts[:4], starts[5])
+    head[12:15] = starts[4], scene.mu_contact, float(friction)  # SP_MU, SP_MUC, SP_FRICTION
     vector = np.ascontiguousarray(np.concatenate([head, *parts]))
     ng = len(blocks)
     offset = {"qdd": SO_QDD, "a_obj": SO_QDD + n_s, "each": SO_QDD + n_s + 3 * no,
@@ -160,5 +177,5 @@ def pack(scene: GeneralScene, parameters: np.ndarray, n_s: int) -> Packed:
               "contacts": SO_QDD + n_s + 7 * no + 3 * ng}
     return Packed(vector, tuple(b[4] for b in blocks), tuple(b[5] for b in blocks),
                   tuple(b[3] for b in blocks), tuple(b[6] for b in blocks), n_s, no, mg,
-                  max(1, min(4 * _pairs(scene), MAX_ROWS - mg)), scene.tolerance * size,
-                  offset)
+                  max(1, min(4 * _pairs(scene), (MAX_ROWS - mg) // (2 if friction else 1))),
+                  scene.tolerance * size, offset, friction)

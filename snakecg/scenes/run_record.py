@@ -57,9 +57,9 @@ class SceneRun:
       every sample of a completed run), ``n_contacts`` (N,), ``contact_impulse`` (N,) the
       sum of the contacts' normal impulses over the step (N s);
     * energy: ``kinetic_energy`` (N,), cumulative ``work_tau`` (the torques' work, h tau . v+
-      per step), ``friction_dissipation`` (the ground's, -lam . (A v+) >= 0 per step),
-      ``impact_loss`` and ``contact_work`` (the contacts' impulses on their rows' velocities:
-      0 but for the gap stabilisation);
+      per step), ``friction_dissipation`` (the ground's and the contacts' friction,
+      -lam . (A v+) >= 0 per step), ``impact_loss`` and ``contact_work`` (the contacts'
+      impulses on their rows' velocities: 0 but for the gap stabilisation);
     * ``events`` (impacts, :class:`SceneEvent`), ``status`` (``completed``, ``penetration``,
       ``not_converged``), ``message``, ``violation`` (time and bodies, or None);
     * ``certificate``: the largest KKT residuals of the steps' solves.

@@ -15,11 +15,17 @@
     shape = "peg"          # peg (center, radius) | wall (point, normal) | box (center, size, angle)
     center = [0.3, 0.12]
     radius = 0.03
+    mu_contact = 0.5       # its own Coulomb coefficient at contacts (optional)
+    [contacts]
+    tolerance = 1e-8       # relative to the scene's size
+    mu = 0.2               # Coulomb friction at the contacts between bodies (default 0)
 
 Every problem of the file is collected and raised at once, naming the key and the form.
 """
 
 from __future__ import annotations
+
+import math
 
 from ..errors import InputError
 from ..robot import _robot_from_table
@@ -30,8 +36,11 @@ __all__ = ["read_scene", "scene_from_data"]
 
 _GROUND_KEYS = {"model", "mu", "mu_forward", "mu_backward", "mu_lateral", "wheel_offset",
                 "gravity"}
-_OBJECT_KEYS = {"shape", "size", "radius", "mass", "inertia", "pose", "touching", "mu", "name"}
-_OBSTACLE_KEYS = {"shape", "center", "radius", "point", "normal", "size", "angle", "name"}
+_OBJECT_KEYS = {"shape", "size", "radius", "mass", "inertia", "pose", "touching", "mu", "name",
+                "mu_contact"}
+_OBSTACLE_KEYS = {"shape", "center", "radius", "point", "normal", "size", "angle", "name",
+                  "mu_contact"}
+_CONTACT_KEYS = {"tolerance", "mu"}
 _TOP = {"robot", "ground", "object", "obstacle", "contacts"}
 
 
@@ -97,23 +106,30 @@ def scene_from_data(data: dict, where: str = "scene file") -> GeneralScene:
     if not isinstance(contacts, dict):
         problems.append(f"[contacts] must be a table, got {contacts!r:.60}")
         contacts = {}
-    elif set(contacts) - {"tolerance"}:
-        problems.append(f"unknown keys in [contacts]: {sorted(set(contacts) - {'tolerance'})} "
-                        f"(allowed: ['tolerance'])")
+    elif set(contacts) - _CONTACT_KEYS:
+        problems.append(f"unknown keys in [contacts]: {sorted(set(contacts) - _CONTACT_KEYS)} "
+                        f"(allowed: {sorted(_CONTACT_KEYS)})")
     tolerance = contacts.get("tolerance", 1e-8)
+    mu_c = contacts.get("mu", 0.0)
+    if not (isinstance(mu_c, (int, float)) and not isinstance(mu_c, bool)
+            and math.isfinite(mu_c) and mu_c >= 0):
+        problems.append(f"[contacts] mu must be a finite number >= 0 (Coulomb's coefficient at the "
+                        f"contacts), got {mu_c!r:.60}")
+        mu_c = 0.0
     if robot is None or grounds is None or problems:
         # the rest checked too, so that one message names every problem
         if robot is not None:
             try:
                 GeneralScene(robot, radius=radius, ground=grounds or Ground(),
                              objects=tuple(objects), obstacles=tuple(obstacles),
-                             gravity=gravity, tolerance=tolerance)
+                             gravity=gravity, tolerance=tolerance, mu_contact=mu_c)
             except InputError as exc:
                 problems.append(str(exc).removeprefix("invalid scene: "))
         raise InputError(f"{where}: " + "; ".join(problems))
     try:
         return GeneralScene(robot, radius=radius, ground=grounds, objects=tuple(objects),
-                            obstacles=tuple(obstacles), gravity=gravity, tolerance=tolerance)
+                            obstacles=tuple(obstacles), gravity=gravity, tolerance=tolerance,
+                            mu_contact=mu_c)
     except InputError as exc:
         raise InputError(f"{where}: {str(exc).removeprefix('invalid scene: ')}") from None
 

@@ -1,0 +1,569 @@
+/* snakecg's engine: Coulomb friction at a general scene's contacts (optional: a scene's
+ * contact coefficient mu_c, a body's own mu_contact), at rest and in a velocity-level step.
+ *
+ * A contact whose pair has mu > 0 gets a tangent row beside its normal row: w_t = t . (a_B -
+ * a_A) at its two points, t = (-n_y, n_x) (sc_friction_row, called where scene_rows.c builds
+ * the normal row). Coulomb's law on the rows' accelerations w = G lam + b (or a step's
+ * velocities, with b the offsets' and h the sets' scale):
+ *   lam_n >= 0, w_n >= 0, lam_n w_n = 0;  |lam_t| <= mu lam_n;
+ *   stick: w_t = 0;  slip: lam_t = -mu lam_n sign(w_t).
+ * The bound moves with lam_n, so the problem is not convex and is not one more set of the
+ * convex solve: it is solved by a fixed point on the tangent rows' bounds (Panagiotopoulos'
+ * successive approximation of Tresca problems):
+ *   1. the tangent rows are BOX blocks of half-width s (s = 0 first: the frictionless
+ *      answer); each inner problem is solved exactly by scene_solve.c's core_scene_solve_s;
+ *   2. s <- mu lam_n(s) while the pieces (every block's state) change;
+ *   3. once the pieces repeat, Newton on the sliding contacts' s: the residual mu lam_n(s) - s
+ *      (each evaluation an exact inner solve), its Jacobian by differences of inner solves on
+ *      those pieces (lam_n is affine in s on a polyhedral piece), until |mu lam_n - s| is
+ *      rounding (FP_TOL of the forces' scale);
+ *   4. Coulomb's residuals computed apart from the final accelerations (w = A a + c: the
+ *      normal complementarity, the cone, stick, slip against the sliding) folded into the
+ *      certificate; a sample that does not settle in FP_MAX passes, or whose residuals exceed
+ *      TOL_ACCEPT, is not solved (status FR_NOT_SETTLED, NaN).
+ * Uniqueness. Coulomb problems can have several solutions, or none (Painleve). Where every
+ * other block is polyhedral (contacts, bounded and ideal wheels, frictionless ground) and the
+ * pieces are at most ENUM_MAX, every piece is enumerated (a frictional contact open, stick,
+ * slip either way; a contact held or open; a wheel stick or slide either way), its linear
+ * equations solved and kept where Coulomb's conditions hold: *solutions is the count of
+ * distinct solutions (1: unique, certified), negated where some piece's equations were
+ * singular (a family the count does not see, so uniqueness is not certified), 0 where not
+ * enumerated (a Coulomb or anisotropic ground set, or too many pieces). A fixed point that
+ * did not settle takes the enumeration's solution where it is the only one.
+ */
+#include "snakecg_layout.h"
+#include "engine.h"
+
+#define FP_MAX 400      /* fixed-point and Newton passes */
+#define FP_TOL 1e-12    /* |mu lam_n - s| at most this of the forces' scale: settled */
+#define ENUM_MAX 4096   /* pieces enumerated for the uniqueness check */
+#define SOL_MAX 16      /* distinct solutions kept */
+#define ENUM_TOL 1e-9   /* a piece's solution meets Coulomb's conditions within this */
+#define SAME_TOL 1e-7   /* two solutions are one within this of the forces' scale */
+#define SAME_ROW 1e-8   /* two normal rows are one (bound_of's groups) within this */
+#define FR_NOT_SETTLED 7 /* a sample's status: the fixed point did not settle */
+enum { REC_MU = 13, REC_FT = 14, REC_ST = 15 }; /* a contact record's friction fields */
+
+/* The pair's coefficient: the larger of the bodies' own (a link has none: -1), else the
+ * scene's (snakecg.scenes.description.pair_mu). */
+static double pair_mu(const double *pk, sc_int ia, sc_int ib) {
+  const double *own = pk + (sc_int)pk[SP_MU];
+  return own[ia] < 0 && own[ib] < 0 ? pk[SP_MUC] : fmax(own[ia], own[ib]);
+}
+
+void sc_friction_row(const double *pk, sc_int ia, sc_int ib, const double *nrm,
+                     const double *Dx, const double *Dy, sc_int n, double *row, double *rec) {
+  sc_int j;
+  rec[REC_MU] = pair_mu(pk, ia, ib);
+  for (j = 0; j < n; ++j) row[j] = -nrm[1] * Dx[j] + nrm[0] * Dy[j];
+}
+
+/* Rows a and b (n) equal to rounding. */
+static int same_row(const double *a, const double *b, sc_int n) {
+  double d = 0.0, big = 0.0;
+  sc_int j;
+  for (j = 0; j < n; ++j) {
+    d = fmax(d, fabs(a[j] - b[j]));
+    big = fmax(big, fmax(fabs(a[j]), fabs(b[j])));
+  }
+  return d <= SAME_ROW * big;
+}
+
+/* a = M^-1 (f + A^T lam) = L^-T (g + Z lam), with delassus' factors. */
+static void accelerations(sc_int n, sc_int mt, const double *L, const double *Z,
+                          const double *g, const double *lam, double *a) {
+  sc_int i, j;
+  for (i = 0; i < n; ++i) {
+    double t = g[i];
+    for (j = 0; j < mt; ++j) t += Z[j * n + i] * lam[j];
+    a[i] = t;
+  }
+  for (i = n - 1; i >= 0; --i) {
+    double t = a[i];
+    for (j = i + 1; j < n; ++j) t -= L[j * n + i] * a[j];
+    a[i] = t / L[i * n + i];
+  }
+}
+
+/* The problem's G = A M^-1 A^T, b = A M^-1 f + c (mt rows) by M = L L^T, and the scales of
+ * the forces and accelerations (as scene_solve.c's); 0 where M is not positive definite. */
+static int delassus(sc_int n, sc_int mt, sc_int nbt, const double *M, const double *f,
+                    const double *A, const double *c, const double *par, double *L, double *Z,
+                    double *G, double *b, double *g, double *scale) {
+  sc_int i, j, k;
+  double fs = 0.0, ws = 0.0;
+  memcpy(L, M, sizeof(double) * (size_t)(n * n));
+  if (!sc_cholesky(n, L, n, 1e-14)) return 0;
+  memcpy(g, f, sizeof(double) * (size_t)n);
+  sc_lower_solve(n, L, g);
+  for (j = 0; j < mt; ++j) { /* Z's column j: L^-1 A_j^T */
+    double *z = Z + j * n;
+    memcpy(z, A + j * n, sizeof(double) * (size_t)n);
+    sc_lower_solve(n, L, z);
+  }
+  for (i = 0; i < mt; ++i) {
+    b[i] = sc_dot(Z + i * n, g, n) + (c ? c[i] : 0.0);
+    for (j = 0; j <= i; ++j) G[i * mt + j] = G[j * mt + i] = sc_dot(Z + i * n, Z + j * n, n);
+  }
+  for (i = 0; i < mt; ++i)
+    if (G[i * mt + i] > 0 && fabs(b[i]) / G[i * mt + i] > fs) fs = fabs(b[i]) / G[i * mt + i];
+  for (k = 0; k < nbt; ++k)
+    for (i = 0; i < 3; ++i)
+      if (isfinite(par[3 * k + i]) && fabs(par[3 * k + i]) > fs) fs = fabs(par[3 * k + i]);
+  fs = fs > 0 ? fs : 1.0;
+  for (i = 0; i < mt; ++i) ws = fmax(ws, fmax(fabs(b[i]), G[i * mt + i] * fs));
+  scale[0] = fs;
+  scale[1] = ws > 0 ? ws : 1.0;
+  return 1;
+}
+
+/* Contacts whose normal rows are one (a peg at a joint touching both links' rounded ends)
+ * share their normal force, split arbitrarily between them (statically indeterminate); as
+ * each contact's friction is bounded by its own share, together they allow exactly
+ * sum_k |lam_t,k| <= mu N (N their summed normal force), a slipping one's force against its
+ * slip, and sum_k |lam_t,k| = mu N where every one slips. The group: contacts k with
+ * lead[k] = its first. Contact j's bound: mu lam_n alone; in a group, its share of mu N in
+ * proportion to the friction forces (equal shares where they are all 0). */
+static double bound_of(sc_int j, sc_int nt, sc_int m, const sc_int *lead, const sc_int *rn,
+                       const double *mu, const double *lam) {
+  double N = 0.0, T = 0.0;
+  sc_int k, g = lead[j], count = 0;
+  for (k = g; k < nt; ++k)
+    if (lead[k] == g) N += lam[rn[k]], T += fabs(lam[m + k]), ++count;
+  if (count == 1) return mu[j] * lam[rn[j]];
+  return mu[j] * N * (T > 0 ? fabs(lam[m + j]) / T : 1.0 / (double)count);
+}
+
+/* Coulomb's residuals of (lam, w) on the frictional contacts (normal rows rn[j], tangent rows
+ * m + j), relative to the scales: res[0] primal (a normal force below 0, a tangent force
+ * outside the cone), res[1] dual (a normal row that accelerates into the contact, a sliding
+ * tangent row whose force is not -mu lam_n sign(w_t)), res[2] complementarity (lam_n w_n);
+ * a group's (bound_of) on its summed forces. */
+static void coulomb_residuals(sc_int m, sc_int nt, const sc_int *rn, const sc_int *lead,
+                              const double *mu, const double *lam, const double *w,
+                              const double *scale, double *res) {
+  const double F = scale[0], W = scale[1];
+  sc_int j, k;
+  for (j = 0; j < nt; ++j) {
+    double ln = lam[rn[j]], lt = lam[m + j], wn = w[rn[j]], wt = w[m + j], N = 0.0, T = 0.0;
+    int count = 0, slips = 0;
+    res[1] = fmax(res[1], fmax(0.0, -wn) / W);
+    res[2] = fmax(res[2], fabs(ln * wn) / (F * W));
+    res[0] = fmax(res[0], fmax(0.0, -ln) / F);
+    if (lead[j] != j) continue; /* (a group: at its first) */
+    for (k = j; k < nt; ++k) {
+      if (lead[k] != j) continue;
+      N += lam[rn[k]], T += fabs(lam[m + k]), ++count;
+      if (fabs(w[m + k]) > TOL_ACCEPT * W) { /* slip: the force against it */
+        ++slips;
+        res[1] = fmax(res[1], fmax(0.0, lam[m + k] * (w[m + k] > 0 ? 1.0 : -1.0)) / F);
+      }
+    }
+    res[0] = fmax(res[0], fmax(0.0, T - mu[j] * N) / F);
+    if (count == 1 && slips) /* at the cone's edge */
+      res[1] = fmax(res[1], fabs(lt + (wt > 0 ? mu[j] : -mu[j]) * ln) / F);
+    else if (slips == count)
+      res[1] = fmax(res[1], fabs(T - mu[j] * N) / F);
+  }
+}
+
+/* The enumeration's problem and scratch. */
+typedef struct {
+  sc_int n, m, nb, nt;
+  const sc_int *kind, *start, *tc; /* tc: a contact block's tangent (or -1) */
+  const double *par, *mu, *G, *b, *Z, *g, *scale;
+  double *K, *Kc, *S, *x, *y, *ys, *c0, *c1, *qw, *best;
+  sc_int *piv, *opt, *digit;
+} sc_enum;
+
+/* The piece digit[]'s equations: K x = x (in place): w_r = 0 where held or sticking, else the
+ * force fixed (0 open, +-p a wheel sliding, -+ mu lam_n a contact slipping as w_t > 0, < 0). */
+static void piece_equations(sc_enum *e) {
+  const sc_int m = e->m, mt = m + e->nt;
+  sc_int k, r, u;
+  memset(e->K, 0, sizeof(double) * (size_t)(mt * mt));
+  for (u = m; u < mt; ++u) e->K[u * mt + u] = 1.0, e->x[u] = 0.0; /* no friction: 0 */
+  for (k = 0; k < e->nb; ++k) {
+    const sc_int kd = e->kind[k], dg = e->digit[k], t = e->tc[k];
+    const double p = e->par[3 * k];
+    r = e->start[k];
+    u = t >= 0 ? m + t : -1;
+    e->x[r] = -e->b[r];
+    if (kd == K_BOX && (dg > 0 || !(p > 0))) {
+      e->K[r * mt + r] = 1.0;
+      e->x[r] = !(p > 0) ? 0.0 : dg == 1 ? p : -p;
+    } else if (kd == K_UNILATERAL && dg == (t >= 0 ? 0 : 1)) {
+      e->K[r * mt + r] = 1.0, e->x[r] = 0.0; /* open */
+    } else {
+      memcpy(e->K + r * mt, e->G + r * mt, sizeof(double) * (size_t)mt);
+    }
+    if (u < 0 || dg == 0) continue; /* (open: no tangent force) */
+    if (dg == 1) { /* stick */
+      e->x[u] = -e->b[u];
+      memcpy(e->K + u * mt, e->G + u * mt, sizeof(double) * (size_t)mt);
+    } else { /* slip */
+      e->K[u * mt + u] = 1.0;
+      e->K[u * mt + r] = dg == 2 ? e->mu[t] : -e->mu[t];
+    }
+  }
+}
+
+/* Coulomb's conditions on a piece's solution x as margins (out, >= 0 where met within
+ * ENUM_TOL of the scales; every one affine in x); their count. */
+static sc_int piece_margins(const sc_enum *e, const double *x, double *out) {
+  const sc_int m = e->m, mt = m + e->nt;
+  const double F = e->scale[0], W = e->scale[1];
+  sc_int k, q = 0;
+  for (k = 0; k < e->nb; ++k) {
+    const sc_int r = e->start[k], dg = e->digit[k], t = e->tc[k];
+    const double l = x[r], wr = e->b[r] + sc_dot(e->G + r * mt, x, mt), p = e->par[3 * k];
+    if (e->kind[k] == K_UNILATERAL) {
+      out[q++] = l / F + ENUM_TOL;
+      out[q++] = wr / W + ENUM_TOL;
+    }
+    if (e->kind[k] == K_BOX && p > 0 && dg == 0) {
+      out[q++] = (p - l) / F + ENUM_TOL;
+      out[q++] = (p + l) / F + ENUM_TOL;
+    } else if (e->kind[k] == K_BOX && p > 0) {
+      out[q++] = (dg == 1 ? -wr : wr) / W + ENUM_TOL;
+    }
+    if (t >= 0 && dg > 0) {
+      const double lt = x[m + t], wt = e->b[m + t] + sc_dot(e->G + (m + t) * mt, x, mt);
+      if (dg == 1) {
+        out[q++] = (e->mu[t] * l - lt) / F + ENUM_TOL;
+        out[q++] = (e->mu[t] * l + lt) / F + ENUM_TOL;
+      } else {
+        out[q++] = (dg == 2 ? wt : -wt) / W + ENUM_TOL;
+      }
+    }
+  }
+  return q;
+}
+
+static int piece_feasible(const sc_enum *e) {
+  sc_int i, q = piece_margins(e, e->x, e->c0);
+  for (i = 0; i < q; ++i)
+    if (e->c0[i] < 0) return 0;
+  return 1;
+}
+
+/* y = g + Z x: the accelerations in the inertia's metric (a = L^-T y); index of the one in
+ * list (count) it equals, or -1. */
+static sc_int same_as(const sc_enum *e, const double *list, sc_int count) {
+  sc_int j, i;
+  double big = sc_max_abs(e->g, e->n);
+  for (i = 0; i < e->n; ++i) {
+    double t = e->g[i];
+    for (j = 0; j < e->m + e->nt; ++j) t += e->Z[j * e->n + i] * e->x[j];
+    e->y[i] = t;
+    big = fmax(big, fabs(t));
+  }
+  for (j = 0; j < count && j < SOL_MAX; ++j) {
+    double d = 0.0;
+    for (i = 0; i < e->n; ++i) d = fmax(d, fabs(e->y[i] - list[j * e->n + i]));
+    if (d <= SAME_TOL * big) return j;
+  }
+  return -1;
+}
+
+/* A singular piece (its equations in e->Kc, right-hand side in e->qw + mt): 1 where its
+ * solutions fix the accelerations and a point of them meets Coulomb's conditions (in e->x),
+ * 0 where it has none (inconsistent, or a one-parameter family none of whose points meets
+ * them), -1 where it cannot tell (the accelerations vary on it, or a larger family). By the
+ * SVD: the least-norm point x0 and the null space N; on a line x0 + z v the margins are
+ * affine in z, so their interval is exact. */
+static int singular_piece(sc_enum *e) {
+  const sc_int mt = e->m + e->nt, n = e->n;
+  double *U = e->S, *V = e->K, *sv = e->qw, *rhs = e->qw + mt, *v = e->qw + 2 * mt, smax = 0.0,
+         res = 0.0, lo = -INFINITY, hi = INFINITY;
+  sc_int i, j, null = 0, q;
+  for (i = 0; i < mt; ++i)
+    for (j = 0; j < mt; ++j) U[j * mt + i] = e->Kc[i * mt + j]; /* columns of K */
+  sc_svd_jacobi(mt, mt, U, mt, V, sv);
+  for (j = 0; j < mt; ++j) smax = fmax(smax, sv[j]);
+  sc_svd_least_norm(mt, mt, U, mt, V, sv, rhs, 1e-10, 0, e->x);
+  for (i = 0; i < mt; ++i) res = fmax(res, fabs(sc_dot(e->Kc + i * mt, e->x, mt) - rhs[i]));
+  if (res > 1e-9 * fmax(sc_max_abs(rhs, mt), smax * sc_max_abs(e->x, mt))) return 0;
+  for (j = 0; j < mt; ++j) {
+    double zn = 0.0, zs = 0.0;
+    if (sv[j] > 1e-10 * smax) continue;
+    ++null;
+    memcpy(v, V + j * mt, sizeof(double) * (size_t)mt);
+    for (i = 0; i < n; ++i) { /* the accelerations along v: Z v */
+      double t = 0.0;
+      sc_int k;
+      for (k = 0; k < mt; ++k) t += e->Z[k * n + i] * v[k];
+      zn = fmax(zn, fabs(t));
+    }
+    for (i = 0; i < n * mt; ++i) zs = fmax(zs, fabs(e->Z[i]));
+    if (zn > 1e-9 * zs) return -1;
+  }
+  if (piece_feasible(e)) return 1;
+  if (null != 1) return -1;
+  q = piece_margins(e, e->x, e->c0); /* the margins along the line x0 + z v (v: the last) */
+  for (i = 0; i < mt; ++i) rhs[i] = e->x[i] + v[i];
+  piece_margins(e, rhs, e->c1);
+  for (i = 0; i < q; ++i) {
+    double s = e->c1[i] - e->c0[i];
+    if (fabs(s) <= 1e-15 * (1 + fabs(e->c0[i]))) {
+      if (e->c0[i] < 0) return 0;
+    } else if (s > 0) {
+      lo = fmax(lo, -e->c0[i] / s);
+    } else {
+      hi = fmin(hi, -e->c0[i] / s);
+    }
+  }
+  if (!(lo <= hi)) return 0;
+  {
+    double z = isfinite(lo) && isfinite(hi) ? 0.5 * (lo + hi) : isfinite(lo) ? lo : hi;
+    for (i = 0; i < mt; ++i) e->x[i] += z * v[i];
+  }
+  return 1;
+}
+
+/* The enumeration of every piece (header): the count of distinct accelerations that meet
+ * Coulomb's conditions, negated where a piece may hold others it cannot tell (singular_piece's
+ * -1), 0 where not enumerated; the first solution's forces in e->best. */
+static int enumerate(sc_enum *e) {
+  const sc_int mt = e->m + e->nt;
+  sc_int k, i, found = 0, total = 1, combo;
+  int unsure = 0;
+  for (k = 0; k < e->nb; ++k) { /* the pieces per block */
+    const sc_int kd = e->kind[k];
+    if (kd == K_FREE) e->opt[k] = 1;
+    else if (kd == K_UNILATERAL) e->opt[k] = e->tc[k] >= 0 ? 4 : 2;
+    else if (kd == K_BOX) e->opt[k] = e->par[3 * k] > 0 ? 3 : 1;
+    else return 0; /* a conic set: not enumerated */
+    if (total > ENUM_MAX / e->opt[k]) return 0;
+    total *= e->opt[k];
+  }
+  for (combo = 0; combo < total; ++combo) {
+    sc_int rest = combo;
+    double big = 0.0, small = INFINITY;
+    int regular;
+    for (k = 0; k < e->nb; ++k) {
+      e->digit[k] = rest % e->opt[k];
+      rest /= e->opt[k];
+    }
+    piece_equations(e);
+    memcpy(e->Kc, e->K, sizeof(double) * (size_t)(mt * mt));
+    memcpy(e->qw + mt, e->x, sizeof(double) * (size_t)mt); /* (the right-hand side) */
+    regular = sc_lu_factor(mt, e->K, mt, e->piv);
+    for (i = 0; regular && i < mt; ++i) {
+      big = fmax(big, fabs(e->K[i * mt + i]));
+      small = fmin(small, fabs(e->K[i * mt + i]));
+    }
+    if (regular && small > 1e-12 * big) {
+      sc_lu_solve(mt, e->K, mt, e->piv, e->x);
+      if (!piece_feasible(e)) continue;
+    } else {
+      int got = singular_piece(e);
+      if (got < 0) unsure = 1;
+      if (got <= 0) continue;
+    }
+    if (same_as(e, e->ys, found) >= 0) continue;
+    if (found == 0) memcpy(e->best, e->x, sizeof(double) * (size_t)mt);
+    if (found < SOL_MAX) memcpy(e->ys + e->n * found, e->y, sizeof(double) * (size_t)e->n);
+    ++found;
+  }
+  return (int)(unsure ? -found : found);
+}
+
+/* The pieces of the last inner solve as the next one's start (core_scene_solve_s's `from`). */
+static void pieces(sc_int nbt, const sc_int *kind, const sc_int *start, const double *st,
+                   const double *lam, double *from) {
+  sc_int k;
+  for (k = 0; k < nbt; ++k) {
+    from[3 * k] = st[k];
+    from[3 * k + 1] = lam[start[k]];
+    from[3 * k + 2] = sc_block_size(kind[k]) == 2 ? lam[start[k] + 1] : 0.0;
+  }
+}
+
+int sc_friction_solve(sc_int n, sc_int m, sc_int nb, sc_int nc, const double *M,
+                      const double *f, double *A, double *c, sc_int *kind, sc_int *start,
+                      double *par, const double *T, double *rec, sc_int sweeps,
+                      const double *from, double *lam, double *a, double *w, double *st,
+                      double *info, double *solutions) {
+  sc_int nt = 0, k, j, i, it, mt, nbt, *iw, *tc, *rn, *piv, *slide, *lead, ns;
+  double *d, *mu, *s, *fr, *L, *Z, *G, *b, *g, *pl, *pw, *pa, *pst, *pinfo, *D, *rhs, *r0,
+      scale[2], res[3];
+  sc_enum e;
+  int code = 0, ok = 0, same, stall = 0;
+  double omega = 1.0, best = INFINITY; /* the passes' relaxation (halved where they stall) */
+  *solutions = 0.0;
+  if (!T) /* no contact friction in the scene: the convex solve alone */
+    return SNAKECG_EXPORT(core_scene_solve_s)(n, m, nb, M, f, A, c, kind, start, par, sweeps,
+                                              from, lam, a, w, st, info);
+  for (k = 0; k < nc; ++k) { /* contact k's tangent row m + k: a BOX block after the ground's
+    (of size 0 where the pair has no friction) */
+    rec[CR_W * k + REC_FT] = rec[CR_W * k + REC_ST] = 0.0;
+    if (T + k * n != A + (m + k) * n) /* (the forward's; a step's rows have them in place) */
+      memcpy(A + (m + k) * n, T + k * n, sizeof(double) * (size_t)n);
+    kind[nb + k] = K_BOX;
+    start[nb + k] = m + k;
+    par[3 * (nb + k)] = par[3 * (nb + k) + 1] = par[3 * (nb + k) + 2] = 0.0;
+    lam[m + k] = 0.0;
+    if (c) c[m + k] = 0.0;
+    nt += rec[CR_W * k + REC_MU] > 0;
+  }
+  if (nt == 0) { /* no frictional contact here: convex, the accelerations unique */
+    *solutions = 1.0;
+    return SNAKECG_EXPORT(core_scene_solve_s)(n, m, nb, M, f, A, c, kind, start, par, sweeps,
+                                              from, lam, a, w, st, info);
+  }
+  nt = nc, mt = m + nt, nbt = nb + nt;
+  d = (double *)malloc(sizeof(double) * (size_t)(4 * nt + 4 * nbt + n * n + 2 * n * mt +
+                                                 4 * mt * mt + 10 * mt + 4 * n + 12 * nbt +
+                                                 SOL_MAX * n + nt * nt + 16));
+  iw = (sc_int *)malloc(sizeof(sc_int) * (size_t)(3 * nbt + 3 * nt + 2 * mt + 8));
+  if (!d || !iw) {
+    free(d);
+    free(iw);
+    return -1;
+  }
+  mu = d, s = mu + nt, r0 = s + nt, rhs = r0 + nt, fr = rhs + nt, L = fr + 3 * nbt;
+  Z = L + n * n, G = Z + n * mt, b = G + mt * mt, g = b + mt, pl = g + n, pw = pl + mt;
+  pa = pw + mt, pst = pa + n, pinfo = pst + nbt, D = pinfo + 8; /* (pinfo: INFO_WIDTH) */
+  e.K = D + nt * nt, e.Kc = e.K + mt * mt, e.S = e.Kc + mt * mt, e.x = e.S + (mt + n) * mt;
+  e.y = e.x + mt, e.ys = e.y + n, e.c0 = e.ys + SOL_MAX * n, e.c1 = e.c0 + 6 * nbt;
+  e.qw = e.c1 + 6 * nbt, e.best = e.qw + 5 * mt + n;
+  tc = iw, rn = tc + nbt, piv = rn + nt, slide = piv + mt;
+  e.opt = slide + nt, e.digit = e.opt + nbt, lead = e.digit + nbt;
+  for (k = 0; k < nbt; ++k) tc[k] = -1;
+  for (k = 0; k < nc; ++k) { /* (tc: the contact's tangent where it has friction) */
+    tc[k] = rec[CR_W * k + REC_MU] > 0 ? k : -1;
+    rn[k] = start[k], mu[k] = fmax(0.0, rec[CR_W * k + REC_MU]), s[k] = 0.0, lead[k] = k;
+    for (j = 0; j < k && tc[k] >= 0; ++j) /* one normal row: the first one's group */
+      if (tc[j] >= 0 && lead[j] == j && mu[j] == mu[k] &&
+          same_row(A + rn[j] * n, A + rn[k] * n, n)) {
+        lead[k] = j;
+        break;
+      }
+  }
+  for (it = 0; it < FP_MAX; ++it) {
+    double F = 0.0, err = 0.0;
+    for (j = 0; j < nt; ++j) par[3 * (nb + j)] = s[j];
+    code = SNAKECG_EXPORT(core_scene_solve_s)(n, mt, nbt, M, f, A, c, kind, start, par, sweeps,
+                                              it ? fr : NULL, lam, a, w, st, info);
+    if (code || info[0] != 0.0) break;
+    for (i = 0; i < mt; ++i) F = fmax(F, fabs(lam[i]));
+    for (j = 0; j < nt; ++j)
+      err = fmax(err, fabs(bound_of(j, nt, m, lead, rn, mu, lam) - s[j]));
+    if (err <= FP_TOL * (F > 0 ? F : 1.0)) {
+      ok = 1;
+      break;
+    }
+    if (err < 0.9 * best) best = err, stall = 0; /* progress */
+    else if (++stall >= 6) /* no progress in 6 passes (a cycle of pieces): relax */
+      omega = fmax(0.5 * omega, 1.0 / 1024), stall = 0, best = err;
+    same = it > 0;
+    for (k = 0; k < nbt && same; ++k) same = fr[3 * k] == st[k];
+    pieces(nbt, kind, start, st, lam, fr);
+    for (j = ns = 0; j < nt; ++j) /* the sliding tangents (on the bound, s > 0) */
+      if (st[nb + j] == 3.0 || st[nb + j] == 4.0) slide[ns++] = j;
+    if (!same || ns == 0) { /* s <- mu lam_n */
+      for (j = 0; j < nt; ++j) s[j] += omega * (bound_of(j, nt, m, lead, rn, mu, lam) - s[j]);
+      continue;
+    }
+    /* Newton on the sliding s: R = mu lam_n(s) - s, J = mu dlam_n/ds - I by differences */
+    for (j = 0; j < nt; ++j) r0[j] = bound_of(j, nt, m, lead, rn, mu, lam);
+    for (i = 0; i < ns; ++i) {
+      sc_int q = slide[i];
+      double h = 1e-7 * fmax(s[q], F);
+      par[3 * (nb + q)] = s[q] + h;
+      code = SNAKECG_EXPORT(core_scene_solve_s)(n, mt, nbt, M, f, A, c, kind, start, par,
+                                                sweeps, fr, pl, pa, pw, pst, pinfo);
+      par[3 * (nb + q)] = s[q];
+      if (code || pinfo[0] != 0.0) break;
+      for (j = 0; j < ns; ++j)
+        D[j * ns + i] =
+            (bound_of(slide[j], nt, m, lead, rn, mu, pl) - r0[slide[j]]) / h - (i == j);
+    }
+    if (i < ns) { /* a difference not solved: a plain pass */
+      for (j = 0; j < nt; ++j) s[j] += omega * (r0[j] - s[j]);
+      code = 0;
+      continue;
+    }
+    for (j = 0; j < ns; ++j) rhs[j] = -(r0[slide[j]] - s[slide[j]]);
+    if (!sc_lu_factor(ns, D, ns, piv)) {
+      for (j = 0; j < nt; ++j) s[j] += omega * (r0[j] - s[j]);
+      continue;
+    }
+    sc_lu_solve(ns, D, ns, piv, rhs);
+    for (j = 0; j < ns; ++j) rhs[j] = s[slide[j]] + omega * rhs[j];
+    for (j = 0; j < nt; ++j) s[j] += omega * (r0[j] - s[j]); /* sticking, open: mu lam_n */
+    for (j = 0; j < ns; ++j) s[slide[j]] = fmax(0.0, rhs[j]);
+  }
+  if (code == -1) {
+    free(d);
+    free(iw);
+    return -1;
+  }
+  scale[0] = scale[1] = 1.0;
+  if (!delassus(n, mt, nbt, M, f, A, c, par, L, Z, G, b, g, scale)) ok = 0;
+  else {
+    int count;
+    e.n = n, e.m = m, e.nb = nb, e.nt = nt, e.kind = kind, e.start = start, e.tc = tc;
+    e.par = par, e.mu = mu, e.G = G, e.b = b, e.Z = Z, e.g = g, e.scale = scale, e.piv = piv;
+    count = enumerate(&e);
+    *solutions = (double)count;
+    if (!ok && count == 1) { /* the one solution, where the fixed point did not settle */
+      memcpy(lam, e.best, sizeof(double) * (size_t)mt);
+      accelerations(n, mt, L, Z, g, lam, a);
+      for (k = 0; k < nbt; ++k) { /* the states read off the solution */
+        double l = lam[start[k]];
+        st[k] = kind[k] == K_UNILATERAL ? (l > 0 ? S_HELD : S_ZERO) :
+                kind[k] == K_BOX && par[3 * k] > 0 && fabs(l) >= par[3 * k] ? (l > 0 ? 3 : 4) :
+                S_HELD;
+      }
+      info[0] = 0.0, info[2] = info[3] = info[4] = 0.0;
+      ok = 1;
+    }
+  }
+  if (ok) { /* Coulomb's residuals apart, from the accelerations: w = A a + c */
+    int moved = 0;
+    for (i = 0; i < mt; ++i) w[i] = sc_dot(A + i * n, a, n) + (c ? c[i] : 0.0);
+    for (j = 0; j < nc; ++j) { /* a group's normal force split as Coulomb allows it: a
+      slipping contact |lam_t| / mu, the sticking ones the rest in equal parts */
+      double N = 0.0, need = 0.0;
+      sc_int count = 0, stick = 0;
+      if (lead[j] != j || !(mu[j] > 0)) continue;
+      for (k = j; k < nc; ++k)
+        if (lead[k] == j) {
+          N += lam[rn[k]], need += fabs(lam[m + k]) / mu[j], ++count;
+          stick += !(fabs(w[m + k]) > TOL_ACCEPT * scale[1]);
+        }
+      for (k = j; count > 1 && k < nc; ++k)
+        if (lead[k] == j) {
+          int sticks = !(fabs(w[m + k]) > TOL_ACCEPT * scale[1]);
+          lam[rn[k]] = fabs(lam[m + k]) / mu[j] + (sticks ? fmax(0.0, N - need) / stick : 0.0);
+          st[k] = lam[rn[k]] > 0 ? S_HELD : S_ZERO;
+          moved = 1;
+        }
+    }
+    if (moved) { /* (the rows equal to within SAME_ROW: the accelerations again) */
+      accelerations(n, mt, L, Z, g, lam, a);
+      for (i = 0; i < mt; ++i) w[i] = sc_dot(A + i * n, a, n) + (c ? c[i] : 0.0);
+    }
+    res[0] = info[2], res[1] = info[3], res[2] = info[4];
+    coulomb_residuals(m, nt, rn, lead, mu, lam, w, scale, res);
+    info[2] = res[0], info[3] = res[1], info[4] = res[2];
+    ok = res[0] <= TOL_ACCEPT && res[1] <= TOL_ACCEPT && res[2] <= TOL_ACCEPT;
+  }
+  if (!ok) { /* (an inner solve's own status kept: not converged, a singular mass matrix) */
+    if (info[0] == 0.0) info[0] = FR_NOT_SETTLED;
+    for (i = 0; i < n; ++i) a[i] = NAN;
+    for (i = 0; i < mt; ++i) lam[i] = NAN;
+  }
+  for (k = 0; k < nc; ++k) /* the contacts' friction force and state */
+    if (mu[k] > 0) {
+      rec[CR_W * k + REC_FT] = lam[m + k];
+      rec[CR_W * k + REC_ST] = !(lam[rn[k]] > 0) ? 1.0 : fabs(w[m + k]) > TOL_ACCEPT *
+                               scale[1] ? 2.0 : 0.0;
+    }
+
+  free(d);
+  free(iw);
+  return 0;
+}
