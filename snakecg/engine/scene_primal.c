@@ -128,10 +128,11 @@ static sc_int face_rank(sc_problem *p, const double *Z, const sc_int *F, sc_int 
 /* The piece of p->state (its forces' start in p->lam) solved in the primal: p->lam and p->w
  * (every row's, w = Z^T (g + Z lam) + c) filled. g = L^-1 f, Z = L^-1 A^T (n x m,
  * coordinate i's row at Z + i m; M = L L^T), c the rows' offsets (or NULL). Returns 1 when
- * solved with unique forces, 2 with the face's minimum-norm ones (defect: the held rows'
- * rank defect), 0 when left to the dual path (p->lam, p->w then undefined). */
+ * solved with unique forces, 2 with the face's minimum-norm ones (def: the held rows' rank
+ * defect; work's first n: g + Z lam), 0 when left to the dual path (p->lam, p->w then
+ * undefined). */
 SC_INTERNAL int sc_primal_piece(sc_problem *p, const double *Z, const double *g,
-                                const double *c, double *work, sc_int *iwork, sc_int *defect) {
+                                const double *c, double *work, sc_int *iwork, sc_int *def) {
   const sc_int n = p->n, m = p->m, nb = p->nb;
   double *R = work, *Y = R + n * n, *S = Y + n * m, *gF = S + m * m, *y = gF + n,
          *grad = y + n, *q = grad + n, *dy = q + n, *yt = dy + n, *t = yt + n, *lh = t + n,
@@ -293,7 +294,7 @@ SC_INTERNAL int sc_primal_piece(sc_problem *p, const double *Z, const double *g,
     p->lam[sl[j]] = -rad[j] * w0 / nw;
     p->lam[sl[j] + 1] = -rad[j] * w1 / nw;
   }
-  *defect = h - rank;
+  *def = h - rank;
   every_w(p, Z, g, c, y);
   /* the face: the held rows and every block's without acceleration (sliding at rounding's
    * speed, an open contact closing at none); where its rows are dependent, its forces the
@@ -321,5 +322,6 @@ SC_INTERNAL int sc_primal_piece(sc_problem *p, const double *Z, const double *g,
       again = 1;
     }
   if (again || dep) every_w(p, Z, g, c, y);
+  memcpy(work, y, sizeof(double) * (size_t)n); /* (g + Z lam, for the accelerations) */
   return 1 + dep;
 }

@@ -351,10 +351,7 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
   if (from && m > n && sc_primal_tally(-1)) /* the warm start's piece, first in the primal
     where its n unknowns are fewer than the dual's m */
     ok = primal = primal_start(&p, Z, a, c, from, keep, rest, iw2, res, &defect, &dep);
-  if (primal) {
-    passes = 1;
-    goto answered;
-  }
+  if (primal) { passes = 1; goto answered; }
   for (j = 0; j < m; ++j) {
     b[j] = zero[j] = 0.0;
     for (k = 0; k <= j; ++k) G[j * m + k] = 0.0;
@@ -499,11 +496,12 @@ answered:
     state_out[k] = code;
   }
   /* eq. (18): a = M^-1 (f + A^T lam) = L^-T (g + Z lam) */
-  for (j = k = 0; j < m; ++j) /* (the rows with a force listed once: iw2 is free by now) */
+  for (j = k = 0; j < m && !primal; ++j) /* (the rows with a force listed once: iw2 is free
+    by now; the primal's g + Z lam at the start of rest) */
     if (lam[j] != 0.0 && isfinite(lam[j])) iw2[k++] = j;
   for (i = 0; i < n; ++i) { /* (summed in a register: a and Z may alias for the compiler) */
     const double *zi = Z + i * m;
-    double t = a[i];
+    double t = primal ? rest[i] : a[i];
     for (j = 0; j < k; ++j) t += zi[iw2[j]] * lam[iw2[j]];
     a[i] = t;
   }
