@@ -221,6 +221,7 @@ SC_INTERNAL int sc_primal_piece(sc_problem *p, const double *Z, const double *g,
      * (w_H = Z_H^T y + c_H), S = Y^T Y */
     for (i = 0; i < n; ++i) q[i] = grad[i];
     sc_lower_solve(n, R, q);
+    for (i = 0; i < n; ++i) t[i] = 1.0 / R[i * n + i]; /* (multiplied: no division chain) */
     for (j = 0; j < h; ++j) {
       double *restrict yj = Y + j * n, u = -cg[2 * ns + j];
       for (i = 0; i < n; ++i) {
@@ -231,7 +232,7 @@ SC_INTERNAL int sc_primal_piece(sc_problem *p, const double *Z, const double *g,
           t1 -= ri[k + 1] * yj[k + 1];
         }
         if (k < i) t0 -= ri[k] * yj[k];
-        yj[i] = (t0 + t1) / ri[i];
+        yj[i] = (t0 + t1) * t[i];
         u += yj[i] * q[i] - zij * y[i];
       }
       lh[j] = u;
