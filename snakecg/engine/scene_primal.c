@@ -219,9 +219,17 @@ SC_INTERNAL int sc_primal_piece(sc_problem *p, const double *Z, const double *g,
     if (!sc_cholesky(n, R, n, 1e-14)) return 0;
     /* q = R^-1 grad; Y = R^-1 Z_H (column j, held row j's, at Y + j n), lh = Y^T q - w_H
      * (w_H = Z_H^T y + c_H), S = Y^T Y */
-    for (i = 0; i < n; ++i) q[i] = grad[i];
-    sc_lower_solve(n, R, q);
     for (i = 0; i < n; ++i) t[i] = 1.0 / R[i * n + i]; /* (multiplied: no division chain) */
+    for (i = 0; i < n; ++i) {
+      const double *restrict ri = R + i * n;
+      double s0 = grad[i], s1 = 0.0;
+      for (k = 0; k + 1 < i; k += 2) {
+        s0 -= ri[k] * q[k];
+        s1 -= ri[k + 1] * q[k + 1];
+      }
+      if (k < i) s0 -= ri[k] * q[k];
+      q[i] = (s0 + s1) * t[i];
+    }
     for (j = 0; j < h; ++j) {
       double *restrict yj = Y + j * n, u = -cg[2 * ns + j];
       for (i = 0; i < n; ++i) {
@@ -251,7 +259,7 @@ SC_INTERNAL int sc_primal_piece(sc_problem *p, const double *Z, const double *g,
     for (i = n - 1; i >= 0; --i) {
       double s = dy[i];
       for (k = i + 1; k < n; ++k) s -= R[k * n + i] * dy[k];
-      dy[i] = s / R[i * n + i];
+      dy[i] = s * t[i];
     }
     for (i = 0; i < n; ++i) {
       step = sc_max(step, fabs(dy[i]));
