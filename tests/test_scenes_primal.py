@@ -11,6 +11,9 @@ Held to references written here apart:
   contacts; V to 1e-9 of its scale, the forces against Clarabel's duals (the contacts' and
   the discs' second-order cones) where the face's rows are independent (NumPy's SVD), and
   Newton's stationarity M V = f + A^T lam checked densely;
+* random problems with every kind of row it treats (an ideal wheel, contacts with offsets, a
+  bounded wheel sliding or stuck, Coulomb discs) from their own pieces: the same to 1e-12 as
+  their cold solves, V to 1e-9 of Clarabel's polished primal;
 * the 10-joint statically indeterminate forward scene (33 rows on 19 coordinates), from a
   neighbouring torque's pieces and from the sample's own: the accelerations against
   Clarabel's primal, the forces' KKT conditions checked densely;
@@ -25,6 +28,7 @@ Held to references written here apart:
 
 from __future__ import annotations
 
+import warnings
 from pathlib import Path
 
 import numpy as np
@@ -32,7 +36,7 @@ import pytest
 
 import snakecg
 from snakecg.scenes import load_scene
-from snakecg.scenes.solve import DISC, FREE, INFO, UNILATERAL
+from snakecg.scenes.solve import BOX, DISC, FREE, INFO, UNILATERAL
 from snakecg.scenes.stepping import GAP_BAND, _Stepper
 from snakecg.scenes.toml_reading import read_scene
 from snakecg.simulate import serpenoid_controller
@@ -91,6 +95,11 @@ def _primal_reference(p, tol=1e-11):
         elif kind == FREE:
             cons.append(A[s] @ V + c[s] == 0)
             where.append((kind, s))
+        elif kind == BOX:  # p0 |w| as p0 t, t >= w, t >= -w
+            t = cp.Variable()
+            cost += par[0] * t
+            cons += [t - (A[s] @ V + c[s]) >= 0, t + (A[s] @ V + c[s]) >= 0]
+            where += [(kind, s), (-kind, s)]
         elif kind == DISC:
             t = cp.Variable()
             cost += par[0] * t
@@ -99,12 +108,19 @@ def _primal_reference(p, tol=1e-11):
         else:
             raise AssertionError("these scenes have contacts, wheels and discs only")
     prob = cp.Problem(cp.Minimize(cost), cons)
-    prob.solve(solver="CLARABEL", tol_gap_abs=tol, tol_gap_rel=tol, tol_feas=tol,
-               max_iter=400)
+    for t in (tol, 1e-9):  # retried looser where Clarabel stops short ("inaccurate")
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", UserWarning)
+            prob.solve(solver="CLARABEL", tol_gap_abs=t, tol_gap_rel=t, tol_feas=t,
+                       max_iter=400)
+        if prob.status == "optimal":
+            break
     assert prob.status == "optimal"
     lam = np.zeros(len(c))
     for con, (kind, s) in zip(cons, where):
-        if kind == DISC:
+        if abs(kind) == BOX:  # the force: the second cone's dual less the first's
+            lam[s] += float(con.dual_value) * (1.0 if kind < 0 else -1.0)
+        elif kind == DISC:
             lam[s:s + 2] = np.ravel(con.dual_value[1])
         elif kind == UNILATERAL:
             lam[s] = float(con.dual_value)
@@ -124,24 +140,27 @@ def _polished(p, V0, lam0, iters=30):
     M, f, A, c = p["M"], p["f"], p["A"], p["c"]
     w0 = A @ V0 + c
     W, F = max(np.abs(w0).max(), 1e-300), max(np.abs(lam0).max(), 1e-300)
-    held, slide = [], []
+    held, slide, fixed = [], [], np.zeros(len(c))
     for kind, s, par in zip(p["kind"], p["start"], p["par"].reshape(-1, 3)):
+        if kind == BOX and abs(w0[s]) / W > 1 - abs(lam0[s]) / par[0]:
+            fixed[s] = -par[0] * np.sign(w0[s])  # a sliding box: its force at the bound
+            continue
         # (the piece by complementarity: whichever of the motion and the slack in the
         # force's set is the larger, relative to its scale)
         if kind == DISC and np.hypot(*w0[s:s + 2]) / W > 1 - np.hypot(*lam0[s:s + 2]) / par[0]:
             slide.append((s, par[0]))
-        elif kind == DISC or kind == FREE or (kind == UNILATERAL and lam0[s] / F > w0[s] / W):
+        elif kind in (DISC, FREE, BOX) or (kind == UNILATERAL and lam0[s] / F > w0[s] / W):
             held += [s, s + 1] if kind == DISC else [s]
     AH = A[held]
     V, n = V0.copy(), len(f)
     Vstar = np.linalg.solve(M, f)
 
     def phi(V):
-        return 0.5 * (V - Vstar) @ M @ (V - Vstar) + sum(
+        return 0.5 * (V - Vstar) @ M @ (V - Vstar) - fixed @ (A @ V + c) + sum(
             rad * np.linalg.norm(A[s:s + 2] @ V + c[s:s + 2]) for s, rad in slide)
 
     for it in range(iters):
-        g = M @ V - f
+        g = M @ V - f - A.T @ fixed
         Hs = M.copy()
         for s, rad in slide:
             wi = A[s:s + 2] @ V + c[s:s + 2]
@@ -159,12 +178,56 @@ def _polished(p, V0, lam0, iters=30):
         mu = -sol[n:]
         if np.abs(sol[:n]).max() <= 1e-15 * np.abs(V).max():
             break
-    lam = np.zeros(len(c))
+    lam = fixed.copy()
     lam[held] = mu
     for s, rad in slide:
         wi = A[s:s + 2] @ V + c[s:s + 2]
         lam[s:s + 2] = -rad * wi / np.linalg.norm(wi)
     return V, lam
+
+
+def test_every_kind_it_treats_on_random_problems(pegs):
+    """Random problems with rows of every kind the primal treats (an ideal wheel, contacts, a
+    bounded wheel, Coulomb discs; more rows than coordinates) and offsets, each solved cold,
+    then from its own pieces: the primal answers most, the same as the cold solve (1e-12) and
+    as Clarabel's primal polished on its piece (V to 1e-9, the forces where unique)."""
+    rng = np.random.default_rng(5)
+    core = pegs[0].core  # (any general scene's engine: the problems are given whole)
+    answered = 0
+    for _ in range(12):
+        n = 6
+        kind = np.array([FREE, UNILATERAL, UNILATERAL, BOX, DISC, DISC, DISC])
+        start = np.array([0, 1, 2, 3, 4, 6, 8])
+        m = 10
+        B = rng.normal(size=(n, n))
+        M = B @ B.T + n * np.eye(n)
+        A = rng.normal(size=(m, n))
+        par = np.zeros((len(kind), 3))
+        par[3:, 0] = rng.uniform(0.05, 0.3, 4)  # small sets: the box and discs slide
+        p = dict(n=n, m=m, nb=len(kind), M=M, f=rng.normal(size=n), A=A,
+                 c=np.r_[0.0, rng.uniform(-0.2, 0.2, 2), np.zeros(7)], kind=kind,
+                 start=start, par=par.reshape(-1))
+        core.scene_primal(1, None)
+        cold = _solve(core, p, None)
+        assert cold["info"]["status"] == 0
+        frm = np.zeros((len(kind), 3))
+        frm[:, 0] = cold["state"]
+        for b, (k, s) in enumerate(zip(kind, start)):
+            frm[b, 1:3 if k >= DISC else 2] = cold["lam"][s:s + (2 if k >= DISC else 1)]
+        _counts(core)
+        out = _solve(core, p, frm)
+        tries, ans = _counts(core)
+        answered += int(ans)
+        np.testing.assert_allclose(out["a"], cold["a"], rtol=0,
+                                   atol=1e-12 * np.abs(cold["a"]).max())
+        V0, lam0 = _primal_reference(p)
+        V, lam = _polished(p, V0, lam0)
+        np.testing.assert_allclose(out["a"], V, rtol=0, atol=1e-9 * np.abs(V).max())
+        r = p["M"] @ V0 - p["f"] - p["A"].T @ lam0  # (Clarabel's duals' signs)
+        assert np.abs(r).max() <= 1e-6 * np.abs(p["f"]).max()
+        if ans and out["info"]["dependent"] == 0:
+            np.testing.assert_allclose(out["lam"], lam, rtol=0, atol=1e-9 * np.abs(lam).max())
+    assert answered >= 6
 
 
 def _step_problems(model, run, ks):
