@@ -18,12 +18,14 @@
 * **paper**: the paper's scene (3 joints, wheels, kappa 100) through the general path and
   through today's path, single and batched (and a 64 x 64 map of two joint angles, warm
   against cold);
+* **primal piece** (``--primal``): the warm batches (torque map, random batch) with a warm
+  start's piece solved in the primal (scene_primal.c) and without it, alternated;
 * **instructions** (``--instructions``, needs valgrind): machine instructions per sample
   inside the engine's call and inside its solve (callgrind's inclusive counts over a batch),
   figures that do not depend on the machine's load.
 
     python benchmarks/bench_scenes.py [--joints 10] [--n 2000] [--single 300] [--repeat 3]
-                                      [--instructions]
+                                      [--instructions] [--primal]
 
 Prints a table and the machine's load average before and after.
 """
@@ -134,6 +136,27 @@ def _warm_cold(model, name, Q, T, repeat) -> None:
           f"{cold[:, 6].mean():.2f}): {min(times[1]) / min(times[WARM_CHUNK]):.2f}x")
 
 
+def _primal_on_off(model, name, Q, T, repeat) -> None:
+    """The engine's warm batch with the warm start's piece solved in the primal
+    (scene_primal.c) and without it (``core_scene_primal``'s switch), alternated; per sample,
+    with the share of the samples the primal answered."""
+    from snakecg.scenes.model import WARM_CHUNK
+
+    core, n, counts = model.core, len(Q), np.zeros(2)
+    times = {1: [], 0: []}
+    for _ in range(repeat):
+        for mode, acc in times.items():
+            core.scene_primal(mode, None)
+            acc.append(best_of(lambda: model._run(Q, T, model._zero_f, n, True,
+                                                  chunk=WARM_CHUNK), 1) / n)
+    core.scene_primal(1, counts.ctypes.data)
+    model._run(Q, T, model._zero_f, n, True, chunk=WARM_CHUNK)
+    core.scene_primal(1, counts.ctypes.data)
+    print(f"  {name} ({n}), warm: primal piece {min(times[1]) * 1e6:.2f} us per sample "
+          f"(answered {counts[1]:.0f} of {counts[0]:.0f} warm starts), without "
+          f"{min(times[0]) * 1e6:.2f} us: {min(times[0]) / min(times[1]):.2f}x")
+
+
 def _models(joints: int):
     """The benchmark's scene (its model, q, tau) and the paper's scene on the general path."""
     rng = np.random.default_rng(0)
@@ -197,6 +220,8 @@ def main() -> None:
     ap.add_argument("--repeat", type=int, default=3)
     ap.add_argument("--instructions", action="store_true",
                     help="also instructions per sample (valgrind's callgrind)")
+    ap.add_argument("--primal", action="store_true",
+                    help="also the warm batches with and without the primal piece")
     ap.add_argument("--_child", nargs=3, help=argparse.SUPPRESS)
     a = ap.parse_args()
     if a._child:
@@ -232,6 +257,10 @@ def main() -> None:
     Tg[:, 2], Tg[:, 6] = np.repeat(g, g.size), np.tile(g, g.size)
     _warm_cold(model, "torque map 36 x 36", np.repeat(q[None], len(Tg), axis=0), Tg, a.repeat)
     _warm_cold(model, "random batch", Q, T, a.repeat)
+    if a.primal:
+        _primal_on_off(model, "torque map 36 x 36", np.repeat(q[None], len(Tg), axis=0), Tg,
+                       a.repeat)
+        _primal_on_off(model, "random batch", Q, T, a.repeat)
     try:
         import mujoco
 

@@ -31,7 +31,10 @@ kd 0.3) from the serpenoid's shape, for ``--duration`` seconds (default 2).
 The figure is simulated seconds per CPU second (``time.process_time``, best of
 ``--repeat``). Prints the machine's load before and after.
 
-    python benchmarks/bench_simulate_scenes.py [--duration 2] [--repeat 2]
+    python benchmarks/bench_simulate_scenes.py [--duration 2] [--repeat 2] [--primal]
+
+``--primal``: instead, the pegs row's run and the paper's push with each warm step's piece
+solved in the primal (scene_primal.c) and without it, alternated in one process.
 """
 
 from __future__ import annotations
@@ -211,13 +214,54 @@ def paper_push(repeat) -> None:
           f"a step; were the solve free: {0.5 / (best - share * steps):.0f} x real time")
 
 
+def primal_on_off(model, q0, gait, duration, repeat) -> None:
+    """The pegs row's run and the paper's push with each step's warm start solved in the
+    primal (scene_primal.c) and without it (``core_scene_primal``'s switch), alternated."""
+    import snakecg
+    from snakecg.scenes.paper import _plate_model
+
+    q = np.deg2rad([0.0, 0.0, 0.0, 30.0, -45.0, 60.0])
+    tau = np.array([0.05, 0.0, -0.02])
+    sm = snakecg.load(snakecg.Scene(snakecg.Robot(joints=3), scenario="wheels", kappa=100.0))
+    sm.simulate(q, tau, 0.5, contacts="geometry")
+    plate = _plate_model(sm).core
+    pegs, push = {1: np.inf, 0: np.inf}, {1: np.inf, 0: np.inf}
+    counts = np.zeros(2)
+    for _ in range(repeat):
+        for mode in (1, 0):
+            model.core.scene_primal(mode, None)
+            plate.scene_primal(mode, None)
+            t0 = time.process_time()
+            model.simulate(q0, duration, tau=gait, dt=1e-3)
+            pegs[mode] = min(pegs[mode], time.process_time() - t0)
+            for _ in range(10):
+                t0 = time.process_time()
+                sm.simulate(q, tau, 0.5, contacts="geometry")
+                push[mode] = min(push[mode], time.process_time() - t0)
+    model.core.scene_primal(1, counts.ctypes.data)
+    model.simulate(q0, duration, tau=gait, dt=1e-3)
+    model.core.scene_primal(1, counts.ctypes.data)
+    plate.scene_primal(1, None)
+    print(f"the warm step's piece in the primal, and without (alternated, best of {repeat}): "
+          f"pegs row {duration / pegs[1]:.1f} against {duration / pegs[0]:.1f} simulated s "
+          f"per CPU s ({pegs[0] / pegs[1]:.2f}x; the primal answered {counts[1]:.0f} of "
+          f"{counts[0]:.0f} warm starts); the paper's push {0.5 / push[1]:.0f} against "
+          f"{0.5 / push[0]:.0f} x real time ({push[0] / push[1]:.2f}x)")
+
+
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--duration", type=float, default=2.0)
     ap.add_argument("--repeat", type=int, default=2)
+    ap.add_argument("--primal", action="store_true",
+                    help="only the runs with and without the primal piece, alternated")
     a = ap.parse_args()
     print(f"machine: {platform.processor() or platform.machine()}, load {os.getloadavg()}")
     scene, model, q0, gait = setup()
+    if a.primal:
+        primal_on_off(model, q0, gait, a.duration, a.repeat)
+        print(f"load after: {os.getloadavg()}")
+        return
     best, run = np.inf, None
     for _ in range(a.repeat):
         t0 = time.process_time()

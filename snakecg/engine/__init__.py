@@ -65,6 +65,9 @@ class Core:
         self.scene_solve_s = lib.entry_or_none("core_scene_solve_s")
         """scene_solve.c's ``core_scene_solve_s``: one sample of ``core_scene_solve_b``, its
         active set tried first from given pieces (a time step's: the last step's)."""
+        self.scene_primal = lib.entry_or_none("core_scene_primal")
+        """scene_primal.c's ``core_scene_primal(mode, counts)``: the warm start's primal piece
+        switched on (1) or off (0) for the process, and this thread's tries and answers."""
         self.contact_depth = lib.entry_or_none("core_contact_depth")
         """geometry.c's ``core_contact_depth``: the simulation's contact check at states."""
         self.sphere = SphereKernel(lib)

@@ -20,7 +20,7 @@
  *   optimal.c       the optimal-torque queries of a batch (exported: core_optimal)
  *   max_sr.c, push.c, wheel_states.c   the queries' solves
  *   pieces.c, sphere.c                 the exact extremes' pieces and faces (exported)
- *   scene_sets.c, scene_piece.c, scene_solve.c   a general scene's exact solve (core_scene_solve*)
+ *   scene_sets.c, scene_piece.c, scene_primal.c, scene_solve.c   a general scene's exact solve
  *   scene_geometry.c, scene_rows.c, scene_step.c, scene_run.c   placement, contacts, rows,
  *                   forward, a time step, whole runs and batches of runs
  *   scene_friction.c  Coulomb friction at a general scene's contacts (tangent rows, its solve)
@@ -30,13 +30,11 @@
  * (SC_INTERNAL). */
 #ifndef SNAKECG_ENGINE_H
 #define SNAKECG_ENGINE_H
-
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
-/* the engine's one integer type (CasADi's casadi_int) */
-typedef long long int sc_int;
+typedef long long int sc_int; /* the engine's one integer type (CasADi's casadi_int) */
 #if defined(__GNUC__)
 #define SC_INTERNAL __attribute__((visibility("hidden")))
 #else
@@ -56,7 +54,6 @@ typedef long long int sc_int;
 #define NX (NS + 3)
 #define NY (2 * NX + 3)
 typedef int (*sc_work_fn)(sc_int *sz_arg, sc_int *sz_res, sc_int *sz_iw, sc_int *sz_w);
-
 int SNAKECG_CS(const double **arg, double **res, sc_int *iw, double *w, int mem);
 int SNAKECG_CS_WORK(sc_int *sz_arg, sc_int *sz_res, sc_int *sz_iw, sc_int *sz_w);
 int SNAKECG_CR(const double **arg, double **res, sc_int *iw, double *w, int mem);
@@ -517,7 +514,7 @@ int SNAKECG_EXPORT(core_settle)(sc_settle *st);
 /* geometry.c: the contact check at n states Y (n x NY, row-major) */
 int SNAKECG_EXPORT(core_contact_depth)(const sc_geometry *g, sc_int n, const double *Y,
                                       double *depth, double *pair);
-/* ---- the general-scene solve (scene_sets.c, scene_piece.c, scene_solve.c) ---- */
+/* ---- the general-scene solve (scene_sets.c, scene_piece.c, scene_primal.c, scene_solve.c) */
 enum { K_FREE = 0, K_UNILATERAL = 1, K_BOX = 2, K_DISC = 3, K_SPLIT = 4 };
 typedef struct {
   sc_int n, m, nb;
@@ -540,6 +537,9 @@ SC_INTERNAL void sc_on_boundary(const sc_problem *p, sc_int k, double t, double 
 SC_INTERNAL double sc_angle_of(const sc_problem *p, sc_int k, const double *l);
 SC_INTERNAL void sc_update_w(sc_problem *p); /* scene_piece.c: w = G lam + b; a piece */
 SC_INTERNAL sc_int sc_polish(sc_problem *p, double *work, sc_int *iwork);
+SC_INTERNAL int sc_primal_piece(sc_problem *p, const double *Z, const double *g, const double *c,
+  double *work, sc_int *iwork, sc_int *def); SC_INTERNAL sc_int sc_primal_work(sc_int n, sc_int m);
+SC_INTERNAL int sc_primal_tally(int ok); int SNAKECG_EXPORT(core_scene_primal)(sc_int, double *);
 int SNAKECG_EXPORT(core_scene_solve_b)(sc_int ns, sc_int n, sc_int mmax, sc_int nbmax,
   const sc_int *m, const sc_int *nb, const double *M, const double *f, const double *A,
   const double *c, const sc_int *kind, const sc_int *start, const double *par,

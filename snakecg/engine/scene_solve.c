@@ -26,13 +26,13 @@
  *   2. the KKT conditions checked on the result; a violated piece is switched (a primal-dual
  *      active-set step) and step 1 repeated;
  *   3. the pieces start from the caller's where given (core_scene_solve_s: a time step's,
- *      the last step's pieces; a few passes), then from the held guess (every block held)
- *      where the rows are at most the coordinates; else, or when that fails within a few
- *      passes, from block
- *      Gauss-Seidel sweeps (each block minimised exactly: a clamp, or a 2-D trust-region
- *      problem whose secular equation is solved to rounding), read after five sweeps and
- *      tried where they read otherwise than at the last try, every failed try doubling the
- *      sweeps to the next reading (or once the sweeps converged).
+ *      the last step's pieces: that piece first solved in the primal, scene_primal.c, without
+ *      G, and kept where its KKT conditions hold; else a few passes), then from the held
+ *      guess (every block held) where the rows are at most the coordinates; else, or when
+ *      that fails within a few passes, from block Gauss-Seidel sweeps (each block minimised
+ *      exactly: a clamp, or a 2-D trust-region problem whose secular equation is solved to
+ *      rounding), read after five sweeps and tried where they read otherwise than at the last
+ *      try, every failed try doubling the sweeps to the next reading (or once they converged).
  * The certificate (KKT residuals, relative to the sample's force and acceleration scales) is
  * returned with every sample. Where the held rows' equations are dependent (statically
  * indeterminate), the flag is set and the held forces are the minimum-norm ones on the face
@@ -56,9 +56,6 @@ enum { INFO_STATUS = 0, INFO_DEPENDENT, INFO_PRIMAL, INFO_DUAL, INFO_COMPL, INFO
 #define TRY_PASSES 6 /* from pieces read before the sweeps converged */
 #define CHUNK 5 /* sweeps before the first reading of the pieces */
 #define FROM_PASSES 4 /* from the caller's start (the last time step's pieces) */
-
-
-
 
 /* Gauss-Seidel sweeps until the largest change is below rel * scale; returns the sweeps.
  * w = G lam + b is kept along (one column of G per changed row), and recomputed after. */
@@ -216,6 +213,91 @@ static int active_set(sc_problem *p, sc_int max_pass, double *work, sc_int *iwor
   return 0;
 }
 
+/* The scales: forces (what would stop the rows' accelerations, and the sets' sizes),
+ * accelerations; from G's diagonal (dg[i * stride]) and b. */
+static void scales(sc_problem *p, const double *dg, sc_int stride, const double *b) {
+  double fs = 0.0, ws = 0.0;
+  sc_int i, k;
+  for (i = 0; i < p->m; ++i) {
+    const double d = dg[i * stride];
+    if (d > 0 && fabs(b[i]) / d > fs) fs = fabs(b[i]) / d;
+    if (fabs(b[i]) > ws) ws = fabs(b[i]);
+  }
+  for (k = 0; k < p->nb; ++k)
+    for (i = 0; i < 3; ++i)
+      if (isfinite(p->par[3 * k + i]) && fabs(p->par[3 * k + i]) > fs)
+        fs = fabs(p->par[3 * k + i]);
+  for (i = 0; i < p->m; ++i) {
+    double g = dg[i * stride] * fs;
+    if (g > ws) ws = g;
+  }
+  p->fscale = fs > 0 ? fs : 1.0;
+  p->wscale = ws > 0 ? ws : 1.0;
+}
+
+/* The pieces and forces from the caller's (3 per block: the code of state_out, -1 none: held;
+ * the forces: a sliding 2-D block's angle, the held rows' start, which dependent held rows
+ * keep: the basic solution near the last one, inside the sets). */
+static void start_from(sc_problem *p, const double *from) {
+  sc_int i, k;
+  for (i = 0; i < p->m; ++i) p->lam[i] = 0.0;
+  for (k = 0; k < p->nb; ++k) {
+    const double *q = p->par + 3 * k, *s = from + 3 * k;
+    const sc_int kind = p->kind[k], r = p->start[k], code = (sc_int)s[0];
+    int zero = kind == K_BOX ? !(q[0] > 0) : kind == K_DISC ? !(q[0] > 0) :
+               kind == K_SPLIT ? !(q[2] > 0 && (q[0] > 0 || q[1] > 0)) : 0;
+    p->gamma[k] = 0.0;
+    p->state[k] = zero || (code == S_ZERO && kind != K_FREE) ? S_ZERO : S_HELD;
+    if (zero || p->state[k] == S_ZERO) continue;
+    for (i = 0; i < sc_block_size(kind); ++i) p->lam[r + i] = s[1 + i];
+    if (code < S_SLIDE || kind < K_BOX) continue;
+    if (kind == K_BOX) p->lam[r] = code == 4 ? -q[0] : q[0];
+    else if (s[1] == 0.0 && s[2] == 0.0) continue;
+    p->state[k] = S_SLIDE;
+  }
+}
+
+/* The warm start's piece solved in the primal (scene_primal.c), kept where the KKT conditions
+ * hold and, on a dependent face, its forces are the minimum-norm ones (not where the dual would
+ * next open a contact at zero force). G's diagonal and b summed as G's own loop does (the same
+ * scales; dg: 2 m scratch). 1 when kept (dep: the flag, defect: the held rows' rank defect). */
+static int primal_start(sc_problem *p, const double *Z, const double *g, const double *c,
+                        const double *from, double *dg, double *work, sc_int *iwork,
+                        double *res, sc_int *defect, int *dep) {
+  const sc_int n = p->n, m = p->m;
+  sc_int i, j, k, h = 0;
+  int ok, r;
+  double *restrict d = dg, *restrict e = p->b;
+  start_from(p, from);
+  for (k = 0; k < p->nb; ++k)
+    if (p->state[k] == S_HELD) h += sc_block_size(p->kind[k]);
+  if (2 * h > n) return 0; /* (more held rows: the forces left the sets on every try) */
+  for (j = 0; j < m; ++j) d[j] = e[j] = dg[m + j] = 0.0;
+  for (i = 0; i < n; i += 4) { /* (four coordinates at a time, missing ones zero) */
+    const double *restrict z0 = Z + i * m, *restrict z1 = i + 1 < n ? z0 + m : dg + m,
+                 *restrict z2 = i + 2 < n ? z0 + 2 * m : dg + m,
+                 *restrict z3 = i + 3 < n ? z0 + 3 * m : dg + m;
+    const double a0 = g[i], a1 = i + 1 < n ? g[i + 1] : 0.0, a2 = i + 2 < n ? g[i + 2] : 0.0,
+                 a3 = i + 3 < n ? g[i + 3] : 0.0;
+    for (j = 0; j < m; ++j) {
+      d[j] += (z0[j] * z0[j] + z1[j] * z1[j]) + (z2[j] * z2[j] + z3[j] * z3[j]);
+      e[j] += (z0[j] * a0 + z1[j] * a1) + (z2[j] * a2 + z3[j] * a3);
+    }
+  }
+  for (j = 0; c && j < m; ++j) e[j] += c[j];
+  scales(p, dg, 1, p->b);
+  r = sc_primal_piece(p, Z, g, c, work, iwork, defect);
+  ok = r > 0 && !kkt(p, res, 1) && res[0] <= TOL_ACCEPT && res[1] <= TOL_ACCEPT &&
+       res[2] <= TOL_ACCEPT;
+  for (k = 0; k < p->nb && ok && r == 2; ++k) /* (the dual's next choice: a contact opened) */
+    if (p->kind[k] == K_UNILATERAL && p->state[k] == S_HELD &&
+        p->lam[p->start[k]] <= 1e-12 * p->fscale)
+      ok = 0;
+  *dep = ok ? r - 1 : 0;
+  sc_primal_tally(ok);
+  return ok;
+}
+
 /* One sample. M (n x n), f (n), A (m x n) row-major; out: lam (m), a (n), w (m), state (nb),
  * info (INFO_WIDTH). Scratch: work and iwork sized by scene_solve_work. */
 static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const double *f,
@@ -228,7 +310,7 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
   sc_int i, j, k, t, total_sweeps = 0, passes = 0, defect = 0, chunk = CHUNK;
   sc_int *state = iwork, *iw2 = iwork + nb, *prev = iw2 + 3 * (m + nb);
   sc_problem p;
-  int dep = 0, ok = 0;
+  int dep = 0, ok = 0, primal = 0;
   memset(info, 0, sizeof(double) * INFO_WIDTH);
   for (i = 0; i < n * n; ++i) L[i] = M[i];
   if (!sc_cholesky(n, L, n, 1e-14)) {
@@ -266,6 +348,12 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
       for (j = 0; j < m; ++j) zi[j] -= Li[k] * Z[k * m + j];
     for (j = 0; j < m; ++j) zi[j] /= Li[i];
   }
+  p.n = n; p.m = m; p.nb = nb; p.kind = kind; p.start = start; p.par = par;
+  p.G = G; p.b = b; p.lam = lam; p.w = w; p.gamma = gam; p.state = state;
+  if (from && m > n && sc_primal_tally(-1)) /* the warm start's piece, first in the primal
+    where its n unknowns are fewer than the dual's m */
+    ok = primal = primal_start(&p, Z, a, c, from, keep, rest, iw2, res, &defect, &dep);
+  if (primal) { passes = 1; goto answered; }
   for (j = 0; j < m; ++j) {
     b[j] = zero[j] = 0.0;
     for (k = 0; k <= j; ++k) G[j * m + k] = 0.0;
@@ -287,47 +375,15 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
     for (k = 0; k < j; ++k) G[k * m + j] = G[j * m + k];
     if (c) b[j] += c[j];
   }
-  p.n = n; p.m = m; p.nb = nb; p.kind = kind; p.start = start; p.par = par;
-  p.G = G; p.b = b; p.lam = lam; p.w = w; p.gamma = gam; p.state = state;
-  { /* scales: forces (what would stop the rows' accelerations, and the sets' sizes),
-       accelerations */
-    double fs = 0.0, ws = 0.0;
-    for (i = 0; i < m; ++i) {
-      if (G[i * m + i] > 0 && fabs(b[i]) / G[i * m + i] > fs) fs = fabs(b[i]) / G[i * m + i];
-      if (fabs(b[i]) > ws) ws = fabs(b[i]);
-    }
-    for (k = 0; k < nb; ++k)
-      for (i = 0; i < 3; ++i)
-        if (isfinite(par[3 * k + i]) && fabs(par[3 * k + i]) > fs) fs = fabs(par[3 * k + i]);
-    for (i = 0; i < m; ++i) {
-      double g = G[i * m + i] * fs;
-      if (g > ws) ws = g;
-    }
-    p.fscale = fs > 0 ? fs : 1.0;
-    p.wscale = ws > 0 ? ws : 1.0;
-  }
+  scales(&p, G, m + 1, b);
   for (i = 0; i < m; ++i) lam[i] = 0.0;
   for (k = 0; k < nb; ++k) gam[k] = 0.0;
   if (m == 0) {
     ok = 1;
     res[0] = res[1] = res[2] = 0.0;
   }
-  if (!ok && from) { /* the active set from the caller's pieces (3 per block: the code of
-    state_out, -1 none: held; the forces: a sliding 2-D block's angle, the held rows' start,
-    which dependent held rows keep: the basic solution near the last one, inside the sets) */
-    for (k = 0; k < nb; ++k) {
-      const double *q = par + 3 * k, *s = from + 3 * k;
-      sc_int r = start[k], code = (sc_int)s[0], nk = sc_block_size(kind[k]);
-      int zero = kind[k] == K_BOX ? !(q[0] > 0) : kind[k] == K_DISC ? !(q[0] > 0) :
-                 kind[k] == K_SPLIT ? !(q[2] > 0 && (q[0] > 0 || q[1] > 0)) : 0;
-      state[k] = zero || (code == S_ZERO && kind[k] != K_FREE) ? S_ZERO : S_HELD;
-      if (zero || state[k] == S_ZERO) continue;
-      for (i = 0; i < nk; ++i) lam[r + i] = s[1 + i];
-      if (code < S_SLIDE || kind[k] < K_BOX) continue;
-      if (kind[k] == K_BOX) lam[r] = code == 4 ? -q[0] : q[0];
-      else if (s[1] == 0.0 && s[2] == 0.0) continue;
-      state[k] = S_SLIDE;
-    }
+  if (!ok && from) { /* the active set from the caller's pieces (start_from) */
+    start_from(&p, from);
     ok = active_set(&p, FROM_PASSES, rest, iw2, &passes, &defect, res);
     if (!ok) { /* else today's order from zero forces */
       for (i = 0; i < m; ++i) lam[i] = 0.0;
@@ -419,6 +475,7 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
       kkt(&p, res, 0);
     }
   }
+answered:
   info[INFO_STATUS] = ok ? ST_SOLVED : ST_NOT_CONVERGED;
   info[INFO_DEPENDENT] = (double)dep;
   info[INFO_PRIMAL] = res[0];
@@ -441,11 +498,12 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
     state_out[k] = code;
   }
   /* eq. (18): a = M^-1 (f + A^T lam) = L^-T (g + Z lam) */
-  for (j = k = 0; j < m; ++j) /* (the rows with a force listed once: iw2 is free by now) */
+  for (j = k = 0; j < m && !primal; ++j) /* (the rows with a force listed once: iw2 is free
+    by now; the primal's g + Z lam at the start of rest) */
     if (lam[j] != 0.0 && isfinite(lam[j])) iw2[k++] = j;
   for (i = 0; i < n; ++i) { /* (summed in a register: a and Z may alias for the compiler) */
     const double *zi = Z + i * m;
-    double t = a[i];
+    double t = primal ? rest[i] : a[i];
     for (j = 0; j < k; ++j) t += zi[iw2[j]] * lam[iw2[j]];
     a[i] = t;
   }
@@ -464,8 +522,8 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
 void SNAKECG_EXPORT(core_scene_solve_work)(sc_int n, sc_int m, sc_int nb, sc_int *nd, sc_int *ni) {
   sc_int u = m + nb;
   *nd = n * n + n * m + m * m + m + nb + (u * u + 3 * u + 2 * m * m + 3 * m + 16) +
-        2 * m;
-  *ni = nb + 4 * (m + nb) + 16;
+        2 * m + sc_primal_work(n, m);
+  *ni = nb + 4 * (m + nb) + 16 + n;
 }
 
 /* A batch of samples of equal sizes n; sample s has m[s] rows and nb[s] blocks (padded to

@@ -1,0 +1,336 @@
+/* snakecg's engine: a general scene's piece solved in the primal, in the coordinates' n
+ * unknowns instead of the rows' m forces (scene_solve.c's warm start, where m > n: the pegs
+ * row's 22-33 rows on 13 coordinates; where m <= n the dual is the smaller and keeps it).
+ *
+ * On a piece (scene_solve.c's header: every block held, zero, or sliding), the dual's
+ * problem is the Lagrange dual of the primal one in the accelerations (velocities in a time
+ * step) a, with y = L^T a (M = L L^T), g = L^-1 f, Z = L^-1 A^T, w = A a + c = Z^T y + c:
+ *   minimise 1/2 |y - g_F|^2 + sum_{sliding disc i} s_i |w_i|
+ *   subject to w_H = 0 (the held rows: contacts, stuck 2-D blocks, ideal wheels),
+ * g_F = g + Z_F lam_F the free motion with the fixed forces (saturated boxes) applied, s_i
+ * the disc's radius. Its Hessian I + sum_i (s_i / |w_i|) v_i v_i^T (v_i = Z_i u_i^perp, one
+ * rank-one term per sliding disc) is positive definite and its equalities are the held rows
+ * alone; Newton on y with them (Cholesky R R^T of the Hessian, the held rows' multipliers by
+ * the Schur complement Y^T Y, Y = R^-1 Z_H, |H| unknowns), the step halved while the objective
+ * rises, converges quadratically from the caller's forces (y = g + Z lam). Then y = g + Z lam
+ * with lam_H the multipliers and lam_i = -s_i w_i / |w_i|: the same forces and the same a as
+ * the dual's piece, without G = Z^T Z. What it does not treat it leaves (returns 0) to
+ * scene_solve.c's dual path: a sliding split ellipse; held rows dependent (or nearly: pivots
+ * of Y^T Y below PRIMAL_DEP of the first); a sliding disc whose sliding |w_i| falls to
+ * rounding; no convergence within PRIMAL_STEPS Newton steps. */
+#include <math.h>
+#include <string.h>
+
+#include "snakecg_layout.h"
+#include "engine.h"
+
+#define PRIMAL_STEPS 6 /* Newton steps before the dual path takes over */
+#define PRIMAL_DEP 1e-8 /* held rows taken as dependent below this pivot ratio (dual: 1e-10) */
+
+/* core_scene_primal's switch (1: the warm start tries the primal piece first) and counts
+ * (this thread's: tries, answers; measurement only) */
+static int primal_on = 1;
+static _Thread_local double primal_counts[2];
+
+/* A try counted (ok 1: answered, 0: left to the dual path; -1: none, the switch read);
+ * returns the switch. */
+SC_INTERNAL int sc_primal_tally(int ok) {
+  if (ok >= 0) {
+    primal_counts[0] += 1.0;
+    primal_counts[1] += ok ? 1.0 : 0.0;
+  }
+  return primal_on;
+}
+
+/* The primal piece switched on (mode 1) or off (0), or left (-1); counts (2 doubles, or NULL):
+ * this thread's tries and answers since the last read, then reset. Returns the previous mode. */
+int SNAKECG_EXPORT(core_scene_primal)(sc_int mode, double *counts) {
+  int prev = primal_on;
+  if (mode == 0 || mode == 1) primal_on = (int)mode;
+  if (counts) {
+    counts[0] = primal_counts[0];
+    counts[1] = primal_counts[1];
+    primal_counts[0] = primal_counts[1] = 0.0;
+  }
+  return prev;
+}
+
+/* Scratch (doubles) of sc_primal_piece for n coordinates and m rows. */
+SC_INTERNAL sc_int sc_primal_work(sc_int n, sc_int m) {
+  return n * n + 2 * n * m + m * m + 8 * n + 6 * m;
+}
+
+/* w_i = Z_i^T y + c_i of the sliding discs' rows (Zg: their columns first, n x nc; cg: their
+ * offsets), and the objective's nonsmooth part sum s_i |w_i| (s: their radii). */
+static double sliding(sc_int n, sc_int nc, sc_int ns, const double *s, const double *Zg,
+                      const double *cg, const double *y, double *restrict ws) {
+  sc_int i, j;
+  double v = 0.0;
+  for (j = 0; j < 2 * ns; ++j) ws[j] = cg[j];
+  for (i = 0; i < n; ++i) {
+    const double *restrict zi = Zg + i * nc, yi = y[i];
+    for (j = 0; j < 2 * ns; ++j) ws[j] += zi[j] * yi;
+  }
+  for (j = 0; j < ns; ++j) v += s[j] * sqrt(ws[2 * j] * ws[2 * j] + ws[2 * j + 1] * ws[2 * j + 1]);
+  return v;
+}
+
+/* w = Z^T (g + Z lam) + c, every row (y: n scratch) */
+static void every_w(sc_problem *p, const double *Z, const double *g, const double *c,
+                    double *y) {
+  const sc_int n = p->n, m = p->m;
+  sc_int i, j;
+  for (i = 0; i < n; ++i) {
+    const double *zi = Z + i * m;
+    double s = g[i];
+    for (j = 0; j < m; ++j) s += zi[j] * p->lam[j];
+    y[i] = s;
+  }
+  for (j = 0; j < m; ++j) p->w[j] = c ? c[j] : 0.0;
+  for (i = 0; i < n; ++i) {
+    const double *restrict zi = Z + i * m;
+    const double yi = y[i];
+    double *restrict w = p->w;
+    for (j = 0; j < m; ++j) w[j] += zi[j] * yi;
+  }
+}
+
+/* The rank of the rows F (nf of them) by K = Z_F Z_F^T (n x n: G_FF's nonzero eigenvalues),
+ * its pivots above NULL_TOL of the first (sc_min_norm_face's rule); with apply and a rank
+ * below nf, their forces made the minimum-norm ones of the same Z_F lam_F: Z_F^T x,
+ * K x = Z_F lam_F. Scratch: K n x n, v, x, t n each, perm n. */
+static sc_int face_rank(sc_problem *p, const double *Z, const sc_int *F, sc_int nf, double *K,
+                        double *v, double *x, double *t, sc_int *perm, int apply) {
+  const sc_int n = p->n, m = p->m;
+  sc_int i, j, k, rank;
+  for (i = 0; i < n; ++i) {
+    const double *zi = Z + i * m;
+    double s = 0.0;
+    for (j = 0; j < nf; ++j) s += zi[F[j]] * p->lam[F[j]];
+    v[i] = s;
+    for (k = 0; k <= i; ++k) {
+      const double *zk = Z + k * m;
+      double u = 0.0;
+      for (j = 0; j < nf; ++j) u += zi[F[j]] * zk[F[j]];
+      K[i * n + k] = u;
+    }
+  }
+  rank = sc_psd_solve(n, K, n, v, NULL_TOL, x, t, perm);
+  if (apply && rank < nf)
+    for (j = 0; j < nf; ++j) {
+      double s = 0.0;
+      for (i = 0; i < n; ++i) s += Z[i * m + F[j]] * x[i];
+      p->lam[F[j]] = s;
+    }
+  return rank;
+}
+
+/* The piece of p->state (its forces' start in p->lam) solved in the primal: p->lam and p->w
+ * (every row's, w = Z^T (g + Z lam) + c) filled. g = L^-1 f, Z = L^-1 A^T (n x m,
+ * coordinate i's row at Z + i m; M = L L^T), c the rows' offsets (or NULL). Returns 1 when
+ * solved with unique forces, 2 with the face's minimum-norm ones (def: the held rows' rank
+ * defect; work's first n: g + Z lam), 0 when left to the dual path (p->lam, p->w then
+ * undefined). */
+SC_INTERNAL int sc_primal_piece(sc_problem *p, const double *Z, const double *g,
+                                const double *c, double *work, sc_int *iwork, sc_int *def) {
+  const sc_int n = p->n, m = p->m, nb = p->nb;
+  double *R = work, *Y = R + n * n, *S = Y + n * m, *gF = S + m * m, *y = gF + n,
+         *grad = y + n, *q = grad + n, *dy = q + n, *yt = dy + n, *t = yt + n, *lh = t + n,
+         *ws = lh + m, *rad = ws + m, *wt = rad + m, *bh = wt + m, *cg = bh + m, *Zg = cg + m;
+  sc_int *hr = iwork, *sl = hr + m, *perm = sl + m, h = 0, ns = 0, i, j, k, it, rank = 0;
+  double ysc, v = 0.0, big, prev = INFINITY;
+  int ok = 0, dep = 0, again = 0;
+  sc_int nf, nc;
+  for (i = 0; i < n; ++i) gF[i] = g[i];
+  for (k = 0; k < nb; ++k) { /* the piece: held rows, fixed forces, sliding discs */
+    sc_int r = p->start[k], nk = sc_block_size(p->kind[k]);
+    const double *par = p->par + 3 * k;
+    double *l = p->lam + r;
+    if (p->state[k] == S_ZERO) {
+      for (i = 0; i < nk; ++i) l[i] = 0.0;
+    } else if (p->state[k] == S_HELD) {
+      for (i = 0; i < nk; ++i) hr[h++] = r + i;
+    } else if (p->kind[k] == K_BOX) {
+      l[0] = l[0] >= 0 ? par[0] : -par[0];
+      for (i = 0; i < n; ++i) gF[i] += Z[i * m + r] * l[0];
+    } else if (p->kind[k] == K_DISC) {
+      double nl = sqrt(l[0] * l[0] + l[1] * l[1]);
+      if (!(nl > 0)) return 0;
+      l[0] *= par[0] / nl; /* (the start: on the disc's boundary) */
+      l[1] *= par[0] / nl;
+      rad[ns] = par[0];
+      sl[ns++] = r;
+    } else {
+      return 0; /* a sliding split ellipse, or a sliding one-row block */
+    }
+  }
+  /* the start: y = g_F + Z (lam_H, lam_S) at the caller's forces; the piece's columns of Z
+   * gathered (Zg, n x nc: the sliding discs' pairs, then the held rows) */
+  nc = 2 * ns + h;
+  for (j = 0; j < 2 * ns; ++j) cg[j] = c ? c[sl[j / 2] + j % 2] : 0.0;
+  for (j = 0; j < h; ++j) cg[2 * ns + j] = c ? c[hr[j]] : 0.0;
+  for (i = 0; i < n; ++i) {
+    const double *zi = Z + i * m;
+    double *restrict gi = Zg + i * nc, s = gF[i];
+    for (j = 0; j < ns; ++j) {
+      gi[2 * j] = zi[sl[j]];
+      gi[2 * j + 1] = zi[sl[j] + 1];
+      s += gi[2 * j] * p->lam[sl[j]] + gi[2 * j + 1] * p->lam[sl[j] + 1];
+    }
+    for (j = 0; j < h; ++j) {
+      gi[2 * ns + j] = zi[hr[j]];
+      s += gi[2 * ns + j] * p->lam[hr[j]];
+    }
+    y[i] = s;
+  }
+  ysc = sqrt(p->fscale * p->wscale);
+  for (it = 0; it < PRIMAL_STEPS; ++it) {
+    double step = 0.0, tstep = 1.0, ymax = ysc;
+    int feasible = it > 0;
+    if (it == 0) v = sliding(n, nc, ns, rad, Zg, cg, y, ws);
+    /* the Hessian I + T T^T (T's column j: sqrt(s_j / |w_j|) v_j, in Y's room) and the
+     * gradient y - g_F + sum s_j Z_j u_j */
+    for (i = 0; i < n; ++i) grad[i] = y[i] - gF[i];
+    for (j = 0; j < ns; ++j) {
+      double w0 = ws[2 * j], w1 = ws[2 * j + 1], nw = sqrt(w0 * w0 + w1 * w1), cj;
+      if (!(nw > TOL_ACCEPT * p->wscale)) return 0; /* sliding at rounding's speed */
+      w0 /= nw;
+      w1 /= nw;
+      cj = sqrt(rad[j] / nw);
+      for (i = 0; i < n; ++i) {
+        const double z0 = Zg[i * nc + 2 * j], z1 = Zg[i * nc + 2 * j + 1];
+        Y[i * ns + j] = cj * (w1 * z0 - w0 * z1); /* Z_j u^perp (up to sign) */
+        grad[i] += rad[j] * (z0 * w0 + z1 * w1);
+      }
+    }
+    for (i = 0; i < n; ++i) {
+      const double *ti = Y + i * ns;
+      for (k = 0; k <= i; ++k) {
+        const double *tk = Y + k * ns;
+        double s0 = 0.0, s1 = 0.0;
+        for (j = 0; j + 1 < ns; j += 2) {
+          s0 += ti[j] * tk[j];
+          s1 += ti[j + 1] * tk[j + 1];
+        }
+        if (j < ns) s0 += ti[j] * tk[j];
+        R[i * n + k] = (i == k ? 1.0 : 0.0) + (s0 + s1);
+      }
+    }
+    if (!sc_cholesky(n, R, n, 1e-14)) return 0;
+    /* q = R^-1 grad; Y = R^-1 Z_H (column j, held row j's, at Y + j n), lh = Y^T q - w_H
+     * (w_H = Z_H^T y + c_H), S = Y^T Y */
+    for (i = 0; i < n; ++i) t[i] = 1.0 / R[i * n + i]; /* (multiplied: no division chain) */
+    for (i = 0; i < n; ++i) {
+      const double *restrict ri = R + i * n;
+      double s0 = grad[i], s1 = 0.0;
+      for (k = 0; k + 1 < i; k += 2) {
+        s0 -= ri[k] * q[k];
+        s1 -= ri[k + 1] * q[k + 1];
+      }
+      if (k < i) s0 -= ri[k] * q[k];
+      q[i] = (s0 + s1) * t[i];
+    }
+    for (j = 0; j < h; ++j) {
+      double *restrict yj = Y + j * n, u = -cg[2 * ns + j];
+      for (i = 0; i < n; ++i) {
+        const double *restrict ri = R + i * n, zij = Zg[i * nc + 2 * ns + j];
+        double t0 = zij, t1 = 0.0;
+        for (k = 0; k + 1 < i; k += 2) {
+          t0 -= ri[k] * yj[k];
+          t1 -= ri[k + 1] * yj[k + 1];
+        }
+        if (k < i) t0 -= ri[k] * yj[k];
+        yj[i] = (t0 + t1) * t[i];
+        u += yj[i] * q[i] - zij * y[i];
+      }
+      lh[j] = u;
+      for (k = 0; k <= j; ++k) S[j * h + k] = sc_dot(yj, Y + k * n, n);
+    }
+    if (h > 0) {
+      for (j = 0; j < h; ++j) bh[j] = lh[j];
+      rank = sc_psd_solve(h, S, h, bh, PRIMAL_DEP, lh, wt, perm); /* (dependent: basic) */
+    }
+    /* dy = R^-T (Y lam_H - q) */
+    for (i = 0; i < n; ++i) dy[i] = -q[i];
+    for (j = 0; j < h; ++j) {
+      const double *restrict yj = Y + j * n, l = lh[j];
+      for (i = 0; i < n; ++i) dy[i] += yj[i] * l;
+    }
+    for (i = n - 1; i >= 0; --i) {
+      double s = dy[i];
+      for (k = i + 1; k < n; ++k) s -= R[k * n + i] * dy[k];
+      dy[i] = s * t[i];
+    }
+    for (i = 0; i < n; ++i) {
+      step = sc_max(step, fabs(dy[i]));
+      ymax = sc_max(ymax, fabs(y[i]));
+    }
+    step /= ymax;
+    if (!(step <= 1e-15)) { /* the step, halved while the objective rises (from a feasible
+      point: the first step also brings the held rows to w_H = 0) */
+      double v0 = v, d0 = 0.0, d1 = 0.0, vt;
+      for (i = 0; i < n; ++i) d0 += (y[i] - gF[i]) * (y[i] - gF[i]);
+      for (;;) {
+        for (i = 0; i < n; ++i) yt[i] = y[i] + tstep * dy[i];
+        d1 = 0.0;
+        for (i = 0; i < n; ++i) d1 += (yt[i] - gF[i]) * (yt[i] - gF[i]);
+        vt = sliding(n, nc, ns, rad, Zg, cg, yt, ws);
+        big = 1e-14 * (fabs(0.5 * d0 + v0) + p->fscale * p->wscale);
+        if (!feasible || 0.5 * d1 + vt <= 0.5 * d0 + v0 + big || tstep < 1e-3) break;
+        tstep *= 0.5;
+      }
+      if (tstep < 1e-3) return 0;
+      memcpy(y, yt, sizeof(double) * (size_t)n);
+      v = vt;
+    }
+    /* converged where the next step, quadratic in this full one (its constant from the last
+     * two, at least 1), falls below rounding: y and (the Newton pair) lam_H to rounding */
+    if (tstep == 1.0 && step * step * sc_max(1.0, it > 0 ? step / (prev * prev) : 1.0) <= 1e-16) {
+      ok = 1;
+      break;
+    }
+    if (it >= 1 && !(step <= 1e-4)) return 0; /* not yet quadratic after two steps (a time
+      step's second is 1e-13 to 1e-5 of y): a start too far for the primal to pay (a forward
+      neighbour's on the indeterminate scene took 4-10 steps), the dual path's */
+    prev = tstep == 1.0 ? step : INFINITY;
+  }
+  if (!ok) return 0;
+  /* the forces: held, the multipliers; sliding discs, -s w / |w| at the last point */
+  for (j = 0; j < h; ++j) p->lam[hr[j]] = lh[j];
+  for (j = 0; j < ns; ++j) {
+    double w0 = ws[2 * j], w1 = ws[2 * j + 1], nw = sqrt(w0 * w0 + w1 * w1);
+    if (!(nw > TOL_ACCEPT * p->wscale)) return 0;
+    p->lam[sl[j]] = -rad[j] * w0 / nw;
+    p->lam[sl[j] + 1] = -rad[j] * w1 / nw;
+  }
+  *def = h - rank;
+  every_w(p, Z, g, c, y);
+  /* the face: the held rows and every block's without acceleration (sliding at rounding's
+   * speed, an open contact closing at none); where its rows are dependent, its forces the
+   * minimum-norm ones (sc_min_norm_face's), kept where they are in their sets */
+  for (k = 0, nf = h; k < nb; ++k)
+    if (p->state[k] != S_HELD && sc_still(p, k))
+      for (i = 0; i < sc_block_size(p->kind[k]); ++i) hr[nf++] = p->start[k] + i;
+  if (rank < h && nf > h && face_rank(p, Z, hr, h, R, q, dy, t, perm, 0) != rank)
+    return 0; /* (the held rows' rank: the dual's, to the pivots') */
+  if (rank < h || nf > h) {
+    sc_int rf = face_rank(p, Z, hr, nf, R, q, dy, t, perm, 1);
+    if (nf == h && rf != rank) return 0;
+    if (rf < nf) {
+      dep = 1;
+      for (k = 0; k < nb; ++k)
+        if ((p->state[k] == S_HELD || sc_still(p, k)) &&
+            !sc_in_set(p, k, p->lam + p->start[k], 1e-13, 1))
+          return 0;
+    }
+  }
+  for (k = 0; k < nb; ++k) /* a contact's force below zero by rounding: zero (the dual's) */
+    if (p->kind[k] == K_UNILATERAL && p->lam[p->start[k]] < 0) {
+      if (!(p->lam[p->start[k]] >= -TOL_ACCEPT * p->fscale)) return 0;
+      p->lam[p->start[k]] = 0.0;
+      again = 1;
+    }
+  if (again || dep) every_w(p, Z, g, c, y);
+  memcpy(work, y, sizeof(double) * (size_t)n); /* (g + Z lam, for the accelerations) */
+  return 1 + dep;
+}
