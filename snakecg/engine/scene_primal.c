@@ -28,29 +28,42 @@
 #define PRIMAL_DEP 1e-8 /* held rows taken as dependent below this pivot ratio (dual: 1e-10) */
 
 /* core_scene_primal's switch (1: the warm start tries the primal piece first) and counts
- * (this thread's: tries, answers; measurement only) */
+ * (tries, answers: measurement only; atomic where the compiler has GCC's builtins, as the
+ * batches' threads count together) */
 static int primal_on = 1;
-static _Thread_local double primal_counts[2];
+static long primal_counts[2];
+#if defined(__GNUC__)
+#define PRIMAL_ADD(k, v) __atomic_fetch_add(&primal_counts[k], (v), __ATOMIC_RELAXED)
+#define PRIMAL_TAKE(k) __atomic_exchange_n(&primal_counts[k], 0L, __ATOMIC_RELAXED)
+#else
+#define PRIMAL_ADD(k, v) (primal_counts[k] += (v))
+static long primal_take(int k) {
+  long v = primal_counts[k];
+  primal_counts[k] = 0;
+  return v;
+}
+#define PRIMAL_TAKE(k) primal_take(k)
+#endif
 
 /* A try counted (ok 1: answered, 0: left to the dual path; -1: none, the switch read);
  * returns the switch. */
 SC_INTERNAL int sc_primal_tally(int ok) {
   if (ok >= 0) {
-    primal_counts[0] += 1.0;
-    primal_counts[1] += ok ? 1.0 : 0.0;
+    PRIMAL_ADD(0, 1L);
+    PRIMAL_ADD(1, ok ? 1L : 0L);
   }
   return primal_on;
 }
 
 /* The primal piece switched on (mode 1) or off (0), or left (-1); counts (2 doubles, or NULL):
- * this thread's tries and answers since the last read, then reset. Returns the previous mode. */
+ * the tries and answers since the last read, then reset. Returns the previous mode. */
 int SNAKECG_EXPORT(core_scene_primal)(sc_int mode, double *counts) {
   int prev = primal_on;
   if (mode == 0 || mode == 1) primal_on = (int)mode;
   if (counts) {
-    counts[0] = primal_counts[0];
-    counts[1] = primal_counts[1];
-    primal_counts[0] = primal_counts[1] = 0.0;
+    long t = PRIMAL_TAKE(0);
+    long a = PRIMAL_TAKE(1);
+    counts[0] = (double)t, counts[1] = (double)a;
   }
   return prev;
 }
