@@ -380,6 +380,38 @@ static void pieces(sc_int nbt, const sc_int *kind, const sc_int *start, const do
   }
 }
 
+/* The fixed point's problem: the convex solve's arguments with the tangent blocks. */
+typedef struct {
+  sc_int n, m, nb, nt, mt, sweeps;
+  const double *M, *f, *mu;
+  double *A, *c, *par;
+  sc_int *kind, *start;
+  const sc_int *lead, *rn;
+} fr_prob;
+
+/* The inner (Tresca) solve at the bounds s from the pieces `from`: core_scene_solve_s's code,
+ * 1 where it did not converge; rb the bounds it gives (bound_of), *r2 = |rb - s|^2, *F its
+ * largest force. */
+static int inner(const fr_prob *p, const double *s, const double *from, double *lam,
+                 double *a, double *w, double *st, double *info, double *rb, double *r2,
+                 double *F) {
+  sc_int j, i;
+  int code;
+  for (j = 0; j < p->nt; ++j) p->par[3 * (p->nb + j)] = s[j];
+  code = SNAKECG_EXPORT(core_scene_solve_s)(p->n, p->mt, p->nb + p->nt, p->M, p->f, p->A,
+                                            p->c, p->kind, p->start, p->par, p->sweeps, from,
+                                            lam, a, w, st, info);
+  if (code) return code;
+  if (info[0] != 0.0) return 1;
+  *F = 0.0, *r2 = 0.0;
+  for (i = 0; i < p->mt; ++i) *F = fmax(*F, fabs(lam[i]));
+  for (j = 0; j < p->nt; ++j) {
+    rb[j] = bound_of(j, p->nt, p->m, p->lead, p->rn, p->mu, lam);
+    *r2 += (rb[j] - s[j]) * (rb[j] - s[j]);
+  }
+  return 0;
+}
+
 int sc_friction_solve(sc_int n, sc_int m, sc_int nb, sc_int nc, const double *M,
                       const double *f, double *A, double *c, sc_int *kind, sc_int *start,
                       double *par, const double *T, double *rec, sc_int sweeps,
@@ -387,9 +419,10 @@ int sc_friction_solve(sc_int n, sc_int m, sc_int nb, sc_int nc, const double *M,
                       double *info, double *solutions) {
   sc_int nt = 0, k, j, i, it, mt, nbt, *iw, *tc, *rn, *piv, *slide, *lead, ns;
   double *d, *mu, *s, *fr, *L, *Z, *G, *b, *g, *pl, *pw, *pa, *pst, *pinfo, *D, *rhs, *r0,
-      scale[2], res[3];
+      *sv, *rb, *dv, *Dss, scale[2], res[3];
   sc_enum e;
-  int code = 0, ok = 0, same, stall = 0;
+  fr_prob pr;
+  int code = 0, ok = 0, same, stall = 0, newton = 0;
   double omega = 1.0, best = INFINITY; /* the passes' relaxation (halved where they stall) */
   *solutions = 0.0;
   if (!T) /* no contact friction in the scene: the convex solve alone */
@@ -413,7 +446,7 @@ int sc_friction_solve(sc_int n, sc_int m, sc_int nb, sc_int nc, const double *M,
                                               from, lam, a, w, st, info);
   }
   nt = nc, mt = m + nt, nbt = nb + nt;
-  d = (double *)malloc(sizeof(double) * (size_t)(4 * nt + 4 * nbt + n * n + 2 * n * mt +
+  d = (double *)malloc(sizeof(double) * (size_t)(7 * nt + 2 * nt * nt + 4 * nbt + n * n + 2 * n * mt +
                                                  4 * mt * mt + 10 * mt + 4 * n + 12 * nbt +
                                                  SOL_MAX * n + nt * nt + 16));
   iw = (sc_int *)malloc(sizeof(sc_int) * (size_t)(3 * nbt + 3 * nt + 2 * mt + 8));
@@ -422,7 +455,8 @@ int sc_friction_solve(sc_int n, sc_int m, sc_int nb, sc_int nc, const double *M,
     free(iw);
     return -1;
   }
-  mu = d, s = mu + nt, r0 = s + nt, rhs = r0 + nt, fr = rhs + nt, L = fr + 3 * nbt;
+  mu = d, s = mu + nt, r0 = s + nt, rhs = r0 + nt, sv = rhs + nt, rb = sv + nt, dv = rb + nt;
+  Dss = dv + nt, fr = Dss + nt * nt, L = fr + 3 * nbt;
   Z = L + n * n, G = Z + n * mt, b = G + mt * mt, g = b + mt, pl = g + n, pw = pl + mt;
   pa = pw + mt, pst = pa + n, pinfo = pst + nbt, D = pinfo + 8; /* (pinfo: INFO_WIDTH) */
   e.K = D + nt * nt, e.Kc = e.K + mt * mt, e.S = e.Kc + mt * mt, e.x = e.S + (mt + n) * mt;
@@ -441,59 +475,67 @@ int sc_friction_solve(sc_int n, sc_int m, sc_int nb, sc_int nc, const double *M,
         break;
       }
   }
+  pr.n = n, pr.mt = mt, pr.nb = nb, pr.nt = nt, pr.m = m, pr.sweeps = sweeps, pr.M = M;
+  pr.f = f, pr.A = A, pr.c = c, pr.kind = kind, pr.start = start, pr.par = par, pr.mu = mu;
+  pr.lead = lead, pr.rn = rn;
   for (it = 0; it < FP_MAX; ++it) {
-    double F = 0.0, err = 0.0;
-    for (j = 0; j < nt; ++j) par[3 * (nb + j)] = s[j];
-    code = SNAKECG_EXPORT(core_scene_solve_s)(n, mt, nbt, M, f, A, c, kind, start, par, sweeps,
-                                              it ? fr : NULL, lam, a, w, st, info);
-    if (code || info[0] != 0.0) break;
-    for (i = 0; i < mt; ++i) F = fmax(F, fabs(lam[i]));
-    for (j = 0; j < nt; ++j)
-      err = fmax(err, fabs(bound_of(j, nt, m, lead, rn, mu, lam) - s[j]));
-    if (err <= FP_TOL * (F > 0 ? F : 1.0)) {
+    double F = 0.0, err = 0.0, r2 = 0.0, r2t = 0.0, Ft = 0.0, t = 1.0;
+    code = inner(&pr, s, it ? fr : NULL, lam, a, w, st, info, r0, &r2, &F);
+    if (code) break;
+    for (j = 0; j < nt; ++j) err = fmax(err, fabs(r0[j] - s[j]));
+    if (err <= FP_TOL * F) {
       ok = 1;
       break;
     }
     if (err < 0.9 * best) best = err, stall = 0; /* progress */
-    else if (++stall >= 6) /* no progress in 6 passes (a cycle of pieces): relax */
-      omega = fmax(0.5 * omega, 1.0 / 1024), stall = 0, best = err;
+    else if (++stall >= 6) /* no progress in 6 passes (a cycle of pieces): Newton, relaxed */
+      omega = fmax(0.5 * omega, 1.0 / 1024), stall = 0, best = err, newton = 1;
     same = it > 0;
     for (k = 0; k < nbt && same; ++k) same = fr[3 * k] == st[k];
     pieces(nbt, kind, start, st, lam, fr);
+    newton |= same;
     for (j = ns = 0; j < nt; ++j) /* the sliding tangents (on the bound, s > 0) */
       if (st[nb + j] == 3.0 || st[nb + j] == 4.0) slide[ns++] = j;
-    if (!same || ns == 0) { /* s <- mu lam_n */
-      for (j = 0; j < nt; ++j) s[j] += omega * (bound_of(j, nt, m, lead, rn, mu, lam) - s[j]);
+    if (!newton || ns == 0) { /* s <- mu lam_n */
+      for (j = 0; j < nt; ++j) s[j] += omega * (r0[j] - s[j]);
       continue;
     }
-    /* Newton on the sliding s: R = mu lam_n(s) - s, J = mu dlam_n/ds - I by differences */
-    for (j = 0; j < nt; ++j) r0[j] = bound_of(j, nt, m, lead, rn, mu, lam);
+    /* Newton on R(s) = bound(s) - s (semismooth: its derivative on the present piece, by
+     * differences of exact solves along the sliding s; a sticking or open s does not move
+     * the forces on it), then a line search on |R|^2 from the full step */
     for (i = 0; i < ns; ++i) {
       sc_int q = slide[i];
       double h = 1e-7 * fmax(s[q], F);
-      par[3 * (nb + q)] = s[q] + h;
-      code = SNAKECG_EXPORT(core_scene_solve_s)(n, mt, nbt, M, f, A, c, kind, start, par,
-                                                sweeps, fr, pl, pa, pw, pst, pinfo);
-      par[3 * (nb + q)] = s[q];
-      if (code || pinfo[0] != 0.0) break;
-      for (j = 0; j < ns; ++j)
-        D[j * ns + i] =
-            (bound_of(slide[j], nt, m, lead, rn, mu, pl) - r0[slide[j]]) / h - (i == j);
+      memcpy(sv, s, sizeof(double) * (size_t)nt);
+      sv[q] += h;
+      if (inner(&pr, sv, fr, pl, pa, pw, pst, pinfo, rb, &r2t, &Ft)) break;
+      for (j = 0; j < nt; ++j) D[j * ns + i] = (rb[j] - r0[j]) / h;
     }
-    if (i < ns) { /* a difference not solved: a plain pass */
-      for (j = 0; j < nt; ++j) s[j] += omega * (r0[j] - s[j]);
-      code = 0;
-      continue;
+    code = 0;
+    for (j = 0; i == ns && j < ns; ++j) {
+      for (k = 0; k < ns; ++k) Dss[j * ns + k] = D[slide[j] * ns + k] - (j == k);
+      dv[j] = -(r0[slide[j]] - s[slide[j]]);
     }
-    for (j = 0; j < ns; ++j) rhs[j] = -(r0[slide[j]] - s[slide[j]]);
-    if (!sc_lu_factor(ns, D, ns, piv)) {
+    if (i < ns || !sc_lu_factor(ns, Dss, ns, piv)) { /* a relaxed pass */
       for (j = 0; j < nt; ++j) s[j] += omega * (r0[j] - s[j]);
       continue;
     }
-    sc_lu_solve(ns, D, ns, piv, rhs);
-    for (j = 0; j < ns; ++j) rhs[j] = s[slide[j]] + omega * rhs[j];
-    for (j = 0; j < nt; ++j) s[j] += omega * (r0[j] - s[j]); /* sticking, open: mu lam_n */
-    for (j = 0; j < ns; ++j) s[slide[j]] = fmax(0.0, rhs[j]);
+    sc_lu_solve(ns, Dss, ns, piv, dv);
+    for (j = 0; j < nt; ++j) { /* the step: the others' s to their linearized bounds */
+      double lin = r0[j] - s[j];
+      for (k = 0; k < ns; ++k) lin += D[j * ns + k] * dv[k];
+      rhs[j] = lin;
+    }
+    for (k = 0; k < ns; ++k) rhs[slide[k]] = dv[k];
+    for (i = 0; i < 30; ++i, t *= 0.5) {
+      for (j = 0; j < nt; ++j) sv[j] = fmax(0.0, s[j] + t * rhs[j]);
+      if (!inner(&pr, sv, fr, pl, pa, pw, pst, pinfo, rb, &r2t, &Ft) &&
+          r2t <= (1.0 - 1e-4 * t) * r2)
+        break;
+    }
+    if (i < 30) memcpy(s, sv, sizeof(double) * (size_t)nt);
+    else
+      for (j = 0; j < nt; ++j) s[j] += omega * (r0[j] - s[j]);
   }
   if (code == -1) {
     free(d);
