@@ -28,13 +28,41 @@ def _rough_pegs_row(mu):
     return load_scene(dataclasses.replace(scene, obstacles=pegs))
 
 
-def test_the_pegs_row_with_rough_pegs_runs_and_keeps_coulomb_s_law():
-    """mu_contact = 1 on every peg: the peg a hair's breadth off a joint touches both links'
-    ends with nearly one normal row, where the bounds' fixed point used to cycle (the run
-    stopped after 17 ms). Now it runs; nothing penetrates beyond the tolerance (NumPy
+# The state where the bounds' fixed point cycled (the example at mu_contact 1 after 17 ms, with
+# frictionless impacts): a peg by a joint touching both links with nearly one normal row.
+CYCLING_Q = [0.00024075863369241277, 0.0006482743580151433, -0.02198509319228567,
+    0.024703593861360937, 0.4852191210355022, 0.27991984675148035, -0.3023569116841101,
+    -0.4691562056253228, 0.007128875143526904, 0.48330527410925067, 0.28158294926374766,
+    -0.3066199964564431, -0.4516865756670861]
+CYCLING_V = [0.007904031420365512, 0.10359926923212215, -1.3777558303464417, 0.9338668093909724,
+    1.5557170203856756, -1.839568840574544, 0.6881348953992854, 0.07809958606848802,
+    -0.38019887186852946, 1.5109991678349624, -2.0506571557867592, 0.45222943139559674,
+    0.8134877247426411]
+CYCLING_TAU = [0.9458322562057886, -0.23191876161662583, -0.5764248437315753, -1.2371840782740673,
+    0.4915261428264129, 1.5157991477619772, -0.1993649365888968, -0.529729374290587,
+    -1.123781591349633, 0.09621340164180228]
+
+
+def test_the_step_where_the_fixed_point_cycled_is_solved():
+    """One 1 ms step from the state where the passes cycled between pieces (the normal split
+    between the two nearly parallel rows swinging with the bounds): the semismooth Newton on
+    the bounds settles it, with Coulomb's residuals within 1e-9."""
+    model = _rough_pegs_row(1.0)
+    run = model.simulate(np.array(CYCLING_Q), 1e-3, v0=np.array(CYCLING_V),
+                         tau=np.array(CYCLING_TAU), dt=1e-3)
+    assert run.status == "completed", run.message
+    assert max(run.n_contacts) >= 2
+    assert max(run.certificate.values()) <= 1e-9
+
+
+@pytest.mark.parametrize("mu", [1.0, 1.5])
+def test_the_pegs_row_with_rough_pegs_runs_and_keeps_coulomb_s_law(mu):
+    """mu_contact = 1 or 1.5 on every peg: a peg a hair's breadth off a joint touches both
+    links' ends with nearly one normal row, where the bounds' plain fixed point cycles (at 1.5
+    the run stopped after 46 ms). Now it runs; nothing penetrates beyond the tolerance (NumPy
     distances), the energy stays within the torques' work, every step's Coulomb residuals
     (the cone, stick, slip against the sliding, the normal complementarity) within 1e-9."""
-    model = _rough_pegs_row(1.0)
+    model = _rough_pegs_row(mu)
     q0 = np.zeros(13)
     q0[3:] = 0.5 * np.sin(np.arange(10) * 2 * np.pi / 5)
     gait = serpenoid_controller(model, amplitude=0.5, frequency=1.0, phase_lag=2 * np.pi / 5,
