@@ -12,11 +12,14 @@
  * successive approximation of Tresca problems):
  *   1. the tangent rows are BOX blocks of half-width s (s = 0 first: the frictionless
  *      answer); each inner problem is solved exactly by scene_solve.c's core_scene_solve_s;
- *   2. s <- mu lam_n(s) while the pieces (every block's state) change;
- *   3. once the pieces repeat, Newton on the sliding contacts' s: the residual mu lam_n(s) - s
- *      (each evaluation an exact inner solve), its Jacobian by differences of inner solves on
- *      those pieces (lam_n is affine in s on a polyhedral piece), until |mu lam_n - s| is
- *      rounding (FP_TOL of the forces' scale);
+ *   2. s <- mu lam_n(s) while the pieces (every block's state) change and it makes progress;
+ *   3. once the pieces repeat, or the passes stall (the normal split between two nearly
+ *      parallel rows, a peg by a joint, swings with the bounds), a semismooth Newton on
+ *      R(s) = mu lam_n(s) - s (each evaluation an exact inner solve): its derivative on the
+ *      present piece by differences of inner solves along the sliding contacts' s (lam_n is
+ *      affine in s on a polyhedral piece; a sticking or open bound moves nothing), the step
+ *      cut in halves until |R|^2 falls (Armijo), a relaxed pass where no cut does, until
+ *      |mu lam_n - s| is rounding (FP_TOL of the forces' scale);
  *   4. Coulomb's residuals computed apart from the final accelerations (w = A a + c: the
  *      normal complementarity, the cone, stick, slip against the sliding) folded into the
  *      certificate; a sample that does not settle in FP_MAX passes, or whose residuals exceed
@@ -381,13 +384,8 @@ static void pieces(sc_int nbt, const sc_int *kind, const sc_int *start, const do
 }
 
 /* The fixed point's problem: the convex solve's arguments with the tangent blocks. */
-typedef struct {
-  sc_int n, m, nb, nt, mt, sweeps;
-  const double *M, *f, *mu;
-  double *A, *c, *par;
-  sc_int *kind, *start;
-  const sc_int *lead, *rn;
-} fr_prob;
+typedef struct { sc_int n, m, nb, nt, mt, sweeps; const double *M, *f, *mu; double *A, *c, *par;
+  sc_int *kind, *start; const sc_int *lead, *rn; } fr_prob;
 
 /* The inner (Tresca) solve at the bounds s from the pieces `from`: core_scene_solve_s's code,
  * 1 where it did not converge; rb the bounds it gives (bound_of), *r2 = |rb - s|^2, *F its
@@ -450,11 +448,7 @@ int sc_friction_solve(sc_int n, sc_int m, sc_int nb, sc_int nc, const double *M,
                                                  4 * mt * mt + 10 * mt + 4 * n + 12 * nbt +
                                                  SOL_MAX * n + nt * nt + 16));
   iw = (sc_int *)malloc(sizeof(sc_int) * (size_t)(3 * nbt + 3 * nt + 2 * mt + 8));
-  if (!d || !iw) {
-    free(d);
-    free(iw);
-    return -1;
-  }
+  if (!d || !iw) goto done;
   mu = d, s = mu + nt, r0 = s + nt, rhs = r0 + nt, sv = rhs + nt, rb = sv + nt, dv = rb + nt;
   Dss = dv + nt, fr = Dss + nt * nt, L = fr + 3 * nbt;
   Z = L + n * n, G = Z + n * mt, b = G + mt * mt, g = b + mt, pl = g + n, pw = pl + mt;
@@ -500,9 +494,7 @@ int sc_friction_solve(sc_int n, sc_int m, sc_int nb, sc_int nc, const double *M,
       for (j = 0; j < nt; ++j) s[j] += omega * (r0[j] - s[j]);
       continue;
     }
-    /* Newton on R(s) = bound(s) - s (semismooth: its derivative on the present piece, by
-     * differences of exact solves along the sliding s; a sticking or open s does not move
-     * the forces on it), then a line search on |R|^2 from the full step */
+    /* Newton on R(s) = bound(s) - s (3. of the header), a line search on |R|^2 */
     for (i = 0; i < ns; ++i) {
       sc_int q = slide[i];
       double h = 1e-7 * fmax(s[q], F);
@@ -511,7 +503,6 @@ int sc_friction_solve(sc_int n, sc_int m, sc_int nb, sc_int nc, const double *M,
       if (inner(&pr, sv, fr, pl, pa, pw, pst, pinfo, rb, &r2t, &Ft)) break;
       for (j = 0; j < nt; ++j) D[j * ns + i] = (rb[j] - r0[j]) / h;
     }
-    code = 0;
     for (j = 0; i == ns && j < ns; ++j) {
       for (k = 0; k < ns; ++k) Dss[j * ns + k] = D[slide[j] * ns + k] - (j == k);
       dv[j] = -(r0[slide[j]] - s[slide[j]]);
@@ -521,11 +512,8 @@ int sc_friction_solve(sc_int n, sc_int m, sc_int nb, sc_int nc, const double *M,
       continue;
     }
     sc_lu_solve(ns, Dss, ns, piv, dv);
-    for (j = 0; j < nt; ++j) { /* the step: the others' s to their linearized bounds */
-      double lin = r0[j] - s[j];
-      for (k = 0; k < ns; ++k) lin += D[j * ns + k] * dv[k];
-      rhs[j] = lin;
-    }
+    for (j = 0; j < nt; ++j) /* the step: the others' s to their linearized bounds */
+      for (rhs[j] = r0[j] - s[j], k = 0; k < ns; ++k) rhs[j] += D[j * ns + k] * dv[k];
     for (k = 0; k < ns; ++k) rhs[slide[k]] = dv[k];
     for (i = 0; i < 30; ++i, t *= 0.5) {
       for (j = 0; j < nt; ++j) sv[j] = fmax(0.0, s[j] + t * rhs[j]);
@@ -537,11 +525,7 @@ int sc_friction_solve(sc_int n, sc_int m, sc_int nb, sc_int nc, const double *M,
     else
       for (j = 0; j < nt; ++j) s[j] += omega * (r0[j] - s[j]);
   }
-  if (code == -1) {
-    free(d);
-    free(iw);
-    return -1;
-  }
+  if (code == -1) goto done;
   scale[0] = scale[1] = 1.0;
   if (!delassus(n, mt, nbt, M, f, A, c, par, L, Z, G, b, g, scale)) ok = 0;
   else {
@@ -604,8 +588,9 @@ int sc_friction_solve(sc_int n, sc_int m, sc_int nb, sc_int nc, const double *M,
       rec[CR_W * k + REC_ST] = !(lam[rn[k]] > 0) ? 1.0 : fabs(w[m + k]) > TOL_ACCEPT *
                                scale[1] ? 2.0 : 0.0;
     }
-
+  code = 0;
+done:
   free(d);
   free(iw);
-  return 0;
+  return d && iw ? code : -1;
 }
