@@ -23,6 +23,13 @@ from capsule_reference import deepest_overlap
 
 
 def _rough_pegs_row(mu):
+    if mu == 1.0:  # the example with rough pegs: pegs_row.toml's with mu_contact 1 at each
+        scene = read_scene("examples/scenes/pegs_row_rough.toml")
+        plain = read_scene("examples/scenes/pegs_row.toml")
+        assert [o.mu_contact for o in scene.obstacles] == [1.0] * len(plain.obstacles)
+        assert scene.robot == plain.robot and scene.ground == plain.ground
+        assert [o.center for o in scene.obstacles] == [o.center for o in plain.obstacles]
+        return load_scene(scene)
     scene = read_scene("examples/scenes/pegs_row.toml")
     pegs = tuple(dataclasses.replace(o, mu_contact=mu) for o in scene.obstacles)
     return load_scene(dataclasses.replace(scene, obstacles=pegs))
