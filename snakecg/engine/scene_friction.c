@@ -19,11 +19,11 @@
  *      present piece by differences of inner solves along the sliding contacts' s (lam_n is
  *      affine in s on a polyhedral piece; a sticking or open bound moves nothing), the step
  *      cut in halves until |R|^2 falls (Armijo), a relaxed pass where no cut does, until
- *      |mu lam_n - s| is rounding (FP_TOL of the forces' scale);
- *   4. Coulomb's residuals computed apart from the final accelerations (w = A a + c: the
- *      normal complementarity, the cone, stick, slip against the sliding) folded into the
- *      certificate; a sample that does not settle in FP_MAX passes, or whose residuals exceed
- *      TOL_ACCEPT, is not solved (status FR_NOT_SETTLED, NaN).
+ *      |mu lam_n - s| is rounding (FP_TOL of the forces' scale); not settled in FP_MAX
+ *      passes: 1.-3. again from s = 10, 1, 0.1 times mu max|lam| (every contact sticking..);
+ *   4. Coulomb's residuals apart from the final accelerations (w = A a + c: the normal
+ *      complementarity, the cone, stick, slip against the sliding) into the certificate; not
+ *      settled from the four starts, or above TOL_ACCEPT: not solved (FR_NOT_SETTLED, NaN).
  * Uniqueness. Coulomb problems can have several solutions, or none (Painleve). Where every
  * other block is polyhedral (contacts, bounded and ideal wheels, frictionless ground) and the
  * pieces are at most ENUM_MAX, every piece is enumerated (a frictional contact open, stick,
@@ -37,7 +37,7 @@
 #include "snakecg_layout.h"
 #include "engine.h"
 
-#define FP_MAX 400      /* fixed-point and Newton passes */
+#define FP_MAX 400      /* fixed-point and Newton passes from each start */
 #define FP_TOL 1e-12    /* |mu lam_n - s| at most this of the forces' scale: settled */
 #define ENUM_MAX 4096   /* pieces enumerated for the uniqueness check */
 #define SOL_MAX 16      /* distinct solutions kept */
@@ -420,7 +420,7 @@ int sc_friction_solve(sc_int n, sc_int m, sc_int nb, sc_int nc, const double *M,
       *sv, *rb, *dv, *Dss, scale[2], res[3];
   sc_enum e;
   fr_prob pr;
-  int code = 0, ok = 0, same, stall = 0, newton = 0;
+  int code = 0, ok = 0, same, stall = 0, newton = 0, restarts = 0;
   double omega = 1.0, best = INFINITY; /* the passes' relaxation (halved where they stall) */
   *solutions = 0.0;
   if (!T) /* no contact friction in the scene: the convex solve alone */
@@ -444,9 +444,9 @@ int sc_friction_solve(sc_int n, sc_int m, sc_int nb, sc_int nc, const double *M,
                                               from, lam, a, w, st, info);
   }
   nt = nc, mt = m + nt, nbt = nb + nt;
-  d = (double *)malloc(sizeof(double) * (size_t)(7 * nt + 2 * nt * nt + 4 * nbt + n * n + 2 * n * mt +
-                                                 4 * mt * mt + 10 * mt + 4 * n + 12 * nbt +
-                                                 SOL_MAX * n + nt * nt + 16));
+  d = (double *)malloc(sizeof(double) * (size_t)(7 * nt + 3 * nt * nt + 16 * nbt + n * n +
+                                                 2 * n * mt + 4 * mt * mt + 10 * mt + 4 * n +
+                                                 SOL_MAX * n + 16));
   iw = (sc_int *)malloc(sizeof(sc_int) * (size_t)(3 * nbt + 3 * nt + 2 * mt + 8));
   if (!d || !iw) goto done;
   mu = d, s = mu + nt, r0 = s + nt, rhs = r0 + nt, sv = rhs + nt, rb = sv + nt, dv = rb + nt;
@@ -472,8 +472,11 @@ int sc_friction_solve(sc_int n, sc_int m, sc_int nb, sc_int nc, const double *M,
   pr.n = n, pr.mt = mt, pr.nb = nb, pr.nt = nt, pr.m = m, pr.sweeps = sweeps, pr.M = M;
   pr.f = f, pr.A = A, pr.c = c, pr.kind = kind, pr.start = start, pr.par = par, pr.mu = mu;
   pr.lead = lead, pr.rn = rn;
-  for (it = 0; it < FP_MAX; ++it) {
+  for (it = 0; it < 4 * FP_MAX; ++it) {
     double F = 0.0, err = 0.0, r2 = 0.0, r2t = 0.0, Ft = 0.0, t = 1.0;
+    if (it && it % FP_MAX == 0) /* not settled: again from s = 10, 1, 0.1 mu |lam| */
+      for (j = 0, ++restarts, newton = stall = 0, omega = 1.0, best = INFINITY; j < nt; ++j)
+        s[j] = 10.0 * pow(0.1, (double)(restarts - 1)) * mu[j] * sc_max_abs(lam, mt);
     code = inner(&pr, s, it ? fr : NULL, lam, a, w, st, info, r0, &r2, &F);
     if (code) break;
     for (j = 0; j < nt; ++j) err = fmax(err, fabs(r0[j] - s[j]));
