@@ -62,6 +62,32 @@ def test_the_step_where_the_fixed_point_cycled_is_solved():
     assert max(run.certificate.values()) <= 1e-9
 
 
+# A state where Newton's steps from the first start stall (the example at mu_contact 1.5 with
+# the gait at 0.4 rad and 1.5 Hz, after 1.33 s): settled from a restart.
+STALLING_Q = [-0.04292616886978592, 0.01211051092846942, -0.09127980823052863, -0.04258009575786208,
+    0.4793164494059722, 0.4487468212046312, -0.12485121539651826, -0.47077393497635867,
+    -0.17025984629462432, 0.2932534135479661, 0.26205496189980104, -0.14649249686116417,
+    -0.37558486439040784]
+STALLING_V = [0.049974358745125375, 0.37265174686401525, -4.386752839147681, 3.44796081102902,
+    2.3655519621930337, -1.162890901351929, -3.4864571052982547, -0.4164892117176863,
+    3.979836650705033, 3.121672703392473, -1.5846032029446422, -2.0607164522945594,
+    0.34151349546574883]
+STALLING_TAU = [0.25085267996145677, -1.3693046369046147, -2.4433816884572694, -0.7913730434077632,
+    1.2303237775532916, 1.3680874334262743, 0.2644894993156143, -0.44994940493115215,
+    -1.0026824246624122, 0.05103225953875251]
+
+
+def test_the_step_where_newton_stalls_is_solved_from_a_restart():
+    """One 1 ms step from a state where the iterations from the frictionless start stall
+    (between a contact's sticking and slipping pieces): the restart from large bounds settles
+    it, Coulomb's residuals within 1e-9."""
+    model = _rough_pegs_row(1.5)
+    run = model.simulate(np.array(STALLING_Q), 1e-3, v0=np.array(STALLING_V),
+                         tau=np.array(STALLING_TAU), dt=1e-3)
+    assert run.status == "completed", run.message
+    assert max(run.certificate.values()) <= 1e-9
+
+
 @pytest.mark.parametrize("mu", [1.0, 1.5])
 def test_the_pegs_row_with_rough_pegs_runs_and_keeps_coulomb_s_law(mu):
     """mu_contact = 1 or 1.5 on every peg: a peg a hair's breadth off a joint touches both
