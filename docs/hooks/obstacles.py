@@ -9,8 +9,9 @@ snake's outline at the start and at the end of each run; the directive
 numbers. The peg-friction study: the same run with the pegs' ``mu_contact`` at each of
 ``STUDY_MUS`` (a few seconds of CPU together); its figure
 (``figures/obstacles/progress_mu.png``) draws the progress along the row against
-``mu_contact`` and ``<!-- snakecg-obstacle-friction -->`` is replaced by its table. Kept in the snakecg cache folder under a key made of the package's sources, the
-example and this file, so a rebuild with nothing changed reuses it.
+``mu_contact`` and ``<!-- snakecg-obstacle-friction -->`` is replaced by its table. Kept in
+the snakecg cache folder under a key made of the package's sources, the example and this
+file, so a rebuild with nothing changed reuses it.
 """
 
 from __future__ import annotations
