@@ -12,15 +12,18 @@
  * successive approximation of Tresca problems):
  *   1. the tangent rows are BOX blocks of half-width s (s = 0 first: the frictionless
  *      answer); each inner problem is solved exactly by scene_solve.c's core_scene_solve_s;
- *   2. s <- mu lam_n(s) while the pieces (every block's state) change;
- *   3. once the pieces repeat, Newton on the sliding contacts' s: the residual mu lam_n(s) - s
- *      (each evaluation an exact inner solve), its Jacobian by differences of inner solves on
- *      those pieces (lam_n is affine in s on a polyhedral piece), until |mu lam_n - s| is
- *      rounding (FP_TOL of the forces' scale);
- *   4. Coulomb's residuals computed apart from the final accelerations (w = A a + c: the
- *      normal complementarity, the cone, stick, slip against the sliding) folded into the
- *      certificate; a sample that does not settle in FP_MAX passes, or whose residuals exceed
- *      TOL_ACCEPT, is not solved (status FR_NOT_SETTLED, NaN).
+ *   2. s <- mu lam_n(s) while the pieces (every block's state) change and it makes progress;
+ *   3. once the pieces repeat, or the passes stall (the normal split between two nearly
+ *      parallel rows, a peg by a joint, swings with the bounds), a semismooth Newton on
+ *      R(s) = mu lam_n(s) - s (each evaluation an exact inner solve): its derivative on the
+ *      present piece by differences of inner solves along the sliding contacts' s (lam_n is
+ *      affine in s on a polyhedral piece; a sticking or open bound moves nothing), the step
+ *      cut in halves until |R|^2 falls (Armijo), a relaxed pass where no cut does, until
+ *      |mu lam_n - s| is rounding (FP_TOL of the forces' scale); not settled in FP_MAX
+ *      passes: 1.-3. again from s = 10, 1, 0.1 times mu max|lam| (every contact sticking..);
+ *   4. Coulomb's residuals apart from the final accelerations (w = A a + c: the normal
+ *      complementarity, the cone, stick, slip against the sliding) into the certificate; not
+ *      settled from the four starts, or above TOL_ACCEPT: not solved (FR_NOT_SETTLED, NaN).
  * Uniqueness. Coulomb problems can have several solutions, or none (Painleve). Where every
  * other block is polyhedral (contacts, bounded and ideal wheels, frictionless ground) and the
  * pieces are at most ENUM_MAX, every piece is enumerated (a frictional contact open, stick,
@@ -34,7 +37,7 @@
 #include "snakecg_layout.h"
 #include "engine.h"
 
-#define FP_MAX 400      /* fixed-point and Newton passes */
+#define FP_MAX 400      /* fixed-point and Newton passes from each start */
 #define FP_TOL 1e-12    /* |mu lam_n - s| at most this of the forces' scale: settled */
 #define ENUM_MAX 4096   /* pieces enumerated for the uniqueness check */
 #define SOL_MAX 16      /* distinct solutions kept */
@@ -380,6 +383,33 @@ static void pieces(sc_int nbt, const sc_int *kind, const sc_int *start, const do
   }
 }
 
+/* The fixed point's problem: the convex solve's arguments with the tangent blocks. */
+typedef struct { sc_int n, m, nb, nt, mt, sweeps; const double *M, *f, *mu; double *A, *c, *par;
+  sc_int *kind, *start; const sc_int *lead, *rn; } fr_prob;
+
+/* The inner (Tresca) solve at the bounds s from the pieces `from`: core_scene_solve_s's code,
+ * 1 where it did not converge; rb the bounds it gives (bound_of), *r2 = |rb - s|^2, *F its
+ * largest force. */
+static int inner(const fr_prob *p, const double *s, const double *from, double *lam,
+                 double *a, double *w, double *st, double *info, double *rb, double *r2,
+                 double *F) {
+  sc_int j, i;
+  int code;
+  for (j = 0; j < p->nt; ++j) p->par[3 * (p->nb + j)] = s[j];
+  code = SNAKECG_EXPORT(core_scene_solve_s)(p->n, p->mt, p->nb + p->nt, p->M, p->f, p->A,
+                                            p->c, p->kind, p->start, p->par, p->sweeps, from,
+                                            lam, a, w, st, info);
+  if (code) return code;
+  if (info[0] != 0.0) return 1;
+  *F = 0.0, *r2 = 0.0;
+  for (i = 0; i < p->mt; ++i) *F = fmax(*F, fabs(lam[i]));
+  for (j = 0; j < p->nt; ++j) {
+    rb[j] = bound_of(j, p->nt, p->m, p->lead, p->rn, p->mu, lam);
+    *r2 += (rb[j] - s[j]) * (rb[j] - s[j]);
+  }
+  return 0;
+}
+
 int sc_friction_solve(sc_int n, sc_int m, sc_int nb, sc_int nc, const double *M,
                       const double *f, double *A, double *c, sc_int *kind, sc_int *start,
                       double *par, const double *T, double *rec, sc_int sweeps,
@@ -387,9 +417,10 @@ int sc_friction_solve(sc_int n, sc_int m, sc_int nb, sc_int nc, const double *M,
                       double *info, double *solutions) {
   sc_int nt = 0, k, j, i, it, mt, nbt, *iw, *tc, *rn, *piv, *slide, *lead, ns;
   double *d, *mu, *s, *fr, *L, *Z, *G, *b, *g, *pl, *pw, *pa, *pst, *pinfo, *D, *rhs, *r0,
-      scale[2], res[3];
+      *sv, *rb, *dv, *Dss, scale[2], res[3];
   sc_enum e;
-  int code = 0, ok = 0, same, stall = 0;
+  fr_prob pr;
+  int code = 0, ok = 0, same, stall = 0, newton = 0, restarts = 0;
   double omega = 1.0, best = INFINITY; /* the passes' relaxation (halved where they stall) */
   *solutions = 0.0;
   if (!T) /* no contact friction in the scene: the convex solve alone */
@@ -413,16 +444,13 @@ int sc_friction_solve(sc_int n, sc_int m, sc_int nb, sc_int nc, const double *M,
                                               from, lam, a, w, st, info);
   }
   nt = nc, mt = m + nt, nbt = nb + nt;
-  d = (double *)malloc(sizeof(double) * (size_t)(4 * nt + 4 * nbt + n * n + 2 * n * mt +
-                                                 4 * mt * mt + 10 * mt + 4 * n + 12 * nbt +
-                                                 SOL_MAX * n + nt * nt + 16));
+  d = (double *)malloc(sizeof(double) * (size_t)(7 * nt + 3 * nt * nt + 16 * nbt + n * n +
+                                                 2 * n * mt + 4 * mt * mt + 10 * mt + 4 * n +
+                                                 SOL_MAX * n + 16));
   iw = (sc_int *)malloc(sizeof(sc_int) * (size_t)(3 * nbt + 3 * nt + 2 * mt + 8));
-  if (!d || !iw) {
-    free(d);
-    free(iw);
-    return -1;
-  }
-  mu = d, s = mu + nt, r0 = s + nt, rhs = r0 + nt, fr = rhs + nt, L = fr + 3 * nbt;
+  if (!d || !iw) goto done;
+  mu = d, s = mu + nt, r0 = s + nt, rhs = r0 + nt, sv = rhs + nt, rb = sv + nt, dv = rb + nt;
+  Dss = dv + nt, fr = Dss + nt * nt, L = fr + 3 * nbt;
   Z = L + n * n, G = Z + n * mt, b = G + mt * mt, g = b + mt, pl = g + n, pw = pl + mt;
   pa = pw + mt, pst = pa + n, pinfo = pst + nbt, D = pinfo + 8; /* (pinfo: INFO_WIDTH) */
   e.K = D + nt * nt, e.Kc = e.K + mt * mt, e.S = e.Kc + mt * mt, e.x = e.S + (mt + n) * mt;
@@ -441,65 +469,66 @@ int sc_friction_solve(sc_int n, sc_int m, sc_int nb, sc_int nc, const double *M,
         break;
       }
   }
-  for (it = 0; it < FP_MAX; ++it) {
-    double F = 0.0, err = 0.0;
-    for (j = 0; j < nt; ++j) par[3 * (nb + j)] = s[j];
-    code = SNAKECG_EXPORT(core_scene_solve_s)(n, mt, nbt, M, f, A, c, kind, start, par, sweeps,
-                                              it ? fr : NULL, lam, a, w, st, info);
-    if (code || info[0] != 0.0) break;
-    for (i = 0; i < mt; ++i) F = fmax(F, fabs(lam[i]));
-    for (j = 0; j < nt; ++j)
-      err = fmax(err, fabs(bound_of(j, nt, m, lead, rn, mu, lam) - s[j]));
-    if (err <= FP_TOL * (F > 0 ? F : 1.0)) {
+  pr.n = n, pr.mt = mt, pr.nb = nb, pr.nt = nt, pr.m = m, pr.sweeps = sweeps, pr.M = M;
+  pr.f = f, pr.A = A, pr.c = c, pr.kind = kind, pr.start = start, pr.par = par, pr.mu = mu;
+  pr.lead = lead, pr.rn = rn;
+  for (it = 0; it < 4 * FP_MAX; ++it) {
+    double F = 0.0, err = 0.0, r2 = 0.0, r2t = 0.0, Ft = 0.0, t = 1.0;
+    if (it && it % FP_MAX == 0) /* not settled: again from s = 10, 1, 0.1 mu |lam| */
+      for (j = 0, ++restarts, newton = stall = 0, omega = 1.0, best = INFINITY; j < nt; ++j)
+        s[j] = 10.0 * pow(0.1, (double)(restarts - 1)) * mu[j] * sc_max_abs(lam, mt);
+    code = inner(&pr, s, it ? fr : NULL, lam, a, w, st, info, r0, &r2, &F);
+    if (code) break;
+    for (j = 0; j < nt; ++j) err = fmax(err, fabs(r0[j] - s[j]));
+    if (err <= FP_TOL * F) {
       ok = 1;
       break;
     }
     if (err < 0.9 * best) best = err, stall = 0; /* progress */
-    else if (++stall >= 6) /* no progress in 6 passes (a cycle of pieces): relax */
-      omega = fmax(0.5 * omega, 1.0 / 1024), stall = 0, best = err;
+    else if (++stall >= 6) /* no progress in 6 passes (a cycle of pieces): Newton, relaxed */
+      omega = fmax(0.5 * omega, 1.0 / 1024), stall = 0, best = err, newton = 1;
     same = it > 0;
     for (k = 0; k < nbt && same; ++k) same = fr[3 * k] == st[k];
     pieces(nbt, kind, start, st, lam, fr);
+    newton |= same;
     for (j = ns = 0; j < nt; ++j) /* the sliding tangents (on the bound, s > 0) */
       if (st[nb + j] == 3.0 || st[nb + j] == 4.0) slide[ns++] = j;
-    if (!same || ns == 0) { /* s <- mu lam_n */
-      for (j = 0; j < nt; ++j) s[j] += omega * (bound_of(j, nt, m, lead, rn, mu, lam) - s[j]);
+    if (!newton || ns == 0) { /* s <- mu lam_n */
+      for (j = 0; j < nt; ++j) s[j] += omega * (r0[j] - s[j]);
       continue;
     }
-    /* Newton on the sliding s: R = mu lam_n(s) - s, J = mu dlam_n/ds - I by differences */
-    for (j = 0; j < nt; ++j) r0[j] = bound_of(j, nt, m, lead, rn, mu, lam);
+    /* Newton on R(s) = bound(s) - s (3. of the header), a line search on |R|^2 */
     for (i = 0; i < ns; ++i) {
       sc_int q = slide[i];
       double h = 1e-7 * fmax(s[q], F);
-      par[3 * (nb + q)] = s[q] + h;
-      code = SNAKECG_EXPORT(core_scene_solve_s)(n, mt, nbt, M, f, A, c, kind, start, par,
-                                                sweeps, fr, pl, pa, pw, pst, pinfo);
-      par[3 * (nb + q)] = s[q];
-      if (code || pinfo[0] != 0.0) break;
-      for (j = 0; j < ns; ++j)
-        D[j * ns + i] =
-            (bound_of(slide[j], nt, m, lead, rn, mu, pl) - r0[slide[j]]) / h - (i == j);
+      memcpy(sv, s, sizeof(double) * (size_t)nt);
+      sv[q] += h;
+      if (inner(&pr, sv, fr, pl, pa, pw, pst, pinfo, rb, &r2t, &Ft)) break;
+      for (j = 0; j < nt; ++j) D[j * ns + i] = (rb[j] - r0[j]) / h;
     }
-    if (i < ns) { /* a difference not solved: a plain pass */
-      for (j = 0; j < nt; ++j) s[j] += omega * (r0[j] - s[j]);
-      code = 0;
-      continue;
+    for (j = 0; i == ns && j < ns; ++j) {
+      for (k = 0; k < ns; ++k) Dss[j * ns + k] = D[slide[j] * ns + k] - (j == k);
+      dv[j] = -(r0[slide[j]] - s[slide[j]]);
     }
-    for (j = 0; j < ns; ++j) rhs[j] = -(r0[slide[j]] - s[slide[j]]);
-    if (!sc_lu_factor(ns, D, ns, piv)) {
+    if (i < ns || !sc_lu_factor(ns, Dss, ns, piv)) { /* a relaxed pass */
       for (j = 0; j < nt; ++j) s[j] += omega * (r0[j] - s[j]);
       continue;
     }
-    sc_lu_solve(ns, D, ns, piv, rhs);
-    for (j = 0; j < ns; ++j) rhs[j] = s[slide[j]] + omega * rhs[j];
-    for (j = 0; j < nt; ++j) s[j] += omega * (r0[j] - s[j]); /* sticking, open: mu lam_n */
-    for (j = 0; j < ns; ++j) s[slide[j]] = fmax(0.0, rhs[j]);
+    sc_lu_solve(ns, Dss, ns, piv, dv);
+    for (j = 0; j < nt; ++j) /* the step: the others' s to their linearized bounds */
+      for (rhs[j] = r0[j] - s[j], k = 0; k < ns; ++k) rhs[j] += D[j * ns + k] * dv[k];
+    for (k = 0; k < ns; ++k) rhs[slide[k]] = dv[k];
+    for (i = 0; i < 30; ++i, t *= 0.5) {
+      for (j = 0; j < nt; ++j) sv[j] = fmax(0.0, s[j] + t * rhs[j]);
+      if (!inner(&pr, sv, fr, pl, pa, pw, pst, pinfo, rb, &r2t, &Ft) &&
+          r2t <= (1.0 - 1e-4 * t) * r2)
+        break;
+    }
+    if (i < 30) memcpy(s, sv, sizeof(double) * (size_t)nt);
+    else
+      for (j = 0; j < nt; ++j) s[j] += omega * (r0[j] - s[j]);
   }
-  if (code == -1) {
-    free(d);
-    free(iw);
-    return -1;
-  }
+  if (code == -1) goto done;
   scale[0] = scale[1] = 1.0;
   if (!delassus(n, mt, nbt, M, f, A, c, par, L, Z, G, b, g, scale)) ok = 0;
   else {
@@ -562,8 +591,9 @@ int sc_friction_solve(sc_int n, sc_int m, sc_int nb, sc_int nc, const double *M,
       rec[CR_W * k + REC_ST] = !(lam[rn[k]] > 0) ? 1.0 : fabs(w[m + k]) > TOL_ACCEPT *
                                scale[1] ? 2.0 : 0.0;
     }
-
+  code = 0;
+done:
   free(d);
   free(iw);
-  return 0;
+  return d && iw ? code : -1;
 }

@@ -17,8 +17,9 @@
  *      contacts' work and impulse, the sliding sets' impulse against their velocity (the
  *      cosine), the solve's largest residuals;
  *   5. an inelastic impact where a contact new at x+ closes faster than impact_speed: the same
- *      solve with h = 0 (no friction impulse, at the ground or the contacts: a frictionless
- *      impact; ideal wheels take impulses) on A V >= 0; its kinetic energy loss;
+ *      solve with h = 0 (no friction impulse at the ground, whose forces are finite; ideal
+ *      wheels take impulses; a contact's friction impulse within mu times its normal
+ *      impulse, Coulomb's law on the velocities after) on A V >= 0; its kinetic energy loss;
  *   6. x, V and the rows replaced by the step's end; its kinetic energy, smallest contact gap
  *      and contact count.
  * h = 0: the rows at x alone (the run's start).
@@ -85,10 +86,10 @@ static int solve(sc_scene_step *c, sc_int n, double h, const double *f, double *
     from[3 * b + 1] = c->from[3 * b + 1] * h;
     from[3 * b + 2] = c->from[3 * b + 2] * h;
   }
-  /* (with contact friction: scene_friction.c's solve on the tangent rows after the m rows;
-   * an impact, h = 0, is frictionless) */
+  /* (with contact friction: scene_friction.c's solve on the tangent rows after the m rows,
+   * an impact's too: its friction impulses within mu times its normal impulses) */
   return sc_friction_solve(n, m, nb, nc, c->M, f, c->A, off, c->kind, c->start, par,
-                           c->pk[SP_FRICTION] != 0 && h > 0 ? c->A + m * n : NULL, rec,
+                           c->pk[SP_FRICTION] != 0 ? c->A + m * n : NULL, rec,
                            SC_STEP_SWEEPS, warm ? from : NULL, lam, a, w, st, info, &unique);
 }
 

@@ -25,8 +25,10 @@ obstacles, objects with objects and obstacles); where a pair overlaps beyond ``t
 the time it reaches ``-tolerance / 4`` along the step is found by Brent's method on the
 engine's distance of the pair at the interpolated state ``x + s h V+`` and the step is taken
 again, shortened to it. A pair that comes within the tolerance with a closing velocity gets
-an inelastic impact: the same solve with ``h = 0`` (no friction impulse, the ground's forces
-being finite; ideal wheels take impulses) and the rows ``A V+ >= 0``, with its certificate.
+an inelastic impact: the same solve with ``h = 0`` (no friction impulse at the ground, its
+forces being finite; ideal wheels take impulses; with contact friction each contact's
+friction impulse within ``mu`` times its normal impulse, Coulomb's law on the velocities
+after) and the rows ``A V+ >= 0``, with its certificate.
 The rows are found from the geometry at every step, so contact points slide along edges and
 links and a box's corner can take over.
 

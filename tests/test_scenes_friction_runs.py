@@ -1,0 +1,178 @@
+"""Contact friction over whole runs: the obstacle-aided locomotion example with rough pegs,
+and frictional impacts against their closed form.
+
+References: the capsule-peg and link-link distances of ``capsule_reference`` (NumPy, apart
+from the engine's geometry) for penetration; the run's energy balance (the kinetic energy
+gained never exceeds the torques' work less friction and impact losses plus the gap
+stabilisation's work); and, for an impact, the impulse law of a rigid disc worked out by hand
+below (Coulomb's law on the impulses of an inelastic impact)."""
+
+from __future__ import annotations
+
+import dataclasses
+
+import numpy as np
+import pytest
+
+import snakecg
+from snakecg.scenes import GeneralScene, Ground, Obstacle, SceneObject, load_scene
+from snakecg.scenes.toml_reading import read_scene
+from snakecg.simulate import serpenoid_controller
+
+from capsule_reference import deepest_overlap
+
+
+def _rough_pegs_row(mu):
+    if mu == 1.0:  # the example with rough pegs: pegs_row.toml's with mu_contact 1 at each
+        scene = read_scene("examples/scenes/pegs_row_rough.toml")
+        plain = read_scene("examples/scenes/pegs_row.toml")
+        assert [o.mu_contact for o in scene.obstacles] == [1.0] * len(plain.obstacles)
+        assert scene.robot == plain.robot and scene.ground == plain.ground
+        assert [o.center for o in scene.obstacles] == [o.center for o in plain.obstacles]
+        return load_scene(scene)
+    scene = read_scene("examples/scenes/pegs_row.toml")
+    pegs = tuple(dataclasses.replace(o, mu_contact=mu) for o in scene.obstacles)
+    return load_scene(dataclasses.replace(scene, obstacles=pegs))
+
+
+# The state where the bounds' fixed point cycled (the example at mu_contact 1 after 17 ms, with
+# frictionless impacts): a peg by a joint touching both links with nearly one normal row.
+CYCLING_Q = [0.00024075863369241277, 0.0006482743580151433, -0.02198509319228567,
+    0.024703593861360937, 0.4852191210355022, 0.27991984675148035, -0.3023569116841101,
+    -0.4691562056253228, 0.007128875143526904, 0.48330527410925067, 0.28158294926374766,
+    -0.3066199964564431, -0.4516865756670861]
+CYCLING_V = [0.007904031420365512, 0.10359926923212215, -1.3777558303464417, 0.9338668093909724,
+    1.5557170203856756, -1.839568840574544, 0.6881348953992854, 0.07809958606848802,
+    -0.38019887186852946, 1.5109991678349624, -2.0506571557867592, 0.45222943139559674,
+    0.8134877247426411]
+CYCLING_TAU = [0.9458322562057886, -0.23191876161662583, -0.5764248437315753, -1.2371840782740673,
+    0.4915261428264129, 1.5157991477619772, -0.1993649365888968, -0.529729374290587,
+    -1.123781591349633, 0.09621340164180228]
+
+
+def test_the_step_where_the_fixed_point_cycled_is_solved():
+    """One 1 ms step from the state where the passes cycled between pieces (the normal split
+    between the two nearly parallel rows swinging with the bounds): the semismooth Newton on
+    the bounds settles it, with Coulomb's residuals within 1e-9."""
+    model = _rough_pegs_row(1.0)
+    run = model.simulate(np.array(CYCLING_Q), 1e-3, v0=np.array(CYCLING_V),
+                         tau=np.array(CYCLING_TAU), dt=1e-3)
+    assert run.status == "completed", run.message
+    assert max(run.n_contacts) >= 2
+    assert max(run.certificate.values()) <= 1e-9
+
+
+# A state where Newton's steps from the first start stall (the example at mu_contact 1.5 with
+# the gait at 0.4 rad and 1.5 Hz, after 1.33 s): settled from a restart.
+STALLING_Q = [-0.04292616886978592, 0.01211051092846942, -0.09127980823052863, -0.04258009575786208,
+    0.4793164494059722, 0.4487468212046312, -0.12485121539651826, -0.47077393497635867,
+    -0.17025984629462432, 0.2932534135479661, 0.26205496189980104, -0.14649249686116417,
+    -0.37558486439040784]
+STALLING_V = [0.049974358745125375, 0.37265174686401525, -4.386752839147681, 3.44796081102902,
+    2.3655519621930337, -1.162890901351929, -3.4864571052982547, -0.4164892117176863,
+    3.979836650705033, 3.121672703392473, -1.5846032029446422, -2.0607164522945594,
+    0.34151349546574883]
+STALLING_TAU = [0.25085267996145677, -1.3693046369046147, -2.4433816884572694, -0.7913730434077632,
+    1.2303237775532916, 1.3680874334262743, 0.2644894993156143, -0.44994940493115215,
+    -1.0026824246624122, 0.05103225953875251]
+
+
+def test_the_step_where_newton_stalls_is_solved_from_a_restart():
+    """One 1 ms step from a state where the iterations from the frictionless start stall
+    (between a contact's sticking and slipping pieces): the restart from large bounds settles
+    it, Coulomb's residuals within 1e-9."""
+    model = _rough_pegs_row(1.5)
+    run = model.simulate(np.array(STALLING_Q), 1e-3, v0=np.array(STALLING_V),
+                         tau=np.array(STALLING_TAU), dt=1e-3)
+    assert run.status == "completed", run.message
+    assert max(run.certificate.values()) <= 1e-9
+
+
+@pytest.mark.parametrize("mu", [1.0, 1.5])
+def test_the_pegs_row_with_rough_pegs_runs_and_keeps_coulomb_s_law(mu):
+    """mu_contact = 1 or 1.5 on every peg: a peg a hair's breadth off a joint touches both
+    links' ends with nearly one normal row, where the bounds' plain fixed point cycles (at 1.5
+    the run stopped after 46 ms). Now it runs; nothing penetrates beyond the tolerance (NumPy
+    distances), the energy stays within the torques' work, every step's Coulomb residuals
+    (the cone, stick, slip against the sliding, the normal complementarity) within 1e-9."""
+    model = _rough_pegs_row(mu)
+    q0 = np.zeros(13)
+    q0[3:] = 0.5 * np.sin(np.arange(10) * 2 * np.pi / 5)
+    gait = serpenoid_controller(model, amplitude=0.5, frequency=1.0, phase_lag=2 * np.pi / 5,
+                                kp=10.0, kd=0.3, tau_max=None)
+    run = model.simulate(q0, 0.3, tau=gait, dt=1e-3)
+    assert run.status == "completed", run.message
+    assert run.t[-1] == pytest.approx(0.3)
+    assert deepest_overlap(model.scene, np.asarray(run.q)) <= run.tolerance
+    assert max(run.n_contacts) >= 2
+    assert max(run.certificate.values()) <= 1e-9
+    ke = np.asarray(run.kinetic_energy)
+    budget = (np.asarray(run.work_tau) - np.asarray(run.friction_dissipation)
+              - np.asarray(run.impact_loss) + np.asarray(run.contact_work))
+    assert np.all(ke - ke[0] <= budget + 1e-9 * max(1.0, np.abs(run.work_tau).max()))
+    assert np.all(np.diff(run.friction_dissipation) >= -1e-15)
+    assert np.all(np.asarray(run.contact_impulse) >= 0)
+
+
+def _disc_at_wall(mu, inertia, m=2.0, r=0.1):
+    disc = SceneObject(shape="disc", radius=r, mass=m, inertia=inertia,
+                       pose=(1.0, -0.5 + r + 0.0005, 0.0))
+    wall = Obstacle(shape="wall", point=(0.0, -0.5), normal=(0.0, 1.0))
+    return snakecg.load(GeneralScene(snakecg.Robot(joints=1), ground=Ground(model="frictionless"),
+                                     objects=(disc,), obstacles=(wall,), mu_contact=mu))
+
+
+def disc_impact(m, r, inertia, mu, vt, vn, omega):
+    """A disc (mass m, radius r, inertia I about its centre) hits a wall y = 0 below it with
+    velocity (vt, -vn), vn > 0, and spin omega (counter-clockwise); the impact is inelastic
+    (restitution 0). The contact point is at (0, -r) from the centre: its sliding velocity is
+    u = vt + r omega, and a tangential impulse p_t (along +x, on the disc) changes vt by
+    p_t / m and omega by r p_t / I (the moment of (p_t, 0) at (0, -r)), so u by p_t k with
+    k = 1 / m + r^2 / I. The normal impulse stops the normal velocity: p_n = m vn. Coulomb:
+    stick (u after = 0) needs p_t = -u / k within mu p_n; else slip, p_t = -mu p_n sign(u).
+    So p_t = -sign(u) min(|u| / k, mu m vn). A uniform disc (I = m r^2 / 2, k = 3 / m) from
+    no spin rolls after when |vt| <= 3 mu vn, keeping 2/3 of vt (it loses 1/3); without the
+    rotation's coupling (I -> infinity) vt after is sign(vt) max(0, |vt| - mu vn)."""
+    u = vt + r * omega
+    k = 1.0 / m + r * r / inertia
+    pt = -np.sign(u) * min(abs(u) / k, mu * m * vn)
+    return vt + pt / m, omega + r * pt / inertia, pt, m * vn
+
+
+@pytest.mark.parametrize("mu", [0.1, 0.5, 2.0])
+@pytest.mark.parametrize("shape", ["uniform", "ring"])
+@pytest.mark.parametrize("vt", [1.0, -0.7])
+def test_a_disc_hitting_a_wall_obliquely_follows_the_impulse_law(mu, shape, vt):
+    """The velocities just after the impact equal the closed form (disc_impact) to 1e-9:
+    rolling after (stick) where mu vn is large enough, else sliding on with its tangential
+    velocity cut by mu vn; the kinetic energy never rises, the normal impulse is >= 0, and
+    the friction impulse opposes the contact's sliding."""
+    m, r, vn = 2.0, 0.1, 0.8
+    inertia = m * r * r * (0.5 if shape == "uniform" else 1.0)
+    model = _disc_at_wall(mu, inertia)
+    run = model.simulate(np.zeros(4), 0.003, v_obj0=[[vt, -vn, 0.0]], dt=1e-3)
+    assert run.status == "completed" and len(run.events) == 1
+    i = int(np.searchsorted(run.t, run.events[0].t))
+    assert run.t[i] == run.events[0].t
+    v = np.asarray(run.v_obj)[i, 0]
+    vt1, om1, pt, pn = disc_impact(m, r, inertia, mu, vt, vn, 0.0)
+    np.testing.assert_allclose(v, [vt1, 0.0, om1], atol=1e-9)
+    np.testing.assert_allclose(run.events[0].impulses, [pn], rtol=1e-9)
+    assert min(run.events[0].impulses) >= 0
+    u0, u1 = vt, v[0] + r * v[2]  # the contact point's sliding before and after
+    assert m * (v[0] - vt) * u0 < 0  # the friction impulse against the sliding
+    assert u1 * u0 >= -1e-12  # it never reverses the sliding
+    ke0, ke1 = 0.5 * m * (vt ** 2 + vn ** 2), 0.5 * (m * v[0] ** 2 + inertia * v[2] ** 2)
+    assert ke1 <= ke0
+    np.testing.assert_allclose(run.impact_loss[i], ke0 - ke1, rtol=1e-9)
+    if shape == "uniform" and abs(vt) <= 3 * mu * vn:  # rolling: 2/3 of vt kept
+        assert v[0] == pytest.approx(2 * vt / 3, abs=1e-12)
+        assert abs(u1) <= 1e-12
+
+
+def test_a_frictionless_impact_keeps_the_tangential_velocity():
+    """mu = 0: the impact's impulse is normal; the tangential velocity and spin are kept."""
+    model = _disc_at_wall(0.0, 0.01)
+    run = model.simulate(np.zeros(4), 0.003, v_obj0=[[1.0, -0.8, 0.0]], dt=1e-3)
+    i = int(np.searchsorted(run.t, run.events[0].t))
+    np.testing.assert_allclose(np.asarray(run.v_obj)[i, 0], [1.0, 0.0, 0.0], atol=1e-12)
