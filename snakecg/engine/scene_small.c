@@ -1,6 +1,6 @@
 /* snakecg's engine: the set-up of a general scene's solve (scene_solve.c) for small problems:
  * the inertia's factor with the work its diagonal tail does not need left out, and
- * Z = L^-1 A^T, G = Z^T Z, b = Z^T g + c with the rows' count known to the compiler.
+ * Z = L^-1 A^T, G = Z^T Z, b = Z^T g + c, with the sizes known to the compiler.
  *
  * The inertia I of a general scene is the snake's M_s (dense, its first coordinates) followed
  * by 3 coordinates per object whose rows are diagonal (m, m, I_o: eq. 12). From the first
@@ -13,36 +13,30 @@
  * moves the threshold by at most an ulp). In the paper's scene (9 coordinates, t = 6) this
  * is a fifth of the full factor's work.
  *
- * Z and G are loops over the m rows inside loops over the coordinates; for m up to 8 they are
- * compiled once per m (the same loops, m a constant: unrolled, no remainder or alias checks),
- * the arithmetic and its order unchanged, so their results are bit for bit the general loops'.
+ * The factor's loops run over the dense block's t rows, Z's and G's over the m rows inside
+ * loops over the coordinates; for t (and m) up to 8 they are compiled once per size (SC_BY: the
+ * same loops with the size a constant, unrolled, no remainder or alias checks), the arithmetic
+ * and its order unchanged, so their results are bit for bit the general loops'.
  */
 #include <math.h>
 
 #include "snakecg_layout.h"
 #include "engine.h"
 
-/* L = chol(M) (n x n row-major; only the dense block's lower triangle and the diagonal are
- * written, the rest of L is left as it was and must not be read), a := L^-1 f, *t_out: the
- * dense block's size (L's rows from t on are their diagonal). Returns 0 where a pivot is not
- * above rel times M's largest diagonal entry (or that entry is not positive and finite). */
-SC_INTERNAL int sc_inertia_factor(sc_int n, const double *M, const double *f, double rel,
-                                  double *L, double *a, sc_int *t_out) {
-  sc_int i, j, t;
-  double big = 0.0, big_t = 0.0;
-  for (t = n; t > 0; --t) { /* the diagonal tail: rows t.. with zeros before the diagonal */
-    for (j = 0; j < t - 1 && M[(t - 1) * n + j] == 0.0; ++j) continue;
-    if (j < t - 1) break;
-  }
-  for (i = 0; i < n; ++i) {
-    const double d = M[i * n + i];
-    if (d > big) big = d;
-    if (i < t && d > big_t) big_t = d;
-  }
-  if (!(big > 0.0) || !isfinite(big)) return 0;
+#if defined(__GNUC__)
+#define SC_FLAT static inline __attribute__((always_inline))
+#else
+#define SC_FLAT static inline
+#endif
+
+/* The dense block's factor (t x t, its threshold rel_t) and the tail's square roots, g = L^-1 f
+ * (sc_inertia_factor's; t a constant where the caller's switch makes it one). */
+SC_FLAT int factor(sc_int n, sc_int t, const double *M, const double *f, double rel,
+                   double big, double rel_t, double *L, double *a) {
+  sc_int i, j;
   for (i = 0; i < t; ++i)
     for (j = 0; j <= i; ++j) L[i * n + j] = M[i * n + j];
-  if (t > 0 && !sc_cholesky(t, L, n, big_t == big ? rel : rel * (big / big_t))) return 0;
+  if (t > 0 && !sc_cholesky(t, L, n, rel_t)) return 0;
   for (i = t; i < n; ++i) {
     const double d = M[i * n + i];
     if (!(d > rel * big)) return 0;
@@ -53,15 +47,42 @@ SC_INTERNAL int sc_inertia_factor(sc_int n, const double *M, const double *f, do
     for (j = 0; j < (i < t ? i : 0); ++j) s -= L[i * n + j] * a[j];
     a[i] = s / L[i * n + i];
   }
-  *t_out = t;
   return 1;
 }
 
-#if defined(__GNUC__)
-#define SC_FLAT static inline __attribute__((always_inline))
-#else
-#define SC_FLAT static inline
-#endif
+/* call, with the size m (a variable's name) a constant of the same name where it is 1..8 */
+#define SC_BY(m, call) \
+  switch (m) { \
+    case 1: { const sc_int m = 1; call; } break; case 2: { const sc_int m = 2; call; } break; \
+    case 3: { const sc_int m = 3; call; } break; case 4: { const sc_int m = 4; call; } break; \
+    case 5: { const sc_int m = 5; call; } break; case 6: { const sc_int m = 6; call; } break; \
+    case 7: { const sc_int m = 7; call; } break; case 8: { const sc_int m = 8; call; } break; \
+    default: call; \
+  }
+
+/* L = chol(M) (n x n row-major; only the dense block's lower triangle and the diagonal are
+ * written, the rest of L is left as it was and must not be read), a := L^-1 f, *t_out: the
+ * dense block's size (L's rows from t on are their diagonal). Returns 0 where a pivot is not
+ * above rel times M's largest diagonal entry (or that entry is not positive and finite). */
+SC_INTERNAL int sc_inertia_factor(sc_int n, const double *M, const double *f, double rel,
+                                  double *L, double *a, sc_int *t_out) {
+  sc_int i, j, t;
+  double big = 0.0, big_t = 0.0, rel_t;
+  for (t = n; t > 0; --t) { /* the diagonal tail: rows t.. with zeros before the diagonal */
+    for (j = 0; j < t - 1 && M[(t - 1) * n + j] == 0.0; ++j) continue;
+    if (j < t - 1) break;
+  }
+  for (i = 0; i < n; ++i) {
+    const double d = M[i * n + i];
+    if (d > big) big = d;
+    if (i < t && d > big_t) big_t = d;
+  }
+  if (!(big > 0.0) || !isfinite(big)) return 0;
+  rel_t = big_t == big ? rel : rel * (big / big_t);
+  *t_out = t;
+  SC_BY(t, return factor(n, t, M, f, rel, big, rel_t, L, a))
+  return 0;
+}
 
 /* Z = L^-1 A^T (n x m: coordinate i's row at Z + i m, every row of A at once). L's rows from t
  * on are their diagonal: there Z's row is A's column over it (the terms left out are zeros). */
@@ -115,23 +136,14 @@ SC_FLAT void gram(sc_int n, sc_int m, const double *Z, const double *g, const do
   }
 }
 
-#define SC_BY_M(call) \
-  switch (m) { \
-    case 1: { const sc_int m = 1; call; } break; case 2: { const sc_int m = 2; call; } break; \
-    case 3: { const sc_int m = 3; call; } break; case 4: { const sc_int m = 4; call; } break; \
-    case 5: { const sc_int m = 5; call; } break; case 6: { const sc_int m = 6; call; } break; \
-    case 7: { const sc_int m = 7; call; } break; case 8: { const sc_int m = 8; call; } break; \
-    default: call; \
-  }
-
 /* Z = L^-1 A^T for sc_inertia_factor's L and t (A: m x n row-major). */
 SC_INTERNAL void sc_scene_z(sc_int n, sc_int m, sc_int t, const double *L, const double *A,
                             double *Z) {
-  SC_BY_M(z_rows(n, m, t, L, A, Z))
+  SC_BY(m, z_rows(n, m, t, L, A, Z))
 }
 
 /* G = Z^T Z (m x m), b = Z^T g + c (c null: none); zero: m doubles of scratch. */
 SC_INTERNAL void sc_scene_gram(sc_int n, sc_int m, const double *Z, const double *g,
                                const double *c, double *G, double *b, double *zero) {
-  SC_BY_M(gram(n, m, Z, g, c, G, b, zero))
+  SC_BY(m, gram(n, m, Z, g, c, G, b, zero))
 }
