@@ -145,6 +145,11 @@ def test_small_contact_problems_against_every_piece_enumerated(core, rng):
             assert np.abs(lam - lam_ref).max() <= 1e-12 * max(1.0, np.abs(lam_ref).max())
             assert np.abs(w - (A @ a_ref + c)).max() <= 1e-12 * max(1.0, np.abs(c).max())
             assert max(info[2:5]) <= 1e-9  # the certificate
+            for i, code in enumerate(state):  # the pieces reported: a box sliding at +-p,
+                if code in (3, 4):  # an open contact at zero force
+                    assert lam_ref[i] == pytest.approx(par[3 * i] * (1 if code == 3 else -1))
+                elif code == S_ZERO:
+                    assert abs(lam_ref[i]) <= 1e-12 * max(1.0, np.abs(lam_ref).max())
             handed += info[PASSES] > 1
     assert handed >= 20  # the hand-over from a failed first pass was exercised
 
