@@ -20,7 +20,7 @@
  *   optimal.c       the optimal-torque queries of a batch (exported: core_optimal)
  *   max_sr.c, push.c, wheel_states.c   the queries' solves
  *   pieces.c, sphere.c                 the exact extremes' pieces and faces (exported)
- *   scene_sets.c, scene_piece.c, scene_primal.c, scene_solve.c   a general scene's exact solve
+ *   scene_sets.c, scene_piece.c, scene_primal.c, scene_small.c, scene_solve.c   exact solve
  *   scene_geometry.c, scene_rows.c, scene_step.c, scene_run.c   placement, contacts, rows,
  *                   forward, a time step, whole runs and batches of runs
  *   scene_friction.c  Coulomb friction at a general scene's contacts (tangent rows, its solve)
@@ -479,8 +479,7 @@ typedef struct {
 /* a field of the configuration's answer (OPT_OUT_*), and setting one */
 #define SC_OUT(o, f) ((o)->out + OPT_OUT_##f)
 #define SC_SET(o, f, v) ((o)->out[OPT_OUT_##f] = (v))
-/* maps.c */
-SC_INTERNAL sc_rest_work *sc_rest_work_new(void);
+SC_INTERNAL sc_rest_work *sc_rest_work_new(void); /* maps.c */
 SC_INTERNAL void sc_rest_work_free(sc_rest_work *ws);
 SC_INTERNAL int sc_rest_system(sc_rest_work *ws, const double *scene, const double *q,
                                sc_rest *rest);
@@ -496,25 +495,21 @@ SC_INTERNAL void sc_optimal_if_certified(sc_optimal *o);
 SC_INTERNAL void sc_optimal_count(sc_optimal *o, const sc_qp_solution *s, int qcqp);
 /* max_sr.c: max_sr with every row held (then the sliding states when allowed) */
 SC_INTERNAL void sc_max_sr(sc_optimal *o);
-/* push.c */
-SC_INTERNAL void sc_least_slip_push(sc_optimal *o);
+SC_INTERNAL void sc_least_slip_push(sc_optimal *o); /* push.c */
 SC_INTERNAL void sc_strongest_push(sc_optimal *o);
 /* wheel_states.c: max_sr with sliding wheels, after the all-held answer is in o->out */
 SC_INTERNAL void sc_max_sr_sliding(sc_optimal *o);
 /* ---- the exported entry points (the model's prefix; bound in snakecg/engine/binding.py) ---- */
-/* forward.c */
 int SNAKECG_EXPORT(core_forward)(sc_int n, const double *scene, const double *constants,
                                  sc_int max_iter, const double *const *in, const sc_int *stride,
-                                 double *out);
-/* integrate.c */
-int SNAKECG_EXPORT(core_integrate_segment)(sc_segment *sg);
+                                 double *out); /* forward.c */
+int SNAKECG_EXPORT(core_integrate_segment)(sc_segment *sg); /* integrate.c */
 int SNAKECG_EXPORT(core_mode_samples)(sc_segment *sg, sc_int n, const double *Y, double *out);
-/* events.c */
-int SNAKECG_EXPORT(core_settle)(sc_settle *st);
+int SNAKECG_EXPORT(core_settle)(sc_settle *st); /* events.c */
 /* geometry.c: the contact check at n states Y (n x NY, row-major) */
 int SNAKECG_EXPORT(core_contact_depth)(const sc_geometry *g, sc_int n, const double *Y,
                                       double *depth, double *pair);
-/* ---- the general-scene solve (scene_sets.c, scene_piece.c, scene_primal.c, scene_solve.c) */
+/* ---- the general-scene solve (scene_sets.c, _piece.c, _primal.c, _small.c, _solve.c) ---- */
 enum { K_FREE = 0, K_UNILATERAL = 1, K_BOX = 2, K_DISC = 3, K_SPLIT = 4 };
 typedef struct {
   sc_int n, m, nb;
@@ -540,6 +535,11 @@ SC_INTERNAL sc_int sc_polish(sc_problem *p, double *work, sc_int *iwork);
 SC_INTERNAL int sc_primal_piece(sc_problem *p, const double *Z, const double *g, const double *c,
   double *work, sc_int *iwork, sc_int *def); SC_INTERNAL sc_int sc_primal_work(sc_int n, sc_int m);
 SC_INTERNAL int sc_primal_tally(int ok); int SNAKECG_EXPORT(core_scene_primal)(sc_int, double *);
+SC_INTERNAL int sc_inertia_factor(sc_int n, const double *M, const double *f, double rel,
+  double *L, double *a, sc_int *t_out); /* scene_small.c: L = chol(M), a = L^-1 f, Z, G, b */
+SC_INTERNAL void sc_scene_z(sc_int n, sc_int m, sc_int t, const double *L, const double *A,
+  double *Z); SC_INTERNAL void sc_scene_gram(sc_int n, sc_int m, const double *Z,
+  const double *g, const double *c, double *G, double *b, double *zero);
 int SNAKECG_EXPORT(core_scene_solve_b)(sc_int ns, sc_int n, sc_int mmax, sc_int nbmax,
   const sc_int *m, const sc_int *nb, const double *M, const double *f, const double *A,
   const double *c, const sc_int *kind, const sc_int *start, const double *par,

@@ -312,69 +312,20 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
   sc_problem p;
   int dep = 0, ok = 0, primal = 0;
   memset(info, 0, sizeof(double) * INFO_WIDTH);
-  for (i = 0; i < n * n; ++i) L[i] = M[i];
-  if (!sc_cholesky(n, L, n, 1e-14)) {
+  if (!sc_inertia_factor(n, M, f, 1e-14, L, a, &t)) { /* (scene_small.c: g = L^-1 f in a) */
     info[INFO_STATUS] = ST_SINGULAR_MASS;
     for (i = 0; i < m; ++i) lam[i] = w[i] = NAN;
     for (i = 0; i < n; ++i) a[i] = NAN;
     return;
   }
-  /* with M = L L^T: g = L^-1 f (in a), Z = L^-1 A^T (n x m: coordinate i's row at Z + i m,
-   * every row of A at once); then G = Z^T Z and b = Z^T g + c, summed over the coordinates
-   * (G's lower triangle, mirrored: symmetric by construction). M's rows from t on are
-   * diagonal (the objects' m, m, I after M_s): there L's row is its diagonal alone and Z's
-   * row A's column over it (the terms left out are zeros) */
-  for (t = n; t > 0; --t) {
-    for (j = 0; j < t - 1 && M[(t - 1) * n + j] == 0.0; ++j) continue;
-    if (j < t - 1) break;
-  }
-  for (i = 0; i < n; ++i) a[i] = f[i];
-  sc_lower_solve(n, L, a);
-  for (i = t; i < n; ++i) {
-    double *restrict zi = Z + i * m;
-    for (j = 0; j < m; ++j) zi[j] = A[j * n + i] / L[i * n + i];
-  }
-  for (i = 0; i < t; ++i) { /* (four rows of Z at a time: a fourth of the loads and stores) */
-    double *restrict zi = Z + i * m;
-    const double *Li = L + i * n;
-    for (j = 0; j < m; ++j) zi[j] = A[j * n + i];
-    for (k = 0; k + 3 < i; k += 4) {
-      const double *restrict z0 = Z + k * m, *restrict z1 = z0 + m, *restrict z2 = z1 + m,
-                   *restrict z3 = z2 + m;
-      for (j = 0; j < m; ++j)
-        zi[j] -= (Li[k] * z0[j] + Li[k + 1] * z1[j]) + (Li[k + 2] * z2[j] + Li[k + 3] * z3[j]);
-    }
-    for (; k < i; ++k)
-      for (j = 0; j < m; ++j) zi[j] -= Li[k] * Z[k * m + j];
-    for (j = 0; j < m; ++j) zi[j] /= Li[i];
-  }
+  sc_scene_z(n, m, t, L, A, Z); /* Z = L^-1 A^T (scene_small.c) */
   p.n = n; p.m = m; p.nb = nb; p.kind = kind; p.start = start; p.par = par;
   p.G = G; p.b = b; p.lam = lam; p.w = w; p.gamma = gam; p.state = state;
   if (from && m > n && sc_primal_tally(-1)) /* the warm start's piece, first in the primal
     where its n unknowns are fewer than the dual's m */
     ok = primal = primal_start(&p, Z, a, c, from, keep, rest, iw2, res, &defect, &dep);
   if (primal) { passes = 1; goto answered; }
-  for (j = 0; j < m; ++j) {
-    b[j] = zero[j] = 0.0;
-    for (k = 0; k <= j; ++k) G[j * m + k] = 0.0;
-  }
-  for (i = 0; i < n; i += 4) {
-    const double *restrict z0 = Z + i * m, *restrict z1 = i + 1 < n ? z0 + m : zero,
-                 *restrict z2 = i + 2 < n ? z0 + 2 * m : zero,
-                 *restrict z3 = i + 3 < n ? z0 + 3 * m : zero;
-    const double a0 = a[i], a1 = i + 1 < n ? a[i + 1] : 0.0, a2 = i + 2 < n ? a[i + 2] : 0.0,
-                 a3 = i + 3 < n ? a[i + 3] : 0.0;
-    for (j = 0; j < m; ++j) {
-      double *restrict gj = G + j * m;
-      const double y0 = z0[j], y1 = z1[j], y2 = z2[j], y3 = z3[j];
-      for (k = 0; k <= j; ++k) gj[k] += (y0 * z0[k] + y1 * z1[k]) + (y2 * z2[k] + y3 * z3[k]);
-      b[j] += (y0 * a0 + y1 * a1) + (y2 * a2 + y3 * a3);
-    }
-  }
-  for (j = 0; j < m; ++j) {
-    for (k = 0; k < j; ++k) G[k * m + j] = G[j * m + k];
-    if (c) b[j] += c[j];
-  }
+  sc_scene_gram(n, m, Z, a, c, G, b, zero); /* G = Z^T Z, b = Z^T g + c */
   scales(&p, G, m + 1, b);
   for (i = 0; i < m; ++i) lam[i] = 0.0;
   for (k = 0; k < nb; ++k) gam[k] = 0.0;
@@ -573,18 +524,18 @@ int SNAKECG_EXPORT(core_scene_solve_s)(sc_int n, sc_int m, sc_int nb, const doub
                                        const double *par, sc_int max_sweeps,
                                        const double *from, double *lam, double *a, double *w,
                                        double *state, double *info) {
-  sc_int nd, ni;
-  double *work;
+  sc_int nd, ni, iws[160];
+  double *work, ws[1024]; /* (a small problem's scratch on the stack: no allocation) */
   sc_int *iwork;
   if (n < 1 || n > 512 || m < 0 || m > 500 || nb < 0 || nb > m) return -2;
   SNAKECG_EXPORT(core_scene_solve_work)(n, m, nb, &nd, &ni);
-  work = (double *)malloc(sizeof(double) * (size_t)nd);
-  iwork = (sc_int *)malloc(sizeof(sc_int) * (size_t)ni);
+  work = nd <= 1024 ? ws : (double *)malloc(sizeof(double) * (size_t)nd);
+  iwork = ni <= 160 ? iws : (sc_int *)malloc(sizeof(sc_int) * (size_t)ni);
   if (work && iwork)
     solve_sample(n, m, nb, M, f, A, c, kind, start, par, max_sweeps, from, lam, a, w, state,
                  info, work, iwork);
-  free(work);
-  free(iwork);
+  if (work != ws) free(work);
+  if (iwork != iws) free(iwork);
   return work && iwork ? 0 : -1;
 }
 

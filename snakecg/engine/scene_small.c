@@ -1,0 +1,149 @@
+/* snakecg's engine: the set-up of a general scene's solve (scene_solve.c) for small problems:
+ * the inertia's factor with the work its diagonal tail does not need left out, and
+ * Z = L^-1 A^T, G = Z^T Z, b = Z^T g + c, with the sizes known to the compiler.
+ *
+ * The inertia I of a general scene is the snake's M_s (dense, its first coordinates) followed
+ * by 3 coordinates per object whose rows are diagonal (m, m, I_o: eq. 12). From the first
+ * row t whose entries before the diagonal are all zero to the end, L = chol(I) is the square
+ * roots of the diagonal alone: the Cholesky runs on the dense t x t block only, and
+ * g = L^-1 f divides the tail by its roots. What is left out are products with L's zeros, so
+ * L and g are bit for bit those of the full factor (sc_cholesky on all n rows) and the pivot
+ * rule is the same: a pivot is not above rel times the largest diagonal entry of all n (the
+ * dense block's sc_cholesky is given rel scaled by that entry over its own largest, which
+ * moves the threshold by at most an ulp). In the paper's scene (9 coordinates, t = 6) this
+ * is a fifth of the full factor's work.
+ *
+ * The factor's loops run over the dense block's t rows, Z's and G's over the m rows inside
+ * loops over the coordinates; for t (and m) up to 8 they are compiled once per size (SC_BY: the
+ * same loops with the size a constant, unrolled, no remainder or alias checks), the arithmetic
+ * and its order unchanged, so their results are bit for bit the general loops'.
+ */
+#include <math.h>
+
+#include "snakecg_layout.h"
+#include "engine.h"
+
+#if defined(__GNUC__)
+#define SC_FLAT static inline __attribute__((always_inline))
+#else
+#define SC_FLAT static inline
+#endif
+
+/* The dense block's factor (t x t, its threshold rel_t) and the tail's square roots, g = L^-1 f
+ * (sc_inertia_factor's; t a constant where the caller's switch makes it one). */
+SC_FLAT int factor(sc_int n, sc_int t, const double *M, const double *f, double rel,
+                   double big, double rel_t, double *L, double *a) {
+  sc_int i, j;
+  for (i = 0; i < t; ++i)
+    for (j = 0; j <= i; ++j) L[i * n + j] = M[i * n + j];
+  if (t > 0 && !sc_cholesky(t, L, n, rel_t)) return 0;
+  for (i = t; i < n; ++i) {
+    const double d = M[i * n + i];
+    if (!(d > rel * big)) return 0;
+    L[i * n + i] = sqrt(d);
+  }
+  for (i = 0; i < n; ++i) { /* g = L^-1 f */
+    double s = f[i];
+    for (j = 0; j < (i < t ? i : 0); ++j) s -= L[i * n + j] * a[j];
+    a[i] = s / L[i * n + i];
+  }
+  return 1;
+}
+
+/* call, with the size m (a variable's name) a constant of the same name where it is 1..8 */
+#define SC_BY(m, call) \
+  switch (m) { \
+    case 1: { const sc_int m = 1; call; } break; case 2: { const sc_int m = 2; call; } break; \
+    case 3: { const sc_int m = 3; call; } break; case 4: { const sc_int m = 4; call; } break; \
+    case 5: { const sc_int m = 5; call; } break; case 6: { const sc_int m = 6; call; } break; \
+    case 7: { const sc_int m = 7; call; } break; case 8: { const sc_int m = 8; call; } break; \
+    default: call; \
+  }
+
+/* L = chol(M) (n x n row-major; only the dense block's lower triangle and the diagonal are
+ * written, the rest of L is left as it was and must not be read), a := L^-1 f, *t_out: the
+ * dense block's size (L's rows from t on are their diagonal). Returns 0 where a pivot is not
+ * above rel times M's largest diagonal entry (or that entry is not positive and finite). */
+SC_INTERNAL int sc_inertia_factor(sc_int n, const double *M, const double *f, double rel,
+                                  double *L, double *a, sc_int *t_out) {
+  sc_int i, j, t;
+  double big = 0.0, big_t = 0.0, rel_t;
+  for (t = n; t > 0; --t) { /* the diagonal tail: rows t.. with zeros before the diagonal */
+    for (j = 0; j < t - 1 && M[(t - 1) * n + j] == 0.0; ++j) continue;
+    if (j < t - 1) break;
+  }
+  for (i = 0; i < n; ++i) {
+    const double d = M[i * n + i];
+    if (d > big) big = d;
+    if (i < t && d > big_t) big_t = d;
+  }
+  if (!(big > 0.0) || !isfinite(big)) return 0;
+  rel_t = big_t == big ? rel : rel * (big / big_t);
+  *t_out = t;
+  SC_BY(t, return factor(n, t, M, f, rel, big, rel_t, L, a))
+  return 0;
+}
+
+/* Z = L^-1 A^T (n x m: coordinate i's row at Z + i m, every row of A at once). L's rows from t
+ * on are their diagonal: there Z's row is A's column over it (the terms left out are zeros). */
+SC_FLAT void z_rows(sc_int n, sc_int m, sc_int t, const double *L, const double *A, double *Z) {
+  sc_int i, j, k;
+  for (i = t; i < n; ++i) {
+    double *restrict zi = Z + i * m;
+    for (j = 0; j < m; ++j) zi[j] = A[j * n + i] / L[i * n + i];
+  }
+  for (i = 0; i < t; ++i) { /* (four rows of Z at a time: a fourth of the loads and stores) */
+    double *restrict zi = Z + i * m;
+    const double *Li = L + i * n;
+    for (j = 0; j < m; ++j) zi[j] = A[j * n + i];
+    for (k = 0; k + 3 < i; k += 4) {
+      const double *restrict z0 = Z + k * m, *restrict z1 = z0 + m, *restrict z2 = z1 + m,
+                   *restrict z3 = z2 + m;
+      for (j = 0; j < m; ++j)
+        zi[j] -= (Li[k] * z0[j] + Li[k + 1] * z1[j]) + (Li[k + 2] * z2[j] + Li[k + 3] * z3[j]);
+    }
+    for (; k < i; ++k)
+      for (j = 0; j < m; ++j) zi[j] -= Li[k] * Z[k * m + j];
+    for (j = 0; j < m; ++j) zi[j] /= Li[i];
+  }
+}
+
+/* G = Z^T Z and b = Z^T g + c (c may be null), summed over the coordinates four at a time
+ * (G's lower triangle, mirrored: symmetric by construction); zero: m doubles of scratch. */
+SC_FLAT void gram(sc_int n, sc_int m, const double *Z, const double *g, const double *c,
+                  double *G, double *b, double *zero) {
+  sc_int i, j, k;
+  for (j = 0; j < m; ++j) {
+    b[j] = zero[j] = 0.0;
+    for (k = 0; k <= j; ++k) G[j * m + k] = 0.0;
+  }
+  for (i = 0; i < n; i += 4) {
+    const double *restrict z0 = Z + i * m, *restrict z1 = i + 1 < n ? z0 + m : zero,
+                 *restrict z2 = i + 2 < n ? z0 + 2 * m : zero,
+                 *restrict z3 = i + 3 < n ? z0 + 3 * m : zero;
+    const double a0 = g[i], a1 = i + 1 < n ? g[i + 1] : 0.0, a2 = i + 2 < n ? g[i + 2] : 0.0,
+                 a3 = i + 3 < n ? g[i + 3] : 0.0;
+    for (j = 0; j < m; ++j) {
+      double *restrict gj = G + j * m;
+      const double y0 = z0[j], y1 = z1[j], y2 = z2[j], y3 = z3[j];
+      for (k = 0; k <= j; ++k) gj[k] += (y0 * z0[k] + y1 * z1[k]) + (y2 * z2[k] + y3 * z3[k]);
+      b[j] += (y0 * a0 + y1 * a1) + (y2 * a2 + y3 * a3);
+    }
+  }
+  for (j = 0; j < m; ++j) {
+    for (k = 0; k < j; ++k) G[k * m + j] = G[j * m + k];
+    if (c) b[j] += c[j];
+  }
+}
+
+/* Z = L^-1 A^T for sc_inertia_factor's L and t (A: m x n row-major). */
+SC_INTERNAL void sc_scene_z(sc_int n, sc_int m, sc_int t, const double *L, const double *A,
+                            double *Z) {
+  SC_BY(m, z_rows(n, m, t, L, A, Z))
+}
+
+/* G = Z^T Z (m x m), b = Z^T g + c (c null: none); zero: m doubles of scratch. */
+SC_INTERNAL void sc_scene_gram(sc_int n, sc_int m, const double *Z, const double *g,
+                               const double *c, double *G, double *b, double *zero) {
+  SC_BY(m, gram(n, m, Z, g, c, G, b, zero))
+}
