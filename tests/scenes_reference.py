@@ -9,6 +9,7 @@ import warnings
 
 import numpy as np
 
+import snakecg
 from snakecg import Robot
 from snakecg.scenes import GeneralScene, Ground, Obstacle, SceneObject
 from snakecg.scenes.solve import BOX, DISC, FREE, SPLIT, UNILATERAL
@@ -69,13 +70,13 @@ def peg_obstacles(model, pegs, q):
     return tuple(out)
 
 
-def dense_problem(res, model, tau, f_obj=None):
-    """M (full), f, A, blocks of the one-sample result's rows, and G, b, a_free in NumPy."""
-    r = res._rows[0]
+def inertia_and_force(model, q, tau, f_obj=None):
+    """The full inertia (M_s, then m, m, I per object: eq. 12) and the generalized force
+    (B tau, the objects' wrenches) of a general scene at q, in NumPy."""
     ns, no = model.n_coordinates, model.scene.n_objects
     n = ns + 3 * no
     M = np.zeros((n, n))
-    M[:ns, :ns] = model.mass_matrix(np.asarray(res._q))
+    M[:ns, :ns] = model.mass_matrix(np.asarray(q))
     for j, o in enumerate(model.scene.objects):
         M[ns + 3 * j:ns + 3 * j + 3, ns + 3 * j:ns + 3 * j + 3] = np.diag(
             [o.mass, o.mass, o.plate_inertia])
@@ -83,6 +84,33 @@ def dense_problem(res, model, tau, f_obj=None):
     f[3:ns] = tau
     if f_obj is not None:
         f[ns:] = np.ravel(f_obj)
+    return M, f
+
+
+def indeterminate_scene(q, joints=10):
+    """The forward benchmark's statically indeterminate scene (benchmarks/bench_scenes.py),
+    built apart: a box against link 1 and a disc against link n + 1 (both rubbing the
+    ground), pegs against four links on alternating sides, Coulomb ground, at q."""
+    robot = Robot(joints=joints)
+    objects = (SceneObject(shape="box", size=(0.1, 0.08), mass=2.0, mu=0.2,
+                           touching={"link": 1, "offset": 0.075, "side": "left"}),
+               SceneObject(shape="disc", radius=0.04, mass=1.0, mu=0.2,
+                           touching={"link": joints + 1, "offset": 0.075, "side": "right"}))
+    ground = Ground(model="coulomb", mu=0.3)
+    P = snakecg.load(GeneralScene(robot, ground=ground, objects=objects)).link_poses(q)
+    pegs = []
+    for k in range(4):
+        x, y, phi = P[1 + (k * (joints - 1)) // 4]
+        n = np.array([-np.sin(phi), np.cos(phi)]) * (1.0 if k % 2 else -1.0)
+        c = np.array([x, y]) + 0.03 * n
+        pegs.append(Obstacle(shape="peg", center=(float(c[0]), float(c[1])), radius=0.03))
+    return GeneralScene(robot, ground=ground, objects=objects, obstacles=tuple(pegs))
+
+
+def dense_problem(res, model, tau, f_obj=None):
+    """M (full), f, A, blocks of the one-sample result's rows, and G, b, a_free in NumPy."""
+    r = res._rows[0]
+    M, f = inertia_and_force(model, res._q, tau, f_obj)
     Minv = np.linalg.inv(M)
     A = r.A
     return dict(M=M, f=f, A=A, G=A @ Minv @ A.T, b=A @ Minv @ f, a_free=Minv @ f, Minv=Minv,

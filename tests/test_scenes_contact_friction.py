@@ -25,7 +25,7 @@ from snakecg.scenes import GeneralScene, Ground, Obstacle, SceneObject
 from snakecg.scenes.description import pair_mu
 from snakecg.scenes.toml_reading import scene_from_data
 
-from scenes_reference import POLYHEDRAL, small_scenes
+from scenes_reference import POLYHEDRAL, inertia_and_force, small_scenes
 from scenes_rows_reference import _point_jacobian, rows_of
 from snakecg.scenes.solve import BOX, FREE, UNILATERAL
 
@@ -44,17 +44,9 @@ def reference_problem(model, q, tau, f_obj=None):
     scene = model.scene
     P, J = model.link_poses(q), model.link_jacobians(q)
     rows, obj_poses = rows_of(scene, model.masses, P, J)
-    ns, no = model.n_coordinates, scene.n_objects
-    n = ns + 3 * no
-    M = np.zeros((n, n))
-    M[:ns, :ns] = model.mass_matrix(q)
-    for j, o in enumerate(scene.objects):
-        M[ns + 3 * j:ns + 3 * j + 3, ns + 3 * j:ns + 3 * j + 3] = np.diag(
-            [o.mass, o.mass, o.plate_inertia])
-    f = np.zeros(n)
-    f[3:ns] = tau
-    if f_obj is not None:
-        f[ns:] = np.ravel(f_obj)
+    ns = model.n_coordinates
+    M, f = inertia_and_force(model, q, tau, f_obj)
+    n = len(f)
     A = [r for r in rows.A]
     blocks = []
     for kind, start, par, label in zip(rows.kind, rows.start, rows.par, rows.labels):

@@ -41,7 +41,7 @@ from snakecg.scenes.stepping import GAP_BAND, _Stepper
 from snakecg.scenes.toml_reading import read_scene
 from snakecg.simulate import serpenoid_controller
 
-from scenes_reference import dense_problem, kkt_violations
+from scenes_reference import dense_problem, indeterminate_scene, kkt_violations
 
 ROOT = Path(__file__).resolve().parents[1]
 H = 1e-3
@@ -379,27 +379,6 @@ def test_wrong_pieces_fall_back_to_the_dual_path(step_problems):
     np.testing.assert_allclose(out["a"], V, rtol=0, atol=1e-9 * scale)
 
 
-def _indeterminate_scene(q, joints=10):
-    """The forward benchmark's scene (tests/test_scenes_solve_indeterminate.py's, built again
-    here): objects against links 1 and n + 1, pegs against four links."""
-    from snakecg.scenes import GeneralScene, Ground, Obstacle, SceneObject
-
-    robot = snakecg.Robot(joints=joints)
-    objects = (SceneObject(shape="box", size=(0.1, 0.08), mass=2.0, mu=0.2,
-                           touching={"link": 1, "offset": 0.075, "side": "left"}),
-               SceneObject(shape="disc", radius=0.04, mass=1.0, mu=0.2,
-                           touching={"link": joints + 1, "offset": 0.075, "side": "right"}))
-    ground = Ground(model="coulomb", mu=0.3)
-    P = snakecg.load(GeneralScene(robot, ground=ground, objects=objects)).link_poses(q)
-    pegs = []
-    for k in range(4):
-        x, y, phi = P[1 + (k * (joints - 1)) // 4]
-        n = np.array([-np.sin(phi), np.cos(phi)]) * (1.0 if k % 2 else -1.0)
-        c = np.array([x, y]) + 0.03 * n
-        pegs.append(Obstacle(shape="peg", center=(float(c[0]), float(c[1])), radius=0.03))
-    return GeneralScene(robot, ground=ground, objects=objects, obstacles=tuple(pegs))
-
-
 def _forward_problem(model, one, prev, tau):
     """The solve's problem of a one-sample forward (M, f, A at rest: no offsets) and the
     pieces of another sample's (prev) as its start."""
@@ -427,7 +406,7 @@ def test_indeterminate_forward_from_a_neighbours_and_its_own_pieces():
     as half the coordinates)."""
     rng = np.random.default_rng(0)
     q = np.r_[0.0, 0.0, 0.0, 0.25 * np.sin(np.arange(10))]
-    model = snakecg.load(_indeterminate_scene(q))
+    model = snakecg.load(indeterminate_scene(q))
     core = model.core
     g = np.linspace(-0.3, 0.3, 36)  # a column of the benchmark's torque map
     taus = [np.r_[t[:2], g[31], t[3:6], g[k], t[7:]]

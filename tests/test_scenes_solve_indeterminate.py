@@ -11,33 +11,17 @@ import numpy as np
 import pytest
 
 import snakecg
-from snakecg.scenes import GeneralScene, Ground, Obstacle, SceneObject
 from snakecg.scenes.model import WARM_CHUNK
 from snakecg.scenes.solve import DISC
 
 from scenes_reference import (approximate_accelerations, dense_problem, enumerate_pieces,
-                              kkt_violations)
+                              indeterminate_scene, kkt_violations)
 
 JOINTS = 10
 
 
 def _scene(q):
-    """The benchmark's scene, built here apart: objects against links 1 and n + 1, pegs
-    against four links on alternating sides, at configuration q."""
-    robot = snakecg.Robot(joints=JOINTS)
-    objects = (SceneObject(shape="box", size=(0.1, 0.08), mass=2.0, mu=0.2,
-                           touching={"link": 1, "offset": 0.075, "side": "left"}),
-               SceneObject(shape="disc", radius=0.04, mass=1.0, mu=0.2,
-                           touching={"link": JOINTS + 1, "offset": 0.075, "side": "right"}))
-    ground = Ground(model="coulomb", mu=0.3)
-    P = snakecg.load(GeneralScene(robot, ground=ground, objects=objects)).link_poses(q)
-    pegs = []
-    for k in range(4):
-        x, y, phi = P[1 + (k * (JOINTS - 1)) // 4]
-        n = np.array([-np.sin(phi), np.cos(phi)]) * (1.0 if k % 2 else -1.0)
-        c = np.array([x, y]) + 0.03 * n
-        pegs.append(Obstacle(shape="peg", center=(float(c[0]), float(c[1])), radius=0.03))
-    return GeneralScene(robot, ground=ground, objects=objects, obstacles=tuple(pegs))
+    return indeterminate_scene(q, JOINTS)
 
 
 @pytest.fixture(scope="module")
