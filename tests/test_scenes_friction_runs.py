@@ -159,6 +159,16 @@ def test_a_disc_hitting_a_wall_obliquely_follows_the_impulse_law(mu, shape, vt):
     np.testing.assert_allclose(v, [vt1, 0.0, om1], atol=1e-9)
     np.testing.assert_allclose(run.events[0].impulses, [pn], rtol=1e-9)
     assert min(run.events[0].impulses) >= 0
+    # the event's friction impulse (along its tangent, on the second body) is the closed
+    # form's p_t on the disc, its state stick where |u| / k is within mu p_n
+    ev = run.summary["events"][0]
+    disc_second = ev["bodies"][0] == ["obstacle 1", "object 1"]
+    assert disc_second or ev["bodies"][0] == ["object 1", "obstacle 1"]
+    on_disc = (1.0 if disc_second else -1.0) * ev["friction_impulses"][0] * \
+        np.asarray(ev["tangents"][0])
+    np.testing.assert_allclose(on_disc, [pt, 0.0], atol=1e-9 * pn)
+    k = 1.0 / m + r * r / inertia
+    assert ev["friction_states"] == ["stick" if abs(vt) / k < mu * pn else "slip"]
     u0, u1 = vt, v[0] + r * v[2]  # the contact point's sliding before and after
     assert m * (v[0] - vt) * u0 < 0  # the friction impulse against the sliding
     assert u1 * u0 >= -1e-12  # it never reverses the sliding
@@ -176,3 +186,7 @@ def test_a_frictionless_impact_keeps_the_tangential_velocity():
     run = model.simulate(np.zeros(4), 0.003, v_obj0=[[1.0, -0.8, 0.0]], dt=1e-3)
     i = int(np.searchsorted(run.t, run.events[0].t))
     np.testing.assert_allclose(np.asarray(run.v_obj)[i, 0], [1.0, 0.0, 0.0], atol=1e-12)
+    # a scene without contact friction: the event's fields as before, none added
+    assert set(run.summary["events"][0]) == {"t", "kind", "bodies", "impulses", "loss",
+                                             "certificate"}
+    assert run.events[0].friction_impulses is None
