@@ -159,6 +159,16 @@ def test_a_disc_hitting_a_wall_obliquely_follows_the_impulse_law(mu, shape, vt):
     np.testing.assert_allclose(v, [vt1, 0.0, om1], atol=1e-9)
     np.testing.assert_allclose(run.events[0].impulses, [pn], rtol=1e-9)
     assert min(run.events[0].impulses) >= 0
+    # the event's friction impulse (along its tangent, on the second body) is the closed
+    # form's p_t on the disc, its state stick where |u| / k is within mu p_n
+    ev = run.summary["events"][0]
+    disc_second = ev["bodies"][0] == ["obstacle 1", "object 1"]
+    assert disc_second or ev["bodies"][0] == ["object 1", "obstacle 1"]
+    on_disc = (1.0 if disc_second else -1.0) * ev["friction_impulses"][0] * \
+        np.asarray(ev["tangents"][0])
+    np.testing.assert_allclose(on_disc, [pt, 0.0], atol=1e-9 * pn)
+    k = 1.0 / m + r * r / inertia
+    assert ev["friction_states"] == ["stick" if abs(vt) / k < mu * pn else "slip"]
     u0, u1 = vt, v[0] + r * v[2]  # the contact point's sliding before and after
     assert m * (v[0] - vt) * u0 < 0  # the friction impulse against the sliding
     assert u1 * u0 >= -1e-12  # it never reverses the sliding
@@ -176,3 +186,109 @@ def test_a_frictionless_impact_keeps_the_tangential_velocity():
     run = model.simulate(np.zeros(4), 0.003, v_obj0=[[1.0, -0.8, 0.0]], dt=1e-3)
     i = int(np.searchsorted(run.t, run.events[0].t))
     np.testing.assert_allclose(np.asarray(run.v_obj)[i, 0], [1.0, 0.0, 0.0], atol=1e-12)
+    # a scene without contact friction: the event's fields as before, none added
+    assert set(run.summary["events"][0]) == {"t", "kind", "bodies", "impulses", "loss",
+                                             "certificate"}
+    assert run.events[0].friction_impulses is None
+
+
+# A step the method does not settle (the sweep's gait at 0.3 rad and 0.5 Hz, mu_contact 3,
+# after 12.7 ms): a peg at a joint touching both links' ends, their normal rows nearly one.
+UNSETTLED_Q = [-0.00044519038603647144, -0.00031368327766602666, -0.009177788961733959,
+    0.017832611205317154, 0.46736833806964895, 0.28943116140828634, -0.29199059179641845,
+    -0.47292600532147394, 0.0031981181929010417, 0.4740930371507265, 0.28452549992791826,
+    -0.2934033686599191, -0.44310798675509355]
+UNSETTLED_V = [0.00017049914485880947, -0.00908007033264329, 0.1211048950687929,
+    -0.13385338534158903, 0.34722814755492215, -0.43081068485146023, -0.38328087708513714,
+    0.4196097947086437, 0.6242169784273578, -0.27864824145070144, -1.333136994796072,
+    0.5288070649493117, 3.4647053354765682]
+UNSETTLED_TAU = [0.26433391359641806, -1.8133396698031317, -1.3354031467235588,
+    0.9539597503215012, 1.8876261184595569, 0.18325773458989472, -1.69282374391222,
+    -1.0156486389364914, 0.6944611363461758, 0.675917270565374]
+
+
+def _coulomb_pieces(st, model, h, tau):
+    """The solutions of one step's Coulomb problem at the rows of ``st`` (a :class:`_Stepper`
+    at the step's start) with every ground disc sliding: the frictional contacts' pieces
+    enumerated (open, stick, slip + or -: w_t > 0 or < 0), each piece's smooth equations
+    solved by SciPy's hybrid Newton (M V = f + A^T lam; open: lam = 0; stick: w_n = w_t = 0;
+    slip: w_n = 0, lam_t = -+mu lam_n; a sliding disc's force -R w / |w|) and kept where
+    Coulomb's inequalities hold: ``[(pieces, V, lam)]``. NumPy apart from the engine's solve
+    (the rows, inertia and gaps are the engine's)."""
+    import itertools
+
+    from scipy.optimize import root
+
+    from snakecg.scenes.stepping import GAP_BAND
+
+    n, M, out = st.n, st.M.copy(), st.out
+    nc, m, nb = int(out[1]), int(out[2]), int(out[3])
+    A, start = st.A[:m + nc].copy(), st.start[:nb].copy()
+    rec = out[10 + 3 * st.no:10 + 3 * st.no + 16 * nc].reshape(nc, 16)
+    mu = rec[:, 13]
+    f = M @ st.V
+    f[:st.ns] += h * (np.r_[0, 0, 0, tau] - model.bias_forces(st.x[:st.ns], st.V[:st.ns]))
+    off = np.zeros(m + nc)
+    for k in range(nc):
+        g = rec[k, 10]
+        off[start[k]] = g / h if abs(g) > GAP_BAND * st.engine.tol else 0.0
+    discs = [(start[b], st.par[b, 0] * h) for b in range(nc, nb)]
+    assert list(st.kind[:nc]) == [1] * nc and list(st.kind[nc:nb]) == [3] * (nb - nc)
+
+    def residual(z, piece):
+        V, lam = z[:n], z[n:]
+        w = A @ V + off
+        r = [M @ V - f - A.T @ lam]
+        for k, p in enumerate(piece):
+            rn, rt = start[k], m + k
+            r.append([lam[rn], lam[rt]] if p == "open" else [w[rn], w[rt]] if p == "stick"
+                     else [w[rn], lam[rt] + (1 if p == "+" else -1) * mu[k] * lam[rn]])
+        r += [lam[s:s + 2] + R * w[s:s + 2] / np.linalg.norm(w[s:s + 2]) for s, R in discs]
+        return np.concatenate(r)
+
+    V0, lam0 = st.V.copy(), np.zeros(m + nc)
+    for s, R in discs:
+        lam0[s:s + 2] = -R * A[s:s + 2] @ V0 / np.linalg.norm(A[s:s + 2] @ V0)
+    found = []
+    for p in itertools.product(("open", "stick", "+", "-"), repeat=nc):
+        z = root(residual, np.r_[V0, lam0], args=(p,), method="hybr", tol=1e-14).x
+        V, lam = z[:n], z[n:]
+        w = A @ V + off
+        F, W = np.abs(lam).max(), np.abs(w).max()
+        ok = np.abs(residual(z, p)).max() <= 1e-12 * max(1.0, np.abs(f).max())
+        for k, x in enumerate(p):
+            rn, rt = start[k], m + k
+            if x == "open":
+                ok &= w[rn] >= -1e-9 * W
+            else:
+                ok &= lam[rn] >= -1e-9 * F
+                ok &= abs(lam[rt]) <= mu[k] * lam[rn] + 1e-9 * F if x == "stick" else \
+                    (1 if x == "+" else -1) * w[rt] >= -1e-9 * W
+        ok &= min(np.linalg.norm(w[s:s + 2]) for s, _ in discs) > 1e-9 * W
+        if ok:
+            found.append((p, V, lam))
+    return found
+
+
+def test_a_step_the_method_does_not_settle_has_a_coulomb_solution():
+    """At mu_contact 3 a peg touching two links' ends with nearly one normal row: the 1 ms
+    step's fixed point and Newton steps do not settle from any of their four starts. The
+    enumeration of the two contacts' pieces (NumPy, SciPy's Newton on each piece, every ground
+    disc sliding) finds that Coulomb's law has a solution there (the first contact sticking,
+    the second slipping): the method's failure is its known limit, not a step without
+    solution. The engine must then refuse the step (not_converged), never accept another
+    answer; once it settles, its velocities must be the enumeration's."""
+    from snakecg.scenes.stepping import _Stepper
+
+    model = _rough_pegs_row(3.0)
+    run = model.simulate(np.array(UNSETTLED_Q), 1e-3, v0=np.array(UNSETTLED_V),
+                         tau=np.array(UNSETTLED_TAU), dt=1e-3)
+    st = _Stepper(model, run.tolerance, np.zeros(0))
+    st.begin(np.array(UNSETTLED_Q), np.zeros(0), np.array(UNSETTLED_V), None)
+    assert int(st.out[1]) == 2
+    found = _coulomb_pieces(st, model, 1e-3, np.array(UNSETTLED_TAU))
+    assert [p for p, _, _ in found] == [("stick", "+")]
+    if run.status == "completed":
+        np.testing.assert_allclose(run.v[-1], found[0][1][:13], atol=1e-7)
+    else:
+        assert run.status == "not_converged" and len(run.t) == 1, run.message

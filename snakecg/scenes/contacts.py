@@ -16,7 +16,7 @@ import numpy as np
 from ..engine.binding import SceneStateCall, address
 from ..errors import BuildError, InputError
 from .description import GeneralScene
-from .packing import BODY_KINDS, CR_W, MAX_ROWS
+from .packing import BODY_KINDS, CR_W, FRICTION_STATES, MAX_ROWS
 
 __all__ = ["Contact", "Rows", "StateRows", "read_rows", "link_ends"]
 
@@ -32,7 +32,10 @@ _OVERLAP, _MORE, _FAILED = 3, 4, 6
 class Contact:
     """A contact between bodies ``a`` and ``b`` (``("link", i)``, ``("object", j)``,
     ``("obstacle", k)``, 0-based), at surface points ``point_a``/``point_b`` with the unit
-    normal from a to b, and its row index."""
+    normal from a to b, and its row index; where the scene has contact friction, the pair's
+    ``mu`` and the last solve's ``friction`` force (an impact's: impulse) along the tangent
+    ``(-n_y, n_x)`` on ``b`` and its state (``stick``, ``slip``, ``open``; ``none`` where the
+    pair has no friction); else ``mu`` 0, ``friction`` 0 and ``friction_state`` None."""
 
     a: tuple
     b: tuple
@@ -41,6 +44,9 @@ class Contact:
     normal: np.ndarray
     gap: float
     row: int
+    mu: float = 0.0
+    friction: float = 0.0
+    friction_state: str | None = None
 
 
 @dataclass
@@ -73,12 +79,15 @@ def read_rows(model, out, A, par, kind, start) -> Rows:
     no = model.scene.n_objects
     nc, m, nb = int(out[RO_NC]), int(out[RO_M]), int(out[RO_NB])
     off = RO_POSE + 3 * no
+    friction = model.packed.friction
     contacts = []
     for c in range(nc):
         r = out[off + CR_W * c: off + CR_W * (c + 1)]
+        fr = (float(r[13]), float(r[14]), FRICTION_STATES[int(r[15])] if r[13] > 0
+              else "none") if friction else ()
         contacts.append(Contact((BODY_KINDS[int(r[0])], int(r[1])),
                                 (BODY_KINDS[int(r[2])], int(r[3])), r[4:6].copy(),
-                                r[6:8].copy(), r[8:10].copy(), float(r[10]), c))
+                                r[6:8].copy(), r[8:10].copy(), float(r[10]), c, *fr))
     return Rows(A[:m].copy(), kind[:nb].tolist(), start[:nb].tolist(),
                 [tuple(p) for p in par[:nb].tolist()], contacts,
                 [("contact", c) for c in range(nc)] + list(model.packed.labels))

@@ -14,8 +14,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from .packing import BODY_KINDS, CR_W, SO_NC, SO_NORM_A, SO_NORM_L, SO_NORM_QDD, SO_OVERLAP, \
-    SO_SOLUTIONS, SO_SR
+from .packing import BODY_KINDS, CR_W, FRICTION_STATES, SO_NC, SO_NORM_A, SO_NORM_L, \
+    SO_NORM_QDD, SO_OVERLAP, SO_SOLUTIONS, SO_SR
 from .solve import BOX, DISC, FREE, INFO, SLIDE, SLIDE_NEG, SLIDE_POS, SPLIT, UNILATERAL, ZERO
 
 __all__ = ["SceneResult", "STATUS_NAMES"]
@@ -29,8 +29,6 @@ _REASONS = {1: "the active-set solve did not converge",
             6: "a generated function of the model failed at this configuration",
             7: "Coulomb friction at the contacts: the fixed point on the tangent rows' bounds "
                "(s <- mu lam_n) did not settle, or its answer failed Coulomb's conditions"}
-#: a contact's friction state (the record's last field)
-_FRICTION_STATES = ("stick", "open", "slip")
 
 
 def state_name(kind: int, code: int) -> str:
@@ -172,7 +170,7 @@ class SceneResult:
             if pk.friction:  # the tangent (-n_y, n_x), the force along it on the second body
                 entry.update(mu=float(r[13]), tangent=[-float(r[9]), float(r[8])],
                              friction=float(r[14]),
-                             friction_state=_FRICTION_STATES[int(r[15])] if r[13] > 0
+                             friction_state=FRICTION_STATES[int(r[15])] if r[13] > 0
                              else "none")
             contacts.append(entry)
         ground = []

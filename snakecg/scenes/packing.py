@@ -32,6 +32,8 @@ GB_WHEEL, GB_COULOMB, GB_SPLIT, GB_OBJECT = 0, 1, 2, 3
 SO_NC, SO_NORM_QDD, SO_NORM_A, SO_NORM_L, SO_SR, SO_OVERLAP, SO_SOLUTIONS, SO_QDD = \
     8, 9, 10, 11, 12, 13, 19, 20
 BODY_KINDS = ("link", "object", "obstacle")
+#: a contact's friction state (its record's last field, scene_friction.c)
+FRICTION_STATES = ("stick", "open", "slip")
 #: contacts read per sample in a first pass (a sample with more is solved again with room for
 #: every pair's)
 CONTACTS_FIRST = 16

@@ -26,7 +26,14 @@ SCHEMA = "snakecg.simulate_scene/1"
 class SceneEvent:
     """An inelastic impact at ``t``: the contacts' ``bodies`` (names), their normal
     ``impulses`` (N s, >= 0), the kinetic energy ``loss`` (J) and the solve's ``certificate``
-    (primal, dual, complementarity residuals, relative)."""
+    (primal, dual, complementarity residuals, relative).
+
+    Where the scene has contact friction (else None, and absent from :meth:`as_dict`), for
+    the same contacts: the ``tangents`` ``(-n_y, n_x)`` (n the normal from the first body to
+    the second), the ``friction_impulses`` (N s) along them on the second body (the first
+    takes the opposite; ``|p_t| <= mu p_n``) and the ``friction_states`` (``stick``: the
+    contact's sliding stopped; ``slip``: ``|p_t| = mu p_n`` against the sliding after;
+    ``none``: the pair has no friction)."""
 
     t: float
     kind: str
@@ -34,10 +41,17 @@ class SceneEvent:
     impulses: list
     loss: float
     certificate: dict
+    tangents: list | None = None
+    friction_impulses: list | None = None
+    friction_states: list | None = None
 
     def as_dict(self) -> dict:
-        return {"t": self.t, "kind": self.kind, "bodies": self.bodies,
-                "impulses": self.impulses, "loss": self.loss, "certificate": self.certificate}
+        out = {"t": self.t, "kind": self.kind, "bodies": self.bodies,
+               "impulses": self.impulses, "loss": self.loss, "certificate": self.certificate}
+        if self.friction_impulses is not None:
+            out.update(tangents=self.tangents, friction_impulses=self.friction_impulses,
+                       friction_states=self.friction_states)
+        return out
 
 
 def _finite(x):
@@ -121,14 +135,20 @@ class SceneRun:
 
     def impact(self, t, loss, contacts, lam, info) -> None:
         """An inelastic impact at ``t``: its kinetic energy ``loss``, the contacts of the
-        state and their impulses ``lam`` (by row), the solve's certificate ``info``."""
-        bodies, imps = [], []
+        state (with the impact's friction impulses where the scene has contact friction)
+        and their normal impulses ``lam`` (by row), the solve's certificate ``info``."""
+        bodies, imps, tangents, ft, fs = [], [], [], [], []
         for c in contacts:
             if lam[c.row] > 0:
                 bodies.append([self._names(*c.a), self._names(*c.b)])
                 imps.append(float(lam[c.row]))
+                tangents.append([-float(c.normal[1]), float(c.normal[0])])
+                ft.append(float(c.friction))
+                fs.append(c.friction_state)
         cert = {k: float(info[INFO.index(k)]) for k in ("primal", "dual", "complementarity")}
-        self.events.append(SceneEvent(float(t), "impact", bodies, imps, float(loss), cert))
+        rough = any(c.friction_state is not None for c in contacts)
+        self.events.append(SceneEvent(float(t), "impact", bodies, imps, float(loss), cert,
+                                      *((tangents, ft, fs) if rough else ())))
 
     def samples(self, rows) -> None:
         """Samples from the engine's run (``snakecg/engine/scene_run.c``): rows of the time,
