@@ -87,6 +87,21 @@ def inertia_and_force(model, q, tau, f_obj=None):
     return M, f
 
 
+def pegs_row():
+    """The obstacle-aided locomotion example (examples/scenes/pegs_row.toml): its scene, its
+    model and its start (the serpenoid's shape at t = 0: 0.5 sin(2 pi k / 5) per joint)."""
+    from pathlib import Path
+
+    from snakecg.scenes import load_scene
+    from snakecg.scenes.toml_reading import read_scene
+
+    scene = read_scene(Path(__file__).resolve().parents[1] / "examples" / "scenes"
+                       / "pegs_row.toml")
+    q0 = np.zeros(13)
+    q0[3:] = 0.5 * np.sin(np.arange(10) * 2 * np.pi / 5)
+    return scene, load_scene(scene), q0
+
+
 def indeterminate_scene(q, joints=10):
     """The forward benchmark's statically indeterminate scene (benchmarks/bench_scenes.py),
     built apart: a box against link 1 and a disc against link n + 1 (both rubbing the

@@ -12,7 +12,6 @@ import ctypes
 import numpy as np
 import pytest
 
-import snakecg
 from snakecg import Robot, Scene
 from snakecg.scenes import load_scene
 
@@ -91,22 +90,3 @@ def test_diagonal_tail_equals_the_general_set_up(core, rng):
         a2, lam2, _ = _solve(core, M[np.ix_(perm, perm)], f[perm], A[:, perm], c)
         assert np.abs(a[perm] - a2).max() <= tol * max(1.0, np.abs(a).max())
         assert np.abs(lam - lam2).max() <= tol * max(1.0, np.abs(lam).max())
-
-
-def test_paper_scene_general_path_against_its_own_path(rng):
-    """300 samples of the paper's scene (one box: a diagonal tail of 3) through the general
-    path, batched and one at a time, against the paper's closed form, to 1e-12."""
-    scene = Scene(Robot(joints=3), scenario="wheels", kappa=100.0, mu=0.1)
-    old, new = snakecg.load(scene), load_scene(scene)
-    Q = np.c_[rng.normal(0.0, 0.3, (300, 3)), rng.uniform(-1.0, 1.0, (300, 3))]
-    T = rng.normal(0.0, 0.05, (300, 3))
-    o, b = old.forward(Q, T), new.forward(Q, T)
-    assert np.all(b.status == 0)
-    scale = max(1.0, np.abs(o.qdd).max())
-    assert np.abs(b.qdd - o.qdd).max() <= 1e-12 * scale
-    assert np.abs(b.a_obj[:, 0] - o.a_obj).max() <= 1e-12 * max(1.0, np.abs(o.a_obj).max())
-    assert np.abs(b.sr - o.sr).max() <= 1e-12
-    for s in range(0, 300, 3):
-        r = new.forward(Q[s], T[s])
-        assert np.abs(r.qdd - o.qdd[s]).max() <= 1e-12 * scale
-        assert abs(r.sr - o.sr[s]) <= 1e-12

@@ -29,21 +29,17 @@ Held to references written here apart:
 from __future__ import annotations
 
 import warnings
-from pathlib import Path
 
 import numpy as np
 import pytest
 
 import snakecg
-from snakecg.scenes import load_scene
 from snakecg.scenes.solve import BOX, DISC, FREE, INFO, UNILATERAL
 from snakecg.scenes.stepping import GAP_BAND, _Stepper
-from snakecg.scenes.toml_reading import read_scene
 from snakecg.simulate import serpenoid_controller
 
-from scenes_reference import dense_problem, indeterminate_scene, kkt_violations
+from scenes_reference import dense_problem, indeterminate_scene, kkt_violations, pegs_row
 
-ROOT = Path(__file__).resolve().parents[1]
 H = 1e-3
 
 
@@ -254,10 +250,7 @@ def _step_problems(model, run, ks):
 
 @pytest.fixture(scope="module")
 def pegs():
-    scene = read_scene(ROOT / "examples" / "scenes" / "pegs_row.toml")
-    model = load_scene(scene)
-    q0 = np.zeros(13)
-    q0[3:] = 0.5 * np.sin(np.arange(10) * 2 * np.pi / 5)
+    scene, model, q0 = pegs_row()
     gait = serpenoid_controller(model, amplitude=0.5, frequency=1.0, phase_lag=2 * np.pi / 5,
                                 kp=10.0, kd=0.3, tau_max=None)
     run = model.simulate(q0, 0.4, tau=gait, dt=H)

@@ -14,7 +14,6 @@ runs (snakecg.scenes.simulate_scene_batch), against independent references:
 
 from __future__ import annotations
 
-from pathlib import Path
 
 import numpy as np
 import pytest
@@ -23,22 +22,18 @@ import snakecg
 from snakecg.errors import InputError
 from snakecg.scenes import (GeneralScene, Ground, Obstacle, SceneObject, load_scene,
                             simulate_scene_batch)
-from snakecg.scenes.toml_reading import read_scene
 from snakecg.simulate import Serpenoid, SerpenoidPD, TorqueTable, serpenoid_controller
 
 from capsule_reference import point_segment
+from scenes_reference import pegs_row
 
-ROOT = Path(__file__).resolve().parents[1]
 FIELDS = ("t", "q", "v", "q_obj", "v_obj", "tau", "min_gap", "n_contacts", "contact_impulse",
           "kinetic_energy", "work_tau", "friction_dissipation", "impact_loss", "contact_work")
 
 
 @pytest.fixture(scope="module")
 def pegs():
-    scene = read_scene(ROOT / "examples" / "scenes" / "pegs_row.toml")
-    model = load_scene(scene)
-    q0 = np.zeros(13)
-    q0[3:] = 0.5 * np.sin(np.arange(10) * 2 * np.pi / 5)
+    scene, model, q0 = pegs_row()
     return scene, model, q0
 
 

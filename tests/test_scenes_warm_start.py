@@ -24,19 +24,17 @@ independent references:
 
 from __future__ import annotations
 
-from pathlib import Path
 
 import numpy as np
 import pytest
 
 import snakecg
 from snakecg.scenes import GeneralScene, Ground, Obstacle, SceneObject, load_scene
-from snakecg.scenes.toml_reading import read_scene
 from snakecg.simulate import serpenoid_controller
 
 from capsule_reference import deepest_overlap
+from scenes_reference import pegs_row
 
-ROOT = Path(__file__).resolve().parents[1]
 COLD = "SNAKECG_SCENE_COLD_START"
 FIELDS = ("t", "q", "v", "q_obj", "v_obj", "kinetic_energy", "work_tau",
           "friction_dissipation", "impact_loss", "min_gap", "n_contacts")
@@ -73,10 +71,7 @@ def _gait(model, tau_max):
 
 @pytest.fixture(scope="module")
 def pegs():
-    scene = read_scene(ROOT / "examples" / "scenes" / "pegs_row.toml")
-    model = load_scene(scene)
-    q0 = np.zeros(13)
-    q0[3:] = 0.5 * np.sin(np.arange(10) * 2 * np.pi / 5)
+    scene, model, q0 = pegs_row()
     return scene, model, q0, _gait(model, None)
 
 
