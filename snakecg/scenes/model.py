@@ -94,6 +94,7 @@ class GeneralSceneModel(RobotModel):
         from .stepping import simulate_scene
 
         return simulate_scene(self, q0, duration, **kwargs)
+
     def _frictionless_contacts(self, what: str) -> None:
         if self.packed.friction:
             raise InputError(f"{what} is not available with contact friction (mu_contact > 0) "
