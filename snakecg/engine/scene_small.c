@@ -109,25 +109,56 @@ SC_FLAT void z_rows(sc_int n, sc_int m, sc_int t, const double *L, const double 
 }
 
 /* G = Z^T Z and b = Z^T g + c (c may be null), summed over the coordinates four at a time
- * (G's lower triangle, mirrored: symmetric by construction); zero: m doubles of scratch. */
+ * (G's lower triangle, mirrored: symmetric by construction). The last n mod 4 coordinates
+ * are one more group with its missing terms left out: they were products of zeros, whose
+ * sum (+0) leaves every partial sum as it was (G and b start at +0 and never become -0), so
+ * the results are bit for bit those of the group padded with zeros. zero: unused. */
 SC_FLAT void gram(sc_int n, sc_int m, const double *Z, const double *g, const double *c,
                   double *G, double *b, double *zero) {
   sc_int i, j, k;
+  const sc_int n4 = n - n % 4;
+  (void)zero;
   for (j = 0; j < m; ++j) {
-    b[j] = zero[j] = 0.0;
+    b[j] = 0.0;
     for (k = 0; k <= j; ++k) G[j * m + k] = 0.0;
   }
-  for (i = 0; i < n; i += 4) {
-    const double *restrict z0 = Z + i * m, *restrict z1 = i + 1 < n ? z0 + m : zero,
-                 *restrict z2 = i + 2 < n ? z0 + 2 * m : zero,
-                 *restrict z3 = i + 3 < n ? z0 + 3 * m : zero;
-    const double a0 = g[i], a1 = i + 1 < n ? g[i + 1] : 0.0, a2 = i + 2 < n ? g[i + 2] : 0.0,
-                 a3 = i + 3 < n ? g[i + 3] : 0.0;
+  for (i = 0; i < n4; i += 4) {
+    const double *restrict z0 = Z + i * m, *restrict z1 = z0 + m, *restrict z2 = z1 + m,
+                 *restrict z3 = z2 + m;
+    const double a0 = g[i], a1 = g[i + 1], a2 = g[i + 2], a3 = g[i + 3];
     for (j = 0; j < m; ++j) {
       double *restrict gj = G + j * m;
       const double y0 = z0[j], y1 = z1[j], y2 = z2[j], y3 = z3[j];
       for (k = 0; k <= j; ++k) gj[k] += (y0 * z0[k] + y1 * z1[k]) + (y2 * z2[k] + y3 * z3[k]);
       b[j] += (y0 * a0 + y1 * a1) + (y2 * a2 + y3 * a3);
+    }
+  }
+  if (n - n4 == 1) {
+    const double *restrict z0 = Z + n4 * m;
+    const double a0 = g[n4];
+    for (j = 0; j < m; ++j) {
+      double *restrict gj = G + j * m;
+      const double y0 = z0[j];
+      for (k = 0; k <= j; ++k) gj[k] += y0 * z0[k];
+      b[j] += y0 * a0;
+    }
+  } else if (n - n4 == 2) {
+    const double *restrict z0 = Z + n4 * m, *restrict z1 = z0 + m;
+    const double a0 = g[n4], a1 = g[n4 + 1];
+    for (j = 0; j < m; ++j) {
+      double *restrict gj = G + j * m;
+      const double y0 = z0[j], y1 = z1[j];
+      for (k = 0; k <= j; ++k) gj[k] += y0 * z0[k] + y1 * z1[k];
+      b[j] += y0 * a0 + y1 * a1;
+    }
+  } else if (n - n4 == 3) {
+    const double *restrict z0 = Z + n4 * m, *restrict z1 = z0 + m, *restrict z2 = z1 + m;
+    const double a0 = g[n4], a1 = g[n4 + 1], a2 = g[n4 + 2];
+    for (j = 0; j < m; ++j) {
+      double *restrict gj = G + j * m;
+      const double y0 = z0[j], y1 = z1[j], y2 = z2[j];
+      for (k = 0; k <= j; ++k) gj[k] += (y0 * z0[k] + y1 * z1[k]) + y2 * z2[k];
+      b[j] += (y0 * a0 + y1 * a1) + y2 * a2;
     }
   }
   for (j = 0; j < m; ++j) {
