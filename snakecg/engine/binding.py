@@ -185,11 +185,12 @@ class Segment(ctypes.Structure):
 
 class SceneCall(ctypes.Structure):
     """The arguments of one ``core_scene_forward`` call, for ``core_scene_forward_call``
-    (scene_rows.c's ``sc_scene_call``)."""
+    (scene_rows.c's ``sc_scene_call``; ``keep``: the engine's scratch kept from the first
+    call to the next, null at first; a call with ``n = 0`` frees it)."""
 
     _fields_ = [("pk", _P), ("n", _I), ("q", _P), ("sq", _I), ("tau", _P), ("st", _I),
                 ("fo", _P), ("sf", _I), ("ccap", _I), ("mcap", _I), ("out", _P), ("A", _P),
-                ("lam", _P), ("w", _P), ("state", _P), ("chunk", _I)]
+                ("lam", _P), ("w", _P), ("state", _P), ("chunk", _I), ("keep", _P)]
 
 
 class SceneStateCall(ctypes.Structure):

@@ -184,8 +184,11 @@ static double core_overlap(const sc_shape *A, const sc_shape *B, double *n) {
       return 0.0;
   for (i = 0; i < m; ++i) {
     const double *a = h[i], *b = h[(i + 1) % m];
-    double e0 = b[0] - a[0], e1 = b[1] - a[1], L = hypot(e0, e1);
-    double c = (a[0] * e1 - a[1] * e0) / L; /* the origin inside this edge's line by c */
+    double e0 = b[0] - a[0], e1 = b[1] - a[1], L, c, x = a[0] * e1 - a[1] * e0; /* x >= 0 */
+    if (depth < 1e100 && depth > 1e-100 && x * x > depth * depth * (e0 * e0 + e1 * e1) * 1.000001)
+      continue; /* c = x / |e| certainly beyond the least so far (by squares: no hypot) */
+    L = hypot(e0, e1);
+    c = x / L; /* the origin inside this edge's line by c */
     if (c < depth) {
       depth = c;
       n[0] = -e1 / L;

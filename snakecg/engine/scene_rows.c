@@ -120,13 +120,9 @@ static sc_int contact_rows(sc_scene_work *sw, const double *P, double *recs, dou
       d = sc_shape_closest(sw->shape + ia, sw->shape + ib, size, tol, tol, t, &count);
       if (d < -tol) {
         double *o = over, idx;
-        o[0] = (double)body_kind(sw, ia, &k);
-        o[1] = (double)k;
+        o[0] = (double)body_kind(sw, ia, &k), o[1] = (double)k;
         idx = (double)body_kind(sw, ib, &k);
-        o[2] = idx;
-        o[3] = (double)k;
-        o[4] = -d;
-        o[5] = tol;
+        o[2] = idx, o[3] = (double)k, o[4] = -d, o[5] = tol;
         return -SS_OVERLAP;
       }
       if (d > tol) continue;
@@ -140,10 +136,8 @@ static sc_int contact_rows(sc_scene_work *sw, const double *P, double *recs, dou
         for (j = 0; j < n; ++j) row[j] = t[k].n[0] * Dx[j] + t[k].n[1] * Dy[j];
         rec = recs + CR_W * nc;
         memset(rec, 0, sizeof(double) * CR_W);
-        rec[0] = (double)body_kind(sw, ia, &kk);
-        rec[1] = (double)kk;
-        rec[2] = (double)body_kind(sw, ib, &kk);
-        rec[3] = (double)kk;
+        rec[0] = (double)body_kind(sw, ia, &kk), rec[1] = (double)kk;
+        rec[2] = (double)body_kind(sw, ib, &kk), rec[3] = (double)kk;
         for (j = 0; j < 2; ++j) {
           rec[4 + j] = t[k].a[j];
           rec[6 + j] = t[k].b[j];
@@ -181,20 +175,19 @@ static sc_int ground_rows(sc_scene_work *sw, sc_int nc) {
       r += 2;
       continue;
     }
-    {
-      double c = sw->cs[2 * b], s = sw->cs[2 * b + 1];
-      for (j = 0; j < SNAKECG_NS; ++j) {
-        const double *J = sw->J + 3 * SNAKECG_NL * j + 3 * b;
-        if (type == GB_WHEEL) {
-          r0[j] = -s * J[0] + c * J[1] + gb[2] * J[2];
-        } else if (type == GB_COULOMB) {
-          r0[j] = J[0];
-          r1[j] = J[1];
-        } else {
+    { /* (one loop per type: the same entries) */
+      const double c = sw->cs[2 * b], s = sw->cs[2 * b + 1], off = gb[2];
+      const double *J = sw->J + 3 * b;
+      if (type == GB_WHEEL)
+        for (j = 0; j < SNAKECG_NS; ++j, J += 3 * SNAKECG_NL)
+          r0[j] = -s * J[0] + c * J[1] + off * J[2];
+      else if (type == GB_COULOMB)
+        for (j = 0; j < SNAKECG_NS; ++j, J += 3 * SNAKECG_NL) r0[j] = J[0], r1[j] = J[1];
+      else
+        for (j = 0; j < SNAKECG_NS; ++j, J += 3 * SNAKECG_NL) {
           r0[j] = c * J[0] + s * J[1];
           r1[j] = -s * J[0] + c * J[1];
         }
-      }
     }
     r += type == GB_WHEEL ? 1 : 2;
   }
@@ -404,21 +397,15 @@ static int work_alloc(sc_scene_work *sw, const double *pk, sc_int ccap, sc_int m
   d += mc * n; /* the rows, then what is written before it is read: not zeroed */
   sw->M = d; d += n * n; /* (the forward's full_inertia) */
   sw->LU = d; d += n * n;
-  sw->f = d; d += n;
-  sw->a = d; d += n;
-  sw->afree = d; d += n;
+  sw->f = d, d += n, sw->a = d, d += n, sw->afree = d, d += n;
   sw->D = d; d += 2 * n;
   sw->par = d; d += 3 * mc;
-  sw->lam = d; d += mc;
-  sw->w = d; d += mc;
-  sw->st = d; d += mc;
+  sw->lam = d, d += mc, sw->w = d, d += mc, sw->st = d, d += mc;
   sw->prev = d; d += 3 * mc; /* (read once a sample has written it: pnb) */
   sw->P = d; d += 3 * SNAKECG_NL; /* (the generated functions' outputs are dense) */
   sw->J = d; d += 3 * SNAKECG_NL * SNAKECG_NS;
   sw->Ms = d; d += SNAKECG_NS * SNAKECG_NS;
-  sw->centre = d; d += 2 * sw->nbody;
-  sw->reach = d; d += sw->nbody;
-  sw->pose = d; d += 3 * sw->no;
+  sw->centre = d, d += 2 * sw->nbody, sw->reach = d, d += sw->nbody, sw->pose = d, d += 3 * sw->no;
   sw->cs = d, sw->T = pk[SP_FRICTION] != 0.0 ? d + 2 * SNAKECG_NL : 0; /* (cs: 2 NL) */
   /* zeros: the generated functions' pointers, the shapes (not what the model's sizes or mcap
    * scale: written before it is read) */
@@ -440,12 +427,11 @@ static int work_alloc(sc_scene_work *sw, const double *pk, sc_int ccap, sc_int m
  * caller splitting a batch on multiples of chunk gets the same answers whatever the split)
  * and for 1, 2, 4 .. 128 samples after starts that gained nothing. Returns 0, -1 out of
  * memory, -2 on sizes out of range, -(3 + i) when an input of sample i is not finite. */
-int SNAKECG_EXPORT(core_scene_forward)(const double *pk, sc_int n, const double *q, sc_int sq,
-                                       const double *tau, sc_int st, const double *fo,
-                                       sc_int sf, sc_int ccap, sc_int mcap, double *out,
-                                       double *A, double *lam, double *w, double *state,
-                                       sc_int chunk) {
-  sc_scene_work sw;
+static int forward(const double *pk, sc_int n, const double *q, sc_int sq, const double *tau,
+                   sc_int st, const double *fo, sc_int sf, sc_int ccap, sc_int mcap,
+                   double *out, double *A, double *lam, double *w, double *state, sc_int chunk,
+                   void **keep) {
+  sc_scene_work local, *sw = &local;
   sc_int i, width, mg = (sc_int)pk[SP_MG] + (pk[SP_FRICTION] != 0) * ccap; /* (tangents) */
   if (ccap < 0 || mcap < ccap + mg || mcap > 500 || SNAKECG_NS + 3 * pk[SP_NO] > 512)
     return -2;
@@ -457,32 +443,48 @@ int SNAKECG_EXPORT(core_scene_forward)(const double *pk, sc_int n, const double 
     for (j = 0; j < no3; ++j) ok &= isfinite(fo[i * sf + j]) != 0;
     if (!ok) return (int)(-3 - (i < 2000000000 ? i : 2000000000));
   }
-  if (work_alloc(&sw, pk, ccap, mcap, 1)) return -1;
-  full_inertia(&sw, sw.M); /* the objects' part (M_s: per sample) */
-  width = SO_QDD + SNAKECG_NS + 7 * sw.no + 3 * sw.ng + CR_W * ccap;
+  if (keep && *keep) sw = (sc_scene_work *)*keep, sw->pnb = -1; /* (as made below: cold) */
+  else if (work_alloc(sw, pk, ccap, mcap, 1)) return -1;
+  else if (full_inertia(sw, sw->M), keep) /* the objects' part (M_s: per sample) */
+    *keep = sw = (sc_scene_work *)memcpy(sw->base, sw, sizeof(*sw));
+  width = SO_QDD + SNAKECG_NS + 7 * sw->no + 3 * sw->ng + CR_W * ccap;
   for (i = 0; i < n; ++i) { /* cold at every chunk-th sample of the call */
-    if (chunk < 2 || i % chunk == 0) sw.cool = sw.backoff = 0;
-    scene_sample(&sw, q + i * sq, tau + i * st, fo + i * sf, SC_SCENE_SWEEPS, out + i * width,
-                 A ? A + i * mcap * sw.n : 0, A ? lam + i * mcap : 0, A ? w + i * mcap : 0,
+    if (chunk < 2 || i % chunk == 0) sw->cool = sw->backoff = 0;
+    scene_sample(sw, q + i * sq, tau + i * st, fo + i * sf, SC_SCENE_SWEEPS, out + i * width,
+                 A ? A + i * mcap * sw->n : 0, A ? lam + i * mcap : 0, A ? w + i * mcap : 0,
                  A ? state + i * mcap : 0, chunk > 1 && i % chunk != 0);
   }
-  work_free(&sw);
+  if (!keep) work_free(sw);
   return 0;
+}
+
+int SNAKECG_EXPORT(core_scene_forward)(const double *pk, sc_int n, const double *q, sc_int sq,
+                                       const double *tau, sc_int st, const double *fo,
+                                       sc_int sf, sc_int ccap, sc_int mcap, double *out,
+                                       double *A, double *lam, double *w, double *state,
+                                       sc_int chunk) {
+  return forward(pk, n, q, sq, tau, st, fo, sf, ccap, mcap, out, A, lam, w, state, chunk, 0);
 }
 
 /* core_scene_forward with its arguments in one struct: the one-sample calls pass a single
  * pointer (a foreign call's cost grows with its argument count; snakecg/engine/binding.py
- * mirrors it as SceneCall). */
+ * mirrors it as SceneCall). keep (null at first): the scratch made at the first call and
+ * reused by the next ones (the same pk, ccap, mcap; the fixed bodies placed, the objects'
+ * inertia set); a call with n = 0 frees it. */
 typedef struct {
   const double *pk; sc_int n; const double *q; sc_int sq;
   const double *tau; sc_int st; const double *fo; sc_int sf, ccap, mcap;
-  double *out, *A, *lam, *w, *state; sc_int chunk;
+  double *out, *A, *lam, *w, *state; sc_int chunk; void *keep;
 } sc_scene_call;
 
-int SNAKECG_EXPORT(core_scene_forward_call)(const sc_scene_call *c) {
-  return SNAKECG_EXPORT(core_scene_forward)(c->pk, c->n, c->q, c->sq, c->tau, c->st, c->fo,
-                                            c->sf, c->ccap, c->mcap, c->out, c->A, c->lam,
-                                            c->w, c->state, c->chunk);
+int SNAKECG_EXPORT(core_scene_forward_call)(sc_scene_call *c) {
+  if (c->n == 0) { /* (the kept scratch freed) */
+    if (c->keep) work_free((sc_scene_work *)c->keep);
+    c->keep = 0;
+    return 0;
+  }
+  return forward(c->pk, c->n, c->q, c->sq, c->tau, c->st, c->fo, c->sf, c->ccap, c->mcap,
+                 c->out, c->A, c->lam, c->w, c->state, c->chunk, &c->keep);
 }
 
 /* ---- the rows at a simulation's state (snakecg/scenes/stepping.py; maps at rest) ---- */
@@ -586,11 +588,8 @@ int SNAKECG_EXPORT(core_scene_gaps)(const sc_scene_state *c) {
                            &count);
       if (found < c->ccap) {
         rec = c->out + 5 * found;
-        rec[0] = (double)body_kind(&sw, ia, &k);
-        rec[1] = (double)k;
-        rec[2] = (double)body_kind(&sw, ib, &k);
-        rec[3] = (double)k;
-        rec[4] = d;
+        rec[0] = (double)body_kind(&sw, ia, &k), rec[1] = (double)k;
+        rec[2] = (double)body_kind(&sw, ib, &k), rec[3] = (double)k, rec[4] = d;
       }
       ++found;
     }

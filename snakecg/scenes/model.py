@@ -7,6 +7,7 @@ calls are)."""
 from __future__ import annotations
 
 import threading
+import weakref
 
 import numpy as np
 
@@ -291,7 +292,8 @@ def _one_sample(model: GeneralSceneModel):
     pass's room: the general way then answers): q, tau and the output row side by side in one
     buffer, the engine's arguments pointing into it, built once; taken under a non-blocking
     lock (a second thread that finds it busy goes the general way). A closure: its fields are
-    its own variables, no lookups per call."""
+    its own variables, no lookups per call. The engine keeps its scratch from the first call
+    to the next (the fixed bodies placed, the objects' inertia set), freed with the closure."""
     pk = model.packed
     ccap = min(CONTACTS_FIRST, pk.contacts_max)
     ns, na = model.n_coordinates, model.n_joints
@@ -325,4 +327,11 @@ def _one_sample(model: GeneralSceneModel):
         return None
 
     one.args = args  # the engine reads it: kept alive with the closure
+    weakref.finalize(one, _free_kept, call, args)  # (the engine's scratch kept in args.keep)
     return one
+
+
+def _free_kept(call, args) -> None:
+    """Free the scratch the engine kept between one-sample calls (a call with n = 0)."""
+    args.n = 0
+    call(address(args))
