@@ -60,6 +60,20 @@ SC_FLAT int factor(sc_int n, sc_int t, const double *M, const double *f, double 
     default: call; \
   }
 
+/* call, with n (a variable's name) a constant of the same name where it is the snake's
+ * coordinates n_s and those of 0, 1 or 2 objects (n_s + 3 per object), and t (the same)
+ * n_s where it is */
+#define SC_BY_N(n, t, call) \
+  if (t == SNAKECG_NS && n == SNAKECG_NS) { \
+    const sc_int n = SNAKECG_NS, t = SNAKECG_NS; (void)t; call; \
+  } else if (t == SNAKECG_NS && n == SNAKECG_NS + 3) { \
+    const sc_int n = SNAKECG_NS + 3, t = SNAKECG_NS; (void)t; call; \
+  } else if (t == SNAKECG_NS && n == SNAKECG_NS + 6) { \
+    const sc_int n = SNAKECG_NS + 6, t = SNAKECG_NS; (void)t; call; \
+  } else { \
+    call; \
+  }
+
 /* L = chol(M) (n x n row-major; only the dense block's lower triangle and the diagonal are
  * written, the rest of L is left as it was and must not be read), a := L^-1 f, *t_out: the
  * dense block's size (L's rows from t on are their diagonal). Returns 0 where a pivot is not
@@ -80,7 +94,7 @@ SC_INTERNAL int sc_inertia_factor(sc_int n, const double *M, const double *f, do
   if (!(big > 0.0) || !isfinite(big)) return 0;
   rel_t = big_t == big ? rel : rel * (big / big_t);
   *t_out = t;
-  SC_BY(t, return factor(n, t, M, f, rel, big, rel_t, L, a))
+  SC_BY_N(n, t, SC_BY(t, return factor(n, t, M, f, rel, big, rel_t, L, a)))
   return 0;
 }
 
@@ -170,11 +184,12 @@ SC_FLAT void gram(sc_int n, sc_int m, const double *Z, const double *g, const do
 /* Z = L^-1 A^T for sc_inertia_factor's L and t (A: m x n row-major). */
 SC_INTERNAL void sc_scene_z(sc_int n, sc_int m, sc_int t, const double *L, const double *A,
                             double *Z) {
-  SC_BY(m, z_rows(n, m, t, L, A, Z))
+  SC_BY_N(n, t, SC_BY(m, z_rows(n, m, t, L, A, Z)))
 }
 
 /* G = Z^T Z (m x m), b = Z^T g + c (c null: none); zero: m doubles of scratch. */
 SC_INTERNAL void sc_scene_gram(sc_int n, sc_int m, const double *Z, const double *g,
                                const double *c, double *G, double *b, double *zero) {
-  SC_BY(m, gram(n, m, Z, g, c, G, b, zero))
+  const sc_int t = SNAKECG_NS; /* (n alone a constant) */
+  SC_BY_N(n, t, SC_BY(m, gram(n, m, Z, g, c, G, b, zero)))
 }

@@ -327,7 +327,8 @@ def _one_sample(model: GeneralSceneModel):
         return None
 
     one.args = args  # the engine reads it: kept alive with the closure
-    weakref.finalize(one, _free_kept, call, args)  # (the engine's scratch kept in args.keep)
+    # the engine's scratch kept in args.keep, freed with the closure
+    one.free = weakref.finalize(one, _free_kept, call, args)
     return one
 
 
