@@ -294,8 +294,9 @@ static void scene_sample(sc_scene_work *sw, const double *q, const double *tau,
   }
   m = ground_rows(sw, nc);
   nb = nc + sw->ng;
-  for (i = 0; i < ns; ++i) /* M_s into the inertia (the objects' part is the call's) */
-    for (j = 0; j < ns; ++j) sw->M[i * n + j] = sw->Ms[i + ns * j];
+  for (i = 0; i < ns; ++i) /* M_s into the inertia (the objects' part is the call's), and into
+    LU for a_free below */
+    for (j = 0; j < ns; ++j) sw->M[i * n + j] = sw->LU[i * ns + j] = sw->Ms[i + ns * j];
   sw->f[0] = sw->f[1] = sw->f[2] = 0.0; /* the force: B tau, the objects' wrenches */
   for (i = 3; i < ns; ++i) sw->f[i] = tau[i - 3];
   for (i = 0; i < 3 * sw->no; ++i) sw->f[ns + i] = fo[i];
@@ -308,8 +309,6 @@ static void scene_sample(sc_scene_work *sw, const double *q, const double *tau,
                     out + SO_INFO, out + SO_SOLUTIONS); /* (T null: core_scene_solve_s's) */
   /* a_free = M^-1 f (partial pivoting, as numpy.linalg.solve; block by block, which is the
    * same elimination on a block-diagonal M) */
-  for (i = 0; i < ns; ++i)
-    for (j = 0; j < ns; ++j) sw->LU[i * ns + j] = sw->M[i * n + j];
   for (i = 0, j = sc_lu_factor(ns, sw->LU, ns, sw->piv); i < n; ++i) {
     sw->afree[i] = i < ns ? sw->f[i] : sw->f[i] / sw->M[i * n + i];
     j &= i < ns || sw->M[i * n + i] != 0.0;
