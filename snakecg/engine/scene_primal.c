@@ -24,6 +24,12 @@
 #include "snakecg_layout.h"
 #include "engine.h"
 
+#if defined(__GNUC__) /* (inlined where the caller makes the size a constant) */
+#define PRIMAL_FLAT static inline __attribute__((always_inline))
+#else
+#define PRIMAL_FLAT static inline
+#endif
+
 #define PRIMAL_STEPS 6 /* Newton steps before the dual path takes over */
 #define PRIMAL_DEP 1e-8 /* held rows taken as dependent below this pivot ratio (dual: 1e-10) */
 
@@ -70,12 +76,12 @@ int SNAKECG_EXPORT(core_scene_primal)(sc_int mode, double *counts) {
 
 /* Scratch (doubles) of sc_primal_piece for n coordinates and m rows. */
 SC_INTERNAL sc_int sc_primal_work(sc_int n, sc_int m) {
-  return n * n + 2 * n * m + m * m + 8 * n + 6 * m;
+  return n * n + 3 * n * m + m * m + 8 * n + 6 * m;
 }
 
 /* w_i = Z_i^T y + c_i of the sliding discs' rows (Zg: their columns first, n x nc; cg: their
  * offsets), and the objective's nonsmooth part sum s_i |w_i| (s: their radii). */
-static double sliding(sc_int n, sc_int nc, sc_int ns, const double *s, const double *Zg,
+PRIMAL_FLAT double sliding(sc_int n, sc_int nc, sc_int ns, const double *s, const double *Zg,
                       const double *cg, const double *y, double *restrict ws) {
   sc_int i, j;
   double v = 0.0;
@@ -89,9 +95,9 @@ static double sliding(sc_int n, sc_int nc, sc_int ns, const double *s, const dou
 }
 
 /* w = Z^T (g + Z lam) + c, every row (y: n scratch) */
-static void every_w(sc_problem *p, const double *Z, const double *g, const double *c,
-                    double *y) {
-  const sc_int n = p->n, m = p->m;
+PRIMAL_FLAT void every_w(sc_int n, sc_problem *p, const double *Z, const double *g,
+                         const double *c, double *y) {
+  const sc_int m = p->m;
   sc_int i, j;
   for (i = 0; i < n; ++i) {
     const double *zi = Z + i * m;
@@ -144,12 +150,13 @@ static sc_int face_rank(sc_problem *p, const double *Z, const sc_int *F, sc_int 
  * solved with unique forces, 2 with the face's minimum-norm ones (def: the held rows' rank
  * defect; work's first n: g + Z lam), 0 when left to the dual path (p->lam, p->w then
  * undefined). */
-SC_INTERNAL int sc_primal_piece(sc_problem *p, const double *Z, const double *g,
-                                const double *c, double *work, sc_int *iwork, sc_int *def) {
-  const sc_int n = p->n, m = p->m, nb = p->nb;
+PRIMAL_FLAT int piece(sc_int n, sc_problem *p, const double *Z, const double *g,
+                      const double *c, double *work, sc_int *iwork, sc_int *def) {
+  const sc_int m = p->m, nb = p->nb;
   double *R = work, *Y = R + n * n, *S = Y + n * m, *gF = S + m * m, *y = gF + n,
          *grad = y + n, *q = grad + n, *dy = q + n, *yt = dy + n, *t = yt + n, *lh = t + n,
-         *ws = lh + m, *rad = ws + m, *wt = rad + m, *bh = wt + m, *cg = bh + m, *Zg = cg + m;
+         *ws = lh + m, *rad = ws + m, *wt = rad + m, *bh = wt + m, *cg = bh + m, *Zg = cg + m,
+         *Zc = Zg + n * m;
   sc_int *hr = iwork, *sl = hr + m, *perm = sl + m, h = 0, ns = 0, i, j, k, it, rank = 0;
   double ysc, v = 0.0, big, prev = INFINITY;
   int ok = 0, dep = 0, again = 0;
@@ -178,7 +185,8 @@ SC_INTERNAL int sc_primal_piece(sc_problem *p, const double *Z, const double *g,
     }
   }
   /* the start: y = g_F + Z (lam_H, lam_S) at the caller's forces; the piece's columns of Z
-   * gathered (Zg, n x nc: the sliding discs' pairs, then the held rows) */
+   * gathered (Zg, n x nc: the sliding discs' pairs, then the held rows; Zc, nc x n: the same
+   * transposed, each column contiguous for the loops over the coordinates) */
   nc = 2 * ns + h;
   for (j = 0; j < 2 * ns; ++j) cg[j] = c ? c[sl[j / 2] + j % 2] : 0.0;
   for (j = 0; j < h; ++j) cg[2 * ns + j] = c ? c[hr[j]] : 0.0;
@@ -196,38 +204,46 @@ SC_INTERNAL int sc_primal_piece(sc_problem *p, const double *Z, const double *g,
     }
     y[i] = s;
   }
+  for (j = 0; j < nc; ++j)
+    for (i = 0; i < n; ++i) Zc[j * n + i] = Zg[i * nc + j];
   ysc = sqrt(p->fscale * p->wscale);
   for (it = 0; it < PRIMAL_STEPS; ++it) {
     double step = 0.0, tstep = 1.0, ymax = ysc;
     int feasible = it > 0;
     if (it == 0) v = sliding(n, nc, ns, rad, Zg, cg, y, ws);
-    /* the Hessian I + T T^T (T's column j: sqrt(s_j / |w_j|) v_j, in Y's room) and the
-     * gradient y - g_F + sum s_j Z_j u_j */
+    /* the Hessian I + T T^T (T's column j: sqrt(s_j / |w_j|) v_j, contiguous in Y's room)
+     * and the gradient y - g_F + sum s_j Z_j u_j */
     for (i = 0; i < n; ++i) grad[i] = y[i] - gF[i];
     for (j = 0; j < ns; ++j) {
-      double w0 = ws[2 * j], w1 = ws[2 * j + 1], nw = sqrt(w0 * w0 + w1 * w1), cj;
+      double w0 = ws[2 * j], w1 = ws[2 * j + 1], nw = sqrt(w0 * w0 + w1 * w1), cj, r0, r1;
+      const double *restrict z0 = Zc + 2 * j * n, *restrict z1 = z0 + n;
+      double *restrict tj = Y + j * n, *restrict gr = grad;
       if (!(nw > TOL_ACCEPT * p->wscale)) return 0; /* sliding at rounding's speed */
       w0 /= nw;
       w1 /= nw;
       cj = sqrt(rad[j] / nw);
+      r0 = rad[j] * w0;
+      r1 = rad[j] * w1;
       for (i = 0; i < n; ++i) {
-        const double z0 = Zg[i * nc + 2 * j], z1 = Zg[i * nc + 2 * j + 1];
-        Y[i * ns + j] = cj * (w1 * z0 - w0 * z1); /* Z_j u^perp (up to sign) */
-        grad[i] += rad[j] * (z0 * w0 + z1 * w1);
+        tj[i] = cj * (w1 * z0[i] - w0 * z1[i]); /* Z_j u^perp (up to sign) */
+        gr[i] += z0[i] * r0 + z1[i] * r1;
       }
     }
-    for (i = 0; i < n; ++i) {
-      const double *ti = Y + i * ns;
-      for (k = 0; k <= i; ++k) {
-        const double *tk = Y + k * ns;
-        double s0 = 0.0, s1 = 0.0;
-        for (j = 0; j + 1 < ns; j += 2) {
-          s0 += ti[j] * tk[j];
-          s1 += ti[j + 1] * tk[j + 1];
-        }
-        if (j < ns) s0 += ti[j] * tk[j];
-        R[i * n + k] = (i == k ? 1.0 : 0.0) + (s0 + s1);
+    for (i = 0; i < n; ++i) { /* R's row i: the terms four columns of T at a time (its
+      contiguous part vectorised) */
+      double *restrict ri = R + i * n;
+      for (k = 0; k <= i; ++k) ri[k] = 0.0;
+      for (j = 0; j + 3 < ns; j += 4) {
+        const double *restrict t0 = Y + j * n, *restrict t1 = t0 + n, *restrict t2 = t1 + n,
+                     *restrict t3 = t2 + n;
+        const double a0 = t0[i], a1 = t1[i], a2 = t2[i], a3 = t3[i];
+        for (k = 0; k <= i; ++k) ri[k] += (a0 * t0[k] + a1 * t1[k]) + (a2 * t2[k] + a3 * t3[k]);
       }
+      for (; j < ns; ++j) {
+        const double *restrict t0 = Y + j * n, a0 = t0[i];
+        for (k = 0; k <= i; ++k) ri[k] += a0 * t0[k];
+      }
+      ri[i] += 1.0;
     }
     if (!sc_cholesky(n, R, n, 1e-14)) return 0;
     /* q = R^-1 grad; Y = R^-1 Z_H (column j, held row j's, at Y + j n), lh = Y^T q - w_H
@@ -246,7 +262,7 @@ SC_INTERNAL int sc_primal_piece(sc_problem *p, const double *Z, const double *g,
     for (j = 0; j < h; ++j) {
       double *restrict yj = Y + j * n, u = -cg[2 * ns + j];
       for (i = 0; i < n; ++i) {
-        const double *restrict ri = R + i * n, zij = Zg[i * nc + 2 * ns + j];
+        const double *restrict ri = R + i * n, zij = Zc[(2 * ns + j) * n + i];
         double t0 = zij, t1 = 0.0;
         for (k = 0; k + 1 < i; k += 2) {
           t0 -= ri[k] * yj[k];
@@ -269,10 +285,11 @@ SC_INTERNAL int sc_primal_piece(sc_problem *p, const double *Z, const double *g,
       const double *restrict yj = Y + j * n, l = lh[j];
       for (i = 0; i < n; ++i) dy[i] += yj[i] * l;
     }
-    for (i = n - 1; i >= 0; --i) {
-      double s = dy[i];
-      for (k = i + 1; k < n; ++k) s -= R[k * n + i] * dy[k];
-      dy[i] = s * t[i];
+    for (i = n - 1; i >= 0; --i) { /* (by R's rows: contiguous, vectorised) */
+      const double *restrict ri = R + i * n;
+      double *restrict d = dy, di = dy[i] * t[i];
+      d[i] = di;
+      for (k = 0; k < i; ++k) d[k] -= ri[k] * di;
     }
     for (i = 0; i < n; ++i) {
       step = sc_max(step, fabs(dy[i]));
@@ -317,7 +334,7 @@ SC_INTERNAL int sc_primal_piece(sc_problem *p, const double *Z, const double *g,
     p->lam[sl[j] + 1] = -rad[j] * w1 / nw;
   }
   *def = h - rank;
-  every_w(p, Z, g, c, y);
+  every_w(n, p, Z, g, c, y);
   /* the face: the held rows and every block's without acceleration (sliding at rounding's
    * speed, an open contact closing at none); where its rows are dependent, its forces the
    * minimum-norm ones (sc_min_norm_face's), kept where they are in their sets */
@@ -343,7 +360,15 @@ SC_INTERNAL int sc_primal_piece(sc_problem *p, const double *Z, const double *g,
       p->lam[p->start[k]] = 0.0;
       again = 1;
     }
-  if (again || dep) every_w(p, Z, g, c, y);
+  if (again || dep) every_w(n, p, Z, g, c, y);
   memcpy(work, y, sizeof(double) * (size_t)n); /* (g + Z lam, for the accelerations) */
   return 1 + dep;
+}
+
+/* sc_primal_piece's body, compiled apart for the snake alone (n = SNAKECG_NS coordinates, no
+ * object: the pegs row's 13) with the size a constant: its loops unrolled, no remainders */
+SC_INTERNAL int sc_primal_piece(sc_problem *p, const double *Z, const double *g,
+                                const double *c, double *work, sc_int *iwork, sc_int *def) {
+  if (p->n == SNAKECG_NS) return piece(SNAKECG_NS, p, Z, g, c, work, iwork, def);
+  return piece(p->n, p, Z, g, c, work, iwork, def);
 }
