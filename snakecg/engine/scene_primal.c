@@ -30,7 +30,7 @@
 #define PRIMAL_FLAT static inline
 #endif
 
-#define PRIMAL_STEPS 6 /* Newton steps before the dual path takes over */
+#define PRIMAL_STEPS 12 /* Newton and chord steps before the dual path takes over */
 #define PRIMAL_DEP 1e-8 /* held rows taken as dependent below this pivot ratio (dual: 1e-10) */
 
 /* core_scene_primal's switch (1: the warm start tries the primal piece first) and counts
@@ -159,7 +159,7 @@ PRIMAL_FLAT int piece(sc_int n, sc_problem *p, const double *Z, const double *g,
          *Zc = Zg + n * m;
   sc_int *hr = iwork, *sl = hr + m, *perm = sl + m, h = 0, ns = 0, i, j, k, it, rank = 0;
   double ysc, v = 0.0, big, prev = INFINITY;
-  int ok = 0, dep = 0, again = 0;
+  int ok = 0, dep = 0, again = 0, fresh = 1;
   sc_int nf, nc;
   for (i = 0; i < n; ++i) gF[i] = g[i];
   for (k = 0; k < nb; ++k) { /* the piece: held rows, fixed forces, sliding discs */
@@ -211,10 +211,19 @@ PRIMAL_FLAT int piece(sc_int n, sc_problem *p, const double *Z, const double *g,
     double step = 0.0, tstep = 1.0, ymax = ysc;
     int feasible = it > 0;
     if (it == 0) v = sliding(n, nc, ns, rad, Zg, cg, y, ws);
-    /* the Hessian I + T T^T (T's column j: sqrt(s_j / |w_j|) v_j, contiguous in Y's room)
-     * and the gradient y - g_F + sum s_j Z_j u_j */
+    /* the gradient y - g_F + sum s_j Z_j u_j and (fresh) the Hessian I + T T^T (T's column j:
+     * sqrt(s_j / |w_j|) v_j, contiguous in Y's room) */
     for (i = 0; i < n; ++i) grad[i] = y[i] - gF[i];
-    for (j = 0; j < ns; ++j) {
+    for (j = 0; j < ns && !fresh; ++j) { /* (a chord step: the gradient alone) */
+      double w0 = ws[2 * j], w1 = ws[2 * j + 1], nw = sqrt(w0 * w0 + w1 * w1), r0, r1;
+      const double *restrict z0 = Zc + 2 * j * n, *restrict z1 = z0 + n;
+      double *restrict gr = grad;
+      if (!(nw > TOL_ACCEPT * p->wscale)) return 0;
+      r0 = rad[j] * (w0 / nw);
+      r1 = rad[j] * (w1 / nw);
+      for (i = 0; i < n; ++i) gr[i] += z0[i] * r0 + z1[i] * r1;
+    }
+    for (j = 0; j < ns && fresh; ++j) {
       double w0 = ws[2 * j], w1 = ws[2 * j + 1], nw = sqrt(w0 * w0 + w1 * w1), cj, r0, r1;
       const double *restrict z0 = Zc + 2 * j * n, *restrict z1 = z0 + n;
       double *restrict tj = Y + j * n, *restrict gr = grad;
@@ -229,8 +238,8 @@ PRIMAL_FLAT int piece(sc_int n, sc_problem *p, const double *Z, const double *g,
         gr[i] += z0[i] * r0 + z1[i] * r1;
       }
     }
-    for (i = 0; i < n; ++i) { /* R's row i: the terms four columns of T at a time (its
-      contiguous part vectorised) */
+    for (i = 0; i < n && fresh; ++i) { /* R's row i: the terms four columns of T at a time
+      (its contiguous part vectorised) */
       double *restrict ri = R + i * n;
       for (k = 0; k <= i; ++k) ri[k] = 0.0;
       for (j = 0; j + 3 < ns; j += 4) {
@@ -245,10 +254,12 @@ PRIMAL_FLAT int piece(sc_int n, sc_problem *p, const double *Z, const double *g,
       }
       ri[i] += 1.0;
     }
-    if (!sc_cholesky(n, R, n, 1e-14)) return 0;
-    /* q = R^-1 grad; Y = R^-1 Z_H (column j, held row j's, at Y + j n), lh = Y^T q - w_H
-     * (w_H = Z_H^T y + c_H), S = Y^T Y */
-    for (i = 0; i < n; ++i) t[i] = 1.0 / R[i * n + i]; /* (multiplied: no division chain) */
+    if (fresh) {
+      if (!sc_cholesky(n, R, n, 1e-14)) return 0;
+      for (i = 0; i < n; ++i) t[i] = 1.0 / R[i * n + i]; /* (multiplied: no division chain) */
+    }
+    /* q = R^-1 grad; Y = R^-1 Z_H (column j, held row j's, at Y + j n; a chord step: the
+     * last), lh = Y^T q - w_H (w_H = Z_H^T y + c_H), S = Y^T Y factored */
     for (i = 0; i < n; ++i) {
       const double *restrict ri = R + i * n;
       double s0 = grad[i], s1 = 0.0;
@@ -259,7 +270,13 @@ PRIMAL_FLAT int piece(sc_int n, sc_problem *p, const double *Z, const double *g,
       if (k < i) s0 -= ri[k] * q[k];
       q[i] = (s0 + s1) * t[i];
     }
-    for (j = 0; j < h; ++j) {
+    for (j = 0; j < h && !fresh; ++j) {
+      const double *restrict yj = Y + j * n, *restrict zj = Zc + (2 * ns + j) * n;
+      double u = -cg[2 * ns + j];
+      for (i = 0; i < n; ++i) u += yj[i] * q[i] - zj[i] * y[i];
+      lh[j] = u;
+    }
+    for (j = 0; j < h && fresh; ++j) {
       double *restrict yj = Y + j * n, u = -cg[2 * ns + j];
       for (i = 0; i < n; ++i) {
         const double *restrict ri = R + i * n, zij = Zc[(2 * ns + j) * n + i];
@@ -277,7 +294,8 @@ PRIMAL_FLAT int piece(sc_int n, sc_problem *p, const double *Z, const double *g,
     }
     if (h > 0) {
       for (j = 0; j < h; ++j) bh[j] = lh[j];
-      rank = sc_psd_solve(h, S, h, bh, PRIMAL_DEP, lh, wt, perm); /* (dependent: basic) */
+      if (fresh) rank = sc_psd_solve(h, S, h, bh, PRIMAL_DEP, lh, wt, perm); /* (basic) */
+      else sc_psd_resolve(h, S, h, rank, perm, 1, bh, lh, wt);
     }
     /* dy = R^-T (Y lam_H - q) */
     for (i = 0; i < n; ++i) dy[i] = -q[i];
@@ -313,15 +331,22 @@ PRIMAL_FLAT int piece(sc_int n, sc_problem *p, const double *Z, const double *g,
       memcpy(y, yt, sizeof(double) * (size_t)n);
       v = vt;
     }
-    /* converged where the next step, quadratic in this full one (its constant from the last
-     * two, at least 1), falls below rounding: y and (the Newton pair) lam_H to rounding */
-    if (tstep == 1.0 && step * step * sc_max(1.0, it > 0 ? step / (prev * prev) : 1.0) <= 1e-16) {
+    /* converged where the next step falls below rounding: after a Newton step quadratic in
+     * this full one (its constant from the last two, at least 1), after a chord step this
+     * one times its rate from the last two (at least this one; none after a halved step):
+     * y and (the Newton pair) lam_H to rounding */
+    if (tstep == 1.0 &&
+        step * (fresh ? step * sc_max(1.0, it > 0 ? step / (prev * prev) : 1.0)
+                      : sc_max(isfinite(prev) ? step / prev : 1.0, step)) <= 1e-16) {
       ok = 1;
       break;
     }
     if (it >= 1 && !(step <= 1e-4)) return 0; /* not yet quadratic after two steps (a time
       step's second is 1e-13 to 1e-5 of y): a start too far for the primal to pay (a forward
       neighbour's on the indeterminate scene took 4-10 steps), the dual path's */
+    /* the next step a chord step on this factor (the Hessian, Y and Y^T Y's) where this step
+     * was full and, if a chord step, contracted by a tenth at least; else a Newton step */
+    fresh = !(tstep == 1.0 && (fresh || step <= 0.1 * prev));
     prev = tstep == 1.0 ? step : INFINITY;
   }
   if (!ok) return 0;
