@@ -76,7 +76,7 @@ int SNAKECG_EXPORT(core_scene_primal)(sc_int mode, double *counts) {
 
 /* Scratch (doubles) of sc_primal_piece for n coordinates and m rows. */
 SC_INTERNAL sc_int sc_primal_work(sc_int n, sc_int m) {
-  return n * n + 3 * n * m + m * m + 8 * n + 6 * m;
+  return n * n + 3 * n * m + m * m + 11 * n + 6 * m;
 }
 
 /* w_i = Z_i^T y + c_i of the sliding discs' rows (Zg: their columns first, n x nc; cg: their
@@ -99,11 +99,17 @@ PRIMAL_FLAT void every_w(sc_int n, sc_problem *p, const double *Z, const double 
                          const double *c, double *y) {
   const sc_int m = p->m;
   sc_int i, j;
-  for (i = 0; i < n; ++i) {
-    const double *zi = Z + i * m;
-    double s = g[i];
-    for (j = 0; j < m; ++j) s += zi[j] * p->lam[j];
-    y[i] = s;
+  for (i = 0; i < n; ++i) { /* (four partial sums: four short dependent chains) */
+    const double *restrict zi = Z + i * m, *restrict l = p->lam;
+    double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;
+    for (j = 0; j + 3 < m; j += 4) {
+      s0 += zi[j] * l[j];
+      s1 += zi[j + 1] * l[j + 1];
+      s2 += zi[j + 2] * l[j + 2];
+      s3 += zi[j + 3] * l[j + 3];
+    }
+    for (; j < m; ++j) s0 += zi[j] * l[j];
+    y[i] = g[i] + ((s0 + s1) + (s2 + s3));
   }
   for (j = 0; j < m; ++j) p->w[j] = c ? c[j] : 0.0;
   for (i = 0; i < n; ++i) {
@@ -153,7 +159,7 @@ static sc_int face_rank(sc_problem *p, const double *Z, const sc_int *F, sc_int 
 PRIMAL_FLAT int piece(sc_int n, sc_problem *p, const double *Z, const double *g,
                       const double *c, double *work, sc_int *iwork, sc_int *def) {
   const sc_int m = p->m, nb = p->nb;
-  double *R = work, *Y = R + n * n, *S = Y + n * m, *gF = S + m * m, *y = gF + n,
+  double *R = work, *Y = R + n * n, *S = Y + n * (m + 3), *gF = S + m * m, *y = gF + n,
          *grad = y + n, *q = grad + n, *dy = q + n, *yt = dy + n, *t = yt + n, *lh = t + n,
          *ws = lh + m, *rad = ws + m, *wt = rad + m, *bh = wt + m, *cg = bh + m, *Zg = cg + m,
          *Zc = Zg + n * m;
@@ -238,19 +244,16 @@ PRIMAL_FLAT int piece(sc_int n, sc_problem *p, const double *Z, const double *g,
         gr[i] += z0[i] * r0 + z1[i] * r1;
       }
     }
+    for (j = ns * n; fresh && j < ((ns + 3) / 4) * 4 * n; ++j) Y[j] = 0.0;
     for (i = 0; i < n && fresh; ++i) { /* R's row i: the terms four columns of T at a time
       (its contiguous part vectorised) */
       double *restrict ri = R + i * n;
       for (k = 0; k <= i; ++k) ri[k] = 0.0;
-      for (j = 0; j + 3 < ns; j += 4) {
+      for (j = 0; j < ns; j += 4) { /* (T's columns past ns: zeros) */
         const double *restrict t0 = Y + j * n, *restrict t1 = t0 + n, *restrict t2 = t1 + n,
                      *restrict t3 = t2 + n;
         const double a0 = t0[i], a1 = t1[i], a2 = t2[i], a3 = t3[i];
         for (k = 0; k <= i; ++k) ri[k] += (a0 * t0[k] + a1 * t1[k]) + (a2 * t2[k] + a3 * t3[k]);
-      }
-      for (; j < ns; ++j) {
-        const double *restrict t0 = Y + j * n, a0 = t0[i];
-        for (k = 0; k <= i; ++k) ri[k] += a0 * t0[k];
       }
       ri[i] += 1.0;
     }
