@@ -76,13 +76,15 @@ int SNAKECG_EXPORT(core_scene_primal)(sc_int mode, double *counts) {
 
 /* Scratch (doubles) of sc_primal_piece for n coordinates and m rows. */
 SC_INTERNAL sc_int sc_primal_work(sc_int n, sc_int m) {
-  return n * n + 3 * n * m + m * m + 11 * n + 6 * m;
+  return n * n + 3 * n * m + m * m + 11 * n + 7 * m;
 }
 
 /* w_i = Z_i^T y + c_i of the sliding discs' rows (Zg: their columns first, n x nc; cg: their
- * offsets), and the objective's nonsmooth part sum s_i |w_i| (s: their radii). */
+ * offsets), their norms |w_i| (nws) and the objective's nonsmooth part sum s_i |w_i| (s: their
+ * radii). */
 PRIMAL_FLAT double sliding(sc_int n, sc_int nc, sc_int ns, const double *s, const double *Zg,
-                      const double *cg, const double *y, double *restrict ws) {
+                           const double *cg, const double *y, double *restrict ws,
+                           double *restrict nws) {
   sc_int i, j;
   double v = 0.0;
   for (j = 0; j < 2 * ns; ++j) ws[j] = cg[j];
@@ -90,7 +92,10 @@ PRIMAL_FLAT double sliding(sc_int n, sc_int nc, sc_int ns, const double *s, cons
     const double *restrict zi = Zg + i * nc, yi = y[i];
     for (j = 0; j < 2 * ns; ++j) ws[j] += zi[j] * yi;
   }
-  for (j = 0; j < ns; ++j) v += s[j] * sqrt(ws[2 * j] * ws[2 * j] + ws[2 * j + 1] * ws[2 * j + 1]);
+  for (j = 0; j < ns; ++j) {
+    nws[j] = sqrt(ws[2 * j] * ws[2 * j] + ws[2 * j + 1] * ws[2 * j + 1]);
+    v += s[j] * nws[j];
+  }
   return v;
 }
 
@@ -162,7 +167,7 @@ PRIMAL_FLAT int piece(sc_int n, sc_problem *p, const double *Z, const double *g,
   double *R = work, *Y = R + n * n, *S = Y + n * (m + 3), *gF = S + m * m, *y = gF + n,
          *grad = y + n, *q = grad + n, *dy = q + n, *yt = dy + n, *t = yt + n, *lh = t + n,
          *ws = lh + m, *rad = ws + m, *wt = rad + m, *bh = wt + m, *cg = bh + m, *Zg = cg + m,
-         *Zc = Zg + n * m;
+         *Zc = Zg + n * m, *nws = Zc + n * m;
   sc_int *hr = iwork, *sl = hr + m, *perm = sl + m, h = 0, ns = 0, i, j, k, it, rank = 0;
   double ysc, v = 0.0, big, prev = INFINITY;
   int ok = 0, dep = 0, again = 0, fresh = 1;
@@ -216,12 +221,12 @@ PRIMAL_FLAT int piece(sc_int n, sc_problem *p, const double *Z, const double *g,
   for (it = 0; it < PRIMAL_STEPS; ++it) {
     double step = 0.0, tstep = 1.0, ymax = ysc;
     int feasible = it > 0;
-    if (it == 0) v = sliding(n, nc, ns, rad, Zg, cg, y, ws);
+    if (it == 0) v = sliding(n, nc, ns, rad, Zg, cg, y, ws, nws);
     /* the gradient y - g_F + sum s_j Z_j u_j and (fresh) the Hessian I + T T^T (T's column j:
      * sqrt(s_j / |w_j|) v_j, contiguous in Y's room) */
     for (i = 0; i < n; ++i) grad[i] = y[i] - gF[i];
     for (j = 0; j < ns && !fresh; ++j) { /* (a chord step: the gradient alone) */
-      double w0 = ws[2 * j], w1 = ws[2 * j + 1], nw = sqrt(w0 * w0 + w1 * w1), r0, r1;
+      double w0 = ws[2 * j], w1 = ws[2 * j + 1], nw = nws[j], r0, r1;
       const double *restrict z0 = Zc + 2 * j * n, *restrict z1 = z0 + n;
       double *restrict gr = grad;
       if (!(nw > TOL_ACCEPT * p->wscale)) return 0;
@@ -230,7 +235,7 @@ PRIMAL_FLAT int piece(sc_int n, sc_problem *p, const double *Z, const double *g,
       for (i = 0; i < n; ++i) gr[i] += z0[i] * r0 + z1[i] * r1;
     }
     for (j = 0; j < ns && fresh; ++j) {
-      double w0 = ws[2 * j], w1 = ws[2 * j + 1], nw = sqrt(w0 * w0 + w1 * w1), cj, r0, r1;
+      double w0 = ws[2 * j], w1 = ws[2 * j + 1], nw = nws[j], cj, r0, r1;
       const double *restrict z0 = Zc + 2 * j * n, *restrict z1 = z0 + n;
       double *restrict tj = Y + j * n, *restrict gr = grad;
       if (!(nw > TOL_ACCEPT * p->wscale)) return 0; /* sliding at rounding's speed */
@@ -325,7 +330,7 @@ PRIMAL_FLAT int piece(sc_int n, sc_problem *p, const double *Z, const double *g,
         for (i = 0; i < n; ++i) yt[i] = y[i] + tstep * dy[i];
         d1 = 0.0;
         for (i = 0; i < n; ++i) d1 += (yt[i] - gF[i]) * (yt[i] - gF[i]);
-        vt = sliding(n, nc, ns, rad, Zg, cg, yt, ws);
+        vt = sliding(n, nc, ns, rad, Zg, cg, yt, ws, nws);
         big = 1e-14 * (fabs(0.5 * d0 + v0) + p->fscale * p->wscale);
         if (!feasible || 0.5 * d1 + vt <= 0.5 * d0 + v0 + big || tstep < 1e-3) break;
         tstep *= 0.5;
@@ -356,7 +361,7 @@ PRIMAL_FLAT int piece(sc_int n, sc_problem *p, const double *Z, const double *g,
   /* the forces: held, the multipliers; sliding discs, -s w / |w| at the last point */
   for (j = 0; j < h; ++j) p->lam[hr[j]] = lh[j];
   for (j = 0; j < ns; ++j) {
-    double w0 = ws[2 * j], w1 = ws[2 * j + 1], nw = sqrt(w0 * w0 + w1 * w1);
+    double w0 = ws[2 * j], w1 = ws[2 * j + 1], nw = nws[j];
     if (!(nw > TOL_ACCEPT * p->wscale)) return 0;
     p->lam[sl[j]] = -rad[j] * w0 / nw;
     p->lam[sl[j] + 1] = -rad[j] * w1 / nw;
