@@ -203,20 +203,18 @@ PRIMAL_FLAT int piece(sc_int n, sc_problem *p, const double *Z, const double *g,
   for (j = 0; j < h; ++j) cg[2 * ns + j] = c ? c[hr[j]] : 0.0;
   for (i = 0; i < n; ++i) {
     const double *zi = Z + i * m;
-    double *restrict gi = Zg + i * nc, s = gF[i];
+    double *restrict gi = Zg + i * nc, *restrict ci = Zc + i, s = gF[i];
     for (j = 0; j < ns; ++j) {
-      gi[2 * j] = zi[sl[j]];
-      gi[2 * j + 1] = zi[sl[j] + 1];
+      gi[2 * j] = ci[2 * j * n] = zi[sl[j]];
+      gi[2 * j + 1] = ci[(2 * j + 1) * n] = zi[sl[j] + 1];
       s += gi[2 * j] * p->lam[sl[j]] + gi[2 * j + 1] * p->lam[sl[j] + 1];
     }
     for (j = 0; j < h; ++j) {
-      gi[2 * ns + j] = zi[hr[j]];
+      gi[2 * ns + j] = ci[(2 * ns + j) * n] = zi[hr[j]];
       s += gi[2 * ns + j] * p->lam[hr[j]];
     }
     y[i] = s;
   }
-  for (j = 0; j < nc; ++j)
-    for (i = 0; i < n; ++i) Zc[j * n + i] = Zg[i * nc + j];
   ysc = sqrt(p->fscale * p->wscale);
   for (it = 0; it < PRIMAL_STEPS; ++it) {
     double step = 0.0, tstep = 1.0, ymax = ysc;
