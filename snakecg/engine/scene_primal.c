@@ -10,14 +10,17 @@
  * g_F = g + Z_F lam_F the free motion with the fixed forces (saturated boxes) applied, s_i
  * the disc's radius. Its Hessian I + sum_i (s_i / |w_i|) v_i v_i^T (v_i = Z_i u_i^perp, one
  * rank-one term per sliding disc) is positive definite and its equalities are the held rows
- * alone; Newton on y with them (Cholesky R R^T of the Hessian, the held rows' multipliers by
- * the Schur complement Y^T Y, Y = R^-1 Z_H, |H| unknowns), the step halved while the objective
- * rises, converges quadratically from the caller's forces (y = g + Z lam). Then y = g + Z lam
- * with lam_H the multipliers and lam_i = -s_i w_i / |w_i|: the same forces and the same a as
- * the dual's piece, without G = Z^T Z. What it does not treat it leaves (returns 0) to
- * scene_solve.c's dual path: a sliding split ellipse; held rows dependent (or nearly: pivots
- * of Y^T Y below PRIMAL_DEP of the first); a sliding disc whose sliding |w_i| falls to
- * rounding; no convergence within PRIMAL_STEPS Newton steps. */
+ * alone; a Newton step on y with them (Cholesky R R^T of the Hessian, the held rows'
+ * multipliers by the Schur complement Y^T Y, Y = R^-1 Z_H, |H| unknowns) from the caller's
+ * forces (y = g + Z lam), then chord steps on that factor (the same equations at the new
+ * point, the Hessian of the first: each contracts by about the first step's size, 1e-5 of y
+ * on a pegs step) while each contracts by a tenth at least, else a Newton step again; the
+ * step halved while the objective rises; converged where the next step falls below rounding.
+ * Then y = g + Z lam with lam_H the multipliers and lam_i = -s_i w_i / |w_i|: the same forces
+ * and the same a as the dual's piece, without G = Z^T Z. What it does not treat it leaves
+ * (returns 0) to scene_solve.c's dual path: a sliding split ellipse; held rows dependent (or
+ * nearly: pivots of Y^T Y below PRIMAL_DEP of the first); a sliding disc whose sliding |w_i|
+ * falls to rounding; no convergence within PRIMAL_STEPS steps. */
 #include <math.h>
 #include <string.h>
 
