@@ -10,21 +10,30 @@
  * g_F = g + Z_F lam_F the free motion with the fixed forces (saturated boxes) applied, s_i
  * the disc's radius. Its Hessian I + sum_i (s_i / |w_i|) v_i v_i^T (v_i = Z_i u_i^perp, one
  * rank-one term per sliding disc) is positive definite and its equalities are the held rows
- * alone; Newton on y with them (Cholesky R R^T of the Hessian, the held rows' multipliers by
- * the Schur complement Y^T Y, Y = R^-1 Z_H, |H| unknowns), the step halved while the objective
- * rises, converges quadratically from the caller's forces (y = g + Z lam). Then y = g + Z lam
- * with lam_H the multipliers and lam_i = -s_i w_i / |w_i|: the same forces and the same a as
- * the dual's piece, without G = Z^T Z. What it does not treat it leaves (returns 0) to
- * scene_solve.c's dual path: a sliding split ellipse; held rows dependent (or nearly: pivots
- * of Y^T Y below PRIMAL_DEP of the first); a sliding disc whose sliding |w_i| falls to
- * rounding; no convergence within PRIMAL_STEPS Newton steps. */
+ * alone; a Newton step on y with them (Cholesky R R^T of the Hessian, the held rows'
+ * multipliers by the Schur complement Y^T Y, Y = R^-1 Z_H, |H| unknowns) from the caller's
+ * forces (y = g + Z lam), then chord steps on that factor (the same equations at the new
+ * point, the Hessian of the first: each contracts by about the first step's size, 1e-5 of y
+ * on a pegs step) while each contracts by a tenth at least, else a Newton step again; the
+ * step halved while the objective rises; converged where the next step falls below rounding.
+ * Then y = g + Z lam with lam_H the multipliers and lam_i = -s_i w_i / |w_i|: the same forces
+ * and the same a as the dual's piece, without G = Z^T Z. What it does not treat it leaves
+ * (returns 0) to scene_solve.c's dual path: a sliding split ellipse; held rows dependent (or
+ * nearly: pivots of Y^T Y below PRIMAL_DEP of the first); a sliding disc whose sliding |w_i|
+ * falls to rounding; no convergence within PRIMAL_STEPS steps. */
 #include <math.h>
 #include <string.h>
 
 #include "snakecg_layout.h"
 #include "engine.h"
 
-#define PRIMAL_STEPS 6 /* Newton steps before the dual path takes over */
+#if defined(__GNUC__) /* (inlined where the caller makes the size a constant) */
+#define PRIMAL_FLAT static inline __attribute__((always_inline))
+#else
+#define PRIMAL_FLAT static inline
+#endif
+
+#define PRIMAL_STEPS 12 /* Newton and chord steps before the dual path takes over */
 #define PRIMAL_DEP 1e-8 /* held rows taken as dependent below this pivot ratio (dual: 1e-10) */
 
 /* core_scene_primal's switch (1: the warm start tries the primal piece first) and counts
@@ -70,13 +79,15 @@ int SNAKECG_EXPORT(core_scene_primal)(sc_int mode, double *counts) {
 
 /* Scratch (doubles) of sc_primal_piece for n coordinates and m rows. */
 SC_INTERNAL sc_int sc_primal_work(sc_int n, sc_int m) {
-  return n * n + 2 * n * m + m * m + 8 * n + 6 * m;
+  return n * n + 3 * n * m + m * m + 11 * n + 7 * m;
 }
 
 /* w_i = Z_i^T y + c_i of the sliding discs' rows (Zg: their columns first, n x nc; cg: their
- * offsets), and the objective's nonsmooth part sum s_i |w_i| (s: their radii). */
-static double sliding(sc_int n, sc_int nc, sc_int ns, const double *s, const double *Zg,
-                      const double *cg, const double *y, double *restrict ws) {
+ * offsets), their norms |w_i| (nws) and the objective's nonsmooth part sum s_i |w_i| (s: their
+ * radii). */
+PRIMAL_FLAT double sliding(sc_int n, sc_int nc, sc_int ns, const double *s, const double *Zg,
+                           const double *cg, const double *y, double *restrict ws,
+                           double *restrict nws) {
   sc_int i, j;
   double v = 0.0;
   for (j = 0; j < 2 * ns; ++j) ws[j] = cg[j];
@@ -84,20 +95,29 @@ static double sliding(sc_int n, sc_int nc, sc_int ns, const double *s, const dou
     const double *restrict zi = Zg + i * nc, yi = y[i];
     for (j = 0; j < 2 * ns; ++j) ws[j] += zi[j] * yi;
   }
-  for (j = 0; j < ns; ++j) v += s[j] * sqrt(ws[2 * j] * ws[2 * j] + ws[2 * j + 1] * ws[2 * j + 1]);
+  for (j = 0; j < ns; ++j) {
+    nws[j] = sqrt(ws[2 * j] * ws[2 * j] + ws[2 * j + 1] * ws[2 * j + 1]);
+    v += s[j] * nws[j];
+  }
   return v;
 }
 
 /* w = Z^T (g + Z lam) + c, every row (y: n scratch) */
-static void every_w(sc_problem *p, const double *Z, const double *g, const double *c,
-                    double *y) {
-  const sc_int n = p->n, m = p->m;
+PRIMAL_FLAT void every_w(sc_int n, sc_problem *p, const double *Z, const double *g,
+                         const double *c, double *y) {
+  const sc_int m = p->m;
   sc_int i, j;
-  for (i = 0; i < n; ++i) {
-    const double *zi = Z + i * m;
-    double s = g[i];
-    for (j = 0; j < m; ++j) s += zi[j] * p->lam[j];
-    y[i] = s;
+  for (i = 0; i < n; ++i) { /* (four partial sums: four short dependent chains) */
+    const double *restrict zi = Z + i * m, *restrict l = p->lam;
+    double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;
+    for (j = 0; j + 3 < m; j += 4) {
+      s0 += zi[j] * l[j];
+      s1 += zi[j + 1] * l[j + 1];
+      s2 += zi[j + 2] * l[j + 2];
+      s3 += zi[j + 3] * l[j + 3];
+    }
+    for (; j < m; ++j) s0 += zi[j] * l[j];
+    y[i] = g[i] + ((s0 + s1) + (s2 + s3));
   }
   for (j = 0; j < m; ++j) p->w[j] = c ? c[j] : 0.0;
   for (i = 0; i < n; ++i) {
@@ -144,15 +164,16 @@ static sc_int face_rank(sc_problem *p, const double *Z, const sc_int *F, sc_int 
  * solved with unique forces, 2 with the face's minimum-norm ones (def: the held rows' rank
  * defect; work's first n: g + Z lam), 0 when left to the dual path (p->lam, p->w then
  * undefined). */
-SC_INTERNAL int sc_primal_piece(sc_problem *p, const double *Z, const double *g,
-                                const double *c, double *work, sc_int *iwork, sc_int *def) {
-  const sc_int n = p->n, m = p->m, nb = p->nb;
-  double *R = work, *Y = R + n * n, *S = Y + n * m, *gF = S + m * m, *y = gF + n,
+PRIMAL_FLAT int piece(sc_int n, sc_problem *p, const double *Z, const double *g,
+                      const double *c, double *work, sc_int *iwork, sc_int *def) {
+  const sc_int m = p->m, nb = p->nb;
+  double *R = work, *Y = R + n * n, *S = Y + n * (m + 3), *gF = S + m * m, *y = gF + n,
          *grad = y + n, *q = grad + n, *dy = q + n, *yt = dy + n, *t = yt + n, *lh = t + n,
-         *ws = lh + m, *rad = ws + m, *wt = rad + m, *bh = wt + m, *cg = bh + m, *Zg = cg + m;
+         *ws = lh + m, *rad = ws + m, *wt = rad + m, *bh = wt + m, *cg = bh + m, *Zg = cg + m,
+         *Zc = Zg + n * m, *nws = Zc + n * m;
   sc_int *hr = iwork, *sl = hr + m, *perm = sl + m, h = 0, ns = 0, i, j, k, it, rank = 0;
   double ysc, v = 0.0, big, prev = INFINITY;
-  int ok = 0, dep = 0, again = 0;
+  int ok = 0, dep = 0, again = 0, fresh = 1;
   sc_int nf, nc;
   for (i = 0; i < n; ++i) gF[i] = g[i];
   for (k = 0; k < nb; ++k) { /* the piece: held rows, fixed forces, sliding discs */
@@ -178,20 +199,21 @@ SC_INTERNAL int sc_primal_piece(sc_problem *p, const double *Z, const double *g,
     }
   }
   /* the start: y = g_F + Z (lam_H, lam_S) at the caller's forces; the piece's columns of Z
-   * gathered (Zg, n x nc: the sliding discs' pairs, then the held rows) */
+   * gathered (Zg, n x nc: the sliding discs' pairs, then the held rows; Zc, nc x n: the same
+   * transposed, each column contiguous for the loops over the coordinates) */
   nc = 2 * ns + h;
   for (j = 0; j < 2 * ns; ++j) cg[j] = c ? c[sl[j / 2] + j % 2] : 0.0;
   for (j = 0; j < h; ++j) cg[2 * ns + j] = c ? c[hr[j]] : 0.0;
   for (i = 0; i < n; ++i) {
     const double *zi = Z + i * m;
-    double *restrict gi = Zg + i * nc, s = gF[i];
+    double *restrict gi = Zg + i * nc, *restrict ci = Zc + i, s = gF[i];
     for (j = 0; j < ns; ++j) {
-      gi[2 * j] = zi[sl[j]];
-      gi[2 * j + 1] = zi[sl[j] + 1];
+      gi[2 * j] = ci[2 * j * n] = zi[sl[j]];
+      gi[2 * j + 1] = ci[(2 * j + 1) * n] = zi[sl[j] + 1];
       s += gi[2 * j] * p->lam[sl[j]] + gi[2 * j + 1] * p->lam[sl[j] + 1];
     }
     for (j = 0; j < h; ++j) {
-      gi[2 * ns + j] = zi[hr[j]];
+      gi[2 * ns + j] = ci[(2 * ns + j) * n] = zi[hr[j]];
       s += gi[2 * ns + j] * p->lam[hr[j]];
     }
     y[i] = s;
@@ -200,39 +222,53 @@ SC_INTERNAL int sc_primal_piece(sc_problem *p, const double *Z, const double *g,
   for (it = 0; it < PRIMAL_STEPS; ++it) {
     double step = 0.0, tstep = 1.0, ymax = ysc;
     int feasible = it > 0;
-    if (it == 0) v = sliding(n, nc, ns, rad, Zg, cg, y, ws);
-    /* the Hessian I + T T^T (T's column j: sqrt(s_j / |w_j|) v_j, in Y's room) and the
-     * gradient y - g_F + sum s_j Z_j u_j */
+    if (it == 0) v = sliding(n, nc, ns, rad, Zg, cg, y, ws, nws);
+    /* the gradient y - g_F + sum s_j Z_j u_j and (fresh) the Hessian I + T T^T (T's column j:
+     * sqrt(s_j / |w_j|) v_j, contiguous in Y's room) */
     for (i = 0; i < n; ++i) grad[i] = y[i] - gF[i];
-    for (j = 0; j < ns; ++j) {
-      double w0 = ws[2 * j], w1 = ws[2 * j + 1], nw = sqrt(w0 * w0 + w1 * w1), cj;
+    for (j = 0; j < ns && !fresh; ++j) { /* (a chord step: the gradient alone) */
+      double w0 = ws[2 * j], w1 = ws[2 * j + 1], nw = nws[j], r0, r1;
+      const double *restrict z0 = Zc + 2 * j * n, *restrict z1 = z0 + n;
+      double *restrict gr = grad;
+      if (!(nw > TOL_ACCEPT * p->wscale)) return 0;
+      r0 = rad[j] * (w0 / nw);
+      r1 = rad[j] * (w1 / nw);
+      for (i = 0; i < n; ++i) gr[i] += z0[i] * r0 + z1[i] * r1;
+    }
+    for (j = 0; j < ns && fresh; ++j) {
+      double w0 = ws[2 * j], w1 = ws[2 * j + 1], nw = nws[j], cj, r0, r1;
+      const double *restrict z0 = Zc + 2 * j * n, *restrict z1 = z0 + n;
+      double *restrict tj = Y + j * n, *restrict gr = grad;
       if (!(nw > TOL_ACCEPT * p->wscale)) return 0; /* sliding at rounding's speed */
       w0 /= nw;
       w1 /= nw;
       cj = sqrt(rad[j] / nw);
+      r0 = rad[j] * w0;
+      r1 = rad[j] * w1;
       for (i = 0; i < n; ++i) {
-        const double z0 = Zg[i * nc + 2 * j], z1 = Zg[i * nc + 2 * j + 1];
-        Y[i * ns + j] = cj * (w1 * z0 - w0 * z1); /* Z_j u^perp (up to sign) */
-        grad[i] += rad[j] * (z0 * w0 + z1 * w1);
+        tj[i] = cj * (w1 * z0[i] - w0 * z1[i]); /* Z_j u^perp (up to sign) */
+        gr[i] += z0[i] * r0 + z1[i] * r1;
       }
     }
-    for (i = 0; i < n; ++i) {
-      const double *ti = Y + i * ns;
-      for (k = 0; k <= i; ++k) {
-        const double *tk = Y + k * ns;
-        double s0 = 0.0, s1 = 0.0;
-        for (j = 0; j + 1 < ns; j += 2) {
-          s0 += ti[j] * tk[j];
-          s1 += ti[j + 1] * tk[j + 1];
-        }
-        if (j < ns) s0 += ti[j] * tk[j];
-        R[i * n + k] = (i == k ? 1.0 : 0.0) + (s0 + s1);
+    for (j = ns * n; fresh && j < ((ns + 3) / 4) * 4 * n; ++j) Y[j] = 0.0;
+    for (i = 0; i < n && fresh; ++i) { /* R's row i: the terms four columns of T at a time
+      (its contiguous part vectorised) */
+      double *restrict ri = R + i * n;
+      for (k = 0; k <= i; ++k) ri[k] = 0.0;
+      for (j = 0; j < ns; j += 4) { /* (T's columns past ns: zeros) */
+        const double *restrict t0 = Y + j * n, *restrict t1 = t0 + n, *restrict t2 = t1 + n,
+                     *restrict t3 = t2 + n;
+        const double a0 = t0[i], a1 = t1[i], a2 = t2[i], a3 = t3[i];
+        for (k = 0; k <= i; ++k) ri[k] += (a0 * t0[k] + a1 * t1[k]) + (a2 * t2[k] + a3 * t3[k]);
       }
+      ri[i] += 1.0;
     }
-    if (!sc_cholesky(n, R, n, 1e-14)) return 0;
-    /* q = R^-1 grad; Y = R^-1 Z_H (column j, held row j's, at Y + j n), lh = Y^T q - w_H
-     * (w_H = Z_H^T y + c_H), S = Y^T Y */
-    for (i = 0; i < n; ++i) t[i] = 1.0 / R[i * n + i]; /* (multiplied: no division chain) */
+    if (fresh) {
+      if (!sc_cholesky(n, R, n, 1e-14)) return 0;
+      for (i = 0; i < n; ++i) t[i] = 1.0 / R[i * n + i]; /* (multiplied: no division chain) */
+    }
+    /* q = R^-1 grad; Y = R^-1 Z_H (column j, held row j's, at Y + j n; a chord step: the
+     * last), lh = Y^T q - w_H (w_H = Z_H^T y + c_H), S = Y^T Y factored */
     for (i = 0; i < n; ++i) {
       const double *restrict ri = R + i * n;
       double s0 = grad[i], s1 = 0.0;
@@ -243,10 +279,16 @@ SC_INTERNAL int sc_primal_piece(sc_problem *p, const double *Z, const double *g,
       if (k < i) s0 -= ri[k] * q[k];
       q[i] = (s0 + s1) * t[i];
     }
-    for (j = 0; j < h; ++j) {
+    for (j = 0; j < h && !fresh; ++j) {
+      const double *restrict yj = Y + j * n, *restrict zj = Zc + (2 * ns + j) * n;
+      double u = -cg[2 * ns + j];
+      for (i = 0; i < n; ++i) u += yj[i] * q[i] - zj[i] * y[i];
+      lh[j] = u;
+    }
+    for (j = 0; j < h && fresh; ++j) {
       double *restrict yj = Y + j * n, u = -cg[2 * ns + j];
       for (i = 0; i < n; ++i) {
-        const double *restrict ri = R + i * n, zij = Zg[i * nc + 2 * ns + j];
+        const double *restrict ri = R + i * n, zij = Zc[(2 * ns + j) * n + i];
         double t0 = zij, t1 = 0.0;
         for (k = 0; k + 1 < i; k += 2) {
           t0 -= ri[k] * yj[k];
@@ -261,7 +303,8 @@ SC_INTERNAL int sc_primal_piece(sc_problem *p, const double *Z, const double *g,
     }
     if (h > 0) {
       for (j = 0; j < h; ++j) bh[j] = lh[j];
-      rank = sc_psd_solve(h, S, h, bh, PRIMAL_DEP, lh, wt, perm); /* (dependent: basic) */
+      if (fresh) rank = sc_psd_solve(h, S, h, bh, PRIMAL_DEP, lh, wt, perm); /* (basic) */
+      else sc_psd_resolve(h, S, h, rank, perm, 1, bh, lh, wt);
     }
     /* dy = R^-T (Y lam_H - q) */
     for (i = 0; i < n; ++i) dy[i] = -q[i];
@@ -269,10 +312,11 @@ SC_INTERNAL int sc_primal_piece(sc_problem *p, const double *Z, const double *g,
       const double *restrict yj = Y + j * n, l = lh[j];
       for (i = 0; i < n; ++i) dy[i] += yj[i] * l;
     }
-    for (i = n - 1; i >= 0; --i) {
-      double s = dy[i];
-      for (k = i + 1; k < n; ++k) s -= R[k * n + i] * dy[k];
-      dy[i] = s * t[i];
+    for (i = n - 1; i >= 0; --i) { /* (by R's rows: contiguous, vectorised) */
+      const double *restrict ri = R + i * n;
+      double *restrict d = dy, di = dy[i] * t[i];
+      d[i] = di;
+      for (k = 0; k < i; ++k) d[k] -= ri[k] * di;
     }
     for (i = 0; i < n; ++i) {
       step = sc_max(step, fabs(dy[i]));
@@ -287,7 +331,7 @@ SC_INTERNAL int sc_primal_piece(sc_problem *p, const double *Z, const double *g,
         for (i = 0; i < n; ++i) yt[i] = y[i] + tstep * dy[i];
         d1 = 0.0;
         for (i = 0; i < n; ++i) d1 += (yt[i] - gF[i]) * (yt[i] - gF[i]);
-        vt = sliding(n, nc, ns, rad, Zg, cg, yt, ws);
+        vt = sliding(n, nc, ns, rad, Zg, cg, yt, ws, nws);
         big = 1e-14 * (fabs(0.5 * d0 + v0) + p->fscale * p->wscale);
         if (!feasible || 0.5 * d1 + vt <= 0.5 * d0 + v0 + big || tstep < 1e-3) break;
         tstep *= 0.5;
@@ -296,28 +340,35 @@ SC_INTERNAL int sc_primal_piece(sc_problem *p, const double *Z, const double *g,
       memcpy(y, yt, sizeof(double) * (size_t)n);
       v = vt;
     }
-    /* converged where the next step, quadratic in this full one (its constant from the last
-     * two, at least 1), falls below rounding: y and (the Newton pair) lam_H to rounding */
-    if (tstep == 1.0 && step * step * sc_max(1.0, it > 0 ? step / (prev * prev) : 1.0) <= 1e-16) {
+    /* converged where the next step falls below rounding: after a Newton step quadratic in
+     * this full one (its constant from the last two, at least 1), after a chord step this
+     * one times its rate from the last two (at least this one; none after a halved step):
+     * y and (the Newton pair) lam_H to rounding */
+    if (tstep == 1.0 &&
+        step * (fresh ? step * sc_max(1.0, it > 0 ? step / (prev * prev) : 1.0)
+                      : sc_max(isfinite(prev) ? step / prev : 1.0, step)) <= 1e-16) {
       ok = 1;
       break;
     }
     if (it >= 1 && !(step <= 1e-4)) return 0; /* not yet quadratic after two steps (a time
       step's second is 1e-13 to 1e-5 of y): a start too far for the primal to pay (a forward
       neighbour's on the indeterminate scene took 4-10 steps), the dual path's */
+    /* the next step a chord step on this factor (the Hessian, Y and Y^T Y's) where this step
+     * was full and, if a chord step, contracted by a tenth at least; else a Newton step */
+    fresh = !(tstep == 1.0 && (fresh || step <= 0.1 * prev));
     prev = tstep == 1.0 ? step : INFINITY;
   }
   if (!ok) return 0;
   /* the forces: held, the multipliers; sliding discs, -s w / |w| at the last point */
   for (j = 0; j < h; ++j) p->lam[hr[j]] = lh[j];
   for (j = 0; j < ns; ++j) {
-    double w0 = ws[2 * j], w1 = ws[2 * j + 1], nw = sqrt(w0 * w0 + w1 * w1);
+    double w0 = ws[2 * j], w1 = ws[2 * j + 1], nw = nws[j];
     if (!(nw > TOL_ACCEPT * p->wscale)) return 0;
     p->lam[sl[j]] = -rad[j] * w0 / nw;
     p->lam[sl[j] + 1] = -rad[j] * w1 / nw;
   }
   *def = h - rank;
-  every_w(p, Z, g, c, y);
+  every_w(n, p, Z, g, c, y);
   /* the face: the held rows and every block's without acceleration (sliding at rounding's
    * speed, an open contact closing at none); where its rows are dependent, its forces the
    * minimum-norm ones (sc_min_norm_face's), kept where they are in their sets */
@@ -343,7 +394,15 @@ SC_INTERNAL int sc_primal_piece(sc_problem *p, const double *Z, const double *g,
       p->lam[p->start[k]] = 0.0;
       again = 1;
     }
-  if (again || dep) every_w(p, Z, g, c, y);
+  if (again || dep) every_w(n, p, Z, g, c, y);
   memcpy(work, y, sizeof(double) * (size_t)n); /* (g + Z lam, for the accelerations) */
   return 1 + dep;
+}
+
+/* sc_primal_piece's body, compiled apart for the snake alone (n = SNAKECG_NS coordinates, no
+ * object: the pegs row's 13) with the size a constant: its loops unrolled, no remainders */
+SC_INTERNAL int sc_primal_piece(sc_problem *p, const double *Z, const double *g,
+                                const double *c, double *work, sc_int *iwork, sc_int *def) {
+  if (p->n == SNAKECG_NS) return piece(SNAKECG_NS, p, Z, g, c, work, iwork, def);
+  return piece(p->n, p, Z, g, c, work, iwork, def);
 }
