@@ -26,8 +26,9 @@
 #define ENUM_MAX 4096   /* pieces enumerated for the uniqueness check */
 #define ENUM_TOL 1e-9   /* a piece's solution meets Coulomb's conditions within this */
 #define SAME_TOL 1e-7   /* two solutions are one within this of the forces' scale */
-#define CAND_MAX 400    /* candidates tried */
-#define CAND_NEWTON 40  /* Newton steps on a candidate's slipping bounds */
+#define CAND_MAX 1100   /* candidates tried (every one of up to 5 contacts) */
+#define CAND_NEWTON 40  /* Newton steps on a candidate's slipping contacts' normal forces */
+#define GUIDED_MAX 32   /* active-set passes on the contacts' states */
 
 /* Coulomb's residuals of (lam, w) on the frictional contacts (normal rows rn[j], tangent rows
  * m + j), relative to the scales: res[0] primal (a normal force below 0, a tangent force
@@ -259,9 +260,9 @@ int sc_friction_enumerate(sc_enum *e) {
 
 /* ---- 3. the candidates ------------------------------------------------------------------ */
 /* One candidate's scratch: the frictional contacts list[nf] (contact indices), the base
- * digits d0 and the candidate's dg (0 open, 1 stick, 2 slip with w_t > 0: lam_t = -s, 3 slip
- * with w_t < 0: lam_t = +s), the slipping ones' s, R = mu lam_n - s; two solutions (the
- * present one and a trial) swapped by pointers. */
+ * digits d0 and the candidate's dg (0 open, 1 stick, 2 slip with w_t > 0: lam_t = -mu lam_n,
+ * 3 slip with w_t < 0: lam_t = +mu lam_n), the slipping ones' normal forces s, R their
+ * normal rows' w; two solutions (the present one and a trial) swapped by pointers. */
 typedef struct {
   const sc_fr_prob *p;
   const double *scale, *from;
@@ -271,83 +272,89 @@ typedef struct {
 
 enum { C_LAM = 0, C_A, C_W, C_ST, C_INFO };
 
-/* The candidate's exact solve at the slipping contacts' bounds s into solution `into`: R and
- * *F (the forces' scale); 1 where solved. */
-static int cand_solve(sc_cand *c, const double *s, int into, double *R, double *F) {
+/* The candidate's exact solve at the slipping contacts' normal forces s (their forces
+ * s (n - -+ mu t) applied: Coulomb's slip law exact, whatever the rounding of the solve) into
+ * solution `into`: R the slipping contacts' w_n (A a + c); 1 where solved. */
+static int cand_solve(sc_cand *c, const double *s, int into, double *R) {
   const sc_fr_prob *p = c->p;
+  const sc_int n = p->n;
   double **x = c->sol[into];
   sc_int i, j;
-  memcpy(c->fm, p->f, sizeof(double) * (size_t)p->n);
+  memcpy(c->fm, p->f, sizeof(double) * (size_t)n);
   for (i = 0; i < c->ns; ++i) {
     const sc_int k = c->list[c->slip[i]];
-    const double lt = c->dg[c->slip[i]] == 2 ? -s[i] : s[i], *t = p->A + (p->m + k) * p->n;
-    for (j = 0; j < p->n; ++j) c->fm[j] += lt * t[j];
+    const double lt = (c->dg[c->slip[i]] == 2 ? -p->mu[k] : p->mu[k]) * s[i],
+                 *an = p->A + p->rn[k] * n, *t = p->A + (p->m + k) * n;
+    for (j = 0; j < n; ++j) c->fm[j] += s[i] * an[j] + lt * t[j];
   }
-  if (SNAKECG_EXPORT(core_scene_solve_s)(p->n, p->mt, p->nb + p->nt, p->M, c->fm, p->A, p->c,
+  if (SNAKECG_EXPORT(core_scene_solve_s)(n, p->mt, p->nb + p->nt, p->M, c->fm, p->A, p->c,
                                          p->kind, p->start, p->par, p->sweeps, c->from,
                                          x[C_LAM], x[C_A], x[C_W], x[C_ST], x[C_INFO]) ||
       x[C_INFO][0] != 0.0)
     return 0;
-  *F = sc_max_abs(x[C_LAM], p->mt);
   for (i = 0; i < c->ns; ++i) {
     const sc_int k = c->list[c->slip[i]];
-    x[C_LAM][p->m + k] = c->dg[c->slip[i]] == 2 ? -s[i] : s[i];
-    R[i] = p->mu[k] * x[C_LAM][p->rn[k]] - s[i];
-    *F = fmax(*F, fabs(s[i]));
+    x[C_LAM][p->rn[k]] = s[i];
+    x[C_LAM][p->m + k] = (c->dg[c->slip[i]] == 2 ? -p->mu[k] : p->mu[k]) * s[i];
+    R[i] = sc_dot(p->A + p->rn[k] * n, x[C_A], n) + (p->c ? p->c[p->rn[k]] : 0.0);
   }
   return 1;
 }
 
-/* The candidate dg: its blocks set, Newton on R(s) = 0 (the derivative by differences of
- * exact solves, the step cut in halves until |R|^2 falls), then Coulomb's residuals apart
- * from the accelerations. 1 where accepted (the solution in c->sol[0]). */
+/* The candidate dg: its blocks set, Newton on the slipping contacts' w_n(s) = 0 (affine in s
+ * on a piece of the other blocks: one step; the derivative by differences of exact solves,
+ * the step cut in halves until |w_n|^2 falls), then Coulomb's residuals apart from the
+ * accelerations. 1 where accepted (the solution in c->sol[0]), 0 where not (its w there too),
+ * -1 where its solve failed. */
 static int candidate(sc_cand *c) {
   const sc_fr_prob *p = c->p;
   const sc_int n = p->n, m = p->m, nb = p->nb;
+  const double F = c->scale[0], W = c->scale[1];
   sc_int i, j, k, it;
-  double F = 0.0, F2 = 0.0, r2, res[3];
+  double r2, res[3];
   c->ns = 0;
-  for (i = 0; i < c->nf; ++i) {
+  for (i = 0; i < c->nf; ++i) { /* open: both rows' forces 0; stick: both rows held; slip:
+    the normal force applied (s), both rows' forces 0 in the solve */
     k = c->list[i];
-    p->kind[k] = c->dg[i] == 0 ? K_BOX : K_FREE;
+    p->kind[k] = c->dg[i] == 1 ? K_FREE : K_BOX;
     p->kind[nb + k] = c->dg[i] == 1 ? K_FREE : K_BOX;
     p->par[3 * k] = p->par[3 * (nb + k)] = 0.0;
     if (c->dg[i] >= 2) { /* (s from the last pass's normal force) */
-      c->s[c->ns] = p->mu[k] * fmax(0.0, c->l0[p->rn[k]]);
+      c->s[c->ns] = fmax(0.0, c->l0[p->rn[k]]);
       c->slip[c->ns++] = i;
     }
   }
-  if (!cand_solve(c, c->s, 0, c->R, &F)) return 0;
+  if (!cand_solve(c, c->s, 0, c->R)) return -1;
   for (it = 0; it < CAND_NEWTON && c->ns > 0; ++it) {
     double t = 1.0;
     r2 = 0.0;
     for (i = 0; i < c->ns; ++i) r2 += c->R[i] * c->R[i];
-    if (sqrt(r2) <= FP_TOL * F) break;
+    if (sqrt(r2) <= FP_TOL * W) break;
     for (j = 0; j < c->ns; ++j) { /* the derivative: column j */
       double h = 1e-7 * fmax(fabs(c->s[j]), F);
       memcpy(c->sv, c->s, sizeof(double) * (size_t)c->ns);
       c->sv[j] += h;
-      if (!cand_solve(c, c->sv, 1, c->R2, &F2)) return 0;
+      if (!cand_solve(c, c->sv, 1, c->R2)) break;
       for (i = 0; i < c->ns; ++i) c->D[i * c->ns + j] = (c->R2[i] - c->R[i]) / h;
     }
     for (i = 0; i < c->ns; ++i) c->ds[i] = -c->R[i];
-    if (!sc_lu_factor(c->ns, c->D, c->ns, c->piv)) return 0;
+    if (j < c->ns || !sc_lu_factor(c->ns, c->D, c->ns, c->piv)) break; /* (or w_n does not
+      move with s) */
     sc_lu_solve(c->ns, c->D, c->ns, c->piv, c->ds);
     for (k = 0; k < 30; ++k, t *= 0.5) {
       double q2 = 0.0;
       for (i = 0; i < c->ns; ++i) c->sv[i] = c->s[i] + t * c->ds[i];
-      if (!cand_solve(c, c->sv, 1, c->R2, &F2)) continue;
+      if (!cand_solve(c, c->sv, 1, c->R2)) continue;
       for (i = 0; i < c->ns; ++i) q2 += c->R2[i] * c->R2[i];
       if (q2 <= (1.0 - 1e-4 * t) * r2) break;
     }
-    if (k == 30) break; /* no cut lowers |R|: the point as it is (checked below) */
+    if (k == 30) break; /* no cut lowers |w_n|: the point as it is (checked below) */
     for (i = 0; i < 5; ++i) { /* the trial is the present solution */
       double *tmp = c->sol[0][i];
       c->sol[0][i] = c->sol[1][i], c->sol[1][i] = tmp;
     }
     memcpy(c->s, c->sv, sizeof(double) * (size_t)c->ns);
     memcpy(c->R, c->R2, sizeof(double) * (size_t)c->ns);
-    F = F2;
   }
   { /* Coulomb's residuals apart: w = A a + c on every row */
     double *lam = c->sol[0][C_LAM], *a = c->sol[0][C_A], *w = c->sol[0][C_W],
@@ -359,16 +366,63 @@ static int candidate(sc_cand *c) {
   }
 }
 
+/* An active-set pass on the contacts' states: each contact of the rejected candidate in
+ * c->sol[0] whose conditions fail switched as they ask (an open one that closes: stick, or
+ * slip the way it slides; a sticking or slipping one pulled: open; a sticking one outside its
+ * cone: slip against its force; a slipping one sliding back: stick); `one`: only the one that
+ * fails most (relative to the scales). 1 where any did. */
+static int switch_states(sc_cand *c, int one) {
+  const sc_fr_prob *p = c->p;
+  const double *lam = c->sol[0][C_LAM], *w = c->sol[0][C_W], F = c->scale[0], W = c->scale[1];
+  sc_int i, moved = 0, worst = -1, to = 0;
+  double most = 0.0;
+  for (i = 0; i < c->nf; ++i) {
+    const sc_int k = c->list[i], d = c->dg[i];
+    const double ln = lam[p->rn[k]], lt = lam[p->m + k], wn = w[p->rn[k]], wt = w[p->m + k],
+                 b = p->mu[k] * ln;
+    sc_int e = d;
+    double by = 0.0;
+    if (d == 0) {
+      if (wn < -TOL_ACCEPT * W) e = wt > TOL_ACCEPT * W ? 2 : wt < -TOL_ACCEPT * W ? 3 : 1;
+      by = -wn / W;
+    } else if (ln < -TOL_ACCEPT * F) {
+      e = 0, by = -ln / F;
+    } else if (d == 1) {
+      e = lt > b + TOL_ACCEPT * F ? 3 : lt < -b - TOL_ACCEPT * F ? 2 : 1;
+      by = (fabs(lt) - b) / F;
+    } else if ((d == 2 && wt < -TOL_ACCEPT * W) || (d == 3 && wt > TOL_ACCEPT * W)) {
+      e = 1, by = fabs(wt) / W;
+    }
+    if (e != d && by > most) most = by, worst = i, to = e;
+    if (e != d && !one) c->dg[i] = e, ++moved;
+  }
+  if (one && worst >= 0) c->dg[worst] = to, ++moved;
+  return moved > 0;
+}
+
+/* The candidate's code (base 4), and whether it is among the first `count` of seen. */
+static sc_int code_of(const sc_cand *c) {
+  sc_int i, code = 0;
+  for (i = c->nf - 1; i >= 0; --i) code = 4 * code + c->dg[i];
+  return code;
+}
+static int seen_in(const sc_int *seen, sc_int count, sc_int code) {
+  sc_int i;
+  for (i = 0; i < count; ++i)
+    if (seen[i] == code) return 1;
+  return 0;
+}
+
 int sc_friction_states(const sc_fr_prob *p, const double *scale, const double *from,
                        double *lam, double *a, double *w, double *st, double *info) {
   const sc_int n = p->n, mt = p->mt, nb = p->nb, nt = p->nt, nbt = nb + nt;
-  sc_int i, j, k, dist, tried = 0, *iw, *kind0, *pos;
+  sc_int i, j, k, dist, tried = 0, *iw, *kind0, *pos, *seen, nseen = 0, *prev;
   double *d, *par0;
   int ok = 0;
   sc_cand c;
   d = (double *)malloc(sizeof(double) * (size_t)(3 * nbt + n + 6 * nt + nt * nt + mt +
                                                  2 * (2 * mt + n + nbt + 8)));
-  iw = (sc_int *)malloc(sizeof(sc_int) * (size_t)(nbt + 6 * nt + 1));
+  iw = (sc_int *)malloc(sizeof(sc_int) * (size_t)(nbt + 7 * nt + GUIDED_MAX + 1));
   if (!d || !iw) {
     free(d), free(iw);
     return 0;
@@ -381,7 +435,7 @@ int sc_friction_states(const sc_fr_prob *p, const double *scale, const double *f
     c.sol[i][C_ST] = q + 2 * mt + n, c.sol[i][C_INFO] = q + 2 * mt + n + nbt;
   }
   kind0 = iw, c.list = kind0 + nbt, c.d0 = c.list + nt, c.dg = c.d0 + nt, c.slip = c.dg + nt;
-  c.piv = c.slip + nt, pos = c.piv + nt;
+  c.piv = c.slip + nt, pos = c.piv + nt, prev = pos + nt, seen = prev + nt;
   c.p = p, c.scale = scale, c.from = from, c.nf = 0;
   memcpy(kind0, p->kind, sizeof(sc_int) * (size_t)nbt);
   memcpy(par0, p->par, sizeof(double) * (size_t)(3 * nbt));
@@ -400,7 +454,22 @@ int sc_friction_states(const sc_fr_prob *p, const double *scale, const double *f
       c.list[c.nf] = k;
       c.d0[c.nf++] = !(c.l0[p->rn[k]] > 0) ? 0 : l == 3.0 ? 3 : l == 4.0 ? 2 : 1;
     }
-  for (dist = 0; dist <= c.nf && !ok && tried < CAND_MAX; ++dist) {
+  memcpy(c.dg, c.d0, sizeof(sc_int) * (size_t)c.nf);
+  while (nseen < GUIDED_MAX && c.nf <= 30) { /* the active-set passes from the last pass's
+    states; where they come back to a candidate, only the worst contact switched */
+    int got;
+    seen[nseen++] = code_of(&c);
+    got = candidate(&c);
+    ++tried;
+    if ((ok = got == 1) || got < 0) break;
+    memcpy(prev, c.dg, sizeof(sc_int) * (size_t)c.nf);
+    if (!switch_states(&c, 0)) break;
+    if (seen_in(seen, nseen, code_of(&c))) {
+      memcpy(c.dg, prev, sizeof(sc_int) * (size_t)c.nf);
+      if (!switch_states(&c, 1) || seen_in(seen, nseen, code_of(&c))) break;
+    }
+  }
+  for (dist = 0; dist <= c.nf && !ok && tried < CAND_MAX; ++dist) { /* else the nearest */
     for (i = 0; i < dist; ++i) pos[i] = i; /* the contacts whose state differs */
     for (;;) {
       sc_int noff = 1, o;
@@ -409,7 +478,7 @@ int sc_friction_states(const sc_fr_prob *p, const double *scale, const double *f
         sc_int r = o;
         memcpy(c.dg, c.d0, sizeof(sc_int) * (size_t)c.nf);
         for (i = 0; i < dist; ++i, r /= 3) c.dg[pos[i]] = (c.d0[pos[i]] + 1 + r % 3) % 4;
-        ok = candidate(&c);
+        if (c.nf > 30 || !seen_in(seen, nseen, code_of(&c))) ok = candidate(&c) == 1;
       }
       if (ok || tried >= CAND_MAX) break;
       for (i = dist - 1; i >= 0 && pos[i] == c.nf - dist + i; --i) continue;
