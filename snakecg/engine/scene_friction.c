@@ -20,10 +20,15 @@
  *      affine in s on a polyhedral piece; a sticking or open bound moves nothing), the step
  *      cut in halves until |R|^2 falls (Armijo), a relaxed pass where no cut does, until
  *      |mu lam_n - s| is rounding (FP_TOL of the forces' scale); not settled in FP_MAX
- *      passes: 1.-3. again from s = 10, 1, 0.1 times mu max|lam| (every contact sticking..);
+ *      passes: the candidates (5.), a few; where they fail, 1.-3. again from s = 10, 1, 0.1
+ *      times mu max|lam| (every contact sticking..), then the candidates, more;
  *   4. Coulomb's residuals apart from the final accelerations (w = A a + c: the normal
  *      complementarity, the cone, stick, slip against the sliding) into the certificate; not
- *      settled from the four starts, or above TOL_ACCEPT: not solved (FR_NOT_SETTLED, NaN).
+ *      settled, or above TOL_ACCEPT: not solved (FR_NOT_SETTLED, NaN);
+ *   5. the candidates (scene_friction_states.c): the frictional contacts' states (open,
+ *      stick, slip either way) fixed, each candidate's equations solved exactly (a slipping
+ *      contact's normal force the unknown, its friction tied to it), accepted only where 4.'s
+ *      residuals hold; an active set on the states from the last pass's, then the nearest.
  * Uniqueness. Coulomb problems can have several solutions, or none (Painleve). Where every
  * other block is polyhedral (contacts, bounded and ideal wheels, frictionless ground) and the
  * pieces are at most ENUM_MAX, every piece is enumerated (a frictional contact open, stick,
@@ -177,7 +182,7 @@ int sc_friction_solve(sc_int n, sc_int m, sc_int nb, sc_int nc, const double *M,
       *sv, *rb, *dv, *Dss, scale[2], res[3];
   sc_enum e;
   sc_fr_prob pr;
-  int code = 0, ok = 0, same, stall = 0, newton = 0, restarts = 0;
+  int code = 0, ok = 0, same, stall = 0, newton = 0, restarts = 0, cands = 0;
   double omega = 1.0, best = INFINITY; /* the passes' relaxation (halved where they stall) */
   *solutions = 0.0;
   if (!T) /* no contact friction in the scene: the convex solve alone */
@@ -229,9 +234,12 @@ int sc_friction_solve(sc_int n, sc_int m, sc_int nb, sc_int nc, const double *M,
   pr.n = n, pr.mt = mt, pr.nb = nb, pr.nt = nt, pr.m = m, pr.sweeps = sweeps, pr.M = M;
   pr.f = f, pr.A = A, pr.c = c, pr.kind = kind, pr.start = start, pr.par = par, pr.mu = mu;
   pr.lead = lead, pr.rn = rn;
-  for (it = 0; it < 4 * FP_MAX; ++it) {
+  it = 0;
+passes:
+  for (; it < 4 * FP_MAX; ++it) {
     double F = 0.0, err = 0.0, r2 = 0.0, r2t = 0.0, Ft = 0.0, t = 1.0;
-    if (it && it % FP_MAX == 0) /* not settled: again from s = 10, 1, 0.1 mu |lam| */
+    if (it == FP_MAX && !cands) break; /* not settled: the candidates first (below) */
+    if (it && it % FP_MAX == 0) /* then again from s = 10, 1, 0.1 mu |lam| */
       for (j = 0, ++restarts, newton = stall = 0, omega = 1.0, best = INFINITY; j < nt; ++j)
         s[j] = 10.0 * pow(0.1, (double)(restarts - 1)) * mu[j] * sc_max_abs(lam, mt);
     code = inner(&pr, s, it ? fr : NULL, lam, a, w, st, info, r0, &r2, &F);
@@ -306,8 +314,13 @@ int sc_friction_solve(sc_int n, sc_int m, sc_int nb, sc_int nc, const double *M,
       info[0] = 0.0, info[2] = info[3] = info[4] = 0.0;
       ok = 1;
     }
-    if (!ok) /* the contacts' candidate states solved exactly (scene_friction_states.c) */
-      ok = sc_friction_states(&pr, scale, it > 0 ? fr : NULL, lam, a, w, st, info);
+    if (!ok) { /* the contacts' candidate states solved exactly (5. of the header;
+      scene_friction_states.c): a few after the first start, where they fail the restarts, then
+      more */
+      ok = sc_friction_states(&pr, scale, it > 0 ? fr : NULL, cands ? 0 : 1, lam, a, w, st,
+                              info);
+      if (!ok && !cands++ && it == FP_MAX) goto passes;
+    }
   }
   if (ok) { /* Coulomb's residuals apart, from the accelerations: w = A a + c */
     int moved = 0;

@@ -8,16 +8,21 @@
  * 3. The candidates (sc_friction_states), where the fixed point did not settle (its passes
  *    swing between a contact's stick and slip pieces, or between two nearly parallel
  *    contacts' loads): the frictional contacts' states fixed (open, stick, slip either way),
- *    each candidate's equations are exact: an open contact's forces 0, a sticking one's normal
- *    and tangent rows held (bilateral), a slipping one's normal row held and its friction force
- *    -+ s along its tangent (into the applied forces), the other blocks (frictionless contacts,
- *    the ground's sets) as the convex solve has them; s = mu lam_n(s) solved by Newton on the
- *    slipping contacts' s (lam_n is affine in s on a piece of the other blocks, smooth on a
- *    sliding disc's: one or a few steps), each evaluation one exact convex solve. A candidate
- *    is accepted only where Coulomb's residuals (1., from the accelerations) and the convex
- *    solve's own hold within TOL_ACCEPT. The candidates are tried in order of how many
- *    contacts' states differ from the last pass's (every one at distance 0, 1, 2, ..), at
- *    most CAND_MAX.
+ *    each candidate's equations are solved exactly: an open contact's forces 0, a sticking
+ *    one's normal and tangent rows held (bilateral), a slipping one's normal force s the
+ *    unknown, applied with its friction -+ mu s along its tangent (Coulomb's slip law exact,
+ *    whatever the rounding: with two nearly parallel rows the normal forces are ill-conditioned
+ *    but the rows' w are not), the other blocks (frictionless contacts, the ground's sets) as
+ *    the convex solve has them; its normal row's w_n(s) = 0 solved by Newton on s (w_n is
+ *    affine in s on a piece of the other blocks, smooth on a sliding disc's: one or a few
+ *    steps), each evaluation one exact convex solve (at most CAND_SWEEPS sweeps). A group of
+ *    equal normal rows (scene_friction.c's bound_of) is one contact: its forces on its
+ *    first's rows. A candidate is accepted only where Coulomb's residuals (1., from the
+ *    accelerations) and the convex solve's own hold within TOL_ACCEPT. Tried: an active set
+ *    on the states from the last pass's (the contacts whose conditions fail switched as they
+ *    ask; where that comes back to a candidate, only the worst one), then the candidates in
+ *    order of how many contacts' states differ from the last pass's (0, 1, 2, ..), at most
+ *    CAND_QUICK after the fixed point's first start, CAND_MAX after its restarts.
  */
 #include "snakecg_layout.h"
 #include "engine.h"
@@ -28,6 +33,8 @@
 #define SAME_TOL 1e-7   /* two solutions are one within this of the forces' scale */
 #define CAND_MAX 1100   /* candidates tried (every one of up to 5 contacts) */
 #define CAND_NEWTON 40  /* Newton steps on a candidate's slipping contacts' normal forces */
+#define CAND_QUICK 16   /* of them, after the fixed point's first start */
+#define CAND_SWEEPS 1000 /* a candidate's solve: at most these sweeps (else not solved) */
 #define GUIDED_MAX 32   /* active-set passes on the contacts' states */
 
 /* Coulomb's residuals of (lam, w) on the frictional contacts (normal rows rn[j], tangent rows
@@ -266,7 +273,7 @@ int sc_friction_enumerate(sc_enum *e) {
 typedef struct {
   const sc_fr_prob *p;
   const double *scale, *from;
-  sc_int nf, ns, *list, *d0, *dg, *slip, *piv;
+  sc_int nf, ns, sweeps, *list, *d0, *dg, *slip, *piv;
   double *fm, *s, *sv, *ds, *D, *R, *R2, *l0, *sol[2][5];
 } sc_cand;
 
@@ -288,7 +295,7 @@ static int cand_solve(sc_cand *c, const double *s, int into, double *R) {
     for (j = 0; j < n; ++j) c->fm[j] += s[i] * an[j] + lt * t[j];
   }
   if (SNAKECG_EXPORT(core_scene_solve_s)(n, p->mt, p->nb + p->nt, p->M, c->fm, p->A, p->c,
-                                         p->kind, p->start, p->par, p->sweeps, c->from,
+                                         p->kind, p->start, p->par, c->sweeps, c->from,
                                          x[C_LAM], x[C_A], x[C_W], x[C_ST], x[C_INFO]) ||
       x[C_INFO][0] != 0.0)
     return 0;
@@ -413,7 +420,7 @@ static int seen_in(const sc_int *seen, sc_int count, sc_int code) {
   return 0;
 }
 
-int sc_friction_states(const sc_fr_prob *p, const double *scale, const double *from,
+int sc_friction_states(const sc_fr_prob *p, const double *scale, const double *from, int quick,
                        double *lam, double *a, double *w, double *st, double *info) {
   const sc_int n = p->n, mt = p->mt, nb = p->nb, nt = p->nt, nbt = nb + nt;
   sc_int i, j, k, dist, tried = 0, *iw, *kind0, *pos, *seen, nseen = 0, *prev;
@@ -437,6 +444,7 @@ int sc_friction_states(const sc_fr_prob *p, const double *scale, const double *f
   kind0 = iw, c.list = kind0 + nbt, c.d0 = c.list + nt, c.dg = c.d0 + nt, c.slip = c.dg + nt;
   c.piv = c.slip + nt, pos = c.piv + nt, prev = pos + nt, seen = prev + nt;
   c.p = p, c.scale = scale, c.from = from, c.nf = 0;
+  c.sweeps = p->sweeps < CAND_SWEEPS ? p->sweeps : CAND_SWEEPS;
   memcpy(kind0, p->kind, sizeof(sc_int) * (size_t)nbt);
   memcpy(par0, p->par, sizeof(double) * (size_t)(3 * nbt));
   for (k = 0; k < nt; ++k) /* the normal forces of the last pass's pieces (its solve's own
@@ -469,18 +477,18 @@ int sc_friction_states(const sc_fr_prob *p, const double *scale, const double *f
       if (!switch_states(&c, 1) || seen_in(seen, nseen, code_of(&c))) break;
     }
   }
-  for (dist = 0; dist <= c.nf && !ok && tried < CAND_MAX; ++dist) { /* else the nearest */
+  for (dist = 0; dist <= c.nf && !ok && tried < (quick ? CAND_QUICK : CAND_MAX); ++dist) {
     for (i = 0; i < dist; ++i) pos[i] = i; /* the contacts whose state differs */
     for (;;) {
       sc_int noff = 1, o;
       for (i = 0; i < dist; ++i) noff *= 3;
-      for (o = 0; o < noff && !ok && tried < CAND_MAX; ++o, ++tried) {
+      for (o = 0; o < noff && !ok && tried < (quick ? CAND_QUICK : CAND_MAX); ++o, ++tried) {
         sc_int r = o;
         memcpy(c.dg, c.d0, sizeof(sc_int) * (size_t)c.nf);
         for (i = 0; i < dist; ++i, r /= 3) c.dg[pos[i]] = (c.d0[pos[i]] + 1 + r % 3) % 4;
         if (c.nf > 30 || !seen_in(seen, nseen, code_of(&c))) ok = candidate(&c) == 1;
       }
-      if (ok || tried >= CAND_MAX) break;
+      if (ok || tried >= (quick ? CAND_QUICK : CAND_MAX)) break;
       for (i = dist - 1; i >= 0 && pos[i] == c.nf - dist + i; --i) continue;
       if (i < 0) break;
       for (++pos[i], j = i + 1; j < dist; ++j) pos[j] = pos[j - 1] + 1;

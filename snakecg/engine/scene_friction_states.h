@@ -30,7 +30,9 @@ SC_INTERNAL void sc_coulomb_residuals(sc_int m, sc_int nt, const sc_int *rn, con
  * enumerated), the first one's forces in e->best */
 SC_INTERNAL int sc_friction_enumerate(sc_enum *e);
 /* The frictional contacts' candidate states solved exactly, accepted where Coulomb's residuals
- * hold: 1 with lam, a, w, st, info the solution's; 0 where none of those tried does */
+ * hold (quick: the active-set passes and the nearest few only): 1 with lam, a, w, st, info
+ * the solution's; 0 where none of those tried does */
 SC_INTERNAL int sc_friction_states(const sc_fr_prob *p, const double *scale, const double *from,
-                                   double *lam, double *a, double *w, double *st, double *info);
+                                   int quick, double *lam, double *a, double *w, double *st,
+                                   double *info);
 #endif
