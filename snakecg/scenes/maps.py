@@ -17,7 +17,8 @@ where it sticks, its force 0 where it is open, and where it slips its normal row
 force acting along ``A_n -+ mu A_t`` (the friction tied to the normal force), so that
 ``A_H I^-1 D_H^T`` (``D_H`` the held rows' force directions) replaces ``G_HH``, no longer
 symmetric. Where the held rows are dependent (statically indeterminate) ``G_HH^-1`` is the
-pseudo-inverse: the minimum-norm forces, flagged ``singular``. :func:`scene_problem` builds one configuration's inertia, input map and rows;
+pseudo-inverse: the minimum-norm forces, flagged ``singular``. :func:`scene_problem` builds
+one configuration's inertia, input map and rows;
 :func:`state_maps` the maps of one state; :func:`maps` checks a user's state and calls both.
 """
 
@@ -286,7 +287,8 @@ def maps(model, q, *, state=None) -> dict:
     ``lam_from_f_obj`` (m rows, eq. 17; with contact friction the frictional contacts'
     tangent rows after them, ``tangent_rows`` naming each contact's, -1 where none),
     ``w_from_tau``, ``w_from_f_obj`` (the rows' accelerations), each with its ``*_offset``
-    (the fixed forces' part: ``X = X_from_tau tau + X_from_f_obj f_obj + X_offset``); the forms of the homogeneous part: ``xi_tau`` (eq. 28),
+    (the fixed forces' part: ``X = X_from_tau tau + X_from_f_obj f_obj + X_offset``); the
+    forms of the homogeneous part: ``xi_tau`` (eq. 28),
     ``omega_tau`` (eq. 29, summed over objects) and ``omega_tau_each``, ``lambda_form_tau``
     (``lam^T G lam``); ``input_metric`` (``B^T M_s^-1 B``, eq. 31), ``delassus`` (``G``,
     eq. 14); ``singular`` (dependent held rows: minimum-norm forces); ``state`` (codes) and
