@@ -19,9 +19,10 @@
  *      present piece by differences of inner solves along the sliding contacts' s (lam_n is
  *      affine in s on a polyhedral piece; a sticking or open bound moves nothing), the step
  *      cut in halves until |R|^2 falls (Armijo), a relaxed pass where no cut does, until
- *      |mu lam_n - s| is rounding (FP_TOL of the forces' scale); not settled in FP_MAX
- *      passes: the candidates (5.), a few; where they fail, 1.-3. again from s = 10, 1, 0.1
- *      times mu max|lam| (every contact sticking..), then the candidates, more;
+ *      |mu lam_n - s| is rounding (FP_TOL of the forces' scale); not settled in FP_QUICK
+ *      passes: a few candidates (5.); where they fail, the passes on to FP_MAX, then 1.-3.
+ *      again from s = 10, 1, 0.1 times mu max|lam| (every contact sticking..), then the
+ *      candidates, more;
  *   4. Coulomb's residuals apart from the final accelerations (w = A a + c: the normal
  *      complementarity, the cone, stick, slip against the sliding) into the certificate; not
  *      settled, or above TOL_ACCEPT: not solved (FR_NOT_SETTLED, NaN);
@@ -44,6 +45,7 @@
 #include "scene_friction_states.h"
 
 #define FP_MAX 400      /* fixed-point and Newton passes from each start */
+#define FP_QUICK 100    /* passes of the first start before a few candidates */
 #define SAME_ROW 1e-8   /* two normal rows are one (bound_of's groups) within this */
 #define FR_NOT_SETTLED 7 /* a sample's status: the fixed point did not settle */
 enum { REC_MU = 13, REC_FT = 14, REC_ST = 15 }; /* a contact record's friction fields */
@@ -238,7 +240,7 @@ int sc_friction_solve(sc_int n, sc_int m, sc_int nb, sc_int nc, const double *M,
 passes:
   for (; it < 4 * FP_MAX; ++it) {
     double F = 0.0, err = 0.0, r2 = 0.0, r2t = 0.0, Ft = 0.0, t = 1.0;
-    if (it == FP_MAX && !cands) break; /* not settled: the candidates first (below) */
+    if (it == FP_QUICK && !cands) break; /* not settled yet: a few candidates (below) */
     if (it && it % FP_MAX == 0) /* then again from s = 10, 1, 0.1 mu |lam| */
       for (j = 0, ++restarts, newton = stall = 0, omega = 1.0, best = INFINITY; j < nt; ++j)
         s[j] = 10.0 * pow(0.1, (double)(restarts - 1)) * mu[j] * sc_max_abs(lam, mt);
@@ -319,7 +321,7 @@ passes:
       more */
       ok = sc_friction_states(&pr, scale, it > 0 ? fr : NULL, cands ? 0 : 1, lam, a, w, st,
                               info);
-      if (!ok && !cands++ && it == FP_MAX) goto passes;
+      if (!ok && !cands++ && it == FP_QUICK) goto passes;
     }
   }
   if (ok) { /* Coulomb's residuals apart, from the accelerations: w = A a + c */

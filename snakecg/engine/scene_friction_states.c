@@ -477,6 +477,12 @@ int sc_friction_states(const sc_fr_prob *p, const double *scale, const double *f
       if (!switch_states(&c, 1) || seen_in(seen, nseen, code_of(&c))) break;
     }
   }
+  for (i = 0; i < c.nf; ++i) c.dg[i] = 1; /* every contact sticking (the restarts' first) */
+  if (!ok && nseen < GUIDED_MAX && !seen_in(seen, nseen, code_of(&c))) {
+    seen[nseen++] = code_of(&c);
+    ok = candidate(&c) == 1;
+    ++tried;
+  }
   for (dist = 0; dist <= c.nf && !ok && tried < (quick ? CAND_QUICK : CAND_MAX); ++dist) {
     for (i = 0; i < dist; ++i) pos[i] = i; /* the contacts whose state differs */
     for (;;) {
