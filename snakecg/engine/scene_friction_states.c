@@ -20,9 +20,10 @@
  *    first's rows. A candidate is accepted only where Coulomb's residuals (1., from the
  *    accelerations) and the convex solve's own hold within TOL_ACCEPT. Tried: an active set
  *    on the states from the last pass's (the contacts whose conditions fail switched as they
- *    ask; where that comes back to a candidate, only the worst one), then the candidates in
- *    order of how many contacts' states differ from the last pass's (0, 1, 2, ..), at most
- *    CAND_QUICK after the fixed point's first start, CAND_MAX after its restarts.
+ *    ask; where that comes back to a candidate, only the worst one), every contact sticking,
+ *    then the candidates in order of how many contacts' states differ from the last pass's
+ *    (0, 1, 2, ..), at most CAND_QUICK after the fixed point's first start's FP_QUICK
+ *    passes, CAND_MAX after its restarts.
  */
 #include "snakecg_layout.h"
 #include "engine.h"
