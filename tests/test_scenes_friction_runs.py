@@ -294,8 +294,8 @@ def test_a_step_the_fixed_point_does_not_settle_is_coulomb_s_one_solution(step):
     parallel contacts' loads): the enumeration of the contacts' pieces (NumPy, SciPy's Newton
     on each piece, every ground disc sliding) finds exactly one Coulomb solution, and the
     engine's step (its candidate states solved exactly) is that one: its velocities within
-    1e-7 (the ill-conditioned pair's: measured 4e-8, else 1e-11), Coulomb's residuals within
-    1e-9. A step that fails them is never accepted."""
+    1e-7 (measured: 2e-9 at the ill-conditioned pair 3e-4 apart, else 2e-11), Coulomb's
+    residuals within 1e-9. A step that fails them is never accepted."""
     from snakecg.scenes.stepping import _Stepper
 
     model = _rough_pegs_row(step["mu_contact"])
