@@ -4,8 +4,10 @@ and frictional impacts against their closed form.
 References: the capsule-peg and link-link distances of ``capsule_reference`` (NumPy, apart
 from the engine's geometry) for penetration; the run's energy balance (the kinetic energy
 gained never exceeds the torques' work less friction and impact losses plus the gap
-stabilisation's work); and, for an impact, the impulse law of a rigid disc worked out by hand
-below (Coulomb's law on the impulses of an inelastic impact)."""
+stabilisation's work); for an impact, the impulse law of a rigid disc worked out by hand
+below (Coulomb's law on the impulses of an inelastic impact); and, at the recorded steps and
+impacts where the bounds' fixed point does not settle, NumPy enumerations of the contacts'
+pieces (``_coulomb_pieces``, ``_impact_solutions``)."""
 
 from __future__ import annotations
 
