@@ -280,9 +280,10 @@ typedef struct {
 
 enum { C_LAM = 0, C_A, C_W, C_ST, C_INFO };
 
-/* The candidate's exact solve at the slipping contacts' normal forces s (their forces
- * s (n - -+ mu t) applied: Coulomb's slip law exact, whatever the rounding of the solve) into
- * solution `into`: R the slipping contacts' w_n (A a + c); 1 where solved. */
+/* The candidate's exact solve at the slipping contacts' normal forces s (each applied with
+ * its friction: s along the normal row, -+ mu s along the tangent row; Coulomb's slip law
+ * exact, whatever the rounding of the solve) into solution `into`: R the slipping contacts'
+ * w_n (A a + c); 1 where solved. */
 static int cand_solve(sc_cand *c, const double *s, int into, double *R) {
   const sc_fr_prob *p = c->p;
   const sc_int n = p->n;
