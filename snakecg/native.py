@@ -66,9 +66,12 @@ CORE_SOURCES = tuple(ENGINE_DIR / name
                                   "wheel_states.c", "scene_sets.c", "scene_piece.c",
                                   "scene_primal.c", "scene_small.c", "scene_solve.c",
                                   "scene_geometry.c", "scene_rows.c", "scene_step.c",
-                                  "scene_run.c", "scene_friction.c"))
-#: Its headers: engine.h (the types and prototypes), linalg.h (the small dense linear algebra).
-CORE_HEADERS = (ENGINE_DIR / "engine.h", ENGINE_DIR / "linalg.h")
+                                  "scene_run.c", "scene_friction.c",
+                                  "scene_friction_states.c"))
+#: Its headers: engine.h (the types and prototypes), linalg.h (the small dense linear algebra),
+#: and a file's own (what two files of one step share), named after the C file defining it.
+CORE_HEADERS = (ENGINE_DIR / "engine.h", ENGINE_DIR / "linalg.h",
+                *(p.with_suffix(".h") for p in CORE_SOURCES if p.with_suffix(".h").exists()))
 #: Up to this batch size the outputs of a compiled call share one buffer (see CompiledBackend).
 _SMALL_BATCH = 64
 

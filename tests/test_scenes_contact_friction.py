@@ -68,6 +68,51 @@ def reference_problem(model, q, tau, f_obj=None):
             "contacts": contacts}
 
 
+def piece_solution(p, combo):
+    """One piece's linear equations solved densely in (a, lam): M a - A^T lam = f and, per
+    block (``combo``: its state, as :func:`coulomb_solutions` names them), w = 0 on a held
+    row or a sticking contact's two rows, the force fixed on an open row (0) or a sliding
+    wheel (+-p), a slipping contact's friction lam_t = -mu lam_n sign(w_t). None where the
+    equations are singular."""
+    M, f, A = p["M"], p["f"], p["A"]
+    m, n = A.shape
+    K = np.zeros((n + m, n + m))
+    rhs = np.zeros(n + m)
+    K[:n, :n], K[:n, n:], rhs[:n] = M, -A.T, f
+
+    def w_zero(r):
+        K[n + r, :n] = A[r]
+
+    def force(r, value=0.0, other=None, coef=0.0):
+        K[n + r, n + r] = 1.0
+        if other is not None:
+            K[n + r, n + other] = coef
+        rhs[n + r] = value
+
+    for b, s in zip(p["blocks"], combo):
+        r, t = b["row"], b["tangent"]
+        if s in ("held", "stick"):
+            w_zero(r)
+        elif s in ("open", "zero"):
+            force(r)
+        elif s in ("+", "-"):
+            force(r, b["p"] if s == "+" else -b["p"])
+        else:  # slip: normal held
+            w_zero(r)
+        if t is None:
+            continue
+        if s == "open":
+            force(t)
+        elif s == "stick":
+            w_zero(t)
+        else:  # lam_t = -mu lam_n sign(w_t)
+            force(t, 0.0, r, b["mu"] if s == "slip+" else -b["mu"])
+    if np.linalg.matrix_rank(K, tol=1e-10 * np.abs(K).max()) < n + m:
+        return None
+    x = np.linalg.solve(K, rhs)
+    return x[:n], x[n:]
+
+
 def coulomb_solutions(p, tol=1e-9):
     """Every solution of Coulomb's conditions by enumeration of the pieces: each contact
     (open, stick, slip with w_t > 0, slip with w_t < 0; frictionless: held, open), bounded
@@ -91,42 +136,11 @@ def coulomb_solutions(p, tol=1e-9):
             raise ValueError("polyhedral blocks only")
     sols, singular = [], 0
     for combo in itertools.product(*options):
-        K = np.zeros((n + m, n + m))
-        rhs = np.zeros(n + m)
-        K[:n, :n], K[:n, n:], rhs[:n] = M, -A.T, f
-
-        def w_zero(r):
-            K[n + r, :n] = A[r]
-
-        def force(r, value=0.0, other=None, coef=0.0):
-            K[n + r, n + r] = 1.0
-            if other is not None:
-                K[n + r, n + other] = coef
-            rhs[n + r] = value
-
-        for b, s in zip(p["blocks"], combo):
-            r, t = b["row"], b["tangent"]
-            if s in ("held", "stick"):
-                w_zero(r)
-            elif s in ("open", "zero"):
-                force(r)
-            elif s in ("+", "-"):
-                force(r, b["p"] if s == "+" else -b["p"])
-            else:  # slip: normal held
-                w_zero(r)
-            if t is None:
-                continue
-            if s == "open":
-                force(t)
-            elif s == "stick":
-                w_zero(t)
-            else:  # lam_t = -mu lam_n sign(w_t)
-                force(t, 0.0, r, b["mu"] if s == "slip+" else -b["mu"])
-        if np.linalg.matrix_rank(K, tol=1e-10 * np.abs(K).max()) < n + m:
+        x = piece_solution(p, combo)
+        if x is None:
             singular += 1
             continue
-        x = np.linalg.solve(K, rhs)
-        a, lam = x[:n], x[n:]
+        a, lam = x
         w = A @ a
         F = max(1e-12, np.abs(lam).max())
         ok = True

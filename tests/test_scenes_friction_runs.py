@@ -4,12 +4,17 @@ and frictional impacts against their closed form.
 References: the capsule-peg and link-link distances of ``capsule_reference`` (NumPy, apart
 from the engine's geometry) for penetration; the run's energy balance (the kinetic energy
 gained never exceeds the torques' work less friction and impact losses plus the gap
-stabilisation's work); and, for an impact, the impulse law of a rigid disc worked out by hand
-below (Coulomb's law on the impulses of an inelastic impact)."""
+stabilisation's work); for an impact, the impulse law of a rigid disc worked out by hand
+below (Coulomb's law on the impulses of an inelastic impact); and, at the recorded steps and
+impacts where the bounds' fixed point does not settle, NumPy enumerations of the contacts'
+pieces (``_coulomb_pieces``, ``_impact_solutions``)."""
 
 from __future__ import annotations
 
 import dataclasses
+import itertools
+import json
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -17,6 +22,7 @@ import pytest
 import snakecg
 from snakecg.scenes import GeneralScene, Ground, Obstacle, SceneObject, load_scene
 from snakecg.scenes.toml_reading import read_scene
+from snakecg.scenes.stepping import contact_tolerance
 from snakecg.simulate import serpenoid_controller
 
 from capsule_reference import deepest_overlap
@@ -63,7 +69,7 @@ def test_the_step_where_the_fixed_point_cycled_is_solved():
 
 
 # A state where Newton's steps from the first start stall (the example at mu_contact 1.5 with
-# the gait at 0.4 rad and 1.5 Hz, after 1.33 s): settled from a restart.
+# the gait at 0.4 rad and 1.5 Hz, after 1.33 s): settled after the first start.
 STALLING_Q = [-0.04292616886978592, 0.01211051092846942, -0.09127980823052863, -0.04258009575786208,
     0.4793164494059722, 0.4487468212046312, -0.12485121539651826, -0.47077393497635867,
     -0.17025984629462432, 0.2932534135479661, 0.26205496189980104, -0.14649249686116417,
@@ -79,8 +85,8 @@ STALLING_TAU = [0.25085267996145677, -1.3693046369046147, -2.4433816884572694, -
 
 def test_the_step_where_newton_stalls_is_solved_from_a_restart():
     """One 1 ms step from a state where the iterations from the frictionless start stall
-    (between a contact's sticking and slipping pieces): the restart from large bounds settles
-    it, Coulomb's residuals within 1e-9."""
+    (between a contact's sticking and slipping pieces): the candidate states or the restarts
+    from large bounds settle it, Coulomb's residuals within 1e-9."""
     model = _rough_pegs_row(1.5)
     run = model.simulate(np.array(STALLING_Q), 1e-3, v0=np.array(STALLING_V),
                          tau=np.array(STALLING_TAU), dt=1e-3)
@@ -192,7 +198,7 @@ def test_a_frictionless_impact_keeps_the_tangential_velocity():
     assert run.events[0].friction_impulses is None
 
 
-# A step the method does not settle (the sweep's gait at 0.3 rad and 0.5 Hz, mu_contact 3,
+# A step the fixed point does not settle (the sweep's gait at 0.3 rad and 0.5 Hz, mu_contact 3,
 # after 12.7 ms): a peg at a joint touching both links' ends, their normal rows nearly one.
 UNSETTLED_Q = [-0.00044519038603647144, -0.00031368327766602666, -0.009177788961733959,
     0.017832611205317154, 0.46736833806964895, 0.28943116140828634, -0.29199059179641845,
@@ -270,25 +276,120 @@ def _coulomb_pieces(st, model, h, tau):
     return found
 
 
-def test_a_step_the_method_does_not_settle_has_a_coulomb_solution():
-    """At mu_contact 3 a peg touching two links' ends with nearly one normal row: the 1 ms
-    step's fixed point and Newton steps do not settle from any of their four starts. The
-    enumeration of the two contacts' pieces (NumPy, SciPy's Newton on each piece, every ground
-    disc sliding) finds that Coulomb's law has a solution there (the first contact sticking,
-    the second slipping): the method's failure is its known limit, not a step without
-    solution. The engine must then refuse the step (not_converged), never accept another
-    answer; once it settles, its velocities must be the enumeration's."""
+def _recorded_steps():
+    """Steps where the bounds' fixed point and Newton steps did not settle from any of their
+    four starts, recorded from the sweep of benchmarks/bench_friction_sweep.py (15 gaits x
+    mu_contact 0.3-3 on the pegs row): the pegs' coefficient, the gait, the time, and the
+    state and torques at the step's start. The one at mu_contact 3 after 12.7 ms (UNSETTLED_*)
+    is a peg at a joint touching both links' ends, their normal rows 3e-4 apart."""
+    rows = json.loads((Path(__file__).parent / "data" / "friction_unsettled_steps.json")
+                      .read_text(encoding="utf-8"))
+    rows.append({"mu_contact": 3.0, "amplitude": 0.3, "frequency": 0.5, "t": 0.0127,
+                 "q": UNSETTLED_Q, "v": UNSETTLED_V, "tau": UNSETTLED_TAU})
+    return rows
+
+
+@pytest.mark.parametrize("step", _recorded_steps(),
+                         ids=lambda r: f"mu{r['mu_contact']:g}-{r['amplitude']:g}rad-"
+                                       f"{r['frequency']:g}Hz-t{r['t']:.4f}")
+def test_a_step_the_fixed_point_does_not_settle_is_coulomb_s_one_solution(step):
+    """Steps (1 to 3 pegs touching, no impact) where the fixed point on the bounds does not
+    settle (its passes swing between a contact's stick and slip pieces, or between two nearly
+    parallel contacts' loads): the enumeration of the contacts' pieces (NumPy, SciPy's Newton
+    on each piece, every ground disc sliding) finds exactly one Coulomb solution, and the
+    engine's step (its candidate states solved exactly) is that one: its velocities within
+    1e-7 (measured: 2e-9 at the ill-conditioned pair 3e-4 apart, else 2e-11), Coulomb's
+    residuals within 1e-9. A step that fails them is never accepted."""
     from snakecg.scenes.stepping import _Stepper
 
-    model = _rough_pegs_row(3.0)
-    run = model.simulate(np.array(UNSETTLED_Q), 1e-3, v0=np.array(UNSETTLED_V),
-                         tau=np.array(UNSETTLED_TAU), dt=1e-3)
+    model = _rough_pegs_row(step["mu_contact"])
+    q, v, tau = (np.array(step[k]) for k in ("q", "v", "tau"))
+    run = model.simulate(q, 1e-3, v0=v, tau=tau, dt=1e-3)
     st = _Stepper(model, run.tolerance, np.zeros(0))
-    st.begin(np.array(UNSETTLED_Q), np.zeros(0), np.array(UNSETTLED_V), None)
-    assert int(st.out[1]) == 2
-    found = _coulomb_pieces(st, model, 1e-3, np.array(UNSETTLED_TAU))
-    assert [p for p, _, _ in found] == [("stick", "+")]
-    if run.status == "completed":
-        np.testing.assert_allclose(run.v[-1], found[0][1][:13], atol=1e-7)
-    else:
-        assert run.status == "not_converged" and len(run.t) == 1, run.message
+    st.begin(q, np.zeros(0), v, None)
+    assert 1 <= int(st.out[1]) <= 3
+    found = _coulomb_pieces(st, model, 1e-3, tau)
+    assert len(found) == 1, [p for p, _, _ in found]
+    assert run.status == "completed", run.message
+    assert len(run.events) == 0 and len(run.t) == 2
+    np.testing.assert_allclose(run.v[-1], found[0][1][:13], rtol=0, atol=1e-7)
+    assert max(run.certificate.values()) <= 1e-9
+
+
+def _impact_solutions(M, A, m, nc, start, mu, V0, tol=1e-9):
+    """Every solution of an inelastic impact's Coulomb law at the rows of a step's end (NumPy,
+    apart from the engine): M V = M V0 + A_c^T p over the contacts' normal rows (start[k])
+    and the frictional ones' tangent rows (m + k), the ground giving no impulse; each contact's
+    pieces enumerated (frictionless: held, open; frictional: open, stick, slip + or -), each
+    piece's linear equations solved and kept where its inequalities hold: p_n >= 0,
+    w_n = A_n V >= 0, |p_t| <= mu p_n sticking, +-w_t >= 0 slipping with p_t = -+mu p_n.
+    Returns [(pieces, V, p)]."""
+    n = len(V0)
+    fric = [k for k in range(nc) if mu[k] > 0]
+    tan = {k: nc + j for j, k in enumerate(fric)}
+    C = A[[start[k] for k in range(nc)] + [m + k for k in fric]]
+    r = len(C)
+    W = max(1e-12, np.abs(C @ V0).max())
+    found = []
+    options = [("open", "stick", "+", "-") if mu[k] > 0 else ("held", "open") for k in range(nc)]
+    for piece in itertools.product(*options):
+        K, rhs = np.zeros((n + r, n + r)), np.zeros(n + r)
+        K[:n, :n], K[:n, n:], rhs[:n] = M, -C.T, M @ V0
+        for k, s in enumerate(piece):
+            t = tan.get(k)
+            if s == "open":
+                K[n + k, n + k] = 1.0
+                if t is not None:
+                    K[n + t, n + t] = 1.0
+                continue
+            K[n + k, :n] = C[k]
+            if t is not None and s == "stick":
+                K[n + t, :n] = C[t]
+            elif t is not None:
+                K[n + t, n + t], K[n + t, n + k] = 1.0, mu[k] if s == "+" else -mu[k]
+        if np.linalg.matrix_rank(K) < n + r:
+            continue
+        x = np.linalg.solve(K, rhs)
+        V, p = x[:n], x[n:]
+        w, F = C @ V, max(1e-12, np.abs(p).max())
+        ok = all(p[k] >= -tol * F and w[k] >= -tol * W for k in range(nc))
+        for k, s in enumerate(piece):
+            t = tan.get(k)
+            if s == "stick" and t is not None:
+                ok &= abs(p[t]) <= mu[k] * p[k] + tol * F
+            elif s in ("+", "-"):
+                ok &= (w[t] if s == "+" else -w[t]) >= -tol * W
+        if ok:
+            found.append((piece, V, p))
+    return found
+
+
+@pytest.mark.parametrize("step", json.loads(
+    (Path(__file__).parent / "data" / "friction_unsettled_impacts.json").read_text(
+        encoding="utf-8")), ids=lambda r: f"mu{r['mu_contact']:g}-{r['amplitude']:g}rad-"
+                                          f"{r['frequency']:g}Hz-t{r['t']:.4f}")
+def test_an_impact_the_fixed_point_does_not_settle_is_coulomb_s_one_solution(step):
+    """Steps of the same sweep that stopped in the impact after them (a contact new at the
+    step's end closing fast; 2 to 7 contacts): the enumeration of the impact's pieces
+    (_impact_solutions, NumPy) finds exactly one solution at the rows of the step's end and
+    the velocity before the impact, and the engine's velocities after it are that one's
+    (within 1e-9; measured 1e-11); the run from that state completes."""
+    from snakecg.scenes.stepping import _Stepper
+
+    model = _rough_pegs_row(step["mu_contact"])
+    q, v, tau = (np.array(step[k]) for k in ("q", "v", "tau"))
+    st = _Stepper(model, contact_tolerance(model.scene, None), np.zeros(0))
+    st.begin(q, np.zeros(0), v, None)
+    st.tau[:model.n_joints] = tau
+    assert st.call(1e-3) == 0  # the step and its impact accepted
+    out = st.out
+    nc, m = int(out[1]), int(out[2])
+    rec = out[10 + 3 * st.no:10 + 3 * st.no + 16 * nc].reshape(nc, 16)
+    found = _impact_solutions(st.M, st.A, m, nc, st.start, rec[:, 13], st.Vp.copy())
+    assert len(found) == 1, [p for p, _, _ in found]
+    assert np.abs(st.V - st.Vp).max() > 1e-3  # (an impact changed the velocities)
+    np.testing.assert_allclose(st.V, found[0][1], rtol=0,
+                               atol=1e-9 * max(1.0, np.abs(st.Vp).max()))
+    run = model.simulate(q, 1e-3, v0=v, tau=tau, dt=1e-3)
+    assert run.status == "completed" and len(run.events) == 1, run.message
+    assert max(run.certificate.values()) <= 1e-9

@@ -19,11 +19,17 @@
  *      present piece by differences of inner solves along the sliding contacts' s (lam_n is
  *      affine in s on a polyhedral piece; a sticking or open bound moves nothing), the step
  *      cut in halves until |R|^2 falls (Armijo), a relaxed pass where no cut does, until
- *      |mu lam_n - s| is rounding (FP_TOL of the forces' scale); not settled in FP_MAX
- *      passes: 1.-3. again from s = 10, 1, 0.1 times mu max|lam| (every contact sticking..);
+ *      |mu lam_n - s| is rounding (FP_TOL of the forces' scale); not settled in FP_QUICK
+ *      passes: a few candidates (5.); where they fail, the passes on to FP_MAX, then 1.-3.
+ *      again from s = 10, 1, 0.1 times mu max|lam| (every contact sticking..), then the
+ *      candidates, more;
  *   4. Coulomb's residuals apart from the final accelerations (w = A a + c: the normal
  *      complementarity, the cone, stick, slip against the sliding) into the certificate; not
- *      settled from the four starts, or above TOL_ACCEPT: not solved (FR_NOT_SETTLED, NaN).
+ *      settled, or above TOL_ACCEPT: not solved (FR_NOT_SETTLED, NaN);
+ *   5. the candidates (scene_friction_states.c): the frictional contacts' states (open,
+ *      stick, slip either way) fixed, each candidate's equations solved exactly (a slipping
+ *      contact's normal force the unknown, its friction tied to it), accepted only where 4.'s
+ *      residuals hold; an active set on the states from the last pass's, then the nearest.
  * Uniqueness. Coulomb problems can have several solutions, or none (Painleve). Where every
  * other block is polyhedral (contacts, bounded and ideal wheels, frictionless ground) and the
  * pieces are at most ENUM_MAX, every piece is enumerated (a frictional contact open, stick,
@@ -36,13 +42,10 @@
  */
 #include "snakecg_layout.h"
 #include "engine.h"
+#include "scene_friction_states.h"
 
 #define FP_MAX 400      /* fixed-point and Newton passes from each start */
-#define FP_TOL 1e-12    /* |mu lam_n - s| at most this of the forces' scale: settled */
-#define ENUM_MAX 4096   /* pieces enumerated for the uniqueness check */
-#define SOL_MAX 16      /* distinct solutions kept */
-#define ENUM_TOL 1e-9   /* a piece's solution meets Coulomb's conditions within this */
-#define SAME_TOL 1e-7   /* two solutions are one within this of the forces' scale */
+#define FP_QUICK 100    /* passes of the first start before a few candidates */
 #define SAME_ROW 1e-8   /* two normal rows are one (bound_of's groups) within this */
 #define FR_NOT_SETTLED 7 /* a sample's status: the fixed point did not settle */
 enum { REC_MU = 13, REC_FT = 14, REC_ST = 15 }; /* a contact record's friction fields */
@@ -137,241 +140,6 @@ static double bound_of(sc_int j, sc_int nt, sc_int m, const sc_int *lead, const 
   return mu[j] * N * (T > 0 ? fabs(lam[m + j]) / T : 1.0 / (double)count);
 }
 
-/* Coulomb's residuals of (lam, w) on the frictional contacts (normal rows rn[j], tangent rows
- * m + j), relative to the scales: res[0] primal (a normal force below 0, a tangent force
- * outside the cone), res[1] dual (a normal row that accelerates into the contact, a sliding
- * tangent row whose force is not -mu lam_n sign(w_t)), res[2] complementarity (lam_n w_n);
- * a group's (bound_of) on its summed forces. */
-static void coulomb_residuals(sc_int m, sc_int nt, const sc_int *rn, const sc_int *lead,
-                              const double *mu, const double *lam, const double *w,
-                              const double *scale, double *res) {
-  const double F = scale[0], W = scale[1];
-  sc_int j, k;
-  for (j = 0; j < nt; ++j) {
-    double ln = lam[rn[j]], lt = lam[m + j], wn = w[rn[j]], wt = w[m + j], N = 0.0, T = 0.0;
-    int count = 0, slips = 0;
-    res[1] = fmax(res[1], fmax(0.0, -wn) / W);
-    res[2] = fmax(res[2], fabs(ln * wn) / (F * W));
-    res[0] = fmax(res[0], fmax(0.0, -ln) / F);
-    if (lead[j] != j) continue; /* (a group: at its first) */
-    for (k = j; k < nt; ++k) {
-      if (lead[k] != j) continue;
-      N += lam[rn[k]], T += fabs(lam[m + k]), ++count;
-      if (fabs(w[m + k]) > TOL_ACCEPT * W) { /* slip: the force against it */
-        ++slips;
-        res[1] = fmax(res[1], fmax(0.0, lam[m + k] * (w[m + k] > 0 ? 1.0 : -1.0)) / F);
-      }
-    }
-    res[0] = fmax(res[0], fmax(0.0, T - mu[j] * N) / F);
-    if (count == 1 && slips) /* at the cone's edge */
-      res[1] = fmax(res[1], fabs(lt + (wt > 0 ? mu[j] : -mu[j]) * ln) / F);
-    else if (slips == count)
-      res[1] = fmax(res[1], fabs(T - mu[j] * N) / F);
-  }
-}
-
-/* The enumeration's problem and scratch. */
-typedef struct {
-  sc_int n, m, nb, nt;
-  const sc_int *kind, *start, *tc; /* tc: a contact block's tangent (or -1) */
-  const double *par, *mu, *G, *b, *Z, *g, *scale;
-  double *K, *Kc, *S, *x, *y, *ys, *c0, *c1, *qw, *best;
-  sc_int *piv, *opt, *digit;
-} sc_enum;
-
-/* The piece digit[]'s equations: K x = x (in place): w_r = 0 where held or sticking, else the
- * force fixed (0 open, +-p a wheel sliding, -+ mu lam_n a contact slipping as w_t > 0, < 0). */
-static void piece_equations(sc_enum *e) {
-  const sc_int m = e->m, mt = m + e->nt;
-  sc_int k, r, u;
-  memset(e->K, 0, sizeof(double) * (size_t)(mt * mt));
-  for (u = m; u < mt; ++u) e->K[u * mt + u] = 1.0, e->x[u] = 0.0; /* no friction: 0 */
-  for (k = 0; k < e->nb; ++k) {
-    const sc_int kd = e->kind[k], dg = e->digit[k], t = e->tc[k];
-    const double p = e->par[3 * k];
-    r = e->start[k];
-    u = t >= 0 ? m + t : -1;
-    e->x[r] = -e->b[r];
-    if (kd == K_BOX && (dg > 0 || !(p > 0))) {
-      e->K[r * mt + r] = 1.0;
-      e->x[r] = !(p > 0) ? 0.0 : dg == 1 ? p : -p;
-    } else if (kd == K_UNILATERAL && dg == (t >= 0 ? 0 : 1)) {
-      e->K[r * mt + r] = 1.0, e->x[r] = 0.0; /* open */
-    } else {
-      memcpy(e->K + r * mt, e->G + r * mt, sizeof(double) * (size_t)mt);
-    }
-    if (u < 0 || dg == 0) continue; /* (open: no tangent force) */
-    if (dg == 1) { /* stick */
-      e->x[u] = -e->b[u];
-      memcpy(e->K + u * mt, e->G + u * mt, sizeof(double) * (size_t)mt);
-    } else { /* slip */
-      e->K[u * mt + u] = 1.0;
-      e->K[u * mt + r] = dg == 2 ? e->mu[t] : -e->mu[t];
-    }
-  }
-}
-
-/* Coulomb's conditions on a piece's solution x as margins (out, >= 0 where met within
- * ENUM_TOL of the scales; every one affine in x); their count. */
-static sc_int piece_margins(const sc_enum *e, const double *x, double *out) {
-  const sc_int m = e->m, mt = m + e->nt;
-  const double F = e->scale[0], W = e->scale[1];
-  sc_int k, q = 0;
-  for (k = 0; k < e->nb; ++k) {
-    const sc_int r = e->start[k], dg = e->digit[k], t = e->tc[k];
-    const double l = x[r], wr = e->b[r] + sc_dot(e->G + r * mt, x, mt), p = e->par[3 * k];
-    if (e->kind[k] == K_UNILATERAL) {
-      out[q++] = l / F + ENUM_TOL;
-      out[q++] = wr / W + ENUM_TOL;
-    }
-    if (e->kind[k] == K_BOX && p > 0 && dg == 0) {
-      out[q++] = (p - l) / F + ENUM_TOL;
-      out[q++] = (p + l) / F + ENUM_TOL;
-    } else if (e->kind[k] == K_BOX && p > 0) {
-      out[q++] = (dg == 1 ? -wr : wr) / W + ENUM_TOL;
-    }
-    if (t >= 0 && dg > 0) {
-      const double lt = x[m + t], wt = e->b[m + t] + sc_dot(e->G + (m + t) * mt, x, mt);
-      if (dg == 1) {
-        out[q++] = (e->mu[t] * l - lt) / F + ENUM_TOL;
-        out[q++] = (e->mu[t] * l + lt) / F + ENUM_TOL;
-      } else {
-        out[q++] = (dg == 2 ? wt : -wt) / W + ENUM_TOL;
-      }
-    }
-  }
-  return q;
-}
-
-static int piece_feasible(const sc_enum *e) {
-  sc_int i, q = piece_margins(e, e->x, e->c0);
-  for (i = 0; i < q; ++i)
-    if (e->c0[i] < 0) return 0;
-  return 1;
-}
-
-/* y = g + Z x: the accelerations in the inertia's metric (a = L^-T y); index of the one in
- * list (count) it equals, or -1. */
-static sc_int same_as(const sc_enum *e, const double *list, sc_int count) {
-  sc_int j, i;
-  double big = sc_max_abs(e->g, e->n);
-  for (i = 0; i < e->n; ++i) {
-    double t = e->g[i];
-    for (j = 0; j < e->m + e->nt; ++j) t += e->Z[j * e->n + i] * e->x[j];
-    e->y[i] = t;
-    big = fmax(big, fabs(t));
-  }
-  for (j = 0; j < count && j < SOL_MAX; ++j) {
-    double d = 0.0;
-    for (i = 0; i < e->n; ++i) d = fmax(d, fabs(e->y[i] - list[j * e->n + i]));
-    if (d <= SAME_TOL * big) return j;
-  }
-  return -1;
-}
-
-/* A singular piece (its equations in e->Kc, right-hand side in e->qw + mt): 1 where its
- * solutions fix the accelerations and a point of them meets Coulomb's conditions (in e->x),
- * 0 where it has none (inconsistent, or a one-parameter family none of whose points meets
- * them), -1 where it cannot tell (the accelerations vary on it, or a larger family). By the
- * SVD: the least-norm point x0 and the null space N; on a line x0 + z v the margins are
- * affine in z, so their interval is exact. */
-static int singular_piece(sc_enum *e) {
-  const sc_int mt = e->m + e->nt, n = e->n;
-  double *U = e->S, *V = e->K, *sv = e->qw, *rhs = e->qw + mt, *v = e->qw + 2 * mt, smax = 0.0,
-         res = 0.0, lo = -INFINITY, hi = INFINITY;
-  sc_int i, j, null = 0, q;
-  for (i = 0; i < mt; ++i)
-    for (j = 0; j < mt; ++j) U[j * mt + i] = e->Kc[i * mt + j]; /* columns of K */
-  sc_svd_jacobi(mt, mt, U, mt, V, sv);
-  for (j = 0; j < mt; ++j) smax = fmax(smax, sv[j]);
-  sc_svd_least_norm(mt, mt, U, mt, V, sv, rhs, 1e-10, 0, e->x);
-  for (i = 0; i < mt; ++i) res = fmax(res, fabs(sc_dot(e->Kc + i * mt, e->x, mt) - rhs[i]));
-  if (res > 1e-9 * fmax(sc_max_abs(rhs, mt), smax * sc_max_abs(e->x, mt))) return 0;
-  for (j = 0; j < mt; ++j) {
-    double zn = 0.0, zs = 0.0;
-    if (sv[j] > 1e-10 * smax) continue;
-    ++null;
-    memcpy(v, V + j * mt, sizeof(double) * (size_t)mt);
-    for (i = 0; i < n; ++i) { /* the accelerations along v: Z v */
-      double t = 0.0;
-      sc_int k;
-      for (k = 0; k < mt; ++k) t += e->Z[k * n + i] * v[k];
-      zn = fmax(zn, fabs(t));
-    }
-    for (i = 0; i < n * mt; ++i) zs = fmax(zs, fabs(e->Z[i]));
-    if (zn > 1e-9 * zs) return -1;
-  }
-  if (piece_feasible(e)) return 1;
-  if (null != 1) return -1;
-  q = piece_margins(e, e->x, e->c0); /* the margins along the line x0 + z v (v: the last) */
-  for (i = 0; i < mt; ++i) rhs[i] = e->x[i] + v[i];
-  piece_margins(e, rhs, e->c1);
-  for (i = 0; i < q; ++i) {
-    double s = e->c1[i] - e->c0[i];
-    if (fabs(s) <= 1e-15 * (1 + fabs(e->c0[i]))) {
-      if (e->c0[i] < 0) return 0;
-    } else if (s > 0) {
-      lo = fmax(lo, -e->c0[i] / s);
-    } else {
-      hi = fmin(hi, -e->c0[i] / s);
-    }
-  }
-  if (!(lo <= hi)) return 0;
-  {
-    double z = isfinite(lo) && isfinite(hi) ? 0.5 * (lo + hi) : isfinite(lo) ? lo : hi;
-    for (i = 0; i < mt; ++i) e->x[i] += z * v[i];
-  }
-  return 1;
-}
-
-/* The enumeration of every piece (header): the count of distinct accelerations that meet
- * Coulomb's conditions, negated where a piece may hold others it cannot tell (singular_piece's
- * -1), 0 where not enumerated; the first solution's forces in e->best. */
-static int enumerate(sc_enum *e) {
-  const sc_int mt = e->m + e->nt;
-  sc_int k, i, found = 0, total = 1, combo;
-  int unsure = 0;
-  for (k = 0; k < e->nb; ++k) { /* the pieces per block */
-    const sc_int kd = e->kind[k];
-    if (kd == K_FREE) e->opt[k] = 1;
-    else if (kd == K_UNILATERAL) e->opt[k] = e->tc[k] >= 0 ? 4 : 2;
-    else if (kd == K_BOX) e->opt[k] = e->par[3 * k] > 0 ? 3 : 1;
-    else return 0; /* a conic set: not enumerated */
-    if (total > ENUM_MAX / e->opt[k]) return 0;
-    total *= e->opt[k];
-  }
-  for (combo = 0; combo < total; ++combo) {
-    sc_int rest = combo;
-    double big = 0.0, small = INFINITY;
-    int regular;
-    for (k = 0; k < e->nb; ++k) {
-      e->digit[k] = rest % e->opt[k];
-      rest /= e->opt[k];
-    }
-    piece_equations(e);
-    memcpy(e->Kc, e->K, sizeof(double) * (size_t)(mt * mt));
-    memcpy(e->qw + mt, e->x, sizeof(double) * (size_t)mt); /* (the right-hand side) */
-    regular = sc_lu_factor(mt, e->K, mt, e->piv);
-    for (i = 0; regular && i < mt; ++i) {
-      big = fmax(big, fabs(e->K[i * mt + i]));
-      small = fmin(small, fabs(e->K[i * mt + i]));
-    }
-    if (regular && small > 1e-12 * big) {
-      sc_lu_solve(mt, e->K, mt, e->piv, e->x);
-      if (!piece_feasible(e)) continue;
-    } else {
-      int got = singular_piece(e);
-      if (got < 0) unsure = 1;
-      if (got <= 0) continue;
-    }
-    if (same_as(e, e->ys, found) >= 0) continue;
-    if (found == 0) memcpy(e->best, e->x, sizeof(double) * (size_t)mt);
-    if (found < SOL_MAX) memcpy(e->ys + e->n * found, e->y, sizeof(double) * (size_t)e->n);
-    ++found;
-  }
-  return (int)(unsure ? -found : found);
-}
-
 /* The pieces of the last inner solve as the next one's start (core_scene_solve_s's `from`). */
 static void pieces(sc_int nbt, const sc_int *kind, const sc_int *start, const double *st,
                    const double *lam, double *from) {
@@ -383,14 +151,10 @@ static void pieces(sc_int nbt, const sc_int *kind, const sc_int *start, const do
   }
 }
 
-/* The fixed point's problem: the convex solve's arguments with the tangent blocks. */
-typedef struct { sc_int n, m, nb, nt, mt, sweeps; const double *M, *f, *mu; double *A, *c, *par;
-  sc_int *kind, *start; const sc_int *lead, *rn; } fr_prob;
-
 /* The inner (Tresca) solve at the bounds s from the pieces `from`: core_scene_solve_s's code,
  * 1 where it did not converge; rb the bounds it gives (bound_of), *r2 = |rb - s|^2, *F its
  * largest force. */
-static int inner(const fr_prob *p, const double *s, const double *from, double *lam,
+static int inner(const sc_fr_prob *p, const double *s, const double *from, double *lam,
                  double *a, double *w, double *st, double *info, double *rb, double *r2,
                  double *F) {
   sc_int j, i;
@@ -419,8 +183,8 @@ int sc_friction_solve(sc_int n, sc_int m, sc_int nb, sc_int nc, const double *M,
   double *d, *mu, *s, *fr, *L, *Z, *G, *b, *g, *pl, *pw, *pa, *pst, *pinfo, *D, *rhs, *r0,
       *sv, *rb, *dv, *Dss, scale[2], res[3];
   sc_enum e;
-  fr_prob pr;
-  int code = 0, ok = 0, same, stall = 0, newton = 0, restarts = 0;
+  sc_fr_prob pr;
+  int code = 0, ok = 0, same, stall = 0, newton = 0, restarts = 0, cands = 0;
   double omega = 1.0, best = INFINITY; /* the passes' relaxation (halved where they stall) */
   *solutions = 0.0;
   if (!T) /* no contact friction in the scene: the convex solve alone */
@@ -472,9 +236,12 @@ int sc_friction_solve(sc_int n, sc_int m, sc_int nb, sc_int nc, const double *M,
   pr.n = n, pr.mt = mt, pr.nb = nb, pr.nt = nt, pr.m = m, pr.sweeps = sweeps, pr.M = M;
   pr.f = f, pr.A = A, pr.c = c, pr.kind = kind, pr.start = start, pr.par = par, pr.mu = mu;
   pr.lead = lead, pr.rn = rn;
-  for (it = 0; it < 4 * FP_MAX; ++it) {
+  it = 0;
+passes:
+  for (; it < 4 * FP_MAX; ++it) {
     double F = 0.0, err = 0.0, r2 = 0.0, r2t = 0.0, Ft = 0.0, t = 1.0;
-    if (it && it % FP_MAX == 0) /* not settled: again from s = 10, 1, 0.1 mu |lam| */
+    if (it == FP_QUICK && !cands) break; /* not settled yet: a few candidates (below) */
+    if (it && it % FP_MAX == 0) /* then again from s = 10, 1, 0.1 mu |lam| */
       for (j = 0, ++restarts, newton = stall = 0, omega = 1.0, best = INFINITY; j < nt; ++j)
         s[j] = 10.0 * pow(0.1, (double)(restarts - 1)) * mu[j] * sc_max_abs(lam, mt);
     code = inner(&pr, s, it ? fr : NULL, lam, a, w, st, info, r0, &r2, &F);
@@ -535,7 +302,7 @@ int sc_friction_solve(sc_int n, sc_int m, sc_int nb, sc_int nc, const double *M,
     int count;
     e.n = n, e.m = m, e.nb = nb, e.nt = nt, e.kind = kind, e.start = start, e.tc = tc;
     e.par = par, e.mu = mu, e.G = G, e.b = b, e.Z = Z, e.g = g, e.scale = scale, e.piv = piv;
-    count = enumerate(&e);
+    count = sc_friction_enumerate(&e);
     *solutions = (double)count;
     if (!ok && count == 1) { /* the one solution, where the fixed point did not settle */
       memcpy(lam, e.best, sizeof(double) * (size_t)mt);
@@ -548,6 +315,13 @@ int sc_friction_solve(sc_int n, sc_int m, sc_int nb, sc_int nc, const double *M,
       }
       info[0] = 0.0, info[2] = info[3] = info[4] = 0.0;
       ok = 1;
+    }
+    if (!ok) { /* the contacts' candidate states solved exactly (5. of the header;
+      scene_friction_states.c): a few after the first start, where they fail the restarts, then
+      more */
+      ok = sc_friction_states(&pr, scale, it > 0 ? fr : NULL, cands ? 0 : 1, lam, a, w, st,
+                              info);
+      if (!ok && !cands++ && it == FP_QUICK) goto passes;
     }
   }
   if (ok) { /* Coulomb's residuals apart, from the accelerations: w = A a + c */
@@ -576,7 +350,7 @@ int sc_friction_solve(sc_int n, sc_int m, sc_int nb, sc_int nc, const double *M,
       for (i = 0; i < mt; ++i) w[i] = sc_dot(A + i * n, a, n) + (c ? c[i] : 0.0);
     }
     res[0] = info[2], res[1] = info[3], res[2] = info[4];
-    coulomb_residuals(m, nt, rn, lead, mu, lam, w, scale, res);
+    sc_coulomb_residuals(m, nt, rn, lead, mu, lam, w, scale, res);
     info[2] = res[0], info[3] = res[1], info[4] = res[2];
     ok = res[0] <= TOL_ACCEPT && res[1] <= TOL_ACCEPT && res[2] <= TOL_ACCEPT;
   }

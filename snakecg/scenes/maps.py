@@ -6,14 +6,19 @@ split, for a given state of every block, into *held* rows ``H`` (a contact held,
 wheel, a wheel or friction set sticking: ``w_H = A_H a = 0``) and rows with a *fixed* force
 ``lam_F`` (a contact that opens: 0; a wheel sliding either way: ``+-mu m g``; a Coulomb or
 anisotropic set sliding at a given point of its boundary). Then, with ``I`` the bodies'
-inertia (snake and objects), ``f = B tau + E f_obj`` (eq. 12) and ``G_HH = A_H I^-1 A_H^T`` (eq. 14)::
+inertia (snake and objects), ``f = B tau + E f_obj`` (eq. 12) and
+``G_HH = A_H I^-1 A_H^T`` (eq. 14)::
 
     lam_H = -G_HH^-1 A_H I^-1 (f + A_F^T lam_F)              (eq. 17)
     a     = I^-1 (f + A_H^T lam_H + A_F^T lam_F)              (eqs. 18, 22-25)
 
-affine in ``tau`` (and ``f_obj``). Where the held rows are dependent (statically
-indeterminate) ``G_HH^-1`` is the pseudo-inverse: the minimum-norm forces, flagged
-``singular``. :func:`scene_problem` builds one configuration's inertia, input map and rows;
+affine in ``tau`` (and ``f_obj``). A contact with Coulomb friction adds its tangent row: held
+where it sticks, its force 0 where it is open, and where it slips its normal row held with the
+force acting along ``A_n -+ mu A_t`` (the friction tied to the normal force), so that
+``A_H I^-1 D_H^T`` (``D_H`` the held rows' force directions) replaces ``G_HH``, no longer
+symmetric. Where the held rows are dependent (statically indeterminate) ``G_HH^-1`` is the
+pseudo-inverse: the minimum-norm forces, flagged ``singular``. :func:`scene_problem` builds
+one configuration's inertia, input map and rows;
 :func:`state_maps` the maps of one state; :func:`maps` checks a user's state and calls both.
 """
 
@@ -44,8 +49,17 @@ class Problem:
     def __init__(self, model, q):
         na, ns, no = model.n_joints, model.n_coordinates, model.scene.n_objects
         qa = np.asarray(q, dtype=float).reshape(1, ns)
-        self.rows, M, self.obj_poses = StateRows(model).rows(qa[0])
+        state_rows = StateRows(model)
+        self.rows, M, self.obj_poses = state_rows.rows(qa[0])
         n = ns + 3 * no
+        m, A = len(self.rows.A), self.rows.A
+        #: a frictional contact's block -> its tangent row (after the m rows), and its mu
+        self.tangent, self.mu = {}, {}
+        fric = [c.row for c in self.rows.contacts if c.mu > 0]
+        if fric:  # (the engine's tangent rows: after the m rows, contact k's at m + k)
+            A = np.vstack([A, state_rows.A[m + np.array(fric)]])
+            for j, k in enumerate(fric):
+                self.tangent[k], self.mu[k] = m + j, float(self.rows.contacts[k].mu)
         self.M, self.M_s = M, M[:ns, :ns].copy()
         self.B = np.zeros((n, na))
         self.B[3:ns] = np.eye(na)
@@ -53,7 +67,7 @@ class Problem:
         self.E[ns:] = np.eye(3 * no)
         self.q = qa[0]
         self.n, self.n_s, self.n_a, self.n_o = n, ns, na, no
-        self.A = self.rows.A
+        self.A = A
         self.kind = list(self.rows.kind)
         self.start = list(self.rows.start)
         self.par = [tuple(map(float, p)) for p in self.rows.par]
@@ -108,10 +122,20 @@ def state_maps(p: Problem, state, angles=None) -> dict:
     the set's boundary (:func:`boundary_point`). Every map is ``X_from_tau`` (a matrix) plus
     ``X_offset`` (the fixed forces' part), and ``X_from_f_obj``."""
     angles = {} if angles is None else angles
-    held, fixed_rows, lam_F = [], [], []
+    held, fixed_rows, lam_F, tied = [], [], [], []
     for b, code in enumerate(state):
         rows = p.block_rows(b)
-        if code == HELD:
+        t = p.tangent.get(b)
+        if t is not None:  # a frictional contact: open, stick, slip either way
+            if code == HELD:
+                held.extend([rows[0], t])
+            elif code == ZERO:
+                fixed_rows.extend([rows[0], t])
+                lam_F.extend([0.0, 0.0])
+            else:  # slip+ (w_t > 0): lam_t = -mu lam_n; slip-: +mu lam_n
+                held.append(rows[0])
+                tied.append((rows[0], t, -p.mu[b] if code == SLIDE_POS else p.mu[b]))
+        elif code == HELD:
             held.extend(rows.tolist())
         else:
             fixed_rows.extend(rows.tolist())
@@ -121,20 +145,32 @@ def state_maps(p: Problem, state, angles=None) -> dict:
     lam_F = np.array(lam_F, dtype=float)
     A, Mi = p.A, p.Minv
     AH, AF = A[H], A[F]
+    # the held rows' forces act along D = A_H, a slipping contact's along its normal row plus
+    # its tangent row times the tied coefficient (-+ mu)
+    DH = AH.copy()
+    for r, t, k in tied:
+        DH[held.index(r)] += k * A[t]
     # the applied generalized force in (tau, f_obj, 1): f = B tau + E f_obj + A_F^T lam_F
     inputs = np.hstack([p.B, p.E, (AF.T @ lam_F)[:, None]])
     singular = False
-    if H.size:
+    if H.size and not tied:
         GHH = AH @ Mi @ AH.T
         s = np.linalg.svd(GHH, compute_uv=False)
         singular = bool(s.size and s[-1] <= PINV_RCOND * s[0])
         lamH = -np.linalg.pinv(GHH, rcond=PINV_RCOND, hermitian=True) @ (AH @ Mi @ inputs)
+    elif H.size:  # A_H a = 0 with a = M^-1 (f + D_H^T lam_H): not symmetric
+        GHD = AH @ Mi @ DH.T
+        s = np.linalg.svd(GHD, compute_uv=False)
+        singular = bool(s.size and s[-1] <= PINV_RCOND * s[0])
+        lamH = -np.linalg.pinv(GHD, rcond=PINV_RCOND) @ (AH @ Mi @ inputs)
     else:
         lamH = np.zeros((0, inputs.shape[1]))
-    a = Mi @ (inputs + AH.T @ lamH)  # eq. 18
+    a = Mi @ (inputs + DH.T @ lamH)  # eq. 18
     lam = np.zeros((A.shape[0], inputs.shape[1]))
     lam[H] = lamH
     lam[F, -1] = lam_F
+    for r, t, k in tied:
+        lam[t] = k * lam[r]
     w = A @ a
     na, no, ns = p.n_a, p.n_o, p.n_s
 
@@ -171,7 +207,8 @@ def block_names(p: Problem, scene) -> list:
     for kd, label in zip(p.kind, p.rows.labels):
         if label[0] == "contact":
             c = p.rows.contacts[label[1]]
-            out.append(f"contact {scene.body_name(*c.a)} - {scene.body_name(*c.b)}")
+            fric = f" (mu {c.mu:g})" if c.mu > 0 else ""
+            out.append(f"contact {scene.body_name(*c.a)} - {scene.body_name(*c.b)}{fric}")
         elif label[0] == "object_ground":
             out.append(f"ground {scene.body_name('object', label[1])} ({_KIND_NAMES[kd]})")
         else:
@@ -184,6 +221,11 @@ _WORDS = {UNILATERAL: {"held": HELD, "open": ZERO},
           BOX: {"stick": HELD, "slide+": SLIDE_POS, "slide-": SLIDE_NEG, "none": ZERO},
           DISC: {"stick": HELD, "none": ZERO},
           SPLIT: {"stick": HELD, "none": ZERO}}
+
+#: a contact with friction (its pair's mu > 0): open, stick (normal and tangent rows held),
+#: slip+ / slip- (the second body sliding along +tangent / -tangent on the first: w_t > 0,
+#: friction -mu lam_n / w_t < 0, +mu lam_n)
+_FRICTION_WORDS = {"open": ZERO, "stick": HELD, "slip+": SLIDE_POS, "slip-": SLIDE_NEG}
 
 
 def _parse_state(p: Problem, names, state):
@@ -202,7 +244,7 @@ def _parse_state(p: Problem, names, state):
     codes, angles, problems = [], {}, []
     for b, s in enumerate(state):
         kd = p.kind[b]
-        words = _WORDS[kd]
+        words = _FRICTION_WORDS if b in p.tangent else _WORDS[kd]
         if kd in (DISC, SPLIT) and not isinstance(s, str):
             try:
                 ang = float(s[1]) if isinstance(s, (list, tuple)) and len(s) == 2 \
@@ -233,13 +275,20 @@ def maps(model, q, *, state=None) -> dict:
     the ground under each link, then the objects' ground friction, as ``forward`` lists
     them): ``"held"``/``"open"`` for a contact, ``"stick"``/``"slide+"``/``"slide-"`` for a
     bounded wheel, ``"held"`` for an ideal wheel, ``"stick"`` or ``("slide", angle)`` for a
-    Coulomb or anisotropic set (sliding at :func:`boundary_point` ``angle``).
+    Coulomb or anisotropic set (sliding at :func:`boundary_point` ``angle``). A contact whose
+    pair has Coulomb friction (``mu_contact``; its name ends in ``(mu ...)``) is ``"open"``,
+    ``"stick"`` (its normal and tangent rows held; the default) or ``"slip+"``/``"slip-"``
+    (its normal row held, its second body sliding along +/- its tangent on the first, the
+    friction force ``-/+ mu lam_n`` along the tangent): each piece keeps every output affine
+    in the torques.
 
     Keys: ``qdd_from_tau`` (n_s, n_a, eq. 22), ``qdd_from_f_obj`` (eq. 23), ``a_obj_from_tau``
     (n_o, 3, n_a, per object, eq. 24), ``a_obj_from_f_obj`` (eq. 25), ``lam_from_tau``,
-    ``lam_from_f_obj`` (m rows, eq. 17), ``w_from_tau``, ``w_from_f_obj`` (the rows'
-    accelerations), each with its ``*_offset`` (the fixed forces' part: ``X = X_from_tau tau +
-    X_from_f_obj f_obj + X_offset``); the forms of the homogeneous part: ``xi_tau`` (eq. 28),
+    ``lam_from_f_obj`` (m rows, eq. 17; with contact friction the frictional contacts'
+    tangent rows after them, ``tangent_rows`` naming each contact's, -1 where none),
+    ``w_from_tau``, ``w_from_f_obj`` (the rows' accelerations), each with its ``*_offset``
+    (the fixed forces' part: ``X = X_from_tau tau + X_from_f_obj f_obj + X_offset``); the
+    forms of the homogeneous part: ``xi_tau`` (eq. 28),
     ``omega_tau`` (eq. 29, summed over objects) and ``omega_tau_each``, ``lambda_form_tau``
     (``lam^T G lam``); ``input_metric`` (``B^T M_s^-1 B``, eq. 31), ``delassus`` (``G``,
     eq. 14); ``singular`` (dependent held rows: minimum-norm forces); ``state`` (codes) and
@@ -259,4 +308,6 @@ def maps(model, q, *, state=None) -> dict:
     codes, angles = _parse_state(p, names, state)
     out = state_maps(p, codes, angles)
     out["blocks"] = names
+    if p.tangent:
+        out["tangent_rows"] = np.array([p.tangent.get(b, -1) for b in range(p.n_blocks)])
     return out

@@ -98,14 +98,14 @@ class GeneralSceneModel(RobotModel):
 
     def _frictionless_contacts(self, what: str) -> None:
         if self.packed.friction:
-            raise InputError(f"{what} is not available with contact friction (mu_contact > 0) "
-                             "yet: its pieces assume frictionless contacts; forward, plot and "
-                             "simulate take it")
+            raise InputError(f"{what} is not available with contact friction (mu_contact > 0): "
+                             "its search over pieces assumes frictionless contacts; forward, "
+                             "plot, simulate and maps (a contact's state open, stick, slip+ or "
+                             "slip-) take it")
 
     def maps(self, q, *, state=None) -> dict:
         """The linear maps at ``q`` for a block state (:func:`snakecg.scenes.maps.maps`)."""
         from .maps import maps
-        self._frictionless_contacts("maps")
         return maps(self, q, state=state)
 
     def extremes(self, q, **kwargs):
