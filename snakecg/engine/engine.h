@@ -60,11 +60,11 @@ int SNAKECG_CR(const double **arg, double **res, sc_int *iw, double *w, int mem)
 int SNAKECG_CR_WORK(sc_int *sz_arg, sc_int *sz_res, sc_int *sz_iw, sc_int *sz_w);
 int SNAKECG_LJ(const double **arg, double **res, sc_int *iw, double *w, int mem);
 int SNAKECG_LJ_WORK(sc_int *sz_arg, sc_int *sz_res, sc_int *sz_iw, sc_int *sz_w);
-#ifdef SNAKECG_LP /* a planar model's link poses, mass matrix, bias forces (scene_*.c) */
+#ifdef SNAKECG_LP /* a planar model's link poses, kinematics with M_s, bias forces (scene_*.c) */
 int SNAKECG_LP(const double **arg, double **res, sc_int *iw, double *w, int mem);
 int SNAKECG_LP_WORK(sc_int *sz_arg, sc_int *sz_res, sc_int *sz_iw, sc_int *sz_w);
-int SNAKECG_MM(const double **arg, double **res, sc_int *iw, double *w, int mem);
-int SNAKECG_MM_WORK(sc_int *sz_arg, sc_int *sz_res, sc_int *sz_iw, sc_int *sz_w);
+int SNAKECG_SK(const double **arg, double **res, sc_int *iw, double *w, int mem);
+int SNAKECG_SK_WORK(sc_int *sz_arg, sc_int *sz_res, sc_int *sz_iw, sc_int *sz_w);
 int SNAKECG_BF(const double **arg, double **res, sc_int *iw, double *w, int mem);
 int SNAKECG_BF_WORK(sc_int *sz_arg, sc_int *sz_res, sc_int *sz_iw, sc_int *sz_w);
 #endif
