@@ -152,6 +152,18 @@ def derive_model(n_joints: int, *, max_joints: int = MAX_SYMBOLIC_JOINTS) -> Mod
         _fn("bias_forces", "Coriolis and centripetal terms h_s of eq. (4).", [q_in, v_in, K_in],
             [("h", h, "n_s x 1")], ch.assignments, equation="(4)")
     )
+    # a general scene's per-sample kinematics in one function: poses, Jacobians and M_s (the
+    # form chosen above) from one chain, so that the joints' sines and cosines are taken once
+    ch = StructuredChain(s)
+    poses, J = ch.link_poses(), ch.link_jacobians()
+    M = {"structured": ch.mass_matrix, "suffix_sums": ch.mass_matrix_suffix_sums,
+         "closed": lambda: closed_form_mass_matrix(s)}[form]()
+    functions.append(
+        _fn("scene_kinematics", "Link poses, Jacobians and M_s at once (one set of sines).",
+            [q_in, K_in],
+            [("poses", poses, "3 x n_l, as link_poses"), ("J", J, "3 n_l x n_s, as link_jacobians"),
+             ("M", M, "n_s x n_s, as mass_matrix")], ch.assignments, equation="(3), (4)")
+    )
 
     # constraint rows (link level) ----------------------------------------------------------
     C = ContactSymbols

@@ -222,3 +222,47 @@ def test_a_flush_face_is_the_two_ends_of_the_overlap_or_its_middle(radius):
             assert got[0].gap == pytest.approx(gap, rel=1e-6)
         got = _contacts(model, q, [-0.125 + 1.1 * tol, y, 0.0], tol)
         assert len(got) == 2
+
+
+@pytest.mark.parametrize("radius", [0.0, 0.01])
+def test_a_box_nearly_flush_on_a_link_against_the_reference(rng, radius):
+    """The pushes' pair: a box lying on link 1 nearly flush (any of its four faces, tilted by
+    1e-12 to 1e-2 rad either way or not at all), along the link anywhere from past its rear
+    end to past its front, from 1e-3 m apart to 1e-3 m inside (and a few deep overlaps):
+    the engine's contacts (surface points, normals, gaps) equal the separating axis
+    reference's (tests/scenes_geometry_reference.py) to 1e-14 of the scene's size, or both
+    refuse the same overlap."""
+    model, q = _one_link_and_box(radius, (0.1, 0.04))
+    size = model.packed.vector[4]
+    P, J = model.link_poses(q), model.link_jacobians(q)
+    tol = 0.035  # the deep overlaps within it (not refused); flush stretches up to 0.1 m
+    compared = flush = deep = 0
+    for trial in range(400):
+        face = int(rng.integers(4))
+        tilt = 0.0 if trial % 5 == 0 else float(rng.choice([-1, 1]) * 10 ** rng.uniform(-12, -2))
+        th = face * np.pi / 2 + tilt
+        half = 0.02 if face % 2 == 0 else 0.05  # the face's distance from the box's centre
+        gap = float(rng.choice([-1, 1]) * 10 ** rng.uniform(-12, -3))
+        if trial % 20 == 1:
+            gap = -float(rng.uniform(0.005, 0.03))  # deep
+        qo = np.array([[rng.uniform(-0.14, 0.14), radius + half + gap, th]])
+        try:
+            ref, _ = rows_of(model.scene, model.masses, P, J, obj_poses=qo, tol=tol)
+        except InputError as exc:
+            with pytest.raises(InputError) as refused:
+                StateRows(model, tol).rows(q, qo)
+            assert str(refused.value) == str(exc)
+            continue
+        rows, _, _ = StateRows(model, tol).rows(q, qo)
+        got = [c for c in rows.contacts if c.b == ("object", 0)]
+        want = [c for c in ref.contacts if c.b == ("object", 0)]
+        assert len(got) == len(want)
+        for c, r in zip(got, want):
+            assert (c.a, c.b, c.row) == (r.a, r.b, r.row)
+            for x, y in ((c.point_a, r.point_a), (c.point_b, r.point_b), (c.normal, r.normal)):
+                np.testing.assert_allclose(x, y, rtol=0, atol=1e-14 * size)
+            assert abs(c.gap - r.gap) <= 1e-14 * size
+        compared += len(got) > 0
+        flush += len(got) == 2
+        deep += any(c.gap < -0.004 for c in got)
+    assert compared >= 350 and flush >= 150 and deep >= 10, (compared, flush, deep)

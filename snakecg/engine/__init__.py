@@ -48,7 +48,7 @@ class Core:
         """scene_rows.c's ``core_scene_rows`` and ``core_scene_gaps``: a general scene's rows,
         and its pairs' distances, at a simulation's state (a ``SceneStateCall``)."""
         self.scene_place = lib.entry_or_none("core_scene_place")
-        """scene_geometry.c's ``core_scene_place``: a general scene's objects placed at link
+        """scene_place.c's ``core_scene_place``: a general scene's objects placed at link
         poses (the placement of its forward)."""
         self.scene_step = lib.entry_or_none("core_scene_step")
         """scene_step.c's ``core_scene_step``: one time step of a general scene (a

@@ -21,8 +21,8 @@
  *   max_sr.c, push.c, wheel_states.c   the queries' solves
  *   pieces.c, sphere.c                 the exact extremes' pieces and faces (exported)
  *   scene_sets.c, scene_piece.c, scene_primal.c, scene_small.c, scene_solve.c   exact solve
- *   scene_geometry.c, scene_rows.c, scene_step.c, scene_run.c   placement, contacts, rows,
- *                   forward, a time step, whole runs and batches of runs
+ *   scene_place.c, scene_geometry.c, scene_rows.c, scene_step.c, scene_run.c   placement,
+ *                   contacts, rows, forward, a time step, whole runs and batches of runs
  *   scene_friction.c  Coulomb friction at a general scene's contacts (tangent rows, its solve)
  *
  * One prefix (sc_), one integer type (sc_int). The library exports the model's prefixed entry
@@ -60,11 +60,11 @@ int SNAKECG_CR(const double **arg, double **res, sc_int *iw, double *w, int mem)
 int SNAKECG_CR_WORK(sc_int *sz_arg, sc_int *sz_res, sc_int *sz_iw, sc_int *sz_w);
 int SNAKECG_LJ(const double **arg, double **res, sc_int *iw, double *w, int mem);
 int SNAKECG_LJ_WORK(sc_int *sz_arg, sc_int *sz_res, sc_int *sz_iw, sc_int *sz_w);
-#ifdef SNAKECG_LP /* a planar model's link poses, mass matrix, bias forces (scene_*.c) */
+#ifdef SNAKECG_LP /* a planar model's link poses, kinematics with M_s, bias forces (scene_*.c) */
 int SNAKECG_LP(const double **arg, double **res, sc_int *iw, double *w, int mem);
 int SNAKECG_LP_WORK(sc_int *sz_arg, sc_int *sz_res, sc_int *sz_iw, sc_int *sz_w);
-int SNAKECG_MM(const double **arg, double **res, sc_int *iw, double *w, int mem);
-int SNAKECG_MM_WORK(sc_int *sz_arg, sc_int *sz_res, sc_int *sz_iw, sc_int *sz_w);
+int SNAKECG_SK(const double **arg, double **res, sc_int *iw, double *w, int mem);
+int SNAKECG_SK_WORK(sc_int *sz_arg, sc_int *sz_res, sc_int *sz_iw, sc_int *sz_w);
 int SNAKECG_BF(const double **arg, double **res, sc_int *iw, double *w, int mem);
 int SNAKECG_BF_WORK(sc_int *sz_arg, sc_int *sz_res, sc_int *sz_iw, sc_int *sz_w);
 #endif
@@ -548,7 +548,7 @@ int SNAKECG_EXPORT(core_scene_solve_s)(sc_int n, sc_int m, sc_int nb, const doub
   const double *f, const double *A, const double *c, const sc_int *kind, const sc_int *start,
   const double *par, sc_int max_sweeps, const double *from, double *lam, double *a, double *w,
   double *state, double *info); /* one sample, from the pieces `from` (3 per block) */
-/* ---- a general scene's shapes, contacts (scene_geometry.c), rows and forward (scene_rows.c) ----
+/* ---- a general scene's shapes (scene_place.c), contacts (scene_geometry.c), rows (scene_rows.c) -
  * The packed scene's header and records' widths (their fields: snakecg/scenes/packing.py). */
 enum { SP_NO = 0, SP_NOB, SP_RADIUS, SP_TOL, SP_SIZE, SP_NG, SP_MG, SP_LINKS, SP_OBJECTS,
        SP_OBSTACLES, SP_GROUND, SP_K, SP_MU, SP_MUC, SP_FRICTION, SP_HEAD = 16, LINK_W = 2,

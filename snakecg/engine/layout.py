@@ -44,9 +44,10 @@ FUNCTIONS = {
 #: compiles no scene_rows.c).
 SCENE_FUNCTIONS = {
     "link_poses": ("LP", ("q", "K"), ("poses",)),
-    "mass_matrix": ("MM", ("q", "K"), ("M",)),
     # scene_step.c: a time step's generalized force
     "bias_forces": ("BF", ("q", "v", "K"), ("h",)),
+    # scene_rows.c: poses, Jacobians and M_s in one call (the joints' sines taken once)
+    "scene_kinematics": ("SK", ("q", "K"), ("poses", "J", "M")),
 }
 
 _IDENT = re.compile(r"[A-Za-z_][A-Za-z0-9_]*\Z")

@@ -1,5 +1,5 @@
-/* snakecg's engine: a general scene's shapes placed (sc_scene_place) and the closest points
- * between them (scene_rows.c).
+/* snakecg's engine: the closest points between a general scene's shapes (placed by
+ * scene_place.c; the rows from them: scene_rows.c).
  *
  * Every shape is a core and a radius: a link's capsule (a segment, the robot's radius), a
  * disc or a peg (a point), a box (a convex polygon, counter-clockwise, radius 0), a wall (a
@@ -16,6 +16,9 @@
  *   1e-9   a parallel stretch worth two contacts, a supporting edge, a point on an edge
  * Where the cores touch (distance within 1e-9 scale) the normal is the touched edge's, or a
  * segment's side toward the other body, or the line between the shapes' centroids.
+ * A link's segment and a box (the pushes' pair): the hull's edges are the box's and the
+ * segment's two directions, known without building the hull, and the separating axes' loops
+ * have constant bounds (the same sums).
  */
 #include "snakecg_layout.h"
 #include "engine.h"
@@ -172,12 +175,72 @@ static int difference_hull(const sc_shape *A, const sc_shape *B, double (*h)[2])
   return n == 1 ? 1 : k - 1;
 }
 
+/* The edges of the difference hull of a segment A (not a point) and a polygon B, without
+ * the hull: B's edges and the segment's two directions, each by its outward normal o (the
+ * right of the edge e, counter-clockwise) as the origin's side x = max (B_j - A_i) . o of
+ * the hull's points (x >= 0 inside; the hull's x = a x e, a its point on the edge), into
+ * e and x; their count (np of B + 2). */
+static int segment_polygon_edges(const sc_shape *A, const sc_shape *B, double (*e)[2],
+                                 double *x) {
+  const double *a0 = A->p[0], *a1 = A->p[1];
+  const double d0 = a1[0] - a0[0], d1 = a1[1] - a0[1];
+  int k, j, m = B->np;
+  for (k = 0; k < m; ++k) { /* B's edge k: its first corner less A's point least along o */
+    const double *b = B->p[k], *c = B->p[(k + 1) % m];
+    const double e0 = c[0] - b[0], e1 = c[1] - b[1];
+    const double x0 = (b[0] - a0[0]) * e1 - (b[1] - a0[1]) * e0;
+    const double x1 = (b[0] - a1[0]) * e1 - (b[1] - a1[1]) * e0;
+    e[k][0] = e0, e[k][1] = e1;
+    x[k] = x0 > x1 ? x0 : x1;
+  }
+  for (k = 0; k < 2; ++k) { /* the segment's two directions: B's corner farthest along o */
+    const double s = k ? -1.0 : 1.0, e0 = s * d0, e1 = s * d1;
+    double best = -INFINITY;
+    for (j = 0; j < m; ++j) {
+      const double v = (B->p[j][0] - a0[0]) * e1 - (B->p[j][1] - a0[1]) * e0;
+      best = v > best ? v : best;
+    }
+    e[m + k][0] = e0, e[m + k][1] = e1;
+    x[m + k] = best;
+  }
+  return m + 2;
+}
+
 /* How deep the cores overlap (> 0; else 0): the origin's depth in their difference hull, from
  * its nearest edge, whose inward normal is the normal n from A to B that parts them by it
- * (the least translation). A hull without interior (points, a segment) holds no depth. */
+ * (the least translation). A hull without interior (points, a segment) holds no depth. A
+ * link's segment and a box: the hull's edges known without it (segment_polygon_edges). */
 static double core_overlap(const sc_shape *A, const sc_shape *B, double *n) {
   double h[33][2], depth = INFINITY;
-  int m = difference_hull(A, B, h), i;
+  int m, i;
+  if (A->kind == SC_SEGMENT && B->kind == SC_POLYGON && B->np >= 3 &&
+      (A->p[0][0] != A->p[1][0] || A->p[0][1] != A->p[1][1])) {
+    double e[6][2], x[6], r[6], least = INFINITY;
+    m = segment_polygon_edges(A, B, e, x);
+    for (i = 0; i < m; ++i)
+      if (x[i] < 0) return 0.0; /* the origin outside an edge's line: apart */
+    for (i = 0; i < m; ++i) { /* the squared distances c^2 = x^2 / |e|^2: the least first */
+      const double q = e[i][0] * e[i][0] + e[i][1] * e[i][1];
+      r[i] = q > 1e-280 && x[i] < 1e100 ? x[i] * x[i] / q : INFINITY;
+      least = r[i] < least ? r[i] : least;
+    }
+    for (i = 0; i < m; ++i) {
+      const double e0 = e[i][0], e1 = e[i][1];
+      double L, c;
+      if (e0 == 0 && e1 == 0) continue; /* a corner repeated */
+      if (least > 1e-200 && least < 1e200 && r[i] > least * 1.000001)
+        continue; /* c certainly beyond the least (relative rounding ~1e-15 of r) */
+      L = hypot(e0, e1);
+      c = x[i] / L;
+      if (c < depth) {
+        depth = c;
+        n[0] = -e1 / L;
+        n[1] = e0 / L;
+      }
+    }
+    return depth > 0 && depth < INFINITY ? depth : 0.0;
+  }
+  m = difference_hull(A, B, h);
   if (m < 3) return 0.0;
   for (i = 0; i < m; ++i) /* the origin outside an edge's line: no depth (c < 0 below) */
     if (h[i][0] * (h[(i + 1) % m][1] - h[i][1]) - h[i][1] * (h[(i + 1) % m][0] - h[i][0]) < 0)
@@ -324,6 +387,27 @@ static int apart(const sc_shape *A, const sc_shape *B, double beyond, double sca
   const double need = beyond + A->radius + B->radius + 1e-9 * scale;
   int s, k, i;
   if (!(need < INFINITY) || A->kind == SC_HALFPLANE || B->kind == SC_HALFPLANE) return 0;
+  if (A->kind == SC_SEGMENT && B->kind == SC_POLYGON && B->np == 4) {
+    /* a link and a box: the same axes and sums, the loops' bounds constants */
+    const double(*p)[2] = (const double(*)[2])B->p, *a0 = A->p[0], *a1 = A->p[1];
+    for (k = -1; k < 4; ++k) {
+      const double *a = k < 0 ? a0 : p[k], *b = k < 0 ? a1 : p[(k + 1) & 3];
+      const double ex = a[1] - b[1], ey = b[0] - a[0];
+      const double v0 = a0[0] * ex + a0[1] * ey, v1 = a1[0] * ex + a1[1] * ey;
+      double lo[2], hi[2], sep;
+      lo[0] = v1 < v0 ? v1 : v0;
+      hi[0] = v1 > v0 ? v1 : v0;
+      lo[1] = hi[1] = p[0][0] * ex + p[0][1] * ey;
+      for (i = 1; i < 4; ++i) {
+        const double v = p[i][0] * ex + p[i][1] * ey;
+        lo[1] = v < lo[1] ? v : lo[1];
+        hi[1] = v > hi[1] ? v : hi[1];
+      }
+      sep = sc_max(lo[1] - hi[0], lo[0] - hi[1]);
+      if (sep > 0 && sep * sep > need * need * (ex * ex + ey * ey)) return 1;
+    }
+    return 0;
+  }
   for (s = 0; s < 2; ++s) {
     const int ne = S[s]->kind == SC_POLYGON ? S[s]->np : S[s]->kind == SC_SEGMENT ? 1 : 0;
     for (k = 0; k < ne; ++k) {
@@ -442,128 +526,4 @@ SC_INTERNAL double sc_shape_closest(const sc_shape *A, const sc_shape *B, double
       out[j].b[k] -= B->radius * out[j].n[k];
     }
   return core - A->radius - B->radius;
-}
-
-static void box_corners(double x, double y, double th, double sx, double sy, sc_shape *s) {
-  double c = cos(th), sn = sin(th), a = sx / 2, b = sy / 2;
-  double lx[4] = {-a, a, a, -a}, ly[4] = {-b, -b, b, b};
-  int i;
-  s->kind = SC_POLYGON;
-  s->np = 4;
-  s->radius = 0.0;
-  for (i = 0; i < 4; ++i) {
-    s->p[i][0] = x + (lx[i] * c + ly[i] * -sn);
-    s->p[i][1] = y + (lx[i] * sn + ly[i] * c);
-  }
-}
-
-/* Every body's shape of the scene packed in pk (links, objects, obstacles) at the link poses
- * P (n_l x 3), with the links' cos and sin of their angles into cs (2 each): the objects at
- * their poses qo (3 n_o; a simulation's state) or, qo null, placed by the scene (a pose, or
- * touching a link on its side at an offset); their poses into pose, the broad phase's
- * bounding circles (a wall: none) into centre (2 each) and reach. With `all` 0, the parts
- * that do not move (the obstacles' shapes and circles, every reach) are kept from an earlier
- * call on the same pk and buffers. */
-SC_INTERNAL void sc_scene_place(const double *pk, const double *P, const double *qo, int all,
-                                double *cs, sc_shape *shape, double *pose, double *centre,
-                                double *reach) {
-  const double *lk = pk + (sc_int)pk[SP_LINKS], r = pk[SP_RADIUS];
-  const sc_int no = (sc_int)pk[SP_NO], nob = (sc_int)pk[SP_NOB], nl = SNAKECG_NL;
-  sc_int i, j, k;
-  for (i = 0; i < nl; ++i) {
-    double c = cos(P[3 * i + 2]), s = sin(P[3 * i + 2]), *e0 = shape[i].p[0],
-           *e1 = shape[i].p[1], L = lk[LINK_W * i + 1];
-    cs[2 * i] = c;
-    cs[2 * i + 1] = s;
-    e0[0] = P[3 * i] - lk[LINK_W * i] * c;
-    e0[1] = P[3 * i + 1] - lk[LINK_W * i] * s;
-    e1[0] = e0[0] + L * c;
-    e1[1] = e0[1] + L * s;
-    shape[i].kind = SC_SEGMENT;
-    shape[i].np = 2;
-    shape[i].radius = r;
-    centre[2 * i] = 0.5 * (e0[0] + e1[0]);
-    centre[2 * i + 1] = 0.5 * (e0[1] + e1[1]);
-    if (all) reach[i] = 0.5 * L + r;
-  }
-  for (j = 0; j < no; ++j) {
-    const double *o = pk + (sc_int)pk[SP_OBJECTS] + OBJ_W * j;
-    double *ps = pose + 3 * j;
-    sc_shape *sh = shape + nl + j;
-    if (qo) {
-      ps[0] = qo[3 * j];
-      ps[1] = qo[3 * j + 1];
-      ps[2] = qo[3 * j + 2];
-    } else if (o[6] == 0.0) {
-      ps[0] = o[7];
-      ps[1] = o[8];
-      ps[2] = o[9];
-    } else { /* on the named side of link k, the contact at offset from its rear end */
-      sc_int lnk = (sc_int)o[7];
-      const double *rear = shape[lnk].p[0], c = cs[2 * lnk], s = cs[2 * lnk + 1];
-      double h = o[9] * (r + o[10]);
-      ps[0] = rear[0] + o[8] * c - h * s;
-      ps[1] = rear[1] + o[8] * s + h * c;
-      ps[2] = P[3 * lnk + 2];
-    }
-    if (o[0] == 1.0) {
-      sh->kind = SC_POINT;
-      sh->np = 1;
-      sh->radius = o[3];
-      sh->p[0][0] = ps[0];
-      sh->p[0][1] = ps[1];
-    } else {
-      box_corners(ps[0], ps[1], ps[2], o[1], o[2], sh);
-    }
-    centre[2 * (nl + j)] = ps[0]; /* a disc's centre; a box's, its corners' mean */
-    centre[2 * (nl + j) + 1] = ps[1];
-    if (all) reach[nl + j] = o[0] == 1.0 ? o[3] : 0.5 * hypot(o[1], o[2]);
-  }
-  for (k = 0; all && k < nob; ++k) {
-    const double *o = pk + (sc_int)pk[SP_OBSTACLES] + OBS_W * k;
-    sc_shape *sh = shape + nl + no + k;
-    double *c = centre + 2 * (nl + no + k), far = 0.0;
-    sh->radius = 0.0;
-    sh->p[0][0] = o[1];
-    sh->p[0][1] = o[2];
-    if (o[0] == 0.0) {
-      sh->kind = SC_POINT;
-      sh->np = 1;
-      sh->radius = o[3];
-    } else if (o[0] == 1.0) {
-      sh->kind = SC_HALFPLANE;
-      sh->np = 1;
-      sh->normal[0] = o[4];
-      sh->normal[1] = o[5];
-    } else {
-      sh->kind = SC_POLYGON;
-      sh->np = 4;
-      for (i = 0; i < 4; ++i) {
-        sh->p[i][0] = o[6 + 2 * i];
-        sh->p[i][1] = o[7 + 2 * i];
-      }
-    }
-    sc_shape_centroid(sh, c);
-    for (j = 0; j < sh->np; ++j) far = fmax(far, hypot(sh->p[j][0] - c[0], sh->p[j][1] - c[1]));
-    reach[nl + no + k] = sh->kind == SC_HALFPLANE ? INFINITY : far + sh->radius;
-  }
-}
-
-/* The objects' poses (3 n_o each) of the scene packed in pk at n configurations' link poses
- * P (n_l x 3 each), as the forward places them (sc_scene_place): the one home of the
- * placement that the drawing and a simulation's start read. Returns 0, or -1 out of memory. */
-int SNAKECG_EXPORT(core_scene_place)(const double *pk, sc_int n, const double *P,
-                                     double *pose) {
-  const sc_int no = (sc_int)pk[SP_NO], nb = SNAKECG_NL + no;
-  sc_shape *shape = (sc_shape *)malloc(sizeof(sc_shape) * (size_t)nb);
-  double *d = (double *)malloc(sizeof(double) * (size_t)(2 * SNAKECG_NL + 3 * nb));
-  sc_int i;
-  const int ok = shape && d;
-  if (ok)
-    for (i = 0; i < n; ++i) /* the parts that do not move (all = 0) are not read */
-      sc_scene_place(pk, P + 3 * SNAKECG_NL * i, 0, 0, d, shape, pose + 3 * no * i,
-                     d + 2 * SNAKECG_NL, d + 2 * SNAKECG_NL + 2 * nb);
-  free(shape);
-  free(d);
-  return ok ? 0 : -1;
 }

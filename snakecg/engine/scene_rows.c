@@ -240,19 +240,19 @@ static void metrics(sc_scene_work *sw, const double *a, double *out) {
 static int kinematics(sc_scene_work *sw, const double *q, int mass) {
   sc_work_t *ws = &sw->ws;
   const double *K = sw->pk + (sc_int)sw->pk[SP_K];
-  ws->arg[LP_IN_q] = q;
-  ws->arg[LP_IN_K] = K;
+  if (mass) { /* the three in one generated function: the joints' sines taken once */
+    ws->arg[SK_IN_q] = q, ws->arg[SK_IN_K] = K;
+    ws->res[SK_OUT_poses] = sw->P;
+    ws->res[SK_OUT_J] = sw->J;
+    ws->res[SK_OUT_M] = sw->Ms;
+    return SNAKECG_SK(ws->arg, ws->res, ws->iw, ws->w, 0) != 0;
+  }
+  ws->arg[LP_IN_q] = q, ws->arg[LP_IN_K] = K;
   ws->res[LP_OUT_poses] = sw->P;
   if (SNAKECG_LP(ws->arg, ws->res, ws->iw, ws->w, 0)) return 1;
-  ws->arg[LJ_IN_q] = q;
-  ws->arg[LJ_IN_K] = K;
+  ws->arg[LJ_IN_q] = q, ws->arg[LJ_IN_K] = K;
   ws->res[LJ_OUT_J] = sw->J;
-  if (SNAKECG_LJ(ws->arg, ws->res, ws->iw, ws->w, 0)) return 1;
-  if (!mass) return 0;
-  ws->arg[MM_IN_q] = q;
-  ws->arg[MM_IN_K] = K;
-  ws->res[MM_OUT_M] = sw->Ms;
-  return SNAKECG_MM(ws->arg, ws->res, ws->iw, ws->w, 0) != 0;
+  return SNAKECG_LJ(ws->arg, ws->res, ws->iw, ws->w, 0) != 0;
 }
 
 /* The bodies' full inertia (M_s; m, m, I per object), n x n row-major, into M. */
@@ -359,7 +359,7 @@ enum { SW_HEAD = (sizeof(sc_scene_work) + sizeof(double) - 1) / sizeof(double) }
  * -1 out of memory. With own 0 the rows' room (A, par, kind, start: mcap rows) is the
  * caller's to set and none of what mcap scales is allocated (a state's rows). */
 static int work_alloc(sc_scene_work *sw, const double *pk, sc_int ccap, sc_int mcap, int own) {
-  const sc_work_fn fns[] = {SNAKECG_LP_WORK, SNAKECG_LJ_WORK, SNAKECG_MM_WORK};
+  const sc_work_fn fns[] = {SNAKECG_LP_WORK, SNAKECG_LJ_WORK, SNAKECG_SK_WORK};
   const sc_int mc = own ? mcap : 0;
   sc_int n, nd, k, i, sz[4], most[4] = {0, 0, 0, 0};
   double *d;

@@ -1,7 +1,7 @@
 /* GENERATED FILE - DO NOT EDIT. C code emitted by CasADi for mass_matrix() of
  * generated/na3/ (see its model.py), plus its batched driver.
  * Regenerate with: python -m snakecg_derive --checked-in
- * spec sha256: 3c75675586cbb18c18b0081852c5ffec6f5c7950260709aa31731b6dde9e81ec
+ * spec sha256: a7d8999f10b490bf5f2b83eb1f6ffb4351ed516ba0b1e6c242f689e34feec41a
  * tools: sympy 1.14.0, casadi 3.8.2, jinja2 3.1.6
  */
 /* How to prefix internal symbols */

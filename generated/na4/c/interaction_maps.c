@@ -1,7 +1,7 @@
 /* GENERATED FILE - DO NOT EDIT. C code emitted by CasADi for interaction_maps() of
  * generated/na4/ (see its model.py), plus its batched driver.
  * Regenerate with: python -m snakecg_derive --checked-in
- * spec sha256: 6c4026fa5ecb8d23c43983793addde84d9142ffbea962d43534c40b6999d0390
+ * spec sha256: 12c4b8af26c9076865b78defc7f612c0db7d58189cff37ae79b4d828054cbcc2
  * tools: sympy 1.14.0, casadi 3.8.2, jinja2 3.1.6
  */
 /* How to prefix internal symbols */

@@ -1,7 +1,7 @@
 /* GENERATED FILE - DO NOT EDIT. C code emitted by CasADi for constrained_dynamics() of
  * generated/na5/ (see its model.py), plus its batched driver.
  * Regenerate with: python -m snakecg_derive --checked-in
- * spec sha256: 9f3807667a8b6853bb31e3e06a1b6e612300a8ff3b142d0ce2ff10ee68615c20
+ * spec sha256: 31887cb66cfce0f15b05000e38db6c7ed945497ecc568e0987b88702131870a6
  * tools: sympy 1.14.0, casadi 3.8.2, jinja2 3.1.6
  */
 /* How to prefix internal symbols */

@@ -1,7 +1,7 @@
 /* GENERATED FILE - DO NOT EDIT. C code emitted by CasADi for constrained_dynamics() of
  * generated/na6/ (see its model.py), plus its batched driver.
  * Regenerate with: python -m snakecg_derive --checked-in
- * spec sha256: 7d93219a711a38df30401c314e7bcdee5e7a3f4624365a96487963c4667ff715
+ * spec sha256: f7610683561c20788ddf3d0525215e49565f7ade947806d15b1c4c2a12bd39c7
  * tools: sympy 1.14.0, casadi 3.8.2, jinja2 3.1.6
  */
 /* How to prefix internal symbols */

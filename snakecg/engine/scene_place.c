@@ -1,0 +1,131 @@
+/* snakecg's engine: a general scene's shapes placed at a configuration (sc_scene_place: the
+ * links' segments at their poses, the objects at theirs or placed by the scene, the obstacles
+ * once) and the objects' placement for the drawing and a simulation's start
+ * (core_scene_place). Their closest points: scene_geometry.c.
+ */
+#include "snakecg_layout.h"
+#include "engine.h"
+
+static void box_corners(double x, double y, double th, double sx, double sy, sc_shape *s) {
+  double c = cos(th), sn = sin(th), a = sx / 2, b = sy / 2;
+  double lx[4] = {-a, a, a, -a}, ly[4] = {-b, -b, b, b};
+  int i;
+  s->kind = SC_POLYGON;
+  s->np = 4;
+  s->radius = 0.0;
+  for (i = 0; i < 4; ++i) {
+    s->p[i][0] = x + (lx[i] * c + ly[i] * -sn);
+    s->p[i][1] = y + (lx[i] * sn + ly[i] * c);
+  }
+}
+
+/* Every body's shape of the scene packed in pk (links, objects, obstacles) at the link poses
+ * P (n_l x 3), with the links' cos and sin of their angles into cs (2 each): the objects at
+ * their poses qo (3 n_o; a simulation's state) or, qo null, placed by the scene (a pose, or
+ * touching a link on its side at an offset); their poses into pose, the broad phase's
+ * bounding circles (a wall: none) into centre (2 each) and reach. With `all` 0, the parts
+ * that do not move (the obstacles' shapes and circles, every reach) are kept from an earlier
+ * call on the same pk and buffers. */
+SC_INTERNAL void sc_scene_place(const double *pk, const double *P, const double *qo, int all,
+                                double *cs, sc_shape *shape, double *pose, double *centre,
+                                double *reach) {
+  const double *lk = pk + (sc_int)pk[SP_LINKS], r = pk[SP_RADIUS];
+  const sc_int no = (sc_int)pk[SP_NO], nob = (sc_int)pk[SP_NOB], nl = SNAKECG_NL;
+  sc_int i, j, k;
+  for (i = 0; i < nl; ++i) {
+    double c = cos(P[3 * i + 2]), s = sin(P[3 * i + 2]), *e0 = shape[i].p[0],
+           *e1 = shape[i].p[1], L = lk[LINK_W * i + 1];
+    cs[2 * i] = c;
+    cs[2 * i + 1] = s;
+    e0[0] = P[3 * i] - lk[LINK_W * i] * c;
+    e0[1] = P[3 * i + 1] - lk[LINK_W * i] * s;
+    e1[0] = e0[0] + L * c;
+    e1[1] = e0[1] + L * s;
+    shape[i].kind = SC_SEGMENT;
+    shape[i].np = 2;
+    shape[i].radius = r;
+    centre[2 * i] = 0.5 * (e0[0] + e1[0]);
+    centre[2 * i + 1] = 0.5 * (e0[1] + e1[1]);
+    if (all) reach[i] = 0.5 * L + r;
+  }
+  for (j = 0; j < no; ++j) {
+    const double *o = pk + (sc_int)pk[SP_OBJECTS] + OBJ_W * j;
+    double *ps = pose + 3 * j;
+    sc_shape *sh = shape + nl + j;
+    if (qo) {
+      ps[0] = qo[3 * j];
+      ps[1] = qo[3 * j + 1];
+      ps[2] = qo[3 * j + 2];
+    } else if (o[6] == 0.0) {
+      ps[0] = o[7];
+      ps[1] = o[8];
+      ps[2] = o[9];
+    } else { /* on the named side of link k, the contact at offset from its rear end */
+      sc_int lnk = (sc_int)o[7];
+      const double *rear = shape[lnk].p[0], c = cs[2 * lnk], s = cs[2 * lnk + 1];
+      double h = o[9] * (r + o[10]);
+      ps[0] = rear[0] + o[8] * c - h * s;
+      ps[1] = rear[1] + o[8] * s + h * c;
+      ps[2] = P[3 * lnk + 2];
+    }
+    if (o[0] == 1.0) {
+      sh->kind = SC_POINT;
+      sh->np = 1;
+      sh->radius = o[3];
+      sh->p[0][0] = ps[0];
+      sh->p[0][1] = ps[1];
+    } else {
+      box_corners(ps[0], ps[1], ps[2], o[1], o[2], sh);
+    }
+    centre[2 * (nl + j)] = ps[0]; /* a disc's centre; a box's, its corners' mean */
+    centre[2 * (nl + j) + 1] = ps[1];
+    if (all) reach[nl + j] = o[0] == 1.0 ? o[3] : 0.5 * hypot(o[1], o[2]);
+  }
+  for (k = 0; all && k < nob; ++k) {
+    const double *o = pk + (sc_int)pk[SP_OBSTACLES] + OBS_W * k;
+    sc_shape *sh = shape + nl + no + k;
+    double *c = centre + 2 * (nl + no + k), far = 0.0;
+    sh->radius = 0.0;
+    sh->p[0][0] = o[1];
+    sh->p[0][1] = o[2];
+    if (o[0] == 0.0) {
+      sh->kind = SC_POINT;
+      sh->np = 1;
+      sh->radius = o[3];
+    } else if (o[0] == 1.0) {
+      sh->kind = SC_HALFPLANE;
+      sh->np = 1;
+      sh->normal[0] = o[4];
+      sh->normal[1] = o[5];
+    } else {
+      sh->kind = SC_POLYGON;
+      sh->np = 4;
+      for (i = 0; i < 4; ++i) {
+        sh->p[i][0] = o[6 + 2 * i];
+        sh->p[i][1] = o[7 + 2 * i];
+      }
+    }
+    sc_shape_centroid(sh, c);
+    for (j = 0; j < sh->np; ++j) far = fmax(far, hypot(sh->p[j][0] - c[0], sh->p[j][1] - c[1]));
+    reach[nl + no + k] = sh->kind == SC_HALFPLANE ? INFINITY : far + sh->radius;
+  }
+}
+
+/* The objects' poses (3 n_o each) of the scene packed in pk at n configurations' link poses
+ * P (n_l x 3 each), as the forward places them (sc_scene_place): the one home of the
+ * placement that the drawing and a simulation's start read. Returns 0, or -1 out of memory. */
+int SNAKECG_EXPORT(core_scene_place)(const double *pk, sc_int n, const double *P,
+                                     double *pose) {
+  const sc_int no = (sc_int)pk[SP_NO], nb = SNAKECG_NL + no;
+  sc_shape *shape = (sc_shape *)malloc(sizeof(sc_shape) * (size_t)nb);
+  double *d = (double *)malloc(sizeof(double) * (size_t)(2 * SNAKECG_NL + 3 * nb));
+  sc_int i;
+  const int ok = shape && d;
+  if (ok)
+    for (i = 0; i < n; ++i) /* the parts that do not move (all = 0) are not read */
+      sc_scene_place(pk, P + 3 * SNAKECG_NL * i, 0, 0, d, shape, pose + 3 * no * i,
+                     d + 2 * SNAKECG_NL, d + 2 * SNAKECG_NL + 2 * nb);
+  free(shape);
+  free(d);
+  return ok ? 0 : -1;
+}
