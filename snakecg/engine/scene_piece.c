@@ -21,11 +21,21 @@
 
 #include "snakecg_layout.h"
 #include "engine.h"
+#include "scene_piece.h"
 
 /* held rows dependent where a pivot of their equations falls below this ratio to the first
  * (snakecg.solver.PIVOT_TOL): nearly dependent rows are statically indeterminate to double
  * precision, their forces are taken minimum-norm rather than huge and cancelling */
 #define DEP_TOL 1e-10
+/* the angles' Newton matrix factored by Cholesky where its pivots stay above this ratio to its
+ * largest diagonal entry (far from DEP_TOL: the same rank as the pivoted factor's) */
+#define CHOL_TOL 1e-8
+/* a pass's Newton stops early where a block breaks the KKT conditions by more than EARLY_TOL
+ * (relative) and by EARLY_MARGIN times its change over the last full step, the residual having
+ * fallen by EARLY_RATE at least over it (so the rest of the way moves it less) */
+#define EARLY_TOL 1e-6
+#define EARLY_MARGIN 3.0
+#define EARLY_RATE 0.5
 
 /* w = G lam + b */
 SC_INTERNAL void sc_update_w(sc_problem *p) { sc_matvec_plus(p->m, p->G, p->lam, p->b, p->w); }
@@ -45,16 +55,56 @@ static double reduced(sc_int n2, const double *S, const double *wt, const double
   return v;
 }
 
+/* The held forces at the sliding forces' change D: lam_H += d0 - G_HH^+ G_HS D, that is
+ * d0 - P [L^-T z; 0] with z = D^-1 Y D (V = D^-1 Y, L the factor in A; z: rank scratch). */
+static void held_forces(sc_int h, sc_int rank, sc_int n2, const double *A, const sc_int *ph,
+                        const sc_int *hr, const double *V, const double *d0, const double *D,
+                        double *z, double *lam) {
+  sc_int i, k, c;
+  for (i = 0; i < rank; ++i) {
+    const double *restrict vi = V + i * n2;
+    double v = 0.0;
+    for (c = 0; c < n2; ++c) v += vi[c] * D[c];
+    z[i] = v;
+  }
+  for (i = rank - 1; i >= 0; --i)
+    for (k = i + 1; k < rank; ++k) z[i] -= A[k * h + i] * z[k];
+  for (i = 0; i < h; ++i) lam[hr[i]] += d0[i];
+  for (i = 0; i < rank; ++i) lam[hr[ph[i]]] -= z[i];
+}
+
+/* How far block k breaks the KKT conditions that scene_solve.c's kkt switches on (relative to
+ * its own tolerance's scale; at most 0: not): a held block's forces l outside its set, a
+ * sliding 2-D block's acceleration w (2) along its force's outward normal. */
+static double breach(const sc_problem *p, sc_int k, const double *l, const double *w) {
+  const double *q = p->par + 3 * k;
+  double P[2], nx, ny;
+  switch (p->kind[k]) {
+    case K_UNILATERAL: return p->state[k] == S_HELD ? -l[0] / p->fscale : -1.0;
+    case K_BOX: return p->state[k] == S_HELD && q[0] > 0 ? fabs(l[0]) / q[0] - 1.0 : -1.0;
+    case K_DISC:
+    case K_SPLIT:
+      sc_block_P(p, k, l, P);
+      if (p->state[k] == S_HELD) return sqrt(P[0] * l[0] * l[0] + P[1] * l[1] * l[1]) - 1.0;
+      nx = P[0] * l[0];
+      ny = P[1] * l[1];
+      return (w[0] * nx + w[1] * ny) / (sqrt(nx * nx + ny * ny) * p->wscale);
+    default: return -1.0;
+  }
+}
+
 /* The piece's equations from the current lam (pivots above rc kept); fn_out: their largest
  * residual after (held rows: |w|, sliding blocks: |T . w| / |T|). Returns the rank defect of
  * the held rows' and the angles' matrices. Scratch: work, iwork (scene_solve_work's). */
-static sc_int piece(sc_problem *p, double rc, double *work, sc_int *iwork, double *fn_out) {
+static sc_int piece(sc_problem *p, double rc, double *work, sc_int *iwork, double *fn_out,
+                    int *early) {
   const sc_int m = p->m, nb = p->nb;
   const double *G = p->G;
-  sc_int *hr = iwork, *sl = hr + m, *ph = sl + nb, *pj = ph + m;
+  sc_int *hr = iwork, *sl = hr + m, *ph = sl + nb, *pj = ph + m, *sr = pj + nb;
   sc_int h = 0, ns = 0, n2, k, i, s, t, a, c, it, rank = 0, rj = 0;
-  double *X, *S, *J, *d0, *sc, *sc2, *th, *th0, *T, *F, *dx, *l0, *D, *wt, *ws, *W, fn = 0.0,
-         v = 0.0;
+  double *X, *S, *J, *d0, *sc, *sc2, *th, *th0, *T, *F, *dx, *l0, *D, *wt, *ws, *W, *Jc, *bp,
+         fn = 0.0, v = 0.0, fprev = INFINITY;
+  int full = 0, known = 0, stop = 0;
   for (k = 0; k < nb; ++k) {
     sc_int r = p->start[k], nk = sc_block_size(p->kind[k]);
     if (p->state[k] == S_ZERO)
@@ -83,6 +133,8 @@ static sc_int piece(sc_problem *p, double rc, double *work, sc_int *iwork, doubl
   wt = D + n2;
   ws = wt + n2;
   W = ws + n2; /* h x n2 */
+  Jc = W + h * n2;
+  bp = Jc + ns * ns;
   for (s = 0; s < ns; ++s) {
     double *l = p->lam + p->start[sl[s]];
     th[s] = sc_angle_of(p, sl[s], l);
@@ -91,31 +143,45 @@ static sc_int piece(sc_problem *p, double rc, double *work, sc_int *iwork, doubl
     l0[2 * s + 1] = l[1];
     D[2 * s] = D[2 * s + 1] = 0.0;
   }
+  for (c = 0; c < n2; ++c) sr[c] = p->start[sl[c / 2]] + c % 2;
   sc_update_w(p);
   if (h > 0) {
     for (i = 0; i < h; ++i) {
       for (t = 0; t <= i; ++t) work[i * h + t] = G[hr[i] * m + hr[t]];
-      for (c = 0; c < n2; ++c) X[i * n2 + c] = -G[hr[i] * m + p->start[sl[c / 2]] + c % 2];
       sc[i] = -p->w[hr[i]];
     }
     rank = sc_psd_solve(h, work, h, sc, rc, d0, sc2, ph);
-    sc_psd_resolve(h, work, h, rank, ph, n2, X, X, W);
   }
-  for (a = 0; a < n2; ++a) { /* S = G_SS + G_SH X, wt = w_S + G_SH d0 */
-    const double *ga = G + (p->start[sl[a / 2]] + a % 2) * m;
-    double *restrict sa = S + a * n2;
-    double wa = p->w[p->start[sl[a / 2]] + a % 2];
-    for (c = 0; c < n2; ++c) sa[c] = ga[p->start[sl[c / 2]] + c % 2];
-    for (i = 0; i < h; ++i) {
-      const double *restrict xi = X + i * n2;
-      const double g = ga[hr[i]];
-      wa += g * d0[i];
-      for (c = 0; c < n2; ++c) sa[c] += g * xi[c];
+  /* S = G_SS - G_SH G_HH^+ G_HS = G_SS - Y^T D^-1 Y with Y = L^-1 (P^T G_HS) on the kept rows
+   * (G_HH = P L D L^T P^T), its upper triangle then mirrored: exactly symmetric */
+  for (i = 0; i < rank; ++i) {
+    const double *gi = G + hr[ph[i]] * m;
+    double *restrict yi = X + i * n2, *restrict vi = W + i * n2;
+    for (c = 0; c < n2; ++c) yi[c] = gi[sr[c]];
+    for (k = 0; k < i; ++k) {
+      const double l = work[i * h + k], *restrict yk = X + k * n2;
+      for (c = 0; c < n2; ++c) yi[c] -= l * yk[c];
     }
+    for (c = 0; c < n2; ++c) vi[c] = yi[c] / work[i * h + i];
+  }
+  for (a = 0; a < n2; ++a) {
+    const double *ga = G + sr[a] * m;
+    double *restrict sa = S + a * n2;
+    double wa = p->w[sr[a]]; /* wt = w_S + G_SH d0 */
+    for (c = a; c < n2; ++c) sa[c] = ga[sr[c]];
+    for (i = 0; i < h; ++i) wa += ga[hr[i]] * d0[i];
     wt[a] = wa;
   }
-  for (a = 0; a < n2; ++a) /* symmetric to rounding: made exactly so */
-    for (c = 0; c < a; ++c) S[a * n2 + c] = S[c * n2 + a] = 0.5 * (S[a * n2 + c] + S[c * n2 + a]);
+  for (i = 0; i < rank; ++i) {
+    const double *restrict yi = X + i * n2, *restrict vi = W + i * n2;
+    for (a = 0; a < n2; ++a) {
+      const double y = yi[a];
+      double *restrict sa = S + a * n2;
+      for (c = a; c < n2; ++c) sa[c] -= y * vi[c];
+    }
+  }
+  for (a = 0; a < n2; ++a)
+    for (c = 0; c < a; ++c) S[a * n2 + c] = S[c * n2 + a];
   for (it = 0; it < 40 && ns > 0; ++it) { /* Newton on the angles */
     double v0 = it ? v : reduced(n2, S, wt, D, ws), tstep = 1.0, step = 0.0;
     sc_int ls;
@@ -126,6 +192,22 @@ static sc_int piece(sc_problem *p, double rc, double *work, sc_int *iwork, doubl
       fn = sc_max(fn, fabs(F[s]) / (sqrt(Ts[0] * Ts[0] + Ts[1] * Ts[1]) + 1e-300));
     }
     if (it > 0 && fn <= 1e-15 * p->wscale) break; /* (the first step always: its rank) */
+    if (*early && it > 0 && full && fn < EARLY_RATE * fprev) { /* a pass that will switch */
+      double *lt = sc;
+      memcpy(lt, p->lam, sizeof(double) * (size_t)m);
+      if (h > 0) held_forces(h, rank, n2, work, ph, hr, W, d0, D, sc2, lt);
+      for (k = s = 0; k < nb; ++k) {
+        double e;
+        if (p->state[k] == S_ZERO) continue;
+        e = breach(p, k, lt + p->start[k], p->state[k] == S_SLIDE ? ws + 2 * s++ : NULL);
+        if (known && e > EARLY_TOL && e > EARLY_MARGIN * fabs(e - bp[k])) stop = 1;
+        bp[k] = e;
+      }
+      known = 1;
+      if (stop) break;
+    } else
+      known = 0;
+    fprev = fn;
     for (s = 0; s < ns; ++s) {
       const double *Ts = T + 2 * s;
       for (t = 0; t <= s; ++t) {
@@ -139,7 +221,14 @@ static sc_int piece(sc_problem *p, double rc, double *work, sc_int *iwork, doubl
       }
       F[s] = -F[s];
     }
-    rj = sc_psd_solve(ns, J, ns, F, rc, dx, sc2, pj);
+    for (s = 0; s < ns * ns; ++s) Jc[s] = J[s]; /* (Cholesky where J is well inside the
+      positive definite cone; the pivoted LDL^T, which drops dependent angles, elsewhere) */
+    if (sc_cholesky(ns, Jc, ns, CHOL_TOL)) {
+      for (s = 0; s < ns; ++s) dx[s] = F[s];
+      sc_cholesky_solve(ns, Jc, ns, dx);
+      rj = ns;
+    } else
+      rj = sc_psd_solve(ns, J, ns, F, rc, dx, sc2, pj);
     for (s = 0; s < ns; ++s) th0[s] = th[s];
     for (ls = 0; ls < 40; ++ls, tstep *= 0.5) { /* the step, halved while the dual rises */
       for (s = 0; s < ns; ++s) {
@@ -152,6 +241,7 @@ static sc_int piece(sc_problem *p, double rc, double *work, sc_int *iwork, doubl
       v = reduced(n2, S, wt, D, ws); /* (ws at the step taken: the next iteration's) */
       if (v <= v0 + 1e-14 * (fabs(v0) + p->fscale * p->wscale)) break;
     }
+    full = ls == 0;
     for (s = 0; s < ns; ++s) {
       k = sl[s];
       step = sc_max(step, fabs(tstep * dx[s]) *
@@ -159,11 +249,7 @@ static sc_int piece(sc_problem *p, double rc, double *work, sc_int *iwork, doubl
     }
     if (!(step > 1e-15 * p->fscale)) break;
   }
-  for (i = 0; i < h; ++i) { /* the held forces at the sliding ones */
-    double v = d0[i];
-    for (c = 0; c < n2; ++c) v += X[i * n2 + c] * D[c];
-    p->lam[hr[i]] += v;
-  }
+  if (h > 0) held_forces(h, rank, n2, work, ph, hr, W, d0, D, sc2, p->lam);
   sc_update_w(p);
   fn = 0.0;
   for (i = 0; i < h; ++i) fn = sc_max(fn, fabs(p->w[hr[i]]));
@@ -173,18 +259,19 @@ static sc_int piece(sc_problem *p, double rc, double *work, sc_int *iwork, doubl
                       (sqrt(Ts[0] * Ts[0] + Ts[1] * Ts[1]) + 1e-300));
   }
   *fn_out = fn;
+  *early = stop;
   return (h - rank) + (ns - rj);
 }
 
 /* piece, solved again from its own result while the residual is above rounding (at most
  * three times): where it does not halve with rows dropped and stays above 1e-12 of the
- * scale, they are kept (pivots to 1e-15). */
-static sc_int rounds(sc_problem *p, double *work, sc_int *iwork, double *fn) {
+ * scale, they are kept (pivots to 1e-15). early: as sc_polish_pass's. */
+static sc_int rounds(sc_problem *p, double *work, sc_int *iwork, double *fn, int *early) {
   double rc = DEP_TOL, prev = INFINITY;
   sc_int defect = 0, round;
   for (round = 0; round < 3; ++round) {
-    defect = piece(p, rc, work, iwork, fn);
-    if (!(*fn > 1e-14 * p->wscale)) break;
+    defect = piece(p, rc, work, iwork, fn, early);
+    if (*early || !(*fn > 1e-14 * p->wscale)) break;
     if (defect > 0 && !(*fn < 0.5 * prev) && *fn > 1e-12 * p->wscale) rc = 1e-15;
     prev = *fn;
   }
@@ -193,16 +280,24 @@ static sc_int rounds(sc_problem *p, double *work, sc_int *iwork, double *fn) {
 
 /* The piece's equations solved (returns their rank defect, 0: independent); where that stops
  * short of rounding with a sliding block that does not move (at its set's limit: the angle's
- * equation is degenerate there), that block is held instead and the piece solved again. */
-SC_INTERNAL sc_int sc_polish(sc_problem *p, double *work, sc_int *iwork) {
+ * equation is degenerate there), that block is held instead and the piece solved again.
+ * early (in): the Newton may stop where a block certainly breaks the KKT conditions (out: it
+ * did; lam and w are then the iterate's, for the active set to switch on). */
+SC_INTERNAL sc_int sc_polish_pass(sc_problem *p, double *work, sc_int *iwork, int *early) {
   double fn;
-  sc_int k, defect = rounds(p, work, iwork, &fn);
+  sc_int k, defect = rounds(p, work, iwork, &fn, early);
   int again = 0;
-  if (!(fn > 1e-14 * p->wscale)) return defect;
+  if (*early || !(fn > 1e-14 * p->wscale)) return defect;
   for (k = 0; k < p->nb; ++k)
     if (p->state[k] == S_SLIDE && p->kind[k] >= K_DISC && sc_still(p, k)) {
       p->state[k] = S_HELD;
       again = 1;
     }
-  return again ? rounds(p, work, iwork, &fn) : defect;
+  return again ? rounds(p, work, iwork, &fn, early) : defect;
+}
+
+/* sc_polish_pass solved to rounding */
+SC_INTERNAL sc_int sc_polish(sc_problem *p, double *work, sc_int *iwork) {
+  int early = 0;
+  return sc_polish_pass(p, work, iwork, &early);
 }

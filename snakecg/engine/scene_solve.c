@@ -45,6 +45,7 @@
 
 #include "snakecg_layout.h"
 #include "engine.h"
+#include "scene_piece.h"
 
 /* sample status */
 enum { ST_SOLVED = 0, ST_NOT_CONVERGED = 1, ST_SINGULAR_MASS = 2, ST_BAD_INPUT = 3 };
@@ -204,11 +205,15 @@ static int kkt(sc_problem *p, double *res, int do_switch) {
 static int active_set(sc_problem *p, sc_int max_pass, double *work, sc_int *iwork,
                       sc_int *passes, sc_int *defect, double *res) {
   sc_int pass;
+  int early = 1, stopped;
   for (pass = 0; pass < max_pass; ++pass) {
     ++*passes;
-    *defect = sc_polish(p, work, iwork);
-    if (!kkt(p, res, 1))
-      return res[0] <= TOL_ACCEPT && res[1] <= TOL_ACCEPT && res[2] <= TOL_ACCEPT;
+    stopped = early;
+    *defect = sc_polish_pass(p, work, iwork, &stopped);
+    if (!kkt(p, res, 1)) {
+      if (!stopped) return res[0] <= TOL_ACCEPT && res[1] <= TOL_ACCEPT && res[2] <= TOL_ACCEPT;
+      early = 0; /* (stopped early, yet nothing to switch: solved to rounding next) */
+    }
   }
   return 0;
 }
