@@ -124,8 +124,8 @@ static sc_int piece(sc_problem *p, double rc, double *work, sc_int *iwork, doubl
   sc = d0 + h;
   sc2 = sc + m;
   th = sc2 + m;
-  th0 = th + ns;
-  F = th0 + ns;
+  th0 = th + n2;
+  F = th0 + n2;
   dx = F + ns;
   T = dx + ns;
   l0 = T + n2;
@@ -137,8 +137,8 @@ static sc_int piece(sc_problem *p, double rc, double *work, sc_int *iwork, doubl
   bp = Jc + ns * ns;
   for (s = 0; s < ns; ++s) {
     double *l = p->lam + p->start[sl[s]];
-    th[s] = sc_angle_of(p, sl[s], l);
-    sc_on_boundary(p, sl[s], th[s], l, T + 2 * s);
+    sc_direction_of(p, sl[s], l, th + 2 * s);
+    sc_on_boundary(p, sl[s], th + 2 * s, l, T + 2 * s);
     l0[2 * s] = l[0];
     l0[2 * s + 1] = l[1];
     D[2 * s] = D[2 * s + 1] = 0.0;
@@ -229,12 +229,15 @@ static sc_int piece(sc_problem *p, double rc, double *work, sc_int *iwork, doubl
       rj = ns;
     } else
       rj = sc_psd_solve(ns, J, ns, F, rc, dx, sc2, pj);
-    for (s = 0; s < ns; ++s) th0[s] = th[s];
+    for (s = 0; s < n2; ++s) th0[s] = th[s];
     for (ls = 0; ls < 40; ++ls, tstep *= 0.5) { /* the step, halved while the dual rises */
       for (s = 0; s < ns; ++s) {
         double *l = p->lam + p->start[sl[s]];
-        th[s] = th0[s] + tstep * dx[s];
-        sc_on_boundary(p, sl[s], th[s], l, T + 2 * s);
+        const double *u = th0 + 2 * s, e = tstep * dx[s], x = u[0] - e * u[1],
+                     y = u[1] + e * u[0], r = 1.0 / sqrt(x * x + y * y);
+        th[2 * s] = x * r; /* (turned by atan(e): the angle's Newton step to second order) */
+        th[2 * s + 1] = y * r;
+        sc_on_boundary(p, sl[s], th + 2 * s, l, T + 2 * s);
         D[2 * s] = l[0] - l0[2 * s];
         D[2 * s + 1] = l[1] - l0[2 * s + 1];
       }
