@@ -21,7 +21,6 @@
 
 #include "snakecg_layout.h"
 #include "engine.h"
-#include "scene_piece.h"
 
 /* held rows dependent where a pivot of their equations falls below this ratio to the first
  * (snakecg.solver.PIVOT_TOL): nearly dependent rows are statically indeterminate to double
@@ -97,7 +96,7 @@ static double breach(const sc_problem *p, sc_int k, const double *l, const doubl
  * residual after (held rows: |w|, sliding blocks: |T . w| / |T|). Returns the rank defect of
  * the held rows' and the angles' matrices. Scratch: work, iwork (scene_solve_work's). */
 static sc_int piece(sc_problem *p, double rc, double *work, sc_int *iwork, double *fn_out,
-                    int *early) {
+                    int kept, int *early) {
   const sc_int m = p->m, nb = p->nb;
   const double *G = p->G;
   sc_int *hr = iwork, *sl = hr + m, *ph = sl + nb, *pj = ph + m, *sr = pj + nb;
@@ -107,10 +106,16 @@ static sc_int piece(sc_problem *p, double rc, double *work, sc_int *iwork, doubl
   int full = 0, known = 0, stop = 0;
   for (k = 0; k < nb; ++k) {
     sc_int r = p->start[k], nk = sc_block_size(p->kind[k]);
-    if (p->state[k] == S_ZERO)
-      for (i = 0; i < nk; ++i) p->lam[r + i] = 0.0;
-    else if (p->state[k] == S_SLIDE && p->kind[k] == K_BOX)
-      p->lam[r] = p->lam[r] >= 0 ? p->par[3 * k] : -p->par[3 * k];
+    if (p->state[k] == S_ZERO || (p->state[k] == S_SLIDE && p->kind[k] == K_BOX))
+      for (i = 0; i < nk; ++i) { /* (fixed forces; w kept along where it was G lam + b) */
+        const double l = p->state[k] == S_ZERO ? 0.0 : p->lam[r] >= 0 ? p->par[3 * k] :
+                         -p->par[3 * k], d = l - p->lam[r + i];
+        const double *restrict col = G + (r + i) * m; /* G symmetric: column r + i */
+        double *restrict wv = p->w;
+        p->lam[r + i] = l;
+        if (kept && d != 0.0)
+          for (t = 0; t < m; ++t) wv[t] += col[t] * d;
+      }
     else if (p->state[k] == S_SLIDE)
       sl[ns++] = k;
     else
@@ -137,14 +142,21 @@ static sc_int piece(sc_problem *p, double rc, double *work, sc_int *iwork, doubl
   bp = Jc + ns * ns;
   for (s = 0; s < ns; ++s) {
     double *l = p->lam + p->start[sl[s]];
+    const double e0 = l[0], e1 = l[1];
     sc_direction_of(p, sl[s], l, th + 2 * s);
-    sc_on_boundary(p, sl[s], th + 2 * s, l, T + 2 * s);
+    sc_on_boundary(p, sl[s], th + 2 * s, l, T + 2 * s); /* (radially onto the boundary) */
+    if (kept && (l[0] != e0 || l[1] != e1)) {
+      const double d0v = l[0] - e0, d1v = l[1] - e1, *restrict c0 = G + (l - p->lam) * m,
+                   *restrict c1 = c0 + m;
+      double *restrict wv = p->w;
+      for (t = 0; t < m; ++t) wv[t] += c0[t] * d0v + c1[t] * d1v;
+    }
     l0[2 * s] = l[0];
     l0[2 * s + 1] = l[1];
     D[2 * s] = D[2 * s + 1] = 0.0;
   }
   for (c = 0; c < n2; ++c) sr[c] = p->start[sl[c / 2]] + c % 2;
-  sc_update_w(p);
+  if (!kept) sc_update_w(p);
   if (h > 0) {
     for (i = 0; i < h; ++i) {
       for (t = 0; t <= i; ++t) work[i * h + t] = G[hr[i] * m + hr[t]];
@@ -268,12 +280,13 @@ static sc_int piece(sc_problem *p, double rc, double *work, sc_int *iwork, doubl
 
 /* piece, solved again from its own result while the residual is above rounding (at most
  * three times): where it does not halve with rows dropped and stays above 1e-12 of the
- * scale, they are kept (pivots to 1e-15). early: as sc_polish_pass's. */
-static sc_int rounds(sc_problem *p, double *work, sc_int *iwork, double *fn, int *early) {
+ * scale, they are kept (pivots to 1e-15). early: as sc_polish's. */
+static sc_int rounds(sc_problem *p, double *work, sc_int *iwork, double *fn, int kept,
+                     int *early) {
   double rc = DEP_TOL, prev = INFINITY;
   sc_int defect = 0, round;
-  for (round = 0; round < 3; ++round) {
-    defect = piece(p, rc, work, iwork, fn, early);
+  for (round = 0; round < 3; ++round, kept = 1) {
+    defect = piece(p, rc, work, iwork, fn, kept, early);
     if (*early || !(*fn > 1e-14 * p->wscale)) break;
     if (defect > 0 && !(*fn < 0.5 * prev) && *fn > 1e-12 * p->wscale) rc = 1e-15;
     prev = *fn;
@@ -285,10 +298,11 @@ static sc_int rounds(sc_problem *p, double *work, sc_int *iwork, double *fn, int
  * short of rounding with a sliding block that does not move (at its set's limit: the angle's
  * equation is degenerate there), that block is held instead and the piece solved again.
  * early (in): the Newton may stop where a block certainly breaks the KKT conditions (out: it
- * did; lam and w are then the iterate's, for the active set to switch on). */
-SC_INTERNAL sc_int sc_polish_pass(sc_problem *p, double *work, sc_int *iwork, int *early) {
+ * did; lam and w are then the iterate's, for the active set to switch on). kept: w is
+ * G lam + b on entry (updated along as the piece fixes forces, not recomputed). */
+SC_INTERNAL sc_int sc_polish(sc_problem *p, double *work, sc_int *iwork, int kept, int *early) {
   double fn;
-  sc_int k, defect = rounds(p, work, iwork, &fn, early);
+  sc_int k, defect = rounds(p, work, iwork, &fn, kept, early);
   int again = 0;
   if (*early || !(fn > 1e-14 * p->wscale)) return defect;
   for (k = 0; k < p->nb; ++k)
@@ -296,11 +310,5 @@ SC_INTERNAL sc_int sc_polish_pass(sc_problem *p, double *work, sc_int *iwork, in
       p->state[k] = S_HELD;
       again = 1;
     }
-  return again ? rounds(p, work, iwork, &fn, early) : defect;
-}
-
-/* sc_polish_pass solved to rounding */
-SC_INTERNAL sc_int sc_polish(sc_problem *p, double *work, sc_int *iwork) {
-  int early = 0;
-  return sc_polish_pass(p, work, iwork, &early);
+  return again ? rounds(p, work, iwork, &fn, 1, early) : defect;
 }

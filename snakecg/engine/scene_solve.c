@@ -45,7 +45,6 @@
 
 #include "snakecg_layout.h"
 #include "engine.h"
-#include "scene_piece.h"
 
 /* sample status */
 enum { ST_SOLVED = 0, ST_NOT_CONVERGED = 1, ST_SINGULAR_MASS = 2, ST_BAD_INPUT = 3 };
@@ -201,15 +200,15 @@ static int kkt(sc_problem *p, double *res, int do_switch) {
 
 /* Active-set passes from the states in p: the piece's equations solved (polish), the KKT
  * conditions checked and the violated pieces switched, at most max_pass times. Returns 1 when
- * a piece's solution satisfies them (res: its residuals), else 0. */
+ * a piece's solution satisfies them (res: its residuals), else 0. kept: w = G lam + b on entry. */
 static int active_set(sc_problem *p, sc_int max_pass, double *work, sc_int *iwork,
-                      sc_int *passes, sc_int *defect, double *res) {
+                      sc_int *passes, sc_int *defect, double *res, int kept) {
   sc_int pass;
   int early = 1, stopped;
-  for (pass = 0; pass < max_pass; ++pass) {
+  for (pass = 0; pass < max_pass; ++pass, kept = 1) { /* (each pass leaves w = G lam + b) */
     ++*passes;
     stopped = early;
-    *defect = sc_polish_pass(p, work, iwork, &stopped);
+    *defect = sc_polish(p, work, iwork, kept, &stopped);
     if (!kkt(p, res, 1)) {
       if (!stopped) return res[0] <= TOL_ACCEPT && res[1] <= TOL_ACCEPT && res[2] <= TOL_ACCEPT;
       early = 0; /* (stopped early, yet nothing to switch: solved to rounding next) */
@@ -340,7 +339,7 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
   }
   if (!ok && from) { /* the active set from the caller's pieces (start_from) */
     start_from(&p, from);
-    ok = active_set(&p, FROM_PASSES, rest, iw2, &passes, &defect, res);
+    ok = active_set(&p, FROM_PASSES, rest, iw2, &passes, &defect, res, 0);
     if (!ok) { /* else today's order from zero forces */
       for (i = 0; i < m; ++i) lam[i] = 0.0;
       for (k = 0; k < nb; ++k) gam[k] = 0.0;
@@ -354,7 +353,7 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
                  kind[k] == K_SPLIT ? !(q[2] > 0 && (q[0] > 0 || q[1] > 0)) : 0;
       state[k] = zero ? S_ZERO : S_HELD;
     }
-    ok = active_set(&p, GUESS_PASSES, rest, iw2, &passes, &defect, res);
+    ok = active_set(&p, GUESS_PASSES, rest, iw2, &passes, &defect, res, 0);
     if (!ok) /* else the sweeps from zero forces */
       for (i = 0; i < m; ++i) lam[i] = 0.0;
   }
@@ -373,7 +372,7 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
     if (same && s == chunk) continue;
     memcpy(prev, state, sizeof(sc_int) * (size_t)nb);
     memcpy(keep, lam, sizeof(double) * (size_t)m);
-    ok = active_set(&p, s < chunk ? 20 : TRY_PASSES, rest, iw2, &passes, &defect, res);
+    ok = active_set(&p, s < chunk ? 20 : TRY_PASSES, rest, iw2, &passes, &defect, res, 1);
     if (!ok && s == chunk) {
       memcpy(lam, keep, sizeof(double) * (size_t)m);
       if (chunk < 16 * CHUNK) chunk *= 2;
@@ -400,12 +399,13 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
     for (k = 0; k < nb && dep == 1; ++k) {
       double keep_lam[512], keep_w[512], keep_res[3] = {res[0], res[1], res[2]};
       sc_int keep_state = state[k], d2;
+      int solved = 0; /* (to rounding: no early stop) */
       if (kind[k] != K_UNILATERAL || state[k] != S_HELD || lam[start[k]] > 1e-12 * p.fscale)
         continue;
       memcpy(keep_lam, lam, sizeof(double) * (size_t)m);
       memcpy(keep_w, w, sizeof(double) * (size_t)m);
       state[k] = S_ZERO;
-      d2 = sc_polish(&p, rest, iw2);
+      d2 = sc_polish(&p, rest, iw2, 0, &solved);
       if (d2 >= 0 && !kkt(&p, res, 0) && res[0] <= TOL_ACCEPT && res[1] <= TOL_ACCEPT &&
           res[2] <= TOL_ACCEPT) {
         dep = sc_min_norm_face(&p, Z, rest);
