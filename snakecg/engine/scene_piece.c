@@ -45,10 +45,14 @@ static double reduced(sc_int n2, const double *S, const double *wt, const double
   sc_int a, c;
   double v = 0.0;
   for (a = 0; a < n2; ++a) ws[a] = wt[a];
-  for (c = 0; c < n2; ++c) { /* S symmetric: column c is row c */
+  for (c = 0; c + 3 < n2; c += 4) { /* S symmetric: column c is row c (four at a time) */
+    const double *restrict s0 = S + c * n2, *restrict s1 = s0 + n2, *restrict s2 = s1 + n2,
+                 *restrict s3 = s2 + n2, d0 = D[c], d1 = D[c + 1], d2 = D[c + 2], d3 = D[c + 3];
+    for (a = 0; a < n2; ++a) ws[a] += (s0[a] * d0 + s1[a] * d1) + (s2[a] * d2 + s3[a] * d3);
+  }
+  for (; c < n2; ++c) {
     const double *restrict sc = S + c * n2;
-    if (D[c] != 0.0)
-      for (a = 0; a < n2; ++a) ws[a] += sc[a] * D[c];
+    for (a = 0; a < n2; ++a) ws[a] += sc[a] * D[c];
   }
   for (a = 0; a < n2; ++a) v += 0.5 * D[a] * (wt[a] + ws[a]);
   return v;
@@ -60,12 +64,7 @@ static void held_forces(sc_int h, sc_int rank, sc_int n2, const double *A, const
                         const sc_int *hr, const double *V, const double *d0, const double *D,
                         double *z, double *lam) {
   sc_int i, k, c;
-  for (i = 0; i < rank; ++i) {
-    const double *restrict vi = V + i * n2;
-    double v = 0.0;
-    for (c = 0; c < n2; ++c) v += vi[c] * D[c];
-    z[i] = v;
-  }
+  for (i = 0; i < rank; ++i) z[i] = sc_dot(V + i * n2, D, n2);
   for (i = rank - 1; i >= 0; --i)
     for (k = i + 1; k < rank; ++k) z[i] -= A[k * h + i] * z[k];
   for (i = 0; i < h; ++i) lam[hr[i]] += d0[i];
@@ -170,7 +169,13 @@ static sc_int piece(sc_problem *p, double rc, double *work, sc_int *iwork, doubl
     const double *gi = G + hr[ph[i]] * m;
     double *restrict yi = X + i * n2, *restrict vi = W + i * n2;
     for (c = 0; c < n2; ++c) yi[c] = gi[sr[c]];
-    for (k = 0; k < i; ++k) {
+    for (k = 0; k + 3 < i; k += 4) { /* (four rows at a time) */
+      const double *li = work + i * h + k, *restrict y0 = X + k * n2, *restrict y1 = y0 + n2,
+                   *restrict y2 = y1 + n2, *restrict y3 = y2 + n2;
+      for (c = 0; c < n2; ++c)
+        yi[c] -= (li[0] * y0[c] + li[1] * y1[c]) + (li[2] * y2[c] + li[3] * y3[c]);
+    }
+    for (; k < i; ++k) {
       const double l = work[i * h + k], *restrict yk = X + k * n2;
       for (c = 0; c < n2; ++c) yi[c] -= l * yk[c];
     }
@@ -184,11 +189,16 @@ static sc_int piece(sc_problem *p, double rc, double *work, sc_int *iwork, doubl
     for (i = 0; i < h; ++i) wa += ga[hr[i]] * d0[i];
     wt[a] = wa;
   }
-  for (i = 0; i < rank; ++i) {
-    const double *restrict yi = X + i * n2, *restrict vi = W + i * n2;
-    for (a = 0; a < n2; ++a) {
-      const double y = yi[a];
-      double *restrict sa = S + a * n2;
+  for (a = 0; a < n2; ++a) {
+    double *restrict sa = S + a * n2;
+    for (i = 0; i + 3 < rank; i += 4) { /* (four rows of Y at a time) */
+      const double *y = X + i * n2 + a, *restrict v0 = W + i * n2, *restrict v1 = v0 + n2,
+                   *restrict v2 = v1 + n2, *restrict v3 = v2 + n2;
+      const double y0 = y[0], y1 = y[n2], y2 = y[2 * n2], y3 = y[3 * n2];
+      for (c = a; c < n2; ++c) sa[c] -= (y0 * v0[c] + y1 * v1[c]) + (y2 * v2[c] + y3 * v3[c]);
+    }
+    for (; i < rank; ++i) {
+      const double y = X[i * n2 + a], *restrict vi = W + i * n2;
       for (c = a; c < n2; ++c) sa[c] -= y * vi[c];
     }
   }
