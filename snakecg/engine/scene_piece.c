@@ -64,7 +64,16 @@ static void held_forces(sc_int h, sc_int rank, sc_int n2, const double *A, const
                         const sc_int *hr, const double *V, const double *d0, const double *D,
                         double *z, double *lam) {
   sc_int i, k, c;
-  for (i = 0; i < rank; ++i) z[i] = sc_dot(V + i * n2, D, n2);
+  for (i = 0; i < rank; ++i) { /* (four partial sums) */
+    const double *restrict vi = V + i * n2;
+    double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;
+    for (c = 0; c + 3 < n2; c += 4) {
+      s0 += vi[c] * D[c], s1 += vi[c + 1] * D[c + 1];
+      s2 += vi[c + 2] * D[c + 2], s3 += vi[c + 3] * D[c + 3];
+    }
+    for (; c < n2; ++c) s0 += vi[c] * D[c];
+    z[i] = (s0 + s1) + (s2 + s3);
+  }
   for (i = rank - 1; i >= 0; --i)
     for (k = i + 1; k < rank; ++k) z[i] -= A[k * h + i] * z[k];
   for (i = 0; i < h; ++i) lam[hr[i]] += d0[i];

@@ -67,23 +67,27 @@ static sc_int sweeps(sc_problem *p, sc_int max_sweeps, double rel) {
     double change = 0.0, size = 0.0;
     for (k = 0; k < p->nb; ++k) {
       sc_int r = p->start[k], nk = sc_block_size(p->kind[k]);
-      double c[2], l[2];
+      double c[2], l[2], d[2];
       for (i = 0; i < nk; ++i) {
         c[i] = p->w[r + i];
         for (j = 0; j < nk; ++j) c[i] -= p->G[(r + i) * m + r + j] * p->lam[r + j];
       }
       sc_block_min(p, k, c, l);
       for (i = 0; i < nk; ++i) {
-        double d = l[i] - p->lam[r + i];
-        const double *col = p->G + (r + i) * m; /* G symmetric: column r + i */
-        if (fabs(d) > change) change = fabs(d);
+        d[i] = l[i] - p->lam[r + i];
+        if (fabs(d[i]) > change) change = fabs(d[i]);
         if (fabs(l[i]) > size) size = fabs(l[i]);
         p->lam[r + i] = l[i];
-        if (d != 0.0) {
-          double *restrict wv = p->w;
-          const double *restrict cv = col;
-          for (j = 0; j < m; ++j) wv[j] += cv[j] * d;
-        }
+      }
+      { /* w along: G symmetric, its columns r.. are its rows */
+        double *restrict wv = p->w;
+        const double *restrict c0 = p->G + r * m, *restrict c1 = c0 + m;
+        if (nk == 2 && d[0] != 0.0 && d[1] != 0.0)
+          for (j = 0; j < m; ++j) wv[j] += c0[j] * d[0] + c1[j] * d[1];
+        else
+          for (i = 0; i < nk; ++i)
+            if (d[i] != 0.0)
+              for (j = 0; j < m; ++j) wv[j] += c0[i * m + j] * d[i];
       }
     }
     if (!(change > rel * (size > p->fscale ? size : p->fscale))) break;
