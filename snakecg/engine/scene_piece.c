@@ -74,8 +74,10 @@ static void held_forces(sc_int h, sc_int rank, sc_int n2, const double *A, const
     for (; c < n2; ++c) s0 += vi[c] * D[c];
     z[i] = (s0 + s1) + (s2 + s3);
   }
-  for (i = rank - 1; i >= 0; --i)
-    for (k = i + 1; k < rank; ++k) z[i] -= A[k * h + i] * z[k];
+  for (k = rank - 1; k > 0; --k) { /* L^T x = z by L's rows (contiguous) */
+    const double *restrict ak = A + k * h, zk = z[k];
+    for (i = 0; i < k; ++i) z[i] -= ak[i] * zk;
+  }
   for (i = 0; i < h; ++i) lam[hr[i]] += d0[i];
   for (i = 0; i < rank; ++i) lam[hr[ph[i]]] -= z[i];
 }
