@@ -64,6 +64,8 @@ static void held_forces(sc_int h, sc_int rank, sc_int n2, const double *A, const
                         const sc_int *hr, const double *V, const double *d0, const double *D,
                         double *z, double *lam) {
   sc_int i, k, c;
+  for (i = 0; i < h; ++i) lam[hr[i]] += d0[i];
+  if (n2 == 0) return;
   for (i = 0; i < rank; ++i) { /* (four partial sums) */
     const double *restrict vi = V + i * n2;
     double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;
@@ -78,7 +80,6 @@ static void held_forces(sc_int h, sc_int rank, sc_int n2, const double *A, const
     const double *restrict ak = A + k * h, zk = z[k];
     for (i = 0; i < k; ++i) z[i] -= ak[i] * zk;
   }
-  for (i = 0; i < h; ++i) lam[hr[i]] += d0[i];
   for (i = 0; i < rank; ++i) lam[hr[ph[i]]] -= z[i];
 }
 
@@ -176,7 +177,7 @@ static sc_int piece(sc_problem *p, double rc, double *work, sc_int *iwork, doubl
   }
   /* S = G_SS - G_SH G_HH^+ G_HS = G_SS - Y^T D^-1 Y with Y = L^-1 (P^T G_HS) on the kept rows
    * (G_HH = P L D L^T P^T), its upper triangle then mirrored: exactly symmetric */
-  for (i = 0; i < rank; ++i) {
+  for (i = 0; i < rank && n2 > 0; ++i) {
     const double *gi = G + hr[ph[i]] * m;
     double *restrict yi = X + i * n2, *restrict vi = W + i * n2;
     for (c = 0; c < n2; ++c) yi[c] = gi[sr[c]];
