@@ -191,7 +191,7 @@ static sc_int piece(sc_problem *p, double rc, double *work, sc_int *iwork, doubl
       const double l = work[i * h + k], *restrict yk = X + k * n2;
       for (c = 0; c < n2; ++c) yi[c] -= l * yk[c];
     }
-    for (c = 0; c < n2; ++c) vi[c] = yi[c] / work[i * h + i];
+    for (c = 0; c < n2; ++c) vi[c] = yi[c] * (1.0 / work[i * h + i]); /* (one division) */
   }
   for (a = 0; a < n2; ++a) {
     const double *ga = G + sr[a] * m;
