@@ -94,6 +94,8 @@ static double breach(const sc_problem *p, sc_int k, const double *l, const doubl
     case K_BOX: return p->state[k] == S_HELD && q[0] > 0 ? fabs(l[0]) / q[0] - 1.0 : -1.0;
     case K_DISC:
     case K_SPLIT:
+      if (!(p->kind[k] == K_DISC ? q[0] > 0 : q[2] > 0 && (q[0] > 0 || q[1] > 0)))
+        return -1.0; /* (the set {0}: kkt checks nothing there) */
       sc_block_P(p, k, l, P);
       if (p->state[k] == S_HELD) return sqrt(P[0] * l[0] * l[0] + P[1] * l[1] * l[1]) - 1.0;
       nx = P[0] * l[0];
@@ -233,7 +235,8 @@ static sc_int piece(sc_problem *p, double rc, double *work, sc_int *iwork, doubl
       for (k = s = 0; k < nb; ++k) {
         double e;
         if (p->state[k] == S_ZERO) continue;
-        e = breach(p, k, lt + p->start[k], p->state[k] == S_SLIDE ? ws + 2 * s++ : NULL);
+        e = breach(p, k, lt + p->start[k], /* (ws: the sliding 2-D blocks' in sl's order) */
+                   p->state[k] == S_SLIDE && p->kind[k] >= K_DISC ? ws + 2 * s++ : NULL);
         if (known && e > EARLY_TOL && e > EARLY_MARGIN * fabs(e - bp[k])) stop = 1;
         bp[k] = e;
       }
