@@ -3,19 +3,23 @@
  *
  * On a piece (every block held, zero, or sliding on its set's boundary; scene_solve.c's
  * header), the unknowns are the forces lam_H of the held rows and the angle t_k of every
- * sliding 2-D block's force on its set's boundary (sc_on_boundary); zero rows and saturated
- * boxes have their forces fixed. The equations are the dual's stationarity on the piece:
- * w_H = 0 and T_k . w_k = 0 (no acceleration along the boundary), w = G lam + b. The held
- * equations are linear: with G_HH = P L D L^T P^T by diagonal pivoting (dependent rows,
- * pivots at most DEP_TOL of the first, dropped: the basic solution), factored once,
+ * sliding 2-D block's force on its set's boundary (sc_on_boundary, by its direction
+ * (cos t_k, sin t_k)); zero rows and saturated boxes have their forces fixed. The equations
+ * are the dual's stationarity on the piece: w_H = 0 and T_k . w_k = 0 (no acceleration along
+ * the boundary), w = G lam + b. The held equations are linear: with G_HH = P L D L^T P^T by
+ * diagonal pivoting (dependent rows, pivots at most DEP_TOL of the first, dropped: the basic
+ * solution), factored once,
  *   lam_H = lam_H0 + d0 + X (lam_S - lam_S0),   G_HH d0 = -w_H0,   G_HH X = -G_HS,
  * keeps w_H = 0 for every sliding force lam_S, and the sliding rows then read
- *   w_S = wt + S (lam_S - lam_S0),   S = G_SS + G_SH X (the Schur complement),
- * the gradient of the dual with the held forces eliminated (Hessian S). Newton on the angles
- * alone: Jacobian T^T S T + diag(max(0, -lam_k . w_k)) (the reduced Hessian on the sets'
- * boundaries, dT/dt = -lam), a few unknowns, factored by diagonal pivoting, the step halved
- * until the reduced dual does not rise. Where rows nearly dependent leave a residual that
- * does not fall, they are kept (pivots down to 1e-15) and the piece solved again. */
+ *   w_S = wt + S (lam_S - lam_S0),   S = G_SS + G_SH X = G_SS - Y^T D^-1 Y  (Y = L^-1 P^T G_HS),
+ * the gradient of the dual with the held forces eliminated (Hessian S; X itself is never
+ * formed). Newton on the angles alone: Jacobian T^T S T + diag(max(0, -lam_k . w_k)) (the
+ * reduced Hessian on the sets' boundaries, dT/dt = -lam), a few unknowns, factored by
+ * Cholesky (by diagonal pivoting where nearly singular), each direction turned by atan of its
+ * step, the step halved until the reduced dual does not rise. Where rows nearly dependent
+ * leave a residual that does not fall, they are kept (pivots down to 1e-15) and the piece
+ * solved again. An active-set pass may stop the Newton early where a block certainly breaks
+ * the KKT conditions (sc_polish). */
 #include <math.h>
 #include <string.h>
 

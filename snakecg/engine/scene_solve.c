@@ -24,7 +24,8 @@
  *      and saturated boxes; the held rows' forces eliminated (G_HH factored once by diagonal
  *      pivoting, dependent rows dropped), Newton on one angle per sliding 2-D block;
  *   2. the KKT conditions checked on the result; a violated piece is switched (a primal-dual
- *      active-set step) and step 1 repeated;
+ *      active-set step) and step 1 repeated (step 1's Newton left early where a block will
+ *      certainly be switched: its breach beyond three times its last step's change);
  *   3. the pieces start from the caller's where given (core_scene_solve_s: a time step's,
  *      the last step's pieces: that piece first solved in the primal, scene_primal.c, without
  *      G, and kept where its KKT conditions hold; else a few passes), then from the held
