@@ -528,10 +528,10 @@ SC_INTERNAL int sc_in_set(const sc_problem *p, sc_int k, double *l, double tol, 
 SC_INTERNAL int sc_still(const sc_problem *p, sc_int k);
 SC_INTERNAL int sc_min_norm_face(sc_problem *p, const double *Z, double *work);
 SC_INTERNAL void sc_block_min(const sc_problem *p, sc_int k, const double *c, double *l);
-SC_INTERNAL void sc_on_boundary(const sc_problem *p, sc_int k, double t, double *l, double *T);
-SC_INTERNAL double sc_angle_of(const sc_problem *p, sc_int k, const double *l);
+SC_INTERNAL void sc_on_boundary(const sc_problem *, sc_int, const double *u, double *l, double *T);
+SC_INTERNAL void sc_direction_of(const sc_problem *p, sc_int k, const double *l, double *u);
 SC_INTERNAL void sc_update_w(sc_problem *p); /* scene_piece.c: w = G lam + b; a piece */
-SC_INTERNAL sc_int sc_polish(sc_problem *p, double *work, sc_int *iwork);
+SC_INTERNAL sc_int sc_polish(sc_problem *p, double *work, sc_int *iwork, int kept, int *early);
 SC_INTERNAL int sc_primal_piece(sc_problem *p, const double *Z, const double *g, const double *c,
   double *work, sc_int *iwork, sc_int *def); SC_INTERNAL sc_int sc_primal_work(sc_int n, sc_int m);
 SC_INTERNAL int sc_primal_tally(int ok); int SNAKECG_EXPORT(core_scene_primal)(sc_int, double *);

@@ -3,19 +3,23 @@
  *
  * On a piece (every block held, zero, or sliding on its set's boundary; scene_solve.c's
  * header), the unknowns are the forces lam_H of the held rows and the angle t_k of every
- * sliding 2-D block's force on its set's boundary (sc_on_boundary); zero rows and saturated
- * boxes have their forces fixed. The equations are the dual's stationarity on the piece:
- * w_H = 0 and T_k . w_k = 0 (no acceleration along the boundary), w = G lam + b. The held
- * equations are linear: with G_HH = P L D L^T P^T by diagonal pivoting (dependent rows,
- * pivots at most DEP_TOL of the first, dropped: the basic solution), factored once,
+ * sliding 2-D block's force on its set's boundary (sc_on_boundary, by its direction
+ * (cos t_k, sin t_k)); zero rows and saturated boxes have their forces fixed. The equations
+ * are the dual's stationarity on the piece: w_H = 0 and T_k . w_k = 0 (no acceleration along
+ * the boundary), w = G lam + b. The held equations are linear: with G_HH = P L D L^T P^T by
+ * diagonal pivoting (dependent rows, pivots at most DEP_TOL of the first, dropped: the basic
+ * solution), factored once,
  *   lam_H = lam_H0 + d0 + X (lam_S - lam_S0),   G_HH d0 = -w_H0,   G_HH X = -G_HS,
  * keeps w_H = 0 for every sliding force lam_S, and the sliding rows then read
- *   w_S = wt + S (lam_S - lam_S0),   S = G_SS + G_SH X (the Schur complement),
- * the gradient of the dual with the held forces eliminated (Hessian S). Newton on the angles
- * alone: Jacobian T^T S T + diag(max(0, -lam_k . w_k)) (the reduced Hessian on the sets'
- * boundaries, dT/dt = -lam), a few unknowns, factored by diagonal pivoting, the step halved
- * until the reduced dual does not rise. Where rows nearly dependent leave a residual that
- * does not fall, they are kept (pivots down to 1e-15) and the piece solved again. */
+ *   w_S = wt + S (lam_S - lam_S0),   S = G_SS + G_SH X = G_SS - Y^T D^-1 Y  (Y = L^-1 P^T G_HS),
+ * the gradient of the dual with the held forces eliminated (Hessian S; X itself is never
+ * formed). Newton on the angles alone: Jacobian T^T S T + diag(max(0, -lam_k . w_k)) (the
+ * reduced Hessian on the sets' boundaries, dT/dt = -lam), a few unknowns, factored by
+ * Cholesky (by diagonal pivoting where nearly singular), each direction turned by atan of its
+ * step, the step halved until the reduced dual does not rise. Where rows nearly dependent
+ * leave a residual that does not fall, they are kept (pivots down to 1e-15) and the piece
+ * solved again. An active-set pass may stop the Newton early where a block certainly breaks
+ * the KKT conditions (sc_polish). */
 #include <math.h>
 #include <string.h>
 
@@ -26,6 +30,15 @@
  * (snakecg.solver.PIVOT_TOL): nearly dependent rows are statically indeterminate to double
  * precision, their forces are taken minimum-norm rather than huge and cancelling */
 #define DEP_TOL 1e-10
+/* the angles' Newton matrix factored by Cholesky where its pivots stay above this ratio to its
+ * largest diagonal entry (far from DEP_TOL: the same rank as the pivoted factor's) */
+#define CHOL_TOL 1e-8
+/* a pass's Newton stops early where a block breaks the KKT conditions by more than EARLY_TOL
+ * (relative) and by EARLY_MARGIN times its change over the last full step, the residual having
+ * fallen by EARLY_RATE at least over it (so the rest of the way moves it less) */
+#define EARLY_TOL 1e-6
+#define EARLY_MARGIN 3.0
+#define EARLY_RATE 0.5
 
 /* w = G lam + b */
 SC_INTERNAL void sc_update_w(sc_problem *p) { sc_matvec_plus(p->m, p->G, p->lam, p->b, p->w); }
@@ -36,31 +49,90 @@ static double reduced(sc_int n2, const double *S, const double *wt, const double
   sc_int a, c;
   double v = 0.0;
   for (a = 0; a < n2; ++a) ws[a] = wt[a];
-  for (c = 0; c < n2; ++c) { /* S symmetric: column c is row c */
+  for (c = 0; c + 3 < n2; c += 4) { /* S symmetric: column c is row c (four at a time) */
+    const double *restrict s0 = S + c * n2, *restrict s1 = s0 + n2, *restrict s2 = s1 + n2,
+                 *restrict s3 = s2 + n2, d0 = D[c], d1 = D[c + 1], d2 = D[c + 2], d3 = D[c + 3];
+    for (a = 0; a < n2; ++a) ws[a] += (s0[a] * d0 + s1[a] * d1) + (s2[a] * d2 + s3[a] * d3);
+  }
+  for (; c < n2; ++c) {
     const double *restrict sc = S + c * n2;
-    if (D[c] != 0.0)
-      for (a = 0; a < n2; ++a) ws[a] += sc[a] * D[c];
+    for (a = 0; a < n2; ++a) ws[a] += sc[a] * D[c];
   }
   for (a = 0; a < n2; ++a) v += 0.5 * D[a] * (wt[a] + ws[a]);
   return v;
 }
 
+/* The held forces at the sliding forces' change D: lam_H += d0 - G_HH^+ G_HS D, that is
+ * d0 - P [L^-T z; 0] with z = D^-1 Y D (V = D^-1 Y, L the factor in A; z: rank scratch). */
+static void held_forces(sc_int h, sc_int rank, sc_int n2, const double *A, const sc_int *ph,
+                        const sc_int *hr, const double *V, const double *d0, const double *D,
+                        double *z, double *lam) {
+  sc_int i, k, c;
+  for (i = 0; i < h; ++i) lam[hr[i]] += d0[i];
+  if (n2 == 0) return;
+  for (i = 0; i < rank; ++i) { /* (four partial sums) */
+    const double *restrict vi = V + i * n2;
+    double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;
+    for (c = 0; c + 3 < n2; c += 4) {
+      s0 += vi[c] * D[c], s1 += vi[c + 1] * D[c + 1];
+      s2 += vi[c + 2] * D[c + 2], s3 += vi[c + 3] * D[c + 3];
+    }
+    for (; c < n2; ++c) s0 += vi[c] * D[c];
+    z[i] = (s0 + s1) + (s2 + s3);
+  }
+  for (k = rank - 1; k > 0; --k) { /* L^T x = z by L's rows (contiguous) */
+    const double *restrict ak = A + k * h, zk = z[k];
+    for (i = 0; i < k; ++i) z[i] -= ak[i] * zk;
+  }
+  for (i = 0; i < rank; ++i) lam[hr[ph[i]]] -= z[i];
+}
+
+/* How far block k breaks the KKT conditions that scene_solve.c's kkt switches on (relative to
+ * its own tolerance's scale; at most 0: not): a held block's forces l outside its set, a
+ * sliding 2-D block's acceleration w (2) along its force's outward normal. */
+static double breach(const sc_problem *p, sc_int k, const double *l, const double *w) {
+  const double *q = p->par + 3 * k;
+  double P[2], nx, ny;
+  switch (p->kind[k]) {
+    case K_UNILATERAL: return p->state[k] == S_HELD ? -l[0] / p->fscale : -1.0;
+    case K_BOX: return p->state[k] == S_HELD && q[0] > 0 ? fabs(l[0]) / q[0] - 1.0 : -1.0;
+    case K_DISC:
+    case K_SPLIT:
+      if (!(p->kind[k] == K_DISC ? q[0] > 0 : q[2] > 0 && (q[0] > 0 || q[1] > 0)))
+        return -1.0; /* (the set {0}: kkt checks nothing there) */
+      sc_block_P(p, k, l, P);
+      if (p->state[k] == S_HELD) return sqrt(P[0] * l[0] * l[0] + P[1] * l[1] * l[1]) - 1.0;
+      nx = P[0] * l[0];
+      ny = P[1] * l[1];
+      return (w[0] * nx + w[1] * ny) / (sqrt(nx * nx + ny * ny) * p->wscale);
+    default: return -1.0;
+  }
+}
+
 /* The piece's equations from the current lam (pivots above rc kept); fn_out: their largest
  * residual after (held rows: |w|, sliding blocks: |T . w| / |T|). Returns the rank defect of
  * the held rows' and the angles' matrices. Scratch: work, iwork (scene_solve_work's). */
-static sc_int piece(sc_problem *p, double rc, double *work, sc_int *iwork, double *fn_out) {
+static sc_int piece(sc_problem *p, double rc, double *work, sc_int *iwork, double *fn_out,
+                    int kept, int *early) {
   const sc_int m = p->m, nb = p->nb;
   const double *G = p->G;
-  sc_int *hr = iwork, *sl = hr + m, *ph = sl + nb, *pj = ph + m;
+  sc_int *hr = iwork, *sl = hr + m, *ph = sl + nb, *pj = ph + m, *sr = pj + nb;
   sc_int h = 0, ns = 0, n2, k, i, s, t, a, c, it, rank = 0, rj = 0;
-  double *X, *S, *J, *d0, *sc, *sc2, *th, *th0, *T, *F, *dx, *l0, *D, *wt, *ws, *W, fn = 0.0,
-         v = 0.0;
+  double *X, *S, *J, *d0, *sc, *sc2, *th, *th0, *T, *F, *dx, *l0, *D, *wt, *ws, *W, *Jc, *bp,
+         fn = 0.0, v = 0.0, fprev = INFINITY;
+  int full = 0, known = 0, stop = 0;
   for (k = 0; k < nb; ++k) {
     sc_int r = p->start[k], nk = sc_block_size(p->kind[k]);
-    if (p->state[k] == S_ZERO)
-      for (i = 0; i < nk; ++i) p->lam[r + i] = 0.0;
-    else if (p->state[k] == S_SLIDE && p->kind[k] == K_BOX)
-      p->lam[r] = p->lam[r] >= 0 ? p->par[3 * k] : -p->par[3 * k];
+    if (p->state[k] == S_ZERO || (p->state[k] == S_SLIDE && p->kind[k] == K_BOX))
+      for (i = 0; i < nk; ++i) { /* (fixed forces; w kept along where it was G lam + b) */
+        const double l = p->state[k] == S_ZERO ? 0.0 : p->lam[r] >= 0 ? p->par[3 * k] :
+                         -p->par[3 * k], d = l - p->lam[r + i];
+        const double *restrict col = G + (r + i) * m; /* G symmetric: column r + i */
+        double *restrict wv = p->w;
+        p->lam[r + i] = l;
+        if (kept && d != 0.0)
+          for (t = 0; t < m; ++t) wv[t] += col[t] * d;
+      }
     else if (p->state[k] == S_SLIDE)
       sl[ns++] = k;
     else
@@ -74,8 +146,8 @@ static sc_int piece(sc_problem *p, double rc, double *work, sc_int *iwork, doubl
   sc = d0 + h;
   sc2 = sc + m;
   th = sc2 + m;
-  th0 = th + ns;
-  F = th0 + ns;
+  th0 = th + n2;
+  F = th0 + n2;
   dx = F + ns;
   T = dx + ns;
   l0 = T + n2;
@@ -83,39 +155,73 @@ static sc_int piece(sc_problem *p, double rc, double *work, sc_int *iwork, doubl
   wt = D + n2;
   ws = wt + n2;
   W = ws + n2; /* h x n2 */
+  Jc = W + h * n2;
+  bp = Jc + ns * ns;
   for (s = 0; s < ns; ++s) {
     double *l = p->lam + p->start[sl[s]];
-    th[s] = sc_angle_of(p, sl[s], l);
-    sc_on_boundary(p, sl[s], th[s], l, T + 2 * s);
+    const double e0 = l[0], e1 = l[1];
+    sc_direction_of(p, sl[s], l, th + 2 * s);
+    sc_on_boundary(p, sl[s], th + 2 * s, l, T + 2 * s); /* (radially onto the boundary) */
+    if (kept && (l[0] != e0 || l[1] != e1)) {
+      const double d0v = l[0] - e0, d1v = l[1] - e1, *restrict c0 = G + (l - p->lam) * m,
+                   *restrict c1 = c0 + m;
+      double *restrict wv = p->w;
+      for (t = 0; t < m; ++t) wv[t] += c0[t] * d0v + c1[t] * d1v;
+    }
     l0[2 * s] = l[0];
     l0[2 * s + 1] = l[1];
     D[2 * s] = D[2 * s + 1] = 0.0;
   }
-  sc_update_w(p);
+  for (c = 0; c < n2; ++c) sr[c] = p->start[sl[c / 2]] + c % 2;
+  if (!kept) sc_update_w(p);
   if (h > 0) {
     for (i = 0; i < h; ++i) {
       for (t = 0; t <= i; ++t) work[i * h + t] = G[hr[i] * m + hr[t]];
-      for (c = 0; c < n2; ++c) X[i * n2 + c] = -G[hr[i] * m + p->start[sl[c / 2]] + c % 2];
       sc[i] = -p->w[hr[i]];
     }
     rank = sc_psd_solve(h, work, h, sc, rc, d0, sc2, ph);
-    sc_psd_resolve(h, work, h, rank, ph, n2, X, X, W);
   }
-  for (a = 0; a < n2; ++a) { /* S = G_SS + G_SH X, wt = w_S + G_SH d0 */
-    const double *ga = G + (p->start[sl[a / 2]] + a % 2) * m;
-    double *restrict sa = S + a * n2;
-    double wa = p->w[p->start[sl[a / 2]] + a % 2];
-    for (c = 0; c < n2; ++c) sa[c] = ga[p->start[sl[c / 2]] + c % 2];
-    for (i = 0; i < h; ++i) {
-      const double *restrict xi = X + i * n2;
-      const double g = ga[hr[i]];
-      wa += g * d0[i];
-      for (c = 0; c < n2; ++c) sa[c] += g * xi[c];
+  /* S = G_SS - G_SH G_HH^+ G_HS = G_SS - Y^T D^-1 Y with Y = L^-1 (P^T G_HS) on the kept rows
+   * (G_HH = P L D L^T P^T), its upper triangle then mirrored: exactly symmetric */
+  for (i = 0; i < rank && n2 > 0; ++i) {
+    const double *gi = G + hr[ph[i]] * m;
+    double *restrict yi = X + i * n2, *restrict vi = W + i * n2;
+    for (c = 0; c < n2; ++c) yi[c] = gi[sr[c]];
+    for (k = 0; k + 3 < i; k += 4) { /* (four rows at a time) */
+      const double *li = work + i * h + k, *restrict y0 = X + k * n2, *restrict y1 = y0 + n2,
+                   *restrict y2 = y1 + n2, *restrict y3 = y2 + n2;
+      for (c = 0; c < n2; ++c)
+        yi[c] -= (li[0] * y0[c] + li[1] * y1[c]) + (li[2] * y2[c] + li[3] * y3[c]);
     }
+    for (; k < i; ++k) {
+      const double l = work[i * h + k], *restrict yk = X + k * n2;
+      for (c = 0; c < n2; ++c) yi[c] -= l * yk[c];
+    }
+    for (c = 0; c < n2; ++c) vi[c] = yi[c] * (1.0 / work[i * h + i]); /* (one division) */
+  }
+  for (a = 0; a < n2; ++a) {
+    const double *ga = G + sr[a] * m;
+    double *restrict sa = S + a * n2;
+    double wa = p->w[sr[a]]; /* wt = w_S + G_SH d0 */
+    for (c = a; c < n2; ++c) sa[c] = ga[sr[c]];
+    for (i = 0; i < h; ++i) wa += ga[hr[i]] * d0[i];
     wt[a] = wa;
   }
-  for (a = 0; a < n2; ++a) /* symmetric to rounding: made exactly so */
-    for (c = 0; c < a; ++c) S[a * n2 + c] = S[c * n2 + a] = 0.5 * (S[a * n2 + c] + S[c * n2 + a]);
+  for (a = 0; a < n2; ++a) {
+    double *restrict sa = S + a * n2;
+    for (i = 0; i + 3 < rank; i += 4) { /* (four rows of Y at a time) */
+      const double *y = X + i * n2 + a, *restrict v0 = W + i * n2, *restrict v1 = v0 + n2,
+                   *restrict v2 = v1 + n2, *restrict v3 = v2 + n2;
+      const double y0 = y[0], y1 = y[n2], y2 = y[2 * n2], y3 = y[3 * n2];
+      for (c = a; c < n2; ++c) sa[c] -= (y0 * v0[c] + y1 * v1[c]) + (y2 * v2[c] + y3 * v3[c]);
+    }
+    for (; i < rank; ++i) {
+      const double y = X[i * n2 + a], *restrict vi = W + i * n2;
+      for (c = a; c < n2; ++c) sa[c] -= y * vi[c];
+    }
+  }
+  for (a = 0; a < n2; ++a)
+    for (c = 0; c < a; ++c) S[a * n2 + c] = S[c * n2 + a];
   for (it = 0; it < 40 && ns > 0; ++it) { /* Newton on the angles */
     double v0 = it ? v : reduced(n2, S, wt, D, ws), tstep = 1.0, step = 0.0;
     sc_int ls;
@@ -126,6 +232,23 @@ static sc_int piece(sc_problem *p, double rc, double *work, sc_int *iwork, doubl
       fn = sc_max(fn, fabs(F[s]) / (sqrt(Ts[0] * Ts[0] + Ts[1] * Ts[1]) + 1e-300));
     }
     if (it > 0 && fn <= 1e-15 * p->wscale) break; /* (the first step always: its rank) */
+    if (*early && it > 0 && full && fn < EARLY_RATE * fprev) { /* a pass that will switch */
+      double *lt = sc;
+      memcpy(lt, p->lam, sizeof(double) * (size_t)m);
+      if (h > 0) held_forces(h, rank, n2, work, ph, hr, W, d0, D, sc2, lt);
+      for (k = s = 0; k < nb; ++k) {
+        double e;
+        if (p->state[k] == S_ZERO) continue;
+        e = breach(p, k, lt + p->start[k], /* (ws: the sliding 2-D blocks' in sl's order) */
+                   p->state[k] == S_SLIDE && p->kind[k] >= K_DISC ? ws + 2 * s++ : NULL);
+        if (known && e > EARLY_TOL && e > EARLY_MARGIN * fabs(e - bp[k])) stop = 1;
+        bp[k] = e;
+      }
+      known = 1;
+      if (stop) break;
+    } else
+      known = 0;
+    fprev = fn;
     for (s = 0; s < ns; ++s) {
       const double *Ts = T + 2 * s;
       for (t = 0; t <= s; ++t) {
@@ -139,19 +262,30 @@ static sc_int piece(sc_problem *p, double rc, double *work, sc_int *iwork, doubl
       }
       F[s] = -F[s];
     }
-    rj = sc_psd_solve(ns, J, ns, F, rc, dx, sc2, pj);
-    for (s = 0; s < ns; ++s) th0[s] = th[s];
+    for (s = 0; s < ns * ns; ++s) Jc[s] = J[s]; /* (Cholesky where J is well inside the
+      positive definite cone; the pivoted LDL^T, which drops dependent angles, elsewhere) */
+    if (sc_cholesky(ns, Jc, ns, CHOL_TOL)) {
+      for (s = 0; s < ns; ++s) dx[s] = F[s];
+      sc_cholesky_solve(ns, Jc, ns, dx);
+      rj = ns;
+    } else
+      rj = sc_psd_solve(ns, J, ns, F, rc, dx, sc2, pj);
+    for (s = 0; s < n2; ++s) th0[s] = th[s];
     for (ls = 0; ls < 40; ++ls, tstep *= 0.5) { /* the step, halved while the dual rises */
       for (s = 0; s < ns; ++s) {
         double *l = p->lam + p->start[sl[s]];
-        th[s] = th0[s] + tstep * dx[s];
-        sc_on_boundary(p, sl[s], th[s], l, T + 2 * s);
+        const double *u = th0 + 2 * s, e = tstep * dx[s], x = u[0] - e * u[1],
+                     y = u[1] + e * u[0], r = 1.0 / sqrt(x * x + y * y);
+        th[2 * s] = x * r; /* (turned by atan(e): the angle's Newton step to second order) */
+        th[2 * s + 1] = y * r;
+        sc_on_boundary(p, sl[s], th + 2 * s, l, T + 2 * s);
         D[2 * s] = l[0] - l0[2 * s];
         D[2 * s + 1] = l[1] - l0[2 * s + 1];
       }
       v = reduced(n2, S, wt, D, ws); /* (ws at the step taken: the next iteration's) */
       if (v <= v0 + 1e-14 * (fabs(v0) + p->fscale * p->wscale)) break;
     }
+    full = ls == 0;
     for (s = 0; s < ns; ++s) {
       k = sl[s];
       step = sc_max(step, fabs(tstep * dx[s]) *
@@ -159,11 +293,7 @@ static sc_int piece(sc_problem *p, double rc, double *work, sc_int *iwork, doubl
     }
     if (!(step > 1e-15 * p->fscale)) break;
   }
-  for (i = 0; i < h; ++i) { /* the held forces at the sliding ones */
-    double v = d0[i];
-    for (c = 0; c < n2; ++c) v += X[i * n2 + c] * D[c];
-    p->lam[hr[i]] += v;
-  }
+  if (h > 0) held_forces(h, rank, n2, work, ph, hr, W, d0, D, sc2, p->lam);
   sc_update_w(p);
   fn = 0.0;
   for (i = 0; i < h; ++i) fn = sc_max(fn, fabs(p->w[hr[i]]));
@@ -173,18 +303,20 @@ static sc_int piece(sc_problem *p, double rc, double *work, sc_int *iwork, doubl
                       (sqrt(Ts[0] * Ts[0] + Ts[1] * Ts[1]) + 1e-300));
   }
   *fn_out = fn;
+  *early = stop;
   return (h - rank) + (ns - rj);
 }
 
 /* piece, solved again from its own result while the residual is above rounding (at most
  * three times): where it does not halve with rows dropped and stays above 1e-12 of the
- * scale, they are kept (pivots to 1e-15). */
-static sc_int rounds(sc_problem *p, double *work, sc_int *iwork, double *fn) {
+ * scale, they are kept (pivots to 1e-15). early: as sc_polish's. */
+static sc_int rounds(sc_problem *p, double *work, sc_int *iwork, double *fn, int kept,
+                     int *early) {
   double rc = DEP_TOL, prev = INFINITY;
   sc_int defect = 0, round;
-  for (round = 0; round < 3; ++round) {
-    defect = piece(p, rc, work, iwork, fn);
-    if (!(*fn > 1e-14 * p->wscale)) break;
+  for (round = 0; round < 3; ++round, kept = 1) {
+    defect = piece(p, rc, work, iwork, fn, kept, early);
+    if (*early || !(*fn > 1e-14 * p->wscale)) break;
     if (defect > 0 && !(*fn < 0.5 * prev) && *fn > 1e-12 * p->wscale) rc = 1e-15;
     prev = *fn;
   }
@@ -193,16 +325,19 @@ static sc_int rounds(sc_problem *p, double *work, sc_int *iwork, double *fn) {
 
 /* The piece's equations solved (returns their rank defect, 0: independent); where that stops
  * short of rounding with a sliding block that does not move (at its set's limit: the angle's
- * equation is degenerate there), that block is held instead and the piece solved again. */
-SC_INTERNAL sc_int sc_polish(sc_problem *p, double *work, sc_int *iwork) {
+ * equation is degenerate there), that block is held instead and the piece solved again.
+ * early (in): the Newton may stop where a block certainly breaks the KKT conditions (out: it
+ * did; lam and w are then the iterate's, for the active set to switch on). kept: w is
+ * G lam + b on entry (updated along as the piece fixes forces, not recomputed). */
+SC_INTERNAL sc_int sc_polish(sc_problem *p, double *work, sc_int *iwork, int kept, int *early) {
   double fn;
-  sc_int k, defect = rounds(p, work, iwork, &fn);
+  sc_int k, defect = rounds(p, work, iwork, &fn, kept, early);
   int again = 0;
-  if (!(fn > 1e-14 * p->wscale)) return defect;
+  if (*early || !(fn > 1e-14 * p->wscale)) return defect;
   for (k = 0; k < p->nb; ++k)
     if (p->state[k] == S_SLIDE && p->kind[k] >= K_DISC && sc_still(p, k)) {
       p->state[k] = S_HELD;
       again = 1;
     }
-  return again ? rounds(p, work, iwork, &fn) : defect;
+  return again ? rounds(p, work, iwork, &fn, 1, early) : defect;
 }

@@ -9,7 +9,7 @@
  * form on the eigenvectors (its secular equation solved to rounding); the split ellipse as
  * the backward half, the forward half, or the segment lam_t = 0 (the minimiser over the
  * convex set lies in the half whose own full-ellipse minimiser falls inside it, else on the
- * dividing segment). sc_on_boundary parametrizes a 2-D set's boundary by an angle (the
+ * dividing segment). sc_on_boundary parametrizes a 2-D set's boundary by a direction (the
  * sliding pieces' unknowns). Used by scene_solve.c.
  */
 #include <math.h>
@@ -85,25 +85,33 @@ SC_INTERNAL void sc_block_min(const sc_problem *p, sc_int k, const double *c, do
   }
 }
 
-/* A sliding 2-D block k's force on its set's boundary at angle t and the tangent T =
- * dlam/dt there: a disc s (cos t, sin t); a split ellipse (st cos t, p2 sin t), st the
- * semi-axis of the half that cos t points into. Both have dT/dt = -lam. */
-SC_INTERNAL void sc_on_boundary(const sc_problem *p, sc_int k, double t, double *l, double *T) {
+/* A sliding 2-D block k's force on its set's boundary in the direction u (a unit vector:
+ * (cos t, sin t) at the angle t) and the tangent T = dlam/dt there: a disc s u; a split ellipse
+ * (st u0, p2 u1), st the semi-axis of the half that u points into. Both have dT/dt = -lam. */
+SC_INTERNAL void sc_on_boundary(const sc_problem *p, sc_int k, const double *u, double *l,
+                                double *T) {
   const double *q = p->par + 3 * k;
-  double c = cos(t), s = sin(t), ax = p->kind[k] == K_DISC ? q[0] : (c < 0 ? q[0] : q[1]),
-         ay = p->kind[k] == K_DISC ? q[0] : q[2];
-  l[0] = ax * c;
-  l[1] = ay * s;
-  T[0] = -ax * s;
-  T[1] = ay * c;
+  const double ax = p->kind[k] == K_DISC ? q[0] : (u[0] < 0 ? q[0] : q[1]),
+               ay = p->kind[k] == K_DISC ? q[0] : q[2];
+  l[0] = ax * u[0];
+  l[1] = ay * u[1];
+  T[0] = -ax * u[1];
+  T[1] = ay * u[0];
 }
 
-/* The angle of a 2-D block's force (sc_on_boundary's parametrization, radially onto it). */
-SC_INTERNAL double sc_angle_of(const sc_problem *p, sc_int k, const double *l) {
+/* The direction u (unit) of a 2-D block's force in sc_on_boundary's parametrization, radially
+ * onto the boundary ((1, 0) for no force). */
+SC_INTERNAL void sc_direction_of(const sc_problem *p, sc_int k, const double *l, double *u) {
   const double *q = p->par + 3 * k;
-  double ax = l[0] < 0 ? q[0] : q[1];
-  if (p->kind[k] == K_DISC) return atan2(l[1], l[0]);
-  return atan2(l[1] / q[2], ax > 0 ? l[0] / ax : 0.0);
+  const double ax = l[0] < 0 ? q[0] : q[1];
+  double x = l[0], y = l[1], r;
+  if (p->kind[k] != K_DISC) {
+    x = ax > 0 ? l[0] / ax : 0.0;
+    y = l[1] / q[2];
+  }
+  r = sqrt(x * x + y * y);
+  u[0] = r > 0 ? x / r : 1.0;
+  u[1] = r > 0 ? y / r : 0.0;
 }
 
 /* 1 if the forces l of block k lie in its set, to the relative tolerance tol; with clip,

@@ -24,7 +24,8 @@
  *      and saturated boxes; the held rows' forces eliminated (G_HH factored once by diagonal
  *      pivoting, dependent rows dropped), Newton on one angle per sliding 2-D block;
  *   2. the KKT conditions checked on the result; a violated piece is switched (a primal-dual
- *      active-set step) and step 1 repeated;
+ *      active-set step) and step 1 repeated (step 1's Newton left early where a block will
+ *      certainly be switched: its breach beyond three times its last step's change);
  *   3. the pieces start from the caller's where given (core_scene_solve_s: a time step's,
  *      the last step's pieces: that piece first solved in the primal, scene_primal.c, without
  *      G, and kept where its KKT conditions hold; else a few passes), then from the held
@@ -67,23 +68,27 @@ static sc_int sweeps(sc_problem *p, sc_int max_sweeps, double rel) {
     double change = 0.0, size = 0.0;
     for (k = 0; k < p->nb; ++k) {
       sc_int r = p->start[k], nk = sc_block_size(p->kind[k]);
-      double c[2], l[2];
+      double c[2], l[2], d[2];
       for (i = 0; i < nk; ++i) {
         c[i] = p->w[r + i];
         for (j = 0; j < nk; ++j) c[i] -= p->G[(r + i) * m + r + j] * p->lam[r + j];
       }
       sc_block_min(p, k, c, l);
       for (i = 0; i < nk; ++i) {
-        double d = l[i] - p->lam[r + i];
-        const double *col = p->G + (r + i) * m; /* G symmetric: column r + i */
-        if (fabs(d) > change) change = fabs(d);
+        d[i] = l[i] - p->lam[r + i];
+        if (fabs(d[i]) > change) change = fabs(d[i]);
         if (fabs(l[i]) > size) size = fabs(l[i]);
         p->lam[r + i] = l[i];
-        if (d != 0.0) {
-          double *restrict wv = p->w;
-          const double *restrict cv = col;
-          for (j = 0; j < m; ++j) wv[j] += cv[j] * d;
-        }
+      }
+      { /* w along: G symmetric, its columns r.. are its rows */
+        double *restrict wv = p->w;
+        const double *restrict c0 = p->G + r * m, *restrict c1 = c0 + m;
+        if (nk == 2 && d[0] != 0.0 && d[1] != 0.0)
+          for (j = 0; j < m; ++j) wv[j] += c0[j] * d[0] + c1[j] * d[1];
+        else
+          for (i = 0; i < nk; ++i)
+            if (d[i] != 0.0)
+              for (j = 0; j < m; ++j) wv[j] += c0[i * m + j] * d[i];
       }
     }
     if (!(change > rel * (size > p->fscale ? size : p->fscale))) break;
@@ -200,15 +205,19 @@ static int kkt(sc_problem *p, double *res, int do_switch) {
 
 /* Active-set passes from the states in p: the piece's equations solved (polish), the KKT
  * conditions checked and the violated pieces switched, at most max_pass times. Returns 1 when
- * a piece's solution satisfies them (res: its residuals), else 0. */
+ * a piece's solution satisfies them (res: its residuals), else 0. kept: w = G lam + b on entry. */
 static int active_set(sc_problem *p, sc_int max_pass, double *work, sc_int *iwork,
-                      sc_int *passes, sc_int *defect, double *res) {
+                      sc_int *passes, sc_int *defect, double *res, int kept) {
   sc_int pass;
-  for (pass = 0; pass < max_pass; ++pass) {
+  int early = 1, stopped;
+  for (pass = 0; pass < max_pass; ++pass, kept = 1) { /* (each pass leaves w = G lam + b) */
     ++*passes;
-    *defect = sc_polish(p, work, iwork);
-    if (!kkt(p, res, 1))
-      return res[0] <= TOL_ACCEPT && res[1] <= TOL_ACCEPT && res[2] <= TOL_ACCEPT;
+    stopped = early;
+    *defect = sc_polish(p, work, iwork, kept, &stopped);
+    if (!kkt(p, res, 1)) {
+      if (!stopped) return res[0] <= TOL_ACCEPT && res[1] <= TOL_ACCEPT && res[2] <= TOL_ACCEPT;
+      early = 0; /* (stopped early, yet nothing to switch: solved to rounding next) */
+    }
   }
   return 0;
 }
@@ -335,7 +344,7 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
   }
   if (!ok && from) { /* the active set from the caller's pieces (start_from) */
     start_from(&p, from);
-    ok = active_set(&p, FROM_PASSES, rest, iw2, &passes, &defect, res);
+    ok = active_set(&p, FROM_PASSES, rest, iw2, &passes, &defect, res, 0);
     if (!ok) { /* else today's order from zero forces */
       for (i = 0; i < m; ++i) lam[i] = 0.0;
       for (k = 0; k < nb; ++k) gam[k] = 0.0;
@@ -349,7 +358,7 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
                  kind[k] == K_SPLIT ? !(q[2] > 0 && (q[0] > 0 || q[1] > 0)) : 0;
       state[k] = zero ? S_ZERO : S_HELD;
     }
-    ok = active_set(&p, GUESS_PASSES, rest, iw2, &passes, &defect, res);
+    ok = active_set(&p, GUESS_PASSES, rest, iw2, &passes, &defect, res, 0);
     if (!ok) /* else the sweeps from zero forces */
       for (i = 0; i < m; ++i) lam[i] = 0.0;
   }
@@ -368,7 +377,7 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
     if (same && s == chunk) continue;
     memcpy(prev, state, sizeof(sc_int) * (size_t)nb);
     memcpy(keep, lam, sizeof(double) * (size_t)m);
-    ok = active_set(&p, s < chunk ? 20 : TRY_PASSES, rest, iw2, &passes, &defect, res);
+    ok = active_set(&p, s < chunk ? 20 : TRY_PASSES, rest, iw2, &passes, &defect, res, 1);
     if (!ok && s == chunk) {
       memcpy(lam, keep, sizeof(double) * (size_t)m);
       if (chunk < 16 * CHUNK) chunk *= 2;
@@ -395,12 +404,13 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
     for (k = 0; k < nb && dep == 1; ++k) {
       double keep_lam[512], keep_w[512], keep_res[3] = {res[0], res[1], res[2]};
       sc_int keep_state = state[k], d2;
+      int solved = 0; /* (to rounding: no early stop) */
       if (kind[k] != K_UNILATERAL || state[k] != S_HELD || lam[start[k]] > 1e-12 * p.fscale)
         continue;
       memcpy(keep_lam, lam, sizeof(double) * (size_t)m);
       memcpy(keep_w, w, sizeof(double) * (size_t)m);
       state[k] = S_ZERO;
-      d2 = sc_polish(&p, rest, iw2);
+      d2 = sc_polish(&p, rest, iw2, 0, &solved);
       if (d2 >= 0 && !kkt(&p, res, 0) && res[0] <= TOL_ACCEPT && res[1] <= TOL_ACCEPT &&
           res[2] <= TOL_ACCEPT) {
         dep = sc_min_norm_face(&p, Z, rest);
