@@ -90,10 +90,26 @@ PRIMAL_FLAT double sliding(sc_int n, sc_int nc, sc_int ns, const double *s, cons
                            double *restrict nws) {
   sc_int i, j;
   double v = 0.0;
-  for (j = 0; j < 2 * ns; ++j) ws[j] = cg[j];
-  for (i = 0; i < n; ++i) {
-    const double *restrict zi = Zg + i * nc, yi = y[i];
-    for (j = 0; j < 2 * ns; ++j) ws[j] += zi[j] * yi;
+  for (j = 0; j + 3 < 2 * ns; j += 4) { /* (four sums at a time in registers, each over the
+    coordinates in order) */
+    double w0 = cg[j], w1 = cg[j + 1], w2 = cg[j + 2], w3 = cg[j + 3];
+    for (i = 0; i < n; ++i) {
+      const double *restrict zi = Zg + i * nc + j, yi = y[i];
+      w0 += zi[0] * yi;
+      w1 += zi[1] * yi;
+      w2 += zi[2] * yi;
+      w3 += zi[3] * yi;
+    }
+    ws[j] = w0, ws[j + 1] = w1, ws[j + 2] = w2, ws[j + 3] = w3;
+  }
+  for (; j < 2 * ns; j += 2) {
+    double w0 = cg[j], w1 = cg[j + 1];
+    for (i = 0; i < n; ++i) {
+      const double *restrict zi = Zg + i * nc + j, yi = y[i];
+      w0 += zi[0] * yi;
+      w1 += zi[1] * yi;
+    }
+    ws[j] = w0, ws[j + 1] = w1;
   }
   for (j = 0; j < ns; ++j) {
     nws[j] = sqrt(ws[2 * j] * ws[2 * j] + ws[2 * j + 1] * ws[2 * j + 1]);
@@ -119,40 +135,57 @@ PRIMAL_FLAT void every_w(sc_int n, sc_problem *p, const double *Z, const double 
     for (; j < m; ++j) s0 += zi[j] * l[j];
     y[i] = g[i] + ((s0 + s1) + (s2 + s3));
   }
-  for (j = 0; j < m; ++j) p->w[j] = c ? c[j] : 0.0;
-  for (i = 0; i < n; ++i) {
-    const double *restrict zi = Z + i * m;
-    const double yi = y[i];
-    double *restrict w = p->w;
-    for (j = 0; j < m; ++j) w[j] += zi[j] * yi;
+  for (j = 0; j + 3 < m; j += 4) { /* (four rows' sums at a time in registers, each over the
+    coordinates in order) */
+    double w0 = c ? c[j] : 0.0, w1 = c ? c[j + 1] : 0.0, w2 = c ? c[j + 2] : 0.0,
+           w3 = c ? c[j + 3] : 0.0;
+    for (i = 0; i < n; ++i) {
+      const double *restrict zi = Z + i * m + j, yi = y[i];
+      w0 += zi[0] * yi;
+      w1 += zi[1] * yi;
+      w2 += zi[2] * yi;
+      w3 += zi[3] * yi;
+    }
+    p->w[j] = w0, p->w[j + 1] = w1, p->w[j + 2] = w2, p->w[j + 3] = w3;
+  }
+  for (; j < m; ++j) {
+    double w0 = c ? c[j] : 0.0;
+    for (i = 0; i < n; ++i) w0 += Z[i * m + j] * y[i];
+    p->w[j] = w0;
   }
 }
 
 /* The rank of the rows F (nf of them) by K = Z_F Z_F^T (n x n: G_FF's nonzero eigenvalues),
  * its pivots above NULL_TOL of the first (sc_min_norm_face's rule); with apply and a rank
  * below nf, their forces made the minimum-norm ones of the same Z_F lam_F: Z_F^T x,
- * K x = Z_F lam_F. Scratch: K n x n, v, x, t n each, perm n. */
+ * K x = Z_F lam_F. Scratch: K n x n, v, x, t n each, perm n, zf n nf (the rows' columns of
+ * Z gathered: K and v summed row by row of F in its order, each entry's sum as a dot
+ * product over F would add it). */
 static sc_int face_rank(sc_problem *p, const double *Z, const sc_int *F, sc_int nf, double *K,
-                        double *v, double *x, double *t, sc_int *perm, int apply) {
+                        double *v, double *x, double *t, sc_int *perm, double *zf,
+                        int apply) {
   const sc_int n = p->n, m = p->m;
   sc_int i, j, k, rank;
+  for (j = 0; j < nf; ++j)
+    for (i = 0; i < n; ++i) zf[j * n + i] = Z[i * m + F[j]];
   for (i = 0; i < n; ++i) {
-    const double *zi = Z + i * m;
-    double s = 0.0;
-    for (j = 0; j < nf; ++j) s += zi[F[j]] * p->lam[F[j]];
-    v[i] = s;
-    for (k = 0; k <= i; ++k) {
-      const double *zk = Z + k * m;
-      double u = 0.0;
-      for (j = 0; j < nf; ++j) u += zi[F[j]] * zk[F[j]];
-      K[i * n + k] = u;
+    v[i] = 0.0;
+    for (k = 0; k <= i; ++k) K[i * n + k] = 0.0;
+  }
+  for (j = 0; j < nf; ++j) {
+    const double *restrict zj = zf + j * n, l = p->lam[F[j]];
+    for (i = 0; i < n; ++i) {
+      double *restrict ki = K + i * n;
+      const double zi = zj[i];
+      v[i] += zi * l;
+      for (k = 0; k <= i; ++k) ki[k] += zi * zj[k];
     }
   }
   rank = sc_psd_solve(n, K, n, v, NULL_TOL, x, t, perm);
   if (apply && rank < nf)
     for (j = 0; j < nf; ++j) {
       double s = 0.0;
-      for (i = 0; i < n; ++i) s += Z[i * m + F[j]] * x[i];
+      for (i = 0; i < n; ++i) s += zf[j * n + i] * x[i];
       p->lam[F[j]] = s;
     }
   return rank;
@@ -375,10 +408,10 @@ PRIMAL_FLAT int piece(sc_int n, sc_problem *p, const double *Z, const double *g,
   for (k = 0, nf = h; k < nb; ++k)
     if (p->state[k] != S_HELD && sc_still(p, k))
       for (i = 0; i < sc_block_size(p->kind[k]); ++i) hr[nf++] = p->start[k] + i;
-  if (rank < h && nf > h && face_rank(p, Z, hr, h, R, q, dy, t, perm, 0) != rank)
+  if (rank < h && nf > h && face_rank(p, Z, hr, h, R, q, dy, t, perm, Y, 0) != rank)
     return 0; /* (the held rows' rank: the dual's, to the pivots') */
   if (rank < h || nf > h) {
-    sc_int rf = face_rank(p, Z, hr, nf, R, q, dy, t, perm, 1);
+    sc_int rf = face_rank(p, Z, hr, nf, R, q, dy, t, perm, Y, 1);
     if (nf == h && rf != rank) return 0;
     if (rf < nf) {
       dep = 1;

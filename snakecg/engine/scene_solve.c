@@ -266,33 +266,69 @@ static void start_from(sc_problem *p, const double *from) {
   }
 }
 
+#if defined(__GNUC__)
+#define SOLVE_FLAT static inline __attribute__((always_inline))
+#else
+#define SOLVE_FLAT static inline
+#endif
+
+/* G's diagonal d and Z^T g (e) as G's own loop sums them (scene_small.c's gram: the
+ * coordinates four at a time, the last n mod 4 one short group: bit for bit the same). */
+SOLVE_FLAT void diag_b(sc_int n, sc_int m, const double *Z, const double *g,
+                       double *restrict d, double *restrict e) {
+  const sc_int n4 = n - n % 4;
+  sc_int i, j;
+  for (j = 0; j < m; ++j) d[j] = e[j] = 0.0;
+  for (i = 0; i < n4; i += 4) {
+    const double *restrict z0 = Z + i * m, *restrict z1 = z0 + m, *restrict z2 = z1 + m,
+                 *restrict z3 = z2 + m;
+    const double a0 = g[i], a1 = g[i + 1], a2 = g[i + 2], a3 = g[i + 3];
+    for (j = 0; j < m; ++j) {
+      d[j] += (z0[j] * z0[j] + z1[j] * z1[j]) + (z2[j] * z2[j] + z3[j] * z3[j]);
+      e[j] += (z0[j] * a0 + z1[j] * a1) + (z2[j] * a2 + z3[j] * a3);
+    }
+  }
+  if (n - n4 == 1) {
+    const double *restrict z0 = Z + n4 * m;
+    const double a0 = g[n4];
+    for (j = 0; j < m; ++j) {
+      d[j] += z0[j] * z0[j];
+      e[j] += z0[j] * a0;
+    }
+  } else if (n - n4 == 2) {
+    const double *restrict z0 = Z + n4 * m, *restrict z1 = z0 + m;
+    const double a0 = g[n4], a1 = g[n4 + 1];
+    for (j = 0; j < m; ++j) {
+      d[j] += z0[j] * z0[j] + z1[j] * z1[j];
+      e[j] += z0[j] * a0 + z1[j] * a1;
+    }
+  } else if (n - n4 == 3) {
+    const double *restrict z0 = Z + n4 * m, *restrict z1 = z0 + m, *restrict z2 = z1 + m;
+    const double a0 = g[n4], a1 = g[n4 + 1], a2 = g[n4 + 2];
+    for (j = 0; j < m; ++j) {
+      d[j] += (z0[j] * z0[j] + z1[j] * z1[j]) + z2[j] * z2[j];
+      e[j] += (z0[j] * a0 + z1[j] * a1) + z2[j] * a2;
+    }
+  }
+}
+
 /* The warm start's piece solved in the primal (scene_primal.c), kept where the KKT conditions
  * hold and, on a dependent face, its forces are the minimum-norm ones (not where the dual would
  * next open a contact at zero force). G's diagonal and b summed as G's own loop does (the same
- * scales; dg: 2 m scratch). 1 when kept (dep: the flag, defect: the held rows' rank defect). */
+ * scales; dg: m scratch). 1 when kept (dep: the flag, defect: the held rows' rank defect). */
 static int primal_start(sc_problem *p, const double *Z, const double *g, const double *c,
                         const double *from, double *dg, double *work, sc_int *iwork,
                         double *res, sc_int *defect, int *dep) {
   const sc_int n = p->n, m = p->m;
-  sc_int i, j, k, h = 0;
+  sc_int j, k, h = 0;
   int ok, r;
   double *restrict d = dg, *restrict e = p->b;
   start_from(p, from);
   for (k = 0; k < p->nb; ++k)
     if (p->state[k] == S_HELD) h += sc_block_size(p->kind[k]);
   if (2 * h > n) return 0; /* (more held rows: the forces left the sets on every try) */
-  for (j = 0; j < m; ++j) d[j] = e[j] = dg[m + j] = 0.0;
-  for (i = 0; i < n; i += 4) { /* (four coordinates at a time, missing ones zero) */
-    const double *restrict z0 = Z + i * m, *restrict z1 = i + 1 < n ? z0 + m : dg + m,
-                 *restrict z2 = i + 2 < n ? z0 + 2 * m : dg + m,
-                 *restrict z3 = i + 3 < n ? z0 + 3 * m : dg + m;
-    const double a0 = g[i], a1 = i + 1 < n ? g[i + 1] : 0.0, a2 = i + 2 < n ? g[i + 2] : 0.0,
-                 a3 = i + 3 < n ? g[i + 3] : 0.0;
-    for (j = 0; j < m; ++j) {
-      d[j] += (z0[j] * z0[j] + z1[j] * z1[j]) + (z2[j] * z2[j] + z3[j] * z3[j]);
-      e[j] += (z0[j] * a0 + z1[j] * a1) + (z2[j] * a2 + z3[j] * a3);
-    }
-  }
+  if (n == SNAKECG_NS) diag_b(SNAKECG_NS, m, Z, g, d, e);
+  else diag_b(n, m, Z, g, d, e);
   for (j = 0; c && j < m; ++j) e[j] += c[j];
   scales(p, dg, 1, p->b);
   r = sc_primal_piece(p, Z, g, c, work, iwork, defect);
