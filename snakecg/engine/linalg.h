@@ -333,11 +333,11 @@ static inline sc_int sc_qr_least_squares(sc_int m, sc_int n, double *A, sc_int l
 }
 
 /* min 1/2 x^T H x + g^T x over |x| <= 1 (H 2x2 positive semidefinite) on H's eigenvectors,
- * the secular equation sum g_i^2 / (h_i + s)^2 = 1 by safeguarded Newton to rounding. */
+ * the secular equation sum g_i^2 / (h_i + s)^2 = 1 by safeguarded Halley steps to rounding. */
 static inline void sc_trust_region_2d(const double *H, const double *g, double *x) {
   double a = H[0], c = H[3], bb = 0.5 * (H[1] + H[2]);
   double tr = 0.5 * (a + c), d = sqrt(0.25 * (a - c) * (a - c) + bb * bb);
-  double h[2] = {tr - d, tr + d}, v[2][2], gp[2], lo, hi, s, nx;
+  double h[2] = {tr - d, tr + d}, v[2][2], gp[2];
   int it, i;
   if (fabs(bb) > 1e-300) {
     /* eigenvector of h0: (bb, h0 - a) or (h0 - c, bb) */
@@ -374,28 +374,27 @@ static inline void sc_trust_region_2d(const double *H, const double *g, double *
       return;
     }
   }
-  nx = gp[0] * gp[0] + gp[1] * gp[1]; /* |g|/(h1 + s) <= |x(s)| <= |g|/(h0 + s): a bracket */
-  lo = fmax(0.0, sqrt(nx) - h[1]);
-  hi = sqrt(nx) - h[0];
-  s = sqrt(nx) - (h[0] * gp[0] * gp[0] + h[1] * gp[1] * gp[1]) / nx; /* h's mean on g */
-  for (it = 0; it < 200; ++it) {
-    double y0, y1, dn, phi, dphi;
-    if (!(s > lo && s < hi)) s = 0.5 * (lo + hi);
-    y0 = gp[0] / (h[0] + s);
-    y1 = gp[1] / (h[1] + s);
-    nx = sqrt(y0 * y0 + y1 * y1);
-    phi = 1.0 / nx - 1.0; /* increasing in s */
-    if (phi < 0) lo = s; else hi = s;
-    if (fabs(phi) <= 4e-16 || hi - lo <= 4e-16 * hi) break;
-    dn = (y0 * y0 / (h[0] + s) + y1 * y1 / (h[1] + s)) / nx; /* -d|x|/ds */
-    dphi = dn / (nx * nx);
-    s = s - phi / dphi;
-  }
-  {
-    double y0 = -gp[0] / (h[0] + s), y1 = -gp[1] / (h[1] + s), nn = sqrt(y0 * y0 + y1 * y1);
-    if (nn > 0) { y0 /= nn; y1 /= nn; } /* on the circle exactly */
-    x[0] = y0 * v[0][0] + y1 * v[1][0];
-    x[1] = y0 * v[0][1] + y1 * v[1][1];
+  { /* |g|/(h1 + s) <= |y(s)| <= |g|/(h0 + s) and |g_i|/(h_i + s) <= |y(s)|: a bracket */
+    const double a0 = gp[0] * gp[0], a1 = gp[1] * gp[1], gn = sqrt(a0 + a1);
+    double lo = fmax(0.0, gn - h[1]), hi = gn - h[0], s, r0, r1, y0, y1, n2, nn;
+    s = fmax(gn - (h[0] * a0 + h[1] * a1) / (a0 + a1), fmax(sqrt(a0) - h[0], sqrt(a1) - h[1]));
+    for (it = 0;; ++it) { /* phi = 1/|y| - 1 (increasing, concave): Halley, else Newton */
+      if (!(s > lo && s < hi)) s = 0.5 * (lo + hi);
+      r0 = 1.0 / (h[0] + s), r1 = 1.0 / (h[1] + s); /* independent: a short chain */
+      y0 = gp[0] * r0, y1 = gp[1] * r1;
+      n2 = y0 * y0 + y1 * y1;
+      nn = sqrt(n2);
+      if (nn > 1.0) lo = s; else hi = s;
+      if (fabs(nn - 1.0) <= 4e-16 * nn || hi - lo <= 4e-16 * hi || it == 199) break;
+      { /* phi/phi' = n2 (1 - |y|)/s1, phi''/phi' = 3 (s1^2/n2 - s2)/s1 (s1^2 <= n2 s2) */
+        double p0 = y0 * y0 * r0, p1 = y1 * y1 * r1, s1 = p0 + p1, s2 = p0 * r0 + p1 * r1;
+        double den = s1 * s1 + 1.5 * (nn - 1.0) * (s1 * s1 - n2 * s2);
+        s += den > 0.25 * s1 * s1 ? n2 * (nn - 1.0) * s1 / den : n2 * (nn - 1.0) / s1;
+      }
+    }
+    nn = -1.0 / nn; /* x = -y/|y|: on the circle exactly */
+    x[0] = nn * (y0 * v[0][0] + y1 * v[1][0]);
+    x[1] = nn * (y0 * v[0][1] + y1 * v[1][1]);
   }
 }
 
