@@ -339,16 +339,17 @@ static inline void sc_trust_region_2d(const double *H, const double *g, double *
   double tr = 0.5 * (a + c), d = sqrt(0.25 * (a - c) * (a - c) + bb * bb);
   double h[2] = {tr - d, tr + d}, v[2][2], gp[2];
   int it, i;
+  { /* H definite (h0/h1 above about 1e-3): the interior minimiser -H^-1 g first, by Cramer */
+    double det = a * c - bb * bb, id = 1.0 / det, y0 = (bb * g[1] - c * g[0]) * id,
+           y1 = (bb * g[0] - a * g[1]) * id; /* (the division overlaps the test) */
+    if (det > 4e-3 * tr * tr && y0 * y0 + y1 * y1 <= 1.0) { x[0] = y0; x[1] = y1; return; }
+  }
   if (fabs(bb) > 1e-300) {
     /* eigenvector of h0: (bb, h0 - a) or (h0 - c, bb) */
     double e0 = bb, e1 = h[0] - a, nn;
-    if (fabs(h[0] - c) > fabs(h[0] - a)) {
-      e0 = h[0] - c;
-      e1 = bb;
-    }
+    if (fabs(h[0] - c) > fabs(h[0] - a)) e0 = h[0] - c, e1 = bb;
     nn = sqrt(e0 * e0 + e1 * e1);
-    v[0][0] = e0 / nn;
-    v[0][1] = e1 / nn;
+    v[0][0] = e0 / nn, v[0][1] = e1 / nn;
   } else if (a <= c) {
     h[0] = a; h[1] = c;
     v[0][0] = 1.0; v[0][1] = 0.0;
@@ -356,8 +357,7 @@ static inline void sc_trust_region_2d(const double *H, const double *g, double *
     h[0] = c; h[1] = a;
     v[0][0] = 0.0; v[0][1] = 1.0;
   }
-  v[1][0] = -v[0][1];
-  v[1][1] = v[0][0];
+  v[1][0] = -v[0][1], v[1][1] = v[0][0];
   for (i = 0; i < 2; ++i) gp[i] = v[i][0] * g[0] + v[i][1] * g[1];
   if (h[0] < 0) h[0] = 0; /* rounding of a semidefinite H */
   /* interior: x = -H^+ g (min-norm on a null direction) */
