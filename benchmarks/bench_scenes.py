@@ -245,6 +245,9 @@ def main() -> None:
     T = rng.normal(0, 0.1, (a.n, na))
     tb = best_of(lambda: model.forward(Q, T), a.repeat) / a.n
     print(f"  snakecg forward, single:  {t1 * 1e6:10.1f} us")
+    # one sample's cost depends on its pieces: the same single call over 50 unrelated torques
+    ts = best_of(lambda: [model.forward(q, t) for t in T[:50]], a.repeat) / 50
+    print(f"  snakecg forward, single, mean over 50 unrelated torques: {ts * 1e6:6.1f} us")
     print(f"  snakecg forward, batched: {tb * 1e6:10.1f} us per sample")
     inf = model.forward(Q, T)._raw["info"]
     print(f"    the batch's solves: mean sweeps {inf['sweeps'].mean():.1f}, mean active-set "
