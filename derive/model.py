@@ -129,15 +129,19 @@ def derive_model(n_joints: int, *, max_joints: int = MAX_SYMBOLIC_JOINTS) -> Mod
                     [("M", M, "n_s x n_s, symmetric positive definite")], assignments,
                     equation="(4)")
 
+    # each form of M_s built on a chain (the closed form needs none of its assignments)
+    forms = {"structured": lambda ch: ch.mass_matrix(),
+             "suffix_sums": lambda ch: ch.mass_matrix_suffix_sums(),
+             "closed": lambda ch: closed_form_mass_matrix(s)}
     candidates: dict[str, FunctionSpec] = {}
     ch = StructuredChain(s)
-    candidates["structured"] = mass_fn(ch.mass_matrix(), ch.assignments)
+    candidates["structured"] = mass_fn(forms["structured"](ch), ch.assignments)
     if n_joints <= CLOSED_FORM_MAX_JOINTS:
         # the suffix-sum form (about 3.5 n^2) wins for one joint; both it and the closed form
         # lose by more at every further joint count measured
         ch = StructuredChain(s)
-        candidates["suffix_sums"] = mass_fn(ch.mass_matrix_suffix_sums(), ch.assignments)
-        candidates["closed"] = mass_fn(closed_form_mass_matrix(s), ())
+        candidates["suffix_sums"] = mass_fn(forms["suffix_sums"](ch), ch.assignments)
+        candidates["closed"] = mass_fn(forms["closed"](ch), ())
     counts = {}
     counts_casadi = {}
     for name, f in candidates.items():
@@ -156,8 +160,7 @@ def derive_model(n_joints: int, *, max_joints: int = MAX_SYMBOLIC_JOINTS) -> Mod
     # form chosen above) from one chain, so that the joints' sines and cosines are taken once
     ch = StructuredChain(s)
     poses, J = ch.link_poses(), ch.link_jacobians()
-    M = {"structured": ch.mass_matrix, "suffix_sums": ch.mass_matrix_suffix_sums,
-         "closed": lambda: closed_form_mass_matrix(s)}[form]()
+    M = forms[form](ch)
     functions.append(
         _fn("scene_kinematics", "Link poses, Jacobians and M_s at once (one set of sines).",
             [q_in, K_in],
