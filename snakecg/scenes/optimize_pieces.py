@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from .extremes_coulomb import contact_conditions, force_family
 from .maps import state_maps
 from .optimize_task import IPOPT_TOL, MARGIN, contact_states
 from .solve import BOX, DISC, HELD, SLIDE, SPLIT, UNILATERAL, ZERO
@@ -45,13 +46,15 @@ def _affine(p, st):
         vs = vec(state_maps(p, st_b, {b: np.pi / 2}))
         for k in v0:
             extra[k].append((vc[k] - v0[k], vs[k] - v0[k]))
-    return {k: (X[k], v0[k], extra[k]) for k in v0}, slides, m0["singular"]
+    # a family of forces (a box flush on a link, both corners sticking): lam + Z z
+    Z = force_family(p, m0)[0] if not slides else np.zeros((len(v0["lam"]), 0))
+    return {k: (X[k], v0[k], extra[k]) for k in v0}, slides, Z
 
 
 def _build(p, roles, task, st, start, relax=0.0):
     import casadi as ca
 
-    aff, slides, _ = _affine(p, st)
+    aff, slides, Z = _affine(p, st)
     opti = ca.Opti()
     tau = opti.variable(p.n_a)
     th = opti.variable(len(slides)) if slides else None
@@ -64,11 +67,15 @@ def _build(p, roles, task, st, start, relax=0.0):
         return out
 
     a, lam, w = ex("a"), ex("lam"), ex("w")
+    if Z.shape[1]:  # the forces' free directions: any member of the family will do
+        lam = lam + ca.mtimes(ca.DM(Z), opti.variable(Z.shape[1]))
     keep = 1 - MARGIN
     for b, (code, (role, zero), k, par) in enumerate(zip(st, roles, p.kind, p.par)):
         r = p.start[b]
-        if k == UNILATERAL:
-            opti.subject_to((lam[r] if code == HELD else w[r]) >= 0)
+        if k == UNILATERAL:  # Coulomb's conditions where the contact has friction
+            lin = {"lam": lam, "w": w}
+            for terms in contact_conditions(p, b, code):
+                opti.subject_to(sum(c * lin[key][i] for key, i, c in terms) >= 0)
         elif code == HELD and not zero and k == BOX:
             opti.subject_to(opti.bounded(-par[0] * keep, lam[r], par[0] * keep))
         elif code == HELD and not zero and k == DISC:
@@ -198,6 +205,7 @@ def solve_pieces(p, roles, task, sliding_objects):
         cert["reason"] = f"no piece solved ({unknown} not answered by IPOPT)"
         return None, "failed", cert
     value = best[0]
+    cert["piece"] = [int(c) for c in best[2]]
     cert["value"] = {"least_slip_push": value, "strongest_push": -value,
                      "max_sr": -value}[task["objective"]]
     if cert["ok"]:

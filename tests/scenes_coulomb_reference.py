@@ -1,0 +1,151 @@
+"""A reference for the searches over pieces with Coulomb friction at the contacts, written
+apart from snakecg's pieces (snakecg/scenes/extremes*.py, optimize*.py, maps.py): every piece
+of Coulomb's law (each frictional contact open, sticking, slipping either way; each bounded
+wheel sticking or sliding either way) as affine maps of the torque, built by the dense solve
+of its equations in (a, lam) (``test_scenes_contact_friction.piece_solution``, on rows from
+the geometry reference) at the zero and unit torques, and its conditions checked densely on
+many torques at once. Singular pieces are left out and counted."""
+
+from __future__ import annotations
+
+import itertools
+
+import numpy as np
+
+from snakecg.scenes.solve import BOX, FREE, UNILATERAL
+
+from test_scenes_contact_friction import piece_solution, reference_problem
+
+
+def options(p, *, wheels_stick=False):
+    """Every block's states (``coulomb_solutions``' words); ``wheels_stick``: bounded wheels
+    sticking only (the optimal torques' pieces)."""
+    out = []
+    for b in p["blocks"]:
+        if b["kind"] == FREE:
+            out.append(["held"])
+        elif b["kind"] == UNILATERAL:
+            out.append(["open", "stick", "slip+", "slip-"] if b["tangent"] is not None
+                       else ["held", "open"])
+        elif b["kind"] == BOX:
+            out.append(["zero"] if not b["p"] > 0 else ["stick"] if wheels_stick
+                       else ["stick", "+", "-"])
+        else:
+            raise ValueError("polyhedral blocks only")
+    return out
+
+
+class Pieces:
+    """Every regular piece at configuration ``q``: ``a = tau @ Xa.T + a0``, ``lam`` alike."""
+
+    def __init__(self, model, q, *, wheels_stick=False):
+        na = model.n_joints
+        taus = np.vstack([np.zeros(na), np.eye(na)])
+        probs = [reference_problem(model, q, t) for t in taus]
+        self.p = p = probs[0]
+        self.ns, self.na = model.n_coordinates, na
+        self.M, self.A = p["M"], p["A"]
+        n = self.M.shape[0]
+        self.B = np.zeros((n, na))
+        self.B[3:self.ns] = np.eye(na)
+        self.Minv = np.linalg.inv(self.M)
+        self.N = self.B.T @ self.Minv @ self.B  # eq. 31
+        self.pieces, self.singular = [], 0
+        for combo in itertools.product(*options(p, wheels_stick=wheels_stick)):
+            xs = [piece_solution(pr, combo) for pr in probs]
+            if any(x is None for x in xs):
+                self.singular += 1
+                continue
+            a0, l0 = xs[0]
+            self.pieces.append({"combo": combo, "a0": a0, "l0": l0,
+                                "Xa": np.array([x[0] - a0 for x in xs[1:]]).T,
+                                "Xl": np.array([x[1] - l0 for x in xs[1:]]).T})
+        self.object_rows = {c["row"] for c in p["contacts"] if "object" in (
+            c["bodies"][0][0], c["bodies"][1][0])}
+
+    def boundary(self, u):
+        """Torques on the ellipsoid's boundary ``tau^T N tau = 1`` for unit vectors ``u``."""
+        s, V = np.linalg.eigh(self.N)
+        return u @ (V / np.sqrt(s)).T
+
+    def solve(self, piece, taus):
+        return taus @ piece["Xa"].T + piece["a0"], taus @ piece["Xl"].T + piece["l0"]
+
+    def holds(self, piece, taus, tol=1e-9):
+        """Where the piece meets every condition of Coulomb's law (and the wheels' sets)."""
+        a, lam = self.solve(piece, taus)
+        w = a @ self.A.T
+        F = np.maximum(1e-12, np.abs(lam).max(axis=1))
+        W = np.maximum(1e-12, np.abs((taus @ self.B.T @ self.Minv.T) @ self.A.T).max(axis=1))
+        ok = np.ones(len(taus), bool)
+        for b, s in zip(self.p["blocks"], piece["combo"]):
+            r, t = b["row"], b["tangent"]
+            if b["kind"] == UNILATERAL:
+                ok &= (lam[:, r] >= -tol * F) & (w[:, r] >= -tol * W)
+                if s == "stick" and t is not None:
+                    ok &= np.abs(lam[:, t]) <= b["mu"] * lam[:, r] + tol * F
+                elif s == "slip+":
+                    ok &= w[:, t] >= -tol * W
+                elif s == "slip-":
+                    ok &= w[:, t] <= tol * W
+            elif b["kind"] == BOX and s == "stick":
+                ok &= np.abs(lam[:, r]) <= b["p"] * (1 + tol) + tol * F
+            elif s == "+":
+                ok &= w[:, r] <= tol * W
+            elif s == "-":
+                ok &= w[:, r] >= -tol * W
+        return ok
+
+    def kept(self, piece) -> bool:
+        """Every contact of an object touching (not open) on this piece."""
+        return not any(b["kind"] == UNILATERAL and b["row"] in self.object_rows
+                       and s == "open" for b, s in zip(self.p["blocks"], piece["combo"]))
+
+    def metrics(self, a, taus):
+        """The paper's metrics of accelerations ``a`` (K, n) at torques ``taus``."""
+        ns, M = self.ns, self.M
+        qdd = a[:, :ns]
+        out = {"norm_qdd": np.einsum("ki,ij,kj->k", qdd, M[:ns, :ns], qdd)}
+        ao = a[:, ns:]
+        out["norm_a_obj"] = np.einsum("ki,ij,kj->k", ao, M[ns:, ns:], ao)
+        for j in range((M.shape[0] - ns) // 3):
+            sl = slice(ns + 3 * j, ns + 3 * j + 3)
+            out[f"norm_a_obj[{j + 1}]"] = np.einsum("ki,ij,kj->k", a[:, sl], M[sl, sl],
+                                                     a[:, sl])
+        d = a - taus @ (self.Minv @ self.B).T
+        out["norm_lambda"] = np.einsum("ki,ij,kj->k", d, M, d)
+        D = out["norm_a_obj"] + out["norm_qdd"]
+        free = np.einsum("ki,ij,kj->k", taus, self.N, taus)
+        out["sr"] = np.where(D > 1e-12 * free, out["norm_a_obj"] / np.where(D > 0, D, 1), 0.0)
+        return out
+
+    def extremes(self, taus):
+        """Over every piece holding at each torque: ``{(attr, metric): (value, tau)}`` for
+        the max, the min and the min over the pieces keeping every object contact."""
+        best = {}
+        for piece in self.pieces:
+            ok = self.holds(piece, taus)
+            if not ok.any():
+                continue
+            a, _ = self.solve(piece, taus[ok])
+            vals = self.metrics(a, taus[ok])
+            for m, v in vals.items():
+                for attr, pick in (("max", np.argmax), ("min", np.argmin)) + (
+                        (("min_kept", np.argmin),) if self.kept(piece) else ()):
+                    i = int(pick(v))
+                    old = best.get((attr, m))
+                    if old is None or (v[i] > old[0] if attr == "max" else v[i] < old[0]):
+                        best[(attr, m)] = (float(v[i]), taus[ok][i])
+        return best
+
+    def solutions_at(self, tau):
+        """The distinct solutions (accelerations, metrics) of every piece holding at tau."""
+        out = []
+        for piece in self.pieces:
+            if self.holds(piece, tau[None])[0]:
+                a, _ = self.solve(piece, tau[None])
+                if not any(np.abs(a[0] - b).max() <= 1e-7 * max(1.0, np.abs(a).max())
+                           for b, _ in out):
+                    out.append((a[0], {k: float(v[0]) for k, v in
+                                       self.metrics(a, tau[None]).items()}))
+        return out
