@@ -71,30 +71,46 @@ class Pieces:
     def solve(self, piece, taus):
         return taus @ piece["Xa"].T + piece["a0"], taus @ piece["Xl"].T + piece["l0"]
 
-    def holds(self, piece, taus, tol=1e-9):
-        """Where the piece meets every condition of Coulomb's law (and the wheels' sets)."""
-        a, lam = self.solve(piece, taus)
-        w = a @ self.A.T
+    def slacks(self, piece, taus):
+        """Every condition of Coulomb's law (and the wheels' sets) on the piece as a value
+        that is >= 0 where it holds, ``(K, c)``, with its scale ``(K, c)`` (the largest
+        force, or the free motion's largest row acceleration)."""
+        lam = taus @ piece["Xl"].T + piece["l0"]
+        w = taus @ (self.A @ piece["Xa"]).T + self.A @ piece["a0"]
         F = np.maximum(1e-12, np.abs(lam).max(axis=1))
-        W = np.maximum(1e-12, np.abs((taus @ self.B.T @ self.Minv.T) @ self.A.T).max(axis=1))
-        ok = np.ones(len(taus), bool)
+        W = np.maximum(1e-12, np.abs(taus @ (self.A @ self.Minv @ self.B).T).max(axis=1))
+        vals, scales = [], []
+
+        def add(v, sc):
+            vals.append(v)
+            scales.append(sc)
+
         for b, s in zip(self.p["blocks"], piece["combo"]):
             r, t = b["row"], b["tangent"]
             if b["kind"] == UNILATERAL:
-                ok &= (lam[:, r] >= -tol * F) & (w[:, r] >= -tol * W)
+                add(lam[:, r], F)
+                add(w[:, r], W)
                 if s == "stick" and t is not None:
-                    ok &= np.abs(lam[:, t]) <= b["mu"] * lam[:, r] + tol * F
+                    add(b["mu"] * lam[:, r] - lam[:, t], F)
+                    add(b["mu"] * lam[:, r] + lam[:, t], F)
                 elif s == "slip+":
-                    ok &= w[:, t] >= -tol * W
+                    add(w[:, t], W)
                 elif s == "slip-":
-                    ok &= w[:, t] <= tol * W
+                    add(-w[:, t], W)
             elif b["kind"] == BOX and s == "stick":
-                ok &= np.abs(lam[:, r]) <= b["p"] * (1 + tol) + tol * F
+                add(b["p"] - lam[:, r], F + b["p"])
+                add(b["p"] + lam[:, r], F + b["p"])
             elif s == "+":
-                ok &= w[:, r] <= tol * W
+                add(-w[:, r], W)
             elif s == "-":
-                ok &= w[:, r] >= -tol * W
-        return ok
+                add(w[:, r], W)
+        return np.array(vals).T.reshape(len(taus), -1), np.array(scales).T.reshape(
+            len(taus), -1)
+
+    def holds(self, piece, taus, tol=1e-9):
+        """Where the piece meets every condition of Coulomb's law (and the wheels' sets)."""
+        v, sc = self.slacks(piece, taus)
+        return np.all(v >= -tol * sc, axis=1)
 
     def kept(self, piece) -> bool:
         """Every contact of an object touching (not open) on this piece."""

@@ -64,16 +64,17 @@ def test_exact_extremes_against_every_piece_on_a_dense_circle(two_joint):
         ex = model.extremes(q)
         assert ex.method.startswith("exact pieces") and ex.certified, ex.reason
         ref = Pieces(model, q)
-        th = np.linspace(0, 2 * np.pi, 20000, endpoint=False)
+        th = np.linspace(0, 2 * np.pi, 12000, endpoint=False)
         coarse = ref.extremes(_circle(ref, th))
-        for (attr, m), (v_ref, t_ref) in coarse.items():
-            if m not in ex.max:
-                continue
+        keys = [k for k in coarse if k[1] in ex.max]
+        # refined (steps of 2e-6 rad) near every returned torque and every grid's best
+        win = np.linspace(-3.2e-4, 3.2e-4, 321)
+        centres = [_angles(ref, getattr(ex, "tau_" + attr)[m]) for attr, m in keys] + [
+            _angles(ref, coarse[k][1]) for k in keys]
+        fine = ref.extremes(_circle(ref, np.concatenate([c + win for c in centres])))
+        for attr, m in keys:
             got, tau = getattr(ex, attr)[m], getattr(ex, "tau_" + attr)[m]
-            # refined near the returned torque and near the grid's best
-            fine = np.concatenate([c + np.linspace(-1e-3, 1e-3, 4001)
-                                   for c in (_angles(ref, tau), _angles(ref, t_ref))])
-            v_fine = ref.extremes(_circle(ref, fine)).get((attr, m), (v_ref, None))[0]
+            v_ref, v_fine = coarse[(attr, m)][0], fine.get((attr, m), coarse[(attr, m)])[0]
             best = max(v_ref, v_fine) if attr == "max" else min(v_ref, v_fine)
             if attr == "max":  # no solution anywhere beats it, and it is reached
                 assert got >= best - 1e-9, (attr, m, got, best)

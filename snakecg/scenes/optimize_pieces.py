@@ -153,6 +153,56 @@ def _starts(p, task, st, rng):
     return [(t0, np.full(n_sl, base + np.pi + off)) for off in (0.0, np.pi / 2, -np.pi / 2)]
 
 
+def _lp_empty(p, task, st) -> bool:
+    """Whether a relaxation of the piece (no object sliding) has no point, by an LP (HiGHS):
+    the linear conditions in ``(tau, z)`` (the contacts', the bounded wheels' bounds, the
+    push's ``d . a_o >= a_min`` or ``a_o = a_obj``, the torque box) with the ellipsoid
+    widened to its bounding box and the conic sets dropped. An empty relaxation is an empty
+    piece: where IPOPT cannot tell (a piece without interior), this says infeasible."""
+    from scipy.optimize import linprog
+
+    aff, _, Z = _affine(p, st)
+    na, nz = p.n_a, Z.shape[1]
+    Xl, l0, _ = aff["lam"]
+    Xw, w0, _ = aff["w"]
+    Xa, a0, _ = aff["a"]
+    lin = {"lam": (np.hstack([Xl, Z]), l0), "w": (np.hstack([Xw, np.zeros((len(w0), nz))]),
+                                                  w0)}
+    G, h = [], []  # G x + h >= 0
+    for b, code in enumerate(st):
+        k, r = p.kind[b], p.start[b]
+        if k == UNILATERAL:
+            for terms in contact_conditions(p, b, code):
+                G.append(sum(c * lin[key][0][i] for key, i, c in terms))
+                h.append(sum(c * lin[key][1][i] for key, i, c in terms))
+        elif k == BOX and code == HELD and p.par[b][0] > 0:
+            for sg in (1.0, -1.0):
+                G.append(-sg * lin["lam"][0][r])
+                h.append(p.par[b][0] * (1 - MARGIN) - sg * l0[r])
+    j = task["object"] - 1
+    Xo = np.hstack([Xa[p.n_s + 3 * j:p.n_s + 3 * j + 3], np.zeros((3, nz))])
+    ao0 = a0[p.n_s + 3 * j:p.n_s + 3 * j + 3]
+    eq = None
+    if task["objective"] == "least_slip_push":
+        if task["a_obj"] is not None:
+            eq = (Xo, task["a_obj"] - ao0)
+        else:
+            G.append(task["direction"] @ Xo)
+            h.append(task["direction"] @ ao0 - task["a_min"])
+    hi = np.full(na, np.inf)
+    if task["radius"] is not None:  # the ellipsoid's bounding box
+        hi = task["radius"] * np.sqrt(np.diag(np.linalg.inv(p.N)))
+    if task["tau_max"] is not None:
+        hi = np.minimum(hi, task["tau_max"])
+    bounds = [(-v, v) for v in hi] + [(None, None)] * nz
+    G = np.array(G).reshape(-1, na + nz)
+    res = linprog(np.zeros(na + nz), A_ub=-G if len(G) else None,
+                  b_ub=np.array(h) if len(G) else None,
+                  A_eq=None if eq is None else eq[0], b_eq=None if eq is None else eq[1],
+                  bounds=bounds, method="highs")
+    return res.status == 2  # infeasible
+
+
 def solve_pieces(p, roles, task, sliding_objects):
     """``(tau, status, certificate)``: the best piece's torque; ``optimal`` where every piece
     is convex and solved or proven infeasible."""
@@ -189,6 +239,8 @@ def solve_pieces(p, roles, task, sliding_objects):
                 outcome = "unknown"
             if relax == 0.0 and outcome != "unknown" and start is starts[-1]:
                 break
+        if outcome == "unknown" and not any(c == SLIDE for c in st) and _lp_empty(p, task, st):
+            outcome = "infeasible"  # IPOPT did not say, a relaxation's LP proves it
         solved += outcome == "solved"
         infeasible += outcome == "infeasible"
         unknown += outcome == "unknown"
