@@ -31,6 +31,15 @@ optimum, else ``stick_only`` (the sticking answer, not certified against sliding
 
 Every answer is checked by the compiled forward solve at its torque (the objective to 1e-6,
 no link's set sliding): a disagreement is status ``failed`` with the reason.
+
+Contacts with Coulomb friction (``mu_contact``) give their pieces four states each (open,
+stick, slip either way: :mod:`snakecg.scenes.extremes_coulomb`), with linear conditions:
+the pushes stay convex, ``max_sr``'s pieces stay cones. Coulomb's law may have several
+solutions at a torque; the optimum is over every solution at every torque. Where the
+forward solve at the optimum's torque meets another solution than the optimum's piece, the
+piece's own solution is checked apart (:func:`piece_objective`: its conditions at ``tau``)
+and the answer keeps its status with ``uniqueness`` ``several`` and the reason giving both
+values; where the piece does not hold there it is ``failed``.
 """
 
 from __future__ import annotations
