@@ -198,11 +198,11 @@ def test_several_solutions_at_the_optimum_are_flagged_with_the_reference_s_count
     rng = np.random.default_rng(0)
     seen = 0
     for model, q in frictional(rng, 12, joints=2, max_contacts=4):
+        ref = Pieces(model, q)
         for obj, kw in (("max_sr", {}), ("strongest_push", {"direction": [1.0, 0.0]})):
             got = model.optimize(q, obj, tau_max=None, **kw)
             if got.status != "optimal":
                 continue
-            ref = Pieces(model, q)
             sols = ref.solutions_at(got.tau)
             ns = model.n_coordinates
             values = [s[1]["sr"] if obj == "max_sr" else s[0][ns] for s in sols]
