@@ -17,6 +17,33 @@ from snakecg.scenes.solve import BOX, FREE, UNILATERAL
 from test_scenes_contact_friction import piece_solution, reference_problem
 
 
+def piece_system(p, combo):
+    """The piece's linear equations ``K x = rhs`` in ``x = (a, lam)``, as
+    ``test_scenes_contact_friction.piece_solution`` writes them (kept apart here to solve
+    the singular ones in the least-squares sense)."""
+    M, f, A = p["M"], p["f"], p["A"]
+    m, n = A.shape
+    K = np.zeros((n + m, n + m))
+    rhs = np.zeros(n + m)
+    K[:n, :n], K[:n, n:], rhs[:n] = M, -A.T, f
+    for b, s in zip(p["blocks"], combo):
+        r, t = b["row"], b["tangent"]
+        if s in ("held", "stick", "slip+", "slip-"):
+            K[n + r, :n] = A[r]
+        else:  # open, zero, a wheel at its bound
+            K[n + r, n + r] = 1.0
+            rhs[n + r] = {"+": b["p"], "-": -b["p"]}.get(s, 0.0)
+        if t is None:
+            continue
+        if s == "stick":
+            K[n + t, :n] = A[t]
+        else:  # open: 0; slipping: lam_t + -mu lam_n = 0
+            K[n + t, n + t] = 1.0
+            if s != "open":
+                K[n + t, n + r] = b["mu"] if s == "slip+" else -b["mu"]
+    return K, rhs
+
+
 def options(p, *, wheels_stick=False):
     """Every block's states (``coulomb_solutions``' words); ``wheels_stick``: bounded wheels
     sticking only (the optimal torques' pieces)."""
@@ -53,15 +80,37 @@ class Pieces:
         self.pieces, self.singular = [], 0
         for combo in itertools.product(*options(p, wheels_stick=wheels_stick)):
             xs = [piece_solution(pr, combo) for pr in probs]
+            extra = {}
             if any(x is None for x in xs):
-                self.singular += 1
-                continue
+                xs, extra = self._family(probs, combo)
+                if xs is None:
+                    self.singular += 1
+                    continue
             a0, l0 = xs[0]
             self.pieces.append({"combo": combo, "a0": a0, "l0": l0,
                                 "Xa": np.array([x[0] - a0 for x in xs[1:]]).T,
-                                "Xl": np.array([x[1] - l0 for x in xs[1:]]).T})
+                                "Xl": np.array([x[1] - l0 for x in xs[1:]]).T, **extra})
         self.object_rows = {c["row"] for c in p["contacts"] if "object" in (
             c["bodies"][0][0], c["bodies"][1][0])}
+
+    def _family(self, probs, combo):
+        """A singular piece whose forces are a line ``lam + z Zl`` with the accelerations
+        determined (a box flush on a link, both corners sticking, sharing one friction):
+        its least-norm solutions and ``Zl``; (None, {}) otherwise (counted singular)."""
+        systems = [piece_system(pr, combo) for pr in probs]
+        K = systems[0][0]
+        n = probs[0]["M"].shape[0]
+        _, sv, Vt = np.linalg.svd(K)
+        null = Vt[sv <= 1e-10 * sv[0]].T
+        if null.shape[1] != 1 or np.abs(null[:n]).max() > 1e-9:
+            return None, {}
+        xs = []
+        for Ki, rhs in systems:
+            x = np.linalg.lstsq(Ki, rhs, rcond=None)[0]
+            if np.abs(Ki @ x - rhs).max() > 1e-9 * max(1.0, np.abs(rhs).max()):
+                return None, {}  # inconsistent: no solution on this piece
+            xs.append((x[:n], x[n:]))
+        return xs, {"Zl": null[n:, 0]}
 
     def boundary(self, u):
         """Torques on the ellipsoid's boundary ``tau^T N tau = 1`` for unit vectors ``u``."""
@@ -79,38 +128,53 @@ class Pieces:
         w = taus @ (self.A @ piece["Xa"]).T + self.A @ piece["a0"]
         F = np.maximum(1e-12, np.abs(lam).max(axis=1))
         W = np.maximum(1e-12, np.abs(taus @ (self.A @ self.Minv @ self.B).T).max(axis=1))
-        vals, scales = [], []
+        vals, scales, zc = [], [], []
+        Zl = piece.get("Zl", np.zeros(lam.shape[1]))
 
-        def add(v, sc):
+        def add(v, sc, z=0.0):
             vals.append(v)
             scales.append(sc)
+            zc.append(z)
 
         for b, s in zip(self.p["blocks"], piece["combo"]):
             r, t = b["row"], b["tangent"]
             if b["kind"] == UNILATERAL:
-                add(lam[:, r], F)
+                add(lam[:, r], F, Zl[r])
                 add(w[:, r], W)
                 if s == "stick" and t is not None:
-                    add(b["mu"] * lam[:, r] - lam[:, t], F)
-                    add(b["mu"] * lam[:, r] + lam[:, t], F)
+                    add(b["mu"] * lam[:, r] - lam[:, t], F, b["mu"] * Zl[r] - Zl[t])
+                    add(b["mu"] * lam[:, r] + lam[:, t], F, b["mu"] * Zl[r] + Zl[t])
                 elif s == "slip+":
                     add(w[:, t], W)
                 elif s == "slip-":
                     add(-w[:, t], W)
             elif b["kind"] == BOX and s == "stick":
-                add(b["p"] - lam[:, r], F + b["p"])
-                add(b["p"] + lam[:, r], F + b["p"])
+                add(b["p"] - lam[:, r], F + b["p"], -Zl[r])
+                add(b["p"] + lam[:, r], F + b["p"], Zl[r])
             elif s == "+":
                 add(-w[:, r], W)
             elif s == "-":
                 add(w[:, r], W)
+        self._zc = np.array(zc)
         return np.array(vals).T.reshape(len(taus), -1), np.array(scales).T.reshape(
             len(taus), -1)
 
     def holds(self, piece, taus, tol=1e-9):
-        """Where the piece meets every condition of Coulomb's law (and the wheels' sets)."""
+        """Where the piece meets every condition of Coulomb's law (and the wheels' sets);
+        on a line of forces, for some point ``z`` of it (an interval per torque)."""
         v, sc = self.slacks(piece, taus)
-        return np.all(v >= -tol * sc, axis=1)
+        zc = self._zc
+        if "Zl" not in piece:
+            return np.all(v >= -tol * sc, axis=1)
+        g = v + tol * sc  # g + zc z >= 0
+        free = np.abs(zc) <= 1e-12
+        ok = np.all(g[:, free] >= 0, axis=1)
+        with np.errstate(divide="ignore"):
+            lo = np.max(np.where(zc > 1e-12, -g / np.where(zc > 1e-12, zc, 1), -np.inf),
+                        axis=1)
+            hi = np.min(np.where(zc < -1e-12, g / np.where(zc < -1e-12, -zc, 1), np.inf),
+                        axis=1)
+        return ok & (lo <= hi)
 
     def kept(self, piece) -> bool:
         """Every contact of an object touching (not open) on this piece."""
