@@ -256,7 +256,7 @@ def _held(model, p, names, hold) -> SceneExtremes:
         for attr in ("max", "min", "min_kept"):
             getattr(ex, attr)[m] = v
             getattr(ex, "tau_" + attr)[m] = hold.tau.copy()
-    ex = _check(model, p, ex, names)  # (a = 0 is the only solution: see the module's end)
+    ex = _check(model, p, ex, names)  # (a = 0 the only solution: the module's docstring)
     for m in names:  # the exact values, not the forward solve's rounding of them
         ex.max[m] = ex.bound_max[m] = ex.min[m]
     return ex

@@ -340,12 +340,15 @@ def _finish(model, qa, p, task, tau, status, cert, solver, limits):
         if mine is not None and abs(mine - want) <= CHECK_TOL * max(1.0, abs(want)):
             # the piece's solution holds at tau and attains the optimum: Coulomb's law has
             # another solution there, the one the forward solve picks (or none it finds)
-            uniq = "several"
-            picked = (f"the forward solve picks another one, of objective {value:.9g}"
-                      if an.status == 0 else "the forward solve finds none of them")
-            reason = (f"Coulomb's law has several solutions at tau: the optimum {want:.9g} is "
-                      f"attained by one of them (the piece's, in certificate['piece']); "
-                      f"{picked}")
+            uniq = "several" if an.status == 0 else "not_certified"
+            where = "(the piece's, in certificate['piece'], checked apart)"
+            if an.status == 0:
+                reason = (f"Coulomb's law has several solutions at tau: the optimum "
+                          f"{want:.9g} is the objective of one of them {where}; the forward "
+                          f"solve picks another one, of objective {value:.9g}")
+            else:
+                reason = (f"the optimum {want:.9g} is the objective of a solution of "
+                          f"Coulomb's law at tau {where}; the forward solve finds none there")
             value = want
         else:
             status, reason = "failed", (f"the forward solve's objective {value:.9g} differs "
