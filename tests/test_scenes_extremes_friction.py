@@ -141,6 +141,9 @@ def test_coulomb_ground_with_contact_friction_is_sampled_and_says_so():
     assert len(res.contacts) >= 2 and any(c["mu"] > 0 for c in res.contacts)
     ex = model.extremes(q, budget=2000)
     assert ex.method.startswith("sampled, not certified: contact friction on Coulomb")
+    with pytest.raises(InputError, match=r"exact=True needs every block to be a 1-D set .* "
+                                         r"use exact=None for sampled values"):
+        model.extremes(q, exact=True)
     assert not ex.certified and "not certified" in ex.reason and ex.samples == 2000
     for m in ("norm_a_obj", "norm_qdd", "norm_lambda", "sr"):
         assert ex.bound_max[m] == 1.0 and ex.bound_min[m] == 0.0
@@ -161,7 +164,8 @@ def test_more_pieces_than_the_cap_fall_back_to_sampling(monkeypatch):
     for m in ("norm_a_obj", "norm_qdd", "norm_lambda", "sr"):  # the samples stay inside
         assert ex.max[m] <= exact.max[m] + 1e-9 and ex.min[m] >= exact.min[m] - 1e-9
     with pytest.raises(InputError, match=r"exact: \d+ states at this configuration \(more "
-                                         r"than 2\)"):
+                                         r"than 2\); use exact=None for sampled values "
+                                         r"\(with contact friction they are not certified\)"):
         model.extremes(q, exact=True)
 
 

@@ -194,7 +194,9 @@ def extremes(model, q, *, gap: float = 1e-3, budget: int = 100_000,
                 continue
             if exact:
                 raise InputError(f"exact: {n_states} states at this configuration (more than "
-                                 f"{MAX_STATES}); use exact=None for certified bounds")
+                                 f"{MAX_STATES}); use exact=None for " + (
+                                     "sampled values (with contact friction they are not "
+                                     "certified)" if p.tangent else "certified bounds"))
             if p.tangent:
                 parts.append(_sampled(model, p, names, budget, f"contact friction and "
                                       f"{n_states} pieces (more than {MAX_STATES})"))
@@ -202,7 +204,9 @@ def extremes(model, q, *, gap: float = 1e-3, budget: int = 100_000,
         elif exact:
             raise InputError("exact=True needs every block to be a 1-D set (contacts, wheels, "
                              "ideal wheels, frictionless ground); this scene has Coulomb or "
-                             "anisotropic sets: use exact=None for certified bounds")
+                             "anisotropic sets: use exact=None for " + (
+                                 "sampled values (with contact friction they are not "
+                                 "certified)" if p.tangent else "certified bounds"))
         elif p.tangent:
             parts.append(_sampled(model, p, names, budget, "contact friction with exact=False"
                                   if exact is False else "contact friction on Coulomb or "
