@@ -174,12 +174,24 @@ def test_maps_name_a_frictional_contact_s_states_and_refuse_held():
     np.testing.assert_allclose(a[0], [-(3.0 - 2.5) / 2.0, 0.0, 0.0], atol=1e-12)
 
 
-@pytest.mark.parametrize("what", ["extremes", "optimize"])
-def test_extremes_and_optimize_refuse_contact_friction_in_one_line(what):
-    model = snakecg.load(snakecg.scenes.GeneralScene(
-        snakecg.Robot(joints=2), obstacles=(snakecg.scenes.Obstacle(
-            shape="peg", center=(0.0, 5.0), radius=0.1, mu_contact=0.4),)))
-    with pytest.raises(InputError, match=rf"^{what} is not available with contact friction "
-                                         r"\(mu_contact > 0\).*maps \(a contact's state open, "
-                                         r"stick, slip\+ or slip-\) take it$"):
-        getattr(model, what)(np.zeros(5))
+def test_extremes_and_optimize_without_a_frictional_contact_are_the_frictionless_ones():
+    """A rough peg that touches nothing: extremes and optimize take the scene and answer as
+    the same scene without friction (they used to refuse contact friction)."""
+    robot = snakecg.Robot(joints=2)
+    box = snakecg.scenes.SceneObject(shape="box", size=(0.08, 0.06), mass=1.5, touching={
+        "link": 1, "offset": 0.075, "side": "left"})
+    far = snakecg.scenes.Obstacle(shape="peg", center=(0.0, 5.0), radius=0.1)
+    rough, smooth = (snakecg.load(snakecg.scenes.GeneralScene(
+        robot, objects=(box,), obstacles=(dataclasses.replace(far, mu_contact=mu),)))
+        for mu in (0.4, None))
+    q = np.zeros(5)
+    e1, e0 = rough.extremes(q), smooth.extremes(q)
+    assert e1.method == e0.method and e1.certified and e0.certified
+    for m in e0.max:
+        assert e1.max[m] == pytest.approx(e0.max[m], abs=1e-12)
+        assert e1.min[m] == pytest.approx(e0.min[m], abs=1e-12)
+        assert e1.solutions["max"][m] == 1
+    o1, o0 = rough.optimize(q, "max_sr"), smooth.optimize(q, "max_sr")
+    assert o1.status == o0.status == "optimal"
+    assert o1.objective_value == pytest.approx(o0.objective_value, abs=1e-12)
+    assert o1.uniqueness == "unique" and o0.uniqueness is None

@@ -25,13 +25,32 @@ Two methods, chosen per configuration:
   motion's norm is 1) or until ``budget`` solves are spent; what the certificate leaves out
   is said there (``sr`` where nothing moves, ``min_kept``).
 
-Before either, a configuration where friction holds every torque of the ellipsoid still
+Contacts with Coulomb friction (``mu_contact``) add their four states to the exact pieces
+(open, stick, slip either way: :mod:`snakecg.scenes.extremes_coulomb`, whose conditions are
+Coulomb's law exactly), at most ``MAX_STATES`` states. Coulomb's problem may have several
+solutions at a torque: the pieces' regions then overlap, and every extreme is over every
+solution at every torque of the boundary (the largest value any solution attains). At each
+returned torque ``solutions[attr][m]`` counts the distinct solutions the pieces give there
+(1: unique; ``k >= 2``: the value is one of them, and the forward solve, which picks one,
+agrees when it meets any of them; ``-k``: a singular piece holds there, so the count may be
+incomplete), and ``uniqueness`` says in one line which extremes have more than one. Where the
+pieces are not enumerated (Coulomb or anisotropic ground, more than ``MAX_STATES`` states,
+``exact=False``) there is no Lipschitz bound (no Gauss principle), so the extremes are
+**sampled**, not certified: the forward solve at ``budget`` directions, with the bounds 1 and
+0 that hold for every solution (every force dissipates) and the forward solve's own count of
+solutions at each returned torque.
+
+Before any of these, a configuration where friction holds every torque of the ellipsoid still
 (:mod:`snakecg.scenes.friction_hold`: the ground sets balance every torque within their
 sizes) is answered exactly: nothing moves, every object's norm, ``norm_qdd`` and ``sr`` are
-0 and ``norm_lambda`` is 1 on the whole boundary.
+0 and ``norm_lambda`` is 1 on the whole boundary. With contact friction ``a = 0`` is then the
+only solution: ``a^T M a = a^T B tau + w^T lam``, the balancing ground forces make
+``a^T B tau`` at most the ground's dissipation ``-w_g^T lam_g``, and the contacts' forces
+dissipate, so ``a^T M a <= 0``.
 
-``min_kept`` (both methods): the minimum over the torques that keep every contact of every
-object held (equal to ``min`` when no object is touched).
+``min_kept`` (every method): the minimum over the torques that keep every contact of every
+object touching (held; with friction, sticking or slipping), equal to ``min`` when no object
+is touched.
 """
 
 from __future__ import annotations
@@ -42,10 +61,11 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..errors import InputError
-from ..extremes_result import Extremes
+from ..extremes_result import Extremes, sphere_directions
 from ..sphere_kkt import _cut, quadratic_candidates
 from .maps import scene_problem, state_maps, whitening
 from .extremes_bounds import Sampler, bounds
+from .extremes_coulomb import PieceSolutions, contact_choices, piece_conditions
 from .friction_hold import friction_holds
 from .solve import BOX, DISC, FREE, HELD, SLIDE_NEG, SLIDE_POS, SPLIT, UNILATERAL, ZERO
 
@@ -69,20 +89,29 @@ class SceneExtremes(Extremes):
     bounds: ``bound_max[m]`` >= every value of ``m`` on the ellipsoid's boundary and
     ``bound_min[m]`` <= every value (equal to ``max``/``min`` where exact); ``gap[m]`` the
     gap of the two pairs (absolute: on the boundary every norm and sr lie in [0, 1]);
-    ``samples``: forward solves spent."""
+    ``samples``: forward solves spent. ``solutions[attr][m]`` (attr ``max``, ``min``,
+    ``min_kept``): the distinct solutions of Coulomb's law at that extreme's torque (1
+    unique, ``k >= 2`` several, ``-k`` maybe more, 0 unknown; 1 without contact friction);
+    ``uniqueness``: '' or one line naming the extremes whose torque has more than one."""
 
     bound_max: dict = field(default_factory=dict)
     bound_min: dict = field(default_factory=dict)
     gap: dict = field(default_factory=dict)
     samples: object = 0
+    solutions: dict = field(default_factory=dict)
+    uniqueness: object = ""
 
     def _squeeze(self):
         super()._squeeze()
         for d in (self.bound_max, self.bound_min, self.gap):
             for k in d:
                 d[k] = d[k][0]
+        for d in self.solutions.values():
+            for k in d:
+                d[k] = d[k][0]
         if isinstance(self.samples, np.ndarray):
             self.samples = self.samples[0]
+            self.uniqueness = self.uniqueness[0]
         if isinstance(self.method, list):
             self.method = self.method[0]
         return self
@@ -102,11 +131,11 @@ def _polyhedral(p) -> bool:
 
 def _block_states(p):
     out = []
-    for k, par in zip(p.kind, p.par):
-        if k == FREE:
+    for b, (k, par) in enumerate(zip(p.kind, p.par)):
+        if k == UNILATERAL:
+            out.append(contact_choices(p, b))
+        elif k == FREE:
             out.append((HELD,))
-        elif k == UNILATERAL:
-            out.append((HELD, ZERO))
         elif k == BOX:
             out.append((HELD, SLIDE_POS, SLIDE_NEG) if par[0] > 0 else (ZERO,))
         else:
@@ -165,11 +194,24 @@ def extremes(model, q, *, gap: float = 1e-3, budget: int = 100_000,
                 continue
             if exact:
                 raise InputError(f"exact: {n_states} states at this configuration (more than "
-                                 f"{MAX_STATES}); use exact=None for certified bounds")
+                                 f"{MAX_STATES}); use exact=None for " + (
+                                     "sampled values (with contact friction they are not "
+                                     "certified)" if p.tangent else "certified bounds"))
+            if p.tangent:
+                parts.append(_sampled(model, p, names, budget, f"contact friction and "
+                                      f"{n_states} pieces (more than {MAX_STATES})"))
+                continue
         elif exact:
             raise InputError("exact=True needs every block to be a 1-D set (contacts, wheels, "
                              "ideal wheels, frictionless ground); this scene has Coulomb or "
-                             "anisotropic sets: use exact=None for certified bounds")
+                             "anisotropic sets: use exact=None for " + (
+                                 "sampled values (with contact friction they are not "
+                                 "certified)" if p.tangent else "certified bounds"))
+        elif p.tangent:
+            parts.append(_sampled(model, p, names, budget, "contact friction with exact=False"
+                                  if exact is False else "contact friction on Coulomb or "
+                                  "anisotropic ground sets (the pieces are not polyhedra)"))
+            continue
         parts.append(_bounds(model, p, names, gap, budget))
     ex = _stack(parts, names)
     return ex if batched else ex._squeeze()
@@ -196,6 +238,10 @@ def _stack(parts, names):
     ex.certified = np.array([bool(x.certified) for x in parts])
     ex.reason = np.array([x.reason for x in parts], dtype=object)
     ex.samples = np.array([x.samples for x in parts])
+    ex.uniqueness = np.array([x.uniqueness for x in parts], dtype=object)
+    for attr in ("max", "min", "min_kept"):
+        ex.solutions[attr] = {m: np.array([x.solutions.get(attr, {}).get(m, 0) for x in parts])
+                              for m in names}
     ex.pieces = int(sum(x.pieces for x in parts))
     return ex
 
@@ -214,7 +260,7 @@ def _held(model, p, names, hold) -> SceneExtremes:
         for attr in ("max", "min", "min_kept"):
             getattr(ex, attr)[m] = v
             getattr(ex, "tau_" + attr)[m] = hold.tau.copy()
-    ex = _check(model, p, ex, names)
+    ex = _check(model, p, ex, names)  # (a = 0 the only solution: the module's docstring)
     for m in names:  # the exact values, not the forward solve's rounding of them
         ex.max[m] = ex.bound_max[m] = ex.min[m]
     return ex
@@ -245,30 +291,10 @@ def quadratics(p, mp, T, names):
 
 
 def _conditions(p, mp, state, T):
-    """The state's validity ``a . u + b >= 0`` as rows ``[a | b]``, normalized."""
-    L, l0 = mp["lam_from_tau"] @ T, mp["lam_offset"]
-    W, w0 = mp["w_from_tau"] @ T, mp["w_offset"]
-    rows = []
-    for b, code in enumerate(state):
-        r = p.start[b]
-        k, par = p.kind[b], p.par[b]
-        if k == UNILATERAL:
-            rows.append(np.r_[L[r], l0[r]] if code == HELD else np.r_[W[r], w0[r]])
-        elif k == BOX and code == HELD:
-            rows.append(np.r_[-L[r], par[0] - l0[r]])
-            rows.append(np.r_[L[r], par[0] + l0[r]])
-        elif k == BOX and code == SLIDE_POS:  # lam = +bound opposes w <= 0
-            rows.append(np.r_[-W[r], -w0[r]])
-        elif k == BOX and code == SLIDE_NEG:
-            rows.append(np.r_[W[r], w0[r]])
-    C = np.array(rows).reshape(-1, T.shape[1] + 1)
-    nrm = np.linalg.norm(C[:, :-1], axis=1)
-    keep = nrm > 1e-14 * max(1.0, np.abs(C).max(initial=0.0))
-    # a condition constant in u: always true (kept out) or never (the state is empty)
-    if np.any(~keep & (C[:, -1] < -FEAS_TOL * max(1.0, np.abs(C[:, -1]).max(initial=0)))):
-        return None
-    C = C[keep] / nrm[keep, None]
-    return C
+    """The state's validity ``a . u + b >= 0`` as rows ``[a | b]``, normalized (None where
+    empty), and whether they are exact
+    (:func:`~snakecg.scenes.extremes_coulomb.piece_conditions`)."""
+    return piece_conditions(p, mp, state, T, FEAS_TOL)
 
 
 def piece_faces(C, na):
@@ -329,17 +355,22 @@ def _exact(model, p, names) -> SceneExtremes:
     na = p.n_a
     T = whitening(p)
     states = list(itertools.product(*_block_states(p)))
-    conds, forms, kept = [], [], []
+    conds, forms, kept, accel, singular = [], [], [], [], []
     kept_blocks = [b for b, lab in enumerate(p.rows.labels) if lab[0] == "contact" and "object"
                    in (p.rows.contacts[lab[1]].a[0], p.rows.contacts[lab[1]].b[0])]
     for st in states:
         mp = state_maps(p, st)
-        C = _conditions(p, mp, st, T)
+        C, exact_rows = _conditions(p, mp, st, T)
         if C is None:
             continue
         conds.append(C)
         forms.append(quadratics(p, mp, T, names))
-        kept.append(all(st[b] == HELD for b in kept_blocks))
+        # kept: every contact of an object touching (held; with friction sticking or slipping)
+        kept.append(all(st[b] != ZERO for b in kept_blocks))
+        if p.tangent:  # the solutions' accelerations at a torque (Coulomb: maybe several)
+            accel.append((np.vstack([mp["qdd_from_tau"], mp["a_obj_from_tau"].reshape(
+                3 * p.n_o, na)]) @ T, np.r_[mp["qdd_offset"], mp["a_obj_offset"].ravel()]))
+            singular.append(not exact_rows)
     kept = np.array(kept)
     faces = piece_faces(conds, na)
     ex = SceneExtremes(method=f"exact pieces ({len(conds)} states, KKT points of every face "
@@ -358,7 +389,8 @@ def _exact(model, p, names) -> SceneExtremes:
             if u is not None:
                 pts.append(u)
     _dinkelbach(ex, conds, forms, faces, kept, T, pts)
-    return _check(model, p, ex, names)
+    sols = PieceSolutions(conds, accel, forms, singular, FEAS_TOL) if p.tangent else None
+    return _check(model, p, ex, names, sols, T)
 
 
 def _restrict(faces, sel):
@@ -411,25 +443,41 @@ def _dinkelbach(ex, conds, forms, faces, kept, T, pts):
             np.full(T.shape[0], np.nan)
 
 
-def _check(model, p, ex, names):
+def _check(model, p, ex, names, sols=None, T=None):
     """Re-evaluate every extreme by the compiled forward solve at its torque; the max is
-    reported as the forward solve's value; certified where all agree."""
+    reported as the forward solve's value; certified where all agree. With contact friction
+    (``sols``: :class:`~snakecg.scenes.extremes_coulomb.PieceSolutions`) the pieces give
+    every solution of Coulomb's law at the torque: where they give several, the extreme is
+    the value of one of them (kept, flagged in ``solutions`` and ``uniqueness``), and the
+    forward solve agrees when it meets any of them."""
     sampler = Sampler(model, p)
     taus, keys = [], []
     for attr in ("max", "min", "min_kept"):
+        ex.solutions[attr] = {}
         for m in names:
             t = getattr(ex, "tau_" + attr)[m]
+            ex.solutions[attr][m] = 1  # Gauss's principle: one solution
             if t is not None and np.all(np.isfinite(t)):
                 taus.append(t)
                 keys.append((attr, m))
     vals = sampler(np.array(taus).reshape(-1, p.n_a))
-    ok = True
+    ok, several = True, []
     for i, (attr, m) in enumerate(keys):
         got, want = vals[m][i], getattr(ex, attr)[m]
         if m == "sr" and vals["_D"][i] < MOTION_FLOOR:  # nothing moves: sr is 0 by convention
             got = 0.0
-        if not (vals["_ok"][i] and abs(got - want) <= AGREE):  # the free motion's norm is 1
-            ok = False
+        agree = bool(vals["_ok"][i] and abs(got - want) <= AGREE)  # the free motion's is 1
+        if sols is not None:
+            k, each = sols.at(np.linalg.solve(T, taus[i]), MOTION_FLOOR)
+            ex.solutions[attr][m] = k
+            if abs(k) >= 2 or k < 0:
+                several.append(f"{attr}[{m}]")
+            if not agree and abs(k) >= 2 and vals["_ok"][i]:
+                # the forward solve met another solution: the extreme is one of them
+                agree = any(abs(v[m] - got) <= AGREE for v in each)
+                if agree:
+                    continue
+        ok &= agree
         if attr == "max" and vals["_ok"][i]:
             ex.max[m] = float(got)
     for m in names:
@@ -440,10 +488,12 @@ def _check(model, p, ex, names):
     ex.certified = ok
     ex.reason = "" if ok else ("the forward solve at a returned torque differs from the "
                                "pieces' value by more than 1e-7")
+    if several:
+        ex.uniqueness = (f"Coulomb's law has several solutions (or a singular piece) at the "
+                         f"torque of {', '.join(several)}: each such extreme is over every "
+                         f"solution at every torque, attained by one of them (see solutions)")
     ex.samples = sampler.count
     return ex
-
-
 
 
 # ---------------------------------------------------------------- certified bounds
@@ -468,8 +518,73 @@ def _bounds(model, p, names, gap, budget) -> SceneExtremes:
         ex.bound_max[m] = min(max(bmax[m], ex.max[m]), 1.0)
         ex.bound_min[m] = max(min(bmin[m], ex.min[m]), 0.0)
         ex.gap[m] = max(ex.bound_max[m] - ex.max[m], ex.min[m] - ex.bound_min[m])
+    for attr in ("max", "min", "min_kept"):  # Gauss's principle: one solution
+        ex.solutions[attr] = {m: 1 for m in names}
     ex.certified = closed and all(ex.gap[m] <= gap for m in names)
     ex.reason = "" if ex.certified else (why or f"the bounds did not close to {gap:g}") + \
         "; bound_max and bound_min still hold"
+    ex.samples = sampler.count
+    return ex
+
+
+# ---------------------------------------------------------------- sampled (contact friction)
+#: Samples per forward call of the sampled extremes.
+SAMPLE_CHUNK = 4096
+
+
+def _sampled(model, p, names, budget, why) -> SceneExtremes:
+    """Contact friction where the pieces are not enumerated (``why``): ``budget`` directions
+    of the sphere (quasi-uniform), the forward solve at each. Coulomb's problem has no Gauss
+    principle, so the accelerations are not 1-Lipschitz in the torques and the cells of the
+    certified bounds do not apply: ``max``/``min`` are the forward solve's values at their
+    torques, not certified. ``bound_max`` 1 and ``bound_min`` 0 hold for every solution:
+    every force dissipates (``w^T lam <= 0``: a contact's normal force is complementary to
+    its row, its friction opposes its slip, a ground set's force is its maximal
+    dissipation), so ``|a|_M^2 = a^T f + w^T lam <= a^T M a_free`` gives ``|a|_M <= 1`` and
+    ``|a - a_free|_M^2 <= 1 - |a|_M^2`` on the boundary."""
+    na = p.n_a
+    T = whitening(p)
+    sampler = Sampler(model, p)
+    u = sphere_directions(na, int(budget))
+    best = {(attr, m): (-np.inf if attr == "max" else np.inf, -1, 0)
+            for attr in ("max", "min", "min_kept") for m in names}
+    unsolved = 0
+    for lo in range(0, len(u), SAMPLE_CHUNK):
+        vals = sampler(u[lo:lo + SAMPLE_CHUNK] @ T.T)
+        ok = vals["_ok"]
+        unsolved += int(np.sum(~ok))
+        for m in names:
+            v = np.asarray(vals[m], dtype=float)
+            for attr, w in (("max", np.where(ok, v, -np.inf)), ("min", np.where(ok, v, np.inf)),
+                            ("min_kept", np.where(ok & vals["_kept"], v, np.inf))):
+                i = int(np.argmax(w) if attr == "max" else np.argmin(w))
+                if (w[i] > best[(attr, m)][0]) if attr == "max" else (w[i] < best[(attr, m)][0]):
+                    best[(attr, m)] = (float(w[i]), lo + i, int(vals["_solutions"][i]))
+    ex = SceneExtremes(method=f"sampled, not certified: {why}; the forward solve at "
+                              f"{len(u)} directions of the sphere")
+    several = []
+    for attr in ("max", "min", "min_kept"):
+        ex.solutions[attr] = {}
+        for m in names:
+            v, i, k = best[(attr, m)]
+            found = i >= 0 and np.isfinite(v)
+            getattr(ex, attr)[m] = v if found else np.nan
+            getattr(ex, "tau_" + attr)[m] = T @ u[i] if found else np.full(na, np.nan)
+            ex.solutions[attr][m] = k if found else 0
+            if found and k != 1:
+                several.append(f"{attr}[{m}]")
+    for m in names:
+        ex.bound_max[m], ex.bound_min[m] = 1.0, 0.0
+        ex.gap[m] = max(1.0 - ex.max[m], ex.min[m]) if np.isfinite(ex.max[m]) else np.nan
+    ex.certified = False
+    ex.reason = ("with contact friction the sampled values are attained but not certified "
+                 "(no Lipschitz bound: Coulomb's problem may have several solutions); "
+                 "bound_max 1 and bound_min 0 hold" +
+                 (f"; {unsolved} samples not answered by the forward solve" if unsolved else ""))
+    if several:
+        ex.uniqueness = (f"the forward solve's solution at the torque of {', '.join(several)} "
+                         f"is not certified unique (see solutions: its count of Coulomb "
+                         f"solutions there): each such value is the one the forward solve "
+                         f"picks")
     ex.samples = sampler.count
     return ex

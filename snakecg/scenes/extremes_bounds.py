@@ -28,6 +28,7 @@ import itertools
 
 import numpy as np
 
+from .packing import CR_W, SO_NC
 from .solve import HELD, solve
 
 __all__ = ["Sampler", "bounds", "PAD"]
@@ -53,10 +54,13 @@ class Sampler:
 
     def __call__(self, tau) -> dict:
         """``{metric: (K,)}``, ``_D`` (``|a|_M^2``), ``_ok`` (solved), ``_kept``, ``sr`` and
-        ``_a`` (the accelerations, K x n)."""
+        ``_a`` (the accelerations, K x n); with contact friction also ``_solutions`` (the
+        forward solve's count of Coulomb solutions per sample)."""
         p, K = self.p, tau.shape[0]
         self.count += K
         f = tau @ p.B.T
+        if p.tangent:  # Coulomb at the contacts: the model's forward (its fixed point)
+            return self._forward(tau, f)
         m, nb = p.A.shape[0], p.n_blocks
         if nb:
             A = np.broadcast_to(p.A, (K, m, p.n))
@@ -93,6 +97,40 @@ class Sampler:
         st = res["state"]
         out["_kept"] = (np.all(st[:, self.kept_blocks] == HELD, axis=1) if self.kept_blocks
                         else np.ones(K, bool))
+        return out
+
+
+    def _forward(self, tau, f) -> dict:
+        """The metrics from the model's forward solve (contacts with Coulomb friction: the
+        solve of :mod:`snakecg.scenes.solve` alone does not take them)."""
+        p, K = self.p, tau.shape[0]
+        res = self.model.forward(np.broadcast_to(p.q, (K, p.n_s)), tau)
+        no = p.n_o
+        if no:
+            a = np.hstack([res.qdd, np.asarray(res.a_obj).reshape(K, 3 * no)])
+            each = np.asarray(res.norm_a_obj_each).reshape(K, no)
+        else:
+            a = np.asarray(res.qdd).reshape(K, p.n_s)
+        out = {"norm_qdd": np.asarray(res.norm_qdd, dtype=float),
+               "norm_a_obj": np.asarray(res.norm_a_obj, dtype=float)}
+        for j in range(no):
+            out[f"norm_a_obj[{j + 1}]"] = each[:, j]
+        d = a - f @ p.Minv.T  # (norm_lambda: |a - a_free|_M^2, friction forces counted)
+        out["norm_lambda"] = np.einsum("ki,ij,kj->k", d, p.M, d)
+        D = out["norm_a_obj"] + out["norm_qdd"]
+        free = np.einsum("ki,ij,kj->k", f, p.Minv, f)
+        moving = D > 1e-12 * free
+        out.update(_D=D, _free=free, _a=a, _ok=np.asarray(res.status) == 0,
+                   sr=np.where(moving, out["norm_a_obj"] / np.where(moving, D, 1.0), 0.0),
+                   _solutions=np.asarray(res.solutions))
+        # kept: every contact of an object touching (its record's state 0: held)
+        rows, off = res._out, self.model.packed.offset["contacts"]
+        kept = np.ones(K, bool)
+        for c in range(int(rows[:, SO_NC].max(initial=0))):
+            r = rows[:, off + CR_W * c: off + CR_W * (c + 1)]
+            obj = (r[:, 0] == 1) | (r[:, 2] == 1)
+            kept &= ~(obj & (c < rows[:, SO_NC]) & (r[:, 12] != 0))
+        out["_kept"] = kept
         return out
 
 

@@ -152,17 +152,14 @@ def state_maps(p: Problem, state, angles=None) -> dict:
         DH[held.index(r)] += k * A[t]
     # the applied generalized force in (tau, f_obj, 1): f = B tau + E f_obj + A_F^T lam_F
     inputs = np.hstack([p.B, p.E, (AF.T @ lam_F)[:, None]])
-    singular = False
-    if H.size and not tied:
-        GHH = AH @ Mi @ AH.T
-        s = np.linalg.svd(GHH, compute_uv=False)
-        singular = bool(s.size and s[-1] <= PINV_RCOND * s[0])
-        lamH = -np.linalg.pinv(GHH, rcond=PINV_RCOND, hermitian=True) @ (AH @ Mi @ inputs)
-    elif H.size:  # A_H a = 0 with a = M^-1 (f + D_H^T lam_H): not symmetric
+    singular, null = False, np.zeros((H.size, 0))
+    if H.size:  # A_H a = 0 with a = M^-1 (f + D_H^T lam_H) (D_H = A_H where nothing is tied)
         GHD = AH @ Mi @ DH.T
-        s = np.linalg.svd(GHD, compute_uv=False)
+        _, s, Vt = np.linalg.svd(GHD)
         singular = bool(s.size and s[-1] <= PINV_RCOND * s[0])
-        lamH = -np.linalg.pinv(GHD, rcond=PINV_RCOND) @ (AH @ Mi @ inputs)
+        lamH = -np.linalg.pinv(GHD, rcond=PINV_RCOND, hermitian=not tied) @ (AH @ Mi @ inputs)
+        if singular:  # the forces' family: lam_H + null z, GHD null = 0
+            null = Vt[s <= PINV_RCOND * s[0]].T
     else:
         lamH = np.zeros((0, inputs.shape[1]))
     a = Mi @ (inputs + DH.T @ lamH)  # eq. 18
@@ -171,6 +168,10 @@ def state_maps(p: Problem, state, angles=None) -> dict:
     lam[F, -1] = lam_F
     for r, t, k in tied:
         lam[t] = k * lam[r]
+    lam_null = np.zeros((A.shape[0], null.shape[1]))
+    lam_null[H] = null
+    for r, t, k in tied:
+        lam_null[t] = k * lam_null[r]
     w = A @ a
     na, no, ns = p.n_a, p.n_o, p.n_s
 
@@ -194,6 +195,9 @@ def state_maps(p: Problem, state, angles=None) -> dict:
     out["input_metric"] = p.N  # eq. 31
     out["delassus"] = p.G  # eq. 14
     out["singular"] = singular
+    # where singular: every force lam + lam_null z meets the piece's equations; a_null the
+    # accelerations' change per z (0 where only the forces are indeterminate)
+    out["lam_null"], out["a_null"] = lam_null, Mi @ DH.T @ null
     out["state"] = np.array(state, dtype=int)
     return out
 
@@ -291,7 +295,9 @@ def maps(model, q, *, state=None) -> dict:
     forms of the homogeneous part: ``xi_tau`` (eq. 28),
     ``omega_tau`` (eq. 29, summed over objects) and ``omega_tau_each``, ``lambda_form_tau``
     (``lam^T G lam``); ``input_metric`` (``B^T M_s^-1 B``, eq. 31), ``delassus`` (``G``,
-    eq. 14); ``singular`` (dependent held rows: minimum-norm forces); ``state`` (codes) and
+    eq. 14); ``singular`` (dependent held rows: minimum-norm forces), ``lam_null`` (every
+    force ``lam + lam_null z`` meets the piece's equations) and ``a_null`` (the accelerations'
+    change per ``z``: 0 where only the forces are indeterminate); ``state`` (codes) and
     ``blocks`` (names)."""
     ns = model.n_coordinates
     try:

@@ -96,13 +96,6 @@ class GeneralSceneModel(RobotModel):
 
         return simulate_scene(self, q0, duration, **kwargs)
 
-    def _frictionless_contacts(self, what: str) -> None:
-        if self.packed.friction:
-            raise InputError(f"{what} is not available with contact friction (mu_contact > 0): "
-                             "its search over pieces assumes frictionless contacts; forward, "
-                             "plot, simulate and maps (a contact's state open, stick, slip+ or "
-                             "slip-) take it")
-
     def maps(self, q, *, state=None) -> dict:
         """The linear maps at ``q`` for a block state (:func:`snakecg.scenes.maps.maps`)."""
         from .maps import maps
@@ -111,13 +104,11 @@ class GeneralSceneModel(RobotModel):
     def extremes(self, q, **kwargs):
         """Extremes of the metrics on the input ellipsoid (:mod:`snakecg.scenes.extremes`)."""
         from .extremes import extremes
-        self._frictionless_contacts("extremes")
         return extremes(self, q, **kwargs)
 
     def optimize(self, q, objective="max_sr", **kwargs):
         """Optimal torques for a task (:func:`snakecg.scenes.optimize.optimize`)."""
         from .optimize import optimize
-        self._frictionless_contacts("optimize")
         return optimize(self, q, objective, **kwargs)
 
     def forward(self, q, tau, *, f_obj=None, v=None) -> SceneResult:

@@ -31,6 +31,15 @@ optimum, else ``stick_only`` (the sticking answer, not certified against sliding
 
 Every answer is checked by the compiled forward solve at its torque (the objective to 1e-6,
 no link's set sliding): a disagreement is status ``failed`` with the reason.
+
+Contacts with Coulomb friction (``mu_contact``) give their pieces four states each (open,
+stick, slip either way: :mod:`snakecg.scenes.extremes_coulomb`), with linear conditions:
+the pushes stay convex, ``max_sr``'s pieces stay cones. Coulomb's law may have several
+solutions at a torque; the optimum is over every solution at every torque. Where the
+forward solve at the optimum's torque meets another solution than the optimum's piece, the
+piece's own solution is checked apart (:func:`piece_objective`: its conditions at ``tau``)
+and the answer keeps its status with ``uniqueness`` ``several`` and the reason giving both
+values; where the piece does not hold there it is ``failed``.
 """
 
 from __future__ import annotations
@@ -44,19 +53,24 @@ from ..errors import InputError
 from ..limits import describe, resolve_tau_max
 from .extremes import MOTION_FLOOR
 from .friction_hold import friction_holds
-from .maps import scene_problem
+from .extremes_coulomb import piece_conditions
+from .maps import scene_problem, state_maps, whitening
+from .metrics import state_name
 from .optimize_pieces import solve_pieces
 from .optimize_search import search
 from .optimize_sr import max_sr_exact
 from .optimize_task import CHECK_TOL, gauge
 from .optimize_task import roles as block_roles
-from .solve import DISC, SPLIT
+from .solve import DISC, FREE, HELD, SLIDE, SLIDE_NEG, SLIDE_POS, SPLIT, UNILATERAL, ZERO
 
 __all__ = ["OBJECTIVES", "STATUSES", "SceneOptimizeResult", "optimize", "objective_of",
            "binding"]
 
 OBJECTIVES = ("max_sr", "least_slip_push", "strongest_push")
 STATUSES = ("optimal", "stick_only", "local", "infeasible", "failed")
+#: A piece's conditions hold at a torque within this, in whitened torques (relative to their
+#: size; the optimum lies on their boundary, solved by IPOPT to 1e-10).
+PIECE_TOL = 1e-7
 
 
 @dataclass
@@ -65,7 +79,11 @@ class SceneOptimizeResult:
     ``reason``, ``objective_value`` (sr, ``||qdd_s||^2`` or ``d . a_o``, read from the
     forward solve), ``object`` (1-based), ``binding`` (limits active at ``tau``),
     ``analysis`` (the forward :class:`~snakecg.scenes.metrics.SceneResult` at ``tau``),
-    ``solver``, ``certificate`` (what was checked), ``limits``."""
+    ``solver``, ``certificate`` (what was checked), ``limits``. With contact friction
+    (``mu_contact``), ``uniqueness`` and ``solutions``: the forward solve's at ``tau``
+    (:class:`~snakecg.scenes.metrics.SceneResult`), ``uniqueness`` ``several`` also where the
+    optimum's own piece is a solution other than the forward solve's (the objective value is
+    then the piece's, the reason says so); None on a scene without contact friction."""
 
     objective: str
     tau: np.ndarray
@@ -78,6 +96,8 @@ class SceneOptimizeResult:
     solver: str
     certificate: dict = field(default_factory=dict)
     limits: dict = field(default_factory=dict)
+    uniqueness: object = None
+    solutions: object = None
 
     @property
     def ok(self) -> bool:
@@ -94,7 +114,9 @@ class SceneOptimizeResult:
                 "reason": self.reason, "objective_value": num(self.objective_value),
                 "tau": [num(t) for t in self.tau], "binding": list(self.binding),
                 "solver": self.solver, "certificate": self.certificate,
-                "limits": self.limits, "analysis": an}
+                "limits": self.limits, "analysis": an,
+                **({"uniqueness": self.uniqueness, "solutions": self.solutions}
+                   if self.uniqueness is not None else {})}
 
 
 def _vector(name, v, sizes, what):
@@ -241,7 +263,7 @@ def _held(model, qa, p, task, hold, limits):
            f"of a friction set's size is needed): nothing moves")
     cert = {"kind": "friction holds the region: every ground set balances every torque "
                     "of the region within its size", "ok": True, "fraction": hold.fraction,
-            "value": 0.0}
+            "value": 0.0, "unique": True}  # a = 0, the only solution (extremes' docstring)
     solver = "balance of the torques by the ground sets over the region (friction_holds)"
     target = task["a_obj"]
     moving = (task["objective"] == "least_slip_push"
@@ -303,13 +325,89 @@ def _finish(model, qa, p, task, tau, status, cert, solver, limits):
     reason = cert.get("reason", "")
     slid = [g for g in an.ground if g.get("link") and g["state"].startswith("slide")
             and not task["allow_slide"]]
-    if an.status != 0:
+    # contact friction: the piece's own solution at tau (Coulomb's law may have several)
+    mine = piece_objective(p, task, cert["piece"], tau) if p.tangent and cert.get(
+        "piece") is not None else None
+    uniq, count = an.uniqueness, (int(an.solutions) if model.packed.friction else None)
+    if "piece" in cert:
+        cert["piece"] = piece_words(p, cert["piece"])
+    if an.status != 0 and mine is None:
         status, reason = "failed", f"the forward solve did not answer at tau: {an.reason[0]}"
     elif slid:
         status, reason = "failed", (f"the forward solve finds the set of link "
                                     f"{slid[0]['link']} sliding at tau")
-    elif abs(value - want) > CHECK_TOL * max(1.0, abs(want)):
-        status, reason = "failed", (f"the forward solve's objective {value:.9g} differs from "
-                                    f"the piece's {want:.9g}")
+    elif abs(value - want) > CHECK_TOL * max(1.0, abs(want)) or an.status != 0:
+        if mine is not None and abs(mine - want) <= CHECK_TOL * max(1.0, abs(want)):
+            # the piece's solution holds at tau and attains the optimum: Coulomb's law has
+            # another solution there, the one the forward solve picks (or none it finds)
+            uniq = "several" if an.status == 0 else "not_certified"
+            where = "(the piece's, in certificate['piece'], checked apart)"
+            if an.status == 0:
+                reason = (f"Coulomb's law has several solutions at tau: the optimum "
+                          f"{want:.9g} is the objective of one of them {where}; the forward "
+                          f"solve picks another one, of objective {value:.9g}")
+            else:
+                reason = (f"the optimum {want:.9g} is the objective of a solution of "
+                          f"Coulomb's law at tau {where}; the forward solve finds none there")
+            value = want
+        else:
+            status, reason = "failed", (f"the forward solve's objective {value:.9g} differs "
+                                        f"from the piece's {want:.9g}")
+    elif uniq is not None and uniq != "unique" and not cert.get("unique"):
+        note = (f"the forward solve's solution at tau is one of {abs(count)} solutions of "
+                f"Coulomb's law (uniqueness several); the optimum is its value"
+                if uniq == "several" else "the forward solve does not certify that the "
+                "solution of Coulomb's law at tau is unique (uniqueness not_certified)")
+        reason = f"{reason}; {note}" if reason else note
+    if cert.get("unique") and uniq is not None:
+        uniq = "unique"
     return SceneOptimizeResult(task["objective"], tau, status, reason, value, obj,
-                               binding(p, task, tau, an), an, solver, cert, limits)
+                               binding(p, task, tau, an), an, solver, cert, limits,
+                               uniq, count)
+
+
+def piece_objective(p, task, piece, tau):
+    """The task's objective on the piece ``piece`` (block state codes) at ``tau``, where the
+    piece is a solution of Coulomb's law there (the contacts' conditions,
+    :func:`~snakecg.scenes.extremes_coulomb.piece_conditions`, within ``PIECE_TOL`` in the
+    whitened torques, every link's set sticking within ``1 + PIECE_TOL`` of its size); else
+    None. Written from :func:`~snakecg.scenes.maps.state_maps`, apart from the search that
+    found it."""
+    if any(c == SLIDE for c in piece):  # an object sliding on the ground: angles unknown
+        return None
+    mp = state_maps(p, list(piece))
+    lam = mp["lam_from_tau"] @ tau + mp["lam_offset"]
+    qdd = mp["qdd_from_tau"] @ tau + mp["qdd_offset"]
+    ao = np.einsum("ojk,k->oj", mp["a_obj_from_tau"], tau) + mp["a_obj_offset"]
+    # the contacts' conditions in whitened torques (unit rows: a distance), the forces'
+    # free directions (a family) projected out
+    T = whitening(p)
+    u = np.linalg.solve(T, tau)
+    C, _ = piece_conditions(p, mp, list(piece), T, 0.0, ground=False)
+    if C is None or np.any(C[:, :-1] @ u + C[:, -1] < -PIECE_TOL * max(1.0, np.linalg.norm(u))):
+        return None
+    for b, code in enumerate(piece):
+        k, par, r = p.kind[b], p.par[b], p.start[b]
+        if k != UNILATERAL and code == HELD and k != FREE and gauge(
+                k, par, lam[r:r + 2]) > 1 + PIECE_TOL:
+            return None
+    if task["objective"] == "least_slip_push":
+        return float(qdd @ p.M_s @ qdd)
+    if task["objective"] == "strongest_push":
+        return float(task["direction"] @ ao[task["object"] - 1])
+    om = sum(float(ao[j] @ p.M[p.n_s + 3 * j:p.n_s + 3 * j + 3,
+                               p.n_s + 3 * j:p.n_s + 3 * j + 3] @ ao[j]) for j in range(p.n_o))
+    D = om + float(qdd @ p.M_s @ qdd)
+    return om / D if D > MOTION_FLOOR * float(tau @ p.N @ tau) else 0.0
+
+
+def piece_words(p, piece) -> list:
+    """A piece's block states in ``maps``' words (contacts held/open, or with friction
+    open/stick/slip+/slip-; ground sets stick/slide/none)."""
+    out = []
+    for b, c in enumerate(piece):
+        if b in p.tangent:
+            out.append({HELD: "stick", ZERO: "open", SLIDE_POS: "slip+", SLIDE_NEG: "slip-"}[c])
+        else:
+            out.append(state_name(p.kind[b], c))
+    return out

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from .extremes_coulomb import contact_conditions, force_family
 from .maps import state_maps
 from .optimize_task import IPOPT_TOL, MARGIN, contact_states
 from .solve import BOX, DISC, HELD, SLIDE, SPLIT, UNILATERAL, ZERO
@@ -45,13 +46,15 @@ def _affine(p, st):
         vs = vec(state_maps(p, st_b, {b: np.pi / 2}))
         for k in v0:
             extra[k].append((vc[k] - v0[k], vs[k] - v0[k]))
-    return {k: (X[k], v0[k], extra[k]) for k in v0}, slides, m0["singular"]
+    # a family of forces (a box flush on a link, both corners sticking): lam + Z z
+    Z = force_family(p, m0)[0] if not slides else np.zeros((len(v0["lam"]), 0))
+    return {k: (X[k], v0[k], extra[k]) for k in v0}, slides, Z
 
 
 def _build(p, roles, task, st, start, relax=0.0):
     import casadi as ca
 
-    aff, slides, _ = _affine(p, st)
+    aff, slides, Z = _affine(p, st)
     opti = ca.Opti()
     tau = opti.variable(p.n_a)
     th = opti.variable(len(slides)) if slides else None
@@ -64,11 +67,15 @@ def _build(p, roles, task, st, start, relax=0.0):
         return out
 
     a, lam, w = ex("a"), ex("lam"), ex("w")
+    if Z.shape[1]:  # the forces' free directions: any member of the family will do
+        lam = lam + ca.mtimes(ca.DM(Z), opti.variable(Z.shape[1]))
     keep = 1 - MARGIN
     for b, (code, (role, zero), k, par) in enumerate(zip(st, roles, p.kind, p.par)):
         r = p.start[b]
-        if k == UNILATERAL:
-            opti.subject_to((lam[r] if code == HELD else w[r]) >= 0)
+        if k == UNILATERAL:  # Coulomb's conditions where the contact has friction
+            lin = {"lam": lam, "w": w}
+            for terms in contact_conditions(p, b, code):
+                opti.subject_to(sum(c * lin[key][i] for key, i, c in terms) >= 0)
         elif code == HELD and not zero and k == BOX:
             opti.subject_to(opti.bounded(-par[0] * keep, lam[r], par[0] * keep))
         elif code == HELD and not zero and k == DISC:
@@ -146,6 +153,56 @@ def _starts(p, task, st, rng):
     return [(t0, np.full(n_sl, base + np.pi + off)) for off in (0.0, np.pi / 2, -np.pi / 2)]
 
 
+def _lp_empty(p, task, st) -> bool:
+    """Whether a relaxation of the piece (no object sliding) has no point, by an LP (HiGHS):
+    the linear conditions in ``(tau, z)`` (the contacts', the bounded wheels' bounds, the
+    push's ``d . a_o >= a_min`` or ``a_o = a_obj``, the torque box) with the ellipsoid
+    widened to its bounding box and the conic sets dropped. An empty relaxation is an empty
+    piece: where IPOPT cannot tell (a piece without interior), this says infeasible."""
+    from scipy.optimize import linprog
+
+    aff, _, Z = _affine(p, st)
+    na, nz = p.n_a, Z.shape[1]
+    Xl, l0, _ = aff["lam"]
+    Xw, w0, _ = aff["w"]
+    Xa, a0, _ = aff["a"]
+    lin = {"lam": (np.hstack([Xl, Z]), l0), "w": (np.hstack([Xw, np.zeros((len(w0), nz))]),
+                                                  w0)}
+    G, h = [], []  # G x + h >= 0
+    for b, code in enumerate(st):
+        k, r = p.kind[b], p.start[b]
+        if k == UNILATERAL:
+            for terms in contact_conditions(p, b, code):
+                G.append(sum(c * lin[key][0][i] for key, i, c in terms))
+                h.append(sum(c * lin[key][1][i] for key, i, c in terms))
+        elif k == BOX and code == HELD and p.par[b][0] > 0:
+            for sg in (1.0, -1.0):
+                G.append(-sg * lin["lam"][0][r])
+                h.append(p.par[b][0] * (1 - MARGIN) - sg * l0[r])
+    j = task["object"] - 1
+    Xo = np.hstack([Xa[p.n_s + 3 * j:p.n_s + 3 * j + 3], np.zeros((3, nz))])
+    ao0 = a0[p.n_s + 3 * j:p.n_s + 3 * j + 3]
+    eq = None
+    if task["objective"] == "least_slip_push":
+        if task["a_obj"] is not None:
+            eq = (Xo, task["a_obj"] - ao0)
+        else:
+            G.append(task["direction"] @ Xo)
+            h.append(task["direction"] @ ao0 - task["a_min"])
+    hi = np.full(na, np.inf)
+    if task["radius"] is not None:  # the ellipsoid's bounding box
+        hi = task["radius"] * np.sqrt(np.diag(np.linalg.inv(p.N)))
+    if task["tau_max"] is not None:
+        hi = np.minimum(hi, task["tau_max"])
+    bounds = [(-v, v) for v in hi] + [(None, None)] * nz
+    G = np.array(G).reshape(-1, na + nz)
+    res = linprog(np.zeros(na + nz), A_ub=-G if len(G) else None,
+                  b_ub=np.array(h) if len(G) else None,
+                  A_eq=None if eq is None else eq[0], b_eq=None if eq is None else eq[1],
+                  bounds=bounds, method="highs")
+    return res.status == 2  # infeasible
+
+
 def solve_pieces(p, roles, task, sliding_objects):
     """``(tau, status, certificate)``: the best piece's torque; ``optimal`` where every piece
     is convex and solved or proven infeasible."""
@@ -182,6 +239,8 @@ def solve_pieces(p, roles, task, sliding_objects):
                 outcome = "unknown"
             if relax == 0.0 and outcome != "unknown" and start is starts[-1]:
                 break
+        if outcome == "unknown" and not any(c == SLIDE for c in st) and _lp_empty(p, task, st):
+            outcome = "infeasible"  # IPOPT did not say, a relaxation's LP proves it
         solved += outcome == "solved"
         infeasible += outcome == "infeasible"
         unknown += outcome == "unknown"
@@ -198,6 +257,7 @@ def solve_pieces(p, roles, task, sliding_objects):
         cert["reason"] = f"no piece solved ({unknown} not answered by IPOPT)"
         return None, "failed", cert
     value = best[0]
+    cert["piece"] = [int(c) for c in best[2]]
     cert["value"] = {"least_slip_push": value, "strongest_push": -value,
                      "max_sr": -value}[task["objective"]]
     if cert["ok"]:

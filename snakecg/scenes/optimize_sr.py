@@ -5,10 +5,10 @@ from __future__ import annotations
 
 import numpy as np
 
-from .extremes import MOTION_FLOOR, best_on_pieces, piece_faces, quadratics
+from .extremes import FEAS_TOL, MOTION_FLOOR, best_on_pieces, piece_faces, quadratics
 from .maps import state_maps, whitening
 from .optimize_task import MARGIN, contact_states, gauge
-from .solve import HELD, UNILATERAL
+from .extremes_coulomb import piece_conditions
 
 __all__ = ["max_sr_exact", "scale_to_limits"]
 
@@ -39,7 +39,7 @@ def max_sr_exact(p, roles, task):
     certificate)`` when no torque moves an object."""
     T = whitening(p)
     states = contact_states(p, roles)
-    conds, forms, lams = [], [], []
+    conds, forms, lams, pieces = [], [], [], []
     locked = 0
     for st in states:
         mp = state_maps(p, st)
@@ -49,15 +49,14 @@ def max_sr_exact(p, roles, task):
         if np.linalg.eigvalsh(f["norm_a_obj"][0] + f["norm_qdd"][0]).max() <= MOTION_FLOOR:
             locked += 1
             continue
-        L, W = mp["lam_from_tau"] @ T, mp["w_from_tau"] @ T
-        rows = [L[p.start[b]] if code == HELD else W[p.start[b]]
-                for b, code in enumerate(st) if p.kind[b] == UNILATERAL]
-        C = np.array(rows).reshape(-1, p.n_a)
-        nrm = np.linalg.norm(C, axis=1)
-        C = C[nrm > 1e-14] / nrm[nrm > 1e-14, None]
-        conds.append(np.hstack([C, np.zeros((len(C), 1))]))  # homogeneous: a cone
+        # the contacts' conditions (no fixed force: homogeneous, a cone)
+        C, _ = piece_conditions(p, mp, st, T, FEAS_TOL, ground=False)
+        if C is None:
+            continue
+        conds.append(C)
         forms.append(f)
         lams.append(mp["lam_from_tau"])
+        pieces.append([int(c) for c in st])
     cert = {"kind": "Dinkelbach on the KKT points of every contact state's cone (every "
                     "link's set sticking)", "states": len(states), "locked": locked,
             "rounds": 0, "ok": False, "value": 0.0}
@@ -88,6 +87,7 @@ def max_sr_exact(p, roles, task):
         cert["reason"] = "no torque within the limits moves an object with every link sticking"
         return None, cert
     i, u = best
+    cert["piece"] = pieces[i]
     tau = T @ u
     s = scale_to_limits(p, roles, task, tau, lams[i])
     return tau * s * (1 - MARGIN), cert

@@ -8,6 +8,7 @@ import itertools
 import numpy as np
 
 from ..errors import InputError
+from .extremes_coulomb import contact_choices
 from .solve import BOX, DISC, HELD, SLIDE, SPLIT, UNILATERAL, ZERO
 
 __all__ = ["MARGIN", "CHECK_TOL", "IPOPT_TOL", "MAX_STATES", "roles", "contact_states",
@@ -48,15 +49,15 @@ def gauge(kind, par, lam) -> float:
 
 
 def contact_states(p, roles, objects_slide=()):
-    """Every combination of block states: contacts held/open, links' sets sticking (size 0:
-    none), objects' ground friction sticking or sliding (``objects_slide``: blocks that may
-    slide)."""
+    """Every combination of block states: contacts held/open (with Coulomb friction: stick,
+    open, slip+, slip-), links' sets sticking (size 0: none), objects' ground friction
+    sticking or sliding (``objects_slide``: blocks that may slide)."""
     choices = []
     for b, ((role, zero), k) in enumerate(zip(roles, p.kind)):
         if zero:
             choices.append((ZERO,))
         elif role == "contact" and k == UNILATERAL:
-            choices.append((HELD, ZERO))
+            choices.append(contact_choices(p, b))  # with Coulomb friction: four
         elif role == "object" and b in objects_slide:
             choices.append((HELD, SLIDE))
         else:
