@@ -170,19 +170,30 @@ static int held_before(const double *old, const double *out, sc_int no, sc_int k
   return 0;
 }
 
-/* The kinetic energy, smallest contact gap and contact count of the state in c. */
-static void figures(sc_scene_step *c, sc_int n) {
+/* The kinetic energy, smallest contact gap and contact count of the state in c; mv (3 n): M V
+ * (quad's sums, the next step's M V in f: the same M and V unless the caller moved x or V),
+ * then the x and V it belongs to. */
+static void figures(sc_scene_step *c, sc_int n, double *mv) {
   const sc_int no = (sc_int)c->pk[SP_NO], nc = (sc_int)c->out[RO_NC];
-  double g = INFINITY;
-  sc_int k;
+  double g = INFINITY, s = 0.0;
+  sc_int k, j;
   for (k = 0; k < nc; ++k) g = fmin(g, c->out[RO_POSE + 3 * no + CR_W * k + 10]);
-  c->acc[ST_KE] = 0.5 * quad(n, c->M, c->V);
+  for (k = 0; k < n; ++k) { /* (quad's sums) */
+    double t = 0.0;
+    for (j = 0; j < n; ++j) t += c->M[k * n + j] * c->V[j];
+    s += c->V[k] * t;
+    mv[k] = t;
+  }
+  memcpy(mv + n, c->x, sizeof(double) * (size_t)n);
+  memcpy(mv + 2 * n, c->V, sizeof(double) * (size_t)n);
+  c->acc[ST_KE] = 0.5 * s;
   c->acc[ST_MIN_GAP] = g;
   c->acc[ST_NC] = (double)nc;
 }
 
 /* A run's scratch of its steps, kept from one to the next (sc_scene_step_kept): the bias
- * forces' work, the step's doubles, the rows' scratch (scene_rows.c's). */
+ * forces' work, the step's doubles (their last 3 n: figures' M V and its x and V), the rows'
+ * scratch (scene_rows.c's). */
 typedef struct { sc_work_t ws; double *d; void *rows; } step_keep;
 
 static void keep_free(step_keep *k) {
@@ -209,7 +220,7 @@ SC_INTERNAL int sc_scene_step_kept(sc_scene_step *c, void **keep) {
   const sc_int no = c ? (sc_int)pk[SP_NO] : 0, n = SNAKECG_NS + 3 * no, mc = c ? c->mcap : 0;
   const sc_work_fn fns[] = {SNAKECG_BF_WORK};
   step_keep *kp = (step_keep *)*keep;
-  double *d, *f, *fgen, *hb, *xp, *scratch;
+  double *d, *f, *fgen, *hb, *xp, *scratch, *mv;
   sc_int i, j, k, m1, nc1;
   int code;
   if (!c) {
@@ -220,9 +231,11 @@ SC_INTERNAL int sc_scene_step_kept(sc_scene_step *c, void **keep) {
   if (!kp) { /* (freed by the caller, whole or in part) */
     if (!(*keep = kp = (step_keep *)calloc(1, sizeof(step_keep)))) return -1;
     if (sc_work_alloc(&kp->ws, fns, SC_COUNT(fns))) return -1;
-    kp->d = (double *)malloc(sizeof(double) * (size_t)(4 * n + SNAKECG_NS + 9 * mc + 8));
+    kp->d = (double *)malloc(sizeof(double) * (size_t)(7 * n + SNAKECG_NS + 9 * mc + 8));
     if (!kp->d) return -1;
+    for (i = 0; i < n; ++i) kp->d[7 * n + SNAKECG_NS + 9 * mc + 8 - 2 * n + i] = NAN;
   }
+  mv = kp->d + 4 * n + SNAKECG_NS + 9 * mc + 8; /* (M V, x, V: none yet) */
   c->acc[ST_IMPACT] = 0.0;
   c->acc[ST_LOSS] = 0.0;
   if (!(c->h > 0)) {
@@ -231,7 +244,7 @@ SC_INTERNAL int sc_scene_step_kept(sc_scene_step *c, void **keep) {
                                c->A, c->par, c->kind, c->start, &kp->rows);
     if (code < 0) return code;
     c->status = code;
-    if (code == 0) figures(c, n);
+    if (code == 0) figures(c, n, mv);
     return 0;
   }
   for (i = 0; i < n; ++i)
@@ -253,11 +266,17 @@ SC_INTERNAL int sc_scene_step_kept(sc_scene_step *c, void **keep) {
   for (i = 0; i < n; ++i) fgen[i] = i >= SNAKECG_NS ? c->fo[i - SNAKECG_NS] : 0.0;
   for (i = 3; i < SNAKECG_NS; ++i) fgen[i] += c->tau[i - 3];
   for (i = 0; i < SNAKECG_NS; ++i) fgen[i] -= hb[i];
-  for (i = 0; i < n; ++i) {
-    double t = 0.0;
-    for (j = 0; j < n; ++j) t += c->M[i * n + j] * c->V[j];
-    f[i] = t + c->h * fgen[i];
+  if (memcmp(mv + n, c->x, sizeof(double) * (size_t)n) ||
+      memcmp(mv + 2 * n, c->V, sizeof(double) * (size_t)n)) { /* (else the last figures') */
+    for (i = 0; i < n; ++i) {
+      double t = 0.0;
+      for (j = 0; j < n; ++j) t += c->M[i * n + j] * c->V[j];
+      mv[i] = t;
+    }
+    memcpy(mv + n, c->x, sizeof(double) * (size_t)n);
+    memcpy(mv + 2 * n, c->V, sizeof(double) * (size_t)n);
   }
+  for (i = 0; i < n; ++i) f[i] = mv[i] + c->h * fgen[i];
   code = solve(c, n, c->h, f, scratch, c->Vp, c->lam, c->info); /* 2. */
   if (code || c->info[0] != 0.0) {
     c->status = STEP_NOT_CONVERGED;
@@ -309,6 +328,6 @@ SC_INTERNAL int sc_scene_step_kept(sc_scene_step *c, void **keep) {
       }
     }
   }
-  figures(c, n);
+  figures(c, n, mv);
   return code == -1 ? -1 : 0;
 }
