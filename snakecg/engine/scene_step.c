@@ -120,7 +120,7 @@ static void keep_pieces(sc_scene_step *c, sc_int no, const double *st) {
     }
     s[0] = old < 0 ? (double)S_HELD : st[old];
     s[1] = s[2] = 0.0;
-    for (i = 0; old >= 0 && i < sc_block_size(c->kind1[k]); ++i)
+    for (i = 0, j = old < 0 ? 0 : sc_block_size(c->kind1[k]); i < j; ++i)
       s[1 + i] = c->lam[c->start[old] + i] / c->h;
   }
   c->nfrom = nb1;
