@@ -252,13 +252,14 @@ static void start_from(sc_problem *p, const double *from) {
   for (i = 0; i < p->m; ++i) p->lam[i] = 0.0;
   for (k = 0; k < p->nb; ++k) {
     const double *q = p->par + 3 * k, *s = from + 3 * k;
-    const sc_int kind = p->kind[k], r = p->start[k], code = (sc_int)s[0];
+    const sc_int kind = p->kind[k], r = p->start[k], code = (sc_int)s[0],
+                 nk = sc_block_size(kind); /* (called once: another file's) */
     int zero = kind == K_BOX ? !(q[0] > 0) : kind == K_DISC ? !(q[0] > 0) :
                kind == K_SPLIT ? !(q[2] > 0 && (q[0] > 0 || q[1] > 0)) : 0;
     p->gamma[k] = 0.0;
     p->state[k] = zero || (code == S_ZERO && kind != K_FREE) ? S_ZERO : S_HELD;
     if (zero || p->state[k] == S_ZERO) continue;
-    for (i = 0; i < sc_block_size(kind); ++i) p->lam[r + i] = s[1 + i];
+    for (i = 0; i < nk; ++i) p->lam[r + i] = s[1 + i];
     if (code < S_SLIDE || kind < K_BOX) continue;
     if (kind == K_BOX) p->lam[r] = code == 4 ? -q[0] : q[0];
     else if (s[1] == 0.0 && s[2] == 0.0) continue;
