@@ -44,8 +44,11 @@ enum { SOLVE_INFO = 8 }; /* the solve's certificate: status, dependent, primal, 
  * out, kind, start the rows at x (sc_scene_state_rows' outputs), replaced; M1 .. start1
  * scratch: the rows at the step's end; Vp (n) the step's V+ (before an impact); lam, info
  * (mcap, SOLVE_INFO) the step's solve, ilam, iinfo the impact's; acc (ST_WIDTH); status
- * STEP_* or SS_*; from (3 mcap, or NULL: every solve from scratch), nfrom: the last accepted
- * step's pieces on the rows at x (its blocks' count; 0: none), the run's own. */
+ * STEP_* or SS_*; from (6 mcap + 2, or NULL: every solve from scratch), nfrom: the last
+ * accepted step's pieces on the rows at x (3 per block: state, forces / h; its blocks' count;
+ * 0: none), the run's own; then at from + 3 mcap that step's own forces (the pieces' before
+ * their extrapolation, keep_pieces), from[6 mcap] their blocks' count and from[6 mcap + 1]
+ * that step's h. */
 
 static double quad(sc_int n, const double *M, const double *v) {
   double s = 0.0;
@@ -96,12 +99,20 @@ static int solve(sc_scene_step *c, sc_int n, double h, const double *f, double *
 /* The step's pieces (the solve's states st and impulses lam on the rows at x) as the start of
  * the next step's solve on the rows at its end (c->from, 3 per block: state, forces lam / h):
  * the ground's blocks are the same; a contact is the one of the same bodies, the same count
- * of that pair's contacts before it, else new: held at zero force. */
-static void keep_pieces(sc_scene_step *c, sc_int no, const double *st) {
+ * of that pair's contacts before it, else new: held at zero force. Where ex (no impact) and
+ * the step before had the same length and, on a block, the same state, its forces extrapolated
+ * linearly from that step's (kept at c->from + 3 mcap: no contact friction, whose fixed point
+ * starts otherwise), 2 lam - lam_before: the next step's exact solve starts nearer its answer
+ * (its first Newton step on the pegs row 5.7e-5 -> 2.6e-6 of y, median), the same answer.
+ * d: 3 mcap scratch. */
+static void keep_pieces(sc_scene_step *c, sc_int no, const double *st, double *d, int ex) {
   const sc_int nc0 = (sc_int)c->out[RO_NC], nc1 = (sc_int)c->out1[RO_NC],
-               nb1 = (sc_int)c->out1[RO_NB];
+               nb1 = (sc_int)c->out1[RO_NB], mc = c->mcap;
   const double *r0 = c->out + RO_POSE + 3 * no, *r1 = c->out1 + RO_POSE + 3 * no;
+  double *last = c->from + 3 * mc; /* (the step before's forces on the rows at x) */
   sc_int k, j, i;
+  ex = ex && c->pk[SP_FRICTION] == 0 && last[3 * mc] == c->out[RO_NB] &&
+       last[3 * mc + 1] == c->h;
   for (k = 0; k < nb1; ++k) {
     double *s = c->from + 3 * k;
     sc_int old = -1;
@@ -122,7 +133,13 @@ static void keep_pieces(sc_scene_step *c, sc_int no, const double *st) {
     s[1] = s[2] = 0.0;
     for (i = 0, j = old < 0 ? 0 : sc_block_size(c->kind1[k]); i < j; ++i)
       s[1 + i] = c->lam[c->start[old] + i] / c->h;
+    d[3 * k] = s[0], d[3 * k + 1] = s[1], d[3 * k + 2] = s[2]; /* (this step's own) */
+    for (i = 0; ex && old >= 0 && last[3 * old] == s[0] && i < j; ++i)
+      s[1 + i] += s[1 + i] - last[3 * old + 1 + i];
   }
+  memcpy(last, d, sizeof(double) * (size_t)(3 * nb1));
+  last[3 * mc] = (double)nb1;
+  last[3 * mc + 1] = c->h;
   c->nfrom = nb1;
 }
 
@@ -240,6 +257,7 @@ SC_INTERNAL int sc_scene_step_kept(sc_scene_step *c, void **keep) {
   c->acc[ST_LOSS] = 0.0;
   if (!(c->h > 0)) {
     c->nfrom = 0; /* no pieces yet */
+    if (c->from) c->from[6 * mc] = 0.0;
     code = sc_scene_state_rows(pk, c->x, c->x + SNAKECG_NS, c->tol, c->ccap, mc, c->out, c->M,
                                c->A, c->par, c->kind, c->start, &kp->rows);
     if (code < 0) return code;
@@ -300,7 +318,7 @@ SC_INTERNAL int sc_scene_step_kept(sc_scene_step *c, void **keep) {
       for (j = 0; j < n; ++j) vn += c->A1[c->start1[k] * n + j] * c->Vp[j];
       impact = vn < -c->impact_speed;
     }
-    if (c->from) keep_pieces(c, no, scratch + 5 * mc);
+    if (c->from) keep_pieces(c, no, scratch + 5 * mc, scratch + 6 * mc, !impact);
     memcpy(c->x, xp, sizeof(double) * (size_t)n); /* 6. */
     memcpy(c->V, c->Vp, sizeof(double) * (size_t)n);
     memcpy(c->out, c->out1, sizeof(double) * (size_t)(RO_POSE + 3 * no + CR_W * nc1));
