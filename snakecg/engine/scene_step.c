@@ -99,20 +99,20 @@ static int solve(sc_scene_step *c, sc_int n, double h, const double *f, double *
 /* The step's pieces (the solve's states st and impulses lam on the rows at x) as the start of
  * the next step's solve on the rows at its end (c->from, 3 per block: state, forces lam / h):
  * the ground's blocks are the same; a contact is the one of the same bodies, the same count
- * of that pair's contacts before it, else new: held at zero force. Where ex (no impact) and
- * the step before had the same length and, on a block, the same state, its forces extrapolated
- * linearly from that step's (kept at c->from + 3 mcap: no contact friction, whose fixed point
- * starts otherwise), 2 lam - lam_before: the next step's exact solve starts nearer its answer
- * (its first Newton step on the pegs row 5.7e-5 -> 2.6e-6 of y, median), the same answer.
- * d: 3 mcap scratch. */
-static void keep_pieces(sc_scene_step *c, sc_int no, const double *st, double *d, int ex) {
+ * of that pair's contacts before it, else new: held at zero force. Where the step before had
+ * the same length and, on a block, the same state, its forces extrapolated linearly from that
+ * step's (kept at c->from + 3 mcap; not after an impact, nor with contact friction, whose
+ * fixed point starts otherwise), 2 lam - lam_before: the next step's exact solve starts nearer
+ * its answer (its first Newton step on the pegs row 5.7e-5 -> 2.6e-6 of y, median), the same
+ * answer. d: 3 mcap scratch. */
+static void keep_pieces(sc_scene_step *c, sc_int no, const double *st, double *d, int impact) {
   const sc_int nc0 = (sc_int)c->out[RO_NC], nc1 = (sc_int)c->out1[RO_NC],
                nb1 = (sc_int)c->out1[RO_NB], mc = c->mcap;
   const double *r0 = c->out + RO_POSE + 3 * no, *r1 = c->out1 + RO_POSE + 3 * no;
   double *last = c->from + 3 * mc; /* (the step before's forces on the rows at x) */
   sc_int k, j, i;
-  ex = ex && c->pk[SP_FRICTION] == 0 && last[3 * mc] == c->out[RO_NB] &&
-       last[3 * mc + 1] == c->h;
+  const int ex = !impact && c->pk[SP_FRICTION] == 0 && last[3 * mc] == c->out[RO_NB] &&
+                 last[3 * mc + 1] == c->h;
   for (k = 0; k < nb1; ++k) {
     double *s = c->from + 3 * k;
     sc_int old = -1;
@@ -138,7 +138,7 @@ static void keep_pieces(sc_scene_step *c, sc_int no, const double *st, double *d
       s[1 + i] += s[1 + i] - last[3 * old + 1 + i];
   }
   memcpy(last, d, sizeof(double) * (size_t)(3 * nb1));
-  last[3 * mc] = (double)nb1;
+  last[3 * mc] = impact ? 0.0 : (double)nb1; /* (after an impact: none extrapolated from these) */
   last[3 * mc + 1] = c->h;
   c->nfrom = nb1;
 }
@@ -318,7 +318,7 @@ SC_INTERNAL int sc_scene_step_kept(sc_scene_step *c, void **keep) {
       for (j = 0; j < n; ++j) vn += c->A1[c->start1[k] * n + j] * c->Vp[j];
       impact = vn < -c->impact_speed;
     }
-    if (c->from) keep_pieces(c, no, scratch + 5 * mc, scratch + 6 * mc, !impact);
+    if (c->from) keep_pieces(c, no, scratch + 5 * mc, scratch + 6 * mc, impact);
     memcpy(c->x, xp, sizeof(double) * (size_t)n); /* 6. */
     memcpy(c->V, c->Vp, sizeof(double) * (size_t)n);
     memcpy(c->out, c->out1, sizeof(double) * (size_t)(RO_POSE + 3 * no + CR_W * nc1));
