@@ -143,8 +143,9 @@ static void keep_pieces(sc_scene_step *c, sc_int no, const double *st, double *d
   c->nfrom = nb1;
 }
 
-/* The step's work (4.) from the rows at x, the impulses lam and V+. */
-static void step_work(sc_scene_step *c, sc_int n, const double *Vp) {
+/* The step's work (4.) from the rows at x, the impulses lam and V+; the rows' velocities A V+
+ * from the solve's w = A V+ + off (every row's, off its offsets: solve's). */
+static void step_work(sc_scene_step *c, const double *Vp, const double *ws, const double *off) {
   const sc_int nb = (sc_int)c->out[RO_NB] + (c->pk[SP_FRICTION] != 0) * (sc_int)c->out[RO_NC];
   double *acc = c->acc, impulse = 0.0, cmin = 2.0, t = 0.0;
   sc_int b, r, j;
@@ -154,8 +155,8 @@ static void step_work(sc_scene_step *c, sc_int n, const double *Vp) {
     sc_int kd = c->kind[b], size = sc_block_size(kd);
     double w[2] = {0.0, 0.0}, sp = 0.0, ln = 0.0, dot = 0.0;
     for (r = 0; r < size; ++r) {
-      const double *row = c->A + (c->start[b] + r) * n, l = c->lam[c->start[b] + r];
-      for (j = 0; j < n; ++j) w[r] += row[j] * Vp[j];
+      const double l = c->lam[c->start[b] + r];
+      w[r] = ws[c->start[b] + r] - off[c->start[b] + r];
       if (kd == K_BOX || kd == K_DISC || kd == K_SPLIT) acc[ST_FRICTION] -= l * w[r];
       if (kd == K_UNILATERAL) {
         acc[ST_CONTACT_WORK] += l * w[r];
@@ -307,7 +308,7 @@ SC_INTERNAL int sc_scene_step_kept(sc_scene_step *c, void **keep) {
     c->status = code > 0 ? code : c->status;
     return code < 0 ? code : 0;
   }
-  step_work(c, n, c->Vp); /* 4. */
+  step_work(c, c->Vp, scratch + 4 * mc, scratch + 3 * mc); /* 4. */
   m1 = (sc_int)c->out1[RO_M];
   nc1 = (sc_int)c->out1[RO_NC];
   {
