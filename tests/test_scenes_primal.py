@@ -226,15 +226,24 @@ def test_every_kind_it_treats_on_random_problems(pegs):
     assert answered >= 6
 
 
-def _step_problems(model, run, ks):
+def _step_problems(model, run, ks, steps=1):
     """The solve's problem of the steps at samples ks of a run (the step's M V + h (tau -
-    bias) at the end's rows, the sets times h, the gaps over h) and its warm pieces."""
+    bias) at the end's rows, the sets times h, the gaps over h) and its warm pieces, after
+    ``steps`` steps from the sample (two or more: the pieces' forces extrapolated from the
+    last two steps'; ``own``: the last step's own forces, ``before``: the step's before)."""
     out = []
     for k in ks:
         st = _Stepper(model, run.tolerance, np.zeros(3 * model.scene.n_objects))
         st.x[:] = np.concatenate((run.q[k], run.q_obj[k].reshape(-1)))
         st.V[:] = np.concatenate((run.v[k], run.v_obj[k].reshape(-1)))
-        assert st.call(0.0) == 0 and st.call(H) == 0  # its pieces: the next step's start
+        assert st.call(0.0) == 0
+        mc, before = st.engine.mcap, None
+        for _ in range(steps):  # its pieces: the next step's start
+            before = st.pieces[3 * mc:6 * mc].copy()
+            status = st.call(H)
+            assert status == 0 or steps > 1  # (refused at an onset: that sample left out)
+        if status != 0:
+            continue
         m, nb, ns = int(st.out[2]), int(st.out[3]), st.ns
         f = st.M @ st.V
         f[:ns] -= H * np.asarray(model.bias_forces(st.x[:ns], st.V[:ns])).reshape(-1)
@@ -244,7 +253,9 @@ def _step_problems(model, run, ks):
         out.append(dict(n=st.n, m=m, nb=nb, M=st.M.copy(), f=f, A=st.A[:m].copy(), c=c,
                         kind=st.kind[:nb].copy(), start=st.start[:nb].copy(),
                         par=(st.par[:nb] * H).copy(),
-                        frm=st.pieces[:3 * nb].reshape(nb, 3) * np.array([1.0, H, H])))
+                        frm=st.pieces[:3 * nb].reshape(nb, 3) * np.array([1.0, H, H]),
+                        own=st.pieces[3 * mc:3 * mc + 3 * nb].reshape(nb, 3).copy(),
+                        before=before, nc=int(st.out[1])))
     return out
 
 
@@ -335,6 +346,47 @@ def test_primal_and_dual_paths_agree_on_the_steps(step_problems):
             assert on["info"][k] == off["info"][k], k
         for k in ("primal", "dual", "complementarity"):
             assert on["info"][k] <= 1e-9
+
+
+def test_a_step_from_the_last_two_steps_forces_extrapolated(pegs):
+    """After two steps of the same length the next step starts from the last two steps' forces
+    extrapolated linearly (2 lam - lam_before on each block whose state stayed; scene_step.c):
+    the ground's discs so, and that step's solve from them the same as from the last step's
+    own forces and from scratch (1e-12 of V), as Clarabel's primal (1e-6: its own accuracy)
+    and, where that polished on Clarabel's piece stays within it (the piece guessed right),
+    as the polished one (1e-9); the primal piece answers most."""
+    model, _, _, run = pegs
+    core = model.core
+    core.scene_primal(1, None)
+    _counts(core)
+    problems = _step_problems(model, run, range(11, len(run.t) - 3, 29), steps=2)
+    moved = polished = 0
+    for p in problems:
+        nb, nc = p["nb"], p["nc"]
+        own, before = p["own"][nc:], p["before"][3 * nc:3 * nb].reshape(-1, 3)
+        same = before[:, 0] == own[:, 0]  # (the ground's blocks: the same at every step)
+        assert same.sum() >= nb - nc - 1
+        want = np.where(same[:, None], own + (own - before), own)[:, 1:] * H
+        np.testing.assert_array_equal(p["frm"][nc:, 1:], want)
+        moved += int(np.any(p["frm"][nc:, 1:] != own[:, 1:] * H))
+        V0, lam0 = _primal_reference(p)
+        V = _polished(p, V0, lam0)[0]
+        scale = np.abs(V0).max()
+        good = np.abs(V - V0).max() <= 1e-6 * scale
+        polished += int(good)
+        outs = [_solve(core, p, frm) for frm in (p["frm"], p["own"] * np.array([1.0, H, H]))]
+        outs.append(_solve(core, p, None))
+        for out in outs:
+            assert out["info"]["status"] == 0
+            np.testing.assert_allclose(out["a"], outs[-1]["a"], rtol=0, atol=1e-12 * scale)
+            np.testing.assert_allclose(out["a"], V0, rtol=0, atol=1e-6 * scale)
+            if good:
+                np.testing.assert_allclose(out["a"], V, rtol=0, atol=1e-9 * scale)
+            for k in ("primal", "dual", "complementarity"):
+                assert out["info"][k] <= 1e-9
+    tries, answered = _counts(core)
+    assert moved == len(problems) >= 5 and answered >= 0.7 * tries
+    assert polished >= 0.8 * len(problems)
 
 
 def test_wrong_pieces_fall_back_to_the_dual_path(step_problems):

@@ -155,6 +155,31 @@ def test_a_run_handed_over_in_pieces_is_the_same_run(pegs, monkeypatch):
     assert pieces.summary == whole.summary and len(whole.t) == whole.steps + 1 > 200
 
 
+def test_the_loops_kept_steps_equal_steps_one_call_each(pegs):
+    """The engine's loop keeps its steps' scratch from one to the next (the last step's M V,
+    from its kinetic energy, in the next step's f); the same steps taken one call each
+    (core_scene_step, every scratch fresh: M V summed anew) are the same run bit for bit, and
+    its kinetic energy is 1/2 V^T M V of NumPy at every step's end."""
+    from snakecg.scenes.run_record import ST_KE
+    from snakecg.scenes.stepping import _Stepper
+
+    scene, model, q0 = pegs
+    tau = np.linspace(-0.5, 0.5, 10)
+    run = model.simulate(q0, 0.06, tau=tau)
+    assert run.status == "completed" and run.steps == 60  # (no step shortened)
+    assert run.events  # (an impact: a step's second solve)
+    st = _Stepper(model, run.tolerance, np.zeros(0))
+    assert st.begin(q0, np.zeros(0), None, None) == 0
+    st.tau[:] = tau
+    for k in range(1, run.steps):  # (the last step's length: the duration's remainder)
+        assert st.call(1e-3) == 0
+        np.testing.assert_array_equal(st.x, run.q[k])
+        np.testing.assert_array_equal(st.V, run.v[k])
+        assert st.acc[ST_KE] == run.kinetic_energy[k]
+        assert st.acc[ST_KE] == pytest.approx(0.5 * st.V @ st.M @ st.V, rel=1e-14)
+    assert run.kinetic_energy[-1] > 1e-6  # (moving)
+
+
 def test_a_subclassed_law_is_the_callers_own(pegs):
     """A subclass of SerpenoidPD may change the law: the engine does not evaluate it."""
     scene, model, q0 = pegs

@@ -252,13 +252,14 @@ static void start_from(sc_problem *p, const double *from) {
   for (i = 0; i < p->m; ++i) p->lam[i] = 0.0;
   for (k = 0; k < p->nb; ++k) {
     const double *q = p->par + 3 * k, *s = from + 3 * k;
-    const sc_int kind = p->kind[k], r = p->start[k], code = (sc_int)s[0];
+    const sc_int kind = p->kind[k], r = p->start[k], code = (sc_int)s[0],
+                 nk = sc_block_size(kind); /* (called once: another file's) */
     int zero = kind == K_BOX ? !(q[0] > 0) : kind == K_DISC ? !(q[0] > 0) :
                kind == K_SPLIT ? !(q[2] > 0 && (q[0] > 0 || q[1] > 0)) : 0;
     p->gamma[k] = 0.0;
     p->state[k] = zero || (code == S_ZERO && kind != K_FREE) ? S_ZERO : S_HELD;
     if (zero || p->state[k] == S_ZERO) continue;
-    for (i = 0; i < sc_block_size(kind); ++i) p->lam[r + i] = s[1 + i];
+    for (i = 0; i < nk; ++i) p->lam[r + i] = s[1 + i];
     if (code < S_SLIDE || kind < K_BOX) continue;
     if (kind == K_BOX) p->lam[r] = code == 4 ? -q[0] : q[0];
     else if (s[1] == 0.0 && s[2] == 0.0) continue;
@@ -570,13 +571,14 @@ int SNAKECG_EXPORT(core_scene_solve_s)(sc_int n, sc_int m, sc_int nb, const doub
                                        const double *par, sc_int max_sweeps,
                                        const double *from, double *lam, double *a, double *w,
                                        double *state, double *info) {
-  sc_int nd, ni, iws[160];
-  double *work, ws[1024]; /* (a small problem's scratch on the stack: no allocation) */
+  sc_int nd, ni, iws[256];
+  double *work, ws[10240]; /* (scratch on the stack up to 80 KB, no allocation: a time step's
+    problems, 13 coordinates and up to 33 rows on the pegs row, are 8,000-10,000 doubles) */
   sc_int *iwork;
   if (n < 1 || n > 512 || m < 0 || m > 500 || nb < 0 || nb > m) return -2;
   SNAKECG_EXPORT(core_scene_solve_work)(n, m, nb, &nd, &ni);
-  work = nd <= 1024 ? ws : (double *)malloc(sizeof(double) * (size_t)nd);
-  iwork = ni <= 160 ? iws : (sc_int *)malloc(sizeof(sc_int) * (size_t)ni);
+  work = nd <= 10240 ? ws : (double *)malloc(sizeof(double) * (size_t)nd);
+  iwork = ni <= 256 ? iws : (sc_int *)malloc(sizeof(sc_int) * (size_t)ni);
   if (work && iwork)
     solve_sample(n, m, nb, M, f, A, c, kind, start, par, max_sweeps, from, lam, a, w, state,
                  info, work, iwork);

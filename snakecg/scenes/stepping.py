@@ -132,9 +132,10 @@ class _Stepper:
         self.info, self.iinfo = np.zeros(len(INFO)), np.zeros(len(INFO))
         self.acc = np.zeros(ST_WIDTH)
         self.acc[ST_SLIDING_COS] = -1.0
-        # the last step's pieces, the next solve's start (this run's own: a batch's runs and
-        # a run handed over in pieces go on from their own)
-        self.pieces = np.zeros(3 * mcap)
+        # the last step's pieces, the next solve's start, then that step's own forces, their
+        # count and its length (this run's own: a batch's runs and a run handed over in pieces
+        # go on from their own)
+        self.pieces = np.zeros(6 * mcap + 2)
         cold = os.environ.get(COLD_START_ENV, "") not in ("", "0")
         ad = [a.ctypes.data for a in (
             self.tau, self.fo, self.x, self.V)]
