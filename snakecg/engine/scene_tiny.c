@@ -154,7 +154,7 @@ TINY_FLAT int setup_fixed(const sc_int n, const sc_int t, const sc_int m, const 
  * setup_fixed's sizes and sc_inertia_factor's (L's rows from t on their diagonal) */
 TINY_FLAT void accel_fixed(const sc_int n, const sc_int t, const sc_int m, const double *L,
                            const double *Z, const double *g, const double *lam, double *a) {
-  double lz[SC_TINY_M];
+  double lz[SC_TINY_M] = {0.0};
   sc_int i, j, k;
   TINY_UNROLL for (j = 0; j < m; ++j) lz[j] = isfinite(lam[j]) ? lam[j] : 0.0;
   TINY_UNROLL for (i = 0; i < n; ++i) {
