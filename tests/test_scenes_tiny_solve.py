@@ -131,6 +131,7 @@ def test_random_tiny_problems_against_the_pieces_and_the_general_path(core, rng,
             assert np.array_equal(g_state, state)
             assert np.abs(g_a - a).max() <= 1e-12 * max(1.0, np.abs(g_a).max())
             assert np.abs(g_lam - lam).max() <= 1e-12 * max(1.0, np.abs(g_lam).max())
+            assert np.abs(g_w - w).max() <= 1e-12 * max(1.0, np.abs(g_w).max())
             assert np.abs(g_info[2:5] - info[2:5]).max() <= 1e-12  # the certificate
             assert max(info[2:5]) <= 1e-9
         assert _tiny(core, 0)[0] == 0  # (switched off: nothing tried)
@@ -142,12 +143,12 @@ def test_random_tiny_problems_against_the_pieces_and_the_general_path(core, rng,
 def test_left_to_the_general_path(core, rng):
     """What the tiny path does not treat goes to the general path, which answers it: rows
     dependent (a statically indeterminate piece: dependent flag, minimum-norm forces), more
-    than 6 rows, a Coulomb disc; each counted as tried and not answered where it was tried."""
-    M, f, A, c, _, _, _ = _problem(rng, 6)
+    than 6 rows (not tried)."""
+    M, f, A, _, _, _, _ = _problem(rng, 6)
     A = np.r_[A[:1], A[:1], rng.normal(size=(1, M.shape[0]))]  # the first row twice
     kind, par = np.array([K_FREE, K_FREE, K_UNILATERAL]), np.zeros(9)
     _tiny(core, 1)
-    a, lam, w, state, info = _solve(core, M, f, A, None, kind, par)
+    _, lam, _, _, info = _solve(core, M, f, A, None, kind, par)
     assert _tiny(core, 1).tolist() == [1.0, 0.0]
     assert info[STATUS] == 0 and info[DEPENDENT] == 1 and info[DEFECT] == 1
     assert lam[0] == pytest.approx(lam[1], rel=1e-12)  # the minimum-norm split
