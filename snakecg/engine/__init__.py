@@ -68,6 +68,9 @@ class Core:
         self.scene_primal = lib.entry_or_none("core_scene_primal")
         """scene_primal.c's ``core_scene_primal(mode, counts)``: the warm start's primal piece
         switched on (1) or off (0) for the process, and this thread's tries and answers."""
+        self.scene_tiny = lib.entry_or_none("core_scene_tiny")
+        """scene_tiny.c's ``core_scene_tiny(mode, counts)``: the solve compiled for tiny problems
+        switched on (1) or off (0) for the process, and the problems it tried and answered."""
         self.contact_depth = lib.entry_or_none("core_contact_depth")
         """geometry.c's ``core_contact_depth``: the simulation's contact check at states."""
         self.sphere = SphereKernel(lib)

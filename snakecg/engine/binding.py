@@ -77,6 +77,8 @@ PROTOTYPES: dict[str, tuple[list, object]] = {
     "core_scene_solve_s": ([_I, _I, _I] + [_P] * 7 + [_I] + [_P] * 6, _INT),
     # scene_primal.c (the warm start's primal piece: its switch and counts, for measurement)
     "core_scene_primal": ([_I, _P], _INT),
+    # scene_tiny.c (the solve compiled for tiny problems: its switch and counts, for measurement)
+    "core_scene_tiny": ([_I, _P], _INT),
     "core_scene_rows": ([_P], _INT),
     "core_scene_gaps": ([_P], _INT),
     # scene_place.c

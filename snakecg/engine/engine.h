@@ -20,7 +20,7 @@
  *   optimal.c       the optimal-torque queries of a batch (exported: core_optimal)
  *   max_sr.c, push.c, wheel_states.c   the queries' solves
  *   pieces.c, sphere.c                 the exact extremes' pieces and faces (exported)
- *   scene_sets.c, scene_piece.c, scene_primal.c, scene_small.c, scene_solve.c   exact solve
+ *   scene_sets.c, _piece.c, _primal.c, _small.c, _tiny.c, _solve.c   the exact solve
  *   scene_place.c, scene_geometry.c, scene_rows.c, scene_step.c, scene_run.c   placement,
  *                   contacts, rows, forward, a time step, whole runs and batches of runs
  *   scene_friction.c  Coulomb friction at a general scene's contacts (tangent rows, its solve)

@@ -46,9 +46,9 @@
 
 #include "snakecg_layout.h"
 #include "engine.h"
+#include "scene_tiny.h"
 
-/* sample status */
-enum { ST_SOLVED = 0, ST_NOT_CONVERGED = 1, ST_SINGULAR_MASS = 2, ST_BAD_INPUT = 3 };
+enum { ST_SOLVED = 0, ST_NOT_CONVERGED = 1, ST_SINGULAR_MASS = 2, ST_BAD_INPUT = 3 }; /* status */
 /* info fields */
 enum { INFO_STATUS = 0, INFO_DEPENDENT, INFO_PRIMAL, INFO_DUAL, INFO_COMPL, INFO_SWEEPS,
        INFO_PASSES, INFO_RANK_DEFECT, INFO_WIDTH };
@@ -357,6 +357,8 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
   sc_int *state = iwork, *iw2 = iwork + nb, *prev = iw2 + 3 * (m + nb);
   sc_problem p;
   int dep = 0, ok = 0, primal = 0;
+  if (sc_tiny_solve(n, m, nb, M, f, A, c, kind, start, par, from, lam, a, w, state_out, info))
+    return; /* (a tiny problem of one-row blocks: scene_tiny.c, the same steps compiled) */
   memset(info, 0, sizeof(double) * INFO_WIDTH);
   if (!sc_inertia_factor(n, M, f, 1e-14, L, a, &t)) { /* (scene_small.c: g = L^-1 f in a) */
     info[INFO_STATUS] = ST_SINGULAR_MASS;

@@ -1,0 +1,479 @@
+/* snakecg's engine: the general scene's exact solve (scene_solve.c) compiled for tiny problems.
+ *
+ * A problem whose blocks are all one row (FREE, UNILATERAL, BOX: contacts and wheels, no
+ * Coulomb discs or split ellipses), with at most SC_TINY_M rows and no more rows than
+ * coordinates (the paper's scene: a contact and three wheels' lateral rows on 9 coordinates)
+ * is solved here by the general path's own steps in their order:
+ *   the set-up (scene_small.c's factor of the inertia, g = L^-1 f, Z = L^-1 A^T, G = Z^T Z and
+ *   b = Z^T g + c: the same operations in the same order, bit for bit its results, compiled
+ *   with every loop over the coordinates unrolled for the snake with 0-2 objects), the scales,
+ *   the start from the caller's pieces (FROM_PASSES active-set passes), then from the held
+ *   guess (GUESS_PASSES), each pass the piece's equations solved to rounding (scene_piece.c:
+ *   the held rows' forces from G_HH d = -w_H, at most three rounds while max |w_H| is above
+ *   1e-14 of the scale) and the KKT conditions checked and switched (scene_solve.c's kkt: the
+ *   same residuals, the same rules), then the certificate, the pieces reported and
+ *   a = L^-T (g + Z lam). The passes are compiled once per row count (1..SC_TINY_M).
+ * What differs is G_HH's factor: the general path's diagonal pivoting (sc_psd_solve: a pivot
+ * search and swaps on the gathered rows, rows dropped at pivots of DEP_TOL = 1e-10 of the
+ * first) becomes the same L D L^T in the rows' order, the other rows the identity (no
+ * gather, no search), factored once per pass (its rounds reuse it). It is used only where the
+ * pivoted factor would keep every held row: each pivoted pivot is at most G_HH's largest
+ * diagonal entry (the first pivot), so at least det G_HH over that entry to the h - 1, and at
+ * least G_HH's least eigenvalue, itself at least 1 / trace(G_HH^-1); where neither bound is
+ * DEF_TOL (100 DEP_TOL) of the largest diagonal entry, the general path solves the problem.
+ * So the pieces, their passes and the answer are the general path's, to rounding (the held
+ * forces solved in another order; bit for bit where the pivots come in the rows' order).
+ * Whatever else the general path does goes to it as well, the problem solved there from the
+ * start: a singular inertia, no piece answered within the passes (the sweeps), a degenerate
+ * answer (a non-held block whose rows do not accelerate: the minimum-norm face). Every answer
+ * given here has dependent = 0, no rank defect and no sweeps. */
+#include <math.h>
+#include <string.h>
+
+#include "snakecg_layout.h"
+#include "engine.h"
+#include "scene_tiny.h"
+
+#if defined(__GNUC__)
+#define TINY_FLAT static inline __attribute__((always_inline))
+#else
+#define TINY_FLAT static inline
+#endif
+
+/* scene_solve.c's passes and info fields */
+#define GUESS_PASSES 3
+#define FROM_PASSES 4
+enum { INFO_STATUS = 0, INFO_DEPENDENT, INFO_PRIMAL, INFO_DUAL, INFO_COMPL, INFO_SWEEPS,
+       INFO_PASSES, INFO_RANK_DEFECT, INFO_WIDTH };
+/* G_HH's factor in the rows' order used where its pivoted factor's pivots certainly stay
+ * above this of the first (scene_piece.c's DEP_TOL is 1e-10) */
+#define DEF_TOL 1e-8
+
+/* core_scene_tiny's switch and counts (tries, answers: measurement only) */
+static int tiny_on = 1;
+static long tiny_counts[2];
+#if defined(__GNUC__)
+#define TINY_ADD(k, v) __atomic_fetch_add(&tiny_counts[k], (v), __ATOMIC_RELAXED)
+#define TINY_TAKE(k) __atomic_exchange_n(&tiny_counts[k], 0L, __ATOMIC_RELAXED)
+#else
+#define TINY_ADD(k, v) (tiny_counts[k] += (v))
+static long tiny_take(int k) {
+  long v = tiny_counts[k];
+  tiny_counts[k] = 0;
+  return v;
+}
+#define TINY_TAKE(k) tiny_take(k)
+#endif
+
+#define TINY_UNROLL _Pragma("GCC unroll 16")
+/* the set-up compiled for the snake's n_s coordinates and 0-2 objects where n_s is at most this
+ * (beyond, scene_small.c's loops: a fully unrolled factor grows as n_s^3) */
+#define TINY_FIXED_NS 9
+
+/* scene_small.c's group of four coordinates' sum, r of them (1-4) as its short last group */
+TINY_FLAT double sum4(const sc_int r, double p0, double p1, double p2, double p3) {
+  return r == 4 ? (p0 + p1) + (p2 + p3) : r == 3 ? (p0 + p1) + p2 : r == 2 ? p0 + p1 : p0;
+}
+
+/* The set-up for n coordinates whose rows from t on are their diagonal (n, t, m constants):
+ * scene_small.c's sc_inertia_factor, sc_scene_z and sc_scene_gram, the same operations in
+ * the same order (their results bit for bit), every loop unrolled. L: the dense block's lower
+ * triangle and the diagonal (n x n), g = L^-1 f, Z = L^-1 A^T (n x m), G = Z^T Z, b = Z^T g + c
+ * (c may be null). Returns 0 where the factor's pivot rule fails. */
+TINY_FLAT int setup_fixed(const sc_int n, const sc_int t, const sc_int m, const double *M,
+                          const double *f, const double *A, const double *c, double *L,
+                          double *g, double *Z, double *G, double *b) {
+  const double rel = 1e-14;
+  double big = 0.0, big_t = 0.0, rel_t;
+  sc_int i, j, k;
+  TINY_UNROLL for (i = 0; i < n; ++i) {
+    const double d = M[i * n + i];
+    if (d > big) big = d;
+    if (i < t && d > big_t) big_t = d;
+  }
+  if (!(big > 0.0) || !isfinite(big) || !(big_t > 0.0) || !isfinite(big_t)) return 0;
+  rel_t = big_t == big ? rel : rel * (big / big_t);
+  TINY_UNROLL for (j = 0; j < t; ++j) { /* sc_cholesky on the dense block */
+    double d = M[j * n + j];
+    TINY_UNROLL for (k = 0; k < j; ++k) d -= L[j * n + k] * L[j * n + k];
+    if (!(d > rel_t * big_t)) return 0;
+    d = sqrt(d);
+    L[j * n + j] = d;
+    TINY_UNROLL for (i = j + 1; i < t; ++i) {
+      double s = M[i * n + j];
+      TINY_UNROLL for (k = 0; k < j; ++k) s -= L[i * n + k] * L[j * n + k];
+      L[i * n + j] = s / d;
+    }
+  }
+  TINY_UNROLL for (i = t; i < n; ++i) { /* the diagonal tail */
+    if (!(M[i * n + i] > rel * big)) return 0;
+    L[i * n + i] = sqrt(M[i * n + i]);
+  }
+  TINY_UNROLL for (i = 0; i < n; ++i) { /* g = L^-1 f */
+    double s = f[i];
+    if (i < t) TINY_UNROLL for (j = 0; j < i; ++j) s -= L[i * n + j] * g[j];
+    g[i] = s / L[i * n + i];
+  }
+  TINY_UNROLL for (i = t; i < n; ++i) /* Z */
+    for (j = 0; j < m; ++j) Z[i * m + j] = A[j * n + i] / L[i * n + i];
+  TINY_UNROLL for (i = 0; i < t; ++i)
+    for (j = 0; j < m; ++j) {
+      double z = A[j * n + i];
+      TINY_UNROLL for (k = 0; k + 3 < i; k += 4)
+        z -= (L[i * n + k] * Z[k * m + j] + L[i * n + k + 1] * Z[(k + 1) * m + j]) +
+             (L[i * n + k + 2] * Z[(k + 2) * m + j] + L[i * n + k + 3] * Z[(k + 3) * m + j]);
+      TINY_UNROLL for (k = i - i % 4; k < i; ++k) z -= L[i * n + k] * Z[k * m + j];
+      Z[i * m + j] = z / L[i * n + i];
+    }
+  for (j = 0; j < m; ++j) { /* G's lower triangle and b by groups of coordinates */
+    double bj = 0.0;
+    for (k = 0; k <= j; ++k) {
+      double s = 0.0;
+      TINY_UNROLL for (i = 0; i < n; i += 4) {
+        const sc_int r = n - i < 4 ? n - i : 4;
+        const double *z = Z + i * m;
+        s += sum4(r, z[j] * z[k], r > 1 ? z[m + j] * z[m + k] : 0.0,
+                  r > 2 ? z[2 * m + j] * z[2 * m + k] : 0.0,
+                  r > 3 ? z[3 * m + j] * z[3 * m + k] : 0.0);
+      }
+      G[j * m + k] = G[k * m + j] = s;
+    }
+    TINY_UNROLL for (i = 0; i < n; i += 4) {
+      const sc_int r = n - i < 4 ? n - i : 4;
+      const double *z = Z + i * m;
+      bj += sum4(r, z[j] * g[i], r > 1 ? z[m + j] * g[i + 1] : 0.0,
+                 r > 2 ? z[2 * m + j] * g[i + 2] : 0.0, r > 3 ? z[3 * m + j] * g[i + 3] : 0.0);
+    }
+    b[j] = c ? bj + c[j] : bj;
+  }
+  return 1;
+}
+
+/* a = L^-T (g + Z lam) (scene_solve.c's eq. 18 from the factor, its sums in its order; a zero
+ * force's terms added as +-0, which changes no sum but the sign of an exact zero) for
+ * setup_fixed's sizes and sc_inertia_factor's (L's rows from t on their diagonal) */
+TINY_FLAT void accel_fixed(const sc_int n, const sc_int t, const sc_int m, const double *L,
+                           const double *Z, const double *g, const double *lam, double *a) {
+  double lz[SC_TINY_M] = {0.0};
+  sc_int i, j, k;
+  TINY_UNROLL for (j = 0; j < m; ++j) lz[j] = isfinite(lam[j]) ? lam[j] : 0.0;
+  TINY_UNROLL for (i = 0; i < n; ++i) {
+    double s = g[i];
+    TINY_UNROLL for (j = 0; j < m; ++j) s += Z[i * m + j] * lz[j];
+    a[i] = s;
+  }
+  TINY_UNROLL for (i = n - 1; i >= 0; --i) {
+    double s = a[i];
+    if (i < t) TINY_UNROLL for (k = i + 1; k < t; ++k) s -= L[k * n + i] * a[k];
+    a[i] = s / L[i * n + i];
+  }
+}
+
+typedef struct {
+  const sc_int *kind;
+  const double *par; /* 3 per row */
+  double G[SC_TINY_M * SC_TINY_M], b[SC_TINY_M], lam[SC_TINY_M], w[SC_TINY_M], F, W;
+  sc_int state[SC_TINY_M];
+} tiny;
+
+/* w = G lam + b (linalg.h's sc_matvec_plus: each row's dot product in four partial sums) */
+TINY_FLAT void wvec(const sc_int m, tiny *p) {
+  sc_int i, j;
+  for (i = 0; i < m; ++i) {
+    const double *g = p->G + i * m;
+    double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;
+    for (j = 0; j + 3 < m; j += 4) {
+      s0 += g[j] * p->lam[j], s1 += g[j + 1] * p->lam[j + 1];
+      s2 += g[j + 2] * p->lam[j + 2], s3 += g[j + 3] * p->lam[j + 3];
+    }
+    for (j = m - m % 4; j < m; ++j) s0 += g[j] * p->lam[j];
+    p->w[i] = p->b[i] + ((s0 + s1) + (s2 + s3));
+  }
+}
+
+/* The piece's equations solved (scene_piece.c's piece and rounds for one-row blocks): the fixed
+ * forces set, w = G lam + b, then lam_H += d with G_HH d = -w_H while max |w_H| > 1e-14 W, at
+ * most three times. Returns 0 where G_HH is not certainly definite (nothing answered). */
+TINY_FLAT int piece(const sc_int m, tiny *p) {
+  double C[SC_TINY_M * SC_TINY_M], y[SC_TINY_M], big = 0.0, det = 1.0;
+  int held[SC_TINY_M], h = 0, round;
+  sc_int i, j, k;
+  for (k = 0; k < m; ++k) {
+    held[k] = p->state[k] == S_HELD;
+    if (held[k]) {
+      ++h;
+      if (p->G[k * m + k] > big) big = p->G[k * m + k];
+    } else {
+      const double q = p->par[3 * k];
+      p->lam[k] = p->state[k] == S_ZERO ? 0.0 : p->lam[k] >= 0 ? q : -q;
+    }
+  }
+  wvec(m, p);
+  if (h == 0) return 1;
+  for (i = 0; i < m; ++i) /* G_HH in place, the other rows and columns the identity */
+    for (j = 0; j <= i; ++j) C[i * m + j] = held[i] && held[j] ? p->G[i * m + j] : i == j;
+  for (k = 0; k < m; ++k) { /* G_HH = L D L^T in the rows' order (sc_psd_solve's arithmetic) */
+    const double d = C[k * m + k];
+    if (!(d > 0.0) || !(d < INFINITY)) return 0;
+    if (held[k]) det *= d / big;
+    for (i = k + 1; i < m; ++i) y[i] = C[i * m + k];
+    for (i = k + 1; i < m; ++i) {
+      const double l = y[i] / d;
+      for (j = k + 1; j <= i; ++j) C[i * m + j] -= l * y[j];
+      C[i * m + k] = l;
+    }
+  }
+  if (!(det > DEF_TOL)) { /* the least eigenvalue: at least 1 / trace(G_HH^-1) */
+    double X[SC_TINY_M], tr = 0.0;
+    for (k = 0; k < m; ++k) { /* row k of L^-1, its squares over D_k */
+      double sq = 0.0;
+      if (!held[k]) continue;
+      for (i = k; i >= 0; --i) {
+        double t = i == k ? 1.0 : 0.0;
+        for (j = i + 1; j <= k; ++j) t -= X[j] * C[j * m + i];
+        X[i] = t;
+        if (held[i]) sq += t * t;
+      }
+      tr += sq / C[k * m + k];
+    }
+    if (!(tr * big * DEF_TOL < 1.0)) return 0;
+  }
+  for (round = 0; round < 3; ++round) {
+    double fn = 0.0;
+    for (i = 0; i < m; ++i) { /* L y = -w_H, D z = y, L^T d = z */
+      double t = held[i] ? -p->w[i] : 0.0;
+      for (k = 0; k < i; ++k) t -= C[i * m + k] * y[k];
+      y[i] = t;
+    }
+    for (i = 0; i < m; ++i) y[i] /= C[i * m + i];
+    for (i = m - 1; i >= 0; --i)
+      for (k = i + 1; k < m; ++k) y[i] -= C[k * m + i] * y[k];
+    for (i = 0; i < m; ++i)
+      if (held[i]) p->lam[i] += y[i];
+    wvec(m, p);
+    for (i = 0; i < m; ++i)
+      if (held[i]) fn = sc_max(fn, fabs(p->w[i]));
+    if (!(fn > 1e-14 * p->W)) break;
+  }
+  return 1;
+}
+
+/* scene_solve.c's kkt for one-row blocks: the residuals (primal, dual, complementarity,
+ * relative) and, with do_switch, the violated pieces switched (returns 1 if any). */
+TINY_FLAT int kkt(const sc_int m, tiny *p, double *res, int do_switch) {
+  double pr = 0.0, du = 0.0, co = 0.0, F = p->F, W = p->W, e;
+  int moved = 0;
+  sc_int k;
+  for (k = 0; k < m; ++k) {
+    const double q = p->par[3 * k], l = p->lam[k], w = p->w[k];
+    switch (p->kind[k]) {
+      case K_FREE:
+        du = sc_max(du, fabs(w) / W);
+        break;
+      case K_UNILATERAL:
+        pr = sc_max(pr, sc_max(0.0, -l) / F);
+        du = sc_max(du, sc_max(0.0, -w) / W);
+        co = sc_max(co, fabs(l * w) / (F * W));
+        if (do_switch) {
+          if (p->state[k] == S_HELD && l < -TOL_ACCEPT * F) p->state[k] = S_ZERO, moved = 1;
+          else if (p->state[k] == S_ZERO && w < -TOL_ACCEPT * W) p->state[k] = S_HELD, moved = 1;
+        }
+        break;
+      default: { /* K_BOX */
+        const double x = q - fabs(l);
+        pr = sc_max(pr, sc_max(0.0, fabs(l) - q) / F);
+        if (!(q > 0)) break; /* the set {0}: its normal cone is every w */
+        if (fabs(l) < q) e = fabs(w);
+        else e = l > 0 ? sc_max(0.0, w) : sc_max(0.0, -w);
+        du = sc_max(du, e / W);
+        co = sc_max(co, fabs((x < 0.0 ? x : 0.0) * w) / (F * W)); /* (fmin(x, 0.0)'s) */
+        if (do_switch) {
+          if (p->state[k] == S_HELD && fabs(l) > q * (1 + TOL_ACCEPT))
+            p->state[k] = S_SLIDE, moved = 1;
+          else if (p->state[k] == S_SLIDE && e > TOL_ACCEPT * W) p->state[k] = S_HELD, moved = 1;
+        }
+      }
+    }
+  }
+  res[0] = pr;
+  res[1] = du;
+  res[2] = co;
+  return moved;
+}
+
+/* scene_solve.c's active_set: 1 answered (res its residuals), 0 not within max_pass, -1 a piece
+ * left to the general path. */
+TINY_FLAT int passes(const sc_int m, tiny *p, int max_pass, sc_int *count, double *res) {
+  int pass;
+  for (pass = 0; pass < max_pass; ++pass) {
+    ++*count;
+    if (!piece(m, p)) return -1;
+    if (!kkt(m, p, res, 1))
+      return res[0] <= TOL_ACCEPT && res[1] <= TOL_ACCEPT && res[2] <= TOL_ACCEPT;
+  }
+  return 0;
+}
+
+/* passes and kkt compiled once per row count (and called, not inlined, by solve) */
+#if defined(__GNUC__)
+#define TINY_CALLED static __attribute__((noinline))
+#else
+#define TINY_CALLED static
+#endif
+#define TINY_BY_M(r) \
+  TINY_CALLED int passes_##r(tiny *p, int max_pass, sc_int *count, double *res) { \
+    return passes(r, p, max_pass, count, res); \
+  } \
+  TINY_CALLED void final_##r(tiny *p, double *res) { \
+    wvec(r, p); \
+    kkt(r, p, res, 0); \
+  }
+TINY_BY_M(1) TINY_BY_M(2) TINY_BY_M(3) TINY_BY_M(4) TINY_BY_M(5) TINY_BY_M(6)
+#undef TINY_BY_M
+#define TINY_SWITCH_M(m, call) \
+  switch (m) { \
+    case 1: call(1); break; case 2: call(2); break; case 3: call(3); break; \
+    case 4: call(4); break; case 5: call(5); break; default: call(6); \
+  }
+
+/* The set-up (scene_small.c's) for n coordinates and m rows; shape: the objects' count where
+ * the factor is compiled for n (else -1); t: the dense block's size. 0: singular. */
+static int setup(sc_int n, sc_int m, int shape, const double *M, const double *f,
+                 const double *A, const double *c, double *L, double *g, double *Z, double *G,
+                 double *b, sc_int *t) {
+  double zero[SC_TINY_M];
+  const sc_int s = SNAKECG_NS;
+  switch (shape) {
+#if SNAKECG_NS <= TINY_FIXED_NS
+    case 0: *t = s; return setup_fixed(s, s, m, M, f, A, c, L, g, Z, G, b);
+    case 1: *t = s; return setup_fixed(s + 3, s, m, M, f, A, c, L, g, Z, G, b);
+    case 2: *t = s; return setup_fixed(s + 6, s, m, M, f, A, c, L, g, Z, G, b);
+#endif
+    default:
+      if (!sc_inertia_factor(n, M, f, 1e-14, L, g, t)) return 0;
+      sc_scene_z(n, m, *t, L, A, Z);
+      sc_scene_gram(n, m, Z, g, c, G, b, zero);
+      return 1;
+  }
+}
+
+/* The solve (m rows); shape as setup's; L: n x n scratch. */
+static int solve(sc_int m, sc_int n, int shape, const double *M, const double *f,
+                 const double *A, const double *c, const sc_int *kind, const double *par,
+                 const double *from, double *L, double *lam_out, double *a, double *w_out,
+                 double *state_out, double *info) {
+  double Z[SC_TINY_N * SC_TINY_M], g[SC_TINY_N], res[3], fs = 0.0, ws = 0.0;
+  sc_int i, k, t = 0, count = 0;
+  int ok = 0, moved = 0;
+  tiny p;
+  p.kind = kind;
+  p.par = par;
+  if (!setup(n, m, shape, M, f, A, c, L, g, Z, p.G, p.b, &t)) return 0;
+  for (i = 0; i < m; ++i) { /* scene_solve.c's scales */
+    const double d = p.G[i * m + i], bi = fabs(p.b[i]);
+    if (d > 0 && bi / d > fs) fs = bi / d;
+    if (bi > ws) ws = bi;
+  }
+  for (k = 0; k < 3 * m; ++k)
+    if (isfinite(par[k]) && fabs(par[k]) > fs) fs = fabs(par[k]);
+  for (i = 0; i < m; ++i)
+    if (p.G[i * m + i] * fs > ws) ws = p.G[i * m + i] * fs;
+  p.F = fs > 0 ? fs : 1.0;
+  p.W = ws > 0 ? ws : 1.0;
+  if (from) { /* the caller's pieces (scene_solve.c's start_from) */
+    for (k = 0; k < m; ++k) {
+      const double q = par[3 * k], *s = from + 3 * k;
+      const sc_int code = (sc_int)s[0];
+      const int zero_set = kind[k] == K_BOX && !(q > 0);
+      p.lam[k] = 0.0;
+      p.state[k] = zero_set || (code == S_ZERO && kind[k] != K_FREE) ? S_ZERO : S_HELD;
+      if (p.state[k] == S_ZERO) continue;
+      p.lam[k] = s[1];
+      if (code >= S_SLIDE && kind[k] == K_BOX) {
+        p.lam[k] = code == 4 ? -q : q;
+        p.state[k] = S_SLIDE;
+      }
+    }
+#define TINY_FROM(r) ok = passes_##r(&p, FROM_PASSES, &count, res)
+    TINY_SWITCH_M(m, TINY_FROM)
+#undef TINY_FROM
+    if (ok < 0) return 0;
+  }
+  if (!ok) { /* the held guess: every block held (or its set zero) */
+    for (k = 0; k < m; ++k) {
+      p.lam[k] = 0.0;
+      p.state[k] = kind[k] == K_BOX && !(par[3 * k] > 0) ? S_ZERO : S_HELD;
+    }
+#define TINY_GUESS(r) ok = passes_##r(&p, GUESS_PASSES, &count, res)
+    TINY_SWITCH_M(m, TINY_GUESS)
+#undef TINY_GUESS
+    if (ok <= 0) return 0;
+  }
+  for (k = 0; k < m; ++k) /* a degenerate answer (sc_still): the minimum-norm face's */
+    if (p.state[k] != S_HELD && !(fabs(p.w[k]) > TOL_ACCEPT * p.W)) return 0;
+  for (k = 0; k < m; ++k) /* a contact's force below zero by rounding: zero */
+    if (kind[k] == K_UNILATERAL && p.lam[k] < 0) {
+      p.lam[k] = 0.0;
+      moved = 1;
+    }
+  if (moved) {
+#define TINY_FINAL(r) final_##r(&p, res)
+    TINY_SWITCH_M(m, TINY_FINAL)
+#undef TINY_FINAL
+  }
+  memset(info, 0, sizeof(double) * INFO_WIDTH);
+  info[INFO_PRIMAL] = res[0];
+  info[INFO_DUAL] = res[1];
+  info[INFO_COMPL] = res[2];
+  info[INFO_PASSES] = (double)count;
+  for (k = 0; k < m; ++k) { /* on the set's boundary without sliding: stick at the limit */
+    if (p.state[k] == S_SLIDE && fabs(p.w[k]) <= TOL_ACCEPT * p.W) p.state[k] = S_HELD;
+    state_out[k] = p.state[k] == S_SLIDE ? (p.lam[k] > 0 ? 3.0 : 4.0) : (double)p.state[k];
+    lam_out[k] = p.lam[k];
+    w_out[k] = p.w[k];
+  }
+  switch (shape) {
+#if SNAKECG_NS <= TINY_FIXED_NS
+    case 0: accel_fixed(SNAKECG_NS, SNAKECG_NS, m, L, Z, g, p.lam, a); break;
+    case 1: accel_fixed(SNAKECG_NS + 3, SNAKECG_NS, m, L, Z, g, p.lam, a); break;
+    case 2: accel_fixed(SNAKECG_NS + 6, SNAKECG_NS, m, L, Z, g, p.lam, a); break;
+#endif
+    default: accel_fixed(n, t, m, L, Z, g, p.lam, a); /* (the same loops, not unrolled) */
+  }
+  return 1;
+}
+
+SC_INTERNAL int sc_tiny_solve(sc_int n, sc_int m, sc_int nb, const double *M, const double *f,
+                              const double *A, const double *c, const sc_int *kind,
+                              const sc_int *start, const double *par, const double *from,
+                              double *lam, double *a, double *w, double *state_out,
+                              double *info) {
+  double L[SC_TINY_N * SC_TINY_N];
+  sc_int i, j, k;
+  int ok, shape = (n - SNAKECG_NS) / 3;
+  if (!tiny_on || m < 1 || m > SC_TINY_M || nb != m || m > n || n > SC_TINY_N) return 0;
+  for (k = 0; k < m; ++k)
+    if (kind[k] < K_FREE || kind[k] > K_BOX || start[k] != k) return 0;
+  if (n < SNAKECG_NS || n > SNAKECG_NS + 6 || (n - SNAKECG_NS) % 3 != 0) shape = -1;
+  for (i = SNAKECG_NS; i < n && shape >= 0; ++i) /* the objects' rows: their diagonal */
+    for (j = 0; j < i; ++j)
+      if (M[i * n + j] != 0.0) shape = -1;
+  ok = solve(m, n, shape, M, f, A, c, kind, par, from, L, lam, a, w, state_out, info);
+  TINY_ADD(0, 1L);
+  TINY_ADD(1, ok ? 1L : 0L);
+  return ok;
+}
+
+/* The tiny path switched on (mode 1) or off (0: every problem to the general path), or left
+ * (-1); counts (2 doubles, or NULL): the problems tried and answered since the last read, then
+ * reset. Returns the previous mode. */
+int SNAKECG_EXPORT(core_scene_tiny)(sc_int mode, double *counts) {
+  int prev = tiny_on;
+  if (mode == 0 || mode == 1) tiny_on = (int)mode;
+  if (counts) {
+    long t = TINY_TAKE(0);
+    long a = TINY_TAKE(1);
+    counts[0] = (double)t, counts[1] = (double)a;
+  }
+  return prev;
+}

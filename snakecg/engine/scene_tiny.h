@@ -1,0 +1,20 @@
+/* snakecg's engine: the general scene's solve compiled for tiny problems (scene_tiny.c) and
+ * its switch. Included after engine.h. */
+#ifndef SNAKECG_ENGINE_SCENE_TINY_H
+#define SNAKECG_ENGINE_SCENE_TINY_H
+
+#define SC_TINY_M 6 /* rows (every block one row) */
+#define SC_TINY_N 16 /* coordinates */
+
+/* scene_solve.c's solve_sample for a problem of one-row blocks and at most SC_TINY_M rows on
+ * SC_TINY_N coordinates, where its answer needs none of the general path's machinery: returns
+ * 1 with lam, a, w, state_out and info written, else 0 with nothing written (the caller's
+ * general path answers). Its arguments are solve_sample's. */
+SC_INTERNAL int sc_tiny_solve(sc_int n, sc_int m, sc_int nb, const double *M, const double *f,
+                              const double *A, const double *c, const sc_int *kind,
+                              const sc_int *start, const double *par, const double *from,
+                              double *lam, double *a, double *w, double *state_out,
+                              double *info);
+/* its switch (mode 1 on, 0 off, -1 left) and counts (problems tried, answered) */
+int SNAKECG_EXPORT(core_scene_tiny)(sc_int mode, double *counts);
+#endif
