@@ -49,9 +49,8 @@
 #include "scene_tiny.h"
 
 enum { ST_SOLVED = 0, ST_NOT_CONVERGED = 1, ST_SINGULAR_MASS = 2, ST_BAD_INPUT = 3 }; /* status */
-/* info fields */
 enum { INFO_STATUS = 0, INFO_DEPENDENT, INFO_PRIMAL, INFO_DUAL, INFO_COMPL, INFO_SWEEPS,
-       INFO_PASSES, INFO_RANK_DEFECT, INFO_WIDTH };
+       INFO_PASSES, INFO_RANK_DEFECT, INFO_WIDTH }; /* info fields */
 
 #define GUESS_PASSES 3 /* active-set passes from the held guess (rows <= coordinates) */
 #define TRY_PASSES 6 /* from pieces read before the sweeps converged */
