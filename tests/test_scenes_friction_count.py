@@ -83,19 +83,21 @@ def reference_count(p):
     return len(sols), singular
 
 
-def frictional(seed, count, models=POLYHEDRAL):
+def frictional(seed, count, models=POLYHEDRAL, *, pushes=False):
     """``count`` small scenes with contact friction (pegs or objects touching the links, no
-    object rubbing the ground), each with a random torque direction."""
+    object rubbing the ground), each with a random torque direction; ``pushes``: an object
+    in each, up to 4 contacts, no direction (tests/test_scenes_optimize_friction.py's)."""
     rng = np.random.default_rng(seed)
     out = []
     while len(out) < count:
-        for model0, q, res in small_scenes(rng, 4, models, object_friction=False):
-            if (len(out) >= count or len(res.contacts) > 3
+        for model0, q, res in small_scenes(rng, 4, models, object_friction=False,
+                                           need_object=pushes):
+            if (len(out) >= count or len(res.contacts) > (4 if pushes else 3)
                     or not model0.scene.objects + model0.scene.obstacles):
                 continue
             mu = float(rng.choice([0.2, 0.5, 1.0, 2.0]))
             model = snakecg.load(dataclasses.replace(model0.scene, mu_contact=mu))
-            out.append((model, q, rng.normal(size=model.n_joints)))
+            out.append((model, q, None if pushes else rng.normal(size=model.n_joints)))
     return out
 
 
@@ -168,3 +170,23 @@ def test_the_count_does_not_move_when_the_problem_is_scaled():
                 assert got == count if not singular else abs(got) == count, (got, count)
                 several += count >= 2
     assert several >= 5, several
+
+
+def test_a_strongest_push_of_zero_at_about_zero_torque_counts_the_reference_s_solutions():
+    """``optimize`` reports the forward solve's count at its optimum: where the strongest push
+    is 0 at a torque of ~1e-12 or less, that count is the reference's (one solution there,
+    where rounding between the pieces' solutions was counted as 64)."""
+    seen = 0
+    for model, q, _ in frictional(5, 4, pushes=True):
+        for d in ([1.0, 0.0], [0.0, 1.0], [-1.0, 0.0]):
+            got = model.optimize(q, "strongest_push", direction=d, tau_max=None)
+            if got.status != "optimal" or not np.abs(got.tau).max() < 1e-9:
+                continue
+            count, singular = reference_count(reference_problem(model, q, got.tau))
+            if singular:
+                continue
+            assert abs(got.objective_value) <= 1e-9
+            assert got.uniqueness == ("unique" if count == 1 else "several"), (
+                got.uniqueness, count)
+            seen += 1
+    assert seen >= 2, seen
