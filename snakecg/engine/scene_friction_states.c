@@ -144,10 +144,19 @@ static int piece_feasible(const sc_enum *e) {
 }
 
 /* y = g + Z x: the accelerations in the inertia's metric (a = L^-T y); index of the one in
- * list (count) it equals, or -1. */
+ * list (count) it equals, or -1. Equal within SAME_TOL of the larger of the accelerations
+ * and a floor from the problem's data, never from the answer alone: sqrt(F W), F and W the
+ * forces' and the rows' accelerations' scales (e->scale: the certificate's, as scene_solve.c's
+ * scales() and scene_friction.c's delassus() define them). It is those two scales in the
+ * metric of y: a force dl on row j moves y by Z_j dl, |Z_j| = sqrt(G_jj) <= sqrt(W / F), so
+ * forces within the margins' tolerance of F (piece_margins) move y by at most that tolerance
+ * of sqrt(F W). Without it, where the true accelerations are ~0 (a torque of 1e-16 on a
+ * scene whose wheels' bounds set F) every piece meets its margins within rounding and their
+ * solutions, apart by rounding alone, counted as distinct solutions. Homogeneous of degree 1
+ * in (f, the sets' sizes): the count does not move when both are scaled together. */
 static sc_int same_as(const sc_enum *e, const double *list, sc_int count) {
   sc_int j, i;
-  double big = sc_max_abs(e->g, e->n);
+  double big = fmax(sc_max_abs(e->g, e->n), sqrt(e->scale[0] * e->scale[1]));
   for (i = 0; i < e->n; ++i) {
     double t = e->g[i];
     for (j = 0; j < e->m + e->nt; ++j) t += e->Z[j * e->n + i] * e->x[j];
@@ -166,12 +175,19 @@ static sc_int same_as(const sc_enum *e, const double *list, sc_int count) {
  * solutions fix the accelerations and a point of them meets Coulomb's conditions (in e->x),
  * 0 where it has none (inconsistent, or a one-parameter family none of whose points meets
  * them), -1 where it cannot tell (the accelerations vary on it, or a larger family). By the
- * SVD: the least-norm point x0 and the null space N; on a line x0 + z v the margins are
- * affine in z, so their interval is exact. */
+ * SVD: the least-norm point x0 and the null space N; on a line x0 + z h v the margins are
+ * affine in z, so their interval is exact. The step h is the forces' scale F (data, as the
+ * margins'): a margin's change over it is dimensionless, so the test of a slope that is 0
+ * to rounding reads alike at every scale of the problem (a step of 1 in force units is 1e14 F
+ * at a torque of 1e-16, where rounding read as a slope and a bound 1e8 F away). The point
+ * kept: the one of the interval without the margins' tolerance nearest x0 (the family's
+ * accelerations are fixed only to rounding, so not far along it), else the tolerance
+ * interval's middle. */
 static int singular_piece(sc_enum *e) {
   const sc_int mt = e->m + e->nt, n = e->n;
   double *U = e->S, *V = e->K, *sv = e->qw, *rhs = e->qw + mt, *v = e->qw + 2 * mt, smax = 0.0,
-         res = 0.0, lo = -INFINITY, hi = INFINITY;
+         res = 0.0, lo = -INFINITY, hi = INFINITY, lo0 = -INFINITY, hi0 = INFINITY,
+         h = e->scale[0];
   sc_int i, j, null = 0, q;
   for (i = 0; i < mt; ++i)
     for (j = 0; j < mt; ++j) U[j * mt + i] = e->Kc[i * mt + j]; /* columns of K */
@@ -196,23 +212,26 @@ static int singular_piece(sc_enum *e) {
   }
   if (piece_feasible(e)) return 1;
   if (null != 1) return -1;
-  q = piece_margins(e, e->x, e->c0); /* the margins along the line x0 + z v (v: the last) */
-  for (i = 0; i < mt; ++i) rhs[i] = e->x[i] + v[i];
+  q = piece_margins(e, e->x, e->c0); /* the margins along x0 + z h v (v: the last) */
+  for (i = 0; i < mt; ++i) rhs[i] = e->x[i] + h * v[i];
   piece_margins(e, rhs, e->c1);
   for (i = 0; i < q; ++i) {
-    double s = e->c1[i] - e->c0[i];
-    if (fabs(s) <= 1e-15 * (1 + fabs(e->c0[i]))) {
-      if (e->c0[i] < 0) return 0;
+    const double s = e->c1[i] - e->c0[i], c = e->c0[i], c0 = c - ENUM_TOL; /* (c0: without
+      the tolerance) */
+    if (fabs(s) <= 1e-15 * (1 + fabs(c))) {
+      if (c < 0) return 0;
+      if (c0 < 0) lo0 = INFINITY;
     } else if (s > 0) {
-      lo = fmax(lo, -e->c0[i] / s);
+      lo = fmax(lo, -c / s), lo0 = fmax(lo0, -c0 / s);
     } else {
-      hi = fmin(hi, -e->c0[i] / s);
+      hi = fmin(hi, -c / s), hi0 = fmin(hi0, -c0 / s);
     }
   }
   if (!(lo <= hi)) return 0;
   {
-    double z = isfinite(lo) && isfinite(hi) ? 0.5 * (lo + hi) : isfinite(lo) ? lo : hi;
-    for (i = 0; i < mt; ++i) e->x[i] += z * v[i];
+    double z = lo0 <= hi0 ? fmin(fmax(0.0, lo0), hi0) : isfinite(lo) && isfinite(hi) ?
+               0.5 * (lo + hi) : fmin(fmax(0.0, lo), hi);
+    for (i = 0; i < mt; ++i) e->x[i] += z * h * v[i];
   }
   return 1;
 }
