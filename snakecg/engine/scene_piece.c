@@ -14,8 +14,8 @@
  *   w_S = wt + S (lam_S - lam_S0),   S = G_SS + G_SH X = G_SS - Y^T D^-1 Y  (Y = L^-1 P^T G_HS),
  * the gradient of the dual with the held forces eliminated (Hessian S; X itself is never
  * formed). Newton on the angles alone: Jacobian T^T S T + diag(max(0, -lam_k . w_k)) (the
- * reduced Hessian on the sets' boundaries, dT/dt = -lam), a few unknowns, factored by
- * Cholesky (by diagonal pivoting where nearly singular), each direction turned by atan of its
+ * reduced Hessian on the sets' boundaries, dT/dt = -lam), a few unknowns, factored as
+ * L D L^T (by diagonal pivoting where nearly singular), each direction turned by atan of its
  * step, the step halved until the reduced dual does not rise. Where rows nearly dependent
  * leave a residual that does not fall, they are kept (pivots down to 1e-15) and the piece
  * solved again. An active-set pass may stop the Newton early where a block certainly breaks
@@ -30,9 +30,9 @@
  * (snakecg.solver.PIVOT_TOL): nearly dependent rows are statically indeterminate to double
  * precision, their forces are taken minimum-norm rather than huge and cancelling */
 #define DEP_TOL 1e-10
-/* the angles' Newton matrix factored by Cholesky where its pivots stay above this ratio to its
- * largest diagonal entry (far from DEP_TOL: the same rank as the pivoted factor's) */
-#define CHOL_TOL 1e-8
+/* the angles' Newton matrix factored without pivoting where its pivots stay above this ratio to
+ * its largest diagonal entry (far from DEP_TOL: the same rank as the pivoted factor's) */
+#define ANGLE_TOL 1e-8
 /* a pass's Newton stops early where a block breaks the KKT conditions by more than EARLY_TOL
  * (relative) and by EARLY_MARGIN times its change over the last full step, the residual having
  * fallen by EARLY_RATE at least over it (so the rest of the way moves it less) */
@@ -107,6 +107,24 @@ static double breach(const sc_problem *p, sc_int k, const double *l, const doubl
       return (w[0] * nx + w[1] * ny) / (sqrt(nx * nx + ny * ny) * p->wscale);
     default: return -1.0;
   }
+}
+
+/* The angles' Newton matrix J (ns x ns, its lower triangle by rows; the upper one filled)
+ * = L D L^T without pivoting (linalg.h's sc_ldl_factor: one division per pivot, none in the
+ * solve; L in Jc, d and 1/d in dd) where every pivot is above ANGLE_TOL of J's largest
+ * diagonal entry: 1, else 0. work: ns doubles. */
+static int angles_ldl(sc_int ns, double *J, double *Jc, double *dd, double *work) {
+  sc_int s, t;
+  double big = 0.0;
+  for (s = 0; s < ns; ++s) {
+    for (t = 0; t < s; ++t) J[t * ns + s] = J[s * ns + t]; /* (by columns: the upper) */
+    if (J[s * ns + s] > big) big = J[s * ns + s];
+  }
+  if (!(big > 0.0) || !isfinite(big)) return 0;
+  sc_ldl_factor(ns, J, ns, NULL, Jc, ns, dd, dd + ns, NULL, 0.0, work);
+  for (s = 0; s < ns; ++s)
+    if (!(dd[s] > ANGLE_TOL * big)) return 0;
+  return 1;
 }
 
 /* The piece's equations from the current lam (pivots above rc kept); fn_out: their largest
@@ -262,11 +280,10 @@ static sc_int piece(sc_problem *p, double rc, double *work, sc_int *iwork, doubl
       }
       F[s] = -F[s];
     }
-    for (s = 0; s < ns * ns; ++s) Jc[s] = J[s]; /* (Cholesky where J is well inside the
-      positive definite cone; the pivoted LDL^T, which drops dependent angles, elsewhere) */
-    if (sc_cholesky(ns, Jc, ns, CHOL_TOL)) {
+    if (angles_ldl(ns, J, Jc, sc, sc2)) { /* (J well inside the positive definite cone; the
+      pivoted LDL^T, which drops dependent angles, elsewhere) */
       for (s = 0; s < ns; ++s) dx[s] = F[s];
-      sc_cholesky_solve(ns, Jc, ns, dx);
+      sc_ldl_solve(ns, Jc, ns, sc + ns, dx);
       rj = ns;
     } else
       rj = sc_psd_solve(ns, J, ns, F, rc, dx, sc2, pj);

@@ -56,6 +56,8 @@ enum { INFO_STATUS = 0, INFO_DEPENDENT, INFO_PRIMAL, INFO_DUAL, INFO_COMPL, INFO
 #define TRY_PASSES 6 /* from pieces read before the sweeps converged */
 #define CHUNK 5 /* sweeps before the first reading of the pieces */
 #define FROM_PASSES 4 /* from the caller's start (the last time step's pieces) */
+#define READ_SLIDE 0.15 /* a 2-D block read as sliding within this of its set's boundary
+  (relative) while the sweeps go on: a sliding block's force is still on its way out */
 
 /* Gauss-Seidel sweeps until the largest change is below rel * scale; returns the sweeps.
  * w = G lam + b is kept along (one column of G per changed row), and recomputed after. */
@@ -96,8 +98,8 @@ static sc_int sweeps(sc_problem *p, sc_int max_sweeps, double rel) {
   return s < max_sweeps ? s + 1 : max_sweeps;
 }
 
-/* Pieces read from the current lam (rel: relative tolerance on the set's boundary). */
-static void read_states(sc_problem *p, double rel) {
+/* Pieces read from the current lam (rel, rel2: relative tolerance on a 1-D, 2-D boundary). */
+static void read_states(sc_problem *p, double rel, double rel2) {
   sc_int k;
   for (k = 0; k < p->nb; ++k) {
     sc_int r = p->start[k];
@@ -118,7 +120,7 @@ static void read_states(sc_problem *p, double rel) {
         }
         sc_block_P(p, k, l, P);
         phi = P[0] * l[0] * l[0] + P[1] * l[1] * l[1];
-        p->state[k] = phi < (1 - rel) * (1 - rel) ? S_HELD : S_SLIDE;
+        p->state[k] = phi < (1 - rel2) * (1 - rel2) ? S_HELD : S_SLIDE;
         if (p->state[k] == S_SLIDE) {
           double g = -(p->w[r] * P[0] * l[0] + p->w[r + 1] * P[1] * l[1]) /
                      (P[0] * P[0] * l[0] * l[0] + P[1] * P[1] * l[1] * l[1]);
@@ -409,7 +411,7 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
     int same = 1;
     sc_int s = sweeps(&p, chunk, 1e-12);
     total_sweeps += s;
-    read_states(&p, 1e-6);
+    read_states(&p, 1e-6, s < chunk ? 1e-6 : READ_SLIDE); /* (converged: as they are) */
     for (k = 0; k < nb; ++k)
       if (state[k] != prev[k]) same = 0;
     if (same && s == chunk) continue;
