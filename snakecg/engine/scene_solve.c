@@ -56,8 +56,7 @@ enum { INFO_STATUS = 0, INFO_DEPENDENT, INFO_PRIMAL, INFO_DUAL, INFO_COMPL, INFO
 #define TRY_PASSES 6 /* from pieces read before the sweeps converged */
 #define CHUNK 5 /* sweeps before the first reading of the pieces */
 #define FROM_PASSES 4 /* from the caller's start (the last time step's pieces) */
-#define READ_SLIDE 0.15 /* a 2-D block read as sliding within this of its set's boundary
-  (relative) while the sweeps go on: a sliding block's force is still on its way out */
+#define READ_SLIDE 0.15 /* 2-D block read sliding within this of its boundary mid-sweeps */
 
 /* Gauss-Seidel sweeps until the largest change is below rel * scale; returns the sweeps.
  * w = G lam + b is kept along (one column of G per changed row), and recomputed after. */
@@ -591,11 +590,10 @@ int SNAKECG_EXPORT(core_scene_solve_s)(sc_int n, sc_int m, sc_int nb, const doub
 }
 
 /* core_scene_solve_b with no offsets (w = A a): the solve at rest. */
-int SNAKECG_EXPORT(core_scene_solve)(sc_int ns, sc_int n, sc_int mmax, sc_int nbmax, const sc_int *m,
-                           const sc_int *nb, const double *M, const double *f, const double *A,
-                           const sc_int *kind, const sc_int *start, const double *par,
-                           sc_int max_sweeps, double *lam, double *a, double *w,
-                           double *state, double *info) {
+int SNAKECG_EXPORT(core_scene_solve)(sc_int ns, sc_int n, sc_int mmax, sc_int nbmax,
+    const sc_int *m, const sc_int *nb, const double *M, const double *f, const double *A,
+    const sc_int *kind, const sc_int *start, const double *par, sc_int max_sweeps,
+    double *lam, double *a, double *w, double *state, double *info) {
   return SNAKECG_EXPORT(core_scene_solve_b)(ns, n, mmax, nbmax, m, nb, M, f, A, NULL, kind,
                                             start, par, max_sweeps, lam, a, w, state, info);
 }
