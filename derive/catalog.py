@@ -14,6 +14,7 @@ __all__ = ["LINK_FUNCTIONS", "COUPLED_FUNCTIONS", "EXTREMES_MAX_JOINTS", "functi
 #: Per-link closed forms derived with SymPy (:mod:`snakecg_derive.model`).
 LINK_FUNCTIONS = ("derived_parameters", "link_poses", "link_jacobians",
                   "link_bias_accelerations", "mass_matrix", "bias_forces", "scene_kinematics",
+                  "bias_forces_cs",
                   "contact_row_local", "wheel_row_local")
 #: The coupled system of eqs. (8)-(31) (:mod:`snakecg_derive.coupled`).
 COUPLED_FUNCTIONS = ("constrained_dynamics", "interaction_maps", "metric_forms", "place_object",

@@ -62,6 +62,25 @@ def _fn(name, doc, inputs, outputs, assignments=(), equation="") -> FunctionSpec
     return f
 
 
+class _ChainFromSines(StructuredChain):
+    """A chain whose links' cosines and sines are inputs (``cs``, 2 per link) instead of
+    rotation products of the coordinates' own (the same values where ``cs`` comes from
+    ``scene_kinematics`` at the same ``q``). The inputs are named as the chain names them
+    (``cq0``, ``sq0``, then ``cphi2``, ``sphi2``, ...): SymPy orders a sum's terms by name, so
+    the expressions, and their rounding, are those of the chain's own."""
+
+    def __init__(self, s: SnakeSymbols):
+        super().__init__(s)
+        names = [("cq0", "sq0")] + [(f"cphi{i}", f"sphi{i}") for i in range(2, s.n_links + 1)]
+        self.cs = [sp.Symbol(w, real=True) for pair in names for w in pair]
+
+    def cos_phi(self, i: int) -> sp.Symbol:
+        return self.cs[2 * (i - 1)]
+
+    def sin_phi(self, i: int) -> sp.Symbol:
+        return self.cs[2 * (i - 1) + 1]
+
+
 def derive_model(n_joints: int, *, max_joints: int = MAX_SYMBOLIC_JOINTS) -> ModelDerivation:
     """Derive every generated function for a snake with ``n_joints`` joints.
 
@@ -157,15 +176,30 @@ def derive_model(n_joints: int, *, max_joints: int = MAX_SYMBOLIC_JOINTS) -> Mod
             [("h", h, "n_s x 1")], ch.assignments, equation="(4)")
     )
     # a general scene's per-sample kinematics in one function: poses, Jacobians and M_s (the
-    # form chosen above) from one chain, so that the joints' sines and cosines are taken once
+    # form chosen above) from one chain, so that the joints' sines and cosines are taken once;
+    # with the links' cosines and sines, which the scene's placement and its next step's bias
+    # forces (below) read instead of taking them again
     ch = StructuredChain(s)
     poses, J = ch.link_poses(), ch.link_jacobians()
     M = forms[form](ch)
+    cs = sp.Matrix([[ch.cos_phi(i), ch.sin_phi(i)] for i in range(1, nl + 1)]).T
     functions.append(
         _fn("scene_kinematics", "Link poses, Jacobians and M_s at once (one set of sines).",
             [q_in, K_in],
             [("poses", poses, "3 x n_l, as link_poses"), ("J", J, "3 n_l x n_s, as link_jacobians"),
-             ("M", M, "n_s x n_s, as mass_matrix")], ch.assignments, equation="(3), (4)")
+             ("M", M, "n_s x n_s, as mass_matrix"),
+             ("cs", cs, "2 x n_l, column i = (cos phi_i, sin phi_i)")], ch.assignments,
+            equation="(3), (4)")
+    )
+    # h_s from the links' cosines and sines at q (scene_kinematics' cs): no trigonometric call
+    ch = _ChainFromSines(s)
+    h = ch.bias_forces()
+    functions.append(
+        _fn("bias_forces_cs", "Coriolis and centripetal terms h_s of eq. (4), from the links' "
+            "cosines and sines.",
+            [("cs", ch.cs, "2 x n_l, column i = (cos phi_i, sin phi_i), scene_kinematics' cs"),
+             q_in, v_in, K_in],
+            [("h", h, "n_s x 1")], ch.assignments, equation="(4)")
     )
 
     # constraint rows (link level) ----------------------------------------------------------

@@ -47,3 +47,32 @@ def test_scene_kinematics_against_numpy(joints, rng, random_robot):
         assert np.array_equal(J, model.link_jacobians(q))
         np.testing.assert_allclose(out["M"][k], model.mass_matrix(q), rtol=0,
                                    atol=4e-16 * np.abs(M).max())
+
+
+@pytest.mark.parametrize("joints", [1, 3, 5])
+def test_scene_sines_and_bias_forces_from_them(joints, rng, random_robot):
+    """``scene_kinematics``' links' cosines and sines (what the scene's placement reads)
+    against NumPy's of the reference headings; ``bias_forces_cs`` from them (what the time
+    step calls) against the dense NumPy reference's h_s (tests/reference.py: J_i by complex
+    step, Jdot_i v by central differences) and against ``bias_forces`` from q bit for bit."""
+    from reference import Reference
+
+    robot = random_robot(joints)
+    scene = snakecg.Scene(robot)
+    model, ref = snakecg.load(scene), Reference(scene)
+    ns, nl = robot.n_coordinates, robot.n_links
+    Q = np.c_[rng.uniform(-1, 1, (6, 2)), rng.uniform(-np.pi, np.pi, (6, ns - 2))]
+    V = rng.uniform(-2, 2, (6, ns))
+    cs = model._named("scene_kinematics", len(Q), q=Q, K=model.parameters)["cs"]
+    # (the engine's memory: column i = link i's (cos, sin), column-major)
+    flat = cs.transpose(0, 2, 1).reshape(len(Q), 2 * nl)
+    h = model._named("bias_forces_cs", len(Q), cs=flat, q=Q, v=V, K=model.parameters)["h"]
+    for k, (q, v) in enumerate(zip(Q, V)):
+        phi = _poses(robot, q)[:, 2]
+        np.testing.assert_allclose(cs[k], np.stack([np.cos(phi), np.sin(phi)]), rtol=0,
+                                   atol=4e-15)
+        href = ref.bias_forces(q, v)
+        scale = np.abs(href).max()
+        np.testing.assert_allclose(h[k].ravel(), href, rtol=0, atol=1e-7 * scale)
+        # the same sums in the same order as from q (the inputs named as the chain's own)
+        assert np.array_equal(h[k].ravel(), model.bias_forces(q, v))

@@ -562,7 +562,7 @@ typedef struct { double a[2], b[2], n[2]; } sc_touch;
 SC_INTERNAL void sc_shape_centroid(const sc_shape *s, double *c);
 SC_INTERNAL double sc_shape_closest(const sc_shape *A, const sc_shape *B, double scale,
                                     double merge, double beyond, sc_touch *out, int *count);
-SC_INTERNAL void sc_scene_place(const double *pk, const double *P, const double *qo, int all,
+SC_INTERNAL void sc_scene_place(const double *pk, const double *P, const double *qo, int how,
                                 double *cs, sc_shape *shape, double *pose, double *centre,
                                 double *reach);
 /* A state's rows (scene_rows.c's, for scene_step.c): RO_*, poses (3 n_o), contacts (CR_W) */

@@ -44,10 +44,14 @@ FUNCTIONS = {
 #: compiles no scene_rows.c).
 SCENE_FUNCTIONS = {
     "link_poses": ("LP", ("q", "K"), ("poses",)),
-    # scene_step.c: a time step's generalized force
+    # scene_step.c: a time step's generalized force (at a state whose rows it has not: the
+    # run's first step, or a state set by the caller), and the same from the links' cosines
+    # and sines that the rows at the state took (scene_rows.h)
     "bias_forces": ("BF", ("q", "v", "K"), ("h",)),
-    # scene_rows.c: poses, Jacobians and M_s in one call (the joints' sines taken once)
-    "scene_kinematics": ("SK", ("q", "K"), ("poses", "J", "M")),
+    "bias_forces_cs": ("BC", ("cs", "q", "v", "K"), ("h",)),
+    # scene_rows.c: poses, Jacobians, M_s and the links' cosines and sines in one call (the
+    # joints' sines taken once)
+    "scene_kinematics": ("SK", ("q", "K"), ("poses", "J", "M", "cs")),
 }
 
 _IDENT = re.compile(r"[A-Za-z_][A-Za-z0-9_]*\Z")

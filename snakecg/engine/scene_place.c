@@ -20,23 +20,29 @@ static void box_corners(double x, double y, double th, double sx, double sy, sc_
 }
 
 /* Every body's shape of the scene packed in pk (links, objects, obstacles) at the link poses
- * P (n_l x 3), with the links' cos and sin of their angles into cs (2 each): the objects at
- * their poses qo (3 n_o; a simulation's state) or, qo null, placed by the scene (a pose, or
- * touching a link on its side at an offset); their poses into pose, the broad phase's
- * bounding circles (a wall: none) into centre (2 each) and reach. With `all` 0, the parts
- * that do not move (the obstacles' shapes and circles, every reach) are kept from an earlier
- * call on the same pk and buffers. */
-SC_INTERNAL void sc_scene_place(const double *pk, const double *P, const double *qo, int all,
+ * P (n_l x 3), with the links' cos and sin of their angles in cs (2 each; taken here into cs
+ * unless how & 2: given, the generated scene_kinematics' at the same configuration, its
+ * rotation products, equal to them within rounding): the objects at their poses qo (3 n_o; a
+ * simulation's state) or, qo null, placed by the scene (a pose, or touching a link on its
+ * side at an offset); their poses into pose, the broad phase's bounding circles (a wall:
+ * none) into centre (2 each) and reach. Without how & 1 (all), the parts that do not move
+ * (the obstacles' shapes and circles, every reach) are kept from an earlier call on the same
+ * pk and buffers. */
+SC_INTERNAL void sc_scene_place(const double *pk, const double *P, const double *qo, int how,
                                 double *cs, sc_shape *shape, double *pose, double *centre,
                                 double *reach) {
   const double *lk = pk + (sc_int)pk[SP_LINKS], r = pk[SP_RADIUS];
   const sc_int no = (sc_int)pk[SP_NO], nob = (sc_int)pk[SP_NOB], nl = SNAKECG_NL;
+  const int all = how & 1;
   sc_int i, j, k;
   for (i = 0; i < nl; ++i) {
-    double c = cos(P[3 * i + 2]), s = sin(P[3 * i + 2]), *e0 = shape[i].p[0],
-           *e1 = shape[i].p[1], L = lk[LINK_W * i + 1];
-    cs[2 * i] = c;
-    cs[2 * i + 1] = s;
+    double c, s, *e0 = shape[i].p[0], *e1 = shape[i].p[1], L = lk[LINK_W * i + 1];
+    if (!(how & 2)) {
+      cs[2 * i] = cos(P[3 * i + 2]);
+      cs[2 * i + 1] = sin(P[3 * i + 2]);
+    }
+    c = cs[2 * i];
+    s = cs[2 * i + 1];
     e0[0] = P[3 * i] - lk[LINK_W * i] * c;
     e0[1] = P[3 * i + 1] - lk[LINK_W * i] * s;
     e1[0] = e0[0] + L * c;
@@ -122,7 +128,7 @@ int SNAKECG_EXPORT(core_scene_place)(const double *pk, sc_int n, const double *P
   sc_int i;
   const int ok = shape && d;
   if (ok)
-    for (i = 0; i < n; ++i) /* the parts that do not move (all = 0) are not read */
+    for (i = 0; i < n; ++i) /* the parts that do not move (how = 0) are not read */
       sc_scene_place(pk, P + 3 * SNAKECG_NL * i, 0, 0, d, shape, pose + 3 * no * i,
                      d + 2 * SNAKECG_NL, d + 2 * SNAKECG_NL + 2 * nb);
   free(shape);

@@ -2,8 +2,8 @@
  * batch: contacts found from geometry, the constraint rows, the exact solve, the metrics.
  *
  * Per sample (eqs. 7-30 of Reyes & Ma 2017, on any set of constraints):
- *   1. the link poses, the link Jacobians J_i (twist of link i's COM = J_i qdot, eq. 3) and
- *      M_s (eq. 4): the generated functions `link_poses`, `link_jacobians`, `mass_matrix`;
+ *   1. the link poses, the link Jacobians J_i (twist of link i's COM = J_i qdot, eq. 3), M_s
+ *      (eq. 4) and the links' cos and sin: the generated function `scene_kinematics`;
  *   2. the objects placed (a pose, or touching a link on its side at an offset), every body's
  *      shape (scene_geometry.c); a broad phase of bounding circles, then the closest points of
  *      every pair that may touch (links with objects and obstacles, links that are not
@@ -29,6 +29,7 @@
  */
 #include "snakecg_layout.h"
 #include "engine.h"
+#include "scene_rows.h"
 
 /* the packed scene (SP_*, LINK_W, OBJ_W, OBS_W): engine.h */
 enum { GB_W = 8 };    /* type (GB_*), body, wheel offset, par (3), block kind (K_*) */
@@ -51,7 +52,7 @@ enum { BODY_LINK = 0, BODY_OBJECT = 1, BODY_OBSTACLE = 2 };
 typedef struct {
   const double *pk;
   sc_int no, nob, ng, mg, n, ccap, mcap, nbody;
-  int placed; /* the bodies' parts that do not move are placed (sc_scene_place's `all`) */
+  int placed; /* the bodies' parts that do not move are placed (sc_scene_place's how & 1) */
   double tol; /* the contact tolerance (m) */
   sc_work_t ws;
   double *base, *A, *M, *f, *par, *lam, *w, *a, *st, *P, *J, *Ms, *LU, *afree, *D, *cs;
@@ -65,9 +66,9 @@ typedef struct {
 
 /* The bodies placed at the link poses P (the objects at qo, or by the scene): the parts that
  * do not move once per call. */
-static void place(sc_scene_work *sw, const double *P, const double *qo) {
-  sc_scene_place(sw->pk, P, qo, !sw->placed, sw->cs, sw->shape, sw->pose, sw->centre,
-                 sw->reach);
+static void place(sc_scene_work *sw, const double *P, const double *qo, int given) {
+  sc_scene_place(sw->pk, P, qo, (sw->placed ? 0 : 1) | 2 * given, sw->cs, sw->shape, sw->pose,
+                 sw->centre, sw->reach);
   sw->placed = 1;
 }
 
@@ -235,23 +236,20 @@ static void metrics(sc_scene_work *sw, const double *a, double *out) {
   }
 }
 
-/* The link poses (sw->P), Jacobians (sw->J) and, where mass, M_s (sw->Ms) at q: the
- * generated functions' status (0 on success). */
+/* The link poses (sw->P), Jacobians (sw->J) and, where mass, M_s (sw->Ms) and the links' cos
+ * and sin (sw->cs, place's `given`) at q: the generated functions' status (0 on success). */
 static int kinematics(sc_scene_work *sw, const double *q, int mass) {
   sc_work_t *ws = &sw->ws;
   const double *K = sw->pk + (sc_int)sw->pk[SP_K];
-  if (mass) { /* the three in one generated function: the joints' sines taken once */
+  if (mass) { /* the four in one generated function: the joints' sines taken once */
     ws->arg[SK_IN_q] = q, ws->arg[SK_IN_K] = K;
-    ws->res[SK_OUT_poses] = sw->P;
-    ws->res[SK_OUT_J] = sw->J;
-    ws->res[SK_OUT_M] = sw->Ms;
+    ws->res[SK_OUT_poses] = sw->P, ws->res[SK_OUT_J] = sw->J;
+    ws->res[SK_OUT_M] = sw->Ms, ws->res[SK_OUT_cs] = sw->cs;
     return SNAKECG_SK(ws->arg, ws->res, ws->iw, ws->w, 0) != 0;
   }
-  ws->arg[LP_IN_q] = q, ws->arg[LP_IN_K] = K;
-  ws->res[LP_OUT_poses] = sw->P;
+  ws->arg[LP_IN_q] = q, ws->arg[LP_IN_K] = K, ws->res[LP_OUT_poses] = sw->P;
   if (SNAKECG_LP(ws->arg, ws->res, ws->iw, ws->w, 0)) return 1;
-  ws->arg[LJ_IN_q] = q, ws->arg[LJ_IN_K] = K;
-  ws->res[LJ_OUT_J] = sw->J;
+  ws->arg[LJ_IN_q] = q, ws->arg[LJ_IN_K] = K, ws->res[LJ_OUT_J] = sw->J;
   return SNAKECG_LJ(ws->arg, ws->res, ws->iw, ws->w, 0) != 0;
 }
 
@@ -282,7 +280,7 @@ static void scene_sample(sc_scene_work *sw, const double *q, const double *tau,
   sw->pnb = -1; /* (until this sample is solved) */
   memset(out, 0, sizeof(double) * (size_t)width); /* the records: as contact_rows writes them */
   if (kinematics(sw, q, 1)) goto failed;
-  place(sw, P, 0);
+  place(sw, P, 0, 1);
   for (o = 0; o < sw->no; ++o)
     for (j = 0; j < 3; ++j) out[SO_QDD + ns + 4 * sw->no + 3 * o + j] = sw->pose[3 * o + j];
   nc = contact_rows(sw, P, rec, out + SO_OVERLAP, sw->ccap);
@@ -538,7 +536,7 @@ SC_INTERNAL int sc_scene_state_rows(const double *pk, const double *q, const dou
   for (i = 0; i < RO_POSE + 3 * sw->no; ++i) out[i] = 0.0;
   code = kinematics(sw, q, M != 0) ? SS_FAILED : 0;
   if (!code) {
-    place(sw, sw->P, qo);
+    place(sw, sw->P, qo, M != 0);
     for (i = 0; i < 3 * sw->no; ++i) out[RO_POSE + i] = sw->pose[i];
     nc = contact_rows(sw, sw->P, out + RO_POSE + 3 * sw->no, out + RO_OVERLAP, sw->ccap);
     code = nc < 0 ? -nc : 0;
@@ -556,6 +554,9 @@ SC_INTERNAL int sc_scene_state_rows(const double *pk, const double *q, const dou
   return (int)code;
 }
 
+SC_INTERNAL const double *sc_scene_rows_cs(const void *keep) { /* scene_rows.h */
+  return ((const sc_scene_work *)keep)->cs;
+}
 /* The signed distance of every pair of bodies that can touch (the pairs of contact_rows)
  * whose bounding circles are within c->margin at one state, or of the pair (pair_a, pair_b)
  * alone (body indices: links, objects, obstacles), overlapping or not: records (body a kind,
@@ -571,7 +572,7 @@ int SNAKECG_EXPORT(core_scene_gaps)(const sc_scene_state *c) {
     work_free(&sw);
     return -4;
   }
-  place(&sw, sw.P, c->qo);
+  place(&sw, sw.P, c->qo, 0);
   for (ia = 0; ia < SNAKECG_NL + sw.no; ++ia)
     for (ib = ia + 1; ib < sw.nbody; ++ib) {
       const double *ca = sw.centre + 2 * ia, *cb = sw.centre + 2 * ib;

@@ -4,7 +4,8 @@
  *
  * From (x, V) (x = (q, q_obj), V = (v, v_obj)) and the rows found at x (scene_rows.c's
  * sc_scene_state_rows, kept in the caller's buffers from the step before), a step of length h:
- *   1. the bias forces h_s(q, v) (the generated `bias_forces`), the generalized force
+ *   1. the bias forces h_s(q, v) (the generated `bias_forces_cs`, from the links' cos and sin
+ *      that the rows at x took, scene_rows.h; else `bias_forces`), the generalized force
  *      fgen = B tau - h_s + E f_obj and f = M V + h fgen;
  *   2. the exact solve (scene_solve.c's core_scene_solve_s; with contact friction
  *      scene_friction.c's on the tangent rows too) with the friction sets' sizes
@@ -26,6 +27,7 @@
  */
 #include "snakecg_layout.h"
 #include "engine.h"
+#include "scene_rows.h"
 
 /* the run's accumulators and the last step's figures (ST_*, snakecg/scenes/run_record.py's),
  * a step's status (STEP_*, or SS_OVERLAP, SS_MORE, SS_FAILED: the rows at the end refused):
@@ -210,9 +212,15 @@ static void figures(sc_scene_step *c, sc_int n, double *mv) {
 }
 
 /* A run's scratch of its steps, kept from one to the next (sc_scene_step_kept): the bias
- * forces' work, the step's doubles (their last 3 n: figures' M V and its x and V), the rows'
- * scratch (scene_rows.c's). */
+ * forces' work, the step's doubles (then 3 n: figures' M V and its x and V; n_s + 2 n_l: the
+ * last rows' q and their links' cos and sin), the rows' scratch (scene_rows.c's). */
 typedef struct { sc_work_t ws; double *d; void *rows; } step_keep;
+
+/* The links' cos and sin of the last rows (at x, status 0) with their q, into qcs. */
+static void rows_cs(const step_keep *k, const double *x, double *qcs) {
+  memcpy(qcs, x, sizeof(double) * SNAKECG_NS);
+  memcpy(qcs + SNAKECG_NS, sc_scene_rows_cs(k->rows), sizeof(double) * 2 * SNAKECG_NL);
+}
 
 static void keep_free(step_keep *k) {
   if (!k) return;
@@ -236,9 +244,11 @@ int SNAKECG_EXPORT(core_scene_step)(sc_scene_step *c) {
 SC_INTERNAL int sc_scene_step_kept(sc_scene_step *c, void **keep) {
   const double *pk = c ? c->pk : 0;
   const sc_int no = c ? (sc_int)pk[SP_NO] : 0, n = SNAKECG_NS + 3 * no, mc = c ? c->mcap : 0;
-  const sc_work_fn fns[] = {SNAKECG_BF_WORK};
+  const sc_work_fn fns[] = {SNAKECG_BF_WORK, SNAKECG_BC_WORK};
+  const sc_int nd = 7 * n + SNAKECG_NS + 9 * mc + 8; /* (then the rows' q and cs) */
   step_keep *kp = (step_keep *)*keep;
-  double *d, *f, *fgen, *hb, *xp, *scratch, *mv;
+  double *d, *f, *fgen, *hb, *xp, *scratch, *mv, *qcs;
+  int bc;
   sc_int i, j, k, m1, nc1;
   int code;
   if (!c) {
@@ -249,11 +259,13 @@ SC_INTERNAL int sc_scene_step_kept(sc_scene_step *c, void **keep) {
   if (!kp) { /* (freed by the caller, whole or in part) */
     if (!(*keep = kp = (step_keep *)calloc(1, sizeof(step_keep)))) return -1;
     if (sc_work_alloc(&kp->ws, fns, SC_COUNT(fns))) return -1;
-    kp->d = (double *)malloc(sizeof(double) * (size_t)(7 * n + SNAKECG_NS + 9 * mc + 8));
+    kp->d = (double *)malloc(sizeof(double) * (size_t)(nd + SNAKECG_NS + 2 * SNAKECG_NL));
     if (!kp->d) return -1;
-    for (i = 0; i < n; ++i) kp->d[7 * n + SNAKECG_NS + 9 * mc + 8 - 2 * n + i] = NAN;
+    for (i = 0; i < n; ++i) kp->d[nd - 2 * n + i] = NAN;
+    for (i = 0; i < SNAKECG_NS; ++i) kp->d[nd + i] = NAN;
   }
-  mv = kp->d + 4 * n + SNAKECG_NS + 9 * mc + 8; /* (M V, x, V: none yet) */
+  mv = kp->d + nd - 3 * n; /* (M V, x, V: none yet) */
+  qcs = kp->d + nd; /* (the rows' q, cs: none yet) */
   c->acc[ST_IMPACT] = 0.0;
   c->acc[ST_LOSS] = 0.0;
   if (!(c->h > 0)) {
@@ -263,7 +275,7 @@ SC_INTERNAL int sc_scene_step_kept(sc_scene_step *c, void **keep) {
                                c->A, c->par, c->kind, c->start, &kp->rows);
     if (code < 0) return code;
     c->status = code;
-    if (code == 0) figures(c, n, mv);
+    if (code == 0) figures(c, n, mv), rows_cs(kp, c->x, qcs);
     return 0;
   }
   for (i = 0; i < n; ++i)
@@ -274,11 +286,15 @@ SC_INTERNAL int sc_scene_step_kept(sc_scene_step *c, void **keep) {
   xp = fgen + n;
   hb = xp + n;
   scratch = hb + SNAKECG_NS; /* 9 mcap: the solve's sizes, offsets, w, states, start */
-  kp->ws.arg[BF_IN_q] = c->x; /* 1. */
-  kp->ws.arg[BF_IN_v] = c->V;
-  kp->ws.arg[BF_IN_K] = pk + (sc_int)pk[SP_K];
-  kp->ws.res[BF_OUT_h] = hb;
-  if (SNAKECG_BF(kp->ws.arg, kp->ws.res, kp->ws.iw, kp->ws.w, 0)) {
+  /* 1.: from the links' cos and sin where the rows at x took them (the same sums, rounding) */
+  bc = memcmp(qcs, c->x, sizeof(double) * SNAKECG_NS) == 0;
+  kp->ws.arg[bc ? BC_IN_q : BF_IN_q] = c->x;
+  kp->ws.arg[bc ? BC_IN_v : BF_IN_v] = c->V;
+  kp->ws.arg[bc ? BC_IN_K : BF_IN_K] = pk + (sc_int)pk[SP_K];
+  if (bc) kp->ws.arg[BC_IN_cs] = qcs + SNAKECG_NS;
+  kp->ws.res[bc ? BC_OUT_h : BF_OUT_h] = hb;
+  if (bc ? SNAKECG_BC(kp->ws.arg, kp->ws.res, kp->ws.iw, kp->ws.w, 0)
+         : SNAKECG_BF(kp->ws.arg, kp->ws.res, kp->ws.iw, kp->ws.w, 0)) {
     c->status = SS_FAILED;
     return 0;
   }
@@ -321,6 +337,7 @@ SC_INTERNAL int sc_scene_step_kept(sc_scene_step *c, void **keep) {
     }
     if (c->from) keep_pieces(c, no, scratch + 5 * mc, scratch + 6 * mc, impact);
     memcpy(c->x, xp, sizeof(double) * (size_t)n); /* 6. */
+    rows_cs(kp, c->x, qcs);
     memcpy(c->V, c->Vp, sizeof(double) * (size_t)n);
     memcpy(c->out, c->out1, sizeof(double) * (size_t)(RO_POSE + 3 * no + CR_W * nc1));
     memcpy(c->M, c->M1, sizeof(double) * (size_t)(n * n));

@@ -1,7 +1,7 @@
 /* GENERATED FILE - DO NOT EDIT. C code emitted by CasADi for scene_kinematics() of
  * generated/na1/ (see its model.py), plus its batched driver.
  * Regenerate with: python -m snakecg_derive --checked-in
- * spec sha256: 2f11be08be2539f3fbacb4a05d050274df23f95f5e13c807c98708688c485e31
+ * spec sha256: cfb213c907b133d8468816b35e2514e88b652abe0e80fc54ab4677cd1d4b1854
  * tools: sympy 1.14.0, casadi 3.8.2, jinja2 3.1.6
  */
 /* How to prefix internal symbols */
@@ -30,6 +30,7 @@
 #define casadi_s2 CASADI_PREFIX(s2)
 #define casadi_s3 CASADI_PREFIX(s3)
 #define casadi_s4 CASADI_PREFIX(s4)
+#define casadi_s5 CASADI_PREFIX(s5)
 
 /* Symbol visibility in DLLs */
 #ifndef CASADI_SYMBOL_EXPORT
@@ -60,8 +61,9 @@ static const casadi_int casadi_s1[3] = {16, 1, 1};
 static const casadi_int casadi_s2[3] = {3, 2, 1};
 static const casadi_int casadi_s3[3] = {6, 4, 1};
 static const casadi_int casadi_s4[3] = {4, 4, 1};
+static const casadi_int casadi_s5[3] = {2, 2, 1};
 
-/* snakecg_na1_scene_kinematics:(q[4],K[16])->(poses[3x2],J[6x4],M[4x4]) */
+/* snakecg_na1_scene_kinematics:(q[4],K[16])->(poses[3x2],J[6x4],M[4x4],cs[2x2]) */
 static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12;
@@ -148,22 +150,26 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   if (res[2]!=0) res[2][7]=a12;
   if (res[2]!=0) res[2][8]=a00;
   if (res[2]!=0) res[2][9]=a05;
-  a08=(a08*a03);
-  a10=(a10*a09);
-  a08=(a08+a10);
-  a10=arg[1]? arg[1][12] : 0;
-  a08=(a08*a10);
-  a10=arg[1]? arg[1][14] : 0;
-  a10=(a08+a10);
-  a09=arg[1]? arg[1][15] : 0;
-  a08=(a08+a09);
-  a10=(a10+a08);
-  if (res[2]!=0) res[2][10]=a10;
-  if (res[2]!=0) res[2][11]=a08;
+  a05=(a08*a03);
+  a00=(a10*a09);
+  a05=(a05+a00);
+  a00=arg[1]? arg[1][12] : 0;
+  a05=(a05*a00);
+  a00=arg[1]? arg[1][14] : 0;
+  a00=(a05+a00);
+  a06=arg[1]? arg[1][15] : 0;
+  a05=(a05+a06);
+  a00=(a00+a05);
+  if (res[2]!=0) res[2][10]=a00;
+  if (res[2]!=0) res[2][11]=a05;
   if (res[2]!=0) res[2][12]=a11;
   if (res[2]!=0) res[2][13]=a12;
-  if (res[2]!=0) res[2][14]=a08;
-  if (res[2]!=0) res[2][15]=a09;
+  if (res[2]!=0) res[2][14]=a05;
+  if (res[2]!=0) res[2][15]=a06;
+  if (res[3]!=0) res[3][0]=a03;
+  if (res[3]!=0) res[3][1]=a09;
+  if (res[3]!=0) res[3][2]=a08;
+  if (res[3]!=0) res[3][3]=a10;
   return 0;
 }
 
@@ -186,7 +192,7 @@ CASADI_SYMBOL_EXPORT void snakecg_na1_scene_kinematics_decref(void) {
 
 CASADI_SYMBOL_EXPORT casadi_int snakecg_na1_scene_kinematics_n_in(void) { return 2;}
 
-CASADI_SYMBOL_EXPORT casadi_int snakecg_na1_scene_kinematics_n_out(void) { return 3;}
+CASADI_SYMBOL_EXPORT casadi_int snakecg_na1_scene_kinematics_n_out(void) { return 4;}
 
 CASADI_SYMBOL_EXPORT casadi_real snakecg_na1_scene_kinematics_default_in(casadi_int i) {
   switch (i) {
@@ -207,6 +213,7 @@ CASADI_SYMBOL_EXPORT const char* snakecg_na1_scene_kinematics_name_out(casadi_in
     case 0: return "poses";
     case 1: return "J";
     case 2: return "M";
+    case 3: return "cs";
     default: return 0;
   }
 }
@@ -224,13 +231,14 @@ CASADI_SYMBOL_EXPORT const casadi_int* snakecg_na1_scene_kinematics_sparsity_out
     case 0: return casadi_s2;
     case 1: return casadi_s3;
     case 2: return casadi_s4;
+    case 3: return casadi_s5;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT int snakecg_na1_scene_kinematics_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
   if (sz_arg) *sz_arg = 2;
-  if (sz_res) *sz_res = 3;
+  if (sz_res) *sz_res = 4;
   if (sz_iw) *sz_iw = 0;
   if (sz_w) *sz_w = 0;
   return 0;
@@ -238,7 +246,7 @@ CASADI_SYMBOL_EXPORT int snakecg_na1_scene_kinematics_work(casadi_int *sz_arg, c
 
 CASADI_SYMBOL_EXPORT int snakecg_na1_scene_kinematics_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
   if (sz_arg) *sz_arg = 2*sizeof(const casadi_real*);
-  if (sz_res) *sz_res = 3*sizeof(casadi_real*);
+  if (sz_res) *sz_res = 4*sizeof(casadi_real*);
   if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
   if (sz_w) *sz_w = 0*sizeof(casadi_real);
   return 0;
@@ -258,20 +266,21 @@ CASADI_SYMBOL_EXPORT int snakecg_na1_scene_kinematics_work_bytes(casadi_int *sz_
 CASADI_SYMBOL_EXPORT int snakecg_na1_batch_scene_kinematics(casadi_int n, const casadi_real** arg,
     const casadi_int* stride, casadi_real** res) {
   const casadi_real* a[2];
-  casadi_real* r[3];
+  casadi_real* r[4];
   casadi_int* iw = (casadi_int*) malloc(sizeof(casadi_int) * 1);
   casadi_real* w = (casadi_real*) malloc(sizeof(casadi_real) * 14);
   casadi_int i, k;
   int status = 0;
   if (!iw || !w) { free(iw); free(w); return -1; }
   for (k = 0; k < 2; ++k) a[k] = 0;
-  for (k = 0; k < 3; ++k) r[k] = 0;
+  for (k = 0; k < 4; ++k) r[k] = 0;
   for (i = 0; i < n; ++i) {
     a[0] = arg[0] + i * stride[0];
     a[1] = arg[1] + i * stride[1];
     r[0] = res[0] + i * 6;
     r[1] = res[1] + i * 24;
     r[2] = res[2] + i * 16;
+    r[3] = res[3] + i * 4;
     if (snakecg_na1_scene_kinematics(a, r, iw, w, 0)) { status = (int) (i + 1); break; }
   }
   free(iw);

@@ -1,7 +1,7 @@
 /* GENERATED FILE - DO NOT EDIT. C code emitted by CasADi for scene_kinematics() of
  * generated/na2/ (see its model.py), plus its batched driver.
  * Regenerate with: python -m snakecg_derive --checked-in
- * spec sha256: 396105d1786624dc3d009a06ca0d657f7ad1f7ea31c07b343b9c324491cc44b5
+ * spec sha256: 1ffd02983b32fea1953b31d6b4da6e985de5a598f8e69763f0a5d6374958d5e8
  * tools: sympy 1.14.0, casadi 3.8.2, jinja2 3.1.6
  */
 /* How to prefix internal symbols */
@@ -30,6 +30,7 @@
 #define casadi_s2 CASADI_PREFIX(s2)
 #define casadi_s3 CASADI_PREFIX(s3)
 #define casadi_s4 CASADI_PREFIX(s4)
+#define casadi_s5 CASADI_PREFIX(s5)
 
 /* Symbol visibility in DLLs */
 #ifndef CASADI_SYMBOL_EXPORT
@@ -60,8 +61,9 @@ static const casadi_int casadi_s1[3] = {25, 1, 1};
 static const casadi_int casadi_s2[3] = {3, 3, 1};
 static const casadi_int casadi_s3[3] = {9, 5, 1};
 static const casadi_int casadi_s4[3] = {5, 5, 1};
+static const casadi_int casadi_s5[3] = {2, 3, 1};
 
-/* snakecg_na2_scene_kinematics:(q[5],K[25])->(poses[3x3],J[9x5],M[5x5]) */
+/* snakecg_na2_scene_kinematics:(q[5],K[25])->(poses[3x3],J[9x5],M[5x5],cs[2x3]) */
 static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
@@ -181,65 +183,71 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   if (res[2]!=0) res[2][0]=a07;
   if (res[2]!=0) res[2][1]=a18;
   a23=arg[1]? arg[1][15] : 0;
-  a21=(a23*a21);
-  a22=arg[1]? arg[1][14] : 0;
-  a17=(a22*a11);
-  a17=(a21+a17);
-  a06=arg[1]? arg[1][13] : 0;
-  a10=(a06*a10);
-  a10=(a17+a10);
-  a10=(-a10);
-  if (res[2]!=0) res[2][2]=a10;
-  a15=(-a17);
-  if (res[2]!=0) res[2][3]=a15;
-  a12=(-a21);
-  if (res[2]!=0) res[2][4]=a12;
+  a22=(a23*a21);
+  a17=arg[1]? arg[1][14] : 0;
+  a06=(a17*a11);
+  a06=(a22+a06);
+  a15=arg[1]? arg[1][13] : 0;
+  a12=(a15*a10);
+  a12=(a06+a12);
+  a12=(-a12);
+  if (res[2]!=0) res[2][2]=a12;
+  a13=(-a06);
+  if (res[2]!=0) res[2][3]=a13;
+  a08=(-a22);
+  if (res[2]!=0) res[2][4]=a08;
   if (res[2]!=0) res[2][5]=a18;
   if (res[2]!=0) res[2][6]=a07;
   a23=(a23*a20);
-  a22=(a22*a09);
-  a22=(a23+a22);
-  a06=(a06*a03);
-  a06=(a22+a06);
-  if (res[2]!=0) res[2][7]=a06;
-  if (res[2]!=0) res[2][8]=a22;
+  a17=(a17*a09);
+  a17=(a23+a17);
+  a15=(a15*a03);
+  a15=(a17+a15);
+  if (res[2]!=0) res[2][7]=a15;
+  if (res[2]!=0) res[2][8]=a17;
   if (res[2]!=0) res[2][9]=a23;
-  if (res[2]!=0) res[2][10]=a10;
-  if (res[2]!=0) res[2][11]=a06;
-  a09=(a09*a02);
-  a09=(a23*a09);
-  a11=(a11*a02);
-  a11=(a21*a11);
-  a09=(a09+a11);
-  a11=arg[1]? arg[1][24] : 0;
-  a02=(a09+a11);
-  a09=(a02+a09);
-  a06=arg[1]? arg[1][23] : 0;
-  a09=(a09+a06);
-  a06=(a22*a05);
-  a17=(a17*a04);
-  a06=(a06+a17);
-  a17=(a09+a06);
-  a06=(a17+a06);
-  a10=arg[1]? arg[1][22] : 0;
-  a06=(a06+a10);
-  if (res[2]!=0) res[2][12]=a06;
-  if (res[2]!=0) res[2][13]=a17;
+  if (res[2]!=0) res[2][10]=a12;
+  if (res[2]!=0) res[2][11]=a15;
+  a15=(a09*a02);
+  a15=(a23*a15);
+  a02=(a11*a02);
+  a02=(a22*a02);
+  a15=(a15+a02);
+  a02=arg[1]? arg[1][24] : 0;
+  a12=(a15+a02);
+  a15=(a12+a15);
+  a07=arg[1]? arg[1][23] : 0;
+  a15=(a15+a07);
+  a07=(a17*a05);
+  a06=(a06*a04);
+  a07=(a07+a06);
+  a06=(a15+a07);
+  a07=(a06+a07);
+  a18=arg[1]? arg[1][22] : 0;
+  a07=(a07+a18);
+  if (res[2]!=0) res[2][12]=a07;
+  if (res[2]!=0) res[2][13]=a06;
   a05=(a23*a05);
-  a21=(a21*a04);
-  a05=(a05+a21);
-  a05=(a02+a05);
+  a22=(a22*a04);
+  a05=(a05+a22);
+  a05=(a12+a05);
   if (res[2]!=0) res[2][14]=a05;
-  if (res[2]!=0) res[2][15]=a15;
-  if (res[2]!=0) res[2][16]=a22;
-  if (res[2]!=0) res[2][17]=a17;
-  if (res[2]!=0) res[2][18]=a09;
-  if (res[2]!=0) res[2][19]=a02;
-  if (res[2]!=0) res[2][20]=a12;
+  if (res[2]!=0) res[2][15]=a13;
+  if (res[2]!=0) res[2][16]=a17;
+  if (res[2]!=0) res[2][17]=a06;
+  if (res[2]!=0) res[2][18]=a15;
+  if (res[2]!=0) res[2][19]=a12;
+  if (res[2]!=0) res[2][20]=a08;
   if (res[2]!=0) res[2][21]=a23;
   if (res[2]!=0) res[2][22]=a05;
-  if (res[2]!=0) res[2][23]=a02;
-  if (res[2]!=0) res[2][24]=a11;
+  if (res[2]!=0) res[2][23]=a12;
+  if (res[2]!=0) res[2][24]=a02;
+  if (res[3]!=0) res[3][0]=a03;
+  if (res[3]!=0) res[3][1]=a10;
+  if (res[3]!=0) res[3][2]=a09;
+  if (res[3]!=0) res[3][3]=a11;
+  if (res[3]!=0) res[3][4]=a20;
+  if (res[3]!=0) res[3][5]=a21;
   return 0;
 }
 
@@ -262,7 +270,7 @@ CASADI_SYMBOL_EXPORT void snakecg_na2_scene_kinematics_decref(void) {
 
 CASADI_SYMBOL_EXPORT casadi_int snakecg_na2_scene_kinematics_n_in(void) { return 2;}
 
-CASADI_SYMBOL_EXPORT casadi_int snakecg_na2_scene_kinematics_n_out(void) { return 3;}
+CASADI_SYMBOL_EXPORT casadi_int snakecg_na2_scene_kinematics_n_out(void) { return 4;}
 
 CASADI_SYMBOL_EXPORT casadi_real snakecg_na2_scene_kinematics_default_in(casadi_int i) {
   switch (i) {
@@ -283,6 +291,7 @@ CASADI_SYMBOL_EXPORT const char* snakecg_na2_scene_kinematics_name_out(casadi_in
     case 0: return "poses";
     case 1: return "J";
     case 2: return "M";
+    case 3: return "cs";
     default: return 0;
   }
 }
@@ -300,13 +309,14 @@ CASADI_SYMBOL_EXPORT const casadi_int* snakecg_na2_scene_kinematics_sparsity_out
     case 0: return casadi_s2;
     case 1: return casadi_s3;
     case 2: return casadi_s4;
+    case 3: return casadi_s5;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT int snakecg_na2_scene_kinematics_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
   if (sz_arg) *sz_arg = 2;
-  if (sz_res) *sz_res = 3;
+  if (sz_res) *sz_res = 4;
   if (sz_iw) *sz_iw = 0;
   if (sz_w) *sz_w = 0;
   return 0;
@@ -314,7 +324,7 @@ CASADI_SYMBOL_EXPORT int snakecg_na2_scene_kinematics_work(casadi_int *sz_arg, c
 
 CASADI_SYMBOL_EXPORT int snakecg_na2_scene_kinematics_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
   if (sz_arg) *sz_arg = 2*sizeof(const casadi_real*);
-  if (sz_res) *sz_res = 3*sizeof(casadi_real*);
+  if (sz_res) *sz_res = 4*sizeof(casadi_real*);
   if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
   if (sz_w) *sz_w = 0*sizeof(casadi_real);
   return 0;
@@ -334,20 +344,21 @@ CASADI_SYMBOL_EXPORT int snakecg_na2_scene_kinematics_work_bytes(casadi_int *sz_
 CASADI_SYMBOL_EXPORT int snakecg_na2_batch_scene_kinematics(casadi_int n, const casadi_real** arg,
     const casadi_int* stride, casadi_real** res) {
   const casadi_real* a[2];
-  casadi_real* r[3];
+  casadi_real* r[4];
   casadi_int* iw = (casadi_int*) malloc(sizeof(casadi_int) * 1);
   casadi_real* w = (casadi_real*) malloc(sizeof(casadi_real) * 25);
   casadi_int i, k;
   int status = 0;
   if (!iw || !w) { free(iw); free(w); return -1; }
   for (k = 0; k < 2; ++k) a[k] = 0;
-  for (k = 0; k < 3; ++k) r[k] = 0;
+  for (k = 0; k < 4; ++k) r[k] = 0;
   for (i = 0; i < n; ++i) {
     a[0] = arg[0] + i * stride[0];
     a[1] = arg[1] + i * stride[1];
     r[0] = res[0] + i * 9;
     r[1] = res[1] + i * 45;
     r[2] = res[2] + i * 25;
+    r[3] = res[3] + i * 6;
     if (snakecg_na2_scene_kinematics(a, r, iw, w, 0)) { status = (int) (i + 1); break; }
   }
   free(iw);

@@ -1,7 +1,7 @@
 /* GENERATED FILE - DO NOT EDIT. C code emitted by CasADi for scene_kinematics() of
  * generated/na3/ (see its model.py), plus its batched driver.
  * Regenerate with: python -m snakecg_derive --checked-in
- * spec sha256: a7d8999f10b490bf5f2b83eb1f6ffb4351ed516ba0b1e6c242f689e34feec41a
+ * spec sha256: 69686744596b549bcd3f0673408c86c5f2701602d7e0095fc6e56d39f6e4f511
  * tools: sympy 1.14.0, casadi 3.8.2, jinja2 3.1.6
  */
 /* How to prefix internal symbols */
@@ -30,6 +30,7 @@
 #define casadi_s2 CASADI_PREFIX(s2)
 #define casadi_s3 CASADI_PREFIX(s3)
 #define casadi_s4 CASADI_PREFIX(s4)
+#define casadi_s5 CASADI_PREFIX(s5)
 
 /* Symbol visibility in DLLs */
 #ifndef CASADI_SYMBOL_EXPORT
@@ -60,8 +61,9 @@ static const casadi_int casadi_s1[3] = {35, 1, 1};
 static const casadi_int casadi_s2[3] = {3, 4, 1};
 static const casadi_int casadi_s3[3] = {12, 6, 1};
 static const casadi_int casadi_s4[3] = {6, 6, 1};
+static const casadi_int casadi_s5[3] = {2, 4, 1};
 
-/* snakecg_na3_scene_kinematics:(q[6],K[35])->(poses[3x4],J[12x6],M[6x6]) */
+/* snakecg_na3_scene_kinematics:(q[6],K[35])->(poses[3x4],J[12x6],M[6x6],cs[2x4]) */
 static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
@@ -240,99 +242,107 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   if (res[2]!=0) res[2][0]=a07;
   if (res[2]!=0) res[2][1]=a27;
   a32=arg[1]? arg[1][20] : 0;
-  a30=(a32*a30);
-  a31=arg[1]? arg[1][19] : 0;
-  a26=(a31*a21);
-  a26=(a30+a26);
-  a17=arg[1]? arg[1][18] : 0;
-  a12=(a17*a11);
-  a12=(a26+a12);
-  a22=arg[1]? arg[1][17] : 0;
-  a10=(a22*a10);
-  a10=(a12+a10);
-  a10=(-a10);
-  if (res[2]!=0) res[2][2]=a10;
-  a23=(-a12);
-  if (res[2]!=0) res[2][3]=a23;
-  a19=(-a26);
-  if (res[2]!=0) res[2][4]=a19;
-  a06=(-a30);
-  if (res[2]!=0) res[2][5]=a06;
+  a31=(a32*a30);
+  a26=arg[1]? arg[1][19] : 0;
+  a17=(a26*a21);
+  a17=(a31+a17);
+  a12=arg[1]? arg[1][18] : 0;
+  a22=(a12*a11);
+  a22=(a17+a22);
+  a23=arg[1]? arg[1][17] : 0;
+  a19=(a23*a10);
+  a19=(a22+a19);
+  a19=(-a19);
+  if (res[2]!=0) res[2][2]=a19;
+  a06=(-a22);
+  if (res[2]!=0) res[2][3]=a06;
+  a15=(-a17);
+  if (res[2]!=0) res[2][4]=a15;
+  a24=(-a31);
+  if (res[2]!=0) res[2][5]=a24;
   if (res[2]!=0) res[2][6]=a27;
   if (res[2]!=0) res[2][7]=a07;
   a32=(a32*a29);
-  a31=(a31*a20);
-  a31=(a32+a31);
-  a17=(a17*a09);
-  a17=(a31+a17);
-  a22=(a22*a03);
-  a22=(a17+a22);
-  if (res[2]!=0) res[2][8]=a22;
-  if (res[2]!=0) res[2][9]=a17;
-  if (res[2]!=0) res[2][10]=a31;
+  a26=(a26*a20);
+  a26=(a32+a26);
+  a12=(a12*a09);
+  a12=(a26+a12);
+  a23=(a23*a03);
+  a23=(a12+a23);
+  if (res[2]!=0) res[2][8]=a23;
+  if (res[2]!=0) res[2][9]=a12;
+  if (res[2]!=0) res[2][10]=a26;
   if (res[2]!=0) res[2][11]=a32;
-  if (res[2]!=0) res[2][12]=a10;
-  if (res[2]!=0) res[2][13]=a22;
-  a20=(a20*a18);
-  a20=(a32*a20);
-  a21=(a21*a18);
-  a21=(a30*a21);
-  a20=(a20+a21);
-  a21=arg[1]? arg[1][34] : 0;
-  a18=(a20+a21);
-  a20=(a18+a20);
-  a22=arg[1]? arg[1][33] : 0;
-  a20=(a20+a22);
-  a09=(a09*a02);
-  a22=(a31*a09);
-  a11=(a11*a02);
-  a02=(a26*a11);
-  a22=(a22+a02);
-  a02=(a20+a22);
-  a22=(a02+a22);
-  a10=arg[1]? arg[1][32] : 0;
-  a22=(a22+a10);
-  a10=(a17*a05);
-  a12=(a12*a04);
-  a10=(a10+a12);
-  a12=(a22+a10);
-  a10=(a12+a10);
-  a03=arg[1]? arg[1][31] : 0;
-  a10=(a10+a03);
-  if (res[2]!=0) res[2][14]=a10;
-  if (res[2]!=0) res[2][15]=a12;
-  a10=(a31*a05);
-  a26=(a26*a04);
-  a10=(a10+a26);
-  a10=(a02+a10);
-  if (res[2]!=0) res[2][16]=a10;
-  a09=(a32*a09);
-  a11=(a30*a11);
-  a09=(a09+a11);
-  a09=(a18+a09);
+  if (res[2]!=0) res[2][12]=a19;
+  if (res[2]!=0) res[2][13]=a23;
+  a23=(a20*a18);
+  a23=(a32*a23);
+  a18=(a21*a18);
+  a18=(a31*a18);
+  a23=(a23+a18);
+  a18=arg[1]? arg[1][34] : 0;
+  a19=(a23+a18);
+  a23=(a19+a23);
+  a07=arg[1]? arg[1][33] : 0;
+  a23=(a23+a07);
+  a07=(a09*a02);
+  a27=(a26*a07);
+  a02=(a11*a02);
+  a25=(a17*a02);
+  a27=(a27+a25);
+  a25=(a23+a27);
+  a27=(a25+a27);
+  a13=arg[1]? arg[1][32] : 0;
+  a27=(a27+a13);
+  a13=(a12*a05);
+  a22=(a22*a04);
+  a13=(a13+a22);
+  a22=(a27+a13);
+  a13=(a22+a13);
+  a08=arg[1]? arg[1][31] : 0;
+  a13=(a13+a08);
+  if (res[2]!=0) res[2][14]=a13;
+  if (res[2]!=0) res[2][15]=a22;
+  a13=(a26*a05);
+  a17=(a17*a04);
+  a13=(a13+a17);
+  a13=(a25+a13);
+  if (res[2]!=0) res[2][16]=a13;
+  a07=(a32*a07);
+  a02=(a31*a02);
+  a07=(a07+a02);
+  a07=(a19+a07);
   a05=(a32*a05);
-  a30=(a30*a04);
-  a05=(a05+a30);
-  a05=(a09+a05);
+  a31=(a31*a04);
+  a05=(a05+a31);
+  a05=(a07+a05);
   if (res[2]!=0) res[2][17]=a05;
-  if (res[2]!=0) res[2][18]=a23;
-  if (res[2]!=0) res[2][19]=a17;
-  if (res[2]!=0) res[2][20]=a12;
-  if (res[2]!=0) res[2][21]=a22;
-  if (res[2]!=0) res[2][22]=a02;
-  if (res[2]!=0) res[2][23]=a09;
-  if (res[2]!=0) res[2][24]=a19;
-  if (res[2]!=0) res[2][25]=a31;
-  if (res[2]!=0) res[2][26]=a10;
-  if (res[2]!=0) res[2][27]=a02;
-  if (res[2]!=0) res[2][28]=a20;
-  if (res[2]!=0) res[2][29]=a18;
-  if (res[2]!=0) res[2][30]=a06;
+  if (res[2]!=0) res[2][18]=a06;
+  if (res[2]!=0) res[2][19]=a12;
+  if (res[2]!=0) res[2][20]=a22;
+  if (res[2]!=0) res[2][21]=a27;
+  if (res[2]!=0) res[2][22]=a25;
+  if (res[2]!=0) res[2][23]=a07;
+  if (res[2]!=0) res[2][24]=a15;
+  if (res[2]!=0) res[2][25]=a26;
+  if (res[2]!=0) res[2][26]=a13;
+  if (res[2]!=0) res[2][27]=a25;
+  if (res[2]!=0) res[2][28]=a23;
+  if (res[2]!=0) res[2][29]=a19;
+  if (res[2]!=0) res[2][30]=a24;
   if (res[2]!=0) res[2][31]=a32;
   if (res[2]!=0) res[2][32]=a05;
-  if (res[2]!=0) res[2][33]=a09;
-  if (res[2]!=0) res[2][34]=a18;
-  if (res[2]!=0) res[2][35]=a21;
+  if (res[2]!=0) res[2][33]=a07;
+  if (res[2]!=0) res[2][34]=a19;
+  if (res[2]!=0) res[2][35]=a18;
+  if (res[3]!=0) res[3][0]=a03;
+  if (res[3]!=0) res[3][1]=a10;
+  if (res[3]!=0) res[3][2]=a09;
+  if (res[3]!=0) res[3][3]=a11;
+  if (res[3]!=0) res[3][4]=a20;
+  if (res[3]!=0) res[3][5]=a21;
+  if (res[3]!=0) res[3][6]=a29;
+  if (res[3]!=0) res[3][7]=a30;
   return 0;
 }
 
@@ -355,7 +365,7 @@ CASADI_SYMBOL_EXPORT void snakecg_na3_scene_kinematics_decref(void) {
 
 CASADI_SYMBOL_EXPORT casadi_int snakecg_na3_scene_kinematics_n_in(void) { return 2;}
 
-CASADI_SYMBOL_EXPORT casadi_int snakecg_na3_scene_kinematics_n_out(void) { return 3;}
+CASADI_SYMBOL_EXPORT casadi_int snakecg_na3_scene_kinematics_n_out(void) { return 4;}
 
 CASADI_SYMBOL_EXPORT casadi_real snakecg_na3_scene_kinematics_default_in(casadi_int i) {
   switch (i) {
@@ -376,6 +386,7 @@ CASADI_SYMBOL_EXPORT const char* snakecg_na3_scene_kinematics_name_out(casadi_in
     case 0: return "poses";
     case 1: return "J";
     case 2: return "M";
+    case 3: return "cs";
     default: return 0;
   }
 }
@@ -393,13 +404,14 @@ CASADI_SYMBOL_EXPORT const casadi_int* snakecg_na3_scene_kinematics_sparsity_out
     case 0: return casadi_s2;
     case 1: return casadi_s3;
     case 2: return casadi_s4;
+    case 3: return casadi_s5;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT int snakecg_na3_scene_kinematics_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
   if (sz_arg) *sz_arg = 2;
-  if (sz_res) *sz_res = 3;
+  if (sz_res) *sz_res = 4;
   if (sz_iw) *sz_iw = 0;
   if (sz_w) *sz_w = 0;
   return 0;
@@ -407,7 +419,7 @@ CASADI_SYMBOL_EXPORT int snakecg_na3_scene_kinematics_work(casadi_int *sz_arg, c
 
 CASADI_SYMBOL_EXPORT int snakecg_na3_scene_kinematics_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
   if (sz_arg) *sz_arg = 2*sizeof(const casadi_real*);
-  if (sz_res) *sz_res = 3*sizeof(casadi_real*);
+  if (sz_res) *sz_res = 4*sizeof(casadi_real*);
   if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
   if (sz_w) *sz_w = 0*sizeof(casadi_real);
   return 0;
@@ -427,20 +439,21 @@ CASADI_SYMBOL_EXPORT int snakecg_na3_scene_kinematics_work_bytes(casadi_int *sz_
 CASADI_SYMBOL_EXPORT int snakecg_na3_batch_scene_kinematics(casadi_int n, const casadi_real** arg,
     const casadi_int* stride, casadi_real** res) {
   const casadi_real* a[2];
-  casadi_real* r[3];
+  casadi_real* r[4];
   casadi_int* iw = (casadi_int*) malloc(sizeof(casadi_int) * 1);
   casadi_real* w = (casadi_real*) malloc(sizeof(casadi_real) * 34);
   casadi_int i, k;
   int status = 0;
   if (!iw || !w) { free(iw); free(w); return -1; }
   for (k = 0; k < 2; ++k) a[k] = 0;
-  for (k = 0; k < 3; ++k) r[k] = 0;
+  for (k = 0; k < 4; ++k) r[k] = 0;
   for (i = 0; i < n; ++i) {
     a[0] = arg[0] + i * stride[0];
     a[1] = arg[1] + i * stride[1];
     r[0] = res[0] + i * 12;
     r[1] = res[1] + i * 72;
     r[2] = res[2] + i * 36;
+    r[3] = res[3] + i * 8;
     if (snakecg_na3_scene_kinematics(a, r, iw, w, 0)) { status = (int) (i + 1); break; }
   }
   free(iw);

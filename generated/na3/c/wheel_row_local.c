@@ -1,7 +1,7 @@
 /* GENERATED FILE - DO NOT EDIT. C code emitted by CasADi for wheel_row_local() of
  * generated/na3/ (see its model.py), plus its batched driver.
  * Regenerate with: python -m snakecg_derive --checked-in
- * spec sha256: a7d8999f10b490bf5f2b83eb1f6ffb4351ed516ba0b1e6c242f689e34feec41a
+ * spec sha256: 69686744596b549bcd3f0673408c86c5f2701602d7e0095fc6e56d39f6e4f511
  * tools: sympy 1.14.0, casadi 3.8.2, jinja2 3.1.6
  */
 /* How to prefix internal symbols */

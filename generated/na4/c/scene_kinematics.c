@@ -1,7 +1,7 @@
 /* GENERATED FILE - DO NOT EDIT. C code emitted by CasADi for scene_kinematics() of
  * generated/na4/ (see its model.py), plus its batched driver.
  * Regenerate with: python -m snakecg_derive --checked-in
- * spec sha256: 12c4b8af26c9076865b78defc7f612c0db7d58189cff37ae79b4d828054cbcc2
+ * spec sha256: db1536eaaa55093bbe9104331da22db727d599bbbd37d742431adce08ea9331f
  * tools: sympy 1.14.0, casadi 3.8.2, jinja2 3.1.6
  */
 /* How to prefix internal symbols */
@@ -30,6 +30,7 @@
 #define casadi_s2 CASADI_PREFIX(s2)
 #define casadi_s3 CASADI_PREFIX(s3)
 #define casadi_s4 CASADI_PREFIX(s4)
+#define casadi_s5 CASADI_PREFIX(s5)
 
 /* Symbol visibility in DLLs */
 #ifndef CASADI_SYMBOL_EXPORT
@@ -60,8 +61,9 @@ static const casadi_int casadi_s1[3] = {46, 1, 1};
 static const casadi_int casadi_s2[3] = {3, 5, 1};
 static const casadi_int casadi_s3[3] = {15, 7, 1};
 static const casadi_int casadi_s4[3] = {7, 7, 1};
+static const casadi_int casadi_s5[3] = {2, 5, 1};
 
-/* snakecg_na4_scene_kinematics:(q[7],K[46])->(poses[3x5],J[15x7],M[7x7]) */
+/* snakecg_na4_scene_kinematics:(q[7],K[46])->(poses[3x5],J[15x7],M[7x7],cs[2x5]) */
 static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
@@ -307,139 +309,149 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   if (res[2]!=0) res[2][0]=a07;
   if (res[2]!=0) res[2][1]=a36;
   a41=arg[1]? arg[1][25] : 0;
-  a39=(a41*a39);
-  a40=arg[1]? arg[1][24] : 0;
-  a35=(a40*a30);
-  a35=(a39+a35);
-  a26=arg[1]? arg[1][23] : 0;
-  a22=(a26*a21);
-  a22=(a35+a22);
-  a31=arg[1]? arg[1][22] : 0;
-  a32=(a31*a11);
-  a32=(a22+a32);
-  a28=arg[1]? arg[1][21] : 0;
-  a10=(a28*a10);
-  a10=(a32+a10);
-  a10=(-a10);
-  if (res[2]!=0) res[2][2]=a10;
-  a17=(-a32);
-  if (res[2]!=0) res[2][3]=a17;
-  a12=(-a22);
-  if (res[2]!=0) res[2][4]=a12;
-  a33=(-a35);
-  if (res[2]!=0) res[2][5]=a33;
-  a34=(-a39);
-  if (res[2]!=0) res[2][6]=a34;
+  a40=(a41*a39);
+  a35=arg[1]? arg[1][24] : 0;
+  a26=(a35*a30);
+  a26=(a40+a26);
+  a22=arg[1]? arg[1][23] : 0;
+  a31=(a22*a21);
+  a31=(a26+a31);
+  a32=arg[1]? arg[1][22] : 0;
+  a28=(a32*a11);
+  a28=(a31+a28);
+  a17=arg[1]? arg[1][21] : 0;
+  a12=(a17*a10);
+  a12=(a28+a12);
+  a12=(-a12);
+  if (res[2]!=0) res[2][2]=a12;
+  a33=(-a28);
+  if (res[2]!=0) res[2][3]=a33;
+  a34=(-a31);
+  if (res[2]!=0) res[2][4]=a34;
+  a23=(-a26);
+  if (res[2]!=0) res[2][5]=a23;
+  a19=(-a40);
+  if (res[2]!=0) res[2][6]=a19;
   if (res[2]!=0) res[2][7]=a36;
   if (res[2]!=0) res[2][8]=a07;
   a41=(a41*a38);
-  a40=(a40*a29);
-  a40=(a41+a40);
-  a26=(a26*a20);
-  a26=(a40+a26);
-  a31=(a31*a09);
-  a31=(a26+a31);
-  a28=(a28*a03);
-  a28=(a31+a28);
-  if (res[2]!=0) res[2][9]=a28;
-  if (res[2]!=0) res[2][10]=a31;
-  if (res[2]!=0) res[2][11]=a26;
-  if (res[2]!=0) res[2][12]=a40;
+  a35=(a35*a29);
+  a35=(a41+a35);
+  a22=(a22*a20);
+  a22=(a35+a22);
+  a32=(a32*a09);
+  a32=(a22+a32);
+  a17=(a17*a03);
+  a17=(a32+a17);
+  if (res[2]!=0) res[2][9]=a17;
+  if (res[2]!=0) res[2][10]=a32;
+  if (res[2]!=0) res[2][11]=a22;
+  if (res[2]!=0) res[2][12]=a35;
   if (res[2]!=0) res[2][13]=a41;
-  if (res[2]!=0) res[2][14]=a10;
-  if (res[2]!=0) res[2][15]=a28;
-  a29=(a29*a27);
-  a29=(a41*a29);
-  a30=(a30*a27);
-  a30=(a39*a30);
-  a29=(a29+a30);
-  a30=arg[1]? arg[1][45] : 0;
-  a27=(a29+a30);
-  a29=(a27+a29);
-  a28=arg[1]? arg[1][44] : 0;
-  a29=(a29+a28);
-  a20=(a20*a18);
-  a28=(a40*a20);
-  a21=(a21*a18);
-  a18=(a35*a21);
-  a28=(a28+a18);
-  a18=(a29+a28);
-  a28=(a18+a28);
-  a10=arg[1]? arg[1][43] : 0;
-  a28=(a28+a10);
-  a09=(a09*a02);
-  a10=(a26*a09);
-  a11=(a11*a02);
-  a02=(a22*a11);
-  a10=(a10+a02);
-  a02=(a28+a10);
-  a10=(a02+a10);
-  a03=arg[1]? arg[1][42] : 0;
-  a10=(a10+a03);
-  a03=(a31*a05);
-  a32=(a32*a04);
-  a03=(a03+a32);
-  a32=(a10+a03);
-  a03=(a32+a03);
-  a38=arg[1]? arg[1][41] : 0;
-  a03=(a03+a38);
-  if (res[2]!=0) res[2][16]=a03;
-  if (res[2]!=0) res[2][17]=a32;
-  a03=(a26*a05);
-  a22=(a22*a04);
-  a03=(a03+a22);
-  a03=(a02+a03);
-  if (res[2]!=0) res[2][18]=a03;
-  a22=(a40*a09);
-  a38=(a35*a11);
-  a22=(a22+a38);
-  a22=(a18+a22);
-  a38=(a40*a05);
-  a35=(a35*a04);
-  a38=(a38+a35);
-  a38=(a22+a38);
-  if (res[2]!=0) res[2][19]=a38;
-  a20=(a41*a20);
-  a21=(a39*a21);
-  a20=(a20+a21);
-  a20=(a27+a20);
-  a09=(a41*a09);
-  a11=(a39*a11);
-  a09=(a09+a11);
-  a09=(a20+a09);
+  if (res[2]!=0) res[2][14]=a12;
+  if (res[2]!=0) res[2][15]=a17;
+  a17=(a29*a27);
+  a17=(a41*a17);
+  a27=(a30*a27);
+  a27=(a40*a27);
+  a17=(a17+a27);
+  a27=arg[1]? arg[1][45] : 0;
+  a12=(a17+a27);
+  a17=(a12+a17);
+  a07=arg[1]? arg[1][44] : 0;
+  a17=(a17+a07);
+  a07=(a20*a18);
+  a36=(a35*a07);
+  a18=(a21*a18);
+  a06=(a26*a18);
+  a36=(a36+a06);
+  a06=(a17+a36);
+  a36=(a06+a36);
+  a15=arg[1]? arg[1][43] : 0;
+  a36=(a36+a15);
+  a15=(a09*a02);
+  a24=(a22*a15);
+  a02=(a11*a02);
+  a25=(a31*a02);
+  a24=(a24+a25);
+  a25=(a36+a24);
+  a24=(a25+a24);
+  a13=arg[1]? arg[1][42] : 0;
+  a24=(a24+a13);
+  a13=(a32*a05);
+  a28=(a28*a04);
+  a13=(a13+a28);
+  a28=(a24+a13);
+  a13=(a28+a13);
+  a08=arg[1]? arg[1][41] : 0;
+  a13=(a13+a08);
+  if (res[2]!=0) res[2][16]=a13;
+  if (res[2]!=0) res[2][17]=a28;
+  a13=(a22*a05);
+  a31=(a31*a04);
+  a13=(a13+a31);
+  a13=(a25+a13);
+  if (res[2]!=0) res[2][18]=a13;
+  a31=(a35*a15);
+  a08=(a26*a02);
+  a31=(a31+a08);
+  a31=(a06+a31);
+  a08=(a35*a05);
+  a26=(a26*a04);
+  a08=(a08+a26);
+  a08=(a31+a08);
+  if (res[2]!=0) res[2][19]=a08;
+  a07=(a41*a07);
+  a18=(a40*a18);
+  a07=(a07+a18);
+  a07=(a12+a07);
+  a15=(a41*a15);
+  a02=(a40*a02);
+  a15=(a15+a02);
+  a15=(a07+a15);
   a05=(a41*a05);
-  a39=(a39*a04);
-  a05=(a05+a39);
-  a05=(a09+a05);
+  a40=(a40*a04);
+  a05=(a05+a40);
+  a05=(a15+a05);
   if (res[2]!=0) res[2][20]=a05;
-  if (res[2]!=0) res[2][21]=a17;
-  if (res[2]!=0) res[2][22]=a31;
-  if (res[2]!=0) res[2][23]=a32;
-  if (res[2]!=0) res[2][24]=a10;
-  if (res[2]!=0) res[2][25]=a02;
-  if (res[2]!=0) res[2][26]=a22;
-  if (res[2]!=0) res[2][27]=a09;
-  if (res[2]!=0) res[2][28]=a12;
-  if (res[2]!=0) res[2][29]=a26;
-  if (res[2]!=0) res[2][30]=a03;
-  if (res[2]!=0) res[2][31]=a02;
-  if (res[2]!=0) res[2][32]=a28;
-  if (res[2]!=0) res[2][33]=a18;
-  if (res[2]!=0) res[2][34]=a20;
-  if (res[2]!=0) res[2][35]=a33;
-  if (res[2]!=0) res[2][36]=a40;
-  if (res[2]!=0) res[2][37]=a38;
-  if (res[2]!=0) res[2][38]=a22;
-  if (res[2]!=0) res[2][39]=a18;
-  if (res[2]!=0) res[2][40]=a29;
-  if (res[2]!=0) res[2][41]=a27;
-  if (res[2]!=0) res[2][42]=a34;
+  if (res[2]!=0) res[2][21]=a33;
+  if (res[2]!=0) res[2][22]=a32;
+  if (res[2]!=0) res[2][23]=a28;
+  if (res[2]!=0) res[2][24]=a24;
+  if (res[2]!=0) res[2][25]=a25;
+  if (res[2]!=0) res[2][26]=a31;
+  if (res[2]!=0) res[2][27]=a15;
+  if (res[2]!=0) res[2][28]=a34;
+  if (res[2]!=0) res[2][29]=a22;
+  if (res[2]!=0) res[2][30]=a13;
+  if (res[2]!=0) res[2][31]=a25;
+  if (res[2]!=0) res[2][32]=a36;
+  if (res[2]!=0) res[2][33]=a06;
+  if (res[2]!=0) res[2][34]=a07;
+  if (res[2]!=0) res[2][35]=a23;
+  if (res[2]!=0) res[2][36]=a35;
+  if (res[2]!=0) res[2][37]=a08;
+  if (res[2]!=0) res[2][38]=a31;
+  if (res[2]!=0) res[2][39]=a06;
+  if (res[2]!=0) res[2][40]=a17;
+  if (res[2]!=0) res[2][41]=a12;
+  if (res[2]!=0) res[2][42]=a19;
   if (res[2]!=0) res[2][43]=a41;
   if (res[2]!=0) res[2][44]=a05;
-  if (res[2]!=0) res[2][45]=a09;
-  if (res[2]!=0) res[2][46]=a20;
-  if (res[2]!=0) res[2][47]=a27;
-  if (res[2]!=0) res[2][48]=a30;
+  if (res[2]!=0) res[2][45]=a15;
+  if (res[2]!=0) res[2][46]=a07;
+  if (res[2]!=0) res[2][47]=a12;
+  if (res[2]!=0) res[2][48]=a27;
+  if (res[3]!=0) res[3][0]=a03;
+  if (res[3]!=0) res[3][1]=a10;
+  if (res[3]!=0) res[3][2]=a09;
+  if (res[3]!=0) res[3][3]=a11;
+  if (res[3]!=0) res[3][4]=a20;
+  if (res[3]!=0) res[3][5]=a21;
+  if (res[3]!=0) res[3][6]=a29;
+  if (res[3]!=0) res[3][7]=a30;
+  if (res[3]!=0) res[3][8]=a38;
+  if (res[3]!=0) res[3][9]=a39;
   return 0;
 }
 
@@ -462,7 +474,7 @@ CASADI_SYMBOL_EXPORT void snakecg_na4_scene_kinematics_decref(void) {
 
 CASADI_SYMBOL_EXPORT casadi_int snakecg_na4_scene_kinematics_n_in(void) { return 2;}
 
-CASADI_SYMBOL_EXPORT casadi_int snakecg_na4_scene_kinematics_n_out(void) { return 3;}
+CASADI_SYMBOL_EXPORT casadi_int snakecg_na4_scene_kinematics_n_out(void) { return 4;}
 
 CASADI_SYMBOL_EXPORT casadi_real snakecg_na4_scene_kinematics_default_in(casadi_int i) {
   switch (i) {
@@ -483,6 +495,7 @@ CASADI_SYMBOL_EXPORT const char* snakecg_na4_scene_kinematics_name_out(casadi_in
     case 0: return "poses";
     case 1: return "J";
     case 2: return "M";
+    case 3: return "cs";
     default: return 0;
   }
 }
@@ -500,13 +513,14 @@ CASADI_SYMBOL_EXPORT const casadi_int* snakecg_na4_scene_kinematics_sparsity_out
     case 0: return casadi_s2;
     case 1: return casadi_s3;
     case 2: return casadi_s4;
+    case 3: return casadi_s5;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT int snakecg_na4_scene_kinematics_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
   if (sz_arg) *sz_arg = 2;
-  if (sz_res) *sz_res = 3;
+  if (sz_res) *sz_res = 4;
   if (sz_iw) *sz_iw = 0;
   if (sz_w) *sz_w = 0;
   return 0;
@@ -514,7 +528,7 @@ CASADI_SYMBOL_EXPORT int snakecg_na4_scene_kinematics_work(casadi_int *sz_arg, c
 
 CASADI_SYMBOL_EXPORT int snakecg_na4_scene_kinematics_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
   if (sz_arg) *sz_arg = 2*sizeof(const casadi_real*);
-  if (sz_res) *sz_res = 3*sizeof(casadi_real*);
+  if (sz_res) *sz_res = 4*sizeof(casadi_real*);
   if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
   if (sz_w) *sz_w = 0*sizeof(casadi_real);
   return 0;
@@ -534,20 +548,21 @@ CASADI_SYMBOL_EXPORT int snakecg_na4_scene_kinematics_work_bytes(casadi_int *sz_
 CASADI_SYMBOL_EXPORT int snakecg_na4_batch_scene_kinematics(casadi_int n, const casadi_real** arg,
     const casadi_int* stride, casadi_real** res) {
   const casadi_real* a[2];
-  casadi_real* r[3];
+  casadi_real* r[4];
   casadi_int* iw = (casadi_int*) malloc(sizeof(casadi_int) * 1);
   casadi_real* w = (casadi_real*) malloc(sizeof(casadi_real) * 43);
   casadi_int i, k;
   int status = 0;
   if (!iw || !w) { free(iw); free(w); return -1; }
   for (k = 0; k < 2; ++k) a[k] = 0;
-  for (k = 0; k < 3; ++k) r[k] = 0;
+  for (k = 0; k < 4; ++k) r[k] = 0;
   for (i = 0; i < n; ++i) {
     a[0] = arg[0] + i * stride[0];
     a[1] = arg[1] + i * stride[1];
     r[0] = res[0] + i * 15;
     r[1] = res[1] + i * 105;
     r[2] = res[2] + i * 49;
+    r[3] = res[3] + i * 10;
     if (snakecg_na4_scene_kinematics(a, r, iw, w, 0)) { status = (int) (i + 1); break; }
   }
   free(iw);

@@ -1,7 +1,7 @@
 /* GENERATED FILE - DO NOT EDIT. C code emitted by CasADi for wheel_row_local() of
  * generated/na4/ (see its model.py), plus its batched driver.
  * Regenerate with: python -m snakecg_derive --checked-in
- * spec sha256: 12c4b8af26c9076865b78defc7f612c0db7d58189cff37ae79b4d828054cbcc2
+ * spec sha256: db1536eaaa55093bbe9104331da22db727d599bbbd37d742431adce08ea9331f
  * tools: sympy 1.14.0, casadi 3.8.2, jinja2 3.1.6
  */
 /* How to prefix internal symbols */

@@ -1,7 +1,7 @@
 /* GENERATED FILE - DO NOT EDIT. C code emitted by CasADi for link_jacobians() of
  * generated/na5/ (see its model.py), plus its batched driver.
  * Regenerate with: python -m snakecg_derive --checked-in
- * spec sha256: 31887cb66cfce0f15b05000e38db6c7ed945497ecc568e0987b88702131870a6
+ * spec sha256: a2d11c24d4176a7337125b71c8295163762d302b9468a78a7f172d9e0a64cce1
  * tools: sympy 1.14.0, casadi 3.8.2, jinja2 3.1.6
  */
 /* How to prefix internal symbols */

@@ -1,7 +1,7 @@
 /* GENERATED FILE - DO NOT EDIT. C code emitted by CasADi for scene_kinematics() of
  * generated/na5/ (see its model.py), plus its batched driver.
  * Regenerate with: python -m snakecg_derive --checked-in
- * spec sha256: 31887cb66cfce0f15b05000e38db6c7ed945497ecc568e0987b88702131870a6
+ * spec sha256: a2d11c24d4176a7337125b71c8295163762d302b9468a78a7f172d9e0a64cce1
  * tools: sympy 1.14.0, casadi 3.8.2, jinja2 3.1.6
  */
 /* How to prefix internal symbols */
@@ -30,6 +30,7 @@
 #define casadi_s2 CASADI_PREFIX(s2)
 #define casadi_s3 CASADI_PREFIX(s3)
 #define casadi_s4 CASADI_PREFIX(s4)
+#define casadi_s5 CASADI_PREFIX(s5)
 
 /* Symbol visibility in DLLs */
 #ifndef CASADI_SYMBOL_EXPORT
@@ -60,8 +61,9 @@ static const casadi_int casadi_s1[3] = {58, 1, 1};
 static const casadi_int casadi_s2[3] = {3, 6, 1};
 static const casadi_int casadi_s3[3] = {18, 8, 1};
 static const casadi_int casadi_s4[3] = {8, 8, 1};
+static const casadi_int casadi_s5[3] = {2, 6, 1};
 
-/* snakecg_na5_scene_kinematics:(q[8],K[58])->(poses[3x6],J[18x8],M[8x8]) */
+/* snakecg_na5_scene_kinematics:(q[8],K[58])->(poses[3x6],J[18x8],M[8x8],cs[2x6]) */
 static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
@@ -382,185 +384,197 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   if (res[2]!=0) res[2][0]=a07;
   if (res[2]!=0) res[2][1]=a45;
   a50=arg[1]? arg[1][30] : 0;
-  a48=(a50*a48);
-  a49=arg[1]? arg[1][29] : 0;
-  a44=(a49*a39);
-  a44=(a48+a44);
-  a35=arg[1]? arg[1][28] : 0;
-  a31=(a35*a30);
-  a31=(a44+a31);
-  a40=arg[1]? arg[1][27] : 0;
-  a41=(a40*a21);
-  a41=(a31+a41);
-  a37=arg[1]? arg[1][26] : 0;
-  a26=(a37*a11);
-  a26=(a41+a26);
-  a22=arg[1]? arg[1][25] : 0;
-  a10=(a22*a10);
-  a10=(a26+a10);
-  a10=(-a10);
-  if (res[2]!=0) res[2][2]=a10;
-  a42=(-a26);
-  if (res[2]!=0) res[2][3]=a42;
-  a43=(-a41);
-  if (res[2]!=0) res[2][4]=a43;
-  a32=(-a31);
-  if (res[2]!=0) res[2][5]=a32;
-  a28=(-a44);
-  if (res[2]!=0) res[2][6]=a28;
-  a17=(-a48);
-  if (res[2]!=0) res[2][7]=a17;
+  a49=(a50*a48);
+  a44=arg[1]? arg[1][29] : 0;
+  a35=(a44*a39);
+  a35=(a49+a35);
+  a31=arg[1]? arg[1][28] : 0;
+  a40=(a31*a30);
+  a40=(a35+a40);
+  a41=arg[1]? arg[1][27] : 0;
+  a37=(a41*a21);
+  a37=(a40+a37);
+  a26=arg[1]? arg[1][26] : 0;
+  a22=(a26*a11);
+  a22=(a37+a22);
+  a42=arg[1]? arg[1][25] : 0;
+  a43=(a42*a10);
+  a43=(a22+a43);
+  a43=(-a43);
+  if (res[2]!=0) res[2][2]=a43;
+  a32=(-a22);
+  if (res[2]!=0) res[2][3]=a32;
+  a28=(-a37);
+  if (res[2]!=0) res[2][4]=a28;
+  a17=(-a40);
+  if (res[2]!=0) res[2][5]=a17;
+  a12=(-a35);
+  if (res[2]!=0) res[2][6]=a12;
+  a33=(-a49);
+  if (res[2]!=0) res[2][7]=a33;
   if (res[2]!=0) res[2][8]=a45;
   if (res[2]!=0) res[2][9]=a07;
   a50=(a50*a47);
-  a49=(a49*a38);
-  a49=(a50+a49);
-  a35=(a35*a29);
-  a35=(a49+a35);
-  a40=(a40*a20);
-  a40=(a35+a40);
-  a37=(a37*a09);
-  a37=(a40+a37);
-  a22=(a22*a03);
-  a22=(a37+a22);
-  if (res[2]!=0) res[2][10]=a22;
-  if (res[2]!=0) res[2][11]=a37;
-  if (res[2]!=0) res[2][12]=a40;
-  if (res[2]!=0) res[2][13]=a35;
-  if (res[2]!=0) res[2][14]=a49;
+  a44=(a44*a38);
+  a44=(a50+a44);
+  a31=(a31*a29);
+  a31=(a44+a31);
+  a41=(a41*a20);
+  a41=(a31+a41);
+  a26=(a26*a09);
+  a26=(a41+a26);
+  a42=(a42*a03);
+  a42=(a26+a42);
+  if (res[2]!=0) res[2][10]=a42;
+  if (res[2]!=0) res[2][11]=a26;
+  if (res[2]!=0) res[2][12]=a41;
+  if (res[2]!=0) res[2][13]=a31;
+  if (res[2]!=0) res[2][14]=a44;
   if (res[2]!=0) res[2][15]=a50;
-  if (res[2]!=0) res[2][16]=a10;
-  if (res[2]!=0) res[2][17]=a22;
-  a38=(a38*a36);
-  a38=(a50*a38);
-  a39=(a39*a36);
-  a39=(a48*a39);
-  a38=(a38+a39);
-  a39=arg[1]? arg[1][57] : 0;
-  a36=(a38+a39);
-  a38=(a36+a38);
-  a22=arg[1]? arg[1][56] : 0;
-  a38=(a38+a22);
-  a29=(a29*a27);
-  a22=(a49*a29);
-  a30=(a30*a27);
-  a27=(a44*a30);
-  a22=(a22+a27);
-  a27=(a38+a22);
-  a22=(a27+a22);
-  a10=arg[1]? arg[1][55] : 0;
-  a22=(a22+a10);
-  a20=(a20*a18);
-  a10=(a35*a20);
-  a21=(a21*a18);
-  a18=(a31*a21);
-  a10=(a10+a18);
-  a18=(a22+a10);
-  a10=(a18+a10);
-  a03=arg[1]? arg[1][54] : 0;
-  a10=(a10+a03);
-  a09=(a09*a02);
-  a03=(a40*a09);
-  a11=(a11*a02);
-  a02=(a41*a11);
-  a03=(a03+a02);
-  a02=(a10+a03);
-  a03=(a02+a03);
-  a47=arg[1]? arg[1][53] : 0;
-  a03=(a03+a47);
-  a47=(a37*a05);
-  a26=(a26*a04);
-  a47=(a47+a26);
-  a26=(a03+a47);
-  a47=(a26+a47);
-  a07=arg[1]? arg[1][52] : 0;
-  a47=(a47+a07);
-  if (res[2]!=0) res[2][18]=a47;
-  if (res[2]!=0) res[2][19]=a26;
-  a47=(a40*a05);
-  a41=(a41*a04);
-  a47=(a47+a41);
-  a47=(a02+a47);
-  if (res[2]!=0) res[2][20]=a47;
-  a41=(a35*a09);
-  a07=(a31*a11);
-  a41=(a41+a07);
-  a41=(a18+a41);
-  a07=(a35*a05);
-  a31=(a31*a04);
-  a07=(a07+a31);
-  a07=(a41+a07);
-  if (res[2]!=0) res[2][21]=a07;
-  a31=(a49*a20);
-  a45=(a44*a21);
-  a31=(a31+a45);
-  a31=(a27+a31);
-  a45=(a49*a09);
-  a12=(a44*a11);
-  a45=(a45+a12);
-  a45=(a31+a45);
-  a12=(a49*a05);
-  a44=(a44*a04);
-  a12=(a12+a44);
-  a12=(a45+a12);
-  if (res[2]!=0) res[2][22]=a12;
-  a29=(a50*a29);
-  a30=(a48*a30);
-  a29=(a29+a30);
-  a29=(a36+a29);
-  a20=(a50*a20);
-  a21=(a48*a21);
-  a20=(a20+a21);
-  a20=(a29+a20);
-  a09=(a50*a09);
-  a11=(a48*a11);
-  a09=(a09+a11);
-  a09=(a20+a09);
+  if (res[2]!=0) res[2][16]=a43;
+  if (res[2]!=0) res[2][17]=a42;
+  a42=(a38*a36);
+  a42=(a50*a42);
+  a36=(a39*a36);
+  a36=(a49*a36);
+  a42=(a42+a36);
+  a36=arg[1]? arg[1][57] : 0;
+  a43=(a42+a36);
+  a42=(a43+a42);
+  a07=arg[1]? arg[1][56] : 0;
+  a42=(a42+a07);
+  a07=(a29*a27);
+  a45=(a44*a07);
+  a27=(a30*a27);
+  a34=(a35*a27);
+  a45=(a45+a34);
+  a34=(a42+a45);
+  a45=(a34+a45);
+  a23=arg[1]? arg[1][55] : 0;
+  a45=(a45+a23);
+  a23=(a20*a18);
+  a19=(a31*a23);
+  a18=(a21*a18);
+  a06=(a40*a18);
+  a19=(a19+a06);
+  a06=(a45+a19);
+  a19=(a06+a19);
+  a15=arg[1]? arg[1][54] : 0;
+  a19=(a19+a15);
+  a15=(a09*a02);
+  a24=(a41*a15);
+  a02=(a11*a02);
+  a25=(a37*a02);
+  a24=(a24+a25);
+  a25=(a19+a24);
+  a24=(a25+a24);
+  a13=arg[1]? arg[1][53] : 0;
+  a24=(a24+a13);
+  a13=(a26*a05);
+  a22=(a22*a04);
+  a13=(a13+a22);
+  a22=(a24+a13);
+  a13=(a22+a13);
+  a08=arg[1]? arg[1][52] : 0;
+  a13=(a13+a08);
+  if (res[2]!=0) res[2][18]=a13;
+  if (res[2]!=0) res[2][19]=a22;
+  a13=(a41*a05);
+  a37=(a37*a04);
+  a13=(a13+a37);
+  a13=(a25+a13);
+  if (res[2]!=0) res[2][20]=a13;
+  a37=(a31*a15);
+  a08=(a40*a02);
+  a37=(a37+a08);
+  a37=(a06+a37);
+  a08=(a31*a05);
+  a40=(a40*a04);
+  a08=(a08+a40);
+  a08=(a37+a08);
+  if (res[2]!=0) res[2][21]=a08;
+  a40=(a44*a23);
+  a00=(a35*a18);
+  a40=(a40+a00);
+  a40=(a34+a40);
+  a00=(a44*a15);
+  a01=(a35*a02);
+  a00=(a00+a01);
+  a00=(a40+a00);
+  a01=(a44*a05);
+  a35=(a35*a04);
+  a01=(a01+a35);
+  a01=(a00+a01);
+  if (res[2]!=0) res[2][22]=a01;
+  a07=(a50*a07);
+  a27=(a49*a27);
+  a07=(a07+a27);
+  a07=(a43+a07);
+  a23=(a50*a23);
+  a18=(a49*a18);
+  a23=(a23+a18);
+  a23=(a07+a23);
+  a15=(a50*a15);
+  a02=(a49*a02);
+  a15=(a15+a02);
+  a15=(a23+a15);
   a05=(a50*a05);
-  a48=(a48*a04);
-  a05=(a05+a48);
-  a05=(a09+a05);
+  a49=(a49*a04);
+  a05=(a05+a49);
+  a05=(a15+a05);
   if (res[2]!=0) res[2][23]=a05;
-  if (res[2]!=0) res[2][24]=a42;
-  if (res[2]!=0) res[2][25]=a37;
-  if (res[2]!=0) res[2][26]=a26;
-  if (res[2]!=0) res[2][27]=a03;
-  if (res[2]!=0) res[2][28]=a02;
-  if (res[2]!=0) res[2][29]=a41;
-  if (res[2]!=0) res[2][30]=a45;
-  if (res[2]!=0) res[2][31]=a09;
-  if (res[2]!=0) res[2][32]=a43;
-  if (res[2]!=0) res[2][33]=a40;
-  if (res[2]!=0) res[2][34]=a47;
-  if (res[2]!=0) res[2][35]=a02;
-  if (res[2]!=0) res[2][36]=a10;
-  if (res[2]!=0) res[2][37]=a18;
-  if (res[2]!=0) res[2][38]=a31;
-  if (res[2]!=0) res[2][39]=a20;
-  if (res[2]!=0) res[2][40]=a32;
-  if (res[2]!=0) res[2][41]=a35;
-  if (res[2]!=0) res[2][42]=a07;
-  if (res[2]!=0) res[2][43]=a41;
-  if (res[2]!=0) res[2][44]=a18;
-  if (res[2]!=0) res[2][45]=a22;
-  if (res[2]!=0) res[2][46]=a27;
-  if (res[2]!=0) res[2][47]=a29;
-  if (res[2]!=0) res[2][48]=a28;
-  if (res[2]!=0) res[2][49]=a49;
-  if (res[2]!=0) res[2][50]=a12;
-  if (res[2]!=0) res[2][51]=a45;
-  if (res[2]!=0) res[2][52]=a31;
-  if (res[2]!=0) res[2][53]=a27;
-  if (res[2]!=0) res[2][54]=a38;
-  if (res[2]!=0) res[2][55]=a36;
-  if (res[2]!=0) res[2][56]=a17;
+  if (res[2]!=0) res[2][24]=a32;
+  if (res[2]!=0) res[2][25]=a26;
+  if (res[2]!=0) res[2][26]=a22;
+  if (res[2]!=0) res[2][27]=a24;
+  if (res[2]!=0) res[2][28]=a25;
+  if (res[2]!=0) res[2][29]=a37;
+  if (res[2]!=0) res[2][30]=a00;
+  if (res[2]!=0) res[2][31]=a15;
+  if (res[2]!=0) res[2][32]=a28;
+  if (res[2]!=0) res[2][33]=a41;
+  if (res[2]!=0) res[2][34]=a13;
+  if (res[2]!=0) res[2][35]=a25;
+  if (res[2]!=0) res[2][36]=a19;
+  if (res[2]!=0) res[2][37]=a06;
+  if (res[2]!=0) res[2][38]=a40;
+  if (res[2]!=0) res[2][39]=a23;
+  if (res[2]!=0) res[2][40]=a17;
+  if (res[2]!=0) res[2][41]=a31;
+  if (res[2]!=0) res[2][42]=a08;
+  if (res[2]!=0) res[2][43]=a37;
+  if (res[2]!=0) res[2][44]=a06;
+  if (res[2]!=0) res[2][45]=a45;
+  if (res[2]!=0) res[2][46]=a34;
+  if (res[2]!=0) res[2][47]=a07;
+  if (res[2]!=0) res[2][48]=a12;
+  if (res[2]!=0) res[2][49]=a44;
+  if (res[2]!=0) res[2][50]=a01;
+  if (res[2]!=0) res[2][51]=a00;
+  if (res[2]!=0) res[2][52]=a40;
+  if (res[2]!=0) res[2][53]=a34;
+  if (res[2]!=0) res[2][54]=a42;
+  if (res[2]!=0) res[2][55]=a43;
+  if (res[2]!=0) res[2][56]=a33;
   if (res[2]!=0) res[2][57]=a50;
   if (res[2]!=0) res[2][58]=a05;
-  if (res[2]!=0) res[2][59]=a09;
-  if (res[2]!=0) res[2][60]=a20;
-  if (res[2]!=0) res[2][61]=a29;
-  if (res[2]!=0) res[2][62]=a36;
-  if (res[2]!=0) res[2][63]=a39;
+  if (res[2]!=0) res[2][59]=a15;
+  if (res[2]!=0) res[2][60]=a23;
+  if (res[2]!=0) res[2][61]=a07;
+  if (res[2]!=0) res[2][62]=a43;
+  if (res[2]!=0) res[2][63]=a36;
+  if (res[3]!=0) res[3][0]=a03;
+  if (res[3]!=0) res[3][1]=a10;
+  if (res[3]!=0) res[3][2]=a09;
+  if (res[3]!=0) res[3][3]=a11;
+  if (res[3]!=0) res[3][4]=a20;
+  if (res[3]!=0) res[3][5]=a21;
+  if (res[3]!=0) res[3][6]=a29;
+  if (res[3]!=0) res[3][7]=a30;
+  if (res[3]!=0) res[3][8]=a38;
+  if (res[3]!=0) res[3][9]=a39;
+  if (res[3]!=0) res[3][10]=a47;
+  if (res[3]!=0) res[3][11]=a48;
   return 0;
 }
 
@@ -583,7 +597,7 @@ CASADI_SYMBOL_EXPORT void snakecg_na5_scene_kinematics_decref(void) {
 
 CASADI_SYMBOL_EXPORT casadi_int snakecg_na5_scene_kinematics_n_in(void) { return 2;}
 
-CASADI_SYMBOL_EXPORT casadi_int snakecg_na5_scene_kinematics_n_out(void) { return 3;}
+CASADI_SYMBOL_EXPORT casadi_int snakecg_na5_scene_kinematics_n_out(void) { return 4;}
 
 CASADI_SYMBOL_EXPORT casadi_real snakecg_na5_scene_kinematics_default_in(casadi_int i) {
   switch (i) {
@@ -604,6 +618,7 @@ CASADI_SYMBOL_EXPORT const char* snakecg_na5_scene_kinematics_name_out(casadi_in
     case 0: return "poses";
     case 1: return "J";
     case 2: return "M";
+    case 3: return "cs";
     default: return 0;
   }
 }
@@ -621,13 +636,14 @@ CASADI_SYMBOL_EXPORT const casadi_int* snakecg_na5_scene_kinematics_sparsity_out
     case 0: return casadi_s2;
     case 1: return casadi_s3;
     case 2: return casadi_s4;
+    case 3: return casadi_s5;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT int snakecg_na5_scene_kinematics_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
   if (sz_arg) *sz_arg = 2;
-  if (sz_res) *sz_res = 3;
+  if (sz_res) *sz_res = 4;
   if (sz_iw) *sz_iw = 0;
   if (sz_w) *sz_w = 0;
   return 0;
@@ -635,7 +651,7 @@ CASADI_SYMBOL_EXPORT int snakecg_na5_scene_kinematics_work(casadi_int *sz_arg, c
 
 CASADI_SYMBOL_EXPORT int snakecg_na5_scene_kinematics_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
   if (sz_arg) *sz_arg = 2*sizeof(const casadi_real*);
-  if (sz_res) *sz_res = 3*sizeof(casadi_real*);
+  if (sz_res) *sz_res = 4*sizeof(casadi_real*);
   if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
   if (sz_w) *sz_w = 0*sizeof(casadi_real);
   return 0;
@@ -655,20 +671,21 @@ CASADI_SYMBOL_EXPORT int snakecg_na5_scene_kinematics_work_bytes(casadi_int *sz_
 CASADI_SYMBOL_EXPORT int snakecg_na5_batch_scene_kinematics(casadi_int n, const casadi_real** arg,
     const casadi_int* stride, casadi_real** res) {
   const casadi_real* a[2];
-  casadi_real* r[3];
+  casadi_real* r[4];
   casadi_int* iw = (casadi_int*) malloc(sizeof(casadi_int) * 1);
   casadi_real* w = (casadi_real*) malloc(sizeof(casadi_real) * 52);
   casadi_int i, k;
   int status = 0;
   if (!iw || !w) { free(iw); free(w); return -1; }
   for (k = 0; k < 2; ++k) a[k] = 0;
-  for (k = 0; k < 3; ++k) r[k] = 0;
+  for (k = 0; k < 4; ++k) r[k] = 0;
   for (i = 0; i < n; ++i) {
     a[0] = arg[0] + i * stride[0];
     a[1] = arg[1] + i * stride[1];
     r[0] = res[0] + i * 18;
     r[1] = res[1] + i * 144;
     r[2] = res[2] + i * 64;
+    r[3] = res[3] + i * 12;
     if (snakecg_na5_scene_kinematics(a, r, iw, w, 0)) { status = (int) (i + 1); break; }
   }
   free(iw);

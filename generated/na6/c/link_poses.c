@@ -1,7 +1,7 @@
 /* GENERATED FILE - DO NOT EDIT. C code emitted by CasADi for link_poses() of
  * generated/na6/ (see its model.py), plus its batched driver.
  * Regenerate with: python -m snakecg_derive --checked-in
- * spec sha256: f7610683561c20788ddf3d0525215e49565f7ade947806d15b1c4c2a12bd39c7
+ * spec sha256: 522fe595aab63e52670af90656908e991192d778246ab53ba223a16866b70733
  * tools: sympy 1.14.0, casadi 3.8.2, jinja2 3.1.6
  */
 /* How to prefix internal symbols */
