@@ -380,11 +380,15 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
     int same = 1;
     sc_int s = reread ? chunk : sweeps(&p, chunk, 1e-12);
     if (!reread) total_sweeps += s;
-    reread = 0;
     sc_read_states(&p, 1e-6, s < chunk || fails >= 2 ? 1e-6 : READ_SLIDE); /* (converged: 1e-6) */
     for (k = 0; k < nb; ++k)
       if (state[k] != prev[k]) same = 0;
-    if (same && s == chunk) continue;
+    if (same && s == chunk) { /* (a re-read as the margin's: as after its failed try) */
+      if (reread && chunk < 16 * CHUNK) chunk *= 2;
+      reread = 0;
+      continue;
+    }
+    reread = 0;
     memcpy(prev, state, sizeof(sc_int) * (size_t)nb);
     memcpy(keep, lam, sizeof(double) * (size_t)m);
     ok = active_set(&p, s < chunk ? 20 : TRY_PASSES, rest, iw2, &passes, &defect, res, 1);
