@@ -16,6 +16,7 @@
 
 #include "snakecg_layout.h"
 #include "engine.h"
+#include "scene_sets.h"
 
 
 
@@ -285,4 +286,37 @@ SC_INTERNAL int sc_min_norm_face(sc_problem *p, const double *Z, double *work) {
     for (r = 0; r < p->m; ++r) p->w[r] = p->b[r] + sc_dot(p->G + r * p->m, p->lam, p->m);
   }
   return 1;
+}
+
+/* The pieces read from the current lam and w (declared in scene_sets.h). */
+SC_INTERNAL void sc_read_states(sc_problem *p, double rel, double rel2) {
+  sc_int k;
+  for (k = 0; k < p->nb; ++k) {
+    sc_int r = p->start[k];
+    const double *q = p->par + 3 * k, *l = p->lam + r;
+    switch (p->kind[k]) {
+      case K_FREE: p->state[k] = S_HELD; break;
+      case K_UNILATERAL:
+        p->state[k] = l[0] > rel * p->fscale ? S_HELD : (p->w[r] > 0 ? S_ZERO : S_HELD);
+        break;
+      case K_BOX:
+        p->state[k] = !(q[0] > 0) ? S_ZERO : (fabs(l[0]) < q[0] * (1 - rel) ? S_HELD : S_SLIDE);
+        break;
+      default: {
+        double P[2], phi;
+        if (!(p->kind[k] == K_DISC ? q[0] > 0 : q[2] > 0 && (q[0] > 0 || q[1] > 0))) {
+          p->state[k] = S_ZERO;
+          break;
+        }
+        sc_block_P(p, k, l, P);
+        phi = P[0] * l[0] * l[0] + P[1] * l[1] * l[1];
+        p->state[k] = phi < (1 - rel2) * (1 - rel2) ? S_HELD : S_SLIDE;
+        if (p->state[k] == S_SLIDE) {
+          double g = -(p->w[r] * P[0] * l[0] + p->w[r + 1] * P[1] * l[1]) /
+                     (P[0] * P[0] * l[0] * l[0] + P[1] * P[1] * l[1] * l[1]);
+          p->gamma[k] = g > 0 ? g : 0.0;
+        }
+      }
+    }
+  }
 }

@@ -46,6 +46,7 @@
 
 #include "snakecg_layout.h"
 #include "engine.h"
+#include "scene_sets.h"
 #include "scene_tiny.h"
 
 enum { ST_SOLVED = 0, ST_NOT_CONVERGED = 1, ST_SINGULAR_MASS = 2, ST_BAD_INPUT = 3 }; /* status */
@@ -95,39 +96,6 @@ static sc_int sweeps(sc_problem *p, sc_int max_sweeps, double rel) {
   }
   sc_update_w(p);
   return s < max_sweeps ? s + 1 : max_sweeps;
-}
-
-/* Pieces read from the current lam (rel, rel2: relative tolerance on a 1-D, 2-D boundary). */
-static void read_states(sc_problem *p, double rel, double rel2) {
-  sc_int k;
-  for (k = 0; k < p->nb; ++k) {
-    sc_int r = p->start[k];
-    const double *q = p->par + 3 * k, *l = p->lam + r;
-    switch (p->kind[k]) {
-      case K_FREE: p->state[k] = S_HELD; break;
-      case K_UNILATERAL:
-        p->state[k] = l[0] > rel * p->fscale ? S_HELD : (p->w[r] > 0 ? S_ZERO : S_HELD);
-        break;
-      case K_BOX:
-        p->state[k] = !(q[0] > 0) ? S_ZERO : (fabs(l[0]) < q[0] * (1 - rel) ? S_HELD : S_SLIDE);
-        break;
-      default: {
-        double P[2], phi;
-        if (!(p->kind[k] == K_DISC ? q[0] > 0 : q[2] > 0 && (q[0] > 0 || q[1] > 0))) {
-          p->state[k] = S_ZERO;
-          break;
-        }
-        sc_block_P(p, k, l, P);
-        phi = P[0] * l[0] * l[0] + P[1] * l[1] * l[1];
-        p->state[k] = phi < (1 - rel2) * (1 - rel2) ? S_HELD : S_SLIDE;
-        if (p->state[k] == S_SLIDE) {
-          double g = -(p->w[r] * P[0] * l[0] + p->w[r + 1] * P[1] * l[1]) /
-                     (P[0] * P[0] * l[0] * l[0] + P[1] * P[1] * l[1] * l[1]);
-          p->gamma[k] = g > 0 ? g : 0.0;
-        }
-      }
-    }
-  }
 }
 
 /* The KKT residuals (relative): primal (outside the set), dual (w not in -N_K(lam)),
@@ -356,7 +324,7 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
   sc_int i, j, k, t, total_sweeps = 0, passes = 0, defect = 0, chunk = CHUNK;
   sc_int *state = iwork, *iw2 = iwork + nb, *prev = iw2 + 3 * (m + nb);
   sc_problem p;
-  int dep = 0, ok = 0, primal = 0;
+  int dep = 0, ok = 0, primal = 0, reread = 0, fails = 0;
   if (sc_tiny_solve(n, m, nb, M, f, A, c, kind, start, par, from, lam, a, w, state_out, info))
     return; /* (a tiny problem of one-row blocks: scene_tiny.c, the same steps compiled) */
   memset(info, 0, sizeof(double) * INFO_WIDTH);
@@ -404,22 +372,30 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
   /* block Gauss-Seidel sweeps in chunks, the pieces read after each and tried where they
    * read otherwise than at the last try (from a copy: the sweeps go on from their own point;
    * every failed try doubles the chunk, up to 16 times CHUNK), or when the sweeps converged
-   * (then they go on from the pieces' point, inside the polyhedral sets) */
+   * (then they go on from the pieces' point, inside the polyhedral sets). Against the margin's
+   * tries wandering (their passes switch many blocks at once): on the second failed one, the
+   * same point read with 1e-6 and tried, and every later reading so (fails: those tries) */
   for (k = 0; k < nb; ++k) prev[k] = -1;
   while (!ok && total_sweeps < max_sweeps) {
     int same = 1;
-    sc_int s = sweeps(&p, chunk, 1e-12);
-    total_sweeps += s;
-    read_states(&p, 1e-6, s < chunk ? 1e-6 : READ_SLIDE); /* (converged: as they are) */
+    sc_int s = reread ? chunk : sweeps(&p, chunk, 1e-12);
+    if (!reread) total_sweeps += s;
+    sc_read_states(&p, 1e-6, s < chunk || fails >= 2 ? 1e-6 : READ_SLIDE); /* (converged: 1e-6) */
     for (k = 0; k < nb; ++k)
       if (state[k] != prev[k]) same = 0;
-    if (same && s == chunk) continue;
+    if (same && s == chunk) { /* (a re-read as the margin's: as after its failed try) */
+      if (reread && chunk < 16 * CHUNK) chunk *= 2;
+      reread = 0;
+      continue;
+    }
+    reread = 0;
     memcpy(prev, state, sizeof(sc_int) * (size_t)nb);
     memcpy(keep, lam, sizeof(double) * (size_t)m);
     ok = active_set(&p, s < chunk ? 20 : TRY_PASSES, rest, iw2, &passes, &defect, res, 1);
     if (!ok && s == chunk) {
       memcpy(lam, keep, sizeof(double) * (size_t)m);
-      if (chunk < 16 * CHUNK) chunk *= 2;
+      if ((reread = ++fails == 2)) sc_update_w(&p); /* (w of this lam, for the reading) */
+      else if (chunk < 16 * CHUNK) chunk *= 2;
     }
     else if (!ok)
       for (k = 0; k < nb; ++k) {
