@@ -281,6 +281,9 @@ def _inputs_for(sig, model, rng, n):
             a = np.zeros(1)
         elif name == "placed":  # contact_system: the object given (0) or placed from q (1)
             a = np.array([float(rng.integers(2))])
+        elif name == "cs":  # bias_forces_cs: the links' cosines and sines, 2 x n_l by columns
+            phi = rng.normal(size=(n, size // 2)) if n > 1 else rng.normal(size=size // 2)
+            a = np.stack([np.cos(phi), np.sin(phi)], axis=-1).reshape(phi.shape[:-1] + (size,))
         elif name in ("q", "v", "tau", "q_obj", "v_obj", "f_obj", "link_pose", "link_twist",
                       "link_bias", "object_pose", "object_twist", "rho", "wheel_offset",
                       "lam_fixed", "contact_offset"):
