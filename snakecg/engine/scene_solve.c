@@ -50,13 +50,9 @@
 #include "scene_tiny.h"
 
 enum { ST_SOLVED = 0, ST_NOT_CONVERGED = 1, ST_SINGULAR_MASS = 2, ST_BAD_INPUT = 3 }; /* status */
-enum { INFO_STATUS = 0, INFO_DEPENDENT, INFO_PRIMAL, INFO_DUAL, INFO_COMPL, INFO_SWEEPS,
-       INFO_PASSES, INFO_RANK_DEFECT, INFO_WIDTH }; /* info fields */
 
-#define GUESS_PASSES 3 /* active-set passes from the held guess (rows <= coordinates) */
 #define TRY_PASSES 6 /* from pieces read before the sweeps converged */
 #define CHUNK 5 /* sweeps before the first reading of the pieces */
-#define FROM_PASSES 4 /* from the caller's start (the last time step's pieces) */
 #define READ_SLIDE 0.15 /* 2-D block read sliding within this of its boundary mid-sweeps */
 
 /* Gauss-Seidel sweeps until the largest change is below rel * scale; returns the sweeps.

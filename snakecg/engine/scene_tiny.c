@@ -32,6 +32,7 @@
 
 #include "snakecg_layout.h"
 #include "engine.h"
+#include "scene_sets.h"
 #include "scene_tiny.h"
 
 #if defined(__GNUC__)
@@ -40,11 +41,6 @@
 #define TINY_FLAT static inline
 #endif
 
-/* scene_solve.c's passes and info fields */
-#define GUESS_PASSES 3
-#define FROM_PASSES 4
-enum { INFO_STATUS = 0, INFO_DEPENDENT, INFO_PRIMAL, INFO_DUAL, INFO_COMPL, INFO_SWEEPS,
-       INFO_PASSES, INFO_RANK_DEFECT, INFO_WIDTH };
 /* G_HH's factor in the rows' order used where its pivots certainly stay above this of the
  * first (G_HH's condition about 1e3 at most: beyond, the unpivoted order's rounding showed,
  * 1.1e-10 of |a| against the pivoted factor's 1.7e-11 at a condition of 1,950) */
