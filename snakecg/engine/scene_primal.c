@@ -82,10 +82,10 @@ SC_INTERNAL sc_int sc_primal_work(sc_int n, sc_int m) {
   return n * n + 3 * n * m + m * m + 11 * n + 7 * m;
 }
 
-/* w_i = Z_i^T y + c_i of the sliding discs' rows (Zg: their columns first, n x nc; cg: their
- * offsets), their norms |w_i| (nws) and the objective's nonsmooth part sum s_i |w_i| (s: their
- * radii). */
-PRIMAL_FLAT double sliding(sc_int n, sc_int nc, sc_int ns, const double *s, const double *Zg,
+/* w_i = Z_i^T y + c_i of the sliding discs' rows (Zs: their columns first, row i at Zs + i ld;
+ * cg: their offsets), their norms |w_i| (nws) and the objective's nonsmooth part sum s_i |w_i|
+ * (s: their radii). */
+PRIMAL_FLAT double sliding(sc_int n, sc_int ld, sc_int ns, const double *s, const double *Zs,
                            const double *cg, const double *y, double *restrict ws,
                            double *restrict nws) {
   sc_int i, j;
@@ -94,7 +94,7 @@ PRIMAL_FLAT double sliding(sc_int n, sc_int nc, sc_int ns, const double *s, cons
     coordinates in order) */
     double w0 = cg[j], w1 = cg[j + 1], w2 = cg[j + 2], w3 = cg[j + 3];
     for (i = 0; i < n; ++i) {
-      const double *restrict zi = Zg + i * nc + j, yi = y[i];
+      const double *restrict zi = Zs + i * ld + j, yi = y[i];
       w0 += zi[0] * yi;
       w1 += zi[1] * yi;
       w2 += zi[2] * yi;
@@ -105,7 +105,7 @@ PRIMAL_FLAT double sliding(sc_int n, sc_int nc, sc_int ns, const double *s, cons
   for (; j < 2 * ns; j += 2) {
     double w0 = cg[j], w1 = cg[j + 1];
     for (i = 0; i < n; ++i) {
-      const double *restrict zi = Zg + i * nc + j, yi = y[i];
+      const double *restrict zi = Zs + i * ld + j, yi = y[i];
       w0 += zi[0] * yi;
       w1 += zi[1] * yi;
     }
@@ -152,6 +152,34 @@ PRIMAL_FLAT void every_w(sc_int n, sc_problem *p, const double *Z, const double 
     double w0 = c ? c[j] : 0.0;
     for (i = 0; i < n; ++i) w0 += Z[i * m + j] * y[i];
     p->w[j] = w0;
+  }
+}
+
+/* every row's w = Z^T y + c at the piece's last point y (Zc: the piece's gathered columns, the
+ * ns sliding discs' pairs, then the held rows'), each summed as every_w sums it (from the
+ * offset, over the coordinates in order): the sliding discs' their objective's (ws: the same
+ * sums at y), the held rows' by their gathered columns, the rest (zero, fixed) from Z */
+PRIMAL_FLAT void last_w(sc_int n, sc_problem *p, const double *Z, const double *Zc,
+                        const double *c, const double *y, const double *ws, sc_int ns) {
+  const sc_int m = p->m;
+  sc_int i, k, e, js = 0, jh = 0;
+  for (k = 0; k < p->nb; ++k) {
+    const sc_int r = p->start[k], nk = sc_block_size(p->kind[k]);
+    if (p->state[k] == S_SLIDE && p->kind[k] == K_DISC) {
+      p->w[r] = ws[2 * js], p->w[r + 1] = ws[2 * js + 1];
+      ++js;
+      continue;
+    }
+    for (e = 0; e < nk; ++e) {
+      double u = c ? c[r + e] : 0.0;
+      if (p->state[k] == S_HELD) {
+        const double *restrict zj = Zc + (2 * ns + jh++) * n;
+        for (i = 0; i < n; ++i) u += zj[i] * y[i];
+      } else {
+        for (i = 0; i < n; ++i) u += Z[i * m + r + e] * y[i];
+      }
+      p->w[r + e] = u;
+    }
   }
 }
 
@@ -205,9 +233,11 @@ PRIMAL_FLAT int piece(sc_int n, sc_problem *p, const double *Z, const double *g,
          *ws = lh + m, *rad = ws + m, *wt = rad + m, *bh = wt + m, *cg = bh + m, *Zg = cg + m,
          *Zc = Zg + n * m, *nws = Zc + n * m;
   sc_int *hr = iwork, *sl = hr + m, *perm = sl + m, h = 0, ns = 0, i, j, k, it, rank = 0;
-  double ysc, v = 0.0, big, prev = INFINITY;
+  double ysc, v = 0.0, dsq = 0.0, big, prev = INFINITY;
   int ok = 0, dep = 0, again = 0, fresh = 1;
-  sc_int nf, nc;
+  sc_int nf, lds;
+  const double *Zs;
+  int run;
   for (i = 0; i < n; ++i) gF[i] = g[i];
   for (k = 0; k < nb; ++k) { /* the piece: held rows, fixed forces, sliding discs */
     sc_int r = p->start[k], nk = sc_block_size(p->kind[k]);
@@ -231,31 +261,45 @@ PRIMAL_FLAT int piece(sc_int n, sc_problem *p, const double *Z, const double *g,
       return 0; /* a sliding split ellipse, or a sliding one-row block */
     }
   }
-  /* the start: y = g_F + Z (lam_H, lam_S) at the caller's forces; the piece's columns of Z
-   * gathered (Zg, n x nc: the sliding discs' pairs, then the held rows; Zc, nc x n: the same
-   * transposed, each column contiguous for the loops over the coordinates) */
-  nc = 2 * ns + h;
+  /* the piece's columns of Z gathered (Zc, (2 ns + h) x n: the sliding discs' pairs, then
+   * the held rows', each column contiguous for the loops over the coordinates; the discs'
+   * rows also by coordinates for their w, Zs with row stride lds: in Z itself where they are
+   * one run of rows, sl[j] = sl[0] + 2 j, the pegs row's ground, else gathered in Zg) and
+   * the start y = g_F + Z (lam_S, lam_H) at the caller's forces, column by column */
+  for (j = 1, run = ns > 0; j < ns && run; ++j) run = sl[j] == sl[0] + 2 * j;
   for (j = 0; j < 2 * ns; ++j) cg[j] = c ? c[sl[j / 2] + j % 2] : 0.0;
   for (j = 0; j < h; ++j) cg[2 * ns + j] = c ? c[hr[j]] : 0.0;
-  for (i = 0; i < n; ++i) {
-    const double *zi = Z + i * m;
-    double *restrict gi = Zg + i * nc, *restrict ci = Zc + i, s = gF[i];
-    for (j = 0; j < ns; ++j) {
-      gi[2 * j] = ci[2 * j * n] = zi[sl[j]];
-      gi[2 * j + 1] = ci[(2 * j + 1) * n] = zi[sl[j] + 1];
-      s += gi[2 * j] * p->lam[sl[j]] + gi[2 * j + 1] * p->lam[sl[j] + 1];
-    }
-    for (j = 0; j < h; ++j) {
-      gi[2 * ns + j] = ci[(2 * ns + j) * n] = zi[hr[j]];
-      s += gi[2 * ns + j] * p->lam[hr[j]];
-    }
-    y[i] = s;
+  for (i = 0; i < n; ++i) y[i] = gF[i];
+  for (j = 0; j < ns; ++j) {
+    double *restrict z0 = Zc + 2 * j * n, *restrict z1 = z0 + n, *restrict yy = y;
+    const double *zr = Z + sl[j], l0 = p->lam[sl[j]], l1 = p->lam[sl[j] + 1];
+    for (i = 0; i < n; ++i) z0[i] = zr[i * m], z1[i] = zr[i * m + 1];
+    for (i = 0; i < n; ++i) yy[i] += z0[i] * l0 + z1[i] * l1;
+  }
+  for (j = 0; j < h; ++j) {
+    double *restrict zj = Zc + (2 * ns + j) * n, *restrict yy = y;
+    const double *zr = Z + hr[j], l = p->lam[hr[j]];
+    for (i = 0; i < n; ++i) zj[i] = zr[i * m];
+    for (i = 0; i < n; ++i) yy[i] += zj[i] * l;
+  }
+  if (run) {
+    Zs = Z + sl[0];
+    lds = m;
+  } else {
+    for (i = 0; i < n; ++i)
+      for (j = 0; j < 2 * ns; ++j) Zg[i * 2 * ns + j] = Zc[j * n + i];
+    Zs = Zg;
+    lds = 2 * ns;
   }
   ysc = sqrt(p->fscale * p->wscale);
   for (it = 0; it < PRIMAL_STEPS; ++it) {
     double step = 0.0, tstep = 1.0, ymax = ysc;
     int feasible = it > 0;
-    if (it == 0) v = sliding(n, nc, ns, rad, Zg, cg, y, ws, nws);
+    if (it == 0) { /* (the objective: its nonsmooth part v, |y - g_F|^2 dsq; then the accepted
+      point's, kept) */
+      v = sliding(n, lds, ns, rad, Zs, cg, y, ws, nws);
+      for (i = 0, dsq = 0.0; i < n; ++i) dsq += (y[i] - gF[i]) * (y[i] - gF[i]);
+    }
     /* the gradient y - g_F + sum s_j Z_j u_j and (fresh) the Hessian I + T T^T (T's column j:
      * sqrt(s_j / |w_j|) v_j, contiguous in Y's room) */
     for (i = 0; i < n; ++i) grad[i] = y[i] - gF[i];
@@ -358,20 +402,20 @@ PRIMAL_FLAT int piece(sc_int n, sc_problem *p, const double *Z, const double *g,
     step /= ymax;
     if (!(step <= 1e-15)) { /* the step, halved while the objective rises (from a feasible
       point: the first step also brings the held rows to w_H = 0) */
-      double v0 = v, d0 = 0.0, d1 = 0.0, vt;
-      for (i = 0; i < n; ++i) d0 += (y[i] - gF[i]) * (y[i] - gF[i]);
+      double v0 = v, d0 = dsq, d1 = 0.0, vt, *swap;
       for (;;) {
         for (i = 0; i < n; ++i) yt[i] = y[i] + tstep * dy[i];
         d1 = 0.0;
         for (i = 0; i < n; ++i) d1 += (yt[i] - gF[i]) * (yt[i] - gF[i]);
-        vt = sliding(n, nc, ns, rad, Zg, cg, yt, ws, nws);
+        vt = sliding(n, lds, ns, rad, Zs, cg, yt, ws, nws);
         big = 1e-14 * (fabs(0.5 * d0 + v0) + p->fscale * p->wscale);
         if (!feasible || 0.5 * d1 + vt <= 0.5 * d0 + v0 + big || tstep < 1e-3) break;
         tstep *= 0.5;
       }
       if (tstep < 1e-3) return 0;
-      memcpy(y, yt, sizeof(double) * (size_t)n);
+      swap = y, y = yt, yt = swap;
       v = vt;
+      dsq = d1;
     }
     /* converged where the next step falls below rounding: after a Newton step quadratic in
      * this full one (its constant from the last two, at least 1), after a chord step this
@@ -401,7 +445,7 @@ PRIMAL_FLAT int piece(sc_int n, sc_problem *p, const double *Z, const double *g,
     p->lam[sl[j] + 1] = -rad[j] * w1 / nw;
   }
   *def = h - rank;
-  every_w(n, p, Z, g, c, y);
+  last_w(n, p, Z, Zc, c, y, ws, ns); /* (y: g + Z lam to the step's rounding) */
   /* the face: the held rows and every block's without acceleration (sliding at rounding's
    * speed, an open contact closing at none); where its rows are dependent, its forces the
    * minimum-norm ones (sc_min_norm_face's), kept where they are in their sets */
