@@ -519,7 +519,7 @@ typedef struct {
   sc_int *state;
   double fscale, wscale;
 } sc_problem;
-SC_INTERNAL sc_int sc_block_size(sc_int kind);
+static inline sc_int sc_block_size(sc_int kind) { return kind >= K_DISC ? 2 : 1; }
 SC_INTERNAL void sc_block_P(const sc_problem *p, sc_int k, const double *l, double *P);
 enum { S_HELD = 0, S_ZERO = 1, S_SLIDE = 2 }; /* a block's state */
 #define TOL_ACCEPT 1e-9 /* a row's acceleration is zero within this of its scale */

@@ -18,11 +18,6 @@
 #include "engine.h"
 #include "scene_sets.h"
 
-
-
-
-SC_INTERNAL sc_int sc_block_size(sc_int kind) { return kind >= K_DISC ? 2 : 1; }
-
 /* P of a 2-D block at lam (diag, 2 entries): the set is lam^T P lam <= 1 */
 SC_INTERNAL void sc_block_P(const sc_problem *p, sc_int k, const double *l, double *P) {
   const double *q = p->par + 3 * k;

@@ -217,7 +217,7 @@ static void start_from(sc_problem *p, const double *from) {
   for (k = 0; k < p->nb; ++k) {
     const double *q = p->par + 3 * k, *s = from + 3 * k;
     const sc_int kind = p->kind[k], r = p->start[k], code = (sc_int)s[0],
-                 nk = sc_block_size(kind); /* (called once: another file's) */
+                 nk = sc_block_size(kind);
     int zero = kind == K_BOX ? !(q[0] > 0) : kind == K_DISC ? !(q[0] > 0) :
                kind == K_SPLIT ? !(q[2] > 0 && (q[0] > 0 || q[1] > 0)) : 0;
     p->gamma[k] = 0.0;
