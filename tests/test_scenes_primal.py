@@ -226,6 +226,55 @@ def test_every_kind_it_treats_on_random_problems(pegs):
     assert answered >= 6
 
 
+def test_sliding_discs_apart_and_zero_rows_on_random_problems(pegs):
+    """Sliding discs whose rows are not one run (a stuck disc and a contact between them:
+    their columns gathered apart), contacts open (zero rows, w from Z) or held, from each
+    problem's own pieces: the primal's answers the same as the cold solve (1e-12), V to 1e-9
+    of Clarabel's primal polished on its piece, and every row's w equal to A V + c (NumPy,
+    1e-12 of its scale) for the forces to match the accelerations."""
+    rng = np.random.default_rng(11)
+    core = pegs[0].core
+    apart = 0
+    kind = np.array([DISC, DISC, DISC, UNILATERAL, DISC, UNILATERAL])
+    start = np.array([0, 2, 4, 6, 7, 9])
+    n, m = 7, 10
+    for _ in range(16):
+        B = rng.normal(size=(n, n))
+        M = B @ B.T + n * np.eye(n)
+        A = rng.normal(size=(m, n))
+        par = np.zeros((len(kind), 3))
+        par[[0, 2, 4], 0] = rng.uniform(0.05, 0.3, 3)  # small discs: sliding
+        par[1, 0] = 50.0  # a large one: stuck
+        c = np.zeros(m)
+        c[[6, 9]] = rng.uniform(-0.5, 0.5, 2)
+        p = dict(n=n, m=m, nb=len(kind), M=M, f=rng.normal(size=n), A=A, c=c, kind=kind,
+                 start=start, par=par.reshape(-1))
+        core.scene_primal(1, None)
+        cold = _solve(core, p, None)
+        assert cold["info"]["status"] == 0
+        frm = np.zeros((len(kind), 3))
+        frm[:, 0] = cold["state"]
+        for b, (k, s) in enumerate(zip(kind, start)):
+            frm[b, 1:3 if k >= DISC else 2] = cold["lam"][s:s + (2 if k >= DISC else 1)]
+        _counts(core)
+        out = _solve(core, p, frm)
+        tries, ans = _counts(core)
+        sliding = [b for b in range(len(kind)) if kind[b] == DISC and out["state"][b] == 2]
+        rows = np.concatenate([[start[b], start[b] + 1] for b in sliding]) if sliding else []
+        if ans and len(rows) and rows[-1] - rows[0] + 1 > len(rows):
+            apart += 1
+        np.testing.assert_allclose(out["a"], cold["a"], rtol=0,
+                                   atol=1e-12 * np.abs(cold["a"]).max())
+        w = A @ out["a"] + c
+        np.testing.assert_allclose(out["w"], w, rtol=0, atol=1e-12 * np.abs(w).max())
+        V0, lam0 = _primal_reference(p)
+        V, lam = _polished(p, V0, lam0)
+        np.testing.assert_allclose(out["a"], V, rtol=0, atol=1e-9 * np.abs(V).max())
+        if ans and out["info"]["dependent"] == 0:
+            np.testing.assert_allclose(out["lam"], lam, rtol=0, atol=1e-9 * np.abs(lam).max())
+    assert apart >= 4
+
+
 def _step_problems(model, run, ks, steps=1):
     """The solve's problem of the steps at samples ks of a run (the step's M V + h (tau -
     bias) at the end's rows, the sets times h, the gaps over h) and its warm pieces, after
