@@ -16,11 +16,13 @@
  * point, the Hessian of the first: each contracts by about the first step's size, 1e-5 of y
  * on a pegs step) while each contracts by a tenth at least, else a Newton step again; the
  * step halved while the objective rises; converged where the next step falls below rounding.
- * Then y = g + Z lam with lam_H the multipliers and lam_i = -s_i w_i / |w_i|: the same forces
- * and the same a as the dual's piece, without G = Z^T Z. What it does not treat it leaves
- * (returns 0) to scene_solve.c's dual path: a sliding split ellipse; held rows dependent (or
- * nearly: pivots of Y^T Y below PRIMAL_DEP of the first); a sliding disc whose sliding |w_i|
- * falls to rounding; no convergence within PRIMAL_STEPS steps. */
+ * Then the forces lam_H the multipliers and lam_i = -s_i w_i / |w_i|, every row's w and a
+ * from the last y (g + Z lam but for the next step's size, below rounding; g + Z lam itself
+ * where forces are then moved): the dual's piece's forces and a, without G = Z^T Z. What it
+ * does not treat it leaves (returns 0) to scene_solve.c's dual path: a sliding split
+ * ellipse; held rows dependent (or nearly: pivots of Y^T Y below PRIMAL_DEP of the first); a
+ * sliding disc whose sliding |w_i| falls to rounding; no convergence within PRIMAL_STEPS
+ * steps. */
 #include <math.h>
 #include <string.h>
 
@@ -220,10 +222,10 @@ static sc_int face_rank(sc_problem *p, const double *Z, const sc_int *F, sc_int 
 }
 
 /* The piece of p->state (its forces' start in p->lam) solved in the primal: p->lam and p->w
- * (every row's, w = Z^T (g + Z lam) + c) filled. g = L^-1 f, Z = L^-1 A^T (n x m,
- * coordinate i's row at Z + i m; M = L L^T), c the rows' offsets (or NULL). Returns 1 when
- * solved with unique forces, 2 with the face's minimum-norm ones (def: the held rows' rank
- * defect; work's first n: g + Z lam), 0 when left to the dual path (p->lam, p->w then
+ * (every row's, w = Z^T y + c, y = g + Z lam to rounding) filled. g = L^-1 f, Z = L^-1 A^T
+ * (n x m, coordinate i's row at Z + i m; M = L L^T), c the rows' offsets (or NULL). Returns 1
+ * when solved with unique forces, 2 with the face's minimum-norm ones (def: the held rows'
+ * rank defect; work's first n: y), 0 when left to the dual path (p->lam, p->w then
  * undefined). */
 PRIMAL_FLAT int piece(sc_int n, sc_problem *p, const double *Z, const double *g,
                       const double *c, double *work, sc_int *iwork, sc_int *def) {
@@ -472,7 +474,7 @@ PRIMAL_FLAT int piece(sc_int n, sc_problem *p, const double *Z, const double *g,
       again = 1;
     }
   if (again || dep) every_w(n, p, Z, g, c, y);
-  memcpy(work, y, sizeof(double) * (size_t)n); /* (g + Z lam, for the accelerations) */
+  memcpy(work, y, sizeof(double) * (size_t)n); /* (y, for the accelerations) */
   return 1 + dep;
 }
 
