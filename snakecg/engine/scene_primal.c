@@ -238,7 +238,7 @@ PRIMAL_FLAT int piece(sc_int n, sc_problem *p, const double *Z, const double *g,
   double ysc, v = 0.0, dsq = 0.0, big, prev = INFINITY;
   int ok = 0, dep = 0, again = 0, fresh = 1;
   sc_int nf, lds;
-  const double *Zs;
+  const double *Zs, *cs;
   int run;
   for (i = 0; i < n; ++i) gF[i] = g[i];
   for (k = 0; k < nb; ++k) { /* the piece: held rows, fixed forces, sliding discs */
@@ -269,7 +269,9 @@ PRIMAL_FLAT int piece(sc_int n, sc_problem *p, const double *Z, const double *g,
    * one run of rows, sl[j] = sl[0] + 2 j, the pegs row's ground, else gathered in Zg) and
    * the start y = g_F + Z (lam_S, lam_H) at the caller's forces, column by column */
   for (j = 1, run = ns > 0; j < ns && run; ++j) run = sl[j] == sl[0] + 2 * j;
-  for (j = 0; j < 2 * ns; ++j) cg[j] = c ? c[sl[j / 2] + j % 2] : 0.0;
+  if (run && c) cs = c + sl[0]; /* (the discs' offsets: in c where one run, else gathered) */
+  else
+    for (j = 0, cs = cg; j < 2 * ns; ++j) cg[j] = c ? c[sl[j / 2] + j % 2] : 0.0;
   for (j = 0; j < h; ++j) cg[2 * ns + j] = c ? c[hr[j]] : 0.0;
   for (i = 0; i < n; ++i) y[i] = gF[i];
   for (j = 0; j < ns; ++j) {
@@ -299,7 +301,7 @@ PRIMAL_FLAT int piece(sc_int n, sc_problem *p, const double *Z, const double *g,
     int feasible = it > 0;
     if (it == 0) { /* (the objective: its nonsmooth part v, |y - g_F|^2 dsq; then the accepted
       point's, kept) */
-      v = sliding(n, lds, ns, rad, Zs, cg, y, ws, nws);
+      v = sliding(n, lds, ns, rad, Zs, cs, y, ws, nws);
       for (i = 0, dsq = 0.0; i < n; ++i) dsq += (y[i] - gF[i]) * (y[i] - gF[i]);
     }
     /* the gradient y - g_F + sum s_j Z_j u_j and (fresh) the Hessian I + T T^T (T's column j:
@@ -409,7 +411,7 @@ PRIMAL_FLAT int piece(sc_int n, sc_problem *p, const double *Z, const double *g,
         for (i = 0; i < n; ++i) yt[i] = y[i] + tstep * dy[i];
         d1 = 0.0;
         for (i = 0; i < n; ++i) d1 += (yt[i] - gF[i]) * (yt[i] - gF[i]);
-        vt = sliding(n, lds, ns, rad, Zs, cg, yt, ws, nws);
+        vt = sliding(n, lds, ns, rad, Zs, cs, yt, ws, nws);
         big = 1e-14 * (fabs(0.5 * d0 + v0) + p->fscale * p->wscale);
         if (!feasible || 0.5 * d1 + vt <= 0.5 * d0 + v0 + big || tstep < 1e-3) break;
         tstep *= 0.5;
