@@ -25,6 +25,7 @@
 
 #include "snakecg_layout.h"
 #include "engine.h"
+#include "scene_sets.h"
 
 /* held rows dependent where a pivot of their equations falls below this ratio to the first
  * (snakecg.solver.PIVOT_TOL): nearly dependent rows are statically indeterminate to double

@@ -28,6 +28,7 @@
 
 #include "snakecg_layout.h"
 #include "engine.h"
+#include "scene_sets.h"
 
 #if defined(__GNUC__) /* (inlined where the caller makes the size a constant) */
 #define PRIMAL_FLAT static inline __attribute__((always_inline))

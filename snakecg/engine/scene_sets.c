@@ -18,18 +18,6 @@
 #include "engine.h"
 #include "scene_sets.h"
 
-/* P of a 2-D block at lam (diag, 2 entries): the set is lam^T P lam <= 1 */
-SC_INTERNAL void sc_block_P(const sc_problem *p, sc_int k, const double *l, double *P) {
-  const double *q = p->par + 3 * k;
-  if (p->kind[k] == K_DISC) {
-    P[0] = P[1] = 1.0 / (q[0] * q[0]);
-  } else {
-    double st = l[0] < 0 ? q[0] : q[1];
-    P[0] = 1.0 / (st * st);
-    P[1] = 1.0 / (q[2] * q[2]);
-  }
-}
-
 /* The exact minimiser over block k's set of 1/2 l^T H l + c^T l (H = G_kk). */
 SC_INTERNAL void sc_block_min(const sc_problem *p, sc_int k, const double *c, double *l) {
   const sc_int r = p->start[k], m = p->m;
@@ -137,14 +125,6 @@ SC_INTERNAL int sc_in_set(const sc_problem *p, sc_int k, double *l, double tol, 
       }
       return 1;
   }
-}
-
-/* 1 if block k's rows do not accelerate (|w| within the acceptance tolerance). */
-SC_INTERNAL int sc_still(const sc_problem *p, sc_int k) {
-  sc_int i;
-  for (i = 0; i < sc_block_size(p->kind[k]); ++i)
-    if (fabs(p->w[p->start[k] + i]) > TOL_ACCEPT * p->wscale) return 0;
-  return 1;
 }
 
 /* An orthonormal basis of the null space of the positive semidefinite n x n A (row-major;
