@@ -479,10 +479,12 @@ answered:
     for (j = 0; j < k; ++j) t += zi[iw2[j]] * lam[iw2[j]];
     a[i] = t;
   }
-  for (i = n - 1; i >= 0; --i) { /* (L's column i is zero from t on, below i) */
-    double s = a[i];
-    for (k = i + 1; k < (i < t ? t : 0); ++k) s -= L[k * n + i] * a[k];
-    a[i] = s / L[i * n + i];
+  for (i = n - 1; i >= 0; --i) { /* (by L's rows, contiguous: vectorised; its rows from t on
+    are their diagonal) */
+    const double ai = a[i] / L[i * n + i], *restrict li = L + i * n;
+    double *restrict ak = a;
+    a[i] = ai;
+    for (k = 0; k < (i < t ? i : 0); ++k) ak[k] -= li[k] * ai;
   }
   if (!ok) {
     for (i = 0; i < n; ++i) a[i] = NAN;
