@@ -272,7 +272,7 @@ def test_sliding_discs_apart_and_zero_rows_on_random_problems(pegs):
         np.testing.assert_allclose(out["a"], V, rtol=0, atol=1e-9 * np.abs(V).max())
         if ans and out["info"]["dependent"] == 0:
             np.testing.assert_allclose(out["lam"], lam, rtol=0, atol=1e-9 * np.abs(lam).max())
-    assert apart >= 4
+    assert apart >= 8  # (12 of the 16 with this seed)
 
 
 def _step_problems(model, run, ks, steps=1):
