@@ -47,9 +47,11 @@ class Core:
             lib.entry_or_none(name) for name in ("core_scene_rows", "core_scene_gaps"))
         """scene_rows.c's ``core_scene_rows`` and ``core_scene_gaps``: a general scene's rows,
         and its pairs' distances, at a simulation's state (a ``SceneStateCall``)."""
-        self.scene_place = lib.entry_or_none("core_scene_place")
+        self.scene_place, self.scene_place_q = (
+            lib.entry_or_none(name) for name in ("core_scene_place", "core_scene_place_q"))
         """scene_place.c's ``core_scene_place``: a general scene's objects placed at link
-        poses (the placement of its forward)."""
+        poses (the placement of its forward); ``core_scene_place_q``: the same at one
+        configuration (its link poses taken there)."""
         self.scene_step = lib.entry_or_none("core_scene_step")
         """scene_step.c's ``core_scene_step``: one time step of a general scene (a
         ``SceneStep``)."""

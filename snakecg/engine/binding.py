@@ -83,6 +83,7 @@ PROTOTYPES: dict[str, tuple[list, object]] = {
     "core_scene_gaps": ([_P], _INT),
     # scene_place.c
     "core_scene_place": ([_P, _I, _P, _P], _INT),
+    "core_scene_place_q": ([_P, _P, _P], _INT),
     # scene_step.c, scene_run.c
     "core_scene_step": ([_P], _INT),
     "core_scene_run": ([_P], _INT),

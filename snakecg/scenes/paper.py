@@ -71,17 +71,35 @@ def _plate_model(model):
     return got
 
 
-def _deepest(model, check, run):
-    """``check.deepest`` at the run's samples, by the paper model's own contact check of a
-    run (:class:`snakecg.simulate.contact_check.RunCheck`: compiled where the model is)."""
+def _run_check(model, tolerance):
+    """The paper's contact check of a run with ``tolerance`` (m): its
+    :class:`snakecg.geometry.ContactCheck` (every link a segment against the plate, the links
+    against each other) and the model's check of a run over it
+    (:class:`snakecg.simulate.contact_check.RunCheck`: compiled where the model is), made once
+    per tolerance (kept in the model's data's derived constants)."""
+    from ..geometry import ContactCheck
     from ..simulate.contact_check import RunCheck
     from ..simulate.dynamics import N_WORK
 
-    ns = run.q.shape[1]
-    rc = RunCheck(model, "report", ns, 2 * (ns + 3) + N_WORK, shape=check)  # the state y
-    Y = np.zeros((len(run.t), rc.ny))
-    Y[:, :ns], Y[:, ns:ns + 3] = run.q, run.q_obj[:, 0]
-    return rc.deepest(Y)
+    derived = model.data().derived
+    key = ("scenes.plate_check", float(tolerance))
+    got = derived.get(key)
+    if got is None:
+        check = ContactCheck.of_scene(model.scene, tolerance=tolerance, radius=0.0)
+        ns = model.n_coordinates
+        got = derived[key] = (check, RunCheck(model, "report", ns, 2 * (ns + 3) + N_WORK,
+                                              shape=check))  # the state y = (q, q_obj, ...)
+    return got
+
+
+def _deepest(model, run):
+    """``deepest`` of the paper's contact check (:func:`_run_check`) at the run's samples,
+    and the check."""
+    check, rc = _run_check(model, run.tolerance)
+    states = run.states()
+    Y = np.empty((len(states), rc.ny))  # the check reads q and q_obj of each
+    Y[:, :states.shape[1]] = states
+    return check, rc.deepest(Y)
 
 
 def _checked(model, run):
@@ -90,12 +108,9 @@ def _checked(model, run):
     tolerance: a completed run that overlaps beyond it at a sample says so (status
     ``penetration`` or ``self_contact``, ``violation`` at the first such sample), the
     trajectory kept whole."""
-    from ..geometry import ContactCheck
-
-    if run.status != "completed" or not len(run.t):
+    if run.status != "completed":
         return run
-    check = ContactCheck.of_scene(model.scene, tolerance=run.tolerance, radius=0.0)  # segments
-    depth, pair = _deepest(model, check, run)
+    check, (depth, pair) = _deepest(model, run)
     beyond = np.flatnonzero(depth > run.tolerance)
     if beyond.size:
         k = int(beyond[0])

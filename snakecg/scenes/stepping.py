@@ -146,13 +146,37 @@ class _Stepper:
         self.args = SceneStep(model._pk, float(tol), 0.0, IMPACT_SPEED, *ad, eng.ccap, mcap,
                               *bufs, 0, None if cold else self.pieces.ctypes.data, 0)
         self._address = address(self.args)
-        self._step = core.scene_step
+        self._step, self._place, self._x = core.scene_step, core.scene_place_q, ad[2]
+        self.runner = None  # the run's loop over this step (a pooled stepper keeps its own)
+
+    def reset(self, f_obj) -> None:
+        """Ready for a new run (a pooled stepper, :func:`_take`): the wrench on the objects,
+        the run's accumulators from zero, the warm start as the environment says now; the
+        rest is written by :meth:`begin` (its rows, the pieces forgotten)."""
+        self.fo[:3 * self.no] = f_obj
+        self.acc[:] = 0.0
+        self.acc[ST_SLIDING_COS] = -1.0
+        cold = os.environ.get(COLD_START_ENV, "") not in ("", "0")
+        self.args.from_ = None if cold else self.pieces.ctypes.data
+        self.args.nfrom = 0
+        self.args.status = 0
+
+    def place(self, q) -> None:
+        """``q`` and the objects placed by the scene at it into the state ``x`` (the engine's
+        placement, ``core_scene_place_q``: :meth:`~snakecg.scenes.model.GeneralSceneModel.
+        object_poses`' numbers)."""
+        self.x[:self.ns] = q
+        if self._place(self.model._pk, self._x, self._x + 8 * self.ns):
+            raise MemoryError("the scene's placement ran out of memory")
 
     def begin(self, q, qo, v, vo) -> int:
-        """The run's start: the state (``qo``, ``vo``: ``(n_objects, 3)`` or flat; ``v``,
-        ``vo`` None: at rest) and the rows found there (:meth:`call` with ``h = 0``)."""
+        """The run's start: the state (``qo``, ``vo``: ``(n_objects, 3)`` or flat; ``qo``
+        None: the objects in ``x`` as they are, from :meth:`place`; ``v``, ``vo`` None: at
+        rest) and the rows found there (:meth:`call` with ``h = 0``)."""
         ns = self.ns
-        self.x[:ns], self.x[ns:] = q, np.asarray(qo).reshape(-1)
+        self.x[:ns] = q
+        if qo is not None:
+            self.x[ns:] = np.asarray(qo).reshape(-1)
         self.V[:ns] = 0.0 if v is None else v
         self.V[ns:] = 0.0 if vo is None else np.asarray(vo).reshape(-1)
         return self.call(0.0)
@@ -224,7 +248,8 @@ class _Runner:
     """One run's loop in the engine (``core_scene_run``, ``snakecg/engine/scene_run.c``) over
     a :class:`_Stepper`: its arguments, the torque law's parameters, the record's buffer
     (``cap`` rows of ``t, x, V, tau, acc``; ``every``: keep every k-th step, 0 none) and the
-    pairs' distances of the root finding (their own call and buffers)."""
+    pairs' distances of the root finding (their own call and buffers). :meth:`reset` readies
+    it for another run of the same stepper."""
 
     def __init__(self, st: _Stepper, duration, dt, law: str, params, every: int, cap: int,
                  stop_at_impacts: bool = True, pause: int | None = None):
@@ -238,17 +263,31 @@ class _Runner:
         self.gs = SceneStateCall(model._pk, self.gq.ctypes.data, self.gqo.ctypes.data,
                                  eng.tol, 0.0, eng.gcap, eng.mcap, -1, -1,
                                  self.gout.ctypes.data, None, None, None, None, None)
-        self.lp = np.zeros(1) if params is None else np.ascontiguousarray(params, dtype=float)
-        self.rec = np.zeros((max(1, cap) if every else 1, self.width))
+        self.rec = np.zeros((1, self.width))
         self.work = np.zeros(2 * st.n + 5 * eng.gcap)
-        self.args = SceneRunCall(st._address, address(self.gs), eng.gcap, float(duration),
-                                 float(dt), H_MIN, FORCE_LIMIT, SCENE_LAWS[law], self.lp.size,
-                                 self.lp.ctypes.data, int(every), self.rec.ctypes.data,
-                                 self.rec.shape[0] if every else 0, 0, 0,
-                                 int(stop_at_impacts), self.work.ctypes.data)
-        self.args.pause = PAUSE_STEPS if pause is None else int(pause)
+        self.args = SceneRunCall(st._address, address(self.gs), eng.gcap, 0.0, 0.0, H_MIN,
+                                 FORCE_LIMIT, 0, 0, None, 0, None, 0, 0, 0, 0,
+                                 self.work.ctypes.data)
         self._address = address(self.args)
         self._run = model.core.scene_run
+        self.reset(duration, dt, law, params, every, cap, stop_at_impacts, pause)
+
+    def reset(self, duration, dt, law: str, params, every: int, cap: int,
+              stop_at_impacts: bool = True, pause: int | None = None) -> None:
+        """A new run's arguments (those of the constructor), its time, steps and record from
+        zero; the record's buffer kept where it has the room."""
+        a = self.args
+        self.lp = np.zeros(1) if params is None else np.ascontiguousarray(params, dtype=float)
+        rows = max(1, cap) if every else 1
+        if self.rec.shape[0] < rows:
+            self.rec = np.zeros((rows, self.width))
+        a.duration, a.dt = float(duration), float(dt)
+        a.law, a.nlp, a.lp = SCENE_LAWS[law], self.lp.size, self.lp.ctypes.data
+        a.every, a.rec, a.cap, a.nrec = int(every), self.rec.ctypes.data, rows if every else 0, 0
+        a.stop_at_impacts = int(stop_at_impacts)
+        a.pause = PAUSE_STEPS if pause is None else int(pause)
+        a.t, a.nstep, a.phase, a.impacts, a.min_gap = 0.0, 0, 0, 0, 0.0
+        a.bad[:] = (0.0,) * 5
 
     def go(self) -> int:
         """Go on with the run: why the engine returned (``RUN_*``)."""
@@ -265,6 +304,40 @@ class _Runner:
         k = int(self.args.nrec)
         self.args.nrec = 0
         return self.rec[:k].copy()
+
+
+#: steppers (with their runners) kept per model for later runs (more at once are made and
+#: dropped)
+POOL_SIZE = 4
+
+
+def _take(model, tol: float, f_obj) -> _Stepper:
+    """A :class:`_Stepper` of ``model`` with the contact tolerance ``tol`` for one run: one
+    from the model's pool, readied (:meth:`_Stepper.reset`), or a new one. The pool is the
+    model's: its buffers and structs, lent to one run at a time (two runs at once, threads or
+    a caller's law that runs another, hold two) and given back when the run ends, however it
+    ends (the next run's :meth:`_Stepper.reset` and :meth:`_Stepper.begin` write everything
+    a run reads)."""
+    pool = vars(model).setdefault("_steppers", [])
+    for i in range(len(pool) - 1, -1, -1):
+        if pool[i].engine.tol == tol:
+            try:
+                st = pool.pop(i)
+            except IndexError:  # another thread took one
+                break
+            if st.engine.tol == tol:
+                st.reset(f_obj)
+                return st
+            pool.append(st)
+            break
+    return _Stepper(model, tol, f_obj)
+
+
+def _give(model, st: _Stepper) -> None:
+    """``st`` back to the pool of ``model`` (dropped when the pool is full)."""
+    pool = vars(model).setdefault("_steppers", [])
+    if len(pool) < POOL_SIZE:
+        pool.append(st)
 
 
 def engine_law(kind: str, law, n_a: int):
@@ -303,8 +376,7 @@ def simulate_scene(model, q0, duration, *, v0=None, tau=None, dt=1e-3, q_obj0=No
     :data:`PROGRESS_EVERY` seconds of a long run (:func:`snakecg.progress.resolve`), or a
     ``progress(message)`` callable.
     """
-    from ..progress import resolve
-    from ..simulate.torques import check_tau, torque_law
+    from ..simulate.torques import torque_law
 
     q, v, qo, vo, fo = _check_args(model, q0, v0, duration, dt, q_obj0, v_obj0, f_obj,
                                    tolerance)
@@ -312,15 +384,27 @@ def simulate_scene(model, q0, duration, *, v0=None, tau=None, dt=1e-3, q_obj0=No
             or output_every < 1:
         raise InputError(f"simulate: output_every must be an integer >= 1, got "
                          f"{output_every!r:.60}")
-    scene = model.scene
-    tol = contact_tolerance(scene, tolerance)
+    tol = contact_tolerance(model.scene, tolerance)
     na = model.n_joints
     kind, law = torque_law(np.zeros(na) if tau is None else tau, na)
     name, params = engine_law(kind, law, na)
-    st = _Stepper(model, tol, fo.reshape(-1))
-    ns = st.ns
+    st = _take(model, tol, fo.reshape(-1))
+    try:
+        return _run(model, st, q, v, qo, vo, duration, dt, output_every, kind, law, name,
+                    params, progress, tol)
+    finally:
+        _give(model, st)
+
+
+def _run(model, st, q, v, qo, vo, duration, dt, output_every, kind, law, name, params,
+         progress, tol) -> SceneRun:
+    """:func:`simulate_scene`'s run on the stepper ``st``, its arguments checked."""
+    from ..progress import resolve
+    from ..simulate.torques import check_tau
+
+    ns, na, scene = st.ns, model.n_joints, model.scene
     if qo is None:
-        qo = model.object_poses(q)
+        st.place(q)
     rec = SceneRun.start(model, tol, dt)
 
     def torque(t):
@@ -335,7 +419,11 @@ def simulate_scene(model, q0, duration, *, v0=None, tau=None, dt=1e-3, q_obj0=No
     if st.begin(q, qo, v, vo) != STEP_DONE:
         return rec.finish("penetration", 0.0, st.engine.refusal(st.out))
     cap = int(min(RECORD_ROWS, duration / dt / output_every + 4))
-    run = _Runner(st, duration, dt, name, params, int(output_every), cap)
+    run = st.runner
+    if run is None:
+        run = st.runner = _Runner(st, duration, dt, name, params, int(output_every), cap)
+    else:
+        run.reset(duration, dt, name, params, int(output_every), cap)
     if name == "constant":
         st.tau[:na] = params
     elif name == "caller":
