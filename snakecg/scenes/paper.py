@@ -62,11 +62,11 @@ def simulate_with_geometry(model, q0, tau, duration, v0=None, *, q_obj0=None, v_
 def _plate_model(model):
     """The loaded general scene of :func:`plate_scene`, made once per model (kept in its
     data's derived constants)."""
-    from . import load_scene
-
     derived = model.data().derived
     got = derived.get("scenes.plate_model")
     if got is None:
+        from . import load_scene
+
         got = derived["scenes.plate_model"] = load_scene(plate_scene(model.scene))
     return got
 
@@ -77,14 +77,14 @@ def _run_check(model, tolerance):
     against each other) and the model's check of a run over it
     (:class:`snakecg.simulate.contact_check.RunCheck`: compiled where the model is), made once
     per tolerance (kept in the model's data's derived constants)."""
-    from ..geometry import ContactCheck
-    from ..simulate.contact_check import RunCheck
-    from ..simulate.dynamics import N_WORK
-
     derived = model.data().derived
     key = ("scenes.plate_check", float(tolerance))
     got = derived.get(key)
     if got is None:
+        from ..geometry import ContactCheck
+        from ..simulate.contact_check import RunCheck
+        from ..simulate.dynamics import N_WORK
+
         check = ContactCheck.of_scene(model.scene, tolerance=tolerance, radius=0.0)
         ns = model.n_coordinates
         got = derived[key] = (check, RunCheck(model, "report", ns, 2 * (ns + 3) + N_WORK,

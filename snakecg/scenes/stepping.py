@@ -99,6 +99,24 @@ class SceneState:
     v_obj: np.ndarray
 
 
+#: functions of packages imported on first use (snakecg.simulate, snakecg.progress: importing
+#: this module does not import them; an import inside every call costs about a microsecond)
+_LAZY: dict = {}
+
+
+def _late(name: str):
+    """``torque_law``, ``check_tau`` (snakecg.simulate.torques) or ``resolve``
+    (snakecg.progress), imported once."""
+    got = _LAZY.get(name)
+    if got is None:
+        from ..progress import resolve
+        from ..simulate.torques import check_tau, torque_law
+
+        _LAZY.update(torque_law=torque_law, check_tau=check_tau, resolve=resolve)
+        got = _LAZY[name]
+    return got
+
+
 #: the engine's step's statuses (scene_step.c)
 STEP_DONE, STEP_NOT_CONVERGED, STEP_IMPACT_NOT_CONVERGED = 0, 1, 2
 
@@ -143,8 +161,9 @@ class _Stepper:
             self.M, self.A, self.par, self.out, self.kind, self.start, self.M1, self.A1,
             self.par1, self.out1, self.kind1, self.start1, self.Vp, self.lam, self.info,
             self.ilam, self.iinfo, self.acc)]
+        self._pieces = self.pieces.ctypes.data
         self.args = SceneStep(model._pk, float(tol), 0.0, IMPACT_SPEED, *ad, eng.ccap, mcap,
-                              *bufs, 0, None if cold else self.pieces.ctypes.data, 0)
+                              *bufs, 0, None if cold else self._pieces, 0)
         self._address = address(self.args)
         self._step, self._place, self._x = core.scene_step, core.scene_place_q, ad[2]
         self.runner = None  # the run's loop over this step (a pooled stepper keeps its own)
@@ -157,7 +176,7 @@ class _Stepper:
         self.acc[:] = 0.0
         self.acc[ST_SLIDING_COS] = -1.0
         cold = os.environ.get(COLD_START_ENV, "") not in ("", "0")
-        self.args.from_ = None if cold else self.pieces.ctypes.data
+        self.args.from_ = None if cold else self._pieces
         self.args.nfrom = 0
         self.args.status = 0
 
@@ -216,8 +235,8 @@ def _check_args(model, q0, v0, duration, dt, q_obj0, v_obj0, f_obj, tolerance):
         if value is None:
             return default
         arr = np.asarray(value, dtype=float) if not isinstance(value, (str, bytes)) else None
-        if arr is None or arr.size != int(np.prod(shape)) or not np.all(np.isfinite(arr)):
-            problems.append(f"{name} must be {int(np.prod(shape))} finite numbers "
+        if arr is None or arr.size != math.prod(shape) or not np.isfinite(arr).all():
+            problems.append(f"{name} must be {math.prod(shape)} finite numbers "
                             f"(shape {shape}), got {value!r:.60}")
             return default
         return arr.reshape(shape).copy()
@@ -300,10 +319,16 @@ class _Runner:
         return code
 
     def take(self) -> np.ndarray:
-        """The record's rows since the last take (the buffer emptied)."""
-        k = int(self.args.nrec)
-        self.args.nrec = 0
-        return self.rec[:k].copy()
+        """The record's rows since the last take (the buffer emptied): the buffer itself,
+        handed over (not copied), and a new one of its size for the rows to come."""
+        a = self.args
+        k = int(a.nrec)
+        rows = self.rec[:k]
+        if k:
+            self.rec = np.empty_like(self.rec)
+            a.rec = self.rec.ctypes.data
+        a.nrec = 0
+        return rows
 
 
 #: steppers (with their runners) kept per model for later runs (more at once are made and
@@ -314,11 +339,11 @@ POOL_SIZE = 4
 def _take(model, tol: float, f_obj) -> _Stepper:
     """A :class:`_Stepper` of ``model`` with the contact tolerance ``tol`` for one run: one
     from the model's pool, readied (:meth:`_Stepper.reset`), or a new one. The pool is the
-    model's: its buffers and structs, lent to one run at a time (two runs at once, threads or
+    model's (``model._steppers``): its buffers and structs, lent to one run at a time (two runs at once, threads or
     a caller's law that runs another, hold two) and given back when the run ends, however it
     ends (the next run's :meth:`_Stepper.reset` and :meth:`_Stepper.begin` write everything
     a run reads)."""
-    pool = vars(model).setdefault("_steppers", [])
+    pool = getattr(model, "_steppers", ())
     for i in range(len(pool) - 1, -1, -1):
         if pool[i].engine.tol == tol:
             try:
@@ -335,8 +360,8 @@ def _take(model, tol: float, f_obj) -> _Stepper:
 
 def _give(model, st: _Stepper) -> None:
     """``st`` back to the pool of ``model`` (dropped when the pool is full)."""
-    pool = vars(model).setdefault("_steppers", [])
-    if len(pool) < POOL_SIZE:
+    pool = getattr(model, "_steppers", None)
+    if pool is not None and len(pool) < POOL_SIZE:
         pool.append(st)
 
 
@@ -376,8 +401,6 @@ def simulate_scene(model, q0, duration, *, v0=None, tau=None, dt=1e-3, q_obj0=No
     :data:`PROGRESS_EVERY` seconds of a long run (:func:`snakecg.progress.resolve`), or a
     ``progress(message)`` callable.
     """
-    from ..simulate.torques import torque_law
-
     q, v, qo, vo, fo = _check_args(model, q0, v0, duration, dt, q_obj0, v_obj0, f_obj,
                                    tolerance)
     if isinstance(output_every, bool) or not isinstance(output_every, (int, np.integer)) \
@@ -386,7 +409,7 @@ def simulate_scene(model, q0, duration, *, v0=None, tau=None, dt=1e-3, q_obj0=No
                          f"{output_every!r:.60}")
     tol = contact_tolerance(model.scene, tolerance)
     na = model.n_joints
-    kind, law = torque_law(np.zeros(na) if tau is None else tau, na)
+    kind, law = _late("torque_law")(np.zeros(na) if tau is None else tau, na)
     name, params = engine_law(kind, law, na)
     st = _take(model, tol, fo.reshape(-1))
     try:
@@ -399,9 +422,7 @@ def simulate_scene(model, q0, duration, *, v0=None, tau=None, dt=1e-3, q_obj0=No
 def _run(model, st, q, v, qo, vo, duration, dt, output_every, kind, law, name, params,
          progress, tol) -> SceneRun:
     """:func:`simulate_scene`'s run on the stepper ``st``, its arguments checked."""
-    from ..progress import resolve
-    from ..simulate.torques import check_tau
-
+    check_tau = _late("check_tau")
     ns, na, scene = st.ns, model.n_joints, model.scene
     if qo is None:
         st.place(q)
@@ -428,7 +449,7 @@ def _run(model, st, q, v, qo, vo, duration, dt, output_every, kind, law, name, p
         st.tau[:na] = params
     elif name == "caller":
         st.tau[:na] = torque(0.0)
-    report = resolve(progress)
+    report = _late("resolve")(progress)
     wall = time.perf_counter()
     args = run.args
     while True:
