@@ -22,7 +22,7 @@ import pickle
 
 import numpy as np
 import pytest
-from overlap_reference import overlaps
+from overlap_reference import link_ends, overlaps
 from scenes_rows_reference import place_objects
 
 import snakecg
@@ -159,3 +159,39 @@ def test_the_paper_check_of_a_run_finds_its_first_overlap(paper):
         assert out.violation["t"] == moved.t[first]
         link = bodies[int(np.argmax(depth[first]))][0]
         assert out.violation["bodies"] == [f"link {link}", "object 1"]
+
+
+def test_the_paper_checks_depths_are_numpys(paper, rng):
+    """The compiled check's deepest overlap and its pair (geometry.c: segments that do not
+    cross skip their ends' distances, a link beyond a side of the plate its depth) against
+    the NumPy reference's depths (tests/overlap_reference.py) at random states: the plate
+    near the links (apart, touching, across, inside), links folded across each other, to
+    1e-15 m, and the reported pair's depth is the reported one."""
+    from snakecg.geometry import ContactCheck
+    from snakecg.simulate.contact_check import RunCheck
+    from snakecg.simulate.dynamics import N_WORK
+
+    scene, sm = paper
+    check = ContactCheck.of_scene(scene, tolerance=1e-5, radius=0.0)
+    rc = RunCheck(sm, "report", 6, 2 * 9 + N_WORK, shape=check)
+    n = 4000
+    q = np.c_[rng.normal(0.0, 0.05, (n, 2)), rng.uniform(-np.pi, np.pi, n),
+              rng.uniform(-2.8, 2.8, (n, 3))]
+    ends = np.stack(link_ends(scene.robot, q), axis=2)  # (n, 4, 2, 2)
+    link = rng.integers(0, 4, n)
+    along = rng.uniform(-0.2, 1.2, n)[:, None]
+    point = ends[np.arange(n), link, 0] + along * (ends[np.arange(n), link, 1]
+                                                   - ends[np.arange(n), link, 0])
+    h = scene.object_distance
+    q_obj = np.c_[point + rng.normal(0.0, 1.2 * h, (n, 2)), rng.uniform(-np.pi, np.pi, n)]
+    q_obj[::7, 2] = np.arctan2(*(ends[::7, 0, 1] - ends[::7, 0, 0]).T[::-1])  # flush faces
+    Y = np.zeros((n, rc.ny))
+    Y[:, :6], Y[:, 6:9] = q, q_obj
+    depth, pair = rc.deepest(Y)
+    want, _ = overlaps(scene, q, q_obj)
+    np.testing.assert_allclose(depth, want.max(axis=1), rtol=0, atol=1e-15)
+    hit = want.max(axis=1) > 1e-12
+    np.testing.assert_allclose(want[hit, pair[hit]], depth[hit], rtol=0, atol=1e-15)  # its pair
+    crossed = want[:, 4:].max(axis=1) > 1e-9
+    plate = want[:, :4].max(axis=1) > 1e-9
+    assert crossed.sum() >= 100 and plate.sum() >= 500 and (~hit).sum() >= 500

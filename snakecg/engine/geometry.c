@@ -46,16 +46,23 @@ static double sc_geo_point_segment(double px, double py, double ax, double ay, d
   return sqrt(ex * ex + ey * ey);
 }
 
-/* The least distance from an end of a0-a1 or b0-b1 to the other, and whether they cross. */
-static double sc_geo_ends(const double *a0, const double *a1, const double *b0, const double *b1,
-                       int *crossing) {
+/* Whether the segments a0-a1 and b0-b1 cross (each one's ends strictly on both sides of the
+ * other's line). */
+static int sc_geo_crossing(const double *a0, const double *a1, const double *b0,
+                           const double *b1) {
   const double dax = a1[0] - a0[0], day = a1[1] - a0[1];
   const double dbx = b1[0] - b0[0], dby = b1[1] - b0[1];
   const double s1 = sc_geo_cross(dbx, dby, a0[0] - b0[0], a0[1] - b0[1]);
   const double s2 = sc_geo_cross(dbx, dby, a1[0] - b0[0], a1[1] - b0[1]);
   const double s3 = sc_geo_cross(dax, day, b0[0] - a0[0], b0[1] - a0[1]);
   const double s4 = sc_geo_cross(dax, day, b1[0] - a0[0], b1[1] - a0[1]);
-  *crossing = s1 * s2 < 0 && s3 * s4 < 0;
+  return s1 * s2 < 0 && s3 * s4 < 0;
+}
+
+/* The least distance from an end of a0-a1 or b0-b1 to the other, and whether they cross. */
+static double sc_geo_ends(const double *a0, const double *a1, const double *b0, const double *b1,
+                       int *crossing) {
+  *crossing = sc_geo_crossing(a0, a1, b0, b1);
   return sc_geo_min(sc_geo_min(sc_geo_point_segment(a0[0], a0[1], b0[0], b0[1], b1[0], b1[1]),
                    sc_geo_point_segment(a1[0], a1[1], b0[0], b0[1], b1[0], b1[1])),
               sc_geo_min(sc_geo_point_segment(b0[0], b0[1], a0[0], a0[1], a1[0], a1[1]),
@@ -66,10 +73,15 @@ static double sc_geo_ends(const double *a0, const double *a1, const double *b0, 
  * of half side h, 0 when it stays outside (geometry.object_penetration). */
 static double sc_geo_plate_depth(double ax, double ay, double bx, double by, double h) {
   const double dx = bx - ax, dy = by - ay;
-  const double ts[6] = {0.0, 1.0, -ax / dx, -ay / dy, -(ax - ay) / (dx - dy),
-                        -(ax + ay) / (dx + dy)};
-  double best = 0.0;
+  /* both ends beyond one of the plate's sides (by far more than the rounding of the points
+   * below): every point outside, the depth 0 */
+  const double m = h + 1e-12 * (h + fabs(ax) + fabs(ay) + fabs(bx) + fabs(by));
+  double ts[6], best = 0.0;
   int k;
+  if ((ax > m && bx > m) || (ax < -m && bx < -m) || (ay > m && by > m) || (ay < -m && by < -m))
+    return 0.0;
+  ts[0] = 0.0, ts[1] = 1.0, ts[2] = -ax / dx, ts[3] = -ay / dy;
+  ts[4] = -(ax - ay) / (dx - dy), ts[5] = -(ax + ay) / (dx + dy);
   for (k = 0; k < 6; ++k) {
     double t = isfinite(ts[k]) ? ts[k] : 0.0;
     t = t < 0 ? 0.0 : (t > 1 ? 1.0 : t);
@@ -136,8 +148,12 @@ double sc_geo_depth(const sc_geometry *g, const double *y, sc_int *pair) {
       const double far = 0.5 * (g->length[i] + g->length[j]) + 2 * r;
       if (mx * mx + my * my <= far * far) {
         int crossing;
-        const double e = sc_geo_ends(rear[i], front[i], rear[j], front[j], &crossing);
-        const double d = sc_geo_max(0.0, 2 * r - (crossing ? -e : e));
+        double e, d;
+        /* segments (radius 0) apart or touching overlap by max(0, -e) = 0: their ends'
+         * distances are needed only where they cross */
+        if (r <= 0 && !sc_geo_crossing(rear[i], front[i], rear[j], front[j])) continue;
+        e = sc_geo_ends(rear[i], front[i], rear[j], front[j], &crossing);
+        d = sc_geo_max(0.0, 2 * r - (crossing ? -e : e));
         if (d > best) best = d, *pair = p;
       }
     }
