@@ -195,3 +195,11 @@ def test_the_paper_checks_depths_are_numpys(paper, rng):
     crossed = want[:, 4:].max(axis=1) > 1e-9
     plate = want[:, :4].max(axis=1) > 1e-9
     assert crossed.sum() >= 100 and plate.sum() >= 500 and (~hit).sum() >= 500
+    for tol in (1e-6, 1e-3, 5e-3, 1.0):  # the first state beyond tol, in place and not
+        beyond = np.flatnonzero(want.max(axis=1) > tol)
+        k0 = int(beyond[0]) if beyond.size else None
+        for states in (Y, np.asfortranarray(Y[:, :9]), Y[:, :12]):
+            k, d, p = rc.first_beyond(states, tol)
+            assert k == k0
+            if k is not None:
+                assert d == depth[k] and p == pair[k]

@@ -73,8 +73,10 @@ class Core:
         self.scene_tiny = lib.entry_or_none("core_scene_tiny")
         """scene_tiny.c's ``core_scene_tiny(mode, counts)``: the solve compiled for tiny problems
         switched on (1) or off (0) for the process, and the problems it tried and answered."""
-        self.contact_depth = lib.entry_or_none("core_contact_depth")
-        """geometry.c's ``core_contact_depth``: the simulation's contact check at states."""
+        self.contact_depth, self.contact_first = (
+            lib.entry_or_none(name) for name in ("core_contact_depth", "core_contact_first"))
+        """geometry.c's ``core_contact_depth``: the simulation's contact check at states;
+        ``core_contact_first``: the first state beyond a tolerance."""
         self.sphere = SphereKernel(lib)
         """sphere.c's faces and KKT candidates (:mod:`snakecg.engine.sphere`)."""
         self.optimal = OptimalKernel(lib, self.layout)

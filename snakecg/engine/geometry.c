@@ -181,6 +181,23 @@ int SNAKECG_EXPORT(core_contact_depth)(const sc_geometry *g, sc_int n, const dou
   return 0;
 }
 
+/* The first of n states whose largest overlap exceeds tol (rows of `stride` doubles from Y,
+ * each q then q_obj: a record read in place): its index, or n where none; that overlap and
+ * its pair into out[0], out[1]. */
+int SNAKECG_EXPORT(core_contact_first)(const sc_geometry *g, sc_int n, const double *Y,
+                                      sc_int stride, double tol, double *out) {
+  sc_int k, p;
+  for (k = 0; k < n; ++k) {
+    const double d = sc_geo_depth(g, Y + k * stride, &p);
+    if (d > tol) {
+      out[0] = d;
+      out[1] = (double)p;
+      return (int)k;
+    }
+  }
+  return (int)n;
+}
+
 /* A V (snakecg.simulate.dynamics.Dynamics.row_velocities): the gap rate (row 0) and the
  * wheels' lateral velocities, from the generated `link_jacobians` at q (its status, 0 on
  * success). The link twists J v; the wheel row of link i is (-sin phi_i, cos phi_i,

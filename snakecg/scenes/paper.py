@@ -92,16 +92,6 @@ def _run_check(model, tolerance):
     return got
 
 
-def _deepest(model, run):
-    """``deepest`` of the paper's contact check (:func:`_run_check`) at the run's samples,
-    and the check."""
-    check, rc = _run_check(model, run.tolerance)
-    states = run.states()
-    Y = np.empty((len(states), rc.ny))  # the check reads q and q_obj of each
-    Y[:, :states.shape[1]] = states
-    return check, rc.deepest(Y)
-
-
 def _checked(model, run):
     """``run`` after the paper's contact check (:class:`snakecg.geometry.ContactCheck`, every
     link against the plate and the links against each other) at every sample, with the run's
@@ -110,16 +100,15 @@ def _checked(model, run):
     trajectory kept whole."""
     if run.status != "completed":
         return run
-    check, (depth, pair) = _deepest(model, run)
-    beyond = np.flatnonzero(depth > run.tolerance)
-    if beyond.size:
-        k = int(beyond[0])
-        i, j = check.pairs[int(pair[k])]
+    check, rc = _run_check(model, run.tolerance)
+    k, depth, pair = rc.first_beyond(run.states(), run.tolerance)
+    if k is not None:
+        i, j = check.pairs[pair]
         names = [f"link {i + 1}", "object 1" if j is None else f"link {j + 1}"]
-        message = (f"{names[0]} and {names[1]} overlap by {depth[k]:.3g} m at the sample "
+        message = (f"{names[0]} and {names[1]} overlap by {depth:.3g} m at the sample "
                    f"t = {run.t[k]:.6g} s (tolerance {run.tolerance:.3g} m; the paper's "
                    "contact check, every sample); the trajectory goes on as stepped")
-        run.status = check.kind(int(pair[k]))
+        run.status = check.kind(pair)
         run.message = message
         run.violation = {"t": float(run.t[k]), "bodies": names, "message": message}
     return run
