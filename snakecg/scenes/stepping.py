@@ -282,11 +282,11 @@ class _Runner:
         self.gs = SceneStateCall(model._pk, self.gq.ctypes.data, self.gqo.ctypes.data,
                                  eng.tol, 0.0, eng.gcap, eng.mcap, -1, -1,
                                  self.gout.ctypes.data, None, None, None, None, None)
-        self.rec = np.zeros((1, self.width))
+        self.rec, self.lp = np.zeros((1, self.width)), np.zeros(1)
         self.work = np.zeros(2 * st.n + 5 * eng.gcap)
         self.args = SceneRunCall(st._address, address(self.gs), eng.gcap, 0.0, 0.0, H_MIN,
-                                 FORCE_LIMIT, 0, 0, None, 0, None, 0, 0, 0, 0,
-                                 self.work.ctypes.data)
+                                 FORCE_LIMIT, 0, 0, self.lp.ctypes.data, 0,
+                                 self.rec.ctypes.data, 0, 0, 0, 0, self.work.ctypes.data)
         self._address = address(self.args)
         self._run = model.core.scene_run
         self.reset(duration, dt, law, params, every, cap, stop_at_impacts, pause)
@@ -296,13 +296,18 @@ class _Runner:
         """A new run's arguments (those of the constructor), its time, steps and record from
         zero; the record's buffer kept where it has the room."""
         a = self.args
-        self.lp = np.zeros(1) if params is None else np.ascontiguousarray(params, dtype=float)
+        lp = np.zeros(1) if params is None else np.asarray(params, dtype=float).reshape(-1)
+        if self.lp.size < lp.size:  # (the parameters' buffer, kept where it has the room)
+            self.lp = np.zeros(lp.size)
+            a.lp = self.lp.ctypes.data
+        self.lp[:lp.size] = lp
         rows = max(1, cap) if every else 1
         if self.rec.shape[0] < rows:
             self.rec = np.zeros((rows, self.width))
+            a.rec = self.rec.ctypes.data
         a.duration, a.dt = float(duration), float(dt)
-        a.law, a.nlp, a.lp = SCENE_LAWS[law], self.lp.size, self.lp.ctypes.data
-        a.every, a.rec, a.cap, a.nrec = int(every), self.rec.ctypes.data, rows if every else 0, 0
+        a.law, a.nlp = SCENE_LAWS[law], lp.size
+        a.every, a.cap, a.nrec = int(every), rows if every else 0, 0
         a.stop_at_impacts = int(stop_at_impacts)
         a.pause = PAUSE_STEPS if pause is None else int(pause)
         a.t, a.nstep, a.phase, a.impacts, a.min_gap = 0.0, 0, 0, 0, 0.0
