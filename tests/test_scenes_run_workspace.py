@@ -166,7 +166,10 @@ def test_the_paper_checks_depths_are_numpys(paper, rng):
     cross skip their ends' distances, a link beyond a side of the plate its depth) against
     the NumPy reference's depths (tests/overlap_reference.py) at random states: the plate
     near the links (apart, touching, across, inside), links folded across each other, to
-    1e-15 m, and the reported pair's depth is the reported one."""
+    1e-15 m, and the reported pair's depth is the reported one. The first state beyond a
+    tolerance (core_contact_first: the fast cos and sin, then libm's within 1e-12 of it)
+    is the first whose depth exceeds it, at tolerances equal to a state's depth and an ulp
+    below it too."""
     from snakecg.geometry import ContactCheck
     from snakecg.simulate.contact_check import RunCheck
     from snakecg.simulate.dynamics import N_WORK
@@ -195,8 +198,10 @@ def test_the_paper_checks_depths_are_numpys(paper, rng):
     crossed = want[:, 4:].max(axis=1) > 1e-9
     plate = want[:, :4].max(axis=1) > 1e-9
     assert crossed.sum() >= 100 and plate.sum() >= 500 and (~hit).sum() >= 500
-    for tol in (1e-6, 1e-3, 5e-3, 1.0):  # the first state beyond tol, in place and not
-        beyond = np.flatnonzero(want.max(axis=1) > tol)
+    k1 = int(np.flatnonzero(want.max(axis=1) > 1e-3)[0])  # tolerances at a depth: exactly
+    tols = (1e-6, 1e-3, 5e-3, 1.0, depth[k1], np.nextafter(depth[k1], 0.0))
+    for tol in tols:  # the first state beyond tol, in place and not
+        beyond = np.flatnonzero(depth > tol)  # (depth: the reference's within 1e-15)
         k0 = int(beyond[0]) if beyond.size else None
         for states in (Y, np.asfortranarray(Y[:, :9]), Y[:, :12]):
             k, d, p = rc.first_beyond(states, tol)
