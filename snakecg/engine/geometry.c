@@ -110,8 +110,9 @@ static double sc_geo_link_plate(double ax, double ay, double bx, double by, doub
  * multiple n pi / 2 (pi / 2 in two parts, the first's product with n exact), fdlibm's
  * polynomials of sin and cos on [-pi / 4, pi / 4], the quadrant by n. */
 static void sc_geo_sincos(double x, double *c, double *s) {
-  const double n = nearbyint(x * 0.63661977236758134308), r = (x - n * 1.57079632673412561417) -
-                                                               n * 6.07710050650619224932e-11;
+  /* (n: x 2 / pi rounded to the nearest integer by adding and taking away 1.5 2^52) */
+  const double n = (x * 0.63661977236758134308 + 6755399441055744.0) - 6755399441055744.0;
+  const double r = (x - n * 1.57079632673412561417) - n * 6.07710050650619224932e-11;
   const double z = r * r;
   const double sr = r + r * z * (-1.66666666666666324348e-01 + z * (8.33333333332248946124e-03 +
                     z * (-1.98412698298579493134e-04 + z * (2.75573137070700676789e-06 +
@@ -125,7 +126,7 @@ static void sc_geo_sincos(double x, double *c, double *s) {
     *s = sin(x);
     return;
   }
-  switch ((int)(n - 4.0 * floor(0.25 * n))) {
+  switch ((long)n & 3) {
     case 0: *c = cr, *s = sr; break;
     case 1: *c = -sr, *s = cr; break;
     case 2: *c = -cr, *s = -sr; break;
