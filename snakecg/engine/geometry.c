@@ -135,7 +135,7 @@ static void sc_geo_sincos(double x, double *c, double *s) {
 }
 
 /* sc_geo_depth, the angles' cos and sin libm's or (fast) sc_geo_sincos'. */
-static double geo_depth(const sc_geometry *g, const double *y, sc_int *pair, int fast) {
+static double depth_at(const sc_geometry *g, const double *y, sc_int *pair, int fast) {
   double rear[SC_GEO_NL][2], front[SC_GEO_NL][2], phi = y[2], best = 0.0, cs, sn;
   const double h = g->half, r = g->radius, ox = y[SNAKECG_NS], oy = y[SNAKECG_NS + 1];
   const double reach = h * 1.4142135623730951 + r; /* the plate's circle, widened */
@@ -199,7 +199,7 @@ static double geo_depth(const sc_geometry *g, const double *y, sc_int *pair, int
 
 /* The largest overlap at the state y and its pair (the first of equals). */
 double sc_geo_depth(const sc_geometry *g, const double *y, sc_int *pair) {
-  return geo_depth(g, y, pair, 0);
+  return depth_at(g, y, pair, 0);
 }
 
 /* The first violation: at t, the state y (NY), its overlap and pair. */
@@ -238,8 +238,8 @@ int SNAKECG_EXPORT(core_contact_first)(const sc_geometry *g, sc_int n, const dou
      * the others are measured with libm's (the decision and the overlap sc_geo_depth's) */
     const double margin = 1e-12 * (1.0 + span + fabs(y[0]) + fabs(y[1]) +
                                    fabs(y[SNAKECG_NS]) + fabs(y[SNAKECG_NS + 1]));
-    double d = geo_depth(g, y, &p, 1);
-    if (!(d <= tol - margin) && (d = geo_depth(g, y, &p, 0)) > tol) {
+    double d = depth_at(g, y, &p, 1);
+    if (!(d <= tol - margin) && (d = depth_at(g, y, &p, 0)) > tol) {
       out[0] = d;
       out[1] = (double)p;
       return (int)k;
