@@ -30,7 +30,7 @@ from snakecg import Robot
 from snakecg.scenes import GeneralScene, SceneObject, load_scene
 from snakecg.scenes.paper import _checked, _plate_model
 from snakecg.scenes.run_record import _COLUMNS, SceneRun
-from snakecg.scenes.stepping import COLD_START_ENV, _Stepper
+from snakecg.scenes.stepping import COLD_START_ENV, KEEP_BYTES, _Stepper
 
 Q0 = np.deg2rad([0.0, 0.0, 0.0, 30.0, -45.0, 60.0])
 TAU = np.array([0.05, 0.0, -0.02])
@@ -86,7 +86,8 @@ def test_a_kept_workspace_runs_as_a_new_one(paper, monkeypatch):
     """The plate's push on the model's kept workspace, after runs with other torques, a
     tighter tolerance, a wrench on the plate, a sparser record and solves from scratch, is the
     push on a new model's new workspace bit for bit; so is each of those runs; and the first
-    record, read only after all of them, is unchanged."""
+    record, read only after all of them, is unchanged. A long run's record buffer (over
+    KEEP_BYTES) is not kept, and the next run is the same."""
     scene, sm = paper
     plate = _plate_model(sm)
     others = [dict(tau=-TAU), dict(tau=TAU, tolerance=2e-6),
@@ -106,6 +107,10 @@ def test_a_kept_workspace_runs_as_a_new_one(paper, monkeypatch):
     _same(_fields(first), want)  # read after the later runs
     for kw, run in zip(others, got):
         _same(run, _fields(load_scene(plate.scene).simulate(Q0, 0.1, **kw)))
+    long = plate.simulate(Q0, 4.5, tau=TAU)  # 4,096 rows at a return: its buffer not kept
+    assert long.status == "completed" and len(long.t) > 4096
+    assert all(st.runner.rec.nbytes <= KEEP_BYTES for st in plate._steppers)
+    _same(_fields(plate.simulate(Q0, 0.1, tau=TAU)), want)
     monkeypatch.setenv(COLD_START_ENV, "1")
     _same(cold, _fields(fresh.simulate(Q0, 0.1, tau=TAU)))
     assert cold["steps"] == want["steps"]

@@ -339,6 +339,9 @@ class _Runner:
 #: steppers (with their runners) kept per model for later runs (more at once are made and
 #: dropped)
 POOL_SIZE = 4
+#: largest record buffer (bytes) a kept runner keeps (a run with more rows per return makes
+#: its own)
+KEEP_BYTES = 1 << 20
 
 
 def _take(model, tol: float, f_obj) -> _Stepper:
@@ -364,9 +367,14 @@ def _take(model, tol: float, f_obj) -> _Stepper:
 
 
 def _give(model, st: _Stepper) -> None:
-    """``st`` back to the pool of ``model`` (dropped when the pool is full)."""
+    """``st`` back to the pool of ``model`` (dropped when the pool is full; its record's
+    buffer dropped when above :data:`KEEP_BYTES`)."""
     pool = getattr(model, "_steppers", None)
     if pool is not None and len(pool) < POOL_SIZE:
+        run = st.runner
+        if run is not None and run.rec.nbytes > KEEP_BYTES:
+            run.rec = np.zeros((1, run.width))
+            run.args.rec, run.args.cap = run.rec.ctypes.data, 0
         pool.append(st)
 
 
