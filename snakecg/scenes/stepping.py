@@ -347,10 +347,10 @@ KEEP_BYTES = 1 << 20
 def _take(model, tol: float, f_obj) -> _Stepper:
     """A :class:`_Stepper` of ``model`` with the contact tolerance ``tol`` for one run: one
     from the model's pool, readied (:meth:`_Stepper.reset`), or a new one. The pool is the
-    model's (``model._steppers``): its buffers and structs, lent to one run at a time (two runs at once, threads or
-    a caller's law that runs another, hold two) and given back when the run ends, however it
-    ends (the next run's :meth:`_Stepper.reset` and :meth:`_Stepper.begin` write everything
-    a run reads)."""
+    model's (``model._steppers``): its buffers and structs, lent to one run at a time (two
+    runs at once, threads or a caller's law that runs another, hold two) and given back when
+    the run ends, however it ends (the next run's :meth:`_Stepper.reset` and
+    :meth:`_Stepper.begin` write everything a run reads)."""
     pool = getattr(model, "_steppers", ())
     for i in range(len(pool) - 1, -1, -1):
         if pool[i].engine.tol == tol:
