@@ -109,7 +109,7 @@ static double sc_geo_link_plate(double ax, double ay, double bx, double by, doub
 /* cos and sin of x (|x| <= 1e5; else libm's) within 1e-15 of libm's: x less the nearest
  * multiple n pi / 2 (pi / 2 in two parts, the first's product with n exact), fdlibm's
  * polynomials of sin and cos on [-pi / 4, pi / 4], the quadrant by n. */
-static void sc_geo_sincos(double x, double *c, double *s) {
+static inline void sc_geo_sincos(double x, double *c, double *s) {
   /* (n: x 2 / pi rounded to the nearest integer by adding and taking away 1.5 2^52) */
   const double n = (x * 0.63661977236758134308 + 6755399441055744.0) - 6755399441055744.0;
   const double r = (x - n * 1.57079632673412561417) - n * 6.07710050650619224932e-11;
