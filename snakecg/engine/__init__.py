@@ -47,9 +47,11 @@ class Core:
             lib.entry_or_none(name) for name in ("core_scene_rows", "core_scene_gaps"))
         """scene_rows.c's ``core_scene_rows`` and ``core_scene_gaps``: a general scene's rows,
         and its pairs' distances, at a simulation's state (a ``SceneStateCall``)."""
-        self.scene_place = lib.entry_or_none("core_scene_place")
+        self.scene_place, self.scene_place_q = (
+            lib.entry_or_none(name) for name in ("core_scene_place", "core_scene_place_q"))
         """scene_place.c's ``core_scene_place``: a general scene's objects placed at link
-        poses (the placement of its forward)."""
+        poses (the placement of its forward); ``core_scene_place_q``: the same at one
+        configuration (its link poses taken there)."""
         self.scene_step = lib.entry_or_none("core_scene_step")
         """scene_step.c's ``core_scene_step``: one time step of a general scene (a
         ``SceneStep``)."""
@@ -71,8 +73,10 @@ class Core:
         self.scene_tiny = lib.entry_or_none("core_scene_tiny")
         """scene_tiny.c's ``core_scene_tiny(mode, counts)``: the solve compiled for tiny problems
         switched on (1) or off (0) for the process, and the problems it tried and answered."""
-        self.contact_depth = lib.entry_or_none("core_contact_depth")
-        """geometry.c's ``core_contact_depth``: the simulation's contact check at states."""
+        self.contact_depth, self.contact_first = (
+            lib.entry_or_none(name) for name in ("core_contact_depth", "core_contact_first"))
+        """geometry.c's ``core_contact_depth``: the simulation's contact check at states;
+        ``core_contact_first``: the first state beyond a tolerance."""
         self.sphere = SphereKernel(lib)
         """sphere.c's faces and KKT candidates (:mod:`snakecg.engine.sphere`)."""
         self.optimal = OptimalKernel(lib, self.layout)

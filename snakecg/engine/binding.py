@@ -55,6 +55,7 @@ PROTOTYPES: dict[str, tuple[list, object]] = {
     "core_settle": ([_P], _INT),
     "core_run": ([_P], _INT),
     "core_contact_depth": ([_P, _I, _P, _P, _P], _INT),
+    "core_contact_first": ([_P, _I, _P, _I, _D, _P], _INT),
     # pieces.c, sphere.c
     "core_pieces": ([_I] * 5 + [_P] * 20, _I),
     "core_sphere_faces": ([_I, _I, _I, _I] + [_P] * 8 + [_D] + [_P] * 8, _INT),
@@ -83,6 +84,7 @@ PROTOTYPES: dict[str, tuple[list, object]] = {
     "core_scene_gaps": ([_P], _INT),
     # scene_place.c
     "core_scene_place": ([_P, _I, _P, _P], _INT),
+    "core_scene_place_q": ([_P, _P, _P], _INT),
     # scene_step.c, scene_run.c
     "core_scene_step": ([_P], _INT),
     "core_scene_run": ([_P], _INT),

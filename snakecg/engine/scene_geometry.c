@@ -17,8 +17,9 @@
  * Where the cores touch (distance within 1e-9 scale) the normal is the touched edge's, or a
  * segment's side toward the other body, or the line between the shapes' centroids.
  * A link's segment and a box (the pushes' pair): the hull's edges are the box's and the
- * segment's two directions, known without building the hull, and the separating axes' loops
- * have constant bounds (the same sums).
+ * segment's two directions, known without building the hull, and the origin's side of each
+ * (computed once) decides both whether the shapes are apart (the separating axes are those
+ * edges' normals) and how deep the cores overlap.
  */
 #include "snakecg_layout.h"
 #include "engine.h"
@@ -193,53 +194,63 @@ static int segment_polygon_edges(const sc_shape *A, const sc_shape *B, double (*
     e[k][0] = e0, e[k][1] = e1;
     x[k] = x0 > x1 ? x0 : x1;
   }
-  for (k = 0; k < 2; ++k) { /* the segment's two directions: B's corner farthest along o */
-    const double s = k ? -1.0 : 1.0, e0 = s * d0, e1 = s * d1;
-    double best = -INFINITY;
+  { /* the segment's two directions: B's corner farthest along o (along -d: the sums along d
+     * negated, exactly, so the least of them) */
+    double most = -INFINITY, fewest = INFINITY;
     for (j = 0; j < m; ++j) {
-      const double v = (B->p[j][0] - a0[0]) * e1 - (B->p[j][1] - a0[1]) * e0;
-      best = v > best ? v : best;
+      const double v = (B->p[j][0] - a0[0]) * d1 - (B->p[j][1] - a0[1]) * d0;
+      most = v > most ? v : most;
+      fewest = v < fewest ? v : fewest;
     }
-    e[m + k][0] = e0, e[m + k][1] = e1;
-    x[m + k] = best;
+    e[m][0] = d0, e[m][1] = d1, x[m] = most;
+    e[m + 1][0] = -d0, e[m + 1][1] = -d1, x[m + 1] = -fewest;
   }
   return m + 2;
 }
 
+/* A link's segment (of some length) and a box (a polygon of 3 or 4 corners): the pair whose
+ * difference hull's edges segment_polygon_edges gives. */
+static int segment_polygon(const sc_shape *A, const sc_shape *B) {
+  return A->kind == SC_SEGMENT && B->kind == SC_POLYGON && B->np >= 3 && B->np <= 4 &&
+         (A->p[0][0] != A->p[1][0] || A->p[0][1] != A->p[1][1]);
+}
+
+/* core_overlap of a segment and a polygon from their difference hull's m edges e and the
+ * origin's sides x (segment_polygon_edges). */
+static double edges_overlap(const double (*e)[2], const double *x, int m, double *n) {
+  double r[6], least = INFINITY, depth = INFINITY;
+  int i;
+  for (i = 0; i < m; ++i)
+    if (x[i] < 0) return 0.0; /* the origin outside an edge's line: apart */
+  for (i = 0; i < m; ++i) { /* the squared distances c^2 = x^2 / |e|^2: the least first */
+    const double q = e[i][0] * e[i][0] + e[i][1] * e[i][1];
+    r[i] = q > 1e-280 && x[i] < 1e100 ? x[i] * x[i] / q : INFINITY;
+    least = r[i] < least ? r[i] : least;
+  }
+  for (i = 0; i < m; ++i) {
+    const double e0 = e[i][0], e1 = e[i][1];
+    double L, c;
+    if (e0 == 0 && e1 == 0) continue; /* a corner repeated */
+    if (least > 1e-200 && least < 1e200 && r[i] > least * 1.000001)
+      continue; /* c certainly beyond the least (relative rounding ~1e-15 of r) */
+    L = hypot(e0, e1);
+    c = x[i] / L;
+    if (c < depth) {
+      depth = c;
+      n[0] = -e1 / L;
+      n[1] = e0 / L;
+    }
+  }
+  return depth > 0 && depth < INFINITY ? depth : 0.0;
+}
+
 /* How deep the cores overlap (> 0; else 0): the origin's depth in their difference hull, from
  * its nearest edge, whose inward normal is the normal n from A to B that parts them by it
- * (the least translation). A hull without interior (points, a segment) holds no depth. A
- * link's segment and a box: the hull's edges known without it (segment_polygon_edges). */
+ * (the least translation). A hull without interior (points, a segment) holds no depth. (A
+ * link's segment and a box: edges_overlap, the hull's edges known without it.) */
 static double core_overlap(const sc_shape *A, const sc_shape *B, double *n) {
   double h[33][2], depth = INFINITY;
   int m, i;
-  if (A->kind == SC_SEGMENT && B->kind == SC_POLYGON && B->np >= 3 &&
-      (A->p[0][0] != A->p[1][0] || A->p[0][1] != A->p[1][1])) {
-    double e[6][2], x[6], r[6], least = INFINITY;
-    m = segment_polygon_edges(A, B, e, x);
-    for (i = 0; i < m; ++i)
-      if (x[i] < 0) return 0.0; /* the origin outside an edge's line: apart */
-    for (i = 0; i < m; ++i) { /* the squared distances c^2 = x^2 / |e|^2: the least first */
-      const double q = e[i][0] * e[i][0] + e[i][1] * e[i][1];
-      r[i] = q > 1e-280 && x[i] < 1e100 ? x[i] * x[i] / q : INFINITY;
-      least = r[i] < least ? r[i] : least;
-    }
-    for (i = 0; i < m; ++i) {
-      const double e0 = e[i][0], e1 = e[i][1];
-      double L, c;
-      if (e0 == 0 && e1 == 0) continue; /* a corner repeated */
-      if (least > 1e-200 && least < 1e200 && r[i] > least * 1.000001)
-        continue; /* c certainly beyond the least (relative rounding ~1e-15 of r) */
-      L = hypot(e0, e1);
-      c = x[i] / L;
-      if (c < depth) {
-        depth = c;
-        n[0] = -e1 / L;
-        n[1] = e0 / L;
-      }
-    }
-    return depth > 0 && depth < INFINITY ? depth : 0.0;
-  }
   m = difference_hull(A, B, h);
   if (m < 3) return 0.0;
   for (i = 0; i < m; ++i) /* the origin outside an edge's line: no depth (c < 0 below) */
@@ -261,6 +272,9 @@ static double core_overlap(const sc_shape *A, const sc_shape *B, double *n) {
   return depth > 0 ? depth : 0.0;
 }
 
+/* The lesser of two numbers (inline: libm's fmin is a call). */
+static double lesser(double a, double b) { return b < a ? b : a; }
+
 /* The contacts of cores that overlap, parted along n by depth, into out (the core points):
  * A's supporting feature along n and B's against it; a corner gives one contact, two flush
  * edges the ends of their shared stretch (one at its middle where shorter than merge). */
@@ -270,24 +284,24 @@ static void overlap_touches(const sc_shape *A, const sc_shape *B, const double *
   double ha = -INFINITY, hb = INFINITY, ua[2] = {INFINITY, -INFINITY}, ub[2], u[2];
   int i, k, m = 1;
   ub[0] = INFINITY, ub[1] = -INFINITY;
-  for (i = 0; i < A->np; ++i) ha = fmax(ha, A->p[i][0] * n[0] + A->p[i][1] * n[1]);
-  for (i = 0; i < B->np; ++i) hb = fmin(hb, B->p[i][0] * n[0] + B->p[i][1] * n[1]);
+  for (i = 0; i < A->np; ++i) ha = sc_max(ha, A->p[i][0] * n[0] + A->p[i][1] * n[1]);
+  for (i = 0; i < B->np; ++i) hb = lesser(hb, B->p[i][0] * n[0] + B->p[i][1] * n[1]);
   for (i = 0; i < A->np; ++i) /* the supporting features' stretches along t */
     if (A->p[i][0] * n[0] + A->p[i][1] * n[1] >= ha - eps) {
       double s = A->p[i][0] * t[0] + A->p[i][1] * t[1];
-      ua[0] = fmin(ua[0], s), ua[1] = fmax(ua[1], s);
+      ua[0] = lesser(ua[0], s), ua[1] = sc_max(ua[1], s);
     }
   for (i = 0; i < B->np; ++i)
     if (B->p[i][0] * n[0] + B->p[i][1] * n[1] <= hb + eps) {
       double s = B->p[i][0] * t[0] + B->p[i][1] * t[1];
-      ub[0] = fmin(ub[0], s), ub[1] = fmax(ub[1], s);
+      ub[0] = lesser(ub[0], s), ub[1] = sc_max(ub[1], s);
     }
   if (ua[1] - ua[0] <= eps) { /* A's corner */
     u[0] = ua[0];
   } else if (ub[1] - ub[0] <= eps) { /* B's corner */
     u[0] = ub[0];
   } else { /* flush edges: the ends of the shared stretch, or its middle */
-    double lo = fmax(ua[0], ub[0]), hi = fmin(ua[1], ub[1]);
+    double lo = sc_max(ua[0], ub[0]), hi = lesser(ua[1], ub[1]);
     m = hi - lo > merge ? 2 : 1;
     u[0] = m == 2 ? lo : 0.5 * (lo + hi);
     u[1] = hi;
@@ -387,27 +401,6 @@ static int apart(const sc_shape *A, const sc_shape *B, double beyond, double sca
   const double need = beyond + A->radius + B->radius + 1e-9 * scale;
   int s, k, i;
   if (!(need < INFINITY) || A->kind == SC_HALFPLANE || B->kind == SC_HALFPLANE) return 0;
-  if (A->kind == SC_SEGMENT && B->kind == SC_POLYGON && B->np == 4) {
-    /* a link and a box: the same axes and sums, the loops' bounds constants */
-    const double(*p)[2] = (const double(*)[2])B->p, *a0 = A->p[0], *a1 = A->p[1];
-    for (k = -1; k < 4; ++k) {
-      const double *a = k < 0 ? a0 : p[k], *b = k < 0 ? a1 : p[(k + 1) & 3];
-      const double ex = a[1] - b[1], ey = b[0] - a[0];
-      const double v0 = a0[0] * ex + a0[1] * ey, v1 = a1[0] * ex + a1[1] * ey;
-      double lo[2], hi[2], sep;
-      lo[0] = v1 < v0 ? v1 : v0;
-      hi[0] = v1 > v0 ? v1 : v0;
-      lo[1] = hi[1] = p[0][0] * ex + p[0][1] * ey;
-      for (i = 1; i < 4; ++i) {
-        const double v = p[i][0] * ex + p[i][1] * ey;
-        lo[1] = v < lo[1] ? v : lo[1];
-        hi[1] = v > hi[1] ? v : hi[1];
-      }
-      sep = sc_max(lo[1] - hi[0], lo[0] - hi[1]);
-      if (sep > 0 && sep * sep > need * need * (ex * ex + ey * ey)) return 1;
-    }
-    return 0;
-  }
   for (s = 0; s < 2; ++s) {
     const int ne = S[s]->kind == SC_POLYGON ? S[s]->np : S[s]->kind == SC_SEGMENT ? 1 : 0;
     for (k = 0; k < ne; ++k) {
@@ -473,9 +466,19 @@ SC_INTERNAL double sc_shape_closest(const sc_shape *A, const sc_shape *B, double
       return dd - A->radius - B->radius;
     }
   }
-  if (apart(A, B, beyond, scale)) return INFINITY;
+  if (segment_polygon(A, B)) { /* a link and a box: apart and overlap from the hull's edges */
+    double e[6][2], x[6];
+    const int m = segment_polygon_edges(A, B, e, x);
+    const double need = beyond + A->radius + B->radius + 1e-9 * scale;
+    for (i = 0; need < INFINITY && i < m; ++i) /* apart's axes, the same margin */
+      if (x[i] < 0 && x[i] * x[i] > need * need * (e[i][0] * e[i][0] + e[i][1] * e[i][1]))
+        return INFINITY;
+    depth = edges_overlap((const double(*)[2])e, x, m, nrm);
+  } else {
+    if (apart(A, B, beyond, scale)) return INFINITY;
+    depth = core_overlap(A, B, nrm);
+  }
   merge = fmax(merge, 1e-9 * scale);
-  depth = core_overlap(A, B, nrm);
   if (depth > 1e-12 * scale) { /* overlapping cores: their least translation */
     overlap_touches(A, B, nrm, scale, merge, out, count);
     core = -depth;

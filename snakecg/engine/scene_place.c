@@ -1,7 +1,8 @@
 /* snakecg's engine: a general scene's shapes placed at a configuration (sc_scene_place: the
  * links' segments at their poses, the objects at theirs or placed by the scene, the obstacles
  * once) and the objects' placement for the drawing and a simulation's start
- * (core_scene_place). Their closest points: scene_geometry.c.
+ * (core_scene_place, or core_scene_place_q from a configuration). Their closest points:
+ * scene_geometry.c.
  */
 #include "snakecg_layout.h"
 #include "engine.h"
@@ -134,4 +135,21 @@ int SNAKECG_EXPORT(core_scene_place)(const double *pk, sc_int n, const double *P
   free(shape);
   free(d);
   return ok ? 0 : -1;
+}
+
+/* The objects' poses (3 n_o) of the scene packed in pk at one configuration q (n_s): the
+ * link poses by the generated link_poses (with the scene's parameters, as the model's
+ * link_poses takes them), then core_scene_place's placement; the same numbers as those two
+ * steps from Python, without their calls' overhead (a simulation's start). Returns 0, -1 out
+ * of memory, 1 the generated function refused. */
+int SNAKECG_EXPORT(core_scene_place_q)(const double *pk, const double *q, double *pose) {
+  const sc_work_fn fns[] = {SNAKECG_LP_WORK};
+  double P[3 * SNAKECG_NL];
+  sc_work_t ws;
+  int code;
+  if (sc_work_alloc(&ws, fns, 1)) return -1;
+  ws.arg[LP_IN_q] = q, ws.arg[LP_IN_K] = pk + (sc_int)pk[SP_K], ws.res[LP_OUT_poses] = P;
+  code = SNAKECG_LP(ws.arg, ws.res, ws.iw, ws.w, 0) ? 1 : 0;
+  sc_work_free(&ws);
+  return code ? code : SNAKECG_EXPORT(core_scene_place)(pk, 1, P, pose);
 }

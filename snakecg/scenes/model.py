@@ -55,6 +55,8 @@ class GeneralSceneModel(RobotModel):
         self._zero_f = np.zeros((1, 3 * scene.n_objects))
         self._one = (_one_sample(self) if getattr(self.core, "scene_forward_call", None)
                      is not None else None)
+        self._steppers: list = []
+        """The time stepping's workspaces not lent to a run (:mod:`snakecg.scenes.stepping`)."""
 
     def __getattr__(self, name):
         if name in _REFUSED:

@@ -62,26 +62,34 @@ def simulate_with_geometry(model, q0, tau, duration, v0=None, *, q_obj0=None, v_
 def _plate_model(model):
     """The loaded general scene of :func:`plate_scene`, made once per model (kept in its
     data's derived constants)."""
-    from . import load_scene
-
     derived = model.data().derived
     got = derived.get("scenes.plate_model")
     if got is None:
+        from . import load_scene
+
         got = derived["scenes.plate_model"] = load_scene(plate_scene(model.scene))
     return got
 
 
-def _deepest(model, check, run):
-    """``check.deepest`` at the run's samples, by the paper model's own contact check of a
-    run (:class:`snakecg.simulate.contact_check.RunCheck`: compiled where the model is)."""
-    from ..simulate.contact_check import RunCheck
-    from ..simulate.dynamics import N_WORK
+def _run_check(model, tolerance):
+    """The paper's contact check of a run with ``tolerance`` (m): its
+    :class:`snakecg.geometry.ContactCheck` (every link a segment against the plate, the links
+    against each other) and the model's check of a run over it
+    (:class:`snakecg.simulate.contact_check.RunCheck`: compiled where the model is), made once
+    per tolerance (kept in the model's data's derived constants)."""
+    derived = model.data().derived
+    key = ("scenes.plate_check", float(tolerance))
+    got = derived.get(key)
+    if got is None:
+        from ..geometry import ContactCheck
+        from ..simulate.contact_check import RunCheck
+        from ..simulate.dynamics import N_WORK
 
-    ns = run.q.shape[1]
-    rc = RunCheck(model, "report", ns, 2 * (ns + 3) + N_WORK, shape=check)  # the state y
-    Y = np.zeros((len(run.t), rc.ny))
-    Y[:, :ns], Y[:, ns:ns + 3] = run.q, run.q_obj[:, 0]
-    return rc.deepest(Y)
+        check = ContactCheck.of_scene(model.scene, tolerance=tolerance, radius=0.0)
+        ns = model.n_coordinates
+        got = derived[key] = (check, RunCheck(model, "report", ns, 2 * (ns + 3) + N_WORK,
+                                              shape=check))  # the state y = (q, q_obj, ...)
+    return got
 
 
 def _checked(model, run):
@@ -90,21 +98,17 @@ def _checked(model, run):
     tolerance: a completed run that overlaps beyond it at a sample says so (status
     ``penetration`` or ``self_contact``, ``violation`` at the first such sample), the
     trajectory kept whole."""
-    from ..geometry import ContactCheck
-
-    if run.status != "completed" or not len(run.t):
+    if run.status != "completed":
         return run
-    check = ContactCheck.of_scene(model.scene, tolerance=run.tolerance, radius=0.0)  # segments
-    depth, pair = _deepest(model, check, run)
-    beyond = np.flatnonzero(depth > run.tolerance)
-    if beyond.size:
-        k = int(beyond[0])
-        i, j = check.pairs[int(pair[k])]
+    check, rc = _run_check(model, run.tolerance)
+    k, depth, pair = rc.first_beyond(run.states(), run.tolerance)
+    if k is not None:
+        i, j = check.pairs[pair]
         names = [f"link {i + 1}", "object 1" if j is None else f"link {j + 1}"]
-        message = (f"{names[0]} and {names[1]} overlap by {depth[k]:.3g} m at the sample "
+        message = (f"{names[0]} and {names[1]} overlap by {depth:.3g} m at the sample "
                    f"t = {run.t[k]:.6g} s (tolerance {run.tolerance:.3g} m; the paper's "
                    "contact check, every sample); the trajectory goes on as stepped")
-        run.status = check.kind(int(pair[k]))
+        run.status = check.kind(pair)
         run.message = message
         run.violation = {"t": float(run.t[k]), "bodies": names, "message": message}
     return run

@@ -54,6 +54,16 @@ class SceneEvent:
         return out
 
 
+#: the sample fields (made from the engine's rows when first read)
+_COLUMNS = ("t", "min_gap", "n_contacts", "contact_impulse", "kinetic_energy", "work_tau",
+            "friction_dissipation", "impact_loss", "contact_work", "q", "v", "q_obj", "v_obj",
+            "tau")
+#: the fields that are columns of the engine's figures (ST_*)
+_ACC = {"min_gap": ST_MIN_GAP, "n_contacts": ST_NC, "contact_impulse": ST_CONTACT_IMPULSE,
+        "kinetic_energy": ST_KE, "work_tau": ST_WORK_TAU, "friction_dissipation": ST_FRICTION,
+        "impact_loss": ST_IMPACT_LOSS, "contact_work": ST_CONTACT_WORK}
+
+
 def _finite(x):
     if isinstance(x, float) and not math.isfinite(x):
         return None
@@ -109,6 +119,7 @@ class SceneRun:
     _na: int = 0
     _names: object = None
     _engine_acc: object = None
+    _data: object = field(default=None, repr=False)
 
     @classmethod
     def start(cls, model, tolerance, dt) -> SceneRun:
@@ -153,42 +164,61 @@ class SceneRun:
     def samples(self, rows) -> None:
         """Samples from the engine's run (``snakecg/engine/scene_run.c``): rows of the time,
         the state ``x``, ``V``, the torque held over the step that ends there and the
-        engine's figures at it (``ST_*``); the fields are made at the end."""
+        engine's figures at it (``ST_*``); the fields are made from them when first read."""
         if len(rows):
             self._rows.append(np.asarray(rows, dtype=float))
 
     def finish(self, status, t, message, bodies=None) -> SceneRun:
         self._read()
-        self._columns()
+        self._engine_acc = None  # (read: the engine's array goes on to other runs)
         self.status = status
         self.message = message
         if status == "penetration":
             self.violation = {"t": float(t), "bodies": [self._names(*b) for b in bodies]
                               if bodies else [], "message": message}
-        for k in ("t", "min_gap", "n_contacts", "contact_impulse", "kinetic_energy",
-                  "work_tau", "friction_dissipation", "impact_loss", "contact_work", "q", "v",
-                  "q_obj", "v_obj", "tau"):
-            setattr(self, k, np.ascontiguousarray(getattr(self, k), dtype=float))
+        if self._rows:  # the fields made from the rows when first read (__getattr__)
+            self._data = (self._rows[0] if len(self._rows) == 1
+                          else np.concatenate(self._rows))
+            self._rows = []
+            for k in _COLUMNS:
+                del self.__dict__[k]
+        else:
+            for k in _COLUMNS:
+                setattr(self, k, np.ascontiguousarray(getattr(self, k), dtype=float))
         return self
 
-    def _columns(self) -> None:
-        """The samples' fields from the rows kept."""
-        if not self._rows:
-            return
+    def __getattr__(self, name):
+        """A sample field of a finished run, made from its rows on first read (kept)."""
+        data = self.__dict__.get("_data")
+        if data is None or name not in _COLUMNS:
+            raise AttributeError(name)
+        value = self.__dict__[name] = np.ascontiguousarray(self._column(data, name))
+        return value
+
+    def _column(self, data, name) -> np.ndarray:
+        """The field ``name`` of the rows ``data`` (the engine's: t, x, V, tau, acc)."""
         ns, n, na = self._ns, self._n, self._na
-        data = np.concatenate(self._rows)
-        x, V, tau, acc = (data[:, 1:1 + n], data[:, 1 + n:1 + 2 * n],
-                          data[:, 1 + 2 * n:1 + 2 * n + na], data[:, 1 + 2 * n + na:])
-        self.t = data[:, 0]
-        self.q, self.v = x[:, :ns], V[:, :ns]
-        self.q_obj = x[:, ns:].reshape(len(x), -1, 3)
-        self.v_obj = V[:, ns:].reshape(len(x), -1, 3)
-        self.tau = tau
-        for name, i in (("min_gap", ST_MIN_GAP), ("n_contacts", ST_NC),
-                        ("contact_impulse", ST_CONTACT_IMPULSE), ("kinetic_energy", ST_KE),
-                        ("work_tau", ST_WORK_TAU), ("friction_dissipation", ST_FRICTION),
-                        ("impact_loss", ST_IMPACT_LOSS), ("contact_work", ST_CONTACT_WORK)):
-            setattr(self, name, acc[:, i])
+        if name == "t":
+            return data[:, 0]
+        if name in ("q", "q_obj"):
+            x = data[:, 1:1 + n]
+            return x[:, :ns] if name == "q" else x[:, ns:].reshape(len(x), -1, 3)
+        if name in ("v", "v_obj"):
+            V = data[:, 1 + n:1 + 2 * n]
+            return V[:, :ns] if name == "v" else V[:, ns:].reshape(len(V), -1, 3)
+        if name == "tau":
+            return data[:, 1 + 2 * n:1 + 2 * n + na]
+        return data[:, 1 + 2 * n + na + _ACC[name]]
+
+    def states(self) -> np.ndarray:
+        """``(q, q_obj)`` of every sample side by side, ``(N, n_s + 3 n_objects)`` (a view of
+        the rows where the fields are not made yet)."""
+        data = self.__dict__.get("_data")
+        if data is not None:
+            return data[:, 1:1 + self._n]
+        if not len(self.q):
+            return np.zeros((0, self._n))
+        return np.concatenate((self.q, self.q_obj.reshape(len(self.q), -1)), axis=1)
 
     # after -----------------------------------------------------------------------------
     @property

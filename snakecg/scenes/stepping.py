@@ -99,6 +99,24 @@ class SceneState:
     v_obj: np.ndarray
 
 
+#: functions of packages imported on first use (snakecg.simulate, snakecg.progress: importing
+#: this module does not import them; an import inside every call costs about a microsecond)
+_LAZY: dict = {}
+
+
+def _late(name: str):
+    """``torque_law``, ``check_tau`` (snakecg.simulate.torques) or ``resolve``
+    (snakecg.progress), imported once."""
+    got = _LAZY.get(name)
+    if got is None:
+        from ..progress import resolve
+        from ..simulate.torques import check_tau, torque_law
+
+        _LAZY.update(torque_law=torque_law, check_tau=check_tau, resolve=resolve)
+        got = _LAZY[name]
+    return got
+
+
 #: the engine's step's statuses (scene_step.c)
 STEP_DONE, STEP_NOT_CONVERGED, STEP_IMPACT_NOT_CONVERGED = 0, 1, 2
 
@@ -143,16 +161,41 @@ class _Stepper:
             self.M, self.A, self.par, self.out, self.kind, self.start, self.M1, self.A1,
             self.par1, self.out1, self.kind1, self.start1, self.Vp, self.lam, self.info,
             self.ilam, self.iinfo, self.acc)]
+        self._pieces = self.pieces.ctypes.data
         self.args = SceneStep(model._pk, float(tol), 0.0, IMPACT_SPEED, *ad, eng.ccap, mcap,
-                              *bufs, 0, None if cold else self.pieces.ctypes.data, 0)
+                              *bufs, 0, None if cold else self._pieces, 0)
         self._address = address(self.args)
-        self._step = core.scene_step
+        self._step, self._place, self._x = core.scene_step, core.scene_place_q, ad[2]
+        self.runner = None  # the run's loop over this step (a pooled stepper keeps its own)
+
+    def reset(self, f_obj) -> None:
+        """Ready for a new run (a pooled stepper, :func:`_take`): the wrench on the objects,
+        the run's accumulators from zero, the warm start as the environment says now; the
+        rest is written by :meth:`begin` (its rows, the pieces forgotten)."""
+        self.fo[:3 * self.no] = f_obj
+        self.acc[:] = 0.0
+        self.acc[ST_SLIDING_COS] = -1.0
+        cold = os.environ.get(COLD_START_ENV, "") not in ("", "0")
+        self.args.from_ = None if cold else self._pieces
+        self.args.nfrom = 0
+        self.args.status = 0
+
+    def place(self, q) -> None:
+        """``q`` and the objects placed by the scene at it into the state ``x`` (the engine's
+        placement, ``core_scene_place_q``: :meth:`~snakecg.scenes.model.GeneralSceneModel.
+        object_poses`' numbers)."""
+        self.x[:self.ns] = q
+        if self._place(self.model._pk, self._x, self._x + 8 * self.ns):
+            raise MemoryError("the scene's placement ran out of memory")
 
     def begin(self, q, qo, v, vo) -> int:
-        """The run's start: the state (``qo``, ``vo``: ``(n_objects, 3)`` or flat; ``v``,
-        ``vo`` None: at rest) and the rows found there (:meth:`call` with ``h = 0``)."""
+        """The run's start: the state (``qo``, ``vo``: ``(n_objects, 3)`` or flat; ``qo``
+        None: the objects in ``x`` as they are, from :meth:`place`; ``v``, ``vo`` None: at
+        rest) and the rows found there (:meth:`call` with ``h = 0``)."""
         ns = self.ns
-        self.x[:ns], self.x[ns:] = q, np.asarray(qo).reshape(-1)
+        self.x[:ns] = q
+        if qo is not None:
+            self.x[ns:] = np.asarray(qo).reshape(-1)
         self.V[:ns] = 0.0 if v is None else v
         self.V[ns:] = 0.0 if vo is None else np.asarray(vo).reshape(-1)
         return self.call(0.0)
@@ -192,8 +235,8 @@ def _check_args(model, q0, v0, duration, dt, q_obj0, v_obj0, f_obj, tolerance):
         if value is None:
             return default
         arr = np.asarray(value, dtype=float) if not isinstance(value, (str, bytes)) else None
-        if arr is None or arr.size != int(np.prod(shape)) or not np.all(np.isfinite(arr)):
-            problems.append(f"{name} must be {int(np.prod(shape))} finite numbers "
+        if arr is None or arr.size != math.prod(shape) or not np.isfinite(arr).all():
+            problems.append(f"{name} must be {math.prod(shape)} finite numbers "
                             f"(shape {shape}), got {value!r:.60}")
             return default
         return arr.reshape(shape).copy()
@@ -224,7 +267,8 @@ class _Runner:
     """One run's loop in the engine (``core_scene_run``, ``snakecg/engine/scene_run.c``) over
     a :class:`_Stepper`: its arguments, the torque law's parameters, the record's buffer
     (``cap`` rows of ``t, x, V, tau, acc``; ``every``: keep every k-th step, 0 none) and the
-    pairs' distances of the root finding (their own call and buffers)."""
+    pairs' distances of the root finding (their own call and buffers). :meth:`reset` readies
+    it for another run of the same stepper."""
 
     def __init__(self, st: _Stepper, duration, dt, law: str, params, every: int, cap: int,
                  stop_at_impacts: bool = True, pause: int | None = None):
@@ -238,17 +282,36 @@ class _Runner:
         self.gs = SceneStateCall(model._pk, self.gq.ctypes.data, self.gqo.ctypes.data,
                                  eng.tol, 0.0, eng.gcap, eng.mcap, -1, -1,
                                  self.gout.ctypes.data, None, None, None, None, None)
-        self.lp = np.zeros(1) if params is None else np.ascontiguousarray(params, dtype=float)
-        self.rec = np.zeros((max(1, cap) if every else 1, self.width))
+        self.rec, self.lp = np.zeros((1, self.width)), np.zeros(1)
         self.work = np.zeros(2 * st.n + 5 * eng.gcap)
-        self.args = SceneRunCall(st._address, address(self.gs), eng.gcap, float(duration),
-                                 float(dt), H_MIN, FORCE_LIMIT, SCENE_LAWS[law], self.lp.size,
-                                 self.lp.ctypes.data, int(every), self.rec.ctypes.data,
-                                 self.rec.shape[0] if every else 0, 0, 0,
-                                 int(stop_at_impacts), self.work.ctypes.data)
-        self.args.pause = PAUSE_STEPS if pause is None else int(pause)
+        self.args = SceneRunCall(st._address, address(self.gs), eng.gcap, 0.0, 0.0, H_MIN,
+                                 FORCE_LIMIT, 0, 0, self.lp.ctypes.data, 0,
+                                 self.rec.ctypes.data, 0, 0, 0, 0, self.work.ctypes.data)
         self._address = address(self.args)
         self._run = model.core.scene_run
+        self.reset(duration, dt, law, params, every, cap, stop_at_impacts, pause)
+
+    def reset(self, duration, dt, law: str, params, every: int, cap: int,
+              stop_at_impacts: bool = True, pause: int | None = None) -> None:
+        """A new run's arguments (those of the constructor), its time, steps and record from
+        zero; the record's buffer kept where it has the room."""
+        a = self.args
+        lp = np.zeros(1) if params is None else np.asarray(params, dtype=float).reshape(-1)
+        if self.lp.size < lp.size:  # (the parameters' buffer, kept where it has the room)
+            self.lp = np.zeros(lp.size)
+            a.lp = self.lp.ctypes.data
+        self.lp[:lp.size] = lp
+        rows = max(1, cap) if every else 1
+        if self.rec.shape[0] < rows:
+            self.rec = np.zeros((rows, self.width))
+            a.rec = self.rec.ctypes.data
+        a.duration, a.dt = float(duration), float(dt)
+        a.law, a.nlp = SCENE_LAWS[law], lp.size
+        a.every, a.cap, a.nrec = int(every), rows if every else 0, 0
+        a.stop_at_impacts = int(stop_at_impacts)
+        a.pause = PAUSE_STEPS if pause is None else int(pause)
+        a.t, a.nstep, a.phase, a.impacts, a.min_gap = 0.0, 0, 0, 0, 0.0
+        a.bad[:] = (0.0,) * 5
 
     def go(self) -> int:
         """Go on with the run: why the engine returned (``RUN_*``)."""
@@ -261,10 +324,58 @@ class _Runner:
         return code
 
     def take(self) -> np.ndarray:
-        """The record's rows since the last take (the buffer emptied)."""
-        k = int(self.args.nrec)
-        self.args.nrec = 0
-        return self.rec[:k].copy()
+        """The record's rows since the last take (the buffer emptied): the buffer itself,
+        handed over (not copied), and a new one of its size for the rows to come."""
+        a = self.args
+        k = int(a.nrec)
+        rows = self.rec[:k]
+        if k:
+            self.rec = np.empty_like(self.rec)
+            a.rec = self.rec.ctypes.data
+        a.nrec = 0
+        return rows
+
+
+#: steppers (with their runners) kept per model for later runs (more at once are made and
+#: dropped)
+POOL_SIZE = 4
+#: largest record buffer (bytes) a kept runner keeps (a run with more rows per return makes
+#: its own)
+KEEP_BYTES = 1 << 20
+
+
+def _take(model, tol: float, f_obj) -> _Stepper:
+    """A :class:`_Stepper` of ``model`` with the contact tolerance ``tol`` for one run: one
+    from the model's pool, readied (:meth:`_Stepper.reset`), or a new one. The pool is the
+    model's (``model._steppers``): its buffers and structs, lent to one run at a time (two
+    runs at once, threads or a caller's law that runs another, hold two) and given back when
+    the run ends, however it ends (the next run's :meth:`_Stepper.reset` and
+    :meth:`_Stepper.begin` write everything a run reads)."""
+    pool = getattr(model, "_steppers", ())
+    for i in range(len(pool) - 1, -1, -1):
+        if pool[i].engine.tol == tol:
+            try:
+                st = pool.pop(i)
+            except IndexError:  # another thread took one
+                break
+            if st.engine.tol == tol:
+                st.reset(f_obj)
+                return st
+            pool.append(st)
+            break
+    return _Stepper(model, tol, f_obj)
+
+
+def _give(model, st: _Stepper) -> None:
+    """``st`` back to the pool of ``model`` (dropped when the pool is full; its record's
+    buffer dropped when above :data:`KEEP_BYTES`)."""
+    pool = getattr(model, "_steppers", None)
+    if pool is not None and len(pool) < POOL_SIZE:
+        run = st.runner
+        if run is not None and run.rec.nbytes > KEEP_BYTES:
+            run.rec = np.zeros((1, run.width))
+            run.args.rec, run.args.cap = run.rec.ctypes.data, 0
+        pool.append(st)
 
 
 def engine_law(kind: str, law, n_a: int):
@@ -303,24 +414,31 @@ def simulate_scene(model, q0, duration, *, v0=None, tau=None, dt=1e-3, q_obj0=No
     :data:`PROGRESS_EVERY` seconds of a long run (:func:`snakecg.progress.resolve`), or a
     ``progress(message)`` callable.
     """
-    from ..progress import resolve
-    from ..simulate.torques import check_tau, torque_law
-
     q, v, qo, vo, fo = _check_args(model, q0, v0, duration, dt, q_obj0, v_obj0, f_obj,
                                    tolerance)
     if isinstance(output_every, bool) or not isinstance(output_every, (int, np.integer)) \
             or output_every < 1:
         raise InputError(f"simulate: output_every must be an integer >= 1, got "
                          f"{output_every!r:.60}")
-    scene = model.scene
-    tol = contact_tolerance(scene, tolerance)
+    tol = contact_tolerance(model.scene, tolerance)
     na = model.n_joints
-    kind, law = torque_law(np.zeros(na) if tau is None else tau, na)
+    kind, law = _late("torque_law")(np.zeros(na) if tau is None else tau, na)
     name, params = engine_law(kind, law, na)
-    st = _Stepper(model, tol, fo.reshape(-1))
-    ns = st.ns
+    st = _take(model, tol, fo.reshape(-1))
+    try:
+        return _run(model, st, q, v, qo, vo, duration, dt, output_every, kind, law, name,
+                    params, progress, tol)
+    finally:
+        _give(model, st)
+
+
+def _run(model, st, q, v, qo, vo, duration, dt, output_every, kind, law, name, params,
+         progress, tol) -> SceneRun:
+    """:func:`simulate_scene`'s run on the stepper ``st``, its arguments checked."""
+    check_tau = _late("check_tau")
+    ns, na, scene = st.ns, model.n_joints, model.scene
     if qo is None:
-        qo = model.object_poses(q)
+        st.place(q)
     rec = SceneRun.start(model, tol, dt)
 
     def torque(t):
@@ -335,12 +453,16 @@ def simulate_scene(model, q0, duration, *, v0=None, tau=None, dt=1e-3, q_obj0=No
     if st.begin(q, qo, v, vo) != STEP_DONE:
         return rec.finish("penetration", 0.0, st.engine.refusal(st.out))
     cap = int(min(RECORD_ROWS, duration / dt / output_every + 4))
-    run = _Runner(st, duration, dt, name, params, int(output_every), cap)
+    run = st.runner
+    if run is None:
+        run = st.runner = _Runner(st, duration, dt, name, params, int(output_every), cap)
+    else:
+        run.reset(duration, dt, name, params, int(output_every), cap)
     if name == "constant":
         st.tau[:na] = params
     elif name == "caller":
         st.tau[:na] = torque(0.0)
-    report = resolve(progress)
+    report = _late("resolve")(progress)
     wall = time.perf_counter()
     args = run.args
     while True:

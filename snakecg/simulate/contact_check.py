@@ -82,6 +82,7 @@ class RunCheck:
         self.address = address(g)
         core = getattr(model, "core", None)
         self._c = getattr(core, "contact_depth", None)
+        self._first = getattr(core, "contact_first", None)
 
     @property
     def active(self) -> bool:
@@ -107,6 +108,31 @@ class RunCheck:
             self._c(self.address, len(Y), Y.ctypes.data, depth.ctypes.data, pair.ctypes.data)
             return depth, pair.astype(np.intp)
         return self.shape.deepest(Y[:, :self.ns], Y[:, self.ns:self.ns + 3])
+
+    def first_beyond(self, states, tol: float) -> tuple[int | None, float, int]:
+        """The first of ``states`` ``(n, >= n_s + 3)`` (rows of ``q``, ``q_obj``, then
+        anything; a view with its rows apart is read in place where compiled) whose largest
+        overlap exceeds ``tol``: its index (None where none), that overlap and its pair."""
+        states = np.asarray(states, dtype=float)
+        if self._first is None or states.strides[1] != 8 or states.strides[0] % 8:
+            depth, pair = self._deepest_of(states)
+            beyond = np.flatnonzero(depth > tol)
+            if not beyond.size:
+                return None, 0.0, -1
+            k = int(beyond[0])
+            return k, float(depth[k]), int(pair[k])
+        out = np.empty(2)  # (its own: a check may be shared by threads)
+        k = self._first(self.address, len(states), states.ctypes.data, states.strides[0] // 8,
+                        float(tol), out.ctypes.data)
+        if k >= len(states):
+            return None, 0.0, -1
+        return k, float(out[0]), int(out[1])
+
+    def _deepest_of(self, states) -> tuple[np.ndarray, np.ndarray]:
+        """:meth:`deepest` of states ``(n, >= n_s + 3)`` (``q``, ``q_obj`` first)."""
+        Y = np.zeros((len(states), self.ny))
+        Y[:, :self.ns + 3] = states[:, :self.ns + 3]
+        return self.deepest(Y)
 
     def _record(self, t, y, depth, pair) -> None:
         g = self.struct

@@ -386,12 +386,25 @@ _PAPER_ONLY = ("rho", "control_period", "method", "rtol", "atol", "max_step", "f
                "stabilization", "output_dt", "max_events", "integrator", "geometry_check")
 
 
-def _with_geometry(model, q0, tau, duration, v0, given):
-    """:func:`simulate` with ``contacts="geometry"``, its arguments ``given``: the paper's
-    options must be left at their defaults."""
+#: functions imported on first use (snakecg.scenes is not imported with this module; an import
+#: inside every call costs about a microsecond)
+_LAZY: dict = {}
+
+
+def _geometry():
+    """``is_scene_model`` and :func:`snakecg.scenes.paper.simulate_with_geometry`, imported
+    once."""
     from ..kinds import is_scene_model
     from ..scenes.paper import simulate_with_geometry
 
+    got = _LAZY["geometry"] = (is_scene_model, simulate_with_geometry)
+    return got
+
+
+def _with_geometry(model, q0, tau, duration, v0, given):
+    """:func:`simulate` with ``contacts="geometry"``, its arguments ``given``: the paper's
+    options must be left at their defaults."""
+    is_scene_model, simulate_with_geometry = _LAZY.get("geometry") or _geometry()
     if not is_scene_model(model):
         raise InputError("contacts='geometry' simulates a loaded snakecg.Scene "
                          f"(snakecg.load(scene)), got {type(model).__name__}")
