@@ -106,55 +106,18 @@ static double sc_geo_link_plate(double ax, double ay, double bx, double by, doub
   return sc_geo_max(0.0, r - dist);
 }
 
-/* cos and sin of x (|x| <= 1e5; else libm's) within 1e-15 of libm's: x less the nearest
- * multiple n pi / 2 (pi / 2 in two parts, the first's product with n exact), fdlibm's
- * polynomials of sin and cos on [-pi / 4, pi / 4], the quadrant by n. */
-static inline void sc_geo_sincos(double x, double *c, double *s) {
-  /* (n: x 2 / pi rounded to the nearest integer by adding and taking away 1.5 2^52) */
-  const double n = (x * 0.63661977236758134308 + 6755399441055744.0) - 6755399441055744.0;
-  const double r = (x - n * 1.57079632673412561417) - n * 6.07710050650619224932e-11;
-  const double z = r * r;
-  const double sr = r + r * z * (-1.66666666666666324348e-01 + z * (8.33333333332248946124e-03 +
-                    z * (-1.98412698298579493134e-04 + z * (2.75573137070700676789e-06 +
-                    z * (-2.50507602534068634195e-08 + z * 1.58969099521155010221e-10)))));
-  const double cr = 1.0 - 0.5 * z + z * z * (4.16666666666666019037e-02 +
-                    z * (-1.38888888888741095749e-03 + z * (2.48015872894767294178e-05 +
-                    z * (-2.75573143513906633035e-07 + z * (2.08757232129817482790e-09 +
-                    z * -1.13596475577881948265e-11)))));
-  if (!(fabs(x) <= 1e5)) {
-    *c = cos(x);
-    *s = sin(x);
-    return;
-  }
-  switch ((long)n & 3) {
-    case 0: *c = cr, *s = sr; break;
-    case 1: *c = -sr, *s = cr; break;
-    case 2: *c = -cr, *s = -sr; break;
-    default: *c = sr, *s = -cr;
-  }
-}
-
-/* sc_geo_depth, the angles' cos and sin libm's or (fast) sc_geo_sincos'. */
-static double depth_at(const sc_geometry *g, const double *y, sc_int *pair, int fast) {
-  double rear[SC_GEO_NL][2], front[SC_GEO_NL][2], phi = y[2], best = 0.0, cs, sn;
+/* The largest overlap at the state y and its pair (the first of equals). */
+double sc_geo_depth(const sc_geometry *g, const double *y, sc_int *pair) {
+  double rear[SC_GEO_NL][2], front[SC_GEO_NL][2], phi = y[2], best = 0.0;
   const double h = g->half, r = g->radius, ox = y[SNAKECG_NS], oy = y[SNAKECG_NS + 1];
+  const double cs = cos(y[SNAKECG_NS + 2]), sn = sin(y[SNAKECG_NS + 2]);
   const double reach = h * 1.4142135623730951 + r; /* the plate's circle, widened */
   sc_int i, j, p = 0;
-  if (fast) {
-    sc_geo_sincos(y[SNAKECG_NS + 2], &cs, &sn);
-  } else {
-    cs = cos(y[SNAKECG_NS + 2]);
-    sn = sin(y[SNAKECG_NS + 2]);
-  }
   for (i = 0; i < SC_GEO_NL; ++i) {
     double ex, ey;
     if (i) phi += y[2 + i];
-    if (fast) {
-      sc_geo_sincos(phi, &ex, &ey);
-    } else {
-      ex = cos(phi);
-      ey = sin(phi);
-    }
+    ex = cos(phi);
+    ey = sin(phi);
     if (i == 0) {
       rear[0][0] = y[0] - g->com1 * ex;
       rear[0][1] = y[1] - g->com1 * ey;
@@ -197,11 +160,6 @@ static double depth_at(const sc_geometry *g, const double *y, sc_int *pair, int 
   return best;
 }
 
-/* The largest overlap at the state y and its pair (the first of equals). */
-double sc_geo_depth(const sc_geometry *g, const double *y, sc_int *pair) {
-  return depth_at(g, y, pair, 0);
-}
-
 /* The first violation: at t, the state y (NY), its overlap and pair. */
 void sc_geo_record(sc_geometry *g, double t, const double *y, double depth, sc_int pair) {
   g->found = 1;
@@ -228,18 +186,10 @@ int SNAKECG_EXPORT(core_contact_depth)(const sc_geometry *g, sc_int n, const dou
  * its pair into out[0], out[1]. */
 int SNAKECG_EXPORT(core_contact_first)(const sc_geometry *g, sc_int n, const double *Y,
                                       sc_int stride, double tol, double *out) {
-  double span = g->half + 2.0 * g->radius + g->com1;
-  sc_int k, p, i;
-  for (i = 0; i < SC_GEO_NL; ++i) span += g->length[i];
+  sc_int k, p;
   for (k = 0; k < n; ++k) {
-    const double *y = Y + k * stride;
-    /* the fast cos and sin move the points by ~1e-15 of the state's and the chain's size (an
-     * overlap is 1-Lipschitz in them): a state within 1e-12 of them below tol is not beyond;
-     * the others are measured with libm's (the decision and the overlap sc_geo_depth's) */
-    const double margin = 1e-12 * (1.0 + span + fabs(y[0]) + fabs(y[1]) +
-                                   fabs(y[SNAKECG_NS]) + fabs(y[SNAKECG_NS + 1]));
-    double d = depth_at(g, y, &p, 1);
-    if (!(d <= tol - margin) && (d = depth_at(g, y, &p, 0)) > tol) {
+    const double d = sc_geo_depth(g, Y + k * stride, &p);
+    if (d > tol) {
       out[0] = d;
       out[1] = (double)p;
       return (int)k;
