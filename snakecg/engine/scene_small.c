@@ -22,7 +22,7 @@
  * by column with each column's entries in registers, Z two of A's rows at a time with their
  * t entries in registers; the same terms in the same order, bit for bit again (a harness of
  * 3,000 random problems, tests/test_scenes_small_fixed.py). The pegs step's factor 4,050 ->
- * 1,700 instructions, Z 9,850 -> 4,600 (callgrind).
+ * 1,980 instructions, Z 9,850 -> 4,090 (callgrind).
  */
 #include <math.h>
 
@@ -37,7 +37,7 @@
 
 #if SNAKECG_NS <= 16 && defined(__GNUC__) && !defined(SC_GENERAL_ONLY)
 #define SC_FIXED 1 /* the snake's block unrolled (code of O(n_s^3); SC_GENERAL_ONLY: not) */
-typedef double sc_v2 __attribute__((vector_size(16)));
+typedef double __attribute__((vector_size(16))) sc_v2;
 
 /* factor's dense block where it is the snake's (t = n_s, every loop's bounds constants and
  * unrolled), column by column (each a column of pairs; f is its row n_s, g = L^-1 f the
