@@ -48,9 +48,9 @@ typedef double __attribute__((vector_size(16))) sc_v2;
  * sc_cholesky's and factor's dot products, and the same divisions: L and g bit for bit theirs,
  * the same pivots against thr = rel_t times the block's largest diagonal entry (sc_cholesky's
  * threshold). A pair's entry above a column's diagonal is worked on and never read. Returns 0
- * at a pivot not above thr (L and a then unwritten). */
-SC_FLAT int factor_ns(sc_int n, const double *M, const double *f, double thr, double *L,
-                      double *a) {
+ * at a pivot not above thr (L and a then unwritten). One copy (factor is compiled per size). */
+static __attribute__((noinline)) int factor_ns(sc_int n, const double *M, const double *f,
+                                               double thr, double *L, double *a) {
   enum { T = SNAKECG_NS, P = (SNAKECG_NS + 2) / 2 }; /* (P pairs a column: rows 0..T, f's) */
   sc_v2 C[T][P];
   sc_int i, j, k, p;
@@ -183,6 +183,20 @@ SC_FLAT void z_pair(sc_int m, const sc_v2 *Lb, const double *a0, const double *a
     if (both) Z[i * m + 1] = z[i][1];
   }
 }
+
+/* Z's rows of the snake's block (t = n_s), every pair of A's rows (one copy of the unrolled
+ * code: z_rows is compiled once per size). */
+static __attribute__((noinline)) void z_fixed(sc_int n, sc_int m, const double *L,
+                                              const double *A, double *Z) {
+  sc_v2 Lb[SNAKECG_NS * SNAKECG_NS]; /* (L's entries in both lanes: one load a product) */
+  sc_int i, j, k;
+  SC_UNROLL for (i = 0; i < SNAKECG_NS; ++i)
+    SC_UNROLL for (k = 0; k <= i; ++k) Lb[i * SNAKECG_NS + k] = (sc_v2){L[i * n + k], L[i * n + k]};
+  SC_UNROLL for (i = 0; i < SNAKECG_NS; ++i) /* (the diagonal: its reciprocal) */
+    Lb[i * SNAKECG_NS + i] = 1.0 / Lb[i * SNAKECG_NS + i];
+  for (j = 0; j + 1 < m; j += 2) z_pair(m, Lb, A + j * n, A + (j + 1) * n, Z + j, 1);
+  if (j < m) z_pair(m, Lb, A + j * n, A + j * n, Z + j, 0);
+}
 #endif
 
 /* Z = L^-1 A^T (n x m: coordinate i's row at Z + i m, every row of A at once). L's rows from t
@@ -195,14 +209,7 @@ SC_FLAT void z_rows(sc_int n, sc_int m, sc_int t, const double *L, const double 
   }
 #ifdef SC_FIXED
   if (t == SNAKECG_NS) { /* (the snake's block: two of A's rows at a time, in registers) */
-    sc_v2 Lb[SNAKECG_NS * SNAKECG_NS]; /* (L's entries in both lanes: one load a product) */
-    SC_UNROLL for (i = 0; i < SNAKECG_NS; ++i)
-      SC_UNROLL for (k = 0; k <= i; ++k)
-        Lb[i * SNAKECG_NS + k] = (sc_v2){L[i * n + k], L[i * n + k]};
-    SC_UNROLL for (i = 0; i < SNAKECG_NS; ++i) /* (the diagonal: its reciprocal) */
-      Lb[i * SNAKECG_NS + i] = 1.0 / Lb[i * SNAKECG_NS + i];
-    for (j = 0; j + 1 < m; j += 2) z_pair(m, Lb, A + j * n, A + (j + 1) * n, Z + j, 1);
-    if (j < m) z_pair(m, Lb, A + j * n, A + j * n, Z + j, 0);
+    z_fixed(n, m, L, A, Z);
     return;
   }
 #endif
