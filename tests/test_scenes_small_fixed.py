@@ -6,7 +6,7 @@ Z against ``solve_triangular`` (to the condition number times rounding), on iner
 objects (their diagonal tail) and 1-31 rows; the pivot rule (a pivot not above 1e-14 of the
 largest diagonal entry refuses) on rank-deficient inertias; and the snake's unrolled block
 against the general loops (the same file compiled with ``SC_GENERAL_ONLY``): its factor bit
-for bit, its Z within rounding."""
+for bit, its Z within rounding; Z's AVX copy bit for bit the code without it (``SC_NO_AVX``)."""
 
 from __future__ import annotations
 
@@ -42,15 +42,17 @@ SIZES = (7, 13, 16, 17)  # n_s: 17 is past the unrolled block's 16 (the general 
 
 
 def _build(tmp, ns, general):
+    """general: 0 the file as the engine compiles it, 1 its general loops alone
+    (SC_GENERAL_ONLY), 2 the unrolled block without its AVX copy (SC_NO_AVX)."""
     cc = find_compiler()
     assert cc is not None, "the engine needs a C compiler (cc, gcc or clang)"
-    folder = tmp / f"ns{ns}{'g' if general else ''}"
+    folder = tmp / f"ns{ns}-{general}"
     folder.mkdir()
     na = ns - 3
     (folder / "snakecg_layout.h").write_text(LAYOUT.format(na=na, ns=ns, nl=na + 1, nc=na + 2))
     (folder / "shim.c").write_text(SHIM)
     lib = folder / "libsmall.so"
-    flags = ["-DSC_GENERAL_ONLY"] if general else []
+    flags = [[], ["-DSC_GENERAL_ONLY"], ["-DSC_NO_AVX"]][general]
     subprocess.run([cc, *CORE_FLAGS, *flags, "-shared", "-I", str(folder), "-I", str(ENGINE_DIR),
                     str(folder / "shim.c"), "-o", str(lib), "-lm"], check=True,
                    capture_output=True)
@@ -72,7 +74,7 @@ def _build(tmp, ns, general):
 @pytest.fixture(scope="module")
 def libs(tmp_path_factory):
     tmp = tmp_path_factory.mktemp("small")
-    return {(ns, general): _build(tmp, ns, general) for ns in SIZES for general in (0, 1)}
+    return {(ns, general): _build(tmp, ns, general) for ns in SIZES for general in (0, 1, 2)}
 
 
 def _inertia(rng, ns, no, cond):
@@ -123,6 +125,11 @@ def test_unrolled_block_against_the_general_loops(libs, ns):
         Z, Zg = fixed[3], general[3]
         scale = np.abs(Zg).max(axis=0)
         assert np.all(np.abs(Z - Zg) <= 4 * ns * 2.2e-16 * np.sqrt(cond) * scale)
+        # the AVX copy (four of A's rows at a time, where the processor has it) bit for bit
+        # the two-at-a-time code: each lane's operations are the same
+        plain = libs[ns, 2](M, f, A)
+        for x, y in zip(fixed, plain):
+            assert np.asarray(x).tobytes() == np.asarray(y).tobytes()
 
 
 @pytest.mark.parametrize("ns", SIZES)
