@@ -21,8 +21,8 @@
  *   max_sr.c, push.c, wheel_states.c   the queries' solves
  *   pieces.c, sphere.c                 the exact extremes' pieces and faces (exported)
  *   scene_sets.c, _piece.c, _primal.c, _small.c, _tiny.c, _solve.c   the exact solve
- *   scene_place.c, scene_geometry.c, scene_rows.c, scene_step.c, scene_run.c   placement,
- *                   contacts, rows, forward, a time step, whole runs and batches of runs
+ *   scene_place.c, _geometry.c, _broad.c, _rows.c, _step.c, _run.c   placement, contacts
+ *                   (their broad phase), rows, forward, a time step, whole runs and batches
  *   scene_friction.c  Coulomb friction at a general scene's contacts (tangent rows, its solve)
  *
  * One prefix (sc_), one integer type (sc_int). The library exports the model's prefixed entry

@@ -30,6 +30,7 @@
 #include "snakecg_layout.h"
 #include "engine.h"
 #include "scene_rows.h"
+#include "scene_broad.h"
 
 /* the packed scene (SP_*, LINK_W, OBJ_W, OBS_W): engine.h */
 enum { GB_W = 8 };    /* type (GB_*), body, wheel offset, par (3), block kind (K_*) */
@@ -110,14 +111,12 @@ static sc_int contact_rows(sc_scene_work *sw, const double *P, double *recs, dou
   const sc_int n = sw->n, nl = SNAKECG_NL;
   sc_int ia, ib, nc = 0, k, j;
   sc_touch t[SC_TOUCH_MAX];
+  sc_broad it; /* (the bodies after ia whose circles are not apart: scene_broad.h) */
   for (ia = 0; ia < nl + sw->no; ++ia)
-    for (ib = ia + 1; ib < sw->nbody; ++ib) {
-      const double *ca = sw->centre + 2 * ia, *cb = sw->centre + 2 * ib;
-      double d, dx = ca[0] - cb[0], dy = ca[1] - cb[1], far;
+    for (sc_broad_first(&it, ia, nl);
+         (ib = sc_broad_next(&it, sw->centre, sw->reach, tol, ia, sw->nbody)) >= 0;) {
+      double d;
       int count;
-      if (ib < nl && ib - ia < 2) continue; /* neighbouring links */
-      far = (sw->reach[ia] + sw->reach[ib] + 2 * tol) * (1 + 1e-9); /* circles apart */
-      if (dx * dx + dy * dy > far * far) continue;
       d = sc_shape_closest(sw->shape + ia, sw->shape + ib, size, tol, tol, t, &count);
       if (d < -tol) {
         double *o = over, idx;

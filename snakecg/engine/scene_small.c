@@ -16,7 +16,17 @@
  * The factor's loops run over the dense block's t rows, Z's and G's over the m rows inside
  * loops over the coordinates; for t (and m) up to 8 they are compiled once per size (SC_BY: the
  * same loops with the size a constant, unrolled, no remainder or alias checks), the arithmetic
- * and its order unchanged, so their results are bit for bit the general loops'.
+ * and its order unchanged, so their results are bit for bit the general loops'. Where the
+ * dense block is the snake's (t = n_s, up to 16: the pegs row's 13) the factor and Z are
+ * unrolled whole (SC_FIXED, GCC's vector types: two doubles an operation): the factor column
+ * by column with each column's entries in registers, the same terms in the same order, bit
+ * for bit (tests/test_scenes_small_fixed.py); Z two of A's rows at a time with their t
+ * entries in registers, each row's sum grouped so that its chain from the row before is short
+ * and multiplied by 1 / L_ii: within rounding of the general loops' (their divisions, one per
+ * entry, bound Z's time); four rows at a time in AVX registers where the processor has them
+ * (chosen at run time; each lane's operations the same, bit for bit). The pegs step
+ * (callgrind; CPU time in a harness at m = 25): the factor 4,050 -> 1,980 instructions
+ * (340 -> 240 ns), Z 9,850 -> 4,100 (570 -> 370 ns; with AVX 240 ns).
  */
 #include <math.h>
 
@@ -29,20 +39,74 @@
 #define SC_FLAT static inline
 #endif
 
-/* The dense block's factor (t x t, its threshold rel_t) and the tail's square roots, g = L^-1 f
- * (sc_inertia_factor's; t a constant where the caller's switch makes it one). */
+#if SNAKECG_NS <= 16 && defined(__GNUC__) && !defined(SC_GENERAL_ONLY)
+#define SC_FIXED 1 /* the snake's block unrolled (code of O(n_s^3); SC_GENERAL_ONLY: not) */
+typedef double __attribute__((vector_size(16))) sc_v2;
+
+/* factor's dense block where it is the snake's (t = n_s, every loop's bounds constants and
+ * unrolled), column by column (each a column of pairs; f is its row n_s, g = L^-1 f the
+ * factor's row of f): column k less the columns before it times their row k, its pivot, its
+ * entries. Every entry gets the same products subtracted in the same order (j ascending) as
+ * sc_cholesky's and factor's dot products, and the same divisions: L and g bit for bit theirs,
+ * the same pivots against thr = rel_t times the block's largest diagonal entry (sc_cholesky's
+ * threshold). A pair's entry above a column's diagonal is worked on and never read. Returns 0
+ * at a pivot not above thr (L and a then unwritten). One copy (factor is compiled per size). */
+static __attribute__((noinline)) int factor_ns(sc_int n, const double *M, const double *f,
+                                               double thr, double *L, double *a) {
+  enum { T = SNAKECG_NS, P = (SNAKECG_NS + 2) / 2 }; /* (P pairs a column: rows 0..T, f's) */
+  sc_v2 C[T][P];
+  sc_int i, j, k, p;
+  SC_UNROLL for (k = 0; k < T; ++k) {
+    double *c = (double *)C[k];
+    SC_UNROLL for (i = 0; i < 2 * P; ++i) c[i] = i >= k && i < T ? M[i * n + k] : 0.0;
+    c[T] = f[k];
+  }
+  SC_UNROLL for (k = 0; k < T; ++k) { /* column k, held in registers */
+    sc_v2 c[P];
+    double d;
+    SC_UNROLL for (p = k / 2; p < P; ++p) c[p] = C[k][p];
+    SC_UNROLL for (j = 0; j < k; ++j) {
+      const double b = C[j][k / 2][k % 2]; /* L_kj */
+      SC_UNROLL for (p = k / 2; p < P; ++p) c[p] -= b * C[j][p];
+    }
+    d = c[k / 2][k % 2];
+    if (!(d > thr)) return 0;
+    d = sqrt(d);
+    SC_UNROLL for (p = k / 2; p < P; ++p) C[k][p] = c[p] / d;
+    C[k][k / 2][k % 2] = d;
+  }
+  SC_UNROLL for (i = 0; i < T; ++i) {
+    SC_UNROLL for (k = 0; k <= i; ++k) L[i * n + k] = C[k][i / 2][i % 2];
+    a[i] = C[i][T / 2][T % 2];
+  }
+  return 1;
+}
+#endif
+
+/* The dense block's factor (t x t, its threshold rel_t; big_t its largest diagonal entry) and
+ * the tail's square roots, g = L^-1 f (sc_inertia_factor's; t a constant where the caller's
+ * switch makes it one; the snake's block t = n_s: factor_ns). */
 SC_FLAT int factor(sc_int n, sc_int t, const double *M, const double *f, double rel,
-                   double big, double rel_t, double *L, double *a) {
-  sc_int i, j;
-  for (i = 0; i < t; ++i)
-    for (j = 0; j <= i; ++j) L[i * n + j] = M[i * n + j];
-  if (t > 0 && !sc_cholesky(t, L, n, rel_t)) return 0;
+                   double big, double rel_t, double big_t, double *L, double *a) {
+  sc_int i, j, i0 = 0;
+#ifdef SC_FIXED
+  if (t == SNAKECG_NS) {
+    if (!factor_ns(n, M, f, rel_t * big_t, L, a)) return 0;
+    i0 = t;
+  } else
+#endif
+  {
+    for (i = 0; i < t; ++i)
+      for (j = 0; j <= i; ++j) L[i * n + j] = M[i * n + j];
+    if (t > 0 && !sc_cholesky(t, L, n, rel_t)) return 0;
+  }
+  (void)big_t;
   for (i = t; i < n; ++i) {
     const double d = M[i * n + i];
     if (!(d > rel * big)) return 0;
     L[i * n + i] = sqrt(d);
   }
-  for (i = 0; i < n; ++i) { /* g = L^-1 f */
+  for (i = i0; i < n; ++i) { /* g = L^-1 f */
     double s = f[i];
     for (j = 0; j < (i < t ? i : 0); ++j) s -= L[i * n + j] * a[j];
     a[i] = s / L[i * n + i];
@@ -94,9 +158,102 @@ SC_INTERNAL int sc_inertia_factor(sc_int n, const double *M, const double *f, do
   if (!(big > 0.0) || !isfinite(big)) return 0;
   rel_t = big_t == big ? rel : rel * (big / big_t);
   *t_out = t;
-  SC_BY_N(n, t, SC_BY(t, return factor(n, t, M, f, rel, big, rel_t, L, a)))
+  SC_BY_N(n, t, SC_BY(t, return factor(n, t, M, f, rel, big, rel_t, big_t, L, a)))
   return 0;
 }
+
+#ifdef SC_FIXED
+/* Z's columns of A's rows a0 and a1 (both: else a0's alone) in the snake's block (t = n_s,
+ * unrolled), at Z (row stride m), from L's entries each in both lanes and its diagonal's
+ * reciprocals (Lb, row stride n_s). Row i waits on the rows before it: its sum takes the
+ * terms of rows before i - 4 by fours (as z_rows' groups) and the last ones alone, so that
+ * the chain from one row to the next is a product, a difference and a product; z_i is that
+ * sum times 1 / L_ii (a division per row and pair of columns was what bound the time). */
+SC_FLAT void z_pair(sc_int m, const sc_v2 *Lb, const double *a0, const double *a1, double *Z,
+                    int both) {
+  enum { T = SNAKECG_NS };
+  sc_v2 z[T];
+  sc_int i, k;
+  SC_UNROLL for (i = 0; i < T; ++i) {
+    const sc_v2 *Li = Lb + i * T;
+    sc_v2 s = {a0[i], a1[i]};
+    SC_UNROLL for (k = 0; k + 4 < i; k += 4)
+      s -= (Li[k] * z[k] + Li[k + 1] * z[k + 1]) + (Li[k + 2] * z[k + 2] + Li[k + 3] * z[k + 3]);
+    SC_UNROLL for (; k < i; ++k) s -= Li[k] * z[k];
+    z[i] = s * Li[i];
+    Z[i * m] = z[i][0];
+    if (both) Z[i * m + 1] = z[i][1];
+  }
+}
+
+/* Lb: L's entries of the snake's block each in both lanes, its diagonal's reciprocals. */
+SC_FLAT void z_lanes(sc_int n, const double *L, sc_v2 *Lb) {
+  sc_int i, k;
+  SC_UNROLL for (i = 0; i < SNAKECG_NS; ++i)
+    SC_UNROLL for (k = 0; k <= i; ++k) Lb[i * SNAKECG_NS + k] = (sc_v2){L[i * n + k], L[i * n + k]};
+  SC_UNROLL for (i = 0; i < SNAKECG_NS; ++i)
+    Lb[i * SNAKECG_NS + i] = 1.0 / Lb[i * SNAKECG_NS + i];
+}
+
+#if defined(__x86_64__) && !defined(__clang__) && __GNUC__ >= 6 && !defined(SC_NO_AVX)
+#define SC_FIXED_AVX 1 /* Z's rows four at a time where the processor has AVX (SC_NO_AVX: not) */
+typedef double __attribute__((vector_size(32))) sc_v4;
+
+/* z_pair's sums for four of A's rows (nc of them stored, the rest copies of the last), in
+ * one AVX register each (no FMA: each lane's operations are z_pair's, bit for bit). */
+__attribute__((target("avx"), always_inline)) static inline void z_quad(sc_int m, const sc_v2 *Lb,
+                                                         const double *a0, const double *a1,
+                                                         const double *a2, const double *a3,
+                                                         double *Z, sc_int nc) {
+  enum { T = SNAKECG_NS };
+  sc_v4 z[T];
+  sc_int i, k;
+  SC_UNROLL for (i = 0; i < T; ++i) {
+    const sc_v2 *Li = Lb + i * T;
+    sc_v4 s = {a0[i], a1[i], a2[i], a3[i]};
+    SC_UNROLL for (k = 0; k + 4 < i; k += 4)
+      s -= (Li[k][0] * z[k] + Li[k + 1][0] * z[k + 1]) +
+           (Li[k + 2][0] * z[k + 2] + Li[k + 3][0] * z[k + 3]);
+    SC_UNROLL for (; k < i; ++k) s -= Li[k][0] * z[k];
+    z[i] = s * Li[i][0];
+    SC_UNROLL for (k = 0; k < 4; ++k)
+      if (k < nc) Z[i * m + k] = z[i][k];
+  }
+}
+
+/* z_fixed's pairs four rows at a time (AVX: the chains of a row's sums side by side). */
+__attribute__((target("avx"), noinline)) static void z_avx(sc_int n, sc_int m, const double *L,
+                                                           const double *A, double *Z) {
+  sc_v2 Lb[SNAKECG_NS * SNAKECG_NS];
+  sc_int j;
+  z_lanes(n, L, Lb);
+  for (j = 0; j + 3 < m; j += 4)
+    z_quad(m, Lb, A + j * n, A + (j + 1) * n, A + (j + 2) * n, A + (j + 3) * n, Z + j, 4);
+  if (j < m) { /* (the last one to three rows, the last copied into the missing) */
+    const double *last = A + (m - 1) * n;
+    z_quad(m, Lb, A + j * n, j + 1 < m ? A + (j + 1) * n : last, j + 2 < m ? A + (j + 2) * n : last,
+           last, Z + j, m - j);
+  }
+}
+#endif
+
+/* Z's rows of the snake's block (t = n_s), every pair of A's rows (one copy of the unrolled
+ * code: z_rows is compiled once per size); four at a time with AVX, the same answers. */
+static __attribute__((noinline)) void z_fixed(sc_int n, sc_int m, const double *L,
+                                              const double *A, double *Z) {
+  sc_v2 Lb[SNAKECG_NS * SNAKECG_NS]; /* (L's entries in both lanes: one load a product) */
+  sc_int j;
+#ifdef SC_FIXED_AVX
+  if (__builtin_cpu_supports("avx")) {
+    z_avx(n, m, L, A, Z);
+    return;
+  }
+#endif
+  z_lanes(n, L, Lb);
+  for (j = 0; j + 1 < m; j += 2) z_pair(m, Lb, A + j * n, A + (j + 1) * n, Z + j, 1);
+  if (j < m) z_pair(m, Lb, A + j * n, A + j * n, Z + j, 0);
+}
+#endif
 
 /* Z = L^-1 A^T (n x m: coordinate i's row at Z + i m, every row of A at once). L's rows from t
  * on are their diagonal: there Z's row is A's column over it (the terms left out are zeros). */
@@ -106,6 +263,12 @@ SC_FLAT void z_rows(sc_int n, sc_int m, sc_int t, const double *L, const double 
     double *restrict zi = Z + i * m;
     for (j = 0; j < m; ++j) zi[j] = A[j * n + i] / L[i * n + i];
   }
+#ifdef SC_FIXED
+  if (t == SNAKECG_NS) { /* (the snake's block: two of A's rows at a time, in registers) */
+    z_fixed(n, m, L, A, Z);
+    return;
+  }
+#endif
   for (i = 0; i < t; ++i) { /* (four rows of Z at a time: a fourth of the loads and stores) */
     double *restrict zi = Z + i * m;
     const double *Li = L + i * n;

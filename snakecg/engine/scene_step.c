@@ -63,6 +63,36 @@ static double quad(sc_int n, const double *M, const double *v) {
   return s;
 }
 
+/* t = M V (n x n row-major): each t_k summed over j in order, as quad's; for the snake alone
+ * (n = n_s, a constant) two rows at a time (GCC's vector types), the same sums bit for bit. */
+static void mv_sums(sc_int n, const double *M, const double *V, double *t) {
+  sc_int i, j;
+#if defined(__GNUC__)
+  typedef double __attribute__((vector_size(16))) v2;
+  if (n == SNAKECG_NS) {
+    enum { N = SNAKECG_NS };
+    v2 vb[N];
+    SC_UNROLL for (j = 0; j < N; ++j) vb[j] = (v2){V[j], V[j]};
+    SC_UNROLL for (i = 0; i + 1 < N; i += 2) {
+      v2 s = {0.0, 0.0};
+      SC_UNROLL for (j = 0; j < N; ++j) s += (v2){M[i * N + j], M[(i + 1) * N + j]} * vb[j];
+      t[i] = s[0], t[i + 1] = s[1];
+    }
+    for (; i < N; ++i) { /* (an odd n_s: the last row) */
+      double s = 0.0;
+      SC_UNROLL for (j = 0; j < N; ++j) s += M[i * N + j] * V[j];
+      t[i] = s;
+    }
+    return;
+  }
+#endif
+  for (i = 0; i < n; ++i) {
+    double s = 0.0;
+    for (j = 0; j < n; ++j) s += M[i * n + j] * V[j];
+    t[i] = s;
+  }
+}
+
 /* The solve of the rows in c's buffers at force f, the sets' sizes times h, the contacts'
  * offsets gap / h (h = 0: none), from the last step's pieces where c keeps them (h > 0):
  * a (n), lam, info, the blocks' states (scratch + 5 mcap). Returns core_scene_solve_s's
@@ -196,14 +226,10 @@ static int held_before(const double *old, const double *out, sc_int no, sc_int k
 static void figures(sc_scene_step *c, sc_int n, double *mv) {
   const sc_int no = (sc_int)c->pk[SP_NO], nc = (sc_int)c->out[RO_NC];
   double g = INFINITY, s = 0.0;
-  sc_int k, j;
+  sc_int k;
   for (k = 0; k < nc; ++k) g = fmin(g, c->out[RO_POSE + 3 * no + CR_W * k + 10]);
-  for (k = 0; k < n; ++k) { /* (quad's sums) */
-    double t = 0.0;
-    for (j = 0; j < n; ++j) t += c->M[k * n + j] * c->V[j];
-    s += c->V[k] * t;
-    mv[k] = t;
-  }
+  mv_sums(n, c->M, c->V, mv); /* (quad's sums) */
+  for (k = 0; k < n; ++k) s += c->V[k] * mv[k];
   memcpy(mv + n, c->x, sizeof(double) * (size_t)n);
   memcpy(mv + 2 * n, c->V, sizeof(double) * (size_t)n);
   c->acc[ST_KE] = 0.5 * s;
@@ -303,11 +329,7 @@ SC_INTERNAL int sc_scene_step_kept(sc_scene_step *c, void **keep) {
   for (i = 0; i < SNAKECG_NS; ++i) fgen[i] -= hb[i];
   if (memcmp(mv + n, c->x, sizeof(double) * (size_t)n) ||
       memcmp(mv + 2 * n, c->V, sizeof(double) * (size_t)n)) { /* (else the last figures') */
-    for (i = 0; i < n; ++i) {
-      double t = 0.0;
-      for (j = 0; j < n; ++j) t += c->M[i * n + j] * c->V[j];
-      mv[i] = t;
-    }
+    mv_sums(n, c->M, c->V, mv);
     memcpy(mv + n, c->x, sizeof(double) * (size_t)n);
     memcpy(mv + 2 * n, c->V, sizeof(double) * (size_t)n);
   }
