@@ -46,7 +46,8 @@
  * 1.1e-10 of |a| against the pivoted factor's 1.7e-11 at a condition of 1,950) */
 #define DEF_TOL 1e-3
 
-/* core_scene_tiny's switch and counts (tries, answers: measurement only) */
+/* core_scene_tiny's switch and counts (tries, and those left to the general path: one atomic
+ * add per answered problem; measurement only) */
 static int tiny_on = 1;
 static long tiny_counts[2];
 #if defined(__GNUC__)
@@ -354,18 +355,20 @@ static int setup(sc_int n, sc_int m, int shape, const double *M, const double *f
   }
 }
 
-/* The solve (m rows); shape as setup's; L: n x n scratch. */
+/* The solve (m rows); shape as setup's; L (n x n), g (n): the inertia's factor and L^-1 f,
+ * *t its dense block's size (-1: not factored, the factor's pivot rule failed). */
 static int solve(sc_int m, sc_int n, int shape, const double *M, const double *f,
                  const double *A, const double *c, const sc_int *kind, const double *par,
-                 const double *from, double *L, double *lam_out, double *a, double *w_out,
-                 double *state_out, double *info) {
-  double Z[SC_TINY_N * SC_TINY_M], g[SC_TINY_N], res[3], fs = 0.0, ws = 0.0;
-  sc_int i, k, t = 0, count = 0;
+                 const double *from, double *L, double *g, sc_int *t, double *lam_out,
+                 double *a, double *w_out, double *state_out, double *info) {
+  double Z[SC_TINY_N * SC_TINY_M], res[3], fs = 0.0, ws = 0.0;
+  sc_int i, k, count = 0;
   int ok = 0, moved = 0;
   tiny p;
   p.kind = kind;
   p.par = par;
-  if (!setup(n, m, shape, M, f, A, c, L, g, Z, p.G, p.b, &t)) return 0;
+  *t = -1;
+  if (!setup(n, m, shape, M, f, A, c, L, g, Z, p.G, p.b, t)) return 0;
   for (i = 0; i < m; ++i) { /* scene_solve.c's scales */
     const double d = p.G[i * m + i], bi = fabs(p.b[i]);
     if (d > 0 && bi / d > fs) fs = bi / d;
@@ -435,9 +438,25 @@ static int solve(sc_int m, sc_int n, int shape, const double *M, const double *f
     case 1: accel_fixed(SNAKECG_NS + 3, SNAKECG_NS, m, L, Z, g, p.lam, a); break;
     case 2: accel_fixed(SNAKECG_NS + 6, SNAKECG_NS, m, L, Z, g, p.lam, a); break;
 #endif
-    default: accel_fixed(n, t, m, L, Z, g, p.lam, a); /* (the same loops, not unrolled) */
+    default: accel_fixed(n, *t, m, L, Z, g, p.lam, a); /* (the same loops, not unrolled) */
   }
   return 1;
+}
+
+/* The problem's shape for setup (the objects' count, or -1), or -2 where it is not tiny;
+ * diag: the caller's M has its rows from n_s on diagonal (else they are checked). */
+static int tiny_shape(sc_int n, sc_int m, sc_int nb, const double *M, const sc_int *kind,
+                      const sc_int *start, int diag) {
+  sc_int i, j, k;
+  int shape = (int)((n - SNAKECG_NS) / 3);
+  if (!tiny_on || m < 1 || m > SC_TINY_M || nb != m || m > n || n > SC_TINY_N) return -2;
+  for (k = 0; k < m; ++k)
+    if (kind[k] < K_FREE || kind[k] > K_BOX || start[k] != k) return -2;
+  if (n < SNAKECG_NS || n > SNAKECG_NS + 6 || (n - SNAKECG_NS) % 3 != 0) return -1;
+  for (i = SNAKECG_NS; i < n && !diag; ++i) /* the objects' rows: their diagonal */
+    for (j = 0; j < i; ++j)
+      if (M[i * n + j] != 0.0) return -1;
+  return shape;
 }
 
 SC_INTERNAL int sc_tiny_solve(sc_int n, sc_int m, sc_int nb, const double *M, const double *f,
@@ -445,19 +464,27 @@ SC_INTERNAL int sc_tiny_solve(sc_int n, sc_int m, sc_int nb, const double *M, co
                               const sc_int *start, const double *par, const double *from,
                               double *lam, double *a, double *w, double *state_out,
                               double *info) {
-  double L[SC_TINY_N * SC_TINY_N];
-  sc_int i, j, k;
-  int ok, shape = (n - SNAKECG_NS) / 3;
-  if (!tiny_on || m < 1 || m > SC_TINY_M || nb != m || m > n || n > SC_TINY_N) return 0;
-  for (k = 0; k < m; ++k)
-    if (kind[k] < K_FREE || kind[k] > K_BOX || start[k] != k) return 0;
-  if (n < SNAKECG_NS || n > SNAKECG_NS + 6 || (n - SNAKECG_NS) % 3 != 0) shape = -1;
-  for (i = SNAKECG_NS; i < n && shape >= 0; ++i) /* the objects' rows: their diagonal */
-    for (j = 0; j < i; ++j)
-      if (M[i * n + j] != 0.0) shape = -1;
-  ok = solve(m, n, shape, M, f, A, c, kind, par, from, L, lam, a, w, state_out, info);
+  double L[SC_TINY_N * SC_TINY_N], g[SC_TINY_N];
+  sc_int t;
+  int ok, shape = tiny_shape(n, m, nb, M, kind, start, 0);
+  if (shape < -1) return 0;
+  ok = solve(m, n, shape, M, f, A, c, kind, par, from, L, g, &t, lam, a, w, state_out, info);
   TINY_ADD(0, 1L);
-  TINY_ADD(1, ok ? 1L : 0L);
+  if (!ok) TINY_ADD(1, 1L);
+  return ok;
+}
+
+SC_INTERNAL int sc_tiny_forward(sc_int n, sc_int m, sc_int nb, const double *M, const double *f,
+                                const double *A, const sc_int *kind, const sc_int *start,
+                                const double *par, const double *from, double *lam, double *a,
+                                double *w, double *state_out, double *info, double *L,
+                                double *g, sc_int *t) {
+  int ok, shape = tiny_shape(n, m, nb, M, kind, start, 1);
+  *t = -1;
+  if (shape < -1) return 0;
+  ok = solve(m, n, shape, M, f, A, 0, kind, par, from, L, g, t, lam, a, w, state_out, info);
+  TINY_ADD(0, 1L);
+  if (!ok) TINY_ADD(1, 1L);
   return ok;
 }
 
@@ -469,8 +496,8 @@ int SNAKECG_EXPORT(core_scene_tiny)(sc_int mode, double *counts) {
   if (mode == 0 || mode == 1) tiny_on = (int)mode;
   if (counts) {
     long t = TINY_TAKE(0);
-    long a = TINY_TAKE(1);
-    counts[0] = (double)t, counts[1] = (double)a;
+    long left = TINY_TAKE(1);
+    counts[0] = (double)t, counts[1] = (double)(t - left);
   }
   return prev;
 }
