@@ -19,28 +19,39 @@
 #include "engine.h"
 #include "scene_metrics.h"
 
-/* v = L^T a for L's dense block of t rows and its diagonal tail (n, t constants where the
- * caller's branch makes them so) */
-static inline void lower_t_times(sc_int n, sc_int t, const double *L, const double *a,
-                                 double *v) {
+#if defined(__GNUC__)
+#define METRICS_UNROLL _Pragma("GCC unroll 16")
+#else
+#define METRICS_UNROLL
+#endif
+
+/* v = L^T a and g = L^-1 f for L's dense block of t rows and its diagonal tail (n, t
+ * constants where the caller's branch makes them so) */
+static inline void forms(sc_int n, sc_int t, const double *L, const double *f, const double *a,
+                         double *v, double *g) {
   sc_int i, k;
-  for (i = 0; i < t; ++i) {
-    double s = L[i * n + i] * a[i];
-    for (k = i + 1; k < t; ++k) s += L[k * n + i] * a[k];
+  METRICS_UNROLL for (i = 0; i < t; ++i) {
+    double s = L[i * n + i] * a[i], u = f[i];
+    METRICS_UNROLL for (k = i + 1; k < t; ++k) s += L[k * n + i] * a[k];
+    METRICS_UNROLL for (k = 0; k < i; ++k) u -= L[i * n + k] * g[k];
     v[i] = s;
+    g[i] = u / L[i * n + i];
   }
-  for (i = t; i < n; ++i) v[i] = L[i * n + i] * a[i];
+  METRICS_UNROLL for (i = t; i < n; ++i) {
+    v[i] = L[i * n + i] * a[i];
+    g[i] = f[i] / L[i * n + i];
+  }
 }
 
 SC_INTERNAL void sc_scene_metrics(sc_int n, sc_int no, sc_int t, const double *L,
-                                  const double *g, const double *a, double *norms,
+                                  const double *f, const double *a, double *norms,
                                   double *obj) {
   const sc_int ns = SNAKECG_NS;
-  double v[512], /* (the forward's n: at most 512) */ nq = 0.0, na = 0.0, nl = 0.0, fr = 0.0, d;
+  double v[512], g[512], nq = 0.0, na = 0.0, nl = 0.0, fr = 0.0, d; /* (n: at most 512) */
   sc_int i, o;
-  if (t == ns && n == ns) lower_t_times(SNAKECG_NS, SNAKECG_NS, L, a, v);
-  else if (t == ns && n == ns + 3) lower_t_times(SNAKECG_NS + 3, SNAKECG_NS, L, a, v);
-  else lower_t_times(n, t, L, a, v);
+  if (t == ns && n == ns) forms(SNAKECG_NS, SNAKECG_NS, L, f, a, v, g);
+  else if (t == ns && n == ns + 3) forms(SNAKECG_NS + 3, SNAKECG_NS, L, f, a, v, g);
+  else forms(n, t, L, f, a, v, g);
   for (i = 0; i < ns; ++i) nq += v[i] * v[i];
   for (o = 0; o < no; ++o) {
     const double *u = v + ns + 3 * o;

@@ -5,10 +5,10 @@
 
 /* The metrics of a solved sample from the bodies' inertia M = L L^T (n x n, block diagonal:
  * M_s on the snake's n_s coordinates, then m, m, I per object; L as sc_inertia_factor writes
- * it, its rows from t on their diagonal, its lower triangle read), g = L^-1 f and the
+ * it, its rows from t on their diagonal, its lower triangle read), the force f (n) and the
  * accelerations a: norms (4: ||qdd_s||^2, ||a_o||^2 summed, ||lambda||^2, sr) and each
  * object's ||a_o||^2 (no). */
 SC_INTERNAL void sc_scene_metrics(sc_int n, sc_int no, sc_int t, const double *L,
-                                  const double *g, const double *a, double *norms,
+                                  const double *f, const double *a, double *norms,
                                   double *obj);
 #endif

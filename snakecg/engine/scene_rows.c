@@ -264,20 +264,20 @@ static void scene_sample(sc_scene_work *sw, const double *q, const double *tau,
   for (i = 0; warm && i < nc * CR_W; i += CR_W)
     for (j = 0; j < 4; ++j) warm &= rec[i + j] == sw->prec[i + j]; /* the same bodies */
   /* the solve (a tiny problem straight to scene_tiny.c, which hands back the inertia's factor
-   * L and g = L^-1 f whether it answers or not; else core_scene_solve_s, or with contact
-   * friction scene_friction.c) */
+   * whether it answers or not; else core_scene_solve_s, or with contact friction
+   * scene_friction.c) */
   if (sw->T || !sc_tiny_forward(n, m, nb, sw->M, sw->f, sw->A, sw->kind, sw->start, sw->par,
                                 warm ? sw->prev : 0, sw->lam, a, sw->w, sw->st, out + SO_INFO,
-                                sw->L, sw->g, &t))
+                                sw->L, &t))
     sc_friction_solve(n, m, nb, nc, sw->M, sw->f, sw->A, NULL, sw->kind, sw->start, sw->par,
                       sw->T, rec, max_sweeps, warm ? sw->prev : 0, sw->lam, a, sw->w, sw->st,
                       out + SO_INFO, out + SO_SOLUTIONS); /* (T null: core_scene_solve_s's) */
-  /* the metrics (scene_metrics.c) by the inertia's factor, the solve's own (its pivot rule) */
+  /* the metrics (scene_metrics.c) by the inertia's factor (scene_small.c's, the solve's) */
   if (out[SO_INFO] == 0.0 && t < 0 &&
       !sc_inertia_factor(n, sw->M, sw->f, 1e-14, sw->L, sw->g, &t))
     out[SO_INFO] = 2.0; /* (a singular mass matrix, as the solve says it) */
   if (out[SO_INFO] == 0.0)
-    sc_scene_metrics(n, sw->no, t, sw->L, sw->g, a, out + SO_NORM_QDD, a + n);
+    sc_scene_metrics(n, sw->no, t, sw->L, sw->f, a, out + SO_NORM_QDD, a + n);
   else
     for (i = SO_NORM_QDD; i <= SO_SR; ++i) out[i] = NAN;
   for (i = 0; out[SO_INFO] != 0.0 && i < n + sw->no; ++i) a[i] = NAN; /* (qdd, a_o, ||a_o||^2) */
