@@ -243,8 +243,7 @@ TINY_FLAT int piece(const sc_int m, tiny *p) {
     for (i = 0; i < m; ++i) y[i] /= C[i * m + i];
     for (i = m - 1; i >= 0; --i)
       for (k = i + 1; k < m; ++k) y[i] -= C[k * m + i] * y[k];
-    for (i = 0; i < m; ++i)
-      if (held[i]) p->lam[i] += y[i];
+    for (i = 0; i < m; ++i) p->lam[i] += y[i]; /* (the other rows' y: +0, the identity's) */
     wvec(m, p);
     for (i = 0; i < m; ++i)
       if (held[i]) fn = sc_max(fn, fabs(p->w[i]));
