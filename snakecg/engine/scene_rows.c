@@ -294,7 +294,7 @@ static void scene_sample(sc_scene_work *sw, const double *q, const double *tau,
     double *s = sw->prev + 3 * i, *g = rec - 3 * sw->ng + 3 * (i - nc);
     s[0] = sw->st[i];
     s[1] = sw->lam[r];
-    s[2] = sc_block_size(sw->kind[i]) == 2 ? sw->lam[r + 1] : 0.0;
+    s[2] = (i + 1 < nb ? sw->start[i + 1] : m) - r == 2 ? sw->lam[r + 1] : 0.0; /* (2-D) */
     if (i < nc) { /* a contact's force and state */
       rec[CR_W * i + 11] = s[1];
       rec[CR_W * i + 12] = s[0];
