@@ -67,7 +67,8 @@ CORE_SOURCES = tuple(ENGINE_DIR / name
                                   "scene_primal.c", "scene_small.c", "scene_tiny.c",
                                   "scene_solve.c",
                                   "scene_geometry.c", "scene_place.c",
-                                  "scene_rows.c", "scene_broad.c", "scene_step.c", "scene_run.c",
+                                  "scene_rows.c", "scene_broad.c", "scene_metrics.c",
+                                  "scene_step.c", "scene_run.c",
                                   "scene_friction.c", "scene_friction_states.c"))
 #: Its headers: engine.h (the types and prototypes), linalg.h (the small dense linear algebra),
 #: and a file's own (what two files of one step share), named after the C file defining it.

@@ -13,14 +13,15 @@
  *      points fixed on their bodies, and where the pair has Coulomb friction a tangent row;
  *   3. the ground's blocks (a table packed once per model: wheels, ideal wheels, Coulomb,
  *      anisotropic Coulomb per link; an object's Coulomb friction with the ground);
- *   4. the exact solve of scene_solve.c (core_scene_solve_s; with contact friction
- *      scene_friction.c's) on the full inertia (M_s, then m, m, I per object) and force (B tau,
- *      the objects' wrenches), in a batch from the last sample's pieces (frictionless);
- *   5. the metrics: ||qdd_s||^2 = qdd^T M_s qdd (eq. 26), ||a_o||^2 = a_o^T I_o a_o (eq. 27)
- *      per object and summed, ||lambda||^2 = lam^T G lam = (a - a_free)^T M (a - a_free), and
- *      sr (eq. 30; 0 where the summed norms are rounding of the free motion's:
- *      below 1e-26 a_free^T M a_free, a system that does not move). A sample not solved has
- *      NaN metrics and its status says why.
+ *   4. the exact solve of scene_solve.c (core_scene_solve_s; a tiny problem straight to
+ *      scene_tiny.c; with contact friction scene_friction.c's) on the full inertia (M_s, then
+ *      m, m, I per object) and force (B tau, the objects' wrenches), in a batch from the last
+ *      sample's pieces (frictionless);
+ *   5. the metrics (scene_metrics.c, from the inertia's factor): ||qdd_s||^2 = qdd^T M_s qdd
+ *      (eq. 26), ||a_o||^2 = a_o^T I_o a_o (eq. 27) per object and summed,
+ *      ||lambda||^2 = lam^T G lam = (a - a_free)^T M (a - a_free), and sr (eq. 30; 0 where the
+ *      summed norms are rounding of the free motion's: below 1e-26 a_free^T M a_free, a system
+ *      that does not move). A sample not solved has NaN metrics and its status says why.
  * The scene, outputs and details (rows, forces, row accelerations, block states) are laid out
  * as snakecg/scenes/packing.py writes and reads them (SP_*, SO_*, the records' widths below).
  * Steps 1-3 alone at a simulation's state (the objects at given poses, the run's tolerance):
@@ -31,6 +32,8 @@
 #include "engine.h"
 #include "scene_rows.h"
 #include "scene_broad.h"
+#include "scene_metrics.h"
+#include "scene_tiny.h"
 
 /* the packed scene (SP_*, LINK_W, OBJ_W, OBS_W): engine.h */
 enum { GB_W = 8 };    /* type (GB_*), body, wheel offset, par (3), block kind (K_*) */
@@ -56,10 +59,10 @@ typedef struct {
   int placed; /* the bodies' parts that do not move are placed (sc_scene_place's how & 1) */
   double tol; /* the contact tolerance (m) */
   sc_work_t ws;
-  double *base, *A, *M, *f, *par, *lam, *w, *a, *st, *P, *J, *Ms, *LU, *afree, *D, *cs;
+  double *base, *A, *M, *f, *par, *lam, *w, *st, *P, *J, *Ms, *L, *g, *D, *cs;
   double *prev; /* the last sample's pieces (3 per block: state, forces) */
   const double *prec; /* and its contacts' records */
-  sc_int *kind, *start, *piv, pnb; /* pnb: its blocks (-1: none, not solved) */
+  sc_int *kind, *start, pnb; /* pnb: its blocks (-1: none, not solved) */
   sc_int cool, backoff; /* samples left cold after a start that fell back, the next count */
   sc_shape *shape;
   double *centre, *reach, *pose, *T; /* T: the contacts' tangent rows (null: no friction) */
@@ -194,47 +197,6 @@ static sc_int ground_rows(sc_scene_work *sw, sc_int nc) {
   return r;
 }
 
-/* The metrics of a solved sample (a: the accelerations) into out; the inertia M is block
- * diagonal (M_s, then m, m, I per object): its forms are summed block by block. */
-static void metrics(sc_scene_work *sw, const double *a, double *out) {
-  const sc_int n = sw->n, ns = SNAKECG_NS;
-  const double *I = sw->M, *af = sw->afree;
-  double nq = 0.0, na = 0.0, nl = 0.0, fr = 0.0, denom;
-  sc_int i, j, o;
-  int bad = out[SO_INFO] != 0.0;
-  for (i = 0; i < ns; ++i) {
-    double t = 0.0, u = 0.0, v = 0.0;
-    for (j = 0; j < ns; ++j) {
-      t += sw->Ms[i + ns * j] * a[j];
-      u += sw->Ms[i + ns * j] * (a[j] - af[j]);
-      v += sw->Ms[i + ns * j] * af[j];
-    }
-    nq += a[i] * t;
-    nl += (a[i] - af[i]) * u;
-    fr += af[i] * v;
-  }
-  for (i = ns; i < n; ++i) {
-    nl += (a[i] - af[i]) * (I[i * n + i] * (a[i] - af[i]));
-    fr += af[i] * (I[i * n + i] * af[i]);
-  }
-  for (o = 0; o < sw->no; ++o) {
-    const double *ao = a + ns + 3 * o, *obj = sw->pk + (sc_int)sw->pk[SP_OBJECTS] + OBJ_W * o;
-    double e = ao[0] * obj[4] * ao[0] + ao[1] * obj[4] * ao[1] + ao[2] * obj[5] * ao[2];
-    out[SO_QDD + ns + 3 * sw->no + o] = bad ? NAN : e;
-    na += e;
-  }
-  denom = na + nq;
-  out[SO_SR] = denom > 1e-26 * fr ? na / denom : 0.0; /* eq. (30) */
-  out[SO_NORM_QDD] = nq > 0.0 ? nq : 0.0; /* rounding of a form that is >= 0 */
-  out[SO_NORM_A] = na;
-  out[SO_NORM_L] = nl;
-  for (i = 0; i < n; ++i) out[SO_QDD + i] = a[i];
-  if (bad) {
-    for (i = SO_NORM_QDD; i <= SO_SR; ++i) out[i] = NAN;
-    for (i = 0; i < n; ++i) out[SO_QDD + i] = NAN;
-  }
-}
-
 /* The link poses (sw->P), Jacobians (sw->J) and, where mass, M_s (sw->Ms) and the links' cos
  * and sin (sw->cs, place's `given`) at q: the generated functions' status (0 on success). */
 static int kinematics(sc_scene_work *sw, const double *q, int mass) {
@@ -274,10 +236,10 @@ static void scene_sample(sc_scene_work *sw, const double *q, const double *tau,
                          const double *fo, sc_int max_sweeps, double *out, double *A,
                          double *lam, double *w, double *state, int warm) {
   const sc_int n = sw->n, ns = SNAKECG_NS, width = SO_QDD + ns + 7 * sw->no + 3 * sw->ng;
-  sc_int nc, m, nb, i, j, o, pnb = sw->pnb;
-  double *P = sw->P, *rec = out + SO_QDD + ns + 7 * sw->no + 3 * sw->ng;
+  sc_int nc, m, nb, i, j, o, t = -1, pnb = sw->pnb;
+  double *P = sw->P, *rec = out + SO_QDD + ns + 7 * sw->no + 3 * sw->ng, *a = out + SO_QDD;
   sw->pnb = -1; /* (until this sample is solved) */
-  memset(out, 0, sizeof(double) * (size_t)width); /* the records: as contact_rows writes them */
+  memset(out, 0, sizeof(double) * SO_QDD); /* (the rest of the row: written below) */
   if (kinematics(sw, q, 1)) goto failed;
   place(sw, P, 0, 1);
   for (o = 0; o < sw->no; ++o)
@@ -291,9 +253,8 @@ static void scene_sample(sc_scene_work *sw, const double *q, const double *tau,
   }
   m = ground_rows(sw, nc);
   nb = nc + sw->ng;
-  for (i = 0; i < ns; ++i) /* M_s into the inertia (the objects' part is the call's), and into
-    LU for a_free below */
-    for (j = 0; j < ns; ++j) sw->M[i * n + j] = sw->LU[i * ns + j] = sw->Ms[i + ns * j];
+  for (i = 0; i < ns; ++i) /* M_s into the inertia (the objects' part is the call's) */
+    for (j = 0; j < ns; ++j) sw->M[i * n + j] = sw->Ms[i + ns * j];
   sw->f[0] = sw->f[1] = sw->f[2] = 0.0; /* the force: B tau, the objects' wrenches */
   for (i = 3; i < ns; ++i) sw->f[i] = tau[i - 3];
   for (i = 0; i < 3 * sw->no; ++i) sw->f[ns + i] = fo[i];
@@ -301,19 +262,24 @@ static void scene_sample(sc_scene_work *sw, const double *q, const double *tau,
   warm = warm && pnb == nb && !(sw->cool > 0 && sw->cool--); /* (backing off: cold) */
   for (i = 0; warm && i < nc * CR_W; i += CR_W)
     for (j = 0; j < 4; ++j) warm &= rec[i + j] == sw->prec[i + j]; /* the same bodies */
-  sc_friction_solve(n, m, nb, nc, sw->M, sw->f, sw->A, NULL, sw->kind, sw->start, sw->par,
-                    sw->T, rec, max_sweeps, warm ? sw->prev : 0, sw->lam, sw->a, sw->w, sw->st,
-                    out + SO_INFO, out + SO_SOLUTIONS); /* (T null: core_scene_solve_s's) */
-  /* a_free = M^-1 f (partial pivoting, as numpy.linalg.solve; block by block, which is the
-   * same elimination on a block-diagonal M) */
-  for (i = 0, j = sc_lu_factor(ns, sw->LU, ns, sw->piv); i < n; ++i) {
-    sw->afree[i] = i < ns ? sw->f[i] : sw->f[i] / sw->M[i * n + i];
-    j &= i < ns || sw->M[i * n + i] != 0.0;
-  }
-  if (j) sc_lu_solve(ns, sw->LU, ns, sw->piv, sw->afree);
+  /* the solve (a tiny problem straight to scene_tiny.c, which hands back the inertia's factor
+   * whether it answers or not; else core_scene_solve_s, or with contact friction
+   * scene_friction.c) */
+  if (sw->T || !sc_tiny_forward(n, m, nb, sw->M, sw->f, sw->A, sw->kind, sw->start, sw->par,
+                                warm ? sw->prev : 0, sw->lam, a, sw->w, sw->st, out + SO_INFO,
+                                sw->L, &t))
+    sc_friction_solve(n, m, nb, nc, sw->M, sw->f, sw->A, NULL, sw->kind, sw->start, sw->par,
+                      sw->T, rec, max_sweeps, warm ? sw->prev : 0, sw->lam, a, sw->w, sw->st,
+                      out + SO_INFO, out + SO_SOLUTIONS); /* (T null: core_scene_solve_s's) */
+  /* the metrics (scene_metrics.c) by the inertia's factor (scene_small.c's, the solve's) */
+  if (out[SO_INFO] == 0.0 && t < 0 &&
+      !sc_inertia_factor(n, sw->M, sw->f, 1e-14, sw->L, sw->g, &t))
+    out[SO_INFO] = 2.0; /* (a singular mass matrix, as the solve says it) */
+  if (out[SO_INFO] == 0.0)
+    sc_scene_metrics(n, sw->no, t, sw->L, sw->f, a, out + SO_NORM_QDD, a + n);
   else
-    for (i = 0; i < n; ++i) sw->afree[i] = NAN;
-  metrics(sw, sw->a, out);
+    for (i = SO_NORM_QDD; i <= SO_SR; ++i) out[i] = NAN;
+  for (i = 0; out[SO_INFO] != 0.0 && i < n + sw->no; ++i) a[i] = NAN; /* (qdd, a_o, ||a_o||^2) */
   out[SO_NC] = (double)nc;
   if (warm) { /* a start that gained nothing (it fell back to sweeps, or took more than
     SC_GAIN_PASSES): the next 1, 2, 4 .. 128 samples cold; one that gained halves the count */
@@ -327,7 +293,7 @@ static void scene_sample(sc_scene_work *sw, const double *q, const double *tau,
     double *s = sw->prev + 3 * i, *g = rec - 3 * sw->ng + 3 * (i - nc);
     s[0] = sw->st[i];
     s[1] = sw->lam[r];
-    s[2] = sc_block_size(sw->kind[i]) == 2 ? sw->lam[r + 1] : 0.0;
+    s[2] = (i + 1 < nb ? sw->start[i + 1] : m) - r == 2 ? sw->lam[r + 1] : 0.0; /* (2-D) */
     if (i < nc) { /* a contact's force and state */
       rec[CR_W * i + 11] = s[1];
       rec[CR_W * i + 12] = s[0];
@@ -380,7 +346,7 @@ static int work_alloc(sc_scene_work *sw, const double *pk, sc_int ccap, sc_int m
        3 * mc + (pk[SP_FRICTION] != 0.0 ? ccap * n : 0);
   sw->base = (double *)malloc((size_t)(SW_HEAD + nd + most[3] + 1) * sizeof(double) +
                               (size_t)(most[0] + most[1] + 2) * sizeof(double *) +
-                              (size_t)(2 * mc + n + 2 + most[2] + 1) * sizeof(sc_int) +
+                              (size_t)(2 * mc + 2 + most[2] + 1) * sizeof(sc_int) +
                               (size_t)(sw->nbody + 1) * sizeof(sc_shape));
   if (!sw->base) return -1;
   sw->A = d = sw->base + SW_HEAD; /* (the head: a kept state scratch's struct) */
@@ -388,12 +354,12 @@ static int work_alloc(sc_scene_work *sw, const double *pk, sc_int ccap, sc_int m
   sw->ws.arg = (const double **)(d + nd + most[3] + 1);
   sw->ws.res = (double **)(sw->ws.arg + most[0] + 1);
   sw->kind = (sc_int *)(sw->ws.res + most[1] + 1);
-  sw->ws.iw = sw->kind + 2 * mc + n + 2;
+  sw->ws.iw = sw->kind + 2 * mc + 2;
   sw->shape = (sc_shape *)(sw->ws.iw + most[2] + 1);
   d += mc * n; /* the rows, then what is written before it is read: not zeroed */
   sw->M = d; d += n * n; /* (the forward's full_inertia) */
-  sw->LU = d; d += n * n;
-  sw->f = d, d += n, sw->a = d, d += n, sw->afree = d, d += n;
+  sw->L = d; d += n * n;
+  sw->f = d, d += n, sw->g = d, d += n;
   sw->D = d; d += 2 * n;
   sw->par = d; d += 3 * mc;
   sw->lam = d, d += mc, sw->w = d, d += mc, sw->st = d, d += mc;
@@ -408,7 +374,6 @@ static int work_alloc(sc_scene_work *sw, const double *pk, sc_int ccap, sc_int m
   memset((void *)sw->ws.arg, 0, (size_t)((char *)sw->kind - (char *)sw->ws.arg));
   memset(sw->shape, 0, sizeof(sc_shape) * (size_t)(sw->nbody + 1));
   sw->start = sw->kind + mc;
-  sw->piv = sw->start + mc;
   sw->placed = 0, sw->pnb = -1; /* (nothing placed, no last sample) */
   return 0;
 }

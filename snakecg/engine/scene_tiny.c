@@ -4,15 +4,19 @@
  * Coulomb discs or split ellipses), with at most SC_TINY_M rows and no more rows than
  * coordinates (the paper's scene: a contact and three wheels' lateral rows on 9 coordinates)
  * is solved here by the general path's own steps in their order:
- *   the set-up (scene_small.c's factor of the inertia, g = L^-1 f, Z = L^-1 A^T, G = Z^T Z and
- *   b = Z^T g + c: the same operations in the same order, bit for bit its results, compiled
- *   with every loop over the coordinates unrolled for the snake with 0-2 objects), the scales,
+ *   the set-up (scene_small.c's factor of the inertia, with its pivot rule, compiled with every
+ *   loop over the coordinates unrolled for the snake with 0-2 objects; then Z = L^-1 [A^T f],
+ *   whose last column is g = L^-1 f, and its Gram matrix, G = Z^T Z and b = Z^T g + c, in one
+ *   sweep over the coordinates compiled once per row count; the divisions by the factor's
+ *   pivots products with their reciprocals: the same quantities, other rounding), the scales,
  *   the start from the caller's pieces (FROM_PASSES active-set passes), then from the held
  *   guess (GUESS_PASSES), each pass the piece's equations solved to rounding (scene_piece.c:
  *   the held rows' forces from G_HH d = -w_H, at most three rounds while max |w_H| is above
  *   1e-14 of the scale) and the KKT conditions checked and switched (scene_solve.c's kkt: the
- *   same residuals, the same rules), then the certificate, the pieces reported and
- *   a = L^-T (g + Z lam). The passes are compiled once per row count (1..SC_TINY_M).
+ *   same rules; its residuals read once no piece switches), then the certificate, the pieces
+ *   reported and a = L^-T (g + Z lam). The passes are compiled once per row count
+ *   (1..SC_TINY_M). The forward (scene_rows.c) calls it first and gets the inertia's factor
+ *   back for its metrics (sc_tiny_forward).
  * What differs is G_HH's factor: the general path's diagonal pivoting (sc_psd_solve: a pivot
  * search and swaps on the gathered rows, rows dropped at pivots of DEP_TOL = 1e-10 of the
  * first) becomes the same L D L^T in the rows' order, the other rows the identity (no
@@ -21,8 +25,7 @@
  * diagonal entry (the first pivot), so at least det G_HH over that entry to the h - 1, and at
  * least G_HH's least eigenvalue, itself at least 1 / trace(G_HH^-1); where neither bound is
  * DEF_TOL (1e-3) of the largest diagonal entry, the general path solves the problem.
- * So the pieces, their passes and the answer are the general path's, to rounding (the held
- * forces solved in another order; bit for bit where the pivots come in the rows' order).
+ * So the pieces, their passes and the answer are the general path's, to rounding.
  * Whatever else the general path does goes to it as well, the problem solved there from the
  * start: a singular inertia, no piece answered within the passes (the sweeps), a degenerate
  * answer (a non-held block whose rows do not accelerate: the minimum-norm face). Every answer
@@ -46,7 +49,8 @@
  * 1.1e-10 of |a| against the pivoted factor's 1.7e-11 at a condition of 1,950) */
 #define DEF_TOL 1e-3
 
-/* core_scene_tiny's switch and counts (tries, answers: measurement only) */
+/* core_scene_tiny's switch and counts (tries, and those left to the general path: one atomic
+ * add per answered problem; measurement only) */
 static int tiny_on = 1;
 static long tiny_counts[2];
 #if defined(__GNUC__)
@@ -67,19 +71,13 @@ static long tiny_take(int k) {
  * (beyond, scene_small.c's loops: a fully unrolled factor grows as n_s^3) */
 #define TINY_FIXED_NS 9
 
-/* scene_small.c's group of four coordinates' sum, r of them (1-4) as its short last group */
-TINY_FLAT double sum4(const sc_int r, double p0, double p1, double p2, double p3) {
-  return r == 4 ? (p0 + p1) + (p2 + p3) : r == 3 ? (p0 + p1) + p2 : r == 2 ? p0 + p1 : p0;
-}
-
-/* The set-up for n coordinates whose rows from t on are their diagonal (n, t, m constants):
- * scene_small.c's sc_inertia_factor, sc_scene_z and sc_scene_gram, the same operations in
- * the same order (their results bit for bit), every loop unrolled. L: the dense block's lower
- * triangle and the diagonal (n x n), g = L^-1 f, Z = L^-1 A^T (n x m), G = Z^T Z, b = Z^T g + c
- * (c may be null). Returns 0 where the factor's pivot rule fails. */
-TINY_FLAT int setup_fixed(const sc_int n, const sc_int t, const sc_int m, const double *M,
-                          const double *f, const double *A, const double *c, double *L,
-                          double *g, double *Z, double *G, double *b) {
+/* The inertia's factor for n coordinates whose rows from t on are their diagonal (n, t
+ * constants where the caller's branch makes them so): sc_inertia_factor's (the Cholesky of the
+ * dense block, the tail's square roots, the same pivot rule; the same operations in the same
+ * order, bit for bit its L), and the pivots' reciprocals (r: n) for the sweeps below. L: the
+ * dense block's lower triangle and the diagonal (n x n). Returns 0 where the pivot rule
+ * fails. */
+TINY_FLAT int factor(const sc_int n, const sc_int t, const double *M, double *L, double *r) {
   const double rel = 1e-14;
   double big = 0.0, big_t = 0.0, rel_t;
   sc_int i, j, k;
@@ -90,12 +88,13 @@ TINY_FLAT int setup_fixed(const sc_int n, const sc_int t, const sc_int m, const 
   }
   if (!(big > 0.0) || !isfinite(big) || !(big_t > 0.0) || !isfinite(big_t)) return 0;
   rel_t = big_t == big ? rel : rel * (big / big_t);
-  TINY_UNROLL for (j = 0; j < t; ++j) { /* sc_cholesky on the dense block */
+  TINY_UNROLL for (j = 0; j < t; ++j) {
     double d = M[j * n + j];
     TINY_UNROLL for (k = 0; k < j; ++k) d -= L[j * n + k] * L[j * n + k];
     if (!(d > rel_t * big_t)) return 0;
     d = sqrt(d);
     L[j * n + j] = d;
+    r[j] = 1.0 / d;
     TINY_UNROLL for (i = j + 1; i < t; ++i) {
       double s = M[i * n + j];
       TINY_UNROLL for (k = 0; k < j; ++k) s -= L[i * n + k] * L[j * n + k];
@@ -105,64 +104,65 @@ TINY_FLAT int setup_fixed(const sc_int n, const sc_int t, const sc_int m, const 
   TINY_UNROLL for (i = t; i < n; ++i) { /* the diagonal tail */
     if (!(M[i * n + i] > rel * big)) return 0;
     L[i * n + i] = sqrt(M[i * n + i]);
-  }
-  TINY_UNROLL for (i = 0; i < n; ++i) { /* g = L^-1 f */
-    double s = f[i];
-    if (i < t) TINY_UNROLL for (j = 0; j < i; ++j) s -= L[i * n + j] * g[j];
-    g[i] = s / L[i * n + i];
-  }
-  TINY_UNROLL for (i = t; i < n; ++i) /* Z */
-    for (j = 0; j < m; ++j) Z[i * m + j] = A[j * n + i] / L[i * n + i];
-  TINY_UNROLL for (i = 0; i < t; ++i)
-    for (j = 0; j < m; ++j) {
-      double z = A[j * n + i];
-      TINY_UNROLL for (k = 0; k + 3 < i; k += 4)
-        z -= (L[i * n + k] * Z[k * m + j] + L[i * n + k + 1] * Z[(k + 1) * m + j]) +
-             (L[i * n + k + 2] * Z[(k + 2) * m + j] + L[i * n + k + 3] * Z[(k + 3) * m + j]);
-      TINY_UNROLL for (k = i - i % 4; k < i; ++k) z -= L[i * n + k] * Z[k * m + j];
-      Z[i * m + j] = z / L[i * n + i];
-    }
-  for (j = 0; j < m; ++j) { /* G's lower triangle and b by groups of coordinates */
-    double bj = 0.0;
-    for (k = 0; k <= j; ++k) {
-      double s = 0.0;
-      TINY_UNROLL for (i = 0; i < n; i += 4) {
-        const sc_int r = n - i < 4 ? n - i : 4;
-        const double *z = Z + i * m;
-        s += sum4(r, z[j] * z[k], r > 1 ? z[m + j] * z[m + k] : 0.0,
-                  r > 2 ? z[2 * m + j] * z[2 * m + k] : 0.0,
-                  r > 3 ? z[3 * m + j] * z[3 * m + k] : 0.0);
-      }
-      G[j * m + k] = G[k * m + j] = s;
-    }
-    TINY_UNROLL for (i = 0; i < n; i += 4) {
-      const sc_int r = n - i < 4 ? n - i : 4;
-      const double *z = Z + i * m;
-      bj += sum4(r, z[j] * g[i], r > 1 ? z[m + j] * g[i + 1] : 0.0,
-                 r > 2 ? z[2 * m + j] * g[i + 2] : 0.0, r > 3 ? z[3 * m + j] * g[i + 3] : 0.0);
-    }
-    b[j] = c ? bj + c[j] : bj;
+    r[i] = 1.0 / L[i * n + i];
   }
   return 1;
 }
 
-/* a = L^-T (g + Z lam) (scene_solve.c's eq. 18 from the factor, its sums in its order; a zero
- * force's terms added as +-0, which changes no sum but the sign of an exact zero) for
- * setup_fixed's sizes and sc_inertia_factor's (L's rows from t on their diagonal) */
-TINY_FLAT void accel_fixed(const sc_int n, const sc_int t, const sc_int m, const double *L,
-                           const double *Z, const double *g, const double *lam, double *a) {
-  double lz[SC_TINY_M] = {0.0};
+/* Z = L^-1 [A^T f] (n x (m + 1): row i coordinate i's, the last column g = L^-1 f) and its
+ * Gram matrix in one sweep over the coordinates (m a constant; each coordinate's row of Z
+ * added to the sums as it is made): G = Z_A^T Z_A (m x m), b = Z_A^T g + c (c may be null). */
+TINY_FLAT void gram(const sc_int m, sc_int n, sc_int t, const double *restrict L,
+                    const double *restrict r, const double *restrict A,
+                    const double *restrict f, const double *restrict c, double *restrict Z,
+                    double *restrict G, double *restrict b) {
+  const sc_int w = m + 1;
+  double S[(SC_TINY_M + 1) * (SC_TINY_M + 1)];
   sc_int i, j, k;
-  TINY_UNROLL for (j = 0; j < m; ++j) lz[j] = isfinite(lam[j]) ? lam[j] : 0.0;
-  TINY_UNROLL for (i = 0; i < n; ++i) {
-    double s = g[i];
-    TINY_UNROLL for (j = 0; j < m; ++j) s += Z[i * m + j] * lz[j];
-    a[i] = s;
+  for (j = 0; j < w * w; ++j) S[j] = 0.0;
+  for (i = 0; i < n; ++i) {
+    double z[SC_TINY_M + 1];
+    const double ri = r[i];
+    for (j = 0; j < m; ++j) z[j] = A[j * n + i];
+    z[m] = f[i];
+    for (k = 0; k < (i < t ? i : 0); ++k) {
+      const double l = L[i * n + k];
+      for (j = 0; j < w; ++j) z[j] -= l * Z[k * w + j];
+    }
+    for (j = 0; j < w; ++j) Z[i * w + j] = z[j] = z[j] * ri;
+    for (j = 0; j < w; ++j)
+      for (k = 0; k <= j; ++k) S[j * w + k] += z[j] * z[k];
   }
-  TINY_UNROLL for (i = n - 1; i >= 0; --i) {
+  for (j = 0; j < m; ++j) {
+    for (k = 0; k <= j; ++k) G[j * m + k] = G[k * m + j] = S[j * w + k];
+    b[j] = c ? S[m * w + j] + c[j] : S[m * w + j];
+  }
+}
+
+/* v = g + Z lam (gram's Z, its last column g; a force that is not finite taken as 0) */
+TINY_FLAT void g_plus_z_lam(const sc_int m, sc_int n, const double *restrict Z,
+                            const double *restrict lam, double *restrict v) {
+  double lz[SC_TINY_M];
+  const sc_int w = m + 1;
+  sc_int i, j;
+  for (j = 0; j < m; ++j) lz[j] = isfinite(lam[j]) ? lam[j] : 0.0;
+  for (i = 0; i < n; ++i) {
+    double s = Z[i * w + m];
+    for (j = 0; j < m; ++j) s += Z[i * w + j] * lz[j];
+    v[i] = s;
+  }
+}
+
+/* a := L^-T a (eq. 18's a = L^-T (g + Z lam) from the factor) for factor's L and r (L's rows
+ * from t on their diagonal; n, t constants where the caller's branch makes them so) */
+TINY_FLAT void back(const sc_int n, const sc_int t, const double *restrict L,
+                    const double *restrict r, double *restrict a) {
+  sc_int i, k;
+  TINY_UNROLL for (i = n - 1; i >= t; --i) a[i] *= r[i];
+  TINY_UNROLL for (i = t - 1; i >= 0; --i) {
     double s = a[i];
-    if (i < t) TINY_UNROLL for (k = i + 1; k < t; ++k) s -= L[k * n + i] * a[k];
-    a[i] = s / L[i * n + i];
+    TINY_UNROLL for (k = i + 1; k < t; ++k) s -= L[k * n + i] * a[k];
+    a[i] = s * r[i];
   }
 }
 
@@ -173,18 +173,16 @@ typedef struct {
   sc_int state[SC_TINY_M];
 } tiny;
 
-/* w = G lam + b (linalg.h's sc_matvec_plus: each row's dot product in four partial sums) */
+/* w = G lam + b (each row's products summed in order, lam read once) */
 TINY_FLAT void wvec(const sc_int m, tiny *p) {
+  double l[SC_TINY_M];
   sc_int i, j;
+  for (j = 0; j < m; ++j) l[j] = p->lam[j];
   for (i = 0; i < m; ++i) {
     const double *g = p->G + i * m;
-    double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;
-    for (j = 0; j + 3 < m; j += 4) {
-      s0 += g[j] * p->lam[j], s1 += g[j + 1] * p->lam[j + 1];
-      s2 += g[j + 2] * p->lam[j + 2], s3 += g[j + 3] * p->lam[j + 3];
-    }
-    for (j = m - m % 4; j < m; ++j) s0 += g[j] * p->lam[j];
-    p->w[i] = p->b[i] + ((s0 + s1) + (s2 + s3));
+    double s = 0.0;
+    for (j = 0; j < m; ++j) s += g[j] * l[j];
+    p->w[i] = p->b[i] + s;
   }
 }
 
@@ -245,8 +243,7 @@ TINY_FLAT int piece(const sc_int m, tiny *p) {
     for (i = 0; i < m; ++i) y[i] /= C[i * m + i];
     for (i = m - 1; i >= 0; --i)
       for (k = i + 1; k < m; ++k) y[i] -= C[k * m + i] * y[k];
-    for (i = 0; i < m; ++i)
-      if (held[i]) p->lam[i] += y[i];
+    for (i = 0; i < m; ++i) p->lam[i] += y[i]; /* (the other rows' y: +0, the identity's) */
     wvec(m, p);
     for (i = 0; i < m; ++i)
       if (held[i]) fn = sc_max(fn, fabs(p->w[i]));
@@ -256,10 +253,9 @@ TINY_FLAT int piece(const sc_int m, tiny *p) {
 }
 
 /* scene_solve.c's kkt for one-row blocks: the residuals (primal, dual, complementarity,
- * relative) and, with do_switch, the violated pieces switched (returns 1 if any). */
-TINY_FLAT int kkt(const sc_int m, tiny *p, double *res, int do_switch) {
+ * relative). */
+TINY_FLAT void kkt(const sc_int m, const tiny *p, double *res) {
   double pr = 0.0, du = 0.0, co = 0.0, F = p->F, W = p->W, e;
-  int moved = 0;
   sc_int k;
   for (k = 0; k < m; ++k) {
     const double q = p->par[3 * k], l = p->lam[k], w = p->w[k];
@@ -271,10 +267,6 @@ TINY_FLAT int kkt(const sc_int m, tiny *p, double *res, int do_switch) {
         pr = sc_max(pr, sc_max(0.0, -l) / F);
         du = sc_max(du, sc_max(0.0, -w) / W);
         co = sc_max(co, fabs(l * w) / (F * W));
-        if (do_switch) {
-          if (p->state[k] == S_HELD && l < -TOL_ACCEPT * F) p->state[k] = S_ZERO, moved = 1;
-          else if (p->state[k] == S_ZERO && w < -TOL_ACCEPT * W) p->state[k] = S_HELD, moved = 1;
-        }
         break;
       default: { /* K_BOX */
         const double x = q - fabs(l);
@@ -284,46 +276,75 @@ TINY_FLAT int kkt(const sc_int m, tiny *p, double *res, int do_switch) {
         else e = l > 0 ? sc_max(0.0, w) : sc_max(0.0, -w);
         du = sc_max(du, e / W);
         co = sc_max(co, fabs((x < 0.0 ? x : 0.0) * w) / (F * W)); /* (fmin(x, 0.0)'s) */
-        if (do_switch) {
-          if (p->state[k] == S_HELD && fabs(l) > q * (1 + TOL_ACCEPT))
-            p->state[k] = S_SLIDE, moved = 1;
-          else if (p->state[k] == S_SLIDE && e > TOL_ACCEPT * W) p->state[k] = S_HELD, moved = 1;
-        }
       }
     }
   }
   res[0] = pr;
   res[1] = du;
   res[2] = co;
+}
+
+/* scene_solve.c's kkt's switches for one-row blocks: the violated pieces switched (its rules
+ * on the same values; returns 1 if any). */
+TINY_FLAT int kkt_switch(const sc_int m, tiny *p) {
+  const double F = p->F, W = p->W;
+  int moved = 0;
+  sc_int k;
+  for (k = 0; k < m; ++k) {
+    const double q = p->par[3 * k], l = p->lam[k], w = p->w[k];
+    if (p->kind[k] == K_UNILATERAL) {
+      if (p->state[k] == S_HELD && l < -TOL_ACCEPT * F) p->state[k] = S_ZERO, moved = 1;
+      else if (p->state[k] == S_ZERO && w < -TOL_ACCEPT * W) p->state[k] = S_HELD, moved = 1;
+    } else if (p->kind[k] == K_BOX && q > 0) { /* (the set {0}: its normal cone is every w) */
+      if (p->state[k] == S_HELD && fabs(l) > q * (1 + TOL_ACCEPT)) {
+        p->state[k] = S_SLIDE, moved = 1;
+      } else if (p->state[k] == S_SLIDE) {
+        const double e = fabs(l) < q ? fabs(w) : l > 0 ? sc_max(0.0, w) : sc_max(0.0, -w);
+        if (e > TOL_ACCEPT * W) p->state[k] = S_HELD, moved = 1;
+      }
+    }
+  }
   return moved;
 }
 
 /* scene_solve.c's active_set: 1 answered (res its residuals), 0 not within max_pass, -1 a piece
- * left to the general path. */
+ * left to the general path. The residuals are read where no piece switched (they do not
+ * depend on the pieces' states). */
 TINY_FLAT int passes(const sc_int m, tiny *p, int max_pass, sc_int *count, double *res) {
   int pass;
   for (pass = 0; pass < max_pass; ++pass) {
     ++*count;
     if (!piece(m, p)) return -1;
-    if (!kkt(m, p, res, 1))
+    if (!kkt_switch(m, p)) {
+      kkt(m, p, res);
       return res[0] <= TOL_ACCEPT && res[1] <= TOL_ACCEPT && res[2] <= TOL_ACCEPT;
+    }
   }
   return 0;
 }
 
-/* passes and kkt compiled once per row count (and called, not inlined, by solve) */
+/* the set-up's sums, the passes, the residuals and the accelerations compiled once per row
+ * count (and called, not inlined, by solve) */
 #if defined(__GNUC__)
 #define TINY_CALLED static __attribute__((noinline))
 #else
 #define TINY_CALLED static
 #endif
 #define TINY_BY_M(r) \
+  TINY_CALLED void gram_##r(sc_int n, sc_int t, const double *L, const double *rc, \
+                            const double *A, const double *f, const double *c, double *Z, \
+                            double *G, double *b) { \
+    gram(r, n, t, L, rc, A, f, c, Z, G, b); \
+  } \
   TINY_CALLED int passes_##r(tiny *p, int max_pass, sc_int *count, double *res) { \
     return passes(r, p, max_pass, count, res); \
   } \
   TINY_CALLED void final_##r(tiny *p, double *res) { \
     wvec(r, p); \
-    kkt(r, p, res, 0); \
+    kkt(r, p, res); \
+  } \
+  TINY_CALLED void accel_##r(sc_int n, const double *Z, const double *lam, double *a) { \
+    g_plus_z_lam(r, n, Z, lam, a); \
   }
 TINY_BY_M(1) TINY_BY_M(2) TINY_BY_M(3) TINY_BY_M(4) TINY_BY_M(5) TINY_BY_M(6)
 #undef TINY_BY_M
@@ -333,46 +354,53 @@ TINY_BY_M(1) TINY_BY_M(2) TINY_BY_M(3) TINY_BY_M(4) TINY_BY_M(5) TINY_BY_M(6)
     case 4: call(4); break; case 5: call(5); break; default: call(6); \
   }
 
-/* The set-up (scene_small.c's) for n coordinates and m rows; shape: the objects' count where
- * the factor is compiled for n (else -1); t: the dense block's size. 0: singular. */
-static int setup(sc_int n, sc_int m, int shape, const double *M, const double *f,
-                 const double *A, const double *c, double *L, double *g, double *Z, double *G,
-                 double *b, sc_int *t) {
-  double zero[SC_TINY_M];
+/* The inertia's factor (L, n x n; r: its diagonal's reciprocals) for n coordinates; shape: the
+ * objects' count where the factor is compiled for n (else -1); t: the dense block's size.
+ * 0: singular. */
+static int factored(sc_int n, int shape, const double *M, const double *f, double *L,
+                    double *r, sc_int *t) {
   const sc_int s = SNAKECG_NS;
+  double g[SC_TINY_N];
+  sc_int i;
+  *t = s;
   switch (shape) {
 #if SNAKECG_NS <= TINY_FIXED_NS
-    case 0: *t = s; return setup_fixed(s, s, m, M, f, A, c, L, g, Z, G, b);
-    case 1: *t = s; return setup_fixed(s + 3, s, m, M, f, A, c, L, g, Z, G, b);
-    case 2: *t = s; return setup_fixed(s + 6, s, m, M, f, A, c, L, g, Z, G, b);
+    case 0: return factor(s, s, M, L, r);
+    case 1: return factor(s + 3, s, M, L, r);
+    case 2: return factor(s + 6, s, M, L, r);
 #endif
-    default:
+    default: /* (scene_small.c's loops: a fully unrolled factor grows as n_s^3) */
       if (!sc_inertia_factor(n, M, f, 1e-14, L, g, t)) return 0;
-      sc_scene_z(n, m, *t, L, A, Z);
-      sc_scene_gram(n, m, Z, g, c, G, b, zero);
+      for (i = 0; i < n; ++i) r[i] = 1.0 / L[i * n + i];
       return 1;
   }
 }
 
-/* The solve (m rows); shape as setup's; L: n x n scratch. */
+/* The solve (m rows); shape as factored's; L (n x n): the inertia's factor, *t its dense
+ * block's size (-1: not factored, the factor's pivot rule failed). */
 static int solve(sc_int m, sc_int n, int shape, const double *M, const double *f,
                  const double *A, const double *c, const sc_int *kind, const double *par,
-                 const double *from, double *L, double *lam_out, double *a, double *w_out,
-                 double *state_out, double *info) {
-  double Z[SC_TINY_N * SC_TINY_M], g[SC_TINY_N], res[3], fs = 0.0, ws = 0.0;
-  sc_int i, k, t = 0, count = 0;
+                 const double *from, double *L, sc_int *t, double *lam_out,
+                 double *a, double *w_out, double *state_out, double *info) {
+  double Z[SC_TINY_N * (SC_TINY_M + 1)], rc[SC_TINY_N], res[3], fs = 0.0, ws = 0.0;
+  sc_int i, k, tt, count = 0;
   int ok = 0, moved = 0;
   tiny p;
   p.kind = kind;
   p.par = par;
-  if (!setup(n, m, shape, M, f, A, c, L, g, Z, p.G, p.b, &t)) return 0;
+  *t = -1;
+  if (!factored(n, shape, M, f, L, rc, &tt)) return 0;
+#define TINY_GRAM(r) gram_##r(n, tt, L, rc, A, f, c, Z, p.G, p.b)
+  TINY_SWITCH_M(m, TINY_GRAM)
+#undef TINY_GRAM
+  *t = tt;
   for (i = 0; i < m; ++i) { /* scene_solve.c's scales */
     const double d = p.G[i * m + i], bi = fabs(p.b[i]);
     if (d > 0 && bi / d > fs) fs = bi / d;
     if (bi > ws) ws = bi;
   }
   for (k = 0; k < 3 * m; ++k)
-    if (isfinite(par[k]) && fabs(par[k]) > fs) fs = fabs(par[k]);
+    if (fabs(par[k]) > fs && fabs(par[k]) < INFINITY) fs = fabs(par[k]); /* (finite ones) */
   for (i = 0; i < m; ++i)
     if (p.G[i * m + i] * fs > ws) ws = p.G[i * m + i] * fs;
   p.F = fs > 0 ? fs : 1.0;
@@ -429,15 +457,34 @@ static int solve(sc_int m, sc_int n, int shape, const double *M, const double *f
     lam_out[k] = p.lam[k];
     w_out[k] = p.w[k];
   }
-  switch (shape) {
+#define TINY_ACCEL(r) accel_##r(n, Z, p.lam, a)
+  TINY_SWITCH_M(m, TINY_ACCEL)
+#undef TINY_ACCEL
+  switch (shape) { /* a = L^-T (g + Z lam) */
 #if SNAKECG_NS <= TINY_FIXED_NS
-    case 0: accel_fixed(SNAKECG_NS, SNAKECG_NS, m, L, Z, g, p.lam, a); break;
-    case 1: accel_fixed(SNAKECG_NS + 3, SNAKECG_NS, m, L, Z, g, p.lam, a); break;
-    case 2: accel_fixed(SNAKECG_NS + 6, SNAKECG_NS, m, L, Z, g, p.lam, a); break;
+    case 0: back(SNAKECG_NS, SNAKECG_NS, L, rc, a); break;
+    case 1: back(SNAKECG_NS + 3, SNAKECG_NS, L, rc, a); break;
+    case 2: back(SNAKECG_NS + 6, SNAKECG_NS, L, rc, a); break;
 #endif
-    default: accel_fixed(n, t, m, L, Z, g, p.lam, a); /* (the same loops, not unrolled) */
+    default: back(n, tt, L, rc, a);
   }
   return 1;
+}
+
+/* The problem's shape for setup (the objects' count, or -1), or -2 where it is not tiny;
+ * diag: the caller's M has its rows from n_s on diagonal (else they are checked). */
+static int tiny_shape(sc_int n, sc_int m, sc_int nb, const double *M, const sc_int *kind,
+                      const sc_int *start, int diag) {
+  sc_int i, j, k;
+  int shape = (int)((n - SNAKECG_NS) / 3);
+  if (!tiny_on || m < 1 || m > SC_TINY_M || nb != m || m > n || n > SC_TINY_N) return -2;
+  for (k = 0; k < m; ++k)
+    if (kind[k] < K_FREE || kind[k] > K_BOX || start[k] != k) return -2;
+  if (n < SNAKECG_NS || n > SNAKECG_NS + 6 || (n - SNAKECG_NS) % 3 != 0) return -1;
+  for (i = SNAKECG_NS; i < n && !diag; ++i) /* the objects' rows: their diagonal */
+    for (j = 0; j < i; ++j)
+      if (M[i * n + j] != 0.0) return -1;
+  return shape;
 }
 
 SC_INTERNAL int sc_tiny_solve(sc_int n, sc_int m, sc_int nb, const double *M, const double *f,
@@ -446,18 +493,26 @@ SC_INTERNAL int sc_tiny_solve(sc_int n, sc_int m, sc_int nb, const double *M, co
                               double *lam, double *a, double *w, double *state_out,
                               double *info) {
   double L[SC_TINY_N * SC_TINY_N];
-  sc_int i, j, k;
-  int ok, shape = (n - SNAKECG_NS) / 3;
-  if (!tiny_on || m < 1 || m > SC_TINY_M || nb != m || m > n || n > SC_TINY_N) return 0;
-  for (k = 0; k < m; ++k)
-    if (kind[k] < K_FREE || kind[k] > K_BOX || start[k] != k) return 0;
-  if (n < SNAKECG_NS || n > SNAKECG_NS + 6 || (n - SNAKECG_NS) % 3 != 0) shape = -1;
-  for (i = SNAKECG_NS; i < n && shape >= 0; ++i) /* the objects' rows: their diagonal */
-    for (j = 0; j < i; ++j)
-      if (M[i * n + j] != 0.0) shape = -1;
-  ok = solve(m, n, shape, M, f, A, c, kind, par, from, L, lam, a, w, state_out, info);
+  sc_int t;
+  int ok, shape = tiny_shape(n, m, nb, M, kind, start, 0);
+  if (shape < -1) return 0;
+  ok = solve(m, n, shape, M, f, A, c, kind, par, from, L, &t, lam, a, w, state_out, info);
   TINY_ADD(0, 1L);
-  TINY_ADD(1, ok ? 1L : 0L);
+  if (!ok) TINY_ADD(1, 1L);
+  return ok;
+}
+
+SC_INTERNAL int sc_tiny_forward(sc_int n, sc_int m, sc_int nb, const double *M, const double *f,
+                                const double *A, const sc_int *kind, const sc_int *start,
+                                const double *par, const double *from, double *lam, double *a,
+                                double *w, double *state_out, double *info, double *L,
+                                sc_int *t) {
+  int ok, shape = tiny_shape(n, m, nb, M, kind, start, 1);
+  *t = -1;
+  if (shape < -1) return 0;
+  ok = solve(m, n, shape, M, f, A, 0, kind, par, from, L, t, lam, a, w, state_out, info);
+  TINY_ADD(0, 1L);
+  if (!ok) TINY_ADD(1, 1L);
   return ok;
 }
 
@@ -469,8 +524,8 @@ int SNAKECG_EXPORT(core_scene_tiny)(sc_int mode, double *counts) {
   if (mode == 0 || mode == 1) tiny_on = (int)mode;
   if (counts) {
     long t = TINY_TAKE(0);
-    long a = TINY_TAKE(1);
-    counts[0] = (double)t, counts[1] = (double)a;
+    long left = TINY_TAKE(1);
+    counts[0] = (double)t, counts[1] = (double)(t - left);
   }
   return prev;
 }

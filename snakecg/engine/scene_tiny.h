@@ -15,6 +15,15 @@ SC_INTERNAL int sc_tiny_solve(sc_int n, sc_int m, sc_int nb, const double *M, co
                               const sc_int *start, const double *par, const double *from,
                               double *lam, double *a, double *w, double *state_out,
                               double *info);
+/* sc_tiny_solve for the forward (c null; M's rows from n_s on diagonal, as the forward makes
+ * them), and where the inertia was factored whether answered or not (*t >= 0: the dense
+ * block's size, else -1) the factor L (n x n, its lower triangle read): sc_inertia_factor's,
+ * bit for bit */
+SC_INTERNAL int sc_tiny_forward(sc_int n, sc_int m, sc_int nb, const double *M, const double *f,
+                                const double *A, const sc_int *kind, const sc_int *start,
+                                const double *par, const double *from, double *lam, double *a,
+                                double *w, double *state_out, double *info, double *L,
+                                sc_int *t);
 /* its switch (mode 1 on, 0 off, -1 left) and counts (problems tried, answered) */
 int SNAKECG_EXPORT(core_scene_tiny)(sc_int mode, double *counts);
 #endif

@@ -1,0 +1,14 @@
+/* snakecg's engine: a general scene's metrics from the inertia's factor (scene_metrics.c), for
+ * the forward (scene_rows.c). Included after engine.h. */
+#ifndef SNAKECG_ENGINE_SCENE_METRICS_H
+#define SNAKECG_ENGINE_SCENE_METRICS_H
+
+/* The metrics of a solved sample from the bodies' inertia M = L L^T (n x n, block diagonal:
+ * M_s on the snake's n_s coordinates, then m, m, I per object; L as sc_inertia_factor writes
+ * it, its rows from t on their diagonal, its lower triangle read), the force f (n) and the
+ * accelerations a: norms (4: ||qdd_s||^2, ||a_o||^2 summed, ||lambda||^2, sr) and each
+ * object's ||a_o||^2 (no). */
+SC_INTERNAL void sc_scene_metrics(sc_int n, sc_int no, sc_int t, const double *L,
+                                  const double *f, const double *a, double *norms,
+                                  double *obj);
+#endif

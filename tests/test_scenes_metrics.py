@@ -1,0 +1,97 @@
+"""A general scene's metrics (snakecg/engine/scene_metrics.c: the paper's forms taken from the
+inertia's factor) against the forms written out in NumPy from the returned accelerations:
+||qdd_s||^2 = qdd^T M_s qdd (eq. 26), a_o^T I_o a_o per object (eq. 27) and their sum,
+||lambda||^2 = (a - a_free)^T M (a - a_free) with a_free = M^-1 f by numpy.linalg.solve, and
+sr (eq. 30); on random scenes whose solves take the tiny path and the general one (the same
+forms whichever path answered)."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+import snakecg
+from snakecg.errors import InputError
+from snakecg.scenes import GeneralScene
+
+from scenes_reference import ALL_MODELS, POLYHEDRAL, inertia_and_force, peg_obstacles, \
+    random_scene
+
+
+def _dense_metrics(model, res, q, tau):
+    """The paper's forms in NumPy from the result's accelerations (an independent model)."""
+    M, f = inertia_and_force(model, q, tau)
+    ns = model.n_coordinates
+    a = np.r_[res.qdd, np.ravel(res.a_obj)]
+    nq = res.qdd @ M[:ns, :ns] @ res.qdd
+    each = [ao @ M[ns + 3 * j:ns + 3 * j + 3, ns + 3 * j:ns + 3 * j + 3] @ ao
+            for j, ao in enumerate(np.reshape(res.a_obj, (-1, 3)))]
+    na = float(np.sum(each))
+    d = a - np.linalg.solve(M, f)
+    free = np.linalg.solve(M, f) @ M @ np.linalg.solve(M, f)
+    sr = na / (na + nq) if na + nq > 1e-26 * free else 0.0
+    return dict(norm_qdd=nq, norm_a_obj=na, each=np.array(each), norm_lambda=d @ M @ d, sr=sr,
+                scale=nq + na + free)
+
+
+def _scenes(rng, count):
+    """Random solved one-sample problems: (model, q, tau), every other one of one-row blocks
+    alone (wheels, contacts: the tiny path's problems where they are few)."""
+    out = []
+    while len(out) < count:
+        models = POLYHEDRAL if len(out) % 2 else ALL_MODELS
+        robot, ground, objects, pegs, q, tau = random_scene(rng, models)
+        try:
+            m0 = snakecg.load(GeneralScene(robot, ground=ground, objects=objects))
+            model = snakecg.load(GeneralScene(robot, ground=ground, objects=objects,
+                                              obstacles=peg_obstacles(m0, pegs, q)))
+            if model.forward(q, tau).status == 0:
+                out.append((model, q, tau))
+        except InputError:
+            continue
+    return out
+
+
+@pytest.mark.parametrize("tiny", [1, 0])
+def test_metrics_against_the_forms_in_numpy(rng, tiny):
+    counts, tried = np.zeros(2), 0
+    for model, q, tau in _scenes(rng, 40):
+        model.core.scene_tiny(tiny, None)
+        try:
+            model.core.scene_tiny(-1, counts.ctypes.data)
+            res = model.forward(q, tau)
+            model.core.scene_tiny(-1, counts.ctypes.data)
+        finally:
+            model.core.scene_tiny(1, None)
+        tried += counts[1]
+        assert res.status == 0, res.reason
+        want = _dense_metrics(model, res, q, tau)
+        tol = 1e-11 * want["scale"]
+        for k in ("norm_qdd", "norm_a_obj", "norm_lambda"):
+            assert abs(getattr(res, k) - want[k]) <= tol, k
+        assert np.abs(res.norm_a_obj_each - want["each"]).max(initial=0.0) <= tol
+        assert abs(res.sr - want["sr"]) <= 1e-10 and 0.0 <= res.sr <= 1.0
+        assert res.norm_qdd >= 0.0 and res.norm_lambda >= 0.0  # sums of squares
+    if tiny:
+        assert tried >= 10  # the tiny path answered some of them
+    else:
+        assert tried == 0
+
+
+def test_batched_metrics_against_the_forms_in_numpy(rng):
+    """The paper's scene through the general path, a batch (its solves started from the last
+    sample's pieces, nearly all answered by the tiny path)."""
+    scene = snakecg.Scene(snakecg.Robot(joints=3), scenario="wheels", kappa=100.0)
+    model = snakecg.load(GeneralScene.from_scene(scene))
+    Q = np.c_[rng.normal(0.0, 0.3, (200, 3)), rng.uniform(-1.0, 1.0, (200, 3))]
+    T = rng.normal(0.0, 0.05, (200, 3))
+    b = model.forward(Q, T)
+    assert np.all(b.status == 0)
+    for s in range(0, 200, 7):
+        r = model.forward(Q[s], T[s])
+        want = _dense_metrics(model, r, Q[s], T[s])
+        tol = 1e-11 * want["scale"]
+        for k in ("norm_qdd", "norm_a_obj", "norm_lambda"):
+            assert abs(getattr(b, k)[s] - want[k]) <= tol, k
+            assert abs(getattr(r, k) - want[k]) <= tol, k
+        assert abs(b.sr[s] - want["sr"]) <= 1e-10
