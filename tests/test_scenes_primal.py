@@ -182,6 +182,15 @@ def _polished(p, V0, lam0, iters=30):
     return V, lam
 
 
+def _pieces_of(cold, kind, start):
+    """A solve's pieces as a start for another: each block's state and forces (n_b x 3)."""
+    frm = np.zeros((len(kind), 3))
+    frm[:, 0] = cold["state"]
+    for b, (k, s) in enumerate(zip(kind, start)):
+        frm[b, 1:3 if k >= DISC else 2] = cold["lam"][s:s + (2 if k >= DISC else 1)]
+    return frm
+
+
 def test_every_kind_it_treats_on_random_problems(pegs):
     """Random problems with rows of every kind the primal treats (an ideal wheel, contacts, a
     bounded wheel, Coulomb discs; more rows than coordinates) and offsets, each solved cold,
@@ -206,10 +215,7 @@ def test_every_kind_it_treats_on_random_problems(pegs):
         core.scene_primal(1, None)
         cold = _solve(core, p, None)
         assert cold["info"]["status"] == 0
-        frm = np.zeros((len(kind), 3))
-        frm[:, 0] = cold["state"]
-        for b, (k, s) in enumerate(zip(kind, start)):
-            frm[b, 1:3 if k >= DISC else 2] = cold["lam"][s:s + (2 if k >= DISC else 1)]
+        frm = _pieces_of(cold, kind, start)
         _counts(core)
         out = _solve(core, p, frm)
         tries, ans = _counts(core)
@@ -252,10 +258,7 @@ def test_sliding_discs_apart_and_zero_rows_on_random_problems(pegs):
         core.scene_primal(1, None)
         cold = _solve(core, p, None)
         assert cold["info"]["status"] == 0
-        frm = np.zeros((len(kind), 3))
-        frm[:, 0] = cold["state"]
-        for b, (k, s) in enumerate(zip(kind, start)):
-            frm[b, 1:3 if k >= DISC else 2] = cold["lam"][s:s + (2 if k >= DISC else 1)]
+        frm = _pieces_of(cold, kind, start)
         _counts(core)
         out = _solve(core, p, frm)
         tries, ans = _counts(core)
