@@ -64,25 +64,35 @@ static double quad(sc_int n, const double *M, const double *v) {
 }
 
 /* t = M V (n x n row-major): each t_k summed over j in order, as quad's; for the snake alone
- * (n = n_s, a constant) two rows at a time (GCC's vector types), the same sums bit for bit. */
+ * (n = n_s) and the snake with one object (n = n_s + 3, the paper's push), sizes known when
+ * compiling, two rows at a time (GCC's vector types), the same sums bit for bit. */
+#if defined(__GNUC__)
+typedef double __attribute__((vector_size(16))) mv_v2;
+static inline __attribute__((always_inline)) void mv_fixed(const sc_int N, const double *M,
+                                                           const double *V, double *t) {
+  sc_int i, j;
+  SC_UNROLL for (i = 0; i + 1 < N; i += 2) {
+    mv_v2 s = {0.0, 0.0};
+    SC_UNROLL for (j = 0; j < N; ++j) s += (mv_v2){M[i * N + j], M[(i + 1) * N + j]} * V[j];
+    t[i] = s[0], t[i + 1] = s[1];
+  }
+  for (; i < N; ++i) { /* (an odd n: the last row) */
+    double s = 0.0;
+    SC_UNROLL for (j = 0; j < N; ++j) s += M[i * N + j] * V[j];
+    t[i] = s;
+  }
+}
+#endif
+
 static void mv_sums(sc_int n, const double *M, const double *V, double *t) {
   sc_int i, j;
 #if defined(__GNUC__)
-  typedef double __attribute__((vector_size(16))) v2;
   if (n == SNAKECG_NS) {
-    enum { N = SNAKECG_NS };
-    v2 vb[N];
-    SC_UNROLL for (j = 0; j < N; ++j) vb[j] = (v2){V[j], V[j]};
-    SC_UNROLL for (i = 0; i + 1 < N; i += 2) {
-      v2 s = {0.0, 0.0};
-      SC_UNROLL for (j = 0; j < N; ++j) s += (v2){M[i * N + j], M[(i + 1) * N + j]} * vb[j];
-      t[i] = s[0], t[i + 1] = s[1];
-    }
-    for (; i < N; ++i) { /* (an odd n_s: the last row) */
-      double s = 0.0;
-      SC_UNROLL for (j = 0; j < N; ++j) s += M[i * N + j] * V[j];
-      t[i] = s;
-    }
+    mv_fixed(SNAKECG_NS, M, V, t);
+    return;
+  }
+  if (n == SNAKECG_NS + 3) {
+    mv_fixed(SNAKECG_NS + 3, M, V, t);
     return;
   }
 #endif
@@ -304,8 +314,12 @@ SC_INTERNAL int sc_scene_step_kept(sc_scene_step *c, void **keep) {
     if (code == 0) figures(c, n, mv), rows_cs(kp, c->x, qcs);
     return 0;
   }
-  for (i = 0; i < n; ++i)
-    if (!isfinite(c->x[i]) || !isfinite(c->V[i])) return -3;
+  { /* (x - x is 0 where x is finite, NaN where not: one test for the 2 n numbers) */
+    const double *restrict x = c->x, *restrict V = c->V;
+    double z = 0.0;
+    for (i = 0; i < n; ++i) z += (x[i] - x[i]) + (V[i] - V[i]);
+    if (z != 0.0) return -3;
+  }
   d = kp->d;
   f = d;
   fgen = f + n;
@@ -324,22 +338,30 @@ SC_INTERNAL int sc_scene_step_kept(sc_scene_step *c, void **keep) {
     c->status = SS_FAILED;
     return 0;
   }
-  for (i = 0; i < n; ++i) fgen[i] = i >= SNAKECG_NS ? c->fo[i - SNAKECG_NS] : 0.0;
-  for (i = 3; i < SNAKECG_NS; ++i) fgen[i] += c->tau[i - 3];
-  for (i = 0; i < SNAKECG_NS; ++i) fgen[i] -= hb[i];
+  for (i = 0; i < 3; ++i) fgen[i] = 0.0 - hb[i];
+  for (i = 3; i < SNAKECG_NS; ++i) fgen[i] = (0.0 + c->tau[i - 3]) - hb[i];
+  for (i = SNAKECG_NS; i < n; ++i) fgen[i] = c->fo[i - SNAKECG_NS];
   if (memcmp(mv + n, c->x, sizeof(double) * (size_t)n) ||
       memcmp(mv + 2 * n, c->V, sizeof(double) * (size_t)n)) { /* (else the last figures') */
     mv_sums(n, c->M, c->V, mv);
     memcpy(mv + n, c->x, sizeof(double) * (size_t)n);
     memcpy(mv + 2 * n, c->V, sizeof(double) * (size_t)n);
   }
-  for (i = 0; i < n; ++i) f[i] = mv[i] + c->h * fgen[i];
+  {
+    const double h = c->h, *restrict m = mv, *restrict g = fgen;
+    double *restrict fo = f;
+    for (i = 0; i < n; ++i) fo[i] = m[i] + h * g[i];
+  }
   code = solve(c, n, c->h, f, scratch, c->Vp, c->lam, c->info); /* 2. */
   if (code || c->info[0] != 0.0) {
     c->status = STEP_NOT_CONVERGED;
     return code == -1 ? -1 : 0;
   }
-  for (i = 0; i < n; ++i) xp[i] = c->x[i] + c->h * c->Vp[i]; /* 3. */
+  { /* 3. */
+    const double h = c->h, *restrict x = c->x, *restrict vp = c->Vp;
+    double *restrict y = xp;
+    for (i = 0; i < n; ++i) y[i] = x[i] + h * vp[i];
+  }
   code = sc_scene_state_rows(pk, xp, xp + SNAKECG_NS, c->tol, c->ccap, mc, c->out1, c->M1,
                              c->A1, c->par1, c->kind1, c->start1, &kp->rows);
   if (code != 0) {

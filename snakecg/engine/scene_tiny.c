@@ -81,7 +81,7 @@ TINY_FLAT int factor(const sc_int n, const sc_int t, const double *M, double *L,
   const double rel = 1e-14;
   double big = 0.0, big_t = 0.0, rel_t;
   sc_int i, j, k;
-  TINY_UNROLL for (i = 0; i < n; ++i) {
+  for (i = 0; i < n; ++i) {
     const double d = M[i * n + i];
     if (d > big) big = d;
     if (i < t && d > big_t) big_t = d;
@@ -330,11 +330,19 @@ TINY_FLAT int passes(const sc_int m, tiny *p, int max_pass, sc_int *count, doubl
 #else
 #define TINY_CALLED static
 #endif
+#if SNAKECG_NS <= TINY_FIXED_NS
+#define TINY_ONE_OBJECT(n, t) ((n) == SNAKECG_NS + 3 && (t) == SNAKECG_NS)
+#else
+#define TINY_ONE_OBJECT(n, t) 0
+#endif
 #define TINY_BY_M(r) \
   TINY_CALLED void gram_##r(sc_int n, sc_int t, const double *L, const double *rc, \
                             const double *A, const double *f, const double *c, double *Z, \
                             double *G, double *b) { \
-    gram(r, n, t, L, rc, A, f, c, Z, G, b); \
+    if (TINY_ONE_OBJECT(n, t)) /* (one object: n, t constants, the sweep unrolled) */ \
+      gram(r, SNAKECG_NS + 3, SNAKECG_NS, L, rc, A, f, c, Z, G, b); \
+    else \
+      gram(r, n, t, L, rc, A, f, c, Z, G, b); \
   } \
   TINY_CALLED int passes_##r(tiny *p, int max_pass, sc_int *count, double *res) { \
     return passes(r, p, max_pass, count, res); \
