@@ -182,6 +182,18 @@ def _polished(p, V0, lam0, iters=30):
     return V, lam
 
 
+def _cold_then_from_its_pieces(core, p, kind, start):
+    """Problem p solved cold, then again from that solve's own pieces (the primal piece on):
+    both answers and whether the primal answered the second."""
+    core.scene_primal(1, None)
+    cold = _solve(core, p, None)
+    assert cold["info"]["status"] == 0
+    _counts(core)
+    out = _solve(core, p, _pieces_of(cold, kind, start))
+    _, ans = _counts(core)
+    return cold, out, ans
+
+
 def _pieces_of(cold, kind, start):
     """A solve's pieces as a start for another: each block's state and forces (n_b x 3)."""
     frm = np.zeros((len(kind), 3))
@@ -212,13 +224,7 @@ def test_every_kind_it_treats_on_random_problems(pegs):
         p = dict(n=n, m=m, nb=len(kind), M=M, f=rng.normal(size=n), A=A,
                  c=np.r_[0.0, rng.uniform(-0.2, 0.2, 2), np.zeros(7)], kind=kind,
                  start=start, par=par.reshape(-1))
-        core.scene_primal(1, None)
-        cold = _solve(core, p, None)
-        assert cold["info"]["status"] == 0
-        frm = _pieces_of(cold, kind, start)
-        _counts(core)
-        out = _solve(core, p, frm)
-        tries, ans = _counts(core)
+        cold, out, ans = _cold_then_from_its_pieces(core, p, kind, start)
         answered += int(ans)
         np.testing.assert_allclose(out["a"], cold["a"], rtol=0,
                                    atol=1e-12 * np.abs(cold["a"]).max())
@@ -255,13 +261,7 @@ def test_sliding_discs_apart_and_zero_rows_on_random_problems(pegs):
         c[[6, 9]] = rng.uniform(-0.5, 0.5, 2)
         p = dict(n=n, m=m, nb=len(kind), M=M, f=rng.normal(size=n), A=A, c=c, kind=kind,
                  start=start, par=par.reshape(-1))
-        core.scene_primal(1, None)
-        cold = _solve(core, p, None)
-        assert cold["info"]["status"] == 0
-        frm = _pieces_of(cold, kind, start)
-        _counts(core)
-        out = _solve(core, p, frm)
-        tries, ans = _counts(core)
+        cold, out, ans = _cold_then_from_its_pieces(core, p, kind, start)
         sliding = [b for b in range(len(kind)) if kind[b] == DISC and out["state"][b] == 2]
         rows = np.concatenate([[start[b], start[b] + 1] for b in sliding]) if sliding else []
         if ans and len(rows) and rows[-1] - rows[0] + 1 > len(rows):
