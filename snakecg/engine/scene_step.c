@@ -28,6 +28,8 @@
 #include "snakecg_layout.h"
 #include "engine.h"
 #include "scene_rows.h"
+#include "scene_solve.h"
+#include "scene_tiny.h"
 
 /* the run's accumulators and the last step's figures (ST_*, snakecg/scenes/run_record.py's),
  * a step's status (STEP_*, or SS_OVERLAP, SS_MORE, SS_FAILED: the rows at the end refused):
@@ -133,9 +135,17 @@ static int solve(sc_scene_step *c, sc_int n, double h, const double *f, double *
   }
   /* (with contact friction: scene_friction.c's solve on the tangent rows after the m rows,
    * an impact's too: its friction impulses within mu times its normal impulses) */
+  if (c->pk[SP_FRICTION] == 0) { /* (the convex solve: the tiny path first, as
+    core_scene_solve_s; the wrappers' sizes and scratch only where it declines) */
+    if (sc_tiny_solve(n, m, nb, c->M, f, c->A, off, c->kind, c->start, par, warm ? from : NULL,
+                      lam, a, w, st, info))
+      return 0;
+    return sc_scene_solve_one(n, m, nb, c->M, f, c->A, off, c->kind, c->start, par,
+                              SC_STEP_SWEEPS, warm ? from : NULL, lam, a, w, st, info, 0);
+  }
   return sc_friction_solve(n, m, nb, nc, c->M, f, c->A, off, c->kind, c->start, par,
-                           c->pk[SP_FRICTION] != 0 ? c->A + m * n : NULL, rec,
-                           SC_STEP_SWEEPS, warm ? from : NULL, lam, a, w, st, info, &unique);
+                           c->A + m * n, rec, SC_STEP_SWEEPS, warm ? from : NULL, lam, a, w,
+                           st, info, &unique);
 }
 
 /* The step's pieces (the solve's states st and impulses lam on the rows at x) as the start of
