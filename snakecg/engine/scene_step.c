@@ -45,8 +45,9 @@ enum { SOLVE_INFO = 8 }; /* the solve's certificate: status, dependent, primal, 
  * SceneStep): pk the packed scene; tol, h, impact_speed: contact tolerance (m), step (s),
  * closing speed (m/s); tau (NA), fo (3 n_o) held over the step; x, V (n each) the state,
  * replaced by the step's end when accepted; ccap, mcap room for contacts and rows; M, A, par,
- * out, kind, start the rows at x (sc_scene_state_rows' outputs), replaced; M1 .. start1
- * scratch: the rows at the step's end; Vp (n) the step's V+ (before an impact); lam, info
+ * out, kind, start the rows at x (sc_scene_state_rows' outputs); M1 .. start1
+ * scratch: the rows at the step's end, swapped with M .. start (the pointers) where the step
+ * is accepted; Vp (n) the step's V+ (before an impact); lam, info
  * (mcap, SOLVE_INFO) the step's solve, ilam, iinfo the impact's; acc (ST_WIDTH); status
  * STEP_* or SS_*; from (6 mcap + 2, or NULL: every solve from scratch), nfrom: the last
  * accepted step's pieces on the rows at x (3 per block: state, forces / h; its blocks' count;
@@ -295,7 +296,7 @@ SC_INTERNAL int sc_scene_step_kept(sc_scene_step *c, void **keep) {
   step_keep *kp = (step_keep *)*keep;
   double *d, *f, *fgen, *hb, *xp, *scratch, *mv, *qcs;
   int bc;
-  sc_int i, j, k, m1, nc1;
+  sc_int i, j, k, nc1;
   int code;
   if (!c) {
     keep_free(kp);
@@ -379,7 +380,6 @@ SC_INTERNAL int sc_scene_step_kept(sc_scene_step *c, void **keep) {
     return code < 0 ? code : 0;
   }
   step_work(c, c->Vp, scratch + 4 * mc, scratch + 3 * mc); /* 4. */
-  m1 = (sc_int)c->out1[RO_M];
   nc1 = (sc_int)c->out1[RO_NC];
   {
     int impact = 0; /* 5.: a new contact closing */
@@ -393,12 +393,17 @@ SC_INTERNAL int sc_scene_step_kept(sc_scene_step *c, void **keep) {
     memcpy(c->x, xp, sizeof(double) * (size_t)n); /* 6. */
     rows_cs(kp, c->x, qcs);
     memcpy(c->V, c->Vp, sizeof(double) * (size_t)n);
-    memcpy(c->out, c->out1, sizeof(double) * (size_t)(RO_POSE + 3 * no + CR_W * nc1));
-    memcpy(c->M, c->M1, sizeof(double) * (size_t)(n * n));
-    memcpy(c->A, c->A1, sizeof(double) * (size_t)((m1 + (pk[SP_FRICTION] != 0) * nc1) * n));
-    memcpy(c->par, c->par1, sizeof(double) * (size_t)(3 * c->out1[RO_NB]));
-    memcpy(c->kind, c->kind1, sizeof(sc_int) * (size_t)c->out1[RO_NB]);
-    memcpy(c->start, c->start1, sizeof(sc_int) * (size_t)c->out1[RO_NB]);
+    { /* the rows at the end become the rows at x: the buffers swapped, not copied (the
+      caller finds the current ones by their addresses in c) */
+      double *t;
+      sc_int *u;
+      t = c->out, c->out = c->out1, c->out1 = t;
+      t = c->M, c->M = c->M1, c->M1 = t;
+      t = c->A, c->A = c->A1, c->A1 = t;
+      t = c->par, c->par = c->par1, c->par1 = t;
+      u = c->kind, c->kind = c->kind1, c->kind1 = u;
+      u = c->start, c->start = c->start1, c->start1 = u;
+    }
     c->status = STEP_DONE;
     if (impact) {
       double *v1 = fgen, e0 = quad(n, c->M, c->V);
