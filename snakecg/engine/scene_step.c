@@ -7,11 +7,11 @@
  *   1. the bias forces h_s(q, v) (the generated `bias_forces_cs`, from the links' cos and sin
  *      that the rows at x took, scene_rows.h; else `bias_forces`), the generalized force
  *      fgen = B tau - h_s + E f_obj and f = M V + h fgen;
- *   2. the exact solve (scene_solve.c's core_scene_solve_s; with contact friction
- *      scene_friction.c's on the tangent rows too) with the friction sets' sizes
- *      times h and the contacts' offsets gap / h (none within GAP_BAND of the tolerance):
- *      V+, its active set started from the last step's pieces (consecutive steps almost
- *      always have the same; they are kept at the step's end, 6.);
+ *   2. the exact solve (scene_tiny.c's tiny path, else scene_solve.c's general one past it;
+ *      with contact friction scene_friction.c's on the tangent rows too) with the friction
+ *      sets' sizes times h and the contacts' offsets gap / h (none within GAP_BAND of the
+ *      tolerance): V+, its active set started from the last step's pieces (consecutive steps
+ *      almost always have the same; they are kept at the step's end, 6.);
  *   3. x+ = x + h V+ and the rows there; a pair overlapping beyond the tolerance refuses the
  *      step (STEP_OVERLAP, V+ kept for the caller's root finding, nothing else changed);
  *   4. the step's work: the torques' h tau . v+, the ground's dissipation -lam . (A V+), the
