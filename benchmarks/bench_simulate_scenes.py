@@ -127,8 +127,9 @@ def solve_share(model, run) -> float:
     st.V[:] = np.concatenate((run.v[k], run.v_obj[k].reshape(-1)))
     st.call(0.0)
     st.call(h)  # the pieces of this step: the start of the next
-    keep = (st.x, st.V, st.M, st.A, st.par, st.out, st.kind, st.start, st.pieces)
-    saved, nfrom = [a.copy() for a in keep], st.args.nfrom
+    # (by name: an accepted step swaps the stepper's buffers of the rows at x and at its end)
+    keep = ("x", "V", "M", "A", "par", "out", "kind", "start", "pieces")
+    saved, nfrom = [getattr(st, name).copy() for name in keep], st.args.nfrom
     m, nb, ns, n = int(st.out[2]), int(st.out[3]), st.ns, st.n
     f = st.M @ st.V  # no torque: M V - h bias(q, v)
     f[:ns] -= h * np.asarray(model.bias_forces(st.x[:ns], st.V[:ns])).reshape(-1)
@@ -150,8 +151,8 @@ def solve_share(model, run) -> float:
     t_solve = time.process_time() - t0
     t_step = 0.0
     for _ in range(2000):
-        for dst, src in zip(keep, saved):
-            dst[...] = src
+        for name, src in zip(keep, saved):
+            getattr(st, name)[...] = src
         st.args.nfrom = nfrom
         t0 = time.process_time()
         st.call(h)

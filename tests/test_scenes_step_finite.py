@@ -50,3 +50,19 @@ def test_a_state_not_finite_is_refused_before_any_work(stepper):
     assert all(math.isfinite(t) for t in (*st.x, *st.V))
     assert st.call(1e-3) == 0  # the finite state steps (STEP_DONE)
     assert not np.array_equal(st.x, x0)
+
+
+def test_the_arguments_finiteness_against_numpy(rng):
+    """stepping._finite (the run's argument checks on a few numbers) against NumPy's
+    isfinite on random arrays of 1 to 100 numbers with a NaN, +inf, -inf or the largest and
+    smallest floats put in, flat and 2-D."""
+    from snakecg.scenes.stepping import _finite
+
+    big, tiny = np.finfo(float).max, np.finfo(float).tiny
+    for n in (1, 2, 3, 6, 9, 64, 65, 100):
+        for bad in (None, np.nan, np.inf, -np.inf, big, -big, tiny, 0.0):
+            a = rng.normal(size=n) * 1e3
+            if bad is not None:
+                a[rng.integers(n)] = bad
+            for arr in (a, a.reshape(1, n), a.reshape(n, 1)):
+                assert _finite(arr) is bool(np.isfinite(arr).all())

@@ -167,6 +167,12 @@ def address(obj) -> int:
     return ctypes.addressof(obj)
 
 
+def array_address(arr) -> int:
+    """The address of a writable C-contiguous NumPy array's data (its ``ctypes.data``, read
+    through the buffer protocol: about 0.3 us against 1.3 us)."""
+    return ctypes.addressof(ctypes.c_char.from_buffer(arr))
+
+
 class Call(ctypes.Structure):
     """The arguments of one ``core_forward`` call, for ``core_forward_call``."""
 

@@ -93,17 +93,19 @@ static double sc_geo_plate_depth(double ax, double ay, double bx, double by, dou
 /* The overlap of the link a-b (in the plate's frame) and the plate of half side h. */
 static double sc_geo_link_plate(double ax, double ay, double bx, double by, double h, double r) {
   const double d = sc_geo_plate_depth(ax, ay, bx, by, h);
-  const double c[5][2] = {{-h, -h}, {h, -h}, {h, h}, {-h, h}, {-h, -h}};
-  const double a[2] = {ax, ay}, b[2] = {bx, by};
-  double dist = INFINITY;
-  int k, crossing;
   if (r <= 0) return d;
   if (d > 0) return d + r;
-  for (k = 0; k < 4; ++k) { /* outside: the distance to the plate's edges */
-    const double e = sc_geo_ends(a, b, c[k], c[k + 1], &crossing);
-    dist = sc_geo_min(dist, crossing ? 0.0 : e);
+  { /* outside: the distance to the plate's edges (the corners built only here) */
+    const double c[5][2] = {{-h, -h}, {h, -h}, {h, h}, {-h, h}, {-h, -h}};
+    const double a[2] = {ax, ay}, b[2] = {bx, by};
+    double dist = INFINITY;
+    int k, crossing;
+    for (k = 0; k < 4; ++k) {
+      const double e = sc_geo_ends(a, b, c[k], c[k + 1], &crossing);
+      dist = sc_geo_min(dist, crossing ? 0.0 : e);
+    }
+    return sc_geo_max(0.0, r - dist);
   }
-  return sc_geo_max(0.0, r - dist);
 }
 
 /* The largest overlap at the state y and its pair (the first of equals). */

@@ -48,6 +48,7 @@
 #include "engine.h"
 #include "scene_sets.h"
 #include "scene_tiny.h"
+#include "scene_solve.h"
 
 enum { ST_SOLVED = 0, ST_NOT_CONVERGED = 1, ST_SINGULAR_MASS = 2, ST_BAD_INPUT = 3 }; /* status */
 
@@ -314,14 +315,15 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
                          const double *A, const double *c, const sc_int *kind, const sc_int *start,
                          const double *par, sc_int max_sweeps, const double *from,
                          double *lam, double *a, double *w, double *state_out, double *info,
-                         double *work, sc_int *iwork) {
+                         double *work, sc_int *iwork, int tiny) {
   double *L = work, *Z = L + n * n, *G = Z + n * m, *b = G + m * m, *gam = b + m,
          *keep = gam + nb, *zero = keep + m, *rest = zero + m, res[3] = {NAN, NAN, NAN};
   sc_int i, j, k, t, total_sweeps = 0, passes = 0, defect = 0, chunk = CHUNK;
   sc_int *state = iwork, *iw2 = iwork + nb, *prev = iw2 + 3 * (m + nb);
   sc_problem p;
   int dep = 0, ok = 0, primal = 0, reread = 0, fails = 0;
-  if (sc_tiny_solve(n, m, nb, M, f, A, c, kind, start, par, from, lam, a, w, state_out, info))
+  if (tiny && sc_tiny_solve(n, m, nb, M, f, A, c, kind, start, par, from, lam, a, w, state_out,
+                            info))
     return; /* (a tiny problem of one-row blocks: scene_tiny.c, the same steps compiled) */
   memset(info, 0, sizeof(double) * INFO_WIDTH);
   if (!sc_inertia_factor(n, M, f, 1e-14, L, a, &t)) { /* (scene_small.c: g = L^-1 f in a) */
@@ -532,7 +534,7 @@ int SNAKECG_EXPORT(core_scene_solve_b)(sc_int ns, sc_int n, sc_int mmax, sc_int 
     solve_sample(n, m[s], nb[s], M + s * n * n, f + s * n, A + s * mmax * n,
                  c ? c + s * mmax : NULL, kind + s * nbmax, start + s * nbmax,
                  par + s * 3 * nbmax, max_sweeps, NULL, lam + s * mmax, a + s * n,
-                 w + s * mmax, state + s * nbmax, info + s * INFO_WIDTH, work, iwork);
+                 w + s * mmax, state + s * nbmax, info + s * INFO_WIDTH, work, iwork, 1);
   }
   free(work);
   free(iwork);
@@ -547,6 +549,16 @@ int SNAKECG_EXPORT(core_scene_solve_s)(sc_int n, sc_int m, sc_int nb, const doub
                                        const double *par, sc_int max_sweeps,
                                        const double *from, double *lam, double *a, double *w,
                                        double *state, double *info) {
+  return sc_scene_solve_one(n, m, nb, M, f, A, c, kind, start, par, max_sweeps, from, lam, a, w,
+                            state, info, 1);
+}
+
+SC_INTERNAL int sc_scene_solve_one(sc_int n, sc_int m, sc_int nb, const double *M,
+                                   const double *f, const double *A, const double *c,
+                                   const sc_int *kind, const sc_int *start, const double *par,
+                                   sc_int max_sweeps, const double *from, double *lam,
+                                   double *a, double *w, double *state, double *info,
+                                   int tiny) {
   sc_int nd, ni, iws[256];
   double *work, ws[10240]; /* (scratch on the stack up to 80 KB, no allocation: a time step's
     problems, 13 coordinates and up to 33 rows on the pegs row, are 8,000-10,000 doubles) */
@@ -557,7 +569,7 @@ int SNAKECG_EXPORT(core_scene_solve_s)(sc_int n, sc_int m, sc_int nb, const doub
   iwork = ni <= 256 ? iws : (sc_int *)malloc(sizeof(sc_int) * (size_t)ni);
   if (work && iwork)
     solve_sample(n, m, nb, M, f, A, c, kind, start, par, max_sweeps, from, lam, a, w, state,
-                 info, work, iwork);
+                 info, work, iwork, tiny);
   if (work != ws) free(work);
   if (iwork != iws) free(iwork);
   return work && iwork ? 0 : -1;

@@ -7,11 +7,11 @@
  *   1. the bias forces h_s(q, v) (the generated `bias_forces_cs`, from the links' cos and sin
  *      that the rows at x took, scene_rows.h; else `bias_forces`), the generalized force
  *      fgen = B tau - h_s + E f_obj and f = M V + h fgen;
- *   2. the exact solve (scene_solve.c's core_scene_solve_s; with contact friction
- *      scene_friction.c's on the tangent rows too) with the friction sets' sizes
- *      times h and the contacts' offsets gap / h (none within GAP_BAND of the tolerance):
- *      V+, its active set started from the last step's pieces (consecutive steps almost
- *      always have the same; they are kept at the step's end, 6.);
+ *   2. the exact solve (scene_tiny.c's tiny path, else scene_solve.c's general one past it;
+ *      with contact friction scene_friction.c's on the tangent rows too) with the friction
+ *      sets' sizes times h and the contacts' offsets gap / h (none within GAP_BAND of the
+ *      tolerance): V+, its active set started from the last step's pieces (consecutive steps
+ *      almost always have the same; they are kept at the step's end, 6.);
  *   3. x+ = x + h V+ and the rows there; a pair overlapping beyond the tolerance refuses the
  *      step (STEP_OVERLAP, V+ kept for the caller's root finding, nothing else changed);
  *   4. the step's work: the torques' h tau . v+, the ground's dissipation -lam . (A V+), the
@@ -28,6 +28,8 @@
 #include "snakecg_layout.h"
 #include "engine.h"
 #include "scene_rows.h"
+#include "scene_solve.h"
+#include "scene_tiny.h"
 
 /* the run's accumulators and the last step's figures (ST_*, snakecg/scenes/run_record.py's),
  * a step's status (STEP_*, or SS_OVERLAP, SS_MORE, SS_FAILED: the rows at the end refused):
@@ -43,8 +45,9 @@ enum { SOLVE_INFO = 8 }; /* the solve's certificate: status, dependent, primal, 
  * SceneStep): pk the packed scene; tol, h, impact_speed: contact tolerance (m), step (s),
  * closing speed (m/s); tau (NA), fo (3 n_o) held over the step; x, V (n each) the state,
  * replaced by the step's end when accepted; ccap, mcap room for contacts and rows; M, A, par,
- * out, kind, start the rows at x (sc_scene_state_rows' outputs), replaced; M1 .. start1
- * scratch: the rows at the step's end; Vp (n) the step's V+ (before an impact); lam, info
+ * out, kind, start the rows at x (sc_scene_state_rows' outputs); M1 .. start1
+ * scratch: the rows at the step's end, swapped with M .. start (the pointers) where the step
+ * is accepted; Vp (n) the step's V+ (before an impact); lam, info
  * (mcap, SOLVE_INFO) the step's solve, ilam, iinfo the impact's; acc (ST_WIDTH); status
  * STEP_* or SS_*; from (6 mcap + 2, or NULL: every solve from scratch), nfrom: the last
  * accepted step's pieces on the rows at x (3 per block: state, forces / h; its blocks' count;
@@ -133,9 +136,17 @@ static int solve(sc_scene_step *c, sc_int n, double h, const double *f, double *
   }
   /* (with contact friction: scene_friction.c's solve on the tangent rows after the m rows,
    * an impact's too: its friction impulses within mu times its normal impulses) */
+  if (c->pk[SP_FRICTION] == 0) { /* (the convex solve: the tiny path first, as
+    core_scene_solve_s; the wrappers' sizes and scratch only where it declines) */
+    if (sc_tiny_solve(n, m, nb, c->M, f, c->A, off, c->kind, c->start, par, warm ? from : NULL,
+                      lam, a, w, st, info))
+      return 0;
+    return sc_scene_solve_one(n, m, nb, c->M, f, c->A, off, c->kind, c->start, par,
+                              SC_STEP_SWEEPS, warm ? from : NULL, lam, a, w, st, info, 0);
+  }
   return sc_friction_solve(n, m, nb, nc, c->M, f, c->A, off, c->kind, c->start, par,
-                           c->pk[SP_FRICTION] != 0 ? c->A + m * n : NULL, rec,
-                           SC_STEP_SWEEPS, warm ? from : NULL, lam, a, w, st, info, &unique);
+                           c->A + m * n, rec, SC_STEP_SWEEPS, warm ? from : NULL, lam, a, w,
+                           st, info, &unique);
 }
 
 /* The step's pieces (the solve's states st and impulses lam on the rows at x) as the start of
@@ -285,7 +296,7 @@ SC_INTERNAL int sc_scene_step_kept(sc_scene_step *c, void **keep) {
   step_keep *kp = (step_keep *)*keep;
   double *d, *f, *fgen, *hb, *xp, *scratch, *mv, *qcs;
   int bc;
-  sc_int i, j, k, m1, nc1;
+  sc_int i, j, k, nc1;
   int code;
   if (!c) {
     keep_free(kp);
@@ -369,7 +380,6 @@ SC_INTERNAL int sc_scene_step_kept(sc_scene_step *c, void **keep) {
     return code < 0 ? code : 0;
   }
   step_work(c, c->Vp, scratch + 4 * mc, scratch + 3 * mc); /* 4. */
-  m1 = (sc_int)c->out1[RO_M];
   nc1 = (sc_int)c->out1[RO_NC];
   {
     int impact = 0; /* 5.: a new contact closing */
@@ -383,12 +393,17 @@ SC_INTERNAL int sc_scene_step_kept(sc_scene_step *c, void **keep) {
     memcpy(c->x, xp, sizeof(double) * (size_t)n); /* 6. */
     rows_cs(kp, c->x, qcs);
     memcpy(c->V, c->Vp, sizeof(double) * (size_t)n);
-    memcpy(c->out, c->out1, sizeof(double) * (size_t)(RO_POSE + 3 * no + CR_W * nc1));
-    memcpy(c->M, c->M1, sizeof(double) * (size_t)(n * n));
-    memcpy(c->A, c->A1, sizeof(double) * (size_t)((m1 + (pk[SP_FRICTION] != 0) * nc1) * n));
-    memcpy(c->par, c->par1, sizeof(double) * (size_t)(3 * c->out1[RO_NB]));
-    memcpy(c->kind, c->kind1, sizeof(sc_int) * (size_t)c->out1[RO_NB]);
-    memcpy(c->start, c->start1, sizeof(sc_int) * (size_t)c->out1[RO_NB]);
+    { /* the rows at the end become the rows at x: the buffers swapped, not copied (the
+      caller finds the current ones by their addresses in c) */
+      double *t;
+      sc_int *u;
+      t = c->out, c->out = c->out1, c->out1 = t;
+      t = c->M, c->M = c->M1, c->M1 = t;
+      t = c->A, c->A = c->A1, c->A1 = t;
+      t = c->par, c->par = c->par1, c->par1 = t;
+      u = c->kind, c->kind = c->kind1, c->kind1 = u;
+      u = c->start, c->start = c->start1, c->start1 = u;
+    }
     c->status = STEP_DONE;
     if (impact) {
       double *v1 = fgen, e0 = quad(n, c->M, c->V);

@@ -55,7 +55,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..engine.binding import SCENE_LAWS, SceneRunCall, SceneStateCall, SceneStep, address
+from ..engine.binding import (SCENE_LAWS, SceneRunCall, SceneStateCall, SceneStep, address,
+                              array_address)
 from ..errors import BuildError, InputError
 from .contacts import Rows, StateRows, read_rows
 from .packing import BODY_KINDS, scene_size
@@ -140,12 +141,12 @@ class _Stepper:
         self.tau = np.zeros(max(1, model.n_joints))
         self.fo = np.zeros(max(1, 3 * self.no))
         self.fo[:3 * self.no] = f_obj
-        self.M, self.M1 = np.zeros((n, n)), np.zeros((n, n))
-        self.A, self.A1 = np.zeros((mcap, n)), np.zeros((mcap, n))
-        self.par, self.par1 = np.zeros((mcap, 3)), np.zeros((mcap, 3))
-        self.out, self.out1 = np.zeros_like(eng.out), np.zeros_like(eng.out)
-        self.kind, self.kind1 = (np.zeros(mcap, dtype=np.int64) for _ in range(2))
-        self.start, self.start1 = (np.zeros(mcap, dtype=np.int64) for _ in range(2))
+        # the rows at x and at a step's end: two buffers each, whose roles the engine swaps
+        # at every accepted step (the properties below read which is which from the struct)
+        self._two = tuple((make(), make()) for make in (
+            lambda: np.zeros((n, n)), lambda: np.zeros((mcap, n)), lambda: np.zeros((mcap, 3)),
+            lambda: np.zeros_like(eng.out), lambda: np.zeros(mcap, dtype=np.int64),
+            lambda: np.zeros(mcap, dtype=np.int64)))
         self.lam, self.ilam = np.zeros(mcap), np.zeros(mcap)
         self.info, self.iinfo = np.zeros(len(INFO)), np.zeros(len(INFO))
         self.acc = np.zeros(ST_WIDTH)
@@ -158,15 +159,29 @@ class _Stepper:
         ad = [a.ctypes.data for a in (
             self.tau, self.fo, self.x, self.V)]
         bufs = [a.ctypes.data for a in (
-            self.M, self.A, self.par, self.out, self.kind, self.start, self.M1, self.A1,
-            self.par1, self.out1, self.kind1, self.start1, self.Vp, self.lam, self.info,
-            self.ilam, self.iinfo, self.acc)]
+            *(p[0] for p in self._two), *(p[1] for p in self._two), self.Vp, self.lam,
+            self.info, self.ilam, self.iinfo, self.acc)]
+        self._first = bufs[0]  # (M's first buffer: where the struct's M points, unswapped)
         self._pieces = self.pieces.ctypes.data
         self.args = SceneStep(model._pk, float(tol), 0.0, IMPACT_SPEED, *ad, eng.ccap, mcap,
                               *bufs, 0, None if cold else self._pieces, 0)
         self._address = address(self.args)
         self._step, self._place, self._x = core.scene_step, core.scene_place_q, ad[2]
         self.runner = None  # the run's loop over this step (a pooled stepper keeps its own)
+
+    def _rows_buffers(self, end: bool) -> tuple:
+        """The buffers of the rows at x (M, A, par, out, kind, start), or with ``end`` at the
+        last step's end: the first or the second of each pair as the engine left them."""
+        second = (self.args.M != self._first) != end
+        return tuple(p[second] for p in self._two)
+
+    M = property(lambda self: self._rows_buffers(False)[0])
+    A = property(lambda self: self._rows_buffers(False)[1])
+    par = property(lambda self: self._rows_buffers(False)[2])
+    out = property(lambda self: self._rows_buffers(False)[3])
+    kind = property(lambda self: self._rows_buffers(False)[4])
+    start = property(lambda self: self._rows_buffers(False)[5])
+    out1 = property(lambda self: self._rows_buffers(True)[3])
 
     def reset(self, f_obj) -> None:
         """Ready for a new run (a pooled stepper, :func:`_take`): the wrench on the objects,
@@ -215,16 +230,22 @@ class _Stepper:
 
     def rows(self, end: bool = False) -> Rows:
         """The rows at the state (``end``: at the last step's end, before it is accepted)."""
-        if end:
-            return read_rows(self.model, self.out1, self.A1, self.par1, self.kind1,
-                             self.start1)
-        return read_rows(self.model, self.out, self.A, self.par, self.kind, self.start)
+        M, A, par, out, kind, start = self._rows_buffers(end)
+        return read_rows(self.model, out, A, par, kind, start)
 
 
 def contact_tolerance(scene, tolerance) -> float:
     """A run's contact tolerance (m): ``tolerance``, by default ``1e-5`` of the scene's size
     (:func:`~snakecg.scenes.packing.scene_size`)."""
     return 1e-5 * scene_size(scene) if tolerance is None else float(tolerance)
+
+
+def _finite(arr) -> bool:
+    """Whether every number of the float array ``arr`` is finite (a few numbers: one pass in
+    Python, several times cheaper than NumPy's ufunc and reduction on them)."""
+    if arr.size > 64:
+        return bool(np.isfinite(arr).all())
+    return all(map(math.isfinite, arr.ravel().tolist()))
 
 
 def _check_args(model, q0, v0, duration, dt, q_obj0, v_obj0, f_obj, tolerance):
@@ -235,7 +256,7 @@ def _check_args(model, q0, v0, duration, dt, q_obj0, v_obj0, f_obj, tolerance):
         if value is None:
             return default
         arr = np.asarray(value, dtype=float) if not isinstance(value, (str, bytes)) else None
-        if arr is None or arr.size != math.prod(shape) or not np.isfinite(arr).all():
+        if arr is None or arr.size != math.prod(shape) or not _finite(arr):
             problems.append(f"{name} must be {math.prod(shape)} finite numbers "
                             f"(shape {shape}), got {value!r:.60}")
             return default
@@ -331,7 +352,7 @@ class _Runner:
         rows = self.rec[:k]
         if k:
             self.rec = np.empty_like(self.rec)
-            a.rec = self.rec.ctypes.data
+            a.rec = array_address(self.rec)
         a.nrec = 0
         return rows
 

@@ -26,7 +26,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..engine.binding import Geometry, address
+from ..engine.binding import Geometry, address, array_address
 from ..engine.segment import GEO_OFF, GEO_RECORD, GEO_STOP
 from ..errors import InputError
 from ..geometry import ContactCheck
@@ -123,7 +123,7 @@ class RunCheck:
             return k, float(depth[k]), int(pair[k])
         out = np.empty(2)  # (its own: a check may be shared by threads)
         k = self._first(self.address, len(states), states.ctypes.data, states.strides[0] // 8,
-                        float(tol), out.ctypes.data)
+                        float(tol), array_address(out))
         if k >= len(states):
             return None, 0.0, -1
         return k, float(out[0]), int(out[1])

@@ -1,0 +1,14 @@
+/* snakecg's engine: the general scene's solve of one sample (scene_solve.c) for a caller that
+ * tries the tiny path itself. Included after engine.h. */
+#ifndef SNAKECG_ENGINE_SCENE_SOLVE_H
+#define SNAKECG_ENGINE_SCENE_SOLVE_H
+
+/* core_scene_solve_s, its arguments and returns; tiny 0: scene_tiny.c's path not tried (the
+ * caller tried sc_tiny_solve and it declined: tried once, counted once), 1: tried first */
+SC_INTERNAL int sc_scene_solve_one(sc_int n, sc_int m, sc_int nb, const double *M,
+                                   const double *f, const double *A, const double *c,
+                                   const sc_int *kind, const sc_int *start, const double *par,
+                                   sc_int max_sweeps, const double *from, double *lam,
+                                   double *a, double *w, double *state, double *info,
+                                   int tiny);
+#endif
