@@ -192,6 +192,35 @@ PRIMAL_FLAT void last_w(sc_int n, sc_problem *p, const double *Z, const double *
   }
 }
 
+/* Y's columns nc (1 or 2) of held rows, Y_j = R^-1 Z_j by forward substitution (t: R's
+ * diagonal's reciprocals; Zc: their gathered columns, each n long; ch: their offsets), and
+ * lh_j = Y_j^T q - (Z_j^T y + c_j); the columns' chains side by side, each summed as one
+ * column alone would be */
+PRIMAL_FLAT void held_cols(sc_int n, const int nc, const double *R, const double *t,
+                           const double *Zc, const double *ch, const double *y,
+                           const double *q, double *restrict Y, double *restrict lh) {
+  double u[2] = {0.0, 0.0}, t0[2], t1[2];
+  sc_int i, k;
+  int c;
+  for (c = 0; c < nc; ++c) u[c] = -ch[c];
+  for (i = 0; i < n; ++i) {
+    const double *restrict ri = R + i * n;
+    for (c = 0; c < nc; ++c) t0[c] = Zc[c * n + i], t1[c] = 0.0;
+    for (k = 0; k + 1 < i; k += 2)
+      for (c = 0; c < nc; ++c) {
+        t0[c] -= ri[k] * Y[c * n + k];
+        t1[c] -= ri[k + 1] * Y[c * n + k + 1];
+      }
+    if (k < i)
+      for (c = 0; c < nc; ++c) t0[c] -= ri[k] * Y[c * n + k];
+    for (c = 0; c < nc; ++c) {
+      Y[c * n + i] = (t0[c] + t1[c]) * t[i];
+      u[c] += Y[c * n + i] * q[i] - Zc[c * n + i] * y[i];
+    }
+  }
+  for (c = 0; c < nc; ++c) lh[c] = u[c];
+}
+
 /* The rank of the rows F (nf of them) by K = Z_F Z_F^T (n x n: G_FF's nonzero eigenvalues),
  * its pivots above NULL_TOL of the first (sc_min_norm_face's rule); with apply and a rank
  * below nf, their forces made the minimum-norm ones of the same Z_F lam_F: Z_F^T x,
@@ -381,21 +410,14 @@ PRIMAL_FLAT int piece(sc_int n, sc_problem *p, const double *Z, const double *g,
       for (i = 0; i < n; ++i) u += yj[i] * q[i] - zj[i] * y[i];
       lh[j] = u;
     }
-    for (j = 0; j < h && fresh; ++j) {
-      double *restrict yj = Y + j * n, u = -cg[2 * ns + j];
-      for (i = 0; i < n; ++i) {
-        const double *restrict ri = R + i * n, zij = Zc[(2 * ns + j) * n + i];
-        double t0 = zij, t1 = 0.0;
-        for (k = 0; k + 1 < i; k += 2) {
-          t0 -= ri[k] * yj[k];
-          t1 -= ri[k + 1] * yj[k + 1];
-        }
-        if (k < i) t0 -= ri[k] * yj[k];
-        yj[i] = (t0 + t1) * t[i];
-        u += yj[i] * q[i] - zij * y[i];
-      }
-      lh[j] = u;
-      for (k = 0; k <= j; ++k) S[j * h + k] = sc_dot(yj, Y + k * n, n);
+    for (j = 0; j + 1 < h && fresh; j += 2) { /* (two columns side by side: two chains) */
+      held_cols(n, 2, R, t, Zc + (2 * ns + j) * n, cg + 2 * ns + j, y, q, Y + j * n, lh + j);
+      for (k = 0; k <= j; ++k) S[j * h + k] = sc_dot(Y + j * n, Y + k * n, n);
+      for (k = 0; k <= j + 1; ++k) S[(j + 1) * h + k] = sc_dot(Y + (j + 1) * n, Y + k * n, n);
+    }
+    for (; j < h && fresh; ++j) {
+      held_cols(n, 1, R, t, Zc + (2 * ns + j) * n, cg + 2 * ns + j, y, q, Y + j * n, lh + j);
+      for (k = 0; k <= j; ++k) S[j * h + k] = sc_dot(Y + j * n, Y + k * n, n);
     }
     if (h > 0) {
       for (j = 0; j < h; ++j) bh[j] = lh[j];
