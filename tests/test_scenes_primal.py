@@ -582,3 +582,27 @@ def test_papers_push_with_and_without_the_primal_piece():
         np.testing.assert_allclose(np.asarray(getattr(on, k), dtype=float),
                                    np.asarray(getattr(off, k), dtype=float), rtol=0,
                                    atol=1e-9, err_msg=k)
+
+
+def test_pegs_run_with_the_primal_piece_avx_copy_bit_for_bit(pegs):
+    """The snake's piece compiled a second time with AVX (scene_primal.c, chosen where the
+    processor has it; no FMA, so each lane's operations are the same) against the copy without
+    (``core_scene_primal``'s mode 2): the pegs run with impacts bit for bit, every field, and
+    the same tries and answers."""
+    model, q0, gait, _ = pegs
+    core = model.core
+    runs, counts = [], []
+    for mode in (2, 1):
+        core.scene_primal(mode, None)
+        _counts(core)
+        runs.append(model.simulate(q0, 0.5, tau=gait, dt=H))
+        counts.append(_counts(core))
+    core.scene_primal(1, None)
+    plain, avx = runs
+    assert plain.status == avx.status == "completed" and plain.steps == avx.steps
+    assert len(plain.events) == len(avx.events) >= 1
+    for k in FIELDS:
+        np.testing.assert_array_equal(np.asarray(getattr(avx, k), dtype=float),
+                                      np.asarray(getattr(plain, k), dtype=float), err_msg=k)
+    np.testing.assert_array_equal(counts[0], counts[1])
+    assert counts[1][1] >= 0.9 * avx.steps

@@ -22,13 +22,17 @@
  * does not treat it leaves (returns 0) to scene_solve.c's dual path: a sliding split
  * ellipse; held rows dependent (or nearly: pivots of Y^T Y below PRIMAL_DEP of the first); a
  * sliding disc whose sliding |w_i| falls to rounding; no convergence within PRIMAL_STEPS
- * steps. */
+ * steps. For the snake alone (n = n_s, the pegs row) the Hessian's Cholesky and q = R^-1 grad
+ * are scene_small.c's factor unrolled for n_s (sc_cholesky's factor bit for bit), and the
+ * piece is compiled a second time with AVX, chosen where the processor has it (no FMA: bit
+ * for bit the copy without; core_scene_primal's mode 2 takes that one). */
 #include <math.h>
 #include <string.h>
 
 #include "snakecg_layout.h"
 #include "engine.h"
 #include "scene_sets.h"
+#include "scene_small.h"
 
 #if defined(__GNUC__) /* (inlined where the caller makes the size a constant) */
 #define PRIMAL_FLAT static inline __attribute__((always_inline))
@@ -39,7 +43,8 @@
 #define PRIMAL_STEPS 12 /* Newton and chord steps before the dual path takes over */
 #define PRIMAL_DEP 1e-8 /* held rows taken as dependent below this pivot ratio (dual: 1e-10) */
 
-/* core_scene_primal's switch (1: the warm start tries the primal piece first) and counts
+/* core_scene_primal's switch (1: the warm start tries the primal piece first; 2: the same
+ * without the snake's AVX copy, which answers bit for bit as the copy without) and counts
  * (tries, answers: measurement only; atomic where the compiler has GCC's builtins, as the
  * batches' threads count together) */
 static int primal_on = 1;
@@ -67,11 +72,12 @@ SC_INTERNAL int sc_primal_tally(int ok) {
   return primal_on;
 }
 
-/* The primal piece switched on (mode 1) or off (0), or left (-1); counts (2 doubles, or NULL):
- * the tries and answers since the last read, then reset. Returns the previous mode. */
+/* The primal piece switched on (mode 1; 2: on without the snake's AVX copy) or off (0), or
+ * left (-1); counts (2 doubles, or NULL): the tries and answers since the last read, then
+ * reset. Returns the previous mode. */
 int SNAKECG_EXPORT(core_scene_primal)(sc_int mode, double *counts) {
   int prev = primal_on;
-  if (mode == 0 || mode == 1) primal_on = (int)mode;
+  if (mode >= 0 && mode <= 2) primal_on = (int)mode;
   if (counts) {
     long t = PRIMAL_TAKE(0);
     long a = PRIMAL_TAKE(1);
@@ -186,6 +192,35 @@ PRIMAL_FLAT void last_w(sc_int n, sc_problem *p, const double *Z, const double *
   }
 }
 
+/* Y's columns nc (1 or 2) of held rows, Y_j = R^-1 Z_j by forward substitution (t: R's
+ * diagonal's reciprocals; Zc: their gathered columns, each n long; ch: their offsets), and
+ * lh_j = Y_j^T q - (Z_j^T y + c_j); the columns' chains side by side, each summed as one
+ * column alone would be */
+PRIMAL_FLAT void held_cols(sc_int n, const int nc, const double *R, const double *t,
+                           const double *Zc, const double *ch, const double *y,
+                           const double *q, double *restrict Y, double *restrict lh) {
+  double u[2] = {0.0, 0.0}, t0[2], t1[2];
+  sc_int i, k;
+  int c;
+  for (c = 0; c < nc; ++c) u[c] = -ch[c];
+  for (i = 0; i < n; ++i) {
+    const double *restrict ri = R + i * n;
+    for (c = 0; c < nc; ++c) t0[c] = Zc[c * n + i], t1[c] = 0.0;
+    for (k = 0; k + 1 < i; k += 2)
+      for (c = 0; c < nc; ++c) {
+        t0[c] -= ri[k] * Y[c * n + k];
+        t1[c] -= ri[k + 1] * Y[c * n + k + 1];
+      }
+    if (k < i)
+      for (c = 0; c < nc; ++c) t0[c] -= ri[k] * Y[c * n + k];
+    for (c = 0; c < nc; ++c) {
+      Y[c * n + i] = (t0[c] + t1[c]) * t[i];
+      u[c] += Y[c * n + i] * q[i] - Zc[c * n + i] * y[i];
+    }
+  }
+  for (c = 0; c < nc; ++c) lh[c] = u[c];
+}
+
 /* The rank of the rows F (nf of them) by K = Z_F Z_F^T (n x n: G_FF's nonzero eigenvalues),
  * its pivots above NULL_TOL of the first (sc_min_norm_face's rule); with apply and a rank
  * below nf, their forces made the minimum-norm ones of the same Z_F lam_F: Z_F^T x,
@@ -237,7 +272,7 @@ PRIMAL_FLAT int piece(sc_int n, sc_problem *p, const double *Z, const double *g,
          *Zc = Zg + n * m, *nws = Zc + n * m;
   sc_int *hr = iwork, *sl = hr + m, *perm = sl + m, h = 0, ns = 0, i, j, k, it, rank = 0;
   double ysc, v = 0.0, dsq = 0.0, big, prev = INFINITY;
-  int ok = 0, dep = 0, again = 0, fresh = 1;
+  int ok = 0, dep = 0, again = 0, fresh = 1, solved;
   sc_int nf, lds;
   const double *Zs, *cs;
   int run;
@@ -345,13 +380,21 @@ PRIMAL_FLAT int piece(sc_int n, sc_problem *p, const double *Z, const double *g,
       }
       ri[i] += 1.0;
     }
-    if (fresh) {
+    solved = 0;
+    if (fresh) { /* (the snake alone: scene_small.c's factor unrolled for n_s, q with it) */
+#ifdef SC_FIXED
+      if (n == SNAKECG_NS) {
+        for (i = 0, big = 0.0; i < n; ++i) big = sc_max(big, R[i * n + i]);
+        if (!sc_small_factor(R, grad, 1e-14 * big, R, q)) return 0;
+        solved = 1;
+      } else
+#endif
       if (!sc_cholesky(n, R, n, 1e-14)) return 0;
       for (i = 0; i < n; ++i) t[i] = 1.0 / R[i * n + i]; /* (multiplied: no division chain) */
     }
     /* q = R^-1 grad; Y = R^-1 Z_H (column j, held row j's, at Y + j n; a chord step: the
      * last), lh = Y^T q - w_H (w_H = Z_H^T y + c_H), S = Y^T Y factored */
-    for (i = 0; i < n; ++i) {
+    for (i = 0; i < n && !solved; ++i) {
       const double *restrict ri = R + i * n;
       double s0 = grad[i], s1 = 0.0;
       for (k = 0; k + 1 < i; k += 2) {
@@ -367,21 +410,14 @@ PRIMAL_FLAT int piece(sc_int n, sc_problem *p, const double *Z, const double *g,
       for (i = 0; i < n; ++i) u += yj[i] * q[i] - zj[i] * y[i];
       lh[j] = u;
     }
-    for (j = 0; j < h && fresh; ++j) {
-      double *restrict yj = Y + j * n, u = -cg[2 * ns + j];
-      for (i = 0; i < n; ++i) {
-        const double *restrict ri = R + i * n, zij = Zc[(2 * ns + j) * n + i];
-        double t0 = zij, t1 = 0.0;
-        for (k = 0; k + 1 < i; k += 2) {
-          t0 -= ri[k] * yj[k];
-          t1 -= ri[k + 1] * yj[k + 1];
-        }
-        if (k < i) t0 -= ri[k] * yj[k];
-        yj[i] = (t0 + t1) * t[i];
-        u += yj[i] * q[i] - zij * y[i];
-      }
-      lh[j] = u;
-      for (k = 0; k <= j; ++k) S[j * h + k] = sc_dot(yj, Y + k * n, n);
+    for (j = 0; j + 1 < h && fresh; j += 2) { /* (two columns side by side: two chains) */
+      held_cols(n, 2, R, t, Zc + (2 * ns + j) * n, cg + 2 * ns + j, y, q, Y + j * n, lh + j);
+      for (k = 0; k <= j; ++k) S[j * h + k] = sc_dot(Y + j * n, Y + k * n, n);
+      for (k = 0; k <= j + 1; ++k) S[(j + 1) * h + k] = sc_dot(Y + (j + 1) * n, Y + k * n, n);
+    }
+    for (; j < h && fresh; ++j) {
+      held_cols(n, 1, R, t, Zc + (2 * ns + j) * n, cg + 2 * ns + j, y, q, Y + j * n, lh + j);
+      for (k = 0; k <= j; ++k) S[j * h + k] = sc_dot(Y + j * n, Y + k * n, n);
     }
     if (h > 0) {
       for (j = 0; j < h; ++j) bh[j] = lh[j];
@@ -481,10 +517,26 @@ PRIMAL_FLAT int piece(sc_int n, sc_problem *p, const double *Z, const double *g,
   return 1 + dep;
 }
 
+#if defined(__x86_64__) && !defined(__clang__) && __GNUC__ >= 6 && !defined(SC_NO_AVX)
+#define PRIMAL_AVX 1
+/* the snake's copy with AVX where the processor has it (no FMA: each lane's operations the
+ * same, bit for bit) */
+__attribute__((target("avx"), noinline)) static int piece_avx(sc_problem *p, const double *Z,
+                                                              const double *g, const double *c,
+                                                              double *work, sc_int *iwork,
+                                                              sc_int *def) {
+  return piece(SNAKECG_NS, p, Z, g, c, work, iwork, def);
+}
+#endif
+
 /* sc_primal_piece's body, compiled apart for the snake alone (n = SNAKECG_NS coordinates, no
  * object: the pegs row's 13) with the size a constant: its loops unrolled, no remainders */
 SC_INTERNAL int sc_primal_piece(sc_problem *p, const double *Z, const double *g,
                                 const double *c, double *work, sc_int *iwork, sc_int *def) {
+#ifdef PRIMAL_AVX
+  if (p->n == SNAKECG_NS && primal_on == 1 && __builtin_cpu_supports("avx"))
+    return piece_avx(p, Z, g, c, work, iwork, def);
+#endif
   if (p->n == SNAKECG_NS) return piece(SNAKECG_NS, p, Z, g, c, work, iwork, def);
   return piece(p->n, p, Z, g, c, work, iwork, def);
 }

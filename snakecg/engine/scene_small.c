@@ -32,6 +32,7 @@
 
 #include "snakecg_layout.h"
 #include "engine.h"
+#include "scene_small.h"
 
 #if defined(__GNUC__)
 #define SC_FLAT static inline __attribute__((always_inline))
@@ -39,8 +40,7 @@
 #define SC_FLAT static inline
 #endif
 
-#if SNAKECG_NS <= 16 && defined(__GNUC__) && !defined(SC_GENERAL_ONLY)
-#define SC_FIXED 1 /* the snake's block unrolled (code of O(n_s^3); SC_GENERAL_ONLY: not) */
+#ifdef SC_FIXED /* (scene_small.h: the snake's block unrolled) */
 typedef double __attribute__((vector_size(16))) sc_v2;
 
 /* factor's dense block where it is the snake's (t = n_s, every loop's bounds constants and
@@ -80,6 +80,12 @@ static __attribute__((noinline)) int factor_ns(sc_int n, const double *M, const 
     a[i] = C[i][T / 2][T % 2];
   }
   return 1;
+}
+
+/* factor_ns for an n_s x n_s M alone (scene_small.h: the primal piece's Hessian) */
+SC_INTERNAL int sc_small_factor(const double *M, const double *f, double thr, double *L,
+                                double *a) {
+  return factor_ns(SNAKECG_NS, M, f, thr, L, a);
 }
 #endif
 

@@ -1,0 +1,14 @@
+/* snakecg's engine: what scene_small.c's factor unrolled for the snake's block lends to the
+ * primal piece (scene_primal.c: its Hessian's Cholesky, n = n_s). Included after engine.h. */
+#ifndef SNAKECG_ENGINE_SCENE_SMALL_H
+#define SNAKECG_ENGINE_SCENE_SMALL_H
+
+#if SNAKECG_NS <= 16 && defined(__GNUC__) && !defined(SC_GENERAL_ONLY)
+#define SC_FIXED 1 /* the snake's block unrolled (code of O(n_s^3); SC_GENERAL_ONLY: not) */
+/* L = chol(M) and a = L^-1 f for n_s x n_s M (row-major, its lower triangle read; L's lower
+ * triangle written, M's room may be L's): sc_cholesky's L bit for bit, the same pivot rule
+ * (a pivot not above thr, thr = rel times M's largest diagonal entry: 0, L and a unwritten). */
+SC_INTERNAL int sc_small_factor(const double *M, const double *f, double thr, double *L,
+                                double *a);
+#endif
+#endif
