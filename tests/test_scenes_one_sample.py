@@ -36,7 +36,7 @@ def test_calls_after_refused_samples_keep_their_answers(pegs):
             with pytest.raises(InputError):
                 model.forward(q, np.r_[tau[:-1], np.nan])
         res = model.forward(q, tau)
-        assert res.status == 0 and model._one.args.keep is not None  # (kept, reused)
+        assert res.status == 0 and model.forward.args.keep is not None  # (kept, reused)
         # the accelerations are unique: Clarabel's on the sample's own problem
         a_ref, status = clarabel_accelerations(dense_problem(res, model, tau))
         assert status == "optimal"
@@ -52,8 +52,8 @@ def test_the_kept_scratch_is_freed_with_the_closure(pegs):
     model, q = pegs
     fresh = load_scene(model.scene)
     fresh.forward(q, np.zeros(10))
-    args, free = fresh._one.args, fresh._one.free
+    args, free = fresh.forward.args, fresh.forward.free
     assert args.keep is not None and free.alive
-    fresh._one = None
+    del fresh.forward  # (the instance's one-sample forward: the class's general way left)
     gc.collect()
     assert not free.alive and args.keep is None  # (the engine freed it and cleared the slot)
