@@ -124,3 +124,24 @@ def test_inputs_the_fast_way_declines_go_the_general_way(paper):
         new.forward(q, np.array([0.0, np.inf, 0.0]))
     assert "f_obj" in str(inspect.signature(new.forward))
     assert new.forward.__doc__ == type(new).forward.__doc__
+
+
+def test_a_busy_buffer_sends_the_call_the_general_way(paper):
+    """With the buffer's token taken (another thread's call under way) a one-sample call goes
+    the class's general way: the same bytes as the fast way's, which the next call takes
+    again once the token is back."""
+    old, new = paper
+    q, tau = np.array([0.0, 0.0, 0.0, -0.5, 0.3, 0.6]), np.array([0.01, 0.03, -0.02])
+    fast = new.forward(q, tau)
+    token = inspect.getclosurevars(new.forward).nonlocals["take"].__self__  # (the list)
+    assert token == [True]
+    token.pop()
+    try:
+        busy = new.forward(q, tau)
+    finally:
+        token.append(True)
+    assert busy._buf is None and not busy.batched  # (a result of the general way's rows)
+    assert np.array_equal(busy._out[0], fast._out[0])
+    want = old.forward(q, tau).qdd
+    assert np.abs(busy.qdd - want).max() <= 1e-12 * max(1.0, np.abs(want).max())
+    assert new.forward(q, tau)._buf is not None and token == [True]
