@@ -119,7 +119,7 @@ class GeneralSceneModel(RobotModel):
         external wrench (F_x, F_y, torque) on every object, ``(n_objects, 3)`` (or batched).
         A sample whose shapes overlap is refused (one sample: :class:`InputError`; in a batch:
         NaN with status ``overlap`` and the reason). (A loaded model answers one sample of
-        float64 arrays through its engine's kept scratch first: :func:`_one_sample`.)"""
+        float64 arrays through its engine's kept scratch first, bound in the instance.)"""
         if v is not None and np.any(np.asarray(v, dtype=float) != 0):
             raise InputError("v: a general scene is solved at rest (v = 0); velocities are not "
                              "supported yet")
