@@ -32,6 +32,9 @@
  * given here has dependent = 0, no rank defect and no sweeps. */
 #include <math.h>
 #include <string.h>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 #include "snakecg_layout.h"
 #include "engine.h"
@@ -173,17 +176,34 @@ typedef struct {
   sc_int state[SC_TINY_M];
 } tiny;
 
-/* w = G lam + b (each row's products summed in order, lam read once) */
+/* w = G lam + b (each row's products summed in order, lam read once); with SSE2 two rows at a
+ * time from G's columns (G is symmetric: gram writes both triangles), each lane the same sum
+ * in the same order as a row's own (the same bits, half the operations) */
 TINY_FLAT void wvec(const sc_int m, tiny *p) {
   double l[SC_TINY_M];
   sc_int i, j;
   for (j = 0; j < m; ++j) l[j] = p->lam[j];
+#if defined(__SSE2__)
+  for (i = 0; i + 1 < m; i += 2) {
+    __m128d s = _mm_setzero_pd();
+    for (j = 0; j < m; ++j)
+      s = _mm_add_pd(s, _mm_mul_pd(_mm_loadu_pd(p->G + j * m + i), _mm_set1_pd(l[j])));
+    _mm_storeu_pd(p->w + i, _mm_add_pd(_mm_loadu_pd(p->b + i), s));
+  }
+  if (m & 1) {
+    const double *g = p->G + (m - 1) * m;
+    double s = 0.0;
+    for (j = 0; j < m; ++j) s += g[j] * l[j];
+    p->w[m - 1] = p->b[m - 1] + s;
+  }
+#else
   for (i = 0; i < m; ++i) {
     const double *g = p->G + i * m;
     double s = 0.0;
     for (j = 0; j < m; ++j) s += g[j] * l[j];
     p->w[i] = p->b[i] + s;
   }
+#endif
 }
 
 /* The piece's equations solved (scene_piece.c's piece and rounds for one-row blocks): the fixed

@@ -56,7 +56,9 @@ class SceneResult:
     answer is one of ``solutions``), or ``not_certified`` (not enumerated, or some piece's
     equations were singular); ``None`` on a frictionless scene."""
 
-    # filled when first read (class defaults: a one-sample result sets four fields)
+    # filled when first read (class defaults: a one-sample result, made by the model's
+    # one-sample forward, sets four fields: _model, _buf (q, tau, then the output row),
+    # _ccap and batched)
     _rows_out = _given = _buf = _detail = _reasons = _lists = None
 
     def __init__(self, model, out: np.ndarray, ccap: int, batched: bool, inputs: tuple):
@@ -64,14 +66,6 @@ class SceneResult:
         self.batched = batched
         self._given = inputs  # (q, tau, f_obj) of every sample, for the details
         self._buf = self._detail = self._reasons = self._lists = None
-
-    @classmethod
-    def of_buffer(cls, model, buf: np.ndarray, ccap: int) -> SceneResult:
-        """One sample from a one-sample call's buffer (q, tau, then the output row): its
-        views made when first read."""
-        self = cls.__new__(cls)
-        self._model, self._buf, self._ccap, self.batched = model, buf, ccap, False
-        return self
 
     @property
     def _out(self) -> np.ndarray:

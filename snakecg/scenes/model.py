@@ -6,7 +6,6 @@ calls are)."""
 
 from __future__ import annotations
 
-import threading
 import weakref
 
 import numpy as np
@@ -31,7 +30,6 @@ PARALLEL_MIN = 512
 #: spans start on its multiples, so that the answers do not depend on the split
 WARM_CHUNK = 256
 _F64 = np.dtype(np.float64)
-_of_buffer = SceneResult.of_buffer
 
 
 class GeneralSceneModel(RobotModel):
@@ -53,8 +51,9 @@ class GeneralSceneModel(RobotModel):
         self._engine = getattr(self.core, "scene_forward", None)
         self._pk = self.packed.vector.ctypes.data
         self._zero_f = np.zeros((1, 3 * scene.n_objects))
-        self._one = (_one_sample(self) if getattr(self.core, "scene_forward_call", None)
-                     is not None else None)
+        if getattr(self.core, "scene_forward_call", None) is not None:
+            # the method's fast way for one sample, in the instance (no second call)
+            self.forward = _one_sample(self)
         self._steppers: list = []
         """The time stepping's workspaces not lent to a run (:mod:`snakecg.scenes.stepping`)."""
 
@@ -119,12 +118,8 @@ class GeneralSceneModel(RobotModel):
         ``q`` ``(n_s,)`` or ``(N, n_s)``; ``tau`` ``(n_a,)`` or ``(N, n_a)``; ``f_obj``: an
         external wrench (F_x, F_y, torque) on every object, ``(n_objects, 3)`` (or batched).
         A sample whose shapes overlap is refused (one sample: :class:`InputError`; in a batch:
-        NaN with status ``overlap`` and the reason)."""
-        one = self._one
-        if one is not None and v is None and f_obj is None:
-            res = one(q, tau)
-            if res is not None:
-                return res
+        NaN with status ``overlap`` and the reason). (A loaded model answers one sample of
+        float64 arrays through its engine's kept scratch first, bound in the instance.)"""
         if v is not None and np.any(np.asarray(v, dtype=float) != 0):
             raise InputError("v: a general scene is solved at rest (v = 0); velocities are not "
                              "supported yet")
@@ -280,13 +275,15 @@ class GeneralSceneModel(RobotModel):
 
 
 def _one_sample(model: GeneralSceneModel):
-    """A model's forward of one sample of float64 arrays of the right shapes (None for any
-    other input, or when the buffer is busy or the sample has more contacts than the first
-    pass's room: the general way then answers): q, tau and the output row side by side in one
-    buffer, the engine's arguments pointing into it, built once; taken under a non-blocking
-    lock (a second thread that finds it busy goes the general way). A closure: its fields are
-    its own variables, no lookups per call. The engine keeps its scratch from the first call
-    to the next (the fixed bodies placed, the objects' inertia set), freed with the closure."""
+    """The model's ``forward``, bound in the instance: one sample of float64 arrays of the
+    right shapes straight to the engine, every other input (and a sample when the buffer is
+    busy, or with more contacts than the first pass's room) the class's general way. q, tau
+    and the output row side by side in one buffer, the engine's arguments pointing into it,
+    built once. The buffer is taken as a one-token list's token (``list.pop`` and ``append``
+    are atomic: a second thread that finds it empty goes the general way; a third of a
+    non-blocking lock's cost). A closure: its fields are its own variables, no lookups per
+    call. The engine keeps its scratch from the first call to the next (the fixed bodies
+    placed, the objects' inertia set), freed with the closure."""
     pk = model.packed
     ccap = min(CONTACTS_FIRST, pk.contacts_max)
     ns, na = model.n_coordinates, model.n_joints
@@ -296,33 +293,43 @@ def _one_sample(model: GeneralSceneModel):
     args = SceneCall(model._pk, 1, base, 0, base + 8 * ns, 0, model._zero_f.ctypes.data, 0,
                      ccap, pk.rows_room(ccap), base + 8 * at, 0, 0, 0, 0, 1)
     where, call = address(args), model.core.scene_forward_call
-    lock = threading.Lock()
-    acquire, release = lock.acquire, lock.release
+    token = [True]
+    take, put = token.pop, token.append
     shape_q, shape_tau, ndarray = (ns,), (na,), np.ndarray
+    general, new = GeneralSceneModel.forward, object.__new__
 
-    def one(q, tau):
+    def forward(q, tau, *, f_obj=None, v=None):
         if (type(q) is ndarray and type(tau) is ndarray and q.dtype is _F64
                 and tau.dtype is _F64 and q.shape == shape_q and tau.shape == shape_tau
-                and acquire(False)):
+                and f_obj is None and v is None):
+            try:
+                take()
+            except IndexError:  # busy: another thread's call
+                return general(model, q, tau)
             try:  # straight to the engine (which checks finiteness)
-                bq[:] = q
-                bt[:] = tau
+                bq[...] = q  # ([...]: a third cheaper than [:] from Python)
+                bt[...] = tau
                 code = call(where)
                 out = buf.copy()  # the inputs and the output row in one copy
             finally:
-                release()
+                put(True)
             if code == 0:
                 status = out.item(at)
                 if status == 3:
                     raise InputError(model.overlap_message(out[at + 13:at + 19], None))
                 if status != 4:  # else: more contacts than the first pass's room
-                    return _of_buffer(model, out, ccap)
-        return None
+                    # a one-sample result: its four fields, its views made when first read
+                    res = new(SceneResult)
+                    res._model, res._buf, res._ccap, res.batched = model, out, ccap, False
+                    return res
+        return general(model, q, tau, f_obj=f_obj, v=v)
 
-    one.args = args  # the engine reads it: kept alive with the closure
+    forward.__doc__, forward.__wrapped__ = general.__doc__, general
+    forward.__qualname__ = general.__qualname__
+    forward.args = args  # the engine reads it: kept alive with the closure
     # the engine's scratch kept in args.keep, freed with the closure
-    one.free = weakref.finalize(one, _free_kept, call, args)
-    return one
+    forward.free = weakref.finalize(forward, _free_kept, call, args)
+    return forward
 
 
 def _free_kept(call, args) -> None:
