@@ -136,3 +136,17 @@ def test_a_run_whose_check_fires_ends_with_penetration(paper, monkeypatch):
     after = _checked(sm, _run(pm, q_obj0, TAU, 1, tol)[0], RECORD)
     assert (after.status, after.message, after.violation) == (run.status, run.message,
                                                               run.violation)
+
+
+def test_the_default_tolerance_is_a_share_of_the_scenes_size(paper):
+    """A run's default contact tolerance (read from the scene's constants packed at its load)
+    is 1e-5 of the scene's size summed here: the links' lengths, the links' diameter and the
+    plate's diagonal; a tolerance given is the run's."""
+    scene, sm, pm, q_obj0 = paper
+    general = pm.scene
+    plate = general.objects[0]
+    size = float(sum(general.robot.length)) + 2 * general.radius + float(np.hypot(*plate.size))
+    run = pm.simulate(Q0, 0.002, tau=TAU)
+    assert run.tolerance == pytest.approx(1e-5 * size, rel=1e-15, abs=0)
+    assert sm.simulate(Q0, TAU, 0.002, contacts="geometry").tolerance == run.tolerance
+    assert pm.simulate(Q0, 0.002, tau=TAU, tolerance=3e-6).tolerance == 3e-6

@@ -55,11 +55,12 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .._inputs import all_finite
 from ..engine.binding import (SCENE_LAWS, SceneRunCall, SceneStateCall, SceneStep, address,
                               array_address)
 from ..errors import BuildError, InputError
 from .contacts import Rows, StateRows, read_rows
-from .packing import BODY_KINDS, scene_size
+from .packing import BODY_KINDS, SP_SIZE, scene_size
 from .run_record import ST_LOSS, ST_SLIDING_COS, ST_WIDTH, SceneEvent, SceneRun
 from .solve import INFO
 
@@ -234,18 +235,22 @@ class _Stepper:
         return read_rows(self.model, out, A, par, kind, start)
 
 
+#: a run's default contact tolerance, in the scene's size
+TOLERANCE_SHARE = 1e-5
+
+
 def contact_tolerance(scene, tolerance) -> float:
-    """A run's contact tolerance (m): ``tolerance``, by default ``1e-5`` of the scene's size
-    (:func:`~snakecg.scenes.packing.scene_size`)."""
-    return 1e-5 * scene_size(scene) if tolerance is None else float(tolerance)
+    """A run's contact tolerance (m): ``tolerance``, by default :data:`TOLERANCE_SHARE`
+    (``1e-5``) of the scene's size (:func:`~snakecg.scenes.packing.scene_size`)."""
+    return TOLERANCE_SHARE * scene_size(scene) if tolerance is None else float(tolerance)
 
 
-def _finite(arr) -> bool:
-    """Whether every number of the float array ``arr`` is finite (a few numbers: one pass in
-    Python, several times cheaper than NumPy's ufunc and reduction on them)."""
-    if arr.size > 64:
-        return bool(np.isfinite(arr).all())
-    return all(map(math.isfinite, arr.ravel().tolist()))
+def _model_tolerance(model, tolerance) -> float:
+    """:func:`contact_tolerance` of a loaded scene, its size read from the constants packed
+    when it was loaded (the same number; summed there once, not at every run)."""
+    if tolerance is None:
+        return TOLERANCE_SHARE * float(model.packed.vector[SP_SIZE])
+    return float(tolerance)
 
 
 def _check_args(model, q0, v0, duration, dt, q_obj0, v_obj0, f_obj, tolerance):
@@ -256,7 +261,7 @@ def _check_args(model, q0, v0, duration, dt, q_obj0, v_obj0, f_obj, tolerance):
         if value is None:
             return default
         arr = np.asarray(value, dtype=float) if not isinstance(value, (str, bytes)) else None
-        if arr is None or arr.size != math.prod(shape) or not _finite(arr):
+        if arr is None or arr.size != math.prod(shape) or not all_finite(arr):
             problems.append(f"{name} must be {math.prod(shape)} finite numbers "
                             f"(shape {shape}), got {value!r:.60}")
             return default
@@ -454,7 +459,7 @@ def _simulate(model, q0, duration, v0, tau, dt, q_obj0, v_obj0, f_obj, tolerance
             or output_every < 1:
         raise InputError(f"simulate: output_every must be an integer >= 1, got "
                          f"{output_every!r:.60}")
-    tol = contact_tolerance(model.scene, tolerance)
+    tol = _model_tolerance(model, tolerance)
     na = model.n_joints
     kind, law = _late("torque_law")(np.zeros(na) if tau is None else tau, na)
     name, params = engine_law(kind, law, na)
