@@ -41,9 +41,9 @@ def simulate_with_geometry(model, q0, tau, duration, v0=None, *, q_obj0=None, v_
     contacts from geometry: the general scene of :func:`plate_scene`, stepped by
     :func:`snakecg.scenes.stepping.simulate_scene` with ``dt`` (default 1e-3 s),
     ``tolerance`` (m; default 1e-5 of the scene's size) and ``output_every``, with the
-    paper's contact check at every sample (in the engine's loop; :func:`_checked`). ``q_obj0``, ``v_obj0``,
-    ``f_obj``: the plate's pose, twist and a constant wrench on it, 3 numbers each. Returns
-    a :class:`~snakecg.scenes.run_record.SceneRun`."""
+    paper's contact check at every sample (in the engine's loop; :func:`_checked`).
+    ``q_obj0``, ``v_obj0``, ``f_obj``: the plate's pose, twist and a constant wrench on it,
+    3 numbers each. Returns a :class:`~snakecg.scenes.run_record.SceneRun`."""
     general = _plate_model(model)
 
     def one_object(name, value):
