@@ -53,10 +53,20 @@ def test_a_state_not_finite_is_refused_before_any_work(stepper):
 
 
 def test_the_arguments_finiteness_against_numpy(rng):
-    """stepping._finite (the run's argument checks on a few numbers) against NumPy's
-    isfinite on random arrays of 1 to 100 numbers with a NaN, +inf, -inf or the largest and
-    smallest floats put in, flat and 2-D."""
-    from snakecg.scenes.stepping import _finite
+    """all_finite (the run's argument checks and torque_law's on a few numbers) against
+    NumPy's isfinite on random arrays of 1 to 100 numbers with a NaN, +inf, -inf or the
+    largest and smallest floats put in, flat and 2-D; a constant torque with one of them
+    refused by torque_law with its clear error, a finite one taken as it is."""
+    from snakecg._inputs import all_finite as _finite
+    from snakecg.errors import InputError
+    from snakecg.simulate.torques import torque_law
+
+    for bad in (np.nan, np.inf, -np.inf):
+        with pytest.raises(InputError, match="tau"):
+            torque_law(np.array([0.1, bad, 0.0]), 3)
+    tau = np.array([0.1, np.finfo(float).max, -np.finfo(float).tiny])
+    kind, law = torque_law(tau, 3)
+    assert kind == "constant" and law is not tau and np.array_equal(law, tau)
 
     big, tiny = np.finfo(float).max, np.finfo(float).tiny
     for n in (1, 2, 3, 6, 9, 64, 65, 100):

@@ -236,7 +236,9 @@ class SceneRunCall(ctypes.Structure):
                 ("h_min", _D), ("tau_limit", _D), ("law", _I), ("nlp", _I), ("lp", _P),
                 ("every", _I), ("rec", _P), ("cap", _I), ("nrec", _I), ("pause", _I),
                 ("stop_at_impacts", _I), ("work", _P), ("t", _D), ("nstep", _I),
-                ("phase", _I), ("impacts", _I), ("min_gap", _D), ("bad", _D * 5)]
+                ("phase", _I), ("impacts", _I), ("min_gap", _D), ("bad", _D * 5),
+                ("geo", _P), ("geo_tol", _D), ("nkept", _I), ("geo_k", _I), ("geo_pair", _I),
+                ("geo_depth", _D)]
 
 
 class Geometry(ctypes.Structure):

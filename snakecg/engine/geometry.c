@@ -24,8 +24,7 @@
 
 #include "snakecg_layout.h"
 #include "engine.h"
-
-#include <string.h>
+#include "geometry.h"
 
 #define SC_GEO_NL SNAKECG_NL
 /* the larger and smaller of two numbers (inlined: the library's fmax and fmin are calls) */
@@ -110,16 +109,26 @@ static double sc_geo_link_plate(double ax, double ay, double bx, double by, doub
 
 /* The largest overlap at the state y and its pair (the first of equals). */
 double sc_geo_depth(const sc_geometry *g, const double *y, sc_int *pair) {
-  double rear[SC_GEO_NL][2], front[SC_GEO_NL][2], phi = y[2], best = 0.0;
+  double cs[2 * SC_GEO_NL], phi = y[2];
+  sc_int i;
+  for (i = 0; i < SC_GEO_NL; ++i) {
+    if (i) phi += y[2 + i];
+    cs[2 * i] = cos(phi);
+    cs[2 * i + 1] = sin(phi);
+  }
+  return sc_geo_depth_cs(g, y, cs, pair);
+}
+
+/* sc_geo_depth from the links' (cos phi_i, sin phi_i) in cs (2 n_l): geometry.h. */
+SC_INTERNAL double sc_geo_depth_cs(const sc_geometry *g, const double *y, const double *cs,
+                                   sc_int *pair) {
+  double rear[SC_GEO_NL][2], front[SC_GEO_NL][2], best = 0.0;
   const double h = g->half, r = g->radius, ox = y[SNAKECG_NS], oy = y[SNAKECG_NS + 1];
-  const double cs = cos(y[SNAKECG_NS + 2]), sn = sin(y[SNAKECG_NS + 2]);
+  const double cs_o = cos(y[SNAKECG_NS + 2]), sn = sin(y[SNAKECG_NS + 2]);
   const double reach = h * 1.4142135623730951 + r; /* the plate's circle, widened */
   sc_int i, j, p = 0;
   for (i = 0; i < SC_GEO_NL; ++i) {
-    double ex, ey;
-    if (i) phi += y[2 + i];
-    ex = cos(phi);
-    ey = sin(phi);
+    const double ex = cs[2 * i], ey = cs[2 * i + 1];
     if (i == 0) {
       rear[0][0] = y[0] - g->com1 * ex;
       rear[0][1] = y[1] - g->com1 * ey;
@@ -135,10 +144,10 @@ double sc_geo_depth(const sc_geometry *g, const double *y, sc_int *pair) {
     const double mx = 0.5 * (rear[i][0] + front[i][0]) - ox;
     const double my = 0.5 * (rear[i][1] + front[i][1]) - oy, far = 0.5 * g->length[i] + reach;
     if (mx * mx + my * my <= far * far) { /* in the plate's frame */
-      const double ax = cs * (rear[i][0] - ox) + sn * (rear[i][1] - oy);
-      const double ay = -sn * (rear[i][0] - ox) + cs * (rear[i][1] - oy);
-      const double bx = cs * (front[i][0] - ox) + sn * (front[i][1] - oy);
-      const double by = -sn * (front[i][0] - ox) + cs * (front[i][1] - oy);
+      const double ax = cs_o * (rear[i][0] - ox) + sn * (rear[i][1] - oy);
+      const double ay = -sn * (rear[i][0] - ox) + cs_o * (rear[i][1] - oy);
+      const double bx = cs_o * (front[i][0] - ox) + sn * (front[i][1] - oy);
+      const double by = -sn * (front[i][0] - ox) + cs_o * (front[i][1] - oy);
       const double d = sc_geo_link_plate(ax, ay, bx, by, h, r);
       if (d > best) best = d, *pair = p;
     }

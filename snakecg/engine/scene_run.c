@@ -22,6 +22,8 @@
  */
 #include "snakecg_layout.h"
 #include "engine.h"
+#include "geometry.h"
+#include "scene_step.h"
 
 #define RUN_TRIES 60 /* shortened tries of one step */
 #define ROOT_XTOL 1e-12
@@ -55,6 +57,14 @@ typedef struct {
   double min_gap;
   /* RUN_TOO_SHORT: the deepest pair at the step's end (kind, index of each, distance) */
   double bad[5];
+  /* the paper's contact check (geometry.c's, the scene's one object its plate; null: none)
+   * of every kept sample, from the links' cos and sin the step took: the first sample
+   * (counted from the run's first, nkept the count) whose largest overlap exceeds geo_tol
+   * (-1: none yet), that overlap and its pair */
+  const sc_geometry *geo;
+  double geo_tol;
+  sc_int nkept, geo_k, geo_pair;
+  double geo_depth;
 } sc_scene_run;
 
 /* A torque law (LAW_TABLE, LAW_HOLD, LAW_SERPENOID_PD with its parameters p) at t and the
@@ -104,8 +114,8 @@ static int law_tau(const sc_scene_run *r, double t) {
                                         (double *)r->st->tau);
 }
 
-/* One record row at the step's state. */
-static void keep(sc_scene_run *r) {
+/* One record row at the step's state (kept: the steps' scratch, or null), and its check. */
+static void keep(sc_scene_run *r, const void *kept) {
   const sc_int n = SNAKECG_NS + 3 * (sc_int)r->st->pk[SP_NO], na = SNAKECG_NS - 3;
   double *row = r->rec + r->nrec * (1 + 2 * n + na + ST_WIDTH);
   row[0] = r->t;
@@ -114,6 +124,14 @@ static void keep(sc_scene_run *r) {
   memcpy(row + 1 + 2 * n, r->st->tau, sizeof(double) * (size_t)na);
   memcpy(row + 1 + 2 * n + na, r->st->acc, sizeof(double) * ST_WIDTH);
   r->nrec++;
+  if (r->geo && r->geo_k < 0) {
+    const double *cs = kept ? sc_scene_step_cs(kept, r->st->x) : 0;
+    sc_int p;
+    const double d = cs ? sc_geo_depth_cs(r->geo, r->st->x, cs, &p)
+                        : sc_geo_depth(r->geo, r->st->x, &p);
+    if (d > r->geo_tol) r->geo_k = r->nkept, r->geo_depth = d, r->geo_pair = p;
+  }
+  r->nkept++;
 }
 
 /* The engine's body index (links, objects, obstacles) of a pair record's kind and index. */
@@ -221,7 +239,7 @@ static int run_on(sc_scene_run *r, void **kept) {
     r->min_gap = st->acc[ST_MIN_GAP];
     if (r->every > 0) {
       if (r->nrec >= r->cap) return RUN_FULL;
-      keep(r);
+      keep(r, *kept);
     }
     r->phase = PH_STEP;
   }
@@ -253,7 +271,7 @@ static int run_on(sc_scene_run *r, void **kept) {
     steps++;
     if (status == STEP_IMPACT_NOT_CONVERGED) return RUN_IMPACT_NOT_CONVERGED;
     r->min_gap = fmin(r->min_gap, st->acc[ST_MIN_GAP]);
-    if (r->every > 0 && (r->nstep % r->every == 0 || r->duration - r->t <= eps)) keep(r);
+    if (r->every > 0 && (r->nstep % r->every == 0 || r->duration - r->t <= eps)) keep(r, *kept);
     if (st->acc[ST_IMPACT] != 0.0) {
       r->impacts++;
       if (r->stop_at_impacts) return RUN_IMPACT;

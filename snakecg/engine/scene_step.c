@@ -29,6 +29,7 @@
 #include "engine.h"
 #include "scene_rows.h"
 #include "scene_solve.h"
+#include "scene_step.h"
 #include "scene_tiny.h"
 
 /* the run's accumulators and the last step's figures (ST_*, snakecg/scenes/run_record.py's),
@@ -261,12 +262,20 @@ static void figures(sc_scene_step *c, sc_int n, double *mv) {
 /* A run's scratch of its steps, kept from one to the next (sc_scene_step_kept): the bias
  * forces' work, the step's doubles (then 3 n: figures' M V and its x and V; n_s + 2 n_l: the
  * last rows' q and their links' cos and sin), the rows' scratch (scene_rows.c's). */
-typedef struct { sc_work_t ws; double *d; void *rows; } step_keep;
+typedef struct { sc_work_t ws; double *d, *qcs; void *rows; } step_keep;
 
 /* The links' cos and sin of the last rows (at x, status 0) with their q, into qcs. */
 static void rows_cs(const step_keep *k, const double *x, double *qcs) {
   memcpy(qcs, x, sizeof(double) * SNAKECG_NS);
   memcpy(qcs + SNAKECG_NS, sc_scene_rows_cs(k->rows), sizeof(double) * 2 * SNAKECG_NL);
+}
+
+/* The links' cos and sin at x where the last rows of the steps keeping their scratch in keep
+ * were taken at x's q, else null: scene_step.h. */
+SC_INTERNAL const double *sc_scene_step_cs(const void *keep, const double *x) {
+  const step_keep *k = (const step_keep *)keep;
+  if (!k || !k->qcs || memcmp(k->qcs, x, sizeof(double) * SNAKECG_NS)) return 0;
+  return k->qcs + SNAKECG_NS;
 }
 
 static void keep_free(step_keep *k) {
@@ -312,7 +321,7 @@ SC_INTERNAL int sc_scene_step_kept(sc_scene_step *c, void **keep) {
     for (i = 0; i < SNAKECG_NS; ++i) kp->d[nd + i] = NAN;
   }
   mv = kp->d + nd - 3 * n; /* (M V, x, V: none yet) */
-  qcs = kp->d + nd; /* (the rows' q, cs: none yet) */
+  qcs = kp->qcs = kp->d + nd; /* (the rows' q, cs: none yet) */
   c->acc[ST_IMPACT] = 0.0;
   c->acc[ST_LOSS] = 0.0;
   if (!(c->h > 0)) {

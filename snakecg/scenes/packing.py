@@ -21,6 +21,7 @@ from .solve import BOX, DISC, FREE, SPLIT
 __all__ = ["Packed", "pack", "scene_size"]
 
 SP_HEAD, LINK_W, OBJ_W, OBS_W, GB_W, CR_W = 16, 2, 12, 14, 8, 16
+SP_SIZE = 4  # the head's scene_size (engine.h's SP_SIZE)
 GB_WHEEL, GB_COULOMB, GB_SPLIT, GB_OBJECT = 0, 1, 2, 3
 #: one sample's output row: the solve's info (INFO order), the contact count, the norms, sr,
 #: an overlap's record (bodies, depth, tolerance), then qdd, a_obj, the objects' norms and

@@ -19,6 +19,12 @@ import numpy as np
 
 from ..errors import InputError
 from .description import GeneralScene
+from .stepping import _simulate, simulate_scene
+
+#: simulate_scene's defaults of dt and output_every
+_DEFAULTS = simulate_scene.__kwdefaults__
+#: :func:`_checked`'s check on the run's record (not done in the engine's loop)
+RECORD = object()
 
 __all__ = ["plate_scene", "simulate_with_geometry"]
 
@@ -34,10 +40,10 @@ def simulate_with_geometry(model, q0, tau, duration, v0=None, *, q_obj0=None, v_
     """Simulate the paper's scene of ``model`` (a loaded :class:`snakecg.Scene`) with the
     contacts from geometry: the general scene of :func:`plate_scene`, stepped by
     :func:`snakecg.scenes.stepping.simulate_scene` with ``dt`` (default 1e-3 s),
-    ``tolerance`` (m; default 1e-5 of the scene's size) and ``output_every``, then the
-    paper's contact check at every sample (:func:`_checked`). ``q_obj0``, ``v_obj0``,
-    ``f_obj``: the plate's pose, twist and a constant wrench on it, 3 numbers each. Returns
-    a :class:`~snakecg.scenes.run_record.SceneRun`."""
+    ``tolerance`` (m; default 1e-5 of the scene's size) and ``output_every``, with the
+    paper's contact check at every sample (in the engine's loop; :func:`_checked`).
+    ``q_obj0``, ``v_obj0``, ``f_obj``: the plate's pose, twist and a constant wrench on it,
+    3 numbers each. Returns a :class:`~snakecg.scenes.run_record.SceneRun`."""
     general = _plate_model(model)
 
     def one_object(name, value):
@@ -49,14 +55,12 @@ def simulate_with_geometry(model, q0, tau, duration, v0=None, *, q_obj0=None, v_
                              f"rates / the wrench F_x, F_y, torque), got {value!r:.60}")
         return arr.reshape(1, 3)
 
-    kwargs = {"v0": v0, "tau": tau, "q_obj0": one_object("q_obj0", q_obj0),
-              "v_obj0": one_object("v_obj0", v_obj0), "f_obj": one_object("f_obj", f_obj),
-              "tolerance": tolerance, "progress": progress}
-    if dt is not None:
-        kwargs["dt"] = dt
-    if output_every is not None:
-        kwargs["output_every"] = output_every
-    return _checked(model, general.simulate(q0, duration, **kwargs))
+    run, first = _simulate(
+        general, q0, duration, v0, tau, _DEFAULTS["dt"] if dt is None else dt,
+        one_object("q_obj0", q_obj0), one_object("v_obj0", v_obj0), one_object("f_obj", f_obj),
+        tolerance, _DEFAULTS["output_every"] if output_every is None else output_every,
+        progress, lambda tol: _run_check(model, tol)[1].address)
+    return _checked(model, run, first)
 
 
 def _plate_model(model):
@@ -92,17 +96,22 @@ def _run_check(model, tolerance):
     return got
 
 
-def _checked(model, run):
+def _checked(model, run, first=RECORD):
     """``run`` after the paper's contact check (:class:`snakecg.geometry.ContactCheck`, every
     link against the plate and the links against each other) at every sample, with the run's
     tolerance: a completed run that overlaps beyond it at a sample says so (status
     ``penetration`` or ``self_contact``, ``violation`` at the first such sample), the
-    trajectory kept whole."""
+    trajectory kept whole. ``first``: the check done in the engine's loop (the first sample
+    beyond the tolerance, ``(index, overlap, pair)``, or ``None``), or :data:`RECORD`: done
+    here on the run's record."""
     if run.status != "completed":
         return run
     check, rc = _run_check(model, run.tolerance)
-    k, depth, pair = rc.first_beyond(run.states(), run.tolerance)
-    if k is not None:
+    if first is RECORD:
+        first = rc.first_beyond(run.states(), run.tolerance)
+        first = None if first[0] is None else first
+    if first is not None:
+        k, depth, pair = first
         i, j = check.pairs[pair]
         names = [f"link {i + 1}", "object 1" if j is None else f"link {j + 1}"]
         message = (f"{names[0]} and {names[1]} overlap by {depth:.3g} m at the sample "

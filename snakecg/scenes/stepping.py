@@ -55,11 +55,12 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .._inputs import all_finite
 from ..engine.binding import (SCENE_LAWS, SceneRunCall, SceneStateCall, SceneStep, address,
                               array_address)
 from ..errors import BuildError, InputError
 from .contacts import Rows, StateRows, read_rows
-from .packing import BODY_KINDS, scene_size
+from .packing import BODY_KINDS, SP_SIZE, scene_size
 from .run_record import ST_LOSS, ST_SLIDING_COS, ST_WIDTH, SceneEvent, SceneRun
 from .solve import INFO
 
@@ -234,18 +235,22 @@ class _Stepper:
         return read_rows(self.model, out, A, par, kind, start)
 
 
+#: a run's default contact tolerance, in the scene's size
+TOLERANCE_SHARE = 1e-5
+
+
 def contact_tolerance(scene, tolerance) -> float:
-    """A run's contact tolerance (m): ``tolerance``, by default ``1e-5`` of the scene's size
-    (:func:`~snakecg.scenes.packing.scene_size`)."""
-    return 1e-5 * scene_size(scene) if tolerance is None else float(tolerance)
+    """A run's contact tolerance (m): ``tolerance``, by default :data:`TOLERANCE_SHARE`
+    (``1e-5``) of the scene's size (:func:`~snakecg.scenes.packing.scene_size`)."""
+    return TOLERANCE_SHARE * scene_size(scene) if tolerance is None else float(tolerance)
 
 
-def _finite(arr) -> bool:
-    """Whether every number of the float array ``arr`` is finite (a few numbers: one pass in
-    Python, several times cheaper than NumPy's ufunc and reduction on them)."""
-    if arr.size > 64:
-        return bool(np.isfinite(arr).all())
-    return all(map(math.isfinite, arr.ravel().tolist()))
+def _model_tolerance(model, tolerance) -> float:
+    """:func:`contact_tolerance` of a loaded scene, its size read from the constants packed
+    when it was loaded (the same number; summed there once, not at every run)."""
+    if tolerance is None:
+        return TOLERANCE_SHARE * float(model.packed.vector[SP_SIZE])
+    return float(tolerance)
 
 
 def _check_args(model, q0, v0, duration, dt, q_obj0, v_obj0, f_obj, tolerance):
@@ -256,7 +261,7 @@ def _check_args(model, q0, v0, duration, dt, q_obj0, v_obj0, f_obj, tolerance):
         if value is None:
             return default
         arr = np.asarray(value, dtype=float) if not isinstance(value, (str, bytes)) else None
-        if arr is None or arr.size != math.prod(shape) or not _finite(arr):
+        if arr is None or arr.size != math.prod(shape) or not all_finite(arr):
             problems.append(f"{name} must be {math.prod(shape)} finite numbers "
                             f"(shape {shape}), got {value!r:.60}")
             return default
@@ -333,6 +338,7 @@ class _Runner:
         a.pause = PAUSE_STEPS if pause is None else int(pause)
         a.t, a.nstep, a.phase, a.impacts, a.min_gap = 0.0, 0, 0, 0, 0.0
         a.bad[:] = (0.0,) * 5
+        a.geo, a.nkept, a.geo_k = None, 0, -1  # (no contact check: :func:`_simulate`'s)
 
     def go(self) -> int:
         """Go on with the run: why the engine returned (``RUN_*``)."""
@@ -435,27 +441,40 @@ def simulate_scene(model, q0, duration, *, v0=None, tau=None, dt=1e-3, q_obj0=No
     :data:`PROGRESS_EVERY` seconds of a long run (:func:`snakecg.progress.resolve`), or a
     ``progress(message)`` callable.
     """
+    return _simulate(model, q0, duration, v0, tau, dt, q_obj0, v_obj0, f_obj, tolerance,
+                     output_every, progress)[0]
+
+
+def _simulate(model, q0, duration, v0, tau, dt, q_obj0, v_obj0, f_obj, tolerance,
+              output_every, progress, check=None) -> tuple[SceneRun, tuple | None]:
+    """:func:`simulate_scene` (its arguments in its order), and with ``check``
+    (``check(tol)``: the address of a :class:`~snakecg.engine.binding.Geometry`, the paper's
+    contact check of a scene with one object, its plate; at the run's tolerance ``tol``) that
+    check of every sample kept, in the engine's loop from the links' cos and sin its step
+    took: ``(run, first)``, ``first`` ``(index, overlap, pair)`` of the first sample whose
+    largest overlap exceeds ``tol`` (``None``: none, or no check)."""
     q, v, qo, vo, fo = _check_args(model, q0, v0, duration, dt, q_obj0, v_obj0, f_obj,
                                    tolerance)
     if isinstance(output_every, bool) or not isinstance(output_every, (int, np.integer)) \
             or output_every < 1:
         raise InputError(f"simulate: output_every must be an integer >= 1, got "
                          f"{output_every!r:.60}")
-    tol = contact_tolerance(model.scene, tolerance)
+    tol = _model_tolerance(model, tolerance)
     na = model.n_joints
     kind, law = _late("torque_law")(np.zeros(na) if tau is None else tau, na)
     name, params = engine_law(kind, law, na)
     st = _take(model, tol, fo.reshape(-1))
     try:
         return _run(model, st, q, v, qo, vo, duration, dt, output_every, kind, law, name,
-                    params, progress, tol)
+                    params, progress, tol, None if check is None else check(tol))
     finally:
         _give(model, st)
 
 
 def _run(model, st, q, v, qo, vo, duration, dt, output_every, kind, law, name, params,
-         progress, tol) -> SceneRun:
-    """:func:`simulate_scene`'s run on the stepper ``st``, its arguments checked."""
+         progress, tol, geo) -> tuple[SceneRun, tuple | None]:
+    """:func:`_simulate`'s run on the stepper ``st``, its arguments checked; ``geo``: the
+    address of the contact check, or ``None``."""
     check_tau = _late("check_tau")
     ns, na, scene = st.ns, model.n_joints, model.scene
     if qo is None:
@@ -472,20 +491,22 @@ def _run(model, st, q, v, qo, vo, duration, dt, output_every, kind, law, name, p
     acc = st.acc
     rec.follow(acc)
     if st.begin(q, qo, v, vo) != STEP_DONE:
-        return rec.finish("penetration", 0.0, st.engine.refusal(st.out))
+        return rec.finish("penetration", 0.0, st.engine.refusal(st.out)), None
     cap = int(min(RECORD_ROWS, duration / dt / output_every + 4))
     run = st.runner
     if run is None:
         run = st.runner = _Runner(st, duration, dt, name, params, int(output_every), cap)
     else:
         run.reset(duration, dt, name, params, int(output_every), cap)
+    args = run.args
+    if geo is not None:
+        args.geo, args.geo_tol = geo, tol
     if name == "constant":
         st.tau[:na] = params
     elif name == "caller":
         st.tau[:na] = torque(0.0)
     report = _late("resolve")(progress)
     wall = time.perf_counter()
-    args = run.args
     while True:
         code = run.go()
         if code == RUN_PAUSE and report is not None and \
@@ -505,7 +526,9 @@ def _run(model, st, q, v, qo, vo, duration, dt, output_every, kind, law, name, p
     if code == RUN_BAD_TAU:
         check_tau(st.tau[:na].copy(), na, args.t)  # raises: the law's torque is out of bounds
     status, message, bodies = ending(code, run, scene)
-    return rec.finish(status, args.t, message, bodies=bodies)
+    first = ((int(args.geo_k), float(args.geo_depth), int(args.geo_pair))
+             if geo is not None and args.geo_k >= 0 else None)
+    return rec.finish(status, args.t, message, bodies=bodies), first
 
 
 def ending(code: int, run: _Runner, scene):

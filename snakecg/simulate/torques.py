@@ -7,7 +7,7 @@ import inspect
 
 import numpy as np
 
-from .._inputs import as_batch
+from .._inputs import all_finite, as_batch
 from ..errors import InputError
 from ..solver import FORCE_LIMIT
 from .records import SimulationError
@@ -19,7 +19,7 @@ def torque_law(tau, n_a: int):
     """``(kind, law)``: kind ``"constant"`` (law the ``(n_a,)`` vector), ``"time"`` or
     ``"feedback"`` (law the callable), told apart by the callable's required arguments."""
     if type(tau) is np.ndarray and tau.dtype == np.float64 and tau.shape == (n_a,) \
-            and np.isfinite(tau).all():
+            and all_finite(tau):
         return "constant", tau.copy()  # already what the checks below would give
     if callable(tau):
         try:
