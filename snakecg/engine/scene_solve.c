@@ -198,9 +198,9 @@ static void scales(sc_problem *p, const double *dg, sc_int stride, const double 
   double fs = 0.0, ws = 0.0, ps = 0.0;
   sc_int i;
   for (i = 0; i < p->m; ++i) { /* (as selects: G's diagonal is positive, every division made) */
-    const double d = dg[i * stride], v = d > 0 ? fabs(b[i]) / d : 0.0, u = fabs(b[i]);
-    fs = v > fs ? v : fs;
-    ws = u > ws ? u : ws;
+    const double d = dg[i * stride];
+    if (d > 0 && fabs(b[i]) / d > fs) fs = fabs(b[i]) / d;
+    if (fabs(b[i]) > ws) ws = fabs(b[i]);
   }
   for (i = 0; i < 3 * p->nb; ++i) { /* the sets' finite sizes: the largest apart, then fs's */
     const double v = fabs(p->par[i]);
