@@ -197,7 +197,7 @@ static int active_set(sc_problem *p, sc_int max_pass, double *work, sc_int *iwor
 static void scales(sc_problem *p, const double *dg, sc_int stride, const double *b) {
   double fs = 0.0, ws = 0.0, ps = 0.0;
   sc_int i;
-  for (i = 0; i < p->m; ++i) { /* (as selects: G's diagonal is positive, every division made) */
+  for (i = 0; i < p->m; ++i) { /* (branches: as selects, a chain through fs, slower) */
     const double d = dg[i * stride];
     if (d > 0 && fabs(b[i]) / d > fs) fs = fabs(b[i]) / d;
     if (fabs(b[i]) > ws) ws = fabs(b[i]);
