@@ -268,6 +268,22 @@ static int primal_start(sc_problem *p, const double *Z, const double *g, const d
   return ok;
 }
 
+/* a := L^-T a for the snake alone (n = t = n_s, L dense): the general loop's operations in
+ * its order, unrolled in registers (no loop of a few elements a row: the chain of divisions
+ * alone). */
+static inline __attribute__((always_inline)) void back_ns(const double *L, double *a) {
+  enum { N = SNAKECG_NS };
+  double x[N];
+  sc_int i, k;
+  SC_UNROLL for (i = 0; i < N; ++i) x[i] = a[i];
+  SC_UNROLL for (i = N - 1; i >= 0; --i) {
+    const double ai = x[i] / L[i * N + i];
+    x[i] = ai;
+    SC_UNROLL for (k = 0; k < i; ++k) x[k] -= L[i * N + k] * ai;
+  }
+  SC_UNROLL for (i = 0; i < N; ++i) a[i] = x[i];
+}
+
 /* One sample. M (n x n), f (n), A (m x n) row-major; out: lam (m), a (n), w (m), state (nb),
  * info (INFO_WIDTH). Scratch: work and iwork sized by scene_solve_work. */
 static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const double *f,
@@ -440,13 +456,15 @@ answered:
     for (j = 0; j < k; ++j) t += zi[iw2[j]] * lam[iw2[j]];
     a[i] = t;
   }
-  for (i = n - 1; i >= 0; --i) { /* (by L's rows, contiguous: vectorised; its rows from t on
-    are their diagonal) */
-    const double ai = a[i] / L[i * n + i], *restrict li = L + i * n;
-    double *restrict ak = a;
-    a[i] = ai;
-    for (k = 0; k < (i < t ? i : 0); ++k) ak[k] -= li[k] * ai;
-  }
+  if (n == SNAKECG_NS && t == SNAKECG_NS) back_ns(L, a);
+  else
+    for (i = n - 1; i >= 0; --i) { /* (by L's rows, contiguous: vectorised; its rows from t
+      on are their diagonal) */
+      const double ai = a[i] / L[i * n + i], *restrict li = L + i * n;
+      double *restrict ak = a;
+      a[i] = ai;
+      for (k = 0; k < (i < t ? i : 0); ++k) ak[k] -= li[k] * ai;
+    }
   if (!ok) {
     for (i = 0; i < n; ++i) a[i] = NAN;
     for (i = 0; i < m; ++i) lam[i] = NAN;
