@@ -40,12 +40,14 @@
  * (the null space of G_FF taken out); if that leaves the set, the face's basic solution stays
  * and the flag says so (2).
  */
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "snakecg_layout.h"
 #include "engine.h"
+#include "scene_diag.h"
 #include "scene_sets.h"
 #include "scene_tiny.h"
 #include "scene_solve.h"
@@ -96,9 +98,12 @@ static sc_int sweeps(sc_problem *p, sc_int max_sweeps, double rel) {
 }
 
 /* The KKT residuals (relative): primal (outside the set), dual (w not in -N_K(lam)),
- * complementarity; and the states switched where they are violated (returns 1 if any). */
+ * complementarity; and the states switched where they are violated (returns 1 if any). The
+ * largest of each kind summed before its one division by its scale (a correctly rounded
+ * division by a positive scale keeps the order: the same maxima bit for bit, NaN terms left
+ * out as sc_max leaves them; pr's 2-D blocks' terms, not scaled, apart). */
 static int kkt(sc_problem *p, double *res, int do_switch) {
-  double pr = 0.0, du = 0.0, co = 0.0, F = p->fscale, W = p->wscale;
+  double pr = 0.0, p1 = 0.0, du = 0.0, co = 0.0, F = p->fscale, W = p->wscale;
   int moved = 0;
   sc_int k;
   for (k = 0; k < p->nb; ++k) {
@@ -107,24 +112,24 @@ static int kkt(sc_problem *p, double *res, int do_switch) {
     double e;
     switch (p->kind[k]) {
       case K_FREE:
-        du = sc_max(du, fabs(w[0]) / W);
+        du = sc_max(du, fabs(w[0]));
         break;
       case K_UNILATERAL:
-        pr = sc_max(pr, sc_max(0.0, -l[0]) / F);
-        du = sc_max(du, sc_max(0.0, -w[0]) / W);
-        co = sc_max(co, fabs(l[0] * w[0]) / (F * W));
+        pr = sc_max(pr, sc_max(0.0, -l[0]));
+        du = sc_max(du, sc_max(0.0, -w[0]));
+        co = sc_max(co, fabs(l[0] * w[0]));
         if (do_switch) {
           if (p->state[k] == S_HELD && l[0] < -TOL_ACCEPT * F) { p->state[k] = S_ZERO; moved = 1; }
           else if (p->state[k] == S_ZERO && w[0] < -TOL_ACCEPT * W) { p->state[k] = S_HELD; moved = 1; }
         }
         break;
       case K_BOX:
-        pr = sc_max(pr, sc_max(0.0, fabs(l[0]) - q[0]) / F);
+        pr = sc_max(pr, sc_max(0.0, fabs(l[0]) - q[0]));
         if (!(q[0] > 0)) break; /* the set {0}: its normal cone is every w */
         if (fabs(l[0]) < q[0]) e = fabs(w[0]);
         else e = l[0] > 0 ? sc_max(0.0, w[0]) : sc_max(0.0, -w[0]);
-        du = sc_max(du, e / W);
-        co = sc_max(co, fabs(fmin(q[0] - fabs(l[0]), 0.0) * w[0]) / (F * W));
+        du = sc_max(du, e);
+        co = sc_max(co, fabs(fmin(q[0] - fabs(l[0]), 0.0) * w[0]));
         if (do_switch) {
           if (p->state[k] == S_HELD && fabs(l[0]) > q[0] * (1 + TOL_ACCEPT)) { p->state[k] = S_SLIDE; moved = 1; }
           else if (p->state[k] == S_SLIDE && e > TOL_ACCEPT * W) { p->state[k] = S_HELD; moved = 1; }
@@ -136,7 +141,7 @@ static int kkt(sc_problem *p, double *res, int do_switch) {
         if (zero) break;
         sc_block_P(p, k, l, P);
         phi = sqrt(P[0] * l[0] * l[0] + P[1] * l[1] * l[1]);
-        pr = sc_max(pr, sc_max(0.0, phi - 1.0));
+        p1 = sc_max(p1, sc_max(0.0, phi - 1.0));
         if (p->state[k] == S_HELD || phi < 1.0 - 1e-12) {
           e = sqrt(w[0] * w[0] + w[1] * w[1]);
           if (do_switch && p->state[k] == S_HELD && phi > 1.0 + TOL_ACCEPT) {
@@ -158,13 +163,13 @@ static int kkt(sc_problem *p, double *res, int do_switch) {
             moved = 1;
           }
         }
-        du = sc_max(du, e / W);
+        du = sc_max(du, e);
       }
     }
   }
-  res[0] = pr;
-  res[1] = du;
-  res[2] = co;
+  res[0] = sc_max(sc_max(0.0, pr / F), p1);
+  res[1] = sc_max(0.0, du / W);
+  res[2] = sc_max(0.0, co / (F * W));
   return moved;
 }
 
@@ -190,17 +195,18 @@ static int active_set(sc_problem *p, sc_int max_pass, double *work, sc_int *iwor
 /* The scales: forces (what would stop the rows' accelerations, and the sets' sizes),
  * accelerations; from G's diagonal (dg[i * stride]) and b. */
 static void scales(sc_problem *p, const double *dg, sc_int stride, const double *b) {
-  double fs = 0.0, ws = 0.0;
-  sc_int i, k;
-  for (i = 0; i < p->m; ++i) {
+  double fs = 0.0, ws = 0.0, ps = 0.0;
+  sc_int i;
+  for (i = 0; i < p->m; ++i) { /* (branches: as selects, a chain through fs, slower) */
     const double d = dg[i * stride];
     if (d > 0 && fabs(b[i]) / d > fs) fs = fabs(b[i]) / d;
     if (fabs(b[i]) > ws) ws = fabs(b[i]);
   }
-  for (k = 0; k < p->nb; ++k)
-    for (i = 0; i < 3; ++i)
-      if (isfinite(p->par[3 * k + i]) && fabs(p->par[3 * k + i]) > fs)
-        fs = fabs(p->par[3 * k + i]);
+  for (i = 0; i < 3 * p->nb; ++i) { /* the sets' finite sizes: the largest apart, then fs's */
+    const double v = fabs(p->par[i]);
+    ps = v > ps && v <= DBL_MAX ? v : ps;
+  }
+  if (ps > fs) fs = ps;
   for (i = 0; i < p->m; ++i) {
     double g = dg[i * stride] * fs;
     if (g > ws) ws = g;
@@ -232,52 +238,6 @@ static void start_from(sc_problem *p, const double *from) {
   }
 }
 
-#if defined(__GNUC__)
-#define SOLVE_FLAT static inline __attribute__((always_inline))
-#else
-#define SOLVE_FLAT static inline
-#endif
-
-/* G's diagonal d and Z^T g (e) as G's own loop sums them (scene_small.c's gram: the
- * coordinates four at a time, the last n mod 4 one short group: bit for bit the same). */
-SOLVE_FLAT void diag_b(sc_int n, sc_int m, const double *Z, const double *g,
-                       double *restrict d, double *restrict e) {
-  const sc_int n4 = n - n % 4;
-  sc_int i, j;
-  for (j = 0; j < m; ++j) d[j] = e[j] = 0.0;
-  for (i = 0; i < n4; i += 4) {
-    const double *restrict z0 = Z + i * m, *restrict z1 = z0 + m, *restrict z2 = z1 + m,
-                 *restrict z3 = z2 + m;
-    const double a0 = g[i], a1 = g[i + 1], a2 = g[i + 2], a3 = g[i + 3];
-    for (j = 0; j < m; ++j) {
-      d[j] += (z0[j] * z0[j] + z1[j] * z1[j]) + (z2[j] * z2[j] + z3[j] * z3[j]);
-      e[j] += (z0[j] * a0 + z1[j] * a1) + (z2[j] * a2 + z3[j] * a3);
-    }
-  }
-  if (n - n4 == 1) {
-    const double *restrict z0 = Z + n4 * m;
-    const double a0 = g[n4];
-    for (j = 0; j < m; ++j) {
-      d[j] += z0[j] * z0[j];
-      e[j] += z0[j] * a0;
-    }
-  } else if (n - n4 == 2) {
-    const double *restrict z0 = Z + n4 * m, *restrict z1 = z0 + m;
-    const double a0 = g[n4], a1 = g[n4 + 1];
-    for (j = 0; j < m; ++j) {
-      d[j] += z0[j] * z0[j] + z1[j] * z1[j];
-      e[j] += z0[j] * a0 + z1[j] * a1;
-    }
-  } else if (n - n4 == 3) {
-    const double *restrict z0 = Z + n4 * m, *restrict z1 = z0 + m, *restrict z2 = z1 + m;
-    const double a0 = g[n4], a1 = g[n4 + 1], a2 = g[n4 + 2];
-    for (j = 0; j < m; ++j) {
-      d[j] += (z0[j] * z0[j] + z1[j] * z1[j]) + z2[j] * z2[j];
-      e[j] += (z0[j] * a0 + z1[j] * a1) + z2[j] * a2;
-    }
-  }
-}
-
 /* The warm start's piece solved in the primal (scene_primal.c), kept where the KKT conditions
  * hold and, on a dependent face, its forces are the minimum-norm ones (not where the dual would
  * next open a contact at zero force). G's diagonal and b summed as G's own loop does (the same
@@ -293,8 +253,7 @@ static int primal_start(sc_problem *p, const double *Z, const double *g, const d
   for (k = 0; k < p->nb; ++k)
     if (p->state[k] == S_HELD) h += sc_block_size(p->kind[k]);
   if (2 * h > n) return 0; /* (more held rows: the forces left the sets on every try) */
-  if (n == SNAKECG_NS) diag_b(SNAKECG_NS, m, Z, g, d, e);
-  else diag_b(n, m, Z, g, d, e);
+  sc_diag_b(n, m, Z, g, d, e); /* (scene_diag.c) */
   for (j = 0; c && j < m; ++j) e[j] += c[j];
   scales(p, dg, 1, p->b);
   r = sc_primal_piece(p, Z, g, c, work, iwork, defect);
@@ -307,6 +266,22 @@ static int primal_start(sc_problem *p, const double *Z, const double *g, const d
   *dep = ok ? r - 1 : 0;
   sc_primal_tally(ok);
   return ok;
+}
+
+/* a := L^-T a for the snake alone (n = t = n_s, L dense): the general loop's operations in
+ * its order, unrolled in registers (no loop of a few elements a row: the chain of divisions
+ * alone). */
+static inline __attribute__((always_inline)) void back_ns(const double *L, double *a) {
+  enum { N = SNAKECG_NS };
+  double x[N];
+  sc_int i, k;
+  SC_UNROLL for (i = 0; i < N; ++i) x[i] = a[i];
+  SC_UNROLL for (i = N - 1; i >= 0; --i) {
+    const double ai = x[i] / L[i * N + i];
+    x[i] = ai;
+    SC_UNROLL for (k = 0; k < i; ++k) x[k] -= L[i * N + k] * ai;
+  }
+  SC_UNROLL for (i = 0; i < N; ++i) a[i] = x[i];
 }
 
 /* One sample. M (n x n), f (n), A (m x n) row-major; out: lam (m), a (n), w (m), state (nb),
@@ -481,13 +456,15 @@ answered:
     for (j = 0; j < k; ++j) t += zi[iw2[j]] * lam[iw2[j]];
     a[i] = t;
   }
-  for (i = n - 1; i >= 0; --i) { /* (by L's rows, contiguous: vectorised; its rows from t on
-    are their diagonal) */
-    const double ai = a[i] / L[i * n + i], *restrict li = L + i * n;
-    double *restrict ak = a;
-    a[i] = ai;
-    for (k = 0; k < (i < t ? i : 0); ++k) ak[k] -= li[k] * ai;
-  }
+  if (n == SNAKECG_NS && t == SNAKECG_NS) back_ns(L, a);
+  else
+    for (i = n - 1; i >= 0; --i) { /* (by L's rows, contiguous: vectorised; its rows from t
+      on are their diagonal) */
+      const double ai = a[i] / L[i * n + i], *restrict li = L + i * n;
+      double *restrict ak = a;
+      a[i] = ai;
+      for (k = 0; k < (i < t ? i : 0); ++k) ak[k] -= li[k] * ai;
+    }
   if (!ok) {
     for (i = 0; i < n; ++i) a[i] = NAN;
     for (i = 0; i < m; ++i) lam[i] = NAN;

@@ -121,19 +121,24 @@ static int solve(sc_scene_step *c, sc_int n, double h, const double *f, double *
   /* from the last step's pieces (an impact from scratch: measured as cheap, 1 pass after 4
    * sweeps, against 2.3 passes from the step's pieces) */
   const int warm = c->from && c->nfrom == nb && h > 0;
-  for (b = 0; b < nb; ++b) {
-    int sized = c->kind[b] == K_BOX || c->kind[b] == K_DISC || c->kind[b] == K_SPLIT;
-    for (k = 0; k < 3; ++k) par[3 * b + k] = sized ? c->par[3 * b + k] * h : c->par[3 * b + k];
+  for (b = 0; b < nb; ++b) { /* (times 1.0 where not sized: the same number) */
+    const sc_int kd = c->kind[b];
+    const double s = kd == K_BOX || kd == K_DISC || kd == K_SPLIT ? h : 1.0, *q = c->par + 3 * b;
+    par[3 * b] = q[0] * s, par[3 * b + 1] = q[1] * s, par[3 * b + 2] = q[2] * s;
   }
   for (k = 0; k < m; ++k) off[k] = 0.0;
   for (k = 0; h > 0 && k < nc; ++k) { /* (a gap within GAP_BAND of zero: none) */
     double g = rec[CR_W * k + 10];
     off[c->start[k]] = fabs(g) > GAP_BAND * c->tol ? g / h : 0.0;
   }
-  for (b = 0; warm && b < nb; ++b) {
-    from[3 * b] = c->from[3 * b];
-    from[3 * b + 1] = c->from[3 * b + 1] * h;
-    from[3 * b + 2] = c->from[3 * b + 2] * h;
+  if (warm) {
+    const double *restrict fr = c->from;
+    double *restrict to = from;
+    for (b = 0; b < nb; ++b) {
+      to[3 * b] = fr[3 * b];
+      to[3 * b + 1] = fr[3 * b + 1] * h;
+      to[3 * b + 2] = fr[3 * b + 2] * h;
+    }
   }
   /* (with contact friction: scene_friction.c's solve on the tangent rows after the m rows,
    * an impact's too: its friction impulses within mu times its normal impulses) */
@@ -162,11 +167,13 @@ static int solve(sc_scene_step *c, sc_int n, double h, const double *f, double *
 static void keep_pieces(sc_scene_step *c, sc_int no, const double *st, double *d, int impact) {
   const sc_int nc0 = (sc_int)c->out[RO_NC], nc1 = (sc_int)c->out1[RO_NC],
                nb1 = (sc_int)c->out1[RO_NB], mc = c->mcap;
-  const double *r0 = c->out + RO_POSE + 3 * no, *r1 = c->out1 + RO_POSE + 3 * no;
+  const double *r0 = c->out + RO_POSE + 3 * no, *r1 = c->out1 + RO_POSE + 3 * no, h = c->h;
+  const double *lam = c->lam;
+  const sc_int *start = c->start, *kind1 = c->kind1;
   double *last = c->from + 3 * mc; /* (the step before's forces on the rows at x) */
   sc_int k, j, i;
   const int ex = !impact && c->pk[SP_FRICTION] == 0 && last[3 * mc] == c->out[RO_NB] &&
-                 last[3 * mc + 1] == c->h;
+                 last[3 * mc + 1] == h;
   for (k = 0; k < nb1; ++k) {
     double *s = c->from + 3 * k;
     sc_int old = -1;
@@ -185,15 +192,15 @@ static void keep_pieces(sc_scene_step *c, sc_int no, const double *st, double *d
     }
     s[0] = old < 0 ? (double)S_HELD : st[old];
     s[1] = s[2] = 0.0;
-    for (i = 0, j = old < 0 ? 0 : sc_block_size(c->kind1[k]); i < j; ++i)
-      s[1 + i] = c->lam[c->start[old] + i] / c->h;
+    for (i = 0, j = old < 0 ? 0 : sc_block_size(kind1[k]); i < j; ++i)
+      s[1 + i] = lam[start[old] + i] / h;
     d[3 * k] = s[0], d[3 * k + 1] = s[1], d[3 * k + 2] = s[2]; /* (this step's own) */
     for (i = 0; ex && old >= 0 && last[3 * old] == s[0] && i < j; ++i)
       s[1 + i] += s[1 + i] - last[3 * old + 1 + i];
   }
   memcpy(last, d, sizeof(double) * (size_t)(3 * nb1));
   last[3 * mc] = impact ? 0.0 : (double)nb1; /* (after an impact: none extrapolated from these) */
-  last[3 * mc + 1] = c->h;
+  last[3 * mc + 1] = h;
   c->nfrom = nb1;
 }
 
@@ -220,10 +227,10 @@ static void step_work(sc_scene_step *c, const double *Vp, const double *ws, cons
       ln += l * l;
       dot += l * w[r];
     }
+    if (kd != K_DISC && kd != K_BOX) continue; /* (the cosine: a friction set's alone) */
     sp = sqrt(sp);
     ln = sqrt(ln);
-    if ((kd == K_DISC || kd == K_BOX) && sp > 1e-9 && ln > 0 && -dot / (sp * ln) < cmin)
-      cmin = -dot / (sp * ln);
+    if (sp > 1e-9 && ln > 0 && -dot / (sp * ln) < cmin) cmin = -dot / (sp * ln);
   }
   acc[ST_CONTACT_IMPULSE] = impulse;
   if (cmin <= 1.0) /* kinetic friction against the sliding: 1 */
