@@ -16,7 +16,7 @@ import numpy as np
 
 from ..engine.threads import pool, threads
 from ..errors import InputError
-from .stepping import (STEP_DONE, _check_args, _Runner, _Stepper, contact_tolerance, ending,
+from .stepping import (STEP_DONE, _check_args, _model_tolerance, _Runner, _Stepper, ending,
                        engine_law)
 
 __all__ = ["SceneBatch", "simulate_scene_batch"]
@@ -146,7 +146,7 @@ def simulate_scene_batch(model, q0, duration, *, v0=None, tau=None, dt=1e-3, q_o
     # the batch's own arguments, checked as a single run's
     _, _, _, _, fo = _check_args(model, Q[0], None, duration, dt, None, None, f_obj,
                                  tolerance)
-    tol = contact_tolerance(model.scene, tolerance)
+    tol = _model_tolerance(model, tolerance)
     status = np.full(runs, "", dtype=object)
     message = np.full(runs, "", dtype=object)
     t_end, steps, impacts = np.zeros(runs), np.zeros(runs, dtype=int), np.zeros(runs, dtype=int)

@@ -231,7 +231,7 @@ class _Stepper:
 
     def rows(self, end: bool = False) -> Rows:
         """The rows at the state (``end``: at the last step's end, before it is accepted)."""
-        M, A, par, out, kind, start = self._rows_buffers(end)
+        _, A, par, out, kind, start = self._rows_buffers(end)
         return read_rows(self.model, out, A, par, kind, start)
 
 
