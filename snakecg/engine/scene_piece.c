@@ -110,18 +110,21 @@ static double breach(const sc_problem *p, sc_int k, const double *l, const doubl
   }
 }
 
-/* The angles' Newton matrix J (ns x ns, its lower triangle by rows; the upper one filled)
- * = L D L^T without pivoting (linalg.h's sc_ldl_factor: one division per pivot, none in the
- * solve; L in Jc, d and 1/d in dd) where every pivot is above ANGLE_TOL of J's largest
- * diagonal entry: 1, else 0. work: ns doubles. */
+/* The angles' Newton matrix J (ns x ns, its lower triangle by rows) = L D L^T without
+ * pivoting (linalg.h's sc_ldl_factor: one division per pivot, none in the solve; L in Jc, d and
+ * 1/d in dd) where every pivot is above ANGLE_TOL of J's largest diagonal entry: 1, else 0
+ * (J's upper triangle filled where it is tried). work: ns doubles. */
 static int angles_ldl(sc_int ns, double *J, double *Jc, double *dd, double *work) {
   sc_int s, t;
   double big = 0.0;
-  for (s = 0; s < ns; ++s) {
-    for (t = 0; t < s; ++t) J[t * ns + s] = J[s * ns + t]; /* (by columns: the upper) */
+  for (s = 0; s < ns; ++s)
     if (J[s * ns + s] > big) big = J[s * ns + s];
-  }
   if (!(big > 0.0) || !isfinite(big)) return 0;
+  for (s = 0; s < ns; ++s) /* (not tried where it must fail: a pivot is at most its diagonal
+    entry, rounding included, while the pivots before it are positive) */
+    if (!(J[s * ns + s] > ANGLE_TOL * big)) return 0;
+  for (s = 0; s < ns; ++s)
+    for (t = 0; t < s; ++t) J[t * ns + s] = J[s * ns + t]; /* (by columns: the upper) */
   sc_ldl_factor(ns, J, ns, NULL, Jc, ns, dd, dd + ns, NULL, 0.0, work);
   for (s = 0; s < ns; ++s)
     if (!(dd[s] > ANGLE_TOL * big)) return 0;
