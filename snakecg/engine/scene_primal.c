@@ -25,7 +25,11 @@
  * steps. For the snake alone (n = n_s, the pegs row) the Hessian's Cholesky and q = R^-1 grad
  * are scene_small.c's factor unrolled for n_s (sc_cholesky's factor bit for bit), and the
  * piece is compiled a second time with AVX, chosen where the processor has it (no FMA: bit
- * for bit the copy without; core_scene_primal's mode 2 takes that one). */
+ * for bit the copy without; core_scene_primal's mode 2 takes that one), and a third time with
+ * AVX2 and FMA, chosen before it where the processor has both: the products fused into the
+ * sums and the Hessian's factor scene_small.c's sc_small_factor_fma (its pivots' reciprocals
+ * multiplied, kept for the triangular solves): within rounding of the others, not bit for
+ * bit (mode 3 takes the AVX copy). */
 #include <math.h>
 #include <string.h>
 
@@ -43,8 +47,9 @@
 #define PRIMAL_STEPS 12 /* Newton and chord steps before the dual path takes over */
 #define PRIMAL_DEP 1e-8 /* held rows taken as dependent below this pivot ratio (dual: 1e-10) */
 
-/* core_scene_primal's switch (1: the warm start tries the primal piece first; 2: the same
- * without the snake's AVX copy, which answers bit for bit as the copy without) and counts
+/* core_scene_primal's switch (1: the warm start tries the primal piece first, the snake's
+ * fastest copy; 2: the same with the plain copy; 3: with the AVX copy, which answers bit for
+ * bit as the plain one) and counts
  * (tries, answers: measurement only; atomic where the compiler has GCC's builtins, as the
  * batches' threads count together) */
 static int primal_on = 1;
@@ -72,12 +77,12 @@ SC_INTERNAL int sc_primal_tally(int ok) {
   return primal_on;
 }
 
-/* The primal piece switched on (mode 1; 2: on without the snake's AVX copy) or off (0), or
- * left (-1); counts (2 doubles, or NULL): the tries and answers since the last read, then
+/* The primal piece switched on (mode 1; 2: on with the snake's plain copy; 3: its AVX copy
+ * without FMA) or off (0), or left (-1); counts (2 doubles, or NULL): the tries and answers since the last read, then
  * reset. Returns the previous mode. */
 int SNAKECG_EXPORT(core_scene_primal)(sc_int mode, double *counts) {
   int prev = primal_on;
-  if (mode >= 0 && mode <= 2) primal_on = (int)mode;
+  if (mode >= 0 && mode <= 3) primal_on = (int)mode;
   if (counts) {
     long t = PRIMAL_TAKE(0);
     long a = PRIMAL_TAKE(1);
@@ -264,7 +269,8 @@ static sc_int face_rank(sc_problem *p, const double *Z, const sc_int *F, sc_int 
  * rank defect; work's first n: y), 0 when left to the dual path (p->lam, p->w then
  * undefined). */
 PRIMAL_FLAT int piece(sc_int n, sc_problem *p, const double *Z, const double *g,
-                      const double *c, double *work, sc_int *iwork, sc_int *def) {
+                      const double *c, double *work, sc_int *iwork, sc_int *def,
+                      const int fused) {
   const sc_int m = p->m, nb = p->nb;
   double *R = work, *Y = R + n * n, *S = Y + n * (m + 3), *gF = S + m * m, *y = gF + n,
          *grad = y + n, *q = grad + n, *dy = q + n, *yt = dy + n, *t = yt + n, *lh = t + n,
@@ -385,12 +391,18 @@ PRIMAL_FLAT int piece(sc_int n, sc_problem *p, const double *Z, const double *g,
 #ifdef SC_FIXED
       if (n == SNAKECG_NS) {
         for (i = 0, big = 0.0; i < n; ++i) big = sc_max(big, R[i * n + i]);
+#ifdef SC_SMALL_FMA
+        if (fused) { /* (the FMA copy: the factor's reciprocals kept as t) */
+          if (!sc_small_factor_fma(R, grad, 1e-14 * big, R, q, t)) return 0;
+        } else
+#endif
         if (!sc_small_factor(R, grad, 1e-14 * big, R, q)) return 0;
         solved = 1;
       } else
 #endif
       if (!sc_cholesky(n, R, n, 1e-14)) return 0;
-      for (i = 0; i < n; ++i) t[i] = 1.0 / R[i * n + i]; /* (multiplied: no division chain) */
+      for (i = 0; i < n && !(fused && solved); ++i)
+        t[i] = 1.0 / R[i * n + i]; /* (multiplied: no division chain) */
     }
     /* q = R^-1 grad; Y = R^-1 Z_H (column j, held row j's, at Y + j n; a chord step: the
      * last), lh = Y^T q - w_H (w_H = Z_H^T y + c_H), S = Y^T Y factored */
@@ -525,8 +537,21 @@ __attribute__((target("avx"), noinline)) static int piece_avx(sc_problem *p, con
                                                               const double *g, const double *c,
                                                               double *work, sc_int *iwork,
                                                               sc_int *def) {
-  return piece(SNAKECG_NS, p, Z, g, c, work, iwork, def);
+  return piece(SNAKECG_NS, p, Z, g, c, work, iwork, def, 0);
 }
+#ifdef SC_SMALL_FMA
+/* the snake's copy with AVX2 and FMA where the processor has both: the compiler fuses the
+ * products into the sums (the default contraction of GNU C) and the Hessian's factor is
+ * sc_small_factor_fma's (reciprocals): within rounding of the copies without, not bit for bit */
+__attribute__((target("avx2,fma"), noinline)) static int piece_fma(sc_problem *p,
+                                                                   const double *Z,
+                                                                   const double *g,
+                                                                   const double *c,
+                                                                   double *work, sc_int *iwork,
+                                                                   sc_int *def) {
+  return piece(SNAKECG_NS, p, Z, g, c, work, iwork, def, 1);
+}
+#endif
 #endif
 
 /* sc_primal_piece's body, compiled apart for the snake alone (n = SNAKECG_NS coordinates, no
@@ -534,9 +559,14 @@ __attribute__((target("avx"), noinline)) static int piece_avx(sc_problem *p, con
 SC_INTERNAL int sc_primal_piece(sc_problem *p, const double *Z, const double *g,
                                 const double *c, double *work, sc_int *iwork, sc_int *def) {
 #ifdef PRIMAL_AVX
-  if (p->n == SNAKECG_NS && primal_on == 1 && __builtin_cpu_supports("avx"))
+#ifdef SC_SMALL_FMA
+  if (p->n == SNAKECG_NS && primal_on == 1 && __builtin_cpu_supports("avx2") &&
+      __builtin_cpu_supports("fma"))
+    return piece_fma(p, Z, g, c, work, iwork, def);
+#endif
+  if (p->n == SNAKECG_NS && primal_on != 2 && __builtin_cpu_supports("avx"))
     return piece_avx(p, Z, g, c, work, iwork, def);
 #endif
-  if (p->n == SNAKECG_NS) return piece(SNAKECG_NS, p, Z, g, c, work, iwork, def);
-  return piece(p->n, p, Z, g, c, work, iwork, def);
+  if (p->n == SNAKECG_NS) return piece(SNAKECG_NS, p, Z, g, c, work, iwork, def, 0);
+  return piece(p->n, p, Z, g, c, work, iwork, def, 0);
 }

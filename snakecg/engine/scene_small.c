@@ -87,6 +87,50 @@ SC_INTERNAL int sc_small_factor(const double *M, const double *f, double thr, do
                                 double *a) {
   return factor_ns(SNAKECG_NS, M, f, thr, L, a);
 }
+
+#ifdef SC_SMALL_FMA
+/* factor_ns's rounding-free-to-change variant for the primal piece's Hessian alone (never the
+ * inertia's: that one stays factor_ns, bit for bit sc_cholesky's): the same columns, four
+ * entries a register, each column multiplied by its pivot's reciprocal (one division a column
+ * instead of one a pair, off the chain to the next column but for that one) and its updates
+ * fused multiply-adds; the reciprocals kept (rl) for the piece's triangular solves. The same
+ * pivot rule (a pivot not above thr: 0, L, a and rl unwritten). */
+typedef double __attribute__((vector_size(32))) sc_v4f;
+__attribute__((target("avx2,fma"), noinline)) SC_INTERNAL int
+sc_small_factor_fma(const double *M, const double *f, double thr, double *L, double *a,
+                    double *rl) {
+  enum { T = SNAKECG_NS, Q = (SNAKECG_NS + 4) / 4 }; /* (Q quads a column: rows 0..T, f's) */
+  sc_v4f C[T][Q];
+  double r[T];
+  sc_int i, j, k, p;
+  SC_UNROLL for (k = 0; k < T; ++k) {
+    double *c = (double *)C[k];
+    SC_UNROLL for (i = 0; i < 4 * Q; ++i) c[i] = i >= k && i < T ? M[i * T + k] : 0.0;
+    c[T] = f[k];
+  }
+  SC_UNROLL for (k = 0; k < T; ++k) { /* column k, held in registers */
+    sc_v4f c[Q];
+    double d;
+    SC_UNROLL for (p = k / 4; p < Q; ++p) c[p] = C[k][p];
+    SC_UNROLL for (j = 0; j < k; ++j) {
+      const double b = C[j][k / 4][k % 4]; /* L_kj */
+      SC_UNROLL for (p = k / 4; p < Q; ++p) c[p] -= b * C[j][p];
+    }
+    d = c[k / 4][k % 4];
+    if (!(d > thr)) return 0;
+    d = sqrt(d);
+    r[k] = 1.0 / d;
+    SC_UNROLL for (p = k / 4; p < Q; ++p) C[k][p] = c[p] * r[k];
+    C[k][k / 4][k % 4] = d;
+  }
+  SC_UNROLL for (i = 0; i < T; ++i) {
+    SC_UNROLL for (k = 0; k <= i; ++k) L[i * T + k] = C[k][i / 4][i % 4];
+    a[i] = C[i][T / 4][T % 4];
+    rl[i] = r[i];
+  }
+  return 1;
+}
+#endif
 #endif
 
 /* The dense block's factor (t x t, its threshold rel_t; big_t its largest diagonal entry) and
