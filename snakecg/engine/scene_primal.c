@@ -37,6 +37,9 @@
 #include "engine.h"
 #include "scene_sets.h"
 #include "scene_small.h"
+#ifdef SC_SMALL_FMA
+#include "scene_primal.h"
+#endif
 
 #if defined(__GNUC__) /* (inlined where the caller makes the size a constant) */
 #define PRIMAL_FLAT static inline __attribute__((always_inline))
@@ -373,8 +376,11 @@ PRIMAL_FLAT int piece(sc_int n, sc_problem *p, const double *Z, const double *g,
         gr[i] += z0[i] * r0 + z1[i] * r1;
       }
     }
-    for (j = ns * n; fresh && j < ((ns + 3) / 4) * 4 * n; ++j) Y[j] = 0.0;
-    for (i = 0; i < n && fresh; ++i) { /* R's row i: the terms four columns of T at a time
+#ifdef SC_SMALL_FMA
+    if (fused && fresh) sc_primal_hessian(ns, Y, R);
+#endif
+    for (j = ns * n; fresh && !fused && j < ((ns + 3) / 4) * 4 * n; ++j) Y[j] = 0.0;
+    for (i = 0; i < n && fresh && !fused; ++i) { /* R's row i: the terms four columns of T at a time
       (its contiguous part vectorised) */
       double *restrict ri = R + i * n;
       for (k = 0; k <= i; ++k) ri[k] = 0.0;
