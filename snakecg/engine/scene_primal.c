@@ -234,19 +234,29 @@ PRIMAL_FLAT void held_cols(sc_int n, const int nc, const double *R, const double
  * below nf, their forces made the minimum-norm ones of the same Z_F lam_F: Z_F^T x,
  * K x = Z_F lam_F. Scratch: K n x n, v, x, t n each, perm n, zf n nf (the rows' columns of
  * Z gathered: K and v summed row by row of F in its order, each entry's sum as a dot
- * product over F would add it). */
-static sc_int face_rank(sc_problem *p, const double *Z, const sc_int *F, sc_int nf, double *K,
-                        double *v, double *x, double *t, sc_int *perm, double *zf,
-                        int apply) {
-  const sc_int n = p->n, m = p->m;
+ * product over F would add it; the FMA copy's: K by sc_primal_hessian's quads). */
+PRIMAL_FLAT sc_int face_rank_in(sc_problem *p, const double *Z, const sc_int *F, sc_int nf,
+                                double *K, double *v, double *x, double *t, sc_int *perm,
+                                double *zf, int apply, const int fused) {
+  const sc_int n = fused ? SNAKECG_NS : p->n, m = p->m;
   sc_int i, j, k, rank;
   for (j = 0; j < nf; ++j)
     for (i = 0; i < n; ++i) zf[j * n + i] = Z[i * m + F[j]];
-  for (i = 0; i < n; ++i) {
+#ifdef SC_SMALL_FMA
+  if (fused) {
+    sc_primal_hessian(nf, zf, K, 0.0);
+    for (i = 0; i < n; ++i) v[i] = 0.0;
+    for (j = 0; j < nf; ++j) {
+      const double *restrict zj = zf + j * n, l = p->lam[F[j]];
+      for (i = 0; i < n; ++i) v[i] += zj[i] * l;
+    }
+  }
+#endif
+  for (i = 0; i < n && !fused; ++i) {
     v[i] = 0.0;
     for (k = 0; k <= i; ++k) K[i * n + k] = 0.0;
   }
-  for (j = 0; j < nf; ++j) {
+  for (j = 0; j < nf && !fused; ++j) {
     const double *restrict zj = zf + j * n, l = p->lam[F[j]];
     for (i = 0; i < n; ++i) {
       double *restrict ki = K + i * n;
@@ -264,6 +274,21 @@ static sc_int face_rank(sc_problem *p, const double *Z, const sc_int *F, sc_int 
     }
   return rank;
 }
+static sc_int face_rank(sc_problem *p, const double *Z, const sc_int *F, sc_int nf, double *K,
+                        double *v, double *x, double *t, sc_int *perm, double *zf,
+                        int apply) {
+  return face_rank_in(p, Z, F, nf, K, v, x, t, perm, zf, apply, 0);
+}
+#ifdef SC_SMALL_FMA
+__attribute__((target("avx2,fma"), noinline)) static sc_int face_rank_fma(
+    sc_problem *p, const double *Z, const sc_int *F, sc_int nf, double *K, double *v, double *x,
+    double *t, sc_int *perm, double *zf, int apply) {
+  return face_rank_in(p, Z, F, nf, K, v, x, t, perm, zf, apply, 1);
+}
+#define FACE_RANK(...) (fused ? face_rank_fma(__VA_ARGS__) : face_rank(__VA_ARGS__))
+#else
+#define FACE_RANK face_rank
+#endif
 
 /* The piece of p->state (its forces' start in p->lam) solved in the primal: p->lam and p->w
  * (every row's, w = Z^T y + c, y = g + Z lam to rounding) filled. g = L^-1 f, Z = L^-1 A^T
@@ -377,7 +402,7 @@ PRIMAL_FLAT int piece(sc_int n, sc_problem *p, const double *Z, const double *g,
       }
     }
 #ifdef SC_SMALL_FMA
-    if (fused && fresh) sc_primal_hessian(ns, Y, R);
+    if (fused && fresh) sc_primal_hessian(ns, Y, R, 1.0);
 #endif
     for (j = ns * n; fresh && !fused && j < ((ns + 3) / 4) * 4 * n; ++j) Y[j] = 0.0;
     for (i = 0; i < n && fresh && !fused; ++i) { /* R's row i: the terms four columns of T at a time
@@ -511,10 +536,10 @@ PRIMAL_FLAT int piece(sc_int n, sc_problem *p, const double *Z, const double *g,
   for (k = 0, nf = h; k < nb; ++k)
     if (p->state[k] != S_HELD && sc_still(p, k))
       for (i = 0; i < sc_block_size(p->kind[k]); ++i) hr[nf++] = p->start[k] + i;
-  if (rank < h && nf > h && face_rank(p, Z, hr, h, R, q, dy, t, perm, Y, 0) != rank)
+  if (rank < h && nf > h && FACE_RANK(p, Z, hr, h, R, q, dy, t, perm, Y, 0) != rank)
     return 0; /* (the held rows' rank: the dual's, to the pivots') */
   if (rank < h || nf > h) {
-    sc_int rf = face_rank(p, Z, hr, nf, R, q, dy, t, perm, Y, 1);
+    sc_int rf = FACE_RANK(p, Z, hr, nf, R, q, dy, t, perm, Y, 1);
     if (nf == h && rf != rank) return 0;
     if (rf < nf) {
       dep = 1;

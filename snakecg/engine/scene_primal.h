@@ -7,13 +7,13 @@
 /* four doubles, loaded and stored at any double's address */
 typedef double __attribute__((vector_size(32), aligned(8))) sc_pv4;
 
-/* The Hessian I + T T^T's lower triangle (R, n_s x n_s row-major; its upper triangle not
+/* The Hessian d I + T T^T's lower triangle (R, n_s x n_s row-major; its upper triangle not
  * written) from T's ns columns (column j at T + j n_s): row i's entries four at a time, each
  * quad's sum over the columns in order in one register (fused multiply-adds), the quad past
  * the diagonal stored entry by entry. T's last quad of a column is read past its n_s
  * entries (into the next column or T's room: its lanes past the row are never stored). */
 __attribute__((always_inline)) static inline void sc_primal_hessian(sc_int ns, const double *T,
-                                                                    double *R) {
+                                                                    double *R, double d) {
   enum { N = SNAKECG_NS, Q = (SNAKECG_NS + 3) / 4 };
   sc_int i, j, q;
   SC_UNROLL for (i = 0; i < N; ++i) {
@@ -25,7 +25,7 @@ __attribute__((always_inline)) static inline void sc_primal_hessian(sc_int ns, c
     }
     SC_UNROLL for (q = 0; q < i / 4; ++q) *(sc_pv4 *)(R + i * N + 4 * q) = acc[q];
     SC_UNROLL for (q = 0; q <= i % 4; ++q) R[i * N + 4 * (i / 4) + q] = acc[i / 4][q];
-    R[i * N + i] += 1.0;
+    R[i * N + i] += d;
   }
 }
 #endif
