@@ -632,7 +632,9 @@ def test_pegs_run_with_the_primal_piece_fma_copy_within_rounding(pegs):
     1e-12 of its scale (its largest entry, at least 1) but v, within 1e-10 of its scale: v =
     L^-T y carries the solve's rounding through the inertia's factor, most at an impact
     (measured: 6.3e-11 of 3.9 over these 0.5 s, where the primal and the dual paths
-    themselves differ by 1.2e-10); the same tries and answers. Where /proc/cpuinfo lists avx2 and fma,
+    themselves differ by 1.2e-10); the same tries, the answers within 1 % of them (a try at
+    a margin, the face's rank or the KKT acceptance, may go the other way by rounding: then
+    the dual path's answer, held to the same tolerances). Where /proc/cpuinfo lists avx2 and fma,
     the two runs must differ (the FMA copy ran: its rounding is its own)."""
     (plain, fused), counts = _pegs_runs_by_mode(pegs, (2, 1))
     assert plain.status == fused.status == "completed" and plain.steps == fused.steps
@@ -648,7 +650,8 @@ def test_pegs_run_with_the_primal_piece_fma_copy_within_rounding(pegs):
         rel = 1e-10 if k == "v" else 1e-12
         np.testing.assert_allclose(a[fin], b[fin], rtol=0, atol=rel * scale, err_msg=k)
         differs |= not np.array_equal(a, b)
-    np.testing.assert_array_equal(counts[0], counts[1])
+    assert counts[0][0] == counts[1][0]
+    assert abs(counts[0][1] - counts[1][1]) <= 0.01 * counts[0][0]
     assert counts[1][1] >= 0.9 * fused.steps
     if _cpu_has("avx2", "fma"):
         assert differs
