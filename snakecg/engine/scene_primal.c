@@ -376,8 +376,16 @@ PRIMAL_FLAT int piece(sc_int n, sc_problem *p, const double *Z, const double *g,
     }
     /* the gradient y - g_F + sum s_j Z_j u_j and (fresh) the Hessian I + T T^T (T's column j:
      * sqrt(s_j / |w_j|) v_j, contiguous in Y's room) */
-    for (i = 0; i < n; ++i) grad[i] = y[i] - gF[i];
-    for (j = 0; j < ns && !fresh; ++j) { /* (a chord step: the gradient alone) */
+#ifdef SC_SMALL_FMA
+    if (fused) { /* (the FMA copy: the gradient, T's columns, its kernels) */
+      for (j = 0; j < ns; ++j)
+        if (!(nws[j] > TOL_ACCEPT * p->wscale)) return 0;
+      sc_primal_grad(ns, y, gF, Zc, rad, ws, nws, grad, fresh ? Y : NULL);
+      if (fresh) sc_primal_hessian(ns, Y, R, 1.0);
+    }
+#endif
+    for (i = 0; i < n && !fused; ++i) grad[i] = y[i] - gF[i];
+    for (j = 0; j < ns && !fresh && !fused; ++j) { /* (a chord step: the gradient alone) */
       double w0 = ws[2 * j], w1 = ws[2 * j + 1], nw = nws[j], r0, r1;
       const double *restrict z0 = Zc + 2 * j * n, *restrict z1 = z0 + n;
       double *restrict gr = grad;
@@ -386,7 +394,7 @@ PRIMAL_FLAT int piece(sc_int n, sc_problem *p, const double *Z, const double *g,
       r1 = rad[j] * (w1 / nw);
       for (i = 0; i < n; ++i) gr[i] += z0[i] * r0 + z1[i] * r1;
     }
-    for (j = 0; j < ns && fresh; ++j) {
+    for (j = 0; j < ns && fresh && !fused; ++j) {
       double w0 = ws[2 * j], w1 = ws[2 * j + 1], nw = nws[j], cj, r0, r1;
       const double *restrict z0 = Zc + 2 * j * n, *restrict z1 = z0 + n;
       double *restrict tj = Y + j * n, *restrict gr = grad;
@@ -401,9 +409,6 @@ PRIMAL_FLAT int piece(sc_int n, sc_problem *p, const double *Z, const double *g,
         gr[i] += z0[i] * r0 + z1[i] * r1;
       }
     }
-#ifdef SC_SMALL_FMA
-    if (fused && fresh) sc_primal_hessian(ns, Y, R, 1.0);
-#endif
     for (j = ns * n; fresh && !fused && j < ((ns + 3) / 4) * 4 * n; ++j) Y[j] = 0.0;
     for (i = 0; i < n && fresh && !fused; ++i) { /* R's row i: the terms four columns of T at a time
       (its contiguous part vectorised) */
@@ -473,7 +478,10 @@ PRIMAL_FLAT int piece(sc_int n, sc_problem *p, const double *Z, const double *g,
       const double *restrict yj = Y + j * n, l = lh[j];
       for (i = 0; i < n; ++i) dy[i] += yj[i] * l;
     }
-    for (i = n - 1; i >= 0; --i) { /* (by R's rows: contiguous, vectorised) */
+#ifdef SC_SMALL_FMA
+    if (fused) sc_primal_back(R, t, dy);
+#endif
+    for (i = n - 1; i >= 0 && !fused; --i) { /* (by R's rows: contiguous, vectorised) */
       const double *restrict ri = R + i * n;
       double *restrict d = dy, di = dy[i] * t[i];
       d[i] = di;
