@@ -37,15 +37,13 @@
 #include "engine.h"
 #include "scene_sets.h"
 #include "scene_small.h"
-#ifdef SC_SMALL_FMA
-#include "scene_primal.h"
-#endif
 
 #if defined(__GNUC__) /* (inlined where the caller makes the size a constant) */
 #define PRIMAL_FLAT static inline __attribute__((always_inline))
 #else
 #define PRIMAL_FLAT static inline
 #endif
+#include "scene_primal.h" /* (its kernels) */
 
 #define PRIMAL_STEPS 12 /* Newton and chord steps before the dual path takes over */
 #define PRIMAL_DEP 1e-8 /* held rows taken as dependent below this pivot ratio (dual: 1e-10) */
@@ -229,66 +227,6 @@ PRIMAL_FLAT void held_cols(sc_int n, const int nc, const double *R, const double
   for (c = 0; c < nc; ++c) lh[c] = u[c];
 }
 
-/* The rank of the rows F (nf of them) by K = Z_F Z_F^T (n x n: G_FF's nonzero eigenvalues),
- * its pivots above NULL_TOL of the first (sc_min_norm_face's rule); with apply and a rank
- * below nf, their forces made the minimum-norm ones of the same Z_F lam_F: Z_F^T x,
- * K x = Z_F lam_F. Scratch: K n x n, v, x, t n each, perm n, zf n nf (the rows' columns of
- * Z gathered: K and v summed row by row of F in its order, each entry's sum as a dot
- * product over F would add it; the FMA copy's: K by sc_primal_hessian's quads). */
-PRIMAL_FLAT sc_int face_rank_in(sc_problem *p, const double *Z, const sc_int *F, sc_int nf,
-                                double *K, double *v, double *x, double *t, sc_int *perm,
-                                double *zf, int apply, const int fused) {
-  const sc_int n = fused ? SNAKECG_NS : p->n, m = p->m;
-  sc_int i, j, k, rank;
-  for (j = 0; j < nf; ++j)
-    for (i = 0; i < n; ++i) zf[j * n + i] = Z[i * m + F[j]];
-#ifdef SC_SMALL_FMA
-  if (fused) {
-    sc_primal_hessian(nf, zf, K, 0.0);
-    for (i = 0; i < n; ++i) v[i] = 0.0;
-    for (j = 0; j < nf; ++j) {
-      const double *restrict zj = zf + j * n, l = p->lam[F[j]];
-      for (i = 0; i < n; ++i) v[i] += zj[i] * l;
-    }
-  }
-#endif
-  for (i = 0; i < n && !fused; ++i) {
-    v[i] = 0.0;
-    for (k = 0; k <= i; ++k) K[i * n + k] = 0.0;
-  }
-  for (j = 0; j < nf && !fused; ++j) {
-    const double *restrict zj = zf + j * n, l = p->lam[F[j]];
-    for (i = 0; i < n; ++i) {
-      double *restrict ki = K + i * n;
-      const double zi = zj[i];
-      v[i] += zi * l;
-      for (k = 0; k <= i; ++k) ki[k] += zi * zj[k];
-    }
-  }
-  rank = sc_psd_solve(n, K, n, v, NULL_TOL, x, t, perm);
-  if (apply && rank < nf)
-    for (j = 0; j < nf; ++j) {
-      double s = 0.0;
-      for (i = 0; i < n; ++i) s += zf[j * n + i] * x[i];
-      p->lam[F[j]] = s;
-    }
-  return rank;
-}
-static sc_int face_rank(sc_problem *p, const double *Z, const sc_int *F, sc_int nf, double *K,
-                        double *v, double *x, double *t, sc_int *perm, double *zf,
-                        int apply) {
-  return face_rank_in(p, Z, F, nf, K, v, x, t, perm, zf, apply, 0);
-}
-#ifdef SC_SMALL_FMA
-__attribute__((target("avx2,fma"), noinline)) static sc_int face_rank_fma(
-    sc_problem *p, const double *Z, const sc_int *F, sc_int nf, double *K, double *v, double *x,
-    double *t, sc_int *perm, double *zf, int apply) {
-  return face_rank_in(p, Z, F, nf, K, v, x, t, perm, zf, apply, 1);
-}
-#define FACE_RANK(...) (fused ? face_rank_fma(__VA_ARGS__) : face_rank(__VA_ARGS__))
-#else
-#define FACE_RANK face_rank
-#endif
 
 /* The piece of p->state (its forces' start in p->lam) solved in the primal: p->lam and p->w
  * (every row's, w = Z^T y + c, y = g + Z lam to rounding) filled. g = L^-1 f, Z = L^-1 A^T

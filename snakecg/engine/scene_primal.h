@@ -1,8 +1,11 @@
-/* snakecg's engine: the primal piece's kernels for its FMA copy alone (scene_primal.c's
- * piece_fma: n = n_s, compiled with AVX2 and FMA; its rounding is its own). Included by
- * scene_primal.c after engine.h and scene_small.h, where SC_SMALL_FMA is defined. */
+/* snakecg's engine: the primal piece's kernels apart from its body (scene_primal.c): the
+ * kernels of its FMA copy alone (piece_fma: n = n_s, compiled with AVX2 and FMA; its rounding
+ * is its own), then the face's rank (every copy's). Included by scene_primal.c alone, after
+ * engine.h, scene_sets.h and scene_small.h. */
 #ifndef SNAKECG_ENGINE_SCENE_PRIMAL_H
 #define SNAKECG_ENGINE_SCENE_PRIMAL_H
+
+#ifdef SC_SMALL_FMA
 
 /* four doubles, loaded and stored at any double's address */
 typedef double __attribute__((vector_size(32), aligned(8))) sc_pv4;
@@ -87,4 +90,66 @@ __attribute__((always_inline)) static inline void sc_primal_back(const double *R
   }
   PV4_STORE(dy, d);
 }
+#endif
+
+/* The rank of the rows F (nf of them) by K = Z_F Z_F^T (n x n: G_FF's nonzero eigenvalues),
+ * its pivots above NULL_TOL of the first (sc_min_norm_face's rule); with apply and a rank
+ * below nf, their forces made the minimum-norm ones of the same Z_F lam_F: Z_F^T x,
+ * K x = Z_F lam_F. Scratch: K n x n, v, x, t n each, perm n, zf n nf (the rows' columns of
+ * Z gathered: K and v summed row by row of F in its order, each entry's sum as a dot
+ * product over F would add it; the FMA copy's: K by sc_primal_hessian's quads). */
+PRIMAL_FLAT sc_int face_rank_in(sc_problem *p, const double *Z, const sc_int *F, sc_int nf,
+                                double *K, double *v, double *x, double *t, sc_int *perm,
+                                double *zf, int apply, const int fused) {
+  const sc_int n = fused ? SNAKECG_NS : p->n, m = p->m;
+  sc_int i, j, k, rank;
+  for (j = 0; j < nf; ++j)
+    for (i = 0; i < n; ++i) zf[j * n + i] = Z[i * m + F[j]];
+#ifdef SC_SMALL_FMA
+  if (fused) {
+    sc_primal_hessian(nf, zf, K, 0.0);
+    for (i = 0; i < n; ++i) v[i] = 0.0;
+    for (j = 0; j < nf; ++j) {
+      const double *restrict zj = zf + j * n, l = p->lam[F[j]];
+      for (i = 0; i < n; ++i) v[i] += zj[i] * l;
+    }
+  }
+#endif
+  for (i = 0; i < n && !fused; ++i) {
+    v[i] = 0.0;
+    for (k = 0; k <= i; ++k) K[i * n + k] = 0.0;
+  }
+  for (j = 0; j < nf && !fused; ++j) {
+    const double *restrict zj = zf + j * n, l = p->lam[F[j]];
+    for (i = 0; i < n; ++i) {
+      double *restrict ki = K + i * n;
+      const double zi = zj[i];
+      v[i] += zi * l;
+      for (k = 0; k <= i; ++k) ki[k] += zi * zj[k];
+    }
+  }
+  rank = sc_psd_solve(n, K, n, v, NULL_TOL, x, t, perm);
+  if (apply && rank < nf)
+    for (j = 0; j < nf; ++j) {
+      double s = 0.0;
+      for (i = 0; i < n; ++i) s += zf[j * n + i] * x[i];
+      p->lam[F[j]] = s;
+    }
+  return rank;
+}
+static sc_int face_rank(sc_problem *p, const double *Z, const sc_int *F, sc_int nf, double *K,
+                        double *v, double *x, double *t, sc_int *perm, double *zf,
+                        int apply) {
+  return face_rank_in(p, Z, F, nf, K, v, x, t, perm, zf, apply, 0);
+}
+#ifdef SC_SMALL_FMA
+__attribute__((target("avx2,fma"), noinline)) static sc_int face_rank_fma(
+    sc_problem *p, const double *Z, const sc_int *F, sc_int nf, double *K, double *v, double *x,
+    double *t, sc_int *perm, double *zf, int apply) {
+  return face_rank_in(p, Z, F, nf, K, v, x, t, perm, zf, apply, 1);
+}
+#define FACE_RANK(...) (fused ? face_rank_fma(__VA_ARGS__) : face_rank(__VA_ARGS__))
+#else
+#define FACE_RANK face_rank
+#endif
 #endif
