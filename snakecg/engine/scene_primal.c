@@ -102,9 +102,12 @@ SC_INTERNAL sc_int sc_primal_work(sc_int n, sc_int m) {
  * (s: their radii). */
 PRIMAL_FLAT double sliding(sc_int n, sc_int ld, sc_int ns, const double *s, const double *Zs,
                            const double *cg, const double *y, double *restrict ws,
-                           double *restrict nws) {
+                           double *restrict nws, const int fused) {
   sc_int i, j;
   double v = 0.0;
+#ifdef SC_SMALL_FMA
+  if (fused) return sc_primal_sliding(ld, ns, s, Zs, cg, y, ws, nws);
+#endif
   for (j = 0; j + 3 < 2 * ns; j += 4) { /* (four sums at a time in registers, each over the
     coordinates in order) */
     double w0 = cg[j], w1 = cg[j + 1], w2 = cg[j + 2], w3 = cg[j + 3];
@@ -309,7 +312,7 @@ PRIMAL_FLAT int piece(sc_int n, sc_problem *p, const double *Z, const double *g,
     int feasible = it > 0;
     if (it == 0) { /* (the objective: its nonsmooth part v, |y - g_F|^2 dsq; then the accepted
       point's, kept) */
-      v = sliding(n, lds, ns, rad, Zs, cs, y, ws, nws);
+      v = sliding(n, lds, ns, rad, Zs, cs, y, ws, nws, fused);
       for (i = 0, dsq = 0.0; i < n; ++i) dsq += (y[i] - gF[i]) * (y[i] - gF[i]);
     }
     /* the gradient y - g_F + sum s_j Z_j u_j and (fresh) the Hessian I + T T^T (T's column j:
@@ -437,7 +440,7 @@ PRIMAL_FLAT int piece(sc_int n, sc_problem *p, const double *Z, const double *g,
         for (i = 0; i < n; ++i) yt[i] = y[i] + tstep * dy[i];
         d1 = 0.0;
         for (i = 0; i < n; ++i) d1 += (yt[i] - gF[i]) * (yt[i] - gF[i]);
-        vt = sliding(n, lds, ns, rad, Zs, cs, yt, ws, nws);
+        vt = sliding(n, lds, ns, rad, Zs, cs, yt, ws, nws, fused);
         big = 1e-14 * (fabs(0.5 * d0 + v0) + p->fscale * p->wscale);
         if (!feasible || 0.5 * d1 + vt <= 0.5 * d0 + v0 + big || tstep < 1e-3) break;
         tstep *= 0.5;

@@ -70,6 +70,32 @@ __attribute__((always_inline)) static inline void sc_primal_grad(
   PV4_STORE(grad, g);
 }
 
+/* sliding's w_i = Z_i^T y + c_i, |w_i| and sum s_i |w_i| (scene_primal.c's, the same
+ * arguments, n = n_s): four rows' sums (two discs') in one register over the coordinates,
+ * the last pair of rows in half of one. */
+__attribute__((always_inline)) static inline double sc_primal_sliding(
+    sc_int ld, sc_int ns, const double *s, const double *Zs, const double *cs, const double *y,
+    double *restrict ws, double *restrict nws) {
+  typedef double __attribute__((vector_size(16), aligned(8))) sc_pv2;
+  sc_int i, j;
+  double v = 0.0;
+  for (j = 0; j + 3 < 2 * ns; j += 4) {
+    sc_pv4 w = *(const sc_pv4 *)(cs + j);
+    SC_UNROLL for (i = 0; i < SNAKECG_NS; ++i) w += *(const sc_pv4 *)(Zs + i * ld + j) * y[i];
+    *(sc_pv4 *)(ws + j) = w;
+  }
+  if (j < 2 * ns) {
+    sc_pv2 w = *(const sc_pv2 *)(cs + j);
+    SC_UNROLL for (i = 0; i < SNAKECG_NS; ++i) w += *(const sc_pv2 *)(Zs + i * ld + j) * y[i];
+    *(sc_pv2 *)(ws + j) = w;
+  }
+  for (j = 0; j < ns; ++j) {
+    nws[j] = sqrt(ws[2 * j] * ws[2 * j] + ws[2 * j + 1] * ws[2 * j + 1]);
+    v += s[j] * nws[j];
+  }
+  return v;
+}
+
 /* dy = R^-T dy (R's lower triangle, t its diagonal's reciprocals), dy in four registers:
  * row i's entries before the diagonal (its quad past them masked to zeros) times dy_i taken
  * from the entries before it. dy is read past its n_s entries (lanes never stored). */
