@@ -284,8 +284,11 @@ PRIMAL_FLAT int piece(sc_int n, sc_problem *p, const double *Z, const double *g,
   else
     for (j = 0, cs = cg; j < 2 * ns; ++j) cg[j] = c ? c[sl[j / 2] + j % 2] : 0.0;
   for (j = 0; j < h; ++j) cg[2 * ns + j] = c ? c[hr[j]] : 0.0;
-  for (i = 0; i < n; ++i) y[i] = gF[i];
-  for (j = 0; j < ns; ++j) {
+#ifdef SC_SMALL_FMA
+  if (fused && run) sc_primal_start(ns, Z + sl[0], m, p->lam + sl[0], gF, Zc, y);
+#endif
+  for (i = 0; i < n && !(fused && run); ++i) y[i] = gF[i];
+  for (j = 0; j < ns && !(fused && run); ++j) {
     double *restrict z0 = Zc + 2 * j * n, *restrict z1 = z0 + n, *restrict yy = y;
     const double *zr = Z + sl[j], l0 = p->lam[sl[j]], l1 = p->lam[sl[j] + 1];
     for (i = 0; i < n; ++i) z0[i] = zr[i * m], z1[i] = zr[i * m + 1];

@@ -70,6 +70,47 @@ __attribute__((always_inline)) static inline void sc_primal_grad(
   PV4_STORE(grad, g);
 }
 
+/* The sliding discs' column pairs of Z gathered (Zc: 2 ns columns of n_s, from Zs: their
+ * rows one run, coordinate i's at Zs + i ld) by 4 x 4 blocks transposed in registers, and
+ * the start y = g_F + sum_j (Z_j lam_j) (lam: the discs' forces, one run) in four
+ * registers, disc by disc. g_F and Zc are read past their n_s entries (lanes never
+ * stored). */
+__attribute__((always_inline)) static inline void sc_primal_start(
+    sc_int ns, const double *Zs, sc_int ld, const double *lam, const double *gF,
+    double *restrict Zc, double *restrict y) {
+  typedef long long __attribute__((vector_size(32))) sc_pl4;
+  enum { N = SNAKECG_NS, Q = (SNAKECG_NS + 3) / 4 };
+  sc_pv4 g[Q];
+  sc_int i, j, q;
+  for (j = 0; j + 3 < 2 * ns; j += 4) {
+    SC_UNROLL for (i = 0; i + 3 < N; i += 4) {
+      const sc_pv4 a = *(const sc_pv4 *)(Zs + i * ld + j),
+                   b = *(const sc_pv4 *)(Zs + (i + 1) * ld + j),
+                   c = *(const sc_pv4 *)(Zs + (i + 2) * ld + j),
+                   d = *(const sc_pv4 *)(Zs + (i + 3) * ld + j);
+      const sc_pv4 ab0 = __builtin_shuffle(a, b, (sc_pl4){0, 4, 2, 6}),
+                   ab1 = __builtin_shuffle(a, b, (sc_pl4){1, 5, 3, 7}),
+                   cd0 = __builtin_shuffle(c, d, (sc_pl4){0, 4, 2, 6}),
+                   cd1 = __builtin_shuffle(c, d, (sc_pl4){1, 5, 3, 7});
+      *(sc_pv4 *)(Zc + j * N + i) = __builtin_shuffle(ab0, cd0, (sc_pl4){0, 1, 4, 5});
+      *(sc_pv4 *)(Zc + (j + 1) * N + i) = __builtin_shuffle(ab1, cd1, (sc_pl4){0, 1, 4, 5});
+      *(sc_pv4 *)(Zc + (j + 2) * N + i) = __builtin_shuffle(ab0, cd0, (sc_pl4){2, 3, 6, 7});
+      *(sc_pv4 *)(Zc + (j + 3) * N + i) = __builtin_shuffle(ab1, cd1, (sc_pl4){2, 3, 6, 7});
+    }
+    SC_UNROLL for (i = 4 * (N / 4); i < N; ++i)
+      SC_UNROLL for (q = 0; q < 4; ++q) Zc[(j + q) * N + i] = Zs[i * ld + j + q];
+  }
+  for (; j < 2 * ns; ++j)
+    SC_UNROLL for (i = 0; i < N; ++i) Zc[j * N + i] = Zs[i * ld + j];
+  SC_UNROLL for (q = 0; q < Q; ++q) g[q] = *(const sc_pv4 *)(gF + 4 * q);
+  for (j = 0; j < ns; ++j) {
+    const double *z0 = Zc + 2 * j * N, *z1 = z0 + N, l0 = lam[2 * j], l1 = lam[2 * j + 1];
+    SC_UNROLL for (q = 0; q < Q; ++q)
+      g[q] += l0 * *(const sc_pv4 *)(z0 + 4 * q) + l1 * *(const sc_pv4 *)(z1 + 4 * q);
+  }
+  PV4_STORE(y, g);
+}
+
 /* sliding's w_i = Z_i^T y + c_i, |w_i| and sum s_i |w_i| (scene_primal.c's, the same
  * arguments, n = n_s): four rows' sums (two discs') in one register over the coordinates,
  * the last pair of rows in half of one. */
