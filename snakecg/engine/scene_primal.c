@@ -94,7 +94,7 @@ int SNAKECG_EXPORT(core_scene_primal)(sc_int mode, double *counts) {
 
 /* Scratch (doubles) of sc_primal_piece for n coordinates and m rows. */
 SC_INTERNAL sc_int sc_primal_work(sc_int n, sc_int m) {
-  return n * n + 3 * n * m + m * m + 11 * n + 7 * m;
+  return 2 * n * n + 3 * n * m + m * m + 11 * n + 7 * m + 4; /* (Lt: n n + 4) */
 }
 
 /* w_i = Z_i^T y + c_i of the sliding discs' rows (Zs: their columns first, row i at Zs + i ld;
@@ -244,7 +244,7 @@ PRIMAL_FLAT int piece(sc_int n, sc_problem *p, const double *Z, const double *g,
   double *R = work, *Y = R + n * n, *S = Y + n * (m + 3), *gF = S + m * m, *y = gF + n,
          *grad = y + n, *q = grad + n, *dy = q + n, *yt = dy + n, *t = yt + n, *lh = t + n,
          *ws = lh + m, *rad = ws + m, *wt = rad + m, *bh = wt + m, *cg = bh + m, *Zg = cg + m,
-         *Zc = Zg + n * m, *nws = Zc + n * m;
+         *Zc = Zg + n * m, *nws = Zc + n * m, *Lt = nws + m;
   sc_int *hr = iwork, *sl = hr + m, *perm = sl + m, h = 0, ns = 0, i, j, k, it, rank = 0;
   double ysc, v = 0.0, dsq = 0.0, big, prev = INFINITY;
   int ok = 0, dep = 0, again = 0, fresh = 1, solved;
@@ -373,7 +373,7 @@ PRIMAL_FLAT int piece(sc_int n, sc_problem *p, const double *Z, const double *g,
         for (i = 0, big = 0.0; i < n; ++i) big = sc_max(big, R[i * n + i]);
 #ifdef SC_SMALL_FMA
         if (fused) { /* (the FMA copy: the factor's reciprocals kept as t) */
-          if (!sc_small_factor_fma(R, grad, 1e-14 * big, R, q, t)) return 0;
+          if (!sc_small_factor_fma(R, grad, 1e-14 * big, R, q, t, Lt)) return 0;
         } else
 #endif
         if (!sc_small_factor(R, grad, 1e-14 * big, R, q)) return 0;
@@ -386,7 +386,10 @@ PRIMAL_FLAT int piece(sc_int n, sc_problem *p, const double *Z, const double *g,
     }
     /* q = R^-1 grad; Y = R^-1 Z_H (column j, held row j's, at Y + j n; a chord step: the
      * last), lh = Y^T q - w_H (w_H = Z_H^T y + c_H), S = Y^T Y factored */
-    for (i = 0; i < n && !solved; ++i) {
+#ifdef SC_SMALL_FMA
+    if (fused && !fresh) sc_primal_fwd(Lt, t, grad, q); /* (the FMA copy: by L's columns) */
+#endif
+    for (i = 0; i < n && !solved && !fused; ++i) {
       const double *restrict ri = R + i * n;
       double s0 = grad[i], s1 = 0.0;
       for (k = 0; k + 1 < i; k += 2) {
@@ -396,18 +399,24 @@ PRIMAL_FLAT int piece(sc_int n, sc_problem *p, const double *Z, const double *g,
       if (k < i) s0 -= ri[k] * q[k];
       q[i] = (s0 + s1) * t[i];
     }
-    for (j = 0; j < h && !fresh; ++j) {
+    for (j = 0; j < h && (!fresh || fused); ++j) {
       const double *restrict yj = Y + j * n, *restrict zj = Zc + (2 * ns + j) * n;
       double u = -cg[2 * ns + j];
+#ifdef SC_SMALL_FMA
+      if (fresh) { /* (the FMA copy: Y's column by L's columns, S's row) */
+        sc_primal_fwd(Lt, t, zj, Y + j * n);
+        for (k = 0; k <= j; ++k) S[j * h + k] = sc_dot(Y + j * n, Y + k * n, n);
+      }
+#endif
       for (i = 0; i < n; ++i) u += yj[i] * q[i] - zj[i] * y[i];
       lh[j] = u;
     }
-    for (j = 0; j + 1 < h && fresh; j += 2) { /* (two columns side by side: two chains) */
+    for (j = 0; j + 1 < h && fresh && !fused; j += 2) { /* (two columns side by side) */
       held_cols(n, 2, R, t, Zc + (2 * ns + j) * n, cg + 2 * ns + j, y, q, Y + j * n, lh + j);
       for (k = 0; k <= j; ++k) S[j * h + k] = sc_dot(Y + j * n, Y + k * n, n);
       for (k = 0; k <= j + 1; ++k) S[(j + 1) * h + k] = sc_dot(Y + (j + 1) * n, Y + k * n, n);
     }
-    for (; j < h && fresh; ++j) {
+    for (; j < h && fresh && !fused; ++j) {
       held_cols(n, 1, R, t, Zc + (2 * ns + j) * n, cg + 2 * ns + j, y, q, Y + j * n, lh + j);
       for (k = 0; k <= j; ++k) S[j * h + k] = sc_dot(Y + j * n, Y + k * n, n);
     }

@@ -111,6 +111,28 @@ __attribute__((always_inline)) static inline void sc_primal_start(
   PV4_STORE(y, g);
 }
 
+/* x = R^-1 z by columns (Lt: R's columns, column i at Lt + i n_s from its diagonal on; t its
+ * diagonal's reciprocals), z in four registers: x_i from the entries before it, then the
+ * entries after it less column i times x_i (the quad of the diagonal masked to the entries
+ * past it). z and Lt are read past their n_s entries (lanes never stored). */
+__attribute__((always_inline)) static inline void sc_primal_fwd(const double *Lt, const double *t,
+                                                                const double *z, double *x) {
+  typedef long long __attribute__((vector_size(32))) sc_pl4;
+  enum { N = SNAKECG_NS, Q = (SNAKECG_NS + 3) / 4 };
+  static const sc_pl4 past[4] = {{0, -1, -1, -1}, {0, 0, -1, -1}, {0, 0, 0, -1}, {0, 0, 0, 0}};
+  sc_pv4 d[Q];
+  sc_int i, q;
+  SC_UNROLL for (q = 0; q < Q; ++q) d[q] = *(const sc_pv4 *)(z + 4 * q);
+  SC_UNROLL for (i = 0; i < N; ++i) {
+    const double *li = Lt + i * N, xi = d[i / 4][i % 4] * t[i];
+    d[i / 4][i % 4] = xi;
+    if (i % 4 < 3 && i + 1 < N)
+      d[i / 4] -= (sc_pv4)((sc_pl4) * (const sc_pv4 *)(li + 4 * (i / 4)) & past[i % 4]) * xi;
+    SC_UNROLL for (q = i / 4 + 1; q < Q; ++q) d[q] -= *(const sc_pv4 *)(li + 4 * q) * xi;
+  }
+  PV4_STORE(x, d);
+}
+
 /* sliding's w_i = Z_i^T y + c_i, |w_i| and sum s_i |w_i| (scene_primal.c's, the same
  * arguments, n = n_s): four rows' sums (two discs') in one register over the coordinates,
  * the last pair of rows in half of one. */

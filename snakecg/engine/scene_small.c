@@ -93,12 +93,14 @@ SC_INTERNAL int sc_small_factor(const double *M, const double *f, double thr, do
  * inertia's: that one stays factor_ns, bit for bit sc_cholesky's): the same columns, four
  * entries a register, each column multiplied by its pivot's reciprocal (one division a column
  * instead of one a pair, off the chain to the next column but for that one) and its updates
- * fused multiply-adds; the reciprocals kept (rl) for the piece's triangular solves. The same
- * pivot rule (a pivot not above thr: 0, L, a and rl unwritten). */
+ * fused multiply-adds; the reciprocals kept (rl) and L's columns (Lt: column k at Lt + k n_s,
+ * its entries from the diagonal on) for the piece's triangular solves. The same pivot rule
+ * (a pivot not above thr: 0, L, a, rl and Lt unwritten). */
 typedef double __attribute__((vector_size(32))) sc_v4f;
+typedef double __attribute__((vector_size(32), aligned(8))) sc_v4u; /* (at any double) */
 __attribute__((target("avx2,fma"), noinline)) SC_INTERNAL int
 sc_small_factor_fma(const double *M, const double *f, double thr, double *L, double *a,
-                    double *rl) {
+                    double *rl, double *Lt) {
   enum { T = SNAKECG_NS, Q = (SNAKECG_NS + 4) / 4 }; /* (Q quads a column: rows 0..T, f's) */
   sc_v4f C[T][Q];
   double r[T];
@@ -127,6 +129,10 @@ sc_small_factor_fma(const double *M, const double *f, double thr, double *L, dou
     SC_UNROLL for (k = 0; k <= i; ++k) L[i * T + k] = C[k][i / 4][i % 4];
     a[i] = C[i][T / 4][T % 4];
     rl[i] = r[i];
+  }
+  SC_UNROLL for (k = 0; k < T; ++k) {
+    SC_UNROLL for (p = k / 4; p < T / 4; ++p) *(sc_v4u *)(Lt + k * T + 4 * p) = C[k][p];
+    SC_UNROLL for (i = 4 * (T / 4); i < T; ++i) Lt[k * T + i] = C[k][i / 4][i % 4];
   }
   return 1;
 }
