@@ -27,9 +27,11 @@
  * piece is compiled a second time with AVX, chosen where the processor has it (no FMA: bit
  * for bit the copy without; core_scene_primal's mode 2 takes that one), and a third time with
  * AVX2 and FMA, chosen before it where the processor has both: the products fused into the
- * sums and the Hessian's factor scene_small.c's sc_small_factor_fma (its pivots' reciprocals
- * multiplied, kept for the triangular solves): within rounding of the others, not bit for
- * bit (mode 3 takes the AVX copy). */
+ * sums, the Hessian's factor scene_small.c's sc_small_factor_fma (its pivots' reciprocals
+ * multiplied, kept with L's columns for the triangular solves) and its loops over the
+ * coordinates scene_primal.h's kernels (the n_s coordinates four to a register: the start,
+ * the gradient with T, the Hessian, the discs' w, R^-1 by L's columns, R^-T, the face's K):
+ * within rounding of the others, not bit for bit (mode 3 takes the AVX copy). */
 #include <math.h>
 #include <string.h>
 
@@ -79,8 +81,8 @@ SC_INTERNAL int sc_primal_tally(int ok) {
 }
 
 /* The primal piece switched on (mode 1; 2: on with the snake's plain copy; 3: its AVX copy
- * without FMA) or off (0), or left (-1); counts (2 doubles, or NULL): the tries and answers since the last read, then
- * reset. Returns the previous mode. */
+ * without FMA) or off (0), or left (-1); counts (2 doubles, or NULL): the tries and answers
+ * since the last read, then reset. Returns the previous mode. */
 int SNAKECG_EXPORT(core_scene_primal)(sc_int mode, double *counts) {
   int prev = primal_on;
   if (mode >= 0 && mode <= 3) primal_on = (int)mode;
