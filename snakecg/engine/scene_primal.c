@@ -407,7 +407,11 @@ PRIMAL_FLAT int piece(sc_int n, sc_problem *p, const double *Z, const double *g,
 #ifdef SC_SMALL_FMA
       if (fresh) { /* (the FMA copy: Y's column by L's columns, S's row) */
         sc_primal_fwd(Lt, t, zj, Y + j * n);
-        for (k = 0; k <= j; ++k) S[j * h + k] = sc_dot(Y + j * n, Y + k * n, n);
+        for (k = 0; k <= j; ++k) S[j * h + k] = sc_primal_dot(yj, Y + k * n, NULL, NULL);
+      }
+      if (fused) {
+        lh[j] = u + sc_primal_dot(yj, q, zj, y);
+        continue;
       }
 #endif
       for (i = 0; i < n; ++i) u += yj[i] * q[i] - zj[i] * y[i];

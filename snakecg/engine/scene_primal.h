@@ -133,6 +133,24 @@ __attribute__((always_inline)) static inline void sc_primal_fwd(const double *Lt
   PV4_STORE(x, d);
 }
 
+/* a^T b - c^T e over the n_s coordinates (c NULL: a^T b), four lanes' sums then the rest */
+__attribute__((always_inline)) static inline double sc_primal_dot(const double *a,
+                                                                  const double *b,
+                                                                  const double *c,
+                                                                  const double *e) {
+  sc_pv4 s = {0.0, 0.0, 0.0, 0.0};
+  double r;
+  sc_int q, i;
+  SC_UNROLL for (q = 0; q < SNAKECG_NS / 4; ++q) {
+    s += *(const sc_pv4 *)(a + 4 * q) * *(const sc_pv4 *)(b + 4 * q);
+    if (c) s -= *(const sc_pv4 *)(c + 4 * q) * *(const sc_pv4 *)(e + 4 * q);
+  }
+  r = (s[0] + s[1]) + (s[2] + s[3]);
+  SC_UNROLL for (i = 4 * (SNAKECG_NS / 4); i < SNAKECG_NS; ++i)
+    r += c ? a[i] * b[i] - c[i] * e[i] : a[i] * b[i];
+  return r;
+}
+
 /* sliding's w_i = Z_i^T y + c_i, |w_i| and sum s_i |w_i| (scene_primal.c's, the same
  * arguments, n = n_s): four rows' sums (two discs') in one register over the coordinates,
  * the last pair of rows in half of one. */
