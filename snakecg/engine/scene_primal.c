@@ -27,10 +27,11 @@
  * piece is compiled a second time with AVX, chosen where the processor has it (no FMA: bit
  * for bit the copy without; core_scene_primal's mode 2 takes that one), and a third time with
  * AVX2 and FMA, chosen before it where the processor has both: the products fused into the
- * sums, the Hessian's factor scene_small.c's sc_small_factor_fma (its pivots' reciprocals
- * multiplied, kept with L's columns for the triangular solves) and its loops over the
+ * sums, the Hessian's factor scene_small.c's sc_small_factor_fma (by L D L^T, its
+ * diagonal's reciprocals kept with its columns for the triangular solves) and its loops over the
  * coordinates scene_primal.h's kernels (the n_s coordinates four to a register: the start,
- * the gradient with T, the Hessian, the discs' w, R^-1 by L's columns, R^-T, the face's K):
+ * the gradient with T, the Hessian, the discs' w, R^-1 by L's columns, R^-T, the held rows'
+ * dot products, the face's K):
  * within rounding of the others, not bit for bit (mode 3 takes the AVX copy). */
 #include <math.h>
 #include <string.h>
