@@ -69,8 +69,9 @@ class Core:
         active set tried first from given pieces (a time step's: the last step's)."""
         self.scene_primal = lib.entry_or_none("core_scene_primal")
         """scene_primal.c's ``core_scene_primal(mode, counts)``: the warm start's primal piece
-        switched on (1; 2: on without its AVX copy for the snake alone, the same answers) or
-        off (0) for the process, and this thread's tries and answers."""
+        switched on (1: the snake alone's fastest copy, with FMA where the processor has it,
+        within rounding of the others; 2: its plain copy; 3: its AVX copy, bit for bit the
+        plain one) or off (0) for the process, and this thread's tries and answers."""
         self.scene_tiny = lib.entry_or_none("core_scene_tiny")
         """scene_tiny.c's ``core_scene_tiny(mode, counts)``: the solve compiled for tiny problems
         switched on (1) or off (0) for the process, and the problems it tried and answered."""

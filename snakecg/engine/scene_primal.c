@@ -25,7 +25,14 @@
  * steps. For the snake alone (n = n_s, the pegs row) the Hessian's Cholesky and q = R^-1 grad
  * are scene_small.c's factor unrolled for n_s (sc_cholesky's factor bit for bit), and the
  * piece is compiled a second time with AVX, chosen where the processor has it (no FMA: bit
- * for bit the copy without; core_scene_primal's mode 2 takes that one). */
+ * for bit the copy without; core_scene_primal's mode 2 takes that one), and a third time with
+ * AVX2 and FMA, chosen before it where the processor has both: the products fused into the
+ * sums, the Hessian's factor scene_small.c's sc_small_factor_fma (by L D L^T, its
+ * diagonal's reciprocals kept with its columns for the triangular solves) and its loops over the
+ * coordinates scene_primal.h's kernels (the n_s coordinates four to a register: the start,
+ * the gradient with T, the Hessian, the discs' w, R^-1 by L's columns, R^-T, the held rows'
+ * dot products, the face's K):
+ * within rounding of the others, not bit for bit (mode 3 takes the AVX copy). */
 #include <math.h>
 #include <string.h>
 
@@ -39,12 +46,14 @@
 #else
 #define PRIMAL_FLAT static inline
 #endif
+#include "scene_primal.h" /* (its kernels) */
 
 #define PRIMAL_STEPS 12 /* Newton and chord steps before the dual path takes over */
 #define PRIMAL_DEP 1e-8 /* held rows taken as dependent below this pivot ratio (dual: 1e-10) */
 
-/* core_scene_primal's switch (1: the warm start tries the primal piece first; 2: the same
- * without the snake's AVX copy, which answers bit for bit as the copy without) and counts
+/* core_scene_primal's switch (1: the warm start tries the primal piece first, the snake's
+ * fastest copy; 2: the same with the plain copy; 3: with the AVX copy, which answers bit for
+ * bit as the plain one) and counts
  * (tries, answers: measurement only; atomic where the compiler has GCC's builtins, as the
  * batches' threads count together) */
 static int primal_on = 1;
@@ -72,12 +81,12 @@ SC_INTERNAL int sc_primal_tally(int ok) {
   return primal_on;
 }
 
-/* The primal piece switched on (mode 1; 2: on without the snake's AVX copy) or off (0), or
- * left (-1); counts (2 doubles, or NULL): the tries and answers since the last read, then
- * reset. Returns the previous mode. */
+/* The primal piece switched on (mode 1; 2: on with the snake's plain copy; 3: its AVX copy
+ * without FMA) or off (0), or left (-1); counts (2 doubles, or NULL): the tries and answers
+ * since the last read, then reset. Returns the previous mode. */
 int SNAKECG_EXPORT(core_scene_primal)(sc_int mode, double *counts) {
   int prev = primal_on;
-  if (mode >= 0 && mode <= 2) primal_on = (int)mode;
+  if (mode >= 0 && mode <= 3) primal_on = (int)mode;
   if (counts) {
     long t = PRIMAL_TAKE(0);
     long a = PRIMAL_TAKE(1);
@@ -88,7 +97,7 @@ int SNAKECG_EXPORT(core_scene_primal)(sc_int mode, double *counts) {
 
 /* Scratch (doubles) of sc_primal_piece for n coordinates and m rows. */
 SC_INTERNAL sc_int sc_primal_work(sc_int n, sc_int m) {
-  return n * n + 3 * n * m + m * m + 11 * n + 7 * m;
+  return 2 * n * n + 3 * n * m + m * m + 11 * n + 7 * m + 4; /* (Lt: n n + 4) */
 }
 
 /* w_i = Z_i^T y + c_i of the sliding discs' rows (Zs: their columns first, row i at Zs + i ld;
@@ -96,9 +105,12 @@ SC_INTERNAL sc_int sc_primal_work(sc_int n, sc_int m) {
  * (s: their radii). */
 PRIMAL_FLAT double sliding(sc_int n, sc_int ld, sc_int ns, const double *s, const double *Zs,
                            const double *cg, const double *y, double *restrict ws,
-                           double *restrict nws) {
+                           double *restrict nws, const int fused) {
   sc_int i, j;
   double v = 0.0;
+#ifdef SC_SMALL_FMA
+  if (fused) return sc_primal_sliding(ld, ns, s, Zs, cg, y, ws, nws);
+#endif
   for (j = 0; j + 3 < 2 * ns; j += 4) { /* (four sums at a time in registers, each over the
     coordinates in order) */
     double w0 = cg[j], w1 = cg[j + 1], w2 = cg[j + 2], w3 = cg[j + 3];
@@ -221,41 +233,6 @@ PRIMAL_FLAT void held_cols(sc_int n, const int nc, const double *R, const double
   for (c = 0; c < nc; ++c) lh[c] = u[c];
 }
 
-/* The rank of the rows F (nf of them) by K = Z_F Z_F^T (n x n: G_FF's nonzero eigenvalues),
- * its pivots above NULL_TOL of the first (sc_min_norm_face's rule); with apply and a rank
- * below nf, their forces made the minimum-norm ones of the same Z_F lam_F: Z_F^T x,
- * K x = Z_F lam_F. Scratch: K n x n, v, x, t n each, perm n, zf n nf (the rows' columns of
- * Z gathered: K and v summed row by row of F in its order, each entry's sum as a dot
- * product over F would add it). */
-static sc_int face_rank(sc_problem *p, const double *Z, const sc_int *F, sc_int nf, double *K,
-                        double *v, double *x, double *t, sc_int *perm, double *zf,
-                        int apply) {
-  const sc_int n = p->n, m = p->m;
-  sc_int i, j, k, rank;
-  for (j = 0; j < nf; ++j)
-    for (i = 0; i < n; ++i) zf[j * n + i] = Z[i * m + F[j]];
-  for (i = 0; i < n; ++i) {
-    v[i] = 0.0;
-    for (k = 0; k <= i; ++k) K[i * n + k] = 0.0;
-  }
-  for (j = 0; j < nf; ++j) {
-    const double *restrict zj = zf + j * n, l = p->lam[F[j]];
-    for (i = 0; i < n; ++i) {
-      double *restrict ki = K + i * n;
-      const double zi = zj[i];
-      v[i] += zi * l;
-      for (k = 0; k <= i; ++k) ki[k] += zi * zj[k];
-    }
-  }
-  rank = sc_psd_solve(n, K, n, v, NULL_TOL, x, t, perm);
-  if (apply && rank < nf)
-    for (j = 0; j < nf; ++j) {
-      double s = 0.0;
-      for (i = 0; i < n; ++i) s += zf[j * n + i] * x[i];
-      p->lam[F[j]] = s;
-    }
-  return rank;
-}
 
 /* The piece of p->state (its forces' start in p->lam) solved in the primal: p->lam and p->w
  * (every row's, w = Z^T y + c, y = g + Z lam to rounding) filled. g = L^-1 f, Z = L^-1 A^T
@@ -264,12 +241,13 @@ static sc_int face_rank(sc_problem *p, const double *Z, const sc_int *F, sc_int 
  * rank defect; work's first n: y), 0 when left to the dual path (p->lam, p->w then
  * undefined). */
 PRIMAL_FLAT int piece(sc_int n, sc_problem *p, const double *Z, const double *g,
-                      const double *c, double *work, sc_int *iwork, sc_int *def) {
+                      const double *c, double *work, sc_int *iwork, sc_int *def,
+                      const int fused) {
   const sc_int m = p->m, nb = p->nb;
   double *R = work, *Y = R + n * n, *S = Y + n * (m + 3), *gF = S + m * m, *y = gF + n,
          *grad = y + n, *q = grad + n, *dy = q + n, *yt = dy + n, *t = yt + n, *lh = t + n,
          *ws = lh + m, *rad = ws + m, *wt = rad + m, *bh = wt + m, *cg = bh + m, *Zg = cg + m,
-         *Zc = Zg + n * m, *nws = Zc + n * m;
+         *Zc = Zg + n * m, *nws = Zc + n * m, *Lt = nws + m;
   sc_int *hr = iwork, *sl = hr + m, *perm = sl + m, h = 0, ns = 0, i, j, k, it, rank = 0;
   double ysc, v = 0.0, dsq = 0.0, big, prev = INFINITY;
   int ok = 0, dep = 0, again = 0, fresh = 1, solved;
@@ -309,8 +287,11 @@ PRIMAL_FLAT int piece(sc_int n, sc_problem *p, const double *Z, const double *g,
   else
     for (j = 0, cs = cg; j < 2 * ns; ++j) cg[j] = c ? c[sl[j / 2] + j % 2] : 0.0;
   for (j = 0; j < h; ++j) cg[2 * ns + j] = c ? c[hr[j]] : 0.0;
-  for (i = 0; i < n; ++i) y[i] = gF[i];
-  for (j = 0; j < ns; ++j) {
+#ifdef SC_SMALL_FMA
+  if (fused && run) sc_primal_start(ns, Z + sl[0], m, p->lam + sl[0], gF, Zc, y);
+#endif
+  for (i = 0; i < n && !(fused && run); ++i) y[i] = gF[i];
+  for (j = 0; j < ns && !(fused && run); ++j) {
     double *restrict z0 = Zc + 2 * j * n, *restrict z1 = z0 + n, *restrict yy = y;
     const double *zr = Z + sl[j], l0 = p->lam[sl[j]], l1 = p->lam[sl[j] + 1];
     for (i = 0; i < n; ++i) z0[i] = zr[i * m], z1[i] = zr[i * m + 1];
@@ -337,13 +318,21 @@ PRIMAL_FLAT int piece(sc_int n, sc_problem *p, const double *Z, const double *g,
     int feasible = it > 0;
     if (it == 0) { /* (the objective: its nonsmooth part v, |y - g_F|^2 dsq; then the accepted
       point's, kept) */
-      v = sliding(n, lds, ns, rad, Zs, cs, y, ws, nws);
+      v = sliding(n, lds, ns, rad, Zs, cs, y, ws, nws, fused);
       for (i = 0, dsq = 0.0; i < n; ++i) dsq += (y[i] - gF[i]) * (y[i] - gF[i]);
     }
     /* the gradient y - g_F + sum s_j Z_j u_j and (fresh) the Hessian I + T T^T (T's column j:
      * sqrt(s_j / |w_j|) v_j, contiguous in Y's room) */
-    for (i = 0; i < n; ++i) grad[i] = y[i] - gF[i];
-    for (j = 0; j < ns && !fresh; ++j) { /* (a chord step: the gradient alone) */
+#ifdef SC_SMALL_FMA
+    if (fused) { /* (the FMA copy: the gradient, T's columns, its kernels) */
+      for (j = 0; j < ns; ++j)
+        if (!(nws[j] > TOL_ACCEPT * p->wscale)) return 0;
+      sc_primal_grad(ns, y, gF, Zc, rad, ws, nws, grad, fresh ? Y : NULL);
+      if (fresh) sc_primal_hessian(ns, Y, R, 1.0);
+    }
+#endif
+    for (i = 0; i < n && !fused; ++i) grad[i] = y[i] - gF[i];
+    for (j = 0; j < ns && !fresh && !fused; ++j) { /* (a chord step: the gradient alone) */
       double w0 = ws[2 * j], w1 = ws[2 * j + 1], nw = nws[j], r0, r1;
       const double *restrict z0 = Zc + 2 * j * n, *restrict z1 = z0 + n;
       double *restrict gr = grad;
@@ -352,7 +341,7 @@ PRIMAL_FLAT int piece(sc_int n, sc_problem *p, const double *Z, const double *g,
       r1 = rad[j] * (w1 / nw);
       for (i = 0; i < n; ++i) gr[i] += z0[i] * r0 + z1[i] * r1;
     }
-    for (j = 0; j < ns && fresh; ++j) {
+    for (j = 0; j < ns && fresh && !fused; ++j) {
       double w0 = ws[2 * j], w1 = ws[2 * j + 1], nw = nws[j], cj, r0, r1;
       const double *restrict z0 = Zc + 2 * j * n, *restrict z1 = z0 + n;
       double *restrict tj = Y + j * n, *restrict gr = grad;
@@ -367,8 +356,8 @@ PRIMAL_FLAT int piece(sc_int n, sc_problem *p, const double *Z, const double *g,
         gr[i] += z0[i] * r0 + z1[i] * r1;
       }
     }
-    for (j = ns * n; fresh && j < ((ns + 3) / 4) * 4 * n; ++j) Y[j] = 0.0;
-    for (i = 0; i < n && fresh; ++i) { /* R's row i: the terms four columns of T at a time
+    for (j = ns * n; fresh && !fused && j < ((ns + 3) / 4) * 4 * n; ++j) Y[j] = 0.0;
+    for (i = 0; i < n && fresh && !fused; ++i) { /* R's row i: the terms four columns of T at a time
       (its contiguous part vectorised) */
       double *restrict ri = R + i * n;
       for (k = 0; k <= i; ++k) ri[k] = 0.0;
@@ -385,16 +374,25 @@ PRIMAL_FLAT int piece(sc_int n, sc_problem *p, const double *Z, const double *g,
 #ifdef SC_FIXED
       if (n == SNAKECG_NS) {
         for (i = 0, big = 0.0; i < n; ++i) big = sc_max(big, R[i * n + i]);
+#ifdef SC_SMALL_FMA
+        if (fused) { /* (the FMA copy: the factor's reciprocals kept as t) */
+          if (!sc_small_factor_fma(R, grad, 1e-14 * big, R, q, t, Lt)) return 0;
+        } else
+#endif
         if (!sc_small_factor(R, grad, 1e-14 * big, R, q)) return 0;
         solved = 1;
       } else
 #endif
       if (!sc_cholesky(n, R, n, 1e-14)) return 0;
-      for (i = 0; i < n; ++i) t[i] = 1.0 / R[i * n + i]; /* (multiplied: no division chain) */
+      for (i = 0; i < n && !(fused && solved); ++i)
+        t[i] = 1.0 / R[i * n + i]; /* (multiplied: no division chain) */
     }
     /* q = R^-1 grad; Y = R^-1 Z_H (column j, held row j's, at Y + j n; a chord step: the
      * last), lh = Y^T q - w_H (w_H = Z_H^T y + c_H), S = Y^T Y factored */
-    for (i = 0; i < n && !solved; ++i) {
+#ifdef SC_SMALL_FMA
+    if (fused && !fresh) sc_primal_fwd(Lt, t, grad, q); /* (the FMA copy: by L's columns) */
+#endif
+    for (i = 0; i < n && !solved && !fused; ++i) {
       const double *restrict ri = R + i * n;
       double s0 = grad[i], s1 = 0.0;
       for (k = 0; k + 1 < i; k += 2) {
@@ -404,18 +402,28 @@ PRIMAL_FLAT int piece(sc_int n, sc_problem *p, const double *Z, const double *g,
       if (k < i) s0 -= ri[k] * q[k];
       q[i] = (s0 + s1) * t[i];
     }
-    for (j = 0; j < h && !fresh; ++j) {
+    for (j = 0; j < h && (!fresh || fused); ++j) {
       const double *restrict yj = Y + j * n, *restrict zj = Zc + (2 * ns + j) * n;
       double u = -cg[2 * ns + j];
+#ifdef SC_SMALL_FMA
+      if (fresh) { /* (the FMA copy: Y's column by L's columns, S's row) */
+        sc_primal_fwd(Lt, t, zj, Y + j * n);
+        for (k = 0; k <= j; ++k) S[j * h + k] = sc_primal_dot(yj, Y + k * n, NULL, NULL);
+      }
+      if (fused) {
+        lh[j] = u + sc_primal_dot(yj, q, zj, y);
+        continue;
+      }
+#endif
       for (i = 0; i < n; ++i) u += yj[i] * q[i] - zj[i] * y[i];
       lh[j] = u;
     }
-    for (j = 0; j + 1 < h && fresh; j += 2) { /* (two columns side by side: two chains) */
+    for (j = 0; j + 1 < h && fresh && !fused; j += 2) { /* (two columns side by side) */
       held_cols(n, 2, R, t, Zc + (2 * ns + j) * n, cg + 2 * ns + j, y, q, Y + j * n, lh + j);
       for (k = 0; k <= j; ++k) S[j * h + k] = sc_dot(Y + j * n, Y + k * n, n);
       for (k = 0; k <= j + 1; ++k) S[(j + 1) * h + k] = sc_dot(Y + (j + 1) * n, Y + k * n, n);
     }
-    for (; j < h && fresh; ++j) {
+    for (; j < h && fresh && !fused; ++j) {
       held_cols(n, 1, R, t, Zc + (2 * ns + j) * n, cg + 2 * ns + j, y, q, Y + j * n, lh + j);
       for (k = 0; k <= j; ++k) S[j * h + k] = sc_dot(Y + j * n, Y + k * n, n);
     }
@@ -430,7 +438,10 @@ PRIMAL_FLAT int piece(sc_int n, sc_problem *p, const double *Z, const double *g,
       const double *restrict yj = Y + j * n, l = lh[j];
       for (i = 0; i < n; ++i) dy[i] += yj[i] * l;
     }
-    for (i = n - 1; i >= 0; --i) { /* (by R's rows: contiguous, vectorised) */
+#ifdef SC_SMALL_FMA
+    if (fused) sc_primal_back(R, t, dy);
+#endif
+    for (i = n - 1; i >= 0 && !fused; --i) { /* (by R's rows: contiguous, vectorised) */
       const double *restrict ri = R + i * n;
       double *restrict d = dy, di = dy[i] * t[i];
       d[i] = di;
@@ -448,7 +459,7 @@ PRIMAL_FLAT int piece(sc_int n, sc_problem *p, const double *Z, const double *g,
         for (i = 0; i < n; ++i) yt[i] = y[i] + tstep * dy[i];
         d1 = 0.0;
         for (i = 0; i < n; ++i) d1 += (yt[i] - gF[i]) * (yt[i] - gF[i]);
-        vt = sliding(n, lds, ns, rad, Zs, cs, yt, ws, nws);
+        vt = sliding(n, lds, ns, rad, Zs, cs, yt, ws, nws, fused);
         big = 1e-14 * (fabs(0.5 * d0 + v0) + p->fscale * p->wscale);
         if (!feasible || 0.5 * d1 + vt <= 0.5 * d0 + v0 + big || tstep < 1e-3) break;
         tstep *= 0.5;
@@ -493,10 +504,10 @@ PRIMAL_FLAT int piece(sc_int n, sc_problem *p, const double *Z, const double *g,
   for (k = 0, nf = h; k < nb; ++k)
     if (p->state[k] != S_HELD && sc_still(p, k))
       for (i = 0; i < sc_block_size(p->kind[k]); ++i) hr[nf++] = p->start[k] + i;
-  if (rank < h && nf > h && face_rank(p, Z, hr, h, R, q, dy, t, perm, Y, 0) != rank)
+  if (rank < h && nf > h && FACE_RANK(p, Z, hr, h, R, q, dy, t, perm, Y, 0) != rank)
     return 0; /* (the held rows' rank: the dual's, to the pivots') */
   if (rank < h || nf > h) {
-    sc_int rf = face_rank(p, Z, hr, nf, R, q, dy, t, perm, Y, 1);
+    sc_int rf = FACE_RANK(p, Z, hr, nf, R, q, dy, t, perm, Y, 1);
     if (nf == h && rf != rank) return 0;
     if (rf < nf) {
       dep = 1;
@@ -525,8 +536,21 @@ __attribute__((target("avx"), noinline)) static int piece_avx(sc_problem *p, con
                                                               const double *g, const double *c,
                                                               double *work, sc_int *iwork,
                                                               sc_int *def) {
-  return piece(SNAKECG_NS, p, Z, g, c, work, iwork, def);
+  return piece(SNAKECG_NS, p, Z, g, c, work, iwork, def, 0);
 }
+#ifdef SC_SMALL_FMA
+/* the snake's copy with AVX2 and FMA where the processor has both: the compiler fuses the
+ * products into the sums (the default contraction of GNU C) and the Hessian's factor is
+ * sc_small_factor_fma's (reciprocals): within rounding of the copies without, not bit for bit */
+__attribute__((target("avx2,fma"), noinline)) static int piece_fma(sc_problem *p,
+                                                                   const double *Z,
+                                                                   const double *g,
+                                                                   const double *c,
+                                                                   double *work, sc_int *iwork,
+                                                                   sc_int *def) {
+  return piece(SNAKECG_NS, p, Z, g, c, work, iwork, def, 1);
+}
+#endif
 #endif
 
 /* sc_primal_piece's body, compiled apart for the snake alone (n = SNAKECG_NS coordinates, no
@@ -534,9 +558,14 @@ __attribute__((target("avx"), noinline)) static int piece_avx(sc_problem *p, con
 SC_INTERNAL int sc_primal_piece(sc_problem *p, const double *Z, const double *g,
                                 const double *c, double *work, sc_int *iwork, sc_int *def) {
 #ifdef PRIMAL_AVX
-  if (p->n == SNAKECG_NS && primal_on == 1 && __builtin_cpu_supports("avx"))
+#ifdef SC_SMALL_FMA
+  if (p->n == SNAKECG_NS && primal_on == 1 && __builtin_cpu_supports("avx2") &&
+      __builtin_cpu_supports("fma"))
+    return piece_fma(p, Z, g, c, work, iwork, def);
+#endif
+  if (p->n == SNAKECG_NS && primal_on != 2 && __builtin_cpu_supports("avx"))
     return piece_avx(p, Z, g, c, work, iwork, def);
 #endif
-  if (p->n == SNAKECG_NS) return piece(SNAKECG_NS, p, Z, g, c, work, iwork, def);
-  return piece(p->n, p, Z, g, c, work, iwork, def);
+  if (p->n == SNAKECG_NS) return piece(SNAKECG_NS, p, Z, g, c, work, iwork, def, 0);
+  return piece(p->n, p, Z, g, c, work, iwork, def, 0);
 }

@@ -87,6 +87,60 @@ SC_INTERNAL int sc_small_factor(const double *M, const double *f, double thr, do
                                 double *a) {
   return factor_ns(SNAKECG_NS, M, f, thr, L, a);
 }
+
+#ifdef SC_SMALL_FMA
+/* factor_ns's variant for the primal piece's Hessian alone (never the inertia's: that one
+ * stays factor_ns, bit for bit sc_cholesky's), its rounding its own: the columns four
+ * entries a register, without square roots on the chain from column to column (L D L^T:
+ * W_k = D_k L_k each column less the columns before times L_kj = W_kj / D_j, fused
+ * multiply-adds, one division a column), then R = L D^1/2 (each column W_k times
+ * s_k = sqrt(1 / D_k), the columns' square roots side by side) and a = R^-1 f (f as row n_s).
+ * Kept for the piece's triangular solves: s (rl: R's diagonal's reciprocals) and R's columns
+ * (Lt: column k at Lt + k n_s, its entries from the diagonal on). The same pivot rule on
+ * D_k = R_kk^2 (a pivot not above thr: 0, L, a, rl and Lt unwritten). */
+typedef double __attribute__((vector_size(32))) sc_v4f;
+typedef double __attribute__((vector_size(32), aligned(8))) sc_v4u; /* (at any double) */
+__attribute__((target("avx2,fma"), noinline)) SC_INTERNAL int
+sc_small_factor_fma(const double *M, const double *f, double thr, double *L, double *a,
+                    double *rl, double *Lt) {
+  enum { T = SNAKECG_NS, Q = (SNAKECG_NS + 4) / 4 }; /* (Q quads a column: rows 0..T, f's) */
+  sc_v4f C[T][Q];
+  double r[T];
+  sc_int i, j, k, p;
+  SC_UNROLL for (k = 0; k < T; ++k) {
+    double *c = (double *)C[k];
+    SC_UNROLL for (i = 0; i < 4 * Q; ++i) c[i] = i >= k && i < T ? M[i * T + k] : 0.0;
+    c[T] = f[k];
+  }
+  SC_UNROLL for (k = 0; k < T; ++k) { /* column k, held in registers */
+    sc_v4f c[Q];
+    double d;
+    SC_UNROLL for (p = k / 4; p < Q; ++p) c[p] = C[k][p];
+    SC_UNROLL for (j = 0; j < k; ++j) {
+      const double b = C[j][k / 4][k % 4] * r[j]; /* L_kj */
+      SC_UNROLL for (p = k / 4; p < Q; ++p) c[p] -= b * C[j][p];
+    }
+    d = c[k / 4][k % 4];
+    if (!(d > thr)) return 0;
+    r[k] = 1.0 / d;
+    SC_UNROLL for (p = k / 4; p < Q; ++p) C[k][p] = c[p];
+  }
+  SC_UNROLL for (k = 0; k < T; ++k) { /* R's columns: W_k s_k */
+    const double sk = sqrt(r[k]);
+    SC_UNROLL for (p = k / 4; p < Q; ++p) C[k][p] *= sk;
+    rl[k] = sk;
+  }
+  SC_UNROLL for (i = 0; i < T; ++i) {
+    SC_UNROLL for (k = 0; k <= i; ++k) L[i * T + k] = C[k][i / 4][i % 4];
+    a[i] = C[i][T / 4][T % 4];
+  }
+  SC_UNROLL for (k = 0; k < T; ++k) {
+    SC_UNROLL for (p = k / 4; p < T / 4; ++p) *(sc_v4u *)(Lt + k * T + 4 * p) = C[k][p];
+    SC_UNROLL for (i = 4 * (T / 4); i < T; ++i) Lt[k * T + i] = C[k][i / 4][i % 4];
+  }
+  return 1;
+}
+#endif
 #endif
 
 /* The dense block's factor (t x t, its threshold rel_t; big_t its largest diagonal entry) and

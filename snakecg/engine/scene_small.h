@@ -10,5 +10,13 @@
  * (a pivot not above thr, thr = rel times M's largest diagonal entry: 0, L and a unwritten). */
 SC_INTERNAL int sc_small_factor(const double *M, const double *f, double thr, double *L,
                                 double *a);
+#if defined(__x86_64__) && !defined(__clang__) && __GNUC__ >= 6 && !defined(SC_NO_AVX)
+#define SC_SMALL_FMA 1
+/* The same for the primal piece's Hessian alone where the processor has AVX2 and FMA (the
+ * caller checks): within rounding of sc_small_factor (by L D L^T, fused multiply-adds), rl
+ * L's diagonal's reciprocals, Lt L's columns (column k at Lt + k n_s, from the diagonal). */
+SC_INTERNAL int sc_small_factor_fma(const double *M, const double *f, double thr, double *L,
+                                    double *a, double *rl, double *Lt);
+#endif
 #endif
 #endif
