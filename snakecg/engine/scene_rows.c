@@ -76,27 +76,54 @@ static void place(sc_scene_work *sw, const double *P, const double *qo, int give
   sw->placed = 1;
 }
 
-/* The velocity of point p fixed on body b, in the generalized velocities: rows x, y added
- * with sign into Dx, Dy (n each). */
-static void point_jacobian(sc_scene_work *sw, sc_int b, const double *p, const double *P,
-                           double sign, double *Dx, double *Dy) {
+/* An object's part of a contact's D = J_b - J_a (sign 1: b's, -1: a's) at its point p: the
+ * velocity of p fixed on object o in its columns ns + 3 o (x: 1, 0, -(p_y - y_o); y: 0, 1,
+ * p_x - x_o) times sign, added to zero; its row entries n . D into row, D into Dx, Dy. */
+static void object_part(const sc_scene_work *sw, sc_int o, const double *p, double sign,
+                        const double *nrm, double *row, double *Dx, double *Dy) {
+  const sc_int col = SNAKECG_NS + 3 * o;
+  const double *ps = sw->pose + 3 * o;
+  const double x[3] = {0.0 + sign, 0.0, 0.0 + sign * -(p[1] - ps[1])},
+               y[3] = {0.0, 0.0 + sign, 0.0 + sign * (p[0] - ps[0])};
   sc_int j;
-  if (b < SNAKECG_NL) {
-    const double *J = sw->J;
-    double r0 = p[0] - P[3 * b], r1 = p[1] - P[3 * b + 1];
-    for (j = 0; j < SNAKECG_NS; ++j) {
-      const double *c = J + 3 * SNAKECG_NL * j + 3 * b;
-      Dx[j] += sign * (c[0] + -r1 * c[2]);
-      Dy[j] += sign * (c[1] + r0 * c[2]);
-    }
-  } else if (b < SNAKECG_NL + sw->no) {
-    sc_int o = b - SNAKECG_NL, col = SNAKECG_NS + 3 * o;
-    const double *ps = sw->pose + 3 * o;
-    Dx[col] += sign;
-    Dx[col + 2] += sign * -(p[1] - ps[1]);
-    Dy[col + 1] += sign;
-    Dy[col + 2] += sign * (p[0] - ps[0]);
+  for (j = 0; j < 3; ++j) {
+    row[col + j] = nrm[0] * x[j] + nrm[1] * y[j];
+    if (Dx) Dx[col + j] = x[j], Dy[col + j] = y[j];
   }
+}
+
+/* A contact's row n . D (n entries) with D = J_b - J_a at its points (p_b on body b, p_a on
+ * a: the velocity of a point fixed on a link from its twist's column J_i, x: J_x - r_y J_w,
+ * y: J_y + r_x J_w with r from the link's COM; on an object, object_part), summed from zero,
+ * b's then a's; where Dx is not null, D's two rows into Dx, Dy (a friction row's). ib > ia:
+ * a link b has a link a. */
+static void contact_row(const sc_scene_work *sw, sc_int ia, sc_int ib, const sc_touch *t,
+                        const double *P, double *row, double *Dx, double *Dy) {
+  const sc_int n = sw->n, ns = SNAKECG_NS, nl = SNAKECG_NL, step = 3 * SNAKECG_NL;
+  const double n0 = t->n[0], n1 = t->n[1], zero = n0 * 0.0 + n1 * 0.0;
+  const double *Ja = sw->J + 3 * ia, *Jb = sw->J + 3 * ib;
+  const double ra0 = ia < nl ? t->a[0] - P[3 * ia] : 0.0, ra1 = ia < nl ? t->a[1] - P[3 * ia + 1] : 0.0;
+  const double rb0 = ib < nl ? t->b[0] - P[3 * ib] : 0.0, rb1 = ib < nl ? t->b[1] - P[3 * ib + 1] : 0.0;
+  sc_int j;
+  if (ib < nl) /* two links */
+    for (j = 0; j < ns; ++j, Ja += step, Jb += step) {
+      const double x = (0.0 + (Jb[0] + -rb1 * Jb[2])) - (Ja[0] + -ra1 * Ja[2]),
+                   y = (0.0 + (Jb[1] + rb0 * Jb[2])) - (Ja[1] + ra0 * Ja[2]);
+      row[j] = n0 * x + n1 * y;
+      if (Dx) Dx[j] = x, Dy[j] = y;
+    }
+  else if (ia < nl) /* a link and an object or obstacle */
+    for (j = 0; j < ns; ++j, Ja += step) {
+      const double x = 0.0 - (Ja[0] + -ra1 * Ja[2]), y = 0.0 - (Ja[1] + ra0 * Ja[2]);
+      row[j] = n0 * x + n1 * y;
+      if (Dx) Dx[j] = x, Dy[j] = y;
+    }
+  for (j = ia < nl ? ns : 0; j < n; ++j) { /* the objects' columns (and a's, an object's) */
+    row[j] = zero;
+    if (Dx) Dx[j] = Dy[j] = 0.0;
+  }
+  if (ib >= nl && ib < nl + sw->no) object_part(sw, ib - nl, t->b, 1.0, t->n, row, Dx, Dy);
+  if (ia >= nl) object_part(sw, ia - nl, t->a, -1.0, t->n, row, Dx, Dy);
 }
 
 static sc_int body_kind(const sc_scene_work *sw, sc_int b, sc_int *index) {
@@ -130,13 +157,10 @@ static sc_int contact_rows(sc_scene_work *sw, const double *P, double *recs, dou
       }
       if (d > tol) continue;
       for (k = 0; k < count; ++k) {
-        double *row = sw->A + nc * n, *Dx = sw->D, *Dy = sw->D + n, *rec;
+        double *Dx = sw->T ? sw->D : 0, *Dy = sw->D + n, *rec;
         sc_int kk;
         if (nc >= cap) return -SS_MORE;
-        memset(Dx, 0, sizeof(double) * (size_t)(2 * n)); /* D = J_b - J_a at the points */
-        point_jacobian(sw, ib, t[k].b, P, 1.0, Dx, Dy);
-        point_jacobian(sw, ia, t[k].a, P, -1.0, Dx, Dy);
-        for (j = 0; j < n; ++j) row[j] = t[k].n[0] * Dx[j] + t[k].n[1] * Dy[j];
+        contact_row(sw, ia, ib, t + k, P, sw->A + nc * n, Dx, Dy);
         rec = recs + CR_W * nc;
         memset(rec, 0, sizeof(double) * CR_W);
         rec[0] = (double)body_kind(sw, ia, &kk), rec[1] = (double)kk;
