@@ -66,6 +66,7 @@ typedef struct {
   sc_int cool, backoff; /* samples left cold after a start that fell back, the next count */
   sc_shape *shape;
   double *centre, *reach, *pose, *T; /* T: the contacts' tangent rows (null: no friction) */
+  uint64_t *near; /* the broad phase's bits (scene_broad.h), sc_broad_words per moving body */
 } sc_scene_work;
 
 /* The bodies placed at the link poses P (the objects at qo, or by the scene): the parts that
@@ -102,8 +103,10 @@ static void contact_row(const sc_scene_work *sw, sc_int ia, sc_int ib, const sc_
   const sc_int n = sw->n, ns = SNAKECG_NS, nl = SNAKECG_NL, step = 3 * SNAKECG_NL;
   const double n0 = t->n[0], n1 = t->n[1], zero = n0 * 0.0 + n1 * 0.0;
   const double *Ja = sw->J + 3 * ia, *Jb = sw->J + 3 * ib;
-  const double ra0 = ia < nl ? t->a[0] - P[3 * ia] : 0.0, ra1 = ia < nl ? t->a[1] - P[3 * ia + 1] : 0.0;
-  const double rb0 = ib < nl ? t->b[0] - P[3 * ib] : 0.0, rb1 = ib < nl ? t->b[1] - P[3 * ib + 1] : 0.0;
+  const double ra0 = ia < nl ? t->a[0] - P[3 * ia] : 0.0,
+               ra1 = ia < nl ? t->a[1] - P[3 * ia + 1] : 0.0,
+               rb0 = ib < nl ? t->b[0] - P[3 * ib] : 0.0,
+               rb1 = ib < nl ? t->b[1] - P[3 * ib + 1] : 0.0;
   sc_int j;
   if (ib < nl) /* two links */
     for (j = 0; j < ns; ++j, Ja += step, Jb += step) {
@@ -139,45 +142,49 @@ static sc_int contact_rows(sc_scene_work *sw, const double *P, double *recs, dou
                            sc_int cap) {
   const double tol = sw->tol, size = sw->pk[SP_SIZE];
   const sc_int n = sw->n, nl = SNAKECG_NL;
-  sc_int ia, ib, nc = 0, k, j;
+  const sc_int nw = sc_broad_words(sw->nbody);
+  sc_int ia, ib, nc = 0, k, j, w;
+  uint64_t bits;
   sc_touch t[SC_TOUCH_MAX];
-  sc_broad it; /* (the bodies after ia whose circles are not apart: scene_broad.h) */
+  /* the bodies after ia whose circles are not apart (scene_broad.h), in order */
+  sc_broad_masks(sw->centre, sw->reach, tol, nl + sw->no, nl, sw->nbody, sw->near);
   for (ia = 0; ia < nl + sw->no; ++ia)
-    for (sc_broad_first(&it, ia, nl);
-         (ib = sc_broad_next(&it, sw->centre, sw->reach, tol, ia, sw->nbody)) >= 0;) {
-      double d;
-      int count;
-      d = sc_shape_closest(sw->shape + ia, sw->shape + ib, size, tol, tol, t, &count);
-      if (d < -tol) {
-        double *o = over, idx;
-        o[0] = (double)body_kind(sw, ia, &k), o[1] = (double)k;
-        idx = (double)body_kind(sw, ib, &k);
-        o[2] = idx, o[3] = (double)k, o[4] = -d, o[5] = tol;
-        return -SS_OVERLAP;
-      }
-      if (d > tol) continue;
-      for (k = 0; k < count; ++k) {
-        double *Dx = sw->T ? sw->D : 0, *Dy = sw->D + n, *rec;
-        sc_int kk;
-        if (nc >= cap) return -SS_MORE;
-        contact_row(sw, ia, ib, t + k, P, sw->A + nc * n, Dx, Dy);
-        rec = recs + CR_W * nc;
-        memset(rec, 0, sizeof(double) * CR_W);
-        rec[0] = (double)body_kind(sw, ia, &kk), rec[1] = (double)kk;
-        rec[2] = (double)body_kind(sw, ib, &kk), rec[3] = (double)kk;
-        for (j = 0; j < 2; ++j) {
-          rec[4 + j] = t[k].a[j];
-          rec[6 + j] = t[k].b[j];
-          rec[8 + j] = t[k].n[j];
+    for (w = 0; w < nw; ++w)
+      for (bits = sw->near[ia * nw + w]; bits;) {
+        double d;
+        int count;
+        ib = sc_broad_pop(&bits, 64 * w);
+        d = sc_shape_closest(sw->shape + ia, sw->shape + ib, size, tol, tol, t, &count);
+        if (d < -tol) {
+          double *o = over, idx;
+          o[0] = (double)body_kind(sw, ia, &k), o[1] = (double)k;
+          idx = (double)body_kind(sw, ib, &k);
+          o[2] = idx, o[3] = (double)k, o[4] = -d, o[5] = tol;
+          return -SS_OVERLAP;
         }
-        rec[10] = d;
-        sw->kind[nc] = K_UNILATERAL;
-        sw->start[nc] = nc;
-        sw->par[3 * nc] = sw->par[3 * nc + 1] = sw->par[3 * nc + 2] = 0.0;
-        if (sw->T) sc_friction_row(sw->pk, ia, ib, t[k].n, Dx, Dy, n, sw->T + nc * n, rec);
-        ++nc;
+        if (d > tol) continue;
+        for (k = 0; k < count; ++k) {
+          double *Dx = sw->T ? sw->D : 0, *Dy = sw->D + n, *rec;
+          sc_int kk;
+          if (nc >= cap) return -SS_MORE;
+          contact_row(sw, ia, ib, t + k, P, sw->A + nc * n, Dx, Dy);
+          rec = recs + CR_W * nc;
+          memset(rec, 0, sizeof(double) * CR_W);
+          rec[0] = (double)body_kind(sw, ia, &kk), rec[1] = (double)kk;
+          rec[2] = (double)body_kind(sw, ib, &kk), rec[3] = (double)kk;
+          for (j = 0; j < 2; ++j) {
+            rec[4 + j] = t[k].a[j];
+            rec[6 + j] = t[k].b[j];
+            rec[8 + j] = t[k].n[j];
+          }
+          rec[10] = d;
+          sw->kind[nc] = K_UNILATERAL;
+          sw->start[nc] = nc;
+          sw->par[3 * nc] = sw->par[3 * nc + 1] = sw->par[3 * nc + 2] = 0.0;
+          if (sw->T) sc_friction_row(sw->pk, ia, ib, t[k].n, Dx, Dy, n, sw->T + nc * n, rec);
+          ++nc;
+        }
       }
-    }
   return nc;
 }
 
@@ -348,7 +355,7 @@ enum { SW_HEAD = (sizeof(sc_scene_work) + sizeof(double) - 1) / sizeof(double) }
 static int work_alloc(sc_scene_work *sw, const double *pk, sc_int ccap, sc_int mcap, int own) {
   const sc_work_fn fns[] = {SNAKECG_LP_WORK, SNAKECG_LJ_WORK, SNAKECG_SK_WORK};
   const sc_int mc = own ? mcap : 0;
-  sc_int n, nd, k, i, sz[4], most[4] = {0, 0, 0, 0};
+  sc_int n, nd, k, i, sz[4], most[4] = {0, 0, 0, 0}, pad;
   double *d;
   sw->pk = pk;
   sw->tol = pk[SP_TOL];
@@ -360,18 +367,21 @@ static int work_alloc(sc_scene_work *sw, const double *pk, sc_int ccap, sc_int m
   sw->ccap = ccap;
   sw->mcap = mcap;
   sw->nbody = SNAKECG_NL + sw->no + sw->nob;
+  pad = sc_broad_pad(sw->nbody); /* (the bounding circles' room: scene_broad.h) */
   for (k = 0; k < SC_COUNT(fns); ++k) {
     sz[0] = sz[1] = sz[2] = sz[3] = 0;
     if (fns[k](sz, sz + 1, sz + 2, sz + 3)) return -1;
     for (i = 0; i < 4; ++i) most[i] = sz[i] > most[i] ? sz[i] : most[i];
   }
   nd = mc * n + 2 * n * n + 7 * n + 3 * mc + 3 * mc + 5 * SNAKECG_NL +
-       3 * SNAKECG_NL * SNAKECG_NS + SNAKECG_NS * SNAKECG_NS + 3 * sw->nbody + 3 * sw->no + 8 +
+       3 * SNAKECG_NL * SNAKECG_NS + SNAKECG_NS * SNAKECG_NS + 3 * pad + 3 * sw->no + 8 +
        3 * mc + (pk[SP_FRICTION] != 0.0 ? ccap * n : 0);
   sw->base = (double *)malloc((size_t)(SW_HEAD + nd + most[3] + 1) * sizeof(double) +
                               (size_t)(most[0] + most[1] + 2) * sizeof(double *) +
                               (size_t)(2 * mc + 2 + most[2] + 1) * sizeof(sc_int) +
-                              (size_t)(sw->nbody + 1) * sizeof(sc_shape));
+                              (size_t)(sw->nbody + 1) * sizeof(sc_shape) +
+                              (size_t)((SNAKECG_NL + sw->no) * sc_broad_words(sw->nbody)) *
+                                  sizeof(uint64_t));
   if (!sw->base) return -1;
   sw->A = d = sw->base + SW_HEAD; /* (the head: a kept state scratch's struct) */
   sw->ws.w = d + nd;
@@ -380,6 +390,7 @@ static int work_alloc(sc_scene_work *sw, const double *pk, sc_int ccap, sc_int m
   sw->kind = (sc_int *)(sw->ws.res + most[1] + 1);
   sw->ws.iw = sw->kind + 2 * mc + 2;
   sw->shape = (sc_shape *)(sw->ws.iw + most[2] + 1);
+  sw->near = (uint64_t *)(sw->shape + sw->nbody + 1);
   d += mc * n; /* the rows, then what is written before it is read: not zeroed */
   sw->M = d; d += n * n; /* (the forward's full_inertia) */
   sw->L = d; d += n * n;
@@ -391,7 +402,9 @@ static int work_alloc(sc_scene_work *sw, const double *pk, sc_int ccap, sc_int m
   sw->P = d; d += 3 * SNAKECG_NL; /* (the generated functions' outputs are dense) */
   sw->J = d; d += 3 * SNAKECG_NL * SNAKECG_NS;
   sw->Ms = d; d += SNAKECG_NS * SNAKECG_NS;
-  sw->centre = d, d += 2 * sw->nbody, sw->reach = d, d += sw->nbody, sw->pose = d, d += 3 * sw->no;
+  sw->centre = d, d += 2 * pad, sw->reach = d, d += pad, sw->pose = d, d += 3 * sw->no;
+  for (i = sw->nbody; i < pad; ++i) /* (the pads, read by the broad phase: set once) */
+    sw->centre[i] = sw->centre[pad + i] = sw->reach[i] = 0.0;
   sw->cs = d, sw->T = pk[SP_FRICTION] != 0.0 ? d + 2 * SNAKECG_NL : 0; /* (cs: 2 NL) */
   /* zeros: the generated functions' pointers, the shapes (not what the model's sizes or mcap
    * scale: written before it is read) */
@@ -563,14 +576,14 @@ int SNAKECG_EXPORT(core_scene_gaps)(const sc_scene_state *c) {
   place(&sw, sw.P, c->qo, 0);
   for (ia = 0; ia < SNAKECG_NL + sw.no; ++ia)
     for (ib = ia + 1; ib < sw.nbody; ++ib) {
-      const double *ca = sw.centre + 2 * ia, *cb = sw.centre + 2 * ib;
+      const double *cx = sw.centre, *cy = sw.centre + sc_broad_pad(sw.nbody);
       sc_touch t[SC_TOUCH_MAX];
       double d, *rec;
       int count;
       if (ib < SNAKECG_NL && ib - ia < 2) continue; /* neighbouring links */
       if (c->pair_a >= 0 && !(ia == c->pair_a && ib == c->pair_b)) continue;
       if (c->pair_a < 0 &&
-          hypot(ca[0] - cb[0], ca[1] - cb[1]) > sw.reach[ia] + sw.reach[ib] + c->margin)
+          hypot(cx[ia] - cx[ib], cy[ia] - cy[ib]) > sw.reach[ia] + sw.reach[ib] + c->margin)
         continue;
       d = sc_shape_closest(sw.shape + ia, sw.shape + ib, c->pk[SP_SIZE], sw.tol, INFINITY, t,
                            &count);
