@@ -249,7 +249,7 @@ static int kinematics(sc_scene_work *sw, const double *q, int mass) {
 static void full_inertia(const sc_scene_work *sw, double *M) {
   const sc_int n = sw->n, ns = SNAKECG_NS;
   sc_int i, j, o;
-  memset(M, 0, sizeof(double) * (size_t)(n * n));
+  if (n > ns) memset(M, 0, sizeof(double) * (size_t)(n * n)); /* (else every entry set below) */
   for (i = 0; i < ns; ++i)
     for (j = 0; j < ns; ++j) M[i * n + j] = sw->Ms[i + ns * j];
   for (o = 0; o < sw->no; ++o) {
