@@ -60,11 +60,11 @@
   }
 
 #if defined(__SSE2__)
-typedef double sc_b2 __attribute__((vector_size(16), aligned(8)));
+typedef double __attribute__((vector_size(16), aligned(8))) sc_b2;
 #define SC_BITS2(s, f) _mm_movemask_pd(_mm_cmpgt_pd((__m128d)(s), (__m128d)(f)))
 #if defined(__x86_64__) && !defined(__clang__) && __GNUC__ >= 6 && !defined(SC_NO_AVX)
 #define SC_BROAD_AVX 1
-typedef double sc_b4 __attribute__((vector_size(32), aligned(8)));
+typedef double __attribute__((vector_size(32), aligned(8))) sc_b4;
 #define SC_BITS4(s, f) _mm256_movemask_pd(_mm256_cmp_pd((__m256d)(s), (__m256d)(f), _CMP_GT_OQ))
 __attribute__((target("avx"), noinline)) static void masks_avx(
     const double *centre, const double *reach, double tol, sc_int na, sc_int nl, sc_int nbody,
