@@ -77,36 +77,29 @@ static void place(sc_scene_work *sw, const double *P, const double *qo, int give
   sw->placed = 1;
 }
 
-/* An object's part of a contact's D = J_b - J_a (sign 1: b's, -1: a's) at its point p: the
- * velocity of p fixed on object o in its columns ns + 3 o (x: 1, 0, -(p_y - y_o); y: 0, 1,
- * p_x - x_o) times sign, added to zero; its row entries n . D into row, D into Dx, Dy. */
+/* An object's part of a contact's D = J_b - J_a (sign 1: b's, -1: a's) at its point p, in
+ * object o's columns (x: 1, 0, y_o - p_y; y: 0, 1, p_x - x_o) times sign, added to zero. */
 static void object_part(const sc_scene_work *sw, sc_int o, const double *p, double sign,
                         const double *nrm, double *row, double *Dx, double *Dy) {
-  const sc_int col = SNAKECG_NS + 3 * o;
-  const double *ps = sw->pose + 3 * o;
-  const double x[3] = {0.0 + sign, 0.0, 0.0 + sign * -(p[1] - ps[1])},
+  const double *ps = sw->pose + 3 * o, x[3] = {0.0 + sign, 0.0, 0.0 + sign * -(p[1] - ps[1])},
                y[3] = {0.0, 0.0 + sign, 0.0 + sign * (p[0] - ps[0])};
-  sc_int j;
-  for (j = 0; j < 3; ++j) {
-    row[col + j] = nrm[0] * x[j] + nrm[1] * y[j];
-    if (Dx) Dx[col + j] = x[j], Dy[col + j] = y[j];
-  }
+  sc_int j, col = SNAKECG_NS + 3 * o;
+  for (j = 0; j < 3; ++j) row[col + j] = nrm[0] * x[j] + nrm[1] * y[j];
+  for (j = 0; Dx && j < 3; ++j) Dx[col + j] = x[j], Dy[col + j] = y[j];
 }
 
-/* A contact's row n . D (n entries) with D = J_b - J_a at its points (p_b on body b, p_a on
- * a: the velocity of a point fixed on a link from its twist's column J_i, x: J_x - r_y J_w,
- * y: J_y + r_x J_w with r from the link's COM; on an object, object_part), summed from zero,
- * b's then a's; where Dx is not null, D's two rows into Dx, Dy (a friction row's). ib > ia:
- * a link b has a link a. */
+/* A contact's row n . D (n entries), D = J_b - J_a at its points (p_b on body b, p_a on a; on
+ * a link from its twist's column J_i, x: J_x - r_y J_w, y: J_y + r_x J_w, r from its COM; on
+ * an object object_part) summed from zero, b's then a's; where Dx is not null, D's two rows
+ * into Dx, Dy (a friction row's). ib > ia: a link b has a link a. */
 static void contact_row(const sc_scene_work *sw, sc_int ia, sc_int ib, const sc_touch *t,
                         const double *P, double *row, double *Dx, double *Dy) {
   const sc_int n = sw->n, ns = SNAKECG_NS, nl = SNAKECG_NL, step = 3 * SNAKECG_NL;
   const double n0 = t->n[0], n1 = t->n[1], zero = n0 * 0.0 + n1 * 0.0;
   const double *Ja = sw->J + 3 * ia, *Jb = sw->J + 3 * ib;
-  const double ra0 = ia < nl ? t->a[0] - P[3 * ia] : 0.0,
-               ra1 = ia < nl ? t->a[1] - P[3 * ia + 1] : 0.0,
-               rb0 = ib < nl ? t->b[0] - P[3 * ib] : 0.0,
-               rb1 = ib < nl ? t->b[1] - P[3 * ib + 1] : 0.0;
+  const double *Pa = P + 3 * (ia < nl ? ia : 0), *Pb = P + 3 * (ib < nl ? ib : 0); /* (links') */
+  const double ra0 = t->a[0] - Pa[0], ra1 = t->a[1] - Pa[1], rb0 = t->b[0] - Pb[0],
+               rb1 = t->b[1] - Pb[1];
   sc_int j;
   if (ib < nl) /* two links */
     for (j = 0; j < ns; ++j, Ja += step, Jb += step) {
@@ -141,8 +134,7 @@ static sc_int body_kind(const sc_scene_work *sw, sc_int b, sc_int *index) {
 static sc_int contact_rows(sc_scene_work *sw, const double *P, double *recs, double *over,
                            sc_int cap) {
   const double tol = sw->tol, size = sw->pk[SP_SIZE];
-  const sc_int n = sw->n, nl = SNAKECG_NL;
-  const sc_int nw = sc_broad_words(sw->nbody);
+  const sc_int n = sw->n, nl = SNAKECG_NL, nw = sc_broad_words(sw->nbody);
   sc_int ia, ib, nc = 0, k, j, w;
   uint64_t bits;
   sc_touch t[SC_TOUCH_MAX];
@@ -245,13 +237,21 @@ static int kinematics(sc_scene_work *sw, const double *q, int mass) {
   return SNAKECG_LJ(ws->arg, ws->res, ws->iw, ws->w, 0) != 0;
 }
 
+/* M_s (the generated column-major) into M's first n_s rows and columns (n x n, row-major): its
+ * columns as rows, M_s symmetric entry for entry (derive/kinematics.py mirrors each entry). */
+static void snake_block(const double *Ms, double *M, sc_int n) {
+  sc_int i;
+  if (n == SNAKECG_NS) memcpy(M, Ms, sizeof(double) * SNAKECG_NS * SNAKECG_NS); /* (one copy) */
+  for (i = 0; n > SNAKECG_NS && i < SNAKECG_NS; ++i)
+    memcpy(M + i * n, Ms + SNAKECG_NS * i, sizeof(double) * SNAKECG_NS);
+}
+
 /* The bodies' full inertia (M_s; m, m, I per object), n x n row-major, into M. */
 static void full_inertia(const sc_scene_work *sw, double *M) {
   const sc_int n = sw->n, ns = SNAKECG_NS;
-  sc_int i, j, o;
+  sc_int o;
   if (n > ns) memset(M, 0, sizeof(double) * (size_t)(n * n)); /* (else every entry set below) */
-  for (i = 0; i < ns; ++i)
-    for (j = 0; j < ns; ++j) M[i * n + j] = sw->Ms[i + ns * j];
+  snake_block(sw->Ms, M, n);
   for (o = 0; o < sw->no; ++o) {
     const double *obj = sw->pk + (sc_int)sw->pk[SP_OBJECTS] + OBJ_W * o;
     sc_int c = ns + 3 * o;
@@ -284,8 +284,7 @@ static void scene_sample(sc_scene_work *sw, const double *q, const double *tau,
   }
   m = ground_rows(sw, nc);
   nb = nc + sw->ng;
-  for (i = 0; i < ns; ++i) /* M_s into the inertia (the objects' part is the call's) */
-    for (j = 0; j < ns; ++j) sw->M[i * n + j] = sw->Ms[i + ns * j];
+  snake_block(sw->Ms, sw->M, n); /* M_s into the inertia (the objects' part is the call's) */
   sw->f[0] = sw->f[1] = sw->f[2] = 0.0; /* the force: B tau, the objects' wrenches */
   for (i = 3; i < ns; ++i) sw->f[i] = tau[i - 3];
   for (i = 0; i < 3 * sw->no; ++i) sw->f[ns + i] = fo[i];
@@ -403,8 +402,8 @@ static int work_alloc(sc_scene_work *sw, const double *pk, sc_int ccap, sc_int m
   sw->J = d; d += 3 * SNAKECG_NL * SNAKECG_NS;
   sw->Ms = d; d += SNAKECG_NS * SNAKECG_NS;
   sw->centre = d, d += 2 * pad, sw->reach = d, d += pad, sw->pose = d, d += 3 * sw->no;
-  for (i = sw->nbody; i < pad; ++i) /* (the pads, read by the broad phase: set once) */
-    sw->centre[i] = sw->centre[pad + i] = sw->reach[i] = 0.0;
+  /* (the pads, read by the broad phase: set once) */
+  for (i = sw->nbody; i < pad; ++i) sw->centre[i] = sw->centre[pad + i] = sw->reach[i] = 0.0;
   sw->cs = d, sw->T = pk[SP_FRICTION] != 0.0 ? d + 2 * SNAKECG_NL : 0; /* (cs: 2 NL) */
   /* zeros: the generated functions' pointers, the shapes (not what the model's sizes or mcap
    * scale: written before it is read) */
