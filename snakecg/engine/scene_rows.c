@@ -97,9 +97,10 @@ static void contact_row(const sc_scene_work *sw, sc_int ia, sc_int ib, const sc_
   const sc_int n = sw->n, ns = SNAKECG_NS, nl = SNAKECG_NL, step = 3 * SNAKECG_NL;
   const double n0 = t->n[0], n1 = t->n[1], zero = n0 * 0.0 + n1 * 0.0;
   const double *Ja = sw->J + 3 * ia, *Jb = sw->J + 3 * ib;
-  const double *Pa = P + 3 * (ia < nl ? ia : 0), *Pb = P + 3 * (ib < nl ? ib : 0); /* (links') */
-  const double ra0 = t->a[0] - Pa[0], ra1 = t->a[1] - Pa[1], rb0 = t->b[0] - Pb[0],
-               rb1 = t->b[1] - Pb[1];
+  const double ra0 = ia < nl ? t->a[0] - P[3 * ia] : 0.0,
+               ra1 = ia < nl ? t->a[1] - P[3 * ia + 1] : 0.0,
+               rb0 = ib < nl ? t->b[0] - P[3 * ib] : 0.0,
+               rb1 = ib < nl ? t->b[1] - P[3 * ib + 1] : 0.0;
   sc_int j;
   if (ib < nl) /* two links */
     for (j = 0; j < ns; ++j, Ja += step, Jb += step) {
@@ -402,7 +403,6 @@ static int work_alloc(sc_scene_work *sw, const double *pk, sc_int ccap, sc_int m
   sw->J = d; d += 3 * SNAKECG_NL * SNAKECG_NS;
   sw->Ms = d; d += SNAKECG_NS * SNAKECG_NS;
   sw->centre = d, d += 2 * pad, sw->reach = d, d += pad, sw->pose = d, d += 3 * sw->no;
-  /* (the pads, read by the broad phase: set once) */
   for (i = sw->nbody; i < pad; ++i) sw->centre[i] = sw->centre[pad + i] = sw->reach[i] = 0.0;
   sw->cs = d, sw->T = pk[SP_FRICTION] != 0.0 ? d + 2 * SNAKECG_NL : 0; /* (cs: 2 NL) */
   /* zeros: the generated functions' pointers, the shapes (not what the model's sizes or mcap
