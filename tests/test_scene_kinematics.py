@@ -1,10 +1,11 @@
-"""The generated ``scene_kinematics`` (link poses, Jacobians and M_s in one function, the
-joints' sines and cosines taken once; what a general scene's forward and time step call)
-against NumPy written apart: the links' centres of mass and headings from the chain's own
-planar kinematics (tests/capsule_reference.py's ends), the Jacobians by central differences
-of those poses, and M_s = sum_i J_i^T diag(m_i, m_i, I_i) J_i (eq. 4) from those Jacobians;
-and the separate ``link_poses`` and ``link_jacobians`` byte for byte, ``mass_matrix`` to its
-rounding (CasADi orders a few of the shared graph's sums otherwise: an ulp or two)."""
+"""The generated ``scene_kinematics`` (link poses, Jacobians and M_s in one function, the joints'
+sines and cosines taken once; what a general scene's forward and time step call) against NumPy
+written apart: the links' centres of mass and headings from the chain's own planar kinematics
+(tests/capsule_reference.py's ends), the Jacobians by central differences of those poses, and
+M_s = sum_i J_i^T diag(m_i, m_i, I_i) J_i (eq. 4) from those Jacobians (and M_s symmetric entry
+for entry); and the separate ``link_poses`` and ``link_jacobians`` byte for byte,
+``mass_matrix`` to its rounding (CasADi orders a few of the shared graph's sums otherwise: an
+ulp or two)."""
 
 from __future__ import annotations
 
@@ -43,6 +44,9 @@ def test_scene_kinematics_against_numpy(joints, rng, random_robot):
         D = [np.diag([m, m, i]) for m, i in zip(robot.mass, robot.inertia)]
         M = sum(J[i].T @ D[i] @ J[i] for i in range(nl))
         np.testing.assert_allclose(out["M"][k], M, rtol=0, atol=1e-13 * np.abs(M).max())
+        # symmetric entry for entry, as a mass matrix is (the general scenes copy its columns
+        # as the rows of their inertia)
+        assert np.array_equal(out["M"][k], out["M"][k].T)
         assert np.array_equal(P, model.link_poses(q))
         assert np.array_equal(J, model.link_jacobians(q))
         np.testing.assert_allclose(out["M"][k], model.mass_matrix(q), rtol=0,

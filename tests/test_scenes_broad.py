@@ -1,12 +1,12 @@
-"""The broad phase of a general scene's contacts (snakecg/engine/scene_broad.c: which bodies
-after body a may touch it, 64 at a time, and the iteration over them that scene_rows.c's
-contact_rows makes), compiled alone with the engine's flags and called through ctypes, against
-a brute-force NumPy loop over every pair: the same pairs in the same order (bodies after a,
-neighbouring links skipped, bounding circles not apart by more than twice the tolerance),
-for rows of pegs, random bodies, more than 64 bodies (several words of bits), circles exactly
-at the bound, and a body whose centre is not a number (never apart, as the pair loop read it).
-The contacts and rows that follow are held against tests/scenes_rows_reference.py in
-tests/test_scenes_rows.py."""
+"""The broad phase of a general scene's contacts (snakecg/engine/scene_broad.c: which bodies after
+body a may touch it, as words of 64 bits for every body a at once, and the iteration over them
+that scene_rows.c's contact_rows makes), compiled alone with the engine's flags (and once more
+without its AVX path) and called through ctypes, against a brute-force NumPy loop over every
+pair: the same pairs in the same order (bodies after a, neighbouring links skipped, bounding
+circles not apart by more than twice the tolerance), for rows of pegs, random bodies, more than
+64 bodies (several words of bits), circles exactly at the bound, and a body whose centre is not
+a number (never apart, as the pair loop read it). The contacts and rows that follow are held
+against tests/scenes_rows_reference.py in tests/test_scenes_rows.py."""
 
 from __future__ import annotations
 
@@ -27,30 +27,44 @@ LAYOUT = """#define SNAKECG_PREFIX t_
 #define SNAKECG_NL 11
 #define SNAKECG_NC 12
 """
-SHIM = """#include "scene_broad.c"
-/* every pair (a, b) that contact_rows would take, in its order, for a < nfirst: its count */
+SHIM = """#include <stdlib.h>
+#include "scene_broad.c"
+/* every pair (a, b) that contact_rows would take, in its order, for a < nfirst: its count
+ * (the circles laid out as scene_broad.h says: x's, y's, radii, each padded) */
 long long pairs(sc_int nbody, sc_int nfirst, sc_int nl, const double *centre,
                 const double *reach, double tol, long long *out) {
-  sc_int a, b;
+  const sc_int nw = sc_broad_words(nbody), pad = sc_broad_pad(nbody);
+  uint64_t *near = (uint64_t *)malloc(sizeof(uint64_t) * (size_t)(nfirst * nw + 1)), bits;
+  double *c = (double *)calloc((size_t)(3 * pad + 1), sizeof(double));
+  sc_int a, b, w;
   long long k = 0;
-  sc_broad it;
+  for (b = 0; b < nbody; ++b)
+    c[b] = centre[2 * b], c[pad + b] = centre[2 * b + 1], c[2 * pad + b] = reach[b];
+  sc_broad_masks(c, c + 2 * pad, tol, nfirst, nl, nbody, near);
   for (a = 0; a < nfirst; ++a)
-    for (sc_broad_first(&it, a, nl); (b = sc_broad_next(&it, centre, reach, tol, a, nbody)) >= 0;)
-      out[2 * k] = a, out[2 * k + 1] = b, ++k;
+    for (w = 0; w < nw; ++w)
+      for (bits = near[a * nw + w]; bits;) {
+        b = sc_broad_pop(&bits, 64 * w);
+        out[2 * k] = a, out[2 * k + 1] = b, ++k;
+      }
+  free(near);
+  free(c);
   return k;
 }
 """
 
 
-@pytest.fixture(scope="module")
-def pairs(tmp_path_factory):
+@pytest.fixture(scope="module", params=["", "-DSC_NO_AVX"], ids=["as-built", "no-avx"])
+def pairs(tmp_path_factory, request):
+    """The engine's pairs, as built (AVX where the processor has it) and with SSE2 alone."""
     cc = find_compiler()
     assert cc is not None, "the engine needs a C compiler (cc, gcc or clang)"
     tmp = tmp_path_factory.mktemp("broad")
     (tmp / "snakecg_layout.h").write_text(LAYOUT)
     (tmp / "shim.c").write_text(SHIM)
     lib = tmp / "libbroad.so"
-    subprocess.run([cc, *CORE_FLAGS, "-shared", "-I", str(tmp), "-I", str(ENGINE_DIR),
+    flags = [request.param] if request.param else []
+    subprocess.run([cc, *CORE_FLAGS, *flags, "-shared", "-I", str(tmp), "-I", str(ENGINE_DIR),
                     str(tmp / "shim.c"), "-o", str(lib), "-lm"], check=True,
                    capture_output=True)
     fn = ctypes.CDLL(str(lib)).pairs

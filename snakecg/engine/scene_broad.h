@@ -5,36 +5,30 @@
 
 #include <stdint.h>
 
-/* Bit k set: body ib = ib0 + k (ib0 <= ib < ib1 <= ib0 + 64) may touch body ia: their
- * bounding circles (centre, reach: 2 and 1 per body) are not apart by more than twice the
- * tolerance, (reach_a + reach_b + 2 tol)(1 + 1e-9) (a distance that is NaN is not apart). */
-SC_INTERNAL uint64_t sc_broad_near(const double *centre, const double *reach, double tol,
-                                   sc_int ia, sc_int ib0, sc_int ib1);
+/* The words of bits per body of sc_broad_masks: one per 64 bodies. */
+static inline sc_int sc_broad_words(sc_int nbody) { return (nbody + 63) / 64; }
+/* The bounding circles' room per coordinate: 4 more than nbody, rounded up to a multiple of 4
+ * (the pads after the last body are read, their bits dropped: any number, not left unset). */
+static inline sc_int sc_broad_pad(sc_int nbody) { return (nbody + 7) & ~(sc_int)3; }
 
-/* The bodies ib > ia that may touch ia, in order, 64 at a time (neighbouring links skipped):
- * sc_broad_first, then sc_broad_next until it returns -1. */
-typedef struct { uint64_t near; sc_int base, next; } sc_broad;
+/* For every body ia < na, the bodies ib > ia (neighbouring links, ib = ia + 1 < nl, skipped)
+ * that may touch it: their bounding circles are not apart by more than twice the tolerance,
+ * (reach_a + reach_b + 2 tol)(1 + 1e-9) (a distance that is NaN is not apart). The circles:
+ * centre the bodies' x, then from centre + sc_broad_pad(nbody) their y, reach their radii
+ * (sc_broad_pad(nbody) each); body ib is bit ib % 64 of near[ia sc_broad_words(nbody) +
+ * ib / 64]. */
+SC_INTERNAL void sc_broad_masks(const double *centre, const double *reach, double tol,
+                                sc_int na, sc_int nl, sc_int nbody, uint64_t *near);
 
-static inline void sc_broad_first(sc_broad *it, sc_int ia, sc_int nl) {
-  it->near = 0;
-  it->base = it->next = ia + 1 + (ia + 1 < nl); /* (not the next link: its neighbour) */
-}
-
-static inline sc_int sc_broad_next(sc_broad *it, const double *centre, const double *reach,
-                                   double tol, sc_int ia, sc_int nbody) {
+/* The lowest body of a word of bits (not zero) at base, the bit cleared. */
+static inline sc_int sc_broad_pop(uint64_t *bits, sc_int base) {
   sc_int k;
-  while (!it->near) {
-    if (it->next >= nbody) return -1;
-    it->base = it->next;
-    it->next = it->base + 64 < nbody ? it->base + 64 : nbody;
-    it->near = sc_broad_near(centre, reach, tol, ia, it->base, it->next);
-  }
 #if defined(__GNUC__)
-  k = (sc_int)__builtin_ctzll(it->near);
+  k = (sc_int)__builtin_ctzll(*bits);
 #else
-  for (k = 0; !((it->near >> k) & 1u); ++k) continue;
+  for (k = 0; !((*bits >> k) & 1u); ++k) continue;
 #endif
-  it->near &= it->near - 1;
-  return it->base + k;
+  *bits &= *bits - 1;
+  return base + k;
 }
 #endif

@@ -6,6 +6,7 @@
  */
 #include "snakecg_layout.h"
 #include "engine.h"
+#include "scene_broad.h"
 
 static void box_corners(double x, double y, double th, double sx, double sy, sc_shape *s) {
   double c = cos(th), sn = sin(th), a = sx / 2, b = sy / 2;
@@ -26,14 +27,15 @@ static void box_corners(double x, double y, double th, double sx, double sy, sc_
  * rotation products, equal to them within rounding): the objects at their poses qo (3 n_o; a
  * simulation's state) or, qo null, placed by the scene (a pose, or touching a link on its
  * side at an offset); their poses into pose, the broad phase's bounding circles (a wall:
- * none) into centre (2 each) and reach. Without how & 1 (all), the parts that do not move
- * (the obstacles' shapes and circles, every reach) are kept from an earlier call on the same
- * pk and buffers. */
+ * none) into centre (the bodies' x, then their y) and reach as scene_broad.h lays them out.
+ * Without how & 1 (all), the parts that do not move (the obstacles' shapes and circles, every
+ * reach) are kept from an earlier call on the same pk and buffers. */
 SC_INTERNAL void sc_scene_place(const double *pk, const double *P, const double *qo, int how,
                                 double *cs, sc_shape *shape, double *pose, double *centre,
                                 double *reach) {
   const double *lk = pk + (sc_int)pk[SP_LINKS], r = pk[SP_RADIUS];
   const sc_int no = (sc_int)pk[SP_NO], nob = (sc_int)pk[SP_NOB], nl = SNAKECG_NL;
+  const sc_int pad = sc_broad_pad(nl + no + nob); /* (centre's y after its x) */
   const int all = how & 1;
   sc_int i, j, k;
   for (i = 0; i < nl; ++i) {
@@ -51,8 +53,8 @@ SC_INTERNAL void sc_scene_place(const double *pk, const double *P, const double 
     shape[i].kind = SC_SEGMENT;
     shape[i].np = 2;
     shape[i].radius = r;
-    centre[2 * i] = 0.5 * (e0[0] + e1[0]);
-    centre[2 * i + 1] = 0.5 * (e0[1] + e1[1]);
+    centre[i] = 0.5 * (e0[0] + e1[0]);
+    centre[pad + i] = 0.5 * (e0[1] + e1[1]);
     if (all) reach[i] = 0.5 * L + r;
   }
   for (j = 0; j < no; ++j) {
@@ -84,14 +86,14 @@ SC_INTERNAL void sc_scene_place(const double *pk, const double *P, const double 
     } else {
       box_corners(ps[0], ps[1], ps[2], o[1], o[2], sh);
     }
-    centre[2 * (nl + j)] = ps[0]; /* a disc's centre; a box's, its corners' mean */
-    centre[2 * (nl + j) + 1] = ps[1];
+    centre[nl + j] = ps[0]; /* a disc's centre; a box's, its corners' mean */
+    centre[pad + nl + j] = ps[1];
     if (all) reach[nl + j] = o[0] == 1.0 ? o[3] : 0.5 * hypot(o[1], o[2]);
   }
   for (k = 0; all && k < nob; ++k) {
     const double *o = pk + (sc_int)pk[SP_OBSTACLES] + OBS_W * k;
     sc_shape *sh = shape + nl + no + k;
-    double *c = centre + 2 * (nl + no + k), far = 0.0;
+    double c[2], far = 0.0;
     sh->radius = 0.0;
     sh->p[0][0] = o[1];
     sh->p[0][1] = o[2];
@@ -115,6 +117,8 @@ SC_INTERNAL void sc_scene_place(const double *pk, const double *P, const double 
     sc_shape_centroid(sh, c);
     for (j = 0; j < sh->np; ++j) far = fmax(far, hypot(sh->p[j][0] - c[0], sh->p[j][1] - c[1]));
     reach[nl + no + k] = sh->kind == SC_HALFPLANE ? INFINITY : far + sh->radius;
+    centre[nl + no + k] = c[0];
+    centre[pad + nl + no + k] = c[1];
   }
 }
 
@@ -123,15 +127,16 @@ SC_INTERNAL void sc_scene_place(const double *pk, const double *P, const double 
  * placement that the drawing and a simulation's start read. Returns 0, or -1 out of memory. */
 int SNAKECG_EXPORT(core_scene_place)(const double *pk, sc_int n, const double *P,
                                      double *pose) {
-  const sc_int no = (sc_int)pk[SP_NO], nb = SNAKECG_NL + no;
+  const sc_int no = (sc_int)pk[SP_NO], nb = SNAKECG_NL + no,
+               pad = sc_broad_pad(nb + (sc_int)pk[SP_NOB]); /* (the circles' layout) */
   sc_shape *shape = (sc_shape *)malloc(sizeof(sc_shape) * (size_t)nb);
-  double *d = (double *)malloc(sizeof(double) * (size_t)(2 * SNAKECG_NL + 3 * nb));
+  double *d = (double *)malloc(sizeof(double) * (size_t)(2 * SNAKECG_NL + 3 * pad));
   sc_int i;
   const int ok = shape && d;
   if (ok)
     for (i = 0; i < n; ++i) /* the parts that do not move (how = 0) are not read */
       sc_scene_place(pk, P + 3 * SNAKECG_NL * i, 0, 0, d, shape, pose + 3 * no * i,
-                     d + 2 * SNAKECG_NL, d + 2 * SNAKECG_NL + 2 * nb);
+                     d + 2 * SNAKECG_NL, d + 2 * SNAKECG_NL + 2 * pad);
   free(shape);
   free(d);
   return ok ? 0 : -1;

@@ -66,6 +66,7 @@ typedef struct {
   sc_int cool, backoff; /* samples left cold after a start that fell back, the next count */
   sc_shape *shape;
   double *centre, *reach, *pose, *T; /* T: the contacts' tangent rows (null: no friction) */
+  uint64_t *near; /* the broad phase's bits (scene_broad.h), sc_broad_words per moving body */
 } sc_scene_work;
 
 /* The bodies placed at the link poses P (the objects at qo, or by the scene): the parts that
@@ -76,27 +77,50 @@ static void place(sc_scene_work *sw, const double *P, const double *qo, int give
   sw->placed = 1;
 }
 
-/* The velocity of point p fixed on body b, in the generalized velocities: rows x, y added
- * with sign into Dx, Dy (n each). */
-static void point_jacobian(sc_scene_work *sw, sc_int b, const double *p, const double *P,
-                           double sign, double *Dx, double *Dy) {
+/* An object's part of a contact's D = J_b - J_a (sign 1: b's, -1: a's) at its point p, in
+ * object o's columns (x: 1, 0, y_o - p_y; y: 0, 1, p_x - x_o) times sign, added to zero. */
+static void object_part(const sc_scene_work *sw, sc_int o, const double *p, double sign,
+                        const double *nrm, double *row, double *Dx, double *Dy) {
+  const double *ps = sw->pose + 3 * o, x[3] = {0.0 + sign, 0.0, 0.0 + sign * -(p[1] - ps[1])},
+               y[3] = {0.0, 0.0 + sign, 0.0 + sign * (p[0] - ps[0])};
+  sc_int j, col = SNAKECG_NS + 3 * o;
+  for (j = 0; j < 3; ++j) row[col + j] = nrm[0] * x[j] + nrm[1] * y[j];
+  for (j = 0; Dx && j < 3; ++j) Dx[col + j] = x[j], Dy[col + j] = y[j];
+}
+
+/* A contact's row n . D (n entries), D = J_b - J_a at its points (p_b on body b, p_a on a; on
+ * a link from its twist's column J_i, x: J_x - r_y J_w, y: J_y + r_x J_w, r from its COM; on
+ * an object object_part) summed from zero, b's then a's; where Dx is not null, D's two rows
+ * into Dx, Dy (a friction row's). ib > ia: a link b has a link a. */
+static void contact_row(const sc_scene_work *sw, sc_int ia, sc_int ib, const sc_touch *t,
+                        const double *P, double *row, double *Dx, double *Dy) {
+  const sc_int n = sw->n, ns = SNAKECG_NS, nl = SNAKECG_NL, step = 3 * SNAKECG_NL;
+  const double n0 = t->n[0], n1 = t->n[1], zero = n0 * 0.0 + n1 * 0.0;
+  const double *Ja = sw->J + 3 * ia, *Jb = sw->J + 3 * ib;
+  const double ra0 = ia < nl ? t->a[0] - P[3 * ia] : 0.0,
+               ra1 = ia < nl ? t->a[1] - P[3 * ia + 1] : 0.0,
+               rb0 = ib < nl ? t->b[0] - P[3 * ib] : 0.0,
+               rb1 = ib < nl ? t->b[1] - P[3 * ib + 1] : 0.0;
   sc_int j;
-  if (b < SNAKECG_NL) {
-    const double *J = sw->J;
-    double r0 = p[0] - P[3 * b], r1 = p[1] - P[3 * b + 1];
-    for (j = 0; j < SNAKECG_NS; ++j) {
-      const double *c = J + 3 * SNAKECG_NL * j + 3 * b;
-      Dx[j] += sign * (c[0] + -r1 * c[2]);
-      Dy[j] += sign * (c[1] + r0 * c[2]);
+  if (ib < nl) /* two links */
+    for (j = 0; j < ns; ++j, Ja += step, Jb += step) {
+      const double x = (0.0 + (Jb[0] + -rb1 * Jb[2])) - (Ja[0] + -ra1 * Ja[2]),
+                   y = (0.0 + (Jb[1] + rb0 * Jb[2])) - (Ja[1] + ra0 * Ja[2]);
+      row[j] = n0 * x + n1 * y;
+      if (Dx) Dx[j] = x, Dy[j] = y;
     }
-  } else if (b < SNAKECG_NL + sw->no) {
-    sc_int o = b - SNAKECG_NL, col = SNAKECG_NS + 3 * o;
-    const double *ps = sw->pose + 3 * o;
-    Dx[col] += sign;
-    Dx[col + 2] += sign * -(p[1] - ps[1]);
-    Dy[col + 1] += sign;
-    Dy[col + 2] += sign * (p[0] - ps[0]);
+  else if (ia < nl) /* a link and an object or obstacle */
+    for (j = 0; j < ns; ++j, Ja += step) {
+      const double x = 0.0 - (Ja[0] + -ra1 * Ja[2]), y = 0.0 - (Ja[1] + ra0 * Ja[2]);
+      row[j] = n0 * x + n1 * y;
+      if (Dx) Dx[j] = x, Dy[j] = y;
+    }
+  for (j = ia < nl ? ns : 0; j < n; ++j) { /* the objects' columns (and a's, an object's) */
+    row[j] = zero;
+    if (Dx) Dx[j] = Dy[j] = 0.0;
   }
+  if (ib >= nl && ib < nl + sw->no) object_part(sw, ib - nl, t->b, 1.0, t->n, row, Dx, Dy);
+  if (ia >= nl) object_part(sw, ia - nl, t->a, -1.0, t->n, row, Dx, Dy);
 }
 
 static sc_int body_kind(const sc_scene_work *sw, sc_int b, sc_int *index) {
@@ -111,49 +135,49 @@ static sc_int body_kind(const sc_scene_work *sw, sc_int b, sc_int *index) {
 static sc_int contact_rows(sc_scene_work *sw, const double *P, double *recs, double *over,
                            sc_int cap) {
   const double tol = sw->tol, size = sw->pk[SP_SIZE];
-  const sc_int n = sw->n, nl = SNAKECG_NL;
-  sc_int ia, ib, nc = 0, k, j;
+  const sc_int n = sw->n, nl = SNAKECG_NL, nw = sc_broad_words(sw->nbody);
+  sc_int ia, ib, nc = 0, k, j, w;
+  uint64_t bits;
   sc_touch t[SC_TOUCH_MAX];
-  sc_broad it; /* (the bodies after ia whose circles are not apart: scene_broad.h) */
+  /* the bodies after ia whose circles are not apart (scene_broad.h), in order */
+  sc_broad_masks(sw->centre, sw->reach, tol, nl + sw->no, nl, sw->nbody, sw->near);
   for (ia = 0; ia < nl + sw->no; ++ia)
-    for (sc_broad_first(&it, ia, nl);
-         (ib = sc_broad_next(&it, sw->centre, sw->reach, tol, ia, sw->nbody)) >= 0;) {
-      double d;
-      int count;
-      d = sc_shape_closest(sw->shape + ia, sw->shape + ib, size, tol, tol, t, &count);
-      if (d < -tol) {
-        double *o = over, idx;
-        o[0] = (double)body_kind(sw, ia, &k), o[1] = (double)k;
-        idx = (double)body_kind(sw, ib, &k);
-        o[2] = idx, o[3] = (double)k, o[4] = -d, o[5] = tol;
-        return -SS_OVERLAP;
-      }
-      if (d > tol) continue;
-      for (k = 0; k < count; ++k) {
-        double *row = sw->A + nc * n, *Dx = sw->D, *Dy = sw->D + n, *rec;
-        sc_int kk;
-        if (nc >= cap) return -SS_MORE;
-        memset(Dx, 0, sizeof(double) * (size_t)(2 * n)); /* D = J_b - J_a at the points */
-        point_jacobian(sw, ib, t[k].b, P, 1.0, Dx, Dy);
-        point_jacobian(sw, ia, t[k].a, P, -1.0, Dx, Dy);
-        for (j = 0; j < n; ++j) row[j] = t[k].n[0] * Dx[j] + t[k].n[1] * Dy[j];
-        rec = recs + CR_W * nc;
-        memset(rec, 0, sizeof(double) * CR_W);
-        rec[0] = (double)body_kind(sw, ia, &kk), rec[1] = (double)kk;
-        rec[2] = (double)body_kind(sw, ib, &kk), rec[3] = (double)kk;
-        for (j = 0; j < 2; ++j) {
-          rec[4 + j] = t[k].a[j];
-          rec[6 + j] = t[k].b[j];
-          rec[8 + j] = t[k].n[j];
+    for (w = 0; w < nw; ++w)
+      for (bits = sw->near[ia * nw + w]; bits;) {
+        double d;
+        int count;
+        ib = sc_broad_pop(&bits, 64 * w);
+        d = sc_shape_closest(sw->shape + ia, sw->shape + ib, size, tol, tol, t, &count);
+        if (d < -tol) {
+          double *o = over, idx;
+          o[0] = (double)body_kind(sw, ia, &k), o[1] = (double)k;
+          idx = (double)body_kind(sw, ib, &k);
+          o[2] = idx, o[3] = (double)k, o[4] = -d, o[5] = tol;
+          return -SS_OVERLAP;
         }
-        rec[10] = d;
-        sw->kind[nc] = K_UNILATERAL;
-        sw->start[nc] = nc;
-        sw->par[3 * nc] = sw->par[3 * nc + 1] = sw->par[3 * nc + 2] = 0.0;
-        if (sw->T) sc_friction_row(sw->pk, ia, ib, t[k].n, Dx, Dy, n, sw->T + nc * n, rec);
-        ++nc;
+        if (d > tol) continue;
+        for (k = 0; k < count; ++k) {
+          double *Dx = sw->T ? sw->D : 0, *Dy = sw->D + n, *rec;
+          sc_int kk;
+          if (nc >= cap) return -SS_MORE;
+          contact_row(sw, ia, ib, t + k, P, sw->A + nc * n, Dx, Dy);
+          rec = recs + CR_W * nc;
+          memset(rec, 0, sizeof(double) * CR_W);
+          rec[0] = (double)body_kind(sw, ia, &kk), rec[1] = (double)kk;
+          rec[2] = (double)body_kind(sw, ib, &kk), rec[3] = (double)kk;
+          for (j = 0; j < 2; ++j) {
+            rec[4 + j] = t[k].a[j];
+            rec[6 + j] = t[k].b[j];
+            rec[8 + j] = t[k].n[j];
+          }
+          rec[10] = d;
+          sw->kind[nc] = K_UNILATERAL;
+          sw->start[nc] = nc;
+          sw->par[3 * nc] = sw->par[3 * nc + 1] = sw->par[3 * nc + 2] = 0.0;
+          if (sw->T) sc_friction_row(sw->pk, ia, ib, t[k].n, Dx, Dy, n, sw->T + nc * n, rec);
+          ++nc;
+        }
       }
-    }
   return nc;
 }
 
@@ -214,13 +238,21 @@ static int kinematics(sc_scene_work *sw, const double *q, int mass) {
   return SNAKECG_LJ(ws->arg, ws->res, ws->iw, ws->w, 0) != 0;
 }
 
+/* M_s (the generated column-major) into M's first n_s rows and columns (n x n, row-major): its
+ * columns as rows, M_s symmetric entry for entry (derive/kinematics.py mirrors each entry). */
+static void snake_block(const double *Ms, double *M, sc_int n) {
+  sc_int i;
+  if (n == SNAKECG_NS) memcpy(M, Ms, sizeof(double) * SNAKECG_NS * SNAKECG_NS); /* (one copy) */
+  for (i = 0; n > SNAKECG_NS && i < SNAKECG_NS; ++i)
+    memcpy(M + i * n, Ms + SNAKECG_NS * i, sizeof(double) * SNAKECG_NS);
+}
+
 /* The bodies' full inertia (M_s; m, m, I per object), n x n row-major, into M. */
 static void full_inertia(const sc_scene_work *sw, double *M) {
   const sc_int n = sw->n, ns = SNAKECG_NS;
-  sc_int i, j, o;
-  memset(M, 0, sizeof(double) * (size_t)(n * n));
-  for (i = 0; i < ns; ++i)
-    for (j = 0; j < ns; ++j) M[i * n + j] = sw->Ms[i + ns * j];
+  sc_int o;
+  if (n > ns) memset(M, 0, sizeof(double) * (size_t)(n * n)); /* (else every entry set below) */
+  snake_block(sw->Ms, M, n);
   for (o = 0; o < sw->no; ++o) {
     const double *obj = sw->pk + (sc_int)sw->pk[SP_OBJECTS] + OBJ_W * o;
     sc_int c = ns + 3 * o;
@@ -253,8 +285,7 @@ static void scene_sample(sc_scene_work *sw, const double *q, const double *tau,
   }
   m = ground_rows(sw, nc);
   nb = nc + sw->ng;
-  for (i = 0; i < ns; ++i) /* M_s into the inertia (the objects' part is the call's) */
-    for (j = 0; j < ns; ++j) sw->M[i * n + j] = sw->Ms[i + ns * j];
+  snake_block(sw->Ms, sw->M, n); /* M_s into the inertia (the objects' part is the call's) */
   sw->f[0] = sw->f[1] = sw->f[2] = 0.0; /* the force: B tau, the objects' wrenches */
   for (i = 3; i < ns; ++i) sw->f[i] = tau[i - 3];
   for (i = 0; i < 3 * sw->no; ++i) sw->f[ns + i] = fo[i];
@@ -324,7 +355,7 @@ enum { SW_HEAD = (sizeof(sc_scene_work) + sizeof(double) - 1) / sizeof(double) }
 static int work_alloc(sc_scene_work *sw, const double *pk, sc_int ccap, sc_int mcap, int own) {
   const sc_work_fn fns[] = {SNAKECG_LP_WORK, SNAKECG_LJ_WORK, SNAKECG_SK_WORK};
   const sc_int mc = own ? mcap : 0;
-  sc_int n, nd, k, i, sz[4], most[4] = {0, 0, 0, 0};
+  sc_int n, nd, k, i, sz[4], most[4] = {0, 0, 0, 0}, pad;
   double *d;
   sw->pk = pk;
   sw->tol = pk[SP_TOL];
@@ -336,18 +367,21 @@ static int work_alloc(sc_scene_work *sw, const double *pk, sc_int ccap, sc_int m
   sw->ccap = ccap;
   sw->mcap = mcap;
   sw->nbody = SNAKECG_NL + sw->no + sw->nob;
+  pad = sc_broad_pad(sw->nbody); /* (the bounding circles' room: scene_broad.h) */
   for (k = 0; k < SC_COUNT(fns); ++k) {
     sz[0] = sz[1] = sz[2] = sz[3] = 0;
     if (fns[k](sz, sz + 1, sz + 2, sz + 3)) return -1;
     for (i = 0; i < 4; ++i) most[i] = sz[i] > most[i] ? sz[i] : most[i];
   }
   nd = mc * n + 2 * n * n + 7 * n + 3 * mc + 3 * mc + 5 * SNAKECG_NL +
-       3 * SNAKECG_NL * SNAKECG_NS + SNAKECG_NS * SNAKECG_NS + 3 * sw->nbody + 3 * sw->no + 8 +
+       3 * SNAKECG_NL * SNAKECG_NS + SNAKECG_NS * SNAKECG_NS + 3 * pad + 3 * sw->no + 8 +
        3 * mc + (pk[SP_FRICTION] != 0.0 ? ccap * n : 0);
   sw->base = (double *)malloc((size_t)(SW_HEAD + nd + most[3] + 1) * sizeof(double) +
                               (size_t)(most[0] + most[1] + 2) * sizeof(double *) +
                               (size_t)(2 * mc + 2 + most[2] + 1) * sizeof(sc_int) +
-                              (size_t)(sw->nbody + 1) * sizeof(sc_shape));
+                              (size_t)(sw->nbody + 1) * sizeof(sc_shape) +
+                              (size_t)((SNAKECG_NL + sw->no) * sc_broad_words(sw->nbody)) *
+                                  sizeof(uint64_t));
   if (!sw->base) return -1;
   sw->A = d = sw->base + SW_HEAD; /* (the head: a kept state scratch's struct) */
   sw->ws.w = d + nd;
@@ -356,6 +390,7 @@ static int work_alloc(sc_scene_work *sw, const double *pk, sc_int ccap, sc_int m
   sw->kind = (sc_int *)(sw->ws.res + most[1] + 1);
   sw->ws.iw = sw->kind + 2 * mc + 2;
   sw->shape = (sc_shape *)(sw->ws.iw + most[2] + 1);
+  sw->near = (uint64_t *)(sw->shape + sw->nbody + 1);
   d += mc * n; /* the rows, then what is written before it is read: not zeroed */
   sw->M = d; d += n * n; /* (the forward's full_inertia) */
   sw->L = d; d += n * n;
@@ -367,7 +402,8 @@ static int work_alloc(sc_scene_work *sw, const double *pk, sc_int ccap, sc_int m
   sw->P = d; d += 3 * SNAKECG_NL; /* (the generated functions' outputs are dense) */
   sw->J = d; d += 3 * SNAKECG_NL * SNAKECG_NS;
   sw->Ms = d; d += SNAKECG_NS * SNAKECG_NS;
-  sw->centre = d, d += 2 * sw->nbody, sw->reach = d, d += sw->nbody, sw->pose = d, d += 3 * sw->no;
+  sw->centre = d, d += 2 * pad, sw->reach = d, d += pad, sw->pose = d, d += 3 * sw->no;
+  for (i = sw->nbody; i < pad; ++i) sw->centre[i] = sw->centre[pad + i] = sw->reach[i] = 0.0;
   sw->cs = d, sw->T = pk[SP_FRICTION] != 0.0 ? d + 2 * SNAKECG_NL : 0; /* (cs: 2 NL) */
   /* zeros: the generated functions' pointers, the shapes (not what the model's sizes or mcap
    * scale: written before it is read) */
@@ -539,14 +575,14 @@ int SNAKECG_EXPORT(core_scene_gaps)(const sc_scene_state *c) {
   place(&sw, sw.P, c->qo, 0);
   for (ia = 0; ia < SNAKECG_NL + sw.no; ++ia)
     for (ib = ia + 1; ib < sw.nbody; ++ib) {
-      const double *ca = sw.centre + 2 * ia, *cb = sw.centre + 2 * ib;
+      const double *cx = sw.centre, *cy = sw.centre + sc_broad_pad(sw.nbody);
       sc_touch t[SC_TOUCH_MAX];
       double d, *rec;
       int count;
       if (ib < SNAKECG_NL && ib - ia < 2) continue; /* neighbouring links */
       if (c->pair_a >= 0 && !(ia == c->pair_a && ib == c->pair_b)) continue;
       if (c->pair_a < 0 &&
-          hypot(ca[0] - cb[0], ca[1] - cb[1]) > sw.reach[ia] + sw.reach[ib] + c->margin)
+          hypot(cx[ia] - cx[ib], cy[ia] - cy[ib]) > sw.reach[ia] + sw.reach[ib] + c->margin)
         continue;
       d = sc_shape_closest(sw.shape + ia, sw.shape + ib, c->pk[SP_SIZE], sw.tol, INFINITY, t,
                            &count);
