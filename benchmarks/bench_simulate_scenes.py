@@ -211,8 +211,11 @@ def paper_push(repeat) -> None:
         prun = plate.simulate(q, 0.5, tau=tau)
         steps = min(steps, time.process_time() - t0)
     share = solve_share(plate, prun)
+    # the stepping is part of the run: a noisy minimum above the run's is capped by it
+    rest = best - share * min(steps, best)
+    free = f"{0.5 / rest:.0f} x real time" if rest > 0 else "not resolved in this run (noise)"
     print(f"  of it the stepping {steps * 1e3:.2f} ms, the exact solve {100 * share:.0f} % of "
-          f"a step; were the solve free: {0.5 / (best - share * steps):.0f} x real time")
+          f"a step; were the solve free: {free}")
 
 
 def primal_on_off(model, q0, gait, duration, repeat) -> None:
