@@ -3,12 +3,12 @@
 #ifndef SNAKECG_ENGINE_SCENE_METRICS_H
 #define SNAKECG_ENGINE_SCENE_METRICS_H
 
-/* The metrics of a solved sample from the bodies' inertia M = L L^T (n x n, block diagonal:
- * M_s on the snake's n_s coordinates, then m, m, I per object; L as sc_inertia_factor writes
- * it, its rows from t on their diagonal, its lower triangle read), the force f (n) and the
- * accelerations a: norms (4: ||qdd_s||^2, ||a_o||^2 summed, ||lambda||^2, sr) and each
- * object's ||a_o||^2 (no). */
+/* The metrics of a solved sample from the bodies' inertia M = L D L^T (n x n, block diagonal:
+ * M_s on the snake's n_s coordinates, then m, m, I per object; L and r as sc_tiny_inertia
+ * writes them: L unit lower with D on its diagonal, its rows from t on their diagonal, r = D^-1),
+ * the force f (n) and the accelerations a: norms (4: ||qdd_s||^2, ||a_o||^2 summed,
+ * ||lambda||^2, sr) and each object's ||a_o||^2 (no). */
 SC_INTERNAL void sc_scene_metrics(sc_int n, sc_int no, sc_int t, const double *L,
-                                  const double *f, const double *a, double *norms,
-                                  double *obj);
+                                  const double *r, const double *f, const double *a,
+                                  double *norms, double *obj);
 #endif

@@ -298,16 +298,16 @@ static void scene_sample(sc_scene_work *sw, const double *q, const double *tau,
    * scene_friction.c) */
   if (sw->T || !sc_tiny_forward(n, m, nb, sw->M, sw->f, sw->A, sw->kind, sw->start, sw->par,
                                 warm ? sw->prev : 0, sw->lam, a, sw->w, sw->st, out + SO_INFO,
-                                sw->L, &t))
+                                sw->L, sw->g, &t))
     sc_friction_solve(n, m, nb, nc, sw->M, sw->f, sw->A, NULL, sw->kind, sw->start, sw->par,
                       sw->T, rec, max_sweeps, warm ? sw->prev : 0, sw->lam, a, sw->w, sw->st,
                       out + SO_INFO, out + SO_SOLUTIONS); /* (T null: core_scene_solve_s's) */
-  /* the metrics (scene_metrics.c) by the inertia's factor (scene_small.c's, the solve's) */
-  if (out[SO_INFO] == 0.0 && t < 0 &&
-      !sc_inertia_factor(n, sw->M, sw->f, 1e-14, sw->L, sw->g, &t))
+  /* the metrics (scene_metrics.c) by the inertia's factor (the tiny path's, whichever path
+   * solved: the metrics do not depend on it) */
+  if (out[SO_INFO] == 0.0 && t < 0 && !sc_tiny_inertia(n, sw->M, sw->f, sw->L, sw->g, &t))
     out[SO_INFO] = 2.0; /* (a singular mass matrix, as the solve says it) */
   if (out[SO_INFO] == 0.0)
-    sc_scene_metrics(n, sw->no, t, sw->L, sw->f, a, out + SO_NORM_QDD, a + n);
+    sc_scene_metrics(n, sw->no, t, sw->L, sw->g, sw->f, a, out + SO_NORM_QDD, a + n);
   else
     for (i = SO_NORM_QDD; i <= SO_SR; ++i) out[i] = NAN;
   for (i = 0; out[SO_INFO] != 0.0 && i < n + sw->no; ++i) a[i] = NAN; /* (qdd, a_o, ||a_o||^2) */

@@ -74,15 +74,16 @@ static long tiny_take(int k) {
  * (beyond, scene_small.c's loops: a fully unrolled factor grows as n_s^3) */
 #define TINY_FIXED_NS 9
 
-/* The inertia's factor for n coordinates whose rows from t on are their diagonal (n, t
- * constants where the caller's branch makes them so): sc_inertia_factor's (the Cholesky of the
- * dense block, the tail's square roots, the same pivot rule; the same operations in the same
- * order, bit for bit its L), and the pivots' reciprocals (r: n) for the sweeps below. L: the
- * dense block's lower triangle and the diagonal (n x n). Returns 0 where the pivot rule
- * fails. */
+/* The inertia's factor M = L D L^T for n coordinates whose rows from t on are their diagonal
+ * (n, t constants where the caller's branch makes them so): sc_inertia_factor's pivot rule on
+ * the same pivots (D_j, the Cholesky's squared diagonal), without its square roots and with
+ * one division a column (r_j = 1 / D_j; the column's entries products with it: on the chain
+ * from one column to the next a division and a product, where the Cholesky has a square root
+ * and a division). L: unit lower triangle (the dense block's; its diagonal holds D), r: the
+ * pivots' reciprocals (n). Returns 0 where the pivot rule fails. */
 TINY_FLAT int factor(const sc_int n, const sc_int t, const double *M, double *L, double *r) {
   const double rel = 1e-14;
-  double big = 0.0, big_t = 0.0, rel_t;
+  double big = 0.0, big_t = 0.0, rel_t, s[SC_TINY_N];
   sc_int i, j, k;
   for (i = 0; i < n; ++i) {
     const double d = M[i * n + i];
@@ -91,30 +92,34 @@ TINY_FLAT int factor(const sc_int n, const sc_int t, const double *M, double *L,
   }
   if (!(big > 0.0) || !isfinite(big) || !(big_t > 0.0) || !isfinite(big_t)) return 0;
   rel_t = big_t == big ? rel : rel * (big / big_t);
-  TINY_UNROLL for (j = 0; j < t; ++j) {
-    double d = M[j * n + j];
-    TINY_UNROLL for (k = 0; k < j; ++k) d -= L[j * n + k] * L[j * n + k];
+  TINY_UNROLL for (j = 0; j < t; ++j) { /* L[i, k] D_k (k < j) kept in L's upper triangle */
+    double d = M[j * n + j], q;
+    TINY_UNROLL for (k = 0; k < j; ++k) d -= L[j * n + k] * L[k * n + j];
     if (!(d > rel_t * big_t)) return 0;
-    d = sqrt(d);
     L[j * n + j] = d;
-    r[j] = 1.0 / d;
+    r[j] = q = 1.0 / d;
     TINY_UNROLL for (i = j + 1; i < t; ++i) {
-      double s = M[i * n + j];
-      TINY_UNROLL for (k = 0; k < j; ++k) s -= L[i * n + k] * L[j * n + k];
-      L[i * n + j] = s / d;
+      double u = M[i * n + j];
+      TINY_UNROLL for (k = 0; k < j; ++k) u -= L[i * n + k] * L[k * n + j];
+      s[i] = u;
+    }
+    TINY_UNROLL for (i = j + 1; i < t; ++i) {
+      L[j * n + i] = s[i];
+      L[i * n + j] = s[i] * q;
     }
   }
   TINY_UNROLL for (i = t; i < n; ++i) { /* the diagonal tail */
     if (!(M[i * n + i] > rel * big)) return 0;
-    L[i * n + i] = sqrt(M[i * n + i]);
-    r[i] = 1.0 / L[i * n + i];
+    L[i * n + i] = M[i * n + i];
+    r[i] = 1.0 / M[i * n + i];
   }
   return 1;
 }
 
-/* Z = L^-1 [A^T f] (n x (m + 1): row i coordinate i's, the last column g = L^-1 f) and its
- * Gram matrix in one sweep over the coordinates (m a constant; each coordinate's row of Z
- * added to the sums as it is made): G = Z_A^T Z_A (m x m), b = Z_A^T g + c (c may be null). */
+/* Z = L^-1 [A^T f] (n x (m + 1): row i coordinate i's, the last column g = L^-1 f; L unit) and
+ * its Gram matrix in one sweep over the coordinates (m a constant; each coordinate's row of Z
+ * added to the sums as it is made, weighted by its pivot's reciprocal):
+ * G = Z_A^T D^-1 Z_A (m x m), b = Z_A^T D^-1 g + c (c may be null). */
 TINY_FLAT void gram(const sc_int m, sc_int n, sc_int t, const double *restrict L,
                     const double *restrict r, const double *restrict A,
                     const double *restrict f, const double *restrict c, double *restrict Z,
@@ -124,7 +129,7 @@ TINY_FLAT void gram(const sc_int m, sc_int n, sc_int t, const double *restrict L
   sc_int i, j, k;
   for (j = 0; j < w * w; ++j) S[j] = 0.0;
   for (i = 0; i < n; ++i) {
-    double z[SC_TINY_M + 1];
+    double z[SC_TINY_M + 1], zr[SC_TINY_M + 1];
     const double ri = r[i];
     for (j = 0; j < m; ++j) z[j] = A[j * n + i];
     z[m] = f[i];
@@ -132,9 +137,12 @@ TINY_FLAT void gram(const sc_int m, sc_int n, sc_int t, const double *restrict L
       const double l = L[i * n + k];
       for (j = 0; j < w; ++j) z[j] -= l * Z[k * w + j];
     }
-    for (j = 0; j < w; ++j) Z[i * w + j] = z[j] = z[j] * ri;
+    for (j = 0; j < w; ++j) {
+      Z[i * w + j] = z[j];
+      zr[j] = z[j] * ri;
+    }
     for (j = 0; j < w; ++j)
-      for (k = 0; k <= j; ++k) S[j * w + k] += z[j] * z[k];
+      for (k = 0; k <= j; ++k) S[j * w + k] += zr[j] * z[k];
   }
   for (j = 0; j < m; ++j) {
     for (k = 0; k <= j; ++k) G[j * m + k] = G[k * m + j] = S[j * w + k];
@@ -156,16 +164,16 @@ TINY_FLAT void g_plus_z_lam(const sc_int m, sc_int n, const double *restrict Z,
   }
 }
 
-/* a := L^-T a (eq. 18's a = L^-T (g + Z lam) from the factor) for factor's L and r (L's rows
- * from t on their diagonal; n, t constants where the caller's branch makes them so) */
+/* a := L^-T D^-1 a (eq. 18's a = L^-T D^-1 (g + Z lam) from the factor) for factor's L and r
+ * (L's rows from t on their diagonal; n, t constants where the caller's branch makes them so) */
 TINY_FLAT void back(const sc_int n, const sc_int t, const double *restrict L,
                     const double *restrict r, double *restrict a) {
   sc_int i, k;
   TINY_UNROLL for (i = n - 1; i >= t; --i) a[i] *= r[i];
   TINY_UNROLL for (i = t - 1; i >= 0; --i) {
-    double s = a[i];
+    double s = a[i] * r[i];
     TINY_UNROLL for (k = i + 1; k < t; ++k) s -= L[k * n + i] * a[k];
-    a[i] = s * r[i];
+    a[i] = s;
   }
 }
 
@@ -210,7 +218,7 @@ TINY_FLAT void wvec(const sc_int m, tiny *p) {
  * forces set, w = G lam + b, then lam_H += d with G_HH d = -w_H while max |w_H| > 1e-14 W, at
  * most three times. Returns 0 where G_HH is not certainly definite (nothing answered). */
 TINY_FLAT int piece(const sc_int m, tiny *p) {
-  double C[SC_TINY_M * SC_TINY_M], y[SC_TINY_M], big = 0.0, det = 1.0;
+  double C[SC_TINY_M * SC_TINY_M], y[SC_TINY_M], rd[SC_TINY_M], big = 0.0, det = 1.0, rb;
   int held[SC_TINY_M], h = 0, round;
   sc_int i, j, k;
   for (k = 0; k < m; ++k) {
@@ -227,13 +235,16 @@ TINY_FLAT int piece(const sc_int m, tiny *p) {
   if (h == 0) return 1;
   for (i = 0; i < m; ++i) /* G_HH in place, the other rows and columns the identity */
     for (j = 0; j <= i; ++j) C[i * m + j] = held[i] && held[j] ? p->G[i * m + j] : i == j;
-  for (k = 0; k < m; ++k) { /* G_HH = L D L^T in the rows' order (sc_psd_solve's arithmetic) */
+  rb = 1.0 / big;
+  for (k = 0; k < m; ++k) { /* G_HH = L D L^T in the rows' order (sc_psd_solve's, but one
+    division a pivot: its reciprocal rd, the column's entries products with it) */
     const double d = C[k * m + k];
     if (!(d > 0.0) || !(d < INFINITY)) return 0;
-    if (held[k]) det *= d / big;
+    rd[k] = 1.0 / d;
+    if (held[k]) det *= d * rb;
     for (i = k + 1; i < m; ++i) y[i] = C[i * m + k];
     for (i = k + 1; i < m; ++i) {
-      const double l = y[i] / d;
+      const double l = y[i] * rd[k];
       for (j = k + 1; j <= i; ++j) C[i * m + j] -= l * y[j];
       C[i * m + k] = l;
     }
@@ -249,7 +260,7 @@ TINY_FLAT int piece(const sc_int m, tiny *p) {
         X[i] = t;
         if (held[i]) sq += t * t;
       }
-      tr += sq / C[k * m + k];
+      tr += sq * rd[k];
     }
     if (!(tr * big * DEF_TOL < 1.0)) return 0;
   }
@@ -260,7 +271,7 @@ TINY_FLAT int piece(const sc_int m, tiny *p) {
       for (k = 0; k < i; ++k) t -= C[i * m + k] * y[k];
       y[i] = t;
     }
-    for (i = 0; i < m; ++i) y[i] /= C[i * m + i];
+    for (i = 0; i < m; ++i) y[i] *= rd[i];
     for (i = m - 1; i >= 0; --i)
       for (k = i + 1; k < m; ++k) y[i] -= C[k * m + i] * y[k];
     for (i = 0; i < m; ++i) p->lam[i] += y[i]; /* (the other rows' y: +0, the identity's) */
@@ -382,14 +393,13 @@ TINY_BY_M(1) TINY_BY_M(2) TINY_BY_M(3) TINY_BY_M(4) TINY_BY_M(5) TINY_BY_M(6)
     case 4: call(4); break; case 5: call(5); break; default: call(6); \
   }
 
-/* The inertia's factor (L, n x n; r: its diagonal's reciprocals) for n coordinates; shape: the
- * objects' count where the factor is compiled for n (else -1); t: the dense block's size.
- * 0: singular. */
+/* The inertia's factor M = L D L^T (L, n x n: unit lower, D on its diagonal; r: D's
+ * reciprocals) for n coordinates; shape: the objects' count where the factor is compiled for n
+ * (else -1); t: the dense block's size. 0: singular. */
 static int factored(sc_int n, int shape, const double *M, const double *f, double *L,
                     double *r, sc_int *t) {
   const sc_int s = SNAKECG_NS;
-  double g[SC_TINY_N];
-  sc_int i;
+  sc_int i, j;
   *t = s;
   switch (shape) {
 #if SNAKECG_NS <= TINY_FIXED_NS
@@ -397,20 +407,26 @@ static int factored(sc_int n, int shape, const double *M, const double *f, doubl
     case 1: return factor(s + 3, s, M, L, r);
     case 2: return factor(s + 6, s, M, L, r);
 #endif
-    default: /* (scene_small.c's loops: a fully unrolled factor grows as n_s^3) */
-      if (!sc_inertia_factor(n, M, f, 1e-14, L, g, t)) return 0;
-      for (i = 0; i < n; ++i) r[i] = 1.0 / L[i * n + i];
+    default: /* (scene_small.c's Cholesky, its columns over their diagonal: a fully unrolled
+      factor grows as n_s^3; r its scratch for g) */
+      if (!sc_inertia_factor(n, M, f, 1e-14, L, r, t)) return 0;
+      for (j = 0; j < n; ++j) {
+        const double q = 1.0 / L[j * n + j];
+        for (i = j + 1; i < *t; ++i) L[i * n + j] *= q;
+        L[j * n + j] *= L[j * n + j];
+        r[j] = q * q;
+      }
       return 1;
   }
 }
 
-/* The solve (m rows); shape as factored's; L (n x n): the inertia's factor, *t its dense
- * block's size (-1: not factored, the factor's pivot rule failed). */
+/* The solve (m rows); shape as factored's; L (n x n) and rc (n): the inertia's factor, *t its
+ * dense block's size (-1: not factored, the factor's pivot rule failed). */
 static int solve(sc_int m, sc_int n, int shape, const double *M, const double *f,
                  const double *A, const double *c, const sc_int *kind, const double *par,
-                 const double *from, double *L, sc_int *t, double *lam_out,
+                 const double *from, double *L, double *rc, sc_int *t, double *lam_out,
                  double *a, double *w_out, double *state_out, double *info) {
-  double Z[SC_TINY_N * (SC_TINY_M + 1)], rc[SC_TINY_N], res[3], fs = 0.0, ws = 0.0;
+  double Z[SC_TINY_N * (SC_TINY_M + 1)], res[3], fs = 0.0, ws = 0.0;
   sc_int i, k, tt, count = 0;
   int ok = 0, moved = 0;
   tiny p;
@@ -520,11 +536,11 @@ SC_INTERNAL int sc_tiny_solve(sc_int n, sc_int m, sc_int nb, const double *M, co
                               const sc_int *start, const double *par, const double *from,
                               double *lam, double *a, double *w, double *state_out,
                               double *info) {
-  double L[SC_TINY_N * SC_TINY_N];
+  double L[SC_TINY_N * SC_TINY_N], r[SC_TINY_N];
   sc_int t;
   int ok, shape = tiny_shape(n, m, nb, M, kind, start, 0);
   if (shape < -1) return 0;
-  ok = solve(m, n, shape, M, f, A, c, kind, par, from, L, &t, lam, a, w, state_out, info);
+  ok = solve(m, n, shape, M, f, A, c, kind, par, from, L, r, &t, lam, a, w, state_out, info);
   TINY_ADD(0, 1L);
   if (!ok) TINY_ADD(1, 1L);
   return ok;
@@ -534,14 +550,23 @@ SC_INTERNAL int sc_tiny_forward(sc_int n, sc_int m, sc_int nb, const double *M, 
                                 const double *A, const sc_int *kind, const sc_int *start,
                                 const double *par, const double *from, double *lam, double *a,
                                 double *w, double *state_out, double *info, double *L,
-                                sc_int *t) {
+                                double *r, sc_int *t) {
   int ok, shape = tiny_shape(n, m, nb, M, kind, start, 1);
   *t = -1;
   if (shape < -1) return 0;
-  ok = solve(m, n, shape, M, f, A, 0, kind, par, from, L, t, lam, a, w, state_out, info);
+  ok = solve(m, n, shape, M, f, A, 0, kind, par, from, L, r, t, lam, a, w, state_out, info);
   TINY_ADD(0, 1L);
   if (!ok) TINY_ADD(1, 1L);
   return ok;
+}
+
+SC_INTERNAL int sc_tiny_inertia(sc_int n, const double *M, const double *f, double *L,
+                                double *r, sc_int *t) {
+  int shape = (int)((n - SNAKECG_NS) / 3);
+  if (n < SNAKECG_NS || n > SNAKECG_NS + 6 || (n - SNAKECG_NS) % 3 != 0) shape = -1;
+  if (factored(n, shape, M, f, L, r, t)) return 1;
+  *t = -1;
+  return 0;
 }
 
 /* The tiny path switched on (mode 1) or off (0: every problem to the general path), or left

@@ -17,13 +17,19 @@ SC_INTERNAL int sc_tiny_solve(sc_int n, sc_int m, sc_int nb, const double *M, co
                               double *info);
 /* sc_tiny_solve for the forward (c null; M's rows from n_s on diagonal, as the forward makes
  * them), and where the inertia was factored whether answered or not (*t >= 0: the dense
- * block's size, else -1) the factor L (n x n, its lower triangle read): sc_inertia_factor's,
- * bit for bit */
+ * block's size, else -1) its factor: sc_tiny_inertia's L and r */
 SC_INTERNAL int sc_tiny_forward(sc_int n, sc_int m, sc_int nb, const double *M, const double *f,
                                 const double *A, const sc_int *kind, const sc_int *start,
                                 const double *par, const double *from, double *lam, double *a,
                                 double *w, double *state_out, double *info, double *L,
-                                sc_int *t);
+                                double *r, sc_int *t);
+/* The bodies' inertia M (n x n, its rows from n_s on diagonal, as the forward makes them)
+ * factored as the tiny path factors it, M = L D L^T: L unit lower (its dense block's, the
+ * block's size *t; the rest of L's lower triangle zero, L's upper triangle scratch) with D on
+ * its diagonal, r (n) D's reciprocals. Returns 0 (*t = -1) where the pivot rule fails
+ * (sc_inertia_factor's, on the same pivots). */
+SC_INTERNAL int sc_tiny_inertia(sc_int n, const double *M, const double *f, double *L,
+                                double *r, sc_int *t);
 /* its switch (mode 1 on, 0 off, -1 left) and counts (problems tried, answered) */
 int SNAKECG_EXPORT(core_scene_tiny)(sc_int mode, double *counts);
 #endif
