@@ -116,33 +116,31 @@ TINY_FLAT int factor(const sc_int n, const sc_int t, const double *M, double *L,
   return 1;
 }
 
-/* Z = L^-1 [A^T f] (n x (m + 1): row i coordinate i's, the last column g = L^-1 f; L unit) and
- * its Gram matrix in one sweep over the coordinates (m a constant; each coordinate's row of Z
- * added to the sums as it is made, weighted by its pivot's reciprocal):
+/* Y = D^-1 Z, Z = L^-1 [A^T f] (n x (m + 1): row i coordinate i's, Y's last column
+ * D^-1 g, g = L^-1 f) and Z's Gram matrix weighted by D^-1 in one sweep over the coordinates
+ * (m a constant; each coordinate's row z of Z added to the sums as it is made, from the rows
+ * of Y before it and L D in factor's upper triangle: z_i = [A^T f]_i - sum_k L_ik D_k Y_k):
  * G = Z_A^T D^-1 Z_A (m x m), b = Z_A^T D^-1 g + c (c may be null). */
 TINY_FLAT void gram(const sc_int m, sc_int n, sc_int t, const double *restrict L,
                     const double *restrict r, const double *restrict A,
-                    const double *restrict f, const double *restrict c, double *restrict Z,
+                    const double *restrict f, const double *restrict c, double *restrict Y,
                     double *restrict G, double *restrict b) {
   const sc_int w = m + 1;
   double S[(SC_TINY_M + 1) * (SC_TINY_M + 1)];
   sc_int i, j, k;
   for (j = 0; j < w * w; ++j) S[j] = 0.0;
   for (i = 0; i < n; ++i) {
-    double z[SC_TINY_M + 1], zr[SC_TINY_M + 1];
+    double z[SC_TINY_M + 1], y[SC_TINY_M + 1];
     const double ri = r[i];
     for (j = 0; j < m; ++j) z[j] = A[j * n + i];
     z[m] = f[i];
     for (k = 0; k < (i < t ? i : 0); ++k) {
-      const double l = L[i * n + k];
-      for (j = 0; j < w; ++j) z[j] -= l * Z[k * w + j];
+      const double u = L[k * n + i];
+      for (j = 0; j < w; ++j) z[j] -= u * Y[k * w + j];
     }
-    for (j = 0; j < w; ++j) {
-      Z[i * w + j] = z[j];
-      zr[j] = z[j] * ri;
-    }
+    for (j = 0; j < w; ++j) Y[i * w + j] = y[j] = z[j] * ri;
     for (j = 0; j < w; ++j)
-      for (k = 0; k <= j; ++k) S[j * w + k] += zr[j] * z[k];
+      for (k = 0; k <= j; ++k) S[j * w + k] += y[j] * z[k];
   }
   for (j = 0; j < m; ++j) {
     for (k = 0; k <= j; ++k) G[j * m + k] = G[k * m + j] = S[j * w + k];
@@ -150,7 +148,8 @@ TINY_FLAT void gram(const sc_int m, sc_int n, sc_int t, const double *restrict L
   }
 }
 
-/* v = g + Z lam (gram's Z, its last column g; a force that is not finite taken as 0) */
+/* v = D^-1 (g + Z lam) (gram's Y, its last column D^-1 g; a force that is not finite taken as
+ * 0) */
 TINY_FLAT void g_plus_z_lam(const sc_int m, sc_int n, const double *restrict Z,
                             const double *restrict lam, double *restrict v) {
   double lz[SC_TINY_M];
@@ -164,14 +163,13 @@ TINY_FLAT void g_plus_z_lam(const sc_int m, sc_int n, const double *restrict Z,
   }
 }
 
-/* a := L^-T D^-1 a (eq. 18's a = L^-T D^-1 (g + Z lam) from the factor) for factor's L and r
- * (L's rows from t on their diagonal; n, t constants where the caller's branch makes them so) */
-TINY_FLAT void back(const sc_int n, const sc_int t, const double *restrict L,
-                    const double *restrict r, double *restrict a) {
+/* a := L^-T a (eq. 18's a = L^-T D^-1 (g + Z lam) from the factor and g_plus_z_lam's v) for
+ * factor's L (its dense block's t rows, unit; n, t constants where the caller's branch makes
+ * them so) */
+TINY_FLAT void back(const sc_int n, const sc_int t, const double *restrict L, double *restrict a) {
   sc_int i, k;
-  TINY_UNROLL for (i = n - 1; i >= t; --i) a[i] *= r[i];
   TINY_UNROLL for (i = t - 1; i >= 0; --i) {
-    double s = a[i] * r[i];
+    double s = a[i];
     TINY_UNROLL for (k = i + 1; k < t; ++k) s -= L[k * n + i] * a[k];
     a[i] = s;
   }
@@ -412,7 +410,10 @@ static int factored(sc_int n, int shape, const double *M, const double *f, doubl
       if (!sc_inertia_factor(n, M, f, 1e-14, L, r, t)) return 0;
       for (j = 0; j < n; ++j) {
         const double q = 1.0 / L[j * n + j];
-        for (i = j + 1; i < *t; ++i) L[i * n + j] *= q;
+        for (i = j + 1; i < *t; ++i) { /* (L D above the diagonal, as factor's) */
+          L[j * n + i] = L[i * n + j] * L[j * n + j];
+          L[i * n + j] *= q;
+        }
         L[j * n + j] *= L[j * n + j];
         r[j] = q * q;
       }
@@ -504,13 +505,13 @@ static int solve(sc_int m, sc_int n, int shape, const double *M, const double *f
 #define TINY_ACCEL(r) accel_##r(n, Z, p.lam, a)
   TINY_SWITCH_M(m, TINY_ACCEL)
 #undef TINY_ACCEL
-  switch (shape) { /* a = L^-T (g + Z lam) */
+  switch (shape) { /* a = L^-T D^-1 (g + Z lam) */
 #if SNAKECG_NS <= TINY_FIXED_NS
-    case 0: back(SNAKECG_NS, SNAKECG_NS, L, rc, a); break;
-    case 1: back(SNAKECG_NS + 3, SNAKECG_NS, L, rc, a); break;
-    case 2: back(SNAKECG_NS + 6, SNAKECG_NS, L, rc, a); break;
+    case 0: back(SNAKECG_NS, SNAKECG_NS, L, a); break;
+    case 1: back(SNAKECG_NS + 3, SNAKECG_NS, L, a); break;
+    case 2: back(SNAKECG_NS + 6, SNAKECG_NS, L, a); break;
 #endif
-    default: back(n, tt, L, rc, a);
+    default: back(n, tt, L, a);
   }
   return 1;
 }
