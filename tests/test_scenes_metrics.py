@@ -2,8 +2,9 @@
 inertia's factor) against the forms written out in NumPy from the returned accelerations:
 ||qdd_s||^2 = qdd^T M_s qdd (eq. 26), a_o^T I_o a_o per object (eq. 27) and their sum,
 ||lambda||^2 = (a - a_free)^T M (a - a_free) with a_free = M^-1 f by numpy.linalg.solve, and
-sr (eq. 30); on random scenes whose solves take the tiny path and the general one (the same
-forms whichever path answered)."""
+sr (eq. 30); on random scenes whose solves take the tiny path (either copy: mode 1 with FMA
+where the processor has it, mode 2 without) and the general one (the same forms whichever path
+answered: the inertia's L D L^T factor of the tiny path's copy switched on)."""
 
 from __future__ import annotations
 
@@ -52,7 +53,7 @@ def _scenes(rng, count):
     return out
 
 
-@pytest.mark.parametrize("tiny", [1, 0])
+@pytest.mark.parametrize("tiny", [1, 2, 0])
 def test_metrics_against_the_forms_in_numpy(rng, tiny):
     counts, tried = np.zeros(2), 0
     for model, q, tau in _scenes(rng, 40):

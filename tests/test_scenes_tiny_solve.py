@@ -1,9 +1,12 @@
 """The general solve compiled for tiny problems (snakecg/engine/scene_tiny.c: one-row blocks,
-at most 6 rows, its set-up unrolled for the snake with 0-2 objects): random problems of every
+at most 6 rows, its set-up unrolled for the snake with 0-2 objects), both its copies (mode 1:
+with FMA where the processor has AVX2 and FMA; mode 2: without): random problems of every
 one-row kind against an independent dense NumPy enumeration of the pieces, and the same
 problems with the tiny path switched off (``core_scene_tiny``), which must give the same
-status, dependent flag, passes, pieces and certificate and the same accelerations to 1e-12;
-then the paper's scene through the general path, its batched forward and its push, both ways."""
+status, dependent flag, passes, pieces and certificate and the same accelerations to 1e-12
+(not bit for bit: the tiny path factors by L D L^T with reciprocals, the general path by
+Cholesky); then the paper's scene through the general path, its batched forward and its push,
+both ways, and against the paper's own closed form."""
 
 from __future__ import annotations
 
@@ -108,12 +111,13 @@ def _enumerate(M, f, A, c, kind, par, tol=1e-9):
     raise AssertionError("no piece satisfies the KKT conditions")
 
 
+@pytest.mark.parametrize("mode", [1, 2])  # the FMA copy (where the processor has it), plain
 @pytest.mark.parametrize("ns", [6, 5])  # the model's snake (set-up unrolled) and another size
-def test_random_tiny_problems_against_the_pieces_and_the_general_path(core, rng, ns):
+def test_random_tiny_problems_against_the_pieces_and_the_general_path(core, rng, ns, mode):
     """400 random problems: the tiny path's accelerations against the enumerated pieces (1e-9
     of their scale, the problems' conditioning), and against the general path (the tiny path
     switched off) to 1e-12, with the same status, flags, passes, pieces and certificate."""
-    _tiny(core, 1)
+    _tiny(core, mode)
     answers = []
     for _ in range(400):
         problem = _problem(rng, ns)
@@ -157,21 +161,26 @@ def test_left_to_the_general_path(core, rng):
     assert a7[STATUS] == 0 and _tiny(core, 1).tolist() == [0.0, 0.0]  # 7 rows: not tried
 
 
+@pytest.mark.parametrize("mode", [1, 2])
 @pytest.mark.parametrize("scenario", ["wheels", "frictionless", "ideal_wheels"])
-def test_paper_scene_general_path_with_and_without_the_tiny_path(rng, scenario):
+def test_paper_scene_general_path_with_and_without_the_tiny_path(rng, scenario, mode):
     """300 samples of each of the paper's scenarios through the general path, batched and one
-    at a time, with the tiny path and without: the same status, passes and pieces, the
-    accelerations to 1e-12; against the paper's own closed form to 1e-12."""
+    at a time, with the tiny path (either copy) and without: the same status, passes and
+    pieces, the accelerations to 1e-12 (not bit for bit: the factors differ); against the
+    paper's own closed form to 1e-12, the metrics too (1e-12 of the sample's norms)."""
     scene = Scene(Robot(joints=3), scenario=scenario, kappa=100.0, mu=0.1)
     old, new = snakecg.load(scene), load_scene(scene)
     Q = np.c_[rng.normal(0.0, 0.3, (300, 3)), rng.uniform(-1.0, 1.0, (300, 3))]
     T = rng.normal(0.0, 0.05, (300, 3))
-    _tiny(new.core, 1)
-    on = new.forward(Q, T)
-    counts = _tiny(new.core, 0)
-    try:
+    _tiny(new.core, mode)
+    try:  # (the solver's arrays, solved again, read under each switch)
+        on = new.forward(Q, T)
+        single_on = [new.forward(Q[s], T[s]) for s in range(0, 300, 10)]
+        counts = _tiny(new.core, 0)
+        assert on._raw is not None
         off = new.forward(Q, T)
         single = [new.forward(Q[s], T[s]) for s in range(0, 300, 10)]
+        assert off._raw is not None
     finally:
         _tiny(new.core, 1)
     o = old.forward(Q, T)
@@ -186,8 +195,12 @@ def test_paper_scene_general_path_with_and_without_the_tiny_path(rng, scenario):
     assert np.abs(on.qdd - off.qdd).max() <= 1e-12 * scale
     assert np.abs(on.qdd - o.qdd).max() <= 1e-12 * scale
     assert np.abs(on.sr - o.sr).max() <= 1e-12
-    for s, r in zip(range(0, 300, 10), single):
+    norms = o.norm_qdd + o.norm_a_obj + o.norm_lambda
+    for key in ("norm_qdd", "norm_a_obj", "norm_lambda"):
+        assert np.all(np.abs(getattr(on, key) - getattr(o, key)) <= 1e-12 * norms), key
+    for s, r, r_on in zip(range(0, 300, 10), single, single_on):
         assert np.abs(r.qdd - on.qdd[s]).max() <= 1e-12 * scale
+        assert np.abs(r_on.qdd - on.qdd[s]).max() <= 1e-12 * scale
 
 
 def test_paper_push_with_and_without_the_tiny_path():

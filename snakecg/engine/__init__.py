@@ -74,7 +74,9 @@ class Core:
         plain one) or off (0) for the process, and this thread's tries and answers."""
         self.scene_tiny = lib.entry_or_none("core_scene_tiny")
         """scene_tiny.c's ``core_scene_tiny(mode, counts)``: the solve compiled for tiny problems
-        switched on (1) or off (0) for the process, and the problems it tried and answered."""
+        switched on (1: with FMA where the processor has AVX2 and FMA, within rounding of the
+        plain copy; 2: its plain copy) or off (0) for the process, and the problems it tried
+        and answered."""
         self.contact_depth, self.contact_first = (
             lib.entry_or_none(name) for name in ("core_contact_depth", "core_contact_first"))
         """geometry.c's ``core_contact_depth``: the simulation's contact check at states;

@@ -4,19 +4,21 @@
  * Coulomb discs or split ellipses), with at most SC_TINY_M rows and no more rows than
  * coordinates (the paper's scene: a contact and three wheels' lateral rows on 9 coordinates)
  * is solved here by the general path's own steps in their order:
- *   the set-up (scene_small.c's factor of the inertia, with its pivot rule, compiled with every
- *   loop over the coordinates unrolled for the snake with 0-2 objects; then Z = L^-1 [A^T f],
- *   whose last column is g = L^-1 f, and its Gram matrix, G = Z^T Z and b = Z^T g + c, in one
- *   sweep over the coordinates compiled once per row count; the divisions by the factor's
- *   pivots products with their reciprocals: the same quantities, other rounding), the scales,
+ *   the set-up (scene_tiny_setup.c: the inertia's factor by L D L^T with sc_inertia_factor's
+ *   pivot rule, its pivots' reciprocals instead of square roots, compiled with every loop over
+ *   the coordinates unrolled for the snake with 0-2 objects; then Z = L^-1 [A^T f], whose last
+ *   column is g = L^-1 f, and its Gram matrix weighted by D^-1, G = Z^T D^-1 Z and
+ *   b = Z^T D^-1 g + c, in one sweep over the coordinates compiled once per row count; the
+ *   same quantities as the general path's Cholesky, other rounding), the scales,
  *   the start from the caller's pieces (FROM_PASSES active-set passes), then from the held
  *   guess (GUESS_PASSES), each pass the piece's equations solved to rounding (scene_piece.c:
  *   the held rows' forces from G_HH d = -w_H, at most three rounds while max |w_H| is above
  *   1e-14 of the scale) and the KKT conditions checked and switched (scene_solve.c's kkt: the
  *   same rules; its residuals read once no piece switches), then the certificate, the pieces
- *   reported and a = L^-T (g + Z lam). The passes are compiled once per row count
- *   (1..SC_TINY_M). The forward (scene_rows.c) calls it first and gets the inertia's factor
- *   back for its metrics (sc_tiny_forward).
+ *   reported and a = L^-T D^-1 (g + Z lam). The passes are compiled once per row count
+ *   (1..SC_TINY_M), all of it twice: plain and with AVX2 and FMA (chosen where the processor
+ *   has both; within rounding of each other). The forward (scene_rows.c) calls it first and
+ *   gets the inertia's factor back for its metrics (sc_tiny_forward).
  * What differs is G_HH's factor: the general path's diagonal pivoting (sc_psd_solve: a pivot
  * search and swaps on the gathered rows, rows dropped at pivots of DEP_TOL = 1e-10 of the
  * first) becomes the same L D L^T in the rows' order, the other rows the identity (no
@@ -40,6 +42,7 @@
 #include "engine.h"
 #include "scene_sets.h"
 #include "scene_tiny.h"
+#include "scene_tiny_setup.h"
 
 #if defined(__GNUC__)
 #define TINY_FLAT static inline __attribute__((always_inline))
@@ -54,7 +57,7 @@
 
 /* core_scene_tiny's switch and counts (tries, and those left to the general path: one atomic
  * add per answered problem; measurement only) */
-static int tiny_on = 1;
+static int tiny_on = 1; /* (2: on, the copy without FMA) */
 static long tiny_counts[2];
 #if defined(__GNUC__)
 #define TINY_ADD(k, v) __atomic_fetch_add(&tiny_counts[k], (v), __ATOMIC_RELAXED)
@@ -68,112 +71,6 @@ static long tiny_take(int k) {
 }
 #define TINY_TAKE(k) tiny_take(k)
 #endif
-
-#define TINY_UNROLL _Pragma("GCC unroll 16")
-/* the set-up compiled for the snake's n_s coordinates and 0-2 objects where n_s is at most this
- * (beyond, scene_small.c's loops: a fully unrolled factor grows as n_s^3) */
-#define TINY_FIXED_NS 9
-
-/* The inertia's factor M = L D L^T for n coordinates whose rows from t on are their diagonal
- * (n, t constants where the caller's branch makes them so): sc_inertia_factor's pivot rule on
- * the same pivots (D_j, the Cholesky's squared diagonal), without its square roots and with
- * one division a column (r_j = 1 / D_j; the column's entries products with it: on the chain
- * from one column to the next a division and a product, where the Cholesky has a square root
- * and a division). L: unit lower triangle (the dense block's; its diagonal holds D), r: the
- * pivots' reciprocals (n). Returns 0 where the pivot rule fails. */
-TINY_FLAT int factor(const sc_int n, const sc_int t, const double *M, double *L, double *r) {
-  const double rel = 1e-14;
-  double big = 0.0, big_t = 0.0, rel_t, s[SC_TINY_N];
-  sc_int i, j, k;
-  for (i = 0; i < n; ++i) {
-    const double d = M[i * n + i];
-    if (d > big) big = d;
-    if (i < t && d > big_t) big_t = d;
-  }
-  if (!(big > 0.0) || !isfinite(big) || !(big_t > 0.0) || !isfinite(big_t)) return 0;
-  rel_t = big_t == big ? rel : rel * (big / big_t);
-  TINY_UNROLL for (j = 0; j < t; ++j) { /* L[i, k] D_k (k < j) kept in L's upper triangle */
-    double d = M[j * n + j], q;
-    TINY_UNROLL for (k = 0; k < j; ++k) d -= L[j * n + k] * L[k * n + j];
-    if (!(d > rel_t * big_t)) return 0;
-    L[j * n + j] = d;
-    r[j] = q = 1.0 / d;
-    TINY_UNROLL for (i = j + 1; i < t; ++i) {
-      double u = M[i * n + j];
-      TINY_UNROLL for (k = 0; k < j; ++k) u -= L[i * n + k] * L[k * n + j];
-      s[i] = u;
-    }
-    TINY_UNROLL for (i = j + 1; i < t; ++i) {
-      L[j * n + i] = s[i];
-      L[i * n + j] = s[i] * q;
-    }
-  }
-  TINY_UNROLL for (i = t; i < n; ++i) { /* the diagonal tail */
-    if (!(M[i * n + i] > rel * big)) return 0;
-    L[i * n + i] = M[i * n + i];
-    r[i] = 1.0 / M[i * n + i];
-  }
-  return 1;
-}
-
-/* Y = D^-1 Z, Z = L^-1 [A^T f] (n x (m + 1): row i coordinate i's, Y's last column
- * D^-1 g, g = L^-1 f) and Z's Gram matrix weighted by D^-1 in one sweep over the coordinates
- * (m a constant; each coordinate's row z of Z added to the sums as it is made, from the rows
- * of Y before it and L D in factor's upper triangle: z_i = [A^T f]_i - sum_k L_ik D_k Y_k):
- * G = Z_A^T D^-1 Z_A (m x m), b = Z_A^T D^-1 g + c (c may be null). */
-TINY_FLAT void gram(const sc_int m, sc_int n, sc_int t, const double *restrict L,
-                    const double *restrict r, const double *restrict A,
-                    const double *restrict f, const double *restrict c, double *restrict Y,
-                    double *restrict G, double *restrict b) {
-  const sc_int w = m + 1;
-  double S[(SC_TINY_M + 1) * (SC_TINY_M + 1)];
-  sc_int i, j, k;
-  for (j = 0; j < w * w; ++j) S[j] = 0.0;
-  for (i = 0; i < n; ++i) {
-    double z[SC_TINY_M + 1], y[SC_TINY_M + 1];
-    const double ri = r[i];
-    for (j = 0; j < m; ++j) z[j] = A[j * n + i];
-    z[m] = f[i];
-    for (k = 0; k < (i < t ? i : 0); ++k) {
-      const double u = L[k * n + i];
-      for (j = 0; j < w; ++j) z[j] -= u * Y[k * w + j];
-    }
-    for (j = 0; j < w; ++j) Y[i * w + j] = y[j] = z[j] * ri;
-    for (j = 0; j < w; ++j)
-      for (k = 0; k <= j; ++k) S[j * w + k] += y[j] * z[k];
-  }
-  for (j = 0; j < m; ++j) {
-    for (k = 0; k <= j; ++k) G[j * m + k] = G[k * m + j] = S[j * w + k];
-    b[j] = c ? S[m * w + j] + c[j] : S[m * w + j];
-  }
-}
-
-/* v = D^-1 (g + Z lam) (gram's Y, its last column D^-1 g; a force that is not finite taken as
- * 0) */
-TINY_FLAT void g_plus_z_lam(const sc_int m, sc_int n, const double *restrict Z,
-                            const double *restrict lam, double *restrict v) {
-  double lz[SC_TINY_M];
-  const sc_int w = m + 1;
-  sc_int i, j;
-  for (j = 0; j < m; ++j) lz[j] = isfinite(lam[j]) ? lam[j] : 0.0;
-  for (i = 0; i < n; ++i) {
-    double s = Z[i * w + m];
-    for (j = 0; j < m; ++j) s += Z[i * w + j] * lz[j];
-    v[i] = s;
-  }
-}
-
-/* a := L^-T a (eq. 18's a = L^-T D^-1 (g + Z lam) from the factor and g_plus_z_lam's v) for
- * factor's L (its dense block's t rows, unit; n, t constants where the caller's branch makes
- * them so) */
-TINY_FLAT void back(const sc_int n, const sc_int t, const double *restrict L, double *restrict a) {
-  sc_int i, k;
-  TINY_UNROLL for (i = t - 1; i >= 0; --i) {
-    double s = a[i];
-    TINY_UNROLL for (k = i + 1; k < t; ++k) s -= L[k * n + i] * a[k];
-    a[i] = s;
-  }
-}
 
 typedef struct {
   const sc_int *kind;
@@ -352,38 +249,42 @@ TINY_FLAT int passes(const sc_int m, tiny *p, int max_pass, sc_int *count, doubl
   return 0;
 }
 
-/* the set-up's sums, the passes, the residuals and the accelerations compiled once per row
- * count (and called, not inlined, by solve) */
+/* the passes and the residuals compiled once per row count (and called, not inlined, by
+ * solve), a second time with AVX2 and FMA, chosen where the processor has both and the switch
+ * is 1 (the set-up's parts likewise: scene_tiny_setup.c); within rounding of the plain copy,
+ * not bit for bit. Every problem of a process goes through the one copy its processor chooses. */
 #if defined(__GNUC__)
 #define TINY_CALLED static __attribute__((noinline))
 #else
 #define TINY_CALLED static
 #endif
-#if SNAKECG_NS <= TINY_FIXED_NS
-#define TINY_ONE_OBJECT(n, t) ((n) == SNAKECG_NS + 3 && (t) == SNAKECG_NS)
-#else
-#define TINY_ONE_OBJECT(n, t) 0
-#endif
-#define TINY_BY_M(r) \
-  TINY_CALLED void gram_##r(sc_int n, sc_int t, const double *L, const double *rc, \
-                            const double *A, const double *f, const double *c, double *Z, \
-                            double *G, double *b) { \
-    if (TINY_ONE_OBJECT(n, t)) /* (one object: n, t constants, the sweep unrolled) */ \
-      gram(r, SNAKECG_NS + 3, SNAKECG_NS, L, rc, A, f, c, Z, G, b); \
-    else \
-      gram(r, n, t, L, rc, A, f, c, Z, G, b); \
-  } \
-  TINY_CALLED int passes_##r(tiny *p, int max_pass, sc_int *count, double *res) { \
+#define TINY_BY_M(r, x, attr) \
+  attr int passes##x##_##r(tiny *p, int max_pass, sc_int *count, double *res) { \
     return passes(r, p, max_pass, count, res); \
   } \
-  TINY_CALLED void final_##r(tiny *p, double *res) { \
+  attr void final##x##_##r(tiny *p, double *res) { \
     wvec(r, p); \
     kkt(r, p, res); \
-  } \
-  TINY_CALLED void accel_##r(sc_int n, const double *Z, const double *lam, double *a) { \
-    g_plus_z_lam(r, n, Z, lam, a); \
   }
-TINY_BY_M(1) TINY_BY_M(2) TINY_BY_M(3) TINY_BY_M(4) TINY_BY_M(5) TINY_BY_M(6)
+TINY_BY_M(1, , TINY_CALLED) TINY_BY_M(2, , TINY_CALLED) TINY_BY_M(3, , TINY_CALLED)
+TINY_BY_M(4, , TINY_CALLED) TINY_BY_M(5, , TINY_CALLED) TINY_BY_M(6, , TINY_CALLED)
+#if defined(__x86_64__) && !defined(__clang__) && __GNUC__ >= 6 && !defined(SC_NO_AVX)
+#define TINY_FMA 1
+#define TINY_FUSED static __attribute__((noinline, target("avx2,fma")))
+TINY_BY_M(1, _fma, TINY_FUSED) TINY_BY_M(2, _fma, TINY_FUSED) TINY_BY_M(3, _fma, TINY_FUSED)
+TINY_BY_M(4, _fma, TINY_FUSED) TINY_BY_M(5, _fma, TINY_FUSED) TINY_BY_M(6, _fma, TINY_FUSED)
+/* a call of the copy chosen (fused: a constant in each copy of solve) */
+#define TINY_CHOSEN(fused, m, plain, fma) \
+  do { \
+    if (fused) { TINY_SWITCH_M(m, fma) } else { TINY_SWITCH_M(m, plain) } \
+  } while (0)
+#else
+#define TINY_CHOSEN(fused, m, plain, fma) \
+  do { \
+    (void)(fused); \
+    TINY_SWITCH_M(m, plain) \
+  } while (0)
+#endif
 #undef TINY_BY_M
 #define TINY_SWITCH_M(m, call) \
   switch (m) { \
@@ -391,42 +292,14 @@ TINY_BY_M(1) TINY_BY_M(2) TINY_BY_M(3) TINY_BY_M(4) TINY_BY_M(5) TINY_BY_M(6)
     case 4: call(4); break; case 5: call(5); break; default: call(6); \
   }
 
-/* The inertia's factor M = L D L^T (L, n x n: unit lower, D on its diagonal; r: D's
- * reciprocals) for n coordinates; shape: the objects' count where the factor is compiled for n
- * (else -1); t: the dense block's size. 0: singular. */
-static int factored(sc_int n, int shape, const double *M, const double *f, double *L,
-                    double *r, sc_int *t) {
-  const sc_int s = SNAKECG_NS;
-  sc_int i, j;
-  *t = s;
-  switch (shape) {
-#if SNAKECG_NS <= TINY_FIXED_NS
-    case 0: return factor(s, s, M, L, r);
-    case 1: return factor(s + 3, s, M, L, r);
-    case 2: return factor(s + 6, s, M, L, r);
-#endif
-    default: /* (scene_small.c's Cholesky, its columns over their diagonal: a fully unrolled
-      factor grows as n_s^3; r its scratch for g) */
-      if (!sc_inertia_factor(n, M, f, 1e-14, L, r, t)) return 0;
-      for (j = 0; j < n; ++j) {
-        const double q = 1.0 / L[j * n + j];
-        for (i = j + 1; i < *t; ++i) { /* (L D above the diagonal, as factor's) */
-          L[j * n + i] = L[i * n + j] * L[j * n + j];
-          L[i * n + j] *= q;
-        }
-        L[j * n + j] *= L[j * n + j];
-        r[j] = q * q;
-      }
-      return 1;
-  }
-}
-
 /* The solve (m rows); shape as factored's; L (n x n) and rc (n): the inertia's factor, *t its
- * dense block's size (-1: not factored, the factor's pivot rule failed). */
-static int solve(sc_int m, sc_int n, int shape, const double *M, const double *f,
-                 const double *A, const double *c, const sc_int *kind, const double *par,
-                 const double *from, double *L, double *rc, sc_int *t, double *lam_out,
-                 double *a, double *w_out, double *state_out, double *info) {
+ * dense block's size (-1: not factored, the factor's pivot rule failed); fused: the FMA copy's
+ * parts (a constant in each copy). */
+TINY_FLAT int solve_body(const int fused, sc_int m, sc_int n, int shape, const double *M,
+                         const double *f, const double *A, const double *c, const sc_int *kind,
+                         const double *par, const double *from, double *L, double *rc,
+                         sc_int *t, double *lam_out, double *a, double *w_out,
+                         double *state_out, double *info) {
   double Z[SC_TINY_N * (SC_TINY_M + 1)], res[3], fs = 0.0, ws = 0.0;
   sc_int i, k, tt, count = 0;
   int ok = 0, moved = 0;
@@ -434,10 +307,8 @@ static int solve(sc_int m, sc_int n, int shape, const double *M, const double *f
   p.kind = kind;
   p.par = par;
   *t = -1;
-  if (!factored(n, shape, M, f, L, rc, &tt)) return 0;
-#define TINY_GRAM(r) gram_##r(n, tt, L, rc, A, f, c, Z, p.G, p.b)
-  TINY_SWITCH_M(m, TINY_GRAM)
-#undef TINY_GRAM
+  if (!sc_tiny_factored(fused, n, shape, M, f, L, rc, &tt)) return 0; /* (sc_tiny_inertia's) */
+  sc_tiny_gram(fused, m, n, tt, L, rc, A, f, c, Z, p.G, p.b);
   *t = tt;
   for (i = 0; i < m; ++i) { /* scene_solve.c's scales */
     const double d = p.G[i * m + i], bi = fabs(p.b[i]);
@@ -465,8 +336,10 @@ static int solve(sc_int m, sc_int n, int shape, const double *M, const double *f
       }
     }
 #define TINY_FROM(r) ok = passes_##r(&p, FROM_PASSES, &count, res)
-    TINY_SWITCH_M(m, TINY_FROM)
+#define TINY_FROM_F(r) ok = passes_fma_##r(&p, FROM_PASSES, &count, res)
+    TINY_CHOSEN(fused, m, TINY_FROM, TINY_FROM_F);
 #undef TINY_FROM
+#undef TINY_FROM_F
     if (ok < 0) return 0;
   }
   if (!ok) { /* the held guess: every block held (or its set zero) */
@@ -475,8 +348,10 @@ static int solve(sc_int m, sc_int n, int shape, const double *M, const double *f
       p.state[k] = kind[k] == K_BOX && !(par[3 * k] > 0) ? S_ZERO : S_HELD;
     }
 #define TINY_GUESS(r) ok = passes_##r(&p, GUESS_PASSES, &count, res)
-    TINY_SWITCH_M(m, TINY_GUESS)
+#define TINY_GUESS_F(r) ok = passes_fma_##r(&p, GUESS_PASSES, &count, res)
+    TINY_CHOSEN(fused, m, TINY_GUESS, TINY_GUESS_F);
 #undef TINY_GUESS
+#undef TINY_GUESS_F
     if (ok <= 0) return 0;
   }
   for (k = 0; k < m; ++k) /* a degenerate answer (sc_still): the minimum-norm face's */
@@ -488,8 +363,10 @@ static int solve(sc_int m, sc_int n, int shape, const double *M, const double *f
     }
   if (moved) {
 #define TINY_FINAL(r) final_##r(&p, res)
-    TINY_SWITCH_M(m, TINY_FINAL)
+#define TINY_FINAL_F(r) final_fma_##r(&p, res)
+    TINY_CHOSEN(fused, m, TINY_FINAL, TINY_FINAL_F);
 #undef TINY_FINAL
+#undef TINY_FINAL_F
   }
   memset(info, 0, sizeof(double) * INFO_WIDTH);
   info[INFO_PRIMAL] = res[0];
@@ -502,19 +379,42 @@ static int solve(sc_int m, sc_int n, int shape, const double *M, const double *f
     lam_out[k] = p.lam[k];
     w_out[k] = p.w[k];
   }
-#define TINY_ACCEL(r) accel_##r(n, Z, p.lam, a)
-  TINY_SWITCH_M(m, TINY_ACCEL)
-#undef TINY_ACCEL
-  switch (shape) { /* a = L^-T D^-1 (g + Z lam) */
-#if SNAKECG_NS <= TINY_FIXED_NS
-    case 0: back(SNAKECG_NS, SNAKECG_NS, L, a); break;
-    case 1: back(SNAKECG_NS + 3, SNAKECG_NS, L, a); break;
-    case 2: back(SNAKECG_NS + 6, SNAKECG_NS, L, a); break;
-#endif
-    default: back(n, tt, L, a);
-  }
+  sc_tiny_accel(fused, m, n, shape, tt, L, Z, p.lam, a); /* a = L^-T D^-1 (g + Z lam) */
   return 1;
 }
+
+static int solve(sc_int m, sc_int n, int shape, const double *M, const double *f,
+                 const double *A, const double *c, const sc_int *kind, const double *par,
+                 const double *from, double *L, double *rc, sc_int *t, double *lam_out,
+                 double *a, double *w_out, double *state_out, double *info) {
+  return solve_body(0, m, n, shape, M, f, A, c, kind, par, from, L, rc, t, lam_out, a, w_out,
+                    state_out, info);
+}
+#ifdef TINY_FMA
+TINY_FUSED int solve_fma(sc_int m, sc_int n, int shape, const double *M, const double *f,
+                         const double *A, const double *c, const sc_int *kind,
+                         const double *par, const double *from, double *L, double *rc,
+                         sc_int *t, double *lam_out, double *a, double *w_out,
+                         double *state_out, double *info) {
+  return solve_body(1, m, n, shape, M, f, A, c, kind, par, from, L, rc, t, lam_out, a, w_out,
+                    state_out, info);
+}
+#endif
+
+/* the copy a problem goes through: 1 the FMA copy (where the switch is 1 and the processor has
+ * AVX2 and FMA), 0 the plain one */
+static int fused_copy(void) {
+#ifdef TINY_FMA
+  return tiny_on == 1 && sc_tiny_fma();
+#else
+  return 0;
+#endif
+}
+#ifdef TINY_FMA
+#define TINY_SOLVE(...) (fused_copy() ? solve_fma(__VA_ARGS__) : solve(__VA_ARGS__))
+#else
+#define TINY_SOLVE(...) solve(__VA_ARGS__)
+#endif
 
 /* The problem's shape for setup (the objects' count, or -1), or -2 where it is not tiny;
  * diag: the caller's M has its rows from n_s on diagonal (else they are checked). */
@@ -541,7 +441,8 @@ SC_INTERNAL int sc_tiny_solve(sc_int n, sc_int m, sc_int nb, const double *M, co
   sc_int t;
   int ok, shape = tiny_shape(n, m, nb, M, kind, start, 0);
   if (shape < -1) return 0;
-  ok = solve(m, n, shape, M, f, A, c, kind, par, from, L, r, &t, lam, a, w, state_out, info);
+  ok = TINY_SOLVE(m, n, shape, M, f, A, c, kind, par, from, L, r, &t, lam, a, w, state_out,
+                  info);
   TINY_ADD(0, 1L);
   if (!ok) TINY_ADD(1, 1L);
   return ok;
@@ -555,7 +456,8 @@ SC_INTERNAL int sc_tiny_forward(sc_int n, sc_int m, sc_int nb, const double *M, 
   int ok, shape = tiny_shape(n, m, nb, M, kind, start, 1);
   *t = -1;
   if (shape < -1) return 0;
-  ok = solve(m, n, shape, M, f, A, 0, kind, par, from, L, r, t, lam, a, w, state_out, info);
+  ok = TINY_SOLVE(m, n, shape, M, f, A, 0, kind, par, from, L, r, t, lam, a, w, state_out,
+                  info);
   TINY_ADD(0, 1L);
   if (!ok) TINY_ADD(1, 1L);
   return ok;
@@ -565,17 +467,17 @@ SC_INTERNAL int sc_tiny_inertia(sc_int n, const double *M, const double *f, doub
                                 double *r, sc_int *t) {
   int shape = (int)((n - SNAKECG_NS) / 3);
   if (n < SNAKECG_NS || n > SNAKECG_NS + 6 || (n - SNAKECG_NS) % 3 != 0) shape = -1;
-  if (factored(n, shape, M, f, L, r, t)) return 1;
+  if (sc_tiny_factored(fused_copy(), n, shape, M, f, L, r, t)) return 1;
   *t = -1;
   return 0;
 }
 
-/* The tiny path switched on (mode 1) or off (0: every problem to the general path), or left
- * (-1); counts (2 doubles, or NULL): the problems tried and answered since the last read, then
+/* The tiny path switched on (mode 1: its FMA copy where the processor has AVX2 and FMA; 2: its
+ * copy without FMA) or off (0: every problem to the general path), or left (-1); counts (2 doubles, or NULL): the problems tried and answered since the last read, then
  * reset. Returns the previous mode. */
 int SNAKECG_EXPORT(core_scene_tiny)(sc_int mode, double *counts) {
   int prev = tiny_on;
-  if (mode == 0 || mode == 1) tiny_on = (int)mode;
+  if (mode >= 0 && mode <= 2) tiny_on = (int)mode;
   if (counts) {
     long t = TINY_TAKE(0);
     long left = TINY_TAKE(1);

@@ -30,6 +30,7 @@ SC_INTERNAL int sc_tiny_forward(sc_int n, sc_int m, sc_int nb, const double *M, 
  * (sc_inertia_factor's, on the same pivots). */
 SC_INTERNAL int sc_tiny_inertia(sc_int n, const double *M, const double *f, double *L,
                                 double *r, sc_int *t);
-/* its switch (mode 1 on, 0 off, -1 left) and counts (problems tried, answered) */
+/* its switch (mode 1 on, 2 on without its FMA copy, 0 off, -1 left) and counts (problems
+ * tried, answered) */
 int SNAKECG_EXPORT(core_scene_tiny)(sc_int mode, double *counts);
 #endif
