@@ -271,7 +271,8 @@ static void scene_sample(sc_scene_work *sw, const double *q, const double *tau,
   sc_int nc, m, nb, i, j, o, t = -1, pnb = sw->pnb;
   double *P = sw->P, *rec = out + SO_QDD + ns + 7 * sw->no + 3 * sw->ng, *a = out + SO_QDD;
   sw->pnb = -1; /* (until this sample is solved) */
-  memset(out, 0, sizeof(double) * SO_QDD); /* (the rest of the row: written below) */
+  memset(out, 0, sizeof(double) * SO_QDD); /* (the row's rest written below; the records' room */
+  memset(rec, 0, sizeof(double) * CR_W * sw->ccap); /* zeroed, whatever the caller's buffer held) */
   if (kinematics(sw, q, 1)) goto failed;
   place(sw, P, 0, 1);
   for (o = 0; o < sw->no; ++o)
@@ -419,7 +420,7 @@ static int work_alloc(sc_scene_work *sw, const double *pk, sc_int ccap, sc_int m
  * (width = SO_QDD + n_s + 7 n_o + 3 n_g + CR_W ccap); where A is not null, its details at
  * A + i mcap n, lam, w, state + i mcap. At most ccap contacts a sample (a sample with more:
  * status SS_MORE, for the caller to redo with a larger ccap; the records after a sample's
- * contacts are left as they were). The solves start from the last sample's pieces where its
+ * contacts zeros: every column of a row written). The solves start from the last sample's pieces where its
  * blocks are the same, but at every chunk-th sample of the call (chunk < 2: all cold; a
  * caller splitting a batch on multiples of chunk gets the same answers whatever the split)
  * and for 1, 2, 4 .. 128 samples after starts that gained nothing. Returns 0, -1 out of

@@ -203,9 +203,9 @@ class GeneralSceneModel(RobotModel):
         only those samples where every sample starts cold)."""
         pk = self.packed
         ccap = min(CONTACTS_FIRST, pk.contacts_max)
-        # zeros: the engine leaves the record room after a sample's contacts unwritten, and
-        # a result is the same bytes whatever the threads' split
-        out = np.zeros((N, pk.width(ccap)))
+        # not zeroed here: the engine writes every column of a sample's row (the record room
+        # after its contacts zeros), the same bytes whatever the threads' split
+        out = np.empty((N, pk.width(ccap)))
         code = self._call(q, tau, fo, N, ccap, out, chunk=chunk)
         if code <= -3:
             return None
