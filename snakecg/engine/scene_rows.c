@@ -419,8 +419,8 @@ static int work_alloc(sc_scene_work *sw, const double *pk, sc_int ccap, sc_int m
  * q + i sq, tau + i st, fo + i sf (stride 0 broadcasts); its outputs at out + i width
  * (width = SO_QDD + n_s + 7 n_o + 3 n_g + CR_W ccap); where A is not null, its details at
  * A + i mcap n, lam, w, state + i mcap. At most ccap contacts a sample (a sample with more:
- * status SS_MORE, for the caller to redo with a larger ccap; the records after a sample's
- * contacts zeros: every column of a row written). The solves start from the last sample's pieces where its
+ * status SS_MORE, for the caller to redo with a larger ccap; every column of a row written,
+ * zeros after its contacts). The solves start from the last sample's pieces where its
  * blocks are the same, but at every chunk-th sample of the call (chunk < 2: all cold; a
  * caller splitting a batch on multiples of chunk gets the same answers whatever the split)
  * and for 1, 2, 4 .. 128 samples after starts that gained nothing. Returns 0, -1 out of

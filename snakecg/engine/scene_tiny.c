@@ -473,8 +473,9 @@ SC_INTERNAL int sc_tiny_inertia(sc_int n, const double *M, const double *f, doub
 }
 
 /* The tiny path switched on (mode 1: its FMA copy where the processor has AVX2 and FMA; 2: its
- * copy without FMA) or off (0: every problem to the general path), or left (-1); counts (2 doubles, or NULL): the problems tried and answered since the last read, then
- * reset. Returns the previous mode. */
+ * copy without FMA) or off (0: every problem to the general path), or left (-1); counts (2
+ * doubles, or NULL): the problems tried and answered since the last read, then reset. Returns
+ * the previous mode. */
 int SNAKECG_EXPORT(core_scene_tiny)(sc_int mode, double *counts) {
   int prev = tiny_on;
   if (mode >= 0 && mode <= 2) tiny_on = (int)mode;

@@ -92,7 +92,7 @@ TINY_FLAT void gram(const sc_int m, sc_int n, sc_int t, const double *restrict L
     }
     for (j = 0; j < w; ++j) Y[i * w + j] = y[j] = z[j] * ri;
     for (j = 0; j < w; ++j)
-      for (k = 0; k <= j; ++k) S[j * w + k] += y[j] * z[k];
+      for (k = 0; k <= (j < m ? j : m - 1); ++k) S[j * w + k] += y[j] * z[k]; /* (not g D^-1 g) */
   }
   for (j = 0; j < m; ++j) {
     for (k = 0; k <= j; ++k) G[j * m + k] = G[k * m + j] = S[j * w + k];
