@@ -48,8 +48,8 @@ enum { SO_INFO = 0, SO_NC = 8, SO_NORM_QDD, SO_NORM_A, SO_NORM_L, SO_SR, SO_OVER
 enum { BODY_LINK = 0, BODY_OBJECT = 1, BODY_OBSTACLE = 2 };
 /* Gauss-Seidel sweeps allowed per sample (snakecg.scenes.solve.MAX_SWEEPS) */
 #define SC_SCENE_SWEEPS 200000
-/* a warm start's passes beyond which it gained nothing (measured, 10-joint scene: a cold
- * solve ~5 sweeps and 2.5-3 passes, a pass ~3 sweeps' time; a start that falls back: +4) */
+/* a warm start's passes beyond which it gained nothing (10-joint scene: cold ~5 sweeps, 2.5-3
+ * passes, a pass ~3 sweeps' time; one falling back: +4); 1-row blocks, m <= n: beyond one */
 #define SC_GAIN_PASSES 2
 
 /* The scene's sizes and the scratch of one batch call. */
@@ -314,8 +314,8 @@ static void scene_sample(sc_scene_work *sw, const double *q, const double *tau,
   for (i = 0; out[SO_INFO] != 0.0 && i < n + sw->no; ++i) a[i] = NAN; /* (qdd, a_o, ||a_o||^2) */
   out[SO_NC] = (double)nc;
   if (warm) { /* a start that gained nothing (it fell back to sweeps, or took more than
-    SC_GAIN_PASSES): the next 1, 2, 4 .. 128 samples cold; one that gained halves the count */
-    j = out[SO_INFO + 5] == 0.0 && out[SO_INFO + 6] <= SC_GAIN_PASSES;
+    SC_GAIN_PASSES; 1-row blocks, m <= n: one): the next 1, 2 .. 128 cold; a gain halves it */
+    j = out[SO_INFO + 5] == 0.0 && out[SO_INFO + 6] <= (m == nb && m <= n ? 1 : SC_GAIN_PASSES);
     sw->backoff = j ? sw->backoff / 2 : sw->backoff ? 2 * sw->backoff : 1;
     if (sw->backoff > 128) sw->backoff = 128;
     sw->cool = j ? 0 : sw->backoff;
