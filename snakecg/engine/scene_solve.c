@@ -59,11 +59,15 @@ enum { ST_SOLVED = 0, ST_NOT_CONVERGED = 1, ST_SINGULAR_MASS = 2, ST_BAD_INPUT =
 #define READ_SLIDE 0.15 /* 2-D block read sliding within this of its boundary mid-sweeps */
 
 /* Gauss-Seidel sweeps until the largest change is below rel * scale; returns the sweeps.
- * w = G lam + b is kept along (one column of G per changed row), and recomputed after. */
-static sc_int sweeps(sc_problem *p, sc_int max_sweeps, double rel) {
+ * w = G lam + b is kept along (one column of G per changed row), and recomputed after; on
+ * entry from zero forces (zero) it is b + 0 (what the product gives: sums of zeros, +0). */
+static sc_int sweeps(sc_problem *p, sc_int max_sweeps, double rel, int zero) {
   const sc_int m = p->m;
   sc_int s, k, i, j;
-  sc_update_w(p);
+  if (zero)
+    for (j = 0; j < m; ++j) p->w[j] = p->b[j] + 0.0;
+  else
+    sc_update_w(p);
   for (s = 0; s < max_sweeps; ++s) {
     double change = 0.0, size = 0.0;
     for (k = 0; k < p->nb; ++k) {
@@ -351,7 +355,7 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
   for (k = 0; k < nb; ++k) prev[k] = -1;
   while (!ok && total_sweeps < max_sweeps) {
     int same = 1;
-    sc_int s = reread ? chunk : sweeps(&p, chunk, 1e-12);
+    sc_int s = reread ? chunk : sweeps(&p, chunk, 1e-12, total_sweeps == 0);
     if (!reread) total_sweeps += s;
     sc_read_states(&p, 1e-6, s < chunk || fails >= 2 ? 1e-6 : READ_SLIDE); /* (converged: 1e-6) */
     for (k = 0; k < nb; ++k)
