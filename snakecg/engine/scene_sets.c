@@ -175,7 +175,8 @@ static sc_int null_space(sc_int n, double *A, double *V, double *work, sc_int *p
  * rounding) is taken instead. Z = L^-1 A^T (n x m, scene_solve.c's) checks that the choice
  * keeps the accelerations. Returns 0 when the face's rows are independent (nothing to
  * choose), 1 when the minimum-norm forces were found, 2 when not (a larger null space whose
- * unconstrained minimum leaves the set: the face's basic solution stays). */
+ * unconstrained minimum leaves the set: the face's basic solution stays). p->w is read (the
+ * face) and left as it was: the caller takes w of the new forces where it reads it. */
 SC_INTERNAL int sc_min_norm_face(sc_problem *p, const double *Z, double *work) {
   const sc_int m = p->m;
   sc_int F[512], fk[512], perm[512], nf = 0, i, j, k, t, nnull = 0, tnull = -1;
@@ -256,10 +257,6 @@ SC_INTERNAL int sc_min_norm_face(sc_problem *p, const double *Z, double *work) {
     if (!(quad <= 1e-26 * p->wscale * p->fscale)) return 2;
   }
   for (i = 0; i < nf; ++i) p->lam[F[i]] = l0[i];
-  { /* w = G lam + b at the new forces */
-    sc_int r;
-    for (r = 0; r < p->m; ++r) p->w[r] = p->b[r] + sc_dot(p->G + r * p->m, p->lam, p->m);
-  }
   return 1;
 }
 

@@ -381,41 +381,35 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
         if (kind[k] == K_BOX) lam[r] = fmax(-par[3 * k], fmin(par[3 * k], lam[r]));
       }
   }
-  if (ok) { /* (w and res: the last pass's, of this lam, until lam moves) */
+  if (ok) { /* (w and res: the last pass's, of this lam, until lam moves; once it may have
+    moved, both are taken again at the end, and until then only a pass's w is read) */
     int degenerate = defect > 0, moved = 0;
     for (k = 0; k < nb && !degenerate; ++k)
       if (state[k] != S_HELD && sc_still(&p, k)) degenerate = 1;
     if (degenerate) {
       dep = sc_min_norm_face(&p, Z, rest);
-      kkt(&p, res, 0);
       moved = 1;
     }
     /* a contact that the minimum-norm choice brought to zero force may open instead, which
      * frees the dependent forces further: tried one at a time, kept where the KKT conditions
-     * still hold */
+     * still hold (each try's pass takes w of its own lam) */
     for (k = 0; k < nb && dep == 1; ++k) {
-      double keep_lam[512], keep_w[512], keep_res[3] = {res[0], res[1], res[2]};
+      double keep_lam[512];
       sc_int keep_state = state[k], d2;
       int solved = 0; /* (to rounding: no early stop) */
       if (kind[k] != K_UNILATERAL || state[k] != S_HELD || lam[start[k]] > 1e-12 * p.fscale)
         continue;
       memcpy(keep_lam, lam, sizeof(double) * (size_t)m);
-      memcpy(keep_w, w, sizeof(double) * (size_t)m);
       state[k] = S_ZERO;
       d2 = sc_polish(&p, rest, iw2, 0, &solved);
       if (d2 >= 0 && !kkt(&p, res, 0) && res[0] <= TOL_ACCEPT && res[1] <= TOL_ACCEPT &&
           res[2] <= TOL_ACCEPT) {
         dep = sc_min_norm_face(&p, Z, rest);
         defect = d2;
-        kkt(&p, res, 0);
         if (d2 == 0) break;
       } else {
         state[k] = keep_state;
         memcpy(lam, keep_lam, sizeof(double) * (size_t)m);
-        memcpy(w, keep_w, sizeof(double) * (size_t)m);
-        res[0] = keep_res[0];
-        res[1] = keep_res[1];
-        res[2] = keep_res[2];
       }
     }
     for (k = 0; k < nb; ++k) /* a contact's force below zero by rounding: zero */
