@@ -65,7 +65,7 @@ CORE_SOURCES = tuple(ENGINE_DIR / name
                                   "certificate.c", "optimal.c", "max_sr.c", "push.c",
                                   "wheel_states.c", "scene_sets.c", "scene_piece.c",
                                   "scene_primal.c", "scene_small.c", "scene_tiny.c",
-                                  "scene_solve.c", "scene_diag.c",
+                                  "scene_solve.c", "scene_diag.c", "scene_block.c",
                                   "scene_geometry.c", "scene_place.c",
                                   "scene_rows.c", "scene_broad.c", "scene_metrics.c",
                                   "scene_step.c", "scene_run.c",

@@ -1,15 +1,10 @@
 /* snakecg's engine: the friction and contact sets of the general-scene solve
- * (scene_solve.c) and the exact minimiser of a quadratic over each of them.
+ * (scene_solve.c); the exact minimiser of a quadratic over each of them is scene_block.c's.
  *
  * A block k of the dual, min 1/2 lam^T G lam + b^T lam over lam in K_1 x ... x K_nb, is one
  * row (FREE: R; UNILATERAL: lam >= 0; BOX: |lam| <= p0) or two (DISC: |lam| <= p0; SPLIT: the
  * split ellipse with semi-axes p0 for lam_t <= 0, p1 for lam_t >= 0, p2 across). On a 2-D
- * set's boundary, lam^T P lam = 1 with P diagonal (block_P). block_min minimises
- * 1/2 l^T G_kk l + c^T l over K_k exactly: a clamp, or a 2-D trust-region problem in closed
- * form on the eigenvectors (its secular equation solved to rounding); the split ellipse as
- * the backward half, the forward half, or the segment lam_t = 0 (the minimiser over the
- * convex set lies in the half whose own full-ellipse minimiser falls inside it, else on the
- * dividing segment). sc_on_boundary parametrizes a 2-D set's boundary by a direction (the
+ * set's boundary, lam^T P lam = 1 with P diagonal (block_P). sc_on_boundary parametrizes a 2-D set's boundary by a direction (the
  * sliding pieces' unknowns). Used by scene_solve.c.
  */
 #include <math.h>
@@ -17,57 +12,6 @@
 #include "snakecg_layout.h"
 #include "engine.h"
 #include "scene_sets.h"
-
-/* The exact minimiser over block k's set of 1/2 l^T H l + c^T l (H = G_kk). */
-SC_INTERNAL void sc_block_min(const sc_problem *p, sc_int k, const double *c, double *l) {
-  const sc_int r = p->start[k], m = p->m;
-  const double *q = p->par + 3 * k, *G = p->G;
-  if (p->kind[k] < K_DISC) {
-    double h = G[r * m + r], x = h > 0 ? -c[0] / h : 0.0;
-    if (p->kind[k] == K_UNILATERAL && x < 0) x = 0;
-    if (p->kind[k] == K_BOX) x = x > q[0] ? q[0] : (x < -q[0] ? -q[0] : x);
-    if (!(h > 0)) x = p->kind[k] == K_UNILATERAL ? 0.0 : 0.0;
-    l[0] = x;
-    return;
-  }
-  {
-    double H[4] = {G[r * m + r], G[r * m + r + 1], G[(r + 1) * m + r], G[(r + 1) * m + r + 1]};
-    if (p->kind[k] == K_DISC) {
-      double Hs[4], gs[2], x[2], s = q[0];
-      if (!(s > 0)) { l[0] = l[1] = 0.0; return; }
-      for (int i = 0; i < 4; ++i) Hs[i] = H[i] * s * s;
-      gs[0] = c[0] * s;
-      gs[1] = c[1] * s;
-      sc_trust_region_2d(Hs, gs, x);
-      l[0] = s * x[0];
-      l[1] = s * x[1];
-    } else { /* split ellipse: the backward half, the forward half, or the segment t = 0 */
-      int half;
-      if (!(q[2] > 0) || !(q[0] > 0 || q[1] > 0)) {
-        l[0] = 0.0;
-        l[1] = q[2] > 0 ? fmax(-q[2], fmin(q[2], H[3] > 0 ? -c[1] / H[3] : 0.0)) : 0.0;
-        if (!(q[0] > 0 || q[1] > 0)) return;
-      }
-      for (half = 0; half < 2; ++half) {
-        double st = q[half], Hs[4], gs[2], x[2];
-        if (!(st > 0)) continue;
-        Hs[0] = H[0] * st * st; Hs[1] = H[1] * st * q[2];
-        Hs[2] = H[2] * st * q[2]; Hs[3] = H[3] * q[2] * q[2];
-        gs[0] = c[0] * st;
-        gs[1] = c[1] * q[2];
-        sc_trust_region_2d(Hs, gs, x);
-        if ((half == 0 && x[0] <= 0) || (half == 1 && x[0] >= 0)) {
-          l[0] = st * x[0];
-          l[1] = q[2] * x[1];
-          return;
-        }
-      }
-      l[0] = 0.0;
-      l[1] = H[3] > 0 ? -c[1] / H[3] : 0.0;
-      l[1] = fmax(-q[2], fmin(q[2], l[1]));
-    }
-  }
-}
 
 /* A sliding 2-D block k's force on its set's boundary in the direction u (a unit vector:
  * (cos t, sin t) at the angle t) and the tangent T = dlam/dt there: a disc s u; a split ellipse
