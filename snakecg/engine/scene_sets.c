@@ -4,8 +4,8 @@
  * A block k of the dual, min 1/2 lam^T G lam + b^T lam over lam in K_1 x ... x K_nb, is one
  * row (FREE: R; UNILATERAL: lam >= 0; BOX: |lam| <= p0) or two (DISC: |lam| <= p0; SPLIT: the
  * split ellipse with semi-axes p0 for lam_t <= 0, p1 for lam_t >= 0, p2 across). On a 2-D
- * set's boundary, lam^T P lam = 1 with P diagonal (block_P). sc_on_boundary parametrizes a 2-D set's boundary by a direction (the
- * sliding pieces' unknowns). Used by scene_solve.c.
+ * set's boundary, lam^T P lam = 1 with P diagonal (block_P). sc_on_boundary parametrizes a
+ * 2-D set's boundary by a direction (the sliding pieces' unknowns). Used by scene_solve.c.
  */
 #include <math.h>
 
@@ -71,11 +71,11 @@ SC_INTERNAL int sc_in_set(const sc_problem *p, sc_int k, double *l, double tol, 
   }
 }
 
-/* An orthonormal basis of the null space of the positive semidefinite n x n A (row-major;
- * overwritten): the pivoted L D L^T of sc_psd_solve stopped at pivots of at most NULL_TOL of
- * the first, the null vectors P [-L11^-T L21^T; I] orthonormalized (Gram-Schmidt, twice).
- * Column t of the basis at V[i * n + t]; returns their number. Work: 2 n doubles, n sc_ints
- * in perm. */
+/* An orthonormal basis of the null space of the positive semidefinite n x n A (row-major, its
+ * lower triangle read and overwritten): the pivoted L D L^T of sc_psd_solve stopped at pivots
+ * of at most NULL_TOL of the first, the null vectors P [-L11^-T L21^T; I] orthonormalized
+ * (Gram-Schmidt, twice). Basis vector t at V + t * n (contiguous); returns their number.
+ * Work: 2 n doubles, n sc_ints in perm. */
 static sc_int null_space(sc_int n, double *A, double *V, double *work, sc_int *perm) {
   double *b = work, *x = work + n;
   sc_int i, j, t, u, rank, nn;
@@ -92,7 +92,7 @@ static sc_int null_space(sc_int n, double *A, double *V, double *work, sc_int *p
       for (j = i + 1; j < rank; ++j) sum -= A[j * n + i] * y[j];
       y[i] = sum;
     }
-    for (i = 0; i < n; ++i) V[perm[i] * n + t] = y[i];
+    for (i = 0; i < n; ++i) V[t * n + perm[i]] = y[i];
   }
   for (t = 0; t < nn; ++t) {
     int pass;
@@ -100,13 +100,13 @@ static sc_int null_space(sc_int n, double *A, double *V, double *work, sc_int *p
     for (pass = 0; pass < 2; ++pass)
       for (u = 0; u < t; ++u) {
         double d = 0.0;
-        for (i = 0; i < n; ++i) d += V[i * n + u] * V[i * n + t];
-        for (i = 0; i < n; ++i) V[i * n + t] -= d * V[i * n + u];
+        for (i = 0; i < n; ++i) d += V[u * n + i] * V[t * n + i];
+        for (i = 0; i < n; ++i) V[t * n + i] -= d * V[u * n + i];
       }
     nrm = 0.0;
-    for (i = 0; i < n; ++i) nrm += V[i * n + t] * V[i * n + t];
+    for (i = 0; i < n; ++i) nrm += V[t * n + i] * V[t * n + i];
     nrm = sqrt(nrm);
-    for (i = 0; i < n; ++i) V[i * n + t] /= nrm;
+    for (i = 0; i < n; ++i) V[t * n + i] /= nrm;
   }
   return nn;
 }
@@ -138,16 +138,16 @@ SC_INTERNAL int sc_min_norm_face(sc_problem *p, const double *Z, double *work) {
   V = A + nf * nf;
   ev = V + nf * nf;
   l0 = ev + 2 * nf;
-  for (i = 0; i < nf; ++i)
-    for (j = 0; j < nf; ++j) A[i * nf + j] = p->G[F[i] * m + F[j]];
+  for (i = 0; i < nf; ++i) /* (the lower triangle: all that null_space reads) */
+    for (j = 0; j <= i; ++j) A[i * nf + j] = p->G[F[i] * m + F[j]];
   nnull = null_space(nf, A, V, ev, perm);
   for (i = 0; i < nf; ++i) l0[i] = p->lam[F[i]];
   for (t = 0; t < nnull; ++t) {
     double s;
     tnull = t;
     s = 0.0;
-    for (i = 0; i < nf; ++i) s += V[i * nf + t] * l0[i];
-    for (i = 0; i < nf; ++i) l0[i] -= s * V[i * nf + t];
+    for (i = 0; i < nf; ++i) s += V[t * nf + i] * l0[i];
+    for (i = 0; i < nf; ++i) l0[i] -= s * V[t * nf + i];
   }
   if (nnull == 0) return 0;
   for (i = 0; i < nf; i += sc_block_size(p->kind[fk[i]]))
@@ -156,15 +156,15 @@ SC_INTERNAL int sc_min_norm_face(sc_problem *p, const double *Z, double *work) {
     double tstar = 0.0, lim[2];
     int side;
     if (nnull != 1) return 2;
-    for (i = 0; i < nf; ++i) tstar -= V[i * nf + tnull] * p->lam[F[i]];
+    for (i = 0; i < nf; ++i) tstar -= V[tnull * nf + i] * p->lam[F[i]];
     for (side = 0; side < 2; ++side) { /* the interval's ends: every block stays in its set */
       double dir = side ? 1.0 : -1.0, lo = 0.0, hi = 1.0, l[2];
       int it, ok = 1;
       for (it = 0; it < 80 && ok; ++it) { /* grow until one block leaves */
         for (i = 0; i < nf && ok; i += sc_block_size(p->kind[fk[i]])) {
-          l[0] = p->lam[F[i]] + dir * hi * V[i * nf + tnull];
+          l[0] = p->lam[F[i]] + dir * hi * V[tnull * nf + i];
           if (sc_block_size(p->kind[fk[i]]) == 2)
-            l[1] = p->lam[F[i + 1]] + dir * hi * V[(i + 1) * nf + tnull];
+            l[1] = p->lam[F[i + 1]] + dir * hi * V[tnull * nf + i + 1];
           if (!sc_in_set(p, fk[i], l, 1e-12, 0)) ok = 0;
         }
         if (ok) { lo = hi; hi *= 2.0 * (1.0 + p->fscale); }
@@ -174,9 +174,9 @@ SC_INTERNAL int sc_min_norm_face(sc_problem *p, const double *Z, double *work) {
         double mid = 0.5 * (lo + hi);
         int in = 1;
         for (i = 0; i < nf && in; i += sc_block_size(p->kind[fk[i]])) {
-          l[0] = p->lam[F[i]] + dir * mid * V[i * nf + tnull];
+          l[0] = p->lam[F[i]] + dir * mid * V[tnull * nf + i];
           if (sc_block_size(p->kind[fk[i]]) == 2)
-            l[1] = p->lam[F[i + 1]] + dir * mid * V[(i + 1) * nf + tnull];
+            l[1] = p->lam[F[i + 1]] + dir * mid * V[tnull * nf + i + 1];
           if (!sc_in_set(p, fk[i], l, 1e-12, 0)) in = 0;
         }
         if (in) lo = mid; else hi = mid;
@@ -184,7 +184,7 @@ SC_INTERNAL int sc_min_norm_face(sc_problem *p, const double *Z, double *work) {
       lim[side] = lo;
     }
     tstar = fmax(-lim[0], fmin(lim[1], tstar));
-    for (i = 0; i < nf; ++i) l0[i] = p->lam[F[i]] + tstar * V[i * nf + tnull];
+    for (i = 0; i < nf; ++i) l0[i] = p->lam[F[i]] + tstar * V[tnull * nf + i];
     for (i = 0; i < nf; i += sc_block_size(p->kind[fk[i]])) /* rounding onto the sets */
       sc_in_set(p, fk[i], l0 + i, INFINITY, 1);
   }
