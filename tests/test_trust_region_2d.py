@@ -1,4 +1,4 @@
-"""The engine's 2-D block minimiser (linalg.h's ``sc_trust_region_2d``: min 1/2 x'Hx + g'x over
+"""The engine's 2-D block minimiser (scene_block.h's ``sc_trust_region_2d``: min 1/2 x'Hx + g'x over
 the unit disc, H 2 x 2 positive semidefinite), compiled alone with the engine's own flags and
 called through ctypes, against an independent reference in mpmath at 50 digits: the interior
 minimiser -H^+ g where it lies in the disc and g is in H's range, else the point
@@ -19,9 +19,8 @@ import pytest
 from snakecg.native import CORE_FLAGS, ENGINE_DIR, find_compiler
 
 mpmath.mp.dps = 50
-SHIM = """typedef long long int sc_int; /* as engine.h, which includes linalg.h */
-#define SC_UNROLL
-#include "linalg.h"
+SHIM = """#include <math.h>
+#include "scene_block.h"
 void tr2d(const double *H, const double *g, double *x) { sc_trust_region_2d(H, g, x); }
 """
 

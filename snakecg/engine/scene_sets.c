@@ -1,73 +1,17 @@
 /* snakecg's engine: the friction and contact sets of the general-scene solve
- * (scene_solve.c) and the exact minimiser of a quadratic over each of them.
+ * (scene_solve.c); the exact minimiser of a quadratic over each of them is scene_block.c's.
  *
  * A block k of the dual, min 1/2 lam^T G lam + b^T lam over lam in K_1 x ... x K_nb, is one
  * row (FREE: R; UNILATERAL: lam >= 0; BOX: |lam| <= p0) or two (DISC: |lam| <= p0; SPLIT: the
  * split ellipse with semi-axes p0 for lam_t <= 0, p1 for lam_t >= 0, p2 across). On a 2-D
- * set's boundary, lam^T P lam = 1 with P diagonal (block_P). block_min minimises
- * 1/2 l^T G_kk l + c^T l over K_k exactly: a clamp, or a 2-D trust-region problem in closed
- * form on the eigenvectors (its secular equation solved to rounding); the split ellipse as
- * the backward half, the forward half, or the segment lam_t = 0 (the minimiser over the
- * convex set lies in the half whose own full-ellipse minimiser falls inside it, else on the
- * dividing segment). sc_on_boundary parametrizes a 2-D set's boundary by a direction (the
- * sliding pieces' unknowns). Used by scene_solve.c.
+ * set's boundary, lam^T P lam = 1 with P diagonal (block_P). sc_on_boundary parametrizes a
+ * 2-D set's boundary by a direction (the sliding pieces' unknowns). Used by scene_solve.c.
  */
 #include <math.h>
 
 #include "snakecg_layout.h"
 #include "engine.h"
 #include "scene_sets.h"
-
-/* The exact minimiser over block k's set of 1/2 l^T H l + c^T l (H = G_kk). */
-SC_INTERNAL void sc_block_min(const sc_problem *p, sc_int k, const double *c, double *l) {
-  const sc_int r = p->start[k], m = p->m;
-  const double *q = p->par + 3 * k, *G = p->G;
-  if (p->kind[k] < K_DISC) {
-    double h = G[r * m + r], x = h > 0 ? -c[0] / h : 0.0;
-    if (p->kind[k] == K_UNILATERAL && x < 0) x = 0;
-    if (p->kind[k] == K_BOX) x = x > q[0] ? q[0] : (x < -q[0] ? -q[0] : x);
-    if (!(h > 0)) x = p->kind[k] == K_UNILATERAL ? 0.0 : 0.0;
-    l[0] = x;
-    return;
-  }
-  {
-    double H[4] = {G[r * m + r], G[r * m + r + 1], G[(r + 1) * m + r], G[(r + 1) * m + r + 1]};
-    if (p->kind[k] == K_DISC) {
-      double Hs[4], gs[2], x[2], s = q[0];
-      if (!(s > 0)) { l[0] = l[1] = 0.0; return; }
-      for (int i = 0; i < 4; ++i) Hs[i] = H[i] * s * s;
-      gs[0] = c[0] * s;
-      gs[1] = c[1] * s;
-      sc_trust_region_2d(Hs, gs, x);
-      l[0] = s * x[0];
-      l[1] = s * x[1];
-    } else { /* split ellipse: the backward half, the forward half, or the segment t = 0 */
-      int half;
-      if (!(q[2] > 0) || !(q[0] > 0 || q[1] > 0)) {
-        l[0] = 0.0;
-        l[1] = q[2] > 0 ? fmax(-q[2], fmin(q[2], H[3] > 0 ? -c[1] / H[3] : 0.0)) : 0.0;
-        if (!(q[0] > 0 || q[1] > 0)) return;
-      }
-      for (half = 0; half < 2; ++half) {
-        double st = q[half], Hs[4], gs[2], x[2];
-        if (!(st > 0)) continue;
-        Hs[0] = H[0] * st * st; Hs[1] = H[1] * st * q[2];
-        Hs[2] = H[2] * st * q[2]; Hs[3] = H[3] * q[2] * q[2];
-        gs[0] = c[0] * st;
-        gs[1] = c[1] * q[2];
-        sc_trust_region_2d(Hs, gs, x);
-        if ((half == 0 && x[0] <= 0) || (half == 1 && x[0] >= 0)) {
-          l[0] = st * x[0];
-          l[1] = q[2] * x[1];
-          return;
-        }
-      }
-      l[0] = 0.0;
-      l[1] = H[3] > 0 ? -c[1] / H[3] : 0.0;
-      l[1] = fmax(-q[2], fmin(q[2], l[1]));
-    }
-  }
-}
 
 /* A sliding 2-D block k's force on its set's boundary in the direction u (a unit vector:
  * (cos t, sin t) at the angle t) and the tangent T = dlam/dt there: a disc s u; a split ellipse
@@ -127,11 +71,11 @@ SC_INTERNAL int sc_in_set(const sc_problem *p, sc_int k, double *l, double tol, 
   }
 }
 
-/* An orthonormal basis of the null space of the positive semidefinite n x n A (row-major;
- * overwritten): the pivoted L D L^T of sc_psd_solve stopped at pivots of at most NULL_TOL of
- * the first, the null vectors P [-L11^-T L21^T; I] orthonormalized (Gram-Schmidt, twice).
- * Column t of the basis at V[i * n + t]; returns their number. Work: 2 n doubles, n sc_ints
- * in perm. */
+/* An orthonormal basis of the null space of the positive semidefinite n x n A (row-major, its
+ * lower triangle read and overwritten): the pivoted L D L^T of sc_psd_solve stopped at pivots
+ * of at most NULL_TOL of the first, the null vectors P [-L11^-T L21^T; I] orthonormalized
+ * (Gram-Schmidt, twice). Basis vector t at V + t * n (contiguous); returns their number.
+ * Work: 2 n doubles, n sc_ints in perm. */
 static sc_int null_space(sc_int n, double *A, double *V, double *work, sc_int *perm) {
   double *b = work, *x = work + n;
   sc_int i, j, t, u, rank, nn;
@@ -148,7 +92,7 @@ static sc_int null_space(sc_int n, double *A, double *V, double *work, sc_int *p
       for (j = i + 1; j < rank; ++j) sum -= A[j * n + i] * y[j];
       y[i] = sum;
     }
-    for (i = 0; i < n; ++i) V[perm[i] * n + t] = y[i];
+    for (i = 0; i < n; ++i) V[t * n + perm[i]] = y[i];
   }
   for (t = 0; t < nn; ++t) {
     int pass;
@@ -156,13 +100,13 @@ static sc_int null_space(sc_int n, double *A, double *V, double *work, sc_int *p
     for (pass = 0; pass < 2; ++pass)
       for (u = 0; u < t; ++u) {
         double d = 0.0;
-        for (i = 0; i < n; ++i) d += V[i * n + u] * V[i * n + t];
-        for (i = 0; i < n; ++i) V[i * n + t] -= d * V[i * n + u];
+        for (i = 0; i < n; ++i) d += V[u * n + i] * V[t * n + i];
+        for (i = 0; i < n; ++i) V[t * n + i] -= d * V[u * n + i];
       }
     nrm = 0.0;
-    for (i = 0; i < n; ++i) nrm += V[i * n + t] * V[i * n + t];
+    for (i = 0; i < n; ++i) nrm += V[t * n + i] * V[t * n + i];
     nrm = sqrt(nrm);
-    for (i = 0; i < n; ++i) V[i * n + t] /= nrm;
+    for (i = 0; i < n; ++i) V[t * n + i] /= nrm;
   }
   return nn;
 }
@@ -175,7 +119,8 @@ static sc_int null_space(sc_int n, double *A, double *V, double *work, sc_int *p
  * rounding) is taken instead. Z = L^-1 A^T (n x m, scene_solve.c's) checks that the choice
  * keeps the accelerations. Returns 0 when the face's rows are independent (nothing to
  * choose), 1 when the minimum-norm forces were found, 2 when not (a larger null space whose
- * unconstrained minimum leaves the set: the face's basic solution stays). */
+ * unconstrained minimum leaves the set: the face's basic solution stays). p->w is read (the
+ * face) and left as it was: the caller takes w of the new forces where it reads it. */
 SC_INTERNAL int sc_min_norm_face(sc_problem *p, const double *Z, double *work) {
   const sc_int m = p->m;
   sc_int F[512], fk[512], perm[512], nf = 0, i, j, k, t, nnull = 0, tnull = -1;
@@ -193,16 +138,16 @@ SC_INTERNAL int sc_min_norm_face(sc_problem *p, const double *Z, double *work) {
   V = A + nf * nf;
   ev = V + nf * nf;
   l0 = ev + 2 * nf;
-  for (i = 0; i < nf; ++i)
-    for (j = 0; j < nf; ++j) A[i * nf + j] = p->G[F[i] * m + F[j]];
+  for (i = 0; i < nf; ++i) /* (the lower triangle: all that null_space reads) */
+    for (j = 0; j <= i; ++j) A[i * nf + j] = p->G[F[i] * m + F[j]];
   nnull = null_space(nf, A, V, ev, perm);
   for (i = 0; i < nf; ++i) l0[i] = p->lam[F[i]];
   for (t = 0; t < nnull; ++t) {
     double s;
     tnull = t;
     s = 0.0;
-    for (i = 0; i < nf; ++i) s += V[i * nf + t] * l0[i];
-    for (i = 0; i < nf; ++i) l0[i] -= s * V[i * nf + t];
+    for (i = 0; i < nf; ++i) s += V[t * nf + i] * l0[i];
+    for (i = 0; i < nf; ++i) l0[i] -= s * V[t * nf + i];
   }
   if (nnull == 0) return 0;
   for (i = 0; i < nf; i += sc_block_size(p->kind[fk[i]]))
@@ -211,15 +156,15 @@ SC_INTERNAL int sc_min_norm_face(sc_problem *p, const double *Z, double *work) {
     double tstar = 0.0, lim[2];
     int side;
     if (nnull != 1) return 2;
-    for (i = 0; i < nf; ++i) tstar -= V[i * nf + tnull] * p->lam[F[i]];
+    for (i = 0; i < nf; ++i) tstar -= V[tnull * nf + i] * p->lam[F[i]];
     for (side = 0; side < 2; ++side) { /* the interval's ends: every block stays in its set */
       double dir = side ? 1.0 : -1.0, lo = 0.0, hi = 1.0, l[2];
       int it, ok = 1;
       for (it = 0; it < 80 && ok; ++it) { /* grow until one block leaves */
         for (i = 0; i < nf && ok; i += sc_block_size(p->kind[fk[i]])) {
-          l[0] = p->lam[F[i]] + dir * hi * V[i * nf + tnull];
+          l[0] = p->lam[F[i]] + dir * hi * V[tnull * nf + i];
           if (sc_block_size(p->kind[fk[i]]) == 2)
-            l[1] = p->lam[F[i + 1]] + dir * hi * V[(i + 1) * nf + tnull];
+            l[1] = p->lam[F[i + 1]] + dir * hi * V[tnull * nf + i + 1];
           if (!sc_in_set(p, fk[i], l, 1e-12, 0)) ok = 0;
         }
         if (ok) { lo = hi; hi *= 2.0 * (1.0 + p->fscale); }
@@ -229,9 +174,9 @@ SC_INTERNAL int sc_min_norm_face(sc_problem *p, const double *Z, double *work) {
         double mid = 0.5 * (lo + hi);
         int in = 1;
         for (i = 0; i < nf && in; i += sc_block_size(p->kind[fk[i]])) {
-          l[0] = p->lam[F[i]] + dir * mid * V[i * nf + tnull];
+          l[0] = p->lam[F[i]] + dir * mid * V[tnull * nf + i];
           if (sc_block_size(p->kind[fk[i]]) == 2)
-            l[1] = p->lam[F[i + 1]] + dir * mid * V[(i + 1) * nf + tnull];
+            l[1] = p->lam[F[i + 1]] + dir * mid * V[tnull * nf + i + 1];
           if (!sc_in_set(p, fk[i], l, 1e-12, 0)) in = 0;
         }
         if (in) lo = mid; else hi = mid;
@@ -239,7 +184,7 @@ SC_INTERNAL int sc_min_norm_face(sc_problem *p, const double *Z, double *work) {
       lim[side] = lo;
     }
     tstar = fmax(-lim[0], fmin(lim[1], tstar));
-    for (i = 0; i < nf; ++i) l0[i] = p->lam[F[i]] + tstar * V[i * nf + tnull];
+    for (i = 0; i < nf; ++i) l0[i] = p->lam[F[i]] + tstar * V[tnull * nf + i];
     for (i = 0; i < nf; i += sc_block_size(p->kind[fk[i]])) /* rounding onto the sets */
       sc_in_set(p, fk[i], l0 + i, INFINITY, 1);
   }
@@ -256,10 +201,6 @@ SC_INTERNAL int sc_min_norm_face(sc_problem *p, const double *Z, double *work) {
     if (!(quad <= 1e-26 * p->wscale * p->fscale)) return 2;
   }
   for (i = 0; i < nf; ++i) p->lam[F[i]] = l0[i];
-  { /* w = G lam + b at the new forces */
-    sc_int r;
-    for (r = 0; r < p->m; ++r) p->w[r] = p->b[r] + sc_dot(p->G + r * p->m, p->lam, p->m);
-  }
   return 1;
 }
 

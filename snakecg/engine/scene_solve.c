@@ -47,6 +47,7 @@
 
 #include "snakecg_layout.h"
 #include "engine.h"
+#include "scene_block.h"
 #include "scene_diag.h"
 #include "scene_sets.h"
 #include "scene_tiny.h"
@@ -57,13 +58,22 @@ enum { ST_SOLVED = 0, ST_NOT_CONVERGED = 1, ST_SINGULAR_MASS = 2, ST_BAD_INPUT =
 #define TRY_PASSES 6 /* from pieces read before the sweeps converged */
 #define CHUNK 5 /* sweeps before the first reading of the pieces */
 #define READ_SLIDE 0.15 /* 2-D block read sliding within this of its boundary mid-sweeps */
+#define PREP_BLOCKS 64 /* blocks whose minimiser's H part the sweeps keep (the others: each time) */
 
 /* Gauss-Seidel sweeps until the largest change is below rel * scale; returns the sweeps.
- * w = G lam + b is kept along (one column of G per changed row), and recomputed after. */
-static sc_int sweeps(sc_problem *p, sc_int max_sweeps, double rel) {
+ * w = G lam + b is kept along (one column of G per changed row), and recomputed after; on
+ * entry from zero forces (zero: the sample's first sweeps) it is b + 0 (what the product
+ * gives: sums of zeros, +0), and the first PREP_BLOCKS blocks' H's part of their minimiser
+ * is taken into pr (2 per block: scene_block.h) for every later sweep of the sample. */
+static sc_int sweeps(sc_problem *p, sc_int max_sweeps, double rel, int zero, sc_tr2d *pr) {
   const sc_int m = p->m;
   sc_int s, k, i, j;
-  sc_update_w(p);
+  if (zero) {
+    for (j = 0; j < m; ++j) p->w[j] = p->b[j] + 0.0;
+    for (k = 0; k < p->nb && k < PREP_BLOCKS; ++k)
+      if (p->kind[k] >= K_DISC) sc_block_prep(p, k, pr + 2 * k);
+  } else
+    sc_update_w(p);
   for (s = 0; s < max_sweeps; ++s) {
     double change = 0.0, size = 0.0;
     for (k = 0; k < p->nb; ++k) {
@@ -73,7 +83,7 @@ static sc_int sweeps(sc_problem *p, sc_int max_sweeps, double rel) {
         c[i] = p->w[r + i];
         for (j = 0; j < nk; ++j) c[i] -= p->G[(r + i) * m + r + j] * p->lam[r + j];
       }
-      sc_block_min(p, k, c, l);
+      sc_block_min(p, k, c, l, k < PREP_BLOCKS ? pr + 2 * k : NULL);
       for (i = 0; i < nk; ++i) {
         d[i] = l[i] - p->lam[r + i];
         if (fabs(d[i]) > change) change = fabs(d[i]);
@@ -296,6 +306,7 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
   sc_int i, j, k, t, total_sweeps = 0, passes = 0, defect = 0, chunk = CHUNK;
   sc_int *state = iwork, *iw2 = iwork + nb, *prev = iw2 + 3 * (m + nb);
   sc_problem p;
+  sc_tr2d prep[2 * PREP_BLOCKS]; /* (the sweeps' blocks' H parts: taken at their first sweep) */
   int dep = 0, ok = 0, primal = 0, reread = 0, fails = 0;
   if (tiny && sc_tiny_solve(n, m, nb, M, f, A, c, kind, start, par, from, lam, a, w, state_out,
                             info))
@@ -351,7 +362,7 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
   for (k = 0; k < nb; ++k) prev[k] = -1;
   while (!ok && total_sweeps < max_sweeps) {
     int same = 1;
-    sc_int s = reread ? chunk : sweeps(&p, chunk, 1e-12);
+    sc_int s = reread ? chunk : sweeps(&p, chunk, 1e-12, total_sweeps == 0, prep);
     if (!reread) total_sweeps += s;
     sc_read_states(&p, 1e-6, s < chunk || fails >= 2 ? 1e-6 : READ_SLIDE); /* (converged: 1e-6) */
     for (k = 0; k < nb; ++k)
@@ -377,41 +388,35 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
         if (kind[k] == K_BOX) lam[r] = fmax(-par[3 * k], fmin(par[3 * k], lam[r]));
       }
   }
-  if (ok) { /* (w and res: the last pass's, of this lam, until lam moves) */
+  if (ok) { /* (w and res: the last pass's, of this lam, until lam moves; once it may have
+    moved, both are taken again at the end, and until then only a pass's w is read) */
     int degenerate = defect > 0, moved = 0;
     for (k = 0; k < nb && !degenerate; ++k)
       if (state[k] != S_HELD && sc_still(&p, k)) degenerate = 1;
     if (degenerate) {
       dep = sc_min_norm_face(&p, Z, rest);
-      kkt(&p, res, 0);
       moved = 1;
     }
     /* a contact that the minimum-norm choice brought to zero force may open instead, which
      * frees the dependent forces further: tried one at a time, kept where the KKT conditions
-     * still hold */
+     * still hold (each try's pass takes w of its own lam) */
     for (k = 0; k < nb && dep == 1; ++k) {
-      double keep_lam[512], keep_w[512], keep_res[3] = {res[0], res[1], res[2]};
+      double keep_lam[512];
       sc_int keep_state = state[k], d2;
       int solved = 0; /* (to rounding: no early stop) */
       if (kind[k] != K_UNILATERAL || state[k] != S_HELD || lam[start[k]] > 1e-12 * p.fscale)
         continue;
       memcpy(keep_lam, lam, sizeof(double) * (size_t)m);
-      memcpy(keep_w, w, sizeof(double) * (size_t)m);
       state[k] = S_ZERO;
       d2 = sc_polish(&p, rest, iw2, 0, &solved);
       if (d2 >= 0 && !kkt(&p, res, 0) && res[0] <= TOL_ACCEPT && res[1] <= TOL_ACCEPT &&
           res[2] <= TOL_ACCEPT) {
         dep = sc_min_norm_face(&p, Z, rest);
         defect = d2;
-        kkt(&p, res, 0);
         if (d2 == 0) break;
       } else {
         state[k] = keep_state;
         memcpy(lam, keep_lam, sizeof(double) * (size_t)m);
-        memcpy(w, keep_w, sizeof(double) * (size_t)m);
-        res[0] = keep_res[0];
-        res[1] = keep_res[1];
-        res[2] = keep_res[2];
       }
     }
     for (k = 0; k < nb; ++k) /* a contact's force below zero by rounding: zero */
