@@ -110,6 +110,28 @@ static double breach(const sc_problem *p, sc_int k, const double *l, const doubl
   }
 }
 
+/* Every block's breach (above) at the iterate lam (m; the held forces taken at the sliding
+ * forces' change D from it), ws its sliding rows' w: into bp, after stop is set where one
+ * exceeds EARLY_TOL and EARLY_MARGIN times its change from bp's (cmp: bp holds the last
+ * iterate's). lam is overwritten (the held forces). Returns stop. */
+static int breaches(const sc_problem *p, sc_int h, sc_int rank, sc_int n2, const double *A,
+                    const sc_int *ph, const sc_int *hr, const double *V, const double *d0,
+                    const double *D, const double *ws, double *z, double *lam, double *bp,
+                    int cmp) {
+  sc_int k, s = 0;
+  int stop = 0;
+  if (h > 0) held_forces(h, rank, n2, A, ph, hr, V, d0, D, z, lam);
+  for (k = 0; k < p->nb; ++k) {
+    double e;
+    if (p->state[k] == S_ZERO) continue;
+    e = breach(p, k, lam + p->start[k], /* (ws: the sliding 2-D blocks' in sl's order) */
+               p->state[k] == S_SLIDE && p->kind[k] >= K_DISC ? ws + 2 * s++ : NULL);
+    if (cmp && e > EARLY_TOL && e > EARLY_MARGIN * fabs(e - bp[k])) stop = 1;
+    bp[k] = e;
+  }
+  return stop;
+}
+
 /* The angles' Newton matrix J (ns x ns, its lower triangle by rows) = L D L^T without
  * pivoting (linalg.h's sc_ldl_factor: one division per pivot, none in the solve; L in Jc, d and
  * 1/d in dd) where every pivot is above ANGLE_TOL of J's largest diagonal entry: 1, else 0
@@ -141,7 +163,7 @@ static sc_int piece(sc_problem *p, double rc, double *work, sc_int *iwork, doubl
   sc_int *hr = iwork, *sl = hr + m, *ph = sl + nb, *pj = ph + m, *sr = pj + nb;
   sc_int h = 0, ns = 0, n2, k, i, s, t, a, c, it, rank = 0, rj = 0;
   double *X, *S, *J, *d0, *sc, *sc2, *th, *th0, *T, *F, *dx, *l0, *D, *wt, *ws, *W, *Jc, *bp,
-         fn = 0.0, v = 0.0, fprev = INFINITY;
+         *pl, *pD, *pws, fn = 0.0, v = 0.0, fprev = INFINITY;
   int full = 0, known = 0, stop = 0;
   for (k = 0; k < nb; ++k) {
     sc_int r = p->start[k], nk = sc_block_size(p->kind[k]);
@@ -179,6 +201,9 @@ static sc_int piece(sc_problem *p, double rc, double *work, sc_int *iwork, doubl
   W = ws + n2; /* h x n2 */
   Jc = W + h * n2;
   bp = Jc + ns * ns;
+  pl = bp + nb; /* the early rule's last iterate: lam, D, ws */
+  pD = pl + m;
+  pws = pD + n2;
   for (s = 0; s < ns; ++s) {
     double *l = p->lam + p->start[sl[s]];
     const double e0 = l[0], e1 = l[1];
@@ -255,18 +280,18 @@ static sc_int piece(sc_problem *p, double rc, double *work, sc_int *iwork, doubl
     }
     if (it > 0 && fn <= 1e-15 * p->wscale) break; /* (the first step always: its rank) */
     if (*early && it > 0 && full && fn < EARLY_RATE * fprev) { /* a pass that will switch */
-      double *lt = sc;
-      memcpy(lt, p->lam, sizeof(double) * (size_t)m);
-      if (h > 0) held_forces(h, rank, n2, work, ph, hr, W, d0, D, sc2, lt);
-      for (k = s = 0; k < nb; ++k) {
-        double e;
-        if (p->state[k] == S_ZERO) continue;
-        e = breach(p, k, lt + p->start[k], /* (ws: the sliding 2-D blocks' in sl's order) */
-                   p->state[k] == S_SLIDE && p->kind[k] >= K_DISC ? ws + 2 * s++ : NULL);
-        if (known && e > EARLY_TOL && e > EARLY_MARGIN * fabs(e - bp[k])) stop = 1;
-        bp[k] = e;
+      if (!known) { /* the first iterate of a run kept; its breaches taken only if the next
+        iterate is checked too (often it is not) */
+        memcpy(pl, p->lam, sizeof(double) * (size_t)m);
+        memcpy(pD, D, sizeof(double) * (size_t)n2);
+        memcpy(pws, ws, sizeof(double) * (size_t)n2);
+        known = 2;
+      } else {
+        if (known == 2) breaches(p, h, rank, n2, work, ph, hr, W, d0, pD, pws, sc2, pl, bp, 0);
+        memcpy(sc, p->lam, sizeof(double) * (size_t)m);
+        stop = breaches(p, h, rank, n2, work, ph, hr, W, d0, D, ws, sc2, sc, bp, 1);
+        known = 1;
       }
-      known = 1;
       if (stop) break;
     } else
       known = 0;
