@@ -163,7 +163,7 @@ static sc_int piece(sc_problem *p, double rc, double *work, sc_int *iwork, doubl
   sc_int *hr = iwork, *sl = hr + m, *ph = sl + nb, *pj = ph + m, *sr = pj + nb;
   sc_int h = 0, ns = 0, n2, k, i, s, t, a, c, it, rank = 0, rj = 0;
   double *X, *S, *J, *d0, *sc, *sc2, *th, *th0, *T, *F, *dx, *l0, *D, *wt, *ws, *W, *Jc, *bp,
-         *pl, *pD, *pws, fn = 0.0, v = 0.0, fprev = INFINITY;
+         *pl, *pD, *pws, *U, fn = 0.0, v = 0.0, fprev = INFINITY;
   int full = 0, known = 0, stop = 0;
   for (k = 0; k < nb; ++k) {
     sc_int r = p->start[k], nk = sc_block_size(p->kind[k]);
@@ -204,6 +204,7 @@ static sc_int piece(sc_problem *p, double rc, double *work, sc_int *iwork, doubl
   pl = bp + nb; /* the early rule's last iterate: lam, D, ws */
   pD = pl + m;
   pws = pD + n2;
+  U = pws + n2; /* G_HS, h x n2 */
   for (s = 0; s < ns; ++s) {
     double *l = p->lam + p->start[sl[s]];
     const double e0 = l[0], e1 = l[1];
@@ -230,10 +231,14 @@ static sc_int piece(sc_problem *p, double rc, double *work, sc_int *iwork, doubl
   }
   /* S = G_SS - G_SH G_HH^+ G_HS = G_SS - Y^T D^-1 Y with Y = L^-1 (P^T G_HS) on the kept rows
    * (G_HH = P L D L^T P^T), its upper triangle then mirrored: exactly symmetric */
+  for (i = 0; i < h && n2 > 0; ++i) { /* G_HS gathered once (hr's order; G symmetric) */
+    const double *gi = G + hr[i] * m;
+    double *restrict ui = U + i * n2;
+    for (c = 0; c < n2; c += 2) ui[c] = gi[sr[c]], ui[c + 1] = gi[sr[c] + 1];
+  }
   for (i = 0; i < rank && n2 > 0; ++i) {
-    const double *gi = G + hr[ph[i]] * m;
     double *restrict yi = X + i * n2, *restrict vi = W + i * n2;
-    for (c = 0; c < n2; ++c) yi[c] = gi[sr[c]];
+    memcpy(yi, U + ph[i] * n2, sizeof(double) * (size_t)n2);
     for (k = 0; k + 3 < i; k += 4) { /* (four rows at a time) */
       const double *li = work + i * h + k, *restrict y0 = X + k * n2, *restrict y1 = y0 + n2,
                    *restrict y2 = y1 + n2, *restrict y3 = y2 + n2;
@@ -249,10 +254,12 @@ static sc_int piece(sc_problem *p, double rc, double *work, sc_int *iwork, doubl
   for (a = 0; a < n2; ++a) {
     const double *ga = G + sr[a] * m;
     double *restrict sa = S + a * n2;
-    double wa = p->w[sr[a]]; /* wt = w_S + G_SH d0 */
+    wt[a] = p->w[sr[a]]; /* wt = w_S + G_SH d0 (below) */
     for (c = a; c < n2; ++c) sa[c] = ga[sr[c]];
-    for (i = 0; i < h; ++i) wa += ga[hr[i]] * d0[i];
-    wt[a] = wa;
+  }
+  for (i = 0; i < h && n2 > 0; ++i) { /* (each wt[a]'s terms in hr's order, as one sum) */
+    const double di = d0[i], *restrict ui = U + i * n2;
+    for (a = 0; a < n2; ++a) wt[a] += ui[a] * di;
   }
   for (a = 0; a < n2; ++a) {
     double *restrict sa = S + a * n2;
