@@ -163,7 +163,7 @@ static sc_int piece(sc_problem *p, double rc, double *work, sc_int *iwork, doubl
   sc_int *hr = iwork, *sl = hr + m, *ph = sl + nb, *pj = ph + m, *sr = pj + nb;
   sc_int h = 0, ns = 0, n2, k, i, s, t, a, c, it, rank = 0, rj = 0;
   double *X, *S, *J, *d0, *sc, *sc2, *th, *th0, *T, *F, *dx, *l0, *D, *wt, *ws, *W, *Jc, *bp,
-         *pl, *pD, *pws, *U, fn = 0.0, v = 0.0, fprev = INFINITY;
+         *pl, *pD, *pws, *rad, *U, fn = 0.0, v = 0.0, fprev = INFINITY;
   int full = 0, known = 0, stop = 0;
   for (k = 0; k < nb; ++k) {
     sc_int r = p->start[k], nk = sc_block_size(p->kind[k]);
@@ -204,7 +204,8 @@ static sc_int piece(sc_problem *p, double rc, double *work, sc_int *iwork, doubl
   pl = bp + nb; /* the early rule's last iterate: lam, D, ws */
   pD = pl + m;
   pws = pD + n2;
-  U = pws + n2; /* G_HS, h x n2 */
+  rad = pws + n2;
+  U = rad + ns; /* G_HS, h x n2 */
   for (s = 0; s < ns; ++s) {
     double *l = p->lam + p->start[sl[s]];
     const double e0 = l[0], e1 = l[1];
@@ -219,6 +220,8 @@ static sc_int piece(sc_problem *p, double rc, double *work, sc_int *iwork, doubl
     l0[2 * s] = l[0];
     l0[2 * s + 1] = l[1];
     D[2 * s] = D[2 * s + 1] = 0.0;
+    k = sl[s]; /* (the set's size: an angle's step in force) */
+    rad[s] = p->par[3 * k] + (p->kind[k] == K_SPLIT ? p->par[3 * k + 1] : 0.0);
   }
   for (c = 0; c < n2; ++c) sr[c] = p->start[sl[c / 2]] + c % 2;
   if (!kept) sc_update_w(p);
@@ -255,12 +258,15 @@ static sc_int piece(sc_problem *p, double rc, double *work, sc_int *iwork, doubl
     const double *ga = G + sr[a] * m;
     double *restrict sa = S + a * n2;
     wt[a] = p->w[sr[a]]; /* wt = w_S + G_SH d0 (below) */
-    for (c = a; c < n2; ++c) sa[c] = ga[sr[c]];
+    if (a & 1) sa[a] = ga[sr[a]];
+    for (c = (a + 1) & ~(sc_int)1; c < n2; c += 2) sa[c] = ga[sr[c]], sa[c + 1] = ga[sr[c] + 1];
   }
   for (i = 0; i < h && n2 > 0; ++i) { /* (each wt[a]'s terms in hr's order, as one sum) */
     const double di = d0[i], *restrict ui = U + i * n2;
-    for (a = 0; a < n2; ++a) wt[a] += ui[a] * di;
+    double *restrict wa = wt;
+    for (a = 0; a < n2; ++a) wa[a] += ui[a] * di;
   }
+  memcpy(ws, wt, sizeof(double) * (size_t)n2); /* (the reduced dual's gradient at D = 0) */
   for (a = 0; a < n2; ++a) {
     double *restrict sa = S + a * n2;
     for (i = 0; i + 3 < rank; i += 4) { /* (four rows of Y at a time) */
@@ -277,7 +283,7 @@ static sc_int piece(sc_problem *p, double rc, double *work, sc_int *iwork, doubl
   for (a = 0; a < n2; ++a)
     for (c = 0; c < a; ++c) S[a * n2 + c] = S[c * n2 + a];
   for (it = 0; it < 40 && ns > 0; ++it) { /* Newton on the angles */
-    double v0 = it ? v : reduced(n2, S, wt, D, ws), tstep = 1.0, step = 0.0;
+    double v0 = v, tstep = 1.0, step = 0.0; /* (at it 0: D = 0, ws = wt, v = 0) */
     sc_int ls;
     fn = 0.0;
     for (s = 0; s < ns; ++s) {
@@ -339,11 +345,7 @@ static sc_int piece(sc_problem *p, double rc, double *work, sc_int *iwork, doubl
       if (v <= v0 + 1e-14 * (fabs(v0) + p->fscale * p->wscale)) break;
     }
     full = ls == 0;
-    for (s = 0; s < ns; ++s) {
-      k = sl[s];
-      step = sc_max(step, fabs(tstep * dx[s]) *
-                            (p->par[3 * k] + (p->kind[k] == K_SPLIT ? p->par[3 * k + 1] : 0.0)));
-    }
+    for (s = 0; s < ns; ++s) step = sc_max(step, fabs(tstep * dx[s]) * rad[s]);
     if (!(step > 1e-15 * p->fscale)) break;
   }
   if (h > 0) held_forces(h, rank, n2, work, ph, hr, W, d0, D, sc2, p->lam);
