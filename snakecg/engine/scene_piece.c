@@ -348,7 +348,10 @@ static sc_int piece(sc_problem *p, double rc, double *work, sc_int *iwork, doubl
     for (s = 0; s < ns; ++s) step = sc_max(step, fabs(tstep * dx[s]) * rad[s]);
     if (!(step > 1e-15 * p->fscale)) break;
   }
-  if (h > 0) held_forces(h, rank, n2, work, ph, hr, W, d0, D, sc2, p->lam);
+  if (stop) /* (the held forces at this iterate: the early rule's, in sc) */
+    for (i = 0; i < h; ++i) p->lam[hr[i]] = sc[hr[i]];
+  else if (h > 0)
+    held_forces(h, rank, n2, work, ph, hr, W, d0, D, sc2, p->lam);
   sc_update_w(p);
   fn = 0.0;
   for (i = 0; i < h; ++i) fn = sc_max(fn, fabs(p->w[hr[i]]));
