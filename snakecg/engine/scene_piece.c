@@ -329,7 +329,11 @@ static sc_int piece(sc_problem *p, double rc, double *work, sc_int *iwork, doubl
       rj = ns;
     } else
       rj = sc_psd_solve(ns, J, ns, F, rc, dx, sc2, pj);
-    for (s = 0; s < n2; ++s) th0[s] = th[s];
+    { /* (th0: the directions at the iterate; th, every entry written in each trial) */
+      double *tw = th0;
+      th0 = th;
+      th = tw;
+    }
     for (ls = 0; ls < 40; ++ls, tstep *= 0.5) { /* the step, halved while the dual rises */
       for (s = 0; s < ns; ++s) {
         double *l = p->lam + p->start[sl[s]];
