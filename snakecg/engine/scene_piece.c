@@ -44,6 +44,52 @@
 /* w = G lam + b */
 SC_INTERNAL void sc_update_w(sc_problem *p) { sc_matvec_plus(p->m, p->G, p->lam, p->b, p->w); }
 
+/* A piece's sliding rows come in pairs (n2 = 2 ns is even): the loops over them below go two
+ * at a time, as two-lane vectors where the compiler has them (no remainder, no alignment or
+ * alias checks: the same operations on the same numbers as one at a time).
+ * x[c] += (a0 u0[c] + a1 u1[c]) + (a2 u2[c] + a3 u3[c]) (sg 1) or -= (sg -1), c in [c0, n). */
+#if defined(__GNUC__)
+typedef double __attribute__((vector_size(16), aligned(8), may_alias)) sc_p2;
+#define SC_P2(x) (*(sc_p2 *)(x))
+#define SC_P2C(x) (*(const sc_p2 *)(x))
+#endif
+static inline void pairs4(double *restrict x, const double *restrict u0,
+                          const double *restrict u1, const double *restrict u2,
+                          const double *restrict u3, double a0, double a1, double a2, double a3,
+                          sc_int c0, sc_int n, int sg) {
+  sc_int c;
+#if defined(__GNUC__)
+  if (sg > 0)
+    for (c = c0; c < n; c += 2)
+      SC_P2(x + c) += (a0 * SC_P2C(u0 + c) + a1 * SC_P2C(u1 + c)) +
+                      (a2 * SC_P2C(u2 + c) + a3 * SC_P2C(u3 + c));
+  else
+    for (c = c0; c < n; c += 2)
+      SC_P2(x + c) -= (a0 * SC_P2C(u0 + c) + a1 * SC_P2C(u1 + c)) +
+                      (a2 * SC_P2C(u2 + c) + a3 * SC_P2C(u3 + c));
+#else
+  for (c = c0; c < n; ++c)
+    if (sg > 0) x[c] += (a0 * u0[c] + a1 * u1[c]) + (a2 * u2[c] + a3 * u3[c]);
+    else x[c] -= (a0 * u0[c] + a1 * u1[c]) + (a2 * u2[c] + a3 * u3[c]);
+#endif
+}
+
+/* x[c] += a u[c] (sg 1) or -= (sg -1), c in [c0, n), by pairs as pairs4 */
+static inline void pairs1(double *restrict x, const double *restrict u, double a, sc_int c0,
+                          sc_int n, int sg) {
+  sc_int c;
+#if defined(__GNUC__)
+  if (sg > 0)
+    for (c = c0; c < n; c += 2) SC_P2(x + c) += a * SC_P2C(u + c);
+  else
+    for (c = c0; c < n; c += 2) SC_P2(x + c) -= a * SC_P2C(u + c);
+#else
+  for (c = c0; c < n; ++c)
+    if (sg > 0) x[c] += a * u[c];
+    else x[c] -= a * u[c];
+#endif
+}
+
 /* The reduced dual 1/2 D^T S D + wt^T D at D = lam_S - lam_S0 (ws = wt + S D, computed). */
 static double reduced(sc_int n2, const double *S, const double *wt, const double *D,
                       double *restrict ws) {
@@ -53,12 +99,9 @@ static double reduced(sc_int n2, const double *S, const double *wt, const double
   for (c = 0; c + 3 < n2; c += 4) { /* S symmetric: column c is row c (four at a time) */
     const double *restrict s0 = S + c * n2, *restrict s1 = s0 + n2, *restrict s2 = s1 + n2,
                  *restrict s3 = s2 + n2, d0 = D[c], d1 = D[c + 1], d2 = D[c + 2], d3 = D[c + 3];
-    for (a = 0; a < n2; ++a) ws[a] += (s0[a] * d0 + s1[a] * d1) + (s2[a] * d2 + s3[a] * d3);
+    pairs4(ws, s0, s1, s2, s3, d0, d1, d2, d3, 0, n2, 1);
   }
-  for (; c < n2; ++c) {
-    const double *restrict sc = S + c * n2;
-    for (a = 0; a < n2; ++a) ws[a] += sc[a] * D[c];
-  }
+  for (; c < n2; ++c) pairs1(ws, S + c * n2, D[c], 0, n2, 1);
   for (a = 0; a < n2; ++a) v += 0.5 * D[a] * (wt[a] + ws[a]);
   return v;
 }
@@ -245,21 +288,18 @@ static sc_int piece(sc_problem *p, double rc, double *work, sc_int *iwork, doubl
     for (k = 0; k + 3 < i; k += 4) { /* (four rows at a time) */
       const double *li = work + i * h + k, *restrict y0 = X + k * n2, *restrict y1 = y0 + n2,
                    *restrict y2 = y1 + n2, *restrict y3 = y2 + n2;
-      for (c = 0; c < n2; ++c)
-        yi[c] -= (li[0] * y0[c] + li[1] * y1[c]) + (li[2] * y2[c] + li[3] * y3[c]);
+      pairs4(yi, y0, y1, y2, y3, li[0], li[1], li[2], li[3], 0, n2, -1);
     }
-    for (; k < i; ++k) {
-      const double l = work[i * h + k], *restrict yk = X + k * n2;
-      for (c = 0; c < n2; ++c) yi[c] -= l * yk[c];
-    }
+    for (; k < i; ++k) pairs1(yi, X + k * n2, work[i * h + k], 0, n2, -1);
     for (c = 0; c < n2; ++c) vi[c] = yi[c] * (1.0 / work[i * h + i]); /* (one division) */
   }
   for (a = 0; a < n2; ++a) {
     const double *ga = G + sr[a] * m;
     double *restrict sa = S + a * n2;
     wt[a] = p->w[sr[a]]; /* wt = w_S + G_SH d0 (below) */
-    if (a & 1) sa[a] = ga[sr[a]];
-    for (c = (a + 1) & ~(sc_int)1; c < n2; c += 2) sa[c] = ga[sr[c]], sa[c + 1] = ga[sr[c] + 1];
+    for (c = a & ~(sc_int)1; c < n2; c += 2) /* (from a's pair: the lower entry, mirrored
+      over below, updated alike) */
+      sa[c] = ga[sr[c]], sa[c + 1] = ga[sr[c] + 1];
   }
   for (i = 0; i < h && n2 > 0; ++i) { /* (each wt[a]'s terms in hr's order, as one sum) */
     const double di = d0[i], *restrict ui = U + i * n2;
@@ -273,12 +313,9 @@ static sc_int piece(sc_problem *p, double rc, double *work, sc_int *iwork, doubl
       const double *y = X + i * n2 + a, *restrict v0 = W + i * n2, *restrict v1 = v0 + n2,
                    *restrict v2 = v1 + n2, *restrict v3 = v2 + n2;
       const double y0 = y[0], y1 = y[n2], y2 = y[2 * n2], y3 = y[3 * n2];
-      for (c = a; c < n2; ++c) sa[c] -= (y0 * v0[c] + y1 * v1[c]) + (y2 * v2[c] + y3 * v3[c]);
+      pairs4(sa, v0, v1, v2, v3, y0, y1, y2, y3, a & ~(sc_int)1, n2, -1);
     }
-    for (; i < rank; ++i) {
-      const double y = X[i * n2 + a], *restrict vi = W + i * n2;
-      for (c = a; c < n2; ++c) sa[c] -= y * vi[c];
-    }
+    for (; i < rank; ++i) pairs1(sa, W + i * n2, X[i * n2 + a], a & ~(sc_int)1, n2, -1);
   }
   for (a = 0; a < n2; ++a)
     for (c = 0; c < a; ++c) S[a * n2 + c] = S[c * n2 + a];
