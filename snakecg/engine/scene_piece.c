@@ -114,8 +114,18 @@ static void held_forces(sc_int h, sc_int rank, sc_int n2, const double *A, const
   sc_int i, k, c;
   for (i = 0; i < h; ++i) lam[hr[i]] += d0[i];
   if (n2 == 0) return;
-  for (i = 0; i < rank; ++i) { /* (four partial sums) */
+  for (i = 0; i < rank; ++i) { /* (four partial sums; with vectors, (s0, s1) and (s2, s3)) */
     const double *restrict vi = V + i * n2;
+#if defined(__GNUC__)
+    sc_p2 s01 = {0.0, 0.0}, s23 = {0.0, 0.0};
+    double s0;
+    for (c = 0; c + 3 < n2; c += 4) {
+      s01 += SC_P2C(vi + c) * SC_P2C(D + c);
+      s23 += SC_P2C(vi + c + 2) * SC_P2C(D + c + 2);
+    }
+    for (s0 = s01[0]; c < n2; ++c) s0 += vi[c] * D[c];
+    z[i] = (s0 + s01[1]) + (s23[0] + s23[1]);
+#else
     double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;
     for (c = 0; c + 3 < n2; c += 4) {
       s0 += vi[c] * D[c], s1 += vi[c + 1] * D[c + 1];
@@ -123,6 +133,7 @@ static void held_forces(sc_int h, sc_int rank, sc_int n2, const double *A, const
     }
     for (; c < n2; ++c) s0 += vi[c] * D[c];
     z[i] = (s0 + s1) + (s2 + s3);
+#endif
   }
   for (k = rank - 1; k > 0; --k) { /* L^T x = z by L's rows (contiguous) */
     const double *restrict ak = A + k * h, zk = z[k];
@@ -291,7 +302,14 @@ static sc_int piece(sc_problem *p, double rc, double *work, sc_int *iwork, doubl
       pairs4(yi, y0, y1, y2, y3, li[0], li[1], li[2], li[3], 0, n2, -1);
     }
     for (; k < i; ++k) pairs1(yi, X + k * n2, work[i * h + k], 0, n2, -1);
-    for (c = 0; c < n2; ++c) vi[c] = yi[c] * (1.0 / work[i * h + i]); /* (one division) */
+    { /* (one division) */
+      const double r = 1.0 / work[i * h + i];
+#if defined(__GNUC__)
+      for (c = 0; c < n2; c += 2) SC_P2(vi + c) = SC_P2C(yi + c) * r;
+#else
+      for (c = 0; c < n2; ++c) vi[c] = yi[c] * r;
+#endif
+    }
   }
   for (a = 0; a < n2; ++a) {
     const double *ga = G + sr[a] * m;
@@ -301,11 +319,8 @@ static sc_int piece(sc_problem *p, double rc, double *work, sc_int *iwork, doubl
       over below, updated alike) */
       sa[c] = ga[sr[c]], sa[c + 1] = ga[sr[c] + 1];
   }
-  for (i = 0; i < h && n2 > 0; ++i) { /* (each wt[a]'s terms in hr's order, as one sum) */
-    const double di = d0[i], *restrict ui = U + i * n2;
-    double *restrict wa = wt;
-    for (a = 0; a < n2; ++a) wa[a] += ui[a] * di;
-  }
+  for (i = 0; i < h && n2 > 0; ++i) /* (each wt[a]'s terms in hr's order, as one sum) */
+    pairs1(wt, U + i * n2, d0[i], 0, n2, 1);
   memcpy(ws, wt, sizeof(double) * (size_t)n2); /* (the reduced dual's gradient at D = 0) */
   for (a = 0; a < n2; ++a) {
     double *restrict sa = S + a * n2;
