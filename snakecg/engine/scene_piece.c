@@ -291,7 +291,7 @@ static sc_int piece(sc_problem *p, double rc, double *work, sc_int *iwork, doubl
   for (i = 0; i < h && n2 > 0; ++i) { /* G_HS gathered once (hr's order; G symmetric) */
     const double *gi = G + hr[i] * m;
     double *restrict ui = U + i * n2;
-    for (c = 0; c < n2; c += 2) ui[c] = gi[sr[c]], ui[c + 1] = gi[sr[c] + 1];
+    for (c = 0; c < n2; c += 2) memcpy(ui + c, gi + sr[c], 2 * sizeof(double)); /* (a pair) */
   }
   for (i = 0; i < rank && n2 > 0; ++i) {
     double *restrict yi = X + i * n2, *restrict vi = W + i * n2;
@@ -317,7 +317,7 @@ static sc_int piece(sc_problem *p, double rc, double *work, sc_int *iwork, doubl
     wt[a] = p->w[sr[a]]; /* wt = w_S + G_SH d0 (below) */
     for (c = a & ~(sc_int)1; c < n2; c += 2) /* (from a's pair: the lower entry, mirrored
       over below, updated alike) */
-      sa[c] = ga[sr[c]], sa[c + 1] = ga[sr[c] + 1];
+      memcpy(sa + c, ga + sr[c], 2 * sizeof(double));
   }
   for (i = 0; i < h && n2 > 0; ++i) /* (each wt[a]'s terms in hr's order, as one sum) */
     pairs1(wt, U + i * n2, d0[i], 0, n2, 1);
@@ -332,8 +332,14 @@ static sc_int piece(sc_problem *p, double rc, double *work, sc_int *iwork, doubl
     }
     for (; i < rank; ++i) pairs1(sa, W + i * n2, X[i * n2 + a], a & ~(sc_int)1, n2, -1);
   }
-  for (a = 0; a < n2; ++a)
-    for (c = 0; c < a; ++c) S[a * n2 + c] = S[c * n2 + a];
+  for (a = 0; a < n2; a += 2) { /* (by 2 x 2 blocks) */
+    double *restrict r0 = S + a * n2, *restrict r1 = r0 + n2;
+    for (c = 0; c < a; c += 2) {
+      const double *q0 = S + c * n2 + a, *q1 = q0 + n2;
+      r0[c] = q0[0], r0[c + 1] = q1[0], r1[c] = q0[1], r1[c + 1] = q1[1];
+    }
+    r1[a] = r0[a + 1];
+  }
   for (it = 0; it < 40 && ns > 0; ++it) { /* Newton on the angles */
     double v0 = v, tstep = 1.0, step = 0.0; /* (at it 0: D = 0, ws = wt, v = 0) */
     sc_int ls;
