@@ -369,11 +369,21 @@ static sc_int piece(sc_problem *p, double rc, double *work, sc_int *iwork, doubl
     fprev = fn;
     for (s = 0; s < ns; ++s) {
       const double *Ts = T + 2 * s;
+#if defined(__GNUC__)
+      const sc_p2 ts = SC_P2C(Ts);
+      for (t = 0; t <= s; ++t) { /* (the same products and sums, by pairs) */
+        const double *r0 = S + 2 * s * n2 + 2 * t;
+        const sc_p2 tt = SC_P2C(T + 2 * t), e0 = SC_P2C(r0) * tt, e1 = SC_P2C(r0 + n2) * tt,
+                    q = (sc_p2){e0[0], e1[0]} + (sc_p2){e0[1], e1[1]}, g = ts * q;
+        J[s * ns + t] = g[0] + g[1];
+      }
+#else
       for (t = 0; t <= s; ++t) {
         const double *Tt = T + 2 * t, *r0 = S + 2 * s * n2 + 2 * t, *r1 = r0 + n2;
         J[s * ns + t] = Ts[0] * (r0[0] * Tt[0] + r0[1] * Tt[1]) +
                         Ts[1] * (r1[0] * Tt[0] + r1[1] * Tt[1]);
       }
+#endif
       { /* the boundary's curvature: -lam . w, at least 0 */
         const double *l = p->lam + p->start[sl[s]];
         J[s * ns + s] += sc_max(0.0, -(l[0] * ws[2 * s] + l[1] * ws[2 * s + 1]));
