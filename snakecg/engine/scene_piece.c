@@ -44,6 +44,52 @@
 /* w = G lam + b */
 SC_INTERNAL void sc_update_w(sc_problem *p) { sc_matvec_plus(p->m, p->G, p->lam, p->b, p->w); }
 
+/* A piece's sliding rows come in pairs (n2 = 2 ns is even): the loops over them below go two
+ * at a time, as two-lane vectors where the compiler has them (no remainder, no alignment or
+ * alias checks: the same operations on the same numbers as one at a time).
+ * x[c] += (a0 u0[c] + a1 u1[c]) + (a2 u2[c] + a3 u3[c]) (sg 1) or -= (sg -1), c in [c0, n). */
+#if defined(__GNUC__)
+typedef double __attribute__((vector_size(16), aligned(8), may_alias)) sc_p2;
+#define SC_P2(x) (*(sc_p2 *)(x))
+#define SC_P2C(x) (*(const sc_p2 *)(x))
+#endif
+static inline void pairs4(double *restrict x, const double *restrict u0,
+                          const double *restrict u1, const double *restrict u2,
+                          const double *restrict u3, double a0, double a1, double a2, double a3,
+                          sc_int c0, sc_int n, int sg) {
+  sc_int c;
+#if defined(__GNUC__)
+  if (sg > 0)
+    for (c = c0; c < n; c += 2)
+      SC_P2(x + c) += (a0 * SC_P2C(u0 + c) + a1 * SC_P2C(u1 + c)) +
+                      (a2 * SC_P2C(u2 + c) + a3 * SC_P2C(u3 + c));
+  else
+    for (c = c0; c < n; c += 2)
+      SC_P2(x + c) -= (a0 * SC_P2C(u0 + c) + a1 * SC_P2C(u1 + c)) +
+                      (a2 * SC_P2C(u2 + c) + a3 * SC_P2C(u3 + c));
+#else
+  for (c = c0; c < n; ++c)
+    if (sg > 0) x[c] += (a0 * u0[c] + a1 * u1[c]) + (a2 * u2[c] + a3 * u3[c]);
+    else x[c] -= (a0 * u0[c] + a1 * u1[c]) + (a2 * u2[c] + a3 * u3[c]);
+#endif
+}
+
+/* x[c] += a u[c] (sg 1) or -= (sg -1), c in [c0, n), by pairs as pairs4 */
+static inline void pairs1(double *restrict x, const double *restrict u, double a, sc_int c0,
+                          sc_int n, int sg) {
+  sc_int c;
+#if defined(__GNUC__)
+  if (sg > 0)
+    for (c = c0; c < n; c += 2) SC_P2(x + c) += a * SC_P2C(u + c);
+  else
+    for (c = c0; c < n; c += 2) SC_P2(x + c) -= a * SC_P2C(u + c);
+#else
+  for (c = c0; c < n; ++c)
+    if (sg > 0) x[c] += a * u[c];
+    else x[c] -= a * u[c];
+#endif
+}
+
 /* The reduced dual 1/2 D^T S D + wt^T D at D = lam_S - lam_S0 (ws = wt + S D, computed). */
 static double reduced(sc_int n2, const double *S, const double *wt, const double *D,
                       double *restrict ws) {
@@ -53,12 +99,9 @@ static double reduced(sc_int n2, const double *S, const double *wt, const double
   for (c = 0; c + 3 < n2; c += 4) { /* S symmetric: column c is row c (four at a time) */
     const double *restrict s0 = S + c * n2, *restrict s1 = s0 + n2, *restrict s2 = s1 + n2,
                  *restrict s3 = s2 + n2, d0 = D[c], d1 = D[c + 1], d2 = D[c + 2], d3 = D[c + 3];
-    for (a = 0; a < n2; ++a) ws[a] += (s0[a] * d0 + s1[a] * d1) + (s2[a] * d2 + s3[a] * d3);
+    pairs4(ws, s0, s1, s2, s3, d0, d1, d2, d3, 0, n2, 1);
   }
-  for (; c < n2; ++c) {
-    const double *restrict sc = S + c * n2;
-    for (a = 0; a < n2; ++a) ws[a] += sc[a] * D[c];
-  }
+  for (; c < n2; ++c) pairs1(ws, S + c * n2, D[c], 0, n2, 1);
   for (a = 0; a < n2; ++a) v += 0.5 * D[a] * (wt[a] + ws[a]);
   return v;
 }
@@ -71,8 +114,18 @@ static void held_forces(sc_int h, sc_int rank, sc_int n2, const double *A, const
   sc_int i, k, c;
   for (i = 0; i < h; ++i) lam[hr[i]] += d0[i];
   if (n2 == 0) return;
-  for (i = 0; i < rank; ++i) { /* (four partial sums) */
+  for (i = 0; i < rank; ++i) { /* (four partial sums; with vectors, (s0, s1) and (s2, s3)) */
     const double *restrict vi = V + i * n2;
+#if defined(__GNUC__)
+    sc_p2 s01 = {0.0, 0.0}, s23 = {0.0, 0.0};
+    double s0;
+    for (c = 0; c + 3 < n2; c += 4) {
+      s01 += SC_P2C(vi + c) * SC_P2C(D + c);
+      s23 += SC_P2C(vi + c + 2) * SC_P2C(D + c + 2);
+    }
+    for (s0 = s01[0]; c < n2; ++c) s0 += vi[c] * D[c];
+    z[i] = (s0 + s01[1]) + (s23[0] + s23[1]);
+#else
     double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;
     for (c = 0; c + 3 < n2; c += 4) {
       s0 += vi[c] * D[c], s1 += vi[c + 1] * D[c + 1];
@@ -80,6 +133,7 @@ static void held_forces(sc_int h, sc_int rank, sc_int n2, const double *A, const
     }
     for (; c < n2; ++c) s0 += vi[c] * D[c];
     z[i] = (s0 + s1) + (s2 + s3);
+#endif
   }
   for (k = rank - 1; k > 0; --k) { /* L^T x = z by L's rows (contiguous) */
     const double *restrict ak = A + k * h, zk = z[k];
@@ -108,6 +162,28 @@ static double breach(const sc_problem *p, sc_int k, const double *l, const doubl
       return (w[0] * nx + w[1] * ny) / (sqrt(nx * nx + ny * ny) * p->wscale);
     default: return -1.0;
   }
+}
+
+/* Every block's breach (above) at the iterate lam (m; the held forces taken at the sliding
+ * forces' change D from it), ws its sliding rows' w: into bp, after stop is set where one
+ * exceeds EARLY_TOL and EARLY_MARGIN times its change from bp's (cmp: bp holds the last
+ * iterate's). lam is overwritten (the held forces). Returns stop. */
+static int breaches(const sc_problem *p, sc_int h, sc_int rank, sc_int n2, const double *A,
+                    const sc_int *ph, const sc_int *hr, const double *V, const double *d0,
+                    const double *D, const double *ws, double *z, double *lam, double *bp,
+                    int cmp) {
+  sc_int k, s = 0;
+  int stop = 0;
+  if (h > 0) held_forces(h, rank, n2, A, ph, hr, V, d0, D, z, lam);
+  for (k = 0; k < p->nb; ++k) {
+    double e;
+    if (p->state[k] == S_ZERO) continue;
+    e = breach(p, k, lam + p->start[k], /* (ws: the sliding 2-D blocks' in sl's order) */
+               p->state[k] == S_SLIDE && p->kind[k] >= K_DISC ? ws + 2 * s++ : NULL);
+    if (cmp && e > EARLY_TOL && e > EARLY_MARGIN * fabs(e - bp[k])) stop = 1;
+    bp[k] = e;
+  }
+  return stop;
 }
 
 /* The angles' Newton matrix J (ns x ns, its lower triangle by rows) = L D L^T without
@@ -141,7 +217,7 @@ static sc_int piece(sc_problem *p, double rc, double *work, sc_int *iwork, doubl
   sc_int *hr = iwork, *sl = hr + m, *ph = sl + nb, *pj = ph + m, *sr = pj + nb;
   sc_int h = 0, ns = 0, n2, k, i, s, t, a, c, it, rank = 0, rj = 0;
   double *X, *S, *J, *d0, *sc, *sc2, *th, *th0, *T, *F, *dx, *l0, *D, *wt, *ws, *W, *Jc, *bp,
-         fn = 0.0, v = 0.0, fprev = INFINITY;
+         *pl, *pD, *pws, *rad, *U, fn = 0.0, v = 0.0, fprev = INFINITY;
   int full = 0, known = 0, stop = 0;
   for (k = 0; k < nb; ++k) {
     sc_int r = p->start[k], nk = sc_block_size(p->kind[k]);
@@ -179,6 +255,11 @@ static sc_int piece(sc_problem *p, double rc, double *work, sc_int *iwork, doubl
   W = ws + n2; /* h x n2 */
   Jc = W + h * n2;
   bp = Jc + ns * ns;
+  pl = bp + nb; /* the early rule's last iterate: lam, D, ws */
+  pD = pl + m;
+  pws = pD + n2;
+  rad = pws + n2;
+  U = rad + ns; /* G_HS, h x n2 */
   for (s = 0; s < ns; ++s) {
     double *l = p->lam + p->start[sl[s]];
     const double e0 = l[0], e1 = l[1];
@@ -193,6 +274,8 @@ static sc_int piece(sc_problem *p, double rc, double *work, sc_int *iwork, doubl
     l0[2 * s] = l[0];
     l0[2 * s + 1] = l[1];
     D[2 * s] = D[2 * s + 1] = 0.0;
+    k = sl[s]; /* (the set's size: an angle's step in force) */
+    rad[s] = p->par[3 * k] + (p->kind[k] == K_SPLIT ? p->par[3 * k + 1] : 0.0);
   }
   for (c = 0; c < n2; ++c) sr[c] = p->start[sl[c / 2]] + c % 2;
   if (!kept) sc_update_w(p);
@@ -205,47 +288,60 @@ static sc_int piece(sc_problem *p, double rc, double *work, sc_int *iwork, doubl
   }
   /* S = G_SS - G_SH G_HH^+ G_HS = G_SS - Y^T D^-1 Y with Y = L^-1 (P^T G_HS) on the kept rows
    * (G_HH = P L D L^T P^T), its upper triangle then mirrored: exactly symmetric */
+  for (i = 0; i < h && n2 > 0; ++i) { /* G_HS gathered once (hr's order; G symmetric) */
+    const double *gi = G + hr[i] * m;
+    double *restrict ui = U + i * n2;
+    for (c = 0; c < n2; c += 2) memcpy(ui + c, gi + sr[c], 2 * sizeof(double)); /* (a pair) */
+  }
   for (i = 0; i < rank && n2 > 0; ++i) {
-    const double *gi = G + hr[ph[i]] * m;
     double *restrict yi = X + i * n2, *restrict vi = W + i * n2;
-    for (c = 0; c < n2; ++c) yi[c] = gi[sr[c]];
+    memcpy(yi, U + ph[i] * n2, sizeof(double) * (size_t)n2);
     for (k = 0; k + 3 < i; k += 4) { /* (four rows at a time) */
       const double *li = work + i * h + k, *restrict y0 = X + k * n2, *restrict y1 = y0 + n2,
                    *restrict y2 = y1 + n2, *restrict y3 = y2 + n2;
-      for (c = 0; c < n2; ++c)
-        yi[c] -= (li[0] * y0[c] + li[1] * y1[c]) + (li[2] * y2[c] + li[3] * y3[c]);
+      pairs4(yi, y0, y1, y2, y3, li[0], li[1], li[2], li[3], 0, n2, -1);
     }
-    for (; k < i; ++k) {
-      const double l = work[i * h + k], *restrict yk = X + k * n2;
-      for (c = 0; c < n2; ++c) yi[c] -= l * yk[c];
+    for (; k < i; ++k) pairs1(yi, X + k * n2, work[i * h + k], 0, n2, -1);
+    { /* (one division) */
+      const double r = 1.0 / work[i * h + i];
+#if defined(__GNUC__)
+      for (c = 0; c < n2; c += 2) SC_P2(vi + c) = SC_P2C(yi + c) * r;
+#else
+      for (c = 0; c < n2; ++c) vi[c] = yi[c] * r;
+#endif
     }
-    for (c = 0; c < n2; ++c) vi[c] = yi[c] * (1.0 / work[i * h + i]); /* (one division) */
   }
   for (a = 0; a < n2; ++a) {
     const double *ga = G + sr[a] * m;
     double *restrict sa = S + a * n2;
-    double wa = p->w[sr[a]]; /* wt = w_S + G_SH d0 */
-    for (c = a; c < n2; ++c) sa[c] = ga[sr[c]];
-    for (i = 0; i < h; ++i) wa += ga[hr[i]] * d0[i];
-    wt[a] = wa;
+    wt[a] = p->w[sr[a]]; /* wt = w_S + G_SH d0 (below) */
+    for (c = a & ~(sc_int)1; c < n2; c += 2) /* (from a's pair: the lower entry, mirrored
+      over below, updated alike) */
+      memcpy(sa + c, ga + sr[c], 2 * sizeof(double));
   }
+  for (i = 0; i < h && n2 > 0; ++i) /* (each wt[a]'s terms in hr's order, as one sum) */
+    pairs1(wt, U + i * n2, d0[i], 0, n2, 1);
+  memcpy(ws, wt, sizeof(double) * (size_t)n2); /* (the reduced dual's gradient at D = 0) */
   for (a = 0; a < n2; ++a) {
     double *restrict sa = S + a * n2;
     for (i = 0; i + 3 < rank; i += 4) { /* (four rows of Y at a time) */
       const double *y = X + i * n2 + a, *restrict v0 = W + i * n2, *restrict v1 = v0 + n2,
                    *restrict v2 = v1 + n2, *restrict v3 = v2 + n2;
       const double y0 = y[0], y1 = y[n2], y2 = y[2 * n2], y3 = y[3 * n2];
-      for (c = a; c < n2; ++c) sa[c] -= (y0 * v0[c] + y1 * v1[c]) + (y2 * v2[c] + y3 * v3[c]);
+      pairs4(sa, v0, v1, v2, v3, y0, y1, y2, y3, a & ~(sc_int)1, n2, -1);
     }
-    for (; i < rank; ++i) {
-      const double y = X[i * n2 + a], *restrict vi = W + i * n2;
-      for (c = a; c < n2; ++c) sa[c] -= y * vi[c];
-    }
+    for (; i < rank; ++i) pairs1(sa, W + i * n2, X[i * n2 + a], a & ~(sc_int)1, n2, -1);
   }
-  for (a = 0; a < n2; ++a)
-    for (c = 0; c < a; ++c) S[a * n2 + c] = S[c * n2 + a];
+  for (a = 0; a < n2; a += 2) { /* (by 2 x 2 blocks) */
+    double *restrict r0 = S + a * n2, *restrict r1 = r0 + n2;
+    for (c = 0; c < a; c += 2) {
+      const double *q0 = S + c * n2 + a, *q1 = q0 + n2;
+      r0[c] = q0[0], r0[c + 1] = q1[0], r1[c] = q0[1], r1[c + 1] = q1[1];
+    }
+    r1[a] = r0[a + 1];
+  }
   for (it = 0; it < 40 && ns > 0; ++it) { /* Newton on the angles */
-    double v0 = it ? v : reduced(n2, S, wt, D, ws), tstep = 1.0, step = 0.0;
+    double v0 = v, tstep = 1.0, step = 0.0; /* (at it 0: D = 0, ws = wt, v = 0) */
     sc_int ls;
     fn = 0.0;
     for (s = 0; s < ns; ++s) {
@@ -255,29 +351,39 @@ static sc_int piece(sc_problem *p, double rc, double *work, sc_int *iwork, doubl
     }
     if (it > 0 && fn <= 1e-15 * p->wscale) break; /* (the first step always: its rank) */
     if (*early && it > 0 && full && fn < EARLY_RATE * fprev) { /* a pass that will switch */
-      double *lt = sc;
-      memcpy(lt, p->lam, sizeof(double) * (size_t)m);
-      if (h > 0) held_forces(h, rank, n2, work, ph, hr, W, d0, D, sc2, lt);
-      for (k = s = 0; k < nb; ++k) {
-        double e;
-        if (p->state[k] == S_ZERO) continue;
-        e = breach(p, k, lt + p->start[k], /* (ws: the sliding 2-D blocks' in sl's order) */
-                   p->state[k] == S_SLIDE && p->kind[k] >= K_DISC ? ws + 2 * s++ : NULL);
-        if (known && e > EARLY_TOL && e > EARLY_MARGIN * fabs(e - bp[k])) stop = 1;
-        bp[k] = e;
+      if (!known) { /* the first iterate of a run kept; its breaches taken only if the next
+        iterate is checked too (often it is not) */
+        memcpy(pl, p->lam, sizeof(double) * (size_t)m);
+        memcpy(pD, D, sizeof(double) * (size_t)n2);
+        memcpy(pws, ws, sizeof(double) * (size_t)n2);
+        known = 2;
+      } else {
+        if (known == 2) breaches(p, h, rank, n2, work, ph, hr, W, d0, pD, pws, sc2, pl, bp, 0);
+        memcpy(sc, p->lam, sizeof(double) * (size_t)m);
+        stop = breaches(p, h, rank, n2, work, ph, hr, W, d0, D, ws, sc2, sc, bp, 1);
+        known = 1;
       }
-      known = 1;
       if (stop) break;
     } else
       known = 0;
     fprev = fn;
     for (s = 0; s < ns; ++s) {
       const double *Ts = T + 2 * s;
+#if defined(__GNUC__)
+      const sc_p2 ts = SC_P2C(Ts);
+      for (t = 0; t <= s; ++t) { /* (the same products and sums, by pairs) */
+        const double *r0 = S + 2 * s * n2 + 2 * t;
+        const sc_p2 tt = SC_P2C(T + 2 * t), e0 = SC_P2C(r0) * tt, e1 = SC_P2C(r0 + n2) * tt,
+                    q = (sc_p2){e0[0], e1[0]} + (sc_p2){e0[1], e1[1]}, g = ts * q;
+        J[s * ns + t] = g[0] + g[1];
+      }
+#else
       for (t = 0; t <= s; ++t) {
         const double *Tt = T + 2 * t, *r0 = S + 2 * s * n2 + 2 * t, *r1 = r0 + n2;
         J[s * ns + t] = Ts[0] * (r0[0] * Tt[0] + r0[1] * Tt[1]) +
                         Ts[1] * (r1[0] * Tt[0] + r1[1] * Tt[1]);
       }
+#endif
       { /* the boundary's curvature: -lam . w, at least 0 */
         const double *l = p->lam + p->start[sl[s]];
         J[s * ns + s] += sc_max(0.0, -(l[0] * ws[2 * s] + l[1] * ws[2 * s + 1]));
@@ -291,7 +397,11 @@ static sc_int piece(sc_problem *p, double rc, double *work, sc_int *iwork, doubl
       rj = ns;
     } else
       rj = sc_psd_solve(ns, J, ns, F, rc, dx, sc2, pj);
-    for (s = 0; s < n2; ++s) th0[s] = th[s];
+    { /* (th0: the directions at the iterate; th, every entry written in each trial) */
+      double *tw = th0;
+      th0 = th;
+      th = tw;
+    }
     for (ls = 0; ls < 40; ++ls, tstep *= 0.5) { /* the step, halved while the dual rises */
       for (s = 0; s < ns; ++s) {
         double *l = p->lam + p->start[sl[s]];
@@ -307,14 +417,13 @@ static sc_int piece(sc_problem *p, double rc, double *work, sc_int *iwork, doubl
       if (v <= v0 + 1e-14 * (fabs(v0) + p->fscale * p->wscale)) break;
     }
     full = ls == 0;
-    for (s = 0; s < ns; ++s) {
-      k = sl[s];
-      step = sc_max(step, fabs(tstep * dx[s]) *
-                            (p->par[3 * k] + (p->kind[k] == K_SPLIT ? p->par[3 * k + 1] : 0.0)));
-    }
+    for (s = 0; s < ns; ++s) step = sc_max(step, fabs(tstep * dx[s]) * rad[s]);
     if (!(step > 1e-15 * p->fscale)) break;
   }
-  if (h > 0) held_forces(h, rank, n2, work, ph, hr, W, d0, D, sc2, p->lam);
+  if (stop) /* (the held forces at this iterate: the early rule's, in sc) */
+    for (i = 0; i < h; ++i) p->lam[hr[i]] = sc[hr[i]];
+  else if (h > 0)
+    held_forces(h, rank, n2, work, ph, hr, W, d0, D, sc2, p->lam);
   sc_update_w(p);
   fn = 0.0;
   for (i = 0; i < h; ++i) fn = sc_max(fn, fabs(p->w[hr[i]]));
