@@ -20,6 +20,15 @@
 
 /* included by engine.h, after its integer type sc_int */
 
+/* Two doubles as one two-lane vector where the compiler has them (GCC's vector extension:
+ * SSE2 on x86-64), for loops that give each entry the same operations in the same order as
+ * one at a time (so the same bits); plain loops for other compilers. */
+#if defined(__GNUC__)
+typedef double __attribute__((vector_size(16), aligned(8), may_alias)) sc_p2;
+#define SC_P2(x) (*(sc_p2 *)(x))
+#define SC_P2C(x) (*(const sc_p2 *)(x))
+#endif
+
 static inline double sc_dot(const double *a, const double *b, sc_int n) {
   double s = 0.0;
   sc_int i;
@@ -179,7 +188,15 @@ static inline double sc_ldl_factor(sc_int n, const double *A, sc_int lda, const 
     d[j] = s;
     dinv[j] = 1.0 / s; /* one division per pivot */
     if (!(r >= ratio)) ratio = r;
-    for (i = j + 1; i < n; ++i) {
+    i = j + 1;
+#if defined(__GNUC__)
+    for (; i + 1 < n; i += 2) { /* rows i and i + 1 side by side (adjacent in L's columns) */
+      sc_p2 t = {SC_A(i, j), SC_A(i + 1, j)};
+      for (k = 0; k < j; ++k) t -= SC_P2C(L + i + ldl * k) * ld[k];
+      SC_P2(L + i + ldl * j) = t * dinv[j];
+    }
+#endif
+    for (; i < n; ++i) {
       double t = SC_A(i, j);
       for (k = 0; k < j; ++k) t -= L[i + ldl * k] * ld[k];
       L[i + ldl * j] = t * dinv[j];
@@ -193,7 +210,16 @@ static inline double sc_ldl_factor(sc_int n, const double *A, sc_int lda, const 
 static inline void sc_ldl_solve(sc_int n, const double *L, sc_int ldl, const double *dinv,
                                 double *y) {
   sc_int i, k;
-  for (i = 0; i < n; ++i) /* forward, diagonal and back substitution */
+  i = 0; /* forward (rows i and i + 1 side by side, then i + 1's last term), diagonal, back */
+#if defined(__GNUC__)
+  for (; i + 1 < n; i += 2) {
+    sc_p2 t = {y[i], y[i + 1]};
+    for (k = 0; k < i; ++k) t -= SC_P2C(L + i + ldl * k) * y[k];
+    y[i] = t[0];
+    y[i + 1] = t[1] - L[i + 1 + ldl * i] * y[i];
+  }
+#endif
+  for (; i < n; ++i)
     for (k = 0; k < i; ++k) y[i] -= L[i + ldl * k] * y[k];
   for (i = n - 1; i >= 0; --i) {
     y[i] *= dinv[i];
@@ -441,6 +467,9 @@ static inline void sc_svd_least_norm(sc_int n, sc_int m, const double *U, sc_int
  * P^T by diagonal pivoting (the largest pivot first, as LAPACK's dpstrf); rank r = the pivots
  * above rcond times the first. x = the basic solution of A x = b: P [(L D L^T)_11^-1
  * (P^T b)_1; 0] (b overwritten). work holds n doubles, perm n sc_ints. Returns r. */
+#if defined(__GNUC__) /* inlined everywhere: scene_primal.c's FMA copy contracts its products */
+__attribute__((always_inline))
+#endif
 static inline sc_int sc_psd_solve(sc_int n, double *A, sc_int ld, double *b, double rcond,
                                   double *x, double *work, sc_int *perm) {
   sc_int i, j, k, rank = 0;
@@ -467,7 +496,11 @@ static inline sc_int sc_psd_solve(sc_int n, double *A, sc_int ld, double *b, dou
     for (i = k + 1; i < n; ++i) c[i] = A[i * ld + k]; /* column k, then L's */
     for (i = k + 1; i < n; ++i) {
       double l = c[i] / d, *row = A + i * ld;
-      for (j = k + 1; j <= i; ++j) row[j] -= l * c[j];
+      j = k + 1;
+#if defined(__GNUC__)
+      for (; j < i; j += 2) SC_P2(row + j) -= l * SC_P2C(c + j); /* by pairs, a scalar tail */
+#endif
+      for (; j <= i; ++j) row[j] -= l * c[j];
       row[k] = l;
     }
     ++rank;

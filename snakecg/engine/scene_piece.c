@@ -46,13 +46,8 @@ SC_INTERNAL void sc_update_w(sc_problem *p) { sc_matvec_plus(p->m, p->G, p->lam,
 
 /* A piece's sliding rows come in pairs (n2 = 2 ns is even): the loops over them below go two
  * at a time, as two-lane vectors where the compiler has them (no remainder, no alignment or
- * alias checks: the same operations on the same numbers as one at a time).
+ * alias checks: the same operations on the same numbers as one at a time; linalg.h's sc_p2).
  * x[c] += (a0 u0[c] + a1 u1[c]) + (a2 u2[c] + a3 u3[c]) (sg 1) or -= (sg -1), c in [c0, n). */
-#if defined(__GNUC__)
-typedef double __attribute__((vector_size(16), aligned(8), may_alias)) sc_p2;
-#define SC_P2(x) (*(sc_p2 *)(x))
-#define SC_P2C(x) (*(const sc_p2 *)(x))
-#endif
 static inline void pairs4(double *restrict x, const double *restrict u0,
                           const double *restrict u1, const double *restrict u2,
                           const double *restrict u3, double a0, double a1, double a2, double a3,
