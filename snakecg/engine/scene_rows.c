@@ -196,9 +196,12 @@ static sc_int ground_rows(sc_scene_work *sw, sc_int nc) {
     sw->par[3 * bk] = gb[3];
     sw->par[3 * bk + 1] = gb[4];
     sw->par[3 * bk + 2] = gb[5];
-    for (j = type == GB_OBJECT ? 0 : SNAKECG_NS; j < n; ++j) r0[j] = 0.0; /* not set below */
-    for (j = type == GB_OBJECT ? 0 : SNAKECG_NS; type != GB_WHEEL && j < n; ++j) r1[j] = 0.0;
+    for (j = SNAKECG_NS; type != GB_OBJECT && j < n; j += 3) { /* the objects' columns, */
+      r0[j] = r0[j + 1] = r0[j + 2] = 0.0; /* not set below (three at a time: no memset) */
+      if (type != GB_WHEEL) r1[j] = r1[j + 1] = r1[j + 2] = 0.0;
+    }
     if (type == GB_OBJECT) {
+      for (j = 0; j < n; ++j) r0[j] = r1[j] = 0.0;
       r0[SNAKECG_NS + 3 * b] = 1.0;
       r1[SNAKECG_NS + 3 * b + 1] = 1.0;
       r += 2;
@@ -322,18 +325,18 @@ static void scene_sample(sc_scene_work *sw, const double *q, const double *tau,
     if (sw->backoff > 128) sw->backoff = 128;
     sw->cool = j ? 0 : sw->backoff;
   }
-  for (i = 0; i < nb; ++i) { /* the pieces: the next sample's start, the ground's outputs */
+  /* the pieces: the next sample's start; a contact's force and state (its one row: row i) */
+  for (i = 0; i < nc; ++i) {
+    double *s = sw->prev + 3 * i;
+    s[0] = sw->st[i], s[1] = sw->lam[i], s[2] = 0.0;
+    rec[CR_W * i + 11] = s[1], rec[CR_W * i + 12] = s[0];
+  }
+  for (; i < nb; ++i) { /* a ground block's forces and state (a 2-D block: two rows) */
     sc_int r = sw->start[i];
     double *s = sw->prev + 3 * i, *g = rec - 3 * sw->ng + 3 * (i - nc);
-    s[0] = sw->st[i];
-    s[1] = sw->lam[r];
-    s[2] = (i + 1 < nb ? sw->start[i + 1] : m) - r == 2 ? sw->lam[r + 1] : 0.0; /* (2-D) */
-    if (i < nc) { /* a contact's force and state */
-      rec[CR_W * i + 11] = s[1];
-      rec[CR_W * i + 12] = s[0];
-    } else { /* a ground block's forces and state */
-      g[0] = s[1]; g[1] = s[2]; g[2] = s[0];
-    }
+    s[0] = sw->st[i], s[1] = sw->lam[r];
+    s[2] = (i + 1 < nb ? sw->start[i + 1] : m) - r == 2 ? sw->lam[r + 1] : 0.0;
+    g[0] = s[1]; g[1] = s[2]; g[2] = s[0];
   }
   sw->pnb = out[SO_INFO] == 0.0 ? nb : -1, sw->prec = rec; /* the next sample's start */
   if (A) {
