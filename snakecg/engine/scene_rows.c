@@ -34,6 +34,7 @@
 #include "scene_broad.h"
 #include "scene_metrics.h"
 #include "scene_tiny.h"
+#include "scene_inputs.h"
 
 /* the packed scene (SP_*, LINK_W, OBJ_W, OBS_W): engine.h */
 enum { GB_W = 8 };    /* type (GB_*), body, wheel offset, par (3), block kind (K_*) */
@@ -133,51 +134,52 @@ static sc_int body_kind(const sc_scene_work *sw, sc_int b, sc_int *index) {
 /* The contacts' rows of one configuration into sw->A (rows 0..), their records (CR_W each)
  * into recs; returns their count, or -SS_* (overlap: the pair, depth, tolerance in over). */
 static sc_int contact_rows(sc_scene_work *sw, const double *P, double *recs, double *over,
-                           sc_int cap) {
+                           sc_int cap, int zeroed) { /* zeroed: the records' room is */
   const double tol = sw->tol, size = sw->pk[SP_SIZE];
-  const sc_int n = sw->n, nl = SNAKECG_NL, nw = sc_broad_words(sw->nbody);
-  sc_int ia, ib, nc = 0, k, j, w;
+  const sc_int n = sw->n, nl = SNAKECG_NL, nw = sc_broad_words(sw->nbody), na = nl + sw->no;
+  const uint64_t *near = sw->near; /* (locals: the records' stores may alias sw's fields) */
+  sc_int ia, ib, nc = 0, k, j, w, iw;
   uint64_t bits;
   sc_touch t[SC_TOUCH_MAX];
   /* the bodies after ia whose circles are not apart (scene_broad.h), in order */
-  sc_broad_masks(sw->centre, sw->reach, tol, nl + sw->no, nl, sw->nbody, sw->near);
-  for (ia = 0; ia < nl + sw->no; ++ia)
-    for (w = 0; w < nw; ++w)
-      for (bits = sw->near[ia * nw + w]; bits;) {
-        double d;
-        int count;
-        ib = sc_broad_pop(&bits, 64 * w);
-        d = sc_shape_closest(sw->shape + ia, sw->shape + ib, size, tol, tol, t, &count);
-        if (d < -tol) {
-          double *o = over, idx;
-          o[0] = (double)body_kind(sw, ia, &k), o[1] = (double)k;
-          idx = (double)body_kind(sw, ib, &k);
-          o[2] = idx, o[3] = (double)k, o[4] = -d, o[5] = tol;
-          return -SS_OVERLAP;
-        }
-        if (d > tol) continue;
-        for (k = 0; k < count; ++k) {
-          double *Dx = sw->T ? sw->D : 0, *Dy = sw->D + n, *rec;
-          sc_int kk;
-          if (nc >= cap) return -SS_MORE;
-          contact_row(sw, ia, ib, t + k, P, sw->A + nc * n, Dx, Dy);
-          rec = recs + CR_W * nc;
-          memset(rec, 0, sizeof(double) * CR_W);
-          rec[0] = (double)body_kind(sw, ia, &kk), rec[1] = (double)kk;
-          rec[2] = (double)body_kind(sw, ib, &kk), rec[3] = (double)kk;
-          for (j = 0; j < 2; ++j) {
-            rec[4 + j] = t[k].a[j];
-            rec[6 + j] = t[k].b[j];
-            rec[8 + j] = t[k].n[j];
-          }
-          rec[10] = d;
-          sw->kind[nc] = K_UNILATERAL;
-          sw->start[nc] = nc;
-          sw->par[3 * nc] = sw->par[3 * nc + 1] = sw->par[3 * nc + 2] = 0.0;
-          if (sw->T) sc_friction_row(sw->pk, ia, ib, t[k].n, Dx, Dy, n, sw->T + nc * n, rec);
-          ++nc;
-        }
+  sc_broad_masks(sw->centre, sw->reach, tol, na, nl, sw->nbody, sw->near);
+  for (iw = 0; iw < na * nw; ++iw) /* (body ia's words in turn: one loop, most words 0) */
+    for (bits = near[iw]; bits;) {
+      double d;
+      int count;
+      ia = nw == 1 ? iw : iw / nw, w = nw == 1 ? 0 : iw % nw;
+      ib = sc_broad_pop(&bits, 64 * w);
+      d = sc_shape_closest(sw->shape + ia, sw->shape + ib, size, tol, tol, t, &count);
+      if (d < -tol) {
+        double *o = over, idx;
+        o[0] = (double)body_kind(sw, ia, &k), o[1] = (double)k;
+        idx = (double)body_kind(sw, ib, &k);
+        o[2] = idx, o[3] = (double)k, o[4] = -d, o[5] = tol;
+        return -SS_OVERLAP;
       }
+      if (d > tol) continue;
+      for (k = 0; k < count; ++k) {
+        double *Dx = sw->T ? sw->D : 0, *Dy = sw->D + n, *rec;
+        sc_int kk;
+        if (nc >= cap) return -SS_MORE;
+        contact_row(sw, ia, ib, t + k, P, sw->A + nc * n, Dx, Dy);
+        rec = recs + CR_W * nc;
+        if (!zeroed) memset(rec, 0, sizeof(double) * CR_W);
+        rec[0] = (double)body_kind(sw, ia, &kk), rec[1] = (double)kk;
+        rec[2] = (double)body_kind(sw, ib, &kk), rec[3] = (double)kk;
+        for (j = 0; j < 2; ++j) {
+          rec[4 + j] = t[k].a[j];
+          rec[6 + j] = t[k].b[j];
+          rec[8 + j] = t[k].n[j];
+        }
+        rec[10] = d;
+        sw->kind[nc] = K_UNILATERAL;
+        sw->start[nc] = nc;
+        sw->par[3 * nc] = sw->par[3 * nc + 1] = sw->par[3 * nc + 2] = 0.0;
+        if (sw->T) sc_friction_row(sw->pk, ia, ib, t[k].n, Dx, Dy, n, sw->T + nc * n, rec);
+        ++nc;
+      }
+    }
   return nc;
 }
 
@@ -194,9 +196,12 @@ static sc_int ground_rows(sc_scene_work *sw, sc_int nc) {
     sw->par[3 * bk] = gb[3];
     sw->par[3 * bk + 1] = gb[4];
     sw->par[3 * bk + 2] = gb[5];
-    for (j = type == GB_OBJECT ? 0 : SNAKECG_NS; j < n; ++j) r0[j] = 0.0; /* not set below */
-    for (j = type == GB_OBJECT ? 0 : SNAKECG_NS; type != GB_WHEEL && j < n; ++j) r1[j] = 0.0;
+    for (j = SNAKECG_NS; type != GB_OBJECT && j < n; j += 3) { /* the objects' columns, */
+      r0[j] = r0[j + 1] = r0[j + 2] = 0.0; /* not set below (three at a time: no memset) */
+      if (type != GB_WHEEL) r1[j] = r1[j + 1] = r1[j + 2] = 0.0;
+    }
     if (type == GB_OBJECT) {
+      for (j = 0; j < n; ++j) r0[j] = r1[j] = 0.0;
       r0[SNAKECG_NS + 3 * b] = 1.0;
       r1[SNAKECG_NS + 3 * b + 1] = 1.0;
       r += 2;
@@ -277,7 +282,7 @@ static void scene_sample(sc_scene_work *sw, const double *q, const double *tau,
   place(sw, P, 0, 1);
   for (o = 0; o < sw->no; ++o)
     for (j = 0; j < 3; ++j) out[SO_QDD + ns + 4 * sw->no + 3 * o + j] = sw->pose[3 * o + j];
-  nc = contact_rows(sw, P, rec, out + SO_OVERLAP, sw->ccap);
+  nc = contact_rows(sw, P, rec, out + SO_OVERLAP, sw->ccap, 1);
   if (nc < 0) {
     out[SO_INFO] = (double)-nc;
     for (i = SO_NORM_QDD; i <= SO_SR; ++i) out[i] = NAN;
@@ -320,18 +325,18 @@ static void scene_sample(sc_scene_work *sw, const double *q, const double *tau,
     if (sw->backoff > 128) sw->backoff = 128;
     sw->cool = j ? 0 : sw->backoff;
   }
-  for (i = 0; i < nb; ++i) { /* the pieces: the next sample's start, the ground's outputs */
+  /* the pieces: the next sample's start; a contact's force and state (its one row: row i) */
+  for (i = 0; i < nc; ++i) {
+    double *s = sw->prev + 3 * i;
+    s[0] = sw->st[i], s[1] = sw->lam[i], s[2] = 0.0;
+    rec[CR_W * i + 11] = s[1], rec[CR_W * i + 12] = s[0];
+  }
+  for (; i < nb; ++i) { /* a ground block's forces and state (a 2-D block: two rows) */
     sc_int r = sw->start[i];
     double *s = sw->prev + 3 * i, *g = rec - 3 * sw->ng + 3 * (i - nc);
-    s[0] = sw->st[i];
-    s[1] = sw->lam[r];
-    s[2] = (i + 1 < nb ? sw->start[i + 1] : m) - r == 2 ? sw->lam[r + 1] : 0.0; /* (2-D) */
-    if (i < nc) { /* a contact's force and state */
-      rec[CR_W * i + 11] = s[1];
-      rec[CR_W * i + 12] = s[0];
-    } else { /* a ground block's forces and state */
-      g[0] = s[1]; g[1] = s[2]; g[2] = s[0];
-    }
+    s[0] = sw->st[i], s[1] = sw->lam[r];
+    s[2] = (i + 1 < nb ? sw->start[i + 1] : m) - r == 2 ? sw->lam[r + 1] : 0.0;
+    g[0] = s[1]; g[1] = s[2]; g[2] = s[0];
   }
   sw->pnb = out[SO_INFO] == 0.0 ? nb : -1, sw->prec = rec; /* the next sample's start */
   if (A) {
@@ -433,14 +438,9 @@ static int forward(const double *pk, sc_int n, const double *q, sc_int sq, const
   sc_int i, width, mg = (sc_int)pk[SP_MG] + (pk[SP_FRICTION] != 0) * ccap; /* (tangents) */
   if (ccap < 0 || mcap < ccap + mg || mcap > 500 || SNAKECG_NS + 3 * pk[SP_NO] > 512)
     return -2;
-  for (i = 0; i < n; ++i) { /* inputs first: a sample that is not finite refuses the call */
-    sc_int j, no3 = 3 * (sc_int)pk[SP_NO];
-    int ok = 1;
-    for (j = 0; j < SNAKECG_NS; ++j) ok &= isfinite(q[i * sq + j]) != 0;
-    for (j = 0; j < SNAKECG_NA; ++j) ok &= isfinite(tau[i * st + j]) != 0;
-    for (j = 0; j < no3; ++j) ok &= isfinite(fo[i * sf + j]) != 0;
-    if (!ok) return (int)(-3 - (i < 2000000000 ? i : 2000000000));
-  }
+  /* inputs first: a sample that is not finite refuses the call (scene_inputs.c) */
+  if ((i = sc_inputs_bad(n, q, sq, tau, st, fo, sf, 3 * (sc_int)pk[SP_NO])) >= 0)
+    return (int)(-3 - (i < 2000000000 ? i : 2000000000));
   if (keep && *keep) sw = (sc_scene_work *)*keep, sw->pnb = -1; /* (as made below: cold) */
   else if (work_alloc(sw, pk, ccap, mcap, 1)) return -1;
   else if (full_inertia(sw, sw->M), keep) /* the objects' part (M_s: per sample) */
@@ -539,7 +539,7 @@ SC_INTERNAL int sc_scene_state_rows(const double *pk, const double *q, const dou
   if (!code) {
     place(sw, sw->P, qo, M != 0);
     for (i = 0; i < 3 * sw->no; ++i) out[RO_POSE + i] = sw->pose[i];
-    nc = contact_rows(sw, sw->P, out + RO_POSE + 3 * sw->no, out + RO_OVERLAP, sw->ccap);
+    nc = contact_rows(sw, sw->P, out + RO_POSE + 3 * sw->no, out + RO_OVERLAP, sw->ccap, 0);
     code = nc < 0 ? -nc : 0;
   }
   if (!code) {
