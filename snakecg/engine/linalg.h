@@ -188,15 +188,18 @@ static inline double sc_ldl_factor(sc_int n, const double *A, sc_int lda, const 
     d[j] = s;
     dinv[j] = 1.0 / s; /* one division per pivot */
     if (!(r >= ratio)) ratio = r;
-    i = j + 1;
+    for (i = j + 1; i + 1 < n; i += 2) { /* rows i and i + 1 side by side (adjacent in L) */
 #if defined(__GNUC__)
-    for (; i + 1 < n; i += 2) { /* rows i and i + 1 side by side (adjacent in L's columns) */
       sc_p2 t = {SC_A(i, j), SC_A(i + 1, j)};
       for (k = 0; k < j; ++k) t -= SC_P2C(L + i + ldl * k) * ld[k];
       SC_P2(L + i + ldl * j) = t * dinv[j];
-    }
+#else
+      double t0 = SC_A(i, j), t1 = SC_A(i + 1, j);
+      for (k = 0; k < j; ++k) t0 -= L[i + ldl * k] * ld[k], t1 -= L[i + 1 + ldl * k] * ld[k];
+      L[i + ldl * j] = t0 * dinv[j], L[i + 1 + ldl * j] = t1 * dinv[j];
 #endif
-    for (; i < n; ++i) {
+    }
+    if (i < n) { /* the last row alone (a loop here: GCC's aggressive-loop warning at -O2) */
       double t = SC_A(i, j);
       for (k = 0; k < j; ++k) t -= L[i + ldl * k] * ld[k];
       L[i + ldl * j] = t * dinv[j];
@@ -207,6 +210,9 @@ static inline double sc_ldl_factor(sc_int n, const double *A, sc_int lda, const 
 }
 
 /* y := (L D L^T)^-1 y with sc_ldl_factor's factors (a dropped row: dinv 0, a zero column) */
+#if defined(__GNUC__) /* inlined (an out-of-line copy: GCC's -Wmaybe-uninitialized on L, dinv) */
+__attribute__((always_inline))
+#endif
 static inline void sc_ldl_solve(sc_int n, const double *L, sc_int ldl, const double *dinv,
                                 double *y) {
   sc_int i, k;
