@@ -69,7 +69,7 @@ CORE_SOURCES = tuple(ENGINE_DIR / name
                                    "scene_solve.c", "scene_diag.c", "scene_block.c",
                                   "scene_geometry.c", "scene_place.c",
                                   "scene_rows.c", "scene_inputs.c", "scene_broad.c",
-                                  "scene_metrics.c",
+                                  "scene_metrics.c", "scene_work.c",
                                   "scene_step.c", "scene_run.c",
                                   "scene_friction.c", "scene_friction_states.c"))
 #: Its headers: engine.h (the types and prototypes), linalg.h (the small dense linear algebra),

@@ -31,6 +31,7 @@
 #include "snakecg_layout.h"
 #include "engine.h"
 #include "scene_rows.h"
+#include "scene_work.h"
 #include "scene_broad.h"
 #include "scene_metrics.h"
 #include "scene_tiny.h"
@@ -53,22 +54,6 @@ enum { BODY_LINK = 0, BODY_OBJECT = 1, BODY_OBSTACLE = 2 };
  * passes, a pass ~3 sweeps' time; one falling back: +4); 1-row blocks, m <= n: beyond one */
 #define SC_GAIN_PASSES 2
 
-/* The scene's sizes and the scratch of one batch call. */
-typedef struct {
-  const double *pk;
-  sc_int no, nob, ng, mg, n, ccap, mcap, nbody;
-  int placed; /* the bodies' parts that do not move are placed (sc_scene_place's how & 1) */
-  double tol; /* the contact tolerance (m) */
-  sc_work_t ws;
-  double *base, *A, *M, *f, *par, *lam, *w, *st, *P, *J, *Ms, *L, *g, *D, *cs;
-  double *prev; /* the last sample's pieces (3 per block: state, forces) */
-  const double *prec; /* and its contacts' records */
-  sc_int *kind, *start, pnb; /* pnb: its blocks (-1: none, not solved) */
-  sc_int cool, backoff; /* samples left cold after a start that fell back, the next count */
-  sc_shape *shape;
-  double *centre, *reach, *pose, *T; /* T: the contacts' tangent rows (null: no friction) */
-  uint64_t *near; /* the broad phase's bits (scene_broad.h), sc_broad_words per moving body */
-} sc_scene_work;
 
 /* The bodies placed at the link poses P (the objects at qo, or by the scene): the parts that
  * do not move once per call. */
@@ -351,75 +336,6 @@ failed: /* a generated function refused */
   for (i = SO_NORM_QDD; i < width; ++i) out[i] = NAN;
 }
 
-static void work_free(sc_scene_work *sw) { free(sw->base); }
-enum { SW_HEAD = (sizeof(sc_scene_work) + sizeof(double) - 1) / sizeof(double) };
-
-/* The scratch of a batch call, one allocation (doubles, then the generated functions'
- * pointers and integers, the blocks' integers, the shapes; 8-byte fields throughout): 0, or
- * -1 out of memory. With own 0 the rows' room (A, par, kind, start: mcap rows) is the
- * caller's to set and none of what mcap scales is allocated (a state's rows). */
-static int work_alloc(sc_scene_work *sw, const double *pk, sc_int ccap, sc_int mcap, int own) {
-  const sc_work_fn fns[] = {SNAKECG_LP_WORK, SNAKECG_LJ_WORK, SNAKECG_SK_WORK};
-  const sc_int mc = own ? mcap : 0;
-  sc_int n, nd, k, i, sz[4], most[4] = {0, 0, 0, 0}, pad;
-  double *d;
-  sw->pk = pk;
-  sw->tol = pk[SP_TOL];
-  sw->no = (sc_int)pk[SP_NO];
-  sw->nob = (sc_int)pk[SP_NOB];
-  sw->ng = (sc_int)pk[SP_NG];
-  sw->mg = (sc_int)pk[SP_MG];
-  sw->n = n = SNAKECG_NS + 3 * sw->no;
-  sw->ccap = ccap;
-  sw->mcap = mcap;
-  sw->nbody = SNAKECG_NL + sw->no + sw->nob;
-  pad = sc_broad_pad(sw->nbody); /* (the bounding circles' room: scene_broad.h) */
-  for (k = 0; k < SC_COUNT(fns); ++k) {
-    sz[0] = sz[1] = sz[2] = sz[3] = 0;
-    if (fns[k](sz, sz + 1, sz + 2, sz + 3)) return -1;
-    for (i = 0; i < 4; ++i) most[i] = sz[i] > most[i] ? sz[i] : most[i];
-  }
-  nd = mc * n + 2 * n * n + 7 * n + 3 * mc + 3 * mc + 5 * SNAKECG_NL +
-       3 * SNAKECG_NL * SNAKECG_NS + SNAKECG_NS * SNAKECG_NS + 3 * pad + 3 * sw->no + 8 +
-       3 * mc + (pk[SP_FRICTION] != 0.0 ? ccap * n : 0);
-  sw->base = (double *)malloc((size_t)(SW_HEAD + nd + most[3] + 1) * sizeof(double) +
-                              (size_t)(most[0] + most[1] + 2) * sizeof(double *) +
-                              (size_t)(2 * mc + 2 + most[2] + 1) * sizeof(sc_int) +
-                              (size_t)(sw->nbody + 1) * sizeof(sc_shape) +
-                              (size_t)((SNAKECG_NL + sw->no) * sc_broad_words(sw->nbody)) *
-                                  sizeof(uint64_t));
-  if (!sw->base) return -1;
-  sw->A = d = sw->base + SW_HEAD; /* (the head: a kept state scratch's struct) */
-  sw->ws.w = d + nd;
-  sw->ws.arg = (const double **)(d + nd + most[3] + 1);
-  sw->ws.res = (double **)(sw->ws.arg + most[0] + 1);
-  sw->kind = (sc_int *)(sw->ws.res + most[1] + 1);
-  sw->ws.iw = sw->kind + 2 * mc + 2;
-  sw->shape = (sc_shape *)(sw->ws.iw + most[2] + 1);
-  sw->near = (uint64_t *)(sw->shape + sw->nbody + 1);
-  d += mc * n; /* the rows, then what is written before it is read: not zeroed */
-  sw->M = d; d += n * n; /* (the forward's full_inertia) */
-  sw->L = d; d += n * n;
-  sw->f = d, d += n, sw->g = d, d += n;
-  sw->D = d; d += 2 * n;
-  sw->par = d; d += 3 * mc;
-  sw->lam = d, d += mc, sw->w = d, d += mc, sw->st = d, d += mc;
-  sw->prev = d; d += 3 * mc; /* (read once a sample has written it: pnb) */
-  sw->P = d; d += 3 * SNAKECG_NL; /* (the generated functions' outputs are dense) */
-  sw->J = d; d += 3 * SNAKECG_NL * SNAKECG_NS;
-  sw->Ms = d; d += SNAKECG_NS * SNAKECG_NS;
-  sw->centre = d, d += 2 * pad, sw->reach = d, d += pad, sw->pose = d, d += 3 * sw->no;
-  for (i = sw->nbody; i < pad; ++i) sw->centre[i] = sw->centre[pad + i] = sw->reach[i] = 0.0;
-  sw->cs = d, sw->T = pk[SP_FRICTION] != 0.0 ? d + 2 * SNAKECG_NL : 0; /* (cs: 2 NL) */
-  /* zeros: the generated functions' pointers, the shapes (not what the model's sizes or mcap
-   * scale: written before it is read) */
-  memset((void *)sw->ws.arg, 0, (size_t)((char *)sw->kind - (char *)sw->ws.arg));
-  memset(sw->shape, 0, sizeof(sc_shape) * (size_t)(sw->nbody + 1));
-  sw->start = sw->kind + mc;
-  sw->placed = 0, sw->pnb = -1; /* (nothing placed, no last sample) */
-  return 0;
-}
-
 /* The forward solve of n samples of a general scene packed in pk: sample i's q, tau, f_obj at
  * q + i sq, tau + i st, fo + i sf (stride 0 broadcasts); its outputs at out + i width
  * (width = SO_QDD + n_s + 7 n_o + 3 n_g + CR_W ccap); where A is not null, its details at
@@ -442,7 +358,7 @@ static int forward(const double *pk, sc_int n, const double *q, sc_int sq, const
   if ((i = sc_inputs_bad(n, q, sq, tau, st, fo, sf, 3 * (sc_int)pk[SP_NO])) >= 0)
     return (int)(-3 - (i < 2000000000 ? i : 2000000000));
   if (keep && *keep) sw = (sc_scene_work *)*keep, sw->pnb = -1; /* (as made below: cold) */
-  else if (work_alloc(sw, pk, ccap, mcap, 1)) return -1;
+  else if (sc_scene_work_alloc(sw, pk, ccap, mcap, 1)) return -1;
   else if (full_inertia(sw, sw->M), keep) /* the objects' part (M_s: per sample) */
     *keep = sw = (sc_scene_work *)memcpy(sw->base, sw, sizeof(*sw));
   width = SO_QDD + SNAKECG_NS + 7 * sw->no + 3 * sw->ng + CR_W * ccap;
@@ -452,7 +368,7 @@ static int forward(const double *pk, sc_int n, const double *q, sc_int sq, const
                  A ? A + i * mcap * sw->n : 0, A ? lam + i * mcap : 0, A ? w + i * mcap : 0,
                  A ? state + i * mcap : 0, chunk > 1 && i % chunk != 0);
   }
-  if (!keep) work_free(sw);
+  if (!keep) sc_scene_work_free(sw);
   return 0;
 }
 
@@ -477,7 +393,7 @@ typedef struct {
 
 int SNAKECG_EXPORT(core_scene_forward_call)(sc_scene_call *c) {
   if (c->n == 0) { /* (the kept scratch freed) */
-    if (c->keep) work_free((sc_scene_work *)c->keep);
+    if (c->keep) sc_scene_work_free((sc_scene_work *)c->keep);
     c->keep = 0;
     return 0;
   }
@@ -508,7 +424,7 @@ static int state_work(sc_scene_work **sw, const double *pk, const double *q, con
   for (j = 0; qo && j < no3; ++j) ok &= isfinite(qo[j]) != 0;
   if (!ok) return -3;
   if (keep && *keep) *sw = (sc_scene_work *)*keep; /* (its fixed bodies placed already) */
-  else if (work_alloc(*sw, pk, ccap, mcap, A == 0)) return -1;
+  else if (sc_scene_work_alloc(*sw, pk, ccap, mcap, A == 0)) return -1;
   else if (keep) *keep = *sw = (sc_scene_work *)memcpy((*sw)->base, *sw, sizeof(**sw));
   if (A) (*sw)->A = A, (*sw)->par = par, (*sw)->kind = kind, (*sw)->start = start;
   (*sw)->tol = tol > 0 ? tol : pk[SP_TOL];
@@ -551,7 +467,7 @@ SC_INTERNAL int sc_scene_state_rows(const double *pk, const double *q, const dou
     if (M) full_inertia(sw, M);
   }
   out[RO_STATUS] = (double)code;
-  if (!keep) work_free(sw);
+  if (!keep) sc_scene_work_free(sw);
   return (int)code;
 }
 
@@ -570,7 +486,7 @@ int SNAKECG_EXPORT(core_scene_gaps)(const sc_scene_state *c) {
          code = state_work(&swp, c->pk, c->q, c->qo, 0.0, 0, (sc_int)c->pk[SP_MG], 0, 0, 0, 0, 0);
   if (code) return (int)code;
   if (kinematics(&sw, c->q, 0)) {
-    work_free(&sw);
+    sc_scene_work_free(&sw);
     return -4;
   }
   place(&sw, sw.P, c->qo, 0);
@@ -594,6 +510,6 @@ int SNAKECG_EXPORT(core_scene_gaps)(const sc_scene_state *c) {
       }
       ++found;
     }
-  work_free(&sw);
+  sc_scene_work_free(&sw);
   return (int)found;
 }
