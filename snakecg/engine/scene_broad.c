@@ -91,3 +91,16 @@ SC_INTERNAL void sc_broad_masks(const double *centre, const double *reach, doubl
   SC_BROAD_MASKS(sc_b1, 1, SC_BITS1)
 #endif
 }
+
+SC_INTERNAL sc_int sc_broad_pairs(const double *reach, double tol, sc_int na, sc_int nl,
+                                  sc_int nbody, unsigned char (*pair)[2], double *far2) {
+  const double tol2 = 2 * tol, widen = 1 + 1e-9;
+  sc_int ia, ib, k = 0;
+  for (ia = 0; ia < na; ++ia)
+    for (ib = ia + 1 + (ia + 1 < nl); ib < nbody; ++ib, ++k) {
+      const double far = ((reach[ia] + reach[ib]) + tol2) * widen;
+      pair[k][0] = (unsigned char)ia, pair[k][1] = (unsigned char)ib;
+      far2[k] = far * far;
+    }
+  return k;
+}

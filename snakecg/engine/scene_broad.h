@@ -20,6 +20,19 @@ static inline sc_int sc_broad_pad(sc_int nbody) { return (nbody + 7) & ~(sc_int)
 SC_INTERNAL void sc_broad_masks(const double *centre, const double *reach, double tol,
                                 sc_int na, sc_int nl, sc_int nbody, uint64_t *near);
 
+/* The bodies up to which contact_rows tests the pairs one by one from a table made once
+ * (sc_broad_pairs), without the masks: the paper's scene (4 links, a disc) tests 7 pairs a
+ * sample, fewer operations than one call of sc_broad_masks, and its scalar loads read the
+ * circles just stored by scalar stores (a vector load of them waits for the stores). */
+enum { SC_BROAD_FEW = 8, SC_BROAD_PAIRS = SC_BROAD_FEW * (SC_BROAD_FEW - 1) / 2 };
+
+/* With nbody <= SC_BROAD_FEW, the pairs of sc_broad_masks in its order (ia < na, then ib)
+ * into pair, and the square of each pair's far, (reach_a + reach_b + 2 tol)(1 + 1e-9), the
+ * same operations, into far2: body ib's circle is apart from ia's where dx^2 + dy^2 > far2
+ * (dx, dy as x_b - x_a: the same answer as the masks', NaN not apart). Their count. */
+SC_INTERNAL sc_int sc_broad_pairs(const double *reach, double tol, sc_int na, sc_int nl,
+                                  sc_int nbody, unsigned char (*pair)[2], double *far2);
+
 /* The lowest body of a word of bits (not zero) at base, the bit cleared. */
 static inline sc_int sc_broad_pop(uint64_t *bits, sc_int base) {
   sc_int k;

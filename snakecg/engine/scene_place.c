@@ -29,7 +29,8 @@ static void box_corners(double x, double y, double th, double sx, double sy, sc_
  * side at an offset); their poses into pose, the broad phase's bounding circles (a wall:
  * none) into centre (the bodies' x, then their y) and reach as scene_broad.h lays them out.
  * Without how & 1 (all), the parts that do not move (the obstacles' shapes and circles, every
- * reach) are kept from an earlier call on the same pk and buffers. */
+ * reach, the links' and discs' kinds and radii) are kept from an earlier call on the same pk
+ * and buffers. */
 SC_INTERNAL void sc_scene_place(const double *pk, const double *P, const double *qo, int how,
                                 double *cs, sc_shape *shape, double *pose, double *centre,
                                 double *reach) {
@@ -39,23 +40,22 @@ SC_INTERNAL void sc_scene_place(const double *pk, const double *P, const double 
   const int all = how & 1;
   sc_int i, j, k;
   for (i = 0; i < nl; ++i) {
-    double c, s, *e0 = shape[i].p[0], *e1 = shape[i].p[1], L = lk[LINK_W * i + 1];
+    double c, s, x0, y0, x1, y1, L = lk[LINK_W * i + 1];
     if (!(how & 2)) {
       cs[2 * i] = cos(P[3 * i + 2]);
       cs[2 * i + 1] = sin(P[3 * i + 2]);
     }
     c = cs[2 * i];
     s = cs[2 * i + 1];
-    e0[0] = P[3 * i] - lk[LINK_W * i] * c;
-    e0[1] = P[3 * i + 1] - lk[LINK_W * i] * s;
-    e1[0] = e0[0] + L * c;
-    e1[1] = e0[1] + L * s;
-    shape[i].kind = SC_SEGMENT;
-    shape[i].np = 2;
-    shape[i].radius = r;
-    centre[i] = 0.5 * (e0[0] + e1[0]);
-    centre[pad + i] = 0.5 * (e0[1] + e1[1]);
-    if (all) reach[i] = 0.5 * L + r;
+    x0 = P[3 * i] - lk[LINK_W * i] * c; /* (the ends in registers: the stores may alias) */
+    y0 = P[3 * i + 1] - lk[LINK_W * i] * s;
+    x1 = x0 + L * c;
+    y1 = y0 + L * s;
+    shape[i].p[0][0] = x0, shape[i].p[0][1] = y0, shape[i].p[1][0] = x1, shape[i].p[1][1] = y1;
+    centre[i] = 0.5 * (x0 + x1);
+    centre[pad + i] = 0.5 * (y0 + y1);
+    if (all) /* (the kind, radius and reach: set once) */
+      shape[i].kind = SC_SEGMENT, shape[i].np = 2, shape[i].radius = r, reach[i] = 0.5 * L + r;
   }
   for (j = 0; j < no; ++j) {
     const double *o = pk + (sc_int)pk[SP_OBJECTS] + OBJ_W * j;
@@ -77,10 +77,8 @@ SC_INTERNAL void sc_scene_place(const double *pk, const double *P, const double 
       ps[1] = rear[1] + o[8] * s + h * c;
       ps[2] = P[3 * lnk + 2];
     }
-    if (o[0] == 1.0) {
-      sh->kind = SC_POINT;
-      sh->np = 1;
-      sh->radius = o[3];
+    if (o[0] == 1.0) { /* (a disc's kind and radius: set once) */
+      if (all) sh->kind = SC_POINT, sh->np = 1, sh->radius = o[3];
       sh->p[0][0] = ps[0];
       sh->p[0][1] = ps[1];
     } else {

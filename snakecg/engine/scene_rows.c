@@ -116,79 +116,113 @@ static sc_int body_kind(const sc_scene_work *sw, sc_int b, sc_int *index) {
   return BODY_OBSTACLE;
 }
 
+/* The contacts of the pair (ia, ib) that may touch: their rows into sw->A from row nc on,
+ * their records (CR_W each) into recs; returns the contacts' count so far, or -SS_*
+ * (overlap: the pair, depth, tolerance in over). */
+static sc_int contact_pair(sc_scene_work *sw, sc_int ia, sc_int ib, const double *P,
+                           double *recs, double *over, sc_int cap, int zeroed, sc_int nc) {
+  const double tol = sw->tol;
+  const sc_int n = sw->n;
+  sc_int k, j, kk;
+  int count;
+  sc_touch t[SC_TOUCH_MAX];
+  const double d = sc_shape_closest(sw->shape + ia, sw->shape + ib, sw->pk[SP_SIZE], tol, tol,
+                                    t, &count);
+  if (d < -tol) {
+    double *o = over, idx;
+    o[0] = (double)body_kind(sw, ia, &k), o[1] = (double)k;
+    idx = (double)body_kind(sw, ib, &k);
+    o[2] = idx, o[3] = (double)k, o[4] = -d, o[5] = tol;
+    return -SS_OVERLAP;
+  }
+  if (d > tol) return nc;
+  for (k = 0; k < count; ++k) {
+    double *Dx = sw->T ? sw->D : 0, *Dy = sw->D + n, *rec;
+    if (nc >= cap) return -SS_MORE;
+    contact_row(sw, ia, ib, t + k, P, sw->A + nc * n, Dx, Dy);
+    rec = recs + CR_W * nc;
+    if (!zeroed) memset(rec, 0, sizeof(double) * CR_W);
+    rec[0] = (double)body_kind(sw, ia, &kk), rec[1] = (double)kk;
+    rec[2] = (double)body_kind(sw, ib, &kk), rec[3] = (double)kk;
+    for (j = 0; j < 2; ++j) {
+      rec[4 + j] = t[k].a[j];
+      rec[6 + j] = t[k].b[j];
+      rec[8 + j] = t[k].n[j];
+    }
+    rec[10] = d;
+    sw->kind[nc] = K_UNILATERAL;
+    sw->start[nc] = nc;
+    sw->par[3 * nc] = sw->par[3 * nc + 1] = sw->par[3 * nc + 2] = 0.0;
+    if (sw->T) sc_friction_row(sw->pk, ia, ib, t[k].n, Dx, Dy, n, sw->T + nc * n, rec);
+    ++nc;
+  }
+  return nc;
+}
+
 /* The contacts' rows of one configuration into sw->A (rows 0..), their records (CR_W each)
- * into recs; returns their count, or -SS_* (overlap: the pair, depth, tolerance in over). */
+ * into recs; returns their count, or -SS_* (overlap: the pair, depth, tolerance in over).
+ * The pairs in order (ia, then ib), those whose bounding circles are not apart (scene_broad.h):
+ * with few bodies from the table of the pairs, else from every moving body's masks at once. */
 static sc_int contact_rows(sc_scene_work *sw, const double *P, double *recs, double *over,
                            sc_int cap, int zeroed) { /* zeroed: the records' room is */
-  const double tol = sw->tol, size = sw->pk[SP_SIZE];
-  const sc_int n = sw->n, nl = SNAKECG_NL, nw = sc_broad_words(sw->nbody), na = nl + sw->no;
+  const double tol = sw->tol;
+  const sc_int nl = SNAKECG_NL, nbody = sw->nbody, nw = sc_broad_words(nbody),
+               na = nl + sw->no;
   const uint64_t *near = sw->near; /* (locals: the records' stores may alias sw's fields) */
-  sc_int ia, ib, nc = 0, k, j, w, iw;
+  sc_int ia, ib, nc = 0, iw, k, np;
   uint64_t bits;
-  sc_touch t[SC_TOUCH_MAX];
-  /* the bodies after ia whose circles are not apart (scene_broad.h), in order */
-  sc_broad_masks(sw->centre, sw->reach, tol, na, nl, sw->nbody, sw->near);
+  if (nbody <= SC_BROAD_FEW) { /* the pairs' table (made at the first call or tolerance) */
+    const double *cx = sw->centre, *cy = cx + sc_broad_pad(nbody), *far2 = sw->far2;
+    const unsigned char(*pair)[2] = (const unsigned char(*)[2])sw->pair;
+    if (!(sw->ftol == tol)) /* (NaN at first) */
+      sw->npair = sc_broad_pairs(sw->reach, tol, na, nl, nbody, sw->pair, sw->far2),
+      sw->ftol = tol;
+    for (k = 0, np = sw->npair; k < np; ++k) {
+      const double dx = cx[pair[k][1]] - cx[pair[k][0]], dy = cy[pair[k][1]] - cy[pair[k][0]];
+      if (!(dx * dx + dy * dy > far2[k]) &&
+          (nc = contact_pair(sw, pair[k][0], pair[k][1], P, recs, over, cap, zeroed, nc)) < 0)
+        return nc;
+    }
+    return nc;
+  }
+  sc_broad_masks(sw->centre, sw->reach, tol, na, nl, nbody, sw->near);
   for (iw = 0; iw < na * nw; ++iw) /* (body ia's words in turn: one loop, most words 0) */
     for (bits = near[iw]; bits;) {
-      double d;
-      int count;
-      ia = nw == 1 ? iw : iw / nw, w = nw == 1 ? 0 : iw % nw;
-      ib = sc_broad_pop(&bits, 64 * w);
-      d = sc_shape_closest(sw->shape + ia, sw->shape + ib, size, tol, tol, t, &count);
-      if (d < -tol) {
-        double *o = over, idx;
-        o[0] = (double)body_kind(sw, ia, &k), o[1] = (double)k;
-        idx = (double)body_kind(sw, ib, &k);
-        o[2] = idx, o[3] = (double)k, o[4] = -d, o[5] = tol;
-        return -SS_OVERLAP;
-      }
-      if (d > tol) continue;
-      for (k = 0; k < count; ++k) {
-        double *Dx = sw->T ? sw->D : 0, *Dy = sw->D + n, *rec;
-        sc_int kk;
-        if (nc >= cap) return -SS_MORE;
-        contact_row(sw, ia, ib, t + k, P, sw->A + nc * n, Dx, Dy);
-        rec = recs + CR_W * nc;
-        if (!zeroed) memset(rec, 0, sizeof(double) * CR_W);
-        rec[0] = (double)body_kind(sw, ia, &kk), rec[1] = (double)kk;
-        rec[2] = (double)body_kind(sw, ib, &kk), rec[3] = (double)kk;
-        for (j = 0; j < 2; ++j) {
-          rec[4 + j] = t[k].a[j];
-          rec[6 + j] = t[k].b[j];
-          rec[8 + j] = t[k].n[j];
-        }
-        rec[10] = d;
-        sw->kind[nc] = K_UNILATERAL;
-        sw->start[nc] = nc;
-        sw->par[3 * nc] = sw->par[3 * nc + 1] = sw->par[3 * nc + 2] = 0.0;
-        if (sw->T) sc_friction_row(sw->pk, ia, ib, t[k].n, Dx, Dy, n, sw->T + nc * n, rec);
-        ++nc;
-      }
+      ia = nw == 1 ? iw : iw / nw;
+      ib = sc_broad_pop(&bits, 64 * (nw == 1 ? 0 : iw % nw));
+      if ((nc = contact_pair(sw, ia, ib, P, recs, over, cap, zeroed, nc)) < 0) return nc;
     }
   return nc;
 }
 
-/* The ground's blocks after the contacts' nc rows; returns the rows used. */
-static sc_int ground_rows(sc_scene_work *sw, sc_int nc) {
+/* The ground's blocks after the contacts' nc rows; returns the rows used. Where kept (the
+ * forward's last rows were for the same nc, and nothing has written them since), only what
+ * the configuration moves is written: the blocks' kinds, starts and parameters, the rows'
+ * zeros in the objects' columns and an object's rows are as they were left. */
+static sc_int ground_rows(sc_scene_work *sw, sc_int nc, int kept) {
   const double *gb = sw->pk + (sc_int)sw->pk[SP_GROUND];
   const sc_int n = sw->n;
   sc_int g, r = nc, j;
   for (g = 0; g < sw->ng; ++g, gb += GB_W) {
     sc_int b = (sc_int)gb[1], type = (sc_int)gb[0], bk = nc + g;
     double *r0 = sw->A + r * n, *r1 = r0 + n;
-    sw->kind[bk] = (sc_int)gb[6];
-    sw->start[bk] = r;
-    sw->par[3 * bk] = gb[3];
-    sw->par[3 * bk + 1] = gb[4];
-    sw->par[3 * bk + 2] = gb[5];
-    for (j = SNAKECG_NS; type != GB_OBJECT && j < n; j += 3) { /* the objects' columns, */
-      r0[j] = r0[j + 1] = r0[j + 2] = 0.0; /* not set below (three at a time: no memset) */
-      if (type != GB_WHEEL) r1[j] = r1[j + 1] = r1[j + 2] = 0.0;
+    if (!kept) {
+      sw->kind[bk] = (sc_int)gb[6];
+      sw->start[bk] = r;
+      sw->par[3 * bk] = gb[3];
+      sw->par[3 * bk + 1] = gb[4];
+      sw->par[3 * bk + 2] = gb[5];
+      for (j = SNAKECG_NS; type != GB_OBJECT && j < n; j += 3) { /* the objects' columns, */
+        r0[j] = r0[j + 1] = r0[j + 2] = 0.0; /* not set below (three at a time: no memset) */
+        if (type != GB_WHEEL) r1[j] = r1[j + 1] = r1[j + 2] = 0.0;
+      }
+      if (type == GB_OBJECT) {
+        for (j = 0; j < n; ++j) r0[j] = r1[j] = 0.0;
+        r0[SNAKECG_NS + 3 * b] = 1.0;
+        r1[SNAKECG_NS + 3 * b + 1] = 1.0;
+      }
     }
     if (type == GB_OBJECT) {
-      for (j = 0; j < n; ++j) r0[j] = r1[j] = 0.0;
-      r0[SNAKECG_NS + 3 * b] = 1.0;
-      r1[SNAKECG_NS + 3 * b + 1] = 1.0;
       r += 2;
       continue;
     }
@@ -258,24 +292,26 @@ static void scene_sample(sc_scene_work *sw, const double *q, const double *tau,
                          const double *fo, sc_int max_sweeps, double *out, double *A,
                          double *lam, double *w, double *state, int warm) {
   const sc_int n = sw->n, ns = SNAKECG_NS, width = SO_QDD + ns + 7 * sw->no + 3 * sw->ng;
+  static const double zeros[SO_QDD]; /* (copied: a few moves; a memset of it is a string op) */
   sc_int nc, m, nb, i, j, o, t = -1, pnb = sw->pnb;
   double *P = sw->P, *rec = out + SO_QDD + ns + 7 * sw->no + 3 * sw->ng, *a = out + SO_QDD;
   sw->pnb = -1; /* (until this sample is solved) */
-  memset(out, 0, sizeof(double) * SO_QDD); /* (the row's rest written below; the records' room */
+  memcpy(out, zeros, sizeof(zeros)); /* (the row's rest written below; the records' room */
   memset(rec, 0, sizeof(double) * CR_W * sw->ccap); /* zeroed, whatever the caller's buffer held) */
   if (kinematics(sw, q, 1)) goto failed;
   place(sw, P, 0, 1);
   for (o = 0; o < sw->no; ++o)
     for (j = 0; j < 3; ++j) out[SO_QDD + ns + 4 * sw->no + 3 * o + j] = sw->pose[3 * o + j];
   nc = contact_rows(sw, P, rec, out + SO_OVERLAP, sw->ccap, 1);
-  if (nc < 0) {
+  if (nc < 0) { /* (the rows found before it stand where the ground's were: not kept) */
+    sw->gnc = -1;
     out[SO_INFO] = (double)-nc;
     for (i = SO_NORM_QDD; i <= SO_SR; ++i) out[i] = NAN;
     for (i = SO_QDD; i < width; ++i) out[i] = NAN; /* no contacts, no ground blocks */
     return;
   }
-  m = ground_rows(sw, nc);
-  nb = nc + sw->ng;
+  m = ground_rows(sw, nc, sw->gnc == nc); /* (the solves write no row, block or parameter */
+  sw->gnc = nc, nb = nc + sw->ng; /* before m and nb: those after them, contact friction's) */
   snake_block(sw->Ms, sw->M, n); /* M_s into the inertia (the objects' part is the call's) */
   sw->f[0] = sw->f[1] = sw->f[2] = 0.0; /* the force: B tau, the objects' wrenches */
   for (i = 3; i < ns; ++i) sw->f[i] = tau[i - 3];
@@ -351,7 +387,7 @@ static int forward(const double *pk, sc_int n, const double *q, sc_int sq, const
                    double *out, double *A, double *lam, double *w, double *state, sc_int chunk,
                    void **keep) {
   sc_scene_work local, *sw = &local;
-  sc_int i, width, mg = (sc_int)pk[SP_MG] + (pk[SP_FRICTION] != 0) * ccap; /* (tangents) */
+  sc_int i, left, width, mg = (sc_int)pk[SP_MG] + (pk[SP_FRICTION] != 0) * ccap; /* (tangents) */
   if (ccap < 0 || mcap < ccap + mg || mcap > 500 || SNAKECG_NS + 3 * pk[SP_NO] > 512)
     return -2;
   /* inputs first: a sample that is not finite refuses the call (scene_inputs.c) */
@@ -362,11 +398,11 @@ static int forward(const double *pk, sc_int n, const double *q, sc_int sq, const
   else if (full_inertia(sw, sw->M), keep) /* the objects' part (M_s: per sample) */
     *keep = sw = (sc_scene_work *)memcpy(sw->base, sw, sizeof(*sw));
   width = SO_QDD + SNAKECG_NS + 7 * sw->no + 3 * sw->ng + CR_W * ccap;
-  for (i = 0; i < n; ++i) { /* cold at every chunk-th sample of the call */
-    if (chunk < 2 || i % chunk == 0) sw->cool = sw->backoff = 0;
+  for (i = 0, left = 0; i < n; ++i, --left) { /* cold at every chunk-th sample of the call */
+    if (left == 0) left = chunk > 1 ? chunk : 1, sw->cool = sw->backoff = 0; /* (no division) */
     scene_sample(sw, q + i * sq, tau + i * st, fo + i * sf, SC_SCENE_SWEEPS, out + i * width,
                  A ? A + i * mcap * sw->n : 0, A ? lam + i * mcap : 0, A ? w + i * mcap : 0,
-                 A ? state + i * mcap : 0, chunk > 1 && i % chunk != 0);
+                 A ? state + i * mcap : 0, chunk > 1 && left != chunk);
   }
   if (!keep) sc_scene_work_free(sw);
   return 0;
@@ -459,7 +495,7 @@ SC_INTERNAL int sc_scene_state_rows(const double *pk, const double *q, const dou
     code = nc < 0 ? -nc : 0;
   }
   if (!code) {
-    m = ground_rows(sw, nc);
+    m = ground_rows(sw, nc, 0);
     out[RO_NC] = (double)nc;
     out[RO_M] = (double)m;
     out[RO_NB] = (double)(nc + sw->ng);

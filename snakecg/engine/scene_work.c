@@ -71,6 +71,6 @@ SC_INTERNAL int sc_scene_work_alloc(sc_scene_work *sw, const double *pk, sc_int 
   memset((void *)sw->ws.arg, 0, (size_t)((char *)sw->kind - (char *)sw->ws.arg));
   memset(sw->shape, 0, sizeof(sc_shape) * (size_t)(sw->nbody + 1));
   sw->start = sw->kind + mc;
-  sw->placed = 0, sw->pnb = -1; /* (nothing placed, no last sample) */
+  sw->placed = 0, sw->pnb = -1, sw->gnc = -1, sw->ftol = NAN; /* (nothing placed or kept) */
   return 0;
 }

@@ -4,6 +4,7 @@
 #define SNAKECG_ENGINE_SCENE_WORK_H
 
 #include <stdint.h>
+#include "scene_broad.h"
 
 /* The scene's sizes and the scratch of one batch call. */
 typedef struct {
@@ -17,9 +18,15 @@ typedef struct {
   const double *prec; /* and its contacts' records */
   sc_int *kind, *start, pnb; /* pnb: its blocks (-1: none, not solved) */
   sc_int cool, backoff; /* samples left cold after a start that fell back, the next count */
+  sc_int gnc; /* the contacts before the ground's rows the forward last wrote (-1: none) */
   sc_shape *shape;
   double *centre, *reach, *pose, *T; /* T: the contacts' tangent rows (null: no friction) */
   uint64_t *near; /* the broad phase's bits (scene_broad.h), sc_broad_words per moving body */
+  /* with few bodies (SC_BROAD_FEW) the broad phase's pairs instead, and their squared far at
+   * the tolerance ftol (NaN: not made) */
+  sc_int npair;
+  unsigned char pair[SC_BROAD_PAIRS][2];
+  double far2[SC_BROAD_PAIRS], ftol;
 } sc_scene_work;
 
 /* The scratch of a batch call for the scene packed in pk, room for ccap contacts and mcap
