@@ -25,49 +25,47 @@
 #define METRICS_UNROLL
 #endif
 
-/* v = L^T a and g = D^-1 L^-1 f for L's dense block of t rows (unit lower, D on its diagonal)
- * and its diagonal tail, r = D^-1 (n, t constants where the caller's branch makes them so) */
-static inline void forms(sc_int n, sc_int t, const double *L, const double *r, const double *f,
-                         const double *a, double *v, double *g) {
-  double u[512];
-  sc_int i, k;
-  METRICS_UNROLL for (i = 0; i < t; ++i) {
-    double s = a[i], x = f[i];
-    METRICS_UNROLL for (k = i + 1; k < t; ++k) s += L[k * n + i] * a[k];
-    METRICS_UNROLL for (k = 0; k < i; ++k) x -= L[i * n + k] * u[k];
-    v[i] = s;
-    u[i] = x;
-    g[i] = x * r[i];
-  }
-  METRICS_UNROLL for (i = t; i < n; ++i) {
-    v[i] = a[i];
-    g[i] = f[i] * r[i];
-  }
-}
-
-SC_INTERNAL void sc_scene_metrics(sc_int n, sc_int no, sc_int t, const double *L,
-                                  const double *r, const double *f, const double *a,
-                                  double *norms, double *obj) {
+/* The metrics from v = L^T a and g = D^-1 L^-1 f (L's dense block of t rows, unit lower, D
+ * on its diagonal, and its diagonal tail; r = D^-1; n, t constants where the caller's branch
+ * makes them so), entry by entry as they come: each sum in the order of the entries, and v,
+ * g in registers (stored and then loaded as pairs, their loads waited on the stores). */
+static inline void sums(sc_int n, sc_int t, const double *L, const double *r, const double *f,
+                        const double *a, double *norms, double *obj) {
   const sc_int ns = SNAKECG_NS;
-  double v[512], g[512], nq = 0.0, na = 0.0, nl = 0.0, fr = 0.0, d; /* (n: at most 512) */
-  sc_int i, o;
-  if (t == ns && n == ns) forms(SNAKECG_NS, SNAKECG_NS, L, r, f, a, v, g);
-  else if (t == ns && n == ns + 3) forms(SNAKECG_NS + 3, SNAKECG_NS, L, r, f, a, v, g);
-  else forms(n, t, L, r, f, a, v, g);
-  for (i = 0; i < ns; ++i) nq += L[i * n + i] * (v[i] * v[i]);
-  for (o = 0; o < no; ++o) {
-    const double *u = v + ns + 3 * o, *D = L + (ns + 3 * o) * (n + 1);
-    obj[o] = D[0] * (u[0] * u[0]) + D[n + 1] * (u[1] * u[1]) + D[2 * n + 2] * (u[2] * u[2]);
-    na += obj[o];
-  }
-  for (i = 0; i < n; ++i) {
-    d = v[i] - g[i];
-    nl += L[i * n + i] * (d * d);
-    fr += L[i * n + i] * (g[i] * g[i]);
+  double u[512], nq = 0.0, na = 0.0, nl = 0.0, fr = 0.0, ob = 0.0, d; /* (n: at most 512) */
+  sc_int i, k;
+  METRICS_UNROLL for (i = 0; i < n; ++i) {
+    const double D = L[i * n + i];
+    double v = a[i], x = f[i], g;
+    if (i < t) {
+      METRICS_UNROLL for (k = i + 1; k < t; ++k) v += L[k * n + i] * a[k];
+      METRICS_UNROLL for (k = 0; k < i; ++k) x -= L[i * n + k] * u[k];
+      u[i] = x;
+    }
+    g = x * r[i];
+    if (i < ns) {
+      nq += D * (v * v); /* ||qdd_s||^2 */
+    } else { /* object (i - ns) / 3's ||a_o||^2, its three terms in order */
+      ob = (i - ns) % 3 ? ob + D * (v * v) : D * (v * v);
+      if ((i - ns) % 3 == 2) obj[(i - ns) / 3] = ob, na += ob;
+    }
+    d = v - g;
+    nl += D * (d * d);
+    fr += D * (g * g);
   }
   d = na + nq;
   norms[0] = nq;
   norms[1] = na;
   norms[2] = nl;
   norms[3] = d > 1e-26 * fr ? na / d : 0.0; /* eq. (30) */
+}
+
+SC_INTERNAL void sc_scene_metrics(sc_int n, sc_int no, sc_int t, const double *L,
+                                  const double *r, const double *f, const double *a,
+                                  double *norms, double *obj) {
+  (void)no; /* (n = n_s + 3 n_o) */
+  if (t == SNAKECG_NS && n == SNAKECG_NS) sums(SNAKECG_NS, SNAKECG_NS, L, r, f, a, norms, obj);
+  else if (t == SNAKECG_NS && n == SNAKECG_NS + 3)
+    sums(SNAKECG_NS + 3, SNAKECG_NS, L, r, f, a, norms, obj);
+  else sums(n, t, L, r, f, a, norms, obj);
 }

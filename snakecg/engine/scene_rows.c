@@ -67,11 +67,15 @@ static void place(sc_scene_work *sw, const double *P, const double *qo, int give
  * object o's columns (x: 1, 0, y_o - p_y; y: 0, 1, p_x - x_o) times sign, added to zero. */
 static void object_part(const sc_scene_work *sw, sc_int o, const double *p, double sign,
                         const double *nrm, double *row, double *Dx, double *Dy) {
-  const double *ps = sw->pose + 3 * o, x[3] = {0.0 + sign, 0.0, 0.0 + sign * -(p[1] - ps[1])},
-               y[3] = {0.0, 0.0 + sign, 0.0 + sign * (p[0] - ps[0])};
-  sc_int j, col = SNAKECG_NS + 3 * o;
-  for (j = 0; j < 3; ++j) row[col + j] = nrm[0] * x[j] + nrm[1] * y[j];
-  for (j = 0; Dx && j < 3; ++j) Dx[col + j] = x[j], Dy[col + j] = y[j];
+  const double *ps = sw->pose + 3 * o, n0 = nrm[0], n1 = nrm[1]; /* (scalars: no stack pairs) */
+  const double x0 = 0.0 + sign, x2 = 0.0 + sign * -(p[1] - ps[1]), y1 = 0.0 + sign,
+               y2 = 0.0 + sign * (p[0] - ps[0]);
+  const sc_int col = SNAKECG_NS + 3 * o;
+  row[col] = n0 * x0 + n1 * 0.0;
+  row[col + 1] = n0 * 0.0 + n1 * y1;
+  row[col + 2] = n0 * x2 + n1 * y2;
+  if (Dx) Dx[col] = x0, Dx[col + 1] = 0.0, Dx[col + 2] = x2;
+  if (Dx) Dy[col] = 0.0, Dy[col + 1] = y1, Dy[col + 2] = y2;
 }
 
 /* A contact's row n . D (n entries), D = J_b - J_a at its points (p_b on body b, p_a on a; on
@@ -116,14 +120,14 @@ static sc_int body_kind(const sc_scene_work *sw, sc_int b, sc_int *index) {
   return BODY_OBSTACLE;
 }
 
-/* The contacts of the pair (ia, ib) that may touch: their rows into sw->A from row nc on,
- * their records (CR_W each) into recs; returns the contacts' count so far, or -SS_*
+/* The contacts of the pair (ia, ib) that may touch: their rows into sw->A from row *nc on,
+ * their records (CR_W each, every field) into recs, *nc counting them; returns 0, or SS_*
  * (overlap: the pair, depth, tolerance in over). */
-static sc_int contact_pair(sc_scene_work *sw, sc_int ia, sc_int ib, const double *P,
-                           double *recs, double *over, sc_int cap, int zeroed, sc_int nc) {
+static int contact_pair(sc_scene_work *sw, sc_int ia, sc_int ib, const double *P,
+                        double *recs, double *over, sc_int cap, sc_int *ncp) {
   const double tol = sw->tol;
   const sc_int n = sw->n;
-  sc_int k, j, kk;
+  sc_int k, j, kk, nc = *ncp;
   int count;
   sc_touch t[SC_TOUCH_MAX];
   const double d = sc_shape_closest(sw->shape + ia, sw->shape + ib, sw->pk[SP_SIZE], tol, tol,
@@ -133,15 +137,14 @@ static sc_int contact_pair(sc_scene_work *sw, sc_int ia, sc_int ib, const double
     o[0] = (double)body_kind(sw, ia, &k), o[1] = (double)k;
     idx = (double)body_kind(sw, ib, &k);
     o[2] = idx, o[3] = (double)k, o[4] = -d, o[5] = tol;
-    return -SS_OVERLAP;
+    return SS_OVERLAP;
   }
-  if (d > tol) return nc;
+  if (d > tol) return 0;
   for (k = 0; k < count; ++k) {
     double *Dx = sw->T ? sw->D : 0, *Dy = sw->D + n, *rec;
-    if (nc >= cap) return -SS_MORE;
+    if (nc >= cap) return SS_MORE;
     contact_row(sw, ia, ib, t + k, P, sw->A + nc * n, Dx, Dy);
     rec = recs + CR_W * nc;
-    if (!zeroed) memset(rec, 0, sizeof(double) * CR_W);
     rec[0] = (double)body_kind(sw, ia, &kk), rec[1] = (double)kk;
     rec[2] = (double)body_kind(sw, ib, &kk), rec[3] = (double)kk;
     for (j = 0; j < 2; ++j) {
@@ -150,27 +153,31 @@ static sc_int contact_pair(sc_scene_work *sw, sc_int ia, sc_int ib, const double
       rec[8 + j] = t[k].n[j];
     }
     rec[10] = d;
+    rec[11] = rec[12] = rec[13] = rec[14] = rec[15] = 0.0; /* (the solve's, friction's) */
     sw->kind[nc] = K_UNILATERAL;
     sw->start[nc] = nc;
     sw->par[3 * nc] = sw->par[3 * nc + 1] = sw->par[3 * nc + 2] = 0.0;
     if (sw->T) sc_friction_row(sw->pk, ia, ib, t[k].n, Dx, Dy, n, sw->T + nc * n, rec);
-    ++nc;
+    *ncp = ++nc;
   }
-  return nc;
+  return 0;
 }
 
 /* The contacts' rows of one configuration into sw->A (rows 0..), their records (CR_W each)
- * into recs; returns their count, or -SS_* (overlap: the pair, depth, tolerance in over).
+ * into recs, their count into *nc (the records written where it stops); returns 0, or SS_*
+ * (overlap: the pair, depth, tolerance in over).
  * The pairs in order (ia, then ib), those whose bounding circles are not apart (scene_broad.h):
  * with few bodies from the table of the pairs, else from every moving body's masks at once. */
-static sc_int contact_rows(sc_scene_work *sw, const double *P, double *recs, double *over,
-                           sc_int cap, int zeroed) { /* zeroed: the records' room is */
+static int contact_rows(sc_scene_work *sw, const double *P, double *recs, double *over,
+                        sc_int cap, sc_int *nc) {
   const double tol = sw->tol;
   const sc_int nl = SNAKECG_NL, nbody = sw->nbody, nw = sc_broad_words(nbody),
                na = nl + sw->no;
   const uint64_t *near = sw->near; /* (locals: the records' stores may alias sw's fields) */
-  sc_int ia, ib, nc = 0, iw, k, np;
+  sc_int ia, ib, iw, k, np;
+  int code;
   uint64_t bits;
+  *nc = 0;
   if (nbody <= SC_BROAD_FEW) { /* the pairs' table (made at the first call or tolerance) */
     const double *cx = sw->centre, *cy = cx + sc_broad_pad(nbody), *far2 = sw->far2;
     const unsigned char(*pair)[2] = (const unsigned char(*)[2])sw->pair;
@@ -180,19 +187,19 @@ static sc_int contact_rows(sc_scene_work *sw, const double *P, double *recs, dou
     for (k = 0, np = sw->npair; k < np; ++k) {
       const double dx = cx[pair[k][1]] - cx[pair[k][0]], dy = cy[pair[k][1]] - cy[pair[k][0]];
       if (!(dx * dx + dy * dy > far2[k]) &&
-          (nc = contact_pair(sw, pair[k][0], pair[k][1], P, recs, over, cap, zeroed, nc)) < 0)
-        return nc;
+          (code = contact_pair(sw, pair[k][0], pair[k][1], P, recs, over, cap, nc)))
+        return code;
     }
-    return nc;
+    return 0;
   }
   sc_broad_masks(sw->centre, sw->reach, tol, na, nl, nbody, sw->near);
   for (iw = 0; iw < na * nw; ++iw) /* (body ia's words in turn: one loop, most words 0) */
     for (bits = near[iw]; bits;) {
       ia = nw == 1 ? iw : iw / nw;
       ib = sc_broad_pop(&bits, 64 * (nw == 1 ? 0 : iw % nw));
-      if ((nc = contact_pair(sw, ia, ib, P, recs, over, cap, zeroed, nc)) < 0) return nc;
+      if ((code = contact_pair(sw, ia, ib, P, recs, over, cap, nc))) return code;
     }
-  return nc;
+  return 0;
 }
 
 /* The ground's blocks after the contacts' nc rows; returns the rows used. Where kept (the
@@ -293,19 +300,20 @@ static void scene_sample(sc_scene_work *sw, const double *q, const double *tau,
                          double *lam, double *w, double *state, int warm) {
   const sc_int n = sw->n, ns = SNAKECG_NS, width = SO_QDD + ns + 7 * sw->no + 3 * sw->ng;
   static const double zeros[SO_QDD]; /* (copied: a few moves; a memset of it is a string op) */
-  sc_int nc, m, nb, i, j, o, t = -1, pnb = sw->pnb;
+  sc_int nc, m, nb, i, j, o, t = -1, pnb = sw->pnb, code;
   double *P = sw->P, *rec = out + SO_QDD + ns + 7 * sw->no + 3 * sw->ng, *a = out + SO_QDD;
   sw->pnb = -1; /* (until this sample is solved) */
-  memcpy(out, zeros, sizeof(zeros)); /* (the row's rest written below; the records' room */
-  memset(rec, 0, sizeof(double) * CR_W * sw->ccap); /* zeroed, whatever the caller's buffer held) */
+  memcpy(out, zeros, sizeof(zeros)); /* (the row's rest written below) */
   if (kinematics(sw, q, 1)) goto failed;
   place(sw, P, 0, 1);
   for (o = 0; o < sw->no; ++o)
     for (j = 0; j < 3; ++j) out[SO_QDD + ns + 4 * sw->no + 3 * o + j] = sw->pose[3 * o + j];
-  nc = contact_rows(sw, P, rec, out + SO_OVERLAP, sw->ccap, 1);
-  if (nc < 0) { /* (the rows found before it stand where the ground's were: not kept) */
+  code = contact_rows(sw, P, rec, out + SO_OVERLAP, sw->ccap, &nc);
+  /* the records' room after those written zeroed, whatever the caller's buffer held */
+  memset(rec + CR_W * nc, 0, sizeof(double) * (size_t)(CR_W * (sw->ccap - nc)));
+  if (code) { /* (the rows found before it stand where the ground's were: not kept) */
     sw->gnc = -1;
-    out[SO_INFO] = (double)-nc;
+    out[SO_INFO] = (double)code;
     for (i = SO_NORM_QDD; i <= SO_SR; ++i) out[i] = NAN;
     for (i = SO_QDD; i < width; ++i) out[i] = NAN; /* no contacts, no ground blocks */
     return;
@@ -368,6 +376,7 @@ static void scene_sample(sc_scene_work *sw, const double *q, const double *tau,
   }
   return;
 failed: /* a generated function refused */
+  memset(rec, 0, sizeof(double) * CR_W * sw->ccap);
   out[SO_INFO] = SS_FAILED;
   for (i = SO_NORM_QDD; i < width; ++i) out[i] = NAN;
 }
@@ -491,8 +500,7 @@ SC_INTERNAL int sc_scene_state_rows(const double *pk, const double *q, const dou
   if (!code) {
     place(sw, sw->P, qo, M != 0);
     for (i = 0; i < 3 * sw->no; ++i) out[RO_POSE + i] = sw->pose[i];
-    nc = contact_rows(sw, sw->P, out + RO_POSE + 3 * sw->no, out + RO_OVERLAP, sw->ccap, 0);
-    code = nc < 0 ? -nc : 0;
+    code = contact_rows(sw, sw->P, out + RO_POSE + 3 * sw->no, out + RO_OVERLAP, sw->ccap, &nc);
   }
   if (!code) {
     m = ground_rows(sw, nc, 0);
