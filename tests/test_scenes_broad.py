@@ -5,8 +5,10 @@ without its AVX path) and called through ctypes, against a brute-force NumPy loo
 pair: the same pairs in the same order (bodies after a, neighbouring links skipped, bounding
 circles not apart by more than twice the tolerance), for rows of pegs, random bodies, more than
 64 bodies (several words of bits), circles exactly at the bound, and a body whose centre is not
-a number (never apart, as the pair loop read it). The contacts and rows that follow are held
-against tests/scenes_rows_reference.py in tests/test_scenes_rows.py."""
+a number (never apart, as the pair loop read it); with few bodies (at most 8) the table of pairs
+that contact_rows makes once and tests pair by pair instead, against the same brute force. The
+contacts and rows that follow are held against tests/scenes_rows_reference.py in
+tests/test_scenes_rows.py."""
 
 from __future__ import annotations
 
@@ -50,6 +52,28 @@ long long pairs(sc_int nbody, sc_int nfirst, sc_int nl, const double *centre,
   free(near);
   free(c);
   return k;
+}
+"""
+
+TABLE_SHIM = """#include <stdlib.h>
+#include "scene_broad.c"
+/* the pairs that contact_rows takes from the few bodies' table (sc_broad_pairs, then
+ * sc_broad_near pair by pair), in its order: its count (the circles laid out as in pairs) */
+long long table(sc_int nbody, sc_int nfirst, sc_int nl, const double *centre,
+                const double *reach, double tol, long long *out) {
+  const sc_int pad = sc_broad_pad(nbody);
+  unsigned char pair[SC_BROAD_PAIRS][2];
+  double far2[SC_BROAD_PAIRS], *c = (double *)calloc((size_t)(3 * pad + 1), sizeof(double));
+  sc_int b, k, np;
+  long long found = 0;
+  for (b = 0; b < nbody; ++b)
+    c[b] = centre[2 * b], c[pad + b] = centre[2 * b + 1], c[2 * pad + b] = reach[b];
+  np = sc_broad_pairs(c + 2 * pad, tol, nfirst, nl, nbody, pair, far2);
+  for (k = 0; k < np; ++k)
+    if (sc_broad_near(c, pad, pair[k], far2[k]))
+      out[2 * found] = pair[k][0], out[2 * found + 1] = pair[k][1], ++found;
+  free(c);
+  return found;
 }
 """
 
@@ -137,3 +161,59 @@ def test_circles_at_the_bound_and_not_a_number(pairs):
     want = brute_force(centre, reach, tol, 5, 0)
     assert (0, 1) in want and (0, 3) not in want and (0, 2) in want  # NaN: never apart
     assert pairs(centre, reach, tol, 5, 0) == want
+
+
+@pytest.fixture(scope="module")
+def table(tmp_path_factory):
+    """The few bodies' table of pairs (at most SC_BROAD_FEW bodies) and its test."""
+    cc = find_compiler()
+    assert cc is not None, "the engine needs a C compiler (cc, gcc or clang)"
+    tmp = tmp_path_factory.mktemp("table")
+    (tmp / "snakecg_layout.h").write_text(LAYOUT)
+    (tmp / "shim.c").write_text(TABLE_SHIM)
+    lib = tmp / "libtable.so"
+    subprocess.run([cc, *CORE_FLAGS, "-shared", "-I", str(tmp), "-I", str(ENGINE_DIR),
+                    str(tmp / "shim.c"), "-o", str(lib), "-lm"], check=True,
+                   capture_output=True)
+    fn = ctypes.CDLL(str(lib)).table
+    fn.argtypes = [ctypes.c_longlong] * 3 + [ctypes.c_void_p] * 2 + [ctypes.c_double,
+                                                                     ctypes.c_void_p]
+    fn.restype = ctypes.c_longlong
+
+    def call(centre, reach, tol, nfirst, nl):
+        centre = np.ascontiguousarray(centre, float)
+        reach = np.ascontiguousarray(reach, float)
+        out = np.zeros((max(1, nfirst * len(reach)), 2), dtype=np.int64)
+        k = fn(len(reach), nfirst, nl, centre.ctypes.data, reach.ctypes.data, tol,
+               out.ctypes.data)
+        return [tuple(p) for p in out[:k]]
+
+    return call
+
+
+@pytest.mark.parametrize("nbody", range(1, 9))
+def test_the_few_bodies_table_takes_the_same_pairs(table, nbody):
+    """With at most 8 bodies contact_rows takes the pairs from a table made once and tests
+    them one by one: the brute force's pairs in its order, for random bodies (some touching,
+    some apart), with the circles exactly at the bound and a centre not a number."""
+    rng = np.random.default_rng(100 + nbody)
+    seen = 0
+    for _ in range(200):
+        centre = rng.uniform(-1.0, 1.0, (nbody, 2))
+        reach = rng.uniform(0.0, 0.6, nbody)
+        nl = int(rng.integers(0, nbody + 1))
+        nfirst = int(rng.integers(0, nbody + 1))
+        tol = 10.0 ** rng.uniform(-8, -2)
+        want = brute_force(centre, reach, tol, nfirst, nl)
+        assert table(centre, reach, tol, nfirst, nl) == want
+        seen += len(want)
+    assert seen > 0 or nbody < 3
+    if nbody == 5:  # at the bound (not apart), just past it, and NaN (never apart)
+        tol = 1e-3
+        reach = np.array([0.25, 0.5, 0.125, 0.5, 0.25])
+        far = (0.25 + 0.5 + 2 * tol) * (1 + 1e-9)
+        centre = np.array([[0.0, 0.0], [far, 0.0], [np.nan, 0.0],
+                           [-np.nextafter(far, 1.0), 0.0], [0.0, 0.0]])
+        want = brute_force(centre, reach, tol, 5, 0)
+        assert (0, 1) in want and (0, 3) not in want and (0, 2) in want
+        assert table(centre, reach, tol, 5, 0) == want

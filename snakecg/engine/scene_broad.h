@@ -32,6 +32,14 @@ enum { SC_BROAD_FEW = 8, SC_BROAD_PAIRS = SC_BROAD_FEW * (SC_BROAD_FEW - 1) / 2 
  * (dx, dy as x_b - x_a: the same answer as the masks', NaN not apart). Their count. */
 SC_INTERNAL sc_int sc_broad_pairs(const double *reach, double tol, sc_int na, sc_int nl,
                                   sc_int nbody, unsigned char (*pair)[2], double *far2);
+/* A pair of that table (its bodies, its far2) not apart: the circles' centres at centre (the
+ * bodies' x, then from centre + pad their y). */
+static inline int sc_broad_near(const double *centre, sc_int pad, const unsigned char *pair,
+                                double far2) {
+  const double dx = centre[pair[1]] - centre[pair[0]],
+               dy = centre[pad + pair[1]] - centre[pad + pair[0]];
+  return !(dx * dx + dy * dy > far2);
+}
 
 /* The lowest body of a word of bits (not zero) at base, the bit cleared. */
 static inline sc_int sc_broad_pop(uint64_t *bits, sc_int base) {

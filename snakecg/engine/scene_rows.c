@@ -179,17 +179,16 @@ static int contact_rows(sc_scene_work *sw, const double *P, double *recs, double
   uint64_t bits;
   *nc = 0;
   if (nbody <= SC_BROAD_FEW) { /* the pairs' table (made at the first call or tolerance) */
-    const double *cx = sw->centre, *cy = cx + sc_broad_pad(nbody), *far2 = sw->far2;
+    const double *centre = sw->centre, *far2 = sw->far2;
     const unsigned char(*pair)[2] = (const unsigned char(*)[2])sw->pair;
+    const sc_int pad = sc_broad_pad(nbody);
     if (!(sw->ftol == tol)) /* (NaN at first) */
       sw->npair = sc_broad_pairs(sw->reach, tol, na, nl, nbody, sw->pair, sw->far2),
       sw->ftol = tol;
-    for (k = 0, np = sw->npair; k < np; ++k) {
-      const double dx = cx[pair[k][1]] - cx[pair[k][0]], dy = cy[pair[k][1]] - cy[pair[k][0]];
-      if (!(dx * dx + dy * dy > far2[k]) &&
+    for (k = 0, np = sw->npair; k < np; ++k)
+      if (sc_broad_near(centre, pad, pair[k], far2[k]) &&
           (code = contact_pair(sw, pair[k][0], pair[k][1], P, recs, over, cap, nc)))
         return code;
-    }
     return 0;
   }
   sc_broad_masks(sw->centre, sw->reach, tol, na, nl, nbody, sw->near);
