@@ -22,7 +22,9 @@
  * What differs is G_HH's factor: the general path's diagonal pivoting (sc_psd_solve: a pivot
  * search and swaps on the gathered rows, rows dropped at pivots of DEP_TOL = 1e-10 of the
  * first) becomes the same L D L^T in the rows' order, the other rows the identity (no
- * gather, no search), factored once per pass (its rounds reuse it). It is used only where the
+ * gather, no search), factored once per pass (its rounds reuse it); with four rows, G_HH's
+ * inverse from its cofactors instead (piece4: no chain of divisions; the definiteness from its
+ * leading minors, the factor's pivots' products). It is used only where the
  * pivoted factor would keep every held row: each pivoted pivot is at most G_HH's largest
  * diagonal entry (the first pivot), so at least det G_HH over that entry to the h - 1, and at
  * least G_HH's least eigenvalue, itself at least 1 / trace(G_HH^-1); where neither bound is
@@ -109,6 +111,85 @@ TINY_FLAT void wvec(const sc_int m, tiny *p) {
 #endif
 }
 
+/* piece for four rows (the paper's scene: a contact and three wheels), G_HH's factor replaced
+ * by its inverse from cofactors (the other rows and columns the identity): the 2 x 2 minors of
+ * rows 0-1 (s) and rows 2-3 (c), the determinant and the adjugate X from them, all independent
+ * products where the factor has a chain of four divisions; each round's d = X r / det (r the
+ * negated held residuals), a product of independent terms where the factor has two
+ * substitutions. The same rules: definite where the leading minors (the factor's pivots'
+ * products) are positive and det finite; then det G_HH >= DEF_TOL big^h, or else the least
+ * eigenvalue's bound, trace(G_HH^-1) = sum_H X_kk / det, with DEF_TOL big trace < 1 (both
+ * multiplied through by big^h and det: no division). The inverse is accurate to about its
+ * condition, at least big trace, times the rounding, the factor to the rounding: a round's
+ * residual comes out up to that much larger, so where big trace is above 8 a second round is
+ * made whatever the first's residual (the paper's scene: below 8 throughout). */
+TINY_FLAT int piece4(tiny *p) {
+  double a[16], X[16], r[4], big = 0.0, bigh = 1.0, s0, s1, s2, s3, s4, s5, c0, c1, c2, c3, c4,
+                            c5, det, rdet, tr = 0.0;
+  int held[4], h = 0, round;
+  sc_int i, j, k;
+  for (k = 0; k < 4; ++k) {
+    held[k] = p->state[k] == S_HELD;
+    if (held[k]) {
+      ++h;
+      if (p->G[k * 4 + k] > big) big = p->G[k * 4 + k];
+    } else {
+      const double q = p->par[3 * k];
+      p->lam[k] = p->state[k] == S_ZERO ? 0.0 : p->lam[k] >= 0 ? q : -q;
+    }
+  }
+  wvec(4, p);
+  if (h == 0) return 1;
+  for (i = 0; i < 4; ++i)
+    for (j = 0; j < 4; ++j) a[i * 4 + j] = held[i] && held[j] ? p->G[i * 4 + j] : i == j;
+#define A_(i, j) a[(i) * 4 + (j)]
+  s0 = A_(0, 0) * A_(1, 1) - A_(1, 0) * A_(0, 1);
+  s1 = A_(0, 0) * A_(1, 2) - A_(1, 0) * A_(0, 2);
+  s2 = A_(0, 0) * A_(1, 3) - A_(1, 0) * A_(0, 3);
+  s3 = A_(0, 1) * A_(1, 2) - A_(1, 1) * A_(0, 2);
+  s4 = A_(0, 1) * A_(1, 3) - A_(1, 1) * A_(0, 3);
+  s5 = A_(0, 2) * A_(1, 3) - A_(1, 2) * A_(0, 3);
+  c5 = A_(2, 2) * A_(3, 3) - A_(3, 2) * A_(2, 3);
+  c4 = A_(2, 1) * A_(3, 3) - A_(3, 1) * A_(2, 3);
+  c3 = A_(2, 1) * A_(3, 2) - A_(3, 1) * A_(2, 2);
+  c2 = A_(2, 0) * A_(3, 3) - A_(3, 0) * A_(2, 3);
+  c1 = A_(2, 0) * A_(3, 2) - A_(3, 0) * A_(2, 2);
+  c0 = A_(2, 0) * A_(3, 1) - A_(3, 0) * A_(2, 1);
+  det = (s0 * c5 - s1 * c4) + (s2 * c3 + s3 * c2) + (s5 * c0 - s4 * c1);
+  X[0] = A_(1, 1) * c5 - A_(1, 2) * c4 + A_(1, 3) * c3;
+  X[1] = -A_(0, 1) * c5 + A_(0, 2) * c4 - A_(0, 3) * c3;
+  X[2] = A_(3, 1) * s5 - A_(3, 2) * s4 + A_(3, 3) * s3;
+  X[3] = -A_(2, 1) * s5 + A_(2, 2) * s4 - A_(2, 3) * s3;
+  X[5] = A_(0, 0) * c5 - A_(0, 2) * c2 + A_(0, 3) * c1;
+  X[6] = -A_(3, 0) * s5 + A_(3, 2) * s2 - A_(3, 3) * s1;
+  X[7] = A_(2, 0) * s5 - A_(2, 2) * s2 + A_(2, 3) * s1;
+  X[10] = A_(3, 0) * s4 - A_(3, 1) * s2 + A_(3, 3) * s0;
+  X[11] = -A_(2, 0) * s4 + A_(2, 1) * s2 - A_(2, 3) * s0;
+  X[15] = A_(2, 0) * s3 - A_(2, 1) * s1 + A_(2, 2) * s0; /* (the leading 3 x 3 minor) */
+#undef A_
+  X[4] = X[1], X[8] = X[2], X[12] = X[3], X[9] = X[6], X[13] = X[7], X[14] = X[11];
+  if (!(a[0] > 0.0) || !(s0 > 0.0) || !(X[15] > 0.0) || !(det > 0.0) || !(det < INFINITY))
+    return 0;
+  rdet = 1.0 / det;
+  for (k = 0; k < 4; ++k) {
+    bigh *= held[k] ? big : 1.0;
+    tr += held[k] ? X[k * 5] : 0.0;
+  }
+  if (!(det > DEF_TOL * bigh) && !(tr * big * DEF_TOL < det)) return 0;
+  for (round = 0; round < 3; ++round) {
+    double fn = 0.0;
+    for (i = 0; i < 4; ++i) r[i] = held[i] ? -p->w[i] : 0.0;
+    for (i = 0; i < 4; ++i) /* (the other rows' d: +0, X's rows there the identity's times det) */
+      p->lam[i] += ((X[i * 4] * r[0] + X[i * 4 + 1] * r[1]) +
+                    (X[i * 4 + 2] * r[2] + X[i * 4 + 3] * r[3])) * rdet;
+    wvec(4, p);
+    for (i = 0; i < 4; ++i)
+      if (held[i]) fn = sc_max(fn, fabs(p->w[i]));
+    if (!(fn > 1e-14 * p->W) && (round || !(tr * big > 8.0 * det))) break;
+  }
+  return 1;
+}
+
 /* The piece's equations solved (scene_piece.c's piece and rounds for one-row blocks): the fixed
  * forces set, w = G lam + b, then lam_H += d with G_HH d = -w_H while max |w_H| > 1e-14 W, at
  * most three times. Returns 0 where G_HH is not certainly definite (nothing answered). */
@@ -116,6 +197,7 @@ TINY_FLAT int piece(const sc_int m, tiny *p) {
   double C[SC_TINY_M * SC_TINY_M], y[SC_TINY_M], rd[SC_TINY_M], big = 0.0, det = 1.0, rb;
   int held[SC_TINY_M], h = 0, round;
   sc_int i, j, k;
+  if (m == 4) return piece4(p);
   for (k = 0; k < m; ++k) {
     held[k] = p->state[k] == S_HELD;
     if (held[k]) {
@@ -179,35 +261,37 @@ TINY_FLAT int piece(const sc_int m, tiny *p) {
 }
 
 /* scene_solve.c's kkt for one-row blocks: the residuals (primal, dual, complementarity,
- * relative). */
+ * relative). Each is the largest of its rows' terms over one scale (F, W or F W); the
+ * division rounds monotonically, so the largest numerator divided once is the largest of the
+ * quotients, bit for bit, with three divisions instead of three a row. */
 TINY_FLAT void kkt(const sc_int m, const tiny *p, double *res) {
-  double pr = 0.0, du = 0.0, co = 0.0, F = p->F, W = p->W, e;
+  double pr = 0.0, du = 0.0, co = 0.0, e;
   sc_int k;
   for (k = 0; k < m; ++k) {
     const double q = p->par[3 * k], l = p->lam[k], w = p->w[k];
     switch (p->kind[k]) {
       case K_FREE:
-        du = sc_max(du, fabs(w) / W);
+        du = sc_max(du, fabs(w));
         break;
       case K_UNILATERAL:
-        pr = sc_max(pr, sc_max(0.0, -l) / F);
-        du = sc_max(du, sc_max(0.0, -w) / W);
-        co = sc_max(co, fabs(l * w) / (F * W));
+        pr = sc_max(pr, sc_max(0.0, -l));
+        du = sc_max(du, sc_max(0.0, -w));
+        co = sc_max(co, fabs(l * w));
         break;
       default: { /* K_BOX */
         const double x = q - fabs(l);
-        pr = sc_max(pr, sc_max(0.0, fabs(l) - q) / F);
+        pr = sc_max(pr, sc_max(0.0, fabs(l) - q));
         if (!(q > 0)) break; /* the set {0}: its normal cone is every w */
         if (fabs(l) < q) e = fabs(w);
         else e = l > 0 ? sc_max(0.0, w) : sc_max(0.0, -w);
-        du = sc_max(du, e / W);
-        co = sc_max(co, fabs((x < 0.0 ? x : 0.0) * w) / (F * W)); /* (fmin(x, 0.0)'s) */
+        du = sc_max(du, e);
+        co = sc_max(co, fabs((x < 0.0 ? x : 0.0) * w)); /* (fmin(x, 0.0)'s) */
       }
     }
   }
-  res[0] = pr;
-  res[1] = du;
-  res[2] = co;
+  res[0] = pr / p->F;
+  res[1] = du / p->W;
+  res[2] = co / (p->F * p->W);
 }
 
 /* scene_solve.c's kkt's switches for one-row blocks: the violated pieces switched (its rules

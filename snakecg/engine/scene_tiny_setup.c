@@ -80,7 +80,8 @@ TINY_FLAT void gram(const sc_int m, sc_int n, sc_int t, const double *restrict L
   const sc_int w = m + 1;
   double S[(SC_TINY_M + 1) * (SC_TINY_M + 1)];
   sc_int i, j, k;
-  for (j = 0; j < w * w; ++j) S[j] = 0.0;
+  TINY_UNROLL for (j = 0; j < w; ++j) /* (the sums below only: S zeroed whole, a rep stos) */
+    for (k = 0; k <= (j < m ? j : m - 1); ++k) S[j * w + k] = 0.0;
   for (i = 0; i < n; ++i) {
     double z[SC_TINY_M + 1], y[SC_TINY_M + 1];
     const double ri = r[i];
