@@ -272,6 +272,9 @@ print(json.dumps(log))
 '''
 
 
+# A long study (a compile killed at each of its steps in turn, about 6-9 min on a 2-core
+# machine): run with -m slow.
+@pytest.mark.slow
 @pytest.mark.skipif(not hasattr(os, "fork"), reason="needs os.fork to reach every kill point")
 @pytest.mark.skipif(native.find_compiler() is None, reason="no C compiler on this machine")
 def test_compile_killed_at_every_step_then_rebuilt(tmp_path, monkeypatch):
