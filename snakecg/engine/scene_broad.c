@@ -37,7 +37,7 @@
  * word: at most 64 bodies, the loop over words left out, the bodies from ib0 on). */
 #define SC_BROAD_MASKS(V, W, BITS)                                                          \
   const sc_int nw = sc_broad_words(nbody), pad = sc_broad_pad(nbody);                      \
-  const double tol2 = 2 * tol, widen = 1 + 1e-9;                                            \
+  const double tol2 = 2 * tol, widen = SC_BROAD_WIDEN;                                      \
   const V vt = tol2 - (V){0}, vw = widen - (V){0};                                          \
   sc_int ia, w, ib;                                                                         \
   for (ia = 0; ia < na; ++ia) {                                                             \
@@ -94,7 +94,7 @@ SC_INTERNAL void sc_broad_masks(const double *centre, const double *reach, doubl
 
 SC_INTERNAL sc_int sc_broad_pairs(const double *reach, double tol, sc_int na, sc_int nl,
                                   sc_int nbody, unsigned char (*pair)[2], double *far2) {
-  const double tol2 = 2 * tol, widen = 1 + 1e-9;
+  const double tol2 = 2 * tol, widen = SC_BROAD_WIDEN;
   sc_int ia, ib, k = 0;
   for (ia = 0; ia < na; ++ia)
     for (ib = ia + 1 + (ia + 1 < nl); ib < nbody; ++ib, ++k) {

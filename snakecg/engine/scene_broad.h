@@ -24,6 +24,9 @@ SC_INTERNAL void sc_broad_masks(const double *centre, const double *reach, doubl
  * (sc_broad_pairs), without the masks: the paper's scene (4 links, a disc) tests 7 pairs a
  * sample, fewer operations than one call of sc_broad_masks, and its scalar loads read the
  * circles just stored by scalar stores (a vector load of them waits for the stores). */
+/* a pair's far widened by this factor (both tests: the masks and the pairs' table) */
+#define SC_BROAD_WIDEN (1 + 1e-9)
+
 enum { SC_BROAD_FEW = 8, SC_BROAD_PAIRS = SC_BROAD_FEW * (SC_BROAD_FEW - 1) / 2 };
 
 /* With nbody <= SC_BROAD_FEW, the pairs of sc_broad_masks in its order (ia < na, then ib)
