@@ -8,6 +8,7 @@
  * 2-D set's boundary by a direction (the sliding pieces' unknowns). Used by scene_solve.c.
  */
 #include <math.h>
+#include <string.h>
 
 #include "snakecg_layout.h"
 #include "engine.h"
@@ -111,21 +112,264 @@ static sc_int null_space(sc_int n, double *A, double *V, double *work, sc_int *p
   return nn;
 }
 
+/* The projection of x onto block k's set (a contact's half-line, a box, a disc, a split
+ * ellipse whose halves have extent; FREE: x) into
+ * pl, and the part of the Newton capacitance of min_norm_in_sets that the block adds (cap,
+ * nk x nk, row-major: W^-1 - I for the projection's derivative D = I - W, zero where D = 0).
+ * Returns 1 where x is outside the set (D is not I: the block enters the capacitance). */
+static int project(const sc_problem *p, sc_int k, const double *x, double *pl, double *cap) {
+  const double *q = p->par + 3 * k;
+  double r, s;
+  switch (p->kind[k]) {
+    case K_UNILATERAL:
+      pl[0] = x[0] > 0 ? x[0] : 0.0;
+      cap[0] = 0.0;
+      return !(x[0] >= 0);
+    case K_BOX:
+      pl[0] = fmax(-q[0], fmin(q[0], x[0]));
+      cap[0] = 0.0;
+      return !(fabs(x[0]) <= q[0]);
+    case K_DISC:
+      r = sqrt(x[0] * x[0] + x[1] * x[1]);
+      if (r <= q[0]) break;
+      if (!(q[0] > 0)) { /* the set {0}: D = 0 */
+        pl[0] = pl[1] = 0.0;
+        cap[0] = cap[1] = cap[2] = cap[3] = 0.0;
+        return 1;
+      }
+      /* D = (rho / r)(I - u u^T): along u W = 1, across 1 - rho / r, so W^-1 - I is
+       * t t^T rho / (r - rho) with t = (-u1, u0) */
+      pl[0] = q[0] * x[0] / r;
+      pl[1] = q[0] * x[1] / r;
+      s = q[0] / (r - q[0]) / (r * r);
+      cap[0] = s * x[1] * x[1];
+      cap[1] = cap[2] = -s * x[0] * x[1];
+      cap[3] = s * x[0] * x[0];
+      return 1;
+    case K_SPLIT: { /* the half that x points into (projecting keeps the signs): the
+      ellipse's point p_i = b_i x_i, b_i = a_i^2 / (a_i^2 + g), g >= 0 the root of
+      sum x_i^2 a_i^2 / (a_i^2 + g)^2 = 1 (decreasing and convex in g: Newton from 0 rises
+      to it); D = B - B n n^T B / (n^T B n) with the normal n = P p (D n = 0) */
+      const double a0 = x[0] < 0 ? q[0] : q[1], a1 = q[2], e0 = a0 * a0, e1 = a1 * a1;
+      double g = 0.0, b0, b1, n0, n1, bn0, bn1, nbn, d00, d01, d11, w00, w01, w11, det;
+      int it;
+      if ((x[0] / a0) * (x[0] / a0) + (x[1] / a1) * (x[1] / a1) <= 1.0) break;
+      for (it = 0; it < 100; ++it) {
+        const double c0 = x[0] * a0 / (e0 + g), c1 = x[1] * a1 / (e1 + g),
+                     h = c0 * c0 + c1 * c1 - 1.0,
+                     dh = -2.0 * (c0 * c0 / (e0 + g) + c1 * c1 / (e1 + g)), step = -h / dh;
+        g += step;
+        if (!(step > 1e-16 * g)) break;
+      }
+      b0 = e0 / (e0 + g);
+      b1 = e1 / (e1 + g);
+      pl[0] = b0 * x[0];
+      pl[1] = b1 * x[1];
+      n0 = pl[0] / e0;
+      n1 = pl[1] / e1;
+      bn0 = b0 * n0;
+      bn1 = b1 * n1;
+      nbn = n0 * bn0 + n1 * bn1;
+      d00 = b0 - bn0 * bn0 / nbn;
+      d01 = -bn0 * bn1 / nbn;
+      d11 = b1 - bn1 * bn1 / nbn;
+      w00 = 1.0 - d00; /* W = I - D, cap = W^-1 - I */
+      w01 = -d01;
+      w11 = 1.0 - d11;
+      det = w00 * w11 - w01 * w01;
+      cap[0] = w11 / det - 1.0;
+      cap[1] = cap[2] = -w01 / det;
+      cap[3] = w00 / det - 1.0;
+      return 1;
+    }
+    default: break;
+  }
+  pl[0] = x[0];
+  if (sc_block_size(p->kind[k]) == 2) pl[1] = x[1];
+  return 0;
+}
+
+/* The null vectors V (nn, orthonormal, V + t nf) of the face's rows F0 refined against Z_F
+ * itself: G_FF's null vectors carry G's rounding, which forces moved far along them bring into
+ * the accelerations. Each v less its part in the range of Z_F^T (Z_F^T x with
+ * Z_F Z_F^T x = Z_F v: any solution gives the same Z_F^T x), then orthonormalized again.
+ * Work: n^2 + 3 n doubles. */
+static void refine_null(const sc_problem *p, const double *Z, sc_int nf, const sc_int *F0,
+                        double *V, sc_int nn, double *work) {
+  const sc_int n = p->n, m = p->m;
+  double *Gz = work, *zr = Gz + n * n, *zx = zr + n, *zw = zx + n;
+  sc_int perm[512], i, j, t, rz = 0;
+  for (i = 0; i < n; ++i)
+    for (j = 0; j <= i; ++j) {
+      double c = 0.0;
+      for (t = 0; t < nf; ++t) c += Z[i * m + F0[t]] * Z[j * m + F0[t]];
+      Gz[i * n + j] = c;
+    }
+  for (t = 0; t < nn; ++t) {
+    double *v = V + t * nf;
+    for (i = 0; i < n; ++i) {
+      double c = 0.0;
+      for (j = 0; j < nf; ++j) c += Z[i * m + F0[j]] * v[j];
+      zr[i] = c;
+    }
+    if (t == 0)
+      rz = sc_psd_solve(n, Gz, n, zr, 1e-14, zx, zw, perm);
+    else
+      sc_psd_resolve(n, Gz, n, rz, perm, 1, zr, zx, zw);
+    for (j = 0; j < nf; ++j) {
+      double c = 0.0;
+      for (i = 0; i < n; ++i) c += Z[i * m + F0[j]] * zx[i];
+      v[j] -= c;
+    }
+  }
+  for (t = 0; t < nn; ++t) {
+    int pass;
+    double nrm = 0.0;
+    for (pass = 0; pass < 2; ++pass)
+      for (j = 0; j < t; ++j) {
+        double d = 0.0;
+        for (i = 0; i < nf; ++i) d += V[j * nf + i] * V[t * nf + i];
+        for (i = 0; i < nf; ++i) V[t * nf + i] -= d * V[j * nf + i];
+      }
+    for (i = 0; i < nf; ++i) nrm += V[t * nf + i] * V[t * nf + i];
+    nrm = sqrt(nrm);
+    for (i = 0; i < nf; ++i) V[t * nf + i] /= nrm;
+  }
+}
+
+/* The minimum-norm forces inside the sets on a face whose unconstrained minimum-norm forces l0
+ * (nf rows, fk: their blocks) leave them: min 1/2 |lam|^2 over lam in K with lam - l0 in the
+ * null space V (nn orthonormal vectors, V + t nf; l0 orthogonal to it). Its dual over mu in
+ * V's orthogonal complement, concave and once differentiable,
+ *     d(mu) = mu . (l0 - Pi(mu)) + 1/2 |Pi(mu)|^2,   Pi: the projection onto K (blockwise),
+ * has the gradient (I - V V^T)(l0 - Pi(mu)) = -F, and lam = Pi(mu*) at its maximiser. A
+ * semismooth Newton solves F = 0: the Newton matrix (I - V V^T) D on the complement, D = I - E
+ * the projection's derivative, E nonzero on the few blocks outside their sets only, so the
+ * step comes from a capacitance matrix of their rows alone (Woodbury):
+ *     delta = -F - (I - V V^T) S C^-1 S^T F,   C = (W^-1 - I) + V_S V_S^T,
+ * S selecting those rows (C by the pivoted L D L^T: its dependent rows dropped), the step
+ * halved while d does not rise. Returns 1 with the forces in lam (nf) once |F| is at rounding,
+ * 0 when not (a split ellipse with a half of no extent, not projected here; or no progress).
+ * Work: 2 nf^2 + 9 nf doubles. */
+static int min_norm_in_sets(const sc_problem *p, sc_int nf, const sc_int *fk, const double *l0,
+                            const double *V, sc_int nn, double *lam, double *work) {
+  double *mu = work, *pi = mu + nf, *F = pi + nf, *del = F + nf, *tr = del + nf,
+         *cap = tr + nf, *C = cap + 4 * nf, *VS = C + nf * nf, *x = VS + nf * nn, *y = x + nf,
+         *sw = y + nf;
+  sc_int S[512], perm[512], cs[512], ns = 0, it, i, j, t, stalls = 0;
+  double scale = p->fscale, dv = 0.0, fprev = INFINITY;
+  for (i = 0; i < nf; i += sc_block_size(p->kind[fk[i]])) { /* (a split ellipse with a
+    half of no extent: not projected here) */
+    const double *q = p->par + 3 * fk[i];
+    if (p->kind[fk[i]] == K_SPLIT && !(q[0] > 0 && q[1] > 0 && q[2] > 0)) return 0;
+  }
+  for (i = 0; i < nf; ++i)
+    if (fabs(l0[i]) > scale) scale = fabs(l0[i]);
+  memcpy(mu, l0, sizeof(double) * (size_t)nf);
+  for (it = 0; it < 60; ++it) {
+    double fn = 0.0, slope = 0.0, st = 1.0;
+    sc_int ls, rank;
+    if (it == 0) { /* (later iterates: the accepted trial's, below) */
+      ns = 0;
+      for (i = 0; i < nf; i += sc_block_size(p->kind[fk[i]]))
+        if (project(p, fk[i], mu + i, pi + i, cap + 4 * ns)) {
+          cs[ns] = i; /* (the block's first row; cap + 4 its entries) */
+          ns++;
+        }
+      dv = 0.0;
+      for (i = 0; i < nf; ++i) dv += mu[i] * (l0[i] - pi[i]) + 0.5 * pi[i] * pi[i];
+    }
+    for (i = 0; i < nf; ++i) F[i] = pi[i] - l0[i];
+    for (t = 0; t < nn; ++t) { /* F = (I - V V^T)(Pi - l0) */
+      double c = 0.0;
+      for (i = 0; i < nf; ++i) c += V[t * nf + i] * F[i];
+      for (i = 0; i < nf; ++i) F[i] -= c * V[t * nf + i];
+    }
+    for (i = 0; i < nf; ++i) fn = fmax(fn, fabs(F[i]));
+    if (fn <= 1e-14 * scale) return memcpy(lam, pi, sizeof(double) * (size_t)nf), 1;
+    { /* the capacitance's rows S: every row of a block outside its set */
+      sc_int r = 0, b;
+      for (b = 0; b < ns; ++b)
+        for (j = 0; j < sc_block_size(p->kind[fk[cs[b]]]); ++j) S[r++] = cs[b] + j;
+      for (i = 0; i < r; ++i) {
+        for (t = 0; t < nn; ++t) VS[i * nn + t] = V[t * nf + S[i]];
+        x[i] = F[S[i]];
+      }
+      for (i = 0; i < r; ++i)
+        for (j = 0; j <= i; ++j) {
+          double c = 0.0;
+          for (t = 0; t < nn; ++t) c += VS[i * nn + t] * VS[j * nn + t];
+          C[i * r + j] = c;
+        }
+      for (b = 0, i = 0; b < ns; ++b) { /* (W^-1 - I: blockwise on the diagonal) */
+        if (sc_block_size(p->kind[fk[cs[b]]]) == 2) {
+          C[i * r + i] += cap[4 * b];
+          C[(i + 1) * r + i] += cap[4 * b + 2];
+          C[(i + 1) * r + i + 1] += cap[4 * b + 3];
+          i += 2;
+        } else
+          C[i * r + i] += cap[4 * b], ++i;
+      }
+      rank = r > 0 ? sc_psd_solve(r, C, r, x, 1e-13, y, sw, perm) : 0;
+      (void)rank;
+      for (i = 0; i < nf; ++i) del[i] = 0.0;
+      for (i = 0; i < r; ++i) del[S[i]] = y[i];
+      for (t = 0; t < nn; ++t) { /* del = -F - (I - V V^T) S y */
+        double c = 0.0;
+        for (i = 0; i < r; ++i) c += VS[i * nn + t] * y[i];
+        for (i = 0; i < nf; ++i) del[i] -= c * V[t * nf + i];
+      }
+      for (i = 0; i < nf; ++i) {
+        del[i] = -F[i] - del[i];
+        slope -= F[i] * del[i];
+      }
+    }
+    if (fn > 0.999 * fprev) { /* (the Newton step no longer moves F, where the Newton
+      matrix is singular: a step of steepest ascent instead, d's gradient being 1-Lipschitz;
+      given up after three such steps in a row: a dual maximum not attained) */
+      if (++stalls > 3) return 0;
+      slope = 0.0;
+      for (i = 0; i < nf; ++i) del[i] = -F[i], slope += F[i] * F[i];
+    } else
+      stalls = 0;
+    fprev = fn;
+    if (!(slope > 0)) return 0;
+    for (ls = 0; ls < 40; ++ls, st *= 0.5) { /* the step, halved while d does not rise */
+      double dt = 0.0;
+      sc_int nt = 0;
+      for (i = 0; i < nf; ++i) tr[i] = mu[i] + st * del[i];
+      for (i = 0; i < nf; i += sc_block_size(p->kind[fk[i]]))
+        if (project(p, fk[i], tr + i, pi + i, cap + 4 * nt)) cs[nt++] = i;
+      for (i = 0; i < nf; ++i) dt += tr[i] * (l0[i] - pi[i]) + 0.5 * pi[i] * pi[i];
+      if (dt >= dv + 1e-4 * st * slope - 1e-15 * (fabs(dv) + scale * scale)) {
+        memcpy(mu, tr, sizeof(double) * (size_t)nf);
+        ns = nt;
+        dv = dt;
+        break;
+      }
+    }
+    if (ls == 40) return 0;
+  }
+  return 0;
+}
+
 /* Minimum-norm forces on the face (every block whose rows do not accelerate: the forces of
  * the others are fixed by the unique accelerations): lam_F -= N N^T lam_F, N the null space
  * of G_FF (null_space: pivots at most NULL_TOL of the first). Where that leaves a force's set
  * and the null space is one direction v, the minimum of |lam_F + t v| over the t that keep
  * every held force in its set (an interval holding 0, its ends found by bisection to
- * rounding) is taken instead. Z = L^-1 A^T (n x m, scene_solve.c's) checks that the choice
- * keeps the accelerations. Returns 0 when the face's rows are independent (nothing to
- * choose), 1 when the minimum-norm forces were found, 2 when not (a larger null space whose
- * unconstrained minimum leaves the set: the face's basic solution stays). p->w is read (the
- * face) and left as it was: the caller takes w of the new forces where it reads it. */
+ * rounding) is taken instead; with more null directions, the minimum-norm forces inside the
+ * sets (min_norm_in_sets). Z = L^-1 A^T (n x m, scene_solve.c's) checks that the choice keeps
+ * the accelerations (tried once more with the null space refined against Z). Returns 0 when
+ * the face's rows are independent (nothing to choose), 1 when the minimum-norm forces were
+ * found, 2 when not (a degenerate split ellipse on the face, or the choice not found to
+ * rounding: the face's basic solution stays). p->w is read (the face) and left as it was:
+ * the caller takes w of the new forces where it reads it. */
 SC_INTERNAL int sc_min_norm_face(sc_problem *p, const double *Z, double *work) {
   const sc_int m = p->m;
-  sc_int F[512], fk[512], perm[512], nf = 0, i, j, k, t, nnull = 0, tnull = -1;
+  sc_int F[512], fk[512], perm[512], nf = 0, i, j, k, t, nnull = 0, tnull;
   double *A, *V, *ev, *l0;
-  int inside = 1;
+  int attempt;
   for (k = 0; k < p->nb; ++k) { /* the face: every block whose rows do not accelerate */
     if (p->state[k] != S_HELD && !sc_still(p, k)) continue;
     for (i = 0; i < sc_block_size(p->kind[k]) && nf < 512; ++i) {
@@ -141,64 +385,70 @@ SC_INTERNAL int sc_min_norm_face(sc_problem *p, const double *Z, double *work) {
   for (i = 0; i < nf; ++i) /* (the lower triangle: all that null_space reads) */
     for (j = 0; j <= i; ++j) A[i * nf + j] = p->G[F[i] * m + F[j]];
   nnull = null_space(nf, A, V, ev, perm);
-  for (i = 0; i < nf; ++i) l0[i] = p->lam[F[i]];
-  for (t = 0; t < nnull; ++t) {
-    double s;
-    tnull = t;
-    s = 0.0;
-    for (i = 0; i < nf; ++i) s += V[t * nf + i] * l0[i];
-    for (i = 0; i < nf; ++i) l0[i] -= s * V[t * nf + i];
-  }
   if (nnull == 0) return 0;
-  for (i = 0; i < nf; i += sc_block_size(p->kind[fk[i]]))
-    if (!sc_in_set(p, fk[i], l0 + i, 1e-13, 1)) inside = 0;
-  if (!inside) {
-    double tstar = 0.0, lim[2];
-    int side;
-    if (nnull != 1) return 2;
-    for (i = 0; i < nf; ++i) tstar -= V[tnull * nf + i] * p->lam[F[i]];
-    for (side = 0; side < 2; ++side) { /* the interval's ends: every block stays in its set */
-      double dir = side ? 1.0 : -1.0, lo = 0.0, hi = 1.0, l[2];
-      int it, ok = 1;
-      for (it = 0; it < 80 && ok; ++it) { /* grow until one block leaves */
-        for (i = 0; i < nf && ok; i += sc_block_size(p->kind[fk[i]])) {
-          l[0] = p->lam[F[i]] + dir * hi * V[tnull * nf + i];
-          if (sc_block_size(p->kind[fk[i]]) == 2)
-            l[1] = p->lam[F[i + 1]] + dir * hi * V[tnull * nf + i + 1];
-          if (!sc_in_set(p, fk[i], l, 1e-12, 0)) ok = 0;
-        }
-        if (ok) { lo = hi; hi *= 2.0 * (1.0 + p->fscale); }
-      }
-      if (ok) { lim[side] = INFINITY; continue; }
-      for (it = 0; it < 200 && hi - lo > 1e-15 * hi; ++it) {
-        double mid = 0.5 * (lo + hi);
-        int in = 1;
-        for (i = 0; i < nf && in; i += sc_block_size(p->kind[fk[i]])) {
-          l[0] = p->lam[F[i]] + dir * mid * V[tnull * nf + i];
-          if (sc_block_size(p->kind[fk[i]]) == 2)
-            l[1] = p->lam[F[i + 1]] + dir * mid * V[tnull * nf + i + 1];
-          if (!sc_in_set(p, fk[i], l, 1e-12, 0)) in = 0;
-        }
-        if (in) lo = mid; else hi = mid;
-      }
-      lim[side] = lo;
-    }
-    tstar = fmax(-lim[0], fmin(lim[1], tstar));
-    for (i = 0; i < nf; ++i) l0[i] = p->lam[F[i]] + tstar * V[tnull * nf + i];
-    for (i = 0; i < nf; i += sc_block_size(p->kind[fk[i]])) /* rounding onto the sets */
-      sc_in_set(p, fk[i], l0 + i, INFINITY, 1);
-  }
-  { /* the forces may change only along A^T's null space: the accelerations stay put to
-       rounding, |A_F^T dlam|^2_{M^-1} = |Z_F dlam|^2 (else the choice is refused; summed
-       as squares, its rounding is that of Z dlam squared: dlam^T G_FF dlam would carry G's
-       rounding times |dlam|^2, far above the bound) */
+  tnull = nnull - 1;
+  for (attempt = 0;; ++attempt) { /* (again with V refined where the choice moves the
+    accelerations beyond rounding) */
     double quad = 0.0;
+    int inside = 1;
+    if (attempt == 1) refine_null(p, Z, nf, F, V, nnull, l0 + nf);
+    for (i = 0; i < nf; ++i) l0[i] = p->lam[F[i]];
+    for (t = 0; t < nnull; ++t) {
+      double s = 0.0;
+      for (i = 0; i < nf; ++i) s += V[t * nf + i] * l0[i];
+      for (i = 0; i < nf; ++i) l0[i] -= s * V[t * nf + i];
+    }
+    for (i = 0; i < nf; i += sc_block_size(p->kind[fk[i]]))
+      if (!sc_in_set(p, fk[i], l0 + i, 1e-13, 1)) inside = 0;
+    if (!inside && (nnull > 1 || attempt == 1)) { /* the minimum inside the sets, by its
+      dual's Newton */
+      if (!min_norm_in_sets(p, nf, fk, l0, V, nnull, l0, l0 + nf)) return 2;
+    } else if (!inside) { /* one null direction: the forces' interval along it */
+      double tstar = 0.0, lim[2];
+      int side;
+      for (i = 0; i < nf; ++i) tstar -= V[tnull * nf + i] * p->lam[F[i]];
+      for (side = 0; side < 2; ++side) { /* the interval's ends: every block stays in its set */
+        double dir = side ? 1.0 : -1.0, lo = 0.0, hi = 1.0, l[2];
+        int it, ok = 1;
+        for (it = 0; it < 80 && ok; ++it) { /* grow until one block leaves */
+          for (i = 0; i < nf && ok; i += sc_block_size(p->kind[fk[i]])) {
+            l[0] = p->lam[F[i]] + dir * hi * V[tnull * nf + i];
+            if (sc_block_size(p->kind[fk[i]]) == 2)
+              l[1] = p->lam[F[i + 1]] + dir * hi * V[tnull * nf + i + 1];
+            if (!sc_in_set(p, fk[i], l, 1e-12, 0)) ok = 0;
+          }
+          if (ok) { lo = hi; hi *= 2.0 * (1.0 + p->fscale); }
+        }
+        if (ok) { lim[side] = INFINITY; continue; }
+        for (it = 0; it < 200 && hi - lo > 1e-15 * hi; ++it) {
+          double mid = 0.5 * (lo + hi);
+          int in = 1;
+          for (i = 0; i < nf && in; i += sc_block_size(p->kind[fk[i]])) {
+            l[0] = p->lam[F[i]] + dir * mid * V[tnull * nf + i];
+            if (sc_block_size(p->kind[fk[i]]) == 2)
+              l[1] = p->lam[F[i + 1]] + dir * mid * V[tnull * nf + i + 1];
+            if (!sc_in_set(p, fk[i], l, 1e-12, 0)) in = 0;
+          }
+          if (in) lo = mid; else hi = mid;
+        }
+        lim[side] = lo;
+      }
+      tstar = fmax(-lim[0], fmin(lim[1], tstar));
+      for (i = 0; i < nf; ++i) l0[i] = p->lam[F[i]] + tstar * V[tnull * nf + i];
+      for (i = 0; i < nf; i += sc_block_size(p->kind[fk[i]])) /* rounding onto the sets */
+        sc_in_set(p, fk[i], l0 + i, INFINITY, 1);
+    }
+    /* the forces may change only along A^T's null space: the accelerations stay put to
+     * rounding, |A_F^T dlam|^2_{M^-1} = |Z_F dlam|^2 (else the choice is tried again with V
+     * refined, then refused; summed as squares, its rounding is that of Z dlam squared:
+     * dlam^T G_FF dlam would carry G's rounding times |dlam|^2, far above the bound) */
     for (t = 0; t < p->n; ++t) {
       double t2 = 0.0;
       for (j = 0; j < nf; ++j) t2 += Z[t * m + F[j]] * (l0[j] - p->lam[F[j]]);
       quad += t2 * t2;
     }
-    if (!(quad <= 1e-26 * p->wscale * p->fscale)) return 2;
+    if (quad <= 1e-26 * p->wscale * p->fscale) break;
+    if (attempt == 1) return 2;
   }
   for (i = 0; i < nf; ++i) p->lam[F[i]] = l0[i];
   return 1;

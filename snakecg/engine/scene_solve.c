@@ -480,7 +480,8 @@ answered:
 void SNAKECG_EXPORT(core_scene_solve_work)(sc_int n, sc_int m, sc_int nb, sc_int *nd, sc_int *ni) {
   sc_int u = m + nb;
   *nd = n * n + n * m + m * m + m + nb + (u * u + 3 * u + 2 * m * m + 3 * m + 16) +
-        2 * m + sc_primal_work(n, m);
+        2 * m + sc_primal_work(n, m) + (2 * m * m + 12 * m + n * n + 3 * n); /* (the last: scene_sets.c's
+        minimum-norm forces inside the sets) */
   *ni = nb + 4 * (m + nb) + 16 + n;
 }
 

@@ -48,8 +48,9 @@ class SceneResult:
     (``(N, n_s)``); ``a_obj`` ``(..., n_objects, 3)``; per sample the ``contacts``, ``ground``
     rows and ``objects`` as lists of dicts (for a batch, a list of them per sample);
     ``certificate``: the KKT residuals (relative primal, dual, complementarity),
-    ``dependent``: the held rows were dependent (statically indeterminate; forces
-    minimum-norm on the face: 1, or not attained: 2), ``status`` (:data:`STATUS_NAMES`) and
+    ``dependent``: the held rows were dependent (statically indeterminate; the forces the
+    minimum-norm ones inside their sets: 1, or not found to rounding, a basic solution of
+    the face kept: 2), ``status`` (:data:`STATUS_NAMES`) and
     ``reason`` (why a sample was not solved, '' when it was). With contact friction
     (``mu_contact``), ``uniqueness``: ``unique`` (certified: every piece was enumerated and
     one solution meets Coulomb's conditions), ``several`` (enumeration found others: the

@@ -237,7 +237,7 @@ class GeneralSceneModel(RobotModel):
         is solved again as one call, so each sample starts from the same neighbour's pieces
         as in the forward and meets the same forces; a one-sample result taken from a batch
         (:meth:`SceneResult.sample`) is solved from scratch, and where its forces are one
-        basic solution of a dependent face (flag 2) it may meet another one."""
+        basic solution of a dependent face (flag 2, rare) it may meet another one."""
         pk = self.packed
         N = out.shape[0]
         n = self.n_coordinates + 3 * self.scene.n_objects

@@ -1,0 +1,124 @@
+"""Statically indeterminate scenes: a snake whose links all rub the ground with Coulomb
+friction, pressed on pegs and pushing two objects, has more held force rows than coordinates
+at most torques. The forces are then not fixed by the accelerations; the solve reports the
+minimum-norm ones inside the friction and contact sets. Checked against an independent conic
+reference (cvxpy with Clarabel) that knows nothing of the solve's faces or null spaces."""
+from __future__ import annotations
+
+import warnings
+
+import numpy as np
+import pytest
+
+import snakecg
+from snakecg.scenes import GeneralScene, Ground, Obstacle, SceneObject
+
+from scenes_reference import BOX, DISC, SPLIT, UNILATERAL, dense_problem
+
+
+GROUNDS = {"coulomb": Ground(model="coulomb", mu=0.3),
+           "anisotropic": Ground(model="anisotropic", mu_forward=0.1, mu_backward=0.3,
+                                 mu_lateral=0.5)}
+
+
+def _braced_scene(joints: int, q, ground="coulomb"):
+    """Belly friction on every link, a box and a disc touching the two ends, and four pegs
+    touching links on alternating sides (each peg 0.03 m from the link's axis)."""
+    robot = snakecg.Robot(joints=joints)
+    objects = (SceneObject(shape="box", size=(0.1, 0.08), mass=2.0, mu=0.2,
+                           touching={"link": 1, "offset": 0.075, "side": "left"}),
+               SceneObject(shape="disc", radius=0.04, mass=1.0, mu=0.2,
+                           touching={"link": joints + 1, "offset": 0.075, "side": "right"}))
+    P = snakecg.load(robot).link_poses(q)
+    pegs = []
+    for k in range(4):
+        x, y, phi = P[1 + (k * (joints - 1)) // 4]
+        n = np.array([-np.sin(phi), np.cos(phi)]) * (1.0 if k % 2 else -1.0)
+        c = np.array([x, y]) + 0.03 * n
+        pegs.append(Obstacle(shape="peg", center=(float(c[0]), float(c[1])), radius=0.03))
+    return GeneralScene(robot, ground=GROUNDS[ground], objects=objects, obstacles=tuple(pegs))
+
+
+def _min_norm_reference(p, lam_star):
+    """min |lam|^2 over every force that gives the same generalized constraint force
+    (A^T lam = A^T lam*) inside the sets. The forces of a block whose rows accelerate
+    (|w| above 1e-9 of the scale) are held at lam*: complementarity and maximum dissipation
+    fix them given the unique accelerations (a sliding disc's force opposes its sliding, a
+    contact that opens carries none). Clarabel, in cvxpy."""
+    import cvxpy as cp
+
+    w = p["G"] @ lam_star + p["b"]
+    W = max(1.0, np.abs(w).max())
+    x = cp.Variable(len(lam_star))
+    cons = [p["A"].T @ x == p["A"].T @ lam_star]
+    for kind, s, par in p["blocks"]:
+        nk = 2 if kind >= DISC else 1
+        if np.abs(w[s:s + nk]).max() > 1e-9 * W:
+            cons.append(x[s:s + nk] == lam_star[s:s + nk])
+        elif kind == UNILATERAL:
+            cons.append(x[s] >= 0)
+        elif kind == BOX:
+            cons.append(cp.abs(x[s]) <= par[0])
+        elif kind == DISC:
+            cons.append(cp.norm(x[s:s + 2]) <= par[0])
+        elif kind == SPLIT:  # semi-axes par[0] backward (x <= 0), par[1] forward, par[2] across
+            sp, sm = cp.Variable(nonneg=True), cp.Variable(nonneg=True)
+            cons += [x[s] == sp - sm,
+                     cp.norm(cp.hstack([sm / par[0], sp / par[1], x[s + 1] / par[2]])) <= 1]
+    prob = cp.Problem(cp.Minimize(cp.sum_squares(x)), cons)
+    for tol in (1e-12, 1e-10):  # retried looser where Clarabel stops short of 1e-12
+        with warnings.catch_warnings():  # "may be inaccurate": the retry's reason
+            warnings.simplefilter("ignore", UserWarning)
+            prob.solve(solver="CLARABEL", tol_gap_abs=tol, tol_gap_rel=tol, tol_feas=tol,
+                       max_iter=500)
+        if prob.status == "optimal":
+            break
+    return x.value, prob.status
+
+
+@pytest.mark.parametrize("ground", sorted(GROUNDS))
+def test_indeterminate_forces_are_the_minimum_norm_ones_inside_the_sets(ground):
+    """On the braced 8-joint scene (isotropic or anisotropic Coulomb friction on every link:
+    more force rows than its 17 coordinates), most torques leave the held rows dependent.
+    The forces are then the minimum-norm ones inside the sets (flag 1) on all but a few
+    samples: equal to Clarabel's to 1e-6 of their scale and no larger in norm."""
+    joints = 8
+    q = np.r_[0.0, 0.0, 0.0, 0.25 * np.sin(np.arange(joints) + 5)]
+    model = snakecg.load(_braced_scene(joints, q, ground))
+    T = np.random.default_rng(7).normal(0, 0.1, (60, joints))
+    flags, checked = [], 0
+    for tau in T:
+        res = model.forward(q, tau)
+        assert res.status == 0, res.reason
+        flags.append(int(res.dependent))
+        if res.dependent != 1 or checked == 25:
+            continue
+        p = dense_problem(res, model, tau)
+        lam = res._raw["lam"][0][:len(p["b"])]
+        ref, status = _min_norm_reference(p, lam)
+        assert status == "optimal", status
+        scale = np.abs(ref).max()
+        assert np.abs(lam - ref).max() <= 1e-6 * scale
+        assert np.linalg.norm(lam) <= np.linalg.norm(ref) * (1 + 1e-9)
+        checked += 1
+    flags = np.bincount(flags, minlength=3)
+    assert checked == 25
+    assert flags[1] + flags[2] >= 40, flags  # (the scene is indeterminate at most torques)
+    assert flags[2] <= 3, flags  # (a basic solution kept: the Newton gave up)
+
+
+def test_indeterminate_forces_are_the_same_in_a_batch_as_alone():
+    """The minimum-norm forces are unique, so a batch (whose samples start from their
+    neighbours' pieces and may end on another basic solution of a face) reports the forces of
+    the one-sample calls to rounding, not merely the same accelerations."""
+    joints = 8
+    q = np.r_[0.0, 0.0, 0.0, 0.25 * np.sin(np.arange(joints) + 5)]
+    model = snakecg.load(_braced_scene(joints, q))
+    T = np.random.default_rng(8).normal(0, 0.1, (40, joints))
+    batch = model.forward(np.repeat(q[None], len(T), axis=0), T)
+    for i, tau in enumerate(T):
+        one = model.forward(q, tau)
+        if one.dependent == 2 or batch.dependent[i] == 2:
+            continue
+        a, b = one._raw["lam"][0], batch._raw["lam"][i][:len(one._raw["lam"][0])]
+        assert np.abs(a - b).max() <= 1e-11 * np.abs(a).max()
