@@ -273,38 +273,43 @@ def clarabel_accelerations(p, tol=1e-11):
 
 
 def clarabel_min_norm_forces(p, lam_star):
-    """The minimum-norm forces among all that give the same accelerations (A^T lam = A^T
-    lam*, lam in the sets), in cvxpy (Clarabel): the statically indeterminate case's
+    """The minimum-norm forces among all optimal ones, in cvxpy (Clarabel): every force inside
+    the sets that gives the same generalized constraint force (A^T lam = A^T lam*), the forces
+    of a block whose rows accelerate (|w| above 1e-9 of the scale) held at lam*, since
+    complementarity and maximum dissipation fix them given the unique accelerations (a
+    sliding disc's force opposes its sliding, a contact that opens carries none; a reference
+    free to move them trades a feasibility error of 1e-7 for a smaller norm, as a slowly
+    sliding disc pins its force only to second order). The statically indeterminate case's
     reference."""
     import cvxpy as cp
 
-    A = p["A"]
-    _, sv, Vt = np.linalg.svd(A.T)  # lam = lam* + N t, N spanning the null space of A^T
-    rank = int(np.sum(sv > 1e-10 * sv.max()))
-    N = Vt[rank:].T
-    t = cp.Variable(N.shape[1])
-    lam = lam_star + N @ t
-    cons = []
+    w = p["G"] @ lam_star + p["b"]
+    W = max(1.0, np.abs(w).max())
+    x = cp.Variable(len(lam_star))
+    cons = [p["A"].T @ x == p["A"].T @ lam_star]
     for kind, s, par in p["blocks"]:
-        if kind == UNILATERAL:
-            cons.append(lam[s] >= 0)
+        nk = 2 if kind >= DISC else 1
+        if np.abs(w[s:s + nk]).max() > 1e-9 * W:
+            cons.append(x[s:s + nk] == lam_star[s:s + nk])
+        elif kind == UNILATERAL:
+            cons.append(x[s] >= 0)
         elif kind == BOX:
-            cons.append(cp.abs(lam[s]) <= par[0])
+            cons.append(cp.abs(x[s]) <= par[0])
         elif kind == DISC:
-            cons.append(cp.norm(lam[s:s + 2]) <= par[0])
-        elif kind == SPLIT:
+            cons.append(cp.norm(x[s:s + 2]) <= par[0])
+        elif kind == SPLIT:  # semi-axes par[0] backward (x <= 0), par[1] forward, par[2] across
             sp, sm = cp.Variable(nonneg=True), cp.Variable(nonneg=True)
-            cons += [lam[s] == sp - sm,
-                     cp.norm(cp.hstack([sm / par[0], sp / par[1], lam[s + 1] / par[2]])) <= 1]
-    prob = cp.Problem(cp.Minimize(cp.sum_squares(lam)), cons)
-    for tol in (1e-11, 1e-9):  # retried looser where Clarabel stops short of 1e-11
+            cons += [x[s] == sp - sm,
+                     cp.norm(cp.hstack([sm / par[0], sp / par[1], x[s + 1] / par[2]])) <= 1]
+    prob = cp.Problem(cp.Minimize(cp.sum_squares(x)), cons)
+    for tol in (1e-12, 1e-10, 1e-9):  # retried looser where Clarabel stops short of 1e-12
         with warnings.catch_warnings():  # "may be inaccurate": the retry's reason
             warnings.simplefilter("ignore", UserWarning)
             prob.solve(solver="CLARABEL", tol_gap_abs=tol, tol_gap_rel=tol, tol_feas=tol,
-                       max_iter=400)
+                       max_iter=500)
         if prob.status == "optimal":
             break
-    return lam_star + N @ t.value, prob.status
+    return x.value, prob.status
 
 
 def small_scenes(rng, count, models=POLYHEDRAL, *, object_friction=True, need_object=False):

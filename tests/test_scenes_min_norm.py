@@ -5,15 +5,13 @@ minimum-norm ones inside the friction and contact sets. Checked against an indep
 reference (cvxpy with Clarabel) that knows nothing of the solve's faces or null spaces."""
 from __future__ import annotations
 
-import warnings
-
 import numpy as np
 import pytest
 
 import snakecg
 from snakecg.scenes import GeneralScene, Ground, Obstacle, SceneObject
 
-from scenes_reference import BOX, DISC, SPLIT, UNILATERAL, dense_problem
+from scenes_reference import clarabel_min_norm_forces, dense_problem
 
 
 GROUNDS = {"coulomb": Ground(model="coulomb", mu=0.3),
@@ -39,43 +37,6 @@ def _braced_scene(joints: int, q, ground="coulomb"):
     return GeneralScene(robot, ground=GROUNDS[ground], objects=objects, obstacles=tuple(pegs))
 
 
-def _min_norm_reference(p, lam_star):
-    """min |lam|^2 over every force that gives the same generalized constraint force
-    (A^T lam = A^T lam*) inside the sets. The forces of a block whose rows accelerate
-    (|w| above 1e-9 of the scale) are held at lam*: complementarity and maximum dissipation
-    fix them given the unique accelerations (a sliding disc's force opposes its sliding, a
-    contact that opens carries none). Clarabel, in cvxpy."""
-    import cvxpy as cp
-
-    w = p["G"] @ lam_star + p["b"]
-    W = max(1.0, np.abs(w).max())
-    x = cp.Variable(len(lam_star))
-    cons = [p["A"].T @ x == p["A"].T @ lam_star]
-    for kind, s, par in p["blocks"]:
-        nk = 2 if kind >= DISC else 1
-        if np.abs(w[s:s + nk]).max() > 1e-9 * W:
-            cons.append(x[s:s + nk] == lam_star[s:s + nk])
-        elif kind == UNILATERAL:
-            cons.append(x[s] >= 0)
-        elif kind == BOX:
-            cons.append(cp.abs(x[s]) <= par[0])
-        elif kind == DISC:
-            cons.append(cp.norm(x[s:s + 2]) <= par[0])
-        elif kind == SPLIT:  # semi-axes par[0] backward (x <= 0), par[1] forward, par[2] across
-            sp, sm = cp.Variable(nonneg=True), cp.Variable(nonneg=True)
-            cons += [x[s] == sp - sm,
-                     cp.norm(cp.hstack([sm / par[0], sp / par[1], x[s + 1] / par[2]])) <= 1]
-    prob = cp.Problem(cp.Minimize(cp.sum_squares(x)), cons)
-    for tol in (1e-12, 1e-10):  # retried looser where Clarabel stops short of 1e-12
-        with warnings.catch_warnings():  # "may be inaccurate": the retry's reason
-            warnings.simplefilter("ignore", UserWarning)
-            prob.solve(solver="CLARABEL", tol_gap_abs=tol, tol_gap_rel=tol, tol_feas=tol,
-                       max_iter=500)
-        if prob.status == "optimal":
-            break
-    return x.value, prob.status
-
-
 @pytest.mark.parametrize("ground", sorted(GROUNDS))
 def test_indeterminate_forces_are_the_minimum_norm_ones_inside_the_sets(ground):
     """On the braced 8-joint scene (isotropic or anisotropic Coulomb friction on every link:
@@ -95,7 +56,7 @@ def test_indeterminate_forces_are_the_minimum_norm_ones_inside_the_sets(ground):
             continue
         p = dense_problem(res, model, tau)
         lam = res._raw["lam"][0][:len(p["b"])]
-        ref, status = _min_norm_reference(p, lam)
+        ref, status = clarabel_min_norm_forces(p, lam)
         assert status == "optimal", status
         scale = np.abs(ref).max()
         assert np.abs(lam - ref).max() <= 1e-6 * scale

@@ -397,28 +397,6 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
       dep = sc_min_norm_face(&p, Z, rest);
       moved = 1;
     }
-    /* a contact that the minimum-norm choice brought to zero force may open instead, which
-     * frees the dependent forces further: tried one at a time, kept where the KKT conditions
-     * still hold (each try's pass takes w of its own lam) */
-    for (k = 0; k < nb && dep == 1; ++k) {
-      double keep_lam[512];
-      sc_int keep_state = state[k], d2;
-      int solved = 0; /* (to rounding: no early stop) */
-      if (kind[k] != K_UNILATERAL || state[k] != S_HELD || lam[start[k]] > 1e-12 * p.fscale)
-        continue;
-      memcpy(keep_lam, lam, sizeof(double) * (size_t)m);
-      state[k] = S_ZERO;
-      d2 = sc_polish(&p, rest, iw2, 0, &solved);
-      if (d2 >= 0 && !kkt(&p, res, 0) && res[0] <= TOL_ACCEPT && res[1] <= TOL_ACCEPT &&
-          res[2] <= TOL_ACCEPT) {
-        dep = sc_min_norm_face(&p, Z, rest);
-        defect = d2;
-        if (d2 == 0) break;
-      } else {
-        state[k] = keep_state;
-        memcpy(lam, keep_lam, sizeof(double) * (size_t)m);
-      }
-    }
     for (k = 0; k < nb; ++k) /* a contact's force below zero by rounding: zero */
       if (kind[k] == K_UNILATERAL && lam[start[k]] < 0) {
         lam[start[k]] = 0.0;
