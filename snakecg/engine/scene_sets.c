@@ -243,12 +243,16 @@ static void refine_null(const sc_problem *p, const double *Z, sc_int nf, const s
  * V's orthogonal complement, concave and once differentiable,
  *     d(mu) = mu . (l0 - Pi(mu)) + 1/2 |Pi(mu)|^2,   Pi: the projection onto K (blockwise),
  * has the gradient (I - V V^T)(l0 - Pi(mu)) = -F, and lam = Pi(mu*) at its maximiser. A
- * semismooth Newton solves F = 0: the Newton matrix (I - V V^T) D on the complement, D = I - E
- * the projection's derivative, E nonzero on the few blocks outside their sets only, so the
- * step comes from a capacitance matrix of their rows alone (Woodbury):
+ * semismooth Newton solves F = 0: the Newton matrix (I - V V^T) D on the complement, D the
+ * projection's derivative, I - D = S W S^T nonzero on the few blocks outside their sets only
+ * (S selecting their rows, W their blocks), so the step comes from a capacitance matrix of
+ * those rows alone (Woodbury):
  *     delta = -F - (I - V V^T) S C^-1 S^T F,   C = (W^-1 - I) + V_S V_S^T,
- * S selecting those rows (C by the pivoted L D L^T: its dependent rows dropped), the step
- * halved while d does not rise. Returns 1 with the forces in lam (nf) once |F| is at rounding,
+ * C by the pivoted L D L^T (its dependent rows dropped), the step
+ * halved while d does not rise. Where the Newton matrix is singular along F (a step that no
+ * longer moves it), the steps are damped from then on (Levenberg-Marquardt: the matrix plus
+ * tau I, tau = |F| / scale, which adds tau W^-1 to C and divides delta by 1 + tau).
+ * Returns 1 with the forces in lam (nf) once |F| is at rounding,
  * 0 when not (a split ellipse with a half of no extent, not projected here; or no progress).
  * Work: 2 nf^2 + 9 nf doubles. */
 static int min_norm_in_sets(const sc_problem *p, sc_int nf, const sc_int *fk, const double *l0,
@@ -287,8 +291,10 @@ static int min_norm_in_sets(const sc_problem *p, sc_int nf, const sc_int *fk, co
     }
     for (i = 0; i < nf; ++i) fn = fmax(fn, fabs(F[i]));
     if (fn <= 1e-14 * scale) return memcpy(lam, pi, sizeof(double) * (size_t)nf), 1;
+    if (fn > 0.999 * fprev && ++stalls > 20) return 0; /* (damped from the first stall on) */
     { /* the capacitance's rows S: every row of a block outside its set */
       sc_int r = 0, b;
+      const double tau = stalls > 0 ? fn / scale : 0.0;
       for (b = 0; b < ns; ++b)
         for (j = 0; j < sc_block_size(p->kind[fk[cs[b]]]); ++j) S[r++] = cs[b] + j;
       for (i = 0; i < r; ++i) {
@@ -301,14 +307,14 @@ static int min_norm_in_sets(const sc_problem *p, sc_int nf, const sc_int *fk, co
           for (t = 0; t < nn; ++t) c += VS[i * nn + t] * VS[j * nn + t];
           C[i * r + j] = c;
         }
-      for (b = 0, i = 0; b < ns; ++b) { /* (W^-1 - I: blockwise on the diagonal) */
+      for (b = 0, i = 0; b < ns; ++b) { /* ((1 + tau) W^-1 - I: blockwise on the diagonal) */
         if (sc_block_size(p->kind[fk[cs[b]]]) == 2) {
-          C[i * r + i] += cap[4 * b];
-          C[(i + 1) * r + i] += cap[4 * b + 2];
-          C[(i + 1) * r + i + 1] += cap[4 * b + 3];
+          C[i * r + i] += tau + (1.0 + tau) * cap[4 * b];
+          C[(i + 1) * r + i] += (1.0 + tau) * cap[4 * b + 2];
+          C[(i + 1) * r + i + 1] += tau + (1.0 + tau) * cap[4 * b + 3];
           i += 2;
         } else
-          C[i * r + i] += cap[4 * b], ++i;
+          C[i * r + i] += tau + (1.0 + tau) * cap[4 * b], ++i;
       }
       rank = r > 0 ? sc_psd_solve(r, C, r, x, 1e-13, y, sw, perm) : 0;
       (void)rank;
@@ -320,18 +326,10 @@ static int min_norm_in_sets(const sc_problem *p, sc_int nf, const sc_int *fk, co
         for (i = 0; i < nf; ++i) del[i] -= c * V[t * nf + i];
       }
       for (i = 0; i < nf; ++i) {
-        del[i] = -F[i] - del[i];
+        del[i] = (-F[i] - del[i]) / (1.0 + tau);
         slope -= F[i] * del[i];
       }
     }
-    if (fn > 0.999 * fprev) { /* (the Newton step no longer moves F, where the Newton
-      matrix is singular: a step of steepest ascent instead, d's gradient being 1-Lipschitz;
-      given up after three such steps in a row: a dual maximum not attained) */
-      if (++stalls > 3) return 0;
-      slope = 0.0;
-      for (i = 0; i < nf; ++i) del[i] = -F[i], slope += F[i] * F[i];
-    } else
-      stalls = 0;
     fprev = fn;
     if (!(slope > 0)) return 0;
     for (ls = 0; ls < 40; ++ls, st *= 0.5) { /* the step, halved while d does not rise */
