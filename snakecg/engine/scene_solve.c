@@ -37,8 +37,8 @@
  * The certificate (KKT residuals, relative to the sample's force and acceleration scales) is
  * returned with every sample. Where the held rows' equations are dependent (statically
  * indeterminate), the flag is set and the held forces are the minimum-norm ones on the face
- * (the null space of G_FF taken out); if that leaves the set, the face's basic solution stays
- * and the flag says so (2).
+ * inside their sets (scene_sets.c's sc_min_norm_face); where that choice is not found to
+ * rounding, the face's basic solution stays and the flag says so (2).
  */
 #include <float.h>
 #include <math.h>
