@@ -213,7 +213,7 @@ def test_room_of_the_first_pass_changes_no_answer(grid, monkeypatch):
     T = tau[:300]
     roomy = model.forward(Q, T)
     assert sorted({len(c) for c in roomy.contacts}) == [6, 7]
-    assert np.any(roomy._raw["info"]["dependent"] == 2)  # path-dependent forces are met
+    assert np.any(roomy._raw["info"]["dependent"] == 1)  # dependent faces are met
     monkeypatch.setattr(scene_model, "CONTACTS_FIRST", 6)  # the 7-contact samples out of room
     tight = model.forward(Q, T)
     for name in ("qdd", "a_obj", "norm_lambda", "norm_a_obj", "norm_qdd", "sr", "status"):

@@ -10,8 +10,11 @@
  *   ||lambda||^2 = lam^T G lam = (a - a_free)^T M (a - a_free) = sum D_i (v_i - g_i)^2,
  *   a_free^T M a_free = sum D_i g_i^2,
  * so none of them is negative, even by rounding, and sr = sum ||a_o||^2 / (that + ||qdd_s||^2)
- * (eq. 30) stays in [0, 1]; sr is 0 where the summed norms are rounding of the free motion's
- * (below 1e-26 a_free^T M a_free: a system that does not move).
+ * (eq. 30) stays in [0, 1]; sr is 0 where the summed norms are rounding (a system that does
+ * not move): below 1e-26 a_free^T M a_free, or (below 1e-12 of it) below 1e-26 e^T M^-1 e, e
+ * the forces' sum taken in absolute values, |f| + sum_j |lam_j| |A_j| entry by entry: the
+ * scale of the rounding in a = M^-1 (f + A^T lam), where forces that cancel (a heavy object
+ * held by friction against a small torque) leave rounding far above the free motion's.
  */
 #include <math.h>
 
@@ -29,8 +32,8 @@
  * on its diagonal, and its diagonal tail; r = D^-1; n, t constants where the caller's branch
  * makes them so), entry by entry as they come: each sum in the order of the entries, and v,
  * g in registers (stored and then loaded as pairs, their loads waited on the stores). */
-static inline void sums(sc_int n, sc_int t, const double *L, const double *r, const double *f,
-                        const double *a, double *norms, double *obj) {
+static inline double sums(sc_int n, sc_int t, const double *L, const double *r,
+                          const double *f, const double *a, double *norms, double *obj) {
   const sc_int ns = SNAKECG_NS;
   double u[512], nq = 0.0, na = 0.0, nl = 0.0, fr = 0.0, ob = 0.0, d; /* (n: at most 512) */
   sc_int i, k;
@@ -58,14 +61,42 @@ static inline void sums(sc_int n, sc_int t, const double *L, const double *r, co
   norms[1] = na;
   norms[2] = nl;
   norms[3] = d > 1e-26 * fr ? na / d : 0.0; /* eq. (30) */
+  return fr;
+}
+
+/* e^T M^-1 e for e = |f| + sum_j |lam_j| |A_j| (entry by entry; A m x n row-major): by L's
+ * unit lower block of t rows (in place), then sum (L^-1 e)_i^2 r_i. */
+static double force_floor(sc_int n, sc_int t, sc_int m, const double *L, const double *r,
+                          const double *f, const double *A, const double *lam) {
+  double e[512], s = 0.0; /* (n: at most 512) */
+  sc_int i, j, k;
+  for (i = 0; i < n; ++i) e[i] = fabs(f[i]);
+  for (j = 0; j < m; ++j)
+    if (lam[j] != 0.0) {
+      const double l = fabs(lam[j]), *aj = A + j * n;
+      for (i = 0; i < n; ++i) e[i] += l * fabs(aj[i]);
+    }
+  for (i = 0; i < n; ++i) {
+    for (k = 0; k < (i < t ? i : 0); ++k) e[i] -= L[i * n + k] * e[k];
+    s += e[i] * e[i] * r[i];
+  }
+  return s;
 }
 
 SC_INTERNAL void sc_scene_metrics(sc_int n, sc_int no, sc_int t, const double *L,
                                   const double *r, const double *f, const double *a,
-                                  double *norms, double *obj) {
+                                  sc_int m, const double *A, const double *lam, double *norms,
+                                  double *obj) {
+  double fr;
   (void)no; /* (n = n_s + 3 n_o) */
-  if (t == SNAKECG_NS && n == SNAKECG_NS) sums(SNAKECG_NS, SNAKECG_NS, L, r, f, a, norms, obj);
+  if (t == SNAKECG_NS && n == SNAKECG_NS)
+    fr = sums(SNAKECG_NS, SNAKECG_NS, L, r, f, a, norms, obj);
   else if (t == SNAKECG_NS && n == SNAKECG_NS + 3)
-    sums(SNAKECG_NS + 3, SNAKECG_NS, L, r, f, a, norms, obj);
-  else sums(n, t, L, r, f, a, norms, obj);
+    fr = sums(SNAKECG_NS + 3, SNAKECG_NS, L, r, f, a, norms, obj);
+  else fr = sums(n, t, L, r, f, a, norms, obj);
+  /* (the forces' scale taken only where the motion is below 1e-6 of the free motion's, |a|_M:
+   * elsewhere rounding would need forces 1e14 times the free motion's scale to reach it) */
+  if (norms[3] > 0.0 && norms[0] + norms[1] <= 1e-12 * fr &&
+      norms[0] + norms[1] <= 1e-26 * force_floor(n, t, m, L, r, f, A, lam))
+    norms[3] = 0.0;
 }

@@ -20,8 +20,8 @@
  *   5. the metrics (scene_metrics.c, from the inertia's factor): ||qdd_s||^2 = qdd^T M_s qdd
  *      (eq. 26), ||a_o||^2 = a_o^T I_o a_o (eq. 27) per object and summed,
  *      ||lambda||^2 = lam^T G lam = (a - a_free)^T M (a - a_free), and sr (eq. 30; 0 where the
- *      summed norms are rounding of the free motion's: below 1e-26 a_free^T M a_free, a system
- *      that does not move). A sample not solved has NaN metrics and its status says why.
+ *      summed norms are rounding, a system that does not move: scene_metrics.c). A sample not
+ *      solved has NaN metrics and its status says why.
  * The scene, outputs and details (rows, forces, row accelerations, block states) are laid out
  * as snakecg/scenes/packing.py writes and reads them (SP_*, SO_*, the records' widths below).
  * Steps 1-3 alone at a simulation's state (the objects at given poses, the run's tolerance):
@@ -341,7 +341,8 @@ static void scene_sample(sc_scene_work *sw, const double *q, const double *tau,
   if (out[SO_INFO] == 0.0 && t < 0 && !sc_tiny_inertia(n, sw->M, sw->f, sw->L, sw->g, &t))
     out[SO_INFO] = 2.0; /* (a singular mass matrix, as the solve says it) */
   if (out[SO_INFO] == 0.0)
-    sc_scene_metrics(n, sw->no, t, sw->L, sw->g, sw->f, a, out + SO_NORM_QDD, a + n);
+    sc_scene_metrics(n, sw->no, t, sw->L, sw->g, sw->f, a, m, sw->A, sw->lam, out + SO_NORM_QDD,
+                     a + n);
   else
     for (i = SO_NORM_QDD; i <= SO_SR; ++i) out[i] = NAN;
   for (i = 0; out[SO_INFO] != 0.0 && i < n + sw->no; ++i) a[i] = NAN; /* (qdd, a_o, ||a_o||^2) */

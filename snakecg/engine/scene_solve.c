@@ -305,6 +305,7 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
          *keep = gam + nb, *zero = keep + m, *rest = zero + m, res[3] = {NAN, NAN, NAN};
   sc_int i, j, k, t, total_sweeps = 0, passes = 0, defect = 0, chunk = CHUNK;
   sc_int *state = iwork, *iw2 = iwork + nb, *prev = iw2 + 3 * (m + nb);
+  const double *acc = lam; /* the forces the accelerations are taken from (eq. 18) */
   sc_problem p;
   sc_tr2d prep[2 * PREP_BLOCKS]; /* (the sweeps' blocks' H parts: taken at their first sweep) */
   int dep = 0, ok = 0, primal = 0, reread = 0, fails = 0;
@@ -393,13 +394,25 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
     int degenerate = defect > 0, moved = 0;
     for (k = 0; k < nb && !degenerate; ++k)
       if (state[k] != S_HELD && sc_still(&p, k)) degenerate = 1;
-    if (degenerate) {
+    if (degenerate) { /* (the accelerations from the face's basic solution, kept: the
+      minimum-norm choice moves the forces along A^T's null space, and its rounding, which
+      grows with the forces, would reach a system that does not move) */
+      memcpy(keep, lam, sizeof(double) * (size_t)m);
+      acc = keep;
       dep = sc_min_norm_face(&p, Z, rest);
       moved = 1;
+      /* a held contact that the choice leaves without force and without acceleration reads
+       * open (the KKT conditions of both pieces hold; the open one starts a batch's next
+       * sample with fewer dependent rows, whose accelerations are the more accurate) */
+      for (k = 0; k < nb && dep == 1; ++k)
+        if (kind[k] == K_UNILATERAL && state[k] == S_HELD &&
+            lam[start[k]] <= 1e-12 * p.fscale && sc_still(&p, k))
+          state[k] = S_ZERO;
     }
     for (k = 0; k < nb; ++k) /* a contact's force below zero by rounding: zero */
-      if (kind[k] == K_UNILATERAL && lam[start[k]] < 0) {
-        lam[start[k]] = 0.0;
+      if (kind[k] == K_UNILATERAL && (lam[start[k]] < 0 || acc[start[k]] < 0)) {
+        lam[start[k]] = fmax(lam[start[k]], 0.0);
+        keep[start[k]] = fmax(keep[start[k]], 0.0);
         moved = 1;
       }
     if (moved) {
@@ -432,11 +445,11 @@ answered:
   /* eq. (18): a = M^-1 (f + A^T lam) = L^-T (g + Z lam) */
   for (j = k = 0; j < m && !primal; ++j) /* (the rows with a force listed once: iw2 is free
     by now; the primal's g + Z lam at the start of rest) */
-    if (lam[j] != 0.0 && isfinite(lam[j])) iw2[k++] = j;
+    if (acc[j] != 0.0 && isfinite(acc[j])) iw2[k++] = j;
   for (i = 0; i < n; ++i) { /* (summed in a register: a and Z may alias for the compiler) */
     const double *zi = Z + i * m;
     double t = primal ? rest[i] : a[i];
-    for (j = 0; j < k; ++j) t += zi[iw2[j]] * lam[iw2[j]];
+    for (j = 0; j < k; ++j) t += zi[iw2[j]] * acc[iw2[j]];
     a[i] = t;
   }
   if (n == SNAKECG_NS && t == SNAKECG_NS) back_ns(L, a);
@@ -458,8 +471,8 @@ answered:
 void SNAKECG_EXPORT(core_scene_solve_work)(sc_int n, sc_int m, sc_int nb, sc_int *nd, sc_int *ni) {
   sc_int u = m + nb;
   *nd = n * n + n * m + m * m + m + nb + (u * u + 3 * u + 2 * m * m + 3 * m + 16) +
-        2 * m + sc_primal_work(n, m) + (2 * m * m + 12 * m + n * n + 3 * n); /* (the last: scene_sets.c's
-        minimum-norm forces inside the sets) */
+        2 * m + sc_primal_work(n, m) + (2 * m * m + 12 * m + n * n + 3 * n); /* (the last:
+        scene_sets.c's minimum-norm forces inside the sets) */
   *ni = nb + 4 * (m + nb) + 16 + n;
 }
 
