@@ -102,16 +102,17 @@ def pegs_row():
     return scene, load_scene(scene), q0
 
 
-def indeterminate_scene(q, joints=10):
+def indeterminate_scene(q, joints=10, ground=None):
     """The forward benchmark's statically indeterminate scene (benchmarks/bench_scenes.py),
     built apart: a box against link 1 and a disc against link n + 1 (both rubbing the
-    ground), pegs against four links on alternating sides, Coulomb ground, at q."""
+    ground), pegs against four links on alternating sides, Coulomb ground (or ``ground``),
+    at q."""
     robot = Robot(joints=joints)
     objects = (SceneObject(shape="box", size=(0.1, 0.08), mass=2.0, mu=0.2,
                            touching={"link": 1, "offset": 0.075, "side": "left"}),
                SceneObject(shape="disc", radius=0.04, mass=1.0, mu=0.2,
                            touching={"link": joints + 1, "offset": 0.075, "side": "right"}))
-    ground = Ground(model="coulomb", mu=0.3)
+    ground = Ground(model="coulomb", mu=0.3) if ground is None else ground
     P = snakecg.load(GeneralScene(robot, ground=ground, objects=objects)).link_poses(q)
     pegs = []
     for k in range(4):

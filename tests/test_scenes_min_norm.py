@@ -9,32 +9,14 @@ import numpy as np
 import pytest
 
 import snakecg
-from snakecg.scenes import GeneralScene, Ground, Obstacle, SceneObject
+from snakecg.scenes import Ground
 
-from scenes_reference import clarabel_min_norm_forces, dense_problem
+from scenes_reference import clarabel_min_norm_forces, dense_problem, indeterminate_scene
 
 
 GROUNDS = {"coulomb": Ground(model="coulomb", mu=0.3),
            "anisotropic": Ground(model="anisotropic", mu_forward=0.1, mu_backward=0.3,
                                  mu_lateral=0.5)}
-
-
-def _braced_scene(joints: int, q, ground="coulomb"):
-    """Belly friction on every link, a box and a disc touching the two ends, and four pegs
-    touching links on alternating sides (each peg 0.03 m from the link's axis)."""
-    robot = snakecg.Robot(joints=joints)
-    objects = (SceneObject(shape="box", size=(0.1, 0.08), mass=2.0, mu=0.2,
-                           touching={"link": 1, "offset": 0.075, "side": "left"}),
-               SceneObject(shape="disc", radius=0.04, mass=1.0, mu=0.2,
-                           touching={"link": joints + 1, "offset": 0.075, "side": "right"}))
-    P = snakecg.load(robot).link_poses(q)
-    pegs = []
-    for k in range(4):
-        x, y, phi = P[1 + (k * (joints - 1)) // 4]
-        n = np.array([-np.sin(phi), np.cos(phi)]) * (1.0 if k % 2 else -1.0)
-        c = np.array([x, y]) + 0.03 * n
-        pegs.append(Obstacle(shape="peg", center=(float(c[0]), float(c[1])), radius=0.03))
-    return GeneralScene(robot, ground=GROUNDS[ground], objects=objects, obstacles=tuple(pegs))
 
 
 @pytest.mark.parametrize("ground", sorted(GROUNDS))
@@ -45,7 +27,7 @@ def test_indeterminate_forces_are_the_minimum_norm_ones_inside_the_sets(ground):
     samples: equal to Clarabel's to 1e-6 of their scale and no larger in norm."""
     joints = 8
     q = np.r_[0.0, 0.0, 0.0, 0.25 * np.sin(np.arange(joints) + 5)]
-    model = snakecg.load(_braced_scene(joints, q, ground))
+    model = snakecg.load(indeterminate_scene(q, joints, GROUNDS[ground]))
     T = np.random.default_rng(7).normal(0, 0.1, (60, joints))
     flags, checked = [], 0
     for tau in T:
@@ -74,7 +56,7 @@ def test_indeterminate_forces_are_the_same_in_a_batch_as_alone():
     the one-sample calls to rounding, not merely the same accelerations."""
     joints = 8
     q = np.r_[0.0, 0.0, 0.0, 0.25 * np.sin(np.arange(joints) + 5)]
-    model = snakecg.load(_braced_scene(joints, q))
+    model = snakecg.load(indeterminate_scene(q, joints))
     T = np.random.default_rng(8).normal(0, 0.1, (40, joints))
     batch = model.forward(np.repeat(q[None], len(T), axis=0), T)
     for i, tau in enumerate(T):
