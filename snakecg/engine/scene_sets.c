@@ -272,7 +272,7 @@ static int min_norm_in_sets(const sc_problem *p, sc_int nf, const sc_int *fk, co
   memcpy(mu, l0, sizeof(double) * (size_t)nf);
   for (it = 0; it < 60; ++it) {
     double fn = 0.0, slope = 0.0, st = 1.0;
-    sc_int ls, rank;
+    sc_int ls;
     if (it == 0) { /* (later iterates: the accepted trial's, below) */
       ns = 0;
       for (i = 0; i < nf; i += sc_block_size(p->kind[fk[i]]))
@@ -316,8 +316,7 @@ static int min_norm_in_sets(const sc_problem *p, sc_int nf, const sc_int *fk, co
         } else
           C[i * r + i] += tau + (1.0 + tau) * cap[4 * b], ++i;
       }
-      rank = r > 0 ? sc_psd_solve(r, C, r, x, 1e-13, y, sw, perm) : 0;
-      (void)rank;
+      if (r > 0) sc_psd_solve(r, C, r, x, 1e-13, y, sw, perm);
       for (i = 0; i < nf; ++i) del[i] = 0.0;
       for (i = 0; i < r; ++i) del[S[i]] = y[i];
       for (t = 0; t < nn; ++t) { /* del = -F - (I - V V^T) S y */

@@ -412,7 +412,7 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
     for (k = 0; k < nb; ++k) /* a contact's force below zero by rounding: zero */
       if (kind[k] == K_UNILATERAL && (lam[start[k]] < 0 || acc[start[k]] < 0)) {
         lam[start[k]] = fmax(lam[start[k]], 0.0);
-        keep[start[k]] = fmax(keep[start[k]], 0.0);
+        if (acc == keep) keep[start[k]] = fmax(keep[start[k]], 0.0);
         moved = 1;
       }
     if (moved) {
