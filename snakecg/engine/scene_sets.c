@@ -72,6 +72,24 @@ SC_INTERNAL int sc_in_set(const sc_problem *p, sc_int k, double *l, double tol, 
   }
 }
 
+/* The nn vectors V + t n (length n each) orthonormalized in place: Gram-Schmidt, twice. */
+static void orthonormalize(sc_int n, sc_int nn, double *V) {
+  sc_int i, t, u;
+  for (t = 0; t < nn; ++t) {
+    int pass;
+    double nrm = 0.0;
+    for (pass = 0; pass < 2; ++pass)
+      for (u = 0; u < t; ++u) {
+        double d = 0.0;
+        for (i = 0; i < n; ++i) d += V[u * n + i] * V[t * n + i];
+        for (i = 0; i < n; ++i) V[t * n + i] -= d * V[u * n + i];
+      }
+    for (i = 0; i < n; ++i) nrm += V[t * n + i] * V[t * n + i];
+    nrm = sqrt(nrm);
+    for (i = 0; i < n; ++i) V[t * n + i] /= nrm;
+  }
+}
+
 /* An orthonormal basis of the null space of the positive semidefinite n x n A (row-major, its
  * lower triangle read and overwritten): the pivoted L D L^T of sc_psd_solve stopped at pivots
  * of at most NULL_TOL of the first, the null vectors P [-L11^-T L21^T; I] orthonormalized
@@ -79,7 +97,7 @@ SC_INTERNAL int sc_in_set(const sc_problem *p, sc_int k, double *l, double tol, 
  * Work: 2 n doubles, n sc_ints in perm. */
 static sc_int null_space(sc_int n, double *A, double *V, double *work, sc_int *perm) {
   double *b = work, *x = work + n;
-  sc_int i, j, t, u, rank, nn;
+  sc_int i, j, t, rank, nn;
   for (i = 0; i < n; ++i) b[i] = 0.0;
   rank = sc_psd_solve(n, A, n, b, NULL_TOL, x, work + n, perm);
   nn = n - rank;
@@ -95,20 +113,7 @@ static sc_int null_space(sc_int n, double *A, double *V, double *work, sc_int *p
     }
     for (i = 0; i < n; ++i) V[t * n + perm[i]] = y[i];
   }
-  for (t = 0; t < nn; ++t) {
-    int pass;
-    double nrm;
-    for (pass = 0; pass < 2; ++pass)
-      for (u = 0; u < t; ++u) {
-        double d = 0.0;
-        for (i = 0; i < n; ++i) d += V[u * n + i] * V[t * n + i];
-        for (i = 0; i < n; ++i) V[t * n + i] -= d * V[u * n + i];
-      }
-    nrm = 0.0;
-    for (i = 0; i < n; ++i) nrm += V[t * n + i] * V[t * n + i];
-    nrm = sqrt(nrm);
-    for (i = 0; i < n; ++i) V[t * n + i] /= nrm;
-  }
+  orthonormalize(n, nn, V);
   return nn;
 }
 
@@ -222,19 +227,7 @@ static void refine_null(const sc_problem *p, const double *Z, sc_int nf, const s
       v[j] -= c;
     }
   }
-  for (t = 0; t < nn; ++t) {
-    int pass;
-    double nrm = 0.0;
-    for (pass = 0; pass < 2; ++pass)
-      for (j = 0; j < t; ++j) {
-        double d = 0.0;
-        for (i = 0; i < nf; ++i) d += V[j * nf + i] * V[t * nf + i];
-        for (i = 0; i < nf; ++i) V[t * nf + i] -= d * V[j * nf + i];
-      }
-    for (i = 0; i < nf; ++i) nrm += V[t * nf + i] * V[t * nf + i];
-    nrm = sqrt(nrm);
-    for (i = 0; i < nf; ++i) V[t * nf + i] /= nrm;
-  }
+  orthonormalize(nf, nn, V);
 }
 
 /* The minimum-norm forces inside the sets on a face whose unconstrained minimum-norm forces l0
