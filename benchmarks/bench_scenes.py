@@ -3,7 +3,11 @@
 * **scene**: an ``--joints`` (default 10) joint snake, 2 objects (a box and a disc touching
   links), 4 pegs touching links, Coulomb ground on every link (mu 0.3) and under the objects:
   ``model.forward(q, tau)`` on one sample from Python (best of ``--repeat`` rounds of
-  ``--single`` calls) and batched (``--n`` samples, time per sample, one thread);
+  ``--single`` calls) and batched (``--n`` samples, time per sample, one thread): unrelated
+  torques at the benchmark's configuration (the batch finds the contacts, rows, inertia and
+  Gram matrix once and keeps them for the samples at the same q), and the same torques each
+  at its own configuration (q moved by 1e-10 per sample, within the contacts' tolerance:
+  nothing kept);
 * **where the time goes** in the batched figure (and the batch's mean Gauss-Seidel sweeps and
   active-set passes per sample): the engine's exact solve alone
   (``core_scene_solve`` on the same rows, inertia and forces, stacked), the engine's whole
@@ -157,6 +161,12 @@ def _primal_on_off(model, name, Q, T, repeat) -> None:
           f"{min(times[0]) * 1e6:.2f} us: {min(times[0]) / min(times[1]):.2f}x")
 
 
+def _moved(Q, rng):
+    """Each sample at its own configuration: q moved by 1e-10 (within the contacts'
+    tolerance, the same contacts), so that a batch keeps nothing from one sample to the next."""
+    return Q + 1e-10 * rng.standard_normal(Q.shape)
+
+
 def _models(joints: int):
     """The benchmark's scene (its model, q, tau) and the paper's scene on the general path."""
     rng = np.random.default_rng(0)
@@ -177,6 +187,8 @@ def _instructions_child(which: str, joints: int, n: int) -> None:
         T = rng.normal(0, 0.05, (n, 3))
     else:
         Q, T = np.repeat(q[None], n, axis=0), rng.normal(0, 0.1, (n, joints))
+        if which == "moved":
+            Q = _moved(Q, rng)
     model._run(Q, T, model._zero_f, n, True)
 
 
@@ -193,7 +205,7 @@ def bench_instructions(joints: int) -> None:
         return
     print("instructions per sample (callgrind, inclusive): the engine's call | its solve | the "
           "rest (contacts, rows, metrics)")
-    for which, n in (("scene", 100), ("paper", 2000)):
+    for which, n in (("scene", 100), ("moved", 100), ("paper", 2000)):
         with tempfile.TemporaryDirectory() as tmp:
             out = f"{tmp}/cg.out"
             subprocess.run(["valgrind", "--tool=callgrind", f"--callgrind-out-file={out}",
@@ -204,9 +216,10 @@ def bench_instructions(joints: int) -> None:
         counts = []
         # the engine's call: libffi's inclusive count (callgrind attributes the exported
         # entry point's own count to its caller; the child makes no other foreign call of
-        # note), its solve: core_scene_solve_s's (the forward's per-sample call) and
-        # sc_tiny_forward's (a tiny problem's, which the forward calls first)
-        for fns in (("ffi_call",), ("core_scene_solve_s", "sc_tiny_forward")):
+        # note), its solve: sc_scene_solve_one's (the forward's per-sample call, the one
+        # behind core_scene_solve_s) and sc_tiny_forward's (a tiny problem's, which the
+        # forward calls first)
+        for fns in (("ffi_call",), ("sc_scene_solve_one", "sc_tiny_forward")):
             total = 0.0
             for fn in fns:
                 m = re.search(rf"^\s*([\d,]+) .*{fn}\b", text, re.M)
@@ -253,6 +266,11 @@ def main() -> None:
     ts = best_of(lambda: [model.forward(q, t) for t in T[:50]], a.repeat) / 50
     print(f"  snakecg forward, single, mean over 50 unrelated torques: {ts * 1e6:6.1f} us")
     print(f"  snakecg forward, batched: {tb * 1e6:10.1f} us per sample")
+    Qm = _moved(Q, np.random.default_rng(2))
+    tm_ = best_of(lambda: model.forward(Qm, T), a.repeat) / a.n
+    moved = model.forward(Qm, T)
+    print(f"  snakecg forward, batched, each sample at its own q (moved 1e-10): "
+          f"{tm_ * 1e6:6.1f} us per sample (solved {np.mean(moved.status == 0):.0%})")
     inf = model.forward(Q, T)._raw["info"]
     print(f"    the batch's solves: mean sweeps {inf['sweeps'].mean():.1f}, mean active-set "
           f"passes {inf['passes'].mean():.2f}, dependent {np.mean(inf['dependent'] > 0):.0%}, "

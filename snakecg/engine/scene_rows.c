@@ -301,13 +301,24 @@ static void scene_sample(sc_scene_work *sw, const double *q, const double *tau,
   static const double zeros[SO_QDD]; /* (copied: a few moves; a memset of it is a string op) */
   sc_int nc, m, nb, i, j, o, t = -1, pnb = sw->pnb, code;
   double *P = sw->P, *rec = out + SO_QDD + ns + 7 * sw->no + 3 * sw->ng, *a = out + SO_QDD;
+  const int same = sw->qnc >= 0 && !memcmp(q, sw->pq, sizeof(double) * (size_t)ns);
   sw->pnb = -1; /* (until this sample is solved) */
   memcpy(out, zeros, sizeof(zeros)); /* (the row's rest written below) */
-  if (kinematics(sw, q, 1)) goto failed;
-  place(sw, P, 0, 1);
+  if (!same) { /* (else the last sample's q: its poses, rows, records and inertia, kept) */
+    sw->qnc = -1, sw->sk.ok = 0;
+    if (kinematics(sw, q, 1)) goto failed;
+    place(sw, P, 0, 1);
+  } else if (!sw->qbuf && !(sw->qbuf = (double *)malloc(sizeof(double) * (size_t)(
+             sw->mcap * (n + sw->mcap))))) /* (the solve's Z and G: at the first repeat) */
+    sw->qnc = -1;
+  else
+    sw->sk.Z = sw->qbuf, sw->sk.G = sw->qbuf + sw->mcap * n;
   for (o = 0; o < sw->no; ++o)
     for (j = 0; j < 3; ++j) out[SO_QDD + ns + 4 * sw->no + 3 * o + j] = sw->pose[3 * o + j];
-  code = contact_rows(sw, P, rec, out + SO_OVERLAP, sw->ccap, &nc);
+  if (same && sw->qnc >= 0) /* (the records' solve fields: written again below) */
+    memcpy(rec, sw->qrec, sizeof(double) * (size_t)(CR_W * (nc = sw->qnc))), code = 0;
+  else if (!(code = contact_rows(sw, P, rec, out + SO_OVERLAP, sw->ccap, &nc)))
+    sw->qnc = nc, sw->pq = q, sw->qrec = rec;
   /* the records' room after those written zeroed, whatever the caller's buffer held */
   memset(rec + CR_W * nc, 0, sizeof(double) * (size_t)(CR_W * (sw->ccap - nc)));
   if (code) { /* (the rows found before it stand where the ground's were: not kept) */
@@ -330,12 +341,18 @@ static void scene_sample(sc_scene_work *sw, const double *q, const double *tau,
   /* the solve (a tiny problem straight to scene_tiny.c, which hands back the inertia's factor
    * whether it answers or not; else core_scene_solve_s, or with contact friction
    * scene_friction.c) */
-  if (sw->T || !sc_tiny_forward(n, m, nb, sw->M, sw->f, sw->A, sw->kind, sw->start, sw->par,
+  if (!sw->T && sc_tiny_forward(n, m, nb, sw->M, sw->f, sw->A, sw->kind, sw->start, sw->par,
                                 warm ? sw->prev : 0, sw->lam, a, sw->w, sw->st, out + SO_INFO,
                                 sw->L, sw->g, &t))
+    ;
+  else if (!sw->T) /* (the Z and G of the same q's samples held: sk, once allocated) */
+    sc_scene_solve_one(n, m, nb, sw->M, sw->f, sw->A, NULL, sw->kind, sw->start, sw->par,
+                       max_sweeps, warm ? sw->prev : 0, sw->lam, a, sw->w, sw->st,
+                       out + SO_INFO, 1, same && sw->qnc >= 0 ? &sw->sk : 0);
+  else
     sc_friction_solve(n, m, nb, nc, sw->M, sw->f, sw->A, NULL, sw->kind, sw->start, sw->par,
                       sw->T, rec, max_sweeps, warm ? sw->prev : 0, sw->lam, a, sw->w, sw->st,
-                      out + SO_INFO, out + SO_SOLUTIONS); /* (T null: core_scene_solve_s's) */
+                      out + SO_INFO, out + SO_SOLUTIONS);
   /* the metrics (scene_metrics.c) by the inertia's factor (the tiny path's, whichever path
    * solved: the metrics do not depend on it) */
   if (out[SO_INFO] == 0.0 && t < 0 && !sc_tiny_inertia(n, sw->M, sw->f, sw->L, sw->g, &t))
@@ -402,7 +419,8 @@ static int forward(const double *pk, sc_int n, const double *q, sc_int sq, const
   /* inputs first: a sample that is not finite refuses the call (scene_inputs.c) */
   if ((i = sc_inputs_bad(n, q, sq, tau, st, fo, sf, 3 * (sc_int)pk[SP_NO])) >= 0)
     return (int)(-3 - (i < 2000000000 ? i : 2000000000));
-  if (keep && *keep) sw = (sc_scene_work *)*keep, sw->pnb = -1; /* (as made below: cold) */
+  if (keep && *keep) /* (as made below: cold, no rows kept) */
+    sw = (sc_scene_work *)*keep, sw->pnb = -1, sw->qnc = -1;
   else if (sc_scene_work_alloc(sw, pk, ccap, mcap, 1)) return -1;
   else if (full_inertia(sw, sw->M), keep) /* the objects' part (M_s: per sample) */
     *keep = sw = (sc_scene_work *)memcpy(sw->base, sw, sizeof(*sw));

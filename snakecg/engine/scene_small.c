@@ -355,29 +355,30 @@ SC_FLAT void z_rows(sc_int n, sc_int m, sc_int t, const double *L, const double 
  * out: the full group's sum is then the remaining terms' sum plus zeros, bit for bit (Z
  * finite); a third of G's work in the 10-joint benchmark's scene. zero: unused. */
 SC_FLAT void gram(sc_int n, sc_int m, const double *Z, const double *g, const double *c,
-                  double *G, double *b, double *zero) {
+                  double *G, double *b, double *zero, const int with_g) {
   sc_int i, j, k;
   const sc_int n4 = n - n % 4;
   (void)zero;
   for (j = 0; j < m; ++j) {
     b[j] = 0.0;
-    for (k = 0; k <= j; ++k) G[j * m + k] = 0.0;
+    for (k = 0; with_g && k <= j; ++k) G[j * m + k] = 0.0;
   }
   for (i = 0; i < n4; i += 4) {
     const double *restrict z0 = Z + i * m, *restrict z1 = z0 + m, *restrict z2 = z1 + m,
                  *restrict z3 = z2 + m;
     const double a0 = g[i], a1 = g[i + 1], a2 = g[i + 2], a3 = g[i + 3];
     for (j = 0; j < m; ++j) {
-      double *restrict gj = G + j * m;
+      double *restrict gj = with_g ? G + j * m : NULL;
       const double y0 = z0[j], y1 = z1[j], y2 = z2[j], y3 = z3[j];
       if (i + 3 >= SNAKECG_NS && y1 == 0.0 && y2 == 0.0 && y3 == 0.0) { /* (objects' zeros) */
         if (y0 != 0.0) {
-          for (k = 0; k <= j; ++k) gj[k] += y0 * z0[k];
+          for (k = 0; with_g && k <= j; ++k) gj[k] += y0 * z0[k];
           b[j] += y0 * a0;
         }
         continue;
       }
-      for (k = 0; k <= j; ++k) gj[k] += (y0 * z0[k] + y1 * z1[k]) + (y2 * z2[k] + y3 * z3[k]);
+      for (k = 0; with_g && k <= j; ++k)
+        gj[k] += (y0 * z0[k] + y1 * z1[k]) + (y2 * z2[k] + y3 * z3[k]);
       b[j] += (y0 * a0 + y1 * a1) + (y2 * a2 + y3 * a3);
     }
   }
@@ -385,35 +386,35 @@ SC_FLAT void gram(sc_int n, sc_int m, const double *Z, const double *g, const do
     const double *restrict z0 = Z + n4 * m;
     const double a0 = g[n4];
     for (j = 0; j < m; ++j) {
-      double *restrict gj = G + j * m;
+      double *restrict gj = with_g ? G + j * m : NULL;
       const double y0 = z0[j];
       if (n4 >= SNAKECG_NS && y0 == 0.0) continue; /* (an object's zeros) */
-      for (k = 0; k <= j; ++k) gj[k] += y0 * z0[k];
+      for (k = 0; with_g && k <= j; ++k) gj[k] += y0 * z0[k];
       b[j] += y0 * a0;
     }
   } else if (n - n4 == 2) {
     const double *restrict z0 = Z + n4 * m, *restrict z1 = z0 + m;
     const double a0 = g[n4], a1 = g[n4 + 1];
     for (j = 0; j < m; ++j) {
-      double *restrict gj = G + j * m;
+      double *restrict gj = with_g ? G + j * m : NULL;
       const double y0 = z0[j], y1 = z1[j];
       if (n4 >= SNAKECG_NS && y0 == 0.0 && y1 == 0.0) continue; /* (an object's zeros) */
-      for (k = 0; k <= j; ++k) gj[k] += y0 * z0[k] + y1 * z1[k];
+      for (k = 0; with_g && k <= j; ++k) gj[k] += y0 * z0[k] + y1 * z1[k];
       b[j] += y0 * a0 + y1 * a1;
     }
   } else if (n - n4 == 3) {
     const double *restrict z0 = Z + n4 * m, *restrict z1 = z0 + m, *restrict z2 = z1 + m;
     const double a0 = g[n4], a1 = g[n4 + 1], a2 = g[n4 + 2];
     for (j = 0; j < m; ++j) {
-      double *restrict gj = G + j * m;
+      double *restrict gj = with_g ? G + j * m : NULL;
       const double y0 = z0[j], y1 = z1[j], y2 = z2[j];
       if (n4 >= SNAKECG_NS && y0 == 0.0 && y1 == 0.0 && y2 == 0.0) continue; /* (zeros) */
-      for (k = 0; k <= j; ++k) gj[k] += (y0 * z0[k] + y1 * z1[k]) + y2 * z2[k];
+      for (k = 0; with_g && k <= j; ++k) gj[k] += (y0 * z0[k] + y1 * z1[k]) + y2 * z2[k];
       b[j] += (y0 * a0 + y1 * a1) + y2 * a2;
     }
   }
   for (j = 0; j < m; ++j) {
-    for (k = 0; k < j; ++k) G[k * m + j] = G[j * m + k];
+    for (k = 0; with_g && k < j; ++k) G[k * m + j] = G[j * m + k];
     if (c) b[j] += c[j];
   }
 }
@@ -424,9 +425,14 @@ SC_INTERNAL void sc_scene_z(sc_int n, sc_int m, sc_int t, const double *L, const
   SC_BY_N(n, t, SC_BY(m, z_rows(n, m, t, L, A, Z)))
 }
 
-/* G = Z^T Z (m x m), b = Z^T g + c (c null: none); zero: m doubles of scratch. */
+/* G = Z^T Z (m x m), b = Z^T g + c (c null: none); zero: m doubles of scratch. G null: b
+ * alone (a batch's next sample at the same rows: the same sums, the same bits). */
 SC_INTERNAL void sc_scene_gram(sc_int n, sc_int m, const double *Z, const double *g,
                                const double *c, double *G, double *b, double *zero) {
   const sc_int t = SNAKECG_NS; /* (n alone a constant) */
-  SC_BY_N(n, t, SC_BY(m, gram(n, m, Z, g, c, G, b, zero)))
+  if (!G) {
+    SC_BY_N(n, t, gram(n, m, Z, g, c, G, b, zero, 0))
+    return;
+  }
+  SC_BY_N(n, t, SC_BY(m, gram(n, m, Z, g, c, G, b, zero, 1)))
 }

@@ -300,7 +300,7 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
                          const double *A, const double *c, const sc_int *kind, const sc_int *start,
                          const double *par, sc_int max_sweeps, const double *from,
                          double *lam, double *a, double *w, double *state_out, double *info,
-                         double *work, sc_int *iwork, int tiny) {
+                         double *work, sc_int *iwork, int tiny, sc_solve_keep *kp) {
   double *L = work, *Z = L + n * n, *G = Z + n * m, *b = G + m * m, *gam = b + m,
          *keep = gam + nb, *zero = keep + m, *rest = zero + m, res[3] = {NAN, NAN, NAN};
   sc_int i, j, k, t, total_sweeps = 0, passes = 0, defect = 0, chunk = CHUNK;
@@ -319,14 +319,18 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
     for (i = 0; i < n; ++i) a[i] = NAN;
     return;
   }
-  sc_scene_z(n, m, t, L, A, Z); /* Z = L^-1 A^T (scene_small.c) */
+  if (kp) Z = kp->Z, G = kp->G; /* (a batch's samples at one configuration: held) */
+  if (!kp || kp->ok < 1) sc_scene_z(n, m, t, L, A, Z); /* Z = L^-1 A^T (scene_small.c) */
+  if (kp && kp->ok < 1) kp->ok = 1;
   p.n = n; p.m = m; p.nb = nb; p.kind = kind; p.start = start; p.par = par;
   p.G = G; p.b = b; p.lam = lam; p.w = w; p.gamma = gam; p.state = state;
   if (from && m > n && sc_primal_tally(-1)) /* the warm start's piece, first in the primal
     where its n unknowns are fewer than the dual's m */
     ok = primal = primal_start(&p, Z, a, c, from, keep, rest, iw2, res, &defect, &dep);
   if (primal) { passes = 1; goto answered; }
-  sc_scene_gram(n, m, Z, a, c, G, b, zero); /* G = Z^T Z, b = Z^T g + c */
+  sc_scene_gram(n, m, Z, a, c, kp && kp->ok == 2 ? NULL : G, b, zero); /* G = Z^T Z, b =
+    Z^T g + c (G held: b alone) */
+  if (kp) kp->ok = 2;
   scales(&p, G, m + 1, b);
   for (i = 0; i < m; ++i) lam[i] = 0.0;
   for (k = 0; k < nb; ++k) gam[k] = 0.0;
@@ -508,7 +512,7 @@ int SNAKECG_EXPORT(core_scene_solve_b)(sc_int ns, sc_int n, sc_int mmax, sc_int 
     solve_sample(n, m[s], nb[s], M + s * n * n, f + s * n, A + s * mmax * n,
                  c ? c + s * mmax : NULL, kind + s * nbmax, start + s * nbmax,
                  par + s * 3 * nbmax, max_sweeps, NULL, lam + s * mmax, a + s * n,
-                 w + s * mmax, state + s * nbmax, info + s * INFO_WIDTH, work, iwork, 1);
+                 w + s * mmax, state + s * nbmax, info + s * INFO_WIDTH, work, iwork, 1, 0);
   }
   free(work);
   free(iwork);
@@ -524,7 +528,7 @@ int SNAKECG_EXPORT(core_scene_solve_s)(sc_int n, sc_int m, sc_int nb, const doub
                                        const double *from, double *lam, double *a, double *w,
                                        double *state, double *info) {
   return sc_scene_solve_one(n, m, nb, M, f, A, c, kind, start, par, max_sweeps, from, lam, a, w,
-                            state, info, 1);
+                            state, info, 1, 0);
 }
 
 SC_INTERNAL int sc_scene_solve_one(sc_int n, sc_int m, sc_int nb, const double *M,
@@ -532,7 +536,7 @@ SC_INTERNAL int sc_scene_solve_one(sc_int n, sc_int m, sc_int nb, const double *
                                    const sc_int *kind, const sc_int *start, const double *par,
                                    sc_int max_sweeps, const double *from, double *lam,
                                    double *a, double *w, double *state, double *info,
-                                   int tiny) {
+                                   int tiny, sc_solve_keep *kp) {
   sc_int nd, ni, iws[256];
   double *work, ws[10240]; /* (scratch on the stack up to 80 KB, no allocation: a time step's
     problems, 13 coordinates and up to 33 rows on the pegs row, are 8,000-10,000 doubles) */
@@ -543,7 +547,7 @@ SC_INTERNAL int sc_scene_solve_one(sc_int n, sc_int m, sc_int nb, const double *
   iwork = ni <= 256 ? iws : (sc_int *)malloc(sizeof(sc_int) * (size_t)ni);
   if (work && iwork)
     solve_sample(n, m, nb, M, f, A, c, kind, start, par, max_sweeps, from, lam, a, w, state,
-                 info, work, iwork, tiny);
+                 info, work, iwork, tiny, kp);
   if (work != ws) free(work);
   if (iwork != iws) free(iwork);
   return work && iwork ? 0 : -1;

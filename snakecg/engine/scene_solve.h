@@ -3,12 +3,22 @@
 #ifndef SNAKECG_ENGINE_SCENE_SOLVE_H
 #define SNAKECG_ENGINE_SCENE_SOLVE_H
 
+/* What a batch's samples at one configuration share: Z = L^-1 A^T (n x m) and G = Z^T Z
+ * (m x m) of the inertia and rows they all have, held for the next sample's solve (ok: 0
+ * nothing held, 1 Z, 2 Z and G; the caller zeroes it where the inertia or the rows change). */
+typedef struct {
+  double *Z, *G;
+  int ok;
+} sc_solve_keep;
+
 /* core_scene_solve_s, its arguments and returns; tiny 0: scene_tiny.c's path not tried (the
- * caller tried sc_tiny_solve and it declined: tried once, counted once), 1: tried first */
+ * caller tried sc_tiny_solve and it declined: tried once, counted once), 1: tried first; kp:
+ * the Z and G held from the last sample at the same inertia and rows, and kept for the next
+ * (null: none; the answers are the same bits either way) */
 SC_INTERNAL int sc_scene_solve_one(sc_int n, sc_int m, sc_int nb, const double *M,
                                    const double *f, const double *A, const double *c,
                                    const sc_int *kind, const sc_int *start, const double *par,
                                    sc_int max_sweeps, const double *from, double *lam,
                                    double *a, double *w, double *state, double *info,
-                                   int tiny);
+                                   int tiny, sc_solve_keep *kp);
 #endif

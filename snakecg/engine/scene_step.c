@@ -148,7 +148,7 @@ static int solve(sc_scene_step *c, sc_int n, double h, const double *f, double *
                       lam, a, w, st, info))
       return 0;
     return sc_scene_solve_one(n, m, nb, c->M, f, c->A, off, c->kind, c->start, par,
-                              SC_STEP_SWEEPS, warm ? from : NULL, lam, a, w, st, info, 0);
+                              SC_STEP_SWEEPS, warm ? from : NULL, lam, a, w, st, info, 0, 0);
   }
   return sc_friction_solve(n, m, nb, nc, c->M, f, c->A, off, c->kind, c->start, par,
                            c->A + m * n, rec, SC_STEP_SWEEPS, warm ? from : NULL, lam, a, w,

@@ -5,6 +5,7 @@
 
 #include <stdint.h>
 #include "scene_broad.h"
+#include "scene_solve.h"
 
 /* The scene's sizes and the scratch of one batch call. */
 typedef struct {
@@ -19,6 +20,14 @@ typedef struct {
   sc_int *kind, *start, pnb; /* pnb: its blocks (-1: none, not solved) */
   sc_int cool, backoff; /* samples left cold after a start that fell back, the next count */
   sc_int gnc; /* the contacts before the ground's rows the forward last wrote (-1: none) */
+  /* a batch's samples at one configuration: the q (pq, the caller's), contact count (qnc, -1:
+   * none) and records (qrec, the caller's row) of the last sample whose rows were found in
+   * this call, kept with its poses, rows and the solve's Z and G (sk, in qbuf: allocated at
+   * the first repeat) for the next samples at the same q */
+  const double *pq, *qrec;
+  sc_int qnc;
+  double *qbuf;
+  sc_solve_keep sk;
   sc_shape *shape;
   double *centre, *reach, *pose, *T; /* T: the contacts' tangent rows (null: no friction) */
   uint64_t *near; /* the broad phase's bits (scene_broad.h), sc_broad_words per moving body */
@@ -33,5 +42,9 @@ typedef struct {
  * rows (scene_work.c): 0, or -1 out of memory; freed by sc_scene_work_free. */
 SC_INTERNAL int sc_scene_work_alloc(sc_scene_work *sw, const double *pk, sc_int ccap,
                                     sc_int mcap, int own);
-static inline void sc_scene_work_free(sc_scene_work *sw) { free(sw->base); }
+static inline void sc_scene_work_free(sc_scene_work *sw) {
+  double *q = sw->qbuf; /* (read first: a kept scratch's struct is in its base) */
+  free(sw->base);
+  free(q);
+}
 #endif
