@@ -353,9 +353,11 @@ static int min_norm_in_sets(const sc_problem *p, sc_int nf, const sc_int *fk, co
  * the accelerations (tried once more with the null space refined against Z). Returns 0 when
  * the face's rows are independent (nothing to choose), 1 when the minimum-norm forces were
  * found, 2 when not (a degenerate split ellipse on the face, or the choice not found to
- * rounding: the face's basic solution stays). p->w is read (the face) and left as it was:
- * the caller takes w of the new forces where it reads it. */
-SC_INTERNAL int sc_min_norm_face(sc_problem *p, const double *Z, double *work) {
+ * rounding: the face's basic solution stays). eps: the rows' accelerations may move by this
+ * of their scale (1e-13: rounding; more where nearly dependent rows are taken as dependent).
+ * p->w is read (the face) and left as it was: the caller takes w of the new forces where it
+ * reads it. */
+SC_INTERNAL int sc_min_norm_face(sc_problem *p, const double *Z, double *work, double eps) {
   const sc_int m = p->m;
   sc_int F[512], fk[512], perm[512], nf = 0, i, j, k, t, nnull = 0, tnull;
   double *A, *V, *ev, *l0;
@@ -437,7 +439,7 @@ SC_INTERNAL int sc_min_norm_face(sc_problem *p, const double *Z, double *work) {
       for (j = 0; j < nf; ++j) t2 += Z[t * m + F[j]] * (l0[j] - p->lam[F[j]]);
       quad += t2 * t2;
     }
-    if (quad <= 1e-26 * p->wscale * p->fscale) break;
+    if (quad <= eps * eps * p->wscale * p->fscale) break;
     if (attempt == 1) return 2;
   }
   for (i = 0; i < nf; ++i) p->lam[F[i]] = l0[i];
