@@ -1,5 +1,6 @@
-/* snakecg's engine: the exact minimiser of a quadratic over one block's set, the general
- * solve's Gauss-Seidel step (scene_solve.c's sweeps; the sets in scene_sets.c).
+/* snakecg's engine: the exact minimiser of a quadratic over one block's set, and the block
+ * Gauss-Seidel sweeps of the general solve's dual built on it (scene_solve.c's start; the sets
+ * in scene_sets.c).
  *
  * block_min minimises 1/2 l^T G_kk l + c^T l over K_k exactly: a clamp, or a 2-D trust-region
  * problem in closed form on the eigenvectors (its secular equation solved to rounding:
@@ -95,4 +96,48 @@ SC_INTERNAL void sc_block_min(const sc_problem *p, sc_int k, const double *c, do
     l[1] = h3 > 0 ? -c[1] / h3 : 0.0;
     l[1] = fmax(-q[2], fmin(q[2], l[1]));
   }
+}
+
+/* The sweeps (declared in scene_block.h). */
+SC_INTERNAL sc_int sc_block_sweeps(sc_problem *p, sc_int max_sweeps, double rel, int zero,
+                                   sc_tr2d *pr) {
+  const sc_int m = p->m;
+  sc_int s, k, i, j;
+  if (zero) {
+    for (j = 0; j < m; ++j) p->w[j] = p->b[j] + 0.0;
+    for (k = 0; k < p->nb && k < PREP_BLOCKS; ++k)
+      if (p->kind[k] >= K_DISC) sc_block_prep(p, k, pr + 2 * k);
+  } else
+    sc_update_w(p);
+  for (s = 0; s < max_sweeps; ++s) {
+    double change = 0.0, size = 0.0;
+    for (k = 0; k < p->nb; ++k) {
+      sc_int r = p->start[k], nk = sc_block_size(p->kind[k]);
+      double c[2], l[2], d[2];
+      for (i = 0; i < nk; ++i) {
+        c[i] = p->w[r + i];
+        for (j = 0; j < nk; ++j) c[i] -= p->G[(r + i) * m + r + j] * p->lam[r + j];
+      }
+      sc_block_min(p, k, c, l, k < PREP_BLOCKS ? pr + 2 * k : NULL);
+      for (i = 0; i < nk; ++i) {
+        d[i] = l[i] - p->lam[r + i];
+        if (fabs(d[i]) > change) change = fabs(d[i]);
+        if (fabs(l[i]) > size) size = fabs(l[i]);
+        p->lam[r + i] = l[i];
+      }
+      { /* w along: G symmetric, its columns r.. are its rows */
+        double *restrict wv = p->w;
+        const double *restrict c0 = p->G + r * m, *restrict c1 = c0 + m;
+        if (nk == 2 && d[0] != 0.0 && d[1] != 0.0)
+          for (j = 0; j < m; ++j) wv[j] += c0[j] * d[0] + c1[j] * d[1];
+        else
+          for (i = 0; i < nk; ++i)
+            if (d[i] != 0.0)
+              for (j = 0; j < m; ++j) wv[j] += c0[i * m + j] * d[i];
+      }
+    }
+    if (!(change > rel * (size > p->fscale ? size : p->fscale))) break;
+  }
+  sc_update_w(p);
+  return s < max_sweeps ? s + 1 : max_sweeps;
 }

@@ -101,5 +101,14 @@ SC_INTERNAL void sc_block_prep(const sc_problem *p, sc_int k, sc_tr2d *pr);
  * sc_block_prep, or NULL (taken here). */
 SC_INTERNAL void sc_block_min(const sc_problem *p, sc_int k, const double *c, double *l,
                               const sc_tr2d *pr);
+/* Block Gauss-Seidel sweeps of the dual (scene_solve.c's start) until the largest change is
+ * below rel * scale; returns the sweeps. w = G lam + b is kept along (one column of G per
+ * changed row), and recomputed after; on entry from zero forces (zero: the sample's first
+ * sweeps) it is b + 0 (what the product gives: sums of zeros, +0), and the first PREP_BLOCKS
+ * blocks' H's part of their minimiser is taken into pr (2 per block) for every later sweep of
+ * the sample. */
+#define PREP_BLOCKS 64 /* blocks whose minimiser's H part the sweeps keep (the others: each time) */
+SC_INTERNAL sc_int sc_block_sweeps(sc_problem *p, sc_int max_sweeps, double rel, int zero,
+                                   sc_tr2d *pr);
 #endif
 #endif

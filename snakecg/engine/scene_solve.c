@@ -58,54 +58,6 @@ enum { ST_SOLVED = 0, ST_NOT_CONVERGED = 1, ST_SINGULAR_MASS = 2, ST_BAD_INPUT =
 #define TRY_PASSES 6 /* from pieces read before the sweeps converged */
 #define CHUNK 5 /* sweeps before the first reading of the pieces */
 #define READ_SLIDE 0.15 /* 2-D block read sliding within this of its boundary mid-sweeps */
-#define PREP_BLOCKS 64 /* blocks whose minimiser's H part the sweeps keep (the others: each time) */
-
-/* Gauss-Seidel sweeps until the largest change is below rel * scale; returns the sweeps.
- * w = G lam + b is kept along (one column of G per changed row), and recomputed after; on
- * entry from zero forces (zero: the sample's first sweeps) it is b + 0 (what the product
- * gives: sums of zeros, +0), and the first PREP_BLOCKS blocks' H's part of their minimiser
- * is taken into pr (2 per block: scene_block.h) for every later sweep of the sample. */
-static sc_int sweeps(sc_problem *p, sc_int max_sweeps, double rel, int zero, sc_tr2d *pr) {
-  const sc_int m = p->m;
-  sc_int s, k, i, j;
-  if (zero) {
-    for (j = 0; j < m; ++j) p->w[j] = p->b[j] + 0.0;
-    for (k = 0; k < p->nb && k < PREP_BLOCKS; ++k)
-      if (p->kind[k] >= K_DISC) sc_block_prep(p, k, pr + 2 * k);
-  } else
-    sc_update_w(p);
-  for (s = 0; s < max_sweeps; ++s) {
-    double change = 0.0, size = 0.0;
-    for (k = 0; k < p->nb; ++k) {
-      sc_int r = p->start[k], nk = sc_block_size(p->kind[k]);
-      double c[2], l[2], d[2];
-      for (i = 0; i < nk; ++i) {
-        c[i] = p->w[r + i];
-        for (j = 0; j < nk; ++j) c[i] -= p->G[(r + i) * m + r + j] * p->lam[r + j];
-      }
-      sc_block_min(p, k, c, l, k < PREP_BLOCKS ? pr + 2 * k : NULL);
-      for (i = 0; i < nk; ++i) {
-        d[i] = l[i] - p->lam[r + i];
-        if (fabs(d[i]) > change) change = fabs(d[i]);
-        if (fabs(l[i]) > size) size = fabs(l[i]);
-        p->lam[r + i] = l[i];
-      }
-      { /* w along: G symmetric, its columns r.. are its rows */
-        double *restrict wv = p->w;
-        const double *restrict c0 = p->G + r * m, *restrict c1 = c0 + m;
-        if (nk == 2 && d[0] != 0.0 && d[1] != 0.0)
-          for (j = 0; j < m; ++j) wv[j] += c0[j] * d[0] + c1[j] * d[1];
-        else
-          for (i = 0; i < nk; ++i)
-            if (d[i] != 0.0)
-              for (j = 0; j < m; ++j) wv[j] += c0[i * m + j] * d[i];
-      }
-    }
-    if (!(change > rel * (size > p->fscale ? size : p->fscale))) break;
-  }
-  sc_update_w(p);
-  return s < max_sweeps ? s + 1 : max_sweeps;
-}
 
 /* The KKT residuals (relative): primal (outside the set), dual (w not in -N_K(lam)),
  * complementarity; and the states switched where they are violated (returns 1 if any). The
@@ -183,33 +135,58 @@ static int kkt(sc_problem *p, double *res, int do_switch) {
   return moved;
 }
 
-/* 1 where the piece's KKT residuals (res, taken) are above the acceptance but none above
- * NEAR_MISS: a piece whose held rows, nearly dependent and taken as dependent (G_HH's pivot
- * delta^2 below DEP_TOL where Z's rows are delta from dependent), leave its basic forces that
- * far out of their sets although forces inside them give the same accelerations. */
+/* Nearly dependent held rows: where Z's rows are delta from dependent, G_HH's pivot is
+ * delta^2 and below DEP_TOL (delta up to 1e-5) the piece takes them as dependent; the face's
+ * basic forces may then leave their sets, and its rows accelerate, by about delta of their
+ * scales, which for delta above 1e-9 is beyond the acceptance (G, the rows' squares, does not
+ * resolve them further). Such a piece whose KKT residuals (res) are above the acceptance but
+ * none above NEAR_MISS is a near miss: its forces are first moved along the face's null
+ * space into their sets; the best near miss (least residual, at most NEAR_OK) is kept and
+ * answered (dependent flag 3, its certificate above 1e-9) where no piece is accepted after
+ * NEAR_SWEEPS sweeps. */
 #define NEAR_MISS 1e-6
-static int near_miss(sc_problem *p, double *res) {
-  kkt(p, res, 0);
-  return sc_max(res[0], sc_max(res[1], res[2])) > TOL_ACCEPT &&
-         sc_max(res[0], sc_max(res[1], res[2])) <= NEAR_MISS;
+#define NEAR_OK 1e-7
+#define NEAR_SWEEPS 2000
+typedef struct {
+  double *lam, *state, res; /* (m forces, nb states; res: the largest residual, INF: none) */
+} sc_near;
+
+static double near_miss(sc_problem *p, double *res) {
+  const double e = (kkt(p, res, 0), sc_max(res[0], sc_max(res[1], res[2])));
+  return e > TOL_ACCEPT && e <= NEAR_MISS ? e : 0.0;
+}
+
+/* A near miss of piece p (its largest residual e) kept in nm where it is the best so far. */
+static void keep_near(sc_near *nm, const sc_problem *p, double e) {
+  sc_int k;
+  if (!(e <= NEAR_OK && e < nm->res)) return;
+  nm->res = e;
+  memcpy(nm->lam, p->lam, sizeof(double) * (size_t)p->m);
+  for (k = 0; k < p->nb; ++k) nm->state[k] = (double)p->state[k];
 }
 
 /* Active-set passes from the states in p: the piece's equations solved (polish), the KKT
  * conditions checked and the violated pieces switched, at most max_pass times. Returns 1 when
  * a piece's solution satisfies them (res: its residuals), else 0. kept: w = G lam + b on entry. */
-static int active_set(sc_problem *p, const double *Z, sc_int max_pass, double *work,
-                      sc_int *iwork, sc_int *passes, sc_int *defect, double *res, int kept) {
+static int active_set(sc_problem *p, const double *Z, sc_near *nm, sc_int max_pass,
+                      double *work, sc_int *iwork, sc_int *passes, sc_int *defect, double *res,
+                      int kept) {
   sc_int pass;
   int early = 1, stopped;
+  double e;
   for (pass = 0; pass < max_pass; ++pass, kept = 1) { /* (each pass leaves w = G lam + b) */
     ++*passes;
     stopped = early;
     *defect = sc_polish(p, work, iwork, kept, &stopped);
-    if (!stopped && *defect > 0 && near_miss(p, res) && res[1] <= TOL_ACCEPT &&
-        res[2] <= TOL_ACCEPT && sc_min_norm_face(p, Z, work, 1e-10) == 1)
-      sc_update_w(p); /* (forces a little out of their sets: moved along the face's null
-      space, which may move the rows' accelerations by 1e-10 of their scale where nearly
-      dependent rows are taken as dependent) */
+    if (!stopped && *defect > 0 && (e = near_miss(p, res)) > 0) {
+      if (res[0] > TOL_ACCEPT && res[1] <= TOL_ACCEPT && res[2] <= TOL_ACCEPT &&
+          sc_min_norm_face(p, Z, work, 1e-10) == 1) { /* (the accelerations moved by 1e-10
+        of their scale at most) */
+        sc_update_w(p);
+        e = near_miss(p, res);
+      }
+      if (e > 0) keep_near(nm, p, e);
+    }
     if (!kkt(p, res, 1)) {
       if (!stopped) return res[0] <= TOL_ACCEPT && res[1] <= TOL_ACCEPT && res[2] <= TOL_ACCEPT;
       early = 0; /* (stopped early, yet nothing to switch: solved to rounding next) */
@@ -310,6 +287,14 @@ static inline __attribute__((always_inline)) void back_ns(const double *L, doubl
   SC_UNROLL for (i = 0; i < N; ++i) a[i] = x[i];
 }
 
+/* The room of a sample's scratch after its fixed arrays (scene_solve_work's): the passes', the
+ * primal piece's and scene_sets.c's minimum-norm forces inside the sets. */
+static sc_int rest_size(sc_int n, sc_int m, sc_int nb) {
+  const sc_int u = m + nb;
+  return (u * u + 3 * u + 2 * m * m + 3 * m + 16) + sc_primal_work(n, m) +
+         (2 * m * m + 12 * m + n * n + 3 * n);
+}
+
 /* One sample. M (n x n), f (n), A (m x n) row-major; out: lam (m), a (n), w (m), state (nb),
  * info (INFO_WIDTH). Scratch: work and iwork sized by scene_solve_work. */
 static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const double *f,
@@ -324,7 +309,8 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
   const double *acc = lam; /* the forces the accelerations are taken from (eq. 18) */
   sc_problem p;
   sc_tr2d prep[2 * PREP_BLOCKS]; /* (the sweeps' blocks' H parts: taken at their first sweep) */
-  int dep = 0, ok = 0, primal = 0, reread = 0, fails = 0;
+  sc_near near;
+  int dep = 0, ok = 0, primal = 0, reread = 0, fails = 0, nearly = 0;
   if (tiny && sc_tiny_solve(n, m, nb, M, f, A, c, kind, start, par, from, lam, a, w, state_out,
                             info))
     return; /* (a tiny problem of one-row blocks: scene_tiny.c, the same steps compiled) */
@@ -338,6 +324,7 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
   if (kp) Z = kp->Z, G = kp->G; /* (a batch's samples at one configuration: held) */
   if (!kp || kp->ok < 1) sc_scene_z(n, m, t, L, A, Z); /* Z = L^-1 A^T (scene_small.c) */
   if (kp && kp->ok < 1) kp->ok = 1;
+  near.lam = rest + rest_size(n, m, nb), near.state = near.lam + m, near.res = INFINITY;
   p.n = n; p.m = m; p.nb = nb; p.kind = kind; p.start = start; p.par = par;
   p.G = G; p.b = b; p.lam = lam; p.w = w; p.gamma = gam; p.state = state;
   if (from && m > n && sc_primal_tally(-1)) /* the warm start's piece, first in the primal
@@ -356,7 +343,7 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
   }
   if (!ok && from) { /* the active set from the caller's pieces (start_from) */
     start_from(&p, from);
-    ok = active_set(&p, Z, FROM_PASSES, rest, iw2, &passes, &defect, res, 0);
+    ok = active_set(&p, Z, &near, FROM_PASSES, rest, iw2, &passes, &defect, res, 0);
     if (!ok) { /* else today's order from zero forces */
       for (i = 0; i < m; ++i) lam[i] = 0.0;
       for (k = 0; k < nb; ++k) gam[k] = 0.0;
@@ -370,7 +357,7 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
                  kind[k] == K_SPLIT ? !(q[2] > 0 && (q[0] > 0 || q[1] > 0)) : 0;
       state[k] = zero ? S_ZERO : S_HELD;
     }
-    ok = active_set(&p, Z, GUESS_PASSES, rest, iw2, &passes, &defect, res, 0);
+    ok = active_set(&p, Z, &near, GUESS_PASSES, rest, iw2, &passes, &defect, res, 0);
     if (!ok) /* else the sweeps from zero forces */
       for (i = 0; i < m; ++i) lam[i] = 0.0;
   }
@@ -381,9 +368,10 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
    * tries wandering (their passes switch many blocks at once): on the second failed one, the
    * same point read with 1e-6 and tried, and every later reading so (fails: those tries) */
   for (k = 0; k < nb; ++k) prev[k] = -1;
-  while (!ok && total_sweeps < max_sweeps) {
+  while (!ok && total_sweeps < max_sweeps &&
+         !(near.res <= NEAR_OK && total_sweeps >= NEAR_SWEEPS)) { /* (a near miss: below) */
     int same = 1;
-    sc_int s = reread ? chunk : sweeps(&p, chunk, 1e-12, total_sweeps == 0, prep);
+    sc_int s = reread ? chunk : sc_block_sweeps(&p, chunk, 1e-12, total_sweeps == 0, prep);
     if (!reread) total_sweeps += s;
     sc_read_states(&p, 1e-6, s < chunk || fails >= 2 ? 1e-6 : READ_SLIDE); /* (converged: 1e-6) */
     for (k = 0; k < nb; ++k)
@@ -396,7 +384,7 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
     reread = 0;
     memcpy(prev, state, sizeof(sc_int) * (size_t)nb);
     memcpy(keep, lam, sizeof(double) * (size_t)m);
-    ok = active_set(&p, Z, s < chunk ? 20 : TRY_PASSES, rest, iw2, &passes, &defect, res, 1);
+    ok = active_set(&p, Z, &near, s < chunk ? 20 : TRY_PASSES, rest, iw2, &passes, &defect, res, 1);
     if (!ok && s == chunk) {
       memcpy(lam, keep, sizeof(double) * (size_t)m);
       if ((reread = ++fails == 2)) sc_update_w(&p); /* (w of this lam, for the reading) */
@@ -409,10 +397,17 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
         if (kind[k] == K_BOX) lam[r] = fmax(-par[3 * k], fmin(par[3 * k], lam[r]));
       }
   }
+  if (!ok && near.res <= NEAR_OK) { /* the best near miss (above): answered, flag 3 */
+    memcpy(lam, near.lam, sizeof(double) * (size_t)m);
+    for (k = 0; k < nb; ++k) state[k] = (sc_int)near.state[k];
+    sc_update_w(&p);
+    kkt(&p, res, 0);
+    ok = nearly = 1, dep = 3;
+  }
   if (ok) { /* (w and res: the last pass's, of this lam, until lam moves; once it may have
     moved, both are taken again at the end, and until then only a pass's w is read) */
-    int degenerate = defect > 0, moved = 0;
-    for (k = 0; k < nb && !degenerate; ++k)
+    int degenerate = defect > 0 && !nearly, moved = 0; /* (a near miss: its forces, flag 3) */
+    for (k = 0; k < nb && !degenerate && !nearly; ++k)
       if (state[k] != S_HELD && sc_still(&p, k)) degenerate = 1;
     if (degenerate) { /* (the accelerations from the face's basic solution, kept: the
       minimum-norm choice moves the forces along A^T's null space, and its rounding, which
@@ -489,10 +484,8 @@ answered:
 
 /* Scratch sizes (doubles, sc_ints) for n coordinates, m rows, nb blocks. */
 void SNAKECG_EXPORT(core_scene_solve_work)(sc_int n, sc_int m, sc_int nb, sc_int *nd, sc_int *ni) {
-  sc_int u = m + nb;
-  *nd = n * n + n * m + m * m + m + nb + (u * u + 3 * u + 2 * m * m + 3 * m + 16) +
-        2 * m + sc_primal_work(n, m) + (2 * m * m + 12 * m + n * n + 3 * n); /* (the last:
-        scene_sets.c's minimum-norm forces inside the sets) */
+  *nd = n * n + n * m + m * m + m + nb + 2 * m + rest_size(n, m, nb) + (m + nb); /* (the
+        last: the near miss kept) */
   *ni = nb + 4 * (m + nb) + 16 + n;
 }
 

@@ -50,7 +50,9 @@ class SceneResult:
     ``certificate``: the KKT residuals (relative primal, dual, complementarity),
     ``dependent``: the held rows were dependent (statically indeterminate; the forces the
     minimum-norm ones inside their sets: 1, or not found to rounding, a basic solution of
-    the face kept: 2), ``status`` (:data:`STATUS_NAMES`) and
+    the face kept: 2), or nearly dependent beyond what the solve resolves (3: a near miss,
+    certified to its ``certificate``, at most 1e-7 instead of 1e-9), ``status``
+    (:data:`STATUS_NAMES`) and
     ``reason`` (why a sample was not solved, '' when it was). With contact friction
     (``mu_contact``), ``uniqueness``: ``unique`` (certified: every piece was enumerated and
     one solution meets Coulomb's conditions), ``several`` (enumeration found others: the

@@ -1,0 +1,76 @@
+"""Nearly dependent held rows. Where a contact's normal passes within delta of a link's centre
+of mass (a peg pressed at the middle of a link, an object pushed there as in the paper), the
+contact's row is delta from a combination of that link's two Coulomb rows. The Gram matrix
+G = A M^-1 A^T holds delta^2, below the solve's dependence threshold for delta up to about
+1e-5, and G (the rows' squares) cannot resolve it further: the face's basic forces may then
+leave their sets, and its rows accelerate, by about delta of their scales, beyond the
+acceptance of 1e-9 for delta between 1e-9 and 1e-5. The solve first moves such forces along
+the face's null space into their sets; where no piece is accepted it answers its best near
+miss (every KKT residual at most 1e-7) with the dependent flag 3, its certificate saying how
+far.
+
+The 10-joint benchmark scene has its pegs pressed at the links' middles (exactly dependent
+rows); moving q by 1e-10 or 1e-9 (within the contacts' tolerance: the same contacts) makes
+them nearly dependent. Checked: nearly every sample is solved, the others' certificates at
+most 1e-9 as before, and the near misses against Clarabel's accelerations (the primal of
+Gauss's principle, which near dependence does not trouble) and a dense NumPy model's KKT
+conditions."""
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+import snakecg
+
+from scenes_reference import (clarabel_accelerations, dense_problem, indeterminate_scene,
+                              kkt_violations)
+
+
+def _moved_batch(scale, n=500):
+    q = np.r_[0.0, 0.0, 0.0, 0.25 * np.sin(np.arange(10))]
+    model = snakecg.load(indeterminate_scene(q))
+    T = np.random.default_rng(0).normal(0, 0.1, (n, 10))
+    Q = q + scale * np.random.default_rng(2).standard_normal((n, 13))
+    return model, T, model.forward(Q, T)
+
+
+def _worst(res):
+    c = res.certificate
+    return np.maximum.reduce([c["primal"], c["dual"], c["complementarity"]])
+
+
+@pytest.mark.parametrize("scale", [1e-10, 1e-9])
+def test_nearly_dependent_rows_are_solved_and_flagged(scale):
+    """At 1e-10 every sample is solved; at 1e-9 all but at most 1 % (before: 2 % and 12 %
+    not converged, each after 200,000 Gauss-Seidel sweeps). Accepted samples keep the 1e-9
+    certificate; the near misses (flag 3) are certified to at most 1e-7."""
+    _, _, res = _moved_batch(scale)
+    status, dep, worst = res.status, res.dependent, _worst(res)
+    assert np.mean(status == 0) >= 0.99, np.bincount(status)
+    exact, near = (status == 0) & (dep != 3), (status == 0) & (dep == 3)
+    assert worst[exact].max() <= 1e-9
+    assert np.all(worst[near] <= 1e-7) and np.all(worst[near] > 1e-9)
+    if scale == 1e-9:
+        assert near.sum() >= 10  # (the case is met: 58 of 500 here)
+
+
+def test_near_misses_against_clarabel_and_a_dense_model():
+    """Flag-3 samples: the accelerations equal Clarabel's to 1e-6 (Clarabel itself reports
+    these near-degenerate problems as possibly inaccurate at about 1e-7), the forces and
+    accelerations meet the dense model's KKT conditions to 1e-6 of its scales. Samples that
+    are not near misses meet them to the default 1e-8."""
+    model, T, res = _moved_batch(1e-9, 120)
+    dep, status = res.dependent, res.status
+    near = np.flatnonzero((status == 0) & (dep == 3))[:6]
+    exact = np.flatnonzero((status == 0) & (dep != 3))[:6]
+    assert len(near) >= 3 and len(exact) == 6
+    for i, tol in [(i, 1e-6) for i in near] + [(i, 1e-8) for i in exact]:
+        one = res.sample(int(i))
+        p = dense_problem(one, model, T[i])
+        a = np.r_[np.asarray(one.qdd).ravel(), np.asarray(one.a_obj).ravel()]
+        lam = one._raw["lam"][0][:len(p["b"])]
+        assert kkt_violations(p, lam, a, tol=tol) == [], i
+        if tol == 1e-6:
+            ref, st = clarabel_accelerations(p)
+            assert st in ("optimal", "optimal_inaccurate"), st
+            assert np.abs(a - ref).max() <= 1e-6 * max(1.0, np.abs(ref).max()), i
