@@ -139,11 +139,11 @@ static int kkt(sc_problem *p, double *res, int do_switch) {
  * delta^2 and below DEP_TOL (delta up to 1e-5) the piece takes them as dependent; the face's
  * basic forces may then leave their sets, and its rows accelerate, by about delta of their
  * scales, which for delta above 1e-9 is beyond the acceptance (G, the rows' squares, does not
- * resolve them further). Such a piece whose KKT residuals (res) are above the acceptance but
- * none above NEAR_MISS is a near miss: its forces are first moved along the face's null
- * space into their sets; the best near miss (least residual, at most NEAR_OK) is kept and
- * answered (dependent flag 3, its certificate above 1e-9) where no piece is accepted after
- * NEAR_SWEEPS sweeps. */
+ * resolve them further); just above it, kept, they are solved only to 1e-16 / delta^2. Such a
+ * piece whose KKT residuals (res) are above the acceptance but none above NEAR_MISS is a near
+ * miss: with rows dropped, its forces are first moved along the face's null space into their
+ * sets; the best near miss (least residual, at most NEAR_OK) is kept and answered (dependent
+ * flag 3, its certificate above 1e-9) where no piece is accepted after NEAR_SWEEPS sweeps. */
 #define NEAR_MISS 1e-6
 #define NEAR_OK 1e-7
 #define NEAR_SWEEPS 2000
@@ -178,8 +178,8 @@ static int active_set(sc_problem *p, const double *Z, sc_near *nm, sc_int max_pa
     ++*passes;
     stopped = early;
     *defect = sc_polish(p, work, iwork, kept, &stopped);
-    if (!stopped && *defect > 0 && (e = near_miss(p, res)) > 0) {
-      if (res[0] > TOL_ACCEPT && res[1] <= TOL_ACCEPT && res[2] <= TOL_ACCEPT &&
+    if (!stopped && (e = near_miss(p, res)) > 0) {
+      if (*defect > 0 && res[0] > TOL_ACCEPT && res[1] <= TOL_ACCEPT && res[2] <= TOL_ACCEPT &&
           sc_min_norm_face(p, Z, work, 1e-10) == 1) { /* (the accelerations moved by 1e-10
         of their scale at most) */
         sc_update_w(p);
