@@ -339,8 +339,8 @@ static void scene_sample(sc_scene_work *sw, const double *q, const double *tau,
   for (i = 0; warm && i < nc * CR_W; i += CR_W)
     for (j = 0; j < 4; ++j) warm &= rec[i + j] == sw->prec[i + j]; /* the same bodies */
   /* the solve (a tiny problem straight to scene_tiny.c, which hands back the inertia's factor
-   * whether it answers or not; else core_scene_solve_s, or with contact friction
-   * scene_friction.c) */
+   * whether it answers or not; else sc_scene_solve_one, core_scene_solve_s's, or with contact
+   * friction scene_friction.c) */
   if (!sw->T && sc_tiny_forward(n, m, nb, sw->M, sw->f, sw->A, sw->kind, sw->start, sw->par,
                                 warm ? sw->prev : 0, sw->lam, a, sw->w, sw->st, out + SO_INFO,
                                 sw->L, sw->g, &t))
