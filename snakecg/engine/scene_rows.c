@@ -302,6 +302,7 @@ static void scene_sample(sc_scene_work *sw, const double *q, const double *tau,
   sc_int nc, m, nb, i, j, o, t = -1, pnb = sw->pnb, code;
   double *P = sw->P, *rec = out + SO_QDD + ns + 7 * sw->no + 3 * sw->ng, *a = out + SO_QDD;
   const int same = sw->qnc >= 0 && !memcmp(q, sw->pq, sizeof(double) * (size_t)ns);
+  int kept = same; /* (the last sample's rows, records and the solve's Z and G reused) */
   sw->pnb = -1; /* (until this sample is solved) */
   memcpy(out, zeros, sizeof(zeros)); /* (the row's rest written below) */
   if (!same) { /* (else the last sample's q: its poses, rows, records and inertia, kept) */
@@ -310,12 +311,12 @@ static void scene_sample(sc_scene_work *sw, const double *q, const double *tau,
     place(sw, P, 0, 1);
   } else if (!sw->qbuf && !(sw->qbuf = (double *)malloc(sizeof(double) * (size_t)(
              sw->mcap * (n + sw->mcap))))) /* (the solve's Z and G: at the first repeat) */
-    sw->qnc = -1;
+    kept = 0; /* (out of memory: the rows found again, nothing held for the solve) */
   else
     sw->sk.Z = sw->qbuf, sw->sk.G = sw->qbuf + sw->mcap * n;
   for (o = 0; o < sw->no; ++o)
     for (j = 0; j < 3; ++j) out[SO_QDD + ns + 4 * sw->no + 3 * o + j] = sw->pose[3 * o + j];
-  if (same && sw->qnc >= 0) /* (the records' solve fields: written again below) */
+  if (kept) /* (the records' solve fields: written again below) */
     memcpy(rec, sw->qrec, sizeof(double) * (size_t)(CR_W * (nc = sw->qnc))), code = 0;
   else if (!(code = contact_rows(sw, P, rec, out + SO_OVERLAP, sw->ccap, &nc)))
     sw->qnc = nc, sw->pq = q, sw->qrec = rec;
@@ -348,7 +349,7 @@ static void scene_sample(sc_scene_work *sw, const double *q, const double *tau,
   else if (!sw->T) /* (the Z and G of the same q's samples held: sk, once allocated) */
     sc_scene_solve_one(n, m, nb, sw->M, sw->f, sw->A, NULL, sw->kind, sw->start, sw->par,
                        max_sweeps, warm ? sw->prev : 0, sw->lam, a, sw->w, sw->st,
-                       out + SO_INFO, 1, same && sw->qnc >= 0 ? &sw->sk : 0);
+                       out + SO_INFO, 1, kept ? &sw->sk : 0);
   else
     sc_friction_solve(n, m, nb, nc, sw->M, sw->f, sw->A, NULL, sw->kind, sw->start, sw->par,
                       sw->T, rec, max_sweeps, warm ? sw->prev : 0, sw->lam, a, sw->w, sw->st,
