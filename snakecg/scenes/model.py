@@ -29,6 +29,10 @@ PARALLEL_MIN = 512
 #: nearly the same), but every WARM_CHUNK-th sample of an engine call starts cold: the threads'
 #: spans start on its multiples, so that the answers do not depend on the split
 WARM_CHUNK = 256
+#: A batch's first pass has room for the most contacts a sample of this model has met so far
+#: and ROOM_MARGIN more (at most CONTACTS_FIRST; CONTACTS_FIRST before any): the output rows
+#: are written whole, and room for contacts that never come is memory written for nothing
+ROOM_MARGIN = 2
 _F64 = np.dtype(np.float64)
 
 
@@ -54,6 +58,9 @@ class GeneralSceneModel(RobotModel):
         if getattr(self.core, "scene_forward_call", None) is not None:
             # the method's fast way for one sample, in the instance (no second call)
             self.forward = _one_sample(self)
+        self._met = -1
+        """The most contacts a sample of this model's batches has met (-1: no batch yet): the
+        first pass's room (a speed hint only: no answer depends on the room, :meth:`_run`)."""
         self._steppers: list = []
         """The time stepping's workspaces not lent to a run (:mod:`snakecg.scenes.stepping`)."""
 
@@ -197,12 +204,13 @@ class GeneralSceneModel(RobotModel):
 
     def _run(self, q, tau, fo, N, batched, chunk=WARM_CHUNK):
         """The engine's outputs of N samples (None where an input is not finite): a first
-        pass with room for a few contacts; where some samples found more, the batch solved
+        pass with room for the contacts met so far (ROOM_MARGIN more); where some samples found more, the batch solved
         again with room for every pair's (the whole batch where samples start from their
         neighbours' pieces, so that the chain of starts is the one :meth:`details` meets;
         only those samples where every sample starts cold)."""
         pk = self.packed
-        ccap = min(CONTACTS_FIRST, pk.contacts_max)
+        ccap = min(CONTACTS_FIRST, pk.contacts_max,
+                   self._met + ROOM_MARGIN if self._met >= 0 else CONTACTS_FIRST)
         # not zeroed here: the engine writes every column of a sample's row (the record room
         # after its contacts zeros), the same bytes whatever the threads' split
         out = np.empty((N, pk.width(ccap)))
@@ -214,6 +222,7 @@ class GeneralSceneModel(RobotModel):
                 else ValueError(f"core_scene_forward refused its sizes ({code})")
         more = np.flatnonzero(out[:, 0] == 4)
         if more.size == 0:
+            self._meet(out)
             return out
         full = pk.contacts_max
         wide = np.zeros((N, pk.width(full)))
@@ -222,6 +231,7 @@ class GeneralSceneModel(RobotModel):
             if code != 0:
                 raise MemoryError("the general scene's forward ran out of memory")
             wide[wide[:, 0] == 4, 0] = 5  # more than the solve takes
+            self._meet(wide)
             return wide
         wide[:, :out.shape[1]] = out
         pick = [a if a.shape[0] == 1 else np.ascontiguousarray(a[more]) for a in (q, tau, fo)]
@@ -229,7 +239,13 @@ class GeneralSceneModel(RobotModel):
         self._call(*pick, more.size, full, redo, chunk=chunk)
         redo[redo[:, 0] == 4, 0] = 5  # more than the solve takes
         wide[more] = redo
+        self._meet(wide)
         return wide
+
+    def _meet(self, out) -> None:
+        """The most contacts met, raised by a batch's samples (``out``)."""
+        if out.shape[0]:
+            self._met = max(self._met, int(np.nanmax(out[:, SO_NC], initial=0)))
 
     def details(self, out, inputs) -> dict:
         """The rows, forces, row accelerations and block states of every sample of a result
