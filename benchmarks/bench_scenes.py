@@ -20,7 +20,8 @@
   on a torque map (two joints' torques on a 36 x 36 grid, the others fixed) and on the random
   batch, against the same call with every sample cold (``chunk=1``), in one run;
 * **paper**: the paper's scene (3 joints, wheels, kappa 100) through the general path and
-  through today's path, single and batched (and a 64 x 64 map of two joint angles, warm
+  through today's path, single and batched (``--n`` samples and five times as many: the
+  results' memory shows in the larger batch) (and a 64 x 64 map of two joint angles, warm
   against cold);
 * **primal piece** (``--primal``): the warm batches (torque map, random batch) with a warm
   start's piece solved in the primal (scene_primal.c) and without it, alternated;
@@ -313,11 +314,14 @@ def main() -> None:
     Q = np.c_[np.zeros((a.n, 3)), rng.uniform(-1.0, 1.0, (a.n, 3))]
     T = rng.normal(0, 0.05, (a.n, 3))
     q0, t0 = Q[0].copy(), T[0].copy()
+    Q5 = np.c_[np.zeros((5 * a.n, 3)), rng.uniform(-1.0, 1.0, (5 * a.n, 3))]
+    T5 = rng.normal(0, 0.05, (5 * a.n, 3))
     for name, mdl in (("today's path", old), ("general path", new)):
         s = best_of(lambda: [mdl.forward(q0, t0) for _ in range(a.single)], a.repeat) / a.single
         b = best_of(lambda: mdl.forward(Q, T), a.repeat) / a.n
+        b5 = best_of(lambda: mdl.forward(Q5, T5), a.repeat) / (5 * a.n)
         print(f"  paper scene, {name:13s}: single {s * 1e6:9.1f} us, batched "
-              f"{b * 1e6:9.2f} us per sample")
+              f"{b * 1e6:9.2f} us per sample ({5 * a.n} samples: {b5 * 1e6:.2f} us)")
     inf = new.forward(Q, T)._raw["info"]
     print(f"    general path's batch: mean sweeps {inf['sweeps'].mean():.1f}, mean active-set "
           f"passes {inf['passes'].mean():.2f}")
