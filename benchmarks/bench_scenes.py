@@ -3,7 +3,9 @@
 * **scene**: an ``--joints`` (default 10) joint snake, 2 objects (a box and a disc touching
   links), 4 pegs touching links, Coulomb ground on every link (mu 0.3) and under the objects:
   ``model.forward(q, tau)`` on one sample from Python (best of ``--repeat`` rounds of
-  ``--single`` calls) and batched (``--n`` samples, time per sample, one thread): unrelated
+  ``--single`` calls; a call at the last call's q keeps its contacts, rows, inertia and Gram
+  matrix, so the same calls are timed with nothing kept as well: q's first coordinate 0.0
+  and -0.0 in turn) and batched (``--n`` samples, time per sample, one thread): unrelated
   torques at the benchmark's configuration (the batch finds the contacts, rows, inertia and
   Gram matrix once and keeps them for the samples at the same q), and the same torques each
   at its own configuration (q moved by 1e-10 per sample, within the contacts' tolerance:
@@ -266,6 +268,15 @@ def main() -> None:
     # one sample's cost depends on its pieces: the same single call over 50 unrelated torques
     ts = best_of(lambda: [model.forward(q, t) for t in T[:50]], a.repeat) / 50
     print(f"  snakecg forward, single, mean over 50 unrelated torques: {ts * 1e6:6.1f} us")
+    # one-sample calls at the last call's q keep its rows: the same 50 with nothing kept (q's
+    # first coordinate 0.0 and -0.0 in turn: the same numbers, other bytes)
+    Q50 = [q.copy() for _ in range(50)]
+    for qm in Q50[1::2]:
+        qm[0] = -qm[0]
+    assert all(qm[0] == 0.0 for qm in Q50)
+    tq = best_of(lambda: [model.forward(qm, t) for qm, t in zip(Q50, T[:50])], a.repeat) / 50
+    print(f"  snakecg forward, single, the same 50 with nothing kept (q[0] 0.0, -0.0 in turn): "
+          f"{tq * 1e6:6.1f} us")
     print(f"  snakecg forward, batched: {tb * 1e6:10.1f} us per sample")
     Qm = _moved(Q, np.random.default_rng(2))
     tm_ = best_of(lambda: model.forward(Qm, T), a.repeat) / a.n

@@ -31,8 +31,10 @@ def _rows_of(model, Q, T):
 
 
 def _alone(model, Q, T):
-    return np.vstack([model._run(q[None], t[None], model._zero_f, 1, True, chunk=1)
-                      for q, t in zip(Q, T)])
+    """Each sample a batch of its own, cold (rows of the widest room: the rooms may differ)."""
+    rows = [model._run(q[None], t[None], model._zero_f, 1, True, chunk=1) for q, t in zip(Q, T)]
+    width = max(r.shape[1] for r in rows)
+    return np.vstack([np.pad(r, ((0, 0), (0, width - r.shape[1]))) for r in rows])
 
 
 def _ten_joints():
@@ -64,6 +66,37 @@ def test_what_is_kept_is_dropped_where_the_configuration_changes():
     batch, alone = _rows_of(model, Q, T), _alone(model, Q, T)
     assert np.all(batch[:, 0] == 0)
     assert rows_equal(batch, alone)
+
+
+@pytest.mark.parametrize("which", ["pegs", "contact friction", "paper"])
+def test_one_sample_calls_keep_the_last_calls_rows_and_answer_as_cold_ones(which):
+    """``model.forward(q, tau)`` one sample at a time keeps the engine's scratch from call to
+    call, and with it the last call's rows, Z and G where q is the same bytes: along runs of
+    three configurations (q moved by 1e-9 within the contacts' tolerance, and a -0.0), each
+    call's row is the bytes of that sample solved cold as a batch of its own."""
+    if which == "paper":
+        model = snakecg.load(GeneralScene.from_scene(
+            snakecg.Scene(snakecg.Robot(joints=3), scenario="wheels", kappa=100)))
+        q = np.r_[0.0, 0.0, 0.0, 0.4, -0.3, 0.5]
+    else:
+        model, q = _ten_joints()
+        if which == "contact friction":
+            model = snakecg.load(dataclasses.replace(model.scene, mu_contact=0.4))
+    rng = np.random.default_rng(16)
+    q2 = q.copy()
+    q2[5] += 1e-9
+    q3 = q.copy()
+    q3[0] = -0.0
+    runs = rng.integers(1, 5, 9)
+    Q = np.vstack([np.repeat([(q, q2, q3)[i % 3]], r, axis=0) for i, r in enumerate(runs)])
+    T = rng.normal(0, 0.1 if model.n_joints > 3 else 0.05, (len(Q), model.n_joints))
+    calls = [model.forward(qs.copy(), ts.copy()) for qs, ts in zip(Q, T)]
+    assert all(not c.batched for c in calls)
+    alone = _alone(model, Q, T)
+    assert np.all(alone[:, 0] == 0)
+    ns = model.n_coordinates
+    for c, a in zip(calls, alone):
+        assert rows_equal(c._buf[ns + model.n_joints:], a)
 
 
 def test_the_kept_samples_hold_the_kkt_conditions_of_a_dense_model():

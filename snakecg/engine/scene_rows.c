@@ -318,8 +318,14 @@ static void scene_sample(sc_scene_work *sw, const double *q, const double *tau,
     for (j = 0; j < 3; ++j) out[SO_QDD + ns + 4 * sw->no + 3 * o + j] = sw->pose[3 * o + j];
   if (kept) /* (the records' solve fields: written again below) */
     memcpy(rec, sw->qrec, sizeof(double) * (size_t)(CR_W * (nc = sw->qnc))), code = 0;
-  else if (!(code = contact_rows(sw, P, rec, out + SO_OVERLAP, sw->ccap, &nc)))
+  else if (!(code = contact_rows(sw, P, rec, out + SO_OVERLAP, sw->ccap, &nc))) {
     sw->qnc = nc, sw->pq = q, sw->qrec = rec;
+    if (sw->qown) { /* (one-sample calls: copies, the caller's buffer being the next's) */
+      memcpy(sw->qown, q, sizeof(double) * (size_t)ns);
+      memcpy(sw->qown + ns, rec, sizeof(double) * (size_t)(CR_W * nc));
+      sw->pq = sw->qown, sw->qrec = sw->qown + ns;
+    }
+  }
   /* the records' room after those written zeroed, whatever the caller's buffer held */
   memset(rec + CR_W * nc, 0, sizeof(double) * (size_t)(CR_W * (sw->ccap - nc)));
   if (code) { /* (the rows found before it stand where the ground's were: not kept) */
@@ -420,11 +426,16 @@ static int forward(const double *pk, sc_int n, const double *q, sc_int sq, const
   /* inputs first: a sample that is not finite refuses the call (scene_inputs.c) */
   if ((i = sc_inputs_bad(n, q, sq, tau, st, fo, sf, 3 * (sc_int)pk[SP_NO])) >= 0)
     return (int)(-3 - (i < 2000000000 ? i : 2000000000));
-  if (keep && *keep) /* (as made below: cold, no rows kept) */
-    sw = (sc_scene_work *)*keep, sw->pnb = -1, sw->qnc = -1;
-  else if (sc_scene_work_alloc(sw, pk, ccap, mcap, 1)) return -1;
-  else if (full_inertia(sw, sw->M), keep) /* the objects' part (M_s: per sample) */
+  if (keep && *keep) { /* (as made below: cold, the last call's rows kept for its q) */
+    sw = (sc_scene_work *)*keep, sw->pnb = -1;
+    if (!sw->qown) sw->qnc = -1; /* (no copy of that q: nothing kept) */
+  } else if (sc_scene_work_alloc(sw, pk, ccap, mcap, 1))
+    return -1;
+  else if (full_inertia(sw, sw->M), keep) { /* the objects' part (M_s: per sample) */
     *keep = sw = (sc_scene_work *)memcpy(sw->base, sw, sizeof(*sw));
+    sw->qown = (double *)malloc(sizeof(double) * (size_t)(SNAKECG_NS + CR_W * ccap)); /*
+      (null, out of memory: the rows found again at every call) */
+  }
   width = SO_QDD + SNAKECG_NS + 7 * sw->no + 3 * sw->ng + CR_W * ccap;
   for (i = 0, left = 0; i < n; ++i, --left) { /* cold at every chunk-th sample of the call */
     if (left == 0) left = chunk > 1 ? chunk : 1, sw->cool = sw->backoff = 0; /* (no division) */
@@ -448,7 +459,8 @@ int SNAKECG_EXPORT(core_scene_forward)(const double *pk, sc_int n, const double 
  * pointer (a foreign call's cost grows with its argument count; snakecg/engine/binding.py
  * mirrors it as SceneCall). keep (null at first): the scratch made at the first call and
  * reused by the next ones (the same pk, ccap, mcap; the fixed bodies placed, the objects'
- * inertia set); a call with n = 0 frees it. */
+ * inertia set; a call at the last call's q, bit for bit, keeps its rows, Z and G as a batch's
+ * samples at one q do: the same answers); a call with n = 0 frees it. */
 typedef struct {
   const double *pk; sc_int n; const double *q; sc_int sq;
   const double *tau; sc_int st; const double *fo; sc_int sf, ccap, mcap;

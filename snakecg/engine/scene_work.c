@@ -72,6 +72,6 @@ SC_INTERNAL int sc_scene_work_alloc(sc_scene_work *sw, const double *pk, sc_int 
   memset(sw->shape, 0, sizeof(sc_shape) * (size_t)(sw->nbody + 1));
   sw->start = sw->kind + mc;
   sw->placed = 0, sw->pnb = -1, sw->gnc = -1, sw->ftol = NAN; /* (nothing placed or kept) */
-  sw->qnc = -1, sw->qbuf = 0, sw->sk.ok = 0;
+  sw->qnc = -1, sw->qbuf = sw->qown = 0, sw->sk.ok = 0;
   return 0;
 }

@@ -27,6 +27,10 @@ typedef struct {
   const double *pq, *qrec;
   sc_int qnc;
   double *qbuf;
+  /* the one-sample calls' scratch (kept from call to call): its own copy of that q and
+   * those records (n_s, then CR_W a contact), as the caller's buffer is overwritten by the
+   * next call's (null: not made, nothing kept from one call to the next) */
+  double *qown;
   sc_solve_keep sk;
   sc_shape *shape;
   double *centre, *reach, *pose, *T; /* T: the contacts' tangent rows (null: no friction) */
@@ -43,8 +47,10 @@ typedef struct {
 SC_INTERNAL int sc_scene_work_alloc(sc_scene_work *sw, const double *pk, sc_int ccap,
                                     sc_int mcap, int own);
 static inline void sc_scene_work_free(sc_scene_work *sw) {
-  double *q = sw->qbuf; /* (read first: a kept scratch's struct is in its base) */
+  double *q = sw->qbuf, *o = sw->qown; /* (read first: a kept scratch's struct is in its
+    base) */
   free(sw->base);
   free(q);
+  free(o);
 }
 #endif

@@ -299,7 +299,9 @@ def _one_sample(model: GeneralSceneModel):
     are atomic: a second thread that finds it empty goes the general way; a third of a
     non-blocking lock's cost). A closure: its fields are its own variables, no lookups per
     call. The engine keeps its scratch from the first call to the next (the fixed bodies
-    placed, the objects' inertia set), freed with the closure."""
+    placed, the objects' inertia set; a call at the last call's q, the same bytes, keeps its
+    contacts, rows, Z and G as a batch's samples at one q do, with the same answers), freed
+    with the closure."""
     pk = model.packed
     ccap = min(CONTACTS_FIRST, pk.contacts_max)
     ns, na = model.n_coordinates, model.n_joints
