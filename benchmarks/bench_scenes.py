@@ -28,8 +28,9 @@
 * **primal piece** (``--primal``): the warm batches (torque map, random batch) with a warm
   start's piece solved in the primal (scene_primal.c) and without it, alternated;
 * **instructions** (``--instructions``, needs valgrind): machine instructions per sample
-  inside the engine's call and inside its solve (callgrind's inclusive counts over a batch),
-  figures that do not depend on the machine's load.
+  inside the engine's call and inside its solve (callgrind's inclusive counts over a batch:
+  the benchmark's at one q, 100 one-sample calls in a row at that q, the batch moved by
+  1e-10 and the paper's), figures that do not depend on the machine's load.
 
     python benchmarks/bench_scenes.py [--joints 10] [--n 2000] [--single 300] [--repeat 3]
                                       [--instructions] [--primal]
@@ -192,6 +193,10 @@ def _instructions_child(which: str, joints: int, n: int) -> None:
         Q, T = np.repeat(q[None], n, axis=0), rng.normal(0, 0.1, (n, joints))
         if which == "moved":
             Q = _moved(Q, rng)
+        if which == "single":  # one-sample calls in a row at one q (the engine's kept rows)
+            for t in T:
+                model.forward(q, t)
+            return
     model._run(Q, T, model._zero_f, n, True)
 
 
@@ -208,7 +213,7 @@ def bench_instructions(joints: int) -> None:
         return
     print("instructions per sample (callgrind, inclusive): the engine's call | its solve | the "
           "rest (contacts, rows, metrics)")
-    for which, n in (("scene", 100), ("moved", 100), ("paper", 2000)):
+    for which, n in (("scene", 100), ("single", 100), ("moved", 100), ("paper", 2000)):
         with tempfile.TemporaryDirectory() as tmp:
             out = f"{tmp}/cg.out"
             subprocess.run(["valgrind", "--tool=callgrind", f"--callgrind-out-file={out}",
