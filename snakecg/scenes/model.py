@@ -204,10 +204,10 @@ class GeneralSceneModel(RobotModel):
 
     def _run(self, q, tau, fo, N, batched, chunk=WARM_CHUNK):
         """The engine's outputs of N samples (None where an input is not finite): a first
-        pass with room for the contacts met so far (ROOM_MARGIN more); where some samples found more, the batch solved
-        again with room for every pair's (the whole batch where samples start from their
-        neighbours' pieces, so that the chain of starts is the one :meth:`details` meets;
-        only those samples where every sample starts cold)."""
+        pass with room for the contacts met so far and ROOM_MARGIN more; where some samples
+        found more, the batch solved again with room for every pair's (the whole batch where
+        samples start from their neighbours' pieces, so that the chain of starts is the one
+        :meth:`details` meets; only those samples where every sample starts cold)."""
         pk = self.packed
         ccap = min(CONTACTS_FIRST, pk.contacts_max,
                    self._met + ROOM_MARGIN if self._met >= 0 else CONTACTS_FIRST)
