@@ -58,19 +58,43 @@ def test_near_misses_against_clarabel_and_a_dense_model():
     """Flag-3 samples: the accelerations equal Clarabel's to 1e-6 (Clarabel itself reports
     these near-degenerate problems as possibly inaccurate at about 1e-7), the forces and
     accelerations meet the dense model's KKT conditions to 1e-6 of its scales. Samples that
-    are not near misses meet them to the default 1e-8."""
+    are not near misses meet them to the default 1e-8. (The forces are the batch's own, solved
+    along its chain of starts: a sample taken alone is solved cold, and where its face keeps a
+    basic solution, flag 2, it may meet other forces.)"""
     model, T, res = _moved_batch(1e-9, 120)
     dep, status = res.dependent, res.status
     near = np.flatnonzero((status == 0) & (dep == 3))[:6]
     exact = np.flatnonzero((status == 0) & (dep != 3))[:6]
     assert len(near) >= 3 and len(exact) == 6
     for i, tol in [(i, 1e-6) for i in near] + [(i, 1e-8) for i in exact]:
-        one = res.sample(int(i))
-        p = dense_problem(one, model, T[i])
-        a = np.r_[np.asarray(one.qdd).ravel(), np.asarray(one.a_obj).ravel()]
-        lam = one._raw["lam"][0][:len(p["b"])]
+        p = dense_problem(res.sample(int(i)), model, T[i])  # (its rows)
+        a = np.r_[np.asarray(res.qdd[i]).ravel(), np.asarray(res.a_obj[i]).ravel()]
+        lam = res._raw["lam"][i][:len(p["b"])]  # (the batch's forces, of its accelerations)
         assert kkt_violations(p, lam, a, tol=tol) == [], i
         if tol == 1e-6:
             ref, st = clarabel_accelerations(p)
             assert st in ("optimal", "optimal_inaccurate"), st
             assert np.abs(a - ref).max() <= 1e-6 * max(1.0, np.abs(ref).max()), i
+
+
+def test_drifting_forces_are_read_from_the_settled_accelerations():
+    """Moved by 1e-8, the sweeps' force on a nearly dependent contact drifts toward zero along
+    the nearly singular direction for tens of thousands of sweeps (about 2e-7 of the force
+    scale a sweep), while its row's acceleration settles within a few tens of sweeps above
+    the acceptance: read from its acceleration, the contact is open. At least 97 % of the
+    samples that do not overlap are solved (before: 92.6 %; four of them only after 52,955 to
+    153,895 sweeps, now within 1,000), and those four meet the dense model's KKT conditions
+    and Clarabel's accelerations (to 1e-6, Clarabel's own accuracy on these problems)."""
+    model, T, res = _moved_batch(1e-8)
+    status, sweeps = res.status, res._raw["info"]["sweeps"]
+    apart = status != 3  # (137 samples overlap: q moved by 1e-8 presses a peg in too far)
+    assert np.mean(status[apart] == 0) >= 0.97, np.bincount(status)
+    for i in (72, 81, 108, 212):
+        assert status[i] == 0 and sweeps[i] <= 1000, (i, sweeps[i])
+        p = dense_problem(res.sample(i), model, T[i])
+        a = np.r_[np.asarray(res.qdd[i]).ravel(), np.asarray(res.a_obj[i]).ravel()]
+        lam = res._raw["lam"][i][:len(p["b"])]
+        assert kkt_violations(p, lam, a) == [], i
+        ref, st = clarabel_accelerations(p)
+        assert st in ("optimal", "optimal_inaccurate"), st
+        assert np.abs(a - ref).max() <= 1e-6 * max(1.0, np.abs(ref).max()), i

@@ -447,7 +447,8 @@ SC_INTERNAL int sc_min_norm_face(sc_problem *p, const double *Z, double *work, d
 }
 
 /* The pieces read from the current lam and w (declared in scene_sets.h). */
-SC_INTERNAL void sc_read_states(sc_problem *p, double rel, double rel2) {
+SC_INTERNAL void sc_read_states(sc_problem *p, double rel, double rel2, double wtol) {
+  const double wmax = wtol > 0 ? wtol * p->wscale : INFINITY;
   sc_int k;
   for (k = 0; k < p->nb; ++k) {
     sc_int r = p->start[k];
@@ -455,7 +456,8 @@ SC_INTERNAL void sc_read_states(sc_problem *p, double rel, double rel2) {
     switch (p->kind[k]) {
       case K_FREE: p->state[k] = S_HELD; break;
       case K_UNILATERAL:
-        p->state[k] = l[0] > rel * p->fscale ? S_HELD : (p->w[r] > 0 ? S_ZERO : S_HELD);
+        p->state[k] = p->w[r] > wmax ? S_ZERO :
+                      l[0] > rel * p->fscale ? S_HELD : (p->w[r] > 0 ? S_ZERO : S_HELD);
         break;
       case K_BOX:
         p->state[k] = !(q[0] > 0) ? S_ZERO : (fabs(l[0]) < q[0] * (1 - rel) ? S_HELD : S_SLIDE);
@@ -468,7 +470,9 @@ SC_INTERNAL void sc_read_states(sc_problem *p, double rel, double rel2) {
         }
         sc_block_P(p, k, l, P);
         phi = P[0] * l[0] * l[0] + P[1] * l[1] * l[1];
-        p->state[k] = phi < (1 - rel2) * (1 - rel2) ? S_HELD : S_SLIDE;
+        p->state[k] = phi < (1 - rel2) * (1 - rel2) &&
+                      !(p->w[r] * p->w[r] + p->w[r + 1] * p->w[r + 1] > wmax * wmax) ? S_HELD :
+                      S_SLIDE;
         if (p->state[k] == S_SLIDE) {
           double g = -(p->w[r] * P[0] * l[0] + p->w[r + 1] * P[1] * l[1]) /
                      (P[0] * P[0] * l[0] * l[0] + P[1] * P[1] * l[1] * l[1]);

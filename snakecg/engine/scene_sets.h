@@ -13,8 +13,12 @@ enum { INFO_STATUS = 0, INFO_DEPENDENT, INFO_PRIMAL, INFO_DUAL, INFO_COMPL, INFO
 
 /* Each block's piece (held, zero, sliding) read from p's lam and w: a contact row below
  * rel * fscale reads zero where w > 0, a box within rel of its bound and a 2-D block within
- * rel2 of its boundary (relative) read sliding (gamma from w); a set {0} reads zero. */
-SC_INTERNAL void sc_read_states(sc_problem *p, double rel, double rel2);
+ * rel2 of its boundary (relative) read sliding (gamma from w); a set {0} reads zero. With
+ * wtol > 0 (w converged: read from its accelerations as well), a contact row or a 2-D block
+ * that accelerates by more than wtol * wscale reads zero or sliding whatever its force (a
+ * held row keeps no acceleration: on nearly dependent rows the forces drift along the
+ * nearly singular direction for thousands of sweeps while w has settled). */
+SC_INTERNAL void sc_read_states(sc_problem *p, double rel, double rel2, double wtol);
 
 /* (inline: called per block in the solve's checks and the primal's face, a few tens of times a
  * solve) P of a 2-D block at lam (diag, 2 entries): the set is lam^T P lam <= 1 */

@@ -33,7 +33,8 @@
  *      that fails within a few passes, from block Gauss-Seidel sweeps (each block minimised
  *      exactly: a clamp, or a 2-D trust-region problem whose secular equation is solved to
  *      rounding), read after five sweeps and tried where they read otherwise than at the last
- *      try, every failed try doubling the sweeps to the next reading (or once they converged).
+ *      try, every failed try doubling the sweeps to the next reading (or once they converged;
+ *      where w settled, a row that accelerates reads zero or sliding whatever its force).
  * The certificate (KKT residuals, relative to the sample's force and acceleration scales) is
  * returned with every sample. Where the held rows' equations are dependent (statically
  * indeterminate), the flag is set and the held forces are the minimum-norm ones on the face
@@ -58,6 +59,12 @@ enum { ST_SOLVED = 0, ST_NOT_CONVERGED = 1, ST_SINGULAR_MASS = 2, ST_BAD_INPUT =
 #define TRY_PASSES 6 /* from pieces read before the sweeps converged */
 #define CHUNK 5 /* sweeps before the first reading of the pieces */
 #define READ_SLIDE 0.15 /* 2-D block read sliding within this of its boundary mid-sweeps */
+/* the sweeps' w taken as settled once they converged or, at the margin's readings (after two
+ * failed tries), after this many sweeps: a row accelerating beyond TOL_ACCEPT then reads
+ * zero or sliding (sc_read_states), where on nearly dependent rows the forces drift for
+ * thousands of sweeps along the nearly singular direction while w has settled (earlier, w
+ * is not yet accurate to TOL_ACCEPT and such readings fail) */
+#define READ_W_SWEEPS 200
 
 /* The KKT residuals (relative): primal (outside the set), dual (w not in -N_K(lam)),
  * complementarity; and the states switched where they are violated (returns 1 if any). The
@@ -373,7 +380,9 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
     int same = 1;
     sc_int s = reread ? chunk : sc_block_sweeps(&p, chunk, 1e-12, total_sweeps == 0, prep);
     if (!reread) total_sweeps += s;
-    sc_read_states(&p, 1e-6, s < chunk || fails >= 2 ? 1e-6 : READ_SLIDE); /* (converged: 1e-6) */
+    sc_read_states(&p, 1e-6, s < chunk || fails >= 2 ? 1e-6 : READ_SLIDE,
+                   s < chunk || (fails >= 2 && total_sweeps >= READ_W_SWEEPS) ? TOL_ACCEPT :
+                   0.0); /* (converged: 1e-6, and from w where it settled) */
     for (k = 0; k < nb; ++k)
       if (state[k] != prev[k]) same = 0;
     if (same && s == chunk) { /* (a re-read as the margin's: as after its failed try) */
