@@ -7,7 +7,8 @@ leave their sets, and its rows accelerate, by about delta of their scales, beyon
 acceptance of 1e-9 for delta between 1e-9 and 1e-5. The solve first moves such forces along
 the face's null space into their sets; where no piece is accepted it answers its best near
 miss (every KKT residual at most 1e-7) with the dependent flag 3, its certificate saying how
-far.
+far. A sample whose sweeps run a thousand times without a solved piece has its reading solved
+once more from Z itself (its pivoted QR resolves what G cannot), one switch a pass.
 
 The 10-joint benchmark scene has its pegs pressed at the links' middles (exactly dependent
 rows); moving q by 1e-10 or 1e-9 (within the contacts' tolerance: the same contacts) makes
@@ -41,17 +42,41 @@ def _worst(res):
 
 @pytest.mark.parametrize("scale", [1e-10, 1e-9])
 def test_nearly_dependent_rows_are_solved_and_flagged(scale):
-    """At 1e-10 every sample is solved; at 1e-9 all but at most 1 % (before: 2 % and 12 %
-    not converged, each after 200,000 Gauss-Seidel sweeps). Accepted samples keep the 1e-9
-    certificate; the near misses (flag 3) are certified to at most 1e-7."""
+    """At 1e-10 and 1e-9 every sample is solved (before the solve from Z: one of 500 at 1e-9
+    was not, after 200,000 Gauss-Seidel sweeps). Accepted samples keep the 1e-9 certificate;
+    the near misses (flag 3) are certified to at most 1e-7, and at 1e-9 they are at most 20
+    of 500 (32 before the solve from Z, which answers most of them exactly)."""
     _, _, res = _moved_batch(scale)
     status, dep, worst = res.status, res.dependent, _worst(res)
-    assert np.mean(status == 0) >= 0.99, np.bincount(status)
+    assert np.all(status == 0), np.bincount(status)
     exact, near = (status == 0) & (dep != 3), (status == 0) & (dep == 3)
     assert worst[exact].max() <= 1e-9
     assert np.all(worst[near] <= 1e-7) and np.all(worst[near] > 1e-9)
     if scale == 1e-9:
-        assert near.sum() >= 10  # (the case is met: 58 of 500 here)
+        assert 5 <= near.sum() <= 20  # (the case is met: 13 of 500 here)
+
+
+@pytest.mark.parametrize("scale", [1e-9, 1e-8])
+def test_long_runs_solved_from_z_meet_the_dense_model_and_clarabel(scale):
+    """The samples answered exactly after a thousand sweeps or more (the solve from Z's
+    pieces, or the sweeps' own later reading): every one meets the dense model's KKT
+    conditions with the batch's forces, and Clarabel's accelerations to 1e-6 (Clarabel's own
+    accuracy on these problems). They are many (21 of 500 at 1e-9, 20 of 363 at 1e-8), and
+    sample 441 at 1e-9, which no reading of the sweeps solved in 200,000 sweeps, is one."""
+    model, T, res = _moved_batch(scale)
+    sweeps = res._raw["info"]["sweeps"]
+    long = np.flatnonzero((res.status == 0) & (res.dependent != 3) & (sweeps >= 1000))
+    assert len(long) >= 15, len(long)
+    if scale == 1e-9:
+        assert 441 in long and sweeps[441] < 2000, sweeps[441]
+    for i in long:
+        p = dense_problem(res.sample(int(i)), model, T[i])
+        a = np.r_[np.asarray(res.qdd[i]).ravel(), np.asarray(res.a_obj[i]).ravel()]
+        lam = res._raw["lam"][i][:len(p["b"])]
+        assert kkt_violations(p, lam, a) == [], i
+        ref, st = clarabel_accelerations(p)
+        assert st in ("optimal", "optimal_inaccurate"), st
+        assert np.abs(a - ref).max() <= 1e-6 * max(1.0, np.abs(ref).max()), i
 
 
 def test_near_misses_against_clarabel_and_a_dense_model():
@@ -61,7 +86,7 @@ def test_near_misses_against_clarabel_and_a_dense_model():
     are not near misses meet them to the default 1e-8. (The forces are the batch's own, solved
     along its chain of starts: a sample taken alone is solved cold, and where its face keeps a
     basic solution, flag 2, it may meet other forces.)"""
-    model, T, res = _moved_batch(1e-9, 120)
+    model, T, res = _moved_batch(1e-9, 300)
     dep, status = res.dependent, res.status
     near = np.flatnonzero((status == 0) & (dep == 3))[:6]
     exact = np.flatnonzero((status == 0) & (dep != 3))[:6]

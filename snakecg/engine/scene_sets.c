@@ -359,9 +359,8 @@ static int min_norm_in_sets(const sc_problem *p, sc_int nf, const sc_int *fk, co
  * reads it. */
 SC_INTERNAL int sc_min_norm_face(sc_problem *p, const double *Z, double *work, double eps) {
   const sc_int m = p->m;
-  sc_int F[512], fk[512], perm[512], nf = 0, i, j, k, t, nnull = 0, tnull;
-  double *A, *V, *ev, *l0;
-  int attempt;
+  sc_int F[512], fk[512], perm[512], nf = 0, i, j, k, nnull = 0;
+  double *A, *V, *ev;
   for (k = 0; k < p->nb; ++k) { /* the face: every block whose rows do not accelerate */
     if (p->state[k] != S_HELD && !sc_still(p, k)) continue;
     for (i = 0; i < sc_block_size(p->kind[k]) && nf < 512; ++i) {
@@ -373,12 +372,23 @@ SC_INTERNAL int sc_min_norm_face(sc_problem *p, const double *Z, double *work, d
   A = work;
   V = A + nf * nf;
   ev = V + nf * nf;
-  l0 = ev + 2 * nf;
   for (i = 0; i < nf; ++i) /* (the lower triangle: all that null_space reads) */
     for (j = 0; j <= i; ++j) A[i * nf + j] = p->G[F[i] * m + F[j]];
   nnull = null_space(nf, A, V, ev, perm);
   if (nnull == 0) return 0;
-  tnull = nnull - 1;
+  return sc_min_norm_basis(p, Z, nf, F, fk, V, nnull, ev, eps);
+}
+
+/* sc_min_norm_face's choice on the face's rows F (nf, fk: their blocks) with the null space V
+ * (nnull orthonormal vectors, V + t nf) given (scene_rescue.c's: from Z's QR). Returns 1 when
+ * the minimum-norm forces were found, 2 when not. Work: 2 nf^2 + 12 nf + n^2 + 3 n doubles. */
+SC_INTERNAL int sc_min_norm_basis(sc_problem *p, const double *Z, sc_int nf, const sc_int *F,
+                                  const sc_int *fk, double *V, sc_int nnull, double *work,
+                                  double eps) {
+  const sc_int m = p->m;
+  sc_int i, j, t, tnull = nnull - 1;
+  double *l0 = work + 2 * nf;
+  int attempt;
   for (attempt = 0;; ++attempt) { /* (again with V refined where the choice moves the
     accelerations beyond rounding) */
     double quad = 0.0;

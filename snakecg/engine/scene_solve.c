@@ -34,7 +34,9 @@
  *      exactly: a clamp, or a 2-D trust-region problem whose secular equation is solved to
  *      rounding), read after five sweeps and tried where they read otherwise than at the last
  *      try, every failed try doubling the sweeps to the next reading (or once they converged;
- *      where w settled, a row that accelerates reads zero or sliding whatever its force).
+ *      where w settled, a row that accelerates reads zero or sliding whatever its force);
+ *      after RESCUE_SWEEPS sweeps without a solved piece, the reading is solved once more
+ *      from Z itself, one switch a pass (scene_rescue.c: nearly dependent held rows).
  * The certificate (KKT residuals, relative to the sample's force and acceleration scales) is
  * returned with every sample. Where the held rows' equations are dependent (statically
  * indeterminate), the flag is set and the held forces are the minimum-norm ones on the face
@@ -65,6 +67,9 @@ enum { ST_SOLVED = 0, ST_NOT_CONVERGED = 1, ST_SINGULAR_MASS = 2, ST_BAD_INPUT =
  * thousands of sweeps along the nearly singular direction while w has settled (earlier, w
  * is not yet accurate to TOL_ACCEPT and such readings fail) */
 #define READ_W_SWEEPS 200
+/* sweeps after which a reading not yet solved is solved once more from Z itself
+ * (scene_rescue.c: nearly dependent held rows, which G_HH cannot resolve) */
+#define RESCUE_SWEEPS 1000
 
 /* The KKT residuals (relative): primal (outside the set), dual (w not in -N_K(lam)),
  * complementarity; and the states switched where they are violated (returns 1 if any). The
@@ -317,7 +322,7 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
   sc_problem p;
   sc_tr2d prep[2 * PREP_BLOCKS]; /* (the sweeps' blocks' H parts: taken at their first sweep) */
   sc_near near;
-  int dep = 0, ok = 0, primal = 0, reread = 0, fails = 0, nearly = 0;
+  int dep = 0, ok = 0, primal = 0, reread = 0, fails = 0, nearly = 0, rescued = 0, zw = 0;
   if (tiny && sc_tiny_solve(n, m, nb, M, f, A, c, kind, start, par, from, lam, a, w, state_out,
                             info))
     return; /* (a tiny problem of one-row blocks: scene_tiny.c, the same steps compiled) */
@@ -385,6 +390,17 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
                    0.0); /* (converged: 1e-6, and from w where it settled) */
     for (k = 0; k < nb; ++k)
       if (state[k] != prev[k]) same = 0;
+    if (!rescued && s == chunk && total_sweeps >= RESCUE_SWEEPS) { /* a long run's reading,
+      solved once from Z (on failure, the sweeps go on from their point) */
+      sc_int *read = prev + nb;
+      rescued = 1;
+      memcpy(keep, lam, sizeof(double) * (size_t)m);
+      memcpy(read, state, sizeof(sc_int) * (size_t)nb);
+      if ((ok = zw = sc_rescue(&p, Z, a, c, rest, iw2, read + nb, &passes, &defect, res, kkt)))
+        break;
+      memcpy(lam, keep, sizeof(double) * (size_t)m);
+      memcpy(state, read, sizeof(sc_int) * (size_t)nb);
+    }
     if (same && s == chunk) { /* (a re-read as the margin's: as after its failed try) */
       if (reread && chunk < 16 * CHUNK) chunk *= 2;
       reread = 0;
@@ -439,8 +455,10 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
         if (acc == keep) keep[start[k]] = fmax(keep[start[k]], 0.0);
         moved = 1;
       }
-    if (moved) {
-      sc_update_w(&p);
+    if (moved) { /* (w from Z where the rescue solved the piece: G's products would carry
+      its rounding times the nearly dependent rows' large forces) */
+      if (zw) sc_rescue_w(&p, Z, a, c, rest);
+      else sc_update_w(&p);
       kkt(&p, res, 0);
     }
   }
@@ -495,7 +513,7 @@ answered:
 void SNAKECG_EXPORT(core_scene_solve_work)(sc_int n, sc_int m, sc_int nb, sc_int *nd, sc_int *ni) {
   *nd = n * n + n * m + m * m + m + nb + 2 * m + rest_size(n, m, nb) + (m + nb); /* (the
         last: the near miss kept) */
-  *ni = nb + 4 * (m + nb) + 16 + n;
+  *ni = 3 * nb + 4 * (m + nb) + 16 + n; /* (the last 2 nb: the rescue's reading and switches) */
 }
 
 /* A batch of samples of equal sizes n; sample s has m[s] rows and nb[s] blocks (padded to

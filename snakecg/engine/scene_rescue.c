@@ -1,0 +1,396 @@
+/* snakecg's engine: pieces with nearly dependent held rows solved from Z itself (scene_solve.c's
+ * last resort, once its Gauss-Seidel sweeps have run RESCUE_SWEEPS without a solved piece).
+ *
+ * The dual's piece (scene_piece.c) eliminates the held rows through G_HH = Z_H^T Z_H. Where
+ * Z_H's columns are delta from dependent, G_HH holds delta^2: for delta below about 1e-7
+ * that is below G's rounding, and rows that are only nearly dependent are taken as dependent
+ * (dropped); their accelerations then stay at about delta of their scale, beyond the
+ * acceptance, whatever piece the sweeps read, while the sweeps' forces drift along the nearly
+ * singular direction. Z_H resolves them: its pivoted QR keeps a row down to RESCUE_DEP of the
+ * first pivot, far below delta and far above the exactly dependent rows' rounding (1e-16).
+ *
+ * A piece is solved in the primal, as scene_primal.c's (y = L^T a, g = L^-1 f, Z = L^-1 A^T,
+ * w = Z^T y + c):
+ *   minimise 1/2 |y - g_F|^2 + sum_{sliding disc i} s_i |w_i|   subject to w_B = 0,
+ * B the held rows that Z_H's pivoted QR keeps (the basic ones; the others are combinations
+ * of them to rounding, their forces zero: the face's basic solution), g_F the free motion
+ * with the saturated boxes' forces. Newton with the equalities: H = I + sum_i (s_i / |w_i|)
+ * v_i v_i^T = R R^T (v_i = Z_i u_i^perp), e = R^T dy, Y = R^-1 Z_B = Q_1 R_1 (Householder),
+ *   e = -(I - Q_1 Q_1^T) q + Q_1 R_1^-T r_B,   q = R^-1 grad,   r_B = -(Z_B^T y + c_B),
+ * the projection and the equalities' correction by orthogonal factors (no product Y^T Y, no
+ * squared condition); the first step whole (onto the equalities), the later ones halved while
+ * the objective rises. A sliding disc keeps its last direction u_i while its |w_i| is below
+ * SLIDE_FLOOR of the scale (at first its force's). Then the forces: the sliding discs'
+ * -s_i u_i, the basic rows' Z_B lam_B = y - g_F - Z_S lam_S by Z_B's QR, every row's w from
+ * g + Z lam. A sliding split ellipse is not treated (returns 0); a box at its bound is a
+ * fixed force.
+ *
+ * The active set (sc_rescue) starts from the sweeps' reading and switches one block a pass,
+ * the one that breaks its piece the most: switching every violated block at once, as
+ * scene_solve.c's passes do, wanders on these pieces. Where the held rows are dependent, the
+ * face's forces are first moved into their sets along Z_F's null space (scene_sets.c's
+ * minimum-norm choice with that basis). Every answer is the caller's to certify (its KKT
+ * check, on w from Z): the rescue finds pieces, it does not relax the acceptance. */
+#include <math.h>
+#include <string.h>
+
+#include "snakecg_layout.h"
+#include "engine.h"
+#include "scene_sets.h"
+
+#define RESCUE_DEP 1e-12 /* Z_H's pivots at most this of the first: dependent rows */
+#define RESCUE_STEPS 40  /* Newton steps at most */
+#define RESCUE_PASSES 40 /* active-set passes at most (one switch each) */
+#define SLIDE_FLOOR 1e-10 /* a sliding disc's |w| (of the scale) below which its direction stays */
+
+/* Householder QR of X (n x h, column j at X + j n) in place: R's upper triangle (R_kk in
+ * X[k n + k]... as X[j n + k] for k <= j), reflector k (v_k, n - k long, v_k[0] = 1 implied
+ * by V[k n + k]) in V with its factor beta[k]; columns pivoted by their remaining norms where
+ * perm (length h, in: the columns' labels) is given, stopping where a pivot falls to rtol of
+ * the first. Returns the rank (the steps taken). */
+static sc_int householder(sc_int n, sc_int h, double *X, double *V, double *beta, sc_int *perm,
+                          double rtol) {
+  sc_int k, i, j, kmax = n < h ? n : h;
+  double r0 = 0.0;
+  for (k = 0; k < kmax; ++k) {
+    double nrm = 0.0, alpha, vv, *x = X + k * n, *v = V + k * n;
+    if (perm) { /* the column of the largest remaining norm first */
+      sc_int best = k;
+      double bn = -1.0;
+      for (j = k; j < h; ++j) {
+        double s = 0.0;
+        for (i = k; i < n; ++i) s += X[j * n + i] * X[j * n + i];
+        if (s > bn) bn = s, best = j;
+      }
+      if (best != k) {
+        sc_int t = perm[k];
+        perm[k] = perm[best], perm[best] = t;
+        for (i = 0; i < n; ++i) {
+          double u = X[k * n + i];
+          X[k * n + i] = X[best * n + i], X[best * n + i] = u;
+        }
+      }
+    }
+    for (i = k; i < n; ++i) nrm += x[i] * x[i];
+    nrm = sqrt(nrm);
+    if (k == 0) r0 = nrm;
+    if (!(nrm > rtol * r0) || !(nrm > 0)) return k;
+    alpha = x[k] > 0 ? -nrm : nrm;
+    for (i = 0; i < n; ++i) v[i] = i < k ? 0.0 : x[i];
+    v[k] -= alpha;
+    for (i = k, vv = 0.0; i < n; ++i) vv += v[i] * v[i];
+    beta[k] = vv > 0 ? 2.0 / vv : 0.0;
+    x[k] = alpha;
+    for (i = k + 1; i < n; ++i) x[i] = 0.0;
+    for (j = k + 1; j < h; ++j) { /* the reflector on the later columns */
+      double *xj = X + j * n, s = 0.0;
+      for (i = k; i < n; ++i) s += v[i] * xj[i];
+      s *= beta[k];
+      for (i = k; i < n; ++i) xj[i] -= s * v[i];
+    }
+  }
+  return kmax;
+}
+
+/* x = Q^T x (t: 1) or Q x (t: 0) for Q = H_0 ... H_{r-1} */
+static void apply_q(sc_int n, sc_int r, const double *V, const double *beta, double *x, int t) {
+  sc_int k, i;
+  for (k = t ? 0 : r - 1; t ? k < r : k >= 0; k += t ? 1 : -1) {
+    const double *v = V + k * n;
+    double s = 0.0;
+    for (i = k; i < n; ++i) s += v[i] * x[i];
+    s *= beta[k];
+    for (i = k; i < n; ++i) x[i] -= s * v[i];
+  }
+}
+
+/* Every row's w = Z^T (g + Z lam) + c, from Z (y: n scratch, left g + Z lam). */
+SC_INTERNAL void sc_rescue_w(sc_problem *p, const double *Z, const double *g, const double *c,
+                             double *y) {
+  const sc_int n = p->n, m = p->m;
+  sc_int i, j;
+  for (i = 0; i < n; ++i) {
+    double t = g[i];
+    for (j = 0; j < m; ++j) t += Z[i * m + j] * p->lam[j];
+    y[i] = t;
+  }
+  for (j = 0; j < m; ++j) {
+    double u = c ? c[j] : 0.0;
+    for (i = 0; i < n; ++i) u += Z[i * m + j] * y[i];
+    p->w[j] = u;
+  }
+}
+
+/* the objective 1/2 |y - g_F|^2 + sum s_i |w_i| at y (ws, nws: the sliding discs' w, |w|) */
+static double objective(sc_int n, const sc_problem *p, const double *Z, const double *c,
+                        const sc_int *sl, sc_int ns, const double *gF, const double *y, double *ws,
+                        double *nws) {
+  sc_int i, j, e;
+  double v = 0.0;
+  for (i = 0; i < n; ++i) v += 0.5 * (y[i] - gF[i]) * (y[i] - gF[i]);
+  for (j = 0; j < ns; ++j) {
+    for (e = 0; e < 2; ++e) {
+      double u = c ? c[sl[j] + e] : 0.0;
+      for (i = 0; i < n; ++i) u += Z[i * p->m + sl[j] + e] * y[i];
+      ws[2 * j + e] = u;
+    }
+    nws[j] = sqrt(ws[2 * j] * ws[2 * j] + ws[2 * j + 1] * ws[2 * j + 1]);
+    v += p->par[3 * sl[ns + j]] * nws[j]; /* (the disc's block index after its row) */
+  }
+  return v;
+}
+
+/* The piece of p->state solved from Z (the header's); its forces' start in p->lam (the sliding
+ * discs' directions, the start y = g_F + Z lam). p->lam and p->w (every row's, from g + Z lam)
+ * filled; returns 1 (def: the held rows' rank defect by Z_H's QR, their basic forces), or 0
+ * where it does not treat the piece (p->lam, p->w then undefined). Work: n^2 + 3 n m + 6 n +
+ * 6 m doubles, 2 m sc_ints. */
+static int rescue_piece(sc_problem *p, const double *Z, const double *g, const double *c,
+                                double *work, sc_int *iwork, sc_int *def) {
+  const sc_int n = p->n, m = p->m;
+  double *R = work, *X = R + n * n, *V = X + n * m, *VY = V + n * m, *gF = VY + n * m,
+         *y = gF + n, *grad = y + n, *q = grad + n, *dy = q + n, *yt = dy + n, *ws = yt + n,
+         *nws = ws + m, *beta = nws + m, *betaY = beta + m, *rb = betaY + m, *ud = rb + m;
+  sc_int *hr = iwork, *sl = hr + m, h = 0, ns = 0, rank, i, j, k, it;
+  double phi, ysc = sqrt(p->fscale * p->wscale);
+  for (i = 0; i < n; ++i) gF[i] = g[i];
+  for (k = 0; k < p->nb; ++k) { /* the piece: held rows, fixed forces, sliding discs */
+    const sc_int r = p->start[k], nk = sc_block_size(p->kind[k]);
+    double *l = p->lam + r;
+    if (p->state[k] == S_ZERO) {
+      for (i = 0; i < nk; ++i) l[i] = 0.0;
+    } else if (p->state[k] == S_HELD) {
+      for (i = 0; i < nk; ++i) hr[h++] = r + i;
+    } else if (p->kind[k] == K_BOX) {
+      l[0] = l[0] >= 0 ? p->par[3 * k] : -p->par[3 * k];
+      for (i = 0; i < n; ++i) gF[i] += Z[i * m + r] * l[0];
+    } else if (p->kind[k] == K_DISC) {
+      double nl = sqrt(l[0] * l[0] + l[1] * l[1]);
+      if (!(nl > 0)) return 0;
+      l[0] *= p->par[3 * k] / nl, l[1] *= p->par[3 * k] / nl;
+      sl[ns++] = r;
+    } else {
+      return 0; /* a sliding split ellipse */
+    }
+  }
+  for (j = 0; j < ns; ++j) { /* (each disc's block, after the rows: for its radius; its
+    sliding direction u_j from its force, until its w gives one) */
+    for (k = 0; k < p->nb; ++k)
+      if (p->start[k] == sl[j]) sl[ns + j] = k;
+    ud[2 * j] = -p->lam[sl[j]] / p->par[3 * sl[ns + j]];
+    ud[2 * j + 1] = -p->lam[sl[j] + 1] / p->par[3 * sl[ns + j]];
+  }
+  for (j = 0; j < h; ++j) /* Z_H's columns, pivoted QR: the basic rows first in hr */
+    for (i = 0; i < n; ++i) X[j * n + i] = Z[i * m + hr[j]];
+  rank = householder(n, h, X, V, beta, hr, RESCUE_DEP);
+  *def = h - rank;
+  /* the start y = g_F + Z lam over the sliding discs and held rows (dropped rows: lam 0) */
+  for (j = rank; j < h; ++j) p->lam[hr[j]] = 0.0;
+  for (i = 0; i < n; ++i) {
+    double t = gF[i];
+    for (j = 0; j < ns; ++j) t += Z[i * m + sl[j]] * p->lam[sl[j]] + Z[i * m + sl[j] + 1] * p->lam[sl[j] + 1];
+    for (j = 0; j < rank; ++j) t += Z[i * m + hr[j]] * p->lam[hr[j]];
+    y[i] = t;
+  }
+  phi = objective(n, p, Z, c, sl, ns, gF, y, ws, nws);
+  for (it = 0; it < RESCUE_STEPS; ++it) {
+    double step = 0.0, tstep = 1.0, ymax = ysc;
+    for (j = 0; j < ns; ++j)
+      if (nws[j] > SLIDE_FLOOR * p->wscale) /* (else the last direction: a disc at rest) */
+        ud[2 * j] = ws[2 * j] / nws[j], ud[2 * j + 1] = ws[2 * j + 1] / nws[j];
+    /* the gradient y - g_F + sum s_j Z_j u_j, the Hessian I + sum (s_j / |w_j|) v_j v_j^T */
+    for (i = 0; i < n; ++i) grad[i] = y[i] - gF[i];
+    for (i = 0; i < n * n; ++i) R[i] = 0.0;
+    for (i = 0; i < n; ++i) R[i * n + i] = 1.0;
+    for (j = 0; j < ns; ++j) {
+      const double s = p->par[3 * sl[ns + j]], u0 = ud[2 * j], u1 = ud[2 * j + 1],
+                   f = s / fmax(nws[j], SLIDE_FLOOR * p->wscale);
+      double *v = yt;
+      for (i = 0; i < n; ++i) {
+        const double z0 = Z[i * m + sl[j]], z1 = Z[i * m + sl[j] + 1];
+        grad[i] += s * (z0 * u0 + z1 * u1);
+        v[i] = -z0 * u1 + z1 * u0;
+      }
+      for (i = 0; i < n; ++i)
+        for (k = 0; k <= i; ++k) R[i * n + k] += f * v[i] * v[k];
+    }
+    for (i = 0; i < n; ++i) { /* Cholesky, lower (R[i n + k], k <= i) */
+      for (k = 0; k <= i; ++k) {
+        double s = R[i * n + k];
+        for (j = 0; j < k; ++j) s -= R[i * n + j] * R[k * n + j];
+        if (k < i) R[i * n + k] = s / R[k * n + k];
+        else if (!(s > 0)) return 0;
+        else R[i * n + i] = sqrt(s);
+      }
+    }
+    /* q = R^-1 grad, Y = R^-1 Z_B (column j at X + j n, overwriting Z_B's factor: kept in V
+     * and R_B's triangle is read from... the later solve refactors Z_B), r_B = -(Z_B^T y + c_B) */
+    for (i = 0; i < n; ++i) {
+      double s = grad[i];
+      for (k = 0; k < i; ++k) s -= R[i * n + k] * q[k];
+      q[i] = s / R[i * n + i];
+    }
+    for (j = 0; j < rank; ++j) {
+      double *yj = X + j * n, u = c ? c[hr[j]] : 0.0;
+      for (i = 0; i < n; ++i) u += Z[i * m + hr[j]] * y[i];
+      rb[j] = -u;
+      for (i = 0; i < n; ++i) {
+        double s = Z[i * m + hr[j]];
+        for (k = 0; k < i; ++k) s -= R[i * n + k] * yj[k];
+        yj[i] = s / R[i * n + i];
+      }
+    }
+    if (householder(n, rank, X, VY, betaY, NULL, 0.0) < rank) return 0;
+    /* e = -(I - Q1 Q1^T) q + Q1 R1^-T r_B, in dy: Q^T q with its first rank entries replaced
+     * by R1^-T r_B, the rest negated, then Q */
+    for (i = 0; i < n; ++i) dy[i] = q[i];
+    apply_q(n, rank, VY, betaY, dy, 1);
+    for (j = 0; j < rank; ++j) {
+      double s = rb[j];
+      for (k = 0; k < j; ++k) s -= X[j * n + k] * dy[k];
+      dy[j] = s / X[j * n + j];
+    }
+    for (i = rank; i < n; ++i) dy[i] = -dy[i];
+    apply_q(n, rank, VY, betaY, dy, 0);
+    for (i = n - 1; i >= 0; --i) { /* dy = R^-T e */
+      double s = dy[i];
+      for (k = i + 1; k < n; ++k) s -= R[k * n + i] * dy[k];
+      dy[i] = s / R[i * n + i];
+    }
+    for (i = 0; i < n; ++i) step = fmax(step, fabs(dy[i])), ymax = fmax(ymax, fabs(y[i]));
+    for (;;) { /* the first step whole (onto the equalities); later ones halved while phi rises */
+      double pt;
+      for (i = 0; i < n; ++i) yt[i] = y[i] + tstep * dy[i];
+      pt = objective(n, p, Z, c, sl, ns, gF, yt, ws, nws);
+      if (it == 0 || pt <= phi || tstep < 1e-10) {
+        phi = pt;
+        break;
+      }
+      tstep *= 0.5;
+    }
+    memcpy(y, yt, sizeof(double) * (size_t)n);
+    if (step * tstep <= 1e-15 * ymax) break;
+  }
+  /* the forces: sliding discs -s_j u_j; basic rows Z_B lam_B = y - g_F - Z_S lam_S by Z_B's
+   * QR (refactored: X held Y), dropped rows 0 */
+  for (j = 0; j < ns; ++j) {
+    const double s = p->par[3 * sl[ns + j]];
+    if (nws[j] > SLIDE_FLOOR * p->wscale)
+      ud[2 * j] = ws[2 * j] / nws[j], ud[2 * j + 1] = ws[2 * j + 1] / nws[j];
+    p->lam[sl[j]] = -s * ud[2 * j];
+    p->lam[sl[j] + 1] = -s * ud[2 * j + 1];
+  }
+  for (j = 0; j < rank; ++j)
+    for (i = 0; i < n; ++i) X[j * n + i] = Z[i * m + hr[j]];
+  if (householder(n, rank, X, V, beta, NULL, 0.0) < rank) return 0;
+  for (i = 0; i < n; ++i) {
+    double t = y[i] - gF[i];
+    for (j = 0; j < ns; ++j)
+      t -= Z[i * m + sl[j]] * p->lam[sl[j]] + Z[i * m + sl[j] + 1] * p->lam[sl[j] + 1];
+    dy[i] = t;
+  }
+  apply_q(n, rank, V, beta, dy, 1);
+  for (j = rank - 1; j >= 0; --j) {
+    double s = dy[j];
+    for (k = j + 1; k < rank; ++k) s -= X[k * n + j] * dy[k];
+    dy[j] = s / X[j * n + j];
+  }
+  for (j = 0; j < rank; ++j) p->lam[hr[j]] = dy[j];
+  sc_rescue_w(p, Z, g, c, y);
+  return 1;
+}
+
+/* Where the held rows are dependent (the piece's rank defect), the forces on the face (every
+ * block held or without acceleration) moved inside their sets, minimum-norm, along Z_F's null
+ * space: Z_F^T's pivoted Householder QR (pivots down to RESCUE_DEP of the first, as the piece's),
+ * its last nf - rank reflected unit vectors (orthonormal); scene_sets.c's sc_min_norm_basis
+ * (the accelerations may move by eps of their scale). Then every row's w from g + Z lam.
+ * Returns sc_min_norm_basis's answer (0: nothing to choose). */
+static int rescue_face(sc_problem *p, const double *Z, const double *g, const double *c,
+                               double *work, double eps) {
+  const sc_int n = p->n, m = p->m;
+  sc_int F[512], fk[512], perm[512], nf = 0, rank, i, j, k, t;
+  double *V, *X, *Vh, *beta, *rest;
+  int ans;
+  if (n > 512) return 0;
+  for (k = 0; k < p->nb; ++k) {
+    if (p->state[k] != S_HELD && !sc_still(p, k)) continue;
+    for (i = 0; i < sc_block_size(p->kind[k]) && nf < 512; ++i) fk[nf] = k, F[nf++] = p->start[k] + i;
+  }
+  if (nf == 0) return 0;
+  V = work, X = V + nf * nf, Vh = X + nf * n, beta = Vh + nf * n, rest = beta + n;
+  for (i = 0; i < n; ++i) { /* Z_F^T: nf x n, column i (coordinate i) contiguous */
+    perm[i] = i;
+    for (j = 0; j < nf; ++j) X[i * nf + j] = Z[i * m + F[j]];
+  }
+  rank = householder(nf, n, X, Vh, beta, perm, RESCUE_DEP);
+  if (rank >= nf) return 0;
+  for (t = 0; t < nf - rank; ++t) {
+    double *v = V + t * nf;
+    for (j = 0; j < nf; ++j) v[j] = j == rank + t ? 1.0 : 0.0;
+    apply_q(nf, rank, Vh, beta, v, 0);
+  }
+  ans = sc_min_norm_basis(p, Z, nf, F, fk, V, nf - rank, rest, eps);
+  sc_rescue_w(p, Z, g, c, rest);
+  return ans;
+}
+
+
+/* The rescue's active-set switch (the caller's KKT check switched p->state from was): only the
+ * block that breaks its piece the most keeps its switch (a contact's pull or acceleration into
+ * its obstacle, a box's or disc's force beyond its set, a sliding block's acceleration along
+ * its force; relative), the others are switched back. Many switches at once wander here,
+ * where the rows are nearly dependent. */
+static void one_switch(sc_problem *p, const sc_int *was) {
+  sc_int k, worst = -1;
+  double big = -1.0;
+  for (k = 0; k < p->nb; ++k) {
+    const sc_int r = p->start[k];
+    const double *l = p->lam + r, *w = p->w + r;
+    double v;
+    if (p->state[k] == was[k]) continue;
+    if (p->kind[k] == K_UNILATERAL) v = was[k] == S_HELD ? -l[0] / p->fscale : -w[0] / p->wscale;
+    else if (p->kind[k] == K_BOX)
+      v = was[k] == S_HELD ? (fabs(l[0]) - p->par[3 * k]) / p->fscale : fabs(w[0]) / p->wscale;
+    else if (was[k] == S_HELD) v = (hypot(l[0], l[1]) - p->par[3 * k]) / p->fscale;
+    else v = hypot(w[0], w[1]) / p->wscale;
+    if (v > big) big = v, worst = k;
+  }
+  for (k = 0; k < p->nb; ++k)
+    if (k != worst) p->state[k] = was[k];
+}
+
+/* Sliding discs that do not move (|w| within the acceptance: at their set's limit) held, as
+ * sc_polish holds them; returns 1 if any. */
+static int hold_still(sc_problem *p) {
+  sc_int k;
+  int any = 0;
+  for (k = 0; k < p->nb; ++k)
+    if (p->state[k] == S_SLIDE && p->kind[k] == K_DISC && sc_still(p, k))
+      p->state[k] = S_HELD, any = 1;
+  return any;
+}
+
+/* Active-set passes on pieces solved from Z from the states in p (its forces: the start), one
+ * switch a pass (kkt: scene_solve.c's check, which switches with its last argument 1, and
+ * returns 1 where it did), the face's forces moved into their sets where the held rows are
+ * dependent; w from Z throughout. Returns 1 when a piece's solution satisfies the KKT
+ * conditions (res: its residuals), else 0 (p->lam, p->w, p->state then the last pass's).
+ * Work: as sc_rescue's caller gives (rest_size doubles, 3 (m + nb) sc_ints), was: nb. */
+SC_INTERNAL int sc_rescue(sc_problem *p, const double *Z, const double *g, const double *c,
+                          double *work, sc_int *iwork, sc_int *was, sc_int *passes,
+                          sc_int *defect, double *res, int (*kkt)(sc_problem *, double *, int)) {
+  sc_int pass;
+  for (pass = 0; pass < RESCUE_PASSES; ++pass) {
+    ++*passes;
+    if (!rescue_piece(p, Z, g, c, work, iwork, defect)) return 0;
+    if (*defect > 0 && (kkt(p, res, 0), res[0] > TOL_ACCEPT) && res[1] <= TOL_ACCEPT &&
+        res[2] <= TOL_ACCEPT) /* (dependent rows: the face's forces into their sets) */
+      rescue_face(p, Z, g, c, work, 1e-10);
+    memcpy(was, p->state, sizeof(sc_int) * (size_t)p->nb);
+    if (kkt(p, res, 1)) one_switch(p, was);
+    else if (res[0] <= TOL_ACCEPT && res[1] <= TOL_ACCEPT && res[2] <= TOL_ACCEPT) return 1;
+    else if (!hold_still(p)) return 0;
+  }
+  return 0;
+}
