@@ -5,7 +5,8 @@
  * methods (Golub & Van Loan, "Matrix Computations", 4th ed.):
  *
  *   sc_lu_factor / sc_lu_solve          Gaussian elimination with partial pivoting (alg. 3.4.1)
- *   sc_cholesky / sc_cholesky_solve     A = L L^T, with a relative pivot threshold (alg. 4.2.2)
+ *   sc_cholesky / sc_cholesky_solve     A = L L^T, with a relative pivot threshold (alg. 4.2.2);
+ *                                       sc_lower_solve / sc_lower_t_solve by its factor alone
  *   sc_ldl_factor / sc_ldl_solve        A = L D L^T without pivoting, rows that may drop out
  *   sc_eigen_symmetric                  cyclic Jacobi rotations, eigenvectors optional (8.5.3)
  *   sc_qr_least_squares                 Householder QR with column pivoting (alg. 5.4.1), the
@@ -562,6 +563,16 @@ static inline void sc_lower_solve(sc_int n, const double *L, double *x) {
   for (i = 0; i < n; ++i) {
     double t = x[i];
     for (k = 0; k < i; ++k) t -= L[i * n + k] * x[k];
+    x[i] = t / L[i * n + i];
+  }
+}
+
+/* x := L^-T x, L as sc_lower_solve's */
+static inline void sc_lower_t_solve(sc_int n, const double *L, double *x) {
+  sc_int i, k;
+  for (i = n - 1; i >= 0; --i) {
+    double t = x[i];
+    for (k = i + 1; k < n; ++k) t -= L[k * n + i] * x[k];
     x[i] = t / L[i * n + i];
   }
 }

@@ -43,67 +43,6 @@
 #define RESCUE_PASSES 40 /* active-set passes at most (one switch each) */
 #define SLIDE_FLOOR 1e-10 /* a sliding disc's |w| (of the scale) below which its direction stays */
 
-/* Householder QR of X (n x h, column j at X + j n) in place: R's upper triangle (R_kk in
- * X[k n + k]... as X[j n + k] for k <= j), reflector k (v_k, n - k long, v_k[0] = 1 implied
- * by V[k n + k]) in V with its factor beta[k]; columns pivoted by their remaining norms where
- * perm (length h, in: the columns' labels) is given, stopping where a pivot falls to rtol of
- * the first. Returns the rank (the steps taken). */
-static sc_int householder(sc_int n, sc_int h, double *X, double *V, double *beta, sc_int *perm,
-                          double rtol) {
-  sc_int k, i, j, kmax = n < h ? n : h;
-  double r0 = 0.0;
-  for (k = 0; k < kmax; ++k) {
-    double nrm = 0.0, alpha, vv, *x = X + k * n, *v = V + k * n;
-    if (perm) { /* the column of the largest remaining norm first */
-      sc_int best = k;
-      double bn = -1.0;
-      for (j = k; j < h; ++j) {
-        double s = 0.0;
-        for (i = k; i < n; ++i) s += X[j * n + i] * X[j * n + i];
-        if (s > bn) bn = s, best = j;
-      }
-      if (best != k) {
-        sc_int t = perm[k];
-        perm[k] = perm[best], perm[best] = t;
-        for (i = 0; i < n; ++i) {
-          double u = X[k * n + i];
-          X[k * n + i] = X[best * n + i], X[best * n + i] = u;
-        }
-      }
-    }
-    for (i = k; i < n; ++i) nrm += x[i] * x[i];
-    nrm = sqrt(nrm);
-    if (k == 0) r0 = nrm;
-    if (!(nrm > rtol * r0) || !(nrm > 0)) return k;
-    alpha = x[k] > 0 ? -nrm : nrm;
-    for (i = 0; i < n; ++i) v[i] = i < k ? 0.0 : x[i];
-    v[k] -= alpha;
-    for (i = k, vv = 0.0; i < n; ++i) vv += v[i] * v[i];
-    beta[k] = vv > 0 ? 2.0 / vv : 0.0;
-    x[k] = alpha;
-    for (i = k + 1; i < n; ++i) x[i] = 0.0;
-    for (j = k + 1; j < h; ++j) { /* the reflector on the later columns */
-      double *xj = X + j * n, s = 0.0;
-      for (i = k; i < n; ++i) s += v[i] * xj[i];
-      s *= beta[k];
-      for (i = k; i < n; ++i) xj[i] -= s * v[i];
-    }
-  }
-  return kmax;
-}
-
-/* x = Q^T x (t: 1) or Q x (t: 0) for Q = H_0 ... H_{r-1} */
-static void apply_q(sc_int n, sc_int r, const double *V, const double *beta, double *x, int t) {
-  sc_int k, i;
-  for (k = t ? 0 : r - 1; t ? k < r : k >= 0; k += t ? 1 : -1) {
-    const double *v = V + k * n;
-    double s = 0.0;
-    for (i = k; i < n; ++i) s += v[i] * x[i];
-    s *= beta[k];
-    for (i = k; i < n; ++i) x[i] -= s * v[i];
-  }
-}
-
 /* Every row's w = Z^T (g + Z lam) + c, from Z (y: n scratch, left g + Z lam). */
 SC_INTERNAL void sc_rescue_w(sc_problem *p, const double *Z, const double *g, const double *c,
                              double *y) {
@@ -143,15 +82,16 @@ static double objective(sc_int n, const sc_problem *p, const double *Z, const do
 /* The piece of p->state solved from Z (the header's); its forces' start in p->lam (the sliding
  * discs' directions, the start y = g_F + Z lam). p->lam and p->w (every row's, from g + Z lam)
  * filled; returns 1 (def: the held rows' rank defect by Z_H's QR, their basic forces), or 0
- * where it does not treat the piece (p->lam, p->w then undefined). Work: n^2 + 3 n m + 6 n +
- * 6 m doubles, 2 m sc_ints. */
+ * where it does not treat the piece (p->lam, p->w then undefined). Work: n^2 + 2 n m + 6 n +
+ * 8 m doubles, 4 m sc_ints. The QR factors are linalg.h's. */
 static int rescue_piece(sc_problem *p, const double *Z, const double *g, const double *c,
-                                double *work, sc_int *iwork, sc_int *def) {
+                        double *work, sc_int *iwork, sc_int *def) {
   const sc_int n = p->n, m = p->m;
-  double *R = work, *X = R + n * n, *V = X + n * m, *VY = V + n * m, *gF = VY + n * m,
-         *y = gF + n, *grad = y + n, *q = grad + n, *dy = q + n, *yt = dy + n, *ws = yt + n,
-         *nws = ws + m, *beta = nws + m, *betaY = beta + m, *rb = betaY + m, *ud = rb + m;
-  sc_int *hr = iwork, *sl = hr + m, h = 0, ns = 0, rank, i, j, k, it;
+  double *R = work, *X = R + n * n, *Y = X + n * m, *gF = Y + n * m, *y = gF + n, *grad = y + n,
+         *q = grad + n, *dy = q + n, *yt = dy + n, *ws = yt + n, *nws = ws + m, *beta = nws + m,
+         *rd = beta + m, *rb = rd + m, *ud = rb + m, *xb = ud + m, *qw = xb + m;
+  sc_int *hr = iwork, *sl = hr + m, *perm = sl + m, *hp = perm + m, h = 0, ns = 0, rank, i, j,
+         k, it;
   double phi, ysc = sqrt(p->fscale * p->wscale);
   for (i = 0; i < n; ++i) gF[i] = g[i];
   for (k = 0; k < p->nb; ++k) { /* the piece: held rows, fixed forces, sliding discs */
@@ -180,15 +120,21 @@ static int rescue_piece(sc_problem *p, const double *Z, const double *g, const d
     ud[2 * j] = -p->lam[sl[j]] / p->par[3 * sl[ns + j]];
     ud[2 * j + 1] = -p->lam[sl[j] + 1] / p->par[3 * sl[ns + j]];
   }
-  for (j = 0; j < h; ++j) /* Z_H's columns, pivoted QR: the basic rows first in hr */
-    for (i = 0; i < n; ++i) X[j * n + i] = Z[i * m + hr[j]];
-  rank = householder(n, h, X, V, beta, hr, RESCUE_DEP);
+  /* Z_H's pivoted QR (n x h, row-major): its rank, the basic rows first in hr */
+  for (i = 0; i < n; ++i) {
+    dy[i] = 0.0;
+    for (j = 0; j < h; ++j) X[i * h + j] = Z[i * m + hr[j]];
+  }
+  rank = h > 0 ? sc_qr_least_squares(n, h, X, h, dy, RESCUE_DEP, xb, qw, perm) : 0;
+  for (j = 0; j < h; ++j) hp[j] = hr[perm[j]];
+  memcpy(hr, hp, sizeof(sc_int) * (size_t)h);
   *def = h - rank;
   /* the start y = g_F + Z lam over the sliding discs and held rows (dropped rows: lam 0) */
   for (j = rank; j < h; ++j) p->lam[hr[j]] = 0.0;
   for (i = 0; i < n; ++i) {
     double t = gF[i];
-    for (j = 0; j < ns; ++j) t += Z[i * m + sl[j]] * p->lam[sl[j]] + Z[i * m + sl[j] + 1] * p->lam[sl[j] + 1];
+    for (j = 0; j < ns; ++j)
+      t += Z[i * m + sl[j]] * p->lam[sl[j]] + Z[i * m + sl[j] + 1] * p->lam[sl[j] + 1];
     for (j = 0; j < rank; ++j) t += Z[i * m + hr[j]] * p->lam[hr[j]];
     y[i] = t;
   }
@@ -214,49 +160,30 @@ static int rescue_piece(sc_problem *p, const double *Z, const double *g, const d
       for (i = 0; i < n; ++i)
         for (k = 0; k <= i; ++k) R[i * n + k] += f * v[i] * v[k];
     }
-    for (i = 0; i < n; ++i) { /* Cholesky, lower (R[i n + k], k <= i) */
-      for (k = 0; k <= i; ++k) {
-        double s = R[i * n + k];
-        for (j = 0; j < k; ++j) s -= R[i * n + j] * R[k * n + j];
-        if (k < i) R[i * n + k] = s / R[k * n + k];
-        else if (!(s > 0)) return 0;
-        else R[i * n + i] = sqrt(s);
-      }
-    }
-    /* q = R^-1 grad, Y = R^-1 Z_B (column j at X + j n, overwriting Z_B's factor: kept in V
-     * and R_B's triangle is read from... the later solve refactors Z_B), r_B = -(Z_B^T y + c_B) */
-    for (i = 0; i < n; ++i) {
-      double s = grad[i];
-      for (k = 0; k < i; ++k) s -= R[i * n + k] * q[k];
-      q[i] = s / R[i * n + i];
-    }
+    if (!sc_cholesky(n, R, n, 0.0)) return 0;
+    /* q = R^-1 grad, Y = R^-1 Z_B (column j at Y + j n) = Q_1 R_1, r_B = -(Z_B^T y + c_B) */
+    memcpy(q, grad, sizeof(double) * (size_t)n);
+    sc_lower_solve(n, R, q);
     for (j = 0; j < rank; ++j) {
-      double *yj = X + j * n, u = c ? c[hr[j]] : 0.0;
-      for (i = 0; i < n; ++i) u += Z[i * m + hr[j]] * y[i];
+      double *yj = Y + j * n, u = c ? c[hr[j]] : 0.0;
+      for (i = 0; i < n; ++i) u += Z[i * m + hr[j]] * y[i], yj[i] = Z[i * m + hr[j]];
       rb[j] = -u;
-      for (i = 0; i < n; ++i) {
-        double s = Z[i * m + hr[j]];
-        for (k = 0; k < i; ++k) s -= R[i * n + k] * yj[k];
-        yj[i] = s / R[i * n + i];
-      }
+      sc_lower_solve(n, R, yj);
     }
-    if (householder(n, rank, X, VY, betaY, NULL, 0.0) < rank) return 0;
-    /* e = -(I - Q1 Q1^T) q + Q1 R1^-T r_B, in dy: Q^T q with its first rank entries replaced
-     * by R1^-T r_B, the rest negated, then Q */
-    for (i = 0; i < n; ++i) dy[i] = q[i];
-    apply_q(n, rank, VY, betaY, dy, 1);
+    sc_qr_factor(n, rank, Y, n, rd, beta);
+    /* e = -(I - Q_1 Q_1^T) q + Q_1 R_1^-T r_B, in dy: Q^T q with its first rank entries
+     * replaced by R_1^-T r_B, the rest negated, then Q; dy = R^-T e */
+    memcpy(dy, q, sizeof(double) * (size_t)n);
+    sc_qr_apply(n, rank, Y, n, beta, dy, 1);
     for (j = 0; j < rank; ++j) {
       double s = rb[j];
-      for (k = 0; k < j; ++k) s -= X[j * n + k] * dy[k];
-      dy[j] = s / X[j * n + j];
+      if (!(rd[j] != 0.0)) return 0;
+      for (k = 0; k < j; ++k) s -= Y[k + j * n] * dy[k];
+      dy[j] = s / rd[j];
     }
     for (i = rank; i < n; ++i) dy[i] = -dy[i];
-    apply_q(n, rank, VY, betaY, dy, 0);
-    for (i = n - 1; i >= 0; --i) { /* dy = R^-T e */
-      double s = dy[i];
-      for (k = i + 1; k < n; ++k) s -= R[k * n + i] * dy[k];
-      dy[i] = s / R[i * n + i];
-    }
+    sc_qr_apply(n, rank, Y, n, beta, dy, 0);
+    sc_lower_t_solve(n, R, dy);
     for (i = 0; i < n; ++i) step = fmax(step, fabs(dy[i])), ymax = fmax(ymax, fabs(y[i]));
     for (;;) { /* the first step whole (onto the equalities); later ones halved while phi rises */
       double pt;
@@ -271,8 +198,8 @@ static int rescue_piece(sc_problem *p, const double *Z, const double *g, const d
     memcpy(y, yt, sizeof(double) * (size_t)n);
     if (step * tstep <= 1e-15 * ymax) break;
   }
-  /* the forces: sliding discs -s_j u_j; basic rows Z_B lam_B = y - g_F - Z_S lam_S by Z_B's
-   * QR (refactored: X held Y), dropped rows 0 */
+  /* the forces: sliding discs -s_j u_j; basic rows Z_B lam_B = y - g_F - Z_S lam_S (least
+   * squares by Z_B's QR), dropped rows 0 */
   for (j = 0; j < ns; ++j) {
     const double s = p->par[3 * sl[ns + j]];
     if (nws[j] > SLIDE_FLOOR * p->wscale)
@@ -280,61 +207,60 @@ static int rescue_piece(sc_problem *p, const double *Z, const double *g, const d
     p->lam[sl[j]] = -s * ud[2 * j];
     p->lam[sl[j] + 1] = -s * ud[2 * j + 1];
   }
-  for (j = 0; j < rank; ++j)
-    for (i = 0; i < n; ++i) X[j * n + i] = Z[i * m + hr[j]];
-  if (householder(n, rank, X, V, beta, NULL, 0.0) < rank) return 0;
   for (i = 0; i < n; ++i) {
     double t = y[i] - gF[i];
     for (j = 0; j < ns; ++j)
       t -= Z[i * m + sl[j]] * p->lam[sl[j]] + Z[i * m + sl[j] + 1] * p->lam[sl[j] + 1];
     dy[i] = t;
+    for (j = 0; j < rank; ++j) X[i * rank + j] = Z[i * m + hr[j]];
   }
-  apply_q(n, rank, V, beta, dy, 1);
-  for (j = rank - 1; j >= 0; --j) {
-    double s = dy[j];
-    for (k = j + 1; k < rank; ++k) s -= X[k * n + j] * dy[k];
-    dy[j] = s / X[j * n + j];
-  }
-  for (j = 0; j < rank; ++j) p->lam[hr[j]] = dy[j];
+  if (rank > 0 && sc_qr_least_squares(n, rank, X, rank, dy, 0.0, xb, qw, perm) < rank) return 0;
+  for (j = 0; j < rank; ++j) p->lam[hr[j]] = xb[j];
   sc_rescue_w(p, Z, g, c, y);
   return 1;
 }
 
 /* Where the held rows are dependent (the piece's rank defect), the forces on the face (every
  * block held or without acceleration) moved inside their sets, minimum-norm, along Z_F's null
- * space: Z_F^T's pivoted Householder QR (pivots down to RESCUE_DEP of the first, as the piece's),
- * its last nf - rank reflected unit vectors (orthonormal); scene_sets.c's sc_min_norm_basis
+ * space: Z_F^T's pivoted Householder QR (pivots down to RESCUE_DEP of the first, as the piece's)
+ * picks the coordinates that span it, Q's last nf - rank columns from their unpivoted QR
+ * (orthonormal); scene_sets.c's sc_min_norm_basis
  * (the accelerations may move by eps of their scale). Then every row's w from g + Z lam.
  * Returns sc_min_norm_basis's answer (0: nothing to choose). */
 static int rescue_face(sc_problem *p, const double *Z, const double *g, const double *c,
-                               double *work, double eps) {
+                       double *work, double eps) {
   const sc_int n = p->n, m = p->m;
   sc_int F[512], fk[512], perm[512], nf = 0, rank, i, j, k, t;
-  double *V, *X, *Vh, *beta, *rest;
+  double *V, *X, *C, *rd, *beta, *zr, *xs, *qw, *rest;
   int ans;
   if (n > 512) return 0;
   for (k = 0; k < p->nb; ++k) {
     if (p->state[k] != S_HELD && !sc_still(p, k)) continue;
-    for (i = 0; i < sc_block_size(p->kind[k]) && nf < 512; ++i) fk[nf] = k, F[nf++] = p->start[k] + i;
+    for (i = 0; i < sc_block_size(p->kind[k]) && nf < 512; ++i)
+      fk[nf] = k, F[nf++] = p->start[k] + i;
   }
   if (nf == 0) return 0;
-  V = work, X = V + nf * nf, Vh = X + nf * n, beta = Vh + nf * n, rest = beta + n;
-  for (i = 0; i < n; ++i) { /* Z_F^T: nf x n, column i (coordinate i) contiguous */
-    perm[i] = i;
-    for (j = 0; j < nf; ++j) X[i * nf + j] = Z[i * m + F[j]];
+  V = work, X = V + nf * nf, C = X + nf * n, rd = C + nf * n, beta = rd + n, zr = beta + n,
+  xs = zr + nf, qw = xs + n, rest = qw + n;
+  for (j = 0; j < nf; ++j) { /* Z_F^T (nf x n, row-major): its rank, the coordinates that
+    span its columns first in perm */
+    zr[j] = 0.0;
+    for (i = 0; i < n; ++i) X[j * n + i] = Z[i * m + F[j]];
   }
-  rank = householder(nf, n, X, Vh, beta, perm, RESCUE_DEP);
+  rank = sc_qr_least_squares(nf, n, X, n, zr, RESCUE_DEP, xs, qw, perm);
   if (rank >= nf) return 0;
-  for (t = 0; t < nf - rank; ++t) {
+  for (k = 0; k < rank; ++k) /* those columns (column k at C + k nf), their unpivoted QR */
+    for (j = 0; j < nf; ++j) C[k * nf + j] = Z[perm[k] * m + F[j]];
+  sc_qr_factor(nf, rank, C, nf, rd, beta);
+  for (t = 0; t < nf - rank; ++t) { /* the null space: Q's last nf - rank columns */
     double *v = V + t * nf;
     for (j = 0; j < nf; ++j) v[j] = j == rank + t ? 1.0 : 0.0;
-    apply_q(nf, rank, Vh, beta, v, 0);
+    sc_qr_apply(nf, rank, C, nf, beta, v, 0);
   }
   ans = sc_min_norm_basis(p, Z, nf, F, fk, V, nf - rank, rest, eps);
   sc_rescue_w(p, Z, g, c, rest);
   return ans;
 }
-
 
 /* The rescue's active-set switch (the caller's KKT check switched p->state from was): only the
  * block that breaks its piece the most keeps its switch (a contact's pull or acceleration into
