@@ -35,6 +35,18 @@ def _moved_batch(scale, n=500):
     return model, T, model.forward(Q, T)
 
 
+def _meets_the_references(model, T, res, i):
+    """Sample i of the batch: the dense model's KKT conditions with the batch's own forces
+    (to 1e-8 of its scales), Clarabel's accelerations to 1e-6 (its own accuracy here)."""
+    p = dense_problem(res.sample(i), model, T[i])
+    a = np.r_[np.asarray(res.qdd[i]).ravel(), np.asarray(res.a_obj[i]).ravel()]
+    lam = res._raw["lam"][i][:len(p["b"])]
+    assert kkt_violations(p, lam, a) == [], i
+    ref, st = clarabel_accelerations(p)
+    assert st in ("optimal", "optimal_inaccurate"), st
+    assert np.abs(a - ref).max() <= 1e-6 * max(1.0, np.abs(ref).max()), i
+
+
 def _worst(res):
     c = res.certificate
     return np.maximum.reduce([c["primal"], c["dual"], c["complementarity"]])
@@ -70,13 +82,7 @@ def test_long_runs_solved_from_z_meet_the_dense_model_and_clarabel(scale):
     if scale == 1e-9:
         assert 441 in long and sweeps[441] < 2000, sweeps[441]
     for i in long:
-        p = dense_problem(res.sample(int(i)), model, T[i])
-        a = np.r_[np.asarray(res.qdd[i]).ravel(), np.asarray(res.a_obj[i]).ravel()]
-        lam = res._raw["lam"][i][:len(p["b"])]
-        assert kkt_violations(p, lam, a) == [], i
-        ref, st = clarabel_accelerations(p)
-        assert st in ("optimal", "optimal_inaccurate"), st
-        assert np.abs(a - ref).max() <= 1e-6 * max(1.0, np.abs(ref).max()), i
+        _meets_the_references(model, T, res, int(i))
 
 
 def test_near_misses_against_clarabel_and_a_dense_model():
@@ -116,10 +122,4 @@ def test_drifting_forces_are_read_from_the_settled_accelerations():
     assert np.mean(status[apart] == 0) >= 0.97, np.bincount(status)
     for i in (72, 81, 108, 212):
         assert status[i] == 0 and sweeps[i] <= 1000, (i, sweeps[i])
-        p = dense_problem(res.sample(i), model, T[i])
-        a = np.r_[np.asarray(res.qdd[i]).ravel(), np.asarray(res.a_obj[i]).ravel()]
-        lam = res._raw["lam"][i][:len(p["b"])]
-        assert kkt_violations(p, lam, a) == [], i
-        ref, st = clarabel_accelerations(p)
-        assert st in ("optimal", "optimal_inaccurate"), st
-        assert np.abs(a - ref).max() <= 1e-6 * max(1.0, np.abs(ref).max()), i
+        _meets_the_references(model, T, res, i)

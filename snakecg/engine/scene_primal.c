@@ -254,29 +254,8 @@ PRIMAL_FLAT int piece(sc_int n, sc_problem *p, const double *Z, const double *g,
   sc_int nf, lds;
   const double *Zs, *cs;
   int run;
-  for (i = 0; i < n; ++i) gF[i] = g[i];
-  for (k = 0; k < nb; ++k) { /* the piece: held rows, fixed forces, sliding discs */
-    sc_int r = p->start[k], nk = sc_block_size(p->kind[k]);
-    const double *par = p->par + 3 * k;
-    double *l = p->lam + r;
-    if (p->state[k] == S_ZERO) {
-      for (i = 0; i < nk; ++i) l[i] = 0.0;
-    } else if (p->state[k] == S_HELD) {
-      for (i = 0; i < nk; ++i) hr[h++] = r + i;
-    } else if (p->kind[k] == K_BOX) {
-      l[0] = l[0] >= 0 ? par[0] : -par[0];
-      for (i = 0; i < n; ++i) gF[i] += Z[i * m + r] * l[0];
-    } else if (p->kind[k] == K_DISC) {
-      double nl = sqrt(l[0] * l[0] + l[1] * l[1]);
-      if (!(nl > 0)) return 0;
-      l[0] *= par[0] / nl; /* (the start: on the disc's boundary) */
-      l[1] *= par[0] / nl;
-      rad[ns] = par[0];
-      sl[ns++] = r;
-    } else {
-      return 0; /* a sliding split ellipse, or a sliding one-row block */
-    }
-  }
+  if (!sc_piece_parts(p, n, Z, g, gF, hr, &h, sl, rad, &ns))
+    return 0; /* (the piece: held rows, fixed forces, sliding discs; scene_sets.h) */
   /* the piece's columns of Z gathered (Zc, (2 ns + h) x n: the sliding discs' pairs, then
    * the held rows', each column contiguous for the loops over the coordinates; the discs'
    * rows also by coordinates for their w, Zs with row stride lds: in Z itself where they are

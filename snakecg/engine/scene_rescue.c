@@ -60,10 +60,11 @@ SC_INTERNAL void sc_rescue_w(sc_problem *p, const double *Z, const double *g, co
   }
 }
 
-/* the objective 1/2 |y - g_F|^2 + sum s_i |w_i| at y (ws, nws: the sliding discs' w, |w|) */
+/* the objective 1/2 |y - g_F|^2 + sum s_i |w_i| at y (sl, rad: the sliding discs' first rows
+ * and radii; ws, nws: their w, |w|) */
 static double objective(sc_int n, const sc_problem *p, const double *Z, const double *c,
-                        const sc_int *sl, sc_int ns, const double *gF, const double *y, double *ws,
-                        double *nws) {
+                        const sc_int *sl, const double *rad, sc_int ns, const double *gF,
+                        const double *y, double *ws, double *nws) {
   sc_int i, j, e;
   double v = 0.0;
   for (i = 0; i < n; ++i) v += 0.5 * (y[i] - gF[i]) * (y[i] - gF[i]);
@@ -74,7 +75,7 @@ static double objective(sc_int n, const sc_problem *p, const double *Z, const do
       ws[2 * j + e] = u;
     }
     nws[j] = sqrt(ws[2 * j] * ws[2 * j] + ws[2 * j + 1] * ws[2 * j + 1]);
-    v += p->par[3 * sl[ns + j]] * nws[j]; /* (the disc's block index after its row) */
+    v += rad[j] * nws[j];
   }
   return v;
 }
@@ -83,43 +84,21 @@ static double objective(sc_int n, const sc_problem *p, const double *Z, const do
  * discs' directions, the start y = g_F + Z lam). p->lam and p->w (every row's, from g + Z lam)
  * filled; returns 1 (def: the held rows' rank defect by Z_H's QR, their basic forces), or 0
  * where it does not treat the piece (p->lam, p->w then undefined). Work: n^2 + 2 n m + 6 n +
- * 8 m doubles, 4 m sc_ints. The QR factors are linalg.h's. */
+ * 9 m doubles, 4 m sc_ints. The QR factors are linalg.h's. */
 static int rescue_piece(sc_problem *p, const double *Z, const double *g, const double *c,
                         double *work, sc_int *iwork, sc_int *def) {
   const sc_int n = p->n, m = p->m;
   double *R = work, *X = R + n * n, *Y = X + n * m, *gF = Y + n * m, *y = gF + n, *grad = y + n,
          *q = grad + n, *dy = q + n, *yt = dy + n, *ws = yt + n, *nws = ws + m, *beta = nws + m,
-         *rd = beta + m, *rb = rd + m, *ud = rb + m, *xb = ud + m, *qw = xb + m;
+         *rd = beta + m, *rb = rd + m, *ud = rb + m, *xb = ud + m, *qw = xb + m, *rad = qw + m;
   sc_int *hr = iwork, *sl = hr + m, *perm = sl + m, *hp = perm + m, h = 0, ns = 0, rank, i, j,
          k, it;
   double phi, ysc = sqrt(p->fscale * p->wscale);
-  for (i = 0; i < n; ++i) gF[i] = g[i];
-  for (k = 0; k < p->nb; ++k) { /* the piece: held rows, fixed forces, sliding discs */
-    const sc_int r = p->start[k], nk = sc_block_size(p->kind[k]);
-    double *l = p->lam + r;
-    if (p->state[k] == S_ZERO) {
-      for (i = 0; i < nk; ++i) l[i] = 0.0;
-    } else if (p->state[k] == S_HELD) {
-      for (i = 0; i < nk; ++i) hr[h++] = r + i;
-    } else if (p->kind[k] == K_BOX) {
-      l[0] = l[0] >= 0 ? p->par[3 * k] : -p->par[3 * k];
-      for (i = 0; i < n; ++i) gF[i] += Z[i * m + r] * l[0];
-    } else if (p->kind[k] == K_DISC) {
-      double nl = sqrt(l[0] * l[0] + l[1] * l[1]);
-      if (!(nl > 0)) return 0;
-      l[0] *= p->par[3 * k] / nl, l[1] *= p->par[3 * k] / nl;
-      sl[ns++] = r;
-    } else {
-      return 0; /* a sliding split ellipse */
-    }
-  }
-  for (j = 0; j < ns; ++j) { /* (each disc's block, after the rows: for its radius; its
-    sliding direction u_j from its force, until its w gives one) */
-    for (k = 0; k < p->nb; ++k)
-      if (p->start[k] == sl[j]) sl[ns + j] = k;
-    ud[2 * j] = -p->lam[sl[j]] / p->par[3 * sl[ns + j]];
-    ud[2 * j + 1] = -p->lam[sl[j] + 1] / p->par[3 * sl[ns + j]];
-  }
+  if (!sc_piece_parts(p, n, Z, g, gF, hr, &h, sl, rad, &ns))
+    return 0; /* (the piece: held rows, fixed forces, sliding discs; scene_sets.h) */
+  for (j = 0; j < ns; ++j) /* (each disc's sliding direction u_j from its force, until its w
+    gives one) */
+    ud[2 * j] = -p->lam[sl[j]] / rad[j], ud[2 * j + 1] = -p->lam[sl[j] + 1] / rad[j];
   /* Z_H's pivoted QR (n x h, row-major): its rank, the basic rows first in hr */
   for (i = 0; i < n; ++i) {
     dy[i] = 0.0;
@@ -138,7 +117,7 @@ static int rescue_piece(sc_problem *p, const double *Z, const double *g, const d
     for (j = 0; j < rank; ++j) t += Z[i * m + hr[j]] * p->lam[hr[j]];
     y[i] = t;
   }
-  phi = objective(n, p, Z, c, sl, ns, gF, y, ws, nws);
+  phi = objective(n, p, Z, c, sl, rad, ns, gF, y, ws, nws);
   for (it = 0; it < RESCUE_STEPS; ++it) {
     double step = 0.0, tstep = 1.0, ymax = ysc;
     for (j = 0; j < ns; ++j)
@@ -149,7 +128,7 @@ static int rescue_piece(sc_problem *p, const double *Z, const double *g, const d
     for (i = 0; i < n * n; ++i) R[i] = 0.0;
     for (i = 0; i < n; ++i) R[i * n + i] = 1.0;
     for (j = 0; j < ns; ++j) {
-      const double s = p->par[3 * sl[ns + j]], u0 = ud[2 * j], u1 = ud[2 * j + 1],
+      const double s = rad[j], u0 = ud[2 * j], u1 = ud[2 * j + 1],
                    f = s / fmax(nws[j], SLIDE_FLOOR * p->wscale);
       double *v = yt;
       for (i = 0; i < n; ++i) {
@@ -188,7 +167,7 @@ static int rescue_piece(sc_problem *p, const double *Z, const double *g, const d
     for (;;) { /* the first step whole (onto the equalities); later ones halved while phi rises */
       double pt;
       for (i = 0; i < n; ++i) yt[i] = y[i] + tstep * dy[i];
-      pt = objective(n, p, Z, c, sl, ns, gF, yt, ws, nws);
+      pt = objective(n, p, Z, c, sl, rad, ns, gF, yt, ws, nws);
       if (it == 0 || pt <= phi || tstep < 1e-10) {
         phi = pt;
         break;
@@ -201,7 +180,7 @@ static int rescue_piece(sc_problem *p, const double *Z, const double *g, const d
   /* the forces: sliding discs -s_j u_j; basic rows Z_B lam_B = y - g_F - Z_S lam_S (least
    * squares by Z_B's QR), dropped rows 0 */
   for (j = 0; j < ns; ++j) {
-    const double s = p->par[3 * sl[ns + j]];
+    const double s = rad[j];
     if (nws[j] > SLIDE_FLOOR * p->wscale)
       ud[2 * j] = ws[2 * j] / nws[j], ud[2 * j + 1] = ws[2 * j + 1] / nws[j];
     p->lam[sl[j]] = -s * ud[2 * j];

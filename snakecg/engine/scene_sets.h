@@ -40,4 +40,41 @@ static inline int sc_still(const sc_problem *p, sc_int k) {
     if (fabs(p->w[p->start[k] + i]) > TOL_ACCEPT * p->wscale) return 0;
   return 1;
 }
+
+/* (inline: the primal's piece is compiled per processor) A piece's parts for a solve in the
+ * coordinates (scene_primal.c, scene_rescue.c): the held rows in hr (h), the sliding discs'
+ * first rows in sl and their radii in rad (ns), their forces put on their discs' boundaries;
+ * zero rows' forces 0; saturated boxes' forces at their bounds, applied in g_F = g + Z_i lam_i
+ * (gF, n). Returns 0 where the piece has a sliding split ellipse (not treated there), else 1. */
+static inline int sc_piece_parts(sc_problem *p, sc_int n, const double *Z, const double *g,
+                                 double *gF, sc_int *hr, sc_int *h, sc_int *sl, double *rad,
+                                 sc_int *ns) {
+  const sc_int m = p->m;
+  sc_int i, k;
+  *h = *ns = 0;
+  for (i = 0; i < n; ++i) gF[i] = g[i];
+  for (k = 0; k < p->nb; ++k) {
+    sc_int r = p->start[k], nk = sc_block_size(p->kind[k]);
+    const double *par = p->par + 3 * k;
+    double *l = p->lam + r;
+    if (p->state[k] == S_ZERO) {
+      for (i = 0; i < nk; ++i) l[i] = 0.0;
+    } else if (p->state[k] == S_HELD) {
+      for (i = 0; i < nk; ++i) hr[(*h)++] = r + i;
+    } else if (p->kind[k] == K_BOX) {
+      l[0] = l[0] >= 0 ? par[0] : -par[0];
+      for (i = 0; i < n; ++i) gF[i] += Z[i * m + r] * l[0];
+    } else if (p->kind[k] == K_DISC) {
+      double nl = sqrt(l[0] * l[0] + l[1] * l[1]);
+      if (!(nl > 0)) return 0;
+      l[0] *= par[0] / nl; /* (the start: on the disc's boundary) */
+      l[1] *= par[0] / nl;
+      rad[*ns] = par[0];
+      sl[(*ns)++] = r;
+    } else {
+      return 0; /* a sliding split ellipse, or a sliding one-row block */
+    }
+  }
+  return 1;
+}
 #endif
