@@ -525,21 +525,12 @@ enum { S_HELD = 0, S_ZERO = 1, S_SLIDE = 2 }; /* a block's state */
 #define NULL_TOL 1e-13 /* G_FF's pivots at most this of the first: no acceleration */
 SC_INTERNAL int sc_in_set(const sc_problem *p, sc_int k, double *l, double tol, int clip);
 SC_INTERNAL int sc_min_norm_face(sc_problem *p, const double *Z, double *work, double eps);
-SC_INTERNAL int sc_min_norm_basis(sc_problem *p, const double *Z, sc_int nf, const sc_int *F,
-  const sc_int *fk, double *V, sc_int nnull, double *work, double eps);
 SC_INTERNAL void sc_on_boundary(const sc_problem *, sc_int, const double *u, double *l, double *T);
 SC_INTERNAL void sc_direction_of(const sc_problem *p, sc_int k, const double *l, double *u);
 SC_INTERNAL void sc_update_w(sc_problem *p); /* scene_piece.c: w = G lam + b; a piece */
 SC_INTERNAL sc_int sc_polish(sc_problem *p, double *work, sc_int *iwork, int kept, int *early);
 SC_INTERNAL int sc_primal_piece(sc_problem *p, const double *Z, const double *g, const double *c,
   double *work, sc_int *iwork, sc_int *def); SC_INTERNAL sc_int sc_primal_work(sc_int n, sc_int m);
-/* scene_rescue.c: active-set passes on pieces with nearly dependent held rows solved from Z
- * (scene_solve.c's last resort), w from Z */
-SC_INTERNAL int sc_rescue(sc_problem *p, const double *Z, const double *g, const double *c,
-  double *work, sc_int *iwork, sc_int *was, sc_int *passes, sc_int *defect, double *res,
-  int (*kkt)(sc_problem *, double *, int));
-SC_INTERNAL void sc_rescue_w(sc_problem *p, const double *Z, const double *g, const double *c,
-  double *y);
 SC_INTERNAL int sc_primal_tally(int ok); int SNAKECG_EXPORT(core_scene_primal)(sc_int, double *);
 SC_INTERNAL int sc_inertia_factor(sc_int n, const double *M, const double *f, double rel,
   double *L, double *a, sc_int *t_out); /* scene_small.c: L = chol(M), a = L^-1 f, Z, G, b */

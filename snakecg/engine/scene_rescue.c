@@ -1,5 +1,5 @@
 /* snakecg's engine: pieces with nearly dependent held rows solved from Z itself (scene_solve.c's
- * last resort, once its Gauss-Seidel sweeps have run RESCUE_SWEEPS without a solved piece).
+ * last resort, every RESCUE_SWEEPS of its Gauss-Seidel sweeps without a solved piece).
  *
  * The dual's piece (scene_piece.c) eliminates the held rows through G_HH = Z_H^T Z_H. Where
  * Z_H's columns are delta from dependent, G_HH holds delta^2: for delta below about 1e-7
@@ -37,6 +37,7 @@
 #include "snakecg_layout.h"
 #include "engine.h"
 #include "scene_sets.h"
+#include "scene_rescue.h"
 
 #define RESCUE_DEP 1e-12 /* Z_H's pivots at most this of the first: dependent rows */
 #define RESCUE_STEPS 40  /* Newton steps at most */

@@ -20,6 +20,13 @@ enum { INFO_STATUS = 0, INFO_DEPENDENT, INFO_PRIMAL, INFO_DUAL, INFO_COMPL, INFO
  * nearly singular direction for thousands of sweeps while w has settled). */
 SC_INTERNAL void sc_read_states(sc_problem *p, double rel, double rel2, double wtol);
 
+/* sc_min_norm_face's choice on the face's rows F (nf; fk: their blocks) with the caller's null
+ * space V (nnull orthonormal vectors, V + t nf): scene_rescue.c's, from Z's QR. Returns 1 when
+ * the minimum-norm forces were found, 2 when not. */
+SC_INTERNAL int sc_min_norm_basis(sc_problem *p, const double *Z, sc_int nf, const sc_int *F,
+                                  const sc_int *fk, double *V, sc_int nnull, double *work,
+                                  double eps);
+
 /* (inline: called per block in the solve's checks and the primal's face, a few tens of times a
  * solve) P of a 2-D block at lam (diag, 2 entries): the set is lam^T P lam <= 1 */
 static inline void sc_block_P(const sc_problem *p, sc_int k, const double *l, double *P) {

@@ -35,7 +35,7 @@
  *      rounding), read after five sweeps and tried where they read otherwise than at the last
  *      try, every failed try doubling the sweeps to the next reading (or once they converged;
  *      where w settled, a row that accelerates reads zero or sliding whatever its force);
- *      after RESCUE_SWEEPS sweeps without a solved piece, the reading is solved once more
+ *      every RESCUE_SWEEPS sweeps without a solved piece, the reading is solved once more
  *      from Z itself, one switch a pass (scene_rescue.c: nearly dependent held rows).
  * The certificate (KKT residuals, relative to the sample's force and acceleration scales) is
  * returned with every sample. Where the held rows' equations are dependent (statically
@@ -53,6 +53,7 @@
 #include "scene_block.h"
 #include "scene_diag.h"
 #include "scene_sets.h"
+#include "scene_rescue.h"
 #include "scene_tiny.h"
 #include "scene_solve.h"
 
@@ -67,9 +68,10 @@ enum { ST_SOLVED = 0, ST_NOT_CONVERGED = 1, ST_SINGULAR_MASS = 2, ST_BAD_INPUT =
  * thousands of sweeps along the nearly singular direction while w has settled (earlier, w
  * is not yet accurate to TOL_ACCEPT and such readings fail) */
 #define READ_W_SWEEPS 200
-/* sweeps after which a reading not yet solved is solved once more from Z itself
- * (scene_rescue.c: nearly dependent held rows, which G_HH cannot resolve) */
+/* every RESCUE_SWEEPS sweeps without a solved piece (RESCUE_TRIES times at most), the reading
+ * solved from Z itself (scene_rescue.c: nearly dependent held rows, which G_HH cannot resolve) */
 #define RESCUE_SWEEPS 1000
+#define RESCUE_TRIES 16
 
 /* The KKT residuals (relative): primal (outside the set), dual (w not in -N_K(lam)),
  * complementarity; and the states switched where they are violated (returns 1 if any). The
@@ -390,10 +392,9 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
                    0.0); /* (converged: 1e-6, and from w where it settled) */
     for (k = 0; k < nb; ++k)
       if (state[k] != prev[k]) same = 0;
-    if (!rescued && s == chunk && total_sweeps >= RESCUE_SWEEPS) { /* a long run's reading,
-      solved once from Z (on failure, the sweeps go on from their point) */
-      sc_int *read = prev + nb;
-      rescued = 1;
+    if (rescued < RESCUE_TRIES && s == chunk && total_sweeps >= RESCUE_SWEEPS * (rescued + 1)) {
+      sc_int *read = prev + nb; /* (a long run's reading from Z; else the sweeps go on) */
+      ++rescued;
       memcpy(keep, lam, sizeof(double) * (size_t)m);
       memcpy(read, state, sizeof(sc_int) * (size_t)nb);
       if ((ok = zw = sc_rescue(&p, Z, a, c, rest, iw2, read + nb, &passes, &defect, res, kkt)))
@@ -455,8 +456,7 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
         if (acc == keep) keep[start[k]] = fmax(keep[start[k]], 0.0);
         moved = 1;
       }
-    if (moved) { /* (w from Z where the rescue solved the piece: G's products would carry
-      its rounding times the nearly dependent rows' large forces) */
+    if (moved) { /* (w from Z where the rescue solved: G's rounding times its large forces) */
       if (zw) sc_rescue_w(&p, Z, a, c, rest);
       else sc_update_w(&p);
       kkt(&p, res, 0);
