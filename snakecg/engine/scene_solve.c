@@ -68,8 +68,7 @@ enum { ST_SOLVED = 0, ST_NOT_CONVERGED = 1, ST_SINGULAR_MASS = 2, ST_BAD_INPUT =
  * thousands of sweeps along the nearly singular direction while w has settled (earlier, w
  * is not yet accurate to TOL_ACCEPT and such readings fail) */
 #define READ_W_SWEEPS 200
-/* every RESCUE_SWEEPS sweeps without a solved piece (RESCUE_TRIES times at most), the reading
- * solved from Z itself (scene_rescue.c: nearly dependent held rows, which G_HH cannot resolve) */
+/* every RESCUE_SWEEPS sweeps unsolved (RESCUE_TRIES times at most): from Z (scene_rescue.c) */
 #define RESCUE_SWEEPS 1000
 #define RESCUE_TRIES 16
 
@@ -401,6 +400,7 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
         break;
       memcpy(lam, keep, sizeof(double) * (size_t)m);
       memcpy(state, read, sizeof(sc_int) * (size_t)nb);
+      sc_update_w(&p); /* (w of that lam again: a try's passes take it as kept) */
     }
     if (same && s == chunk) { /* (a re-read as the margin's: as after its failed try) */
       if (reread && chunk < 16 * CHUNK) chunk *= 2;
