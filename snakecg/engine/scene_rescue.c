@@ -41,7 +41,7 @@
 
 #define RESCUE_DEP 1e-12 /* Z_H's pivots at most this of the first: dependent rows */
 #define RESCUE_STEPS 40  /* Newton steps at most */
-#define RESCUE_PASSES 40 /* active-set passes at most (one switch each) */
+#define RESCUE_PASSES 10 /* active-set passes at most (one switch each) */
 #define SLIDE_FLOOR 1e-10 /* a sliding disc's |w| (of the scale) below which its direction stays */
 
 /* Every row's w = Z^T (g + Z lam) + c, from Z (y: n scratch, left g + Z lam). */
