@@ -202,11 +202,11 @@ static int rescue_piece(sc_problem *p, const double *Z, const double *g, const d
 
 /* Where the held rows are dependent (the piece's rank defect), the forces on the face (every
  * block held or without acceleration) moved inside their sets, minimum-norm, along Z_F's null
- * space: Z_F^T's pivoted Householder QR (pivots down to RESCUE_DEP of the first, as the piece's)
- * picks the coordinates that span it, Q's last nf - rank columns from their unpivoted QR
- * (orthonormal); scene_sets.c's sc_min_norm_basis
- * (the accelerations may move by eps of their scale). Then every row's w from g + Z lam.
- * Returns sc_min_norm_basis's answer (0: nothing to choose). */
+ * space (scene_sets.c's sc_min_norm_basis; the accelerations may move by eps of their scale):
+ * Z_F^T's pivoted Householder QR (pivots down to RESCUE_DEP of the first, as the piece's)
+ * picks the coordinates that span its columns, and Q's last nf - rank columns from their
+ * unpivoted QR are the null space, orthonormal. Then every row's w from g + Z lam. Returns
+ * sc_min_norm_basis's answer (0: nothing to choose). */
 static int rescue_face(sc_problem *p, const double *Z, const double *g, const double *c,
                        double *work, double eps) {
   const sc_int n = p->n, m = p->m;
