@@ -210,16 +210,10 @@ static int rescue_piece(sc_problem *p, const double *Z, const double *g, const d
 static int rescue_face(sc_problem *p, const double *Z, const double *g, const double *c,
                        double *work, double eps) {
   const sc_int n = p->n, m = p->m;
-  sc_int F[512], fk[512], perm[512], nf = 0, rank, i, j, k, t;
+  sc_int F[512], fk[512], perm[512], nf, rank, i, j, k, t;
   double *V, *X, *C, *rd, *beta, *zr, *xs, *qw, *rest;
   int ans;
-  if (n > 512) return 0;
-  for (k = 0; k < p->nb; ++k) {
-    if (p->state[k] != S_HELD && !sc_still(p, k)) continue;
-    for (i = 0; i < sc_block_size(p->kind[k]) && nf < 512; ++i)
-      fk[nf] = k, F[nf++] = p->start[k] + i;
-  }
-  if (nf == 0) return 0;
+  if (n > 512 || (nf = sc_face_rows(p, F, fk)) == 0) return 0;
   V = work, X = V + nf * nf, C = X + nf * n, rd = C + nf * n, beta = rd + n, zr = beta + n,
   xs = zr + nf, qw = xs + n, rest = qw + n;
   for (j = 0; j < nf; ++j) { /* Z_F^T (nf x n, row-major): its rank, the coordinates that

@@ -359,16 +359,10 @@ static int min_norm_in_sets(const sc_problem *p, sc_int nf, const sc_int *fk, co
  * reads it. */
 SC_INTERNAL int sc_min_norm_face(sc_problem *p, const double *Z, double *work, double eps) {
   const sc_int m = p->m;
-  sc_int F[512], fk[512], perm[512], nf = 0, i, j, k, nnull = 0;
+  sc_int F[512], fk[512], perm[512], nf, i, j, nnull = 0;
   double *A, *V, *ev;
-  for (k = 0; k < p->nb; ++k) { /* the face: every block whose rows do not accelerate */
-    if (p->state[k] != S_HELD && !sc_still(p, k)) continue;
-    for (i = 0; i < sc_block_size(p->kind[k]) && nf < 512; ++i) {
-      fk[nf] = k;
-      F[nf++] = p->start[k] + i;
-    }
-  }
-  if (nf == 0) return 0;
+  if ((nf = sc_face_rows(p, F, fk)) == 0) return 0; /* (every block whose rows do not
+    accelerate) */
   A = work;
   V = A + nf * nf;
   ev = V + nf * nf;

@@ -48,6 +48,20 @@ static inline int sc_still(const sc_problem *p, sc_int k) {
   return 1;
 }
 
+/* The face's rows (every block held or whose rows do not accelerate) in F, their blocks in fk
+ * (at most 512); returns their number. */
+static inline sc_int sc_face_rows(const sc_problem *p, sc_int *F, sc_int *fk) {
+  sc_int k, i, nf = 0;
+  for (k = 0; k < p->nb; ++k) {
+    if (p->state[k] != S_HELD && !sc_still(p, k)) continue;
+    for (i = 0; i < sc_block_size(p->kind[k]) && nf < 512; ++i) {
+      fk[nf] = k;
+      F[nf++] = p->start[k] + i;
+    }
+  }
+  return nf;
+}
+
 /* (inline: the primal's piece is compiled per processor) A piece's parts for a solve in the
  * coordinates (scene_primal.c, scene_rescue.c): the held rows in hr (h), the sliding discs'
  * first rows in sl and their radii in rad (ns), their forces put on their discs' boundaries;
