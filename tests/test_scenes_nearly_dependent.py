@@ -73,7 +73,7 @@ def test_long_runs_solved_from_z_meet_the_dense_model_and_clarabel(scale):
     """The samples answered exactly after a thousand sweeps or more (the solve from Z's
     pieces, or the sweeps' own later reading): every one meets the dense model's KKT
     conditions with the batch's forces, and Clarabel's accelerations to 1e-6 (Clarabel's own
-    accuracy on these problems). They are many (18 of 500 at 1e-9, 24 of 363 at 1e-8), and
+    accuracy on these problems). They are many (18 of 500 at 1e-9, 22 of 363 at 1e-8), and
     sample 441 at 1e-9, which no reading of the sweeps solved in 200,000 sweeps, is one."""
     model, T, res = _moved_batch(scale)
     sweeps = res._raw["info"]["sweeps"]
@@ -112,15 +112,41 @@ def test_drifting_forces_are_read_from_the_settled_accelerations():
     """Moved by 1e-8, the sweeps' force on a nearly dependent contact drifts toward zero along
     the nearly singular direction for tens of thousands of sweeps (about 2e-7 of the force
     scale a sweep), while its row's acceleration settles within a few tens of sweeps above
-    the acceptance: read from its acceleration, the contact is open. At least 98.5 % of the
-    samples that do not overlap are solved (360 of 363; before the readings from w 92.6 %,
-    before the solve from Z 97.8 %; four of them only after 52,955 to 153,895 sweeps, now
-    within 1,000), and those four meet the dense model's KKT conditions and Clarabel's
+    the acceptance: read from its acceleration, the contact is open. At least 99.3 % of the
+    samples that do not overlap are solved (361 of 363; before the readings from w 92.6 %,
+    before the solve from Z 97.8 %, before a piece whose dropped rows alone are off rounding
+    kept them at once 99.2 %; four of them only after 52,955 to 153,895 sweeps, now within
+    1,000), and those four meet the dense model's KKT conditions and Clarabel's
     accelerations (to 1e-6, Clarabel's own accuracy on these problems)."""
     model, T, res = _moved_batch(1e-8)
     status, sweeps = res.status, res._raw["info"]["sweeps"]
     apart = status != 3  # (137 samples overlap: q moved by 1e-8 presses a peg in too far)
-    assert np.mean(status[apart] == 0) >= 0.985, np.bincount(status)
+    assert np.mean(status[apart] == 0) >= 0.993, np.bincount(status)
     for i in (72, 81, 108, 212):
         assert status[i] == 0 and sweeps[i] <= 1000, (i, sweeps[i])
         _meets_the_references(model, T, res, i)
+
+
+def test_basic_solutions_of_nearly_dependent_faces_against_the_references():
+    """Flag 2 (the face's basic solution kept: its minimum-norm choice not found to rounding)
+    on rows 1e-8 from dependent: the certificate's 1e-9 is of the engine's scales (the largest
+    force's acceleration on the most mobile row, here about 25 times the largest |b| or |w|),
+    so against the dense model's scales these answers meet the KKT conditions to 1e-7, not
+    always to 1e-8 (7 of 97 here need 3e-8, sample 353 among them: solved since a piece whose
+    dropped rows alone are off rounding keeps them at once); those meet Clarabel's
+    accelerations to 1e-6, its own accuracy here."""
+    model, T, res = _moved_batch(1e-8)
+    basic = np.flatnonzero((res.status == 0) & (res.dependent == 2))
+    assert len(basic) >= 50 and 353 in basic, len(basic)
+    loose = []
+    for i in basic:
+        p = dense_problem(res.sample(int(i)), model, T[i])
+        a = np.r_[np.asarray(res.qdd[i]).ravel(), np.asarray(res.a_obj[i]).ravel()]
+        lam = res._raw["lam"][i][:len(p["b"])]
+        assert kkt_violations(p, lam, a, tol=1e-7) == [], i
+        if kkt_violations(p, lam, a):
+            loose.append(int(i))
+            ref, st = clarabel_accelerations(p)
+            assert st in ("optimal", "optimal_inaccurate"), st
+            assert np.abs(a - ref).max() <= 1e-6 * max(1.0, np.abs(ref).max()), i
+    assert 353 in loose and len(loose) <= 10, loose

@@ -203,10 +203,11 @@ static int angles_ldl(sc_int ns, double *J, double *Jc, double *dd, double *work
 }
 
 /* The piece's equations from the current lam (pivots above rc kept); fn_out: their largest
- * residual after (held rows: |w|, sliding blocks: |T . w| / |T|). Returns the rank defect of
- * the held rows' and the angles' matrices. Scratch: work, iwork (scene_solve_work's). */
+ * residual after (held rows: |w|, sliding blocks: |T . w| / |T|), fk_out: the same without
+ * the held rows dropped as dependent. Returns the rank defect of the held rows' and the
+ * angles' matrices. Scratch: work, iwork (scene_solve_work's). */
 static sc_int piece(sc_problem *p, double rc, double *work, sc_int *iwork, double *fn_out,
-                    int kept, int *early) {
+                    double *fk_out, int kept, int *early) {
   const sc_int m = p->m, nb = p->nb;
   const double *G = p->G;
   sc_int *hr = iwork, *sl = hr + m, *ph = sl + nb, *pj = ph + m, *sr = pj + nb;
@@ -421,12 +422,14 @@ static sc_int piece(sc_problem *p, double rc, double *work, sc_int *iwork, doubl
     held_forces(h, rank, n2, work, ph, hr, W, d0, D, sc2, p->lam);
   sc_update_w(p);
   fn = 0.0;
-  for (i = 0; i < h; ++i) fn = sc_max(fn, fabs(p->w[hr[i]]));
+  for (i = 0; i < rank; ++i) fn = sc_max(fn, fabs(p->w[hr[ph[i]]])); /* (the kept rows) */
   for (s = 0; s < ns; ++s) {
     const double *Ts = T + 2 * s, *w = p->w + p->start[sl[s]];
     fn = sc_max(fn, fabs(Ts[0] * w[0] + Ts[1] * w[1]) /
                       (sqrt(Ts[0] * Ts[0] + Ts[1] * Ts[1]) + 1e-300));
   }
+  *fk_out = fn;
+  for (i = rank; i < h; ++i) fn = sc_max(fn, fabs(p->w[hr[ph[i]]])); /* (the dropped rows) */
   *fn_out = fn;
   *early = stop;
   return (h - rank) + (ns - rj);
@@ -434,14 +437,21 @@ static sc_int piece(sc_problem *p, double rc, double *work, sc_int *iwork, doubl
 
 /* piece, solved again from its own result while the residual is above rounding (at most
  * three times): where it does not halve with rows dropped and stays above 1e-12 of the
- * scale, they are kept (pivots to 1e-15). early: as sc_polish's. */
+ * scale, they are kept (pivots to 1e-15). Where only the dropped rows are above rounding,
+ * solving again from the result cannot lower their residual (they stay dropped): they are
+ * kept at once where it is above 1e-12, else the piece stands. early: as sc_polish's. */
 static sc_int rounds(sc_problem *p, double *work, sc_int *iwork, double *fn, int kept,
                      int *early) {
-  double rc = DEP_TOL, prev = INFINITY;
+  double rc = DEP_TOL, prev = INFINITY, fk;
   sc_int defect = 0, round;
   for (round = 0; round < 3; ++round, kept = 1) {
-    defect = piece(p, rc, work, iwork, fn, kept, early);
+    defect = piece(p, rc, work, iwork, fn, &fk, kept, early);
     if (*early || !(*fn > 1e-14 * p->wscale)) break;
+    if (fk < *fn && !(fk > 1e-14 * p->wscale)) { /* (the dropped rows' residual alone) */
+      if (!(*fn > 1e-12 * p->wscale) || rc < DEP_TOL) break;
+      rc = 1e-15;
+      continue;
+    }
     if (defect > 0 && !(*fn < 0.5 * prev) && *fn > 1e-12 * p->wscale) rc = 1e-15;
     prev = *fn;
   }
