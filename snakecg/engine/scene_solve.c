@@ -40,9 +40,9 @@
  * The certificate (KKT residuals, relative to the sample's force and acceleration scales) is
  * returned with every sample. Where the held rows' equations are dependent (statically
  * indeterminate), the flag is set and the held forces are the minimum-norm ones on the face
- * inside their sets (scene_sets.c's sc_min_norm_face); where that choice is not found to
- * rounding, the face's basic solution stays and the flag says so (2).
- */
+ * inside their sets (scene_sets.c's sc_min_norm_face; the accelerations the new forces' where
+ * nearly dependent rows taken as dependent move them, by 1e-10 of their scale at most); where
+ * that choice is not found, the face's basic solution stays and the flag says so (2). */
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
@@ -285,8 +285,7 @@ static int primal_start(sc_problem *p, const double *Z, const double *g, const d
 }
 
 /* a := L^-T a for the snake alone (n = t = n_s, L dense): the general loop's operations in
- * its order, unrolled in registers (no loop of a few elements a row: the chain of divisions
- * alone). */
+ * its order, unrolled in registers (no loop of a few elements a row: the divisions alone). */
 static inline __attribute__((always_inline)) void back_ns(const double *L, double *a) {
   enum { N = SNAKECG_NS };
   double x[N];
@@ -437,11 +436,12 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
       if (state[k] != S_HELD && sc_still(&p, k)) degenerate = 1;
     if (degenerate) { /* (the accelerations from the face's basic solution, kept: the
       minimum-norm choice moves the forces along A^T's null space, and its rounding, which
-      grows with the forces, would reach a system that does not move) */
+      grows with the forces, would reach a system that does not move; where it moves them by
+      up to 1e-10 of their scale, nearly dependent rows taken as dependent: the new forces') */
       memcpy(keep, lam, sizeof(double) * (size_t)m);
-      acc = keep;
-      dep = sc_min_norm_face(&p, Z, rest, 1e-13);
-      moved = 1;
+      acc = keep, moved = 1;
+      if ((dep = sc_min_norm_face(&p, Z, rest, 1e-13)) == 2 &&
+          sc_min_norm_face(&p, Z, rest, 1e-10) == 1) acc = lam, dep = 1;
       /* a held contact that the choice leaves without force and without acceleration reads
        * open (the KKT conditions of both pieces hold; the open one starts a batch's next
        * sample with fewer dependent rows, whose accelerations are the more accurate) */
