@@ -524,7 +524,8 @@ enum { S_HELD = 0, S_ZERO = 1, S_SLIDE = 2 }; /* a block's state */
 #define TOL_ACCEPT 1e-9 /* a row's acceleration is zero within this of its scale */
 #define NULL_TOL 1e-13 /* G_FF's pivots at most this of the first: no acceleration */
 SC_INTERNAL int sc_in_set(const sc_problem *p, sc_int k, double *l, double tol, int clip);
-SC_INTERNAL int sc_min_norm_face(sc_problem *p, const double *Z, double *work, double eps);
+SC_INTERNAL int sc_min_norm_face(sc_problem *p, const double *Z, double *work, double eps,
+                                 double loose);
 SC_INTERNAL void sc_on_boundary(const sc_problem *, sc_int, const double *u, double *l, double *T);
 SC_INTERNAL void sc_direction_of(const sc_problem *p, sc_int k, const double *l, double *u);
 SC_INTERNAL void sc_update_w(sc_problem *p); /* scene_piece.c: w = G lam + b; a piece */

@@ -354,10 +354,13 @@ static int min_norm_in_sets(const sc_problem *p, sc_int nf, const sc_int *fk, co
  * the face's rows are independent (nothing to choose), 1 when the minimum-norm forces were
  * found, 2 when not (a degenerate split ellipse on the face, or the choice not found to
  * rounding: the face's basic solution stays). eps: the rows' accelerations may move by this
- * of their scale (1e-13: rounding; more where nearly dependent rows are taken as dependent).
- * p->w is read (the face) and left as it was: the caller takes w of the new forces where it
- * reads it. */
-SC_INTERNAL int sc_min_norm_face(sc_problem *p, const double *Z, double *work, double eps) {
+ * of their scale (1e-13: rounding; more where nearly dependent rows are taken as dependent);
+ * loose (0: none): where neither try keeps them within eps, a try that keeps them within
+ * loose is taken, the first one's before the refined one's, returning 3 (the caller's
+ * accelerations are then the new forces'). p->w is read (the face) and left as it was: the
+ * caller takes w of the new forces where it reads it. */
+SC_INTERNAL int sc_min_norm_face(sc_problem *p, const double *Z, double *work, double eps,
+                                 double loose) {
   const sc_int m = p->m;
   sc_int F[512], fk[512], perm[512], nf, i, j, nnull = 0;
   double *A, *V, *ev;
@@ -370,19 +373,29 @@ SC_INTERNAL int sc_min_norm_face(sc_problem *p, const double *Z, double *work, d
     for (j = 0; j <= i; ++j) A[i * nf + j] = p->G[F[i] * m + F[j]];
   nnull = null_space(nf, A, V, ev, perm);
   if (nnull == 0) return 0;
-  return sc_min_norm_basis(p, Z, nf, F, fk, V, nnull, ev, eps);
+  /* (A, G_FF's factor, is free by now: the loose try is kept there) */
+  return sc_min_norm_basis(p, Z, nf, F, fk, V, nnull, ev, eps, loose, loose > 0 ? A : NULL);
+}
+
+/* The forces of sc_min_norm_basis's loose try where one was kept (returns 3), else 2. */
+static int loose_try(sc_problem *p, sc_int nf, const sc_int *F, const double *kept) {
+  sc_int i;
+  if (!kept) return 2;
+  for (i = 0; i < nf; ++i) p->lam[F[i]] = kept[i];
+  return 3;
 }
 
 /* sc_min_norm_face's choice on the face's rows F (nf, fk: their blocks) with the null space V
  * (nnull orthonormal vectors, V + t nf) given (scene_rescue.c's: from Z's QR). Returns 1 when
- * the minimum-norm forces were found, 2 when not. Work: 2 nf^2 + 12 nf + n^2 + 3 n doubles. */
+ * the minimum-norm forces were found, 2 when not, 3 when found within loose only (kept: nf
+ * doubles for that try, NULL without). Work: 2 nf^2 + 12 nf + n^2 + 3 n doubles. */
 SC_INTERNAL int sc_min_norm_basis(sc_problem *p, const double *Z, sc_int nf, const sc_int *F,
                                   const sc_int *fk, double *V, sc_int nnull, double *work,
-                                  double eps) {
+                                  double eps, double loose, double *kept) {
   const sc_int m = p->m;
   sc_int i, j, t, tnull = nnull - 1;
   double *l0 = work + 2 * nf;
-  int attempt;
+  int attempt, have = 0;
   for (attempt = 0;; ++attempt) { /* (again with V refined where the choice moves the
     accelerations beyond rounding) */
     double quad = 0.0;
@@ -398,7 +411,8 @@ SC_INTERNAL int sc_min_norm_basis(sc_problem *p, const double *Z, sc_int nf, con
       if (!sc_in_set(p, fk[i], l0 + i, 1e-13, 1)) inside = 0;
     if (!inside && (nnull > 1 || attempt == 1)) { /* the minimum inside the sets, by its
       dual's Newton */
-      if (!min_norm_in_sets(p, nf, fk, l0, V, nnull, l0, l0 + nf)) return 2;
+      if (!min_norm_in_sets(p, nf, fk, l0, V, nnull, l0, l0 + nf))
+        return loose_try(p, nf, F, have ? kept : NULL);
     } else if (!inside) { /* one null direction: the forces' interval along it */
       double tstar = 0.0, lim[2];
       int side;
@@ -444,7 +458,11 @@ SC_INTERNAL int sc_min_norm_basis(sc_problem *p, const double *Z, sc_int nf, con
       quad += t2 * t2;
     }
     if (quad <= eps * eps * p->wscale * p->fscale) break;
-    if (attempt == 1) return 2;
+    if (kept && !have && quad <= loose * loose * p->wscale * p->fscale) {
+      memcpy(kept, l0, sizeof(double) * (size_t)nf);
+      have = 1;
+    }
+    if (attempt == 1) return loose_try(p, nf, F, have ? kept : NULL);
   }
   for (i = 0; i < nf; ++i) p->lam[F[i]] = l0[i];
   return 1;

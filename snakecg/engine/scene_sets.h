@@ -22,10 +22,11 @@ SC_INTERNAL void sc_read_states(sc_problem *p, double rel, double rel2, double w
 
 /* sc_min_norm_face's choice on the face's rows F (nf; fk: their blocks) with the caller's null
  * space V (nnull orthonormal vectors, V + t nf): scene_rescue.c's, from Z's QR. Returns 1 when
- * the minimum-norm forces were found, 2 when not. */
+ * the minimum-norm forces were found, 2 when not, 3 when within loose only (kept: nf doubles
+ * for that try, NULL: none). */
 SC_INTERNAL int sc_min_norm_basis(sc_problem *p, const double *Z, sc_int nf, const sc_int *F,
                                   const sc_int *fk, double *V, sc_int nnull, double *work,
-                                  double eps);
+                                  double eps, double loose, double *kept);
 
 /* (inline: called per block in the solve's checks and the primal's face, a few tens of times a
  * solve) P of a 2-D block at lam (diag, 2 entries): the set is lam^T P lam <= 1 */

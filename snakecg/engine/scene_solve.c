@@ -193,7 +193,7 @@ static int active_set(sc_problem *p, const double *Z, sc_near *nm, sc_int max_pa
     *defect = sc_polish(p, work, iwork, kept, &stopped);
     if (!stopped && (e = near_miss(p, res)) > 0) {
       if (*defect > 0 && res[0] > TOL_ACCEPT && res[1] <= TOL_ACCEPT && res[2] <= TOL_ACCEPT &&
-          sc_min_norm_face(p, Z, work, 1e-10) == 1) { /* (the accelerations moved by 1e-10
+          sc_min_norm_face(p, Z, work, 1e-10, 0.0) == 1) { /* (the accelerations moved by 1e-10
         of their scale at most) */
         sc_update_w(p);
         e = near_miss(p, res);
@@ -439,9 +439,8 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
       grows with the forces, would reach a system that does not move; where it moves them by
       up to 1e-10 of their scale, nearly dependent rows taken as dependent: the new forces') */
       memcpy(keep, lam, sizeof(double) * (size_t)m);
-      acc = keep, moved = 1;
-      if ((dep = sc_min_norm_face(&p, Z, rest, 1e-13)) == 2 &&
-          sc_min_norm_face(&p, Z, rest, 1e-10) == 1) acc = lam, dep = 1;
+      dep = sc_min_norm_face(&p, Z, rest, 1e-13, 1e-10);
+      acc = dep == 3 ? lam : keep, dep = dep == 3 ? 1 : dep, moved = 1;
       /* a held contact that the choice leaves without force and without acceleration reads
        * open (the KKT conditions of both pieces hold; the open one starts a batch's next
        * sample with fewer dependent rows, whose accelerations are the more accurate) */
