@@ -447,7 +447,7 @@ static sc_int rounds(sc_problem *p, double *work, sc_int *iwork, double *fn, int
   for (round = 0; round < 3; ++round, kept = 1) {
     defect = piece(p, rc, work, iwork, fn, &fk, kept, early);
     if (*early || !(*fn > 1e-14 * p->wscale)) break;
-    if (fk < *fn && !(fk > 1e-14 * p->wscale)) { /* (the dropped rows' residual alone) */
+    if (!(fk > 1e-14 * p->wscale)) { /* (the dropped rows' residual alone: fn above it) */
       if (!(*fn > 1e-12 * p->wscale) || rc < DEP_TOL) break;
       rc = 1e-15;
       continue;
