@@ -41,8 +41,8 @@
  * returned with every sample. Where the held rows' equations are dependent (statically
  * indeterminate), the flag is set and the held forces are the minimum-norm ones on the face
  * inside their sets (scene_sets.c's sc_min_norm_face; the accelerations the new forces' where
- * nearly dependent rows taken as dependent move them, by 1e-10 of their scale at most); where
- * that choice is not found, the face's basic solution stays and the flag says so (2). */
+ * nearly dependent rows taken as dependent move them, by 5e-10 of their scale at most, and
+ * the KKT conditions hold); else the face's basic solution stays and the flag says so (2). */
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
@@ -434,16 +434,18 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
     int degenerate = defect > 0 && !nearly, moved = 0; /* (a near miss: its forces, flag 3) */
     for (k = 0; k < nb && !degenerate && !nearly; ++k)
       if (state[k] != S_HELD && sc_still(&p, k)) degenerate = 1;
-    if (degenerate) { /* (the accelerations from the face's basic solution, kept: the
-      minimum-norm choice moves the forces along A^T's null space, and its rounding, which
-      grows with the forces, would reach a system that does not move; where it moves them by
-      up to 1e-10 of their scale, nearly dependent rows taken as dependent: the new forces') */
+    if (degenerate) { /* (a from the face's basic forces: the minimum-norm choice's rounding
+      would reach a system that does not move; from the new forces where nearly dependent rows
+      taken as dependent move it, by 5e-10 of its scale at most, and the KKT conditions hold) */
       memcpy(keep, lam, sizeof(double) * (size_t)m);
-      dep = sc_min_norm_face(&p, Z, rest, 1e-13, 1e-10);
+      if ((dep = sc_min_norm_face(&p, Z, rest, 1e-13, 5e-10)) == 3) {
+        if (zw) sc_rescue_w(&p, Z, a, c, rest); else sc_update_w(&p);
+        if (kkt(&p, res, 0), !(fmax(res[0], fmax(res[1], res[2])) <= TOL_ACCEPT))
+          memcpy(lam, keep, sizeof(double) * (size_t)m), dep = 2;
+      }
       acc = dep == 3 ? lam : keep, dep = dep == 3 ? 1 : dep, moved = 1;
-      /* a held contact that the choice leaves without force and without acceleration reads
-       * open (the KKT conditions of both pieces hold; the open one starts a batch's next
-       * sample with fewer dependent rows, whose accelerations are the more accurate) */
+      /* a held contact the choice leaves without force and acceleration reads open (both
+       * pieces hold; the open one starts a batch's next sample with fewer dependent rows) */
       for (k = 0; k < nb && dep == 1; ++k)
         if (kind[k] == K_UNILATERAL && state[k] == S_HELD &&
             lam[start[k]] <= 1e-12 * p.fscale && sc_still(&p, k))
@@ -456,8 +458,7 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
         moved = 1;
       }
     if (moved) { /* (w from Z where the rescue solved: G's rounding times its large forces) */
-      if (zw) sc_rescue_w(&p, Z, a, c, rest);
-      else sc_update_w(&p);
+      if (zw) sc_rescue_w(&p, Z, a, c, rest); else sc_update_w(&p);
       kkt(&p, res, 0);
     }
   }
