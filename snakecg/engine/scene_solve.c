@@ -23,9 +23,9 @@
  *      rows and no acceleration along the boundary on sliding blocks, lam fixed on zero rows
  *      and saturated boxes; the held rows' forces eliminated (G_HH factored once by diagonal
  *      pivoting, dependent rows dropped), Newton on one angle per sliding 2-D block;
- *   2. the KKT conditions checked on the result; a violated piece is switched (a primal-dual
- *      active-set step) and step 1 repeated (step 1's Newton left early where a block will
- *      certainly be switched: its breach beyond three times its last step's change);
+ *   2. the KKT conditions checked on the result (scene_kkt.c); a violated piece is switched
+ *      (a primal-dual active-set step) and step 1 repeated (step 1's Newton left early where a
+ *      block will certainly be switched: its breach beyond three times its last step's change);
  *   3. the pieces start from the caller's where given (core_scene_solve_s: a time step's,
  *      the last step's pieces: that piece first solved in the primal, scene_primal.c, without
  *      G, and kept where its KKT conditions hold; else a few passes), then from the held
@@ -54,6 +54,7 @@
 #include "scene_diag.h"
 #include "scene_sets.h"
 #include "scene_rescue.h"
+#include "scene_kkt.h"
 #include "scene_tiny.h"
 #include "scene_solve.h"
 
@@ -63,90 +64,12 @@ enum { ST_SOLVED = 0, ST_NOT_CONVERGED = 1, ST_SINGULAR_MASS = 2, ST_BAD_INPUT =
 #define CHUNK 5 /* sweeps before the first reading of the pieces */
 #define READ_SLIDE 0.15 /* 2-D block read sliding within this of its boundary mid-sweeps */
 /* the sweeps' w taken as settled once they converged or, at the margin's readings (after two
- * failed tries), after this many sweeps: a row accelerating beyond TOL_ACCEPT then reads
- * zero or sliding (sc_read_states), where on nearly dependent rows the forces drift for
- * thousands of sweeps along the nearly singular direction while w has settled (earlier, w
- * is not yet accurate to TOL_ACCEPT and such readings fail) */
+ * failed tries), after this many sweeps: a row accelerating beyond TOL_ACCEPT then reads zero
+ * or sliding (sc_read_states; nearly dependent rows' forces drift while w has settled) */
 #define READ_W_SWEEPS 200
 /* every RESCUE_SWEEPS sweeps unsolved (RESCUE_TRIES times at most): from Z (scene_rescue.c) */
 #define RESCUE_SWEEPS 1000
 #define RESCUE_TRIES 16
-
-/* The KKT residuals (relative): primal (outside the set), dual (w not in -N_K(lam)),
- * complementarity; and the states switched where they are violated (returns 1 if any). The
- * largest of each kind summed before its one division by its scale (a correctly rounded
- * division by a positive scale keeps the order: the same maxima bit for bit, NaN terms left
- * out as sc_max leaves them; pr's 2-D blocks' terms, not scaled, apart). */
-static int kkt(sc_problem *p, double *res, int do_switch) {
-  double pr = 0.0, p1 = 0.0, du = 0.0, co = 0.0, F = p->fscale, W = p->wscale;
-  int moved = 0;
-  sc_int k;
-  for (k = 0; k < p->nb; ++k) {
-    sc_int r = p->start[k];
-    const double *q = p->par + 3 * k, *l = p->lam + r, *w = p->w + r;
-    double e;
-    switch (p->kind[k]) {
-      case K_FREE:
-        du = sc_max(du, fabs(w[0]));
-        break;
-      case K_UNILATERAL:
-        pr = sc_max(pr, sc_max(0.0, -l[0]));
-        du = sc_max(du, sc_max(0.0, -w[0]));
-        co = sc_max(co, fabs(l[0] * w[0]));
-        if (do_switch) {
-          if (p->state[k] == S_HELD && l[0] < -TOL_ACCEPT * F) { p->state[k] = S_ZERO; moved = 1; }
-          else if (p->state[k] == S_ZERO && w[0] < -TOL_ACCEPT * W) { p->state[k] = S_HELD; moved = 1; }
-        }
-        break;
-      case K_BOX:
-        pr = sc_max(pr, sc_max(0.0, fabs(l[0]) - q[0]));
-        if (!(q[0] > 0)) break; /* the set {0}: its normal cone is every w */
-        if (fabs(l[0]) < q[0]) e = fabs(w[0]);
-        else e = l[0] > 0 ? sc_max(0.0, w[0]) : sc_max(0.0, -w[0]);
-        du = sc_max(du, e);
-        co = sc_max(co, fabs(fmin(q[0] - fabs(l[0]), 0.0) * w[0]));
-        if (do_switch) {
-          if (p->state[k] == S_HELD && fabs(l[0]) > q[0] * (1 + TOL_ACCEPT)) { p->state[k] = S_SLIDE; moved = 1; }
-          else if (p->state[k] == S_SLIDE && e > TOL_ACCEPT * W) { p->state[k] = S_HELD; moved = 1; }
-        }
-        break;
-      default: {
-        double P[2], phi, nrm[2], nn, wn, wt;
-        int zero = !(p->kind[k] == K_DISC ? q[0] > 0 : q[2] > 0 && (q[0] > 0 || q[1] > 0));
-        if (zero) break;
-        sc_block_P(p, k, l, P);
-        phi = sqrt(P[0] * l[0] * l[0] + P[1] * l[1] * l[1]);
-        p1 = sc_max(p1, sc_max(0.0, phi - 1.0));
-        if (p->state[k] == S_HELD || phi < 1.0 - 1e-12) {
-          e = sqrt(w[0] * w[0] + w[1] * w[1]);
-          if (do_switch && p->state[k] == S_HELD && phi > 1.0 + TOL_ACCEPT) {
-            p->state[k] = S_SLIDE;
-            p->gamma[k] = 0.0;
-            moved = 1;
-          }
-        } else {
-          nrm[0] = P[0] * l[0];
-          nrm[1] = P[1] * l[1];
-          nn = sqrt(nrm[0] * nrm[0] + nrm[1] * nrm[1]);
-          nrm[0] /= nn;
-          nrm[1] /= nn;
-          wn = w[0] * nrm[0] + w[1] * nrm[1]; /* must be <= 0 */
-          wt = w[1] * nrm[0] - w[0] * nrm[1]; /* must be 0 */
-          e = sc_max(sc_max(0.0, wn), fabs(wt));
-          if (do_switch && p->state[k] == S_SLIDE && wn > TOL_ACCEPT * W) {
-            p->state[k] = S_HELD;
-            moved = 1;
-          }
-        }
-        du = sc_max(du, e);
-      }
-    }
-  }
-  res[0] = sc_max(sc_max(0.0, pr / F), p1);
-  res[1] = sc_max(0.0, du / W);
-  res[2] = sc_max(0.0, co / (F * W));
-  return moved;
-}
 
 /* Nearly dependent held rows: where Z's rows are delta from dependent, G_HH's pivot is
  * delta^2 and below DEP_TOL (delta up to 1e-5) the piece takes them as dependent; the face's
@@ -165,7 +88,7 @@ typedef struct {
 } sc_near;
 
 static double near_miss(sc_problem *p, double *res) {
-  const double e = (kkt(p, res, 0), sc_max(res[0], sc_max(res[1], res[2])));
+  const double e = (sc_kkt(p, res, 0), sc_max(res[0], sc_max(res[1], res[2])));
   return e > TOL_ACCEPT && e <= NEAR_MISS ? e : 0.0;
 }
 
@@ -200,7 +123,7 @@ static int active_set(sc_problem *p, const double *Z, sc_near *nm, sc_int max_pa
       }
       if (e > 0) keep_near(nm, p, e);
     }
-    if (!kkt(p, res, 1)) {
+    if (!sc_kkt(p, res, 1)) {
       if (!stopped) return res[0] <= TOL_ACCEPT && res[1] <= TOL_ACCEPT && res[2] <= TOL_ACCEPT;
       early = 0; /* (stopped early, yet nothing to switch: solved to rounding next) */
     }
@@ -273,7 +196,7 @@ static int primal_start(sc_problem *p, const double *Z, const double *g, const d
   for (j = 0; c && j < m; ++j) e[j] += c[j];
   scales(p, dg, 1, p->b);
   r = sc_primal_piece(p, Z, g, c, work, iwork, defect);
-  ok = r > 0 && !kkt(p, res, 1) && res[0] <= TOL_ACCEPT && res[1] <= TOL_ACCEPT &&
+  ok = r > 0 && !sc_kkt(p, res, 1) && res[0] <= TOL_ACCEPT && res[1] <= TOL_ACCEPT &&
        res[2] <= TOL_ACCEPT;
   for (k = 0; k < p->nb && ok && r == 2; ++k) /* (the dual's next choice: a contact opened) */
     if (p->kind[k] == K_UNILATERAL && p->state[k] == S_HELD &&
@@ -395,7 +318,7 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
       ++rescued;
       memcpy(keep, lam, sizeof(double) * (size_t)m);
       memcpy(read, state, sizeof(sc_int) * (size_t)nb);
-      if ((ok = zw = sc_rescue(&p, Z, a, c, rest, iw2, read + nb, &passes, &defect, res, kkt)))
+      if ((ok = zw = sc_rescue(&p, Z, a, c, rest, iw2, read + nb, &passes, &defect, res, sc_kkt)))
         break;
       memcpy(lam, keep, sizeof(double) * (size_t)m);
       memcpy(state, read, sizeof(sc_int) * (size_t)nb);
@@ -426,7 +349,7 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
     memcpy(lam, near.lam, sizeof(double) * (size_t)m);
     for (k = 0; k < nb; ++k) state[k] = (sc_int)near.state[k];
     sc_update_w(&p);
-    kkt(&p, res, 0);
+    sc_kkt(&p, res, 0);
     ok = nearly = 1, dep = 3;
   }
   if (ok) { /* (w and res: the last pass's, of this lam, until lam moves; once it may have
@@ -440,7 +363,7 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
       memcpy(keep, lam, sizeof(double) * (size_t)m);
       if ((dep = sc_min_norm_face(&p, Z, rest, 1e-13, 5e-10)) == 3) {
         if (zw) sc_rescue_w(&p, Z, a, c, rest); else sc_update_w(&p);
-        if (kkt(&p, res, 0), !(fmax(res[0], fmax(res[1], res[2])) <= TOL_ACCEPT))
+        if (sc_kkt(&p, res, 0), !(fmax(res[0], fmax(res[1], res[2])) <= TOL_ACCEPT))
           memcpy(lam, keep, sizeof(double) * (size_t)m), dep = 2;
       }
       acc = dep == 3 ? lam : keep, dep = dep == 3 ? 1 : dep, moved = 1;
@@ -459,7 +382,7 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
       }
     if (moved) { /* (w from Z where the rescue solved: G's rounding times its large forces) */
       if (zw) sc_rescue_w(&p, Z, a, c, rest); else sc_update_w(&p);
-      kkt(&p, res, 0);
+      sc_kkt(&p, res, 0);
     }
   }
 answered:
