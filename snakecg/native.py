@@ -64,7 +64,7 @@ CORE_SOURCES = tuple(ENGINE_DIR / name
                                   "run.c", "geometry.c", "sphere.c", "pieces.c", "maps.c", "qp.c",
                                   "certificate.c", "optimal.c", "max_sr.c", "push.c",
                                   "wheel_states.c", "scene_sets.c", "scene_piece.c",
-                                  "scene_primal.c", "scene_rescue.c",
+                                  "scene_primal.c", "scene_rescue.c", "scene_barrier.c",
                                   "scene_kkt.c", "scene_small.c", "scene_tiny.c",
                                   "scene_tiny_setup.c", "scene_solve.c", "scene_diag.c",
                                   "scene_block.c", "scene_geometry.c", "scene_place.c",

@@ -273,6 +273,38 @@ def clarabel_accelerations(p, tol=1e-11):
     return a.value, prob.status
 
 
+def gauss_objective(p, a):
+    """Gauss's principle with the sets' support functions at the accelerations a (the primal
+    that clarabel_accelerations minimises): 1/2 |a - a_free|_M^2 + sum_B sigma_K_B(-A_B a)."""
+    d = a - p["a_free"]
+    v = 0.5 * d @ p["M"] @ d
+    A = p["A"]
+    for kind, s, par in p["blocks"]:
+        if kind == BOX:
+            v += par[0] * abs(A[s] @ a)
+        elif kind in (DISC, SPLIT):
+            y = -(A[s:s + 2] @ a)
+            if np.any(y != 0):
+                v += _support(kind, par, y)[0]
+    return v
+
+
+def agrees_with_clarabel(p, a, tol=1e-6, loose=1e-4):
+    """The accelerations a against Clarabel's: within tol of their scale, or, where Clarabel
+    stops short on a degenerate problem (its accelerations up to loose away), a gives Gauss's
+    objective no higher than Clarabel's (the unique minimiser: Clarabel's point is then the
+    less accurate one). Returns the distance (relative)."""
+    ref, st = clarabel_accelerations(p)
+    assert st in ("optimal", "optimal_inaccurate"), st
+    scale = max(1.0, np.abs(ref).max())
+    dist = np.abs(a - ref).max() / scale
+    if dist > tol:
+        assert dist <= loose, dist
+        fa, fr = gauss_objective(p, a), gauss_objective(p, ref)
+        assert fa <= fr + 1e-12 * abs(fr), (fa, fr)
+    return dist
+
+
 def clarabel_min_norm_forces(p, lam_star):
     """The minimum-norm forces among all optimal ones, in cvxpy (Clarabel): every force inside
     the sets that gives the same generalized constraint force (A^T lam = A^T lam*), the forces

@@ -7,8 +7,9 @@ leave their sets, and its rows accelerate, by about delta of their scales, beyon
 acceptance of 1e-9 for delta between 1e-9 and 1e-5. The solve first moves such forces along
 the face's null space into their sets; where no piece is accepted it answers its best near
 miss (every KKT residual at most 1e-7) with the dependent flag 3, its certificate saying how
-far. A sample whose sweeps run a thousand times without a solved piece has its reading solved
-once more from Z itself (its pivoted QR resolves what G cannot), one switch a pass.
+far. A sample whose sweeps run 150 times without a solved piece has its pieces read once from
+the dual's log-barrier path; one whose sweeps run a thousand times has its reading solved once
+more from Z itself (its pivoted QR resolves what G cannot), one switch a pass.
 
 The 10-joint benchmark scene has its pegs pressed at the links' middles (exactly dependent
 rows); moving q by 1e-10 or 1e-9 (within the contacts' tolerance: the same contacts) makes
@@ -23,8 +24,8 @@ import pytest
 
 import snakecg
 
-from scenes_reference import (clarabel_accelerations, dense_problem, indeterminate_scene,
-                              kkt_violations)
+from scenes_reference import (agrees_with_clarabel, clarabel_accelerations, dense_problem,
+                              indeterminate_scene, kkt_violations)
 
 
 def _moved_batch(scale, n=500):
@@ -35,16 +36,15 @@ def _moved_batch(scale, n=500):
     return model, T, model.forward(Q, T)
 
 
-def _meets_the_references(model, T, res, i):
+def _meets_the_references(model, T, res, i, tol=1e-8):
     """Sample i of the batch: the dense model's KKT conditions with the batch's own forces
-    (to 1e-8 of its scales), Clarabel's accelerations to 1e-6 (its own accuracy here)."""
+    (to tol of its scales), Clarabel's accelerations to 1e-6 (its own accuracy here), or
+    where Clarabel stops short, Gauss's objective no higher than at Clarabel's point."""
     p = dense_problem(res.sample(i), model, T[i])
     a = np.r_[np.asarray(res.qdd[i]).ravel(), np.asarray(res.a_obj[i]).ravel()]
     lam = res._raw["lam"][i][:len(p["b"])]
-    assert kkt_violations(p, lam, a) == [], i
-    ref, st = clarabel_accelerations(p)
-    assert st in ("optimal", "optimal_inaccurate"), st
-    assert np.abs(a - ref).max() <= 1e-6 * max(1.0, np.abs(ref).max()), i
+    assert kkt_violations(p, lam, a, tol=tol) == [], i
+    agrees_with_clarabel(p, a)
 
 
 def _worst(res):
@@ -57,7 +57,7 @@ def test_nearly_dependent_rows_are_solved_and_flagged(scale):
     """At 1e-10 and 1e-9 every sample is solved (before the solve from Z: one of 500 at 1e-9
     was not, after 200,000 Gauss-Seidel sweeps). Accepted samples keep the 1e-9 certificate;
     the near misses (flag 3) are certified to at most 1e-7, and at 1e-9 they are at most 20
-    of 500 (32 before the solve from Z, which answers most of them exactly: 16 here)."""
+    of 500 (32 before the solve from Z, which answers most of them exactly: 14 here)."""
     _, _, res = _moved_batch(scale)
     status, dep, worst = res.status, res.dependent, _worst(res)
     assert np.all(status == 0), np.bincount(status)
@@ -65,24 +65,26 @@ def test_nearly_dependent_rows_are_solved_and_flagged(scale):
     assert worst[exact].max() <= 1e-9
     assert np.all(worst[near] <= 1e-7) and np.all(worst[near] > 1e-9)
     if scale == 1e-9:
-        assert 5 <= near.sum() <= 20  # (the case is met: 16 of 500 here)
+        assert 5 <= near.sum() <= 20  # (the case is met: 14 of 500 here)
 
 
 @pytest.mark.parametrize("scale", [1e-9, 1e-8])
-def test_long_runs_solved_from_z_meet_the_dense_model_and_clarabel(scale):
-    """The samples answered exactly after a thousand sweeps or more (the solve from Z's
-    pieces, or the sweeps' own later reading): every one meets the dense model's KKT
-    conditions with the batch's forces, and Clarabel's accelerations to 1e-6 (Clarabel's own
-    accuracy on these problems). They are many (18 of 500 at 1e-9, 22 of 363 at 1e-8), and
-    sample 441 at 1e-9, which no reading of the sweeps solved in 200,000 sweeps, is one."""
+def test_long_runs_meet_the_dense_model_and_clarabel(scale):
+    """The samples answered exactly after 150 sweeps or more (the pieces read from the dual's
+    barrier path, the solve from Z's pieces, or the sweeps' own later reading): every one
+    meets the dense model's KKT conditions with the batch's forces, and Clarabel's
+    accelerations to 1e-6 (Clarabel's own accuracy on these problems). They are many (49 of
+    500 at 1e-9, 62 of 363 at 1e-8), and sample 441 at 1e-9, which no reading of the sweeps
+    solved in 200,000 sweeps (the solve from Z after 1,005), is one: now after 155."""
     model, T, res = _moved_batch(scale)
     sweeps = res._raw["info"]["sweeps"]
-    long = np.flatnonzero((res.status == 0) & (res.dependent != 3) & (sweeps >= 1000))
-    assert len(long) >= 15, len(long)
+    long = np.flatnonzero((res.status == 0) & (res.dependent != 3) & (sweeps >= 150))
+    assert len(long) >= 40, len(long)
     if scale == 1e-9:
-        assert 441 in long and sweeps[441] < 2000, sweeps[441]
-    for i in long:
-        _meets_the_references(model, T, res, int(i))
+        assert 441 in long and sweeps[441] < 1000, sweeps[441]
+    for i in long:  # (flag 2: the basic solution kept, to 3e-8 of the dense model's scales,
+        # as test_basic_solutions_of_nearly_dependent_faces_against_the_references says)
+        _meets_the_references(model, T, res, int(i), 3e-8 if res.dependent[i] == 2 else 1e-8)
 
 
 def test_near_misses_against_clarabel_and_a_dense_model():

@@ -35,8 +35,11 @@
  *      rounding), read after five sweeps and tried where they read otherwise than at the last
  *      try, every failed try doubling the sweeps to the next reading (or once they converged;
  *      where w settled, a row that accelerates reads zero or sliding whatever its force);
- *      every RESCUE_SWEEPS sweeps without a solved piece, the reading is solved once more
- *      from Z itself, one switch a pass (scene_rescue.c: nearly dependent held rows).
+ *      once BARRIER_SWEEPS sweeps solved no piece, the pieces read from the dual's log-barrier
+ *      path (scene_barrier.c: an interior point, which does not drift along a statically
+ *      indeterminate face's null space as the sweeps' forces do); every RESCUE_SWEEPS sweeps
+ *      without a solved piece, the reading solved from Z itself, one switch a pass
+ *      (scene_rescue.c: nearly dependent held rows).
  * The certificate (KKT residuals, relative to the sample's force and acceleration scales) is
  * returned with every sample. Where the held rows' equations are dependent (statically
  * indeterminate), the flag is set and the held forces are the minimum-norm ones on the face
@@ -54,6 +57,7 @@
 #include "scene_diag.h"
 #include "scene_sets.h"
 #include "scene_rescue.h"
+#include "scene_barrier.h"
 #include "scene_kkt.h"
 #include "scene_tiny.h"
 #include "scene_solve.h"
@@ -67,6 +71,7 @@ enum { ST_SOLVED = 0, ST_NOT_CONVERGED = 1, ST_SINGULAR_MASS = 2, ST_BAD_INPUT =
  * failed tries), after this many sweeps: a row accelerating beyond TOL_ACCEPT then reads zero
  * or sliding (sc_read_states; nearly dependent rows' forces drift while w has settled) */
 #define READ_W_SWEEPS 200
+#define BARRIER_SWEEPS 150 /* sweeps unsolved before the barrier path is read (once) */
 /* every RESCUE_SWEEPS sweeps unsolved (RESCUE_TRIES times at most): from Z (scene_rescue.c) */
 #define RESCUE_SWEEPS 1000
 #define RESCUE_TRIES 16
@@ -245,7 +250,8 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
   sc_problem p;
   sc_tr2d prep[2 * PREP_BLOCKS]; /* (the sweeps' blocks' H parts: taken at their first sweep) */
   sc_near near;
-  int dep = 0, ok = 0, primal = 0, reread = 0, fails = 0, nearly = 0, rescued = 0, zw = 0;
+  int dep = 0, ok = 0, primal = 0, reread = 0, fails = 0, nearly = 0, rescued = 0, zw = 0,
+      barred = 0;
   if (tiny && sc_tiny_solve(n, m, nb, M, f, A, c, kind, start, par, from, lam, a, w, state_out,
                             info))
     return; /* (a tiny problem of one-row blocks: scene_tiny.c, the same steps compiled) */
@@ -308,6 +314,16 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
     int same = 1;
     sc_int s = reread ? chunk : sc_block_sweeps(&p, chunk, 1e-12, total_sweeps == 0, prep);
     if (!reread) total_sweeps += s;
+    if (!barred && !reread && total_sweeps >= BARRIER_SWEEPS) { /* once: read from the
+      dual's barrier path instead (scene_barrier.c), else the sweeps go on from their point */
+      memcpy(keep, lam, sizeof(double) * (size_t)m);
+      barred = sc_barrier(&p, Z, rest, prev + 3 * nb) > 0 ? (sc_update_w(&p), 2) : 1;
+      if (barred == 2 && (sc_read_states(&p, 1e-6, 1e-6, 0.0), 1) &&
+          (ok = active_set(&p, Z, &near, 20, rest, iw2, &passes, &defect, res, 1)))
+        break;
+      memcpy(lam, keep, sizeof(double) * (size_t)m);
+      sc_update_w(&p);
+    }
     sc_read_states(&p, 1e-6, s < chunk || fails >= 2 ? 1e-6 : READ_SLIDE,
                    s < chunk || (fails >= 2 && total_sweeps >= READ_W_SWEEPS) ? TOL_ACCEPT :
                    0.0); /* (converged: 1e-6, and from w where it settled) */
@@ -436,7 +452,8 @@ answered:
 void SNAKECG_EXPORT(core_scene_solve_work)(sc_int n, sc_int m, sc_int nb, sc_int *nd, sc_int *ni) {
   *nd = n * n + n * m + m * m + m + nb + 2 * m + rest_size(n, m, nb) + (m + nb); /* (the
         last: the near miss kept) */
-  *ni = 3 * nb + 4 * (m + nb) + 16 + n; /* (the last 2 nb: the rescue's reading and switches) */
+  *ni = 3 * nb + 4 * (m + nb) + 16 + n; /* (prev's 3 nb: the rescue's reading and switches
+    among them; past them, the barrier's n) */
 }
 
 /* A batch of samples of equal sizes n; sample s has m[s] rows and nb[s] blocks (padded to
