@@ -30,10 +30,13 @@
 * **instructions** (``--instructions``, needs valgrind): machine instructions per sample
   inside the engine's call and inside its solve (callgrind's inclusive counts over a batch:
   the benchmark's at one q, 100 one-sample calls in a row at that q, the batch moved by
-  1e-10 and the paper's), figures that do not depend on the machine's load.
+  1e-10 and the paper's), figures that do not depend on the machine's load;
+* **long runs** (``--long-runs``): the scene at 8 random configurations, 500 torques at each
+  of four scales, one thread: time a sample, the sweeps (mean, largest, above 150) and the
+  worst certificate (the pieces read from the dual's barrier path after 150 sweeps).
 
     python benchmarks/bench_scenes.py [--joints 10] [--n 2000] [--single 300] [--repeat 3]
-                                      [--instructions] [--primal]
+                                      [--instructions] [--primal] [--long-runs]
 
 Prints a table and the machine's load average before and after.
 """
@@ -43,6 +46,7 @@ from __future__ import annotations
 import argparse
 import os
 import platform
+import time
 
 import numpy as np
 from bench_core import best_of  # benchmarks/bench_core.py
@@ -237,6 +241,35 @@ def bench_instructions(joints: int) -> None:
               f"{counts[0] - counts[1]:10,.0f}")
 
 
+def bench_long_runs(joints: int, configurations: int = 8, per_scale: int = 500) -> None:
+    """The solve's long runs: the benchmark's scene at random joint angles (uniform in +-0.5
+    rad, seed 0), torques at four scales (0.01 to 10 N m, per_scale each), one thread. On
+    statically indeterminate faces the sweeps' forces drift; the pieces are then read once
+    from the dual's barrier path. Prints the wall time, the sweeps (mean, largest, how many
+    samples passed 150) and the certificates' worst."""
+    rng = np.random.default_rng(0)
+    total, sweeps, worst, unsolved = 0.0, [], 0.0, 0
+    for _ in range(configurations):
+        q = np.r_[0.0, 0.0, 0.0, rng.uniform(-0.5, 0.5, joints)]
+        model = snakecg.load(scene_of(joints, q))
+        for scale in (0.01, 0.1, 1.0, 10.0):
+            T = rng.normal(0, scale, (per_scale, joints))
+            Q = np.repeat(q[None], per_scale, axis=0)
+            t0 = time.perf_counter()
+            res = model.forward(Q, T)
+            total += time.perf_counter() - t0
+            info = res._raw["info"]
+            sweeps.append(info["sweeps"])
+            unsolved += int(np.sum(info["status"] != 0))
+            worst = max(worst, max(float(np.nanmax(info[k]))
+                                   for k in ("primal", "dual", "complementarity")))
+    sw = np.concatenate(sweeps)
+    print(f"long runs ({configurations} random configurations x 4 torque scales x {per_scale}, "
+          f"one thread): {total / sw.size * 1e6:.1f} us a sample, sweeps mean {sw.mean():.1f}, "
+          f"largest {sw.max():.0f}, above 150: {(sw > 150).sum()}; unsolved {unsolved}, worst "
+          f"certificate {worst:.1e}")
+
+
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--joints", type=int, default=10)
@@ -245,6 +278,8 @@ def main() -> None:
     ap.add_argument("--repeat", type=int, default=3)
     ap.add_argument("--instructions", action="store_true",
                     help="also instructions per sample (valgrind's callgrind)")
+    ap.add_argument("--long-runs", action="store_true",
+                    help="also the long runs' study (random configurations, four torque scales)")
     ap.add_argument("--primal", action="store_true",
                     help="also the warm batches with and without the primal piece")
     ap.add_argument("--_child", nargs=3, help=argparse.SUPPRESS)
@@ -349,6 +384,8 @@ def main() -> None:
                np.full(g.size ** 2, 0.3)]
     _warm_cold(new, "paper, q map 64 x 64", Qg, np.tile([0.02, -0.01, 0.03], (len(Qg), 1)),
                a.repeat)
+    if a.long_runs:
+        bench_long_runs(na)
     if a.instructions:
         bench_instructions(na)
     print(f"load after: {os.getloadavg()}")
