@@ -9,11 +9,11 @@
  * sc_block_P), has one minimiser, strictly inside the sets, whose gap to the dual's optimum is
  * at most nu / t (nu: the barrier terms; Boyd & Vandenberghe, "Convex Optimization", 11.2-11.3).
  * Each t's minimiser is followed by damped Newton steps (the Hessian t G + the barrier's, of
- * m rows, solved through an n x n system: newton_step), the step
- * halved until it stays inside the sets and the objective falls (Armijo); t grows by MU once
- * the Newton decrement is below CENTRED, until nu / t is below GAP of the scales. The
- * blocks whose set is {0} keep zero forces. The point is no answer: scene_solve.c reads its
- * pieces and solves them exactly (its passes and certificate). */
+ * m rows, solved through an n x n system: newton_step), the step halved until it stays inside
+ * the sets and the objective falls (Armijo); t grows by MU once the Newton decrement is below
+ * CENTRED, until nu / t is below GAP of the scales. The blocks whose set is {0} keep zero
+ * forces. The point is no answer: scene_solve.c reads its pieces and solves them exactly (its
+ * passes and certificate). */
 #include <math.h>
 #include <string.h>
 
@@ -164,10 +164,12 @@ static void newton_step(const sc_problem *p, const double *Z, double t, const do
   }
 }
 
+/* The path followed from t = 1 / (the scales' product) and lam = 0 (contacts at 1e-2 of the
+ * force scale: strictly inside), t times MU per centring (scene_barrier.h). */
 SC_INTERNAL sc_int sc_barrier(sc_problem *p, const double *Z, double *work, sc_int *iwork) {
   const sc_int n = p->n, m = p->m;
   const double scale = p->fscale * p->wscale;
-  double *g = work, *gq = g + m, *dx = gq + m, *tr = dx + m, *zd = tr + m, *Dh = zd + n,
+  double *g = work, *gq = g + m, *dx = gq + m, *tr = dx + m, *Dh = tr + m,
          *rest = Dh + 3 * p->nb;
   double *lam = p->lam, t = 1.0 / scale, nu = 0.0;
   sc_int i, j, k, newton = 0;
@@ -177,7 +179,7 @@ SC_INTERNAL sc_int sc_barrier(sc_problem *p, const double *Z, double *work, sc_i
       nu += 1.0;
       if (p->kind[k] == K_UNILATERAL) lam[p->start[k]] = 1e-2 * p->fscale;
     }
-  for (;;) {
+  for (;;) { /* (the last centring: its decrement to CENTRED_END, or while it halves) */
     const int last = nu / t <= GAP * scale;
     double dprev = INFINITY;
     for (;;) { /* centring: damped Newton */
@@ -194,7 +196,6 @@ SC_INTERNAL sc_int sc_barrier(sc_problem *p, const double *Z, double *work, sc_i
       for (i = 0; i < n; ++i) { /* t dx^T G dx / 2 = t |Z dx|^2 / 2 */
         double s = 0.0;
         for (j = 0; j < m; ++j) s += Z[i * m + j] * dx[j];
-        zd[i] = s;
         quad += s * s;
       }
       quad *= 0.5 * t;
