@@ -213,3 +213,24 @@ SC_INTERNAL sc_int sc_barrier(sc_problem *p, const double *Z, double *work, sc_i
     t *= MU;
   }
 }
+
+/* The barrier's point put onto the pieces read from it (p->state): a sliding 2-D block's force
+ * scaled onto its set's boundary, a box at its bound, an open contact's force zero (a near
+ * miss for scene_solve.c to keep where no piece solves: its KKT residuals are the point's
+ * distance from the path's end, about the gap). */
+SC_INTERNAL void sc_barrier_onto(sc_problem *p) {
+  sc_int k;
+  for (k = 0; k < p->nb; ++k) {
+    double *l = p->lam + p->start[k], P[2], phi;
+    if (p->state[k] == S_ZERO) {
+      l[0] = 0.0;
+      if (sc_block_size(p->kind[k]) == 2) l[1] = 0.0;
+    } else if (p->state[k] == S_SLIDE && p->kind[k] == K_BOX) {
+      l[0] = l[0] >= 0 ? p->par[3 * k] : -p->par[3 * k];
+    } else if (p->state[k] == S_SLIDE && !zero_set(p, k)) {
+      sc_block_P(p, k, l, P);
+      phi = sqrt(P[0] * l[0] * l[0] + P[1] * l[1] * l[1]);
+      if (phi > 0) l[0] /= phi, l[1] /= phi;
+    }
+  }
+}

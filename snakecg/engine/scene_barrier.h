@@ -9,4 +9,7 @@
  * last centring). Work: n^2 + nm + 3n + 5m + 6nb doubles (scene_solve.c's rest holds more),
  * iwork: n sc_ints. */
 SC_INTERNAL sc_int sc_barrier(sc_problem *p, const double *Z, double *work, sc_int *iwork);
+
+/* The point put onto the pieces read from it (p->state; p->w untouched). */
+SC_INTERNAL void sc_barrier_onto(sc_problem *p);
 #endif

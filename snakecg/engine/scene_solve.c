@@ -37,7 +37,9 @@
  *      where w settled, a row that accelerates reads zero or sliding whatever its force);
  *      once BARRIER_SWEEPS sweeps solved no piece, the pieces read from the dual's log-barrier
  *      path (scene_barrier.c: an interior point, which does not drift along a statically
- *      indeterminate face's null space as the sweeps' forces do); every RESCUE_SWEEPS sweeps
+ *      indeterminate face's null space as the sweeps' forces do; its point, put onto those
+ *      pieces, kept as a near miss, or within the acceptance as an answer whose forces lie
+ *      inside the face's sets, where no piece solves); every RESCUE_SWEEPS sweeps
  *      without a solved piece, the reading solved from Z itself, one switch a pass
  *      (scene_rescue.c: nearly dependent held rows).
  * The certificate (KKT residuals, relative to the sample's force and acceleration scales) is
@@ -251,7 +253,7 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
   sc_tr2d prep[2 * PREP_BLOCKS]; /* (the sweeps' blocks' H parts: taken at their first sweep) */
   sc_near near;
   int dep = 0, ok = 0, primal = 0, reread = 0, fails = 0, nearly = 0, rescued = 0, zw = 0,
-      barred = 0;
+      barred = 0, interior = 0;
   if (tiny && sc_tiny_solve(n, m, nb, M, f, A, c, kind, start, par, from, lam, a, w, state_out,
                             info))
     return; /* (a tiny problem of one-row blocks: scene_tiny.c, the same steps compiled) */
@@ -318,9 +320,14 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
       dual's barrier path instead (scene_barrier.c), else the sweeps go on from their point */
       memcpy(keep, lam, sizeof(double) * (size_t)m);
       barred = sc_barrier(&p, Z, rest, prev + 3 * nb) > 0 ? (sc_update_w(&p), 2) : 1;
-      if (barred == 2 && (sc_read_states(&p, 1e-6, 1e-6, 0.0), 1) &&
-          (ok = active_set(&p, Z, &near, 20, rest, iw2, &passes, &defect, res, 1)))
-        break;
+      if (barred == 2) { /* its pieces, its point put onto them (kept: a near miss, or within
+        the acceptance an answer, where no piece solves) */
+        sc_read_states(&p, 1e-6, 1e-6, 0.0);
+        sc_barrier_onto(&p);
+        sc_update_w(&p);
+        keep_near(&near, &p, (sc_kkt(&p, res, 0), sc_max(res[0], sc_max(res[1], res[2]))));
+        if ((ok = active_set(&p, Z, &near, 20, rest, iw2, &passes, &defect, res, 1))) break;
+      }
       memcpy(lam, keep, sizeof(double) * (size_t)m);
       sc_update_w(&p);
     }
@@ -361,16 +368,20 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
         if (kind[k] == K_BOX) lam[r] = fmax(-par[3 * k], fmin(par[3 * k], lam[r]));
       }
   }
-  if (!ok && near.res <= NEAR_OK) { /* the best near miss (above): answered, flag 3 */
+  if (!ok && near.res <= NEAR_OK) { /* the best near miss (above): answered, flag 3; the
+    barrier's point within the acceptance: an answer (its face's minimum-norm forces below) */
     memcpy(lam, near.lam, sizeof(double) * (size_t)m);
     for (k = 0; k < nb; ++k) state[k] = (sc_int)near.state[k];
     sc_update_w(&p);
     sc_kkt(&p, res, 0);
-    ok = nearly = 1, dep = 3;
+    ok = 1;
+    if (near.res > TOL_ACCEPT) nearly = 1, dep = 3;
+    else interior = 1; /* (forces inside the face's sets: not a basic solution) */
   }
   if (ok) { /* (w and res: the last pass's, of this lam, until lam moves; once it may have
     moved, both are taken again at the end, and until then only a pass's w is read) */
-    int degenerate = defect > 0 && !nearly, moved = 0; /* (a near miss: its forces, flag 3) */
+    int degenerate = (defect > 0 || interior) && !nearly, moved = 0; /* (a near miss: its
+      forces, flag 3) */
     for (k = 0; k < nb && !degenerate && !nearly; ++k)
       if (state[k] != S_HELD && sc_still(&p, k)) degenerate = 1;
     if (degenerate) { /* (a from the face's basic forces: the minimum-norm choice's rounding
