@@ -39,9 +39,9 @@
  *      path (scene_barrier.c: an interior point, which does not drift along a statically
  *      indeterminate face's null space as the sweeps' forces do; its point, put onto those
  *      pieces, kept as a near miss, or within the acceptance as an answer whose forces lie
- *      inside the face's sets, where no piece solves); every RESCUE_SWEEPS sweeps
- *      without a solved piece, the reading solved from Z itself, one switch a pass
- *      (scene_rescue.c: nearly dependent held rows).
+ *      inside the face's sets, where no piece solves); every RESCUE_SWEEPS sweeps without a
+ *      solved piece, the reading solved from Z itself, one switch a pass (scene_rescue.c:
+ *      nearly dependent held rows).
  * The certificate (KKT residuals, relative to the sample's force and acceleration scales) is
  * returned with every sample. Where the held rows' equations are dependent (statically
  * indeterminate), the flag is set and the held forces are the minimum-norm ones on the face
@@ -86,7 +86,9 @@ enum { ST_SOLVED = 0, ST_NOT_CONVERGED = 1, ST_SINGULAR_MASS = 2, ST_BAD_INPUT =
  * piece whose KKT residuals (res) are above the acceptance but none above NEAR_MISS is a near
  * miss: with rows dropped, its forces are first moved along the face's null space into their
  * sets; the best near miss (least residual, at most NEAR_OK) is kept and answered (dependent
- * flag 3, its certificate above 1e-9) where no piece is accepted after NEAR_SWEEPS sweeps. */
+ * flag 3, its certificate above 1e-9) where no piece is accepted after NEAR_SWEEPS sweeps.
+ * The barrier path's point put onto its pieces is kept alike, whatever its residual: within
+ * the acceptance it is then an answer (its forces inside the face's sets, not basic). */
 #define NEAR_MISS 1e-6
 #define NEAR_OK 1e-7
 #define NEAR_SWEEPS 2000
