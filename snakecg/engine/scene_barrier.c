@@ -29,17 +29,6 @@
 #define NEWTON_MAX 400  /* Newton steps at most */
 #define FREE_DAMP 1e-8  /* a free row's damping, of t G_ii */
 
-/* 1 where block k's set is {0} (its forces stay zero). */
-static int zero_set(const sc_problem *p, sc_int k) {
-  const double *q = p->par + 3 * k;
-  switch (p->kind[k]) {
-    case K_BOX:
-    case K_DISC: return !(q[0] > 0);
-    case K_SPLIT: return !(q[2] > 0 && (q[0] > 0 || q[1] > 0));
-    default: return 0;
-  }
-}
-
 /* The barrier's value at lam (INFINITY outside the sets); with g (m) and Dh (3 per block: its
  * Hessian's h00, h10, h11) where given: its gradient added and its blocks' Hessians set. */
 static double barrier(const sc_problem *p, const double *lam, double *g, double *Dh) {
@@ -49,7 +38,7 @@ static double barrier(const sc_problem *p, const double *lam, double *g, double 
     const sc_int r = p->start[k];
     const double *q = p->par + 3 * k, *l = lam + r;
     double s, P[2], u0, u1, *d = Dh ? Dh + 3 * k : NULL;
-    if (zero_set(p, k) || p->kind[k] == K_FREE) continue;
+    if (sc_zero_set(p, k) || p->kind[k] == K_FREE) continue;
     switch (p->kind[k]) {
       case K_UNILATERAL:
         if (!(l[0] > 0)) return INFINITY;
@@ -94,7 +83,7 @@ static void newton_step(const sc_problem *p, const double *Z, double t, const do
   for (k = 0; k < p->nb; ++k) { /* D^-1 by blocks; u = D^-1 g */
     const sc_int r = p->start[k];
     double *d = Dh + 3 * k, *e = Di + 3 * k;
-    if (zero_set(p, k)) {
+    if (sc_zero_set(p, k)) {
       for (c = 0; c < sc_block_size(p->kind[k]); ++c) u[r + c] = 0.0;
       e[0] = e[1] = e[2] = 0.0;
       continue;
@@ -152,7 +141,7 @@ static void newton_step(const sc_problem *p, const double *Z, double t, const do
   for (k = 0; k < p->nb; ++k) {
     const sc_int r = p->start[k];
     const double *e = Di + 3 * k;
-    if (zero_set(p, k)) {
+    if (sc_zero_set(p, k)) {
       for (c = 0; c < sc_block_size(p->kind[k]); ++c) dx[r + c] = 0.0;
     } else if (sc_block_size(p->kind[k]) == 1) {
       dx[r] = e[0] * dx[r] - u[r];
@@ -175,7 +164,7 @@ SC_INTERNAL sc_int sc_barrier(sc_problem *p, const double *Z, double *work, sc_i
   sc_int i, j, k, newton = 0;
   for (i = 0; i < m; ++i) lam[i] = 0.0;
   for (k = 0; k < p->nb; ++k) /* (a strictly feasible start: contacts pressed a little) */
-    if (!zero_set(p, k) && p->kind[k] != K_FREE) {
+    if (!sc_zero_set(p, k) && p->kind[k] != K_FREE) {
       nu += 1.0;
       if (p->kind[k] == K_UNILATERAL) lam[p->start[k]] = 1e-2 * p->fscale;
     }
@@ -227,7 +216,7 @@ SC_INTERNAL void sc_barrier_onto(sc_problem *p) {
       if (sc_block_size(p->kind[k]) == 2) l[1] = 0.0;
     } else if (p->state[k] == S_SLIDE && p->kind[k] == K_BOX) {
       l[0] = l[0] >= 0 ? p->par[3 * k] : -p->par[3 * k];
-    } else if (p->state[k] == S_SLIDE && !zero_set(p, k)) {
+    } else if (p->state[k] == S_SLIDE && !sc_zero_set(p, k)) {
       sc_block_P(p, k, l, P);
       phi = sqrt(P[0] * l[0] * l[0] + P[1] * l[1] * l[1]);
       if (phi > 0) l[0] /= phi, l[1] /= phi;

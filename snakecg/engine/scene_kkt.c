@@ -52,7 +52,7 @@ SC_INTERNAL int sc_kkt(sc_problem *p, double *res, int do_switch) {
         break;
       default: {
         double P[2], phi, nrm[2], nn, wn, wt;
-        int zero = !(p->kind[k] == K_DISC ? q[0] > 0 : q[2] > 0 && (q[0] > 0 || q[1] > 0));
+        int zero = sc_zero_set(p, k);
         if (zero) break;
         sc_block_P(p, k, l, P);
         phi = sqrt(P[0] * l[0] * l[0] + P[1] * l[1] * l[1]);

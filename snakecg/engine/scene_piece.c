@@ -148,7 +148,7 @@ static double breach(const sc_problem *p, sc_int k, const double *l, const doubl
     case K_BOX: return p->state[k] == S_HELD && q[0] > 0 ? fabs(l[0]) / q[0] - 1.0 : -1.0;
     case K_DISC:
     case K_SPLIT:
-      if (!(p->kind[k] == K_DISC ? q[0] > 0 : q[2] > 0 && (q[0] > 0 || q[1] > 0)))
+      if (sc_zero_set(p, k))
         return -1.0; /* (the set {0}: kkt checks nothing there) */
       sc_block_P(p, k, l, P);
       if (p->state[k] == S_HELD) return sqrt(P[0] * l[0] * l[0] + P[1] * l[1] * l[1]) - 1.0;

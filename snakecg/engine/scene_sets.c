@@ -59,7 +59,7 @@ SC_INTERNAL int sc_in_set(const sc_problem *p, sc_int k, double *l, double tol, 
       if (clip) l[0] = fmax(-q[0], fmin(q[0], l[0]));
       return 1;
     default:
-      if (!(p->kind[k] == K_DISC ? q[0] > 0 : q[2] > 0 && (q[0] > 0 || q[1] > 0)))
+      if (sc_zero_set(p, k))
         return l[0] == 0.0 && l[1] == 0.0;
       sc_block_P(p, k, l, P);
       phi = sqrt(P[0] * l[0] * l[0] + P[1] * l[1] * l[1]);
@@ -486,7 +486,7 @@ SC_INTERNAL void sc_read_states(sc_problem *p, double rel, double rel2, double w
         break;
       default: {
         double P[2], phi;
-        if (!(p->kind[k] == K_DISC ? q[0] > 0 : q[2] > 0 && (q[0] > 0 || q[1] > 0))) {
+        if (sc_zero_set(p, k)) {
           p->state[k] = S_ZERO;
           break;
         }

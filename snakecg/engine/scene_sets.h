@@ -41,6 +41,18 @@ static inline void sc_block_P(const sc_problem *p, sc_int k, const double *l, do
   }
 }
 
+/* 1 where block k's set is {0} (a box, disc or split ellipse of no extent: its forces stay
+ * zero, and its normal cone is every acceleration). */
+static inline int sc_zero_set(const sc_problem *p, sc_int k) {
+  const double *q = p->par + 3 * k;
+  switch (p->kind[k]) {
+    case K_BOX:
+    case K_DISC: return !(q[0] > 0);
+    case K_SPLIT: return !(q[2] > 0 && (q[0] > 0 || q[1] > 0));
+    default: return 0;
+  }
+}
+
 /* 1 if block k's rows do not accelerate (|w| within the acceptance tolerance). */
 static inline int sc_still(const sc_problem *p, sc_int k) {
   sc_int i;

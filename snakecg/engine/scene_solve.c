@@ -173,8 +173,7 @@ static void start_from(sc_problem *p, const double *from) {
     const double *q = p->par + 3 * k, *s = from + 3 * k;
     const sc_int kind = p->kind[k], r = p->start[k], code = (sc_int)s[0],
                  nk = sc_block_size(kind);
-    int zero = kind == K_BOX ? !(q[0] > 0) : kind == K_DISC ? !(q[0] > 0) :
-               kind == K_SPLIT ? !(q[2] > 0 && (q[0] > 0 || q[1] > 0)) : 0;
+    int zero = sc_zero_set(p, k);
     p->gamma[k] = 0.0;
     p->state[k] = zero || (code == S_ZERO && kind != K_FREE) ? S_ZERO : S_HELD;
     if (zero || p->state[k] == S_ZERO) continue;
@@ -296,12 +295,7 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
   }
   if (!ok && m <= n) { /* the active set from the held guess: every block held (or its set
     zero); not where more rows than coordinates make the held forces' basic solution arbitrary */
-    for (k = 0; k < nb; ++k) {
-      const double *q = par + 3 * k;
-      int zero = kind[k] == K_BOX ? !(q[0] > 0) : kind[k] == K_DISC ? !(q[0] > 0) :
-                 kind[k] == K_SPLIT ? !(q[2] > 0 && (q[0] > 0 || q[1] > 0)) : 0;
-      state[k] = zero ? S_ZERO : S_HELD;
-    }
+    for (k = 0; k < nb; ++k) state[k] = sc_zero_set(&p, k) ? S_ZERO : S_HELD;
     ok = active_set(&p, Z, &near, GUESS_PASSES, rest, iw2, &passes, &defect, res, 0);
     if (!ok) /* else the sweeps from zero forces */
       for (i = 0; i < m; ++i) lam[i] = 0.0;
