@@ -204,22 +204,22 @@ SC_INTERNAL sc_int sc_barrier(sc_problem *p, const double *Z, double *work, sc_i
 }
 
 /* The barrier's point put onto the pieces read from it (p->state): a sliding 2-D block's force
- * scaled onto its set's boundary, a box at its bound, an open contact's force zero (a near
- * miss for scene_solve.c to keep where no piece solves: its KKT residuals are the point's
- * distance from the path's end, about the gap). */
+ * radially onto its set's boundary (sc_direction_of, sc_on_boundary: as a piece starts), a box
+ * at its bound, an open contact's force zero (a near miss for scene_solve.c to keep where no
+ * piece solves: its KKT residuals are the point's distance from the path's end, about the
+ * gap). */
 SC_INTERNAL void sc_barrier_onto(sc_problem *p) {
   sc_int k;
   for (k = 0; k < p->nb; ++k) {
-    double *l = p->lam + p->start[k], P[2], phi;
+    double *l = p->lam + p->start[k], u[2], T[2];
     if (p->state[k] == S_ZERO) {
       l[0] = 0.0;
       if (sc_block_size(p->kind[k]) == 2) l[1] = 0.0;
     } else if (p->state[k] == S_SLIDE && p->kind[k] == K_BOX) {
       l[0] = l[0] >= 0 ? p->par[3 * k] : -p->par[3 * k];
-    } else if (p->state[k] == S_SLIDE && !sc_zero_set(p, k)) {
-      sc_block_P(p, k, l, P);
-      phi = sqrt(P[0] * l[0] * l[0] + P[1] * l[1] * l[1]);
-      if (phi > 0) l[0] /= phi, l[1] /= phi;
+    } else if (p->state[k] == S_SLIDE && !sc_zero_set(p, k)) { /* (radially, as a piece) */
+      sc_direction_of(p, k, l, u);
+      sc_on_boundary(p, k, u, l, T);
     }
   }
 }
