@@ -151,7 +151,8 @@ static void pieces(sc_int nbt, const sc_int *kind, const sc_int *start, const do
   }
 }
 
-/* The inner (Tresca) solve at the bounds s from the pieces `from`: core_scene_solve_s's code,
+/* The inner (Tresca) solve at the bounds s from the pieces `from`: core_scene_solve_s's code
+ * (its Z and G held in p->kp: the same inertia and rows at every inner solve, the same bits),
  * 1 where it did not converge; rb the bounds it gives (bound_of), *r2 = |rb - s|^2, *F its
  * largest force. */
 static int inner(const sc_fr_prob *p, const double *s, const double *from, double *lam,
@@ -160,9 +161,8 @@ static int inner(const sc_fr_prob *p, const double *s, const double *from, doubl
   sc_int j, i;
   int code;
   for (j = 0; j < p->nt; ++j) p->par[3 * (p->nb + j)] = s[j];
-  code = SNAKECG_EXPORT(core_scene_solve_s)(p->n, p->mt, p->nb + p->nt, p->M, p->f, p->A,
-                                            p->c, p->kind, p->start, p->par, p->sweeps, from,
-                                            lam, a, w, st, info);
+  code = sc_scene_solve_one(p->n, p->mt, p->nb + p->nt, p->M, p->f, p->A, p->c, p->kind,
+                            p->start, p->par, p->sweeps, from, lam, a, w, st, info, 1, p->kp);
   if (code) return code;
   if (info[0] != 0.0) return 1;
   *F = 0.0, *r2 = 0.0;
@@ -184,6 +184,7 @@ int sc_friction_solve(sc_int n, sc_int m, sc_int nb, sc_int nc, const double *M,
       *sv, *rb, *dv, *Dss, scale[2], res[3];
   sc_enum e;
   sc_fr_prob pr;
+  sc_solve_keep kp = {0, 0, 0};
   int code = 0, ok = 0, same, stall = 0, newton = 0, restarts = 0, cands = 0;
   double omega = 1.0, best = INFINITY; /* the passes' relaxation (halved where they stall) */
   *solutions = 0.0;
@@ -212,7 +213,9 @@ int sc_friction_solve(sc_int n, sc_int m, sc_int nb, sc_int nc, const double *M,
                                                  2 * n * mt + 4 * mt * mt + 10 * mt + 4 * n +
                                                  SOL_MAX * n + 16));
   iw = (sc_int *)malloc(sizeof(sc_int) * (size_t)(3 * nbt + 3 * nt + 2 * mt + 8));
-  if (!d || !iw) goto done;
+  kp.Z = (double *)malloc(sizeof(double) * (size_t)(n * mt + mt * mt)); /* (Z, then G) */
+  if (!d || !iw || !kp.Z) goto done;
+  kp.G = kp.Z + n * mt;
   mu = d, s = mu + nt, r0 = s + nt, rhs = r0 + nt, sv = rhs + nt, rb = sv + nt, dv = rb + nt;
   Dss = dv + nt, fr = Dss + nt * nt, L = fr + 3 * nbt;
   Z = L + n * n, G = Z + n * mt, b = G + mt * mt, g = b + mt, pl = g + n, pw = pl + mt;
@@ -235,7 +238,7 @@ int sc_friction_solve(sc_int n, sc_int m, sc_int nb, sc_int nc, const double *M,
   }
   pr.n = n, pr.mt = mt, pr.nb = nb, pr.nt = nt, pr.m = m, pr.sweeps = sweeps, pr.M = M;
   pr.f = f, pr.A = A, pr.c = c, pr.kind = kind, pr.start = start, pr.par = par, pr.mu = mu;
-  pr.lead = lead, pr.rn = rn;
+  pr.lead = lead, pr.rn = rn, pr.kp = &kp;
   it = 0;
 passes:
   for (; it < 4 * FP_MAX; ++it) {
@@ -369,5 +372,6 @@ passes:
 done:
   free(d);
   free(iw);
-  return d && iw ? code : -1;
+  free(kp.Z);
+  return d && iw && kp.Z ? code : -1;
 }

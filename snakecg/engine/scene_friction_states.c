@@ -315,9 +315,9 @@ static int cand_solve(sc_cand *c, const double *s, int into, double *R) {
                  *an = p->A + p->rn[k] * n, *t = p->A + (p->m + k) * n;
     for (j = 0; j < n; ++j) c->fm[j] += s[i] * an[j] + lt * t[j];
   }
-  if (SNAKECG_EXPORT(core_scene_solve_s)(n, p->mt, p->nb + p->nt, p->M, c->fm, p->A, p->c,
-                                         p->kind, p->start, p->par, c->sweeps, c->from,
-                                         x[C_LAM], x[C_A], x[C_W], x[C_ST], x[C_INFO]) ||
+  if (sc_scene_solve_one(n, p->mt, p->nb + p->nt, p->M, c->fm, p->A, p->c, p->kind, p->start,
+                         p->par, c->sweeps, c->from, x[C_LAM], x[C_A], x[C_W], x[C_ST],
+                         x[C_INFO], 1, p->kp) || /* (core_scene_solve_s, Z and G held) */
       x[C_INFO][0] != 0.0)
     return 0;
   for (i = 0; i < c->ns; ++i) {

@@ -4,14 +4,17 @@
 #ifndef SNAKECG_SCENE_FRICTION_STATES_H
 #define SNAKECG_SCENE_FRICTION_STATES_H
 
+#include "scene_solve.h"
+
 #define FP_TOL 1e-12    /* |mu lam_n - s| at most this of the forces' scale: settled */
 #define SOL_MAX 16      /* distinct solutions kept by the enumeration */
 
 /* The fixed point's problem: the convex solve's arguments with the tangent blocks (contact k's
  * normal block k, row rn[k]; its tangent block nb + k, row m + k; mt = m + nt rows; lead[k]
- * the first contact of its group of equal normal rows). */
+ * the first contact of its group of equal normal rows); kp: the Z and G of its inertia and
+ * rows, held from its first inner solve for the others (only the bounds and forces change). */
 typedef struct { sc_int n, m, nb, nt, mt, sweeps; const double *M, *f, *mu; double *A, *c, *par;
-  sc_int *kind, *start; const sc_int *lead, *rn; } sc_fr_prob;
+  sc_int *kind, *start; const sc_int *lead, *rn; sc_solve_keep *kp; } sc_fr_prob;
 
 /* The enumeration's problem and scratch. */
 typedef struct {
