@@ -9,9 +9,10 @@ import numpy as np
 import pytest
 
 import snakecg
-from snakecg.scenes import Ground
+from snakecg.scenes import GeneralScene, Ground, Obstacle, SceneObject
 
-from scenes_reference import clarabel_min_norm_forces, dense_problem, indeterminate_scene
+from scenes_reference import (clarabel_min_norm_forces, dense_problem, indeterminate_scene,
+                              kkt_violations)
 
 
 GROUNDS = {"coulomb": Ground(model="coulomb", mu=0.3),
@@ -149,10 +150,6 @@ def test_minimum_norm_forces_found_where_the_newton_creeps_or_stalls(case):
     accelerations, and their norm is no larger than Clarabel's minimum-norm forces' (to 1e-11;
     the basic solutions kept before were up to 14 % larger) and equal to them within
     Clarabel's accuracy on these flat objectives (1e-5 of their scale)."""
-    from snakecg.scenes import GeneralScene, Obstacle, SceneObject
-
-    from scenes_reference import kkt_violations
-
     ground, angles, tau, pegs = MIN_NORM_EDGES[case]
     robot = snakecg.Robot(joints=10)
     objects = (SceneObject(shape="box", size=(0.1, 0.08), mass=2.0, mu=0.2,
