@@ -22,9 +22,10 @@ import os
 import time
 
 import numpy as np
+from bench_scenes import scene_of  # benchmarks/bench_scenes.py
 
 import snakecg
-from snakecg.scenes import GeneralScene, Ground, Obstacle, SceneObject
+from snakecg.scenes import GeneralScene, Ground
 
 GROUNDS = {"coulomb": Ground(model="coulomb", mu=0.3),
            "anisotropic": Ground(model="anisotropic", mu_forward=0.1, mu_backward=0.3,
@@ -36,24 +37,11 @@ GROUNDS = {"coulomb": Ground(model="coulomb", mu=0.3),
 
 
 def family_scene(name: str, joints: int, q, radius: float, rng) -> GeneralScene:
-    """The scene of family ``name`` at ``q``: pegs of radius 0.03 touching links 2.. on
-    random sides."""
-    robot = snakecg.Robot(joints=joints)
-    mu_c = 0.3 if name == "contact_friction" else None
-    objects = (SceneObject(shape="box", size=(0.1, 0.08), mass=2.0, mu=0.2, mu_contact=mu_c,
-                           touching={"link": 1, "offset": 0.075, "side": "left"}),
-               SceneObject(shape="disc", radius=0.04, mass=1.0, mu=0.2, mu_contact=mu_c,
-                           touching={"link": joints + 1, "offset": 0.075, "side": "right"}))
-    poses = snakecg.load(robot).link_poses(q)
-    pegs = []
-    for k in range(4):
-        x, y, phi = poses[1 + (k * (joints - 1)) // 4]
-        side = 1.0 if rng.random() < 0.5 else -1.0
-        c = np.array([x, y]) + (0.03 + radius) * side * np.array([-np.sin(phi), np.cos(phi)])
-        pegs.append(Obstacle(shape="peg", center=(float(c[0]), float(c[1])), radius=0.03,
-                             mu_contact=mu_c))
-    return GeneralScene(robot, radius=radius, ground=GROUNDS[name], objects=objects,
-                        obstacles=tuple(pegs))
+    """The scene of family ``name`` at ``q``: the benchmark's (bench_scenes.scene_of) with
+    its pegs on random sides."""
+    sides = [1.0 if rng.random() < 0.5 else -1.0 for _ in range(4)]
+    return scene_of(joints, q, ground=GROUNDS[name], sides=sides, radius=radius,
+                    mu_contact=0.3 if name == "contact_friction" else None)
 
 
 def study(name: str, a) -> str:

@@ -55,23 +55,28 @@ import snakecg
 from snakecg.scenes import GeneralScene, Ground, Obstacle, SceneObject
 
 
-def scene_of(joints: int, q):
+def scene_of(joints: int, q, *, ground=None, sides=(-1.0, 1.0, -1.0, 1.0), radius=0.0,
+             mu_contact=None):
+    """The benchmark's scene at q: a box and a disc touching the end links, four pegs of
+    radius 0.03 touching links 2.. on ``sides`` (-1 right, 1 left), Coulomb ground (mu 0.3)
+    unless ``ground`` is given; ``radius``: the links' capsules; ``mu_contact``: the objects'
+    and pegs' own Coulomb coefficient at their contacts."""
     robot = snakecg.Robot(joints=joints)
-    objects = (SceneObject(shape="box", size=(0.1, 0.08), mass=2.0, mu=0.2,
+    objects = (SceneObject(shape="box", size=(0.1, 0.08), mass=2.0, mu=0.2, mu_contact=mu_contact,
                            touching={"link": 1, "offset": 0.075, "side": "left"}),
-               SceneObject(shape="disc", radius=0.04, mass=1.0, mu=0.2,
+               SceneObject(shape="disc", radius=0.04, mass=1.0, mu=0.2, mu_contact=mu_contact,
                            touching={"link": joints + 1, "offset": 0.075, "side": "right"}))
-    base = GeneralScene(robot, ground=Ground(model="coulomb", mu=0.3), objects=objects)
     P = snakecg.load(robot).link_poses(q)
     pegs = []
-    for k in range(4):  # pegs touching links 2.. on alternating sides
-        link = 2 + (k * (joints - 1)) // 4
-        x, y, phi = P[link - 1]
-        side = 1.0 if k % 2 else -1.0
+    for k, side in enumerate(sides):  # pegs touching links 2..
+        x, y, phi = P[1 + (k * (joints - 1)) // 4]
         n = np.array([-np.sin(phi), np.cos(phi)]) * side
-        c = np.array([x, y]) + 0.03 * n
-        pegs.append(Obstacle(shape="peg", center=(float(c[0]), float(c[1])), radius=0.03))
-    return GeneralScene(robot, ground=base.ground, objects=objects, obstacles=tuple(pegs))
+        c = np.array([x, y]) + (0.03 + radius) * n
+        pegs.append(Obstacle(shape="peg", center=(float(c[0]), float(c[1])), radius=0.03,
+                             mu_contact=mu_contact))
+    return GeneralScene(robot, radius=radius,
+                        ground=Ground(model="coulomb", mu=0.3) if ground is None else ground,
+                        objects=objects, obstacles=tuple(pegs))
 
 
 def mjcf(scene, P, obj_poses) -> str:
