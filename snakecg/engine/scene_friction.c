@@ -184,7 +184,7 @@ int sc_friction_solve(sc_int n, sc_int m, sc_int nb, sc_int nc, const double *M,
       *sv, *rb, *dv, *Dss, scale[2], res[3];
   sc_enum e;
   sc_fr_prob pr;
-  sc_solve_keep kp = {0, 0, 0};
+  sc_solve_keep kp = {0};
   int code = 0, ok = 0, same, stall = 0, newton = 0, restarts = 0, cands = 0;
   double omega = 1.0, best = INFINITY; /* the passes' relaxation (halved where they stall) */
   *solutions = 0.0;
@@ -213,9 +213,12 @@ int sc_friction_solve(sc_int n, sc_int m, sc_int nb, sc_int nc, const double *M,
                                                  2 * n * mt + 4 * mt * mt + 10 * mt + 4 * n +
                                                  SOL_MAX * n + 16));
   iw = (sc_int *)malloc(sizeof(sc_int) * (size_t)(3 * nbt + 3 * nt + 2 * mt + 8));
-  kp.Z = (double *)malloc(sizeof(double) * (size_t)(n * mt + mt * mt)); /* (Z, then G) */
-  if (!d || !iw || !kp.Z) goto done;
+  kp.Z = (double *)malloc(sizeof(double) * (size_t)(n * mt + 2 * mt * mt)); /* (Z, G, then
+    the minimum-norm choice's null space: nearly every inner solve's choice is on one face) */
+  kp.face.face = (sc_int *)malloc(sizeof(sc_int) * (size_t)mt);
+  if (!d || !iw || !kp.Z || !kp.face.face) goto done;
   kp.G = kp.Z + n * mt;
+  kp.face.v = kp.G + mt * mt, kp.face.nf = -1, kp.face.cap = mt;
   mu = d, s = mu + nt, r0 = s + nt, rhs = r0 + nt, sv = rhs + nt, rb = sv + nt, dv = rb + nt;
   Dss = dv + nt, fr = Dss + nt * nt, L = fr + 3 * nbt;
   Z = L + n * n, G = Z + n * mt, b = G + mt * mt, g = b + mt, pl = g + n, pw = pl + mt;
@@ -373,5 +376,6 @@ done:
   free(d);
   free(iw);
   free(kp.Z);
-  return d && iw && kp.Z ? code : -1;
+  free(kp.face.face);
+  return d && iw && kp.Z && kp.face.face ? code : -1;
 }

@@ -367,9 +367,11 @@ static int min_norm_in_sets(const sc_problem *p, sc_int nf, const sc_int *fk, co
  * loose (0: none): where neither try keeps them within eps, a try that keeps them within
  * loose is taken, the first one's before the refined one's, returning 3 (the caller's
  * accelerations are then the new forces'). p->w is read (the face) and left as it was: the
- * caller takes w of the new forces where it reads it. */
+ * caller takes w of the new forces where it reads it. fkp (or NULL): the null space kept from
+ * the last choice on the same G, taken where the face is the same rows (the same bits as
+ * found again: G_FF is), else found and kept there. */
 SC_INTERNAL int sc_min_norm_face(sc_problem *p, const double *Z, double *work, double eps,
-                                 double loose) {
+                                 double loose, sc_face_keep *fkp) {
   const sc_int m = p->m;
   sc_int F[512], fk[512], perm[512], nf, i, j, nnull = 0;
   double *A, *V, *ev;
@@ -378,9 +380,19 @@ SC_INTERNAL int sc_min_norm_face(sc_problem *p, const double *Z, double *work, d
   A = work;
   V = A + nf * nf;
   ev = V + nf * nf;
-  for (i = 0; i < nf; ++i) /* (the lower triangle: all that null_space reads) */
-    for (j = 0; j <= i; ++j) A[i * nf + j] = p->G[F[i] * m + F[j]];
-  nnull = null_space(nf, A, V, ev, perm);
+  if (fkp && fkp->nf == nf && !memcmp(fkp->face, F, sizeof(sc_int) * (size_t)nf)) {
+    nnull = fkp->nn; /* (a copy: the refined try overwrites V) */
+    memcpy(V, fkp->v, sizeof(double) * (size_t)(nnull * nf));
+  } else {
+    for (i = 0; i < nf; ++i) /* (the lower triangle: all that null_space reads) */
+      for (j = 0; j <= i; ++j) A[i * nf + j] = p->G[F[i] * m + F[j]];
+    nnull = null_space(nf, A, V, ev, perm);
+    if (fkp && nf <= fkp->cap) {
+      fkp->nf = nf, fkp->nn = nnull;
+      memcpy(fkp->face, F, sizeof(sc_int) * (size_t)nf);
+      memcpy(fkp->v, V, sizeof(double) * (size_t)(nnull * nf));
+    }
+  }
   if (nnull == 0) return 0;
   /* (A, G_FF's factor, is free by now: the loose try is kept there) */
   return sc_min_norm_basis(p, Z, nf, F, fk, V, nnull, ev, eps, loose, loose > 0 ? A : NULL);

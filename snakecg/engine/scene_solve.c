@@ -112,10 +112,11 @@ static void keep_near(sc_near *nm, const sc_problem *p, double e) {
 
 /* Active-set passes from the states in p: the piece's equations solved (polish), the KKT
  * conditions checked and the violated pieces switched, at most max_pass times. Returns 1 when
- * a piece's solution satisfies them (res: its residuals), else 0. kept: w = G lam + b on entry. */
+ * a piece's solution satisfies them (res: its residuals), else 0. kept: w = G lam + b on entry.
+ * fkp: the minimum-norm choice's kept null space (or NULL). */
 static int active_set(sc_problem *p, const double *Z, sc_near *nm, sc_int max_pass,
                       double *work, sc_int *iwork, sc_int *passes, sc_int *defect, double *res,
-                      int kept) {
+                      int kept, sc_face_keep *fkp) {
   sc_int pass;
   int early = 1, stopped;
   double e;
@@ -125,8 +126,8 @@ static int active_set(sc_problem *p, const double *Z, sc_near *nm, sc_int max_pa
     *defect = sc_polish(p, work, iwork, kept, &stopped);
     if (!stopped && (e = near_miss(p, res)) > 0) {
       if (*defect > 0 && res[0] > TOL_ACCEPT && res[1] <= TOL_ACCEPT && res[2] <= TOL_ACCEPT &&
-          sc_min_norm_face(p, Z, work, 1e-10, 0.0) == 1) { /* (the accelerations moved by 1e-10
-        of their scale at most) */
+          sc_min_norm_face(p, Z, work, 1e-10, 0.0, fkp) == 1) { /* (the accelerations moved
+        by 1e-10 of their scale at most) */
         sc_update_w(p);
         e = near_miss(p, res);
       }
@@ -253,6 +254,7 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
   sc_problem p;
   sc_tr2d prep[2 * PREP_BLOCKS]; /* (the sweeps' blocks' H parts: taken at their first sweep) */
   sc_near near;
+  sc_face_keep *fkp = NULL; /* (the minimum-norm choice's null space, kept with G) */
   int dep = 0, ok = 0, primal = 0, reread = 0, fails = 0, nearly = 0, rescued = 0, zw = 0,
       barred = 0, interior = 0;
   if (tiny && sc_tiny_solve(n, m, nb, M, f, A, c, kind, start, par, from, lam, a, w, state_out,
@@ -266,6 +268,7 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
     return;
   }
   if (kp) Z = kp->Z, G = kp->G; /* (a batch's samples at one configuration: held) */
+  if (kp && kp->face.face) fkp = &kp->face;
   if (!kp || kp->ok < 1) sc_scene_z(n, m, t, L, A, Z); /* Z = L^-1 A^T (scene_small.c) */
   if (kp && kp->ok < 1) kp->ok = 1;
   near.lam = rest + rest_size(n, m, nb), near.state = near.lam + m, near.res = INFINITY;
@@ -275,6 +278,7 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
     where its n unknowns are fewer than the dual's m */
     ok = primal = primal_start(&p, Z, a, c, from, keep, rest, iw2, res, &defect, &dep);
   if (primal) { passes = 1; goto answered; }
+  if (fkp && kp->ok != 2) fkp->nf = -1; /* (G found again: the null space kept goes) */
   sc_scene_gram(n, m, Z, a, c, kp && kp->ok == 2 ? NULL : G, b, zero); /* G = Z^T Z, b =
     Z^T g + c (G held: b alone) */
   if (kp) kp->ok = 2;
@@ -287,7 +291,7 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
   }
   if (!ok && from) { /* the active set from the caller's pieces (start_from) */
     start_from(&p, from);
-    ok = active_set(&p, Z, &near, FROM_PASSES, rest, iw2, &passes, &defect, res, 0);
+    ok = active_set(&p, Z, &near, FROM_PASSES, rest, iw2, &passes, &defect, res, 0, fkp);
     if (!ok) { /* else today's order from zero forces */
       for (i = 0; i < m; ++i) lam[i] = 0.0;
       for (k = 0; k < nb; ++k) gam[k] = 0.0;
@@ -296,7 +300,7 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
   if (!ok && m <= n) { /* the active set from the held guess: every block held (or its set
     zero); not where more rows than coordinates make the held forces' basic solution arbitrary */
     for (k = 0; k < nb; ++k) state[k] = sc_zero_set(&p, k) ? S_ZERO : S_HELD;
-    ok = active_set(&p, Z, &near, GUESS_PASSES, rest, iw2, &passes, &defect, res, 0);
+    ok = active_set(&p, Z, &near, GUESS_PASSES, rest, iw2, &passes, &defect, res, 0, fkp);
     if (!ok) /* else the sweeps from zero forces */
       for (i = 0; i < m; ++i) lam[i] = 0.0;
   }
@@ -322,7 +326,7 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
         sc_barrier_onto(&p);
         sc_update_w(&p);
         keep_near(&near, &p, (sc_kkt(&p, res, 0), sc_max(res[0], sc_max(res[1], res[2]))));
-        if ((ok = active_set(&p, Z, &near, 20, rest, iw2, &passes, &defect, res, 1))) break;
+        if ((ok = active_set(&p, Z, &near, 20, rest, iw2, &passes, &defect, res, 1, fkp))) break;
       }
       memcpy(lam, keep, sizeof(double) * (size_t)m);
       sc_update_w(&p);
@@ -351,7 +355,8 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
     reread = 0;
     memcpy(prev, state, sizeof(sc_int) * (size_t)nb);
     memcpy(keep, lam, sizeof(double) * (size_t)m);
-    ok = active_set(&p, Z, &near, s < chunk ? 20 : TRY_PASSES, rest, iw2, &passes, &defect, res, 1);
+    ok = active_set(&p, Z, &near, s < chunk ? 20 : TRY_PASSES, rest, iw2, &passes, &defect,
+                    res, 1, fkp);
     if (!ok && s == chunk) {
       memcpy(lam, keep, sizeof(double) * (size_t)m);
       if ((reread = ++fails == 2)) sc_update_w(&p); /* (w of this lam, for the reading) */
@@ -384,7 +389,7 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
       would reach a system that does not move; from the new forces where nearly dependent rows
       taken as dependent move it, by 5e-10 of its scale at most, and the KKT conditions hold) */
       memcpy(keep, lam, sizeof(double) * (size_t)m);
-      if ((dep = sc_min_norm_face(&p, Z, rest, 1e-13, 5e-10)) == 3) {
+      if ((dep = sc_min_norm_face(&p, Z, rest, 1e-13, 5e-10, fkp)) == 3) {
         if (zw) sc_rescue_w(&p, Z, a, c, rest); else sc_update_w(&p);
         if (sc_kkt(&p, res, 0), !(fmax(res[0], fmax(res[1], res[2])) <= TOL_ACCEPT))
           memcpy(lam, keep, sizeof(double) * (size_t)m), dep = 2;

@@ -9,6 +9,8 @@
 typedef struct {
   double *Z, *G;
   int ok;
+  sc_face_keep face; /* (the minimum-norm choice's last null space, where face.face is not
+    null: kept while G is) */
 } sc_solve_keep;
 
 /* core_scene_solve_s, its arguments and returns; tiny 0: scene_tiny.c's path not tried (the
