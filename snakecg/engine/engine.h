@@ -524,16 +524,8 @@ enum { S_HELD = 0, S_ZERO = 1, S_SLIDE = 2 }; /* a block's state */
 #define TOL_ACCEPT 1e-9 /* a row's acceleration is zero within this of its scale */
 #define NULL_TOL 1e-13 /* G_FF's pivots at most this of the first: no acceleration */
 SC_INTERNAL int sc_in_set(const sc_problem *p, sc_int k, double *l, double tol, int clip);
-/* The null space of the last face's G_FF that sc_min_norm_face found, kept for the next
- * choice on the same G (a contact-friction fixed point's inner solves share G, and nearly all
- * of their choices are on one face): the face's rows (face, nf of them; nf -1: nothing kept),
- * its nn orthonormal vectors (v, nf doubles each), room for cap rows (face: cap sc_ints, v:
- * cap^2 doubles). The holder sets nf to -1 wherever G changes. */
-typedef struct {
-  sc_int *face;
-  double *v;
-  sc_int nf, nn, cap;
-} sc_face_keep;
+/* sc_min_norm_face's null space and dual point kept for the next choice on the same G */
+typedef struct { sc_int *face; double *v, *mu; sc_int nf, nn, cap; int has_mu; } sc_face_keep;
 SC_INTERNAL int sc_min_norm_face(sc_problem *p, const double *Z, double *work, double eps,
                                  double loose, sc_face_keep *fkp);
 SC_INTERNAL void sc_on_boundary(const sc_problem *, sc_int, const double *u, double *l, double *T);

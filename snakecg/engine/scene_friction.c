@@ -213,12 +213,14 @@ int sc_friction_solve(sc_int n, sc_int m, sc_int nb, sc_int nc, const double *M,
                                                  2 * n * mt + 4 * mt * mt + 10 * mt + 4 * n +
                                                  SOL_MAX * n + 16));
   iw = (sc_int *)malloc(sizeof(sc_int) * (size_t)(3 * nbt + 3 * nt + 2 * mt + 8));
-  kp.Z = (double *)malloc(sizeof(double) * (size_t)(n * mt + 2 * mt * mt)); /* (Z, G, then
-    the minimum-norm choice's null space: nearly every inner solve's choice is on one face) */
+  kp.Z = (double *)malloc(sizeof(double) * (size_t)(n * mt + 2 * mt * mt + mt)); /* (Z, G,
+    then the minimum-norm choice's null space and dual point: nearly every inner solve's
+    choice is on one face) */
   kp.face.face = (sc_int *)malloc(sizeof(sc_int) * (size_t)mt);
   if (!d || !iw || !kp.Z || !kp.face.face) goto done;
   kp.G = kp.Z + n * mt;
-  kp.face.v = kp.G + mt * mt, kp.face.nf = -1, kp.face.cap = mt;
+  kp.face.v = kp.G + mt * mt, kp.face.mu = kp.face.v + mt * mt, kp.face.nf = -1;
+  kp.face.cap = mt, kp.face.has_mu = 0;
   mu = d, s = mu + nt, r0 = s + nt, rhs = r0 + nt, sv = rhs + nt, rb = sv + nt, dv = rb + nt;
   Dss = dv + nt, fr = Dss + nt * nt, L = fr + 3 * nbt;
   Z = L + n * n, G = Z + n * mt, b = G + mt * mt, g = b + mt, pl = g + n, pw = pl + mt;

@@ -231,7 +231,7 @@ static int rescue_face(sc_problem *p, const double *Z, const double *g, const do
     for (j = 0; j < nf; ++j) v[j] = j == rank + t ? 1.0 : 0.0;
     sc_qr_apply(nf, rank, C, nf, beta, v, 0);
   }
-  ans = sc_min_norm_basis(p, Z, nf, F, fk, V, nf - rank, rest, eps, 0.0, NULL);
+  ans = sc_min_norm_basis(p, Z, nf, F, fk, V, nf - rank, rest, eps, 0.0, NULL, NULL);
   sc_rescue_w(p, Z, g, c, rest);
   return ans;
 }

@@ -247,7 +247,10 @@ static void refine_null(const sc_problem *p, const double *Z, sc_int nf, const s
  * tau I, tau = |F| / scale, which adds tau W^-1 to C and divides delta by 1 + tau).
  * Returns 1 with the forces in lam (nf) once |F| is at rounding (1e-14 of the scale, or
  * MN_FLOOR where the steps stall or run out), 0 when not (a split ellipse with a half of no
- * extent, not projected here; or no progress).
+ * extent, not projected here; or no progress). fkp (or NULL): where it holds a dual point on
+ * this face, the Newton starts there (its part in V's complement) instead of at l0, the last
+ * choice's answer being near (a fixed point's next inner solve; 8.5 steps a choice on the
+ * 10-joint scene from l0); it keeps its own point where it succeeds.
  * Work: 2 nf^2 + 9 nf doubles. */
 /* min_norm_in_sets' Newton steps at most: damped, they may creep at first (on 10-joint
  * faces at ordinary configurations: 62 and 186 steps, then quadratic) */
@@ -257,7 +260,8 @@ static void refine_null(const sc_problem *p, const double *Z, sc_int nf, const s
  * projections of 30 rows); the choice's accelerations are then checked to 1e-13 as always */
 #define MN_FLOOR 1e-12
 static int min_norm_in_sets(const sc_problem *p, sc_int nf, const sc_int *fk, const double *l0,
-                            const double *V, sc_int nn, double *lam, double *work) {
+                            const double *V, sc_int nn, double *lam, double *work,
+                            sc_face_keep *fkp) {
   double *mu = work, *pi = mu + nf, *F = pi + nf, *del = F + nf, *tr = del + nf,
          *cap = tr + nf, *C = cap + 4 * nf, *VS = C + nf * nf, *x = VS + nf * nn, *y = x + nf,
          *sw = y + nf;
@@ -270,7 +274,17 @@ static int min_norm_in_sets(const sc_problem *p, sc_int nf, const sc_int *fk, co
   }
   for (i = 0; i < nf; ++i)
     if (fabs(l0[i]) > scale) scale = fabs(l0[i]);
-  memcpy(mu, l0, sizeof(double) * (size_t)nf);
+  if (fkp && fkp->has_mu) { /* from the last choice's point on this face: its part in V's
+    complement (the dual's domain) */
+    memcpy(mu, fkp->mu, sizeof(double) * (size_t)nf);
+    for (t = 0; t < nn; ++t) {
+      double c = 0.0;
+      for (i = 0; i < nf; ++i) c += V[t * nf + i] * mu[i];
+      for (i = 0; i < nf; ++i) mu[i] -= c * V[t * nf + i];
+    }
+  } else
+    memcpy(mu, l0, sizeof(double) * (size_t)nf);
+  if (fkp) fkp->has_mu = 0; /* (kept again where this choice succeeds) */
   for (it = 0;; ++it) {
     double fn = 0.0, slope = 0.0, st = 1.0;
     sc_int ls;
@@ -291,10 +305,14 @@ static int min_norm_in_sets(const sc_problem *p, sc_int nf, const sc_int *fk, co
       for (i = 0; i < nf; ++i) F[i] -= c * V[t * nf + i];
     }
     for (i = 0; i < nf; ++i) fn = fmax(fn, fabs(F[i]));
-    if (fn <= 1e-14 * scale) return memcpy(lam, pi, sizeof(double) * (size_t)nf), 1;
-    if ((fn > 0.999 * fprev && ++stalls > 20) || it == MN_ITERATIONS) /* (damped from the
-      first stall on) */
-      return fn <= MN_FLOOR * scale ? (memcpy(lam, pi, sizeof(double) * (size_t)nf), 1) : 0;
+    if (fn <= 1e-14 * scale ||
+        (((fn > 0.999 * fprev && ++stalls > 20) || it == MN_ITERATIONS) &&
+         fn <= MN_FLOOR * scale)) { /* (damped from the first stall on) */
+      memcpy(lam, pi, sizeof(double) * (size_t)nf);
+      if (fkp) memcpy(fkp->mu, mu, sizeof(double) * (size_t)nf), fkp->has_mu = 1;
+      return 1;
+    }
+    if (stalls > 20 || it == MN_ITERATIONS) return 0;
     { /* the capacitance's rows S: every row of a block outside its set */
       sc_int r = 0, b;
       const double tau = stalls > 0 ? fn / scale : 0.0;
@@ -367,9 +385,15 @@ static int min_norm_in_sets(const sc_problem *p, sc_int nf, const sc_int *fk, co
  * loose (0: none): where neither try keeps them within eps, a try that keeps them within
  * loose is taken, the first one's before the refined one's, returning 3 (the caller's
  * accelerations are then the new forces'). p->w is read (the face) and left as it was: the
- * caller takes w of the new forces where it reads it. fkp (or NULL): the null space kept from
- * the last choice on the same G, taken where the face is the same rows (the same bits as
- * found again: G_FF is), else found and kept there. */
+ * caller takes w of the new forces where it reads it.
+ * fkp (engine.h's sc_face_keep, or NULL): what the last choice on the same G kept (a
+ * contact-friction fixed point's inner solves share G, and nearly all of their choices are
+ * on one face): the face's rows (face, nf of them; nf -1: nothing kept), its null space (nn
+ * orthonormal vectors in v, nf doubles each: the same bits as found again, G_FF being the
+ * same), room for cap rows (face: cap sc_ints, v: cap^2 doubles), and where has_mu, the last
+ * choice's dual point on that face (mu, cap doubles: min_norm_in_sets' start). Taken where
+ * the face is the same rows, else found and kept there. The holder sets nf to -1 wherever G
+ * changes. */
 SC_INTERNAL int sc_min_norm_face(sc_problem *p, const double *Z, double *work, double eps,
                                  double loose, sc_face_keep *fkp) {
   const sc_int m = p->m;
@@ -387,15 +411,17 @@ SC_INTERNAL int sc_min_norm_face(sc_problem *p, const double *Z, double *work, d
     for (i = 0; i < nf; ++i) /* (the lower triangle: all that null_space reads) */
       for (j = 0; j <= i; ++j) A[i * nf + j] = p->G[F[i] * m + F[j]];
     nnull = null_space(nf, A, V, ev, perm);
-    if (fkp && nf <= fkp->cap) {
-      fkp->nf = nf, fkp->nn = nnull;
+    if (fkp && nf > fkp->cap) fkp = NULL; /* (no room: nothing kept) */
+    if (fkp) {
+      fkp->nf = nf, fkp->nn = nnull, fkp->has_mu = 0;
       memcpy(fkp->face, F, sizeof(sc_int) * (size_t)nf);
       memcpy(fkp->v, V, sizeof(double) * (size_t)(nnull * nf));
     }
   }
   if (nnull == 0) return 0;
   /* (A, G_FF's factor, is free by now: the loose try is kept there) */
-  return sc_min_norm_basis(p, Z, nf, F, fk, V, nnull, ev, eps, loose, loose > 0 ? A : NULL);
+  return sc_min_norm_basis(p, Z, nf, F, fk, V, nnull, ev, eps, loose, loose > 0 ? A : NULL,
+                           fkp);
 }
 
 /* The forces of sc_min_norm_basis's loose try where one was kept (returns 3), else 2. */
@@ -412,7 +438,7 @@ static int loose_try(sc_problem *p, sc_int nf, const sc_int *F, const double *ke
  * doubles for that try, NULL without). Work: 2 nf^2 + 12 nf + n^2 + 3 n doubles. */
 SC_INTERNAL int sc_min_norm_basis(sc_problem *p, const double *Z, sc_int nf, const sc_int *F,
                                   const sc_int *fk, double *V, sc_int nnull, double *work,
-                                  double eps, double loose, double *kept) {
+                                  double eps, double loose, double *kept, sc_face_keep *fkp) {
   const sc_int m = p->m;
   sc_int i, j, t, tnull = nnull - 1;
   double *l0 = work + 2 * nf;
@@ -432,7 +458,10 @@ SC_INTERNAL int sc_min_norm_basis(sc_problem *p, const double *Z, sc_int nf, con
       if (!sc_in_set(p, fk[i], l0 + i, 1e-13, 1)) inside = 0;
     if (!inside && (nnull > 1 || attempt == 1)) { /* the minimum inside the sets, by its
       dual's Newton */
-      if (!min_norm_in_sets(p, nf, fk, l0, V, nnull, l0, l0 + nf))
+      const int warm = fkp && fkp->has_mu; /* (from the kept point: where that fails, from
+        l0 again, as without it) */
+      if (!min_norm_in_sets(p, nf, fk, l0, V, nnull, l0, l0 + nf, fkp) &&
+          !(warm && min_norm_in_sets(p, nf, fk, l0, V, nnull, l0, l0 + nf, fkp)))
         return loose_try(p, nf, F, have ? kept : NULL);
     } else if (!inside) { /* one null direction: the forces' interval along it */
       double tstar = 0.0, lim[2];

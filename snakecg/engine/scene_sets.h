@@ -23,10 +23,11 @@ SC_INTERNAL void sc_read_states(sc_problem *p, double rel, double rel2, double w
 /* sc_min_norm_face's choice on the face's rows F (nf; fk: their blocks) with the caller's null
  * space V (nnull orthonormal vectors, V + t nf): scene_rescue.c's, from Z's QR. Returns 1 when
  * the minimum-norm forces were found, 2 when not, 3 when within loose only (kept: nf doubles
- * for that try, NULL: none). */
+ * for that try, NULL: none). fkp (or NULL): the dual point kept on this face, where V is the
+ * one kept with it, the Newton's start, and kept again where it succeeds. */
 SC_INTERNAL int sc_min_norm_basis(sc_problem *p, const double *Z, sc_int nf, const sc_int *F,
                                   const sc_int *fk, double *V, sc_int nnull, double *work,
-                                  double eps, double loose, double *kept);
+                                  double eps, double loose, double *kept, sc_face_keep *fkp);
 
 /* (inline: called per block in the solve's checks and the primal's face, a few tens of times a
  * solve) P of a 2-D block at lam (diag, 2 entries): the set is lam^T P lam <= 1 */
