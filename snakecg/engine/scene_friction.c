@@ -185,8 +185,9 @@ int sc_friction_solve(sc_int n, sc_int m, sc_int nb, sc_int nc, const double *M,
   sc_enum e;
   sc_fr_prob pr;
   sc_solve_keep kp = {0};
-  int code = 0, ok = 0, same, stall = 0, newton = 0, restarts = 0, cands = 0;
+  int code = 0, ok = 0, same, stall = 0, newton = 0, restarts = 0, cands = 0, taken = 0;
   double omega = 1.0, best = INFINITY; /* the passes' relaxation (halved where they stall) */
+  double r2k = 0.0, Fk = 0.0; /* (the line search's last inner solve's, where taken) */
   *solutions = 0.0;
   if (!T) /* no contact friction in the scene: the convex solve alone */
     return SNAKECG_EXPORT(core_scene_solve_s)(n, m, nb, M, f, A, c, kind, start, par, sweeps,
@@ -248,12 +249,21 @@ int sc_friction_solve(sc_int n, sc_int m, sc_int nb, sc_int nc, const double *M,
 passes:
   for (; it < 4 * FP_MAX; ++it) {
     double F = 0.0, err = 0.0, r2 = 0.0, r2t = 0.0, Ft = 0.0, t = 1.0;
-    if (it == FP_QUICK && !cands) break; /* not settled yet: a few candidates (below) */
+    if (it == FP_QUICK && !cands) { /* not settled yet: a few candidates (below) */
+      taken = 0;
+      break;
+    }
     if (it && it % FP_MAX == 0) /* then again from s = 10, 1, 0.1 mu |lam| */
-      for (j = 0, ++restarts, newton = stall = 0, omega = 1.0, best = INFINITY; j < nt; ++j)
+      for (j = 0, ++restarts, newton = stall = taken = 0, omega = 1.0, best = INFINITY; j < nt;
+           ++j)
         s[j] = 10.0 * pow(0.1, (double)(restarts - 1)) * mu[j] * sc_max_abs(lam, mt);
-    code = inner(&pr, s, it ? fr : NULL, lam, a, w, st, info, r0, &r2, &F);
-    if (code) break;
+    if (taken) { /* the line search's last inner solve: at this s, from these pieces */
+      memcpy(lam, pl, sizeof(double) * (size_t)mt), memcpy(w, pw, sizeof(double) * (size_t)mt);
+      memcpy(a, pa, sizeof(double) * (size_t)n), memcpy(st, pst, sizeof(double) * (size_t)nbt);
+      memcpy(info, pinfo, sizeof(double) * 8), memcpy(r0, rb, sizeof(double) * (size_t)nt);
+      r2 = r2k, F = Fk, taken = 0;
+    } else if ((code = inner(&pr, s, it ? fr : NULL, lam, a, w, st, info, r0, &r2, &F)))
+      break;
     for (j = 0; j < nt; ++j) err = fmax(err, fabs(r0[j] - s[j]));
     if (err <= FP_TOL * F) {
       ok = 1;
@@ -299,8 +309,10 @@ passes:
           r2t <= (1.0 - 1e-4 * t) * r2)
         break;
     }
-    if (i < 30) memcpy(s, sv, sizeof(double) * (size_t)nt);
-    else
+    if (i < 30) { /* (its inner solve is the next pass's) */
+      memcpy(s, sv, sizeof(double) * (size_t)nt);
+      r2k = r2t, Fk = Ft, taken = 1;
+    } else
       for (j = 0; j < nt; ++j) s[j] += omega * (r0[j] - s[j]);
   }
   if (code == -1) goto done;
