@@ -517,7 +517,7 @@ typedef struct {
   const double *par; /* nb x 3 */
   double *G, *b, *lam, *w, *gamma;
   sc_int *state;
-  double fscale, wscale;
+  double fscale, wscale; struct sc_piece_keep *pk; /* (pk: scene_piece.c's kept, or NULL) */
 } sc_problem;
 static inline sc_int sc_block_size(sc_int kind) { return kind >= K_DISC ? 2 : 1; }
 enum { S_HELD = 0, S_ZERO = 1, S_SLIDE = 2 }; /* a block's state */

@@ -218,7 +218,8 @@ int sc_friction_solve(sc_int n, sc_int m, sc_int nb, sc_int nc, const double *M,
     then the minimum-norm choice's null space and dual point: nearly every inner solve's
     choice is on one face) */
   kp.face.face = (sc_int *)malloc(sizeof(sc_int) * (size_t)mt);
-  if (!d || !iw || !kp.Z || !kp.face.face) goto done;
+  kp.pieces = sc_piece_keep_new(mt, nbt); /* (and the last pieces' factors) */
+  if (!d || !iw || !kp.Z || !kp.face.face || !kp.pieces) goto done;
   kp.G = kp.Z + n * mt;
   kp.face.v = kp.G + mt * mt, kp.face.mu = kp.face.v + mt * mt, kp.face.nf = -1;
   kp.face.cap = mt, kp.face.has_mu = 0;
@@ -391,5 +392,6 @@ done:
   free(iw);
   free(kp.Z);
   free(kp.face.face);
-  return d && iw && kp.Z && kp.face.face ? code : -1;
+  free(kp.pieces);
+  return d && iw && kp.Z && kp.face.face && kp.pieces ? code : -1;
 }

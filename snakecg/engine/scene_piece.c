@@ -19,13 +19,18 @@
  * step, the step halved until the reduced dual does not rise. Where rows nearly dependent
  * leave a residual that does not fall, they are kept (pivots down to 1e-15) and the piece
  * solved again. An active-set pass may stop the Newton early where a block certainly breaks
- * the KKT conditions (sc_polish). */
+ * the KKT conditions (sc_polish). Where the solve keeps them (sc_piece_keep: a
+ * contact-friction fixed point's inner solves, on one G), the factor, G_HS, D^-1 Y and S of
+ * the last PIECE_KEEP pieces are taken again where the same piece comes back (the held rows'
+ * right-hand side then by sc_psd_resolve: sc_psd_solve's operations, the same bits). */
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "snakecg_layout.h"
 #include "engine.h"
 #include "scene_sets.h"
+#include "scene_solve.h"
 
 /* held rows dependent where a pivot of their equations falls below this ratio to the first
  * (snakecg.solver.PIVOT_TOL): nearly dependent rows are statically indeterminate to double
@@ -181,6 +186,61 @@ static int breaches(const sc_problem *p, sc_int h, sc_int rank, sc_int n2, const
   return stop;
 }
 
+/* The last PIECE_KEEP pieces' factors on one G (scene_solve.h): per piece, its key (the held
+ * rows hr, h of them, in block order; the sliding 2-D blocks sl, ns; the pivot tolerance rc;
+ * h -1: empty) and G_HH's factor (fac, h x h) with its pivots (ph) and rank, G_HS (U, h x
+ * 2 ns), D^-1 Y (W, rank x 2 ns) and S (2 ns x 2 ns, mirrored). About half of a fixed
+ * point's pieces are the last one's, two thirds one of the last four (10-joint scene). */
+#define PIECE_KEEP 4
+struct sc_piece_keep {
+  sc_int next; /* (the entry replaced next) */
+  struct {
+    sc_int h, ns, rank, *hr, *sl, *ph;
+    double rc, *fac, *U, *W, *S;
+  } e[PIECE_KEEP];
+};
+
+/* Room for pieces of m rows and nb blocks (h + 2 ns <= m: h x 2 ns <= m^2 / 4), nothing kept;
+ * one block (free()). NULL: out of memory. */
+SC_INTERNAL sc_piece_keep *sc_piece_keep_new(sc_int m, sc_int nb) {
+  const size_t q = (size_t)(m * m / 4 + m), nd = (size_t)(2 * m * m) + 2 * q,
+               ni = (size_t)(2 * m + nb);
+  sc_piece_keep *pk = (sc_piece_keep *)malloc(sizeof(sc_piece_keep) +
+                                              PIECE_KEEP * (nd * sizeof(double) +
+                                                            ni * sizeof(sc_int)));
+  double *d;
+  sc_int *iw, k;
+  if (!pk) return NULL;
+  d = (double *)(pk + 1);
+  iw = (sc_int *)(d + PIECE_KEEP * nd);
+  for (k = 0; k < PIECE_KEEP; ++k, d += nd, iw += ni) {
+    pk->e[k].fac = d, pk->e[k].S = d + m * m, pk->e[k].U = d + 2 * m * m;
+    pk->e[k].W = pk->e[k].U + q;
+    pk->e[k].hr = iw, pk->e[k].ph = iw + m, pk->e[k].sl = iw + 2 * m;
+  }
+  sc_piece_forget(pk);
+  return pk;
+}
+
+/* Nothing kept (G changed). */
+SC_INTERNAL void sc_piece_forget(sc_piece_keep *pk) {
+  sc_int k;
+  for (k = 0; k < PIECE_KEEP; ++k) pk->e[k].h = -1;
+  pk->next = 0;
+}
+
+/* The kept entry of the piece (hr, h; sl, ns; rc), -1: none. */
+static sc_int piece_kept(const sc_piece_keep *pk, sc_int h, const sc_int *hr, sc_int ns,
+                         const sc_int *sl, double rc) {
+  sc_int k;
+  for (k = 0; k < PIECE_KEEP; ++k)
+    if (pk->e[k].h == h && pk->e[k].ns == ns && pk->e[k].rc == rc &&
+        !memcmp(pk->e[k].hr, hr, sizeof(sc_int) * (size_t)h) &&
+        !memcmp(pk->e[k].sl, sl, sizeof(sc_int) * (size_t)ns))
+      return k;
+  return -1;
+}
+
 /* The angles' Newton matrix J (ns x ns, its lower triangle by rows) = L D L^T without
  * pivoting (linalg.h's sc_ldl_factor: one division per pivot, none in the solve; L in Jc, d and
  * 1/d in dd) where every pivot is above ANGLE_TOL of J's largest diagonal entry: 1, else 0
@@ -202,6 +262,72 @@ static int angles_ldl(sc_int ns, double *J, double *Jc, double *dd, double *work
   return 1;
 }
 
+/* The piece's held rows hr (h) and sliding rows sr (n2) reduced: G_HH's factor (fac, h x h;
+ * pivots ph, those above rc of the first kept: returns their number, the rank) with the held
+ * rows' basic solution d0 of G_HH d0 = sc (sc: h, overwritten; sc2: h scratch), G_HS (U, h x n2),
+ * D^-1 Y (W, rank x n2; X: Y, the same size) and S (n2 x n2). */
+static sc_int reduce(const double *G, sc_int m, sc_int h, const sc_int *hr, sc_int n2,
+                     const sc_int *sr, double rc, double *fac, double *sc, double *d0,
+                     double *sc2, sc_int *ph, double *U, double *X, double *W, double *S) {
+  sc_int i, k, t, a, c, rank = 0;
+  if (h > 0) {
+    for (i = 0; i < h; ++i)
+      for (t = 0; t <= i; ++t) fac[i * h + t] = G[hr[i] * m + hr[t]];
+    rank = sc_psd_solve(h, fac, h, sc, rc, d0, sc2, ph);
+  }
+  /* S = G_SS - G_SH G_HH^+ G_HS = G_SS - Y^T D^-1 Y with Y = L^-1 (P^T G_HS) on the kept rows
+   * (G_HH = P L D L^T P^T), its upper triangle then mirrored: exactly symmetric */
+  for (i = 0; i < h && n2 > 0; ++i) { /* G_HS gathered once (hr's order; G symmetric) */
+    const double *gi = G + hr[i] * m;
+    double *restrict ui = U + i * n2;
+    for (c = 0; c < n2; c += 2) memcpy(ui + c, gi + sr[c], 2 * sizeof(double)); /* (a pair) */
+  }
+  for (i = 0; i < rank && n2 > 0; ++i) {
+    double *restrict yi = X + i * n2, *restrict vi = W + i * n2;
+    memcpy(yi, U + ph[i] * n2, sizeof(double) * (size_t)n2);
+    for (k = 0; k + 3 < i; k += 4) { /* (four rows at a time) */
+      const double *li = fac + i * h + k, *restrict y0 = X + k * n2, *restrict y1 = y0 + n2,
+                   *restrict y2 = y1 + n2, *restrict y3 = y2 + n2;
+      pairs4(yi, y0, y1, y2, y3, li[0], li[1], li[2], li[3], 0, n2, -1);
+    }
+    for (; k < i; ++k) pairs1(yi, X + k * n2, fac[i * h + k], 0, n2, -1);
+    { /* (one division) */
+      const double r = 1.0 / fac[i * h + i];
+#if defined(__GNUC__)
+      for (c = 0; c < n2; c += 2) SC_P2(vi + c) = SC_P2C(yi + c) * r;
+#else
+      for (c = 0; c < n2; ++c) vi[c] = yi[c] * r;
+#endif
+    }
+  }
+  for (a = 0; a < n2; ++a) {
+    const double *ga = G + sr[a] * m;
+    double *restrict sa = S + a * n2;
+    for (c = a & ~(sc_int)1; c < n2; c += 2) /* (from a's pair: the lower entry, mirrored
+      over below, updated alike) */
+      memcpy(sa + c, ga + sr[c], 2 * sizeof(double));
+  }
+  for (a = 0; a < n2; ++a) {
+    double *restrict sa = S + a * n2;
+    for (i = 0; i + 3 < rank; i += 4) { /* (four rows of Y at a time) */
+      const double *y = X + i * n2 + a, *restrict v0 = W + i * n2, *restrict v1 = v0 + n2,
+                   *restrict v2 = v1 + n2, *restrict v3 = v2 + n2;
+      const double y0 = y[0], y1 = y[n2], y2 = y[2 * n2], y3 = y[3 * n2];
+      pairs4(sa, v0, v1, v2, v3, y0, y1, y2, y3, a & ~(sc_int)1, n2, -1);
+    }
+    for (; i < rank; ++i) pairs1(sa, W + i * n2, X[i * n2 + a], a & ~(sc_int)1, n2, -1);
+  }
+  for (a = 0; a < n2; a += 2) { /* (by 2 x 2 blocks) */
+    double *restrict r0 = S + a * n2, *restrict r1 = r0 + n2;
+    for (c = 0; c < a; c += 2) {
+      const double *q0 = S + c * n2 + a, *q1 = q0 + n2;
+      r0[c] = q0[0], r0[c + 1] = q1[0], r1[c] = q0[1], r1[c + 1] = q1[1];
+    }
+    r1[a] = r0[a + 1];
+  }
+  return rank;
+}
+
 /* The piece's equations from the current lam (pivots above rc kept); fn_out: their largest
  * residual after (held rows: |w|, sliding blocks: |T . w| / |T|), fk_out: the same without
  * the held rows dropped as dependent. Returns the rank defect of the held rows' and the
@@ -213,7 +339,9 @@ static sc_int piece(sc_problem *p, double rc, double *work, sc_int *iwork, doubl
   sc_int *hr = iwork, *sl = hr + m, *ph = sl + nb, *pj = ph + m, *sr = pj + nb;
   sc_int h = 0, ns = 0, n2, k, i, s, t, a, c, it, rank = 0, rj = 0;
   double *X, *S, *J, *d0, *sc, *sc2, *th, *th0, *T, *F, *dx, *l0, *D, *wt, *ws, *W, *Jc, *bp,
-         *pl, *pD, *pws, *rad, *U, fn = 0.0, v = 0.0, fprev = INFINITY;
+         *pl, *pD, *pws, *rad, *U, *fac = work, fn = 0.0, v = 0.0, fprev = INFINITY;
+  sc_piece_keep *pk = p->pk;
+  sc_int kk = -1;
   int full = 0, known = 0, stop = 0;
   for (k = 0; k < nb; ++k) {
     sc_int r = p->start[k], nk = sc_block_size(p->kind[k]);
@@ -275,67 +403,28 @@ static sc_int piece(sc_problem *p, double rc, double *work, sc_int *iwork, doubl
   }
   for (c = 0; c < n2; ++c) sr[c] = p->start[sl[c / 2]] + c % 2;
   if (!kept) sc_update_w(p);
-  if (h > 0) {
-    for (i = 0; i < h; ++i) {
-      for (t = 0; t <= i; ++t) work[i * h + t] = G[hr[i] * m + hr[t]];
-      sc[i] = -p->w[hr[i]];
+  for (i = 0; i < h; ++i) sc[i] = -p->w[hr[i]]; /* (the held rows' right-hand side) */
+  if (pk && (kk = piece_kept(pk, h, hr, ns, sl, rc)) >= 0) { /* (kept: its factors) */
+    fac = pk->e[kk].fac, U = pk->e[kk].U, W = pk->e[kk].W, S = pk->e[kk].S;
+    ph = pk->e[kk].ph, rank = pk->e[kk].rank;
+    if (h > 0) sc_psd_resolve(h, fac, h, rank, ph, 1, sc, d0, sc2);
+  } else {
+    if (pk) { /* (built in the entry replaced next, its key set once built) */
+      kk = pk->next, pk->next = (pk->next + 1) % PIECE_KEEP, pk->e[kk].h = -1;
+      fac = pk->e[kk].fac, U = pk->e[kk].U, W = pk->e[kk].W, S = pk->e[kk].S;
     }
-    rank = sc_psd_solve(h, work, h, sc, rc, d0, sc2, ph);
-  }
-  /* S = G_SS - G_SH G_HH^+ G_HS = G_SS - Y^T D^-1 Y with Y = L^-1 (P^T G_HS) on the kept rows
-   * (G_HH = P L D L^T P^T), its upper triangle then mirrored: exactly symmetric */
-  for (i = 0; i < h && n2 > 0; ++i) { /* G_HS gathered once (hr's order; G symmetric) */
-    const double *gi = G + hr[i] * m;
-    double *restrict ui = U + i * n2;
-    for (c = 0; c < n2; c += 2) memcpy(ui + c, gi + sr[c], 2 * sizeof(double)); /* (a pair) */
-  }
-  for (i = 0; i < rank && n2 > 0; ++i) {
-    double *restrict yi = X + i * n2, *restrict vi = W + i * n2;
-    memcpy(yi, U + ph[i] * n2, sizeof(double) * (size_t)n2);
-    for (k = 0; k + 3 < i; k += 4) { /* (four rows at a time) */
-      const double *li = work + i * h + k, *restrict y0 = X + k * n2, *restrict y1 = y0 + n2,
-                   *restrict y2 = y1 + n2, *restrict y3 = y2 + n2;
-      pairs4(yi, y0, y1, y2, y3, li[0], li[1], li[2], li[3], 0, n2, -1);
-    }
-    for (; k < i; ++k) pairs1(yi, X + k * n2, work[i * h + k], 0, n2, -1);
-    { /* (one division) */
-      const double r = 1.0 / work[i * h + i];
-#if defined(__GNUC__)
-      for (c = 0; c < n2; c += 2) SC_P2(vi + c) = SC_P2C(yi + c) * r;
-#else
-      for (c = 0; c < n2; ++c) vi[c] = yi[c] * r;
-#endif
+    rank = reduce(G, m, h, hr, n2, sr, rc, fac, sc, d0, sc2, ph, U, X, W, S);
+    if (pk) {
+      pk->e[kk].h = h, pk->e[kk].ns = ns, pk->e[kk].rank = rank, pk->e[kk].rc = rc;
+      memcpy(pk->e[kk].hr, hr, sizeof(sc_int) * (size_t)h);
+      memcpy(pk->e[kk].sl, sl, sizeof(sc_int) * (size_t)ns);
+      memcpy(pk->e[kk].ph, ph, sizeof(sc_int) * (size_t)h);
     }
   }
-  for (a = 0; a < n2; ++a) {
-    const double *ga = G + sr[a] * m;
-    double *restrict sa = S + a * n2;
-    wt[a] = p->w[sr[a]]; /* wt = w_S + G_SH d0 (below) */
-    for (c = a & ~(sc_int)1; c < n2; c += 2) /* (from a's pair: the lower entry, mirrored
-      over below, updated alike) */
-      memcpy(sa + c, ga + sr[c], 2 * sizeof(double));
-  }
+  for (a = 0; a < n2; ++a) wt[a] = p->w[sr[a]]; /* wt = w_S + G_SH d0 */
   for (i = 0; i < h && n2 > 0; ++i) /* (each wt[a]'s terms in hr's order, as one sum) */
     pairs1(wt, U + i * n2, d0[i], 0, n2, 1);
   memcpy(ws, wt, sizeof(double) * (size_t)n2); /* (the reduced dual's gradient at D = 0) */
-  for (a = 0; a < n2; ++a) {
-    double *restrict sa = S + a * n2;
-    for (i = 0; i + 3 < rank; i += 4) { /* (four rows of Y at a time) */
-      const double *y = X + i * n2 + a, *restrict v0 = W + i * n2, *restrict v1 = v0 + n2,
-                   *restrict v2 = v1 + n2, *restrict v3 = v2 + n2;
-      const double y0 = y[0], y1 = y[n2], y2 = y[2 * n2], y3 = y[3 * n2];
-      pairs4(sa, v0, v1, v2, v3, y0, y1, y2, y3, a & ~(sc_int)1, n2, -1);
-    }
-    for (; i < rank; ++i) pairs1(sa, W + i * n2, X[i * n2 + a], a & ~(sc_int)1, n2, -1);
-  }
-  for (a = 0; a < n2; a += 2) { /* (by 2 x 2 blocks) */
-    double *restrict r0 = S + a * n2, *restrict r1 = r0 + n2;
-    for (c = 0; c < a; c += 2) {
-      const double *q0 = S + c * n2 + a, *q1 = q0 + n2;
-      r0[c] = q0[0], r0[c + 1] = q1[0], r1[c] = q0[1], r1[c + 1] = q1[1];
-    }
-    r1[a] = r0[a + 1];
-  }
   for (it = 0; it < 40 && ns > 0; ++it) { /* Newton on the angles */
     double v0 = v, tstep = 1.0, step = 0.0; /* (at it 0: D = 0, ws = wt, v = 0) */
     sc_int ls;
@@ -354,9 +443,9 @@ static sc_int piece(sc_problem *p, double rc, double *work, sc_int *iwork, doubl
         memcpy(pws, ws, sizeof(double) * (size_t)n2);
         known = 2;
       } else {
-        if (known == 2) breaches(p, h, rank, n2, work, ph, hr, W, d0, pD, pws, sc2, pl, bp, 0);
+        if (known == 2) breaches(p, h, rank, n2, fac, ph, hr, W, d0, pD, pws, sc2, pl, bp, 0);
         memcpy(sc, p->lam, sizeof(double) * (size_t)m);
-        stop = breaches(p, h, rank, n2, work, ph, hr, W, d0, D, ws, sc2, sc, bp, 1);
+        stop = breaches(p, h, rank, n2, fac, ph, hr, W, d0, D, ws, sc2, sc, bp, 1);
         known = 1;
       }
       if (stop) break;
@@ -419,7 +508,7 @@ static sc_int piece(sc_problem *p, double rc, double *work, sc_int *iwork, doubl
   if (stop) /* (the held forces at this iterate: the early rule's, in sc) */
     for (i = 0; i < h; ++i) p->lam[hr[i]] = sc[hr[i]];
   else if (h > 0)
-    held_forces(h, rank, n2, work, ph, hr, W, d0, D, sc2, p->lam);
+    held_forces(h, rank, n2, fac, ph, hr, W, d0, D, sc2, p->lam);
   sc_update_w(p);
   fn = 0.0;
   for (i = 0; i < rank; ++i) fn = sc_max(fn, fabs(p->w[hr[ph[i]]])); /* (the kept rows) */

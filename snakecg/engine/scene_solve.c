@@ -269,6 +269,7 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
   }
   if (kp) Z = kp->Z, G = kp->G; /* (a batch's samples at one configuration: held) */
   if (kp && kp->face.face) fkp = &kp->face;
+  p.pk = kp ? kp->pieces : NULL;
   if (!kp || kp->ok < 1) sc_scene_z(n, m, t, L, A, Z); /* Z = L^-1 A^T (scene_small.c) */
   if (kp && kp->ok < 1) kp->ok = 1;
   near.lam = rest + rest_size(n, m, nb), near.state = near.lam + m, near.res = INFINITY;
@@ -278,7 +279,8 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
     where its n unknowns are fewer than the dual's m */
     ok = primal = primal_start(&p, Z, a, c, from, keep, rest, iw2, res, &defect, &dep);
   if (primal) { passes = 1; goto answered; }
-  if (fkp && kp->ok != 2) fkp->nf = -1; /* (G found again: the null space kept goes) */
+  if (fkp && kp->ok != 2) fkp->nf = -1; /* (G found again: the null space and the pieces */
+  if (p.pk && kp->ok != 2) sc_piece_forget(p.pk); /* kept go) */
   sc_scene_gram(n, m, Z, a, c, kp && kp->ok == 2 ? NULL : G, b, zero); /* G = Z^T Z, b =
     Z^T g + c (G held: b alone) */
   if (kp) kp->ok = 2;

@@ -74,6 +74,6 @@ SC_INTERNAL int sc_scene_work_alloc(sc_scene_work *sw, const double *pk, sc_int 
   sw->placed = 0, sw->pnb = -1, sw->gnc = -1, sw->ftol = NAN; /* (nothing placed or kept) */
   sw->qnc = -1, sw->qbuf = sw->qown = 0, sw->sk.ok = 0;
   sw->sk.face.face = 0, sw->sk.face.v = sw->sk.face.mu = 0; /* (no null space kept) */
-  sw->sk.face.nf = -1, sw->sk.face.has_mu = 0;
+  sw->sk.face.nf = -1, sw->sk.face.has_mu = 0, sw->sk.pieces = 0;
   return 0;
 }
