@@ -255,10 +255,13 @@ static void refine_null(const sc_problem *p, const double *Z, sc_int nf, const s
 /* min_norm_in_sets' Newton steps at most: damped, they may creep at first (on 10-joint
  * faces at ordinary configurations: 62 and 186 steps, then quadratic) */
 #define MN_ITERATIONS 200
-/* |F| taken as rounding where the Newton stalls or runs out of steps (1e-14 of the scale
- * otherwise): its floor was 3e-14 to 4.4e-13 of the scale on such faces (F is up to 15
- * projections of 30 rows); the choice's accelerations are then checked to 1e-13 as always */
-#define MN_FLOOR 1e-12
+/* |F| taken as found where the Newton stalls or runs out of steps (1e-14 of the scale
+ * otherwise): its floor was 3e-14 to 4.4e-13 of the scale on convex 10-joint faces (F is up
+ * to 15 projections of 30 rows), up to 2.8e-12 on contact friction's inner faces (a third
+ * of the 6- and 10-joint families' samples that kept a basic solution at 1e-12); the
+ * choice's accelerations are then checked to 1e-13 as always, or taken from the new forces
+ * where they move by 5e-10 at most and the KKT conditions hold (sc_min_norm_face's loose) */
+#define MN_FLOOR 1e-11
 static int min_norm_in_sets(const sc_problem *p, sc_int nf, const sc_int *fk, const double *l0,
                             const double *V, sc_int nn, double *lam, double *work,
                             sc_face_keep *fkp) {
