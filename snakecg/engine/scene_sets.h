@@ -67,7 +67,7 @@ static inline int sc_still(const sc_problem *p, sc_int k) {
 static inline sc_int sc_face_rows(const sc_problem *p, sc_int *F, sc_int *fk) {
   sc_int k, i, nf = 0;
   for (k = 0; k < p->nb; ++k) {
-    if (p->state[k] != S_HELD && !sc_still(p, k)) continue;
+    if ((p->state[k] != S_HELD && !sc_still(p, k)) || sc_zero_set(p, k)) continue;
     for (i = 0; i < sc_block_size(p->kind[k]) && nf < 512; ++i) {
       fk[nf] = k;
       F[nf++] = p->start[k] + i;
