@@ -62,8 +62,9 @@ static inline int sc_still(const sc_problem *p, sc_int k) {
   return 1;
 }
 
-/* The face's rows (every block held or whose rows do not accelerate) in F, their blocks in fk
- * (at most 512); returns their number. */
+/* The face's rows (every block held or whose rows do not accelerate, but those whose set is
+ * a single point: their forces are zero whatever the others') in F, their blocks in fk (at
+ * most 512); returns their number. */
 static inline sc_int sc_face_rows(const sc_problem *p, sc_int *F, sc_int *fk) {
   sc_int k, i, nf = 0;
   for (k = 0; k < p->nb; ++k) {
