@@ -25,7 +25,9 @@
  *      candidates, more;
  *   4. Coulomb's residuals apart from the final accelerations (w = A a + c: the normal
  *      complementarity, the cone, stick, slip against the sliding) into the certificate; not
- *      settled, or above TOL_ACCEPT: not solved (FR_NOT_SETTLED, NaN);
+ *      settled, or above TOL_ACCEPT: not solved (FR_NOT_SETTLED, NaN); solved with the
+ *      last exact solve's rows independent, Coulomb's own piece checked (coulomb_defect):
+ *      where it leaves the forces a family, the dependent flag 2;
  *   5. the candidates (scene_friction_states.c): the frictional contacts' states (open,
  *      stick, slip either way) fixed, each candidate's equations solved exactly (a slipping
  *      contact's normal force the unknown, its friction tied to it), accepted only where 4.'s
@@ -138,6 +140,88 @@ static double bound_of(sc_int j, sc_int nt, sc_int m, const sc_int *lead, const 
     if (lead[k] == g) N += lam[rn[k]], T += fabs(lam[m + k]), ++count;
   if (count == 1) return mu[j] * lam[rn[j]];
   return mu[j] * N * (T > 0 ? fabs(lam[m + j]) / T : 1.0 / (double)count);
+}
+
+/* Whether Coulomb's piece leaves the forces free at a solution (lam, w): the forces that may
+ * move while every acceleration stays, as scene_sets.h's face rows for the convex sets. A
+ * block held or still (its rows' w zero within TOL_ACCEPT of W) and of a set larger than {0}:
+ * its rows; a frictional contact closed or still: its normal row, with its tangent row beside
+ * it where it sticks (w_t zero: its friction may move inside the cone, at its edge too) or
+ * tied to it (lam_t = -+ mu lam_n, the direction fixed by the slip) where it slips. These
+ * unknowns' directions D (rows of A, tied pairs summed) are dependent where D M^-1 D^T, their
+ * Gram in G, is singular (pivots at most DEP_TOL of the first, as the convex pieces'). A
+ * one-dimensional family (null direction v) may still be pinned where the forces are: it
+ * moves only where v or -v keeps the sets' active bounds (within TOL_ACCEPT of F: a normal
+ * force at 0, a wheel's at its bound, a friction at its cone's edge; a disc or ellipse
+ * counts as free). Returns the rank defect where the forces may move, 0 where they are
+ * unique, -1 out of memory. */
+enum { U_FREE = 0, U_NORMAL, U_BOUND, U_CONE }; /* an unknown's set */
+static sc_int coulomb_defect(sc_int mt, sc_int nb, sc_int nt, sc_int m, const sc_int *kind,
+                             const sc_int *start, const double *par, const sc_int *rn,
+                             const double *mu, const double *G, const double *lam,
+                             const double *w, const double *st, double F, double W) {
+  sc_int k, i, j, u = 0, rank, def, *r1, *r2, *typ, *nrm;
+  double *P, *Q, *cf, *x, *v, *bd;
+  const double tol = TOL_ACCEPT * W, tf = TOL_ACCEPT * F;
+  P = (double *)malloc(sizeof(double) * (size_t)(3 * mt * mt + 5 * mt));
+  r1 = (sc_int *)malloc(sizeof(sc_int) * (size_t)(4 * mt));
+  if (!P || !r1) {
+    free(P), free(r1);
+    return -1;
+  }
+  Q = P + mt * mt, v = Q + mt * mt, cf = v + mt * mt, x = cf + mt, bd = cf + 4 * mt;
+  r2 = r1 + mt, typ = r2 + mt, nrm = typ + mt;
+  for (k = 0; k < nb; ++k) {
+    const sc_int r = start[k], nk = sc_block_size(kind[k]);
+    int still = 1, free_set = kind[k] == K_FREE || kind[k] == K_UNILATERAL ||
+                               (kind[k] == K_SPLIT ? par[3 * k + 2] > 0 && (par[3 * k] > 0 ||
+                                par[3 * k + 1] > 0) : par[3 * k] > 0);
+    for (i = 0; i < nk; ++i) still &= fabs(w[r + i]) <= tol;
+    if (!free_set || !(st[k] == S_HELD || still)) continue;
+    for (i = 0; i < nk; ++i, ++u) {
+      r1[u] = r + i, r2[u] = -1, cf[u] = 0.0, bd[u] = par[3 * k];
+      typ[u] = kind[k] == K_UNILATERAL ? U_NORMAL : kind[k] == K_BOX ? U_BOUND : U_FREE;
+    }
+    if (k >= nt || !(mu[k] > 0) || r != rn[k]) continue; /* (a contact's normal row) */
+    if (fabs(w[m + k]) <= tol) { /* sticks */
+      r1[u] = m + k, r2[u] = -1, cf[u] = 0.0, typ[u] = U_CONE, nrm[u] = u - 1, bd[u] = mu[k];
+      ++u;
+    } else /* slips */
+      r2[u - 1] = m + k, cf[u - 1] = lam[m + k] > 0 ? mu[k] : -mu[k];
+  }
+  for (i = 0; i < u; ++i) /* the Gram matrix of the directions A_r1 + cf A_r2 */
+    for (j = 0; j <= i; ++j) {
+      double t = G[r1[i] * mt + r1[j]];
+      if (r2[j] >= 0) t += cf[j] * G[r1[i] * mt + r2[j]];
+      if (r2[i] >= 0) t += cf[i] * G[r2[i] * mt + r1[j]];
+      if (r2[i] >= 0 && r2[j] >= 0) t += cf[i] * cf[j] * G[r2[i] * mt + r2[j]];
+      P[i * u + j] = P[j * u + i] = Q[i * u + j] = Q[j * u + i] = t;
+    }
+  for (i = 0; i < u; ++i) x[i] = 0.0; /* (a right-hand side: only the rank is read) */
+  rank = u > 0 ? sc_psd_solve(u, P, u, x, DEP_TOL, cf + 2 * mt, cf + 3 * mt, r2) : 0;
+  def = u - rank;
+  if (def == 1) { /* the null direction (Q's least eigenvalue's vector), pinned or not */
+    int ok[2] = {1, 1};
+    sc_int side;
+    sc_eigen_symmetric(u, Q, u, x, v, u);
+    for (i = 0; i < u; ++i) {
+      const double l = lam[r1[i]], d = v[i * u];
+      for (side = 0; side < 2; ++side) {
+        const double e = side ? -d : d;
+        if (typ[i] == U_NORMAL && l <= tf && e < -TOL_ACCEPT) ok[side] = 0;
+        if (typ[i] == U_BOUND && fabs(l) >= bd[i] - tf && (l > 0 ? e : -e) > TOL_ACCEPT)
+          ok[side] = 0;
+        if (typ[i] == U_CONE) { /* lam_t -+ mu lam_n <= 0 where at the edge */
+          const double ln = lam[r1[nrm[i]]], en = side ? -v[nrm[i] * u] : v[nrm[i] * u];
+          if (l >= bd[i] * ln - tf && e - bd[i] * en > TOL_ACCEPT) ok[side] = 0;
+          if (-l >= bd[i] * ln - tf && -e - bd[i] * en > TOL_ACCEPT) ok[side] = 0;
+        }
+      }
+    }
+    if (!ok[0] && !ok[1]) def = 0;
+  }
+  free(P), free(r1);
+  return def;
 }
 
 /* The pieces of the last inner solve as the next one's start (core_scene_solve_s's `from`). */
@@ -374,6 +458,17 @@ passes:
     sc_coulomb_residuals(m, nt, rn, lead, mu, lam, w, scale, res);
     info[2] = res[0], info[3] = res[1], info[4] = res[2];
     ok = res[0] <= TOL_ACCEPT && res[1] <= TOL_ACCEPT && res[2] <= TOL_ACCEPT;
+    if (ok && info[1] == 0.0) { /* the solve's rows independent: Coulomb's piece
+      may still not be (a contact sticking at its cone's edge, bounded as a saturated box by
+      the fixed point, or a slip candidate's normal force that no row's acceleration reads) */
+      sc_int def = coulomb_defect(mt, nb, nt, m, kind, start, par, rn, mu, G, lam, w, st,
+                                  scale[0], scale[1]);
+      if (def < 0) {
+        code = -1;
+        goto done;
+      }
+      if (def > 0) info[1] = 2.0, info[7] = (double)def; /* (dependent, rank defect) */
+    }
   }
   if (!ok) { /* (an inner solve's own status kept: not converged, a singular mass matrix) */
     if (info[0] == 0.0) info[0] = FR_NOT_SETTLED;

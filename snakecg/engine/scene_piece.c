@@ -32,10 +32,6 @@
 #include "scene_sets.h"
 #include "scene_solve.h"
 
-/* held rows dependent where a pivot of their equations falls below this ratio to the first
- * (snakecg.solver.PIVOT_TOL): nearly dependent rows are statically indeterminate to double
- * precision, their forces are taken minimum-norm rather than huge and cancelling */
-#define DEP_TOL 1e-10
 /* the angles' Newton matrix factored without pivoting where its pivots stay above this ratio to
  * its largest diagonal entry (far from DEP_TOL: the same rank as the pivoted factor's) */
 #define ANGLE_TOL 1e-8

@@ -3,6 +3,12 @@
 #ifndef SNAKECG_ENGINE_SCENE_SOLVE_H
 #define SNAKECG_ENGINE_SCENE_SOLVE_H
 
+/* held rows dependent where a pivot of their equations falls below this ratio to the first
+ * (snakecg.solver.PIVOT_TOL; the pieces' rows, and Coulomb's piece in scene_friction.c):
+ * nearly dependent rows are statically indeterminate to double precision, their forces are
+ * taken minimum-norm rather than huge and cancelling */
+#define DEP_TOL 1e-10
+
 /* What a batch's samples at one configuration share: Z = L^-1 A^T (n x m) and G = Z^T Z
  * (m x m) of the inertia and rows they all have, held for the next sample's solve (ok: 0
  * nothing held, 1 Z, 2 Z and G; the caller zeroes it where the inertia or the rows change). */
