@@ -21,6 +21,13 @@ def _vectors(args, scene):
     return q, tau
 
 
+#: what a sample's ``dependent`` flag says about its forces (SceneResult's docstring)
+_DEPENDENT = {1: "dependent constraint rows (statically indeterminate); minimum-norm forces",
+              2: "dependent constraint rows (statically indeterminate); the forces are one "
+                 "of a family with these accelerations, not the minimum-norm ones",
+              3: "nearly dependent constraint rows; the answer holds to its KKT residuals"}
+
+
 def forward_command(args, scene, schema: str) -> int:
     from .. import load
     from ..errors import InputError
@@ -60,8 +67,7 @@ def forward_command(args, scene, schema: str) -> int:
         print(f"  Coulomb friction at the contacts: {res.uniqueness} ({res.solutions} solutions "
               "found by enumeration; 0: not enumerated, negative: some piece singular)")
     if res.dependent:
-        print("  warning: dependent constraint rows (statically indeterminate); minimum-norm "
-              "forces")
+        print("  warning: " + _DEPENDENT[res.dependent])
     if res.status != 0:
         import sys
 
