@@ -5,6 +5,7 @@ of the shapes' boundaries) and the drawing."""
 from __future__ import annotations
 
 import json
+import re
 import subprocess
 import sys
 
@@ -44,6 +45,25 @@ def test_every_problem_is_named_at_once(tmp_path):
                  "obstacle[1].radius must be a number > 0", "object[1].touching.side"):
         assert part in msg
     assert "\n" not in msg
+
+
+def test_a_problem_of_the_one_ground_is_named_once_and_a_touching_offset_on_its_link(tmp_path):
+    p = tmp_path / "bad.toml"
+    p.write_text(SCENE.replace("mu = 0.3", "mu = -0.3"))
+    with pytest.raises(InputError) as e:
+        read_scene(p)
+    assert str(e.value).count("ground.mu must be") == 1, str(e.value)
+    robot = Robot(joints=2, length=0.2)
+    for offset in (-0.01, 0.21, 5.0):  # beyond the link: the object would not touch it
+        box = SceneObject(shape="box", size=(0.1, 0.1), mass=1.0,
+                          touching={"link": 2, "offset": offset, "side": "left"})
+        with pytest.raises(InputError, match=r"object\[1\]\.touching\.offset must be within "
+                           r"link 2, 0 to 0\.2 m from its rear end, got " + str(offset)):
+            GeneralScene(robot, objects=(box,))
+    for offset in (0.0, 0.2):
+        box = SceneObject(shape="box", size=(0.1, 0.1), mass=1.0,
+                          touching={"link": 2, "offset": offset, "side": "left"})
+        assert GeneralScene(robot, objects=(box,)).objects[0].touching["offset"] == offset
 
 
 def test_ground_lists_per_link(tmp_path):
@@ -172,6 +192,64 @@ def test_api_inputs_are_checked_by_name():
         GeneralScene(robot, ground=(Ground(),))
     with pytest.raises(InputError, match="exactly one of pose"):
         GeneralScene(robot, objects=(SceneObject(shape="disc", radius=0.1),))
+
+
+def test_forces_beyond_double_precision_are_refused_or_flagged():
+    """Torques and wrenches beyond 1e150 are refused by name before any work (the paper's
+    path's bound: the norms are quadratic in them); within it, a scene whose masses make the
+    accelerations overflow (a = tau / m beyond 1e308) answers NaN with status overflow."""
+    import snakecg
+
+    robot = Robot(joints=2)
+    box = SceneObject(shape="box", size=(0.1, 0.1), mass=1.0,
+                      touching={"link": 2, "offset": 0.075, "side": "left"})
+    model = snakecg.load(GeneralScene(robot, objects=(box,)))
+    q = np.zeros(5)
+    with pytest.raises(InputError, match=r"tau must have every entry within \+-1e\+150 .* "
+                       r"found 2\.000e\+150 at index \(0, 1\)"):
+        model.forward(q, np.array([1.0, 2e150]))
+    T = np.ones((4, 2))
+    T[2, 0] = -1e300
+    with pytest.raises(InputError, match=r"tau .* found -1\.000e\+300 at index \(2, 0\)"):
+        model.forward(np.zeros((4, 5)), T)
+    with pytest.raises(InputError, match=r"f_obj must have every entry within \+-1e\+150"):
+        model.forward(q, np.ones(2), f_obj=[[0.0, 1e151, 0.0]])
+    assert model.forward(q, np.array([1e150, -1e150])).status == 0  # (the bound itself)
+    light = Robot(joints=2, mass=1e-200, inertia=1e-203)
+    tiny = SceneObject(shape="box", size=(0.1, 0.1), mass=1e-200,
+                       touching={"link": 2, "offset": 0.075, "side": "left"})
+    res = snakecg.load(GeneralScene(light, objects=(tiny,))).forward(q, np.array([1e150, 1.0]))
+    assert res.status == 8 and "overflowed" in res.reason[0]
+    assert np.isnan(res.qdd).all() and np.isnan(res.a_obj).all()
+    assert all(np.isnan(x) for x in (res.sr, res.norm_lambda, res.norm_qdd, res.norm_a_obj))
+    assert repr(res).startswith("SceneResult(status='overflow'")
+
+
+def test_a_base_too_far_for_the_contacts_tolerance_is_refused_by_name():
+    """At x = 1e300 every body rounds to one point: every pair touched and the forces were
+    NaN with status solved. A base farther than a million scene sizes (where the contacts'
+    geometry rounds to 1 % of their tolerance) is refused before any work, everywhere."""
+    import snakecg
+    from snakecg.scenes.packing import scene_size
+
+    robot = Robot(joints=2)
+    peg = Obstacle(shape="peg", center=(0.2, 0.05), radius=0.03)
+    scene = GeneralScene(robot, obstacles=(peg,))
+    model = snakecg.load(scene)
+    lim = 1e6 * scene_size(scene)
+    Q = np.zeros((3, 5))
+    Q[1, 1] = -1.01 * lim
+    msg = re.escape(f"q: the base position (x, y) must be within +-{lim:.3g} m")
+    with pytest.raises(InputError, match=msg + r".* at index \(1, 1\)"):
+        model.forward(Q, np.zeros((3, 2)))
+    far = np.array([1e300, 0.0, 0.0, 0.0, 0.0])
+    for call in (lambda: model.forward(far, np.zeros(2)), lambda: model.maps(far),
+                 lambda: model.extremes(far), lambda: model.simulate(far, 0.01)):
+        with pytest.raises(InputError, match=msg):
+            call()
+    near = np.array([0.99 * lim, -0.99 * lim, 0.3, 0.0, 0.0])
+    res = model.forward(near, np.array([0.1, -0.2]))  # alone there: no contact
+    assert res.status == 0 and len(res.contacts) == 0
 
 
 def test_snakecg_plot_draws_a_general_scene():

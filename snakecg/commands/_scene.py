@@ -66,7 +66,7 @@ def forward_command(args, scene, schema: str) -> int:
     if res.uniqueness is not None:
         print(f"  Coulomb friction at the contacts: {res.uniqueness} ({res.solutions} solutions "
               "found by enumeration; 0: not enumerated, negative: some piece singular)")
-    if res.dependent:
+    if res.dependent and res.status == 0:
         print("  warning: " + _DEPENDENT[res.dependent])
     if res.status != 0:
         import sys

@@ -567,7 +567,7 @@ SC_INTERNAL void sc_scene_place(const double *pk, const double *P, const double 
                                 double *reach);
 /* A state's rows (scene_rows.c's, for scene_step.c): RO_*, poses (3 n_o), contacts (CR_W) */
 enum { RO_STATUS = 0, RO_NC, RO_M, RO_NB, RO_OVERLAP, RO_POSE = RO_OVERLAP + 6, CR_W = 16 };
-enum { SS_OVERLAP = 3, SS_MORE = 4, SS_FAILED = 6 };
+enum { SS_OVERLAP = 3, SS_MORE = 4, SS_FAILED = 6, SS_OVERFLOW = 8 };
 /* scene_friction.c: a contact's tangent row (t = (-n_y, n_x) on D = J_b - J_a), the pair's
  * coefficient into its record; the solve with Coulomb friction at the contacts (the file) */
 SC_INTERNAL void sc_friction_row(const double *pk, sc_int ia, sc_int ib, const double *nrm,

@@ -46,7 +46,7 @@ enum { SO_INFO = 0, SO_NC = 8, SO_NORM_QDD, SO_NORM_A, SO_NORM_L, SO_SR, SO_OVER
 /* a contact's record (CR_W, engine.h): body a (kind, index), b, point a (2), b (2), normal
  * (2), gap, force, state, the pair's mu, tangent force and state; a sample's status (SS_*,
  * engine.h) after scene_solve.c's 0 solved, 1 not converged, 2 singular mass (5, more contacts
- * than the solve takes, is the caller's) */
+ * than the solve takes, is the caller's; 8: the answer overflowed) */
 enum { BODY_LINK = 0, BODY_OBJECT = 1, BODY_OBSTACLE = 2 };
 /* Gauss-Seidel sweeps allowed per sample (snakecg.scenes.solve.MAX_SWEEPS) */
 #define SC_SCENE_SWEEPS 200000
@@ -367,7 +367,11 @@ static void scene_sample(sc_scene_work *sw, const double *q, const double *tau,
   if (out[SO_INFO] == 0.0)
     sc_scene_metrics(n, sw->no, t, sw->L, sw->g, sw->f, a, m, sw->A, sw->lam, out + SO_NORM_QDD,
                      a + n);
-  else
+  for (i = SO_NORM_QDD; out[SO_INFO] == 0.0 && i <= SO_SR; ++i) /* (an overflow: forces or
+    masses beyond double precision's range, which the KKT residuals' fmax passes by; a value
+    of a not finite makes ||lambda||^2's sum over every entry so, and a is taken from lam) */
+    if (!isfinite(out[i])) out[SO_INFO] = SS_OVERFLOW;
+  if (out[SO_INFO] != 0.0)
     for (i = SO_NORM_QDD; i <= SO_SR; ++i) out[i] = NAN;
   for (i = 0; out[SO_INFO] != 0.0 && i < n + sw->no; ++i) a[i] = NAN; /* (qdd, a_o, ||a_o||^2) */
   out[SO_NC] = (double)nc;
@@ -414,7 +418,8 @@ failed: /* a generated function refused */
  * blocks are the same, but at every chunk-th sample of the call (chunk < 2: all cold; a
  * caller splitting a batch on multiples of chunk gets the same answers whatever the split)
  * and for 1, 2, 4 .. 128 samples after starts that gained nothing. Returns 0, -1 out of
- * memory, -2 on sizes out of range, -(3 + i) when an input of sample i is not finite. */
+ * memory, -2 on sizes out of range, -(3 + i) when an input of sample i is refused
+ * (scene_inputs.c: not finite, a force beyond 1e150, the base beyond POSITION_SPAN sizes). */
 static int forward(const double *pk, sc_int n, const double *q, sc_int sq, const double *tau,
                    sc_int st, const double *fo, sc_int sf, sc_int ccap, sc_int mcap,
                    double *out, double *A, double *lam, double *w, double *state, sc_int chunk,
@@ -424,7 +429,8 @@ static int forward(const double *pk, sc_int n, const double *q, sc_int sq, const
   if (ccap < 0 || mcap < ccap + mg || mcap > 500 || SNAKECG_NS + 3 * pk[SP_NO] > 512)
     return -2;
   /* inputs first: a sample that is not finite refuses the call (scene_inputs.c) */
-  if ((i = sc_inputs_bad(n, q, sq, tau, st, fo, sf, 3 * (sc_int)pk[SP_NO])) >= 0)
+  if ((i = sc_inputs_bad(n, q, sq, tau, st, fo, sf, 3 * (sc_int)pk[SP_NO],
+                         POSITION_SPAN * pk[SP_SIZE])) >= 0)
     return (int)(-3 - (i < 2000000000 ? i : 2000000000));
   if (keep && *keep) { /* (as made below: cold, the last call's rows kept for its q) */
     sw = (sc_scene_work *)*keep, sw->pnb = -1;

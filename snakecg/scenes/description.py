@@ -112,7 +112,7 @@ class SceneObject:
         """From the touched face to the COM, along the normal."""
         return self.radius if self.shape == "disc" else self.size[1] / 2
 
-    def problems(self, where: str, n_links: int | None) -> list[str]:
+    def problems(self, where: str, n_links: int | None, lengths=None) -> list[str]:
         out = []
         if self.shape not in OBJECT_SHAPES:
             out.append(f"{where}.shape must be 'box' or 'disc', got {self.shape!r:.60}")
@@ -147,6 +147,12 @@ class SceneObject:
                 if "offset" in t and not _num(t["offset"]):
                     out.append(f"{where}.touching.offset must be a number (m from the link's "
                                f"rear end), got {t['offset']!r:.60}")
+                elif ("offset" in t and lengths is not None and not isinstance(k, bool)
+                      and isinstance(k, numbers.Integral) and 1 <= k <= len(lengths)
+                      and not 0 <= t["offset"] <= lengths[k - 1]):
+                    out.append(f"{where}.touching.offset must be within link {k}, 0 to "
+                               f"{lengths[k - 1]:g} m from its rear end, got "
+                               f"{t['offset']!r:.60}")
                 if t.get("side", "left") not in ("left", "right"):
                     out.append(f"{where}.touching.side must be 'left' or 'right', got "
                                f"{t.get('side')!r:.60}")
@@ -233,7 +239,7 @@ class GeneralScene:
             if not isinstance(o, SceneObject):
                 problems.append(f"object[{i + 1}] must be a SceneObject, got {o!r:.60}")
             else:
-                problems += o.problems(f"object[{i + 1}]", nl)
+                problems += o.problems(f"object[{i + 1}]", nl, self.robot.length)
         for i, o in enumerate(self.obstacles):
             if not isinstance(o, Obstacle):
                 problems.append(f"obstacle[{i + 1}] must be an Obstacle, got {o!r:.60}")
@@ -248,7 +254,8 @@ class GeneralScene:
             problems.append(f"tolerance must be a number in (0, 0.01) (relative to the scene's "
                             f"size), got {self.tolerance!r:.60}")
         if problems:
-            raise InputError("invalid scene: " + "; ".join(problems))
+            raise InputError("invalid scene: " + "; ".join(dict.fromkeys(problems)))  # (one
+            # ground for every link: its problems once)
         object.__setattr__(self, "ground", tuple(g))
         object.__setattr__(self, "objects", tuple(self.objects))
         object.__setattr__(self, "obstacles", tuple(self.obstacles))

@@ -21,14 +21,16 @@ from .solve import BOX, DISC, FREE, INFO, SLIDE, SLIDE_NEG, SLIDE_POS, SPLIT, UN
 __all__ = ["SceneResult", "STATUS_NAMES"]
 
 STATUS_NAMES = ("solved", "not_converged", "singular_mass", "overlap", "", "too_many_contacts",
-                "failed", "not_converged")
+                "failed", "not_converged", "overflow")
 _KIND_NAMES = {FREE: "ideal_wheel", UNILATERAL: "contact", BOX: "wheel", DISC: "coulomb",
                SPLIT: "anisotropic"}
 _REASONS = {1: "the active-set solve did not converge",
             2: "the mass matrix is not positive definite",
             6: "a generated function of the model failed at this configuration",
             7: "Coulomb friction at the contacts: the fixed point on the tangent rows' bounds "
-               "(s <- mu lam_n) did not settle, or its answer failed Coulomb's conditions"}
+               "(s <- mu lam_n) did not settle, or its answer failed Coulomb's conditions",
+            8: "the forces or accelerations overflowed double precision (torques or forces "
+               "too large for the scene's masses and sizes: scale them down)"}
 
 
 def state_name(kind: int, code: int) -> str:

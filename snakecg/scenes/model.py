@@ -14,11 +14,16 @@ from .._inputs import as_batch, broadcast_batches, check_batch_memory
 from ..engine.binding import SceneCall, address
 from ..errors import BuildError, InputError
 from ..robot_model import RobotModel
+from ..solver import check_input_range
 from .contacts import Contact, Rows
 from .description import GeneralScene
 from .metrics import SceneResult
-from .packing import BODY_KINDS, CONTACTS_FIRST, CR_W, SO_NC, pack
+from .packing import BODY_KINDS, CONTACTS_FIRST, CR_W, SO_NC, SP_SIZE, pack
 from .solve import INFO, UNILATERAL
+
+#: a base position at most this many times the scene's size from the origin (the engine's
+#: scene_inputs.h POSITION_SPAN)
+POSITION_SPAN = 1e6
 
 __all__ = ["GeneralSceneModel"]
 
@@ -150,13 +155,28 @@ class GeneralSceneModel(RobotModel):
             raise BuildError("a general scene is solved by the compiled engine; load it with a "
                              "C compiler (set CC) and the compiled backend")
         out = self._run(qa, ta, fo, N, batched)
-        if out is None:  # an input not finite: named by the checks
+        if out is None:  # an input refused by the engine: named by the checks
             for name, val, size in (("q", q, ns), ("tau", tau, na), ("f_obj", fo, 3 * no)):
                 as_batch(name, val, size)
+            check_input_range({"tau": (ta, bt), "f_obj": (fo, bf)})
+            self._check_base(qa)
             raise InputError("forward: an input is not finite")
         return self._result(out, batched, (np.broadcast_to(qa, (N, ns)),
                                            np.broadcast_to(ta, (N, na)),
                                            np.broadcast_to(fo, (N, 3 * no))))
+
+    def _check_base(self, q) -> None:
+        """Refuse a base position beyond POSITION_SPAN times the scene's size (the engine's
+        scene_inputs.h): farther, the contacts' geometry rounds beyond their tolerance."""
+        lim = POSITION_SPAN * self.packed.vector[SP_SIZE]
+        far = ~(np.abs(np.atleast_2d(q)[:, :2]) <= lim)
+        if far.any():
+            idx = tuple(int(i) for i in np.argwhere(far)[0])
+            where = idx if np.ndim(q) == 2 else (idx[1],)
+            raise InputError(f"q: the base position (x, y) must be within +-{lim:.3g} m (a "
+                             f"million times the scene's size: farther, the contact geometry's "
+                             f"rounding exceeds the contacts' tolerance), found "
+                             f"{np.atleast_2d(q)[idx]:.3e} at index {where}")
 
     def _result(self, out, batched, inputs) -> SceneResult:
         if not batched and out[0, 0] == 3:
