@@ -58,6 +58,7 @@ import numpy as np
 from .._inputs import all_finite
 from ..engine.binding import (SCENE_LAWS, SceneRunCall, SceneStateCall, SceneStep, address,
                               array_address)
+from ..engine.rules import FORCE_LIMIT
 from ..errors import BuildError, InputError
 from .contacts import Rows, StateRows, read_rows
 from .packing import BODY_KINDS, SP_SIZE, scene_size
@@ -223,8 +224,10 @@ class _Stepper:
         self.args.h = h
         code = self._step(self._address)
         if code != 0:
-            if code == -3:
-                raise InputError("simulate: the state is not finite")
+            if code == -3:  # (a run's start is checked: a step overflowed)
+                raise InputError("simulate: the state overflowed double precision: the "
+                                 "torques or velocities are too large for this scene's masses "
+                                 "and sizes; scale them down")
             raise MemoryError("the scene's step ran out of memory") if code == -1 else \
                 ValueError(f"core_scene_step refused its sizes ({code})")
         return int(self.args.status)
@@ -281,6 +284,12 @@ def _check_args(model, q0, v0, duration, dt, q_obj0, v_obj0, f_obj, tolerance):
     if tolerance is not None and not (isinstance(tolerance, (int, float)) and
                                       not isinstance(tolerance, bool) and 0 < tolerance < 0.01):
         problems.append(f"tolerance must be a number in (0, 0.01) (m), got {tolerance!r:.60}")
+    for name, arr, lim in (("v0", v, FORCE_LIMIT ** 0.5), ("v_obj0", vo, FORCE_LIMIT ** 0.5),
+                           ("f_obj", fo, FORCE_LIMIT)):  # (as forward's and the paper's run)
+        if np.abs(arr).max(initial=0.0) > lim:
+            problems.append(f"{name} must have every entry within +-{lim:.0e} (the energies are "
+                            f"quadratic in them and would overflow float64), found "
+                            f"{arr.flat[np.abs(arr).argmax()]:.3e}")
     if problems:
         raise InputError("simulate: " + "; ".join(problems))
     model._check_base(q)  # (a run's start; its later steps move it by its velocities)
@@ -299,8 +308,6 @@ class _Runner:
 
     def __init__(self, st: _Stepper, duration, dt, law: str, params, every: int, cap: int,
                  stop_at_impacts: bool = True, pause: int | None = None):
-        from ..engine.rules import FORCE_LIMIT
-
         eng, model = st.engine, st.model
         self.st, self.na = st, model.n_joints
         self.width = 1 + 2 * st.n + self.na + ST_WIDTH
@@ -345,8 +352,10 @@ class _Runner:
         """Go on with the run: why the engine returned (``RUN_*``)."""
         code = self._run(self._address)
         if code < 0:
-            if code == -3:
-                raise InputError("simulate: the state is not finite")
+            if code == -3:  # (its start was checked: the run overflowed on its way)
+                raise InputError(f"simulate: the state overflowed double precision at t = "
+                                 f"{self.args.t:.6g} s: the torques or velocities are too "
+                                 f"large for this scene's masses and sizes; scale them down")
             raise MemoryError("the scene's run ran out of memory") if code == -1 else \
                 ValueError(f"core_scene_run refused ({code})")
         return code
