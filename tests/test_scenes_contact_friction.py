@@ -218,11 +218,12 @@ def engine_forces(res, p):
 
 
 # ---- random small scenes against the enumeration -------------------------------------------
-@pytest.fixture(scope="module")
-def frictional_samples():
-    rng = np.random.default_rng(20261205)
+def frictional_cases(seed: int, count: int) -> list:
+    """``(model, q, tau)``: ``count`` random small scenes with a peg or an object (polyhedral
+    ground, no object rubbing it), each with 8 contact coefficients and torques."""
+    rng = np.random.default_rng(seed)
     out = []
-    for model0, q, _ in small_scenes(rng, 45, POLYHEDRAL, object_friction=False):
+    for model0, q, _ in small_scenes(rng, count, POLYHEDRAL, object_friction=False):
         if len(model0.scene.objects) + len(model0.scene.obstacles) == 0:
             continue
         for _ in range(8):
@@ -232,6 +233,11 @@ def frictional_samples():
             tau = rng.normal(size=model.n_joints) * float(rng.choice([0.1, 1.0, 5.0]))
             out.append((model, q, tau))
     return out
+
+
+@pytest.fixture(scope="module")
+def frictional_samples():
+    return frictional_cases(20261205, 45)
 
 
 def test_random_scenes_match_the_enumeration(frictional_samples):

@@ -10,17 +10,14 @@ sliding). Its width along random directions is zero exactly where the forces are
 
 from __future__ import annotations
 
-import dataclasses
 
 import numpy as np
 import pytest
 from scipy.optimize import linprog
 
-import snakecg
 from snakecg.scenes.solve import BOX, FREE
 
-from scenes_reference import POLYHEDRAL, small_scenes
-from test_scenes_contact_friction import reference_problem
+from test_scenes_contact_friction import frictional_cases, reference_problem
 
 TOL = 1e-9  # a row's acceleration zero within this of the rows' scale (the engine's too)
 
@@ -90,17 +87,7 @@ def width(p, a, rng, directions=3):
 
 @pytest.fixture(scope="module")
 def samples():
-    rng = np.random.default_rng(20261206)
-    out = []
-    for model0, q, _ in small_scenes(rng, 60, POLYHEDRAL, object_friction=False):
-        if len(model0.scene.objects) + len(model0.scene.obstacles) == 0:
-            continue
-        for _ in range(8):
-            mu = float(rng.choice([0.1, 0.3, 0.6, 1.0, 2.0]))
-            model = snakecg.load(dataclasses.replace(model0.scene, mu_contact=mu))
-            tau = rng.normal(size=model.n_joints) * float(rng.choice([0.1, 1.0, 5.0]))
-            out.append((model, q, tau))
-    return out
+    return frictional_cases(20261206, 60)
 
 
 def test_dependent_is_zero_exactly_where_coulomb_allows_one_force(samples):
