@@ -249,7 +249,7 @@ def test_a_base_too_far_for_the_contacts_tolerance_is_refused_by_name():
             call()
     with pytest.raises(InputError, match=r"v0 must have every entry within \+-1e\+75"):
         model.simulate(np.zeros(5), 0.01, v0=[0.0, 0.0, 0.0, 1e80, 0.0])
-    with pytest.raises(InputError, match=r"the state overflowed double precision at t = "):
+    with pytest.raises(InputError, match=r"the state is not finite at t = .* s: it overflowed"):
         model.simulate(np.zeros(5), 0.01, tau=[1e149, 0.0])  # (a = 1e149 m/s^2: V^2 overflows)
     near = np.array([0.99 * lim, -0.99 * lim, 0.3, 0.0, 0.0])
     res = model.forward(near, np.array([0.1, -0.2]))  # alone there: no contact

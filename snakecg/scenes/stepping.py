@@ -225,9 +225,9 @@ class _Stepper:
         code = self._step(self._address)
         if code != 0:
             if code == -3:  # (a run's start is checked: a step overflowed)
-                raise InputError("simulate: the state overflowed double precision: the "
-                                 "torques or velocities are too large for this scene's masses "
-                                 "and sizes; scale them down")
+                raise InputError("simulate: the state is not finite: it overflowed double "
+                                 "precision (torques or velocities too large for this scene's "
+                                 "masses and sizes: scale them down)")
             raise MemoryError("the scene's step ran out of memory") if code == -1 else \
                 ValueError(f"core_scene_step refused its sizes ({code})")
         return int(self.args.status)
@@ -353,9 +353,10 @@ class _Runner:
         code = self._run(self._address)
         if code < 0:
             if code == -3:  # (its start was checked: the run overflowed on its way)
-                raise InputError(f"simulate: the state overflowed double precision at t = "
-                                 f"{self.args.t:.6g} s: the torques or velocities are too "
-                                 f"large for this scene's masses and sizes; scale them down")
+                raise InputError(f"simulate: the state is not finite at t = "
+                                 f"{self.args.t:.6g} s: it overflowed double precision (torques "
+                                 f"or velocities too large for this scene's masses and sizes: "
+                                 f"scale them down)")
             raise MemoryError("the scene's run ran out of memory") if code == -1 else \
                 ValueError(f"core_scene_run refused ({code})")
         return code
