@@ -1,34 +1,42 @@
 """With Coulomb friction at the contacts, ``dependent`` 0 promises that the forces are the only
-ones Coulomb's law allows with the answered accelerations. Held against SciPy's linear
-programs (HiGHS) on rows built apart from the engine
+ones Coulomb's law allows with the answered accelerations, and 2 (where the inner solve's
+rows are independent) that they are one of a family. Held on rows built apart from the engine
 (``test_scenes_contact_friction.reference_problem``): at the engine's accelerations a, every
-force lam with M a = f + A^T lam that Coulomb's law and the wheels' bounds allow at w = A a is
-a linear set (a normal force >= 0, zero where its contact opens; |lam_t| <= mu lam_n, equal to
+force lam with M a = f + A^T lam that Coulomb's law and the ground's sets allow at w = A a is
+a convex set (a normal force >= 0, zero where its contact opens; |lam_t| <= mu lam_n, equal to
 -mu lam_n sign(w_t) where it slips; a wheel's force within its bound, at it against its
-sliding). Its width along random directions is zero exactly where the forces are unique.
+sliding; a Coulomb disc's inside it, at -r w/|w| where its link slides). Its width along
+random directions is zero exactly where the forces are unique: SciPy's linear programs (HiGHS)
+where the sets are polyhedral (random small scenes), a conic program (cvxpy with Clarabel)
+with the ground's discs (the 10-joint benchmark scene).
 """
 
 from __future__ import annotations
 
+import dataclasses
+import warnings
 
 import numpy as np
 import pytest
 from scipy.optimize import linprog
 
-from snakecg.scenes.solve import BOX, FREE
+import snakecg
+from snakecg.scenes.solve import BOX, DISC, FREE
 
+from scenes_reference import indeterminate_scene
 from test_scenes_contact_friction import frictional_cases, reference_problem
 
 TOL = 1e-9  # a row's acceleration zero within this of the rows' scale (the engine's too)
 
 
 def force_set(p, a):
-    """The linear set of forces at accelerations a: (A_eq, b_eq, A_ub, b_ub, bounds)."""
+    """The set of forces at accelerations a: linear equations (A_eq, b_eq), inequalities
+    (A_ub lam <= 0), bounds per row, and discs ``(rows, radius)`` (|lam[rows]| <= radius)."""
     M, f, A = p["M"], p["f"], p["A"]
     m = A.shape[0]
     w = A @ a
     W = max(1e-12, np.abs(A @ np.linalg.solve(M, f)).max(), np.abs(w).max())
-    eq, rhs, ub, bounds = [A.T], [M @ a - f], [], [(None, None)] * m
+    eq, rhs, ub, bounds, discs = [A.T], [M @ a - f], [], [(None, None)] * m, []
 
     def row(pairs):
         r = np.zeros(m)
@@ -40,6 +48,14 @@ def force_set(p, a):
         r, t = b["row"], b["tangent"]
         moves = abs(w[r]) > TOL * W
         if b["kind"] == FREE:
+            continue
+        if b["kind"] == DISC:  # inside, or at -r w/|w| where the link slides
+            wd = w[r:r + 2]
+            if np.abs(wd).max() > TOL * W:
+                for i, v in enumerate(-b["p"] * wd / np.linalg.norm(wd)):
+                    bounds[r + i] = (v, v)
+            else:
+                discs.append(([r, r + 1], b["p"]))
             continue
         if b["kind"] == BOX:
             if not b["p"] > 0:
@@ -59,29 +75,61 @@ def force_set(p, a):
             rhs.append([0.0])
         else:  # sticks: inside the cone
             ub += [row([(t, 1.0), (r, -b["mu"])]), row([(t, -1.0), (r, -b["mu"])])]
-    A_ub = np.array(ub) if ub else None
-    b_ub = np.zeros(len(ub)) if ub else None
-    return np.vstack(eq), np.concatenate(rhs), A_ub, b_ub, bounds
+    return np.vstack(eq), np.concatenate(rhs), np.array(ub).reshape(-1, m), bounds, discs
+
+
+def _ends_linear(sets, c):
+    """min and max of c . lam over a polyhedral set (HiGHS), or None."""
+    A_eq, b_eq, A_ub, bounds, _ = sets
+    ends = []
+    for sign in (1.0, -1.0):
+        r = linprog(sign * c, A_ub=A_ub if len(A_ub) else None,
+                    b_ub=np.zeros(len(A_ub)) if len(A_ub) else None, A_eq=A_eq, b_eq=b_eq,
+                    bounds=bounds, method="highs")
+        if r.status != 0:
+            return None
+        ends.append(r.x)
+    return ends
+
+
+def _ends_conic(sets, c):
+    """min and max of c . lam over a set with discs (cvxpy, Clarabel), or None."""
+    import cvxpy as cp
+
+    A_eq, b_eq, A_ub, bounds, discs = sets
+    lam = cp.Variable(A_eq.shape[1])
+    cons = [A_eq @ lam == b_eq] + ([A_ub @ lam <= 0] if len(A_ub) else [])
+    for i, (lo, hi) in enumerate(bounds):
+        cons += ([lam[i] >= lo] if lo is not None else []) + ([lam[i] <= hi] if hi is not None
+                                                               else [])
+    cons += [cp.norm(lam[rows]) <= radius for rows, radius in discs]
+    ends = []
+    for sign in (1.0, -1.0):
+        prob = cp.Problem(cp.Minimize(sign * c @ lam), cons)
+        with warnings.catch_warnings():  # ("may be inaccurate": the status says it)
+            warnings.simplefilter("ignore", UserWarning)
+            prob.solve(solver="CLARABEL", tol_gap_abs=1e-10, tol_gap_rel=1e-10, tol_feas=1e-10)
+        if prob.status not in ("optimal", "optimal_inaccurate"):  # (the latter: its
+            return None  # tolerances not all met to 1e-10, far inside the widths' margins)
+        ends.append(lam.value)
+    return ends
 
 
 def width(p, a, rng, directions=3):
-    """The set's largest width along random unit directions (None where it is empty to
-    HiGHS, or unbounded), and the scale of its forces."""
-    A_eq, b_eq, A_ub, b_ub, bounds = force_set(p, a)
+    """The set's largest width along random unit directions (None where a program found it
+    empty or failed), and the scale of its forces."""
+    sets = force_set(p, a)
+    ends_of = _ends_conic if sets[4] else _ends_linear
     m = p["A"].shape[0]
     out, F = 0.0, 0.0
     for _ in range(directions):
         c = rng.normal(size=m)
         c /= np.linalg.norm(c)
-        ends = []
-        for sign in (1.0, -1.0):
-            r = linprog(sign * c, A_ub=A_ub, b_ub=b_ub, A_eq=A_eq, b_eq=b_eq, bounds=bounds,
-                        method="highs")
-            if r.status != 0:
-                return None, F
-            ends.append(c @ r.x)
-            F = max(F, np.abs(r.x).max())
-        out = max(out, abs(ends[0] - ends[1]))
+        ends = ends_of(sets, c)
+        if ends is None:
+            return None, F
+        F = max(F, *(np.abs(x).max() for x in ends))
+        out = max(out, abs(c @ (ends[0] - ends[1])))
     return out, F
 
 
@@ -112,3 +160,32 @@ def test_dependent_is_zero_exactly_where_coulomb_allows_one_force(samples):
         seen["flag 2"] += res.dependent == 2
     print(seen)
     assert seen["unique"] >= 300 and seen["family"] >= 10 and seen["flag 2"] >= 1, seen
+
+
+def test_on_coulomb_ground_flag_two_is_a_family_and_zero_a_point():
+    """The 10-joint benchmark scene with contact friction (pegs and objects at mu 0.3) on
+    Coulomb ground: its discs are free unknowns where their links stick. At six random
+    configurations (200 torques each, 97 % flagged 1: the rows dependent in the inner solve
+    too), every sample flagged 2 is a family of forces (a conic program's width above 1e-4
+    of their scale) and every one flagged 0 a point (below 1e-7)."""
+    rng = np.random.default_rng(0)
+    seen = {"family": 0, "point": 0}
+    for _ in range(6):
+        q = np.r_[0.0, 0.0, 0.0, rng.uniform(-1.0, 1.0, 10)]
+        model = snakecg.load(dataclasses.replace(indeterminate_scene(q, 10), mu_contact=0.3))
+        T = rng.normal(0.0, 0.1, (200, 10))
+        res = model.forward(np.repeat(q[None], len(T), axis=0), T)
+        dep = np.asarray(res.dependent)
+        assert np.all(np.asarray(res.status) == 0)
+        for i in np.flatnonzero(dep != 1):
+            p = reference_problem(model, q, T[i])
+            a = np.r_[res.qdd[i], np.ravel(res.a_obj[i])]
+            wd, F = width(p, a, rng, directions=2)
+            assert wd is not None, "the engine's accelerations admit no Coulomb forces"
+            if dep[i] == 2:
+                assert wd >= 1e-4 * F, (i, wd, F)
+                seen["family"] += 1
+            else:
+                assert wd <= 1e-7 * max(F, 1.0), (i, wd, F)
+                seen["point"] += 1
+    assert seen["family"] >= 5 and seen["point"] >= 8, seen
