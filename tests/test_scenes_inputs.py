@@ -13,11 +13,13 @@ import numpy as np
 import pytest
 
 import snakecg
+from snakecg.engine.rules import FORCE_LIMIT as FORCE
 from snakecg.scenes import GeneralScene
+from snakecg.scenes.model import POSITION_SPAN as SPAN
 from snakecg.scenes.packing import scene_size
 
-FORCE = 1e150  # snakecg.engine.rules.FORCE_LIMIT
-SPAN = 1e6  # scene sizes (snakecg.scenes.model.POSITION_SPAN)
+# (the engine's own copies, scene_inputs.c/.h, are held to these by the refusals at the
+# limits and just beyond them below)
 
 
 @pytest.fixture(scope="module")

@@ -1,8 +1,8 @@
 /* snakecg's engine: a general scene's batch inputs checked before any work (scene_rows.c's
  * forward refuses a call with a sample not finite, with a force beyond FORCE_LIMIT or with its
- * base beyond POSITION_SPAN scene sizes, and names the first). Every entry is tested by its bits, a row of contiguous samples as one
- * run of integer operations (no branch per entry; vectorized), and only where one may be bad
- * are the samples scanned one by one. */
+ * base beyond POSITION_SPAN scene sizes, and names the first). Every entry is tested by its
+ * bits, a row of contiguous samples as one run of integer operations (no branch per entry;
+ * vectorized), and only where one may be bad are the samples scanned one by one. */
 #include <math.h>
 #include <stdint.h>
 #include <string.h>
