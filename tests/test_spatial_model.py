@@ -34,6 +34,20 @@ def test_robot_validation_collects_every_problem():
         snakecg.SpatialRobot(joints=0)
 
 
+def test_a_joint_axis_of_any_finite_length_is_its_direction():
+    """(1e300, 1e300, 0) once overflowed its norm to inf and read as (0, 0, 0): a snake
+    whose first joint had no axis. Any finite axis longer than 1e-12 is its unit direction
+    (the axes of one direction at lengths 1, 1e300 and 1e-6 give the same unit vector, the
+    reference (1, 1, 0) / sqrt(2)), and a shorter one is refused as zero."""
+    ref = np.array([1.0, 1.0, 0.0]) / np.sqrt(2.0)
+    for scale in (1.0, 1e300, 1e-6):
+        robot = snakecg.SpatialRobot(joints=2, joint_axis=[tuple(scale * np.array([1, 1, 0])),
+                                                           (0, 0, 1)])
+        np.testing.assert_allclose(np.asarray(robot.joint_axis)[0], ref, rtol=0, atol=1e-15)
+    with pytest.raises(snakecg.InputError, match=r"joint_axis of joint\(s\) 1 is zero"):
+        snakecg.SpatialRobot(joints=2, joint_axis=[(1e-300, 1e-300, 0), (0, 0, 1)])
+
+
 def test_batches_equal_samples_and_casadi(rng):
     """The block drivers (16 samples per loop) and the per-sample path give the same numbers,
     equal to CasADi's in-process evaluation of the serialized functions (to 1e-13)."""

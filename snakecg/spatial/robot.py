@@ -130,13 +130,15 @@ class SpatialRobot:
         xyz = _array("joint_xyz", self.joint_xyz, j, 3, problems)
         rpy = _array("joint_rpy", self.joint_rpy, j, 3, problems)
         ax = _array("joint_axis", axis, j, 3, problems)
-        if ax is not None:
-            norms = np.linalg.norm(ax, axis=1)
-            zero = [str(k + 1) for k in np.flatnonzero(~(norms > 1e-12))]
+        if ax is not None:  # (scaled by its largest entry first: |(1e300, 1e300, 0)|
+            # overflows, and the axis divided by it read as zero)
+            big = np.abs(ax).max(axis=1, keepdims=True)
+            unit = ax / np.where(big > 0, big, 1.0)
+            zero = [str(k + 1) for k in np.flatnonzero(~(big[:, 0] > 1e-12))]
             if zero:
                 problems.append(f"joint_axis of joint(s) {', '.join(zero)} is zero")
             else:
-                ax = ax / norms[:, None]
+                ax = unit / np.linalg.norm(unit, axis=1, keepdims=True)
         g = _array("gravity", [self.gravity], 1, 3, problems)
         limits = efforts = None
         if self.joint_limits is not None:
