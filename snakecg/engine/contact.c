@@ -93,12 +93,22 @@ int sc_work_alloc(sc_work_t *ws, const sc_work_fn *fns, int n) {
     ws->res[F##_OUT_s] = &out->s;                                        \
   } while (0)
 
-int sc_contact_system(sc_work_t *ws, const double *scene, const double *q,
-                      const double *v, const double *tau, const double *q_obj,
+int sc_contact_system(sc_work_t *ws, const double *scene, const double *q_in,
+                      const double *v, const double *tau, const double *q_obj_in,
                       const double *v_obj, const double *f_obj, const double *rho,
                       sc_system *out) {
   static const double zeros[3] = {0.0, 0.0, 0.0}, one = 1.0, zero = 0.0;
+  /* the base at the origin, the object's pose moved with it: the scene has no fixed body, so
+   * every output is the same at any base position (up to rounding), and far from the origin
+   * the contact's and the object's world coordinates cancelled (at x = 1e16 m the forces'
+   * norm was three times the true one) */
+  double qs[SNAKECG_NQ], qos[3];
+  const double *q = qs, *q_obj = q_obj_in ? qos : NULL;
   int k, rest = 1;
+  memcpy(qs, q_in, sizeof qs);
+  qs[0] = qs[1] = 0.0;
+  if (q_obj_in) qos[0] = q_obj_in[0] - q_in[0], qos[1] = q_obj_in[1] - q_in[1],
+                qos[2] = q_obj_in[2];
   for (k = 0; k < SNAKECG_NS; ++k) rest &= v[k] == 0.0;
   for (k = 0; k < 3; ++k) rest &= v_obj[k] == 0.0;
   if (rest) {

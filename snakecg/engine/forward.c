@@ -34,10 +34,6 @@
 #include "snakecg_layout.h"
 #include "engine.h"
 
-/* the length of q (a spatial model's configuration has one more entry than its velocity) */
-#ifndef SNAKECG_NQ
-#define SNAKECG_NQ SNAKECG_NS
-#endif
 /* Bounds that follow the solution (a spatial scene, SCENE_friction): row r's bound is
  * friction_r times the force of row normal_row_r (mu times the link's solved normal force,
  * none where negative), found by iterating the solve on the bounds to a fixed point; at most

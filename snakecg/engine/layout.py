@@ -169,8 +169,8 @@ def header(manifest: dict) -> str:
              "#define SNAKECG_EXPORT(name) SNAKECG_CAT(SNAKECG_PREFIX, name)",
              f"#define SNAKECG_NA {lay.n_joints}", f"#define SNAKECG_NS {lay.n_coordinates}",
              f"#define SNAKECG_NL {lay.n_links}", f"#define SNAKECG_NC {lay.n_constraints}"]
-    if "nq" in manifest:  # a spatial model: q has n_q entries
-        lines.append(f"#define SNAKECG_NQ {int(manifest['nq'])}")
+    # q's entries: a spatial model's n_q (its base a position and a quaternion), else n_s
+    lines.append(f"#define SNAKECG_NQ {int(manifest.get('nq', lay.n_coordinates))}")
     scene = {} if lay.spatial or not set(SCENE_FUNCTIONS) <= set(sigs) else SCENE_FUNCTIONS
     for fname, (short, ins, outs) in {**FUNCTIONS, **scene}.items():
         sig = sigs.get(fname)
