@@ -136,6 +136,8 @@ def _at_rest(model, fname: str, qa, n: int, *free_args):
     (the held-row masks, fixed forces, in signature order); ``regularization`` is 0.
     Returns the inputs ``{name: array}`` and ``{output name: (n, rows, cols) array}``.
     """
+    qa = np.array(qa, dtype=float)  # the base at the origin, the object placed from it: the
+    qa[..., :2] = 0.0  # scene has no fixed body (as the engine's contact system)
     q_obj, rho, _ = place(model, qa, n)
     names = model.backend.signatures[fname].in_names
     tail = names[names.index("wheel_offset") + 1: names.index("regularization")]

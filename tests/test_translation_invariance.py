@@ -38,6 +38,21 @@ def test_the_paper_scene_answers_the_same_anywhere(planar, rng):
         assert np.array_equal(one.qdd, ref.qdd[3]) and np.array_equal(one.lam, ref.lam[3])
 
 
+def test_the_queries_answer_the_same_anywhere(planar):
+    """maps, extremes and the optimal torque (their own evaluations of the generated at-rest
+    functions) at a base 1e16 m away equal those at the origin."""
+    q = np.array([0.0, 0.0, 0.3, 0.1, 0.2, 0.3])
+    far = _moved(q, 1e16, -1e16)
+    for key, a, b in (("maps", planar.maps(q), planar.maps(far)),):
+        for name in ("qdd_from_tau", "lam_from_tau", "a_obj_from_tau"):
+            assert np.array_equal(a[name], b[name]), (key, name)
+    e0, e1 = planar.extremes(q), planar.extremes(far)
+    assert e0.certified and e1.certified and e0.max == e1.max and e0.min == e1.min
+    o0 = planar.optimize(q, "max_sr", radius=1.0)
+    o1 = planar.optimize(far, "max_sr", radius=1.0)
+    assert o0.status == o1.status and np.array_equal(o0.tau, o1.tau)
+
+
 def test_a_given_object_pose_moves_with_the_base(planar, rng):
     """With the object's pose given, it is taken relative to the base: moved together by
     1e3 m the answers agree to the rounding of the given coordinates (1e3 eps)."""
@@ -69,3 +84,6 @@ def test_a_spatial_snake_too():
     for x in (1e8, 1e16):
         res = model.forward(_moved(q, x, -x), tau)
         assert np.array_equal(res.qdd, ref.qdd) and np.array_equal(res.lam, ref.lam), x
+    o0 = model.optimize(q, "max_sr", tau_max=1.0)  # (its at-rest maps, in Python)
+    o1 = model.optimize(_moved(q, 1e16, -1e16), "max_sr", tau_max=1.0)
+    assert o0.status == o1.status and np.array_equal(o0.tau, o1.tau)
