@@ -387,17 +387,12 @@ def _reference_into(model, raw: np.ndarray, idx: np.ndarray, parts: dict, max_it
         return
     m = idx.size
     sub = {k: (a if a.shape[0] == 1 else np.ascontiguousarray(a[idx])) for k, a in parts.items()}
-    # the base at the origin, the object moved with it (the compiled core's
-    # sc_contact_system does the same: the scene is translation invariant, and far from the
-    # origin world coordinates cancel)
-    base_xy = sub["q"][:, :2].copy()
-    sub["q"] = sub["q"].copy()
-    sub["q"][:, :2] = 0.0
+    sub["q"], moved = kernels.at_origin(sub["q"], sub.get("q_obj"))  # (the core's rule)
     if "q_obj" not in sub:
         q_obj, rho = model.place(sub["q"])[:2]
         sub["q_obj"], sub["rho"] = q_obj, rho
     else:
-        sub["q_obj"] = sub["q_obj"] - np.c_[base_xy, np.zeros(len(base_xy))]
+        sub["q_obj"] = moved
     base = {"q": sub["q"], "v": sub.get("v", np.zeros((1, model.n_coordinates))),
             "tau": sub["tau"], "q_obj": sub["q_obj"], "v_obj": sub.get("v_obj", np.zeros((1, 3))),
             "f_obj": sub.get("f_obj", np.zeros((1, 3))), "rho": sub["rho"]}

@@ -20,7 +20,7 @@ import numpy as np
 
 from .errors import InputError
 
-__all__ = ["Outputs", "call", "arguments", "outputs_type"]
+__all__ = ["Outputs", "call", "arguments", "outputs_type", "at_origin"]
 
 
 class Outputs(tuple):
@@ -106,3 +106,18 @@ def call(backend, name: str, n: int, **inputs) -> Outputs:
                          f"{', '.join(backend.signatures)}")
     outs = backend(name, n, arguments(sig, inputs))
     return outputs_type(name, sig.out_names)(outs)
+
+
+def at_origin(q, q_obj=None):
+    """Configurations ``q`` (``(..., n_q)``) with the base at the origin, and the object's
+    poses ``q_obj`` (``(..., 3)``, or None) moved with it: the paper's scene has no fixed
+    body, so its contact system (and every at-rest map of it) is evaluated there, as the
+    compiled core's ``sc_contact_system`` does; far from the origin the world coordinates of
+    the contact and the object cancel (at 1e16 m the forces' norm came out 2.8 times the
+    true one). Copies; ``(q, q_obj)``."""
+    q0 = np.array(q, dtype=float)
+    if q_obj is not None:
+        q_obj = np.array(q_obj, dtype=float)
+        q_obj[..., :2] -= q0[..., :2]
+    q0[..., :2] = 0.0
+    return q0, q_obj

@@ -9,6 +9,7 @@ from __future__ import annotations
 import numpy as np
 
 from .errors import InputError
+from .kernels import at_origin
 from .solver import ABSENT, HELD, LOST, PIVOT_TOL, REGULARIZATION, SLIDE_NEG, SLIDE_POS
 from .solver import _free_and_fixed
 
@@ -136,8 +137,7 @@ def _at_rest(model, fname: str, qa, n: int, *free_args):
     (the held-row masks, fixed forces, in signature order); ``regularization`` is 0.
     Returns the inputs ``{name: array}`` and ``{output name: (n, rows, cols) array}``.
     """
-    qa = np.array(qa, dtype=float)  # the base at the origin, the object placed from it: the
-    qa[..., :2] = 0.0  # scene has no fixed body (as the engine's contact system)
+    qa = at_origin(qa)[0]  # (the object placed from the base at the origin)
     q_obj, rho, _ = place(model, qa, n)
     names = model.backend.signatures[fname].in_names
     tail = names[names.index("wheel_offset") + 1: names.index("regularization")]

@@ -38,9 +38,8 @@ def primitives(model, qa):
     # contact_system_at_rest, the object placed from q)
     zero = np.zeros(3)
     inputs = model.scene_inputs
-    at = np.array(qa, dtype=float)
-    at[..., :2] = 0.0  # the base at the origin (as the engine's contact system)
-    cs = kernels.call(model.backend, "contact_system_at_rest", n, q=at,
+    cs = kernels.call(model.backend, "contact_system_at_rest", n,
+                      q=kernels.at_origin(qa)[0],
                       tau=np.zeros(model.n_joints), q_obj=zero, f_obj=zero, rho=np.zeros(2),
                       placed=np.ones(1),
                       **{k: inputs[k] for k in ("K", "contact_link", "side", "object_mass",

@@ -37,14 +37,15 @@ def _planar_pair(rng, scenario, count):
 @pytest.mark.parametrize("scenario", ("frictionless", "ideal_wheels"))
 def test_extremes_embed_the_planar_ones(rng, scenario):
     """Yaw joints lying flat: every extreme of the four metrics is the planar engine's
-    (its eigensolver path) to 1e-10 of the metric's largest value, certified."""
+    (its eigensolver path) to 2e-10 of the metric's largest value, certified (sr's maximum,
+    a ratio of forms, moves by 1.1e-10 with the rounding of the maps' inputs)."""
     pm, sm, Q, qs = _planar_pair(rng, scenario, 8)
     a, b = _quadratic_extremes_numpy(pm, Q), sm.extremes(qs)
     assert np.all(b.certified) and all(r == "" for r in b.reason)
     for m in METRICS:
         top = np.abs(a.max[m]).max()
         for attr in ("max", "min", "min_kept"):
-            assert np.abs(getattr(b, attr)[m] - getattr(a, attr)[m]).max() <= 1e-10 * top, \
+            assert np.abs(getattr(b, attr)[m] - getattr(a, attr)[m]).max() <= 2e-10 * top, \
                 (m, attr)
 
 

@@ -19,6 +19,7 @@ from functools import cached_property
 
 import numpy as np
 
+from ..kernels import at_origin
 from ..native import BoundFunction
 from ..solver import PIVOT_TOL, REGULARIZATION
 from .records import State
@@ -199,7 +200,8 @@ class Dynamics:
         tau = tau_fn(t, y, mode)
         cd = self.cd
         iqdd, iaobj, ilam, igap, is_, isr, inao, inqdd, ipiv, idel = self._out_index
-        o = tuple(cd.one(q=q, v=v, tau=tau, q_obj=qo, v_obj=vo, free=mode.free,
+        q0, qo0 = at_origin(q, qo)
+        o = tuple(cd.one(q=q0, v=v, tau=tau, q_obj=qo0, v_obj=vo, free=mode.free,
                          lam_fixed=mode.lam_fixed))
         F = mode.free_idx
         reg = 0.0
@@ -208,7 +210,7 @@ class Dynamics:
             self.singular += 1
             scale = np.abs(np.diagonal(o[idel])).max()
             reg = REGULARIZATION * max(scale, 1e-300)
-            o = tuple(cd.one(q=q, v=v, tau=tau, q_obj=qo, v_obj=vo, free=mode.free,
+            o = tuple(cd.one(q=q0, v=v, tau=tau, q_obj=qo0, v_obj=vo, free=mode.free,
                              lam_fixed=mode.lam_fixed, regularization=reg))
             cd.set(regularization=0.0)
         lam = o[ilam].copy()
@@ -246,7 +248,8 @@ class Dynamics:
         """``Q = I^-1 A^T`` (nx, n_c), ``G_c``, gap, s and ``A V`` at ``y`` (one evaluation
         of the generated ``contact_system``: ``M_s^-1 A_s^T`` over ``I_obj^-1 A_o^T``)."""
         q, qo, v, vo = self.split(y)
-        o = self._cs.one(q=q, v=v, tau=tau, q_obj=qo, v_obj=vo)
+        q0, qo0 = at_origin(q, qo)
+        o = self._cs.one(q=q0, v=v, tau=tau, q_obj=qo0, v_obj=vo)
         Q = np.vstack([o["qdd_from_lam"], o["a_obj_from_lam"]])
         G = np.array(o["delassus"])
         gap, s = float(o["gap"][0]), float(o["s"][0])

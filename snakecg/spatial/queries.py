@@ -63,11 +63,9 @@ class StateMaps:
         taus = np.concatenate([np.zeros((1, na)), np.eye(na)])  # tau = 0, e_1 .. e_na
         k = na + 1
         inputs = {name: value for name, value in model.scene_inputs.items()}
-        at = np.repeat(qa, k, axis=0)
-        at[:, :2] = 0.0  # the base at the origin: the scene has no fixed body (as the engine's
-        # contact system; far from the origin world coordinates cancel)
         o = kernels.call(model.backend, "contact_system_at_rest", n * k,
-                         q=at, tau=np.tile(taus, (n, 1)),
+                         q=kernels.at_origin(np.repeat(qa, k, axis=0))[0],
+                         tau=np.tile(taus, (n, 1)),
                          q_obj=np.zeros(3), f_obj=np.zeros(3), rho=np.zeros(2), placed=[1.0],
                          **inputs)
         shape = lambda a: a.reshape(n, k, *a.shape[1:])  # noqa: E731
