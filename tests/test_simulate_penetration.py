@@ -280,7 +280,10 @@ def test_violation_seen_only_at_a_sample(user, monkeypatch):
         with monkeypatch.context() as m:
             m.setattr(RunCheck, "event", lambda self: _blind)
             blind = sm.simulate(Q_USER, TAU_USER, 0.01, **kw)
-        assert blind.violation.t == pytest.approx(seen.violation.t, rel=1e-12, abs=2e-15)
+        # (2e-14 s: the two locations, at a step's end and on the segment integrated again,
+        # agree to the root finding's rounding; 9e-15 s once the contact system is evaluated
+        # with the base at the origin)
+        assert blind.violation.t == pytest.approx(seen.violation.t, rel=1e-12, abs=2e-14)
         assert blind.violation.bodies == seen.violation.bodies == (1, "object")
         assert blind.t[-1] == (blind.violation.t if mode == "stop" else 0.01)
 
