@@ -49,7 +49,7 @@ class Problem:
     def __init__(self, model, q):
         na, ns, no = model.n_joints, model.n_coordinates, model.scene.n_objects
         qa = np.asarray(q, dtype=float).reshape(1, ns)
-        model._check_base(qa[0])
+        model.check_base(qa[0])
         state_rows = StateRows(model)
         self.rows, M, self.obj_poses = state_rows.rows(qa[0])
         n = ns + 3 * no

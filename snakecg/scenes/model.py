@@ -159,24 +159,25 @@ class GeneralSceneModel(RobotModel):
             for name, val, size in (("q", q, ns), ("tau", tau, na), ("f_obj", fo, 3 * no)):
                 as_batch(name, val, size)
             check_input_range({"tau": (ta, bt), "f_obj": (fo, bf)})
-            self._check_base(qa)
+            self.check_base(qa)
             raise InputError("forward: an input is not finite")
         return self._result(out, batched, (np.broadcast_to(qa, (N, ns)),
                                            np.broadcast_to(ta, (N, na)),
                                            np.broadcast_to(fo, (N, 3 * no))))
 
-    def _check_base(self, q) -> None:
+    def check_base(self, q) -> None:
         """Refuse a base position beyond POSITION_SPAN times the scene's size (the engine's
         scene_inputs.h): farther, the contacts' geometry rounds beyond their tolerance."""
         lim = POSITION_SPAN * self.packed.vector[SP_SIZE]
-        far = ~(np.abs(np.atleast_2d(q)[:, :2]) <= lim)
+        qa = np.atleast_2d(q)
+        far = ~(np.abs(qa[:, :2]) <= lim)
         if far.any():
             idx = tuple(int(i) for i in np.argwhere(far)[0])
             where = idx if np.ndim(q) == 2 else (idx[1],)
             raise InputError(f"q: the base position (x, y) must be within +-{lim:.3g} m (a "
                              f"million times the scene's size: farther, the contact geometry's "
                              f"rounding exceeds the contacts' tolerance), found "
-                             f"{np.atleast_2d(q)[idx]:.3e} at index {where}")
+                             f"{qa[idx]:.3e} at index {where}")
 
     def _result(self, out, batched, inputs) -> SceneResult:
         if not batched and out[0, 0] == 3:

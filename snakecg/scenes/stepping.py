@@ -292,7 +292,7 @@ def _check_args(model, q0, v0, duration, dt, q_obj0, v_obj0, f_obj, tolerance):
                             f"{arr.flat[np.abs(arr).argmax()]:.3e}")
     if problems:
         raise InputError("simulate: " + "; ".join(problems))
-    model._check_base(q)  # (a run's start; its later steps move it by its velocities)
+    model.check_base(q)  # (a run's start; its later steps move it by its velocities)
     if isinstance(duration, (int, float)) and duration / dt > MAX_STEPS:
         raise InputError(f"simulate: duration / dt = {duration / dt:.3g} steps, more than "
                          f"{MAX_STEPS}; take a larger dt or a shorter run")

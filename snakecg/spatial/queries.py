@@ -64,7 +64,7 @@ class StateMaps:
         k = na + 1
         inputs = {name: value for name, value in model.scene_inputs.items()}
         o = kernels.call(model.backend, "contact_system_at_rest", n * k,
-                         q=kernels.at_origin(np.repeat(qa, k, axis=0))[0],
+                         q=np.repeat(kernels.at_origin(qa)[0], k, axis=0),
                          tau=np.tile(taus, (n, 1)),
                          q_obj=np.zeros(3), f_obj=np.zeros(3), rho=np.zeros(2), placed=[1.0],
                          **inputs)
