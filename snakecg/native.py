@@ -63,14 +63,16 @@ CORE_SOURCES = tuple(ENGINE_DIR / name
                      for name in ("contact.c", "forward.c", "rows.c", "integrate.c", "events.c",
                                   "run.c", "geometry.c", "sphere.c", "pieces.c", "maps.c", "qp.c",
                                   "certificate.c", "optimal.c", "max_sr.c", "push.c",
-                                  "wheel_states.c", "scene_sets.c", "scene_piece.c",
+                                  "wheel_states.c", "scene_sets.c", "scene_min_norm.c",
+                                  "scene_piece.c",
                                   "scene_primal.c", "scene_rescue.c", "scene_barrier.c",
                                   "scene_kkt.c", "scene_small.c", "scene_tiny.c",
                                   "scene_tiny_setup.c", "scene_solve.c", "scene_diag.c",
                                   "scene_block.c", "scene_geometry.c", "scene_place.c",
                                   "scene_rows.c", "scene_inputs.c", "scene_broad.c",
                                   "scene_metrics.c", "scene_work.c", "scene_step.c",
-                                  "scene_run.c", "scene_friction.c", "scene_friction_states.c"))
+                                  "scene_run.c", "scene_friction.c", "scene_friction_states.c",
+                                  "scene_family.c"))
 #: Its headers: engine.h (the types and prototypes), linalg.h (the small dense linear algebra),
 #: and a file's own (what two files of one step share), named after the C file defining it.
 CORE_HEADERS = (ENGINE_DIR / "engine.h", ENGINE_DIR / "linalg.h",

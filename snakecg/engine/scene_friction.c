@@ -45,6 +45,7 @@
 #include "snakecg_layout.h"
 #include "engine.h"
 #include "scene_friction_states.h"
+#include "scene_family.h"
 
 #define FP_MAX 400      /* fixed-point and Newton passes from each start */
 #define FP_QUICK 100    /* passes of the first start before a few candidates */
@@ -142,86 +143,32 @@ static double bound_of(sc_int j, sc_int nt, sc_int m, const sc_int *lead, const 
   return mu[j] * N * (T > 0 ? fabs(lam[m + j]) / T : 1.0 / (double)count);
 }
 
-/* Whether Coulomb's piece leaves the forces free at a solution (lam, w): the forces that may
- * move while every acceleration stays, as scene_sets.h's face rows for the convex sets. A
- * block held or still (its rows' w zero within TOL_ACCEPT of W) and of a set larger than {0}:
- * its rows; a frictional contact closed or still: its normal row, with its tangent row beside
- * it where it sticks (w_t zero: its friction may move inside the cone, at its edge too) or
- * tied to it (lam_t = -+ mu lam_n, the direction fixed by the slip) where it slips. These
- * unknowns' directions D (rows of A, tied pairs summed) are dependent where D M^-1 D^T, their
- * Gram in G, is singular (pivots at most DEP_TOL of the first, as the convex pieces'). A
- * one-dimensional family (null direction v) may still be pinned where the forces are: it
- * moves only where v or -v keeps the sets' active bounds (within TOL_ACCEPT of F: a normal
- * force at 0, a wheel's at its bound, a friction at its cone's edge; a disc or ellipse
- * counts as free). Returns the rank defect where the forces may move, 0 where they are
- * unique, -1 out of memory. */
-enum { U_FREE = 0, U_NORMAL, U_BOUND, U_CONE }; /* an unknown's set */
-static sc_int coulomb_defect(sc_int mt, sc_int nb, sc_int nt, sc_int m, const sc_int *kind,
-                             const sc_int *start, const double *par, const sc_int *rn,
-                             const double *mu, const double *G, const double *lam,
-                             const double *w, const double *st, double F, double W) {
-  sc_int k, i, j, u = 0, rank, def, *r1, *r2, *typ, *nrm;
-  double *P, *Q, *cf, *x, *v, *bd;
-  const double tol = TOL_ACCEPT * W, tf = TOL_ACCEPT * F;
-  P = (double *)malloc(sizeof(double) * (size_t)(3 * mt * mt + 5 * mt));
-  r1 = (sc_int *)malloc(sizeof(sc_int) * (size_t)(4 * mt));
-  if (!P || !r1) {
-    free(P), free(r1);
-    return -1;
+/* The minimum-norm member lam of a Coulomb family (pl: the solution's forces, a and w its
+ * accelerations) kept: its accelerations pa = M^-1 (f + A^T lam) move from a by rounding
+ * (|Z (lam - pl)|, the kinetic metric's, at most 1e-12 of sqrt(F W)) and Coulomb's residuals
+ * hold at them; a and w are then lam's, res its residuals. 0 where not (nothing changed). */
+static int family_kept(sc_int n, sc_int mt, sc_int nt, sc_int m, const double *L,
+                       const double *Z, const double *g, const double *c, const double *A,
+                       const sc_int *rn, const sc_int *lead, const double *mu, const double *pl,
+                       const double *lam, double *a, double *pa, double *pw, double *w,
+                       const double *scale, double *res) {
+  double quad = 0.0, r[3];
+  sc_int i, j;
+  for (i = 0; i < n; ++i) {
+    double t = 0.0;
+    for (j = 0; j < mt; ++j) t += Z[j * n + i] * (lam[j] - pl[j]);
+    quad += t * t;
   }
-  Q = P + mt * mt, v = Q + mt * mt, cf = v + mt * mt, x = cf + mt, bd = cf + 4 * mt;
-  r2 = r1 + mt, typ = r2 + mt, nrm = typ + mt;
-  for (k = 0; k < nb; ++k) {
-    const sc_int r = start[k], nk = sc_block_size(kind[k]);
-    int still = 1, free_set = kind[k] == K_FREE || kind[k] == K_UNILATERAL ||
-                               (kind[k] == K_SPLIT ? par[3 * k + 2] > 0 && (par[3 * k] > 0 ||
-                                par[3 * k + 1] > 0) : par[3 * k] > 0);
-    for (i = 0; i < nk; ++i) still &= fabs(w[r + i]) <= tol;
-    if (!free_set || !(st[k] == S_HELD || still)) continue;
-    for (i = 0; i < nk; ++i, ++u) {
-      r1[u] = r + i, r2[u] = -1, cf[u] = 0.0, bd[u] = par[3 * k];
-      typ[u] = kind[k] == K_UNILATERAL ? U_NORMAL : kind[k] == K_BOX ? U_BOUND : U_FREE;
-    }
-    if (k >= nt || !(mu[k] > 0) || r != rn[k]) continue; /* (a contact's normal row) */
-    if (fabs(w[m + k]) <= tol) { /* sticks */
-      r1[u] = m + k, r2[u] = -1, cf[u] = 0.0, typ[u] = U_CONE, nrm[u] = u - 1, bd[u] = mu[k];
-      ++u;
-    } else /* slips */
-      r2[u - 1] = m + k, cf[u - 1] = lam[m + k] > 0 ? mu[k] : -mu[k];
-  }
-  for (i = 0; i < u; ++i) /* the Gram matrix of the directions A_r1 + cf A_r2 */
-    for (j = 0; j <= i; ++j) {
-      double t = G[r1[i] * mt + r1[j]];
-      if (r2[j] >= 0) t += cf[j] * G[r1[i] * mt + r2[j]];
-      if (r2[i] >= 0) t += cf[i] * G[r2[i] * mt + r1[j]];
-      if (r2[i] >= 0 && r2[j] >= 0) t += cf[i] * cf[j] * G[r2[i] * mt + r2[j]];
-      P[i * u + j] = P[j * u + i] = Q[i * u + j] = Q[j * u + i] = t;
-    }
-  for (i = 0; i < u; ++i) x[i] = 0.0; /* (a right-hand side: only the rank is read) */
-  rank = u > 0 ? sc_psd_solve(u, P, u, x, DEP_TOL, cf + 2 * mt, cf + 3 * mt, r2) : 0;
-  def = u - rank;
-  if (def == 1) { /* the null direction (Q's least eigenvalue's vector), pinned or not */
-    int ok[2] = {1, 1};
-    sc_int side;
-    sc_eigen_symmetric(u, Q, u, x, v, u);
-    for (i = 0; i < u; ++i) {
-      const double l = lam[r1[i]], d = v[i * u];
-      for (side = 0; side < 2; ++side) {
-        const double e = side ? -d : d;
-        if (typ[i] == U_NORMAL && l <= tf && e < -TOL_ACCEPT) ok[side] = 0;
-        if (typ[i] == U_BOUND && fabs(l) >= bd[i] - tf && (l > 0 ? e : -e) > TOL_ACCEPT)
-          ok[side] = 0;
-        if (typ[i] == U_CONE) { /* lam_t -+ mu lam_n <= 0 where at the edge */
-          const double ln = lam[r1[nrm[i]]], en = side ? -v[nrm[i] * u] : v[nrm[i] * u];
-          if (l >= bd[i] * ln - tf && e - bd[i] * en > TOL_ACCEPT) ok[side] = 0;
-          if (-l >= bd[i] * ln - tf && -e - bd[i] * en > TOL_ACCEPT) ok[side] = 0;
-        }
-      }
-    }
-    if (!ok[0] && !ok[1]) def = 0;
-  }
-  free(P), free(r1);
-  return def;
+  if (!(quad <= 1e-24 * scale[0] * scale[1])) return 0;
+  accelerations(n, mt, L, Z, g, lam, pa);
+  for (i = 0; i < mt; ++i) pw[i] = sc_dot(A + i * n, pa, n) + (c ? c[i] : 0.0);
+  memcpy(r, res, sizeof r);
+  sc_coulomb_residuals(m, nt, rn, lead, mu, lam, pw, scale, r);
+  if (!(r[0] <= TOL_ACCEPT && r[1] <= TOL_ACCEPT && r[2] <= TOL_ACCEPT)) return 0;
+  memcpy(a, pa, sizeof(double) * (size_t)n);
+  memcpy(w, pw, sizeof(double) * (size_t)mt);
+  memcpy(res, r, sizeof r);
+  return 1;
 }
 
 /* The pieces of the last inner solve as the next one's start (core_scene_solve_s's `from`). */
@@ -458,16 +405,30 @@ passes:
     sc_coulomb_residuals(m, nt, rn, lead, mu, lam, w, scale, res);
     info[2] = res[0], info[3] = res[1], info[4] = res[2];
     ok = res[0] <= TOL_ACCEPT && res[1] <= TOL_ACCEPT && res[2] <= TOL_ACCEPT;
-    if (ok && info[1] == 0.0) { /* the solve's rows independent: Coulomb's piece
-      may still not be (a contact sticking at its cone's edge, bounded as a saturated box by
-      the fixed point, or a slip candidate's normal force that no row's acceleration reads) */
-      sc_int def = coulomb_defect(mt, nb, nt, m, kind, start, par, rn, mu, G, lam, w, st,
-                                  scale[0], scale[1]);
-      if (def < 0) {
+    if (ok && info[1] != 3.0) { /* Coulomb's own piece (scene_family.c), whatever the last
+      exact solve's rows: a family of forces (a contact sticking at its cone's edge, bounded
+      as a saturated box by the fixed point; a slip candidate's normal force that no row's
+      acceleration reads; dependent rows), its minimum-norm member, kept where its
+      accelerations are the same to rounding and Coulomb's residuals hold */
+      const sc_family fam = {mt, nb, nt, m, kind, start, rn, par, mu, G, w, st, scale[0],
+                             scale[1]};
+      int chosen;
+      sc_int def;
+      memcpy(pl, lam, sizeof(double) * (size_t)mt);
+      if ((def = sc_coulomb_family(&fam, lam, &chosen)) < 0) {
         code = -1;
         goto done;
       }
-      if (def > 0) info[1] = 2.0, info[7] = (double)def; /* (dependent, rank defect) */
+      if (chosen && !family_kept(n, mt, nt, m, L, Z, g, c, A, rn, lead, mu, pl, lam, a, pa, pw,
+                                 w, scale, res)) {
+        memcpy(lam, pl, sizeof(double) * (size_t)mt);
+        chosen = 0;
+      }
+      for (k = 0; chosen && k < nb; ++k) /* (a contact's state: held where it now pushes) */
+        if (kind[k] == K_UNILATERAL && lam[start[k]] != pl[start[k]])
+          st[k] = lam[start[k]] > 0 ? S_HELD : S_ZERO;
+      info[1] = def == 0 ? 0.0 : chosen ? 1.0 : 2.0, info[7] = (double)def;
+      info[2] = res[0], info[3] = res[1], info[4] = res[2];
     }
   }
   if (!ok) { /* (an inner solve's own status kept: not converged, a singular mass matrix) */

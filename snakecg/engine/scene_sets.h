@@ -8,6 +8,21 @@
  * copy of the same passes (scene_tiny.c) */
 enum { INFO_STATUS = 0, INFO_DEPENDENT, INFO_PRIMAL, INFO_DUAL, INFO_COMPL, INFO_SWEEPS,
        INFO_PASSES, INFO_RANK_DEFECT, INFO_WIDTH };
+/* Two more sets, of a Coulomb family's minimum-norm member only (scene_family.c; par: mu, c):
+ * a contact's (normal, tangent) forces in Coulomb's cone |lam_t| <= mu lam_n, or on the ray
+ * lam_t = c lam_n, lam_n >= 0 of a slipping contact. */
+enum { K_CONE = 5, K_RAY = 6 };
+
+/* The minimum-norm forces lam (nf rows, in: one member, out: the minimum-norm one; fk: their
+ * blocks in p, whose kind, par and fscale are read) among those with the same accelerations:
+ * lam moved in the null space of the rows' Gram matrix Gff (nf x nf, row-major, its lower
+ * triangle read and overwritten; pivots at most tol of the first) and kept in the blocks'
+ * sets (scene_min_norm.c's Newton on the dual). Returns 0 where that null space is empty,
+ * 1 with the minimum-norm forces in lam, 2 where they were not found (lam as it was).
+ * Work: 3 nf^2 + 13 nf doubles. */
+SC_INTERNAL int sc_min_norm_rows(const sc_problem *p, sc_int nf, const sc_int *fk, double *Gff,
+                                 double tol, double *lam, double *work);
+
 #define GUESS_PASSES 3 /* active-set passes from the held guess (rows <= coordinates) */
 #define FROM_PASSES 4 /* from the caller's start (the last time step's pieces) */
 
