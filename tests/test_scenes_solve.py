@@ -283,7 +283,8 @@ def test_scene_solve_is_strict_c99(tmp_path):
     _, manifest = model_dir(1)
     (tmp_path / "snakecg_layout.h").write_text(header(manifest))
     cc = shutil.which("cc") or shutil.which("gcc")
-    for name in ("scene_sets.c", "scene_piece.c", "scene_solve.c"):
+    for name in ("scene_sets.c", "scene_min_norm.c", "scene_piece.c", "scene_solve.c",
+                 "scene_family.c", "scene_friction.c"):
         res = subprocess.run([cc, "-std=c99", "-Wall", "-Wextra", "-pedantic", "-Werror", "-O2",
                               "-fPIC", "-I", str(tmp_path), "-I", str(ENGINE_DIR), "-c",
                               str(ENGINE_DIR / name), "-o", str(tmp_path / "s.o")],

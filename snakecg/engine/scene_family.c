@@ -3,8 +3,9 @@
  * stays, and where it does, the family's minimum-norm member.
  *
  * The unknowns: the forces that may move while every acceleration stays, as scene_sets.h's
- * face rows for the convex sets. A block held or still (its rows' w zero within TOL_ACCEPT of
- * W) and of a set larger than {0}: its rows; a frictional contact closed or still: its normal
+ * face rows for the convex sets. A block still (its rows' w zero within TOL_ACCEPT of W,
+ * whatever its state: a contact read held at zero force may be opening) and of a set larger
+ * than {0}: its rows; a frictional contact closed or still: its normal
  * row, with its tangent row beside it where it sticks (w_t zero: its friction may move inside
  * the cone, at its edge too) or tied to it (lam_t = -+ mu lam_n, the direction fixed by the
  * slip) where it slips.
@@ -83,7 +84,8 @@ SC_INTERNAL sc_int sc_coulomb_family(const sc_family *c, double *lam, int *chose
                                (kind[k] == K_SPLIT ? par[3 * k + 2] > 0 && (par[3 * k] > 0 ||
                                 par[3 * k + 1] > 0) : par[3 * k] > 0);
     for (i = 0; i < nk; ++i) still &= fabs(w[r + i]) <= tol;
-    if (!free_set || !(c->st[k] == S_HELD || still)) continue;
+    if (!free_set || !still) continue; /* (held or not: a force moves only where its rows
+      do not accelerate; a contact read held at zero force may open) */
     for (i = 0; i < nk; ++i, ++u) {
       r1[u] = r + i, r2[u] = -1, cf[u] = 0.0, bd[u] = par[3 * k], blk[u] = k;
       typ[u] = kind[k] == K_UNILATERAL ? U_NORMAL : kind[k] == K_BOX ? U_BOUND : U_FREE;

@@ -6,12 +6,12 @@
 /* A solution of the contact-friction solve: its mt rows (m the convex solve's, then the nt
  * contacts' tangent rows), nb blocks (contact k's normal block k, row rn[k]; its tangent row
  * m + k), the sets (kind, start, par), the contacts' coefficients mu, G = A M^-1 A^T (mt x mt),
- * the rows' accelerations w, the blocks' states st, the forces' scale F and the
+ * the rows' accelerations w, the forces' scale F and the
  * accelerations' W. */
 typedef struct {
   sc_int mt, nb, nt, m;
   const sc_int *kind, *start, *rn;
-  const double *par, *mu, *G, *w, *st;
+  const double *par, *mu, *G, *w;
   double F, W;
 } sc_family;
 

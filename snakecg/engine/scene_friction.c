@@ -410,8 +410,7 @@ passes:
       as a saturated box by the fixed point; a slip candidate's normal force that no row's
       acceleration reads; dependent rows), its minimum-norm member, kept where its
       accelerations are the same to rounding and Coulomb's residuals hold */
-      const sc_family fam = {mt, nb, nt, m, kind, start, rn, par, mu, G, w, st, scale[0],
-                             scale[1]};
+      const sc_family fam = {mt, nb, nt, m, kind, start, rn, par, mu, G, w, scale[0], scale[1]};
       int chosen;
       sc_int def;
       memcpy(pl, lam, sizeof(double) * (size_t)mt);
