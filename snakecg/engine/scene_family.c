@@ -73,8 +73,9 @@ SC_INTERNAL sc_int sc_coulomb_family(const sc_family *c, double *lam, int *chose
     free(P), free(r1);
     return -1;
   }
-  Q = P + mt * mt, v = Q + mt * mt, Gf = v + mt * mt, wk = Gf + mt * mt; /* (wk: 3 mt^2 + 13 mt) */
-  cf = wk + 3 * mt * mt + 13 * mt, x = cf + mt, bd = x + mt, sw = bd + mt, fpar = sw + 2 * mt;
+  Q = P + mt * mt, v = Q + mt * mt, Gf = v + mt * mt, wk = Gf + mt * mt; /* (wk: 3 mt^2
+    + 14 mt) */
+  cf = wk + 3 * mt * mt + 14 * mt, x = cf + mt, bd = x + mt, sw = bd + mt, fpar = sw + 2 * mt;
   lf = fpar + 3 * mt;
   r2 = r1 + mt, typ = r2 + mt, nrm = typ + mt, blk = nrm + mt, perm = blk + mt, F = perm + mt;
   fk = F + mt, fkind = fk + mt;

@@ -144,9 +144,11 @@ static double bound_of(sc_int j, sc_int nt, sc_int m, const sc_int *lead, const 
 }
 
 /* The minimum-norm member lam of a Coulomb family (pl: the solution's forces, a and w its
- * accelerations) kept: its accelerations pa = M^-1 (f + A^T lam) move from a by rounding
- * (|Z (lam - pl)|, the kinetic metric's, at most 1e-12 of sqrt(F W)) and Coulomb's residuals
- * hold at them; a and w are then lam's, res its residuals. 0 where not (nothing changed). */
+ * accelerations) kept: its accelerations pa = M^-1 (f + A^T lam) move from a by little (the
+ * kinetic metric's |Z (lam - pl)| at most 5e-10 of sqrt(F W), as a convex face's loose
+ * choice: the family's null space is G_FF's to DEP_TOL, nearly dependent rows taken as
+ * dependent) and Coulomb's residuals hold at them; a and w are then lam's, res its
+ * residuals. 0 where not (nothing changed). */
 static int family_kept(sc_int n, sc_int mt, sc_int nt, sc_int m, const double *L,
                        const double *Z, const double *g, const double *c, const double *A,
                        const sc_int *rn, const sc_int *lead, const double *mu, const double *pl,
@@ -159,7 +161,7 @@ static int family_kept(sc_int n, sc_int mt, sc_int nt, sc_int m, const double *L
     for (j = 0; j < mt; ++j) t += Z[j * n + i] * (lam[j] - pl[j]);
     quad += t * t;
   }
-  if (!(quad <= 1e-24 * scale[0] * scale[1])) return 0;
+  if (!(quad <= 25e-20 * scale[0] * scale[1])) return 0;
   accelerations(n, mt, L, Z, g, lam, pa);
   for (i = 0; i < mt; ++i) pw[i] = sc_dot(A + i * n, pa, n) + (c ? c[i] : 0.0);
   memcpy(r, res, sizeof r);
@@ -435,12 +437,16 @@ passes:
     for (i = 0; i < n; ++i) a[i] = NAN;
     for (i = 0; i < mt; ++i) lam[i] = NAN;
   }
-  for (k = 0; k < nc; ++k) /* the contacts' friction force and state */
+  for (k = 0; k < nc; ++k) { /* the contacts' state (open where it pushes not and opens:
+    a reading of held at zero force is the inner solve's), friction force and its state */
+    if (ok && kind[k] == K_UNILATERAL && !(lam[rn[k]] > 0) && w[rn[k]] > TOL_ACCEPT * scale[1])
+      st[k] = S_ZERO;
     if (mu[k] > 0) {
       rec[CR_W * k + REC_FT] = lam[m + k];
       rec[CR_W * k + REC_ST] = !(lam[rn[k]] > 0) ? 1.0 : fabs(w[m + k]) > TOL_ACCEPT *
                                scale[1] ? 2.0 : 0.0;
     }
+  }
   code = 0;
 done:
   free(d);

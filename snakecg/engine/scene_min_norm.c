@@ -30,8 +30,8 @@ static void orthonormalize(sc_int n, sc_int nn, double *V) {
 
 /* An orthonormal basis of the null space of the positive semidefinite n x n A (row-major, its
  * lower triangle read and overwritten): the pivoted L D L^T of sc_psd_solve stopped at pivots
- * of at most tol of the first (NULL_TOL on a face), the null vectors P [-L11^-T L21^T; I] orthonormalized
- * (Gram-Schmidt, twice). Basis vector t at V + t * n (contiguous); returns their number.
+ * of at most tol of the first (NULL_TOL on a face), the null vectors P [-L11^-T L21^T; I]
+ * orthonormalized (Gram-Schmidt, twice). Basis vector t at V + t * n (contiguous); returns their number.
  * Work: 2 n doubles, n sc_ints in perm. */
 static sc_int null_space(sc_int n, double *A, double *V, double *work, sc_int *perm,
                          double tol) {
@@ -223,8 +223,11 @@ static void refine_null(const sc_problem *p, const double *Z, sc_int nf, const s
  * extent, not projected here; or no progress). fkp (or NULL): where it holds a dual point on
  * this face, the Newton starts there (its part in V's complement) instead of at l0, the last
  * choice's answer being near (a fixed point's next inner solve; 8.5 steps a choice on the
- * 10-joint scene from l0); it keeps its own point where it succeeds.
- * Work: 2 nf^2 + 9 nf doubles. */
+ * 10-joint scene from l0); it keeps its own point where it succeeds. best (nf doubles, or
+ * NULL): where the Newton stops short, the forces of its best iterate are taken where its |F|
+ * is at most MN_FLOOR of the scale (a Coulomb family's choice: its last steps may jump off a
+ * floor of 1e-13 of the scale that the line search, flat there, takes).
+ * Work: 2 nf^2 + 12 nf doubles. */
 /* min_norm_in_sets' Newton steps at most: damped, they may creep at first (on 10-joint
  * faces at ordinary configurations: 62 and 186 steps, then quadratic) */
 #define MN_ITERATIONS 200
@@ -237,14 +240,14 @@ static void refine_null(const sc_problem *p, const double *Z, sc_int nf, const s
 #define MN_FLOOR 1e-11
 static int min_norm_in_sets(const sc_problem *p, sc_int nf, const sc_int *fk, const double *l0,
                             const double *V, sc_int nn, double *lam, double *work,
-                            sc_face_keep *fkp) {
+                            sc_face_keep *fkp, double *best) {
   double *mu = work, *pi = mu + nf, *F = pi + nf, *del = F + nf, *tr = del + nf,
          *cap = tr + nf, *C = cap + 4 * nf, *VS = C + nf * nf, *x = VS + nf * nn, *y = x + nf,
          *sw = y + nf;
   sc_int S[512], perm[512], cs[512], ct[512], ns = 0, it, i, j, t, stalls = 0;
   const double *U[512]; /* (a capacitance row's direction in its block's plane, or NULL: the
     row S itself) */
-  double scale = p->fscale, dv = 0.0, fprev = INFINITY;
+  double scale = p->fscale, dv = 0.0, fprev = INFINITY, bfn = INFINITY;
   for (i = 0; i < nf; i += sc_block_size(p->kind[fk[i]])) { /* (a split ellipse with a
     half of no extent: not projected here) */
     const double *q = p->par + 3 * fk[i];
@@ -284,6 +287,8 @@ static int min_norm_in_sets(const sc_problem *p, sc_int nf, const sc_int *fk, co
       for (i = 0; i < nf; ++i) F[i] -= c * V[t * nf + i];
     }
     for (i = 0; i < nf; ++i) fn = fmax(fn, fabs(F[i]));
+    if (best && fn < bfn) /* (the best iterate's forces, where the caller keeps them) */
+      bfn = fn, memcpy(best, pi, sizeof(double) * (size_t)nf);
     if (fn <= 1e-14 * scale ||
         (((fn > 0.999 * fprev && ++stalls > 20) || it == MN_ITERATIONS) &&
          fn <= MN_FLOOR * scale)) { /* (damped from the first stall on) */
@@ -291,7 +296,7 @@ static int min_norm_in_sets(const sc_problem *p, sc_int nf, const sc_int *fk, co
       if (fkp) memcpy(fkp->mu, mu, sizeof(double) * (size_t)nf), fkp->has_mu = 1;
       return 1;
     }
-    if (stalls > 20 || it == MN_ITERATIONS) return 0;
+    if (stalls > 20 || it == MN_ITERATIONS) break;
     { /* the capacitance's rows S: every row of a block outside its set (a cone's edge or
       a ray: its one direction u across it, S its block's first row) */
       sc_int r = 0, b;
@@ -341,7 +346,7 @@ static int min_norm_in_sets(const sc_problem *p, sc_int nf, const sc_int *fk, co
       }
     }
     fprev = fn;
-    if (!(slope > 0)) return 0;
+    if (!(slope > 0)) break;
     for (ls = 0; ls < 40; ++ls, st *= 0.5) { /* the step, halved while d does not rise */
       double dt = 0.0;
       sc_int nt = 0;
@@ -356,8 +361,14 @@ static int min_norm_in_sets(const sc_problem *p, sc_int nf, const sc_int *fk, co
         break;
       }
     }
-    if (ls == 40) return 0;
+    if (ls == 40) break;
   }
+  if (best && bfn <= MN_FLOOR * scale) { /* (no progress, or a last step off a floor that the
+    line search took: the best iterate, where it is at that floor) */
+    memcpy(lam, best, sizeof(double) * (size_t)nf);
+    return 1;
+  }
+  return 0;
 }
 
 /* Minimum-norm forces on the face (every block whose rows do not accelerate: the forces of
@@ -450,8 +461,8 @@ SC_INTERNAL int sc_min_norm_basis(sc_problem *p, const double *Z, sc_int nf, con
       dual's Newton */
       const int warm = fkp && fkp->has_mu; /* (from the kept point: where that fails, from
         l0 again, as without it) */
-      if (!min_norm_in_sets(p, nf, fk, l0, V, nnull, l0, l0 + nf, fkp) &&
-          !(warm && min_norm_in_sets(p, nf, fk, l0, V, nnull, l0, l0 + nf, fkp)))
+      if (!min_norm_in_sets(p, nf, fk, l0, V, nnull, l0, l0 + nf, fkp, NULL) &&
+          !(warm && min_norm_in_sets(p, nf, fk, l0, V, nnull, l0, l0 + nf, fkp, NULL)))
         return loose_try(p, nf, F, have ? kept : NULL);
     } else if (!inside) { /* one null direction: the forces' interval along it */
       double tstar = 0.0, lim[2];
@@ -509,33 +520,6 @@ SC_INTERNAL int sc_min_norm_basis(sc_problem *p, const double *Z, sc_int nf, con
 }
 
 
-/* Where min_norm_in_sets' Newton fails (a step off a start already at its floor that its
- * line search takes, then no progress: met on Coulomb families whose forces the fixed point
- * left at their minimum-norm member to 1e-11), its start mu = l0 taken where |F| is at most
- * MN_FLOOR of the scale there: lam = Pi(l0). 0 where it is not (lam as it was).
- * Work: 7 nf doubles. */
-static int at_start(const sc_problem *p, sc_int nf, const sc_int *fk, const double *l0,
-                    const double *V, sc_int nn, double *lam, double *work) {
-  double *pi = work, *F = pi + nf, *cap = F + nf, scale = p->fscale, fn = 0.0;
-  sc_int i, t;
-  for (i = 0; i < nf; ++i) scale = fmax(scale, fabs(l0[i]));
-  for (i = 0; i < nf; i += sc_block_size(p->kind[fk[i]])) {
-    const double *q = p->par + 3 * fk[i];
-    if (p->kind[fk[i]] == K_SPLIT && !(q[0] > 0 && q[1] > 0 && q[2] > 0)) return 0;
-    project(p, fk[i], l0 + i, pi + i, cap);
-  }
-  for (i = 0; i < nf; ++i) F[i] = pi[i] - l0[i];
-  for (t = 0; t < nn; ++t) { /* F = (I - V V^T)(Pi - l0) */
-    double c = 0.0;
-    for (i = 0; i < nf; ++i) c += V[t * nf + i] * F[i];
-    for (i = 0; i < nf; ++i) F[i] -= c * V[t * nf + i];
-  }
-  for (i = 0; i < nf; ++i) fn = fmax(fn, fabs(F[i]));
-  if (!(fn <= MN_FLOOR * scale)) return 0;
-  memcpy(lam, pi, sizeof(double) * (size_t)nf);
-  return 1;
-}
-
 /* The minimum-norm forces among those of a family (declared in scene_sets.h). */
 SC_INTERNAL int sc_min_norm_rows(const sc_problem *p, sc_int nf, const sc_int *fk, double *Gff,
                                  double tol, double *lam, double *work) {
@@ -549,6 +533,6 @@ SC_INTERNAL int sc_min_norm_rows(const sc_problem *p, sc_int nf, const sc_int *f
     for (i = 0; i < nf; ++i) c += V[t * nf + i] * l0[i];
     for (i = 0; i < nf; ++i) l0[i] -= c * V[t * nf + i];
   }
-  if (min_norm_in_sets(p, nf, fk, l0, V, nn, lam, ev, NULL)) return 1;
-  return at_start(p, nf, fk, l0, V, nn, lam, ev) ? 1 : 2;
+  return min_norm_in_sets(p, nf, fk, l0, V, nn, lam, ev, NULL, ev + 2 * nf * nf + 12 * nf) ?
+         1 : 2;
 }

@@ -19,7 +19,7 @@ enum { K_CONE = 5, K_RAY = 6 };
  * triangle read and overwritten; pivots at most tol of the first) and kept in the blocks'
  * sets (scene_min_norm.c's Newton on the dual). Returns 0 where that null space is empty,
  * 1 with the minimum-norm forces in lam, 2 where they were not found (lam as it was).
- * Work: 3 nf^2 + 13 nf doubles. */
+ * Work: 3 nf^2 + 14 nf doubles. */
 SC_INTERNAL int sc_min_norm_rows(const sc_problem *p, sc_int nf, const sc_int *fk, double *Gff,
                                  double tol, double *lam, double *work);
 

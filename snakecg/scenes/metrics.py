@@ -52,8 +52,10 @@ class SceneResult:
     ``certificate``: the KKT residuals (relative primal, dual, complementarity),
     ``dependent``: the held rows were dependent (statically indeterminate; the forces the
     minimum-norm ones inside their sets: 1, or not found to rounding, a basic solution of
-    the face kept: 2; with contact friction also 2 where Coulomb's own piece leaves the
-    forces a family with the same accelerations), or nearly dependent beyond what the solve resolves (3: a near miss,
+    the face kept: 2; with contact friction, Coulomb's own piece decides: 0 where it allows
+    one force at these accelerations, 1 where its family's minimum-norm member is returned
+    (sticking contacts in their cones, slipping ones on their rays), 2 where that member was
+    not found), or nearly dependent beyond what the solve resolves (3: a near miss,
     certified to its ``certificate``, at most 1e-7 instead of 1e-9), ``status``
     (:data:`STATUS_NAMES`) and
     ``reason`` (why a sample was not solved, '' when it was). With contact friction
