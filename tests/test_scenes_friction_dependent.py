@@ -94,8 +94,8 @@ def _ends_linear(sets, c):
     return ends
 
 
-def _ends_conic(sets, c):
-    """min and max of c . lam over a set with discs (cvxpy, Clarabel), or None."""
+def _conic(sets):
+    """The set as cvxpy's variable and constraints (its discs as second-order cones)."""
     import cvxpy as cp
 
     A_eq, b_eq, A_ub, bounds, discs = sets
@@ -105,15 +105,27 @@ def _ends_conic(sets, c):
         cons += ([lam[i] >= lo] if lo is not None else []) + ([lam[i] <= hi] if hi is not None
                                                                else [])
     cons += [cp.norm(lam[rows]) <= radius for rows, radius in discs]
+    return lam, cons
+
+
+def _solve(objective, cons, tol):
+    import cvxpy as cp
+
+    prob = cp.Problem(cp.Minimize(objective), cons)
+    with warnings.catch_warnings():  # ("may be inaccurate": the status says it)
+        warnings.simplefilter("ignore", UserWarning)
+        prob.solve(solver="CLARABEL", tol_gap_abs=tol, tol_gap_rel=tol, tol_feas=tol)
+    return prob.status
+
+
+def _ends_conic(sets, c):
+    """min and max of c . lam over a set with discs (cvxpy, Clarabel), or None."""
+    lam, cons = _conic(sets)
     ends = []
     for sign in (1.0, -1.0):
-        prob = cp.Problem(cp.Minimize(sign * c @ lam), cons)
-        with warnings.catch_warnings():  # ("may be inaccurate": the status says it)
-            warnings.simplefilter("ignore", UserWarning)
-            prob.solve(solver="CLARABEL", tol_gap_abs=1e-10, tol_gap_rel=1e-10, tol_feas=1e-10)
-        if prob.status not in ("optimal", "optimal_inaccurate"):  # (the latter: its
-            return None  # tolerances not all met to 1e-10, far inside the widths' margins)
-        ends.append(lam.value)
+        if _solve(sign * c @ lam, cons, 1e-10) not in ("optimal", "optimal_inaccurate"):
+            return None  # (the latter: its tolerances not all met to 1e-10, far inside the
+        ends.append(lam.value)  # widths' margins)
     return ends
 
 
@@ -122,18 +134,8 @@ def min_norm(p, a):
     reach its tolerances."""
     import cvxpy as cp
 
-    A_eq, b_eq, A_ub, bounds, discs = force_set(p, a)
-    lam = cp.Variable(A_eq.shape[1])
-    cons = [A_eq @ lam == b_eq] + ([A_ub @ lam <= 0] if len(A_ub) else [])
-    for i, (lo, hi) in enumerate(bounds):
-        cons += ([lam[i] >= lo] if lo is not None else []) + ([lam[i] <= hi] if hi is not None
-                                                               else [])
-    cons += [cp.norm(lam[rows]) <= radius for rows, radius in discs]
-    prob = cp.Problem(cp.Minimize(cp.sum_squares(lam)), cons)
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore", UserWarning)
-        prob.solve(solver="CLARABEL", tol_gap_abs=1e-12, tol_gap_rel=1e-12, tol_feas=1e-12)
-    return lam.value if prob.status == "optimal" else None
+    lam, cons = _conic(force_set(p, a))
+    return lam.value if _solve(cp.sum_squares(lam), cons, 1e-12) == "optimal" else None
 
 
 def engine_lam(res, p):
