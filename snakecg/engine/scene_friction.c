@@ -25,9 +25,10 @@
  *      candidates, more;
  *   4. Coulomb's residuals apart from the final accelerations (w = A a + c: the normal
  *      complementarity, the cone, stick, slip against the sliding) into the certificate; not
- *      settled, or above TOL_ACCEPT: not solved (FR_NOT_SETTLED, NaN); solved with the
- *      last exact solve's rows independent, Coulomb's own piece checked (coulomb_defect):
- *      where it leaves the forces a family, the dependent flag 2;
+ *      settled, or above TOL_ACCEPT: not solved (FR_NOT_SETTLED, NaN); solved, Coulomb's
+ *      own piece checked (scene_family.c): where it leaves the forces a family with the same
+ *      accelerations, its minimum-norm member taken (the dependent flag 1; 2 where it was
+ *      not found, 0 where the forces are unique, whatever the last exact solve's rows);
  *   5. the candidates (scene_friction_states.c): the frictional contacts' states (open,
  *      stick, slip either way) fixed, each candidate's equations solved exactly (a slipping
  *      contact's normal force the unknown, its friction tied to it), accepted only where 4.'s
