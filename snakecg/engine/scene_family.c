@@ -5,10 +5,9 @@
  * The unknowns: the forces that may move while every acceleration stays, as scene_sets.h's
  * face rows for the convex sets. A block still (its rows' w zero within TOL_ACCEPT of W,
  * whatever its state: a contact read held at zero force may be opening) and of a set larger
- * than {0}: its rows; a frictional contact closed or still: its normal
- * row, with its tangent row beside it where it sticks (w_t zero: its friction may move inside
- * the cone, at its edge too) or tied to it (lam_t = -+ mu lam_n, the direction fixed by the
- * slip) where it slips.
+ * than {0}: its rows; for a frictional contact so, its normal row with its tangent row
+ * beside it where it sticks (w_t zero: its friction may move inside the cone, at its edge
+ * too) or tied to it (lam_t = -+ mu lam_n, the direction fixed by the slip) where it slips.
  * The defect: these unknowns' directions D (rows of A, tied pairs summed) are dependent where
  * D M^-1 D^T, their Gram in G, is singular (pivots at most DEP_TOL of the first, as the convex
  * pieces'). A one-dimensional family (null direction v) may still be pinned where the forces
