@@ -31,7 +31,8 @@ static void orthonormalize(sc_int n, sc_int nn, double *V) {
 /* An orthonormal basis of the null space of the positive semidefinite n x n A (row-major, its
  * lower triangle read and overwritten): the pivoted L D L^T of sc_psd_solve stopped at pivots
  * of at most tol of the first (NULL_TOL on a face), the null vectors P [-L11^-T L21^T; I]
- * orthonormalized (Gram-Schmidt, twice). Basis vector t at V + t * n (contiguous); returns their number.
+ * orthonormalized (Gram-Schmidt, twice). Basis vector t at V + t * n (contiguous); returns
+ * their number.
  * Work: 2 n doubles, n sc_ints in perm. */
 static sc_int null_space(sc_int n, double *A, double *V, double *work, sc_int *perm,
                          double tol) {
