@@ -150,6 +150,19 @@ def test_cli_forward_and_plot_take_a_scene(tmp_path):
     out = json.loads(r.stdout)
     assert {"qdd", "a_obj", "sr", "contacts", "objects", "ground", "certificate"} <= set(out)
     assert len(out["contacts"]) == 2 and out["contacts"][0]["bodies"] == ["link 1", "object 1"]
+    # the text: counts with their nouns, one line per ground set with its force as in the JSON
+    r = _cli("forward", "--scene", str(p), "--q", "0,0,0,0.3,-0.3,0.2", "--tau", "0.1,0,0")
+    assert r.returncode == 0, r.stderr
+    lines = r.stdout.splitlines()
+    assert lines[0] == "3 joints, 1 object, 1 obstacle, 2 contacts", lines[0]
+    ground = [ln for ln in lines if ln.startswith("  ground under ")]
+    assert len(ground) == len(out["ground"])
+    for ln, g in zip(ground, out["ground"]):
+        body = f"link {g['link']}" if "link" in g else f"object {g['object']}"
+        assert ln.startswith(f"  ground under {body} ({g['model']}): force ["), ln
+        shown = [float(x) for x in ln.split("[")[1].split("]")[0].split()]
+        assert np.allclose(shown, g["force"], rtol=1e-5, atol=1e-6) and ln.endswith(g["state"])
+    assert "-0. " not in r.stdout and "-0.]" not in r.stdout
     r = _cli("plot", "--scene", str(p), "--q", "0,0,0,0.3,-0.3,0.2", "--tau", "0.1,0,0",
              "--out", str(tmp_path / "s.png"))
     assert r.returncode == 0, r.stderr and (tmp_path / "s.png").stat().st_size > 0

@@ -28,6 +28,16 @@ _DEPENDENT = {1: "dependent constraint rows (statically indeterminate); minimum-
               3: "nearly dependent constraint rows; the answer holds to its KKT residuals"}
 
 
+def _count(k: int, noun: str) -> str:
+    return f"{k} {noun}" + ("" if k == 1 else "s")
+
+
+def _shown(x) -> np.ndarray:
+    """x as printed (six decimals): entries that print as zero without their sign."""
+    x = np.asarray(x, dtype=float)
+    return np.where(np.round(x, 6) == 0.0, 0.0, x)
+
+
 def forward_command(args, scene, schema: str) -> int:
     from .. import load
     from ..errors import InputError
@@ -46,18 +56,20 @@ def forward_command(args, scene, schema: str) -> int:
         print_json(out)
         return 0 if res.status == 0 else 1
     np.set_printoptions(precision=6, suppress=True)
-    print(f"{scene.robot.joints} joints, {scene.n_objects} objects, {len(scene.obstacles)} "
-          f"obstacles, {len(res.contacts)} contacts")
-    print(f"  qdd    = {res.qdd}")
+    print(f"{_count(scene.robot.joints, 'joint')}, {_count(scene.n_objects, 'object')}, "
+          f"{_count(len(scene.obstacles), 'obstacle')}, {_count(len(res.contacts), 'contact')}")
+    print(f"  qdd    = {_shown(res.qdd)}")
     for o in res.objects:
-        print(f"  object {o['object']}: a = {np.asarray(o['a'])}, |a|^2 = {o['norm_a']:.6g}")
+        print(f"  object {o['object']}: a = {_shown(o['a'])}, |a|^2 = {o['norm_a']:.6g}")
     for c in res.contacts:
         fric = (f", friction {c['friction']:.6g} N ({c['friction_state']}, mu {c['mu']:.3g})"
                 if "friction" in c else "")
         print(f"  contact {c['bodies'][0]} - {c['bodies'][1]}: force {c['force']:.6g} N, "
               f"{c['state']}{fric}")
     for g in res.ground:
-        print(f"  ground {g}")
+        body = f"link {g['link']}" if "link" in g else f"object {g['object']}"
+        print(f"  ground under {body} ({g['model']}): force {_shown(g['force'])} N, "
+              f"{g['state']}")
     print(f"  |lambda|^2 = {res.norm_lambda:.6g}  |a_obj|^2 = {res.norm_a_obj:.6g}  "
           f"|qdd|^2 = {res.norm_qdd:.6g}  sr = {res.sr:.6g}")
     cert = res.certificate
@@ -210,6 +222,6 @@ def optimize_command(args, scene, schema: str, task_options, tasks) -> int:
     print_optimum(res, objective, name, timed=False)
     an = res.analysis
     for o in an.objects:
-        print(f"  object {o['object']}: a = {np.asarray(o['a'])}")
+        print(f"  object {o['object']}: a = {_shown(o['a'])}")
     print(f"  |a_obj|^2 = {an.norm_a_obj:.6g}  |qdd|^2 = {an.norm_qdd:.6g}  sr = {an.sr:.6g}")
     return code
