@@ -24,7 +24,8 @@ piece: the problem is no longer convex, solved from a few starts: status ``local
 the set of torques that keep every link's set sticking is star-shaped about 0, so its
 maximum is the largest ratio on the cone of the contact state: Dinkelbach's iteration on the
 KKT points of the cone's faces (as :mod:`snakecg.scenes.extremes`), then the torque scaled
-to the largest that keeps every limit. A state on which nothing moves (the sticking sets
+to the largest that keeps every limit (where the held rows are dependent, by bisection on the
+scale with the forward solve: :func:`_sticking_scale`). A state on which nothing moves (the sticking sets
 lock the snake) has no ratio (0/0) and is left out. ``allow_slide=True`` also searches the region's
 boundary with the forward solve: status ``local`` where a sliding torque beats the sticking
 optimum, else ``stick_only`` (the sticking answer, not certified against sliding pieces).
@@ -59,7 +60,7 @@ from .metrics import state_name
 from .optimize_pieces import solve_pieces
 from .optimize_search import search
 from .optimize_sr import max_sr_exact
-from .optimize_task import CHECK_TOL, gauge
+from .optimize_task import CHECK_TOL, MARGIN, gauge
 from .optimize_task import roles as block_roles
 from .solve import DISC, FREE, HELD, SLIDE, SLIDE_NEG, SLIDE_POS, SPLIT, UNILATERAL, ZERO
 
@@ -223,6 +224,8 @@ def optimize(model, q, objective="max_sr", *, object=1, tau_max="robot", radius=
     if not task["allow_slide"] or (objective == "max_sr" and not sliding_objects):
         if objective == "max_sr" and not sliding_objects:
             tau, cert = max_sr_exact(p, roles, task)
+            if tau is not None:
+                tau = _sticking_scale(model, qa, tau, cert)
             status = "optimal" if tau is not None else "infeasible"
             solver = ("Dinkelbach on the KKT points of every contact state's cone, scaled to "
                       "the limits")
@@ -252,6 +255,29 @@ def optimize(model, q, objective="max_sr", *, object=1, tau_max="robot", radius=
             res.status = "infeasible" if objective != "max_sr" else res.status
             res.solver = how
     return res
+
+
+def _sticking_scale(model, qa, tau, cert):
+    """``tau`` where the forward solve finds every link's set sticking there; else the largest
+    sticking torque along its ray, by bisection on the scale (to 1e-12 of it) with the forward
+    solve. The ray's sticking torques are an interval from 0 (forces scale with the torque, the
+    sets are convex about 0) on which ``sr`` is the piece's. The scale to the limits reads the
+    sets' forces from one member of the piece's forces; where the held rows are dependent
+    (a box flush on a link and pegs, say), that member may pull at a contact, and the torque
+    it allows then lets a link slide."""
+    def sticks(t):
+        an = model.forward(qa, t * tau)
+        return an.status == 0 and not any(g.get("link") and g["state"].startswith("slide")
+                                          for g in an.ground)
+
+    if sticks(1.0):
+        return tau
+    lo, hi = 0.0, 1.0
+    while hi - lo > 1e-12:
+        mid = 0.5 * (lo + hi)
+        lo, hi = (mid, hi) if sticks(mid) else (lo, mid)
+    cert["scaled_by_forward"] = lo
+    return tau * lo * (1 - MARGIN)
 
 
 def _held(model, qa, p, task, hold, limits):

@@ -9,8 +9,9 @@ from __future__ import annotations
 
 import numpy as np
 
+from .extremes import MOTION_FLOOR, quadratics
 from .extremes_coulomb import contact_conditions, force_family
-from .maps import state_maps
+from .maps import state_maps, whitening
 from .optimize_task import IPOPT_TOL, MARGIN, contact_states
 from .solve import BOX, DISC, HELD, SLIDE, SPLIT, UNILATERAL, ZERO
 
@@ -153,35 +154,67 @@ def _starts(p, task, st, rng):
     return [(t0, np.full(n_sl, base + np.pi + off)) for off in (0.0, np.pi / 2, -np.pi / 2)]
 
 
+#: An object sliding on the ground is tried in each of SECTORS sectors of its direction.
+SECTORS = 8
+#: Pieces with more objects sliding are not relaxed (SECTORS ** k linear programs).
+MAX_SLIDES_RELAXED = 2
+
+
 def _lp_empty(p, task, st) -> bool:
-    """Whether a relaxation of the piece (no object sliding) has no point, by an LP (HiGHS):
-    the linear conditions in ``(tau, z)`` (the contacts', the bounded wheels' bounds, the
-    push's ``d . a_o >= a_min`` or ``a_o = a_obj``, the torque box) with the ellipsoid
-    widened to its bounding box and the conic sets dropped. An empty relaxation is an empty
-    piece: where IPOPT cannot tell (a piece without interior), this says infeasible."""
+    """Whether a relaxation of the piece has no point, by linear programs (HiGHS): the linear
+    conditions in ``(tau, z, c, s)`` (the contacts', the bounded wheels' bounds, the push's
+    ``d . a_o >= a_min`` or ``a_o = a_obj``, the torque box), with the ellipsoid widened to
+    its bounding box and each sticking set to a polygon around it (a disc to its octagon, a
+    split ellipse to its box). An object sliding on the ground (``(c, s) = (cos theta, sin
+    theta)``, its acceleration along ``-(c, s)``) is tried in each of :data:`SECTORS`
+    sectors of ``theta``: ``(c, s)`` in the hull of the sector's arc, its acceleration in the
+    opposite sector (one LP per sector, per pair of sectors for two objects). Every
+    relaxation contains the piece; where all of them are empty, so is the piece: where IPOPT
+    cannot tell (a piece without interior, a non-convex piece), this says infeasible."""
+    import itertools
+
     from scipy.optimize import linprog
 
-    aff, _, Z = _affine(p, st)
-    na, nz = p.n_a, Z.shape[1]
-    Xl, l0, _ = aff["lam"]
-    Xw, w0, _ = aff["w"]
-    Xa, a0, _ = aff["a"]
-    lin = {"lam": (np.hstack([Xl, Z]), l0), "w": (np.hstack([Xw, np.zeros((len(w0), nz))]),
-                                                  w0)}
+    aff, slides, Z = _affine(p, st)
+    if len(slides) > MAX_SLIDES_RELAXED:
+        return False
+    na, nz, k = p.n_a, Z.shape[1], len(slides)
+    nx = na + nz + 2 * k
+
+    def lin(name):  # quantity = X x + x0 in x = (tau, z, c_1, s_1, ..)
+        X, x0, extra = aff[name]
+        cols = [X, Z if name == "lam" else np.zeros((len(x0), nz))]
+        for C, S in extra:
+            cols += [C[:, None], S[:, None]]
+        return np.hstack(cols), x0
+
+    forms = {"lam": lin("lam"), "w": lin("w")}
+    Xa, a0 = lin("a")
     G, h = [], []  # G x + h >= 0
     for b, code in enumerate(st):
-        k, r = p.kind[b], p.start[b]
-        if k == UNILATERAL:
+        kd, r, par = p.kind[b], p.start[b], p.par[b]
+        if kd == UNILATERAL:
             for terms in contact_conditions(p, b, code):
-                G.append(sum(c * lin[key][0][i] for key, i, c in terms))
-                h.append(sum(c * lin[key][1][i] for key, i, c in terms))
-        elif k == BOX and code == HELD and p.par[b][0] > 0:
-            for sg in (1.0, -1.0):
-                G.append(-sg * lin["lam"][0][r])
-                h.append(p.par[b][0] * (1 - MARGIN) - sg * l0[r])
+                G.append(sum(c * forms[key][0][i] for key, i, c in terms))
+                h.append(sum(c * forms[key][1][i] for key, i, c in terms))
+            continue
+        if code != HELD or (kd not in (BOX, DISC, SPLIT)) or max(par) <= 0:
+            continue
+        (Xl, l0) = forms["lam"]
+        if kd == BOX:  # |lam| <= par[0]
+            rows = [(np.array([1.0]), par[0]), (np.array([-1.0]), par[0])]
+        elif kd == DISC:  # the octagon around the disc: |u . lam| <= par[0] on 8 axes
+            rows = [(np.array(u), par[0]) for u in ((1, 0), (-1, 0), (0, 1), (0, -1))]
+            rows += [(np.array(u) / np.sqrt(2), par[0]) for u in ((1, 1), (1, -1), (-1, 1),
+                                                                  (-1, -1))]
+        else:  # the split ellipse's box: -par[0] <= lam_t <= par[1], |lam_n| <= par[2]
+            rows = [(np.array([1.0, 0.0]), par[1]), (np.array([-1.0, 0.0]), par[0]),
+                    (np.array([0.0, 1.0]), par[2]), (np.array([0.0, -1.0]), par[2])]
+        for u, bound in rows:  # bound - u . lam >= 0
+            G.append(-(u @ Xl[r:r + len(u)]))
+            h.append(bound - u @ l0[r:r + len(u)])
     j = task["object"] - 1
-    Xo = np.hstack([Xa[p.n_s + 3 * j:p.n_s + 3 * j + 3], np.zeros((3, nz))])
-    ao0 = a0[p.n_s + 3 * j:p.n_s + 3 * j + 3]
+    Xo, ao0 = Xa[p.n_s + 3 * j:p.n_s + 3 * j + 3], a0[p.n_s + 3 * j:p.n_s + 3 * j + 3]
     eq = None
     if task["objective"] == "least_slip_push":
         if task["a_obj"] is not None:
@@ -194,13 +227,46 @@ def _lp_empty(p, task, st) -> bool:
         hi = task["radius"] * np.sqrt(np.diag(np.linalg.inv(p.N)))
     if task["tau_max"] is not None:
         hi = np.minimum(hi, task["tau_max"])
-    bounds = [(-v, v) for v in hi] + [(None, None)] * nz
-    G = np.array(G).reshape(-1, na + nz)
-    res = linprog(np.zeros(na + nz), A_ub=-G if len(G) else None,
-                  b_ub=np.array(h) if len(G) else None,
-                  A_eq=None if eq is None else eq[0], b_eq=None if eq is None else eq[1],
-                  bounds=bounds, method="highs")
-    return res.status == 2  # infeasible
+    bounds = [(-v, v) for v in hi] + [(None, None)] * nz + [(-1.0, 1.0)] * (2 * k)
+    half = np.pi / SECTORS
+    for sectors in itertools.product(range(SECTORS), repeat=k):
+        G2, h2 = list(G), list(h)
+        for i, (b, sec) in enumerate(zip(slides, sectors)):
+            cs = na + nz + 2 * i  # the columns of (c, s)
+            o = p.n_s + 3 * p.rows.labels[b][1]  # the object's linear acceleration
+            lo, mid, up = (2 * sec) * half, (2 * sec + 1) * half, (2 * sec + 2) * half
+            for ang, sg in ((lo, 1.0), (up, -1.0)):  # (c, s) inside the wedge [lo, up]
+                e = np.zeros(nx)
+                e[cs], e[cs + 1] = -sg * np.sin(ang), sg * np.cos(ang)
+                G2.append(e)
+                h2.append(0.0)
+                # the acceleration in the opposite wedge: -a inside [lo, up]
+                G2.append(-(-sg * np.sin(ang) * Xa[o] + sg * np.cos(ang) * Xa[o + 1]))
+                h2.append(-(-sg * np.sin(ang) * a0[o] + sg * np.cos(ang) * a0[o + 1]))
+            e = np.zeros(nx)  # beyond the arc's chord: c cos(mid) + s sin(mid) >= cos(half)
+            e[cs], e[cs + 1] = np.cos(mid), np.sin(mid)
+            G2.append(e)
+            h2.append(-np.cos(half))
+        A = np.array(G2).reshape(-1, nx)
+        res = linprog(np.zeros(nx), A_ub=-A if len(A) else None,
+                      b_ub=np.array(h2) if len(A) else None,
+                      A_eq=None if eq is None else eq[0], b_eq=None if eq is None else eq[1],
+                      bounds=bounds, method="highs")
+        if res.status != 2:  # a point (or not proven empty): the piece may have one
+            return False
+    return True
+
+
+def _locked(p, st) -> bool:
+    """Whether nothing moves on piece ``st`` (no object sliding) for any torque: the motion
+    ``|a_o|^2 + |qdd_s|^2`` a quadratic form below :data:`MOTION_FLOOR` of the free motion's
+    (whitened torques), as :func:`snakecg.scenes.optimize_sr.max_sr_exact` leaves such states
+    out. ``max_sr``'s pieces ask for motion above 1e-8 of the free motion's: such a piece is
+    empty (IPOPT cannot say so: its constraint is not convex)."""
+    if any(c == SLIDE for c in st):
+        return False
+    f = quadratics(p, state_maps(p, st), whitening(p), ())
+    return np.linalg.eigvalsh(f["norm_a_obj"][0] + f["norm_qdd"][0]).max() <= MOTION_FLOOR
 
 
 def solve_pieces(p, roles, task, sliding_objects):
@@ -210,6 +276,9 @@ def solve_pieces(p, roles, task, sliding_objects):
     states = contact_states(p, roles, sliding_objects)
     best, solved, infeasible, unknown, nonconvex = None, 0, 0, 0, False
     for st in states:
+        if task["objective"] == "max_sr" and _locked(p, st):
+            infeasible += 1  # nothing moves on it: below the task's motion floor
+            continue
         outcome = None
         starts = _starts(p, task, st, rng)
         # a degenerate piece (no interior) may need IPOPT's own relaxation of the bounds
@@ -239,8 +308,8 @@ def solve_pieces(p, roles, task, sliding_objects):
                 outcome = "unknown"
             if relax == 0.0 and outcome != "unknown" and start is starts[-1]:
                 break
-        if outcome == "unknown" and not any(c == SLIDE for c in st) and _lp_empty(p, task, st):
-            outcome = "infeasible"  # IPOPT did not say, a relaxation's LP proves it
+        if outcome == "unknown" and _lp_empty(p, task, st):
+            outcome = "infeasible"  # IPOPT did not say, a relaxation's LPs prove it
         solved += outcome == "solved"
         infeasible += outcome == "infeasible"
         unknown += outcome == "unknown"
