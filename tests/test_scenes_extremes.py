@@ -13,7 +13,7 @@ import scipy.linalg
 import snakecg
 from snakecg import Robot, Scene
 from snakecg.errors import InputError
-from snakecg.scenes import GeneralScene
+from snakecg.scenes import GeneralScene, Ground, SceneObject
 from snakecg.scenes.toml_reading import read_scene
 
 from scenes_reference import POLYHEDRAL, dense_problem, small_scenes
@@ -161,6 +161,44 @@ def test_certified_bounds_hold_every_sample(path, q, rng):
         assert ex.max[f"norm_a_obj[{j + 1}]"] <= ex.max["norm_a_obj"] + 1e-12
         each = res.norm_a_obj_each[:, j]
         assert each.max() <= ex.bound_max[f"norm_a_obj[{j + 1}]"] + 1e-9
+
+
+def test_sr_bounds_say_they_leave_out_where_the_system_barely_moves(rng):
+    """Anisotropic ground, a light disc and a heavy box on the tail: near the torques that
+    barely move anything, sr (0/0 in the limit) exceeds the bound that holds everywhere
+    else. The certificate says where its sr bounds hold, and they hold there (dense samples
+    of the boundary)."""
+    robot = Robot(joints=2, mass=(1.8372758359983001, 0.513359276666714, 0.5797477328445665),
+                  length=(0.13274658414229454, 0.19268215119066423, 0.14142131731719346),
+                  inertia=(0.0018765130410494638, 0.002495706365974305,
+                           0.0036370277964803167))
+    ground = tuple(Ground(model="anisotropic", mu_forward=f, mu_backward=b, mu_lateral=lat)
+                   for f, b, lat in ((0.4110700288873764, 0.4329430802786753,
+                                      0.22796310355280885),
+                                     (0.17051030498649764, 0.10709227117904699,
+                                      0.33541953700718824),
+                                     (0.14728415654235577, 0.3729916738211128,
+                                      0.7791781642877037)))
+    objects = (SceneObject(shape="disc", radius=0.04777671561903046, mass=2.44052332517951,
+                           touching={"link": 1, "offset": 0.02363037184251137,
+                                     "side": "left"}),
+               SceneObject(shape="box", size=(0.04805463751773643, 0.062310340275320134),
+                           mass=46.87759884632557,
+                           touching={"link": 1, "offset": 0.11163556007443937,
+                                     "side": "left"}))
+    model = snakecg.load(GeneralScene(robot, ground=ground, objects=objects))
+    q = np.array([-0.048348068488258775, 2.4093218644493075, -2.5770613172376926,
+                  -0.4050342269434065, 0.08232609349181863])
+    ex = model.extremes(q, budget=3000, gap=1e-3)
+    assert ex.method.startswith("certified bounds") and ex.certified
+    assert "sr's bounds hold where |a|_M^2 >= 0.001" in ex.method
+    taus, _ = boundary(rng, model, q, 6000)
+    vals, res = sampled(model, q, taus)
+    D = res.norm_a_obj + res.norm_qdd
+    moves = D >= 1e-3
+    assert vals["sr"][moves].max() <= ex.bound_max["sr"] + 1e-9
+    assert vals["sr"][moves].min() >= ex.bound_min["sr"] - 1e-9
+    assert vals["sr"][~moves].max() > ex.bound_max["sr"]  # what is left out, and why
 
 
 def test_batches_and_bad_input():

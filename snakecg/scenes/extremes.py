@@ -23,7 +23,8 @@ Two methods, chosen per configuration:
   ``tau_max``), ``bound_max`` a certified upper bound (``min``/``bound_min`` the same
   below), to the absolute ``gap`` (every norm lies in [0, 1] on the boundary: the free
   motion's norm is 1) or until ``budget`` solves are spent; what the certificate leaves out
-  is said there (``sr`` where nothing moves, ``min_kept``).
+  is said there (``sr`` where the system barely moves, ``|a|_M^2`` below ``gap``: its bounds
+  hold at every other torque; ``min_kept``).
 
 Contacts with Coulomb friction (``mu_contact``) add their four states to the exact pieces
 (open, stick, slip either way: :mod:`snakecg.scenes.extremes_coulomb`, whose conditions are
@@ -508,7 +509,9 @@ def _bounds(model, p, names, gap, budget) -> SceneExtremes:
         return ex
     ex = SceneExtremes(method="certified bounds: branch and bound on a cover of the sphere "
                               "(accelerations 1-Lipschitz in the inertia metric), the compiled "
-                              "forward solve at every cell's centre")
+                              "forward solve at every cell's centre; sr's bounds hold where "
+                              f"|a|_M^2 >= {gap:g} (the free motion's is 1): below, the system "
+                              "barely moves and sr, 0/0 in the limit, is left out")
     for m in names:
         for attr in ("max", "min", "min_kept"):
             v, u = best[(attr, m)]
