@@ -417,6 +417,30 @@ def test_the_records_figures_against_numpy_and_the_reference_rows():
     assert touching >= 100 and impacts >= 1
 
 
+def test_a_fast_spin_gains_beyond_the_budget_by_the_schemes_error_only():
+    """A 1-joint snake spun up by a large torque (80 J in 0.25 s): the step takes the inertia
+    and the bias forces at its start, so the kinetic energy gained may exceed the torques'
+    work less the dissipation; the excess is the scheme's error, which shrinks at least by
+    half with every halved step (the energy balance, a physical law, in the limit)."""
+    robot = snakecg.Robot(joints=1, mass=(0.517, 1.235), length=(0.146, 0.133),
+                          inertia=(0.00135, 0.00209))
+    scene = GeneralScene(robot, radius=0.015, ground=(
+        Ground(model="anisotropic", mu_forward=0.39, mu_backward=0.05, mu_lateral=0.3),
+        Ground(model="coulomb", mu=0.5)))
+    model = load_scene(scene)
+    q0 = np.array([0.371, 1.034, 0.651, -0.578])
+    excess = []
+    for dt in (1e-3, 5e-4, 2.5e-4):
+        run = model.simulate(q0, 0.25, tau=np.array([-3.06]), dt=dt)
+        assert run.status == "completed", run.message
+        gain = run.kinetic_energy - run.kinetic_energy[0]
+        budget = run.work_tau - run.friction_dissipation - run.impact_loss + run.contact_work
+        excess.append(float(np.max(gain - budget)))
+        assert excess[-1] <= 0.01 * run.work_tau[-1]
+    assert excess[0] > 1e-3  # the effect is there at 1 ms
+    assert excess[1] <= 0.5 * excess[0] and excess[2] <= 0.5 * excess[1]
+
+
 def test_a_long_run_reports_progress(monkeypatch):
     import snakecg.scenes.stepping as stepping
 
