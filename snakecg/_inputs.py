@@ -22,6 +22,10 @@ CHUNK_ROWS = 65536
 #: Largest magnitude of a task or limit (radius, a_min, a_obj, tau_max): these enter squares
 #: and products with the model's matrices, which must stay within double precision.
 MAX_MAGNITUDE = 1e100
+#: Largest magnitude of a robot's or scene's parameter (masses, lengths, inertias, sizes,
+#: positions): the model multiplies them (m l^2, its inverse, the norms' squares), which
+#: must stay within double precision.
+MAX_PARAMETER = 1e50
 #: Longest quoted value in a message (longer ones are cut, with their length stated).
 _MAX_REPR = 60
 

@@ -14,6 +14,7 @@ import pytest
 from scenes_geometry_reference import Shape, closest
 from scenes_reference import SCENE
 
+import snakecg
 from snakecg import Robot, Scene
 from snakecg.errors import InputError
 from snakecg.scenes import GeneralScene, Ground, Obstacle, SceneObject
@@ -186,6 +187,39 @@ def test_cli_forward_and_plot_take_a_scene(tmp_path):
     r = _cli("simulate", "--scene", str(p), "--q", "0,0,0,0,0,0", "--tau", "0,0,0",
              "--duration", "0.01", "--out", str(tmp_path / "run"))
     assert r.returncode == 0, r.stderr
+
+
+def test_parameters_beyond_double_precision_are_refused_by_name(tmp_path):
+    """A robot's or scene's parameter whose products (m l^2, its inverse, the norms'
+    squares) would leave double precision is refused before any work, by name; a robot whose
+    parameters span more orders of magnitude than the input metric resolves is refused by
+    the queries on that metric (one line on the command line), and answered as singular by
+    the forward."""
+    with pytest.raises(InputError, match=r"length must be at most 1e\+50 in magnitude"):
+        Robot(joints=2, length=1e60)
+    robot = Robot(joints=2)
+    with pytest.raises(InputError, match=r"object\[1\]\.mass must be at most 1e\+50"):
+        GeneralScene(robot, objects=(SceneObject(shape="disc", radius=0.04, mass=1e300,
+                                                 pose=(0.5, 0.5, 0.0)),))
+    with pytest.raises(InputError, match=r"obstacle\[1\]\.center must be at most 1e\+50"):
+        GeneralScene(robot, obstacles=(Obstacle(shape="peg", center=(1e60, 0.0),
+                                                radius=0.03),))
+    p = tmp_path / "big.toml"
+    p.write_text(SCENE.replace("length = 0.15", "length = 1e308"))
+    r = _cli("forward", "--scene", str(p), "--q", "0,0,0,0,0,0", "--tau", "0.1,0,0", "--json")
+    assert r.returncode == 2 and "length must be at most 1e+50" in r.stderr
+    assert len(r.stderr.strip().splitlines()) == 1 and "Traceback" not in r.stderr
+    # finite products, but m l^2 = 1e40 against inertias of 2e-3: N is singular in doubles
+    p.write_text(SCENE.replace("length = 0.15", "length = 1e20"))
+    for args in (("optimize", "strongest-push", "--direction", "1,0"),
+                 ("optimize", "max-sr")):
+        r = _cli(*args, "--scene", str(p), "--q", "0,0,0,0,0,0", "--json")
+        assert r.returncode == 2 and "N = B^T M_s^-1 B" in r.stderr, r.stderr
+        assert len(r.stderr.strip().splitlines()) == 1
+    model = snakecg.load(read_scene(p))
+    assert model.forward(np.zeros(6), np.array([0.1, 0, 0])).status != 0
+    ex = model.extremes(np.zeros((2, 6)))
+    assert np.all(np.isnan(ex.max["sr"])) and all("N = B^T M_s^-1 B" in x for x in ex.reason)
 
 
 def test_api_inputs_are_checked_by_name():

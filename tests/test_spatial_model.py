@@ -32,6 +32,11 @@ def test_robot_validation_collects_every_problem():
         snakecg.SpatialRobot(joints=1, inertia=(1, 1, 3, 0, 0, 0))
     with pytest.raises(snakecg.InputError, match="joints must be an integer >= 1"):
         snakecg.SpatialRobot(joints=0)
+    # beyond what the model's products hold in double precision (an axis is a direction)
+    for kw, name in ((dict(mass=1e300), "mass"), (dict(joint_xyz=(1e60, 0, 0)), "joint_xyz"),
+                     (dict(inertia=(1e60, 1e60, 1e60, 0, 0, 0)), "inertia")):
+        with pytest.raises(snakecg.InputError, match=rf"{name} must be at most 1e\+50"):
+            snakecg.SpatialRobot(joints=2, **kw)
 
 
 def test_a_joint_axis_of_any_finite_length_is_its_direction():

@@ -12,8 +12,9 @@ from __future__ import annotations
 
 import math
 import numbers
-from dataclasses import dataclass
+from dataclasses import dataclass, fields
 
+from .._inputs import MAX_PARAMETER
 from ..errors import InputError
 from ..robot import DEFAULT_GRAVITY, Robot, Scene
 
@@ -30,6 +31,19 @@ def _num(v) -> bool:
 
 def _vec(v, n) -> bool:
     return (isinstance(v, (list, tuple)) and len(v) == n and all(_num(x) for x in v))
+
+
+def _too_large(where: str, item) -> list[str]:
+    """Every finite number of ``item``'s fields (a dataclass) beyond MAX_PARAMETER."""
+    out = []
+    for f in fields(item):
+        v = getattr(item, f.name)
+        vals = v.values() if isinstance(v, dict) else v if isinstance(v, (list, tuple)) else (v,)
+        if any(_num(x) and abs(x) > MAX_PARAMETER for x in vals):
+            out.append(f"{where}.{f.name} must be at most {MAX_PARAMETER:g} in magnitude (the "
+                       f"model's products of it must stay within double precision), got "
+                       f"{v!r:.60}")
+    return out
 
 
 def _mu_contact_problems(v, where: str) -> list[str]:
@@ -253,6 +267,16 @@ class GeneralScene:
         if not (_num(self.tolerance) and 0 < self.tolerance < 1e-2):
             problems.append(f"tolerance must be a number in (0, 0.01) (relative to the scene's "
                             f"size), got {self.tolerance!r:.60}")
+        problems += [p for i, x in enumerate(g) for p in _too_large(
+            "ground" if isinstance(self.ground, Ground) else f"ground[{i + 1}]", x)]
+        problems += [p for i, o in enumerate(self.objects) if isinstance(o, SceneObject)
+                     for p in _too_large(f"object[{i + 1}]", o)]
+        problems += [p for i, o in enumerate(self.obstacles) if isinstance(o, Obstacle)
+                     for p in _too_large(f"obstacle[{i + 1}]", o)]
+        for name in ("radius", "gravity"):
+            v = getattr(self, name)
+            if _num(v) and abs(v) > MAX_PARAMETER:
+                problems.append(f"{name} must be at most {MAX_PARAMETER:g}, got {v!r:.60}")
         if problems:
             raise InputError("invalid scene: " + "; ".join(dict.fromkeys(problems)))  # (one
             # ground for every link: its problems once)

@@ -77,6 +77,14 @@ class Problem:
         self.G = self.A @ self.Minv @ self.A.T  # eq. 14 (every row)
         #: the input metric N = B^T M_s^-1 B (eq. 31)
         self.N = self.B.T @ self.Minv @ self.B
+        try:  # (the input ellipsoid's whitening, every query's first step: whitening below)
+            np.linalg.cholesky(self.N)
+        except np.linalg.LinAlgError:
+            raise InputError("q: at this configuration the input metric N = B^T M_s^-1 B "
+                             "(eq. 31) is not numerically positive definite: the robot's "
+                             "masses, lengths and inertias span too many orders of magnitude "
+                             "(the links' m l^2 against their inertias) for double precision; "
+                             "rescale the robot") from None
 
     @property
     def n_blocks(self) -> int:
