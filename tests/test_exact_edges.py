@@ -260,11 +260,12 @@ def test_inconsistent_robot_gives_no_impossible_number():
 @pytest.mark.parametrize("change", [
     dict(scene=dict(kappa=5e-324)),
     dict(robot=dict(mass=5e-324)),
-    dict(scene=dict(scenario="ideal_wheels", wheel_offset=1e300)),
+    dict(scene=dict(scenario="ideal_wheels", wheel_offset=1e40)),
 ])
 def test_extreme_scene_values_are_answered_or_flagged(change):
-    """A subnormal kappa or mass, or a wheel 1e300 m off its link: every public query
-    answers or returns NaN with the flag and a one-line reason; never numpy's LinAlgError."""
+    """A subnormal kappa or mass, or a wheel 1e40 m off its link: every public query
+    answers or returns NaN with the flag and a one-line reason; never numpy's LinAlgError.
+    (Beyond 1e50 a parameter is refused by name: below.)"""
     robot = snakecg.Robot(joints=2, **change.get("robot", {}))
     kw = dict(scenario="frictionless") | change.get("scene", {})
     model = snakecg.load(snakecg.Scene(robot, **kw))
@@ -279,6 +280,11 @@ def test_extreme_scene_values_are_answered_or_flagged(change):
     assert ex.certified or ex.reason
     opt = model.optimize(q, "max_sr")
     assert opt.status == "optimal" or opt.reason
+
+
+def test_a_wheel_1e300_m_off_its_link_is_refused_by_name():
+    with pytest.raises(snakecg.InputError, match=r"wheel_offset must be at most 1e\+50"):
+        snakecg.Scene(snakecg.Robot(joints=2), scenario="ideal_wheels", wheel_offset=1e300)
 
 
 @pytest.mark.parametrize("name, value", [("rho", [1e200, 0.0]), ("q_obj", [1e200, 0.1, 0.0]),
