@@ -13,7 +13,7 @@ import pytest
 import snakecg
 from snakecg import Robot, Scene
 from snakecg.errors import InputError
-from snakecg.scenes import GeneralScene
+from snakecg.scenes import GeneralScene, Ground, SceneObject
 from snakecg.scenes.solve import BOX, DISC, FREE, UNILATERAL
 from snakecg.scenes.toml_reading import read_scene
 
@@ -96,6 +96,40 @@ def test_pushes_against_clarabel(models, radius, rng):
             assert got2.objective_value == pytest.approx(ref2, rel=1e-5, abs=1e-10)
             assert d @ got2.analysis.a_obj[0] >= a_min * (1 - 1e-6)
     assert pushed >= 3
+
+
+def test_a_push_no_torque_changes_on_a_piece_is_checked_not_passed_to_ipopt():
+    """Three objects on a frictionless 1-joint snake: on some contact states the pushed
+    object's acceleration does not depend on the torque, and CasADi refuses a constant
+    condition (it raised RuntimeError out of optimize). Those pieces are decided by the
+    condition's value; the answer is Clarabel's over every contact state."""
+    robot = Robot(joints=1, mass=(0.5179040453259469, 1.4963516062092332),
+                  length=(0.19373994546517515, 0.11652964384607623),
+                  inertia=(0.0017896647044172655, 0.0011250885138521139))
+    objects = (SceneObject(shape="box", size=(0.06134934472601476, 0.046407417831574),
+                           mass=8.066406127719972,
+                           touching={"link": 2, "offset": 0.022304617650974978,
+                                     "side": "left"}),
+               SceneObject(shape="disc", radius=0.049693793692157956, mass=40.28983888549939,
+                           touching={"link": 1, "offset": 0.15623557730675847,
+                                     "side": "left"}),
+               SceneObject(shape="disc", radius=0.05589945518532717, mass=44.799812053157666,
+                           touching={"link": 2, "offset": 0.05022891599725762,
+                                     "side": "right"}))
+    model = snakecg.load(GeneralScene(robot, ground=Ground(model="frictionless"),
+                                      objects=objects))
+    q = np.array([0.23049326381128246, -0.6055586165587867, 1.7853796198919296,
+                  -1.1827608386171597])
+    d = np.array([-0.3395352074108784, 0.9405933462067716, 0.0])
+    a_min = 1.1010182993397373
+    got = model.optimize(q, "least_slip_push", direction=d[:2], a_min=a_min, tau_max=3.0,
+                         allow_slide=False)
+    assert got.status == "optimal", got.reason
+    p = dense_problem(model.forward(q, np.zeros(1)), model, np.zeros(1))
+    ref = clarabel_push(p, model.n_coordinates, "least_slip_push", 0, d, a_min=a_min,
+                        tau_max=np.array([3.0]))
+    assert got.objective_value == pytest.approx(ref, rel=1e-5)
+    assert d[:2] @ got.analysis.a_obj[0][:2] >= a_min * (1 - 1e-6)
 
 
 def test_paper_scene_through_the_general_path_matches_its_optimizer(rng):

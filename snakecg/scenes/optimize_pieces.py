@@ -17,6 +17,9 @@ from .solve import BOX, DISC, HELD, SLIDE, SPLIT, UNILATERAL, ZERO
 
 __all__ = ["solve_pieces"]
 
+#: A condition constant on a piece holds within this (relative to its value, plus absolute).
+CONSTANT_TOL = 1e-9
+
 _SUCCESS = ("Solve_Succeeded",)
 _INFEASIBLE = ("Infeasible_Problem_Detected",)
 _ACCEPTABLE = ("Solved_To_Acceptable_Level",)
@@ -67,6 +70,20 @@ def _build(p, roles, task, st, start, relax=0.0):
             out = out + ca.cos(th[i]) * ca.DM(C) + ca.sin(th[i]) * ca.DM(S)
         return out
 
+    empty = []  # a condition constant in the unknowns that fails: the piece has no point
+
+    def sub(g, lo=0.0, eq=None):
+        """``g >= lo`` (or ``g == eq``); Opti takes no constant condition: one that does not
+        depend on the unknowns on this piece (a contact force 0 whatever the torque, a push
+        the held object cannot make) is checked here instead."""
+        if not g.is_constant():
+            opti.subject_to(g == eq if eq is not None else g >= lo)
+            return
+        v = np.asarray(ca.evalf(g), float).ravel()
+        gap = np.abs(v - np.ravel(eq)) if eq is not None else lo - v
+        if np.any(gap > CONSTANT_TOL * (1.0 + np.abs(v))):
+            empty.append(True)
+
     a, lam, w = ex("a"), ex("lam"), ex("w")
     if Z.shape[1]:  # the forces' free directions: any member of the family will do
         lam = lam + ca.mtimes(ca.DM(Z), opti.variable(Z.shape[1]))
@@ -76,11 +93,12 @@ def _build(p, roles, task, st, start, relax=0.0):
         if k == UNILATERAL:  # Coulomb's conditions where the contact has friction
             lin = {"lam": lam, "w": w}
             for terms in contact_conditions(p, b, code):
-                opti.subject_to(sum(c * lin[key][i] for key, i, c in terms) >= 0)
+                sub(sum(c * lin[key][i] for key, i, c in terms))
         elif code == HELD and not zero and k == BOX:
-            opti.subject_to(opti.bounded(-par[0] * keep, lam[r], par[0] * keep))
+            sub(lam[r], -par[0] * keep)
+            sub(-lam[r], -par[0] * keep)
         elif code == HELD and not zero and k == DISC:
-            opti.subject_to(lam[r] ** 2 + lam[r + 1] ** 2 <= (par[0] * keep) ** 2)
+            sub((par[0] * keep) ** 2 - lam[r] ** 2 - lam[r + 1] ** 2)
         elif code == HELD and not zero and k == SPLIT:
             s = opti.variable()
             opti.subject_to(s >= 0)
@@ -88,7 +106,7 @@ def _build(p, roles, task, st, start, relax=0.0):
                 if semi > 0:
                     opti.subject_to(s >= sgn * lam[r] / semi)
                 else:
-                    opti.subject_to(sgn * lam[r] <= 0)
+                    sub(-sgn * lam[r])
             opti.subject_to(s ** 2 + (lam[r + 1] / par[2]) ** 2 <= keep ** 2)
         elif code == SLIDE:  # the object slides against its friction: a_lin = -s (cos, sin)
             i = slides.index(b)
@@ -107,9 +125,9 @@ def _build(p, roles, task, st, start, relax=0.0):
     norm_qdd = ca.bilin(ca.DM(p.M_s), qdd, qdd)
     if task["objective"] == "least_slip_push":
         if task["a_obj"] is not None:
-            opti.subject_to(ao == ca.DM(task["a_obj"]))
+            sub(ao, eq=np.asarray(task["a_obj"], float))
         else:
-            opti.subject_to(ca.dot(ca.DM(task["direction"]), ao) >= task["a_min"])
+            sub(ca.dot(ca.DM(task["direction"]), ao), task["a_min"])
         f = norm_qdd
     elif task["objective"] == "strongest_push":
         f = -ca.dot(ca.DM(task["direction"]), ao)
@@ -123,7 +141,7 @@ def _build(p, roles, task, st, start, relax=0.0):
         # floor (1e-8 of the free motion's largest norm in the region)
         free = task["radius"] ** 2 if task["radius"] is not None else float(
             task["tau_max"] @ np.abs(p.N) @ task["tau_max"])
-        opti.subject_to(om + norm_qdd >= 1e-8 * free)
+        sub(om + norm_qdd, 1e-8 * free)
         f = -om / (om + norm_qdd)
     opti.minimize(f)
     tau0, th0 = start
@@ -138,7 +156,7 @@ def _build(p, roles, task, st, start, relax=0.0):
     opti.solver("ipopt", {"print_time": False, "ipopt.print_level": 0, "ipopt.sb": "yes",
                           "ipopt.tol": IPOPT_TOL, "ipopt.max_iter": 1000,
                           "ipopt.bound_relax_factor": relax})
-    return opti, tau, f, bool(slides), constant
+    return opti, tau, f, bool(slides), constant, bool(empty)
 
 
 def _starts(p, task, st, rng):
@@ -285,8 +303,12 @@ def solve_pieces(p, roles, task, sliding_objects):
         # (1e-8): the last try; the forward solve checks the answer at the end
         tries = [(s0, 0.0) for s0 in starts] + [(starts[0], 1e-8)]
         for start, relax in tries:
-            opti, tau, f, has_slide, constant = _build(p, roles, task, st, start, relax)
+            opti, tau, f, has_slide, constant, empty = _build(p, roles, task, st, start,
+                                                              relax)
             nonconvex |= has_slide or task["objective"] == "max_sr"
+            if empty:  # a condition that no torque changes fails on it
+                outcome = "infeasible" if outcome in (None, "unknown") else outcome
+                break
             try:
                 sol = opti.solve()
                 stat = sol.stats()["return_status"]
