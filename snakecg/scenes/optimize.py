@@ -25,10 +25,11 @@ the set of torques that keep every link's set sticking is star-shaped about 0, s
 maximum is the largest ratio on the cone of the contact state: Dinkelbach's iteration on the
 KKT points of the cone's faces (as :mod:`snakecg.scenes.extremes`), then the torque scaled
 to the largest that keeps every limit (where the held rows are dependent, by bisection on the
-scale with the forward solve: :func:`_sticking_scale`). A state on which nothing moves (the sticking sets
-lock the snake) has no ratio (0/0) and is left out. ``allow_slide=True`` also searches the region's
-boundary with the forward solve: status ``local`` where a sliding torque beats the sticking
-optimum, else ``stick_only`` (the sticking answer, not certified against sliding pieces).
+scale with the forward solve: :func:`_sticking_scale`). A state on which nothing moves (the
+sticking sets lock the snake) has no ratio (0/0) and is left out. ``allow_slide=True`` also
+searches the region's boundary with the forward solve: status ``local`` where a sliding
+torque beats the sticking optimum, else ``stick_only`` (the sticking answer, not certified
+against sliding pieces).
 
 Every answer is checked by the compiled forward solve at its torque (the objective to 1e-6,
 no link's set sliding): a disagreement is status ``failed`` with the reason.

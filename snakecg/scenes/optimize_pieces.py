@@ -9,9 +9,10 @@ from __future__ import annotations
 
 import numpy as np
 
-from .extremes import MOTION_FLOOR, quadratics
+from .extremes import quadratics
 from .extremes_coulomb import contact_conditions, force_family
 from .maps import state_maps, whitening
+from .optimize_sr import motionless
 from .optimize_task import IPOPT_TOL, MARGIN, contact_states
 from .solve import BOX, DISC, HELD, SLIDE, SPLIT, UNILATERAL, ZERO
 
@@ -276,15 +277,14 @@ def _lp_empty(p, task, st) -> bool:
 
 
 def _locked(p, st) -> bool:
-    """Whether nothing moves on piece ``st`` (no object sliding) for any torque: the motion
-    ``|a_o|^2 + |qdd_s|^2`` a quadratic form below :data:`MOTION_FLOOR` of the free motion's
-    (whitened torques), as :func:`snakecg.scenes.optimize_sr.max_sr_exact` leaves such states
-    out. ``max_sr``'s pieces ask for motion above 1e-8 of the free motion's: such a piece is
-    empty (IPOPT cannot say so: its constraint is not convex)."""
+    """Whether nothing moves on piece ``st`` (no object sliding) for any torque
+    (:func:`~snakecg.scenes.optimize_sr.motionless`), as
+    :func:`~snakecg.scenes.optimize_sr.max_sr_exact` leaves such states out. ``max_sr``'s
+    pieces ask for motion above 1e-8 of the free motion's: such a piece is empty (IPOPT
+    cannot say so: its constraint is not convex)."""
     if any(c == SLIDE for c in st):
         return False
-    f = quadratics(p, state_maps(p, st), whitening(p), ())
-    return np.linalg.eigvalsh(f["norm_a_obj"][0] + f["norm_qdd"][0]).max() <= MOTION_FLOOR
+    return motionless(quadratics(p, state_maps(p, st), whitening(p), ()))
 
 
 def solve_pieces(p, roles, task, sliding_objects):

@@ -10,7 +10,7 @@ from .maps import state_maps, whitening
 from .optimize_task import MARGIN, contact_states, gauge
 from .extremes_coulomb import piece_conditions
 
-__all__ = ["max_sr_exact", "scale_to_limits"]
+__all__ = ["max_sr_exact", "motionless", "scale_to_limits"]
 
 #: Dinkelbach's iteration stops when the ratio gains less than this (sr is in [0, 1]).
 SR_GAIN = 1e-14
@@ -34,6 +34,13 @@ def scale_to_limits(p, roles, task, tau, lam_from_tau) -> float:
     return t
 
 
+def motionless(f) -> bool:
+    """Whether nothing moves on a state for any torque: its motion ``|a_o|^2 + |qdd_s|^2``
+    (the quadratic forms ``f`` of :func:`~snakecg.scenes.extremes.quadratics`, whitened
+    torques: the free motion's is 1) below :data:`MOTION_FLOOR`."""
+    return np.linalg.eigvalsh(f["norm_a_obj"][0] + f["norm_qdd"][0]).max() <= MOTION_FLOOR
+
+
 def max_sr_exact(p, roles, task):
     """``(tau, certificate)``: the largest sr with every link's set sticking, or ``(None,
     certificate)`` when no torque moves an object."""
@@ -46,7 +53,7 @@ def max_sr_exact(p, roles, task):
         f = quadratics(p, mp, T, ())
         # a state on which nothing moves (the sticking sets lock the snake and the objects):
         # sr is 0 there by its convention, not a ratio of rounding errors; left out
-        if np.linalg.eigvalsh(f["norm_a_obj"][0] + f["norm_qdd"][0]).max() <= MOTION_FLOOR:
+        if motionless(f):
             locked += 1
             continue
         # the contacts' conditions (no fixed force: homogeneous, a cone)
