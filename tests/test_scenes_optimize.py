@@ -6,6 +6,7 @@ and the sliding (search) answers checked by the forward solve."""
 from __future__ import annotations
 
 import itertools
+import json
 
 import numpy as np
 import pytest
@@ -22,7 +23,8 @@ from scenes_reference import POLYHEDRAL, dense_problem, small_scenes
 cp = pytest.importorskip("cvxpy")
 
 
-def clarabel_push(p, ns, objective, obj, d, a_min=None, radius=None, tau_max=None):
+def clarabel_push(p, ns, objective, obj, d, a_min=None, radius=None, tau_max=None,
+                  a_obj=None):
     """The best value of the push over every contact state (held: the row still, its force
     >= 0; open: no force, the row separating), every wheel and friction set sticking: one
     conic problem per state in cvxpy, solved by Clarabel."""
@@ -58,10 +60,13 @@ def clarabel_push(p, ns, objective, obj, d, a_min=None, radius=None, tau_max=Non
         if objective == "strongest_push":
             prob = cp.Problem(cp.Maximize(d @ ao), cons)
         else:
-            cons.append(d @ ao >= a_min)
+            cons.append(d @ ao >= a_min if a_obj is None else ao == a_obj)
             Ls = np.linalg.cholesky(M[:ns, :ns])
             prob = cp.Problem(cp.Minimize(cp.sum_squares(Ls.T @ a[:ns])), cons)
-        prob.solve(solver="CLARABEL", tol_gap_abs=1e-10, tol_gap_rel=1e-10, tol_feas=1e-10)
+        try:
+            prob.solve(solver="CLARABEL", tol_gap_abs=1e-10, tol_gap_rel=1e-10, tol_feas=1e-10)
+        except cp.error.SolverError:  # (an equality no torque meets on this state)
+            continue
         if prob.status == "optimal":
             v = prob.value
             if best is None or (v > best if objective == "strongest_push" else v < best):
@@ -130,6 +135,59 @@ def test_a_push_no_torque_changes_on_a_piece_is_checked_not_passed_to_ipopt():
                         tau_max=np.array([3.0]))
     assert got.objective_value == pytest.approx(ref, rel=1e-5)
     assert d[:2] @ got.analysis.a_obj[0][:2] >= a_min * (1 - 1e-6)
+
+
+ONE_JOINT_TWO_OBJECTS = """
+[robot]
+joints = 1
+length = 0.15
+mass = 1.0
+inertia = 0.002
+
+[ground]
+model = "frictionless"
+
+[[object]]
+shape = "box"
+size = [0.08, 0.06]
+mass = 1.5
+touching = { link = 1, offset = 0.075, side = "left" }
+
+[[object]]
+shape = "disc"
+radius = 0.04
+mass = 1.0
+touching = { link = 2, offset = 0.1, side = "right" }
+"""
+
+
+def test_a_full_object_acceleration_asked_of_one_joint(tmp_path):
+    """a_obj (three entries) asked of a 1-joint snake: the equality is taken on the range of
+    the torque's map (else IPOPT has too few degrees of freedom and CasADi warned on every
+    piece, on standard error). Reachable: the torque that gives it, Clarabel's value; not
+    reachable: infeasible; the command line's standard error stays empty."""
+    import subprocess
+    import sys
+
+    p = tmp_path / "s.toml"
+    p.write_text(ONE_JOINT_TWO_OBJECTS)
+    model = snakecg.load(read_scene(p))
+    q = np.array([0.0, 0.0, 0.0, 0.3])
+    for t in (0.05, -0.05, 0.2):
+        a = model.forward(q, np.array([t])).a_obj[0]
+        got = model.optimize(q, "least_slip_push", a_obj=tuple(a), tau_max=1.0,
+                             allow_slide=False)
+        assert got.status == "optimal", got.reason
+        assert got.tau[0] == pytest.approx(t, rel=1e-6)
+        dp = dense_problem(model.forward(q, np.zeros(1)), model, np.zeros(1))
+        ref = clarabel_push(dp, model.n_coordinates, "least_slip_push", 0, None,
+                            tau_max=np.array([1.0]), a_obj=a)
+        assert got.objective_value == pytest.approx(ref, rel=1e-5)
+    r = subprocess.run([sys.executable, "-m", "snakecg.cli", "optimize", "least-slip-push",
+                        "--scene", str(p), "--q", "0,0,0,0.3", "--a-obj", "0.1,0,0",
+                        "--json"], capture_output=True, text=True, timeout=600)
+    assert r.returncode == 1 and r.stderr == "", r.stderr[:300]
+    assert json.loads(r.stdout)["status"] == "infeasible"
 
 
 def test_paper_scene_through_the_general_path_matches_its_optimizer(rng):

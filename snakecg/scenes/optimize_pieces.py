@@ -80,7 +80,7 @@ def _build(p, roles, task, st, start, relax=0.0):
         if not g.is_constant():
             opti.subject_to(g == eq if eq is not None else g >= lo)
             return
-        v = np.asarray(ca.evalf(g), float).ravel()
+        v = np.asarray(g if isinstance(g, ca.DM) else ca.evalf(g), float).ravel()
         gap = np.abs(v - np.ravel(eq)) if eq is not None else lo - v
         if np.any(gap > CONSTANT_TOL * (1.0 + np.abs(v))):
             empty.append(True)
@@ -125,7 +125,11 @@ def _build(p, roles, task, st, start, relax=0.0):
     qdd = a[:p.n_s]
     norm_qdd = ca.bilin(ca.DM(p.M_s), qdd, qdd)
     if task["objective"] == "least_slip_push":
-        if task["a_obj"] is not None:
+        if task["a_obj"] is not None and not slides:  # on the range of the torque's map
+            _equal_on_range(sub, ao, aff["a"][0][p.n_s + 3 * j:p.n_s + 3 * j + 3],
+                            aff["a"][1][p.n_s + 3 * j:p.n_s + 3 * j + 3],
+                            np.asarray(task["a_obj"], float))
+        elif task["a_obj"] is not None:
             sub(ao, eq=np.asarray(task["a_obj"], float))
         else:
             sub(ca.dot(ca.DM(task["direction"]), ao), task["a_min"])
@@ -158,6 +162,22 @@ def _build(p, roles, task, st, start, relax=0.0):
                           "ipopt.tol": IPOPT_TOL, "ipopt.max_iter": 1000,
                           "ipopt.bound_relax_factor": relax})
     return opti, tau, f, bool(slides), constant, bool(empty)
+
+
+def _equal_on_range(sub, x, X, x0, target):
+    """``x = X tau + x0 == target`` as ``rank X`` equations in ``tau`` (the rows of ``X``'s
+    range, by its SVD) and the rest, which no torque changes, checked as constants: a full
+    object acceleration asked of fewer joints than its three entries is otherwise an
+    overconstrained NLP (IPOPT has too few degrees of freedom, CasADi warns at every
+    build)."""
+    import casadi as ca
+
+    U, S, _ = np.linalg.svd(X)
+    r = int(np.sum(S > 1e-12 * S.max())) if S.size and S.max() > 0 else 0
+    if r:
+        sub(ca.mtimes(ca.DM(U[:, :r].T), x - ca.DM(target)), eq=np.zeros(r))
+    if r < len(target):
+        sub(ca.DM(U[:, r:].T @ (x0 - target)), eq=np.zeros(len(target) - r))
 
 
 def _starts(p, task, st, rng):
