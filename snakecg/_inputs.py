@@ -26,6 +26,12 @@ MAX_MAGNITUDE = 1e100
 #: positions): the model multiplies them (m l^2, its inverse, the norms' squares), which
 #: must stay within double precision.
 MAX_PARAMETER = 1e50
+
+
+def beyond_parameter_limit(name: str, got: str) -> str:
+    """The problem of a parameter beyond :data:`MAX_PARAMETER` (``got``: its value, quoted)."""
+    return (f"{name} must be at most {MAX_PARAMETER:g} in magnitude (the model's products of "
+            f"it must stay within double precision), got {got}")
 #: Longest quoted value in a message (longer ones are cut, with their length stated).
 _MAX_REPR = 60
 

@@ -29,7 +29,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from ._inputs import MAX_PARAMETER
+from ._inputs import MAX_PARAMETER, beyond_parameter_limit
 from ._inputs import short_repr as _r
 from ._inputs import to_float as _to_float
 from .errors import InputError
@@ -133,9 +133,7 @@ def _check_values(name, values, positive, problems) -> bool:
     big = [(v, i) for v, i, _ in values if abs(v) > MAX_PARAMETER]
     if big:
         quoted = [f"{_r(v)}" if i is None else f"{_r(v)} (link {i})" for v, i in big]
-        problems.append(f"{name} must be at most {MAX_PARAMETER:g} in magnitude (the model's "
-                        f"products of it must stay within double precision), got "
-                        f"{_quote(quoted)}")
+        problems.append(beyond_parameter_limit(name, _quote(quoted)))
     return not big
 
 

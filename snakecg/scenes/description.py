@@ -14,7 +14,7 @@ import math
 import numbers
 from dataclasses import dataclass, fields
 
-from .._inputs import MAX_PARAMETER
+from .._inputs import MAX_PARAMETER, beyond_parameter_limit
 from ..errors import InputError
 from ..robot import DEFAULT_GRAVITY, Robot, Scene
 
@@ -40,9 +40,7 @@ def _too_large(where: str, item) -> list[str]:
         v = getattr(item, f.name)
         vals = v.values() if isinstance(v, dict) else v if isinstance(v, (list, tuple)) else (v,)
         if any(_num(x) and abs(x) > MAX_PARAMETER for x in vals):
-            out.append(f"{where}.{f.name} must be at most {MAX_PARAMETER:g} in magnitude (the "
-                       f"model's products of it must stay within double precision), got "
-                       f"{v!r:.60}")
+            out.append(beyond_parameter_limit(f"{where}.{f.name}", f"{v!r:.60}"))
     return out
 
 
@@ -276,7 +274,7 @@ class GeneralScene:
         for name in ("radius", "gravity"):
             v = getattr(self, name)
             if _num(v) and abs(v) > MAX_PARAMETER:
-                problems.append(f"{name} must be at most {MAX_PARAMETER:g}, got {v!r:.60}")
+                problems.append(beyond_parameter_limit(name, f"{v!r:.60}"))
         if problems:
             raise InputError("invalid scene: " + "; ".join(dict.fromkeys(problems)))  # (one
             # ground for every link: its problems once)

@@ -14,7 +14,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .._inputs import MAX_PARAMETER
+from .._inputs import MAX_PARAMETER, beyond_parameter_limit
 from .._inputs import short_repr as _r
 from ..errors import InputError
 
@@ -51,8 +51,7 @@ def _array(name, value, n, width, problems, *, default_row=None):
         return None
     if name not in _MAY_BE_INFINITE + ("joint_axis", "effort_limits") and np.any(
             np.abs(a) > MAX_PARAMETER):  # (an axis is only a direction)
-        problems.append(f"{name} must be at most {MAX_PARAMETER:g} in magnitude (the model's "
-                        f"products of it must stay within double precision), got {_r(value)}")
+        problems.append(beyond_parameter_limit(name, _r(value)))
         return None
     return a
 
