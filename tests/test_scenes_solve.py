@@ -11,7 +11,7 @@ import snakecg
 from snakecg import Robot, Scene
 from snakecg.errors import InputError
 from snakecg.scenes import GeneralScene, Ground, Obstacle, SceneObject, load_scene
-from snakecg.scenes.solve import DISC
+from snakecg.scenes.solve import BOX, DISC, FREE, UNILATERAL
 
 from overlap_reference import crossing_depth, link_ends
 from scenes_reference import (ALL_MODELS, POLYHEDRAL, approximate_accelerations,
@@ -202,6 +202,35 @@ def test_conic_problems_against_clarabel(rng):
         err = np.abs(a - ref).max() / max(1.0, np.abs(ref).max())
         worst = max(worst, err)
     assert worst <= 1e-6
+
+
+def test_torques_far_below_the_friction_sets_against_clarabel(rng):
+    """A torque 1e-10 of a random scene's: every force is far inside its friction set, so
+    every set sticks and the answer is Clarabel's on the dense problem with each friction
+    block an equality (its rows do not accelerate), contacts unilateral. The solve's
+    acceptance was relative to the sets' sizes: there every piece met it, and most answers
+    were wrong by their whole size (contacts held that part, sr off by 0.03-0.3)."""
+    s, worst, checked = 1e-10, 0.0, 0
+    for _ in range(40):
+        model, res, q, tau = _solved(rng, ALL_MODELS)
+        tiny = model.forward(q, s * np.asarray(tau))
+        assert tiny.status == 0, tiny.reason
+        p = dense_problem(tiny, model, s * np.asarray(tau))
+        stuck = []
+        for kind, r, par in p["blocks"]:
+            size = 1 if kind in (UNILATERAL, FREE, BOX) else 2
+            sticks = kind not in (UNILATERAL, FREE) and max(par) > 0
+            stuck += [(FREE, r + i, par) for i in range(size)] if sticks else [(kind, r, par)]
+        # (a cone now: scaled back up, within Clarabel's absolute tolerances)
+        up = dict(p, blocks=stuck, a_free=p["a_free"] / s, f=p["f"] / s)
+        ref, status = clarabel_accelerations(up)
+        assert status == "optimal"
+        a = np.r_[tiny.qdd, np.ravel(tiny.a_obj)] / s
+        if np.abs(ref).max() < 1e-6 * np.abs(up["a_free"]).max():
+            continue  # (nothing moves: the sets lock the snake)
+        checked += 1
+        worst = max(worst, np.abs(a - ref).max() / np.abs(ref).max())
+    assert checked >= 20 and worst <= 1e-6, (checked, worst)
 
 
 def test_point_jacobians_against_finite_differences(rng):

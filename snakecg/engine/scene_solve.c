@@ -164,6 +164,30 @@ static void scales(sc_problem *p, const double *dg, sc_int stride, const double 
   p->wscale = ws > 0 ? ws : 1.0;
 }
 
+/* The scales (as scales() above) with the sets' sizes replaced by the largest force of lam:
+ * where the sets are far larger than every force the sample asks (|b_i| / G_ii) and holds
+ * (torques 1e-10 of what friction can hold), 1e-9 of their size is the whole of the rows'
+ * accelerations, and every piece meets it. The answer is checked again at these scales where
+ * they are below 1e-3 of the first (returns 1, p's scales replaced). */
+static int tight_scales(sc_problem *p, const double *dg, sc_int stride, const double *b) {
+  double fs = 0.0, ws = 0.0;
+  sc_int i;
+  for (i = 0; i < p->m; ++i) {
+    const double d = dg[i * stride];
+    if (d > 0 && fabs(b[i]) / d > fs) fs = fabs(b[i]) / d;
+    if (fabs(p->lam[i]) > fs) fs = fabs(p->lam[i]);
+    if (fabs(b[i]) > ws) ws = fabs(b[i]);
+  }
+  if (!(fs > 0) || !(fs < 1e-3 * p->fscale)) return 0;
+  for (i = 0; i < p->m; ++i) {
+    double g = dg[i * stride] * fs;
+    if (g > ws) ws = g;
+  }
+  p->fscale = fs;
+  p->wscale = ws > 0 ? ws : p->wscale;
+  return 1;
+}
+
 /* The pieces and forces from the caller's (3 per block: the code of state_out, -1 none: held;
  * the forces: a sliding 2-D block's angle, the held rows' start, which dependent held rows
  * keep: the basic solution near the last one, inside the sets). */
@@ -207,6 +231,9 @@ static int primal_start(sc_problem *p, const double *Z, const double *g, const d
   r = sc_primal_piece(p, Z, g, c, work, iwork, defect);
   ok = r > 0 && !sc_kkt(p, res, 1) && res[0] <= TOL_ACCEPT && res[1] <= TOL_ACCEPT &&
        res[2] <= TOL_ACCEPT;
+  if (ok && tight_scales(p, dg, 1, p->b)) /* (else the dual's path, checked there too) */
+    ok = !sc_kkt(p, res, 0) && res[0] <= TOL_ACCEPT && res[1] <= TOL_ACCEPT &&
+         res[2] <= TOL_ACCEPT;
   for (k = 0; k < p->nb && ok && r == 2; ++k) /* (the dual's next choice: a contact opened) */
     if (p->kind[k] == K_UNILATERAL && p->state[k] == S_HELD &&
         p->lam[p->start[k]] <= 1e-12 * p->fscale)
@@ -380,6 +407,22 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
     ok = 1;
     if (near.res > TOL_ACCEPT) nearly = 1, dep = 3;
     else interior = 1; /* (forces inside the face's sets: not a basic solution) */
+  }
+  if (ok && !nearly && tight_scales(&p, G, m + 1, b)) { /* the sets far above the forces:
+    the answer checked at the forces' scales, switched and solved again where it breaks them
+    (the first answer kept, at the first scales, where that does not solve) */
+    const double f0 = p.fscale, w0 = p.wscale, r0[3] = {res[0], res[1], res[2]};
+    const sc_int d0 = defect;
+    memcpy(keep, lam, sizeof(double) * (size_t)m);
+    memcpy(prev, state, sizeof(sc_int) * (size_t)nb);
+    if (sc_kkt(&p, res, 0), !(fmax(res[0], fmax(res[1], res[2])) <= TOL_ACCEPT) &&
+        !active_set(&p, Z, &near, TRY_PASSES, rest, iw2, &passes, &defect, res, 1, fkp)) {
+      memcpy(lam, keep, sizeof(double) * (size_t)m);
+      memcpy(state, prev, sizeof(sc_int) * (size_t)nb);
+      p.fscale = f0, p.wscale = w0, defect = d0;
+      memcpy(res, r0, sizeof(r0));
+      sc_update_w(&p);
+    }
   }
   if (ok) { /* (w and res: the last pass's, of this lam, until lam moves; once it may have
     moved, both are taken again at the end, and until then only a pass's w is read) */

@@ -376,6 +376,30 @@ TINY_BY_M(4, _fma, TINY_FUSED) TINY_BY_M(5, _fma, TINY_FUSED) TINY_BY_M(6, _fma,
     case 4: call(4); break; case 5: call(5); break; default: call(6); \
   }
 
+/* scene_solve.c's tight_scales: where the sets are far larger than every force the sample
+ * asks and holds, the answer checked again at the forces' scales (p's scales replaced, res its
+ * residuals there); 0 where it breaks them. A force below 1e-3 of the first scale first (most
+ * samples: no division). */
+static int tight_holds(sc_int m, tiny *p, double *res) {
+  double fs = 0.0, ws = 0.0;
+  sc_int i;
+  for (i = 0; i < m; ++i)
+    if (!(fabs(p->lam[i]) < 1e-3 * p->F)) return 1;
+  for (i = 0; i < m; ++i) {
+    const double d = p->G[i * m + i], bi = fabs(p->b[i]);
+    if (d > 0 && bi / d > fs) fs = bi / d;
+    if (fabs(p->lam[i]) > fs) fs = fabs(p->lam[i]);
+    if (bi > ws) ws = bi;
+  }
+  if (!(fs > 0) || !(fs < 1e-3 * p->F)) return 1;
+  for (i = 0; i < m; ++i)
+    if (p->G[i * m + i] * fs > ws) ws = p->G[i * m + i] * fs;
+  p->F = fs;
+  p->W = ws > 0 ? ws : p->W;
+  kkt(m, p, res);
+  return res[0] <= TOL_ACCEPT && res[1] <= TOL_ACCEPT && res[2] <= TOL_ACCEPT;
+}
+
 /* The solve (m rows); shape as factored's; L (n x n) and rc (n): the inertia's factor, *t its
  * dense block's size (-1: not factored, the factor's pivot rule failed); fused: the FMA copy's
  * parts (a constant in each copy). */
@@ -438,6 +462,7 @@ TINY_FLAT int solve_body(const int fused, sc_int m, sc_int n, int shape, const d
 #undef TINY_GUESS_F
     if (ok <= 0) return 0;
   }
+  if (!tight_holds(m, &p, res)) return 0; /* (the general path switches and solves it) */
   for (k = 0; k < m; ++k) /* a degenerate answer (sc_still): the minimum-norm face's */
     if (p.state[k] != S_HELD && !(fabs(p.w[k]) > TOL_ACCEPT * p.W)) return 0;
   for (k = 0; k < m; ++k) /* a contact's force below zero by rounding: zero */
