@@ -96,3 +96,21 @@ def test_batched_metrics_against_the_forms_in_numpy(rng):
             assert abs(getattr(b, k)[s] - want[k]) <= tol, k
             assert abs(getattr(r, k) - want[k]) <= tol, k
         assert abs(b.sr[s] - want["sr"]) <= 1e-10
+
+
+def test_a_batch_on_a_scene_without_objects_has_no_object_accelerations(rng):
+    """A snake alone on Coulomb ground, a batch of 5: the objects' accelerations are an empty
+    (5, 0, 3) array (their reshape of an empty span raised ValueError), sr 0 (nothing pushed)
+    and ||qdd_s||^2 the form in NumPy."""
+    from snakecg.scenes import Ground
+
+    model = snakecg.load(GeneralScene(snakecg.Robot(joints=2),
+                                      ground=Ground(model="coulomb", mu=0.05)))
+    Q = np.c_[np.zeros((5, 3)), rng.uniform(-1.0, 1.0, (5, 2))]
+    T = rng.normal(0.0, 2.0, (5, 2))
+    b = model.forward(Q, T)
+    assert b.a_obj.shape == (5, 0, 3) and b.norm_a_obj_each.shape == (5, 0)
+    assert np.all(b.status == 0) and np.all(b.sr == 0.0)
+    for s in range(5):
+        want = _dense_metrics(model, model.forward(Q[s], T[s]), Q[s], T[s])
+        assert abs(b.norm_qdd[s] - want["norm_qdd"]) <= 1e-11 * want["scale"]

@@ -106,7 +106,8 @@ class SceneResult:
     @property
     def a_obj(self) -> np.ndarray:
         no = self._model.packed.n_objects
-        return self._span("a_obj", 3 * no).reshape((-1, no, 3) if self.batched else (no, 3))
+        span = self._span("a_obj", 3 * no)  # (no objects: a batch's rows still count)
+        return span.reshape((len(span), no, 3) if self.batched else (no, 3))
 
     @property
     def norm_a_obj_each(self) -> np.ndarray:
