@@ -5,7 +5,10 @@
   keep every link's set sticking (the scale to the limits read one member of the forces,
   which pulled at a contact, and the forward check said ``failed``);
 * torque limits too small to move an object whose own ground friction holds it: every piece
-  is empty, which IPOPT could not tell on the pieces where that object slides (``failed``)."""
+  is empty, which IPOPT could not tell on the pieces where that object slides (``failed``);
+* an object that may slide on its own ground friction: IPOPT's ratio on the pieces where it
+  sticks went to a torque of 4e-10 N m, where every condition holds within IPOPT's absolute
+  tolerances, and the forward check said ``failed`` (0.120 against the piece's 0.340)."""
 
 from __future__ import annotations
 
@@ -92,13 +95,43 @@ def _scene_two_discs():
     return GeneralScene(robot, ground=ground, objects=objects, obstacles=(peg,)), q, 0.05
 
 
-def _reference(model, q, tau):
+def _scene_sliding_object():
+    robot = _robot((1.0768806731459948, 1.0519313797951957, 1.3945529921526838),
+                   (0.18307655298497244, 0.10459250492472597, 0.11579023809370018),
+                   (0.003846061580595479, 0.003042624938226542, 0.002986035262999499))
+    ground = (Ground(model="ideal_wheels", wheel_offset=-0.009457975040213108),
+              Ground(model="frictionless"),
+              Ground(model="wheels", mu=0.513248824060886, wheel_offset=0.012484733134225622))
+    objects = (SceneObject(shape="disc", radius=0.04266486575146265, mass=28.79435188538917,
+                           touching={"link": 1, "offset": 0.09234005106890181,
+                                     "side": "right"}),
+               SceneObject(shape="box", size=(0.05100229301037387, 0.036517578358602906),
+                           mass=11.03025243500924,
+                           touching={"link": 3, "offset": 0.060772384164873273,
+                                     "side": "left"}),
+               SceneObject(shape="disc", radius=0.02821084343516636, mass=10.944605251075078,
+                           mu=0.2791039468703105,
+                           touching={"link": 2, "offset": 0.0730016591849396, "side": "left"}))
+    peg = Obstacle(shape="peg", center=(2.169741954441701, -1.0897089516969283),
+                   radius=0.03959074203368931)
+    q = np.array([2.2364622867192825, -1.08057426201449, 0.7645235110261921,
+                  -0.20691243421730587, -0.8169560330636769])
+    return GeneralScene(robot, ground=ground, objects=objects, obstacles=(peg,)), q, 0.05
+
+
+def _reference(model, q, tau, up=1.0):
     """Clarabel's accelerations at tau, sr from them, and the largest acceleration of a
-    link's sticking rows (wheels and Coulomb sets: zero where the link sticks)."""
+    link's sticking rows (wheels and Coulomb sets: zero where the link sticks). ``up``: the
+    problem solved with the applied force and the sets' sizes times ``up`` and the
+    accelerations divided by it (the problem is positively homogeneous at rest: the same
+    answer, within Clarabel's absolute tolerances where the torques are small)."""
     res = model.forward(q, tau)
     p = dense_problem(res, model, tau)
+    p = dict(p, a_free=p["a_free"] * up, f=p["f"] * up,
+             blocks=[(k, r, tuple(np.asarray(par, float) * up)) for k, r, par in p["blocks"]])
     a, status = clarabel_accelerations(p)
     assert status == "optimal"
+    a = a / up
     ns, M = model.n_coordinates, p["M"]
     nq = a[:ns] @ M[:ns, :ns] @ a[:ns]
     no = a[ns:] @ M[ns:, ns:] @ a[ns:]
@@ -150,3 +183,30 @@ def test_max_sr_is_infeasible_where_no_sticking_torque_moves_anything(build):
             sticking += 1
             assert motion <= 1e-9  # (Clarabel to about 1e-6 in a; moving: above 1e-3)
     assert sticking >= 4
+
+
+def test_max_sr_with_an_object_that_may_slide_answers_on_the_region_boundary():
+    scene, q, radius = _scene_sliding_object()
+    model = snakecg.load(scene)
+    res = model.optimize(q, "max_sr", tau_max=None, radius=radius, allow_slide=False)
+    # the pieces where every object sticks are cones, solved exactly; where the object slides
+    # they are not convex (IPOPT): local, and the certificate says which won
+    assert res.status == "local", (res.status, res.reason)
+    assert "sliding_pieces" in res.certificate
+    # the torque on the input ellipsoid (a dense N = B^T M_s^-1 B), not near 0
+    ns = model.n_coordinates
+    M = dense_problem(model.forward(q, np.zeros(2)), model, np.zeros(2))["M"]
+    N = np.linalg.inv(M[:ns, :ns])[3:, 3:]
+    assert res.tau @ N @ res.tau == pytest.approx(radius ** 2, rel=1e-6)
+    # Clarabel's sr there is the answer's, every link sticking
+    sr, slide, scale, _ = _reference(model, q, res.tau, up=1e3)
+    assert abs(sr - res.objective_value) <= 1e-6 and slide <= 1e-7 * scale
+    # no sampled torque of the ellipsoid with every link sticking does better
+    rng = np.random.default_rng(5)
+    U = rng.normal(size=(4000, 2))
+    U *= (rng.uniform(0, 1, (4000, 1)) ** 0.5) / np.linalg.norm(U, axis=1, keepdims=True)
+    T = np.linalg.solve(np.linalg.cholesky(N).T, U.T).T * radius
+    r = model.forward(np.tile(q, (len(T), 1)), T)
+    stick = np.array([all(not g["state"].startswith("slide") for g in gs if "link" in g)
+                      for gs in r.ground]) & (r.status == 0)
+    assert stick.sum() > 1000 and r.sr[stick].max() <= res.objective_value + 1e-9

@@ -23,9 +23,11 @@ piece: the problem is no longer convex, solved from a few starts: status ``local
 ``max_sr``: ``sr`` (eq. 30) is homogeneous of degree 0 on a piece with no fixed force, and
 the set of torques that keep every link's set sticking is star-shaped about 0, so its
 maximum is the largest ratio on the cone of the contact state: Dinkelbach's iteration on the
-KKT points of the cone's faces (as :mod:`snakecg.scenes.extremes`), then the torque scaled
-to the largest that keeps every limit (where the held rows are dependent, by bisection on the
-scale with the forward solve: :func:`_sticking_scale`). A state on which nothing moves (the
+KKT points of the cone's faces (as :mod:`snakecg.scenes.extremes`; with objects that may
+slide on the ground, these are the pieces where every object sticks, and IPOPT takes the
+others, :func:`_max_sr`), then the torque scaled to the largest that keeps every limit
+(where the held rows are dependent, by bisection on the scale with the forward solve:
+:func:`_sticking_scale`). A state on which nothing moves (the
 sticking sets lock the snake) has no ratio (0/0) and is left out. ``allow_slide=True`` also
 searches the region's boundary with the forward solve: status ``local`` where a sliding
 torque beats the sticking optimum, else ``stick_only`` (the sticking answer, not certified
@@ -223,13 +225,8 @@ def optimize(model, q, objective="max_sr", *, object=1, tau_max="robot", radius=
         return _held(model, qa, p, task, hold, limits)
     tau, status, cert, solver = None, "infeasible", {}, ""
     if not task["allow_slide"] or (objective == "max_sr" and not sliding_objects):
-        if objective == "max_sr" and not sliding_objects:
-            tau, cert = max_sr_exact(p, roles, task)
-            if tau is not None:
-                tau = _sticking_scale(model, qa, tau, cert)
-            status = "optimal" if tau is not None else "infeasible"
-            solver = ("Dinkelbach on the KKT points of every contact state's cone, scaled to "
-                      "the limits")
+        if objective == "max_sr":
+            tau, status, cert, solver = _max_sr(model, qa, p, roles, task, sliding_objects)
         else:
             tau, status, cert = solve_pieces(p, roles, task, sliding_objects)
             solver = "IPOPT (CasADi) on every piece"
@@ -258,6 +255,37 @@ def optimize(model, q, objective="max_sr", *, object=1, tau_max="robot", radius=
     return res
 
 
+def _max_sr(model, qa, p, roles, task, sliding_objects):
+    """``(tau, status, certificate, solver)`` of ``max_sr`` with every link's set sticking:
+    the pieces where every object sticks are cones, solved exactly; where an object slides on
+    the ground, the pieces are not convex (IPOPT, local) and the answer is their best where
+    it beats the exact one."""
+    tau, cert = max_sr_exact(p, roles, task)
+    if tau is not None:
+        tau = _sticking_scale(model, qa, tau, cert)
+    status = "optimal" if tau is not None else "infeasible"
+    solver = "Dinkelbach on the KKT points of every contact state's cone, scaled to the limits"
+    if not sliding_objects:
+        return tau, status, cert, solver
+    t2, s2, c2 = solve_pieces(p, roles, task, sliding_objects, only_sliding=True)
+    solver += "; IPOPT (CasADi) on every piece where an object slides on the ground"
+    counts = {k: c2[k] for k in ("states", "solved", "infeasible", "unknown")}
+    if t2 is not None and (tau is None or c2["value"] > cert["value"]):
+        c2["sticking_pieces"] = {"value": cert["value"], "ok": cert["ok"]}
+        return t2, s2, c2, solver
+    if tau is None:
+        c2["sticking_pieces"] = {"value": cert["value"], "ok": cert["ok"],
+                                 "reason": cert.get("reason", "")}
+        return None, s2, c2, solver
+    cert["sliding_pieces"] = counts
+    cert["ok"] = False
+    cert["reason"] = ("the exact optimum of the pieces where every object sticks; the pieces "
+                      "where an object slides on the ground are not convex: IPOPT's local "
+                      f"optima ({counts['solved']} solved, {counts['infeasible']} "
+                      f"infeasible, {counts['unknown']} not answered) do not beat it")
+    return tau, "local", cert, solver
+
+
 def _sticking_scale(model, qa, tau, cert):
     """``tau`` where the forward solve finds every link's set sticking there; else the largest
     sticking torque along its ray, by bisection on the scale (to 1e-12 of it) with the forward
@@ -268,7 +296,8 @@ def _sticking_scale(model, qa, tau, cert):
     it allows then lets a link slide."""
     def sticks(t):
         an = model.forward(qa, t * tau)
-        return an.status == 0 and not any(g.get("link") and g["state"].startswith("slide")
+        return an.status == 0 and not any((g.get("link") or g.get("object"))
+                                          and g["state"].startswith("slide")
                                           for g in an.ground)
 
     if sticks(1.0):

@@ -307,11 +307,16 @@ def _locked(p, st) -> bool:
     return motionless(quadratics(p, state_maps(p, st), whitening(p), ()))
 
 
-def solve_pieces(p, roles, task, sliding_objects):
+def solve_pieces(p, roles, task, sliding_objects, only_sliding=False):
     """``(tau, status, certificate)``: the best piece's torque; ``optimal`` where every piece
-    is convex and solved or proven infeasible."""
+    is convex and solved or proven infeasible. ``only_sliding``: the pieces where an object
+    slides on the ground alone (``max_sr``: the others are cones, solved exactly by
+    :func:`~snakecg.scenes.optimize_sr.max_sr_exact`; IPOPT's absolute tolerances would
+    take their ratio to torques near 0, where every condition holds within them)."""
     rng = np.random.default_rng(0)
     states = contact_states(p, roles, sliding_objects)
+    if only_sliding:
+        states = [st for st in states if any(c == SLIDE for c in st)]
     best, solved, infeasible, unknown, nonconvex = None, 0, 0, 0, False
     for st in states:
         if task["objective"] == "max_sr" and _locked(p, st):
