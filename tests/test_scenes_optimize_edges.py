@@ -8,7 +8,10 @@
   is empty, which IPOPT could not tell on the pieces where that object slides (``failed``);
 * an object that may slide on its own ground friction: IPOPT's ratio on the pieces where it
   sticks went to a torque of 4e-10 N m, where every condition holds within IPOPT's absolute
-  tolerances, and the forward check said ``failed`` (0.120 against the piece's 0.340)."""
+  tolerances, and the forward check said ``failed`` (0.120 against the piece's 0.340);
+* a box flush on a link (dependent rows) and a link's anisotropic set that starts to slide
+  by less than the solve's tolerance (relative to the largest set, an object's): the scale
+  along the ray took that torque as sticking and sr was already 0.3 % off (``failed``)."""
 
 from __future__ import annotations
 
@@ -20,7 +23,7 @@ import pytest
 import snakecg
 from snakecg import Robot
 from snakecg.scenes import GeneralScene, Ground, Obstacle, SceneObject
-from snakecg.scenes.solve import BOX, DISC
+from snakecg.scenes.solve import BOX, DISC, SPLIT
 
 from scenes_reference import clarabel_accelerations, dense_problem
 
@@ -119,6 +122,28 @@ def _scene_sliding_object():
     return GeneralScene(robot, ground=ground, objects=objects, obstacles=(peg,)), q, 0.05
 
 
+def _scene_flush_box_anisotropic():
+    robot = _robot((1.3901158169347585, 1.4904866171339741, 1.2821844328926568),
+                   (0.11561632192183742, 0.14956204270267082, 0.1284961212224372),
+                   (0.001313787734432316, 0.0016103338122336864, 0.003275780727789544))
+    ground = (Ground(model="frictionless"),
+              Ground(model="anisotropic", mu_forward=0.270259222406368,
+                     mu_backward=0.3568722068637149, mu_lateral=0.6016210709758053),
+              Ground(model="anisotropic", mu_forward=0.18492134820431438,
+                     mu_backward=0.07255462235820839, mu_lateral=0.5070428901491286))
+    objects = (SceneObject(shape="box", size=(0.037376721492481474, 0.023475042980635755),
+                           mass=43.50831598792518,
+                           touching={"link": 1, "offset": 0.09466169023793972,
+                                     "side": "left"}),
+               SceneObject(shape="disc", radius=0.035031196570805986, mass=25.200564178298837,
+                           mu=0.19308282796708048,
+                           touching={"link": 3, "offset": 0.10970545166199831,
+                                     "side": "left"}))
+    q = np.array([-0.13578915049305734, 0.004231402255222685, 0.7949527477291713,
+                  0.3073852411621085, 0.014951031588471109])
+    return GeneralScene(robot, ground=ground, objects=objects), q, 0.05
+
+
 def _reference(model, q, tau, up=1.0):
     """Clarabel's accelerations at tau, sr from them, and the largest acceleration of a
     link's sticking rows (wheels and Coulomb sets: zero where the link sticks). ``up``: the
@@ -136,8 +161,8 @@ def _reference(model, q, tau, up=1.0):
     nq = a[:ns] @ M[:ns, :ns] @ a[:ns]
     no = a[ns:] @ M[ns:, ns:] @ a[ns:]
     rows = [s + i for (kind, s, _), lab in zip(p["blocks"], res._rows[0].labels)
-            if lab[0] in ("wheel", "ground") and kind in (BOX, DISC)
-            for i in range(2 if kind == DISC else 1)]
+            if lab[0] in ("wheel", "ground") and kind in (BOX, DISC, SPLIT)
+            for i in range(1 if kind == BOX else 2)]
     slide = np.abs(p["A"][rows] @ a).max() if rows else 0.0
     return no / (no + nq) if no + nq > 0 else 0.0, slide, max(1.0, np.abs(a).max()), nq + no
 
@@ -183,6 +208,20 @@ def test_max_sr_is_infeasible_where_no_sticking_torque_moves_anything(build):
             sticking += 1
             assert motion <= 1e-9  # (Clarabel to about 1e-6 in a; moving: above 1e-3)
     assert sticking >= 4
+
+
+def test_max_sr_stops_where_a_set_starts_to_slide_on_dependent_rows():
+    scene, q, radius = _scene_flush_box_anisotropic()
+    model = snakecg.load(scene)
+    res = model.optimize(q, "max_sr", tau_max=None, radius=radius, allow_slide=False)
+    assert res.status == "local", (res.status, res.reason)  # (the object's sliding pieces)
+    # Clarabel (its interior point blurs the set's boundary at the answer itself): 1 % inside
+    # along the ray every link sticks and sr is the optimum's; 2 % beyond, a link's set
+    # slides and sr has dropped to 0.74
+    sr, slide, scale, _ = _reference(model, q, 0.99 * res.tau, up=1e2)
+    assert abs(sr - res.objective_value) <= 1e-6 and slide <= 1e-9 * scale, (sr, slide)
+    sr_more, slide_more, scale_more, _ = _reference(model, q, 1.02 * res.tau, up=1e2)
+    assert slide_more > 1e-7 * scale_more and sr_more < res.objective_value - 1e-2
 
 
 def test_max_sr_with_an_object_that_may_slide_answers_on_the_region_boundary():

@@ -293,12 +293,18 @@ def _sticking_scale(model, qa, tau, cert):
     sets are convex about 0) on which ``sr`` is the piece's. The scale to the limits reads the
     sets' forces from one member of the piece's forces; where the held rows are dependent
     (a box flush on a link and pegs, say), that member may pull at a contact, and the torque
-    it allows then lets a link slide."""
+    it allows then lets a link slide. A set at its boundary reads sticking while it slides by
+    less than the solve's tolerance (relative to the largest set), which may already move sr:
+    the ray's torques on the piece are those where sr is also the piece's (to 1e-9: its
+    rounding on the piece is about 1e-13), read by the forward solve deep inside the piece."""
+    inside = model.forward(qa, 1e-6 * tau)
+    want = float(inside.sr) if inside.status == 0 else cert["value"]
+
     def sticks(t):
         an = model.forward(qa, t * tau)
-        return an.status == 0 and not any((g.get("link") or g.get("object"))
-                                          and g["state"].startswith("slide")
-                                          for g in an.ground)
+        return (an.status == 0 and abs(float(an.sr) - want) <= 1e-3 * CHECK_TOL  # (rounding)
+                and not any((g.get("link") or g.get("object")) and g["state"].startswith("slide")
+                            for g in an.ground))
 
     if sticks(1.0):
         return tau
