@@ -11,10 +11,13 @@
  *   a_free^T M a_free = sum D_i g_i^2,
  * so none of them is negative, even by rounding, and sr = sum ||a_o||^2 / (that + ||qdd_s||^2)
  * (eq. 30) stays in [0, 1]; sr is 0 where the summed norms are rounding (a system that does
- * not move): below 1e-26 a_free^T M a_free, or (below 1e-12 of it) below 1e-26 e^T M^-1 e, e
+ * not move): below 1e-26 a_free^T M a_free, or (below 1e-12 of it) below 1e-18 e^T M^-1 e, e
  * the forces' sum taken in absolute values, |f| + sum_j |lam_j| |A_j| entry by entry: the
- * scale of the rounding in a = M^-1 (f + A^T lam), where forces that cancel (a heavy object
- * held by friction against a small torque) leave rounding far above the free motion's.
+ * scale of the error in a = M^-1 (f + A^T lam), where forces that cancel (a heavy object
+ * held by friction against a small torque) leave it far above the free motion's. The solve
+ * accepts forces to 1e-9 of their scale (TOL_ACCEPT), so accelerations below 1e-9 of that
+ * scale's are not resolved: a batch's warm start (another path, another rounding) left
+ * 1.3e-13 of it and read sr 0.41 where the one-sample call read 0.
  */
 #include <math.h>
 
@@ -95,8 +98,8 @@ SC_INTERNAL void sc_scene_metrics(sc_int n, sc_int no, sc_int t, const double *L
     fr = sums(SNAKECG_NS + 3, SNAKECG_NS, L, r, f, a, norms, obj);
   else fr = sums(n, t, L, r, f, a, norms, obj);
   /* (the forces' scale taken only where the motion is below 1e-6 of the free motion's, |a|_M:
-   * elsewhere rounding would need forces 1e14 times the free motion's scale to reach it) */
+   * elsewhere the floor would need forces 1e3 times the free motion's scale to reach it) */
   if (norms[3] > 0.0 && norms[0] + norms[1] <= 1e-12 * fr &&
-      norms[0] + norms[1] <= 1e-26 * force_floor(n, t, m, L, r, f, A, lam))
+      norms[0] + norms[1] <= TOL_ACCEPT * TOL_ACCEPT * force_floor(n, t, m, L, r, f, A, lam))
     norms[3] = 0.0;
 }
