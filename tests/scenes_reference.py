@@ -622,3 +622,49 @@ shape = "peg"
 center = [0.3, 0.12]
 radius = 0.03
 """
+
+
+class Balance:
+    """The least fraction ``t`` of the friction sets that balances a torque with nothing
+    moving: ``min t`` over forces with ``A^T lam + B tau = 0`` (every coordinate, objects
+    included), contacts ``lam >= 0``, ideal wheels free, every set scaled by ``t`` (a disc,
+    a bounded wheel, a split ellipse). One cvxpy problem per configuration, ``tau`` a
+    parameter, solved by Clarabel. ``t <= 1``: ``a = 0`` is the forward solution."""
+
+    def __init__(self, model, q):
+        import cvxpy as cp
+
+        res = model.forward(q, np.zeros(model.n_joints))
+        p = dense_problem(res, model, np.zeros(model.n_joints))
+        A = p["A"]
+        n, m = A.shape[1], A.shape[0]
+        ns = model.n_coordinates
+        B = np.zeros((n, model.n_joints))
+        B[3:ns] = np.eye(model.n_joints)
+        self.tau = cp.Parameter(model.n_joints)
+        lam, t = cp.Variable(m), cp.Variable()
+        cons = [A.T @ lam + B @ self.tau == 0]
+        for kind, s, par in p["blocks"]:
+            if kind == UNILATERAL:
+                cons.append(lam[s] >= 0)
+            elif kind == BOX:
+                cons.append(cp.abs(lam[s]) <= t * par[0])
+            elif kind == DISC:
+                cons.append(cp.norm(lam[s:s + 2]) <= t * par[0])
+            elif kind == SPLIT:
+                u = cp.Variable()
+                cons += [u >= lam[s] / par[1], u >= -lam[s] / par[0],
+                         cp.norm(cp.hstack([u, lam[s + 1] / par[2]])) <= t]
+            elif kind != FREE:
+                raise AssertionError(kind)
+        self.problem = cp.Problem(cp.Minimize(t), cons)
+        self.t = t
+
+    def __call__(self, taus):
+        out = []
+        for tau in np.atleast_2d(taus):
+            self.tau.value = tau
+            self.problem.solve(solver="CLARABEL", tol_gap_abs=1e-10, tol_gap_rel=1e-10,
+                               tol_feas=1e-10)
+            out.append(self.t.value if self.problem.status == "optimal" else np.inf)
+        return np.array(out)

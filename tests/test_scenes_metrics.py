@@ -116,33 +116,6 @@ def test_a_batch_on_a_scene_without_objects_has_no_object_accelerations(rng):
         assert abs(b.norm_qdd[s] - want["norm_qdd"]) <= 1e-11 * want["scale"]
 
 
-def _static_fraction(p):
-    """The least fraction t of every friction set's size with which the sets and contacts
-    balance the applied force (A^T lam = -f, Clarabel): t < 1 means a = 0 is the exact answer
-    (Gauss's principle's KKT conditions hold at rest), so nothing moves."""
-    import cvxpy as cp
-
-    from snakecg.scenes.solve import BOX, DISC, FREE, UNILATERAL
-
-    lam, t = cp.Variable(p["A"].shape[0]), cp.Variable(nonneg=True)
-    cons = [p["A"].T @ lam + p["f"] == 0]
-    for kind, s, par in p["blocks"]:
-        if kind == UNILATERAL:
-            cons.append(lam[s] >= 0)
-        elif kind == BOX:
-            cons.append(cp.abs(lam[s]) <= t * par[0])
-        elif kind == DISC:
-            cons.append(cp.norm(lam[s:s + 2]) <= t * par[0])
-        elif kind != FREE:  # split ellipse: backward par[0], forward par[1], across par[2]
-            sp, sm = cp.Variable(nonneg=True), cp.Variable(nonneg=True)
-            cons += [lam[s] == sp - sm, cp.norm(cp.hstack([sp / par[1] + sm / par[0],
-                                                            lam[s + 1] / par[2]])) <= t]
-    prob = cp.Problem(cp.Minimize(t), cons)
-    prob.solve(solver="CLARABEL")
-    assert prob.status == "optimal"
-    return float(t.value)
-
-
 def test_sr_is_zero_in_a_batch_where_friction_holds_the_snake_still():
     """A 1-joint snake on anisotropic and Coulomb ground beside a disc, torques of an
     ellipsoid its friction holds (Clarabel: the sets balance the boundary's torques with a
@@ -150,7 +123,7 @@ def test_sr_is_zero_in_a_batch_where_friction_holds_the_snake_still():
     1.3e-13 of the forces' scale (rounding through another path) and read sr 0.41 on them."""
     from snakecg.scenes import Ground, SceneObject
 
-    from scenes_reference import dense_problem
+    from scenes_reference import Balance
 
     robot = snakecg.Robot(joints=1, mass=(1.8596847719220104, 1.2730504702274663),
                           length=(0.10610752464669511, 0.12719360704586752),
@@ -166,9 +139,7 @@ def test_sr_is_zero_in_a_batch_where_friction_holds_the_snake_still():
     ns, radius = model.n_coordinates, 0.05
     M = inertia_and_force(model, q, np.zeros(1))[0]
     tau_edge = radius / np.sqrt(np.linalg.inv(M[:ns, :ns])[3, 3])  # (the ellipsoid's ends)
-    for tau in (tau_edge, -tau_edge):
-        p = dense_problem(model.forward(q, np.array([tau])), model, np.array([tau]))
-        assert _static_fraction(p) < 0.05
+    assert np.all(Balance(model, q)([[tau_edge], [-tau_edge]]) < 0.05)
     T = np.random.default_rng(0).uniform(-tau_edge, tau_edge, (3000, 1))
     b = model.forward(np.tile(q, (3000, 1)), T)
     assert np.all(b.status == 0) and np.all(b.sr == 0.0)
