@@ -128,4 +128,28 @@ static inline int sc_piece_parts(sc_problem *p, sc_int n, const double *Z, const
   }
   return 1;
 }
+
+/* The solve's scales (scene_solve.c's scales) with the friction sets' sizes replaced by the
+ * largest force of lam: where the sets are far larger than every force a sample asks
+ * (|b_i| / G_ii) and holds (a torque 1e-10 of what friction holds), 1e-9 of their size is
+ * more than all of the rows' accelerations and every piece meets it. 1 where that force scale
+ * is below 1e-3 of F (*fs, *ws: the forces' and accelerations' scales; the answer is checked
+ * again at them), shared by scene_solve.c and scene_tiny.c. dg: G's diagonal at stride. */
+static inline int sc_tight_scales(sc_int m, const double *dg, sc_int stride, const double *b,
+                                  const double *lam, double F, double *fs, double *ws) {
+  double f = 0.0, w = 0.0;
+  sc_int i;
+  for (i = 0; i < m; ++i) {
+    const double d = dg[i * stride];
+    if (d > 0 && fabs(b[i]) / d > f) f = fabs(b[i]) / d;
+    if (fabs(lam[i]) > f) f = fabs(lam[i]);
+    if (fabs(b[i]) > w) w = fabs(b[i]);
+  }
+  if (!(f > 0) || !(f < 1e-3 * F)) return 0;
+  for (i = 0; i < m; ++i)
+    if (dg[i * stride] * f > w) w = dg[i * stride] * f;
+  *fs = f;
+  *ws = w;
+  return 1;
+}
 #endif

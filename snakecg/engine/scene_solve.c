@@ -164,25 +164,11 @@ static void scales(sc_problem *p, const double *dg, sc_int stride, const double 
   p->wscale = ws > 0 ? ws : 1.0;
 }
 
-/* The scales (as scales() above) with the sets' sizes replaced by the largest force of lam:
- * where the sets are far larger than every force the sample asks (|b_i| / G_ii) and holds
- * (torques 1e-10 of what friction can hold), 1e-9 of their size is the whole of the rows'
- * accelerations, and every piece meets it. The answer is checked again at these scales where
- * they are below 1e-3 of the first (returns 1, p's scales replaced). */
+/* p's scales replaced by the forces' own where the sets are far above them (scene_sets.h's
+ * sc_tight_scales: 1, the answer then checked again at these). */
 static int tight_scales(sc_problem *p, const double *dg, sc_int stride, const double *b) {
-  double fs = 0.0, ws = 0.0;
-  sc_int i;
-  for (i = 0; i < p->m; ++i) {
-    const double d = dg[i * stride];
-    if (d > 0 && fabs(b[i]) / d > fs) fs = fabs(b[i]) / d;
-    if (fabs(p->lam[i]) > fs) fs = fabs(p->lam[i]);
-    if (fabs(b[i]) > ws) ws = fabs(b[i]);
-  }
-  if (!(fs > 0) || !(fs < 1e-3 * p->fscale)) return 0;
-  for (i = 0; i < p->m; ++i) {
-    double g = dg[i * stride] * fs;
-    if (g > ws) ws = g;
-  }
+  double fs, ws;
+  if (!sc_tight_scales(p->m, dg, stride, b, p->lam, p->fscale, &fs, &ws)) return 0;
   p->fscale = fs;
   p->wscale = ws > 0 ? ws : p->wscale;
   return 1;

@@ -377,23 +377,15 @@ TINY_BY_M(4, _fma, TINY_FUSED) TINY_BY_M(5, _fma, TINY_FUSED) TINY_BY_M(6, _fma,
   }
 
 /* scene_solve.c's tight_scales: where the sets are far larger than every force the sample
- * asks and holds, the answer checked again at the forces' scales (p's scales replaced, res its
- * residuals there); 0 where it breaks them. A force below 1e-3 of the first scale first (most
- * samples: no division). */
+ * asks and holds (scene_sets.h's sc_tight_scales), the answer checked again at the forces'
+ * scales (p's scales replaced, res its residuals there); 0 where it breaks them. A force below
+ * 1e-3 of the first scale first (most samples: no division). */
 static int tight_holds(sc_int m, tiny *p, double *res) {
-  double fs = 0.0, ws = 0.0;
+  double fs, ws;
   sc_int i;
   for (i = 0; i < m; ++i)
     if (!(fabs(p->lam[i]) < 1e-3 * p->F)) return 1;
-  for (i = 0; i < m; ++i) {
-    const double d = p->G[i * m + i], bi = fabs(p->b[i]);
-    if (d > 0 && bi / d > fs) fs = bi / d;
-    if (fabs(p->lam[i]) > fs) fs = fabs(p->lam[i]);
-    if (bi > ws) ws = bi;
-  }
-  if (!(fs > 0) || !(fs < 1e-3 * p->F)) return 1;
-  for (i = 0; i < m; ++i)
-    if (p->G[i * m + i] * fs > ws) ws = p->G[i * m + i] * fs;
+  if (!sc_tight_scales(m, p->G, m + 1, p->b, p->lam, p->F, &fs, &ws)) return 1;
   p->F = fs;
   p->W = ws > 0 ? ws : p->W;
   kkt(m, p, res);
