@@ -254,6 +254,39 @@ def test_simulate_refuses_bad_arguments_before_any_work():
     assert math.isfinite(model.simulate(np.zeros(5), 0.01).kinetic_energy[-1])
 
 
+def test_a_start_that_overlaps_is_refused_naming_the_bodies_and_the_depth(tmp_path, capsys):
+    """A disc placed 4 mm into a wall (closed form: its centre 4 mm nearer than its radius):
+    one run is refused before any step, as the paper's scene refuses it, naming the two bodies
+    and the depth; the CLI in one line with exit status 2; a batch marks that run alone."""
+    from snakecg.cli import main
+    from snakecg.scenes import simulate_scene_batch
+
+    rad, depth = 0.05, 0.004
+    wall = Obstacle(shape="wall", point=(1.0, 0.0), normal=(-1.0, 0.0))
+    disc = SceneObject(shape="disc", radius=rad, mass=2.0, pose=(1.0 - rad + depth, 0.0, 0.0))
+    scene = GeneralScene(_far_robot(), ground=Ground(model="frictionless"), objects=(disc,),
+                         obstacles=(wall,))
+    model = load_scene(scene)
+    with pytest.raises(InputError, match=r"initial state is not physical: object 1 and "
+                       r"obstacle 1 overlap by 0.004 m"):
+        model.simulate(np.zeros(4), 0.01)
+    apart = [[[1.0 - rad - 0.01, 0.0, 0.0]]]
+    batch = simulate_scene_batch(model, np.zeros((2, 4)), 0.01,
+                                 q_obj0=np.array([[[1.0 - rad + depth, 0.0, 0.0]], *apart]))
+    assert list(batch.status) == ["penetration", "completed"]
+    assert "overlap by 0.004 m" in batch.message[0]
+    toml = tmp_path / "disc.toml"
+    toml.write_text("[robot]\njoints = 1\n[ground]\nmodel = \"frictionless\"\n"
+                    f"[[object]]\nshape = \"disc\"\nradius = {rad}\nmass = 2.0\n"
+                    f"pose = [{1.0 - rad + depth}, 0.0, 0.0]\n"
+                    "[[obstacle]]\nshape = \"wall\"\npoint = [1.0, 0.0]\nnormal = [-1.0, 0.0]\n")
+    rc = main(["simulate", "--scene", str(toml), "--q", "0,0,0,0", "--tau", "0",
+               "--duration", "0.01", "--out", str(tmp_path / "out"), "--quiet"])
+    err = capsys.readouterr().err.strip().splitlines()
+    assert rc == 2 and len(err) == 1 and "overlap by 0.004 m" in err[0]
+    assert not (tmp_path / "out").exists()
+
+
 # MuJoCo on the matched pegs scene ------------------------------------------------------------
 def test_pegs_row_against_mujoco():
     """The pegs-row run for 1 s against MuJoCo on the matched scene (capsules and cylinders,

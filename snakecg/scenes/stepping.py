@@ -120,8 +120,9 @@ def _late(name: str):
     return got
 
 
-#: the engine's step's statuses (scene_step.c)
-STEP_DONE, STEP_NOT_CONVERGED, STEP_IMPACT_NOT_CONVERGED = 0, 1, 2
+#: the engine's step's statuses (scene_step.c; 3 and up: the rows at the step's end refused,
+#: STEP_OVERLAP where two shapes overlap beyond the tolerance)
+STEP_DONE, STEP_NOT_CONVERGED, STEP_IMPACT_NOT_CONVERGED, STEP_OVERLAP = 0, 1, 2, 3
 
 
 class _Stepper:
@@ -501,8 +502,11 @@ def _run(model, st, q, v, qo, vo, duration, dt, output_every, kind, law, name, p
 
     acc = st.acc
     rec.follow(acc)
-    if st.begin(q, qo, v, vo) != STEP_DONE:
-        return rec.finish("penetration", 0.0, st.engine.refusal(st.out)), None
+    code = st.begin(q, qo, v, vo)
+    if code != STEP_DONE:  # the start's fault: refused before any step
+        why = "is not physical" if code == STEP_OVERLAP else "is refused"
+        raise InputError(f"simulate: the initial state {why}: {st.engine.refusal(st.out)} "
+                         "(q0, q_obj0)")
     cap = int(min(RECORD_ROWS, duration / dt / output_every + 4))
     run = st.runner
     if run is None:
