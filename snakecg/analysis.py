@@ -289,7 +289,8 @@ def _pattern_search(model, qa, L, Linv_T, metric, t0, v0, rounds: int):
         v = getattr(res, metric).reshape(n, k, 2 * na)
         j = np.argmax(v, axis=2)
         vj = np.take_along_axis(v, j[..., None], axis=2)[..., 0]
-        better = vj > best + 1e-15 * np.abs(best)
+        # (best is -inf where no start was answered: a configuration flagged by forward)
+        better = vj > best + np.where(np.isfinite(best), 1e-15 * np.abs(best), 0.0)
         best = np.where(better, vj, best)
         pick_u = np.take_along_axis(cand, j[..., None, None], axis=2)[:, :, 0]
         pick_t = np.take_along_axis(taus, j[..., None, None], axis=2)[:, :, 0]

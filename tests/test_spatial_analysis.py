@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import itertools
 import json
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -16,6 +17,8 @@ from test_spatial_contact import _embed, _flat, _reference
 
 import snakecg
 from snakecg.errors import InputError
+
+ROOT = Path(__file__).resolve().parents[1]
 
 SCENARIOS = ("frictionless", "wheels", "ideal_wheels")
 
@@ -210,6 +213,31 @@ def test_pitch_torque_moves_the_normal_forces():
     weight = 9.81 * robot.total_mass
     assert abs(pitched.normal.sum() - weight) <= 1e-9 * weight
     assert np.abs(pitched.normal - yaw_only.normal).max() > 1.0
+
+
+def test_a_configuration_off_the_ground_is_flagged(capsys):
+    """The ground's rows hold a link's height and slope only where it lies on the plane: a
+    pitch joint bent by 0.3 rad or by 1e-7 rad lifts the links beyond it (the axis's slope
+    sin(angle) by the closed form), and forward returns NaN with the flag and why, as
+    extremes and optimize do; a sample lying flat in the same batch is the one-sample
+    answer; the CLI fails in one line."""
+    from snakecg.cli import main
+
+    robot = snakecg.SpatialRobot(joints=3)  # yaw, pitch, yaw
+    model = snakecg.load(snakecg.SpatialScene(robot, scenario="wheels", contact_link=4))
+    q = np.tile(robot.neutral(), (3, 1))
+    q[:, 7:] = [[0.4, 0.0, -0.3], [0.4, 0.3, -0.3], [0.4, 1e-7, -0.3]]
+    slope = np.abs(model.robot_model.link_poses(q)[:, :, 2, 0]).max(axis=1)
+    np.testing.assert_allclose(slope[1:], np.sin([0.3, 1e-7]), rtol=1e-12)
+    res = model.forward(q, [0.2, 1.0, 0.1])
+    assert list(res.singular) == [False, True, True]
+    assert res.reason[0] == "" and all("not lying on the ground" in r for r in res.reason[1:])
+    assert np.isnan(res.sr[1:]).all() and np.isnan(res.qdd[1:]).all()
+    assert np.array_equal(res[0].raw, model.forward(q[0], [0.2, 1.0, 0.1]).raw)
+    rc = main(["forward", "--scene", str(ROOT / "examples" / "spatial" / "yaw_pitch.toml"),
+               "--q", "0,0,0,0.4,0.3,-0.3", "--tau", "0.2,1,0.1", "--quiet"])
+    err = capsys.readouterr().err.strip().splitlines()
+    assert rc == 1 and len(err) == 1 and "not lying on the ground" in err[0]
 
 
 def test_forward_batch_json_and_bad_input():

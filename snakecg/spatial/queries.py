@@ -37,6 +37,7 @@ from ..analysis import _pattern_search
 from ..errors import InputError
 from ..extremes_result import METRICS, Extremes, sphere_directions
 from ..forms_eig import Whitening, range_geig, signed
+from .analysis import NOT_ON_GROUND
 
 __all__ = ["StateMaps", "state_maps", "extremes", "NOT_ON_GROUND"]
 
@@ -46,10 +47,6 @@ RCOND = 1e-10
 GROUND_TOL = 1e-9
 #: Relative agreement of the forward solve with a returned extreme (the certificate).
 CERTIFY_TOL = 1e-8
-#: A link whose axis's slope (rad) or COM height (m, from link 1's) exceeds this is not flat.
-FLAT_TOL = 1e-9
-NOT_ON_GROUND = ("the snake is not lying on the ground at this configuration: every link's "
-                 "axis must be horizontal and its COM at the height of the others")
 
 
 class StateMaps:
@@ -224,13 +221,7 @@ def screen(model, qa, residual) -> np.ndarray:
     that the forward solve does not answer at zero torque (its reason: e.g. ground rows
     nearly but not exactly dependent), where no torque is answered either."""
     why = np.array(["" if r <= GROUND_TOL else NOT_ON_GROUND for r in residual], dtype=object)
-    T = model.robot_model.link_poses(qa)  # (n, n_l, 4, 4)
-    com = np.asarray(model.scene.robot.com)
-    heights = np.einsum("bkj,kj->bk", T[:, :, 2, :3], com) + T[:, :, 2, 3]
-    slope = np.abs(T[:, :, 2, 0]).max(axis=1)
-    level = np.abs(heights - heights[:, :1]).max(axis=1)
-    why[(why == "") & ((slope > FLAT_TOL) | (level > FLAT_TOL))] = NOT_ON_GROUND
-    at_rest = model.forward(qa, np.zeros((qa.shape[0], model.n_joints)))
+    at_rest = model.forward(qa, np.zeros((qa.shape[0], model.n_joints)))  # (flags lifted q)
     for i in np.flatnonzero(at_rest.singular & (why == "")):
         why[i] = at_rest.reason[i]
     return why
