@@ -238,6 +238,12 @@ def test_a_configuration_off_the_ground_is_flagged(capsys):
                "--q", "0,0,0,0.4,0.3,-0.3", "--tau", "0.2,1,0.1", "--quiet"])
     err = capsys.readouterr().err.strip().splitlines()
     assert rc == 1 and len(err) == 1 and "not lying on the ground" in err[0]
+    rc = main(["optimize", "max-sr", "--scene",
+               str(ROOT / "examples" / "spatial" / "yaw_pitch.toml"), "--q",
+               "0,0,0,0.4,0.3,-0.3", "--quiet"])
+    out = capsys.readouterr().out  # the status, why, and no analysis of nothing answered
+    assert rc == 1 and out.startswith("max_sr: failed (") and "not lying on the ground" in out
+    assert "contact" not in out and "(;" not in out
 
 
 def test_forward_batch_json_and_bad_input():

@@ -313,8 +313,9 @@ def print_optimum(res, objective: str, value_name: str, *, timed: bool = True,
     """The lines every ``snakecg optimize`` answer starts with: the status (and the solver,
     with its time when ``timed``), the reason, the lines ``between``, the torque, the
     objective's value (``value_name``) and the binding limits."""
-    when = f"; {res.time * 1e3:.2f} ms" if timed else ""
-    print(f"{objective}: {res.status} ({res.solver}{when})")
+    how = [res.solver] if res.solver else []  # (no solver ran where the input was refused)
+    how += [f"{res.time * 1e3:.2f} ms"] if timed else []
+    print(f"{objective}: {res.status}" + (f" ({'; '.join(how)})" if how else ""))
     if res.reason:
         print(f"  reason: {res.reason}")
     for line in between:

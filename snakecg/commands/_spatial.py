@@ -136,6 +136,8 @@ def optimize_command(args, scene: SpatialScene) -> int:
     name = {"max_sr": "sr", "least_slip_push": "|qdd|^2",
             "strongest_push": "d . a_obj (m/s^2)"}[objective]
     print_optimum(res, objective, name)
+    if an.singular:  # nothing answered at this configuration: the reason says why
+        return code
     print(f"  a_obj  = {an.a_obj}")
     print(f"  normal = {an.normal}  (N)")
     print(f"  contact {'kept' if an.contact else 'lost'}; wheels: {' '.join(an.wheel_state)}")
