@@ -31,6 +31,7 @@ from ..engine import STATUS_EXACT
 from ..errors import InputError
 from ..forward import WHEEL_STATE_NAMES, ForwardResult, _Columns, _core_batch
 from ..solver import check_input_range, default_max_iter
+from .ground import NOT_ON_GROUND, STATUS_NOT_ON_GROUND, lying_flat
 from .model import SpatialModel
 from .scene import SpatialScene
 
@@ -43,14 +44,6 @@ NO_ANSWER = ("the compiled solve did not answer this sample exactly (held rows d
              "beyond the ground's support, no convergence of the active set or of the "
              "friction bounds, an ill-conditioned mass matrix, or an impossible result); its "
              "results are NaN")
-#: A link whose axis's slope (rad) or COM height (m, from link 1's) exceeds this is not flat.
-FLAT_TOL = 1e-9
-#: Why a sample at a configuration that does not lie on the ground has no answer.
-NOT_ON_GROUND = ("the snake is not lying on the ground at this configuration: every link's "
-                 "axis must be horizontal and its COM at the height of the others")
-#: The status of such a sample (set here, before the solve's answer is read; the compiled
-#: solve's own statuses are small integers).
-STATUS_NOT_ON_GROUND = 100
 _ORDER = ("tau", "qdd", "a_obj", "lam", "normal", "pitch_moment", "w", "contact", "wheel_state",
           "norm_lambda", "norm_a_obj", "norm_qdd", "sr", "singular", "conditioning")
 
@@ -126,18 +119,6 @@ class SpatialForwardResult(ForwardResult):
                 return np.where(np.isfinite(a), a, None).tolist()
             return a.tolist()
         return {k: clean(getattr(self, k)) for k in _ORDER}
-
-
-def lying_flat(model, qa) -> np.ndarray:
-    """``(N,)``: whether each configuration of ``qa`` ``(N, n_q)`` lies on the ground, every
-    link's axis horizontal and its COM at the height of link 1's (within :data:`FLAT_TOL`):
-    the configurations the ground's rows describe (``model``: a :class:`SpatialSceneModel`)."""
-    T = model.robot_model.link_poses(qa)  # (N, n_l, 4, 4)
-    com = np.asarray(model.scene.robot.com)
-    heights = np.einsum("bkj,kj->bk", T[:, :, 2, :3], com) + T[:, :, 2, 3]
-    slope = np.abs(T[:, :, 2, 0]).max(axis=1)
-    level = np.abs(heights - heights[:, :1]).max(axis=1)
-    return (slope <= FLAT_TOL) & (level <= FLAT_TOL)
 
 
 class SpatialSceneModel:

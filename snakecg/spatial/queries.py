@@ -37,7 +37,7 @@ from ..analysis import _pattern_search
 from ..errors import InputError
 from ..extremes_result import METRICS, Extremes, sphere_directions
 from ..forms_eig import Whitening, range_geig, signed
-from .analysis import NOT_ON_GROUND
+from .ground import NOT_ON_GROUND
 
 __all__ = ["StateMaps", "state_maps", "extremes", "NOT_ON_GROUND"]
 
