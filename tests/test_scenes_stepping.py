@@ -287,6 +287,66 @@ def test_a_start_that_overlaps_is_refused_naming_the_bodies_and_the_depth(tmp_pa
     assert not (tmp_path / "out").exists()
 
 
+def _deepest_overlap_of_bodies(scene, run) -> float:
+    """The deepest overlap (m) over a run's samples of every pair that can touch (links that
+    are not neighbours, links with objects, objects with objects), by the tests' closest
+    points (scenes_geometry_reference: separating axes), no pegs or walls."""
+    from scenes_geometry_reference import Shape, closest
+
+    worst, scale = 0.0, max(scene.robot.length)
+    for q, qo in zip(run.q, run.q_obj):
+        links = [Shape("segment", np.array([a, b]), scene.radius)
+                 for a, b in link_segments(scene.robot, q)]
+        objs = [Shape("point", qo[j, :2], o.radius) if o.shape == "disc"
+                else Shape("polygon", _box_corners(qo[j], o.size))
+                for j, o in enumerate(scene.objects)]
+        pairs = [(A, B) for A in links for B in objs]
+        pairs += [(links[i], links[j]) for i in range(len(links))
+                  for j in range(i + 2, len(links))]
+        pairs += [(objs[i], objs[k]) for i in range(len(objs)) for k in range(i + 1, len(objs))]
+        for A, B in pairs:
+            if A.kind == "polygon":
+                A, B = B, A
+            worst = max(worst, -closest(A, B, scale)[0])
+    return worst
+
+
+def test_a_step_whose_solve_does_not_converge_is_taken_again_halved():
+    """A random scene of the simulation campaign (3 joints on four ground models, a box and
+    two discs pressed by a constant torque): at t = 0.162 s its step's solve did not converge
+    at the full step (nearly dependent rows) and the run ended not_converged. Halved, the
+    step converges: the run completes, no pair overlaps beyond the tolerance on any sample
+    (the tests' closest points of segments, discs and boxes), and the energy laws hold."""
+    robot = snakecg.Robot(joints=3, mass=(1.3763742690256087, 1.0523463212462962,
+                                          0.8564950651940352, 0.9824298190412027),
+                          length=(0.16427904671798899, 0.12499006334975063,
+                                  0.14614422842851688, 0.15188033467861559),
+                          inertia=(0.001335435930036699, 0.0017656626358713754,
+                                   0.0038897617723326504, 0.0020588058834374113))
+    ground = (Ground(model="frictionless"), Ground(model="frictionless"),
+              Ground(model="anisotropic", mu_forward=0.47005364733140964,
+                     mu_backward=0.06469822860109727, mu_lateral=0.5828333077883276),
+              Ground(model="wheels", mu=0.3096223938243699,
+                     wheel_offset=-0.0005478129134649616))
+    objects = (SceneObject(shape="box", size=(0.049525677632571014, 0.0507562563213656),
+                           mass=36.24691552869378,
+                           touching={"link": 3, "offset": 0.12777215951637694, "side": "right"}),
+               SceneObject(shape="disc", radius=0.021928072957702858, mass=20.288872133216937,
+                           touching={"link": 1, "offset": 0.13843683685644345, "side": "right"}),
+               SceneObject(shape="disc", radius=0.026058493095400932, mass=9.140886622385944,
+                           touching={"link": 4, "offset": 0.1205645819311787, "side": "right"},
+                           mu=0.1413569515710373))
+    scene = GeneralScene(robot, ground=ground, objects=objects)
+    q0 = np.array([-1.6984455905603177, -0.02586513996954804, 1.0388964250809964,
+                   -0.07179653637338368, -0.9865157461624381, 1.1632220732231648])
+    tau = np.array([-0.36974076258660016, -1.8998593477112768, 3.4233542802322505])
+    run = load_scene(scene).simulate(q0, 0.25, tau=tau, dt=1e-3)
+    assert run.status == "completed", (run.status, run.message)
+    assert run.t[-1] == pytest.approx(0.25, abs=1e-12)
+    assert _deepest_overlap_of_bodies(scene, run) <= run.tolerance * (1 + 1e-6)
+    _laws(run)
+
+
 # MuJoCo on the matched pegs scene ------------------------------------------------------------
 def test_pegs_row_against_mujoco():
     """The pegs-row run for 1 s against MuJoCo on the matched scene (capsules and cylinders,

@@ -12,7 +12,10 @@
  *      time along the step where its distance at x + s h V+ reaches its target (-tol / 4, or
  *      halfway from a start already within the tolerance) by Brent's method (sc_brentq, the
  *      tolerances of scipy's brentq the Python loop used: 1e-12, 1e-10); the step taken again
- *      shortened to the earliest, at most RUN_TRIES times, never shorter than h_min;
+ *      shortened to the earliest, at most RUN_TRIES times, never shorter than h_min; where
+ *      the step's solve does not converge (nearly dependent rows), the step taken again
+ *      halved, up to RETRY_HALVINGS times (as Drake's discrete solver takes substeps where
+ *      its solve fails: the sets' sizes, the offsets and the velocity term weigh otherwise);
  *   3. the record: every `every`-th step and the last, a row (t, x, V, tau, acc) into the
  *      caller's buffer; an impact returns (RUN_IMPACT, for the caller's event record) unless
  *      the run only counts them (a batch).
@@ -26,6 +29,7 @@
 #include "scene_step.h"
 
 #define RUN_TRIES 60 /* shortened tries of one step */
+#define RETRY_HALVINGS 6 /* halvings of a step whose solve did not converge */
 #define ROOT_XTOL 1e-12
 #define ROOT_RTOL 1e-10
 /* the torque laws (snakecg/scenes/stepping.py's LAW_*) */
@@ -245,7 +249,7 @@ static int run_on(sc_scene_run *r, void **kept) {
   }
   while (r->duration - r->t > eps) { /* (rounding of the sum of the steps is no step) */
     double h = fmin(r->dt, r->duration - r->t);
-    sc_int tries;
+    sc_int tries, halved = 0;
     int code = 0, status = STEP_DONE;
     if (r->phase == PH_STEP) {
       if (r->every > 0 && r->nrec >= r->cap) return RUN_FULL;
@@ -261,7 +265,11 @@ static int run_on(sc_scene_run *r, void **kept) {
       st->h = h;
       if ((code = sc_scene_step_kept(st, kept))) return code;
       status = (int)st->status;
-      if (status == STEP_NOT_CONVERGED) return RUN_NOT_CONVERGED;
+      if (status == STEP_NOT_CONVERGED) { /* halved (the file's head) */
+        if (halved == RETRY_HALVINGS || 0.5 * h < r->h_min) return RUN_NOT_CONVERGED;
+        h *= 0.5, halved++;
+        continue;
+      }
       if (status == STEP_DONE || status == STEP_IMPACT_NOT_CONVERGED) break;
       if ((code = shorten(r, &h))) return code;
     }
