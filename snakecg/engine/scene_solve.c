@@ -445,6 +445,9 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
     }
   }
 answered:
+  if (ok && !(fmax(res[0], fmax(res[1], res[2])) <= TOL_ACCEPT)) /* the answer's own residuals
+    decide what it is: above the acceptance a near miss (flag 3), above NEAR_OK none */
+    fmax(res[0], fmax(res[1], res[2])) <= NEAR_OK ? (void)(dep = 3) : (void)(ok = 0);
   info[INFO_STATUS] = ok ? ST_SOLVED : ST_NOT_CONVERGED;
   info[INFO_DEPENDENT] = (double)dep;
   info[INFO_PRIMAL] = res[0];
