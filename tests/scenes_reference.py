@@ -127,10 +127,15 @@ def dense_problem(res, model, tau, f_obj=None):
     """M (full), f, A, blocks of the one-sample result's rows, and G, b, a_free in NumPy."""
     r = res._rows[0]
     M, f = inertia_and_force(model, res._q, tau, f_obj)
+    return problem_of(M, f, r.A, r.kind, r.start, r.par)
+
+
+def problem_of(M, f, A, kind, start, par):
+    """The dense problem of M, f, the rows A and their blocks (kind, start, par): with
+    G = A M^-1 A^T, b = A M^-1 f, a_free = M^-1 f and M^-1, in NumPy."""
     Minv = np.linalg.inv(M)
-    A = r.A
     return dict(M=M, f=f, A=A, G=A @ Minv @ A.T, b=A @ Minv @ f, a_free=Minv @ f, Minv=Minv,
-                blocks=list(zip(r.kind, r.start, r.par)))
+                blocks=list(zip(kind, start, par)))
 
 
 def kkt_violations(p, lam, a, tol=1e-8):

@@ -25,7 +25,8 @@ import pytest
 import snakecg
 
 from scenes_reference import (agrees_with_clarabel, clarabel_accelerations, dense_problem,
-                              gauss_objective, indeterminate_scene, kkt_violations)
+                              gauss_objective, indeterminate_scene, kkt_violations,
+                              problem_of)
 
 
 def _moved_batch(scale, n=500):
@@ -231,8 +232,6 @@ def test_every_answer_meets_its_flags_contract_under_rounding():
             assert np.isnan(out["a"][0]).all() or worst > 1e-7
             continue
         assert worst <= 1e-9 or (info["dependent"] == 3 and worst <= 1e-7), info
-        Minv = np.linalg.inv(Mp)
-        p = dict(M=Mp, f=fp, A=Ap, G=Ap @ Minv @ Ap.T, b=Ap @ Minv @ fp, a_free=Minv @ fp,
-                 Minv=Minv, blocks=list(zip(kind, start, par)))
+        p = problem_of(Mp, fp, Ap, kind, start, par)
         assert kkt_violations(p, out["lam"][0], out["a"][0], tol=1e-7) == []
     assert (0, 0) in seen and len(seen) > 1  # (solved ones, and ones that are not)

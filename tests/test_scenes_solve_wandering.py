@@ -17,7 +17,7 @@ from snakecg import Robot, Scene
 from snakecg.scenes import load_scene
 from snakecg.scenes.solve import solve
 
-from scenes_reference import clarabel_accelerations, kkt_violations
+from scenes_reference import clarabel_accelerations, kkt_violations, problem_of
 
 DATA = Path(__file__).parent / "data" / "scene_solve_wandering_tries.json"
 
@@ -28,9 +28,7 @@ def problem():
     M, f, A = (np.array(d[k], dtype=float) for k in ("M", "f", "A"))
     kind, start = np.array(d["kind"]), np.array(d["start"])
     par = np.array(d["par"], dtype=float)
-    Minv = np.linalg.inv(M)
-    p = dict(M=M, f=f, A=A, G=A @ Minv @ A.T, b=A @ Minv @ f, a_free=Minv @ f, Minv=Minv,
-             blocks=list(zip(kind, start, par)))
+    p = problem_of(M, f, A, kind, start, par)
     core = load_scene(Scene(Robot(joints=3), scenario="wheels", kappa=50.0)).core
     out = solve(core, M[None], f[None], A[None], np.array([A.shape[0]]), kind[None],
                 start[None], par[None])
