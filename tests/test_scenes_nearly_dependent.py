@@ -200,10 +200,12 @@ def test_an_answer_beyond_the_acceptance_is_flagged_a_near_miss():
 def test_every_answer_meets_its_flags_contract_under_rounding():
     """A problem of the forward campaign whose rows are exactly dependent
     (tests/data/scene_solve_dependent_rounding.json), solved at 120 perturbations of M, f and
-    A by 1e-15 of their entries: a third of them were answered solved, flagged 0, with
-    residuals up to 2e-7. Every answer now meets its flag's contract: solved within 1e-9, or
-    a near miss (flag 3) within 1e-7 that the dense model's KKT conditions accept to 1e-7, or
-    not converged and NaN."""
+    A by 1e-15 of their entries. A third of them were once answered solved, flagged 0, with
+    residuals up to 2e-7; then not converged (NaN): their held contacts' forces, about -1e-7
+    on a dependent face, were set to zero as if rounding, which moved the other rows by more
+    than the acceptance. Those contacts are now opened and the piece solved again. Every
+    perturbation is solved, and every answer meets its flag's contract (within 1e-9, or a
+    near miss, flag 3, within 1e-7) and the dense model's KKT conditions to 1e-7."""
     import json
     from pathlib import Path
 
@@ -228,10 +230,8 @@ def test_every_answer_meets_its_flags_contract_under_rounding():
         info = {k: float(v[0]) for k, v in out["info"].items()}
         worst = max(info["primal"], info["dual"], info["complementarity"])
         seen.add((int(info["status"]), int(info["dependent"])))
-        if info["status"] != 0:
-            assert np.isnan(out["a"][0]).all() or worst > 1e-7
-            continue
+        assert info["status"] == 0, info
         assert worst <= 1e-9 or (info["dependent"] == 3 and worst <= 1e-7), info
         p = problem_of(Mp, fp, Ap, kind, start, par)
         assert kkt_violations(p, out["lam"][0], out["a"][0], tol=1e-7) == []
-    assert (0, 0) in seen and len(seen) > 1  # (solved ones, and ones that are not)
+    assert (0, 0) in seen, seen

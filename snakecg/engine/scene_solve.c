@@ -433,15 +433,26 @@ static void solve_sample(sc_int n, sc_int m, sc_int nb, const double *M, const d
             lam[start[k]] <= 1e-12 * p.fscale && sc_still(&p, k))
           state[k] = S_ZERO;
     }
-    for (k = 0; k < nb; ++k) /* a contact's force below zero by rounding: zero */
+    int clip = 0; /* a contact's force below zero by rounding: zero (before: zero, prev) */
+    for (k = 0; k < nb; ++k)
       if (kind[k] == K_UNILATERAL && (lam[start[k]] < 0 || acc[start[k]] < 0)) {
+        if (!clip++)
+          memcpy(zero, lam, sizeof(double) * (size_t)m), memcpy(prev, state, sizeof(sc_int) * nb);
         lam[start[k]] = fmax(lam[start[k]], 0.0);
         if (acc == keep) keep[start[k]] = fmax(keep[start[k]], 0.0);
         moved = 1;
       }
-    if (moved) { /* (w from Z where the rescue solved: G's rounding times its large forces) */
+    for (j = 0; j < 2 && moved; ++j) { /* (w from Z where the rescue solved: G's rounding
+      times its large forces) */
       if (zw) sc_rescue_w(&p, Z, a, c, rest); else sc_update_w(&p);
-      sc_kkt(&p, res, 0);
+      if (sc_kkt(&p, res, 0), !clip || fmax(res[0], fmax(res[1], res[2])) <= TOL_ACCEPT) break;
+      for (k = 0, clip = 0; k < nb; ++k) /* not rounding (a held face's dependent rows): those
+        contacts opened and the piece solved again, else the answer before the clip (its
+        negative forces within the acceptance) */
+        if (kind[k] == K_UNILATERAL && state[k] == S_HELD && zero[start[k]] < 0) state[k] = S_ZERO;
+      if (active_set(&p, Z, &near, TRY_PASSES, rest, iw2, &passes, &defect, res, 1, fkp))
+        dep = defect > 0 ? 2 : 0, acc = lam, moved = 0;
+      else memcpy(lam, zero, sizeof(double) * (size_t)m), memcpy(state, prev, sizeof(sc_int) * nb);
     }
   }
 answered:
