@@ -130,12 +130,14 @@ def dense_problem(res, model, tau, f_obj=None):
     return problem_of(M, f, r.A, r.kind, r.start, r.par)
 
 
-def problem_of(M, f, A, kind, start, par):
+def problem_of(M, f, A, kind, start, par, c=None):
     """The dense problem of M, f, the rows A and their blocks (kind, start, par): with
-    G = A M^-1 A^T, b = A M^-1 f, a_free = M^-1 f and M^-1, in NumPy."""
+    G = A M^-1 A^T, b = A M^-1 f + c, a_free = M^-1 f and M^-1, in NumPy. c: the rows'
+    offsets (a simulation step's gaps over h: the rows read w = A a + c), default none."""
     Minv = np.linalg.inv(M)
-    return dict(M=M, f=f, A=A, G=A @ Minv @ A.T, b=A @ Minv @ f, a_free=Minv @ f, Minv=Minv,
-                blocks=list(zip(kind, start, par)))
+    c = np.zeros(len(A)) if c is None else np.asarray(c, dtype=float)
+    return dict(M=M, f=f, A=A, c=c, G=A @ Minv @ A.T, b=A @ Minv @ f + c, a_free=Minv @ f,
+                Minv=Minv, blocks=list(zip(kind, start, par)))
 
 
 def kkt_violations(p, lam, a, tol=1e-8):
@@ -257,21 +259,22 @@ def clarabel_accelerations(p, tol=1e-11):
     L = np.linalg.cholesky(p["M"])
     cost = 0.5 * cp.sum_squares(L.T @ (a - p["a_free"]))
     cons = []
-    A = p["A"]
+    A, c = p["A"], p.get("c", np.zeros(len(p["A"])))
     for kind, s, par in p["blocks"]:
         if kind == FREE:
-            cons.append(A[s] @ a == 0)
+            cons.append(A[s] @ a + c[s] == 0)
         elif kind == UNILATERAL:
-            cons.append(A[s] @ a >= 0)
+            cons.append(A[s] @ a + c[s] >= 0)
         elif kind == BOX:
-            cost += par[0] * cp.abs(A[s] @ a)
+            cost += par[0] * cp.abs(A[s] @ a + c[s])
         elif kind == DISC:
-            cost += par[0] * cp.norm(A[s:s + 2] @ a)
-        else:  # split ellipse: y = -A a; sigma = |(p1 y_t+, p0 y_t-, p2 y_n)|
+            cost += par[0] * cp.norm(A[s:s + 2] @ a + c[s:s + 2])
+        else:  # split ellipse: y = -(A a + c); sigma = |(p1 y_t+, p0 y_t-, p2 y_n)|
             sp, sm = cp.Variable(nonneg=True), cp.Variable(nonneg=True)
-            yt = -(A[s] @ a)
+            yt = -(A[s] @ a + c[s])
             cons += [sp >= yt, sm >= -yt]
-            cost += cp.norm(cp.hstack([par[1] * sp, par[0] * sm, par[2] * (-(A[s + 1] @ a))]))
+            cost += cp.norm(cp.hstack([par[1] * sp, par[0] * sm,
+                                       par[2] * (-(A[s + 1] @ a + c[s + 1]))]))
     prob = cp.Problem(cp.Minimize(cost), cons)
     prob.solve(solver="CLARABEL", tol_gap_abs=tol, tol_gap_rel=tol, tol_feas=tol,
                max_iter=400)
@@ -283,12 +286,12 @@ def gauss_objective(p, a):
     that clarabel_accelerations minimises): 1/2 |a - a_free|_M^2 + sum_B sigma_K_B(-A_B a)."""
     d = a - p["a_free"]
     v = 0.5 * d @ p["M"] @ d
-    A = p["A"]
+    A, c = p["A"], p.get("c", np.zeros(len(p["A"])))
     for kind, s, par in p["blocks"]:
         if kind == BOX:
-            v += par[0] * abs(A[s] @ a)
+            v += par[0] * abs(A[s] @ a + c[s])
         elif kind in (DISC, SPLIT):
-            y = -(A[s:s + 2] @ a)
+            y = -(A[s:s + 2] @ a + c[s:s + 2])
             if np.any(y != 0):
                 v += _support(kind, par, y)[0]
     return v

@@ -235,3 +235,42 @@ def test_every_answer_meets_its_flags_contract_under_rounding():
         p = problem_of(Mp, fp, Ap, kind, start, par)
         assert kkt_violations(p, out["lam"][0], out["a"][0], tol=1e-7) == []
     assert (0, 0) in seen, seen
+
+
+def test_a_contact_jammed_against_an_ideal_wheel_is_solved():
+    """A simulation step's problem (tests/data/scene_step_jammed_contact.json): a contact's
+    row is 1e-5 from the opposite of an ideal wheel's, and its offset (gap / h) asks it to
+    separate. The answer's forces on the two are about 9e4, opposite, where the problem's
+    force scale is about 5e-3, so w's rounding times them was beyond 1e-9 of that scale: the
+    step was not converged after 200,000 sweeps. Its complementarity is now measured against
+    its largest force, as the dense model measures it. Solved (flag 0), it meets the dense
+    model's KKT conditions to 1e-9, and its accelerations are Clarabel's to 1e-7 of their
+    scale."""
+    import json
+    from pathlib import Path
+
+    from snakecg.scenes import GeneralScene, Ground, load_scene
+    from snakecg.scenes.solve import solve
+
+    d = json.loads((Path(__file__).parent / "data" /
+                    "scene_step_jammed_contact.json").read_text())
+    M, f, A, c = (np.array(d[k], dtype=float) for k in ("M", "f", "A", "c"))
+    kind, start, par = np.array(d["kind"]), np.array(d["start"]), np.array(d["par"], float)
+    core = load_scene(GeneralScene(snakecg.Robot(joints=1),
+                                   ground=Ground(model="frictionless"))).core
+    out = solve(core, M[None], f[None], A[None], np.array([A.shape[0]]), kind[None],
+                start[None], par[None], c=c[None])
+    info = {k: float(v[0]) for k, v in out["info"].items()}
+    assert info["status"] == 0 and info["dependent"] == 0, info
+    assert max(info["primal"], info["dual"], info["complementarity"]) <= 1e-9, info
+    p = problem_of(M, f, A, kind, start, par, c=c)
+    lam, a = out["lam"][0], out["a"][0]
+    assert kkt_violations(p, lam, a, tol=1e-9) == []
+    ref, st = clarabel_accelerations(p, tol=1e-12)
+    assert st == "optimal"
+    assert np.abs(a - ref).max() <= 1e-7 * np.abs(ref).max(), np.abs(a - ref).max()
+    big = np.sort(np.abs(lam))[-2:]
+    assert big.min() > 1e4 * np.abs(par).max()  # (the jam: forces far above the sets)
+    w = p["G"] @ lam + p["b"]
+    assert np.abs(w[[0, 4]]).max() <= 1e-9 * np.abs(p["b"]).max()  # (held to 1e-9)
+

@@ -13,14 +13,18 @@
 #include "scene_kkt.h"
 
 /* The KKT residuals (relative): primal (outside the set), dual (w not in -N_K(lam)),
- * complementarity; and the states switched where they are violated (returns 1 if any). The
+ * complementarity (to the accelerations' scale times the larger of the forces' and the
+ * largest force: nearly dependent rows, a peg across an ideal wheel's line, can ask for forces
+ * 1e7 times the scale that cancel, whose products with w's rounding would otherwise pass
+ * 1e-9); and the states switched where they are violated (returns 1 if any). The
  * largest of each kind summed before its one division by its scale (a correctly rounded
  * division by a positive scale keeps the order: the same maxima bit for bit, NaN terms left
  * out as sc_max leaves them; pr's 2-D blocks' terms, not scaled, apart). */
 SC_INTERNAL int sc_kkt(sc_problem *p, double *res, int do_switch) {
-  double pr = 0.0, p1 = 0.0, du = 0.0, co = 0.0, F = p->fscale, W = p->wscale;
+  double pr = 0.0, p1 = 0.0, du = 0.0, co = 0.0, F = p->fscale, W = p->wscale, Fl = F;
   int moved = 0;
   sc_int k;
+  for (k = 0; k < p->m; ++k) Fl = sc_max(Fl, fabs(p->lam[k]));
   for (k = 0; k < p->nb; ++k) {
     sc_int r = p->start[k];
     const double *q = p->par + 3 * k, *l = p->lam + r, *w = p->w + r;
@@ -84,6 +88,6 @@ SC_INTERNAL int sc_kkt(sc_problem *p, double *res, int do_switch) {
   }
   res[0] = sc_max(sc_max(0.0, pr / F), p1);
   res[1] = sc_max(0.0, du / W);
-  res[2] = sc_max(0.0, co / (F * W));
+  res[2] = sc_max(0.0, co / (Fl * W));
   return moved;
 }
