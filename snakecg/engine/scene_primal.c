@@ -254,7 +254,7 @@ PRIMAL_FLAT int piece(sc_int n, sc_problem *p, const double *Z, const double *g,
   sc_int nf, lds;
   const double *Zs, *cs;
   int run;
-  if (!sc_piece_parts(p, n, Z, g, gF, hr, &h, sl, rad, &ns))
+  if (!sc_piece_parts(p, n, Z, g, gF, hr, &h, sl, rad, &ns, NULL))
     return 0; /* (the piece: held rows, fixed forces, sliding discs; scene_sets.h) */
   /* the piece's columns of Z gathered (Zc, (2 ns + h) x n: the sliding discs' pairs, then
    * the held rows', each column contiguous for the loops over the coordinates; the discs'

@@ -22,8 +22,9 @@
  * the objective rises. A sliding disc keeps its last direction u_i while its |w_i| is below
  * SLIDE_FLOOR of the scale (at first its force's). Then the forces: the sliding discs'
  * -s_i u_i, the basic rows' Z_B lam_B = y - g_F - Z_S lam_S by Z_B's QR, every row's w from
- * g + Z lam. A sliding split ellipse is not treated (returns 0); a box at its bound is a
- * fixed force.
+ * g + Z lam. A sliding split ellipse (anisotropic ground) on its force's side is such a
+ * disc, of radius 1 on its rows scaled by that side's semi-axes (its support function |D w|,
+ * its force -D u); a box at its bound is a fixed force.
  *
  * The active set (sc_rescue) starts from the sweeps' reading and switches one block a pass,
  * the one that breaks its piece the most: switching every violated block at once, as
@@ -61,11 +62,11 @@ SC_INTERNAL void sc_rescue_w(sc_problem *p, const double *Z, const double *g, co
   }
 }
 
-/* the objective 1/2 |y - g_F|^2 + sum s_i |w_i| at y (sl, rad: the sliding discs' first rows
- * and radii; ws, nws: their w, |w|) */
+/* the objective 1/2 |y - g_F|^2 + sum s_i |w_i| at y (sl, rad, sd: the sliding discs' first
+ * rows, radii and rows' scales; ws, nws: their scaled w, |w|) */
 static double objective(sc_int n, const sc_problem *p, const double *Z, const double *c,
-                        const sc_int *sl, const double *rad, sc_int ns, const double *gF,
-                        const double *y, double *ws, double *nws) {
+                        const sc_int *sl, const double *rad, const double *sd, sc_int ns,
+                        const double *gF, const double *y, double *ws, double *nws) {
   sc_int i, j, e;
   double v = 0.0;
   for (i = 0; i < n; ++i) v += 0.5 * (y[i] - gF[i]) * (y[i] - gF[i]);
@@ -73,7 +74,7 @@ static double objective(sc_int n, const sc_problem *p, const double *Z, const do
     for (e = 0; e < 2; ++e) {
       double u = c ? c[sl[j] + e] : 0.0;
       for (i = 0; i < n; ++i) u += Z[i * p->m + sl[j] + e] * y[i];
-      ws[2 * j + e] = u;
+      ws[2 * j + e] = sd[2 * j + e] * u;
     }
     nws[j] = sqrt(ws[2 * j] * ws[2 * j] + ws[2 * j + 1] * ws[2 * j + 1]);
     v += rad[j] * nws[j];
@@ -84,22 +85,26 @@ static double objective(sc_int n, const sc_problem *p, const double *Z, const do
 /* The piece of p->state solved from Z (the header's); its forces' start in p->lam (the sliding
  * discs' directions, the start y = g_F + Z lam). p->lam and p->w (every row's, from g + Z lam)
  * filled; returns 1 (def: the held rows' rank defect by Z_H's QR, their basic forces), or 0
- * where it does not treat the piece (p->lam, p->w then undefined). Work: n^2 + 2 n m + 6 n +
- * 9 m doubles, 4 m sc_ints. The QR factors are linalg.h's. */
+ * where it does not treat the piece (p->lam, p->w then undefined). A sliding split ellipse is
+ * a disc of radius 1 on its rows scaled by its semi-axes (sd, scene_sets.h's sc_piece_parts),
+ * on its force's side. Work: n^2 + 2 n m + 6 n + 11 m doubles, 4 m sc_ints. The QR factors
+ * are linalg.h's. */
 static int rescue_piece(sc_problem *p, const double *Z, const double *g, const double *c,
                         double *work, sc_int *iwork, sc_int *def) {
   const sc_int n = p->n, m = p->m;
   double *R = work, *X = R + n * n, *Y = X + n * m, *gF = Y + n * m, *y = gF + n, *grad = y + n,
          *q = grad + n, *dy = q + n, *yt = dy + n, *ws = yt + n, *nws = ws + m, *beta = nws + m,
-         *rd = beta + m, *rb = rd + m, *ud = rb + m, *xb = ud + m, *qw = xb + m, *rad = qw + m;
+         *rd = beta + m, *rb = rd + m, *ud = rb + m, *xb = ud + m, *qw = xb + m, *rad = qw + m,
+         *sd = rad + m;
   sc_int *hr = iwork, *sl = hr + m, *perm = sl + m, *hp = perm + m, h = 0, ns = 0, rank, i, j,
          k, it;
   double phi, ysc = sqrt(p->fscale * p->wscale);
-  if (!sc_piece_parts(p, n, Z, g, gF, hr, &h, sl, rad, &ns))
+  if (!sc_piece_parts(p, n, Z, g, gF, hr, &h, sl, rad, &ns, sd))
     return 0; /* (the piece: held rows, fixed forces, sliding discs; scene_sets.h) */
   for (j = 0; j < ns; ++j) /* (each disc's sliding direction u_j from its force, until its w
     gives one) */
-    ud[2 * j] = -p->lam[sl[j]] / rad[j], ud[2 * j + 1] = -p->lam[sl[j] + 1] / rad[j];
+    ud[2 * j] = -p->lam[sl[j]] / (rad[j] * sd[2 * j]),
+    ud[2 * j + 1] = -p->lam[sl[j] + 1] / (rad[j] * sd[2 * j + 1]);
   /* Z_H's pivoted QR (n x h, row-major): its rank, the basic rows first in hr */
   for (i = 0; i < n; ++i) {
     dy[i] = 0.0;
@@ -118,7 +123,7 @@ static int rescue_piece(sc_problem *p, const double *Z, const double *g, const d
     for (j = 0; j < rank; ++j) t += Z[i * m + hr[j]] * p->lam[hr[j]];
     y[i] = t;
   }
-  phi = objective(n, p, Z, c, sl, rad, ns, gF, y, ws, nws);
+  phi = objective(n, p, Z, c, sl, rad, sd, ns, gF, y, ws, nws);
   for (it = 0; it < RESCUE_STEPS; ++it) {
     double step = 0.0, tstep = 1.0, ymax = ysc;
     for (j = 0; j < ns; ++j)
@@ -133,7 +138,7 @@ static int rescue_piece(sc_problem *p, const double *Z, const double *g, const d
                    f = s / fmax(nws[j], SLIDE_FLOOR * p->wscale);
       double *v = yt;
       for (i = 0; i < n; ++i) {
-        const double z0 = Z[i * m + sl[j]], z1 = Z[i * m + sl[j] + 1];
+        const double z0 = sd[2 * j] * Z[i * m + sl[j]], z1 = sd[2 * j + 1] * Z[i * m + sl[j] + 1];
         grad[i] += s * (z0 * u0 + z1 * u1);
         v[i] = -z0 * u1 + z1 * u0;
       }
@@ -168,7 +173,7 @@ static int rescue_piece(sc_problem *p, const double *Z, const double *g, const d
     for (;;) { /* the first step whole (onto the equalities); later ones halved while phi rises */
       double pt;
       for (i = 0; i < n; ++i) yt[i] = y[i] + tstep * dy[i];
-      pt = objective(n, p, Z, c, sl, rad, ns, gF, yt, ws, nws);
+      pt = objective(n, p, Z, c, sl, rad, sd, ns, gF, yt, ws, nws);
       if (it == 0 || pt <= phi || tstep < 1e-10) {
         phi = pt;
         break;
@@ -184,8 +189,8 @@ static int rescue_piece(sc_problem *p, const double *Z, const double *g, const d
     const double s = rad[j];
     if (nws[j] > SLIDE_FLOOR * p->wscale)
       ud[2 * j] = ws[2 * j] / nws[j], ud[2 * j + 1] = ws[2 * j + 1] / nws[j];
-    p->lam[sl[j]] = -s * ud[2 * j];
-    p->lam[sl[j] + 1] = -s * ud[2 * j + 1];
+    p->lam[sl[j]] = -s * sd[2 * j] * ud[2 * j];
+    p->lam[sl[j] + 1] = -s * sd[2 * j + 1] * ud[2 * j + 1];
   }
   for (i = 0; i < n; ++i) {
     double t = y[i] - gF[i];

@@ -96,10 +96,13 @@ static inline sc_int sc_face_rows(const sc_problem *p, sc_int *F, sc_int *fk) {
  * coordinates (scene_primal.c, scene_rescue.c): the held rows in hr (h), the sliding discs'
  * first rows in sl and their radii in rad (ns), their forces put on their discs' boundaries;
  * zero rows' forces 0; saturated boxes' forces at their bounds, applied in g_F = g + Z_i lam_i
- * (gF, n). Returns 0 where the piece has a sliding split ellipse (not treated there), else 1. */
+ * (gF, n). With sd (2 per sliding disc: its rows' scales, 1), a sliding split ellipse is a disc
+ * of radius 1 on its rows scaled by its semi-axes on its force's side (sd: those; its support
+ * function there |D w|, its force -D u); without, returns 0 where the piece has one (not
+ * treated there). Else 1. */
 static inline int sc_piece_parts(sc_problem *p, sc_int n, const double *Z, const double *g,
                                  double *gF, sc_int *hr, sc_int *h, sc_int *sl, double *rad,
-                                 sc_int *ns) {
+                                 sc_int *ns, double *sd) {
   const sc_int m = p->m;
   sc_int i, k;
   *h = *ns = 0;
@@ -120,7 +123,16 @@ static inline int sc_piece_parts(sc_problem *p, sc_int n, const double *Z, const
       if (!(nl > 0)) return 0;
       l[0] *= par[0] / nl; /* (the start: on the disc's boundary) */
       l[1] *= par[0] / nl;
+      if (sd) sd[2 * *ns] = sd[2 * *ns + 1] = 1.0;
       rad[*ns] = par[0];
+      sl[(*ns)++] = r;
+    } else if (p->kind[k] == K_SPLIT && sd) { /* (on the ellipse's boundary) */
+      const double d0 = l[0] < 0 ? par[0] : par[1], d1 = par[2],
+                   nl = sqrt(l[0] * l[0] / (d0 * d0) + l[1] * l[1] / (d1 * d1));
+      if (!(nl > 0) || !(d0 > 0 && d1 > 0)) return 0;
+      l[0] /= nl, l[1] /= nl;
+      sd[2 * *ns] = d0, sd[2 * *ns + 1] = d1;
+      rad[*ns] = 1.0;
       sl[(*ns)++] = r;
     } else {
       return 0; /* a sliding split ellipse, or a sliding one-row block */
