@@ -53,7 +53,7 @@ _TASK_KEYS = ("tau_max", "radius", "direction", "a_min", "a_obj")
 #: absolute).
 CHECK_TOL = 1e-6
 #: The same for least_slip_push, whose NLP carries the Tikhonov term of ``Xi + eps N``
-#: (relative bias about 1e-5, reported as ``regularization_gap``).
+#: (its relative bias, reported as ``regularization_gap``, far below this with eps 1e-12).
 REGULARIZED_TOL = 1e-4
 #: Geometric constraints are checked at the answer to this tolerance (m).
 GEOMETRY_TOL = 1e-9
@@ -437,6 +437,12 @@ def optimize_shape(model, objective: str = "max_sr", *, q0=None, starts: int = 8
                 moved, cert["sliding_search"] = found
                 if moved is not None:  # sliding wheels do better: their shape and torque
                     q, tau, analysis, value = moved
+                rec = cert["sliding_search"]
+                if not rec["converged"]:  # (its best point, not shown a local optimum)
+                    st = "failed"
+                    reason = (f"the search over sliding wheel states stopped after "
+                              f"{rec['rounds']} rounds with its step at {rec['step']:.3g} rad "
+                              f"(above {SLIDING_STEP:g}): its best shape is returned")
     return OptimizeShapeResult(
         objective=objective, q=q, tau=tau, value=value if value is not None else math.nan,
         status=st, reason=reason, analysis=analysis, certificate=cert, starts=S,
@@ -520,8 +526,11 @@ def _bounded(model) -> bool:
     return bool(np.any(model.present[1:] & np.isfinite(model.bounds[1:])))
 
 
-#: Smallest step (rad) of the search over sliding wheel states.
+#: Smallest step (rad) of the search over sliding wheel states, its first (and longest) step
+#: and its rounds at most (a round: every joint +-h, one batch of exact extremes).
 SLIDING_STEP = 1e-7
+SLIDING_START = 0.05
+SLIDING_ROUNDS = 2000
 
 
 def _sliding_search(model, objective, query, q, value, lo, hi, feasible, clearance):
@@ -531,19 +540,24 @@ def _sliding_search(model, objective, query, q, value, lo, hi, feasible, clearan
     objective. Where the exact piecewise extremes apply (the unit ellipsoid, n_a <= 4:
     :func:`snakecg.piecewise.wheel_extremes`, every wheel state, certified per shape), the
     shape is refined by a compass search on that exact per-shape optimum (every joint +-h,
-    h halved down to :data:`SLIDING_STEP` where no move improves), from the NLP's answer.
-    Returns ``(moved, record)`` (``moved``: ``(q, tau, analysis, value)`` where sliding
-    wheels do better, None where they do not), or a reason (why the search does not apply:
-    the status is then ``stick_only``)."""
+    h halved down to :data:`SLIDING_STEP` where no move improves, a joint's h doubled up to
+    :data:`SLIDING_START` where its move does), from the NLP's answer. Returns ``(moved,
+    record)`` (``moved``: ``(q, tau, analysis, value)`` where sliding wheels do better, None
+    where they do not; ``record["converged"]``: the step reached :data:`SLIDING_STEP` within
+    :data:`SLIDING_ROUNDS` rounds), or a reason (why the search does not apply: the status is
+    then ``stick_only``)."""
     from ..analysis import EXACT_WHEELS_MAX_JOINTS
 
     metric = "sr" if objective == "max_sr" else "norm_a_obj"
     na = model.n_joints
-    if na > EXACT_WHEELS_MAX_JOINTS or query.tau_max is not None or (
-            query.radius is not None and query.radius != 1.0):
+    why = (f"{na} joints" if na > EXACT_WHEELS_MAX_JOINTS else
+           "a torque box" if query.tau_max is not None else
+           f"radius {query.radius:g}" if query.radius is not None and query.radius != 1.0
+           else "")
+    if why:
         return (f"sliding wheel states are not searched (every wheel sticks at the answer): "
                 f"the exact piecewise search covers the unit ellipsoid up to "
-                f"{EXACT_WHEELS_MAX_JOINTS} joints")
+                f"{EXACT_WHEELS_MAX_JOINTS} joints, not {why}")
 
     def evaluate(shapes):
         Qs = np.hstack([np.broadcast_to(q[:3], (len(shapes), 3)), shapes])
@@ -560,9 +574,9 @@ def _sliding_search(model, objective, query, q, value, lo, hi, feasible, clearan
     best, tau = float(v[0]), t[0]
     if not np.isfinite(best):
         return "the exact piecewise extremes are not certified at the answer"
-    h = np.full(na, 0.05)
+    h = np.full(na, SLIDING_START)
     rounds = 0
-    while np.max(h) > SLIDING_STEP and rounds < 200:
+    while np.max(h) > SLIDING_STEP and rounds < SLIDING_ROUNDS:
         rounds += 1
         moves = []
         for j in range(na):
@@ -574,9 +588,11 @@ def _sliding_search(model, objective, query, q, value, lo, hi, feasible, clearan
         k = int(np.argmax(v))
         if v[k] > best + 1e-11 * abs(best):
             x, best, tau = moves[k], float(v[k]), t[k]
+            h[k // 2] = min(2.0 * h[k // 2], SLIDING_START)  # (that joint: a longer step next)
         else:
             h = 0.5 * h
-    record = {"stick_value": value, "rounds": rounds, "step": float(np.max(h))}
+    record = {"stick_value": value, "rounds": rounds, "step": float(np.max(h)),
+              "converged": bool(np.max(h) <= SLIDING_STEP)}
     if best <= value + 1e-12 * max(1.0, abs(value)):  # sliding does not beat the answer
         return None, record
     qn = np.concatenate([q[:3], x])
@@ -588,7 +604,7 @@ def _geometry_problem(model, q, clearance) -> str:
     from ..geometry import feasibility
 
     fz = feasibility(model, q, clearance=clearance)
-    if fz.self_distance < clearance - GEOMETRY_TOL:
+    if fz.self_distance < clearance - GEOMETRY_TOL or fz.self_distance <= 0.0:  # (0: crossing)
         return (f"geometry check: non-adjacent links {fz.self_distance:.3g} m apart "
                 f"(clearance {clearance:.3g} m)")
     if fz.penetration > GEOMETRY_TOL:

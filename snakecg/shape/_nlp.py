@@ -30,7 +30,7 @@ import math
 import numpy as np
 
 #: Relative Tikhonov weight of ``N`` in ``Xi + eps N`` (max_sr and least_slip_push).
-SR_EPS = 1e-9
+SR_EPS = 1e-12
 #: Relative back-off from the friction bounds (as :mod:`snakecg.optimize`).
 FRICTION_MARGIN = 1e-7
 #: Layout of the parameter vector: pose (3), objective scale, direction (3), a_min,
