@@ -102,3 +102,16 @@ def test_max_sr_with_wheels_of_a_heavy_object():
         assert ref.status == "optimal"
         assert res.value >= float(ref.analysis.sr) - 1e-9, (angles, res.value)
     assert float(model.forward(res.q, res.tau).sr) == res.value
+
+
+def test_a_push_no_torque_can_make_is_infeasible_for_either_push_objective():
+    """Along d = (-0.3, -0.9) no torque of a 1-joint snake pushes its object: least_slip_push
+    said `infeasible` and strongest_push `failed` for that one cause. Both say `infeasible`
+    now, and the exact torque optimizer at the answer's shape agrees that nothing pushes
+    along d there."""
+    model = snakecg.load(snakecg.Scene(snakecg.Robot(joints=1), scenario="frictionless"))
+    d = [-0.3, -0.9]
+    strong = model.optimize_shape("strongest_push", direction=d)
+    least = model.optimize_shape("least_slip_push", direction=d, a_min=1e-3)
+    assert (strong.status, least.status) == ("infeasible", "infeasible"), (strong, least)
+    assert model.optimize(strong.q, "strongest_push", direction=d).status == "infeasible"

@@ -48,6 +48,8 @@ SCHEMA = "snakecg.optimize_shape/1"
 #: Joint limits (rad) of a robot that states none: the range of the paper's grids.
 JOINT_LIMITS = (-0.75 * math.pi, 0.75 * math.pi)
 _SUCCESS = ("Solve_Succeeded", "Solved_To_Acceptable_Level")
+_AT_ANSWER = "the exact torque optimizer at the answer: "
+_NO_TORQUE = _AT_ANSWER + "infeasible"
 _TASK_KEYS = ("tau_max", "radius", "direction", "a_min", "a_obj")
 #: IPOPT's value and the exact forward value at the answer must agree to this (relative; sr:
 #: absolute).
@@ -67,7 +69,8 @@ class OptimizeShapeResult:
       ``d . a_obj`` in m/s^2, or ``||qdd_s||^2``); ``analysis``: the forward result there;
     * ``status``: ``"optimal"`` (best local optimum of the starts, every check passed,
       sliding wheel states included), ``"stick_only"`` (the same with every wheel sticking:
-      sliding states could not be searched), ``"infeasible"`` (no start reached a point meeting the constraints) or ``"failed"``;
+      sliding states could not be searched), ``"infeasible"`` (no start reached a point
+      meeting the constraints, or no torque does the task at the answer) or ``"failed"``;
       ``reason``: ``""`` or why;
     * ``certificate``: KKT residuals of the solved NLP (``stationarity``,
       ``primal_infeasibility``, ``complementarity``), ``active`` constraint names, IPOPT's
@@ -426,8 +429,8 @@ def optimize_shape(model, objective: str = "max_sr", *, q0=None, starts: int = 8
                                                           else abs(value), 1e-300):
             reason = (f"forward check: the exact value {value:.9g} differs from IPOPT's "
                       f"{v_nlp:.9g}")
-        if reason:
-            st = "failed"
+        if reason:  # (no torque does the task at the answer: as no start reaching one)
+            st = "infeasible" if reason.startswith(_NO_TORQUE) else "failed"
         elif objective in ("max_sr", "max_a_obj") and _bounded(model):
             found = _sliding_search(model, objective, query, q, value, lo, hi, feasible,
                                     clearance)
@@ -498,7 +501,8 @@ def _answer(model, objective, form, query, q, x, prob):
         res = optimize(model, q, objective, **kw)
         tau, an = res.tau, res.analysis
         reason = "" if res.status == "optimal" else \
-            f"the exact torque optimizer at the answer: {res.status}: {res.reason}"
+            f"{_NO_TORQUE if res.status == 'infeasible' else _AT_ANSWER + res.status}: " \
+            f"{res.reason}"
     if not reason and not bool(an.contact):
         reason = "forward check: the contact separates at the answer"
     ws = np.asarray(an.wheel_state)
