@@ -139,10 +139,14 @@ def self_distance(rear, front) -> np.ndarray:
 
 
 def self_intersecting(rear, front, clearance: float = SELF_CLEARANCE) -> np.ndarray:
-    """Shapes whose non-adjacent links come closer than ``clearance`` [m], or meet (distance
-    0: crossing links are 0 apart, so a clearance of 0 still refuses them)."""
-    d = self_distance(rear, front)
-    return (d < clearance) | (d <= 0.0)
+    """Shapes whose non-adjacent links come closer than ``clearance`` [m], or meet."""
+    return _too_close(self_distance(rear, front), clearance)
+
+
+def _too_close(distance, clearance):
+    """Closer than ``clearance``, or meeting (crossing links are 0 apart: a clearance of 0
+    still refuses them)."""
+    return (distance < clearance) | (distance <= 0.0)
 
 
 def object_penetration(a, b, q_obj, side: float = OBJECT_SIDE) -> np.ndarray:
@@ -218,8 +222,8 @@ def feasibility(model, q, *, clearance: float = SELF_CLEARANCE,
     for i in range(rear.shape[1]):
         if i != k:
             pen = np.maximum(pen, object_penetration(rear[:, i], front[:, i], q_obj, side))
-    dist = self_distance(rear, front)  # (0 where links cross: refused at any clearance)
-    out = Feasibility(self_distance=dist, self_intersecting=(dist < clearance) | (dist <= 0.0),
+    dist = self_distance(rear, front)
+    out = Feasibility(self_distance=dist, self_intersecting=_too_close(dist, clearance),
                       penetration=pen,
                       penetrates_object=pen > PENETRATION_TOLERANCE, clearance=clearance)
     if batched:
