@@ -115,3 +115,17 @@ def test_a_push_no_torque_can_make_is_infeasible_for_either_push_objective():
     least = model.optimize_shape("least_slip_push", direction=d, a_min=1e-3)
     assert (strong.status, least.status) == ("infeasible", "infeasible"), (strong, least)
     assert model.optimize(strong.q, "strongest_push", direction=d).status == "infeasible"
+
+
+def test_the_answer_lies_within_its_joint_limits():
+    """An answer at a joint limit lay 2.8e-12 rad beyond it (IPOPT's rounding at a bound);
+    the joint limits always apply, so the answer is now within them exactly."""
+    model = snakecg.load(snakecg.Scene(snakecg.Robot(joints=2), scenario="ideal_wheels",
+                                       kappa=300.0, mu=0.02, contact_link=2, side="right"))
+    res = model.optimize_shape("least_slip_push", radius=0.5, feasible=False,
+                               direction=[-0.7714077189503415, 0.6363412065423949],
+                               a_min=0.0005790880750765692)
+    assert res.status == "optimal", res.reason
+    lo, hi = np.array(res.limits["joint_limits"]).T
+    assert np.all(res.q[3:] >= lo) and np.all(res.q[3:] <= hi), (res.q[3:] - lo, hi - res.q[3:])
+    assert float(model.forward(res.q, res.tau).norm_qdd) == res.value

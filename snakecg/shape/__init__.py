@@ -394,6 +394,7 @@ def optimize_shape(model, objective: str = "max_sr", *, q0=None, starts: int = 8
         pick = min(near, key=lambda i: (tuple(np.round(sols[i][0][:na], 6)),
                                         -sign * sols[i][3], tuple(sols[i][0][:na])))
     x, p, cert, v_nlp, ok, status, iters, used = sols[pick]
+    x = np.concatenate([np.clip(x[:na], lo, hi), x[na:]])  # (IPOPT's rounding at a bound)
     q = np.concatenate([S[pick][:3], x[:na]])
     cert = dict(cert, ipopt_status=status, iterations=iters)
 
