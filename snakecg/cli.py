@@ -132,6 +132,7 @@ def main(argv=None) -> int:
             return 1
         except KeyboardInterrupt:
             sys.stderr.write(f"{command}: interrupted\n")
+            _quiet_cluster_close()
             return 130
         finally:
             warnings.formatwarning = saved_format
@@ -139,6 +140,27 @@ def main(argv=None) -> int:
                 os.environ.pop("SNAKECG_PROGRESS", None)
             else:
                 os.environ["SNAKECG_PROGRESS"] = saved_progress
+
+
+def _quiet_cluster_close() -> None:
+    """An interrupt can land while a local Dask cluster starts: distributed's own exit hook
+    then closes it half started and prints a traceback (an AssertionError on its status)
+    after the one line. The hook still runs, without the traceback."""
+    import atexit
+
+    spec = sys.modules.get("distributed.deploy.spec")
+    close = getattr(spec, "close_clusters", None)
+    if close is None:
+        return
+
+    def quietly():
+        try:
+            close()
+        except Exception:  # noqa: BLE001 - a half-started cluster's close; the process ends
+            pass
+
+    atexit.unregister(close)
+    atexit.register(quietly)
 
 
 def _one_line(exc: BaseException) -> str:

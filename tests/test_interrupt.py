@@ -141,3 +141,39 @@ else:
             proc.communicate()
     assert out.strip() == "KeyboardInterrupt", (out, err)
     assert proc.returncode == 0, err
+
+
+def test_an_interrupt_while_a_dask_cluster_starts_prints_one_line():
+    """A Ctrl-C that lands while `snakecg sweep` starts its local Dask cluster left the
+    cluster half started, and distributed's exit hook then printed a 25-line traceback
+    (AssertionError: Status.init) after the one line. Here such a cluster (one whose close
+    raises that error) is registered, the command is interrupted, and the process ends with
+    the one line and exit status 130; the hook still ran."""
+    script = """
+import sys, pathlib
+from distributed.deploy.spec import SpecCluster
+from distributed.core import Status
+import snakecg, snakecg.cli
+
+class HalfStarted:
+    shutdown_on_close, status = True, Status.init
+    def close(self, timeout=None):
+        pathlib.Path(sys.argv[1]).write_text("closed")
+        raise AssertionError(self.status)
+
+held = HalfStarted()
+SpecCluster._instances.add(held)
+def interrupted(*args, **kwargs):
+    raise KeyboardInterrupt
+snakecg.load = interrupted
+sys.exit(snakecg.cli.main(["forward", "--joints", "1", "--q", "0,0,0,0", "--tau", "0"]))
+"""
+    import tempfile
+    from pathlib import Path
+
+    mark = Path(tempfile.mkdtemp()) / "hook"
+    p = subprocess.run([sys.executable, "-c", script, str(mark)], capture_output=True,
+                       text=True, timeout=120)
+    assert p.returncode == 130, p.stderr
+    assert p.stderr.splitlines() == ["snakecg forward: interrupted"], p.stderr
+    assert mark.read_text() == "closed"
