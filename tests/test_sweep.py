@@ -719,6 +719,9 @@ def test_bad_arguments_are_one_line_errors_and_write_nothing(tmp_path, capsys, m
         (["--summary", "plain-folder"], "not a sweep store"),
         (["--figure", "new.zarr"], "not a sweep store"),
         (["--summary", "x.zarr", "--joints", "2"], "read everything from the store"),
+        (["--summary", "x.zarr", "--limit", "5"], "--limit describes a sweep to run"),
+        (["--figure", "x.zarr", "--force"], "--force describes a sweep to run"),
+        (["--summary", "x.zarr", "--shared-store"], "--shared-store describes a sweep"),
     ]
     for argv, fragment in cases:
         _one_line_error(capsys, ["sweep"] + argv, fragment)

@@ -101,7 +101,7 @@ def register(sub) -> None:
                    "work, from the scenario and joint count, e.g. 12288 for 3-joint wheels, "
                    "cut to give each worker at least 4 chunks; a resumed store keeps its "
                    "own)")
-    r.add_argument("--limit", type=int, default=LIMIT, metavar="N",
+    r.add_argument("--limit", type=int, default=None, metavar="N",
                    help=f"refuse sweeps of more than N configurations (default {LIMIT:,})")
     r.add_argument("--force", action="store_true", help="run a sweep above --limit")
     r.add_argument("--json", action="store_true",
@@ -221,7 +221,7 @@ def run(args) -> int:
             _check_size(args, size, joints)
             kw = {"grid": [joint_values(lo, hi, st) for (lo, hi), st in zip(ranges, steps)]}
     res = sweep(scene, store=args.out, chunk=args.chunk, scheduler=args.scheduler,
-                workers=args.workers, limit=None if args.force else args.limit,
+                workers=args.workers, limit=None if args.force else _limit(args),
                 feasible=args.feasible_only, clearance=args.clearance,
                 shared_store=True if args.shared_store else None, simulate=simulate, **kw)
     if args.json:
@@ -238,6 +238,13 @@ def run(args) -> int:
     return 0
 
 
+def _limit(args) -> int:
+    """--limit, or the default (None when not given: --summary and --figure refuse it)."""
+    from ..sweeps.run import LIMIT
+
+    return LIMIT if args.limit is None else args.limit
+
+
 def _check_size(args, size: int, joints: int) -> None:
     """Refuse a sweep above --limit (unless --force) or too large for one store, from its
     size alone (as snakecg.sweep does once the configurations are made)."""
@@ -245,9 +252,9 @@ def _check_size(args, size: int, joints: int) -> None:
 
     if size < 1:
         return  # refused with its reason by the sweep
-    if not args.force and isinstance(args.limit, int) and args.limit >= 1 \
-            and size > args.limit:
-        raise InputError(f"{size:,} configurations exceed the limit of {args.limit:,}; "
+    limit = _limit(args)
+    if not args.force and isinstance(limit, int) and limit >= 1 and size > limit:
+        raise InputError(f"{size:,} configurations exceed the limit of {limit:,}; "
                          f"lift it (limit=None, or --force) to run them")
     check_size(size, joints)
 
@@ -256,9 +263,9 @@ def _reduce(args) -> int:
     from ..sweeps.reduce import figure, summary, summary_text
 
     for flag in ("range", "step", "samples", "seed", "scheduler", "workers", "chunk",
-                 "simulate", "tau",
+                 "simulate", "tau", "limit", "force", "shared_store",
                  "joints", "robot", "scenario", "kappa", "mu", "contact_link", "side"):
-        if getattr(args, flag) is not None:
+        if getattr(args, flag) is not None and getattr(args, flag) is not False:
             raise InputError(f"--{flag.replace('_', '-')} describes a sweep to run; "
                              f"--summary and --figure read everything from the store")
     if args.clearance is not None:
