@@ -84,11 +84,17 @@ def _forms(model, qa, *, contact: bool):
     return forms, out["input_metric"], out["contact_from_tau"], out
 
 
-def _quadratic_extremes_numpy(model, qa):
-    """Exact extremes for linear scenarios (frictionless, ideal_wheels), numpy eigensolver."""
-    n, na = qa.shape[0], model.n_joints
+def _both_forms(model, qa):
+    """``(kept, N, c, lost)``: :func:`_forms` with the contact kept and lost."""
     kept, N, c, _ = _forms(model, qa, contact=True)
-    lost, _, _, _ = _forms(model, qa, contact=False)
+    return kept, N, c, _forms(model, qa, contact=False)[0]
+
+
+def _quadratic_extremes_numpy(model, qa, forms=None):
+    """Exact extremes for linear scenarios (frictionless, ideal_wheels), numpy eigensolver
+    (forms: :func:`_both_forms`'s, where taken)."""
+    n, na = qa.shape[0], model.n_joints
+    kept, N, c, lost = forms or _both_forms(model, qa)
     W = _Whitening(N)
     ex = Extremes(method="generalized eigenproblem per contact state (exact)")
     for m in ("norm_a_obj", "norm_qdd", "norm_lambda"):
@@ -145,7 +151,8 @@ def _quadratic_extremes(model, qa):
     numpy's batched eigensolver otherwise (and for samples with dependent rows).
     """
     if "metric_extremes" not in model.backend.signatures:
-        return _sr_at_torque(model, qa, _quadratic_extremes_numpy(model, qa))
+        forms = _both_forms(model, qa)
+        return _at_torques(model, qa, _quadratic_extremes_numpy(model, qa, forms), forms)
     from .solver import HELD, LOST, PIVOT_TOL, _free_and_fixed
 
     n = qa.shape[0]
@@ -204,14 +211,31 @@ def _quadratic_extremes(model, qa):
             d, e = getattr(ex, attr), getattr(again, attr)
             for k in d:
                 d[k][sub] = e[k]
-    return _sr_at_torque(model, qa, ex)
+    return _at_torques(model, qa, ex)
 
 
-def _sr_at_torque(model, qa, ex):
-    """The largest sr reported is the exact forward solve's at the returned torque: the
-    closed form's eigenvalue is a root of a cubic with a double root at 0 (Omega has rank
-    one), good to ~1e-7 only, and the eigensolver's is near rounding-level directions of
-    Omega + Xi; their eigenvectors are good, and the quotient there to its square."""
+def _at_torques(model, qa, ex, forms=None):
+    """Every extreme reported as its value at the returned torque. The largest sr: the exact
+    forward solve's there (the closed form's eigenvalue is a root of a cubic with a double
+    root at 0, Omega having rank one, good to ~1e-7 only; the eigensolver's is near
+    rounding-level directions of Omega + Xi). The others: their forms' quotients there, where
+    those differ from the eigenvalues by more than rounding (1e-14 of the largest value) and
+    less than 1e-6. The cubic's roots are good to ~1e-8 only where one repeats, and without
+    wheels ||qdd_s||^2 is 1 in every direction that loses the contact and in all but one that
+    keeps it. The eigenvectors are good (any vector of a repeated root's space is one), and
+    the quotient there to their error's square. A torque's contact state is its half of the
+    ellipsoid (c . tau >= 0 keeps the contact). forms: :func:`_both_forms`'s, where taken."""
+    kept, N, c, lost = forms or _both_forms(model, qa)
+    scale = {m: 1e-14 * ex.max[m] for m in ("norm_a_obj", "norm_qdd", "norm_lambda")}
+    for values, taus in ((ex.max, ex.tau_max), (ex.min, ex.tau_min),
+                         (ex.min_kept, ex.tau_min_kept)):
+        for m in ("norm_a_obj", "norm_qdd", "norm_lambda"):
+            t, e = taus[m], values[m]
+            K = np.where((np.einsum("bi,bi->b", c, t) >= 0)[:, None, None], kept[m], lost[m])
+            v = np.einsum("bi,bij,bj->b", t, K, t) / np.einsum("bi,bij,bj->b", t, N, t)
+            off = np.abs(v - e)  # (rounding, below 1e-14 of the largest value, kept as it is)
+            ok = np.isfinite(v) & (off > scale[m]) & (off <= 1e-6 * np.maximum(1.0, e))
+            values[m] = np.where(ok, np.maximum(v, 0.0), e)
     at = model.forward(qa, ex.tau_max["sr"])
     ok = at.contact & ~at.singular & np.isfinite(at.sr)
     ex.max["sr"] = np.where(ok, at.sr, ex.max["sr"])
