@@ -39,7 +39,7 @@ import numpy as np
 
 from ..errors import InputError
 from ..limits import ROBOT, of_query, resolve_joint_limits
-from . import _nlp, _starts
+from . import _nlp, _sliding, _starts
 
 __all__ = ["optimize_shape", "OptimizeShapeResult", "OBJECTIVES", "SCHEMA"]
 
@@ -432,8 +432,8 @@ def optimize_shape(model, objective: str = "max_sr", *, q0=None, starts: int = 8
                       f"{v_nlp:.9g}")
         if reason:  # (no torque does the task at the answer: as no start reaching one)
             st = "infeasible" if reason.startswith(_NO_TORQUE) else "failed"
-        elif objective in ("max_sr", "max_a_obj") and _bounded(model):
-            found = _sliding_search(model, objective, query, q, value, lo, hi, feasible,
+        elif objective in ("max_sr", "max_a_obj") and _sliding.bounded(model):
+            found = _sliding.search(model, objective, query, q, value, lo, hi, feasible,
                                     clearance)
             if isinstance(found, str):
                 st, reason = "stick_only", found
@@ -446,7 +446,7 @@ def optimize_shape(model, objective: str = "max_sr", *, q0=None, starts: int = 8
                     st = "failed"
                     reason = (f"the search over sliding wheel states stopped after "
                               f"{rec['rounds']} rounds with its step at {rec['step']:.3g} rad "
-                              f"(above {SLIDING_STEP:g}): its best shape is returned")
+                              f"(above {_sliding.STEP:g}): its best shape is returned")
     return OptimizeShapeResult(
         objective=objective, q=q, tau=tau, value=value if value is not None else math.nan,
         status=st, reason=reason, analysis=analysis, certificate=cert, starts=S,
@@ -524,85 +524,6 @@ def _answer(model, objective, form, query, q, x, prob):
             d = a_dir / max(np.linalg.norm(a_dir), 1e-300)
         value = float(d @ an.a_obj)
     return tau, an, value, reason
-
-
-def _bounded(model) -> bool:
-    """The model has wheels with a friction bound (scenario 2)."""
-    return bool(np.any(model.present[1:] & np.isfinite(model.bounds[1:])))
-
-
-#: Smallest step (rad) of the search over sliding wheel states, its first (and longest) step
-#: and its rounds at most (a round: every joint +-h, one batch of exact extremes).
-SLIDING_STEP = 1e-7
-SLIDING_START = 0.05
-SLIDING_ROUNDS = 2000
-
-
-def _sliding_search(model, objective, query, q, value, lo, hi, feasible, clearance):
-    """The answer with sliding wheels searched too (``max_sr``, ``max_a_obj``, bounded wheels).
-
-    The NLP keeps every wheel sticking; a sliding wheel adds a fixed force and can raise the
-    objective. Where the exact piecewise extremes apply (the unit ellipsoid, n_a <= 4:
-    :func:`snakecg.piecewise.wheel_extremes`, every wheel state, certified per shape), the
-    shape is refined by a compass search on that exact per-shape optimum (every joint +-h,
-    h halved down to :data:`SLIDING_STEP` where no move improves, a joint's h doubled up to
-    :data:`SLIDING_START` where its move does), from the NLP's answer. Returns ``(moved,
-    record)`` (``moved``: ``(q, tau, analysis, value)`` where sliding wheels do better, None
-    where they do not; ``record["converged"]``: the step reached :data:`SLIDING_STEP` within
-    :data:`SLIDING_ROUNDS` rounds), or a reason (why the search does not apply: the status is
-    then ``stick_only``)."""
-    from ..analysis import EXACT_WHEELS_MAX_JOINTS
-
-    metric = "sr" if objective == "max_sr" else "norm_a_obj"
-    na = model.n_joints
-    why = (f"{na} joints" if na > EXACT_WHEELS_MAX_JOINTS else
-           "a torque box" if query.tau_max is not None else
-           f"radius {query.radius:g}" if query.radius is not None and query.radius != 1.0
-           else "")
-    if why:
-        return (f"sliding wheel states are not searched (every wheel sticks at the answer): "
-                f"the exact piecewise search covers the unit ellipsoid up to "
-                f"{EXACT_WHEELS_MAX_JOINTS} joints, not {why}")
-
-    def evaluate(shapes):
-        Qs = np.hstack([np.broadcast_to(q[:3], (len(shapes), 3)), shapes])
-        ex = model.extremes(Qs, exact=True)
-        v = np.where(ex.certified, ex.max[metric], -np.inf)
-        if feasible:
-            from ..geometry import feasibility
-
-            v = np.where(feasibility(model, Qs, clearance=clearance).feasible, v, -np.inf)
-        return v, ex.tau_max[metric]
-
-    x = q[3:].copy()
-    v, t = evaluate(x[None])
-    best, tau = float(v[0]), t[0]
-    if not np.isfinite(best):
-        return "the exact piecewise extremes are not certified at the answer"
-    h = np.full(na, SLIDING_START)
-    rounds = 0
-    while np.max(h) > SLIDING_STEP and rounds < SLIDING_ROUNDS:
-        rounds += 1
-        moves = []
-        for j in range(na):
-            for sgn in (1.0, -1.0):
-                c = x.copy()
-                c[j] = np.clip(c[j] + sgn * h[j], lo[j], hi[j])
-                moves.append(c)
-        v, t = evaluate(np.array(moves))
-        k = int(np.argmax(v))
-        if v[k] > best + 1e-11 * abs(best):
-            x, best, tau = moves[k], float(v[k]), t[k]
-            h[k // 2] = min(2.0 * h[k // 2], SLIDING_START)  # (that joint: a longer step next)
-        else:
-            h = 0.5 * h
-    record = {"stick_value": value, "rounds": rounds, "step": float(np.max(h)),
-              "converged": bool(np.max(h) <= SLIDING_STEP)}
-    if best <= value + 1e-12 * max(1.0, abs(value)):  # sliding does not beat the answer
-        return None, record
-    qn = np.concatenate([q[:3], x])
-    an = model.forward(qn, tau)
-    return (qn, tau, an, float(getattr(an, metric))), record
 
 
 def _geometry_problem(model, q, clearance) -> str:
