@@ -239,7 +239,8 @@ def run(args) -> int:
 
 
 def _limit(args) -> int:
-    """--limit, or the default (None when not given: --summary and --figure refuse it)."""
+    """--limit, or the default where it is not given (left None there, so that --summary and
+    --figure can refuse it when it is)."""
     from ..sweeps.run import LIMIT
 
     return LIMIT if args.limit is None else args.limit
@@ -265,7 +266,8 @@ def _reduce(args) -> int:
     for flag in ("range", "step", "samples", "seed", "scheduler", "workers", "chunk",
                  "simulate", "tau", "limit", "force", "shared_store",
                  "joints", "robot", "scenario", "kappa", "mu", "contact_link", "side"):
-        if getattr(args, flag) is not None and getattr(args, flag) is not False:
+        value = getattr(args, flag)
+        if value is not None and value is not False:
             raise InputError(f"--{flag.replace('_', '-')} describes a sweep to run; "
                              f"--summary and --figure read everything from the store")
     if args.clearance is not None:

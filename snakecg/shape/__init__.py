@@ -284,7 +284,7 @@ def optimize_shape(model, objective: str = "max_sr", *, q0=None, starts: int = 8
     objective, query, Q0, lo, hi, clearance, jl_from = _validate(
         model, objective, q0, starts, seed, joint_limits, feasible, clearance, task)
     na = model.n_joints
-    bounded = bool(np.any(model.present[1:] & np.isfinite(model.bounds[1:])))
+    bounded = _sliding.bounded(model)
     if objective == "max_sr" or (objective in ("max_a_obj", "strongest_push")
                                  and not bounded and query.tau_max is None):
         form = "reduced"

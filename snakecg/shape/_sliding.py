@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import numpy as np
 
+
 def bounded(model) -> bool:
     """The model has wheels with a friction bound (scenario 2)."""
     return bool(np.any(model.present[1:] & np.isfinite(model.bounds[1:])))
