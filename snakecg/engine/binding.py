@@ -221,7 +221,8 @@ class SceneStep(ctypes.Structure):
                 ("A", _P), ("par", _P), ("out", _P), ("kind", _P), ("start", _P), ("M1", _P),
                 ("A1", _P), ("par1", _P), ("out1", _P), ("kind1", _P), ("start1", _P),
                 ("Vp", _P), ("lam", _P), ("info", _P), ("ilam", _P), ("iinfo", _P),
-                ("acc", _P), ("status", _I), ("from_", _P), ("nfrom", _I)]
+                ("acc", _P), ("status", _I), ("from_", _P), ("nfrom", _I),
+                ("hold", _I), ("quick", _I)]
 
 
 #: the torque laws ``core_scene_run`` and ``core_scene_law`` evaluate (scene_run.c's LAW_*)

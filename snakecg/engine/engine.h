@@ -587,13 +587,13 @@ typedef struct { const double *pk, *q, *qo; double tol, margin; sc_int ccap, mca
 int SNAKECG_EXPORT(core_scene_gaps)(const sc_scene_state *c);
 enum { ST_WORK_TAU = 0, ST_FRICTION, ST_IMPACT_LOSS, ST_CONTACT_WORK, ST_CONTACT_IMPULSE,
        ST_SLIDING_COS, ST_PRIMAL, ST_DUAL, ST_COMPL, ST_STEPS, ST_IMPACT, ST_LOSS, ST_KE,
-       ST_MIN_GAP, ST_NC, ST_WIDTH };
+       ST_MIN_GAP, ST_NC, ST_HELD, ST_WIDTH };
 enum { STEP_DONE = 0, STEP_NOT_CONVERGED = 1, STEP_IMPACT_NOT_CONVERGED = 2 };
 typedef struct { const double *pk; double tol, h, impact_speed; const double *tau, *fo;
   double *x, *V; sc_int ccap, mcap; double *M, *A, *par, *out; sc_int *kind, *start;
   double *M1, *A1, *par1, *out1; sc_int *kind1, *start1;
-  double *Vp, *lam, *info, *ilam, *iinfo, *acc; sc_int status; double *from; sc_int nfrom; }
-  sc_scene_step;
+  double *Vp, *lam, *info, *ilam, *iinfo, *acc; sc_int status; double *from; sc_int nfrom,
+  hold, quick; } sc_scene_step;
 int SNAKECG_EXPORT(core_scene_step)(sc_scene_step *c);
 SC_INTERNAL int sc_scene_step_kept(sc_scene_step *c, void **keep); /* c null: frees *keep */
 #endif

@@ -13,9 +13,13 @@
  *      halfway from a start already within the tolerance) by Brent's method (sc_brentq, the
  *      tolerances of scipy's brentq the Python loop used: 1e-12, 1e-10); the step taken again
  *      shortened to the earliest, at most RUN_TRIES times, never shorter than h_min; where
- *      the step's solve does not converge (nearly dependent rows), the step taken again
- *      halved, up to RETRY_HALVINGS times (as Drake's discrete solver takes substeps where
- *      its solve fails: the sets' sizes, the offsets and the velocity term weigh otherwise);
+ *      the step's solve does not converge (nearly dependent rows), or a shortened step is
+ *      still too short, the step taken again with the overlaps held rather than pushed out
+ *      (their offsets 0: where the rows of a jammed snake are nearly dependent, pushing an
+ *      overlap out at gap / h asks for velocities of tens of m/s or for none at all; the run
+ *      counts such steps), once; then, where the solve still does not converge, halved up
+ *      to RETRY_HALVINGS times (as Drake's discrete solver takes substeps where its solve
+ *      fails: the sets' sizes, the offsets and the velocity term weigh otherwise);
  *   3. the record: every `every`-th step and the last, a row (t, x, V, tau, acc) into the
  *      caller's buffer; an impact returns (RUN_IMPACT, for the caller's event record) unless
  *      the run only counts them (a batch).
@@ -181,9 +185,10 @@ static int along_fn(void *arg, double s, double *g) {
 }
 
 /* A refused step of length *h: the earliest time along it where a pair overlapping beyond
- * the tolerance at its end reaches its target; *h shortened to it. Returns 0, RUN_REFUSED
- * (no pair overlaps there: the refusal is another), RUN_TOO_SHORT, or < 0. */
-static int shorten(sc_scene_run *r, double *h) {
+ * the tolerance at its end reaches its target; *h shortened to it (held: the step holds its
+ * overlaps as the run's retry, none shorter for a pair that starts overlapping). Returns 0,
+ * RUN_REFUSED (no pair overlaps there: the refusal is another), RUN_TOO_SHORT, or < 0. */
+static int shorten(sc_scene_run *r, double *h, int held) {
   sc_scene_step *st = r->st;
   const sc_int n = SNAKECG_NS + 3 * (sc_int)st->pk[SP_NO];
   const double tol = st->tol;
@@ -209,7 +214,8 @@ static int shorten(sc_scene_run *r, double *h) {
     if (found != 1) return found < 0 ? found : -5;
     d0 = r->gs->out[4];
     target = fmin(-0.25 * tol, 0.5 * (fmin(d0, tol) - tol));
-    if (!(d0 > target)) {
+    if (!(d0 > target) || (held && d0 < 0.0)) { /* (held for want of a push-out: no step
+      keeps an overlap from deepening, every shorter one would come to halfway again) */
       s_hit = 0.0;
       break;
     }
@@ -249,7 +255,8 @@ static int run_on(sc_scene_run *r, void **kept) {
   }
   while (r->duration - r->t > eps) { /* (rounding of the sum of the steps is no step) */
     double h = fmin(r->dt, r->duration - r->t);
-    sc_int tries, halved = 0;
+    const double h0 = h;
+    sc_int tries, halved = 0, held = 0; /* (held: the overlaps held once, the file's head) */
     int code = 0, status = STEP_DONE;
     if (r->phase == PH_STEP) {
       if (r->every > 0 && r->nrec >= r->cap) return RUN_FULL;
@@ -261,18 +268,31 @@ static int run_on(sc_scene_run *r, void **kept) {
       if (law_tau(r, r->t)) return RUN_BAD_TAU;
     }
     r->phase = PH_STEP;
+    st->hold = 0;
     for (tries = 0; tries < RUN_TRIES; ++tries) {
       st->h = h;
       if ((code = sc_scene_step_kept(st, kept))) return code;
       status = (int)st->status;
-      if (status == STEP_NOT_CONVERGED) { /* halved (the file's head) */
+      if (status == STEP_NOT_CONVERGED) { /* held, then halved (the file's head) */
+        if (!held) {
+          st->hold = held = 1;
+          continue;
+        }
+        st->hold = 0;
         if (halved == RETRY_HALVINGS || 0.5 * h < r->h_min) return RUN_NOT_CONVERGED;
         h *= 0.5, halved++;
         continue;
       }
       if (status == STEP_DONE || status == STEP_IMPACT_NOT_CONVERGED) break;
-      if ((code = shorten(r, &h))) return code;
+      code = shorten(r, &h, (int)held);
+      if (code == RUN_TOO_SHORT && !held && !st->hold) {
+        st->hold = held = 1, h = h0, halved = 0;
+        continue;
+      }
+      if (code) return code;
     }
+    st->hold = 0;
+    st->quick = held; /* (the next step's push-out: SC_QUICK_SWEEPS, scene_step.c) */
     if (tries == RUN_TRIES) return RUN_TRIES_OUT;
     r->t += h;
     r->nstep++;

@@ -37,10 +37,17 @@
  * engine.h */
 enum { SOLVE_INFO = 8 }; /* the solve's certificate: status, dependent, primal, dual, compl.. */
 #define SC_STEP_SWEEPS 200000 /* snakecg.scenes.solve.MAX_SWEEPS */
+/* a step after one whose overlaps were held for want of a converged push-out (quick) tries
+ * the push-out with these sweeps at most: where its rows are the same, it fails again */
+#define SC_QUICK_SWEEPS 5000
 /* a contact's gap within this of the tolerance from zero takes no offset: what a step's
  * gap stabilisation leaves (second order, ~1e-11 m) would else ask dependent contacts (a
  * snake jammed among pegs) for offsets that no velocity meets, above the solve's acceptance */
 #define GAP_BAND 1e-3
+/* a push-out that gives the state more kinetic energy than its free motion's by more than this
+ * times the energy of pushing each overlap out alone is a jam (its rows nearly dependent:
+ * velocities of tens of m/s for 1e-5 m); the step holds its overlaps instead */
+#define JAM_RATIO 1e4
 
 /* One call's arguments (sc_scene_step of engine.h; snakecg/engine/binding.py mirrors them as
  * SceneStep): pk the packed scene; tol, h, impact_speed: contact tolerance (m), step (s),
@@ -54,7 +61,9 @@ enum { SOLVE_INFO = 8 }; /* the solve's certificate: status, dependent, primal, 
  * accepted step's pieces on the rows at x (3 per block: state, forces / h; its blocks' count;
  * 0: none), the run's own; then at from + 3 mcap that step's own forces (the pieces' before
  * their extrapolation, keep_pieces), from[6 mcap] their blocks' count and from[6 mcap + 1]
- * that step's h. */
+ * that step's h; hold: 1 for a step that holds the overlaps (offsets 0, not gap / h: the run's
+ * retry where pushing them out asks for what no velocity gives, scene_run.c); quick: 1 after a
+ * step that the run held so (SC_QUICK_SWEEPS). */
 
 static double quad(sc_int n, const double *M, const double *v) {
   double s = 0.0;
@@ -121,15 +130,17 @@ static int solve(sc_scene_step *c, sc_int n, double h, const double *f, double *
   /* from the last step's pieces (an impact from scratch: measured as cheap, 1 pass after 4
    * sweeps, against 2.3 passes from the step's pieces) */
   const int warm = c->from && c->nfrom == nb && h > 0;
+  const sc_int sweeps = c->quick && !c->hold && h > 0 ? SC_QUICK_SWEEPS : SC_STEP_SWEEPS;
   for (b = 0; b < nb; ++b) { /* (times 1.0 where not sized: the same number) */
     const sc_int kd = c->kind[b];
     const double s = kd == K_BOX || kd == K_DISC || kd == K_SPLIT ? h : 1.0, *q = c->par + 3 * b;
     par[3 * b] = q[0] * s, par[3 * b + 1] = q[1] * s, par[3 * b + 2] = q[2] * s;
   }
   for (k = 0; k < m; ++k) off[k] = 0.0;
-  for (k = 0; h > 0 && k < nc; ++k) { /* (a gap within GAP_BAND of zero: none) */
+  for (k = 0; h > 0 && k < nc; ++k) { /* (a gap within GAP_BAND of zero: none; held: an
+    overlap is not pushed out) */
     double g = rec[CR_W * k + 10];
-    off[c->start[k]] = fabs(g) > GAP_BAND * c->tol ? g / h : 0.0;
+    off[c->start[k]] = fabs(g) > GAP_BAND * c->tol && !(c->hold && g < 0) ? g / h : 0.0;
   }
   if (warm) {
     const double *restrict fr = c->from;
@@ -148,11 +159,48 @@ static int solve(sc_scene_step *c, sc_int n, double h, const double *f, double *
                       lam, a, w, st, info))
       return 0;
     return sc_scene_solve_one(n, m, nb, c->M, f, c->A, off, c->kind, c->start, par,
-                              SC_STEP_SWEEPS, warm ? from : NULL, lam, a, w, st, info, 0, 0);
+                              sweeps, warm ? from : NULL, lam, a, w, st, info, 0, 0);
   }
   return sc_friction_solve(n, m, nb, nc, c->M, f, c->A, off, c->kind, c->start, par,
-                           c->A + m * n, rec, SC_STEP_SWEEPS, warm ? from : NULL, lam, a, w,
+                           c->A + m * n, rec, sweeps, warm ? from : NULL, lam, a, w,
                            st, info, &unique);
+}
+
+/* y := L^-1 y (sc_ldl_factor's unit lower L, n x n); returns y^T D^-1 y, that is the form
+ * y^T M^-1 y of the y given */
+static double inverse_form(sc_int n, const double *L, const double *dinv, double *y) {
+  double s = 0.0;
+  sc_int i, k;
+  for (i = 0; i < n; ++i) {
+    for (k = 0; k < i; ++k) y[i] -= L[i + n * k] * y[k];
+    s += y[i] * y[i] * dinv[i];
+  }
+  return s;
+}
+
+/* Whether the step's V+ (c->Vp) from f = M V* pushes its overlaps out as a jam does
+ * (JAM_RATIO): mv = M V, w (n n + 4 n) scratch, off the solve's offsets (< 0: an overlap
+ * pushed out). */
+static int jammed(const sc_scene_step *c, sc_int n, const double *f, const double *mv,
+                  const double *off, double *w) {
+  const sc_int nc = (sc_int)c->out[RO_NC];
+  const double ke = 0.5 * quad(n, c->M, c->Vp);
+  double *L = w, *d = L + n * n, *dinv = d + n, *y = dinv + n, alone = 0.0, below = 0.0;
+  sc_int k;
+  for (k = 0; k < nc && !(off[c->start[k]] < 0.0); ++k) continue;
+  if (k == nc) return 0; /* (nothing pushed out) */
+  for (k = 0; k < n; ++k) below += c->V[k] * (f[k] - 0.5 * mv[k]);
+  if (!(ke > below)) return 0; /* (below the free motion's 1/2 f^T M^-1 f = below + h^2 / 2
+    g^T M^-1 g, g the generalized force: no energy above it, most steps, no factor) */
+  if (!(sc_ldl_factor(n, c->M, n, NULL, L, n, d, dinv, NULL, 0.0, y) > 0.0)) return 0;
+  for (k = 0; k < nc; ++k) { /* 1/2 off_k^2 / (a_k M^-1 a_k^T), each overlap alone */
+    const double o = off[c->start[k]];
+    if (!(o < 0.0)) continue;
+    memcpy(y, c->A + c->start[k] * n, sizeof(double) * (size_t)n);
+    alone += 0.5 * o * o / inverse_form(n, L, dinv, y);
+  }
+  memcpy(y, f, sizeof(double) * (size_t)n); /* the free motion's 1/2 f^T M^-1 f */
+  return ke - 0.5 * inverse_form(n, L, dinv, y) > JAM_RATIO * alone;
 }
 
 /* The step's pieces (the solve's states st and impulses lam on the rows at x) as the start of
@@ -206,7 +254,8 @@ static void keep_pieces(sc_scene_step *c, sc_int no, const double *st, double *d
 
 /* The step's work (4.) from the rows at x, the impulses lam and V+; the rows' velocities A V+
  * from the solve's w = A V+ + off (every row's, off its offsets: solve's). */
-static void step_work(sc_scene_step *c, const double *Vp, const double *ws, const double *off) {
+static void step_work(sc_scene_step *c, const double *Vp, const double *ws, const double *off,
+                      int held) {
   const sc_int nb = (sc_int)c->out[RO_NB] + (c->pk[SP_FRICTION] != 0) * (sc_int)c->out[RO_NC];
   double *acc = c->acc, impulse = 0.0, cmin = 2.0, t = 0.0;
   sc_int b, r, j;
@@ -238,6 +287,7 @@ static void step_work(sc_scene_step *c, const double *Vp, const double *ws, cons
   for (j = 0; j < 3; ++j)
     acc[ST_PRIMAL + j] = fmax(acc[ST_PRIMAL + j], c->info[2 + j]);
   acc[ST_STEPS] += 1.0;
+  acc[ST_HELD] += held;
 }
 
 /* The contact k of rows `out` is one at rows `old` too (the same bodies). */
@@ -308,10 +358,11 @@ SC_INTERNAL int sc_scene_step_kept(sc_scene_step *c, void **keep) {
   const double *pk = c ? c->pk : 0;
   const sc_int no = c ? (sc_int)pk[SP_NO] : 0, n = SNAKECG_NS + 3 * no, mc = c ? c->mcap : 0;
   const sc_work_fn fns[] = {SNAKECG_BF_WORK, SNAKECG_BC_WORK};
-  const sc_int nd = 7 * n + SNAKECG_NS + 9 * mc + 8; /* (then the rows' q and cs) */
+  const sc_int nd = 7 * n + SNAKECG_NS + 9 * mc + 8 + n * n + 4 * n; /* (then the rows' q and
+    cs) */
   step_keep *kp = (step_keep *)*keep;
   double *d, *f, *fgen, *hb, *xp, *scratch, *mv, *qcs;
-  int bc;
+  int bc, held = c ? c->hold != 0 : 0;
   sc_int i, j, k, nc1;
   int code;
   if (!c) {
@@ -352,7 +403,8 @@ SC_INTERNAL int sc_scene_step_kept(sc_scene_step *c, void **keep) {
   fgen = f + n;
   xp = fgen + n;
   hb = xp + n;
-  scratch = hb + SNAKECG_NS; /* 9 mcap: the solve's sizes, offsets, w, states, start */
+  scratch = hb + SNAKECG_NS; /* 9 mcap: the solve's sizes, offsets, w, states, start; then
+    n n + 4 n: jammed's */
   /* 1.: from the links' cos and sin where the rows at x took them (the same sums, rounding) */
   bc = memcmp(qcs, c->x, sizeof(double) * SNAKECG_NS) == 0;
   kp->ws.arg[bc ? BC_IN_q : BF_IN_q] = c->x;
@@ -380,6 +432,11 @@ SC_INTERNAL int sc_scene_step_kept(sc_scene_step *c, void **keep) {
     for (i = 0; i < n; ++i) fo[i] = m[i] + h * g[i];
   }
   code = solve(c, n, c->h, f, scratch, c->Vp, c->lam, c->info); /* 2. */
+  if (!code && c->info[0] == 0.0 && !c->hold &&
+      jammed(c, n, f, mv, scratch + 3 * mc, scratch + 9 * mc)) { /* held instead */
+    c->hold = held = 1; /* (kept: the run's retries of this step hold them too) */
+    code = solve(c, n, c->h, f, scratch, c->Vp, c->lam, c->info);
+  }
   if (code || c->info[0] != 0.0) {
     c->status = STEP_NOT_CONVERGED;
     return code == -1 ? -1 : 0;
@@ -395,7 +452,7 @@ SC_INTERNAL int sc_scene_step_kept(sc_scene_step *c, void **keep) {
     c->status = code > 0 ? code : c->status;
     return code < 0 ? code : 0;
   }
-  step_work(c, c->Vp, scratch + 4 * mc, scratch + 3 * mc); /* 4. */
+  step_work(c, c->Vp, scratch + 4 * mc, scratch + 3 * mc, held); /* 4. */
   nc1 = (sc_int)c->out1[RO_NC];
   {
     int impact = 0; /* 5.: a new contact closing */

@@ -16,10 +16,11 @@ SCHEMA = "snakecg.simulate_scene/1"
 #: the engine's step's accumulators and figures (scene_step.c's ST_*): the torques' work, the
 #: ground's dissipation, the impacts' loss, the contacts' work (cumulative), the last step's
 #: contact impulse, the least sliding cosine, the largest residuals, the steps, the last
-#: step's impact (flag, loss), the state's kinetic energy, smallest contact gap, contacts
+#: step's impact (flag, loss), the state's kinetic energy, smallest contact gap, contacts,
+#: the steps that held their overlaps
 (ST_WORK_TAU, ST_FRICTION, ST_IMPACT_LOSS, ST_CONTACT_WORK, ST_CONTACT_IMPULSE, ST_SLIDING_COS,
- ST_PRIMAL, ST_DUAL, ST_COMPL, ST_STEPS, ST_IMPACT, ST_LOSS, ST_KE, ST_MIN_GAP, ST_NC,
- ST_WIDTH) = range(16)
+ ST_PRIMAL, ST_DUAL, ST_COMPL, ST_STEPS, ST_IMPACT, ST_LOSS, ST_KE, ST_MIN_GAP, ST_NC, ST_HELD,
+ ST_WIDTH) = range(17)
 
 
 @dataclass
@@ -86,7 +87,10 @@ class SceneRun:
       impulses on their rows' velocities: 0 but for the gap stabilisation);
     * ``events`` (impacts, :class:`SceneEvent`), ``status`` (``completed``, ``penetration``,
       ``not_converged``), ``message``, ``violation`` (time and bodies, or None);
-    * ``certificate``: the largest KKT residuals of the steps' solves.
+    * ``certificate``: the largest KKT residuals of the steps' solves;
+    * ``steps``, and ``held_steps``: the steps taken with their overlaps held rather than
+      pushed out (the gap stabilisation left out where it asks for what no velocity gives:
+      :mod:`snakecg.scenes.stepping`).
     """
 
     tolerance: float
@@ -112,6 +116,7 @@ class SceneRun:
     certificate: dict = field(default_factory=lambda: {"primal": 0.0, "dual": 0.0,
                                                        "complementarity": 0.0})
     steps: int = 0
+    held_steps: int = 0
     min_sliding_cosine: float = -1.0
     _rows: list = field(default_factory=list)
     _ns: int = 0
@@ -143,6 +148,7 @@ class SceneRun:
         for k, i in (("primal", ST_PRIMAL), ("dual", ST_DUAL), ("complementarity", ST_COMPL)):
             self.certificate[k] = float(acc[i])
         self.steps = int(acc[ST_STEPS])
+        self.held_steps = int(acc[ST_HELD])
 
     def impact(self, t, loss, contacts, lam, info) -> None:
         """An inelastic impact at ``t``: its kinetic energy ``loss``, the contacts of the
@@ -228,8 +234,8 @@ class SceneRun:
         return {
             "schema": SCHEMA, "status": self.status, "message": self.message,
             "violation": self.violation, "duration": float(self.t[-1]) if len(self.t) else 0.0,
-            "steps": self.steps, "samples": int(len(self.t)), "dt": self.dt,
-            "tolerance": self.tolerance,
+            "steps": self.steps, "held_steps": self.held_steps, "samples": int(len(self.t)),
+            "dt": self.dt, "tolerance": self.tolerance,
             "min_gap": _finite(float(np.min(self.min_gap))) if len(self.min_gap) else None,
             "impacts": len(self.events),
             "events": [e.as_dict() for e in self.events[:100]],

@@ -13,7 +13,11 @@ with ``V* = V + h M^-1 (B tau - bias(q, v) + f_obj)`` and ``sigma_F`` the suppor
 each ground friction set (a wheel's box, Coulomb's disc, the anisotropic split ellipse: the
 sets of forces ``mu m_i g``, times ``h``: impulses; ``g_c`` taken as 0 within
 :data:`GAP_BAND` of the tolerance, what the previous step's first-order closing leaves, which
-dependent contacts of a jammed snake could not all meet). It is the rest problem of
+dependent contacts of a jammed snake could not all meet; and 0 for an overlap where pushing
+it out is a jam: where the step's kinetic energy above its free motion's is more than 10^4
+times the energy of pushing each overlap out alone, or where no step length converges or a
+shortened step is still too short, the step holds the overlaps, counted in the run's
+``held_steps``). It is the rest problem of
 :mod:`snakecg.scenes.solve` with ``a -> V+``, ``f -> M V*``, the sets' sizes times ``h`` and
 the rows' offsets ``c = g_c / h`` (``core_scene_solve_b``): one exact solve for rest, steps and
 impacts. Stick-slip and maximum dissipation come from it (a sliding block's impulse is on
@@ -62,11 +66,15 @@ from ..engine.rules import FORCE_LIMIT
 from ..errors import BuildError, InputError
 from .contacts import Rows, StateRows, read_rows
 from .packing import BODY_KINDS, SP_SIZE, scene_size
-from .run_record import ST_LOSS, ST_SLIDING_COS, ST_WIDTH, SceneEvent, SceneRun
+from .run_record import (ST_CONTACT_WORK, ST_LOSS, ST_SLIDING_COS, ST_WIDTH, ST_WORK_TAU,
+                         SceneEvent, SceneRun)
 from .solve import INFO
 
 __all__ = ["SceneState", "SceneEvent", "SceneRun", "simulate_scene"]
 
+#: a completed run's message names the gap stabilisation's work where it exceeds this share of
+#: the torques' (pushing overlaps out at gap / h in steps shortened to a contact's onset)
+STABILISATION_SHARE = 0.01
 #: the shortest step (s) the root finding may ask for before the run stops (penetration)
 H_MIN = 1e-9
 #: at most this many steps per run
@@ -552,6 +560,11 @@ def ending(code: int, run: _Runner, scene):
     bodies (``(kind, index)`` pairs, or None)."""
     st, t, tol = run.st, run.args.t, run.st.engine.tol
     if code == RUN_END:
+        work, stab = float(st.acc[ST_WORK_TAU]), float(st.acc[ST_CONTACT_WORK])
+        if stab > STABILISATION_SHARE * abs(work):  # (said, not hidden: the run did complete)
+            return "completed", (f"the gap stabilisation did {stab:.3g} J of work against the "
+                                 f"torques' {work:.3g} J: kinetic energy from pushing overlaps "
+                                 "out; take a smaller dt"), None
         return "completed", "", None
     if code == RUN_BAD_TAU:
         return "invalid_torque", (f"the torque law's value at t = {t:.6g} s is not finite or "
