@@ -14,7 +14,7 @@ import pytest
 import snakecg
 from scenes_reference import clarabel_accelerations, gauss_objective, inertia_and_force
 from scenes_reference import peg_obstacles, problem_of
-from snakecg.scenes import GeneralScene, Ground
+from snakecg.scenes import GeneralScene, Ground, simulate_scene_batch
 from snakecg.scenes.description import Obstacle
 
 Q = np.array([0.0, 0.0, 0.0, 0.3, -0.2, 0.25])
@@ -97,6 +97,9 @@ def test_a_peg_pressing_beside_an_ideal_wheel_is_held_not_pushed_out():
     assert w[0] >= -1e-9 * scale and np.abs(w[1:]).max() <= 1e-9 * scale  # (held, wheels)
     assert abs(run.contact_work[-1]) <= 1e-6 * run.work_tau[-1]  # (rounding of A V+ = 0)
     assert run.kinetic_energy[-1] <= run.work_tau[-1] * (1 + 1e-9)
+    batch = simulate_scene_batch(model, np.stack([Q, Q]), H, dt=H, tau=TAU)  # (counted too)
+    assert list(batch.held_steps) == [1, 1] and list(batch.status) == ["completed"] * 2
+    np.testing.assert_array_equal(batch.q_end[0], run.q[-1])
 
 
 def test_a_peg_a_millimetre_from_the_wheel_is_pushed_out():

@@ -16,6 +16,7 @@ import numpy as np
 
 from ..engine.threads import pool, threads
 from ..errors import InputError
+from .run_record import ST_HELD
 from .stepping import (STEP_DONE, _check_args, _model_tolerance, _Runner, _Stepper, ending,
                        engine_law)
 
@@ -31,8 +32,10 @@ class SceneBatch:
 
     ``status`` (N,) as a single run's (``completed``, ``penetration``, ``not_converged``, or
     ``invalid_torque`` where a law's torque was not finite or beyond the force limit: a single
-    run raises there), ``message`` (N,) why it stopped (empty when completed); ``t_end`` (N,)
-    the time reached, ``steps`` (N,) and ``impacts`` (N,) counts; ``q_end`` (N, n_s),
+    run raises there), ``message`` (N,) why it stopped (empty when completed, but where the gap
+    stabilisation did more than 1 % of the torques' work); ``t_end`` (N,) the time reached,
+    ``steps`` (N,), ``held_steps`` (N,: the steps that held their overlaps rather than push
+    them out, as a single run's) and ``impacts`` (N,) counts; ``q_end`` (N, n_s),
     ``q_obj_end`` (N, n_objects, 3) the final state; ``com_displacement`` (N, 2) of the
     snake's centre of mass and ``object_displacement`` (N, n_objects, 3) from start to end;
     ``deepest_overlap`` (N,) the deepest a contact went into a body over the run (m, 0 when
@@ -43,6 +46,7 @@ class SceneBatch:
     message: np.ndarray
     t_end: np.ndarray
     steps: np.ndarray
+    held_steps: np.ndarray
     impacts: np.ndarray
     q_end: np.ndarray
     q_obj_end: np.ndarray
@@ -150,6 +154,7 @@ def simulate_scene_batch(model, q0, duration, *, v0=None, tau=None, dt=1e-3, q_o
     status = np.full(runs, "", dtype=object)
     message = np.full(runs, "", dtype=object)
     t_end, steps, impacts = np.zeros(runs), np.zeros(runs, dtype=int), np.zeros(runs, dtype=int)
+    held = np.zeros(runs, dtype=int)
     q_end, q_obj_end = np.zeros((runs, ns)), np.zeros((runs, no, 3))
     q_obj_start, deepest = np.zeros((runs, no, 3)), np.zeros(runs)
     keep, going = [], []
@@ -193,11 +198,13 @@ def simulate_scene_batch(model, q0, duration, *, v0=None, tau=None, dt=1e-3, q_o
             status[i], message[i], _ = ending(code, run, model.scene)
         st, a = run.st, run.args
         t_end[i], steps[i], impacts[i] = a.t, a.nstep, a.impacts
+        held[i] = int(st.acc[ST_HELD])
         q_end[i], q_obj_end[i] = st.x[:ns], st.x[ns:].reshape(no, 3)
         deepest[i] = max(0.0, -a.min_gap)
     com0, com1 = model.com(Q), model.com(q_end)
     return SceneBatch(status=status.astype(str), message=message.astype(str), t_end=t_end,
-                      steps=steps, impacts=impacts, q_end=q_end, q_obj_end=q_obj_end,
+                      steps=steps, held_steps=held, impacts=impacts, q_end=q_end,
+                      q_obj_end=q_obj_end,
                       com_displacement=np.asarray(com1) - np.asarray(com0),
                       object_displacement=q_obj_end - q_obj_start, deepest_overlap=deepest,
                       tolerance=tol)
