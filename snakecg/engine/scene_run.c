@@ -275,8 +275,11 @@ static int run_on(sc_scene_run *r, void **kept) {
       status = (int)st->status;
       if (status == STEP_NOT_CONVERGED) { /* held, then halved (the file's head) */
         if (!held) {
-          st->hold = held = 1;
-          continue;
+          held = 1;
+          if (!st->hold) { /* (else the step held them already: its jam, scene_step.c) */
+            st->hold = 1;
+            continue;
+          }
         }
         st->hold = 0;
         if (halved == RETRY_HALVINGS || 0.5 * h < r->h_min) return RUN_NOT_CONVERGED;
